@@ -1,0 +1,183 @@
+//! FB ESTOP — manual §4.4 (functional description 4.4.1, signals, states and diag bits
+//! 4.4.2, restart behaviour and samples 1–4 4.4.4, EL6910 EDM reset time 4.4.5).
+//!
+//! Up to eight emergency stop inputs, pairs 1/2, 3/4, 5/6, 7/8 with discrepancy times,
+//! EStopOut switching off immediately and EStopDelOut after `tEStopDelOutDelay`, EDM1/EDM2
+//! feedback loops; restart is always manual. The state machine is shared with FB MON
+//! (`guard`).
+
+use super::guard::{GuardBlock, GuardParams, GuardRaw, SL_GUARD_PRIVATE};
+use crate::types::*;
+use core::mem::{offset_of, size_of};
+
+/// FB ESTOP instance (ABI §3, §8). Inputs at the manual's offsets (§4.4.2), outputs at
+/// output base 56 + the manual's offsets.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+#[allow(non_snake_case, non_camel_case_types)]
+pub struct FB_ESTOP {
+    /// Offset 0. Restart: a falling edge enables the outputs (push button, make contact).
+    pub bRestart: SL_BOOL,
+    /// Offset 1. Feedback loop of EStopOut.
+    pub bEDM1: SL_BOOL,
+    /// Offset 2. Feedback loop of EStopDelOut.
+    pub bEDM2: SL_BOOL,
+    /// Offset 3. Reserved, keep 0.
+    pub aReserved0: [u8; 5],
+    /// Offset 8. Emergency stop input 1 (pair 1 with input 2).
+    pub bEStopIn1: SL_BOOL,
+    /// Offset 9.
+    pub bEStopIn2: SL_BOOL,
+    /// Offset 10. Pair 2 with input 4.
+    pub bEStopIn3: SL_BOOL,
+    /// Offset 11.
+    pub bEStopIn4: SL_BOOL,
+    /// Offset 12. Pair 3 with input 6.
+    pub bEStopIn5: SL_BOOL,
+    /// Offset 13.
+    pub bEStopIn6: SL_BOOL,
+    /// Offset 14. Pair 4 with input 8.
+    pub bEStopIn7: SL_BOOL,
+    /// Offset 15.
+    pub bEStopIn8: SL_BOOL,
+    /// Offset 16. FbRun of the owning group: TRUE = the block executes.
+    pub bRun: SL_BOOL,
+    /// Offset 17. ErrAck of the owning group.
+    pub bErrAck: SL_BOOL,
+    /// Offset 18. Reserved, keep 0.
+    pub aReserved1: [u8; 2],
+    /// Offset 20. Discrepancy time of pair EStopIn1/2 in ms (0 = two single channels).
+    pub tDiscTime12: u32,
+    /// Offset 24. Discrepancy time of pair EStopIn3/4 in ms.
+    pub tDiscTime34: u32,
+    /// Offset 28. Discrepancy time of pair EStopIn5/6 in ms.
+    pub tDiscTime56: u32,
+    /// Offset 32. Discrepancy time of pair EStopIn7/8 in ms.
+    pub tDiscTime78: u32,
+    /// Offset 36. EDM1 reset time in ms (EL6910; 0 = off).
+    pub tEDM1ResetTime: u32,
+    /// Offset 40. EDM2 reset time in ms (EL6910; 0 = off).
+    pub tEDM2ResetTime: u32,
+    /// Offset 44. Delay of EStopDelOut in ms.
+    pub tEStopDelOutDelay: u32,
+    /// Offset 48. Bit n-1 set: EStopInn is active.
+    pub wInputActive: u16,
+    /// Offset 50. Bit n-1 set: EStopInn is a make contact (negated).
+    pub wInputNegated: u16,
+    /// Offset 52. SL_OPT_EDM1 | SL_OPT_EDM2 | SL_OPT_SAFE_INPUTS_AFTER_DISC.
+    pub dwOptions: u32,
+    /// Offset 56 (output base + 0). TRUE in ERROR.
+    pub bError: SL_BOOL,
+    /// Offset 57 (output base + 1). Undelayed output.
+    pub bEStopOut: SL_BOOL,
+    /// Offset 58 (output base + 2). Delayed output.
+    pub bEStopDelOut: SL_BOOL,
+    /// Offset 59. Reserved.
+    pub aReserved2: [u8; 5],
+    /// Offset 64. The manual's status value (SL_STATE_*).
+    pub nState: u8,
+    /// Offset 65. Reserved.
+    pub aReserved3: [u8; 1],
+    /// Offset 66. Diagnostic bits (SL_DIAG_*).
+    pub nDiag: u16,
+    /// Offset 68. Reserved.
+    pub aReserved4: [u8; 4],
+    /// Offset 72. Private state, 64 bytes: never write it.
+    pub stPrivate: SL_GUARD_PRIVATE,
+}
+
+// The ABI's offsets (ABI §8, manual §4.4.2), checked at compile time.
+const _: () = {
+    assert!(offset_of!(FB_ESTOP, bRestart) == 0);
+    assert!(offset_of!(FB_ESTOP, bEDM1) == 1);
+    assert!(offset_of!(FB_ESTOP, bEDM2) == 2);
+    assert!(offset_of!(FB_ESTOP, bEStopIn1) == 8);
+    assert!(offset_of!(FB_ESTOP, bEStopIn8) == 15);
+    assert!(offset_of!(FB_ESTOP, bRun) == 16);
+    assert!(offset_of!(FB_ESTOP, bErrAck) == 17);
+    assert!(offset_of!(FB_ESTOP, tDiscTime12) == 20);
+    assert!(offset_of!(FB_ESTOP, tDiscTime78) == 32);
+    assert!(offset_of!(FB_ESTOP, tEDM1ResetTime) == 36);
+    assert!(offset_of!(FB_ESTOP, tEDM2ResetTime) == 40);
+    assert!(offset_of!(FB_ESTOP, tEStopDelOutDelay) == 44);
+    assert!(offset_of!(FB_ESTOP, wInputActive) == 48);
+    assert!(offset_of!(FB_ESTOP, wInputNegated) == 50);
+    assert!(offset_of!(FB_ESTOP, dwOptions) == 52);
+    assert!(offset_of!(FB_ESTOP, bError) == 56);
+    assert!(offset_of!(FB_ESTOP, bEStopOut) - offset_of!(FB_ESTOP, bError) == 1);
+    assert!(offset_of!(FB_ESTOP, bEStopDelOut) - offset_of!(FB_ESTOP, bError) == 2);
+    assert!(offset_of!(FB_ESTOP, nState) == 64);
+    assert!(offset_of!(FB_ESTOP, nDiag) == 66);
+    assert!(offset_of!(FB_ESTOP, stPrivate) == 72);
+    assert!(size_of::<FB_ESTOP>() == 136);
+    assert!(core::mem::align_of::<FB_ESTOP>() == 4);
+};
+
+impl GuardBlock for FB_ESTOP {
+    const MAGIC: u16 = 0xE570;
+    const OPTIONS: u32 =
+        SL_OPT_EDM1 | SL_OPT_EDM2 | SL_OPT_SAFE_INPUTS_AFTER_DISC | SL_OPT_MANUAL_RESTART;
+    const INPUTS: u16 = 0xFF;
+    const REQUIRED: u16 = 0xFF;
+    const PAIRS: u8 = 0b1111;
+    const TEST_INPUTS: u8 = 0;
+    const ERROR_DELAY: bool = false;
+    const ALWAYS_MANUAL: bool = true;
+
+    fn private(&self) -> &SL_GUARD_PRIVATE {
+        &self.stPrivate
+    }
+    fn private_mut(&mut self) -> &mut SL_GUARD_PRIVATE {
+        &mut self.stPrivate
+    }
+
+    fn params(&self) -> GuardParams {
+        GuardParams {
+            disc: [
+                self.tDiscTime12,
+                self.tDiscTime34,
+                self.tDiscTime56,
+                self.tDiscTime78,
+            ],
+            edm_reset: [self.tEDM1ResetTime, self.tEDM2ResetTime],
+            delay: self.tEStopDelOutDelay,
+            active: self.wInputActive,
+            negated: self.wInputNegated,
+            options: self.dwOptions,
+        }
+    }
+
+    fn raw(&self) -> GuardRaw {
+        GuardRaw {
+            restart: self.bRestart,
+            edm: [self.bEDM1, self.bEDM2],
+            inputs: [
+                self.bEStopIn1,
+                self.bEStopIn2,
+                self.bEStopIn3,
+                self.bEStopIn4,
+                self.bEStopIn5,
+                self.bEStopIn6,
+                self.bEStopIn7,
+                self.bEStopIn8,
+            ],
+        }
+    }
+
+    fn control(&self) -> (u8, u8) {
+        (self.bRun, self.bErrAck)
+    }
+
+    /// Any active input requesting the safe state (logical FALSE).
+    fn request(logical: u8, active: u8) -> bool {
+        logical != active
+    }
+
+    fn set_outputs(&mut self, error: bool, out: bool, del_out: bool, state: u8, diag: u16) {
+        self.bError = u8::from(error);
+        self.bEStopOut = u8::from(out);
+        self.bEStopDelOut = u8::from(del_out);
+        self.nState = state;
+        self.nDiag = diag;
+    }
+}

@@ -1,0 +1,196 @@
+//! FB MON — manual §4.5 (functional description 4.5.1, signals, states and diag bits
+//! 4.5.2, restart behaviour and samples 1–3 4.5.4, EL6910 EDM reset time 4.5.5); PLC naming
+//! from `fb-mon-plc-interface.txt`.
+//!
+//! Up to four monitored inputs (pairs 1/2 and 3/4), two Secure inputs (pair 3) that bypass
+//! the MonIn inputs, manual or automatic restart, manual function test, MonOut switching off
+//! immediately and MonDelOut after `tMonDelOutDelay`, ERRORDELAY for a discrepancy error
+//! while MonDelOut is still on. The state machine is shared with FB ESTOP (`guard`).
+
+use super::guard::{GuardBlock, GuardParams, GuardRaw, SL_GUARD_PRIVATE};
+use crate::types::*;
+use core::mem::{offset_of, size_of};
+
+/// FB MON instance (ABI §3, §8). Inputs at the manual's offsets (§4.5.2), outputs at
+/// output base 56 + the manual's offsets.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+#[allow(non_snake_case, non_camel_case_types)]
+pub struct FB_MON {
+    /// Offset 0. Restart (used with SL_OPT_MANUAL_RESTART): a falling edge enables the outputs.
+    pub bRestart: SL_BOOL,
+    /// Offset 1. Feedback loop of MonOut.
+    pub bEDM1: SL_BOOL,
+    /// Offset 2. Feedback loop of MonDelOut.
+    pub bEDM2: SL_BOOL,
+    /// Offset 3. Reserved, keep 0.
+    pub aReserved0: [u8; 5],
+    /// Offset 8. Monitored input 1 (pair 1 with input 2).
+    pub bMonIn1: SL_BOOL,
+    /// Offset 9.
+    pub bMonIn2: SL_BOOL,
+    /// Offset 10. Pair 2 with input 4.
+    pub bMonIn3: SL_BOOL,
+    /// Offset 11.
+    pub bMonIn4: SL_BOOL,
+    /// Offset 12. Secure input 1: bypasses the MonIn inputs while logically TRUE.
+    pub bSecure1: SL_BOOL,
+    /// Offset 13. Secure input 2 (pair with Secure1).
+    pub bSecure2: SL_BOOL,
+    /// Offset 14. Reserved, keep 0.
+    pub aReserved1: [u8; 2],
+    /// Offset 16. FbRun of the owning group: TRUE = the block executes.
+    pub bRun: SL_BOOL,
+    /// Offset 17. ErrAck of the owning group.
+    pub bErrAck: SL_BOOL,
+    /// Offset 18. Reserved, keep 0.
+    pub aReserved2: [u8; 2],
+    /// Offset 20. Discrepancy time of pair MonIn1/2 in ms (0 = two single channels).
+    pub tDiscTime12: u32,
+    /// Offset 24. Discrepancy time of pair MonIn3/4 in ms.
+    pub tDiscTime34: u32,
+    /// Offset 28. Discrepancy time of pair Secure1/2 in ms.
+    pub tDiscTimeSecure12: u32,
+    /// Offset 32. EDM1 reset time in ms (EL6910; 0 = off).
+    pub tEDM1ResetTime: u32,
+    /// Offset 36. EDM2 reset time in ms (EL6910; 0 = off).
+    pub tEDM2ResetTime: u32,
+    /// Offset 40. Delay of MonDelOut in ms.
+    pub tMonDelOutDelay: u32,
+    /// Offset 44. Bits 0-3: MonIn1-4 active, bits 4-5: Secure1-2 active.
+    pub wInputActive: u16,
+    /// Offset 46. Same bits: input is a make contact (negated).
+    pub wInputNegated: u16,
+    /// Offset 48. SL_OPT_EDM1 | EDM2 | SAFE_INPUTS_AFTER_DISC | MANUAL_RESTART | FUNCTION_TEST.
+    pub dwOptions: u32,
+    /// Offset 52. Reserved.
+    pub aReserved3: [u8; 4],
+    /// Offset 56 (output base + 0). TRUE in ERROR.
+    pub bError: SL_BOOL,
+    /// Offset 57 (output base + 1). Undelayed output.
+    pub bMonOut: SL_BOOL,
+    /// Offset 58 (output base + 2). Delayed output.
+    pub bMonDelOut: SL_BOOL,
+    /// Offset 59. Reserved.
+    pub aReserved4: [u8; 5],
+    /// Offset 64. The manual's status value (SL_STATE_*).
+    pub nState: u8,
+    /// Offset 65. Reserved.
+    pub aReserved5: [u8; 1],
+    /// Offset 66. Diagnostic bits (SL_DIAG_*; bit 2 = Secure pair).
+    pub nDiag: u16,
+    /// Offset 68. Reserved.
+    pub aReserved6: [u8; 4],
+    /// Offset 72. Private state, 64 bytes: never write it.
+    pub stPrivate: SL_GUARD_PRIVATE,
+}
+
+// The ABI's offsets (ABI §8, manual §4.5.2), checked at compile time.
+const _: () = {
+    assert!(offset_of!(FB_MON, bRestart) == 0);
+    assert!(offset_of!(FB_MON, bEDM1) == 1);
+    assert!(offset_of!(FB_MON, bEDM2) == 2);
+    assert!(offset_of!(FB_MON, bMonIn1) == 8);
+    assert!(offset_of!(FB_MON, bMonIn4) == 11);
+    assert!(offset_of!(FB_MON, bSecure1) == 12);
+    assert!(offset_of!(FB_MON, bSecure2) == 13);
+    assert!(offset_of!(FB_MON, bRun) == 16);
+    assert!(offset_of!(FB_MON, bErrAck) == 17);
+    assert!(offset_of!(FB_MON, tDiscTime12) == 20);
+    assert!(offset_of!(FB_MON, tDiscTime34) == 24);
+    assert!(offset_of!(FB_MON, tDiscTimeSecure12) == 28);
+    assert!(offset_of!(FB_MON, tEDM1ResetTime) == 32);
+    assert!(offset_of!(FB_MON, tEDM2ResetTime) == 36);
+    assert!(offset_of!(FB_MON, tMonDelOutDelay) == 40);
+    assert!(offset_of!(FB_MON, wInputActive) == 44);
+    assert!(offset_of!(FB_MON, wInputNegated) == 46);
+    assert!(offset_of!(FB_MON, dwOptions) == 48);
+    assert!(offset_of!(FB_MON, bError) == 56);
+    assert!(offset_of!(FB_MON, bMonOut) - offset_of!(FB_MON, bError) == 1);
+    assert!(offset_of!(FB_MON, bMonDelOut) - offset_of!(FB_MON, bError) == 2);
+    assert!(offset_of!(FB_MON, nState) == 64);
+    assert!(offset_of!(FB_MON, nDiag) == 66);
+    assert!(offset_of!(FB_MON, stPrivate) == 72);
+    assert!(size_of::<FB_MON>() == 136);
+    assert!(core::mem::align_of::<FB_MON>() == 4);
+};
+
+const MON_INPUTS: u8 = 0x0F;
+const SECURE_INPUTS: u8 = 0x30;
+
+impl GuardBlock for FB_MON {
+    const MAGIC: u16 = 0x3011;
+    const OPTIONS: u32 = SL_OPT_EDM1
+        | SL_OPT_EDM2
+        | SL_OPT_SAFE_INPUTS_AFTER_DISC
+        | SL_OPT_MANUAL_RESTART
+        | SL_OPT_FUNCTION_TEST;
+    const INPUTS: u16 = 0x3F;
+    const REQUIRED: u16 = MON_INPUTS as u16;
+    const PAIRS: u8 = 0b111;
+    const TEST_INPUTS: u8 = MON_INPUTS;
+    const ERROR_DELAY: bool = true;
+    const ALWAYS_MANUAL: bool = false;
+
+    fn private(&self) -> &SL_GUARD_PRIVATE {
+        &self.stPrivate
+    }
+    fn private_mut(&mut self) -> &mut SL_GUARD_PRIVATE {
+        &mut self.stPrivate
+    }
+
+    fn params(&self) -> GuardParams {
+        GuardParams {
+            disc: [
+                self.tDiscTime12,
+                self.tDiscTime34,
+                self.tDiscTimeSecure12,
+                0,
+            ],
+            edm_reset: [self.tEDM1ResetTime, self.tEDM2ResetTime],
+            delay: self.tMonDelOutDelay,
+            active: self.wInputActive,
+            negated: self.wInputNegated,
+            options: self.dwOptions,
+        }
+    }
+
+    fn raw(&self) -> GuardRaw {
+        GuardRaw {
+            restart: self.bRestart,
+            edm: [self.bEDM1, self.bEDM2],
+            inputs: [
+                self.bMonIn1,
+                self.bMonIn2,
+                self.bMonIn3,
+                self.bMonIn4,
+                self.bSecure1,
+                self.bSecure2,
+                0,
+                0,
+            ],
+        }
+    }
+
+    fn control(&self) -> (u8, u8) {
+        (self.bRun, self.bErrAck)
+    }
+
+    /// An active MonIn input requests the safe state and the Secure inputs do not bypass
+    /// the MonIn inputs: a bypass needs at least one active Secure input and every active
+    /// Secure input logically TRUE (ABI §8).
+    fn request(logical: u8, active: u8) -> bool {
+        let mon = active & MON_INPUTS;
+        let secure = active & SECURE_INPUTS;
+        let bypass = secure != 0 && logical & secure == secure;
+        logical & mon != mon && !bypass
+    }
+
+    fn set_outputs(&mut self, error: bool, out: bool, del_out: bool, state: u8, diag: u16) {
+        self.bError = u8::from(error);
+        self.bMonOut = u8::from(out);
+        self.bMonDelOut = u8::from(del_out);
+        self.nState = state;
+        self.nDiag = diag;
+    }
+}

@@ -1,0 +1,38 @@
+//! safelogic — TwinSAFE-style safety logic function blocks behind a C ABI.
+//!
+//! The block layer (`types`, `prim`, `blocks`) is `no_std`, allocation-free and free of
+//! `unsafe`; the C ABI (`ffi`, feature `std`) is the only place with `unsafe` code.
+//! Not a certified safety component: see README.md.
+
+#![cfg_attr(not(feature = "std"), no_std)]
+#![deny(unsafe_code)]
+
+pub mod blocks;
+pub mod prim;
+pub mod types;
+
+#[cfg(feature = "std")]
+pub mod ffi;
+
+pub use blocks::estop::FB_ESTOP;
+pub use blocks::guard::SL_GUARD_PRIVATE;
+pub use blocks::mon::FB_MON;
+pub use prim::header::SL_PRIVATE_HEADER;
+pub use types::*;
+
+/// The Rust face of every block: the same calls as `sl_<name>_init` / `sl_<name>_cycle`.
+pub trait FunctionBlock {
+    /// Validates and latches the parameters and resets the block to power-up (STOP).
+    fn init(&mut self) -> i32;
+    /// One task cycle at `now` (monotonic ms, wrapping).
+    fn cycle(&mut self, now: u32) -> i32;
+}
+
+impl<B: prim::envelope::Block> FunctionBlock for B {
+    fn init(&mut self) -> i32 {
+        prim::envelope::init(self)
+    }
+    fn cycle(&mut self, now: u32) -> i32 {
+        prim::envelope::cycle(self, now)
+    }
+}

@@ -1,0 +1,95 @@
+//! BOOL decoding (ABI §2): 0 = FALSE, 1 = TRUE, anything else is an invalid BOOL that reads
+//! as the value demanding the safe state. Edges of control inputs (ABI §7).
+
+/// A set of BOOL input bytes packed into bit masks.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Packed {
+    /// Bit i set: byte i is exactly 1.
+    pub ones: u8,
+    /// Bit i set: byte i is neither 0 nor 1.
+    pub invalid: u8,
+}
+
+/// Packs up to eight BOOL bytes into masks (bit i = byte i).
+#[inline]
+pub fn pack(bytes: &[u8]) -> Packed {
+    let mut p = Packed::default();
+    for (i, &b) in bytes.iter().take(8).enumerate() {
+        p.ones |= u8::from(b == 1) << i;
+        p.invalid |= u8::from(b > 1) << i;
+    }
+    p
+}
+
+/// Logical values of safety inputs: raw XOR negation for active inputs; an invalid byte
+/// reads as logical FALSE (the safe-state request) whatever its negation. Inactive
+/// inputs read FALSE here; callers mask with the active set.
+#[inline]
+pub const fn logical(p: Packed, active: u8, negated: u8) -> u8 {
+    ((p.ones ^ negated) & !p.invalid) & active
+}
+
+/// A control input (Restart, ErrAck, Run, EDM...): TRUE only for the byte 1.
+#[inline]
+pub const fn is_true(raw: u8) -> bool {
+    raw == 1
+}
+
+/// A control input that reads FALSE: only the byte 0 (an invalid byte is neither).
+#[inline]
+pub const fn is_false(raw: u8) -> bool {
+    raw == 0
+}
+
+/// Edges of a control input whose previous level is kept in one bit of a flag byte.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Edge {
+    /// Level this cycle (invalid bytes read FALSE).
+    pub level: bool,
+    pub rising: bool,
+    pub falling: bool,
+}
+
+/// Updates the edge memory `bit` in `flags` from the raw byte. An invalid byte reads FALSE
+/// and produces no edge, so a corrupted Restart or ErrAck never completes a sequence.
+#[inline]
+pub fn edge(raw: u8, flags: &mut u8, bit: u8) -> Edge {
+    let prev = *flags & bit != 0;
+    let level = raw == 1;
+    let valid = raw <= 1;
+    if level {
+        *flags |= bit;
+    } else {
+        *flags &= !bit;
+    }
+    Edge {
+        level,
+        rising: level && !prev,
+        falling: valid && prev && !level,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn pack_and_logical() {
+        let p = pack(&[1, 0, 2, 1, 0, 0xFF, 1, 0]);
+        assert_eq!(p.ones, 0b0100_1001);
+        assert_eq!(p.invalid, 0b0010_0100);
+        // input 1 negated (make contact): raw 0 -> logical TRUE; invalid input 5 negated -> FALSE
+        assert_eq!(logical(p, 0xFF, 0b0010_0010), 0b0100_1011);
+    }
+
+    #[test]
+    fn invalid_control_byte_gives_no_edge() {
+        let mut f = 0u8;
+        assert!(edge(1, &mut f, 1).rising);
+        let e = edge(7, &mut f, 1);
+        assert!(!e.level && !e.falling && !e.rising);
+        assert!(!edge(0, &mut f, 1).falling);
+        assert!(edge(1, &mut f, 1).rising);
+        assert!(edge(0, &mut f, 1).falling);
+    }
+}

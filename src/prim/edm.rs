@@ -1,0 +1,73 @@
+//! External device monitoring (ABI §7 "EDM with manual restart", "EDM reset time";
+//! manual §4.4.1, §4.4.5, §4.5.1, §4.5.5). EDMx feeds back the contact state of the
+//! contactor driven by output x: TRUE while it is released (outputs off).
+
+use super::time;
+use crate::types::{SL_DIAG_EDM1, SL_DIAG_EDM2};
+
+/// EDM inputs of one cycle and their configuration.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct Edm {
+    /// Feedback loop x is active (option EDM1 / EDM2).
+    pub active: [bool; 2],
+    /// The input byte is exactly TRUE.
+    pub is_true: [bool; 2],
+    /// The input byte is exactly FALSE.
+    pub is_false: [bool; 2],
+}
+
+const DIAG: [u16; 2] = [SL_DIAG_EDM1, SL_DIAG_EDM2];
+
+impl Edm {
+    /// Every active feedback reads TRUE: the contactors have released.
+    #[inline]
+    pub fn all_released(&self) -> bool {
+        (!self.active[0] || self.is_true[0]) && (!self.active[1] || self.is_true[1])
+    }
+
+    /// Diag bits of the active feedback loops that do not read TRUE (restart check,
+    /// and the condition that keeps an EDM error from being acknowledged).
+    #[inline]
+    pub fn not_released(&self) -> u16 {
+        let mut d = 0;
+        for x in 0..2 {
+            if self.active[x] && !self.is_true[x] {
+                d |= DIAG[x];
+            }
+        }
+        d
+    }
+
+    /// EDM reset-time check while the outputs are on. `pending` bit x (1 << x) stays set
+    /// until EDMx reads FALSE; when `reset_time[x]` ms have passed since `t_on` with the
+    /// bit still set, the EDMx diag bit is returned.
+    #[inline]
+    pub fn reset_time_check(
+        &self,
+        pending: &mut u8,
+        t_on: u32,
+        reset_time: [u16; 2],
+        now: u32,
+    ) -> u16 {
+        let mut d = 0;
+        for x in 0..2 {
+            let bit = 1u8 << x;
+            if *pending & bit == 0 {
+                continue;
+            }
+            if self.is_false[x] {
+                *pending &= !bit;
+            } else if time::reached(now, t_on, u32::from(reset_time[x])) {
+                d |= DIAG[x];
+            }
+        }
+        d
+    }
+
+    /// The pending bits to arm when the outputs switch on.
+    #[inline]
+    pub fn arm(&self, reset_time: [u16; 2]) -> u8 {
+        u8::from(self.active[0] && reset_time[0] != 0)
+            | (u8::from(self.active[1] && reset_time[1] != 0) << 1)
+    }
+}

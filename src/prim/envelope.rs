@@ -1,0 +1,210 @@
+//! The cycle envelope every block runs in (ABI §4, §5, §7): integrity check of the private
+//! state, clock check, parameter latching and change detection, Run → STOP, ERROR → RESET
+//! with ErrAck edges, the status code. The block itself only supplies its running states.
+
+use super::bools::{edge, is_true};
+use super::header::{F_CFG_INVALID, F_ERRACK_PREV, F_TIME_VALID, SL_PRIVATE_HEADER};
+use super::time;
+use crate::types::*;
+
+/// What a block supplies to the envelope.
+pub trait Block {
+    /// Type tag stored in the private header.
+    const MAGIC: u16;
+    /// The block's parameters as the user wrote them (wide types).
+    type Params: PartialEq + Copy;
+    /// Inputs of one cycle after BOOL decoding.
+    type In;
+
+    fn header(&self) -> &SL_PRIVATE_HEADER;
+    fn header_mut(&mut self) -> &mut SL_PRIVATE_HEADER;
+    /// Zeroes the whole private area.
+    fn clear_private(&mut self);
+    fn run_raw(&self) -> u8;
+    fn errack_raw(&self) -> u8;
+
+    /// The live parameter fields.
+    fn live_params(&self) -> Self::Params;
+    /// The latched copy, widened.
+    fn latched_params(&self) -> Self::Params;
+    /// Parameter validation (manual limits, ABI §5 SL_E_CONFIG).
+    fn params_valid(p: &Self::Params) -> bool;
+    /// Writes the latched copy (narrowing; only meaningful for valid parameters).
+    fn store_params(&mut self, p: &Self::Params);
+    /// CRC of the latched copy.
+    fn latched_crc(&self) -> u16;
+
+    /// Reads the input bytes, updates the block's edge memories, and tells whether a byte
+    /// was an invalid BOOL.
+    fn decode(&mut self) -> (Self::In, bool);
+    /// Enters the block's start state (after STOP → run and after RESET).
+    fn start(&mut self, now: u32);
+    /// One cycle in a running state (not STOP, ERROR, RESET) with bRun TRUE; returns
+    /// `SL_OK` or the status of an integrity failure it found.
+    fn step(&mut self, inp: &Self::In, now: u32) -> i32;
+    /// bRun went FALSE in a running state.
+    fn stop(&mut self) {
+        self.header_mut().nState = SL_STATE_STOP;
+    }
+    /// In ERROR: does a block-specific error condition remain (ABI §7 "Errors")?
+    fn error_remains(&mut self, inp: &Self::In) -> bool;
+    /// Writes the VAR_OUTPUT and info fields from the private state.
+    fn write_outputs(&mut self);
+}
+
+/// Higher rank wins when several things go wrong in one call.
+const fn rank(s: i32) -> u8 {
+    match s {
+        SL_E_CORRUPT => 6,
+        SL_E_CLOCK => 5,
+        SL_E_PARAM_CHANGED => 4,
+        SL_E_CONFIG => 3,
+        SL_E_INVALID_BOOL => 2,
+        _ => 0,
+    }
+}
+
+#[inline]
+fn worst(a: i32, b: i32) -> i32 {
+    if rank(b) > rank(a) {
+        b
+    } else {
+        a
+    }
+}
+
+/// Latches the live parameters into the private copy; returns whether they are valid.
+fn latch<B: Block>(fb: &mut B) -> bool {
+    let p = fb.live_params();
+    let ok = B::params_valid(&p);
+    fb.store_params(&p);
+    let crc = fb.latched_crc();
+    let h = fb.header_mut();
+    h.wParamCrc = crc;
+    h.set_flag(F_CFG_INVALID, !ok);
+    ok
+}
+
+/// Power-up: a fresh private state in STOP with the parameters latched (ABI §4 `init`).
+fn power_up<B: Block>(fb: &mut B, state: u8, diag: u16) -> bool {
+    fb.clear_private();
+    fb.header_mut().wMagic = B::MAGIC;
+    let ok = latch(fb);
+    let h = fb.header_mut();
+    h.nState = state;
+    h.wDiag = diag;
+    ok
+}
+
+/// `sl_<name>_init`: validate and latch parameters, reset to power-up (STOP, outputs safe).
+/// Never touches a VAR_INPUT field.
+pub fn init<B: Block>(fb: &mut B) -> i32 {
+    let ok = power_up(fb, SL_STATE_STOP, 0);
+    fb.write_outputs();
+    fb.header_mut().seal();
+    if ok {
+        SL_OK
+    } else {
+        SL_E_CONFIG
+    }
+}
+
+/// `sl_<name>_cycle`: one task cycle at time `now` (ms, wrapping).
+pub fn cycle<B: Block>(fb: &mut B, now: u32) -> i32 {
+    let mut status = SL_OK;
+    // An error entered in this call cannot be acknowledged in the same call.
+    let mut fresh_error = false;
+
+    if fb.header().is_zero() {
+        power_up(fb, SL_STATE_STOP, 0);
+    } else if !fb.header().intact(B::MAGIC) {
+        power_up(fb, SL_STATE_ERROR, SL_DIAG_CORRUPT);
+        status = SL_E_CORRUPT;
+        fresh_error = true;
+    }
+
+    let h = fb.header_mut();
+    if h.flag(F_TIME_VALID) && time::went_backwards(now, h.tLast) {
+        h.enter_error(SL_DIAG_CLOCK);
+        status = worst(status, SL_E_CLOCK);
+        fresh_error = true;
+    }
+    h.tLast = now;
+    h.set_flag(F_TIME_VALID, true);
+
+    let run_raw = fb.run_raw();
+    let run = is_true(run_raw);
+    let ack_raw = fb.errack_raw();
+    let ack = edge(ack_raw, &mut fb.header_mut().nFlags, F_ERRACK_PREV);
+    let (inp, invalid_in) = fb.decode();
+    let invalid = invalid_in || run_raw > 1 || ack_raw > 1;
+
+    // A parameter differing from the latched copy is a fault while the block runs or is
+    // about to run; in STOP (or on the way there) it is the next latch's business.
+    let param_fault =
+        fb.header().nState != SL_STATE_STOP && run && fb.live_params() != fb.latched_params();
+    if param_fault {
+        fresh_error = true;
+        if fb.latched_crc() != fb.header().wParamCrc {
+            power_up(fb, SL_STATE_ERROR, SL_DIAG_CORRUPT);
+            status = worst(status, SL_E_CORRUPT);
+        } else {
+            fb.header_mut().enter_error(SL_DIAG_PARAM_CHANGED);
+            status = worst(status, SL_E_PARAM_CHANGED);
+        }
+    }
+
+    match fb.header().nState {
+        SL_STATE_STOP => {
+            if run && latch(fb) {
+                fb.start(now);
+            }
+        }
+        SL_STATE_ERROR => {
+            let remains = fb.error_remains(&inp) || param_fault;
+            if ack.rising && !fresh_error && !remains {
+                let h = fb.header_mut();
+                h.nState = SL_STATE_RESET;
+                h.wDiag = 0;
+            }
+        }
+        SL_STATE_RESET => {
+            if ack.falling {
+                if run && !fb.header().flag(F_CFG_INVALID) {
+                    fb.start(now);
+                } else {
+                    fb.header_mut().nState = SL_STATE_STOP;
+                }
+            }
+        }
+        _ => {
+            if run {
+                status = worst(status, fb.step(&inp, now));
+            } else {
+                fb.stop();
+            }
+        }
+    }
+
+    let h = fb.header();
+    if h.flag(F_CFG_INVALID) && h.nState == SL_STATE_STOP {
+        status = worst(status, SL_E_CONFIG);
+    }
+    if invalid {
+        status = worst(status, SL_E_INVALID_BOOL);
+    }
+    fb.write_outputs();
+    fb.header_mut().seal();
+    status
+}
+
+/// Forces the instance into ERROR with safe outputs after an internal fault (used by the
+/// C boundary when it catches a panic).
+pub fn force_error<B: Block>(fb: &mut B) {
+    if !fb.header().intact(B::MAGIC) {
+        power_up(fb, SL_STATE_ERROR, SL_DIAG_CORRUPT);
+    }
+    fb.header_mut().enter_error(SL_DIAG_CORRUPT);
+    fb.write_outputs();
+    fb.header_mut().seal();
+}

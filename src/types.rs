@@ -1,0 +1,156 @@
+//! Scalar types, status codes, option bits, diagnostic bits and state values of the C ABI
+//! (`shared/design/ABI.md` §2, §5, §6; manual §4.4.2 and §4.5.2 for states and diag bits).
+//!
+//! Every value here is part of the binding contract: the numbers never change.
+
+/// IEC 61131-3 BOOL: 0 = FALSE, 1 = TRUE, any other byte is an invalid BOOL (ABI §2).
+#[allow(non_camel_case_types)]
+pub type SL_BOOL = u8;
+
+/// Success.
+pub const SL_OK: i32 = 0;
+/// A required pointer is NULL; nothing was written.
+pub const SL_E_NULL: i32 = -1;
+/// Invalid parameters; outputs safe (all FALSE), nState = STOP (2).
+pub const SL_E_CONFIG: i32 = -2;
+/// A parameter changed while the block was not in STOP; nState = ERROR (4), bError TRUE.
+pub const SL_E_PARAM_CHANGED: i32 = -3;
+/// The private state failed its integrity check; nState = ERROR (4), bError TRUE.
+pub const SL_E_CORRUPT: i32 = -4;
+/// An input byte was not 0 or 1; it was read as the value that demands the safe state.
+pub const SL_E_INVALID_BOOL: i32 = -5;
+/// tNow went backwards (wrapping difference to the last call >= 2^31); nState = ERROR (4).
+pub const SL_E_CLOCK: i32 = -6;
+/// Library extension: an internal fault was caught at the C boundary; the instance was put
+/// into ERROR (4) with every output FALSE except bError.
+pub const SL_E_INTERNAL: i32 = -7;
+/// Library extension: the instance pointer is not aligned to 4 bytes; nothing was written.
+pub const SL_E_ALIGNMENT: i32 = -8;
+
+/// EDM1 feedback loop active.
+pub const SL_OPT_EDM1: u32 = 1 << 0;
+/// EDM2 feedback loop active.
+pub const SL_OPT_EDM2: u32 = 1 << 1;
+/// "Safe Inputs after Disc Error".
+pub const SL_OPT_SAFE_INPUTS_AFTER_DISC: u32 = 1 << 2;
+/// Manual (active) restart (MON; ESTOP always restarts manually).
+pub const SL_OPT_MANUAL_RESTART: u32 = 1 << 3;
+/// Manual function test (MON).
+pub const SL_OPT_FUNCTION_TEST: u32 = 1 << 4;
+
+bitflags::bitflags! {
+    /// The option bits of `dwOptions` (ABI §6) as a typed set.
+    #[derive(Clone, Copy, Debug, PartialEq, Eq)]
+    pub struct Options: u32 {
+        const EDM1 = SL_OPT_EDM1;
+        const EDM2 = SL_OPT_EDM2;
+        const SAFE_INPUTS_AFTER_DISC = SL_OPT_SAFE_INPUTS_AFTER_DISC;
+        const MANUAL_RESTART = SL_OPT_MANUAL_RESTART;
+        const FUNCTION_TEST = SL_OPT_FUNCTION_TEST;
+    }
+}
+
+/// Diag bit 0: discrepancy error input group 1.
+pub const SL_DIAG_DISC1: u16 = 1 << 0;
+/// Diag bit 1: discrepancy error input group 2.
+pub const SL_DIAG_DISC2: u16 = 1 << 1;
+/// Diag bit 2: discrepancy error input group 3 (MON: the Secure input group).
+pub const SL_DIAG_DISC3: u16 = 1 << 2;
+/// Diag bit 3: discrepancy error input group 4.
+pub const SL_DIAG_DISC4: u16 = 1 << 3;
+/// Diag bit 4: EDM monitoring error EDM1.
+pub const SL_DIAG_EDM1: u16 = 1 << 4;
+/// Diag bit 5: EDM monitoring error EDM2.
+pub const SL_DIAG_EDM2: u16 = 1 << 5;
+/// Diag bit 8: bit 0 with "Safe Inputs after Disc Error" active (set in addition to bit 0).
+pub const SL_DIAG_SAFE_IN_DISC1: u16 = 1 << 8;
+/// Diag bit 9: bit 1 with "Safe Inputs after Disc Error" active.
+pub const SL_DIAG_SAFE_IN_DISC2: u16 = 1 << 9;
+/// Diag bit 10: bit 2 with "Safe Inputs after Disc Error" active.
+pub const SL_DIAG_SAFE_IN_DISC3: u16 = 1 << 10;
+/// Diag bit 11: bit 3 with "Safe Inputs after Disc Error" active.
+pub const SL_DIAG_SAFE_IN_DISC4: u16 = 1 << 11;
+/// Library extension, diag bit 13: a parameter changed outside STOP (SL_E_PARAM_CHANGED).
+pub const SL_DIAG_PARAM_CHANGED: u16 = 1 << 13;
+/// Library extension, diag bit 14: the clock went backwards (SL_E_CLOCK).
+pub const SL_DIAG_CLOCK: u16 = 1 << 14;
+/// Library extension, diag bit 15: the private state was corrupt (SL_E_CORRUPT / SL_E_INTERNAL).
+pub const SL_DIAG_CORRUPT: u16 = 1 << 15;
+
+bitflags::bitflags! {
+    /// The diagnostic bits of `nDiag` as a typed set.
+    #[derive(Clone, Copy, Debug, PartialEq, Eq)]
+    pub struct Diag: u16 {
+        const DISC1 = SL_DIAG_DISC1;
+        const DISC2 = SL_DIAG_DISC2;
+        const DISC3 = SL_DIAG_DISC3;
+        const DISC4 = SL_DIAG_DISC4;
+        const EDM1 = SL_DIAG_EDM1;
+        const EDM2 = SL_DIAG_EDM2;
+        const SAFE_IN_DISC1 = SL_DIAG_SAFE_IN_DISC1;
+        const SAFE_IN_DISC2 = SL_DIAG_SAFE_IN_DISC2;
+        const SAFE_IN_DISC3 = SL_DIAG_SAFE_IN_DISC3;
+        const SAFE_IN_DISC4 = SL_DIAG_SAFE_IN_DISC4;
+        const PARAM_CHANGED = SL_DIAG_PARAM_CHANGED;
+        const CLOCK = SL_DIAG_CLOCK;
+        const CORRUPT = SL_DIAG_CORRUPT;
+    }
+}
+
+/// State RUN (manual: status value 1).
+pub const SL_STATE_RUN: u8 = 1;
+/// State STOP (2).
+pub const SL_STATE_STOP: u8 = 2;
+/// State SAFE (3).
+pub const SL_STATE_SAFE: u8 = 3;
+/// State ERROR (4).
+pub const SL_STATE_ERROR: u8 = 4;
+/// State RESET (5).
+pub const SL_STATE_RESET: u8 = 5;
+/// State START (6).
+pub const SL_STATE_START: u8 = 6;
+/// State ERRORDELAY (7, MON).
+pub const SL_STATE_ERRORDELAY: u8 = 7;
+/// State DELAYOUT (8).
+pub const SL_STATE_DELAYOUT: u8 = 8;
+/// State FUNCTEST (9, MON).
+pub const SL_STATE_FUNCTEST: u8 = 9;
+
+/// Largest time parameter of FB_ESTOP and FB_MON in ms (see docs/semantics.md).
+pub const SL_TIME_PARAM_MAX: u32 = 65_535;
+
+/// Text for a status code (for `sl_status_str`); NUL-terminated so C can use it directly.
+pub const fn status_text(status: i32) -> &'static str {
+    match status {
+        SL_OK => "SL_OK: success\0",
+        SL_E_NULL => "SL_E_NULL: a required pointer is NULL\0",
+        SL_E_CONFIG => "SL_E_CONFIG: invalid parameters; block held in STOP with safe outputs\0",
+        SL_E_PARAM_CHANGED => {
+            "SL_E_PARAM_CHANGED: a parameter changed outside STOP; block in ERROR\0"
+        }
+        SL_E_CORRUPT => "SL_E_CORRUPT: private state failed its integrity check; block in ERROR\0",
+        SL_E_INVALID_BOOL => {
+            "SL_E_INVALID_BOOL: an input byte was neither 0 nor 1; read as the safe value\0"
+        }
+        SL_E_CLOCK => "SL_E_CLOCK: tNow went backwards; block in ERROR\0",
+        SL_E_INTERNAL => "SL_E_INTERNAL: internal fault caught at the C boundary; block in ERROR\0",
+        SL_E_ALIGNMENT => "SL_E_ALIGNMENT: instance pointer not aligned to 4 bytes\0",
+        _ => "unknown status code\0",
+    }
+}
+
+/// Name of a state value (for `sl_state_str`); NUL-terminated.
+pub const fn state_text(state: u8) -> &'static str {
+    match state {
+        SL_STATE_RUN => "RUN\0",
+        SL_STATE_STOP => "STOP\0",
+        SL_STATE_SAFE => "SAFE\0",
+        SL_STATE_ERROR => "ERROR\0",
+        SL_STATE_RESET => "RESET\0",
+        SL_STATE_START => "START\0",
+        SL_STATE_ERRORDELAY => "ERRORDELAY\0",
+        SL_STATE_DELAYOUT => "DELAYOUT\0",
+        SL_STATE_FUNCTEST => "FUNCTEST\0",
+        _ => "?\0",
+    }
+}
