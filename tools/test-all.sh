@@ -1,0 +1,47 @@
+#!/usr/bin/env bash
+# Runs every test of the project (Rust and C) on a fresh Debian machine with the Rust
+# toolchain. Installs what it needs (cmake via apt-get, Python packages into build/).
+# Exits non-zero on the first failure.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+root=$(pwd)
+
+step() { printf '\n==== %s ====\n' "$*"; }
+
+step "prerequisites"
+if ! command -v cmake >/dev/null 2>&1 || ! command -v ctest >/dev/null 2>&1; then
+    if [ "$(id -u)" = 0 ]; then sudo_cmd=""; else sudo_cmd="sudo"; fi
+    $sudo_cmd apt-get update -qq
+    DEBIAN_FRONTEND=noninteractive $sudo_cmd apt-get install -y -qq cmake >/dev/null
+fi
+for tool in cc c++ python3; do
+    command -v "$tool" >/dev/null || { echo "missing $tool (install gcc, g++, python3)"; exit 1; }
+done
+rustup component add rustfmt clippy >/dev/null 2>&1 || true
+cmake --version | head -1
+cargo --version
+
+step "format and lints"
+cargo fmt --all -- --check
+cargo clippy --all-targets -- -D warnings
+
+step "no_std build of the block layer"
+cargo rustc --quiet --lib --release --no-default-features --crate-type rlib
+
+step "release build (libsafelogic.a / .so) and header"
+cargo build --release --quiet
+
+step "Rust tests"
+cargo test --release
+
+step "C tests (ctest)"
+cmake -S c_tests -B build/c_tests -DSAFELOGIC_ROOT="$root" >/dev/null
+cmake --build build/c_tests -j2 >/dev/null
+ctest --test-dir build/c_tests --output-on-failure
+
+if [ -x tools/plc_check.sh ] || [ -f tools/plc_check.sh ]; then
+    step "PLC bindings"
+    bash tools/plc_check.sh
+fi
+
+step "all tests passed"
