@@ -72,6 +72,9 @@ fn with_layout_checks(text: &str) -> String {
     let mut layouts: HashMap<String, (usize, usize)> = HashMap::new();
     let mut checks = Vec::new();
     let mut current: Option<(String, Vec<Field>, usize, usize)> = None;
+    // Structs holding pointers (SL_MEMBER) differ between 32- and 64-bit targets: no
+    // published offsets, and no block may embed them.
+    let mut has_pointer = false;
     let mut doc_offset: Option<usize> = None;
 
     for line in text.lines() {
@@ -79,6 +82,7 @@ fn with_layout_checks(text: &str) -> String {
         if let Some(rest) = t.strip_prefix("typedef struct ") {
             let name = rest.trim_end_matches('{').trim().to_string();
             current = Some((name, Vec::new(), 0, 1));
+            has_pointer = false;
             continue;
         }
         let Some((name, fields, offset, align)) = current.as_mut() else {
@@ -90,6 +94,10 @@ fn with_layout_checks(text: &str) -> String {
                 .take_while(|c| c.is_ascii_digit())
                 .collect();
             doc_offset = digits.parse().ok();
+            continue;
+        }
+        if t.starts_with('}') && has_pointer {
+            current = None;
             continue;
         }
         if t.starts_with('}') {
@@ -127,6 +135,10 @@ fn with_layout_checks(text: &str) -> String {
             continue;
         };
         if decl.starts_with("/*") || decl.starts_with('*') {
+            continue;
+        }
+        if decl.contains('*') {
+            has_pointer = true;
             continue;
         }
         let mut parts = decl.split_whitespace().filter(|w| *w != "struct");

@@ -16,6 +16,62 @@
 #include <stddef.h>
 
 /*
+ Block type tags for `SL_MEMBER.nType`.
+ */
+#define SL_TYPE_ESTOP 1
+
+#define SL_TYPE_MON 2
+
+#define SL_TYPE_AND 3
+
+#define SL_TYPE_OR 4
+
+/*
+ Link kind: BOOL output to BOOL input (analog kinds will follow).
+ */
+#define SL_LINK_BOOL 0
+
+/*
+ Group state START (6): connections still starting up.
+ */
+#define SL_GROUP_STATE_START 6
+
+/*
+ Group state STOPERROR (7): started with connections assigned; Run leads to ERROR.
+ */
+#define SL_GROUP_STATE_STOPERROR 7
+
+/*
+ Group diag value: no error.
+ */
+#define SL_GROUP_DIAG_NONE 0
+
+/*
+ Group diag value FBERROR: at least one member is in ERROR.
+ */
+#define SL_GROUP_DIAG_FBERROR 1
+
+/*
+ Group diag value COMERROR: at least one connection is faulty.
+ */
+#define SL_GROUP_DIAG_COMERROR 2
+
+/*
+ Group diag value MODULEERROR: the input ModuleFault is TRUE.
+ */
+#define SL_GROUP_DIAG_MODULEERROR 3
+
+/*
+ Group diag value RESTARTERROR: the group was started with connections (STOPERROR).
+ */
+#define SL_GROUP_DIAG_RESTARTERROR 6
+
+/*
+ No member index.
+ */
+#define SL_NO_MEMBER 65535
+
+/*
  Success.
  */
 #define SL_OK 0
@@ -60,6 +116,11 @@
  Library extension: the instance pointer is not aligned to 4 bytes; nothing was written.
  */
 #define SL_E_ALIGNMENT (-8)
+
+/*
+ Library extension: the caller's member or link storage of a group is full.
+ */
+#define SL_E_FULL (-9)
 
 /*
  EDM1 feedback loop active.
@@ -565,6 +626,357 @@ typedef struct FB_MON {
   struct SL_GUARD_PRIVATE stPrivate;
 } FB_MON;
 
+/*
+ Private state of the combinational blocks (32 bytes). Never written by the user.
+ */
+typedef struct SL_LOGIC_PRIVATE {
+  struct SL_PRIVATE_HEADER stHeader;
+  uint8_t aReserved[4];
+} SL_LOGIC_PRIVATE;
+
+/*
+ FB AND instance (ABI §3, §9). Inputs at the manual's offsets (§4.1.2), output base 24.
+ */
+typedef struct FB_AND {
+  /*
+   Offset 0. Reserved, keep 0.
+   */
+  uint8_t aReserved0[8];
+  /*
+   Offset 8. Input 1 (may be a standard signal: it can only switch off).
+   */
+  SL_BOOL bAndIn1;
+  /*
+   Offset 9.
+   */
+  SL_BOOL bAndIn2;
+  /*
+   Offset 10.
+   */
+  SL_BOOL bAndIn3;
+  /*
+   Offset 11.
+   */
+  SL_BOOL bAndIn4;
+  /*
+   Offset 12.
+   */
+  SL_BOOL bAndIn5;
+  /*
+   Offset 13.
+   */
+  SL_BOOL bAndIn6;
+  /*
+   Offset 14.
+   */
+  SL_BOOL bAndIn7;
+  /*
+   Offset 15.
+   */
+  SL_BOOL bAndIn8;
+  /*
+   Offset 16. FbRun of the owning group.
+   */
+  SL_BOOL bRun;
+  /*
+   Offset 17. ErrAck of the owning group.
+   */
+  SL_BOOL bErrAck;
+  /*
+   Offset 18. Reserved, keep 0.
+   */
+  uint8_t aReserved1[2];
+  /*
+   Offset 20. Bit n-1 set: AndInn is active (at least two).
+   */
+  uint16_t wInputActive;
+  /*
+   Offset 22. Bit n-1 set: AndInn is a make contact (negated before the AND).
+   */
+  uint16_t wInputNegated;
+  /*
+   Offset 24 (output base + 0). Reserved.
+   */
+  uint8_t aReserved2[1];
+  /*
+   Offset 25 (output base + 1). AND of the active inputs.
+   */
+  SL_BOOL bAndOut;
+  /*
+   Offset 26. Reserved.
+   */
+  uint8_t aReserved3[6];
+  /*
+   Offset 32. The manual's status value (SL_STATE_*).
+   */
+  uint8_t nState;
+  /*
+   Offset 33. Reserved.
+   */
+  uint8_t aReserved4[1];
+  /*
+   Offset 34. Diagnostic bits (only the library bits 13-15).
+   */
+  uint16_t nDiag;
+  /*
+   Offset 36. Reserved.
+   */
+  uint8_t aReserved5[4];
+  /*
+   Offset 40. Private state, 32 bytes: never write it.
+   */
+  struct SL_LOGIC_PRIVATE stPrivate;
+} FB_AND;
+
+/*
+ FB OR instance (ABI §3, §9). Inputs at the manual's offsets (§4.2.2), output base 24.
+ */
+typedef struct FB_OR {
+  /*
+   Offset 0. Reserved, keep 0.
+   */
+  uint8_t aReserved0[8];
+  /*
+   Offset 8. Input 1.
+   */
+  SL_BOOL bOrIn1;
+  /*
+   Offset 9.
+   */
+  SL_BOOL bOrIn2;
+  /*
+   Offset 10.
+   */
+  SL_BOOL bOrIn3;
+  /*
+   Offset 11.
+   */
+  SL_BOOL bOrIn4;
+  /*
+   Offset 12.
+   */
+  SL_BOOL bOrIn5;
+  /*
+   Offset 13.
+   */
+  SL_BOOL bOrIn6;
+  /*
+   Offset 14.
+   */
+  SL_BOOL bOrIn7;
+  /*
+   Offset 15.
+   */
+  SL_BOOL bOrIn8;
+  /*
+   Offset 16. FbRun of the owning group.
+   */
+  SL_BOOL bRun;
+  /*
+   Offset 17. ErrAck of the owning group.
+   */
+  SL_BOOL bErrAck;
+  /*
+   Offset 18. Reserved, keep 0.
+   */
+  uint8_t aReserved1[2];
+  /*
+   Offset 20. Bit n-1 set: OrInn is active (at least one).
+   */
+  uint16_t wInputActive;
+  /*
+   Offset 22. Bit n-1 set: OrInn is a make contact (negated before the OR).
+   */
+  uint16_t wInputNegated;
+  /*
+   Offset 24 (output base + 0). Reserved.
+   */
+  uint8_t aReserved2[1];
+  /*
+   Offset 25 (output base + 1). OR of the active inputs.
+   */
+  SL_BOOL bOrOut;
+  /*
+   Offset 26. Reserved.
+   */
+  uint8_t aReserved3[6];
+  /*
+   Offset 32. The manual's status value (SL_STATE_*).
+   */
+  uint8_t nState;
+  /*
+   Offset 33. Reserved.
+   */
+  uint8_t aReserved4[1];
+  /*
+   Offset 34. Diagnostic bits (only the library bits 13-15).
+   */
+  uint16_t nDiag;
+  /*
+   Offset 36. Reserved.
+   */
+  uint8_t aReserved5[4];
+  /*
+   Offset 40. Private state, 32 bytes: never write it.
+   */
+  struct SL_LOGIC_PRIVATE stPrivate;
+} FB_OR;
+
+/*
+ Private state of a group (32 bytes): data words and their complements.
+ */
+typedef struct SL_GROUP_PRIVATE {
+  /*
+   wMagic | nState << 16 | nFlags << 24.
+   */
+  uint32_t dwCtrl;
+  /*
+   nDiag | nFailed << 16.
+   */
+  uint32_t dwDiag;
+  /*
+   nMembers | nMemberCap << 16.
+   */
+  uint32_t dwMembers;
+  /*
+   nLinks | nLinkCap << 16.
+   */
+  uint32_t dwLinks;
+  /*
+   Complements of the four words above.
+   */
+  uint32_t adwCheck[4];
+} SL_GROUP_PRIVATE;
+
+/*
+ A TwinSAFE group with the EL6910 interface (manual §3.1.1.2, §3.2.5).
+ */
+typedef struct SL_GROUP {
+  /*
+   Offset 0. Run/Stop: TRUE executes the members.
+   */
+  SL_BOOL bRun;
+  /*
+   Offset 1. Err Ack: FALSE→TRUE→FALSE acknowledges group and member errors.
+   */
+  SL_BOOL bErrAck;
+  /*
+   Offset 2. Module Fault: error output of another module (→ OtherErr, group ERROR).
+   */
+  SL_BOOL bModuleFault;
+  /*
+   Offset 3. A connection of the group reports an error (until connections are members).
+   */
+  SL_BOOL bComErrIn;
+  /*
+   Offset 4. A connection of the group is still starting up.
+   */
+  SL_BOOL bComStartupIn;
+  /*
+   Offset 5. Parameter: TRUE = connections are assigned (start in STOPERROR).
+   */
+  SL_BOOL bConnections;
+  /*
+   Offset 6. Reserved, keep 0.
+   */
+  uint8_t aReserved0[2];
+  /*
+   Offset 8. Communication error in at least one connection.
+   */
+  SL_BOOL bComErr;
+  /*
+   Offset 9. Error in at least one member.
+   */
+  SL_BOOL bFbErr;
+  /*
+   Offset 10. Not used (FALSE).
+   */
+  SL_BOOL bOutErr;
+  /*
+   Offset 11. ModuleFault.
+   */
+  SL_BOOL bOtherErr;
+  /*
+   Offset 12. At least one connection is starting up.
+   */
+  SL_BOOL bComStartup;
+  /*
+   Offset 13. The group is deactivated (never: no customizing).
+   */
+  SL_BOOL bFbDeactive;
+  /*
+   Offset 14. All members are in RUN.
+   */
+  SL_BOOL bFbRun;
+  /*
+   Offset 15. The group is in RUN.
+   */
+  SL_BOOL bInRun;
+  /*
+   Offset 16. Group state (1 RUN, 2 STOP, 4 ERROR, 5 RESET, 6 START, 7 STOPERROR).
+   */
+  uint8_t nState;
+  /*
+   Offset 17. Reserved.
+   */
+  uint8_t aReserved1[1];
+  /*
+   Offset 18. Group diag value (0 none, 1 FBERROR, 2 COMERROR, 3 MODULEERROR, 6 RESTARTERROR).
+   */
+  uint16_t nDiag;
+  /*
+   Offset 20. Index of the member whose ERROR stopped the group (0xFFFF: none).
+   */
+  uint16_t nFailedMember;
+  /*
+   Offset 22. Number of members.
+   */
+  uint16_t nMembers;
+  /*
+   Offset 24. Number of links.
+   */
+  uint16_t nLinks;
+  /*
+   Offset 26. Reserved.
+   */
+  uint8_t aReserved2[6];
+  /*
+   Offset 32. Private state, 32 bytes: never write it.
+   */
+  struct SL_GROUP_PRIVATE stPrivate;
+} SL_GROUP;
+
+/*
+ One member entry in caller storage.
+ */
+typedef struct SL_MEMBER {
+  /*
+   The block instance (FB_<NAME> *).
+   */
+  void *pBlock;
+  /*
+   SL_TYPE_* of the block.
+   */
+  uint16_t nType;
+  uint8_t aReserved[6];
+} SL_MEMBER;
+
+/*
+ One link in caller storage: output byte `nSrcOffset` of member `nSrcMember` is copied
+ to input byte `nDstOffset` of member `nDstMember` just before the destination runs.
+ */
+typedef struct SL_LINK {
+  uint16_t nSrcMember;
+  uint16_t nSrcOffset;
+  uint16_t nDstMember;
+  uint16_t nDstOffset;
+  /*
+   SL_LINK_BOOL.
+   */
+  uint8_t nKind;
+  uint8_t aReserved[3];
+} SL_LINK;
+
 #ifdef __cplusplus
 extern "C" {
 #endif // __cplusplus
@@ -610,6 +1022,55 @@ uint32_t sl_time_now_ms(void);
  Library version, static and NUL-terminated ("MAJOR.MINOR.PATCH").
  */
 const char *sl_version(void);
+
+/*
+ Validates and latches the parameters of an FB_AND and resets it to power-up (STOP).
+ */
+int32_t sl_and_init(struct FB_AND *fb);
+
+/*
+ One task cycle of an FB_AND at `tNow` (monotonic ms).
+ */
+int32_t sl_and_cycle(struct FB_AND *fb, uint32_t tNow);
+
+/*
+ Validates and latches the parameters of an FB_OR and resets it to power-up (STOP).
+ */
+int32_t sl_or_init(struct FB_OR *fb);
+
+/*
+ One task cycle of an FB_OR at `tNow` (monotonic ms).
+ */
+int32_t sl_or_cycle(struct FB_OR *fb, uint32_t tNow);
+
+/*
+ Resets a group to power-up (STOP, or STOPERROR with bConnections) with the caller's
+ storage for `nMemberCap` members and `nLinkCap` links. The same arrays must be passed to
+ every later sl_group_* call. Does not modify the group's input fields.
+ */
+int32_t sl_group_init(struct SL_GROUP *g, struct SL_MEMBER *aMembers, uint16_t nMemberCap, struct SL_LINK *aLinks, uint16_t nLinkCap);
+
+/*
+ Adds a block as the next member (execution order) while the group is stopped.
+ `nType` is SL_TYPE_<NAME>; the index is written to `*pIndex` unless it is NULL.
+ A block can be a member once; SL_E_FULL when the member storage is full.
+ */
+int32_t sl_group_add_member(struct SL_GROUP *g, struct SL_MEMBER *aMembers, uint16_t nType, void *pBlock, uint16_t *pIndex);
+
+/*
+ Links BOOL output byte `nSrcOffset` of member `nSrcMember` to BOOL input byte
+ `nDstOffset` of member `nDstMember` (offsets as in the FB_<NAME> structs). The value is
+ copied just before the destination executes: a link from an earlier member carries this
+ cycle's value, one from a later member the previous cycle's. SL_E_CONFIG for a field
+ that is not a linkable output / input of a member, or an input that is already linked.
+ */
+int32_t sl_group_add_link(struct SL_GROUP *g, struct SL_MEMBER *aMembers, struct SL_LINK *aLinks, uint16_t nSrcMember, uint16_t nSrcOffset, uint16_t nDstMember, uint16_t nDstOffset);
+
+/*
+ One group cycle at `tNow`: group state, then every member in order (links first), all
+ with the same `tNow`. Returns the group's status or the worst status of a member.
+ */
+int32_t sl_group_cycle(struct SL_GROUP *g, struct SL_MEMBER *aMembers, struct SL_LINK *aLinks, uint32_t tNow);
 
 #ifdef __cplusplus
 }  // extern "C"
@@ -710,5 +1171,91 @@ SL_STATIC_ASSERT(offsetof(FB_MON, nDiag) == 66, "offset of FB_MON.nDiag");
 SL_STATIC_ASSERT(offsetof(FB_MON, aReserved6) == 68, "offset of FB_MON.aReserved6");
 SL_STATIC_ASSERT(offsetof(FB_MON, stPrivate) == 72, "offset of FB_MON.stPrivate");
 SL_STATIC_ASSERT(sizeof(FB_MON) == 136, "size of FB_MON");
+SL_STATIC_ASSERT(offsetof(SL_LOGIC_PRIVATE, stHeader) == 0, "offset of SL_LOGIC_PRIVATE.stHeader");
+SL_STATIC_ASSERT(offsetof(SL_LOGIC_PRIVATE, aReserved) == 28, "offset of SL_LOGIC_PRIVATE.aReserved");
+SL_STATIC_ASSERT(sizeof(SL_LOGIC_PRIVATE) == 32, "size of SL_LOGIC_PRIVATE");
+SL_STATIC_ASSERT(offsetof(FB_AND, aReserved0) == 0, "offset of FB_AND.aReserved0");
+SL_STATIC_ASSERT(offsetof(FB_AND, bAndIn1) == 8, "offset of FB_AND.bAndIn1");
+SL_STATIC_ASSERT(offsetof(FB_AND, bAndIn2) == 9, "offset of FB_AND.bAndIn2");
+SL_STATIC_ASSERT(offsetof(FB_AND, bAndIn3) == 10, "offset of FB_AND.bAndIn3");
+SL_STATIC_ASSERT(offsetof(FB_AND, bAndIn4) == 11, "offset of FB_AND.bAndIn4");
+SL_STATIC_ASSERT(offsetof(FB_AND, bAndIn5) == 12, "offset of FB_AND.bAndIn5");
+SL_STATIC_ASSERT(offsetof(FB_AND, bAndIn6) == 13, "offset of FB_AND.bAndIn6");
+SL_STATIC_ASSERT(offsetof(FB_AND, bAndIn7) == 14, "offset of FB_AND.bAndIn7");
+SL_STATIC_ASSERT(offsetof(FB_AND, bAndIn8) == 15, "offset of FB_AND.bAndIn8");
+SL_STATIC_ASSERT(offsetof(FB_AND, bRun) == 16, "offset of FB_AND.bRun");
+SL_STATIC_ASSERT(offsetof(FB_AND, bErrAck) == 17, "offset of FB_AND.bErrAck");
+SL_STATIC_ASSERT(offsetof(FB_AND, aReserved1) == 18, "offset of FB_AND.aReserved1");
+SL_STATIC_ASSERT(offsetof(FB_AND, wInputActive) == 20, "offset of FB_AND.wInputActive");
+SL_STATIC_ASSERT(offsetof(FB_AND, wInputNegated) == 22, "offset of FB_AND.wInputNegated");
+SL_STATIC_ASSERT(offsetof(FB_AND, aReserved2) == 24, "offset of FB_AND.aReserved2");
+SL_STATIC_ASSERT(offsetof(FB_AND, bAndOut) == 25, "offset of FB_AND.bAndOut");
+SL_STATIC_ASSERT(offsetof(FB_AND, aReserved3) == 26, "offset of FB_AND.aReserved3");
+SL_STATIC_ASSERT(offsetof(FB_AND, nState) == 32, "offset of FB_AND.nState");
+SL_STATIC_ASSERT(offsetof(FB_AND, aReserved4) == 33, "offset of FB_AND.aReserved4");
+SL_STATIC_ASSERT(offsetof(FB_AND, nDiag) == 34, "offset of FB_AND.nDiag");
+SL_STATIC_ASSERT(offsetof(FB_AND, aReserved5) == 36, "offset of FB_AND.aReserved5");
+SL_STATIC_ASSERT(offsetof(FB_AND, stPrivate) == 40, "offset of FB_AND.stPrivate");
+SL_STATIC_ASSERT(sizeof(FB_AND) == 72, "size of FB_AND");
+SL_STATIC_ASSERT(offsetof(FB_OR, aReserved0) == 0, "offset of FB_OR.aReserved0");
+SL_STATIC_ASSERT(offsetof(FB_OR, bOrIn1) == 8, "offset of FB_OR.bOrIn1");
+SL_STATIC_ASSERT(offsetof(FB_OR, bOrIn2) == 9, "offset of FB_OR.bOrIn2");
+SL_STATIC_ASSERT(offsetof(FB_OR, bOrIn3) == 10, "offset of FB_OR.bOrIn3");
+SL_STATIC_ASSERT(offsetof(FB_OR, bOrIn4) == 11, "offset of FB_OR.bOrIn4");
+SL_STATIC_ASSERT(offsetof(FB_OR, bOrIn5) == 12, "offset of FB_OR.bOrIn5");
+SL_STATIC_ASSERT(offsetof(FB_OR, bOrIn6) == 13, "offset of FB_OR.bOrIn6");
+SL_STATIC_ASSERT(offsetof(FB_OR, bOrIn7) == 14, "offset of FB_OR.bOrIn7");
+SL_STATIC_ASSERT(offsetof(FB_OR, bOrIn8) == 15, "offset of FB_OR.bOrIn8");
+SL_STATIC_ASSERT(offsetof(FB_OR, bRun) == 16, "offset of FB_OR.bRun");
+SL_STATIC_ASSERT(offsetof(FB_OR, bErrAck) == 17, "offset of FB_OR.bErrAck");
+SL_STATIC_ASSERT(offsetof(FB_OR, aReserved1) == 18, "offset of FB_OR.aReserved1");
+SL_STATIC_ASSERT(offsetof(FB_OR, wInputActive) == 20, "offset of FB_OR.wInputActive");
+SL_STATIC_ASSERT(offsetof(FB_OR, wInputNegated) == 22, "offset of FB_OR.wInputNegated");
+SL_STATIC_ASSERT(offsetof(FB_OR, aReserved2) == 24, "offset of FB_OR.aReserved2");
+SL_STATIC_ASSERT(offsetof(FB_OR, bOrOut) == 25, "offset of FB_OR.bOrOut");
+SL_STATIC_ASSERT(offsetof(FB_OR, aReserved3) == 26, "offset of FB_OR.aReserved3");
+SL_STATIC_ASSERT(offsetof(FB_OR, nState) == 32, "offset of FB_OR.nState");
+SL_STATIC_ASSERT(offsetof(FB_OR, aReserved4) == 33, "offset of FB_OR.aReserved4");
+SL_STATIC_ASSERT(offsetof(FB_OR, nDiag) == 34, "offset of FB_OR.nDiag");
+SL_STATIC_ASSERT(offsetof(FB_OR, aReserved5) == 36, "offset of FB_OR.aReserved5");
+SL_STATIC_ASSERT(offsetof(FB_OR, stPrivate) == 40, "offset of FB_OR.stPrivate");
+SL_STATIC_ASSERT(sizeof(FB_OR) == 72, "size of FB_OR");
+SL_STATIC_ASSERT(offsetof(SL_GROUP_PRIVATE, dwCtrl) == 0, "offset of SL_GROUP_PRIVATE.dwCtrl");
+SL_STATIC_ASSERT(offsetof(SL_GROUP_PRIVATE, dwDiag) == 4, "offset of SL_GROUP_PRIVATE.dwDiag");
+SL_STATIC_ASSERT(offsetof(SL_GROUP_PRIVATE, dwMembers) == 8, "offset of SL_GROUP_PRIVATE.dwMembers");
+SL_STATIC_ASSERT(offsetof(SL_GROUP_PRIVATE, dwLinks) == 12, "offset of SL_GROUP_PRIVATE.dwLinks");
+SL_STATIC_ASSERT(offsetof(SL_GROUP_PRIVATE, adwCheck) == 16, "offset of SL_GROUP_PRIVATE.adwCheck");
+SL_STATIC_ASSERT(sizeof(SL_GROUP_PRIVATE) == 32, "size of SL_GROUP_PRIVATE");
+SL_STATIC_ASSERT(offsetof(SL_GROUP, bRun) == 0, "offset of SL_GROUP.bRun");
+SL_STATIC_ASSERT(offsetof(SL_GROUP, bErrAck) == 1, "offset of SL_GROUP.bErrAck");
+SL_STATIC_ASSERT(offsetof(SL_GROUP, bModuleFault) == 2, "offset of SL_GROUP.bModuleFault");
+SL_STATIC_ASSERT(offsetof(SL_GROUP, bComErrIn) == 3, "offset of SL_GROUP.bComErrIn");
+SL_STATIC_ASSERT(offsetof(SL_GROUP, bComStartupIn) == 4, "offset of SL_GROUP.bComStartupIn");
+SL_STATIC_ASSERT(offsetof(SL_GROUP, bConnections) == 5, "offset of SL_GROUP.bConnections");
+SL_STATIC_ASSERT(offsetof(SL_GROUP, aReserved0) == 6, "offset of SL_GROUP.aReserved0");
+SL_STATIC_ASSERT(offsetof(SL_GROUP, bComErr) == 8, "offset of SL_GROUP.bComErr");
+SL_STATIC_ASSERT(offsetof(SL_GROUP, bFbErr) == 9, "offset of SL_GROUP.bFbErr");
+SL_STATIC_ASSERT(offsetof(SL_GROUP, bOutErr) == 10, "offset of SL_GROUP.bOutErr");
+SL_STATIC_ASSERT(offsetof(SL_GROUP, bOtherErr) == 11, "offset of SL_GROUP.bOtherErr");
+SL_STATIC_ASSERT(offsetof(SL_GROUP, bComStartup) == 12, "offset of SL_GROUP.bComStartup");
+SL_STATIC_ASSERT(offsetof(SL_GROUP, bFbDeactive) == 13, "offset of SL_GROUP.bFbDeactive");
+SL_STATIC_ASSERT(offsetof(SL_GROUP, bFbRun) == 14, "offset of SL_GROUP.bFbRun");
+SL_STATIC_ASSERT(offsetof(SL_GROUP, bInRun) == 15, "offset of SL_GROUP.bInRun");
+SL_STATIC_ASSERT(offsetof(SL_GROUP, nState) == 16, "offset of SL_GROUP.nState");
+SL_STATIC_ASSERT(offsetof(SL_GROUP, aReserved1) == 17, "offset of SL_GROUP.aReserved1");
+SL_STATIC_ASSERT(offsetof(SL_GROUP, nDiag) == 18, "offset of SL_GROUP.nDiag");
+SL_STATIC_ASSERT(offsetof(SL_GROUP, nFailedMember) == 20, "offset of SL_GROUP.nFailedMember");
+SL_STATIC_ASSERT(offsetof(SL_GROUP, nMembers) == 22, "offset of SL_GROUP.nMembers");
+SL_STATIC_ASSERT(offsetof(SL_GROUP, nLinks) == 24, "offset of SL_GROUP.nLinks");
+SL_STATIC_ASSERT(offsetof(SL_GROUP, aReserved2) == 26, "offset of SL_GROUP.aReserved2");
+SL_STATIC_ASSERT(offsetof(SL_GROUP, stPrivate) == 32, "offset of SL_GROUP.stPrivate");
+SL_STATIC_ASSERT(sizeof(SL_GROUP) == 64, "size of SL_GROUP");
+SL_STATIC_ASSERT(offsetof(SL_LINK, nSrcMember) == 0, "offset of SL_LINK.nSrcMember");
+SL_STATIC_ASSERT(offsetof(SL_LINK, nSrcOffset) == 2, "offset of SL_LINK.nSrcOffset");
+SL_STATIC_ASSERT(offsetof(SL_LINK, nDstMember) == 4, "offset of SL_LINK.nDstMember");
+SL_STATIC_ASSERT(offsetof(SL_LINK, nDstOffset) == 6, "offset of SL_LINK.nDstOffset");
+SL_STATIC_ASSERT(offsetof(SL_LINK, nKind) == 8, "offset of SL_LINK.nKind");
+SL_STATIC_ASSERT(offsetof(SL_LINK, aReserved) == 9, "offset of SL_LINK.aReserved");
+SL_STATIC_ASSERT(sizeof(SL_LINK) == 12, "size of SL_LINK");
 
 #endif  /* SAFELOGIC_H */

@@ -3,10 +3,13 @@
 //! checks NULL and alignment. Nothing else in the crate is `unsafe`.
 #![allow(unsafe_code)]
 
+use crate::group::{
+    self, Member, Members, SL_LINK_BOOL, SL_TYPE_AND, SL_TYPE_ESTOP, SL_TYPE_MON, SL_TYPE_OR,
+};
 use crate::prim::envelope::{self, Block};
 use crate::types::*;
-use crate::{FB_ESTOP, FB_MON};
-use core::ffi::c_char;
+use crate::{FB_AND, FB_ESTOP, FB_MON, FB_OR, SL_GROUP, SL_LINK, SL_MEMBER};
+use core::ffi::{c_char, c_void};
 
 /// Runs `$body`; a panic becomes `$on_panic` instead of unwinding into C.
 macro_rules! ffi_boundary {
@@ -120,3 +123,192 @@ pub extern "C" fn sl_version() -> *const c_char {
 }
 
 const VERSION: &str = concat!(env!("CARGO_PKG_VERSION"), "\0");
+
+/// Validates and latches the parameters of an FB_AND and resets it to power-up (STOP).
+#[no_mangle]
+pub extern "C" fn sl_and_init(fb: *mut FB_AND) -> i32 {
+    block_call(fb, envelope::init)
+}
+
+/// One task cycle of an FB_AND at `tNow` (monotonic ms).
+#[no_mangle]
+#[allow(non_snake_case)]
+pub extern "C" fn sl_and_cycle(fb: *mut FB_AND, tNow: u32) -> i32 {
+    block_call(fb, |fb| envelope::cycle(fb, tNow))
+}
+
+/// Validates and latches the parameters of an FB_OR and resets it to power-up (STOP).
+#[no_mangle]
+pub extern "C" fn sl_or_init(fb: *mut FB_OR) -> i32 {
+    block_call(fb, envelope::init)
+}
+
+/// One task cycle of an FB_OR at `tNow` (monotonic ms).
+#[no_mangle]
+#[allow(non_snake_case)]
+pub extern "C" fn sl_or_cycle(fb: *mut FB_OR, tNow: u32) -> i32 {
+    block_call(fb, |fb| envelope::cycle(fb, tNow))
+}
+
+/// The one dispatch from a block type tag to the block: every group operation on a member
+/// goes through here.
+fn member_dyn<'a>(ty: u16, p: *mut c_void) -> Option<&'a mut dyn Member> {
+    fn cast<'a, B: Member + 'a>(p: *mut c_void) -> Option<&'a mut dyn Member> {
+        instance(p.cast::<B>()).ok().map(|b| b as &mut dyn Member)
+    }
+    match ty {
+        SL_TYPE_ESTOP => cast::<FB_ESTOP>(p),
+        SL_TYPE_MON => cast::<FB_MON>(p),
+        SL_TYPE_AND => cast::<FB_AND>(p),
+        SL_TYPE_OR => cast::<FB_OR>(p),
+        _ => None,
+    }
+}
+
+/// The caller's member table seen as group members.
+struct CMembers<'a>(&'a [SL_MEMBER]);
+
+impl Members for CMembers<'_> {
+    fn with<R>(&mut self, i: usize, f: impl FnOnce(&mut dyn Member) -> R) -> Option<R> {
+        let e = self.0.get(i)?;
+        member_dyn(e.nType, e.pBlock).map(f)
+    }
+}
+
+/// A caller array as a slice; NULL is allowed only for an empty one.
+fn storage<'a, T>(p: *mut T, len: usize) -> Result<&'a mut [T], i32> {
+    if len == 0 {
+        return Ok(&mut []);
+    }
+    let first = instance(p)?;
+    // SAFETY: `p` is non-null and aligned (checked by `instance`); the caller guarantees
+    // (sl_group_init contract) that it points to at least `len` elements it owns and does
+    // not touch during the call.
+    Ok(unsafe { core::slice::from_raw_parts_mut(first as *mut T, len) })
+}
+
+/// Resets a group to power-up (STOP, or STOPERROR with bConnections) with the caller's
+/// storage for `nMemberCap` members and `nLinkCap` links. The same arrays must be passed to
+/// every later sl_group_* call. Does not modify the group's input fields.
+#[no_mangle]
+#[allow(non_snake_case)]
+pub extern "C" fn sl_group_init(
+    g: *mut SL_GROUP,
+    aMembers: *mut SL_MEMBER,
+    nMemberCap: u16,
+    aLinks: *mut SL_LINK,
+    nLinkCap: u16,
+) -> i32 {
+    ffi_boundary!(SL_E_INTERNAL, {
+        let run = || -> Result<i32, i32> {
+            let g = instance(g)?;
+            storage(aMembers, usize::from(nMemberCap))?.fill(SL_MEMBER::default());
+            storage(aLinks, usize::from(nLinkCap))?.fill(SL_LINK::default());
+            Ok(group::init(g, nMemberCap, nLinkCap))
+        };
+        run().unwrap_or_else(|e| e)
+    })
+}
+
+/// Adds a block as the next member (execution order) while the group is stopped.
+/// `nType` is SL_TYPE_<NAME>; the index is written to `*pIndex` unless it is NULL.
+/// A block can be a member once; SL_E_FULL when the member storage is full.
+#[no_mangle]
+#[allow(non_snake_case)]
+pub extern "C" fn sl_group_add_member(
+    g: *mut SL_GROUP,
+    aMembers: *mut SL_MEMBER,
+    nType: u16,
+    pBlock: *mut c_void,
+    pIndex: *mut u16,
+) -> i32 {
+    ffi_boundary!(SL_E_INTERNAL, {
+        let run = || -> Result<i32, i32> {
+            let group_addr = g as usize;
+            let g = instance(g)?;
+            member_dyn(nType, pBlock).ok_or(if pBlock.is_null() {
+                SL_E_NULL
+            } else {
+                SL_E_CONFIG
+            })?;
+            let overlaps_group =
+                (pBlock as usize).abs_diff(group_addr) < core::mem::size_of::<SL_GROUP>();
+            let (members, _) = group::storage_len(g).ok_or(SL_E_CORRUPT)?;
+            let table = storage(aMembers, members + 1)?;
+            if overlaps_group || table[..members].iter().any(|m| m.pBlock == pBlock) {
+                return Err(SL_E_CONFIG);
+            }
+            let index = group::reserve_member(g)?;
+            table[usize::from(index)] = SL_MEMBER {
+                pBlock,
+                nType,
+                aReserved: [0; 6],
+            };
+            if let Ok(out) = instance(pIndex) {
+                *out = index;
+            }
+            Ok(SL_OK)
+        };
+        run().unwrap_or_else(|e| e)
+    })
+}
+
+/// Links BOOL output byte `nSrcOffset` of member `nSrcMember` to BOOL input byte
+/// `nDstOffset` of member `nDstMember` (offsets as in the FB_<NAME> structs). The value is
+/// copied just before the destination executes: a link from an earlier member carries this
+/// cycle's value, one from a later member the previous cycle's. SL_E_CONFIG for a field
+/// that is not a linkable output / input of a member, or an input that is already linked.
+#[no_mangle]
+#[allow(non_snake_case)]
+pub extern "C" fn sl_group_add_link(
+    g: *mut SL_GROUP,
+    aMembers: *mut SL_MEMBER,
+    aLinks: *mut SL_LINK,
+    nSrcMember: u16,
+    nSrcOffset: u16,
+    nDstMember: u16,
+    nDstOffset: u16,
+) -> i32 {
+    ffi_boundary!(SL_E_INTERNAL, {
+        let run = || -> Result<i32, i32> {
+            let g = instance(g)?;
+            let (members, _) = group::storage_len(g).ok_or(SL_E_CORRUPT)?;
+            let table = storage(aMembers, members)?;
+            let links = storage(aLinks, group::link_capacity(g).ok_or(SL_E_CORRUPT)?)?;
+            let link = SL_LINK {
+                nSrcMember,
+                nSrcOffset,
+                nDstMember,
+                nDstOffset,
+                nKind: SL_LINK_BOOL,
+                aReserved: [0; 3],
+            };
+            Ok(group::add_link(g, &mut CMembers(table), links, link))
+        };
+        run().unwrap_or_else(|e| e)
+    })
+}
+
+/// One group cycle at `tNow`: group state, then every member in order (links first), all
+/// with the same `tNow`. Returns the group's status or the worst status of a member.
+#[no_mangle]
+#[allow(non_snake_case)]
+pub extern "C" fn sl_group_cycle(
+    g: *mut SL_GROUP,
+    aMembers: *mut SL_MEMBER,
+    aLinks: *mut SL_LINK,
+    tNow: u32,
+) -> i32 {
+    ffi_boundary!(SL_E_INTERNAL, {
+        let run = || -> Result<i32, i32> {
+            let g = instance(g)?;
+            let Some((members, links)) = group::storage_len(g) else {
+                return Ok(group::cycle(g, &mut CMembers(&[]), &[], tNow));
+            };
+            let table = storage(aMembers, members)?;
+            let links = storage(aLinks, links)?;
+            Ok(group::cycle(g, &mut CMembers(table), links, tNow))
+        };
+        run().unwrap_or_else(|e| e)
+    })
+}

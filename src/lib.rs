@@ -8,15 +8,20 @@
 #![deny(unsafe_code)]
 
 pub mod blocks;
+pub mod group;
 pub mod prim;
 pub mod types;
 
 #[cfg(feature = "std")]
 pub mod ffi;
 
+pub use blocks::and::FB_AND;
 pub use blocks::estop::FB_ESTOP;
 pub use blocks::guard::SL_GUARD_PRIVATE;
+pub use blocks::logic::SL_LOGIC_PRIVATE;
 pub use blocks::mon::FB_MON;
+pub use blocks::or::FB_OR;
+pub use group::{SL_GROUP, SL_GROUP_PRIVATE, SL_LINK, SL_MEMBER};
 pub use prim::header::SL_PRIVATE_HEADER;
 pub use types::*;
 

@@ -26,6 +26,8 @@ pub const SL_E_CLOCK: i32 = -6;
 pub const SL_E_INTERNAL: i32 = -7;
 /// Library extension: the instance pointer is not aligned to 4 bytes; nothing was written.
 pub const SL_E_ALIGNMENT: i32 = -8;
+/// Library extension: the caller's member or link storage of a group is full.
+pub const SL_E_FULL: i32 = -9;
 
 /// EDM1 feedback loop active.
 pub const SL_OPT_EDM1: u32 = 1 << 0;
@@ -135,6 +137,7 @@ pub const fn status_text(status: i32) -> &'static str {
         SL_E_CLOCK => "SL_E_CLOCK: tNow went backwards; block in ERROR\0",
         SL_E_INTERNAL => "SL_E_INTERNAL: internal fault caught at the C boundary; block in ERROR\0",
         SL_E_ALIGNMENT => "SL_E_ALIGNMENT: instance pointer not aligned to 4 bytes\0",
+        SL_E_FULL => "SL_E_FULL: the group's member or link storage is full\0",
         _ => "unknown status code\0",
     }
 }

@@ -113,8 +113,17 @@ const _: () = {
     assert!(core::mem::align_of::<FB_ESTOP>() == 4);
 };
 
+crate::impl_member!(
+    FB_ESTOP,
+    [
+        bRestart, bEDM1, bEDM2, bEStopIn1, bEStopIn2, bEStopIn3, bEStopIn4, bEStopIn5, bEStopIn6,
+        bEStopIn7, bEStopIn8
+    ],
+    [bError, bEStopOut, bEStopDelOut]
+);
+
 impl GuardBlock for FB_ESTOP {
-    const MAGIC: u16 = 0xE570;
+    const TAG: u16 = 0xE570;
     const OPTIONS: u32 =
         SL_OPT_EDM1 | SL_OPT_EDM2 | SL_OPT_SAFE_INPUTS_AFTER_DISC | SL_OPT_MANUAL_RESTART;
     const INPUTS: u16 = 0xFF;

@@ -118,8 +118,14 @@ const _: () = {
 const MON_INPUTS: u8 = 0x0F;
 const SECURE_INPUTS: u8 = 0x30;
 
+crate::impl_member!(
+    FB_MON,
+    [bRestart, bEDM1, bEDM2, bMonIn1, bMonIn2, bMonIn3, bMonIn4, bSecure1, bSecure2],
+    [bError, bMonOut, bMonDelOut]
+);
+
 impl GuardBlock for FB_MON {
-    const MAGIC: u16 = 0x3011;
+    const TAG: u16 = 0x3011;
     const OPTIONS: u32 = SL_OPT_EDM1
         | SL_OPT_EDM2
         | SL_OPT_SAFE_INPUTS_AFTER_DISC

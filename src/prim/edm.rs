@@ -29,13 +29,9 @@ impl Edm {
     /// and the condition that keeps an EDM error from being acknowledged).
     #[inline]
     pub fn not_released(&self) -> u16 {
-        let mut d = 0;
-        for x in 0..2 {
-            if self.active[x] && !self.is_true[x] {
-                d |= DIAG[x];
-            }
-        }
-        d
+        (0..2)
+            .filter(|&x| self.active[x] && !self.is_true[x])
+            .fold(0, |d, x| d | DIAG[x])
     }
 
     /// EDM reset-time check while the outputs are on. `pending` bit x (1 << x) stays set
@@ -50,7 +46,7 @@ impl Edm {
         now: u32,
     ) -> u16 {
         let mut d = 0;
-        for x in 0..2 {
+        for (x, diag) in DIAG.iter().enumerate() {
             let bit = 1u8 << x;
             if *pending & bit == 0 {
                 continue;
@@ -58,7 +54,7 @@ impl Edm {
             if self.is_false[x] {
                 *pending &= !bit;
             } else if time::reached(now, t_on, u32::from(reset_time[x])) {
-                d |= DIAG[x];
+                d |= diag;
             }
         }
         d

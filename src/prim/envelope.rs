@@ -37,8 +37,9 @@ pub trait Block {
     /// Reads the input bytes, updates the block's edge memories, and tells whether a byte
     /// was an invalid BOOL.
     fn decode(&mut self) -> (Self::In, bool);
-    /// Enters the block's start state (after STOP → run and after RESET).
-    fn start(&mut self, now: u32);
+    /// Enters the block's start state (after STOP → run and after RESET), seeing this
+    /// cycle's inputs.
+    fn start(&mut self, inp: &Self::In, now: u32);
     /// One cycle in a running state (not STOP, ERROR, RESET) with bRun TRUE; returns
     /// `SL_OK` or the status of an integrity failure it found.
     fn step(&mut self, inp: &Self::In, now: u32) -> i32;
@@ -136,6 +137,8 @@ pub fn cycle<B: Block>(fb: &mut B, now: u32) -> i32 {
     let run = is_true(run_raw);
     let ack_raw = fb.errack_raw();
     let ack = edge(ack_raw, &mut fb.header_mut().nFlags, F_ERRACK_PREV);
+    // STOP → run latches the parameters before the inputs are decoded with them.
+    let started = fb.header().nState == SL_STATE_STOP && run && latch(fb);
     let (inp, invalid_in) = fb.decode();
     let invalid = invalid_in || run_raw > 1 || ack_raw > 1;
 
@@ -156,8 +159,8 @@ pub fn cycle<B: Block>(fb: &mut B, now: u32) -> i32 {
 
     match fb.header().nState {
         SL_STATE_STOP => {
-            if run && latch(fb) {
-                fb.start(now);
+            if started {
+                fb.start(&inp, now);
             }
         }
         SL_STATE_ERROR => {
@@ -171,7 +174,7 @@ pub fn cycle<B: Block>(fb: &mut B, now: u32) -> i32 {
         SL_STATE_RESET => {
             if ack.falling {
                 if run && !fb.header().flag(F_CFG_INVALID) {
-                    fb.start(now);
+                    fb.start(&inp, now);
                 } else {
                     fb.header_mut().nState = SL_STATE_STOP;
                 }

@@ -1,0 +1,138 @@
+//! The state machine of the combinational blocks AND (manual §4.1), OR (§4.2), XOR (§4.34)
+//! and DECOUPLE (§4.6): outputs are a function of this cycle's inputs; RUN (1) when the
+//! block's function is satisfied, SAFE (3) otherwise (blocks without SAFE stay in RUN with
+//! FALSE outputs). No block errors of their own: ERROR (4) only comes from the envelope.
+
+use super::and::FB_AND;
+use super::or::FB_OR;
+use crate::prim::envelope::Block;
+use crate::prim::header::{param_crc, SL_PRIVATE_HEADER};
+use crate::types::*;
+
+/// Private state of the combinational blocks (32 bytes). Never written by the user.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+#[allow(non_snake_case, non_camel_case_types)]
+pub struct SL_LOGIC_PRIVATE {
+    pub stHeader: SL_PRIVATE_HEADER,
+    pub aReserved: [u8; 4],
+}
+
+const _: () = assert!(core::mem::size_of::<SL_LOGIC_PRIVATE>() == 32);
+
+/// Parameters of a combinational block as the user wrote them.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct LogicParams {
+    pub active: u16,
+    pub negated: u16,
+}
+
+/// Result of evaluating one cycle's inputs.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct LogicIn {
+    /// RUN or SAFE.
+    pub state: u8,
+    /// Output bits valid in RUN (bit n = n-th output).
+    pub outputs: u8,
+}
+
+/// What distinguishes AND, OR, XOR and DECOUPLE.
+pub trait LogicBlock {
+    /// Type tag stored in the private header.
+    const TAG: u16;
+    /// Bits of wInputActive that exist.
+    const INPUTS: u16;
+    /// Bits of wInputNegated that exist.
+    const NEGATABLE: u16;
+    /// At least this many inputs must be active.
+    const MIN_ACTIVE: u32;
+
+    fn private(&self) -> &SL_LOGIC_PRIVATE;
+    fn private_mut(&mut self) -> &mut SL_LOGIC_PRIVATE;
+    fn params(&self) -> LogicParams;
+    fn control(&self) -> (u8, u8);
+    /// Evaluates the input bytes with the latched masks; the flag tells whether an active
+    /// input byte was an invalid BOOL.
+    fn evaluate(&self, active: u8, negated: u8) -> (LogicIn, bool);
+    /// Writes the output fields (`outputs` already FALSE outside RUN) and info data.
+    fn set_outputs(&mut self, outputs: u8, state: u8, diag: u16);
+}
+
+/// The envelope's view of every block of this family.
+macro_rules! logic_block {
+    ($t:ty) => {
+        impl Block for $t {
+            const MAGIC: u16 = <$t as LogicBlock>::TAG;
+            type Params = LogicParams;
+            type In = LogicIn;
+
+            fn header(&self) -> &SL_PRIVATE_HEADER {
+                &self.private().stHeader
+            }
+            fn header_mut(&mut self) -> &mut SL_PRIVATE_HEADER {
+                &mut self.private_mut().stHeader
+            }
+            fn clear_private(&mut self) {
+                *self.private_mut() = SL_LOGIC_PRIVATE::default();
+            }
+            fn run_raw(&self) -> u8 {
+                self.control().0
+            }
+            fn errack_raw(&self) -> u8 {
+                self.control().1
+            }
+            fn live_params(&self) -> LogicParams {
+                self.params()
+            }
+            fn latched_params(&self) -> LogicParams {
+                let h = &self.private().stHeader;
+                LogicParams {
+                    active: u16::from(h.nActive),
+                    negated: u16::from(h.nNegated),
+                }
+            }
+            fn params_valid(p: &LogicParams) -> bool {
+                p.active & !Self::INPUTS == 0
+                    && p.negated & !Self::NEGATABLE == 0
+                    && p.active.count_ones() >= Self::MIN_ACTIVE
+            }
+            fn store_params(&mut self, p: &LogicParams) {
+                let h = &mut self.private_mut().stHeader;
+                h.nActive = p.active as u8;
+                h.nNegated = p.negated as u8;
+            }
+            fn latched_crc(&self) -> u16 {
+                let h = &self.private().stHeader;
+                param_crc(Self::MAGIC, h.nActive, h.nNegated, h.wOptions, &[])
+            }
+            fn decode(&mut self) -> (LogicIn, bool) {
+                let h = &self.private().stHeader;
+                self.evaluate(h.nActive, h.nNegated)
+            }
+            fn start(&mut self, inp: &LogicIn, now: u32) {
+                self.step(inp, now);
+            }
+            fn step(&mut self, inp: &LogicIn, _now: u32) -> i32 {
+                let h = &mut self.private_mut().stHeader;
+                h.nState = inp.state;
+                h.wAux = u16::from(inp.outputs);
+                SL_OK
+            }
+            fn error_remains(&mut self, _inp: &LogicIn) -> bool {
+                false
+            }
+            fn write_outputs(&mut self) {
+                let h = self.private().stHeader;
+                let outputs = if h.nState == SL_STATE_RUN {
+                    h.wAux as u8
+                } else {
+                    0
+                };
+                self.set_outputs(outputs, h.nState, h.wDiag);
+            }
+        }
+    };
+}
+
+logic_block!(FB_AND);
+logic_block!(FB_OR);

@@ -1,0 +1,545 @@
+//! The TwinSAFE group — manual §3.1, §3.1.1 (EL6910 group interface §3.1.1.2), §3.2.1.1,
+//! §3.2.5 (group states and diagnostics); KL6904 manual §3.1.
+//!
+//! Blocks are members of a group, executed in the order they were added, all with the same
+//! `tNow`; the group drives each member's bRun/bErrAck. When any member is in ERROR, or a
+//! connection error or module fault is reported, the group enters ERROR and every member
+//! is stopped (bRun FALSE) within the same group cycle — members that already ran in this
+//! cycle are run once more with bRun FALSE, so their outputs are FALSE when the call
+//! returns. Links copy a member output into a member input just before the destination
+//! executes. No heap: member and link storage belong to the caller.
+
+use crate::prim::bools::{edge, is_true};
+use crate::types::*;
+use core::ffi::c_void;
+
+/// A block as a member of a group. Implemented for every block by `impl_member!`.
+pub trait Member {
+    /// Drives bRun and bErrAck from the group.
+    fn drive(&mut self, run: u8, ack: u8);
+    /// One cycle of the block (`sl_<name>_cycle`).
+    fn execute(&mut self, now: u32) -> i32;
+    /// The block's nState.
+    fn state(&self) -> u8;
+    /// The BOOL input at this byte offset, if the block has a linkable one there.
+    fn input_mut(&mut self, offset: u16) -> Option<&mut u8>;
+    /// The BOOL output at this byte offset, if the block has one there.
+    fn output(&self, offset: u16) -> Option<u8>;
+}
+
+/// Implements [`Member`] for a block struct from the lists of its linkable BOOL inputs
+/// and outputs (bRun and bErrAck are driven by the group and never linkable).
+#[doc(hidden)]
+#[macro_export]
+macro_rules! impl_member {
+    ($ty:ty, [$($i:ident),*], [$($o:ident),*]) => {
+        impl $crate::group::Member for $ty {
+            fn drive(&mut self, run: u8, ack: u8) {
+                self.bRun = run;
+                self.bErrAck = ack;
+            }
+            fn execute(&mut self, now: u32) -> i32 {
+                $crate::prim::envelope::cycle(self, now)
+            }
+            fn state(&self) -> u8 {
+                self.nState
+            }
+            fn input_mut(&mut self, offset: u16) -> Option<&mut u8> {
+                $(if usize::from(offset) == core::mem::offset_of!($ty, $i) {
+                    return Some(&mut self.$i);
+                })*
+                None
+            }
+            fn output(&self, offset: u16) -> Option<u8> {
+                $(if usize::from(offset) == core::mem::offset_of!($ty, $o) {
+                    return Some(self.$o);
+                })*
+                None
+            }
+        }
+    };
+}
+
+/// Block type tags for `SL_MEMBER.nType`.
+pub const SL_TYPE_ESTOP: u16 = 1;
+pub const SL_TYPE_MON: u16 = 2;
+pub const SL_TYPE_AND: u16 = 3;
+pub const SL_TYPE_OR: u16 = 4;
+
+/// Link kind: BOOL output to BOOL input (analog kinds will follow).
+pub const SL_LINK_BOOL: u8 = 0;
+
+/// Group state START (6): connections still starting up.
+pub const SL_GROUP_STATE_START: u8 = 6;
+/// Group state STOPERROR (7): started with connections assigned; Run leads to ERROR.
+pub const SL_GROUP_STATE_STOPERROR: u8 = 7;
+
+/// Group diag value: no error.
+pub const SL_GROUP_DIAG_NONE: u16 = 0;
+/// Group diag value FBERROR: at least one member is in ERROR.
+pub const SL_GROUP_DIAG_FBERROR: u16 = 1;
+/// Group diag value COMERROR: at least one connection is faulty.
+pub const SL_GROUP_DIAG_COMERROR: u16 = 2;
+/// Group diag value MODULEERROR: the input ModuleFault is TRUE.
+pub const SL_GROUP_DIAG_MODULEERROR: u16 = 3;
+/// Group diag value RESTARTERROR: the group was started with connections (STOPERROR).
+pub const SL_GROUP_DIAG_RESTARTERROR: u16 = 6;
+
+/// No member index.
+pub const SL_NO_MEMBER: u16 = 0xFFFF;
+
+/// One member entry in caller storage.
+#[repr(C)]
+#[derive(Clone, Copy, Debug)]
+#[allow(non_snake_case, non_camel_case_types)]
+pub struct SL_MEMBER {
+    /// The block instance (FB_<NAME> *).
+    pub pBlock: *mut c_void,
+    /// SL_TYPE_* of the block.
+    pub nType: u16,
+    pub aReserved: [u8; 6],
+}
+
+impl Default for SL_MEMBER {
+    fn default() -> Self {
+        Self {
+            pBlock: core::ptr::null_mut(),
+            nType: 0,
+            aReserved: [0; 6],
+        }
+    }
+}
+
+/// One link in caller storage: output byte `nSrcOffset` of member `nSrcMember` is copied
+/// to input byte `nDstOffset` of member `nDstMember` just before the destination runs.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+#[allow(non_snake_case, non_camel_case_types)]
+pub struct SL_LINK {
+    pub nSrcMember: u16,
+    pub nSrcOffset: u16,
+    pub nDstMember: u16,
+    pub nDstOffset: u16,
+    /// SL_LINK_BOOL.
+    pub nKind: u8,
+    pub aReserved: [u8; 3],
+}
+
+/// Private state of a group (32 bytes): data words and their complements.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+#[allow(non_snake_case, non_camel_case_types)]
+pub struct SL_GROUP_PRIVATE {
+    /// wMagic | nState << 16 | nFlags << 24.
+    pub dwCtrl: u32,
+    /// nDiag | nFailed << 16.
+    pub dwDiag: u32,
+    /// nMembers | nMemberCap << 16.
+    pub dwMembers: u32,
+    /// nLinks | nLinkCap << 16.
+    pub dwLinks: u32,
+    /// Complements of the four words above.
+    pub adwCheck: [u32; 4],
+}
+
+/// A TwinSAFE group with the EL6910 interface (manual §3.1.1.2, §3.2.5).
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+#[allow(non_snake_case, non_camel_case_types)]
+pub struct SL_GROUP {
+    /// Offset 0. Run/Stop: TRUE executes the members.
+    pub bRun: SL_BOOL,
+    /// Offset 1. Err Ack: FALSE→TRUE→FALSE acknowledges group and member errors.
+    pub bErrAck: SL_BOOL,
+    /// Offset 2. Module Fault: error output of another module (→ OtherErr, group ERROR).
+    pub bModuleFault: SL_BOOL,
+    /// Offset 3. A connection of the group reports an error (until connections are members).
+    pub bComErrIn: SL_BOOL,
+    /// Offset 4. A connection of the group is still starting up.
+    pub bComStartupIn: SL_BOOL,
+    /// Offset 5. Parameter: TRUE = connections are assigned (start in STOPERROR).
+    pub bConnections: SL_BOOL,
+    /// Offset 6. Reserved, keep 0.
+    pub aReserved0: [u8; 2],
+    /// Offset 8. Communication error in at least one connection.
+    pub bComErr: SL_BOOL,
+    /// Offset 9. Error in at least one member.
+    pub bFbErr: SL_BOOL,
+    /// Offset 10. Not used (FALSE).
+    pub bOutErr: SL_BOOL,
+    /// Offset 11. ModuleFault.
+    pub bOtherErr: SL_BOOL,
+    /// Offset 12. At least one connection is starting up.
+    pub bComStartup: SL_BOOL,
+    /// Offset 13. The group is deactivated (never: no customizing).
+    pub bFbDeactive: SL_BOOL,
+    /// Offset 14. All members are in RUN.
+    pub bFbRun: SL_BOOL,
+    /// Offset 15. The group is in RUN.
+    pub bInRun: SL_BOOL,
+    /// Offset 16. Group state (1 RUN, 2 STOP, 4 ERROR, 5 RESET, 6 START, 7 STOPERROR).
+    pub nState: u8,
+    /// Offset 17. Reserved.
+    pub aReserved1: [u8; 1],
+    /// Offset 18. Group diag value (0 none, 1 FBERROR, 2 COMERROR, 3 MODULEERROR, 6 RESTARTERROR).
+    pub nDiag: u16,
+    /// Offset 20. Index of the member whose ERROR stopped the group (0xFFFF: none).
+    pub nFailedMember: u16,
+    /// Offset 22. Number of members.
+    pub nMembers: u16,
+    /// Offset 24. Number of links.
+    pub nLinks: u16,
+    /// Offset 26. Reserved.
+    pub aReserved2: [u8; 6],
+    /// Offset 32. Private state, 32 bytes: never write it.
+    pub stPrivate: SL_GROUP_PRIVATE,
+}
+
+const _: () = {
+    use core::mem::{offset_of, size_of};
+    assert!(offset_of!(SL_GROUP, bConnections) == 5);
+    assert!(offset_of!(SL_GROUP, bComErr) == 8);
+    assert!(offset_of!(SL_GROUP, bInRun) == 15);
+    assert!(offset_of!(SL_GROUP, nState) == 16);
+    assert!(offset_of!(SL_GROUP, nDiag) == 18);
+    assert!(offset_of!(SL_GROUP, stPrivate) == 32);
+    assert!(size_of::<SL_GROUP>() == 64);
+    assert!(size_of::<SL_LINK>() == 12);
+};
+
+const MAGIC: u32 = 0x6A05;
+/// Previous ErrAck level.
+const F_ACK_PREV: u8 = 1 << 0;
+/// Latched error causes (cleared on ERROR → RESET).
+const F_FB: u8 = 1 << 1;
+const F_COM: u8 = 1 << 2;
+const F_MODULE: u8 = 1 << 3;
+
+/// The group's private data, unpacked.
+#[derive(Clone, Copy, Debug, Default)]
+struct Core {
+    state: u8,
+    flags: u8,
+    diag: u16,
+    failed: u16,
+    members: u16,
+    member_cap: u16,
+    links: u16,
+    link_cap: u16,
+}
+
+impl SL_GROUP_PRIVATE {
+    fn words(&self) -> [u32; 4] {
+        [self.dwCtrl, self.dwDiag, self.dwMembers, self.dwLinks]
+    }
+
+    fn load(&self) -> Option<Core> {
+        let w = self.words();
+        let intact = w.iter().zip(&self.adwCheck).all(|(&d, &c)| c == !d) && w[0] & 0xFFFF == MAGIC;
+        let c = Core {
+            state: (w[0] >> 16) as u8,
+            flags: (w[0] >> 24) as u8,
+            diag: w[1] as u16,
+            failed: (w[1] >> 16) as u16,
+            members: w[2] as u16,
+            member_cap: (w[2] >> 16) as u16,
+            links: w[3] as u16,
+            link_cap: (w[3] >> 16) as u16,
+        };
+        (intact && c.members <= c.member_cap && c.links <= c.link_cap).then_some(c)
+    }
+
+    fn store(&mut self, c: &Core) {
+        self.dwCtrl = MAGIC | (u32::from(c.state) << 16) | (u32::from(c.flags) << 24);
+        self.dwDiag = u32::from(c.diag) | (u32::from(c.failed) << 16);
+        self.dwMembers = u32::from(c.members) | (u32::from(c.member_cap) << 16);
+        self.dwLinks = u32::from(c.links) | (u32::from(c.link_cap) << 16);
+        let w = self.words();
+        self.adwCheck = [!w[0], !w[1], !w[2], !w[3]];
+    }
+}
+
+/// Access to the members of a group by index, in execution order.
+pub trait Members {
+    /// Runs `f` on member `i`; `None` when the entry does not hold a usable block.
+    fn with<R>(&mut self, i: usize, f: impl FnOnce(&mut dyn Member) -> R) -> Option<R>;
+}
+
+impl Members for [&mut dyn Member] {
+    fn with<R>(&mut self, i: usize, f: impl FnOnce(&mut dyn Member) -> R) -> Option<R> {
+        self.get_mut(i).map(|m| f(&mut **m))
+    }
+}
+
+fn initial_state(g: &SL_GROUP) -> u8 {
+    if g.bConnections == 1 {
+        SL_GROUP_STATE_STOPERROR
+    } else {
+        SL_STATE_STOP
+    }
+}
+
+fn write_info(g: &mut SL_GROUP, c: &Core) {
+    g.nState = c.state;
+    g.nDiag = c.diag;
+    g.nFailedMember = c.failed;
+    g.nMembers = c.members;
+    g.nLinks = c.links;
+    g.stPrivate.store(c);
+}
+
+/// Resets a group to power-up with room for `member_cap` members and `link_cap` links in
+/// the caller's storage. Does not modify the input fields.
+pub fn init(g: &mut SL_GROUP, member_cap: u16, link_cap: u16) -> i32 {
+    if g.bConnections > 1 {
+        return SL_E_CONFIG;
+    }
+    let c = Core {
+        state: initial_state(g),
+        failed: SL_NO_MEMBER,
+        member_cap,
+        link_cap,
+        ..Core::default()
+    };
+    set_outputs(g, &c, false, false);
+    write_info(g, &c);
+    SL_OK
+}
+
+/// Members and links in the caller's storage (`None`: the private state is corrupt).
+pub fn storage_len(g: &SL_GROUP) -> Option<(usize, usize)> {
+    g.stPrivate
+        .load()
+        .map(|c| (usize::from(c.members), usize::from(c.links)))
+}
+
+/// Capacity of the caller's link storage (`None`: the private state is corrupt).
+pub fn link_capacity(g: &SL_GROUP) -> Option<usize> {
+    g.stPrivate.load().map(|c| usize::from(c.link_cap))
+}
+
+/// Reserves the next member index (execution order). The caller stores the entry.
+pub fn reserve_member(g: &mut SL_GROUP) -> Result<u16, i32> {
+    let mut c = g.stPrivate.load().ok_or(SL_E_CORRUPT)?;
+    if c.state != SL_STATE_STOP && c.state != SL_GROUP_STATE_STOPERROR {
+        return Err(SL_E_CONFIG);
+    }
+    if c.members >= c.member_cap {
+        return Err(SL_E_FULL);
+    }
+    let index = c.members;
+    c.members += 1;
+    write_info(g, &c);
+    Ok(index)
+}
+
+/// Adds a BOOL link, keeping the link storage sorted by destination member (stable), so
+/// that one pass over the members copies every link just before its destination runs.
+pub fn add_link<M: Members + ?Sized>(
+    g: &mut SL_GROUP,
+    m: &mut M,
+    links: &mut [SL_LINK],
+    link: SL_LINK,
+) -> i32 {
+    let Some(mut c) = g.stPrivate.load() else {
+        return SL_E_CORRUPT;
+    };
+    if c.state != SL_STATE_STOP && c.state != SL_GROUP_STATE_STOPERROR {
+        return SL_E_CONFIG;
+    }
+    if c.links >= c.link_cap || usize::from(c.links) >= links.len() {
+        return SL_E_FULL;
+    }
+    let n = usize::from(c.links);
+    let in_group = |i: u16| i < c.members;
+    let src_ok = in_group(link.nSrcMember)
+        && m.with(usize::from(link.nSrcMember), |b| {
+            b.output(link.nSrcOffset).is_some()
+        }) == Some(true);
+    let dst_ok = in_group(link.nDstMember)
+        && m.with(usize::from(link.nDstMember), |b| {
+            b.input_mut(link.nDstOffset).is_some()
+        }) == Some(true);
+    let taken = links[..n]
+        .iter()
+        .any(|l| l.nDstMember == link.nDstMember && l.nDstOffset == link.nDstOffset);
+    if !src_ok || !dst_ok || taken || link.nKind != SL_LINK_BOOL {
+        return SL_E_CONFIG;
+    }
+    let at = links[..n].partition_point(|l| l.nDstMember <= link.nDstMember);
+    links.copy_within(at..n, at + 1);
+    links[at] = SL_LINK {
+        aReserved: [0; 3],
+        ..link
+    };
+    c.links += 1;
+    write_info(g, &c);
+    SL_OK
+}
+
+fn set_outputs(g: &mut SL_GROUP, c: &Core, member_error: bool, all_run: bool) {
+    g.bComErr = u8::from(c.flags & F_COM != 0 || g.bComErrIn != 0);
+    g.bFbErr = u8::from(c.flags & F_FB != 0 || member_error);
+    g.bOutErr = 0;
+    g.bOtherErr = u8::from(c.flags & F_MODULE != 0 || g.bModuleFault != 0);
+    g.bComStartup = u8::from(g.bComStartupIn != 0);
+    g.bFbDeactive = 0;
+    g.bInRun = u8::from(c.state == SL_STATE_RUN);
+    g.bFbRun = u8::from(c.state == SL_STATE_RUN && all_run);
+}
+
+const fn rank(s: i32) -> u8 {
+    match s {
+        SL_E_CORRUPT | SL_E_INTERNAL => 6,
+        SL_E_CLOCK => 5,
+        SL_E_PARAM_CHANGED => 4,
+        SL_E_CONFIG => 3,
+        SL_E_INVALID_BOOL => 2,
+        _ => 0,
+    }
+}
+
+fn worst(a: i32, b: i32) -> i32 {
+    if rank(b) > rank(a) {
+        b
+    } else {
+        a
+    }
+}
+
+/// Enters ERROR with a cause; the first cause is the diag value.
+fn enter_error(c: &mut Core, flag: u8, diag: u16) {
+    if c.state != SL_STATE_ERROR {
+        c.diag = diag;
+    }
+    c.state = SL_STATE_ERROR;
+    c.flags |= flag;
+}
+
+/// One group cycle: group state, then every member in order with its links.
+/// Returns the group's status, or the worst status a member returned.
+pub fn cycle<M: Members + ?Sized>(g: &mut SL_GROUP, m: &mut M, links: &[SL_LINK], now: u32) -> i32 {
+    let Some(mut c) = g.stPrivate.load() else {
+        // Member count and storage size are unknown: no member can be reached safely.
+        g.bInRun = 0;
+        g.bFbRun = 0;
+        g.nState = SL_STATE_ERROR;
+        return SL_E_CORRUPT;
+    };
+    let mut status = SL_OK;
+    let raw = [
+        g.bRun,
+        g.bErrAck,
+        g.bModuleFault,
+        g.bComErrIn,
+        g.bComStartupIn,
+    ];
+    if raw.iter().any(|&b| b > 1) {
+        status = SL_E_INVALID_BOOL;
+    }
+    // Invalid bytes: Run and ErrAck read FALSE, the fault inputs read TRUE (ABI §2).
+    let run = is_true(g.bRun);
+    let ack = edge(g.bErrAck, &mut c.flags, F_ACK_PREV);
+    let module_fault = g.bModuleFault != 0;
+    let com_err = g.bComErrIn != 0;
+    let startup = g.bComStartupIn != 0;
+    let was_error = c.state == SL_STATE_ERROR;
+
+    // Transitions driven by the group's own inputs.
+    c.state = match c.state {
+        SL_STATE_STOP if run => {
+            if startup {
+                SL_GROUP_STATE_START
+            } else {
+                SL_STATE_RUN
+            }
+        }
+        SL_GROUP_STATE_STOPERROR if run => {
+            enter_error(&mut c, 0, SL_GROUP_DIAG_RESTARTERROR);
+            SL_STATE_ERROR
+        }
+        SL_STATE_RUN | SL_GROUP_STATE_START if !run => SL_STATE_STOP,
+        SL_STATE_RESET if ack.falling => {
+            if !run {
+                SL_STATE_STOP
+            } else if startup {
+                SL_GROUP_STATE_START
+            } else {
+                SL_STATE_RUN
+            }
+        }
+        SL_GROUP_STATE_START if !startup => SL_STATE_RUN,
+        SL_STATE_RUN if startup => SL_GROUP_STATE_START,
+        s => s,
+    };
+    if matches!(c.state, SL_STATE_RUN | SL_GROUP_STATE_START) {
+        if module_fault {
+            enter_error(&mut c, F_MODULE, SL_GROUP_DIAG_MODULEERROR);
+        }
+        if com_err {
+            enter_error(&mut c, F_COM, SL_GROUP_DIAG_COMERROR);
+        }
+    }
+
+    // The members, in order, each right after its incoming links.
+    let ack_level = u8::from(ack.level);
+    let mut member_run = u8::from(c.state == SL_STATE_RUN);
+    let mut member_error = false;
+    let mut all_run = c.members > 0;
+    let mut next_link = 0usize;
+    for i in 0..usize::from(c.members) {
+        while let Some(l) = links
+            .get(next_link)
+            .filter(|l| usize::from(l.nDstMember) == i)
+        {
+            next_link += 1;
+            if let Some(Some(v)) = m.with(usize::from(l.nSrcMember), |b| b.output(l.nSrcOffset)) {
+                m.with(i, |b| b.input_mut(l.nDstOffset).map(|d| *d = v));
+            }
+        }
+        let outcome = m.with(i, |b| {
+            b.drive(member_run, ack_level);
+            let s = b.execute(now);
+            (s, b.state())
+        });
+        let Some((s, state)) = outcome else {
+            status = worst(status, SL_E_CORRUPT);
+            member_error = true;
+            continue;
+        };
+        status = worst(status, s);
+        all_run &= state == SL_STATE_RUN;
+        if state == SL_STATE_ERROR {
+            member_error = true;
+            if c.state == SL_STATE_RUN || c.state == SL_GROUP_STATE_START {
+                enter_error(&mut c, F_FB, SL_GROUP_DIAG_FBERROR);
+                c.failed = i as u16;
+                member_run = 0;
+                // Members that already ran with bRun TRUE stop within this same cycle.
+                for j in 0..i {
+                    m.with(j, |b| {
+                        b.drive(0, ack_level);
+                        b.execute(now)
+                    });
+                }
+            }
+        }
+    }
+
+    // Acknowledgement, after the members saw the same ErrAck edge.
+    if c.state == SL_STATE_ERROR
+        && was_error
+        && ack.rising
+        && !member_error
+        && !module_fault
+        && !com_err
+    {
+        c.state = SL_STATE_RESET;
+        c.diag = SL_GROUP_DIAG_NONE;
+        c.failed = SL_NO_MEMBER;
+        c.flags &= !(F_FB | F_COM | F_MODULE);
+    }
+    set_outputs(g, &c, member_error, all_run);
+    write_info(g, &c);
+    status
+}

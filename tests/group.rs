@@ -1,0 +1,499 @@
+//! TwinSAFE group (manual §3.1, §3.1.1.2, §3.2.5; docs/semantics.md rows GR*): group states
+//! and outputs, error propagation in both execution orders, acknowledgement, links, storage.
+
+use proptest::prelude::*;
+use safelogic::group::{self, Member, SL_GROUP_STATE_START, SL_GROUP_STATE_STOPERROR};
+use safelogic::group::{
+    SL_GROUP_DIAG_COMERROR, SL_GROUP_DIAG_FBERROR, SL_GROUP_DIAG_MODULEERROR,
+    SL_GROUP_DIAG_RESTARTERROR,
+};
+use safelogic::*;
+use std::mem::offset_of;
+
+fn estop_pair() -> FB_ESTOP {
+    let mut e = FB_ESTOP {
+        wInputActive: 0b11,
+        tDiscTime12: 50,
+        ..Default::default()
+    };
+    e.bEStopIn1 = 1;
+    e.bEStopIn2 = 1;
+    assert_eq!(e.init(), SL_OK);
+    e
+}
+
+fn mon_auto() -> FB_MON {
+    let mut m = FB_MON {
+        wInputActive: 0b11,
+        tDiscTime12: 50,
+        ..Default::default()
+    };
+    m.bMonIn1 = 1;
+    m.bMonIn2 = 1;
+    assert_eq!(m.init(), SL_OK);
+    m
+}
+
+fn and2() -> FB_AND {
+    let mut a = FB_AND {
+        wInputActive: 0b11,
+        ..Default::default()
+    };
+    assert_eq!(a.init(), SL_OK);
+    a
+}
+
+fn new_group(members: usize, links: u16) -> SL_GROUP {
+    let mut g = SL_GROUP::default();
+    assert_eq!(group::init(&mut g, members as u16, links), SL_OK);
+    for i in 0..members {
+        assert_eq!(group::reserve_member(&mut g), Ok(i as u16));
+    }
+    g
+}
+
+const AND_IN1: u16 = offset_of!(FB_AND, bAndIn1) as u16;
+const AND_IN2: u16 = offset_of!(FB_AND, bAndIn2) as u16;
+const AND_OUT: u16 = offset_of!(FB_AND, bAndOut) as u16;
+const ESTOP_OUT: u16 = offset_of!(FB_ESTOP, bEStopOut) as u16;
+const MON_OUT: u16 = offset_of!(FB_MON, bMonOut) as u16;
+
+fn link(src: u16, so: u16, dst: u16, d: u16) -> SL_LINK {
+    SL_LINK {
+        nSrcMember: src,
+        nSrcOffset: so,
+        nDstMember: dst,
+        nDstOffset: d,
+        ..Default::default()
+    }
+}
+
+#[test]
+fn stop_run_and_outputs() {
+    let (mut e, mut m) = (estop_pair(), mon_auto());
+    let mut g = new_group(2, 0);
+    let mut ms: [&mut dyn Member; 2] = [&mut e, &mut m];
+    assert_eq!(group::cycle(&mut g, &mut ms[..], &[], 0), SL_OK);
+    assert_eq!(g.nState, SL_STATE_STOP);
+    assert_eq!((g.bInRun, g.bFbRun, g.bFbErr), (0, 0, 0));
+    assert_eq!(ms[0].state(), SL_STATE_STOP);
+    g.bRun = 1;
+    group::cycle(&mut g, &mut ms[..], &[], 1);
+    assert_eq!(g.nState, SL_STATE_RUN);
+    assert_eq!(g.bInRun, 1);
+    // ESTOP waits for its restart: FbRun says "all FBs in RUN" and they are not.
+    assert_eq!(g.bFbRun, 0);
+    group::cycle(&mut g, &mut ms[..], &[], 2);
+    assert_eq!(
+        ms[1].state(),
+        SL_STATE_RUN,
+        "MON with automatic restart runs"
+    );
+    // Run FALSE stops every member.
+    g.bRun = 0;
+    group::cycle(&mut g, &mut ms[..], &[], 3);
+    assert_eq!(g.nState, SL_STATE_STOP);
+    assert_eq!(
+        (ms[0].state(), ms[1].state()),
+        (SL_STATE_STOP, SL_STATE_STOP)
+    );
+    assert_eq!(ms[1].output(MON_OUT), Some(0));
+}
+
+/// A discrepancy error in one member stops the whole group in the same cycle, whichever
+/// member fails, including members that ran earlier in that cycle.
+fn propagate(failing_first: bool) {
+    let (mut e, mut m) = (estop_pair(), mon_auto());
+    let mut g = new_group(2, 0);
+    g.bRun = 1;
+    {
+        let mut ms: [&mut dyn Member; 2] = if failing_first {
+            [&mut m, &mut e]
+        } else {
+            [&mut e, &mut m]
+        };
+        for t in 0..3 {
+            group::cycle(&mut g, &mut ms[..], &[], t);
+        }
+    }
+    // Bring ESTOP to RUN with its restart sequence.
+    e.bRestart = 1;
+    {
+        let mut ms: [&mut dyn Member; 2] = if failing_first {
+            [&mut m, &mut e]
+        } else {
+            [&mut e, &mut m]
+        };
+        group::cycle(&mut g, &mut ms[..], &[], 3);
+    }
+    e.bRestart = 0;
+    {
+        let mut ms: [&mut dyn Member; 2] = if failing_first {
+            [&mut m, &mut e]
+        } else {
+            [&mut e, &mut m]
+        };
+        group::cycle(&mut g, &mut ms[..], &[], 4);
+    }
+    assert_eq!((e.nState, m.nState), (SL_STATE_RUN, SL_STATE_RUN));
+    assert_eq!(g.bFbRun, 1);
+    // MON pair discrepancy: error after 50 ms.
+    m.bMonIn2 = 0;
+    let mut t = 5;
+    loop {
+        let mut ms: [&mut dyn Member; 2] = if failing_first {
+            [&mut m, &mut e]
+        } else {
+            [&mut e, &mut m]
+        };
+        group::cycle(&mut g, &mut ms[..], &[], t);
+        if g.nState == SL_STATE_ERROR {
+            break;
+        }
+        assert_eq!(
+            ms[if failing_first { 1 } else { 0 }].output(ESTOP_OUT),
+            Some(1)
+        );
+        t += 1;
+        assert!(t < 100);
+    }
+    assert_eq!(
+        t, 55,
+        "error exactly when the 50 ms discrepancy time is reached"
+    );
+    assert_eq!(m.nState, SL_STATE_ERROR);
+    assert_eq!(
+        e.nState, SL_STATE_STOP,
+        "the other member is stopped in the same group cycle"
+    );
+    assert_eq!((e.bEStopOut, e.bEStopDelOut), (0, 0));
+    assert_eq!((g.bFbErr, g.bInRun, g.bFbRun), (1, 0, 0));
+    assert_eq!(g.nDiag, SL_GROUP_DIAG_FBERROR);
+    assert_eq!(g.nFailedMember, if failing_first { 0 } else { 1 });
+}
+
+#[test]
+fn error_propagates_from_a_later_member() {
+    propagate(false);
+}
+
+#[test]
+fn error_propagates_from_an_earlier_member() {
+    propagate(true);
+}
+
+#[test]
+fn acknowledgement_waits_for_the_error_condition_and_needs_an_edge() {
+    let mut m = mon_auto();
+    let mut g = new_group(1, 0);
+    g.bRun = 1;
+    let mut ms: [&mut dyn Member; 1] = [&mut m];
+    for t in 0..3 {
+        group::cycle(&mut g, &mut ms[..], &[], t);
+    }
+    drop(ms);
+    m.bMonIn2 = 0;
+    let mut ms: [&mut dyn Member; 1] = [&mut m];
+    for t in 3..60 {
+        group::cycle(&mut g, &mut ms[..], &[], t);
+    }
+    assert_eq!(g.nState, SL_STATE_ERROR);
+    // ErrAck while the pair still differs: nothing.
+    g.bErrAck = 1;
+    group::cycle(&mut g, &mut ms[..], &[], 60);
+    assert_eq!(g.nState, SL_STATE_ERROR);
+    g.bErrAck = 0;
+    group::cycle(&mut g, &mut ms[..], &[], 61);
+    drop(ms);
+    m.bMonIn2 = 1;
+    let mut ms: [&mut dyn Member; 1] = [&mut m];
+    // ErrAck held TRUE from before does not count: a new rising edge is needed.
+    group::cycle(&mut g, &mut ms[..], &[], 62);
+    assert_eq!(g.nState, SL_STATE_ERROR);
+    g.bErrAck = 1;
+    group::cycle(&mut g, &mut ms[..], &[], 63);
+    assert_eq!(
+        g.nState, SL_STATE_RESET,
+        "member and group acknowledged by the same edge"
+    );
+    assert_eq!(ms[0].state(), SL_STATE_RESET);
+    assert_eq!((g.bFbErr, g.nDiag), (0, 0));
+    g.bErrAck = 0;
+    group::cycle(&mut g, &mut ms[..], &[], 64);
+    assert_eq!(g.nState, SL_STATE_RUN);
+    group::cycle(&mut g, &mut ms[..], &[], 65);
+    assert_eq!(
+        ms[0].state(),
+        SL_STATE_RUN,
+        "MON restarts automatically, as its own rules say"
+    );
+}
+
+#[test]
+fn module_fault_and_com_error() {
+    let mut a = and2();
+    let mut g = new_group(1, 0);
+    g.bRun = 1;
+    let mut ms: [&mut dyn Member; 1] = [&mut a];
+    group::cycle(&mut g, &mut ms[..], &[], 0);
+    g.bModuleFault = 1;
+    group::cycle(&mut g, &mut ms[..], &[], 1);
+    assert_eq!(
+        (g.nState, g.nDiag, g.bOtherErr),
+        (SL_STATE_ERROR, SL_GROUP_DIAG_MODULEERROR, 1)
+    );
+    g.bComErrIn = 1;
+    group::cycle(&mut g, &mut ms[..], &[], 2);
+    assert_eq!(
+        g.nDiag, SL_GROUP_DIAG_MODULEERROR,
+        "the first cause stays the diag value"
+    );
+    assert_eq!(g.bComErr, 1);
+    g.bModuleFault = 0;
+    g.bComErrIn = 0;
+    g.bErrAck = 1;
+    group::cycle(&mut g, &mut ms[..], &[], 3);
+    assert_eq!((g.nState, g.bOtherErr, g.bComErr), (SL_STATE_RESET, 0, 0));
+    g.bErrAck = 0;
+    g.bComErrIn = 1;
+    group::cycle(&mut g, &mut ms[..], &[], 4);
+    assert_eq!(
+        (g.nState, g.nDiag),
+        (SL_STATE_ERROR, SL_GROUP_DIAG_COMERROR)
+    );
+}
+
+#[test]
+fn startup_and_stoperror_with_connections() {
+    let mut g = SL_GROUP {
+        bConnections: 1,
+        ..Default::default()
+    };
+    assert_eq!(group::init(&mut g, 0, 0), SL_OK);
+    assert_eq!(g.nState, SL_GROUP_STATE_STOPERROR);
+    let mut ms: [&mut dyn Member; 0] = [];
+    g.bRun = 1;
+    group::cycle(&mut g, &mut ms[..], &[], 0);
+    assert_eq!(
+        (g.nState, g.nDiag),
+        (SL_STATE_ERROR, SL_GROUP_DIAG_RESTARTERROR)
+    );
+    g.bErrAck = 1;
+    g.bComStartupIn = 1;
+    group::cycle(&mut g, &mut ms[..], &[], 1);
+    assert_eq!(g.nState, SL_STATE_RESET);
+    g.bErrAck = 0;
+    group::cycle(&mut g, &mut ms[..], &[], 2);
+    assert_eq!(
+        (g.nState, g.bComStartup, g.bInRun),
+        (SL_GROUP_STATE_START, 1, 0)
+    );
+    g.bComStartupIn = 0;
+    group::cycle(&mut g, &mut ms[..], &[], 3);
+    assert_eq!(g.nState, SL_STATE_RUN);
+}
+
+/// ESTOP and MON feed an AND. A link from an earlier member carries this cycle's value; a
+/// link from a later member carries the previous cycle's value.
+#[test]
+fn link_order_decides_which_cycle_a_value_is_from() {
+    for and_first in [false, true] {
+        let (mut e, mut m, mut a) = (estop_pair(), mon_auto(), and2());
+        e.tDiscTime12 = 0;
+        e.wInputActive = 0b1;
+        assert_eq!(e.init(), SL_OK);
+        let mut g = new_group(3, 4);
+        let mut links = [SL_LINK::default(); 4];
+        let (ie, im, ia) = if and_first { (1, 2, 0) } else { (0, 1, 2) };
+        {
+            let mut ms: [&mut dyn Member; 3] = if and_first {
+                [&mut a, &mut e, &mut m]
+            } else {
+                [&mut e, &mut m, &mut a]
+            };
+            assert_eq!(
+                group::add_link(
+                    &mut g,
+                    &mut ms[..],
+                    &mut links,
+                    link(ie, ESTOP_OUT, ia, AND_IN1)
+                ),
+                SL_OK
+            );
+            assert_eq!(
+                group::add_link(
+                    &mut g,
+                    &mut ms[..],
+                    &mut links,
+                    link(im, MON_OUT, ia, AND_IN2)
+                ),
+                SL_OK
+            );
+            g.bRun = 1;
+            for t in 0..3 {
+                group::cycle(&mut g, &mut ms[..], &links[..2], t);
+            }
+        }
+        e.bRestart = 1;
+        {
+            let mut ms: [&mut dyn Member; 3] = if and_first {
+                [&mut a, &mut e, &mut m]
+            } else {
+                [&mut e, &mut m, &mut a]
+            };
+            group::cycle(&mut g, &mut ms[..], &links[..2], 3);
+        }
+        e.bRestart = 0;
+        {
+            let mut ms: [&mut dyn Member; 3] = if and_first {
+                [&mut a, &mut e, &mut m]
+            } else {
+                [&mut e, &mut m, &mut a]
+            };
+            group::cycle(&mut g, &mut ms[..], &links[..2], 4);
+            assert_eq!(ms[ie as usize].output(ESTOP_OUT), Some(1));
+            let expected_now = if and_first { 0 } else { 1 };
+            assert_eq!(ms[ia as usize].output(AND_OUT), Some(expected_now));
+            group::cycle(&mut g, &mut ms[..], &links[..2], 5);
+            assert_eq!(ms[ia as usize].output(AND_OUT), Some(1));
+        }
+    }
+}
+
+#[test]
+fn invalid_links_and_full_storage_are_rejected() {
+    let (mut e, mut a) = (estop_pair(), and2());
+    let mut g = new_group(2, 2);
+    let mut links = [SL_LINK::default(); 2];
+    let mut ms: [&mut dyn Member; 2] = [&mut e, &mut a];
+    // An input as source, an output as destination, bRun as destination, a member outside.
+    let bad = [
+        link(0, offset_of!(FB_ESTOP, bEStopIn1) as u16, 1, AND_IN1),
+        link(0, ESTOP_OUT, 1, AND_OUT),
+        link(0, ESTOP_OUT, 1, offset_of!(FB_AND, bRun) as u16),
+        link(0, ESTOP_OUT, 2, AND_IN1),
+        link(0, ESTOP_OUT + 100, 1, AND_IN1),
+    ];
+    for l in bad {
+        assert_eq!(
+            group::add_link(&mut g, &mut ms[..], &mut links, l),
+            SL_E_CONFIG,
+            "{l:?}"
+        );
+    }
+    assert_eq!(
+        group::add_link(
+            &mut g,
+            &mut ms[..],
+            &mut links,
+            link(0, ESTOP_OUT, 1, AND_IN1)
+        ),
+        SL_OK
+    );
+    assert_eq!(
+        group::add_link(
+            &mut g,
+            &mut ms[..],
+            &mut links,
+            link(0, ESTOP_OUT, 1, AND_IN1)
+        ),
+        SL_E_CONFIG,
+        "an input is linked once"
+    );
+    assert_eq!(
+        group::add_link(
+            &mut g,
+            &mut ms[..],
+            &mut links,
+            link(0, ESTOP_OUT, 1, AND_IN2)
+        ),
+        SL_OK
+    );
+    assert_eq!(
+        group::add_link(&mut g, &mut ms[..], &mut links, link(0, ESTOP_OUT, 0, 8)),
+        SL_E_FULL
+    );
+    assert_eq!(group::reserve_member(&mut g), Err(SL_E_FULL));
+    assert_eq!(g.nLinks, 2);
+}
+
+#[test]
+fn corrupt_group_private_state_is_reported() {
+    let mut g = new_group(0, 0);
+    g.stPrivate.dwMembers ^= 0x10;
+    let mut ms: [&mut dyn Member; 0] = [];
+    assert_eq!(group::cycle(&mut g, &mut ms[..], &[], 0), SL_E_CORRUPT);
+    assert_eq!((g.nState, g.bInRun), (SL_STATE_ERROR, 0));
+}
+
+#[test]
+fn invalid_group_input_bytes() {
+    let mut a = and2();
+    let mut g = new_group(1, 0);
+    let mut ms: [&mut dyn Member; 1] = [&mut a];
+    g.bRun = 7;
+    assert_eq!(group::cycle(&mut g, &mut ms[..], &[], 0), SL_E_INVALID_BOOL);
+    assert_eq!(g.nState, SL_STATE_STOP, "an invalid Run reads FALSE");
+    g.bRun = 1;
+    g.bModuleFault = 9;
+    assert_eq!(group::cycle(&mut g, &mut ms[..], &[], 1), SL_E_INVALID_BOOL);
+    assert_eq!(
+        g.nState, SL_STATE_ERROR,
+        "an invalid ModuleFault reads as a fault"
+    );
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(256))]
+    /// No member output is TRUE at the end of a group cycle in which the group is not in RUN.
+    #[test]
+    fn no_member_output_while_group_not_running(
+        steps in proptest::collection::vec((0u8..3, 0u8..3, 0u8..3, any::<u8>(), 0u32..40), 1..120)
+    ) {
+        let (mut e, mut m, mut a) = (estop_pair(), mon_auto(), and2());
+        let mut g = new_group(3, 2);
+        let mut links = [SL_LINK::default(); 2];
+        {
+            let mut ms: [&mut dyn Member; 3] = [&mut e, &mut m, &mut a];
+            prop_assert_eq!(group::add_link(&mut g, &mut ms[..], &mut links, link(0, ESTOP_OUT, 2, AND_IN1)), SL_OK);
+            prop_assert_eq!(group::add_link(&mut g, &mut ms[..], &mut links, link(1, MON_OUT, 2, AND_IN2)), SL_OK);
+        }
+        let mut t = 0u32;
+        for (run, ack, fault, ins, dt) in steps {
+            g.bRun = u8::from(run != 0);
+            g.bErrAck = u8::from(ack == 1);
+            g.bModuleFault = u8::from(fault == 2);
+            e.bEStopIn1 = ins & 1;
+            e.bEStopIn2 = (ins >> 1) & 1;
+            e.bRestart = (ins >> 2) & 1;
+            m.bMonIn1 = (ins >> 3) & 1;
+            m.bMonIn2 = (ins >> 4) & 1;
+            t = t.wrapping_add(dt);
+            let mut ms: [&mut dyn Member; 3] = [&mut e, &mut m, &mut a];
+            group::cycle(&mut g, &mut ms[..], &links, t);
+            if g.nState != SL_STATE_RUN {
+                prop_assert_eq!(ms[0].output(ESTOP_OUT), Some(0));
+                prop_assert_eq!(ms[0].output(offset_of!(FB_ESTOP, bEStopDelOut) as u16), Some(0));
+                prop_assert_eq!(ms[1].output(MON_OUT), Some(0));
+                prop_assert_eq!(ms[1].output(offset_of!(FB_MON, bMonDelOut) as u16), Some(0));
+                prop_assert_eq!(ms[2].output(AND_OUT), Some(0));
+                prop_assert_eq!(g.bInRun, 0);
+            }
+            let member_error = ms.iter().any(|x| x.state() == SL_STATE_ERROR);
+            // FbErr: a member is in ERROR, or the group's error had a member cause.
+            if member_error {
+                prop_assert_eq!(g.bFbErr, 1);
+                prop_assert_eq!(g.nState, SL_STATE_ERROR);
+            }
+            if g.bFbErr == 1 {
+                prop_assert!(member_error || g.nState == SL_STATE_ERROR);
+            }
+        }
+    }
+}
+
+#[test]
+fn start_state_value() {
+    assert_eq!(SL_GROUP_STATE_START, 6);
+    assert_eq!(SL_GROUP_STATE_STOPERROR, 7);
+}
