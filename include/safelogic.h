@@ -16,17 +16,6 @@
 #include <stddef.h>
 
 /*
- Block type tags for `SL_MEMBER.nType`.
- */
-#define SL_TYPE_ESTOP 1
-
-#define SL_TYPE_MON 2
-
-#define SL_TYPE_AND 3
-
-#define SL_TYPE_OR 4
-
-/*
  Link kind: BOOL output to BOOL input (analog kinds will follow).
  */
 #define SL_LINK_BOOL 0
@@ -256,6 +245,26 @@
  State FUNCTEST (9, MON).
  */
 #define SL_STATE_FUNCTEST 9
+
+/*
+ Block type tag of FB_ESTOP (`SL_MEMBER.nType`, `sl_diag_text`).
+ */
+#define SL_TYPE_ESTOP 1
+
+/*
+ Block type tag of FB_MON.
+ */
+#define SL_TYPE_MON 2
+
+/*
+ Block type tag of FB_AND.
+ */
+#define SL_TYPE_AND 3
+
+/*
+ Block type tag of FB_OR.
+ */
+#define SL_TYPE_OR 4
 
 /*
  Largest time parameter of FB_ESTOP and FB_MON in ms (see docs/semantics.md).
@@ -1071,6 +1080,14 @@ int32_t sl_group_add_link(struct SL_GROUP *g, struct SL_MEMBER *aMembers, struct
  with the same `tNow`. Returns the group's status or the worst status of a member.
  */
 int32_t sl_group_cycle(struct SL_GROUP *g, struct SL_MEMBER *aMembers, struct SL_LINK *aLinks, uint32_t tNow);
+
+/*
+ Writes the readable names of the diag bits `nDiag` of a block of type `nType`
+ (SL_TYPE_<NAME>) into `buf` as a NUL-terminated text ("discrepancy error input group 1;
+ EDM monitoring error EDM1"), truncated to `nLen` bytes including the NUL. For an HMI.
+ SL_E_CONFIG for an unknown type (buf then holds ""), SL_E_NULL for a NULL buf.
+ */
+int32_t sl_diag_text(uint16_t nType, uint16_t nDiag, char *buf, size_t nLen);
 
 #ifdef __cplusplus
 }  // extern "C"

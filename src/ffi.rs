@@ -3,9 +3,7 @@
 //! checks NULL and alignment. Nothing else in the crate is `unsafe`.
 #![allow(unsafe_code)]
 
-use crate::group::{
-    self, Member, Members, SL_LINK_BOOL, SL_TYPE_AND, SL_TYPE_ESTOP, SL_TYPE_MON, SL_TYPE_OR,
-};
+use crate::group::{self, Member, Members, SL_LINK_BOOL};
 use crate::prim::envelope::{self, Block};
 use crate::types::*;
 use crate::{FB_AND, FB_ESTOP, FB_MON, FB_OR, SL_GROUP, SL_LINK, SL_MEMBER};
@@ -308,6 +306,36 @@ pub extern "C" fn sl_group_cycle(
             let table = storage(aMembers, members)?;
             let links = storage(aLinks, links)?;
             Ok(group::cycle(g, &mut CMembers(table), links, tNow))
+        };
+        run().unwrap_or_else(|e| e)
+    })
+}
+
+/// Writes the readable names of the diag bits `nDiag` of a block of type `nType`
+/// (SL_TYPE_<NAME>) into `buf` as a NUL-terminated text ("discrepancy error input group 1;
+/// EDM monitoring error EDM1"), truncated to `nLen` bytes including the NUL. For an HMI.
+/// SL_E_CONFIG for an unknown type (buf then holds ""), SL_E_NULL for a NULL buf.
+#[no_mangle]
+#[allow(non_snake_case)]
+pub extern "C" fn sl_diag_text(nType: u16, nDiag: u16, buf: *mut c_char, nLen: usize) -> i32 {
+    ffi_boundary!(SL_E_INTERNAL, {
+        let run = || -> Result<i32, i32> {
+            if nLen == 0 {
+                return Ok(if buf.is_null() { SL_E_NULL } else { SL_OK });
+            }
+            let out = storage(buf.cast::<u8>(), nLen)?;
+            let Some(info) = crate::blocks::info(nType) else {
+                out[0] = 0;
+                return Err(SL_E_CONFIG);
+            };
+            let (text, nul) = out.split_at_mut(nLen - 1);
+            let n = crate::blocks::diag_text(info, nDiag, text);
+            // `n < nLen`, so index n is inside `text` or is `nul[0]`.
+            match text.get_mut(n) {
+                Some(b) => *b = 0,
+                None => nul[0] = 0,
+            }
+            Ok(SL_OK)
         };
         run().unwrap_or_else(|e| e)
     })

@@ -60,12 +60,6 @@ macro_rules! impl_member {
     };
 }
 
-/// Block type tags for `SL_MEMBER.nType`.
-pub const SL_TYPE_ESTOP: u16 = 1;
-pub const SL_TYPE_MON: u16 = 2;
-pub const SL_TYPE_AND: u16 = 3;
-pub const SL_TYPE_OR: u16 = 4;
-
 /// Link kind: BOOL output to BOOL input (analog kinds will follow).
 pub const SL_LINK_BOOL: u8 = 0;
 

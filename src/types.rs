@@ -118,6 +118,15 @@ pub const SL_STATE_DELAYOUT: u8 = 8;
 /// State FUNCTEST (9, MON).
 pub const SL_STATE_FUNCTEST: u8 = 9;
 
+/// Block type tag of FB_ESTOP (`SL_MEMBER.nType`, `sl_diag_text`).
+pub const SL_TYPE_ESTOP: u16 = 1;
+/// Block type tag of FB_MON.
+pub const SL_TYPE_MON: u16 = 2;
+/// Block type tag of FB_AND.
+pub const SL_TYPE_AND: u16 = 3;
+/// Block type tag of FB_OR.
+pub const SL_TYPE_OR: u16 = 4;
+
 /// Largest time parameter of FB_ESTOP and FB_MON in ms (see docs/semantics.md).
 pub const SL_TIME_PARAM_MAX: u32 = 65_535;
 

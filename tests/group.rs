@@ -191,7 +191,6 @@ fn acknowledgement_waits_for_the_error_condition_and_needs_an_edge() {
     for t in 0..3 {
         group::cycle(&mut g, &mut ms[..], &[], t);
     }
-    drop(ms);
     m.bMonIn2 = 0;
     let mut ms: [&mut dyn Member; 1] = [&mut m];
     for t in 3..60 {
@@ -204,7 +203,6 @@ fn acknowledgement_waits_for_the_error_condition_and_needs_an_edge() {
     assert_eq!(g.nState, SL_STATE_ERROR);
     g.bErrAck = 0;
     group::cycle(&mut g, &mut ms[..], &[], 61);
-    drop(ms);
     m.bMonIn2 = 1;
     let mut ms: [&mut dyn Member; 1] = [&mut m];
     // ErrAck held TRUE from before does not count: a new rising edge is needed.
@@ -496,4 +494,53 @@ proptest! {
 fn start_state_value() {
     assert_eq!(SL_GROUP_STATE_START, 6);
     assert_eq!(SL_GROUP_STATE_STOPERROR, 7);
+}
+
+#[test]
+fn diag_text_names_the_bits() {
+    let mut buf = [0i8; 128];
+    let rc = safelogic::ffi::sl_diag_text(
+        SL_TYPE_ESTOP,
+        SL_DIAG_DISC1 | SL_DIAG_EDM1 | SL_DIAG_CLOCK,
+        buf.as_mut_ptr().cast(),
+        buf.len(),
+    );
+    assert_eq!(rc, SL_OK);
+    let text = c_text(&buf);
+    assert_eq!(
+        text,
+        "discrepancy error input group 1; EDM monitoring error EDM1; clock went backwards"
+    );
+    let mut small = [0x55i8; 8];
+    assert_eq!(
+        safelogic::ffi::sl_diag_text(
+            SL_TYPE_ESTOP,
+            SL_DIAG_DISC1,
+            small.as_mut_ptr().cast(),
+            small.len()
+        ),
+        SL_OK
+    );
+    assert_eq!(
+        c_text(&small),
+        "discrep",
+        "truncated to the buffer, NUL included"
+    );
+    assert_eq!(
+        safelogic::ffi::sl_diag_text(999, 1, buf.as_mut_ptr().cast(), buf.len()),
+        SL_E_CONFIG
+    );
+    assert_eq!(
+        safelogic::ffi::sl_diag_text(SL_TYPE_AND, 0, std::ptr::null_mut(), 10),
+        SL_E_NULL
+    );
+    assert_eq!(
+        safelogic::ffi::sl_diag_text(SL_TYPE_AND, 1 << 6, buf.as_mut_ptr().cast(), buf.len()),
+        SL_OK
+    );
+    assert_eq!(c_text(&buf), "bit 6");
+    fn c_text(b: &[i8]) -> String {
+        let bytes: Vec<u8> = b.iter().map(|&c| c as u8).take_while(|&c| c != 0).collect();
+        String::from_utf8(bytes).unwrap()
+    }
 }

@@ -7,6 +7,7 @@
 //! (`guard`).
 
 use super::guard::{GuardBlock, GuardParams, GuardRaw, SL_GUARD_PRIVATE};
+use super::BlockInfo;
 use crate::types::*;
 use core::mem::{offset_of, size_of};
 
@@ -111,6 +112,36 @@ const _: () = {
     assert!(offset_of!(FB_ESTOP, stPrivate) == 72);
     assert!(size_of::<FB_ESTOP>() == 136);
     assert!(core::mem::align_of::<FB_ESTOP>() == 4);
+};
+
+/// Type tag, name and diag texts (manual §4.4.2).
+pub const INFO: BlockInfo = BlockInfo {
+    tag: SL_TYPE_ESTOP,
+    name: "ESTOP",
+    diag: &[
+        (SL_DIAG_DISC1, "discrepancy error input group 1"),
+        (SL_DIAG_DISC2, "discrepancy error input group 2"),
+        (SL_DIAG_DISC3, "discrepancy error input group 3"),
+        (SL_DIAG_DISC4, "discrepancy error input group 4"),
+        (SL_DIAG_EDM1, "EDM monitoring error EDM1"),
+        (SL_DIAG_EDM2, "EDM monitoring error EDM2"),
+        (
+            SL_DIAG_SAFE_IN_DISC1,
+            "group 1 with Safe Inputs after Disc Error",
+        ),
+        (
+            SL_DIAG_SAFE_IN_DISC2,
+            "group 2 with Safe Inputs after Disc Error",
+        ),
+        (
+            SL_DIAG_SAFE_IN_DISC3,
+            "group 3 with Safe Inputs after Disc Error",
+        ),
+        (
+            SL_DIAG_SAFE_IN_DISC4,
+            "group 4 with Safe Inputs after Disc Error",
+        ),
+    ],
 };
 
 crate::impl_member!(

@@ -8,3 +8,83 @@ pub mod guard;
 pub mod logic;
 pub mod mon;
 pub mod or;
+
+/// What the C ABI and HMIs need to know about a block type without an instance.
+#[derive(Clone, Copy, Debug)]
+pub struct BlockInfo {
+    /// `SL_TYPE_<NAME>` (group member tag).
+    pub tag: u16,
+    /// The manual's block name.
+    pub name: &'static str,
+    /// Diagnostic bits the manual defines for the block, with their manual text.
+    pub diag: &'static [(u16, &'static str)],
+}
+
+/// Every block type, in tag order.
+pub static BLOCKS: &[BlockInfo] = &[estop::INFO, mon::INFO, and::INFO, or::INFO];
+
+/// The block type with this tag.
+pub fn info(tag: u16) -> Option<&'static BlockInfo> {
+    BLOCKS.iter().find(|b| b.tag == tag)
+}
+
+/// Library diag bits common to every block (docs/semantics.md C11).
+pub const LIBRARY_DIAG: &[(u16, &str)] = &[
+    (
+        crate::types::SL_DIAG_PARAM_CHANGED,
+        "parameter changed while running",
+    ),
+    (crate::types::SL_DIAG_CLOCK, "clock went backwards"),
+    (crate::types::SL_DIAG_CORRUPT, "private state corrupt"),
+];
+
+/// Writes the names of the bits set in `diag` into `out`, separated by "; ", truncated to
+/// fit; returns the number of bytes written (no NUL).
+pub fn diag_text(block: &BlockInfo, diag: u16, out: &mut [u8]) -> usize {
+    let mut w = Writer { out, len: 0 };
+    for bit in 0..16u16 {
+        let mask = 1u16 << bit;
+        if diag & mask == 0 {
+            continue;
+        }
+        if w.len > 0 {
+            w.push("; ");
+        }
+        match block
+            .diag
+            .iter()
+            .chain(LIBRARY_DIAG)
+            .find(|(m, _)| *m == mask)
+        {
+            Some((_, text)) => w.push(text),
+            None => {
+                w.push("bit ");
+                w.push(DIGITS[usize::from(bit)]);
+            }
+        }
+    }
+    w.len
+}
+
+const DIGITS: [&str; 16] = [
+    "0", "1", "2", "3", "4", "5", "6", "7", "8", "9", "10", "11", "12", "13", "14", "15",
+];
+
+struct Writer<'a> {
+    out: &'a mut [u8],
+    len: usize,
+}
+
+impl Writer<'_> {
+    fn push(&mut self, s: &str) {
+        let room = self.out.len().saturating_sub(self.len);
+        let n = s.len().min(room);
+        if let (Some(dst), Some(src)) = (
+            self.out.get_mut(self.len..self.len + n),
+            s.as_bytes().get(..n),
+        ) {
+            dst.copy_from_slice(src);
+            self.len += n;
+        }
+    }
+}

@@ -8,6 +8,7 @@
 //! while MonDelOut is still on. The state machine is shared with FB ESTOP (`guard`).
 
 use super::guard::{GuardBlock, GuardParams, GuardRaw, SL_GUARD_PRIVATE};
+use super::BlockInfo;
 use crate::types::*;
 use core::mem::{offset_of, size_of};
 
@@ -117,6 +118,31 @@ const _: () = {
 
 const MON_INPUTS: u8 = 0x0F;
 const SECURE_INPUTS: u8 = 0x30;
+
+/// Type tag, name and diag texts (manual §4.5.2).
+pub const INFO: BlockInfo = BlockInfo {
+    tag: SL_TYPE_MON,
+    name: "MON",
+    diag: &[
+        (SL_DIAG_DISC1, "discrepancy error input group 1"),
+        (SL_DIAG_DISC2, "discrepancy error input group 2"),
+        (SL_DIAG_DISC3, "discrepancy error in Secure input group"),
+        (SL_DIAG_EDM1, "EDM monitoring error EDM1"),
+        (SL_DIAG_EDM2, "EDM monitoring error EDM2"),
+        (
+            SL_DIAG_SAFE_IN_DISC1,
+            "group 1 with Safe Inputs after Disc Error",
+        ),
+        (
+            SL_DIAG_SAFE_IN_DISC2,
+            "group 2 with Safe Inputs after Disc Error",
+        ),
+        (
+            SL_DIAG_SAFE_IN_DISC3,
+            "Secure group with Safe Inputs after Disc Error",
+        ),
+    ],
+};
 
 crate::impl_member!(
     FB_MON,

@@ -3,6 +3,7 @@
 //! STOP (2), SAFE (3); diag always 0.
 
 use super::logic::{LogicBlock, LogicIn, LogicParams, SL_LOGIC_PRIVATE};
+use super::BlockInfo;
 use crate::prim::bools;
 use crate::types::*;
 use core::mem::{offset_of, size_of};
@@ -70,6 +71,13 @@ const _: () = {
     assert!(offset_of!(FB_OR, nDiag) == 34);
     assert!(offset_of!(FB_OR, stPrivate) == 40);
     assert!(size_of::<FB_OR>() == 72);
+};
+
+/// Type tag, name and diag texts (manual §4.2.2).
+pub const INFO: BlockInfo = BlockInfo {
+    tag: SL_TYPE_OR,
+    name: "OR",
+    diag: &[],
 };
 
 crate::impl_member!(
