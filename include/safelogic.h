@@ -1018,9 +1018,11 @@ int32_t sl_mon_cycle(struct FB_MON *fb, uint32_t tNow);
 const char *sl_status_str(int32_t status);
 
 /*
- Static, NUL-terminated name of a state value ("RUN", "STOP", ...; never NULL).
+ Static, NUL-terminated name of state `nState` of a block of type `nType`
+ (SL_TYPE_<NAME>): "RUN", "STOP", "DELAYOUT", ... ; "?" for a value the block does not
+ have. Never NULL.
  */
-const char *sl_state_str(uint8_t state);
+const char *sl_state_str(uint16_t nType, uint8_t nState);
 
 /*
  Monotonic milliseconds (CLOCK_MONOTONIC), wrapping at 2^32, for hosts without a clock.

@@ -87,11 +87,22 @@ pub extern "C" fn sl_status_str(status: i32) -> *const c_char {
     .cast()
 }
 
-/// Static, NUL-terminated name of a state value ("RUN", "STOP", ...; never NULL).
+/// Static, NUL-terminated name of state `nState` of a block of type `nType`
+/// (SL_TYPE_<NAME>): "RUN", "STOP", "DELAYOUT", ... ; "?" for a value the block does not
+/// have. Never NULL.
 #[no_mangle]
-pub extern "C" fn sl_state_str(state: u8) -> *const c_char {
-    ffi_boundary!(state_text(0).as_ptr(), state_text(state).as_ptr()).cast()
+#[allow(non_snake_case)]
+pub extern "C" fn sl_state_str(nType: u16, nState: u8) -> *const c_char {
+    ffi_boundary!(
+        UNKNOWN_STATE.as_ptr(),
+        crate::blocks::info(nType)
+            .and_then(|b| b.states.iter().find(|(v, _)| *v == nState))
+            .map_or(UNKNOWN_STATE.as_ptr(), |(_, name)| name.as_ptr())
+    )
+    .cast()
 }
+
+const UNKNOWN_STATE: &str = "?\0";
 
 /// Monotonic milliseconds (CLOCK_MONOTONIC), wrapping at 2^32, for hosts without a clock.
 #[no_mangle]

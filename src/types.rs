@@ -150,19 +150,3 @@ pub const fn status_text(status: i32) -> &'static str {
         _ => "unknown status code\0",
     }
 }
-
-/// Name of a state value (for `sl_state_str`); NUL-terminated.
-pub const fn state_text(state: u8) -> &'static str {
-    match state {
-        SL_STATE_RUN => "RUN\0",
-        SL_STATE_STOP => "STOP\0",
-        SL_STATE_SAFE => "SAFE\0",
-        SL_STATE_ERROR => "ERROR\0",
-        SL_STATE_RESET => "RESET\0",
-        SL_STATE_START => "START\0",
-        SL_STATE_ERRORDELAY => "ERRORDELAY\0",
-        SL_STATE_DELAYOUT => "DELAYOUT\0",
-        SL_STATE_FUNCTEST => "FUNCTEST\0",
-        _ => "?\0",
-    }
-}

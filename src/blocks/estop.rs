@@ -7,7 +7,7 @@
 //! (`guard`).
 
 use super::guard::{GuardBlock, GuardParams, GuardRaw, SL_GUARD_PRIVATE};
-use super::BlockInfo;
+use super::{BlockInfo, DELAYOUT, ERROR, RESET, RUN, SAFE, START, STOP};
 use crate::types::*;
 use core::mem::{offset_of, size_of};
 
@@ -118,6 +118,7 @@ const _: () = {
 pub const INFO: BlockInfo = BlockInfo {
     tag: SL_TYPE_ESTOP,
     name: "ESTOP",
+    states: &[RUN, STOP, SAFE, ERROR, RESET, START, DELAYOUT],
     diag: &[
         (SL_DIAG_DISC1, "discrepancy error input group 1"),
         (SL_DIAG_DISC2, "discrepancy error input group 2"),

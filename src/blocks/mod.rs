@@ -16,9 +16,20 @@ pub struct BlockInfo {
     pub tag: u16,
     /// The manual's block name.
     pub name: &'static str,
+    /// The block's states (the manual's status values) with NUL-terminated names.
+    pub states: &'static [(u8, &'static str)],
     /// Diagnostic bits the manual defines for the block, with their manual text.
     pub diag: &'static [(u16, &'static str)],
 }
+
+/// State names shared by most blocks (manual status values 1–6, 8).
+pub const RUN: (u8, &str) = (crate::types::SL_STATE_RUN, "RUN\0");
+pub const STOP: (u8, &str) = (crate::types::SL_STATE_STOP, "STOP\0");
+pub const SAFE: (u8, &str) = (crate::types::SL_STATE_SAFE, "SAFE\0");
+pub const ERROR: (u8, &str) = (crate::types::SL_STATE_ERROR, "ERROR\0");
+pub const RESET: (u8, &str) = (crate::types::SL_STATE_RESET, "RESET\0");
+pub const START: (u8, &str) = (crate::types::SL_STATE_START, "START\0");
+pub const DELAYOUT: (u8, &str) = (crate::types::SL_STATE_DELAYOUT, "DELAYOUT\0");
 
 /// Every block type, in tag order.
 pub static BLOCKS: &[BlockInfo] = &[estop::INFO, mon::INFO, and::INFO, or::INFO];

@@ -3,7 +3,7 @@
 //! STOP (2), SAFE (3); diag always 0.
 
 use super::logic::{LogicBlock, LogicIn, LogicParams, SL_LOGIC_PRIVATE};
-use super::BlockInfo;
+use super::{BlockInfo, ERROR, RESET, RUN, SAFE, STOP};
 use crate::prim::bools;
 use crate::types::*;
 use core::mem::{offset_of, size_of};
@@ -77,6 +77,7 @@ const _: () = {
 pub const INFO: BlockInfo = BlockInfo {
     tag: SL_TYPE_OR,
     name: "OR",
+    states: &[RUN, STOP, SAFE, ERROR, RESET],
     diag: &[],
 };
 
