@@ -13,9 +13,8 @@
 //!
 //! The figures are reported next to the project's targets; the bench never fails on them.
 
-use safelogic::ffi::{sl_estop_cycle, sl_estop_init, sl_mon_cycle, sl_mon_init, sl_state_str};
+use safelogic::ffi::{sl_estop_cycle, sl_estop_init, sl_mon_cycle, sl_mon_init};
 use safelogic::*;
-use std::ffi::CStr;
 use std::hint::black_box;
 use std::mem::size_of;
 use std::time::Instant;
@@ -340,10 +339,7 @@ impl StateMix {
 }
 
 fn state_name(state: u8) -> String {
-    // SAFETY: sl_state_str returns a static NUL-terminated string, never NULL.
-    unsafe { CStr::from_ptr(sl_state_str(state)) }
-        .to_string_lossy()
-        .into_owned()
+    safelogic::state_name(SL_TYPE_MON, state).to_string()
 }
 
 fn estop_state_mix(table: &[Inputs]) -> StateMix {

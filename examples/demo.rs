@@ -17,9 +17,7 @@
 //! diagnosis or the returned status changes, and whenever the script does something.
 
 use safelogic::ffi::{sl_estop_cycle, sl_estop_init, sl_mon_cycle, sl_mon_init};
-use safelogic::ffi::{sl_state_str, sl_status_str};
 use safelogic::*;
-use std::ffi::CStr;
 
 /// Task cycle of the simulated safety task.
 const CYCLE_MS: u32 = 1;
@@ -198,19 +196,15 @@ impl Guard for FB_MON {
     ];
 }
 
-/// "RUN", "SAFE", ... from the library (`sl_state_str`).
+/// "RUN", "SAFE", ... from the library. ESTOP's states are a subset of MON's, same names.
 fn state_name(state: u8) -> String {
-    // SAFETY: sl_state_str returns a static, NUL-terminated string and never NULL.
-    unsafe { CStr::from_ptr(sl_state_str(state)) }
-        .to_string_lossy()
-        .into_owned()
+    safelogic::state_name(SL_TYPE_MON, state).to_string()
 }
 
-/// "SL_E_CLOCK" etc. (the part of `sl_status_str` before the colon).
+/// "SL_E_CLOCK" etc. (the part of the status text before the colon).
 fn status_name(status: i32) -> String {
-    // SAFETY: sl_status_str returns a static, NUL-terminated string and never NULL.
-    let text = unsafe { CStr::from_ptr(sl_status_str(status)) }.to_string_lossy();
-    text.split(':').next().unwrap_or_default().to_string()
+    let text = safelogic::types::status_str(status);
+    text.split(':').next().unwrap_or(text).to_string()
 }
 
 /// `nDiag` as hex and the names of its bits.

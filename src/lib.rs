@@ -21,6 +21,7 @@ pub use blocks::guard::SL_GUARD_PRIVATE;
 pub use blocks::logic::SL_LOGIC_PRIVATE;
 pub use blocks::mon::FB_MON;
 pub use blocks::or::FB_OR;
+pub use blocks::state_name;
 pub use group::{SL_GROUP, SL_GROUP_PRIVATE, SL_LINK, SL_MEMBER};
 pub use prim::header::SL_PRIVATE_HEADER;
 pub use types::*;

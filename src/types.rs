@@ -130,6 +130,11 @@ pub const SL_TYPE_OR: u16 = 4;
 /// Largest time parameter of FB_ESTOP and FB_MON in ms (see docs/semantics.md).
 pub const SL_TIME_PARAM_MAX: u32 = 65_535;
 
+/// Text for a status code without the C terminator.
+pub fn status_str(status: i32) -> &'static str {
+    status_text(status).trim_end_matches('\0')
+}
+
 /// Text for a status code (for `sl_status_str`); NUL-terminated so C can use it directly.
 pub const fn status_text(status: i32) -> &'static str {
     match status {

@@ -198,7 +198,7 @@ impl Tally {
         assert!(!p.is_null());
         self.ops[Func::StatusStr as usize] += n;
         self.calls[Func::StatusStr as usize] += 1;
-        let (p, n) = heap_ops(|| sl_state_str(state));
+        let (p, n) = heap_ops(|| sl_state_str(SL_TYPE_MON, state));
         assert!(!p.is_null());
         self.ops[Func::StateStr as usize] += n;
         self.calls[Func::StateStr as usize] += 1;

@@ -125,7 +125,7 @@ impl LogicBlock for FB_AND {
     }
     /// RUN when every active input is logically TRUE (ACTIVE_ANDIN), else SAFE.
     fn evaluate(&self, active: u8, negated: u8) -> (LogicIn, bool) {
-        let p = bools::pack(&self.inputs());
+        let p = bools::pack(self.inputs());
         let all = bools::logical(p, active, negated) == active;
         let state = if all { SL_STATE_RUN } else { SL_STATE_SAFE };
         (

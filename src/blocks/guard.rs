@@ -114,10 +114,16 @@ fn manual_restart<T: GuardBlock>(options: u16) -> bool {
     T::ALWAYS_MANUAL || u32::from(options) & SL_OPT_MANUAL_RESTART != 0
 }
 
+/// CRC of a guard block's latched parameters.
+fn latched_crc<T: GuardBlock>(p: &SL_GUARD_PRIVATE) -> u16 {
+    let h = &p.stHeader;
+    param_crc(T::TAG, h.nActive, h.nNegated, h.wOptions, &p.awTime)
+}
+
 /// Outputs switch on: verify the latched parameters first (ABI §3.6 integrity), then RUN
 /// with the EDM reset-time checks armed.
-fn enable(p: &mut SL_GUARD_PRIVATE, edm: &Edm, crc: u16, now: u32) -> (u8, i32) {
-    if crc != p.stHeader.wParamCrc {
+fn enable<T: GuardBlock>(p: &mut SL_GUARD_PRIVATE, edm: &Edm, now: u32) -> (u8, i32) {
+    if latched_crc::<T>(p) != p.stHeader.wParamCrc {
         p.stHeader.enter_error(SL_DIAG_CORRUPT);
         return (SL_STATE_ERROR, SL_E_CORRUPT);
     }
@@ -136,25 +142,35 @@ macro_rules! guard_block {
             type Params = GuardParams;
             type In = GuardIn;
 
+            #[inline(always)]
+
             fn header(&self) -> &SL_PRIVATE_HEADER {
                 &self.private().stHeader
             }
+            #[inline(always)]
             fn header_mut(&mut self) -> &mut SL_PRIVATE_HEADER {
                 &mut self.private_mut().stHeader
             }
+            #[inline(always)]
             fn clear_private(&mut self) {
                 *self.private_mut() = SL_GUARD_PRIVATE::default();
             }
+            #[inline(always)]
             fn run_raw(&self) -> u8 {
                 self.control().0
             }
+            #[inline(always)]
             fn errack_raw(&self) -> u8 {
                 self.control().1
             }
 
+            #[inline(always)]
+
             fn live_params(&self) -> GuardParams {
                 self.params()
             }
+
+            #[inline(always)]
 
             fn latched_params(&self) -> GuardParams {
                 let p = self.private();
@@ -168,6 +184,8 @@ macro_rules! guard_block {
                     options: u32::from(p.stHeader.wOptions),
                 }
             }
+
+            #[inline(always)]
 
             fn params_valid(p: &GuardParams) -> bool {
                 let times_ok = p
@@ -193,6 +211,8 @@ macro_rules! guard_block {
                     && p.options & !Self::OPTIONS == 0
             }
 
+            #[inline(always)]
+
             fn store_params(&mut self, p: &GuardParams) {
                 let q = self.private_mut();
                 // Narrowing is exact for valid parameters (all times <= SL_TIME_PARAM_MAX); an
@@ -213,16 +233,20 @@ macro_rules! guard_block {
                 q.stHeader.wOptions = p.options as u16;
             }
 
+            #[inline(always)]
+
             fn latched_crc(&self) -> u16 {
                 let p = self.private();
                 let h = &p.stHeader;
                 param_crc(Self::MAGIC, h.nActive, h.nNegated, h.wOptions, &p.awTime)
             }
 
+            #[inline(always)]
+
             fn decode(&mut self) -> (GuardIn, bool) {
                 let raw = self.raw();
                 let h = &mut self.private_mut().stHeader;
-                let packed = bools::pack(&raw.inputs);
+                let packed = bools::pack(raw.inputs);
                 let active = h.nActive;
                 let logical = bools::logical(packed, active, h.nNegated);
                 let restart = bools::edge(raw.restart, &mut h.nFlags, F_RESTART_PREV);
@@ -248,6 +272,8 @@ macro_rules! guard_block {
                 (inp, invalid)
             }
 
+            #[inline(always)]
+
             fn start(&mut self, _inp: &GuardIn, now: u32) {
                 let h = &mut self.private_mut().stHeader;
                 h.wAux = 0;
@@ -260,8 +286,9 @@ macro_rules! guard_block {
                 };
             }
 
+            #[inline(always)]
+
             fn step(&mut self, inp: &GuardIn, now: u32) -> i32 {
-                let crc = self.latched_crc();
                 let p = self.private_mut();
                 let state = p.stHeader.nState;
                 let options = u32::from(p.stHeader.wOptions);
@@ -354,7 +381,7 @@ macro_rules! guard_block {
                             Restart::Wait => SL_STATE_SAFE,
                             Restart::Start => SL_STATE_START,
                             Restart::Enable => {
-                                let (s, st) = enable(p, &inp.edm, crc, now);
+                                let (s, st) = enable::<$t>(p, &inp.edm, now);
                                 status = st;
                                 s
                             }
@@ -362,7 +389,7 @@ macro_rules! guard_block {
                     }
                     SL_STATE_SAFE => {
                         if !inp.request && inp.edm.all_released() {
-                            let (s, st) = enable(p, &inp.edm, crc, now);
+                            let (s, st) = enable::<$t>(p, &inp.edm, now);
                             status = st;
                             s
                         } else {
@@ -398,6 +425,8 @@ macro_rules! guard_block {
                 status
             }
 
+            #[inline(always)]
+
             fn stop(&mut self) {
                 let h = &mut self.private_mut().stHeader;
                 // A pending discrepancy error stays an error; every other running state stops.
@@ -407,6 +436,8 @@ macro_rules! guard_block {
                     h.nState = SL_STATE_STOP;
                 }
             }
+
+            #[inline(always)]
 
             fn error_remains(&mut self, inp: &GuardIn) -> bool {
                 let h = &mut self.private_mut().stHeader;
@@ -423,6 +454,8 @@ macro_rules! guard_block {
                 let edm_remains = h.wDiag & inp.edm.not_released() != 0;
                 disc_remains || edm_remains
             }
+
+            #[inline(always)]
 
             fn write_outputs(&mut self) {
                 let h = self.private().stHeader;

@@ -66,24 +66,32 @@ macro_rules! logic_block {
             type Params = LogicParams;
             type In = LogicIn;
 
+            #[inline(always)]
+
             fn header(&self) -> &SL_PRIVATE_HEADER {
                 &self.private().stHeader
             }
+            #[inline(always)]
             fn header_mut(&mut self) -> &mut SL_PRIVATE_HEADER {
                 &mut self.private_mut().stHeader
             }
+            #[inline(always)]
             fn clear_private(&mut self) {
                 *self.private_mut() = SL_LOGIC_PRIVATE::default();
             }
+            #[inline(always)]
             fn run_raw(&self) -> u8 {
                 self.control().0
             }
+            #[inline(always)]
             fn errack_raw(&self) -> u8 {
                 self.control().1
             }
+            #[inline(always)]
             fn live_params(&self) -> LogicParams {
                 self.params()
             }
+            #[inline(always)]
             fn latched_params(&self) -> LogicParams {
                 let h = &self.private().stHeader;
                 LogicParams {
@@ -91,36 +99,44 @@ macro_rules! logic_block {
                     negated: u16::from(h.nNegated),
                 }
             }
+            #[inline(always)]
             fn params_valid(p: &LogicParams) -> bool {
                 p.active & !Self::INPUTS == 0
                     && p.negated & !Self::NEGATABLE == 0
                     && p.active.count_ones() >= Self::MIN_ACTIVE
             }
+            #[inline(always)]
             fn store_params(&mut self, p: &LogicParams) {
                 let h = &mut self.private_mut().stHeader;
                 h.nActive = p.active as u8;
                 h.nNegated = p.negated as u8;
             }
+            #[inline(always)]
             fn latched_crc(&self) -> u16 {
                 let h = &self.private().stHeader;
                 param_crc(Self::MAGIC, h.nActive, h.nNegated, h.wOptions, &[])
             }
+            #[inline(always)]
             fn decode(&mut self) -> (LogicIn, bool) {
                 let h = &self.private().stHeader;
                 self.evaluate(h.nActive, h.nNegated)
             }
+            #[inline(always)]
             fn start(&mut self, inp: &LogicIn, now: u32) {
                 self.step(inp, now);
             }
+            #[inline(always)]
             fn step(&mut self, inp: &LogicIn, _now: u32) -> i32 {
                 let h = &mut self.private_mut().stHeader;
                 h.nState = inp.state;
                 h.wAux = u16::from(inp.outputs);
                 SL_OK
             }
+            #[inline(always)]
             fn error_remains(&mut self, _inp: &LogicIn) -> bool {
                 false
             }
+            #[inline(always)]
             fn write_outputs(&mut self) {
                 let h = self.private().stHeader;
                 let outputs = if h.nState == SL_STATE_RUN {

@@ -39,6 +39,13 @@ pub fn info(tag: u16) -> Option<&'static BlockInfo> {
     BLOCKS.iter().find(|b| b.tag == tag)
 }
 
+/// Name of state `state` of block type `tag` ("?" for a value the block does not have).
+pub fn state_name(tag: u16, state: u8) -> &'static str {
+    info(tag)
+        .and_then(|b| b.states.iter().find(|(v, _)| *v == state))
+        .map_or("?", |(_, name)| name.trim_end_matches('\0'))
+}
+
 /// Library diag bits common to every block (docs/semantics.md C11).
 pub const LIBRARY_DIAG: &[(u16, &str)] = &[
     (

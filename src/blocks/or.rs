@@ -125,7 +125,7 @@ impl LogicBlock for FB_OR {
     }
     /// RUN when at least one active input is logically TRUE (ACTIVE_ORIN), else SAFE.
     fn evaluate(&self, active: u8, negated: u8) -> (LogicIn, bool) {
-        let p = bools::pack(&self.inputs());
+        let p = bools::pack(self.inputs());
         let any = bools::logical(p, active, negated) != 0;
         let state = if any { SL_STATE_RUN } else { SL_STATE_SAFE };
         (

@@ -10,15 +10,20 @@ pub struct Packed {
     pub invalid: u8,
 }
 
-/// Packs up to eight BOOL bytes into masks (bit i = byte i).
+/// Packs eight BOOL bytes into masks (bit i = byte i), all bytes at once.
 #[inline]
-pub fn pack(bytes: &[u8]) -> Packed {
-    let mut p = Packed::default();
-    for (i, &b) in bytes.iter().take(8).enumerate() {
-        p.ones |= u8::from(b == 1) << i;
-        p.invalid |= u8::from(b > 1) << i;
+pub fn pack(bytes: [u8; 8]) -> Packed {
+    const LSB: u64 = 0x0101_0101_0101_0101;
+    // Multiplying a value whose bytes are 0 or 1 by this gathers byte i's bit into bit 56+i.
+    const GATHER: u64 = 0x0102_0408_1020_4080;
+    let v = u64::from_le_bytes(bytes);
+    let high = v & !LSB;
+    // Byte-wise "high != 0": adding 0x7F to the low seven bits carries into bit 7.
+    let nonzero = (((high & (LSB * 0x7F)) + LSB * 0x7F) | high) >> 7 & LSB;
+    Packed {
+        ones: ((v & LSB & !nonzero).wrapping_mul(GATHER) >> 56) as u8,
+        invalid: (nonzero.wrapping_mul(GATHER) >> 56) as u8,
     }
-    p
 }
 
 /// Logical values of safety inputs: raw XOR negation for active inputs; an invalid byte
@@ -75,11 +80,29 @@ mod tests {
 
     #[test]
     fn pack_and_logical() {
-        let p = pack(&[1, 0, 2, 1, 0, 0xFF, 1, 0]);
+        let p = pack([1, 0, 2, 1, 0, 0xFF, 1, 0]);
         assert_eq!(p.ones, 0b0100_1001);
         assert_eq!(p.invalid, 0b0010_0100);
         // input 1 negated (make contact): raw 0 -> logical TRUE; invalid input 5 negated -> FALSE
         assert_eq!(logical(p, 0xFF, 0b0010_0010), 0b0100_1011);
+    }
+
+    #[test]
+    fn pack_matches_a_byte_by_byte_reading() {
+        let samples = [0u8, 1, 2, 3, 0x7F, 0x80, 0x81, 0xFE, 0xFF];
+        let mut seed = 0x9E37_79B9_7F4A_7C15u64;
+        for _ in 0..20_000 {
+            seed ^= seed << 13;
+            seed ^= seed >> 7;
+            seed ^= seed << 17;
+            let bytes: [u8; 8] =
+                core::array::from_fn(|i| samples[((seed >> (i * 7)) % 9) as usize]);
+            let p = pack(bytes);
+            for (i, &b) in bytes.iter().enumerate() {
+                assert_eq!(p.ones >> i & 1 == 1, b == 1, "{bytes:?}");
+                assert_eq!(p.invalid >> i & 1 == 1, b > 1, "{bytes:?}");
+            }
+        }
     }
 
     #[test]

@@ -45,6 +45,9 @@ impl Edm {
         reset_time: [u16; 2],
         now: u32,
     ) -> u16 {
+        if *pending == 0 {
+            return 0;
+        }
         let mut d = 0;
         for (x, diag) in DIAG.iter().enumerate() {
             let bit = 1u8 << x;

@@ -111,6 +111,7 @@ pub fn init<B: Block>(fb: &mut B) -> i32 {
 }
 
 /// `sl_<name>_cycle`: one task cycle at time `now` (ms, wrapping).
+#[inline]
 pub fn cycle<B: Block>(fb: &mut B, now: u32) -> i32 {
     let mut status = SL_OK;
     // An error entered in this call cannot be acknowledged in the same call.
