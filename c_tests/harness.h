@@ -1,0 +1,60 @@
+/*
+ * Minimal self-contained test harness for the safelogic C ABI scenarios.
+ *
+ * No external framework: every check counts as one "passed" or one "failed"; a failed
+ * check prints the scenario, file:line, the simulated time and every field that differs.
+ * test_main.c prints "N passed, N failed" and returns non-zero when anything failed.
+ *
+ * The scenario sources (test_*.c) compile as C11 and as C++17 (scenarios_cxx.cpp includes
+ * all of them into one translation unit), so: no designated initialisers, no compound
+ * literals, no implicit void* conversions, and helper names unique across all files.
+ */
+#ifndef SL_C_TESTS_HARNESS_H
+#define SL_C_TESTS_HARNESS_H
+
+#include <stddef.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "safelogic.h"
+
+/* Counters and the current scenario (defined in test_main.c). */
+extern int h_passed;
+extern int h_failed;
+extern const char *h_scenario;
+
+/* Starts a scenario: name printed in every failure message and in the summary line. */
+void h_begin(const char *name);
+/* Ends the current scenario and prints one line "ok"/"FAILED" with its counts. */
+void h_end(void);
+
+/* One check: `ok` true = pass. `msg` is printed (with file:line) only on failure. */
+void h_check(int ok, const char *file, int line, const char *msg);
+/* Integer equality check, printing expected and actual values on failure. */
+void h_check_int(long long got, long long expected, const char *file, int line, const char *what);
+/* String equality check. */
+void h_check_str(const char *got, const char *expected, const char *file, int line,
+                 const char *what);
+
+/*
+ * Checks one block step: status code of the call, nState, nDiag and the three BOOL outputs
+ * (bError, first output, delayed output). Counts as ONE check; on failure prints every field
+ * that differs. `t` is the simulated time of the call (for the message only).
+ */
+void h_check_step(const char *file, int line, const char *block, uint32_t t,
+                  int32_t rc, uint8_t state, uint16_t diag, uint8_t err, uint8_t out,
+                  uint8_t del, int32_t xrc, uint8_t xstate, uint16_t xdiag, uint8_t xerr,
+                  uint8_t xout, uint8_t xdel);
+
+#define CHECK(cond, msg) h_check((cond) ? 1 : 0, __FILE__, __LINE__, (msg))
+#define CHECK_INT(got, expected) \
+    h_check_int((long long)(got), (long long)(expected), __FILE__, __LINE__, #got)
+#define CHECK_STR(got, expected) h_check_str((got), (expected), __FILE__, __LINE__, #got)
+
+/* Scenario groups (test_estop.c, test_mon.c, test_api.c). */
+void run_estop_scenarios(void);
+void run_mon_scenarios(void);
+void run_api_scenarios(void);
+
+#endif /* SL_C_TESTS_HARNESS_H */

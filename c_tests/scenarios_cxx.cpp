@@ -1,0 +1,7 @@
+// The C scenario sources compiled as C++17 (-std=c++17 -Wall -Wextra -Werror -pedantic):
+// one translation unit that includes every scenario file, so the header and the harness
+// are exercised through a C++ compiler and C++ name lookup, linked against the C ABI.
+#include "test_api.c"  // first: it sets _POSIX_C_SOURCE before any system header
+#include "test_main.c"
+#include "test_estop.c"
+#include "test_mon.c"
