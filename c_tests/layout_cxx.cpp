@@ -55,7 +55,7 @@ int main()
     std::printf("C++17: safelogic %s, sizeof(FB_ESTOP)=%zu sizeof(FB_MON)=%zu, init %s / %s, "
                 "state %s / %s\n",
                 sl_version(), sizeof(FB_ESTOP), sizeof(FB_MON), sl_status_str(rc1),
-                sl_status_str(rc2), sl_state_str(es.nState), sl_state_str(mon.nState));
+                sl_status_str(rc2), sl_state_str(SL_TYPE_ESTOP, es.nState), sl_state_str(SL_TYPE_MON, mon.nState));
     return (rc1 == SL_OK && rc2 == SL_OK && es.nState == SL_STATE_STOP &&
             mon.nState == SL_STATE_STOP)
                ? 0

@@ -103,15 +103,18 @@ static void api_state_str(void)
 {
     unsigned v;
     h_begin("API sl_state_str (manual status values 1..9)");
-    CHECK_STR(sl_state_str(SL_STATE_RUN), "RUN");
-    CHECK_STR(sl_state_str(SL_STATE_STOP), "STOP");
-    CHECK_STR(sl_state_str(SL_STATE_SAFE), "SAFE");
-    CHECK_STR(sl_state_str(SL_STATE_ERROR), "ERROR");
-    CHECK_STR(sl_state_str(SL_STATE_RESET), "RESET");
-    CHECK_STR(sl_state_str(SL_STATE_START), "START");
-    CHECK_STR(sl_state_str(SL_STATE_ERRORDELAY), "ERRORDELAY");
-    CHECK_STR(sl_state_str(SL_STATE_DELAYOUT), "DELAYOUT");
-    CHECK_STR(sl_state_str(SL_STATE_FUNCTEST), "FUNCTEST");
+    CHECK_STR(sl_state_str(SL_TYPE_ESTOP, SL_STATE_FUNCTEST), "?");
+    CHECK_STR(sl_state_str(SL_TYPE_ESTOP, SL_STATE_DELAYOUT), "DELAYOUT");
+    CHECK_STR(sl_state_str(999, SL_STATE_RUN), "?");
+    CHECK_STR(sl_state_str(SL_TYPE_MON, SL_STATE_RUN), "RUN");
+    CHECK_STR(sl_state_str(SL_TYPE_MON, SL_STATE_STOP), "STOP");
+    CHECK_STR(sl_state_str(SL_TYPE_MON, SL_STATE_SAFE), "SAFE");
+    CHECK_STR(sl_state_str(SL_TYPE_MON, SL_STATE_ERROR), "ERROR");
+    CHECK_STR(sl_state_str(SL_TYPE_MON, SL_STATE_RESET), "RESET");
+    CHECK_STR(sl_state_str(SL_TYPE_MON, SL_STATE_START), "START");
+    CHECK_STR(sl_state_str(SL_TYPE_MON, SL_STATE_ERRORDELAY), "ERRORDELAY");
+    CHECK_STR(sl_state_str(SL_TYPE_MON, SL_STATE_DELAYOUT), "DELAYOUT");
+    CHECK_STR(sl_state_str(SL_TYPE_MON, SL_STATE_FUNCTEST), "FUNCTEST");
     CHECK_INT(SL_STATE_RUN, 1);
     CHECK_INT(SL_STATE_STOP, 2);
     CHECK_INT(SL_STATE_SAFE, 3);
@@ -122,7 +125,7 @@ static void api_state_str(void)
     CHECK_INT(SL_STATE_DELAYOUT, 8);
     CHECK_INT(SL_STATE_FUNCTEST, 9);
     for (v = 0; v <= 255; v++) {
-        const char *s = sl_state_str((uint8_t)v);
+        const char *s = sl_state_str(SL_TYPE_MON, (uint8_t)v);
         if (s == NULL) {
             CHECK(0, "sl_state_str returned NULL");
             break;

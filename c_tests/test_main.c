@@ -68,7 +68,8 @@ void h_check_str(const char *got, const char *expected, const char *file, int li
 
 static const char *h_state_name(uint8_t s)
 {
-    const char *n = sl_state_str(s);
+    /* ESTOP's states are a subset of MON's, with the same names. */
+    const char *n = sl_state_str(SL_TYPE_MON, s);
     return n ? n : "(null)";
 }
 

@@ -117,7 +117,7 @@ static void print_line(uint32_t t, const snapshot *s, const char *event)
     diag_text(s->diag, diag, sizeof diag);
     printf("  %7lu | %-4u %-4u %-4u %-4u %-6u | %-10s | %-5u %-9u %-9u | %-12s | %-2s %-2s |",
            (unsigned long)t, (unsigned)s->in1, (unsigned)s->in2, (unsigned)s->restart,
-           (unsigned)s->edm1, (unsigned)s->errack, sl_state_str(s->state), (unsigned)s->err,
+           (unsigned)s->edm1, (unsigned)s->errack, sl_state_str(SL_TYPE_MON, s->state), (unsigned)s->err,
            (unsigned)s->out, (unsigned)s->del, diag, s->k1 ? "on" : "-", s->k2 ? "on" : "-");
     if (event != NULL) {
         printf(" %s", event);
