@@ -52,9 +52,10 @@ void h_check_step(const char *file, int line, const char *block, uint32_t t,
     h_check_int((long long)(got), (long long)(expected), __FILE__, __LINE__, #got)
 #define CHECK_STR(got, expected) h_check_str((got), (expected), __FILE__, __LINE__, #got)
 
-/* Scenario groups (test_estop.c, test_mon.c, test_api.c). */
+/* Scenario groups (test_estop.c, test_mon.c, test_api.c, test_group.c). */
 void run_estop_scenarios(void);
 void run_mon_scenarios(void);
 void run_api_scenarios(void);
+void run_group_scenarios(void);
 
 #endif /* SL_C_TESTS_HARNESS_H */

@@ -5,3 +5,4 @@
 #include "test_main.c"
 #include "test_estop.c"
 #include "test_mon.c"
+#include "test_group.c"

@@ -136,6 +136,7 @@ int main(void)
     run_api_scenarios();
     run_estop_scenarios();
     run_mon_scenarios();
+    run_group_scenarios();
     printf("%d passed, %d failed\n", h_passed, h_failed);
     return h_failed == 0 ? 0 : 1;
 }
