@@ -1,0 +1,332 @@
+//! Shared helpers for the FB_ESTOP / FB_MON integration tests.
+//!
+//! Every expected value in the tests comes from the manual (`shared/spec/
+//! twinsafe-logic-fb-manual.txt` §4.4 / §4.5), `shared/design/ABI.md` and
+//! `docs/semantics.md` (rows C1–C12, G1–G15); this module only encodes the manual's state
+//! tables and drives the blocks.
+#![allow(dead_code, non_snake_case)]
+
+use safelogic::*;
+
+/// A start time far away from 0 so that "earlier" times exist.
+pub const T0: u32 = 10_000;
+
+/// Every status code the ABI documents (ABI §5 and semantics C11).
+pub const DOCUMENTED_STATUS: [i32; 9] = [
+    SL_OK,
+    SL_E_NULL,
+    SL_E_CONFIG,
+    SL_E_PARAM_CHANGED,
+    SL_E_CORRUPT,
+    SL_E_INVALID_BOOL,
+    SL_E_CLOCK,
+    SL_E_INTERNAL,
+    SL_E_ALIGNMENT,
+];
+
+/// States of FB ESTOP (manual §4.4.2 status table).
+pub const ESTOP_STATES: [u8; 7] = [1, 2, 3, 4, 5, 6, 8];
+/// States of FB MON (manual §4.5.2 status table).
+pub const MON_STATES: [u8; 9] = [1, 2, 3, 4, 5, 6, 7, 8, 9];
+
+/// Outputs [Error, Out, DelOut] of a state exactly as the manual's state tables list them
+/// (§4.4.2 and §4.5.2; ERRORDELAY and FUNCTEST only exist for MON).
+pub fn table(state: u8) -> [u8; 3] {
+    match state {
+        SL_STATE_RUN => [0, 1, 1],
+        SL_STATE_STOP => [0, 0, 0],
+        SL_STATE_SAFE => [0, 0, 0],
+        SL_STATE_ERROR => [1, 0, 0],
+        SL_STATE_RESET => [0, 0, 0],
+        SL_STATE_START => [0, 0, 0],
+        SL_STATE_ERRORDELAY => [0, 0, 1],
+        SL_STATE_DELAYOUT => [0, 0, 1],
+        SL_STATE_FUNCTEST => [0, 0, 0],
+        s => panic!("state {s} has no row in the manual's state tables"),
+    }
+}
+
+/// Uniform access to the two guard blocks.
+pub trait Guard: FunctionBlock + Clone + std::fmt::Debug {
+    fn state(&self) -> u8;
+    fn diag(&self) -> u16;
+    /// [Error, EStopOut/MonOut, EStopDelOut/MonDelOut]
+    fn outs(&self) -> [u8; 3];
+    fn set_restart(&mut self, v: u8);
+    fn set_run(&mut self, v: u8);
+    fn set_errack(&mut self, v: u8);
+    fn set_edm(&mut self, x: usize, v: u8);
+    /// Raw byte of safety input `i` (0-based, in the order of the wInputActive bits).
+    fn set_in(&mut self, i: usize, v: u8);
+    fn get_in(&self, i: usize) -> u8;
+    fn restart(&self) -> u8;
+}
+
+impl Guard for FB_ESTOP {
+    fn state(&self) -> u8 {
+        self.nState
+    }
+    fn diag(&self) -> u16 {
+        self.nDiag
+    }
+    fn outs(&self) -> [u8; 3] {
+        [self.bError, self.bEStopOut, self.bEStopDelOut]
+    }
+    fn set_restart(&mut self, v: u8) {
+        self.bRestart = v;
+    }
+    fn set_run(&mut self, v: u8) {
+        self.bRun = v;
+    }
+    fn set_errack(&mut self, v: u8) {
+        self.bErrAck = v;
+    }
+    fn set_edm(&mut self, x: usize, v: u8) {
+        match x {
+            1 => self.bEDM1 = v,
+            2 => self.bEDM2 = v,
+            _ => panic!("EDM{x}"),
+        }
+    }
+    fn set_in(&mut self, i: usize, v: u8) {
+        *estop_in(self, i) = v;
+    }
+    fn get_in(&self, i: usize) -> u8 {
+        let mut c = *self;
+        *estop_in(&mut c, i)
+    }
+    fn restart(&self) -> u8 {
+        self.bRestart
+    }
+}
+
+fn estop_in(fb: &mut FB_ESTOP, i: usize) -> &mut u8 {
+    match i {
+        0 => &mut fb.bEStopIn1,
+        1 => &mut fb.bEStopIn2,
+        2 => &mut fb.bEStopIn3,
+        3 => &mut fb.bEStopIn4,
+        4 => &mut fb.bEStopIn5,
+        5 => &mut fb.bEStopIn6,
+        6 => &mut fb.bEStopIn7,
+        7 => &mut fb.bEStopIn8,
+        _ => panic!("EStopIn{}", i + 1),
+    }
+}
+
+impl Guard for FB_MON {
+    fn state(&self) -> u8 {
+        self.nState
+    }
+    fn diag(&self) -> u16 {
+        self.nDiag
+    }
+    fn outs(&self) -> [u8; 3] {
+        [self.bError, self.bMonOut, self.bMonDelOut]
+    }
+    fn set_restart(&mut self, v: u8) {
+        self.bRestart = v;
+    }
+    fn set_run(&mut self, v: u8) {
+        self.bRun = v;
+    }
+    fn set_errack(&mut self, v: u8) {
+        self.bErrAck = v;
+    }
+    fn set_edm(&mut self, x: usize, v: u8) {
+        match x {
+            1 => self.bEDM1 = v,
+            2 => self.bEDM2 = v,
+            _ => panic!("EDM{x}"),
+        }
+    }
+    fn set_in(&mut self, i: usize, v: u8) {
+        *mon_in(self, i) = v;
+    }
+    fn get_in(&self, i: usize) -> u8 {
+        let mut c = *self;
+        *mon_in(&mut c, i)
+    }
+    fn restart(&self) -> u8 {
+        self.bRestart
+    }
+}
+
+fn mon_in(fb: &mut FB_MON, i: usize) -> &mut u8 {
+    match i {
+        0 => &mut fb.bMonIn1,
+        1 => &mut fb.bMonIn2,
+        2 => &mut fb.bMonIn3,
+        3 => &mut fb.bMonIn4,
+        4 => &mut fb.bSecure1,
+        5 => &mut fb.bSecure2,
+        _ => panic!("MON input {i}"),
+    }
+}
+
+/// Index of Secure1 / Secure2 in the MON input order (wInputActive bits 4, 5).
+pub const SECURE1: usize = 4;
+pub const SECURE2: usize = 5;
+
+/// An FB_ESTOP with `active` inputs as break contacts, all of them TRUE (no request),
+/// EDM bytes TRUE (contactors released), bRun TRUE, everything else zero.
+pub fn estop(active: u16) -> FB_ESTOP {
+    let mut fb = FB_ESTOP {
+        wInputActive: active,
+        bRun: 1,
+        bEDM1: 1,
+        bEDM2: 1,
+        ..Default::default()
+    };
+    for i in 0..8 {
+        fb.set_in(i, u8::from(active & (1 << i) != 0));
+    }
+    fb
+}
+
+/// An FB_MON with `active` inputs (bits 0-3 MonIn, 4-5 Secure) as break contacts, all TRUE,
+/// EDM bytes TRUE, bRun TRUE, `options` as given.
+pub fn mon(active: u16, options: u32) -> FB_MON {
+    let mut fb = FB_MON {
+        wInputActive: active,
+        dwOptions: options,
+        bRun: 1,
+        bEDM1: 1,
+        bEDM2: 1,
+        ..Default::default()
+    };
+    for i in 0..6 {
+        fb.set_in(i, u8::from(active & (1 << i) != 0));
+    }
+    fb
+}
+
+/// A block and its clock.
+#[derive(Debug, Clone)]
+pub struct Sim<B> {
+    pub fb: B,
+    pub t: u32,
+}
+
+impl<B: Guard> Sim<B> {
+    /// `init` must accept the parameters (SL_OK, power-up image, semantics C1).
+    #[track_caller]
+    pub fn new(mut fb: B, t: u32) -> Self {
+        assert_eq!(fb.init(), SL_OK, "init rejected the parameters: {fb:?}");
+        expect(&fb, SL_STATE_STOP);
+        Sim { fb, t }
+    }
+
+    /// One call at the current time.
+    pub fn cyc(&mut self) -> i32 {
+        self.fb.cycle(self.t)
+    }
+
+    /// Advances the clock by `dt` ms (wrapping) and calls once.
+    pub fn adv(&mut self, dt: u32) -> i32 {
+        self.t = self.t.wrapping_add(dt);
+        self.fb.cycle(self.t)
+    }
+
+    /// Advances by `dt`, asserts SL_OK and the state (with the state table's outputs).
+    #[track_caller]
+    pub fn step(&mut self, dt: u32, state: u8) {
+        let rc = self.adv(dt);
+        assert_eq!(
+            rc,
+            SL_OK,
+            "status at t={} (state {})",
+            self.t,
+            self.fb.state()
+        );
+        expect(&self.fb, state);
+    }
+
+    /// Advances to the absolute time `t` (forward, wrapping) and calls once.
+    pub fn at(&mut self, t: u32) -> i32 {
+        self.t = t;
+        self.fb.cycle(t)
+    }
+
+    /// STOP → run (G12): bRun is TRUE, one call leaves STOP for `start_state`.
+    #[track_caller]
+    pub fn start_up(&mut self, start_state: u8) {
+        self.fb.set_run(1);
+        self.step(1, start_state);
+    }
+
+    /// The manual restart sequence (ABI §7 Restart, G1): Restart TRUE → START, Restart
+    /// FALSE (falling edge) → RUN.
+    #[track_caller]
+    pub fn restart(&mut self) {
+        self.fb.set_restart(1);
+        self.step(1, SL_STATE_START);
+        self.fb.set_restart(0);
+        self.step(1, SL_STATE_RUN);
+    }
+
+    /// ErrAck rising edge (→ RESET) and falling edge (→ `after`), semantics C8/C9.
+    #[track_caller]
+    pub fn acknowledge(&mut self, after: u8) {
+        self.fb.set_errack(1);
+        self.step(1, SL_STATE_RESET);
+        assert_eq!(self.fb.diag(), 0, "nDiag is cleared on ERROR -> RESET (C9)");
+        self.fb.set_errack(0);
+        self.step(1, after);
+    }
+}
+
+/// ESTOP brought to RUN: init, STOP → SAFE, Restart sequence (G12).
+#[track_caller]
+pub fn estop_running(fb: FB_ESTOP) -> Sim<FB_ESTOP> {
+    estop_running_at(fb, T0)
+}
+
+/// As [`estop_running`], starting the clock at `t0` (RUN is entered at `t0 + 3`).
+#[track_caller]
+pub fn estop_running_at(fb: FB_ESTOP, t0: u32) -> Sim<FB_ESTOP> {
+    let mut s = Sim::new(fb, t0);
+    s.start_up(SL_STATE_SAFE);
+    s.restart();
+    s
+}
+
+/// MON brought to RUN: with manual restart via the Restart sequence, otherwise by itself
+/// one call after STOP → SAFE (G12). Not for MON with the function test.
+#[track_caller]
+pub fn mon_running(fb: FB_MON) -> Sim<FB_MON> {
+    mon_running_at(fb, T0)
+}
+
+/// As [`mon_running`], starting the clock at `t0`.
+#[track_caller]
+pub fn mon_running_at(fb: FB_MON, t0: u32) -> Sim<FB_MON> {
+    assert_eq!(fb.dwOptions & SL_OPT_FUNCTION_TEST, 0);
+    let manual = fb.dwOptions & SL_OPT_MANUAL_RESTART != 0;
+    let mut s = Sim::new(fb, t0);
+    s.start_up(SL_STATE_SAFE);
+    if manual {
+        s.restart();
+    } else {
+        s.step(1, SL_STATE_RUN);
+    }
+    s
+}
+
+/// Asserts the state and that the outputs are exactly the state table's row.
+#[track_caller]
+pub fn expect<B: Guard>(fb: &B, state: u8) {
+    assert_eq!(fb.state(), state, "nState (diag {:#06x})", fb.diag());
+    assert_eq!(
+        fb.outs(),
+        table(state),
+        "outputs [Error, Out, DelOut] in state {state}"
+    );
+}
+
+/// Asserts ERROR with exactly these diag bits.
+#[track_caller]
+pub fn expect_error<B: Guard>(fb: &B, diag: u16) {
+    expect(fb, SL_STATE_ERROR);
+    assert_eq!(fb.diag(), diag, "nDiag in ERROR");
+}
