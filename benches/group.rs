@@ -1,0 +1,234 @@
+//! Group benchmark (issue 4): one TwinSAFE group of 1,000 mixed members wired with links,
+//! run through the C ABI (`sl_group_cycle`). Prints median and p99 per group cycle.
+//! `cargo bench --bench group`. Reports, never asserts timing.
+
+use safelogic::ffi::{sl_group_add_link, sl_group_add_member, sl_group_cycle, sl_group_init};
+use safelogic::*;
+use std::hint::black_box;
+use std::mem::offset_of;
+use std::time::Instant;
+
+const MEMBERS: usize = 1000;
+const TARGET_MEDIAN_US: f64 = 5.0;
+
+/// The blocks of the group, each kind in its own vector (stable addresses for the table).
+struct Plant {
+    estops: Vec<FB_ESTOP>,
+    mons: Vec<FB_MON>,
+    ands: Vec<FB_AND>,
+    ors: Vec<FB_OR>,
+    group: SL_GROUP,
+    members: Vec<SL_MEMBER>,
+    links: Vec<SL_LINK>,
+}
+
+/// Five kinds in a repeating pattern: ESTOP, MON, AND (ESTOP·MON), OR (AND, MON), AND.
+const PATTERN: [u16; 5] = [
+    SL_TYPE_ESTOP,
+    SL_TYPE_MON,
+    SL_TYPE_AND,
+    SL_TYPE_OR,
+    SL_TYPE_AND,
+];
+
+fn build() -> Plant {
+    let per = MEMBERS / PATTERN.len();
+    let mut p = Plant {
+        estops: vec![
+            FB_ESTOP {
+                wInputActive: 0b11,
+                tDiscTime12: 20,
+                ..Default::default()
+            };
+            per
+        ],
+        mons: vec![
+            FB_MON {
+                wInputActive: 0b11,
+                tDiscTime12: 20,
+                ..Default::default()
+            };
+            per
+        ],
+        ands: vec![
+            FB_AND {
+                wInputActive: 0b11,
+                ..Default::default()
+            };
+            2 * per
+        ],
+        ors: vec![
+            FB_OR {
+                wInputActive: 0b11,
+                ..Default::default()
+            };
+            per
+        ],
+        group: SL_GROUP::default(),
+        members: vec![SL_MEMBER::default(); MEMBERS],
+        links: vec![SL_LINK::default(); 2 * MEMBERS],
+    };
+    for e in &mut p.estops {
+        (e.bEStopIn1, e.bEStopIn2) = (1, 1);
+        assert_eq!(e.init(), SL_OK);
+    }
+    for m in &mut p.mons {
+        (m.bMonIn1, m.bMonIn2) = (1, 1);
+        assert_eq!(m.init(), SL_OK);
+    }
+    for a in &mut p.ands {
+        assert_eq!(a.init(), SL_OK);
+    }
+    for o in &mut p.ors {
+        assert_eq!(o.init(), SL_OK);
+    }
+    let g = &mut p.group as *mut SL_GROUP;
+    let (mt, lt) = (p.members.as_mut_ptr(), p.links.as_mut_ptr());
+    assert_eq!(
+        sl_group_init(g, mt, MEMBERS as u16, lt, (2 * MEMBERS) as u16),
+        SL_OK
+    );
+    let (mut ie, mut im, mut ia, mut io) = (0, 0, 0, 0);
+    for i in 0..MEMBERS {
+        let ty = PATTERN[i % PATTERN.len()];
+        let block: *mut core::ffi::c_void = match ty {
+            SL_TYPE_ESTOP => (&mut p.estops[ie] as *mut FB_ESTOP).cast(),
+            SL_TYPE_MON => (&mut p.mons[im] as *mut FB_MON).cast(),
+            SL_TYPE_AND => (&mut p.ands[ia] as *mut FB_AND).cast(),
+            _ => (&mut p.ors[io] as *mut FB_OR).cast(),
+        };
+        match ty {
+            SL_TYPE_ESTOP => ie += 1,
+            SL_TYPE_MON => im += 1,
+            SL_TYPE_AND => ia += 1,
+            _ => io += 1,
+        }
+        assert_eq!(
+            sl_group_add_member(g, mt, ty, block, std::ptr::null_mut()),
+            SL_OK
+        );
+    }
+    // Wiring inside each pattern of five: AND(i+2) = ESTOP(i) · MON(i+1); OR(i+3) = AND(i+2)
+    // + MON(i+1); AND(i+4) = OR(i+3) · ESTOP of the next pattern (a backward link: last
+    // cycle's value).
+    let o = |f: usize| f as u16;
+    for base in (0..MEMBERS).step_by(PATTERN.len()) {
+        let b = base as u16;
+        let next_estop = ((base + PATTERN.len()) % MEMBERS) as u16;
+        let wires = [
+            (
+                b,
+                o(offset_of!(FB_ESTOP, bEStopOut)),
+                b + 2,
+                o(offset_of!(FB_AND, bAndIn1)),
+            ),
+            (
+                b + 1,
+                o(offset_of!(FB_MON, bMonOut)),
+                b + 2,
+                o(offset_of!(FB_AND, bAndIn2)),
+            ),
+            (
+                b + 2,
+                o(offset_of!(FB_AND, bAndOut)),
+                b + 3,
+                o(offset_of!(FB_OR, bOrIn1)),
+            ),
+            (
+                b + 1,
+                o(offset_of!(FB_MON, bMonOut)),
+                b + 3,
+                o(offset_of!(FB_OR, bOrIn2)),
+            ),
+            (
+                b + 3,
+                o(offset_of!(FB_OR, bOrOut)),
+                b + 4,
+                o(offset_of!(FB_AND, bAndIn1)),
+            ),
+            (
+                next_estop,
+                o(offset_of!(FB_ESTOP, bEStopOut)),
+                b + 4,
+                o(offset_of!(FB_AND, bAndIn2)),
+            ),
+        ];
+        for (s, so, d, dof) in wires {
+            assert_eq!(
+                sl_group_add_link(g, mt, lt, s, so, d, dof),
+                SL_OK,
+                "link {s}->{d}"
+            );
+        }
+    }
+    p
+}
+
+fn percentile(sorted: &[f64], q: f64) -> f64 {
+    sorted[((sorted.len() - 1) as f64 * q).round() as usize]
+}
+
+fn main() {
+    let quick = !std::env::args().any(|a| a == "--bench");
+    let cycles = if quick { 200 } else { 20_000 };
+    let mut p = build();
+    p.group.bRun = 1;
+    let (g, mt, lt) = (
+        &mut p.group as *mut SL_GROUP,
+        p.members.as_mut_ptr(),
+        p.links.as_mut_ptr(),
+    );
+    let mut t = 0u32;
+    // Start: every ESTOP needs its restart sequence.
+    for step in 0..4 {
+        for e in &mut p.estops {
+            e.bRestart = u8::from(step == 1);
+        }
+        assert_eq!(sl_group_cycle(g, mt, lt, t), SL_OK);
+        t += 1;
+    }
+    let running = p.estops.iter().filter(|e| e.nState == SL_STATE_RUN).count()
+        + p.mons.iter().filter(|m| m.nState == SL_STATE_RUN).count();
+    let mut seed = 0x2545_F491_4F6C_DD1Du64;
+    let mut times = Vec::with_capacity(cycles);
+    for c in 0..cycles {
+        // About 2 % of the MON inputs toggle per cycle, pairwise (no discrepancy).
+        for _ in 0..4 {
+            seed ^= seed << 13;
+            seed ^= seed >> 7;
+            seed ^= seed << 17;
+            let n = p.mons.len();
+            let m = &mut p.mons[(seed as usize >> 8) % n];
+            let v = u8::from(c % 50 < 45);
+            (m.bMonIn1, m.bMonIn2) = (v, v);
+        }
+        let start = Instant::now();
+        black_box(sl_group_cycle(black_box(g), mt, lt, t));
+        times.push(start.elapsed().as_nanos() as f64 / 1000.0);
+        t += 1;
+    }
+    times.sort_by(f64::total_cmp);
+    let (median, p99) = (percentile(&times, 0.5), percentile(&times, 0.99));
+    println!(
+        "safelogic group benchmark{}",
+        if quick {
+            " (smoke run: pass --bench for figures)"
+        } else {
+            ""
+        }
+    );
+    println!(
+        "  group     : {MEMBERS} members (ESTOP, MON, AND, OR, AND repeating), {} links",
+        p.group.nLinks
+    );
+    println!(
+        "  after start: {running} of {} ESTOP/MON members in RUN",
+        p.estops.len() + p.mons.len()
+    );
+    println!("  cycles    : {cycles}, one sl_group_cycle each, timed singly");
+    println!(
+        "  per group cycle: median {median:.2} us, p99 {p99:.2} us, per member {:.1} ns (target median <= {TARGET_MEDIAN_US} us: {})",
+        median * 1000.0 / MEMBERS as f64,
+        if median <= TARGET_MEDIAN_US { "PASS" } else { "MISS" }
+    );
+}
