@@ -187,6 +187,30 @@
 #define SL_DIAG_SAFE_IN_DISC4 (1 << 11)
 
 /*
+ FB_OPMODE diag bit 0: discrepancy monitoring error (no mode or more than one mode selected
+ for tDiscTime, manual §4.3.2).
+ */
+#define SL_DIAG_OPMODE_DISC (1 << 0)
+
+/*
+ FB_TWOHAND diag bit 2: discrepancy error between the two input pairs (the second group was
+ not actuated within tDiscTimePairs, manual §4.7.2). Bits 0/1 are SL_DIAG_DISC1/2.
+ */
+#define SL_DIAG_TWOHAND_PAIRS (1 << 2)
+
+/*
+ FB_TWOHAND diag bit 6: two-hand error (the second group was actuated while the first was
+ no longer actuated, manual §4.7.2).
+ */
+#define SL_DIAG_TWOHAND_ERROR (1 << 6)
+
+/*
+ FB_TWOHAND diag bit 10: bit 2 with "Safe Inputs after Disc Error" active (set in addition
+ to bit 2). Bits 8/9 are SL_DIAG_SAFE_IN_DISC1/2.
+ */
+#define SL_DIAG_TWOHAND_SAFE_IN_PAIRS (1 << 10)
+
+/*
  Library extension, diag bit 13: a parameter changed outside STOP (SL_E_PARAM_CHANGED).
  */
 #define SL_DIAG_PARAM_CHANGED (1 << 13)
@@ -247,6 +271,24 @@
 #define SL_STATE_FUNCTEST 9
 
 /*
+ FB_TWOHAND state 1BUTTON (11): every active input of the first group is TRUE, the second
+ group is not actuated yet (manual §4.7.2).
+ */
+#define SL_STATE_TWOHAND_1BUTTON 11
+
+/*
+ FB_TWOHAND state 2BUTTON (12): every active input of the second group is TRUE, the first
+ group is not actuated yet.
+ */
+#define SL_STATE_TWOHAND_2BUTTON 12
+
+/*
+ FB_TWOHAND state RELEASE (13): waiting until every active input is FALSE before the output
+ can be set again.
+ */
+#define SL_STATE_TWOHAND_RELEASE 13
+
+/*
  Block type tag of FB_ESTOP (`SL_MEMBER.nType`, `sl_diag_text`).
  */
 #define SL_TYPE_ESTOP 1
@@ -267,9 +309,25 @@
 #define SL_TYPE_OR 4
 
 /*
- Largest time parameter of FB_ESTOP and FB_MON in ms (see docs/semantics.md).
+ Block type tag of FB_OPMODE.
+ */
+#define SL_TYPE_OPMODE 7
+
+/*
+ Block type tag of FB_TWOHAND.
+ */
+#define SL_TYPE_TWOHAND 8
+
+/*
+ Largest time parameter of FB_ESTOP and FB_MON, and largest discrepancy time of FB_OPMODE
+ and FB_TWOHAND, in ms (see docs/semantics.md C10, O3, H3).
  */
 #define SL_TIME_PARAM_MAX 65535
+
+/*
+ Largest tDiscTimePairs of FB_TWOHAND in ms (manual §4.7.1: "up to 2500 ms").
+ */
+#define SL_TWOHAND_PAIRS_TIME_MAX 2500
 
 /*
  IEC 61131-3 BOOL: 0 = FALSE, 1 = TRUE, any other byte is an invalid BOOL (ABI §2).
@@ -832,6 +890,280 @@ typedef struct FB_OR {
 } FB_OR;
 
 /*
+ Private state of FB_OPMODE (32 bytes). Never written by the user.
+
+ `stHeader.wAux` (complement-checked) bits 0-7: the mode (one input bit) that RUN drives
+ or START waits to confirm; bit 8: the mode-change timer runs, started at
+ `stHeader.tPhase`.
+ */
+typedef struct SL_OPMODE_PRIVATE {
+  struct SL_PRIVATE_HEADER stHeader;
+  /*
+   Latched tDiscTime in ms.
+   */
+  uint16_t wDiscTime;
+  uint8_t aReserved[2];
+} SL_OPMODE_PRIVATE;
+
+/*
+ FB OPMODE instance (ABI §3, §9). Inputs at the manual's offsets (§4.3.2), outputs at
+ output base 32 + the manual's offsets.
+ */
+typedef struct FB_OPMODE {
+  /*
+   Offset 0. Restart (push button, make contact): with SL_OPT_MANUAL_RESTART its falling
+   edge enables the selected mode's output. Ignored without the option.
+   */
+  SL_BOOL bRestart;
+  /*
+   Offset 1. Reserved, keep 0.
+   */
+  uint8_t aReserved0[7];
+  /*
+   Offset 8. Operating mode input 1.
+   */
+  SL_BOOL bOpIn1;
+  /*
+   Offset 9. Operating mode input 2.
+   */
+  SL_BOOL bOpIn2;
+  /*
+   Offset 10. Operating mode input 3.
+   */
+  SL_BOOL bOpIn3;
+  /*
+   Offset 11. Operating mode input 4.
+   */
+  SL_BOOL bOpIn4;
+  /*
+   Offset 12. Operating mode input 5.
+   */
+  SL_BOOL bOpIn5;
+  /*
+   Offset 13. Operating mode input 6.
+   */
+  SL_BOOL bOpIn6;
+  /*
+   Offset 14. Operating mode input 7.
+   */
+  SL_BOOL bOpIn7;
+  /*
+   Offset 15. Operating mode input 8.
+   */
+  SL_BOOL bOpIn8;
+  /*
+   Offset 16. FbRun of the owning group: TRUE = the block executes.
+   */
+  SL_BOOL bRun;
+  /*
+   Offset 17. ErrAck of the owning group.
+   */
+  SL_BOOL bErrAck;
+  /*
+   Offset 18. Reserved, keep 0.
+   */
+  uint8_t aReserved1[2];
+  /*
+   Offset 20. Longest time in ms with no mode or more than one mode selected (0 = no
+   monitoring; at most SL_TIME_PARAM_MAX).
+   */
+  uint32_t tDiscTime;
+  /*
+   Offset 24. Bit n-1 set: OpInn is active (at least two).
+   */
+  uint16_t wInputActive;
+  /*
+   Offset 26. Reserved, keep 0.
+   */
+  uint8_t aReserved2[2];
+  /*
+   Offset 28. SL_OPT_MANUAL_RESTART (the Restart input is activated).
+   */
+  uint32_t dwOptions;
+  /*
+   Offset 32 (output base + 0). TRUE in ERROR.
+   */
+  SL_BOOL bError;
+  /*
+   Offset 33. Reserved.
+   */
+  uint8_t aReserved3[7];
+  /*
+   Offset 40 (output base + 8). Output of mode 1.
+   */
+  SL_BOOL bOpOut1;
+  /*
+   Offset 41 (output base + 9). Output of mode 2.
+   */
+  SL_BOOL bOpOut2;
+  /*
+   Offset 42 (output base + 10). Output of mode 3.
+   */
+  SL_BOOL bOpOut3;
+  /*
+   Offset 43 (output base + 11). Output of mode 4.
+   */
+  SL_BOOL bOpOut4;
+  /*
+   Offset 44 (output base + 12). Output of mode 5.
+   */
+  SL_BOOL bOpOut5;
+  /*
+   Offset 45 (output base + 13). Output of mode 6.
+   */
+  SL_BOOL bOpOut6;
+  /*
+   Offset 46 (output base + 14). Output of mode 7.
+   */
+  SL_BOOL bOpOut7;
+  /*
+   Offset 47 (output base + 15). Output of mode 8.
+   */
+  SL_BOOL bOpOut8;
+  /*
+   Offset 48. The manual's status value (SL_STATE_*).
+   */
+  uint8_t nState;
+  /*
+   Offset 49. Reserved.
+   */
+  uint8_t aReserved4[1];
+  /*
+   Offset 50. Diagnostic bits (SL_DIAG_OPMODE_DISC and the library bits 13-15).
+   */
+  uint16_t nDiag;
+  /*
+   Offset 52. Reserved.
+   */
+  uint8_t aReserved5[4];
+  /*
+   Offset 56. Private state, 32 bytes: never write it.
+   */
+  struct SL_OPMODE_PRIVATE stPrivate;
+} FB_OPMODE;
+
+/*
+ Private state of FB_TWOHAND (48 bytes). Never written by the user.
+
+ `stHeader.wAux` (complement-checked) bits 0-1: pair discrepancy timers running; bits 4-5:
+ "Safe Inputs after Disc Error" latches of pairs 1/2; bit 6: the same for the error
+ between the pairs. `stHeader.tPhase`: start of the window between the groups.
+ */
+typedef struct SL_TWOHAND_PRIVATE {
+  struct SL_PRIVATE_HEADER stHeader;
+  /*
+   Latched times in ms: tDiscTime12, tDiscTime34, tDiscTimePairs, reserved.
+   */
+  uint16_t awTime[4];
+  /*
+   Start times of the pair discrepancy timers.
+   */
+  uint32_t atDiscStart[2];
+  uint8_t aReserved[4];
+} SL_TWOHAND_PRIVATE;
+
+/*
+ FB TWOHAND instance (ABI §3, §9). Inputs at the manual's offsets (§4.7.2), outputs at
+ output base 40 + the manual's offsets.
+ */
+typedef struct FB_TWOHAND {
+  /*
+   Offset 0. Reserved, keep 0.
+   */
+  uint8_t aReserved0[8];
+  /*
+   Offset 8. Input group 1, first channel (pair 1 with TwoHand2).
+   */
+  SL_BOOL bTwoHand1;
+  /*
+   Offset 9. Input group 1, second channel.
+   */
+  SL_BOOL bTwoHand2;
+  /*
+   Offset 10. Input group 2, first channel (pair 2 with TwoHand4).
+   */
+  SL_BOOL bTwoHand3;
+  /*
+   Offset 11. Input group 2, second channel.
+   */
+  SL_BOOL bTwoHand4;
+  /*
+   Offset 12. Reserved, keep 0.
+   */
+  uint8_t aReserved1[4];
+  /*
+   Offset 16. FbRun of the owning group: TRUE = the block executes.
+   */
+  SL_BOOL bRun;
+  /*
+   Offset 17. ErrAck of the owning group.
+   */
+  SL_BOOL bErrAck;
+  /*
+   Offset 18. Reserved, keep 0.
+   */
+  uint8_t aReserved2[2];
+  /*
+   Offset 20. Discrepancy time of pair TwoHand1/2 in ms (0 = no monitoring; needs both
+   inputs active).
+   */
+  uint32_t tDiscTime12;
+  /*
+   Offset 24. Discrepancy time of pair TwoHand3/4 in ms.
+   */
+  uint32_t tDiscTime34;
+  /*
+   Offset 28. Time window in ms within which the second group must be actuated after the
+   first (0 = off, at most SL_TWOHAND_PAIRS_TIME_MAX = 2500).
+   */
+  uint32_t tDiscTimePairs;
+  /*
+   Offset 32. Bits 0-3 set: TwoHand1-4 active (each group needs one).
+   */
+  uint16_t wInputActive;
+  /*
+   Offset 34. Bits 0-3 set: TwoHand1-4 is a make contact (negated).
+   */
+  uint16_t wInputNegated;
+  /*
+   Offset 36. SL_OPT_SAFE_INPUTS_AFTER_DISC.
+   */
+  uint32_t dwOptions;
+  /*
+   Offset 40 (output base + 0). TRUE in ERROR.
+   */
+  SL_BOOL bError;
+  /*
+   Offset 41 (output base + 1). The two-hand output.
+   */
+  SL_BOOL bTwoHandOut;
+  /*
+   Offset 42. Reserved.
+   */
+  uint8_t aReserved3[6];
+  /*
+   Offset 48. The manual's status value (SL_STATE_*, SL_STATE_TWOHAND_*).
+   */
+  uint8_t nState;
+  /*
+   Offset 49. Reserved.
+   */
+  uint8_t aReserved4[1];
+  /*
+   Offset 50. Diagnostic bits (SL_DIAG_DISC1/2, SL_DIAG_TWOHAND_*, SL_DIAG_SAFE_IN_DISC1/2).
+   */
+  uint16_t nDiag;
+  /*
+   Offset 52. Reserved.
+   */
+  uint8_t aReserved5[4];
+  /*
+   Offset 56. Private state, 48 bytes: never write it.
+   */
+  struct SL_TWOHAND_PRIVATE stPrivate;
+} FB_TWOHAND;
+
+/*
  Private state of a group (32 bytes): data words and their complements.
  */
 typedef struct SL_GROUP_PRIVATE {
@@ -1055,6 +1387,28 @@ int32_t sl_or_init(struct FB_OR *fb);
 int32_t sl_or_cycle(struct FB_OR *fb, uint32_t tNow);
 
 /*
+ Validates and latches the parameters of an FB_OPMODE and resets it to power-up (STOP,
+ outputs FALSE). Does not modify any input field. Returns SL_OK or SL_E_CONFIG.
+ */
+int32_t sl_opmode_init(struct FB_OPMODE *fb);
+
+/*
+ One task cycle of an FB_OPMODE at `tNow` (monotonic ms, may wrap at 2^32).
+ */
+int32_t sl_opmode_cycle(struct FB_OPMODE *fb, uint32_t tNow);
+
+/*
+ Validates and latches the parameters of an FB_TWOHAND and resets it to power-up (STOP,
+ outputs FALSE). Does not modify any input field. Returns SL_OK or SL_E_CONFIG.
+ */
+int32_t sl_twohand_init(struct FB_TWOHAND *fb);
+
+/*
+ One task cycle of an FB_TWOHAND at `tNow` (monotonic ms, may wrap at 2^32).
+ */
+int32_t sl_twohand_cycle(struct FB_TWOHAND *fb, uint32_t tNow);
+
+/*
  Resets a group to power-up (STOP, or STOPERROR with bConnections) with the caller's
  storage for `nMemberCap` members and `nLinkCap` links. The same arrays must be passed to
  every later sl_group_* call. Does not modify the group's input fields.
@@ -1239,6 +1593,72 @@ SL_STATIC_ASSERT(offsetof(FB_OR, nDiag) == 34, "offset of FB_OR.nDiag");
 SL_STATIC_ASSERT(offsetof(FB_OR, aReserved5) == 36, "offset of FB_OR.aReserved5");
 SL_STATIC_ASSERT(offsetof(FB_OR, stPrivate) == 40, "offset of FB_OR.stPrivate");
 SL_STATIC_ASSERT(sizeof(FB_OR) == 72, "size of FB_OR");
+SL_STATIC_ASSERT(offsetof(SL_OPMODE_PRIVATE, stHeader) == 0, "offset of SL_OPMODE_PRIVATE.stHeader");
+SL_STATIC_ASSERT(offsetof(SL_OPMODE_PRIVATE, wDiscTime) == 28, "offset of SL_OPMODE_PRIVATE.wDiscTime");
+SL_STATIC_ASSERT(offsetof(SL_OPMODE_PRIVATE, aReserved) == 30, "offset of SL_OPMODE_PRIVATE.aReserved");
+SL_STATIC_ASSERT(sizeof(SL_OPMODE_PRIVATE) == 32, "size of SL_OPMODE_PRIVATE");
+SL_STATIC_ASSERT(offsetof(FB_OPMODE, bRestart) == 0, "offset of FB_OPMODE.bRestart");
+SL_STATIC_ASSERT(offsetof(FB_OPMODE, aReserved0) == 1, "offset of FB_OPMODE.aReserved0");
+SL_STATIC_ASSERT(offsetof(FB_OPMODE, bOpIn1) == 8, "offset of FB_OPMODE.bOpIn1");
+SL_STATIC_ASSERT(offsetof(FB_OPMODE, bOpIn2) == 9, "offset of FB_OPMODE.bOpIn2");
+SL_STATIC_ASSERT(offsetof(FB_OPMODE, bOpIn3) == 10, "offset of FB_OPMODE.bOpIn3");
+SL_STATIC_ASSERT(offsetof(FB_OPMODE, bOpIn4) == 11, "offset of FB_OPMODE.bOpIn4");
+SL_STATIC_ASSERT(offsetof(FB_OPMODE, bOpIn5) == 12, "offset of FB_OPMODE.bOpIn5");
+SL_STATIC_ASSERT(offsetof(FB_OPMODE, bOpIn6) == 13, "offset of FB_OPMODE.bOpIn6");
+SL_STATIC_ASSERT(offsetof(FB_OPMODE, bOpIn7) == 14, "offset of FB_OPMODE.bOpIn7");
+SL_STATIC_ASSERT(offsetof(FB_OPMODE, bOpIn8) == 15, "offset of FB_OPMODE.bOpIn8");
+SL_STATIC_ASSERT(offsetof(FB_OPMODE, bRun) == 16, "offset of FB_OPMODE.bRun");
+SL_STATIC_ASSERT(offsetof(FB_OPMODE, bErrAck) == 17, "offset of FB_OPMODE.bErrAck");
+SL_STATIC_ASSERT(offsetof(FB_OPMODE, aReserved1) == 18, "offset of FB_OPMODE.aReserved1");
+SL_STATIC_ASSERT(offsetof(FB_OPMODE, tDiscTime) == 20, "offset of FB_OPMODE.tDiscTime");
+SL_STATIC_ASSERT(offsetof(FB_OPMODE, wInputActive) == 24, "offset of FB_OPMODE.wInputActive");
+SL_STATIC_ASSERT(offsetof(FB_OPMODE, aReserved2) == 26, "offset of FB_OPMODE.aReserved2");
+SL_STATIC_ASSERT(offsetof(FB_OPMODE, dwOptions) == 28, "offset of FB_OPMODE.dwOptions");
+SL_STATIC_ASSERT(offsetof(FB_OPMODE, bError) == 32, "offset of FB_OPMODE.bError");
+SL_STATIC_ASSERT(offsetof(FB_OPMODE, aReserved3) == 33, "offset of FB_OPMODE.aReserved3");
+SL_STATIC_ASSERT(offsetof(FB_OPMODE, bOpOut1) == 40, "offset of FB_OPMODE.bOpOut1");
+SL_STATIC_ASSERT(offsetof(FB_OPMODE, bOpOut2) == 41, "offset of FB_OPMODE.bOpOut2");
+SL_STATIC_ASSERT(offsetof(FB_OPMODE, bOpOut3) == 42, "offset of FB_OPMODE.bOpOut3");
+SL_STATIC_ASSERT(offsetof(FB_OPMODE, bOpOut4) == 43, "offset of FB_OPMODE.bOpOut4");
+SL_STATIC_ASSERT(offsetof(FB_OPMODE, bOpOut5) == 44, "offset of FB_OPMODE.bOpOut5");
+SL_STATIC_ASSERT(offsetof(FB_OPMODE, bOpOut6) == 45, "offset of FB_OPMODE.bOpOut6");
+SL_STATIC_ASSERT(offsetof(FB_OPMODE, bOpOut7) == 46, "offset of FB_OPMODE.bOpOut7");
+SL_STATIC_ASSERT(offsetof(FB_OPMODE, bOpOut8) == 47, "offset of FB_OPMODE.bOpOut8");
+SL_STATIC_ASSERT(offsetof(FB_OPMODE, nState) == 48, "offset of FB_OPMODE.nState");
+SL_STATIC_ASSERT(offsetof(FB_OPMODE, aReserved4) == 49, "offset of FB_OPMODE.aReserved4");
+SL_STATIC_ASSERT(offsetof(FB_OPMODE, nDiag) == 50, "offset of FB_OPMODE.nDiag");
+SL_STATIC_ASSERT(offsetof(FB_OPMODE, aReserved5) == 52, "offset of FB_OPMODE.aReserved5");
+SL_STATIC_ASSERT(offsetof(FB_OPMODE, stPrivate) == 56, "offset of FB_OPMODE.stPrivate");
+SL_STATIC_ASSERT(sizeof(FB_OPMODE) == 88, "size of FB_OPMODE");
+SL_STATIC_ASSERT(offsetof(SL_TWOHAND_PRIVATE, stHeader) == 0, "offset of SL_TWOHAND_PRIVATE.stHeader");
+SL_STATIC_ASSERT(offsetof(SL_TWOHAND_PRIVATE, awTime) == 28, "offset of SL_TWOHAND_PRIVATE.awTime");
+SL_STATIC_ASSERT(offsetof(SL_TWOHAND_PRIVATE, atDiscStart) == 36, "offset of SL_TWOHAND_PRIVATE.atDiscStart");
+SL_STATIC_ASSERT(offsetof(SL_TWOHAND_PRIVATE, aReserved) == 44, "offset of SL_TWOHAND_PRIVATE.aReserved");
+SL_STATIC_ASSERT(sizeof(SL_TWOHAND_PRIVATE) == 48, "size of SL_TWOHAND_PRIVATE");
+SL_STATIC_ASSERT(offsetof(FB_TWOHAND, aReserved0) == 0, "offset of FB_TWOHAND.aReserved0");
+SL_STATIC_ASSERT(offsetof(FB_TWOHAND, bTwoHand1) == 8, "offset of FB_TWOHAND.bTwoHand1");
+SL_STATIC_ASSERT(offsetof(FB_TWOHAND, bTwoHand2) == 9, "offset of FB_TWOHAND.bTwoHand2");
+SL_STATIC_ASSERT(offsetof(FB_TWOHAND, bTwoHand3) == 10, "offset of FB_TWOHAND.bTwoHand3");
+SL_STATIC_ASSERT(offsetof(FB_TWOHAND, bTwoHand4) == 11, "offset of FB_TWOHAND.bTwoHand4");
+SL_STATIC_ASSERT(offsetof(FB_TWOHAND, aReserved1) == 12, "offset of FB_TWOHAND.aReserved1");
+SL_STATIC_ASSERT(offsetof(FB_TWOHAND, bRun) == 16, "offset of FB_TWOHAND.bRun");
+SL_STATIC_ASSERT(offsetof(FB_TWOHAND, bErrAck) == 17, "offset of FB_TWOHAND.bErrAck");
+SL_STATIC_ASSERT(offsetof(FB_TWOHAND, aReserved2) == 18, "offset of FB_TWOHAND.aReserved2");
+SL_STATIC_ASSERT(offsetof(FB_TWOHAND, tDiscTime12) == 20, "offset of FB_TWOHAND.tDiscTime12");
+SL_STATIC_ASSERT(offsetof(FB_TWOHAND, tDiscTime34) == 24, "offset of FB_TWOHAND.tDiscTime34");
+SL_STATIC_ASSERT(offsetof(FB_TWOHAND, tDiscTimePairs) == 28, "offset of FB_TWOHAND.tDiscTimePairs");
+SL_STATIC_ASSERT(offsetof(FB_TWOHAND, wInputActive) == 32, "offset of FB_TWOHAND.wInputActive");
+SL_STATIC_ASSERT(offsetof(FB_TWOHAND, wInputNegated) == 34, "offset of FB_TWOHAND.wInputNegated");
+SL_STATIC_ASSERT(offsetof(FB_TWOHAND, dwOptions) == 36, "offset of FB_TWOHAND.dwOptions");
+SL_STATIC_ASSERT(offsetof(FB_TWOHAND, bError) == 40, "offset of FB_TWOHAND.bError");
+SL_STATIC_ASSERT(offsetof(FB_TWOHAND, bTwoHandOut) == 41, "offset of FB_TWOHAND.bTwoHandOut");
+SL_STATIC_ASSERT(offsetof(FB_TWOHAND, aReserved3) == 42, "offset of FB_TWOHAND.aReserved3");
+SL_STATIC_ASSERT(offsetof(FB_TWOHAND, nState) == 48, "offset of FB_TWOHAND.nState");
+SL_STATIC_ASSERT(offsetof(FB_TWOHAND, aReserved4) == 49, "offset of FB_TWOHAND.aReserved4");
+SL_STATIC_ASSERT(offsetof(FB_TWOHAND, nDiag) == 50, "offset of FB_TWOHAND.nDiag");
+SL_STATIC_ASSERT(offsetof(FB_TWOHAND, aReserved5) == 52, "offset of FB_TWOHAND.aReserved5");
+SL_STATIC_ASSERT(offsetof(FB_TWOHAND, stPrivate) == 56, "offset of FB_TWOHAND.stPrivate");
+SL_STATIC_ASSERT(sizeof(FB_TWOHAND) == 104, "size of FB_TWOHAND");
 SL_STATIC_ASSERT(offsetof(SL_GROUP_PRIVATE, dwCtrl) == 0, "offset of SL_GROUP_PRIVATE.dwCtrl");
 SL_STATIC_ASSERT(offsetof(SL_GROUP_PRIVATE, dwDiag) == 4, "offset of SL_GROUP_PRIVATE.dwDiag");
 SL_STATIC_ASSERT(offsetof(SL_GROUP_PRIVATE, dwMembers) == 8, "offset of SL_GROUP_PRIVATE.dwMembers");

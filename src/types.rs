@@ -72,6 +72,18 @@ pub const SL_DIAG_SAFE_IN_DISC2: u16 = 1 << 9;
 pub const SL_DIAG_SAFE_IN_DISC3: u16 = 1 << 10;
 /// Diag bit 11: bit 3 with "Safe Inputs after Disc Error" active.
 pub const SL_DIAG_SAFE_IN_DISC4: u16 = 1 << 11;
+/// FB_OPMODE diag bit 0: discrepancy monitoring error (no mode or more than one mode selected
+/// for tDiscTime, manual §4.3.2).
+pub const SL_DIAG_OPMODE_DISC: u16 = 1 << 0;
+/// FB_TWOHAND diag bit 2: discrepancy error between the two input pairs (the second group was
+/// not actuated within tDiscTimePairs, manual §4.7.2). Bits 0/1 are SL_DIAG_DISC1/2.
+pub const SL_DIAG_TWOHAND_PAIRS: u16 = 1 << 2;
+/// FB_TWOHAND diag bit 6: two-hand error (the second group was actuated while the first was
+/// no longer actuated, manual §4.7.2).
+pub const SL_DIAG_TWOHAND_ERROR: u16 = 1 << 6;
+/// FB_TWOHAND diag bit 10: bit 2 with "Safe Inputs after Disc Error" active (set in addition
+/// to bit 2). Bits 8/9 are SL_DIAG_SAFE_IN_DISC1/2.
+pub const SL_DIAG_TWOHAND_SAFE_IN_PAIRS: u16 = 1 << 10;
 /// Library extension, diag bit 13: a parameter changed outside STOP (SL_E_PARAM_CHANGED).
 pub const SL_DIAG_PARAM_CHANGED: u16 = 1 << 13;
 /// Library extension, diag bit 14: the clock went backwards (SL_E_CLOCK).
@@ -93,6 +105,7 @@ bitflags::bitflags! {
         const SAFE_IN_DISC2 = SL_DIAG_SAFE_IN_DISC2;
         const SAFE_IN_DISC3 = SL_DIAG_SAFE_IN_DISC3;
         const SAFE_IN_DISC4 = SL_DIAG_SAFE_IN_DISC4;
+        const TWOHAND_ERROR = SL_DIAG_TWOHAND_ERROR;
         const PARAM_CHANGED = SL_DIAG_PARAM_CHANGED;
         const CLOCK = SL_DIAG_CLOCK;
         const CORRUPT = SL_DIAG_CORRUPT;
@@ -117,6 +130,15 @@ pub const SL_STATE_ERRORDELAY: u8 = 7;
 pub const SL_STATE_DELAYOUT: u8 = 8;
 /// State FUNCTEST (9, MON).
 pub const SL_STATE_FUNCTEST: u8 = 9;
+/// FB_TWOHAND state 1BUTTON (11): every active input of the first group is TRUE, the second
+/// group is not actuated yet (manual §4.7.2).
+pub const SL_STATE_TWOHAND_1BUTTON: u8 = 11;
+/// FB_TWOHAND state 2BUTTON (12): every active input of the second group is TRUE, the first
+/// group is not actuated yet.
+pub const SL_STATE_TWOHAND_2BUTTON: u8 = 12;
+/// FB_TWOHAND state RELEASE (13): waiting until every active input is FALSE before the output
+/// can be set again.
+pub const SL_STATE_TWOHAND_RELEASE: u8 = 13;
 
 /// Block type tag of FB_ESTOP (`SL_MEMBER.nType`, `sl_diag_text`).
 pub const SL_TYPE_ESTOP: u16 = 1;
@@ -126,9 +148,16 @@ pub const SL_TYPE_MON: u16 = 2;
 pub const SL_TYPE_AND: u16 = 3;
 /// Block type tag of FB_OR.
 pub const SL_TYPE_OR: u16 = 4;
+/// Block type tag of FB_OPMODE.
+pub const SL_TYPE_OPMODE: u16 = 7;
+/// Block type tag of FB_TWOHAND.
+pub const SL_TYPE_TWOHAND: u16 = 8;
 
-/// Largest time parameter of FB_ESTOP and FB_MON in ms (see docs/semantics.md).
+/// Largest time parameter of FB_ESTOP and FB_MON, and largest discrepancy time of FB_OPMODE
+/// and FB_TWOHAND, in ms (see docs/semantics.md C10, O3, H3).
 pub const SL_TIME_PARAM_MAX: u32 = 65_535;
+/// Largest tDiscTimePairs of FB_TWOHAND in ms (manual §4.7.1: "up to 2500 ms").
+pub const SL_TWOHAND_PAIRS_TIME_MAX: u32 = 2_500;
 
 /// Text for a status code without the C terminator.
 pub fn status_str(status: i32) -> &'static str {

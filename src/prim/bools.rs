@@ -10,9 +10,14 @@ pub struct Packed {
     pub invalid: u8,
 }
 
-/// Packs eight BOOL bytes into masks (bit i = byte i), all bytes at once.
+/// Packs up to eight BOOL bytes into masks (bit i = byte i), all bytes at once.
 #[inline]
-pub fn pack(bytes: [u8; 8]) -> Packed {
+pub fn pack<const N: usize>(input: [u8; N]) -> Packed {
+    const { assert!(N <= 8) };
+    let mut bytes = [0u8; 8];
+    for (b, i) in bytes.iter_mut().zip(input) {
+        *b = i;
+    }
     const LSB: u64 = 0x0101_0101_0101_0101;
     // Multiplying a value whose bytes are 0 or 1 by this gathers byte i's bit into bit 56+i.
     const GATHER: u64 = 0x0102_0408_1020_4080;
