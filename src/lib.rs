@@ -16,11 +16,17 @@ pub mod types;
 pub mod ffi;
 
 pub use blocks::and::FB_AND;
+pub use blocks::decouple::FB_DECOUPLE;
+pub use blocks::edm::{FB_EDM, SL_EDM_PRIVATE};
 pub use blocks::estop::FB_ESTOP;
+pub use blocks::flipflop::SL_FLIPFLOP_PRIVATE;
 pub use blocks::guard::SL_GUARD_PRIVATE;
 pub use blocks::logic::SL_LOGIC_PRIVATE;
 pub use blocks::mon::FB_MON;
 pub use blocks::or::FB_OR;
+pub use blocks::rs::FB_RS;
+pub use blocks::sr::FB_SR;
+pub use blocks::xor::FB_XOR;
 pub use group::{SL_GROUP, SL_GROUP_PRIVATE, SL_LINK, SL_MEMBER};
 pub use prim::header::SL_PRIVATE_HEADER;
 pub use types::*;

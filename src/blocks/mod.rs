@@ -1,13 +1,20 @@
 //! The function blocks. One file per block, citing its manual section; blocks that share a
 //! state machine share it: ESTOP and MON (manual §4.4, §4.5) in `guard`, the
-//! combinational blocks (AND, OR, …) in `logic`.
+//! combinational blocks (AND, OR, XOR, DECOUPLE) in `logic`, RS and SR (§4.10, §4.11) in
+//! `flipflop`.
 
 pub mod and;
+pub mod decouple;
+pub mod edm;
 pub mod estop;
+pub mod flipflop;
 pub mod guard;
 pub mod logic;
 pub mod mon;
 pub mod or;
+pub mod rs;
+pub mod sr;
+pub mod xor;
 
 /// What the C ABI and HMIs need to know about a block type without an instance.
 #[derive(Clone, Copy, Debug)]
@@ -32,7 +39,17 @@ pub const START: (u8, &str) = (crate::types::SL_STATE_START, "START\0");
 pub const DELAYOUT: (u8, &str) = (crate::types::SL_STATE_DELAYOUT, "DELAYOUT\0");
 
 /// Every block type, in tag order.
-pub static BLOCKS: &[BlockInfo] = &[estop::INFO, mon::INFO, and::INFO, or::INFO];
+pub static BLOCKS: &[BlockInfo] = &[
+    estop::INFO,
+    mon::INFO,
+    and::INFO,
+    or::INFO,
+    xor::INFO,
+    decouple::INFO,
+    edm::INFO,
+    rs::INFO,
+    sr::INFO,
+];
 
 /// The block type with this tag.
 pub fn info(tag: u16) -> Option<&'static BlockInfo> {
