@@ -37,6 +37,21 @@ fn state_name(ty: u16, state: u8) -> &'static str {
         .map_or("?", |(_, n)| n.trim_end_matches('\0'))
 }
 
+/// One group cycle through the C API. The member table gets fresh pointers to the blocks
+/// first: the test writes the blocks directly between calls, which ends the validity of
+/// pointers taken before (no `unsafe` here, and nothing the compiler may reorder).
+macro_rules! c_group_cycle {
+    ($g:expr, $members:expr, $links:expr, $t:expr; $($b:ident),+) => {{
+        let mut i = 0;
+        $(
+            $members[i].pBlock = std::ptr::addr_of_mut!($b).cast();
+            i += 1;
+        )+
+        let _ = i;
+        ffi::sl_group_cycle(&mut $g, $members.as_mut_ptr(), $links.as_mut_ptr(), $t)
+    }};
+}
+
 #[test]
 fn layout_is_the_abi() {
     // ABI §9: bDecIn1…bDecIn8 (8…15), bDecOut1…bDecOut8 (+8…+15).
@@ -213,30 +228,27 @@ fn group_com_error_switches_decouple_off() {
     assert_eq!(ffi::sl_decouple_init(&mut d), SL_OK);
     let mut g = SL_GROUP::default();
     let mut members = [SL_MEMBER::default(); 1];
-    let m = members.as_mut_ptr();
+    let mut links: [SL_LINK; 0] = [];
     assert_eq!(
-        ffi::sl_group_init(&mut g, m, 1, std::ptr::null_mut(), 0),
+        ffi::sl_group_init(&mut g, members.as_mut_ptr(), 1, std::ptr::null_mut(), 0),
         SL_OK
     );
     assert_eq!(
         ffi::sl_group_add_member(
             &mut g,
-            m,
+            members.as_mut_ptr(),
             SL_TYPE_DECOUPLE,
-            (&mut d as *mut FB_DECOUPLE).cast(),
+            std::ptr::addr_of_mut!(d).cast(),
             std::ptr::null_mut()
         ),
         SL_OK
     );
     g.bRun = 1;
     set_ins(&mut d, [1; 8]);
-    assert_eq!(
-        ffi::sl_group_cycle(&mut g, m, std::ptr::null_mut(), 0),
-        SL_OK
-    );
+    assert_eq!(c_group_cycle!(g, members, links, 0; d), SL_OK);
     assert_eq!(outs(&d), [1; 8]);
     g.bComErrIn = 1;
-    ffi::sl_group_cycle(&mut g, m, std::ptr::null_mut(), 1);
+    c_group_cycle!(g, members, links, 1; d);
     assert_eq!(
         (g.nState, g.nDiag),
         (SL_STATE_ERROR, SL_GROUP_DIAG_COMERROR)

@@ -54,6 +54,21 @@ fn state_name(ty: u16, state: u8) -> &'static str {
         .map_or("?", |(_, n)| n.trim_end_matches('\0'))
 }
 
+/// One group cycle through the C API. The member table gets fresh pointers to the blocks
+/// first: the test writes the blocks directly between calls, which ends the validity of
+/// pointers taken before (no `unsafe` here, and nothing the compiler may reorder).
+macro_rules! c_group_cycle {
+    ($g:expr, $members:expr, $links:expr, $t:expr; $($b:ident),+) => {{
+        let mut i = 0;
+        $(
+            $members[i].pBlock = std::ptr::addr_of_mut!($b).cast();
+            i += 1;
+        )+
+        let _ = i;
+        ffi::sl_group_cycle(&mut $g, $members.as_mut_ptr(), $links.as_mut_ptr(), $t)
+    }};
+}
+
 #[test]
 fn layout_is_the_abi() {
     // ABI §9: bXor1In1 (0), bXor2In1 (1), bXor1In2 (2) … bXor2In8 (15); outputs at +8…+15.
@@ -373,15 +388,17 @@ fn c_functions_state_names_and_group_membership() {
         ..Default::default()
     };
     assert_eq!(y.init(), SL_OK);
-    let (m, l) = (members.as_mut_ptr(), links.as_mut_ptr());
-    assert_eq!(ffi::sl_group_init(&mut g, m, 2, l, 1), SL_OK);
+    assert_eq!(
+        ffi::sl_group_init(&mut g, members.as_mut_ptr(), 2, links.as_mut_ptr(), 1),
+        SL_OK
+    );
     let mut idx = 0xFFFF;
     assert_eq!(
         ffi::sl_group_add_member(
             &mut g,
-            m,
+            members.as_mut_ptr(),
             SL_TYPE_XOR,
-            (&mut x as *mut FB_XOR).cast(),
+            std::ptr::addr_of_mut!(x).cast(),
             &mut idx
         ),
         SL_OK
@@ -390,9 +407,9 @@ fn c_functions_state_names_and_group_membership() {
     assert_eq!(
         ffi::sl_group_add_member(
             &mut g,
-            m,
+            members.as_mut_ptr(),
             SL_TYPE_XOR,
-            (&mut y as *mut FB_XOR).cast(),
+            std::ptr::addr_of_mut!(y).cast(),
             &mut idx
         ),
         SL_OK
@@ -401,8 +418,8 @@ fn c_functions_state_names_and_group_membership() {
     assert_eq!(
         ffi::sl_group_add_link(
             &mut g,
-            m,
-            l,
+            members.as_mut_ptr(),
+            links.as_mut_ptr(),
             0,
             offset_of!(FB_XOR, bXorOut1) as u16,
             1,
@@ -412,11 +429,11 @@ fn c_functions_state_names_and_group_membership() {
     );
     g.bRun = 1;
     x.bXor1In1 = 1;
-    assert_eq!(ffi::sl_group_cycle(&mut g, m, l, 10), SL_OK);
+    assert_eq!(c_group_cycle!(g, members, links, 10; x, y), SL_OK);
     assert_eq!((x.nState, y.nState), (SL_STATE_RUN, SL_STATE_RUN));
     assert_eq!((x.bXorOut1, y.bXorOut1), (1, 1));
     x.bXor2In1 = 1;
-    ffi::sl_group_cycle(&mut g, m, l, 11);
+    c_group_cycle!(g, members, links, 11; x, y);
     assert_eq!((x.bXorOut1, y.bXorOut1), (0, 0));
     assert_eq!(g.bFbRun, 1, "both members in RUN");
 }
