@@ -1182,7 +1182,8 @@ typedef struct FB_EDM {
    */
   SL_BOOL bMon1;
   /*
-   Offset 9. Mon2: the feedback, which has to assume the value opposite to Mon1 within the set times.
+   Offset 9. Mon2: the feedback; it has to assume the value opposite to Mon1 within the
+   set times.
    */
   SL_BOOL bMon2;
   /*

@@ -5,7 +5,7 @@
 //! ERROR (4) with bError TRUE, left only through the group's ErrAck (RESET, 5).
 //! States: STOP (2), ERROR (4), RESET (5), MONOFF (14: Mon1 FALSE, switch-off monitoring),
 //! MONON (15: Mon1 TRUE, switch-on monitoring). Diag bit 0: switch-off timer elapsed,
-//! bit 1: switch-on timer elapsed. Its own state machine (docs/semantics.md E1–E10).
+//! bit 1: switch-on timer elapsed. Its own state machine (docs/semantics.md E1–E9).
 
 use super::{BlockInfo, ERROR, RESET, STOP};
 use crate::prim::envelope::Block;
@@ -23,7 +23,8 @@ pub struct FB_EDM {
     pub aReserved0: [u8; 8],
     /// Offset 8. Mon1: the monitored command (break or make contact).
     pub bMon1: SL_BOOL,
-    /// Offset 9. Mon2: the feedback, which has to assume the value opposite to Mon1 within the set times.
+    /// Offset 9. Mon2: the feedback; it has to assume the value opposite to Mon1 within the
+    /// set times.
     pub bMon2: SL_BOOL,
     /// Offset 10. Reserved, keep 0.
     pub aReserved1: [u8; 6],
