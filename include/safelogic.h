@@ -319,6 +319,66 @@
 #define SL_TYPE_TWOHAND 8
 
 /*
+ Block type tag of FB_XOR.
+ */
+#define SL_TYPE_XOR 5
+
+/*
+ Block type tag of FB_DECOUPLE.
+ */
+#define SL_TYPE_DECOUPLE 6
+
+/*
+ Block type tag of FB_EDM.
+ */
+#define SL_TYPE_EDM 10
+
+/*
+ Block type tag of FB_RS.
+ */
+#define SL_TYPE_RS 11
+
+/*
+ Block type tag of FB_SR.
+ */
+#define SL_TYPE_SR 12
+
+/*
+ FB_EDM state MONOFF (manual §4.9.2: 14): Mon1 is FALSE, switch-off monitoring.
+ */
+#define SL_STATE_EDM_MONOFF 14
+
+/*
+ FB_EDM state MONON (manual §4.9.2: 15): Mon1 is TRUE, switch-on monitoring.
+ */
+#define SL_STATE_EDM_MONON 15
+
+/*
+ FB_RS state SET (manual §4.10.2: 9): the output RsOut is TRUE.
+ */
+#define SL_STATE_RS_SET 9
+
+/*
+ FB_SR state SET (manual §4.11.2: 9): the output SrOut is TRUE.
+ */
+#define SL_STATE_SR_SET 9
+
+/*
+ FB_EDM diag bit 0 (manual §4.9.2): switch-off timer elapsed.
+ */
+#define SL_DIAG_EDM_SWITCH_OFF (1 << 0)
+
+/*
+ FB_EDM diag bit 1 (manual §4.9.2): switch-on timer elapsed.
+ */
+#define SL_DIAG_EDM_SWITCH_ON (1 << 1)
+
+/*
+ Largest tSwitchOnTime / tSwitchOffTime of FB_EDM in ms (manual §4.9.1: "maximum 10000 ms").
+ */
+#define SL_EDM_TIME_MAX 10000
+
+/*
  Largest time parameter of FB_ESTOP and FB_MON, and largest discrepancy time of FB_OPMODE
  and FB_TWOHAND, in ms (see docs/semantics.md C10, O3, H3).
  */
@@ -1164,6 +1224,520 @@ typedef struct FB_TWOHAND {
 } FB_TWOHAND;
 
 /*
+ FB XOR instance (ABI §3, §9). Inputs at the manual's offsets 0…15 (§4.34.2), output
+ base 24 (outputs at base + 8 … base + 15).
+ */
+typedef struct FB_XOR {
+  /*
+   Offset 0. Input 1 of XOR1.
+   */
+  SL_BOOL bXor1In1;
+  /*
+   Offset 1. Input 2 of XOR1.
+   */
+  SL_BOOL bXor2In1;
+  /*
+   Offset 2. Input 1 of XOR2.
+   */
+  SL_BOOL bXor1In2;
+  /*
+   Offset 3. Input 2 of XOR2.
+   */
+  SL_BOOL bXor2In2;
+  /*
+   Offset 4. Input 1 of XOR3.
+   */
+  SL_BOOL bXor1In3;
+  /*
+   Offset 5. Input 2 of XOR3.
+   */
+  SL_BOOL bXor2In3;
+  /*
+   Offset 6. Input 1 of XOR4.
+   */
+  SL_BOOL bXor1In4;
+  /*
+   Offset 7. Input 2 of XOR4.
+   */
+  SL_BOOL bXor2In4;
+  /*
+   Offset 8. Input 1 of XOR5.
+   */
+  SL_BOOL bXor1In5;
+  /*
+   Offset 9. Input 2 of XOR5.
+   */
+  SL_BOOL bXor2In5;
+  /*
+   Offset 10. Input 1 of XOR6.
+   */
+  SL_BOOL bXor1In6;
+  /*
+   Offset 11. Input 2 of XOR6.
+   */
+  SL_BOOL bXor2In6;
+  /*
+   Offset 12. Input 1 of XOR7.
+   */
+  SL_BOOL bXor1In7;
+  /*
+   Offset 13. Input 2 of XOR7.
+   */
+  SL_BOOL bXor2In7;
+  /*
+   Offset 14. Input 1 of XOR8.
+   */
+  SL_BOOL bXor1In8;
+  /*
+   Offset 15. Input 2 of XOR8.
+   */
+  SL_BOOL bXor2In8;
+  /*
+   Offset 16. FbRun of the owning group.
+   */
+  SL_BOOL bRun;
+  /*
+   Offset 17. ErrAck of the owning group.
+   */
+  SL_BOOL bErrAck;
+  /*
+   Offset 18. Reserved, keep 0.
+   */
+  uint8_t aReserved0[2];
+  /*
+   Offset 20. Bit y-1 set: XOR function y (inputs Xor1Iny, Xor2Iny) is active (at least one).
+   */
+  uint16_t wInputActive;
+  /*
+   Offset 22. Reserved, keep 0 (the manual offers no negation for XOR inputs).
+   */
+  uint8_t aReserved1[2];
+  /*
+   Offset 24 (output base + 0). Reserved.
+   */
+  uint8_t aReserved2[8];
+  /*
+   Offset 32 (output base + 8). Xor1In1 XOR Xor2In1 (FALSE when XOR1 is inactive).
+   */
+  SL_BOOL bXorOut1;
+  /*
+   Offset 33 (output base + 9).
+   */
+  SL_BOOL bXorOut2;
+  /*
+   Offset 34 (output base + 10).
+   */
+  SL_BOOL bXorOut3;
+  /*
+   Offset 35 (output base + 11).
+   */
+  SL_BOOL bXorOut4;
+  /*
+   Offset 36 (output base + 12).
+   */
+  SL_BOOL bXorOut5;
+  /*
+   Offset 37 (output base + 13).
+   */
+  SL_BOOL bXorOut6;
+  /*
+   Offset 38 (output base + 14).
+   */
+  SL_BOOL bXorOut7;
+  /*
+   Offset 39 (output base + 15).
+   */
+  SL_BOOL bXorOut8;
+  /*
+   Offset 40. The manual's status value (SL_STATE_*).
+   */
+  uint8_t nState;
+  /*
+   Offset 41. Reserved.
+   */
+  uint8_t aReserved3[1];
+  /*
+   Offset 42. Diagnostic bits (only the library bits 13-15).
+   */
+  uint16_t nDiag;
+  /*
+   Offset 44. Reserved.
+   */
+  uint8_t aReserved4[4];
+  /*
+   Offset 48. Private state, 32 bytes: never write it.
+   */
+  struct SL_LOGIC_PRIVATE stPrivate;
+} FB_XOR;
+
+/*
+ FB DECOUPLE instance (ABI §3, §9). Inputs at the manual's offsets 8…15 (§4.6.2), output
+ base 24 (outputs at base + 8 … base + 15).
+ */
+typedef struct FB_DECOUPLE {
+  /*
+   Offset 0. Reserved, keep 0.
+   */
+  uint8_t aReserved0[8];
+  /*
+   Offset 8. 1st input channel.
+   */
+  SL_BOOL bDecIn1;
+  /*
+   Offset 9. 2nd input channel.
+   */
+  SL_BOOL bDecIn2;
+  /*
+   Offset 10. 3rd input channel.
+   */
+  SL_BOOL bDecIn3;
+  /*
+   Offset 11. 4th input channel.
+   */
+  SL_BOOL bDecIn4;
+  /*
+   Offset 12. 5th input channel.
+   */
+  SL_BOOL bDecIn5;
+  /*
+   Offset 13. 6th input channel.
+   */
+  SL_BOOL bDecIn6;
+  /*
+   Offset 14. 7th input channel.
+   */
+  SL_BOOL bDecIn7;
+  /*
+   Offset 15. 8th input channel.
+   */
+  SL_BOOL bDecIn8;
+  /*
+   Offset 16. FbRun of the owning group.
+   */
+  SL_BOOL bRun;
+  /*
+   Offset 17. ErrAck of the owning group.
+   */
+  SL_BOOL bErrAck;
+  /*
+   Offset 18. Reserved, keep 0.
+   */
+  uint8_t aReserved1[2];
+  /*
+   Offset 20. Bit n-1 set: channel n (DecInn → DecOutn) is used (at least one).
+   */
+  uint16_t wInputActive;
+  /*
+   Offset 22. Reserved, keep 0 (the manual offers no negation for DECOUPLE).
+   */
+  uint8_t aReserved2[2];
+  /*
+   Offset 24 (output base + 0). Reserved.
+   */
+  uint8_t aReserved3[8];
+  /*
+   Offset 32 (output base + 8). 1st output channel: DecIn1 in RUN, else FALSE.
+   */
+  SL_BOOL bDecOut1;
+  /*
+   Offset 33 (output base + 9). 2nd output channel.
+   */
+  SL_BOOL bDecOut2;
+  /*
+   Offset 34 (output base + 10). 3rd output channel.
+   */
+  SL_BOOL bDecOut3;
+  /*
+   Offset 35 (output base + 11). 4th output channel.
+   */
+  SL_BOOL bDecOut4;
+  /*
+   Offset 36 (output base + 12). 5th output channel.
+   */
+  SL_BOOL bDecOut5;
+  /*
+   Offset 37 (output base + 13). 6th output channel.
+   */
+  SL_BOOL bDecOut6;
+  /*
+   Offset 38 (output base + 14). 7th output channel.
+   */
+  SL_BOOL bDecOut7;
+  /*
+   Offset 39 (output base + 15). 8th output channel.
+   */
+  SL_BOOL bDecOut8;
+  /*
+   Offset 40. The manual's status value (SL_STATE_*).
+   */
+  uint8_t nState;
+  /*
+   Offset 41. Reserved.
+   */
+  uint8_t aReserved4[1];
+  /*
+   Offset 42. Diagnostic bits (only the library bits 13-15).
+   */
+  uint16_t nDiag;
+  /*
+   Offset 44. Reserved.
+   */
+  uint8_t aReserved5[4];
+  /*
+   Offset 48. Private state, 32 bytes: never write it.
+   */
+  struct SL_LOGIC_PRIVATE stPrivate;
+} FB_DECOUPLE;
+
+/*
+ Private state of FB_EDM (32 bytes). Never written by the user. The header's `tPhase` is
+ the start of the current monitoring, `wAux` bit 0 says it is still waiting for Mon2.
+ */
+typedef struct SL_EDM_PRIVATE {
+  struct SL_PRIVATE_HEADER stHeader;
+  /*
+   Latched times in ms: switch-on, switch-off.
+   */
+  uint16_t awTime[2];
+} SL_EDM_PRIVATE;
+
+/*
+ FB EDM instance (ABI §3, §9). Inputs at the manual's offsets (§4.9.2), output base 32.
+ */
+typedef struct FB_EDM {
+  /*
+   Offset 0. Reserved, keep 0.
+   */
+  uint8_t aReserved0[8];
+  /*
+   Offset 8. Mon1: the monitored command (break or make contact).
+   */
+  SL_BOOL bMon1;
+  /*
+   Offset 9. Mon2: the feedback; it has to assume the value opposite to Mon1 within the
+   set times.
+   */
+  SL_BOOL bMon2;
+  /*
+   Offset 10. Reserved, keep 0.
+   */
+  uint8_t aReserved1[6];
+  /*
+   Offset 16. FbRun of the owning group.
+   */
+  SL_BOOL bRun;
+  /*
+   Offset 17. ErrAck of the owning group.
+   */
+  SL_BOOL bErrAck;
+  /*
+   Offset 18. Reserved, keep 0.
+   */
+  uint8_t aReserved2[2];
+  /*
+   Offset 20. Switch-on monitoring time in ms (≤ 10000; 0 = switch-on monitoring off).
+   */
+  uint32_t tSwitchOnTime;
+  /*
+   Offset 24. Switch-off monitoring time in ms (≤ 10000; 0 = switch-off monitoring off).
+   */
+  uint32_t tSwitchOffTime;
+  /*
+   Offset 28. Bit 0: Mon1 active, bit 1: Mon2 active (both required).
+   */
+  uint16_t wInputActive;
+  /*
+   Offset 30. Same bits: the input is a make contact (negated before evaluation).
+   */
+  uint16_t wInputNegated;
+  /*
+   Offset 32 (output base + 0). TRUE in ERROR: a monitoring time was exceeded.
+   */
+  SL_BOOL bError;
+  /*
+   Offset 33. Reserved.
+   */
+  uint8_t aReserved3[7];
+  /*
+   Offset 40. The manual's status value (SL_STATE_*).
+   */
+  uint8_t nState;
+  /*
+   Offset 41. Reserved.
+   */
+  uint8_t aReserved4[1];
+  /*
+   Offset 42. Diagnostic bits (SL_DIAG_EDM_SWITCH_OFF, SL_DIAG_EDM_SWITCH_ON, library bits).
+   */
+  uint16_t nDiag;
+  /*
+   Offset 44. Reserved.
+   */
+  uint8_t aReserved5[4];
+  /*
+   Offset 48. Private state, 32 bytes: never write it.
+   */
+  struct SL_EDM_PRIVATE stPrivate;
+} FB_EDM;
+
+/*
+ Private state of FB_RS and FB_SR (32 bytes): the memory is the state (SAFE or SET) in
+ the header, guarded by its complement copy. Never written by the user.
+ */
+typedef struct SL_FLIPFLOP_PRIVATE {
+  struct SL_PRIVATE_HEADER stHeader;
+  uint8_t aReserved[4];
+} SL_FLIPFLOP_PRIVATE;
+
+/*
+ FB RS instance (ABI §3, §9). Inputs at the manual's offsets (§4.10.2), output base 24.
+ */
+typedef struct FB_RS {
+  /*
+   Offset 0. Reserved, keep 0.
+   */
+  uint8_t aReserved0[8];
+  /*
+   Offset 8. Reset: logic 1 switches the output off (dominant).
+   */
+  SL_BOOL bReset;
+  /*
+   Offset 9. Set: logic 1 switches the output on.
+   */
+  SL_BOOL bSet;
+  /*
+   Offset 10. Reserved, keep 0.
+   */
+  uint8_t aReserved1[6];
+  /*
+   Offset 16. FbRun of the owning group.
+   */
+  SL_BOOL bRun;
+  /*
+   Offset 17. ErrAck of the owning group.
+   */
+  SL_BOOL bErrAck;
+  /*
+   Offset 18. Reserved, keep 0.
+   */
+  uint8_t aReserved2[2];
+  /*
+   Offset 20. Bit 0: Reset is active, bit 1: Set is active (at least one).
+   */
+  uint16_t wInputActive;
+  /*
+   Offset 22. Same bits: the input is a make contact (negated before evaluation).
+   */
+  uint16_t wInputNegated;
+  /*
+   Offset 24 (output base + 0). Reserved.
+   */
+  uint8_t aReserved3[1];
+  /*
+   Offset 25 (output base + 1). TRUE in SET; the safe state is FALSE.
+   */
+  SL_BOOL bRsOut;
+  /*
+   Offset 26. Reserved.
+   */
+  uint8_t aReserved4[6];
+  /*
+   Offset 32. The manual's status value (SL_STATE_*).
+   */
+  uint8_t nState;
+  /*
+   Offset 33. Reserved.
+   */
+  uint8_t aReserved5[1];
+  /*
+   Offset 34. Diagnostic bits (only the library bits 13-15).
+   */
+  uint16_t nDiag;
+  /*
+   Offset 36. Reserved.
+   */
+  uint8_t aReserved6[4];
+  /*
+   Offset 40. Private state, 32 bytes: never write it.
+   */
+  struct SL_FLIPFLOP_PRIVATE stPrivate;
+} FB_RS;
+
+/*
+ FB SR instance (ABI §3, §9). Inputs at the manual's offsets (§4.11.2), output base 24.
+ */
+typedef struct FB_SR {
+  /*
+   Offset 0. Reserved, keep 0.
+   */
+  uint8_t aReserved0[8];
+  /*
+   Offset 8. Reset: logic 1 switches the output off.
+   */
+  SL_BOOL bReset;
+  /*
+   Offset 9. Set: logic 1 switches the output on (dominant).
+   */
+  SL_BOOL bSet;
+  /*
+   Offset 10. Reserved, keep 0.
+   */
+  uint8_t aReserved1[6];
+  /*
+   Offset 16. FbRun of the owning group.
+   */
+  SL_BOOL bRun;
+  /*
+   Offset 17. ErrAck of the owning group.
+   */
+  SL_BOOL bErrAck;
+  /*
+   Offset 18. Reserved, keep 0.
+   */
+  uint8_t aReserved2[2];
+  /*
+   Offset 20. Bit 0: Reset is active, bit 1: Set is active (at least one).
+   */
+  uint16_t wInputActive;
+  /*
+   Offset 22. Same bits: the input is a make contact (negated before evaluation).
+   */
+  uint16_t wInputNegated;
+  /*
+   Offset 24 (output base + 0). Reserved.
+   */
+  uint8_t aReserved3[1];
+  /*
+   Offset 25 (output base + 1). TRUE in SET; the safe state is FALSE.
+   */
+  SL_BOOL bSrOut;
+  /*
+   Offset 26. Reserved.
+   */
+  uint8_t aReserved4[6];
+  /*
+   Offset 32. The manual's status value (SL_STATE_*).
+   */
+  uint8_t nState;
+  /*
+   Offset 33. Reserved.
+   */
+  uint8_t aReserved5[1];
+  /*
+   Offset 34. Diagnostic bits (only the library bits 13-15).
+   */
+  uint16_t nDiag;
+  /*
+   Offset 36. Reserved.
+   */
+  uint8_t aReserved6[4];
+  /*
+   Offset 40. Private state, 32 bytes: never write it.
+   */
+  struct SL_FLIPFLOP_PRIVATE stPrivate;
+} FB_SR;
+
+/*
  Private state of a group (32 bytes): data words and their complements.
  */
 typedef struct SL_GROUP_PRIVATE {
@@ -1407,6 +1981,61 @@ int32_t sl_twohand_init(struct FB_TWOHAND *fb);
  One task cycle of an FB_TWOHAND at `tNow` (monotonic ms, may wrap at 2^32).
  */
 int32_t sl_twohand_cycle(struct FB_TWOHAND *fb, uint32_t tNow);
+
+/*
+ Validates and latches the parameters of an FB_XOR and resets it to power-up (STOP,
+ outputs FALSE). Does not modify any input field. Returns SL_OK or SL_E_CONFIG.
+ */
+int32_t sl_xor_init(struct FB_XOR *fb);
+
+/*
+ One task cycle of an FB_XOR at `tNow` (monotonic ms, may wrap at 2^32).
+ */
+int32_t sl_xor_cycle(struct FB_XOR *fb, uint32_t tNow);
+
+/*
+ Validates and latches the parameters of an FB_DECOUPLE and resets it to power-up (STOP,
+ outputs FALSE). Does not modify any input field. Returns SL_OK or SL_E_CONFIG.
+ */
+int32_t sl_decouple_init(struct FB_DECOUPLE *fb);
+
+/*
+ One task cycle of an FB_DECOUPLE at `tNow` (monotonic ms, may wrap at 2^32).
+ */
+int32_t sl_decouple_cycle(struct FB_DECOUPLE *fb, uint32_t tNow);
+
+/*
+ Validates and latches the parameters of an FB_EDM and resets it to power-up (STOP,
+ outputs FALSE). Does not modify any input field. Returns SL_OK or SL_E_CONFIG.
+ */
+int32_t sl_edm_init(struct FB_EDM *fb);
+
+/*
+ One task cycle of an FB_EDM at `tNow` (monotonic ms, may wrap at 2^32).
+ */
+int32_t sl_edm_cycle(struct FB_EDM *fb, uint32_t tNow);
+
+/*
+ Validates and latches the parameters of an FB_RS and resets it to power-up (STOP,
+ outputs FALSE). Does not modify any input field. Returns SL_OK or SL_E_CONFIG.
+ */
+int32_t sl_rs_init(struct FB_RS *fb);
+
+/*
+ One task cycle of an FB_RS at `tNow` (monotonic ms, may wrap at 2^32).
+ */
+int32_t sl_rs_cycle(struct FB_RS *fb, uint32_t tNow);
+
+/*
+ Validates and latches the parameters of an FB_SR and resets it to power-up (STOP,
+ outputs FALSE). Does not modify any input field. Returns SL_OK or SL_E_CONFIG.
+ */
+int32_t sl_sr_init(struct FB_SR *fb);
+
+/*
+ One task cycle of an FB_SR at `tNow` (monotonic ms, may wrap at 2^32).
+ */
+int32_t sl_sr_cycle(struct FB_SR *fb, uint32_t tNow);
 
 /*
  Resets a group to power-up (STOP, or STOPERROR with bConnections) with the caller's
@@ -1659,6 +2288,132 @@ SL_STATIC_ASSERT(offsetof(FB_TWOHAND, nDiag) == 50, "offset of FB_TWOHAND.nDiag"
 SL_STATIC_ASSERT(offsetof(FB_TWOHAND, aReserved5) == 52, "offset of FB_TWOHAND.aReserved5");
 SL_STATIC_ASSERT(offsetof(FB_TWOHAND, stPrivate) == 56, "offset of FB_TWOHAND.stPrivate");
 SL_STATIC_ASSERT(sizeof(FB_TWOHAND) == 104, "size of FB_TWOHAND");
+SL_STATIC_ASSERT(offsetof(FB_XOR, bXor1In1) == 0, "offset of FB_XOR.bXor1In1");
+SL_STATIC_ASSERT(offsetof(FB_XOR, bXor2In1) == 1, "offset of FB_XOR.bXor2In1");
+SL_STATIC_ASSERT(offsetof(FB_XOR, bXor1In2) == 2, "offset of FB_XOR.bXor1In2");
+SL_STATIC_ASSERT(offsetof(FB_XOR, bXor2In2) == 3, "offset of FB_XOR.bXor2In2");
+SL_STATIC_ASSERT(offsetof(FB_XOR, bXor1In3) == 4, "offset of FB_XOR.bXor1In3");
+SL_STATIC_ASSERT(offsetof(FB_XOR, bXor2In3) == 5, "offset of FB_XOR.bXor2In3");
+SL_STATIC_ASSERT(offsetof(FB_XOR, bXor1In4) == 6, "offset of FB_XOR.bXor1In4");
+SL_STATIC_ASSERT(offsetof(FB_XOR, bXor2In4) == 7, "offset of FB_XOR.bXor2In4");
+SL_STATIC_ASSERT(offsetof(FB_XOR, bXor1In5) == 8, "offset of FB_XOR.bXor1In5");
+SL_STATIC_ASSERT(offsetof(FB_XOR, bXor2In5) == 9, "offset of FB_XOR.bXor2In5");
+SL_STATIC_ASSERT(offsetof(FB_XOR, bXor1In6) == 10, "offset of FB_XOR.bXor1In6");
+SL_STATIC_ASSERT(offsetof(FB_XOR, bXor2In6) == 11, "offset of FB_XOR.bXor2In6");
+SL_STATIC_ASSERT(offsetof(FB_XOR, bXor1In7) == 12, "offset of FB_XOR.bXor1In7");
+SL_STATIC_ASSERT(offsetof(FB_XOR, bXor2In7) == 13, "offset of FB_XOR.bXor2In7");
+SL_STATIC_ASSERT(offsetof(FB_XOR, bXor1In8) == 14, "offset of FB_XOR.bXor1In8");
+SL_STATIC_ASSERT(offsetof(FB_XOR, bXor2In8) == 15, "offset of FB_XOR.bXor2In8");
+SL_STATIC_ASSERT(offsetof(FB_XOR, bRun) == 16, "offset of FB_XOR.bRun");
+SL_STATIC_ASSERT(offsetof(FB_XOR, bErrAck) == 17, "offset of FB_XOR.bErrAck");
+SL_STATIC_ASSERT(offsetof(FB_XOR, aReserved0) == 18, "offset of FB_XOR.aReserved0");
+SL_STATIC_ASSERT(offsetof(FB_XOR, wInputActive) == 20, "offset of FB_XOR.wInputActive");
+SL_STATIC_ASSERT(offsetof(FB_XOR, aReserved1) == 22, "offset of FB_XOR.aReserved1");
+SL_STATIC_ASSERT(offsetof(FB_XOR, aReserved2) == 24, "offset of FB_XOR.aReserved2");
+SL_STATIC_ASSERT(offsetof(FB_XOR, bXorOut1) == 32, "offset of FB_XOR.bXorOut1");
+SL_STATIC_ASSERT(offsetof(FB_XOR, bXorOut2) == 33, "offset of FB_XOR.bXorOut2");
+SL_STATIC_ASSERT(offsetof(FB_XOR, bXorOut3) == 34, "offset of FB_XOR.bXorOut3");
+SL_STATIC_ASSERT(offsetof(FB_XOR, bXorOut4) == 35, "offset of FB_XOR.bXorOut4");
+SL_STATIC_ASSERT(offsetof(FB_XOR, bXorOut5) == 36, "offset of FB_XOR.bXorOut5");
+SL_STATIC_ASSERT(offsetof(FB_XOR, bXorOut6) == 37, "offset of FB_XOR.bXorOut6");
+SL_STATIC_ASSERT(offsetof(FB_XOR, bXorOut7) == 38, "offset of FB_XOR.bXorOut7");
+SL_STATIC_ASSERT(offsetof(FB_XOR, bXorOut8) == 39, "offset of FB_XOR.bXorOut8");
+SL_STATIC_ASSERT(offsetof(FB_XOR, nState) == 40, "offset of FB_XOR.nState");
+SL_STATIC_ASSERT(offsetof(FB_XOR, aReserved3) == 41, "offset of FB_XOR.aReserved3");
+SL_STATIC_ASSERT(offsetof(FB_XOR, nDiag) == 42, "offset of FB_XOR.nDiag");
+SL_STATIC_ASSERT(offsetof(FB_XOR, aReserved4) == 44, "offset of FB_XOR.aReserved4");
+SL_STATIC_ASSERT(offsetof(FB_XOR, stPrivate) == 48, "offset of FB_XOR.stPrivate");
+SL_STATIC_ASSERT(sizeof(FB_XOR) == 80, "size of FB_XOR");
+SL_STATIC_ASSERT(offsetof(FB_DECOUPLE, aReserved0) == 0, "offset of FB_DECOUPLE.aReserved0");
+SL_STATIC_ASSERT(offsetof(FB_DECOUPLE, bDecIn1) == 8, "offset of FB_DECOUPLE.bDecIn1");
+SL_STATIC_ASSERT(offsetof(FB_DECOUPLE, bDecIn2) == 9, "offset of FB_DECOUPLE.bDecIn2");
+SL_STATIC_ASSERT(offsetof(FB_DECOUPLE, bDecIn3) == 10, "offset of FB_DECOUPLE.bDecIn3");
+SL_STATIC_ASSERT(offsetof(FB_DECOUPLE, bDecIn4) == 11, "offset of FB_DECOUPLE.bDecIn4");
+SL_STATIC_ASSERT(offsetof(FB_DECOUPLE, bDecIn5) == 12, "offset of FB_DECOUPLE.bDecIn5");
+SL_STATIC_ASSERT(offsetof(FB_DECOUPLE, bDecIn6) == 13, "offset of FB_DECOUPLE.bDecIn6");
+SL_STATIC_ASSERT(offsetof(FB_DECOUPLE, bDecIn7) == 14, "offset of FB_DECOUPLE.bDecIn7");
+SL_STATIC_ASSERT(offsetof(FB_DECOUPLE, bDecIn8) == 15, "offset of FB_DECOUPLE.bDecIn8");
+SL_STATIC_ASSERT(offsetof(FB_DECOUPLE, bRun) == 16, "offset of FB_DECOUPLE.bRun");
+SL_STATIC_ASSERT(offsetof(FB_DECOUPLE, bErrAck) == 17, "offset of FB_DECOUPLE.bErrAck");
+SL_STATIC_ASSERT(offsetof(FB_DECOUPLE, aReserved1) == 18, "offset of FB_DECOUPLE.aReserved1");
+SL_STATIC_ASSERT(offsetof(FB_DECOUPLE, wInputActive) == 20, "offset of FB_DECOUPLE.wInputActive");
+SL_STATIC_ASSERT(offsetof(FB_DECOUPLE, aReserved2) == 22, "offset of FB_DECOUPLE.aReserved2");
+SL_STATIC_ASSERT(offsetof(FB_DECOUPLE, aReserved3) == 24, "offset of FB_DECOUPLE.aReserved3");
+SL_STATIC_ASSERT(offsetof(FB_DECOUPLE, bDecOut1) == 32, "offset of FB_DECOUPLE.bDecOut1");
+SL_STATIC_ASSERT(offsetof(FB_DECOUPLE, bDecOut2) == 33, "offset of FB_DECOUPLE.bDecOut2");
+SL_STATIC_ASSERT(offsetof(FB_DECOUPLE, bDecOut3) == 34, "offset of FB_DECOUPLE.bDecOut3");
+SL_STATIC_ASSERT(offsetof(FB_DECOUPLE, bDecOut4) == 35, "offset of FB_DECOUPLE.bDecOut4");
+SL_STATIC_ASSERT(offsetof(FB_DECOUPLE, bDecOut5) == 36, "offset of FB_DECOUPLE.bDecOut5");
+SL_STATIC_ASSERT(offsetof(FB_DECOUPLE, bDecOut6) == 37, "offset of FB_DECOUPLE.bDecOut6");
+SL_STATIC_ASSERT(offsetof(FB_DECOUPLE, bDecOut7) == 38, "offset of FB_DECOUPLE.bDecOut7");
+SL_STATIC_ASSERT(offsetof(FB_DECOUPLE, bDecOut8) == 39, "offset of FB_DECOUPLE.bDecOut8");
+SL_STATIC_ASSERT(offsetof(FB_DECOUPLE, nState) == 40, "offset of FB_DECOUPLE.nState");
+SL_STATIC_ASSERT(offsetof(FB_DECOUPLE, aReserved4) == 41, "offset of FB_DECOUPLE.aReserved4");
+SL_STATIC_ASSERT(offsetof(FB_DECOUPLE, nDiag) == 42, "offset of FB_DECOUPLE.nDiag");
+SL_STATIC_ASSERT(offsetof(FB_DECOUPLE, aReserved5) == 44, "offset of FB_DECOUPLE.aReserved5");
+SL_STATIC_ASSERT(offsetof(FB_DECOUPLE, stPrivate) == 48, "offset of FB_DECOUPLE.stPrivate");
+SL_STATIC_ASSERT(sizeof(FB_DECOUPLE) == 80, "size of FB_DECOUPLE");
+SL_STATIC_ASSERT(offsetof(SL_EDM_PRIVATE, stHeader) == 0, "offset of SL_EDM_PRIVATE.stHeader");
+SL_STATIC_ASSERT(offsetof(SL_EDM_PRIVATE, awTime) == 28, "offset of SL_EDM_PRIVATE.awTime");
+SL_STATIC_ASSERT(sizeof(SL_EDM_PRIVATE) == 32, "size of SL_EDM_PRIVATE");
+SL_STATIC_ASSERT(offsetof(FB_EDM, aReserved0) == 0, "offset of FB_EDM.aReserved0");
+SL_STATIC_ASSERT(offsetof(FB_EDM, bMon1) == 8, "offset of FB_EDM.bMon1");
+SL_STATIC_ASSERT(offsetof(FB_EDM, bMon2) == 9, "offset of FB_EDM.bMon2");
+SL_STATIC_ASSERT(offsetof(FB_EDM, aReserved1) == 10, "offset of FB_EDM.aReserved1");
+SL_STATIC_ASSERT(offsetof(FB_EDM, bRun) == 16, "offset of FB_EDM.bRun");
+SL_STATIC_ASSERT(offsetof(FB_EDM, bErrAck) == 17, "offset of FB_EDM.bErrAck");
+SL_STATIC_ASSERT(offsetof(FB_EDM, aReserved2) == 18, "offset of FB_EDM.aReserved2");
+SL_STATIC_ASSERT(offsetof(FB_EDM, tSwitchOnTime) == 20, "offset of FB_EDM.tSwitchOnTime");
+SL_STATIC_ASSERT(offsetof(FB_EDM, tSwitchOffTime) == 24, "offset of FB_EDM.tSwitchOffTime");
+SL_STATIC_ASSERT(offsetof(FB_EDM, wInputActive) == 28, "offset of FB_EDM.wInputActive");
+SL_STATIC_ASSERT(offsetof(FB_EDM, wInputNegated) == 30, "offset of FB_EDM.wInputNegated");
+SL_STATIC_ASSERT(offsetof(FB_EDM, bError) == 32, "offset of FB_EDM.bError");
+SL_STATIC_ASSERT(offsetof(FB_EDM, aReserved3) == 33, "offset of FB_EDM.aReserved3");
+SL_STATIC_ASSERT(offsetof(FB_EDM, nState) == 40, "offset of FB_EDM.nState");
+SL_STATIC_ASSERT(offsetof(FB_EDM, aReserved4) == 41, "offset of FB_EDM.aReserved4");
+SL_STATIC_ASSERT(offsetof(FB_EDM, nDiag) == 42, "offset of FB_EDM.nDiag");
+SL_STATIC_ASSERT(offsetof(FB_EDM, aReserved5) == 44, "offset of FB_EDM.aReserved5");
+SL_STATIC_ASSERT(offsetof(FB_EDM, stPrivate) == 48, "offset of FB_EDM.stPrivate");
+SL_STATIC_ASSERT(sizeof(FB_EDM) == 80, "size of FB_EDM");
+SL_STATIC_ASSERT(offsetof(SL_FLIPFLOP_PRIVATE, stHeader) == 0, "offset of SL_FLIPFLOP_PRIVATE.stHeader");
+SL_STATIC_ASSERT(offsetof(SL_FLIPFLOP_PRIVATE, aReserved) == 28, "offset of SL_FLIPFLOP_PRIVATE.aReserved");
+SL_STATIC_ASSERT(sizeof(SL_FLIPFLOP_PRIVATE) == 32, "size of SL_FLIPFLOP_PRIVATE");
+SL_STATIC_ASSERT(offsetof(FB_RS, aReserved0) == 0, "offset of FB_RS.aReserved0");
+SL_STATIC_ASSERT(offsetof(FB_RS, bReset) == 8, "offset of FB_RS.bReset");
+SL_STATIC_ASSERT(offsetof(FB_RS, bSet) == 9, "offset of FB_RS.bSet");
+SL_STATIC_ASSERT(offsetof(FB_RS, aReserved1) == 10, "offset of FB_RS.aReserved1");
+SL_STATIC_ASSERT(offsetof(FB_RS, bRun) == 16, "offset of FB_RS.bRun");
+SL_STATIC_ASSERT(offsetof(FB_RS, bErrAck) == 17, "offset of FB_RS.bErrAck");
+SL_STATIC_ASSERT(offsetof(FB_RS, aReserved2) == 18, "offset of FB_RS.aReserved2");
+SL_STATIC_ASSERT(offsetof(FB_RS, wInputActive) == 20, "offset of FB_RS.wInputActive");
+SL_STATIC_ASSERT(offsetof(FB_RS, wInputNegated) == 22, "offset of FB_RS.wInputNegated");
+SL_STATIC_ASSERT(offsetof(FB_RS, aReserved3) == 24, "offset of FB_RS.aReserved3");
+SL_STATIC_ASSERT(offsetof(FB_RS, bRsOut) == 25, "offset of FB_RS.bRsOut");
+SL_STATIC_ASSERT(offsetof(FB_RS, aReserved4) == 26, "offset of FB_RS.aReserved4");
+SL_STATIC_ASSERT(offsetof(FB_RS, nState) == 32, "offset of FB_RS.nState");
+SL_STATIC_ASSERT(offsetof(FB_RS, aReserved5) == 33, "offset of FB_RS.aReserved5");
+SL_STATIC_ASSERT(offsetof(FB_RS, nDiag) == 34, "offset of FB_RS.nDiag");
+SL_STATIC_ASSERT(offsetof(FB_RS, aReserved6) == 36, "offset of FB_RS.aReserved6");
+SL_STATIC_ASSERT(offsetof(FB_RS, stPrivate) == 40, "offset of FB_RS.stPrivate");
+SL_STATIC_ASSERT(sizeof(FB_RS) == 72, "size of FB_RS");
+SL_STATIC_ASSERT(offsetof(FB_SR, aReserved0) == 0, "offset of FB_SR.aReserved0");
+SL_STATIC_ASSERT(offsetof(FB_SR, bReset) == 8, "offset of FB_SR.bReset");
+SL_STATIC_ASSERT(offsetof(FB_SR, bSet) == 9, "offset of FB_SR.bSet");
+SL_STATIC_ASSERT(offsetof(FB_SR, aReserved1) == 10, "offset of FB_SR.aReserved1");
+SL_STATIC_ASSERT(offsetof(FB_SR, bRun) == 16, "offset of FB_SR.bRun");
+SL_STATIC_ASSERT(offsetof(FB_SR, bErrAck) == 17, "offset of FB_SR.bErrAck");
+SL_STATIC_ASSERT(offsetof(FB_SR, aReserved2) == 18, "offset of FB_SR.aReserved2");
+SL_STATIC_ASSERT(offsetof(FB_SR, wInputActive) == 20, "offset of FB_SR.wInputActive");
+SL_STATIC_ASSERT(offsetof(FB_SR, wInputNegated) == 22, "offset of FB_SR.wInputNegated");
+SL_STATIC_ASSERT(offsetof(FB_SR, aReserved3) == 24, "offset of FB_SR.aReserved3");
+SL_STATIC_ASSERT(offsetof(FB_SR, bSrOut) == 25, "offset of FB_SR.bSrOut");
+SL_STATIC_ASSERT(offsetof(FB_SR, aReserved4) == 26, "offset of FB_SR.aReserved4");
+SL_STATIC_ASSERT(offsetof(FB_SR, nState) == 32, "offset of FB_SR.nState");
+SL_STATIC_ASSERT(offsetof(FB_SR, aReserved5) == 33, "offset of FB_SR.aReserved5");
+SL_STATIC_ASSERT(offsetof(FB_SR, nDiag) == 34, "offset of FB_SR.nDiag");
+SL_STATIC_ASSERT(offsetof(FB_SR, aReserved6) == 36, "offset of FB_SR.aReserved6");
+SL_STATIC_ASSERT(offsetof(FB_SR, stPrivate) == 40, "offset of FB_SR.stPrivate");
+SL_STATIC_ASSERT(sizeof(FB_SR) == 72, "size of FB_SR");
 SL_STATIC_ASSERT(offsetof(SL_GROUP_PRIVATE, dwCtrl) == 0, "offset of SL_GROUP_PRIVATE.dwCtrl");
 SL_STATIC_ASSERT(offsetof(SL_GROUP_PRIVATE, dwDiag) == 4, "offset of SL_GROUP_PRIVATE.dwDiag");
 SL_STATIC_ASSERT(offsetof(SL_GROUP_PRIVATE, dwMembers) == 8, "offset of SL_GROUP_PRIVATE.dwMembers");

@@ -6,7 +6,10 @@
 use crate::group::{self, Member, Members, SL_LINK_BOOL};
 use crate::prim::envelope::{self, Block};
 use crate::types::*;
-use crate::{FB_AND, FB_ESTOP, FB_MON, FB_OPMODE, FB_OR, FB_TWOHAND, SL_GROUP, SL_LINK, SL_MEMBER};
+use crate::{
+    FB_AND, FB_DECOUPLE, FB_EDM, FB_ESTOP, FB_MON, FB_OPMODE, FB_OR, FB_RS, FB_SR, FB_TWOHAND,
+    FB_XOR, SL_GROUP, SL_LINK, SL_MEMBER,
+};
 use core::ffi::{c_char, c_void};
 
 /// Runs `$body`; a panic becomes `$on_panic` instead of unwinding into C.
@@ -187,6 +190,76 @@ pub extern "C" fn sl_twohand_cycle(fb: *mut FB_TWOHAND, tNow: u32) -> i32 {
     block_call(fb, |fb| envelope::cycle(fb, tNow))
 }
 
+/// Validates and latches the parameters of an FB_XOR and resets it to power-up (STOP,
+/// outputs FALSE). Does not modify any input field. Returns SL_OK or SL_E_CONFIG.
+#[no_mangle]
+pub extern "C" fn sl_xor_init(fb: *mut FB_XOR) -> i32 {
+    block_call(fb, envelope::init)
+}
+
+/// One task cycle of an FB_XOR at `tNow` (monotonic ms, may wrap at 2^32).
+#[no_mangle]
+#[allow(non_snake_case)]
+pub extern "C" fn sl_xor_cycle(fb: *mut FB_XOR, tNow: u32) -> i32 {
+    block_call(fb, |fb| envelope::cycle(fb, tNow))
+}
+
+/// Validates and latches the parameters of an FB_DECOUPLE and resets it to power-up (STOP,
+/// outputs FALSE). Does not modify any input field. Returns SL_OK or SL_E_CONFIG.
+#[no_mangle]
+pub extern "C" fn sl_decouple_init(fb: *mut FB_DECOUPLE) -> i32 {
+    block_call(fb, envelope::init)
+}
+
+/// One task cycle of an FB_DECOUPLE at `tNow` (monotonic ms, may wrap at 2^32).
+#[no_mangle]
+#[allow(non_snake_case)]
+pub extern "C" fn sl_decouple_cycle(fb: *mut FB_DECOUPLE, tNow: u32) -> i32 {
+    block_call(fb, |fb| envelope::cycle(fb, tNow))
+}
+
+/// Validates and latches the parameters of an FB_EDM and resets it to power-up (STOP,
+/// outputs FALSE). Does not modify any input field. Returns SL_OK or SL_E_CONFIG.
+#[no_mangle]
+pub extern "C" fn sl_edm_init(fb: *mut FB_EDM) -> i32 {
+    block_call(fb, envelope::init)
+}
+
+/// One task cycle of an FB_EDM at `tNow` (monotonic ms, may wrap at 2^32).
+#[no_mangle]
+#[allow(non_snake_case)]
+pub extern "C" fn sl_edm_cycle(fb: *mut FB_EDM, tNow: u32) -> i32 {
+    block_call(fb, |fb| envelope::cycle(fb, tNow))
+}
+
+/// Validates and latches the parameters of an FB_RS and resets it to power-up (STOP,
+/// outputs FALSE). Does not modify any input field. Returns SL_OK or SL_E_CONFIG.
+#[no_mangle]
+pub extern "C" fn sl_rs_init(fb: *mut FB_RS) -> i32 {
+    block_call(fb, envelope::init)
+}
+
+/// One task cycle of an FB_RS at `tNow` (monotonic ms, may wrap at 2^32).
+#[no_mangle]
+#[allow(non_snake_case)]
+pub extern "C" fn sl_rs_cycle(fb: *mut FB_RS, tNow: u32) -> i32 {
+    block_call(fb, |fb| envelope::cycle(fb, tNow))
+}
+
+/// Validates and latches the parameters of an FB_SR and resets it to power-up (STOP,
+/// outputs FALSE). Does not modify any input field. Returns SL_OK or SL_E_CONFIG.
+#[no_mangle]
+pub extern "C" fn sl_sr_init(fb: *mut FB_SR) -> i32 {
+    block_call(fb, envelope::init)
+}
+
+/// One task cycle of an FB_SR at `tNow` (monotonic ms, may wrap at 2^32).
+#[no_mangle]
+#[allow(non_snake_case)]
+pub extern "C" fn sl_sr_cycle(fb: *mut FB_SR, tNow: u32) -> i32 {
+    block_call(fb, |fb| envelope::cycle(fb, tNow))
+}
+
 /// The one dispatch from a block type tag to the block: every group operation on a member
 /// goes through here.
 fn member_dyn<'a>(ty: u16, p: *mut c_void) -> Option<&'a mut dyn Member> {
@@ -200,6 +273,11 @@ fn member_dyn<'a>(ty: u16, p: *mut c_void) -> Option<&'a mut dyn Member> {
         SL_TYPE_OR => cast::<FB_OR>(p),
         SL_TYPE_OPMODE => cast::<FB_OPMODE>(p),
         SL_TYPE_TWOHAND => cast::<FB_TWOHAND>(p),
+        SL_TYPE_XOR => cast::<FB_XOR>(p),
+        SL_TYPE_DECOUPLE => cast::<FB_DECOUPLE>(p),
+        SL_TYPE_EDM => cast::<FB_EDM>(p),
+        SL_TYPE_RS => cast::<FB_RS>(p),
+        SL_TYPE_SR => cast::<FB_SR>(p),
         _ => None,
     }
 }

@@ -153,6 +153,34 @@ pub const SL_TYPE_OPMODE: u16 = 7;
 /// Block type tag of FB_TWOHAND.
 pub const SL_TYPE_TWOHAND: u16 = 8;
 
+/// Block type tag of FB_XOR.
+pub const SL_TYPE_XOR: u16 = 5;
+/// Block type tag of FB_DECOUPLE.
+pub const SL_TYPE_DECOUPLE: u16 = 6;
+/// Block type tag of FB_EDM.
+pub const SL_TYPE_EDM: u16 = 10;
+/// Block type tag of FB_RS.
+pub const SL_TYPE_RS: u16 = 11;
+/// Block type tag of FB_SR.
+pub const SL_TYPE_SR: u16 = 12;
+
+/// FB_EDM state MONOFF (manual §4.9.2: 14): Mon1 is FALSE, switch-off monitoring.
+pub const SL_STATE_EDM_MONOFF: u8 = 14;
+/// FB_EDM state MONON (manual §4.9.2: 15): Mon1 is TRUE, switch-on monitoring.
+pub const SL_STATE_EDM_MONON: u8 = 15;
+/// FB_RS state SET (manual §4.10.2: 9): the output RsOut is TRUE.
+pub const SL_STATE_RS_SET: u8 = 9;
+/// FB_SR state SET (manual §4.11.2: 9): the output SrOut is TRUE.
+pub const SL_STATE_SR_SET: u8 = 9;
+
+/// FB_EDM diag bit 0 (manual §4.9.2): switch-off timer elapsed.
+pub const SL_DIAG_EDM_SWITCH_OFF: u16 = 1 << 0;
+/// FB_EDM diag bit 1 (manual §4.9.2): switch-on timer elapsed.
+pub const SL_DIAG_EDM_SWITCH_ON: u16 = 1 << 1;
+
+/// Largest tSwitchOnTime / tSwitchOffTime of FB_EDM in ms (manual §4.9.1: "maximum 10000 ms").
+pub const SL_EDM_TIME_MAX: u32 = 10_000;
+
 /// Largest time parameter of FB_ESTOP and FB_MON, and largest discrepancy time of FB_OPMODE
 /// and FB_TWOHAND, in ms (see docs/semantics.md C10, O3, H3).
 pub const SL_TIME_PARAM_MAX: u32 = 65_535;

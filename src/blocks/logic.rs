@@ -4,7 +4,9 @@
 //! FALSE outputs). No block errors of their own: ERROR (4) only comes from the envelope.
 
 use super::and::FB_AND;
+use super::decouple::FB_DECOUPLE;
 use super::or::FB_OR;
+use super::xor::FB_XOR;
 use crate::prim::envelope::Block;
 use crate::prim::header::{param_crc, SL_PRIVATE_HEADER};
 use crate::types::*;
@@ -152,3 +154,5 @@ macro_rules! logic_block {
 
 logic_block!(FB_AND);
 logic_block!(FB_OR);
+logic_block!(FB_XOR);
+logic_block!(FB_DECOUPLE);

@@ -1,16 +1,22 @@
 //! The function blocks. One file per block, citing its manual section; blocks that share a
 //! state machine share it: ESTOP and MON (manual §4.4, §4.5) in `guard`, the
-//! combinational blocks (AND, OR, …) in `logic`. OPMODE (§4.3) and TWOHAND (§4.7) have
-//! state machines of their own.
+//! combinational blocks (AND, OR, XOR, DECOUPLE) in `logic`, RS and SR (§4.10, §4.11) in
+//! `flipflop`. OPMODE (§4.3), TWOHAND (§4.7) and EDM (§4.9) have state machines of their own.
 
 pub mod and;
+pub mod decouple;
+pub mod edm;
 pub mod estop;
+pub mod flipflop;
 pub mod guard;
 pub mod logic;
 pub mod mon;
 pub mod opmode;
 pub mod or;
+pub mod rs;
+pub mod sr;
 pub mod twohand;
+pub mod xor;
 
 /// What the C ABI and HMIs need to know about a block type without an instance.
 #[derive(Clone, Copy, Debug)]
@@ -42,6 +48,11 @@ pub static BLOCKS: &[BlockInfo] = &[
     or::INFO,
     opmode::INFO,
     twohand::INFO,
+    xor::INFO,
+    decouple::INFO,
+    edm::INFO,
+    rs::INFO,
+    sr::INFO,
 ];
 
 /// The block type with this tag.

@@ -1,0 +1,106 @@
+//! FB RS — manual §4.10: reset / set memory, Reset dominant.
+//! Logic 1 at Set with logic 0 at Reset → output 1; logic 0 at Set with logic 1 at Reset →
+//! output 0; both 1 → Reset dominant (output 0); both 0 → the output keeps its state.
+//! States STOP (2), SAFE (3), SET (9); diag always 0; no error output.
+//! The state machine is shared with FB SR (`flipflop`).
+
+use super::flipflop::{FlipFlopBlock, FlipFlopParams, SL_FLIPFLOP_PRIVATE};
+use super::{BlockInfo, ERROR, RESET, SAFE, STOP};
+use crate::types::*;
+use core::mem::{offset_of, size_of};
+
+/// FB RS instance (ABI §3, §9). Inputs at the manual's offsets (§4.10.2), output base 24.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+#[allow(non_snake_case, non_camel_case_types)]
+pub struct FB_RS {
+    /// Offset 0. Reserved, keep 0.
+    pub aReserved0: [u8; 8],
+    /// Offset 8. Reset: logic 1 switches the output off (dominant).
+    pub bReset: SL_BOOL,
+    /// Offset 9. Set: logic 1 switches the output on.
+    pub bSet: SL_BOOL,
+    /// Offset 10. Reserved, keep 0.
+    pub aReserved1: [u8; 6],
+    /// Offset 16. FbRun of the owning group.
+    pub bRun: SL_BOOL,
+    /// Offset 17. ErrAck of the owning group.
+    pub bErrAck: SL_BOOL,
+    /// Offset 18. Reserved, keep 0.
+    pub aReserved2: [u8; 2],
+    /// Offset 20. Bit 0: Reset is active, bit 1: Set is active (at least one).
+    pub wInputActive: u16,
+    /// Offset 22. Same bits: the input is a make contact (negated before evaluation).
+    pub wInputNegated: u16,
+    /// Offset 24 (output base + 0). Reserved.
+    pub aReserved3: [u8; 1],
+    /// Offset 25 (output base + 1). TRUE in SET; the safe state is FALSE.
+    pub bRsOut: SL_BOOL,
+    /// Offset 26. Reserved.
+    pub aReserved4: [u8; 6],
+    /// Offset 32. The manual's status value (SL_STATE_*).
+    pub nState: u8,
+    /// Offset 33. Reserved.
+    pub aReserved5: [u8; 1],
+    /// Offset 34. Diagnostic bits (only the library bits 13-15).
+    pub nDiag: u16,
+    /// Offset 36. Reserved.
+    pub aReserved6: [u8; 4],
+    /// Offset 40. Private state, 32 bytes: never write it.
+    pub stPrivate: SL_FLIPFLOP_PRIVATE,
+}
+
+// The ABI's offsets (ABI §9, manual §4.10.2), checked at compile time.
+const _: () = {
+    assert!(offset_of!(FB_RS, bReset) == 8);
+    assert!(offset_of!(FB_RS, bSet) == 9);
+    assert!(offset_of!(FB_RS, bRun) == 16);
+    assert!(offset_of!(FB_RS, bErrAck) == 17);
+    assert!(offset_of!(FB_RS, wInputActive) == 20);
+    assert!(offset_of!(FB_RS, wInputNegated) == 22);
+    assert!(offset_of!(FB_RS, bRsOut) == 24 + 1);
+    assert!(offset_of!(FB_RS, nState) == 32);
+    assert!(offset_of!(FB_RS, nDiag) == 34);
+    assert!(offset_of!(FB_RS, stPrivate) == 40);
+    assert!(size_of::<FB_RS>() == 72);
+    assert!(core::mem::align_of::<FB_RS>() == 4);
+};
+
+/// Type tag, name and diag texts (manual §4.10.2: diag always 0).
+pub const INFO: BlockInfo = BlockInfo {
+    tag: SL_TYPE_RS,
+    name: "RS",
+    states: &[STOP, SAFE, ERROR, RESET, (SL_STATE_RS_SET, "SET\0")],
+    diag: &[],
+};
+
+crate::impl_member!(FB_RS, [bReset, bSet], [bRsOut]);
+
+impl FlipFlopBlock for FB_RS {
+    const TAG: u16 = 0x5E75;
+    const SET_DOMINANT: bool = false;
+
+    fn private(&self) -> &SL_FLIPFLOP_PRIVATE {
+        &self.stPrivate
+    }
+    fn private_mut(&mut self) -> &mut SL_FLIPFLOP_PRIVATE {
+        &mut self.stPrivate
+    }
+    fn params(&self) -> FlipFlopParams {
+        FlipFlopParams {
+            active: self.wInputActive,
+            negated: self.wInputNegated,
+        }
+    }
+    fn raw(&self) -> [u8; 2] {
+        [self.bReset, self.bSet]
+    }
+    fn control(&self) -> (u8, u8) {
+        (self.bRun, self.bErrAck)
+    }
+    fn set_outputs(&mut self, out: bool, state: u8, diag: u16) {
+        self.bRsOut = u8::from(out);
+        self.nState = state;
+        self.nDiag = diag;
+    }
+}
