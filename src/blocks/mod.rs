@@ -1,6 +1,7 @@
 //! The function blocks. One file per block, citing its manual section; blocks that share a
 //! state machine share it: ESTOP and MON (manual §4.4, §4.5) in `guard`, the
-//! combinational blocks (AND, OR, …) in `logic`.
+//! combinational blocks (AND, OR, …) in `logic`, the timers TON, TON2 and TOF (manual
+//! §4.12–§4.14) in `timer`.
 
 pub mod and;
 pub mod estop;
@@ -8,6 +9,10 @@ pub mod guard;
 pub mod logic;
 pub mod mon;
 pub mod or;
+pub mod timer;
+pub mod tof;
+pub mod ton;
+pub mod ton2;
 
 /// What the C ABI and HMIs need to know about a block type without an instance.
 #[derive(Clone, Copy, Debug)]
@@ -32,7 +37,15 @@ pub const START: (u8, &str) = (crate::types::SL_STATE_START, "START\0");
 pub const DELAYOUT: (u8, &str) = (crate::types::SL_STATE_DELAYOUT, "DELAYOUT\0");
 
 /// Every block type, in tag order.
-pub static BLOCKS: &[BlockInfo] = &[estop::INFO, mon::INFO, and::INFO, or::INFO];
+pub static BLOCKS: &[BlockInfo] = &[
+    estop::INFO,
+    mon::INFO,
+    and::INFO,
+    or::INFO,
+    ton::INFO,
+    ton2::INFO,
+    tof::INFO,
+];
 
 /// The block type with this tag.
 pub fn info(tag: u16) -> Option<&'static BlockInfo> {
