@@ -634,3 +634,38 @@ proptest! {
         }
     }
 }
+
+/// T13: the block's ERROR is the library's global shutdown: the group enters ERROR
+/// (FBERROR) as soon as it runs, and every member is stopped.
+#[test]
+fn refused_restore_stops_the_group() {
+    use safelogic::group::{self, SL_GROUP_DIAG_FBERROR};
+    let mut tof = FB_TOF {
+        tDelay: 1000,
+        wInputActive: 1,
+        bTofIn1: 1,
+        ..Default::default()
+    };
+    assert_eq!(tof.init(), SL_OK);
+    let mut f = ton2(1000, REMAINING);
+    let mut g = SL_GROUP::default();
+    assert_eq!(group::init(&mut g, 2, 0), SL_OK);
+    for _ in 0..2 {
+        group::reserve_member(&mut g).unwrap();
+    }
+    assert_eq!(ffi::sl_ton2_restore_elapsed(&mut f, 5000), SL_E_RESTORE);
+    g.bRun = 1;
+    let mut ms: [&mut dyn Member; 2] = [&mut tof, &mut f];
+    group::cycle(&mut g, &mut ms[..], &[], 0);
+    assert_eq!((g.nState, g.nDiag), (SL_STATE_ERROR, SL_GROUP_DIAG_FBERROR));
+    assert_eq!(g.nFailedMember, 1);
+    assert_eq!(ms[0].state(), SL_STATE_STOP);
+    assert_eq!(ms[0].output(offset_of!(FB_TOF, bTofOut) as u16), Some(0));
+    // One ErrAck sequence restarts the group; TON2 starts with a full delay.
+    g.bErrAck = 1;
+    group::cycle(&mut g, &mut ms[..], &[], 1);
+    assert_eq!(g.nState, SL_STATE_RESET);
+    g.bErrAck = 0;
+    group::cycle(&mut g, &mut ms[..], &[], 2);
+    assert_eq!(g.nState, SL_STATE_RUN);
+}

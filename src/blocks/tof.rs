@@ -4,7 +4,7 @@
 //! TRUE while TofIn is TRUE and stays TRUE until TofIn has been FALSE for the delay time; a
 //! TRUE TofIn before that keeps it on. bRun FALSE (STOP) and ERROR switch it off at once.
 //! States RUN (1), STOP (2), SAFE (3), DELAYOUT (8); the manual's diag value is always 0.
-//! The state machine is the shared timer (`timer`, docs/semantics.md T1–T9).
+//! The state machine is the shared timer (`timer`, docs/semantics.md T1–T5, T7–T9, T16).
 
 use super::timer::{TimerBlock, TimerParams, SL_TIMER_PRIVATE};
 use super::{BlockInfo, DELAYOUT, ERROR, RESET, RUN, SAFE, STOP};

@@ -3,7 +3,7 @@
 //! TonOut becomes TRUE when TonIn has been TRUE for the delay time; TonIn FALSE switches it
 //! off at once and discards the running delay. States RUN (1), STOP (2), SAFE (3), DELAYIN
 //! (9); the manual's diag value is always 0. The state machine is the shared timer
-//! (`timer`, docs/semantics.md T1–T9).
+//! (`timer`, docs/semantics.md T1–T6, T8, T9, T16).
 
 use super::timer::{TimerBlock, TimerParams, SL_TIMER_PRIVATE};
 use super::{BlockInfo, ERROR, RESET, RUN, SAFE, STOP};
