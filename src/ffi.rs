@@ -227,8 +227,8 @@ pub extern "C" fn sl_ton2_get_elapsed(fb: *const FB_TON2, pElapsedMs: *mut u32) 
 }
 
 /// Hands an FB_TON2 the elapsed time persisted before a power cycle. Call it after
-/// `sl_ton2_init` and before the first `sl_ton2_cycle` with bRun TRUE (the block must be in
-/// STOP). The value is used when TonIn next rises with Enable TRUE and
+/// `sl_ton2_init` (which resets the stored value to 0) and before the first `sl_ton2_cycle`
+/// with bRun TRUE (the block must be in STOP). The value is used when TonIn next rises with Enable TRUE and
 /// SL_OPT_TON2_REMAINING_TIME set: the delay then starts with tDelay - nElapsedMs.
 /// Returns SL_OK (stored); SL_E_CONFIG (latched parameters invalid, nothing stored);
 /// SL_E_RESTORE (nElapsedMs > the latched tDelay, the manual's global shutdown 0x3510, or
