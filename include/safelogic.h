@@ -112,6 +112,15 @@
 #define SL_E_FULL (-9)
 
 /*
+ Library extension (FB_TON2, "Starts with remaining time"): a restored elapsed time was
+ refused, because it is greater than the latched tDelay (the manual's global shutdown,
+ error code 0x3510) or because `sl_ton2_restore_elapsed` was called while the block was
+ not in STOP. nState = ERROR (4), output FALSE, diag bit 12 (SL_DIAG_TON2_RESTORE); the
+ stored elapsed time is discarded (0), so one ErrAck sequence leaves the error.
+ */
+#define SL_E_RESTORE (-10)
+
+/*
  EDM1 feedback loop active.
  */
 #define SL_OPT_EDM1 (1 << 0)
@@ -135,6 +144,12 @@
  Manual function test (MON).
  */
 #define SL_OPT_FUNCTION_TEST (1 << 4)
+
+/*
+ FB_TON2 "Starts with remaining time" (manual §4.13): with Enable TRUE when TonIn rises,
+ the timer starts with tDelay minus the stored elapsed time.
+ */
+#define SL_OPT_TON2_REMAINING_TIME (1 << 8)
 
 /*
  Diag bit 0: discrepancy error input group 1.
@@ -209,6 +224,12 @@
  to bit 2). Bits 8/9 are SL_DIAG_SAFE_IN_DISC1/2.
  */
 #define SL_DIAG_TWOHAND_SAFE_IN_PAIRS (1 << 10)
+
+/*
+ Library extension, FB_TON2 diag bit 12: the restored elapsed time was refused
+ (SL_E_RESTORE; the manual's global shutdown 0x3510).
+ */
+#define SL_DIAG_TON2_RESTORE (1 << 12)
 
 /*
  Library extension, diag bit 13: a parameter changed outside STOP (SL_E_PARAM_CHANGED).
@@ -289,6 +310,16 @@
 #define SL_STATE_TWOHAND_RELEASE 13
 
 /*
+ FB_TON state DELAYIN (9): TonIn is TRUE and the delay has not yet expired.
+ */
+#define SL_STATE_TON_DELAYIN 9
+
+/*
+ FB_TON2 state DELAYIN (9): TonIn is TRUE and the delay has not yet expired.
+ */
+#define SL_STATE_TON2_DELAYIN 9
+
+/*
  Block type tag of FB_ESTOP (`SL_MEMBER.nType`, `sl_diag_text`).
  */
 #define SL_TYPE_ESTOP 1
@@ -317,6 +348,21 @@
  Block type tag of FB_TWOHAND.
  */
 #define SL_TYPE_TWOHAND 8
+
+/*
+ Block type tag of FB_TON.
+ */
+#define SL_TYPE_TON 13
+
+/*
+ Block type tag of FB_TON2.
+ */
+#define SL_TYPE_TON2 14
+
+/*
+ Block type tag of FB_TOF.
+ */
+#define SL_TYPE_TOF 15
 
 /*
  Block type tag of FB_XOR.
@@ -388,6 +434,42 @@
  Largest tDiscTimePairs of FB_TWOHAND in ms (manual §4.7.1: "up to 2500 ms").
  */
 #define SL_TWOHAND_PAIRS_TIME_MAX 2500
+
+/*
+ `nTimeBase` of FB_TON/FB_TON2/FB_TOF: automatic, the smallest timebase whose range
+ holds tDelay (the manual: "automatically selected ... according to the set time").
+ */
+#define SL_TIMEBASE_AUTO 0
+
+/*
+ `nTimeBase` 1 ms: tDelay 1 to 60,000 ms in 1 ms steps.
+ */
+#define SL_TIMEBASE_1MS 1
+
+/*
+ `nTimeBase` 10 ms: tDelay 10 to 600,000 ms in 10 ms steps.
+ */
+#define SL_TIMEBASE_10MS 10
+
+/*
+ `nTimeBase` 100 ms (EL6910 SW 04): tDelay 100 ms to 6,000 s in 100 ms steps.
+ */
+#define SL_TIMEBASE_100MS 100
+
+/*
+ `nTimeBase` 1000 ms (EL6910 SW 04): tDelay 1 s to 60,000 s in 1 s steps.
+ */
+#define SL_TIMEBASE_1000MS 1000
+
+/*
+ Most timebase steps in a timer delay (tDelay / timebase).
+ */
+#define SL_TIMER_STEPS_MAX 60000
+
+/*
+ Largest timer delay in ms (60,000 s; 60,000 steps of 1000 ms).
+ */
+#define SL_TIMER_DELAY_MAX 60000000
 
 /*
  IEC 61131-3 BOOL: 0 = FALSE, 1 = TRUE, any other byte is an invalid BOOL (ABI §2).
@@ -1738,6 +1820,309 @@ typedef struct FB_SR {
 } FB_SR;
 
 /*
+ Private state of FB_TON, FB_TON2 and FB_TOF (48 bytes). Never written by the user.
+
+ Unlike the guard blocks, the timer start carries a complement copy: for TON the timer
+ decides when the output switches ON, so a corrupted start value must not go unnoticed
+ (docs/semantics.md T9). The TON2 stored elapsed time has one as well.
+ */
+typedef struct SL_TIMER_PRIVATE {
+  /*
+   Common head; `tPhase` is the timer start.
+   */
+  struct SL_PRIVATE_HEADER stHeader;
+  /*
+   Latched `tDelay` in ms.
+   */
+  uint32_t dwDelay;
+  /*
+   Latched `nTimeBase` as written (0 = automatic).
+   */
+  uint16_t wTimeBase;
+  uint8_t aReserved[2];
+  /*
+   Complement of `stHeader.tPhase`.
+   */
+  uint32_t tPhaseCheck;
+  /*
+   FB_TON2: the stored elapsed time in ms (the manual's "ExpiredTime" in the FRAM).
+   */
+  uint32_t tElapsed;
+  /*
+   Complement of `tElapsed`.
+   */
+  uint32_t tElapsedCheck;
+} SL_TIMER_PRIVATE;
+
+/*
+ FB TON instance (ABI §3, §9). Input at the manual's offset (§4.12.2), output base 32.
+ */
+typedef struct FB_TON {
+  /*
+   Offset 0. Reserved, keep 0.
+   */
+  uint8_t aReserved0[8];
+  /*
+   Offset 8. TonIn1: the input whose TRUE level is passed on after the delay (break or
+   make contact: wInputNegated bit 0).
+   */
+  SL_BOOL bTonIn1;
+  /*
+   Offset 9. Reserved, keep 0.
+   */
+  uint8_t aReserved1[7];
+  /*
+   Offset 16. FbRun of the owning group: TRUE = the block executes.
+   */
+  SL_BOOL bRun;
+  /*
+   Offset 17. ErrAck of the owning group.
+   */
+  SL_BOOL bErrAck;
+  /*
+   Offset 18. Reserved, keep 0.
+   */
+  uint8_t aReserved2[2];
+  /*
+   Offset 20. Switch-on delay in ms: 1 to 60,000 steps of the timebase (at most
+   60,000,000 ms = 60,000 s), a whole number of steps.
+   */
+  uint32_t tDelay;
+  /*
+   Offset 24. Timebase in ms: SL_TIMEBASE_1MS, _10MS, _100MS, _1000MS, or
+   SL_TIMEBASE_AUTO (0) = the smallest one whose range holds tDelay.
+   */
+  uint16_t nTimeBase;
+  /*
+   Offset 26. Bit 0 must be set: TonIn1 is active.
+   */
+  uint16_t wInputActive;
+  /*
+   Offset 28. Bit 0 set: TonIn1 is a make contact (negated before evaluation).
+   */
+  uint16_t wInputNegated;
+  /*
+   Offset 30. Reserved, keep 0.
+   */
+  uint8_t aReserved3[2];
+  /*
+   Offset 32 (output base + 0). Reserved (the manual's error output is inactive).
+   */
+  uint8_t aReserved4[1];
+  /*
+   Offset 33 (output base + 1). TonOut: TRUE in RUN only.
+   */
+  SL_BOOL bTonOut;
+  /*
+   Offset 34. Reserved.
+   */
+  uint8_t aReserved5[6];
+  /*
+   Offset 40. The manual's status value (SL_STATE_*, SL_STATE_TON_DELAYIN).
+   */
+  uint8_t nState;
+  /*
+   Offset 41. Reserved.
+   */
+  uint8_t aReserved6[1];
+  /*
+   Offset 42. Diagnostic bits (only the library bits 13-15).
+   */
+  uint16_t nDiag;
+  /*
+   Offset 44. Reserved.
+   */
+  uint8_t aReserved7[4];
+  /*
+   Offset 48. Private state, 48 bytes: never write it.
+   */
+  struct SL_TIMER_PRIVATE stPrivate;
+} FB_TON;
+
+/*
+ FB TON2 instance (ABI §3, §9). Inputs at the manual's offsets (§4.13.2), output base 40.
+ */
+typedef struct FB_TON2 {
+  /*
+   Offset 0. Reserved, keep 0.
+   */
+  uint8_t aReserved0[8];
+  /*
+   Offset 8. TonIn1: the input whose TRUE level is passed on after the delay (break or
+   make contact: wInputNegated bit 0).
+   */
+  SL_BOOL bTonIn1;
+  /*
+   Offset 9. Enable: read when TonIn1 rises, only with SL_OPT_TON2_REMAINING_TIME.
+   TRUE = start with the remaining time, FALSE (or invalid) = start with tDelay.
+   */
+  SL_BOOL bEnable;
+  /*
+   Offset 10. Reserved, keep 0.
+   */
+  uint8_t aReserved1[6];
+  /*
+   Offset 16. FbRun of the owning group: TRUE = the block executes.
+   */
+  SL_BOOL bRun;
+  /*
+   Offset 17. ErrAck of the owning group.
+   */
+  SL_BOOL bErrAck;
+  /*
+   Offset 18. Reserved, keep 0.
+   */
+  uint8_t aReserved2[2];
+  /*
+   Offset 20. Switch-on delay in ms: 1 to 60,000 steps of the timebase (at most
+   60,000,000 ms = 60,000 s), a whole number of steps.
+   */
+  uint32_t tDelay;
+  /*
+   Offset 24. Timebase in ms: SL_TIMEBASE_1MS, _10MS, _100MS, _1000MS, or
+   SL_TIMEBASE_AUTO (0) = the smallest one whose range holds tDelay.
+   */
+  uint16_t nTimeBase;
+  /*
+   Offset 26. Bit 0 must be set: TonIn1 is active (Enable has no bit).
+   */
+  uint16_t wInputActive;
+  /*
+   Offset 28. Bit 0 set: TonIn1 is a make contact (negated before evaluation).
+   */
+  uint16_t wInputNegated;
+  /*
+   Offset 30. Reserved, keep 0.
+   */
+  uint8_t aReserved3[2];
+  /*
+   Offset 32. SL_OPT_TON2_REMAINING_TIME ("Starts with remaining time").
+   */
+  uint32_t dwOptions;
+  /*
+   Offset 36. Reserved, keep 0.
+   */
+  uint8_t aReserved4[4];
+  /*
+   Offset 40 (output base + 0). Reserved (the manual's error output is inactive).
+   */
+  uint8_t aReserved5[1];
+  /*
+   Offset 41 (output base + 1). TonOut: TRUE in RUN only.
+   */
+  SL_BOOL bTonOut;
+  /*
+   Offset 42. Reserved.
+   */
+  uint8_t aReserved6[6];
+  /*
+   Offset 48. The manual's status value (SL_STATE_*, SL_STATE_TON2_DELAYIN).
+   */
+  uint8_t nState;
+  /*
+   Offset 49. Reserved.
+   */
+  uint8_t aReserved7[1];
+  /*
+   Offset 50. Diagnostic bits (SL_DIAG_TON2_RESTORE and the library bits 13-15).
+   */
+  uint16_t nDiag;
+  /*
+   Offset 52. Reserved.
+   */
+  uint8_t aReserved8[4];
+  /*
+   Offset 56. Private state, 48 bytes: never write it.
+   */
+  struct SL_TIMER_PRIVATE stPrivate;
+} FB_TON2;
+
+/*
+ FB TOF instance (ABI §3, §9). Input at the manual's offset (§4.14.2), output base 32.
+ */
+typedef struct FB_TOF {
+  /*
+   Offset 0. Reserved, keep 0.
+   */
+  uint8_t aReserved0[8];
+  /*
+   Offset 8. TofIn1: TRUE switches TofOut on at once; FALSE switches it off after the
+   delay (break or make contact: wInputNegated bit 0).
+   */
+  SL_BOOL bTofIn1;
+  /*
+   Offset 9. Reserved, keep 0.
+   */
+  uint8_t aReserved1[7];
+  /*
+   Offset 16. FbRun of the owning group: TRUE = the block executes.
+   */
+  SL_BOOL bRun;
+  /*
+   Offset 17. ErrAck of the owning group.
+   */
+  SL_BOOL bErrAck;
+  /*
+   Offset 18. Reserved, keep 0.
+   */
+  uint8_t aReserved2[2];
+  /*
+   Offset 20. Switch-off delay in ms: 1 to 60,000 steps of the timebase (at most
+   60,000,000 ms = 60,000 s), a whole number of steps.
+   */
+  uint32_t tDelay;
+  /*
+   Offset 24. Timebase in ms: SL_TIMEBASE_1MS, _10MS, _100MS, _1000MS, or
+   SL_TIMEBASE_AUTO (0) = the smallest one whose range holds tDelay.
+   */
+  uint16_t nTimeBase;
+  /*
+   Offset 26. Bit 0 must be set: TofIn1 is active.
+   */
+  uint16_t wInputActive;
+  /*
+   Offset 28. Bit 0 set: TofIn1 is a make contact (negated before evaluation).
+   */
+  uint16_t wInputNegated;
+  /*
+   Offset 30. Reserved, keep 0.
+   */
+  uint8_t aReserved3[2];
+  /*
+   Offset 32 (output base + 0). Reserved (the manual's error output is inactive).
+   */
+  uint8_t aReserved4[1];
+  /*
+   Offset 33 (output base + 1). TofOut: TRUE in RUN and DELAYOUT.
+   */
+  SL_BOOL bTofOut;
+  /*
+   Offset 34. Reserved.
+   */
+  uint8_t aReserved5[6];
+  /*
+   Offset 40. The manual's status value (SL_STATE_*).
+   */
+  uint8_t nState;
+  /*
+   Offset 41. Reserved.
+   */
+  uint8_t aReserved6[1];
+  /*
+   Offset 42. Diagnostic bits (only the library bits 13-15).
+   */
+  uint16_t nDiag;
+  /*
+   Offset 44. Reserved.
+   */
+  uint8_t aReserved7[4];
+  /*
+   Offset 48. Private state, 48 bytes: never write it.
+   */
+  struct SL_TIMER_PRIVATE stPrivate;
+} FB_TOF;
+
+/*
  Private state of a group (32 bytes): data words and their complements.
  */
 typedef struct SL_GROUP_PRIVATE {
@@ -2036,6 +2421,64 @@ int32_t sl_sr_init(struct FB_SR *fb);
  One task cycle of an FB_SR at `tNow` (monotonic ms, may wrap at 2^32).
  */
 int32_t sl_sr_cycle(struct FB_SR *fb, uint32_t tNow);
+
+/*
+ Validates and latches the parameters of an FB_TON and resets it to power-up (STOP).
+ Returns SL_OK or SL_E_CONFIG (tDelay 0, above 60,000 timebase steps or not a whole
+ number of them, an unknown nTimeBase, TonIn1 not active, unknown bits).
+ */
+int32_t sl_ton_init(struct FB_TON *fb);
+
+/*
+ One task cycle of an FB_TON at `tNow` (monotonic ms, may wrap at 2^32).
+ */
+int32_t sl_ton_cycle(struct FB_TON *fb, uint32_t tNow);
+
+/*
+ Validates and latches the parameters of an FB_TON2 and resets it to power-up (STOP).
+ Returns SL_OK or SL_E_CONFIG (as sl_ton_init; unknown option bits).
+ */
+int32_t sl_ton2_init(struct FB_TON2 *fb);
+
+/*
+ One task cycle of an FB_TON2 at `tNow` (monotonic ms, may wrap at 2^32). Returns
+ SL_E_RESTORE when TonIn rises with Enable TRUE and SL_OPT_TON2_REMAINING_TIME set while
+ the stored elapsed time is greater than the latched tDelay (the block is then in ERROR).
+ */
+int32_t sl_ton2_cycle(struct FB_TON2 *fb, uint32_t tNow);
+
+/*
+ Writes the elapsed time an FB_TON2 has stored (ms; the manual's "ExpiredTime") to
+ `*pElapsedMs`, for the host to persist across a power cycle. Call it after
+ `sl_ton2_cycle` (every cycle, or whenever the value changed) and write the value to
+ non-volatile memory. Any state; a never-initialised instance gives 0. Returns SL_OK;
+ SL_E_NULL / SL_E_ALIGNMENT for a bad pointer; SL_E_CORRUPT (nothing written) when the
+ private state or the stored value fails its integrity check. Does not modify the block.
+ */
+int32_t sl_ton2_get_elapsed(const struct FB_TON2 *fb, uint32_t *pElapsedMs);
+
+/*
+ Hands an FB_TON2 the elapsed time persisted before a power cycle. Call it after
+ `sl_ton2_init` (which resets the stored value to 0) and before the first `sl_ton2_cycle`
+ with bRun TRUE (the block must be in STOP). The value is used when TonIn next rises with Enable TRUE and
+ SL_OPT_TON2_REMAINING_TIME set: the delay then starts with tDelay - nElapsedMs.
+ Returns SL_OK (stored); SL_E_CONFIG (latched parameters invalid, nothing stored);
+ SL_E_RESTORE (nElapsedMs > the latched tDelay, the manual's global shutdown 0x3510, or
+ the block not in STOP: ERROR, diag bit 12, stored value 0); SL_E_CORRUPT (ERROR, diag
+ bit 15); SL_E_NULL / SL_E_ALIGNMENT for a bad pointer.
+ */
+int32_t sl_ton2_restore_elapsed(struct FB_TON2 *fb, uint32_t nElapsedMs);
+
+/*
+ Validates and latches the parameters of an FB_TOF and resets it to power-up (STOP).
+ Returns SL_OK or SL_E_CONFIG (as sl_ton_init).
+ */
+int32_t sl_tof_init(struct FB_TOF *fb);
+
+/*
+ One task cycle of an FB_TOF at `tNow` (monotonic ms, may wrap at 2^32).
+ */
+int32_t sl_tof_cycle(struct FB_TOF *fb, uint32_t tNow);
 
 /*
  Resets a group to power-up (STOP, or STOPERROR with bConnections) with the caller's
@@ -2414,6 +2857,77 @@ SL_STATIC_ASSERT(offsetof(FB_SR, nDiag) == 34, "offset of FB_SR.nDiag");
 SL_STATIC_ASSERT(offsetof(FB_SR, aReserved6) == 36, "offset of FB_SR.aReserved6");
 SL_STATIC_ASSERT(offsetof(FB_SR, stPrivate) == 40, "offset of FB_SR.stPrivate");
 SL_STATIC_ASSERT(sizeof(FB_SR) == 72, "size of FB_SR");
+SL_STATIC_ASSERT(offsetof(SL_TIMER_PRIVATE, stHeader) == 0, "offset of SL_TIMER_PRIVATE.stHeader");
+SL_STATIC_ASSERT(offsetof(SL_TIMER_PRIVATE, dwDelay) == 28, "offset of SL_TIMER_PRIVATE.dwDelay");
+SL_STATIC_ASSERT(offsetof(SL_TIMER_PRIVATE, wTimeBase) == 32, "offset of SL_TIMER_PRIVATE.wTimeBase");
+SL_STATIC_ASSERT(offsetof(SL_TIMER_PRIVATE, aReserved) == 34, "offset of SL_TIMER_PRIVATE.aReserved");
+SL_STATIC_ASSERT(offsetof(SL_TIMER_PRIVATE, tPhaseCheck) == 36, "offset of SL_TIMER_PRIVATE.tPhaseCheck");
+SL_STATIC_ASSERT(offsetof(SL_TIMER_PRIVATE, tElapsed) == 40, "offset of SL_TIMER_PRIVATE.tElapsed");
+SL_STATIC_ASSERT(offsetof(SL_TIMER_PRIVATE, tElapsedCheck) == 44, "offset of SL_TIMER_PRIVATE.tElapsedCheck");
+SL_STATIC_ASSERT(sizeof(SL_TIMER_PRIVATE) == 48, "size of SL_TIMER_PRIVATE");
+SL_STATIC_ASSERT(offsetof(FB_TON, aReserved0) == 0, "offset of FB_TON.aReserved0");
+SL_STATIC_ASSERT(offsetof(FB_TON, bTonIn1) == 8, "offset of FB_TON.bTonIn1");
+SL_STATIC_ASSERT(offsetof(FB_TON, aReserved1) == 9, "offset of FB_TON.aReserved1");
+SL_STATIC_ASSERT(offsetof(FB_TON, bRun) == 16, "offset of FB_TON.bRun");
+SL_STATIC_ASSERT(offsetof(FB_TON, bErrAck) == 17, "offset of FB_TON.bErrAck");
+SL_STATIC_ASSERT(offsetof(FB_TON, aReserved2) == 18, "offset of FB_TON.aReserved2");
+SL_STATIC_ASSERT(offsetof(FB_TON, tDelay) == 20, "offset of FB_TON.tDelay");
+SL_STATIC_ASSERT(offsetof(FB_TON, nTimeBase) == 24, "offset of FB_TON.nTimeBase");
+SL_STATIC_ASSERT(offsetof(FB_TON, wInputActive) == 26, "offset of FB_TON.wInputActive");
+SL_STATIC_ASSERT(offsetof(FB_TON, wInputNegated) == 28, "offset of FB_TON.wInputNegated");
+SL_STATIC_ASSERT(offsetof(FB_TON, aReserved3) == 30, "offset of FB_TON.aReserved3");
+SL_STATIC_ASSERT(offsetof(FB_TON, aReserved4) == 32, "offset of FB_TON.aReserved4");
+SL_STATIC_ASSERT(offsetof(FB_TON, bTonOut) == 33, "offset of FB_TON.bTonOut");
+SL_STATIC_ASSERT(offsetof(FB_TON, aReserved5) == 34, "offset of FB_TON.aReserved5");
+SL_STATIC_ASSERT(offsetof(FB_TON, nState) == 40, "offset of FB_TON.nState");
+SL_STATIC_ASSERT(offsetof(FB_TON, aReserved6) == 41, "offset of FB_TON.aReserved6");
+SL_STATIC_ASSERT(offsetof(FB_TON, nDiag) == 42, "offset of FB_TON.nDiag");
+SL_STATIC_ASSERT(offsetof(FB_TON, aReserved7) == 44, "offset of FB_TON.aReserved7");
+SL_STATIC_ASSERT(offsetof(FB_TON, stPrivate) == 48, "offset of FB_TON.stPrivate");
+SL_STATIC_ASSERT(sizeof(FB_TON) == 96, "size of FB_TON");
+SL_STATIC_ASSERT(offsetof(FB_TON2, aReserved0) == 0, "offset of FB_TON2.aReserved0");
+SL_STATIC_ASSERT(offsetof(FB_TON2, bTonIn1) == 8, "offset of FB_TON2.bTonIn1");
+SL_STATIC_ASSERT(offsetof(FB_TON2, bEnable) == 9, "offset of FB_TON2.bEnable");
+SL_STATIC_ASSERT(offsetof(FB_TON2, aReserved1) == 10, "offset of FB_TON2.aReserved1");
+SL_STATIC_ASSERT(offsetof(FB_TON2, bRun) == 16, "offset of FB_TON2.bRun");
+SL_STATIC_ASSERT(offsetof(FB_TON2, bErrAck) == 17, "offset of FB_TON2.bErrAck");
+SL_STATIC_ASSERT(offsetof(FB_TON2, aReserved2) == 18, "offset of FB_TON2.aReserved2");
+SL_STATIC_ASSERT(offsetof(FB_TON2, tDelay) == 20, "offset of FB_TON2.tDelay");
+SL_STATIC_ASSERT(offsetof(FB_TON2, nTimeBase) == 24, "offset of FB_TON2.nTimeBase");
+SL_STATIC_ASSERT(offsetof(FB_TON2, wInputActive) == 26, "offset of FB_TON2.wInputActive");
+SL_STATIC_ASSERT(offsetof(FB_TON2, wInputNegated) == 28, "offset of FB_TON2.wInputNegated");
+SL_STATIC_ASSERT(offsetof(FB_TON2, aReserved3) == 30, "offset of FB_TON2.aReserved3");
+SL_STATIC_ASSERT(offsetof(FB_TON2, dwOptions) == 32, "offset of FB_TON2.dwOptions");
+SL_STATIC_ASSERT(offsetof(FB_TON2, aReserved4) == 36, "offset of FB_TON2.aReserved4");
+SL_STATIC_ASSERT(offsetof(FB_TON2, aReserved5) == 40, "offset of FB_TON2.aReserved5");
+SL_STATIC_ASSERT(offsetof(FB_TON2, bTonOut) == 41, "offset of FB_TON2.bTonOut");
+SL_STATIC_ASSERT(offsetof(FB_TON2, aReserved6) == 42, "offset of FB_TON2.aReserved6");
+SL_STATIC_ASSERT(offsetof(FB_TON2, nState) == 48, "offset of FB_TON2.nState");
+SL_STATIC_ASSERT(offsetof(FB_TON2, aReserved7) == 49, "offset of FB_TON2.aReserved7");
+SL_STATIC_ASSERT(offsetof(FB_TON2, nDiag) == 50, "offset of FB_TON2.nDiag");
+SL_STATIC_ASSERT(offsetof(FB_TON2, aReserved8) == 52, "offset of FB_TON2.aReserved8");
+SL_STATIC_ASSERT(offsetof(FB_TON2, stPrivate) == 56, "offset of FB_TON2.stPrivate");
+SL_STATIC_ASSERT(sizeof(FB_TON2) == 104, "size of FB_TON2");
+SL_STATIC_ASSERT(offsetof(FB_TOF, aReserved0) == 0, "offset of FB_TOF.aReserved0");
+SL_STATIC_ASSERT(offsetof(FB_TOF, bTofIn1) == 8, "offset of FB_TOF.bTofIn1");
+SL_STATIC_ASSERT(offsetof(FB_TOF, aReserved1) == 9, "offset of FB_TOF.aReserved1");
+SL_STATIC_ASSERT(offsetof(FB_TOF, bRun) == 16, "offset of FB_TOF.bRun");
+SL_STATIC_ASSERT(offsetof(FB_TOF, bErrAck) == 17, "offset of FB_TOF.bErrAck");
+SL_STATIC_ASSERT(offsetof(FB_TOF, aReserved2) == 18, "offset of FB_TOF.aReserved2");
+SL_STATIC_ASSERT(offsetof(FB_TOF, tDelay) == 20, "offset of FB_TOF.tDelay");
+SL_STATIC_ASSERT(offsetof(FB_TOF, nTimeBase) == 24, "offset of FB_TOF.nTimeBase");
+SL_STATIC_ASSERT(offsetof(FB_TOF, wInputActive) == 26, "offset of FB_TOF.wInputActive");
+SL_STATIC_ASSERT(offsetof(FB_TOF, wInputNegated) == 28, "offset of FB_TOF.wInputNegated");
+SL_STATIC_ASSERT(offsetof(FB_TOF, aReserved3) == 30, "offset of FB_TOF.aReserved3");
+SL_STATIC_ASSERT(offsetof(FB_TOF, aReserved4) == 32, "offset of FB_TOF.aReserved4");
+SL_STATIC_ASSERT(offsetof(FB_TOF, bTofOut) == 33, "offset of FB_TOF.bTofOut");
+SL_STATIC_ASSERT(offsetof(FB_TOF, aReserved5) == 34, "offset of FB_TOF.aReserved5");
+SL_STATIC_ASSERT(offsetof(FB_TOF, nState) == 40, "offset of FB_TOF.nState");
+SL_STATIC_ASSERT(offsetof(FB_TOF, aReserved6) == 41, "offset of FB_TOF.aReserved6");
+SL_STATIC_ASSERT(offsetof(FB_TOF, nDiag) == 42, "offset of FB_TOF.nDiag");
+SL_STATIC_ASSERT(offsetof(FB_TOF, aReserved7) == 44, "offset of FB_TOF.aReserved7");
+SL_STATIC_ASSERT(offsetof(FB_TOF, stPrivate) == 48, "offset of FB_TOF.stPrivate");
+SL_STATIC_ASSERT(sizeof(FB_TOF) == 96, "size of FB_TOF");
 SL_STATIC_ASSERT(offsetof(SL_GROUP_PRIVATE, dwCtrl) == 0, "offset of SL_GROUP_PRIVATE.dwCtrl");
 SL_STATIC_ASSERT(offsetof(SL_GROUP_PRIVATE, dwDiag) == 4, "offset of SL_GROUP_PRIVATE.dwDiag");
 SL_STATIC_ASSERT(offsetof(SL_GROUP_PRIVATE, dwMembers) == 8, "offset of SL_GROUP_PRIVATE.dwMembers");

@@ -7,8 +7,8 @@ use crate::group::{self, Member, Members, SL_LINK_BOOL};
 use crate::prim::envelope::{self, Block};
 use crate::types::*;
 use crate::{
-    FB_AND, FB_DECOUPLE, FB_EDM, FB_ESTOP, FB_MON, FB_OPMODE, FB_OR, FB_RS, FB_SR, FB_TWOHAND,
-    FB_XOR, SL_GROUP, SL_LINK, SL_MEMBER,
+    FB_AND, FB_DECOUPLE, FB_EDM, FB_ESTOP, FB_MON, FB_OPMODE, FB_OR, FB_RS, FB_SR, FB_TOF, FB_TON,
+    FB_TON2, FB_TWOHAND, FB_XOR, SL_GROUP, SL_LINK, SL_MEMBER,
 };
 use core::ffi::{c_char, c_void};
 
@@ -34,6 +34,21 @@ fn instance<'a, B>(p: *mut B) -> Result<&'a mut B, i32> {
     // a live instance of `B` that nothing else accesses during the call. `B` holds only
     // integer fields, so every byte pattern in it is a valid value.
     Ok(unsafe { &mut *p })
+}
+
+/// Turns a read-only instance pointer into a shared reference, or the status code that
+/// refuses it (NULL, misaligned).
+fn instance_ref<'a, B>(p: *const B) -> Result<&'a B, i32> {
+    if p.is_null() {
+        return Err(SL_E_NULL);
+    }
+    if (p as usize) % core::mem::align_of::<B>() != 0 {
+        return Err(SL_E_ALIGNMENT);
+    }
+    // SAFETY: `p` is non-null and aligned; the caller guarantees (ABI §4) that it points to
+    // a live instance of `B` that nobody writes during the call. `B` holds only integer
+    // fields, so every byte pattern in it is a valid value.
+    Ok(unsafe { &*p })
 }
 
 /// One call of a block function behind the panic boundary. After a caught panic the
@@ -260,6 +275,87 @@ pub extern "C" fn sl_sr_cycle(fb: *mut FB_SR, tNow: u32) -> i32 {
     block_call(fb, |fb| envelope::cycle(fb, tNow))
 }
 
+/// Validates and latches the parameters of an FB_TON and resets it to power-up (STOP).
+/// Returns SL_OK or SL_E_CONFIG (tDelay 0, above 60,000 timebase steps or not a whole
+/// number of them, an unknown nTimeBase, TonIn1 not active, unknown bits).
+#[no_mangle]
+pub extern "C" fn sl_ton_init(fb: *mut FB_TON) -> i32 {
+    block_call(fb, envelope::init)
+}
+
+/// One task cycle of an FB_TON at `tNow` (monotonic ms, may wrap at 2^32).
+#[no_mangle]
+#[allow(non_snake_case)]
+pub extern "C" fn sl_ton_cycle(fb: *mut FB_TON, tNow: u32) -> i32 {
+    block_call(fb, |fb| envelope::cycle(fb, tNow))
+}
+
+/// Validates and latches the parameters of an FB_TON2 and resets it to power-up (STOP).
+/// Returns SL_OK or SL_E_CONFIG (as sl_ton_init; unknown option bits).
+#[no_mangle]
+pub extern "C" fn sl_ton2_init(fb: *mut FB_TON2) -> i32 {
+    block_call(fb, envelope::init)
+}
+
+/// One task cycle of an FB_TON2 at `tNow` (monotonic ms, may wrap at 2^32). Returns
+/// SL_E_RESTORE when TonIn rises with Enable TRUE and SL_OPT_TON2_REMAINING_TIME set while
+/// the stored elapsed time is greater than the latched tDelay (the block is then in ERROR).
+#[no_mangle]
+#[allow(non_snake_case)]
+pub extern "C" fn sl_ton2_cycle(fb: *mut FB_TON2, tNow: u32) -> i32 {
+    block_call(fb, |fb| envelope::cycle(fb, tNow))
+}
+
+/// Writes the elapsed time an FB_TON2 has stored (ms; the manual's "ExpiredTime") to
+/// `*pElapsedMs`, for the host to persist across a power cycle. Call it after
+/// `sl_ton2_cycle` (every cycle, or whenever the value changed) and write the value to
+/// non-volatile memory. Any state; a never-initialised instance gives 0. Returns SL_OK;
+/// SL_E_NULL / SL_E_ALIGNMENT for a bad pointer; SL_E_CORRUPT (nothing written) when the
+/// private state or the stored value fails its integrity check. Does not modify the block.
+#[no_mangle]
+#[allow(non_snake_case)]
+pub extern "C" fn sl_ton2_get_elapsed(fb: *const FB_TON2, pElapsedMs: *mut u32) -> i32 {
+    ffi_boundary!(SL_E_INTERNAL, {
+        let run = || -> Result<i32, i32> {
+            let fb = instance_ref(fb)?;
+            let out = instance(pElapsedMs)?;
+            *out = crate::blocks::ton2::elapsed(fb)?;
+            Ok(SL_OK)
+        };
+        run().unwrap_or_else(|e| e)
+    })
+}
+
+/// Hands an FB_TON2 the elapsed time persisted before a power cycle. Call it after
+/// `sl_ton2_init` (which resets the stored value to 0) and before the first `sl_ton2_cycle`
+/// with bRun TRUE (the block must be in STOP). The value is used when TonIn next rises with Enable TRUE and
+/// SL_OPT_TON2_REMAINING_TIME set: the delay then starts with tDelay - nElapsedMs.
+/// Returns SL_OK (stored); SL_E_CONFIG (latched parameters invalid, nothing stored);
+/// SL_E_RESTORE (nElapsedMs > the latched tDelay, the manual's global shutdown 0x3510, or
+/// the block not in STOP: ERROR, diag bit 12, stored value 0); SL_E_CORRUPT (ERROR, diag
+/// bit 15); SL_E_NULL / SL_E_ALIGNMENT for a bad pointer.
+#[no_mangle]
+#[allow(non_snake_case)]
+pub extern "C" fn sl_ton2_restore_elapsed(fb: *mut FB_TON2, nElapsedMs: u32) -> i32 {
+    block_call(fb, |fb| {
+        crate::blocks::ton2::restore_elapsed(fb, nElapsedMs)
+    })
+}
+
+/// Validates and latches the parameters of an FB_TOF and resets it to power-up (STOP).
+/// Returns SL_OK or SL_E_CONFIG (as sl_ton_init).
+#[no_mangle]
+pub extern "C" fn sl_tof_init(fb: *mut FB_TOF) -> i32 {
+    block_call(fb, envelope::init)
+}
+
+/// One task cycle of an FB_TOF at `tNow` (monotonic ms, may wrap at 2^32).
+#[no_mangle]
+#[allow(non_snake_case)]
+pub extern "C" fn sl_tof_cycle(fb: *mut FB_TOF, tNow: u32) -> i32 {
+    block_call(fb, |fb| envelope::cycle(fb, tNow))
+}
+
 /// The one dispatch from a block type tag to the block: every group operation on a member
 /// goes through here.
 fn member_dyn<'a>(ty: u16, p: *mut c_void) -> Option<&'a mut dyn Member> {
@@ -278,6 +374,9 @@ fn member_dyn<'a>(ty: u16, p: *mut c_void) -> Option<&'a mut dyn Member> {
         SL_TYPE_EDM => cast::<FB_EDM>(p),
         SL_TYPE_RS => cast::<FB_RS>(p),
         SL_TYPE_SR => cast::<FB_SR>(p),
+        SL_TYPE_TON => cast::<FB_TON>(p),
+        SL_TYPE_TON2 => cast::<FB_TON2>(p),
+        SL_TYPE_TOF => cast::<FB_TOF>(p),
         _ => None,
     }
 }

@@ -28,6 +28,12 @@ pub const SL_E_INTERNAL: i32 = -7;
 pub const SL_E_ALIGNMENT: i32 = -8;
 /// Library extension: the caller's member or link storage of a group is full.
 pub const SL_E_FULL: i32 = -9;
+/// Library extension (FB_TON2, "Starts with remaining time"): a restored elapsed time was
+/// refused, because it is greater than the latched tDelay (the manual's global shutdown,
+/// error code 0x3510) or because `sl_ton2_restore_elapsed` was called while the block was
+/// not in STOP. nState = ERROR (4), output FALSE, diag bit 12 (SL_DIAG_TON2_RESTORE); the
+/// stored elapsed time is discarded (0), so one ErrAck sequence leaves the error.
+pub const SL_E_RESTORE: i32 = -10;
 
 /// EDM1 feedback loop active.
 pub const SL_OPT_EDM1: u32 = 1 << 0;
@@ -39,6 +45,9 @@ pub const SL_OPT_SAFE_INPUTS_AFTER_DISC: u32 = 1 << 2;
 pub const SL_OPT_MANUAL_RESTART: u32 = 1 << 3;
 /// Manual function test (MON).
 pub const SL_OPT_FUNCTION_TEST: u32 = 1 << 4;
+/// FB_TON2 "Starts with remaining time" (manual §4.13): with Enable TRUE when TonIn rises,
+/// the timer starts with tDelay minus the stored elapsed time.
+pub const SL_OPT_TON2_REMAINING_TIME: u32 = 1 << 8;
 
 bitflags::bitflags! {
     /// The option bits of `dwOptions` (ABI §6) as a typed set.
@@ -84,6 +93,9 @@ pub const SL_DIAG_TWOHAND_ERROR: u16 = 1 << 6;
 /// FB_TWOHAND diag bit 10: bit 2 with "Safe Inputs after Disc Error" active (set in addition
 /// to bit 2). Bits 8/9 are SL_DIAG_SAFE_IN_DISC1/2.
 pub const SL_DIAG_TWOHAND_SAFE_IN_PAIRS: u16 = 1 << 10;
+/// Library extension, FB_TON2 diag bit 12: the restored elapsed time was refused
+/// (SL_E_RESTORE; the manual's global shutdown 0x3510).
+pub const SL_DIAG_TON2_RESTORE: u16 = 1 << 12;
 /// Library extension, diag bit 13: a parameter changed outside STOP (SL_E_PARAM_CHANGED).
 pub const SL_DIAG_PARAM_CHANGED: u16 = 1 << 13;
 /// Library extension, diag bit 14: the clock went backwards (SL_E_CLOCK).
@@ -139,6 +151,10 @@ pub const SL_STATE_TWOHAND_2BUTTON: u8 = 12;
 /// FB_TWOHAND state RELEASE (13): waiting until every active input is FALSE before the output
 /// can be set again.
 pub const SL_STATE_TWOHAND_RELEASE: u8 = 13;
+/// FB_TON state DELAYIN (9): TonIn is TRUE and the delay has not yet expired.
+pub const SL_STATE_TON_DELAYIN: u8 = 9;
+/// FB_TON2 state DELAYIN (9): TonIn is TRUE and the delay has not yet expired.
+pub const SL_STATE_TON2_DELAYIN: u8 = 9;
 
 /// Block type tag of FB_ESTOP (`SL_MEMBER.nType`, `sl_diag_text`).
 pub const SL_TYPE_ESTOP: u16 = 1;
@@ -152,6 +168,12 @@ pub const SL_TYPE_OR: u16 = 4;
 pub const SL_TYPE_OPMODE: u16 = 7;
 /// Block type tag of FB_TWOHAND.
 pub const SL_TYPE_TWOHAND: u16 = 8;
+/// Block type tag of FB_TON.
+pub const SL_TYPE_TON: u16 = 13;
+/// Block type tag of FB_TON2.
+pub const SL_TYPE_TON2: u16 = 14;
+/// Block type tag of FB_TOF.
+pub const SL_TYPE_TOF: u16 = 15;
 
 /// Block type tag of FB_XOR.
 pub const SL_TYPE_XOR: u16 = 5;
@@ -192,6 +214,22 @@ pub fn status_str(status: i32) -> &'static str {
     status_text(status).trim_end_matches('\0')
 }
 
+/// `nTimeBase` of FB_TON/FB_TON2/FB_TOF: automatic, the smallest timebase whose range
+/// holds tDelay (the manual: "automatically selected ... according to the set time").
+pub const SL_TIMEBASE_AUTO: u16 = 0;
+/// `nTimeBase` 1 ms: tDelay 1 to 60,000 ms in 1 ms steps.
+pub const SL_TIMEBASE_1MS: u16 = 1;
+/// `nTimeBase` 10 ms: tDelay 10 to 600,000 ms in 10 ms steps.
+pub const SL_TIMEBASE_10MS: u16 = 10;
+/// `nTimeBase` 100 ms (EL6910 SW 04): tDelay 100 ms to 6,000 s in 100 ms steps.
+pub const SL_TIMEBASE_100MS: u16 = 100;
+/// `nTimeBase` 1000 ms (EL6910 SW 04): tDelay 1 s to 60,000 s in 1 s steps.
+pub const SL_TIMEBASE_1000MS: u16 = 1000;
+/// Most timebase steps in a timer delay (tDelay / timebase).
+pub const SL_TIMER_STEPS_MAX: u32 = 60_000;
+/// Largest timer delay in ms (60,000 s; 60,000 steps of 1000 ms).
+pub const SL_TIMER_DELAY_MAX: u32 = 60_000_000;
+
 /// Text for a status code (for `sl_status_str`); NUL-terminated so C can use it directly.
 pub const fn status_text(status: i32) -> &'static str {
     match status {
@@ -209,6 +247,9 @@ pub const fn status_text(status: i32) -> &'static str {
         SL_E_INTERNAL => "SL_E_INTERNAL: internal fault caught at the C boundary; block in ERROR\0",
         SL_E_ALIGNMENT => "SL_E_ALIGNMENT: instance pointer not aligned to 4 bytes\0",
         SL_E_FULL => "SL_E_FULL: the group's member or link storage is full\0",
+        SL_E_RESTORE => {
+            "SL_E_RESTORE: restored elapsed time refused (greater than tDelay, or block not in STOP); block in ERROR\0"
+        }
         _ => "unknown status code\0",
     }
 }

@@ -1,7 +1,8 @@
 //! The function blocks. One file per block, citing its manual section; blocks that share a
 //! state machine share it: ESTOP and MON (manual §4.4, §4.5) in `guard`, the
 //! combinational blocks (AND, OR, XOR, DECOUPLE) in `logic`, RS and SR (§4.10, §4.11) in
-//! `flipflop`. OPMODE (§4.3), TWOHAND (§4.7) and EDM (§4.9) have state machines of their own.
+//! `flipflop`, the timers TON, TON2 and TOF (§4.12–§4.14) in `timer`. OPMODE (§4.3),
+//! TWOHAND (§4.7) and EDM (§4.9) have state machines of their own.
 
 pub mod and;
 pub mod decouple;
@@ -15,6 +16,10 @@ pub mod opmode;
 pub mod or;
 pub mod rs;
 pub mod sr;
+pub mod timer;
+pub mod tof;
+pub mod ton;
+pub mod ton2;
 pub mod twohand;
 pub mod xor;
 
@@ -53,6 +58,9 @@ pub static BLOCKS: &[BlockInfo] = &[
     edm::INFO,
     rs::INFO,
     sr::INFO,
+    ton::INFO,
+    ton2::INFO,
+    tof::INFO,
 ];
 
 /// The block type with this tag.

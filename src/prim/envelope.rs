@@ -59,6 +59,7 @@ const fn rank(s: i32) -> u8 {
         SL_E_CORRUPT => 6,
         SL_E_CLOCK => 5,
         SL_E_PARAM_CHANGED => 4,
+        SL_E_RESTORE => 4,
         SL_E_CONFIG => 3,
         SL_E_INVALID_BOOL => 2,
         _ => 0,

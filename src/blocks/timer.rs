@@ -1,0 +1,406 @@
+//! The state machine FB TON (manual §4.12), FB TON2 (§4.13) and FB TOF (§4.14) have in
+//! common: one delay timer (`prim::time`) that runs while a condition holds. TON and TON2
+//! time while the input is TRUE and switch the output on when the delay is reached; TOF
+//! times while the input is FALSE and switches the output off when it is reached. Both are
+//! the same three phases:
+//!
+//! | phase | condition | TON / TON2 | TOF |
+//! |---|---|---|---|
+//! | Idle | does not hold | SAFE (3), out FALSE | RUN (1), out TRUE |
+//! | Timing | holds, delay not reached | DELAYIN (9), out FALSE | DELAYOUT (8), out TRUE |
+//! | Expired | holds, delay reached | RUN (1), out TRUE | SAFE (3), out FALSE |
+//!
+//! Idle → Timing starts the timer, Timing → Expired when it is reached, any phase → Idle as
+//! soon as the condition fails (same cycle). The start state (after STOP → run and after
+//! RESET) is SAFE for all three (TON: Idle, TOF: Expired), so an input already TRUE at
+//! start-up counts as a change in the first running cycle (docs/semantics.md T5).
+//!
+//! Timebases (EL6910, manual §4.12.4, §4.14.4): `tDelay` is in ms; `nTimeBase` (ms) is 1,
+//! 10, 100 or 1000, or 0 = automatic (the smallest timebase whose range holds `tDelay`). The
+//! delay must be a whole number of timebase steps, at most 60,000 steps, and at least one:
+//! anything else is `SL_E_CONFIG` (T1, T2). The running timer always counts exact
+//! milliseconds (T3).
+//!
+//! TON2 additionally keeps the manual's stored "ExpiredTime" (`tElapsed`, T11–T15), which
+//! the host persists with `sl_ton2_get_elapsed` and hands back with
+//! `sl_ton2_restore_elapsed` after power-up.
+
+use super::tof::FB_TOF;
+use super::ton::FB_TON;
+use super::ton2::FB_TON2;
+use crate::prim::bools;
+use crate::prim::envelope::Block;
+use crate::prim::header::{param_crc, SL_PRIVATE_HEADER};
+use crate::prim::time;
+use crate::types::*;
+
+/// Private state of FB_TON, FB_TON2 and FB_TOF (48 bytes). Never written by the user.
+///
+/// Unlike the guard blocks, the timer start carries a complement copy: for TON the timer
+/// decides when the output switches ON, so a corrupted start value must not go unnoticed
+/// (docs/semantics.md T9). The TON2 stored elapsed time has one as well.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+#[allow(non_snake_case, non_camel_case_types)]
+pub struct SL_TIMER_PRIVATE {
+    /// Common head; `tPhase` is the timer start.
+    pub stHeader: SL_PRIVATE_HEADER,
+    /// Latched `tDelay` in ms.
+    pub dwDelay: u32,
+    /// Latched `nTimeBase` as written (0 = automatic).
+    pub wTimeBase: u16,
+    pub aReserved: [u8; 2],
+    /// Complement of `stHeader.tPhase`.
+    pub tPhaseCheck: u32,
+    /// FB_TON2: the stored elapsed time in ms (the manual's "ExpiredTime" in the FRAM).
+    pub tElapsed: u32,
+    /// Complement of `tElapsed`.
+    pub tElapsedCheck: u32,
+}
+
+const _: () = assert!(core::mem::size_of::<SL_TIMER_PRIVATE>() == 48);
+
+impl SL_TIMER_PRIVATE {
+    /// A fresh private area: everything zero except the complement copies.
+    fn fresh() -> Self {
+        Self {
+            tPhaseCheck: !0,
+            tElapsedCheck: !0,
+            ..Self::default()
+        }
+    }
+
+    /// Starts the timer as if it had started at `start`.
+    #[inline]
+    fn set_start(&mut self, start: u32) {
+        self.stHeader.tPhase = start;
+        self.tPhaseCheck = !start;
+    }
+
+    /// Writes the stored elapsed time with its complement.
+    #[inline]
+    pub(crate) fn set_elapsed(&mut self, ms: u32) {
+        self.tElapsed = ms;
+        self.tElapsedCheck = !ms;
+    }
+
+    /// The stored elapsed time agrees with its complement.
+    #[inline]
+    pub(crate) fn elapsed_intact(&self) -> bool {
+        self.tElapsedCheck == !self.tElapsed
+    }
+
+    /// The timer start and the stored elapsed time agree with their complements.
+    #[inline]
+    pub(crate) fn timers_intact(&self) -> bool {
+        self.tPhaseCheck == !self.stHeader.tPhase && self.elapsed_intact()
+    }
+
+    /// After a failed complement check: a consistent timer start and no stored elapsed time
+    /// (a full delay is the safe direction), so the corruption does not remain.
+    #[inline]
+    pub(crate) fn repair_timers(&mut self) {
+        let start = self.stHeader.tPhase;
+        self.set_start(start);
+        self.set_elapsed(0);
+    }
+}
+
+/// The timebase a delay is counted in: `base` itself, or for 0 (automatic) the smallest of
+/// 1, 10, 100, 1000 ms whose range (60,000 steps) holds `delay`. `None`: no such timebase.
+pub const fn time_base(delay: u32, base: u16) -> Option<u32> {
+    match base {
+        SL_TIMEBASE_AUTO => {
+            let mut b = 1u32;
+            while b <= SL_TIMEBASE_1000MS as u32 {
+                if delay <= SL_TIMER_STEPS_MAX * b {
+                    return Some(b);
+                }
+                b *= 10;
+            }
+            None
+        }
+        SL_TIMEBASE_1MS | SL_TIMEBASE_10MS | SL_TIMEBASE_100MS | SL_TIMEBASE_1000MS => {
+            Some(base as u32)
+        }
+        _ => None,
+    }
+}
+
+/// A valid delay: 1 to 60,000 whole steps of its timebase (docs/semantics.md T1, T2, T4).
+pub const fn delay_valid(delay: u32, base: u16) -> bool {
+    match time_base(delay, base) {
+        Some(b) => delay != 0 && delay % b == 0 && delay / b <= SL_TIMER_STEPS_MAX,
+        None => false,
+    }
+}
+
+/// Timer parameters as the user wrote them.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct TimerParams {
+    pub delay: u32,
+    pub time_base: u16,
+    pub active: u16,
+    pub negated: u16,
+    pub options: u32,
+}
+
+/// Decoded inputs of one cycle.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct TimerIn {
+    /// Logical value of the timer input (an invalid byte reads FALSE).
+    pub input: bool,
+    /// TON2: start with the remaining time (option set and Enable exactly TRUE).
+    pub remaining: bool,
+}
+
+/// What distinguishes TON, TON2 and TOF.
+pub trait TimerBlock {
+    /// Type tag stored in the private header.
+    const TAG: u16;
+    /// TOF: the timer runs while the input is FALSE and the output is on until it expires.
+    const OFF_DELAY: bool;
+    /// Option bits the block accepts.
+    const OPTIONS: u32;
+    /// The block keeps the stored elapsed time (TON2).
+    const PERSISTS: bool;
+    /// The state value of the Timing phase (DELAYIN 9 / DELAYOUT 8).
+    const TIMING_STATE: u8;
+
+    fn private(&self) -> &SL_TIMER_PRIVATE;
+    fn private_mut(&mut self) -> &mut SL_TIMER_PRIVATE;
+    fn params(&self) -> TimerParams;
+    fn control(&self) -> (u8, u8);
+    /// The raw timer input byte and the raw Enable byte (0 for blocks without Enable).
+    fn raw(&self) -> (u8, u8);
+    /// Writes the output field and info data.
+    fn set_outputs(&mut self, out: bool, state: u8, diag: u16);
+}
+
+/// The three phases of the shared timer (module comment).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Phase {
+    Idle,
+    Timing,
+    Expired,
+}
+
+/// The state value of a phase.
+const fn state_of<T: TimerBlock>(p: Phase) -> u8 {
+    match (p, T::OFF_DELAY) {
+        (Phase::Idle, false) | (Phase::Expired, true) => SL_STATE_SAFE,
+        (Phase::Idle, true) | (Phase::Expired, false) => SL_STATE_RUN,
+        (Phase::Timing, _) => T::TIMING_STATE,
+    }
+}
+
+/// The phase of a state value; `None` outside the running states.
+fn phase_of<T: TimerBlock>(state: u8) -> Option<Phase> {
+    [Phase::Idle, Phase::Timing, Phase::Expired]
+        .into_iter()
+        .find(|&p| state_of::<T>(p) == state)
+}
+
+/// The output in a phase: TON on when expired, TOF on until expired.
+const fn output<T: TimerBlock>(p: Phase) -> bool {
+    matches!(p, Phase::Expired) != T::OFF_DELAY
+}
+
+/// The envelope's view of every block of this family.
+macro_rules! timer_block {
+    ($t:ty) => {
+        impl Block for $t {
+            const MAGIC: u16 = <$t as TimerBlock>::TAG;
+            type Params = TimerParams;
+            type In = TimerIn;
+
+            fn header(&self) -> &SL_PRIVATE_HEADER {
+                &self.private().stHeader
+            }
+            fn header_mut(&mut self) -> &mut SL_PRIVATE_HEADER {
+                &mut self.private_mut().stHeader
+            }
+            fn clear_private(&mut self) {
+                *self.private_mut() = SL_TIMER_PRIVATE::fresh();
+            }
+            fn run_raw(&self) -> u8 {
+                self.control().0
+            }
+            fn errack_raw(&self) -> u8 {
+                self.control().1
+            }
+
+            fn live_params(&self) -> TimerParams {
+                self.params()
+            }
+
+            fn latched_params(&self) -> TimerParams {
+                let p = self.private();
+                TimerParams {
+                    delay: p.dwDelay,
+                    time_base: p.wTimeBase,
+                    active: u16::from(p.stHeader.nActive),
+                    negated: u16::from(p.stHeader.nNegated),
+                    options: u32::from(p.stHeader.wOptions),
+                }
+            }
+
+            /// One input, active; negation only for it; known options; a delay of 1 to
+            /// 60,000 whole timebase steps.
+            fn params_valid(p: &TimerParams) -> bool {
+                p.active == 1
+                    && p.negated & !1 == 0
+                    && p.options & !Self::OPTIONS == 0
+                    && delay_valid(p.delay, p.time_base)
+            }
+
+            fn store_params(&mut self, p: &TimerParams) {
+                let q = self.private_mut();
+                q.dwDelay = p.delay;
+                q.wTimeBase = p.time_base;
+                // Narrowing is exact for valid parameters; an invalid set never runs.
+                q.stHeader.nActive = p.active as u8;
+                q.stHeader.nNegated = p.negated as u8;
+                q.stHeader.wOptions = p.options as u16;
+            }
+
+            fn latched_crc(&self) -> u16 {
+                let p = self.private();
+                let h = &p.stHeader;
+                let d = p.dwDelay;
+                param_crc(
+                    Self::MAGIC,
+                    h.nActive,
+                    h.nNegated,
+                    h.wOptions,
+                    &[d as u16, (d >> 16) as u16, p.wTimeBase],
+                )
+            }
+
+            fn decode(&mut self) -> (TimerIn, bool) {
+                let (raw_in, raw_enable) = self.raw();
+                let h = &self.private().stHeader;
+                let packed = bools::pack([raw_in]);
+                let input = bools::logical(packed, h.nActive, h.nNegated) & 1 != 0;
+                // Enable is read only with "Starts with remaining time" (T10).
+                let with_remaining = u32::from(h.wOptions) & SL_OPT_TON2_REMAINING_TIME != 0;
+                let inp = TimerIn {
+                    input,
+                    remaining: with_remaining && bools::is_true(raw_enable),
+                };
+                let invalid = packed.invalid & h.nActive != 0 || (with_remaining && raw_enable > 1);
+                (inp, invalid)
+            }
+
+            /// The start state is SAFE for all three blocks (T5).
+            fn start(&mut self, _inp: &TimerIn, _now: u32) {
+                self.private_mut().stHeader.nState = SL_STATE_SAFE;
+            }
+
+            fn step(&mut self, inp: &TimerIn, now: u32) -> i32 {
+                let crc = self.latched_crc();
+                let p = self.private_mut();
+                let phase = match phase_of::<Self>(p.stHeader.nState) {
+                    Some(ph) if p.timers_intact() => ph,
+                    _ => {
+                        // A state value this block never takes, or a timer value that fails
+                        // its complement: the private state cannot be trusted.
+                        p.repair_timers();
+                        p.stHeader.enter_error(SL_DIAG_CORRUPT);
+                        return SL_E_CORRUPT;
+                    }
+                };
+                let delay = p.dwDelay;
+                // TON/TON2 time while the input is TRUE, TOF while it is FALSE.
+                let holds = inp.input != Self::OFF_DELAY;
+                let next = match phase {
+                    _ if !holds => Phase::Idle,
+                    Phase::Idle => {
+                        // TON2 "Starts with remaining time": the timer starts as if it had
+                        // started the stored elapsed time ago (T12).
+                        let credit = if inp.remaining { p.tElapsed } else { 0 };
+                        if credit > delay {
+                            // The manual's global shutdown 0x3510 (T13).
+                            p.set_elapsed(0);
+                            p.stHeader.enter_error(SL_DIAG_TON2_RESTORE);
+                            return SL_E_RESTORE;
+                        }
+                        p.set_start(now.wrapping_sub(credit));
+                        Phase::Timing
+                    }
+                    Phase::Timing if time::reached(now, p.stHeader.tPhase, delay) => Phase::Expired,
+                    other => other,
+                };
+                // The output switches on: verify the latched parameters first (C3).
+                if !output::<Self>(phase) && output::<Self>(next) && crc != p.stHeader.wParamCrc {
+                    p.stHeader.enter_error(SL_DIAG_CORRUPT);
+                    return SL_E_CORRUPT;
+                }
+                if Self::PERSISTS {
+                    // The stored elapsed time (T11): kept while Idle, so that a value restored
+                    // at power-up survives until the input rises.
+                    match (phase, next) {
+                        (Phase::Idle, Phase::Idle) => {}
+                        (_, Phase::Idle) => p.set_elapsed(0),
+                        (_, Phase::Timing) => {
+                            p.set_elapsed(time::elapsed(now, p.stHeader.tPhase).min(delay))
+                        }
+                        (_, Phase::Expired) => p.set_elapsed(delay),
+                    }
+                }
+                p.stHeader.nState = state_of::<Self>(next);
+                SL_OK
+            }
+
+            /// The timer blocks have no error condition of their own that could remain: a
+            /// refused elapsed time is discarded when the error is entered.
+            fn error_remains(&mut self, _inp: &TimerIn) -> bool {
+                false
+            }
+
+            fn write_outputs(&mut self) {
+                let h = self.private().stHeader;
+                let out = phase_of::<Self>(h.nState).is_some_and(output::<Self>);
+                self.set_outputs(out, h.nState, h.wDiag);
+            }
+        }
+    };
+}
+
+timer_block!(FB_TON);
+timer_block!(FB_TON2);
+timer_block!(FB_TOF);
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn automatic_time_base_is_the_smallest_that_holds_the_delay() {
+        assert_eq!(time_base(1, 0), Some(1));
+        assert_eq!(time_base(60_000, 0), Some(1));
+        assert_eq!(time_base(60_001, 0), Some(10));
+        assert_eq!(time_base(600_000, 0), Some(10));
+        assert_eq!(time_base(600_001, 0), Some(100));
+        assert_eq!(time_base(6_000_001, 0), Some(1000));
+        assert_eq!(time_base(60_000_000, 0), Some(1000));
+        assert_eq!(time_base(60_000_001, 0), None);
+        assert_eq!(time_base(5, 7), None);
+    }
+
+    #[test]
+    fn delay_limits_per_time_base() {
+        for (base, max) in [(1u16, 60_000u32), (10, 600_000), (100, 6_000_000)] {
+            let b = u32::from(base);
+            assert!(delay_valid(max, base));
+            assert!(delay_valid(b, base));
+            assert!(!delay_valid(max + b, base));
+            assert!(!delay_valid(0, base));
+        }
+        assert!(delay_valid(60_000_000, 1000));
+        assert!(!delay_valid(60_001_000, 1000));
+        assert!(!delay_valid(u32::MAX, 0));
+        assert!(!delay_valid(1005, 10));
+        assert!(!delay_valid(60_001, 0));
+    }
+}

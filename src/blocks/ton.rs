@@ -1,0 +1,129 @@
+//! FB TON — manual §4.12 (functional description 4.12.1, signals, states and diag 4.12.2,
+//! EL6910 TON extension with the timebases 1, 10, 100 and 1000 ms 4.12.4): switch-on delay.
+//! TonOut becomes TRUE when TonIn has been TRUE for the delay time; TonIn FALSE switches it
+//! off at once and discards the running delay. States RUN (1), STOP (2), SAFE (3), DELAYIN
+//! (9); the manual's diag value is always 0. The state machine is the shared timer
+//! (`timer`, docs/semantics.md T1–T6, T8, T9, T16).
+
+use super::timer::{TimerBlock, TimerParams, SL_TIMER_PRIVATE};
+use super::{BlockInfo, ERROR, RESET, RUN, SAFE, STOP};
+use crate::types::*;
+use core::mem::{offset_of, size_of};
+
+/// FB TON instance (ABI §3, §9). Input at the manual's offset (§4.12.2), output base 32.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+#[allow(non_snake_case, non_camel_case_types)]
+pub struct FB_TON {
+    /// Offset 0. Reserved, keep 0.
+    pub aReserved0: [u8; 8],
+    /// Offset 8. TonIn1: the input whose TRUE level is passed on after the delay (break or
+    /// make contact: wInputNegated bit 0).
+    pub bTonIn1: SL_BOOL,
+    /// Offset 9. Reserved, keep 0.
+    pub aReserved1: [u8; 7],
+    /// Offset 16. FbRun of the owning group: TRUE = the block executes.
+    pub bRun: SL_BOOL,
+    /// Offset 17. ErrAck of the owning group.
+    pub bErrAck: SL_BOOL,
+    /// Offset 18. Reserved, keep 0.
+    pub aReserved2: [u8; 2],
+    /// Offset 20. Switch-on delay in ms: 1 to 60,000 steps of the timebase (at most
+    /// 60,000,000 ms = 60,000 s), a whole number of steps.
+    pub tDelay: u32,
+    /// Offset 24. Timebase in ms: SL_TIMEBASE_1MS, _10MS, _100MS, _1000MS, or
+    /// SL_TIMEBASE_AUTO (0) = the smallest one whose range holds tDelay.
+    pub nTimeBase: u16,
+    /// Offset 26. Bit 0 must be set: TonIn1 is active.
+    pub wInputActive: u16,
+    /// Offset 28. Bit 0 set: TonIn1 is a make contact (negated before evaluation).
+    pub wInputNegated: u16,
+    /// Offset 30. Reserved, keep 0.
+    pub aReserved3: [u8; 2],
+    /// Offset 32 (output base + 0). Reserved (the manual's error output is inactive).
+    pub aReserved4: [u8; 1],
+    /// Offset 33 (output base + 1). TonOut: TRUE in RUN only.
+    pub bTonOut: SL_BOOL,
+    /// Offset 34. Reserved.
+    pub aReserved5: [u8; 6],
+    /// Offset 40. The manual's status value (SL_STATE_*, SL_STATE_TON_DELAYIN).
+    pub nState: u8,
+    /// Offset 41. Reserved.
+    pub aReserved6: [u8; 1],
+    /// Offset 42. Diagnostic bits (only the library bits 13-15).
+    pub nDiag: u16,
+    /// Offset 44. Reserved.
+    pub aReserved7: [u8; 4],
+    /// Offset 48. Private state, 48 bytes: never write it.
+    pub stPrivate: SL_TIMER_PRIVATE,
+}
+
+// The ABI's offsets (ABI §3, §9, manual §4.12.2), checked at compile time.
+const _: () = {
+    assert!(offset_of!(FB_TON, bTonIn1) == 8);
+    assert!(offset_of!(FB_TON, bRun) == 16);
+    assert!(offset_of!(FB_TON, bErrAck) == 17);
+    assert!(offset_of!(FB_TON, tDelay) == 20);
+    assert!(offset_of!(FB_TON, nTimeBase) == 24);
+    assert!(offset_of!(FB_TON, wInputActive) == 26);
+    assert!(offset_of!(FB_TON, wInputNegated) == 28);
+    assert!(offset_of!(FB_TON, aReserved4) == 32);
+    assert!(offset_of!(FB_TON, bTonOut) == 32 + 1);
+    assert!(offset_of!(FB_TON, nState) == 40);
+    assert!(offset_of!(FB_TON, nDiag) == 42);
+    assert!(offset_of!(FB_TON, stPrivate) == 48);
+    assert!(size_of::<FB_TON>() == 96);
+    assert!(core::mem::align_of::<FB_TON>() == 4);
+};
+
+/// Type tag, name, states and diag texts (manual §4.12.2: diag always 0).
+pub const INFO: BlockInfo = BlockInfo {
+    tag: SL_TYPE_TON,
+    name: "TON",
+    states: &[
+        RUN,
+        STOP,
+        SAFE,
+        ERROR,
+        RESET,
+        (SL_STATE_TON_DELAYIN, "DELAYIN\0"),
+    ],
+    diag: &[],
+};
+
+crate::impl_member!(FB_TON, [bTonIn1], [bTonOut]);
+
+impl TimerBlock for FB_TON {
+    const TAG: u16 = 0x7013;
+    const OFF_DELAY: bool = false;
+    const OPTIONS: u32 = 0;
+    const PERSISTS: bool = false;
+    const TIMING_STATE: u8 = SL_STATE_TON_DELAYIN;
+
+    fn private(&self) -> &SL_TIMER_PRIVATE {
+        &self.stPrivate
+    }
+    fn private_mut(&mut self) -> &mut SL_TIMER_PRIVATE {
+        &mut self.stPrivate
+    }
+    fn params(&self) -> TimerParams {
+        TimerParams {
+            delay: self.tDelay,
+            time_base: self.nTimeBase,
+            active: self.wInputActive,
+            negated: self.wInputNegated,
+            options: 0,
+        }
+    }
+    fn control(&self) -> (u8, u8) {
+        (self.bRun, self.bErrAck)
+    }
+    fn raw(&self) -> (u8, u8) {
+        (self.bTonIn1, 0)
+    }
+    fn set_outputs(&mut self, out: bool, state: u8, diag: u16) {
+        self.bTonOut = u8::from(out);
+        self.nState = state;
+        self.nDiag = diag;
+    }
+}
