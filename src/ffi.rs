@@ -6,7 +6,7 @@
 use crate::group::{self, Member, Members, SL_LINK_BOOL};
 use crate::prim::envelope::{self, Block};
 use crate::types::*;
-use crate::{FB_AND, FB_ESTOP, FB_MON, FB_OR, SL_GROUP, SL_LINK, SL_MEMBER};
+use crate::{FB_AND, FB_ESTOP, FB_MON, FB_MUTING, FB_OR, SL_GROUP, SL_LINK, SL_MEMBER};
 use core::ffi::{c_char, c_void};
 
 /// Runs `$body`; a panic becomes `$on_panic` instead of unwinding into C.
@@ -159,6 +159,20 @@ pub extern "C" fn sl_or_cycle(fb: *mut FB_OR, tNow: u32) -> i32 {
     block_call(fb, |fb| envelope::cycle(fb, tNow))
 }
 
+/// Validates and latches the parameters of an FB_MUTING and resets it to power-up (STOP,
+/// outputs FALSE). Does not modify any input field. Returns SL_OK or SL_E_CONFIG.
+#[no_mangle]
+pub extern "C" fn sl_muting_init(fb: *mut FB_MUTING) -> i32 {
+    block_call(fb, envelope::init)
+}
+
+/// One task cycle of an FB_MUTING at `tNow` (monotonic ms, may wrap at 2^32).
+#[no_mangle]
+#[allow(non_snake_case)]
+pub extern "C" fn sl_muting_cycle(fb: *mut FB_MUTING, tNow: u32) -> i32 {
+    block_call(fb, |fb| envelope::cycle(fb, tNow))
+}
+
 /// The one dispatch from a block type tag to the block: every group operation on a member
 /// goes through here.
 fn member_dyn<'a>(ty: u16, p: *mut c_void) -> Option<&'a mut dyn Member> {
@@ -170,6 +184,7 @@ fn member_dyn<'a>(ty: u16, p: *mut c_void) -> Option<&'a mut dyn Member> {
         SL_TYPE_MON => cast::<FB_MON>(p),
         SL_TYPE_AND => cast::<FB_AND>(p),
         SL_TYPE_OR => cast::<FB_OR>(p),
+        SL_TYPE_MUTING => cast::<FB_MUTING>(p),
         _ => None,
     }
 }

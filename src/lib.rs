@@ -20,6 +20,7 @@ pub use blocks::estop::FB_ESTOP;
 pub use blocks::guard::SL_GUARD_PRIVATE;
 pub use blocks::logic::SL_LOGIC_PRIVATE;
 pub use blocks::mon::FB_MON;
+pub use blocks::muting::{FB_MUTING, SL_MUTING_PRIVATE};
 pub use blocks::or::FB_OR;
 pub use group::{SL_GROUP, SL_GROUP_PRIVATE, SL_LINK, SL_MEMBER};
 pub use prim::header::SL_PRIVATE_HEADER;

@@ -39,6 +39,14 @@ pub const SL_OPT_SAFE_INPUTS_AFTER_DISC: u32 = 1 << 2;
 pub const SL_OPT_MANUAL_RESTART: u32 = 1 << 3;
 /// Manual function test (MON).
 pub const SL_OPT_FUNCTION_TEST: u32 = 1 << 4;
+/// FB_MUTING "Sequential Inputs": the four muting inputs are single-channel sensors checked
+/// one after the other (clear: two two-channel groups MutingIn1/2 and MutingIn3/4, parallel).
+pub const SL_OPT_MUTING_SEQUENTIAL: u32 = 1 << 8;
+/// FB_MUTING "Backwards Mode" (EL6910): a sequence may also run backwards, starting at MutingIn4.
+pub const SL_OPT_MUTING_BACKWARDS: u32 = 1 << 9;
+/// FB_MUTING "OSSD Check Optional" (EL6910): the protective field is not part of the sequence
+/// check; it may be interrupted at any step of a running sequence.
+pub const SL_OPT_MUTING_OSSD_CHECK_OPTIONAL: u32 = 1 << 10;
 
 bitflags::bitflags! {
     /// The option bits of `dwOptions` (ABI §6) as a typed set.
@@ -49,6 +57,9 @@ bitflags::bitflags! {
         const SAFE_INPUTS_AFTER_DISC = SL_OPT_SAFE_INPUTS_AFTER_DISC;
         const MANUAL_RESTART = SL_OPT_MANUAL_RESTART;
         const FUNCTION_TEST = SL_OPT_FUNCTION_TEST;
+        const MUTING_SEQUENTIAL = SL_OPT_MUTING_SEQUENTIAL;
+        const MUTING_BACKWARDS = SL_OPT_MUTING_BACKWARDS;
+        const MUTING_OSSD_CHECK_OPTIONAL = SL_OPT_MUTING_OSSD_CHECK_OPTIONAL;
     }
 }
 
@@ -64,6 +75,10 @@ pub const SL_DIAG_DISC4: u16 = 1 << 3;
 pub const SL_DIAG_EDM1: u16 = 1 << 4;
 /// Diag bit 5: EDM monitoring error EDM2.
 pub const SL_DIAG_EDM2: u16 = 1 << 5;
+/// Diag bit 6 (FB_MUTING): the muting sequence was violated.
+pub const SL_DIAG_MUTING_SEQUENCE: u16 = 1 << 6;
+/// Diag bit 7 (FB_MUTING): the maximum muting time was exceeded.
+pub const SL_DIAG_MUTING_MAX_TIME: u16 = 1 << 7;
 /// Diag bit 8: bit 0 with "Safe Inputs after Disc Error" active (set in addition to bit 0).
 pub const SL_DIAG_SAFE_IN_DISC1: u16 = 1 << 8;
 /// Diag bit 9: bit 1 with "Safe Inputs after Disc Error" active.
@@ -89,6 +104,8 @@ bitflags::bitflags! {
         const DISC4 = SL_DIAG_DISC4;
         const EDM1 = SL_DIAG_EDM1;
         const EDM2 = SL_DIAG_EDM2;
+        const MUTING_SEQUENCE = SL_DIAG_MUTING_SEQUENCE;
+        const MUTING_MAX_TIME = SL_DIAG_MUTING_MAX_TIME;
         const SAFE_IN_DISC1 = SL_DIAG_SAFE_IN_DISC1;
         const SAFE_IN_DISC2 = SL_DIAG_SAFE_IN_DISC2;
         const SAFE_IN_DISC3 = SL_DIAG_SAFE_IN_DISC3;
@@ -117,6 +134,24 @@ pub const SL_STATE_ERRORDELAY: u8 = 7;
 pub const SL_STATE_DELAYOUT: u8 = 8;
 /// State FUNCTEST (9, MON).
 pub const SL_STATE_FUNCTEST: u8 = 9;
+/// FB_MUTING state MUTING1 (9): first step of the muting sequence (docs/semantics.md M1).
+pub const SL_STATE_MUTING_MUTING1: u8 = 9;
+/// FB_MUTING state MUTING2 (10).
+pub const SL_STATE_MUTING_MUTING2: u8 = 10;
+/// FB_MUTING state MUTING3 (11).
+pub const SL_STATE_MUTING_MUTING3: u8 = 11;
+/// FB_MUTING state MUTING4 (12).
+pub const SL_STATE_MUTING_MUTING4: u8 = 12;
+/// FB_MUTING state MUTING5 (13).
+pub const SL_STATE_MUTING_MUTING5: u8 = 13;
+/// FB_MUTING state MUTING6 (14).
+pub const SL_STATE_MUTING_MUTING6: u8 = 14;
+/// FB_MUTING state MUTING7 (15).
+pub const SL_STATE_MUTING_MUTING7: u8 = 15;
+/// FB_MUTING state MUTING8 (16).
+pub const SL_STATE_MUTING_MUTING8: u8 = 16;
+/// FB_MUTING state MUTING9 (17): last step of the muting sequence.
+pub const SL_STATE_MUTING_MUTING9: u8 = 17;
 
 /// Block type tag of FB_ESTOP (`SL_MEMBER.nType`, `sl_diag_text`).
 pub const SL_TYPE_ESTOP: u16 = 1;
@@ -126,9 +161,18 @@ pub const SL_TYPE_MON: u16 = 2;
 pub const SL_TYPE_AND: u16 = 3;
 /// Block type tag of FB_OR.
 pub const SL_TYPE_OR: u16 = 4;
+/// Block type tag of FB_MUTING.
+pub const SL_TYPE_MUTING: u16 = 9;
 
 /// Largest time parameter of FB_ESTOP and FB_MON in ms (see docs/semantics.md).
 pub const SL_TIME_PARAM_MAX: u32 = 65_535;
+
+/// Largest `tFilterTime` of FB_MUTING in ms (manual §4.8.1: "up to 500 ms").
+pub const SL_MUTING_FILTER_TIME_MAX: u32 = 500;
+/// Largest `tMaxMutingTime` of FB_MUTING in ms (manual §4.8.1: "a maximum of 10 minutes").
+pub const SL_MUTING_MAX_MUTING_TIME_MAX: u32 = 600_000;
+/// Largest `tMuteDelOutDelay` of FB_MUTING in ms (manual §4.8.1: "delayed by up to 30 seconds").
+pub const SL_MUTING_DELOUT_DELAY_MAX: u32 = 30_000;
 
 /// Text for a status code (for `sl_status_str`); NUL-terminated so C can use it directly.
 pub const fn status_text(status: i32) -> &'static str {

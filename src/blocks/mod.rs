@@ -1,12 +1,14 @@
 //! The function blocks. One file per block, citing its manual section; blocks that share a
 //! state machine share it: ESTOP and MON (manual §4.4, §4.5) in `guard`, the
-//! combinational blocks (AND, OR, …) in `logic`.
+//! combinational blocks (AND, OR, …) in `logic`; MUTING (manual §4.8) has its own
+//! state machine in `muting`.
 
 pub mod and;
 pub mod estop;
 pub mod guard;
 pub mod logic;
 pub mod mon;
+pub mod muting;
 pub mod or;
 
 /// What the C ABI and HMIs need to know about a block type without an instance.
@@ -32,7 +34,7 @@ pub const START: (u8, &str) = (crate::types::SL_STATE_START, "START\0");
 pub const DELAYOUT: (u8, &str) = (crate::types::SL_STATE_DELAYOUT, "DELAYOUT\0");
 
 /// Every block type, in tag order.
-pub static BLOCKS: &[BlockInfo] = &[estop::INFO, mon::INFO, and::INFO, or::INFO];
+pub static BLOCKS: &[BlockInfo] = &[estop::INFO, mon::INFO, and::INFO, or::INFO, muting::INFO];
 
 /// The block type with this tag.
 pub fn info(tag: u16) -> Option<&'static BlockInfo> {
