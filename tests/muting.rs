@@ -1544,6 +1544,27 @@ fn corrupt_private_state() {
     b.expect(SL_STATE_ERROR, ERROR_OUT);
 }
 
+/// Defence in depth: a state value the configuration never takes, even with intact
+/// complement copies, is a corrupt private state.
+#[test]
+fn state_values_the_block_never_takes() {
+    for (bench, state) in [
+        (Bench::parallel(), SL_STATE_MUTING_MUTING1),
+        (Bench::parallel(), SL_STATE_MUTING_MUTING4),
+        (Bench::sequential(), 6),
+        (Bench::sequential(), 7),
+        (Bench::sequential(), 18),
+    ] {
+        let mut b = bench;
+        b.start();
+        b.fb.stPrivate.stHeader.nState = state;
+        b.fb.stPrivate.stHeader.seal();
+        assert_eq!(b.cycle(), SL_E_CORRUPT, "state {state}");
+        b.expect(SL_STATE_ERROR, ERROR_OUT);
+        assert_eq!(b.fb.nDiag, SL_DIAG_CORRUPT);
+    }
+}
+
 #[test]
 fn c_abi_functions() {
     use safelogic::ffi::{sl_muting_cycle, sl_muting_init};
@@ -1694,8 +1715,8 @@ proptest! {
         (active, options, negated) in config(),
         times in (0u32..80, 0u32..80, 0u32..40, 0u32..500, 0u32..60),
         steps in proptest::collection::vec(
-            (any::<u8>(), 0u8..4, 0u8..16, 0u32..40, 0u8..40),
-            1..160,
+            (any::<u8>(), any::<u8>(), 0u8..32, 0u8..4, 0u32..40, 0u8..40),
+            1..200,
         ),
     ) {
         let mut fb = FB_MUTING {
@@ -1706,23 +1727,47 @@ proptest! {
             tDiscTime12: if options & SL_OPT_MUTING_SEQUENTIAL == 0 { times.1 } else { 0 },
             tDiscTime34: if options & SL_OPT_MUTING_SEQUENTIAL == 0 { times.1 / 2 } else { 0 },
             tFilterTime: times.2,
-            tMaxMutingTime: times.3,
+            tMaxMutingTime: times.3 * 6,
             tMuteDelOutDelay: times.4,
             ..Default::default()
         };
         prop_assert_eq!(fb.init(), SL_OK);
         let mut t = 0u32;
-        for (ins, ctl, edm, dt, odd) in steps {
+        // A guided walk along the step table (forwards or mirrored), with noise: a random
+        // input flipped now and then, Enable dropping, Run and ErrAck toggling, so that the
+        // MUTING states, violations, discrepancies and DELAYOUT all occur.
+        let (mut pos, mut back) = (0usize, false);
+        for (mv, noise, ctl, edm, dt, odd) in steps {
+            if fb.nState == SL_STATE_ERROR && mv % 2 == 0 {
+                // The operator clears the muting area.
+                pos = 0;
+            } else if mv % 4 == 1 {
+                pos = (pos + 1) % 10;
+                if pos == 0 {
+                    back = noise & 1 != 0;
+                }
+            }
+            let pat = if back { mirror(TABLE[pos]) } else { TABLE[pos] };
+            // Pattern → logical inputs (wInputActive order) → raw bytes.
+            let mut logical = (pat & (M1 | M2))
+                | if pat & F == 0 { 0b1100 } else { 0 }
+                | if pat & M3 != 0 { 0b1_0000 } else { 0 }
+                | if pat & M4 != 0 { 0b10_0000 } else { 0 };
+            if noise >= 240 {
+                logical ^= 1 << (noise % 6);
+            }
+            let raw = logical ^ (negated as u8);
+            let bit = |i: u8| (raw >> i) & 1;
             // Inputs mostly valid, sometimes an invalid byte.
-            fb.bMutingIn1 = if odd == 39 { 2 } else { ins & 1 };
-            fb.bMutingIn2 = (ins >> 1) & 1;
-            fb.bOSSDIn1 = (ins >> 2) & 1;
-            fb.bOSSDIn2 = if odd == 38 { 5 } else { (ins >> 3) & 1 };
-            fb.bMutingIn3 = (ins >> 4) & 1;
-            fb.bMutingIn4 = (ins >> 5) & 1;
-            fb.bMutingEnable = (ins >> 6) & 1;
+            fb.bMutingIn1 = if odd == 39 { 2 } else { bit(0) };
+            fb.bMutingIn2 = bit(1);
+            fb.bOSSDIn1 = bit(2);
+            fb.bOSSDIn2 = if odd == 38 { 5 } else { bit(3) };
+            fb.bMutingIn3 = bit(4);
+            fb.bMutingIn4 = bit(5);
+            fb.bMutingEnable = u8::from(!(200..204).contains(&mv));
             fb.bRun = u8::from(ctl != 0);
-            fb.bErrAck = u8::from(ctl == 2);
+            fb.bErrAck = u8::from((1..=4).contains(&ctl));
             fb.bEDM1 = edm & 1;
             fb.bEDM2 = (edm >> 1) & 1;
             t = t.wrapping_add(dt);
@@ -1769,5 +1814,63 @@ proptest! {
         b.cycle();
         prop_assert!(matches!(b.fb.nState, SL_STATE_STOP | SL_STATE_ERROR | SL_STATE_RESET));
         prop_assert_eq!((b.fb.bMutingActive, b.fb.bMuteOut, b.fb.bMuteDelOut), (0, 0, 0));
+    }
+
+    /// Valid sequences of every kind complete without error whatever the dwell times, and
+    /// bounces of the muting inputs shorter than the filter time change nothing (M1–M5, M9).
+    /// Each step holds long enough for its change to be taken over before the bounce; a
+    /// bounce of `len` < 40 ms is seen for at most `len` + 9 ms (cycle spacing) < 50 ms.
+    #[test]
+    fn valid_sequences_complete(
+        kind in 0usize..4,
+        dwell in proptest::collection::vec((140u32..300, any::<bool>(), 0u8..4, 1u32..40), 10),
+        dts in proptest::collection::vec(1u32..10, 16),
+    ) {
+        let (mut b, back, groups) = match kind {
+            0 => (Bench::new(ALL_INPUTS, SL_OPT_MUTING_SEQUENTIAL), false, false),
+            1 => (Bench::new(ALL_INPUTS, SL_OPT_MUTING_SEQUENTIAL | SL_OPT_MUTING_BACKWARDS), true, false),
+            2 => (Bench::parallel(), false, true),
+            _ => {
+                let mut b = Bench::parallel();
+                b.fb.dwOptions = SL_OPT_MUTING_BACKWARDS;
+                (b, true, true)
+            }
+        };
+        b.fb.tFilterTime = 50;
+        b.fb.tDiscTime12 = 0;
+        b.fb.tDiscTime34 = 0;
+        b.fb.tMaxMutingTime = 600_000;
+        b.start();
+        let patterns: Vec<u8> = if groups {
+            vec![M1 | M2, M1 | M2 | F, M1 | M2 | F | M3 | M4, F | M3 | M4, M3 | M4, 0]
+        } else {
+            TABLE[1..].to_vec()
+        };
+        let mut k = 0usize;
+        for (i, &p) in patterns.iter().enumerate() {
+            let p = if back { mirror(p) } else { p };
+            let (hold, bounce, which, len) = dwell[i];
+            let bit = [M1, M2, M3, M4][usize::from(which)];
+            let start = b.t;
+            let mut bounced = false;
+            while b.t.wrapping_sub(start) < hold {
+                let in_bounce = bounce && !bounced
+                    && b.t.wrapping_sub(start) >= 75
+                    && b.t.wrapping_sub(start) < 75 + len;
+                if bounce && !in_bounce && b.t.wrapping_sub(start) >= 75 + len {
+                    bounced = true;
+                }
+                b.set(if in_bounce { p ^ bit } else { p });
+                b.step(dts[k % dts.len()]);
+                k += 1;
+                prop_assert_ne!(b.fb.nState, SL_STATE_ERROR, "diag {:#x}", b.fb.nDiag);
+                prop_assert_eq!(b.fb.bMuteOut, 1);
+                if i > 0 && i + 1 < patterns.len() {
+                    prop_assert_eq!(b.fb.bMutingActive, 1);
+                }
+            }
+        }
+        prop_assert_eq!(b.fb.nState, SL_STATE_RUN);
+        prop_assert_eq!(b.fb.nDiag, 0);
     }
 }

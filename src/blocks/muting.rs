@@ -397,6 +397,26 @@ pub struct MutingIn {
 }
 
 impl SL_MUTING_PRIVATE {
+    /// CRC of the latched parameters (seeded with the block's magic).
+    fn latched_crc(&self) -> u16 {
+        let h = &self.stHeader;
+        let [a, b, c, d, e, f] = self.awTime;
+        let max = self.tMaxMutingTime;
+        param_crc(
+            FB_MUTING::MAGIC,
+            h.nActive,
+            h.nNegated,
+            h.wOptions,
+            &[a, b, c, d, e, f, max as u16, (max >> 16) as u16],
+        )
+    }
+
+    /// Before the outputs switch on or muting starts, the latched parameters must still be
+    /// intact (ABI §3.6, docs/semantics.md C3, M21).
+    fn intact(&self) -> bool {
+        self.latched_crc() == self.stHeader.wParamCrc
+    }
+
     /// The field is interrupted without muting: MuteOut off now, MuteDelOut after the delay.
     fn switch_off(&mut self, now: u32) -> u8 {
         if self.awTime[T_DELAY] != 0 {
@@ -508,17 +528,7 @@ impl Block for FB_MUTING {
     }
 
     fn latched_crc(&self) -> u16 {
-        let p = &self.stPrivate;
-        let h = &p.stHeader;
-        let [a, b, c, d, e, f] = p.awTime;
-        let max = p.tMaxMutingTime;
-        param_crc(
-            Self::MAGIC,
-            h.nActive,
-            h.nNegated,
-            h.wOptions,
-            &[a, b, c, d, e, f, max as u16, (max >> 16) as u16],
-        )
+        self.stPrivate.latched_crc()
     }
 
     fn decode(&mut self) -> (MutingIn, bool) {
@@ -560,12 +570,8 @@ impl Block for FB_MUTING {
     }
 
     fn step(&mut self, inp: &MutingIn, now: u32) -> i32 {
-        // Before the outputs switch on or muting starts, the latched parameters must still be
-        // intact (ABI §3.6, docs/semantics.md C3).
-        let state = self.stPrivate.stHeader.nState;
-        let intact = !matches!(state, SL_STATE_SAFE | SL_STATE_RUN)
-            || self.latched_crc() == self.stPrivate.stHeader.wParamCrc;
         let p = &mut self.stPrivate;
+        let state = p.stHeader.nState;
         let active = p.stHeader.nActive;
         let options = u32::from(p.stHeader.wOptions);
         let aux = p.stHeader.wAux;
@@ -631,7 +637,7 @@ impl Block for FB_MUTING {
             SL_STATE_SAFE => {
                 if field || !inp.edm.all_released() {
                     Ok(SL_STATE_SAFE)
-                } else if intact {
+                } else if p.intact() {
                     Ok(SL_STATE_RUN)
                 } else {
                     status = SL_E_CORRUPT;
@@ -658,7 +664,7 @@ impl Block for FB_MUTING {
                     _ => None,
                 };
                 match dir {
-                    Some((f, back)) if intact => {
+                    Some((f, back)) if p.intact() => {
                         let h = &mut p.stHeader;
                         h.wAux = (h.wAux & !AUX_BACKWARDS) | if back { AUX_BACKWARDS } else { 0 };
                         h.tPhase = now;
@@ -676,7 +682,11 @@ impl Block for FB_MUTING {
             SL_STATE_MUTING_MUTING1..=SL_STATE_MUTING_MUTING9 => {
                 let pos = usize::from(state - SL_STATE_MUTING_MUTING1) + 1;
                 let seen = seq.view(if backwards { mirror(pat) } else { pat });
-                if !inp.enable {
+                if !seq.used(pos) {
+                    // A step this configuration never takes: the private state is corrupt.
+                    status = SL_E_CORRUPT;
+                    Err(SL_DIAG_CORRUPT)
+                } else if !inp.enable {
                     // Enable FALSE ends muting: the field decides alone (docs M7).
                     if field {
                         Ok(p.switch_off(now))
