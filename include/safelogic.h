@@ -152,6 +152,23 @@
 #define SL_OPT_TON2_REMAINING_TIME (1 << 8)
 
 /*
+ FB_MUTING "Sequential Inputs": the four muting inputs are single-channel sensors checked
+ one after the other (clear: two two-channel groups MutingIn1/2 and MutingIn3/4, parallel).
+ */
+#define SL_OPT_MUTING_SEQUENTIAL (1 << 8)
+
+/*
+ FB_MUTING "Backwards Mode" (EL6910): a sequence may also run backwards, starting at MutingIn4.
+ */
+#define SL_OPT_MUTING_BACKWARDS (1 << 9)
+
+/*
+ FB_MUTING "OSSD Check Optional" (EL6910): the protective field is not part of the sequence
+ check; it may be interrupted at any step of a running sequence.
+ */
+#define SL_OPT_MUTING_OSSD_CHECK_OPTIONAL (1 << 10)
+
+/*
  Diag bit 0: discrepancy error input group 1.
  */
 #define SL_DIAG_DISC1 (1 << 0)
@@ -180,6 +197,16 @@
  Diag bit 5: EDM monitoring error EDM2.
  */
 #define SL_DIAG_EDM2 (1 << 5)
+
+/*
+ Diag bit 6 (FB_MUTING): the muting sequence was violated.
+ */
+#define SL_DIAG_MUTING_SEQUENCE (1 << 6)
+
+/*
+ Diag bit 7 (FB_MUTING): the maximum muting time was exceeded.
+ */
+#define SL_DIAG_MUTING_MAX_TIME (1 << 7)
 
 /*
  Diag bit 8: bit 0 with "Safe Inputs after Disc Error" active (set in addition to bit 0).
@@ -320,6 +347,51 @@
 #define SL_STATE_TON2_DELAYIN 9
 
 /*
+ FB_MUTING state MUTING1 (9): first step of the muting sequence (docs/semantics.md M1).
+ */
+#define SL_STATE_MUTING_MUTING1 9
+
+/*
+ FB_MUTING state MUTING2 (10).
+ */
+#define SL_STATE_MUTING_MUTING2 10
+
+/*
+ FB_MUTING state MUTING3 (11).
+ */
+#define SL_STATE_MUTING_MUTING3 11
+
+/*
+ FB_MUTING state MUTING4 (12).
+ */
+#define SL_STATE_MUTING_MUTING4 12
+
+/*
+ FB_MUTING state MUTING5 (13).
+ */
+#define SL_STATE_MUTING_MUTING5 13
+
+/*
+ FB_MUTING state MUTING6 (14).
+ */
+#define SL_STATE_MUTING_MUTING6 14
+
+/*
+ FB_MUTING state MUTING7 (15).
+ */
+#define SL_STATE_MUTING_MUTING7 15
+
+/*
+ FB_MUTING state MUTING8 (16).
+ */
+#define SL_STATE_MUTING_MUTING8 16
+
+/*
+ FB_MUTING state MUTING9 (17): last step of the muting sequence.
+ */
+#define SL_STATE_MUTING_MUTING9 17
+
+/*
  Block type tag of FB_ESTOP (`SL_MEMBER.nType`, `sl_diag_text`).
  */
 #define SL_TYPE_ESTOP 1
@@ -363,6 +435,11 @@
  Block type tag of FB_TOF.
  */
 #define SL_TYPE_TOF 15
+
+/*
+ Block type tag of FB_MUTING.
+ */
+#define SL_TYPE_MUTING 9
 
 /*
  Block type tag of FB_XOR.
@@ -470,6 +547,21 @@
  Largest timer delay in ms (60,000 s; 60,000 steps of 1000 ms).
  */
 #define SL_TIMER_DELAY_MAX 60000000
+
+/*
+ Largest `tFilterTime` of FB_MUTING in ms (manual §4.8.1: "up to 500 ms").
+ */
+#define SL_MUTING_FILTER_TIME_MAX 500
+
+/*
+ Largest `tMaxMutingTime` of FB_MUTING in ms (manual §4.8.1: "a maximum of 10 minutes").
+ */
+#define SL_MUTING_MAX_MUTING_TIME_MAX 600000
+
+/*
+ Largest `tMuteDelOutDelay` of FB_MUTING in ms (manual §4.8.1: "delayed by up to 30 seconds").
+ */
+#define SL_MUTING_DELOUT_DELAY_MAX 30000
 
 /*
  IEC 61131-3 BOOL: 0 = FALSE, 1 = TRUE, any other byte is an invalid BOOL (ABI §2).
@@ -2123,6 +2215,180 @@ typedef struct FB_TOF {
 } FB_TOF;
 
 /*
+ Private state of FB_MUTING (72 bytes). Never written by the user.
+ */
+typedef struct SL_MUTING_PRIVATE {
+  /*
+   Offset 0. Common head; `wAux` holds the filtered muting inputs (bits 0-5), their
+   running filter timers (bits 6-11), the running pair timers (bits 12-14) and the
+   direction of the running sequence (bit 15, backwards).
+   */
+  struct SL_PRIVATE_HEADER stHeader;
+  /*
+   Offset 28. Latched maximum muting time in ms.
+   */
+  uint32_t tMaxMutingTime;
+  /*
+   Offset 32. Latched times in ms: discrepancy times MutingIn1/2, OSSD, MutingIn3/4,
+   filter time, MuteDelOut delay, reserved.
+   */
+  uint16_t awTime[6];
+  /*
+   Offset 44. Start times of the pair discrepancy timers.
+   */
+  uint32_t atDiscStart[3];
+  /*
+   Offset 56. Start times of the filter timers of MutingIn1, 2, 3, 4.
+   */
+  uint32_t atFilterStart[4];
+} SL_MUTING_PRIVATE;
+
+/*
+ FB MUTING instance (ABI §3, §9). Inputs at the manual's offsets (§4.8.2), outputs at
+ output base 56 + the manual's offsets.
+ */
+typedef struct FB_MUTING {
+  /*
+   Offset 0. MutingEnable: TRUE allows a muting sequence; FALSE = an interruption of
+   the protective field switches the outputs off.
+   */
+  SL_BOOL bMutingEnable;
+  /*
+   Offset 1. Feedback loop of MuteOut (SL_OPT_EDM1).
+   */
+  SL_BOOL bEDM1;
+  /*
+   Offset 2. Feedback loop of MuteDelOut (SL_OPT_EDM2).
+   */
+  SL_BOOL bEDM2;
+  /*
+   Offset 3. Reserved, keep 0.
+   */
+  uint8_t aReserved0[5];
+  /*
+   Offset 8. Muting sensor 1 (parallel: group 1 with MutingIn2). TRUE = actuated.
+   */
+  SL_BOOL bMutingIn1;
+  /*
+   Offset 9. Muting sensor 2.
+   */
+  SL_BOOL bMutingIn2;
+  /*
+   Offset 10. Protective device channel 1 (OSSD): TRUE = protective field clear.
+   */
+  SL_BOOL bOSSDIn1;
+  /*
+   Offset 11. Protective device channel 2 (pair with OSSDIn1).
+   */
+  SL_BOOL bOSSDIn2;
+  /*
+   Offset 12. Muting sensor 3 (parallel: group 2 with MutingIn4).
+   */
+  SL_BOOL bMutingIn3;
+  /*
+   Offset 13. Muting sensor 4.
+   */
+  SL_BOOL bMutingIn4;
+  /*
+   Offset 14. Reserved, keep 0.
+   */
+  uint8_t aReserved1[2];
+  /*
+   Offset 16. FbRun of the owning group: TRUE = the block executes.
+   */
+  SL_BOOL bRun;
+  /*
+   Offset 17. ErrAck of the owning group.
+   */
+  SL_BOOL bErrAck;
+  /*
+   Offset 18. Reserved, keep 0.
+   */
+  uint8_t aReserved2[2];
+  /*
+   Offset 20. Discrepancy time of group MutingIn1/2 in ms (parallel only; 0 = none).
+   */
+  uint32_t tDiscTime12;
+  /*
+   Offset 24. Discrepancy time of OSSDIn1/2 in ms (0 = none).
+   */
+  uint32_t tDiscTimeOSSD;
+  /*
+   Offset 28. Discrepancy time of group MutingIn3/4 in ms (parallel only; 0 = none).
+   */
+  uint32_t tDiscTime34;
+  /*
+   Offset 32. Filter time of the muting inputs in ms (≤ 500; 0 = unfiltered).
+   */
+  uint32_t tFilterTime;
+  /*
+   Offset 36. Maximum muting time in ms (≤ 600 000 = 10 min; 0 = not monitored).
+   */
+  uint32_t tMaxMutingTime;
+  /*
+   Offset 40. Delay of MuteDelOut in ms (≤ 30 000).
+   */
+  uint32_t tMuteDelOutDelay;
+  /*
+   Offset 44. Bits 0-5: MutingIn1, MutingIn2, OSSDIn1, OSSDIn2, MutingIn3, MutingIn4 active.
+   */
+  uint16_t wInputActive;
+  /*
+   Offset 46. Same bits: input is a make contact (negated).
+   */
+  uint16_t wInputNegated;
+  /*
+   Offset 48. SL_OPT_EDM1 | EDM2 | MUTING_SEQUENTIAL | MUTING_BACKWARDS |
+   MUTING_OSSD_CHECK_OPTIONAL.
+   */
+  uint32_t dwOptions;
+  /*
+   Offset 52. Reserved.
+   */
+  uint8_t aReserved3[4];
+  /*
+   Offset 56 (output base + 0). TRUE in ERROR.
+   */
+  SL_BOOL bError;
+  /*
+   Offset 57 (output base + 1). TRUE while a muting sequence runs (MUTING1…MUTING9).
+   */
+  SL_BOOL bMutingActive;
+  /*
+   Offset 58 (output base + 2). Undelayed output.
+   */
+  SL_BOOL bMuteOut;
+  /*
+   Offset 59 (output base + 3). Delayed output.
+   */
+  SL_BOOL bMuteDelOut;
+  /*
+   Offset 60. Reserved.
+   */
+  uint8_t aReserved4[4];
+  /*
+   Offset 64. The manual's status value (SL_STATE_*, SL_STATE_MUTING_MUTINGx).
+   */
+  uint8_t nState;
+  /*
+   Offset 65. Reserved.
+   */
+  uint8_t aReserved5[1];
+  /*
+   Offset 66. Diagnostic bits (manual §4.8.2).
+   */
+  uint16_t nDiag;
+  /*
+   Offset 68. Reserved.
+   */
+  uint8_t aReserved6[4];
+  /*
+   Offset 72. Private state, 72 bytes: never write it.
+   */
+  struct SL_MUTING_PRIVATE stPrivate;
+} FB_MUTING;
+
+/*
  Private state of a group (32 bytes): data words and their complements.
  */
 typedef struct SL_GROUP_PRIVATE {
@@ -2479,6 +2745,17 @@ int32_t sl_tof_init(struct FB_TOF *fb);
  One task cycle of an FB_TOF at `tNow` (monotonic ms, may wrap at 2^32).
  */
 int32_t sl_tof_cycle(struct FB_TOF *fb, uint32_t tNow);
+
+/*
+ Validates and latches the parameters of an FB_MUTING and resets it to power-up (STOP,
+ outputs FALSE). Does not modify any input field. Returns SL_OK or SL_E_CONFIG.
+ */
+int32_t sl_muting_init(struct FB_MUTING *fb);
+
+/*
+ One task cycle of an FB_MUTING at `tNow` (monotonic ms, may wrap at 2^32).
+ */
+int32_t sl_muting_cycle(struct FB_MUTING *fb, uint32_t tNow);
 
 /*
  Resets a group to power-up (STOP, or STOPERROR with bConnections) with the caller's
@@ -2928,6 +3205,47 @@ SL_STATIC_ASSERT(offsetof(FB_TOF, nDiag) == 42, "offset of FB_TOF.nDiag");
 SL_STATIC_ASSERT(offsetof(FB_TOF, aReserved7) == 44, "offset of FB_TOF.aReserved7");
 SL_STATIC_ASSERT(offsetof(FB_TOF, stPrivate) == 48, "offset of FB_TOF.stPrivate");
 SL_STATIC_ASSERT(sizeof(FB_TOF) == 96, "size of FB_TOF");
+SL_STATIC_ASSERT(offsetof(SL_MUTING_PRIVATE, stHeader) == 0, "offset of SL_MUTING_PRIVATE.stHeader");
+SL_STATIC_ASSERT(offsetof(SL_MUTING_PRIVATE, tMaxMutingTime) == 28, "offset of SL_MUTING_PRIVATE.tMaxMutingTime");
+SL_STATIC_ASSERT(offsetof(SL_MUTING_PRIVATE, awTime) == 32, "offset of SL_MUTING_PRIVATE.awTime");
+SL_STATIC_ASSERT(offsetof(SL_MUTING_PRIVATE, atDiscStart) == 44, "offset of SL_MUTING_PRIVATE.atDiscStart");
+SL_STATIC_ASSERT(offsetof(SL_MUTING_PRIVATE, atFilterStart) == 56, "offset of SL_MUTING_PRIVATE.atFilterStart");
+SL_STATIC_ASSERT(sizeof(SL_MUTING_PRIVATE) == 72, "size of SL_MUTING_PRIVATE");
+SL_STATIC_ASSERT(offsetof(FB_MUTING, bMutingEnable) == 0, "offset of FB_MUTING.bMutingEnable");
+SL_STATIC_ASSERT(offsetof(FB_MUTING, bEDM1) == 1, "offset of FB_MUTING.bEDM1");
+SL_STATIC_ASSERT(offsetof(FB_MUTING, bEDM2) == 2, "offset of FB_MUTING.bEDM2");
+SL_STATIC_ASSERT(offsetof(FB_MUTING, aReserved0) == 3, "offset of FB_MUTING.aReserved0");
+SL_STATIC_ASSERT(offsetof(FB_MUTING, bMutingIn1) == 8, "offset of FB_MUTING.bMutingIn1");
+SL_STATIC_ASSERT(offsetof(FB_MUTING, bMutingIn2) == 9, "offset of FB_MUTING.bMutingIn2");
+SL_STATIC_ASSERT(offsetof(FB_MUTING, bOSSDIn1) == 10, "offset of FB_MUTING.bOSSDIn1");
+SL_STATIC_ASSERT(offsetof(FB_MUTING, bOSSDIn2) == 11, "offset of FB_MUTING.bOSSDIn2");
+SL_STATIC_ASSERT(offsetof(FB_MUTING, bMutingIn3) == 12, "offset of FB_MUTING.bMutingIn3");
+SL_STATIC_ASSERT(offsetof(FB_MUTING, bMutingIn4) == 13, "offset of FB_MUTING.bMutingIn4");
+SL_STATIC_ASSERT(offsetof(FB_MUTING, aReserved1) == 14, "offset of FB_MUTING.aReserved1");
+SL_STATIC_ASSERT(offsetof(FB_MUTING, bRun) == 16, "offset of FB_MUTING.bRun");
+SL_STATIC_ASSERT(offsetof(FB_MUTING, bErrAck) == 17, "offset of FB_MUTING.bErrAck");
+SL_STATIC_ASSERT(offsetof(FB_MUTING, aReserved2) == 18, "offset of FB_MUTING.aReserved2");
+SL_STATIC_ASSERT(offsetof(FB_MUTING, tDiscTime12) == 20, "offset of FB_MUTING.tDiscTime12");
+SL_STATIC_ASSERT(offsetof(FB_MUTING, tDiscTimeOSSD) == 24, "offset of FB_MUTING.tDiscTimeOSSD");
+SL_STATIC_ASSERT(offsetof(FB_MUTING, tDiscTime34) == 28, "offset of FB_MUTING.tDiscTime34");
+SL_STATIC_ASSERT(offsetof(FB_MUTING, tFilterTime) == 32, "offset of FB_MUTING.tFilterTime");
+SL_STATIC_ASSERT(offsetof(FB_MUTING, tMaxMutingTime) == 36, "offset of FB_MUTING.tMaxMutingTime");
+SL_STATIC_ASSERT(offsetof(FB_MUTING, tMuteDelOutDelay) == 40, "offset of FB_MUTING.tMuteDelOutDelay");
+SL_STATIC_ASSERT(offsetof(FB_MUTING, wInputActive) == 44, "offset of FB_MUTING.wInputActive");
+SL_STATIC_ASSERT(offsetof(FB_MUTING, wInputNegated) == 46, "offset of FB_MUTING.wInputNegated");
+SL_STATIC_ASSERT(offsetof(FB_MUTING, dwOptions) == 48, "offset of FB_MUTING.dwOptions");
+SL_STATIC_ASSERT(offsetof(FB_MUTING, aReserved3) == 52, "offset of FB_MUTING.aReserved3");
+SL_STATIC_ASSERT(offsetof(FB_MUTING, bError) == 56, "offset of FB_MUTING.bError");
+SL_STATIC_ASSERT(offsetof(FB_MUTING, bMutingActive) == 57, "offset of FB_MUTING.bMutingActive");
+SL_STATIC_ASSERT(offsetof(FB_MUTING, bMuteOut) == 58, "offset of FB_MUTING.bMuteOut");
+SL_STATIC_ASSERT(offsetof(FB_MUTING, bMuteDelOut) == 59, "offset of FB_MUTING.bMuteDelOut");
+SL_STATIC_ASSERT(offsetof(FB_MUTING, aReserved4) == 60, "offset of FB_MUTING.aReserved4");
+SL_STATIC_ASSERT(offsetof(FB_MUTING, nState) == 64, "offset of FB_MUTING.nState");
+SL_STATIC_ASSERT(offsetof(FB_MUTING, aReserved5) == 65, "offset of FB_MUTING.aReserved5");
+SL_STATIC_ASSERT(offsetof(FB_MUTING, nDiag) == 66, "offset of FB_MUTING.nDiag");
+SL_STATIC_ASSERT(offsetof(FB_MUTING, aReserved6) == 68, "offset of FB_MUTING.aReserved6");
+SL_STATIC_ASSERT(offsetof(FB_MUTING, stPrivate) == 72, "offset of FB_MUTING.stPrivate");
+SL_STATIC_ASSERT(sizeof(FB_MUTING) == 144, "size of FB_MUTING");
 SL_STATIC_ASSERT(offsetof(SL_GROUP_PRIVATE, dwCtrl) == 0, "offset of SL_GROUP_PRIVATE.dwCtrl");
 SL_STATIC_ASSERT(offsetof(SL_GROUP_PRIVATE, dwDiag) == 4, "offset of SL_GROUP_PRIVATE.dwDiag");
 SL_STATIC_ASSERT(offsetof(SL_GROUP_PRIVATE, dwMembers) == 8, "offset of SL_GROUP_PRIVATE.dwMembers");

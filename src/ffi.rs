@@ -7,8 +7,8 @@ use crate::group::{self, Member, Members, SL_LINK_BOOL};
 use crate::prim::envelope::{self, Block};
 use crate::types::*;
 use crate::{
-    FB_AND, FB_DECOUPLE, FB_EDM, FB_ESTOP, FB_MON, FB_OPMODE, FB_OR, FB_RS, FB_SR, FB_TOF, FB_TON,
-    FB_TON2, FB_TWOHAND, FB_XOR, SL_GROUP, SL_LINK, SL_MEMBER,
+    FB_AND, FB_DECOUPLE, FB_EDM, FB_ESTOP, FB_MON, FB_MUTING, FB_OPMODE, FB_OR, FB_RS, FB_SR,
+    FB_TOF, FB_TON, FB_TON2, FB_TWOHAND, FB_XOR, SL_GROUP, SL_LINK, SL_MEMBER,
 };
 use core::ffi::{c_char, c_void};
 
@@ -356,6 +356,20 @@ pub extern "C" fn sl_tof_cycle(fb: *mut FB_TOF, tNow: u32) -> i32 {
     block_call(fb, |fb| envelope::cycle(fb, tNow))
 }
 
+/// Validates and latches the parameters of an FB_MUTING and resets it to power-up (STOP,
+/// outputs FALSE). Does not modify any input field. Returns SL_OK or SL_E_CONFIG.
+#[no_mangle]
+pub extern "C" fn sl_muting_init(fb: *mut FB_MUTING) -> i32 {
+    block_call(fb, envelope::init)
+}
+
+/// One task cycle of an FB_MUTING at `tNow` (monotonic ms, may wrap at 2^32).
+#[no_mangle]
+#[allow(non_snake_case)]
+pub extern "C" fn sl_muting_cycle(fb: *mut FB_MUTING, tNow: u32) -> i32 {
+    block_call(fb, |fb| envelope::cycle(fb, tNow))
+}
+
 /// The one dispatch from a block type tag to the block: every group operation on a member
 /// goes through here.
 fn member_dyn<'a>(ty: u16, p: *mut c_void) -> Option<&'a mut dyn Member> {
@@ -377,6 +391,7 @@ fn member_dyn<'a>(ty: u16, p: *mut c_void) -> Option<&'a mut dyn Member> {
         SL_TYPE_TON => cast::<FB_TON>(p),
         SL_TYPE_TON2 => cast::<FB_TON2>(p),
         SL_TYPE_TOF => cast::<FB_TOF>(p),
+        SL_TYPE_MUTING => cast::<FB_MUTING>(p),
         _ => None,
     }
 }

@@ -23,6 +23,7 @@ pub use blocks::flipflop::SL_FLIPFLOP_PRIVATE;
 pub use blocks::guard::SL_GUARD_PRIVATE;
 pub use blocks::logic::SL_LOGIC_PRIVATE;
 pub use blocks::mon::FB_MON;
+pub use blocks::muting::{FB_MUTING, SL_MUTING_PRIVATE};
 pub use blocks::opmode::{FB_OPMODE, SL_OPMODE_PRIVATE};
 pub use blocks::or::FB_OR;
 pub use blocks::rs::FB_RS;

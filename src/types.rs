@@ -48,6 +48,14 @@ pub const SL_OPT_FUNCTION_TEST: u32 = 1 << 4;
 /// FB_TON2 "Starts with remaining time" (manual §4.13): with Enable TRUE when TonIn rises,
 /// the timer starts with tDelay minus the stored elapsed time.
 pub const SL_OPT_TON2_REMAINING_TIME: u32 = 1 << 8;
+/// FB_MUTING "Sequential Inputs": the four muting inputs are single-channel sensors checked
+/// one after the other (clear: two two-channel groups MutingIn1/2 and MutingIn3/4, parallel).
+pub const SL_OPT_MUTING_SEQUENTIAL: u32 = 1 << 8;
+/// FB_MUTING "Backwards Mode" (EL6910): a sequence may also run backwards, starting at MutingIn4.
+pub const SL_OPT_MUTING_BACKWARDS: u32 = 1 << 9;
+/// FB_MUTING "OSSD Check Optional" (EL6910): the protective field is not part of the sequence
+/// check; it may be interrupted at any step of a running sequence.
+pub const SL_OPT_MUTING_OSSD_CHECK_OPTIONAL: u32 = 1 << 10;
 
 bitflags::bitflags! {
     /// The option bits of `dwOptions` (ABI §6) as a typed set.
@@ -58,6 +66,9 @@ bitflags::bitflags! {
         const SAFE_INPUTS_AFTER_DISC = SL_OPT_SAFE_INPUTS_AFTER_DISC;
         const MANUAL_RESTART = SL_OPT_MANUAL_RESTART;
         const FUNCTION_TEST = SL_OPT_FUNCTION_TEST;
+        const MUTING_SEQUENTIAL = SL_OPT_MUTING_SEQUENTIAL;
+        const MUTING_BACKWARDS = SL_OPT_MUTING_BACKWARDS;
+        const MUTING_OSSD_CHECK_OPTIONAL = SL_OPT_MUTING_OSSD_CHECK_OPTIONAL;
     }
 }
 
@@ -73,6 +84,10 @@ pub const SL_DIAG_DISC4: u16 = 1 << 3;
 pub const SL_DIAG_EDM1: u16 = 1 << 4;
 /// Diag bit 5: EDM monitoring error EDM2.
 pub const SL_DIAG_EDM2: u16 = 1 << 5;
+/// Diag bit 6 (FB_MUTING): the muting sequence was violated.
+pub const SL_DIAG_MUTING_SEQUENCE: u16 = 1 << 6;
+/// Diag bit 7 (FB_MUTING): the maximum muting time was exceeded.
+pub const SL_DIAG_MUTING_MAX_TIME: u16 = 1 << 7;
 /// Diag bit 8: bit 0 with "Safe Inputs after Disc Error" active (set in addition to bit 0).
 pub const SL_DIAG_SAFE_IN_DISC1: u16 = 1 << 8;
 /// Diag bit 9: bit 1 with "Safe Inputs after Disc Error" active.
@@ -113,6 +128,8 @@ bitflags::bitflags! {
         const DISC4 = SL_DIAG_DISC4;
         const EDM1 = SL_DIAG_EDM1;
         const EDM2 = SL_DIAG_EDM2;
+        const MUTING_SEQUENCE = SL_DIAG_MUTING_SEQUENCE;
+        const MUTING_MAX_TIME = SL_DIAG_MUTING_MAX_TIME;
         const SAFE_IN_DISC1 = SL_DIAG_SAFE_IN_DISC1;
         const SAFE_IN_DISC2 = SL_DIAG_SAFE_IN_DISC2;
         const SAFE_IN_DISC3 = SL_DIAG_SAFE_IN_DISC3;
@@ -155,6 +172,24 @@ pub const SL_STATE_TWOHAND_RELEASE: u8 = 13;
 pub const SL_STATE_TON_DELAYIN: u8 = 9;
 /// FB_TON2 state DELAYIN (9): TonIn is TRUE and the delay has not yet expired.
 pub const SL_STATE_TON2_DELAYIN: u8 = 9;
+/// FB_MUTING state MUTING1 (9): first step of the muting sequence (docs/semantics.md M1).
+pub const SL_STATE_MUTING_MUTING1: u8 = 9;
+/// FB_MUTING state MUTING2 (10).
+pub const SL_STATE_MUTING_MUTING2: u8 = 10;
+/// FB_MUTING state MUTING3 (11).
+pub const SL_STATE_MUTING_MUTING3: u8 = 11;
+/// FB_MUTING state MUTING4 (12).
+pub const SL_STATE_MUTING_MUTING4: u8 = 12;
+/// FB_MUTING state MUTING5 (13).
+pub const SL_STATE_MUTING_MUTING5: u8 = 13;
+/// FB_MUTING state MUTING6 (14).
+pub const SL_STATE_MUTING_MUTING6: u8 = 14;
+/// FB_MUTING state MUTING7 (15).
+pub const SL_STATE_MUTING_MUTING7: u8 = 15;
+/// FB_MUTING state MUTING8 (16).
+pub const SL_STATE_MUTING_MUTING8: u8 = 16;
+/// FB_MUTING state MUTING9 (17): last step of the muting sequence.
+pub const SL_STATE_MUTING_MUTING9: u8 = 17;
 
 /// Block type tag of FB_ESTOP (`SL_MEMBER.nType`, `sl_diag_text`).
 pub const SL_TYPE_ESTOP: u16 = 1;
@@ -174,6 +209,8 @@ pub const SL_TYPE_TON: u16 = 13;
 pub const SL_TYPE_TON2: u16 = 14;
 /// Block type tag of FB_TOF.
 pub const SL_TYPE_TOF: u16 = 15;
+/// Block type tag of FB_MUTING.
+pub const SL_TYPE_MUTING: u16 = 9;
 
 /// Block type tag of FB_XOR.
 pub const SL_TYPE_XOR: u16 = 5;
@@ -229,6 +266,13 @@ pub const SL_TIMEBASE_1000MS: u16 = 1000;
 pub const SL_TIMER_STEPS_MAX: u32 = 60_000;
 /// Largest timer delay in ms (60,000 s; 60,000 steps of 1000 ms).
 pub const SL_TIMER_DELAY_MAX: u32 = 60_000_000;
+
+/// Largest `tFilterTime` of FB_MUTING in ms (manual §4.8.1: "up to 500 ms").
+pub const SL_MUTING_FILTER_TIME_MAX: u32 = 500;
+/// Largest `tMaxMutingTime` of FB_MUTING in ms (manual §4.8.1: "a maximum of 10 minutes").
+pub const SL_MUTING_MAX_MUTING_TIME_MAX: u32 = 600_000;
+/// Largest `tMuteDelOutDelay` of FB_MUTING in ms (manual §4.8.1: "delayed by up to 30 seconds").
+pub const SL_MUTING_DELOUT_DELAY_MAX: u32 = 30_000;
 
 /// Text for a status code (for `sl_status_str`); NUL-terminated so C can use it directly.
 pub const fn status_text(status: i32) -> &'static str {

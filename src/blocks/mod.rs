@@ -2,7 +2,7 @@
 //! state machine share it: ESTOP and MON (manual §4.4, §4.5) in `guard`, the
 //! combinational blocks (AND, OR, XOR, DECOUPLE) in `logic`, RS and SR (§4.10, §4.11) in
 //! `flipflop`, the timers TON, TON2 and TOF (§4.12–§4.14) in `timer`. OPMODE (§4.3),
-//! TWOHAND (§4.7) and EDM (§4.9) have state machines of their own.
+//! TWOHAND (§4.7), MUTING (§4.8) and EDM (§4.9) have state machines of their own.
 
 pub mod and;
 pub mod decouple;
@@ -12,6 +12,7 @@ pub mod flipflop;
 pub mod guard;
 pub mod logic;
 pub mod mon;
+pub mod muting;
 pub mod opmode;
 pub mod or;
 pub mod rs;
@@ -51,10 +52,11 @@ pub static BLOCKS: &[BlockInfo] = &[
     mon::INFO,
     and::INFO,
     or::INFO,
-    opmode::INFO,
-    twohand::INFO,
     xor::INFO,
     decouple::INFO,
+    opmode::INFO,
+    twohand::INFO,
+    muting::INFO,
     edm::INFO,
     rs::INFO,
     sr::INFO,
@@ -132,6 +134,20 @@ impl Writer<'_> {
         ) {
             dst.copy_from_slice(src);
             self.len += n;
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn registry_tags_are_unique_and_in_order() {
+        assert!(BLOCKS.windows(2).all(|w| w[0].tag < w[1].tag));
+        for b in BLOCKS {
+            assert!(b.states.iter().all(|(_, n)| n.ends_with('\0')), "{}", b.name);
+            assert_eq!(info(b.tag).map(|i| i.name), Some(b.name));
         }
     }
 }
