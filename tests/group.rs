@@ -544,3 +544,22 @@ fn diag_text_names_the_bits() {
         String::from_utf8(bytes).unwrap()
     }
 }
+
+/// C3: a corrupted latched parameter copy is found when an output of a combinational block
+/// is about to switch on.
+#[test]
+fn logic_block_verifies_its_parameters_before_switching_on() {
+    let mut a = and2();
+    a.bRun = 1;
+    assert_eq!(a.cycle(0), SL_OK);
+    assert_eq!(a.nState, SL_STATE_SAFE);
+    // Flip the latched negation mask and its CRC stays stale; the live field is flipped too,
+    // so the live/latched comparison alone cannot see it.
+    a.stPrivate.stHeader.nNegated ^= 0b01;
+    a.wInputNegated ^= 0b01;
+    a.bAndIn1 = 0;
+    a.bAndIn2 = 1;
+    assert_eq!(a.cycle(1), SL_E_CORRUPT);
+    assert_eq!((a.nState, a.bAndOut), (SL_STATE_ERROR, 0));
+    assert_eq!(a.nDiag & SL_DIAG_CORRUPT, SL_DIAG_CORRUPT);
+}

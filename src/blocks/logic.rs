@@ -129,6 +129,17 @@ macro_rules! logic_block {
             }
             #[inline(always)]
             fn step(&mut self, inp: &LogicIn, _now: u32) -> i32 {
+                // An output switching on is where the latched parameters are verified (C3).
+                let was_on = if self.private().stHeader.nState == SL_STATE_RUN {
+                    self.private().stHeader.wAux as u8
+                } else {
+                    0
+                };
+                let rising = inp.state == SL_STATE_RUN && inp.outputs & !was_on != 0;
+                if rising && self.latched_crc() != self.private().stHeader.wParamCrc {
+                    self.private_mut().stHeader.enter_error(SL_DIAG_CORRUPT);
+                    return SL_E_CORRUPT;
+                }
                 let h = &mut self.private_mut().stHeader;
                 h.nState = inp.state;
                 h.wAux = u16::from(inp.outputs);
