@@ -47,15 +47,49 @@ void h_check_step(const char *file, int line, const char *block, uint32_t t,
                   uint8_t del, int32_t xrc, uint8_t xstate, uint16_t xdiag, uint8_t xerr,
                   uint8_t xout, uint8_t xdel);
 
+/*
+ * Generic block step (the blocks of ABI §9): status code, nState, nDiag and EVERY BOOL
+ * output of the block packed into a bit set `outs` (bit order defined by each scenario file;
+ * a byte other than 0/1 in any output sets H_OUT_NOT_BOOL). Counts as ONE check; on failure
+ * prints every field that differs, with state names from sl_state_str(`type`, ...).
+ */
+#define H_OUT_NOT_BOOL 0x80000000u
+uint32_t h_pack_bool(uint32_t outs, SL_BOOL v, unsigned bit);
+void h_check_fb(const char *file, int line, const char *block, uint16_t type, uint32_t t,
+                int32_t rc, uint8_t state, uint16_t diag, uint32_t outs, int32_t xrc,
+                uint8_t xstate, uint16_t xdiag, uint32_t xouts);
+
+/*
+ * sl_diag_text(type, diag) returns SL_OK and a text equal to `expected` (mode 0) or
+ * containing `expected` (mode 1), ASCII case ignored in both (the manual's texts begin
+ * with a capital, the library may lower it).
+ */
+void h_check_diag_text(uint16_t type, uint16_t diag, const char *expected, int contains,
+                       const char *file, int line);
+
 #define CHECK(cond, msg) h_check((cond) ? 1 : 0, __FILE__, __LINE__, (msg))
 #define CHECK_INT(got, expected) \
     h_check_int((long long)(got), (long long)(expected), __FILE__, __LINE__, #got)
 #define CHECK_STR(got, expected) h_check_str((got), (expected), __FILE__, __LINE__, #got)
 
-/* Scenario groups (test_estop.c, test_mon.c, test_api.c, test_group.c). */
+#define CHECK_DIAG_TEXT(type, diag, text) \
+    h_check_diag_text((type), (diag), (text), 0, __FILE__, __LINE__)
+#define CHECK_DIAG_TEXT_HAS(type, diag, text) \
+    h_check_diag_text((type), (diag), (text), 1, __FILE__, __LINE__)
+
+/* Scenario groups (test_estop.c, test_mon.c, test_api.c, test_group.c, test_logic.c,
+ * test_opmode.c, test_twohand.c, test_muting.c, test_edm.c, test_flipflop.c,
+ * test_timers.c). */
 void run_estop_scenarios(void);
 void run_mon_scenarios(void);
 void run_api_scenarios(void);
 void run_group_scenarios(void);
+void run_logic_scenarios(void);
+void run_opmode_scenarios(void);
+void run_twohand_scenarios(void);
+void run_muting_scenarios(void);
+void run_edm_scenarios(void);
+void run_flipflop_scenarios(void);
+void run_timer_scenarios(void);
 
 #endif /* SL_C_TESTS_HARNESS_H */

@@ -152,24 +152,20 @@ macro_rules! flipflop_block {
                 h.nState = state_of(next(false, *inp, Self::SET_DOMINANT));
             }
             fn step(&mut self, inp: &FlipFlopIn, _now: u32) -> i32 {
-                let crc = self.latched_crc();
-                let h = &mut self.private_mut().stHeader;
-                let is_set = match h.nState {
+                let is_set = match self.private().stHeader.nState {
                     SL_STATE_SAFE => false,
                     STATE_SET => true,
-                    _ => {
-                        // A state value this block never takes: the memory cannot be trusted.
-                        h.enter_error(SL_DIAG_CORRUPT);
-                        return SL_E_CORRUPT;
-                    }
+                    // A state value this block never takes: the memory cannot be trusted.
+                    _ => false,
                 };
+                let known = matches!(self.private().stHeader.nState, SL_STATE_SAFE | STATE_SET);
                 let set = next(is_set, *inp, Self::SET_DOMINANT);
                 // The output switches on: verify the latched parameters first (C3).
-                if set && !is_set && crc != h.wParamCrc {
-                    h.enter_error(SL_DIAG_CORRUPT);
+                if !known || (set && !is_set && !self.params_intact()) {
+                    self.private_mut().stHeader.enter_error(SL_DIAG_CORRUPT);
                     return SL_E_CORRUPT;
                 }
-                h.nState = state_of(set);
+                self.private_mut().stHeader.nState = state_of(set);
                 SL_OK
             }
             fn error_remains(&mut self, _inp: &FlipFlopIn) -> bool {

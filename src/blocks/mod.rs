@@ -146,7 +146,11 @@ mod tests {
     fn registry_tags_are_unique_and_in_order() {
         assert!(BLOCKS.windows(2).all(|w| w[0].tag < w[1].tag));
         for b in BLOCKS {
-            assert!(b.states.iter().all(|(_, n)| n.ends_with('\0')), "{}", b.name);
+            assert!(
+                b.states.iter().all(|(_, n)| n.ends_with('\0')),
+                "{}",
+                b.name
+            );
             assert_eq!(info(b.tag).map(|i| i.name), Some(b.name));
         }
     }

@@ -185,9 +185,20 @@ impl FB_OPMODE {
     }
 }
 
+/// CRC of the latched parameters (header masks and the discrepancy time).
+fn opmode_crc(h: &SL_PRIVATE_HEADER, disc: u16) -> u16 {
+    param_crc(
+        <FB_OPMODE as Block>::MAGIC,
+        h.nActive,
+        h.nNegated,
+        h.wOptions,
+        &[disc],
+    )
+}
+
 /// A mode output switches on: verify the latched parameters first (C3), then RUN with it.
-fn enable(h: &mut SL_PRIVATE_HEADER, mode: u8, crc: u16) -> (u8, i32) {
-    if crc != h.wParamCrc {
+fn enable(h: &mut SL_PRIVATE_HEADER, disc: u16, mode: u8) -> (u8, i32) {
+    if opmode_crc(h, disc) != h.wParamCrc {
         h.enter_error(SL_DIAG_CORRUPT);
         return (SL_STATE_ERROR, SL_E_CORRUPT);
     }
@@ -251,15 +262,7 @@ impl Block for FB_OPMODE {
     }
 
     fn latched_crc(&self) -> u16 {
-        let p = &self.stPrivate;
-        let h = &p.stHeader;
-        param_crc(
-            Self::MAGIC,
-            h.nActive,
-            h.nNegated,
-            h.wOptions,
-            &[p.wDiscTime],
-        )
+        opmode_crc(&self.stPrivate.stHeader, self.stPrivate.wDiscTime)
     }
 
     fn decode(&mut self) -> (OpmodeIn, bool) {
@@ -291,7 +294,6 @@ impl Block for FB_OPMODE {
     }
 
     fn step(&mut self, inp: &OpmodeIn, now: u32) -> i32 {
-        let crc = self.latched_crc();
         let manual = self.manual_restart();
         let p = &mut self.stPrivate;
         let disc = u32::from(p.wDiscTime);
@@ -332,7 +334,7 @@ impl Block for FB_OPMODE {
                     Restart::Wait => (SL_STATE_SAFE, 0),
                     Restart::Start => (SL_STATE_START, inp.mode),
                     Restart::Enable => {
-                        let (s, st) = enable(h, latched, crc);
+                        let (s, st) = enable(h, disc as u16, latched);
                         status = st;
                         (s, latched)
                     }
@@ -340,7 +342,7 @@ impl Block for FB_OPMODE {
             }
             SL_STATE_SAFE => {
                 if inp.mode != 0 {
-                    let (s, st) = enable(h, inp.mode, crc);
+                    let (s, st) = enable(h, disc as u16, inp.mode);
                     status = st;
                     (s, inp.mode)
                 } else {
@@ -352,7 +354,7 @@ impl Block for FB_OPMODE {
                     (SL_STATE_RUN, latched)
                 } else if inp.mode != 0 && !manual {
                     // Automatic: OpOutX = OpInX, a direct change of mode switches over (O9).
-                    let (s, st) = enable(h, inp.mode, crc);
+                    let (s, st) = enable(h, disc as u16, inp.mode);
                     status = st;
                     (s, inp.mode)
                 } else {

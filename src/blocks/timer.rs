@@ -206,6 +206,19 @@ const fn output<T: TimerBlock>(p: Phase) -> bool {
     matches!(p, Phase::Expired) != T::OFF_DELAY
 }
 
+/// CRC of a timer's latched parameters (header masks, delay, timebase).
+fn timer_crc(magic: u16, p: &SL_TIMER_PRIVATE) -> u16 {
+    let h = &p.stHeader;
+    let d = p.dwDelay;
+    param_crc(
+        magic,
+        h.nActive,
+        h.nNegated,
+        h.wOptions,
+        &[d as u16, (d >> 16) as u16, p.wTimeBase],
+    )
+}
+
 /// The envelope's view of every block of this family.
 macro_rules! timer_block {
     ($t:ty) => {
@@ -265,16 +278,7 @@ macro_rules! timer_block {
             }
 
             fn latched_crc(&self) -> u16 {
-                let p = self.private();
-                let h = &p.stHeader;
-                let d = p.dwDelay;
-                param_crc(
-                    Self::MAGIC,
-                    h.nActive,
-                    h.nNegated,
-                    h.wOptions,
-                    &[d as u16, (d >> 16) as u16, p.wTimeBase],
-                )
+                timer_crc(Self::MAGIC, self.private())
             }
 
             fn decode(&mut self) -> (TimerIn, bool) {
@@ -298,7 +302,6 @@ macro_rules! timer_block {
             }
 
             fn step(&mut self, inp: &TimerIn, now: u32) -> i32 {
-                let crc = self.latched_crc();
                 let p = self.private_mut();
                 let phase = match phase_of::<Self>(p.stHeader.nState) {
                     Some(ph) if p.timers_intact() => ph,
@@ -332,7 +335,10 @@ macro_rules! timer_block {
                     other => other,
                 };
                 // The output switches on: verify the latched parameters first (C3).
-                if !output::<Self>(phase) && output::<Self>(next) && crc != p.stHeader.wParamCrc {
+                if !output::<Self>(phase)
+                    && output::<Self>(next)
+                    && timer_crc(Self::MAGIC, p) != p.stHeader.wParamCrc
+                {
                     p.stHeader.enter_error(SL_DIAG_CORRUPT);
                     return SL_E_CORRUPT;
                 }

@@ -226,9 +226,20 @@ fn with_safe_bits(d: u16, safe_inputs: bool) -> u16 {
     }
 }
 
+/// CRC of the latched parameters (header masks and the times).
+fn twohand_crc(h: &SL_PRIVATE_HEADER, times: &[u16]) -> u16 {
+    param_crc(
+        <FB_TWOHAND as Block>::MAGIC,
+        h.nActive,
+        h.nNegated,
+        h.wOptions,
+        times,
+    )
+}
+
 /// The output switches on: verify the latched parameters first (C3).
-fn enable(h: &mut SL_PRIVATE_HEADER, crc: u16) -> i32 {
-    if crc != h.wParamCrc {
+fn enable(h: &mut SL_PRIVATE_HEADER, times: &[u16]) -> i32 {
+    if twohand_crc(h, times) != h.wParamCrc {
         h.enter_error(SL_DIAG_CORRUPT);
         return SL_E_CORRUPT;
     }
@@ -307,9 +318,7 @@ impl Block for FB_TWOHAND {
     }
 
     fn latched_crc(&self) -> u16 {
-        let p = &self.stPrivate;
-        let h = &p.stHeader;
-        param_crc(Self::MAGIC, h.nActive, h.nNegated, h.wOptions, &p.awTime)
+        twohand_crc(&self.stPrivate.stHeader, &self.stPrivate.awTime)
     }
 
     fn decode(&mut self) -> (TwohandIn, bool) {
@@ -346,7 +355,6 @@ impl Block for FB_TWOHAND {
     }
 
     fn step(&mut self, inp: &TwohandIn, now: u32) -> i32 {
-        let crc = self.latched_crc();
         let safe_inputs = self.safe_inputs_option();
         let p = &mut self.stPrivate;
 
@@ -363,6 +371,7 @@ impl Block for FB_TWOHAND {
             now,
         );
         let window = u32::from(p.awTime[T_PAIRS]);
+        let times = p.awTime;
         let h = &mut p.stHeader;
         h.wAux = (h.wAux & !AUX_PAIR_TIMERS) | u16::from(running);
         if disc != 0 {
@@ -394,7 +403,7 @@ impl Block for FB_TWOHAND {
                 };
                 if second && first {
                     // RUN only from 1BUTTON/2BUTTON, with both groups actuated.
-                    return enable(h, crc);
+                    return enable(h, &times);
                 } else if second {
                     // Diag bit 6: the second group came while the first was let go (H10).
                     h.enter_error(SL_DIAG_TWOHAND_ERROR);

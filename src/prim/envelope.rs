@@ -33,6 +33,11 @@ pub trait Block {
     fn store_params(&mut self, p: &Self::Params);
     /// CRC of the latched copy.
     fn latched_crc(&self) -> u16;
+    /// The latched copy still matches its CRC: checked where an output is about to switch
+    /// on (docs/semantics.md C3), never on every cycle (the CRC costs more than a cycle).
+    fn params_intact(&self) -> bool {
+        self.latched_crc() == self.header().wParamCrc
+    }
 
     /// Reads the input bytes, updates the block's edge memories, and tells whether a byte
     /// was an invalid BOOL.

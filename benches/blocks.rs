@@ -1,0 +1,418 @@
+//! Per-block benchmark (issue 3): every block called through its C function with steady
+//! inputs, in the steady state the inputs lead to (RUN where the block has one). Prints the
+//! median and p99 per call, the struct and private-state sizes, and each target.
+//! `cargo bench --bench blocks`. Reports, never asserts timing.
+
+use safelogic::ffi::*;
+use safelogic::*;
+use std::hint::black_box;
+use std::mem::size_of_val;
+use std::time::Instant;
+
+const CALLS_PER_BATCH: u32 = 1000;
+
+struct Row {
+    name: &'static str,
+    state: u8,
+    ty: u16,
+    median: f64,
+    p99: f64,
+    size: usize,
+    private: usize,
+    target: f64,
+}
+
+/// Brings `fb` to its steady state (a few 1 ms cycles), then times batches of calls of
+/// `cycle` through an opaque function pointer, as from C.
+fn measure<T>(
+    (name, ty, target): (&'static str, u16, f64),
+    batches: usize,
+    mut fb: T,
+    private: usize,
+    cycle: extern "C" fn(*mut T, u32) -> i32,
+    state: fn(&T) -> u8,
+) -> Row {
+    let f: extern "C" fn(*mut T, u32) -> i32 = black_box(cycle);
+    let mut t = 0u32;
+    for _ in 0..200 {
+        t += 1;
+        f(&mut fb, t);
+    }
+    let mut per_call = Vec::with_capacity(batches);
+    for _ in 0..batches {
+        let start = Instant::now();
+        for _ in 0..CALLS_PER_BATCH {
+            t = t.wrapping_add(1);
+            black_box(f(black_box(&mut fb), t));
+        }
+        per_call.push(start.elapsed().as_nanos() as f64 / f64::from(CALLS_PER_BATCH));
+    }
+    per_call.sort_by(f64::total_cmp);
+    let at = |q: f64| per_call[((per_call.len() - 1) as f64 * q).round() as usize];
+    Row {
+        name,
+        state: state(&fb),
+        ty,
+        median: at(0.5),
+        p99: at(0.99),
+        size: size_of_val(&fb),
+        private,
+        target,
+    }
+}
+
+fn main() {
+    let quick = !std::env::args().any(|a| a == "--bench");
+    let batches = if quick { 20 } else { 3000 };
+    let logic = 5.0;
+    let timer = 50.0;
+    let mut rows = Vec::new();
+
+    let mut e = FB_ESTOP {
+        wInputActive: 0b11,
+        tDiscTime12: 20,
+        bRun: 1,
+        ..Default::default()
+    };
+    (e.bEStopIn1, e.bEStopIn2) = (1, 1);
+    e.init();
+    e.cycle(0);
+    e.bRestart = 1;
+    e.cycle(0);
+    e.bRestart = 0;
+    let private = size_of_val(&e.stPrivate);
+    rows.push(measure(
+        "ESTOP",
+        SL_TYPE_ESTOP,
+        logic,
+        batches,
+        e,
+        private,
+        sl_estop_cycle,
+        |f| f.nState,
+    ));
+
+    let mut m = FB_MON {
+        wInputActive: 0b11,
+        tDiscTime12: 20,
+        bRun: 1,
+        ..Default::default()
+    };
+    (m.bMonIn1, m.bMonIn2) = (1, 1);
+    m.init();
+    let private = size_of_val(&m.stPrivate);
+    rows.push(measure(
+        "MON",
+        SL_TYPE_MON,
+        logic,
+        batches,
+        m,
+        private,
+        sl_mon_cycle,
+        |f| f.nState,
+    ));
+
+    let mut a = FB_AND {
+        wInputActive: 0b11,
+        bRun: 1,
+        ..Default::default()
+    };
+    (a.bAndIn1, a.bAndIn2) = (1, 1);
+    a.init();
+    let private = size_of_val(&a.stPrivate);
+    rows.push(measure(
+        "AND",
+        SL_TYPE_AND,
+        logic,
+        batches,
+        a,
+        private,
+        sl_and_cycle,
+        |f| f.nState,
+    ));
+
+    let mut o = FB_OR {
+        wInputActive: 0b11,
+        bRun: 1,
+        ..Default::default()
+    };
+    o.bOrIn1 = 1;
+    o.init();
+    let private = size_of_val(&o.stPrivate);
+    rows.push(measure(
+        "OR",
+        SL_TYPE_OR,
+        logic,
+        batches,
+        o,
+        private,
+        sl_or_cycle,
+        |f| f.nState,
+    ));
+
+    let mut x = FB_XOR {
+        wInputActive: 0b11,
+        bRun: 1,
+        ..Default::default()
+    };
+    (x.bXor1In1, x.bXor1In2) = (1, 1);
+    x.init();
+    let private = size_of_val(&x.stPrivate);
+    rows.push(measure(
+        "XOR",
+        SL_TYPE_XOR,
+        logic,
+        batches,
+        x,
+        private,
+        sl_xor_cycle,
+        |f| f.nState,
+    ));
+
+    let mut d = FB_DECOUPLE {
+        wInputActive: 0xFF,
+        bRun: 1,
+        ..Default::default()
+    };
+    (d.bDecIn1, d.bDecIn5) = (1, 1);
+    d.init();
+    let private = size_of_val(&d.stPrivate);
+    rows.push(measure(
+        "DECOUPLE",
+        SL_TYPE_DECOUPLE,
+        logic,
+        batches,
+        d,
+        private,
+        sl_decouple_cycle,
+        |f| f.nState,
+    ));
+
+    let mut op = FB_OPMODE {
+        wInputActive: 0b11,
+        tDiscTime: 100,
+        bRun: 1,
+        ..Default::default()
+    };
+    op.bOpIn1 = 1;
+    op.init();
+    let private = size_of_val(&op.stPrivate);
+    rows.push(measure(
+        "OPMODE",
+        SL_TYPE_OPMODE,
+        logic,
+        batches,
+        op,
+        private,
+        sl_opmode_cycle,
+        |f| f.nState,
+    ));
+
+    let mut th = FB_TWOHAND {
+        wInputActive: 0b1111,
+        tDiscTime12: 100,
+        tDiscTime34: 100,
+        bRun: 1,
+        ..Default::default()
+    };
+    th.init();
+    th.cycle(0);
+    (th.bTwoHand1, th.bTwoHand2, th.bTwoHand3, th.bTwoHand4) = (1, 1, 1, 1);
+    let private = size_of_val(&th.stPrivate);
+    rows.push(measure(
+        "TWOHAND",
+        SL_TYPE_TWOHAND,
+        logic,
+        batches,
+        th,
+        private,
+        sl_twohand_cycle,
+        |f| f.nState,
+    ));
+
+    let mut mu = FB_MUTING {
+        wInputActive: 0b11_1111,
+        tDiscTime12: 50,
+        tDiscTime34: 50,
+        tDiscTimeOSSD: 50,
+        bRun: 1,
+        ..Default::default()
+    };
+    (
+        mu.bMutingEnable,
+        mu.bEDM1,
+        mu.bEDM2,
+        mu.bOSSDIn1,
+        mu.bOSSDIn2,
+    ) = (1, 1, 1, 1, 1);
+    mu.init();
+    let private = size_of_val(&mu.stPrivate);
+    rows.push(measure(
+        "MUTING",
+        SL_TYPE_MUTING,
+        timer,
+        batches,
+        mu,
+        private,
+        sl_muting_cycle,
+        |f| f.nState,
+    ));
+
+    let mut ed = FB_EDM {
+        wInputActive: 0b11,
+        tSwitchOnTime: 100,
+        tSwitchOffTime: 100,
+        bRun: 1,
+        ..Default::default()
+    };
+    (ed.bMon1, ed.bMon2) = (1, 0);
+    ed.init();
+    let private = size_of_val(&ed.stPrivate);
+    rows.push(measure(
+        "EDM",
+        SL_TYPE_EDM,
+        logic,
+        batches,
+        ed,
+        private,
+        sl_edm_cycle,
+        |f| f.nState,
+    ));
+
+    let mut rs = FB_RS {
+        wInputActive: 0b11,
+        bRun: 1,
+        ..Default::default()
+    };
+    rs.init();
+    rs.bSet = 1;
+    rs.cycle(0);
+    rs.bSet = 0;
+    let private = size_of_val(&rs.stPrivate);
+    rows.push(measure(
+        "RS",
+        SL_TYPE_RS,
+        logic,
+        batches,
+        rs,
+        private,
+        sl_rs_cycle,
+        |f| f.nState,
+    ));
+
+    let mut sr = FB_SR {
+        wInputActive: 0b11,
+        bRun: 1,
+        ..Default::default()
+    };
+    sr.init();
+    sr.bSet = 1;
+    sr.cycle(0);
+    sr.bSet = 0;
+    let private = size_of_val(&sr.stPrivate);
+    rows.push(measure(
+        "SR",
+        SL_TYPE_SR,
+        logic,
+        batches,
+        sr,
+        private,
+        sl_sr_cycle,
+        |f| f.nState,
+    ));
+
+    let mut ton = FB_TON {
+        wInputActive: 1,
+        tDelay: 10,
+        bRun: 1,
+        ..Default::default()
+    };
+    ton.bTonIn1 = 1;
+    ton.init();
+    let private = size_of_val(&ton.stPrivate);
+    rows.push(measure(
+        "TON",
+        SL_TYPE_TON,
+        timer,
+        batches,
+        ton,
+        private,
+        sl_ton_cycle,
+        |f| f.nState,
+    ));
+
+    let mut ton2 = FB_TON2 {
+        wInputActive: 1,
+        tDelay: 10,
+        bRun: 1,
+        ..Default::default()
+    };
+    (ton2.bTonIn1, ton2.bEnable) = (1, 1);
+    ton2.init();
+    let private = size_of_val(&ton2.stPrivate);
+    rows.push(measure(
+        "TON2",
+        SL_TYPE_TON2,
+        timer,
+        batches,
+        ton2,
+        private,
+        sl_ton2_cycle,
+        |f| f.nState,
+    ));
+
+    let mut tof = FB_TOF {
+        wInputActive: 1,
+        tDelay: 10,
+        bRun: 1,
+        ..Default::default()
+    };
+    tof.bTofIn1 = 1;
+    tof.init();
+    let private = size_of_val(&tof.stPrivate);
+    rows.push(measure(
+        "TOF",
+        SL_TYPE_TOF,
+        timer,
+        batches,
+        tof,
+        private,
+        sl_tof_cycle,
+        |f| f.nState,
+    ));
+
+    let cpu = std::fs::read_to_string("/proc/cpuinfo")
+        .ok()
+        .and_then(|s| {
+            s.lines()
+                .find(|l| l.starts_with("model name"))
+                .map(|l| l.split(':').nth(1).unwrap_or("").trim().to_string())
+        })
+        .unwrap_or_else(|| "unknown".into());
+    println!(
+        "safelogic per-block benchmark{}",
+        if quick {
+            " (smoke run: pass --bench for figures)"
+        } else {
+            ""
+        }
+    );
+    println!("  CPU: {cpu}; {batches} batches x {CALLS_PER_BATCH} calls, steady inputs, 1 ms per call, through the C functions");
+    println!(
+        "  {:<9} {:<10} {:>10} {:>10} {:>7} {:>8} {:>9}  result",
+        "block", "state", "median ns", "p99 ns", "size B", "priv. B", "target ns"
+    );
+    for r in &rows {
+        println!(
+            "  {:<9} {:<10} {:>10.2} {:>10.2} {:>7} {:>8} {:>9}  {}",
+            r.name,
+            state_name(r.ty, r.state),
+            r.median,
+            r.p99,
+            r.size,
+            r.private,
+            r.target,
+            if r.median <= r.target { "PASS" } else { "MISS" }
+        );
+    }
+}
