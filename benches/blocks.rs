@@ -82,9 +82,7 @@ fn main() {
     e.bRestart = 0;
     let private = size_of_val(&e.stPrivate);
     rows.push(measure(
-        "ESTOP",
-        SL_TYPE_ESTOP,
-        logic,
+        ("ESTOP", SL_TYPE_ESTOP, logic),
         batches,
         e,
         private,
@@ -102,9 +100,7 @@ fn main() {
     m.init();
     let private = size_of_val(&m.stPrivate);
     rows.push(measure(
-        "MON",
-        SL_TYPE_MON,
-        logic,
+        ("MON", SL_TYPE_MON, logic),
         batches,
         m,
         private,
@@ -121,9 +117,7 @@ fn main() {
     a.init();
     let private = size_of_val(&a.stPrivate);
     rows.push(measure(
-        "AND",
-        SL_TYPE_AND,
-        logic,
+        ("AND", SL_TYPE_AND, logic),
         batches,
         a,
         private,
@@ -140,9 +134,7 @@ fn main() {
     o.init();
     let private = size_of_val(&o.stPrivate);
     rows.push(measure(
-        "OR",
-        SL_TYPE_OR,
-        logic,
+        ("OR", SL_TYPE_OR, logic),
         batches,
         o,
         private,
@@ -159,9 +151,7 @@ fn main() {
     x.init();
     let private = size_of_val(&x.stPrivate);
     rows.push(measure(
-        "XOR",
-        SL_TYPE_XOR,
-        logic,
+        ("XOR", SL_TYPE_XOR, logic),
         batches,
         x,
         private,
@@ -178,9 +168,7 @@ fn main() {
     d.init();
     let private = size_of_val(&d.stPrivate);
     rows.push(measure(
-        "DECOUPLE",
-        SL_TYPE_DECOUPLE,
-        logic,
+        ("DECOUPLE", SL_TYPE_DECOUPLE, logic),
         batches,
         d,
         private,
@@ -198,9 +186,7 @@ fn main() {
     op.init();
     let private = size_of_val(&op.stPrivate);
     rows.push(measure(
-        "OPMODE",
-        SL_TYPE_OPMODE,
-        logic,
+        ("OPMODE", SL_TYPE_OPMODE, logic),
         batches,
         op,
         private,
@@ -220,9 +206,7 @@ fn main() {
     (th.bTwoHand1, th.bTwoHand2, th.bTwoHand3, th.bTwoHand4) = (1, 1, 1, 1);
     let private = size_of_val(&th.stPrivate);
     rows.push(measure(
-        "TWOHAND",
-        SL_TYPE_TWOHAND,
-        logic,
+        ("TWOHAND", SL_TYPE_TWOHAND, logic),
         batches,
         th,
         private,
@@ -248,9 +232,7 @@ fn main() {
     mu.init();
     let private = size_of_val(&mu.stPrivate);
     rows.push(measure(
-        "MUTING",
-        SL_TYPE_MUTING,
-        timer,
+        ("MUTING", SL_TYPE_MUTING, timer),
         batches,
         mu,
         private,
@@ -269,9 +251,7 @@ fn main() {
     ed.init();
     let private = size_of_val(&ed.stPrivate);
     rows.push(measure(
-        "EDM",
-        SL_TYPE_EDM,
-        logic,
+        ("EDM", SL_TYPE_EDM, logic),
         batches,
         ed,
         private,
@@ -290,9 +270,7 @@ fn main() {
     rs.bSet = 0;
     let private = size_of_val(&rs.stPrivate);
     rows.push(measure(
-        "RS",
-        SL_TYPE_RS,
-        logic,
+        ("RS", SL_TYPE_RS, logic),
         batches,
         rs,
         private,
@@ -311,9 +289,7 @@ fn main() {
     sr.bSet = 0;
     let private = size_of_val(&sr.stPrivate);
     rows.push(measure(
-        "SR",
-        SL_TYPE_SR,
-        logic,
+        ("SR", SL_TYPE_SR, logic),
         batches,
         sr,
         private,
@@ -331,9 +307,7 @@ fn main() {
     ton.init();
     let private = size_of_val(&ton.stPrivate);
     rows.push(measure(
-        "TON",
-        SL_TYPE_TON,
-        timer,
+        ("TON", SL_TYPE_TON, timer),
         batches,
         ton,
         private,
@@ -351,9 +325,7 @@ fn main() {
     ton2.init();
     let private = size_of_val(&ton2.stPrivate);
     rows.push(measure(
-        "TON2",
-        SL_TYPE_TON2,
-        timer,
+        ("TON2", SL_TYPE_TON2, timer),
         batches,
         ton2,
         private,
@@ -371,9 +343,7 @@ fn main() {
     tof.init();
     let private = size_of_val(&tof.stPrivate);
     rows.push(measure(
-        "TOF",
-        SL_TYPE_TOF,
-        timer,
+        ("TOF", SL_TYPE_TOF, timer),
         batches,
         tof,
         private,
