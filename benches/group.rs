@@ -17,18 +17,19 @@ struct Plant {
     mons: Vec<FB_MON>,
     ands: Vec<FB_AND>,
     ors: Vec<FB_OR>,
+    tons: Vec<FB_TON>,
     group: SL_GROUP,
     members: Vec<SL_MEMBER>,
     links: Vec<SL_LINK>,
 }
 
-/// Five kinds in a repeating pattern: ESTOP, MON, AND (ESTOP·MON), OR (AND, MON), AND.
+/// Five kinds in a repeating pattern: ESTOP, MON, AND (ESTOP·MON), OR (AND + TON), TON (OR).
 const PATTERN: [u16; 5] = [
     SL_TYPE_ESTOP,
     SL_TYPE_MON,
     SL_TYPE_AND,
     SL_TYPE_OR,
-    SL_TYPE_AND,
+    SL_TYPE_TON,
 ];
 
 fn build() -> Plant {
@@ -55,11 +56,19 @@ fn build() -> Plant {
                 wInputActive: 0b11,
                 ..Default::default()
             };
-            2 * per
+            per
         ],
         ors: vec![
             FB_OR {
                 wInputActive: 0b11,
+                ..Default::default()
+            };
+            per
+        ],
+        tons: vec![
+            FB_TON {
+                wInputActive: 1,
+                tDelay: 100,
                 ..Default::default()
             };
             per
@@ -82,26 +91,31 @@ fn build() -> Plant {
     for o in &mut p.ors {
         assert_eq!(o.init(), SL_OK);
     }
+    for t in &mut p.tons {
+        assert_eq!(t.init(), SL_OK);
+    }
     let g = &mut p.group as *mut SL_GROUP;
     let (mt, lt) = (p.members.as_mut_ptr(), p.links.as_mut_ptr());
     assert_eq!(
         sl_group_init(g, mt, MEMBERS as u16, lt, (2 * MEMBERS) as u16),
         SL_OK
     );
-    let (mut ie, mut im, mut ia, mut io) = (0, 0, 0, 0);
+    let (mut ie, mut im, mut ia, mut io, mut it) = (0, 0, 0, 0, 0);
     for i in 0..MEMBERS {
         let ty = PATTERN[i % PATTERN.len()];
         let block: *mut core::ffi::c_void = match ty {
             SL_TYPE_ESTOP => (&mut p.estops[ie] as *mut FB_ESTOP).cast(),
             SL_TYPE_MON => (&mut p.mons[im] as *mut FB_MON).cast(),
             SL_TYPE_AND => (&mut p.ands[ia] as *mut FB_AND).cast(),
-            _ => (&mut p.ors[io] as *mut FB_OR).cast(),
+            SL_TYPE_OR => (&mut p.ors[io] as *mut FB_OR).cast(),
+            _ => (&mut p.tons[it] as *mut FB_TON).cast(),
         };
         match ty {
             SL_TYPE_ESTOP => ie += 1,
             SL_TYPE_MON => im += 1,
             SL_TYPE_AND => ia += 1,
-            _ => io += 1,
+            SL_TYPE_OR => io += 1,
+            _ => it += 1,
         }
         assert_eq!(
             sl_group_add_member(g, mt, ty, block, std::ptr::null_mut()),
@@ -109,12 +123,10 @@ fn build() -> Plant {
         );
     }
     // Wiring inside each pattern of five: AND(i+2) = ESTOP(i) · MON(i+1); OR(i+3) = AND(i+2)
-    // + MON(i+1); AND(i+4) = OR(i+3) · ESTOP of the next pattern (a backward link: last
-    // cycle's value).
+    // + TON(i+4) (a link from a later member: last cycle's value); TON(i+4) delays OR(i+3).
     let o = |f: usize| f as u16;
     for base in (0..MEMBERS).step_by(PATTERN.len()) {
         let b = base as u16;
-        let next_estop = ((base + PATTERN.len()) % MEMBERS) as u16;
         let wires = [
             (
                 b,
@@ -135,8 +147,8 @@ fn build() -> Plant {
                 o(offset_of!(FB_OR, bOrIn1)),
             ),
             (
-                b + 1,
-                o(offset_of!(FB_MON, bMonOut)),
+                b + 4,
+                o(offset_of!(FB_TON, bTonOut)),
                 b + 3,
                 o(offset_of!(FB_OR, bOrIn2)),
             ),
@@ -144,13 +156,7 @@ fn build() -> Plant {
                 b + 3,
                 o(offset_of!(FB_OR, bOrOut)),
                 b + 4,
-                o(offset_of!(FB_AND, bAndIn1)),
-            ),
-            (
-                next_estop,
-                o(offset_of!(FB_ESTOP, bEStopOut)),
-                b + 4,
-                o(offset_of!(FB_AND, bAndIn2)),
+                o(offset_of!(FB_TON, bTonIn1)),
             ),
         ];
         for (s, so, d, dof) in wires {
