@@ -224,7 +224,7 @@ fn main() {
         }
     );
     println!(
-        "  group     : {MEMBERS} members (ESTOP, MON, AND, OR, AND repeating), {} links",
+        "  group     : {MEMBERS} members (ESTOP, MON, AND, OR, TON repeating), {} links",
         p.group.nLinks
     );
     println!(
