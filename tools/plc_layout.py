@@ -1,0 +1,405 @@
+#!/usr/bin/env python3
+"""Layout check of the generated PLC bindings against the C header (run by tools/plc_check.sh).
+
+Needs blark (PyPI) - run it with the interpreter of build/plc-venv.
+
+    plc_layout.py --c-layout FILE [--bindings DIR]
+
+FILE is the output of plc_bindings/tests/layout_dump.c (compiled against include/safelogic.h):
+    S <struct> <sizeof>
+    F <struct> <member> <offsetof> <sizeof member>
+
+What it does, for every source of ST (each TwinCAT .TcDUT/.TcPOU/.TcGVL/.TcIO file, and the
+TwinCAT, CODESYS and IEC plain .st files):
+  1. parses the file with blark (a failure to parse is a failure);
+  2. takes every STRUCT declaration (DUT) from the parse result and computes each member's
+     offset and the DUT's SIZEOF under pack mode 8 and pack mode 4 (CODESYS/TwinCAT rules:
+     a member is aligned to min(its alignment, pack), a STRUCT to min(largest member
+     alignment, pack), SIZEOF is rounded up to that), and compares every member - name,
+     order, offset, size - and the size with the C program's output (C struct FB_<NAME>
+     <-> DUT ST_FB_<NAME>, any other C struct <-> DUT of the same name);
+  3. checks that the DUTs of the TwinCAT and CODESYS sources carry {attribute 'pack_mode' := '8'};
+  4. checks every function block FB_<NAME>: its VAR_INPUT/VAR_OUTPUT are exactly the C fields
+     that are neither reserved (aReserved*) nor private (nested structs), plus tNow/nStatus,
+     with the C field's size, inputs before outputs in C order; its body copies every input
+     into stData, calls the cycle function with the address of stData, copies every output;
+  5. checks that the self-test FB_SL_SELFTEST (and the IEC SL_SELFTEST_LAYOUT) tests SIZEOF and
+     every member offset of every DUT with the C values.
+Every failure names the source, the block/struct and the field. Last line: "N passed, M failed".
+"""
+
+from __future__ import annotations
+
+import argparse
+import re
+import sys
+import tempfile
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Dict, List, Optional, Tuple
+
+from blark import parse as bparse
+from blark import transform as tf
+
+ROOT = Path(__file__).resolve().parent.parent
+
+SIZES = {
+    "BOOL": 1, "BYTE": 1, "SINT": 1, "USINT": 1,
+    "WORD": 2, "INT": 2, "UINT": 2,
+    "DWORD": 4, "DINT": 4, "UDINT": 4, "REAL": 4, "TIME": 4,
+    "LWORD": 8, "LINT": 8, "ULINT": 8, "LREAL": 8, "LTIME": 8,
+}
+
+
+class Result:
+    def __init__(self) -> None:
+        self.passed = 0
+        self.failed = 0
+
+    def ok(self, cond: bool, msg: str) -> bool:
+        if cond:
+            self.passed += 1
+        else:
+            self.failed += 1
+            print("FAIL " + msg)
+        return cond
+
+
+R = Result()
+
+
+# ---------------------------------------------------------------------------------------
+# C side
+# ---------------------------------------------------------------------------------------
+
+@dataclass
+class CMember:
+    name: str
+    offset: int
+    size: int
+
+
+def read_c_layout(path: Path) -> Tuple[Dict[str, int], Dict[str, List[CMember]]]:
+    sizes: Dict[str, int] = {}
+    members: Dict[str, List[CMember]] = {}
+    for line in path.read_text().splitlines():
+        parts = line.split()
+        if not parts:
+            continue
+        if parts[0] == "S":
+            sizes[parts[1]] = int(parts[2])
+            members.setdefault(parts[1], [])
+        elif parts[0] == "F":
+            members.setdefault(parts[1], []).append(CMember(parts[2], int(parts[3]), int(parts[4])))
+    if not sizes:
+        raise SystemExit("plc_layout: empty C layout file")
+    return sizes, members
+
+
+def dut_of(cname: str) -> str:
+    return "ST_" + cname if cname.startswith("FB_") else cname
+
+
+def is_block(cname: str) -> bool:
+    return cname.startswith("FB_")
+
+
+def is_reserved(name: str) -> bool:
+    return re.fullmatch(r"aReserved\d*", name) is not None
+
+
+# ---------------------------------------------------------------------------------------
+# ST side (blark)
+# ---------------------------------------------------------------------------------------
+
+@dataclass
+class StMember:
+    name: str
+    type_name: str          # element type
+    count: Optional[int]    # array length
+
+
+def spec_type(init) -> Tuple[str, Optional[int]]:
+    """(type name, array length or None) of a blark initialization object."""
+    spec = getattr(init, "spec", None)
+    if isinstance(spec, tf.ArraySpecification):
+        if len(spec.subranges) != 1:
+            raise ValueError(f"multi-dimensional array {init}")
+        sr = spec.subranges[0]
+        lo, hi = int(str(sr.start)), int(str(sr.stop))
+        elem = spec.type
+        tname = getattr(elem, "type_name", None) or str(elem)
+        return str(tname).strip(), hi - lo + 1
+    if spec is not None and hasattr(spec, "type"):
+        return str(spec.type).strip(), None
+    text = str(init).split(":=")[0].strip()
+    return text, None
+
+
+def parse_file(path: Path, text_override: Optional[str] = None):
+    """blark parse results for a file; the IEC file is parsed through a temp copy when
+    text_override is given (see substitution note in main)."""
+    target = path
+    tmp = None
+    if text_override is not None:
+        tmp = tempfile.NamedTemporaryFile("w", suffix=path.suffix, delete=False, encoding="utf-8")
+        tmp.write(text_override)
+        tmp.close()
+        target = Path(tmp.name)
+    try:
+        results = list(bparse.parse(str(target)))
+    finally:
+        if tmp is not None:
+            Path(tmp.name).unlink()
+    return results
+
+
+@dataclass
+class Source:
+    label: str
+    files: List[Path]
+    flavour: str               # twincat | codesys | iec
+    duts: Dict[str, List[StMember]]
+    fbs: Dict[str, Dict[str, List[Tuple[str, str, Optional[int]]]]]  # FB -> block -> [(name, type, count)]
+    fb_bodies: Dict[str, str]
+    texts: Dict[str, str]      # file text (for pragma checks)
+
+
+def collect(source: Source, results) -> None:
+    for res in results:
+        if not R.ok(res.exception is None,
+                    f"{source.label}: blark could not parse {res.filename} ({res.identifier}): {res.exception}"):
+            continue
+        code = res.transform()
+        items = getattr(code, "items", [])
+        for it in items:
+            if isinstance(it, tf.DataTypeDeclaration):
+                d = it.declaration
+                if isinstance(d, tf.StructureTypeDeclaration):
+                    members = []
+                    for el in d.declarations:
+                        tname, count = spec_type(el.init)
+                        for v in el.variables:
+                            members.append(StMember(str(v.name), tname, count))
+                    source.duts[str(d.name)] = members
+            elif isinstance(it, tf.FunctionBlock):
+                blocks: Dict[str, List[Tuple[str, str, Optional[int]]]] = {}
+                for decl in it.declarations:
+                    hdr = str(getattr(decl, "block_header", type(decl).__name__)).split()[0]
+                    lst = blocks.setdefault(hdr, [])
+                    for item in getattr(decl, "items", []):
+                        tname, count = spec_type(item.init)
+                        for v in item.variables:
+                            lst.append((str(getattr(v, "name", v)), tname, count))
+                source.fbs[str(it.name)] = blocks
+                body = getattr(it, "body", None)
+                if body is not None:
+                    source.fb_bodies[str(it.name)] = str(body)
+            elif isinstance(it, tf.StatementList):
+                # TwinCAT XML: the implementation is a separate parse result named <POU>/implementation
+                name = str(res.identifier).split("/")[0]
+                source.fb_bodies[name] = str(it)
+
+
+def layout(duts: Dict[str, List[StMember]], name: str, pack: int, memo) -> Tuple[int, int, List[Tuple[str, int, int]]]:
+    """(size, alignment, [(member, offset, size)]) of DUT name under a pack mode."""
+    key = (name, pack)
+    if key in memo:
+        return memo[key]
+    if name not in duts:
+        raise KeyError(name)
+    off = 0
+    al = 1
+    out = []
+    for m in duts[name]:
+        if m.type_name.upper() in SIZES:
+            esize = SIZES[m.type_name.upper()]
+            ealign = esize
+        else:
+            esize, ealign, _ = layout(duts, m.type_name, pack, memo)
+        a = min(ealign, pack)
+        off = (off + a - 1) // a * a
+        size = esize * (m.count or 1)
+        out.append((m.name, off, size))
+        off += size
+        al = max(al, a)
+    al = min(al, pack)
+    size = (off + al - 1) // al * al
+    memo[key] = (size, al, out)
+    return memo[key]
+
+
+def check_duts(src: Source, csizes, cmembers) -> None:
+    for cname in csizes:
+        dname = dut_of(cname)
+        if not R.ok(dname in src.duts, f"{src.label}: no DUT {dname} for C struct {cname}"):
+            continue
+        for pack in (8, 4):
+            memo: dict = {}
+            try:
+                size, _, members = layout(src.duts, dname, pack, memo)
+            except KeyError as e:
+                R.ok(False, f"{src.label}: DUT {dname} uses unknown type {e}")
+                break
+            what = f"{src.label}: {'block ' if is_block(cname) else 'struct '}{cname} (DUT {dname}, pack mode {pack})"
+            cm = cmembers[cname]
+            R.ok(len(members) == len(cm),
+                 f"{what}: {len(members)} members, C has {len(cm)}")
+            for k, c in enumerate(cm):
+                if k >= len(members):
+                    R.ok(False, f"{what}: field {c.name} missing")
+                    continue
+                n, o, s = members[k]
+                if not R.ok(n == c.name, f"{what}: member {k} is {n}, C field is {c.name}"):
+                    continue
+                R.ok(o == c.offset, f"{what}: field {c.name} at offset {o}, C offsetof = {c.offset}")
+                R.ok(s == c.size, f"{what}: field {c.name} has size {s}, C sizeof = {c.size}")
+            R.ok(size == csizes[cname], f"{what}: SIZEOF = {size}, C sizeof = {csizes[cname]}")
+    extra = set(src.duts) - {dut_of(c) for c in csizes}
+    R.ok(not extra, f"{src.label}: DUTs without a C struct: {sorted(extra)}")
+
+
+def check_pack_pragma(src: Source) -> None:
+    if src.flavour not in ("twincat", "codesys"):
+        return
+    alltext = "\n".join(src.texts.values())
+    for dname in src.duts:
+        pat = r"\{attribute\s+'pack_mode'\s*:=\s*'8'\}\s*TYPE\s+" + re.escape(dname) + r"\b"
+        R.ok(re.search(pat, alltext) is not None,
+             f"{src.label}: DUT {dname} lacks {{attribute 'pack_mode' := '8'}} right before TYPE")
+
+
+def check_fbs(src: Source, csizes, cmembers) -> None:
+    for cname in csizes:
+        if not is_block(cname):
+            continue
+        fbname = cname  # the user-facing FB carries the C struct's name
+        if not R.ok(fbname in src.fbs, f"{src.label}: block {cname}: no FUNCTION_BLOCK {fbname}"):
+            continue
+        blocks = src.fbs[fbname]
+        ins = blocks.get("VAR_INPUT", [])
+        outs = blocks.get("VAR_OUTPUT", [])
+        public = [m for m in cmembers[cname] if not is_reserved(m.name) and dut_of_type_is_struct(m, src, cname) is False]
+        byname = {m.name: m for m in public}
+        seen_in = [n for n, _, _ in ins if n != "tNow"]
+        seen_out = [n for n, _, _ in outs if n != "nStatus"]
+        R.ok(any(n == "tNow" and t.upper() == "UDINT" for n, t, _ in ins),
+             f"{src.label}: block {cname}: VAR_INPUT tNow : UDINT missing")
+        R.ok(any(n == "nStatus" and t.upper() == "DINT" for n, t, _ in outs),
+             f"{src.label}: block {cname}: VAR_OUTPUT nStatus : DINT missing")
+        R.ok(sorted(seen_in + seen_out) == sorted(byname),
+             f"{src.label}: block {cname}: FB variables {sorted(set(seen_in + seen_out) ^ set(byname))} "
+             f"differ from the public C fields")
+        if seen_in and seen_out and all(n in byname for n in seen_in + seen_out):
+            R.ok(max(byname[n].offset for n in seen_in) < min(byname[n].offset for n in seen_out),
+                 f"{src.label}: block {cname}: an output field precedes an input field in C")
+        for n, t, count in ins + outs:
+            if n not in byname:
+                continue
+            size = SIZES.get(t.upper(), -1) * (count or 1)
+            R.ok(size == byname[n].size,
+                 f"{src.label}: block {cname} field {n}: FB type {t} has {size} bytes, C field {byname[n].size}")
+        body = src.fb_bodies.get(fbname, "")
+        if not R.ok(bool(body), f"{src.label}: block {cname}: no implementation found"):
+            continue
+        flat = re.sub(r"\s+", " ", body)
+        R.ok(re.search(r"nStatus := \w+\(\s*pFb := (ADR|REF)\(stData\), tNow := tNow\)", flat) is not None,
+             f"{src.label}: block {cname}: body does not call the cycle function with the address of stData and tNow")
+        for n in seen_in:
+            R.ok(re.search(rf"stData\.{n}(\[\d+\])? := (TIME_TO_UDINT\()?{n}\b", flat) is not None,
+                 f"{src.label}: block {cname} field {n}: input not copied into stData")
+        for n in seen_out:
+            R.ok(re.search(rf"\b{n}(\[\d+\])? := (UDINT_TO_TIME\()?stData\.{n}\b", flat) is not None,
+                 f"{src.label}: block {cname} field {n}: output not copied from stData")
+
+
+def dut_of_type_is_struct(m: CMember, src: Source, cname: str) -> bool:
+    dname = dut_of(cname)
+    for sm in src.duts.get(dname, []):
+        if sm.name == m.name:
+            return sm.type_name.upper() not in SIZES
+    return False
+
+
+def check_selftest(src: Source, csizes, cmembers) -> None:
+    text = "\n".join(src.texts.values())
+    found: Dict[Tuple[str, Optional[str]], int] = {}
+    if src.flavour == "iec":
+        vars_ = dict((v, t) for t, v in re.findall(r"^\s*(\w+) (sl_plc_\w+);$", text, re.M))
+        for v, val in re.findall(r"sizeof\((\w+)\) != (\d+)", text):
+            found[(vars_.get(v, "?"), None)] = int(val)
+        for v, f, val in re.findall(r"\(char \*\)&(\w+)\.(\w+) - \(char \*\)&\1 != (\d+)", text):
+            found[(vars_.get(v, "?"), f.upper())] = int(val)
+        norm = str.upper
+    else:
+        decl = src.fbs.get("FB_SL_SELFTEST", {}).get("VAR", [])
+        vars_ = {n: t for n, t, _ in decl}
+        for v, val in re.findall(r"SIZEOF\((\w+)\) <> (\d+)", text):
+            found[(vars_.get(v, "?"), None)] = int(val)
+        for v, f, val in re.findall(r"ADR\((\w+)\.(\w+)\) - ADR\(\1\) <> (\d+)", text):
+            found[(vars_.get(v, "?"), f)] = int(val)
+        norm = str
+    for cname, size in csizes.items():
+        d = dut_of(cname)
+        R.ok(found.get((d, None)) == size,
+             f"{src.label}: self-test: SIZEOF of {d} (C struct {cname}) checked against {found.get((d, None))}, C sizeof = {size}")
+        for m in cmembers[cname]:
+            got = found.get((d, norm(m.name)))
+            R.ok(got == m.offset,
+                 f"{src.label}: self-test: {'block' if is_block(cname) else 'struct'} {cname} field {m.name}: "
+                 f"checked against {got}, C offsetof = {m.offset}")
+
+
+def main() -> int:
+    ap = argparse.ArgumentParser()
+    ap.add_argument("--c-layout", type=Path, required=True)
+    ap.add_argument("--bindings", type=Path, default=ROOT / "plc_bindings")
+    ap.add_argument("--sources", default="twincat-xml,twincat-st,codesys,iec",
+                    help="comma list of: twincat-xml, twincat-st, codesys, iec (default: all)")
+    args = ap.parse_args()
+    wanted = set(args.sources.split(","))
+    csizes, cmembers = read_c_layout(args.c_layout)
+    b = args.bindings
+
+    tc_xml = sorted(p for ext in ("TcDUT", "TcPOU", "TcGVL", "TcIO") for p in (b / "twincat").rglob(f"*.{ext}"))
+    sources = [
+        ("twincat-xml", Source("twincat XML (.TcDUT/.TcPOU/.TcGVL/.TcIO)", tc_xml, "twincat", {}, {}, {}, {})),
+        ("twincat-st", Source("twincat/safelogic_twincat.st", [b / "twincat/safelogic_twincat.st"], "twincat", {}, {}, {}, {})),
+        ("codesys", Source("codesys/safelogic_codesys.st", [b / "codesys/safelogic_codesys.st"], "codesys", {}, {}, {}, {})),
+        ("iec", Source("iec/safelogic_iec.st", [b / "iec/safelogic_iec.st"], "iec", {}, {}, {}, {})),
+    ]
+    unknown = wanted - {k for k, _ in sources}
+    if unknown:
+        raise SystemExit(f"plc_layout: unknown --sources {sorted(unknown)}")
+    sources = [src for k, src in sources if k in wanted]
+    R.ok(bool(tc_xml) or "twincat-xml" not in wanted, "no TwinCAT XML files found")
+    nfiles = 0
+    for src in sources:
+        for path in src.files:
+            if not R.ok(path.is_file(), f"{src.label}: {path} missing"):
+                continue
+            text = path.read_text(encoding="utf-8")
+            src.texts[str(path)] = text
+            override = None
+            if src.flavour == "iec":
+                # blark 0.8.3's grammar has POINTER TO/REFERENCE TO but not the IEC ed. 3
+                # REF_TO/REF(); both occur only in function parameters and call arguments
+                # (never inside a DUT). Parse a copy with that one-to-one token substitution;
+                # the strict tree-sitter check reads the file unmodified.
+                override = re.sub(r"\bREF_TO\b", "POINTER TO", text)
+                override = re.sub(r"\bREF\(", "ADR(", override)
+            collect(src, parse_file(path, override))
+            nfiles += 1
+        check_duts(src, csizes, cmembers)
+        check_pack_pragma(src)
+        check_fbs(src, csizes, cmembers)
+        check_selftest(src, csizes, cmembers)
+        nfb = sum(1 for c in csizes if is_block(c))
+        print(f"{src.label}: {len(src.files)} file(s) parsed by blark, {len(src.duts)} DUTs, "
+              f"{nfb} block FBs checked against {len(csizes)} C structs (pack 8 and 4)")
+    print(f"plc_layout: {nfiles} files; {R.passed} passed, {R.failed} failed")
+    return 1 if R.failed else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
