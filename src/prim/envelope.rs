@@ -123,12 +123,15 @@ pub fn cycle<B: Block>(fb: &mut B, now: u32) -> i32 {
     // An error entered in this call cannot be acknowledged in the same call.
     let mut fresh_error = false;
 
-    if fb.header().is_zero() {
-        power_up(fb, SL_STATE_STOP, 0);
-    } else if !fb.header().intact(B::MAGIC) {
-        power_up(fb, SL_STATE_ERROR, SL_DIAG_CORRUPT);
-        status = SL_E_CORRUPT;
-        fresh_error = true;
+    // The cheap check first; only a failing one asks whether the area is merely unused.
+    if !fb.header().intact(B::MAGIC) {
+        if fb.header().is_zero() {
+            power_up(fb, SL_STATE_STOP, 0);
+        } else {
+            power_up(fb, SL_STATE_ERROR, SL_DIAG_CORRUPT);
+            status = SL_E_CORRUPT;
+            fresh_error = true;
+        }
     }
 
     let h = fb.header_mut();
