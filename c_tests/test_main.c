@@ -194,7 +194,8 @@ static int h_contains_ci(const char *hay, const char *needle)
     size_t n = strlen(needle), i;
     for (; *hay != '\0'; hay++) {
         for (i = 0; i < n; i++) {
-            if (hay[i] == '\0' || h_lower((unsigned char)hay[i]) != h_lower((unsigned char)needle[i])) {
+            if (hay[i] == '\0' ||
+                h_lower((unsigned char)hay[i]) != h_lower((unsigned char)needle[i])) {
                 break;
             }
         }

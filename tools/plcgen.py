@@ -193,9 +193,16 @@ def parse_header(text: str) -> Header:
             if m:
                 if m.group(1) != cur.name:
                     raise GenError(f"struct {cur.name} closed as {m.group(1)}")
-                structs[cur.name] = cur
-                order.append(cur.name)
+                # A struct with pointers (SL_MEMBER) has no fixed layout across 32/64-bit
+                # targets: no DUT, and no block may embed it (build.rs enforces the same).
+                if not getattr(cur, "has_pointer", False):
+                    structs[cur.name] = cur
+                    order.append(cur.name)
                 cur = None
+                doc = []
+                continue
+            if "*" in line:
+                cur.has_pointer = True
                 doc = []
                 continue
             m = re.fullmatch(r"(struct\s+)?(\w+)\s+(\w+)\s*(?:\[\s*(\d+)\s*\])?\s*;", line)

@@ -9,14 +9,18 @@ root=$(pwd)
 step() { printf '\n==== %s ====\n' "$*"; }
 
 step "prerequisites"
-if ! command -v cmake >/dev/null 2>&1 || ! command -v ctest >/dev/null 2>&1; then
-    if [ "$(id -u)" = 0 ]; then sudo_cmd=""; else sudo_cmd="sudo"; fi
+if [ "$(id -u)" = 0 ]; then sudo_cmd=""; else sudo_cmd="sudo"; fi
+missing=""
+command -v cmake >/dev/null 2>&1 && command -v ctest >/dev/null 2>&1 || missing="$missing cmake"
+command -v cc >/dev/null 2>&1 || missing="$missing gcc"
+command -v c++ >/dev/null 2>&1 || missing="$missing g++"
+command -v python3 >/dev/null 2>&1 || missing="$missing python3"
+python3 -c 'import venv, ensurepip' >/dev/null 2>&1 || missing="$missing python3-venv"
+if [ -n "$missing" ]; then
+    echo "installing:$missing"
     $sudo_cmd apt-get update -qq
-    DEBIAN_FRONTEND=noninteractive $sudo_cmd apt-get install -y -qq cmake >/dev/null
+    DEBIAN_FRONTEND=noninteractive $sudo_cmd apt-get install -y -qq $missing >/dev/null
 fi
-for tool in cc c++ python3; do
-    command -v "$tool" >/dev/null || { echo "missing $tool (install gcc, g++, python3)"; exit 1; }
-done
 rustup component add rustfmt clippy >/dev/null 2>&1 || true
 cmake --version | head -1
 cargo --version
@@ -39,9 +43,7 @@ cmake -S c_tests -B build/c_tests -DSAFELOGIC_ROOT="$root" >/dev/null
 cmake --build build/c_tests -j2 >/dev/null
 ctest --test-dir build/c_tests --output-on-failure
 
-if [ -x tools/plc_check.sh ] || [ -f tools/plc_check.sh ]; then
-    step "PLC bindings"
-    bash tools/plc_check.sh
-fi
+step "PLC bindings (generated files fresh, blark, tree-sitter, offsets, CODESYS adapter)"
+bash tools/plc_check.sh
 
 step "all tests passed"

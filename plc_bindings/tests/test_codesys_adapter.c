@@ -45,6 +45,210 @@ static void test_param_structs(void)
       off = (off + sizeof(int32_t) - 1) / sizeof(int32_t) * sizeof(int32_t);
       CHECK(offsetof(cds_sl_mon_cycle_struct, cds_sl_mon_cycle) == off, "cds_sl_mon_cycle_struct return value at %zu, expected %zu", offsetof(cds_sl_mon_cycle_struct, cds_sl_mon_cycle), off); }
     { size_t off = 0;
+      off = (off + sizeof(void *) - 1) / sizeof(void *) * sizeof(void *);
+      CHECK(offsetof(cds_sl_and_init_struct, pFb) == off, "cds_sl_and_init_struct.pFb at %zu, expected %zu", offsetof(cds_sl_and_init_struct, pFb), off);
+      off += sizeof(void *);
+      off = (off + sizeof(int32_t) - 1) / sizeof(int32_t) * sizeof(int32_t);
+      CHECK(offsetof(cds_sl_and_init_struct, cds_sl_and_init) == off, "cds_sl_and_init_struct return value at %zu, expected %zu", offsetof(cds_sl_and_init_struct, cds_sl_and_init), off); }
+    { size_t off = 0;
+      off = (off + sizeof(void *) - 1) / sizeof(void *) * sizeof(void *);
+      CHECK(offsetof(cds_sl_and_cycle_struct, pFb) == off, "cds_sl_and_cycle_struct.pFb at %zu, expected %zu", offsetof(cds_sl_and_cycle_struct, pFb), off);
+      off += sizeof(void *);
+      off = (off + sizeof(uint32_t) - 1) / sizeof(uint32_t) * sizeof(uint32_t);
+      CHECK(offsetof(cds_sl_and_cycle_struct, tNow) == off, "cds_sl_and_cycle_struct.tNow at %zu, expected %zu", offsetof(cds_sl_and_cycle_struct, tNow), off);
+      off += sizeof(uint32_t);
+      off = (off + sizeof(int32_t) - 1) / sizeof(int32_t) * sizeof(int32_t);
+      CHECK(offsetof(cds_sl_and_cycle_struct, cds_sl_and_cycle) == off, "cds_sl_and_cycle_struct return value at %zu, expected %zu", offsetof(cds_sl_and_cycle_struct, cds_sl_and_cycle), off); }
+    { size_t off = 0;
+      off = (off + sizeof(void *) - 1) / sizeof(void *) * sizeof(void *);
+      CHECK(offsetof(cds_sl_or_init_struct, pFb) == off, "cds_sl_or_init_struct.pFb at %zu, expected %zu", offsetof(cds_sl_or_init_struct, pFb), off);
+      off += sizeof(void *);
+      off = (off + sizeof(int32_t) - 1) / sizeof(int32_t) * sizeof(int32_t);
+      CHECK(offsetof(cds_sl_or_init_struct, cds_sl_or_init) == off, "cds_sl_or_init_struct return value at %zu, expected %zu", offsetof(cds_sl_or_init_struct, cds_sl_or_init), off); }
+    { size_t off = 0;
+      off = (off + sizeof(void *) - 1) / sizeof(void *) * sizeof(void *);
+      CHECK(offsetof(cds_sl_or_cycle_struct, pFb) == off, "cds_sl_or_cycle_struct.pFb at %zu, expected %zu", offsetof(cds_sl_or_cycle_struct, pFb), off);
+      off += sizeof(void *);
+      off = (off + sizeof(uint32_t) - 1) / sizeof(uint32_t) * sizeof(uint32_t);
+      CHECK(offsetof(cds_sl_or_cycle_struct, tNow) == off, "cds_sl_or_cycle_struct.tNow at %zu, expected %zu", offsetof(cds_sl_or_cycle_struct, tNow), off);
+      off += sizeof(uint32_t);
+      off = (off + sizeof(int32_t) - 1) / sizeof(int32_t) * sizeof(int32_t);
+      CHECK(offsetof(cds_sl_or_cycle_struct, cds_sl_or_cycle) == off, "cds_sl_or_cycle_struct return value at %zu, expected %zu", offsetof(cds_sl_or_cycle_struct, cds_sl_or_cycle), off); }
+    { size_t off = 0;
+      off = (off + sizeof(void *) - 1) / sizeof(void *) * sizeof(void *);
+      CHECK(offsetof(cds_sl_opmode_init_struct, pFb) == off, "cds_sl_opmode_init_struct.pFb at %zu, expected %zu", offsetof(cds_sl_opmode_init_struct, pFb), off);
+      off += sizeof(void *);
+      off = (off + sizeof(int32_t) - 1) / sizeof(int32_t) * sizeof(int32_t);
+      CHECK(offsetof(cds_sl_opmode_init_struct, cds_sl_opmode_init) == off, "cds_sl_opmode_init_struct return value at %zu, expected %zu", offsetof(cds_sl_opmode_init_struct, cds_sl_opmode_init), off); }
+    { size_t off = 0;
+      off = (off + sizeof(void *) - 1) / sizeof(void *) * sizeof(void *);
+      CHECK(offsetof(cds_sl_opmode_cycle_struct, pFb) == off, "cds_sl_opmode_cycle_struct.pFb at %zu, expected %zu", offsetof(cds_sl_opmode_cycle_struct, pFb), off);
+      off += sizeof(void *);
+      off = (off + sizeof(uint32_t) - 1) / sizeof(uint32_t) * sizeof(uint32_t);
+      CHECK(offsetof(cds_sl_opmode_cycle_struct, tNow) == off, "cds_sl_opmode_cycle_struct.tNow at %zu, expected %zu", offsetof(cds_sl_opmode_cycle_struct, tNow), off);
+      off += sizeof(uint32_t);
+      off = (off + sizeof(int32_t) - 1) / sizeof(int32_t) * sizeof(int32_t);
+      CHECK(offsetof(cds_sl_opmode_cycle_struct, cds_sl_opmode_cycle) == off, "cds_sl_opmode_cycle_struct return value at %zu, expected %zu", offsetof(cds_sl_opmode_cycle_struct, cds_sl_opmode_cycle), off); }
+    { size_t off = 0;
+      off = (off + sizeof(void *) - 1) / sizeof(void *) * sizeof(void *);
+      CHECK(offsetof(cds_sl_twohand_init_struct, pFb) == off, "cds_sl_twohand_init_struct.pFb at %zu, expected %zu", offsetof(cds_sl_twohand_init_struct, pFb), off);
+      off += sizeof(void *);
+      off = (off + sizeof(int32_t) - 1) / sizeof(int32_t) * sizeof(int32_t);
+      CHECK(offsetof(cds_sl_twohand_init_struct, cds_sl_twohand_init) == off, "cds_sl_twohand_init_struct return value at %zu, expected %zu", offsetof(cds_sl_twohand_init_struct, cds_sl_twohand_init), off); }
+    { size_t off = 0;
+      off = (off + sizeof(void *) - 1) / sizeof(void *) * sizeof(void *);
+      CHECK(offsetof(cds_sl_twohand_cycle_struct, pFb) == off, "cds_sl_twohand_cycle_struct.pFb at %zu, expected %zu", offsetof(cds_sl_twohand_cycle_struct, pFb), off);
+      off += sizeof(void *);
+      off = (off + sizeof(uint32_t) - 1) / sizeof(uint32_t) * sizeof(uint32_t);
+      CHECK(offsetof(cds_sl_twohand_cycle_struct, tNow) == off, "cds_sl_twohand_cycle_struct.tNow at %zu, expected %zu", offsetof(cds_sl_twohand_cycle_struct, tNow), off);
+      off += sizeof(uint32_t);
+      off = (off + sizeof(int32_t) - 1) / sizeof(int32_t) * sizeof(int32_t);
+      CHECK(offsetof(cds_sl_twohand_cycle_struct, cds_sl_twohand_cycle) == off, "cds_sl_twohand_cycle_struct return value at %zu, expected %zu", offsetof(cds_sl_twohand_cycle_struct, cds_sl_twohand_cycle), off); }
+    { size_t off = 0;
+      off = (off + sizeof(void *) - 1) / sizeof(void *) * sizeof(void *);
+      CHECK(offsetof(cds_sl_xor_init_struct, pFb) == off, "cds_sl_xor_init_struct.pFb at %zu, expected %zu", offsetof(cds_sl_xor_init_struct, pFb), off);
+      off += sizeof(void *);
+      off = (off + sizeof(int32_t) - 1) / sizeof(int32_t) * sizeof(int32_t);
+      CHECK(offsetof(cds_sl_xor_init_struct, cds_sl_xor_init) == off, "cds_sl_xor_init_struct return value at %zu, expected %zu", offsetof(cds_sl_xor_init_struct, cds_sl_xor_init), off); }
+    { size_t off = 0;
+      off = (off + sizeof(void *) - 1) / sizeof(void *) * sizeof(void *);
+      CHECK(offsetof(cds_sl_xor_cycle_struct, pFb) == off, "cds_sl_xor_cycle_struct.pFb at %zu, expected %zu", offsetof(cds_sl_xor_cycle_struct, pFb), off);
+      off += sizeof(void *);
+      off = (off + sizeof(uint32_t) - 1) / sizeof(uint32_t) * sizeof(uint32_t);
+      CHECK(offsetof(cds_sl_xor_cycle_struct, tNow) == off, "cds_sl_xor_cycle_struct.tNow at %zu, expected %zu", offsetof(cds_sl_xor_cycle_struct, tNow), off);
+      off += sizeof(uint32_t);
+      off = (off + sizeof(int32_t) - 1) / sizeof(int32_t) * sizeof(int32_t);
+      CHECK(offsetof(cds_sl_xor_cycle_struct, cds_sl_xor_cycle) == off, "cds_sl_xor_cycle_struct return value at %zu, expected %zu", offsetof(cds_sl_xor_cycle_struct, cds_sl_xor_cycle), off); }
+    { size_t off = 0;
+      off = (off + sizeof(void *) - 1) / sizeof(void *) * sizeof(void *);
+      CHECK(offsetof(cds_sl_decouple_init_struct, pFb) == off, "cds_sl_decouple_init_struct.pFb at %zu, expected %zu", offsetof(cds_sl_decouple_init_struct, pFb), off);
+      off += sizeof(void *);
+      off = (off + sizeof(int32_t) - 1) / sizeof(int32_t) * sizeof(int32_t);
+      CHECK(offsetof(cds_sl_decouple_init_struct, cds_sl_decouple_init) == off, "cds_sl_decouple_init_struct return value at %zu, expected %zu", offsetof(cds_sl_decouple_init_struct, cds_sl_decouple_init), off); }
+    { size_t off = 0;
+      off = (off + sizeof(void *) - 1) / sizeof(void *) * sizeof(void *);
+      CHECK(offsetof(cds_sl_decouple_cycle_struct, pFb) == off, "cds_sl_decouple_cycle_struct.pFb at %zu, expected %zu", offsetof(cds_sl_decouple_cycle_struct, pFb), off);
+      off += sizeof(void *);
+      off = (off + sizeof(uint32_t) - 1) / sizeof(uint32_t) * sizeof(uint32_t);
+      CHECK(offsetof(cds_sl_decouple_cycle_struct, tNow) == off, "cds_sl_decouple_cycle_struct.tNow at %zu, expected %zu", offsetof(cds_sl_decouple_cycle_struct, tNow), off);
+      off += sizeof(uint32_t);
+      off = (off + sizeof(int32_t) - 1) / sizeof(int32_t) * sizeof(int32_t);
+      CHECK(offsetof(cds_sl_decouple_cycle_struct, cds_sl_decouple_cycle) == off, "cds_sl_decouple_cycle_struct return value at %zu, expected %zu", offsetof(cds_sl_decouple_cycle_struct, cds_sl_decouple_cycle), off); }
+    { size_t off = 0;
+      off = (off + sizeof(void *) - 1) / sizeof(void *) * sizeof(void *);
+      CHECK(offsetof(cds_sl_edm_init_struct, pFb) == off, "cds_sl_edm_init_struct.pFb at %zu, expected %zu", offsetof(cds_sl_edm_init_struct, pFb), off);
+      off += sizeof(void *);
+      off = (off + sizeof(int32_t) - 1) / sizeof(int32_t) * sizeof(int32_t);
+      CHECK(offsetof(cds_sl_edm_init_struct, cds_sl_edm_init) == off, "cds_sl_edm_init_struct return value at %zu, expected %zu", offsetof(cds_sl_edm_init_struct, cds_sl_edm_init), off); }
+    { size_t off = 0;
+      off = (off + sizeof(void *) - 1) / sizeof(void *) * sizeof(void *);
+      CHECK(offsetof(cds_sl_edm_cycle_struct, pFb) == off, "cds_sl_edm_cycle_struct.pFb at %zu, expected %zu", offsetof(cds_sl_edm_cycle_struct, pFb), off);
+      off += sizeof(void *);
+      off = (off + sizeof(uint32_t) - 1) / sizeof(uint32_t) * sizeof(uint32_t);
+      CHECK(offsetof(cds_sl_edm_cycle_struct, tNow) == off, "cds_sl_edm_cycle_struct.tNow at %zu, expected %zu", offsetof(cds_sl_edm_cycle_struct, tNow), off);
+      off += sizeof(uint32_t);
+      off = (off + sizeof(int32_t) - 1) / sizeof(int32_t) * sizeof(int32_t);
+      CHECK(offsetof(cds_sl_edm_cycle_struct, cds_sl_edm_cycle) == off, "cds_sl_edm_cycle_struct return value at %zu, expected %zu", offsetof(cds_sl_edm_cycle_struct, cds_sl_edm_cycle), off); }
+    { size_t off = 0;
+      off = (off + sizeof(void *) - 1) / sizeof(void *) * sizeof(void *);
+      CHECK(offsetof(cds_sl_rs_init_struct, pFb) == off, "cds_sl_rs_init_struct.pFb at %zu, expected %zu", offsetof(cds_sl_rs_init_struct, pFb), off);
+      off += sizeof(void *);
+      off = (off + sizeof(int32_t) - 1) / sizeof(int32_t) * sizeof(int32_t);
+      CHECK(offsetof(cds_sl_rs_init_struct, cds_sl_rs_init) == off, "cds_sl_rs_init_struct return value at %zu, expected %zu", offsetof(cds_sl_rs_init_struct, cds_sl_rs_init), off); }
+    { size_t off = 0;
+      off = (off + sizeof(void *) - 1) / sizeof(void *) * sizeof(void *);
+      CHECK(offsetof(cds_sl_rs_cycle_struct, pFb) == off, "cds_sl_rs_cycle_struct.pFb at %zu, expected %zu", offsetof(cds_sl_rs_cycle_struct, pFb), off);
+      off += sizeof(void *);
+      off = (off + sizeof(uint32_t) - 1) / sizeof(uint32_t) * sizeof(uint32_t);
+      CHECK(offsetof(cds_sl_rs_cycle_struct, tNow) == off, "cds_sl_rs_cycle_struct.tNow at %zu, expected %zu", offsetof(cds_sl_rs_cycle_struct, tNow), off);
+      off += sizeof(uint32_t);
+      off = (off + sizeof(int32_t) - 1) / sizeof(int32_t) * sizeof(int32_t);
+      CHECK(offsetof(cds_sl_rs_cycle_struct, cds_sl_rs_cycle) == off, "cds_sl_rs_cycle_struct return value at %zu, expected %zu", offsetof(cds_sl_rs_cycle_struct, cds_sl_rs_cycle), off); }
+    { size_t off = 0;
+      off = (off + sizeof(void *) - 1) / sizeof(void *) * sizeof(void *);
+      CHECK(offsetof(cds_sl_sr_init_struct, pFb) == off, "cds_sl_sr_init_struct.pFb at %zu, expected %zu", offsetof(cds_sl_sr_init_struct, pFb), off);
+      off += sizeof(void *);
+      off = (off + sizeof(int32_t) - 1) / sizeof(int32_t) * sizeof(int32_t);
+      CHECK(offsetof(cds_sl_sr_init_struct, cds_sl_sr_init) == off, "cds_sl_sr_init_struct return value at %zu, expected %zu", offsetof(cds_sl_sr_init_struct, cds_sl_sr_init), off); }
+    { size_t off = 0;
+      off = (off + sizeof(void *) - 1) / sizeof(void *) * sizeof(void *);
+      CHECK(offsetof(cds_sl_sr_cycle_struct, pFb) == off, "cds_sl_sr_cycle_struct.pFb at %zu, expected %zu", offsetof(cds_sl_sr_cycle_struct, pFb), off);
+      off += sizeof(void *);
+      off = (off + sizeof(uint32_t) - 1) / sizeof(uint32_t) * sizeof(uint32_t);
+      CHECK(offsetof(cds_sl_sr_cycle_struct, tNow) == off, "cds_sl_sr_cycle_struct.tNow at %zu, expected %zu", offsetof(cds_sl_sr_cycle_struct, tNow), off);
+      off += sizeof(uint32_t);
+      off = (off + sizeof(int32_t) - 1) / sizeof(int32_t) * sizeof(int32_t);
+      CHECK(offsetof(cds_sl_sr_cycle_struct, cds_sl_sr_cycle) == off, "cds_sl_sr_cycle_struct return value at %zu, expected %zu", offsetof(cds_sl_sr_cycle_struct, cds_sl_sr_cycle), off); }
+    { size_t off = 0;
+      off = (off + sizeof(void *) - 1) / sizeof(void *) * sizeof(void *);
+      CHECK(offsetof(cds_sl_ton_init_struct, pFb) == off, "cds_sl_ton_init_struct.pFb at %zu, expected %zu", offsetof(cds_sl_ton_init_struct, pFb), off);
+      off += sizeof(void *);
+      off = (off + sizeof(int32_t) - 1) / sizeof(int32_t) * sizeof(int32_t);
+      CHECK(offsetof(cds_sl_ton_init_struct, cds_sl_ton_init) == off, "cds_sl_ton_init_struct return value at %zu, expected %zu", offsetof(cds_sl_ton_init_struct, cds_sl_ton_init), off); }
+    { size_t off = 0;
+      off = (off + sizeof(void *) - 1) / sizeof(void *) * sizeof(void *);
+      CHECK(offsetof(cds_sl_ton_cycle_struct, pFb) == off, "cds_sl_ton_cycle_struct.pFb at %zu, expected %zu", offsetof(cds_sl_ton_cycle_struct, pFb), off);
+      off += sizeof(void *);
+      off = (off + sizeof(uint32_t) - 1) / sizeof(uint32_t) * sizeof(uint32_t);
+      CHECK(offsetof(cds_sl_ton_cycle_struct, tNow) == off, "cds_sl_ton_cycle_struct.tNow at %zu, expected %zu", offsetof(cds_sl_ton_cycle_struct, tNow), off);
+      off += sizeof(uint32_t);
+      off = (off + sizeof(int32_t) - 1) / sizeof(int32_t) * sizeof(int32_t);
+      CHECK(offsetof(cds_sl_ton_cycle_struct, cds_sl_ton_cycle) == off, "cds_sl_ton_cycle_struct return value at %zu, expected %zu", offsetof(cds_sl_ton_cycle_struct, cds_sl_ton_cycle), off); }
+    { size_t off = 0;
+      off = (off + sizeof(void *) - 1) / sizeof(void *) * sizeof(void *);
+      CHECK(offsetof(cds_sl_ton2_init_struct, pFb) == off, "cds_sl_ton2_init_struct.pFb at %zu, expected %zu", offsetof(cds_sl_ton2_init_struct, pFb), off);
+      off += sizeof(void *);
+      off = (off + sizeof(int32_t) - 1) / sizeof(int32_t) * sizeof(int32_t);
+      CHECK(offsetof(cds_sl_ton2_init_struct, cds_sl_ton2_init) == off, "cds_sl_ton2_init_struct return value at %zu, expected %zu", offsetof(cds_sl_ton2_init_struct, cds_sl_ton2_init), off); }
+    { size_t off = 0;
+      off = (off + sizeof(void *) - 1) / sizeof(void *) * sizeof(void *);
+      CHECK(offsetof(cds_sl_ton2_cycle_struct, pFb) == off, "cds_sl_ton2_cycle_struct.pFb at %zu, expected %zu", offsetof(cds_sl_ton2_cycle_struct, pFb), off);
+      off += sizeof(void *);
+      off = (off + sizeof(uint32_t) - 1) / sizeof(uint32_t) * sizeof(uint32_t);
+      CHECK(offsetof(cds_sl_ton2_cycle_struct, tNow) == off, "cds_sl_ton2_cycle_struct.tNow at %zu, expected %zu", offsetof(cds_sl_ton2_cycle_struct, tNow), off);
+      off += sizeof(uint32_t);
+      off = (off + sizeof(int32_t) - 1) / sizeof(int32_t) * sizeof(int32_t);
+      CHECK(offsetof(cds_sl_ton2_cycle_struct, cds_sl_ton2_cycle) == off, "cds_sl_ton2_cycle_struct return value at %zu, expected %zu", offsetof(cds_sl_ton2_cycle_struct, cds_sl_ton2_cycle), off); }
+    { size_t off = 0;
+      off = (off + sizeof(void *) - 1) / sizeof(void *) * sizeof(void *);
+      CHECK(offsetof(cds_sl_ton2_restore_elapsed_struct, pFb) == off, "cds_sl_ton2_restore_elapsed_struct.pFb at %zu, expected %zu", offsetof(cds_sl_ton2_restore_elapsed_struct, pFb), off);
+      off += sizeof(void *);
+      off = (off + sizeof(uint32_t) - 1) / sizeof(uint32_t) * sizeof(uint32_t);
+      CHECK(offsetof(cds_sl_ton2_restore_elapsed_struct, nElapsedMs) == off, "cds_sl_ton2_restore_elapsed_struct.nElapsedMs at %zu, expected %zu", offsetof(cds_sl_ton2_restore_elapsed_struct, nElapsedMs), off);
+      off += sizeof(uint32_t);
+      off = (off + sizeof(int32_t) - 1) / sizeof(int32_t) * sizeof(int32_t);
+      CHECK(offsetof(cds_sl_ton2_restore_elapsed_struct, cds_sl_ton2_restore_elapsed) == off, "cds_sl_ton2_restore_elapsed_struct return value at %zu, expected %zu", offsetof(cds_sl_ton2_restore_elapsed_struct, cds_sl_ton2_restore_elapsed), off); }
+    { size_t off = 0;
+      off = (off + sizeof(void *) - 1) / sizeof(void *) * sizeof(void *);
+      CHECK(offsetof(cds_sl_tof_init_struct, pFb) == off, "cds_sl_tof_init_struct.pFb at %zu, expected %zu", offsetof(cds_sl_tof_init_struct, pFb), off);
+      off += sizeof(void *);
+      off = (off + sizeof(int32_t) - 1) / sizeof(int32_t) * sizeof(int32_t);
+      CHECK(offsetof(cds_sl_tof_init_struct, cds_sl_tof_init) == off, "cds_sl_tof_init_struct return value at %zu, expected %zu", offsetof(cds_sl_tof_init_struct, cds_sl_tof_init), off); }
+    { size_t off = 0;
+      off = (off + sizeof(void *) - 1) / sizeof(void *) * sizeof(void *);
+      CHECK(offsetof(cds_sl_tof_cycle_struct, pFb) == off, "cds_sl_tof_cycle_struct.pFb at %zu, expected %zu", offsetof(cds_sl_tof_cycle_struct, pFb), off);
+      off += sizeof(void *);
+      off = (off + sizeof(uint32_t) - 1) / sizeof(uint32_t) * sizeof(uint32_t);
+      CHECK(offsetof(cds_sl_tof_cycle_struct, tNow) == off, "cds_sl_tof_cycle_struct.tNow at %zu, expected %zu", offsetof(cds_sl_tof_cycle_struct, tNow), off);
+      off += sizeof(uint32_t);
+      off = (off + sizeof(int32_t) - 1) / sizeof(int32_t) * sizeof(int32_t);
+      CHECK(offsetof(cds_sl_tof_cycle_struct, cds_sl_tof_cycle) == off, "cds_sl_tof_cycle_struct return value at %zu, expected %zu", offsetof(cds_sl_tof_cycle_struct, cds_sl_tof_cycle), off); }
+    { size_t off = 0;
+      off = (off + sizeof(void *) - 1) / sizeof(void *) * sizeof(void *);
+      CHECK(offsetof(cds_sl_muting_init_struct, pFb) == off, "cds_sl_muting_init_struct.pFb at %zu, expected %zu", offsetof(cds_sl_muting_init_struct, pFb), off);
+      off += sizeof(void *);
+      off = (off + sizeof(int32_t) - 1) / sizeof(int32_t) * sizeof(int32_t);
+      CHECK(offsetof(cds_sl_muting_init_struct, cds_sl_muting_init) == off, "cds_sl_muting_init_struct return value at %zu, expected %zu", offsetof(cds_sl_muting_init_struct, cds_sl_muting_init), off); }
+    { size_t off = 0;
+      off = (off + sizeof(void *) - 1) / sizeof(void *) * sizeof(void *);
+      CHECK(offsetof(cds_sl_muting_cycle_struct, pFb) == off, "cds_sl_muting_cycle_struct.pFb at %zu, expected %zu", offsetof(cds_sl_muting_cycle_struct, pFb), off);
+      off += sizeof(void *);
+      off = (off + sizeof(uint32_t) - 1) / sizeof(uint32_t) * sizeof(uint32_t);
+      CHECK(offsetof(cds_sl_muting_cycle_struct, tNow) == off, "cds_sl_muting_cycle_struct.tNow at %zu, expected %zu", offsetof(cds_sl_muting_cycle_struct, tNow), off);
+      off += sizeof(uint32_t);
+      off = (off + sizeof(int32_t) - 1) / sizeof(int32_t) * sizeof(int32_t);
+      CHECK(offsetof(cds_sl_muting_cycle_struct, cds_sl_muting_cycle) == off, "cds_sl_muting_cycle_struct return value at %zu, expected %zu", offsetof(cds_sl_muting_cycle_struct, cds_sl_muting_cycle), off); }
+    { size_t off = 0;
       off = (off + sizeof(uint32_t) - 1) / sizeof(uint32_t) * sizeof(uint32_t);
       CHECK(offsetof(cds_sl_time_now_ms_struct, cds_sl_time_now_ms) == off, "cds_sl_time_now_ms_struct return value at %zu, expected %zu", offsetof(cds_sl_time_now_ms_struct, cds_sl_time_now_ms), off); }
 }
@@ -131,11 +335,499 @@ static void test_mon(void)
     printf("FB_MON: %d of 400 cycles returned SL_OK\n", ok);
 }
 
+static void test_and(void)
+{
+    static FB_AND a, b;
+    cds_sl_and_cycle_struct p;
+    int k, ok = 0;
+    memset(&a, 0, sizeof a);
+    memset(&b, 0, sizeof b);
+    memset(&p, 0, sizeof p);
+    p.pFb = NULL;
+    p.cds_sl_and_cycle = 12345;
+    cds_sl_and_cycle(&p);
+    CHECK(p.cds_sl_and_cycle == SL_E_NULL, "cds_sl_and_cycle(NULL) returned %d", (int)p.cds_sl_and_cycle);
+    a.bRun = b.bRun = 1;
+    a.wInputActive = b.wInputActive = 1;
+    { cds_sl_and_init_struct q; int32_t r; q.pFb = &a; cds_sl_and_init(&q); r = sl_and_init(&b);
+      CHECK(q.cds_sl_and_init == r && memcmp(&a, &b, sizeof a) == 0, "cds_sl_and_init differs from sl_and_init"); }
+    for (k = 0; k < 400; k++) {
+        int32_t direct;
+        unsigned r = rnd();
+        a.bAndIn1 = b.bAndIn1 = (uint8_t)((rnd() % 7u) != 0u);
+        a.bAndIn2 = b.bAndIn2 = (uint8_t)((rnd() % 7u) != 0u);
+        a.bAndIn3 = b.bAndIn3 = (uint8_t)((rnd() % 7u) != 0u);
+        a.bAndIn4 = b.bAndIn4 = (uint8_t)((rnd() % 7u) != 0u);
+        a.bAndIn5 = b.bAndIn5 = (uint8_t)((rnd() % 7u) != 0u);
+        a.bAndIn6 = b.bAndIn6 = (uint8_t)((rnd() % 7u) != 0u);
+        a.bAndIn7 = b.bAndIn7 = (uint8_t)((rnd() % 7u) != 0u);
+        a.bAndIn8 = b.bAndIn8 = (uint8_t)((rnd() % 7u) != 0u);
+        a.bErrAck = b.bErrAck = (uint8_t)((rnd() % 7u) != 0u);
+        p.pFb = &a;
+        p.tNow = (uint32_t)(k * 10u + (r % 5u));
+        cds_sl_and_cycle(&p);
+        direct = sl_and_cycle(&b, p.tNow);
+        CHECK(p.cds_sl_and_cycle == direct, "FB_AND cycle %d: adapter %d, direct %d", k, (int)p.cds_sl_and_cycle, (int)direct);
+        CHECK(memcmp(&a, &b, sizeof a) == 0, "FB_AND cycle %d: instances differ", k);
+        if (direct == SL_OK) ok++;
+    }
+    printf("FB_AND: %d of 400 cycles returned SL_OK\n", ok);
+}
+
+static void test_or(void)
+{
+    static FB_OR a, b;
+    cds_sl_or_cycle_struct p;
+    int k, ok = 0;
+    memset(&a, 0, sizeof a);
+    memset(&b, 0, sizeof b);
+    memset(&p, 0, sizeof p);
+    p.pFb = NULL;
+    p.cds_sl_or_cycle = 12345;
+    cds_sl_or_cycle(&p);
+    CHECK(p.cds_sl_or_cycle == SL_E_NULL, "cds_sl_or_cycle(NULL) returned %d", (int)p.cds_sl_or_cycle);
+    a.bRun = b.bRun = 1;
+    a.wInputActive = b.wInputActive = 1;
+    { cds_sl_or_init_struct q; int32_t r; q.pFb = &a; cds_sl_or_init(&q); r = sl_or_init(&b);
+      CHECK(q.cds_sl_or_init == r && memcmp(&a, &b, sizeof a) == 0, "cds_sl_or_init differs from sl_or_init"); }
+    for (k = 0; k < 400; k++) {
+        int32_t direct;
+        unsigned r = rnd();
+        a.bOrIn1 = b.bOrIn1 = (uint8_t)((rnd() % 7u) != 0u);
+        a.bOrIn2 = b.bOrIn2 = (uint8_t)((rnd() % 7u) != 0u);
+        a.bOrIn3 = b.bOrIn3 = (uint8_t)((rnd() % 7u) != 0u);
+        a.bOrIn4 = b.bOrIn4 = (uint8_t)((rnd() % 7u) != 0u);
+        a.bOrIn5 = b.bOrIn5 = (uint8_t)((rnd() % 7u) != 0u);
+        a.bOrIn6 = b.bOrIn6 = (uint8_t)((rnd() % 7u) != 0u);
+        a.bOrIn7 = b.bOrIn7 = (uint8_t)((rnd() % 7u) != 0u);
+        a.bOrIn8 = b.bOrIn8 = (uint8_t)((rnd() % 7u) != 0u);
+        a.bErrAck = b.bErrAck = (uint8_t)((rnd() % 7u) != 0u);
+        p.pFb = &a;
+        p.tNow = (uint32_t)(k * 10u + (r % 5u));
+        cds_sl_or_cycle(&p);
+        direct = sl_or_cycle(&b, p.tNow);
+        CHECK(p.cds_sl_or_cycle == direct, "FB_OR cycle %d: adapter %d, direct %d", k, (int)p.cds_sl_or_cycle, (int)direct);
+        CHECK(memcmp(&a, &b, sizeof a) == 0, "FB_OR cycle %d: instances differ", k);
+        if (direct == SL_OK) ok++;
+    }
+    printf("FB_OR: %d of 400 cycles returned SL_OK\n", ok);
+}
+
+static void test_opmode(void)
+{
+    static FB_OPMODE a, b;
+    cds_sl_opmode_cycle_struct p;
+    int k, ok = 0;
+    memset(&a, 0, sizeof a);
+    memset(&b, 0, sizeof b);
+    memset(&p, 0, sizeof p);
+    p.pFb = NULL;
+    p.cds_sl_opmode_cycle = 12345;
+    cds_sl_opmode_cycle(&p);
+    CHECK(p.cds_sl_opmode_cycle == SL_E_NULL, "cds_sl_opmode_cycle(NULL) returned %d", (int)p.cds_sl_opmode_cycle);
+    a.bRun = b.bRun = 1;
+    a.wInputActive = b.wInputActive = 1;
+    { cds_sl_opmode_init_struct q; int32_t r; q.pFb = &a; cds_sl_opmode_init(&q); r = sl_opmode_init(&b);
+      CHECK(q.cds_sl_opmode_init == r && memcmp(&a, &b, sizeof a) == 0, "cds_sl_opmode_init differs from sl_opmode_init"); }
+    for (k = 0; k < 400; k++) {
+        int32_t direct;
+        unsigned r = rnd();
+        a.bRestart = b.bRestart = (uint8_t)((rnd() % 7u) != 0u);
+        a.bOpIn1 = b.bOpIn1 = (uint8_t)((rnd() % 7u) != 0u);
+        a.bOpIn2 = b.bOpIn2 = (uint8_t)((rnd() % 7u) != 0u);
+        a.bOpIn3 = b.bOpIn3 = (uint8_t)((rnd() % 7u) != 0u);
+        a.bOpIn4 = b.bOpIn4 = (uint8_t)((rnd() % 7u) != 0u);
+        a.bOpIn5 = b.bOpIn5 = (uint8_t)((rnd() % 7u) != 0u);
+        a.bOpIn6 = b.bOpIn6 = (uint8_t)((rnd() % 7u) != 0u);
+        a.bOpIn7 = b.bOpIn7 = (uint8_t)((rnd() % 7u) != 0u);
+        a.bOpIn8 = b.bOpIn8 = (uint8_t)((rnd() % 7u) != 0u);
+        a.bErrAck = b.bErrAck = (uint8_t)((rnd() % 7u) != 0u);
+        p.pFb = &a;
+        p.tNow = (uint32_t)(k * 10u + (r % 5u));
+        cds_sl_opmode_cycle(&p);
+        direct = sl_opmode_cycle(&b, p.tNow);
+        CHECK(p.cds_sl_opmode_cycle == direct, "FB_OPMODE cycle %d: adapter %d, direct %d", k, (int)p.cds_sl_opmode_cycle, (int)direct);
+        CHECK(memcmp(&a, &b, sizeof a) == 0, "FB_OPMODE cycle %d: instances differ", k);
+        if (direct == SL_OK) ok++;
+    }
+    printf("FB_OPMODE: %d of 400 cycles returned SL_OK\n", ok);
+}
+
+static void test_twohand(void)
+{
+    static FB_TWOHAND a, b;
+    cds_sl_twohand_cycle_struct p;
+    int k, ok = 0;
+    memset(&a, 0, sizeof a);
+    memset(&b, 0, sizeof b);
+    memset(&p, 0, sizeof p);
+    p.pFb = NULL;
+    p.cds_sl_twohand_cycle = 12345;
+    cds_sl_twohand_cycle(&p);
+    CHECK(p.cds_sl_twohand_cycle == SL_E_NULL, "cds_sl_twohand_cycle(NULL) returned %d", (int)p.cds_sl_twohand_cycle);
+    a.bRun = b.bRun = 1;
+    a.wInputActive = b.wInputActive = 1;
+    { cds_sl_twohand_init_struct q; int32_t r; q.pFb = &a; cds_sl_twohand_init(&q); r = sl_twohand_init(&b);
+      CHECK(q.cds_sl_twohand_init == r && memcmp(&a, &b, sizeof a) == 0, "cds_sl_twohand_init differs from sl_twohand_init"); }
+    for (k = 0; k < 400; k++) {
+        int32_t direct;
+        unsigned r = rnd();
+        a.bTwoHand1 = b.bTwoHand1 = (uint8_t)((rnd() % 7u) != 0u);
+        a.bTwoHand2 = b.bTwoHand2 = (uint8_t)((rnd() % 7u) != 0u);
+        a.bTwoHand3 = b.bTwoHand3 = (uint8_t)((rnd() % 7u) != 0u);
+        a.bTwoHand4 = b.bTwoHand4 = (uint8_t)((rnd() % 7u) != 0u);
+        a.bErrAck = b.bErrAck = (uint8_t)((rnd() % 7u) != 0u);
+        p.pFb = &a;
+        p.tNow = (uint32_t)(k * 10u + (r % 5u));
+        cds_sl_twohand_cycle(&p);
+        direct = sl_twohand_cycle(&b, p.tNow);
+        CHECK(p.cds_sl_twohand_cycle == direct, "FB_TWOHAND cycle %d: adapter %d, direct %d", k, (int)p.cds_sl_twohand_cycle, (int)direct);
+        CHECK(memcmp(&a, &b, sizeof a) == 0, "FB_TWOHAND cycle %d: instances differ", k);
+        if (direct == SL_OK) ok++;
+    }
+    printf("FB_TWOHAND: %d of 400 cycles returned SL_OK\n", ok);
+}
+
+static void test_xor(void)
+{
+    static FB_XOR a, b;
+    cds_sl_xor_cycle_struct p;
+    int k, ok = 0;
+    memset(&a, 0, sizeof a);
+    memset(&b, 0, sizeof b);
+    memset(&p, 0, sizeof p);
+    p.pFb = NULL;
+    p.cds_sl_xor_cycle = 12345;
+    cds_sl_xor_cycle(&p);
+    CHECK(p.cds_sl_xor_cycle == SL_E_NULL, "cds_sl_xor_cycle(NULL) returned %d", (int)p.cds_sl_xor_cycle);
+    a.bRun = b.bRun = 1;
+    a.wInputActive = b.wInputActive = 1;
+    { cds_sl_xor_init_struct q; int32_t r; q.pFb = &a; cds_sl_xor_init(&q); r = sl_xor_init(&b);
+      CHECK(q.cds_sl_xor_init == r && memcmp(&a, &b, sizeof a) == 0, "cds_sl_xor_init differs from sl_xor_init"); }
+    for (k = 0; k < 400; k++) {
+        int32_t direct;
+        unsigned r = rnd();
+        a.bXor1In1 = b.bXor1In1 = (uint8_t)((rnd() % 7u) != 0u);
+        a.bXor2In1 = b.bXor2In1 = (uint8_t)((rnd() % 7u) != 0u);
+        a.bXor1In2 = b.bXor1In2 = (uint8_t)((rnd() % 7u) != 0u);
+        a.bXor2In2 = b.bXor2In2 = (uint8_t)((rnd() % 7u) != 0u);
+        a.bXor1In3 = b.bXor1In3 = (uint8_t)((rnd() % 7u) != 0u);
+        a.bXor2In3 = b.bXor2In3 = (uint8_t)((rnd() % 7u) != 0u);
+        a.bXor1In4 = b.bXor1In4 = (uint8_t)((rnd() % 7u) != 0u);
+        a.bXor2In4 = b.bXor2In4 = (uint8_t)((rnd() % 7u) != 0u);
+        a.bXor1In5 = b.bXor1In5 = (uint8_t)((rnd() % 7u) != 0u);
+        a.bXor2In5 = b.bXor2In5 = (uint8_t)((rnd() % 7u) != 0u);
+        a.bXor1In6 = b.bXor1In6 = (uint8_t)((rnd() % 7u) != 0u);
+        a.bXor2In6 = b.bXor2In6 = (uint8_t)((rnd() % 7u) != 0u);
+        a.bXor1In7 = b.bXor1In7 = (uint8_t)((rnd() % 7u) != 0u);
+        a.bXor2In7 = b.bXor2In7 = (uint8_t)((rnd() % 7u) != 0u);
+        a.bXor1In8 = b.bXor1In8 = (uint8_t)((rnd() % 7u) != 0u);
+        a.bXor2In8 = b.bXor2In8 = (uint8_t)((rnd() % 7u) != 0u);
+        a.bErrAck = b.bErrAck = (uint8_t)((rnd() % 7u) != 0u);
+        p.pFb = &a;
+        p.tNow = (uint32_t)(k * 10u + (r % 5u));
+        cds_sl_xor_cycle(&p);
+        direct = sl_xor_cycle(&b, p.tNow);
+        CHECK(p.cds_sl_xor_cycle == direct, "FB_XOR cycle %d: adapter %d, direct %d", k, (int)p.cds_sl_xor_cycle, (int)direct);
+        CHECK(memcmp(&a, &b, sizeof a) == 0, "FB_XOR cycle %d: instances differ", k);
+        if (direct == SL_OK) ok++;
+    }
+    printf("FB_XOR: %d of 400 cycles returned SL_OK\n", ok);
+}
+
+static void test_decouple(void)
+{
+    static FB_DECOUPLE a, b;
+    cds_sl_decouple_cycle_struct p;
+    int k, ok = 0;
+    memset(&a, 0, sizeof a);
+    memset(&b, 0, sizeof b);
+    memset(&p, 0, sizeof p);
+    p.pFb = NULL;
+    p.cds_sl_decouple_cycle = 12345;
+    cds_sl_decouple_cycle(&p);
+    CHECK(p.cds_sl_decouple_cycle == SL_E_NULL, "cds_sl_decouple_cycle(NULL) returned %d", (int)p.cds_sl_decouple_cycle);
+    a.bRun = b.bRun = 1;
+    a.wInputActive = b.wInputActive = 1;
+    { cds_sl_decouple_init_struct q; int32_t r; q.pFb = &a; cds_sl_decouple_init(&q); r = sl_decouple_init(&b);
+      CHECK(q.cds_sl_decouple_init == r && memcmp(&a, &b, sizeof a) == 0, "cds_sl_decouple_init differs from sl_decouple_init"); }
+    for (k = 0; k < 400; k++) {
+        int32_t direct;
+        unsigned r = rnd();
+        a.bDecIn1 = b.bDecIn1 = (uint8_t)((rnd() % 7u) != 0u);
+        a.bDecIn2 = b.bDecIn2 = (uint8_t)((rnd() % 7u) != 0u);
+        a.bDecIn3 = b.bDecIn3 = (uint8_t)((rnd() % 7u) != 0u);
+        a.bDecIn4 = b.bDecIn4 = (uint8_t)((rnd() % 7u) != 0u);
+        a.bDecIn5 = b.bDecIn5 = (uint8_t)((rnd() % 7u) != 0u);
+        a.bDecIn6 = b.bDecIn6 = (uint8_t)((rnd() % 7u) != 0u);
+        a.bDecIn7 = b.bDecIn7 = (uint8_t)((rnd() % 7u) != 0u);
+        a.bDecIn8 = b.bDecIn8 = (uint8_t)((rnd() % 7u) != 0u);
+        a.bErrAck = b.bErrAck = (uint8_t)((rnd() % 7u) != 0u);
+        p.pFb = &a;
+        p.tNow = (uint32_t)(k * 10u + (r % 5u));
+        cds_sl_decouple_cycle(&p);
+        direct = sl_decouple_cycle(&b, p.tNow);
+        CHECK(p.cds_sl_decouple_cycle == direct, "FB_DECOUPLE cycle %d: adapter %d, direct %d", k, (int)p.cds_sl_decouple_cycle, (int)direct);
+        CHECK(memcmp(&a, &b, sizeof a) == 0, "FB_DECOUPLE cycle %d: instances differ", k);
+        if (direct == SL_OK) ok++;
+    }
+    printf("FB_DECOUPLE: %d of 400 cycles returned SL_OK\n", ok);
+}
+
+static void test_edm(void)
+{
+    static FB_EDM a, b;
+    cds_sl_edm_cycle_struct p;
+    int k, ok = 0;
+    memset(&a, 0, sizeof a);
+    memset(&b, 0, sizeof b);
+    memset(&p, 0, sizeof p);
+    p.pFb = NULL;
+    p.cds_sl_edm_cycle = 12345;
+    cds_sl_edm_cycle(&p);
+    CHECK(p.cds_sl_edm_cycle == SL_E_NULL, "cds_sl_edm_cycle(NULL) returned %d", (int)p.cds_sl_edm_cycle);
+    a.bRun = b.bRun = 1;
+    a.wInputActive = b.wInputActive = 1;
+    { cds_sl_edm_init_struct q; int32_t r; q.pFb = &a; cds_sl_edm_init(&q); r = sl_edm_init(&b);
+      CHECK(q.cds_sl_edm_init == r && memcmp(&a, &b, sizeof a) == 0, "cds_sl_edm_init differs from sl_edm_init"); }
+    for (k = 0; k < 400; k++) {
+        int32_t direct;
+        unsigned r = rnd();
+        a.bMon1 = b.bMon1 = (uint8_t)((rnd() % 7u) != 0u);
+        a.bMon2 = b.bMon2 = (uint8_t)((rnd() % 7u) != 0u);
+        a.bErrAck = b.bErrAck = (uint8_t)((rnd() % 7u) != 0u);
+        p.pFb = &a;
+        p.tNow = (uint32_t)(k * 10u + (r % 5u));
+        cds_sl_edm_cycle(&p);
+        direct = sl_edm_cycle(&b, p.tNow);
+        CHECK(p.cds_sl_edm_cycle == direct, "FB_EDM cycle %d: adapter %d, direct %d", k, (int)p.cds_sl_edm_cycle, (int)direct);
+        CHECK(memcmp(&a, &b, sizeof a) == 0, "FB_EDM cycle %d: instances differ", k);
+        if (direct == SL_OK) ok++;
+    }
+    printf("FB_EDM: %d of 400 cycles returned SL_OK\n", ok);
+}
+
+static void test_rs(void)
+{
+    static FB_RS a, b;
+    cds_sl_rs_cycle_struct p;
+    int k, ok = 0;
+    memset(&a, 0, sizeof a);
+    memset(&b, 0, sizeof b);
+    memset(&p, 0, sizeof p);
+    p.pFb = NULL;
+    p.cds_sl_rs_cycle = 12345;
+    cds_sl_rs_cycle(&p);
+    CHECK(p.cds_sl_rs_cycle == SL_E_NULL, "cds_sl_rs_cycle(NULL) returned %d", (int)p.cds_sl_rs_cycle);
+    a.bRun = b.bRun = 1;
+    a.wInputActive = b.wInputActive = 1;
+    { cds_sl_rs_init_struct q; int32_t r; q.pFb = &a; cds_sl_rs_init(&q); r = sl_rs_init(&b);
+      CHECK(q.cds_sl_rs_init == r && memcmp(&a, &b, sizeof a) == 0, "cds_sl_rs_init differs from sl_rs_init"); }
+    for (k = 0; k < 400; k++) {
+        int32_t direct;
+        unsigned r = rnd();
+        a.bReset = b.bReset = (uint8_t)((rnd() % 7u) != 0u);
+        a.bSet = b.bSet = (uint8_t)((rnd() % 7u) != 0u);
+        a.bErrAck = b.bErrAck = (uint8_t)((rnd() % 7u) != 0u);
+        p.pFb = &a;
+        p.tNow = (uint32_t)(k * 10u + (r % 5u));
+        cds_sl_rs_cycle(&p);
+        direct = sl_rs_cycle(&b, p.tNow);
+        CHECK(p.cds_sl_rs_cycle == direct, "FB_RS cycle %d: adapter %d, direct %d", k, (int)p.cds_sl_rs_cycle, (int)direct);
+        CHECK(memcmp(&a, &b, sizeof a) == 0, "FB_RS cycle %d: instances differ", k);
+        if (direct == SL_OK) ok++;
+    }
+    printf("FB_RS: %d of 400 cycles returned SL_OK\n", ok);
+}
+
+static void test_sr(void)
+{
+    static FB_SR a, b;
+    cds_sl_sr_cycle_struct p;
+    int k, ok = 0;
+    memset(&a, 0, sizeof a);
+    memset(&b, 0, sizeof b);
+    memset(&p, 0, sizeof p);
+    p.pFb = NULL;
+    p.cds_sl_sr_cycle = 12345;
+    cds_sl_sr_cycle(&p);
+    CHECK(p.cds_sl_sr_cycle == SL_E_NULL, "cds_sl_sr_cycle(NULL) returned %d", (int)p.cds_sl_sr_cycle);
+    a.bRun = b.bRun = 1;
+    a.wInputActive = b.wInputActive = 1;
+    { cds_sl_sr_init_struct q; int32_t r; q.pFb = &a; cds_sl_sr_init(&q); r = sl_sr_init(&b);
+      CHECK(q.cds_sl_sr_init == r && memcmp(&a, &b, sizeof a) == 0, "cds_sl_sr_init differs from sl_sr_init"); }
+    for (k = 0; k < 400; k++) {
+        int32_t direct;
+        unsigned r = rnd();
+        a.bReset = b.bReset = (uint8_t)((rnd() % 7u) != 0u);
+        a.bSet = b.bSet = (uint8_t)((rnd() % 7u) != 0u);
+        a.bErrAck = b.bErrAck = (uint8_t)((rnd() % 7u) != 0u);
+        p.pFb = &a;
+        p.tNow = (uint32_t)(k * 10u + (r % 5u));
+        cds_sl_sr_cycle(&p);
+        direct = sl_sr_cycle(&b, p.tNow);
+        CHECK(p.cds_sl_sr_cycle == direct, "FB_SR cycle %d: adapter %d, direct %d", k, (int)p.cds_sl_sr_cycle, (int)direct);
+        CHECK(memcmp(&a, &b, sizeof a) == 0, "FB_SR cycle %d: instances differ", k);
+        if (direct == SL_OK) ok++;
+    }
+    printf("FB_SR: %d of 400 cycles returned SL_OK\n", ok);
+}
+
+static void test_ton(void)
+{
+    static FB_TON a, b;
+    cds_sl_ton_cycle_struct p;
+    int k, ok = 0;
+    memset(&a, 0, sizeof a);
+    memset(&b, 0, sizeof b);
+    memset(&p, 0, sizeof p);
+    p.pFb = NULL;
+    p.cds_sl_ton_cycle = 12345;
+    cds_sl_ton_cycle(&p);
+    CHECK(p.cds_sl_ton_cycle == SL_E_NULL, "cds_sl_ton_cycle(NULL) returned %d", (int)p.cds_sl_ton_cycle);
+    a.bRun = b.bRun = 1;
+    a.wInputActive = b.wInputActive = 1;
+    { cds_sl_ton_init_struct q; int32_t r; q.pFb = &a; cds_sl_ton_init(&q); r = sl_ton_init(&b);
+      CHECK(q.cds_sl_ton_init == r && memcmp(&a, &b, sizeof a) == 0, "cds_sl_ton_init differs from sl_ton_init"); }
+    for (k = 0; k < 400; k++) {
+        int32_t direct;
+        unsigned r = rnd();
+        a.bTonIn1 = b.bTonIn1 = (uint8_t)((rnd() % 7u) != 0u);
+        a.bErrAck = b.bErrAck = (uint8_t)((rnd() % 7u) != 0u);
+        p.pFb = &a;
+        p.tNow = (uint32_t)(k * 10u + (r % 5u));
+        cds_sl_ton_cycle(&p);
+        direct = sl_ton_cycle(&b, p.tNow);
+        CHECK(p.cds_sl_ton_cycle == direct, "FB_TON cycle %d: adapter %d, direct %d", k, (int)p.cds_sl_ton_cycle, (int)direct);
+        CHECK(memcmp(&a, &b, sizeof a) == 0, "FB_TON cycle %d: instances differ", k);
+        if (direct == SL_OK) ok++;
+    }
+    printf("FB_TON: %d of 400 cycles returned SL_OK\n", ok);
+}
+
+static void test_ton2(void)
+{
+    static FB_TON2 a, b;
+    cds_sl_ton2_cycle_struct p;
+    int k, ok = 0;
+    memset(&a, 0, sizeof a);
+    memset(&b, 0, sizeof b);
+    memset(&p, 0, sizeof p);
+    p.pFb = NULL;
+    p.cds_sl_ton2_cycle = 12345;
+    cds_sl_ton2_cycle(&p);
+    CHECK(p.cds_sl_ton2_cycle == SL_E_NULL, "cds_sl_ton2_cycle(NULL) returned %d", (int)p.cds_sl_ton2_cycle);
+    a.bRun = b.bRun = 1;
+    a.wInputActive = b.wInputActive = 1;
+    { cds_sl_ton2_init_struct q; int32_t r; q.pFb = &a; cds_sl_ton2_init(&q); r = sl_ton2_init(&b);
+      CHECK(q.cds_sl_ton2_init == r && memcmp(&a, &b, sizeof a) == 0, "cds_sl_ton2_init differs from sl_ton2_init"); }
+    for (k = 0; k < 400; k++) {
+        int32_t direct;
+        unsigned r = rnd();
+        a.bTonIn1 = b.bTonIn1 = (uint8_t)((rnd() % 7u) != 0u);
+        a.bEnable = b.bEnable = (uint8_t)((rnd() % 7u) != 0u);
+        a.bErrAck = b.bErrAck = (uint8_t)((rnd() % 7u) != 0u);
+        p.pFb = &a;
+        p.tNow = (uint32_t)(k * 10u + (r % 5u));
+        cds_sl_ton2_cycle(&p);
+        direct = sl_ton2_cycle(&b, p.tNow);
+        CHECK(p.cds_sl_ton2_cycle == direct, "FB_TON2 cycle %d: adapter %d, direct %d", k, (int)p.cds_sl_ton2_cycle, (int)direct);
+        CHECK(memcmp(&a, &b, sizeof a) == 0, "FB_TON2 cycle %d: instances differ", k);
+        if (direct == SL_OK) ok++;
+    }
+    printf("FB_TON2: %d of 400 cycles returned SL_OK\n", ok);
+}
+
+static void test_tof(void)
+{
+    static FB_TOF a, b;
+    cds_sl_tof_cycle_struct p;
+    int k, ok = 0;
+    memset(&a, 0, sizeof a);
+    memset(&b, 0, sizeof b);
+    memset(&p, 0, sizeof p);
+    p.pFb = NULL;
+    p.cds_sl_tof_cycle = 12345;
+    cds_sl_tof_cycle(&p);
+    CHECK(p.cds_sl_tof_cycle == SL_E_NULL, "cds_sl_tof_cycle(NULL) returned %d", (int)p.cds_sl_tof_cycle);
+    a.bRun = b.bRun = 1;
+    a.wInputActive = b.wInputActive = 1;
+    { cds_sl_tof_init_struct q; int32_t r; q.pFb = &a; cds_sl_tof_init(&q); r = sl_tof_init(&b);
+      CHECK(q.cds_sl_tof_init == r && memcmp(&a, &b, sizeof a) == 0, "cds_sl_tof_init differs from sl_tof_init"); }
+    for (k = 0; k < 400; k++) {
+        int32_t direct;
+        unsigned r = rnd();
+        a.bTofIn1 = b.bTofIn1 = (uint8_t)((rnd() % 7u) != 0u);
+        a.bErrAck = b.bErrAck = (uint8_t)((rnd() % 7u) != 0u);
+        p.pFb = &a;
+        p.tNow = (uint32_t)(k * 10u + (r % 5u));
+        cds_sl_tof_cycle(&p);
+        direct = sl_tof_cycle(&b, p.tNow);
+        CHECK(p.cds_sl_tof_cycle == direct, "FB_TOF cycle %d: adapter %d, direct %d", k, (int)p.cds_sl_tof_cycle, (int)direct);
+        CHECK(memcmp(&a, &b, sizeof a) == 0, "FB_TOF cycle %d: instances differ", k);
+        if (direct == SL_OK) ok++;
+    }
+    printf("FB_TOF: %d of 400 cycles returned SL_OK\n", ok);
+}
+
+static void test_muting(void)
+{
+    static FB_MUTING a, b;
+    cds_sl_muting_cycle_struct p;
+    int k, ok = 0;
+    memset(&a, 0, sizeof a);
+    memset(&b, 0, sizeof b);
+    memset(&p, 0, sizeof p);
+    p.pFb = NULL;
+    p.cds_sl_muting_cycle = 12345;
+    cds_sl_muting_cycle(&p);
+    CHECK(p.cds_sl_muting_cycle == SL_E_NULL, "cds_sl_muting_cycle(NULL) returned %d", (int)p.cds_sl_muting_cycle);
+    a.bRun = b.bRun = 1;
+    a.wInputActive = b.wInputActive = 1;
+    { cds_sl_muting_init_struct q; int32_t r; q.pFb = &a; cds_sl_muting_init(&q); r = sl_muting_init(&b);
+      CHECK(q.cds_sl_muting_init == r && memcmp(&a, &b, sizeof a) == 0, "cds_sl_muting_init differs from sl_muting_init"); }
+    for (k = 0; k < 400; k++) {
+        int32_t direct;
+        unsigned r = rnd();
+        a.bMutingEnable = b.bMutingEnable = (uint8_t)((rnd() % 7u) != 0u);
+        a.bEDM1 = b.bEDM1 = (uint8_t)((rnd() % 7u) != 0u);
+        a.bEDM2 = b.bEDM2 = (uint8_t)((rnd() % 7u) != 0u);
+        a.bMutingIn1 = b.bMutingIn1 = (uint8_t)((rnd() % 7u) != 0u);
+        a.bMutingIn2 = b.bMutingIn2 = (uint8_t)((rnd() % 7u) != 0u);
+        a.bOSSDIn1 = b.bOSSDIn1 = (uint8_t)((rnd() % 7u) != 0u);
+        a.bOSSDIn2 = b.bOSSDIn2 = (uint8_t)((rnd() % 7u) != 0u);
+        a.bMutingIn3 = b.bMutingIn3 = (uint8_t)((rnd() % 7u) != 0u);
+        a.bMutingIn4 = b.bMutingIn4 = (uint8_t)((rnd() % 7u) != 0u);
+        a.bErrAck = b.bErrAck = (uint8_t)((rnd() % 7u) != 0u);
+        p.pFb = &a;
+        p.tNow = (uint32_t)(k * 10u + (r % 5u));
+        cds_sl_muting_cycle(&p);
+        direct = sl_muting_cycle(&b, p.tNow);
+        CHECK(p.cds_sl_muting_cycle == direct, "FB_MUTING cycle %d: adapter %d, direct %d", k, (int)p.cds_sl_muting_cycle, (int)direct);
+        CHECK(memcmp(&a, &b, sizeof a) == 0, "FB_MUTING cycle %d: instances differ", k);
+        if (direct == SL_OK) ok++;
+    }
+    printf("FB_MUTING: %d of 400 cycles returned SL_OK\n", ok);
+}
+
 int main(void)
 {
     test_param_structs();
     test_estop();
     test_mon();
+    test_and();
+    test_or();
+    test_opmode();
+    test_twohand();
+    test_xor();
+    test_decouple();
+    test_edm();
+    test_rs();
+    test_sr();
+    test_ton();
+    test_ton2();
+    test_tof();
+    test_muting();
     { cds_sl_time_now_ms_struct q; uint32_t t0 = sl_time_now_ms(); cds_sl_time_now_ms(&q);
       CHECK((uint32_t)(q.cds_sl_time_now_ms - t0) < 1000u, "cds_sl_time_now_ms = %u, sl_time_now_ms = %u", (unsigned)q.cds_sl_time_now_ms, (unsigned)t0); }
     cds_sl_estop_cycle(NULL); /* a NULL parameter struct must not crash */

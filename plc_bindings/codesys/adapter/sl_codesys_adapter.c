@@ -34,6 +34,222 @@ void CDECL CDECL_EXT cds_sl_mon_cycle(cds_sl_mon_cycle_struct *p)
     p->cds_sl_mon_cycle = sl_mon_cycle(p->pFb, p->tNow);
 }
 
+void CDECL CDECL_EXT cds_sl_and_init(cds_sl_and_init_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_and_init = sl_and_init(p->pFb);
+}
+
+void CDECL CDECL_EXT cds_sl_and_cycle(cds_sl_and_cycle_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_and_cycle = sl_and_cycle(p->pFb, p->tNow);
+}
+
+void CDECL CDECL_EXT cds_sl_or_init(cds_sl_or_init_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_or_init = sl_or_init(p->pFb);
+}
+
+void CDECL CDECL_EXT cds_sl_or_cycle(cds_sl_or_cycle_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_or_cycle = sl_or_cycle(p->pFb, p->tNow);
+}
+
+void CDECL CDECL_EXT cds_sl_opmode_init(cds_sl_opmode_init_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_opmode_init = sl_opmode_init(p->pFb);
+}
+
+void CDECL CDECL_EXT cds_sl_opmode_cycle(cds_sl_opmode_cycle_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_opmode_cycle = sl_opmode_cycle(p->pFb, p->tNow);
+}
+
+void CDECL CDECL_EXT cds_sl_twohand_init(cds_sl_twohand_init_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_twohand_init = sl_twohand_init(p->pFb);
+}
+
+void CDECL CDECL_EXT cds_sl_twohand_cycle(cds_sl_twohand_cycle_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_twohand_cycle = sl_twohand_cycle(p->pFb, p->tNow);
+}
+
+void CDECL CDECL_EXT cds_sl_xor_init(cds_sl_xor_init_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_xor_init = sl_xor_init(p->pFb);
+}
+
+void CDECL CDECL_EXT cds_sl_xor_cycle(cds_sl_xor_cycle_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_xor_cycle = sl_xor_cycle(p->pFb, p->tNow);
+}
+
+void CDECL CDECL_EXT cds_sl_decouple_init(cds_sl_decouple_init_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_decouple_init = sl_decouple_init(p->pFb);
+}
+
+void CDECL CDECL_EXT cds_sl_decouple_cycle(cds_sl_decouple_cycle_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_decouple_cycle = sl_decouple_cycle(p->pFb, p->tNow);
+}
+
+void CDECL CDECL_EXT cds_sl_edm_init(cds_sl_edm_init_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_edm_init = sl_edm_init(p->pFb);
+}
+
+void CDECL CDECL_EXT cds_sl_edm_cycle(cds_sl_edm_cycle_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_edm_cycle = sl_edm_cycle(p->pFb, p->tNow);
+}
+
+void CDECL CDECL_EXT cds_sl_rs_init(cds_sl_rs_init_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_rs_init = sl_rs_init(p->pFb);
+}
+
+void CDECL CDECL_EXT cds_sl_rs_cycle(cds_sl_rs_cycle_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_rs_cycle = sl_rs_cycle(p->pFb, p->tNow);
+}
+
+void CDECL CDECL_EXT cds_sl_sr_init(cds_sl_sr_init_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_sr_init = sl_sr_init(p->pFb);
+}
+
+void CDECL CDECL_EXT cds_sl_sr_cycle(cds_sl_sr_cycle_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_sr_cycle = sl_sr_cycle(p->pFb, p->tNow);
+}
+
+void CDECL CDECL_EXT cds_sl_ton_init(cds_sl_ton_init_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_ton_init = sl_ton_init(p->pFb);
+}
+
+void CDECL CDECL_EXT cds_sl_ton_cycle(cds_sl_ton_cycle_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_ton_cycle = sl_ton_cycle(p->pFb, p->tNow);
+}
+
+void CDECL CDECL_EXT cds_sl_ton2_init(cds_sl_ton2_init_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_ton2_init = sl_ton2_init(p->pFb);
+}
+
+void CDECL CDECL_EXT cds_sl_ton2_cycle(cds_sl_ton2_cycle_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_ton2_cycle = sl_ton2_cycle(p->pFb, p->tNow);
+}
+
+void CDECL CDECL_EXT cds_sl_ton2_restore_elapsed(cds_sl_ton2_restore_elapsed_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_ton2_restore_elapsed = sl_ton2_restore_elapsed(p->pFb, p->nElapsedMs);
+}
+
+void CDECL CDECL_EXT cds_sl_tof_init(cds_sl_tof_init_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_tof_init = sl_tof_init(p->pFb);
+}
+
+void CDECL CDECL_EXT cds_sl_tof_cycle(cds_sl_tof_cycle_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_tof_cycle = sl_tof_cycle(p->pFb, p->tNow);
+}
+
+void CDECL CDECL_EXT cds_sl_muting_init(cds_sl_muting_init_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_muting_init = sl_muting_init(p->pFb);
+}
+
+void CDECL CDECL_EXT cds_sl_muting_cycle(cds_sl_muting_cycle_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_muting_cycle = sl_muting_cycle(p->pFb, p->tNow);
+}
+
 void CDECL CDECL_EXT cds_sl_time_now_ms(cds_sl_time_now_ms_struct *p)
 {
     if (p == 0) {

@@ -56,6 +56,209 @@ typedef struct tagcds_sl_mon_cycle_struct {
 } cds_sl_mon_cycle_struct;
 void CDECL CDECL_EXT cds_sl_mon_cycle(cds_sl_mon_cycle_struct *p);
 
+/* FUNCTION cds_sl_and_init : DINT -> sl_and_init() */
+typedef struct tagcds_sl_and_init_struct {
+    struct FB_AND *pFb; /* VAR_INPUT pFb : POINTER TO ST_FB_AND */
+    int32_t cds_sl_and_init; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_and_init_struct;
+void CDECL CDECL_EXT cds_sl_and_init(cds_sl_and_init_struct *p);
+
+/* FUNCTION cds_sl_and_cycle : DINT -> sl_and_cycle() */
+typedef struct tagcds_sl_and_cycle_struct {
+    struct FB_AND *pFb; /* VAR_INPUT pFb : POINTER TO ST_FB_AND */
+    uint32_t tNow; /* VAR_INPUT tNow : UDINT */
+    int32_t cds_sl_and_cycle; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_and_cycle_struct;
+void CDECL CDECL_EXT cds_sl_and_cycle(cds_sl_and_cycle_struct *p);
+
+/* FUNCTION cds_sl_or_init : DINT -> sl_or_init() */
+typedef struct tagcds_sl_or_init_struct {
+    struct FB_OR *pFb; /* VAR_INPUT pFb : POINTER TO ST_FB_OR */
+    int32_t cds_sl_or_init; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_or_init_struct;
+void CDECL CDECL_EXT cds_sl_or_init(cds_sl_or_init_struct *p);
+
+/* FUNCTION cds_sl_or_cycle : DINT -> sl_or_cycle() */
+typedef struct tagcds_sl_or_cycle_struct {
+    struct FB_OR *pFb; /* VAR_INPUT pFb : POINTER TO ST_FB_OR */
+    uint32_t tNow; /* VAR_INPUT tNow : UDINT */
+    int32_t cds_sl_or_cycle; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_or_cycle_struct;
+void CDECL CDECL_EXT cds_sl_or_cycle(cds_sl_or_cycle_struct *p);
+
+/* FUNCTION cds_sl_opmode_init : DINT -> sl_opmode_init() */
+typedef struct tagcds_sl_opmode_init_struct {
+    struct FB_OPMODE *pFb; /* VAR_INPUT pFb : POINTER TO ST_FB_OPMODE */
+    int32_t cds_sl_opmode_init; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_opmode_init_struct;
+void CDECL CDECL_EXT cds_sl_opmode_init(cds_sl_opmode_init_struct *p);
+
+/* FUNCTION cds_sl_opmode_cycle : DINT -> sl_opmode_cycle() */
+typedef struct tagcds_sl_opmode_cycle_struct {
+    struct FB_OPMODE *pFb; /* VAR_INPUT pFb : POINTER TO ST_FB_OPMODE */
+    uint32_t tNow; /* VAR_INPUT tNow : UDINT */
+    int32_t cds_sl_opmode_cycle; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_opmode_cycle_struct;
+void CDECL CDECL_EXT cds_sl_opmode_cycle(cds_sl_opmode_cycle_struct *p);
+
+/* FUNCTION cds_sl_twohand_init : DINT -> sl_twohand_init() */
+typedef struct tagcds_sl_twohand_init_struct {
+    struct FB_TWOHAND *pFb; /* VAR_INPUT pFb : POINTER TO ST_FB_TWOHAND */
+    int32_t cds_sl_twohand_init; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_twohand_init_struct;
+void CDECL CDECL_EXT cds_sl_twohand_init(cds_sl_twohand_init_struct *p);
+
+/* FUNCTION cds_sl_twohand_cycle : DINT -> sl_twohand_cycle() */
+typedef struct tagcds_sl_twohand_cycle_struct {
+    struct FB_TWOHAND *pFb; /* VAR_INPUT pFb : POINTER TO ST_FB_TWOHAND */
+    uint32_t tNow; /* VAR_INPUT tNow : UDINT */
+    int32_t cds_sl_twohand_cycle; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_twohand_cycle_struct;
+void CDECL CDECL_EXT cds_sl_twohand_cycle(cds_sl_twohand_cycle_struct *p);
+
+/* FUNCTION cds_sl_xor_init : DINT -> sl_xor_init() */
+typedef struct tagcds_sl_xor_init_struct {
+    struct FB_XOR *pFb; /* VAR_INPUT pFb : POINTER TO ST_FB_XOR */
+    int32_t cds_sl_xor_init; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_xor_init_struct;
+void CDECL CDECL_EXT cds_sl_xor_init(cds_sl_xor_init_struct *p);
+
+/* FUNCTION cds_sl_xor_cycle : DINT -> sl_xor_cycle() */
+typedef struct tagcds_sl_xor_cycle_struct {
+    struct FB_XOR *pFb; /* VAR_INPUT pFb : POINTER TO ST_FB_XOR */
+    uint32_t tNow; /* VAR_INPUT tNow : UDINT */
+    int32_t cds_sl_xor_cycle; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_xor_cycle_struct;
+void CDECL CDECL_EXT cds_sl_xor_cycle(cds_sl_xor_cycle_struct *p);
+
+/* FUNCTION cds_sl_decouple_init : DINT -> sl_decouple_init() */
+typedef struct tagcds_sl_decouple_init_struct {
+    struct FB_DECOUPLE *pFb; /* VAR_INPUT pFb : POINTER TO ST_FB_DECOUPLE */
+    int32_t cds_sl_decouple_init; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_decouple_init_struct;
+void CDECL CDECL_EXT cds_sl_decouple_init(cds_sl_decouple_init_struct *p);
+
+/* FUNCTION cds_sl_decouple_cycle : DINT -> sl_decouple_cycle() */
+typedef struct tagcds_sl_decouple_cycle_struct {
+    struct FB_DECOUPLE *pFb; /* VAR_INPUT pFb : POINTER TO ST_FB_DECOUPLE */
+    uint32_t tNow; /* VAR_INPUT tNow : UDINT */
+    int32_t cds_sl_decouple_cycle; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_decouple_cycle_struct;
+void CDECL CDECL_EXT cds_sl_decouple_cycle(cds_sl_decouple_cycle_struct *p);
+
+/* FUNCTION cds_sl_edm_init : DINT -> sl_edm_init() */
+typedef struct tagcds_sl_edm_init_struct {
+    struct FB_EDM *pFb; /* VAR_INPUT pFb : POINTER TO ST_FB_EDM */
+    int32_t cds_sl_edm_init; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_edm_init_struct;
+void CDECL CDECL_EXT cds_sl_edm_init(cds_sl_edm_init_struct *p);
+
+/* FUNCTION cds_sl_edm_cycle : DINT -> sl_edm_cycle() */
+typedef struct tagcds_sl_edm_cycle_struct {
+    struct FB_EDM *pFb; /* VAR_INPUT pFb : POINTER TO ST_FB_EDM */
+    uint32_t tNow; /* VAR_INPUT tNow : UDINT */
+    int32_t cds_sl_edm_cycle; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_edm_cycle_struct;
+void CDECL CDECL_EXT cds_sl_edm_cycle(cds_sl_edm_cycle_struct *p);
+
+/* FUNCTION cds_sl_rs_init : DINT -> sl_rs_init() */
+typedef struct tagcds_sl_rs_init_struct {
+    struct FB_RS *pFb; /* VAR_INPUT pFb : POINTER TO ST_FB_RS */
+    int32_t cds_sl_rs_init; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_rs_init_struct;
+void CDECL CDECL_EXT cds_sl_rs_init(cds_sl_rs_init_struct *p);
+
+/* FUNCTION cds_sl_rs_cycle : DINT -> sl_rs_cycle() */
+typedef struct tagcds_sl_rs_cycle_struct {
+    struct FB_RS *pFb; /* VAR_INPUT pFb : POINTER TO ST_FB_RS */
+    uint32_t tNow; /* VAR_INPUT tNow : UDINT */
+    int32_t cds_sl_rs_cycle; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_rs_cycle_struct;
+void CDECL CDECL_EXT cds_sl_rs_cycle(cds_sl_rs_cycle_struct *p);
+
+/* FUNCTION cds_sl_sr_init : DINT -> sl_sr_init() */
+typedef struct tagcds_sl_sr_init_struct {
+    struct FB_SR *pFb; /* VAR_INPUT pFb : POINTER TO ST_FB_SR */
+    int32_t cds_sl_sr_init; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_sr_init_struct;
+void CDECL CDECL_EXT cds_sl_sr_init(cds_sl_sr_init_struct *p);
+
+/* FUNCTION cds_sl_sr_cycle : DINT -> sl_sr_cycle() */
+typedef struct tagcds_sl_sr_cycle_struct {
+    struct FB_SR *pFb; /* VAR_INPUT pFb : POINTER TO ST_FB_SR */
+    uint32_t tNow; /* VAR_INPUT tNow : UDINT */
+    int32_t cds_sl_sr_cycle; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_sr_cycle_struct;
+void CDECL CDECL_EXT cds_sl_sr_cycle(cds_sl_sr_cycle_struct *p);
+
+/* FUNCTION cds_sl_ton_init : DINT -> sl_ton_init() */
+typedef struct tagcds_sl_ton_init_struct {
+    struct FB_TON *pFb; /* VAR_INPUT pFb : POINTER TO ST_FB_TON */
+    int32_t cds_sl_ton_init; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_ton_init_struct;
+void CDECL CDECL_EXT cds_sl_ton_init(cds_sl_ton_init_struct *p);
+
+/* FUNCTION cds_sl_ton_cycle : DINT -> sl_ton_cycle() */
+typedef struct tagcds_sl_ton_cycle_struct {
+    struct FB_TON *pFb; /* VAR_INPUT pFb : POINTER TO ST_FB_TON */
+    uint32_t tNow; /* VAR_INPUT tNow : UDINT */
+    int32_t cds_sl_ton_cycle; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_ton_cycle_struct;
+void CDECL CDECL_EXT cds_sl_ton_cycle(cds_sl_ton_cycle_struct *p);
+
+/* FUNCTION cds_sl_ton2_init : DINT -> sl_ton2_init() */
+typedef struct tagcds_sl_ton2_init_struct {
+    struct FB_TON2 *pFb; /* VAR_INPUT pFb : POINTER TO ST_FB_TON2 */
+    int32_t cds_sl_ton2_init; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_ton2_init_struct;
+void CDECL CDECL_EXT cds_sl_ton2_init(cds_sl_ton2_init_struct *p);
+
+/* FUNCTION cds_sl_ton2_cycle : DINT -> sl_ton2_cycle() */
+typedef struct tagcds_sl_ton2_cycle_struct {
+    struct FB_TON2 *pFb; /* VAR_INPUT pFb : POINTER TO ST_FB_TON2 */
+    uint32_t tNow; /* VAR_INPUT tNow : UDINT */
+    int32_t cds_sl_ton2_cycle; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_ton2_cycle_struct;
+void CDECL CDECL_EXT cds_sl_ton2_cycle(cds_sl_ton2_cycle_struct *p);
+
+/* FUNCTION cds_sl_ton2_restore_elapsed : DINT -> sl_ton2_restore_elapsed() */
+typedef struct tagcds_sl_ton2_restore_elapsed_struct {
+    struct FB_TON2 *pFb; /* VAR_INPUT pFb : POINTER TO ST_FB_TON2 */
+    uint32_t nElapsedMs; /* VAR_INPUT nElapsedMs : UDINT */
+    int32_t cds_sl_ton2_restore_elapsed; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_ton2_restore_elapsed_struct;
+void CDECL CDECL_EXT cds_sl_ton2_restore_elapsed(cds_sl_ton2_restore_elapsed_struct *p);
+
+/* FUNCTION cds_sl_tof_init : DINT -> sl_tof_init() */
+typedef struct tagcds_sl_tof_init_struct {
+    struct FB_TOF *pFb; /* VAR_INPUT pFb : POINTER TO ST_FB_TOF */
+    int32_t cds_sl_tof_init; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_tof_init_struct;
+void CDECL CDECL_EXT cds_sl_tof_init(cds_sl_tof_init_struct *p);
+
+/* FUNCTION cds_sl_tof_cycle : DINT -> sl_tof_cycle() */
+typedef struct tagcds_sl_tof_cycle_struct {
+    struct FB_TOF *pFb; /* VAR_INPUT pFb : POINTER TO ST_FB_TOF */
+    uint32_t tNow; /* VAR_INPUT tNow : UDINT */
+    int32_t cds_sl_tof_cycle; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_tof_cycle_struct;
+void CDECL CDECL_EXT cds_sl_tof_cycle(cds_sl_tof_cycle_struct *p);
+
+/* FUNCTION cds_sl_muting_init : DINT -> sl_muting_init() */
+typedef struct tagcds_sl_muting_init_struct {
+    struct FB_MUTING *pFb; /* VAR_INPUT pFb : POINTER TO ST_FB_MUTING */
+    int32_t cds_sl_muting_init; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_muting_init_struct;
+void CDECL CDECL_EXT cds_sl_muting_init(cds_sl_muting_init_struct *p);
+
+/* FUNCTION cds_sl_muting_cycle : DINT -> sl_muting_cycle() */
+typedef struct tagcds_sl_muting_cycle_struct {
+    struct FB_MUTING *pFb; /* VAR_INPUT pFb : POINTER TO ST_FB_MUTING */
+    uint32_t tNow; /* VAR_INPUT tNow : UDINT */
+    int32_t cds_sl_muting_cycle; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_muting_cycle_struct;
+void CDECL CDECL_EXT cds_sl_muting_cycle(cds_sl_muting_cycle_struct *p);
+
 /* FUNCTION cds_sl_time_now_ms : UDINT -> sl_time_now_ms() */
 typedef struct tagcds_sl_time_now_ms_struct {
     uint32_t cds_sl_time_now_ms; /* VAR_OUTPUT (return value) UDINT */
@@ -69,6 +272,33 @@ void CDECL CDECL_EXT cds_sl_time_now_ms(cds_sl_time_now_ms_struct *p);
     X(cds_sl_estop_cycle) \
     X(cds_sl_mon_init) \
     X(cds_sl_mon_cycle) \
+    X(cds_sl_and_init) \
+    X(cds_sl_and_cycle) \
+    X(cds_sl_or_init) \
+    X(cds_sl_or_cycle) \
+    X(cds_sl_opmode_init) \
+    X(cds_sl_opmode_cycle) \
+    X(cds_sl_twohand_init) \
+    X(cds_sl_twohand_cycle) \
+    X(cds_sl_xor_init) \
+    X(cds_sl_xor_cycle) \
+    X(cds_sl_decouple_init) \
+    X(cds_sl_decouple_cycle) \
+    X(cds_sl_edm_init) \
+    X(cds_sl_edm_cycle) \
+    X(cds_sl_rs_init) \
+    X(cds_sl_rs_cycle) \
+    X(cds_sl_sr_init) \
+    X(cds_sl_sr_cycle) \
+    X(cds_sl_ton_init) \
+    X(cds_sl_ton_cycle) \
+    X(cds_sl_ton2_init) \
+    X(cds_sl_ton2_cycle) \
+    X(cds_sl_ton2_restore_elapsed) \
+    X(cds_sl_tof_init) \
+    X(cds_sl_tof_cycle) \
+    X(cds_sl_muting_init) \
+    X(cds_sl_muting_cycle) \
     X(cds_sl_time_now_ms)
 
 #ifdef __cplusplus

@@ -42,3 +42,246 @@ HRESULT CSafeLogicModule::sl_mon_cycle(PVOID pFb, int32_t *pnResult, uint32_t tN
     *pnResult = ::sl_mon_cycle(static_cast<struct FB_MON *>(pFb), tNow);
     return S_OK;
 }
+
+HRESULT CSafeLogicModule::sl_and_init(PVOID pFb, int32_t *pnResult)
+{
+    if (pFb == NULL || pnResult == NULL) {
+        return E_POINTER;
+    }
+    *pnResult = ::sl_and_init(static_cast<struct FB_AND *>(pFb));
+    return S_OK;
+}
+
+HRESULT CSafeLogicModule::sl_and_cycle(PVOID pFb, int32_t *pnResult, uint32_t tNow)
+{
+    if (pFb == NULL || pnResult == NULL) {
+        return E_POINTER;
+    }
+    *pnResult = ::sl_and_cycle(static_cast<struct FB_AND *>(pFb), tNow);
+    return S_OK;
+}
+
+HRESULT CSafeLogicModule::sl_or_init(PVOID pFb, int32_t *pnResult)
+{
+    if (pFb == NULL || pnResult == NULL) {
+        return E_POINTER;
+    }
+    *pnResult = ::sl_or_init(static_cast<struct FB_OR *>(pFb));
+    return S_OK;
+}
+
+HRESULT CSafeLogicModule::sl_or_cycle(PVOID pFb, int32_t *pnResult, uint32_t tNow)
+{
+    if (pFb == NULL || pnResult == NULL) {
+        return E_POINTER;
+    }
+    *pnResult = ::sl_or_cycle(static_cast<struct FB_OR *>(pFb), tNow);
+    return S_OK;
+}
+
+HRESULT CSafeLogicModule::sl_opmode_init(PVOID pFb, int32_t *pnResult)
+{
+    if (pFb == NULL || pnResult == NULL) {
+        return E_POINTER;
+    }
+    *pnResult = ::sl_opmode_init(static_cast<struct FB_OPMODE *>(pFb));
+    return S_OK;
+}
+
+HRESULT CSafeLogicModule::sl_opmode_cycle(PVOID pFb, int32_t *pnResult, uint32_t tNow)
+{
+    if (pFb == NULL || pnResult == NULL) {
+        return E_POINTER;
+    }
+    *pnResult = ::sl_opmode_cycle(static_cast<struct FB_OPMODE *>(pFb), tNow);
+    return S_OK;
+}
+
+HRESULT CSafeLogicModule::sl_twohand_init(PVOID pFb, int32_t *pnResult)
+{
+    if (pFb == NULL || pnResult == NULL) {
+        return E_POINTER;
+    }
+    *pnResult = ::sl_twohand_init(static_cast<struct FB_TWOHAND *>(pFb));
+    return S_OK;
+}
+
+HRESULT CSafeLogicModule::sl_twohand_cycle(PVOID pFb, int32_t *pnResult, uint32_t tNow)
+{
+    if (pFb == NULL || pnResult == NULL) {
+        return E_POINTER;
+    }
+    *pnResult = ::sl_twohand_cycle(static_cast<struct FB_TWOHAND *>(pFb), tNow);
+    return S_OK;
+}
+
+HRESULT CSafeLogicModule::sl_xor_init(PVOID pFb, int32_t *pnResult)
+{
+    if (pFb == NULL || pnResult == NULL) {
+        return E_POINTER;
+    }
+    *pnResult = ::sl_xor_init(static_cast<struct FB_XOR *>(pFb));
+    return S_OK;
+}
+
+HRESULT CSafeLogicModule::sl_xor_cycle(PVOID pFb, int32_t *pnResult, uint32_t tNow)
+{
+    if (pFb == NULL || pnResult == NULL) {
+        return E_POINTER;
+    }
+    *pnResult = ::sl_xor_cycle(static_cast<struct FB_XOR *>(pFb), tNow);
+    return S_OK;
+}
+
+HRESULT CSafeLogicModule::sl_decouple_init(PVOID pFb, int32_t *pnResult)
+{
+    if (pFb == NULL || pnResult == NULL) {
+        return E_POINTER;
+    }
+    *pnResult = ::sl_decouple_init(static_cast<struct FB_DECOUPLE *>(pFb));
+    return S_OK;
+}
+
+HRESULT CSafeLogicModule::sl_decouple_cycle(PVOID pFb, int32_t *pnResult, uint32_t tNow)
+{
+    if (pFb == NULL || pnResult == NULL) {
+        return E_POINTER;
+    }
+    *pnResult = ::sl_decouple_cycle(static_cast<struct FB_DECOUPLE *>(pFb), tNow);
+    return S_OK;
+}
+
+HRESULT CSafeLogicModule::sl_edm_init(PVOID pFb, int32_t *pnResult)
+{
+    if (pFb == NULL || pnResult == NULL) {
+        return E_POINTER;
+    }
+    *pnResult = ::sl_edm_init(static_cast<struct FB_EDM *>(pFb));
+    return S_OK;
+}
+
+HRESULT CSafeLogicModule::sl_edm_cycle(PVOID pFb, int32_t *pnResult, uint32_t tNow)
+{
+    if (pFb == NULL || pnResult == NULL) {
+        return E_POINTER;
+    }
+    *pnResult = ::sl_edm_cycle(static_cast<struct FB_EDM *>(pFb), tNow);
+    return S_OK;
+}
+
+HRESULT CSafeLogicModule::sl_rs_init(PVOID pFb, int32_t *pnResult)
+{
+    if (pFb == NULL || pnResult == NULL) {
+        return E_POINTER;
+    }
+    *pnResult = ::sl_rs_init(static_cast<struct FB_RS *>(pFb));
+    return S_OK;
+}
+
+HRESULT CSafeLogicModule::sl_rs_cycle(PVOID pFb, int32_t *pnResult, uint32_t tNow)
+{
+    if (pFb == NULL || pnResult == NULL) {
+        return E_POINTER;
+    }
+    *pnResult = ::sl_rs_cycle(static_cast<struct FB_RS *>(pFb), tNow);
+    return S_OK;
+}
+
+HRESULT CSafeLogicModule::sl_sr_init(PVOID pFb, int32_t *pnResult)
+{
+    if (pFb == NULL || pnResult == NULL) {
+        return E_POINTER;
+    }
+    *pnResult = ::sl_sr_init(static_cast<struct FB_SR *>(pFb));
+    return S_OK;
+}
+
+HRESULT CSafeLogicModule::sl_sr_cycle(PVOID pFb, int32_t *pnResult, uint32_t tNow)
+{
+    if (pFb == NULL || pnResult == NULL) {
+        return E_POINTER;
+    }
+    *pnResult = ::sl_sr_cycle(static_cast<struct FB_SR *>(pFb), tNow);
+    return S_OK;
+}
+
+HRESULT CSafeLogicModule::sl_ton_init(PVOID pFb, int32_t *pnResult)
+{
+    if (pFb == NULL || pnResult == NULL) {
+        return E_POINTER;
+    }
+    *pnResult = ::sl_ton_init(static_cast<struct FB_TON *>(pFb));
+    return S_OK;
+}
+
+HRESULT CSafeLogicModule::sl_ton_cycle(PVOID pFb, int32_t *pnResult, uint32_t tNow)
+{
+    if (pFb == NULL || pnResult == NULL) {
+        return E_POINTER;
+    }
+    *pnResult = ::sl_ton_cycle(static_cast<struct FB_TON *>(pFb), tNow);
+    return S_OK;
+}
+
+HRESULT CSafeLogicModule::sl_ton2_init(PVOID pFb, int32_t *pnResult)
+{
+    if (pFb == NULL || pnResult == NULL) {
+        return E_POINTER;
+    }
+    *pnResult = ::sl_ton2_init(static_cast<struct FB_TON2 *>(pFb));
+    return S_OK;
+}
+
+HRESULT CSafeLogicModule::sl_ton2_cycle(PVOID pFb, int32_t *pnResult, uint32_t tNow)
+{
+    if (pFb == NULL || pnResult == NULL) {
+        return E_POINTER;
+    }
+    *pnResult = ::sl_ton2_cycle(static_cast<struct FB_TON2 *>(pFb), tNow);
+    return S_OK;
+}
+
+HRESULT CSafeLogicModule::sl_ton2_restore_elapsed(PVOID pFb, int32_t *pnResult, uint32_t nElapsedMs)
+{
+    if (pFb == NULL || pnResult == NULL) {
+        return E_POINTER;
+    }
+    *pnResult = ::sl_ton2_restore_elapsed(static_cast<struct FB_TON2 *>(pFb), nElapsedMs);
+    return S_OK;
+}
+
+HRESULT CSafeLogicModule::sl_tof_init(PVOID pFb, int32_t *pnResult)
+{
+    if (pFb == NULL || pnResult == NULL) {
+        return E_POINTER;
+    }
+    *pnResult = ::sl_tof_init(static_cast<struct FB_TOF *>(pFb));
+    return S_OK;
+}
+
+HRESULT CSafeLogicModule::sl_tof_cycle(PVOID pFb, int32_t *pnResult, uint32_t tNow)
+{
+    if (pFb == NULL || pnResult == NULL) {
+        return E_POINTER;
+    }
+    *pnResult = ::sl_tof_cycle(static_cast<struct FB_TOF *>(pFb), tNow);
+    return S_OK;
+}
+
+HRESULT CSafeLogicModule::sl_muting_init(PVOID pFb, int32_t *pnResult)
+{
+    if (pFb == NULL || pnResult == NULL) {
+        return E_POINTER;
+    }
+    *pnResult = ::sl_muting_init(static_cast<struct FB_MUTING *>(pFb));
+    return S_OK;
+}
+
+HRESULT CSafeLogicModule::sl_muting_cycle(PVOID pFb, int32_t *pnResult, uint32_t tNow)
+{
+    if (pFb == NULL || pnResult == NULL) {
+        return E_POINTER;
+    }
+    *pnResult = ::sl_muting_cycle(static_cast<struct FB_MUTING *>(pFb), tNow);
+    return S_OK;
+}
