@@ -27,12 +27,34 @@ pub trait Member {
     fn output(&self, offset: u16) -> Option<u8>;
 }
 
-/// Implements [`Member`] for a block struct from the lists of its linkable BOOL inputs
-/// and outputs (bRun and bErrAck are driven by the group and never linkable).
+/// Implements the envelope's `Instance` and the group's [`Member`] for a block struct, from
+/// the lists of its linkable BOOL inputs and outputs (bRun and bErrAck are driven by the
+/// group and never linkable).
 #[doc(hidden)]
 #[macro_export]
 macro_rules! impl_member {
     ($ty:ty, [$($i:ident),*], [$($o:ident),*]) => {
+        impl $crate::prim::envelope::Instance for $ty {
+            #[inline(always)]
+            fn header(&self) -> &$crate::prim::header::SL_PRIVATE_HEADER {
+                &self.stPrivate.stHeader
+            }
+            #[inline(always)]
+            fn header_mut(&mut self) -> &mut $crate::prim::header::SL_PRIVATE_HEADER {
+                &mut self.stPrivate.stHeader
+            }
+            fn clear_private(&mut self) {
+                self.stPrivate = Default::default();
+            }
+            #[inline(always)]
+            fn run_raw(&self) -> u8 {
+                self.bRun
+            }
+            #[inline(always)]
+            fn errack_raw(&self) -> u8 {
+                self.bErrAck
+            }
+        }
         impl $crate::group::Member for $ty {
             fn drive(&mut self, run: u8, ack: u8) {
                 self.bRun = run;
@@ -382,26 +404,6 @@ fn set_outputs(g: &mut SL_GROUP, c: &Core, member_error: bool, all_run: bool) {
     g.bFbRun = u8::from(c.state == SL_STATE_RUN && all_run);
 }
 
-const fn rank(s: i32) -> u8 {
-    match s {
-        SL_E_CORRUPT | SL_E_INTERNAL => 6,
-        SL_E_CLOCK => 5,
-        SL_E_PARAM_CHANGED => 4,
-        SL_E_RESTORE => 4,
-        SL_E_CONFIG => 3,
-        SL_E_INVALID_BOOL => 2,
-        _ => 0,
-    }
-}
-
-fn worst(a: i32, b: i32) -> i32 {
-    if rank(b) > rank(a) {
-        b
-    } else {
-        a
-    }
-}
-
 /// Enters ERROR with a cause; the first cause is the diag value.
 fn enter_error(c: &mut Core, flag: u8, diag: u16) {
     if c.state != SL_STATE_ERROR {
@@ -498,11 +500,11 @@ pub fn cycle<M: Members + ?Sized>(g: &mut SL_GROUP, m: &mut M, links: &[SL_LINK]
             (s, b.state())
         });
         let Some((s, state)) = outcome else {
-            status = worst(status, SL_E_CORRUPT);
+            status = worst_status(status, SL_E_CORRUPT);
             member_error = true;
             continue;
         };
-        status = worst(status, s);
+        status = worst_status(status, s);
         all_run &= state == SL_STATE_RUN;
         if state == SL_STATE_ERROR {
             member_error = true;

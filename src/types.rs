@@ -246,6 +246,27 @@ pub const SL_TIME_PARAM_MAX: u32 = 65_535;
 /// Largest tDiscTimePairs of FB_TWOHAND in ms (manual §4.7.1: "up to 2500 ms").
 pub const SL_TWOHAND_PAIRS_TIME_MAX: u32 = 2_500;
 
+/// The more serious of two status codes (several things can go wrong in one call; the
+/// call reports the worst): corrupt/internal > clock > parameter changed / restore refused >
+/// config > invalid BOOL > OK.
+pub const fn worst_status(a: i32, b: i32) -> i32 {
+    const fn rank(s: i32) -> u8 {
+        match s {
+            SL_E_CORRUPT | SL_E_INTERNAL => 6,
+            SL_E_CLOCK => 5,
+            SL_E_PARAM_CHANGED | SL_E_RESTORE => 4,
+            SL_E_CONFIG => 3,
+            SL_E_INVALID_BOOL => 2,
+            _ => 0,
+        }
+    }
+    if rank(b) > rank(a) {
+        b
+    } else {
+        a
+    }
+}
+
 /// Text for a status code without the C terminator.
 pub fn status_str(status: i32) -> &'static str {
     status_text(status).trim_end_matches('\0')

@@ -120,9 +120,6 @@ impl LogicBlock for FB_AND {
             negated: self.wInputNegated,
         }
     }
-    fn control(&self) -> (u8, u8) {
-        (self.bRun, self.bErrAck)
-    }
     /// RUN when every active input is logically TRUE (ACTIVE_ANDIN), else SAFE.
     fn evaluate(&self, active: u8, negated: u8) -> (LogicIn, bool) {
         let p = bools::pack(self.inputs());

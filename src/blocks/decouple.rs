@@ -136,9 +136,6 @@ impl LogicBlock for FB_DECOUPLE {
             negated: 0,
         }
     }
-    fn control(&self) -> (u8, u8) {
-        (self.bRun, self.bErrAck)
-    }
     /// Always RUN; each used channel passes its input through, an invalid byte as FALSE
     /// (ABI §2), an unused channel stays FALSE (semantics D2, D3).
     fn evaluate(&self, active: u8, _negated: u8) -> (LogicIn, bool) {

@@ -205,10 +205,6 @@ impl GuardBlock for FB_ESTOP {
         }
     }
 
-    fn control(&self) -> (u8, u8) {
-        (self.bRun, self.bErrAck)
-    }
-
     /// Any active input requesting the safe state (logical FALSE).
     fn request(logical: u8, active: u8) -> bool {
         logical != active

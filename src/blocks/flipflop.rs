@@ -58,7 +58,6 @@ pub trait FlipFlopBlock {
     fn params(&self) -> FlipFlopParams;
     /// Raw input bytes: Reset, Set.
     fn raw(&self) -> [u8; 2];
-    fn control(&self) -> (u8, u8);
     fn set_outputs(&mut self, out: bool, state: u8, diag: u16);
 }
 
@@ -90,21 +89,6 @@ macro_rules! flipflop_block {
             type Params = FlipFlopParams;
             type In = FlipFlopIn;
 
-            fn header(&self) -> &SL_PRIVATE_HEADER {
-                &self.private().stHeader
-            }
-            fn header_mut(&mut self) -> &mut SL_PRIVATE_HEADER {
-                &mut self.private_mut().stHeader
-            }
-            fn clear_private(&mut self) {
-                *self.private_mut() = SL_FLIPFLOP_PRIVATE::default();
-            }
-            fn run_raw(&self) -> u8 {
-                self.control().0
-            }
-            fn errack_raw(&self) -> u8 {
-                self.control().1
-            }
             fn live_params(&self) -> FlipFlopParams {
                 self.params()
             }

@@ -93,7 +93,6 @@ pub trait GuardBlock {
     fn private_mut(&mut self) -> &mut SL_GUARD_PRIVATE;
     fn params(&self) -> GuardParams;
     fn raw(&self) -> GuardRaw;
-    fn control(&self) -> (u8, u8);
     /// Safe-state request from the logical values of the active inputs.
     fn request(logical: u8, active: u8) -> bool;
     fn set_outputs(&mut self, error: bool, out: bool, del_out: bool, state: u8, diag: u16);
@@ -142,35 +141,9 @@ macro_rules! guard_block {
             type Params = GuardParams;
             type In = GuardIn;
 
-            #[inline(always)]
-
-            fn header(&self) -> &SL_PRIVATE_HEADER {
-                &self.private().stHeader
-            }
-            #[inline(always)]
-            fn header_mut(&mut self) -> &mut SL_PRIVATE_HEADER {
-                &mut self.private_mut().stHeader
-            }
-            #[inline(always)]
-            fn clear_private(&mut self) {
-                *self.private_mut() = SL_GUARD_PRIVATE::default();
-            }
-            #[inline(always)]
-            fn run_raw(&self) -> u8 {
-                self.control().0
-            }
-            #[inline(always)]
-            fn errack_raw(&self) -> u8 {
-                self.control().1
-            }
-
-            #[inline(always)]
-
             fn live_params(&self) -> GuardParams {
                 self.params()
             }
-
-            #[inline(always)]
 
             fn latched_params(&self) -> GuardParams {
                 let p = self.private();
@@ -184,8 +157,6 @@ macro_rules! guard_block {
                     options: u32::from(p.stHeader.wOptions),
                 }
             }
-
-            #[inline(always)]
 
             fn params_valid(p: &GuardParams) -> bool {
                 let times_ok = p
@@ -211,8 +182,6 @@ macro_rules! guard_block {
                     && p.options & !Self::OPTIONS == 0
             }
 
-            #[inline(always)]
-
             fn store_params(&mut self, p: &GuardParams) {
                 let q = self.private_mut();
                 // Narrowing is exact for valid parameters (all times <= SL_TIME_PARAM_MAX); an
@@ -233,15 +202,11 @@ macro_rules! guard_block {
                 q.stHeader.wOptions = p.options as u16;
             }
 
-            #[inline(always)]
-
             fn latched_crc(&self) -> u16 {
                 let p = self.private();
                 let h = &p.stHeader;
                 param_crc(Self::MAGIC, h.nActive, h.nNegated, h.wOptions, &p.awTime)
             }
-
-            #[inline(always)]
 
             fn decode(&mut self) -> (GuardIn, bool) {
                 let raw = self.raw();
@@ -272,8 +237,6 @@ macro_rules! guard_block {
                 (inp, invalid)
             }
 
-            #[inline(always)]
-
             fn start(&mut self, _inp: &GuardIn, now: u32) {
                 let h = &mut self.private_mut().stHeader;
                 h.wAux = 0;
@@ -285,8 +248,6 @@ macro_rules! guard_block {
                     SL_STATE_SAFE
                 };
             }
-
-            #[inline(always)]
 
             fn step(&mut self, inp: &GuardIn, now: u32) -> i32 {
                 let p = self.private_mut();
@@ -425,8 +386,6 @@ macro_rules! guard_block {
                 status
             }
 
-            #[inline(always)]
-
             fn stop(&mut self) {
                 let h = &mut self.private_mut().stHeader;
                 // A pending discrepancy error stays an error; every other running state stops.
@@ -436,8 +395,6 @@ macro_rules! guard_block {
                     h.nState = SL_STATE_STOP;
                 }
             }
-
-            #[inline(always)]
 
             fn error_remains(&mut self, inp: &GuardIn) -> bool {
                 let h = &mut self.private_mut().stHeader;
@@ -454,8 +411,6 @@ macro_rules! guard_block {
                 let edm_remains = h.wDiag & inp.edm.not_released() != 0;
                 disc_remains || edm_remains
             }
-
-            #[inline(always)]
 
             fn write_outputs(&mut self) {
                 let h = self.private().stHeader;

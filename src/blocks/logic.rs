@@ -52,7 +52,6 @@ pub trait LogicBlock {
     fn private(&self) -> &SL_LOGIC_PRIVATE;
     fn private_mut(&mut self) -> &mut SL_LOGIC_PRIVATE;
     fn params(&self) -> LogicParams;
-    fn control(&self) -> (u8, u8);
     /// Evaluates the input bytes with the latched masks; the flag tells whether an active
     /// input byte was an invalid BOOL.
     fn evaluate(&self, active: u8, negated: u8) -> (LogicIn, bool);
@@ -68,27 +67,6 @@ macro_rules! logic_block {
             type Params = LogicParams;
             type In = LogicIn;
 
-            #[inline(always)]
-
-            fn header(&self) -> &SL_PRIVATE_HEADER {
-                &self.private().stHeader
-            }
-            #[inline(always)]
-            fn header_mut(&mut self) -> &mut SL_PRIVATE_HEADER {
-                &mut self.private_mut().stHeader
-            }
-            #[inline(always)]
-            fn clear_private(&mut self) {
-                *self.private_mut() = SL_LOGIC_PRIVATE::default();
-            }
-            #[inline(always)]
-            fn run_raw(&self) -> u8 {
-                self.control().0
-            }
-            #[inline(always)]
-            fn errack_raw(&self) -> u8 {
-                self.control().1
-            }
             #[inline(always)]
             fn live_params(&self) -> LogicParams {
                 self.params()

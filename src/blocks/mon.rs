@@ -215,10 +215,6 @@ impl GuardBlock for FB_MON {
         }
     }
 
-    fn control(&self) -> (u8, u8) {
-        (self.bRun, self.bErrAck)
-    }
-
     /// An active MonIn input requests the safe state and the Secure inputs do not bypass
     /// the MonIn inputs: a bypass needs at least one active Secure input and every active
     /// Secure input logically TRUE (ABI §8).

@@ -433,22 +433,6 @@ impl Block for FB_MUTING {
     type Params = MutingParams;
     type In = MutingIn;
 
-    fn header(&self) -> &SL_PRIVATE_HEADER {
-        &self.stPrivate.stHeader
-    }
-    fn header_mut(&mut self) -> &mut SL_PRIVATE_HEADER {
-        &mut self.stPrivate.stHeader
-    }
-    fn clear_private(&mut self) {
-        self.stPrivate = SL_MUTING_PRIVATE::default();
-    }
-    fn run_raw(&self) -> u8 {
-        self.bRun
-    }
-    fn errack_raw(&self) -> u8 {
-        self.bErrAck
-    }
-
     fn live_params(&self) -> MutingParams {
         MutingParams {
             disc: [self.tDiscTime12, self.tDiscTimeOSSD, self.tDiscTime34],

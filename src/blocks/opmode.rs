@@ -211,22 +211,6 @@ impl Block for FB_OPMODE {
     type Params = OpmodeParams;
     type In = OpmodeIn;
 
-    fn header(&self) -> &SL_PRIVATE_HEADER {
-        &self.stPrivate.stHeader
-    }
-    fn header_mut(&mut self) -> &mut SL_PRIVATE_HEADER {
-        &mut self.stPrivate.stHeader
-    }
-    fn clear_private(&mut self) {
-        self.stPrivate = SL_OPMODE_PRIVATE::default();
-    }
-    fn run_raw(&self) -> u8 {
-        self.bRun
-    }
-    fn errack_raw(&self) -> u8 {
-        self.bErrAck
-    }
-
     fn live_params(&self) -> OpmodeParams {
         OpmodeParams {
             disc: self.tDiscTime,

@@ -120,9 +120,6 @@ impl LogicBlock for FB_OR {
             negated: self.wInputNegated,
         }
     }
-    fn control(&self) -> (u8, u8) {
-        (self.bRun, self.bErrAck)
-    }
     /// RUN when at least one active input is logically TRUE (ACTIVE_ORIN), else SAFE.
     fn evaluate(&self, active: u8, negated: u8) -> (LogicIn, bool) {
         let p = bools::pack(self.inputs());

@@ -95,9 +95,6 @@ impl FlipFlopBlock for FB_RS {
     fn raw(&self) -> [u8; 2] {
         [self.bReset, self.bSet]
     }
-    fn control(&self) -> (u8, u8) {
-        (self.bRun, self.bErrAck)
-    }
     fn set_outputs(&mut self, out: bool, state: u8, diag: u16) {
         self.bRsOut = u8::from(out);
         self.nState = state;

@@ -40,7 +40,7 @@ use crate::types::*;
 /// decides when the output switches ON, so a corrupted start value must not go unnoticed
 /// (docs/semantics.md T9). The TON2 stored elapsed time has one as well.
 #[repr(C)]
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
 #[allow(non_snake_case, non_camel_case_types)]
 pub struct SL_TIMER_PRIVATE {
     /// Common head; `tPhase` is the timer start.
@@ -60,16 +60,22 @@ pub struct SL_TIMER_PRIVATE {
 
 const _: () = assert!(core::mem::size_of::<SL_TIMER_PRIVATE>() == 48);
 
-impl SL_TIMER_PRIVATE {
-    /// A fresh private area: everything zero except the complement copies.
-    fn fresh() -> Self {
+/// A fresh private area: everything zero except the complement copies.
+impl Default for SL_TIMER_PRIVATE {
+    fn default() -> Self {
         Self {
+            stHeader: SL_PRIVATE_HEADER::default(),
+            dwDelay: 0,
+            wTimeBase: 0,
+            aReserved: [0; 2],
             tPhaseCheck: !0,
+            tElapsed: 0,
             tElapsedCheck: !0,
-            ..Self::default()
         }
     }
+}
 
+impl SL_TIMER_PRIVATE {
     /// Starts the timer as if it had started at `start`.
     #[inline]
     fn set_start(&mut self, start: u32) {
@@ -170,7 +176,6 @@ pub trait TimerBlock {
     fn private(&self) -> &SL_TIMER_PRIVATE;
     fn private_mut(&mut self) -> &mut SL_TIMER_PRIVATE;
     fn params(&self) -> TimerParams;
-    fn control(&self) -> (u8, u8);
     /// The raw timer input byte and the raw Enable byte (0 for blocks without Enable).
     fn raw(&self) -> (u8, u8);
     /// Writes the output field and info data.
@@ -226,22 +231,6 @@ macro_rules! timer_block {
             const MAGIC: u16 = <$t as TimerBlock>::TAG;
             type Params = TimerParams;
             type In = TimerIn;
-
-            fn header(&self) -> &SL_PRIVATE_HEADER {
-                &self.private().stHeader
-            }
-            fn header_mut(&mut self) -> &mut SL_PRIVATE_HEADER {
-                &mut self.private_mut().stHeader
-            }
-            fn clear_private(&mut self) {
-                *self.private_mut() = SL_TIMER_PRIVATE::fresh();
-            }
-            fn run_raw(&self) -> u8 {
-                self.control().0
-            }
-            fn errack_raw(&self) -> u8 {
-                self.control().1
-            }
 
             fn live_params(&self) -> TimerParams {
                 self.params()

@@ -109,9 +109,6 @@ impl TimerBlock for FB_TOF {
             options: 0,
         }
     }
-    fn control(&self) -> (u8, u8) {
-        (self.bRun, self.bErrAck)
-    }
     fn raw(&self) -> (u8, u8) {
         (self.bTofIn1, 0)
     }

@@ -115,9 +115,6 @@ impl TimerBlock for FB_TON {
             options: 0,
         }
     }
-    fn control(&self) -> (u8, u8) {
-        (self.bRun, self.bErrAck)
-    }
     fn raw(&self) -> (u8, u8) {
         (self.bTonIn1, 0)
     }

@@ -12,7 +12,7 @@
 
 use super::timer::{TimerBlock, TimerParams, SL_TIMER_PRIVATE};
 use super::{BlockInfo, ERROR, RESET, RUN, SAFE, STOP};
-use crate::prim::envelope::{self, Block};
+use crate::prim::envelope::{self, Block, Instance};
 use crate::prim::header::F_CFG_INVALID;
 use crate::types::*;
 use core::mem::{offset_of, size_of};
@@ -133,9 +133,6 @@ impl TimerBlock for FB_TON2 {
             negated: self.wInputNegated,
             options: self.dwOptions,
         }
-    }
-    fn control(&self) -> (u8, u8) {
-        (self.bRun, self.bErrAck)
     }
     fn raw(&self) -> (u8, u8) {
         (self.bTonIn1, self.bEnable)

@@ -252,22 +252,6 @@ impl Block for FB_TWOHAND {
     type Params = TwohandParams;
     type In = TwohandIn;
 
-    fn header(&self) -> &SL_PRIVATE_HEADER {
-        &self.stPrivate.stHeader
-    }
-    fn header_mut(&mut self) -> &mut SL_PRIVATE_HEADER {
-        &mut self.stPrivate.stHeader
-    }
-    fn clear_private(&mut self) {
-        self.stPrivate = SL_TWOHAND_PRIVATE::default();
-    }
-    fn run_raw(&self) -> u8 {
-        self.bRun
-    }
-    fn errack_raw(&self) -> u8 {
-        self.bErrAck
-    }
-
     fn live_params(&self) -> TwohandParams {
         TwohandParams {
             disc: [self.tDiscTime12, self.tDiscTime34],

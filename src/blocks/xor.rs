@@ -170,9 +170,6 @@ impl LogicBlock for FB_XOR {
             negated: 0,
         }
     }
-    fn control(&self) -> (u8, u8) {
-        (self.bRun, self.bErrAck)
-    }
     /// Always RUN (the manual has no SAFE state for XOR). An invalid byte in an active
     /// function makes that output FALSE, its safe state, whatever the other input: reading
     /// the byte as FALSE would let the other input switch the output on (semantics X3).

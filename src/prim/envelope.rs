@@ -7,21 +7,25 @@ use super::header::{F_CFG_INVALID, F_ERRACK_PREV, F_TIME_VALID, SL_PRIVATE_HEADE
 use super::time;
 use crate::types::*;
 
-/// What a block supplies to the envelope.
-pub trait Block {
-    /// Type tag stored in the private header.
-    const MAGIC: u16;
-    /// The block's parameters as the user wrote them (wide types).
-    type Params: PartialEq + Copy;
-    /// Inputs of one cycle after BOOL decoding.
-    type In;
-
+/// What every block struct has under the same names (`stPrivate.stHeader`, `bRun`,
+/// `bErrAck`); implemented for each block by `impl_member!`.
+pub trait Instance {
     fn header(&self) -> &SL_PRIVATE_HEADER;
     fn header_mut(&mut self) -> &mut SL_PRIVATE_HEADER;
     /// Zeroes the whole private area.
     fn clear_private(&mut self);
     fn run_raw(&self) -> u8;
     fn errack_raw(&self) -> u8;
+}
+
+/// What a block supplies to the envelope.
+pub trait Block: Instance {
+    /// Type tag stored in the private header.
+    const MAGIC: u16;
+    /// The block's parameters as the user wrote them (wide types).
+    type Params: PartialEq + Copy;
+    /// Inputs of one cycle after BOOL decoding.
+    type In;
 
     /// The live parameter fields.
     fn live_params(&self) -> Self::Params;
@@ -56,28 +60,6 @@ pub trait Block {
     fn error_remains(&mut self, inp: &Self::In) -> bool;
     /// Writes the VAR_OUTPUT and info fields from the private state.
     fn write_outputs(&mut self);
-}
-
-/// Higher rank wins when several things go wrong in one call.
-const fn rank(s: i32) -> u8 {
-    match s {
-        SL_E_CORRUPT => 6,
-        SL_E_CLOCK => 5,
-        SL_E_PARAM_CHANGED => 4,
-        SL_E_RESTORE => 4,
-        SL_E_CONFIG => 3,
-        SL_E_INVALID_BOOL => 2,
-        _ => 0,
-    }
-}
-
-#[inline]
-fn worst(a: i32, b: i32) -> i32 {
-    if rank(b) > rank(a) {
-        b
-    } else {
-        a
-    }
 }
 
 /// Latches the live parameters into the private copy; returns whether they are valid.
@@ -137,7 +119,7 @@ pub fn cycle<B: Block>(fb: &mut B, now: u32) -> i32 {
     let h = fb.header_mut();
     if h.flag(F_TIME_VALID) && time::went_backwards(now, h.tLast) {
         h.enter_error(SL_DIAG_CLOCK);
-        status = worst(status, SL_E_CLOCK);
+        status = worst_status(status, SL_E_CLOCK);
         fresh_error = true;
     }
     h.tLast = now;
@@ -160,10 +142,10 @@ pub fn cycle<B: Block>(fb: &mut B, now: u32) -> i32 {
         fresh_error = true;
         if fb.latched_crc() != fb.header().wParamCrc {
             power_up(fb, SL_STATE_ERROR, SL_DIAG_CORRUPT);
-            status = worst(status, SL_E_CORRUPT);
+            status = worst_status(status, SL_E_CORRUPT);
         } else {
             fb.header_mut().enter_error(SL_DIAG_PARAM_CHANGED);
-            status = worst(status, SL_E_PARAM_CHANGED);
+            status = worst_status(status, SL_E_PARAM_CHANGED);
         }
     }
 
@@ -192,7 +174,7 @@ pub fn cycle<B: Block>(fb: &mut B, now: u32) -> i32 {
         }
         _ => {
             if run {
-                status = worst(status, fb.step(&inp, now));
+                status = worst_status(status, fb.step(&inp, now));
             } else {
                 fb.stop();
             }
@@ -201,10 +183,10 @@ pub fn cycle<B: Block>(fb: &mut B, now: u32) -> i32 {
 
     let h = fb.header();
     if h.flag(F_CFG_INVALID) && h.nState == SL_STATE_STOP {
-        status = worst(status, SL_E_CONFIG);
+        status = worst_status(status, SL_E_CONFIG);
     }
     if invalid {
-        status = worst(status, SL_E_INVALID_BOOL);
+        status = worst_status(status, SL_E_INVALID_BOOL);
     }
     fb.write_outputs();
     fb.header_mut().seal();
