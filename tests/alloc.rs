@@ -20,20 +20,18 @@ use std::alloc::{GlobalAlloc, Layout, System};
 use std::cell::Cell;
 use std::hint::black_box;
 use std::ptr;
-use std::sync::atomic::{AtomicUsize, Ordering};
 
 // ---------------------------------------------------------------------------------------
 // Counting allocator
 // ---------------------------------------------------------------------------------------
 
-/// Heap operations (alloc, alloc_zeroed, realloc, dealloc) made by threads that have
-/// switched counting on.
-static HEAP_OPS: AtomicUsize = AtomicUsize::new(0);
-
 thread_local! {
-    // A const-initialised Cell<bool> needs no lazy initialisation and no destructor, so
-    // reading it inside the allocator cannot itself allocate or recurse.
+    // Const-initialised Cells need no lazy initialisation and no destructor, so touching
+    // them inside the allocator cannot itself allocate or recurse. Both are per thread: the
+    // test harness runs tests in parallel, and another test's allocations must not count.
     static COUNTING: Cell<bool> = const { Cell::new(false) };
+    /// Heap operations (alloc, alloc_zeroed, realloc, dealloc) of this thread while counting.
+    static HEAP_OPS: Cell<usize> = const { Cell::new(0) };
 }
 
 struct CountingAlloc;
@@ -42,7 +40,7 @@ impl CountingAlloc {
     #[inline]
     fn note(&self) {
         if COUNTING.try_with(Cell::get).unwrap_or(false) {
-            HEAP_OPS.fetch_add(1, Ordering::SeqCst);
+            let _ = HEAP_OPS.try_with(|n| n.set(n.get() + 1));
         }
     }
 }
@@ -88,9 +86,9 @@ impl Drop for Counting {
 /// Runs `f` and returns its result with the number of heap operations it made.
 #[inline(always)]
 fn heap_ops<R>(f: impl FnOnce() -> R) -> (R, usize) {
-    let before = HEAP_OPS.load(Ordering::SeqCst);
+    let before = HEAP_OPS.with(Cell::get);
     let r = f();
-    let after = HEAP_OPS.load(Ordering::SeqCst);
+    let after = HEAP_OPS.with(Cell::get);
     (r, after - before)
 }
 
