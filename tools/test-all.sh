@@ -15,6 +15,7 @@ command -v cmake >/dev/null 2>&1 && command -v ctest >/dev/null 2>&1 || missing=
 command -v cc >/dev/null 2>&1 || missing="$missing gcc"
 command -v c++ >/dev/null 2>&1 || missing="$missing g++"
 command -v python3 >/dev/null 2>&1 || missing="$missing python3"
+command -v pkg-config >/dev/null 2>&1 || missing="$missing pkg-config"
 python3 -c 'import venv, ensurepip' >/dev/null 2>&1 || missing="$missing python3-venv"
 if [ -n "$missing" ]; then
     echo "installing:$missing"
@@ -42,6 +43,16 @@ step "C tests (ctest)"
 cmake -S c_tests -B build/c_tests -DSAFELOGIC_ROOT="$root" >/dev/null
 cmake --build build/c_tests -j2 >/dev/null
 ctest --test-dir build/c_tests --output-on-failure
+
+step "install step and pkg-config (ABI.md §1)"
+rm -rf build/prefix
+bash tools/install.sh "$root/build/prefix"
+export PKG_CONFIG_PATH="$root/build/prefix/lib/pkgconfig"
+# shellcheck disable=SC2046
+cc -std=c11 -Wall -Wextra -Werror -pedantic examples/c/group_examples.c $(pkg-config --cflags --libs safelogic) \
+    -Wl,-rpath,"$root/build/prefix/lib" -o build/prefix/group_examples
+build/prefix/group_examples >/dev/null
+echo "installed library, header and safelogic.pc: an example built with pkg-config runs"
 
 step "PLC bindings (generated files fresh, blark, tree-sitter, offsets, CODESYS adapter)"
 bash tools/plc_check.sh
