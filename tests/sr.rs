@@ -9,6 +9,12 @@ use safelogic::group::Member;
 use safelogic::*;
 use std::mem::{offset_of, size_of};
 
+#[macro_use]
+#[path = "common/flipflop.rs"]
+mod flipflop;
+
+use flipflop::state_name;
+
 const RESET: u16 = 1 << 0;
 const SET: u16 = 1 << 1;
 
@@ -36,43 +42,6 @@ fn step(b: &mut FB_SR, t: &mut u32, reset: u8, set: u8) -> i32 {
     b.bSet = set;
     *t += 10;
     b.cycle(*t)
-}
-
-fn state_name(ty: u16, state: u8) -> &'static str {
-    let p = ffi::sl_state_str(ty, state);
-    safelogic::blocks::info(ty)
-        .and_then(|b| b.states.iter().find(|(_, n)| n.as_ptr().cast() == p))
-        .map_or("?", |(_, n)| n.trim_end_matches('\0'))
-}
-
-/// One group cycle through the C API. The member table gets fresh pointers to the blocks
-/// first: the test writes the blocks directly between calls, which ends the validity of
-/// pointers taken before (no `unsafe` here, and nothing the compiler may reorder).
-macro_rules! c_group_cycle {
-    ($g:expr, $members:expr, $links:expr, $t:expr; $($b:ident),+) => {{
-        let mut i = 0;
-        $(
-            $members[i].pBlock = std::ptr::addr_of_mut!($b).cast();
-            i += 1;
-        )+
-        let _ = i;
-        ffi::sl_group_cycle(&mut $g, $members.as_mut_ptr(), $links.as_mut_ptr(), $t)
-    }};
-}
-
-#[test]
-fn layout_is_the_abi() {
-    // ABI §9: bReset (8), bSet (9), bSrOut (+1).
-    assert_eq!(offset_of!(FB_SR, bReset), 8);
-    assert_eq!(offset_of!(FB_SR, bSet), 9);
-    assert_eq!(offset_of!(FB_SR, bRun), 16);
-    assert_eq!(offset_of!(FB_SR, bErrAck), 17);
-    let base = offset_of!(FB_SR, bSrOut) - 1;
-    assert_eq!(base % 8, 0);
-    assert!(base >= offset_of!(FB_SR, wInputNegated) + 2);
-    assert_eq!(offset_of!(FB_SR, stPrivate) % 8, 0);
-    assert_eq!(size_of::<FB_SR>() % 8, 0);
-    assert_eq!(SL_STATE_SR_SET, 9);
 }
 
 /// Manual §4.11.1, every statement, in the same call (R5).
@@ -163,30 +132,6 @@ fn negated_inputs() {
     assert_eq!(b.bSrOut, 0, "logical Reset 1, Set 0");
 }
 
-/// R2: an inactive input reads FALSE (no command); its negation bit is ignored.
-#[test]
-fn inactive_inputs() {
-    let mut b = sr(SET, RESET);
-    b.bRun = 1;
-    let mut t = 0;
-    step(&mut b, &mut t, 1, 1);
-    assert_eq!(b.bSrOut, 1, "inactive Reset ignored");
-    step(&mut b, &mut t, 1, 0);
-    assert_eq!(b.bSrOut, 1, "set stays set without an active Reset");
-    step(&mut b, &mut t, 0xEE, 0);
-    assert_eq!(
-        (b.bSrOut, b.cycle(t + 1)),
-        (1, SL_OK),
-        "inactive byte unread"
-    );
-    let mut b = sr(RESET, SET);
-    b.bRun = 1;
-    step(&mut b, &mut t, 0, 1);
-    assert_eq!(b.bSrOut, 0, "inactive Set never sets");
-    step(&mut b, &mut t, 0, 0);
-    assert_eq!(b.bSrOut, 0);
-}
-
 /// R3: invalid Reset reads TRUE (reset), invalid Set reads FALSE (no set); Set dominates.
 #[test]
 fn invalid_bools() {
@@ -229,192 +174,15 @@ fn invalid_bools() {
     assert_eq!(b.bSrOut, 0, "invalid negated Set does not set");
 }
 
-/// R1, C6.
-#[test]
-fn configuration_errors() {
-    for (active, negated) in [
-        (0u16, 0u16),
-        (0b100, 0),
-        (0b111, 0),
-        (0b11, 0b100),
-        (0, 0b11),
-    ] {
-        let mut b = FB_SR {
-            wInputActive: active,
-            wInputNegated: negated,
-            bRun: 1,
-            bSet: 1,
-            ..Default::default()
-        };
-        assert_eq!(b.init(), SL_E_CONFIG, "{active:#b} {negated:#b}");
-        assert_eq!(b.cycle(0), SL_E_CONFIG);
-        assert_eq!((b.nState, b.bSrOut), (SL_STATE_STOP, 0));
-    }
-    for active in [RESET, SET, RESET | SET] {
-        assert_eq!(sr(active, 0).nState, SL_STATE_STOP);
-    }
-}
-
-/// C5, ABI §5 (no bError: ERROR is nState 4 with the output FALSE) and R4: the memory is
-/// lost through ERROR and RESET.
-#[test]
-fn parameter_change_while_running() {
-    let (mut b, mut t) = running();
-    step(&mut b, &mut t, 0, 1);
-    assert_eq!(b.bSrOut, 1);
-    b.wInputNegated = SET;
-    assert_eq!(step(&mut b, &mut t, 0, 0), SL_E_PARAM_CHANGED);
-    assert_eq!(
-        (b.nState, b.bSrOut, b.nDiag),
-        (SL_STATE_ERROR, 0, SL_DIAG_PARAM_CHANGED)
-    );
-    b.bErrAck = 1;
-    assert_eq!(step(&mut b, &mut t, 0, 0), SL_E_PARAM_CHANGED);
-    assert_eq!(b.nState, SL_STATE_ERROR, "the change remains");
-    b.wInputNegated = 0;
-    b.bErrAck = 0;
-    step(&mut b, &mut t, 0, 0);
-    b.bErrAck = 1;
-    step(&mut b, &mut t, 0, 0);
-    assert_eq!((b.nState, b.bSrOut, b.nDiag), (SL_STATE_RESET, 0, 0));
-    b.bErrAck = 0;
-    step(&mut b, &mut t, 0, 0);
-    assert_eq!((b.nState, b.bSrOut), (SL_STATE_SAFE, 0), "not SET again");
-}
-
-#[test]
-fn clock_backwards() {
-    let (mut b, mut t) = running();
-    step(&mut b, &mut t, 0, 1);
-    b.bSet = 0;
-    assert_eq!(b.cycle(t - 1), SL_E_CLOCK);
-    assert_eq!(
-        (b.nState, b.bSrOut, b.nDiag),
-        (SL_STATE_ERROR, 0, SL_DIAG_CLOCK)
-    );
-    b.bErrAck = 1;
-    b.cycle(t);
-    assert_eq!(b.nState, SL_STATE_RESET);
-    b.bErrAck = 0;
-    b.bSet = 1;
-    b.cycle(t + 1);
-    assert_eq!(
-        (b.nState, b.bSrOut),
-        (SL_STATE_SR_SET, 1),
-        "RESET → start, set by its inputs"
-    );
-}
-
-/// R7, C3: a state value the block never takes, and a corrupted parameter CRC before the
-/// output switches on.
-#[test]
-fn corruption() {
-    let (mut b, mut t) = running();
-    let h = &mut b.stPrivate.stHeader;
-    h.nState = SL_STATE_RUN;
-    h.dwCtrlCheck =
-        !(u32::from(h.nState) | (u32::from(h.nFlags) << 8) | (u32::from(h.wDiag) << 16));
-    assert_eq!(step(&mut b, &mut t, 0, 0), SL_E_CORRUPT);
-    assert_eq!((b.nState, b.bSrOut), (SL_STATE_ERROR, 0));
-    assert_eq!(b.nDiag & SL_DIAG_CORRUPT, SL_DIAG_CORRUPT);
-
-    let (mut b, mut t) = running();
-    b.stPrivate.stHeader.wParamCrc ^= 0x5A5A;
-    assert_eq!(step(&mut b, &mut t, 0, 0), SL_OK, "nothing switches on yet");
-    assert_eq!(step(&mut b, &mut t, 0, 1), SL_E_CORRUPT);
-    assert_eq!((b.nState, b.bSrOut), (SL_STATE_ERROR, 0));
-
-    let (mut b, mut t) = running();
-    b.stPrivate.stHeader.dwCtrlCheck ^= 1;
-    assert_eq!(step(&mut b, &mut t, 0, 1), SL_E_CORRUPT);
-    assert_eq!((b.nState, b.bSrOut), (SL_STATE_ERROR, 0));
-}
-
-#[test]
-fn c_functions_names_and_group() {
-    assert_eq!(ffi::sl_sr_init(std::ptr::null_mut()), SL_E_NULL);
-    assert_eq!(ffi::sl_sr_cycle(std::ptr::null_mut(), 0), SL_E_NULL);
-    let mut b = FB_SR {
-        wInputActive: 0b11,
-        ..Default::default()
-    };
-    assert_eq!(ffi::sl_sr_init(&mut b), SL_OK);
-    assert_eq!(state_name(SL_TYPE_SR, SL_STATE_STOP), "STOP");
-    assert_eq!(state_name(SL_TYPE_SR, SL_STATE_SAFE), "SAFE");
-    assert_eq!(state_name(SL_TYPE_SR, SL_STATE_SR_SET), "SET");
-    assert_eq!(state_name(SL_TYPE_SR, SL_STATE_ERROR), "ERROR");
-    assert_eq!(state_name(SL_TYPE_SR, SL_STATE_RESET), "RESET");
-    assert_eq!(state_name(SL_TYPE_SR, SL_STATE_RUN), "?");
-
-    // An AND feeds Set: RS as a group member through the C API.
-    let mut a = FB_AND {
-        wInputActive: 0b11,
-        ..Default::default()
-    };
-    assert_eq!(a.init(), SL_OK);
-    let mut g = SL_GROUP::default();
-    let mut members = [SL_MEMBER::default(); 2];
-    let mut links = [SL_LINK::default(); 1];
-    assert_eq!(
-        ffi::sl_group_init(&mut g, members.as_mut_ptr(), 2, links.as_mut_ptr(), 1),
-        SL_OK
-    );
-    let null = std::ptr::null_mut();
-    let tm = members.as_mut_ptr();
-    assert_eq!(
-        ffi::sl_group_add_member(
-            &mut g,
-            tm,
-            SL_TYPE_AND,
-            std::ptr::addr_of_mut!(a).cast(),
-            null
-        ),
-        SL_OK
-    );
-    let tm = members.as_mut_ptr();
-    assert_eq!(
-        ffi::sl_group_add_member(
-            &mut g,
-            tm,
-            SL_TYPE_SR,
-            std::ptr::addr_of_mut!(b).cast(),
-            null
-        ),
-        SL_OK
-    );
-    assert_eq!(
-        ffi::sl_group_add_link(
-            &mut g,
-            members.as_mut_ptr(),
-            links.as_mut_ptr(),
-            0,
-            offset_of!(FB_AND, bAndOut) as u16,
-            1,
-            offset_of!(FB_SR, bSet) as u16
-        ),
-        SL_OK
-    );
-    g.bRun = 1;
-    c_group_cycle!(g, members, links, 0; a, b);
-    assert_eq!((b.nState, b.bSrOut), (SL_STATE_SAFE, 0));
-    a.bAndIn1 = 1;
-    a.bAndIn2 = 1;
-    c_group_cycle!(g, members, links, 1; a, b);
-    assert_eq!(
-        (b.nState, b.bSrOut),
-        (SL_STATE_SR_SET, 1),
-        "the link carries this cycle's value"
-    );
-    a.bAndIn1 = 0;
-    c_group_cycle!(g, members, links, 2; a, b);
-    assert_eq!(b.bSrOut, 1, "memory");
-    b.bReset = 1;
-    c_group_cycle!(g, members, links, 3; a, b);
-    assert_eq!(b.bSrOut, 0);
-    let mb: &mut dyn Member = &mut b;
-    assert!(mb.input_mut(offset_of!(FB_SR, bReset) as u16).is_some());
-    assert!(mb.output(offset_of!(FB_SR, bSrOut) as u16).is_some());
-}
+flipflop_shared_tests!(
+    FB_SR,
+    bSrOut,
+    SL_TYPE_SR,
+    SL_STATE_SR_SET,
+    sl_sr_init,
+    sl_sr_cycle,
+    sr
+);
 
 proptest! {
     #![proptest_config(ProptestConfig::with_cases(256))]
