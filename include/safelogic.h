@@ -2760,7 +2760,9 @@ int32_t sl_muting_cycle(struct FB_MUTING *fb, uint32_t tNow);
 /*
  Resets a group to power-up (STOP, or STOPERROR with bConnections) with the caller's
  storage for `nMemberCap` members and `nLinkCap` links. The same arrays must be passed to
- every later sl_group_* call. Does not modify the group's input fields.
+ every later sl_group_* call. Does not modify the group's input fields. Checks before it
+ writes: a refused init (SL_E_NULL, SL_E_ALIGNMENT, SL_E_CONFIG for bConnections > 1 or
+ a group still in RUN/START) changes nothing.
  */
 int32_t sl_group_init(struct SL_GROUP *g, struct SL_MEMBER *aMembers, uint16_t nMemberCap, struct SL_LINK *aLinks, uint16_t nLinkCap);
 

@@ -411,16 +411,24 @@ fn storage<'a, T>(p: *mut T, len: usize) -> Result<&'a mut [T], i32> {
     if len == 0 {
         return Ok(&mut []);
     }
-    let first = instance(p)?;
-    // SAFETY: `p` is non-null and aligned (checked by `instance`); the caller guarantees
-    // (sl_group_init contract) that it points to at least `len` elements it owns and does
-    // not touch during the call.
-    Ok(unsafe { core::slice::from_raw_parts_mut(first as *mut T, len) })
+    if p.is_null() {
+        return Err(SL_E_NULL);
+    }
+    if (p as usize) % core::mem::align_of::<T>() != 0 {
+        return Err(SL_E_ALIGNMENT);
+    }
+    // SAFETY: `p` is non-null and aligned; the caller guarantees (sl_group_init contract)
+    // that it points to at least `len` elements it owns and does not touch during the
+    // call. The slice is built from the raw pointer itself, never from a reference to its
+    // first element, so it may cover all `len` elements.
+    Ok(unsafe { core::slice::from_raw_parts_mut(p, len) })
 }
 
 /// Resets a group to power-up (STOP, or STOPERROR with bConnections) with the caller's
 /// storage for `nMemberCap` members and `nLinkCap` links. The same arrays must be passed to
-/// every later sl_group_* call. Does not modify the group's input fields.
+/// every later sl_group_* call. Does not modify the group's input fields. Checks before it
+/// writes: a refused init (SL_E_NULL, SL_E_ALIGNMENT, SL_E_CONFIG for bConnections > 1 or
+/// a group still in RUN/START) changes nothing.
 #[no_mangle]
 #[allow(non_snake_case)]
 pub extern "C" fn sl_group_init(
@@ -433,8 +441,14 @@ pub extern "C" fn sl_group_init(
     ffi_boundary!(SL_E_INTERNAL, {
         let run = || -> Result<i32, i32> {
             let g = instance(g)?;
-            storage(aMembers, usize::from(nMemberCap))?.fill(SL_MEMBER::default());
-            storage(aLinks, usize::from(nLinkCap))?.fill(SL_LINK::default());
+            let members = storage(aMembers, usize::from(nMemberCap))?;
+            let links = storage(aLinks, usize::from(nLinkCap))?;
+            // A refused init changes nothing: a running group keeps its members.
+            if !group::init_valid(g) {
+                return Err(SL_E_CONFIG);
+            }
+            members.fill(SL_MEMBER::default());
+            links.fill(SL_LINK::default());
             Ok(group::init(g, nMemberCap, nLinkCap))
         };
         run().unwrap_or_else(|e| e)

@@ -314,7 +314,7 @@ fn write_info(g: &mut SL_GROUP, c: &Core) {
 /// Resets a group to power-up with room for `member_cap` members and `link_cap` links in
 /// the caller's storage. Does not modify the input fields.
 pub fn init(g: &mut SL_GROUP, member_cap: u16, link_cap: u16) -> i32 {
-    if g.bConnections > 1 {
+    if !init_valid(g) {
         return SL_E_CONFIG;
     }
     let c = Core {
@@ -327,6 +327,17 @@ pub fn init(g: &mut SL_GROUP, member_cap: u16, link_cap: u16) -> i32 {
     set_outputs(g, &c, false, false);
     write_info(g, &c);
     SL_OK
+}
+
+/// The group's parameters allow an init (checked before anything is changed).
+/// A group that is running (RUN, START) refuses a re-init: its members would be detached
+/// with their outputs as they are (docs/semantics.md GR13). Stop it first (bRun FALSE).
+pub fn init_valid(g: &SL_GROUP) -> bool {
+    let running = g
+        .stPrivate
+        .load()
+        .is_some_and(|c| matches!(c.state, SL_STATE_RUN | SL_GROUP_STATE_START));
+    g.bConnections <= 1 && !running
 }
 
 /// Members and links in the caller's storage (`None`: the private state is corrupt).
@@ -502,11 +513,8 @@ pub fn cycle<M: Members + ?Sized>(g: &mut SL_GROUP, m: &mut M, links: &[SL_LINK]
             }
         }
         let outcome = m.with(i, |b| b.run_in_group(member_run, ack_level, now));
-        let Some((s, state)) = outcome else {
-            status = worst_status(status, SL_E_CORRUPT);
-            member_error = true;
-            continue;
-        };
+        // A member that cannot be reached is a member error of the group, never a skip.
+        let (s, state) = outcome.unwrap_or((SL_E_CORRUPT, SL_STATE_ERROR));
         status = worst_status(status, s);
         all_run &= state == SL_STATE_RUN;
         if state == SL_STATE_ERROR {
