@@ -29,21 +29,21 @@ fn measure<T>(
     batches: usize,
     mut fb: T,
     private: usize,
-    cycle: extern "C" fn(*mut T, u32) -> i32,
+    cycle: unsafe extern "C" fn(*mut T, u32) -> i32,
     state: fn(&T) -> u8,
 ) -> Row {
-    let f: extern "C" fn(*mut T, u32) -> i32 = black_box(cycle);
+    let f: unsafe extern "C" fn(*mut T, u32) -> i32 = black_box(cycle);
     let mut t = 0u32;
     for _ in 0..200 {
         t += 1;
-        f(&mut fb, t);
+        unsafe { f(&mut fb, t) };
     }
     let mut per_call = Vec::with_capacity(batches);
     for _ in 0..batches {
         let start = Instant::now();
         for _ in 0..CALLS_PER_BATCH {
             t = t.wrapping_add(1);
-            black_box(f(black_box(&mut fb), t));
+            black_box(unsafe { f(black_box(&mut fb), t) });
         }
         per_call.push(start.elapsed().as_nanos() as f64 / f64::from(CALLS_PER_BATCH));
     }

@@ -19,8 +19,8 @@ use std::hint::black_box;
 use std::mem::size_of;
 use std::time::Instant;
 
-type EstopCycleFn = extern "C" fn(*mut FB_ESTOP, u32) -> i32;
-type MonCycleFn = extern "C" fn(*mut FB_MON, u32) -> i32;
+type EstopCycleFn = unsafe extern "C" fn(*mut FB_ESTOP, u32) -> i32;
+type MonCycleFn = unsafe extern "C" fn(*mut FB_MON, u32) -> i32;
 
 const CALLS_PER_BATCH: usize = 1000;
 /// Length of the pre-generated random input table (a power of two).
@@ -203,7 +203,7 @@ fn mon_config() -> FB_MON {
 /// Brings a block into RUN with all inputs TRUE: Run, Restart pulse, then the contactors
 /// pick up (EDM FALSE). Returns the clock after the last call.
 fn estop_to_run(fb: &mut FB_ESTOP) -> u32 {
-    assert_eq!(sl_estop_init(fb), SL_OK);
+    assert_eq!(unsafe { sl_estop_init(fb) }, SL_OK);
     fb.bRun = 1;
     fb.bEDM1 = 1;
     fb.bEDM2 = 1;
@@ -217,18 +217,18 @@ fn estop_to_run(fb: &mut FB_ESTOP) -> u32 {
     for restart in [0, 1, 0] {
         fb.bRestart = restart;
         t += 1;
-        assert_eq!(sl_estop_cycle(fb, t), SL_OK);
+        assert_eq!(unsafe { sl_estop_cycle(fb, t) }, SL_OK);
     }
     fb.bEDM1 = 0;
     fb.bEDM2 = 0;
     t += 1;
-    assert_eq!(sl_estop_cycle(fb, t), SL_OK);
+    assert_eq!(unsafe { sl_estop_cycle(fb, t) }, SL_OK);
     assert_eq!(fb.nState, SL_STATE_RUN, "ESTOP did not reach RUN");
     t
 }
 
 fn mon_to_run(fb: &mut FB_MON) -> u32 {
-    assert_eq!(sl_mon_init(fb), SL_OK);
+    assert_eq!(unsafe { sl_mon_init(fb) }, SL_OK);
     fb.bRun = 1;
     fb.bEDM1 = 1;
     fb.bEDM2 = 1;
@@ -242,12 +242,12 @@ fn mon_to_run(fb: &mut FB_MON) -> u32 {
     for restart in [0, 1, 0] {
         fb.bRestart = restart;
         t += 1;
-        assert_eq!(sl_mon_cycle(fb, t), SL_OK);
+        assert_eq!(unsafe { sl_mon_cycle(fb, t) }, SL_OK);
     }
     fb.bEDM1 = 0;
     fb.bEDM2 = 0;
     t += 1;
-    assert_eq!(sl_mon_cycle(fb, t), SL_OK);
+    assert_eq!(unsafe { sl_mon_cycle(fb, t) }, SL_OK);
     assert_eq!(fb.nState, SL_STATE_RUN, "MON did not reach RUN");
     t
 }
@@ -349,7 +349,7 @@ fn estop_state_mix(table: &[Inputs]) -> StateMix {
     for row in table {
         apply_estop(&mut fb, row);
         t = t.wrapping_add(u32::from(row.dt));
-        sl_estop_cycle(&mut fb, t);
+        unsafe { sl_estop_cycle(&mut fb, t) };
         mix.0[usize::from(fb.nState).min(9)] += 1;
     }
     mix
@@ -362,7 +362,7 @@ fn mon_state_mix(table: &[Inputs]) -> StateMix {
     for row in table {
         apply_mon(&mut fb, row);
         t = t.wrapping_add(u32::from(row.dt));
-        sl_mon_cycle(&mut fb, t);
+        unsafe { sl_mon_cycle(&mut fb, t) };
         mix.0[usize::from(fb.nState).min(9)] += 1;
     }
     mix
@@ -377,7 +377,7 @@ fn bench_estop_steady(plan: Plan) -> Stats {
         let p: *mut FB_ESTOP = black_box(&mut fb);
         for _ in 0..CALLS_PER_BATCH {
             t = t.wrapping_add(1);
-            bad |= black_box(f(p, t)) as u32;
+            bad |= black_box(unsafe { f(p, t) }) as u32;
         }
     });
     assert_eq!(bad, 0, "steady ESTOP returned a non-OK status");
@@ -394,7 +394,7 @@ fn bench_mon_steady(plan: Plan) -> Stats {
         let p: *mut FB_MON = black_box(&mut fb);
         for _ in 0..CALLS_PER_BATCH {
             t = t.wrapping_add(1);
-            bad |= black_box(f(p, t)) as u32;
+            bad |= black_box(unsafe { f(p, t) }) as u32;
         }
     });
     assert_eq!(bad, 0, "steady MON returned a non-OK status");
@@ -414,7 +414,7 @@ fn bench_estop_random(plan: Plan, table: &[Inputs]) -> Stats {
             k = k.wrapping_add(1);
             apply_estop(fb, row);
             t = t.wrapping_add(u32::from(row.dt));
-            black_box(f(fb, t));
+            black_box(unsafe { f(fb, t) });
         }
     });
     stats(v)
@@ -432,7 +432,7 @@ fn bench_mon_random(plan: Plan, table: &[Inputs]) -> Stats {
             k = k.wrapping_add(1);
             apply_mon(fb, row);
             t = t.wrapping_add(u32::from(row.dt));
-            black_box(f(fb, t));
+            black_box(unsafe { f(fb, t) });
         }
     });
     stats(v)

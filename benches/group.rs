@@ -97,7 +97,7 @@ fn build() -> Plant {
     let g = &mut p.group as *mut SL_GROUP;
     let (mt, lt) = (p.members.as_mut_ptr(), p.links.as_mut_ptr());
     assert_eq!(
-        sl_group_init(g, mt, MEMBERS as u16, lt, (2 * MEMBERS) as u16),
+        unsafe { sl_group_init(g, mt, MEMBERS as u16, lt, (2 * MEMBERS) as u16) },
         SL_OK
     );
     let (mut ie, mut im, mut ia, mut io, mut it) = (0, 0, 0, 0, 0);
@@ -118,7 +118,7 @@ fn build() -> Plant {
             _ => it += 1,
         }
         assert_eq!(
-            sl_group_add_member(g, mt, ty, block, std::ptr::null_mut()),
+            unsafe { sl_group_add_member(g, mt, ty, block, std::ptr::null_mut()) },
             SL_OK
         );
     }
@@ -161,7 +161,7 @@ fn build() -> Plant {
         ];
         for (s, so, d, dof) in wires {
             assert_eq!(
-                sl_group_add_link(g, mt, lt, s, so, d, dof),
+                unsafe { sl_group_add_link(g, mt, lt, s, so, d, dof) },
                 SL_OK,
                 "link {s}->{d}"
             );
@@ -195,7 +195,7 @@ fn main() {
         for e in &mut p.estops {
             e.bRestart = u8::from(step == 1);
         }
-        assert_eq!(sl_group_cycle(g, mt, lt, t), SL_OK);
+        assert_eq!(unsafe { sl_group_cycle(g, mt, lt, t) }, SL_OK);
         t += 1;
     }
     let running = p.estops.iter().filter(|e| e.nState == SL_STATE_RUN).count()
@@ -214,7 +214,7 @@ fn main() {
             (m.bMonIn1, m.bMonIn2) = (v, v);
         }
         let start = Instant::now();
-        black_box(sl_group_cycle(black_box(g), mt, lt, t));
+        black_box(unsafe { sl_group_cycle(black_box(g), mt, lt, t) });
         times.push(start.elapsed().as_nanos() as f64 / 1000.0);
         t += 1;
     }

@@ -134,10 +134,10 @@ trait Guard {
 
 impl Guard for FB_ESTOP {
     fn abi_init(&mut self) -> i32 {
-        sl_estop_init(self)
+        unsafe { sl_estop_init(self) }
     }
     fn abi_cycle(&mut self, now: u32) -> i32 {
-        sl_estop_cycle(self, now)
+        unsafe { sl_estop_cycle(self, now) }
     }
     fn write_inputs(&mut self, p: &Panel, edm1: bool) {
         self.bEStopIn1 = u8::from(p.in1);
@@ -166,10 +166,10 @@ impl Guard for FB_ESTOP {
 
 impl Guard for FB_MON {
     fn abi_init(&mut self) -> i32 {
-        sl_mon_init(self)
+        unsafe { sl_mon_init(self) }
     }
     fn abi_cycle(&mut self, now: u32) -> i32 {
-        sl_mon_cycle(self, now)
+        unsafe { sl_mon_cycle(self, now) }
     }
     fn write_inputs(&mut self, p: &Panel, edm1: bool) {
         self.bMonIn1 = u8::from(p.in1);

@@ -629,6 +629,294 @@ typedef struct SL_PRIVATE_HEADER {
 } SL_PRIVATE_HEADER;
 
 /*
+ Private state of FB_TON, FB_TON2 and FB_TOF (48 bytes). Never written by the user.
+
+ Unlike the guard blocks, the timer start carries a complement copy: for TON the timer
+ decides when the output switches ON, so a corrupted start value must not go unnoticed
+ (docs/semantics.md T9). The TON2 stored elapsed time has one as well.
+ */
+typedef struct SL_TIMER_PRIVATE {
+  /*
+   Common head; `tPhase` is the timer start.
+   */
+  struct SL_PRIVATE_HEADER stHeader;
+  /*
+   Latched `tDelay` in ms.
+   */
+  uint32_t dwDelay;
+  /*
+   Latched `nTimeBase` as written (0 = automatic).
+   */
+  uint16_t wTimeBase;
+  uint8_t aReserved[2];
+  /*
+   Complement of `stHeader.tPhase`.
+   */
+  uint32_t tPhaseCheck;
+  /*
+   FB_TON2: the stored elapsed time in ms (the manual's "ExpiredTime" in the FRAM).
+   */
+  uint32_t tElapsed;
+  /*
+   Complement of `tElapsed`.
+   */
+  uint32_t tElapsedCheck;
+} SL_TIMER_PRIVATE;
+
+/*
+ FB TON2 instance (ABI §3, §9). Inputs at the manual's offsets (§4.13.2), output base 40.
+ */
+typedef struct FB_TON2 {
+  /*
+   Offset 0. Reserved, keep 0.
+   */
+  uint8_t aReserved0[8];
+  /*
+   Offset 8. TonIn1: the input whose TRUE level is passed on after the delay (break or
+   make contact: wInputNegated bit 0).
+   */
+  SL_BOOL bTonIn1;
+  /*
+   Offset 9. Enable: read when TonIn1 rises, only with SL_OPT_TON2_REMAINING_TIME.
+   TRUE = start with the remaining time, FALSE (or invalid) = start with tDelay.
+   */
+  SL_BOOL bEnable;
+  /*
+   Offset 10. Reserved, keep 0.
+   */
+  uint8_t aReserved1[6];
+  /*
+   Offset 16. FbRun of the owning group: TRUE = the block executes.
+   */
+  SL_BOOL bRun;
+  /*
+   Offset 17. ErrAck of the owning group.
+   */
+  SL_BOOL bErrAck;
+  /*
+   Offset 18. Reserved, keep 0.
+   */
+  uint8_t aReserved2[2];
+  /*
+   Offset 20. Switch-on delay in ms: 1 to 60,000 steps of the timebase (at most
+   60,000,000 ms = 60,000 s), a whole number of steps.
+   */
+  uint32_t tDelay;
+  /*
+   Offset 24. Timebase in ms: SL_TIMEBASE_1MS, _10MS, _100MS, _1000MS, or
+   SL_TIMEBASE_AUTO (0) = the smallest one whose range holds tDelay.
+   */
+  uint16_t nTimeBase;
+  /*
+   Offset 26. Bit 0 must be set: TonIn1 is active (Enable has no bit).
+   */
+  uint16_t wInputActive;
+  /*
+   Offset 28. Bit 0 set: TonIn1 is a make contact (negated before evaluation).
+   */
+  uint16_t wInputNegated;
+  /*
+   Offset 30. Reserved, keep 0.
+   */
+  uint8_t aReserved3[2];
+  /*
+   Offset 32. SL_OPT_TON2_REMAINING_TIME ("Starts with remaining time").
+   */
+  uint32_t dwOptions;
+  /*
+   Offset 36. Reserved, keep 0.
+   */
+  uint8_t aReserved4[4];
+  /*
+   Offset 40 (output base + 0). Reserved (the manual's error output is inactive).
+   */
+  uint8_t aReserved5[1];
+  /*
+   Offset 41 (output base + 1). TonOut: TRUE in RUN only.
+   */
+  SL_BOOL bTonOut;
+  /*
+   Offset 42. Reserved.
+   */
+  uint8_t aReserved6[6];
+  /*
+   Offset 48. The manual's status value (SL_STATE_*, SL_STATE_TON2_DELAYIN).
+   */
+  uint8_t nState;
+  /*
+   Offset 49. Reserved.
+   */
+  uint8_t aReserved7[1];
+  /*
+   Offset 50. Diagnostic bits (SL_DIAG_TON2_RESTORE and the library bits 13-15).
+   */
+  uint16_t nDiag;
+  /*
+   Offset 52. Reserved.
+   */
+  uint8_t aReserved8[4];
+  /*
+   Offset 56. Private state, 48 bytes: never write it.
+   */
+  struct SL_TIMER_PRIVATE stPrivate;
+} FB_TON2;
+
+/*
+ Private state of a group (32 bytes): data words and their complements.
+ */
+typedef struct SL_GROUP_PRIVATE {
+  /*
+   wMagic | nState << 16 | nFlags << 24.
+   */
+  uint32_t dwCtrl;
+  /*
+   nDiag | nFailed << 16.
+   */
+  uint32_t dwDiag;
+  /*
+   nMembers | nMemberCap << 16.
+   */
+  uint32_t dwMembers;
+  /*
+   nLinks | nLinkCap << 16.
+   */
+  uint32_t dwLinks;
+  /*
+   Complements of the four words above.
+   */
+  uint32_t adwCheck[4];
+} SL_GROUP_PRIVATE;
+
+/*
+ A TwinSAFE group with the EL6910 interface (manual §3.1.1.2, §3.2.5).
+ */
+typedef struct SL_GROUP {
+  /*
+   Offset 0. Run/Stop: TRUE executes the members.
+   */
+  SL_BOOL bRun;
+  /*
+   Offset 1. Err Ack: FALSE→TRUE→FALSE acknowledges group and member errors.
+   */
+  SL_BOOL bErrAck;
+  /*
+   Offset 2. Module Fault: error output of another module (→ OtherErr, group ERROR).
+   */
+  SL_BOOL bModuleFault;
+  /*
+   Offset 3. A connection of the group reports an error (until connections are members).
+   */
+  SL_BOOL bComErrIn;
+  /*
+   Offset 4. A connection of the group is still starting up.
+   */
+  SL_BOOL bComStartupIn;
+  /*
+   Offset 5. Parameter: TRUE = connections are assigned (start in STOPERROR).
+   */
+  SL_BOOL bConnections;
+  /*
+   Offset 6. Reserved, keep 0.
+   */
+  uint8_t aReserved0[2];
+  /*
+   Offset 8. Communication error in at least one connection.
+   */
+  SL_BOOL bComErr;
+  /*
+   Offset 9. Error in at least one member.
+   */
+  SL_BOOL bFbErr;
+  /*
+   Offset 10. Not used (FALSE).
+   */
+  SL_BOOL bOutErr;
+  /*
+   Offset 11. ModuleFault.
+   */
+  SL_BOOL bOtherErr;
+  /*
+   Offset 12. At least one connection is starting up.
+   */
+  SL_BOOL bComStartup;
+  /*
+   Offset 13. The group is deactivated (never: no customizing).
+   */
+  SL_BOOL bFbDeactive;
+  /*
+   Offset 14. All members are in RUN.
+   */
+  SL_BOOL bFbRun;
+  /*
+   Offset 15. The group is in RUN.
+   */
+  SL_BOOL bInRun;
+  /*
+   Offset 16. Group state (1 RUN, 2 STOP, 4 ERROR, 5 RESET, 6 START, 7 STOPERROR).
+   */
+  uint8_t nState;
+  /*
+   Offset 17. Reserved.
+   */
+  uint8_t aReserved1[1];
+  /*
+   Offset 18. Group diag value (0 none, 1 FBERROR, 2 COMERROR, 3 MODULEERROR, 6 RESTARTERROR).
+   */
+  uint16_t nDiag;
+  /*
+   Offset 20. Index of the member whose ERROR stopped the group (0xFFFF: none).
+   */
+  uint16_t nFailedMember;
+  /*
+   Offset 22. Number of members.
+   */
+  uint16_t nMembers;
+  /*
+   Offset 24. Number of links.
+   */
+  uint16_t nLinks;
+  /*
+   Offset 26. Reserved.
+   */
+  uint8_t aReserved2[6];
+  /*
+   Offset 32. Private state, 32 bytes: never write it.
+   */
+  struct SL_GROUP_PRIVATE stPrivate;
+} SL_GROUP;
+
+/*
+ One member entry in caller storage.
+ */
+typedef struct SL_MEMBER {
+  /*
+   The block instance (FB_<NAME> *).
+   */
+  void *pBlock;
+  /*
+   SL_TYPE_* of the block.
+   */
+  uint16_t nType;
+  uint8_t aReserved[6];
+} SL_MEMBER;
+
+/*
+ One link in caller storage: output byte `nSrcOffset` of member `nSrcMember` is copied
+ to input byte `nDstOffset` of member `nDstMember` just before the destination runs.
+ */
+typedef struct SL_LINK {
+  uint16_t nSrcMember;
+  uint16_t nSrcOffset;
+  uint16_t nDstMember;
+  uint16_t nDstOffset;
+  /*
+   SL_LINK_BOOL.
+   */
+  uint8_t nKind;
+  uint8_t aReserved[3];
+} SL_LINK;
+
+/*
  Private state of FB_ESTOP and FB_MON (64 bytes). Never written by the user.
  */
 typedef struct SL_GUARD_PRIVATE {
@@ -1124,6 +1412,272 @@ typedef struct FB_OR {
 } FB_OR;
 
 /*
+ FB XOR instance (ABI §3, §9). Inputs at the manual's offsets 0…15 (§4.34.2), output
+ base 24 (outputs at base + 8 … base + 15).
+ */
+typedef struct FB_XOR {
+  /*
+   Offset 0. Input 1 of XOR1.
+   */
+  SL_BOOL bXor1In1;
+  /*
+   Offset 1. Input 2 of XOR1.
+   */
+  SL_BOOL bXor2In1;
+  /*
+   Offset 2. Input 1 of XOR2.
+   */
+  SL_BOOL bXor1In2;
+  /*
+   Offset 3. Input 2 of XOR2.
+   */
+  SL_BOOL bXor2In2;
+  /*
+   Offset 4. Input 1 of XOR3.
+   */
+  SL_BOOL bXor1In3;
+  /*
+   Offset 5. Input 2 of XOR3.
+   */
+  SL_BOOL bXor2In3;
+  /*
+   Offset 6. Input 1 of XOR4.
+   */
+  SL_BOOL bXor1In4;
+  /*
+   Offset 7. Input 2 of XOR4.
+   */
+  SL_BOOL bXor2In4;
+  /*
+   Offset 8. Input 1 of XOR5.
+   */
+  SL_BOOL bXor1In5;
+  /*
+   Offset 9. Input 2 of XOR5.
+   */
+  SL_BOOL bXor2In5;
+  /*
+   Offset 10. Input 1 of XOR6.
+   */
+  SL_BOOL bXor1In6;
+  /*
+   Offset 11. Input 2 of XOR6.
+   */
+  SL_BOOL bXor2In6;
+  /*
+   Offset 12. Input 1 of XOR7.
+   */
+  SL_BOOL bXor1In7;
+  /*
+   Offset 13. Input 2 of XOR7.
+   */
+  SL_BOOL bXor2In7;
+  /*
+   Offset 14. Input 1 of XOR8.
+   */
+  SL_BOOL bXor1In8;
+  /*
+   Offset 15. Input 2 of XOR8.
+   */
+  SL_BOOL bXor2In8;
+  /*
+   Offset 16. FbRun of the owning group.
+   */
+  SL_BOOL bRun;
+  /*
+   Offset 17. ErrAck of the owning group.
+   */
+  SL_BOOL bErrAck;
+  /*
+   Offset 18. Reserved, keep 0.
+   */
+  uint8_t aReserved0[2];
+  /*
+   Offset 20. Bit y-1 set: XOR function y (inputs Xor1Iny, Xor2Iny) is active (at least one).
+   */
+  uint16_t wInputActive;
+  /*
+   Offset 22. Reserved, keep 0 (the manual offers no negation for XOR inputs).
+   */
+  uint8_t aReserved1[2];
+  /*
+   Offset 24 (output base + 0). Reserved.
+   */
+  uint8_t aReserved2[8];
+  /*
+   Offset 32 (output base + 8). Xor1In1 XOR Xor2In1 (FALSE when XOR1 is inactive).
+   */
+  SL_BOOL bXorOut1;
+  /*
+   Offset 33 (output base + 9).
+   */
+  SL_BOOL bXorOut2;
+  /*
+   Offset 34 (output base + 10).
+   */
+  SL_BOOL bXorOut3;
+  /*
+   Offset 35 (output base + 11).
+   */
+  SL_BOOL bXorOut4;
+  /*
+   Offset 36 (output base + 12).
+   */
+  SL_BOOL bXorOut5;
+  /*
+   Offset 37 (output base + 13).
+   */
+  SL_BOOL bXorOut6;
+  /*
+   Offset 38 (output base + 14).
+   */
+  SL_BOOL bXorOut7;
+  /*
+   Offset 39 (output base + 15).
+   */
+  SL_BOOL bXorOut8;
+  /*
+   Offset 40. The manual's status value (SL_STATE_*).
+   */
+  uint8_t nState;
+  /*
+   Offset 41. Reserved.
+   */
+  uint8_t aReserved3[1];
+  /*
+   Offset 42. Diagnostic bits (only the library bits 13-15).
+   */
+  uint16_t nDiag;
+  /*
+   Offset 44. Reserved.
+   */
+  uint8_t aReserved4[4];
+  /*
+   Offset 48. Private state, 32 bytes: never write it.
+   */
+  struct SL_LOGIC_PRIVATE stPrivate;
+} FB_XOR;
+
+/*
+ FB DECOUPLE instance (ABI §3, §9). Inputs at the manual's offsets 8…15 (§4.6.2), output
+ base 24 (outputs at base + 8 … base + 15).
+ */
+typedef struct FB_DECOUPLE {
+  /*
+   Offset 0. Reserved, keep 0.
+   */
+  uint8_t aReserved0[8];
+  /*
+   Offset 8. 1st input channel.
+   */
+  SL_BOOL bDecIn1;
+  /*
+   Offset 9. 2nd input channel.
+   */
+  SL_BOOL bDecIn2;
+  /*
+   Offset 10. 3rd input channel.
+   */
+  SL_BOOL bDecIn3;
+  /*
+   Offset 11. 4th input channel.
+   */
+  SL_BOOL bDecIn4;
+  /*
+   Offset 12. 5th input channel.
+   */
+  SL_BOOL bDecIn5;
+  /*
+   Offset 13. 6th input channel.
+   */
+  SL_BOOL bDecIn6;
+  /*
+   Offset 14. 7th input channel.
+   */
+  SL_BOOL bDecIn7;
+  /*
+   Offset 15. 8th input channel.
+   */
+  SL_BOOL bDecIn8;
+  /*
+   Offset 16. FbRun of the owning group.
+   */
+  SL_BOOL bRun;
+  /*
+   Offset 17. ErrAck of the owning group.
+   */
+  SL_BOOL bErrAck;
+  /*
+   Offset 18. Reserved, keep 0.
+   */
+  uint8_t aReserved1[2];
+  /*
+   Offset 20. Bit n-1 set: channel n (DecInn → DecOutn) is used (at least one).
+   */
+  uint16_t wInputActive;
+  /*
+   Offset 22. Reserved, keep 0 (the manual offers no negation for DECOUPLE).
+   */
+  uint8_t aReserved2[2];
+  /*
+   Offset 24 (output base + 0). Reserved.
+   */
+  uint8_t aReserved3[8];
+  /*
+   Offset 32 (output base + 8). 1st output channel: DecIn1 in RUN, else FALSE.
+   */
+  SL_BOOL bDecOut1;
+  /*
+   Offset 33 (output base + 9). 2nd output channel.
+   */
+  SL_BOOL bDecOut2;
+  /*
+   Offset 34 (output base + 10). 3rd output channel.
+   */
+  SL_BOOL bDecOut3;
+  /*
+   Offset 35 (output base + 11). 4th output channel.
+   */
+  SL_BOOL bDecOut4;
+  /*
+   Offset 36 (output base + 12). 5th output channel.
+   */
+  SL_BOOL bDecOut5;
+  /*
+   Offset 37 (output base + 13). 6th output channel.
+   */
+  SL_BOOL bDecOut6;
+  /*
+   Offset 38 (output base + 14). 7th output channel.
+   */
+  SL_BOOL bDecOut7;
+  /*
+   Offset 39 (output base + 15). 8th output channel.
+   */
+  SL_BOOL bDecOut8;
+  /*
+   Offset 40. The manual's status value (SL_STATE_*).
+   */
+  uint8_t nState;
+  /*
+   Offset 41. Reserved.
+   */
+  uint8_t aReserved4[1];
+  /*
+   Offset 42. Diagnostic bits (only the library bits 13-15).
+   */
+  uint16_t nDiag;
+  /*
+   Offset 44. Reserved.
+   */
+  uint8_t aReserved5[4];
+  /*
+   Offset 48. Private state, 32 bytes: never write it.
+   */
+  struct SL_LOGIC_PRIVATE stPrivate;
+} FB_DECOUPLE;
+
+/*
  Private state of FB_OPMODE (32 bytes). Never written by the user.
 
  `stHeader.wAux` (complement-checked) bits 0-7: the mode (one input bit) that RUN drives
@@ -1398,195 +1952,86 @@ typedef struct FB_TWOHAND {
 } FB_TWOHAND;
 
 /*
- FB XOR instance (ABI §3, §9). Inputs at the manual's offsets 0…15 (§4.34.2), output
- base 24 (outputs at base + 8 … base + 15).
+ Private state of FB_MUTING (72 bytes). Never written by the user.
  */
-typedef struct FB_XOR {
+typedef struct SL_MUTING_PRIVATE {
   /*
-   Offset 0. Input 1 of XOR1.
+   Offset 0. Common head; `wAux` holds the filtered muting inputs (bits 0-5), their
+   running filter timers (bits 6-11), the running pair timers (bits 12-14) and the
+   direction of the running sequence (bit 15, backwards).
    */
-  SL_BOOL bXor1In1;
+  struct SL_PRIVATE_HEADER stHeader;
   /*
-   Offset 1. Input 2 of XOR1.
+   Offset 28. Latched maximum muting time in ms.
    */
-  SL_BOOL bXor2In1;
+  uint32_t tMaxMutingTime;
   /*
-   Offset 2. Input 1 of XOR2.
+   Offset 32. Latched times in ms: discrepancy times MutingIn1/2, OSSD, MutingIn3/4,
+   filter time, MuteDelOut delay, reserved.
    */
-  SL_BOOL bXor1In2;
+  uint16_t awTime[6];
   /*
-   Offset 3. Input 2 of XOR2.
+   Offset 44. Start times of the pair discrepancy timers.
    */
-  SL_BOOL bXor2In2;
+  uint32_t atDiscStart[3];
   /*
-   Offset 4. Input 1 of XOR3.
+   Offset 56. Start times of the filter timers of MutingIn1, 2, 3, 4.
    */
-  SL_BOOL bXor1In3;
-  /*
-   Offset 5. Input 2 of XOR3.
-   */
-  SL_BOOL bXor2In3;
-  /*
-   Offset 6. Input 1 of XOR4.
-   */
-  SL_BOOL bXor1In4;
-  /*
-   Offset 7. Input 2 of XOR4.
-   */
-  SL_BOOL bXor2In4;
-  /*
-   Offset 8. Input 1 of XOR5.
-   */
-  SL_BOOL bXor1In5;
-  /*
-   Offset 9. Input 2 of XOR5.
-   */
-  SL_BOOL bXor2In5;
-  /*
-   Offset 10. Input 1 of XOR6.
-   */
-  SL_BOOL bXor1In6;
-  /*
-   Offset 11. Input 2 of XOR6.
-   */
-  SL_BOOL bXor2In6;
-  /*
-   Offset 12. Input 1 of XOR7.
-   */
-  SL_BOOL bXor1In7;
-  /*
-   Offset 13. Input 2 of XOR7.
-   */
-  SL_BOOL bXor2In7;
-  /*
-   Offset 14. Input 1 of XOR8.
-   */
-  SL_BOOL bXor1In8;
-  /*
-   Offset 15. Input 2 of XOR8.
-   */
-  SL_BOOL bXor2In8;
-  /*
-   Offset 16. FbRun of the owning group.
-   */
-  SL_BOOL bRun;
-  /*
-   Offset 17. ErrAck of the owning group.
-   */
-  SL_BOOL bErrAck;
-  /*
-   Offset 18. Reserved, keep 0.
-   */
-  uint8_t aReserved0[2];
-  /*
-   Offset 20. Bit y-1 set: XOR function y (inputs Xor1Iny, Xor2Iny) is active (at least one).
-   */
-  uint16_t wInputActive;
-  /*
-   Offset 22. Reserved, keep 0 (the manual offers no negation for XOR inputs).
-   */
-  uint8_t aReserved1[2];
-  /*
-   Offset 24 (output base + 0). Reserved.
-   */
-  uint8_t aReserved2[8];
-  /*
-   Offset 32 (output base + 8). Xor1In1 XOR Xor2In1 (FALSE when XOR1 is inactive).
-   */
-  SL_BOOL bXorOut1;
-  /*
-   Offset 33 (output base + 9).
-   */
-  SL_BOOL bXorOut2;
-  /*
-   Offset 34 (output base + 10).
-   */
-  SL_BOOL bXorOut3;
-  /*
-   Offset 35 (output base + 11).
-   */
-  SL_BOOL bXorOut4;
-  /*
-   Offset 36 (output base + 12).
-   */
-  SL_BOOL bXorOut5;
-  /*
-   Offset 37 (output base + 13).
-   */
-  SL_BOOL bXorOut6;
-  /*
-   Offset 38 (output base + 14).
-   */
-  SL_BOOL bXorOut7;
-  /*
-   Offset 39 (output base + 15).
-   */
-  SL_BOOL bXorOut8;
-  /*
-   Offset 40. The manual's status value (SL_STATE_*).
-   */
-  uint8_t nState;
-  /*
-   Offset 41. Reserved.
-   */
-  uint8_t aReserved3[1];
-  /*
-   Offset 42. Diagnostic bits (only the library bits 13-15).
-   */
-  uint16_t nDiag;
-  /*
-   Offset 44. Reserved.
-   */
-  uint8_t aReserved4[4];
-  /*
-   Offset 48. Private state, 32 bytes: never write it.
-   */
-  struct SL_LOGIC_PRIVATE stPrivate;
-} FB_XOR;
+  uint32_t atFilterStart[4];
+} SL_MUTING_PRIVATE;
 
 /*
- FB DECOUPLE instance (ABI §3, §9). Inputs at the manual's offsets 8…15 (§4.6.2), output
- base 24 (outputs at base + 8 … base + 15).
+ FB MUTING instance (ABI §3, §9). Inputs at the manual's offsets (§4.8.2), outputs at
+ output base 56 + the manual's offsets.
  */
-typedef struct FB_DECOUPLE {
+typedef struct FB_MUTING {
   /*
-   Offset 0. Reserved, keep 0.
+   Offset 0. MutingEnable: TRUE allows a muting sequence; FALSE = an interruption of
+   the protective field switches the outputs off.
    */
-  uint8_t aReserved0[8];
+  SL_BOOL bMutingEnable;
   /*
-   Offset 8. 1st input channel.
+   Offset 1. Feedback loop of MuteOut (SL_OPT_EDM1).
    */
-  SL_BOOL bDecIn1;
+  SL_BOOL bEDM1;
   /*
-   Offset 9. 2nd input channel.
+   Offset 2. Feedback loop of MuteDelOut (SL_OPT_EDM2).
    */
-  SL_BOOL bDecIn2;
+  SL_BOOL bEDM2;
   /*
-   Offset 10. 3rd input channel.
+   Offset 3. Reserved, keep 0.
    */
-  SL_BOOL bDecIn3;
+  uint8_t aReserved0[5];
   /*
-   Offset 11. 4th input channel.
+   Offset 8. Muting sensor 1 (parallel: group 1 with MutingIn2). TRUE = actuated.
    */
-  SL_BOOL bDecIn4;
+  SL_BOOL bMutingIn1;
   /*
-   Offset 12. 5th input channel.
+   Offset 9. Muting sensor 2.
    */
-  SL_BOOL bDecIn5;
+  SL_BOOL bMutingIn2;
   /*
-   Offset 13. 6th input channel.
+   Offset 10. Protective device channel 1 (OSSD): TRUE = protective field clear.
    */
-  SL_BOOL bDecIn6;
+  SL_BOOL bOSSDIn1;
   /*
-   Offset 14. 7th input channel.
+   Offset 11. Protective device channel 2 (pair with OSSDIn1).
    */
-  SL_BOOL bDecIn7;
+  SL_BOOL bOSSDIn2;
   /*
-   Offset 15. 8th input channel.
+   Offset 12. Muting sensor 3 (parallel: group 2 with MutingIn4).
    */
-  SL_BOOL bDecIn8;
+  SL_BOOL bMutingIn3;
   /*
-   Offset 16. FbRun of the owning group.
+   Offset 13. Muting sensor 4.
+   */
+  SL_BOOL bMutingIn4;
+  /*
+   Offset 14. Reserved, keep 0.
+   */
+  uint8_t aReserved1[2];
+  /*
+   Offset 16. FbRun of the owning group: TRUE = the block executes.
    */
   SL_BOOL bRun;
   /*
@@ -1595,73 +2040,90 @@ typedef struct FB_DECOUPLE {
   SL_BOOL bErrAck;
   /*
    Offset 18. Reserved, keep 0.
-   */
-  uint8_t aReserved1[2];
-  /*
-   Offset 20. Bit n-1 set: channel n (DecInn → DecOutn) is used (at least one).
-   */
-  uint16_t wInputActive;
-  /*
-   Offset 22. Reserved, keep 0 (the manual offers no negation for DECOUPLE).
    */
   uint8_t aReserved2[2];
   /*
-   Offset 24 (output base + 0). Reserved.
+   Offset 20. Discrepancy time of group MutingIn1/2 in ms (parallel only; 0 = none).
    */
-  uint8_t aReserved3[8];
+  uint32_t tDiscTime12;
   /*
-   Offset 32 (output base + 8). 1st output channel: DecIn1 in RUN, else FALSE.
+   Offset 24. Discrepancy time of OSSDIn1/2 in ms (0 = none).
    */
-  SL_BOOL bDecOut1;
+  uint32_t tDiscTimeOSSD;
   /*
-   Offset 33 (output base + 9). 2nd output channel.
+   Offset 28. Discrepancy time of group MutingIn3/4 in ms (parallel only; 0 = none).
    */
-  SL_BOOL bDecOut2;
+  uint32_t tDiscTime34;
   /*
-   Offset 34 (output base + 10). 3rd output channel.
+   Offset 32. Filter time of the muting inputs in ms (≤ 500; 0 = unfiltered).
    */
-  SL_BOOL bDecOut3;
+  uint32_t tFilterTime;
   /*
-   Offset 35 (output base + 11). 4th output channel.
+   Offset 36. Maximum muting time in ms (≤ 600 000 = 10 min; 0 = not monitored).
    */
-  SL_BOOL bDecOut4;
+  uint32_t tMaxMutingTime;
   /*
-   Offset 36 (output base + 12). 5th output channel.
+   Offset 40. Delay of MuteDelOut in ms (≤ 30 000).
    */
-  SL_BOOL bDecOut5;
+  uint32_t tMuteDelOutDelay;
   /*
-   Offset 37 (output base + 13). 6th output channel.
+   Offset 44. Bits 0-5: MutingIn1, MutingIn2, OSSDIn1, OSSDIn2, MutingIn3, MutingIn4 active.
    */
-  SL_BOOL bDecOut6;
+  uint16_t wInputActive;
   /*
-   Offset 38 (output base + 14). 7th output channel.
+   Offset 46. Same bits: input is a make contact (negated).
    */
-  SL_BOOL bDecOut7;
+  uint16_t wInputNegated;
   /*
-   Offset 39 (output base + 15). 8th output channel.
+   Offset 48. SL_OPT_EDM1 | EDM2 | MUTING_SEQUENTIAL | MUTING_BACKWARDS |
+   MUTING_OSSD_CHECK_OPTIONAL.
    */
-  SL_BOOL bDecOut8;
+  uint32_t dwOptions;
   /*
-   Offset 40. The manual's status value (SL_STATE_*).
+   Offset 52. Reserved.
+   */
+  uint8_t aReserved3[4];
+  /*
+   Offset 56 (output base + 0). TRUE in ERROR.
+   */
+  SL_BOOL bError;
+  /*
+   Offset 57 (output base + 1). TRUE while a muting sequence runs (MUTING1…MUTING9).
+   */
+  SL_BOOL bMutingActive;
+  /*
+   Offset 58 (output base + 2). Undelayed output.
+   */
+  SL_BOOL bMuteOut;
+  /*
+   Offset 59 (output base + 3). Delayed output.
+   */
+  SL_BOOL bMuteDelOut;
+  /*
+   Offset 60. Reserved.
+   */
+  uint8_t aReserved4[4];
+  /*
+   Offset 64. The manual's status value (SL_STATE_*, SL_STATE_MUTING_MUTINGx).
    */
   uint8_t nState;
   /*
-   Offset 41. Reserved.
+   Offset 65. Reserved.
    */
-  uint8_t aReserved4[1];
+  uint8_t aReserved5[1];
   /*
-   Offset 42. Diagnostic bits (only the library bits 13-15).
+   Offset 66. Diagnostic bits (manual §4.8.2).
    */
   uint16_t nDiag;
   /*
-   Offset 44. Reserved.
+   Offset 68. Reserved.
    */
-  uint8_t aReserved5[4];
+  uint8_t aReserved6[4];
   /*
-   Offset 48. Private state, 32 bytes: never write it.
+   Offset 72. Private state, 72 bytes: never write it.
    */
-  struct SL_LOGIC_PRIVATE stPrivate;
-} FB_DECOUPLE;
+  struct SL_MUTING_PRIVATE stPrivate;
+} FB_MUTING;
 
 /*
  Private state of FB_EDM (32 bytes). Never written by the user. The header's `tPhase` is
@@ -1912,41 +2374,6 @@ typedef struct FB_SR {
 } FB_SR;
 
 /*
- Private state of FB_TON, FB_TON2 and FB_TOF (48 bytes). Never written by the user.
-
- Unlike the guard blocks, the timer start carries a complement copy: for TON the timer
- decides when the output switches ON, so a corrupted start value must not go unnoticed
- (docs/semantics.md T9). The TON2 stored elapsed time has one as well.
- */
-typedef struct SL_TIMER_PRIVATE {
-  /*
-   Common head; `tPhase` is the timer start.
-   */
-  struct SL_PRIVATE_HEADER stHeader;
-  /*
-   Latched `tDelay` in ms.
-   */
-  uint32_t dwDelay;
-  /*
-   Latched `nTimeBase` as written (0 = automatic).
-   */
-  uint16_t wTimeBase;
-  uint8_t aReserved[2];
-  /*
-   Complement of `stHeader.tPhase`.
-   */
-  uint32_t tPhaseCheck;
-  /*
-   FB_TON2: the stored elapsed time in ms (the manual's "ExpiredTime" in the FRAM).
-   */
-  uint32_t tElapsed;
-  /*
-   Complement of `tElapsed`.
-   */
-  uint32_t tElapsedCheck;
-} SL_TIMER_PRIVATE;
-
-/*
  FB TON instance (ABI §3, §9). Input at the manual's offset (§4.12.2), output base 32.
  */
 typedef struct FB_TON {
@@ -2030,104 +2457,6 @@ typedef struct FB_TON {
    */
   struct SL_TIMER_PRIVATE stPrivate;
 } FB_TON;
-
-/*
- FB TON2 instance (ABI §3, §9). Inputs at the manual's offsets (§4.13.2), output base 40.
- */
-typedef struct FB_TON2 {
-  /*
-   Offset 0. Reserved, keep 0.
-   */
-  uint8_t aReserved0[8];
-  /*
-   Offset 8. TonIn1: the input whose TRUE level is passed on after the delay (break or
-   make contact: wInputNegated bit 0).
-   */
-  SL_BOOL bTonIn1;
-  /*
-   Offset 9. Enable: read when TonIn1 rises, only with SL_OPT_TON2_REMAINING_TIME.
-   TRUE = start with the remaining time, FALSE (or invalid) = start with tDelay.
-   */
-  SL_BOOL bEnable;
-  /*
-   Offset 10. Reserved, keep 0.
-   */
-  uint8_t aReserved1[6];
-  /*
-   Offset 16. FbRun of the owning group: TRUE = the block executes.
-   */
-  SL_BOOL bRun;
-  /*
-   Offset 17. ErrAck of the owning group.
-   */
-  SL_BOOL bErrAck;
-  /*
-   Offset 18. Reserved, keep 0.
-   */
-  uint8_t aReserved2[2];
-  /*
-   Offset 20. Switch-on delay in ms: 1 to 60,000 steps of the timebase (at most
-   60,000,000 ms = 60,000 s), a whole number of steps.
-   */
-  uint32_t tDelay;
-  /*
-   Offset 24. Timebase in ms: SL_TIMEBASE_1MS, _10MS, _100MS, _1000MS, or
-   SL_TIMEBASE_AUTO (0) = the smallest one whose range holds tDelay.
-   */
-  uint16_t nTimeBase;
-  /*
-   Offset 26. Bit 0 must be set: TonIn1 is active (Enable has no bit).
-   */
-  uint16_t wInputActive;
-  /*
-   Offset 28. Bit 0 set: TonIn1 is a make contact (negated before evaluation).
-   */
-  uint16_t wInputNegated;
-  /*
-   Offset 30. Reserved, keep 0.
-   */
-  uint8_t aReserved3[2];
-  /*
-   Offset 32. SL_OPT_TON2_REMAINING_TIME ("Starts with remaining time").
-   */
-  uint32_t dwOptions;
-  /*
-   Offset 36. Reserved, keep 0.
-   */
-  uint8_t aReserved4[4];
-  /*
-   Offset 40 (output base + 0). Reserved (the manual's error output is inactive).
-   */
-  uint8_t aReserved5[1];
-  /*
-   Offset 41 (output base + 1). TonOut: TRUE in RUN only.
-   */
-  SL_BOOL bTonOut;
-  /*
-   Offset 42. Reserved.
-   */
-  uint8_t aReserved6[6];
-  /*
-   Offset 48. The manual's status value (SL_STATE_*, SL_STATE_TON2_DELAYIN).
-   */
-  uint8_t nState;
-  /*
-   Offset 49. Reserved.
-   */
-  uint8_t aReserved7[1];
-  /*
-   Offset 50. Diagnostic bits (SL_DIAG_TON2_RESTORE and the library bits 13-15).
-   */
-  uint16_t nDiag;
-  /*
-   Offset 52. Reserved.
-   */
-  uint8_t aReserved8[4];
-  /*
-   Offset 56. Private state, 48 bytes: never write it.
-   */
-  struct SL_TIMER_PRIVATE stPrivate;
-} FB_TON2;
 
 /*
  FB TOF instance (ABI §3, §9). Input at the manual's offset (§4.14.2), output base 32.
@@ -2214,360 +2543,9 @@ typedef struct FB_TOF {
   struct SL_TIMER_PRIVATE stPrivate;
 } FB_TOF;
 
-/*
- Private state of FB_MUTING (72 bytes). Never written by the user.
- */
-typedef struct SL_MUTING_PRIVATE {
-  /*
-   Offset 0. Common head; `wAux` holds the filtered muting inputs (bits 0-5), their
-   running filter timers (bits 6-11), the running pair timers (bits 12-14) and the
-   direction of the running sequence (bit 15, backwards).
-   */
-  struct SL_PRIVATE_HEADER stHeader;
-  /*
-   Offset 28. Latched maximum muting time in ms.
-   */
-  uint32_t tMaxMutingTime;
-  /*
-   Offset 32. Latched times in ms: discrepancy times MutingIn1/2, OSSD, MutingIn3/4,
-   filter time, MuteDelOut delay, reserved.
-   */
-  uint16_t awTime[6];
-  /*
-   Offset 44. Start times of the pair discrepancy timers.
-   */
-  uint32_t atDiscStart[3];
-  /*
-   Offset 56. Start times of the filter timers of MutingIn1, 2, 3, 4.
-   */
-  uint32_t atFilterStart[4];
-} SL_MUTING_PRIVATE;
-
-/*
- FB MUTING instance (ABI §3, §9). Inputs at the manual's offsets (§4.8.2), outputs at
- output base 56 + the manual's offsets.
- */
-typedef struct FB_MUTING {
-  /*
-   Offset 0. MutingEnable: TRUE allows a muting sequence; FALSE = an interruption of
-   the protective field switches the outputs off.
-   */
-  SL_BOOL bMutingEnable;
-  /*
-   Offset 1. Feedback loop of MuteOut (SL_OPT_EDM1).
-   */
-  SL_BOOL bEDM1;
-  /*
-   Offset 2. Feedback loop of MuteDelOut (SL_OPT_EDM2).
-   */
-  SL_BOOL bEDM2;
-  /*
-   Offset 3. Reserved, keep 0.
-   */
-  uint8_t aReserved0[5];
-  /*
-   Offset 8. Muting sensor 1 (parallel: group 1 with MutingIn2). TRUE = actuated.
-   */
-  SL_BOOL bMutingIn1;
-  /*
-   Offset 9. Muting sensor 2.
-   */
-  SL_BOOL bMutingIn2;
-  /*
-   Offset 10. Protective device channel 1 (OSSD): TRUE = protective field clear.
-   */
-  SL_BOOL bOSSDIn1;
-  /*
-   Offset 11. Protective device channel 2 (pair with OSSDIn1).
-   */
-  SL_BOOL bOSSDIn2;
-  /*
-   Offset 12. Muting sensor 3 (parallel: group 2 with MutingIn4).
-   */
-  SL_BOOL bMutingIn3;
-  /*
-   Offset 13. Muting sensor 4.
-   */
-  SL_BOOL bMutingIn4;
-  /*
-   Offset 14. Reserved, keep 0.
-   */
-  uint8_t aReserved1[2];
-  /*
-   Offset 16. FbRun of the owning group: TRUE = the block executes.
-   */
-  SL_BOOL bRun;
-  /*
-   Offset 17. ErrAck of the owning group.
-   */
-  SL_BOOL bErrAck;
-  /*
-   Offset 18. Reserved, keep 0.
-   */
-  uint8_t aReserved2[2];
-  /*
-   Offset 20. Discrepancy time of group MutingIn1/2 in ms (parallel only; 0 = none).
-   */
-  uint32_t tDiscTime12;
-  /*
-   Offset 24. Discrepancy time of OSSDIn1/2 in ms (0 = none).
-   */
-  uint32_t tDiscTimeOSSD;
-  /*
-   Offset 28. Discrepancy time of group MutingIn3/4 in ms (parallel only; 0 = none).
-   */
-  uint32_t tDiscTime34;
-  /*
-   Offset 32. Filter time of the muting inputs in ms (≤ 500; 0 = unfiltered).
-   */
-  uint32_t tFilterTime;
-  /*
-   Offset 36. Maximum muting time in ms (≤ 600 000 = 10 min; 0 = not monitored).
-   */
-  uint32_t tMaxMutingTime;
-  /*
-   Offset 40. Delay of MuteDelOut in ms (≤ 30 000).
-   */
-  uint32_t tMuteDelOutDelay;
-  /*
-   Offset 44. Bits 0-5: MutingIn1, MutingIn2, OSSDIn1, OSSDIn2, MutingIn3, MutingIn4 active.
-   */
-  uint16_t wInputActive;
-  /*
-   Offset 46. Same bits: input is a make contact (negated).
-   */
-  uint16_t wInputNegated;
-  /*
-   Offset 48. SL_OPT_EDM1 | EDM2 | MUTING_SEQUENTIAL | MUTING_BACKWARDS |
-   MUTING_OSSD_CHECK_OPTIONAL.
-   */
-  uint32_t dwOptions;
-  /*
-   Offset 52. Reserved.
-   */
-  uint8_t aReserved3[4];
-  /*
-   Offset 56 (output base + 0). TRUE in ERROR.
-   */
-  SL_BOOL bError;
-  /*
-   Offset 57 (output base + 1). TRUE while a muting sequence runs (MUTING1…MUTING9).
-   */
-  SL_BOOL bMutingActive;
-  /*
-   Offset 58 (output base + 2). Undelayed output.
-   */
-  SL_BOOL bMuteOut;
-  /*
-   Offset 59 (output base + 3). Delayed output.
-   */
-  SL_BOOL bMuteDelOut;
-  /*
-   Offset 60. Reserved.
-   */
-  uint8_t aReserved4[4];
-  /*
-   Offset 64. The manual's status value (SL_STATE_*, SL_STATE_MUTING_MUTINGx).
-   */
-  uint8_t nState;
-  /*
-   Offset 65. Reserved.
-   */
-  uint8_t aReserved5[1];
-  /*
-   Offset 66. Diagnostic bits (manual §4.8.2).
-   */
-  uint16_t nDiag;
-  /*
-   Offset 68. Reserved.
-   */
-  uint8_t aReserved6[4];
-  /*
-   Offset 72. Private state, 72 bytes: never write it.
-   */
-  struct SL_MUTING_PRIVATE stPrivate;
-} FB_MUTING;
-
-/*
- Private state of a group (32 bytes): data words and their complements.
- */
-typedef struct SL_GROUP_PRIVATE {
-  /*
-   wMagic | nState << 16 | nFlags << 24.
-   */
-  uint32_t dwCtrl;
-  /*
-   nDiag | nFailed << 16.
-   */
-  uint32_t dwDiag;
-  /*
-   nMembers | nMemberCap << 16.
-   */
-  uint32_t dwMembers;
-  /*
-   nLinks | nLinkCap << 16.
-   */
-  uint32_t dwLinks;
-  /*
-   Complements of the four words above.
-   */
-  uint32_t adwCheck[4];
-} SL_GROUP_PRIVATE;
-
-/*
- A TwinSAFE group with the EL6910 interface (manual §3.1.1.2, §3.2.5).
- */
-typedef struct SL_GROUP {
-  /*
-   Offset 0. Run/Stop: TRUE executes the members.
-   */
-  SL_BOOL bRun;
-  /*
-   Offset 1. Err Ack: FALSE→TRUE→FALSE acknowledges group and member errors.
-   */
-  SL_BOOL bErrAck;
-  /*
-   Offset 2. Module Fault: error output of another module (→ OtherErr, group ERROR).
-   */
-  SL_BOOL bModuleFault;
-  /*
-   Offset 3. A connection of the group reports an error (until connections are members).
-   */
-  SL_BOOL bComErrIn;
-  /*
-   Offset 4. A connection of the group is still starting up.
-   */
-  SL_BOOL bComStartupIn;
-  /*
-   Offset 5. Parameter: TRUE = connections are assigned (start in STOPERROR).
-   */
-  SL_BOOL bConnections;
-  /*
-   Offset 6. Reserved, keep 0.
-   */
-  uint8_t aReserved0[2];
-  /*
-   Offset 8. Communication error in at least one connection.
-   */
-  SL_BOOL bComErr;
-  /*
-   Offset 9. Error in at least one member.
-   */
-  SL_BOOL bFbErr;
-  /*
-   Offset 10. Not used (FALSE).
-   */
-  SL_BOOL bOutErr;
-  /*
-   Offset 11. ModuleFault.
-   */
-  SL_BOOL bOtherErr;
-  /*
-   Offset 12. At least one connection is starting up.
-   */
-  SL_BOOL bComStartup;
-  /*
-   Offset 13. The group is deactivated (never: no customizing).
-   */
-  SL_BOOL bFbDeactive;
-  /*
-   Offset 14. All members are in RUN.
-   */
-  SL_BOOL bFbRun;
-  /*
-   Offset 15. The group is in RUN.
-   */
-  SL_BOOL bInRun;
-  /*
-   Offset 16. Group state (1 RUN, 2 STOP, 4 ERROR, 5 RESET, 6 START, 7 STOPERROR).
-   */
-  uint8_t nState;
-  /*
-   Offset 17. Reserved.
-   */
-  uint8_t aReserved1[1];
-  /*
-   Offset 18. Group diag value (0 none, 1 FBERROR, 2 COMERROR, 3 MODULEERROR, 6 RESTARTERROR).
-   */
-  uint16_t nDiag;
-  /*
-   Offset 20. Index of the member whose ERROR stopped the group (0xFFFF: none).
-   */
-  uint16_t nFailedMember;
-  /*
-   Offset 22. Number of members.
-   */
-  uint16_t nMembers;
-  /*
-   Offset 24. Number of links.
-   */
-  uint16_t nLinks;
-  /*
-   Offset 26. Reserved.
-   */
-  uint8_t aReserved2[6];
-  /*
-   Offset 32. Private state, 32 bytes: never write it.
-   */
-  struct SL_GROUP_PRIVATE stPrivate;
-} SL_GROUP;
-
-/*
- One member entry in caller storage.
- */
-typedef struct SL_MEMBER {
-  /*
-   The block instance (FB_<NAME> *).
-   */
-  void *pBlock;
-  /*
-   SL_TYPE_* of the block.
-   */
-  uint16_t nType;
-  uint8_t aReserved[6];
-} SL_MEMBER;
-
-/*
- One link in caller storage: output byte `nSrcOffset` of member `nSrcMember` is copied
- to input byte `nDstOffset` of member `nDstMember` just before the destination runs.
- */
-typedef struct SL_LINK {
-  uint16_t nSrcMember;
-  uint16_t nSrcOffset;
-  uint16_t nDstMember;
-  uint16_t nDstOffset;
-  /*
-   SL_LINK_BOOL.
-   */
-  uint8_t nKind;
-  uint8_t aReserved[3];
-} SL_LINK;
-
 #ifdef __cplusplus
 extern "C" {
 #endif // __cplusplus
-
-/*
- Validates and latches the parameters of an FB_ESTOP and resets it to power-up (STOP,
- outputs FALSE). Does not modify any input field. Returns SL_OK or SL_E_CONFIG.
- */
-int32_t sl_estop_init(struct FB_ESTOP *fb);
-
-/*
- One task cycle of an FB_ESTOP at `tNow` (monotonic ms, may wrap at 2^32).
- */
-int32_t sl_estop_cycle(struct FB_ESTOP *fb, uint32_t tNow);
-
-/*
- Validates and latches the parameters of an FB_MON and resets it to power-up (STOP,
- outputs FALSE). Does not modify any input field. Returns SL_OK or SL_E_CONFIG.
- */
-int32_t sl_mon_init(struct FB_MON *fb);
-
-/*
- One task cycle of an FB_MON at `tNow` (monotonic ms, may wrap at 2^32).
- */
-int32_t sl_mon_cycle(struct FB_MON *fb, uint32_t tNow);
 
 /*
  Static, NUL-terminated text for a status code (never NULL).
@@ -2592,134 +2570,15 @@ uint32_t sl_time_now_ms(void);
 const char *sl_version(void);
 
 /*
- Validates and latches the parameters of an FB_AND and resets it to power-up (STOP).
- */
-int32_t sl_and_init(struct FB_AND *fb);
-
-/*
- One task cycle of an FB_AND at `tNow` (monotonic ms).
- */
-int32_t sl_and_cycle(struct FB_AND *fb, uint32_t tNow);
-
-/*
- Validates and latches the parameters of an FB_OR and resets it to power-up (STOP).
- */
-int32_t sl_or_init(struct FB_OR *fb);
-
-/*
- One task cycle of an FB_OR at `tNow` (monotonic ms).
- */
-int32_t sl_or_cycle(struct FB_OR *fb, uint32_t tNow);
-
-/*
- Validates and latches the parameters of an FB_OPMODE and resets it to power-up (STOP,
- outputs FALSE). Does not modify any input field. Returns SL_OK or SL_E_CONFIG.
- */
-int32_t sl_opmode_init(struct FB_OPMODE *fb);
-
-/*
- One task cycle of an FB_OPMODE at `tNow` (monotonic ms, may wrap at 2^32).
- */
-int32_t sl_opmode_cycle(struct FB_OPMODE *fb, uint32_t tNow);
-
-/*
- Validates and latches the parameters of an FB_TWOHAND and resets it to power-up (STOP,
- outputs FALSE). Does not modify any input field. Returns SL_OK or SL_E_CONFIG.
- */
-int32_t sl_twohand_init(struct FB_TWOHAND *fb);
-
-/*
- One task cycle of an FB_TWOHAND at `tNow` (monotonic ms, may wrap at 2^32).
- */
-int32_t sl_twohand_cycle(struct FB_TWOHAND *fb, uint32_t tNow);
-
-/*
- Validates and latches the parameters of an FB_XOR and resets it to power-up (STOP,
- outputs FALSE). Does not modify any input field. Returns SL_OK or SL_E_CONFIG.
- */
-int32_t sl_xor_init(struct FB_XOR *fb);
-
-/*
- One task cycle of an FB_XOR at `tNow` (monotonic ms, may wrap at 2^32).
- */
-int32_t sl_xor_cycle(struct FB_XOR *fb, uint32_t tNow);
-
-/*
- Validates and latches the parameters of an FB_DECOUPLE and resets it to power-up (STOP,
- outputs FALSE). Does not modify any input field. Returns SL_OK or SL_E_CONFIG.
- */
-int32_t sl_decouple_init(struct FB_DECOUPLE *fb);
-
-/*
- One task cycle of an FB_DECOUPLE at `tNow` (monotonic ms, may wrap at 2^32).
- */
-int32_t sl_decouple_cycle(struct FB_DECOUPLE *fb, uint32_t tNow);
-
-/*
- Validates and latches the parameters of an FB_EDM and resets it to power-up (STOP,
- outputs FALSE). Does not modify any input field. Returns SL_OK or SL_E_CONFIG.
- */
-int32_t sl_edm_init(struct FB_EDM *fb);
-
-/*
- One task cycle of an FB_EDM at `tNow` (monotonic ms, may wrap at 2^32).
- */
-int32_t sl_edm_cycle(struct FB_EDM *fb, uint32_t tNow);
-
-/*
- Validates and latches the parameters of an FB_RS and resets it to power-up (STOP,
- outputs FALSE). Does not modify any input field. Returns SL_OK or SL_E_CONFIG.
- */
-int32_t sl_rs_init(struct FB_RS *fb);
-
-/*
- One task cycle of an FB_RS at `tNow` (monotonic ms, may wrap at 2^32).
- */
-int32_t sl_rs_cycle(struct FB_RS *fb, uint32_t tNow);
-
-/*
- Validates and latches the parameters of an FB_SR and resets it to power-up (STOP,
- outputs FALSE). Does not modify any input field. Returns SL_OK or SL_E_CONFIG.
- */
-int32_t sl_sr_init(struct FB_SR *fb);
-
-/*
- One task cycle of an FB_SR at `tNow` (monotonic ms, may wrap at 2^32).
- */
-int32_t sl_sr_cycle(struct FB_SR *fb, uint32_t tNow);
-
-/*
- Validates and latches the parameters of an FB_TON and resets it to power-up (STOP).
- Returns SL_OK or SL_E_CONFIG (tDelay 0, above 60,000 timebase steps or not a whole
- number of them, an unknown nTimeBase, TonIn1 not active, unknown bits).
- */
-int32_t sl_ton_init(struct FB_TON *fb);
-
-/*
- One task cycle of an FB_TON at `tNow` (monotonic ms, may wrap at 2^32).
- */
-int32_t sl_ton_cycle(struct FB_TON *fb, uint32_t tNow);
-
-/*
- Validates and latches the parameters of an FB_TON2 and resets it to power-up (STOP).
- Returns SL_OK or SL_E_CONFIG (as sl_ton_init; unknown option bits).
- */
-int32_t sl_ton2_init(struct FB_TON2 *fb);
-
-/*
- One task cycle of an FB_TON2 at `tNow` (monotonic ms, may wrap at 2^32). Returns
- SL_E_RESTORE when TonIn rises with Enable TRUE and SL_OPT_TON2_REMAINING_TIME set while
- the stored elapsed time is greater than the latched tDelay (the block is then in ERROR).
- */
-int32_t sl_ton2_cycle(struct FB_TON2 *fb, uint32_t tNow);
-
-/*
  Writes the elapsed time an FB_TON2 has stored (ms; the manual's "ExpiredTime") to
  `*pElapsedMs`, for the host to persist across a power cycle. Call it after
  `sl_ton2_cycle` (every cycle, or whenever the value changed) and write the value to
  non-volatile memory. Any state; a never-initialised instance gives 0. Returns SL_OK;
  SL_E_NULL / SL_E_ALIGNMENT for a bad pointer; SL_E_CORRUPT (nothing written) when the
  private state or the stored value fails its integrity check. Does not modify the block.
+
+ # Safety
+ `fb` and `pElapsedMs` are NULL or point to a live FB_TON2 / `uint32_t` that nothing writes during the call.
  */
 int32_t sl_ton2_get_elapsed(const struct FB_TON2 *fb, uint32_t *pElapsedMs);
 
@@ -2732,30 +2591,11 @@ int32_t sl_ton2_get_elapsed(const struct FB_TON2 *fb, uint32_t *pElapsedMs);
  SL_E_RESTORE (nElapsedMs > the latched tDelay, the manual's global shutdown 0x3510, or
  the block not in STOP: ERROR, diag bit 12, stored value 0); SL_E_CORRUPT (ERROR, diag
  bit 15); SL_E_NULL / SL_E_ALIGNMENT for a bad pointer.
+
+ # Safety
+ `fb` is NULL or points to a live, caller-owned FB_TON2 that nothing else accesses during the call.
  */
 int32_t sl_ton2_restore_elapsed(struct FB_TON2 *fb, uint32_t nElapsedMs);
-
-/*
- Validates and latches the parameters of an FB_TOF and resets it to power-up (STOP).
- Returns SL_OK or SL_E_CONFIG (as sl_ton_init).
- */
-int32_t sl_tof_init(struct FB_TOF *fb);
-
-/*
- One task cycle of an FB_TOF at `tNow` (monotonic ms, may wrap at 2^32).
- */
-int32_t sl_tof_cycle(struct FB_TOF *fb, uint32_t tNow);
-
-/*
- Validates and latches the parameters of an FB_MUTING and resets it to power-up (STOP,
- outputs FALSE). Does not modify any input field. Returns SL_OK or SL_E_CONFIG.
- */
-int32_t sl_muting_init(struct FB_MUTING *fb);
-
-/*
- One task cycle of an FB_MUTING at `tNow` (monotonic ms, may wrap at 2^32).
- */
-int32_t sl_muting_cycle(struct FB_MUTING *fb, uint32_t tNow);
 
 /*
  Resets a group to power-up (STOP, or STOPERROR with bConnections) with the caller's
@@ -2763,6 +2603,9 @@ int32_t sl_muting_cycle(struct FB_MUTING *fb, uint32_t tNow);
  every later sl_group_* call. Does not modify the group's input fields. Checks before it
  writes: a refused init (SL_E_NULL, SL_E_ALIGNMENT, SL_E_CONFIG for bConnections > 1 or
  a group still in RUN/START) changes nothing.
+
+ # Safety
+ `g` is NULL or points to a live SL_GROUP; `aMembers` / `aLinks` are NULL or point to at least `nMemberCap` / `nLinkCap` entries; the caller keeps all of them alive and untouched for as long as the group is used.
  */
 int32_t sl_group_init(struct SL_GROUP *g, struct SL_MEMBER *aMembers, uint16_t nMemberCap, struct SL_LINK *aLinks, uint16_t nLinkCap);
 
@@ -2770,6 +2613,9 @@ int32_t sl_group_init(struct SL_GROUP *g, struct SL_MEMBER *aMembers, uint16_t n
  Adds a block as the next member (execution order) while the group is stopped.
  `nType` is SL_TYPE_<NAME>; the index is written to `*pIndex` unless it is NULL.
  A block can be a member once; SL_E_FULL when the member storage is full.
+
+ # Safety
+ As for `sl_group_init`, with the same tables; `pBlock` points to a live block of type `nType` that stays alive while it is a member; `pIndex` is NULL or writable.
  */
 int32_t sl_group_add_member(struct SL_GROUP *g, struct SL_MEMBER *aMembers, uint16_t nType, void *pBlock, uint16_t *pIndex);
 
@@ -2779,12 +2625,18 @@ int32_t sl_group_add_member(struct SL_GROUP *g, struct SL_MEMBER *aMembers, uint
  copied just before the destination executes: a link from an earlier member carries this
  cycle's value, one from a later member the previous cycle's. SL_E_CONFIG for a field
  that is not a linkable output / input of a member, or an input that is already linked.
+
+ # Safety
+ As for `sl_group_init`, with the same tables.
  */
 int32_t sl_group_add_link(struct SL_GROUP *g, struct SL_MEMBER *aMembers, struct SL_LINK *aLinks, uint16_t nSrcMember, uint16_t nSrcOffset, uint16_t nDstMember, uint16_t nDstOffset);
 
 /*
  One group cycle at `tNow`: group state, then every member in order (links first), all
  with the same `tNow`. Returns the group's status or the worst status of a member.
+
+ # Safety
+ As for `sl_group_init`, with the same tables; every member block is still alive.
  */
 int32_t sl_group_cycle(struct SL_GROUP *g, struct SL_MEMBER *aMembers, struct SL_LINK *aLinks, uint32_t tNow);
 
@@ -2793,8 +2645,49 @@ int32_t sl_group_cycle(struct SL_GROUP *g, struct SL_MEMBER *aMembers, struct SL
  (SL_TYPE_<NAME>) into `buf` as a NUL-terminated text ("discrepancy error input group 1;
  EDM monitoring error EDM1"), truncated to `nLen` bytes including the NUL. For an HMI.
  SL_E_CONFIG for an unknown type (buf then holds ""), SL_E_NULL for a NULL buf.
+
+ # Safety
+ `buf` is NULL or points to at least `nLen` writable bytes.
  */
 int32_t sl_diag_text(uint16_t nType, uint16_t nDiag, char *buf, size_t nLen);
+
+/*
+ * The functions of every registered block type (src/registry.rs). init validates and
+* latches the parameters and resets the block to power-up (STOP, outputs FALSE), never
+* modifying an input field: SL_OK or SL_E_CONFIG. cycle runs one task cycle at tNow
+* (monotonic ms, may wrap at 2^32). fb must point to a live, caller-owned instance that
+* nothing else accesses during the call.
+ */
+int32_t sl_estop_init(struct FB_ESTOP *fb);
+int32_t sl_estop_cycle(struct FB_ESTOP *fb, uint32_t tNow);
+int32_t sl_mon_init(struct FB_MON *fb);
+int32_t sl_mon_cycle(struct FB_MON *fb, uint32_t tNow);
+int32_t sl_and_init(struct FB_AND *fb);
+int32_t sl_and_cycle(struct FB_AND *fb, uint32_t tNow);
+int32_t sl_or_init(struct FB_OR *fb);
+int32_t sl_or_cycle(struct FB_OR *fb, uint32_t tNow);
+int32_t sl_xor_init(struct FB_XOR *fb);
+int32_t sl_xor_cycle(struct FB_XOR *fb, uint32_t tNow);
+int32_t sl_decouple_init(struct FB_DECOUPLE *fb);
+int32_t sl_decouple_cycle(struct FB_DECOUPLE *fb, uint32_t tNow);
+int32_t sl_opmode_init(struct FB_OPMODE *fb);
+int32_t sl_opmode_cycle(struct FB_OPMODE *fb, uint32_t tNow);
+int32_t sl_twohand_init(struct FB_TWOHAND *fb);
+int32_t sl_twohand_cycle(struct FB_TWOHAND *fb, uint32_t tNow);
+int32_t sl_muting_init(struct FB_MUTING *fb);
+int32_t sl_muting_cycle(struct FB_MUTING *fb, uint32_t tNow);
+int32_t sl_edm_init(struct FB_EDM *fb);
+int32_t sl_edm_cycle(struct FB_EDM *fb, uint32_t tNow);
+int32_t sl_rs_init(struct FB_RS *fb);
+int32_t sl_rs_cycle(struct FB_RS *fb, uint32_t tNow);
+int32_t sl_sr_init(struct FB_SR *fb);
+int32_t sl_sr_cycle(struct FB_SR *fb, uint32_t tNow);
+int32_t sl_ton_init(struct FB_TON *fb);
+int32_t sl_ton_cycle(struct FB_TON *fb, uint32_t tNow);
+int32_t sl_ton2_init(struct FB_TON2 *fb);
+int32_t sl_ton2_cycle(struct FB_TON2 *fb, uint32_t tNow);
+int32_t sl_tof_init(struct FB_TOF *fb);
+int32_t sl_tof_cycle(struct FB_TOF *fb, uint32_t tNow);
 
 #ifdef __cplusplus
 }  // extern "C"
@@ -2821,6 +2714,74 @@ SL_STATIC_ASSERT(offsetof(SL_PRIVATE_HEADER, nActive) == 24, "offset of SL_PRIVA
 SL_STATIC_ASSERT(offsetof(SL_PRIVATE_HEADER, nNegated) == 25, "offset of SL_PRIVATE_HEADER.nNegated");
 SL_STATIC_ASSERT(offsetof(SL_PRIVATE_HEADER, wOptions) == 26, "offset of SL_PRIVATE_HEADER.wOptions");
 SL_STATIC_ASSERT(sizeof(SL_PRIVATE_HEADER) == 28, "size of SL_PRIVATE_HEADER");
+SL_STATIC_ASSERT(offsetof(SL_TIMER_PRIVATE, stHeader) == 0, "offset of SL_TIMER_PRIVATE.stHeader");
+SL_STATIC_ASSERT(offsetof(SL_TIMER_PRIVATE, dwDelay) == 28, "offset of SL_TIMER_PRIVATE.dwDelay");
+SL_STATIC_ASSERT(offsetof(SL_TIMER_PRIVATE, wTimeBase) == 32, "offset of SL_TIMER_PRIVATE.wTimeBase");
+SL_STATIC_ASSERT(offsetof(SL_TIMER_PRIVATE, aReserved) == 34, "offset of SL_TIMER_PRIVATE.aReserved");
+SL_STATIC_ASSERT(offsetof(SL_TIMER_PRIVATE, tPhaseCheck) == 36, "offset of SL_TIMER_PRIVATE.tPhaseCheck");
+SL_STATIC_ASSERT(offsetof(SL_TIMER_PRIVATE, tElapsed) == 40, "offset of SL_TIMER_PRIVATE.tElapsed");
+SL_STATIC_ASSERT(offsetof(SL_TIMER_PRIVATE, tElapsedCheck) == 44, "offset of SL_TIMER_PRIVATE.tElapsedCheck");
+SL_STATIC_ASSERT(sizeof(SL_TIMER_PRIVATE) == 48, "size of SL_TIMER_PRIVATE");
+SL_STATIC_ASSERT(offsetof(FB_TON2, aReserved0) == 0, "offset of FB_TON2.aReserved0");
+SL_STATIC_ASSERT(offsetof(FB_TON2, bTonIn1) == 8, "offset of FB_TON2.bTonIn1");
+SL_STATIC_ASSERT(offsetof(FB_TON2, bEnable) == 9, "offset of FB_TON2.bEnable");
+SL_STATIC_ASSERT(offsetof(FB_TON2, aReserved1) == 10, "offset of FB_TON2.aReserved1");
+SL_STATIC_ASSERT(offsetof(FB_TON2, bRun) == 16, "offset of FB_TON2.bRun");
+SL_STATIC_ASSERT(offsetof(FB_TON2, bErrAck) == 17, "offset of FB_TON2.bErrAck");
+SL_STATIC_ASSERT(offsetof(FB_TON2, aReserved2) == 18, "offset of FB_TON2.aReserved2");
+SL_STATIC_ASSERT(offsetof(FB_TON2, tDelay) == 20, "offset of FB_TON2.tDelay");
+SL_STATIC_ASSERT(offsetof(FB_TON2, nTimeBase) == 24, "offset of FB_TON2.nTimeBase");
+SL_STATIC_ASSERT(offsetof(FB_TON2, wInputActive) == 26, "offset of FB_TON2.wInputActive");
+SL_STATIC_ASSERT(offsetof(FB_TON2, wInputNegated) == 28, "offset of FB_TON2.wInputNegated");
+SL_STATIC_ASSERT(offsetof(FB_TON2, aReserved3) == 30, "offset of FB_TON2.aReserved3");
+SL_STATIC_ASSERT(offsetof(FB_TON2, dwOptions) == 32, "offset of FB_TON2.dwOptions");
+SL_STATIC_ASSERT(offsetof(FB_TON2, aReserved4) == 36, "offset of FB_TON2.aReserved4");
+SL_STATIC_ASSERT(offsetof(FB_TON2, aReserved5) == 40, "offset of FB_TON2.aReserved5");
+SL_STATIC_ASSERT(offsetof(FB_TON2, bTonOut) == 41, "offset of FB_TON2.bTonOut");
+SL_STATIC_ASSERT(offsetof(FB_TON2, aReserved6) == 42, "offset of FB_TON2.aReserved6");
+SL_STATIC_ASSERT(offsetof(FB_TON2, nState) == 48, "offset of FB_TON2.nState");
+SL_STATIC_ASSERT(offsetof(FB_TON2, aReserved7) == 49, "offset of FB_TON2.aReserved7");
+SL_STATIC_ASSERT(offsetof(FB_TON2, nDiag) == 50, "offset of FB_TON2.nDiag");
+SL_STATIC_ASSERT(offsetof(FB_TON2, aReserved8) == 52, "offset of FB_TON2.aReserved8");
+SL_STATIC_ASSERT(offsetof(FB_TON2, stPrivate) == 56, "offset of FB_TON2.stPrivate");
+SL_STATIC_ASSERT(sizeof(FB_TON2) == 104, "size of FB_TON2");
+SL_STATIC_ASSERT(offsetof(SL_GROUP_PRIVATE, dwCtrl) == 0, "offset of SL_GROUP_PRIVATE.dwCtrl");
+SL_STATIC_ASSERT(offsetof(SL_GROUP_PRIVATE, dwDiag) == 4, "offset of SL_GROUP_PRIVATE.dwDiag");
+SL_STATIC_ASSERT(offsetof(SL_GROUP_PRIVATE, dwMembers) == 8, "offset of SL_GROUP_PRIVATE.dwMembers");
+SL_STATIC_ASSERT(offsetof(SL_GROUP_PRIVATE, dwLinks) == 12, "offset of SL_GROUP_PRIVATE.dwLinks");
+SL_STATIC_ASSERT(offsetof(SL_GROUP_PRIVATE, adwCheck) == 16, "offset of SL_GROUP_PRIVATE.adwCheck");
+SL_STATIC_ASSERT(sizeof(SL_GROUP_PRIVATE) == 32, "size of SL_GROUP_PRIVATE");
+SL_STATIC_ASSERT(offsetof(SL_GROUP, bRun) == 0, "offset of SL_GROUP.bRun");
+SL_STATIC_ASSERT(offsetof(SL_GROUP, bErrAck) == 1, "offset of SL_GROUP.bErrAck");
+SL_STATIC_ASSERT(offsetof(SL_GROUP, bModuleFault) == 2, "offset of SL_GROUP.bModuleFault");
+SL_STATIC_ASSERT(offsetof(SL_GROUP, bComErrIn) == 3, "offset of SL_GROUP.bComErrIn");
+SL_STATIC_ASSERT(offsetof(SL_GROUP, bComStartupIn) == 4, "offset of SL_GROUP.bComStartupIn");
+SL_STATIC_ASSERT(offsetof(SL_GROUP, bConnections) == 5, "offset of SL_GROUP.bConnections");
+SL_STATIC_ASSERT(offsetof(SL_GROUP, aReserved0) == 6, "offset of SL_GROUP.aReserved0");
+SL_STATIC_ASSERT(offsetof(SL_GROUP, bComErr) == 8, "offset of SL_GROUP.bComErr");
+SL_STATIC_ASSERT(offsetof(SL_GROUP, bFbErr) == 9, "offset of SL_GROUP.bFbErr");
+SL_STATIC_ASSERT(offsetof(SL_GROUP, bOutErr) == 10, "offset of SL_GROUP.bOutErr");
+SL_STATIC_ASSERT(offsetof(SL_GROUP, bOtherErr) == 11, "offset of SL_GROUP.bOtherErr");
+SL_STATIC_ASSERT(offsetof(SL_GROUP, bComStartup) == 12, "offset of SL_GROUP.bComStartup");
+SL_STATIC_ASSERT(offsetof(SL_GROUP, bFbDeactive) == 13, "offset of SL_GROUP.bFbDeactive");
+SL_STATIC_ASSERT(offsetof(SL_GROUP, bFbRun) == 14, "offset of SL_GROUP.bFbRun");
+SL_STATIC_ASSERT(offsetof(SL_GROUP, bInRun) == 15, "offset of SL_GROUP.bInRun");
+SL_STATIC_ASSERT(offsetof(SL_GROUP, nState) == 16, "offset of SL_GROUP.nState");
+SL_STATIC_ASSERT(offsetof(SL_GROUP, aReserved1) == 17, "offset of SL_GROUP.aReserved1");
+SL_STATIC_ASSERT(offsetof(SL_GROUP, nDiag) == 18, "offset of SL_GROUP.nDiag");
+SL_STATIC_ASSERT(offsetof(SL_GROUP, nFailedMember) == 20, "offset of SL_GROUP.nFailedMember");
+SL_STATIC_ASSERT(offsetof(SL_GROUP, nMembers) == 22, "offset of SL_GROUP.nMembers");
+SL_STATIC_ASSERT(offsetof(SL_GROUP, nLinks) == 24, "offset of SL_GROUP.nLinks");
+SL_STATIC_ASSERT(offsetof(SL_GROUP, aReserved2) == 26, "offset of SL_GROUP.aReserved2");
+SL_STATIC_ASSERT(offsetof(SL_GROUP, stPrivate) == 32, "offset of SL_GROUP.stPrivate");
+SL_STATIC_ASSERT(sizeof(SL_GROUP) == 64, "size of SL_GROUP");
+SL_STATIC_ASSERT(offsetof(SL_LINK, nSrcMember) == 0, "offset of SL_LINK.nSrcMember");
+SL_STATIC_ASSERT(offsetof(SL_LINK, nSrcOffset) == 2, "offset of SL_LINK.nSrcOffset");
+SL_STATIC_ASSERT(offsetof(SL_LINK, nDstMember) == 4, "offset of SL_LINK.nDstMember");
+SL_STATIC_ASSERT(offsetof(SL_LINK, nDstOffset) == 6, "offset of SL_LINK.nDstOffset");
+SL_STATIC_ASSERT(offsetof(SL_LINK, nKind) == 8, "offset of SL_LINK.nKind");
+SL_STATIC_ASSERT(offsetof(SL_LINK, aReserved) == 9, "offset of SL_LINK.aReserved");
+SL_STATIC_ASSERT(sizeof(SL_LINK) == 12, "size of SL_LINK");
 SL_STATIC_ASSERT(offsetof(SL_GUARD_PRIVATE, stHeader) == 0, "offset of SL_GUARD_PRIVATE.stHeader");
 SL_STATIC_ASSERT(offsetof(SL_GUARD_PRIVATE, awTime) == 28, "offset of SL_GUARD_PRIVATE.awTime");
 SL_STATIC_ASSERT(offsetof(SL_GUARD_PRIVATE, atDiscStart) == 44, "offset of SL_GUARD_PRIVATE.atDiscStart");
@@ -2944,6 +2905,71 @@ SL_STATIC_ASSERT(offsetof(FB_OR, nDiag) == 34, "offset of FB_OR.nDiag");
 SL_STATIC_ASSERT(offsetof(FB_OR, aReserved5) == 36, "offset of FB_OR.aReserved5");
 SL_STATIC_ASSERT(offsetof(FB_OR, stPrivate) == 40, "offset of FB_OR.stPrivate");
 SL_STATIC_ASSERT(sizeof(FB_OR) == 72, "size of FB_OR");
+SL_STATIC_ASSERT(offsetof(FB_XOR, bXor1In1) == 0, "offset of FB_XOR.bXor1In1");
+SL_STATIC_ASSERT(offsetof(FB_XOR, bXor2In1) == 1, "offset of FB_XOR.bXor2In1");
+SL_STATIC_ASSERT(offsetof(FB_XOR, bXor1In2) == 2, "offset of FB_XOR.bXor1In2");
+SL_STATIC_ASSERT(offsetof(FB_XOR, bXor2In2) == 3, "offset of FB_XOR.bXor2In2");
+SL_STATIC_ASSERT(offsetof(FB_XOR, bXor1In3) == 4, "offset of FB_XOR.bXor1In3");
+SL_STATIC_ASSERT(offsetof(FB_XOR, bXor2In3) == 5, "offset of FB_XOR.bXor2In3");
+SL_STATIC_ASSERT(offsetof(FB_XOR, bXor1In4) == 6, "offset of FB_XOR.bXor1In4");
+SL_STATIC_ASSERT(offsetof(FB_XOR, bXor2In4) == 7, "offset of FB_XOR.bXor2In4");
+SL_STATIC_ASSERT(offsetof(FB_XOR, bXor1In5) == 8, "offset of FB_XOR.bXor1In5");
+SL_STATIC_ASSERT(offsetof(FB_XOR, bXor2In5) == 9, "offset of FB_XOR.bXor2In5");
+SL_STATIC_ASSERT(offsetof(FB_XOR, bXor1In6) == 10, "offset of FB_XOR.bXor1In6");
+SL_STATIC_ASSERT(offsetof(FB_XOR, bXor2In6) == 11, "offset of FB_XOR.bXor2In6");
+SL_STATIC_ASSERT(offsetof(FB_XOR, bXor1In7) == 12, "offset of FB_XOR.bXor1In7");
+SL_STATIC_ASSERT(offsetof(FB_XOR, bXor2In7) == 13, "offset of FB_XOR.bXor2In7");
+SL_STATIC_ASSERT(offsetof(FB_XOR, bXor1In8) == 14, "offset of FB_XOR.bXor1In8");
+SL_STATIC_ASSERT(offsetof(FB_XOR, bXor2In8) == 15, "offset of FB_XOR.bXor2In8");
+SL_STATIC_ASSERT(offsetof(FB_XOR, bRun) == 16, "offset of FB_XOR.bRun");
+SL_STATIC_ASSERT(offsetof(FB_XOR, bErrAck) == 17, "offset of FB_XOR.bErrAck");
+SL_STATIC_ASSERT(offsetof(FB_XOR, aReserved0) == 18, "offset of FB_XOR.aReserved0");
+SL_STATIC_ASSERT(offsetof(FB_XOR, wInputActive) == 20, "offset of FB_XOR.wInputActive");
+SL_STATIC_ASSERT(offsetof(FB_XOR, aReserved1) == 22, "offset of FB_XOR.aReserved1");
+SL_STATIC_ASSERT(offsetof(FB_XOR, aReserved2) == 24, "offset of FB_XOR.aReserved2");
+SL_STATIC_ASSERT(offsetof(FB_XOR, bXorOut1) == 32, "offset of FB_XOR.bXorOut1");
+SL_STATIC_ASSERT(offsetof(FB_XOR, bXorOut2) == 33, "offset of FB_XOR.bXorOut2");
+SL_STATIC_ASSERT(offsetof(FB_XOR, bXorOut3) == 34, "offset of FB_XOR.bXorOut3");
+SL_STATIC_ASSERT(offsetof(FB_XOR, bXorOut4) == 35, "offset of FB_XOR.bXorOut4");
+SL_STATIC_ASSERT(offsetof(FB_XOR, bXorOut5) == 36, "offset of FB_XOR.bXorOut5");
+SL_STATIC_ASSERT(offsetof(FB_XOR, bXorOut6) == 37, "offset of FB_XOR.bXorOut6");
+SL_STATIC_ASSERT(offsetof(FB_XOR, bXorOut7) == 38, "offset of FB_XOR.bXorOut7");
+SL_STATIC_ASSERT(offsetof(FB_XOR, bXorOut8) == 39, "offset of FB_XOR.bXorOut8");
+SL_STATIC_ASSERT(offsetof(FB_XOR, nState) == 40, "offset of FB_XOR.nState");
+SL_STATIC_ASSERT(offsetof(FB_XOR, aReserved3) == 41, "offset of FB_XOR.aReserved3");
+SL_STATIC_ASSERT(offsetof(FB_XOR, nDiag) == 42, "offset of FB_XOR.nDiag");
+SL_STATIC_ASSERT(offsetof(FB_XOR, aReserved4) == 44, "offset of FB_XOR.aReserved4");
+SL_STATIC_ASSERT(offsetof(FB_XOR, stPrivate) == 48, "offset of FB_XOR.stPrivate");
+SL_STATIC_ASSERT(sizeof(FB_XOR) == 80, "size of FB_XOR");
+SL_STATIC_ASSERT(offsetof(FB_DECOUPLE, aReserved0) == 0, "offset of FB_DECOUPLE.aReserved0");
+SL_STATIC_ASSERT(offsetof(FB_DECOUPLE, bDecIn1) == 8, "offset of FB_DECOUPLE.bDecIn1");
+SL_STATIC_ASSERT(offsetof(FB_DECOUPLE, bDecIn2) == 9, "offset of FB_DECOUPLE.bDecIn2");
+SL_STATIC_ASSERT(offsetof(FB_DECOUPLE, bDecIn3) == 10, "offset of FB_DECOUPLE.bDecIn3");
+SL_STATIC_ASSERT(offsetof(FB_DECOUPLE, bDecIn4) == 11, "offset of FB_DECOUPLE.bDecIn4");
+SL_STATIC_ASSERT(offsetof(FB_DECOUPLE, bDecIn5) == 12, "offset of FB_DECOUPLE.bDecIn5");
+SL_STATIC_ASSERT(offsetof(FB_DECOUPLE, bDecIn6) == 13, "offset of FB_DECOUPLE.bDecIn6");
+SL_STATIC_ASSERT(offsetof(FB_DECOUPLE, bDecIn7) == 14, "offset of FB_DECOUPLE.bDecIn7");
+SL_STATIC_ASSERT(offsetof(FB_DECOUPLE, bDecIn8) == 15, "offset of FB_DECOUPLE.bDecIn8");
+SL_STATIC_ASSERT(offsetof(FB_DECOUPLE, bRun) == 16, "offset of FB_DECOUPLE.bRun");
+SL_STATIC_ASSERT(offsetof(FB_DECOUPLE, bErrAck) == 17, "offset of FB_DECOUPLE.bErrAck");
+SL_STATIC_ASSERT(offsetof(FB_DECOUPLE, aReserved1) == 18, "offset of FB_DECOUPLE.aReserved1");
+SL_STATIC_ASSERT(offsetof(FB_DECOUPLE, wInputActive) == 20, "offset of FB_DECOUPLE.wInputActive");
+SL_STATIC_ASSERT(offsetof(FB_DECOUPLE, aReserved2) == 22, "offset of FB_DECOUPLE.aReserved2");
+SL_STATIC_ASSERT(offsetof(FB_DECOUPLE, aReserved3) == 24, "offset of FB_DECOUPLE.aReserved3");
+SL_STATIC_ASSERT(offsetof(FB_DECOUPLE, bDecOut1) == 32, "offset of FB_DECOUPLE.bDecOut1");
+SL_STATIC_ASSERT(offsetof(FB_DECOUPLE, bDecOut2) == 33, "offset of FB_DECOUPLE.bDecOut2");
+SL_STATIC_ASSERT(offsetof(FB_DECOUPLE, bDecOut3) == 34, "offset of FB_DECOUPLE.bDecOut3");
+SL_STATIC_ASSERT(offsetof(FB_DECOUPLE, bDecOut4) == 35, "offset of FB_DECOUPLE.bDecOut4");
+SL_STATIC_ASSERT(offsetof(FB_DECOUPLE, bDecOut5) == 36, "offset of FB_DECOUPLE.bDecOut5");
+SL_STATIC_ASSERT(offsetof(FB_DECOUPLE, bDecOut6) == 37, "offset of FB_DECOUPLE.bDecOut6");
+SL_STATIC_ASSERT(offsetof(FB_DECOUPLE, bDecOut7) == 38, "offset of FB_DECOUPLE.bDecOut7");
+SL_STATIC_ASSERT(offsetof(FB_DECOUPLE, bDecOut8) == 39, "offset of FB_DECOUPLE.bDecOut8");
+SL_STATIC_ASSERT(offsetof(FB_DECOUPLE, nState) == 40, "offset of FB_DECOUPLE.nState");
+SL_STATIC_ASSERT(offsetof(FB_DECOUPLE, aReserved4) == 41, "offset of FB_DECOUPLE.aReserved4");
+SL_STATIC_ASSERT(offsetof(FB_DECOUPLE, nDiag) == 42, "offset of FB_DECOUPLE.nDiag");
+SL_STATIC_ASSERT(offsetof(FB_DECOUPLE, aReserved5) == 44, "offset of FB_DECOUPLE.aReserved5");
+SL_STATIC_ASSERT(offsetof(FB_DECOUPLE, stPrivate) == 48, "offset of FB_DECOUPLE.stPrivate");
+SL_STATIC_ASSERT(sizeof(FB_DECOUPLE) == 80, "size of FB_DECOUPLE");
 SL_STATIC_ASSERT(offsetof(SL_OPMODE_PRIVATE, stHeader) == 0, "offset of SL_OPMODE_PRIVATE.stHeader");
 SL_STATIC_ASSERT(offsetof(SL_OPMODE_PRIVATE, wDiscTime) == 28, "offset of SL_OPMODE_PRIVATE.wDiscTime");
 SL_STATIC_ASSERT(offsetof(SL_OPMODE_PRIVATE, aReserved) == 30, "offset of SL_OPMODE_PRIVATE.aReserved");
@@ -3010,71 +3036,47 @@ SL_STATIC_ASSERT(offsetof(FB_TWOHAND, nDiag) == 50, "offset of FB_TWOHAND.nDiag"
 SL_STATIC_ASSERT(offsetof(FB_TWOHAND, aReserved5) == 52, "offset of FB_TWOHAND.aReserved5");
 SL_STATIC_ASSERT(offsetof(FB_TWOHAND, stPrivate) == 56, "offset of FB_TWOHAND.stPrivate");
 SL_STATIC_ASSERT(sizeof(FB_TWOHAND) == 104, "size of FB_TWOHAND");
-SL_STATIC_ASSERT(offsetof(FB_XOR, bXor1In1) == 0, "offset of FB_XOR.bXor1In1");
-SL_STATIC_ASSERT(offsetof(FB_XOR, bXor2In1) == 1, "offset of FB_XOR.bXor2In1");
-SL_STATIC_ASSERT(offsetof(FB_XOR, bXor1In2) == 2, "offset of FB_XOR.bXor1In2");
-SL_STATIC_ASSERT(offsetof(FB_XOR, bXor2In2) == 3, "offset of FB_XOR.bXor2In2");
-SL_STATIC_ASSERT(offsetof(FB_XOR, bXor1In3) == 4, "offset of FB_XOR.bXor1In3");
-SL_STATIC_ASSERT(offsetof(FB_XOR, bXor2In3) == 5, "offset of FB_XOR.bXor2In3");
-SL_STATIC_ASSERT(offsetof(FB_XOR, bXor1In4) == 6, "offset of FB_XOR.bXor1In4");
-SL_STATIC_ASSERT(offsetof(FB_XOR, bXor2In4) == 7, "offset of FB_XOR.bXor2In4");
-SL_STATIC_ASSERT(offsetof(FB_XOR, bXor1In5) == 8, "offset of FB_XOR.bXor1In5");
-SL_STATIC_ASSERT(offsetof(FB_XOR, bXor2In5) == 9, "offset of FB_XOR.bXor2In5");
-SL_STATIC_ASSERT(offsetof(FB_XOR, bXor1In6) == 10, "offset of FB_XOR.bXor1In6");
-SL_STATIC_ASSERT(offsetof(FB_XOR, bXor2In6) == 11, "offset of FB_XOR.bXor2In6");
-SL_STATIC_ASSERT(offsetof(FB_XOR, bXor1In7) == 12, "offset of FB_XOR.bXor1In7");
-SL_STATIC_ASSERT(offsetof(FB_XOR, bXor2In7) == 13, "offset of FB_XOR.bXor2In7");
-SL_STATIC_ASSERT(offsetof(FB_XOR, bXor1In8) == 14, "offset of FB_XOR.bXor1In8");
-SL_STATIC_ASSERT(offsetof(FB_XOR, bXor2In8) == 15, "offset of FB_XOR.bXor2In8");
-SL_STATIC_ASSERT(offsetof(FB_XOR, bRun) == 16, "offset of FB_XOR.bRun");
-SL_STATIC_ASSERT(offsetof(FB_XOR, bErrAck) == 17, "offset of FB_XOR.bErrAck");
-SL_STATIC_ASSERT(offsetof(FB_XOR, aReserved0) == 18, "offset of FB_XOR.aReserved0");
-SL_STATIC_ASSERT(offsetof(FB_XOR, wInputActive) == 20, "offset of FB_XOR.wInputActive");
-SL_STATIC_ASSERT(offsetof(FB_XOR, aReserved1) == 22, "offset of FB_XOR.aReserved1");
-SL_STATIC_ASSERT(offsetof(FB_XOR, aReserved2) == 24, "offset of FB_XOR.aReserved2");
-SL_STATIC_ASSERT(offsetof(FB_XOR, bXorOut1) == 32, "offset of FB_XOR.bXorOut1");
-SL_STATIC_ASSERT(offsetof(FB_XOR, bXorOut2) == 33, "offset of FB_XOR.bXorOut2");
-SL_STATIC_ASSERT(offsetof(FB_XOR, bXorOut3) == 34, "offset of FB_XOR.bXorOut3");
-SL_STATIC_ASSERT(offsetof(FB_XOR, bXorOut4) == 35, "offset of FB_XOR.bXorOut4");
-SL_STATIC_ASSERT(offsetof(FB_XOR, bXorOut5) == 36, "offset of FB_XOR.bXorOut5");
-SL_STATIC_ASSERT(offsetof(FB_XOR, bXorOut6) == 37, "offset of FB_XOR.bXorOut6");
-SL_STATIC_ASSERT(offsetof(FB_XOR, bXorOut7) == 38, "offset of FB_XOR.bXorOut7");
-SL_STATIC_ASSERT(offsetof(FB_XOR, bXorOut8) == 39, "offset of FB_XOR.bXorOut8");
-SL_STATIC_ASSERT(offsetof(FB_XOR, nState) == 40, "offset of FB_XOR.nState");
-SL_STATIC_ASSERT(offsetof(FB_XOR, aReserved3) == 41, "offset of FB_XOR.aReserved3");
-SL_STATIC_ASSERT(offsetof(FB_XOR, nDiag) == 42, "offset of FB_XOR.nDiag");
-SL_STATIC_ASSERT(offsetof(FB_XOR, aReserved4) == 44, "offset of FB_XOR.aReserved4");
-SL_STATIC_ASSERT(offsetof(FB_XOR, stPrivate) == 48, "offset of FB_XOR.stPrivate");
-SL_STATIC_ASSERT(sizeof(FB_XOR) == 80, "size of FB_XOR");
-SL_STATIC_ASSERT(offsetof(FB_DECOUPLE, aReserved0) == 0, "offset of FB_DECOUPLE.aReserved0");
-SL_STATIC_ASSERT(offsetof(FB_DECOUPLE, bDecIn1) == 8, "offset of FB_DECOUPLE.bDecIn1");
-SL_STATIC_ASSERT(offsetof(FB_DECOUPLE, bDecIn2) == 9, "offset of FB_DECOUPLE.bDecIn2");
-SL_STATIC_ASSERT(offsetof(FB_DECOUPLE, bDecIn3) == 10, "offset of FB_DECOUPLE.bDecIn3");
-SL_STATIC_ASSERT(offsetof(FB_DECOUPLE, bDecIn4) == 11, "offset of FB_DECOUPLE.bDecIn4");
-SL_STATIC_ASSERT(offsetof(FB_DECOUPLE, bDecIn5) == 12, "offset of FB_DECOUPLE.bDecIn5");
-SL_STATIC_ASSERT(offsetof(FB_DECOUPLE, bDecIn6) == 13, "offset of FB_DECOUPLE.bDecIn6");
-SL_STATIC_ASSERT(offsetof(FB_DECOUPLE, bDecIn7) == 14, "offset of FB_DECOUPLE.bDecIn7");
-SL_STATIC_ASSERT(offsetof(FB_DECOUPLE, bDecIn8) == 15, "offset of FB_DECOUPLE.bDecIn8");
-SL_STATIC_ASSERT(offsetof(FB_DECOUPLE, bRun) == 16, "offset of FB_DECOUPLE.bRun");
-SL_STATIC_ASSERT(offsetof(FB_DECOUPLE, bErrAck) == 17, "offset of FB_DECOUPLE.bErrAck");
-SL_STATIC_ASSERT(offsetof(FB_DECOUPLE, aReserved1) == 18, "offset of FB_DECOUPLE.aReserved1");
-SL_STATIC_ASSERT(offsetof(FB_DECOUPLE, wInputActive) == 20, "offset of FB_DECOUPLE.wInputActive");
-SL_STATIC_ASSERT(offsetof(FB_DECOUPLE, aReserved2) == 22, "offset of FB_DECOUPLE.aReserved2");
-SL_STATIC_ASSERT(offsetof(FB_DECOUPLE, aReserved3) == 24, "offset of FB_DECOUPLE.aReserved3");
-SL_STATIC_ASSERT(offsetof(FB_DECOUPLE, bDecOut1) == 32, "offset of FB_DECOUPLE.bDecOut1");
-SL_STATIC_ASSERT(offsetof(FB_DECOUPLE, bDecOut2) == 33, "offset of FB_DECOUPLE.bDecOut2");
-SL_STATIC_ASSERT(offsetof(FB_DECOUPLE, bDecOut3) == 34, "offset of FB_DECOUPLE.bDecOut3");
-SL_STATIC_ASSERT(offsetof(FB_DECOUPLE, bDecOut4) == 35, "offset of FB_DECOUPLE.bDecOut4");
-SL_STATIC_ASSERT(offsetof(FB_DECOUPLE, bDecOut5) == 36, "offset of FB_DECOUPLE.bDecOut5");
-SL_STATIC_ASSERT(offsetof(FB_DECOUPLE, bDecOut6) == 37, "offset of FB_DECOUPLE.bDecOut6");
-SL_STATIC_ASSERT(offsetof(FB_DECOUPLE, bDecOut7) == 38, "offset of FB_DECOUPLE.bDecOut7");
-SL_STATIC_ASSERT(offsetof(FB_DECOUPLE, bDecOut8) == 39, "offset of FB_DECOUPLE.bDecOut8");
-SL_STATIC_ASSERT(offsetof(FB_DECOUPLE, nState) == 40, "offset of FB_DECOUPLE.nState");
-SL_STATIC_ASSERT(offsetof(FB_DECOUPLE, aReserved4) == 41, "offset of FB_DECOUPLE.aReserved4");
-SL_STATIC_ASSERT(offsetof(FB_DECOUPLE, nDiag) == 42, "offset of FB_DECOUPLE.nDiag");
-SL_STATIC_ASSERT(offsetof(FB_DECOUPLE, aReserved5) == 44, "offset of FB_DECOUPLE.aReserved5");
-SL_STATIC_ASSERT(offsetof(FB_DECOUPLE, stPrivate) == 48, "offset of FB_DECOUPLE.stPrivate");
-SL_STATIC_ASSERT(sizeof(FB_DECOUPLE) == 80, "size of FB_DECOUPLE");
+SL_STATIC_ASSERT(offsetof(SL_MUTING_PRIVATE, stHeader) == 0, "offset of SL_MUTING_PRIVATE.stHeader");
+SL_STATIC_ASSERT(offsetof(SL_MUTING_PRIVATE, tMaxMutingTime) == 28, "offset of SL_MUTING_PRIVATE.tMaxMutingTime");
+SL_STATIC_ASSERT(offsetof(SL_MUTING_PRIVATE, awTime) == 32, "offset of SL_MUTING_PRIVATE.awTime");
+SL_STATIC_ASSERT(offsetof(SL_MUTING_PRIVATE, atDiscStart) == 44, "offset of SL_MUTING_PRIVATE.atDiscStart");
+SL_STATIC_ASSERT(offsetof(SL_MUTING_PRIVATE, atFilterStart) == 56, "offset of SL_MUTING_PRIVATE.atFilterStart");
+SL_STATIC_ASSERT(sizeof(SL_MUTING_PRIVATE) == 72, "size of SL_MUTING_PRIVATE");
+SL_STATIC_ASSERT(offsetof(FB_MUTING, bMutingEnable) == 0, "offset of FB_MUTING.bMutingEnable");
+SL_STATIC_ASSERT(offsetof(FB_MUTING, bEDM1) == 1, "offset of FB_MUTING.bEDM1");
+SL_STATIC_ASSERT(offsetof(FB_MUTING, bEDM2) == 2, "offset of FB_MUTING.bEDM2");
+SL_STATIC_ASSERT(offsetof(FB_MUTING, aReserved0) == 3, "offset of FB_MUTING.aReserved0");
+SL_STATIC_ASSERT(offsetof(FB_MUTING, bMutingIn1) == 8, "offset of FB_MUTING.bMutingIn1");
+SL_STATIC_ASSERT(offsetof(FB_MUTING, bMutingIn2) == 9, "offset of FB_MUTING.bMutingIn2");
+SL_STATIC_ASSERT(offsetof(FB_MUTING, bOSSDIn1) == 10, "offset of FB_MUTING.bOSSDIn1");
+SL_STATIC_ASSERT(offsetof(FB_MUTING, bOSSDIn2) == 11, "offset of FB_MUTING.bOSSDIn2");
+SL_STATIC_ASSERT(offsetof(FB_MUTING, bMutingIn3) == 12, "offset of FB_MUTING.bMutingIn3");
+SL_STATIC_ASSERT(offsetof(FB_MUTING, bMutingIn4) == 13, "offset of FB_MUTING.bMutingIn4");
+SL_STATIC_ASSERT(offsetof(FB_MUTING, aReserved1) == 14, "offset of FB_MUTING.aReserved1");
+SL_STATIC_ASSERT(offsetof(FB_MUTING, bRun) == 16, "offset of FB_MUTING.bRun");
+SL_STATIC_ASSERT(offsetof(FB_MUTING, bErrAck) == 17, "offset of FB_MUTING.bErrAck");
+SL_STATIC_ASSERT(offsetof(FB_MUTING, aReserved2) == 18, "offset of FB_MUTING.aReserved2");
+SL_STATIC_ASSERT(offsetof(FB_MUTING, tDiscTime12) == 20, "offset of FB_MUTING.tDiscTime12");
+SL_STATIC_ASSERT(offsetof(FB_MUTING, tDiscTimeOSSD) == 24, "offset of FB_MUTING.tDiscTimeOSSD");
+SL_STATIC_ASSERT(offsetof(FB_MUTING, tDiscTime34) == 28, "offset of FB_MUTING.tDiscTime34");
+SL_STATIC_ASSERT(offsetof(FB_MUTING, tFilterTime) == 32, "offset of FB_MUTING.tFilterTime");
+SL_STATIC_ASSERT(offsetof(FB_MUTING, tMaxMutingTime) == 36, "offset of FB_MUTING.tMaxMutingTime");
+SL_STATIC_ASSERT(offsetof(FB_MUTING, tMuteDelOutDelay) == 40, "offset of FB_MUTING.tMuteDelOutDelay");
+SL_STATIC_ASSERT(offsetof(FB_MUTING, wInputActive) == 44, "offset of FB_MUTING.wInputActive");
+SL_STATIC_ASSERT(offsetof(FB_MUTING, wInputNegated) == 46, "offset of FB_MUTING.wInputNegated");
+SL_STATIC_ASSERT(offsetof(FB_MUTING, dwOptions) == 48, "offset of FB_MUTING.dwOptions");
+SL_STATIC_ASSERT(offsetof(FB_MUTING, aReserved3) == 52, "offset of FB_MUTING.aReserved3");
+SL_STATIC_ASSERT(offsetof(FB_MUTING, bError) == 56, "offset of FB_MUTING.bError");
+SL_STATIC_ASSERT(offsetof(FB_MUTING, bMutingActive) == 57, "offset of FB_MUTING.bMutingActive");
+SL_STATIC_ASSERT(offsetof(FB_MUTING, bMuteOut) == 58, "offset of FB_MUTING.bMuteOut");
+SL_STATIC_ASSERT(offsetof(FB_MUTING, bMuteDelOut) == 59, "offset of FB_MUTING.bMuteDelOut");
+SL_STATIC_ASSERT(offsetof(FB_MUTING, aReserved4) == 60, "offset of FB_MUTING.aReserved4");
+SL_STATIC_ASSERT(offsetof(FB_MUTING, nState) == 64, "offset of FB_MUTING.nState");
+SL_STATIC_ASSERT(offsetof(FB_MUTING, aReserved5) == 65, "offset of FB_MUTING.aReserved5");
+SL_STATIC_ASSERT(offsetof(FB_MUTING, nDiag) == 66, "offset of FB_MUTING.nDiag");
+SL_STATIC_ASSERT(offsetof(FB_MUTING, aReserved6) == 68, "offset of FB_MUTING.aReserved6");
+SL_STATIC_ASSERT(offsetof(FB_MUTING, stPrivate) == 72, "offset of FB_MUTING.stPrivate");
+SL_STATIC_ASSERT(sizeof(FB_MUTING) == 144, "size of FB_MUTING");
 SL_STATIC_ASSERT(offsetof(SL_EDM_PRIVATE, stHeader) == 0, "offset of SL_EDM_PRIVATE.stHeader");
 SL_STATIC_ASSERT(offsetof(SL_EDM_PRIVATE, awTime) == 28, "offset of SL_EDM_PRIVATE.awTime");
 SL_STATIC_ASSERT(sizeof(SL_EDM_PRIVATE) == 32, "size of SL_EDM_PRIVATE");
@@ -3136,14 +3138,6 @@ SL_STATIC_ASSERT(offsetof(FB_SR, nDiag) == 34, "offset of FB_SR.nDiag");
 SL_STATIC_ASSERT(offsetof(FB_SR, aReserved6) == 36, "offset of FB_SR.aReserved6");
 SL_STATIC_ASSERT(offsetof(FB_SR, stPrivate) == 40, "offset of FB_SR.stPrivate");
 SL_STATIC_ASSERT(sizeof(FB_SR) == 72, "size of FB_SR");
-SL_STATIC_ASSERT(offsetof(SL_TIMER_PRIVATE, stHeader) == 0, "offset of SL_TIMER_PRIVATE.stHeader");
-SL_STATIC_ASSERT(offsetof(SL_TIMER_PRIVATE, dwDelay) == 28, "offset of SL_TIMER_PRIVATE.dwDelay");
-SL_STATIC_ASSERT(offsetof(SL_TIMER_PRIVATE, wTimeBase) == 32, "offset of SL_TIMER_PRIVATE.wTimeBase");
-SL_STATIC_ASSERT(offsetof(SL_TIMER_PRIVATE, aReserved) == 34, "offset of SL_TIMER_PRIVATE.aReserved");
-SL_STATIC_ASSERT(offsetof(SL_TIMER_PRIVATE, tPhaseCheck) == 36, "offset of SL_TIMER_PRIVATE.tPhaseCheck");
-SL_STATIC_ASSERT(offsetof(SL_TIMER_PRIVATE, tElapsed) == 40, "offset of SL_TIMER_PRIVATE.tElapsed");
-SL_STATIC_ASSERT(offsetof(SL_TIMER_PRIVATE, tElapsedCheck) == 44, "offset of SL_TIMER_PRIVATE.tElapsedCheck");
-SL_STATIC_ASSERT(sizeof(SL_TIMER_PRIVATE) == 48, "size of SL_TIMER_PRIVATE");
 SL_STATIC_ASSERT(offsetof(FB_TON, aReserved0) == 0, "offset of FB_TON.aReserved0");
 SL_STATIC_ASSERT(offsetof(FB_TON, bTonIn1) == 8, "offset of FB_TON.bTonIn1");
 SL_STATIC_ASSERT(offsetof(FB_TON, aReserved1) == 9, "offset of FB_TON.aReserved1");
@@ -3164,29 +3158,6 @@ SL_STATIC_ASSERT(offsetof(FB_TON, nDiag) == 42, "offset of FB_TON.nDiag");
 SL_STATIC_ASSERT(offsetof(FB_TON, aReserved7) == 44, "offset of FB_TON.aReserved7");
 SL_STATIC_ASSERT(offsetof(FB_TON, stPrivate) == 48, "offset of FB_TON.stPrivate");
 SL_STATIC_ASSERT(sizeof(FB_TON) == 96, "size of FB_TON");
-SL_STATIC_ASSERT(offsetof(FB_TON2, aReserved0) == 0, "offset of FB_TON2.aReserved0");
-SL_STATIC_ASSERT(offsetof(FB_TON2, bTonIn1) == 8, "offset of FB_TON2.bTonIn1");
-SL_STATIC_ASSERT(offsetof(FB_TON2, bEnable) == 9, "offset of FB_TON2.bEnable");
-SL_STATIC_ASSERT(offsetof(FB_TON2, aReserved1) == 10, "offset of FB_TON2.aReserved1");
-SL_STATIC_ASSERT(offsetof(FB_TON2, bRun) == 16, "offset of FB_TON2.bRun");
-SL_STATIC_ASSERT(offsetof(FB_TON2, bErrAck) == 17, "offset of FB_TON2.bErrAck");
-SL_STATIC_ASSERT(offsetof(FB_TON2, aReserved2) == 18, "offset of FB_TON2.aReserved2");
-SL_STATIC_ASSERT(offsetof(FB_TON2, tDelay) == 20, "offset of FB_TON2.tDelay");
-SL_STATIC_ASSERT(offsetof(FB_TON2, nTimeBase) == 24, "offset of FB_TON2.nTimeBase");
-SL_STATIC_ASSERT(offsetof(FB_TON2, wInputActive) == 26, "offset of FB_TON2.wInputActive");
-SL_STATIC_ASSERT(offsetof(FB_TON2, wInputNegated) == 28, "offset of FB_TON2.wInputNegated");
-SL_STATIC_ASSERT(offsetof(FB_TON2, aReserved3) == 30, "offset of FB_TON2.aReserved3");
-SL_STATIC_ASSERT(offsetof(FB_TON2, dwOptions) == 32, "offset of FB_TON2.dwOptions");
-SL_STATIC_ASSERT(offsetof(FB_TON2, aReserved4) == 36, "offset of FB_TON2.aReserved4");
-SL_STATIC_ASSERT(offsetof(FB_TON2, aReserved5) == 40, "offset of FB_TON2.aReserved5");
-SL_STATIC_ASSERT(offsetof(FB_TON2, bTonOut) == 41, "offset of FB_TON2.bTonOut");
-SL_STATIC_ASSERT(offsetof(FB_TON2, aReserved6) == 42, "offset of FB_TON2.aReserved6");
-SL_STATIC_ASSERT(offsetof(FB_TON2, nState) == 48, "offset of FB_TON2.nState");
-SL_STATIC_ASSERT(offsetof(FB_TON2, aReserved7) == 49, "offset of FB_TON2.aReserved7");
-SL_STATIC_ASSERT(offsetof(FB_TON2, nDiag) == 50, "offset of FB_TON2.nDiag");
-SL_STATIC_ASSERT(offsetof(FB_TON2, aReserved8) == 52, "offset of FB_TON2.aReserved8");
-SL_STATIC_ASSERT(offsetof(FB_TON2, stPrivate) == 56, "offset of FB_TON2.stPrivate");
-SL_STATIC_ASSERT(sizeof(FB_TON2) == 104, "size of FB_TON2");
 SL_STATIC_ASSERT(offsetof(FB_TOF, aReserved0) == 0, "offset of FB_TOF.aReserved0");
 SL_STATIC_ASSERT(offsetof(FB_TOF, bTofIn1) == 8, "offset of FB_TOF.bTofIn1");
 SL_STATIC_ASSERT(offsetof(FB_TOF, aReserved1) == 9, "offset of FB_TOF.aReserved1");
@@ -3207,83 +3178,5 @@ SL_STATIC_ASSERT(offsetof(FB_TOF, nDiag) == 42, "offset of FB_TOF.nDiag");
 SL_STATIC_ASSERT(offsetof(FB_TOF, aReserved7) == 44, "offset of FB_TOF.aReserved7");
 SL_STATIC_ASSERT(offsetof(FB_TOF, stPrivate) == 48, "offset of FB_TOF.stPrivate");
 SL_STATIC_ASSERT(sizeof(FB_TOF) == 96, "size of FB_TOF");
-SL_STATIC_ASSERT(offsetof(SL_MUTING_PRIVATE, stHeader) == 0, "offset of SL_MUTING_PRIVATE.stHeader");
-SL_STATIC_ASSERT(offsetof(SL_MUTING_PRIVATE, tMaxMutingTime) == 28, "offset of SL_MUTING_PRIVATE.tMaxMutingTime");
-SL_STATIC_ASSERT(offsetof(SL_MUTING_PRIVATE, awTime) == 32, "offset of SL_MUTING_PRIVATE.awTime");
-SL_STATIC_ASSERT(offsetof(SL_MUTING_PRIVATE, atDiscStart) == 44, "offset of SL_MUTING_PRIVATE.atDiscStart");
-SL_STATIC_ASSERT(offsetof(SL_MUTING_PRIVATE, atFilterStart) == 56, "offset of SL_MUTING_PRIVATE.atFilterStart");
-SL_STATIC_ASSERT(sizeof(SL_MUTING_PRIVATE) == 72, "size of SL_MUTING_PRIVATE");
-SL_STATIC_ASSERT(offsetof(FB_MUTING, bMutingEnable) == 0, "offset of FB_MUTING.bMutingEnable");
-SL_STATIC_ASSERT(offsetof(FB_MUTING, bEDM1) == 1, "offset of FB_MUTING.bEDM1");
-SL_STATIC_ASSERT(offsetof(FB_MUTING, bEDM2) == 2, "offset of FB_MUTING.bEDM2");
-SL_STATIC_ASSERT(offsetof(FB_MUTING, aReserved0) == 3, "offset of FB_MUTING.aReserved0");
-SL_STATIC_ASSERT(offsetof(FB_MUTING, bMutingIn1) == 8, "offset of FB_MUTING.bMutingIn1");
-SL_STATIC_ASSERT(offsetof(FB_MUTING, bMutingIn2) == 9, "offset of FB_MUTING.bMutingIn2");
-SL_STATIC_ASSERT(offsetof(FB_MUTING, bOSSDIn1) == 10, "offset of FB_MUTING.bOSSDIn1");
-SL_STATIC_ASSERT(offsetof(FB_MUTING, bOSSDIn2) == 11, "offset of FB_MUTING.bOSSDIn2");
-SL_STATIC_ASSERT(offsetof(FB_MUTING, bMutingIn3) == 12, "offset of FB_MUTING.bMutingIn3");
-SL_STATIC_ASSERT(offsetof(FB_MUTING, bMutingIn4) == 13, "offset of FB_MUTING.bMutingIn4");
-SL_STATIC_ASSERT(offsetof(FB_MUTING, aReserved1) == 14, "offset of FB_MUTING.aReserved1");
-SL_STATIC_ASSERT(offsetof(FB_MUTING, bRun) == 16, "offset of FB_MUTING.bRun");
-SL_STATIC_ASSERT(offsetof(FB_MUTING, bErrAck) == 17, "offset of FB_MUTING.bErrAck");
-SL_STATIC_ASSERT(offsetof(FB_MUTING, aReserved2) == 18, "offset of FB_MUTING.aReserved2");
-SL_STATIC_ASSERT(offsetof(FB_MUTING, tDiscTime12) == 20, "offset of FB_MUTING.tDiscTime12");
-SL_STATIC_ASSERT(offsetof(FB_MUTING, tDiscTimeOSSD) == 24, "offset of FB_MUTING.tDiscTimeOSSD");
-SL_STATIC_ASSERT(offsetof(FB_MUTING, tDiscTime34) == 28, "offset of FB_MUTING.tDiscTime34");
-SL_STATIC_ASSERT(offsetof(FB_MUTING, tFilterTime) == 32, "offset of FB_MUTING.tFilterTime");
-SL_STATIC_ASSERT(offsetof(FB_MUTING, tMaxMutingTime) == 36, "offset of FB_MUTING.tMaxMutingTime");
-SL_STATIC_ASSERT(offsetof(FB_MUTING, tMuteDelOutDelay) == 40, "offset of FB_MUTING.tMuteDelOutDelay");
-SL_STATIC_ASSERT(offsetof(FB_MUTING, wInputActive) == 44, "offset of FB_MUTING.wInputActive");
-SL_STATIC_ASSERT(offsetof(FB_MUTING, wInputNegated) == 46, "offset of FB_MUTING.wInputNegated");
-SL_STATIC_ASSERT(offsetof(FB_MUTING, dwOptions) == 48, "offset of FB_MUTING.dwOptions");
-SL_STATIC_ASSERT(offsetof(FB_MUTING, aReserved3) == 52, "offset of FB_MUTING.aReserved3");
-SL_STATIC_ASSERT(offsetof(FB_MUTING, bError) == 56, "offset of FB_MUTING.bError");
-SL_STATIC_ASSERT(offsetof(FB_MUTING, bMutingActive) == 57, "offset of FB_MUTING.bMutingActive");
-SL_STATIC_ASSERT(offsetof(FB_MUTING, bMuteOut) == 58, "offset of FB_MUTING.bMuteOut");
-SL_STATIC_ASSERT(offsetof(FB_MUTING, bMuteDelOut) == 59, "offset of FB_MUTING.bMuteDelOut");
-SL_STATIC_ASSERT(offsetof(FB_MUTING, aReserved4) == 60, "offset of FB_MUTING.aReserved4");
-SL_STATIC_ASSERT(offsetof(FB_MUTING, nState) == 64, "offset of FB_MUTING.nState");
-SL_STATIC_ASSERT(offsetof(FB_MUTING, aReserved5) == 65, "offset of FB_MUTING.aReserved5");
-SL_STATIC_ASSERT(offsetof(FB_MUTING, nDiag) == 66, "offset of FB_MUTING.nDiag");
-SL_STATIC_ASSERT(offsetof(FB_MUTING, aReserved6) == 68, "offset of FB_MUTING.aReserved6");
-SL_STATIC_ASSERT(offsetof(FB_MUTING, stPrivate) == 72, "offset of FB_MUTING.stPrivate");
-SL_STATIC_ASSERT(sizeof(FB_MUTING) == 144, "size of FB_MUTING");
-SL_STATIC_ASSERT(offsetof(SL_GROUP_PRIVATE, dwCtrl) == 0, "offset of SL_GROUP_PRIVATE.dwCtrl");
-SL_STATIC_ASSERT(offsetof(SL_GROUP_PRIVATE, dwDiag) == 4, "offset of SL_GROUP_PRIVATE.dwDiag");
-SL_STATIC_ASSERT(offsetof(SL_GROUP_PRIVATE, dwMembers) == 8, "offset of SL_GROUP_PRIVATE.dwMembers");
-SL_STATIC_ASSERT(offsetof(SL_GROUP_PRIVATE, dwLinks) == 12, "offset of SL_GROUP_PRIVATE.dwLinks");
-SL_STATIC_ASSERT(offsetof(SL_GROUP_PRIVATE, adwCheck) == 16, "offset of SL_GROUP_PRIVATE.adwCheck");
-SL_STATIC_ASSERT(sizeof(SL_GROUP_PRIVATE) == 32, "size of SL_GROUP_PRIVATE");
-SL_STATIC_ASSERT(offsetof(SL_GROUP, bRun) == 0, "offset of SL_GROUP.bRun");
-SL_STATIC_ASSERT(offsetof(SL_GROUP, bErrAck) == 1, "offset of SL_GROUP.bErrAck");
-SL_STATIC_ASSERT(offsetof(SL_GROUP, bModuleFault) == 2, "offset of SL_GROUP.bModuleFault");
-SL_STATIC_ASSERT(offsetof(SL_GROUP, bComErrIn) == 3, "offset of SL_GROUP.bComErrIn");
-SL_STATIC_ASSERT(offsetof(SL_GROUP, bComStartupIn) == 4, "offset of SL_GROUP.bComStartupIn");
-SL_STATIC_ASSERT(offsetof(SL_GROUP, bConnections) == 5, "offset of SL_GROUP.bConnections");
-SL_STATIC_ASSERT(offsetof(SL_GROUP, aReserved0) == 6, "offset of SL_GROUP.aReserved0");
-SL_STATIC_ASSERT(offsetof(SL_GROUP, bComErr) == 8, "offset of SL_GROUP.bComErr");
-SL_STATIC_ASSERT(offsetof(SL_GROUP, bFbErr) == 9, "offset of SL_GROUP.bFbErr");
-SL_STATIC_ASSERT(offsetof(SL_GROUP, bOutErr) == 10, "offset of SL_GROUP.bOutErr");
-SL_STATIC_ASSERT(offsetof(SL_GROUP, bOtherErr) == 11, "offset of SL_GROUP.bOtherErr");
-SL_STATIC_ASSERT(offsetof(SL_GROUP, bComStartup) == 12, "offset of SL_GROUP.bComStartup");
-SL_STATIC_ASSERT(offsetof(SL_GROUP, bFbDeactive) == 13, "offset of SL_GROUP.bFbDeactive");
-SL_STATIC_ASSERT(offsetof(SL_GROUP, bFbRun) == 14, "offset of SL_GROUP.bFbRun");
-SL_STATIC_ASSERT(offsetof(SL_GROUP, bInRun) == 15, "offset of SL_GROUP.bInRun");
-SL_STATIC_ASSERT(offsetof(SL_GROUP, nState) == 16, "offset of SL_GROUP.nState");
-SL_STATIC_ASSERT(offsetof(SL_GROUP, aReserved1) == 17, "offset of SL_GROUP.aReserved1");
-SL_STATIC_ASSERT(offsetof(SL_GROUP, nDiag) == 18, "offset of SL_GROUP.nDiag");
-SL_STATIC_ASSERT(offsetof(SL_GROUP, nFailedMember) == 20, "offset of SL_GROUP.nFailedMember");
-SL_STATIC_ASSERT(offsetof(SL_GROUP, nMembers) == 22, "offset of SL_GROUP.nMembers");
-SL_STATIC_ASSERT(offsetof(SL_GROUP, nLinks) == 24, "offset of SL_GROUP.nLinks");
-SL_STATIC_ASSERT(offsetof(SL_GROUP, aReserved2) == 26, "offset of SL_GROUP.aReserved2");
-SL_STATIC_ASSERT(offsetof(SL_GROUP, stPrivate) == 32, "offset of SL_GROUP.stPrivate");
-SL_STATIC_ASSERT(sizeof(SL_GROUP) == 64, "size of SL_GROUP");
-SL_STATIC_ASSERT(offsetof(SL_LINK, nSrcMember) == 0, "offset of SL_LINK.nSrcMember");
-SL_STATIC_ASSERT(offsetof(SL_LINK, nSrcOffset) == 2, "offset of SL_LINK.nSrcOffset");
-SL_STATIC_ASSERT(offsetof(SL_LINK, nDstMember) == 4, "offset of SL_LINK.nDstMember");
-SL_STATIC_ASSERT(offsetof(SL_LINK, nDstOffset) == 6, "offset of SL_LINK.nDstOffset");
-SL_STATIC_ASSERT(offsetof(SL_LINK, nKind) == 8, "offset of SL_LINK.nKind");
-SL_STATIC_ASSERT(offsetof(SL_LINK, aReserved) == 9, "offset of SL_LINK.aReserved");
-SL_STATIC_ASSERT(sizeof(SL_LINK) == 12, "size of SL_LINK");
 
 #endif  /* SAFELOGIC_H */

@@ -5,11 +5,9 @@
 
 use crate::group::{self, Member, Members, SL_LINK_BOOL};
 use crate::prim::envelope::{self, Block};
+use crate::registry::Registered;
 use crate::types::*;
-use crate::{
-    FB_AND, FB_DECOUPLE, FB_EDM, FB_ESTOP, FB_MON, FB_MUTING, FB_OPMODE, FB_OR, FB_RS, FB_SR,
-    FB_TOF, FB_TON, FB_TON2, FB_TWOHAND, FB_XOR, SL_GROUP, SL_LINK, SL_MEMBER,
-};
+use crate::{FB_TON2, SL_GROUP, SL_LINK, SL_MEMBER};
 use core::ffi::{c_char, c_void};
 
 /// Runs `$body`; a panic becomes `$on_panic` instead of unwinding into C.
@@ -65,34 +63,6 @@ fn block_call<B: Block>(p: *mut B, f: impl FnOnce(&mut B) -> i32) -> i32 {
         },
         f(&mut *fb)
     )
-}
-
-/// Validates and latches the parameters of an FB_ESTOP and resets it to power-up (STOP,
-/// outputs FALSE). Does not modify any input field. Returns SL_OK or SL_E_CONFIG.
-#[no_mangle]
-pub extern "C" fn sl_estop_init(fb: *mut FB_ESTOP) -> i32 {
-    block_call(fb, envelope::init)
-}
-
-/// One task cycle of an FB_ESTOP at `tNow` (monotonic ms, may wrap at 2^32).
-#[no_mangle]
-#[allow(non_snake_case)]
-pub extern "C" fn sl_estop_cycle(fb: *mut FB_ESTOP, tNow: u32) -> i32 {
-    block_call(fb, |fb| envelope::cycle(fb, tNow))
-}
-
-/// Validates and latches the parameters of an FB_MON and resets it to power-up (STOP,
-/// outputs FALSE). Does not modify any input field. Returns SL_OK or SL_E_CONFIG.
-#[no_mangle]
-pub extern "C" fn sl_mon_init(fb: *mut FB_MON) -> i32 {
-    block_call(fb, envelope::init)
-}
-
-/// One task cycle of an FB_MON at `tNow` (monotonic ms, may wrap at 2^32).
-#[no_mangle]
-#[allow(non_snake_case)]
-pub extern "C" fn sl_mon_cycle(fb: *mut FB_MON, tNow: u32) -> i32 {
-    block_call(fb, |fb| envelope::cycle(fb, tNow))
 }
 
 /// Static, NUL-terminated text for a status code (never NULL).
@@ -151,170 +121,18 @@ pub extern "C" fn sl_version() -> *const c_char {
 
 const VERSION: &str = concat!(env!("CARGO_PKG_VERSION"), "\0");
 
-/// Validates and latches the parameters of an FB_AND and resets it to power-up (STOP).
-#[no_mangle]
-pub extern "C" fn sl_and_init(fb: *mut FB_AND) -> i32 {
-    block_call(fb, envelope::init)
-}
-
-/// One task cycle of an FB_AND at `tNow` (monotonic ms).
-#[no_mangle]
-#[allow(non_snake_case)]
-pub extern "C" fn sl_and_cycle(fb: *mut FB_AND, tNow: u32) -> i32 {
-    block_call(fb, |fb| envelope::cycle(fb, tNow))
-}
-
-/// Validates and latches the parameters of an FB_OR and resets it to power-up (STOP).
-#[no_mangle]
-pub extern "C" fn sl_or_init(fb: *mut FB_OR) -> i32 {
-    block_call(fb, envelope::init)
-}
-
-/// One task cycle of an FB_OR at `tNow` (monotonic ms).
-#[no_mangle]
-#[allow(non_snake_case)]
-pub extern "C" fn sl_or_cycle(fb: *mut FB_OR, tNow: u32) -> i32 {
-    block_call(fb, |fb| envelope::cycle(fb, tNow))
-}
-
-/// Validates and latches the parameters of an FB_OPMODE and resets it to power-up (STOP,
-/// outputs FALSE). Does not modify any input field. Returns SL_OK or SL_E_CONFIG.
-#[no_mangle]
-pub extern "C" fn sl_opmode_init(fb: *mut FB_OPMODE) -> i32 {
-    block_call(fb, envelope::init)
-}
-
-/// One task cycle of an FB_OPMODE at `tNow` (monotonic ms, may wrap at 2^32).
-#[no_mangle]
-#[allow(non_snake_case)]
-pub extern "C" fn sl_opmode_cycle(fb: *mut FB_OPMODE, tNow: u32) -> i32 {
-    block_call(fb, |fb| envelope::cycle(fb, tNow))
-}
-
-/// Validates and latches the parameters of an FB_TWOHAND and resets it to power-up (STOP,
-/// outputs FALSE). Does not modify any input field. Returns SL_OK or SL_E_CONFIG.
-#[no_mangle]
-pub extern "C" fn sl_twohand_init(fb: *mut FB_TWOHAND) -> i32 {
-    block_call(fb, envelope::init)
-}
-
-/// One task cycle of an FB_TWOHAND at `tNow` (monotonic ms, may wrap at 2^32).
-#[no_mangle]
-#[allow(non_snake_case)]
-pub extern "C" fn sl_twohand_cycle(fb: *mut FB_TWOHAND, tNow: u32) -> i32 {
-    block_call(fb, |fb| envelope::cycle(fb, tNow))
-}
-
-/// Validates and latches the parameters of an FB_XOR and resets it to power-up (STOP,
-/// outputs FALSE). Does not modify any input field. Returns SL_OK or SL_E_CONFIG.
-#[no_mangle]
-pub extern "C" fn sl_xor_init(fb: *mut FB_XOR) -> i32 {
-    block_call(fb, envelope::init)
-}
-
-/// One task cycle of an FB_XOR at `tNow` (monotonic ms, may wrap at 2^32).
-#[no_mangle]
-#[allow(non_snake_case)]
-pub extern "C" fn sl_xor_cycle(fb: *mut FB_XOR, tNow: u32) -> i32 {
-    block_call(fb, |fb| envelope::cycle(fb, tNow))
-}
-
-/// Validates and latches the parameters of an FB_DECOUPLE and resets it to power-up (STOP,
-/// outputs FALSE). Does not modify any input field. Returns SL_OK or SL_E_CONFIG.
-#[no_mangle]
-pub extern "C" fn sl_decouple_init(fb: *mut FB_DECOUPLE) -> i32 {
-    block_call(fb, envelope::init)
-}
-
-/// One task cycle of an FB_DECOUPLE at `tNow` (monotonic ms, may wrap at 2^32).
-#[no_mangle]
-#[allow(non_snake_case)]
-pub extern "C" fn sl_decouple_cycle(fb: *mut FB_DECOUPLE, tNow: u32) -> i32 {
-    block_call(fb, |fb| envelope::cycle(fb, tNow))
-}
-
-/// Validates and latches the parameters of an FB_EDM and resets it to power-up (STOP,
-/// outputs FALSE). Does not modify any input field. Returns SL_OK or SL_E_CONFIG.
-#[no_mangle]
-pub extern "C" fn sl_edm_init(fb: *mut FB_EDM) -> i32 {
-    block_call(fb, envelope::init)
-}
-
-/// One task cycle of an FB_EDM at `tNow` (monotonic ms, may wrap at 2^32).
-#[no_mangle]
-#[allow(non_snake_case)]
-pub extern "C" fn sl_edm_cycle(fb: *mut FB_EDM, tNow: u32) -> i32 {
-    block_call(fb, |fb| envelope::cycle(fb, tNow))
-}
-
-/// Validates and latches the parameters of an FB_RS and resets it to power-up (STOP,
-/// outputs FALSE). Does not modify any input field. Returns SL_OK or SL_E_CONFIG.
-#[no_mangle]
-pub extern "C" fn sl_rs_init(fb: *mut FB_RS) -> i32 {
-    block_call(fb, envelope::init)
-}
-
-/// One task cycle of an FB_RS at `tNow` (monotonic ms, may wrap at 2^32).
-#[no_mangle]
-#[allow(non_snake_case)]
-pub extern "C" fn sl_rs_cycle(fb: *mut FB_RS, tNow: u32) -> i32 {
-    block_call(fb, |fb| envelope::cycle(fb, tNow))
-}
-
-/// Validates and latches the parameters of an FB_SR and resets it to power-up (STOP,
-/// outputs FALSE). Does not modify any input field. Returns SL_OK or SL_E_CONFIG.
-#[no_mangle]
-pub extern "C" fn sl_sr_init(fb: *mut FB_SR) -> i32 {
-    block_call(fb, envelope::init)
-}
-
-/// One task cycle of an FB_SR at `tNow` (monotonic ms, may wrap at 2^32).
-#[no_mangle]
-#[allow(non_snake_case)]
-pub extern "C" fn sl_sr_cycle(fb: *mut FB_SR, tNow: u32) -> i32 {
-    block_call(fb, |fb| envelope::cycle(fb, tNow))
-}
-
-/// Validates and latches the parameters of an FB_TON and resets it to power-up (STOP).
-/// Returns SL_OK or SL_E_CONFIG (tDelay 0, above 60,000 timebase steps or not a whole
-/// number of them, an unknown nTimeBase, TonIn1 not active, unknown bits).
-#[no_mangle]
-pub extern "C" fn sl_ton_init(fb: *mut FB_TON) -> i32 {
-    block_call(fb, envelope::init)
-}
-
-/// One task cycle of an FB_TON at `tNow` (monotonic ms, may wrap at 2^32).
-#[no_mangle]
-#[allow(non_snake_case)]
-pub extern "C" fn sl_ton_cycle(fb: *mut FB_TON, tNow: u32) -> i32 {
-    block_call(fb, |fb| envelope::cycle(fb, tNow))
-}
-
-/// Validates and latches the parameters of an FB_TON2 and resets it to power-up (STOP).
-/// Returns SL_OK or SL_E_CONFIG (as sl_ton_init; unknown option bits).
-#[no_mangle]
-pub extern "C" fn sl_ton2_init(fb: *mut FB_TON2) -> i32 {
-    block_call(fb, envelope::init)
-}
-
-/// One task cycle of an FB_TON2 at `tNow` (monotonic ms, may wrap at 2^32). Returns
-/// SL_E_RESTORE when TonIn rises with Enable TRUE and SL_OPT_TON2_REMAINING_TIME set while
-/// the stored elapsed time is greater than the latched tDelay (the block is then in ERROR).
-#[no_mangle]
-#[allow(non_snake_case)]
-pub extern "C" fn sl_ton2_cycle(fb: *mut FB_TON2, tNow: u32) -> i32 {
-    block_call(fb, |fb| envelope::cycle(fb, tNow))
-}
-
 /// Writes the elapsed time an FB_TON2 has stored (ms; the manual's "ExpiredTime") to
 /// `*pElapsedMs`, for the host to persist across a power cycle. Call it after
 /// `sl_ton2_cycle` (every cycle, or whenever the value changed) and write the value to
 /// non-volatile memory. Any state; a never-initialised instance gives 0. Returns SL_OK;
 /// SL_E_NULL / SL_E_ALIGNMENT for a bad pointer; SL_E_CORRUPT (nothing written) when the
 /// private state or the stored value fails its integrity check. Does not modify the block.
+///
+/// # Safety
+/// `fb` and `pElapsedMs` are NULL or point to a live FB_TON2 / `uint32_t` that nothing writes during the call.
 #[no_mangle]
 #[allow(non_snake_case)]
-pub extern "C" fn sl_ton2_get_elapsed(fb: *const FB_TON2, pElapsedMs: *mut u32) -> i32 {
+pub unsafe extern "C" fn sl_ton2_get_elapsed(fb: *const FB_TON2, pElapsedMs: *mut u32) -> i32 {
     ffi_boundary!(SL_E_INTERNAL, {
         let run = || -> Result<i32, i32> {
             let fb = instance_ref(fb)?;
@@ -334,67 +152,55 @@ pub extern "C" fn sl_ton2_get_elapsed(fb: *const FB_TON2, pElapsedMs: *mut u32) 
 /// SL_E_RESTORE (nElapsedMs > the latched tDelay, the manual's global shutdown 0x3510, or
 /// the block not in STOP: ERROR, diag bit 12, stored value 0); SL_E_CORRUPT (ERROR, diag
 /// bit 15); SL_E_NULL / SL_E_ALIGNMENT for a bad pointer.
+///
+/// # Safety
+/// `fb` is NULL or points to a live, caller-owned FB_TON2 that nothing else accesses during the call.
 #[no_mangle]
 #[allow(non_snake_case)]
-pub extern "C" fn sl_ton2_restore_elapsed(fb: *mut FB_TON2, nElapsedMs: u32) -> i32 {
+pub unsafe extern "C" fn sl_ton2_restore_elapsed(fb: *mut FB_TON2, nElapsedMs: u32) -> i32 {
     block_call(fb, |fb| {
         crate::blocks::ton2::restore_elapsed(fb, nElapsedMs)
     })
 }
 
-/// Validates and latches the parameters of an FB_TOF and resets it to power-up (STOP).
-/// Returns SL_OK or SL_E_CONFIG (as sl_ton_init).
-#[no_mangle]
-pub extern "C" fn sl_tof_init(fb: *mut FB_TOF) -> i32 {
-    block_call(fb, envelope::init)
+/// The C functions of every registered block type, and the group's dispatch from type tag
+/// to block: both generated from the registry's rows.
+macro_rules! ffi_functions {
+    ($($ty:ty => $init:ident, $cycle:ident;)*) => {
+        $(
+            #[doc = concat!("`", stringify!($init), "`: validates and latches the parameters and resets the block to power-up (STOP, outputs FALSE). Never modifies an input field. SL_OK or SL_E_CONFIG.")]
+            ///
+            /// # Safety
+            /// `fb` is NULL or points to a live, caller-owned instance of the struct that
+            /// nothing else accesses during the call (ABI §4).
+            #[no_mangle]
+            pub unsafe extern "C" fn $init(fb: *mut $ty) -> i32 {
+                block_call(fb, envelope::init)
+            }
+
+            #[doc = concat!("`", stringify!($cycle), "`: one task cycle at `tNow` (monotonic ms, may wrap at 2^32).")]
+            ///
+            /// # Safety
+            /// As for the init function.
+            #[no_mangle]
+            #[allow(non_snake_case)]
+            pub unsafe extern "C" fn $cycle(fb: *mut $ty, tNow: u32) -> i32 {
+                block_call(fb, |fb| envelope::cycle(fb, tNow))
+            }
+        )*
+
+        /// The one dispatch from a block type tag to the block: every group operation on a
+        /// member goes through here.
+        fn member_dyn<'a>(ty: u16, p: *mut c_void) -> Option<&'a mut dyn Member> {
+            $(if ty == <$ty as Registered>::INFO.tag {
+                return instance(p.cast::<$ty>()).ok().map(|b| b as &mut dyn Member);
+            })*
+            None
+        }
+    };
 }
 
-/// One task cycle of an FB_TOF at `tNow` (monotonic ms, may wrap at 2^32).
-#[no_mangle]
-#[allow(non_snake_case)]
-pub extern "C" fn sl_tof_cycle(fb: *mut FB_TOF, tNow: u32) -> i32 {
-    block_call(fb, |fb| envelope::cycle(fb, tNow))
-}
-
-/// Validates and latches the parameters of an FB_MUTING and resets it to power-up (STOP,
-/// outputs FALSE). Does not modify any input field. Returns SL_OK or SL_E_CONFIG.
-#[no_mangle]
-pub extern "C" fn sl_muting_init(fb: *mut FB_MUTING) -> i32 {
-    block_call(fb, envelope::init)
-}
-
-/// One task cycle of an FB_MUTING at `tNow` (monotonic ms, may wrap at 2^32).
-#[no_mangle]
-#[allow(non_snake_case)]
-pub extern "C" fn sl_muting_cycle(fb: *mut FB_MUTING, tNow: u32) -> i32 {
-    block_call(fb, |fb| envelope::cycle(fb, tNow))
-}
-
-/// The one dispatch from a block type tag to the block: every group operation on a member
-/// goes through here.
-fn member_dyn<'a>(ty: u16, p: *mut c_void) -> Option<&'a mut dyn Member> {
-    fn cast<'a, B: Member + 'a>(p: *mut c_void) -> Option<&'a mut dyn Member> {
-        instance(p.cast::<B>()).ok().map(|b| b as &mut dyn Member)
-    }
-    match ty {
-        SL_TYPE_ESTOP => cast::<FB_ESTOP>(p),
-        SL_TYPE_MON => cast::<FB_MON>(p),
-        SL_TYPE_AND => cast::<FB_AND>(p),
-        SL_TYPE_OR => cast::<FB_OR>(p),
-        SL_TYPE_OPMODE => cast::<FB_OPMODE>(p),
-        SL_TYPE_TWOHAND => cast::<FB_TWOHAND>(p),
-        SL_TYPE_XOR => cast::<FB_XOR>(p),
-        SL_TYPE_DECOUPLE => cast::<FB_DECOUPLE>(p),
-        SL_TYPE_EDM => cast::<FB_EDM>(p),
-        SL_TYPE_RS => cast::<FB_RS>(p),
-        SL_TYPE_SR => cast::<FB_SR>(p),
-        SL_TYPE_TON => cast::<FB_TON>(p),
-        SL_TYPE_TON2 => cast::<FB_TON2>(p),
-        SL_TYPE_TOF => cast::<FB_TOF>(p),
-        SL_TYPE_MUTING => cast::<FB_MUTING>(p),
-        _ => None,
-    }
-}
+crate::for_each_block!(ffi_functions);
 
 /// The caller's member table seen as group members.
 struct CMembers<'a>(&'a [SL_MEMBER]);
@@ -429,9 +235,12 @@ fn storage<'a, T>(p: *mut T, len: usize) -> Result<&'a mut [T], i32> {
 /// every later sl_group_* call. Does not modify the group's input fields. Checks before it
 /// writes: a refused init (SL_E_NULL, SL_E_ALIGNMENT, SL_E_CONFIG for bConnections > 1 or
 /// a group still in RUN/START) changes nothing.
+///
+/// # Safety
+/// `g` is NULL or points to a live SL_GROUP; `aMembers` / `aLinks` are NULL or point to at least `nMemberCap` / `nLinkCap` entries; the caller keeps all of them alive and untouched for as long as the group is used.
 #[no_mangle]
 #[allow(non_snake_case)]
-pub extern "C" fn sl_group_init(
+pub unsafe extern "C" fn sl_group_init(
     g: *mut SL_GROUP,
     aMembers: *mut SL_MEMBER,
     nMemberCap: u16,
@@ -458,9 +267,12 @@ pub extern "C" fn sl_group_init(
 /// Adds a block as the next member (execution order) while the group is stopped.
 /// `nType` is SL_TYPE_<NAME>; the index is written to `*pIndex` unless it is NULL.
 /// A block can be a member once; SL_E_FULL when the member storage is full.
+///
+/// # Safety
+/// As for `sl_group_init`, with the same tables; `pBlock` points to a live block of type `nType` that stays alive while it is a member; `pIndex` is NULL or writable.
 #[no_mangle]
 #[allow(non_snake_case)]
-pub extern "C" fn sl_group_add_member(
+pub unsafe extern "C" fn sl_group_add_member(
     g: *mut SL_GROUP,
     aMembers: *mut SL_MEMBER,
     nType: u16,
@@ -503,9 +315,12 @@ pub extern "C" fn sl_group_add_member(
 /// copied just before the destination executes: a link from an earlier member carries this
 /// cycle's value, one from a later member the previous cycle's. SL_E_CONFIG for a field
 /// that is not a linkable output / input of a member, or an input that is already linked.
+///
+/// # Safety
+/// As for `sl_group_init`, with the same tables.
 #[no_mangle]
 #[allow(non_snake_case)]
-pub extern "C" fn sl_group_add_link(
+pub unsafe extern "C" fn sl_group_add_link(
     g: *mut SL_GROUP,
     aMembers: *mut SL_MEMBER,
     aLinks: *mut SL_LINK,
@@ -536,9 +351,12 @@ pub extern "C" fn sl_group_add_link(
 
 /// One group cycle at `tNow`: group state, then every member in order (links first), all
 /// with the same `tNow`. Returns the group's status or the worst status of a member.
+///
+/// # Safety
+/// As for `sl_group_init`, with the same tables; every member block is still alive.
 #[no_mangle]
 #[allow(non_snake_case)]
-pub extern "C" fn sl_group_cycle(
+pub unsafe extern "C" fn sl_group_cycle(
     g: *mut SL_GROUP,
     aMembers: *mut SL_MEMBER,
     aLinks: *mut SL_LINK,
@@ -562,9 +380,17 @@ pub extern "C" fn sl_group_cycle(
 /// (SL_TYPE_<NAME>) into `buf` as a NUL-terminated text ("discrepancy error input group 1;
 /// EDM monitoring error EDM1"), truncated to `nLen` bytes including the NUL. For an HMI.
 /// SL_E_CONFIG for an unknown type (buf then holds ""), SL_E_NULL for a NULL buf.
+///
+/// # Safety
+/// `buf` is NULL or points to at least `nLen` writable bytes.
 #[no_mangle]
 #[allow(non_snake_case)]
-pub extern "C" fn sl_diag_text(nType: u16, nDiag: u16, buf: *mut c_char, nLen: usize) -> i32 {
+pub unsafe extern "C" fn sl_diag_text(
+    nType: u16,
+    nDiag: u16,
+    buf: *mut c_char,
+    nLen: usize,
+) -> i32 {
     ffi_boundary!(SL_E_INTERNAL, {
         let run = || -> Result<i32, i32> {
             if nLen == 0 {

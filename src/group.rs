@@ -10,6 +10,7 @@
 //! executes. No heap: member and link storage belong to the caller.
 
 use crate::prim::bools::{edge, is_true};
+use crate::registry::Field;
 use crate::types::*;
 use core::ffi::c_void;
 
@@ -21,10 +22,17 @@ pub trait Member {
     fn execute(&mut self, now: u32) -> i32;
     /// The block's nState.
     fn state(&self) -> u8;
-    /// The BOOL input at this byte offset, if the block has a linkable one there.
+    /// The block's field table (the registry's).
+    fn fields(&self) -> &'static [Field];
+    /// The BOOL input at this byte offset, if the block has one there.
     fn input_mut(&mut self, offset: u16) -> Option<&mut u8>;
     /// The BOOL output at this byte offset, if the block has one there.
     fn output(&self, offset: u16) -> Option<u8>;
+    /// The output at this byte offset as a 32-bit pattern, if the block has one there.
+    fn output_bits(&self, offset: u16) -> Option<u32>;
+    /// Writes the input at this byte offset from a pattern of the same type; false when the
+    /// block has no input there.
+    fn set_input_bits(&mut self, offset: u16, bits: u32) -> bool;
     /// One cycle as a member: bRun/bErrAck from the group, then the block's cycle; returns
     /// the status and the new nState (one dynamic call instead of three).
     fn run_in_group(&mut self, run: u8, ack: u8, now: u32) -> (i32, u8) {
@@ -34,14 +42,21 @@ pub trait Member {
     }
 }
 
-/// Implements the envelope's `Instance` and the group's [`Member`] for a block struct, from
-/// the lists of its linkable BOOL inputs and outputs (bRun and bErrAck are driven by the
-/// group and never linkable).
+/// Implements the envelope's `Instance`, the group's [`Member`] and the registry's
+/// `Registered` for a block struct, from its info and the lists of its fields by direction
+/// (`bRun`/`bErrAck` and `nState`/`nDiag` are added: every block has them at the same
+/// names). `[generics]` are the impl's generic parameters (empty for a plain struct).
 #[doc(hidden)]
 #[macro_export]
 macro_rules! impl_member {
-    ($ty:ty, [$($i:ident),*], [$($o:ident),*]) => {
-        impl $crate::prim::envelope::Instance for $ty {
+    ([$($gen:tt)*] $ty:ty {
+        info: $info:expr,
+        input: [$($i:ident),* $(,)?],
+        param: [$($p:ident),* $(,)?],
+        output: [$($o:ident),* $(,)?],
+        info_fields: [$($n:ident),* $(,)?] $(,)?
+    }) => {
+        impl<$($gen)*> $crate::prim::envelope::Instance for $ty {
             #[inline(always)]
             fn header(&self) -> &$crate::prim::header::SL_PRIVATE_HEADER {
                 &self.stPrivate.stHeader
@@ -62,7 +77,20 @@ macro_rules! impl_member {
                 self.bErrAck
             }
         }
-        impl $crate::group::Member for $ty {
+        impl<$($gen)*> $crate::registry::Registered for $ty {
+            const INFO: $crate::blocks::BlockInfo = $info;
+            const FIELDS: &'static [$crate::registry::Field] = &[
+                $($crate::impl_member!(@field $i, Input, io_kind)),*
+                , $crate::impl_member!(@field bRun, Control, io_kind)
+                , $crate::impl_member!(@field bErrAck, Control, io_kind)
+                $(, $crate::impl_member!(@field $p, Param, same))*
+                $(, $crate::impl_member!(@field $o, Output, io_kind))*
+                , $crate::impl_member!(@field nState, Info, same)
+                , $crate::impl_member!(@field nDiag, Info, same)
+                $(, $crate::impl_member!(@field $n, Info, same))*
+            ];
+        }
+        impl<$($gen)*> $crate::group::Member for $ty {
             fn drive(&mut self, run: u8, ack: u8) {
                 self.bRun = run;
                 self.bErrAck = ack;
@@ -73,18 +101,42 @@ macro_rules! impl_member {
             fn state(&self) -> u8 {
                 self.nState
             }
+            fn fields(&self) -> &'static [$crate::registry::Field] {
+                <Self as $crate::registry::Registered>::FIELDS
+            }
             fn input_mut(&mut self, offset: u16) -> Option<&mut u8> {
-                $(if usize::from(offset) == core::mem::offset_of!($ty, $i) {
-                    return Some(&mut self.$i);
+                $(if usize::from(offset) == core::mem::offset_of!(Self, $i) {
+                    return $crate::registry::FieldType::as_bool_mut(&mut self.$i);
                 })*
                 None
             }
             fn output(&self, offset: u16) -> Option<u8> {
-                $(if usize::from(offset) == core::mem::offset_of!($ty, $o) {
-                    return Some(self.$o);
+                $(if usize::from(offset) == core::mem::offset_of!(Self, $o) {
+                    return $crate::registry::FieldType::as_bool(self.$o);
                 })*
                 None
             }
+            fn output_bits(&self, offset: u16) -> Option<u32> {
+                $(if usize::from(offset) == core::mem::offset_of!(Self, $o) {
+                    return Some($crate::registry::FieldType::to_bits(self.$o));
+                })*
+                None
+            }
+            fn set_input_bits(&mut self, offset: u16, bits: u32) -> bool {
+                $(if usize::from(offset) == core::mem::offset_of!(Self, $i) {
+                    self.$i = $crate::registry::FieldType::from_bits(bits);
+                    return true;
+                })*
+                false
+            }
+        }
+    };
+    (@field $f:ident, $dir:ident, $k:ident) => {
+        $crate::registry::Field {
+            name: stringify!($f),
+            offset: core::mem::offset_of!(Self, $f) as u16,
+            kind: $crate::registry::$k($crate::registry::kind_of(|s: &Self| &s.$f)),
+            dir: $crate::registry::Dir::$dir,
         }
     };
 }

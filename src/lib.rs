@@ -10,6 +10,7 @@
 pub mod blocks;
 pub mod group;
 pub mod prim;
+pub mod registry;
 pub mod types;
 
 #[cfg(feature = "std")]

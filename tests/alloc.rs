@@ -311,8 +311,8 @@ fn no_allocation_in_init_and_cycle() {
 
     let on = Counting::on();
 
-    tally.call(Func::EstopInit, || sl_estop_init(&mut estop));
-    tally.call(Func::MonInit, || sl_mon_init(&mut mon));
+    tally.call(Func::EstopInit, || unsafe { sl_estop_init(&mut estop) });
+    tally.call(Func::MonInit, || unsafe { sl_mon_init(&mut mon) });
 
     let mut t: u32 = u32::MAX - 50_000; // the clock wraps during the run
     for i in 0..CYCLES {
@@ -387,14 +387,14 @@ fn no_allocation_in_init_and_cycle() {
             850 => {
                 estop.wInputActive = 0;
                 mon.tDiscTime34 = 70_000;
-                tally.call(Func::EstopInit, || sl_estop_init(&mut estop));
-                tally.call(Func::MonInit, || sl_mon_init(&mut mon));
+                tally.call(Func::EstopInit, || unsafe { sl_estop_init(&mut estop) });
+                tally.call(Func::MonInit, || unsafe { sl_mon_init(&mut mon) });
             }
             860 => {
                 estop.wInputActive = estop_params().wInputActive;
                 mon.tDiscTime34 = mon_params().tDiscTime34;
-                tally.call(Func::EstopInit, || sl_estop_init(&mut estop));
-                tally.call(Func::MonInit, || sl_mon_init(&mut mon));
+                tally.call(Func::EstopInit, || unsafe { sl_estop_init(&mut estop) });
+                tally.call(Func::MonInit, || unsafe { sl_mon_init(&mut mon) });
             }
             // a never-initialised instance (all-zero private state) mid-run
             920 => {
@@ -405,28 +405,42 @@ fn no_allocation_in_init_and_cycle() {
         }
 
         // ---- the calls
-        let rc = tally.call(Func::EstopCycle, || sl_estop_cycle(&mut estop, tn));
+        let rc = tally.call(Func::EstopCycle, || unsafe {
+            sl_estop_cycle(&mut estop, tn)
+        });
         tally.texts(rc, estop.nState);
-        let rc = tally.call(Func::MonCycle, || sl_mon_cycle(&mut mon, tn));
+        let rc = tally.call(Func::MonCycle, || unsafe { sl_mon_cycle(&mut mon, tn) });
         tally.texts(rc, mon.nState);
         tally.states[0][usize::from(estop.nState).min(9)] += 1;
         tally.states[1][usize::from(mon.nState).min(9)] += 1;
 
         // ---- NULL and misaligned instance pointers
         if i % 97 == 0 {
-            tally.call(Func::EstopInit, || sl_estop_init(ptr::null_mut()));
-            tally.call(Func::EstopCycle, || sl_estop_cycle(ptr::null_mut(), tn));
-            tally.call(Func::MonInit, || sl_mon_init(ptr::null_mut()));
-            tally.call(Func::MonCycle, || sl_mon_cycle(ptr::null_mut(), tn));
-            tally.call(Func::EstopInit, || sl_estop_init(misaligned_estop));
-            tally.call(Func::EstopCycle, || sl_estop_cycle(misaligned_estop, tn));
-            tally.call(Func::MonInit, || sl_mon_init(misaligned_mon));
-            tally.call(Func::MonCycle, || sl_mon_cycle(misaligned_mon, tn));
+            tally.call(Func::EstopInit, || unsafe {
+                sl_estop_init(ptr::null_mut())
+            });
+            tally.call(Func::EstopCycle, || unsafe {
+                sl_estop_cycle(ptr::null_mut(), tn)
+            });
+            tally.call(Func::MonInit, || unsafe { sl_mon_init(ptr::null_mut()) });
+            tally.call(Func::MonCycle, || unsafe {
+                sl_mon_cycle(ptr::null_mut(), tn)
+            });
+            tally.call(Func::EstopInit, || unsafe {
+                sl_estop_init(misaligned_estop)
+            });
+            tally.call(Func::EstopCycle, || unsafe {
+                sl_estop_cycle(misaligned_estop, tn)
+            });
+            tally.call(Func::MonInit, || unsafe { sl_mon_init(misaligned_mon) });
+            tally.call(Func::MonCycle, || unsafe {
+                sl_mon_cycle(misaligned_mon, tn)
+            });
         }
         // ---- a re-initialisation now and then
         if i % 4099 == 0 {
-            tally.call(Func::EstopInit, || sl_estop_init(&mut estop));
-            tally.call(Func::MonInit, || sl_mon_init(&mut mon));
+            tally.call(Func::EstopInit, || unsafe { sl_estop_init(&mut estop) });
+            tally.call(Func::MonInit, || unsafe { sl_mon_init(&mut mon) });
         }
     }
     drop(on);

@@ -48,7 +48,7 @@ macro_rules! c_group_cycle {
             i += 1;
         )+
         let _ = i;
-        ffi::sl_group_cycle(&mut $g, $members.as_mut_ptr(), $links.as_mut_ptr(), $t)
+        unsafe { ffi::sl_group_cycle(&mut $g, $members.as_mut_ptr(), $links.as_mut_ptr(), $t) }
     }};
 }
 
@@ -219,28 +219,36 @@ fn parameter_change_and_clock_errors() {
 /// D5: a communication error of the group stops its members: DECOUPLE's outputs go FALSE.
 #[test]
 fn group_com_error_switches_decouple_off() {
-    assert_eq!(ffi::sl_decouple_init(std::ptr::null_mut()), SL_E_NULL);
-    assert_eq!(ffi::sl_decouple_cycle(std::ptr::null_mut(), 0), SL_E_NULL);
+    assert_eq!(
+        unsafe { ffi::sl_decouple_init(std::ptr::null_mut()) },
+        SL_E_NULL
+    );
+    assert_eq!(
+        unsafe { ffi::sl_decouple_cycle(std::ptr::null_mut(), 0) },
+        SL_E_NULL
+    );
     let mut d = FB_DECOUPLE {
         wInputActive: 0xFF,
         ..Default::default()
     };
-    assert_eq!(ffi::sl_decouple_init(&mut d), SL_OK);
+    assert_eq!(unsafe { ffi::sl_decouple_init(&mut d) }, SL_OK);
     let mut g = SL_GROUP::default();
     let mut members = [SL_MEMBER::default(); 1];
     let mut links: [SL_LINK; 0] = [];
     assert_eq!(
-        ffi::sl_group_init(&mut g, members.as_mut_ptr(), 1, std::ptr::null_mut(), 0),
+        unsafe { ffi::sl_group_init(&mut g, members.as_mut_ptr(), 1, std::ptr::null_mut(), 0) },
         SL_OK
     );
     assert_eq!(
-        ffi::sl_group_add_member(
-            &mut g,
-            members.as_mut_ptr(),
-            SL_TYPE_DECOUPLE,
-            std::ptr::addr_of_mut!(d).cast(),
-            std::ptr::null_mut()
-        ),
+        unsafe {
+            ffi::sl_group_add_member(
+                &mut g,
+                members.as_mut_ptr(),
+                SL_TYPE_DECOUPLE,
+                std::ptr::addr_of_mut!(d).cast(),
+                std::ptr::null_mut(),
+            )
+        },
         SL_OK
     );
     g.bRun = 1;

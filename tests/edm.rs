@@ -66,7 +66,7 @@ macro_rules! c_group_cycle {
             i += 1;
         )+
         let _ = i;
-        ffi::sl_group_cycle(&mut $g, $members.as_mut_ptr(), $links.as_mut_ptr(), $t)
+        unsafe { ffi::sl_group_cycle(&mut $g, $members.as_mut_ptr(), $links.as_mut_ptr(), $t) }
     }};
 }
 
@@ -557,8 +557,11 @@ fn corruption() {
 
 #[test]
 fn c_functions_names_diag_text() {
-    assert_eq!(ffi::sl_edm_init(std::ptr::null_mut()), SL_E_NULL);
-    assert_eq!(ffi::sl_edm_cycle(std::ptr::null_mut(), 0), SL_E_NULL);
+    assert_eq!(unsafe { ffi::sl_edm_init(std::ptr::null_mut()) }, SL_E_NULL);
+    assert_eq!(
+        unsafe { ffi::sl_edm_cycle(std::ptr::null_mut(), 0) },
+        SL_E_NULL
+    );
     let mut e = FB_EDM {
         tSwitchOnTime: 50,
         wInputActive: BOTH,
@@ -567,9 +570,9 @@ fn c_functions_names_diag_text() {
         bRun: 1,
         ..Default::default()
     };
-    assert_eq!(ffi::sl_edm_init(&mut e), SL_OK);
-    assert_eq!(ffi::sl_edm_cycle(&mut e, 0), SL_OK);
-    assert_eq!(ffi::sl_edm_cycle(&mut e, 50), SL_OK);
+    assert_eq!(unsafe { ffi::sl_edm_init(&mut e) }, SL_OK);
+    assert_eq!(unsafe { ffi::sl_edm_cycle(&mut e, 0) }, SL_OK);
+    assert_eq!(unsafe { ffi::sl_edm_cycle(&mut e, 50) }, SL_OK);
     assert_error(&e, ON);
     assert_eq!(state_name(SL_TYPE_EDM, SL_STATE_STOP), "STOP");
     assert_eq!(state_name(SL_TYPE_EDM, SL_STATE_ERROR), "ERROR");
@@ -579,7 +582,7 @@ fn c_functions_names_diag_text() {
     assert_eq!(state_name(SL_TYPE_EDM, SL_STATE_RUN), "?");
     let mut buf = [0i8; 96];
     assert_eq!(
-        ffi::sl_diag_text(SL_TYPE_EDM, OFF | ON, buf.as_mut_ptr().cast(), buf.len()),
+        unsafe { ffi::sl_diag_text(SL_TYPE_EDM, OFF | ON, buf.as_mut_ptr().cast(), buf.len()) },
         SL_OK
     );
     let text: Vec<u8> = buf
@@ -608,42 +611,48 @@ fn in_a_group() {
     let mut members = [SL_MEMBER::default(); 2];
     let mut links = [SL_LINK::default(); 1];
     assert_eq!(
-        ffi::sl_group_init(&mut g, members.as_mut_ptr(), 2, links.as_mut_ptr(), 1),
+        unsafe { ffi::sl_group_init(&mut g, members.as_mut_ptr(), 2, links.as_mut_ptr(), 1) },
         SL_OK
     );
     let null = std::ptr::null_mut();
     let tm = members.as_mut_ptr();
     assert_eq!(
-        ffi::sl_group_add_member(
-            &mut g,
-            tm,
-            SL_TYPE_AND,
-            std::ptr::addr_of_mut!(a).cast(),
-            null
-        ),
+        unsafe {
+            ffi::sl_group_add_member(
+                &mut g,
+                tm,
+                SL_TYPE_AND,
+                std::ptr::addr_of_mut!(a).cast(),
+                null,
+            )
+        },
         SL_OK
     );
     let tm = members.as_mut_ptr();
     assert_eq!(
-        ffi::sl_group_add_member(
-            &mut g,
-            tm,
-            SL_TYPE_EDM,
-            std::ptr::addr_of_mut!(e).cast(),
-            null
-        ),
+        unsafe {
+            ffi::sl_group_add_member(
+                &mut g,
+                tm,
+                SL_TYPE_EDM,
+                std::ptr::addr_of_mut!(e).cast(),
+                null,
+            )
+        },
         SL_OK
     );
     assert_eq!(
-        ffi::sl_group_add_link(
-            &mut g,
-            members.as_mut_ptr(),
-            links.as_mut_ptr(),
-            0,
-            offset_of!(FB_AND, bAndOut) as u16,
-            1,
-            offset_of!(FB_EDM, bMon1) as u16
-        ),
+        unsafe {
+            ffi::sl_group_add_link(
+                &mut g,
+                members.as_mut_ptr(),
+                links.as_mut_ptr(),
+                0,
+                offset_of!(FB_AND, bAndOut) as u16,
+                1,
+                offset_of!(FB_EDM, bMon1) as u16,
+            )
+        },
         SL_OK
     );
     g.bRun = 1;

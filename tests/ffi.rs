@@ -16,12 +16,15 @@ use std::ptr;
 /// ABI §5 SL_E_NULL "a required pointer is NULL".
 #[test]
 fn null_pointers_are_sl_e_null() {
-    assert_eq!(sl_estop_init(ptr::null_mut()), SL_E_NULL);
-    assert_eq!(sl_estop_cycle(ptr::null_mut(), 0), SL_E_NULL);
-    assert_eq!(sl_estop_cycle(ptr::null_mut(), T0), SL_E_NULL);
-    assert_eq!(sl_mon_init(ptr::null_mut()), SL_E_NULL);
-    assert_eq!(sl_mon_cycle(ptr::null_mut(), 0), SL_E_NULL);
-    assert_eq!(sl_mon_cycle(ptr::null_mut(), u32::MAX), SL_E_NULL);
+    assert_eq!(unsafe { sl_estop_init(ptr::null_mut()) }, SL_E_NULL);
+    assert_eq!(unsafe { sl_estop_cycle(ptr::null_mut(), 0) }, SL_E_NULL);
+    assert_eq!(unsafe { sl_estop_cycle(ptr::null_mut(), T0) }, SL_E_NULL);
+    assert_eq!(unsafe { sl_mon_init(ptr::null_mut()) }, SL_E_NULL);
+    assert_eq!(unsafe { sl_mon_cycle(ptr::null_mut(), 0) }, SL_E_NULL);
+    assert_eq!(
+        unsafe { sl_mon_cycle(ptr::null_mut(), u32::MAX) },
+        SL_E_NULL
+    );
 }
 
 /// A buffer with room for one block at any byte offset 0..8, 8-byte aligned.
@@ -81,16 +84,16 @@ fn four_byte_aligned_instance_is_accepted() {
 #[test]
 fn zeroed_private_state_through_the_c_functions() {
     let mut e = estop(0b11);
-    assert_eq!(sl_estop_cycle(&mut e, T0), SL_OK);
+    assert_eq!(unsafe { sl_estop_cycle(&mut e, T0) }, SL_OK);
     expect(&e, SL_STATE_SAFE);
     let mut m = mon(0b11, 0);
-    assert_eq!(sl_mon_cycle(&mut m, T0), SL_OK);
+    assert_eq!(unsafe { sl_mon_cycle(&mut m, T0) }, SL_OK);
     expect(&m, SL_STATE_SAFE);
-    assert_eq!(sl_mon_cycle(&mut m, T0 + 1), SL_OK);
+    assert_eq!(unsafe { sl_mon_cycle(&mut m, T0 + 1) }, SL_OK);
     expect(&m, SL_STATE_RUN);
     // zeroing the private area again: a never-initialised instance, outputs off
     m.stPrivate = SL_GUARD_PRIVATE::default();
-    assert_eq!(sl_mon_cycle(&mut m, T0 + 2), SL_OK);
+    assert_eq!(unsafe { sl_mon_cycle(&mut m, T0 + 2) }, SL_OK);
     expect(&m, SL_STATE_SAFE);
 }
 
@@ -111,20 +114,20 @@ fn fill_private(p: &mut SL_GUARD_PRIVATE, byte: u8) {
 fn garbage_private_state_through_the_c_functions() {
     for byte in [0xA5u8, 0xFF, 0x5A, 0x01] {
         let mut e = estop(0b1);
-        assert_eq!(sl_estop_init(&mut e), SL_OK);
-        assert_eq!(sl_estop_cycle(&mut e, T0), SL_OK);
+        assert_eq!(unsafe { sl_estop_init(&mut e) }, SL_OK);
+        assert_eq!(unsafe { sl_estop_cycle(&mut e, T0) }, SL_OK);
         fill_private(&mut e.stPrivate, byte);
-        assert_eq!(sl_estop_cycle(&mut e, T0 + 1), SL_E_CORRUPT);
+        assert_eq!(unsafe { sl_estop_cycle(&mut e, T0 + 1) }, SL_E_CORRUPT);
         expect_error(&e, SL_DIAG_CORRUPT);
         assert_eq!((e.bError, e.bEStopOut, e.bEStopDelOut), (1, 0, 0));
 
         let mut m = mon(0b1, 0);
-        assert_eq!(sl_mon_init(&mut m), SL_OK);
-        assert_eq!(sl_mon_cycle(&mut m, T0), SL_OK);
-        assert_eq!(sl_mon_cycle(&mut m, T0 + 1), SL_OK);
+        assert_eq!(unsafe { sl_mon_init(&mut m) }, SL_OK);
+        assert_eq!(unsafe { sl_mon_cycle(&mut m, T0) }, SL_OK);
+        assert_eq!(unsafe { sl_mon_cycle(&mut m, T0 + 1) }, SL_OK);
         expect(&m, SL_STATE_RUN);
         fill_private(&mut m.stPrivate, byte);
-        assert_eq!(sl_mon_cycle(&mut m, T0 + 2), SL_E_CORRUPT);
+        assert_eq!(unsafe { sl_mon_cycle(&mut m, T0 + 2) }, SL_E_CORRUPT);
         expect_error(&m, SL_DIAG_CORRUPT);
         assert_eq!((m.bError, m.bMonOut, m.bMonDelOut), (1, 0, 0));
     }
@@ -135,23 +138,23 @@ fn garbage_private_state_through_the_c_functions() {
 #[test]
 fn mon_private_state_copied_into_an_estop_is_corrupt() {
     let mut m = mon(0b1, 0);
-    assert_eq!(sl_mon_init(&mut m), SL_OK);
-    assert_eq!(sl_mon_cycle(&mut m, T0), SL_OK);
-    assert_eq!(sl_mon_cycle(&mut m, T0 + 1), SL_OK);
+    assert_eq!(unsafe { sl_mon_init(&mut m) }, SL_OK);
+    assert_eq!(unsafe { sl_mon_cycle(&mut m, T0) }, SL_OK);
+    assert_eq!(unsafe { sl_mon_cycle(&mut m, T0 + 1) }, SL_OK);
     expect(&m, SL_STATE_RUN);
 
     let mut e = estop(0b1);
-    assert_eq!(sl_estop_init(&mut e), SL_OK);
-    assert_eq!(sl_estop_cycle(&mut e, T0), SL_OK);
+    assert_eq!(unsafe { sl_estop_init(&mut e) }, SL_OK);
+    assert_eq!(unsafe { sl_estop_cycle(&mut e, T0) }, SL_OK);
     e.stPrivate = m.stPrivate;
-    assert_eq!(sl_estop_cycle(&mut e, T0 + 2), SL_E_CORRUPT);
+    assert_eq!(unsafe { sl_estop_cycle(&mut e, T0 + 2) }, SL_E_CORRUPT);
     expect_error(&e, SL_DIAG_CORRUPT);
 
     // also into a never-cycled (only init'ed) ESTOP
     let mut e = estop(0b1);
-    assert_eq!(sl_estop_init(&mut e), SL_OK);
+    assert_eq!(unsafe { sl_estop_init(&mut e) }, SL_OK);
     e.stPrivate = m.stPrivate;
-    assert_eq!(sl_estop_cycle(&mut e, T0 + 2), SL_E_CORRUPT);
+    assert_eq!(unsafe { sl_estop_cycle(&mut e, T0 + 2) }, SL_E_CORRUPT);
     expect_error(&e, SL_DIAG_CORRUPT);
 }
 
@@ -160,13 +163,13 @@ fn mon_private_state_copied_into_an_estop_is_corrupt() {
 fn config_error_through_the_c_functions() {
     let mut e = estop(0b1);
     e.dwOptions = SL_OPT_FUNCTION_TEST;
-    assert_eq!(sl_estop_init(&mut e), SL_E_CONFIG);
+    assert_eq!(unsafe { sl_estop_init(&mut e) }, SL_E_CONFIG);
     expect(&e, SL_STATE_STOP);
-    assert_eq!(sl_estop_cycle(&mut e, T0), SL_E_CONFIG);
+    assert_eq!(unsafe { sl_estop_cycle(&mut e, T0) }, SL_E_CONFIG);
     expect(&e, SL_STATE_STOP);
     let mut m = mon(0b11_0000, 0);
-    assert_eq!(sl_mon_init(&mut m), SL_E_CONFIG);
-    assert_eq!(sl_mon_cycle(&mut m, T0), SL_E_CONFIG);
+    assert_eq!(unsafe { sl_mon_init(&mut m) }, SL_E_CONFIG);
+    assert_eq!(unsafe { sl_mon_cycle(&mut m, T0) }, SL_E_CONFIG);
     expect(&m, SL_STATE_STOP);
 }
 
@@ -174,8 +177,8 @@ fn config_error_through_the_c_functions() {
 #[test]
 fn clock_error_through_the_c_functions() {
     let mut e = estop(0b1);
-    assert_eq!(sl_estop_cycle(&mut e, T0), SL_OK);
-    assert_eq!(sl_estop_cycle(&mut e, T0 - 1), SL_E_CLOCK);
+    assert_eq!(unsafe { sl_estop_cycle(&mut e, T0) }, SL_OK);
+    assert_eq!(unsafe { sl_estop_cycle(&mut e, T0 - 1) }, SL_E_CLOCK);
     expect_error(&e, SL_DIAG_CLOCK);
 }
 
@@ -186,11 +189,11 @@ fn estop_scenario_through_the_c_functions() {
     e.tDiscTime12 = 100;
     e.tEStopDelOutDelay = 50;
     e.dwOptions = SL_OPT_EDM1 | SL_OPT_EDM2;
-    assert_eq!(sl_estop_init(&mut e), SL_OK);
+    assert_eq!(unsafe { sl_estop_init(&mut e) }, SL_OK);
     let mut t = T0;
     let mut call = |e: &mut FB_ESTOP, dt: u32, state: u8| {
         t += dt;
-        assert_eq!(sl_estop_cycle(e, t), SL_OK, "t={t}");
+        assert_eq!(unsafe { sl_estop_cycle(e, t) }, SL_OK, "t={t}");
         expect(e, state);
     };
     call(&mut e, 1, SL_STATE_SAFE);
@@ -223,17 +226,17 @@ fn mon_scenario_through_the_c_functions() {
     let mut m = mon(0b1 | 0b11_0000, 0);
     m.bSecure1 = 0;
     m.bSecure2 = 0;
-    assert_eq!(sl_mon_init(&mut m), SL_OK);
-    assert_eq!(sl_mon_cycle(&mut m, 1), SL_OK);
+    assert_eq!(unsafe { sl_mon_init(&mut m) }, SL_OK);
+    assert_eq!(unsafe { sl_mon_cycle(&mut m, 1) }, SL_OK);
     expect(&m, SL_STATE_SAFE);
-    assert_eq!(sl_mon_cycle(&mut m, 2), SL_OK);
+    assert_eq!(unsafe { sl_mon_cycle(&mut m, 2) }, SL_OK);
     expect(&m, SL_STATE_RUN);
     m.bMonIn1 = 0;
-    assert_eq!(sl_mon_cycle(&mut m, 3), SL_OK);
+    assert_eq!(unsafe { sl_mon_cycle(&mut m, 3) }, SL_OK);
     expect(&m, SL_STATE_SAFE);
     m.bSecure1 = 1;
     m.bSecure2 = 1;
-    assert_eq!(sl_mon_cycle(&mut m, 4), SL_OK);
+    assert_eq!(unsafe { sl_mon_cycle(&mut m, 4) }, SL_OK);
     expect(&m, SL_STATE_RUN);
 }
 

@@ -499,12 +499,14 @@ fn start_state_value() {
 #[test]
 fn diag_text_names_the_bits() {
     let mut buf = [0i8; 128];
-    let rc = safelogic::ffi::sl_diag_text(
-        SL_TYPE_ESTOP,
-        SL_DIAG_DISC1 | SL_DIAG_EDM1 | SL_DIAG_CLOCK,
-        buf.as_mut_ptr().cast(),
-        buf.len(),
-    );
+    let rc = unsafe {
+        safelogic::ffi::sl_diag_text(
+            SL_TYPE_ESTOP,
+            SL_DIAG_DISC1 | SL_DIAG_EDM1 | SL_DIAG_CLOCK,
+            buf.as_mut_ptr().cast(),
+            buf.len(),
+        )
+    };
     assert_eq!(rc, SL_OK);
     let text = c_text(&buf);
     assert_eq!(
@@ -513,12 +515,14 @@ fn diag_text_names_the_bits() {
     );
     let mut small = [0x55i8; 8];
     assert_eq!(
-        safelogic::ffi::sl_diag_text(
-            SL_TYPE_ESTOP,
-            SL_DIAG_DISC1,
-            small.as_mut_ptr().cast(),
-            small.len()
-        ),
+        unsafe {
+            safelogic::ffi::sl_diag_text(
+                SL_TYPE_ESTOP,
+                SL_DIAG_DISC1,
+                small.as_mut_ptr().cast(),
+                small.len(),
+            )
+        },
         SL_OK
     );
     assert_eq!(
@@ -527,15 +531,17 @@ fn diag_text_names_the_bits() {
         "truncated to the buffer, NUL included"
     );
     assert_eq!(
-        safelogic::ffi::sl_diag_text(999, 1, buf.as_mut_ptr().cast(), buf.len()),
+        unsafe { safelogic::ffi::sl_diag_text(999, 1, buf.as_mut_ptr().cast(), buf.len()) },
         SL_E_CONFIG
     );
     assert_eq!(
-        safelogic::ffi::sl_diag_text(SL_TYPE_AND, 0, std::ptr::null_mut(), 10),
+        unsafe { safelogic::ffi::sl_diag_text(SL_TYPE_AND, 0, std::ptr::null_mut(), 10) },
         SL_E_NULL
     );
     assert_eq!(
-        safelogic::ffi::sl_diag_text(SL_TYPE_AND, 1 << 6, buf.as_mut_ptr().cast(), buf.len()),
+        unsafe {
+            safelogic::ffi::sl_diag_text(SL_TYPE_AND, 1 << 6, buf.as_mut_ptr().cast(), buf.len())
+        },
         SL_OK
     );
     assert_eq!(c_text(&buf), "bit 6");

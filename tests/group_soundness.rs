@@ -2,9 +2,6 @@
 //! refused or premature re-init never detaches the members of a running group, and a
 //! member that cannot be reached stops the group instead of being skipped.
 
-// The group functions become `unsafe extern "C"` with the registry (issue 8); until then
-// the unsafe blocks below are ahead of their time.
-#![allow(unused_unsafe)]
 use safelogic::ffi;
 use safelogic::*;
 use std::ffi::c_void;

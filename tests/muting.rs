@@ -246,7 +246,9 @@ fn state_names_and_diag_texts() {
     let mut buf = [0i8; 512];
     let all = 0b0000_0111_1111_0111u16;
     assert_eq!(
-        safelogic::ffi::sl_diag_text(SL_TYPE_MUTING, all, buf.as_mut_ptr().cast(), buf.len()),
+        unsafe {
+            safelogic::ffi::sl_diag_text(SL_TYPE_MUTING, all, buf.as_mut_ptr().cast(), buf.len())
+        },
         SL_OK
     );
     let text: Vec<u8> = buf
@@ -1568,19 +1570,22 @@ fn state_values_the_block_never_takes() {
 #[test]
 fn c_abi_functions() {
     use safelogic::ffi::{sl_muting_cycle, sl_muting_init};
-    assert_eq!(sl_muting_init(std::ptr::null_mut()), SL_E_NULL);
-    assert_eq!(sl_muting_cycle(std::ptr::null_mut(), 0), SL_E_NULL);
+    assert_eq!(unsafe { sl_muting_init(std::ptr::null_mut()) }, SL_E_NULL);
+    assert_eq!(
+        unsafe { sl_muting_cycle(std::ptr::null_mut(), 0) },
+        SL_E_NULL
+    );
     let mut b = Bench::sequential();
     b.set(0);
-    assert_eq!(sl_muting_init(&mut b.fb), SL_OK);
+    assert_eq!(unsafe { sl_muting_init(&mut b.fb) }, SL_OK);
     b.fb.bRun = 1;
-    assert_eq!(sl_muting_cycle(&mut b.fb, 1), SL_OK);
-    assert_eq!(sl_muting_cycle(&mut b.fb, 2), SL_OK);
+    assert_eq!(unsafe { sl_muting_cycle(&mut b.fb, 1) }, SL_OK);
+    assert_eq!(unsafe { sl_muting_cycle(&mut b.fb, 2) }, SL_OK);
     b.expect(SL_STATE_RUN, RUN_OUT);
     // Misaligned pointer.
     let mut raw = vec![0u64; 40];
     let p = (raw.as_mut_ptr() as *mut u8).wrapping_add(1) as *mut FB_MUTING;
-    assert_eq!(sl_muting_init(p), SL_E_ALIGNMENT);
+    assert_eq!(unsafe { sl_muting_init(p) }, SL_E_ALIGNMENT);
 }
 
 /// The block as a group member: an error in MUTING stops the group; links reach its inputs.
@@ -1648,25 +1653,27 @@ fn member_via_the_c_abi() {
     let mut members = [SL_MEMBER::default(); 1];
     let mut links = [SL_LINK::default(); 1];
     assert_eq!(
-        sl_group_init(&mut g, members.as_mut_ptr(), 1, links.as_mut_ptr(), 1),
+        unsafe { sl_group_init(&mut g, members.as_mut_ptr(), 1, links.as_mut_ptr(), 1) },
         SL_OK
     );
     let mut idx = 0xFFFFu16;
     assert_eq!(
-        sl_group_add_member(
-            &mut g,
-            members.as_mut_ptr(),
-            SL_TYPE_MUTING,
-            (&mut m.fb as *mut FB_MUTING).cast(),
-            &mut idx
-        ),
+        unsafe {
+            sl_group_add_member(
+                &mut g,
+                members.as_mut_ptr(),
+                SL_TYPE_MUTING,
+                (&mut m.fb as *mut FB_MUTING).cast(),
+                &mut idx,
+            )
+        },
         SL_OK
     );
     assert_eq!(idx, 0);
     g.bRun = 1;
     for t in 0..3 {
         assert_eq!(
-            sl_group_cycle(&mut g, members.as_mut_ptr(), links.as_mut_ptr(), t),
+            unsafe { sl_group_cycle(&mut g, members.as_mut_ptr(), links.as_mut_ptr(), t) },
             SL_OK
         );
     }

@@ -812,14 +812,20 @@ fn c_functions() {
         wInputActive: 0b11,
         ..Default::default()
     };
-    assert_eq!(ffi::sl_opmode_init(&mut b), SL_OK);
+    assert_eq!(unsafe { ffi::sl_opmode_init(&mut b) }, SL_OK);
     b.bRun = 1;
     b.bOpIn2 = 1;
-    assert_eq!(ffi::sl_opmode_cycle(&mut b, 0), SL_OK);
-    assert_eq!(ffi::sl_opmode_cycle(&mut b, 1), SL_OK);
+    assert_eq!(unsafe { ffi::sl_opmode_cycle(&mut b, 0) }, SL_OK);
+    assert_eq!(unsafe { ffi::sl_opmode_cycle(&mut b, 1) }, SL_OK);
     assert_eq!((b.nState, b.bOpOut2), (SL_STATE_RUN, 1));
-    assert_eq!(ffi::sl_opmode_init(std::ptr::null_mut()), SL_E_NULL);
-    assert_eq!(ffi::sl_opmode_cycle(std::ptr::null_mut(), 0), SL_E_NULL);
+    assert_eq!(
+        unsafe { ffi::sl_opmode_init(std::ptr::null_mut()) },
+        SL_E_NULL
+    );
+    assert_eq!(
+        unsafe { ffi::sl_opmode_cycle(std::ptr::null_mut(), 0) },
+        SL_E_NULL
+    );
     // sl_state_str returns the registry's static names (§4.3.2 states 1-6).
     let info = safelogic::blocks::info(SL_TYPE_OPMODE).unwrap();
     let names: Vec<&str> = info.states.iter().map(|(_, n)| *n).collect();
@@ -833,12 +839,14 @@ fn c_functions() {
     assert_eq!(info.name, "OPMODE");
     let mut buf = [0i8; 64];
     assert_eq!(
-        ffi::sl_diag_text(
-            SL_TYPE_OPMODE,
-            SL_DIAG_OPMODE_DISC,
-            buf.as_mut_ptr().cast(),
-            buf.len()
-        ),
+        unsafe {
+            ffi::sl_diag_text(
+                SL_TYPE_OPMODE,
+                SL_DIAG_OPMODE_DISC,
+                buf.as_mut_ptr().cast(),
+                buf.len(),
+            )
+        },
         SL_OK
     );
     let text: Vec<u8> = buf
@@ -902,18 +910,20 @@ fn opmode_as_a_group_member_with_links() {
     let mut members = [SL_MEMBER::default(); 1];
     let mut g2 = SL_GROUP::default();
     assert_eq!(
-        ffi::sl_group_init(&mut g2, members.as_mut_ptr(), 1, std::ptr::null_mut(), 0),
+        unsafe { ffi::sl_group_init(&mut g2, members.as_mut_ptr(), 1, std::ptr::null_mut(), 0) },
         SL_OK
     );
     let mut o2 = opmode(0b11, 0, 0);
     assert_eq!(
-        ffi::sl_group_add_member(
-            &mut g2,
-            members.as_mut_ptr(),
-            SL_TYPE_OPMODE,
-            (&mut o2 as *mut FB_OPMODE).cast(),
-            std::ptr::null_mut()
-        ),
+        unsafe {
+            ffi::sl_group_add_member(
+                &mut g2,
+                members.as_mut_ptr(),
+                SL_TYPE_OPMODE,
+                (&mut o2 as *mut FB_OPMODE).cast(),
+                std::ptr::null_mut(),
+            )
+        },
         SL_OK
     );
 }

@@ -635,11 +635,11 @@ proptest! {
                 mon_bytes.as_ptr(), (&mut m as *mut FB_MON).cast::<u8>(), mon_bytes.len());
         }
         for &t in &times {
-            let rc = safelogic::ffi::sl_estop_cycle(&mut e, t);
+            let rc = unsafe { safelogic::ffi::sl_estop_cycle(&mut e, t) };
             prop_assert!(DOCUMENTED_STATUS.contains(&rc), "ESTOP status {}", rc);
             prop_assert!(ESTOP_STATES.contains(&e.nState), "ESTOP state {}", e.nState);
             prop_assert_eq!(e.outs(), table(e.nState));
-            let rc = safelogic::ffi::sl_mon_cycle(&mut m, t);
+            let rc = unsafe { safelogic::ffi::sl_mon_cycle(&mut m, t) };
             prop_assert!(DOCUMENTED_STATUS.contains(&rc), "MON status {}", rc);
             prop_assert!(MON_STATES.contains(&m.nState), "MON state {}", m.nState);
             prop_assert_eq!(m.outs(), table(m.nState));

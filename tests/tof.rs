@@ -356,11 +356,14 @@ fn c_functions_registry_and_member() {
         bTofIn1: 1,
         ..Default::default()
     };
-    assert_eq!(ffi::sl_tof_init(&mut f), SL_OK);
-    assert_eq!(ffi::sl_tof_init(std::ptr::null_mut()), SL_E_NULL);
-    assert_eq!(ffi::sl_tof_cycle(std::ptr::null_mut(), 0), SL_E_NULL);
-    assert_eq!(ffi::sl_tof_cycle(&mut f, 0), SL_OK);
-    assert_eq!(ffi::sl_tof_cycle(&mut f, 1), SL_OK);
+    assert_eq!(unsafe { ffi::sl_tof_init(&mut f) }, SL_OK);
+    assert_eq!(unsafe { ffi::sl_tof_init(std::ptr::null_mut()) }, SL_E_NULL);
+    assert_eq!(
+        unsafe { ffi::sl_tof_cycle(std::ptr::null_mut(), 0) },
+        SL_E_NULL
+    );
+    assert_eq!(unsafe { ffi::sl_tof_cycle(&mut f, 0) }, SL_OK);
+    assert_eq!(unsafe { ffi::sl_tof_cycle(&mut f, 1) }, SL_OK);
     assert_eq!(st(&f), (SL_STATE_RUN, 1));
     let name = |s: u8| unsafe { CStr::from_ptr(ffi::sl_state_str(SL_TYPE_TOF, s)) };
     assert_eq!(name(8).to_str(), Ok("DELAYOUT"));

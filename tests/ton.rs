@@ -519,14 +519,17 @@ fn c_functions_registry_and_member() {
         wInputActive: 1,
         ..Default::default()
     };
-    assert_eq!(ffi::sl_ton_init(&mut f), SL_OK);
-    assert_eq!(ffi::sl_ton_init(std::ptr::null_mut()), SL_E_NULL);
-    assert_eq!(ffi::sl_ton_cycle(std::ptr::null_mut(), 0), SL_E_NULL);
+    assert_eq!(unsafe { ffi::sl_ton_init(&mut f) }, SL_OK);
+    assert_eq!(unsafe { ffi::sl_ton_init(std::ptr::null_mut()) }, SL_E_NULL);
+    assert_eq!(
+        unsafe { ffi::sl_ton_cycle(std::ptr::null_mut(), 0) },
+        SL_E_NULL
+    );
     f.bRun = 1;
     f.bTonIn1 = 1;
-    assert_eq!(ffi::sl_ton_cycle(&mut f, 0), SL_OK);
-    assert_eq!(ffi::sl_ton_cycle(&mut f, 1), SL_OK);
-    assert_eq!(ffi::sl_ton_cycle(&mut f, 11), SL_OK);
+    assert_eq!(unsafe { ffi::sl_ton_cycle(&mut f, 0) }, SL_OK);
+    assert_eq!(unsafe { ffi::sl_ton_cycle(&mut f, 1) }, SL_OK);
+    assert_eq!(unsafe { ffi::sl_ton_cycle(&mut f, 11) }, SL_OK);
     assert_eq!(st(&f), (SL_STATE_RUN, 1));
     let name = |s: u8| unsafe { CStr::from_ptr(ffi::sl_state_str(SL_TYPE_TON, s)) };
     assert_eq!(name(9).to_str(), Ok("DELAYIN"));
@@ -557,10 +560,10 @@ fn ton_in_a_group() {
     let mut members = [SL_MEMBER::default(); 2];
     let mut links = [SL_LINK::default(); 1];
     assert_eq!(
-        ffi::sl_group_init(&mut g, members.as_mut_ptr(), 2, links.as_mut_ptr(), 1),
+        unsafe { ffi::sl_group_init(&mut g, members.as_mut_ptr(), 2, links.as_mut_ptr(), 1) },
         SL_OK
     );
-    let add = |g: &mut SL_GROUP, m: &mut [SL_MEMBER], ty, p: *mut std::ffi::c_void| {
+    let add = |g: &mut SL_GROUP, m: &mut [SL_MEMBER], ty, p: *mut std::ffi::c_void| unsafe {
         ffi::sl_group_add_member(g, m.as_mut_ptr(), ty, p, std::ptr::null_mut())
     };
     assert_eq!(
@@ -582,19 +585,22 @@ fn ton_in_a_group() {
         SL_OK
     );
     assert_eq!(
-        ffi::sl_group_add_link(
-            &mut g,
-            members.as_mut_ptr(),
-            links.as_mut_ptr(),
-            0,
-            offset_of!(FB_AND, bAndOut) as u16,
-            1,
-            offset_of!(FB_TON, bTonIn1) as u16,
-        ),
+        unsafe {
+            ffi::sl_group_add_link(
+                &mut g,
+                members.as_mut_ptr(),
+                links.as_mut_ptr(),
+                0,
+                offset_of!(FB_AND, bAndOut) as u16,
+                1,
+                offset_of!(FB_TON, bTonIn1) as u16,
+            )
+        },
         SL_OK
     );
     g.bRun = 1;
-    let mut cyc = |t| ffi::sl_group_cycle(&mut g, members.as_mut_ptr(), links.as_mut_ptr(), t);
+    let mut cyc =
+        |t| unsafe { ffi::sl_group_cycle(&mut g, members.as_mut_ptr(), links.as_mut_ptr(), t) };
     for t in [0, 1, 2, 51] {
         assert_eq!(cyc(t), SL_OK);
     }

@@ -24,7 +24,7 @@ fn params(delay: u32, options: u32) -> FB_TON2 {
 
 fn ton2(delay: u32, options: u32) -> FB_TON2 {
     let mut f = params(delay, options);
-    assert_eq!(ffi::sl_ton2_init(&mut f), SL_OK);
+    assert_eq!(unsafe { ffi::sl_ton2_init(&mut f) }, SL_OK);
     f
 }
 
@@ -35,12 +35,12 @@ fn st(f: &FB_TON2) -> (u8, u8) {
 /// The stored elapsed time through the C API.
 fn elapsed(f: &FB_TON2) -> u32 {
     let mut e = 0xDEAD_BEEF;
-    assert_eq!(ffi::sl_ton2_get_elapsed(f, &mut e), SL_OK);
+    assert_eq!(unsafe { ffi::sl_ton2_get_elapsed(f, &mut e) }, SL_OK);
     e
 }
 
 fn cyc(f: &mut FB_TON2, t: u32) -> i32 {
-    ffi::sl_ton2_cycle(f, t)
+    unsafe { ffi::sl_ton2_cycle(f, t) }
 }
 
 #[test]
@@ -62,7 +62,7 @@ fn layout_matches_the_abi() {
 #[test]
 fn without_the_option_it_is_a_ton() {
     let mut f = ton2(100, 0);
-    assert_eq!(ffi::sl_ton2_restore_elapsed(&mut f, 60), SL_OK);
+    assert_eq!(unsafe { ffi::sl_ton2_restore_elapsed(&mut f, 60) }, SL_OK);
     f.bRun = 1;
     f.bEnable = 7;
     assert_eq!(cyc(&mut f, 0), SL_OK);
@@ -142,7 +142,7 @@ fn stored_elapsed_time_in_every_state() {
 fn enable_selects_the_remaining_time_at_the_rising_edge() {
     for enable in [0u8, 1] {
         let mut f = ton2(1000, REMAINING);
-        assert_eq!(ffi::sl_ton2_restore_elapsed(&mut f, 400), SL_OK);
+        assert_eq!(unsafe { ffi::sl_ton2_restore_elapsed(&mut f, 400) }, SL_OK);
         assert_eq!(elapsed(&f), 400);
         f.bRun = 1;
         f.bEnable = enable;
@@ -177,17 +177,20 @@ fn persist_and_restore_across_a_power_cycle() {
         t += 100;
         assert_eq!(cyc(&mut f, t), SL_OK);
         // The host persists the value after every cycle.
-        assert_eq!(ffi::sl_ton2_get_elapsed(&f, &mut nvram), SL_OK);
+        assert_eq!(unsafe { ffi::sl_ton2_get_elapsed(&f, &mut nvram) }, SL_OK);
     }
     assert_eq!(f.nState, DELAYIN);
     assert_eq!(nvram, 35_000);
 
     // Power cycle: the RAM is gone (a fresh, zeroed instance); the clock restarts anywhere.
     f = params(120_000, REMAINING);
-    assert_eq!(ffi::sl_ton2_init(&mut f), SL_OK);
-    assert_eq!(ffi::sl_ton2_restore_elapsed(&mut f, nvram), SL_OK);
+    assert_eq!(unsafe { ffi::sl_ton2_init(&mut f) }, SL_OK);
+    assert_eq!(
+        unsafe { ffi::sl_ton2_restore_elapsed(&mut f, nvram) },
+        SL_OK
+    );
     let persist = |f: &FB_TON2, nvram: &mut u32| {
-        assert_eq!(ffi::sl_ton2_get_elapsed(f, nvram), SL_OK);
+        assert_eq!(unsafe { ffi::sl_ton2_get_elapsed(f, nvram) }, SL_OK);
     };
     persist(&f, &mut nvram);
     assert_eq!(
@@ -224,7 +227,10 @@ fn persist_and_restore_across_a_power_cycle() {
 #[test]
 fn restored_full_delay_means_no_remaining_time() {
     let mut f = ton2(5_000, REMAINING);
-    assert_eq!(ffi::sl_ton2_restore_elapsed(&mut f, 5_000), SL_OK);
+    assert_eq!(
+        unsafe { ffi::sl_ton2_restore_elapsed(&mut f, 5_000) },
+        SL_OK
+    );
     f.bRun = 1;
     f.bEnable = 1;
     f.bTonIn1 = 1;
@@ -242,7 +248,10 @@ fn restored_full_delay_means_no_remaining_time() {
 #[test]
 fn restored_value_above_the_delay_is_refused() {
     let mut f = ton2(1_000, REMAINING);
-    assert_eq!(ffi::sl_ton2_restore_elapsed(&mut f, 1_001), SL_E_RESTORE);
+    assert_eq!(
+        unsafe { ffi::sl_ton2_restore_elapsed(&mut f, 1_001) },
+        SL_E_RESTORE
+    );
     assert_eq!(st(&f), (SL_STATE_ERROR, 0));
     assert_eq!(f.nDiag, SL_DIAG_TON2_RESTORE);
     assert_eq!(elapsed(&f), 0, "discarded");
@@ -250,7 +259,7 @@ fn restored_value_above_the_delay_is_refused() {
     assert!(text.to_str().unwrap().starts_with("SL_E_RESTORE"));
     let mut buf = [0i8; 128];
     assert_eq!(
-        ffi::sl_diag_text(SL_TYPE_TON2, f.nDiag, buf.as_mut_ptr().cast(), buf.len()),
+        unsafe { ffi::sl_diag_text(SL_TYPE_TON2, f.nDiag, buf.as_mut_ptr().cast(), buf.len()) },
         SL_OK
     );
     let diag = unsafe { CStr::from_ptr(buf.as_ptr()) }.to_str().unwrap();
@@ -282,7 +291,10 @@ fn restored_value_above_the_delay_is_refused() {
 fn stored_value_above_a_newly_latched_delay_is_the_global_shutdown_case() {
     for enable in [1u8, 0] {
         let mut f = ton2(120_000, REMAINING);
-        assert_eq!(ffi::sl_ton2_restore_elapsed(&mut f, 50_000), SL_OK);
+        assert_eq!(
+            unsafe { ffi::sl_ton2_restore_elapsed(&mut f, 50_000) },
+            SL_OK
+        );
         f.tDelay = 30_000; // changed in STOP: latched at STOP → run
         f.bRun = 1;
         f.bEnable = enable;
@@ -349,7 +361,10 @@ fn restore_outside_stop_is_refused() {
             }
         }
         assert_eq!(f.nState, target);
-        assert_eq!(ffi::sl_ton2_restore_elapsed(&mut f, 10), SL_E_RESTORE);
+        assert_eq!(
+            unsafe { ffi::sl_ton2_restore_elapsed(&mut f, 10) },
+            SL_E_RESTORE
+        );
         assert_eq!(st(&f), (SL_STATE_ERROR, 0));
         assert_ne!(f.nDiag & SL_DIAG_TON2_RESTORE, 0);
         assert_eq!(elapsed(&f), 0);
@@ -360,8 +375,12 @@ fn restore_outside_stop_is_refused() {
     cyc(&mut f, 0);
     f.bRun = 0;
     cyc(&mut f, 1);
-    assert_eq!(ffi::sl_ton2_restore_elapsed(&mut f, 100), SL_OK);
-    assert_eq!(ffi::sl_ton2_restore_elapsed(&mut f, 0), SL_OK, "repeatable");
+    assert_eq!(unsafe { ffi::sl_ton2_restore_elapsed(&mut f, 100) }, SL_OK);
+    assert_eq!(
+        unsafe { ffi::sl_ton2_restore_elapsed(&mut f, 0) },
+        SL_OK,
+        "repeatable"
+    );
     assert_eq!(f.nState, SL_STATE_STOP);
 }
 
@@ -370,35 +389,44 @@ fn restore_outside_stop_is_refused() {
 #[test]
 fn restore_preconditions() {
     let mut f = params(0, REMAINING);
-    assert_eq!(ffi::sl_ton2_init(&mut f), SL_E_CONFIG);
-    assert_eq!(ffi::sl_ton2_restore_elapsed(&mut f, 0), SL_E_CONFIG);
+    assert_eq!(unsafe { ffi::sl_ton2_init(&mut f) }, SL_E_CONFIG);
+    assert_eq!(
+        unsafe { ffi::sl_ton2_restore_elapsed(&mut f, 0) },
+        SL_E_CONFIG
+    );
     assert_eq!((f.nState, elapsed(&f)), (SL_STATE_STOP, 0));
     // Never initialised, valid parameters: initialised and stored.
     let mut f = params(500, REMAINING);
     assert_eq!(elapsed(&f), 0, "never initialised: 0");
-    assert_eq!(ffi::sl_ton2_restore_elapsed(&mut f, 200), SL_OK);
+    assert_eq!(unsafe { ffi::sl_ton2_restore_elapsed(&mut f, 200) }, SL_OK);
     assert_eq!((f.nState, elapsed(&f)), (SL_STATE_STOP, 200));
     // Never initialised, invalid parameters.
     let mut f = params(500, 1 << 9);
-    assert_eq!(ffi::sl_ton2_restore_elapsed(&mut f, 200), SL_E_CONFIG);
+    assert_eq!(
+        unsafe { ffi::sl_ton2_restore_elapsed(&mut f, 200) },
+        SL_E_CONFIG
+    );
     assert_eq!(f.nState, SL_STATE_STOP);
     // Pointers.
     let mut e = 0u32;
     assert_eq!(
-        ffi::sl_ton2_restore_elapsed(std::ptr::null_mut(), 1),
+        unsafe { ffi::sl_ton2_restore_elapsed(std::ptr::null_mut(), 1) },
         SL_E_NULL
     );
     assert_eq!(
-        ffi::sl_ton2_get_elapsed(std::ptr::null(), &mut e),
+        unsafe { ffi::sl_ton2_get_elapsed(std::ptr::null(), &mut e) },
         SL_E_NULL
     );
     assert_eq!(
-        ffi::sl_ton2_get_elapsed(&f, std::ptr::null_mut()),
+        unsafe { ffi::sl_ton2_get_elapsed(&f, std::ptr::null_mut()) },
         SL_E_NULL
     );
     let words = [0u32; 2];
     let misaligned = (words.as_ptr() as *mut u8).wrapping_add(1).cast::<u32>();
-    assert_eq!(ffi::sl_ton2_get_elapsed(&f, misaligned), SL_E_ALIGNMENT);
+    assert_eq!(
+        unsafe { ffi::sl_ton2_get_elapsed(&f, misaligned) },
+        SL_E_ALIGNMENT
+    );
 }
 
 /// T15: the stored value is protected by its complement: a corrupted value is never
@@ -407,19 +435,25 @@ fn restore_preconditions() {
 fn corrupted_stored_value_is_detected() {
     // get: SL_E_CORRUPT, nothing written.
     let mut f = ton2(1000, REMAINING);
-    assert_eq!(ffi::sl_ton2_restore_elapsed(&mut f, 300), SL_OK);
+    assert_eq!(unsafe { ffi::sl_ton2_restore_elapsed(&mut f, 300) }, SL_OK);
     f.stPrivate.tElapsed = 900;
     let mut e = 7u32;
-    assert_eq!(ffi::sl_ton2_get_elapsed(&f, &mut e), SL_E_CORRUPT);
+    assert_eq!(
+        unsafe { ffi::sl_ton2_get_elapsed(&f, &mut e) },
+        SL_E_CORRUPT
+    );
     assert_eq!(e, 7);
     // restore: SL_E_CORRUPT, ERROR, the value repaired to 0.
-    assert_eq!(ffi::sl_ton2_restore_elapsed(&mut f, 100), SL_E_CORRUPT);
+    assert_eq!(
+        unsafe { ffi::sl_ton2_restore_elapsed(&mut f, 100) },
+        SL_E_CORRUPT
+    );
     assert_eq!(st(&f), (SL_STATE_ERROR, 0));
     assert_eq!(f.nDiag, SL_DIAG_CORRUPT);
     assert_eq!(elapsed(&f), 0);
     // cycle: SL_E_CORRUPT before the value is used.
     let mut f = ton2(1000, REMAINING);
-    assert_eq!(ffi::sl_ton2_restore_elapsed(&mut f, 300), SL_OK);
+    assert_eq!(unsafe { ffi::sl_ton2_restore_elapsed(&mut f, 300) }, SL_OK);
     f.stPrivate.tElapsedCheck ^= 1 << 20;
     f.bRun = 1;
     f.bEnable = 1;
@@ -441,13 +475,22 @@ fn corrupted_stored_value_is_detected() {
     // A corrupted head: get refuses, cycle → ERROR.
     let mut f = ton2(1000, REMAINING);
     f.stPrivate.stHeader.wMagic ^= 0x100;
-    assert_eq!(ffi::sl_ton2_get_elapsed(&f, &mut e), SL_E_CORRUPT);
-    assert_eq!(ffi::sl_ton2_restore_elapsed(&mut f, 1), SL_E_CORRUPT);
+    assert_eq!(
+        unsafe { ffi::sl_ton2_get_elapsed(&f, &mut e) },
+        SL_E_CORRUPT
+    );
+    assert_eq!(
+        unsafe { ffi::sl_ton2_restore_elapsed(&mut f, 1) },
+        SL_E_CORRUPT
+    );
     assert_eq!(f.nState, SL_STATE_ERROR);
     // A corrupted latched delay: restore refuses (CRC).
     let mut f = ton2(1000, REMAINING);
     f.stPrivate.dwDelay = 5000;
-    assert_eq!(ffi::sl_ton2_restore_elapsed(&mut f, 4000), SL_E_CORRUPT);
+    assert_eq!(
+        unsafe { ffi::sl_ton2_restore_elapsed(&mut f, 4000) },
+        SL_E_CORRUPT
+    );
     assert_eq!(f.nState, SL_STATE_ERROR);
 }
 
@@ -456,7 +499,7 @@ fn corrupted_stored_value_is_detected() {
 #[test]
 fn enable_byte_and_masks() {
     let mut f = ton2(100, REMAINING);
-    assert_eq!(ffi::sl_ton2_restore_elapsed(&mut f, 90), SL_OK);
+    assert_eq!(unsafe { ffi::sl_ton2_restore_elapsed(&mut f, 90) }, SL_OK);
     f.bRun = 1;
     f.bEnable = 2;
     assert_eq!(cyc(&mut f, 0), SL_E_INVALID_BOOL);
@@ -480,7 +523,7 @@ fn enable_byte_and_masks() {
             dwOptions: options,
             ..Default::default()
         };
-        assert_eq!(ffi::sl_ton2_init(&mut f), SL_E_CONFIG);
+        assert_eq!(unsafe { ffi::sl_ton2_init(&mut f) }, SL_E_CONFIG);
     }
     // Negated TonIn1 with the remaining time.
     let mut f = FB_TON2 {
@@ -493,7 +536,7 @@ fn enable_byte_and_masks() {
         bRun: 1,
         ..Default::default()
     };
-    assert_eq!(ffi::sl_ton2_restore_elapsed(&mut f, 40), SL_OK);
+    assert_eq!(unsafe { ffi::sl_ton2_restore_elapsed(&mut f, 40) }, SL_OK);
     cyc(&mut f, 0);
     cyc(&mut f, 1);
     assert_eq!(f.nState, SL_STATE_SAFE);
@@ -525,11 +568,15 @@ fn time_bases_and_limits() {
             ..Default::default()
         };
         let expected = if ok { SL_OK } else { SL_E_CONFIG };
-        assert_eq!(ffi::sl_ton2_init(&mut f), expected, "{delay} {base}");
+        assert_eq!(
+            unsafe { ffi::sl_ton2_init(&mut f) },
+            expected,
+            "{delay} {base}"
+        );
     }
     let mut f = ton2(SL_TIMER_DELAY_MAX, REMAINING);
     assert_eq!(
-        ffi::sl_ton2_restore_elapsed(&mut f, SL_TIMER_DELAY_MAX - 1),
+        unsafe { ffi::sl_ton2_restore_elapsed(&mut f, SL_TIMER_DELAY_MAX - 1) },
         SL_OK
     );
     f.bRun = 1;
@@ -565,8 +612,14 @@ fn parameter_change_registry_and_member() {
     assert!(m.input_mut(offset_of!(FB_TON2, bTonIn1) as u16).is_some());
     assert!(m.input_mut(offset_of!(FB_TON2, bEnable) as u16).is_some());
     assert_eq!(m.output(offset_of!(FB_TON2, bTonOut) as u16), Some(0));
-    assert_eq!(ffi::sl_ton2_init(std::ptr::null_mut()), SL_E_NULL);
-    assert_eq!(ffi::sl_ton2_cycle(std::ptr::null_mut(), 0), SL_E_NULL);
+    assert_eq!(
+        unsafe { ffi::sl_ton2_init(std::ptr::null_mut()) },
+        SL_E_NULL
+    );
+    assert_eq!(
+        unsafe { ffi::sl_ton2_cycle(std::ptr::null_mut(), 0) },
+        SL_E_NULL
+    );
 }
 
 proptest! {
@@ -586,9 +639,9 @@ proptest! {
         steps in proptest::collection::vec((0u32..120, 0u8..4, 0u8..8, 0u8..4, 0u8..3), 1..200)
     ) {
         let mut f = params(delay, if option { REMAINING } else { 0 });
-        prop_assert_eq!(ffi::sl_ton2_init(&mut f), SL_OK);
+        prop_assert_eq!(unsafe { ffi::sl_ton2_init(&mut f) }, SL_OK);
         let restored = delay * restored_frac / 100;
-        prop_assert_eq!(ffi::sl_ton2_restore_elapsed(&mut f, restored), SL_OK);
+        prop_assert_eq!(unsafe { ffi::sl_ton2_restore_elapsed(&mut f, restored) }, SL_OK);
         let mut t = t0;
         // Upper bound of the block's credit: R plus closed streaks since the last abort.
         let mut credit = u64::from(if option { restored } else { 0 });
@@ -653,7 +706,10 @@ fn refused_restore_stops_the_group() {
     for _ in 0..2 {
         group::reserve_member(&mut g).unwrap();
     }
-    assert_eq!(ffi::sl_ton2_restore_elapsed(&mut f, 5000), SL_E_RESTORE);
+    assert_eq!(
+        unsafe { ffi::sl_ton2_restore_elapsed(&mut f, 5000) },
+        SL_E_RESTORE
+    );
     g.bRun = 1;
     let mut ms: [&mut dyn Member; 2] = [&mut tof, &mut f];
     group::cycle(&mut g, &mut ms[..], &[], 0);

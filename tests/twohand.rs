@@ -842,16 +842,22 @@ fn a_never_initialised_instance_initialises_on_its_first_cycle() {
 #[test]
 fn c_functions() {
     let mut b = build(cfg(SINGLE));
-    assert_eq!(ffi::sl_twohand_init(&mut b), SL_OK);
+    assert_eq!(unsafe { ffi::sl_twohand_init(&mut b) }, SL_OK);
     b.bRun = 1;
-    assert_eq!(ffi::sl_twohand_cycle(&mut b, 0), SL_OK);
+    assert_eq!(unsafe { ffi::sl_twohand_cycle(&mut b, 0) }, SL_OK);
     b.bTwoHand1 = 1;
     b.bTwoHand3 = 1;
-    ffi::sl_twohand_cycle(&mut b, 1);
-    ffi::sl_twohand_cycle(&mut b, 2);
+    unsafe { ffi::sl_twohand_cycle(&mut b, 1) };
+    unsafe { ffi::sl_twohand_cycle(&mut b, 2) };
     assert_eq!(st(&b), (SL_STATE_RUN, 0, 1));
-    assert_eq!(ffi::sl_twohand_init(std::ptr::null_mut()), SL_E_NULL);
-    assert_eq!(ffi::sl_twohand_cycle(std::ptr::null_mut(), 0), SL_E_NULL);
+    assert_eq!(
+        unsafe { ffi::sl_twohand_init(std::ptr::null_mut()) },
+        SL_E_NULL
+    );
+    assert_eq!(
+        unsafe { ffi::sl_twohand_cycle(std::ptr::null_mut(), 0) },
+        SL_E_NULL
+    );
     let info = safelogic::blocks::info(SL_TYPE_TWOHAND).unwrap();
     assert_eq!(info.name, "TWOHAND");
     let states: Vec<(u8, &str)> = info.states.to_vec();
@@ -874,7 +880,7 @@ fn c_functions() {
     let text = |d: u16| {
         let mut buf = [0i8; 256];
         assert_eq!(
-            ffi::sl_diag_text(SL_TYPE_TWOHAND, d, buf.as_mut_ptr().cast(), buf.len()),
+            unsafe { ffi::sl_diag_text(SL_TYPE_TWOHAND, d, buf.as_mut_ptr().cast(), buf.len()) },
             SL_OK
         );
         let v: Vec<u8> = buf
@@ -960,18 +966,20 @@ fn twohand_error_stops_the_group_and_members_dispatch_by_tag() {
     let mut members = [SL_MEMBER::default(); 1];
     let mut g2 = SL_GROUP::default();
     assert_eq!(
-        ffi::sl_group_init(&mut g2, members.as_mut_ptr(), 1, std::ptr::null_mut(), 0),
+        unsafe { ffi::sl_group_init(&mut g2, members.as_mut_ptr(), 1, std::ptr::null_mut(), 0) },
         SL_OK
     );
     let mut th2 = twohand(cfg(SINGLE));
     assert_eq!(
-        ffi::sl_group_add_member(
-            &mut g2,
-            members.as_mut_ptr(),
-            SL_TYPE_TWOHAND,
-            (&mut th2 as *mut FB_TWOHAND).cast(),
-            std::ptr::null_mut()
-        ),
+        unsafe {
+            ffi::sl_group_add_member(
+                &mut g2,
+                members.as_mut_ptr(),
+                SL_TYPE_TWOHAND,
+                (&mut th2 as *mut FB_TWOHAND).cast(),
+                std::ptr::null_mut(),
+            )
+        },
         SL_OK
     );
 }

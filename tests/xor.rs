@@ -65,7 +65,7 @@ macro_rules! c_group_cycle {
             i += 1;
         )+
         let _ = i;
-        ffi::sl_group_cycle(&mut $g, $members.as_mut_ptr(), $links.as_mut_ptr(), $t)
+        unsafe { ffi::sl_group_cycle(&mut $g, $members.as_mut_ptr(), $links.as_mut_ptr(), $t) }
     }};
 }
 
@@ -358,16 +358,19 @@ fn corrupt_private_state() {
 
 #[test]
 fn c_functions_state_names_and_group_membership() {
-    assert_eq!(ffi::sl_xor_init(std::ptr::null_mut()), SL_E_NULL);
-    assert_eq!(ffi::sl_xor_cycle(std::ptr::null_mut(), 0), SL_E_NULL);
+    assert_eq!(unsafe { ffi::sl_xor_init(std::ptr::null_mut()) }, SL_E_NULL);
+    assert_eq!(
+        unsafe { ffi::sl_xor_cycle(std::ptr::null_mut(), 0) },
+        SL_E_NULL
+    );
     let mut x = FB_XOR {
         wInputActive: 1,
         bXor1In1: 1,
         ..Default::default()
     };
-    assert_eq!(ffi::sl_xor_init(&mut x), SL_OK);
+    assert_eq!(unsafe { ffi::sl_xor_init(&mut x) }, SL_OK);
     x.bRun = 1;
-    assert_eq!(ffi::sl_xor_cycle(&mut x, 5), SL_OK);
+    assert_eq!(unsafe { ffi::sl_xor_cycle(&mut x, 5) }, SL_OK);
     assert_eq!(x.bXorOut1, 1);
     assert_eq!(state_name(SL_TYPE_XOR, SL_STATE_RUN), "RUN");
     assert_eq!(state_name(SL_TYPE_XOR, SL_STATE_STOP), "STOP");
@@ -389,42 +392,48 @@ fn c_functions_state_names_and_group_membership() {
     };
     assert_eq!(y.init(), SL_OK);
     assert_eq!(
-        ffi::sl_group_init(&mut g, members.as_mut_ptr(), 2, links.as_mut_ptr(), 1),
+        unsafe { ffi::sl_group_init(&mut g, members.as_mut_ptr(), 2, links.as_mut_ptr(), 1) },
         SL_OK
     );
     let mut idx = 0xFFFF;
     assert_eq!(
-        ffi::sl_group_add_member(
-            &mut g,
-            members.as_mut_ptr(),
-            SL_TYPE_XOR,
-            std::ptr::addr_of_mut!(x).cast(),
-            &mut idx
-        ),
+        unsafe {
+            ffi::sl_group_add_member(
+                &mut g,
+                members.as_mut_ptr(),
+                SL_TYPE_XOR,
+                std::ptr::addr_of_mut!(x).cast(),
+                &mut idx,
+            )
+        },
         SL_OK
     );
     assert_eq!(idx, 0);
     assert_eq!(
-        ffi::sl_group_add_member(
-            &mut g,
-            members.as_mut_ptr(),
-            SL_TYPE_XOR,
-            std::ptr::addr_of_mut!(y).cast(),
-            &mut idx
-        ),
+        unsafe {
+            ffi::sl_group_add_member(
+                &mut g,
+                members.as_mut_ptr(),
+                SL_TYPE_XOR,
+                std::ptr::addr_of_mut!(y).cast(),
+                &mut idx,
+            )
+        },
         SL_OK
     );
     // XorOut1 of member 0 feeds Xor1In1 of member 1.
     assert_eq!(
-        ffi::sl_group_add_link(
-            &mut g,
-            members.as_mut_ptr(),
-            links.as_mut_ptr(),
-            0,
-            offset_of!(FB_XOR, bXorOut1) as u16,
-            1,
-            offset_of!(FB_XOR, bXor1In1) as u16
-        ),
+        unsafe {
+            ffi::sl_group_add_link(
+                &mut g,
+                members.as_mut_ptr(),
+                links.as_mut_ptr(),
+                0,
+                offset_of!(FB_XOR, bXorOut1) as u16,
+                1,
+                offset_of!(FB_XOR, bXor1In1) as u16,
+            )
+        },
         SL_OK
     );
     g.bRun = 1;

@@ -81,11 +81,13 @@ pub const INFO: BlockInfo = BlockInfo {
     diag: &[],
 };
 
-crate::impl_member!(
-    FB_AND,
-    [bAndIn1, bAndIn2, bAndIn3, bAndIn4, bAndIn5, bAndIn6, bAndIn7, bAndIn8],
-    [bAndOut]
-);
+crate::impl_member!([] FB_AND {
+    info: INFO,
+    input: [bAndIn1, bAndIn2, bAndIn3, bAndIn4, bAndIn5, bAndIn6, bAndIn7, bAndIn8],
+    param: [wInputActive, wInputNegated],
+    output: [bAndOut],
+    info_fields: [],
+});
 
 impl FB_AND {
     fn inputs(&self) -> [u8; 8] {

@@ -97,11 +97,13 @@ pub const INFO: BlockInfo = BlockInfo {
     diag: &[],
 };
 
-crate::impl_member!(
-    FB_DECOUPLE,
-    [bDecIn1, bDecIn2, bDecIn3, bDecIn4, bDecIn5, bDecIn6, bDecIn7, bDecIn8],
-    [bDecOut1, bDecOut2, bDecOut3, bDecOut4, bDecOut5, bDecOut6, bDecOut7, bDecOut8]
-);
+crate::impl_member!([] FB_DECOUPLE {
+    info: INFO,
+    input: [bDecIn1, bDecIn2, bDecIn3, bDecIn4, bDecIn5, bDecIn6, bDecIn7, bDecIn8],
+    param: [wInputActive],
+    output: [bDecOut1, bDecOut2, bDecOut3, bDecOut4, bDecOut5, bDecOut6, bDecOut7, bDecOut8],
+    info_fields: [],
+});
 
 impl FB_DECOUPLE {
     fn inputs(&self) -> [u8; 8] {

@@ -105,7 +105,13 @@ pub const INFO: BlockInfo = BlockInfo {
     ],
 };
 
-crate::impl_member!(FB_EDM, [bMon1, bMon2], [bError]);
+crate::impl_member!([] FB_EDM {
+    info: INFO,
+    input: [bMon1, bMon2],
+    param: [tSwitchOnTime, tSwitchOffTime, wInputActive, wInputNegated],
+    output: [bError],
+    info_fields: [],
+});
 
 const T_ON: usize = 0;
 const T_OFF: usize = 1;

@@ -145,14 +145,13 @@ pub const INFO: BlockInfo = BlockInfo {
     ],
 };
 
-crate::impl_member!(
-    FB_ESTOP,
-    [
-        bRestart, bEDM1, bEDM2, bEStopIn1, bEStopIn2, bEStopIn3, bEStopIn4, bEStopIn5, bEStopIn6,
-        bEStopIn7, bEStopIn8
-    ],
-    [bError, bEStopOut, bEStopDelOut]
-);
+crate::impl_member!([] FB_ESTOP {
+    info: INFO,
+    input: [bRestart, bEDM1, bEDM2, bEStopIn1, bEStopIn2, bEStopIn3, bEStopIn4, bEStopIn5, bEStopIn6, bEStopIn7, bEStopIn8],
+    param: [tDiscTime12, tDiscTime34, tDiscTime56, tDiscTime78, tEDM1ResetTime, tEDM2ResetTime, tEStopDelOutDelay, wInputActive, wInputNegated, dwOptions],
+    output: [bError, bEStopOut, bEStopDelOut],
+    info_fields: [],
+});
 
 impl GuardBlock for FB_ESTOP {
     const TAG: u16 = 0xE570;

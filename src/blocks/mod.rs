@@ -46,28 +46,9 @@ pub const RESET: (u8, &str) = (crate::types::SL_STATE_RESET, "RESET\0");
 pub const START: (u8, &str) = (crate::types::SL_STATE_START, "START\0");
 pub const DELAYOUT: (u8, &str) = (crate::types::SL_STATE_DELAYOUT, "DELAYOUT\0");
 
-/// Every block type, in tag order.
-pub static BLOCKS: &[BlockInfo] = &[
-    estop::INFO,
-    mon::INFO,
-    and::INFO,
-    or::INFO,
-    xor::INFO,
-    decouple::INFO,
-    opmode::INFO,
-    twohand::INFO,
-    muting::INFO,
-    edm::INFO,
-    rs::INFO,
-    sr::INFO,
-    ton::INFO,
-    ton2::INFO,
-    tof::INFO,
-];
-
 /// The block type with this tag.
 pub fn info(tag: u16) -> Option<&'static BlockInfo> {
-    BLOCKS.iter().find(|b| b.tag == tag)
+    crate::registry::block_type(tag).map(|b| &b.info)
 }
 
 /// Name of state `state` of block type `tag` ("?" for a value the block does not have).
@@ -134,24 +115,6 @@ impl Writer<'_> {
         ) {
             dst.copy_from_slice(src);
             self.len += n;
-        }
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn registry_tags_are_unique_and_in_order() {
-        assert!(BLOCKS.windows(2).all(|w| w[0].tag < w[1].tag));
-        for b in BLOCKS {
-            assert!(
-                b.states.iter().all(|(_, n)| n.ends_with('\0')),
-                "{}",
-                b.name
-            );
-            assert_eq!(info(b.tag).map(|i| i.name), Some(b.name));
         }
     }
 }

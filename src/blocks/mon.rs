@@ -155,11 +155,13 @@ pub const INFO: BlockInfo = BlockInfo {
     ],
 };
 
-crate::impl_member!(
-    FB_MON,
-    [bRestart, bEDM1, bEDM2, bMonIn1, bMonIn2, bMonIn3, bMonIn4, bSecure1, bSecure2],
-    [bError, bMonOut, bMonDelOut]
-);
+crate::impl_member!([] FB_MON {
+    info: INFO,
+    input: [bRestart, bEDM1, bEDM2, bMonIn1, bMonIn2, bMonIn3, bMonIn4, bSecure1, bSecure2],
+    param: [tDiscTime12, tDiscTime34, tDiscTimeSecure12, tEDM1ResetTime, tEDM2ResetTime, tMonDelOutDelay, wInputActive, wInputNegated, dwOptions],
+    output: [bError, bMonOut, bMonDelOut],
+    info_fields: [],
+});
 
 impl GuardBlock for FB_MON {
     const TAG: u16 = 0x3011;

@@ -200,21 +200,13 @@ pub const INFO: BlockInfo = BlockInfo {
     ],
 };
 
-crate::impl_member!(
-    FB_MUTING,
-    [
-        bMutingEnable,
-        bEDM1,
-        bEDM2,
-        bMutingIn1,
-        bMutingIn2,
-        bOSSDIn1,
-        bOSSDIn2,
-        bMutingIn3,
-        bMutingIn4
-    ],
-    [bError, bMutingActive, bMuteOut, bMuteDelOut]
-);
+crate::impl_member!([] FB_MUTING {
+    info: INFO,
+    input: [bMutingEnable, bEDM1, bEDM2, bMutingIn1, bMutingIn2, bOSSDIn1, bOSSDIn2, bMutingIn3, bMutingIn4],
+    param: [tDiscTime12, tDiscTimeOSSD, tDiscTime34, tFilterTime, tMaxMutingTime, tMuteDelOutDelay, wInputActive, wInputNegated, dwOptions],
+    output: [bError, bMutingActive, bMuteOut, bMuteDelOut],
+    info_fields: [],
+});
 
 /// Bits of the input masks (`wInputActive` order, ABI §9).
 const M12: u8 = 0b00_0011;

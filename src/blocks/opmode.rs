@@ -136,11 +136,13 @@ pub const INFO: BlockInfo = BlockInfo {
     diag: &[(SL_DIAG_OPMODE_DISC, "discrepancy monitoring error")],
 };
 
-crate::impl_member!(
-    FB_OPMODE,
-    [bRestart, bOpIn1, bOpIn2, bOpIn3, bOpIn4, bOpIn5, bOpIn6, bOpIn7, bOpIn8],
-    [bError, bOpOut1, bOpOut2, bOpOut3, bOpOut4, bOpOut5, bOpOut6, bOpOut7, bOpOut8]
-);
+crate::impl_member!([] FB_OPMODE {
+    info: INFO,
+    input: [bRestart, bOpIn1, bOpIn2, bOpIn3, bOpIn4, bOpIn5, bOpIn6, bOpIn7, bOpIn8],
+    param: [tDiscTime, wInputActive, dwOptions],
+    output: [bError, bOpOut1, bOpOut2, bOpOut3, bOpOut4, bOpOut5, bOpOut6, bOpOut7, bOpOut8],
+    info_fields: [],
+});
 
 /// wAux bits 0-7: the latched mode.
 const AUX_MODE: u16 = 0x00FF;

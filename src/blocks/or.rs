@@ -81,11 +81,13 @@ pub const INFO: BlockInfo = BlockInfo {
     diag: &[],
 };
 
-crate::impl_member!(
-    FB_OR,
-    [bOrIn1, bOrIn2, bOrIn3, bOrIn4, bOrIn5, bOrIn6, bOrIn7, bOrIn8],
-    [bOrOut]
-);
+crate::impl_member!([] FB_OR {
+    info: INFO,
+    input: [bOrIn1, bOrIn2, bOrIn3, bOrIn4, bOrIn5, bOrIn6, bOrIn7, bOrIn8],
+    param: [wInputActive, wInputNegated],
+    output: [bOrOut],
+    info_fields: [],
+});
 
 impl FB_OR {
     fn inputs(&self) -> [u8; 8] {

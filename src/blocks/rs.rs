@@ -74,7 +74,13 @@ pub const INFO: BlockInfo = BlockInfo {
     diag: &[],
 };
 
-crate::impl_member!(FB_RS, [bReset, bSet], [bRsOut]);
+crate::impl_member!([] FB_RS {
+    info: INFO,
+    input: [bReset, bSet],
+    param: [wInputActive, wInputNegated],
+    output: [bRsOut],
+    info_fields: [],
+});
 
 impl FlipFlopBlock for FB_RS {
     const TAG: u16 = 0x5E75;

@@ -74,7 +74,13 @@ pub const INFO: BlockInfo = BlockInfo {
     diag: &[],
 };
 
-crate::impl_member!(FB_SR, [bReset, bSet], [bSrOut]);
+crate::impl_member!([] FB_SR {
+    info: INFO,
+    input: [bReset, bSet],
+    param: [wInputActive, wInputNegated],
+    output: [bSrOut],
+    info_fields: [],
+});
 
 impl FlipFlopBlock for FB_SR {
     const TAG: u16 = 0x5E5A;

@@ -85,7 +85,13 @@ pub const INFO: BlockInfo = BlockInfo {
     diag: &[],
 };
 
-crate::impl_member!(FB_TOF, [bTofIn1], [bTofOut]);
+crate::impl_member!([] FB_TOF {
+    info: INFO,
+    input: [bTofIn1],
+    param: [tDelay, nTimeBase, wInputActive, wInputNegated],
+    output: [bTofOut],
+    info_fields: [],
+});
 
 impl TimerBlock for FB_TOF {
     const TAG: u16 = 0x70F5;

@@ -91,7 +91,13 @@ pub const INFO: BlockInfo = BlockInfo {
     diag: &[],
 };
 
-crate::impl_member!(FB_TON, [bTonIn1], [bTonOut]);
+crate::impl_member!([] FB_TON {
+    info: INFO,
+    input: [bTonIn1],
+    param: [tDelay, nTimeBase, wInputActive, wInputNegated],
+    output: [bTonOut],
+    info_fields: [],
+});
 
 impl TimerBlock for FB_TON {
     const TAG: u16 = 0x7013;

@@ -110,7 +110,13 @@ pub const INFO: BlockInfo = BlockInfo {
     )],
 };
 
-crate::impl_member!(FB_TON2, [bTonIn1, bEnable], [bTonOut]);
+crate::impl_member!([] FB_TON2 {
+    info: INFO,
+    input: [bTonIn1, bEnable],
+    param: [tDelay, nTimeBase, wInputActive, wInputNegated, dwOptions],
+    output: [bTonOut],
+    info_fields: [],
+});
 
 impl TimerBlock for FB_TON2 {
     const TAG: u16 = 0x7014;

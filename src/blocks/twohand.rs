@@ -154,11 +154,13 @@ pub const INFO: BlockInfo = BlockInfo {
     ],
 };
 
-crate::impl_member!(
-    FB_TWOHAND,
-    [bTwoHand1, bTwoHand2, bTwoHand3, bTwoHand4],
-    [bError, bTwoHandOut]
-);
+crate::impl_member!([] FB_TWOHAND {
+    info: INFO,
+    input: [bTwoHand1, bTwoHand2, bTwoHand3, bTwoHand4],
+    param: [tDiscTime12, tDiscTime34, tDiscTimePairs, wInputActive, wInputNegated, dwOptions],
+    output: [bError, bTwoHandOut],
+    info_fields: [],
+});
 
 const T_DISC12: usize = 0;
 const T_DISC34: usize = 1;

@@ -113,14 +113,13 @@ pub const INFO: BlockInfo = BlockInfo {
     diag: &[],
 };
 
-crate::impl_member!(
-    FB_XOR,
-    [
-        bXor1In1, bXor2In1, bXor1In2, bXor2In2, bXor1In3, bXor2In3, bXor1In4, bXor2In4, bXor1In5,
-        bXor2In5, bXor1In6, bXor2In6, bXor1In7, bXor2In7, bXor1In8, bXor2In8
-    ],
-    [bXorOut1, bXorOut2, bXorOut3, bXorOut4, bXorOut5, bXorOut6, bXorOut7, bXorOut8]
-);
+crate::impl_member!([] FB_XOR {
+    info: INFO,
+    input: [bXor1In1, bXor2In1, bXor1In2, bXor2In2, bXor1In3, bXor2In3, bXor1In4, bXor2In4, bXor1In5, bXor2In5, bXor1In6, bXor2In6, bXor1In7, bXor2In7, bXor1In8, bXor2In8],
+    param: [wInputActive],
+    output: [bXorOut1, bXorOut2, bXorOut3, bXorOut4, bXorOut5, bXorOut6, bXorOut7, bXorOut8],
+    info_fields: [],
+});
 
 impl FB_XOR {
     /// Input 1 of XOR functions 1…8.

@@ -23,7 +23,7 @@ macro_rules! c_group_cycle {
             i += 1;
         )+
         let _ = i;
-        ffi::sl_group_cycle(&mut $g, $members.as_mut_ptr(), $links.as_mut_ptr(), $t)
+        unsafe { ffi::sl_group_cycle(&mut $g, $members.as_mut_ptr(), $links.as_mut_ptr(), $t) }
     }};
 }
 
@@ -174,13 +174,13 @@ macro_rules! flipflop_shared_tests {
 
         #[test]
         fn c_functions_names_and_group() {
-            assert_eq!(ffi::$init(std::ptr::null_mut()), SL_E_NULL);
-            assert_eq!(ffi::$cycle(std::ptr::null_mut(), 0), SL_E_NULL);
+            assert_eq!(unsafe { ffi::$init(std::ptr::null_mut()) }, SL_E_NULL);
+            assert_eq!(unsafe { ffi::$cycle(std::ptr::null_mut(), 0) }, SL_E_NULL);
             let mut b = $fb {
                 wInputActive: 0b11,
                 ..Default::default()
             };
-            assert_eq!(ffi::$init(&mut b), SL_OK);
+            assert_eq!(unsafe { ffi::$init(&mut b) }, SL_OK);
             assert_eq!(state_name($ty, SL_STATE_STOP), "STOP");
             assert_eq!(state_name($ty, SL_STATE_SAFE), "SAFE");
             assert_eq!(state_name($ty, $set), "SET");
@@ -198,34 +198,34 @@ macro_rules! flipflop_shared_tests {
             let mut members = [SL_MEMBER::default(); 2];
             let mut links = [SL_LINK::default(); 1];
             assert_eq!(
-                ffi::sl_group_init(&mut g, members.as_mut_ptr(), 2, links.as_mut_ptr(), 1),
+                unsafe { ffi::sl_group_init(&mut g, members.as_mut_ptr(), 2, links.as_mut_ptr(), 1) },
                 SL_OK
             );
             let null = std::ptr::null_mut();
             let tm = members.as_mut_ptr();
             assert_eq!(
-                ffi::sl_group_add_member(
+                unsafe { ffi::sl_group_add_member(
                     &mut g,
                     tm,
                     SL_TYPE_AND,
                     std::ptr::addr_of_mut!(a).cast(),
                     null
-                ),
+                ) },
                 SL_OK
             );
             let tm = members.as_mut_ptr();
             assert_eq!(
-                ffi::sl_group_add_member(
+                unsafe { ffi::sl_group_add_member(
                     &mut g,
                     tm,
                     $ty,
                     std::ptr::addr_of_mut!(b).cast(),
                     null
-                ),
+                ) },
                 SL_OK
             );
             assert_eq!(
-                ffi::sl_group_add_link(
+                unsafe { ffi::sl_group_add_link(
                     &mut g,
                     members.as_mut_ptr(),
                     links.as_mut_ptr(),
@@ -233,7 +233,7 @@ macro_rules! flipflop_shared_tests {
                     offset_of!(FB_AND, bAndOut) as u16,
                     1,
                     offset_of!($fb, bSet) as u16
-                ),
+                ) },
                 SL_OK
             );
             g.bRun = 1;

@@ -2,6 +2,30 @@
 /* CODESYS parameter-struct entry points on top of the libsafelogic C API. */
 #include "sl_codesys_adapter.h"
 
+void CDECL CDECL_EXT cds_sl_ton2_restore_elapsed(cds_sl_ton2_restore_elapsed_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_ton2_restore_elapsed = sl_ton2_restore_elapsed(p->pFb, p->nElapsedMs);
+}
+
+void CDECL CDECL_EXT cds_sl_ton2_init(cds_sl_ton2_init_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_ton2_init = sl_ton2_init(p->pFb);
+}
+
+void CDECL CDECL_EXT cds_sl_ton2_cycle(cds_sl_ton2_cycle_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_ton2_cycle = sl_ton2_cycle(p->pFb, p->tNow);
+}
+
 void CDECL CDECL_EXT cds_sl_estop_init(cds_sl_estop_init_struct *p)
 {
     if (p == 0) {
@@ -66,6 +90,38 @@ void CDECL CDECL_EXT cds_sl_or_cycle(cds_sl_or_cycle_struct *p)
     p->cds_sl_or_cycle = sl_or_cycle(p->pFb, p->tNow);
 }
 
+void CDECL CDECL_EXT cds_sl_xor_init(cds_sl_xor_init_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_xor_init = sl_xor_init(p->pFb);
+}
+
+void CDECL CDECL_EXT cds_sl_xor_cycle(cds_sl_xor_cycle_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_xor_cycle = sl_xor_cycle(p->pFb, p->tNow);
+}
+
+void CDECL CDECL_EXT cds_sl_decouple_init(cds_sl_decouple_init_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_decouple_init = sl_decouple_init(p->pFb);
+}
+
+void CDECL CDECL_EXT cds_sl_decouple_cycle(cds_sl_decouple_cycle_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_decouple_cycle = sl_decouple_cycle(p->pFb, p->tNow);
+}
+
 void CDECL CDECL_EXT cds_sl_opmode_init(cds_sl_opmode_init_struct *p)
 {
     if (p == 0) {
@@ -98,36 +154,20 @@ void CDECL CDECL_EXT cds_sl_twohand_cycle(cds_sl_twohand_cycle_struct *p)
     p->cds_sl_twohand_cycle = sl_twohand_cycle(p->pFb, p->tNow);
 }
 
-void CDECL CDECL_EXT cds_sl_xor_init(cds_sl_xor_init_struct *p)
+void CDECL CDECL_EXT cds_sl_muting_init(cds_sl_muting_init_struct *p)
 {
     if (p == 0) {
         return;
     }
-    p->cds_sl_xor_init = sl_xor_init(p->pFb);
+    p->cds_sl_muting_init = sl_muting_init(p->pFb);
 }
 
-void CDECL CDECL_EXT cds_sl_xor_cycle(cds_sl_xor_cycle_struct *p)
+void CDECL CDECL_EXT cds_sl_muting_cycle(cds_sl_muting_cycle_struct *p)
 {
     if (p == 0) {
         return;
     }
-    p->cds_sl_xor_cycle = sl_xor_cycle(p->pFb, p->tNow);
-}
-
-void CDECL CDECL_EXT cds_sl_decouple_init(cds_sl_decouple_init_struct *p)
-{
-    if (p == 0) {
-        return;
-    }
-    p->cds_sl_decouple_init = sl_decouple_init(p->pFb);
-}
-
-void CDECL CDECL_EXT cds_sl_decouple_cycle(cds_sl_decouple_cycle_struct *p)
-{
-    if (p == 0) {
-        return;
-    }
-    p->cds_sl_decouple_cycle = sl_decouple_cycle(p->pFb, p->tNow);
+    p->cds_sl_muting_cycle = sl_muting_cycle(p->pFb, p->tNow);
 }
 
 void CDECL CDECL_EXT cds_sl_edm_init(cds_sl_edm_init_struct *p)
@@ -194,30 +234,6 @@ void CDECL CDECL_EXT cds_sl_ton_cycle(cds_sl_ton_cycle_struct *p)
     p->cds_sl_ton_cycle = sl_ton_cycle(p->pFb, p->tNow);
 }
 
-void CDECL CDECL_EXT cds_sl_ton2_init(cds_sl_ton2_init_struct *p)
-{
-    if (p == 0) {
-        return;
-    }
-    p->cds_sl_ton2_init = sl_ton2_init(p->pFb);
-}
-
-void CDECL CDECL_EXT cds_sl_ton2_cycle(cds_sl_ton2_cycle_struct *p)
-{
-    if (p == 0) {
-        return;
-    }
-    p->cds_sl_ton2_cycle = sl_ton2_cycle(p->pFb, p->tNow);
-}
-
-void CDECL CDECL_EXT cds_sl_ton2_restore_elapsed(cds_sl_ton2_restore_elapsed_struct *p)
-{
-    if (p == 0) {
-        return;
-    }
-    p->cds_sl_ton2_restore_elapsed = sl_ton2_restore_elapsed(p->pFb, p->nElapsedMs);
-}
-
 void CDECL CDECL_EXT cds_sl_tof_init(cds_sl_tof_init_struct *p)
 {
     if (p == 0) {
@@ -232,22 +248,6 @@ void CDECL CDECL_EXT cds_sl_tof_cycle(cds_sl_tof_cycle_struct *p)
         return;
     }
     p->cds_sl_tof_cycle = sl_tof_cycle(p->pFb, p->tNow);
-}
-
-void CDECL CDECL_EXT cds_sl_muting_init(cds_sl_muting_init_struct *p)
-{
-    if (p == 0) {
-        return;
-    }
-    p->cds_sl_muting_init = sl_muting_init(p->pFb);
-}
-
-void CDECL CDECL_EXT cds_sl_muting_cycle(cds_sl_muting_cycle_struct *p)
-{
-    if (p == 0) {
-        return;
-    }
-    p->cds_sl_muting_cycle = sl_muting_cycle(p->pFb, p->tNow);
 }
 
 void CDECL CDECL_EXT cds_sl_time_now_ms(cds_sl_time_now_ms_struct *p)

@@ -26,6 +26,29 @@
 extern "C" {
 #endif
 
+/* FUNCTION cds_sl_ton2_restore_elapsed : DINT -> sl_ton2_restore_elapsed() */
+typedef struct tagcds_sl_ton2_restore_elapsed_struct {
+    struct FB_TON2 *pFb; /* VAR_INPUT pFb : POINTER TO ST_FB_TON2 */
+    uint32_t nElapsedMs; /* VAR_INPUT nElapsedMs : UDINT */
+    int32_t cds_sl_ton2_restore_elapsed; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_ton2_restore_elapsed_struct;
+void CDECL CDECL_EXT cds_sl_ton2_restore_elapsed(cds_sl_ton2_restore_elapsed_struct *p);
+
+/* FUNCTION cds_sl_ton2_init : DINT -> sl_ton2_init() */
+typedef struct tagcds_sl_ton2_init_struct {
+    struct FB_TON2 *pFb; /* VAR_INPUT pFb : POINTER TO ST_FB_TON2 */
+    int32_t cds_sl_ton2_init; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_ton2_init_struct;
+void CDECL CDECL_EXT cds_sl_ton2_init(cds_sl_ton2_init_struct *p);
+
+/* FUNCTION cds_sl_ton2_cycle : DINT -> sl_ton2_cycle() */
+typedef struct tagcds_sl_ton2_cycle_struct {
+    struct FB_TON2 *pFb; /* VAR_INPUT pFb : POINTER TO ST_FB_TON2 */
+    uint32_t tNow; /* VAR_INPUT tNow : UDINT */
+    int32_t cds_sl_ton2_cycle; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_ton2_cycle_struct;
+void CDECL CDECL_EXT cds_sl_ton2_cycle(cds_sl_ton2_cycle_struct *p);
+
 /* FUNCTION cds_sl_estop_init : DINT -> sl_estop_init() */
 typedef struct tagcds_sl_estop_init_struct {
     struct FB_ESTOP *pFb; /* VAR_INPUT pFb : POINTER TO ST_FB_ESTOP */
@@ -86,6 +109,36 @@ typedef struct tagcds_sl_or_cycle_struct {
 } cds_sl_or_cycle_struct;
 void CDECL CDECL_EXT cds_sl_or_cycle(cds_sl_or_cycle_struct *p);
 
+/* FUNCTION cds_sl_xor_init : DINT -> sl_xor_init() */
+typedef struct tagcds_sl_xor_init_struct {
+    struct FB_XOR *pFb; /* VAR_INPUT pFb : POINTER TO ST_FB_XOR */
+    int32_t cds_sl_xor_init; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_xor_init_struct;
+void CDECL CDECL_EXT cds_sl_xor_init(cds_sl_xor_init_struct *p);
+
+/* FUNCTION cds_sl_xor_cycle : DINT -> sl_xor_cycle() */
+typedef struct tagcds_sl_xor_cycle_struct {
+    struct FB_XOR *pFb; /* VAR_INPUT pFb : POINTER TO ST_FB_XOR */
+    uint32_t tNow; /* VAR_INPUT tNow : UDINT */
+    int32_t cds_sl_xor_cycle; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_xor_cycle_struct;
+void CDECL CDECL_EXT cds_sl_xor_cycle(cds_sl_xor_cycle_struct *p);
+
+/* FUNCTION cds_sl_decouple_init : DINT -> sl_decouple_init() */
+typedef struct tagcds_sl_decouple_init_struct {
+    struct FB_DECOUPLE *pFb; /* VAR_INPUT pFb : POINTER TO ST_FB_DECOUPLE */
+    int32_t cds_sl_decouple_init; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_decouple_init_struct;
+void CDECL CDECL_EXT cds_sl_decouple_init(cds_sl_decouple_init_struct *p);
+
+/* FUNCTION cds_sl_decouple_cycle : DINT -> sl_decouple_cycle() */
+typedef struct tagcds_sl_decouple_cycle_struct {
+    struct FB_DECOUPLE *pFb; /* VAR_INPUT pFb : POINTER TO ST_FB_DECOUPLE */
+    uint32_t tNow; /* VAR_INPUT tNow : UDINT */
+    int32_t cds_sl_decouple_cycle; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_decouple_cycle_struct;
+void CDECL CDECL_EXT cds_sl_decouple_cycle(cds_sl_decouple_cycle_struct *p);
+
 /* FUNCTION cds_sl_opmode_init : DINT -> sl_opmode_init() */
 typedef struct tagcds_sl_opmode_init_struct {
     struct FB_OPMODE *pFb; /* VAR_INPUT pFb : POINTER TO ST_FB_OPMODE */
@@ -116,35 +169,20 @@ typedef struct tagcds_sl_twohand_cycle_struct {
 } cds_sl_twohand_cycle_struct;
 void CDECL CDECL_EXT cds_sl_twohand_cycle(cds_sl_twohand_cycle_struct *p);
 
-/* FUNCTION cds_sl_xor_init : DINT -> sl_xor_init() */
-typedef struct tagcds_sl_xor_init_struct {
-    struct FB_XOR *pFb; /* VAR_INPUT pFb : POINTER TO ST_FB_XOR */
-    int32_t cds_sl_xor_init; /* VAR_OUTPUT (return value) DINT */
-} cds_sl_xor_init_struct;
-void CDECL CDECL_EXT cds_sl_xor_init(cds_sl_xor_init_struct *p);
+/* FUNCTION cds_sl_muting_init : DINT -> sl_muting_init() */
+typedef struct tagcds_sl_muting_init_struct {
+    struct FB_MUTING *pFb; /* VAR_INPUT pFb : POINTER TO ST_FB_MUTING */
+    int32_t cds_sl_muting_init; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_muting_init_struct;
+void CDECL CDECL_EXT cds_sl_muting_init(cds_sl_muting_init_struct *p);
 
-/* FUNCTION cds_sl_xor_cycle : DINT -> sl_xor_cycle() */
-typedef struct tagcds_sl_xor_cycle_struct {
-    struct FB_XOR *pFb; /* VAR_INPUT pFb : POINTER TO ST_FB_XOR */
+/* FUNCTION cds_sl_muting_cycle : DINT -> sl_muting_cycle() */
+typedef struct tagcds_sl_muting_cycle_struct {
+    struct FB_MUTING *pFb; /* VAR_INPUT pFb : POINTER TO ST_FB_MUTING */
     uint32_t tNow; /* VAR_INPUT tNow : UDINT */
-    int32_t cds_sl_xor_cycle; /* VAR_OUTPUT (return value) DINT */
-} cds_sl_xor_cycle_struct;
-void CDECL CDECL_EXT cds_sl_xor_cycle(cds_sl_xor_cycle_struct *p);
-
-/* FUNCTION cds_sl_decouple_init : DINT -> sl_decouple_init() */
-typedef struct tagcds_sl_decouple_init_struct {
-    struct FB_DECOUPLE *pFb; /* VAR_INPUT pFb : POINTER TO ST_FB_DECOUPLE */
-    int32_t cds_sl_decouple_init; /* VAR_OUTPUT (return value) DINT */
-} cds_sl_decouple_init_struct;
-void CDECL CDECL_EXT cds_sl_decouple_init(cds_sl_decouple_init_struct *p);
-
-/* FUNCTION cds_sl_decouple_cycle : DINT -> sl_decouple_cycle() */
-typedef struct tagcds_sl_decouple_cycle_struct {
-    struct FB_DECOUPLE *pFb; /* VAR_INPUT pFb : POINTER TO ST_FB_DECOUPLE */
-    uint32_t tNow; /* VAR_INPUT tNow : UDINT */
-    int32_t cds_sl_decouple_cycle; /* VAR_OUTPUT (return value) DINT */
-} cds_sl_decouple_cycle_struct;
-void CDECL CDECL_EXT cds_sl_decouple_cycle(cds_sl_decouple_cycle_struct *p);
+    int32_t cds_sl_muting_cycle; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_muting_cycle_struct;
+void CDECL CDECL_EXT cds_sl_muting_cycle(cds_sl_muting_cycle_struct *p);
 
 /* FUNCTION cds_sl_edm_init : DINT -> sl_edm_init() */
 typedef struct tagcds_sl_edm_init_struct {
@@ -206,29 +244,6 @@ typedef struct tagcds_sl_ton_cycle_struct {
 } cds_sl_ton_cycle_struct;
 void CDECL CDECL_EXT cds_sl_ton_cycle(cds_sl_ton_cycle_struct *p);
 
-/* FUNCTION cds_sl_ton2_init : DINT -> sl_ton2_init() */
-typedef struct tagcds_sl_ton2_init_struct {
-    struct FB_TON2 *pFb; /* VAR_INPUT pFb : POINTER TO ST_FB_TON2 */
-    int32_t cds_sl_ton2_init; /* VAR_OUTPUT (return value) DINT */
-} cds_sl_ton2_init_struct;
-void CDECL CDECL_EXT cds_sl_ton2_init(cds_sl_ton2_init_struct *p);
-
-/* FUNCTION cds_sl_ton2_cycle : DINT -> sl_ton2_cycle() */
-typedef struct tagcds_sl_ton2_cycle_struct {
-    struct FB_TON2 *pFb; /* VAR_INPUT pFb : POINTER TO ST_FB_TON2 */
-    uint32_t tNow; /* VAR_INPUT tNow : UDINT */
-    int32_t cds_sl_ton2_cycle; /* VAR_OUTPUT (return value) DINT */
-} cds_sl_ton2_cycle_struct;
-void CDECL CDECL_EXT cds_sl_ton2_cycle(cds_sl_ton2_cycle_struct *p);
-
-/* FUNCTION cds_sl_ton2_restore_elapsed : DINT -> sl_ton2_restore_elapsed() */
-typedef struct tagcds_sl_ton2_restore_elapsed_struct {
-    struct FB_TON2 *pFb; /* VAR_INPUT pFb : POINTER TO ST_FB_TON2 */
-    uint32_t nElapsedMs; /* VAR_INPUT nElapsedMs : UDINT */
-    int32_t cds_sl_ton2_restore_elapsed; /* VAR_OUTPUT (return value) DINT */
-} cds_sl_ton2_restore_elapsed_struct;
-void CDECL CDECL_EXT cds_sl_ton2_restore_elapsed(cds_sl_ton2_restore_elapsed_struct *p);
-
 /* FUNCTION cds_sl_tof_init : DINT -> sl_tof_init() */
 typedef struct tagcds_sl_tof_init_struct {
     struct FB_TOF *pFb; /* VAR_INPUT pFb : POINTER TO ST_FB_TOF */
@@ -244,21 +259,6 @@ typedef struct tagcds_sl_tof_cycle_struct {
 } cds_sl_tof_cycle_struct;
 void CDECL CDECL_EXT cds_sl_tof_cycle(cds_sl_tof_cycle_struct *p);
 
-/* FUNCTION cds_sl_muting_init : DINT -> sl_muting_init() */
-typedef struct tagcds_sl_muting_init_struct {
-    struct FB_MUTING *pFb; /* VAR_INPUT pFb : POINTER TO ST_FB_MUTING */
-    int32_t cds_sl_muting_init; /* VAR_OUTPUT (return value) DINT */
-} cds_sl_muting_init_struct;
-void CDECL CDECL_EXT cds_sl_muting_init(cds_sl_muting_init_struct *p);
-
-/* FUNCTION cds_sl_muting_cycle : DINT -> sl_muting_cycle() */
-typedef struct tagcds_sl_muting_cycle_struct {
-    struct FB_MUTING *pFb; /* VAR_INPUT pFb : POINTER TO ST_FB_MUTING */
-    uint32_t tNow; /* VAR_INPUT tNow : UDINT */
-    int32_t cds_sl_muting_cycle; /* VAR_OUTPUT (return value) DINT */
-} cds_sl_muting_cycle_struct;
-void CDECL CDECL_EXT cds_sl_muting_cycle(cds_sl_muting_cycle_struct *p);
-
 /* FUNCTION cds_sl_time_now_ms : UDINT -> sl_time_now_ms() */
 typedef struct tagcds_sl_time_now_ms_struct {
     uint32_t cds_sl_time_now_ms; /* VAR_OUTPUT (return value) UDINT */
@@ -268,6 +268,9 @@ void CDECL CDECL_EXT cds_sl_time_now_ms(cds_sl_time_now_ms_struct *p);
 /* X-macro over every entry point: X(name) for the runtime component's export table,
    e.g. #define X(n) s_pfCMRegisterAPI2(#n, (RTS_UINTPTR)n, 1, <crc from the Itf.m4>, <version>); */
 #define SL_CODESYS_FOR_EACH_EXTERNAL(X) \
+    X(cds_sl_ton2_restore_elapsed) \
+    X(cds_sl_ton2_init) \
+    X(cds_sl_ton2_cycle) \
     X(cds_sl_estop_init) \
     X(cds_sl_estop_cycle) \
     X(cds_sl_mon_init) \
@@ -276,14 +279,16 @@ void CDECL CDECL_EXT cds_sl_time_now_ms(cds_sl_time_now_ms_struct *p);
     X(cds_sl_and_cycle) \
     X(cds_sl_or_init) \
     X(cds_sl_or_cycle) \
-    X(cds_sl_opmode_init) \
-    X(cds_sl_opmode_cycle) \
-    X(cds_sl_twohand_init) \
-    X(cds_sl_twohand_cycle) \
     X(cds_sl_xor_init) \
     X(cds_sl_xor_cycle) \
     X(cds_sl_decouple_init) \
     X(cds_sl_decouple_cycle) \
+    X(cds_sl_opmode_init) \
+    X(cds_sl_opmode_cycle) \
+    X(cds_sl_twohand_init) \
+    X(cds_sl_twohand_cycle) \
+    X(cds_sl_muting_init) \
+    X(cds_sl_muting_cycle) \
     X(cds_sl_edm_init) \
     X(cds_sl_edm_cycle) \
     X(cds_sl_rs_init) \
@@ -292,13 +297,8 @@ void CDECL CDECL_EXT cds_sl_time_now_ms(cds_sl_time_now_ms_struct *p);
     X(cds_sl_sr_cycle) \
     X(cds_sl_ton_init) \
     X(cds_sl_ton_cycle) \
-    X(cds_sl_ton2_init) \
-    X(cds_sl_ton2_cycle) \
-    X(cds_sl_ton2_restore_elapsed) \
     X(cds_sl_tof_init) \
     X(cds_sl_tof_cycle) \
-    X(cds_sl_muting_init) \
-    X(cds_sl_muting_cycle) \
     X(cds_sl_time_now_ms)
 
 #ifdef __cplusplus

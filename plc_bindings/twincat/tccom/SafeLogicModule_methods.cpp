@@ -7,6 +7,33 @@
 
 #include "safelogic.h"   // extern "C" declarations of the library
 
+HRESULT CSafeLogicModule::sl_ton2_restore_elapsed(PVOID pFb, int32_t *pnResult, uint32_t nElapsedMs)
+{
+    if (pFb == NULL || pnResult == NULL) {
+        return E_POINTER;
+    }
+    *pnResult = ::sl_ton2_restore_elapsed(static_cast<struct FB_TON2 *>(pFb), nElapsedMs);
+    return S_OK;
+}
+
+HRESULT CSafeLogicModule::sl_ton2_init(PVOID pFb, int32_t *pnResult)
+{
+    if (pFb == NULL || pnResult == NULL) {
+        return E_POINTER;
+    }
+    *pnResult = ::sl_ton2_init(static_cast<struct FB_TON2 *>(pFb));
+    return S_OK;
+}
+
+HRESULT CSafeLogicModule::sl_ton2_cycle(PVOID pFb, int32_t *pnResult, uint32_t tNow)
+{
+    if (pFb == NULL || pnResult == NULL) {
+        return E_POINTER;
+    }
+    *pnResult = ::sl_ton2_cycle(static_cast<struct FB_TON2 *>(pFb), tNow);
+    return S_OK;
+}
+
 HRESULT CSafeLogicModule::sl_estop_init(PVOID pFb, int32_t *pnResult)
 {
     if (pFb == NULL || pnResult == NULL) {
@@ -79,6 +106,42 @@ HRESULT CSafeLogicModule::sl_or_cycle(PVOID pFb, int32_t *pnResult, uint32_t tNo
     return S_OK;
 }
 
+HRESULT CSafeLogicModule::sl_xor_init(PVOID pFb, int32_t *pnResult)
+{
+    if (pFb == NULL || pnResult == NULL) {
+        return E_POINTER;
+    }
+    *pnResult = ::sl_xor_init(static_cast<struct FB_XOR *>(pFb));
+    return S_OK;
+}
+
+HRESULT CSafeLogicModule::sl_xor_cycle(PVOID pFb, int32_t *pnResult, uint32_t tNow)
+{
+    if (pFb == NULL || pnResult == NULL) {
+        return E_POINTER;
+    }
+    *pnResult = ::sl_xor_cycle(static_cast<struct FB_XOR *>(pFb), tNow);
+    return S_OK;
+}
+
+HRESULT CSafeLogicModule::sl_decouple_init(PVOID pFb, int32_t *pnResult)
+{
+    if (pFb == NULL || pnResult == NULL) {
+        return E_POINTER;
+    }
+    *pnResult = ::sl_decouple_init(static_cast<struct FB_DECOUPLE *>(pFb));
+    return S_OK;
+}
+
+HRESULT CSafeLogicModule::sl_decouple_cycle(PVOID pFb, int32_t *pnResult, uint32_t tNow)
+{
+    if (pFb == NULL || pnResult == NULL) {
+        return E_POINTER;
+    }
+    *pnResult = ::sl_decouple_cycle(static_cast<struct FB_DECOUPLE *>(pFb), tNow);
+    return S_OK;
+}
+
 HRESULT CSafeLogicModule::sl_opmode_init(PVOID pFb, int32_t *pnResult)
 {
     if (pFb == NULL || pnResult == NULL) {
@@ -115,39 +178,21 @@ HRESULT CSafeLogicModule::sl_twohand_cycle(PVOID pFb, int32_t *pnResult, uint32_
     return S_OK;
 }
 
-HRESULT CSafeLogicModule::sl_xor_init(PVOID pFb, int32_t *pnResult)
+HRESULT CSafeLogicModule::sl_muting_init(PVOID pFb, int32_t *pnResult)
 {
     if (pFb == NULL || pnResult == NULL) {
         return E_POINTER;
     }
-    *pnResult = ::sl_xor_init(static_cast<struct FB_XOR *>(pFb));
+    *pnResult = ::sl_muting_init(static_cast<struct FB_MUTING *>(pFb));
     return S_OK;
 }
 
-HRESULT CSafeLogicModule::sl_xor_cycle(PVOID pFb, int32_t *pnResult, uint32_t tNow)
+HRESULT CSafeLogicModule::sl_muting_cycle(PVOID pFb, int32_t *pnResult, uint32_t tNow)
 {
     if (pFb == NULL || pnResult == NULL) {
         return E_POINTER;
     }
-    *pnResult = ::sl_xor_cycle(static_cast<struct FB_XOR *>(pFb), tNow);
-    return S_OK;
-}
-
-HRESULT CSafeLogicModule::sl_decouple_init(PVOID pFb, int32_t *pnResult)
-{
-    if (pFb == NULL || pnResult == NULL) {
-        return E_POINTER;
-    }
-    *pnResult = ::sl_decouple_init(static_cast<struct FB_DECOUPLE *>(pFb));
-    return S_OK;
-}
-
-HRESULT CSafeLogicModule::sl_decouple_cycle(PVOID pFb, int32_t *pnResult, uint32_t tNow)
-{
-    if (pFb == NULL || pnResult == NULL) {
-        return E_POINTER;
-    }
-    *pnResult = ::sl_decouple_cycle(static_cast<struct FB_DECOUPLE *>(pFb), tNow);
+    *pnResult = ::sl_muting_cycle(static_cast<struct FB_MUTING *>(pFb), tNow);
     return S_OK;
 }
 
@@ -223,33 +268,6 @@ HRESULT CSafeLogicModule::sl_ton_cycle(PVOID pFb, int32_t *pnResult, uint32_t tN
     return S_OK;
 }
 
-HRESULT CSafeLogicModule::sl_ton2_init(PVOID pFb, int32_t *pnResult)
-{
-    if (pFb == NULL || pnResult == NULL) {
-        return E_POINTER;
-    }
-    *pnResult = ::sl_ton2_init(static_cast<struct FB_TON2 *>(pFb));
-    return S_OK;
-}
-
-HRESULT CSafeLogicModule::sl_ton2_cycle(PVOID pFb, int32_t *pnResult, uint32_t tNow)
-{
-    if (pFb == NULL || pnResult == NULL) {
-        return E_POINTER;
-    }
-    *pnResult = ::sl_ton2_cycle(static_cast<struct FB_TON2 *>(pFb), tNow);
-    return S_OK;
-}
-
-HRESULT CSafeLogicModule::sl_ton2_restore_elapsed(PVOID pFb, int32_t *pnResult, uint32_t nElapsedMs)
-{
-    if (pFb == NULL || pnResult == NULL) {
-        return E_POINTER;
-    }
-    *pnResult = ::sl_ton2_restore_elapsed(static_cast<struct FB_TON2 *>(pFb), nElapsedMs);
-    return S_OK;
-}
-
 HRESULT CSafeLogicModule::sl_tof_init(PVOID pFb, int32_t *pnResult)
 {
     if (pFb == NULL || pnResult == NULL) {
@@ -265,23 +283,5 @@ HRESULT CSafeLogicModule::sl_tof_cycle(PVOID pFb, int32_t *pnResult, uint32_t tN
         return E_POINTER;
     }
     *pnResult = ::sl_tof_cycle(static_cast<struct FB_TOF *>(pFb), tNow);
-    return S_OK;
-}
-
-HRESULT CSafeLogicModule::sl_muting_init(PVOID pFb, int32_t *pnResult)
-{
-    if (pFb == NULL || pnResult == NULL) {
-        return E_POINTER;
-    }
-    *pnResult = ::sl_muting_init(static_cast<struct FB_MUTING *>(pFb));
-    return S_OK;
-}
-
-HRESULT CSafeLogicModule::sl_muting_cycle(PVOID pFb, int32_t *pnResult, uint32_t tNow)
-{
-    if (pFb == NULL || pnResult == NULL) {
-        return E_POINTER;
-    }
-    *pnResult = ::sl_muting_cycle(static_cast<struct FB_MUTING *>(pFb), tNow);
     return S_OK;
 }

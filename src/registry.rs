@@ -1,0 +1,310 @@
+//! The one list of block types, and what every entry brings along.
+//!
+//! A block type is declared once, as a row of [`for_each_block!`]: its struct and its two C
+//! function names. From that row come the exported `sl_<name>_init` / `sl_<name>_cycle`
+//! (`ffi`), the group's dispatch from type tag to block (`ffi`), the table [`BLOCKS`]
+//! behind `sl_state_str` / `sl_diag_text`, and the header's prototypes (build.rs reads the
+//! rows of this file). The block's file supplies the rest through `impl_member!`: its
+//! [`BlockInfo`] (tag, name, states, diag texts) and its field table ([`Field`]: name,
+//! offset, type, direction), which the group's link checks, the PLC generator and the
+//! project loader read.
+
+use crate::blocks::BlockInfo;
+
+/// Which way a field of a block struct goes.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Dir {
+    /// A VAR_INPUT the host or a link writes.
+    Input,
+    /// `bRun` / `bErrAck`, driven by the owning group (never linkable).
+    Control,
+    /// A parameter, latched at init and STOP→run.
+    Param,
+    /// A VAR_OUTPUT the block writes.
+    Output,
+    /// Info data (`nState`, `nDiag`, diag message).
+    Info,
+}
+
+/// The IEC type of a field.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Kind {
+    /// BOOL (one byte, 0 or 1).
+    Bool,
+    /// BYTE / USINT.
+    U8,
+    /// WORD / UINT.
+    U16,
+    /// INT.
+    I16,
+    /// DWORD / UDINT / TIME (ms).
+    U32,
+    /// DINT.
+    I32,
+}
+
+impl Kind {
+    /// Bytes the field occupies.
+    pub const fn size(self) -> usize {
+        match self {
+            Kind::Bool | Kind::U8 => 1,
+            Kind::U16 | Kind::I16 => 2,
+            Kind::U32 | Kind::I32 => 4,
+        }
+    }
+
+    /// The C type of the header.
+    pub const fn c_type(self) -> &'static str {
+        match self {
+            Kind::Bool => "SL_BOOL",
+            Kind::U8 => "uint8_t",
+            Kind::U16 => "uint16_t",
+            Kind::I16 => "int16_t",
+            Kind::U32 => "uint32_t",
+            Kind::I32 => "int32_t",
+        }
+    }
+}
+
+/// One named field of a block struct.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Field {
+    /// The C / PLC name (`bEStopIn1`, `tDiscTime12`, `nAnalogIn1`).
+    pub name: &'static str,
+    /// Byte offset in the struct.
+    pub offset: u16,
+    /// IEC type.
+    pub kind: Kind,
+    /// Direction.
+    pub dir: Dir,
+}
+
+/// A scalar field type of a block struct.
+pub trait FieldType: Copy {
+    /// Its IEC type (a `u8` input or output is a BOOL: see [`io_kind`]).
+    const KIND: Kind;
+    /// The value as a 32-bit pattern (sign-extended for signed types).
+    fn to_bits(self) -> u32;
+    /// The value from a pattern written by [`Self::to_bits`] of the same type.
+    fn from_bits(bits: u32) -> Self;
+    /// The field as a BOOL byte (only a one-byte field is one).
+    fn as_bool_mut(&mut self) -> Option<&mut u8> {
+        None
+    }
+    /// The value of a BOOL byte.
+    fn as_bool(self) -> Option<u8> {
+        None
+    }
+}
+
+macro_rules! field_type {
+    ($($t:ty => $k:ident),*) => {$(
+        impl FieldType for $t {
+            const KIND: Kind = Kind::$k;
+            #[inline(always)]
+            fn to_bits(self) -> u32 {
+                self as u32
+            }
+            #[inline(always)]
+            fn from_bits(bits: u32) -> Self {
+                bits as $t
+            }
+        }
+    )*};
+}
+field_type!(u16 => U16, i16 => I16, u32 => U32, i32 => I32);
+
+impl FieldType for u8 {
+    const KIND: Kind = Kind::U8;
+    #[inline(always)]
+    fn to_bits(self) -> u32 {
+        u32::from(self)
+    }
+    #[inline(always)]
+    fn from_bits(bits: u32) -> Self {
+        bits as u8
+    }
+    #[inline(always)]
+    fn as_bool_mut(&mut self) -> Option<&mut u8> {
+        Some(self)
+    }
+    #[inline(always)]
+    fn as_bool(self) -> Option<u8> {
+        Some(self)
+    }
+}
+
+/// The [`Kind`] of the field a projection reaches (type inference does the work).
+pub const fn kind_of<S, F: FieldType>(_: fn(&S) -> &F) -> Kind {
+    F::KIND
+}
+
+/// Parameters and info fields keep their type.
+pub const fn same(k: Kind) -> Kind {
+    k
+}
+
+/// Inputs and outputs of one byte are BOOLs.
+pub const fn io_kind(k: Kind) -> Kind {
+    match k {
+        Kind::U8 => Kind::Bool,
+        k => k,
+    }
+}
+
+/// What a registered block type brings: its info and its field table.
+pub trait Registered {
+    /// Tag, name, states and diag texts.
+    const INFO: BlockInfo;
+    /// Every named field (reserved bytes and the private state excluded).
+    const FIELDS: &'static [Field];
+}
+
+/// One registered block type.
+#[derive(Clone, Copy, Debug)]
+pub struct BlockType {
+    /// Tag, name, states and diag texts.
+    pub info: BlockInfo,
+    /// The field table.
+    pub fields: &'static [Field],
+    /// `sizeof(FB_<NAME>)`.
+    pub size: usize,
+    /// The C function prefix (`sl_estop`, `sl_add_int`).
+    pub c_prefix: &'static str,
+}
+
+impl BlockType {
+    /// The entry of a registered type.
+    pub const fn of<B: Registered>(c_prefix: &'static str) -> Self {
+        Self {
+            info: B::INFO,
+            fields: B::FIELDS,
+            size: core::mem::size_of::<B>(),
+            c_prefix,
+        }
+    }
+
+    /// The field with this name.
+    pub fn field(&self, name: &str) -> Option<&'static Field> {
+        self.fields.iter().find(|f| f.name == name)
+    }
+
+    /// The field at this offset.
+    pub fn field_at(&self, offset: u16) -> Option<&'static Field> {
+        self.fields.iter().find(|f| f.offset == offset)
+    }
+}
+
+/// The registry: one row per block type (struct => C init, C cycle), in tag order. Calls
+/// `$m! { rows }`; build.rs reads the rows between the markers to write the prototypes.
+#[doc(hidden)]
+#[macro_export]
+macro_rules! for_each_block {
+    ($m:ident) => {
+        $m! {
+            // registry:begin
+            $crate::blocks::estop::FB_ESTOP => sl_estop_init, sl_estop_cycle;
+            $crate::blocks::mon::FB_MON => sl_mon_init, sl_mon_cycle;
+            $crate::blocks::and::FB_AND => sl_and_init, sl_and_cycle;
+            $crate::blocks::or::FB_OR => sl_or_init, sl_or_cycle;
+            $crate::blocks::xor::FB_XOR => sl_xor_init, sl_xor_cycle;
+            $crate::blocks::decouple::FB_DECOUPLE => sl_decouple_init, sl_decouple_cycle;
+            $crate::blocks::opmode::FB_OPMODE => sl_opmode_init, sl_opmode_cycle;
+            $crate::blocks::twohand::FB_TWOHAND => sl_twohand_init, sl_twohand_cycle;
+            $crate::blocks::muting::FB_MUTING => sl_muting_init, sl_muting_cycle;
+            $crate::blocks::edm::FB_EDM => sl_edm_init, sl_edm_cycle;
+            $crate::blocks::rs::FB_RS => sl_rs_init, sl_rs_cycle;
+            $crate::blocks::sr::FB_SR => sl_sr_init, sl_sr_cycle;
+            $crate::blocks::ton::FB_TON => sl_ton_init, sl_ton_cycle;
+            $crate::blocks::ton2::FB_TON2 => sl_ton2_init, sl_ton2_cycle;
+            $crate::blocks::tof::FB_TOF => sl_tof_init, sl_tof_cycle;
+            //ARITH $crate::blocks::arith::FB_ADD_INT => sl_add_int_init, sl_add_int_cycle;
+            //ARITH $crate::blocks::arith::FB_ADD_UINT => sl_add_uint_init, sl_add_uint_cycle;
+            //ARITH $crate::blocks::arith::FB_ADD_DINT => sl_add_dint_init, sl_add_dint_cycle;
+            //ARITH $crate::blocks::arith::FB_ADD_UDINT => sl_add_udint_init, sl_add_udint_cycle;
+            //ARITH $crate::blocks::arith::FB_SUB_INT => sl_sub_int_init, sl_sub_int_cycle;
+            //ARITH $crate::blocks::arith::FB_SUB_UINT => sl_sub_uint_init, sl_sub_uint_cycle;
+            //ARITH $crate::blocks::arith::FB_SUB_DINT => sl_sub_dint_init, sl_sub_dint_cycle;
+            //ARITH $crate::blocks::arith::FB_SUB_UDINT => sl_sub_udint_init, sl_sub_udint_cycle;
+            //ARITH $crate::blocks::arith::FB_MUL_INT => sl_mul_int_init, sl_mul_int_cycle;
+            //ARITH $crate::blocks::arith::FB_MUL_UINT => sl_mul_uint_init, sl_mul_uint_cycle;
+            //ARITH $crate::blocks::arith::FB_MUL_DINT => sl_mul_dint_init, sl_mul_dint_cycle;
+            //ARITH $crate::blocks::arith::FB_MUL_UDINT => sl_mul_udint_init, sl_mul_udint_cycle;
+            //ARITH $crate::blocks::arith::FB_DIV_INT => sl_div_int_init, sl_div_int_cycle;
+            //ARITH $crate::blocks::arith::FB_DIV_UINT => sl_div_uint_init, sl_div_uint_cycle;
+            //ARITH $crate::blocks::arith::FB_DIV_DINT => sl_div_dint_init, sl_div_dint_cycle;
+            //ARITH $crate::blocks::arith::FB_DIV_UDINT => sl_div_udint_init, sl_div_udint_cycle;
+            // registry:end
+        }
+    };
+}
+
+macro_rules! block_table {
+    ($($ty:ty => $init:ident, $cycle:ident;)*) => {
+        /// Every registered block type, in tag order.
+        pub static BLOCKS: &[BlockType] = &[$(BlockType::of::<$ty>(c_prefix(stringify!($init)))),*];
+    };
+}
+
+/// `sl_estop_init` → `sl_estop`.
+const fn c_prefix(init: &'static str) -> &'static str {
+    let (prefix, _) = init.as_bytes().split_at(init.len() - "_init".len());
+    match core::str::from_utf8(prefix) {
+        Ok(p) => p,
+        Err(_) => panic!("registry: C names are ASCII"),
+    }
+}
+
+crate::for_each_block!(block_table);
+
+/// The block type with this tag.
+pub fn block_type(tag: u16) -> Option<&'static BlockType> {
+    BLOCKS.iter().find(|b| b.info.tag == tag)
+}
+
+/// The block type with this manual name (`ESTOP`, `ADD_INT`).
+pub fn block_type_named(name: &str) -> Option<&'static BlockType> {
+    BLOCKS.iter().find(|b| b.info.name == name)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn tags_and_names_are_unique_and_in_order() {
+        assert!(BLOCKS.windows(2).all(|w| w[0].info.tag < w[1].info.tag));
+        for (i, a) in BLOCKS.iter().enumerate() {
+            assert!(BLOCKS[i + 1..].iter().all(|b| b.info.name != a.info.name));
+            assert!(a.info.states.iter().all(|(_, n)| n.ends_with('\0')));
+            assert_eq!(a.c_prefix, alloc_free_lower(a.info.name).as_str());
+        }
+    }
+
+    fn alloc_free_lower(name: &str) -> String {
+        format!("sl_{}", name.to_ascii_lowercase())
+    }
+
+    #[test]
+    fn fields_lie_inside_the_struct_and_do_not_overlap() {
+        for b in BLOCKS {
+            let mut spans: Vec<_> = b
+                .fields
+                .iter()
+                .map(|f| (usize::from(f.offset), usize::from(f.offset) + f.kind.size()))
+                .collect();
+            spans.sort();
+            assert!(
+                spans.windows(2).all(|w| w[0].1 <= w[1].0),
+                "{}",
+                b.info.name
+            );
+            assert!(spans.last().is_some_and(|s| s.1 <= b.size));
+            for name in ["bRun", "bErrAck", "nState", "nDiag"] {
+                assert!(b.field(name).is_some(), "{} has {name}", b.info.name);
+            }
+            assert_eq!(b.field("bRun").map(|f| f.offset), Some(16));
+            assert_eq!(b.field("bErrAck").map(|f| f.offset), Some(17));
+        }
+    }
+}
