@@ -107,26 +107,30 @@ fn with_block_prototypes(text: &str, rows: &[Row]) -> String {
 /// A variant reserves no bytes where another one does: cbindgen writes `uint8_t x[0];`,
 /// which is not C. The Rust field is zero-sized, so dropping the line keeps the layout.
 fn drop_empty_arrays(text: &str) -> String {
-    let lines: Vec<&str> = text.lines().collect();
-    let mut out = Vec::with_capacity(lines.len());
-    for (i, line) in lines.iter().enumerate() {
+    let mut out = Vec::new();
+    for line in text.lines() {
         if line.trim_end().ends_with("[0];") {
-            // Also drop the doc comment block right above it.
-            while out
-                .last()
-                .is_some_and(|l: &&str| l.trim_start().starts_with('*') || l.trim() == "/**")
-            {
-                let l = out.pop().expect("line");
-                if l.trim() == "/**" {
-                    break;
-                }
-            }
+            drop_comment_above(&mut out);
             continue;
         }
-        out.push(*line);
-        let _ = i;
+        out.push(line);
     }
     out.join("\n") + "\n"
+}
+
+/// Removes the comment that ends on the last line of `lines`, if one does.
+fn drop_comment_above<S: AsRef<str>>(lines: &mut Vec<S>) {
+    if !lines
+        .last()
+        .is_some_and(|l| l.as_ref().trim_end().ends_with("*/"))
+    {
+        return;
+    }
+    while let Some(l) = lines.pop() {
+        if l.as_ref().trim_start().starts_with("/*") {
+            break;
+        }
+    }
 }
 
 /// cbindgen names a generic struct instantiated by a type alias after its arguments
@@ -144,14 +148,7 @@ fn name_variant_structs(text: &str) -> String {
                 if from.contains("__") && !to.contains(' ') && !rest.contains('{') {
                     renames.push((from.to_string(), to.to_string()));
                     // Drop the alias's doc comment with the typedef.
-                    while kept.last().is_some_and(|l: &String| {
-                        l.trim_start().starts_with('*') || l.trim() == "/**"
-                    }) {
-                        let l = kept.pop().expect("line");
-                        if l.trim() == "/**" {
-                            break;
-                        }
-                    }
+                    drop_comment_above(&mut kept);
                     continue;
                 }
             }

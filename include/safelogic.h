@@ -16,6 +16,127 @@
 #include <stddef.h>
 
 /*
+ Type tags of the arithmetic blocks (ABI-2 §10.6: sequential from 16).
+ */
+#define SL_TYPE_ADD_INT 16
+
+/*
+ FB_ADD_UINT.
+ */
+#define SL_TYPE_ADD_UINT 17
+
+/*
+ FB_ADD_DINT.
+ */
+#define SL_TYPE_ADD_DINT 18
+
+/*
+ FB_ADD_UDINT.
+ */
+#define SL_TYPE_ADD_UDINT 19
+
+/*
+ FB_SUB_INT.
+ */
+#define SL_TYPE_SUB_INT 20
+
+/*
+ FB_SUB_UINT.
+ */
+#define SL_TYPE_SUB_UINT 21
+
+/*
+ FB_SUB_DINT.
+ */
+#define SL_TYPE_SUB_DINT 22
+
+/*
+ FB_SUB_UDINT.
+ */
+#define SL_TYPE_SUB_UDINT 23
+
+/*
+ FB_MUL_INT.
+ */
+#define SL_TYPE_MUL_INT 24
+
+/*
+ FB_MUL_UINT.
+ */
+#define SL_TYPE_MUL_UINT 25
+
+/*
+ FB_MUL_DINT.
+ */
+#define SL_TYPE_MUL_DINT 26
+
+/*
+ FB_MUL_UDINT.
+ */
+#define SL_TYPE_MUL_UDINT 27
+
+/*
+ FB_DIV_INT.
+ */
+#define SL_TYPE_DIV_INT 28
+
+/*
+ FB_DIV_UINT.
+ */
+#define SL_TYPE_DIV_UINT 29
+
+/*
+ FB_DIV_DINT.
+ */
+#define SL_TYPE_DIV_DINT 30
+
+/*
+ FB_DIV_UDINT.
+ */
+#define SL_TYPE_DIV_UDINT 31
+
+/*
+ `nRounding` Floor: toward −∞ (docs/semantics.md A2).
+ */
+#define SL_ROUNDING_FLOOR 0
+
+/*
+ `nRounding` Ceil: toward +∞.
+ */
+#define SL_ROUNDING_CEIL 1
+
+/*
+ `nRounding` Round: commercial rounding, half away from zero (2.5 → 3, −2.5 → −3).
+ */
+#define SL_ROUNDING_ROUND 2
+
+/*
+ Diag value 1: the result is below the smallest value of the type.
+ */
+#define SL_DIAG_VALUE_UNDERFLOW 1
+
+/*
+ Diag value 2: the result is above the largest value of the type.
+ */
+#define SL_DIAG_VALUE_OVERFLOW 2
+
+/*
+ Diag message "An underflow has occurred" (parameters: AnalogIn1, AnalogIn2).
+ */
+#define SL_TEXT_ARITH_UNDERFLOW 16512
+
+/*
+ Diag message "An overflow has occurred" (parameters: AnalogIn1, AnalogIn2).
+ */
+#define SL_TEXT_ARITH_OVERFLOW 16513
+
+/*
+ `wInputActive` of every arithmetic block: AnalogIn1 (bit 8) and AnalogIn2 (bit 9),
+ both required (ABI-2 §10.5).
+ */
+#define ARITH_ACTIVE 768
+
+/*
  Link kind: BOOL output to BOOL input (analog kinds will follow).
  */
 #define SL_LINK_BOOL 0
@@ -272,6 +393,11 @@
  Library extension, diag bit 15: the private state was corrupt (SL_E_CORRUPT / SL_E_INTERNAL).
  */
 #define SL_DIAG_CORRUPT (1 << 15)
+
+/*
+ The library's own diag bits (13-15); the rest of `nDiag` is the manual's bits or value.
+ */
+#define LIBRARY_DIAG_BITS ((SL_DIAG_PARAM_CHANGED | SL_DIAG_CLOCK) | SL_DIAG_CORRUPT)
 
 /*
  State RUN (manual: status value 1).
@@ -627,6 +753,10 @@ typedef struct SL_PRIVATE_HEADER {
    */
   uint16_t wOptions;
 } SL_PRIVATE_HEADER;
+/*
+ All zero: a never-initialised instance.
+ */
+#define SL_PRIVATE_HEADER_ZERO (SL_PRIVATE_HEADER){ .wMagic = 0, .wParamCrc = 0, .nState = 0, .nFlags = 0, .wDiag = 0, .wAux = 0, .wAuxCheck = 0, .dwCtrlCheck = 0, .tLast = 0, .tPhase = 0, .nActive = 0, .nNegated = 0, .wOptions = 0 }
 
 /*
  Private state of FB_TON, FB_TON2 and FB_TOF (48 bytes). Never written by the user.
@@ -2543,6 +2673,1445 @@ typedef struct FB_TOF {
   struct SL_TIMER_PRIVATE stPrivate;
 } FB_TOF;
 
+/*
+ Private state of the arithmetic blocks (48 bytes). Never written by the user.
+ */
+typedef struct SL_ARITH_PRIVATE {
+  /*
+   Common head.
+   */
+  struct SL_PRIVATE_HEADER stHeader;
+  /*
+   Latched `wInputActive`.
+   */
+  uint16_t wActive;
+  /*
+   Latched `nRounding` (0 for ADD, SUB, MUL).
+   */
+  uint16_t wRounding;
+  /*
+   The result of the last RUN cycle as a 32-bit pattern.
+   */
+  uint32_t dwOut;
+  /*
+   Diag message parameters 2 and 3 latched at the ERROR entry.
+   */
+  uint32_t adwPar[2];
+  uint8_t aReserved[4];
+} SL_ARITH_PRIVATE;
+
+/*
+ FB ADD / SUB / MUL instance (ABI-2 §11.2). `P1` and `P2` are the reserved bytes that
+ make the 16- and 32-bit layouts differ (after the parameters, after AnalogOut).
+ */
+typedef struct FB_ADD_INT {
+  /*
+   Offset 0. Reserved, keep 0 (no BOOL inputs).
+   */
+  uint8_t aReserved0[16];
+  /*
+   Offset 16. FbRun of the owning group: TRUE = the block executes.
+   */
+  SL_BOOL bRun;
+  /*
+   Offset 17. ErrAck of the owning group.
+   */
+  SL_BOOL bErrAck;
+  /*
+   Offset 18. Reserved, keep 0.
+   */
+  uint8_t aReserved1[6];
+  /*
+   At the analog input base 24: AnalogIn1 (active bit 8, required).
+   */
+  int16_t nAnalogIn1;
+  /*
+   At 24 + W: AnalogIn2 (active bit 9, required).
+   */
+  int16_t nAnalogIn2;
+  /*
+   At 24 + 2W: bits 8 and 9 must be set, no other (ARITH_ACTIVE).
+   */
+  uint16_t wInputActive;
+  /*
+   Reserved up to the output base (16-bit: 2 bytes, 32-bit: 6).
+   */
+  uint8_t aReserved2[2];
+  /*
+   At the output base (16-bit 32, 32-bit 40): Error, TRUE in ERROR only.
+   */
+  SL_BOOL bError;
+  /*
+   Reserved up to the analog output base.
+   */
+  uint8_t aReserved3[7];
+  /*
+   At the output base + 8: AnalogOut, the result in RUN, else 0.
+   */
+  int16_t nAnalogOut;
+  /*
+   Reserved up to the info data.
+   */
+  uint8_t aReserved4[6];
+  /*
+   Info + 0: the manual's status value (RUN, STOP, ERROR, RESET).
+   */
+  uint8_t nState;
+  /*
+   Info + 1. Reserved.
+   */
+  uint8_t aReserved5[1];
+  /*
+   Info + 2: diag value (1 underflow, 2 overflow) + library bits 13-15.
+   */
+  uint16_t nDiag;
+  /*
+   Info + 4: Text ID of the latched diag message (0x4080, 0x4081), 0 = none.
+   */
+  uint16_t nDiagTextId;
+  /*
+   Info + 6. Reserved.
+   */
+  uint8_t aReserved6[2];
+  /*
+   Info + 8: message parameter 2 (AnalogIn1 as a 32-bit pattern).
+   */
+  uint32_t dwDiagPar2;
+  /*
+   Info + 12: message parameter 3 (AnalogIn2).
+   */
+  uint32_t dwDiagPar3;
+  /*
+   Info + 16: private state, 48 bytes: never write it.
+   */
+  struct SL_ARITH_PRIVATE stPrivate;
+} FB_ADD_INT;
+
+
+/*
+ FB ADD / SUB / MUL instance (ABI-2 §11.2). `P1` and `P2` are the reserved bytes that
+ make the 16- and 32-bit layouts differ (after the parameters, after AnalogOut).
+ */
+typedef struct FB_ADD_UINT {
+  /*
+   Offset 0. Reserved, keep 0 (no BOOL inputs).
+   */
+  uint8_t aReserved0[16];
+  /*
+   Offset 16. FbRun of the owning group: TRUE = the block executes.
+   */
+  SL_BOOL bRun;
+  /*
+   Offset 17. ErrAck of the owning group.
+   */
+  SL_BOOL bErrAck;
+  /*
+   Offset 18. Reserved, keep 0.
+   */
+  uint8_t aReserved1[6];
+  /*
+   At the analog input base 24: AnalogIn1 (active bit 8, required).
+   */
+  uint16_t nAnalogIn1;
+  /*
+   At 24 + W: AnalogIn2 (active bit 9, required).
+   */
+  uint16_t nAnalogIn2;
+  /*
+   At 24 + 2W: bits 8 and 9 must be set, no other (ARITH_ACTIVE).
+   */
+  uint16_t wInputActive;
+  /*
+   Reserved up to the output base (16-bit: 2 bytes, 32-bit: 6).
+   */
+  uint8_t aReserved2[2];
+  /*
+   At the output base (16-bit 32, 32-bit 40): Error, TRUE in ERROR only.
+   */
+  SL_BOOL bError;
+  /*
+   Reserved up to the analog output base.
+   */
+  uint8_t aReserved3[7];
+  /*
+   At the output base + 8: AnalogOut, the result in RUN, else 0.
+   */
+  uint16_t nAnalogOut;
+  /*
+   Reserved up to the info data.
+   */
+  uint8_t aReserved4[6];
+  /*
+   Info + 0: the manual's status value (RUN, STOP, ERROR, RESET).
+   */
+  uint8_t nState;
+  /*
+   Info + 1. Reserved.
+   */
+  uint8_t aReserved5[1];
+  /*
+   Info + 2: diag value (1 underflow, 2 overflow) + library bits 13-15.
+   */
+  uint16_t nDiag;
+  /*
+   Info + 4: Text ID of the latched diag message (0x4080, 0x4081), 0 = none.
+   */
+  uint16_t nDiagTextId;
+  /*
+   Info + 6. Reserved.
+   */
+  uint8_t aReserved6[2];
+  /*
+   Info + 8: message parameter 2 (AnalogIn1 as a 32-bit pattern).
+   */
+  uint32_t dwDiagPar2;
+  /*
+   Info + 12: message parameter 3 (AnalogIn2).
+   */
+  uint32_t dwDiagPar3;
+  /*
+   Info + 16: private state, 48 bytes: never write it.
+   */
+  struct SL_ARITH_PRIVATE stPrivate;
+} FB_ADD_UINT;
+
+
+/*
+ FB ADD / SUB / MUL instance (ABI-2 §11.2). `P1` and `P2` are the reserved bytes that
+ make the 16- and 32-bit layouts differ (after the parameters, after AnalogOut).
+ */
+typedef struct FB_ADD_DINT {
+  /*
+   Offset 0. Reserved, keep 0 (no BOOL inputs).
+   */
+  uint8_t aReserved0[16];
+  /*
+   Offset 16. FbRun of the owning group: TRUE = the block executes.
+   */
+  SL_BOOL bRun;
+  /*
+   Offset 17. ErrAck of the owning group.
+   */
+  SL_BOOL bErrAck;
+  /*
+   Offset 18. Reserved, keep 0.
+   */
+  uint8_t aReserved1[6];
+  /*
+   At the analog input base 24: AnalogIn1 (active bit 8, required).
+   */
+  int32_t nAnalogIn1;
+  /*
+   At 24 + W: AnalogIn2 (active bit 9, required).
+   */
+  int32_t nAnalogIn2;
+  /*
+   At 24 + 2W: bits 8 and 9 must be set, no other (ARITH_ACTIVE).
+   */
+  uint16_t wInputActive;
+  /*
+   Reserved up to the output base (16-bit: 2 bytes, 32-bit: 6).
+   */
+  uint8_t aReserved2[6];
+  /*
+   At the output base (16-bit 32, 32-bit 40): Error, TRUE in ERROR only.
+   */
+  SL_BOOL bError;
+  /*
+   Reserved up to the analog output base.
+   */
+  uint8_t aReserved3[7];
+  /*
+   At the output base + 8: AnalogOut, the result in RUN, else 0.
+   */
+  int32_t nAnalogOut;
+  /*
+   Reserved up to the info data.
+   */
+  uint8_t aReserved4[4];
+  /*
+   Info + 0: the manual's status value (RUN, STOP, ERROR, RESET).
+   */
+  uint8_t nState;
+  /*
+   Info + 1. Reserved.
+   */
+  uint8_t aReserved5[1];
+  /*
+   Info + 2: diag value (1 underflow, 2 overflow) + library bits 13-15.
+   */
+  uint16_t nDiag;
+  /*
+   Info + 4: Text ID of the latched diag message (0x4080, 0x4081), 0 = none.
+   */
+  uint16_t nDiagTextId;
+  /*
+   Info + 6. Reserved.
+   */
+  uint8_t aReserved6[2];
+  /*
+   Info + 8: message parameter 2 (AnalogIn1 as a 32-bit pattern).
+   */
+  uint32_t dwDiagPar2;
+  /*
+   Info + 12: message parameter 3 (AnalogIn2).
+   */
+  uint32_t dwDiagPar3;
+  /*
+   Info + 16: private state, 48 bytes: never write it.
+   */
+  struct SL_ARITH_PRIVATE stPrivate;
+} FB_ADD_DINT;
+
+
+/*
+ FB ADD / SUB / MUL instance (ABI-2 §11.2). `P1` and `P2` are the reserved bytes that
+ make the 16- and 32-bit layouts differ (after the parameters, after AnalogOut).
+ */
+typedef struct FB_ADD_UDINT {
+  /*
+   Offset 0. Reserved, keep 0 (no BOOL inputs).
+   */
+  uint8_t aReserved0[16];
+  /*
+   Offset 16. FbRun of the owning group: TRUE = the block executes.
+   */
+  SL_BOOL bRun;
+  /*
+   Offset 17. ErrAck of the owning group.
+   */
+  SL_BOOL bErrAck;
+  /*
+   Offset 18. Reserved, keep 0.
+   */
+  uint8_t aReserved1[6];
+  /*
+   At the analog input base 24: AnalogIn1 (active bit 8, required).
+   */
+  uint32_t nAnalogIn1;
+  /*
+   At 24 + W: AnalogIn2 (active bit 9, required).
+   */
+  uint32_t nAnalogIn2;
+  /*
+   At 24 + 2W: bits 8 and 9 must be set, no other (ARITH_ACTIVE).
+   */
+  uint16_t wInputActive;
+  /*
+   Reserved up to the output base (16-bit: 2 bytes, 32-bit: 6).
+   */
+  uint8_t aReserved2[6];
+  /*
+   At the output base (16-bit 32, 32-bit 40): Error, TRUE in ERROR only.
+   */
+  SL_BOOL bError;
+  /*
+   Reserved up to the analog output base.
+   */
+  uint8_t aReserved3[7];
+  /*
+   At the output base + 8: AnalogOut, the result in RUN, else 0.
+   */
+  uint32_t nAnalogOut;
+  /*
+   Reserved up to the info data.
+   */
+  uint8_t aReserved4[4];
+  /*
+   Info + 0: the manual's status value (RUN, STOP, ERROR, RESET).
+   */
+  uint8_t nState;
+  /*
+   Info + 1. Reserved.
+   */
+  uint8_t aReserved5[1];
+  /*
+   Info + 2: diag value (1 underflow, 2 overflow) + library bits 13-15.
+   */
+  uint16_t nDiag;
+  /*
+   Info + 4: Text ID of the latched diag message (0x4080, 0x4081), 0 = none.
+   */
+  uint16_t nDiagTextId;
+  /*
+   Info + 6. Reserved.
+   */
+  uint8_t aReserved6[2];
+  /*
+   Info + 8: message parameter 2 (AnalogIn1 as a 32-bit pattern).
+   */
+  uint32_t dwDiagPar2;
+  /*
+   Info + 12: message parameter 3 (AnalogIn2).
+   */
+  uint32_t dwDiagPar3;
+  /*
+   Info + 16: private state, 48 bytes: never write it.
+   */
+  struct SL_ARITH_PRIVATE stPrivate;
+} FB_ADD_UDINT;
+
+
+/*
+ FB ADD / SUB / MUL instance (ABI-2 §11.2). `P1` and `P2` are the reserved bytes that
+ make the 16- and 32-bit layouts differ (after the parameters, after AnalogOut).
+ */
+typedef struct FB_SUB_INT {
+  /*
+   Offset 0. Reserved, keep 0 (no BOOL inputs).
+   */
+  uint8_t aReserved0[16];
+  /*
+   Offset 16. FbRun of the owning group: TRUE = the block executes.
+   */
+  SL_BOOL bRun;
+  /*
+   Offset 17. ErrAck of the owning group.
+   */
+  SL_BOOL bErrAck;
+  /*
+   Offset 18. Reserved, keep 0.
+   */
+  uint8_t aReserved1[6];
+  /*
+   At the analog input base 24: AnalogIn1 (active bit 8, required).
+   */
+  int16_t nAnalogIn1;
+  /*
+   At 24 + W: AnalogIn2 (active bit 9, required).
+   */
+  int16_t nAnalogIn2;
+  /*
+   At 24 + 2W: bits 8 and 9 must be set, no other (ARITH_ACTIVE).
+   */
+  uint16_t wInputActive;
+  /*
+   Reserved up to the output base (16-bit: 2 bytes, 32-bit: 6).
+   */
+  uint8_t aReserved2[2];
+  /*
+   At the output base (16-bit 32, 32-bit 40): Error, TRUE in ERROR only.
+   */
+  SL_BOOL bError;
+  /*
+   Reserved up to the analog output base.
+   */
+  uint8_t aReserved3[7];
+  /*
+   At the output base + 8: AnalogOut, the result in RUN, else 0.
+   */
+  int16_t nAnalogOut;
+  /*
+   Reserved up to the info data.
+   */
+  uint8_t aReserved4[6];
+  /*
+   Info + 0: the manual's status value (RUN, STOP, ERROR, RESET).
+   */
+  uint8_t nState;
+  /*
+   Info + 1. Reserved.
+   */
+  uint8_t aReserved5[1];
+  /*
+   Info + 2: diag value (1 underflow, 2 overflow) + library bits 13-15.
+   */
+  uint16_t nDiag;
+  /*
+   Info + 4: Text ID of the latched diag message (0x4080, 0x4081), 0 = none.
+   */
+  uint16_t nDiagTextId;
+  /*
+   Info + 6. Reserved.
+   */
+  uint8_t aReserved6[2];
+  /*
+   Info + 8: message parameter 2 (AnalogIn1 as a 32-bit pattern).
+   */
+  uint32_t dwDiagPar2;
+  /*
+   Info + 12: message parameter 3 (AnalogIn2).
+   */
+  uint32_t dwDiagPar3;
+  /*
+   Info + 16: private state, 48 bytes: never write it.
+   */
+  struct SL_ARITH_PRIVATE stPrivate;
+} FB_SUB_INT;
+
+
+/*
+ FB ADD / SUB / MUL instance (ABI-2 §11.2). `P1` and `P2` are the reserved bytes that
+ make the 16- and 32-bit layouts differ (after the parameters, after AnalogOut).
+ */
+typedef struct FB_SUB_UINT {
+  /*
+   Offset 0. Reserved, keep 0 (no BOOL inputs).
+   */
+  uint8_t aReserved0[16];
+  /*
+   Offset 16. FbRun of the owning group: TRUE = the block executes.
+   */
+  SL_BOOL bRun;
+  /*
+   Offset 17. ErrAck of the owning group.
+   */
+  SL_BOOL bErrAck;
+  /*
+   Offset 18. Reserved, keep 0.
+   */
+  uint8_t aReserved1[6];
+  /*
+   At the analog input base 24: AnalogIn1 (active bit 8, required).
+   */
+  uint16_t nAnalogIn1;
+  /*
+   At 24 + W: AnalogIn2 (active bit 9, required).
+   */
+  uint16_t nAnalogIn2;
+  /*
+   At 24 + 2W: bits 8 and 9 must be set, no other (ARITH_ACTIVE).
+   */
+  uint16_t wInputActive;
+  /*
+   Reserved up to the output base (16-bit: 2 bytes, 32-bit: 6).
+   */
+  uint8_t aReserved2[2];
+  /*
+   At the output base (16-bit 32, 32-bit 40): Error, TRUE in ERROR only.
+   */
+  SL_BOOL bError;
+  /*
+   Reserved up to the analog output base.
+   */
+  uint8_t aReserved3[7];
+  /*
+   At the output base + 8: AnalogOut, the result in RUN, else 0.
+   */
+  uint16_t nAnalogOut;
+  /*
+   Reserved up to the info data.
+   */
+  uint8_t aReserved4[6];
+  /*
+   Info + 0: the manual's status value (RUN, STOP, ERROR, RESET).
+   */
+  uint8_t nState;
+  /*
+   Info + 1. Reserved.
+   */
+  uint8_t aReserved5[1];
+  /*
+   Info + 2: diag value (1 underflow, 2 overflow) + library bits 13-15.
+   */
+  uint16_t nDiag;
+  /*
+   Info + 4: Text ID of the latched diag message (0x4080, 0x4081), 0 = none.
+   */
+  uint16_t nDiagTextId;
+  /*
+   Info + 6. Reserved.
+   */
+  uint8_t aReserved6[2];
+  /*
+   Info + 8: message parameter 2 (AnalogIn1 as a 32-bit pattern).
+   */
+  uint32_t dwDiagPar2;
+  /*
+   Info + 12: message parameter 3 (AnalogIn2).
+   */
+  uint32_t dwDiagPar3;
+  /*
+   Info + 16: private state, 48 bytes: never write it.
+   */
+  struct SL_ARITH_PRIVATE stPrivate;
+} FB_SUB_UINT;
+
+
+/*
+ FB ADD / SUB / MUL instance (ABI-2 §11.2). `P1` and `P2` are the reserved bytes that
+ make the 16- and 32-bit layouts differ (after the parameters, after AnalogOut).
+ */
+typedef struct FB_SUB_DINT {
+  /*
+   Offset 0. Reserved, keep 0 (no BOOL inputs).
+   */
+  uint8_t aReserved0[16];
+  /*
+   Offset 16. FbRun of the owning group: TRUE = the block executes.
+   */
+  SL_BOOL bRun;
+  /*
+   Offset 17. ErrAck of the owning group.
+   */
+  SL_BOOL bErrAck;
+  /*
+   Offset 18. Reserved, keep 0.
+   */
+  uint8_t aReserved1[6];
+  /*
+   At the analog input base 24: AnalogIn1 (active bit 8, required).
+   */
+  int32_t nAnalogIn1;
+  /*
+   At 24 + W: AnalogIn2 (active bit 9, required).
+   */
+  int32_t nAnalogIn2;
+  /*
+   At 24 + 2W: bits 8 and 9 must be set, no other (ARITH_ACTIVE).
+   */
+  uint16_t wInputActive;
+  /*
+   Reserved up to the output base (16-bit: 2 bytes, 32-bit: 6).
+   */
+  uint8_t aReserved2[6];
+  /*
+   At the output base (16-bit 32, 32-bit 40): Error, TRUE in ERROR only.
+   */
+  SL_BOOL bError;
+  /*
+   Reserved up to the analog output base.
+   */
+  uint8_t aReserved3[7];
+  /*
+   At the output base + 8: AnalogOut, the result in RUN, else 0.
+   */
+  int32_t nAnalogOut;
+  /*
+   Reserved up to the info data.
+   */
+  uint8_t aReserved4[4];
+  /*
+   Info + 0: the manual's status value (RUN, STOP, ERROR, RESET).
+   */
+  uint8_t nState;
+  /*
+   Info + 1. Reserved.
+   */
+  uint8_t aReserved5[1];
+  /*
+   Info + 2: diag value (1 underflow, 2 overflow) + library bits 13-15.
+   */
+  uint16_t nDiag;
+  /*
+   Info + 4: Text ID of the latched diag message (0x4080, 0x4081), 0 = none.
+   */
+  uint16_t nDiagTextId;
+  /*
+   Info + 6. Reserved.
+   */
+  uint8_t aReserved6[2];
+  /*
+   Info + 8: message parameter 2 (AnalogIn1 as a 32-bit pattern).
+   */
+  uint32_t dwDiagPar2;
+  /*
+   Info + 12: message parameter 3 (AnalogIn2).
+   */
+  uint32_t dwDiagPar3;
+  /*
+   Info + 16: private state, 48 bytes: never write it.
+   */
+  struct SL_ARITH_PRIVATE stPrivate;
+} FB_SUB_DINT;
+
+
+/*
+ FB ADD / SUB / MUL instance (ABI-2 §11.2). `P1` and `P2` are the reserved bytes that
+ make the 16- and 32-bit layouts differ (after the parameters, after AnalogOut).
+ */
+typedef struct FB_SUB_UDINT {
+  /*
+   Offset 0. Reserved, keep 0 (no BOOL inputs).
+   */
+  uint8_t aReserved0[16];
+  /*
+   Offset 16. FbRun of the owning group: TRUE = the block executes.
+   */
+  SL_BOOL bRun;
+  /*
+   Offset 17. ErrAck of the owning group.
+   */
+  SL_BOOL bErrAck;
+  /*
+   Offset 18. Reserved, keep 0.
+   */
+  uint8_t aReserved1[6];
+  /*
+   At the analog input base 24: AnalogIn1 (active bit 8, required).
+   */
+  uint32_t nAnalogIn1;
+  /*
+   At 24 + W: AnalogIn2 (active bit 9, required).
+   */
+  uint32_t nAnalogIn2;
+  /*
+   At 24 + 2W: bits 8 and 9 must be set, no other (ARITH_ACTIVE).
+   */
+  uint16_t wInputActive;
+  /*
+   Reserved up to the output base (16-bit: 2 bytes, 32-bit: 6).
+   */
+  uint8_t aReserved2[6];
+  /*
+   At the output base (16-bit 32, 32-bit 40): Error, TRUE in ERROR only.
+   */
+  SL_BOOL bError;
+  /*
+   Reserved up to the analog output base.
+   */
+  uint8_t aReserved3[7];
+  /*
+   At the output base + 8: AnalogOut, the result in RUN, else 0.
+   */
+  uint32_t nAnalogOut;
+  /*
+   Reserved up to the info data.
+   */
+  uint8_t aReserved4[4];
+  /*
+   Info + 0: the manual's status value (RUN, STOP, ERROR, RESET).
+   */
+  uint8_t nState;
+  /*
+   Info + 1. Reserved.
+   */
+  uint8_t aReserved5[1];
+  /*
+   Info + 2: diag value (1 underflow, 2 overflow) + library bits 13-15.
+   */
+  uint16_t nDiag;
+  /*
+   Info + 4: Text ID of the latched diag message (0x4080, 0x4081), 0 = none.
+   */
+  uint16_t nDiagTextId;
+  /*
+   Info + 6. Reserved.
+   */
+  uint8_t aReserved6[2];
+  /*
+   Info + 8: message parameter 2 (AnalogIn1 as a 32-bit pattern).
+   */
+  uint32_t dwDiagPar2;
+  /*
+   Info + 12: message parameter 3 (AnalogIn2).
+   */
+  uint32_t dwDiagPar3;
+  /*
+   Info + 16: private state, 48 bytes: never write it.
+   */
+  struct SL_ARITH_PRIVATE stPrivate;
+} FB_SUB_UDINT;
+
+
+/*
+ FB ADD / SUB / MUL instance (ABI-2 §11.2). `P1` and `P2` are the reserved bytes that
+ make the 16- and 32-bit layouts differ (after the parameters, after AnalogOut).
+ */
+typedef struct FB_MUL_INT {
+  /*
+   Offset 0. Reserved, keep 0 (no BOOL inputs).
+   */
+  uint8_t aReserved0[16];
+  /*
+   Offset 16. FbRun of the owning group: TRUE = the block executes.
+   */
+  SL_BOOL bRun;
+  /*
+   Offset 17. ErrAck of the owning group.
+   */
+  SL_BOOL bErrAck;
+  /*
+   Offset 18. Reserved, keep 0.
+   */
+  uint8_t aReserved1[6];
+  /*
+   At the analog input base 24: AnalogIn1 (active bit 8, required).
+   */
+  int16_t nAnalogIn1;
+  /*
+   At 24 + W: AnalogIn2 (active bit 9, required).
+   */
+  int16_t nAnalogIn2;
+  /*
+   At 24 + 2W: bits 8 and 9 must be set, no other (ARITH_ACTIVE).
+   */
+  uint16_t wInputActive;
+  /*
+   Reserved up to the output base (16-bit: 2 bytes, 32-bit: 6).
+   */
+  uint8_t aReserved2[2];
+  /*
+   At the output base (16-bit 32, 32-bit 40): Error, TRUE in ERROR only.
+   */
+  SL_BOOL bError;
+  /*
+   Reserved up to the analog output base.
+   */
+  uint8_t aReserved3[7];
+  /*
+   At the output base + 8: AnalogOut, the result in RUN, else 0.
+   */
+  int16_t nAnalogOut;
+  /*
+   Reserved up to the info data.
+   */
+  uint8_t aReserved4[6];
+  /*
+   Info + 0: the manual's status value (RUN, STOP, ERROR, RESET).
+   */
+  uint8_t nState;
+  /*
+   Info + 1. Reserved.
+   */
+  uint8_t aReserved5[1];
+  /*
+   Info + 2: diag value (1 underflow, 2 overflow) + library bits 13-15.
+   */
+  uint16_t nDiag;
+  /*
+   Info + 4: Text ID of the latched diag message (0x4080, 0x4081), 0 = none.
+   */
+  uint16_t nDiagTextId;
+  /*
+   Info + 6. Reserved.
+   */
+  uint8_t aReserved6[2];
+  /*
+   Info + 8: message parameter 2 (AnalogIn1 as a 32-bit pattern).
+   */
+  uint32_t dwDiagPar2;
+  /*
+   Info + 12: message parameter 3 (AnalogIn2).
+   */
+  uint32_t dwDiagPar3;
+  /*
+   Info + 16: private state, 48 bytes: never write it.
+   */
+  struct SL_ARITH_PRIVATE stPrivate;
+} FB_MUL_INT;
+
+
+/*
+ FB ADD / SUB / MUL instance (ABI-2 §11.2). `P1` and `P2` are the reserved bytes that
+ make the 16- and 32-bit layouts differ (after the parameters, after AnalogOut).
+ */
+typedef struct FB_MUL_UINT {
+  /*
+   Offset 0. Reserved, keep 0 (no BOOL inputs).
+   */
+  uint8_t aReserved0[16];
+  /*
+   Offset 16. FbRun of the owning group: TRUE = the block executes.
+   */
+  SL_BOOL bRun;
+  /*
+   Offset 17. ErrAck of the owning group.
+   */
+  SL_BOOL bErrAck;
+  /*
+   Offset 18. Reserved, keep 0.
+   */
+  uint8_t aReserved1[6];
+  /*
+   At the analog input base 24: AnalogIn1 (active bit 8, required).
+   */
+  uint16_t nAnalogIn1;
+  /*
+   At 24 + W: AnalogIn2 (active bit 9, required).
+   */
+  uint16_t nAnalogIn2;
+  /*
+   At 24 + 2W: bits 8 and 9 must be set, no other (ARITH_ACTIVE).
+   */
+  uint16_t wInputActive;
+  /*
+   Reserved up to the output base (16-bit: 2 bytes, 32-bit: 6).
+   */
+  uint8_t aReserved2[2];
+  /*
+   At the output base (16-bit 32, 32-bit 40): Error, TRUE in ERROR only.
+   */
+  SL_BOOL bError;
+  /*
+   Reserved up to the analog output base.
+   */
+  uint8_t aReserved3[7];
+  /*
+   At the output base + 8: AnalogOut, the result in RUN, else 0.
+   */
+  uint16_t nAnalogOut;
+  /*
+   Reserved up to the info data.
+   */
+  uint8_t aReserved4[6];
+  /*
+   Info + 0: the manual's status value (RUN, STOP, ERROR, RESET).
+   */
+  uint8_t nState;
+  /*
+   Info + 1. Reserved.
+   */
+  uint8_t aReserved5[1];
+  /*
+   Info + 2: diag value (1 underflow, 2 overflow) + library bits 13-15.
+   */
+  uint16_t nDiag;
+  /*
+   Info + 4: Text ID of the latched diag message (0x4080, 0x4081), 0 = none.
+   */
+  uint16_t nDiagTextId;
+  /*
+   Info + 6. Reserved.
+   */
+  uint8_t aReserved6[2];
+  /*
+   Info + 8: message parameter 2 (AnalogIn1 as a 32-bit pattern).
+   */
+  uint32_t dwDiagPar2;
+  /*
+   Info + 12: message parameter 3 (AnalogIn2).
+   */
+  uint32_t dwDiagPar3;
+  /*
+   Info + 16: private state, 48 bytes: never write it.
+   */
+  struct SL_ARITH_PRIVATE stPrivate;
+} FB_MUL_UINT;
+
+
+/*
+ FB ADD / SUB / MUL instance (ABI-2 §11.2). `P1` and `P2` are the reserved bytes that
+ make the 16- and 32-bit layouts differ (after the parameters, after AnalogOut).
+ */
+typedef struct FB_MUL_DINT {
+  /*
+   Offset 0. Reserved, keep 0 (no BOOL inputs).
+   */
+  uint8_t aReserved0[16];
+  /*
+   Offset 16. FbRun of the owning group: TRUE = the block executes.
+   */
+  SL_BOOL bRun;
+  /*
+   Offset 17. ErrAck of the owning group.
+   */
+  SL_BOOL bErrAck;
+  /*
+   Offset 18. Reserved, keep 0.
+   */
+  uint8_t aReserved1[6];
+  /*
+   At the analog input base 24: AnalogIn1 (active bit 8, required).
+   */
+  int32_t nAnalogIn1;
+  /*
+   At 24 + W: AnalogIn2 (active bit 9, required).
+   */
+  int32_t nAnalogIn2;
+  /*
+   At 24 + 2W: bits 8 and 9 must be set, no other (ARITH_ACTIVE).
+   */
+  uint16_t wInputActive;
+  /*
+   Reserved up to the output base (16-bit: 2 bytes, 32-bit: 6).
+   */
+  uint8_t aReserved2[6];
+  /*
+   At the output base (16-bit 32, 32-bit 40): Error, TRUE in ERROR only.
+   */
+  SL_BOOL bError;
+  /*
+   Reserved up to the analog output base.
+   */
+  uint8_t aReserved3[7];
+  /*
+   At the output base + 8: AnalogOut, the result in RUN, else 0.
+   */
+  int32_t nAnalogOut;
+  /*
+   Reserved up to the info data.
+   */
+  uint8_t aReserved4[4];
+  /*
+   Info + 0: the manual's status value (RUN, STOP, ERROR, RESET).
+   */
+  uint8_t nState;
+  /*
+   Info + 1. Reserved.
+   */
+  uint8_t aReserved5[1];
+  /*
+   Info + 2: diag value (1 underflow, 2 overflow) + library bits 13-15.
+   */
+  uint16_t nDiag;
+  /*
+   Info + 4: Text ID of the latched diag message (0x4080, 0x4081), 0 = none.
+   */
+  uint16_t nDiagTextId;
+  /*
+   Info + 6. Reserved.
+   */
+  uint8_t aReserved6[2];
+  /*
+   Info + 8: message parameter 2 (AnalogIn1 as a 32-bit pattern).
+   */
+  uint32_t dwDiagPar2;
+  /*
+   Info + 12: message parameter 3 (AnalogIn2).
+   */
+  uint32_t dwDiagPar3;
+  /*
+   Info + 16: private state, 48 bytes: never write it.
+   */
+  struct SL_ARITH_PRIVATE stPrivate;
+} FB_MUL_DINT;
+
+
+/*
+ FB ADD / SUB / MUL instance (ABI-2 §11.2). `P1` and `P2` are the reserved bytes that
+ make the 16- and 32-bit layouts differ (after the parameters, after AnalogOut).
+ */
+typedef struct FB_MUL_UDINT {
+  /*
+   Offset 0. Reserved, keep 0 (no BOOL inputs).
+   */
+  uint8_t aReserved0[16];
+  /*
+   Offset 16. FbRun of the owning group: TRUE = the block executes.
+   */
+  SL_BOOL bRun;
+  /*
+   Offset 17. ErrAck of the owning group.
+   */
+  SL_BOOL bErrAck;
+  /*
+   Offset 18. Reserved, keep 0.
+   */
+  uint8_t aReserved1[6];
+  /*
+   At the analog input base 24: AnalogIn1 (active bit 8, required).
+   */
+  uint32_t nAnalogIn1;
+  /*
+   At 24 + W: AnalogIn2 (active bit 9, required).
+   */
+  uint32_t nAnalogIn2;
+  /*
+   At 24 + 2W: bits 8 and 9 must be set, no other (ARITH_ACTIVE).
+   */
+  uint16_t wInputActive;
+  /*
+   Reserved up to the output base (16-bit: 2 bytes, 32-bit: 6).
+   */
+  uint8_t aReserved2[6];
+  /*
+   At the output base (16-bit 32, 32-bit 40): Error, TRUE in ERROR only.
+   */
+  SL_BOOL bError;
+  /*
+   Reserved up to the analog output base.
+   */
+  uint8_t aReserved3[7];
+  /*
+   At the output base + 8: AnalogOut, the result in RUN, else 0.
+   */
+  uint32_t nAnalogOut;
+  /*
+   Reserved up to the info data.
+   */
+  uint8_t aReserved4[4];
+  /*
+   Info + 0: the manual's status value (RUN, STOP, ERROR, RESET).
+   */
+  uint8_t nState;
+  /*
+   Info + 1. Reserved.
+   */
+  uint8_t aReserved5[1];
+  /*
+   Info + 2: diag value (1 underflow, 2 overflow) + library bits 13-15.
+   */
+  uint16_t nDiag;
+  /*
+   Info + 4: Text ID of the latched diag message (0x4080, 0x4081), 0 = none.
+   */
+  uint16_t nDiagTextId;
+  /*
+   Info + 6. Reserved.
+   */
+  uint8_t aReserved6[2];
+  /*
+   Info + 8: message parameter 2 (AnalogIn1 as a 32-bit pattern).
+   */
+  uint32_t dwDiagPar2;
+  /*
+   Info + 12: message parameter 3 (AnalogIn2).
+   */
+  uint32_t dwDiagPar3;
+  /*
+   Info + 16: private state, 48 bytes: never write it.
+   */
+  struct SL_ARITH_PRIVATE stPrivate;
+} FB_MUL_UDINT;
+
+
+/*
+ FB DIV instance (ABI-2 §11.2): as [`FB_ARITH`] with `nRounding` before `wInputActive`.
+ */
+typedef struct FB_DIV_INT {
+  /*
+   Offset 0. Reserved, keep 0 (no BOOL inputs).
+   */
+  uint8_t aReserved0[16];
+  /*
+   Offset 16. FbRun of the owning group: TRUE = the block executes.
+   */
+  SL_BOOL bRun;
+  /*
+   Offset 17. ErrAck of the owning group.
+   */
+  SL_BOOL bErrAck;
+  /*
+   Offset 18. Reserved, keep 0.
+   */
+  uint8_t aReserved1[6];
+  /*
+   At the analog input base 24: AnalogIn1, the dividend (active bit 8, required).
+   */
+  int16_t nAnalogIn1;
+  /*
+   At 24 + W: AnalogIn2, the divisor (active bit 9, required); 0 gives 0, no error.
+   */
+  int16_t nAnalogIn2;
+  /*
+   At 24 + 2W: "Division Rounding": SL_ROUNDING_FLOOR, _CEIL, _ROUND.
+   */
+  uint16_t nRounding;
+  /*
+   At 26 + 2W: bits 8 and 9 must be set, no other (ARITH_ACTIVE).
+   */
+  uint16_t wInputActive;
+  /*
+   At the output base (16-bit 32, 32-bit 40): Error, TRUE in ERROR only.
+   */
+  SL_BOOL bError;
+  /*
+   Reserved up to the analog output base.
+   */
+  uint8_t aReserved3[7];
+  /*
+   At the output base + 8: AnalogOut, the rounded quotient in RUN, else 0.
+   */
+  int16_t nAnalogOut;
+  /*
+   Reserved up to the info data.
+   */
+  uint8_t aReserved4[6];
+  /*
+   Info + 0: the manual's status value (RUN, STOP, ERROR, RESET).
+   */
+  uint8_t nState;
+  /*
+   Info + 1. Reserved.
+   */
+  uint8_t aReserved5[1];
+  /*
+   Info + 2: diag value (2 overflow: MIN ÷ −1) + library bits 13-15.
+   */
+  uint16_t nDiag;
+  /*
+   Info + 4: Text ID of the latched diag message (0x4081), 0 = none.
+   */
+  uint16_t nDiagTextId;
+  /*
+   Info + 6. Reserved.
+   */
+  uint8_t aReserved6[2];
+  /*
+   Info + 8: message parameter 2 (AnalogIn1 as a 32-bit pattern).
+   */
+  uint32_t dwDiagPar2;
+  /*
+   Info + 12: message parameter 3 (AnalogIn2).
+   */
+  uint32_t dwDiagPar3;
+  /*
+   Info + 16: private state, 48 bytes: never write it.
+   */
+  struct SL_ARITH_PRIVATE stPrivate;
+} FB_DIV_INT;
+
+
+/*
+ FB DIV instance (ABI-2 §11.2): as [`FB_ARITH`] with `nRounding` before `wInputActive`.
+ */
+typedef struct FB_DIV_UINT {
+  /*
+   Offset 0. Reserved, keep 0 (no BOOL inputs).
+   */
+  uint8_t aReserved0[16];
+  /*
+   Offset 16. FbRun of the owning group: TRUE = the block executes.
+   */
+  SL_BOOL bRun;
+  /*
+   Offset 17. ErrAck of the owning group.
+   */
+  SL_BOOL bErrAck;
+  /*
+   Offset 18. Reserved, keep 0.
+   */
+  uint8_t aReserved1[6];
+  /*
+   At the analog input base 24: AnalogIn1, the dividend (active bit 8, required).
+   */
+  uint16_t nAnalogIn1;
+  /*
+   At 24 + W: AnalogIn2, the divisor (active bit 9, required); 0 gives 0, no error.
+   */
+  uint16_t nAnalogIn2;
+  /*
+   At 24 + 2W: "Division Rounding": SL_ROUNDING_FLOOR, _CEIL, _ROUND.
+   */
+  uint16_t nRounding;
+  /*
+   At 26 + 2W: bits 8 and 9 must be set, no other (ARITH_ACTIVE).
+   */
+  uint16_t wInputActive;
+  /*
+   At the output base (16-bit 32, 32-bit 40): Error, TRUE in ERROR only.
+   */
+  SL_BOOL bError;
+  /*
+   Reserved up to the analog output base.
+   */
+  uint8_t aReserved3[7];
+  /*
+   At the output base + 8: AnalogOut, the rounded quotient in RUN, else 0.
+   */
+  uint16_t nAnalogOut;
+  /*
+   Reserved up to the info data.
+   */
+  uint8_t aReserved4[6];
+  /*
+   Info + 0: the manual's status value (RUN, STOP, ERROR, RESET).
+   */
+  uint8_t nState;
+  /*
+   Info + 1. Reserved.
+   */
+  uint8_t aReserved5[1];
+  /*
+   Info + 2: diag value (2 overflow: MIN ÷ −1) + library bits 13-15.
+   */
+  uint16_t nDiag;
+  /*
+   Info + 4: Text ID of the latched diag message (0x4081), 0 = none.
+   */
+  uint16_t nDiagTextId;
+  /*
+   Info + 6. Reserved.
+   */
+  uint8_t aReserved6[2];
+  /*
+   Info + 8: message parameter 2 (AnalogIn1 as a 32-bit pattern).
+   */
+  uint32_t dwDiagPar2;
+  /*
+   Info + 12: message parameter 3 (AnalogIn2).
+   */
+  uint32_t dwDiagPar3;
+  /*
+   Info + 16: private state, 48 bytes: never write it.
+   */
+  struct SL_ARITH_PRIVATE stPrivate;
+} FB_DIV_UINT;
+
+
+/*
+ FB DIV instance (ABI-2 §11.2): as [`FB_ARITH`] with `nRounding` before `wInputActive`.
+ */
+typedef struct FB_DIV_DINT {
+  /*
+   Offset 0. Reserved, keep 0 (no BOOL inputs).
+   */
+  uint8_t aReserved0[16];
+  /*
+   Offset 16. FbRun of the owning group: TRUE = the block executes.
+   */
+  SL_BOOL bRun;
+  /*
+   Offset 17. ErrAck of the owning group.
+   */
+  SL_BOOL bErrAck;
+  /*
+   Offset 18. Reserved, keep 0.
+   */
+  uint8_t aReserved1[6];
+  /*
+   At the analog input base 24: AnalogIn1, the dividend (active bit 8, required).
+   */
+  int32_t nAnalogIn1;
+  /*
+   At 24 + W: AnalogIn2, the divisor (active bit 9, required); 0 gives 0, no error.
+   */
+  int32_t nAnalogIn2;
+  /*
+   At 24 + 2W: "Division Rounding": SL_ROUNDING_FLOOR, _CEIL, _ROUND.
+   */
+  uint16_t nRounding;
+  /*
+   At 26 + 2W: bits 8 and 9 must be set, no other (ARITH_ACTIVE).
+   */
+  uint16_t wInputActive;
+  /*
+   Reserved up to the output base (16-bit: none, 32-bit: 4 bytes).
+   */
+  uint8_t aReserved2[4];
+  /*
+   At the output base (16-bit 32, 32-bit 40): Error, TRUE in ERROR only.
+   */
+  SL_BOOL bError;
+  /*
+   Reserved up to the analog output base.
+   */
+  uint8_t aReserved3[7];
+  /*
+   At the output base + 8: AnalogOut, the rounded quotient in RUN, else 0.
+   */
+  int32_t nAnalogOut;
+  /*
+   Reserved up to the info data.
+   */
+  uint8_t aReserved4[4];
+  /*
+   Info + 0: the manual's status value (RUN, STOP, ERROR, RESET).
+   */
+  uint8_t nState;
+  /*
+   Info + 1. Reserved.
+   */
+  uint8_t aReserved5[1];
+  /*
+   Info + 2: diag value (2 overflow: MIN ÷ −1) + library bits 13-15.
+   */
+  uint16_t nDiag;
+  /*
+   Info + 4: Text ID of the latched diag message (0x4081), 0 = none.
+   */
+  uint16_t nDiagTextId;
+  /*
+   Info + 6. Reserved.
+   */
+  uint8_t aReserved6[2];
+  /*
+   Info + 8: message parameter 2 (AnalogIn1 as a 32-bit pattern).
+   */
+  uint32_t dwDiagPar2;
+  /*
+   Info + 12: message parameter 3 (AnalogIn2).
+   */
+  uint32_t dwDiagPar3;
+  /*
+   Info + 16: private state, 48 bytes: never write it.
+   */
+  struct SL_ARITH_PRIVATE stPrivate;
+} FB_DIV_DINT;
+
+
+/*
+ FB DIV instance (ABI-2 §11.2): as [`FB_ARITH`] with `nRounding` before `wInputActive`.
+ */
+typedef struct FB_DIV_UDINT {
+  /*
+   Offset 0. Reserved, keep 0 (no BOOL inputs).
+   */
+  uint8_t aReserved0[16];
+  /*
+   Offset 16. FbRun of the owning group: TRUE = the block executes.
+   */
+  SL_BOOL bRun;
+  /*
+   Offset 17. ErrAck of the owning group.
+   */
+  SL_BOOL bErrAck;
+  /*
+   Offset 18. Reserved, keep 0.
+   */
+  uint8_t aReserved1[6];
+  /*
+   At the analog input base 24: AnalogIn1, the dividend (active bit 8, required).
+   */
+  uint32_t nAnalogIn1;
+  /*
+   At 24 + W: AnalogIn2, the divisor (active bit 9, required); 0 gives 0, no error.
+   */
+  uint32_t nAnalogIn2;
+  /*
+   At 24 + 2W: "Division Rounding": SL_ROUNDING_FLOOR, _CEIL, _ROUND.
+   */
+  uint16_t nRounding;
+  /*
+   At 26 + 2W: bits 8 and 9 must be set, no other (ARITH_ACTIVE).
+   */
+  uint16_t wInputActive;
+  /*
+   Reserved up to the output base (16-bit: none, 32-bit: 4 bytes).
+   */
+  uint8_t aReserved2[4];
+  /*
+   At the output base (16-bit 32, 32-bit 40): Error, TRUE in ERROR only.
+   */
+  SL_BOOL bError;
+  /*
+   Reserved up to the analog output base.
+   */
+  uint8_t aReserved3[7];
+  /*
+   At the output base + 8: AnalogOut, the rounded quotient in RUN, else 0.
+   */
+  uint32_t nAnalogOut;
+  /*
+   Reserved up to the info data.
+   */
+  uint8_t aReserved4[4];
+  /*
+   Info + 0: the manual's status value (RUN, STOP, ERROR, RESET).
+   */
+  uint8_t nState;
+  /*
+   Info + 1. Reserved.
+   */
+  uint8_t aReserved5[1];
+  /*
+   Info + 2: diag value (2 overflow: MIN ÷ −1) + library bits 13-15.
+   */
+  uint16_t nDiag;
+  /*
+   Info + 4: Text ID of the latched diag message (0x4081), 0 = none.
+   */
+  uint16_t nDiagTextId;
+  /*
+   Info + 6. Reserved.
+   */
+  uint8_t aReserved6[2];
+  /*
+   Info + 8: message parameter 2 (AnalogIn1 as a 32-bit pattern).
+   */
+  uint32_t dwDiagPar2;
+  /*
+   Info + 12: message parameter 3 (AnalogIn2).
+   */
+  uint32_t dwDiagPar3;
+  /*
+   Info + 16: private state, 48 bytes: never write it.
+   */
+  struct SL_ARITH_PRIVATE stPrivate;
+} FB_DIV_UDINT;
+
+
 #ifdef __cplusplus
 extern "C" {
 #endif // __cplusplus
@@ -2688,6 +4257,38 @@ int32_t sl_ton2_init(struct FB_TON2 *fb);
 int32_t sl_ton2_cycle(struct FB_TON2 *fb, uint32_t tNow);
 int32_t sl_tof_init(struct FB_TOF *fb);
 int32_t sl_tof_cycle(struct FB_TOF *fb, uint32_t tNow);
+int32_t sl_add_int_init(struct FB_ADD_INT *fb);
+int32_t sl_add_int_cycle(struct FB_ADD_INT *fb, uint32_t tNow);
+int32_t sl_add_uint_init(struct FB_ADD_UINT *fb);
+int32_t sl_add_uint_cycle(struct FB_ADD_UINT *fb, uint32_t tNow);
+int32_t sl_add_dint_init(struct FB_ADD_DINT *fb);
+int32_t sl_add_dint_cycle(struct FB_ADD_DINT *fb, uint32_t tNow);
+int32_t sl_add_udint_init(struct FB_ADD_UDINT *fb);
+int32_t sl_add_udint_cycle(struct FB_ADD_UDINT *fb, uint32_t tNow);
+int32_t sl_sub_int_init(struct FB_SUB_INT *fb);
+int32_t sl_sub_int_cycle(struct FB_SUB_INT *fb, uint32_t tNow);
+int32_t sl_sub_uint_init(struct FB_SUB_UINT *fb);
+int32_t sl_sub_uint_cycle(struct FB_SUB_UINT *fb, uint32_t tNow);
+int32_t sl_sub_dint_init(struct FB_SUB_DINT *fb);
+int32_t sl_sub_dint_cycle(struct FB_SUB_DINT *fb, uint32_t tNow);
+int32_t sl_sub_udint_init(struct FB_SUB_UDINT *fb);
+int32_t sl_sub_udint_cycle(struct FB_SUB_UDINT *fb, uint32_t tNow);
+int32_t sl_mul_int_init(struct FB_MUL_INT *fb);
+int32_t sl_mul_int_cycle(struct FB_MUL_INT *fb, uint32_t tNow);
+int32_t sl_mul_uint_init(struct FB_MUL_UINT *fb);
+int32_t sl_mul_uint_cycle(struct FB_MUL_UINT *fb, uint32_t tNow);
+int32_t sl_mul_dint_init(struct FB_MUL_DINT *fb);
+int32_t sl_mul_dint_cycle(struct FB_MUL_DINT *fb, uint32_t tNow);
+int32_t sl_mul_udint_init(struct FB_MUL_UDINT *fb);
+int32_t sl_mul_udint_cycle(struct FB_MUL_UDINT *fb, uint32_t tNow);
+int32_t sl_div_int_init(struct FB_DIV_INT *fb);
+int32_t sl_div_int_cycle(struct FB_DIV_INT *fb, uint32_t tNow);
+int32_t sl_div_uint_init(struct FB_DIV_UINT *fb);
+int32_t sl_div_uint_cycle(struct FB_DIV_UINT *fb, uint32_t tNow);
+int32_t sl_div_dint_init(struct FB_DIV_DINT *fb);
+int32_t sl_div_dint_cycle(struct FB_DIV_DINT *fb, uint32_t tNow);
+int32_t sl_div_udint_init(struct FB_DIV_UDINT *fb);
+int32_t sl_div_udint_cycle(struct FB_DIV_UDINT *fb, uint32_t tNow);
 
 #ifdef __cplusplus
 }  // extern "C"
@@ -3178,5 +4779,350 @@ SL_STATIC_ASSERT(offsetof(FB_TOF, nDiag) == 42, "offset of FB_TOF.nDiag");
 SL_STATIC_ASSERT(offsetof(FB_TOF, aReserved7) == 44, "offset of FB_TOF.aReserved7");
 SL_STATIC_ASSERT(offsetof(FB_TOF, stPrivate) == 48, "offset of FB_TOF.stPrivate");
 SL_STATIC_ASSERT(sizeof(FB_TOF) == 96, "size of FB_TOF");
+SL_STATIC_ASSERT(offsetof(SL_ARITH_PRIVATE, stHeader) == 0, "offset of SL_ARITH_PRIVATE.stHeader");
+SL_STATIC_ASSERT(offsetof(SL_ARITH_PRIVATE, wActive) == 28, "offset of SL_ARITH_PRIVATE.wActive");
+SL_STATIC_ASSERT(offsetof(SL_ARITH_PRIVATE, wRounding) == 30, "offset of SL_ARITH_PRIVATE.wRounding");
+SL_STATIC_ASSERT(offsetof(SL_ARITH_PRIVATE, dwOut) == 32, "offset of SL_ARITH_PRIVATE.dwOut");
+SL_STATIC_ASSERT(offsetof(SL_ARITH_PRIVATE, adwPar) == 36, "offset of SL_ARITH_PRIVATE.adwPar");
+SL_STATIC_ASSERT(offsetof(SL_ARITH_PRIVATE, aReserved) == 44, "offset of SL_ARITH_PRIVATE.aReserved");
+SL_STATIC_ASSERT(sizeof(SL_ARITH_PRIVATE) == 48, "size of SL_ARITH_PRIVATE");
+SL_STATIC_ASSERT(offsetof(FB_ADD_INT, aReserved0) == 0, "offset of FB_ADD_INT.aReserved0");
+SL_STATIC_ASSERT(offsetof(FB_ADD_INT, bRun) == 16, "offset of FB_ADD_INT.bRun");
+SL_STATIC_ASSERT(offsetof(FB_ADD_INT, bErrAck) == 17, "offset of FB_ADD_INT.bErrAck");
+SL_STATIC_ASSERT(offsetof(FB_ADD_INT, aReserved1) == 18, "offset of FB_ADD_INT.aReserved1");
+SL_STATIC_ASSERT(offsetof(FB_ADD_INT, nAnalogIn1) == 24, "offset of FB_ADD_INT.nAnalogIn1");
+SL_STATIC_ASSERT(offsetof(FB_ADD_INT, nAnalogIn2) == 26, "offset of FB_ADD_INT.nAnalogIn2");
+SL_STATIC_ASSERT(offsetof(FB_ADD_INT, wInputActive) == 28, "offset of FB_ADD_INT.wInputActive");
+SL_STATIC_ASSERT(offsetof(FB_ADD_INT, aReserved2) == 30, "offset of FB_ADD_INT.aReserved2");
+SL_STATIC_ASSERT(offsetof(FB_ADD_INT, bError) == 32, "offset of FB_ADD_INT.bError");
+SL_STATIC_ASSERT(offsetof(FB_ADD_INT, aReserved3) == 33, "offset of FB_ADD_INT.aReserved3");
+SL_STATIC_ASSERT(offsetof(FB_ADD_INT, nAnalogOut) == 40, "offset of FB_ADD_INT.nAnalogOut");
+SL_STATIC_ASSERT(offsetof(FB_ADD_INT, aReserved4) == 42, "offset of FB_ADD_INT.aReserved4");
+SL_STATIC_ASSERT(offsetof(FB_ADD_INT, nState) == 48, "offset of FB_ADD_INT.nState");
+SL_STATIC_ASSERT(offsetof(FB_ADD_INT, aReserved5) == 49, "offset of FB_ADD_INT.aReserved5");
+SL_STATIC_ASSERT(offsetof(FB_ADD_INT, nDiag) == 50, "offset of FB_ADD_INT.nDiag");
+SL_STATIC_ASSERT(offsetof(FB_ADD_INT, nDiagTextId) == 52, "offset of FB_ADD_INT.nDiagTextId");
+SL_STATIC_ASSERT(offsetof(FB_ADD_INT, aReserved6) == 54, "offset of FB_ADD_INT.aReserved6");
+SL_STATIC_ASSERT(offsetof(FB_ADD_INT, dwDiagPar2) == 56, "offset of FB_ADD_INT.dwDiagPar2");
+SL_STATIC_ASSERT(offsetof(FB_ADD_INT, dwDiagPar3) == 60, "offset of FB_ADD_INT.dwDiagPar3");
+SL_STATIC_ASSERT(offsetof(FB_ADD_INT, stPrivate) == 64, "offset of FB_ADD_INT.stPrivate");
+SL_STATIC_ASSERT(sizeof(FB_ADD_INT) == 112, "size of FB_ADD_INT");
+SL_STATIC_ASSERT(offsetof(FB_ADD_UINT, aReserved0) == 0, "offset of FB_ADD_UINT.aReserved0");
+SL_STATIC_ASSERT(offsetof(FB_ADD_UINT, bRun) == 16, "offset of FB_ADD_UINT.bRun");
+SL_STATIC_ASSERT(offsetof(FB_ADD_UINT, bErrAck) == 17, "offset of FB_ADD_UINT.bErrAck");
+SL_STATIC_ASSERT(offsetof(FB_ADD_UINT, aReserved1) == 18, "offset of FB_ADD_UINT.aReserved1");
+SL_STATIC_ASSERT(offsetof(FB_ADD_UINT, nAnalogIn1) == 24, "offset of FB_ADD_UINT.nAnalogIn1");
+SL_STATIC_ASSERT(offsetof(FB_ADD_UINT, nAnalogIn2) == 26, "offset of FB_ADD_UINT.nAnalogIn2");
+SL_STATIC_ASSERT(offsetof(FB_ADD_UINT, wInputActive) == 28, "offset of FB_ADD_UINT.wInputActive");
+SL_STATIC_ASSERT(offsetof(FB_ADD_UINT, aReserved2) == 30, "offset of FB_ADD_UINT.aReserved2");
+SL_STATIC_ASSERT(offsetof(FB_ADD_UINT, bError) == 32, "offset of FB_ADD_UINT.bError");
+SL_STATIC_ASSERT(offsetof(FB_ADD_UINT, aReserved3) == 33, "offset of FB_ADD_UINT.aReserved3");
+SL_STATIC_ASSERT(offsetof(FB_ADD_UINT, nAnalogOut) == 40, "offset of FB_ADD_UINT.nAnalogOut");
+SL_STATIC_ASSERT(offsetof(FB_ADD_UINT, aReserved4) == 42, "offset of FB_ADD_UINT.aReserved4");
+SL_STATIC_ASSERT(offsetof(FB_ADD_UINT, nState) == 48, "offset of FB_ADD_UINT.nState");
+SL_STATIC_ASSERT(offsetof(FB_ADD_UINT, aReserved5) == 49, "offset of FB_ADD_UINT.aReserved5");
+SL_STATIC_ASSERT(offsetof(FB_ADD_UINT, nDiag) == 50, "offset of FB_ADD_UINT.nDiag");
+SL_STATIC_ASSERT(offsetof(FB_ADD_UINT, nDiagTextId) == 52, "offset of FB_ADD_UINT.nDiagTextId");
+SL_STATIC_ASSERT(offsetof(FB_ADD_UINT, aReserved6) == 54, "offset of FB_ADD_UINT.aReserved6");
+SL_STATIC_ASSERT(offsetof(FB_ADD_UINT, dwDiagPar2) == 56, "offset of FB_ADD_UINT.dwDiagPar2");
+SL_STATIC_ASSERT(offsetof(FB_ADD_UINT, dwDiagPar3) == 60, "offset of FB_ADD_UINT.dwDiagPar3");
+SL_STATIC_ASSERT(offsetof(FB_ADD_UINT, stPrivate) == 64, "offset of FB_ADD_UINT.stPrivate");
+SL_STATIC_ASSERT(sizeof(FB_ADD_UINT) == 112, "size of FB_ADD_UINT");
+SL_STATIC_ASSERT(offsetof(FB_ADD_DINT, aReserved0) == 0, "offset of FB_ADD_DINT.aReserved0");
+SL_STATIC_ASSERT(offsetof(FB_ADD_DINT, bRun) == 16, "offset of FB_ADD_DINT.bRun");
+SL_STATIC_ASSERT(offsetof(FB_ADD_DINT, bErrAck) == 17, "offset of FB_ADD_DINT.bErrAck");
+SL_STATIC_ASSERT(offsetof(FB_ADD_DINT, aReserved1) == 18, "offset of FB_ADD_DINT.aReserved1");
+SL_STATIC_ASSERT(offsetof(FB_ADD_DINT, nAnalogIn1) == 24, "offset of FB_ADD_DINT.nAnalogIn1");
+SL_STATIC_ASSERT(offsetof(FB_ADD_DINT, nAnalogIn2) == 28, "offset of FB_ADD_DINT.nAnalogIn2");
+SL_STATIC_ASSERT(offsetof(FB_ADD_DINT, wInputActive) == 32, "offset of FB_ADD_DINT.wInputActive");
+SL_STATIC_ASSERT(offsetof(FB_ADD_DINT, aReserved2) == 34, "offset of FB_ADD_DINT.aReserved2");
+SL_STATIC_ASSERT(offsetof(FB_ADD_DINT, bError) == 40, "offset of FB_ADD_DINT.bError");
+SL_STATIC_ASSERT(offsetof(FB_ADD_DINT, aReserved3) == 41, "offset of FB_ADD_DINT.aReserved3");
+SL_STATIC_ASSERT(offsetof(FB_ADD_DINT, nAnalogOut) == 48, "offset of FB_ADD_DINT.nAnalogOut");
+SL_STATIC_ASSERT(offsetof(FB_ADD_DINT, aReserved4) == 52, "offset of FB_ADD_DINT.aReserved4");
+SL_STATIC_ASSERT(offsetof(FB_ADD_DINT, nState) == 56, "offset of FB_ADD_DINT.nState");
+SL_STATIC_ASSERT(offsetof(FB_ADD_DINT, aReserved5) == 57, "offset of FB_ADD_DINT.aReserved5");
+SL_STATIC_ASSERT(offsetof(FB_ADD_DINT, nDiag) == 58, "offset of FB_ADD_DINT.nDiag");
+SL_STATIC_ASSERT(offsetof(FB_ADD_DINT, nDiagTextId) == 60, "offset of FB_ADD_DINT.nDiagTextId");
+SL_STATIC_ASSERT(offsetof(FB_ADD_DINT, aReserved6) == 62, "offset of FB_ADD_DINT.aReserved6");
+SL_STATIC_ASSERT(offsetof(FB_ADD_DINT, dwDiagPar2) == 64, "offset of FB_ADD_DINT.dwDiagPar2");
+SL_STATIC_ASSERT(offsetof(FB_ADD_DINT, dwDiagPar3) == 68, "offset of FB_ADD_DINT.dwDiagPar3");
+SL_STATIC_ASSERT(offsetof(FB_ADD_DINT, stPrivate) == 72, "offset of FB_ADD_DINT.stPrivate");
+SL_STATIC_ASSERT(sizeof(FB_ADD_DINT) == 120, "size of FB_ADD_DINT");
+SL_STATIC_ASSERT(offsetof(FB_ADD_UDINT, aReserved0) == 0, "offset of FB_ADD_UDINT.aReserved0");
+SL_STATIC_ASSERT(offsetof(FB_ADD_UDINT, bRun) == 16, "offset of FB_ADD_UDINT.bRun");
+SL_STATIC_ASSERT(offsetof(FB_ADD_UDINT, bErrAck) == 17, "offset of FB_ADD_UDINT.bErrAck");
+SL_STATIC_ASSERT(offsetof(FB_ADD_UDINT, aReserved1) == 18, "offset of FB_ADD_UDINT.aReserved1");
+SL_STATIC_ASSERT(offsetof(FB_ADD_UDINT, nAnalogIn1) == 24, "offset of FB_ADD_UDINT.nAnalogIn1");
+SL_STATIC_ASSERT(offsetof(FB_ADD_UDINT, nAnalogIn2) == 28, "offset of FB_ADD_UDINT.nAnalogIn2");
+SL_STATIC_ASSERT(offsetof(FB_ADD_UDINT, wInputActive) == 32, "offset of FB_ADD_UDINT.wInputActive");
+SL_STATIC_ASSERT(offsetof(FB_ADD_UDINT, aReserved2) == 34, "offset of FB_ADD_UDINT.aReserved2");
+SL_STATIC_ASSERT(offsetof(FB_ADD_UDINT, bError) == 40, "offset of FB_ADD_UDINT.bError");
+SL_STATIC_ASSERT(offsetof(FB_ADD_UDINT, aReserved3) == 41, "offset of FB_ADD_UDINT.aReserved3");
+SL_STATIC_ASSERT(offsetof(FB_ADD_UDINT, nAnalogOut) == 48, "offset of FB_ADD_UDINT.nAnalogOut");
+SL_STATIC_ASSERT(offsetof(FB_ADD_UDINT, aReserved4) == 52, "offset of FB_ADD_UDINT.aReserved4");
+SL_STATIC_ASSERT(offsetof(FB_ADD_UDINT, nState) == 56, "offset of FB_ADD_UDINT.nState");
+SL_STATIC_ASSERT(offsetof(FB_ADD_UDINT, aReserved5) == 57, "offset of FB_ADD_UDINT.aReserved5");
+SL_STATIC_ASSERT(offsetof(FB_ADD_UDINT, nDiag) == 58, "offset of FB_ADD_UDINT.nDiag");
+SL_STATIC_ASSERT(offsetof(FB_ADD_UDINT, nDiagTextId) == 60, "offset of FB_ADD_UDINT.nDiagTextId");
+SL_STATIC_ASSERT(offsetof(FB_ADD_UDINT, aReserved6) == 62, "offset of FB_ADD_UDINT.aReserved6");
+SL_STATIC_ASSERT(offsetof(FB_ADD_UDINT, dwDiagPar2) == 64, "offset of FB_ADD_UDINT.dwDiagPar2");
+SL_STATIC_ASSERT(offsetof(FB_ADD_UDINT, dwDiagPar3) == 68, "offset of FB_ADD_UDINT.dwDiagPar3");
+SL_STATIC_ASSERT(offsetof(FB_ADD_UDINT, stPrivate) == 72, "offset of FB_ADD_UDINT.stPrivate");
+SL_STATIC_ASSERT(sizeof(FB_ADD_UDINT) == 120, "size of FB_ADD_UDINT");
+SL_STATIC_ASSERT(offsetof(FB_SUB_INT, aReserved0) == 0, "offset of FB_SUB_INT.aReserved0");
+SL_STATIC_ASSERT(offsetof(FB_SUB_INT, bRun) == 16, "offset of FB_SUB_INT.bRun");
+SL_STATIC_ASSERT(offsetof(FB_SUB_INT, bErrAck) == 17, "offset of FB_SUB_INT.bErrAck");
+SL_STATIC_ASSERT(offsetof(FB_SUB_INT, aReserved1) == 18, "offset of FB_SUB_INT.aReserved1");
+SL_STATIC_ASSERT(offsetof(FB_SUB_INT, nAnalogIn1) == 24, "offset of FB_SUB_INT.nAnalogIn1");
+SL_STATIC_ASSERT(offsetof(FB_SUB_INT, nAnalogIn2) == 26, "offset of FB_SUB_INT.nAnalogIn2");
+SL_STATIC_ASSERT(offsetof(FB_SUB_INT, wInputActive) == 28, "offset of FB_SUB_INT.wInputActive");
+SL_STATIC_ASSERT(offsetof(FB_SUB_INT, aReserved2) == 30, "offset of FB_SUB_INT.aReserved2");
+SL_STATIC_ASSERT(offsetof(FB_SUB_INT, bError) == 32, "offset of FB_SUB_INT.bError");
+SL_STATIC_ASSERT(offsetof(FB_SUB_INT, aReserved3) == 33, "offset of FB_SUB_INT.aReserved3");
+SL_STATIC_ASSERT(offsetof(FB_SUB_INT, nAnalogOut) == 40, "offset of FB_SUB_INT.nAnalogOut");
+SL_STATIC_ASSERT(offsetof(FB_SUB_INT, aReserved4) == 42, "offset of FB_SUB_INT.aReserved4");
+SL_STATIC_ASSERT(offsetof(FB_SUB_INT, nState) == 48, "offset of FB_SUB_INT.nState");
+SL_STATIC_ASSERT(offsetof(FB_SUB_INT, aReserved5) == 49, "offset of FB_SUB_INT.aReserved5");
+SL_STATIC_ASSERT(offsetof(FB_SUB_INT, nDiag) == 50, "offset of FB_SUB_INT.nDiag");
+SL_STATIC_ASSERT(offsetof(FB_SUB_INT, nDiagTextId) == 52, "offset of FB_SUB_INT.nDiagTextId");
+SL_STATIC_ASSERT(offsetof(FB_SUB_INT, aReserved6) == 54, "offset of FB_SUB_INT.aReserved6");
+SL_STATIC_ASSERT(offsetof(FB_SUB_INT, dwDiagPar2) == 56, "offset of FB_SUB_INT.dwDiagPar2");
+SL_STATIC_ASSERT(offsetof(FB_SUB_INT, dwDiagPar3) == 60, "offset of FB_SUB_INT.dwDiagPar3");
+SL_STATIC_ASSERT(offsetof(FB_SUB_INT, stPrivate) == 64, "offset of FB_SUB_INT.stPrivate");
+SL_STATIC_ASSERT(sizeof(FB_SUB_INT) == 112, "size of FB_SUB_INT");
+SL_STATIC_ASSERT(offsetof(FB_SUB_UINT, aReserved0) == 0, "offset of FB_SUB_UINT.aReserved0");
+SL_STATIC_ASSERT(offsetof(FB_SUB_UINT, bRun) == 16, "offset of FB_SUB_UINT.bRun");
+SL_STATIC_ASSERT(offsetof(FB_SUB_UINT, bErrAck) == 17, "offset of FB_SUB_UINT.bErrAck");
+SL_STATIC_ASSERT(offsetof(FB_SUB_UINT, aReserved1) == 18, "offset of FB_SUB_UINT.aReserved1");
+SL_STATIC_ASSERT(offsetof(FB_SUB_UINT, nAnalogIn1) == 24, "offset of FB_SUB_UINT.nAnalogIn1");
+SL_STATIC_ASSERT(offsetof(FB_SUB_UINT, nAnalogIn2) == 26, "offset of FB_SUB_UINT.nAnalogIn2");
+SL_STATIC_ASSERT(offsetof(FB_SUB_UINT, wInputActive) == 28, "offset of FB_SUB_UINT.wInputActive");
+SL_STATIC_ASSERT(offsetof(FB_SUB_UINT, aReserved2) == 30, "offset of FB_SUB_UINT.aReserved2");
+SL_STATIC_ASSERT(offsetof(FB_SUB_UINT, bError) == 32, "offset of FB_SUB_UINT.bError");
+SL_STATIC_ASSERT(offsetof(FB_SUB_UINT, aReserved3) == 33, "offset of FB_SUB_UINT.aReserved3");
+SL_STATIC_ASSERT(offsetof(FB_SUB_UINT, nAnalogOut) == 40, "offset of FB_SUB_UINT.nAnalogOut");
+SL_STATIC_ASSERT(offsetof(FB_SUB_UINT, aReserved4) == 42, "offset of FB_SUB_UINT.aReserved4");
+SL_STATIC_ASSERT(offsetof(FB_SUB_UINT, nState) == 48, "offset of FB_SUB_UINT.nState");
+SL_STATIC_ASSERT(offsetof(FB_SUB_UINT, aReserved5) == 49, "offset of FB_SUB_UINT.aReserved5");
+SL_STATIC_ASSERT(offsetof(FB_SUB_UINT, nDiag) == 50, "offset of FB_SUB_UINT.nDiag");
+SL_STATIC_ASSERT(offsetof(FB_SUB_UINT, nDiagTextId) == 52, "offset of FB_SUB_UINT.nDiagTextId");
+SL_STATIC_ASSERT(offsetof(FB_SUB_UINT, aReserved6) == 54, "offset of FB_SUB_UINT.aReserved6");
+SL_STATIC_ASSERT(offsetof(FB_SUB_UINT, dwDiagPar2) == 56, "offset of FB_SUB_UINT.dwDiagPar2");
+SL_STATIC_ASSERT(offsetof(FB_SUB_UINT, dwDiagPar3) == 60, "offset of FB_SUB_UINT.dwDiagPar3");
+SL_STATIC_ASSERT(offsetof(FB_SUB_UINT, stPrivate) == 64, "offset of FB_SUB_UINT.stPrivate");
+SL_STATIC_ASSERT(sizeof(FB_SUB_UINT) == 112, "size of FB_SUB_UINT");
+SL_STATIC_ASSERT(offsetof(FB_SUB_DINT, aReserved0) == 0, "offset of FB_SUB_DINT.aReserved0");
+SL_STATIC_ASSERT(offsetof(FB_SUB_DINT, bRun) == 16, "offset of FB_SUB_DINT.bRun");
+SL_STATIC_ASSERT(offsetof(FB_SUB_DINT, bErrAck) == 17, "offset of FB_SUB_DINT.bErrAck");
+SL_STATIC_ASSERT(offsetof(FB_SUB_DINT, aReserved1) == 18, "offset of FB_SUB_DINT.aReserved1");
+SL_STATIC_ASSERT(offsetof(FB_SUB_DINT, nAnalogIn1) == 24, "offset of FB_SUB_DINT.nAnalogIn1");
+SL_STATIC_ASSERT(offsetof(FB_SUB_DINT, nAnalogIn2) == 28, "offset of FB_SUB_DINT.nAnalogIn2");
+SL_STATIC_ASSERT(offsetof(FB_SUB_DINT, wInputActive) == 32, "offset of FB_SUB_DINT.wInputActive");
+SL_STATIC_ASSERT(offsetof(FB_SUB_DINT, aReserved2) == 34, "offset of FB_SUB_DINT.aReserved2");
+SL_STATIC_ASSERT(offsetof(FB_SUB_DINT, bError) == 40, "offset of FB_SUB_DINT.bError");
+SL_STATIC_ASSERT(offsetof(FB_SUB_DINT, aReserved3) == 41, "offset of FB_SUB_DINT.aReserved3");
+SL_STATIC_ASSERT(offsetof(FB_SUB_DINT, nAnalogOut) == 48, "offset of FB_SUB_DINT.nAnalogOut");
+SL_STATIC_ASSERT(offsetof(FB_SUB_DINT, aReserved4) == 52, "offset of FB_SUB_DINT.aReserved4");
+SL_STATIC_ASSERT(offsetof(FB_SUB_DINT, nState) == 56, "offset of FB_SUB_DINT.nState");
+SL_STATIC_ASSERT(offsetof(FB_SUB_DINT, aReserved5) == 57, "offset of FB_SUB_DINT.aReserved5");
+SL_STATIC_ASSERT(offsetof(FB_SUB_DINT, nDiag) == 58, "offset of FB_SUB_DINT.nDiag");
+SL_STATIC_ASSERT(offsetof(FB_SUB_DINT, nDiagTextId) == 60, "offset of FB_SUB_DINT.nDiagTextId");
+SL_STATIC_ASSERT(offsetof(FB_SUB_DINT, aReserved6) == 62, "offset of FB_SUB_DINT.aReserved6");
+SL_STATIC_ASSERT(offsetof(FB_SUB_DINT, dwDiagPar2) == 64, "offset of FB_SUB_DINT.dwDiagPar2");
+SL_STATIC_ASSERT(offsetof(FB_SUB_DINT, dwDiagPar3) == 68, "offset of FB_SUB_DINT.dwDiagPar3");
+SL_STATIC_ASSERT(offsetof(FB_SUB_DINT, stPrivate) == 72, "offset of FB_SUB_DINT.stPrivate");
+SL_STATIC_ASSERT(sizeof(FB_SUB_DINT) == 120, "size of FB_SUB_DINT");
+SL_STATIC_ASSERT(offsetof(FB_SUB_UDINT, aReserved0) == 0, "offset of FB_SUB_UDINT.aReserved0");
+SL_STATIC_ASSERT(offsetof(FB_SUB_UDINT, bRun) == 16, "offset of FB_SUB_UDINT.bRun");
+SL_STATIC_ASSERT(offsetof(FB_SUB_UDINT, bErrAck) == 17, "offset of FB_SUB_UDINT.bErrAck");
+SL_STATIC_ASSERT(offsetof(FB_SUB_UDINT, aReserved1) == 18, "offset of FB_SUB_UDINT.aReserved1");
+SL_STATIC_ASSERT(offsetof(FB_SUB_UDINT, nAnalogIn1) == 24, "offset of FB_SUB_UDINT.nAnalogIn1");
+SL_STATIC_ASSERT(offsetof(FB_SUB_UDINT, nAnalogIn2) == 28, "offset of FB_SUB_UDINT.nAnalogIn2");
+SL_STATIC_ASSERT(offsetof(FB_SUB_UDINT, wInputActive) == 32, "offset of FB_SUB_UDINT.wInputActive");
+SL_STATIC_ASSERT(offsetof(FB_SUB_UDINT, aReserved2) == 34, "offset of FB_SUB_UDINT.aReserved2");
+SL_STATIC_ASSERT(offsetof(FB_SUB_UDINT, bError) == 40, "offset of FB_SUB_UDINT.bError");
+SL_STATIC_ASSERT(offsetof(FB_SUB_UDINT, aReserved3) == 41, "offset of FB_SUB_UDINT.aReserved3");
+SL_STATIC_ASSERT(offsetof(FB_SUB_UDINT, nAnalogOut) == 48, "offset of FB_SUB_UDINT.nAnalogOut");
+SL_STATIC_ASSERT(offsetof(FB_SUB_UDINT, aReserved4) == 52, "offset of FB_SUB_UDINT.aReserved4");
+SL_STATIC_ASSERT(offsetof(FB_SUB_UDINT, nState) == 56, "offset of FB_SUB_UDINT.nState");
+SL_STATIC_ASSERT(offsetof(FB_SUB_UDINT, aReserved5) == 57, "offset of FB_SUB_UDINT.aReserved5");
+SL_STATIC_ASSERT(offsetof(FB_SUB_UDINT, nDiag) == 58, "offset of FB_SUB_UDINT.nDiag");
+SL_STATIC_ASSERT(offsetof(FB_SUB_UDINT, nDiagTextId) == 60, "offset of FB_SUB_UDINT.nDiagTextId");
+SL_STATIC_ASSERT(offsetof(FB_SUB_UDINT, aReserved6) == 62, "offset of FB_SUB_UDINT.aReserved6");
+SL_STATIC_ASSERT(offsetof(FB_SUB_UDINT, dwDiagPar2) == 64, "offset of FB_SUB_UDINT.dwDiagPar2");
+SL_STATIC_ASSERT(offsetof(FB_SUB_UDINT, dwDiagPar3) == 68, "offset of FB_SUB_UDINT.dwDiagPar3");
+SL_STATIC_ASSERT(offsetof(FB_SUB_UDINT, stPrivate) == 72, "offset of FB_SUB_UDINT.stPrivate");
+SL_STATIC_ASSERT(sizeof(FB_SUB_UDINT) == 120, "size of FB_SUB_UDINT");
+SL_STATIC_ASSERT(offsetof(FB_MUL_INT, aReserved0) == 0, "offset of FB_MUL_INT.aReserved0");
+SL_STATIC_ASSERT(offsetof(FB_MUL_INT, bRun) == 16, "offset of FB_MUL_INT.bRun");
+SL_STATIC_ASSERT(offsetof(FB_MUL_INT, bErrAck) == 17, "offset of FB_MUL_INT.bErrAck");
+SL_STATIC_ASSERT(offsetof(FB_MUL_INT, aReserved1) == 18, "offset of FB_MUL_INT.aReserved1");
+SL_STATIC_ASSERT(offsetof(FB_MUL_INT, nAnalogIn1) == 24, "offset of FB_MUL_INT.nAnalogIn1");
+SL_STATIC_ASSERT(offsetof(FB_MUL_INT, nAnalogIn2) == 26, "offset of FB_MUL_INT.nAnalogIn2");
+SL_STATIC_ASSERT(offsetof(FB_MUL_INT, wInputActive) == 28, "offset of FB_MUL_INT.wInputActive");
+SL_STATIC_ASSERT(offsetof(FB_MUL_INT, aReserved2) == 30, "offset of FB_MUL_INT.aReserved2");
+SL_STATIC_ASSERT(offsetof(FB_MUL_INT, bError) == 32, "offset of FB_MUL_INT.bError");
+SL_STATIC_ASSERT(offsetof(FB_MUL_INT, aReserved3) == 33, "offset of FB_MUL_INT.aReserved3");
+SL_STATIC_ASSERT(offsetof(FB_MUL_INT, nAnalogOut) == 40, "offset of FB_MUL_INT.nAnalogOut");
+SL_STATIC_ASSERT(offsetof(FB_MUL_INT, aReserved4) == 42, "offset of FB_MUL_INT.aReserved4");
+SL_STATIC_ASSERT(offsetof(FB_MUL_INT, nState) == 48, "offset of FB_MUL_INT.nState");
+SL_STATIC_ASSERT(offsetof(FB_MUL_INT, aReserved5) == 49, "offset of FB_MUL_INT.aReserved5");
+SL_STATIC_ASSERT(offsetof(FB_MUL_INT, nDiag) == 50, "offset of FB_MUL_INT.nDiag");
+SL_STATIC_ASSERT(offsetof(FB_MUL_INT, nDiagTextId) == 52, "offset of FB_MUL_INT.nDiagTextId");
+SL_STATIC_ASSERT(offsetof(FB_MUL_INT, aReserved6) == 54, "offset of FB_MUL_INT.aReserved6");
+SL_STATIC_ASSERT(offsetof(FB_MUL_INT, dwDiagPar2) == 56, "offset of FB_MUL_INT.dwDiagPar2");
+SL_STATIC_ASSERT(offsetof(FB_MUL_INT, dwDiagPar3) == 60, "offset of FB_MUL_INT.dwDiagPar3");
+SL_STATIC_ASSERT(offsetof(FB_MUL_INT, stPrivate) == 64, "offset of FB_MUL_INT.stPrivate");
+SL_STATIC_ASSERT(sizeof(FB_MUL_INT) == 112, "size of FB_MUL_INT");
+SL_STATIC_ASSERT(offsetof(FB_MUL_UINT, aReserved0) == 0, "offset of FB_MUL_UINT.aReserved0");
+SL_STATIC_ASSERT(offsetof(FB_MUL_UINT, bRun) == 16, "offset of FB_MUL_UINT.bRun");
+SL_STATIC_ASSERT(offsetof(FB_MUL_UINT, bErrAck) == 17, "offset of FB_MUL_UINT.bErrAck");
+SL_STATIC_ASSERT(offsetof(FB_MUL_UINT, aReserved1) == 18, "offset of FB_MUL_UINT.aReserved1");
+SL_STATIC_ASSERT(offsetof(FB_MUL_UINT, nAnalogIn1) == 24, "offset of FB_MUL_UINT.nAnalogIn1");
+SL_STATIC_ASSERT(offsetof(FB_MUL_UINT, nAnalogIn2) == 26, "offset of FB_MUL_UINT.nAnalogIn2");
+SL_STATIC_ASSERT(offsetof(FB_MUL_UINT, wInputActive) == 28, "offset of FB_MUL_UINT.wInputActive");
+SL_STATIC_ASSERT(offsetof(FB_MUL_UINT, aReserved2) == 30, "offset of FB_MUL_UINT.aReserved2");
+SL_STATIC_ASSERT(offsetof(FB_MUL_UINT, bError) == 32, "offset of FB_MUL_UINT.bError");
+SL_STATIC_ASSERT(offsetof(FB_MUL_UINT, aReserved3) == 33, "offset of FB_MUL_UINT.aReserved3");
+SL_STATIC_ASSERT(offsetof(FB_MUL_UINT, nAnalogOut) == 40, "offset of FB_MUL_UINT.nAnalogOut");
+SL_STATIC_ASSERT(offsetof(FB_MUL_UINT, aReserved4) == 42, "offset of FB_MUL_UINT.aReserved4");
+SL_STATIC_ASSERT(offsetof(FB_MUL_UINT, nState) == 48, "offset of FB_MUL_UINT.nState");
+SL_STATIC_ASSERT(offsetof(FB_MUL_UINT, aReserved5) == 49, "offset of FB_MUL_UINT.aReserved5");
+SL_STATIC_ASSERT(offsetof(FB_MUL_UINT, nDiag) == 50, "offset of FB_MUL_UINT.nDiag");
+SL_STATIC_ASSERT(offsetof(FB_MUL_UINT, nDiagTextId) == 52, "offset of FB_MUL_UINT.nDiagTextId");
+SL_STATIC_ASSERT(offsetof(FB_MUL_UINT, aReserved6) == 54, "offset of FB_MUL_UINT.aReserved6");
+SL_STATIC_ASSERT(offsetof(FB_MUL_UINT, dwDiagPar2) == 56, "offset of FB_MUL_UINT.dwDiagPar2");
+SL_STATIC_ASSERT(offsetof(FB_MUL_UINT, dwDiagPar3) == 60, "offset of FB_MUL_UINT.dwDiagPar3");
+SL_STATIC_ASSERT(offsetof(FB_MUL_UINT, stPrivate) == 64, "offset of FB_MUL_UINT.stPrivate");
+SL_STATIC_ASSERT(sizeof(FB_MUL_UINT) == 112, "size of FB_MUL_UINT");
+SL_STATIC_ASSERT(offsetof(FB_MUL_DINT, aReserved0) == 0, "offset of FB_MUL_DINT.aReserved0");
+SL_STATIC_ASSERT(offsetof(FB_MUL_DINT, bRun) == 16, "offset of FB_MUL_DINT.bRun");
+SL_STATIC_ASSERT(offsetof(FB_MUL_DINT, bErrAck) == 17, "offset of FB_MUL_DINT.bErrAck");
+SL_STATIC_ASSERT(offsetof(FB_MUL_DINT, aReserved1) == 18, "offset of FB_MUL_DINT.aReserved1");
+SL_STATIC_ASSERT(offsetof(FB_MUL_DINT, nAnalogIn1) == 24, "offset of FB_MUL_DINT.nAnalogIn1");
+SL_STATIC_ASSERT(offsetof(FB_MUL_DINT, nAnalogIn2) == 28, "offset of FB_MUL_DINT.nAnalogIn2");
+SL_STATIC_ASSERT(offsetof(FB_MUL_DINT, wInputActive) == 32, "offset of FB_MUL_DINT.wInputActive");
+SL_STATIC_ASSERT(offsetof(FB_MUL_DINT, aReserved2) == 34, "offset of FB_MUL_DINT.aReserved2");
+SL_STATIC_ASSERT(offsetof(FB_MUL_DINT, bError) == 40, "offset of FB_MUL_DINT.bError");
+SL_STATIC_ASSERT(offsetof(FB_MUL_DINT, aReserved3) == 41, "offset of FB_MUL_DINT.aReserved3");
+SL_STATIC_ASSERT(offsetof(FB_MUL_DINT, nAnalogOut) == 48, "offset of FB_MUL_DINT.nAnalogOut");
+SL_STATIC_ASSERT(offsetof(FB_MUL_DINT, aReserved4) == 52, "offset of FB_MUL_DINT.aReserved4");
+SL_STATIC_ASSERT(offsetof(FB_MUL_DINT, nState) == 56, "offset of FB_MUL_DINT.nState");
+SL_STATIC_ASSERT(offsetof(FB_MUL_DINT, aReserved5) == 57, "offset of FB_MUL_DINT.aReserved5");
+SL_STATIC_ASSERT(offsetof(FB_MUL_DINT, nDiag) == 58, "offset of FB_MUL_DINT.nDiag");
+SL_STATIC_ASSERT(offsetof(FB_MUL_DINT, nDiagTextId) == 60, "offset of FB_MUL_DINT.nDiagTextId");
+SL_STATIC_ASSERT(offsetof(FB_MUL_DINT, aReserved6) == 62, "offset of FB_MUL_DINT.aReserved6");
+SL_STATIC_ASSERT(offsetof(FB_MUL_DINT, dwDiagPar2) == 64, "offset of FB_MUL_DINT.dwDiagPar2");
+SL_STATIC_ASSERT(offsetof(FB_MUL_DINT, dwDiagPar3) == 68, "offset of FB_MUL_DINT.dwDiagPar3");
+SL_STATIC_ASSERT(offsetof(FB_MUL_DINT, stPrivate) == 72, "offset of FB_MUL_DINT.stPrivate");
+SL_STATIC_ASSERT(sizeof(FB_MUL_DINT) == 120, "size of FB_MUL_DINT");
+SL_STATIC_ASSERT(offsetof(FB_MUL_UDINT, aReserved0) == 0, "offset of FB_MUL_UDINT.aReserved0");
+SL_STATIC_ASSERT(offsetof(FB_MUL_UDINT, bRun) == 16, "offset of FB_MUL_UDINT.bRun");
+SL_STATIC_ASSERT(offsetof(FB_MUL_UDINT, bErrAck) == 17, "offset of FB_MUL_UDINT.bErrAck");
+SL_STATIC_ASSERT(offsetof(FB_MUL_UDINT, aReserved1) == 18, "offset of FB_MUL_UDINT.aReserved1");
+SL_STATIC_ASSERT(offsetof(FB_MUL_UDINT, nAnalogIn1) == 24, "offset of FB_MUL_UDINT.nAnalogIn1");
+SL_STATIC_ASSERT(offsetof(FB_MUL_UDINT, nAnalogIn2) == 28, "offset of FB_MUL_UDINT.nAnalogIn2");
+SL_STATIC_ASSERT(offsetof(FB_MUL_UDINT, wInputActive) == 32, "offset of FB_MUL_UDINT.wInputActive");
+SL_STATIC_ASSERT(offsetof(FB_MUL_UDINT, aReserved2) == 34, "offset of FB_MUL_UDINT.aReserved2");
+SL_STATIC_ASSERT(offsetof(FB_MUL_UDINT, bError) == 40, "offset of FB_MUL_UDINT.bError");
+SL_STATIC_ASSERT(offsetof(FB_MUL_UDINT, aReserved3) == 41, "offset of FB_MUL_UDINT.aReserved3");
+SL_STATIC_ASSERT(offsetof(FB_MUL_UDINT, nAnalogOut) == 48, "offset of FB_MUL_UDINT.nAnalogOut");
+SL_STATIC_ASSERT(offsetof(FB_MUL_UDINT, aReserved4) == 52, "offset of FB_MUL_UDINT.aReserved4");
+SL_STATIC_ASSERT(offsetof(FB_MUL_UDINT, nState) == 56, "offset of FB_MUL_UDINT.nState");
+SL_STATIC_ASSERT(offsetof(FB_MUL_UDINT, aReserved5) == 57, "offset of FB_MUL_UDINT.aReserved5");
+SL_STATIC_ASSERT(offsetof(FB_MUL_UDINT, nDiag) == 58, "offset of FB_MUL_UDINT.nDiag");
+SL_STATIC_ASSERT(offsetof(FB_MUL_UDINT, nDiagTextId) == 60, "offset of FB_MUL_UDINT.nDiagTextId");
+SL_STATIC_ASSERT(offsetof(FB_MUL_UDINT, aReserved6) == 62, "offset of FB_MUL_UDINT.aReserved6");
+SL_STATIC_ASSERT(offsetof(FB_MUL_UDINT, dwDiagPar2) == 64, "offset of FB_MUL_UDINT.dwDiagPar2");
+SL_STATIC_ASSERT(offsetof(FB_MUL_UDINT, dwDiagPar3) == 68, "offset of FB_MUL_UDINT.dwDiagPar3");
+SL_STATIC_ASSERT(offsetof(FB_MUL_UDINT, stPrivate) == 72, "offset of FB_MUL_UDINT.stPrivate");
+SL_STATIC_ASSERT(sizeof(FB_MUL_UDINT) == 120, "size of FB_MUL_UDINT");
+SL_STATIC_ASSERT(offsetof(FB_DIV_INT, aReserved0) == 0, "offset of FB_DIV_INT.aReserved0");
+SL_STATIC_ASSERT(offsetof(FB_DIV_INT, bRun) == 16, "offset of FB_DIV_INT.bRun");
+SL_STATIC_ASSERT(offsetof(FB_DIV_INT, bErrAck) == 17, "offset of FB_DIV_INT.bErrAck");
+SL_STATIC_ASSERT(offsetof(FB_DIV_INT, aReserved1) == 18, "offset of FB_DIV_INT.aReserved1");
+SL_STATIC_ASSERT(offsetof(FB_DIV_INT, nAnalogIn1) == 24, "offset of FB_DIV_INT.nAnalogIn1");
+SL_STATIC_ASSERT(offsetof(FB_DIV_INT, nAnalogIn2) == 26, "offset of FB_DIV_INT.nAnalogIn2");
+SL_STATIC_ASSERT(offsetof(FB_DIV_INT, nRounding) == 28, "offset of FB_DIV_INT.nRounding");
+SL_STATIC_ASSERT(offsetof(FB_DIV_INT, wInputActive) == 30, "offset of FB_DIV_INT.wInputActive");
+SL_STATIC_ASSERT(offsetof(FB_DIV_INT, bError) == 32, "offset of FB_DIV_INT.bError");
+SL_STATIC_ASSERT(offsetof(FB_DIV_INT, aReserved3) == 33, "offset of FB_DIV_INT.aReserved3");
+SL_STATIC_ASSERT(offsetof(FB_DIV_INT, nAnalogOut) == 40, "offset of FB_DIV_INT.nAnalogOut");
+SL_STATIC_ASSERT(offsetof(FB_DIV_INT, aReserved4) == 42, "offset of FB_DIV_INT.aReserved4");
+SL_STATIC_ASSERT(offsetof(FB_DIV_INT, nState) == 48, "offset of FB_DIV_INT.nState");
+SL_STATIC_ASSERT(offsetof(FB_DIV_INT, aReserved5) == 49, "offset of FB_DIV_INT.aReserved5");
+SL_STATIC_ASSERT(offsetof(FB_DIV_INT, nDiag) == 50, "offset of FB_DIV_INT.nDiag");
+SL_STATIC_ASSERT(offsetof(FB_DIV_INT, nDiagTextId) == 52, "offset of FB_DIV_INT.nDiagTextId");
+SL_STATIC_ASSERT(offsetof(FB_DIV_INT, aReserved6) == 54, "offset of FB_DIV_INT.aReserved6");
+SL_STATIC_ASSERT(offsetof(FB_DIV_INT, dwDiagPar2) == 56, "offset of FB_DIV_INT.dwDiagPar2");
+SL_STATIC_ASSERT(offsetof(FB_DIV_INT, dwDiagPar3) == 60, "offset of FB_DIV_INT.dwDiagPar3");
+SL_STATIC_ASSERT(offsetof(FB_DIV_INT, stPrivate) == 64, "offset of FB_DIV_INT.stPrivate");
+SL_STATIC_ASSERT(sizeof(FB_DIV_INT) == 112, "size of FB_DIV_INT");
+SL_STATIC_ASSERT(offsetof(FB_DIV_UINT, aReserved0) == 0, "offset of FB_DIV_UINT.aReserved0");
+SL_STATIC_ASSERT(offsetof(FB_DIV_UINT, bRun) == 16, "offset of FB_DIV_UINT.bRun");
+SL_STATIC_ASSERT(offsetof(FB_DIV_UINT, bErrAck) == 17, "offset of FB_DIV_UINT.bErrAck");
+SL_STATIC_ASSERT(offsetof(FB_DIV_UINT, aReserved1) == 18, "offset of FB_DIV_UINT.aReserved1");
+SL_STATIC_ASSERT(offsetof(FB_DIV_UINT, nAnalogIn1) == 24, "offset of FB_DIV_UINT.nAnalogIn1");
+SL_STATIC_ASSERT(offsetof(FB_DIV_UINT, nAnalogIn2) == 26, "offset of FB_DIV_UINT.nAnalogIn2");
+SL_STATIC_ASSERT(offsetof(FB_DIV_UINT, nRounding) == 28, "offset of FB_DIV_UINT.nRounding");
+SL_STATIC_ASSERT(offsetof(FB_DIV_UINT, wInputActive) == 30, "offset of FB_DIV_UINT.wInputActive");
+SL_STATIC_ASSERT(offsetof(FB_DIV_UINT, bError) == 32, "offset of FB_DIV_UINT.bError");
+SL_STATIC_ASSERT(offsetof(FB_DIV_UINT, aReserved3) == 33, "offset of FB_DIV_UINT.aReserved3");
+SL_STATIC_ASSERT(offsetof(FB_DIV_UINT, nAnalogOut) == 40, "offset of FB_DIV_UINT.nAnalogOut");
+SL_STATIC_ASSERT(offsetof(FB_DIV_UINT, aReserved4) == 42, "offset of FB_DIV_UINT.aReserved4");
+SL_STATIC_ASSERT(offsetof(FB_DIV_UINT, nState) == 48, "offset of FB_DIV_UINT.nState");
+SL_STATIC_ASSERT(offsetof(FB_DIV_UINT, aReserved5) == 49, "offset of FB_DIV_UINT.aReserved5");
+SL_STATIC_ASSERT(offsetof(FB_DIV_UINT, nDiag) == 50, "offset of FB_DIV_UINT.nDiag");
+SL_STATIC_ASSERT(offsetof(FB_DIV_UINT, nDiagTextId) == 52, "offset of FB_DIV_UINT.nDiagTextId");
+SL_STATIC_ASSERT(offsetof(FB_DIV_UINT, aReserved6) == 54, "offset of FB_DIV_UINT.aReserved6");
+SL_STATIC_ASSERT(offsetof(FB_DIV_UINT, dwDiagPar2) == 56, "offset of FB_DIV_UINT.dwDiagPar2");
+SL_STATIC_ASSERT(offsetof(FB_DIV_UINT, dwDiagPar3) == 60, "offset of FB_DIV_UINT.dwDiagPar3");
+SL_STATIC_ASSERT(offsetof(FB_DIV_UINT, stPrivate) == 64, "offset of FB_DIV_UINT.stPrivate");
+SL_STATIC_ASSERT(sizeof(FB_DIV_UINT) == 112, "size of FB_DIV_UINT");
+SL_STATIC_ASSERT(offsetof(FB_DIV_DINT, aReserved0) == 0, "offset of FB_DIV_DINT.aReserved0");
+SL_STATIC_ASSERT(offsetof(FB_DIV_DINT, bRun) == 16, "offset of FB_DIV_DINT.bRun");
+SL_STATIC_ASSERT(offsetof(FB_DIV_DINT, bErrAck) == 17, "offset of FB_DIV_DINT.bErrAck");
+SL_STATIC_ASSERT(offsetof(FB_DIV_DINT, aReserved1) == 18, "offset of FB_DIV_DINT.aReserved1");
+SL_STATIC_ASSERT(offsetof(FB_DIV_DINT, nAnalogIn1) == 24, "offset of FB_DIV_DINT.nAnalogIn1");
+SL_STATIC_ASSERT(offsetof(FB_DIV_DINT, nAnalogIn2) == 28, "offset of FB_DIV_DINT.nAnalogIn2");
+SL_STATIC_ASSERT(offsetof(FB_DIV_DINT, nRounding) == 32, "offset of FB_DIV_DINT.nRounding");
+SL_STATIC_ASSERT(offsetof(FB_DIV_DINT, wInputActive) == 34, "offset of FB_DIV_DINT.wInputActive");
+SL_STATIC_ASSERT(offsetof(FB_DIV_DINT, aReserved2) == 36, "offset of FB_DIV_DINT.aReserved2");
+SL_STATIC_ASSERT(offsetof(FB_DIV_DINT, bError) == 40, "offset of FB_DIV_DINT.bError");
+SL_STATIC_ASSERT(offsetof(FB_DIV_DINT, aReserved3) == 41, "offset of FB_DIV_DINT.aReserved3");
+SL_STATIC_ASSERT(offsetof(FB_DIV_DINT, nAnalogOut) == 48, "offset of FB_DIV_DINT.nAnalogOut");
+SL_STATIC_ASSERT(offsetof(FB_DIV_DINT, aReserved4) == 52, "offset of FB_DIV_DINT.aReserved4");
+SL_STATIC_ASSERT(offsetof(FB_DIV_DINT, nState) == 56, "offset of FB_DIV_DINT.nState");
+SL_STATIC_ASSERT(offsetof(FB_DIV_DINT, aReserved5) == 57, "offset of FB_DIV_DINT.aReserved5");
+SL_STATIC_ASSERT(offsetof(FB_DIV_DINT, nDiag) == 58, "offset of FB_DIV_DINT.nDiag");
+SL_STATIC_ASSERT(offsetof(FB_DIV_DINT, nDiagTextId) == 60, "offset of FB_DIV_DINT.nDiagTextId");
+SL_STATIC_ASSERT(offsetof(FB_DIV_DINT, aReserved6) == 62, "offset of FB_DIV_DINT.aReserved6");
+SL_STATIC_ASSERT(offsetof(FB_DIV_DINT, dwDiagPar2) == 64, "offset of FB_DIV_DINT.dwDiagPar2");
+SL_STATIC_ASSERT(offsetof(FB_DIV_DINT, dwDiagPar3) == 68, "offset of FB_DIV_DINT.dwDiagPar3");
+SL_STATIC_ASSERT(offsetof(FB_DIV_DINT, stPrivate) == 72, "offset of FB_DIV_DINT.stPrivate");
+SL_STATIC_ASSERT(sizeof(FB_DIV_DINT) == 120, "size of FB_DIV_DINT");
+SL_STATIC_ASSERT(offsetof(FB_DIV_UDINT, aReserved0) == 0, "offset of FB_DIV_UDINT.aReserved0");
+SL_STATIC_ASSERT(offsetof(FB_DIV_UDINT, bRun) == 16, "offset of FB_DIV_UDINT.bRun");
+SL_STATIC_ASSERT(offsetof(FB_DIV_UDINT, bErrAck) == 17, "offset of FB_DIV_UDINT.bErrAck");
+SL_STATIC_ASSERT(offsetof(FB_DIV_UDINT, aReserved1) == 18, "offset of FB_DIV_UDINT.aReserved1");
+SL_STATIC_ASSERT(offsetof(FB_DIV_UDINT, nAnalogIn1) == 24, "offset of FB_DIV_UDINT.nAnalogIn1");
+SL_STATIC_ASSERT(offsetof(FB_DIV_UDINT, nAnalogIn2) == 28, "offset of FB_DIV_UDINT.nAnalogIn2");
+SL_STATIC_ASSERT(offsetof(FB_DIV_UDINT, nRounding) == 32, "offset of FB_DIV_UDINT.nRounding");
+SL_STATIC_ASSERT(offsetof(FB_DIV_UDINT, wInputActive) == 34, "offset of FB_DIV_UDINT.wInputActive");
+SL_STATIC_ASSERT(offsetof(FB_DIV_UDINT, aReserved2) == 36, "offset of FB_DIV_UDINT.aReserved2");
+SL_STATIC_ASSERT(offsetof(FB_DIV_UDINT, bError) == 40, "offset of FB_DIV_UDINT.bError");
+SL_STATIC_ASSERT(offsetof(FB_DIV_UDINT, aReserved3) == 41, "offset of FB_DIV_UDINT.aReserved3");
+SL_STATIC_ASSERT(offsetof(FB_DIV_UDINT, nAnalogOut) == 48, "offset of FB_DIV_UDINT.nAnalogOut");
+SL_STATIC_ASSERT(offsetof(FB_DIV_UDINT, aReserved4) == 52, "offset of FB_DIV_UDINT.aReserved4");
+SL_STATIC_ASSERT(offsetof(FB_DIV_UDINT, nState) == 56, "offset of FB_DIV_UDINT.nState");
+SL_STATIC_ASSERT(offsetof(FB_DIV_UDINT, aReserved5) == 57, "offset of FB_DIV_UDINT.aReserved5");
+SL_STATIC_ASSERT(offsetof(FB_DIV_UDINT, nDiag) == 58, "offset of FB_DIV_UDINT.nDiag");
+SL_STATIC_ASSERT(offsetof(FB_DIV_UDINT, nDiagTextId) == 60, "offset of FB_DIV_UDINT.nDiagTextId");
+SL_STATIC_ASSERT(offsetof(FB_DIV_UDINT, aReserved6) == 62, "offset of FB_DIV_UDINT.aReserved6");
+SL_STATIC_ASSERT(offsetof(FB_DIV_UDINT, dwDiagPar2) == 64, "offset of FB_DIV_UDINT.dwDiagPar2");
+SL_STATIC_ASSERT(offsetof(FB_DIV_UDINT, dwDiagPar3) == 68, "offset of FB_DIV_UDINT.dwDiagPar3");
+SL_STATIC_ASSERT(offsetof(FB_DIV_UDINT, stPrivate) == 72, "offset of FB_DIV_UDINT.stPrivate");
+SL_STATIC_ASSERT(sizeof(FB_DIV_UDINT) == 120, "size of FB_DIV_UDINT");
 
 #endif  /* SAFELOGIC_H */

@@ -17,6 +17,11 @@ pub mod types;
 pub mod ffi;
 
 pub use blocks::and::FB_AND;
+pub use blocks::arith::{
+    FB_ADD_DINT, FB_ADD_INT, FB_ADD_UDINT, FB_ADD_UINT, FB_DIV_DINT, FB_DIV_INT, FB_DIV_UDINT,
+    FB_DIV_UINT, FB_MUL_DINT, FB_MUL_INT, FB_MUL_UDINT, FB_MUL_UINT, FB_SUB_DINT, FB_SUB_INT,
+    FB_SUB_UDINT, FB_SUB_UINT,
+};
 pub use blocks::decouple::FB_DECOUPLE;
 pub use blocks::edm::{FB_EDM, SL_EDM_PRIVATE};
 pub use blocks::estop::FB_ESTOP;

@@ -218,22 +218,22 @@ macro_rules! for_each_block {
             $crate::blocks::ton::FB_TON => sl_ton_init, sl_ton_cycle;
             $crate::blocks::ton2::FB_TON2 => sl_ton2_init, sl_ton2_cycle;
             $crate::blocks::tof::FB_TOF => sl_tof_init, sl_tof_cycle;
-            //ARITH $crate::blocks::arith::FB_ADD_INT => sl_add_int_init, sl_add_int_cycle;
-            //ARITH $crate::blocks::arith::FB_ADD_UINT => sl_add_uint_init, sl_add_uint_cycle;
-            //ARITH $crate::blocks::arith::FB_ADD_DINT => sl_add_dint_init, sl_add_dint_cycle;
-            //ARITH $crate::blocks::arith::FB_ADD_UDINT => sl_add_udint_init, sl_add_udint_cycle;
-            //ARITH $crate::blocks::arith::FB_SUB_INT => sl_sub_int_init, sl_sub_int_cycle;
-            //ARITH $crate::blocks::arith::FB_SUB_UINT => sl_sub_uint_init, sl_sub_uint_cycle;
-            //ARITH $crate::blocks::arith::FB_SUB_DINT => sl_sub_dint_init, sl_sub_dint_cycle;
-            //ARITH $crate::blocks::arith::FB_SUB_UDINT => sl_sub_udint_init, sl_sub_udint_cycle;
-            //ARITH $crate::blocks::arith::FB_MUL_INT => sl_mul_int_init, sl_mul_int_cycle;
-            //ARITH $crate::blocks::arith::FB_MUL_UINT => sl_mul_uint_init, sl_mul_uint_cycle;
-            //ARITH $crate::blocks::arith::FB_MUL_DINT => sl_mul_dint_init, sl_mul_dint_cycle;
-            //ARITH $crate::blocks::arith::FB_MUL_UDINT => sl_mul_udint_init, sl_mul_udint_cycle;
-            //ARITH $crate::blocks::arith::FB_DIV_INT => sl_div_int_init, sl_div_int_cycle;
-            //ARITH $crate::blocks::arith::FB_DIV_UINT => sl_div_uint_init, sl_div_uint_cycle;
-            //ARITH $crate::blocks::arith::FB_DIV_DINT => sl_div_dint_init, sl_div_dint_cycle;
-            //ARITH $crate::blocks::arith::FB_DIV_UDINT => sl_div_udint_init, sl_div_udint_cycle;
+            $crate::blocks::arith::FB_ADD_INT => sl_add_int_init, sl_add_int_cycle;
+            $crate::blocks::arith::FB_ADD_UINT => sl_add_uint_init, sl_add_uint_cycle;
+            $crate::blocks::arith::FB_ADD_DINT => sl_add_dint_init, sl_add_dint_cycle;
+            $crate::blocks::arith::FB_ADD_UDINT => sl_add_udint_init, sl_add_udint_cycle;
+            $crate::blocks::arith::FB_SUB_INT => sl_sub_int_init, sl_sub_int_cycle;
+            $crate::blocks::arith::FB_SUB_UINT => sl_sub_uint_init, sl_sub_uint_cycle;
+            $crate::blocks::arith::FB_SUB_DINT => sl_sub_dint_init, sl_sub_dint_cycle;
+            $crate::blocks::arith::FB_SUB_UDINT => sl_sub_udint_init, sl_sub_udint_cycle;
+            $crate::blocks::arith::FB_MUL_INT => sl_mul_int_init, sl_mul_int_cycle;
+            $crate::blocks::arith::FB_MUL_UINT => sl_mul_uint_init, sl_mul_uint_cycle;
+            $crate::blocks::arith::FB_MUL_DINT => sl_mul_dint_init, sl_mul_dint_cycle;
+            $crate::blocks::arith::FB_MUL_UDINT => sl_mul_udint_init, sl_mul_udint_cycle;
+            $crate::blocks::arith::FB_DIV_INT => sl_div_int_init, sl_div_int_cycle;
+            $crate::blocks::arith::FB_DIV_UINT => sl_div_uint_init, sl_div_uint_cycle;
+            $crate::blocks::arith::FB_DIV_DINT => sl_div_dint_init, sl_div_dint_cycle;
+            $crate::blocks::arith::FB_DIV_UDINT => sl_div_udint_init, sl_div_udint_cycle;
             // registry:end
         }
     };

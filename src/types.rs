@@ -118,6 +118,9 @@ pub const SL_DIAG_CLOCK: u16 = 1 << 14;
 /// Library extension, diag bit 15: the private state was corrupt (SL_E_CORRUPT / SL_E_INTERNAL).
 pub const SL_DIAG_CORRUPT: u16 = 1 << 15;
 
+/// The library's own diag bits (13-15); the rest of `nDiag` is the manual's bits or value.
+pub const LIBRARY_DIAG_BITS: u16 = SL_DIAG_PARAM_CHANGED | SL_DIAG_CLOCK | SL_DIAG_CORRUPT;
+
 bitflags::bitflags! {
     /// The diagnostic bits of `nDiag` as a typed set.
     #[derive(Clone, Copy, Debug, PartialEq, Eq)]

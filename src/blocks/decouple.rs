@@ -95,6 +95,7 @@ pub const INFO: BlockInfo = BlockInfo {
     name: "DECOUPLE",
     states: &[RUN, STOP, ERROR, RESET],
     diag: &[],
+    diag_values: &[],
 };
 
 crate::impl_member!([] FB_DECOUPLE {

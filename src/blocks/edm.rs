@@ -103,6 +103,7 @@ pub const INFO: BlockInfo = BlockInfo {
         (SL_DIAG_EDM_SWITCH_OFF, "Switch-OFF timer elapsed"),
         (SL_DIAG_EDM_SWITCH_ON, "Switch-ON timer elapsed"),
     ],
+    diag_values: &[],
 };
 
 crate::impl_member!([] FB_EDM {

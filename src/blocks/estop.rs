@@ -143,6 +143,7 @@ pub const INFO: BlockInfo = BlockInfo {
             "group 4 with Safe Inputs after Disc Error",
         ),
     ],
+    diag_values: &[],
 };
 
 crate::impl_member!([] FB_ESTOP {

@@ -5,6 +5,7 @@
 //! TWOHAND (§4.7), MUTING (§4.8) and EDM (§4.9) have state machines of their own.
 
 pub mod and;
+pub mod arith;
 pub mod decouple;
 pub mod edm;
 pub mod estop;
@@ -35,6 +36,9 @@ pub struct BlockInfo {
     pub states: &'static [(u8, &'static str)],
     /// Diagnostic bits the manual defines for the block, with their manual text.
     pub diag: &'static [(u16, &'static str)],
+    /// For blocks whose `nDiag` carries a value (ADD …): the values with their manual
+    /// text; the library bits 13-15 are bits in every block.
+    pub diag_values: &'static [(u16, &'static str)],
 }
 
 /// State names shared by most blocks (manual status values 1–6, 8).
@@ -72,9 +76,18 @@ pub const LIBRARY_DIAG: &[(u16, &str)] = &[
 /// fit; returns the number of bytes written (no NUL).
 pub fn diag_text(block: &BlockInfo, diag: u16, out: &mut [u8]) -> usize {
     let mut w = Writer { out, len: 0 };
+    let mut bits = diag;
+    if !block.diag_values.is_empty() {
+        let value = diag & !crate::types::LIBRARY_DIAG_BITS;
+        match block.diag_values.iter().find(|(v, _)| *v == value) {
+            Some((_, text)) => w.push(text),
+            None => w.push("unknown diag value"),
+        }
+        bits &= crate::types::LIBRARY_DIAG_BITS;
+    }
     for bit in 0..16u16 {
         let mask = 1u16 << bit;
-        if diag & mask == 0 {
+        if bits & mask == 0 {
             continue;
         }
         if w.len > 0 {

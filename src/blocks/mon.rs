@@ -153,6 +153,7 @@ pub const INFO: BlockInfo = BlockInfo {
             "Secure group with Safe Inputs after Disc Error",
         ),
     ],
+    diag_values: &[],
 };
 
 crate::impl_member!([] FB_MON {

@@ -198,6 +198,7 @@ pub const INFO: BlockInfo = BlockInfo {
             "discrepancy error in muting input group 2 was not yet reset",
         ),
     ],
+    diag_values: &[],
 };
 
 crate::impl_member!([] FB_MUTING {

@@ -134,6 +134,7 @@ pub const INFO: BlockInfo = BlockInfo {
     name: "OPMODE",
     states: &[RUN, STOP, SAFE, ERROR, RESET, START],
     diag: &[(SL_DIAG_OPMODE_DISC, "discrepancy monitoring error")],
+    diag_values: &[],
 };
 
 crate::impl_member!([] FB_OPMODE {

@@ -79,6 +79,7 @@ pub const INFO: BlockInfo = BlockInfo {
     name: "OR",
     states: &[RUN, STOP, SAFE, ERROR, RESET],
     diag: &[],
+    diag_values: &[],
 };
 
 crate::impl_member!([] FB_OR {

@@ -72,6 +72,7 @@ pub const INFO: BlockInfo = BlockInfo {
     name: "RS",
     states: &[STOP, SAFE, ERROR, RESET, (SL_STATE_RS_SET, "SET\0")],
     diag: &[],
+    diag_values: &[],
 };
 
 crate::impl_member!([] FB_RS {

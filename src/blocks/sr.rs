@@ -72,6 +72,7 @@ pub const INFO: BlockInfo = BlockInfo {
     name: "SR",
     states: &[STOP, SAFE, ERROR, RESET, (SL_STATE_SR_SET, "SET\0")],
     diag: &[],
+    diag_values: &[],
 };
 
 crate::impl_member!([] FB_SR {

@@ -83,6 +83,7 @@ pub const INFO: BlockInfo = BlockInfo {
     name: "TOF",
     states: &[RUN, STOP, SAFE, ERROR, RESET, DELAYOUT],
     diag: &[],
+    diag_values: &[],
 };
 
 crate::impl_member!([] FB_TOF {

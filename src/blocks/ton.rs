@@ -89,6 +89,7 @@ pub const INFO: BlockInfo = BlockInfo {
         (SL_STATE_TON_DELAYIN, "DELAYIN\0"),
     ],
     diag: &[],
+    diag_values: &[],
 };
 
 crate::impl_member!([] FB_TON {

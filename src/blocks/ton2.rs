@@ -108,6 +108,7 @@ pub const INFO: BlockInfo = BlockInfo {
         SL_DIAG_TON2_RESTORE,
         "restored elapsed time refused (greater than the delay time: global shutdown 0x3510)",
     )],
+    diag_values: &[],
 };
 
 crate::impl_member!([] FB_TON2 {

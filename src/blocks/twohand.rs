@@ -152,6 +152,7 @@ pub const INFO: BlockInfo = BlockInfo {
             "between the pairs with Safe Inputs after Disc Error",
         ),
     ],
+    diag_values: &[],
 };
 
 crate::impl_member!([] FB_TWOHAND {

@@ -111,6 +111,7 @@ pub const INFO: BlockInfo = BlockInfo {
     name: "XOR",
     states: &[RUN, STOP, ERROR, RESET],
     diag: &[],
+    diag_values: &[],
 };
 
 crate::impl_member!([] FB_XOR {

@@ -78,6 +78,23 @@ pub fn param_crc(magic: u16, active: u8, negated: u8, options: u16, times: &[u16
 }
 
 impl SL_PRIVATE_HEADER {
+    /// All zero: a never-initialised instance.
+    pub const ZERO: Self = Self {
+        wMagic: 0,
+        wParamCrc: 0,
+        nState: 0,
+        nFlags: 0,
+        wDiag: 0,
+        wAux: 0,
+        wAuxCheck: 0,
+        dwCtrlCheck: 0,
+        tLast: 0,
+        tPhase: 0,
+        nActive: 0,
+        nNegated: 0,
+        wOptions: 0,
+    };
+
     #[inline]
     fn ctrl(&self) -> u32 {
         u32::from(self.nState) | (u32::from(self.nFlags) << 8) | (u32::from(self.wDiag) << 16)
