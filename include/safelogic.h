@@ -137,9 +137,19 @@
 #define ARITH_ACTIVE 768
 
 /*
- Link kind: BOOL output to BOOL input (analog kinds will follow).
+ Link kind: BOOL output to BOOL input.
  */
 #define SL_LINK_BOOL 0
+
+/*
+ Link kind: 16-bit analog output to a 16-bit analog input of the same type (INT or UINT).
+ */
+#define SL_LINK_ANALOG16 1
+
+/*
+ Link kind: 32-bit analog output to a 32-bit analog input of the same type (DINT or UDINT).
+ */
+#define SL_LINK_ANALOG32 2
 
 /*
  Group state START (6): connections still starting up.
@@ -1040,7 +1050,7 @@ typedef struct SL_LINK {
   uint16_t nDstMember;
   uint16_t nDstOffset;
   /*
-   SL_LINK_BOOL.
+   SL_LINK_BOOL, SL_LINK_ANALOG16 or SL_LINK_ANALOG32 (the type of both fields).
    */
   uint8_t nKind;
   uint8_t aReserved[3];
@@ -4189,8 +4199,10 @@ int32_t sl_group_init(struct SL_GROUP *g, struct SL_MEMBER *aMembers, uint16_t n
 int32_t sl_group_add_member(struct SL_GROUP *g, struct SL_MEMBER *aMembers, uint16_t nType, void *pBlock, uint16_t *pIndex);
 
 /*
- Links BOOL output byte `nSrcOffset` of member `nSrcMember` to BOOL input byte
- `nDstOffset` of member `nDstMember` (offsets as in the FB_<NAME> structs). The value is
+ Links the output at byte `nSrcOffset` of member `nSrcMember` to the input at byte
+ `nDstOffset` of member `nDstMember` (offsets as in the FB_<NAME> structs). Both fields
+ must have the same IEC type: BOOL to BOOL (SL_LINK_BOOL), INT/UINT to the same
+ (SL_LINK_ANALOG16), DINT/UDINT to the same (SL_LINK_ANALOG32). The value is
  copied just before the destination executes: a link from an earlier member carries this
  cycle's value, one from a later member the previous cycle's. SL_E_CONFIG for a field
  that is not a linkable output / input of a member, or an input that is already linked.

@@ -310,8 +310,10 @@ pub unsafe extern "C" fn sl_group_add_member(
     })
 }
 
-/// Links BOOL output byte `nSrcOffset` of member `nSrcMember` to BOOL input byte
-/// `nDstOffset` of member `nDstMember` (offsets as in the FB_<NAME> structs). The value is
+/// Links the output at byte `nSrcOffset` of member `nSrcMember` to the input at byte
+/// `nDstOffset` of member `nDstMember` (offsets as in the FB_<NAME> structs). Both fields
+/// must have the same IEC type: BOOL to BOOL (SL_LINK_BOOL), INT/UINT to the same
+/// (SL_LINK_ANALOG16), DINT/UDINT to the same (SL_LINK_ANALOG32). The value is
 /// copied just before the destination executes: a link from an earlier member carries this
 /// cycle's value, one from a later member the previous cycle's. SL_E_CONFIG for a field
 /// that is not a linkable output / input of a member, or an input that is already linked.
@@ -335,12 +337,23 @@ pub unsafe extern "C" fn sl_group_add_link(
             let (members, _) = group::storage_len(g).ok_or(SL_E_CORRUPT)?;
             let table = storage(aMembers, members)?;
             let links = storage(aLinks, group::link_capacity(g).ok_or(SL_E_CORRUPT)?)?;
+            // The kind follows from the source field's type; add_link refuses a
+            // destination of another type.
+            let kind = CMembers(table)
+                .with(usize::from(nSrcMember), |b| {
+                    b.fields()
+                        .iter()
+                        .find(|f| f.offset == nSrcOffset)
+                        .and_then(|f| group::link_kind(f.kind))
+                })
+                .flatten()
+                .unwrap_or(SL_LINK_BOOL);
             let link = SL_LINK {
                 nSrcMember,
                 nSrcOffset,
                 nDstMember,
                 nDstOffset,
-                nKind: SL_LINK_BOOL,
+                nKind: kind,
                 aReserved: [0; 3],
             };
             Ok(group::add_link(g, &mut CMembers(table), links, link))

@@ -10,7 +10,7 @@
 //! executes. No heap: member and link storage belong to the caller.
 
 use crate::prim::bools::{edge, is_true};
-use crate::registry::Field;
+use crate::registry::{Dir, Field, Kind};
 use crate::types::*;
 use core::ffi::c_void;
 
@@ -141,8 +141,30 @@ macro_rules! impl_member {
     };
 }
 
-/// Link kind: BOOL output to BOOL input (analog kinds will follow).
+/// Link kind: BOOL output to BOOL input.
 pub const SL_LINK_BOOL: u8 = 0;
+/// Link kind: 16-bit analog output to a 16-bit analog input of the same type (INT or UINT).
+pub const SL_LINK_ANALOG16: u8 = 1;
+/// Link kind: 32-bit analog output to a 32-bit analog input of the same type (DINT or UDINT).
+pub const SL_LINK_ANALOG32: u8 = 2;
+
+/// The link kind that carries a field of this type (`None`: not linkable).
+pub fn link_kind(k: Kind) -> Option<u8> {
+    match k {
+        Kind::Bool => Some(SL_LINK_BOOL),
+        Kind::I16 | Kind::U16 => Some(SL_LINK_ANALOG16),
+        Kind::I32 | Kind::U32 => Some(SL_LINK_ANALOG32),
+        Kind::U8 => None,
+    }
+}
+
+/// The field of `b` at `offset` in direction `dir`.
+fn field_at(b: &dyn Member, offset: u16, dir: Dir) -> Option<Field> {
+    b.fields()
+        .iter()
+        .find(|f| f.offset == offset && f.dir == dir)
+        .copied()
+}
 
 /// Group state START (6): connections still starting up.
 pub const SL_GROUP_STATE_START: u8 = 6;
@@ -195,7 +217,7 @@ pub struct SL_LINK {
     pub nSrcOffset: u16,
     pub nDstMember: u16,
     pub nDstOffset: u16,
-    /// SL_LINK_BOOL.
+    /// SL_LINK_BOOL, SL_LINK_ANALOG16 or SL_LINK_ANALOG32 (the type of both fields).
     pub nKind: u8,
     pub aReserved: [u8; 3],
 }
@@ -438,18 +460,31 @@ pub fn add_link<M: Members + ?Sized>(
     }
     let n = usize::from(c.links);
     let in_group = |i: u16| i < c.members;
-    let src_ok = in_group(link.nSrcMember)
-        && m.with(usize::from(link.nSrcMember), |b| {
-            b.output(link.nSrcOffset).is_some()
-        }) == Some(true);
-    let dst_ok = in_group(link.nDstMember)
-        && m.with(usize::from(link.nDstMember), |b| {
-            b.input_mut(link.nDstOffset).is_some()
-        }) == Some(true);
+    let src = in_group(link.nSrcMember)
+        .then(|| {
+            m.with(usize::from(link.nSrcMember), |b| {
+                field_at(b, link.nSrcOffset, Dir::Output)
+            })
+        })
+        .flatten()
+        .flatten();
+    let dst = in_group(link.nDstMember)
+        .then(|| {
+            m.with(usize::from(link.nDstMember), |b| {
+                field_at(b, link.nDstOffset, Dir::Input)
+            })
+        })
+        .flatten()
+        .flatten();
+    // Same IEC type on both ends (width and signedness), carried by the stated kind.
+    let typed = match (src, dst) {
+        (Some(s), Some(d)) => s.kind == d.kind && link_kind(s.kind) == Some(link.nKind),
+        _ => false,
+    };
     let taken = links[..n]
         .iter()
         .any(|l| l.nDstMember == link.nDstMember && l.nDstOffset == link.nDstOffset);
-    if !src_ok || !dst_ok || taken || link.nKind != SL_LINK_BOOL {
+    if !typed || taken {
         return SL_E_CONFIG;
     }
     let at = links[..n].partition_point(|l| l.nDstMember <= link.nDstMember);
@@ -560,8 +595,10 @@ pub fn cycle<M: Members + ?Sized>(g: &mut SL_GROUP, m: &mut M, links: &[SL_LINK]
             .filter(|l| usize::from(l.nDstMember) == i)
         {
             next_link += 1;
-            if let Some(Some(v)) = m.with(usize::from(l.nSrcMember), |b| b.output(l.nSrcOffset)) {
-                m.with(i, |b| b.input_mut(l.nDstOffset).map(|d| *d = v));
+            if let Some(Some(v)) =
+                m.with(usize::from(l.nSrcMember), |b| b.output_bits(l.nSrcOffset))
+            {
+                m.with(i, |b| b.set_input_bits(l.nDstOffset, v));
             }
         }
         let outcome = m.with(i, |b| b.run_in_group(member_run, ack_level, now));

@@ -1,0 +1,222 @@
+//! The conformance harness every registered block type gets by being registered (the rows
+//! of `safelogic::for_each_block!`): random bytes in every field, the private state
+//! included, random time steps and input changes through the C functions → no panic, a
+//! documented status, and the safe-state invariants read through the field table; a
+//! zeroed instance is valid; the field table agrees with the C header (a C program built
+//! from the table, compiled against include/safelogic.h).
+
+use safelogic::registry::{block_type, BlockType, Dir, Kind, BLOCKS};
+use safelogic::*;
+use std::collections::BTreeSet;
+
+struct Rng(u64);
+
+impl Rng {
+    fn next(&mut self) -> u64 {
+        self.0 ^= self.0 >> 12;
+        self.0 ^= self.0 << 25;
+        self.0 ^= self.0 >> 27;
+        self.0.wrapping_mul(0x2545_F491_4F6C_DD1D)
+    }
+}
+
+fn read(bytes: &[u8], offset: u16, kind: Kind) -> u32 {
+    let o = usize::from(offset);
+    match kind.size() {
+        1 => u32::from(bytes[o]),
+        2 => u32::from(u16::from_ne_bytes([bytes[o], bytes[o + 1]])),
+        _ => u32::from_ne_bytes([bytes[o], bytes[o + 1], bytes[o + 2], bytes[o + 3]]),
+    }
+}
+
+const DOCUMENTED: [i32; 7] = [
+    SL_OK,
+    SL_E_CONFIG,
+    SL_E_PARAM_CHANGED,
+    SL_E_CORRUPT,
+    SL_E_INVALID_BOOL,
+    SL_E_CLOCK,
+    SL_E_RESTORE,
+];
+
+/// The invariants after one call, read from the instance's bytes.
+fn check(t: &BlockType, bytes: &[u8], status: i32, what: &str) -> u8 {
+    let name = t.info.name;
+    assert!(
+        DOCUMENTED.contains(&status),
+        "{name} {what}: status {status}"
+    );
+    let state = bytes[usize::from(t.field("nState").unwrap().offset)];
+    assert!(
+        t.info.states.iter().any(|(v, _)| *v == state),
+        "{name} {what}: state {state} is not one of the block's"
+    );
+    let safe_state = matches!(state, SL_STATE_STOP | SL_STATE_ERROR | SL_STATE_RESET);
+    let refused = matches!(
+        status,
+        SL_E_CONFIG | SL_E_CORRUPT | SL_E_CLOCK | SL_E_PARAM_CHANGED
+    );
+    for f in t.fields.iter().filter(|f| f.dir == Dir::Output) {
+        let v = read(bytes, f.offset, f.kind);
+        if f.kind == Kind::Bool {
+            assert!(v <= 1, "{name} {what}: {} = {v}", f.name);
+        }
+        if f.name == "bError" {
+            assert_eq!(
+                v == 1,
+                state == SL_STATE_ERROR,
+                "{name} {what}: bError in state {state}"
+            );
+        } else if safe_state || refused {
+            assert_eq!(
+                v, 0,
+                "{name} {what}: {} TRUE/non-zero in state {state}, status {status}",
+                f.name
+            );
+        }
+    }
+    state
+}
+
+macro_rules! harness {
+    ($($ty:ty => $init:ident, $cycle:ident;)*) => {
+        /// Runs `steps` random calls on every registered type; returns the states reached.
+        fn run_all(seed: u64, rounds: usize, steps: usize) -> Vec<(&'static str, BTreeSet<u8>)> {
+            let mut reached = Vec::new();
+            $({
+                let t = block_type(<$ty as safelogic::registry::Registered>::INFO.tag).unwrap();
+                assert_eq!(t.size, std::mem::size_of::<$ty>());
+                let mut rng = Rng(seed ^ u64::from(t.info.tag).wrapping_mul(0x9E37_79B9));
+                let mut states = BTreeSet::new();
+                for round in 0..rounds {
+                    // SAFETY: every block struct holds only integer fields (and zero-sized
+                    // markers), so every byte pattern is a valid value.
+                    let mut fb: $ty = unsafe { std::mem::zeroed() };
+                    let bytes = |fb: &mut $ty| -> &mut [u8] {
+                        // SAFETY: as above; the slice covers exactly the instance.
+                        unsafe { std::slice::from_raw_parts_mut((fb as *mut $ty).cast::<u8>(), std::mem::size_of::<$ty>()) }
+                    };
+                    // A zeroed instance is a valid, never-initialised one.
+                    // SAFETY: a live, exclusively borrowed instance.
+                    let rc = unsafe { safelogic::ffi::$cycle(&mut fb, 0) };
+                    assert!(rc == SL_OK || rc == SL_E_CONFIG, "{}: zeroed instance gave {rc}", t.info.name);
+                    states.insert(check(t, bytes(&mut fb), rc, "zeroed"));
+                    // Random bytes everywhere (every other round with a fresh init first).
+                    for b in bytes(&mut fb).iter_mut() {
+                        *b = rng.next() as u8;
+                    }
+                    if round % 2 == 0 {
+                        // SAFETY: as above.
+                        let rc = unsafe { safelogic::ffi::$init(&mut fb) };
+                        assert!(rc == SL_OK || rc == SL_E_CONFIG, "{}: init gave {rc}", t.info.name);
+                        states.insert(check(t, bytes(&mut fb), rc, "init"));
+                    }
+                    let mut now = rng.next() as u32;
+                    for step in 0..steps {
+                        let r = rng.next();
+                        // Mostly valid BOOL bytes and small steps, sometimes anything.
+                        for f in t.fields.iter().filter(|f| matches!(f.dir, Dir::Input | Dir::Control)) {
+                            if rng.next() % 4 == 0 {
+                                let o = usize::from(f.offset);
+                                let v = rng.next();
+                                let bs = bytes(&mut fb);
+                                if f.kind == Kind::Bool {
+                                    bs[o] = if v % 50 == 0 { v as u8 } else { (v & 1) as u8 };
+                                } else {
+                                    for (k, b) in bs[o..o + f.kind.size()].iter_mut().enumerate() {
+                                        *b = (v >> (8 * k)) as u8;
+                                    }
+                                }
+                            }
+                        }
+                        if r % 97 == 0 {
+                            let bs = bytes(&mut fb);
+                            let i = (rng.next() as usize) % bs.len();
+                            bs[i] = rng.next() as u8;
+                        }
+                        now = match r % 100 {
+                            0 => now.wrapping_sub(1 + (rng.next() % 1000) as u32),
+                            1 => rng.next() as u32,
+                            _ => now.wrapping_add((rng.next() % 200) as u32),
+                        };
+                        // SAFETY: as above.
+                        let rc = unsafe { safelogic::ffi::$cycle(&mut fb, now) };
+                        states.insert(check(t, bytes(&mut fb), rc, &format!("round {round} step {step}")));
+                    }
+                }
+                reached.push((t.info.name, states));
+            })*
+            reached
+        }
+    };
+}
+
+safelogic::for_each_block!(harness);
+
+#[test]
+fn every_registered_type_survives_random_bytes() {
+    let reached = run_all(0x5AFE_10C1C, 200, 60);
+    assert_eq!(
+        reached.len(),
+        BLOCKS.len(),
+        "the harness covers every registered type"
+    );
+    for (name, states) in reached {
+        // Random private bytes are corrupt (ERROR); a zeroed or refused instance is STOP.
+        assert!(
+            states.contains(&SL_STATE_ERROR),
+            "{name} never reached ERROR: {states:?}"
+        );
+        assert!(
+            states.contains(&SL_STATE_STOP),
+            "{name} never reached STOP: {states:?}"
+        );
+    }
+}
+
+/// The field table against the header: a C program with one static assertion per field,
+/// generated from the table and compiled against include/safelogic.h.
+#[test]
+fn field_tables_agree_with_the_header() {
+    let mut c = String::from("#include <stddef.h>\n#include \"safelogic.h\"\n");
+    let mut n = 0;
+    for t in BLOCKS {
+        let s = format!("FB_{}", t.info.name);
+        c += &format!(
+            "_Static_assert(sizeof({s}) == {}, \"size of {s}\");\n",
+            t.size
+        );
+        for f in t.fields {
+            c += &format!(
+                "_Static_assert(offsetof({s}, {0}) == {1} && sizeof((({s} *)0)->{0}) == {2}, \"{s}.{0}\");\n",
+                f.name,
+                f.offset,
+                f.kind.size()
+            );
+            n += 1;
+        }
+    }
+    c += "int main(void) { return 0; }\n";
+    let dir = std::path::PathBuf::from(env!("CARGO_TARGET_TMPDIR"));
+    let src = dir.join("field_tables.c");
+    std::fs::write(&src, c).unwrap();
+    let include = concat!(env!("CARGO_MANIFEST_DIR"), "/include");
+    let out = std::process::Command::new("cc")
+        .args([
+            "-std=c11",
+            "-Wall",
+            "-Werror",
+            "-fsyntax-only",
+            "-I",
+            include,
+        ])
+        .arg(&src)
+        .output()
+        .expect("a C compiler (cc) is needed for this test");
+    assert!(
+        out.status.success(),
+        "the field table disagrees with the header:\n{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    assert!(n > 300, "{n} fields checked");
+}
