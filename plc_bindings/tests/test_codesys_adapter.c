@@ -249,6 +249,246 @@ static void test_param_structs(void)
       off = (off + sizeof(int32_t) - 1) / sizeof(int32_t) * sizeof(int32_t);
       CHECK(offsetof(cds_sl_tof_cycle_struct, cds_sl_tof_cycle) == off, "cds_sl_tof_cycle_struct return value at %zu, expected %zu", offsetof(cds_sl_tof_cycle_struct, cds_sl_tof_cycle), off); }
     { size_t off = 0;
+      off = (off + sizeof(void *) - 1) / sizeof(void *) * sizeof(void *);
+      CHECK(offsetof(cds_sl_add_int_init_struct, pFb) == off, "cds_sl_add_int_init_struct.pFb at %zu, expected %zu", offsetof(cds_sl_add_int_init_struct, pFb), off);
+      off += sizeof(void *);
+      off = (off + sizeof(int32_t) - 1) / sizeof(int32_t) * sizeof(int32_t);
+      CHECK(offsetof(cds_sl_add_int_init_struct, cds_sl_add_int_init) == off, "cds_sl_add_int_init_struct return value at %zu, expected %zu", offsetof(cds_sl_add_int_init_struct, cds_sl_add_int_init), off); }
+    { size_t off = 0;
+      off = (off + sizeof(void *) - 1) / sizeof(void *) * sizeof(void *);
+      CHECK(offsetof(cds_sl_add_int_cycle_struct, pFb) == off, "cds_sl_add_int_cycle_struct.pFb at %zu, expected %zu", offsetof(cds_sl_add_int_cycle_struct, pFb), off);
+      off += sizeof(void *);
+      off = (off + sizeof(uint32_t) - 1) / sizeof(uint32_t) * sizeof(uint32_t);
+      CHECK(offsetof(cds_sl_add_int_cycle_struct, tNow) == off, "cds_sl_add_int_cycle_struct.tNow at %zu, expected %zu", offsetof(cds_sl_add_int_cycle_struct, tNow), off);
+      off += sizeof(uint32_t);
+      off = (off + sizeof(int32_t) - 1) / sizeof(int32_t) * sizeof(int32_t);
+      CHECK(offsetof(cds_sl_add_int_cycle_struct, cds_sl_add_int_cycle) == off, "cds_sl_add_int_cycle_struct return value at %zu, expected %zu", offsetof(cds_sl_add_int_cycle_struct, cds_sl_add_int_cycle), off); }
+    { size_t off = 0;
+      off = (off + sizeof(void *) - 1) / sizeof(void *) * sizeof(void *);
+      CHECK(offsetof(cds_sl_add_uint_init_struct, pFb) == off, "cds_sl_add_uint_init_struct.pFb at %zu, expected %zu", offsetof(cds_sl_add_uint_init_struct, pFb), off);
+      off += sizeof(void *);
+      off = (off + sizeof(int32_t) - 1) / sizeof(int32_t) * sizeof(int32_t);
+      CHECK(offsetof(cds_sl_add_uint_init_struct, cds_sl_add_uint_init) == off, "cds_sl_add_uint_init_struct return value at %zu, expected %zu", offsetof(cds_sl_add_uint_init_struct, cds_sl_add_uint_init), off); }
+    { size_t off = 0;
+      off = (off + sizeof(void *) - 1) / sizeof(void *) * sizeof(void *);
+      CHECK(offsetof(cds_sl_add_uint_cycle_struct, pFb) == off, "cds_sl_add_uint_cycle_struct.pFb at %zu, expected %zu", offsetof(cds_sl_add_uint_cycle_struct, pFb), off);
+      off += sizeof(void *);
+      off = (off + sizeof(uint32_t) - 1) / sizeof(uint32_t) * sizeof(uint32_t);
+      CHECK(offsetof(cds_sl_add_uint_cycle_struct, tNow) == off, "cds_sl_add_uint_cycle_struct.tNow at %zu, expected %zu", offsetof(cds_sl_add_uint_cycle_struct, tNow), off);
+      off += sizeof(uint32_t);
+      off = (off + sizeof(int32_t) - 1) / sizeof(int32_t) * sizeof(int32_t);
+      CHECK(offsetof(cds_sl_add_uint_cycle_struct, cds_sl_add_uint_cycle) == off, "cds_sl_add_uint_cycle_struct return value at %zu, expected %zu", offsetof(cds_sl_add_uint_cycle_struct, cds_sl_add_uint_cycle), off); }
+    { size_t off = 0;
+      off = (off + sizeof(void *) - 1) / sizeof(void *) * sizeof(void *);
+      CHECK(offsetof(cds_sl_add_dint_init_struct, pFb) == off, "cds_sl_add_dint_init_struct.pFb at %zu, expected %zu", offsetof(cds_sl_add_dint_init_struct, pFb), off);
+      off += sizeof(void *);
+      off = (off + sizeof(int32_t) - 1) / sizeof(int32_t) * sizeof(int32_t);
+      CHECK(offsetof(cds_sl_add_dint_init_struct, cds_sl_add_dint_init) == off, "cds_sl_add_dint_init_struct return value at %zu, expected %zu", offsetof(cds_sl_add_dint_init_struct, cds_sl_add_dint_init), off); }
+    { size_t off = 0;
+      off = (off + sizeof(void *) - 1) / sizeof(void *) * sizeof(void *);
+      CHECK(offsetof(cds_sl_add_dint_cycle_struct, pFb) == off, "cds_sl_add_dint_cycle_struct.pFb at %zu, expected %zu", offsetof(cds_sl_add_dint_cycle_struct, pFb), off);
+      off += sizeof(void *);
+      off = (off + sizeof(uint32_t) - 1) / sizeof(uint32_t) * sizeof(uint32_t);
+      CHECK(offsetof(cds_sl_add_dint_cycle_struct, tNow) == off, "cds_sl_add_dint_cycle_struct.tNow at %zu, expected %zu", offsetof(cds_sl_add_dint_cycle_struct, tNow), off);
+      off += sizeof(uint32_t);
+      off = (off + sizeof(int32_t) - 1) / sizeof(int32_t) * sizeof(int32_t);
+      CHECK(offsetof(cds_sl_add_dint_cycle_struct, cds_sl_add_dint_cycle) == off, "cds_sl_add_dint_cycle_struct return value at %zu, expected %zu", offsetof(cds_sl_add_dint_cycle_struct, cds_sl_add_dint_cycle), off); }
+    { size_t off = 0;
+      off = (off + sizeof(void *) - 1) / sizeof(void *) * sizeof(void *);
+      CHECK(offsetof(cds_sl_add_udint_init_struct, pFb) == off, "cds_sl_add_udint_init_struct.pFb at %zu, expected %zu", offsetof(cds_sl_add_udint_init_struct, pFb), off);
+      off += sizeof(void *);
+      off = (off + sizeof(int32_t) - 1) / sizeof(int32_t) * sizeof(int32_t);
+      CHECK(offsetof(cds_sl_add_udint_init_struct, cds_sl_add_udint_init) == off, "cds_sl_add_udint_init_struct return value at %zu, expected %zu", offsetof(cds_sl_add_udint_init_struct, cds_sl_add_udint_init), off); }
+    { size_t off = 0;
+      off = (off + sizeof(void *) - 1) / sizeof(void *) * sizeof(void *);
+      CHECK(offsetof(cds_sl_add_udint_cycle_struct, pFb) == off, "cds_sl_add_udint_cycle_struct.pFb at %zu, expected %zu", offsetof(cds_sl_add_udint_cycle_struct, pFb), off);
+      off += sizeof(void *);
+      off = (off + sizeof(uint32_t) - 1) / sizeof(uint32_t) * sizeof(uint32_t);
+      CHECK(offsetof(cds_sl_add_udint_cycle_struct, tNow) == off, "cds_sl_add_udint_cycle_struct.tNow at %zu, expected %zu", offsetof(cds_sl_add_udint_cycle_struct, tNow), off);
+      off += sizeof(uint32_t);
+      off = (off + sizeof(int32_t) - 1) / sizeof(int32_t) * sizeof(int32_t);
+      CHECK(offsetof(cds_sl_add_udint_cycle_struct, cds_sl_add_udint_cycle) == off, "cds_sl_add_udint_cycle_struct return value at %zu, expected %zu", offsetof(cds_sl_add_udint_cycle_struct, cds_sl_add_udint_cycle), off); }
+    { size_t off = 0;
+      off = (off + sizeof(void *) - 1) / sizeof(void *) * sizeof(void *);
+      CHECK(offsetof(cds_sl_sub_int_init_struct, pFb) == off, "cds_sl_sub_int_init_struct.pFb at %zu, expected %zu", offsetof(cds_sl_sub_int_init_struct, pFb), off);
+      off += sizeof(void *);
+      off = (off + sizeof(int32_t) - 1) / sizeof(int32_t) * sizeof(int32_t);
+      CHECK(offsetof(cds_sl_sub_int_init_struct, cds_sl_sub_int_init) == off, "cds_sl_sub_int_init_struct return value at %zu, expected %zu", offsetof(cds_sl_sub_int_init_struct, cds_sl_sub_int_init), off); }
+    { size_t off = 0;
+      off = (off + sizeof(void *) - 1) / sizeof(void *) * sizeof(void *);
+      CHECK(offsetof(cds_sl_sub_int_cycle_struct, pFb) == off, "cds_sl_sub_int_cycle_struct.pFb at %zu, expected %zu", offsetof(cds_sl_sub_int_cycle_struct, pFb), off);
+      off += sizeof(void *);
+      off = (off + sizeof(uint32_t) - 1) / sizeof(uint32_t) * sizeof(uint32_t);
+      CHECK(offsetof(cds_sl_sub_int_cycle_struct, tNow) == off, "cds_sl_sub_int_cycle_struct.tNow at %zu, expected %zu", offsetof(cds_sl_sub_int_cycle_struct, tNow), off);
+      off += sizeof(uint32_t);
+      off = (off + sizeof(int32_t) - 1) / sizeof(int32_t) * sizeof(int32_t);
+      CHECK(offsetof(cds_sl_sub_int_cycle_struct, cds_sl_sub_int_cycle) == off, "cds_sl_sub_int_cycle_struct return value at %zu, expected %zu", offsetof(cds_sl_sub_int_cycle_struct, cds_sl_sub_int_cycle), off); }
+    { size_t off = 0;
+      off = (off + sizeof(void *) - 1) / sizeof(void *) * sizeof(void *);
+      CHECK(offsetof(cds_sl_sub_uint_init_struct, pFb) == off, "cds_sl_sub_uint_init_struct.pFb at %zu, expected %zu", offsetof(cds_sl_sub_uint_init_struct, pFb), off);
+      off += sizeof(void *);
+      off = (off + sizeof(int32_t) - 1) / sizeof(int32_t) * sizeof(int32_t);
+      CHECK(offsetof(cds_sl_sub_uint_init_struct, cds_sl_sub_uint_init) == off, "cds_sl_sub_uint_init_struct return value at %zu, expected %zu", offsetof(cds_sl_sub_uint_init_struct, cds_sl_sub_uint_init), off); }
+    { size_t off = 0;
+      off = (off + sizeof(void *) - 1) / sizeof(void *) * sizeof(void *);
+      CHECK(offsetof(cds_sl_sub_uint_cycle_struct, pFb) == off, "cds_sl_sub_uint_cycle_struct.pFb at %zu, expected %zu", offsetof(cds_sl_sub_uint_cycle_struct, pFb), off);
+      off += sizeof(void *);
+      off = (off + sizeof(uint32_t) - 1) / sizeof(uint32_t) * sizeof(uint32_t);
+      CHECK(offsetof(cds_sl_sub_uint_cycle_struct, tNow) == off, "cds_sl_sub_uint_cycle_struct.tNow at %zu, expected %zu", offsetof(cds_sl_sub_uint_cycle_struct, tNow), off);
+      off += sizeof(uint32_t);
+      off = (off + sizeof(int32_t) - 1) / sizeof(int32_t) * sizeof(int32_t);
+      CHECK(offsetof(cds_sl_sub_uint_cycle_struct, cds_sl_sub_uint_cycle) == off, "cds_sl_sub_uint_cycle_struct return value at %zu, expected %zu", offsetof(cds_sl_sub_uint_cycle_struct, cds_sl_sub_uint_cycle), off); }
+    { size_t off = 0;
+      off = (off + sizeof(void *) - 1) / sizeof(void *) * sizeof(void *);
+      CHECK(offsetof(cds_sl_sub_dint_init_struct, pFb) == off, "cds_sl_sub_dint_init_struct.pFb at %zu, expected %zu", offsetof(cds_sl_sub_dint_init_struct, pFb), off);
+      off += sizeof(void *);
+      off = (off + sizeof(int32_t) - 1) / sizeof(int32_t) * sizeof(int32_t);
+      CHECK(offsetof(cds_sl_sub_dint_init_struct, cds_sl_sub_dint_init) == off, "cds_sl_sub_dint_init_struct return value at %zu, expected %zu", offsetof(cds_sl_sub_dint_init_struct, cds_sl_sub_dint_init), off); }
+    { size_t off = 0;
+      off = (off + sizeof(void *) - 1) / sizeof(void *) * sizeof(void *);
+      CHECK(offsetof(cds_sl_sub_dint_cycle_struct, pFb) == off, "cds_sl_sub_dint_cycle_struct.pFb at %zu, expected %zu", offsetof(cds_sl_sub_dint_cycle_struct, pFb), off);
+      off += sizeof(void *);
+      off = (off + sizeof(uint32_t) - 1) / sizeof(uint32_t) * sizeof(uint32_t);
+      CHECK(offsetof(cds_sl_sub_dint_cycle_struct, tNow) == off, "cds_sl_sub_dint_cycle_struct.tNow at %zu, expected %zu", offsetof(cds_sl_sub_dint_cycle_struct, tNow), off);
+      off += sizeof(uint32_t);
+      off = (off + sizeof(int32_t) - 1) / sizeof(int32_t) * sizeof(int32_t);
+      CHECK(offsetof(cds_sl_sub_dint_cycle_struct, cds_sl_sub_dint_cycle) == off, "cds_sl_sub_dint_cycle_struct return value at %zu, expected %zu", offsetof(cds_sl_sub_dint_cycle_struct, cds_sl_sub_dint_cycle), off); }
+    { size_t off = 0;
+      off = (off + sizeof(void *) - 1) / sizeof(void *) * sizeof(void *);
+      CHECK(offsetof(cds_sl_sub_udint_init_struct, pFb) == off, "cds_sl_sub_udint_init_struct.pFb at %zu, expected %zu", offsetof(cds_sl_sub_udint_init_struct, pFb), off);
+      off += sizeof(void *);
+      off = (off + sizeof(int32_t) - 1) / sizeof(int32_t) * sizeof(int32_t);
+      CHECK(offsetof(cds_sl_sub_udint_init_struct, cds_sl_sub_udint_init) == off, "cds_sl_sub_udint_init_struct return value at %zu, expected %zu", offsetof(cds_sl_sub_udint_init_struct, cds_sl_sub_udint_init), off); }
+    { size_t off = 0;
+      off = (off + sizeof(void *) - 1) / sizeof(void *) * sizeof(void *);
+      CHECK(offsetof(cds_sl_sub_udint_cycle_struct, pFb) == off, "cds_sl_sub_udint_cycle_struct.pFb at %zu, expected %zu", offsetof(cds_sl_sub_udint_cycle_struct, pFb), off);
+      off += sizeof(void *);
+      off = (off + sizeof(uint32_t) - 1) / sizeof(uint32_t) * sizeof(uint32_t);
+      CHECK(offsetof(cds_sl_sub_udint_cycle_struct, tNow) == off, "cds_sl_sub_udint_cycle_struct.tNow at %zu, expected %zu", offsetof(cds_sl_sub_udint_cycle_struct, tNow), off);
+      off += sizeof(uint32_t);
+      off = (off + sizeof(int32_t) - 1) / sizeof(int32_t) * sizeof(int32_t);
+      CHECK(offsetof(cds_sl_sub_udint_cycle_struct, cds_sl_sub_udint_cycle) == off, "cds_sl_sub_udint_cycle_struct return value at %zu, expected %zu", offsetof(cds_sl_sub_udint_cycle_struct, cds_sl_sub_udint_cycle), off); }
+    { size_t off = 0;
+      off = (off + sizeof(void *) - 1) / sizeof(void *) * sizeof(void *);
+      CHECK(offsetof(cds_sl_mul_int_init_struct, pFb) == off, "cds_sl_mul_int_init_struct.pFb at %zu, expected %zu", offsetof(cds_sl_mul_int_init_struct, pFb), off);
+      off += sizeof(void *);
+      off = (off + sizeof(int32_t) - 1) / sizeof(int32_t) * sizeof(int32_t);
+      CHECK(offsetof(cds_sl_mul_int_init_struct, cds_sl_mul_int_init) == off, "cds_sl_mul_int_init_struct return value at %zu, expected %zu", offsetof(cds_sl_mul_int_init_struct, cds_sl_mul_int_init), off); }
+    { size_t off = 0;
+      off = (off + sizeof(void *) - 1) / sizeof(void *) * sizeof(void *);
+      CHECK(offsetof(cds_sl_mul_int_cycle_struct, pFb) == off, "cds_sl_mul_int_cycle_struct.pFb at %zu, expected %zu", offsetof(cds_sl_mul_int_cycle_struct, pFb), off);
+      off += sizeof(void *);
+      off = (off + sizeof(uint32_t) - 1) / sizeof(uint32_t) * sizeof(uint32_t);
+      CHECK(offsetof(cds_sl_mul_int_cycle_struct, tNow) == off, "cds_sl_mul_int_cycle_struct.tNow at %zu, expected %zu", offsetof(cds_sl_mul_int_cycle_struct, tNow), off);
+      off += sizeof(uint32_t);
+      off = (off + sizeof(int32_t) - 1) / sizeof(int32_t) * sizeof(int32_t);
+      CHECK(offsetof(cds_sl_mul_int_cycle_struct, cds_sl_mul_int_cycle) == off, "cds_sl_mul_int_cycle_struct return value at %zu, expected %zu", offsetof(cds_sl_mul_int_cycle_struct, cds_sl_mul_int_cycle), off); }
+    { size_t off = 0;
+      off = (off + sizeof(void *) - 1) / sizeof(void *) * sizeof(void *);
+      CHECK(offsetof(cds_sl_mul_uint_init_struct, pFb) == off, "cds_sl_mul_uint_init_struct.pFb at %zu, expected %zu", offsetof(cds_sl_mul_uint_init_struct, pFb), off);
+      off += sizeof(void *);
+      off = (off + sizeof(int32_t) - 1) / sizeof(int32_t) * sizeof(int32_t);
+      CHECK(offsetof(cds_sl_mul_uint_init_struct, cds_sl_mul_uint_init) == off, "cds_sl_mul_uint_init_struct return value at %zu, expected %zu", offsetof(cds_sl_mul_uint_init_struct, cds_sl_mul_uint_init), off); }
+    { size_t off = 0;
+      off = (off + sizeof(void *) - 1) / sizeof(void *) * sizeof(void *);
+      CHECK(offsetof(cds_sl_mul_uint_cycle_struct, pFb) == off, "cds_sl_mul_uint_cycle_struct.pFb at %zu, expected %zu", offsetof(cds_sl_mul_uint_cycle_struct, pFb), off);
+      off += sizeof(void *);
+      off = (off + sizeof(uint32_t) - 1) / sizeof(uint32_t) * sizeof(uint32_t);
+      CHECK(offsetof(cds_sl_mul_uint_cycle_struct, tNow) == off, "cds_sl_mul_uint_cycle_struct.tNow at %zu, expected %zu", offsetof(cds_sl_mul_uint_cycle_struct, tNow), off);
+      off += sizeof(uint32_t);
+      off = (off + sizeof(int32_t) - 1) / sizeof(int32_t) * sizeof(int32_t);
+      CHECK(offsetof(cds_sl_mul_uint_cycle_struct, cds_sl_mul_uint_cycle) == off, "cds_sl_mul_uint_cycle_struct return value at %zu, expected %zu", offsetof(cds_sl_mul_uint_cycle_struct, cds_sl_mul_uint_cycle), off); }
+    { size_t off = 0;
+      off = (off + sizeof(void *) - 1) / sizeof(void *) * sizeof(void *);
+      CHECK(offsetof(cds_sl_mul_dint_init_struct, pFb) == off, "cds_sl_mul_dint_init_struct.pFb at %zu, expected %zu", offsetof(cds_sl_mul_dint_init_struct, pFb), off);
+      off += sizeof(void *);
+      off = (off + sizeof(int32_t) - 1) / sizeof(int32_t) * sizeof(int32_t);
+      CHECK(offsetof(cds_sl_mul_dint_init_struct, cds_sl_mul_dint_init) == off, "cds_sl_mul_dint_init_struct return value at %zu, expected %zu", offsetof(cds_sl_mul_dint_init_struct, cds_sl_mul_dint_init), off); }
+    { size_t off = 0;
+      off = (off + sizeof(void *) - 1) / sizeof(void *) * sizeof(void *);
+      CHECK(offsetof(cds_sl_mul_dint_cycle_struct, pFb) == off, "cds_sl_mul_dint_cycle_struct.pFb at %zu, expected %zu", offsetof(cds_sl_mul_dint_cycle_struct, pFb), off);
+      off += sizeof(void *);
+      off = (off + sizeof(uint32_t) - 1) / sizeof(uint32_t) * sizeof(uint32_t);
+      CHECK(offsetof(cds_sl_mul_dint_cycle_struct, tNow) == off, "cds_sl_mul_dint_cycle_struct.tNow at %zu, expected %zu", offsetof(cds_sl_mul_dint_cycle_struct, tNow), off);
+      off += sizeof(uint32_t);
+      off = (off + sizeof(int32_t) - 1) / sizeof(int32_t) * sizeof(int32_t);
+      CHECK(offsetof(cds_sl_mul_dint_cycle_struct, cds_sl_mul_dint_cycle) == off, "cds_sl_mul_dint_cycle_struct return value at %zu, expected %zu", offsetof(cds_sl_mul_dint_cycle_struct, cds_sl_mul_dint_cycle), off); }
+    { size_t off = 0;
+      off = (off + sizeof(void *) - 1) / sizeof(void *) * sizeof(void *);
+      CHECK(offsetof(cds_sl_mul_udint_init_struct, pFb) == off, "cds_sl_mul_udint_init_struct.pFb at %zu, expected %zu", offsetof(cds_sl_mul_udint_init_struct, pFb), off);
+      off += sizeof(void *);
+      off = (off + sizeof(int32_t) - 1) / sizeof(int32_t) * sizeof(int32_t);
+      CHECK(offsetof(cds_sl_mul_udint_init_struct, cds_sl_mul_udint_init) == off, "cds_sl_mul_udint_init_struct return value at %zu, expected %zu", offsetof(cds_sl_mul_udint_init_struct, cds_sl_mul_udint_init), off); }
+    { size_t off = 0;
+      off = (off + sizeof(void *) - 1) / sizeof(void *) * sizeof(void *);
+      CHECK(offsetof(cds_sl_mul_udint_cycle_struct, pFb) == off, "cds_sl_mul_udint_cycle_struct.pFb at %zu, expected %zu", offsetof(cds_sl_mul_udint_cycle_struct, pFb), off);
+      off += sizeof(void *);
+      off = (off + sizeof(uint32_t) - 1) / sizeof(uint32_t) * sizeof(uint32_t);
+      CHECK(offsetof(cds_sl_mul_udint_cycle_struct, tNow) == off, "cds_sl_mul_udint_cycle_struct.tNow at %zu, expected %zu", offsetof(cds_sl_mul_udint_cycle_struct, tNow), off);
+      off += sizeof(uint32_t);
+      off = (off + sizeof(int32_t) - 1) / sizeof(int32_t) * sizeof(int32_t);
+      CHECK(offsetof(cds_sl_mul_udint_cycle_struct, cds_sl_mul_udint_cycle) == off, "cds_sl_mul_udint_cycle_struct return value at %zu, expected %zu", offsetof(cds_sl_mul_udint_cycle_struct, cds_sl_mul_udint_cycle), off); }
+    { size_t off = 0;
+      off = (off + sizeof(void *) - 1) / sizeof(void *) * sizeof(void *);
+      CHECK(offsetof(cds_sl_div_int_init_struct, pFb) == off, "cds_sl_div_int_init_struct.pFb at %zu, expected %zu", offsetof(cds_sl_div_int_init_struct, pFb), off);
+      off += sizeof(void *);
+      off = (off + sizeof(int32_t) - 1) / sizeof(int32_t) * sizeof(int32_t);
+      CHECK(offsetof(cds_sl_div_int_init_struct, cds_sl_div_int_init) == off, "cds_sl_div_int_init_struct return value at %zu, expected %zu", offsetof(cds_sl_div_int_init_struct, cds_sl_div_int_init), off); }
+    { size_t off = 0;
+      off = (off + sizeof(void *) - 1) / sizeof(void *) * sizeof(void *);
+      CHECK(offsetof(cds_sl_div_int_cycle_struct, pFb) == off, "cds_sl_div_int_cycle_struct.pFb at %zu, expected %zu", offsetof(cds_sl_div_int_cycle_struct, pFb), off);
+      off += sizeof(void *);
+      off = (off + sizeof(uint32_t) - 1) / sizeof(uint32_t) * sizeof(uint32_t);
+      CHECK(offsetof(cds_sl_div_int_cycle_struct, tNow) == off, "cds_sl_div_int_cycle_struct.tNow at %zu, expected %zu", offsetof(cds_sl_div_int_cycle_struct, tNow), off);
+      off += sizeof(uint32_t);
+      off = (off + sizeof(int32_t) - 1) / sizeof(int32_t) * sizeof(int32_t);
+      CHECK(offsetof(cds_sl_div_int_cycle_struct, cds_sl_div_int_cycle) == off, "cds_sl_div_int_cycle_struct return value at %zu, expected %zu", offsetof(cds_sl_div_int_cycle_struct, cds_sl_div_int_cycle), off); }
+    { size_t off = 0;
+      off = (off + sizeof(void *) - 1) / sizeof(void *) * sizeof(void *);
+      CHECK(offsetof(cds_sl_div_uint_init_struct, pFb) == off, "cds_sl_div_uint_init_struct.pFb at %zu, expected %zu", offsetof(cds_sl_div_uint_init_struct, pFb), off);
+      off += sizeof(void *);
+      off = (off + sizeof(int32_t) - 1) / sizeof(int32_t) * sizeof(int32_t);
+      CHECK(offsetof(cds_sl_div_uint_init_struct, cds_sl_div_uint_init) == off, "cds_sl_div_uint_init_struct return value at %zu, expected %zu", offsetof(cds_sl_div_uint_init_struct, cds_sl_div_uint_init), off); }
+    { size_t off = 0;
+      off = (off + sizeof(void *) - 1) / sizeof(void *) * sizeof(void *);
+      CHECK(offsetof(cds_sl_div_uint_cycle_struct, pFb) == off, "cds_sl_div_uint_cycle_struct.pFb at %zu, expected %zu", offsetof(cds_sl_div_uint_cycle_struct, pFb), off);
+      off += sizeof(void *);
+      off = (off + sizeof(uint32_t) - 1) / sizeof(uint32_t) * sizeof(uint32_t);
+      CHECK(offsetof(cds_sl_div_uint_cycle_struct, tNow) == off, "cds_sl_div_uint_cycle_struct.tNow at %zu, expected %zu", offsetof(cds_sl_div_uint_cycle_struct, tNow), off);
+      off += sizeof(uint32_t);
+      off = (off + sizeof(int32_t) - 1) / sizeof(int32_t) * sizeof(int32_t);
+      CHECK(offsetof(cds_sl_div_uint_cycle_struct, cds_sl_div_uint_cycle) == off, "cds_sl_div_uint_cycle_struct return value at %zu, expected %zu", offsetof(cds_sl_div_uint_cycle_struct, cds_sl_div_uint_cycle), off); }
+    { size_t off = 0;
+      off = (off + sizeof(void *) - 1) / sizeof(void *) * sizeof(void *);
+      CHECK(offsetof(cds_sl_div_dint_init_struct, pFb) == off, "cds_sl_div_dint_init_struct.pFb at %zu, expected %zu", offsetof(cds_sl_div_dint_init_struct, pFb), off);
+      off += sizeof(void *);
+      off = (off + sizeof(int32_t) - 1) / sizeof(int32_t) * sizeof(int32_t);
+      CHECK(offsetof(cds_sl_div_dint_init_struct, cds_sl_div_dint_init) == off, "cds_sl_div_dint_init_struct return value at %zu, expected %zu", offsetof(cds_sl_div_dint_init_struct, cds_sl_div_dint_init), off); }
+    { size_t off = 0;
+      off = (off + sizeof(void *) - 1) / sizeof(void *) * sizeof(void *);
+      CHECK(offsetof(cds_sl_div_dint_cycle_struct, pFb) == off, "cds_sl_div_dint_cycle_struct.pFb at %zu, expected %zu", offsetof(cds_sl_div_dint_cycle_struct, pFb), off);
+      off += sizeof(void *);
+      off = (off + sizeof(uint32_t) - 1) / sizeof(uint32_t) * sizeof(uint32_t);
+      CHECK(offsetof(cds_sl_div_dint_cycle_struct, tNow) == off, "cds_sl_div_dint_cycle_struct.tNow at %zu, expected %zu", offsetof(cds_sl_div_dint_cycle_struct, tNow), off);
+      off += sizeof(uint32_t);
+      off = (off + sizeof(int32_t) - 1) / sizeof(int32_t) * sizeof(int32_t);
+      CHECK(offsetof(cds_sl_div_dint_cycle_struct, cds_sl_div_dint_cycle) == off, "cds_sl_div_dint_cycle_struct return value at %zu, expected %zu", offsetof(cds_sl_div_dint_cycle_struct, cds_sl_div_dint_cycle), off); }
+    { size_t off = 0;
+      off = (off + sizeof(void *) - 1) / sizeof(void *) * sizeof(void *);
+      CHECK(offsetof(cds_sl_div_udint_init_struct, pFb) == off, "cds_sl_div_udint_init_struct.pFb at %zu, expected %zu", offsetof(cds_sl_div_udint_init_struct, pFb), off);
+      off += sizeof(void *);
+      off = (off + sizeof(int32_t) - 1) / sizeof(int32_t) * sizeof(int32_t);
+      CHECK(offsetof(cds_sl_div_udint_init_struct, cds_sl_div_udint_init) == off, "cds_sl_div_udint_init_struct return value at %zu, expected %zu", offsetof(cds_sl_div_udint_init_struct, cds_sl_div_udint_init), off); }
+    { size_t off = 0;
+      off = (off + sizeof(void *) - 1) / sizeof(void *) * sizeof(void *);
+      CHECK(offsetof(cds_sl_div_udint_cycle_struct, pFb) == off, "cds_sl_div_udint_cycle_struct.pFb at %zu, expected %zu", offsetof(cds_sl_div_udint_cycle_struct, pFb), off);
+      off += sizeof(void *);
+      off = (off + sizeof(uint32_t) - 1) / sizeof(uint32_t) * sizeof(uint32_t);
+      CHECK(offsetof(cds_sl_div_udint_cycle_struct, tNow) == off, "cds_sl_div_udint_cycle_struct.tNow at %zu, expected %zu", offsetof(cds_sl_div_udint_cycle_struct, tNow), off);
+      off += sizeof(uint32_t);
+      off = (off + sizeof(int32_t) - 1) / sizeof(int32_t) * sizeof(int32_t);
+      CHECK(offsetof(cds_sl_div_udint_cycle_struct, cds_sl_div_udint_cycle) == off, "cds_sl_div_udint_cycle_struct return value at %zu, expected %zu", offsetof(cds_sl_div_udint_cycle_struct, cds_sl_div_udint_cycle), off); }
+    { size_t off = 0;
       off = (off + sizeof(uint32_t) - 1) / sizeof(uint32_t) * sizeof(uint32_t);
       CHECK(offsetof(cds_sl_time_now_ms_struct, cds_sl_time_now_ms) == off, "cds_sl_time_now_ms_struct return value at %zu, expected %zu", offsetof(cds_sl_time_now_ms_struct, cds_sl_time_now_ms), off); }
 }
@@ -810,6 +1050,502 @@ static void test_tof(void)
     printf("FB_TOF: %d of 400 cycles returned SL_OK\n", ok);
 }
 
+static void test_add_int(void)
+{
+    static FB_ADD_INT a, b;
+    cds_sl_add_int_cycle_struct p;
+    int k, ok = 0;
+    memset(&a, 0, sizeof a);
+    memset(&b, 0, sizeof b);
+    memset(&p, 0, sizeof p);
+    p.pFb = NULL;
+    p.cds_sl_add_int_cycle = 12345;
+    cds_sl_add_int_cycle(&p);
+    CHECK(p.cds_sl_add_int_cycle == SL_E_NULL, "cds_sl_add_int_cycle(NULL) returned %d", (int)p.cds_sl_add_int_cycle);
+    a.bRun = b.bRun = 1;
+    a.wInputActive = b.wInputActive = 1;
+    { cds_sl_add_int_init_struct q; int32_t r; q.pFb = &a; cds_sl_add_int_init(&q); r = sl_add_int_init(&b);
+      CHECK(q.cds_sl_add_int_init == r && memcmp(&a, &b, sizeof a) == 0, "cds_sl_add_int_init differs from sl_add_int_init"); }
+    for (k = 0; k < 400; k++) {
+        int32_t direct;
+        unsigned r = rnd();
+        a.bErrAck = b.bErrAck = (uint8_t)((rnd() % 7u) != 0u);
+        p.pFb = &a;
+        p.tNow = (uint32_t)(k * 10u + (r % 5u));
+        cds_sl_add_int_cycle(&p);
+        direct = sl_add_int_cycle(&b, p.tNow);
+        CHECK(p.cds_sl_add_int_cycle == direct, "FB_ADD_INT cycle %d: adapter %d, direct %d", k, (int)p.cds_sl_add_int_cycle, (int)direct);
+        CHECK(memcmp(&a, &b, sizeof a) == 0, "FB_ADD_INT cycle %d: instances differ", k);
+        if (direct == SL_OK) ok++;
+    }
+    printf("FB_ADD_INT: %d of 400 cycles returned SL_OK\n", ok);
+}
+
+static void test_add_uint(void)
+{
+    static FB_ADD_UINT a, b;
+    cds_sl_add_uint_cycle_struct p;
+    int k, ok = 0;
+    memset(&a, 0, sizeof a);
+    memset(&b, 0, sizeof b);
+    memset(&p, 0, sizeof p);
+    p.pFb = NULL;
+    p.cds_sl_add_uint_cycle = 12345;
+    cds_sl_add_uint_cycle(&p);
+    CHECK(p.cds_sl_add_uint_cycle == SL_E_NULL, "cds_sl_add_uint_cycle(NULL) returned %d", (int)p.cds_sl_add_uint_cycle);
+    a.bRun = b.bRun = 1;
+    a.wInputActive = b.wInputActive = 1;
+    { cds_sl_add_uint_init_struct q; int32_t r; q.pFb = &a; cds_sl_add_uint_init(&q); r = sl_add_uint_init(&b);
+      CHECK(q.cds_sl_add_uint_init == r && memcmp(&a, &b, sizeof a) == 0, "cds_sl_add_uint_init differs from sl_add_uint_init"); }
+    for (k = 0; k < 400; k++) {
+        int32_t direct;
+        unsigned r = rnd();
+        a.bErrAck = b.bErrAck = (uint8_t)((rnd() % 7u) != 0u);
+        p.pFb = &a;
+        p.tNow = (uint32_t)(k * 10u + (r % 5u));
+        cds_sl_add_uint_cycle(&p);
+        direct = sl_add_uint_cycle(&b, p.tNow);
+        CHECK(p.cds_sl_add_uint_cycle == direct, "FB_ADD_UINT cycle %d: adapter %d, direct %d", k, (int)p.cds_sl_add_uint_cycle, (int)direct);
+        CHECK(memcmp(&a, &b, sizeof a) == 0, "FB_ADD_UINT cycle %d: instances differ", k);
+        if (direct == SL_OK) ok++;
+    }
+    printf("FB_ADD_UINT: %d of 400 cycles returned SL_OK\n", ok);
+}
+
+static void test_add_dint(void)
+{
+    static FB_ADD_DINT a, b;
+    cds_sl_add_dint_cycle_struct p;
+    int k, ok = 0;
+    memset(&a, 0, sizeof a);
+    memset(&b, 0, sizeof b);
+    memset(&p, 0, sizeof p);
+    p.pFb = NULL;
+    p.cds_sl_add_dint_cycle = 12345;
+    cds_sl_add_dint_cycle(&p);
+    CHECK(p.cds_sl_add_dint_cycle == SL_E_NULL, "cds_sl_add_dint_cycle(NULL) returned %d", (int)p.cds_sl_add_dint_cycle);
+    a.bRun = b.bRun = 1;
+    a.wInputActive = b.wInputActive = 1;
+    { cds_sl_add_dint_init_struct q; int32_t r; q.pFb = &a; cds_sl_add_dint_init(&q); r = sl_add_dint_init(&b);
+      CHECK(q.cds_sl_add_dint_init == r && memcmp(&a, &b, sizeof a) == 0, "cds_sl_add_dint_init differs from sl_add_dint_init"); }
+    for (k = 0; k < 400; k++) {
+        int32_t direct;
+        unsigned r = rnd();
+        a.bErrAck = b.bErrAck = (uint8_t)((rnd() % 7u) != 0u);
+        p.pFb = &a;
+        p.tNow = (uint32_t)(k * 10u + (r % 5u));
+        cds_sl_add_dint_cycle(&p);
+        direct = sl_add_dint_cycle(&b, p.tNow);
+        CHECK(p.cds_sl_add_dint_cycle == direct, "FB_ADD_DINT cycle %d: adapter %d, direct %d", k, (int)p.cds_sl_add_dint_cycle, (int)direct);
+        CHECK(memcmp(&a, &b, sizeof a) == 0, "FB_ADD_DINT cycle %d: instances differ", k);
+        if (direct == SL_OK) ok++;
+    }
+    printf("FB_ADD_DINT: %d of 400 cycles returned SL_OK\n", ok);
+}
+
+static void test_add_udint(void)
+{
+    static FB_ADD_UDINT a, b;
+    cds_sl_add_udint_cycle_struct p;
+    int k, ok = 0;
+    memset(&a, 0, sizeof a);
+    memset(&b, 0, sizeof b);
+    memset(&p, 0, sizeof p);
+    p.pFb = NULL;
+    p.cds_sl_add_udint_cycle = 12345;
+    cds_sl_add_udint_cycle(&p);
+    CHECK(p.cds_sl_add_udint_cycle == SL_E_NULL, "cds_sl_add_udint_cycle(NULL) returned %d", (int)p.cds_sl_add_udint_cycle);
+    a.bRun = b.bRun = 1;
+    a.wInputActive = b.wInputActive = 1;
+    { cds_sl_add_udint_init_struct q; int32_t r; q.pFb = &a; cds_sl_add_udint_init(&q); r = sl_add_udint_init(&b);
+      CHECK(q.cds_sl_add_udint_init == r && memcmp(&a, &b, sizeof a) == 0, "cds_sl_add_udint_init differs from sl_add_udint_init"); }
+    for (k = 0; k < 400; k++) {
+        int32_t direct;
+        unsigned r = rnd();
+        a.bErrAck = b.bErrAck = (uint8_t)((rnd() % 7u) != 0u);
+        p.pFb = &a;
+        p.tNow = (uint32_t)(k * 10u + (r % 5u));
+        cds_sl_add_udint_cycle(&p);
+        direct = sl_add_udint_cycle(&b, p.tNow);
+        CHECK(p.cds_sl_add_udint_cycle == direct, "FB_ADD_UDINT cycle %d: adapter %d, direct %d", k, (int)p.cds_sl_add_udint_cycle, (int)direct);
+        CHECK(memcmp(&a, &b, sizeof a) == 0, "FB_ADD_UDINT cycle %d: instances differ", k);
+        if (direct == SL_OK) ok++;
+    }
+    printf("FB_ADD_UDINT: %d of 400 cycles returned SL_OK\n", ok);
+}
+
+static void test_sub_int(void)
+{
+    static FB_SUB_INT a, b;
+    cds_sl_sub_int_cycle_struct p;
+    int k, ok = 0;
+    memset(&a, 0, sizeof a);
+    memset(&b, 0, sizeof b);
+    memset(&p, 0, sizeof p);
+    p.pFb = NULL;
+    p.cds_sl_sub_int_cycle = 12345;
+    cds_sl_sub_int_cycle(&p);
+    CHECK(p.cds_sl_sub_int_cycle == SL_E_NULL, "cds_sl_sub_int_cycle(NULL) returned %d", (int)p.cds_sl_sub_int_cycle);
+    a.bRun = b.bRun = 1;
+    a.wInputActive = b.wInputActive = 1;
+    { cds_sl_sub_int_init_struct q; int32_t r; q.pFb = &a; cds_sl_sub_int_init(&q); r = sl_sub_int_init(&b);
+      CHECK(q.cds_sl_sub_int_init == r && memcmp(&a, &b, sizeof a) == 0, "cds_sl_sub_int_init differs from sl_sub_int_init"); }
+    for (k = 0; k < 400; k++) {
+        int32_t direct;
+        unsigned r = rnd();
+        a.bErrAck = b.bErrAck = (uint8_t)((rnd() % 7u) != 0u);
+        p.pFb = &a;
+        p.tNow = (uint32_t)(k * 10u + (r % 5u));
+        cds_sl_sub_int_cycle(&p);
+        direct = sl_sub_int_cycle(&b, p.tNow);
+        CHECK(p.cds_sl_sub_int_cycle == direct, "FB_SUB_INT cycle %d: adapter %d, direct %d", k, (int)p.cds_sl_sub_int_cycle, (int)direct);
+        CHECK(memcmp(&a, &b, sizeof a) == 0, "FB_SUB_INT cycle %d: instances differ", k);
+        if (direct == SL_OK) ok++;
+    }
+    printf("FB_SUB_INT: %d of 400 cycles returned SL_OK\n", ok);
+}
+
+static void test_sub_uint(void)
+{
+    static FB_SUB_UINT a, b;
+    cds_sl_sub_uint_cycle_struct p;
+    int k, ok = 0;
+    memset(&a, 0, sizeof a);
+    memset(&b, 0, sizeof b);
+    memset(&p, 0, sizeof p);
+    p.pFb = NULL;
+    p.cds_sl_sub_uint_cycle = 12345;
+    cds_sl_sub_uint_cycle(&p);
+    CHECK(p.cds_sl_sub_uint_cycle == SL_E_NULL, "cds_sl_sub_uint_cycle(NULL) returned %d", (int)p.cds_sl_sub_uint_cycle);
+    a.bRun = b.bRun = 1;
+    a.wInputActive = b.wInputActive = 1;
+    { cds_sl_sub_uint_init_struct q; int32_t r; q.pFb = &a; cds_sl_sub_uint_init(&q); r = sl_sub_uint_init(&b);
+      CHECK(q.cds_sl_sub_uint_init == r && memcmp(&a, &b, sizeof a) == 0, "cds_sl_sub_uint_init differs from sl_sub_uint_init"); }
+    for (k = 0; k < 400; k++) {
+        int32_t direct;
+        unsigned r = rnd();
+        a.bErrAck = b.bErrAck = (uint8_t)((rnd() % 7u) != 0u);
+        p.pFb = &a;
+        p.tNow = (uint32_t)(k * 10u + (r % 5u));
+        cds_sl_sub_uint_cycle(&p);
+        direct = sl_sub_uint_cycle(&b, p.tNow);
+        CHECK(p.cds_sl_sub_uint_cycle == direct, "FB_SUB_UINT cycle %d: adapter %d, direct %d", k, (int)p.cds_sl_sub_uint_cycle, (int)direct);
+        CHECK(memcmp(&a, &b, sizeof a) == 0, "FB_SUB_UINT cycle %d: instances differ", k);
+        if (direct == SL_OK) ok++;
+    }
+    printf("FB_SUB_UINT: %d of 400 cycles returned SL_OK\n", ok);
+}
+
+static void test_sub_dint(void)
+{
+    static FB_SUB_DINT a, b;
+    cds_sl_sub_dint_cycle_struct p;
+    int k, ok = 0;
+    memset(&a, 0, sizeof a);
+    memset(&b, 0, sizeof b);
+    memset(&p, 0, sizeof p);
+    p.pFb = NULL;
+    p.cds_sl_sub_dint_cycle = 12345;
+    cds_sl_sub_dint_cycle(&p);
+    CHECK(p.cds_sl_sub_dint_cycle == SL_E_NULL, "cds_sl_sub_dint_cycle(NULL) returned %d", (int)p.cds_sl_sub_dint_cycle);
+    a.bRun = b.bRun = 1;
+    a.wInputActive = b.wInputActive = 1;
+    { cds_sl_sub_dint_init_struct q; int32_t r; q.pFb = &a; cds_sl_sub_dint_init(&q); r = sl_sub_dint_init(&b);
+      CHECK(q.cds_sl_sub_dint_init == r && memcmp(&a, &b, sizeof a) == 0, "cds_sl_sub_dint_init differs from sl_sub_dint_init"); }
+    for (k = 0; k < 400; k++) {
+        int32_t direct;
+        unsigned r = rnd();
+        a.bErrAck = b.bErrAck = (uint8_t)((rnd() % 7u) != 0u);
+        p.pFb = &a;
+        p.tNow = (uint32_t)(k * 10u + (r % 5u));
+        cds_sl_sub_dint_cycle(&p);
+        direct = sl_sub_dint_cycle(&b, p.tNow);
+        CHECK(p.cds_sl_sub_dint_cycle == direct, "FB_SUB_DINT cycle %d: adapter %d, direct %d", k, (int)p.cds_sl_sub_dint_cycle, (int)direct);
+        CHECK(memcmp(&a, &b, sizeof a) == 0, "FB_SUB_DINT cycle %d: instances differ", k);
+        if (direct == SL_OK) ok++;
+    }
+    printf("FB_SUB_DINT: %d of 400 cycles returned SL_OK\n", ok);
+}
+
+static void test_sub_udint(void)
+{
+    static FB_SUB_UDINT a, b;
+    cds_sl_sub_udint_cycle_struct p;
+    int k, ok = 0;
+    memset(&a, 0, sizeof a);
+    memset(&b, 0, sizeof b);
+    memset(&p, 0, sizeof p);
+    p.pFb = NULL;
+    p.cds_sl_sub_udint_cycle = 12345;
+    cds_sl_sub_udint_cycle(&p);
+    CHECK(p.cds_sl_sub_udint_cycle == SL_E_NULL, "cds_sl_sub_udint_cycle(NULL) returned %d", (int)p.cds_sl_sub_udint_cycle);
+    a.bRun = b.bRun = 1;
+    a.wInputActive = b.wInputActive = 1;
+    { cds_sl_sub_udint_init_struct q; int32_t r; q.pFb = &a; cds_sl_sub_udint_init(&q); r = sl_sub_udint_init(&b);
+      CHECK(q.cds_sl_sub_udint_init == r && memcmp(&a, &b, sizeof a) == 0, "cds_sl_sub_udint_init differs from sl_sub_udint_init"); }
+    for (k = 0; k < 400; k++) {
+        int32_t direct;
+        unsigned r = rnd();
+        a.bErrAck = b.bErrAck = (uint8_t)((rnd() % 7u) != 0u);
+        p.pFb = &a;
+        p.tNow = (uint32_t)(k * 10u + (r % 5u));
+        cds_sl_sub_udint_cycle(&p);
+        direct = sl_sub_udint_cycle(&b, p.tNow);
+        CHECK(p.cds_sl_sub_udint_cycle == direct, "FB_SUB_UDINT cycle %d: adapter %d, direct %d", k, (int)p.cds_sl_sub_udint_cycle, (int)direct);
+        CHECK(memcmp(&a, &b, sizeof a) == 0, "FB_SUB_UDINT cycle %d: instances differ", k);
+        if (direct == SL_OK) ok++;
+    }
+    printf("FB_SUB_UDINT: %d of 400 cycles returned SL_OK\n", ok);
+}
+
+static void test_mul_int(void)
+{
+    static FB_MUL_INT a, b;
+    cds_sl_mul_int_cycle_struct p;
+    int k, ok = 0;
+    memset(&a, 0, sizeof a);
+    memset(&b, 0, sizeof b);
+    memset(&p, 0, sizeof p);
+    p.pFb = NULL;
+    p.cds_sl_mul_int_cycle = 12345;
+    cds_sl_mul_int_cycle(&p);
+    CHECK(p.cds_sl_mul_int_cycle == SL_E_NULL, "cds_sl_mul_int_cycle(NULL) returned %d", (int)p.cds_sl_mul_int_cycle);
+    a.bRun = b.bRun = 1;
+    a.wInputActive = b.wInputActive = 1;
+    { cds_sl_mul_int_init_struct q; int32_t r; q.pFb = &a; cds_sl_mul_int_init(&q); r = sl_mul_int_init(&b);
+      CHECK(q.cds_sl_mul_int_init == r && memcmp(&a, &b, sizeof a) == 0, "cds_sl_mul_int_init differs from sl_mul_int_init"); }
+    for (k = 0; k < 400; k++) {
+        int32_t direct;
+        unsigned r = rnd();
+        a.bErrAck = b.bErrAck = (uint8_t)((rnd() % 7u) != 0u);
+        p.pFb = &a;
+        p.tNow = (uint32_t)(k * 10u + (r % 5u));
+        cds_sl_mul_int_cycle(&p);
+        direct = sl_mul_int_cycle(&b, p.tNow);
+        CHECK(p.cds_sl_mul_int_cycle == direct, "FB_MUL_INT cycle %d: adapter %d, direct %d", k, (int)p.cds_sl_mul_int_cycle, (int)direct);
+        CHECK(memcmp(&a, &b, sizeof a) == 0, "FB_MUL_INT cycle %d: instances differ", k);
+        if (direct == SL_OK) ok++;
+    }
+    printf("FB_MUL_INT: %d of 400 cycles returned SL_OK\n", ok);
+}
+
+static void test_mul_uint(void)
+{
+    static FB_MUL_UINT a, b;
+    cds_sl_mul_uint_cycle_struct p;
+    int k, ok = 0;
+    memset(&a, 0, sizeof a);
+    memset(&b, 0, sizeof b);
+    memset(&p, 0, sizeof p);
+    p.pFb = NULL;
+    p.cds_sl_mul_uint_cycle = 12345;
+    cds_sl_mul_uint_cycle(&p);
+    CHECK(p.cds_sl_mul_uint_cycle == SL_E_NULL, "cds_sl_mul_uint_cycle(NULL) returned %d", (int)p.cds_sl_mul_uint_cycle);
+    a.bRun = b.bRun = 1;
+    a.wInputActive = b.wInputActive = 1;
+    { cds_sl_mul_uint_init_struct q; int32_t r; q.pFb = &a; cds_sl_mul_uint_init(&q); r = sl_mul_uint_init(&b);
+      CHECK(q.cds_sl_mul_uint_init == r && memcmp(&a, &b, sizeof a) == 0, "cds_sl_mul_uint_init differs from sl_mul_uint_init"); }
+    for (k = 0; k < 400; k++) {
+        int32_t direct;
+        unsigned r = rnd();
+        a.bErrAck = b.bErrAck = (uint8_t)((rnd() % 7u) != 0u);
+        p.pFb = &a;
+        p.tNow = (uint32_t)(k * 10u + (r % 5u));
+        cds_sl_mul_uint_cycle(&p);
+        direct = sl_mul_uint_cycle(&b, p.tNow);
+        CHECK(p.cds_sl_mul_uint_cycle == direct, "FB_MUL_UINT cycle %d: adapter %d, direct %d", k, (int)p.cds_sl_mul_uint_cycle, (int)direct);
+        CHECK(memcmp(&a, &b, sizeof a) == 0, "FB_MUL_UINT cycle %d: instances differ", k);
+        if (direct == SL_OK) ok++;
+    }
+    printf("FB_MUL_UINT: %d of 400 cycles returned SL_OK\n", ok);
+}
+
+static void test_mul_dint(void)
+{
+    static FB_MUL_DINT a, b;
+    cds_sl_mul_dint_cycle_struct p;
+    int k, ok = 0;
+    memset(&a, 0, sizeof a);
+    memset(&b, 0, sizeof b);
+    memset(&p, 0, sizeof p);
+    p.pFb = NULL;
+    p.cds_sl_mul_dint_cycle = 12345;
+    cds_sl_mul_dint_cycle(&p);
+    CHECK(p.cds_sl_mul_dint_cycle == SL_E_NULL, "cds_sl_mul_dint_cycle(NULL) returned %d", (int)p.cds_sl_mul_dint_cycle);
+    a.bRun = b.bRun = 1;
+    a.wInputActive = b.wInputActive = 1;
+    { cds_sl_mul_dint_init_struct q; int32_t r; q.pFb = &a; cds_sl_mul_dint_init(&q); r = sl_mul_dint_init(&b);
+      CHECK(q.cds_sl_mul_dint_init == r && memcmp(&a, &b, sizeof a) == 0, "cds_sl_mul_dint_init differs from sl_mul_dint_init"); }
+    for (k = 0; k < 400; k++) {
+        int32_t direct;
+        unsigned r = rnd();
+        a.bErrAck = b.bErrAck = (uint8_t)((rnd() % 7u) != 0u);
+        p.pFb = &a;
+        p.tNow = (uint32_t)(k * 10u + (r % 5u));
+        cds_sl_mul_dint_cycle(&p);
+        direct = sl_mul_dint_cycle(&b, p.tNow);
+        CHECK(p.cds_sl_mul_dint_cycle == direct, "FB_MUL_DINT cycle %d: adapter %d, direct %d", k, (int)p.cds_sl_mul_dint_cycle, (int)direct);
+        CHECK(memcmp(&a, &b, sizeof a) == 0, "FB_MUL_DINT cycle %d: instances differ", k);
+        if (direct == SL_OK) ok++;
+    }
+    printf("FB_MUL_DINT: %d of 400 cycles returned SL_OK\n", ok);
+}
+
+static void test_mul_udint(void)
+{
+    static FB_MUL_UDINT a, b;
+    cds_sl_mul_udint_cycle_struct p;
+    int k, ok = 0;
+    memset(&a, 0, sizeof a);
+    memset(&b, 0, sizeof b);
+    memset(&p, 0, sizeof p);
+    p.pFb = NULL;
+    p.cds_sl_mul_udint_cycle = 12345;
+    cds_sl_mul_udint_cycle(&p);
+    CHECK(p.cds_sl_mul_udint_cycle == SL_E_NULL, "cds_sl_mul_udint_cycle(NULL) returned %d", (int)p.cds_sl_mul_udint_cycle);
+    a.bRun = b.bRun = 1;
+    a.wInputActive = b.wInputActive = 1;
+    { cds_sl_mul_udint_init_struct q; int32_t r; q.pFb = &a; cds_sl_mul_udint_init(&q); r = sl_mul_udint_init(&b);
+      CHECK(q.cds_sl_mul_udint_init == r && memcmp(&a, &b, sizeof a) == 0, "cds_sl_mul_udint_init differs from sl_mul_udint_init"); }
+    for (k = 0; k < 400; k++) {
+        int32_t direct;
+        unsigned r = rnd();
+        a.bErrAck = b.bErrAck = (uint8_t)((rnd() % 7u) != 0u);
+        p.pFb = &a;
+        p.tNow = (uint32_t)(k * 10u + (r % 5u));
+        cds_sl_mul_udint_cycle(&p);
+        direct = sl_mul_udint_cycle(&b, p.tNow);
+        CHECK(p.cds_sl_mul_udint_cycle == direct, "FB_MUL_UDINT cycle %d: adapter %d, direct %d", k, (int)p.cds_sl_mul_udint_cycle, (int)direct);
+        CHECK(memcmp(&a, &b, sizeof a) == 0, "FB_MUL_UDINT cycle %d: instances differ", k);
+        if (direct == SL_OK) ok++;
+    }
+    printf("FB_MUL_UDINT: %d of 400 cycles returned SL_OK\n", ok);
+}
+
+static void test_div_int(void)
+{
+    static FB_DIV_INT a, b;
+    cds_sl_div_int_cycle_struct p;
+    int k, ok = 0;
+    memset(&a, 0, sizeof a);
+    memset(&b, 0, sizeof b);
+    memset(&p, 0, sizeof p);
+    p.pFb = NULL;
+    p.cds_sl_div_int_cycle = 12345;
+    cds_sl_div_int_cycle(&p);
+    CHECK(p.cds_sl_div_int_cycle == SL_E_NULL, "cds_sl_div_int_cycle(NULL) returned %d", (int)p.cds_sl_div_int_cycle);
+    a.bRun = b.bRun = 1;
+    a.wInputActive = b.wInputActive = 1;
+    { cds_sl_div_int_init_struct q; int32_t r; q.pFb = &a; cds_sl_div_int_init(&q); r = sl_div_int_init(&b);
+      CHECK(q.cds_sl_div_int_init == r && memcmp(&a, &b, sizeof a) == 0, "cds_sl_div_int_init differs from sl_div_int_init"); }
+    for (k = 0; k < 400; k++) {
+        int32_t direct;
+        unsigned r = rnd();
+        a.bErrAck = b.bErrAck = (uint8_t)((rnd() % 7u) != 0u);
+        p.pFb = &a;
+        p.tNow = (uint32_t)(k * 10u + (r % 5u));
+        cds_sl_div_int_cycle(&p);
+        direct = sl_div_int_cycle(&b, p.tNow);
+        CHECK(p.cds_sl_div_int_cycle == direct, "FB_DIV_INT cycle %d: adapter %d, direct %d", k, (int)p.cds_sl_div_int_cycle, (int)direct);
+        CHECK(memcmp(&a, &b, sizeof a) == 0, "FB_DIV_INT cycle %d: instances differ", k);
+        if (direct == SL_OK) ok++;
+    }
+    printf("FB_DIV_INT: %d of 400 cycles returned SL_OK\n", ok);
+}
+
+static void test_div_uint(void)
+{
+    static FB_DIV_UINT a, b;
+    cds_sl_div_uint_cycle_struct p;
+    int k, ok = 0;
+    memset(&a, 0, sizeof a);
+    memset(&b, 0, sizeof b);
+    memset(&p, 0, sizeof p);
+    p.pFb = NULL;
+    p.cds_sl_div_uint_cycle = 12345;
+    cds_sl_div_uint_cycle(&p);
+    CHECK(p.cds_sl_div_uint_cycle == SL_E_NULL, "cds_sl_div_uint_cycle(NULL) returned %d", (int)p.cds_sl_div_uint_cycle);
+    a.bRun = b.bRun = 1;
+    a.wInputActive = b.wInputActive = 1;
+    { cds_sl_div_uint_init_struct q; int32_t r; q.pFb = &a; cds_sl_div_uint_init(&q); r = sl_div_uint_init(&b);
+      CHECK(q.cds_sl_div_uint_init == r && memcmp(&a, &b, sizeof a) == 0, "cds_sl_div_uint_init differs from sl_div_uint_init"); }
+    for (k = 0; k < 400; k++) {
+        int32_t direct;
+        unsigned r = rnd();
+        a.bErrAck = b.bErrAck = (uint8_t)((rnd() % 7u) != 0u);
+        p.pFb = &a;
+        p.tNow = (uint32_t)(k * 10u + (r % 5u));
+        cds_sl_div_uint_cycle(&p);
+        direct = sl_div_uint_cycle(&b, p.tNow);
+        CHECK(p.cds_sl_div_uint_cycle == direct, "FB_DIV_UINT cycle %d: adapter %d, direct %d", k, (int)p.cds_sl_div_uint_cycle, (int)direct);
+        CHECK(memcmp(&a, &b, sizeof a) == 0, "FB_DIV_UINT cycle %d: instances differ", k);
+        if (direct == SL_OK) ok++;
+    }
+    printf("FB_DIV_UINT: %d of 400 cycles returned SL_OK\n", ok);
+}
+
+static void test_div_dint(void)
+{
+    static FB_DIV_DINT a, b;
+    cds_sl_div_dint_cycle_struct p;
+    int k, ok = 0;
+    memset(&a, 0, sizeof a);
+    memset(&b, 0, sizeof b);
+    memset(&p, 0, sizeof p);
+    p.pFb = NULL;
+    p.cds_sl_div_dint_cycle = 12345;
+    cds_sl_div_dint_cycle(&p);
+    CHECK(p.cds_sl_div_dint_cycle == SL_E_NULL, "cds_sl_div_dint_cycle(NULL) returned %d", (int)p.cds_sl_div_dint_cycle);
+    a.bRun = b.bRun = 1;
+    a.wInputActive = b.wInputActive = 1;
+    { cds_sl_div_dint_init_struct q; int32_t r; q.pFb = &a; cds_sl_div_dint_init(&q); r = sl_div_dint_init(&b);
+      CHECK(q.cds_sl_div_dint_init == r && memcmp(&a, &b, sizeof a) == 0, "cds_sl_div_dint_init differs from sl_div_dint_init"); }
+    for (k = 0; k < 400; k++) {
+        int32_t direct;
+        unsigned r = rnd();
+        a.bErrAck = b.bErrAck = (uint8_t)((rnd() % 7u) != 0u);
+        p.pFb = &a;
+        p.tNow = (uint32_t)(k * 10u + (r % 5u));
+        cds_sl_div_dint_cycle(&p);
+        direct = sl_div_dint_cycle(&b, p.tNow);
+        CHECK(p.cds_sl_div_dint_cycle == direct, "FB_DIV_DINT cycle %d: adapter %d, direct %d", k, (int)p.cds_sl_div_dint_cycle, (int)direct);
+        CHECK(memcmp(&a, &b, sizeof a) == 0, "FB_DIV_DINT cycle %d: instances differ", k);
+        if (direct == SL_OK) ok++;
+    }
+    printf("FB_DIV_DINT: %d of 400 cycles returned SL_OK\n", ok);
+}
+
+static void test_div_udint(void)
+{
+    static FB_DIV_UDINT a, b;
+    cds_sl_div_udint_cycle_struct p;
+    int k, ok = 0;
+    memset(&a, 0, sizeof a);
+    memset(&b, 0, sizeof b);
+    memset(&p, 0, sizeof p);
+    p.pFb = NULL;
+    p.cds_sl_div_udint_cycle = 12345;
+    cds_sl_div_udint_cycle(&p);
+    CHECK(p.cds_sl_div_udint_cycle == SL_E_NULL, "cds_sl_div_udint_cycle(NULL) returned %d", (int)p.cds_sl_div_udint_cycle);
+    a.bRun = b.bRun = 1;
+    a.wInputActive = b.wInputActive = 1;
+    { cds_sl_div_udint_init_struct q; int32_t r; q.pFb = &a; cds_sl_div_udint_init(&q); r = sl_div_udint_init(&b);
+      CHECK(q.cds_sl_div_udint_init == r && memcmp(&a, &b, sizeof a) == 0, "cds_sl_div_udint_init differs from sl_div_udint_init"); }
+    for (k = 0; k < 400; k++) {
+        int32_t direct;
+        unsigned r = rnd();
+        a.bErrAck = b.bErrAck = (uint8_t)((rnd() % 7u) != 0u);
+        p.pFb = &a;
+        p.tNow = (uint32_t)(k * 10u + (r % 5u));
+        cds_sl_div_udint_cycle(&p);
+        direct = sl_div_udint_cycle(&b, p.tNow);
+        CHECK(p.cds_sl_div_udint_cycle == direct, "FB_DIV_UDINT cycle %d: adapter %d, direct %d", k, (int)p.cds_sl_div_udint_cycle, (int)direct);
+        CHECK(memcmp(&a, &b, sizeof a) == 0, "FB_DIV_UDINT cycle %d: instances differ", k);
+        if (direct == SL_OK) ok++;
+    }
+    printf("FB_DIV_UDINT: %d of 400 cycles returned SL_OK\n", ok);
+}
+
 int main(void)
 {
     test_param_structs();
@@ -828,6 +1564,22 @@ int main(void)
     test_sr();
     test_ton();
     test_tof();
+    test_add_int();
+    test_add_uint();
+    test_add_dint();
+    test_add_udint();
+    test_sub_int();
+    test_sub_uint();
+    test_sub_dint();
+    test_sub_udint();
+    test_mul_int();
+    test_mul_uint();
+    test_mul_dint();
+    test_mul_udint();
+    test_div_int();
+    test_div_uint();
+    test_div_dint();
+    test_div_udint();
     { cds_sl_time_now_ms_struct q; uint32_t t0 = sl_time_now_ms(); cds_sl_time_now_ms(&q);
       CHECK((uint32_t)(q.cds_sl_time_now_ms - t0) < 1000u, "cds_sl_time_now_ms = %u, sl_time_now_ms = %u", (unsigned)q.cds_sl_time_now_ms, (unsigned)t0); }
     cds_sl_ton2_cycle(NULL); /* a NULL parameter struct must not crash */

@@ -250,6 +250,262 @@ void CDECL CDECL_EXT cds_sl_tof_cycle(cds_sl_tof_cycle_struct *p)
     p->cds_sl_tof_cycle = sl_tof_cycle(p->pFb, p->tNow);
 }
 
+void CDECL CDECL_EXT cds_sl_add_int_init(cds_sl_add_int_init_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_add_int_init = sl_add_int_init(p->pFb);
+}
+
+void CDECL CDECL_EXT cds_sl_add_int_cycle(cds_sl_add_int_cycle_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_add_int_cycle = sl_add_int_cycle(p->pFb, p->tNow);
+}
+
+void CDECL CDECL_EXT cds_sl_add_uint_init(cds_sl_add_uint_init_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_add_uint_init = sl_add_uint_init(p->pFb);
+}
+
+void CDECL CDECL_EXT cds_sl_add_uint_cycle(cds_sl_add_uint_cycle_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_add_uint_cycle = sl_add_uint_cycle(p->pFb, p->tNow);
+}
+
+void CDECL CDECL_EXT cds_sl_add_dint_init(cds_sl_add_dint_init_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_add_dint_init = sl_add_dint_init(p->pFb);
+}
+
+void CDECL CDECL_EXT cds_sl_add_dint_cycle(cds_sl_add_dint_cycle_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_add_dint_cycle = sl_add_dint_cycle(p->pFb, p->tNow);
+}
+
+void CDECL CDECL_EXT cds_sl_add_udint_init(cds_sl_add_udint_init_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_add_udint_init = sl_add_udint_init(p->pFb);
+}
+
+void CDECL CDECL_EXT cds_sl_add_udint_cycle(cds_sl_add_udint_cycle_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_add_udint_cycle = sl_add_udint_cycle(p->pFb, p->tNow);
+}
+
+void CDECL CDECL_EXT cds_sl_sub_int_init(cds_sl_sub_int_init_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_sub_int_init = sl_sub_int_init(p->pFb);
+}
+
+void CDECL CDECL_EXT cds_sl_sub_int_cycle(cds_sl_sub_int_cycle_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_sub_int_cycle = sl_sub_int_cycle(p->pFb, p->tNow);
+}
+
+void CDECL CDECL_EXT cds_sl_sub_uint_init(cds_sl_sub_uint_init_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_sub_uint_init = sl_sub_uint_init(p->pFb);
+}
+
+void CDECL CDECL_EXT cds_sl_sub_uint_cycle(cds_sl_sub_uint_cycle_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_sub_uint_cycle = sl_sub_uint_cycle(p->pFb, p->tNow);
+}
+
+void CDECL CDECL_EXT cds_sl_sub_dint_init(cds_sl_sub_dint_init_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_sub_dint_init = sl_sub_dint_init(p->pFb);
+}
+
+void CDECL CDECL_EXT cds_sl_sub_dint_cycle(cds_sl_sub_dint_cycle_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_sub_dint_cycle = sl_sub_dint_cycle(p->pFb, p->tNow);
+}
+
+void CDECL CDECL_EXT cds_sl_sub_udint_init(cds_sl_sub_udint_init_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_sub_udint_init = sl_sub_udint_init(p->pFb);
+}
+
+void CDECL CDECL_EXT cds_sl_sub_udint_cycle(cds_sl_sub_udint_cycle_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_sub_udint_cycle = sl_sub_udint_cycle(p->pFb, p->tNow);
+}
+
+void CDECL CDECL_EXT cds_sl_mul_int_init(cds_sl_mul_int_init_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_mul_int_init = sl_mul_int_init(p->pFb);
+}
+
+void CDECL CDECL_EXT cds_sl_mul_int_cycle(cds_sl_mul_int_cycle_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_mul_int_cycle = sl_mul_int_cycle(p->pFb, p->tNow);
+}
+
+void CDECL CDECL_EXT cds_sl_mul_uint_init(cds_sl_mul_uint_init_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_mul_uint_init = sl_mul_uint_init(p->pFb);
+}
+
+void CDECL CDECL_EXT cds_sl_mul_uint_cycle(cds_sl_mul_uint_cycle_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_mul_uint_cycle = sl_mul_uint_cycle(p->pFb, p->tNow);
+}
+
+void CDECL CDECL_EXT cds_sl_mul_dint_init(cds_sl_mul_dint_init_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_mul_dint_init = sl_mul_dint_init(p->pFb);
+}
+
+void CDECL CDECL_EXT cds_sl_mul_dint_cycle(cds_sl_mul_dint_cycle_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_mul_dint_cycle = sl_mul_dint_cycle(p->pFb, p->tNow);
+}
+
+void CDECL CDECL_EXT cds_sl_mul_udint_init(cds_sl_mul_udint_init_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_mul_udint_init = sl_mul_udint_init(p->pFb);
+}
+
+void CDECL CDECL_EXT cds_sl_mul_udint_cycle(cds_sl_mul_udint_cycle_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_mul_udint_cycle = sl_mul_udint_cycle(p->pFb, p->tNow);
+}
+
+void CDECL CDECL_EXT cds_sl_div_int_init(cds_sl_div_int_init_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_div_int_init = sl_div_int_init(p->pFb);
+}
+
+void CDECL CDECL_EXT cds_sl_div_int_cycle(cds_sl_div_int_cycle_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_div_int_cycle = sl_div_int_cycle(p->pFb, p->tNow);
+}
+
+void CDECL CDECL_EXT cds_sl_div_uint_init(cds_sl_div_uint_init_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_div_uint_init = sl_div_uint_init(p->pFb);
+}
+
+void CDECL CDECL_EXT cds_sl_div_uint_cycle(cds_sl_div_uint_cycle_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_div_uint_cycle = sl_div_uint_cycle(p->pFb, p->tNow);
+}
+
+void CDECL CDECL_EXT cds_sl_div_dint_init(cds_sl_div_dint_init_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_div_dint_init = sl_div_dint_init(p->pFb);
+}
+
+void CDECL CDECL_EXT cds_sl_div_dint_cycle(cds_sl_div_dint_cycle_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_div_dint_cycle = sl_div_dint_cycle(p->pFb, p->tNow);
+}
+
+void CDECL CDECL_EXT cds_sl_div_udint_init(cds_sl_div_udint_init_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_div_udint_init = sl_div_udint_init(p->pFb);
+}
+
+void CDECL CDECL_EXT cds_sl_div_udint_cycle(cds_sl_div_udint_cycle_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_div_udint_cycle = sl_div_udint_cycle(p->pFb, p->tNow);
+}
+
 void CDECL CDECL_EXT cds_sl_time_now_ms(cds_sl_time_now_ms_struct *p)
 {
     if (p == 0) {

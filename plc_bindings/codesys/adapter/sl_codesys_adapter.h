@@ -259,6 +259,246 @@ typedef struct tagcds_sl_tof_cycle_struct {
 } cds_sl_tof_cycle_struct;
 void CDECL CDECL_EXT cds_sl_tof_cycle(cds_sl_tof_cycle_struct *p);
 
+/* FUNCTION cds_sl_add_int_init : DINT -> sl_add_int_init() */
+typedef struct tagcds_sl_add_int_init_struct {
+    struct FB_ADD_INT *pFb; /* VAR_INPUT pFb : POINTER TO ST_FB_ADD_INT */
+    int32_t cds_sl_add_int_init; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_add_int_init_struct;
+void CDECL CDECL_EXT cds_sl_add_int_init(cds_sl_add_int_init_struct *p);
+
+/* FUNCTION cds_sl_add_int_cycle : DINT -> sl_add_int_cycle() */
+typedef struct tagcds_sl_add_int_cycle_struct {
+    struct FB_ADD_INT *pFb; /* VAR_INPUT pFb : POINTER TO ST_FB_ADD_INT */
+    uint32_t tNow; /* VAR_INPUT tNow : UDINT */
+    int32_t cds_sl_add_int_cycle; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_add_int_cycle_struct;
+void CDECL CDECL_EXT cds_sl_add_int_cycle(cds_sl_add_int_cycle_struct *p);
+
+/* FUNCTION cds_sl_add_uint_init : DINT -> sl_add_uint_init() */
+typedef struct tagcds_sl_add_uint_init_struct {
+    struct FB_ADD_UINT *pFb; /* VAR_INPUT pFb : POINTER TO ST_FB_ADD_UINT */
+    int32_t cds_sl_add_uint_init; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_add_uint_init_struct;
+void CDECL CDECL_EXT cds_sl_add_uint_init(cds_sl_add_uint_init_struct *p);
+
+/* FUNCTION cds_sl_add_uint_cycle : DINT -> sl_add_uint_cycle() */
+typedef struct tagcds_sl_add_uint_cycle_struct {
+    struct FB_ADD_UINT *pFb; /* VAR_INPUT pFb : POINTER TO ST_FB_ADD_UINT */
+    uint32_t tNow; /* VAR_INPUT tNow : UDINT */
+    int32_t cds_sl_add_uint_cycle; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_add_uint_cycle_struct;
+void CDECL CDECL_EXT cds_sl_add_uint_cycle(cds_sl_add_uint_cycle_struct *p);
+
+/* FUNCTION cds_sl_add_dint_init : DINT -> sl_add_dint_init() */
+typedef struct tagcds_sl_add_dint_init_struct {
+    struct FB_ADD_DINT *pFb; /* VAR_INPUT pFb : POINTER TO ST_FB_ADD_DINT */
+    int32_t cds_sl_add_dint_init; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_add_dint_init_struct;
+void CDECL CDECL_EXT cds_sl_add_dint_init(cds_sl_add_dint_init_struct *p);
+
+/* FUNCTION cds_sl_add_dint_cycle : DINT -> sl_add_dint_cycle() */
+typedef struct tagcds_sl_add_dint_cycle_struct {
+    struct FB_ADD_DINT *pFb; /* VAR_INPUT pFb : POINTER TO ST_FB_ADD_DINT */
+    uint32_t tNow; /* VAR_INPUT tNow : UDINT */
+    int32_t cds_sl_add_dint_cycle; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_add_dint_cycle_struct;
+void CDECL CDECL_EXT cds_sl_add_dint_cycle(cds_sl_add_dint_cycle_struct *p);
+
+/* FUNCTION cds_sl_add_udint_init : DINT -> sl_add_udint_init() */
+typedef struct tagcds_sl_add_udint_init_struct {
+    struct FB_ADD_UDINT *pFb; /* VAR_INPUT pFb : POINTER TO ST_FB_ADD_UDINT */
+    int32_t cds_sl_add_udint_init; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_add_udint_init_struct;
+void CDECL CDECL_EXT cds_sl_add_udint_init(cds_sl_add_udint_init_struct *p);
+
+/* FUNCTION cds_sl_add_udint_cycle : DINT -> sl_add_udint_cycle() */
+typedef struct tagcds_sl_add_udint_cycle_struct {
+    struct FB_ADD_UDINT *pFb; /* VAR_INPUT pFb : POINTER TO ST_FB_ADD_UDINT */
+    uint32_t tNow; /* VAR_INPUT tNow : UDINT */
+    int32_t cds_sl_add_udint_cycle; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_add_udint_cycle_struct;
+void CDECL CDECL_EXT cds_sl_add_udint_cycle(cds_sl_add_udint_cycle_struct *p);
+
+/* FUNCTION cds_sl_sub_int_init : DINT -> sl_sub_int_init() */
+typedef struct tagcds_sl_sub_int_init_struct {
+    struct FB_SUB_INT *pFb; /* VAR_INPUT pFb : POINTER TO ST_FB_SUB_INT */
+    int32_t cds_sl_sub_int_init; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_sub_int_init_struct;
+void CDECL CDECL_EXT cds_sl_sub_int_init(cds_sl_sub_int_init_struct *p);
+
+/* FUNCTION cds_sl_sub_int_cycle : DINT -> sl_sub_int_cycle() */
+typedef struct tagcds_sl_sub_int_cycle_struct {
+    struct FB_SUB_INT *pFb; /* VAR_INPUT pFb : POINTER TO ST_FB_SUB_INT */
+    uint32_t tNow; /* VAR_INPUT tNow : UDINT */
+    int32_t cds_sl_sub_int_cycle; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_sub_int_cycle_struct;
+void CDECL CDECL_EXT cds_sl_sub_int_cycle(cds_sl_sub_int_cycle_struct *p);
+
+/* FUNCTION cds_sl_sub_uint_init : DINT -> sl_sub_uint_init() */
+typedef struct tagcds_sl_sub_uint_init_struct {
+    struct FB_SUB_UINT *pFb; /* VAR_INPUT pFb : POINTER TO ST_FB_SUB_UINT */
+    int32_t cds_sl_sub_uint_init; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_sub_uint_init_struct;
+void CDECL CDECL_EXT cds_sl_sub_uint_init(cds_sl_sub_uint_init_struct *p);
+
+/* FUNCTION cds_sl_sub_uint_cycle : DINT -> sl_sub_uint_cycle() */
+typedef struct tagcds_sl_sub_uint_cycle_struct {
+    struct FB_SUB_UINT *pFb; /* VAR_INPUT pFb : POINTER TO ST_FB_SUB_UINT */
+    uint32_t tNow; /* VAR_INPUT tNow : UDINT */
+    int32_t cds_sl_sub_uint_cycle; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_sub_uint_cycle_struct;
+void CDECL CDECL_EXT cds_sl_sub_uint_cycle(cds_sl_sub_uint_cycle_struct *p);
+
+/* FUNCTION cds_sl_sub_dint_init : DINT -> sl_sub_dint_init() */
+typedef struct tagcds_sl_sub_dint_init_struct {
+    struct FB_SUB_DINT *pFb; /* VAR_INPUT pFb : POINTER TO ST_FB_SUB_DINT */
+    int32_t cds_sl_sub_dint_init; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_sub_dint_init_struct;
+void CDECL CDECL_EXT cds_sl_sub_dint_init(cds_sl_sub_dint_init_struct *p);
+
+/* FUNCTION cds_sl_sub_dint_cycle : DINT -> sl_sub_dint_cycle() */
+typedef struct tagcds_sl_sub_dint_cycle_struct {
+    struct FB_SUB_DINT *pFb; /* VAR_INPUT pFb : POINTER TO ST_FB_SUB_DINT */
+    uint32_t tNow; /* VAR_INPUT tNow : UDINT */
+    int32_t cds_sl_sub_dint_cycle; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_sub_dint_cycle_struct;
+void CDECL CDECL_EXT cds_sl_sub_dint_cycle(cds_sl_sub_dint_cycle_struct *p);
+
+/* FUNCTION cds_sl_sub_udint_init : DINT -> sl_sub_udint_init() */
+typedef struct tagcds_sl_sub_udint_init_struct {
+    struct FB_SUB_UDINT *pFb; /* VAR_INPUT pFb : POINTER TO ST_FB_SUB_UDINT */
+    int32_t cds_sl_sub_udint_init; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_sub_udint_init_struct;
+void CDECL CDECL_EXT cds_sl_sub_udint_init(cds_sl_sub_udint_init_struct *p);
+
+/* FUNCTION cds_sl_sub_udint_cycle : DINT -> sl_sub_udint_cycle() */
+typedef struct tagcds_sl_sub_udint_cycle_struct {
+    struct FB_SUB_UDINT *pFb; /* VAR_INPUT pFb : POINTER TO ST_FB_SUB_UDINT */
+    uint32_t tNow; /* VAR_INPUT tNow : UDINT */
+    int32_t cds_sl_sub_udint_cycle; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_sub_udint_cycle_struct;
+void CDECL CDECL_EXT cds_sl_sub_udint_cycle(cds_sl_sub_udint_cycle_struct *p);
+
+/* FUNCTION cds_sl_mul_int_init : DINT -> sl_mul_int_init() */
+typedef struct tagcds_sl_mul_int_init_struct {
+    struct FB_MUL_INT *pFb; /* VAR_INPUT pFb : POINTER TO ST_FB_MUL_INT */
+    int32_t cds_sl_mul_int_init; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_mul_int_init_struct;
+void CDECL CDECL_EXT cds_sl_mul_int_init(cds_sl_mul_int_init_struct *p);
+
+/* FUNCTION cds_sl_mul_int_cycle : DINT -> sl_mul_int_cycle() */
+typedef struct tagcds_sl_mul_int_cycle_struct {
+    struct FB_MUL_INT *pFb; /* VAR_INPUT pFb : POINTER TO ST_FB_MUL_INT */
+    uint32_t tNow; /* VAR_INPUT tNow : UDINT */
+    int32_t cds_sl_mul_int_cycle; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_mul_int_cycle_struct;
+void CDECL CDECL_EXT cds_sl_mul_int_cycle(cds_sl_mul_int_cycle_struct *p);
+
+/* FUNCTION cds_sl_mul_uint_init : DINT -> sl_mul_uint_init() */
+typedef struct tagcds_sl_mul_uint_init_struct {
+    struct FB_MUL_UINT *pFb; /* VAR_INPUT pFb : POINTER TO ST_FB_MUL_UINT */
+    int32_t cds_sl_mul_uint_init; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_mul_uint_init_struct;
+void CDECL CDECL_EXT cds_sl_mul_uint_init(cds_sl_mul_uint_init_struct *p);
+
+/* FUNCTION cds_sl_mul_uint_cycle : DINT -> sl_mul_uint_cycle() */
+typedef struct tagcds_sl_mul_uint_cycle_struct {
+    struct FB_MUL_UINT *pFb; /* VAR_INPUT pFb : POINTER TO ST_FB_MUL_UINT */
+    uint32_t tNow; /* VAR_INPUT tNow : UDINT */
+    int32_t cds_sl_mul_uint_cycle; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_mul_uint_cycle_struct;
+void CDECL CDECL_EXT cds_sl_mul_uint_cycle(cds_sl_mul_uint_cycle_struct *p);
+
+/* FUNCTION cds_sl_mul_dint_init : DINT -> sl_mul_dint_init() */
+typedef struct tagcds_sl_mul_dint_init_struct {
+    struct FB_MUL_DINT *pFb; /* VAR_INPUT pFb : POINTER TO ST_FB_MUL_DINT */
+    int32_t cds_sl_mul_dint_init; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_mul_dint_init_struct;
+void CDECL CDECL_EXT cds_sl_mul_dint_init(cds_sl_mul_dint_init_struct *p);
+
+/* FUNCTION cds_sl_mul_dint_cycle : DINT -> sl_mul_dint_cycle() */
+typedef struct tagcds_sl_mul_dint_cycle_struct {
+    struct FB_MUL_DINT *pFb; /* VAR_INPUT pFb : POINTER TO ST_FB_MUL_DINT */
+    uint32_t tNow; /* VAR_INPUT tNow : UDINT */
+    int32_t cds_sl_mul_dint_cycle; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_mul_dint_cycle_struct;
+void CDECL CDECL_EXT cds_sl_mul_dint_cycle(cds_sl_mul_dint_cycle_struct *p);
+
+/* FUNCTION cds_sl_mul_udint_init : DINT -> sl_mul_udint_init() */
+typedef struct tagcds_sl_mul_udint_init_struct {
+    struct FB_MUL_UDINT *pFb; /* VAR_INPUT pFb : POINTER TO ST_FB_MUL_UDINT */
+    int32_t cds_sl_mul_udint_init; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_mul_udint_init_struct;
+void CDECL CDECL_EXT cds_sl_mul_udint_init(cds_sl_mul_udint_init_struct *p);
+
+/* FUNCTION cds_sl_mul_udint_cycle : DINT -> sl_mul_udint_cycle() */
+typedef struct tagcds_sl_mul_udint_cycle_struct {
+    struct FB_MUL_UDINT *pFb; /* VAR_INPUT pFb : POINTER TO ST_FB_MUL_UDINT */
+    uint32_t tNow; /* VAR_INPUT tNow : UDINT */
+    int32_t cds_sl_mul_udint_cycle; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_mul_udint_cycle_struct;
+void CDECL CDECL_EXT cds_sl_mul_udint_cycle(cds_sl_mul_udint_cycle_struct *p);
+
+/* FUNCTION cds_sl_div_int_init : DINT -> sl_div_int_init() */
+typedef struct tagcds_sl_div_int_init_struct {
+    struct FB_DIV_INT *pFb; /* VAR_INPUT pFb : POINTER TO ST_FB_DIV_INT */
+    int32_t cds_sl_div_int_init; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_div_int_init_struct;
+void CDECL CDECL_EXT cds_sl_div_int_init(cds_sl_div_int_init_struct *p);
+
+/* FUNCTION cds_sl_div_int_cycle : DINT -> sl_div_int_cycle() */
+typedef struct tagcds_sl_div_int_cycle_struct {
+    struct FB_DIV_INT *pFb; /* VAR_INPUT pFb : POINTER TO ST_FB_DIV_INT */
+    uint32_t tNow; /* VAR_INPUT tNow : UDINT */
+    int32_t cds_sl_div_int_cycle; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_div_int_cycle_struct;
+void CDECL CDECL_EXT cds_sl_div_int_cycle(cds_sl_div_int_cycle_struct *p);
+
+/* FUNCTION cds_sl_div_uint_init : DINT -> sl_div_uint_init() */
+typedef struct tagcds_sl_div_uint_init_struct {
+    struct FB_DIV_UINT *pFb; /* VAR_INPUT pFb : POINTER TO ST_FB_DIV_UINT */
+    int32_t cds_sl_div_uint_init; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_div_uint_init_struct;
+void CDECL CDECL_EXT cds_sl_div_uint_init(cds_sl_div_uint_init_struct *p);
+
+/* FUNCTION cds_sl_div_uint_cycle : DINT -> sl_div_uint_cycle() */
+typedef struct tagcds_sl_div_uint_cycle_struct {
+    struct FB_DIV_UINT *pFb; /* VAR_INPUT pFb : POINTER TO ST_FB_DIV_UINT */
+    uint32_t tNow; /* VAR_INPUT tNow : UDINT */
+    int32_t cds_sl_div_uint_cycle; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_div_uint_cycle_struct;
+void CDECL CDECL_EXT cds_sl_div_uint_cycle(cds_sl_div_uint_cycle_struct *p);
+
+/* FUNCTION cds_sl_div_dint_init : DINT -> sl_div_dint_init() */
+typedef struct tagcds_sl_div_dint_init_struct {
+    struct FB_DIV_DINT *pFb; /* VAR_INPUT pFb : POINTER TO ST_FB_DIV_DINT */
+    int32_t cds_sl_div_dint_init; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_div_dint_init_struct;
+void CDECL CDECL_EXT cds_sl_div_dint_init(cds_sl_div_dint_init_struct *p);
+
+/* FUNCTION cds_sl_div_dint_cycle : DINT -> sl_div_dint_cycle() */
+typedef struct tagcds_sl_div_dint_cycle_struct {
+    struct FB_DIV_DINT *pFb; /* VAR_INPUT pFb : POINTER TO ST_FB_DIV_DINT */
+    uint32_t tNow; /* VAR_INPUT tNow : UDINT */
+    int32_t cds_sl_div_dint_cycle; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_div_dint_cycle_struct;
+void CDECL CDECL_EXT cds_sl_div_dint_cycle(cds_sl_div_dint_cycle_struct *p);
+
+/* FUNCTION cds_sl_div_udint_init : DINT -> sl_div_udint_init() */
+typedef struct tagcds_sl_div_udint_init_struct {
+    struct FB_DIV_UDINT *pFb; /* VAR_INPUT pFb : POINTER TO ST_FB_DIV_UDINT */
+    int32_t cds_sl_div_udint_init; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_div_udint_init_struct;
+void CDECL CDECL_EXT cds_sl_div_udint_init(cds_sl_div_udint_init_struct *p);
+
+/* FUNCTION cds_sl_div_udint_cycle : DINT -> sl_div_udint_cycle() */
+typedef struct tagcds_sl_div_udint_cycle_struct {
+    struct FB_DIV_UDINT *pFb; /* VAR_INPUT pFb : POINTER TO ST_FB_DIV_UDINT */
+    uint32_t tNow; /* VAR_INPUT tNow : UDINT */
+    int32_t cds_sl_div_udint_cycle; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_div_udint_cycle_struct;
+void CDECL CDECL_EXT cds_sl_div_udint_cycle(cds_sl_div_udint_cycle_struct *p);
+
 /* FUNCTION cds_sl_time_now_ms : UDINT -> sl_time_now_ms() */
 typedef struct tagcds_sl_time_now_ms_struct {
     uint32_t cds_sl_time_now_ms; /* VAR_OUTPUT (return value) UDINT */
@@ -299,6 +539,38 @@ void CDECL CDECL_EXT cds_sl_time_now_ms(cds_sl_time_now_ms_struct *p);
     X(cds_sl_ton_cycle) \
     X(cds_sl_tof_init) \
     X(cds_sl_tof_cycle) \
+    X(cds_sl_add_int_init) \
+    X(cds_sl_add_int_cycle) \
+    X(cds_sl_add_uint_init) \
+    X(cds_sl_add_uint_cycle) \
+    X(cds_sl_add_dint_init) \
+    X(cds_sl_add_dint_cycle) \
+    X(cds_sl_add_udint_init) \
+    X(cds_sl_add_udint_cycle) \
+    X(cds_sl_sub_int_init) \
+    X(cds_sl_sub_int_cycle) \
+    X(cds_sl_sub_uint_init) \
+    X(cds_sl_sub_uint_cycle) \
+    X(cds_sl_sub_dint_init) \
+    X(cds_sl_sub_dint_cycle) \
+    X(cds_sl_sub_udint_init) \
+    X(cds_sl_sub_udint_cycle) \
+    X(cds_sl_mul_int_init) \
+    X(cds_sl_mul_int_cycle) \
+    X(cds_sl_mul_uint_init) \
+    X(cds_sl_mul_uint_cycle) \
+    X(cds_sl_mul_dint_init) \
+    X(cds_sl_mul_dint_cycle) \
+    X(cds_sl_mul_udint_init) \
+    X(cds_sl_mul_udint_cycle) \
+    X(cds_sl_div_int_init) \
+    X(cds_sl_div_int_cycle) \
+    X(cds_sl_div_uint_init) \
+    X(cds_sl_div_uint_cycle) \
+    X(cds_sl_div_dint_init) \
+    X(cds_sl_div_dint_cycle) \
+    X(cds_sl_div_udint_init) \
+    X(cds_sl_div_udint_cycle) \
     X(cds_sl_time_now_ms)
 
 #ifdef __cplusplus

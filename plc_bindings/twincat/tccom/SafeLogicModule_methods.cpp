@@ -285,3 +285,291 @@ HRESULT CSafeLogicModule::sl_tof_cycle(PVOID pFb, int32_t *pnResult, uint32_t tN
     *pnResult = ::sl_tof_cycle(static_cast<struct FB_TOF *>(pFb), tNow);
     return S_OK;
 }
+
+HRESULT CSafeLogicModule::sl_add_int_init(PVOID pFb, int32_t *pnResult)
+{
+    if (pFb == NULL || pnResult == NULL) {
+        return E_POINTER;
+    }
+    *pnResult = ::sl_add_int_init(static_cast<struct FB_ADD_INT *>(pFb));
+    return S_OK;
+}
+
+HRESULT CSafeLogicModule::sl_add_int_cycle(PVOID pFb, int32_t *pnResult, uint32_t tNow)
+{
+    if (pFb == NULL || pnResult == NULL) {
+        return E_POINTER;
+    }
+    *pnResult = ::sl_add_int_cycle(static_cast<struct FB_ADD_INT *>(pFb), tNow);
+    return S_OK;
+}
+
+HRESULT CSafeLogicModule::sl_add_uint_init(PVOID pFb, int32_t *pnResult)
+{
+    if (pFb == NULL || pnResult == NULL) {
+        return E_POINTER;
+    }
+    *pnResult = ::sl_add_uint_init(static_cast<struct FB_ADD_UINT *>(pFb));
+    return S_OK;
+}
+
+HRESULT CSafeLogicModule::sl_add_uint_cycle(PVOID pFb, int32_t *pnResult, uint32_t tNow)
+{
+    if (pFb == NULL || pnResult == NULL) {
+        return E_POINTER;
+    }
+    *pnResult = ::sl_add_uint_cycle(static_cast<struct FB_ADD_UINT *>(pFb), tNow);
+    return S_OK;
+}
+
+HRESULT CSafeLogicModule::sl_add_dint_init(PVOID pFb, int32_t *pnResult)
+{
+    if (pFb == NULL || pnResult == NULL) {
+        return E_POINTER;
+    }
+    *pnResult = ::sl_add_dint_init(static_cast<struct FB_ADD_DINT *>(pFb));
+    return S_OK;
+}
+
+HRESULT CSafeLogicModule::sl_add_dint_cycle(PVOID pFb, int32_t *pnResult, uint32_t tNow)
+{
+    if (pFb == NULL || pnResult == NULL) {
+        return E_POINTER;
+    }
+    *pnResult = ::sl_add_dint_cycle(static_cast<struct FB_ADD_DINT *>(pFb), tNow);
+    return S_OK;
+}
+
+HRESULT CSafeLogicModule::sl_add_udint_init(PVOID pFb, int32_t *pnResult)
+{
+    if (pFb == NULL || pnResult == NULL) {
+        return E_POINTER;
+    }
+    *pnResult = ::sl_add_udint_init(static_cast<struct FB_ADD_UDINT *>(pFb));
+    return S_OK;
+}
+
+HRESULT CSafeLogicModule::sl_add_udint_cycle(PVOID pFb, int32_t *pnResult, uint32_t tNow)
+{
+    if (pFb == NULL || pnResult == NULL) {
+        return E_POINTER;
+    }
+    *pnResult = ::sl_add_udint_cycle(static_cast<struct FB_ADD_UDINT *>(pFb), tNow);
+    return S_OK;
+}
+
+HRESULT CSafeLogicModule::sl_sub_int_init(PVOID pFb, int32_t *pnResult)
+{
+    if (pFb == NULL || pnResult == NULL) {
+        return E_POINTER;
+    }
+    *pnResult = ::sl_sub_int_init(static_cast<struct FB_SUB_INT *>(pFb));
+    return S_OK;
+}
+
+HRESULT CSafeLogicModule::sl_sub_int_cycle(PVOID pFb, int32_t *pnResult, uint32_t tNow)
+{
+    if (pFb == NULL || pnResult == NULL) {
+        return E_POINTER;
+    }
+    *pnResult = ::sl_sub_int_cycle(static_cast<struct FB_SUB_INT *>(pFb), tNow);
+    return S_OK;
+}
+
+HRESULT CSafeLogicModule::sl_sub_uint_init(PVOID pFb, int32_t *pnResult)
+{
+    if (pFb == NULL || pnResult == NULL) {
+        return E_POINTER;
+    }
+    *pnResult = ::sl_sub_uint_init(static_cast<struct FB_SUB_UINT *>(pFb));
+    return S_OK;
+}
+
+HRESULT CSafeLogicModule::sl_sub_uint_cycle(PVOID pFb, int32_t *pnResult, uint32_t tNow)
+{
+    if (pFb == NULL || pnResult == NULL) {
+        return E_POINTER;
+    }
+    *pnResult = ::sl_sub_uint_cycle(static_cast<struct FB_SUB_UINT *>(pFb), tNow);
+    return S_OK;
+}
+
+HRESULT CSafeLogicModule::sl_sub_dint_init(PVOID pFb, int32_t *pnResult)
+{
+    if (pFb == NULL || pnResult == NULL) {
+        return E_POINTER;
+    }
+    *pnResult = ::sl_sub_dint_init(static_cast<struct FB_SUB_DINT *>(pFb));
+    return S_OK;
+}
+
+HRESULT CSafeLogicModule::sl_sub_dint_cycle(PVOID pFb, int32_t *pnResult, uint32_t tNow)
+{
+    if (pFb == NULL || pnResult == NULL) {
+        return E_POINTER;
+    }
+    *pnResult = ::sl_sub_dint_cycle(static_cast<struct FB_SUB_DINT *>(pFb), tNow);
+    return S_OK;
+}
+
+HRESULT CSafeLogicModule::sl_sub_udint_init(PVOID pFb, int32_t *pnResult)
+{
+    if (pFb == NULL || pnResult == NULL) {
+        return E_POINTER;
+    }
+    *pnResult = ::sl_sub_udint_init(static_cast<struct FB_SUB_UDINT *>(pFb));
+    return S_OK;
+}
+
+HRESULT CSafeLogicModule::sl_sub_udint_cycle(PVOID pFb, int32_t *pnResult, uint32_t tNow)
+{
+    if (pFb == NULL || pnResult == NULL) {
+        return E_POINTER;
+    }
+    *pnResult = ::sl_sub_udint_cycle(static_cast<struct FB_SUB_UDINT *>(pFb), tNow);
+    return S_OK;
+}
+
+HRESULT CSafeLogicModule::sl_mul_int_init(PVOID pFb, int32_t *pnResult)
+{
+    if (pFb == NULL || pnResult == NULL) {
+        return E_POINTER;
+    }
+    *pnResult = ::sl_mul_int_init(static_cast<struct FB_MUL_INT *>(pFb));
+    return S_OK;
+}
+
+HRESULT CSafeLogicModule::sl_mul_int_cycle(PVOID pFb, int32_t *pnResult, uint32_t tNow)
+{
+    if (pFb == NULL || pnResult == NULL) {
+        return E_POINTER;
+    }
+    *pnResult = ::sl_mul_int_cycle(static_cast<struct FB_MUL_INT *>(pFb), tNow);
+    return S_OK;
+}
+
+HRESULT CSafeLogicModule::sl_mul_uint_init(PVOID pFb, int32_t *pnResult)
+{
+    if (pFb == NULL || pnResult == NULL) {
+        return E_POINTER;
+    }
+    *pnResult = ::sl_mul_uint_init(static_cast<struct FB_MUL_UINT *>(pFb));
+    return S_OK;
+}
+
+HRESULT CSafeLogicModule::sl_mul_uint_cycle(PVOID pFb, int32_t *pnResult, uint32_t tNow)
+{
+    if (pFb == NULL || pnResult == NULL) {
+        return E_POINTER;
+    }
+    *pnResult = ::sl_mul_uint_cycle(static_cast<struct FB_MUL_UINT *>(pFb), tNow);
+    return S_OK;
+}
+
+HRESULT CSafeLogicModule::sl_mul_dint_init(PVOID pFb, int32_t *pnResult)
+{
+    if (pFb == NULL || pnResult == NULL) {
+        return E_POINTER;
+    }
+    *pnResult = ::sl_mul_dint_init(static_cast<struct FB_MUL_DINT *>(pFb));
+    return S_OK;
+}
+
+HRESULT CSafeLogicModule::sl_mul_dint_cycle(PVOID pFb, int32_t *pnResult, uint32_t tNow)
+{
+    if (pFb == NULL || pnResult == NULL) {
+        return E_POINTER;
+    }
+    *pnResult = ::sl_mul_dint_cycle(static_cast<struct FB_MUL_DINT *>(pFb), tNow);
+    return S_OK;
+}
+
+HRESULT CSafeLogicModule::sl_mul_udint_init(PVOID pFb, int32_t *pnResult)
+{
+    if (pFb == NULL || pnResult == NULL) {
+        return E_POINTER;
+    }
+    *pnResult = ::sl_mul_udint_init(static_cast<struct FB_MUL_UDINT *>(pFb));
+    return S_OK;
+}
+
+HRESULT CSafeLogicModule::sl_mul_udint_cycle(PVOID pFb, int32_t *pnResult, uint32_t tNow)
+{
+    if (pFb == NULL || pnResult == NULL) {
+        return E_POINTER;
+    }
+    *pnResult = ::sl_mul_udint_cycle(static_cast<struct FB_MUL_UDINT *>(pFb), tNow);
+    return S_OK;
+}
+
+HRESULT CSafeLogicModule::sl_div_int_init(PVOID pFb, int32_t *pnResult)
+{
+    if (pFb == NULL || pnResult == NULL) {
+        return E_POINTER;
+    }
+    *pnResult = ::sl_div_int_init(static_cast<struct FB_DIV_INT *>(pFb));
+    return S_OK;
+}
+
+HRESULT CSafeLogicModule::sl_div_int_cycle(PVOID pFb, int32_t *pnResult, uint32_t tNow)
+{
+    if (pFb == NULL || pnResult == NULL) {
+        return E_POINTER;
+    }
+    *pnResult = ::sl_div_int_cycle(static_cast<struct FB_DIV_INT *>(pFb), tNow);
+    return S_OK;
+}
+
+HRESULT CSafeLogicModule::sl_div_uint_init(PVOID pFb, int32_t *pnResult)
+{
+    if (pFb == NULL || pnResult == NULL) {
+        return E_POINTER;
+    }
+    *pnResult = ::sl_div_uint_init(static_cast<struct FB_DIV_UINT *>(pFb));
+    return S_OK;
+}
+
+HRESULT CSafeLogicModule::sl_div_uint_cycle(PVOID pFb, int32_t *pnResult, uint32_t tNow)
+{
+    if (pFb == NULL || pnResult == NULL) {
+        return E_POINTER;
+    }
+    *pnResult = ::sl_div_uint_cycle(static_cast<struct FB_DIV_UINT *>(pFb), tNow);
+    return S_OK;
+}
+
+HRESULT CSafeLogicModule::sl_div_dint_init(PVOID pFb, int32_t *pnResult)
+{
+    if (pFb == NULL || pnResult == NULL) {
+        return E_POINTER;
+    }
+    *pnResult = ::sl_div_dint_init(static_cast<struct FB_DIV_DINT *>(pFb));
+    return S_OK;
+}
+
+HRESULT CSafeLogicModule::sl_div_dint_cycle(PVOID pFb, int32_t *pnResult, uint32_t tNow)
+{
+    if (pFb == NULL || pnResult == NULL) {
+        return E_POINTER;
+    }
+    *pnResult = ::sl_div_dint_cycle(static_cast<struct FB_DIV_DINT *>(pFb), tNow);
+    return S_OK;
+}
+
+HRESULT CSafeLogicModule::sl_div_udint_init(PVOID pFb, int32_t *pnResult)
+{
+    if (pFb == NULL || pnResult == NULL) {
+        return E_POINTER;
+    }
+    *pnResult = ::sl_div_udint_init(static_cast<struct FB_DIV_UDINT *>(pFb));
+    return S_OK;
+}
+
+HRESULT CSafeLogicModule::sl_div_udint_cycle(PVOID pFb, int32_t *pnResult, uint32_t tNow)
+{
+    if (pFb == NULL || pnResult == NULL) {
+        return E_POINTER;
+    }
+    *pnResult = ::sl_div_udint_cycle(static_cast<struct FB_DIV_UDINT *>(pFb), tNow);
+    return S_OK;
+}
