@@ -13,3 +13,4 @@
 #include "test_edm.c"
 #include "test_flipflop.c"
 #include "test_timers.c"
+#include "test_arith.c"

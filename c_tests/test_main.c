@@ -244,6 +244,7 @@ int main(void)
     run_edm_scenarios();
     run_flipflop_scenarios();
     run_timer_scenarios();
+    run_arith_scenarios();
     printf("%d passed, %d failed\n", h_passed, h_failed);
     return h_failed == 0 ? 0 : 1;
 }

@@ -1,0 +1,159 @@
+/*
+ * FB_ADD/SUB/MUL/DIV in their integer variants through the C ABI (manual §4.16-§4.19,
+ * ABI-2 §11.2, §12; docs/semantics.md A1-A6, RG2): results, range errors with diag value,
+ * Text ID and parameters, DIV rounding and division by 0, acknowledgement, and an analog
+ * chain ADD -> MUL -> DIV linked in a group beside a Boolean link.
+ */
+#include "harness.h"
+
+static void arith_add_int_overflow_and_ack(void)
+{
+    FB_ADD_INT a;
+    memset(&a, 0, sizeof a);
+    h_begin("ADD_INT: RUN, overflow -> ERROR 0x4081, ack once in range (A1, A5)");
+    a.wInputActive = 0x0300;
+    CHECK_INT(sl_add_int_init(&a), SL_OK);
+    a.bRun = 1;
+    a.nAnalogIn1 = 30000;
+    a.nAnalogIn2 = 2767;
+    CHECK_INT(sl_add_int_cycle(&a, 0), SL_OK);
+    CHECK_INT(a.nState, SL_STATE_RUN);
+    CHECK_INT(a.nAnalogOut, 32767);
+    a.nAnalogIn2 = 2768;
+    CHECK_INT(sl_add_int_cycle(&a, 1), SL_OK);
+    CHECK_INT(a.nState, SL_STATE_ERROR);
+    CHECK_INT(a.bError, 1);
+    CHECK_INT(a.nAnalogOut, 0);
+    CHECK_INT(a.nDiag, SL_DIAG_VALUE_OVERFLOW);
+    CHECK_INT(a.nDiagTextId, 0x4081);
+    CHECK_INT(a.dwDiagPar2, 30000);
+    CHECK_INT(a.dwDiagPar3, 2768);
+    a.bErrAck = 1;
+    sl_add_int_cycle(&a, 2);
+    CHECK_INT(a.nState, SL_STATE_ERROR); /* still out of range */
+    a.bErrAck = 0;
+    sl_add_int_cycle(&a, 3);
+    a.nAnalogIn1 = -5;
+    a.bErrAck = 1;
+    sl_add_int_cycle(&a, 4);
+    CHECK_INT(a.nState, SL_STATE_RESET);
+    CHECK_INT(a.nDiagTextId, 0);
+    a.bErrAck = 0;
+    sl_add_int_cycle(&a, 5);
+    CHECK_INT(a.nState, SL_STATE_RUN);
+    CHECK_INT(a.nAnalogOut, 2763);
+    CHECK_DIAG_TEXT(SL_TYPE_ADD_INT, 2,
+                    "The output AnalogOut has an overflow (is greater than the largest possible value)");
+    h_end();
+}
+
+static void arith_sub_uint_underflow(void)
+{
+    FB_SUB_UDINT s;
+    memset(&s, 0, sizeof s);
+    h_begin("SUB_UDINT: a negative difference is an underflow, 0x4080 (A4)");
+    s.wInputActive = 0x0300;
+    CHECK_INT(sl_sub_udint_init(&s), SL_OK);
+    s.bRun = 1;
+    s.nAnalogIn1 = 4000000000u;
+    s.nAnalogIn2 = 1u;
+    sl_sub_udint_cycle(&s, 0);
+    CHECK_INT(s.nAnalogOut, 3999999999u);
+    s.nAnalogIn1 = 0u;
+    sl_sub_udint_cycle(&s, 1);
+    CHECK_INT(s.nState, SL_STATE_ERROR);
+    CHECK_INT(s.nDiag, SL_DIAG_VALUE_UNDERFLOW);
+    CHECK_INT(s.nDiagTextId, 0x4080);
+    h_end();
+}
+
+static int16_t arith_div(int16_t a, int16_t b, uint16_t rounding)
+{
+    FB_DIV_INT d;
+    memset(&d, 0, sizeof d);
+    d.wInputActive = 0x0300;
+    d.nRounding = rounding;
+    d.nAnalogIn1 = a;
+    d.nAnalogIn2 = b;
+    d.bRun = 1;
+    sl_div_int_init(&d);
+    sl_div_int_cycle(&d, 0);
+    return d.nAnalogOut;
+}
+
+static void arith_div_rounding(void)
+{
+    FB_DIV_DINT d;
+    h_begin("DIV: Floor/Ceil/Round incl. negative quotients, /0 = 0, MIN / -1 (A2, A3)");
+    CHECK_INT(arith_div(5, 2, SL_ROUNDING_FLOOR), 2);
+    CHECK_INT(arith_div(5, 2, SL_ROUNDING_CEIL), 3);
+    CHECK_INT(arith_div(5, 2, SL_ROUNDING_ROUND), 3);
+    CHECK_INT(arith_div(-5, 2, SL_ROUNDING_FLOOR), -3);
+    CHECK_INT(arith_div(-5, 2, SL_ROUNDING_CEIL), -2);
+    CHECK_INT(arith_div(-5, 2, SL_ROUNDING_ROUND), -3);
+    CHECK_INT(arith_div(-7, 3, SL_ROUNDING_ROUND), -2);
+    CHECK_INT(arith_div(99, 0, SL_ROUNDING_ROUND), 0);
+    memset(&d, 0, sizeof d);
+    d.wInputActive = 0x0300;
+    d.nRounding = 3;
+    CHECK_INT(sl_div_dint_init(&d), SL_E_CONFIG);
+    d.nRounding = 0;
+    CHECK_INT(sl_div_dint_init(&d), SL_OK);
+    d.bRun = 1;
+    d.nAnalogIn1 = INT32_MIN;
+    d.nAnalogIn2 = -1;
+    sl_div_dint_cycle(&d, 0);
+    CHECK_INT(d.nState, SL_STATE_ERROR);
+    CHECK_INT(d.nDiag, SL_DIAG_VALUE_OVERFLOW);
+    CHECK_INT(d.dwDiagPar2, 0x80000000u);
+    h_end();
+}
+
+static void arith_chain_in_a_group(void)
+{
+    SL_GROUP g;
+    SL_MEMBER members[4];
+    SL_LINK links[3];
+    FB_ADD_INT add;
+    FB_MUL_INT mul;
+    FB_DIV_INT div;
+    FB_ADD_UINT uadd;
+    memset(&g, 0, sizeof g);
+    memset(&add, 0, sizeof add);
+    memset(&mul, 0, sizeof mul);
+    memset(&div, 0, sizeof div);
+    memset(&uadd, 0, sizeof uadd);
+    h_begin("group: analog links ADD -> MUL -> DIV; INT -> UINT refused (RG2)");
+    add.wInputActive = mul.wInputActive = div.wInputActive = uadd.wInputActive = 0x0300;
+    CHECK_INT(sl_group_init(&g, members, 4, links, 3), SL_OK);
+    CHECK_INT(sl_group_add_member(&g, members, SL_TYPE_ADD_INT, &add, NULL), SL_OK);
+    CHECK_INT(sl_group_add_member(&g, members, SL_TYPE_MUL_INT, &mul, NULL), SL_OK);
+    CHECK_INT(sl_group_add_member(&g, members, SL_TYPE_DIV_INT, &div, NULL), SL_OK);
+    CHECK_INT(sl_group_add_member(&g, members, SL_TYPE_ADD_UINT, &uadd, NULL), SL_OK);
+    CHECK_INT(sl_group_add_link(&g, members, links, 0, offsetof(FB_ADD_INT, nAnalogOut), 1,
+                                offsetof(FB_MUL_INT, nAnalogIn1)), SL_OK);
+    CHECK_INT(sl_group_add_link(&g, members, links, 1, offsetof(FB_MUL_INT, nAnalogOut), 2,
+                                offsetof(FB_DIV_INT, nAnalogIn1)), SL_OK);
+    CHECK_INT(links[0].nKind, SL_LINK_ANALOG16);
+    CHECK_INT(sl_group_add_link(&g, members, links, 0, offsetof(FB_ADD_INT, nAnalogOut), 3,
+                                offsetof(FB_ADD_UINT, nAnalogIn1)), SL_E_CONFIG);
+    add.nAnalogIn1 = 7;
+    add.nAnalogIn2 = 3;
+    mul.nAnalogIn2 = -4;
+    div.nAnalogIn2 = 3;
+    uadd.nAnalogIn1 = 1;
+    g.bRun = 1;
+    CHECK_INT(sl_group_cycle(&g, members, links, 0), SL_OK);
+    CHECK_INT(mul.nAnalogOut, -40);
+    CHECK_INT(div.nAnalogOut, -14); /* -13.33, Floor */
+    CHECK_INT(g.nState, SL_STATE_RUN);
+    h_end();
+}
+
+void run_arith_scenarios(void)
+{
+    arith_add_int_overflow_and_ack();
+    arith_sub_uint_underflow();
+    arith_div_rounding();
+    arith_chain_in_a_group();
+}
