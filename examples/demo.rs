@@ -16,7 +16,6 @@
 //! One line is printed whenever an input, a contactor, the state, an output, the
 //! diagnosis or the returned status changes, and whenever the script does something.
 
-use safelogic::ffi::{sl_estop_cycle, sl_estop_init, sl_mon_cycle, sl_mon_init};
 use safelogic::*;
 
 /// Task cycle of the simulated safety task.
@@ -134,10 +133,10 @@ trait Guard {
 
 impl Guard for FB_ESTOP {
     fn abi_init(&mut self) -> i32 {
-        unsafe { sl_estop_init(self) }
+        FunctionBlock::init(self)
     }
     fn abi_cycle(&mut self, now: u32) -> i32 {
-        unsafe { sl_estop_cycle(self, now) }
+        FunctionBlock::cycle(self, now)
     }
     fn write_inputs(&mut self, p: &Panel, edm1: bool) {
         self.bEStopIn1 = u8::from(p.in1);
@@ -166,10 +165,10 @@ impl Guard for FB_ESTOP {
 
 impl Guard for FB_MON {
     fn abi_init(&mut self) -> i32 {
-        unsafe { sl_mon_init(self) }
+        FunctionBlock::init(self)
     }
     fn abi_cycle(&mut self, now: u32) -> i32 {
-        unsafe { sl_mon_cycle(self, now) }
+        FunctionBlock::cycle(self, now)
     }
     fn write_inputs(&mut self, p: &Panel, edm1: bool) {
         self.bMonIn1 = u8::from(p.in1);

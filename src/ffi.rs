@@ -76,7 +76,7 @@ pub extern "C" fn sl_status_str(status: i32) -> *const c_char {
 }
 
 /// Static, NUL-terminated name of state `nState` of a block of type `nType`
-/// (SL_TYPE_<NAME>): "RUN", "STOP", "DELAYOUT", ... ; "?" for a value the block does not
+/// (`SL_TYPE_<NAME>`): "RUN", "STOP", "DELAYOUT", ... ; "?" for a value the block does not
 /// have. Never NULL.
 #[no_mangle]
 #[allow(non_snake_case)]
@@ -265,7 +265,7 @@ pub unsafe extern "C" fn sl_group_init(
 }
 
 /// Adds a block as the next member (execution order) while the group is stopped.
-/// `nType` is SL_TYPE_<NAME>; the index is written to `*pIndex` unless it is NULL.
+/// `nType` is `SL_TYPE_<NAME>`; the index is written to `*pIndex` unless it is NULL.
 /// A block can be a member once; SL_E_FULL when the member storage is full.
 ///
 /// # Safety
@@ -311,7 +311,7 @@ pub unsafe extern "C" fn sl_group_add_member(
 }
 
 /// Links the output at byte `nSrcOffset` of member `nSrcMember` to the input at byte
-/// `nDstOffset` of member `nDstMember` (offsets as in the FB_<NAME> structs). Both fields
+/// `nDstOffset` of member `nDstMember` (offsets as in the `FB_<NAME>` structs). Both fields
 /// must have the same IEC type: BOOL to BOOL (SL_LINK_BOOL), INT/UINT to the same
 /// (SL_LINK_ANALOG16), DINT/UDINT to the same (SL_LINK_ANALOG32). The value is
 /// copied just before the destination executes: a link from an earlier member carries this
@@ -390,7 +390,7 @@ pub unsafe extern "C" fn sl_group_cycle(
 }
 
 /// Writes the readable names of the diag bits `nDiag` of a block of type `nType`
-/// (SL_TYPE_<NAME>) into `buf` as a NUL-terminated text ("discrepancy error input group 1;
+/// (`SL_TYPE_<NAME>`) into `buf` as a NUL-terminated text ("discrepancy error input group 1;
 /// EDM monitoring error EDM1"), truncated to `nLen` bytes including the NUL. For an HMI.
 /// SL_E_CONFIG for an unknown type (buf then holds ""), SL_E_NULL for a NULL buf.
 ///

@@ -190,7 +190,7 @@ pub const SL_NO_MEMBER: u16 = 0xFFFF;
 #[derive(Clone, Copy, Debug)]
 #[allow(non_snake_case, non_camel_case_types)]
 pub struct SL_MEMBER {
-    /// The block instance (FB_<NAME> *).
+    /// The block instance (`FB_<NAME> *`).
     pub pBlock: *mut c_void,
     /// SL_TYPE_* of the block.
     pub nType: u16,

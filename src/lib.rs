@@ -45,19 +45,124 @@ pub use group::{SL_GROUP, SL_GROUP_PRIVATE, SL_LINK, SL_MEMBER};
 pub use prim::header::SL_PRIVATE_HEADER;
 pub use types::*;
 
-/// The Rust face of every block: the same calls as `sl_<name>_init` / `sl_<name>_cycle`.
+/// A refusal or fault reported by a block call: the C ABI's negative status codes as a Rust
+/// value (`SL_OK` is `Ok(())`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Status {
+    /// SL_E_NULL.
+    Null,
+    /// SL_E_CONFIG: invalid parameters; the block stays in STOP with safe outputs.
+    Config,
+    /// SL_E_PARAM_CHANGED: a parameter changed outside STOP; the block is in ERROR.
+    ParamChanged,
+    /// SL_E_CORRUPT: the private state failed its integrity check; ERROR.
+    Corrupt,
+    /// SL_E_INVALID_BOOL: an input byte was neither 0 nor 1 (read as the safe value).
+    InvalidBool,
+    /// SL_E_CLOCK: the time went backwards; ERROR.
+    Clock,
+    /// SL_E_INTERNAL: an internal fault was caught; ERROR.
+    Internal,
+    /// SL_E_ALIGNMENT.
+    Alignment,
+    /// SL_E_FULL: group storage full.
+    Full,
+    /// SL_E_RESTORE: a restored elapsed time was refused; ERROR.
+    Restore,
+    /// A code this library version does not know.
+    Unknown(i32),
+}
+
+impl Status {
+    /// `Ok(())` for `SL_OK`, else the status.
+    pub fn check(code: i32) -> Result<(), Status> {
+        Err(match code {
+            SL_OK => return Ok(()),
+            SL_E_NULL => Status::Null,
+            SL_E_CONFIG => Status::Config,
+            SL_E_PARAM_CHANGED => Status::ParamChanged,
+            SL_E_CORRUPT => Status::Corrupt,
+            SL_E_INVALID_BOOL => Status::InvalidBool,
+            SL_E_CLOCK => Status::Clock,
+            SL_E_INTERNAL => Status::Internal,
+            SL_E_ALIGNMENT => Status::Alignment,
+            SL_E_FULL => Status::Full,
+            SL_E_RESTORE => Status::Restore,
+            other => Status::Unknown(other),
+        })
+    }
+
+    /// The C status code.
+    pub fn code(self) -> i32 {
+        match self {
+            Status::Null => SL_E_NULL,
+            Status::Config => SL_E_CONFIG,
+            Status::ParamChanged => SL_E_PARAM_CHANGED,
+            Status::Corrupt => SL_E_CORRUPT,
+            Status::InvalidBool => SL_E_INVALID_BOOL,
+            Status::Clock => SL_E_CLOCK,
+            Status::Internal => SL_E_INTERNAL,
+            Status::Alignment => SL_E_ALIGNMENT,
+            Status::Full => SL_E_FULL,
+            Status::Restore => SL_E_RESTORE,
+            Status::Unknown(c) => c,
+        }
+    }
+}
+
+impl core::fmt::Display for Status {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        f.write_str(status_str(self.code()))
+    }
+}
+
+/// The Rust face of every block. `init` / `cycle` return the C status code (the same calls
+/// as `sl_<name>_init` / `sl_<name>_cycle`); `try_init` / `try_cycle` return a `Result`.
+///
+/// ```
+/// use safelogic::{FunctionBlock, Status, FB_ESTOP, SL_STATE_RUN};
+///
+/// let mut estop = FB_ESTOP { wInputActive: 0b11, tDiscTime12: 100, ..Default::default() };
+/// estop.try_init()?;
+/// (estop.bEStopIn1, estop.bEStopIn2, estop.bRun) = (1, 1, 1);
+/// estop.try_cycle(0)?;
+/// estop.bRestart = 1;
+/// estop.try_cycle(10)?;
+/// estop.bRestart = 0; // the falling edge of Restart enables the outputs
+/// estop.try_cycle(20)?;
+/// assert_eq!((estop.state_name(), estop.bEStopOut), ("RUN", 1));
+/// # Ok::<(), Status>(())
+/// ```
 pub trait FunctionBlock {
     /// Validates and latches the parameters and resets the block to power-up (STOP).
     fn init(&mut self) -> i32;
     /// One task cycle at `now` (monotonic ms, wrapping).
     fn cycle(&mut self, now: u32) -> i32;
+    /// [`Self::init`] as a `Result`.
+    fn try_init(&mut self) -> Result<(), Status> {
+        Status::check(self.init())
+    }
+    /// [`Self::cycle`] as a `Result`.
+    fn try_cycle(&mut self, now: u32) -> Result<(), Status> {
+        Status::check(self.cycle(now))
+    }
+    /// The manual's name of the current state ("RUN", "DELAYOUT", …).
+    fn state_name(&self) -> &'static str;
+    /// The block is in ERROR.
+    fn is_error(&self) -> bool;
 }
 
-impl<B: prim::envelope::Block> FunctionBlock for B {
+impl<B: prim::envelope::Block + registry::Registered + group::Member> FunctionBlock for B {
     fn init(&mut self) -> i32 {
         prim::envelope::init(self)
     }
     fn cycle(&mut self, now: u32) -> i32 {
         prim::envelope::cycle(self, now)
+    }
+    fn state_name(&self) -> &'static str {
+        blocks::state_name(B::INFO.tag, self.state())
+    }
+    fn is_error(&self) -> bool {
+        self.state() == SL_STATE_ERROR
     }
 }

@@ -1,6 +1,6 @@
 //! The one list of block types, and what every entry brings along.
 //!
-//! A block type is declared once, as a row of [`for_each_block!`]: its struct and its two C
+//! A block type is declared once, as a row of [`for_each_block!`](crate::for_each_block): its struct and its two C
 //! function names. From that row come the exported `sl_<name>_init` / `sl_<name>_cycle`
 //! (`ffi`), the group's dispatch from type tag to block (`ffi`), the table [`BLOCKS`]
 //! behind `sl_state_str` / `sl_diag_text`, and the header's prototypes (build.rs reads the
