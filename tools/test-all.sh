@@ -39,6 +39,10 @@ cargo build --release --quiet
 step "Rust tests"
 cargo test --release
 
+step "README C snippet (C11 and C++17, -Werror) and docs/abi.md against the header"
+bash tools/check_readme_snippet.sh
+python3 tools/check_abi_doc.py
+
 step "C tests (ctest)"
 cmake -S c_tests -B build/c_tests -DSAFELOGIC_ROOT="$root" >/dev/null
 cmake --build build/c_tests -j2 >/dev/null
