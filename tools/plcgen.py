@@ -662,7 +662,16 @@ def func_decl(hdr: Header, fl: Flavour, f: CFunc) -> str:
         out.append("VAR")
         out.append(f"    nResult : {st_ret_type(f)};")
         out.append("END_VAR")
+    if fl.iec and not params:
+        out.append(IEC_NO_INPUT_VAR)
     return "\n".join(out) + "\n"
+
+
+# matiec's grammar needs at least one VAR block in a FUNCTION, and it refuses a call with an
+# empty parameter list unless run with -i (OpenPLC does not): a function without inputs gets
+# an unused local and is called as NAME(EN := TRUE) (EN: the implicit input of every function).
+IEC_NO_INPUT_VAR = ("VAR\n    bNoInput : BOOL; (* matiec needs a VAR block; call this function as "
+                    "NAME(EN := TRUE) *)\nEND_VAR")
 
 
 def cpp_asm_decl(f: CFunc, local: str) -> List[str]:
@@ -813,7 +822,7 @@ def selftest_decl(hdr: Header, fl: Flavour) -> str:
 def selftest_body(hdr: Header, fl: Flavour) -> str:
     if fl.iec:
         return "\n".join([
-            "nFailed := DINT_TO_UDINT(SL_SELFTEST_LAYOUT());",
+            "nFailed := DINT_TO_UDINT(SL_SELFTEST_LAYOUT(EN := TRUE));",
             f"nChecked := UDINT#{sum(len(hdr.structs[n].fields) + 1 for n in hdr.order)};",
             "bOk := nFailed = UDINT#0;",
             "IF bOk THEN",
@@ -848,6 +857,7 @@ def iec_selftest_function(hdr: Header) -> Tuple[str, str]:
         "(* Number of layout mismatches between the DUTs as the C compiler sees them (matiec turns every "
         "STRUCT into a C struct, identifiers upper case) and the C header: sizeof and every member offset. "
         "0 = identical. Returns -1 when the pragma is not compiled. *)",
+        IEC_NO_INPUT_VAR,
     ]) + "\n"
     lines = ["SL_SELFTEST_LAYOUT := DINT#-1;", "{", "  SL_SELFTEST_LAYOUT = 0;"]
     for name in hdr.order:
