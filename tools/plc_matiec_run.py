@@ -127,8 +127,10 @@ def st_program(hdr) -> str:
            "    fbSelfTest : FB_SL_SELFTEST;"]
     for b in hdr.blocks:
         out.append(f"    fb{b.name} : FB_{b.name};")
+    out += GROUP_VARS
     out += ["END_VAR", "nNow := nNow + UDINT#%d;" % CYCLE_MS, "nClock := SL_TIME_NOW_MS(EN := TRUE);",
             "IF nCycle = UDINT#0 THEN", "    fbSelfTest();", "END_IF;"]
+    out += group_body(hdr)
     for b in hdr.blocks:
         steps = script(b.name)
         out.append(f"CASE nCycle OF")
@@ -142,6 +144,161 @@ def st_program(hdr) -> str:
             "CONFIGURATION Config0", "  RESOURCE Res0 ON PLC",
             "    TASK task0(INTERVAL := T#10ms, PRIORITY := 0);",
             "    PROGRAM instance0 WITH task0 : prog0;", "  END_RESOURCE", "END_CONFIGURATION", ""]
+    return "\n".join(out)
+
+
+# ---- the group (ESTOP and MON feeding an AND through links), TON2 elapsed time, texts ----------
+GROUP_VARS = [
+    "    stGroup : SL_GROUP;", "    stMembers : SL_MEMBER_STORAGE;", "    stLinks : SL_LINK_STORAGE;",
+    "    stGEStop : ST_FB_ESTOP;", "    stGMon : ST_FB_MON;", "    stGAnd : ST_FB_AND;", "    fbGroup : FB_SL_GROUP;",
+    "    nGroupSetup : DINT := DINT#0;", "    sState : STRING;", "    sDiag : STRING;",
+    "    stTon2 : ST_FB_TON2;", "    nTon2Rc : DINT := DINT#0;", "    nTon2Get : DINT := DINT#0;",
+    "    nTon2Elapsed : UDINT := UDINT#0;", "    nTon2Restore : DINT := DINT#0;",
+]
+GROUP_MEMBERS = [("ESTOP", "stGEStop"), ("MON", "stGMon"), ("AND", "stGAnd")]
+TON2_RESTORED = 40
+
+
+def off(hdr, struct: str, field: str) -> int:
+    return [f for f in hdr.structs[struct].fields if f.name == field][0].offset
+
+
+def group_links(hdr):
+    return [(0, off(hdr, "FB_ESTOP", "bEStopOut"), 2, off(hdr, "FB_AND", "bAndIn1")),
+            (1, off(hdr, "FB_MON", "bMonOut"), 2, off(hdr, "FB_AND", "bAndIn2"))]
+
+
+def group_body(hdr):
+    g = "pGroup := REF(stGroup), pMembers := REF(stMembers)"
+    out = ["(* the group: set up once, then one FB_SL_GROUP call per cycle *)",
+           "IF nCycle = UDINT#0 THEN",
+           "    stGEStop.wInputActive := WORD#16#3; stGEStop.tDiscTime12 := UDINT#100;",
+           "    stGEStop.bEStopIn1 := TRUE; stGEStop.bEStopIn2 := TRUE;",
+           "    stGMon.wInputActive := WORD#16#3; stGMon.tDiscTime12 := UDINT#100;",
+           "    stGMon.bMonIn1 := TRUE; stGMon.bMonIn2 := TRUE;",
+           "    stGAnd.wInputActive := WORD#16#3;",
+           f"    nGroupSetup := SL_GROUP_INIT({g}, pLinks := REF(stLinks));"]
+    for name, var in GROUP_MEMBERS:
+        out.append(f"    nGroupSetup := nGroupSetup + SL_GROUP_ADD_{name}({g}, pBlock := REF({var}));")
+    for sm, so, dm, do in group_links(hdr):
+        out.append(f"    nGroupSetup := nGroupSetup + SL_GROUP_ADD_LINK({g}, pLinks := REF(stLinks), nSrcMember := UINT#{sm}, "
+                   f"nSrcOffset := UINT#{so}, nDstMember := UINT#{dm}, nDstOffset := UINT#{do});")
+    out += ["    (* TON2 through the function API: restore a persisted elapsed time before the start *)",
+            "    stTon2.wInputActive := WORD#16#1; stTon2.tDelay := UDINT#100; stTon2.dwOptions := DWORD#16#100;",
+            "    nTon2Rc := SL_TON2_INIT(pFb := REF(stTon2));",
+            f"    nTon2Restore := SL_TON2_RESTORE_ELAPSED(pFb := REF(stTon2), nElapsedMs := UDINT#{TON2_RESTORED});",
+            "END_IF;",
+            "CASE nCycle OF",
+            "    4, 22: stGEStop.bRestart := TRUE; stGMon.bRestart := TRUE;",
+            "    6, 24: stGEStop.bRestart := FALSE; stGMon.bRestart := FALSE;",
+            "    12: stGEStop.tDiscTime12 := UDINT#101;   (* parameter change: ESTOP ERROR, the group ERROR *)",
+            "    14: stGEStop.tDiscTime12 := UDINT#100;",
+            "    2: stTon2.bRun := TRUE; stTon2.bEnable := TRUE; stTon2.bTonIn1 := TRUE;",
+            "    9: stTon2.bTonIn1 := FALSE;",
+            "    30: stTon2.bTonIn1 := TRUE;",
+            "END_CASE;",
+            "fbGroup(pGroup := REF(stGroup), pMembers := REF(stMembers), pLinks := REF(stLinks),",
+            "        bRun := nCycle >= UDINT#2, bErrAck := nCycle >= UDINT#16 AND nCycle < UDINT#18, tNow := nNow);",
+            "sState := SL_STATE_STR(nType := UINT#1, nState := stGEStop.nState);",
+            "sDiag := SL_DIAG_TEXT(nType := UINT#1, nDiag := stGEStop.nDiag);",
+            "nTon2Rc := SL_TON2_CYCLE(pFb := REF(stTon2), tNow := nNow);",
+            "nTon2Get := SL_TON2_GET_ELAPSED(pFb := REF(stTon2), nElapsedMs => nTon2Elapsed);"]
+    return out
+
+
+def group_probe_c(hdr) -> str:
+    gs = hdr.structs["SL_GROUP"]
+    ins = [f.name for f in gs.fields if f.offset < 8 and not plcgen.is_reserved(f)]
+    outs = [f.name for f in gs.fields if f.offset >= 8 and not plcgen.is_reserved(f) and not f.is_struct]
+    P = "RES0__INSTANCE0"
+    out = ["void probe_group(MIR_GROUP *m)", "{"]
+    for n, v in GROUP_MEMBERS:
+        out.append(f"    memcpy(m->{v}, &{P}.{v.upper()}.value, sizeof m->{v});")
+    out.append(f"    memcpy(m->stGroup, &{P}.STGROUP.value, sizeof m->stGroup);")
+    out.append(f"    memcpy(m->stLinks, &{P}.STLINKS.value, sizeof m->stLinks);")
+    for n in ins:
+        out.append(f"    m->in_{n} = {P}.FBGROUP.{n.upper()}.value;")
+    for n in outs:
+        out.append(f"    m->out_{n} = {P}.FBGROUP.{n.upper()}.value;")
+    out += [f"    m->tNow = {P}.FBGROUP.TNOW.value;", f"    m->nStatus = {P}.FBGROUP.NSTATUS.value;",
+            f"    m->nSetup = {P}.NGROUPSETUP.value;",
+            f"    memcpy(m->sState, {P}.SSTATE.value.body, {P}.SSTATE.value.len); m->sState[{P}.SSTATE.value.len] = 0;",
+            f"    memcpy(m->sDiag, {P}.SDIAG.value.body, {P}.SDIAG.value.len); m->sDiag[{P}.SDIAG.value.len] = 0;",
+            f"    memcpy(m->stTon2, &{P}.STTON2.value, sizeof m->stTon2);",
+            f"    m->nTon2Rc = {P}.NTON2RC.value; m->nTon2Get = {P}.NTON2GET.value;",
+            f"    m->nTon2Elapsed = {P}.NTON2ELAPSED.value; m->nTon2Restore = {P}.NTON2RESTORE.value;", "}", ""]
+    return "\n".join(out)
+
+
+def group_mirror_h(hdr) -> str:
+    gs = hdr.structs["SL_GROUP"]
+    out = ["typedef struct {"]
+    for n, v in GROUP_MEMBERS:
+        out.append(f"    unsigned char {v}[{hdr.structs['FB_' + n].size}];")
+    out.append(f"    unsigned char stGroup[{gs.size}];")
+    out.append(f"    unsigned char stLinks[{hdr.structs['SL_LINK'].size} * 32];")
+    for f in gs.fields:
+        if plcgen.is_reserved(f) or f.is_struct:
+            continue
+        out.append(f"    {c_type(f)} {'in_' if f.offset < 8 else 'out_'}{f.name};")
+    out += ["    uint32_t tNow;", "    int32_t nStatus, nSetup, nTon2Rc, nTon2Get, nTon2Restore;", "    uint32_t nTon2Elapsed;",
+            "    char sState[130], sDiag[130];", f"    unsigned char stTon2[{hdr.structs['FB_TON2'].size}];",
+            "} MIR_GROUP;", "void probe_group(MIR_GROUP *m);", ""]
+    return "\n".join(out)
+
+
+def group_driver_c(hdr) -> str:
+    gs = hdr.structs["SL_GROUP"]
+    outs = [f.name for f in gs.fields if f.offset >= 8 and not plcgen.is_reserved(f) and not f.is_struct]
+    ins = [f.name for f in gs.fields if f.offset < 8 and not plcgen.is_reserved(f)]
+    base = {n: min(f.offset for f in hdr.blocks[[b.name for b in hdr.blocks].index(n)].outputs) for n, _ in GROUP_MEMBERS}
+    out = ["static SL_GROUP dg;", "static SL_MEMBER dmembers[32];", "static SL_LINK dlinks[32];"]
+    for n, v in GROUP_MEMBERS:
+        out.append(f"static FB_{n} d{v};")
+    out += ["static FB_TON2 dton2;", "static unsigned seen_group;", "static int32_t dton2_restore;", "",
+            "static void group_setup(void)", "{", "    int32_t rc;",
+            "    dstGEStop.wInputActive = 3; dstGEStop.tDiscTime12 = 100; dstGEStop.bEStopIn1 = 1; dstGEStop.bEStopIn2 = 1;",
+            "    dstGMon.wInputActive = 3; dstGMon.tDiscTime12 = 100; dstGMon.bMonIn1 = 1; dstGMon.bMonIn2 = 1;",
+            "    dstGAnd.wInputActive = 3;",
+            "    rc = sl_group_init(&dg, dmembers, 32, dlinks, 32);"]
+    for n, v in GROUP_MEMBERS:
+        out.append(f"    rc += sl_group_add_member(&dg, dmembers, SL_TYPE_{n}, &d{v}, NULL);")
+    for sm, so, dm, do in group_links(hdr):
+        out.append(f"    rc += sl_group_add_link(&dg, dmembers, dlinks, {sm}, {so}, {dm}, {do});")
+    out += ['    CHECK(rc == 0, "direct group setup returned %d", (int)rc);',
+            f"    dton2.wInputActive = 1; dton2.tDelay = 100; dton2.dwOptions = SL_OPT_TON2_REMAINING_TIME;",
+            "    sl_ton2_init(&dton2);", f"    dton2_restore = sl_ton2_restore_elapsed(&dton2, {TON2_RESTORED});", "}", "",
+            "static void step_group(int k)", "{", "    MIR_GROUP m;", "    int32_t rc;", "    uint32_t el = 0;",
+            "    char diag[130];", "    probe_group(&m);", "    if (k == 0) {",
+            '        CHECK(m.nSetup == 0, "ST group setup (SL_GROUP_INIT, SL_GROUP_ADD_*, SL_GROUP_ADD_LINK) returned %d", (int)m.nSetup);',
+            '        CHECK(m.nTon2Restore == dton2_restore && dton2_restore == 0, "SL_TON2_RESTORE_ELAPSED %d, direct %d", (int)m.nTon2Restore, (int)dton2_restore);',
+            "    }"]
+    for n, v in GROUP_MEMBERS:
+        out.append(f"    memcpy(&d{v}, m.{v}, {base[n]}); /* the inputs and parameters the ST program wrote */")
+    for n in ins:
+        out.append(f"    dg.{n} = m.in_{n};")
+    out += ["    rc = sl_group_cycle(&dg, dmembers, dlinks, m.tNow);",
+            '    CHECK(rc == m.nStatus, "group cycle %d: FB_SL_GROUP nStatus %d, direct %d", k, (int)m.nStatus, (int)rc);']
+    for n in outs:
+        out.append(f'    CHECK(m.out_{n} == dg.{n}, "group cycle %d: {n} ST %ld, direct %ld", k, (long)m.out_{n}, (long)dg.{n});')
+    out.append('    CHECK(memcmp(m.stGroup, &dg, sizeof dg) == 0, "group cycle %d: SL_GROUP bytes differ", k);')
+    out.append('    CHECK(memcmp(m.stLinks, dlinks, sizeof dlinks) == 0, "group cycle %d: link storage differs", k);')
+    for n, v in GROUP_MEMBERS:
+        out.append(f'    CHECK(memcmp(m.{v}, &d{v}, sizeof d{v}) == 0, "group cycle %d: member {n} bytes differ", k);')
+    out += ['    CHECK(strcmp(m.sState, sl_state_str(SL_TYPE_ESTOP, dstGEStop.nState)) == 0, "cycle %d: SL_STATE_STR \'%s\'", k, m.sState);',
+            "    sl_diag_text(SL_TYPE_ESTOP, dstGEStop.nDiag, diag, 127);",
+            '    CHECK(strcmp(m.sDiag, diag) == 0, "cycle %d: SL_DIAG_TEXT \'%s\', C \'%s\'", k, m.sDiag, diag);',
+            "    if (k == 2) { dton2.bRun = 1; dton2.bEnable = 1; dton2.bTonIn1 = 1; }",
+            "    if (k == 9) dton2.bTonIn1 = 0;", "    if (k == 30) dton2.bTonIn1 = 1;",
+            "    rc = sl_ton2_cycle(&dton2, m.tNow);",
+            '    CHECK(rc == m.nTon2Rc && memcmp(m.stTon2, &dton2, sizeof dton2) == 0, "cycle %d: SL_TON2_CYCLE differs", k);',
+            "    rc = sl_ton2_get_elapsed(&dton2, &el);",
+            '    CHECK(rc == m.nTon2Get && el == m.nTon2Elapsed, "cycle %d: SL_TON2_GET_ELAPSED %d/%u, direct %d/%u", k, (int)m.nTon2Get, (unsigned)m.nTon2Elapsed, (int)rc, (unsigned)el);',
+            "    if (dg.nState == 1) seen_group |= (seen_group & 4) ? 9u : 1u;",
+            "    if (dg.nState == 4 && (seen_group & 1)) seen_group |= 2u;",
+            "    if (dg.nState == 5 && (seen_group & 2)) seen_group |= 4u;",
+            '    if (getenv_trace()) printf("GROUP %2d rc %3d state %u diag %u failed %u; AND out %u; ESTOP %s / %s; TON2 elapsed %u\\n", k, (int)m.nStatus, (unsigned)dg.nState, (unsigned)dg.nDiag, (unsigned)dg.nFailedMember, (unsigned)dstGAnd.bAndOut, m.sState, m.sDiag, (unsigned)el);',
+            "}", ""]
     return "\n".join(out)
 
 
@@ -162,7 +319,7 @@ def mirror_h(hdr) -> str:
         out.append(f"}} MIR_{b.name};")
         out.append(f"void probe_{b.lower}(MIR_{b.name} *m);")
     out += ["int probe_selftest(uint32_t *nChecked, uint32_t *nFailed);", "uint32_t probe_clock(void);", ""]
-    return "\n".join(out)
+    return "\n".join(out) + group_mirror_h(hdr)
 
 
 def probe_c(hdr) -> str:
@@ -187,7 +344,7 @@ def probe_c(hdr) -> str:
             "    *nFailed = RES0__INSTANCE0.FBSELFTEST.NFAILED.value;",
             "    return RES0__INSTANCE0.FBSELFTEST.BOK.value;", "}",
             "uint32_t probe_clock(void) { return RES0__INSTANCE0.NCLOCK.value; }", ""]
-    return "\n".join(out)
+    return "\n".join(out) + group_probe_c(hdr)
 
 
 def driver_c(hdr) -> str:
@@ -237,8 +394,11 @@ def driver_c(hdr) -> str:
         out.append("")
     out.insert(out.index("static int passed, failed;"),
                "#include <stdlib.h>\nstatic int getenv_trace(void) { return getenv(\"SL_MATIEC_TRACE\") != NULL; }")
+    out.append(group_driver_c(hdr))
     out += ["int main(void)", "{", "    int k;", "    uint32_t nChecked = 0, nFailed = 0, t0;", "    config_init__();",
-            f"    for (k = 0; k < {N_CYCLES}; k++) {{", "        t0 = sl_time_now_ms();", "        config_run__((unsigned long)k);"]
+            "    group_setup();",
+            f"    for (k = 0; k < {N_CYCLES}; k++) {{", "        t0 = sl_time_now_ms();", "        config_run__((unsigned long)k);",
+            "        step_group(k);"]
     for b in hdr.blocks:
         out.append(f"        step_{b.lower}(k);")
     out += ['        CHECK((uint32_t)(probe_clock() - t0) < 1000u, "SL_TIME_NOW_MS = %u, sl_time_now_ms = %u", '
@@ -252,6 +412,8 @@ def driver_c(hdr) -> str:
                    f'(seen_{b.lower} & 4) ? "reset " : "", (seen_{b.lower} & 8) ? "run-again" : "");')
         out.append(f'    printf("{b.name}: %d cycles through FB_{b.name}, %d returned SL_OK; run, ERROR, RESET, run again: %s\\n", '
                    f'{N_CYCLES}, ok_{b.lower}, seen_{b.lower} == 15u ? "yes" : "NO");')
+    out.append('    CHECK(seen_group == 15u, "group (ESTOP, MON -> AND): RUN, ERROR, RESET, RUN again not all reached (%u)", seen_group);')
+    out.append(f'    printf("group (ESTOP, MON -> AND, 2 links) through FB_SL_GROUP: {N_CYCLES} cycles; RUN, ERROR, RESET, RUN again: %s\\n", seen_group == 15u ? "yes" : "NO");')
     out += ['    printf("%d passed, %d failed\\n", passed, failed);', "    return failed == 0 ? 0 : 1;", "}", ""]
     return "\n".join(out)
 
