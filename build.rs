@@ -16,6 +16,10 @@ fn main() {
     println!("cargo:rerun-if-changed=src");
     println!("cargo:rerun-if-changed=cbindgen.toml");
     println!("cargo:rerun-if-env-changed=SAFELOGIC_WRITE_HEADER");
+    // SONAME of the shared library (major version 0); tools/install.sh installs the versioned names.
+    if env::var("CARGO_CFG_TARGET_OS").as_deref() == Ok("linux") {
+        println!("cargo:rustc-cdylib-link-arg=-Wl,-soname,libsafelogic.so.0");
+    }
 
     let rows = registry_rows(&dir);
     let mut config = cbindgen::Config::from_file(dir.join("cbindgen.toml")).expect("cbindgen.toml");

@@ -1,21 +1,59 @@
 #!/usr/bin/env bash
-# Installs safelogic into PREFIX (default /usr/local): the static and shared library, the
-# header, and the pkg-config file safelogic.pc (ABI.md §1).
-#   tools/install.sh [PREFIX]
-# Then: cc app.c $(pkg-config --cflags --libs safelogic)            (shared)
-#       cc app.c $(pkg-config --cflags --libs --static safelogic)   (static: add -l:libsafelogic.a)
+# Installs safelogic (builds it first with `cargo build --release`):
+#   $DESTDIR$PREFIX/lib/libsafelogic.so.X.Y.Z   shared library, SONAME libsafelogic.so.X
+#   $DESTDIR$PREFIX/lib/libsafelogic.so.X       symlink (what programs load)
+#   $DESTDIR$PREFIX/lib/libsafelogic.so         symlink (what `-lsafelogic` finds at link time)
+#   $DESTDIR$PREFIX/lib/libsafelogic.a          static library (debug info and LLVM bitcode stripped)
+#   $DESTDIR$PREFIX/include/safelogic.h
+#   $DESTDIR$PREFIX/lib/pkgconfig/safelogic.pc  (Libs.private: what the static library needs)
+#
+#   PREFIX=/usr/local tools/install.sh          (default PREFIX /usr/local)
+#   tools/install.sh /opt/safelogic             (a positional PREFIX wins over the variable)
+#   DESTDIR=/tmp/pkgroot PREFIX=/usr tools/install.sh   (staged install for packaging: the
+#                                               files land under DESTDIR, safelogic.pc says /usr)
+#   LIBDIR=lib/x86_64-linux-gnu tools/install.sh   (library directory relative to PREFIX)
+#
+# Then (see README, "Linking from C"):
+#   cc app.c $(pkg-config --cflags --libs safelogic)                  shared; run after ldconfig,
+#                                                                      or add -Wl,-rpath,<libdir>
+#   cc -static app.c $(pkg-config --static --cflags --libs safelogic) static executable
 set -euo pipefail
 cd "$(dirname "$0")/.."
-prefix=${1:-/usr/local}
+prefix=${1:-${PREFIX:-/usr/local}}
+destdir=${DESTDIR:-}
+libdir_rel=${LIBDIR:-lib}
+case $prefix in
+/*) ;;
+*) echo "install.sh: PREFIX must be an absolute path (got '$prefix')" >&2; exit 2 ;;
+esac
 version=$(sed -n 's/^version = "\(.*\)"/\1/p' Cargo.toml | head -1)
+major=${version%%.*}
+soname=libsafelogic.so.$major
 cargo build --release --quiet
-install -d "$prefix/lib/pkgconfig" "$prefix/include"
-install -m 644 target/release/libsafelogic.a "$prefix/lib/"
-install -m 755 target/release/libsafelogic.so "$prefix/lib/"
-install -m 644 include/safelogic.h "$prefix/include/"
-cat > "$prefix/lib/pkgconfig/safelogic.pc" <<PC
+so=target/release/libsafelogic.so
+# The SONAME is set in build.rs; refuse to install a library whose SONAME disagrees.
+if command -v readelf >/dev/null 2>&1; then
+    got=$(readelf -d "$so" | sed -n 's/.*Library soname: \[\(.*\)\].*/\1/p')
+    if [ "$got" != "$soname" ]; then
+        echo "install.sh: $so has SONAME '$got', expected '$soname' (build.rs)" >&2
+        exit 1
+    fi
+fi
+lib=$destdir$prefix/$libdir_rel
+inc=$destdir$prefix/include
+install -d "$lib/pkgconfig" "$inc"
+install -m 755 "$so" "$lib/libsafelogic.so.$version"
+strip --strip-unneeded "$lib/libsafelogic.so.$version"
+ln -sfn "libsafelogic.so.$version" "$lib/$soname"
+ln -sfn "$soname" "$lib/libsafelogic.so"
+install -m 644 target/release/libsafelogic.a "$lib/libsafelogic.a"
+# Most of the archive is Rust's prebuilt std objects: their DWARF and the LLVM bitcode
+# embedded for LTO (.llvmbc). A C linker needs neither (22 MB -> about 4 MB).
+objcopy --strip-debug --remove-section=.llvmbc --remove-section=.llvmcmd "$lib/libsafelogic.a"
+install -m 644 include/safelogic.h "$inc/safelogic.h"
+cat > "$lib/pkgconfig/safelogic.pc" <<PC
 prefix=$prefix
-libdir=\${prefix}/lib
+libdir=\${prefix}/$libdir_rel
 includedir=\${prefix}/include
 
 Name: safelogic
@@ -23,6 +61,6 @@ Description: TwinSAFE-style safety logic function blocks behind a C ABI (not a c
 Version: $version
 Cflags: -I\${includedir}
 Libs: -L\${libdir} -lsafelogic
-Libs.private: -lpthread -ldl -lm
+Libs.private: -lpthread -ldl -lm -lrt -lutil
 PC
-echo "installed safelogic $version into $prefix (pkg-config file: $prefix/lib/pkgconfig/safelogic.pc)"
+echo "installed safelogic $version into $destdir$prefix (libdir $libdir_rel, SONAME $soname; pkg-config file: $lib/pkgconfig/safelogic.pc)"

@@ -16,10 +16,14 @@
 #   5. tools/plc_strict.py: the IEC flavour through the strict tree-sitter grammar;
 #   6. the CODESYS C adapter: built with gcc -Werror, its generated test run against
 #      target/release/libsafelogic.a;
-#   7. tools/plc_matiec_mimic.py: the IEC flavour's inline-C bodies compiled as matiec would
-#      emit them (gcc and g++), run against the library;
+#   7. matiec: iec2c (built from ../shared/vendor/matiec, or $MATIEC_DIR) compiles the IEC file
+#      unchanged with OpenPLC's options -f -l -p -r -R -a together with a test program;
+#      tools/plc_matiec_run.py compiles the generated C, links it with the library and runs every
+#      block through its ST FB, cycle by cycle against direct C calls (skipped, and said so,
+#      when ../shared/vendor/matiec is missing);
 #   8. genericity: tools/plc_synthetic.py adds a synthetic block FB_SYNTH (new field shapes) to a
-#      copy of the header; the bindings generated from it go through steps 4-7 (with a C stub).
+#      copy of the header; the bindings generated from it go through steps 4-6 and the matiec
+#      compile (with a C stub).
 # Exit status: 0 only if every step passed.
 #
 # Environment: PYTHON (default python3, >= 3.8) for the venv and the stdlib-only tools;
@@ -183,13 +187,23 @@ EOF2
 }
 step "TcCOM method bodies" tccom_syntax
 
-note "7. IEC inline-C bodies compiled the way matiec emits them (gcc and g++)"
-if [ -f "$LIB" ]; then
-    step "matiec mimic" "$PY" tools/plc_matiec_mimic.py --st plc_bindings/iec/safelogic_iec.st \
-        --workdir "$WORK/mimic" --lib "$LIB" --include include
+note "7. IEC flavour under the real matiec compiler (iec2c from ../shared/vendor/matiec)"
+# tools/test-all.sh builds iec2c and passes MATIEC_DIR; standalone, this builds it the same way.
+MATIEC_SRC=${MATIEC_SRC:-$ROOT/../shared/vendor/matiec}
+if [ -z "${MATIEC_DIR+set}" ] && [ -x "$MATIEC_SRC/build_iec2c.sh" ]; then
+    MATIEC_DIR=$(bash "$MATIEC_SRC/build_iec2c.sh" "$ROOT/build/matiec" | tail -n 1)
+fi
+if [ -n "${MATIEC_DIR:-}" ] && [ -x "$MATIEC_DIR/iec2c" ]; then
+    if [ -f "$LIB" ]; then
+        step "matiec: compile, link, run every block against direct C calls" "$PY" tools/plc_matiec_run.py \
+            --iec2c "$MATIEC_DIR/iec2c" --matiec-lib "$MATIEC_DIR/lib" --workdir "$WORK/matiec" --lib "$LIB"
+    else
+        echo "FAIL: $LIB missing - run cargo build --release first"
+        TOTAL_FAIL=$((TOTAL_FAIL + 1))
+    fi
 else
-    echo "FAIL: $LIB missing - run cargo build --release first"
-    TOTAL_FAIL=$((TOTAL_FAIL + 1))
+    echo "SKIPPED: matiec stage - no iec2c: $MATIEC_SRC (matiec's source and build_iec2c.sh) is missing"
+    MATIEC_DIR=""
 fi
 
 note "8. generator genericity: a synthetic block FB_SYNTH added to a copy of the header"
@@ -217,8 +231,13 @@ if [ -s "$SYN/c_layout.txt" ] && [ -x "$VENV/bin/python" ] && [ -f "$LIB" ]; the
         --c-layout "$SYN/c_layout.txt" --bindings "$SYN/plc_bindings" --sources iec,codesys,twincat-xml
     step "synthetic: strict IEC" "$VENV/bin/python" tools/plc_strict.py "$SYN/plc_bindings/iec/safelogic_iec.st"
     step "synthetic: CODESYS adapter" synthetic_adapter
-    step "synthetic: matiec mimic" "$PY" tools/plc_matiec_mimic.py --st "$SYN/plc_bindings/iec/safelogic_iec.st" \
-        --workdir "$SYN/mimic" --lib "$LIB" --include "$SYN" --extra "$SYN/synth_stub.c"
+    if [ -n "$MATIEC_DIR" ]; then
+        step "synthetic: matiec compile" "$PY" tools/plc_matiec_run.py --compile-only --iec2c "$MATIEC_DIR/iec2c" \
+            --matiec-lib "$MATIEC_DIR/lib" --workdir "$SYN/matiec" --header "$SYN/safelogic.h" \
+            --st "$SYN/plc_bindings/iec/safelogic_iec.st"
+    else
+        echo "SKIPPED: synthetic matiec compile (no iec2c, see step 7)"
+    fi
 else
     echo "FAIL: prerequisites of step 8 missing"
     TOTAL_FAIL=$((TOTAL_FAIL + 1))

@@ -256,6 +256,22 @@ def check_duts(src: Source, csizes, cmembers) -> None:
                 R.ok(s == c.size, f"{what}: field {c.name} has size {s}, C sizeof = {c.size}")
             R.ok(size == csizes[cname], f"{what}: SIZEOF = {size}, C sizeof = {csizes[cname]}")
     extra = set(src.duts) - {dut_of(c) for c in csizes}
+    # The group's storage DUTs of the IEC flavour (SL_MEMBER_STORAGE, SL_LINK_STORAGE) have no
+    # C struct of their own: the C side sees them as arrays. SL_LINK_STORAGE must hold whole
+    # SL_LINKs; SL_MEMBER_STORAGE 16 bytes (a 64-bit SL_MEMBER) per member, 8-byte aligned.
+    for name in sorted(x for x in extra if x.endswith("_STORAGE")):
+        memo = {}
+        for pack in (8, 4):
+            size, align, _ = layout(src.duts, name, pack, memo)
+            if name == "SL_LINK_STORAGE" and "SL_LINK" in csizes:
+                R.ok(size > 0 and size % csizes["SL_LINK"] == 0,
+                     f"{src.label}: SL_LINK_STORAGE SIZEOF {size} is not a whole number of SL_LINK ({csizes['SL_LINK']})")
+            elif name == "SL_MEMBER_STORAGE":
+                R.ok(size > 0 and size % 16 == 0 and align == min(8, pack),
+                     f"{src.label}: SL_MEMBER_STORAGE SIZEOF {size} / alignment {align}: not 16-byte slots, aligned to min(8, pack {pack})")
+            else:
+                R.ok(False, f"{src.label}: storage DUT {name} of unknown purpose")
+        extra.discard(name)
     R.ok(not extra, f"{src.label}: DUTs without a C struct: {sorted(extra)}")
 
 

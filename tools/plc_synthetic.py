@@ -8,9 +8,9 @@ Writes into --out:
                not have yet: an array input, a signed input, a time output, an array output;
                the prototype of sl_synth_cycle wrapped over two lines), with its layout asserts;
   synth_stub.c a C implementation of sl_synth_init/sl_synth_cycle to link the generated
-               CODESYS adapter test and the matiec mimic against.
+               CODESYS adapter test against.
 The check then generates the bindings from that header and runs the layout, strict-parse,
-adapter and mimic checks on them: a new block in the same header style needs no change to
+adapter check and the matiec compile on them: a new block in the same header style needs no change to
 the generator. Stdlib only.
 """
 

@@ -662,7 +662,16 @@ def func_decl(hdr: Header, fl: Flavour, f: CFunc) -> str:
         out.append("VAR")
         out.append(f"    nResult : {st_ret_type(f)};")
         out.append("END_VAR")
+    if fl.iec and not params:
+        out.append(IEC_NO_INPUT_VAR)
     return "\n".join(out) + "\n"
+
+
+# matiec's grammar needs at least one VAR block in a FUNCTION, and it refuses a call with an
+# empty parameter list unless run with -i (OpenPLC does not): a function without inputs gets
+# an unused local and is called as NAME(EN := TRUE) (EN: the implicit input of every function).
+IEC_NO_INPUT_VAR = ("VAR\n    bNoInput : BOOL; (* matiec needs a VAR block; call this function as "
+                    "NAME(EN := TRUE) *)\nEND_VAR")
 
 
 def cpp_asm_decl(f: CFunc, local: str) -> List[str]:
@@ -813,7 +822,7 @@ def selftest_decl(hdr: Header, fl: Flavour) -> str:
 def selftest_body(hdr: Header, fl: Flavour) -> str:
     if fl.iec:
         return "\n".join([
-            "nFailed := DINT_TO_UDINT(SL_SELFTEST_LAYOUT());",
+            "nFailed := DINT_TO_UDINT(SL_SELFTEST_LAYOUT(EN := TRUE));",
             f"nChecked := UDINT#{sum(len(hdr.structs[n].fields) + 1 for n in hdr.order)};",
             "bOk := nFailed = UDINT#0;",
             "IF bOk THEN",
@@ -848,6 +857,7 @@ def iec_selftest_function(hdr: Header) -> Tuple[str, str]:
         "(* Number of layout mismatches between the DUTs as the C compiler sees them (matiec turns every "
         "STRUCT into a C struct, identifiers upper case) and the C header: sizeof and every member offset. "
         "0 = identical. Returns -1 when the pragma is not compiled. *)",
+        IEC_NO_INPUT_VAR,
     ]) + "\n"
     lines = ["SL_SELFTEST_LAYOUT := DINT#-1;", "{", "  SL_SELFTEST_LAYOUT = 0;"]
     for name in hdr.order:
@@ -860,6 +870,181 @@ def iec_selftest_function(hdr: Header) -> Tuple[str, str]:
             lines.append(f"  SL_SELFTEST_LAYOUT += ((char *)&{v}.{f.name.upper()} - (char *)&{v} != {f.offset});")
     lines.append("}")
     return decl, "\n".join(lines) + "\n"
+
+
+# --------------------------------------------------------------------------------------
+# IEC: the group (storage DUTs, functions, FB_SL_GROUP), texts, TON2 elapsed time
+# --------------------------------------------------------------------------------------
+
+IEC_GROUP_MEMBERS = 32
+IEC_GROUP_LINKS = 32
+
+
+def _iec_inline(f: CFunc, call_args: str, ret_var: str, pre: Optional[List[str]] = None) -> List[str]:
+    local = "sl_plc_" + f.name[3:]
+    lines = ["{"] + cpp_asm_decl(f, local) + (pre or [])
+    lines.append(f"  {ret_var} = {local}({call_args});")
+    lines.append("}")
+    return lines
+
+
+def _hfunc(hdr: Header, name: str) -> Optional[CFunc]:
+    fl = [f for f in hdr.funcs if f.name == name]
+    return fl[0] if fl else None
+
+
+def iec_group_objects(hdr: Header, fl: Flavour) -> List[Pou]:
+    """The group API of the header (sl_group_*) for matiec: caller-owned storage DUTs, one
+    function per C function (adding a member: one function per block type, so the member's
+    type tag always matches its DUT), and FB_SL_GROUP, the per-cycle wrapper."""
+    need = ["sl_group_init", "sl_group_add_member", "sl_group_add_link", "sl_group_cycle"]
+    funcs = {n: _hfunc(hdr, n) for n in need}
+    if any(f is None for f in funcs.values()) or "SL_GROUP" not in hdr.structs or "SL_LINK" not in hdr.structs:
+        return []
+    objs: List[Pou] = []
+    objs.append(Pou("DUT", "SL_MEMBER_STORAGE", "\n".join([
+        f"(* Storage for {IEC_GROUP_MEMBERS} group members (C SL_MEMBER: a pointer and the type tag, 16 bytes on "
+        "64-bit, 12 on 32-bit targets; never read or write it). *)",
+        "TYPE",
+        "    SL_MEMBER_STORAGE : STRUCT",
+        f"        aSlot : ARRAY [0..{2 * IEC_GROUP_MEMBERS - 1}] OF LWORD;",
+        "    END_STRUCT;",
+        "END_TYPE"]) + "\n"))
+    objs.append(Pou("DUT", "SL_LINK_STORAGE", "\n".join([
+        f"(* Storage for {IEC_GROUP_LINKS} links of a group (C SL_LINK[{IEC_GROUP_LINKS}]). *)",
+        "TYPE",
+        "    SL_LINK_STORAGE : STRUCT",
+        f"        aLink : ARRAY [0..{IEC_GROUP_LINKS - 1}] OF SL_LINK;",
+        "    END_STRUCT;",
+        "END_TYPE"]) + "\n"))
+    head = ["VAR_INPUT", "    pGroup : REF_TO SL_GROUP;", "    pMembers : REF_TO SL_MEMBER_STORAGE;"]
+    # SL_GROUP_INIT
+    f = funcs["sl_group_init"]
+    decl = "\n".join(["FUNCTION SL_GROUP_INIT : DINT",
+                      f"(* sl_group_init with the storage DUTs ({IEC_GROUP_MEMBERS} members, {IEC_GROUP_LINKS} links). "
+                      f"C: {ascii_doc(f.doc)} *)"] + head + ["    pLinks : REF_TO SL_LINK_STORAGE;", "END_VAR"]) + "\n"
+    body = "\n".join(["SL_GROUP_INIT := DINT#-1;"] + _iec_inline(
+        f, f"(void *)PGROUP, (void *)PMEMBERS, (uint16_t){IEC_GROUP_MEMBERS}, (void *)PLINKS, (uint16_t){IEC_GROUP_LINKS}",
+        "SL_GROUP_INIT")) + "\n"
+    objs.append(Pou("POU", "SL_GROUP_INIT", decl, body, end="END_FUNCTION"))
+    # SL_GROUP_ADD_<NAME>
+    f = funcs["sl_group_add_member"]
+    for b in hdr.blocks:
+        tag = [d for d in hdr.defines if d.name == f"SL_TYPE_{b.name}"]
+        if not tag:
+            continue
+        n = f"SL_GROUP_ADD_{b.name}"
+        decl = "\n".join([f"FUNCTION {n} : DINT",
+                          f"(* Adds a {dut_name(hdr, b.struct.name)} (type tag {tag[0].value}) as the next member; members are "
+                          f"numbered 0, 1, ... in the order they are added. C: {ascii_doc(f.doc)} *)"] + head +
+                         [f"    pBlock : REF_TO {dut_name(hdr, b.struct.name)};", "END_VAR"]) + "\n"
+        body = "\n".join([f"{n} := DINT#-1;"] + _iec_inline(
+            f, f"(void *)PGROUP, (void *)PMEMBERS, (uint16_t){tag[0].value}, (void *)PBLOCK, (void *)0", n)) + "\n"
+        objs.append(Pou("POU", n, decl, body, end="END_FUNCTION"))
+    # SL_GROUP_ADD_LINK
+    f = funcs["sl_group_add_link"]
+    decl = "\n".join(["FUNCTION SL_GROUP_ADD_LINK : DINT",
+                      "(* Links the BOOL output at byte nSrcOffset of member nSrcMember to the BOOL input at byte "
+                      "nDstOffset of member nDstMember (offsets: the @ numbers in the DUT comments). "
+                      f"C: {ascii_doc(f.doc)} *)"] + head +
+                     ["    pLinks : REF_TO SL_LINK_STORAGE;", "    nSrcMember : UINT;", "    nSrcOffset : UINT;",
+                      "    nDstMember : UINT;", "    nDstOffset : UINT;", "END_VAR"]) + "\n"
+    body = "\n".join(["SL_GROUP_ADD_LINK := DINT#-1;"] + _iec_inline(
+        f, "(void *)PGROUP, (void *)PMEMBERS, (void *)PLINKS, NSRCMEMBER, NSRCOFFSET, NDSTMEMBER, NDSTOFFSET",
+        "SL_GROUP_ADD_LINK")) + "\n"
+    objs.append(Pou("POU", "SL_GROUP_ADD_LINK", decl, body, end="END_FUNCTION"))
+    # SL_GROUP_CYCLE
+    f = funcs["sl_group_cycle"]
+    decl = "\n".join(["FUNCTION SL_GROUP_CYCLE : DINT", f"(* C: {ascii_doc(f.doc)} *)"] + head +
+                     ["    pLinks : REF_TO SL_LINK_STORAGE;", "    tNow : UDINT;", "END_VAR"]) + "\n"
+    body = "\n".join(["SL_GROUP_CYCLE := DINT#-1;"] + _iec_inline(
+        f, "(void *)PGROUP, (void *)PMEMBERS, (void *)PLINKS, TNOW", "SL_GROUP_CYCLE")) + "\n"
+    objs.append(Pou("POU", "SL_GROUP_CYCLE", decl, body, end="END_FUNCTION"))
+    # FB_SL_GROUP
+    g = hdr.structs["SL_GROUP"]
+    pub = [x for x in g.fields if not is_reserved(x) and not x.is_struct]
+    first_out = min((i for i, x in enumerate(g.fields) if is_reserved(x)), default=len(g.fields))
+    ins = [x for x in pub if g.fields.index(x) < first_out]
+    outs = [x for x in pub if g.fields.index(x) > first_out]
+    decl = ["FUNCTION_BLOCK FB_SL_GROUP",
+            f"(* {ascii_doc(g.doc)} One group cycle: copies the inputs into the group, runs sl_group_cycle (every member "
+            "in order, links first, one tNow), copies the outputs back. The group, its member DUTs and the storage "
+            "belong to the caller: SL_GROUP_INIT, SL_GROUP_ADD_<NAME> and SL_GROUP_ADD_LINK set it up while it is "
+            "stopped. *)",
+            "VAR_INPUT",
+            "    pGroup : REF_TO SL_GROUP;",
+            "    pMembers : REF_TO SL_MEMBER_STORAGE;",
+            "    pLinks : REF_TO SL_LINK_STORAGE;"]
+    for x in ins:
+        decl.append(f"    {x.name} : {dut_type(hdr, x)} := {zero_literal(dut_type(hdr, x), True)};{cmt(x.doc)}")
+    decl.append("    tNow : UDINT := UDINT#0;" + cmt("Task time in ms, as for the blocks."))
+    decl.append("END_VAR")
+    decl.append("VAR_OUTPUT")
+    for x in outs:
+        decl.append(f"    {x.name} : {dut_type(hdr, x)} := {zero_literal(dut_type(hdr, x), True)};{cmt(x.doc)}")
+    decl.append("    nStatus : DINT := DINT#0;" + cmt("Return value of sl_group_cycle."))
+    decl.append("END_VAR")
+    body = ["nStatus := DINT#-1;", "IF pGroup <> NULL THEN"]
+    body += [f"    pGroup^.{x.name} := {x.name};" for x in ins]
+    body += ["    nStatus := SL_GROUP_CYCLE(pGroup := pGroup, pMembers := pMembers, pLinks := pLinks, tNow := tNow);", "END_IF;",
+             f"IF nStatus = DINT#-1 THEN", "    (* no group: the safe state *)"]
+    for x in outs:
+        t = dut_type(hdr, x)
+        val = "DINT#0"
+        if x.name == "nState":
+            val = fl.const(hdr, "SL_STATE_ERROR", t)
+        else:
+            val = zero_literal(t, True)
+        body.append(f"    {x.name} := {val};")
+    body.append("ELSE")
+    body += [f"    {x.name} := pGroup^.{x.name};" for x in outs]
+    body.append("END_IF;")
+    objs.append(Pou("POU", "FB_SL_GROUP", "\n".join(decl) + "\n", "\n".join(body) + "\n", end="END_FUNCTION_BLOCK"))
+    return objs
+
+
+def iec_text_functions(hdr: Header) -> List[Pou]:
+    """sl_state_str / sl_diag_text as STRING functions, sl_ton2_get_elapsed (inline C)."""
+    objs: List[Pou] = []
+    f = _hfunc(hdr, "sl_state_str")
+    # no braces inside a pragma: matiec ends the pragma at the first '}'
+    copy = ["  const char *s_ = %s; size_t n_ = 0;",
+            "  while (s_ != 0 && s_[n_] != 0 && n_ < sizeof(%s.body)) %s.body[n_] = (u_int8_t)s_[n_], n_++;",
+            "  %s.len = (__strlen_t)n_;"]
+    if f is not None:
+        decl = "\n".join(["FUNCTION SL_STATE_STR : STRING",
+                          f"(* Name of state nState of a block of type nType (an SL_TYPE_ value), e.g. 'RUN'. C: {ascii_doc(f.doc)} *)",
+                          "VAR_INPUT", "    nType : UINT;", "    nState : BYTE;", "END_VAR"]) + "\n"
+        local = "sl_plc_state_str"
+        body = ["SL_STATE_STR := '';", "{"] + cpp_asm_decl(f, local)
+        body += [c % (("%s(NTYPE, NSTATE)" % local),) if i == 0 else c.replace("%s", "SL_STATE_STR") for i, c in enumerate(copy)]
+        body.append("}")
+        objs.append(Pou("POU", "SL_STATE_STR", decl, "\n".join(body) + "\n", end="END_FUNCTION"))
+    f = _hfunc(hdr, "sl_diag_text")
+    if f is not None:
+        decl = "\n".join(["FUNCTION SL_DIAG_TEXT : STRING",
+                          "(* Names of the diag bits nDiag of a block of type nType (an SL_TYPE_ value), '; '-separated, "
+                          f"truncated to the STRING length. C: {ascii_doc(f.doc)} *)",
+                          "VAR_INPUT", "    nType : UINT;", "    nDiag : WORD;", "END_VAR"]) + "\n"
+        local = "sl_plc_diag_text"
+        body = ["SL_DIAG_TEXT := '';", "{"] + cpp_asm_decl(f, local)
+        body += ["  char b_[sizeof(SL_DIAG_TEXT.body) + 1]; size_t n_ = 0;",
+                 f"  {local}(NTYPE, NDIAG, b_, sizeof b_);",
+                 "  while (b_[n_] != 0 && n_ < sizeof(SL_DIAG_TEXT.body)) SL_DIAG_TEXT.body[n_] = (u_int8_t)b_[n_], n_++;",
+                 "  SL_DIAG_TEXT.len = (__strlen_t)n_;", "}"]
+        objs.append(Pou("POU", "SL_DIAG_TEXT", decl, "\n".join(body) + "\n", end="END_FUNCTION"))
+    f = _hfunc(hdr, "sl_ton2_get_elapsed")
+    ton2 = [b for b in hdr.blocks if b.name == "TON2"]
+    if f is not None and ton2:
+        decl = "\n".join(["FUNCTION SL_TON2_GET_ELAPSED : DINT",
+                          f"(* The elapsed time stored in a TON2 instance, ms, in nElapsedMs (persist it; hand it back with "
+                          f"SL_TON2_RESTORE_ELAPSED after a power cycle). C: {ascii_doc(f.doc)} *)",
+                          "VAR_INPUT", f"    pFb : REF_TO {dut_name(hdr, ton2[0].struct.name)};", "END_VAR",
+                          "VAR_OUTPUT", "    nElapsedMs : UDINT;", "END_VAR"]) + "\n"
+        body = "\n".join(["SL_TON2_GET_ELAPSED := DINT#-1;", "nElapsedMs := UDINT#0;"] + _iec_inline(
+            f, "(void *)PFB, (void *)&NELAPSEDMS", "SL_TON2_GET_ELAPSED")) + "\n"
+        objs.append(Pou("POU", "SL_TON2_GET_ELAPSED", decl, body, end="END_FUNCTION"))
+    return objs
 
 
 # --------------------------------------------------------------------------------------
@@ -903,6 +1088,9 @@ def objects(hdr: Header, fl: Flavour) -> List[Pou]:
         objs.append(Pou("POU", fl.fn_name(f.name), func_decl(hdr, fl, f), func_body(hdr, fl, f), end="END_FUNCTION"))
     for b in hdr.blocks:
         objs.append(Pou("POU", f"FB_{b.name}", fb_decl(hdr, fl, b), fb_body(hdr, fl, b), end="END_FUNCTION_BLOCK"))
+    if fl.iec:
+        objs += iec_group_objects(hdr, fl)
+        objs += iec_text_functions(hdr)
     if fl.iec:
         d, body = iec_selftest_function(hdr)
         objs.append(Pou("POU", "SL_SELFTEST_LAYOUT", d, body, end="END_FUNCTION"))

@@ -1,0 +1,507 @@
+#!/usr/bin/env python3
+"""Runs the IEC 61131-3 bindings under the real matiec compiler (iec2c) and checks them cycle by
+cycle against direct C calls.
+
+    python3 tools/plc_matiec_run.py --iec2c DIR/iec2c --matiec-lib DIR/lib --workdir build/plc-check/matiec
+
+1. Writes a test project: plc_bindings/iec/safelogic_iec.st, unchanged, followed by a PROGRAM
+   that drives every block through its ST function block FB_<NAME> with a script (CASE on the
+   cycle number): configure, run (restart pulse where the block has one), change a parameter
+   while running (every block: SL_E_PARAM_CHANGED, ERROR), restore it, ErrAck rising and
+   falling edge (RESET, then out of it), run again. It also runs FB_SL_SELFTEST and calls
+   SL_TIME_NOW_MS.
+2. iec2c -f -l -p -r -R -a (OpenPLC's options) compiles it to C; gcc compiles that C (as C,
+   with matiec's lib/C headers) and links it with target/release/libsafelogic.a and a driver.
+3. The driver runs the PLC cycles. After every cycle it reads, for every block, the VAR_INPUTs
+   the ST program passed to FB_<NAME>, applies them to its own struct FB_<NAME> (the C header's),
+   calls sl_<name>_cycle directly with the same tNow, and compares the ST FB's status, every
+   VAR_OUTPUT (outputs, nState, nDiag) and every byte of the ST FB's C instance (stData) with
+   the direct call. It asserts that every block reached its run-like state, ERROR, RESET and
+   the run-like state again after the ErrAck.
+Prints "N passed, M failed". Standard library only (plus gcc).
+"""
+from __future__ import annotations
+
+import argparse
+import subprocess
+import sys
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parent.parent
+sys.path.insert(0, str(ROOT / "tools"))
+import plcgen  # noqa: E402
+
+CYCLE_MS = 10
+WALK = 28  # from this cycle on, every BOOL input in turn is inverted for one cycle
+N_CYCLES = WALK + 2 * 17
+ERROR = 4
+RESET = 5
+
+# Per block: a valid configuration with its "go" inputs, the input pulsed to (re)start it (or
+# None), the parameter changed while running, and the states that count as running.
+# Everything else (script, checks) is generic.
+BLOCKS = {
+    "ESTOP": dict(cfg=dict(wInputActive=0x3, tDiscTime12=100, bEStopIn1=1, bEStopIn2=1),
+                  pulse="bRestart", change=("tDiscTime12", 101), run={1}),
+    "MON": dict(cfg=dict(wInputActive=0x3, tDiscTime12=100, bMonIn1=1, bMonIn2=1),
+                pulse="bRestart", change=("tDiscTime12", 101), run={1}),
+    "AND": dict(cfg=dict(wInputActive=0x3, bAndIn1=1, bAndIn2=1), pulse=None,
+                change=("wInputNegated", 0x1), run={1}),
+    "OR": dict(cfg=dict(wInputActive=0x3, bOrIn1=1), pulse=None,
+               change=("wInputNegated", 0x2), run={1}),
+    "OPMODE": dict(cfg=dict(wInputActive=0x3, tDiscTime=100, bOpIn1=1), pulse=None,
+                   change=("tDiscTime", 101), run={1}),
+    "TWOHAND": dict(cfg=dict(wInputActive=0xF, tDiscTime12=50, tDiscTime34=50, tDiscTimePairs=500),
+                    pulse=("bTwoHand1", "bTwoHand2", "bTwoHand3", "bTwoHand4"), hold=True,
+                    change=("tDiscTimePairs", 501), run={1}),
+    "XOR": dict(cfg=dict(wInputActive=0x1, bXor1In1=1), pulse=None,
+                change=("wInputActive", 0x3), run={1}),
+    "DECOUPLE": dict(cfg=dict(wInputActive=0x1, bDecIn1=1), pulse=None,
+                     change=("wInputActive", 0x3), run={1}),
+    "EDM": dict(cfg=dict(wInputActive=0x3, tSwitchOnTime=100, tSwitchOffTime=100, bMon1=1, bMon2=1),
+                pulse=None, change=("tSwitchOnTime", 101), run={14, 15}),
+    "RS": dict(cfg=dict(wInputActive=0x3), pulse=("bSet",), change=("wInputNegated", 0x1), run={9}),
+    "SR": dict(cfg=dict(wInputActive=0x3), pulse=("bSet",), change=("wInputNegated", 0x1), run={9}),
+    "TON": dict(cfg=dict(wInputActive=0x1, tDelay=30, bTonIn1=1), pulse=None,
+                change=("tDelay", 31), run={1}),
+    "TON2": dict(cfg=dict(wInputActive=0x1, tDelay=30, bTonIn1=1, bEnable=1), pulse=None,
+                 change=("tDelay", 31), run={1}),
+    "TOF": dict(cfg=dict(wInputActive=0x1, tDelay=30, bTofIn1=1), pulse=None,
+                change=("tDelay", 31), run={1}),
+    "MUTING": dict(cfg=dict(wInputActive=0x3F, bMutingEnable=1, bEDM1=1, bEDM2=1, bOSSDIn1=1, bOSSDIn2=1),
+                   pulse=None, change=("tFilterTime", 1), run={1}),
+}
+
+
+BLOCK_INPUTS = {}  # block -> its BOOL inputs (filled from the header in main)
+
+
+def script(name: str) -> dict:
+    """cycle -> {input: value}: the ST program's inputs for that cycle (unchanged otherwise)."""
+    b = BLOCKS[name]
+    steps = {0: dict(b["cfg"], bRun=0, bErrAck=0), 2: {"bRun": 1}}
+    pulse = b["pulse"]
+    if isinstance(pulse, str):
+        pulse = (pulse,)
+    change, value = b["change"]
+    old = b["cfg"].get(change, 0)
+
+    def press(c0: int) -> None:
+        if pulse:
+            steps.setdefault(c0, {}).update({p: 1 for p in pulse})
+            if not b.get("hold"):
+                steps.setdefault(c0 + 2, {}).update({p: 0 for p in pulse})
+
+    press(4)
+    steps.setdefault(12, {}).update({change: value})            # parameter changed while running
+    if b.get("hold"):
+        steps[14] = {p: 0 for p in pulse}                       # release (a two-hand restart needs it)
+    steps.setdefault(14, {}).update({change: old})              # restored
+    steps[16] = {"bErrAck": 1}
+    steps[18] = {"bErrAck": 0}
+    press(22)
+    # the walk: every input byte must reach the C instance through the ST FB (stData compared)
+    cur = dict(b["cfg"], bRun=1, bErrAck=0)
+    bools = [f for f in BLOCK_INPUTS[name] if f not in ("bRun", "bErrAck")]
+    for i, f in enumerate(bools):
+        v = cur.get(f, 0)
+        steps.setdefault(WALK + 2 * i, {}).update({f: 1 - v})
+        steps.setdefault(WALK + 2 * i + 1, {}).update({f: v})
+    return steps
+
+
+def st_literal(hdr, fl, blk, field: str, value: int) -> str:
+    f = [x for x in blk.inputs if x.name == field]
+    if not f:
+        raise SystemExit(f"{blk.name}: no input {field}")
+    t, _, _ = fl.fb_type(hdr, f[0])
+    if t == "BOOL":
+        return "TRUE" if value else "FALSE"
+    return f"{t}#{value}"
+
+
+def st_program(hdr) -> str:
+    fl = plcgen.Flavour("iec")
+    out = ["", "(* ==== test program (tools/plc_matiec_run.py) ==== *)", "PROGRAM prog0", "VAR",
+           "    nCycle : UDINT := UDINT#0;", "    nNow : UDINT := UDINT#1000;", "    nClock : UDINT := UDINT#0;",
+           "    fbSelfTest : FB_SL_SELFTEST;"]
+    for b in hdr.blocks:
+        out.append(f"    fb{b.name} : FB_{b.name};")
+    out += GROUP_VARS
+    out += ["END_VAR", "nNow := nNow + UDINT#%d;" % CYCLE_MS, "nClock := SL_TIME_NOW_MS(EN := TRUE);",
+            "IF nCycle = UDINT#0 THEN", "    fbSelfTest();", "END_IF;"]
+    out += group_body(hdr)
+    for b in hdr.blocks:
+        steps = script(b.name)
+        out.append(f"CASE nCycle OF")
+        for c in sorted(steps):
+            args = ", ".join(f"{k} := {st_literal(hdr, fl, b, k, v)}" for k, v in steps[c].items())
+            out.append(f"    {c}: fb{b.name}({args}, tNow := nNow);")
+        out.append("ELSE")
+        out.append(f"    fb{b.name}(tNow := nNow);")
+        out.append("END_CASE;")
+    out += ["nCycle := nCycle + UDINT#1;", "END_PROGRAM", "",
+            "CONFIGURATION Config0", "  RESOURCE Res0 ON PLC",
+            "    TASK task0(INTERVAL := T#10ms, PRIORITY := 0);",
+            "    PROGRAM instance0 WITH task0 : prog0;", "  END_RESOURCE", "END_CONFIGURATION", ""]
+    return "\n".join(out)
+
+
+# ---- the group (ESTOP and MON feeding an AND through links), TON2 elapsed time, texts ----------
+GROUP_VARS = [
+    "    stGroup : SL_GROUP;", "    stMembers : SL_MEMBER_STORAGE;", "    stLinks : SL_LINK_STORAGE;",
+    "    stGEStop : ST_FB_ESTOP;", "    stGMon : ST_FB_MON;", "    stGAnd : ST_FB_AND;", "    fbGroup : FB_SL_GROUP;",
+    "    nGroupSetup : DINT := DINT#0;", "    sState : STRING;", "    sDiag : STRING;",
+    "    stTon2 : ST_FB_TON2;", "    nTon2Rc : DINT := DINT#0;", "    nTon2Get : DINT := DINT#0;",
+    "    nTon2Elapsed : UDINT := UDINT#0;", "    nTon2Restore : DINT := DINT#0;",
+]
+GROUP_MEMBERS = [("ESTOP", "stGEStop"), ("MON", "stGMon"), ("AND", "stGAnd")]
+TON2_RESTORED = 40
+
+
+def off(hdr, struct: str, field: str) -> int:
+    return [f for f in hdr.structs[struct].fields if f.name == field][0].offset
+
+
+def group_links(hdr):
+    return [(0, off(hdr, "FB_ESTOP", "bEStopOut"), 2, off(hdr, "FB_AND", "bAndIn1")),
+            (1, off(hdr, "FB_MON", "bMonOut"), 2, off(hdr, "FB_AND", "bAndIn2"))]
+
+
+def group_body(hdr):
+    g = "pGroup := REF(stGroup), pMembers := REF(stMembers)"
+    out = ["(* the group: set up once, then one FB_SL_GROUP call per cycle *)",
+           "IF nCycle = UDINT#0 THEN",
+           "    stGEStop.wInputActive := WORD#16#3; stGEStop.tDiscTime12 := UDINT#100;",
+           "    stGEStop.bEStopIn1 := TRUE; stGEStop.bEStopIn2 := TRUE;",
+           "    stGMon.wInputActive := WORD#16#3; stGMon.tDiscTime12 := UDINT#100;",
+           "    stGMon.bMonIn1 := TRUE; stGMon.bMonIn2 := TRUE;",
+           "    stGAnd.wInputActive := WORD#16#3;",
+           f"    nGroupSetup := SL_GROUP_INIT({g}, pLinks := REF(stLinks));"]
+    for name, var in GROUP_MEMBERS:
+        out.append(f"    nGroupSetup := nGroupSetup + SL_GROUP_ADD_{name}({g}, pBlock := REF({var}));")
+    for sm, so, dm, do in group_links(hdr):
+        out.append(f"    nGroupSetup := nGroupSetup + SL_GROUP_ADD_LINK({g}, pLinks := REF(stLinks), nSrcMember := UINT#{sm}, "
+                   f"nSrcOffset := UINT#{so}, nDstMember := UINT#{dm}, nDstOffset := UINT#{do});")
+    out += ["    (* TON2 through the function API: restore a persisted elapsed time before the start *)",
+            "    stTon2.wInputActive := WORD#16#1; stTon2.tDelay := UDINT#100; stTon2.dwOptions := DWORD#16#100;",
+            "    nTon2Rc := SL_TON2_INIT(pFb := REF(stTon2));",
+            f"    nTon2Restore := SL_TON2_RESTORE_ELAPSED(pFb := REF(stTon2), nElapsedMs := UDINT#{TON2_RESTORED});",
+            "END_IF;",
+            "CASE nCycle OF",
+            "    4, 22: stGEStop.bRestart := TRUE; stGMon.bRestart := TRUE;",
+            "    6, 24: stGEStop.bRestart := FALSE; stGMon.bRestart := FALSE;",
+            "    12: stGEStop.tDiscTime12 := UDINT#101;   (* parameter change: ESTOP ERROR, the group ERROR *)",
+            "    14: stGEStop.tDiscTime12 := UDINT#100;",
+            "    2: stTon2.bRun := TRUE; stTon2.bEnable := TRUE; stTon2.bTonIn1 := TRUE;",
+            "    9: stTon2.bTonIn1 := FALSE;",
+            "    30: stTon2.bTonIn1 := TRUE;",
+            "END_CASE;",
+            "fbGroup(pGroup := REF(stGroup), pMembers := REF(stMembers), pLinks := REF(stLinks),",
+            "        bRun := nCycle >= UDINT#2, bErrAck := nCycle >= UDINT#16 AND nCycle < UDINT#18, tNow := nNow);",
+            "sState := SL_STATE_STR(nType := UINT#1, nState := stGEStop.nState);",
+            "sDiag := SL_DIAG_TEXT(nType := UINT#1, nDiag := stGEStop.nDiag);",
+            "nTon2Rc := SL_TON2_CYCLE(pFb := REF(stTon2), tNow := nNow);",
+            "nTon2Get := SL_TON2_GET_ELAPSED(pFb := REF(stTon2), nElapsedMs => nTon2Elapsed);"]
+    return out
+
+
+def group_probe_c(hdr) -> str:
+    gs = hdr.structs["SL_GROUP"]
+    ins = [f.name for f in gs.fields if f.offset < 8 and not plcgen.is_reserved(f)]
+    outs = [f.name for f in gs.fields if f.offset >= 8 and not plcgen.is_reserved(f) and not f.is_struct]
+    P = "RES0__INSTANCE0"
+    out = ["void probe_group(MIR_GROUP *m)", "{"]
+    for n, v in GROUP_MEMBERS:
+        out.append(f"    memcpy(m->{v}, &{P}.{v.upper()}.value, sizeof m->{v});")
+    out.append(f"    memcpy(m->stGroup, &{P}.STGROUP.value, sizeof m->stGroup);")
+    out.append(f"    memcpy(m->stLinks, &{P}.STLINKS.value, sizeof m->stLinks);")
+    for n in ins:
+        out.append(f"    m->in_{n} = {P}.FBGROUP.{n.upper()}.value;")
+    for n in outs:
+        out.append(f"    m->out_{n} = {P}.FBGROUP.{n.upper()}.value;")
+    out += [f"    m->tNow = {P}.FBGROUP.TNOW.value;", f"    m->nStatus = {P}.FBGROUP.NSTATUS.value;",
+            f"    m->nSetup = {P}.NGROUPSETUP.value;",
+            f"    memcpy(m->sState, {P}.SSTATE.value.body, {P}.SSTATE.value.len); m->sState[{P}.SSTATE.value.len] = 0;",
+            f"    memcpy(m->sDiag, {P}.SDIAG.value.body, {P}.SDIAG.value.len); m->sDiag[{P}.SDIAG.value.len] = 0;",
+            f"    memcpy(m->stTon2, &{P}.STTON2.value, sizeof m->stTon2);",
+            f"    m->nTon2Rc = {P}.NTON2RC.value; m->nTon2Get = {P}.NTON2GET.value;",
+            f"    m->nTon2Elapsed = {P}.NTON2ELAPSED.value; m->nTon2Restore = {P}.NTON2RESTORE.value;", "}", ""]
+    return "\n".join(out)
+
+
+def group_mirror_h(hdr) -> str:
+    gs = hdr.structs["SL_GROUP"]
+    out = ["typedef struct {"]
+    for n, v in GROUP_MEMBERS:
+        out.append(f"    unsigned char {v}[{hdr.structs['FB_' + n].size}];")
+    out.append(f"    unsigned char stGroup[{gs.size}];")
+    out.append(f"    unsigned char stLinks[{hdr.structs['SL_LINK'].size} * 32];")
+    for f in gs.fields:
+        if plcgen.is_reserved(f) or f.is_struct:
+            continue
+        out.append(f"    {c_type(f)} {'in_' if f.offset < 8 else 'out_'}{f.name};")
+    out += ["    uint32_t tNow;", "    int32_t nStatus, nSetup, nTon2Rc, nTon2Get, nTon2Restore;", "    uint32_t nTon2Elapsed;",
+            "    char sState[130], sDiag[130];", f"    unsigned char stTon2[{hdr.structs['FB_TON2'].size}];",
+            "} MIR_GROUP;", "void probe_group(MIR_GROUP *m);", ""]
+    return "\n".join(out)
+
+
+def group_driver_c(hdr) -> str:
+    gs = hdr.structs["SL_GROUP"]
+    outs = [f.name for f in gs.fields if f.offset >= 8 and not plcgen.is_reserved(f) and not f.is_struct]
+    ins = [f.name for f in gs.fields if f.offset < 8 and not plcgen.is_reserved(f)]
+    base = {n: min(f.offset for f in hdr.blocks[[b.name for b in hdr.blocks].index(n)].outputs) for n, _ in GROUP_MEMBERS}
+    out = ["static SL_GROUP dg;", "static SL_MEMBER dmembers[32];", "static SL_LINK dlinks[32];"]
+    for n, v in GROUP_MEMBERS:
+        out.append(f"static FB_{n} d{v};")
+    out += ["static FB_TON2 dton2;", "static unsigned seen_group;", "static int32_t dton2_restore;", "",
+            "static void group_setup(void)", "{", "    int32_t rc;",
+            "    dstGEStop.wInputActive = 3; dstGEStop.tDiscTime12 = 100; dstGEStop.bEStopIn1 = 1; dstGEStop.bEStopIn2 = 1;",
+            "    dstGMon.wInputActive = 3; dstGMon.tDiscTime12 = 100; dstGMon.bMonIn1 = 1; dstGMon.bMonIn2 = 1;",
+            "    dstGAnd.wInputActive = 3;",
+            "    rc = sl_group_init(&dg, dmembers, 32, dlinks, 32);"]
+    for n, v in GROUP_MEMBERS:
+        out.append(f"    rc += sl_group_add_member(&dg, dmembers, SL_TYPE_{n}, &d{v}, NULL);")
+    for sm, so, dm, do in group_links(hdr):
+        out.append(f"    rc += sl_group_add_link(&dg, dmembers, dlinks, {sm}, {so}, {dm}, {do});")
+    out += ['    CHECK(rc == 0, "direct group setup returned %d", (int)rc);',
+            f"    dton2.wInputActive = 1; dton2.tDelay = 100; dton2.dwOptions = SL_OPT_TON2_REMAINING_TIME;",
+            "    sl_ton2_init(&dton2);", f"    dton2_restore = sl_ton2_restore_elapsed(&dton2, {TON2_RESTORED});", "}", "",
+            "static void step_group(int k)", "{", "    MIR_GROUP m;", "    int32_t rc;", "    uint32_t el = 0;",
+            "    char diag[130];", "    probe_group(&m);", "    if (k == 0) {",
+            '        CHECK(m.nSetup == 0, "ST group setup (SL_GROUP_INIT, SL_GROUP_ADD_*, SL_GROUP_ADD_LINK) returned %d", (int)m.nSetup);',
+            '        CHECK(m.nTon2Restore == dton2_restore && dton2_restore == 0, "SL_TON2_RESTORE_ELAPSED %d, direct %d", (int)m.nTon2Restore, (int)dton2_restore);',
+            "    }"]
+    for n, v in GROUP_MEMBERS:
+        out.append(f"    memcpy(&d{v}, m.{v}, {base[n]}); /* the inputs and parameters the ST program wrote */")
+    for n in ins:
+        out.append(f"    dg.{n} = m.in_{n};")
+    out += ["    rc = sl_group_cycle(&dg, dmembers, dlinks, m.tNow);",
+            '    CHECK(rc == m.nStatus, "group cycle %d: FB_SL_GROUP nStatus %d, direct %d", k, (int)m.nStatus, (int)rc);']
+    for n in outs:
+        out.append(f'    CHECK(m.out_{n} == dg.{n}, "group cycle %d: {n} ST %ld, direct %ld", k, (long)m.out_{n}, (long)dg.{n});')
+    out.append('    CHECK(memcmp(m.stGroup, &dg, sizeof dg) == 0, "group cycle %d: SL_GROUP bytes differ", k);')
+    out.append('    CHECK(memcmp(m.stLinks, dlinks, sizeof dlinks) == 0, "group cycle %d: link storage differs", k);')
+    for n, v in GROUP_MEMBERS:
+        out.append(f'    CHECK(memcmp(m.{v}, &d{v}, sizeof d{v}) == 0, "group cycle %d: member {n} bytes differ", k);')
+    out += ['    CHECK(strcmp(m.sState, sl_state_str(SL_TYPE_ESTOP, dstGEStop.nState)) == 0, "cycle %d: SL_STATE_STR \'%s\'", k, m.sState);',
+            "    sl_diag_text(SL_TYPE_ESTOP, dstGEStop.nDiag, diag, 127);",
+            '    CHECK(strcmp(m.sDiag, diag) == 0, "cycle %d: SL_DIAG_TEXT \'%s\', C \'%s\'", k, m.sDiag, diag);',
+            "    if (k == 2) { dton2.bRun = 1; dton2.bEnable = 1; dton2.bTonIn1 = 1; }",
+            "    if (k == 9) dton2.bTonIn1 = 0;", "    if (k == 30) dton2.bTonIn1 = 1;",
+            "    rc = sl_ton2_cycle(&dton2, m.tNow);",
+            '    CHECK(rc == m.nTon2Rc && memcmp(m.stTon2, &dton2, sizeof dton2) == 0, "cycle %d: SL_TON2_CYCLE differs", k);',
+            "    rc = sl_ton2_get_elapsed(&dton2, &el);",
+            '    CHECK(rc == m.nTon2Get && el == m.nTon2Elapsed, "cycle %d: SL_TON2_GET_ELAPSED %d/%u, direct %d/%u", k, (int)m.nTon2Get, (unsigned)m.nTon2Elapsed, (int)rc, (unsigned)el);',
+            "    if (dg.nState == 1) seen_group |= (seen_group & 4) ? 9u : 1u;",
+            "    if (dg.nState == 4 && (seen_group & 1)) seen_group |= 2u;",
+            "    if (dg.nState == 5 && (seen_group & 2)) seen_group |= 4u;",
+            '    if (getenv_trace()) printf("GROUP %2d rc %3d state %u diag %u failed %u; AND out %u; ESTOP %s / %s; TON2 elapsed %u\\n", k, (int)m.nStatus, (unsigned)dg.nState, (unsigned)dg.nDiag, (unsigned)dg.nFailedMember, (unsigned)dstGAnd.bAndOut, m.sState, m.sDiag, (unsigned)el);',
+            "}", ""]
+    return "\n".join(out)
+
+
+def c_type(f) -> str:
+    return plcgen.C_TYPE_FOR_PARAM(f.ctype)
+
+
+def mirror_h(hdr) -> str:
+    out = ["/* generated by tools/plc_matiec_run.py: neutral mirror of every ST FB's interface */",
+           "#include <stdint.h>", ""]
+    for b in hdr.blocks:
+        out.append("typedef struct {")
+        for f in b.inputs + b.outputs:
+            out.append(f"    {c_type(f)} {f.name}{'[%d]' % f.count if f.count else ''};")
+        out.append("    uint32_t tNow;")
+        out.append("    int32_t nStatus;")
+        out.append(f"    unsigned char stData[{b.struct.size}];")
+        out.append(f"}} MIR_{b.name};")
+        out.append(f"void probe_{b.lower}(MIR_{b.name} *m);")
+    out += ["int probe_selftest(uint32_t *nChecked, uint32_t *nFailed);", "uint32_t probe_clock(void);", ""]
+    return "\n".join(out) + group_mirror_h(hdr)
+
+
+def probe_c(hdr) -> str:
+    """Reads the ST program's FB instances (matiec's C structs); compiled with POUS.h."""
+    out = ["/* generated by tools/plc_matiec_run.py */", "#include <string.h>", '#include "iec_std_lib.h"',
+           '#include "POUS.h"', '#include "mirror.h"', "extern PROG0 RES0__INSTANCE0;", ""]
+    for b in hdr.blocks:
+        out.append(f"void probe_{b.lower}(MIR_{b.name} *m)")
+        out.append("{")
+        out.append(f"    FB_{b.name} *fb = &RES0__INSTANCE0.FB{b.name};")
+        for f in b.inputs + b.outputs:
+            if f.count:
+                out.append(f"    memcpy(m->{f.name}, fb->{f.name.upper()}.value.table, sizeof m->{f.name});")
+            else:
+                out.append(f"    m->{f.name} = fb->{f.name.upper()}.value;")
+        out.append("    m->tNow = fb->TNOW.value;")
+        out.append("    m->nStatus = fb->NSTATUS.value;")
+        out.append("    memcpy(m->stData, &fb->STDATA.value, sizeof m->stData);")
+        out.append("}")
+    out += ["int probe_selftest(uint32_t *nChecked, uint32_t *nFailed)", "{",
+            "    *nChecked = RES0__INSTANCE0.FBSELFTEST.NCHECKED.value;",
+            "    *nFailed = RES0__INSTANCE0.FBSELFTEST.NFAILED.value;",
+            "    return RES0__INSTANCE0.FBSELFTEST.BOK.value;", "}",
+            "uint32_t probe_clock(void) { return RES0__INSTANCE0.NCLOCK.value; }", ""]
+    return "\n".join(out) + group_probe_c(hdr)
+
+
+def driver_c(hdr) -> str:
+    out = ["/* generated by tools/plc_matiec_run.py: runs the matiec-compiled program and replays every",
+           "   block's inputs on directly called structs */",
+           "#include <stdio.h>", "#include <string.h>", '#include "safelogic.h"', '#include "mirror.h"', "",
+           "void config_init__(void);", "void config_run__(unsigned long tick);",
+           "/* what matiec's runtime (OpenPLC, Beremiz) defines */",
+           "typedef struct { long int tv_sec; long int tv_nsec; } IEC_TIMESPEC_;",
+           "IEC_TIMESPEC_ __CURRENT_TIME;", "unsigned char __DEBUG;", "",
+           "static int passed, failed;",
+           "#define CHECK(c, ...) do { if (c) { passed++; } else { failed++; if (failed < 40) { "
+           "printf(\"FAIL: \"); printf(__VA_ARGS__); printf(\"\\n\"); } } } while (0)", ""]
+    for b in hdr.blocks:
+        out.append(f"static {b.struct.name} d_{b.lower};")
+        out.append(f"static unsigned seen_{b.lower}; /* 1 run, 2 error after run, 4 reset, 8 run after reset */")
+        out.append(f"static int ok_{b.lower};")
+    out.append("")
+    for b in hdr.blocks:
+        run = " || ".join(f"m.nState == {s}" for s in sorted(BLOCKS[b.name]["run"]))
+        out.append(f"static void step_{b.lower}(int k)")
+        out.append("{")
+        out.append(f"    MIR_{b.name} m;")
+        out.append("    int32_t rc;")
+        out.append(f"    probe_{b.lower}(&m);")
+        for f in b.inputs:
+            if f.count:
+                out.append(f"    memcpy(d_{b.lower}.{f.name}, m.{f.name}, sizeof m.{f.name});")
+            else:
+                out.append(f"    d_{b.lower}.{f.name} = m.{f.name};")
+        out.append(f"    rc = {b.cycle.name}(&d_{b.lower}, m.tNow);")
+        out.append(f'    CHECK(rc == m.nStatus, "{b.name} cycle %d: ST nStatus %d, direct %d", k, (int)m.nStatus, (int)rc);')
+        for f in b.outputs:
+            if f.count:
+                out.append(f'    CHECK(memcmp(m.{f.name}, d_{b.lower}.{f.name}, sizeof m.{f.name}) == 0, "{b.name} cycle %d: {f.name}", k);')
+            else:
+                out.append(f'    CHECK(m.{f.name} == d_{b.lower}.{f.name}, "{b.name} cycle %d: {f.name} ST %ld, direct %ld", k, '
+                           f'(long)m.{f.name}, (long)d_{b.lower}.{f.name});')
+        out.append(f'    CHECK(memcmp(m.stData, &d_{b.lower}, sizeof m.stData) == 0, "{b.name} cycle %d: the ST instance bytes differ from the direct call", k);')
+        out.append(f"    if (rc == 0) ok_{b.lower}++;")
+        out.append(f"    if ({run}) seen_{b.lower} |= (seen_{b.lower} & 4) ? 9u : 1u;")
+        out.append(f"    if (m.nState == {ERROR} && (seen_{b.lower} & 1)) seen_{b.lower} |= 2u;")
+        out.append(f"    if (m.nState == {RESET} && (seen_{b.lower} & 2)) seen_{b.lower} |= 4u;")
+        out.append("    if (getenv_trace()) printf(\"%s %2d rc %3d state %2u diag %04x\\n\", \"" + b.name +
+                   "\", k, (int)rc, (unsigned)m.nState, (unsigned)m.nDiag);")
+        out.append("}")
+        out.append("")
+    out.insert(out.index("static int passed, failed;"),
+               "#include <stdlib.h>\nstatic int getenv_trace(void) { return getenv(\"SL_MATIEC_TRACE\") != NULL; }")
+    out.append(group_driver_c(hdr))
+    out += ["int main(void)", "{", "    int k;", "    uint32_t nChecked = 0, nFailed = 0, t0;", "    config_init__();",
+            "    group_setup();",
+            f"    for (k = 0; k < {N_CYCLES}; k++) {{", "        t0 = sl_time_now_ms();", "        config_run__((unsigned long)k);",
+            "        step_group(k);"]
+    for b in hdr.blocks:
+        out.append(f"        step_{b.lower}(k);")
+    out += ['        CHECK((uint32_t)(probe_clock() - t0) < 1000u, "SL_TIME_NOW_MS = %u, sl_time_now_ms = %u", '
+            '(unsigned)probe_clock(), (unsigned)t0);', "    }",
+            '    CHECK(probe_selftest(&nChecked, &nFailed) && nFailed == 0 && nChecked > 0, '
+            '"FB_SL_SELFTEST: bOk FALSE, %u of %u checks failed", (unsigned)nFailed, (unsigned)nChecked);',
+            '    printf("FB_SL_SELFTEST under matiec: %u layout checks, %u failed\\n", (unsigned)nChecked, (unsigned)nFailed);']
+    for b in hdr.blocks:
+        out.append(f'    CHECK(seen_{b.lower} == 15u, "{b.name}: run-like state, ERROR, RESET, run-like again: reached %s%s%s%s", '
+                   f'(seen_{b.lower} & 1) ? "run " : "", (seen_{b.lower} & 2) ? "error " : "", '
+                   f'(seen_{b.lower} & 4) ? "reset " : "", (seen_{b.lower} & 8) ? "run-again" : "");')
+        out.append(f'    printf("{b.name}: %d cycles through FB_{b.name}, %d returned SL_OK; run, ERROR, RESET, run again: %s\\n", '
+                   f'{N_CYCLES}, ok_{b.lower}, seen_{b.lower} == 15u ? "yes" : "NO");')
+    out.append('    CHECK(seen_group == 15u, "group (ESTOP, MON -> AND): RUN, ERROR, RESET, RUN again not all reached (%u)", seen_group);')
+    out.append(f'    printf("group (ESTOP, MON -> AND, 2 links) through FB_SL_GROUP: {N_CYCLES} cycles; RUN, ERROR, RESET, RUN again: %s\\n", seen_group == 15u ? "yes" : "NO");')
+    out += ['    printf("%d passed, %d failed\\n", passed, failed);', "    return failed == 0 ? 0 : 1;", "}", ""]
+    return "\n".join(out)
+
+
+def run(cmd, **kw):
+    r = subprocess.run(cmd, capture_output=True, text=True, **kw)
+    if r.returncode != 0:
+        sys.stdout.write(r.stdout[-4000:] + r.stderr[-4000:])
+        print(f"FAIL: {' '.join(map(str, cmd))} exited with {r.returncode}")
+        print("0 passed, 1 failed")
+        sys.exit(1)
+    return r
+
+
+def compile_only(args, hdr) -> int:
+    w = args.workdir
+    gen = w / "gen"
+    gen.mkdir(parents=True, exist_ok=True)
+    for p in gen.iterdir():
+        p.unlink()
+    prog = ["", "PROGRAM prog0", "VAR", "    fbSelfTest : FB_SL_SELFTEST;"]
+    prog += [f"    fb{b.name} : FB_{b.name};" for b in hdr.blocks]
+    prog += ["END_VAR", "fbSelfTest();"] + [f"fb{b.name}(tNow := UDINT#0);" for b in hdr.blocks]
+    prog += ["END_PROGRAM", "", "CONFIGURATION Config0", "  RESOURCE Res0 ON PLC",
+             "    TASK task0(INTERVAL := T#10ms, PRIORITY := 0);", "    PROGRAM instance0 WITH task0 : prog0;",
+             "  END_RESOURCE", "END_CONFIGURATION", ""]
+    (w / "test.st").write_text(args.st.read_text(encoding="utf-8") + "\n".join(prog), encoding="utf-8")
+    run([args.iec2c, "-f", "-l", "-p", "-r", "-R", "-a", "-I", args.matiec_lib, "-T", str(gen), str(w / "test.st")])
+    for src in (gen / "Config0.c", gen / "Res0.c"):
+        run(["gcc", "-std=gnu11", "-w", "-I", str(Path(args.matiec_lib) / "C"), "-I", str(gen), "-c", str(src),
+             "-o", str(w / (src.stem + ".o"))])
+    print(f"{args.st}: iec2c -f -l -p -r -R -a and gcc -c passed for {len(hdr.blocks)} blocks")
+    print("1 passed, 0 failed")
+    return 0
+
+
+def main() -> int:
+    ap = argparse.ArgumentParser()
+    ap.add_argument("--iec2c", required=True)
+    ap.add_argument("--matiec-lib", required=True)
+    ap.add_argument("--workdir", required=True, type=Path)
+    ap.add_argument("--lib", default=str(ROOT / "target/release/libsafelogic.a"))
+    ap.add_argument("--header", type=Path, default=ROOT / "include/safelogic.h")
+    ap.add_argument("--st", type=Path, default=ROOT / "plc_bindings/iec/safelogic_iec.st")
+    ap.add_argument("--compile-only", action="store_true",
+                    help="only compile (iec2c, then gcc -c) the IEC file with a program that calls every FB once "
+                         "(for the synthetic header of the genericity check)")
+    args = ap.parse_args()
+    hdr = plcgen.parse_header(args.header.read_text(encoding="utf-8"))
+    if args.compile_only:
+        return compile_only(args, hdr)
+    for b in hdr.blocks:
+        BLOCK_INPUTS[b.name] = [f.name for f in b.inputs if f.ctype == "SL_BOOL" and not f.count]
+    missing = [b.name for b in hdr.blocks if b.name not in BLOCKS]
+    if missing:
+        print(f"FAIL: no run script for {', '.join(missing)} in tools/plc_matiec_run.py BLOCKS")
+        print("0 passed, 1 failed")
+        return 1
+    w = args.workdir
+    w.mkdir(parents=True, exist_ok=True)
+    gen = w / "gen"
+    gen.mkdir(exist_ok=True)
+    for p in gen.iterdir():
+        p.unlink()
+    iec = args.st.read_text(encoding="utf-8")
+    (w / "test.st").write_text(iec + st_program(hdr), encoding="utf-8")
+    (w / "mirror.h").write_text(mirror_h(hdr), encoding="utf-8")
+    (w / "probe.c").write_text(probe_c(hdr), encoding="utf-8")
+    (w / "driver.c").write_text(driver_c(hdr), encoding="utf-8")
+    r = run([args.iec2c, "-f", "-l", "-p", "-r", "-R", "-a", "-I", args.matiec_lib, "-T", str(gen), str(w / "test.st")])
+    print(f"iec2c -f -l -p -r -R -a: plc_bindings/iec/safelogic_iec.st (unchanged) + test program compiled to "
+          f"{', '.join(sorted(p.name for p in gen.glob('*.c')))}")
+    inc = ["-I", str(Path(args.matiec_lib) / "C"), "-I", str(gen), "-I", str(w)]
+    # matiec's generated code is not warning-free; errors still fail the build
+    objs = []
+    for src in (gen / "Config0.c", gen / "Res0.c", w / "probe.c"):
+        o = w / (src.stem + ".o")
+        run(["gcc", "-std=gnu11", "-w", *inc, "-c", str(src), "-o", str(o)])
+        objs.append(str(o))
+    run(["gcc", "-std=c11", "-Wall", "-Wextra", "-Werror", "-I", str(ROOT / "include"), "-I", str(w),
+         "-c", str(w / "driver.c"), "-o", str(w / "driver.o")])
+    run(["gcc", str(w / "driver.o"), *objs, args.lib, "-lpthread", "-ldl", "-lm", "-o", str(w / "matiec_run")])
+    print("gcc: generated C compiled as C with matiec's lib/C headers, linked with libsafelogic.a")
+    r = subprocess.run([str(w / "matiec_run")], capture_output=True, text=True)
+    sys.stdout.write(r.stdout)
+    sys.stdout.write(r.stderr)
+    return r.returncode
+
+
+if __name__ == "__main__":
+    sys.exit(main())
