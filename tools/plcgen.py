@@ -503,7 +503,41 @@ def wrappable(hdr: Header, f: CFunc, allow_scalar_only: bool) -> bool:
     return has_block or allow_scalar_only
 
 
+def extra_funcs(hdr: Header) -> List[CFunc]:
+    """Functions beyond init/cycle that TwinCAT and CODESYS reach through the same machinery:
+    int32_t result, first parameter a pointer to a struct with a DUT, every other parameter a
+    scalar, a pointer to a scalar, to a DUT struct, to void (a block instance) or to a struct
+    with pointers (its storage DUT <NAME>_STORAGE). Today: the group API and
+    sl_ton2_get_elapsed. (Strings - sl_state_str, sl_diag_text - are not among them.)"""
+    out = []
+    for f in hdr.funcs:
+        if wrappable(hdr, f, True) or f.ret != "int32_t" or not f.params:
+            continue
+        p0 = f.params[0]
+        if not (p0.pointer and p0.ctype in hdr.structs):
+            continue
+        if all((not p.pointer and p.ctype in C_SCALARS) or
+               (p.pointer and (p.ctype in hdr.structs or p.ctype in C_SCALARS or p.ctype == "void"
+                               or re.fullmatch(r"SL_[A-Z]+", p.ctype) is not None))
+               for p in f.params):
+            out.append(f)
+    return out
+
+
+def storage_structs(hdr: Header) -> List[str]:
+    """Structs with pointers that a wrapped function takes: they get a storage DUT."""
+    return sorted({p.ctype for f in extra_funcs(hdr) for p in f.params
+                   if p.pointer and p.ctype not in hdr.structs and p.ctype not in C_SCALARS and p.ctype != "void"})
+
+
 def st_param_type(hdr: Header, fl: Flavour, p: CParam) -> str:
+    if p.pointer and p.ctype == "void":
+        return fl.ptr_type("BYTE")
+    if p.pointer and p.ctype in C_SCALARS:
+        size, signed, is_bool = C_SCALARS[p.ctype]
+        return fl.ptr_type("BOOL" if is_bool else (SIGNED[size] if signed else UNSIGNED_INT[size]))
+    if p.pointer and p.ctype not in hdr.structs:
+        return fl.ptr_type(p.ctype + "_STORAGE")
     if p.pointer:
         return fl.ptr_type(dut_name(hdr, p.ctype))
     # tNow and other scalars keep their integer type (UDINT for the ms clock)
@@ -691,6 +725,10 @@ def cpp_asm_decl(f: CFunc, local: str) -> List[str]:
     ]
 
 
+def c_type_of(f: CField) -> str:
+    return C_TYPE_FOR_PARAM(f.ctype)
+
+
 def C_TYPE_FOR_PARAM(ctype: str) -> str:
     return "uint8_t" if ctype == "SL_BOOL" else ctype
 
@@ -750,7 +788,7 @@ def gvl_decl(hdr: Header, fl: Flavour) -> str:
 
 
 def itf_methods(hdr: Header) -> List[CFunc]:
-    return [f for b in hdr.blocks for f in b.funcs if wrappable(hdr, f, False)]
+    return [f for b in hdr.blocks for f in b.funcs if wrappable(hdr, f, False)] + extra_funcs(hdr)
 
 
 def itf_method_decl(hdr: Header, f: CFunc) -> str:
@@ -1003,6 +1041,59 @@ def iec_group_objects(hdr: Header, fl: Flavour) -> List[Pou]:
     return objs
 
 
+def storage_dut_decl(sname: str) -> str:
+    return "\n".join([
+        "{attribute 'pack_mode' := '8'}",
+        f"TYPE {sname}_STORAGE :",
+        "STRUCT",
+        f"    (* Storage for {IEC_GROUP_MEMBERS} C {sname} (a pointer inside: 16 bytes on 64-bit, 12 on 32-bit targets). "
+        "Never read or write it; pass ADR() of it and its capacity. *)",
+        f"    aSlot : ARRAY [0..{2 * IEC_GROUP_MEMBERS - 1}] OF LWORD;",
+        "END_STRUCT",
+        "END_TYPE"]) + "\n"
+
+
+def group_fb(hdr: Header, fl: Flavour) -> List[Pou]:
+    """FB_SL_GROUP for TwinCAT and CODESYS: one group cycle through the wrapped sl_group_cycle."""
+    cyc = _hfunc(hdr, "sl_group_cycle")
+    if cyc is None or cyc not in extra_funcs(hdr) or "SL_GROUP" not in hdr.structs:
+        return []
+    g = hdr.structs["SL_GROUP"]
+    pub = [x for x in g.fields if not is_reserved(x) and not x.is_struct]
+    first_out = min((i for i, x in enumerate(g.fields) if is_reserved(x)), default=len(g.fields))
+    ins = [x for x in pub if g.fields.index(x) < first_out]
+    outs = [x for x in pub if g.fields.index(x) > first_out]
+    ptrs = [p for p in cyc.params if p.pointer]
+    decl = ["FUNCTION_BLOCK FB_SL_GROUP",
+            f"(* {ascii_doc(g.doc)} One group cycle: copies the inputs into the group, calls {fl.fn_name(cyc.name)} "
+            "(every member in order, links first, one tNow), copies the outputs back. The group, its member DUTs and "
+            f"the storage belong to the caller, who sets them up while the group is stopped with "
+            f"{', '.join(fl.fn_name(n) for n in ('sl_group_init', 'sl_group_add_member', 'sl_group_add_link'))}. *)",
+            "VAR_INPUT"]
+    for p in ptrs:
+        decl.append(f"    {st_param_name(p)} : {st_param_type(hdr, fl, p)};")
+    for x in ins:
+        decl.append(f"    {x.name} : {dut_type(hdr, x)} := {zero_literal(dut_type(hdr, x), False)};{cmt(x.doc)}")
+    decl.append("    tNow : UDINT := 0;" + cmt("Task time in ms, as for the blocks."))
+    decl += ["END_VAR", "VAR_OUTPUT"]
+    for x in outs:
+        decl.append(f"    {x.name} : {dut_type(hdr, x)} := {zero_literal(dut_type(hdr, x), False)};{cmt(x.doc)}")
+    decl += ["    nStatus : DINT := 0;" + cmt(f"Return value of {fl.fn_name(cyc.name)}."), "END_VAR"]
+    gp = st_param_name(ptrs[0])
+    args = ", ".join(f"{st_param_name(p)} := {st_param_name(p)}" for p in cyc.params)
+    body = [f"nStatus := {GVL}.SL_E_NULL;", f"IF {gp} <> 0 THEN"]
+    body += [f"    {gp}^.{x.name} := {x.name};" for x in ins]
+    body += [f"    nStatus := {fl.fn_name(cyc.name)}({args});", "END_IF;",
+             f"IF nStatus = {GVL}.SL_E_NULL THEN", "    (* no group, or the library was not reached: the safe state *)"]
+    for x in outs:
+        t = dut_type(hdr, x)
+        body.append(f"    {x.name} := {GVL + '.SL_STATE_ERROR' if x.name == 'nState' else zero_literal(t, False)};")
+    body.append("ELSE")
+    body += [f"    {x.name} := {gp}^.{x.name};" for x in outs]
+    body.append("END_IF;")
+    return [Pou("POU", "FB_SL_GROUP", "\n".join(decl) + "\n", "\n".join(body) + "\n", end="END_FUNCTION_BLOCK")]
+
+
 def iec_text_functions(hdr: Header) -> List[Pou]:
     """sl_state_str / sl_diag_text as STRING functions, sl_ton2_get_elapsed (inline C)."""
     objs: List[Pou] = []
@@ -1084,6 +1175,10 @@ def objects(hdr: Header, fl: Flavour) -> List[Pou]:
                 funcs.append(f)
     if fl.name != "twincat":
         funcs += [f for f in hdr.funcs if not f.params and wrappable(hdr, f, True)]
+    if not fl.iec:
+        for sname in storage_structs(hdr):
+            objs.append(Pou("DUT", sname + "_STORAGE", storage_dut_decl(sname)))
+        funcs += extra_funcs(hdr)
     for f in funcs:
         objs.append(Pou("POU", fl.fn_name(f.name), func_decl(hdr, fl, f), func_body(hdr, fl, f), end="END_FUNCTION"))
     for b in hdr.blocks:
@@ -1091,6 +1186,8 @@ def objects(hdr: Header, fl: Flavour) -> List[Pou]:
     if fl.iec:
         objs += iec_group_objects(hdr, fl)
         objs += iec_text_functions(hdr)
+    else:
+        objs += group_fb(hdr, fl)
     if fl.iec:
         d, body = iec_selftest_function(hdr)
         objs.append(Pou("POU", "SL_SELFTEST_LAYOUT", d, body, end="END_FUNCTION"))
@@ -1188,10 +1285,12 @@ TC_DIRS = {"DUT": ("DUTs", "TcDUT"), "GVL": ("GVLs", "TcGVL"), "ITF": ("ITFs", "
 def cds_funcs(hdr: Header) -> List[CFunc]:
     fl = [f for b in hdr.blocks for f in b.funcs if wrappable(hdr, f, False)]
     fl += [f for f in hdr.funcs if not f.params and wrappable(hdr, f, True)]
-    return fl
+    return fl + extra_funcs(hdr)
 
 
 def c_param_type(p: CParam) -> str:
+    if p.pointer and (p.ctype in C_SCALARS or p.ctype == "void"):
+        return f"{C_TYPE_FOR_PARAM(p.ctype)} *"
     return f"struct {p.ctype} *" if p.pointer else C_TYPE_FOR_PARAM(p.ctype) + " "
 
 
@@ -1277,7 +1376,8 @@ def tccom_cpp(hdr: Header) -> str:
            ""]
     for f in itf_methods(hdr):
         p0 = f.params[0]
-        rest = "".join(f", {C_TYPE_FOR_PARAM(p.ctype)} {st_param_name(p)}" for p in f.params[1:])
+        rest = "".join(f", {c_param_type(p).strip() if p.pointer else C_TYPE_FOR_PARAM(p.ctype)} {st_param_name(p)}"
+                       for p in f.params[1:])
         args = ", ".join([f"static_cast<struct {p0.ctype} *>({st_param_name(p0)})"] +
                          [st_param_name(p) for p in f.params[1:]])
         out.append(f"HRESULT CSafeLogicModule::{f.name}(PVOID {st_param_name(p0)}, {f.ret} *pnResult{rest})")
@@ -1347,16 +1447,98 @@ def adapter_test_c(hdr: Header) -> str:
         out.append(f'      CHECK(offsetof({n}_struct, {n}) == off, "{n}_struct return value at %zu, expected %zu", offsetof({n}_struct, {n}), off); }}')
     out.append("}")
     out.append("")
+    opts = [d for d in hdr.defines if d.name.startswith("SL_OPT_")]
+    out.append("/* Random configurations: every parameter drawn at random, kept only if the library accepts it")
+    out.append("   (init SL_OK and a stopped cycle SL_OK: the valid space, whatever a block's rules are), or, for")
+    out.append("   the labelled invalid share, only if the library refuses it. */")
+    out.append("static uint32_t rnd_time(void) { static const uint32_t t[] = {0u, 10u, 20u, 30u, 50u, 100u}; return t[rnd() % 6u]; }")
+    out.append("static uint32_t rnd_options(void)")
+    out.append("{")
+    out.append("    uint32_t o = 0;")
+    for d in opts:
+        out.append(f"    if (rnd() % 4u == 0u) o |= (uint32_t){d.name};")
+    out.append("    return o;")
+    out.append("}")
+    out.append("/* Signal inputs follow one common machine signal (mostly TRUE = no safe-state request, now and")
+    out.append("   then FALSE for a while), each with its own occasional one-cycle deviation (discrepancies);")
+    out.append("   bRestart/bErrAck are independent short pulses. */")
+    out.append("static uint8_t machine = 1u;")
+    out.append("static void next_machine(void) { machine = (uint8_t)(machine ? (rnd() % 24u != 0u) : (rnd() % 4u == 0u)); }")
+    out.append("/* pol: odd configurations invert a random subset of the inputs (mode selectors: one of n) */")
+    out.append("static uint8_t next_signal(uint8_t v, int pulse, unsigned pol)")
+    out.append("{")
+    out.append("    uint8_t m = (uint8_t)(machine ^ (pol & 1u));")
+    out.append("    if (pulse) return (uint8_t)(v ? (rnd() % 2u != 0u ? 0u : 1u) : (rnd() % 10u == 0u));")
+    out.append("    return (uint8_t)(rnd() % 40u == 0u ? !m : m);")
+    out.append("}")
+    out.append("")
     for b in hdr.blocks:
         s = b.struct.name
         cyc = b.cycle.name
         n = "cds_" + cyc
+        init = [f for f in b.funcs if f.name == f"sl_{b.lower}_init"]
         pn = [st_param_name(p) for p in b.cycle.params]
+        sig = [f for f in b.inputs if C_SCALARS.get(f.ctype, (0, 0, False))[2] and f.count is None
+               and f.name not in ("bRun",)]
+        params = [f for f in b.inputs if f not in sig and f.name not in ("bRun",)]
+        nsig = len([f for f in sig if f.name not in ("bErrAck",)])
+        mask = (1 << min(nsig, 16)) - 1
+        bump = ([f for f in params if is_time_ms(f) and f.count is None] +
+                [f for f in params if f.name == "wInputNegated"] + [f for f in params if f.count is None])
+        run_outs = [f for f in b.outputs if C_SCALARS.get(f.ctype, (0, 0, False))[2] and f.count is None
+                    and f.name != "bError"]
+        out.append(f"static void rnd_config_{b.lower}({s} *x)")
+        out.append("{")
+        for f in params:
+            if f.count is not None:
+                out.append(f"    {{ int i; for (i = 0; i < {f.count}; i++) x->{f.name}[i] = ({c_type_of(f)})(rnd() % 4u); }}")
+            elif f.name == "wInputActive":
+                out.append(f"    x->wInputActive = (uint16_t)(rnd() & 0x{mask:X}u);")
+            elif f.name == "wInputNegated":
+                out.append(f"    x->wInputNegated = (uint16_t)(rnd() % 2u == 0u ? 0u : (rnd() & 0x{mask:X}u));")
+            elif f.name == "dwOptions":
+                out.append("    x->dwOptions = rnd_options();")
+            elif is_time_ms(f):
+                out.append(f"    x->{f.name} = rnd_time();")
+            else:
+                out.append(f"    {{ static const unsigned v[] = {{0u, 1u, 10u, 100u}}; x->{f.name} = ({c_type_of(f)})v[rnd() % 4u]; }}")
+        out.append("}")
+        out.append(f"/* 1: a valid configuration (want_valid) or an invalid one was drawn into a and b */")
+        out.append(f"static int draw_{b.lower}({s} *a, {s} *b, int want_valid)")
+        out.append("{")
+        out.append("    long k;")
+        out.append("    for (k = 0; k < 200000L; k++) {")
+        out.append(f"        static {s} x;")
+        out.append("        int valid;")
+        out.append("        memset(&x, 0, sizeof x);")
+        out.append(f"        rnd_config_{b.lower}(&x);")
+        if init:
+            out.append(f"        valid = {init[0].name}(&x) == SL_OK && {cyc}(&x, 0u) == SL_OK;")
+        else:
+            out.append(f"        valid = {cyc}(&x, 0u) == SL_OK;")
+        out.append("        if (valid == want_valid) {")
+        out.append("            memset(&x.bRun, 0, 0); /* keep x's parameters, reset the instance */")
+        out.append("            memset(a, 0, sizeof *a);")
+        out.append(f"            rnd_config_{b.lower}(a); /* placeholder, overwritten below */")
+        for f in params:
+            if f.count is not None:
+                out.append(f"            memcpy(a->{f.name}, x.{f.name}, sizeof a->{f.name});")
+            else:
+                out.append(f"            a->{f.name} = x.{f.name};")
+        out.append("            *b = *a;")
+        out.append("            return 1;")
+        out.append("        }")
+        out.append("    }")
+        out.append("    return 0;")
+        out.append("}")
         out.append(f"static void test_{b.lower}(void)")
         out.append("{")
         out.append(f"    static {s} a, b;")
         out.append(f"    {n}_struct p;")
-        out.append("    int k, ok = 0;")
+        out.append("    int c, k, bump, ok = 0, cycles = 0, inv_cycles = 0, inv_config = 0, reached_run = 0, reached_error = 0;")
+        out.append("    int hist[12] = {0};")
+        out.append("    unsigned pol = 0;")
+        out.append("    uint32_t t = 1000u;")
         out.append("    memset(&a, 0, sizeof a);")
         out.append("    memset(&b, 0, sizeof b);")
         out.append("    memset(&p, 0, sizeof p);")
@@ -1364,7 +1546,6 @@ def adapter_test_c(hdr: Header) -> str:
         out.append(f"    p.{n} = 12345;")
         out.append(f"    {n}(&p);")
         out.append(f'    CHECK(p.{n} == SL_E_NULL, "{n}(NULL) returned %d", (int)p.{n});')
-        # generic configuration: first input active (if the block has wInputActive), group running
         for f in b.inputs:
             if f.name == "wInputActive":
                 out.append("    a.wInputActive = b.wInputActive = 1;")
@@ -1375,21 +1556,54 @@ def adapter_test_c(hdr: Header) -> str:
                 m = "cds_" + f.name
                 out.append(f"    {{ {m}_struct q; int32_t r; q.{st_param_name(f.params[0])} = &a; {m}(&q); r = {f.name}(&b);")
                 out.append(f'      CHECK(q.{m} == r && memcmp(&a, &b, sizeof a) == 0, "{m} differs from {f.name}"); }}')
-        out.append("    for (k = 0; k < 400; k++) {")
-        out.append("        int32_t direct;")
-        out.append("        unsigned r = rnd();")
-        for f in b.inputs:
-            if C_SCALARS.get(f.ctype, (0, 0, False))[2] and f.count is None and f.name not in ("bRun",):
-                out.append(f"        a.{f.name} = b.{f.name} = (uint8_t)((rnd() % 7u) != 0u);")
-        out.append(f"        p.{pn[0]} = &a;")
-        out.append(f"        p.{pn[1]} = (uint32_t)(k * 10u + (r % 5u));")
-        out.append(f"        {n}(&p);")
-        out.append(f"        direct = {cyc}(&b, p.{pn[1]});")
-        out.append(f'        CHECK(p.{n} == direct, "{s} cycle %d: adapter %d, direct %d", k, (int)p.{n}, (int)direct);')
-        out.append(f'        CHECK(memcmp(&a, &b, sizeof a) == 0, "{s} cycle %d: instances differ", k);')
-        out.append("        if (direct == SL_OK) ok++;")
+        out.append("    for (c = 0; c < 10; c++) {")
+        out.append("        int valid = c < 8; /* 8 valid configurations, then the labelled invalid share: 2 */")
+        out.append(f"        if (!draw_{b.lower}(&a, &b, valid)) {{")
+        out.append(f'            CHECK(!valid, "{s}: no valid configuration found in 200000 random draws");')
+        out.append("            continue;")
+        out.append("        }")
+        out.append("        if (!valid) inv_config++;")
+        for f in sig:
+            out.append(f"        a.{f.name} = b.{f.name} = (uint8_t)({0 if f.name in ('bRestart', 'bErrAck') else 1});")
+        out.append("        bump = 20 + (int)(rnd() % 20u);")
+        out.append("        pol = (c % 2 == 1) ? rnd() : 0u;")
+        out.append("        for (k = 0; k < 50; k++) {")
+        out.append("            int32_t direct;")
+        out.append("            next_machine();")
+        for f in sig:
+            pulse = 1 if f.name in ("bRestart", "bErrAck") else 0
+            out.append(f"            a.{f.name} = b.{f.name} = next_signal(a.{f.name}, {pulse}, pol >> {sig.index(f)});")
+        if any(f.name == "bRun" for f in b.inputs):
+            out.append("            a.bRun = b.bRun = (uint8_t)(k >= 2 && rnd() % 100u != 0u);")
+        if bump:
+            f = bump[0]
+            out.append(f"            if (valid && k == bump) {{ a.{f.name}++; b.{f.name}++; }} /* changed while running: ERROR */")
+            out.append(f"            if (valid && k == bump + 2) {{ a.{f.name}--; b.{f.name}--; }} /* restored */")
+        out.append(f"            p.{pn[0]} = &a;")
+        out.append(f"            p.{pn[1]} = t += 10u;")
+        out.append(f"            {n}(&p);")
+        out.append(f"            direct = {cyc}(&b, p.{pn[1]});")
+        out.append(f'            CHECK(p.{n} == direct, "{s} config %d cycle %d: adapter %d, direct %d", c, k, (int)p.{n}, (int)direct);')
+        out.append(f'            CHECK(memcmp(&a, &b, sizeof a) == 0, "{s} config %d cycle %d: instances differ", c, k);')
+        out.append("            if (!valid) { inv_cycles++; continue; }")
+        out.append("            cycles++;")
+        out.append("            if (direct == SL_OK) ok++;")
+        out.append("            if (direct <= 0 && direct > -12) hist[-direct]++;")
+        out.append("            if (b.nState == SL_STATE_ERROR) reached_error = 1;")
+        if run_outs:
+            cond = " || ".join(f"b.{f.name}" for f in run_outs)
+            out.append(f"            if (b.nState != SL_STATE_STOP && b.nState != SL_STATE_ERROR && b.nState != SL_STATE_RESET && ({cond})) reached_run = 1;")
+        else:
+            out.append("            if (b.nState != SL_STATE_STOP && b.nState != SL_STATE_ERROR && b.nState != SL_STATE_RESET && b.nState != SL_STATE_SAFE) reached_run = 1;")
+        out.append("        }")
         out.append("    }")
-        out.append(f'    printf("{s}: %d of 400 cycles returned SL_OK\\n", ok);')
+        out.append(f'    printf("{s}: %d of %d cycles (8 valid random configurations) returned SL_OK; run-like state %s, ERROR %s; '
+                   f'invalid share: %d configurations, %d cycles\\n", ok, cycles, reached_run ? "reached" : "NOT reached", '
+                   f'reached_error ? "reached" : "NOT reached", inv_config, inv_cycles);')
+        out.append('    if (2 * ok <= cycles) printf("  status histogram (0, -1, ... -11): %d %d %d %d %d %d %d %d %d %d %d\\n", hist[0], hist[1], hist[2], hist[3], hist[4], hist[5], hist[6], hist[7], hist[8], hist[9], hist[10]);')
+        out.append(f'    CHECK(cycles > 0 && 2 * ok > cycles, "{s}: only %d of %d cycles with valid configurations returned SL_OK", ok, cycles);')
+        out.append(f'    CHECK(reached_run, "{s}: the random test never reached a running state (an output on)");')
+        out.append(f'    CHECK(reached_error, "{s}: the random test never reached ERROR");')
         out.append("}")
         out.append("")
     scal = [f for f in hdr.funcs if not f.params and wrappable(hdr, f, True)]

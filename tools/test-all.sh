@@ -47,6 +47,11 @@ step "C tests (ctest)"
 cmake -S c_tests -B build/c_tests -DSAFELOGIC_ROOT="$root" >/dev/null
 cmake --build build/c_tests -j2 >/dev/null
 ctest --test-dir build/c_tests --output-on-failure
+# the C examples print the Rust demo's scenarios in the same table: byte-identical output
+cargo run --release --quiet --example demo >build/demo_rust.txt
+build/c_tests/kl6904_examples >build/demo_c.txt
+diff -u build/demo_rust.txt build/demo_c.txt
+echo "examples/c/kl6904_examples.c prints exactly what cargo run --example demo prints ($(wc -l <build/demo_c.txt) lines)"
 
 step "install step, SONAME and pkg-config: one program linked dynamically, one statically"
 rm -rf build/prefix build/stage

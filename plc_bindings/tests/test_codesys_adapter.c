@@ -491,13 +491,164 @@ static void test_param_structs(void)
     { size_t off = 0;
       off = (off + sizeof(uint32_t) - 1) / sizeof(uint32_t) * sizeof(uint32_t);
       CHECK(offsetof(cds_sl_time_now_ms_struct, cds_sl_time_now_ms) == off, "cds_sl_time_now_ms_struct return value at %zu, expected %zu", offsetof(cds_sl_time_now_ms_struct, cds_sl_time_now_ms), off); }
+    { size_t off = 0;
+      off = (off + sizeof(void *) - 1) / sizeof(void *) * sizeof(void *);
+      CHECK(offsetof(cds_sl_ton2_get_elapsed_struct, pFb) == off, "cds_sl_ton2_get_elapsed_struct.pFb at %zu, expected %zu", offsetof(cds_sl_ton2_get_elapsed_struct, pFb), off);
+      off += sizeof(void *);
+      off = (off + sizeof(void *) - 1) / sizeof(void *) * sizeof(void *);
+      CHECK(offsetof(cds_sl_ton2_get_elapsed_struct, pPElapsedMs) == off, "cds_sl_ton2_get_elapsed_struct.pPElapsedMs at %zu, expected %zu", offsetof(cds_sl_ton2_get_elapsed_struct, pPElapsedMs), off);
+      off += sizeof(void *);
+      off = (off + sizeof(int32_t) - 1) / sizeof(int32_t) * sizeof(int32_t);
+      CHECK(offsetof(cds_sl_ton2_get_elapsed_struct, cds_sl_ton2_get_elapsed) == off, "cds_sl_ton2_get_elapsed_struct return value at %zu, expected %zu", offsetof(cds_sl_ton2_get_elapsed_struct, cds_sl_ton2_get_elapsed), off); }
+    { size_t off = 0;
+      off = (off + sizeof(void *) - 1) / sizeof(void *) * sizeof(void *);
+      CHECK(offsetof(cds_sl_group_init_struct, pG) == off, "cds_sl_group_init_struct.pG at %zu, expected %zu", offsetof(cds_sl_group_init_struct, pG), off);
+      off += sizeof(void *);
+      off = (off + sizeof(void *) - 1) / sizeof(void *) * sizeof(void *);
+      CHECK(offsetof(cds_sl_group_init_struct, pAMembers) == off, "cds_sl_group_init_struct.pAMembers at %zu, expected %zu", offsetof(cds_sl_group_init_struct, pAMembers), off);
+      off += sizeof(void *);
+      off = (off + sizeof(uint16_t) - 1) / sizeof(uint16_t) * sizeof(uint16_t);
+      CHECK(offsetof(cds_sl_group_init_struct, nMemberCap) == off, "cds_sl_group_init_struct.nMemberCap at %zu, expected %zu", offsetof(cds_sl_group_init_struct, nMemberCap), off);
+      off += sizeof(uint16_t);
+      off = (off + sizeof(void *) - 1) / sizeof(void *) * sizeof(void *);
+      CHECK(offsetof(cds_sl_group_init_struct, pALinks) == off, "cds_sl_group_init_struct.pALinks at %zu, expected %zu", offsetof(cds_sl_group_init_struct, pALinks), off);
+      off += sizeof(void *);
+      off = (off + sizeof(uint16_t) - 1) / sizeof(uint16_t) * sizeof(uint16_t);
+      CHECK(offsetof(cds_sl_group_init_struct, nLinkCap) == off, "cds_sl_group_init_struct.nLinkCap at %zu, expected %zu", offsetof(cds_sl_group_init_struct, nLinkCap), off);
+      off += sizeof(uint16_t);
+      off = (off + sizeof(int32_t) - 1) / sizeof(int32_t) * sizeof(int32_t);
+      CHECK(offsetof(cds_sl_group_init_struct, cds_sl_group_init) == off, "cds_sl_group_init_struct return value at %zu, expected %zu", offsetof(cds_sl_group_init_struct, cds_sl_group_init), off); }
+    { size_t off = 0;
+      off = (off + sizeof(void *) - 1) / sizeof(void *) * sizeof(void *);
+      CHECK(offsetof(cds_sl_group_add_member_struct, pG) == off, "cds_sl_group_add_member_struct.pG at %zu, expected %zu", offsetof(cds_sl_group_add_member_struct, pG), off);
+      off += sizeof(void *);
+      off = (off + sizeof(void *) - 1) / sizeof(void *) * sizeof(void *);
+      CHECK(offsetof(cds_sl_group_add_member_struct, pAMembers) == off, "cds_sl_group_add_member_struct.pAMembers at %zu, expected %zu", offsetof(cds_sl_group_add_member_struct, pAMembers), off);
+      off += sizeof(void *);
+      off = (off + sizeof(uint16_t) - 1) / sizeof(uint16_t) * sizeof(uint16_t);
+      CHECK(offsetof(cds_sl_group_add_member_struct, nType) == off, "cds_sl_group_add_member_struct.nType at %zu, expected %zu", offsetof(cds_sl_group_add_member_struct, nType), off);
+      off += sizeof(uint16_t);
+      off = (off + sizeof(void *) - 1) / sizeof(void *) * sizeof(void *);
+      CHECK(offsetof(cds_sl_group_add_member_struct, pPBlock) == off, "cds_sl_group_add_member_struct.pPBlock at %zu, expected %zu", offsetof(cds_sl_group_add_member_struct, pPBlock), off);
+      off += sizeof(void *);
+      off = (off + sizeof(void *) - 1) / sizeof(void *) * sizeof(void *);
+      CHECK(offsetof(cds_sl_group_add_member_struct, pPIndex) == off, "cds_sl_group_add_member_struct.pPIndex at %zu, expected %zu", offsetof(cds_sl_group_add_member_struct, pPIndex), off);
+      off += sizeof(void *);
+      off = (off + sizeof(int32_t) - 1) / sizeof(int32_t) * sizeof(int32_t);
+      CHECK(offsetof(cds_sl_group_add_member_struct, cds_sl_group_add_member) == off, "cds_sl_group_add_member_struct return value at %zu, expected %zu", offsetof(cds_sl_group_add_member_struct, cds_sl_group_add_member), off); }
+    { size_t off = 0;
+      off = (off + sizeof(void *) - 1) / sizeof(void *) * sizeof(void *);
+      CHECK(offsetof(cds_sl_group_add_link_struct, pG) == off, "cds_sl_group_add_link_struct.pG at %zu, expected %zu", offsetof(cds_sl_group_add_link_struct, pG), off);
+      off += sizeof(void *);
+      off = (off + sizeof(void *) - 1) / sizeof(void *) * sizeof(void *);
+      CHECK(offsetof(cds_sl_group_add_link_struct, pAMembers) == off, "cds_sl_group_add_link_struct.pAMembers at %zu, expected %zu", offsetof(cds_sl_group_add_link_struct, pAMembers), off);
+      off += sizeof(void *);
+      off = (off + sizeof(void *) - 1) / sizeof(void *) * sizeof(void *);
+      CHECK(offsetof(cds_sl_group_add_link_struct, pALinks) == off, "cds_sl_group_add_link_struct.pALinks at %zu, expected %zu", offsetof(cds_sl_group_add_link_struct, pALinks), off);
+      off += sizeof(void *);
+      off = (off + sizeof(uint16_t) - 1) / sizeof(uint16_t) * sizeof(uint16_t);
+      CHECK(offsetof(cds_sl_group_add_link_struct, nSrcMember) == off, "cds_sl_group_add_link_struct.nSrcMember at %zu, expected %zu", offsetof(cds_sl_group_add_link_struct, nSrcMember), off);
+      off += sizeof(uint16_t);
+      off = (off + sizeof(uint16_t) - 1) / sizeof(uint16_t) * sizeof(uint16_t);
+      CHECK(offsetof(cds_sl_group_add_link_struct, nSrcOffset) == off, "cds_sl_group_add_link_struct.nSrcOffset at %zu, expected %zu", offsetof(cds_sl_group_add_link_struct, nSrcOffset), off);
+      off += sizeof(uint16_t);
+      off = (off + sizeof(uint16_t) - 1) / sizeof(uint16_t) * sizeof(uint16_t);
+      CHECK(offsetof(cds_sl_group_add_link_struct, nDstMember) == off, "cds_sl_group_add_link_struct.nDstMember at %zu, expected %zu", offsetof(cds_sl_group_add_link_struct, nDstMember), off);
+      off += sizeof(uint16_t);
+      off = (off + sizeof(uint16_t) - 1) / sizeof(uint16_t) * sizeof(uint16_t);
+      CHECK(offsetof(cds_sl_group_add_link_struct, nDstOffset) == off, "cds_sl_group_add_link_struct.nDstOffset at %zu, expected %zu", offsetof(cds_sl_group_add_link_struct, nDstOffset), off);
+      off += sizeof(uint16_t);
+      off = (off + sizeof(int32_t) - 1) / sizeof(int32_t) * sizeof(int32_t);
+      CHECK(offsetof(cds_sl_group_add_link_struct, cds_sl_group_add_link) == off, "cds_sl_group_add_link_struct return value at %zu, expected %zu", offsetof(cds_sl_group_add_link_struct, cds_sl_group_add_link), off); }
+    { size_t off = 0;
+      off = (off + sizeof(void *) - 1) / sizeof(void *) * sizeof(void *);
+      CHECK(offsetof(cds_sl_group_cycle_struct, pG) == off, "cds_sl_group_cycle_struct.pG at %zu, expected %zu", offsetof(cds_sl_group_cycle_struct, pG), off);
+      off += sizeof(void *);
+      off = (off + sizeof(void *) - 1) / sizeof(void *) * sizeof(void *);
+      CHECK(offsetof(cds_sl_group_cycle_struct, pAMembers) == off, "cds_sl_group_cycle_struct.pAMembers at %zu, expected %zu", offsetof(cds_sl_group_cycle_struct, pAMembers), off);
+      off += sizeof(void *);
+      off = (off + sizeof(void *) - 1) / sizeof(void *) * sizeof(void *);
+      CHECK(offsetof(cds_sl_group_cycle_struct, pALinks) == off, "cds_sl_group_cycle_struct.pALinks at %zu, expected %zu", offsetof(cds_sl_group_cycle_struct, pALinks), off);
+      off += sizeof(void *);
+      off = (off + sizeof(uint32_t) - 1) / sizeof(uint32_t) * sizeof(uint32_t);
+      CHECK(offsetof(cds_sl_group_cycle_struct, tNow) == off, "cds_sl_group_cycle_struct.tNow at %zu, expected %zu", offsetof(cds_sl_group_cycle_struct, tNow), off);
+      off += sizeof(uint32_t);
+      off = (off + sizeof(int32_t) - 1) / sizeof(int32_t) * sizeof(int32_t);
+      CHECK(offsetof(cds_sl_group_cycle_struct, cds_sl_group_cycle) == off, "cds_sl_group_cycle_struct return value at %zu, expected %zu", offsetof(cds_sl_group_cycle_struct, cds_sl_group_cycle), off); }
 }
 
+/* Random configurations: every parameter drawn at random, kept only if the library accepts it
+   (init SL_OK and a stopped cycle SL_OK: the valid space, whatever a block's rules are), or, for
+   the labelled invalid share, only if the library refuses it. */
+static uint32_t rnd_time(void) { static const uint32_t t[] = {0u, 10u, 20u, 30u, 50u, 100u}; return t[rnd() % 6u]; }
+static uint32_t rnd_options(void)
+{
+    uint32_t o = 0;
+    if (rnd() % 4u == 0u) o |= (uint32_t)SL_OPT_EDM1;
+    if (rnd() % 4u == 0u) o |= (uint32_t)SL_OPT_EDM2;
+    if (rnd() % 4u == 0u) o |= (uint32_t)SL_OPT_SAFE_INPUTS_AFTER_DISC;
+    if (rnd() % 4u == 0u) o |= (uint32_t)SL_OPT_MANUAL_RESTART;
+    if (rnd() % 4u == 0u) o |= (uint32_t)SL_OPT_FUNCTION_TEST;
+    if (rnd() % 4u == 0u) o |= (uint32_t)SL_OPT_TON2_REMAINING_TIME;
+    if (rnd() % 4u == 0u) o |= (uint32_t)SL_OPT_MUTING_SEQUENTIAL;
+    if (rnd() % 4u == 0u) o |= (uint32_t)SL_OPT_MUTING_BACKWARDS;
+    if (rnd() % 4u == 0u) o |= (uint32_t)SL_OPT_MUTING_OSSD_CHECK_OPTIONAL;
+    return o;
+}
+/* Signal inputs follow one common machine signal (mostly TRUE = no safe-state request, now and
+   then FALSE for a while), each with its own occasional one-cycle deviation (discrepancies);
+   bRestart/bErrAck are independent short pulses. */
+static uint8_t machine = 1u;
+static void next_machine(void) { machine = (uint8_t)(machine ? (rnd() % 24u != 0u) : (rnd() % 4u == 0u)); }
+/* pol: odd configurations invert a random subset of the inputs (mode selectors: one of n) */
+static uint8_t next_signal(uint8_t v, int pulse, unsigned pol)
+{
+    uint8_t m = (uint8_t)(machine ^ (pol & 1u));
+    if (pulse) return (uint8_t)(v ? (rnd() % 2u != 0u ? 0u : 1u) : (rnd() % 10u == 0u));
+    return (uint8_t)(rnd() % 40u == 0u ? !m : m);
+}
+
+static void rnd_config_ton2(FB_TON2 *x)
+{
+    x->tDelay = rnd_time();
+    { static const unsigned v[] = {0u, 1u, 10u, 100u}; x->nTimeBase = (uint16_t)v[rnd() % 4u]; }
+    x->wInputActive = (uint16_t)(rnd() & 0x3u);
+    x->wInputNegated = (uint16_t)(rnd() % 2u == 0u ? 0u : (rnd() & 0x3u));
+    x->dwOptions = rnd_options();
+}
+/* 1: a valid configuration (want_valid) or an invalid one was drawn into a and b */
+static int draw_ton2(FB_TON2 *a, FB_TON2 *b, int want_valid)
+{
+    long k;
+    for (k = 0; k < 200000L; k++) {
+        static FB_TON2 x;
+        int valid;
+        memset(&x, 0, sizeof x);
+        rnd_config_ton2(&x);
+        valid = sl_ton2_init(&x) == SL_OK && sl_ton2_cycle(&x, 0u) == SL_OK;
+        if (valid == want_valid) {
+            memset(&x.bRun, 0, 0); /* keep x's parameters, reset the instance */
+            memset(a, 0, sizeof *a);
+            rnd_config_ton2(a); /* placeholder, overwritten below */
+            a->tDelay = x.tDelay;
+            a->nTimeBase = x.nTimeBase;
+            a->wInputActive = x.wInputActive;
+            a->wInputNegated = x.wInputNegated;
+            a->dwOptions = x.dwOptions;
+            *b = *a;
+            return 1;
+        }
+    }
+    return 0;
+}
 static void test_ton2(void)
 {
     static FB_TON2 a, b;
     cds_sl_ton2_cycle_struct p;
-    int k, ok = 0;
+    int c, k, bump, ok = 0, cycles = 0, inv_cycles = 0, inv_config = 0, reached_run = 0, reached_error = 0;
+    int hist[12] = {0};
+    unsigned pol = 0;
+    uint32_t t = 1000u;
     memset(&a, 0, sizeof a);
     memset(&b, 0, sizeof b);
     memset(&p, 0, sizeof p);
@@ -509,28 +660,99 @@ static void test_ton2(void)
     a.wInputActive = b.wInputActive = 1;
     { cds_sl_ton2_init_struct q; int32_t r; q.pFb = &a; cds_sl_ton2_init(&q); r = sl_ton2_init(&b);
       CHECK(q.cds_sl_ton2_init == r && memcmp(&a, &b, sizeof a) == 0, "cds_sl_ton2_init differs from sl_ton2_init"); }
-    for (k = 0; k < 400; k++) {
-        int32_t direct;
-        unsigned r = rnd();
-        a.bTonIn1 = b.bTonIn1 = (uint8_t)((rnd() % 7u) != 0u);
-        a.bEnable = b.bEnable = (uint8_t)((rnd() % 7u) != 0u);
-        a.bErrAck = b.bErrAck = (uint8_t)((rnd() % 7u) != 0u);
-        p.pFb = &a;
-        p.tNow = (uint32_t)(k * 10u + (r % 5u));
-        cds_sl_ton2_cycle(&p);
-        direct = sl_ton2_cycle(&b, p.tNow);
-        CHECK(p.cds_sl_ton2_cycle == direct, "FB_TON2 cycle %d: adapter %d, direct %d", k, (int)p.cds_sl_ton2_cycle, (int)direct);
-        CHECK(memcmp(&a, &b, sizeof a) == 0, "FB_TON2 cycle %d: instances differ", k);
-        if (direct == SL_OK) ok++;
+    for (c = 0; c < 10; c++) {
+        int valid = c < 8; /* 8 valid configurations, then the labelled invalid share: 2 */
+        if (!draw_ton2(&a, &b, valid)) {
+            CHECK(!valid, "FB_TON2: no valid configuration found in 200000 random draws");
+            continue;
+        }
+        if (!valid) inv_config++;
+        a.bTonIn1 = b.bTonIn1 = (uint8_t)(1);
+        a.bEnable = b.bEnable = (uint8_t)(1);
+        a.bErrAck = b.bErrAck = (uint8_t)(0);
+        bump = 20 + (int)(rnd() % 20u);
+        pol = (c % 2 == 1) ? rnd() : 0u;
+        for (k = 0; k < 50; k++) {
+            int32_t direct;
+            next_machine();
+            a.bTonIn1 = b.bTonIn1 = next_signal(a.bTonIn1, 0, pol >> 0);
+            a.bEnable = b.bEnable = next_signal(a.bEnable, 0, pol >> 1);
+            a.bErrAck = b.bErrAck = next_signal(a.bErrAck, 1, pol >> 2);
+            a.bRun = b.bRun = (uint8_t)(k >= 2 && rnd() % 100u != 0u);
+            if (valid && k == bump) { a.tDelay++; b.tDelay++; } /* changed while running: ERROR */
+            if (valid && k == bump + 2) { a.tDelay--; b.tDelay--; } /* restored */
+            p.pFb = &a;
+            p.tNow = t += 10u;
+            cds_sl_ton2_cycle(&p);
+            direct = sl_ton2_cycle(&b, p.tNow);
+            CHECK(p.cds_sl_ton2_cycle == direct, "FB_TON2 config %d cycle %d: adapter %d, direct %d", c, k, (int)p.cds_sl_ton2_cycle, (int)direct);
+            CHECK(memcmp(&a, &b, sizeof a) == 0, "FB_TON2 config %d cycle %d: instances differ", c, k);
+            if (!valid) { inv_cycles++; continue; }
+            cycles++;
+            if (direct == SL_OK) ok++;
+            if (direct <= 0 && direct > -12) hist[-direct]++;
+            if (b.nState == SL_STATE_ERROR) reached_error = 1;
+            if (b.nState != SL_STATE_STOP && b.nState != SL_STATE_ERROR && b.nState != SL_STATE_RESET && (b.bTonOut)) reached_run = 1;
+        }
     }
-    printf("FB_TON2: %d of 400 cycles returned SL_OK\n", ok);
+    printf("FB_TON2: %d of %d cycles (8 valid random configurations) returned SL_OK; run-like state %s, ERROR %s; invalid share: %d configurations, %d cycles\n", ok, cycles, reached_run ? "reached" : "NOT reached", reached_error ? "reached" : "NOT reached", inv_config, inv_cycles);
+    if (2 * ok <= cycles) printf("  status histogram (0, -1, ... -11): %d %d %d %d %d %d %d %d %d %d %d\n", hist[0], hist[1], hist[2], hist[3], hist[4], hist[5], hist[6], hist[7], hist[8], hist[9], hist[10]);
+    CHECK(cycles > 0 && 2 * ok > cycles, "FB_TON2: only %d of %d cycles with valid configurations returned SL_OK", ok, cycles);
+    CHECK(reached_run, "FB_TON2: the random test never reached a running state (an output on)");
+    CHECK(reached_error, "FB_TON2: the random test never reached ERROR");
 }
 
+static void rnd_config_estop(FB_ESTOP *x)
+{
+    x->tDiscTime12 = rnd_time();
+    x->tDiscTime34 = rnd_time();
+    x->tDiscTime56 = rnd_time();
+    x->tDiscTime78 = rnd_time();
+    x->tEDM1ResetTime = rnd_time();
+    x->tEDM2ResetTime = rnd_time();
+    x->tEStopDelOutDelay = rnd_time();
+    x->wInputActive = (uint16_t)(rnd() & 0x7FFu);
+    x->wInputNegated = (uint16_t)(rnd() % 2u == 0u ? 0u : (rnd() & 0x7FFu));
+    x->dwOptions = rnd_options();
+}
+/* 1: a valid configuration (want_valid) or an invalid one was drawn into a and b */
+static int draw_estop(FB_ESTOP *a, FB_ESTOP *b, int want_valid)
+{
+    long k;
+    for (k = 0; k < 200000L; k++) {
+        static FB_ESTOP x;
+        int valid;
+        memset(&x, 0, sizeof x);
+        rnd_config_estop(&x);
+        valid = sl_estop_init(&x) == SL_OK && sl_estop_cycle(&x, 0u) == SL_OK;
+        if (valid == want_valid) {
+            memset(&x.bRun, 0, 0); /* keep x's parameters, reset the instance */
+            memset(a, 0, sizeof *a);
+            rnd_config_estop(a); /* placeholder, overwritten below */
+            a->tDiscTime12 = x.tDiscTime12;
+            a->tDiscTime34 = x.tDiscTime34;
+            a->tDiscTime56 = x.tDiscTime56;
+            a->tDiscTime78 = x.tDiscTime78;
+            a->tEDM1ResetTime = x.tEDM1ResetTime;
+            a->tEDM2ResetTime = x.tEDM2ResetTime;
+            a->tEStopDelOutDelay = x.tEStopDelOutDelay;
+            a->wInputActive = x.wInputActive;
+            a->wInputNegated = x.wInputNegated;
+            a->dwOptions = x.dwOptions;
+            *b = *a;
+            return 1;
+        }
+    }
+    return 0;
+}
 static void test_estop(void)
 {
     static FB_ESTOP a, b;
     cds_sl_estop_cycle_struct p;
-    int k, ok = 0;
+    int c, k, bump, ok = 0, cycles = 0, inv_cycles = 0, inv_config = 0, reached_run = 0, reached_error = 0;
+    int hist[12] = {0};
+    unsigned pol = 0;
+    uint32_t t = 1000u;
     memset(&a, 0, sizeof a);
     memset(&b, 0, sizeof b);
     memset(&p, 0, sizeof p);
@@ -542,37 +764,115 @@ static void test_estop(void)
     a.wInputActive = b.wInputActive = 1;
     { cds_sl_estop_init_struct q; int32_t r; q.pFb = &a; cds_sl_estop_init(&q); r = sl_estop_init(&b);
       CHECK(q.cds_sl_estop_init == r && memcmp(&a, &b, sizeof a) == 0, "cds_sl_estop_init differs from sl_estop_init"); }
-    for (k = 0; k < 400; k++) {
-        int32_t direct;
-        unsigned r = rnd();
-        a.bRestart = b.bRestart = (uint8_t)((rnd() % 7u) != 0u);
-        a.bEDM1 = b.bEDM1 = (uint8_t)((rnd() % 7u) != 0u);
-        a.bEDM2 = b.bEDM2 = (uint8_t)((rnd() % 7u) != 0u);
-        a.bEStopIn1 = b.bEStopIn1 = (uint8_t)((rnd() % 7u) != 0u);
-        a.bEStopIn2 = b.bEStopIn2 = (uint8_t)((rnd() % 7u) != 0u);
-        a.bEStopIn3 = b.bEStopIn3 = (uint8_t)((rnd() % 7u) != 0u);
-        a.bEStopIn4 = b.bEStopIn4 = (uint8_t)((rnd() % 7u) != 0u);
-        a.bEStopIn5 = b.bEStopIn5 = (uint8_t)((rnd() % 7u) != 0u);
-        a.bEStopIn6 = b.bEStopIn6 = (uint8_t)((rnd() % 7u) != 0u);
-        a.bEStopIn7 = b.bEStopIn7 = (uint8_t)((rnd() % 7u) != 0u);
-        a.bEStopIn8 = b.bEStopIn8 = (uint8_t)((rnd() % 7u) != 0u);
-        a.bErrAck = b.bErrAck = (uint8_t)((rnd() % 7u) != 0u);
-        p.pFb = &a;
-        p.tNow = (uint32_t)(k * 10u + (r % 5u));
-        cds_sl_estop_cycle(&p);
-        direct = sl_estop_cycle(&b, p.tNow);
-        CHECK(p.cds_sl_estop_cycle == direct, "FB_ESTOP cycle %d: adapter %d, direct %d", k, (int)p.cds_sl_estop_cycle, (int)direct);
-        CHECK(memcmp(&a, &b, sizeof a) == 0, "FB_ESTOP cycle %d: instances differ", k);
-        if (direct == SL_OK) ok++;
+    for (c = 0; c < 10; c++) {
+        int valid = c < 8; /* 8 valid configurations, then the labelled invalid share: 2 */
+        if (!draw_estop(&a, &b, valid)) {
+            CHECK(!valid, "FB_ESTOP: no valid configuration found in 200000 random draws");
+            continue;
+        }
+        if (!valid) inv_config++;
+        a.bRestart = b.bRestart = (uint8_t)(0);
+        a.bEDM1 = b.bEDM1 = (uint8_t)(1);
+        a.bEDM2 = b.bEDM2 = (uint8_t)(1);
+        a.bEStopIn1 = b.bEStopIn1 = (uint8_t)(1);
+        a.bEStopIn2 = b.bEStopIn2 = (uint8_t)(1);
+        a.bEStopIn3 = b.bEStopIn3 = (uint8_t)(1);
+        a.bEStopIn4 = b.bEStopIn4 = (uint8_t)(1);
+        a.bEStopIn5 = b.bEStopIn5 = (uint8_t)(1);
+        a.bEStopIn6 = b.bEStopIn6 = (uint8_t)(1);
+        a.bEStopIn7 = b.bEStopIn7 = (uint8_t)(1);
+        a.bEStopIn8 = b.bEStopIn8 = (uint8_t)(1);
+        a.bErrAck = b.bErrAck = (uint8_t)(0);
+        bump = 20 + (int)(rnd() % 20u);
+        pol = (c % 2 == 1) ? rnd() : 0u;
+        for (k = 0; k < 50; k++) {
+            int32_t direct;
+            next_machine();
+            a.bRestart = b.bRestart = next_signal(a.bRestart, 1, pol >> 0);
+            a.bEDM1 = b.bEDM1 = next_signal(a.bEDM1, 0, pol >> 1);
+            a.bEDM2 = b.bEDM2 = next_signal(a.bEDM2, 0, pol >> 2);
+            a.bEStopIn1 = b.bEStopIn1 = next_signal(a.bEStopIn1, 0, pol >> 3);
+            a.bEStopIn2 = b.bEStopIn2 = next_signal(a.bEStopIn2, 0, pol >> 4);
+            a.bEStopIn3 = b.bEStopIn3 = next_signal(a.bEStopIn3, 0, pol >> 5);
+            a.bEStopIn4 = b.bEStopIn4 = next_signal(a.bEStopIn4, 0, pol >> 6);
+            a.bEStopIn5 = b.bEStopIn5 = next_signal(a.bEStopIn5, 0, pol >> 7);
+            a.bEStopIn6 = b.bEStopIn6 = next_signal(a.bEStopIn6, 0, pol >> 8);
+            a.bEStopIn7 = b.bEStopIn7 = next_signal(a.bEStopIn7, 0, pol >> 9);
+            a.bEStopIn8 = b.bEStopIn8 = next_signal(a.bEStopIn8, 0, pol >> 10);
+            a.bErrAck = b.bErrAck = next_signal(a.bErrAck, 1, pol >> 11);
+            a.bRun = b.bRun = (uint8_t)(k >= 2 && rnd() % 100u != 0u);
+            if (valid && k == bump) { a.tDiscTime12++; b.tDiscTime12++; } /* changed while running: ERROR */
+            if (valid && k == bump + 2) { a.tDiscTime12--; b.tDiscTime12--; } /* restored */
+            p.pFb = &a;
+            p.tNow = t += 10u;
+            cds_sl_estop_cycle(&p);
+            direct = sl_estop_cycle(&b, p.tNow);
+            CHECK(p.cds_sl_estop_cycle == direct, "FB_ESTOP config %d cycle %d: adapter %d, direct %d", c, k, (int)p.cds_sl_estop_cycle, (int)direct);
+            CHECK(memcmp(&a, &b, sizeof a) == 0, "FB_ESTOP config %d cycle %d: instances differ", c, k);
+            if (!valid) { inv_cycles++; continue; }
+            cycles++;
+            if (direct == SL_OK) ok++;
+            if (direct <= 0 && direct > -12) hist[-direct]++;
+            if (b.nState == SL_STATE_ERROR) reached_error = 1;
+            if (b.nState != SL_STATE_STOP && b.nState != SL_STATE_ERROR && b.nState != SL_STATE_RESET && (b.bEStopOut || b.bEStopDelOut)) reached_run = 1;
+        }
     }
-    printf("FB_ESTOP: %d of 400 cycles returned SL_OK\n", ok);
+    printf("FB_ESTOP: %d of %d cycles (8 valid random configurations) returned SL_OK; run-like state %s, ERROR %s; invalid share: %d configurations, %d cycles\n", ok, cycles, reached_run ? "reached" : "NOT reached", reached_error ? "reached" : "NOT reached", inv_config, inv_cycles);
+    if (2 * ok <= cycles) printf("  status histogram (0, -1, ... -11): %d %d %d %d %d %d %d %d %d %d %d\n", hist[0], hist[1], hist[2], hist[3], hist[4], hist[5], hist[6], hist[7], hist[8], hist[9], hist[10]);
+    CHECK(cycles > 0 && 2 * ok > cycles, "FB_ESTOP: only %d of %d cycles with valid configurations returned SL_OK", ok, cycles);
+    CHECK(reached_run, "FB_ESTOP: the random test never reached a running state (an output on)");
+    CHECK(reached_error, "FB_ESTOP: the random test never reached ERROR");
 }
 
+static void rnd_config_mon(FB_MON *x)
+{
+    x->tDiscTime12 = rnd_time();
+    x->tDiscTime34 = rnd_time();
+    x->tDiscTimeSecure12 = rnd_time();
+    x->tEDM1ResetTime = rnd_time();
+    x->tEDM2ResetTime = rnd_time();
+    x->tMonDelOutDelay = rnd_time();
+    x->wInputActive = (uint16_t)(rnd() & 0x1FFu);
+    x->wInputNegated = (uint16_t)(rnd() % 2u == 0u ? 0u : (rnd() & 0x1FFu));
+    x->dwOptions = rnd_options();
+}
+/* 1: a valid configuration (want_valid) or an invalid one was drawn into a and b */
+static int draw_mon(FB_MON *a, FB_MON *b, int want_valid)
+{
+    long k;
+    for (k = 0; k < 200000L; k++) {
+        static FB_MON x;
+        int valid;
+        memset(&x, 0, sizeof x);
+        rnd_config_mon(&x);
+        valid = sl_mon_init(&x) == SL_OK && sl_mon_cycle(&x, 0u) == SL_OK;
+        if (valid == want_valid) {
+            memset(&x.bRun, 0, 0); /* keep x's parameters, reset the instance */
+            memset(a, 0, sizeof *a);
+            rnd_config_mon(a); /* placeholder, overwritten below */
+            a->tDiscTime12 = x.tDiscTime12;
+            a->tDiscTime34 = x.tDiscTime34;
+            a->tDiscTimeSecure12 = x.tDiscTimeSecure12;
+            a->tEDM1ResetTime = x.tEDM1ResetTime;
+            a->tEDM2ResetTime = x.tEDM2ResetTime;
+            a->tMonDelOutDelay = x.tMonDelOutDelay;
+            a->wInputActive = x.wInputActive;
+            a->wInputNegated = x.wInputNegated;
+            a->dwOptions = x.dwOptions;
+            *b = *a;
+            return 1;
+        }
+    }
+    return 0;
+}
 static void test_mon(void)
 {
     static FB_MON a, b;
     cds_sl_mon_cycle_struct p;
-    int k, ok = 0;
+    int c, k, bump, ok = 0, cycles = 0, inv_cycles = 0, inv_config = 0, reached_run = 0, reached_error = 0;
+    int hist[12] = {0};
+    unsigned pol = 0;
+    uint32_t t = 1000u;
     memset(&a, 0, sizeof a);
     memset(&b, 0, sizeof b);
     memset(&p, 0, sizeof p);
@@ -584,35 +884,97 @@ static void test_mon(void)
     a.wInputActive = b.wInputActive = 1;
     { cds_sl_mon_init_struct q; int32_t r; q.pFb = &a; cds_sl_mon_init(&q); r = sl_mon_init(&b);
       CHECK(q.cds_sl_mon_init == r && memcmp(&a, &b, sizeof a) == 0, "cds_sl_mon_init differs from sl_mon_init"); }
-    for (k = 0; k < 400; k++) {
-        int32_t direct;
-        unsigned r = rnd();
-        a.bRestart = b.bRestart = (uint8_t)((rnd() % 7u) != 0u);
-        a.bEDM1 = b.bEDM1 = (uint8_t)((rnd() % 7u) != 0u);
-        a.bEDM2 = b.bEDM2 = (uint8_t)((rnd() % 7u) != 0u);
-        a.bMonIn1 = b.bMonIn1 = (uint8_t)((rnd() % 7u) != 0u);
-        a.bMonIn2 = b.bMonIn2 = (uint8_t)((rnd() % 7u) != 0u);
-        a.bMonIn3 = b.bMonIn3 = (uint8_t)((rnd() % 7u) != 0u);
-        a.bMonIn4 = b.bMonIn4 = (uint8_t)((rnd() % 7u) != 0u);
-        a.bSecure1 = b.bSecure1 = (uint8_t)((rnd() % 7u) != 0u);
-        a.bSecure2 = b.bSecure2 = (uint8_t)((rnd() % 7u) != 0u);
-        a.bErrAck = b.bErrAck = (uint8_t)((rnd() % 7u) != 0u);
-        p.pFb = &a;
-        p.tNow = (uint32_t)(k * 10u + (r % 5u));
-        cds_sl_mon_cycle(&p);
-        direct = sl_mon_cycle(&b, p.tNow);
-        CHECK(p.cds_sl_mon_cycle == direct, "FB_MON cycle %d: adapter %d, direct %d", k, (int)p.cds_sl_mon_cycle, (int)direct);
-        CHECK(memcmp(&a, &b, sizeof a) == 0, "FB_MON cycle %d: instances differ", k);
-        if (direct == SL_OK) ok++;
+    for (c = 0; c < 10; c++) {
+        int valid = c < 8; /* 8 valid configurations, then the labelled invalid share: 2 */
+        if (!draw_mon(&a, &b, valid)) {
+            CHECK(!valid, "FB_MON: no valid configuration found in 200000 random draws");
+            continue;
+        }
+        if (!valid) inv_config++;
+        a.bRestart = b.bRestart = (uint8_t)(0);
+        a.bEDM1 = b.bEDM1 = (uint8_t)(1);
+        a.bEDM2 = b.bEDM2 = (uint8_t)(1);
+        a.bMonIn1 = b.bMonIn1 = (uint8_t)(1);
+        a.bMonIn2 = b.bMonIn2 = (uint8_t)(1);
+        a.bMonIn3 = b.bMonIn3 = (uint8_t)(1);
+        a.bMonIn4 = b.bMonIn4 = (uint8_t)(1);
+        a.bSecure1 = b.bSecure1 = (uint8_t)(1);
+        a.bSecure2 = b.bSecure2 = (uint8_t)(1);
+        a.bErrAck = b.bErrAck = (uint8_t)(0);
+        bump = 20 + (int)(rnd() % 20u);
+        pol = (c % 2 == 1) ? rnd() : 0u;
+        for (k = 0; k < 50; k++) {
+            int32_t direct;
+            next_machine();
+            a.bRestart = b.bRestart = next_signal(a.bRestart, 1, pol >> 0);
+            a.bEDM1 = b.bEDM1 = next_signal(a.bEDM1, 0, pol >> 1);
+            a.bEDM2 = b.bEDM2 = next_signal(a.bEDM2, 0, pol >> 2);
+            a.bMonIn1 = b.bMonIn1 = next_signal(a.bMonIn1, 0, pol >> 3);
+            a.bMonIn2 = b.bMonIn2 = next_signal(a.bMonIn2, 0, pol >> 4);
+            a.bMonIn3 = b.bMonIn3 = next_signal(a.bMonIn3, 0, pol >> 5);
+            a.bMonIn4 = b.bMonIn4 = next_signal(a.bMonIn4, 0, pol >> 6);
+            a.bSecure1 = b.bSecure1 = next_signal(a.bSecure1, 0, pol >> 7);
+            a.bSecure2 = b.bSecure2 = next_signal(a.bSecure2, 0, pol >> 8);
+            a.bErrAck = b.bErrAck = next_signal(a.bErrAck, 1, pol >> 9);
+            a.bRun = b.bRun = (uint8_t)(k >= 2 && rnd() % 100u != 0u);
+            if (valid && k == bump) { a.tDiscTime12++; b.tDiscTime12++; } /* changed while running: ERROR */
+            if (valid && k == bump + 2) { a.tDiscTime12--; b.tDiscTime12--; } /* restored */
+            p.pFb = &a;
+            p.tNow = t += 10u;
+            cds_sl_mon_cycle(&p);
+            direct = sl_mon_cycle(&b, p.tNow);
+            CHECK(p.cds_sl_mon_cycle == direct, "FB_MON config %d cycle %d: adapter %d, direct %d", c, k, (int)p.cds_sl_mon_cycle, (int)direct);
+            CHECK(memcmp(&a, &b, sizeof a) == 0, "FB_MON config %d cycle %d: instances differ", c, k);
+            if (!valid) { inv_cycles++; continue; }
+            cycles++;
+            if (direct == SL_OK) ok++;
+            if (direct <= 0 && direct > -12) hist[-direct]++;
+            if (b.nState == SL_STATE_ERROR) reached_error = 1;
+            if (b.nState != SL_STATE_STOP && b.nState != SL_STATE_ERROR && b.nState != SL_STATE_RESET && (b.bMonOut || b.bMonDelOut)) reached_run = 1;
+        }
     }
-    printf("FB_MON: %d of 400 cycles returned SL_OK\n", ok);
+    printf("FB_MON: %d of %d cycles (8 valid random configurations) returned SL_OK; run-like state %s, ERROR %s; invalid share: %d configurations, %d cycles\n", ok, cycles, reached_run ? "reached" : "NOT reached", reached_error ? "reached" : "NOT reached", inv_config, inv_cycles);
+    if (2 * ok <= cycles) printf("  status histogram (0, -1, ... -11): %d %d %d %d %d %d %d %d %d %d %d\n", hist[0], hist[1], hist[2], hist[3], hist[4], hist[5], hist[6], hist[7], hist[8], hist[9], hist[10]);
+    CHECK(cycles > 0 && 2 * ok > cycles, "FB_MON: only %d of %d cycles with valid configurations returned SL_OK", ok, cycles);
+    CHECK(reached_run, "FB_MON: the random test never reached a running state (an output on)");
+    CHECK(reached_error, "FB_MON: the random test never reached ERROR");
 }
 
+static void rnd_config_and(FB_AND *x)
+{
+    x->wInputActive = (uint16_t)(rnd() & 0xFFu);
+    x->wInputNegated = (uint16_t)(rnd() % 2u == 0u ? 0u : (rnd() & 0xFFu));
+}
+/* 1: a valid configuration (want_valid) or an invalid one was drawn into a and b */
+static int draw_and(FB_AND *a, FB_AND *b, int want_valid)
+{
+    long k;
+    for (k = 0; k < 200000L; k++) {
+        static FB_AND x;
+        int valid;
+        memset(&x, 0, sizeof x);
+        rnd_config_and(&x);
+        valid = sl_and_init(&x) == SL_OK && sl_and_cycle(&x, 0u) == SL_OK;
+        if (valid == want_valid) {
+            memset(&x.bRun, 0, 0); /* keep x's parameters, reset the instance */
+            memset(a, 0, sizeof *a);
+            rnd_config_and(a); /* placeholder, overwritten below */
+            a->wInputActive = x.wInputActive;
+            a->wInputNegated = x.wInputNegated;
+            *b = *a;
+            return 1;
+        }
+    }
+    return 0;
+}
 static void test_and(void)
 {
     static FB_AND a, b;
     cds_sl_and_cycle_struct p;
-    int k, ok = 0;
+    int c, k, bump, ok = 0, cycles = 0, inv_cycles = 0, inv_config = 0, reached_run = 0, reached_error = 0;
+    int hist[12] = {0};
+    unsigned pol = 0;
+    uint32_t t = 1000u;
     memset(&a, 0, sizeof a);
     memset(&b, 0, sizeof b);
     memset(&p, 0, sizeof p);
@@ -624,34 +986,95 @@ static void test_and(void)
     a.wInputActive = b.wInputActive = 1;
     { cds_sl_and_init_struct q; int32_t r; q.pFb = &a; cds_sl_and_init(&q); r = sl_and_init(&b);
       CHECK(q.cds_sl_and_init == r && memcmp(&a, &b, sizeof a) == 0, "cds_sl_and_init differs from sl_and_init"); }
-    for (k = 0; k < 400; k++) {
-        int32_t direct;
-        unsigned r = rnd();
-        a.bAndIn1 = b.bAndIn1 = (uint8_t)((rnd() % 7u) != 0u);
-        a.bAndIn2 = b.bAndIn2 = (uint8_t)((rnd() % 7u) != 0u);
-        a.bAndIn3 = b.bAndIn3 = (uint8_t)((rnd() % 7u) != 0u);
-        a.bAndIn4 = b.bAndIn4 = (uint8_t)((rnd() % 7u) != 0u);
-        a.bAndIn5 = b.bAndIn5 = (uint8_t)((rnd() % 7u) != 0u);
-        a.bAndIn6 = b.bAndIn6 = (uint8_t)((rnd() % 7u) != 0u);
-        a.bAndIn7 = b.bAndIn7 = (uint8_t)((rnd() % 7u) != 0u);
-        a.bAndIn8 = b.bAndIn8 = (uint8_t)((rnd() % 7u) != 0u);
-        a.bErrAck = b.bErrAck = (uint8_t)((rnd() % 7u) != 0u);
-        p.pFb = &a;
-        p.tNow = (uint32_t)(k * 10u + (r % 5u));
-        cds_sl_and_cycle(&p);
-        direct = sl_and_cycle(&b, p.tNow);
-        CHECK(p.cds_sl_and_cycle == direct, "FB_AND cycle %d: adapter %d, direct %d", k, (int)p.cds_sl_and_cycle, (int)direct);
-        CHECK(memcmp(&a, &b, sizeof a) == 0, "FB_AND cycle %d: instances differ", k);
-        if (direct == SL_OK) ok++;
+    for (c = 0; c < 10; c++) {
+        int valid = c < 8; /* 8 valid configurations, then the labelled invalid share: 2 */
+        if (!draw_and(&a, &b, valid)) {
+            CHECK(!valid, "FB_AND: no valid configuration found in 200000 random draws");
+            continue;
+        }
+        if (!valid) inv_config++;
+        a.bAndIn1 = b.bAndIn1 = (uint8_t)(1);
+        a.bAndIn2 = b.bAndIn2 = (uint8_t)(1);
+        a.bAndIn3 = b.bAndIn3 = (uint8_t)(1);
+        a.bAndIn4 = b.bAndIn4 = (uint8_t)(1);
+        a.bAndIn5 = b.bAndIn5 = (uint8_t)(1);
+        a.bAndIn6 = b.bAndIn6 = (uint8_t)(1);
+        a.bAndIn7 = b.bAndIn7 = (uint8_t)(1);
+        a.bAndIn8 = b.bAndIn8 = (uint8_t)(1);
+        a.bErrAck = b.bErrAck = (uint8_t)(0);
+        bump = 20 + (int)(rnd() % 20u);
+        pol = (c % 2 == 1) ? rnd() : 0u;
+        for (k = 0; k < 50; k++) {
+            int32_t direct;
+            next_machine();
+            a.bAndIn1 = b.bAndIn1 = next_signal(a.bAndIn1, 0, pol >> 0);
+            a.bAndIn2 = b.bAndIn2 = next_signal(a.bAndIn2, 0, pol >> 1);
+            a.bAndIn3 = b.bAndIn3 = next_signal(a.bAndIn3, 0, pol >> 2);
+            a.bAndIn4 = b.bAndIn4 = next_signal(a.bAndIn4, 0, pol >> 3);
+            a.bAndIn5 = b.bAndIn5 = next_signal(a.bAndIn5, 0, pol >> 4);
+            a.bAndIn6 = b.bAndIn6 = next_signal(a.bAndIn6, 0, pol >> 5);
+            a.bAndIn7 = b.bAndIn7 = next_signal(a.bAndIn7, 0, pol >> 6);
+            a.bAndIn8 = b.bAndIn8 = next_signal(a.bAndIn8, 0, pol >> 7);
+            a.bErrAck = b.bErrAck = next_signal(a.bErrAck, 1, pol >> 8);
+            a.bRun = b.bRun = (uint8_t)(k >= 2 && rnd() % 100u != 0u);
+            if (valid && k == bump) { a.wInputNegated++; b.wInputNegated++; } /* changed while running: ERROR */
+            if (valid && k == bump + 2) { a.wInputNegated--; b.wInputNegated--; } /* restored */
+            p.pFb = &a;
+            p.tNow = t += 10u;
+            cds_sl_and_cycle(&p);
+            direct = sl_and_cycle(&b, p.tNow);
+            CHECK(p.cds_sl_and_cycle == direct, "FB_AND config %d cycle %d: adapter %d, direct %d", c, k, (int)p.cds_sl_and_cycle, (int)direct);
+            CHECK(memcmp(&a, &b, sizeof a) == 0, "FB_AND config %d cycle %d: instances differ", c, k);
+            if (!valid) { inv_cycles++; continue; }
+            cycles++;
+            if (direct == SL_OK) ok++;
+            if (direct <= 0 && direct > -12) hist[-direct]++;
+            if (b.nState == SL_STATE_ERROR) reached_error = 1;
+            if (b.nState != SL_STATE_STOP && b.nState != SL_STATE_ERROR && b.nState != SL_STATE_RESET && (b.bAndOut)) reached_run = 1;
+        }
     }
-    printf("FB_AND: %d of 400 cycles returned SL_OK\n", ok);
+    printf("FB_AND: %d of %d cycles (8 valid random configurations) returned SL_OK; run-like state %s, ERROR %s; invalid share: %d configurations, %d cycles\n", ok, cycles, reached_run ? "reached" : "NOT reached", reached_error ? "reached" : "NOT reached", inv_config, inv_cycles);
+    if (2 * ok <= cycles) printf("  status histogram (0, -1, ... -11): %d %d %d %d %d %d %d %d %d %d %d\n", hist[0], hist[1], hist[2], hist[3], hist[4], hist[5], hist[6], hist[7], hist[8], hist[9], hist[10]);
+    CHECK(cycles > 0 && 2 * ok > cycles, "FB_AND: only %d of %d cycles with valid configurations returned SL_OK", ok, cycles);
+    CHECK(reached_run, "FB_AND: the random test never reached a running state (an output on)");
+    CHECK(reached_error, "FB_AND: the random test never reached ERROR");
 }
 
+static void rnd_config_or(FB_OR *x)
+{
+    x->wInputActive = (uint16_t)(rnd() & 0xFFu);
+    x->wInputNegated = (uint16_t)(rnd() % 2u == 0u ? 0u : (rnd() & 0xFFu));
+}
+/* 1: a valid configuration (want_valid) or an invalid one was drawn into a and b */
+static int draw_or(FB_OR *a, FB_OR *b, int want_valid)
+{
+    long k;
+    for (k = 0; k < 200000L; k++) {
+        static FB_OR x;
+        int valid;
+        memset(&x, 0, sizeof x);
+        rnd_config_or(&x);
+        valid = sl_or_init(&x) == SL_OK && sl_or_cycle(&x, 0u) == SL_OK;
+        if (valid == want_valid) {
+            memset(&x.bRun, 0, 0); /* keep x's parameters, reset the instance */
+            memset(a, 0, sizeof *a);
+            rnd_config_or(a); /* placeholder, overwritten below */
+            a->wInputActive = x.wInputActive;
+            a->wInputNegated = x.wInputNegated;
+            *b = *a;
+            return 1;
+        }
+    }
+    return 0;
+}
 static void test_or(void)
 {
     static FB_OR a, b;
     cds_sl_or_cycle_struct p;
-    int k, ok = 0;
+    int c, k, bump, ok = 0, cycles = 0, inv_cycles = 0, inv_config = 0, reached_run = 0, reached_error = 0;
+    int hist[12] = {0};
+    unsigned pol = 0;
+    uint32_t t = 1000u;
     memset(&a, 0, sizeof a);
     memset(&b, 0, sizeof b);
     memset(&p, 0, sizeof p);
@@ -663,34 +1086,93 @@ static void test_or(void)
     a.wInputActive = b.wInputActive = 1;
     { cds_sl_or_init_struct q; int32_t r; q.pFb = &a; cds_sl_or_init(&q); r = sl_or_init(&b);
       CHECK(q.cds_sl_or_init == r && memcmp(&a, &b, sizeof a) == 0, "cds_sl_or_init differs from sl_or_init"); }
-    for (k = 0; k < 400; k++) {
-        int32_t direct;
-        unsigned r = rnd();
-        a.bOrIn1 = b.bOrIn1 = (uint8_t)((rnd() % 7u) != 0u);
-        a.bOrIn2 = b.bOrIn2 = (uint8_t)((rnd() % 7u) != 0u);
-        a.bOrIn3 = b.bOrIn3 = (uint8_t)((rnd() % 7u) != 0u);
-        a.bOrIn4 = b.bOrIn4 = (uint8_t)((rnd() % 7u) != 0u);
-        a.bOrIn5 = b.bOrIn5 = (uint8_t)((rnd() % 7u) != 0u);
-        a.bOrIn6 = b.bOrIn6 = (uint8_t)((rnd() % 7u) != 0u);
-        a.bOrIn7 = b.bOrIn7 = (uint8_t)((rnd() % 7u) != 0u);
-        a.bOrIn8 = b.bOrIn8 = (uint8_t)((rnd() % 7u) != 0u);
-        a.bErrAck = b.bErrAck = (uint8_t)((rnd() % 7u) != 0u);
-        p.pFb = &a;
-        p.tNow = (uint32_t)(k * 10u + (r % 5u));
-        cds_sl_or_cycle(&p);
-        direct = sl_or_cycle(&b, p.tNow);
-        CHECK(p.cds_sl_or_cycle == direct, "FB_OR cycle %d: adapter %d, direct %d", k, (int)p.cds_sl_or_cycle, (int)direct);
-        CHECK(memcmp(&a, &b, sizeof a) == 0, "FB_OR cycle %d: instances differ", k);
-        if (direct == SL_OK) ok++;
+    for (c = 0; c < 10; c++) {
+        int valid = c < 8; /* 8 valid configurations, then the labelled invalid share: 2 */
+        if (!draw_or(&a, &b, valid)) {
+            CHECK(!valid, "FB_OR: no valid configuration found in 200000 random draws");
+            continue;
+        }
+        if (!valid) inv_config++;
+        a.bOrIn1 = b.bOrIn1 = (uint8_t)(1);
+        a.bOrIn2 = b.bOrIn2 = (uint8_t)(1);
+        a.bOrIn3 = b.bOrIn3 = (uint8_t)(1);
+        a.bOrIn4 = b.bOrIn4 = (uint8_t)(1);
+        a.bOrIn5 = b.bOrIn5 = (uint8_t)(1);
+        a.bOrIn6 = b.bOrIn6 = (uint8_t)(1);
+        a.bOrIn7 = b.bOrIn7 = (uint8_t)(1);
+        a.bOrIn8 = b.bOrIn8 = (uint8_t)(1);
+        a.bErrAck = b.bErrAck = (uint8_t)(0);
+        bump = 20 + (int)(rnd() % 20u);
+        pol = (c % 2 == 1) ? rnd() : 0u;
+        for (k = 0; k < 50; k++) {
+            int32_t direct;
+            next_machine();
+            a.bOrIn1 = b.bOrIn1 = next_signal(a.bOrIn1, 0, pol >> 0);
+            a.bOrIn2 = b.bOrIn2 = next_signal(a.bOrIn2, 0, pol >> 1);
+            a.bOrIn3 = b.bOrIn3 = next_signal(a.bOrIn3, 0, pol >> 2);
+            a.bOrIn4 = b.bOrIn4 = next_signal(a.bOrIn4, 0, pol >> 3);
+            a.bOrIn5 = b.bOrIn5 = next_signal(a.bOrIn5, 0, pol >> 4);
+            a.bOrIn6 = b.bOrIn6 = next_signal(a.bOrIn6, 0, pol >> 5);
+            a.bOrIn7 = b.bOrIn7 = next_signal(a.bOrIn7, 0, pol >> 6);
+            a.bOrIn8 = b.bOrIn8 = next_signal(a.bOrIn8, 0, pol >> 7);
+            a.bErrAck = b.bErrAck = next_signal(a.bErrAck, 1, pol >> 8);
+            a.bRun = b.bRun = (uint8_t)(k >= 2 && rnd() % 100u != 0u);
+            if (valid && k == bump) { a.wInputNegated++; b.wInputNegated++; } /* changed while running: ERROR */
+            if (valid && k == bump + 2) { a.wInputNegated--; b.wInputNegated--; } /* restored */
+            p.pFb = &a;
+            p.tNow = t += 10u;
+            cds_sl_or_cycle(&p);
+            direct = sl_or_cycle(&b, p.tNow);
+            CHECK(p.cds_sl_or_cycle == direct, "FB_OR config %d cycle %d: adapter %d, direct %d", c, k, (int)p.cds_sl_or_cycle, (int)direct);
+            CHECK(memcmp(&a, &b, sizeof a) == 0, "FB_OR config %d cycle %d: instances differ", c, k);
+            if (!valid) { inv_cycles++; continue; }
+            cycles++;
+            if (direct == SL_OK) ok++;
+            if (direct <= 0 && direct > -12) hist[-direct]++;
+            if (b.nState == SL_STATE_ERROR) reached_error = 1;
+            if (b.nState != SL_STATE_STOP && b.nState != SL_STATE_ERROR && b.nState != SL_STATE_RESET && (b.bOrOut)) reached_run = 1;
+        }
     }
-    printf("FB_OR: %d of 400 cycles returned SL_OK\n", ok);
+    printf("FB_OR: %d of %d cycles (8 valid random configurations) returned SL_OK; run-like state %s, ERROR %s; invalid share: %d configurations, %d cycles\n", ok, cycles, reached_run ? "reached" : "NOT reached", reached_error ? "reached" : "NOT reached", inv_config, inv_cycles);
+    if (2 * ok <= cycles) printf("  status histogram (0, -1, ... -11): %d %d %d %d %d %d %d %d %d %d %d\n", hist[0], hist[1], hist[2], hist[3], hist[4], hist[5], hist[6], hist[7], hist[8], hist[9], hist[10]);
+    CHECK(cycles > 0 && 2 * ok > cycles, "FB_OR: only %d of %d cycles with valid configurations returned SL_OK", ok, cycles);
+    CHECK(reached_run, "FB_OR: the random test never reached a running state (an output on)");
+    CHECK(reached_error, "FB_OR: the random test never reached ERROR");
 }
 
+static void rnd_config_xor(FB_XOR *x)
+{
+    x->wInputActive = (uint16_t)(rnd() & 0xFFFFu);
+}
+/* 1: a valid configuration (want_valid) or an invalid one was drawn into a and b */
+static int draw_xor(FB_XOR *a, FB_XOR *b, int want_valid)
+{
+    long k;
+    for (k = 0; k < 200000L; k++) {
+        static FB_XOR x;
+        int valid;
+        memset(&x, 0, sizeof x);
+        rnd_config_xor(&x);
+        valid = sl_xor_init(&x) == SL_OK && sl_xor_cycle(&x, 0u) == SL_OK;
+        if (valid == want_valid) {
+            memset(&x.bRun, 0, 0); /* keep x's parameters, reset the instance */
+            memset(a, 0, sizeof *a);
+            rnd_config_xor(a); /* placeholder, overwritten below */
+            a->wInputActive = x.wInputActive;
+            *b = *a;
+            return 1;
+        }
+    }
+    return 0;
+}
 static void test_xor(void)
 {
     static FB_XOR a, b;
     cds_sl_xor_cycle_struct p;
-    int k, ok = 0;
+    int c, k, bump, ok = 0, cycles = 0, inv_cycles = 0, inv_config = 0, reached_run = 0, reached_error = 0;
+    int hist[12] = {0};
+    unsigned pol = 0;
+    uint32_t t = 1000u;
     memset(&a, 0, sizeof a);
     memset(&b, 0, sizeof b);
     memset(&p, 0, sizeof p);
@@ -702,42 +1184,109 @@ static void test_xor(void)
     a.wInputActive = b.wInputActive = 1;
     { cds_sl_xor_init_struct q; int32_t r; q.pFb = &a; cds_sl_xor_init(&q); r = sl_xor_init(&b);
       CHECK(q.cds_sl_xor_init == r && memcmp(&a, &b, sizeof a) == 0, "cds_sl_xor_init differs from sl_xor_init"); }
-    for (k = 0; k < 400; k++) {
-        int32_t direct;
-        unsigned r = rnd();
-        a.bXor1In1 = b.bXor1In1 = (uint8_t)((rnd() % 7u) != 0u);
-        a.bXor2In1 = b.bXor2In1 = (uint8_t)((rnd() % 7u) != 0u);
-        a.bXor1In2 = b.bXor1In2 = (uint8_t)((rnd() % 7u) != 0u);
-        a.bXor2In2 = b.bXor2In2 = (uint8_t)((rnd() % 7u) != 0u);
-        a.bXor1In3 = b.bXor1In3 = (uint8_t)((rnd() % 7u) != 0u);
-        a.bXor2In3 = b.bXor2In3 = (uint8_t)((rnd() % 7u) != 0u);
-        a.bXor1In4 = b.bXor1In4 = (uint8_t)((rnd() % 7u) != 0u);
-        a.bXor2In4 = b.bXor2In4 = (uint8_t)((rnd() % 7u) != 0u);
-        a.bXor1In5 = b.bXor1In5 = (uint8_t)((rnd() % 7u) != 0u);
-        a.bXor2In5 = b.bXor2In5 = (uint8_t)((rnd() % 7u) != 0u);
-        a.bXor1In6 = b.bXor1In6 = (uint8_t)((rnd() % 7u) != 0u);
-        a.bXor2In6 = b.bXor2In6 = (uint8_t)((rnd() % 7u) != 0u);
-        a.bXor1In7 = b.bXor1In7 = (uint8_t)((rnd() % 7u) != 0u);
-        a.bXor2In7 = b.bXor2In7 = (uint8_t)((rnd() % 7u) != 0u);
-        a.bXor1In8 = b.bXor1In8 = (uint8_t)((rnd() % 7u) != 0u);
-        a.bXor2In8 = b.bXor2In8 = (uint8_t)((rnd() % 7u) != 0u);
-        a.bErrAck = b.bErrAck = (uint8_t)((rnd() % 7u) != 0u);
-        p.pFb = &a;
-        p.tNow = (uint32_t)(k * 10u + (r % 5u));
-        cds_sl_xor_cycle(&p);
-        direct = sl_xor_cycle(&b, p.tNow);
-        CHECK(p.cds_sl_xor_cycle == direct, "FB_XOR cycle %d: adapter %d, direct %d", k, (int)p.cds_sl_xor_cycle, (int)direct);
-        CHECK(memcmp(&a, &b, sizeof a) == 0, "FB_XOR cycle %d: instances differ", k);
-        if (direct == SL_OK) ok++;
+    for (c = 0; c < 10; c++) {
+        int valid = c < 8; /* 8 valid configurations, then the labelled invalid share: 2 */
+        if (!draw_xor(&a, &b, valid)) {
+            CHECK(!valid, "FB_XOR: no valid configuration found in 200000 random draws");
+            continue;
+        }
+        if (!valid) inv_config++;
+        a.bXor1In1 = b.bXor1In1 = (uint8_t)(1);
+        a.bXor2In1 = b.bXor2In1 = (uint8_t)(1);
+        a.bXor1In2 = b.bXor1In2 = (uint8_t)(1);
+        a.bXor2In2 = b.bXor2In2 = (uint8_t)(1);
+        a.bXor1In3 = b.bXor1In3 = (uint8_t)(1);
+        a.bXor2In3 = b.bXor2In3 = (uint8_t)(1);
+        a.bXor1In4 = b.bXor1In4 = (uint8_t)(1);
+        a.bXor2In4 = b.bXor2In4 = (uint8_t)(1);
+        a.bXor1In5 = b.bXor1In5 = (uint8_t)(1);
+        a.bXor2In5 = b.bXor2In5 = (uint8_t)(1);
+        a.bXor1In6 = b.bXor1In6 = (uint8_t)(1);
+        a.bXor2In6 = b.bXor2In6 = (uint8_t)(1);
+        a.bXor1In7 = b.bXor1In7 = (uint8_t)(1);
+        a.bXor2In7 = b.bXor2In7 = (uint8_t)(1);
+        a.bXor1In8 = b.bXor1In8 = (uint8_t)(1);
+        a.bXor2In8 = b.bXor2In8 = (uint8_t)(1);
+        a.bErrAck = b.bErrAck = (uint8_t)(0);
+        bump = 20 + (int)(rnd() % 20u);
+        pol = (c % 2 == 1) ? rnd() : 0u;
+        for (k = 0; k < 50; k++) {
+            int32_t direct;
+            next_machine();
+            a.bXor1In1 = b.bXor1In1 = next_signal(a.bXor1In1, 0, pol >> 0);
+            a.bXor2In1 = b.bXor2In1 = next_signal(a.bXor2In1, 0, pol >> 1);
+            a.bXor1In2 = b.bXor1In2 = next_signal(a.bXor1In2, 0, pol >> 2);
+            a.bXor2In2 = b.bXor2In2 = next_signal(a.bXor2In2, 0, pol >> 3);
+            a.bXor1In3 = b.bXor1In3 = next_signal(a.bXor1In3, 0, pol >> 4);
+            a.bXor2In3 = b.bXor2In3 = next_signal(a.bXor2In3, 0, pol >> 5);
+            a.bXor1In4 = b.bXor1In4 = next_signal(a.bXor1In4, 0, pol >> 6);
+            a.bXor2In4 = b.bXor2In4 = next_signal(a.bXor2In4, 0, pol >> 7);
+            a.bXor1In5 = b.bXor1In5 = next_signal(a.bXor1In5, 0, pol >> 8);
+            a.bXor2In5 = b.bXor2In5 = next_signal(a.bXor2In5, 0, pol >> 9);
+            a.bXor1In6 = b.bXor1In6 = next_signal(a.bXor1In6, 0, pol >> 10);
+            a.bXor2In6 = b.bXor2In6 = next_signal(a.bXor2In6, 0, pol >> 11);
+            a.bXor1In7 = b.bXor1In7 = next_signal(a.bXor1In7, 0, pol >> 12);
+            a.bXor2In7 = b.bXor2In7 = next_signal(a.bXor2In7, 0, pol >> 13);
+            a.bXor1In8 = b.bXor1In8 = next_signal(a.bXor1In8, 0, pol >> 14);
+            a.bXor2In8 = b.bXor2In8 = next_signal(a.bXor2In8, 0, pol >> 15);
+            a.bErrAck = b.bErrAck = next_signal(a.bErrAck, 1, pol >> 16);
+            a.bRun = b.bRun = (uint8_t)(k >= 2 && rnd() % 100u != 0u);
+            if (valid && k == bump) { a.wInputActive++; b.wInputActive++; } /* changed while running: ERROR */
+            if (valid && k == bump + 2) { a.wInputActive--; b.wInputActive--; } /* restored */
+            p.pFb = &a;
+            p.tNow = t += 10u;
+            cds_sl_xor_cycle(&p);
+            direct = sl_xor_cycle(&b, p.tNow);
+            CHECK(p.cds_sl_xor_cycle == direct, "FB_XOR config %d cycle %d: adapter %d, direct %d", c, k, (int)p.cds_sl_xor_cycle, (int)direct);
+            CHECK(memcmp(&a, &b, sizeof a) == 0, "FB_XOR config %d cycle %d: instances differ", c, k);
+            if (!valid) { inv_cycles++; continue; }
+            cycles++;
+            if (direct == SL_OK) ok++;
+            if (direct <= 0 && direct > -12) hist[-direct]++;
+            if (b.nState == SL_STATE_ERROR) reached_error = 1;
+            if (b.nState != SL_STATE_STOP && b.nState != SL_STATE_ERROR && b.nState != SL_STATE_RESET && (b.bXorOut1 || b.bXorOut2 || b.bXorOut3 || b.bXorOut4 || b.bXorOut5 || b.bXorOut6 || b.bXorOut7 || b.bXorOut8)) reached_run = 1;
+        }
     }
-    printf("FB_XOR: %d of 400 cycles returned SL_OK\n", ok);
+    printf("FB_XOR: %d of %d cycles (8 valid random configurations) returned SL_OK; run-like state %s, ERROR %s; invalid share: %d configurations, %d cycles\n", ok, cycles, reached_run ? "reached" : "NOT reached", reached_error ? "reached" : "NOT reached", inv_config, inv_cycles);
+    if (2 * ok <= cycles) printf("  status histogram (0, -1, ... -11): %d %d %d %d %d %d %d %d %d %d %d\n", hist[0], hist[1], hist[2], hist[3], hist[4], hist[5], hist[6], hist[7], hist[8], hist[9], hist[10]);
+    CHECK(cycles > 0 && 2 * ok > cycles, "FB_XOR: only %d of %d cycles with valid configurations returned SL_OK", ok, cycles);
+    CHECK(reached_run, "FB_XOR: the random test never reached a running state (an output on)");
+    CHECK(reached_error, "FB_XOR: the random test never reached ERROR");
 }
 
+static void rnd_config_decouple(FB_DECOUPLE *x)
+{
+    x->wInputActive = (uint16_t)(rnd() & 0xFFu);
+}
+/* 1: a valid configuration (want_valid) or an invalid one was drawn into a and b */
+static int draw_decouple(FB_DECOUPLE *a, FB_DECOUPLE *b, int want_valid)
+{
+    long k;
+    for (k = 0; k < 200000L; k++) {
+        static FB_DECOUPLE x;
+        int valid;
+        memset(&x, 0, sizeof x);
+        rnd_config_decouple(&x);
+        valid = sl_decouple_init(&x) == SL_OK && sl_decouple_cycle(&x, 0u) == SL_OK;
+        if (valid == want_valid) {
+            memset(&x.bRun, 0, 0); /* keep x's parameters, reset the instance */
+            memset(a, 0, sizeof *a);
+            rnd_config_decouple(a); /* placeholder, overwritten below */
+            a->wInputActive = x.wInputActive;
+            *b = *a;
+            return 1;
+        }
+    }
+    return 0;
+}
 static void test_decouple(void)
 {
     static FB_DECOUPLE a, b;
     cds_sl_decouple_cycle_struct p;
-    int k, ok = 0;
+    int c, k, bump, ok = 0, cycles = 0, inv_cycles = 0, inv_config = 0, reached_run = 0, reached_error = 0;
+    int hist[12] = {0};
+    unsigned pol = 0;
+    uint32_t t = 1000u;
     memset(&a, 0, sizeof a);
     memset(&b, 0, sizeof b);
     memset(&p, 0, sizeof p);
@@ -749,34 +1298,97 @@ static void test_decouple(void)
     a.wInputActive = b.wInputActive = 1;
     { cds_sl_decouple_init_struct q; int32_t r; q.pFb = &a; cds_sl_decouple_init(&q); r = sl_decouple_init(&b);
       CHECK(q.cds_sl_decouple_init == r && memcmp(&a, &b, sizeof a) == 0, "cds_sl_decouple_init differs from sl_decouple_init"); }
-    for (k = 0; k < 400; k++) {
-        int32_t direct;
-        unsigned r = rnd();
-        a.bDecIn1 = b.bDecIn1 = (uint8_t)((rnd() % 7u) != 0u);
-        a.bDecIn2 = b.bDecIn2 = (uint8_t)((rnd() % 7u) != 0u);
-        a.bDecIn3 = b.bDecIn3 = (uint8_t)((rnd() % 7u) != 0u);
-        a.bDecIn4 = b.bDecIn4 = (uint8_t)((rnd() % 7u) != 0u);
-        a.bDecIn5 = b.bDecIn5 = (uint8_t)((rnd() % 7u) != 0u);
-        a.bDecIn6 = b.bDecIn6 = (uint8_t)((rnd() % 7u) != 0u);
-        a.bDecIn7 = b.bDecIn7 = (uint8_t)((rnd() % 7u) != 0u);
-        a.bDecIn8 = b.bDecIn8 = (uint8_t)((rnd() % 7u) != 0u);
-        a.bErrAck = b.bErrAck = (uint8_t)((rnd() % 7u) != 0u);
-        p.pFb = &a;
-        p.tNow = (uint32_t)(k * 10u + (r % 5u));
-        cds_sl_decouple_cycle(&p);
-        direct = sl_decouple_cycle(&b, p.tNow);
-        CHECK(p.cds_sl_decouple_cycle == direct, "FB_DECOUPLE cycle %d: adapter %d, direct %d", k, (int)p.cds_sl_decouple_cycle, (int)direct);
-        CHECK(memcmp(&a, &b, sizeof a) == 0, "FB_DECOUPLE cycle %d: instances differ", k);
-        if (direct == SL_OK) ok++;
+    for (c = 0; c < 10; c++) {
+        int valid = c < 8; /* 8 valid configurations, then the labelled invalid share: 2 */
+        if (!draw_decouple(&a, &b, valid)) {
+            CHECK(!valid, "FB_DECOUPLE: no valid configuration found in 200000 random draws");
+            continue;
+        }
+        if (!valid) inv_config++;
+        a.bDecIn1 = b.bDecIn1 = (uint8_t)(1);
+        a.bDecIn2 = b.bDecIn2 = (uint8_t)(1);
+        a.bDecIn3 = b.bDecIn3 = (uint8_t)(1);
+        a.bDecIn4 = b.bDecIn4 = (uint8_t)(1);
+        a.bDecIn5 = b.bDecIn5 = (uint8_t)(1);
+        a.bDecIn6 = b.bDecIn6 = (uint8_t)(1);
+        a.bDecIn7 = b.bDecIn7 = (uint8_t)(1);
+        a.bDecIn8 = b.bDecIn8 = (uint8_t)(1);
+        a.bErrAck = b.bErrAck = (uint8_t)(0);
+        bump = 20 + (int)(rnd() % 20u);
+        pol = (c % 2 == 1) ? rnd() : 0u;
+        for (k = 0; k < 50; k++) {
+            int32_t direct;
+            next_machine();
+            a.bDecIn1 = b.bDecIn1 = next_signal(a.bDecIn1, 0, pol >> 0);
+            a.bDecIn2 = b.bDecIn2 = next_signal(a.bDecIn2, 0, pol >> 1);
+            a.bDecIn3 = b.bDecIn3 = next_signal(a.bDecIn3, 0, pol >> 2);
+            a.bDecIn4 = b.bDecIn4 = next_signal(a.bDecIn4, 0, pol >> 3);
+            a.bDecIn5 = b.bDecIn5 = next_signal(a.bDecIn5, 0, pol >> 4);
+            a.bDecIn6 = b.bDecIn6 = next_signal(a.bDecIn6, 0, pol >> 5);
+            a.bDecIn7 = b.bDecIn7 = next_signal(a.bDecIn7, 0, pol >> 6);
+            a.bDecIn8 = b.bDecIn8 = next_signal(a.bDecIn8, 0, pol >> 7);
+            a.bErrAck = b.bErrAck = next_signal(a.bErrAck, 1, pol >> 8);
+            a.bRun = b.bRun = (uint8_t)(k >= 2 && rnd() % 100u != 0u);
+            if (valid && k == bump) { a.wInputActive++; b.wInputActive++; } /* changed while running: ERROR */
+            if (valid && k == bump + 2) { a.wInputActive--; b.wInputActive--; } /* restored */
+            p.pFb = &a;
+            p.tNow = t += 10u;
+            cds_sl_decouple_cycle(&p);
+            direct = sl_decouple_cycle(&b, p.tNow);
+            CHECK(p.cds_sl_decouple_cycle == direct, "FB_DECOUPLE config %d cycle %d: adapter %d, direct %d", c, k, (int)p.cds_sl_decouple_cycle, (int)direct);
+            CHECK(memcmp(&a, &b, sizeof a) == 0, "FB_DECOUPLE config %d cycle %d: instances differ", c, k);
+            if (!valid) { inv_cycles++; continue; }
+            cycles++;
+            if (direct == SL_OK) ok++;
+            if (direct <= 0 && direct > -12) hist[-direct]++;
+            if (b.nState == SL_STATE_ERROR) reached_error = 1;
+            if (b.nState != SL_STATE_STOP && b.nState != SL_STATE_ERROR && b.nState != SL_STATE_RESET && (b.bDecOut1 || b.bDecOut2 || b.bDecOut3 || b.bDecOut4 || b.bDecOut5 || b.bDecOut6 || b.bDecOut7 || b.bDecOut8)) reached_run = 1;
+        }
     }
-    printf("FB_DECOUPLE: %d of 400 cycles returned SL_OK\n", ok);
+    printf("FB_DECOUPLE: %d of %d cycles (8 valid random configurations) returned SL_OK; run-like state %s, ERROR %s; invalid share: %d configurations, %d cycles\n", ok, cycles, reached_run ? "reached" : "NOT reached", reached_error ? "reached" : "NOT reached", inv_config, inv_cycles);
+    if (2 * ok <= cycles) printf("  status histogram (0, -1, ... -11): %d %d %d %d %d %d %d %d %d %d %d\n", hist[0], hist[1], hist[2], hist[3], hist[4], hist[5], hist[6], hist[7], hist[8], hist[9], hist[10]);
+    CHECK(cycles > 0 && 2 * ok > cycles, "FB_DECOUPLE: only %d of %d cycles with valid configurations returned SL_OK", ok, cycles);
+    CHECK(reached_run, "FB_DECOUPLE: the random test never reached a running state (an output on)");
+    CHECK(reached_error, "FB_DECOUPLE: the random test never reached ERROR");
 }
 
+static void rnd_config_opmode(FB_OPMODE *x)
+{
+    x->tDiscTime = rnd_time();
+    x->wInputActive = (uint16_t)(rnd() & 0x1FFu);
+    x->dwOptions = rnd_options();
+}
+/* 1: a valid configuration (want_valid) or an invalid one was drawn into a and b */
+static int draw_opmode(FB_OPMODE *a, FB_OPMODE *b, int want_valid)
+{
+    long k;
+    for (k = 0; k < 200000L; k++) {
+        static FB_OPMODE x;
+        int valid;
+        memset(&x, 0, sizeof x);
+        rnd_config_opmode(&x);
+        valid = sl_opmode_init(&x) == SL_OK && sl_opmode_cycle(&x, 0u) == SL_OK;
+        if (valid == want_valid) {
+            memset(&x.bRun, 0, 0); /* keep x's parameters, reset the instance */
+            memset(a, 0, sizeof *a);
+            rnd_config_opmode(a); /* placeholder, overwritten below */
+            a->tDiscTime = x.tDiscTime;
+            a->wInputActive = x.wInputActive;
+            a->dwOptions = x.dwOptions;
+            *b = *a;
+            return 1;
+        }
+    }
+    return 0;
+}
 static void test_opmode(void)
 {
     static FB_OPMODE a, b;
     cds_sl_opmode_cycle_struct p;
-    int k, ok = 0;
+    int c, k, bump, ok = 0, cycles = 0, inv_cycles = 0, inv_config = 0, reached_run = 0, reached_error = 0;
+    int hist[12] = {0};
+    unsigned pol = 0;
+    uint32_t t = 1000u;
     memset(&a, 0, sizeof a);
     memset(&b, 0, sizeof b);
     memset(&p, 0, sizeof p);
@@ -788,35 +1400,105 @@ static void test_opmode(void)
     a.wInputActive = b.wInputActive = 1;
     { cds_sl_opmode_init_struct q; int32_t r; q.pFb = &a; cds_sl_opmode_init(&q); r = sl_opmode_init(&b);
       CHECK(q.cds_sl_opmode_init == r && memcmp(&a, &b, sizeof a) == 0, "cds_sl_opmode_init differs from sl_opmode_init"); }
-    for (k = 0; k < 400; k++) {
-        int32_t direct;
-        unsigned r = rnd();
-        a.bRestart = b.bRestart = (uint8_t)((rnd() % 7u) != 0u);
-        a.bOpIn1 = b.bOpIn1 = (uint8_t)((rnd() % 7u) != 0u);
-        a.bOpIn2 = b.bOpIn2 = (uint8_t)((rnd() % 7u) != 0u);
-        a.bOpIn3 = b.bOpIn3 = (uint8_t)((rnd() % 7u) != 0u);
-        a.bOpIn4 = b.bOpIn4 = (uint8_t)((rnd() % 7u) != 0u);
-        a.bOpIn5 = b.bOpIn5 = (uint8_t)((rnd() % 7u) != 0u);
-        a.bOpIn6 = b.bOpIn6 = (uint8_t)((rnd() % 7u) != 0u);
-        a.bOpIn7 = b.bOpIn7 = (uint8_t)((rnd() % 7u) != 0u);
-        a.bOpIn8 = b.bOpIn8 = (uint8_t)((rnd() % 7u) != 0u);
-        a.bErrAck = b.bErrAck = (uint8_t)((rnd() % 7u) != 0u);
-        p.pFb = &a;
-        p.tNow = (uint32_t)(k * 10u + (r % 5u));
-        cds_sl_opmode_cycle(&p);
-        direct = sl_opmode_cycle(&b, p.tNow);
-        CHECK(p.cds_sl_opmode_cycle == direct, "FB_OPMODE cycle %d: adapter %d, direct %d", k, (int)p.cds_sl_opmode_cycle, (int)direct);
-        CHECK(memcmp(&a, &b, sizeof a) == 0, "FB_OPMODE cycle %d: instances differ", k);
-        if (direct == SL_OK) ok++;
+    for (c = 0; c < 10; c++) {
+        int valid = c < 8; /* 8 valid configurations, then the labelled invalid share: 2 */
+        if (!draw_opmode(&a, &b, valid)) {
+            CHECK(!valid, "FB_OPMODE: no valid configuration found in 200000 random draws");
+            continue;
+        }
+        if (!valid) inv_config++;
+        a.bRestart = b.bRestart = (uint8_t)(0);
+        a.bOpIn1 = b.bOpIn1 = (uint8_t)(1);
+        a.bOpIn2 = b.bOpIn2 = (uint8_t)(1);
+        a.bOpIn3 = b.bOpIn3 = (uint8_t)(1);
+        a.bOpIn4 = b.bOpIn4 = (uint8_t)(1);
+        a.bOpIn5 = b.bOpIn5 = (uint8_t)(1);
+        a.bOpIn6 = b.bOpIn6 = (uint8_t)(1);
+        a.bOpIn7 = b.bOpIn7 = (uint8_t)(1);
+        a.bOpIn8 = b.bOpIn8 = (uint8_t)(1);
+        a.bErrAck = b.bErrAck = (uint8_t)(0);
+        bump = 20 + (int)(rnd() % 20u);
+        pol = (c % 2 == 1) ? rnd() : 0u;
+        for (k = 0; k < 50; k++) {
+            int32_t direct;
+            next_machine();
+            a.bRestart = b.bRestart = next_signal(a.bRestart, 1, pol >> 0);
+            a.bOpIn1 = b.bOpIn1 = next_signal(a.bOpIn1, 0, pol >> 1);
+            a.bOpIn2 = b.bOpIn2 = next_signal(a.bOpIn2, 0, pol >> 2);
+            a.bOpIn3 = b.bOpIn3 = next_signal(a.bOpIn3, 0, pol >> 3);
+            a.bOpIn4 = b.bOpIn4 = next_signal(a.bOpIn4, 0, pol >> 4);
+            a.bOpIn5 = b.bOpIn5 = next_signal(a.bOpIn5, 0, pol >> 5);
+            a.bOpIn6 = b.bOpIn6 = next_signal(a.bOpIn6, 0, pol >> 6);
+            a.bOpIn7 = b.bOpIn7 = next_signal(a.bOpIn7, 0, pol >> 7);
+            a.bOpIn8 = b.bOpIn8 = next_signal(a.bOpIn8, 0, pol >> 8);
+            a.bErrAck = b.bErrAck = next_signal(a.bErrAck, 1, pol >> 9);
+            a.bRun = b.bRun = (uint8_t)(k >= 2 && rnd() % 100u != 0u);
+            if (valid && k == bump) { a.tDiscTime++; b.tDiscTime++; } /* changed while running: ERROR */
+            if (valid && k == bump + 2) { a.tDiscTime--; b.tDiscTime--; } /* restored */
+            p.pFb = &a;
+            p.tNow = t += 10u;
+            cds_sl_opmode_cycle(&p);
+            direct = sl_opmode_cycle(&b, p.tNow);
+            CHECK(p.cds_sl_opmode_cycle == direct, "FB_OPMODE config %d cycle %d: adapter %d, direct %d", c, k, (int)p.cds_sl_opmode_cycle, (int)direct);
+            CHECK(memcmp(&a, &b, sizeof a) == 0, "FB_OPMODE config %d cycle %d: instances differ", c, k);
+            if (!valid) { inv_cycles++; continue; }
+            cycles++;
+            if (direct == SL_OK) ok++;
+            if (direct <= 0 && direct > -12) hist[-direct]++;
+            if (b.nState == SL_STATE_ERROR) reached_error = 1;
+            if (b.nState != SL_STATE_STOP && b.nState != SL_STATE_ERROR && b.nState != SL_STATE_RESET && (b.bOpOut1 || b.bOpOut2 || b.bOpOut3 || b.bOpOut4 || b.bOpOut5 || b.bOpOut6 || b.bOpOut7 || b.bOpOut8)) reached_run = 1;
+        }
     }
-    printf("FB_OPMODE: %d of 400 cycles returned SL_OK\n", ok);
+    printf("FB_OPMODE: %d of %d cycles (8 valid random configurations) returned SL_OK; run-like state %s, ERROR %s; invalid share: %d configurations, %d cycles\n", ok, cycles, reached_run ? "reached" : "NOT reached", reached_error ? "reached" : "NOT reached", inv_config, inv_cycles);
+    if (2 * ok <= cycles) printf("  status histogram (0, -1, ... -11): %d %d %d %d %d %d %d %d %d %d %d\n", hist[0], hist[1], hist[2], hist[3], hist[4], hist[5], hist[6], hist[7], hist[8], hist[9], hist[10]);
+    CHECK(cycles > 0 && 2 * ok > cycles, "FB_OPMODE: only %d of %d cycles with valid configurations returned SL_OK", ok, cycles);
+    CHECK(reached_run, "FB_OPMODE: the random test never reached a running state (an output on)");
+    CHECK(reached_error, "FB_OPMODE: the random test never reached ERROR");
 }
 
+static void rnd_config_twohand(FB_TWOHAND *x)
+{
+    x->tDiscTime12 = rnd_time();
+    x->tDiscTime34 = rnd_time();
+    x->tDiscTimePairs = rnd_time();
+    x->wInputActive = (uint16_t)(rnd() & 0xFu);
+    x->wInputNegated = (uint16_t)(rnd() % 2u == 0u ? 0u : (rnd() & 0xFu));
+    x->dwOptions = rnd_options();
+}
+/* 1: a valid configuration (want_valid) or an invalid one was drawn into a and b */
+static int draw_twohand(FB_TWOHAND *a, FB_TWOHAND *b, int want_valid)
+{
+    long k;
+    for (k = 0; k < 200000L; k++) {
+        static FB_TWOHAND x;
+        int valid;
+        memset(&x, 0, sizeof x);
+        rnd_config_twohand(&x);
+        valid = sl_twohand_init(&x) == SL_OK && sl_twohand_cycle(&x, 0u) == SL_OK;
+        if (valid == want_valid) {
+            memset(&x.bRun, 0, 0); /* keep x's parameters, reset the instance */
+            memset(a, 0, sizeof *a);
+            rnd_config_twohand(a); /* placeholder, overwritten below */
+            a->tDiscTime12 = x.tDiscTime12;
+            a->tDiscTime34 = x.tDiscTime34;
+            a->tDiscTimePairs = x.tDiscTimePairs;
+            a->wInputActive = x.wInputActive;
+            a->wInputNegated = x.wInputNegated;
+            a->dwOptions = x.dwOptions;
+            *b = *a;
+            return 1;
+        }
+    }
+    return 0;
+}
 static void test_twohand(void)
 {
     static FB_TWOHAND a, b;
     cds_sl_twohand_cycle_struct p;
-    int k, ok = 0;
+    int c, k, bump, ok = 0, cycles = 0, inv_cycles = 0, inv_config = 0, reached_run = 0, reached_error = 0;
+    int hist[12] = {0};
+    unsigned pol = 0;
+    uint32_t t = 1000u;
     memset(&a, 0, sizeof a);
     memset(&b, 0, sizeof b);
     memset(&p, 0, sizeof p);
@@ -828,30 +1510,101 @@ static void test_twohand(void)
     a.wInputActive = b.wInputActive = 1;
     { cds_sl_twohand_init_struct q; int32_t r; q.pFb = &a; cds_sl_twohand_init(&q); r = sl_twohand_init(&b);
       CHECK(q.cds_sl_twohand_init == r && memcmp(&a, &b, sizeof a) == 0, "cds_sl_twohand_init differs from sl_twohand_init"); }
-    for (k = 0; k < 400; k++) {
-        int32_t direct;
-        unsigned r = rnd();
-        a.bTwoHand1 = b.bTwoHand1 = (uint8_t)((rnd() % 7u) != 0u);
-        a.bTwoHand2 = b.bTwoHand2 = (uint8_t)((rnd() % 7u) != 0u);
-        a.bTwoHand3 = b.bTwoHand3 = (uint8_t)((rnd() % 7u) != 0u);
-        a.bTwoHand4 = b.bTwoHand4 = (uint8_t)((rnd() % 7u) != 0u);
-        a.bErrAck = b.bErrAck = (uint8_t)((rnd() % 7u) != 0u);
-        p.pFb = &a;
-        p.tNow = (uint32_t)(k * 10u + (r % 5u));
-        cds_sl_twohand_cycle(&p);
-        direct = sl_twohand_cycle(&b, p.tNow);
-        CHECK(p.cds_sl_twohand_cycle == direct, "FB_TWOHAND cycle %d: adapter %d, direct %d", k, (int)p.cds_sl_twohand_cycle, (int)direct);
-        CHECK(memcmp(&a, &b, sizeof a) == 0, "FB_TWOHAND cycle %d: instances differ", k);
-        if (direct == SL_OK) ok++;
+    for (c = 0; c < 10; c++) {
+        int valid = c < 8; /* 8 valid configurations, then the labelled invalid share: 2 */
+        if (!draw_twohand(&a, &b, valid)) {
+            CHECK(!valid, "FB_TWOHAND: no valid configuration found in 200000 random draws");
+            continue;
+        }
+        if (!valid) inv_config++;
+        a.bTwoHand1 = b.bTwoHand1 = (uint8_t)(1);
+        a.bTwoHand2 = b.bTwoHand2 = (uint8_t)(1);
+        a.bTwoHand3 = b.bTwoHand3 = (uint8_t)(1);
+        a.bTwoHand4 = b.bTwoHand4 = (uint8_t)(1);
+        a.bErrAck = b.bErrAck = (uint8_t)(0);
+        bump = 20 + (int)(rnd() % 20u);
+        pol = (c % 2 == 1) ? rnd() : 0u;
+        for (k = 0; k < 50; k++) {
+            int32_t direct;
+            next_machine();
+            a.bTwoHand1 = b.bTwoHand1 = next_signal(a.bTwoHand1, 0, pol >> 0);
+            a.bTwoHand2 = b.bTwoHand2 = next_signal(a.bTwoHand2, 0, pol >> 1);
+            a.bTwoHand3 = b.bTwoHand3 = next_signal(a.bTwoHand3, 0, pol >> 2);
+            a.bTwoHand4 = b.bTwoHand4 = next_signal(a.bTwoHand4, 0, pol >> 3);
+            a.bErrAck = b.bErrAck = next_signal(a.bErrAck, 1, pol >> 4);
+            a.bRun = b.bRun = (uint8_t)(k >= 2 && rnd() % 100u != 0u);
+            if (valid && k == bump) { a.tDiscTime12++; b.tDiscTime12++; } /* changed while running: ERROR */
+            if (valid && k == bump + 2) { a.tDiscTime12--; b.tDiscTime12--; } /* restored */
+            p.pFb = &a;
+            p.tNow = t += 10u;
+            cds_sl_twohand_cycle(&p);
+            direct = sl_twohand_cycle(&b, p.tNow);
+            CHECK(p.cds_sl_twohand_cycle == direct, "FB_TWOHAND config %d cycle %d: adapter %d, direct %d", c, k, (int)p.cds_sl_twohand_cycle, (int)direct);
+            CHECK(memcmp(&a, &b, sizeof a) == 0, "FB_TWOHAND config %d cycle %d: instances differ", c, k);
+            if (!valid) { inv_cycles++; continue; }
+            cycles++;
+            if (direct == SL_OK) ok++;
+            if (direct <= 0 && direct > -12) hist[-direct]++;
+            if (b.nState == SL_STATE_ERROR) reached_error = 1;
+            if (b.nState != SL_STATE_STOP && b.nState != SL_STATE_ERROR && b.nState != SL_STATE_RESET && (b.bTwoHandOut)) reached_run = 1;
+        }
     }
-    printf("FB_TWOHAND: %d of 400 cycles returned SL_OK\n", ok);
+    printf("FB_TWOHAND: %d of %d cycles (8 valid random configurations) returned SL_OK; run-like state %s, ERROR %s; invalid share: %d configurations, %d cycles\n", ok, cycles, reached_run ? "reached" : "NOT reached", reached_error ? "reached" : "NOT reached", inv_config, inv_cycles);
+    if (2 * ok <= cycles) printf("  status histogram (0, -1, ... -11): %d %d %d %d %d %d %d %d %d %d %d\n", hist[0], hist[1], hist[2], hist[3], hist[4], hist[5], hist[6], hist[7], hist[8], hist[9], hist[10]);
+    CHECK(cycles > 0 && 2 * ok > cycles, "FB_TWOHAND: only %d of %d cycles with valid configurations returned SL_OK", ok, cycles);
+    CHECK(reached_run, "FB_TWOHAND: the random test never reached a running state (an output on)");
+    CHECK(reached_error, "FB_TWOHAND: the random test never reached ERROR");
 }
 
+static void rnd_config_muting(FB_MUTING *x)
+{
+    x->tDiscTime12 = rnd_time();
+    x->tDiscTimeOSSD = rnd_time();
+    x->tDiscTime34 = rnd_time();
+    x->tFilterTime = rnd_time();
+    x->tMaxMutingTime = rnd_time();
+    x->tMuteDelOutDelay = rnd_time();
+    x->wInputActive = (uint16_t)(rnd() & 0x1FFu);
+    x->wInputNegated = (uint16_t)(rnd() % 2u == 0u ? 0u : (rnd() & 0x1FFu));
+    x->dwOptions = rnd_options();
+}
+/* 1: a valid configuration (want_valid) or an invalid one was drawn into a and b */
+static int draw_muting(FB_MUTING *a, FB_MUTING *b, int want_valid)
+{
+    long k;
+    for (k = 0; k < 200000L; k++) {
+        static FB_MUTING x;
+        int valid;
+        memset(&x, 0, sizeof x);
+        rnd_config_muting(&x);
+        valid = sl_muting_init(&x) == SL_OK && sl_muting_cycle(&x, 0u) == SL_OK;
+        if (valid == want_valid) {
+            memset(&x.bRun, 0, 0); /* keep x's parameters, reset the instance */
+            memset(a, 0, sizeof *a);
+            rnd_config_muting(a); /* placeholder, overwritten below */
+            a->tDiscTime12 = x.tDiscTime12;
+            a->tDiscTimeOSSD = x.tDiscTimeOSSD;
+            a->tDiscTime34 = x.tDiscTime34;
+            a->tFilterTime = x.tFilterTime;
+            a->tMaxMutingTime = x.tMaxMutingTime;
+            a->tMuteDelOutDelay = x.tMuteDelOutDelay;
+            a->wInputActive = x.wInputActive;
+            a->wInputNegated = x.wInputNegated;
+            a->dwOptions = x.dwOptions;
+            *b = *a;
+            return 1;
+        }
+    }
+    return 0;
+}
 static void test_muting(void)
 {
     static FB_MUTING a, b;
     cds_sl_muting_cycle_struct p;
-    int k, ok = 0;
+    int c, k, bump, ok = 0, cycles = 0, inv_cycles = 0, inv_config = 0, reached_run = 0, reached_error = 0;
+    int hist[12] = {0};
+    unsigned pol = 0;
+    uint32_t t = 1000u;
     memset(&a, 0, sizeof a);
     memset(&b, 0, sizeof b);
     memset(&p, 0, sizeof p);
@@ -863,35 +1616,101 @@ static void test_muting(void)
     a.wInputActive = b.wInputActive = 1;
     { cds_sl_muting_init_struct q; int32_t r; q.pFb = &a; cds_sl_muting_init(&q); r = sl_muting_init(&b);
       CHECK(q.cds_sl_muting_init == r && memcmp(&a, &b, sizeof a) == 0, "cds_sl_muting_init differs from sl_muting_init"); }
-    for (k = 0; k < 400; k++) {
-        int32_t direct;
-        unsigned r = rnd();
-        a.bMutingEnable = b.bMutingEnable = (uint8_t)((rnd() % 7u) != 0u);
-        a.bEDM1 = b.bEDM1 = (uint8_t)((rnd() % 7u) != 0u);
-        a.bEDM2 = b.bEDM2 = (uint8_t)((rnd() % 7u) != 0u);
-        a.bMutingIn1 = b.bMutingIn1 = (uint8_t)((rnd() % 7u) != 0u);
-        a.bMutingIn2 = b.bMutingIn2 = (uint8_t)((rnd() % 7u) != 0u);
-        a.bOSSDIn1 = b.bOSSDIn1 = (uint8_t)((rnd() % 7u) != 0u);
-        a.bOSSDIn2 = b.bOSSDIn2 = (uint8_t)((rnd() % 7u) != 0u);
-        a.bMutingIn3 = b.bMutingIn3 = (uint8_t)((rnd() % 7u) != 0u);
-        a.bMutingIn4 = b.bMutingIn4 = (uint8_t)((rnd() % 7u) != 0u);
-        a.bErrAck = b.bErrAck = (uint8_t)((rnd() % 7u) != 0u);
-        p.pFb = &a;
-        p.tNow = (uint32_t)(k * 10u + (r % 5u));
-        cds_sl_muting_cycle(&p);
-        direct = sl_muting_cycle(&b, p.tNow);
-        CHECK(p.cds_sl_muting_cycle == direct, "FB_MUTING cycle %d: adapter %d, direct %d", k, (int)p.cds_sl_muting_cycle, (int)direct);
-        CHECK(memcmp(&a, &b, sizeof a) == 0, "FB_MUTING cycle %d: instances differ", k);
-        if (direct == SL_OK) ok++;
+    for (c = 0; c < 10; c++) {
+        int valid = c < 8; /* 8 valid configurations, then the labelled invalid share: 2 */
+        if (!draw_muting(&a, &b, valid)) {
+            CHECK(!valid, "FB_MUTING: no valid configuration found in 200000 random draws");
+            continue;
+        }
+        if (!valid) inv_config++;
+        a.bMutingEnable = b.bMutingEnable = (uint8_t)(1);
+        a.bEDM1 = b.bEDM1 = (uint8_t)(1);
+        a.bEDM2 = b.bEDM2 = (uint8_t)(1);
+        a.bMutingIn1 = b.bMutingIn1 = (uint8_t)(1);
+        a.bMutingIn2 = b.bMutingIn2 = (uint8_t)(1);
+        a.bOSSDIn1 = b.bOSSDIn1 = (uint8_t)(1);
+        a.bOSSDIn2 = b.bOSSDIn2 = (uint8_t)(1);
+        a.bMutingIn3 = b.bMutingIn3 = (uint8_t)(1);
+        a.bMutingIn4 = b.bMutingIn4 = (uint8_t)(1);
+        a.bErrAck = b.bErrAck = (uint8_t)(0);
+        bump = 20 + (int)(rnd() % 20u);
+        pol = (c % 2 == 1) ? rnd() : 0u;
+        for (k = 0; k < 50; k++) {
+            int32_t direct;
+            next_machine();
+            a.bMutingEnable = b.bMutingEnable = next_signal(a.bMutingEnable, 0, pol >> 0);
+            a.bEDM1 = b.bEDM1 = next_signal(a.bEDM1, 0, pol >> 1);
+            a.bEDM2 = b.bEDM2 = next_signal(a.bEDM2, 0, pol >> 2);
+            a.bMutingIn1 = b.bMutingIn1 = next_signal(a.bMutingIn1, 0, pol >> 3);
+            a.bMutingIn2 = b.bMutingIn2 = next_signal(a.bMutingIn2, 0, pol >> 4);
+            a.bOSSDIn1 = b.bOSSDIn1 = next_signal(a.bOSSDIn1, 0, pol >> 5);
+            a.bOSSDIn2 = b.bOSSDIn2 = next_signal(a.bOSSDIn2, 0, pol >> 6);
+            a.bMutingIn3 = b.bMutingIn3 = next_signal(a.bMutingIn3, 0, pol >> 7);
+            a.bMutingIn4 = b.bMutingIn4 = next_signal(a.bMutingIn4, 0, pol >> 8);
+            a.bErrAck = b.bErrAck = next_signal(a.bErrAck, 1, pol >> 9);
+            a.bRun = b.bRun = (uint8_t)(k >= 2 && rnd() % 100u != 0u);
+            if (valid && k == bump) { a.tDiscTime12++; b.tDiscTime12++; } /* changed while running: ERROR */
+            if (valid && k == bump + 2) { a.tDiscTime12--; b.tDiscTime12--; } /* restored */
+            p.pFb = &a;
+            p.tNow = t += 10u;
+            cds_sl_muting_cycle(&p);
+            direct = sl_muting_cycle(&b, p.tNow);
+            CHECK(p.cds_sl_muting_cycle == direct, "FB_MUTING config %d cycle %d: adapter %d, direct %d", c, k, (int)p.cds_sl_muting_cycle, (int)direct);
+            CHECK(memcmp(&a, &b, sizeof a) == 0, "FB_MUTING config %d cycle %d: instances differ", c, k);
+            if (!valid) { inv_cycles++; continue; }
+            cycles++;
+            if (direct == SL_OK) ok++;
+            if (direct <= 0 && direct > -12) hist[-direct]++;
+            if (b.nState == SL_STATE_ERROR) reached_error = 1;
+            if (b.nState != SL_STATE_STOP && b.nState != SL_STATE_ERROR && b.nState != SL_STATE_RESET && (b.bMutingActive || b.bMuteOut || b.bMuteDelOut)) reached_run = 1;
+        }
     }
-    printf("FB_MUTING: %d of 400 cycles returned SL_OK\n", ok);
+    printf("FB_MUTING: %d of %d cycles (8 valid random configurations) returned SL_OK; run-like state %s, ERROR %s; invalid share: %d configurations, %d cycles\n", ok, cycles, reached_run ? "reached" : "NOT reached", reached_error ? "reached" : "NOT reached", inv_config, inv_cycles);
+    if (2 * ok <= cycles) printf("  status histogram (0, -1, ... -11): %d %d %d %d %d %d %d %d %d %d %d\n", hist[0], hist[1], hist[2], hist[3], hist[4], hist[5], hist[6], hist[7], hist[8], hist[9], hist[10]);
+    CHECK(cycles > 0 && 2 * ok > cycles, "FB_MUTING: only %d of %d cycles with valid configurations returned SL_OK", ok, cycles);
+    CHECK(reached_run, "FB_MUTING: the random test never reached a running state (an output on)");
+    CHECK(reached_error, "FB_MUTING: the random test never reached ERROR");
 }
 
+static void rnd_config_edm(FB_EDM *x)
+{
+    x->tSwitchOnTime = rnd_time();
+    x->tSwitchOffTime = rnd_time();
+    x->wInputActive = (uint16_t)(rnd() & 0x3u);
+    x->wInputNegated = (uint16_t)(rnd() % 2u == 0u ? 0u : (rnd() & 0x3u));
+}
+/* 1: a valid configuration (want_valid) or an invalid one was drawn into a and b */
+static int draw_edm(FB_EDM *a, FB_EDM *b, int want_valid)
+{
+    long k;
+    for (k = 0; k < 200000L; k++) {
+        static FB_EDM x;
+        int valid;
+        memset(&x, 0, sizeof x);
+        rnd_config_edm(&x);
+        valid = sl_edm_init(&x) == SL_OK && sl_edm_cycle(&x, 0u) == SL_OK;
+        if (valid == want_valid) {
+            memset(&x.bRun, 0, 0); /* keep x's parameters, reset the instance */
+            memset(a, 0, sizeof *a);
+            rnd_config_edm(a); /* placeholder, overwritten below */
+            a->tSwitchOnTime = x.tSwitchOnTime;
+            a->tSwitchOffTime = x.tSwitchOffTime;
+            a->wInputActive = x.wInputActive;
+            a->wInputNegated = x.wInputNegated;
+            *b = *a;
+            return 1;
+        }
+    }
+    return 0;
+}
 static void test_edm(void)
 {
     static FB_EDM a, b;
     cds_sl_edm_cycle_struct p;
-    int k, ok = 0;
+    int c, k, bump, ok = 0, cycles = 0, inv_cycles = 0, inv_config = 0, reached_run = 0, reached_error = 0;
+    int hist[12] = {0};
+    unsigned pol = 0;
+    uint32_t t = 1000u;
     memset(&a, 0, sizeof a);
     memset(&b, 0, sizeof b);
     memset(&p, 0, sizeof p);
@@ -903,28 +1722,83 @@ static void test_edm(void)
     a.wInputActive = b.wInputActive = 1;
     { cds_sl_edm_init_struct q; int32_t r; q.pFb = &a; cds_sl_edm_init(&q); r = sl_edm_init(&b);
       CHECK(q.cds_sl_edm_init == r && memcmp(&a, &b, sizeof a) == 0, "cds_sl_edm_init differs from sl_edm_init"); }
-    for (k = 0; k < 400; k++) {
-        int32_t direct;
-        unsigned r = rnd();
-        a.bMon1 = b.bMon1 = (uint8_t)((rnd() % 7u) != 0u);
-        a.bMon2 = b.bMon2 = (uint8_t)((rnd() % 7u) != 0u);
-        a.bErrAck = b.bErrAck = (uint8_t)((rnd() % 7u) != 0u);
-        p.pFb = &a;
-        p.tNow = (uint32_t)(k * 10u + (r % 5u));
-        cds_sl_edm_cycle(&p);
-        direct = sl_edm_cycle(&b, p.tNow);
-        CHECK(p.cds_sl_edm_cycle == direct, "FB_EDM cycle %d: adapter %d, direct %d", k, (int)p.cds_sl_edm_cycle, (int)direct);
-        CHECK(memcmp(&a, &b, sizeof a) == 0, "FB_EDM cycle %d: instances differ", k);
-        if (direct == SL_OK) ok++;
+    for (c = 0; c < 10; c++) {
+        int valid = c < 8; /* 8 valid configurations, then the labelled invalid share: 2 */
+        if (!draw_edm(&a, &b, valid)) {
+            CHECK(!valid, "FB_EDM: no valid configuration found in 200000 random draws");
+            continue;
+        }
+        if (!valid) inv_config++;
+        a.bMon1 = b.bMon1 = (uint8_t)(1);
+        a.bMon2 = b.bMon2 = (uint8_t)(1);
+        a.bErrAck = b.bErrAck = (uint8_t)(0);
+        bump = 20 + (int)(rnd() % 20u);
+        pol = (c % 2 == 1) ? rnd() : 0u;
+        for (k = 0; k < 50; k++) {
+            int32_t direct;
+            next_machine();
+            a.bMon1 = b.bMon1 = next_signal(a.bMon1, 0, pol >> 0);
+            a.bMon2 = b.bMon2 = next_signal(a.bMon2, 0, pol >> 1);
+            a.bErrAck = b.bErrAck = next_signal(a.bErrAck, 1, pol >> 2);
+            a.bRun = b.bRun = (uint8_t)(k >= 2 && rnd() % 100u != 0u);
+            if (valid && k == bump) { a.tSwitchOnTime++; b.tSwitchOnTime++; } /* changed while running: ERROR */
+            if (valid && k == bump + 2) { a.tSwitchOnTime--; b.tSwitchOnTime--; } /* restored */
+            p.pFb = &a;
+            p.tNow = t += 10u;
+            cds_sl_edm_cycle(&p);
+            direct = sl_edm_cycle(&b, p.tNow);
+            CHECK(p.cds_sl_edm_cycle == direct, "FB_EDM config %d cycle %d: adapter %d, direct %d", c, k, (int)p.cds_sl_edm_cycle, (int)direct);
+            CHECK(memcmp(&a, &b, sizeof a) == 0, "FB_EDM config %d cycle %d: instances differ", c, k);
+            if (!valid) { inv_cycles++; continue; }
+            cycles++;
+            if (direct == SL_OK) ok++;
+            if (direct <= 0 && direct > -12) hist[-direct]++;
+            if (b.nState == SL_STATE_ERROR) reached_error = 1;
+            if (b.nState != SL_STATE_STOP && b.nState != SL_STATE_ERROR && b.nState != SL_STATE_RESET && b.nState != SL_STATE_SAFE) reached_run = 1;
+        }
     }
-    printf("FB_EDM: %d of 400 cycles returned SL_OK\n", ok);
+    printf("FB_EDM: %d of %d cycles (8 valid random configurations) returned SL_OK; run-like state %s, ERROR %s; invalid share: %d configurations, %d cycles\n", ok, cycles, reached_run ? "reached" : "NOT reached", reached_error ? "reached" : "NOT reached", inv_config, inv_cycles);
+    if (2 * ok <= cycles) printf("  status histogram (0, -1, ... -11): %d %d %d %d %d %d %d %d %d %d %d\n", hist[0], hist[1], hist[2], hist[3], hist[4], hist[5], hist[6], hist[7], hist[8], hist[9], hist[10]);
+    CHECK(cycles > 0 && 2 * ok > cycles, "FB_EDM: only %d of %d cycles with valid configurations returned SL_OK", ok, cycles);
+    CHECK(reached_run, "FB_EDM: the random test never reached a running state (an output on)");
+    CHECK(reached_error, "FB_EDM: the random test never reached ERROR");
 }
 
+static void rnd_config_rs(FB_RS *x)
+{
+    x->wInputActive = (uint16_t)(rnd() & 0x3u);
+    x->wInputNegated = (uint16_t)(rnd() % 2u == 0u ? 0u : (rnd() & 0x3u));
+}
+/* 1: a valid configuration (want_valid) or an invalid one was drawn into a and b */
+static int draw_rs(FB_RS *a, FB_RS *b, int want_valid)
+{
+    long k;
+    for (k = 0; k < 200000L; k++) {
+        static FB_RS x;
+        int valid;
+        memset(&x, 0, sizeof x);
+        rnd_config_rs(&x);
+        valid = sl_rs_init(&x) == SL_OK && sl_rs_cycle(&x, 0u) == SL_OK;
+        if (valid == want_valid) {
+            memset(&x.bRun, 0, 0); /* keep x's parameters, reset the instance */
+            memset(a, 0, sizeof *a);
+            rnd_config_rs(a); /* placeholder, overwritten below */
+            a->wInputActive = x.wInputActive;
+            a->wInputNegated = x.wInputNegated;
+            *b = *a;
+            return 1;
+        }
+    }
+    return 0;
+}
 static void test_rs(void)
 {
     static FB_RS a, b;
     cds_sl_rs_cycle_struct p;
-    int k, ok = 0;
+    int c, k, bump, ok = 0, cycles = 0, inv_cycles = 0, inv_config = 0, reached_run = 0, reached_error = 0;
+    int hist[12] = {0};
+    unsigned pol = 0;
+    uint32_t t = 1000u;
     memset(&a, 0, sizeof a);
     memset(&b, 0, sizeof b);
     memset(&p, 0, sizeof p);
@@ -936,28 +1810,83 @@ static void test_rs(void)
     a.wInputActive = b.wInputActive = 1;
     { cds_sl_rs_init_struct q; int32_t r; q.pFb = &a; cds_sl_rs_init(&q); r = sl_rs_init(&b);
       CHECK(q.cds_sl_rs_init == r && memcmp(&a, &b, sizeof a) == 0, "cds_sl_rs_init differs from sl_rs_init"); }
-    for (k = 0; k < 400; k++) {
-        int32_t direct;
-        unsigned r = rnd();
-        a.bReset = b.bReset = (uint8_t)((rnd() % 7u) != 0u);
-        a.bSet = b.bSet = (uint8_t)((rnd() % 7u) != 0u);
-        a.bErrAck = b.bErrAck = (uint8_t)((rnd() % 7u) != 0u);
-        p.pFb = &a;
-        p.tNow = (uint32_t)(k * 10u + (r % 5u));
-        cds_sl_rs_cycle(&p);
-        direct = sl_rs_cycle(&b, p.tNow);
-        CHECK(p.cds_sl_rs_cycle == direct, "FB_RS cycle %d: adapter %d, direct %d", k, (int)p.cds_sl_rs_cycle, (int)direct);
-        CHECK(memcmp(&a, &b, sizeof a) == 0, "FB_RS cycle %d: instances differ", k);
-        if (direct == SL_OK) ok++;
+    for (c = 0; c < 10; c++) {
+        int valid = c < 8; /* 8 valid configurations, then the labelled invalid share: 2 */
+        if (!draw_rs(&a, &b, valid)) {
+            CHECK(!valid, "FB_RS: no valid configuration found in 200000 random draws");
+            continue;
+        }
+        if (!valid) inv_config++;
+        a.bReset = b.bReset = (uint8_t)(1);
+        a.bSet = b.bSet = (uint8_t)(1);
+        a.bErrAck = b.bErrAck = (uint8_t)(0);
+        bump = 20 + (int)(rnd() % 20u);
+        pol = (c % 2 == 1) ? rnd() : 0u;
+        for (k = 0; k < 50; k++) {
+            int32_t direct;
+            next_machine();
+            a.bReset = b.bReset = next_signal(a.bReset, 0, pol >> 0);
+            a.bSet = b.bSet = next_signal(a.bSet, 0, pol >> 1);
+            a.bErrAck = b.bErrAck = next_signal(a.bErrAck, 1, pol >> 2);
+            a.bRun = b.bRun = (uint8_t)(k >= 2 && rnd() % 100u != 0u);
+            if (valid && k == bump) { a.wInputNegated++; b.wInputNegated++; } /* changed while running: ERROR */
+            if (valid && k == bump + 2) { a.wInputNegated--; b.wInputNegated--; } /* restored */
+            p.pFb = &a;
+            p.tNow = t += 10u;
+            cds_sl_rs_cycle(&p);
+            direct = sl_rs_cycle(&b, p.tNow);
+            CHECK(p.cds_sl_rs_cycle == direct, "FB_RS config %d cycle %d: adapter %d, direct %d", c, k, (int)p.cds_sl_rs_cycle, (int)direct);
+            CHECK(memcmp(&a, &b, sizeof a) == 0, "FB_RS config %d cycle %d: instances differ", c, k);
+            if (!valid) { inv_cycles++; continue; }
+            cycles++;
+            if (direct == SL_OK) ok++;
+            if (direct <= 0 && direct > -12) hist[-direct]++;
+            if (b.nState == SL_STATE_ERROR) reached_error = 1;
+            if (b.nState != SL_STATE_STOP && b.nState != SL_STATE_ERROR && b.nState != SL_STATE_RESET && (b.bRsOut)) reached_run = 1;
+        }
     }
-    printf("FB_RS: %d of 400 cycles returned SL_OK\n", ok);
+    printf("FB_RS: %d of %d cycles (8 valid random configurations) returned SL_OK; run-like state %s, ERROR %s; invalid share: %d configurations, %d cycles\n", ok, cycles, reached_run ? "reached" : "NOT reached", reached_error ? "reached" : "NOT reached", inv_config, inv_cycles);
+    if (2 * ok <= cycles) printf("  status histogram (0, -1, ... -11): %d %d %d %d %d %d %d %d %d %d %d\n", hist[0], hist[1], hist[2], hist[3], hist[4], hist[5], hist[6], hist[7], hist[8], hist[9], hist[10]);
+    CHECK(cycles > 0 && 2 * ok > cycles, "FB_RS: only %d of %d cycles with valid configurations returned SL_OK", ok, cycles);
+    CHECK(reached_run, "FB_RS: the random test never reached a running state (an output on)");
+    CHECK(reached_error, "FB_RS: the random test never reached ERROR");
 }
 
+static void rnd_config_sr(FB_SR *x)
+{
+    x->wInputActive = (uint16_t)(rnd() & 0x3u);
+    x->wInputNegated = (uint16_t)(rnd() % 2u == 0u ? 0u : (rnd() & 0x3u));
+}
+/* 1: a valid configuration (want_valid) or an invalid one was drawn into a and b */
+static int draw_sr(FB_SR *a, FB_SR *b, int want_valid)
+{
+    long k;
+    for (k = 0; k < 200000L; k++) {
+        static FB_SR x;
+        int valid;
+        memset(&x, 0, sizeof x);
+        rnd_config_sr(&x);
+        valid = sl_sr_init(&x) == SL_OK && sl_sr_cycle(&x, 0u) == SL_OK;
+        if (valid == want_valid) {
+            memset(&x.bRun, 0, 0); /* keep x's parameters, reset the instance */
+            memset(a, 0, sizeof *a);
+            rnd_config_sr(a); /* placeholder, overwritten below */
+            a->wInputActive = x.wInputActive;
+            a->wInputNegated = x.wInputNegated;
+            *b = *a;
+            return 1;
+        }
+    }
+    return 0;
+}
 static void test_sr(void)
 {
     static FB_SR a, b;
     cds_sl_sr_cycle_struct p;
-    int k, ok = 0;
+    int c, k, bump, ok = 0, cycles = 0, inv_cycles = 0, inv_config = 0, reached_run = 0, reached_error = 0;
+    int hist[12] = {0};
+    unsigned pol = 0;
+    uint32_t t = 1000u;
     memset(&a, 0, sizeof a);
     memset(&b, 0, sizeof b);
     memset(&p, 0, sizeof p);
@@ -969,28 +1898,87 @@ static void test_sr(void)
     a.wInputActive = b.wInputActive = 1;
     { cds_sl_sr_init_struct q; int32_t r; q.pFb = &a; cds_sl_sr_init(&q); r = sl_sr_init(&b);
       CHECK(q.cds_sl_sr_init == r && memcmp(&a, &b, sizeof a) == 0, "cds_sl_sr_init differs from sl_sr_init"); }
-    for (k = 0; k < 400; k++) {
-        int32_t direct;
-        unsigned r = rnd();
-        a.bReset = b.bReset = (uint8_t)((rnd() % 7u) != 0u);
-        a.bSet = b.bSet = (uint8_t)((rnd() % 7u) != 0u);
-        a.bErrAck = b.bErrAck = (uint8_t)((rnd() % 7u) != 0u);
-        p.pFb = &a;
-        p.tNow = (uint32_t)(k * 10u + (r % 5u));
-        cds_sl_sr_cycle(&p);
-        direct = sl_sr_cycle(&b, p.tNow);
-        CHECK(p.cds_sl_sr_cycle == direct, "FB_SR cycle %d: adapter %d, direct %d", k, (int)p.cds_sl_sr_cycle, (int)direct);
-        CHECK(memcmp(&a, &b, sizeof a) == 0, "FB_SR cycle %d: instances differ", k);
-        if (direct == SL_OK) ok++;
+    for (c = 0; c < 10; c++) {
+        int valid = c < 8; /* 8 valid configurations, then the labelled invalid share: 2 */
+        if (!draw_sr(&a, &b, valid)) {
+            CHECK(!valid, "FB_SR: no valid configuration found in 200000 random draws");
+            continue;
+        }
+        if (!valid) inv_config++;
+        a.bReset = b.bReset = (uint8_t)(1);
+        a.bSet = b.bSet = (uint8_t)(1);
+        a.bErrAck = b.bErrAck = (uint8_t)(0);
+        bump = 20 + (int)(rnd() % 20u);
+        pol = (c % 2 == 1) ? rnd() : 0u;
+        for (k = 0; k < 50; k++) {
+            int32_t direct;
+            next_machine();
+            a.bReset = b.bReset = next_signal(a.bReset, 0, pol >> 0);
+            a.bSet = b.bSet = next_signal(a.bSet, 0, pol >> 1);
+            a.bErrAck = b.bErrAck = next_signal(a.bErrAck, 1, pol >> 2);
+            a.bRun = b.bRun = (uint8_t)(k >= 2 && rnd() % 100u != 0u);
+            if (valid && k == bump) { a.wInputNegated++; b.wInputNegated++; } /* changed while running: ERROR */
+            if (valid && k == bump + 2) { a.wInputNegated--; b.wInputNegated--; } /* restored */
+            p.pFb = &a;
+            p.tNow = t += 10u;
+            cds_sl_sr_cycle(&p);
+            direct = sl_sr_cycle(&b, p.tNow);
+            CHECK(p.cds_sl_sr_cycle == direct, "FB_SR config %d cycle %d: adapter %d, direct %d", c, k, (int)p.cds_sl_sr_cycle, (int)direct);
+            CHECK(memcmp(&a, &b, sizeof a) == 0, "FB_SR config %d cycle %d: instances differ", c, k);
+            if (!valid) { inv_cycles++; continue; }
+            cycles++;
+            if (direct == SL_OK) ok++;
+            if (direct <= 0 && direct > -12) hist[-direct]++;
+            if (b.nState == SL_STATE_ERROR) reached_error = 1;
+            if (b.nState != SL_STATE_STOP && b.nState != SL_STATE_ERROR && b.nState != SL_STATE_RESET && (b.bSrOut)) reached_run = 1;
+        }
     }
-    printf("FB_SR: %d of 400 cycles returned SL_OK\n", ok);
+    printf("FB_SR: %d of %d cycles (8 valid random configurations) returned SL_OK; run-like state %s, ERROR %s; invalid share: %d configurations, %d cycles\n", ok, cycles, reached_run ? "reached" : "NOT reached", reached_error ? "reached" : "NOT reached", inv_config, inv_cycles);
+    if (2 * ok <= cycles) printf("  status histogram (0, -1, ... -11): %d %d %d %d %d %d %d %d %d %d %d\n", hist[0], hist[1], hist[2], hist[3], hist[4], hist[5], hist[6], hist[7], hist[8], hist[9], hist[10]);
+    CHECK(cycles > 0 && 2 * ok > cycles, "FB_SR: only %d of %d cycles with valid configurations returned SL_OK", ok, cycles);
+    CHECK(reached_run, "FB_SR: the random test never reached a running state (an output on)");
+    CHECK(reached_error, "FB_SR: the random test never reached ERROR");
 }
 
+static void rnd_config_ton(FB_TON *x)
+{
+    x->tDelay = rnd_time();
+    { static const unsigned v[] = {0u, 1u, 10u, 100u}; x->nTimeBase = (uint16_t)v[rnd() % 4u]; }
+    x->wInputActive = (uint16_t)(rnd() & 0x1u);
+    x->wInputNegated = (uint16_t)(rnd() % 2u == 0u ? 0u : (rnd() & 0x1u));
+}
+/* 1: a valid configuration (want_valid) or an invalid one was drawn into a and b */
+static int draw_ton(FB_TON *a, FB_TON *b, int want_valid)
+{
+    long k;
+    for (k = 0; k < 200000L; k++) {
+        static FB_TON x;
+        int valid;
+        memset(&x, 0, sizeof x);
+        rnd_config_ton(&x);
+        valid = sl_ton_init(&x) == SL_OK && sl_ton_cycle(&x, 0u) == SL_OK;
+        if (valid == want_valid) {
+            memset(&x.bRun, 0, 0); /* keep x's parameters, reset the instance */
+            memset(a, 0, sizeof *a);
+            rnd_config_ton(a); /* placeholder, overwritten below */
+            a->tDelay = x.tDelay;
+            a->nTimeBase = x.nTimeBase;
+            a->wInputActive = x.wInputActive;
+            a->wInputNegated = x.wInputNegated;
+            *b = *a;
+            return 1;
+        }
+    }
+    return 0;
+}
 static void test_ton(void)
 {
     static FB_TON a, b;
     cds_sl_ton_cycle_struct p;
-    int k, ok = 0;
+    int c, k, bump, ok = 0, cycles = 0, inv_cycles = 0, inv_config = 0, reached_run = 0, reached_error = 0;
+    int hist[12] = {0};
+    unsigned pol = 0;
+    uint32_t t = 1000u;
     memset(&a, 0, sizeof a);
     memset(&b, 0, sizeof b);
     memset(&p, 0, sizeof p);
@@ -1002,27 +1990,85 @@ static void test_ton(void)
     a.wInputActive = b.wInputActive = 1;
     { cds_sl_ton_init_struct q; int32_t r; q.pFb = &a; cds_sl_ton_init(&q); r = sl_ton_init(&b);
       CHECK(q.cds_sl_ton_init == r && memcmp(&a, &b, sizeof a) == 0, "cds_sl_ton_init differs from sl_ton_init"); }
-    for (k = 0; k < 400; k++) {
-        int32_t direct;
-        unsigned r = rnd();
-        a.bTonIn1 = b.bTonIn1 = (uint8_t)((rnd() % 7u) != 0u);
-        a.bErrAck = b.bErrAck = (uint8_t)((rnd() % 7u) != 0u);
-        p.pFb = &a;
-        p.tNow = (uint32_t)(k * 10u + (r % 5u));
-        cds_sl_ton_cycle(&p);
-        direct = sl_ton_cycle(&b, p.tNow);
-        CHECK(p.cds_sl_ton_cycle == direct, "FB_TON cycle %d: adapter %d, direct %d", k, (int)p.cds_sl_ton_cycle, (int)direct);
-        CHECK(memcmp(&a, &b, sizeof a) == 0, "FB_TON cycle %d: instances differ", k);
-        if (direct == SL_OK) ok++;
+    for (c = 0; c < 10; c++) {
+        int valid = c < 8; /* 8 valid configurations, then the labelled invalid share: 2 */
+        if (!draw_ton(&a, &b, valid)) {
+            CHECK(!valid, "FB_TON: no valid configuration found in 200000 random draws");
+            continue;
+        }
+        if (!valid) inv_config++;
+        a.bTonIn1 = b.bTonIn1 = (uint8_t)(1);
+        a.bErrAck = b.bErrAck = (uint8_t)(0);
+        bump = 20 + (int)(rnd() % 20u);
+        pol = (c % 2 == 1) ? rnd() : 0u;
+        for (k = 0; k < 50; k++) {
+            int32_t direct;
+            next_machine();
+            a.bTonIn1 = b.bTonIn1 = next_signal(a.bTonIn1, 0, pol >> 0);
+            a.bErrAck = b.bErrAck = next_signal(a.bErrAck, 1, pol >> 1);
+            a.bRun = b.bRun = (uint8_t)(k >= 2 && rnd() % 100u != 0u);
+            if (valid && k == bump) { a.tDelay++; b.tDelay++; } /* changed while running: ERROR */
+            if (valid && k == bump + 2) { a.tDelay--; b.tDelay--; } /* restored */
+            p.pFb = &a;
+            p.tNow = t += 10u;
+            cds_sl_ton_cycle(&p);
+            direct = sl_ton_cycle(&b, p.tNow);
+            CHECK(p.cds_sl_ton_cycle == direct, "FB_TON config %d cycle %d: adapter %d, direct %d", c, k, (int)p.cds_sl_ton_cycle, (int)direct);
+            CHECK(memcmp(&a, &b, sizeof a) == 0, "FB_TON config %d cycle %d: instances differ", c, k);
+            if (!valid) { inv_cycles++; continue; }
+            cycles++;
+            if (direct == SL_OK) ok++;
+            if (direct <= 0 && direct > -12) hist[-direct]++;
+            if (b.nState == SL_STATE_ERROR) reached_error = 1;
+            if (b.nState != SL_STATE_STOP && b.nState != SL_STATE_ERROR && b.nState != SL_STATE_RESET && (b.bTonOut)) reached_run = 1;
+        }
     }
-    printf("FB_TON: %d of 400 cycles returned SL_OK\n", ok);
+    printf("FB_TON: %d of %d cycles (8 valid random configurations) returned SL_OK; run-like state %s, ERROR %s; invalid share: %d configurations, %d cycles\n", ok, cycles, reached_run ? "reached" : "NOT reached", reached_error ? "reached" : "NOT reached", inv_config, inv_cycles);
+    if (2 * ok <= cycles) printf("  status histogram (0, -1, ... -11): %d %d %d %d %d %d %d %d %d %d %d\n", hist[0], hist[1], hist[2], hist[3], hist[4], hist[5], hist[6], hist[7], hist[8], hist[9], hist[10]);
+    CHECK(cycles > 0 && 2 * ok > cycles, "FB_TON: only %d of %d cycles with valid configurations returned SL_OK", ok, cycles);
+    CHECK(reached_run, "FB_TON: the random test never reached a running state (an output on)");
+    CHECK(reached_error, "FB_TON: the random test never reached ERROR");
 }
 
+static void rnd_config_tof(FB_TOF *x)
+{
+    x->tDelay = rnd_time();
+    { static const unsigned v[] = {0u, 1u, 10u, 100u}; x->nTimeBase = (uint16_t)v[rnd() % 4u]; }
+    x->wInputActive = (uint16_t)(rnd() & 0x1u);
+    x->wInputNegated = (uint16_t)(rnd() % 2u == 0u ? 0u : (rnd() & 0x1u));
+}
+/* 1: a valid configuration (want_valid) or an invalid one was drawn into a and b */
+static int draw_tof(FB_TOF *a, FB_TOF *b, int want_valid)
+{
+    long k;
+    for (k = 0; k < 200000L; k++) {
+        static FB_TOF x;
+        int valid;
+        memset(&x, 0, sizeof x);
+        rnd_config_tof(&x);
+        valid = sl_tof_init(&x) == SL_OK && sl_tof_cycle(&x, 0u) == SL_OK;
+        if (valid == want_valid) {
+            memset(&x.bRun, 0, 0); /* keep x's parameters, reset the instance */
+            memset(a, 0, sizeof *a);
+            rnd_config_tof(a); /* placeholder, overwritten below */
+            a->tDelay = x.tDelay;
+            a->nTimeBase = x.nTimeBase;
+            a->wInputActive = x.wInputActive;
+            a->wInputNegated = x.wInputNegated;
+            *b = *a;
+            return 1;
+        }
+    }
+    return 0;
+}
 static void test_tof(void)
 {
     static FB_TOF a, b;
     cds_sl_tof_cycle_struct p;
-    int k, ok = 0;
+    int c, k, bump, ok = 0, cycles = 0, inv_cycles = 0, inv_config = 0, reached_run = 0, reached_error = 0;
+    int hist[12] = {0};
+    unsigned pol = 0;
+    uint32_t t = 1000u;
     memset(&a, 0, sizeof a);
     memset(&b, 0, sizeof b);
     memset(&p, 0, sizeof p);
@@ -1034,27 +2080,83 @@ static void test_tof(void)
     a.wInputActive = b.wInputActive = 1;
     { cds_sl_tof_init_struct q; int32_t r; q.pFb = &a; cds_sl_tof_init(&q); r = sl_tof_init(&b);
       CHECK(q.cds_sl_tof_init == r && memcmp(&a, &b, sizeof a) == 0, "cds_sl_tof_init differs from sl_tof_init"); }
-    for (k = 0; k < 400; k++) {
-        int32_t direct;
-        unsigned r = rnd();
-        a.bTofIn1 = b.bTofIn1 = (uint8_t)((rnd() % 7u) != 0u);
-        a.bErrAck = b.bErrAck = (uint8_t)((rnd() % 7u) != 0u);
-        p.pFb = &a;
-        p.tNow = (uint32_t)(k * 10u + (r % 5u));
-        cds_sl_tof_cycle(&p);
-        direct = sl_tof_cycle(&b, p.tNow);
-        CHECK(p.cds_sl_tof_cycle == direct, "FB_TOF cycle %d: adapter %d, direct %d", k, (int)p.cds_sl_tof_cycle, (int)direct);
-        CHECK(memcmp(&a, &b, sizeof a) == 0, "FB_TOF cycle %d: instances differ", k);
-        if (direct == SL_OK) ok++;
+    for (c = 0; c < 10; c++) {
+        int valid = c < 8; /* 8 valid configurations, then the labelled invalid share: 2 */
+        if (!draw_tof(&a, &b, valid)) {
+            CHECK(!valid, "FB_TOF: no valid configuration found in 200000 random draws");
+            continue;
+        }
+        if (!valid) inv_config++;
+        a.bTofIn1 = b.bTofIn1 = (uint8_t)(1);
+        a.bErrAck = b.bErrAck = (uint8_t)(0);
+        bump = 20 + (int)(rnd() % 20u);
+        pol = (c % 2 == 1) ? rnd() : 0u;
+        for (k = 0; k < 50; k++) {
+            int32_t direct;
+            next_machine();
+            a.bTofIn1 = b.bTofIn1 = next_signal(a.bTofIn1, 0, pol >> 0);
+            a.bErrAck = b.bErrAck = next_signal(a.bErrAck, 1, pol >> 1);
+            a.bRun = b.bRun = (uint8_t)(k >= 2 && rnd() % 100u != 0u);
+            if (valid && k == bump) { a.tDelay++; b.tDelay++; } /* changed while running: ERROR */
+            if (valid && k == bump + 2) { a.tDelay--; b.tDelay--; } /* restored */
+            p.pFb = &a;
+            p.tNow = t += 10u;
+            cds_sl_tof_cycle(&p);
+            direct = sl_tof_cycle(&b, p.tNow);
+            CHECK(p.cds_sl_tof_cycle == direct, "FB_TOF config %d cycle %d: adapter %d, direct %d", c, k, (int)p.cds_sl_tof_cycle, (int)direct);
+            CHECK(memcmp(&a, &b, sizeof a) == 0, "FB_TOF config %d cycle %d: instances differ", c, k);
+            if (!valid) { inv_cycles++; continue; }
+            cycles++;
+            if (direct == SL_OK) ok++;
+            if (direct <= 0 && direct > -12) hist[-direct]++;
+            if (b.nState == SL_STATE_ERROR) reached_error = 1;
+            if (b.nState != SL_STATE_STOP && b.nState != SL_STATE_ERROR && b.nState != SL_STATE_RESET && (b.bTofOut)) reached_run = 1;
+        }
     }
-    printf("FB_TOF: %d of 400 cycles returned SL_OK\n", ok);
+    printf("FB_TOF: %d of %d cycles (8 valid random configurations) returned SL_OK; run-like state %s, ERROR %s; invalid share: %d configurations, %d cycles\n", ok, cycles, reached_run ? "reached" : "NOT reached", reached_error ? "reached" : "NOT reached", inv_config, inv_cycles);
+    if (2 * ok <= cycles) printf("  status histogram (0, -1, ... -11): %d %d %d %d %d %d %d %d %d %d %d\n", hist[0], hist[1], hist[2], hist[3], hist[4], hist[5], hist[6], hist[7], hist[8], hist[9], hist[10]);
+    CHECK(cycles > 0 && 2 * ok > cycles, "FB_TOF: only %d of %d cycles with valid configurations returned SL_OK", ok, cycles);
+    CHECK(reached_run, "FB_TOF: the random test never reached a running state (an output on)");
+    CHECK(reached_error, "FB_TOF: the random test never reached ERROR");
 }
 
+static void rnd_config_add_int(FB_ADD_INT *x)
+{
+    { static const unsigned v[] = {0u, 1u, 10u, 100u}; x->nAnalogIn1 = (int16_t)v[rnd() % 4u]; }
+    { static const unsigned v[] = {0u, 1u, 10u, 100u}; x->nAnalogIn2 = (int16_t)v[rnd() % 4u]; }
+    x->wInputActive = (uint16_t)(rnd() & 0x0u);
+}
+/* 1: a valid configuration (want_valid) or an invalid one was drawn into a and b */
+static int draw_add_int(FB_ADD_INT *a, FB_ADD_INT *b, int want_valid)
+{
+    long k;
+    for (k = 0; k < 200000L; k++) {
+        static FB_ADD_INT x;
+        int valid;
+        memset(&x, 0, sizeof x);
+        rnd_config_add_int(&x);
+        valid = sl_add_int_init(&x) == SL_OK && sl_add_int_cycle(&x, 0u) == SL_OK;
+        if (valid == want_valid) {
+            memset(&x.bRun, 0, 0); /* keep x's parameters, reset the instance */
+            memset(a, 0, sizeof *a);
+            rnd_config_add_int(a); /* placeholder, overwritten below */
+            a->nAnalogIn1 = x.nAnalogIn1;
+            a->nAnalogIn2 = x.nAnalogIn2;
+            a->wInputActive = x.wInputActive;
+            *b = *a;
+            return 1;
+        }
+    }
+    return 0;
+}
 static void test_add_int(void)
 {
     static FB_ADD_INT a, b;
     cds_sl_add_int_cycle_struct p;
-    int k, ok = 0;
+    int c, k, bump, ok = 0, cycles = 0, inv_cycles = 0, inv_config = 0, reached_run = 0, reached_error = 0;
+    int hist[12] = {0};
+    unsigned pol = 0;
+    uint32_t t = 1000u;
     memset(&a, 0, sizeof a);
     memset(&b, 0, sizeof b);
     memset(&p, 0, sizeof p);
@@ -1066,26 +2168,81 @@ static void test_add_int(void)
     a.wInputActive = b.wInputActive = 1;
     { cds_sl_add_int_init_struct q; int32_t r; q.pFb = &a; cds_sl_add_int_init(&q); r = sl_add_int_init(&b);
       CHECK(q.cds_sl_add_int_init == r && memcmp(&a, &b, sizeof a) == 0, "cds_sl_add_int_init differs from sl_add_int_init"); }
-    for (k = 0; k < 400; k++) {
-        int32_t direct;
-        unsigned r = rnd();
-        a.bErrAck = b.bErrAck = (uint8_t)((rnd() % 7u) != 0u);
-        p.pFb = &a;
-        p.tNow = (uint32_t)(k * 10u + (r % 5u));
-        cds_sl_add_int_cycle(&p);
-        direct = sl_add_int_cycle(&b, p.tNow);
-        CHECK(p.cds_sl_add_int_cycle == direct, "FB_ADD_INT cycle %d: adapter %d, direct %d", k, (int)p.cds_sl_add_int_cycle, (int)direct);
-        CHECK(memcmp(&a, &b, sizeof a) == 0, "FB_ADD_INT cycle %d: instances differ", k);
-        if (direct == SL_OK) ok++;
+    for (c = 0; c < 10; c++) {
+        int valid = c < 8; /* 8 valid configurations, then the labelled invalid share: 2 */
+        if (!draw_add_int(&a, &b, valid)) {
+            CHECK(!valid, "FB_ADD_INT: no valid configuration found in 200000 random draws");
+            continue;
+        }
+        if (!valid) inv_config++;
+        a.bErrAck = b.bErrAck = (uint8_t)(0);
+        bump = 20 + (int)(rnd() % 20u);
+        pol = (c % 2 == 1) ? rnd() : 0u;
+        for (k = 0; k < 50; k++) {
+            int32_t direct;
+            next_machine();
+            a.bErrAck = b.bErrAck = next_signal(a.bErrAck, 1, pol >> 0);
+            a.bRun = b.bRun = (uint8_t)(k >= 2 && rnd() % 100u != 0u);
+            if (valid && k == bump) { a.nAnalogIn1++; b.nAnalogIn1++; } /* changed while running: ERROR */
+            if (valid && k == bump + 2) { a.nAnalogIn1--; b.nAnalogIn1--; } /* restored */
+            p.pFb = &a;
+            p.tNow = t += 10u;
+            cds_sl_add_int_cycle(&p);
+            direct = sl_add_int_cycle(&b, p.tNow);
+            CHECK(p.cds_sl_add_int_cycle == direct, "FB_ADD_INT config %d cycle %d: adapter %d, direct %d", c, k, (int)p.cds_sl_add_int_cycle, (int)direct);
+            CHECK(memcmp(&a, &b, sizeof a) == 0, "FB_ADD_INT config %d cycle %d: instances differ", c, k);
+            if (!valid) { inv_cycles++; continue; }
+            cycles++;
+            if (direct == SL_OK) ok++;
+            if (direct <= 0 && direct > -12) hist[-direct]++;
+            if (b.nState == SL_STATE_ERROR) reached_error = 1;
+            if (b.nState != SL_STATE_STOP && b.nState != SL_STATE_ERROR && b.nState != SL_STATE_RESET && b.nState != SL_STATE_SAFE) reached_run = 1;
+        }
     }
-    printf("FB_ADD_INT: %d of 400 cycles returned SL_OK\n", ok);
+    printf("FB_ADD_INT: %d of %d cycles (8 valid random configurations) returned SL_OK; run-like state %s, ERROR %s; invalid share: %d configurations, %d cycles\n", ok, cycles, reached_run ? "reached" : "NOT reached", reached_error ? "reached" : "NOT reached", inv_config, inv_cycles);
+    if (2 * ok <= cycles) printf("  status histogram (0, -1, ... -11): %d %d %d %d %d %d %d %d %d %d %d\n", hist[0], hist[1], hist[2], hist[3], hist[4], hist[5], hist[6], hist[7], hist[8], hist[9], hist[10]);
+    CHECK(cycles > 0 && 2 * ok > cycles, "FB_ADD_INT: only %d of %d cycles with valid configurations returned SL_OK", ok, cycles);
+    CHECK(reached_run, "FB_ADD_INT: the random test never reached a running state (an output on)");
+    CHECK(reached_error, "FB_ADD_INT: the random test never reached ERROR");
 }
 
+static void rnd_config_add_uint(FB_ADD_UINT *x)
+{
+    { static const unsigned v[] = {0u, 1u, 10u, 100u}; x->nAnalogIn1 = (uint16_t)v[rnd() % 4u]; }
+    { static const unsigned v[] = {0u, 1u, 10u, 100u}; x->nAnalogIn2 = (uint16_t)v[rnd() % 4u]; }
+    x->wInputActive = (uint16_t)(rnd() & 0x0u);
+}
+/* 1: a valid configuration (want_valid) or an invalid one was drawn into a and b */
+static int draw_add_uint(FB_ADD_UINT *a, FB_ADD_UINT *b, int want_valid)
+{
+    long k;
+    for (k = 0; k < 200000L; k++) {
+        static FB_ADD_UINT x;
+        int valid;
+        memset(&x, 0, sizeof x);
+        rnd_config_add_uint(&x);
+        valid = sl_add_uint_init(&x) == SL_OK && sl_add_uint_cycle(&x, 0u) == SL_OK;
+        if (valid == want_valid) {
+            memset(&x.bRun, 0, 0); /* keep x's parameters, reset the instance */
+            memset(a, 0, sizeof *a);
+            rnd_config_add_uint(a); /* placeholder, overwritten below */
+            a->nAnalogIn1 = x.nAnalogIn1;
+            a->nAnalogIn2 = x.nAnalogIn2;
+            a->wInputActive = x.wInputActive;
+            *b = *a;
+            return 1;
+        }
+    }
+    return 0;
+}
 static void test_add_uint(void)
 {
     static FB_ADD_UINT a, b;
     cds_sl_add_uint_cycle_struct p;
-    int k, ok = 0;
+    int c, k, bump, ok = 0, cycles = 0, inv_cycles = 0, inv_config = 0, reached_run = 0, reached_error = 0;
+    int hist[12] = {0};
+    unsigned pol = 0;
+    uint32_t t = 1000u;
     memset(&a, 0, sizeof a);
     memset(&b, 0, sizeof b);
     memset(&p, 0, sizeof p);
@@ -1097,26 +2254,81 @@ static void test_add_uint(void)
     a.wInputActive = b.wInputActive = 1;
     { cds_sl_add_uint_init_struct q; int32_t r; q.pFb = &a; cds_sl_add_uint_init(&q); r = sl_add_uint_init(&b);
       CHECK(q.cds_sl_add_uint_init == r && memcmp(&a, &b, sizeof a) == 0, "cds_sl_add_uint_init differs from sl_add_uint_init"); }
-    for (k = 0; k < 400; k++) {
-        int32_t direct;
-        unsigned r = rnd();
-        a.bErrAck = b.bErrAck = (uint8_t)((rnd() % 7u) != 0u);
-        p.pFb = &a;
-        p.tNow = (uint32_t)(k * 10u + (r % 5u));
-        cds_sl_add_uint_cycle(&p);
-        direct = sl_add_uint_cycle(&b, p.tNow);
-        CHECK(p.cds_sl_add_uint_cycle == direct, "FB_ADD_UINT cycle %d: adapter %d, direct %d", k, (int)p.cds_sl_add_uint_cycle, (int)direct);
-        CHECK(memcmp(&a, &b, sizeof a) == 0, "FB_ADD_UINT cycle %d: instances differ", k);
-        if (direct == SL_OK) ok++;
+    for (c = 0; c < 10; c++) {
+        int valid = c < 8; /* 8 valid configurations, then the labelled invalid share: 2 */
+        if (!draw_add_uint(&a, &b, valid)) {
+            CHECK(!valid, "FB_ADD_UINT: no valid configuration found in 200000 random draws");
+            continue;
+        }
+        if (!valid) inv_config++;
+        a.bErrAck = b.bErrAck = (uint8_t)(0);
+        bump = 20 + (int)(rnd() % 20u);
+        pol = (c % 2 == 1) ? rnd() : 0u;
+        for (k = 0; k < 50; k++) {
+            int32_t direct;
+            next_machine();
+            a.bErrAck = b.bErrAck = next_signal(a.bErrAck, 1, pol >> 0);
+            a.bRun = b.bRun = (uint8_t)(k >= 2 && rnd() % 100u != 0u);
+            if (valid && k == bump) { a.nAnalogIn1++; b.nAnalogIn1++; } /* changed while running: ERROR */
+            if (valid && k == bump + 2) { a.nAnalogIn1--; b.nAnalogIn1--; } /* restored */
+            p.pFb = &a;
+            p.tNow = t += 10u;
+            cds_sl_add_uint_cycle(&p);
+            direct = sl_add_uint_cycle(&b, p.tNow);
+            CHECK(p.cds_sl_add_uint_cycle == direct, "FB_ADD_UINT config %d cycle %d: adapter %d, direct %d", c, k, (int)p.cds_sl_add_uint_cycle, (int)direct);
+            CHECK(memcmp(&a, &b, sizeof a) == 0, "FB_ADD_UINT config %d cycle %d: instances differ", c, k);
+            if (!valid) { inv_cycles++; continue; }
+            cycles++;
+            if (direct == SL_OK) ok++;
+            if (direct <= 0 && direct > -12) hist[-direct]++;
+            if (b.nState == SL_STATE_ERROR) reached_error = 1;
+            if (b.nState != SL_STATE_STOP && b.nState != SL_STATE_ERROR && b.nState != SL_STATE_RESET && b.nState != SL_STATE_SAFE) reached_run = 1;
+        }
     }
-    printf("FB_ADD_UINT: %d of 400 cycles returned SL_OK\n", ok);
+    printf("FB_ADD_UINT: %d of %d cycles (8 valid random configurations) returned SL_OK; run-like state %s, ERROR %s; invalid share: %d configurations, %d cycles\n", ok, cycles, reached_run ? "reached" : "NOT reached", reached_error ? "reached" : "NOT reached", inv_config, inv_cycles);
+    if (2 * ok <= cycles) printf("  status histogram (0, -1, ... -11): %d %d %d %d %d %d %d %d %d %d %d\n", hist[0], hist[1], hist[2], hist[3], hist[4], hist[5], hist[6], hist[7], hist[8], hist[9], hist[10]);
+    CHECK(cycles > 0 && 2 * ok > cycles, "FB_ADD_UINT: only %d of %d cycles with valid configurations returned SL_OK", ok, cycles);
+    CHECK(reached_run, "FB_ADD_UINT: the random test never reached a running state (an output on)");
+    CHECK(reached_error, "FB_ADD_UINT: the random test never reached ERROR");
 }
 
+static void rnd_config_add_dint(FB_ADD_DINT *x)
+{
+    { static const unsigned v[] = {0u, 1u, 10u, 100u}; x->nAnalogIn1 = (int32_t)v[rnd() % 4u]; }
+    { static const unsigned v[] = {0u, 1u, 10u, 100u}; x->nAnalogIn2 = (int32_t)v[rnd() % 4u]; }
+    x->wInputActive = (uint16_t)(rnd() & 0x0u);
+}
+/* 1: a valid configuration (want_valid) or an invalid one was drawn into a and b */
+static int draw_add_dint(FB_ADD_DINT *a, FB_ADD_DINT *b, int want_valid)
+{
+    long k;
+    for (k = 0; k < 200000L; k++) {
+        static FB_ADD_DINT x;
+        int valid;
+        memset(&x, 0, sizeof x);
+        rnd_config_add_dint(&x);
+        valid = sl_add_dint_init(&x) == SL_OK && sl_add_dint_cycle(&x, 0u) == SL_OK;
+        if (valid == want_valid) {
+            memset(&x.bRun, 0, 0); /* keep x's parameters, reset the instance */
+            memset(a, 0, sizeof *a);
+            rnd_config_add_dint(a); /* placeholder, overwritten below */
+            a->nAnalogIn1 = x.nAnalogIn1;
+            a->nAnalogIn2 = x.nAnalogIn2;
+            a->wInputActive = x.wInputActive;
+            *b = *a;
+            return 1;
+        }
+    }
+    return 0;
+}
 static void test_add_dint(void)
 {
     static FB_ADD_DINT a, b;
     cds_sl_add_dint_cycle_struct p;
-    int k, ok = 0;
+    int c, k, bump, ok = 0, cycles = 0, inv_cycles = 0, inv_config = 0, reached_run = 0, reached_error = 0;
+    int hist[12] = {0};
+    unsigned pol = 0;
+    uint32_t t = 1000u;
     memset(&a, 0, sizeof a);
     memset(&b, 0, sizeof b);
     memset(&p, 0, sizeof p);
@@ -1128,26 +2340,81 @@ static void test_add_dint(void)
     a.wInputActive = b.wInputActive = 1;
     { cds_sl_add_dint_init_struct q; int32_t r; q.pFb = &a; cds_sl_add_dint_init(&q); r = sl_add_dint_init(&b);
       CHECK(q.cds_sl_add_dint_init == r && memcmp(&a, &b, sizeof a) == 0, "cds_sl_add_dint_init differs from sl_add_dint_init"); }
-    for (k = 0; k < 400; k++) {
-        int32_t direct;
-        unsigned r = rnd();
-        a.bErrAck = b.bErrAck = (uint8_t)((rnd() % 7u) != 0u);
-        p.pFb = &a;
-        p.tNow = (uint32_t)(k * 10u + (r % 5u));
-        cds_sl_add_dint_cycle(&p);
-        direct = sl_add_dint_cycle(&b, p.tNow);
-        CHECK(p.cds_sl_add_dint_cycle == direct, "FB_ADD_DINT cycle %d: adapter %d, direct %d", k, (int)p.cds_sl_add_dint_cycle, (int)direct);
-        CHECK(memcmp(&a, &b, sizeof a) == 0, "FB_ADD_DINT cycle %d: instances differ", k);
-        if (direct == SL_OK) ok++;
+    for (c = 0; c < 10; c++) {
+        int valid = c < 8; /* 8 valid configurations, then the labelled invalid share: 2 */
+        if (!draw_add_dint(&a, &b, valid)) {
+            CHECK(!valid, "FB_ADD_DINT: no valid configuration found in 200000 random draws");
+            continue;
+        }
+        if (!valid) inv_config++;
+        a.bErrAck = b.bErrAck = (uint8_t)(0);
+        bump = 20 + (int)(rnd() % 20u);
+        pol = (c % 2 == 1) ? rnd() : 0u;
+        for (k = 0; k < 50; k++) {
+            int32_t direct;
+            next_machine();
+            a.bErrAck = b.bErrAck = next_signal(a.bErrAck, 1, pol >> 0);
+            a.bRun = b.bRun = (uint8_t)(k >= 2 && rnd() % 100u != 0u);
+            if (valid && k == bump) { a.nAnalogIn1++; b.nAnalogIn1++; } /* changed while running: ERROR */
+            if (valid && k == bump + 2) { a.nAnalogIn1--; b.nAnalogIn1--; } /* restored */
+            p.pFb = &a;
+            p.tNow = t += 10u;
+            cds_sl_add_dint_cycle(&p);
+            direct = sl_add_dint_cycle(&b, p.tNow);
+            CHECK(p.cds_sl_add_dint_cycle == direct, "FB_ADD_DINT config %d cycle %d: adapter %d, direct %d", c, k, (int)p.cds_sl_add_dint_cycle, (int)direct);
+            CHECK(memcmp(&a, &b, sizeof a) == 0, "FB_ADD_DINT config %d cycle %d: instances differ", c, k);
+            if (!valid) { inv_cycles++; continue; }
+            cycles++;
+            if (direct == SL_OK) ok++;
+            if (direct <= 0 && direct > -12) hist[-direct]++;
+            if (b.nState == SL_STATE_ERROR) reached_error = 1;
+            if (b.nState != SL_STATE_STOP && b.nState != SL_STATE_ERROR && b.nState != SL_STATE_RESET && b.nState != SL_STATE_SAFE) reached_run = 1;
+        }
     }
-    printf("FB_ADD_DINT: %d of 400 cycles returned SL_OK\n", ok);
+    printf("FB_ADD_DINT: %d of %d cycles (8 valid random configurations) returned SL_OK; run-like state %s, ERROR %s; invalid share: %d configurations, %d cycles\n", ok, cycles, reached_run ? "reached" : "NOT reached", reached_error ? "reached" : "NOT reached", inv_config, inv_cycles);
+    if (2 * ok <= cycles) printf("  status histogram (0, -1, ... -11): %d %d %d %d %d %d %d %d %d %d %d\n", hist[0], hist[1], hist[2], hist[3], hist[4], hist[5], hist[6], hist[7], hist[8], hist[9], hist[10]);
+    CHECK(cycles > 0 && 2 * ok > cycles, "FB_ADD_DINT: only %d of %d cycles with valid configurations returned SL_OK", ok, cycles);
+    CHECK(reached_run, "FB_ADD_DINT: the random test never reached a running state (an output on)");
+    CHECK(reached_error, "FB_ADD_DINT: the random test never reached ERROR");
 }
 
+static void rnd_config_add_udint(FB_ADD_UDINT *x)
+{
+    { static const unsigned v[] = {0u, 1u, 10u, 100u}; x->nAnalogIn1 = (uint32_t)v[rnd() % 4u]; }
+    { static const unsigned v[] = {0u, 1u, 10u, 100u}; x->nAnalogIn2 = (uint32_t)v[rnd() % 4u]; }
+    x->wInputActive = (uint16_t)(rnd() & 0x0u);
+}
+/* 1: a valid configuration (want_valid) or an invalid one was drawn into a and b */
+static int draw_add_udint(FB_ADD_UDINT *a, FB_ADD_UDINT *b, int want_valid)
+{
+    long k;
+    for (k = 0; k < 200000L; k++) {
+        static FB_ADD_UDINT x;
+        int valid;
+        memset(&x, 0, sizeof x);
+        rnd_config_add_udint(&x);
+        valid = sl_add_udint_init(&x) == SL_OK && sl_add_udint_cycle(&x, 0u) == SL_OK;
+        if (valid == want_valid) {
+            memset(&x.bRun, 0, 0); /* keep x's parameters, reset the instance */
+            memset(a, 0, sizeof *a);
+            rnd_config_add_udint(a); /* placeholder, overwritten below */
+            a->nAnalogIn1 = x.nAnalogIn1;
+            a->nAnalogIn2 = x.nAnalogIn2;
+            a->wInputActive = x.wInputActive;
+            *b = *a;
+            return 1;
+        }
+    }
+    return 0;
+}
 static void test_add_udint(void)
 {
     static FB_ADD_UDINT a, b;
     cds_sl_add_udint_cycle_struct p;
-    int k, ok = 0;
+    int c, k, bump, ok = 0, cycles = 0, inv_cycles = 0, inv_config = 0, reached_run = 0, reached_error = 0;
+    int hist[12] = {0};
+    unsigned pol = 0;
+    uint32_t t = 1000u;
     memset(&a, 0, sizeof a);
     memset(&b, 0, sizeof b);
     memset(&p, 0, sizeof p);
@@ -1159,26 +2426,81 @@ static void test_add_udint(void)
     a.wInputActive = b.wInputActive = 1;
     { cds_sl_add_udint_init_struct q; int32_t r; q.pFb = &a; cds_sl_add_udint_init(&q); r = sl_add_udint_init(&b);
       CHECK(q.cds_sl_add_udint_init == r && memcmp(&a, &b, sizeof a) == 0, "cds_sl_add_udint_init differs from sl_add_udint_init"); }
-    for (k = 0; k < 400; k++) {
-        int32_t direct;
-        unsigned r = rnd();
-        a.bErrAck = b.bErrAck = (uint8_t)((rnd() % 7u) != 0u);
-        p.pFb = &a;
-        p.tNow = (uint32_t)(k * 10u + (r % 5u));
-        cds_sl_add_udint_cycle(&p);
-        direct = sl_add_udint_cycle(&b, p.tNow);
-        CHECK(p.cds_sl_add_udint_cycle == direct, "FB_ADD_UDINT cycle %d: adapter %d, direct %d", k, (int)p.cds_sl_add_udint_cycle, (int)direct);
-        CHECK(memcmp(&a, &b, sizeof a) == 0, "FB_ADD_UDINT cycle %d: instances differ", k);
-        if (direct == SL_OK) ok++;
+    for (c = 0; c < 10; c++) {
+        int valid = c < 8; /* 8 valid configurations, then the labelled invalid share: 2 */
+        if (!draw_add_udint(&a, &b, valid)) {
+            CHECK(!valid, "FB_ADD_UDINT: no valid configuration found in 200000 random draws");
+            continue;
+        }
+        if (!valid) inv_config++;
+        a.bErrAck = b.bErrAck = (uint8_t)(0);
+        bump = 20 + (int)(rnd() % 20u);
+        pol = (c % 2 == 1) ? rnd() : 0u;
+        for (k = 0; k < 50; k++) {
+            int32_t direct;
+            next_machine();
+            a.bErrAck = b.bErrAck = next_signal(a.bErrAck, 1, pol >> 0);
+            a.bRun = b.bRun = (uint8_t)(k >= 2 && rnd() % 100u != 0u);
+            if (valid && k == bump) { a.nAnalogIn1++; b.nAnalogIn1++; } /* changed while running: ERROR */
+            if (valid && k == bump + 2) { a.nAnalogIn1--; b.nAnalogIn1--; } /* restored */
+            p.pFb = &a;
+            p.tNow = t += 10u;
+            cds_sl_add_udint_cycle(&p);
+            direct = sl_add_udint_cycle(&b, p.tNow);
+            CHECK(p.cds_sl_add_udint_cycle == direct, "FB_ADD_UDINT config %d cycle %d: adapter %d, direct %d", c, k, (int)p.cds_sl_add_udint_cycle, (int)direct);
+            CHECK(memcmp(&a, &b, sizeof a) == 0, "FB_ADD_UDINT config %d cycle %d: instances differ", c, k);
+            if (!valid) { inv_cycles++; continue; }
+            cycles++;
+            if (direct == SL_OK) ok++;
+            if (direct <= 0 && direct > -12) hist[-direct]++;
+            if (b.nState == SL_STATE_ERROR) reached_error = 1;
+            if (b.nState != SL_STATE_STOP && b.nState != SL_STATE_ERROR && b.nState != SL_STATE_RESET && b.nState != SL_STATE_SAFE) reached_run = 1;
+        }
     }
-    printf("FB_ADD_UDINT: %d of 400 cycles returned SL_OK\n", ok);
+    printf("FB_ADD_UDINT: %d of %d cycles (8 valid random configurations) returned SL_OK; run-like state %s, ERROR %s; invalid share: %d configurations, %d cycles\n", ok, cycles, reached_run ? "reached" : "NOT reached", reached_error ? "reached" : "NOT reached", inv_config, inv_cycles);
+    if (2 * ok <= cycles) printf("  status histogram (0, -1, ... -11): %d %d %d %d %d %d %d %d %d %d %d\n", hist[0], hist[1], hist[2], hist[3], hist[4], hist[5], hist[6], hist[7], hist[8], hist[9], hist[10]);
+    CHECK(cycles > 0 && 2 * ok > cycles, "FB_ADD_UDINT: only %d of %d cycles with valid configurations returned SL_OK", ok, cycles);
+    CHECK(reached_run, "FB_ADD_UDINT: the random test never reached a running state (an output on)");
+    CHECK(reached_error, "FB_ADD_UDINT: the random test never reached ERROR");
 }
 
+static void rnd_config_sub_int(FB_SUB_INT *x)
+{
+    { static const unsigned v[] = {0u, 1u, 10u, 100u}; x->nAnalogIn1 = (int16_t)v[rnd() % 4u]; }
+    { static const unsigned v[] = {0u, 1u, 10u, 100u}; x->nAnalogIn2 = (int16_t)v[rnd() % 4u]; }
+    x->wInputActive = (uint16_t)(rnd() & 0x0u);
+}
+/* 1: a valid configuration (want_valid) or an invalid one was drawn into a and b */
+static int draw_sub_int(FB_SUB_INT *a, FB_SUB_INT *b, int want_valid)
+{
+    long k;
+    for (k = 0; k < 200000L; k++) {
+        static FB_SUB_INT x;
+        int valid;
+        memset(&x, 0, sizeof x);
+        rnd_config_sub_int(&x);
+        valid = sl_sub_int_init(&x) == SL_OK && sl_sub_int_cycle(&x, 0u) == SL_OK;
+        if (valid == want_valid) {
+            memset(&x.bRun, 0, 0); /* keep x's parameters, reset the instance */
+            memset(a, 0, sizeof *a);
+            rnd_config_sub_int(a); /* placeholder, overwritten below */
+            a->nAnalogIn1 = x.nAnalogIn1;
+            a->nAnalogIn2 = x.nAnalogIn2;
+            a->wInputActive = x.wInputActive;
+            *b = *a;
+            return 1;
+        }
+    }
+    return 0;
+}
 static void test_sub_int(void)
 {
     static FB_SUB_INT a, b;
     cds_sl_sub_int_cycle_struct p;
-    int k, ok = 0;
+    int c, k, bump, ok = 0, cycles = 0, inv_cycles = 0, inv_config = 0, reached_run = 0, reached_error = 0;
+    int hist[12] = {0};
+    unsigned pol = 0;
+    uint32_t t = 1000u;
     memset(&a, 0, sizeof a);
     memset(&b, 0, sizeof b);
     memset(&p, 0, sizeof p);
@@ -1190,26 +2512,81 @@ static void test_sub_int(void)
     a.wInputActive = b.wInputActive = 1;
     { cds_sl_sub_int_init_struct q; int32_t r; q.pFb = &a; cds_sl_sub_int_init(&q); r = sl_sub_int_init(&b);
       CHECK(q.cds_sl_sub_int_init == r && memcmp(&a, &b, sizeof a) == 0, "cds_sl_sub_int_init differs from sl_sub_int_init"); }
-    for (k = 0; k < 400; k++) {
-        int32_t direct;
-        unsigned r = rnd();
-        a.bErrAck = b.bErrAck = (uint8_t)((rnd() % 7u) != 0u);
-        p.pFb = &a;
-        p.tNow = (uint32_t)(k * 10u + (r % 5u));
-        cds_sl_sub_int_cycle(&p);
-        direct = sl_sub_int_cycle(&b, p.tNow);
-        CHECK(p.cds_sl_sub_int_cycle == direct, "FB_SUB_INT cycle %d: adapter %d, direct %d", k, (int)p.cds_sl_sub_int_cycle, (int)direct);
-        CHECK(memcmp(&a, &b, sizeof a) == 0, "FB_SUB_INT cycle %d: instances differ", k);
-        if (direct == SL_OK) ok++;
+    for (c = 0; c < 10; c++) {
+        int valid = c < 8; /* 8 valid configurations, then the labelled invalid share: 2 */
+        if (!draw_sub_int(&a, &b, valid)) {
+            CHECK(!valid, "FB_SUB_INT: no valid configuration found in 200000 random draws");
+            continue;
+        }
+        if (!valid) inv_config++;
+        a.bErrAck = b.bErrAck = (uint8_t)(0);
+        bump = 20 + (int)(rnd() % 20u);
+        pol = (c % 2 == 1) ? rnd() : 0u;
+        for (k = 0; k < 50; k++) {
+            int32_t direct;
+            next_machine();
+            a.bErrAck = b.bErrAck = next_signal(a.bErrAck, 1, pol >> 0);
+            a.bRun = b.bRun = (uint8_t)(k >= 2 && rnd() % 100u != 0u);
+            if (valid && k == bump) { a.nAnalogIn1++; b.nAnalogIn1++; } /* changed while running: ERROR */
+            if (valid && k == bump + 2) { a.nAnalogIn1--; b.nAnalogIn1--; } /* restored */
+            p.pFb = &a;
+            p.tNow = t += 10u;
+            cds_sl_sub_int_cycle(&p);
+            direct = sl_sub_int_cycle(&b, p.tNow);
+            CHECK(p.cds_sl_sub_int_cycle == direct, "FB_SUB_INT config %d cycle %d: adapter %d, direct %d", c, k, (int)p.cds_sl_sub_int_cycle, (int)direct);
+            CHECK(memcmp(&a, &b, sizeof a) == 0, "FB_SUB_INT config %d cycle %d: instances differ", c, k);
+            if (!valid) { inv_cycles++; continue; }
+            cycles++;
+            if (direct == SL_OK) ok++;
+            if (direct <= 0 && direct > -12) hist[-direct]++;
+            if (b.nState == SL_STATE_ERROR) reached_error = 1;
+            if (b.nState != SL_STATE_STOP && b.nState != SL_STATE_ERROR && b.nState != SL_STATE_RESET && b.nState != SL_STATE_SAFE) reached_run = 1;
+        }
     }
-    printf("FB_SUB_INT: %d of 400 cycles returned SL_OK\n", ok);
+    printf("FB_SUB_INT: %d of %d cycles (8 valid random configurations) returned SL_OK; run-like state %s, ERROR %s; invalid share: %d configurations, %d cycles\n", ok, cycles, reached_run ? "reached" : "NOT reached", reached_error ? "reached" : "NOT reached", inv_config, inv_cycles);
+    if (2 * ok <= cycles) printf("  status histogram (0, -1, ... -11): %d %d %d %d %d %d %d %d %d %d %d\n", hist[0], hist[1], hist[2], hist[3], hist[4], hist[5], hist[6], hist[7], hist[8], hist[9], hist[10]);
+    CHECK(cycles > 0 && 2 * ok > cycles, "FB_SUB_INT: only %d of %d cycles with valid configurations returned SL_OK", ok, cycles);
+    CHECK(reached_run, "FB_SUB_INT: the random test never reached a running state (an output on)");
+    CHECK(reached_error, "FB_SUB_INT: the random test never reached ERROR");
 }
 
+static void rnd_config_sub_uint(FB_SUB_UINT *x)
+{
+    { static const unsigned v[] = {0u, 1u, 10u, 100u}; x->nAnalogIn1 = (uint16_t)v[rnd() % 4u]; }
+    { static const unsigned v[] = {0u, 1u, 10u, 100u}; x->nAnalogIn2 = (uint16_t)v[rnd() % 4u]; }
+    x->wInputActive = (uint16_t)(rnd() & 0x0u);
+}
+/* 1: a valid configuration (want_valid) or an invalid one was drawn into a and b */
+static int draw_sub_uint(FB_SUB_UINT *a, FB_SUB_UINT *b, int want_valid)
+{
+    long k;
+    for (k = 0; k < 200000L; k++) {
+        static FB_SUB_UINT x;
+        int valid;
+        memset(&x, 0, sizeof x);
+        rnd_config_sub_uint(&x);
+        valid = sl_sub_uint_init(&x) == SL_OK && sl_sub_uint_cycle(&x, 0u) == SL_OK;
+        if (valid == want_valid) {
+            memset(&x.bRun, 0, 0); /* keep x's parameters, reset the instance */
+            memset(a, 0, sizeof *a);
+            rnd_config_sub_uint(a); /* placeholder, overwritten below */
+            a->nAnalogIn1 = x.nAnalogIn1;
+            a->nAnalogIn2 = x.nAnalogIn2;
+            a->wInputActive = x.wInputActive;
+            *b = *a;
+            return 1;
+        }
+    }
+    return 0;
+}
 static void test_sub_uint(void)
 {
     static FB_SUB_UINT a, b;
     cds_sl_sub_uint_cycle_struct p;
-    int k, ok = 0;
+    int c, k, bump, ok = 0, cycles = 0, inv_cycles = 0, inv_config = 0, reached_run = 0, reached_error = 0;
+    int hist[12] = {0};
+    unsigned pol = 0;
+    uint32_t t = 1000u;
     memset(&a, 0, sizeof a);
     memset(&b, 0, sizeof b);
     memset(&p, 0, sizeof p);
@@ -1221,26 +2598,81 @@ static void test_sub_uint(void)
     a.wInputActive = b.wInputActive = 1;
     { cds_sl_sub_uint_init_struct q; int32_t r; q.pFb = &a; cds_sl_sub_uint_init(&q); r = sl_sub_uint_init(&b);
       CHECK(q.cds_sl_sub_uint_init == r && memcmp(&a, &b, sizeof a) == 0, "cds_sl_sub_uint_init differs from sl_sub_uint_init"); }
-    for (k = 0; k < 400; k++) {
-        int32_t direct;
-        unsigned r = rnd();
-        a.bErrAck = b.bErrAck = (uint8_t)((rnd() % 7u) != 0u);
-        p.pFb = &a;
-        p.tNow = (uint32_t)(k * 10u + (r % 5u));
-        cds_sl_sub_uint_cycle(&p);
-        direct = sl_sub_uint_cycle(&b, p.tNow);
-        CHECK(p.cds_sl_sub_uint_cycle == direct, "FB_SUB_UINT cycle %d: adapter %d, direct %d", k, (int)p.cds_sl_sub_uint_cycle, (int)direct);
-        CHECK(memcmp(&a, &b, sizeof a) == 0, "FB_SUB_UINT cycle %d: instances differ", k);
-        if (direct == SL_OK) ok++;
+    for (c = 0; c < 10; c++) {
+        int valid = c < 8; /* 8 valid configurations, then the labelled invalid share: 2 */
+        if (!draw_sub_uint(&a, &b, valid)) {
+            CHECK(!valid, "FB_SUB_UINT: no valid configuration found in 200000 random draws");
+            continue;
+        }
+        if (!valid) inv_config++;
+        a.bErrAck = b.bErrAck = (uint8_t)(0);
+        bump = 20 + (int)(rnd() % 20u);
+        pol = (c % 2 == 1) ? rnd() : 0u;
+        for (k = 0; k < 50; k++) {
+            int32_t direct;
+            next_machine();
+            a.bErrAck = b.bErrAck = next_signal(a.bErrAck, 1, pol >> 0);
+            a.bRun = b.bRun = (uint8_t)(k >= 2 && rnd() % 100u != 0u);
+            if (valid && k == bump) { a.nAnalogIn1++; b.nAnalogIn1++; } /* changed while running: ERROR */
+            if (valid && k == bump + 2) { a.nAnalogIn1--; b.nAnalogIn1--; } /* restored */
+            p.pFb = &a;
+            p.tNow = t += 10u;
+            cds_sl_sub_uint_cycle(&p);
+            direct = sl_sub_uint_cycle(&b, p.tNow);
+            CHECK(p.cds_sl_sub_uint_cycle == direct, "FB_SUB_UINT config %d cycle %d: adapter %d, direct %d", c, k, (int)p.cds_sl_sub_uint_cycle, (int)direct);
+            CHECK(memcmp(&a, &b, sizeof a) == 0, "FB_SUB_UINT config %d cycle %d: instances differ", c, k);
+            if (!valid) { inv_cycles++; continue; }
+            cycles++;
+            if (direct == SL_OK) ok++;
+            if (direct <= 0 && direct > -12) hist[-direct]++;
+            if (b.nState == SL_STATE_ERROR) reached_error = 1;
+            if (b.nState != SL_STATE_STOP && b.nState != SL_STATE_ERROR && b.nState != SL_STATE_RESET && b.nState != SL_STATE_SAFE) reached_run = 1;
+        }
     }
-    printf("FB_SUB_UINT: %d of 400 cycles returned SL_OK\n", ok);
+    printf("FB_SUB_UINT: %d of %d cycles (8 valid random configurations) returned SL_OK; run-like state %s, ERROR %s; invalid share: %d configurations, %d cycles\n", ok, cycles, reached_run ? "reached" : "NOT reached", reached_error ? "reached" : "NOT reached", inv_config, inv_cycles);
+    if (2 * ok <= cycles) printf("  status histogram (0, -1, ... -11): %d %d %d %d %d %d %d %d %d %d %d\n", hist[0], hist[1], hist[2], hist[3], hist[4], hist[5], hist[6], hist[7], hist[8], hist[9], hist[10]);
+    CHECK(cycles > 0 && 2 * ok > cycles, "FB_SUB_UINT: only %d of %d cycles with valid configurations returned SL_OK", ok, cycles);
+    CHECK(reached_run, "FB_SUB_UINT: the random test never reached a running state (an output on)");
+    CHECK(reached_error, "FB_SUB_UINT: the random test never reached ERROR");
 }
 
+static void rnd_config_sub_dint(FB_SUB_DINT *x)
+{
+    { static const unsigned v[] = {0u, 1u, 10u, 100u}; x->nAnalogIn1 = (int32_t)v[rnd() % 4u]; }
+    { static const unsigned v[] = {0u, 1u, 10u, 100u}; x->nAnalogIn2 = (int32_t)v[rnd() % 4u]; }
+    x->wInputActive = (uint16_t)(rnd() & 0x0u);
+}
+/* 1: a valid configuration (want_valid) or an invalid one was drawn into a and b */
+static int draw_sub_dint(FB_SUB_DINT *a, FB_SUB_DINT *b, int want_valid)
+{
+    long k;
+    for (k = 0; k < 200000L; k++) {
+        static FB_SUB_DINT x;
+        int valid;
+        memset(&x, 0, sizeof x);
+        rnd_config_sub_dint(&x);
+        valid = sl_sub_dint_init(&x) == SL_OK && sl_sub_dint_cycle(&x, 0u) == SL_OK;
+        if (valid == want_valid) {
+            memset(&x.bRun, 0, 0); /* keep x's parameters, reset the instance */
+            memset(a, 0, sizeof *a);
+            rnd_config_sub_dint(a); /* placeholder, overwritten below */
+            a->nAnalogIn1 = x.nAnalogIn1;
+            a->nAnalogIn2 = x.nAnalogIn2;
+            a->wInputActive = x.wInputActive;
+            *b = *a;
+            return 1;
+        }
+    }
+    return 0;
+}
 static void test_sub_dint(void)
 {
     static FB_SUB_DINT a, b;
     cds_sl_sub_dint_cycle_struct p;
-    int k, ok = 0;
+    int c, k, bump, ok = 0, cycles = 0, inv_cycles = 0, inv_config = 0, reached_run = 0, reached_error = 0;
+    int hist[12] = {0};
+    unsigned pol = 0;
+    uint32_t t = 1000u;
     memset(&a, 0, sizeof a);
     memset(&b, 0, sizeof b);
     memset(&p, 0, sizeof p);
@@ -1252,26 +2684,81 @@ static void test_sub_dint(void)
     a.wInputActive = b.wInputActive = 1;
     { cds_sl_sub_dint_init_struct q; int32_t r; q.pFb = &a; cds_sl_sub_dint_init(&q); r = sl_sub_dint_init(&b);
       CHECK(q.cds_sl_sub_dint_init == r && memcmp(&a, &b, sizeof a) == 0, "cds_sl_sub_dint_init differs from sl_sub_dint_init"); }
-    for (k = 0; k < 400; k++) {
-        int32_t direct;
-        unsigned r = rnd();
-        a.bErrAck = b.bErrAck = (uint8_t)((rnd() % 7u) != 0u);
-        p.pFb = &a;
-        p.tNow = (uint32_t)(k * 10u + (r % 5u));
-        cds_sl_sub_dint_cycle(&p);
-        direct = sl_sub_dint_cycle(&b, p.tNow);
-        CHECK(p.cds_sl_sub_dint_cycle == direct, "FB_SUB_DINT cycle %d: adapter %d, direct %d", k, (int)p.cds_sl_sub_dint_cycle, (int)direct);
-        CHECK(memcmp(&a, &b, sizeof a) == 0, "FB_SUB_DINT cycle %d: instances differ", k);
-        if (direct == SL_OK) ok++;
+    for (c = 0; c < 10; c++) {
+        int valid = c < 8; /* 8 valid configurations, then the labelled invalid share: 2 */
+        if (!draw_sub_dint(&a, &b, valid)) {
+            CHECK(!valid, "FB_SUB_DINT: no valid configuration found in 200000 random draws");
+            continue;
+        }
+        if (!valid) inv_config++;
+        a.bErrAck = b.bErrAck = (uint8_t)(0);
+        bump = 20 + (int)(rnd() % 20u);
+        pol = (c % 2 == 1) ? rnd() : 0u;
+        for (k = 0; k < 50; k++) {
+            int32_t direct;
+            next_machine();
+            a.bErrAck = b.bErrAck = next_signal(a.bErrAck, 1, pol >> 0);
+            a.bRun = b.bRun = (uint8_t)(k >= 2 && rnd() % 100u != 0u);
+            if (valid && k == bump) { a.nAnalogIn1++; b.nAnalogIn1++; } /* changed while running: ERROR */
+            if (valid && k == bump + 2) { a.nAnalogIn1--; b.nAnalogIn1--; } /* restored */
+            p.pFb = &a;
+            p.tNow = t += 10u;
+            cds_sl_sub_dint_cycle(&p);
+            direct = sl_sub_dint_cycle(&b, p.tNow);
+            CHECK(p.cds_sl_sub_dint_cycle == direct, "FB_SUB_DINT config %d cycle %d: adapter %d, direct %d", c, k, (int)p.cds_sl_sub_dint_cycle, (int)direct);
+            CHECK(memcmp(&a, &b, sizeof a) == 0, "FB_SUB_DINT config %d cycle %d: instances differ", c, k);
+            if (!valid) { inv_cycles++; continue; }
+            cycles++;
+            if (direct == SL_OK) ok++;
+            if (direct <= 0 && direct > -12) hist[-direct]++;
+            if (b.nState == SL_STATE_ERROR) reached_error = 1;
+            if (b.nState != SL_STATE_STOP && b.nState != SL_STATE_ERROR && b.nState != SL_STATE_RESET && b.nState != SL_STATE_SAFE) reached_run = 1;
+        }
     }
-    printf("FB_SUB_DINT: %d of 400 cycles returned SL_OK\n", ok);
+    printf("FB_SUB_DINT: %d of %d cycles (8 valid random configurations) returned SL_OK; run-like state %s, ERROR %s; invalid share: %d configurations, %d cycles\n", ok, cycles, reached_run ? "reached" : "NOT reached", reached_error ? "reached" : "NOT reached", inv_config, inv_cycles);
+    if (2 * ok <= cycles) printf("  status histogram (0, -1, ... -11): %d %d %d %d %d %d %d %d %d %d %d\n", hist[0], hist[1], hist[2], hist[3], hist[4], hist[5], hist[6], hist[7], hist[8], hist[9], hist[10]);
+    CHECK(cycles > 0 && 2 * ok > cycles, "FB_SUB_DINT: only %d of %d cycles with valid configurations returned SL_OK", ok, cycles);
+    CHECK(reached_run, "FB_SUB_DINT: the random test never reached a running state (an output on)");
+    CHECK(reached_error, "FB_SUB_DINT: the random test never reached ERROR");
 }
 
+static void rnd_config_sub_udint(FB_SUB_UDINT *x)
+{
+    { static const unsigned v[] = {0u, 1u, 10u, 100u}; x->nAnalogIn1 = (uint32_t)v[rnd() % 4u]; }
+    { static const unsigned v[] = {0u, 1u, 10u, 100u}; x->nAnalogIn2 = (uint32_t)v[rnd() % 4u]; }
+    x->wInputActive = (uint16_t)(rnd() & 0x0u);
+}
+/* 1: a valid configuration (want_valid) or an invalid one was drawn into a and b */
+static int draw_sub_udint(FB_SUB_UDINT *a, FB_SUB_UDINT *b, int want_valid)
+{
+    long k;
+    for (k = 0; k < 200000L; k++) {
+        static FB_SUB_UDINT x;
+        int valid;
+        memset(&x, 0, sizeof x);
+        rnd_config_sub_udint(&x);
+        valid = sl_sub_udint_init(&x) == SL_OK && sl_sub_udint_cycle(&x, 0u) == SL_OK;
+        if (valid == want_valid) {
+            memset(&x.bRun, 0, 0); /* keep x's parameters, reset the instance */
+            memset(a, 0, sizeof *a);
+            rnd_config_sub_udint(a); /* placeholder, overwritten below */
+            a->nAnalogIn1 = x.nAnalogIn1;
+            a->nAnalogIn2 = x.nAnalogIn2;
+            a->wInputActive = x.wInputActive;
+            *b = *a;
+            return 1;
+        }
+    }
+    return 0;
+}
 static void test_sub_udint(void)
 {
     static FB_SUB_UDINT a, b;
     cds_sl_sub_udint_cycle_struct p;
-    int k, ok = 0;
+    int c, k, bump, ok = 0, cycles = 0, inv_cycles = 0, inv_config = 0, reached_run = 0, reached_error = 0;
+    int hist[12] = {0};
+    unsigned pol = 0;
+    uint32_t t = 1000u;
     memset(&a, 0, sizeof a);
     memset(&b, 0, sizeof b);
     memset(&p, 0, sizeof p);
@@ -1283,26 +2770,81 @@ static void test_sub_udint(void)
     a.wInputActive = b.wInputActive = 1;
     { cds_sl_sub_udint_init_struct q; int32_t r; q.pFb = &a; cds_sl_sub_udint_init(&q); r = sl_sub_udint_init(&b);
       CHECK(q.cds_sl_sub_udint_init == r && memcmp(&a, &b, sizeof a) == 0, "cds_sl_sub_udint_init differs from sl_sub_udint_init"); }
-    for (k = 0; k < 400; k++) {
-        int32_t direct;
-        unsigned r = rnd();
-        a.bErrAck = b.bErrAck = (uint8_t)((rnd() % 7u) != 0u);
-        p.pFb = &a;
-        p.tNow = (uint32_t)(k * 10u + (r % 5u));
-        cds_sl_sub_udint_cycle(&p);
-        direct = sl_sub_udint_cycle(&b, p.tNow);
-        CHECK(p.cds_sl_sub_udint_cycle == direct, "FB_SUB_UDINT cycle %d: adapter %d, direct %d", k, (int)p.cds_sl_sub_udint_cycle, (int)direct);
-        CHECK(memcmp(&a, &b, sizeof a) == 0, "FB_SUB_UDINT cycle %d: instances differ", k);
-        if (direct == SL_OK) ok++;
+    for (c = 0; c < 10; c++) {
+        int valid = c < 8; /* 8 valid configurations, then the labelled invalid share: 2 */
+        if (!draw_sub_udint(&a, &b, valid)) {
+            CHECK(!valid, "FB_SUB_UDINT: no valid configuration found in 200000 random draws");
+            continue;
+        }
+        if (!valid) inv_config++;
+        a.bErrAck = b.bErrAck = (uint8_t)(0);
+        bump = 20 + (int)(rnd() % 20u);
+        pol = (c % 2 == 1) ? rnd() : 0u;
+        for (k = 0; k < 50; k++) {
+            int32_t direct;
+            next_machine();
+            a.bErrAck = b.bErrAck = next_signal(a.bErrAck, 1, pol >> 0);
+            a.bRun = b.bRun = (uint8_t)(k >= 2 && rnd() % 100u != 0u);
+            if (valid && k == bump) { a.nAnalogIn1++; b.nAnalogIn1++; } /* changed while running: ERROR */
+            if (valid && k == bump + 2) { a.nAnalogIn1--; b.nAnalogIn1--; } /* restored */
+            p.pFb = &a;
+            p.tNow = t += 10u;
+            cds_sl_sub_udint_cycle(&p);
+            direct = sl_sub_udint_cycle(&b, p.tNow);
+            CHECK(p.cds_sl_sub_udint_cycle == direct, "FB_SUB_UDINT config %d cycle %d: adapter %d, direct %d", c, k, (int)p.cds_sl_sub_udint_cycle, (int)direct);
+            CHECK(memcmp(&a, &b, sizeof a) == 0, "FB_SUB_UDINT config %d cycle %d: instances differ", c, k);
+            if (!valid) { inv_cycles++; continue; }
+            cycles++;
+            if (direct == SL_OK) ok++;
+            if (direct <= 0 && direct > -12) hist[-direct]++;
+            if (b.nState == SL_STATE_ERROR) reached_error = 1;
+            if (b.nState != SL_STATE_STOP && b.nState != SL_STATE_ERROR && b.nState != SL_STATE_RESET && b.nState != SL_STATE_SAFE) reached_run = 1;
+        }
     }
-    printf("FB_SUB_UDINT: %d of 400 cycles returned SL_OK\n", ok);
+    printf("FB_SUB_UDINT: %d of %d cycles (8 valid random configurations) returned SL_OK; run-like state %s, ERROR %s; invalid share: %d configurations, %d cycles\n", ok, cycles, reached_run ? "reached" : "NOT reached", reached_error ? "reached" : "NOT reached", inv_config, inv_cycles);
+    if (2 * ok <= cycles) printf("  status histogram (0, -1, ... -11): %d %d %d %d %d %d %d %d %d %d %d\n", hist[0], hist[1], hist[2], hist[3], hist[4], hist[5], hist[6], hist[7], hist[8], hist[9], hist[10]);
+    CHECK(cycles > 0 && 2 * ok > cycles, "FB_SUB_UDINT: only %d of %d cycles with valid configurations returned SL_OK", ok, cycles);
+    CHECK(reached_run, "FB_SUB_UDINT: the random test never reached a running state (an output on)");
+    CHECK(reached_error, "FB_SUB_UDINT: the random test never reached ERROR");
 }
 
+static void rnd_config_mul_int(FB_MUL_INT *x)
+{
+    { static const unsigned v[] = {0u, 1u, 10u, 100u}; x->nAnalogIn1 = (int16_t)v[rnd() % 4u]; }
+    { static const unsigned v[] = {0u, 1u, 10u, 100u}; x->nAnalogIn2 = (int16_t)v[rnd() % 4u]; }
+    x->wInputActive = (uint16_t)(rnd() & 0x0u);
+}
+/* 1: a valid configuration (want_valid) or an invalid one was drawn into a and b */
+static int draw_mul_int(FB_MUL_INT *a, FB_MUL_INT *b, int want_valid)
+{
+    long k;
+    for (k = 0; k < 200000L; k++) {
+        static FB_MUL_INT x;
+        int valid;
+        memset(&x, 0, sizeof x);
+        rnd_config_mul_int(&x);
+        valid = sl_mul_int_init(&x) == SL_OK && sl_mul_int_cycle(&x, 0u) == SL_OK;
+        if (valid == want_valid) {
+            memset(&x.bRun, 0, 0); /* keep x's parameters, reset the instance */
+            memset(a, 0, sizeof *a);
+            rnd_config_mul_int(a); /* placeholder, overwritten below */
+            a->nAnalogIn1 = x.nAnalogIn1;
+            a->nAnalogIn2 = x.nAnalogIn2;
+            a->wInputActive = x.wInputActive;
+            *b = *a;
+            return 1;
+        }
+    }
+    return 0;
+}
 static void test_mul_int(void)
 {
     static FB_MUL_INT a, b;
     cds_sl_mul_int_cycle_struct p;
-    int k, ok = 0;
+    int c, k, bump, ok = 0, cycles = 0, inv_cycles = 0, inv_config = 0, reached_run = 0, reached_error = 0;
+    int hist[12] = {0};
+    unsigned pol = 0;
+    uint32_t t = 1000u;
     memset(&a, 0, sizeof a);
     memset(&b, 0, sizeof b);
     memset(&p, 0, sizeof p);
@@ -1314,26 +2856,81 @@ static void test_mul_int(void)
     a.wInputActive = b.wInputActive = 1;
     { cds_sl_mul_int_init_struct q; int32_t r; q.pFb = &a; cds_sl_mul_int_init(&q); r = sl_mul_int_init(&b);
       CHECK(q.cds_sl_mul_int_init == r && memcmp(&a, &b, sizeof a) == 0, "cds_sl_mul_int_init differs from sl_mul_int_init"); }
-    for (k = 0; k < 400; k++) {
-        int32_t direct;
-        unsigned r = rnd();
-        a.bErrAck = b.bErrAck = (uint8_t)((rnd() % 7u) != 0u);
-        p.pFb = &a;
-        p.tNow = (uint32_t)(k * 10u + (r % 5u));
-        cds_sl_mul_int_cycle(&p);
-        direct = sl_mul_int_cycle(&b, p.tNow);
-        CHECK(p.cds_sl_mul_int_cycle == direct, "FB_MUL_INT cycle %d: adapter %d, direct %d", k, (int)p.cds_sl_mul_int_cycle, (int)direct);
-        CHECK(memcmp(&a, &b, sizeof a) == 0, "FB_MUL_INT cycle %d: instances differ", k);
-        if (direct == SL_OK) ok++;
+    for (c = 0; c < 10; c++) {
+        int valid = c < 8; /* 8 valid configurations, then the labelled invalid share: 2 */
+        if (!draw_mul_int(&a, &b, valid)) {
+            CHECK(!valid, "FB_MUL_INT: no valid configuration found in 200000 random draws");
+            continue;
+        }
+        if (!valid) inv_config++;
+        a.bErrAck = b.bErrAck = (uint8_t)(0);
+        bump = 20 + (int)(rnd() % 20u);
+        pol = (c % 2 == 1) ? rnd() : 0u;
+        for (k = 0; k < 50; k++) {
+            int32_t direct;
+            next_machine();
+            a.bErrAck = b.bErrAck = next_signal(a.bErrAck, 1, pol >> 0);
+            a.bRun = b.bRun = (uint8_t)(k >= 2 && rnd() % 100u != 0u);
+            if (valid && k == bump) { a.nAnalogIn1++; b.nAnalogIn1++; } /* changed while running: ERROR */
+            if (valid && k == bump + 2) { a.nAnalogIn1--; b.nAnalogIn1--; } /* restored */
+            p.pFb = &a;
+            p.tNow = t += 10u;
+            cds_sl_mul_int_cycle(&p);
+            direct = sl_mul_int_cycle(&b, p.tNow);
+            CHECK(p.cds_sl_mul_int_cycle == direct, "FB_MUL_INT config %d cycle %d: adapter %d, direct %d", c, k, (int)p.cds_sl_mul_int_cycle, (int)direct);
+            CHECK(memcmp(&a, &b, sizeof a) == 0, "FB_MUL_INT config %d cycle %d: instances differ", c, k);
+            if (!valid) { inv_cycles++; continue; }
+            cycles++;
+            if (direct == SL_OK) ok++;
+            if (direct <= 0 && direct > -12) hist[-direct]++;
+            if (b.nState == SL_STATE_ERROR) reached_error = 1;
+            if (b.nState != SL_STATE_STOP && b.nState != SL_STATE_ERROR && b.nState != SL_STATE_RESET && b.nState != SL_STATE_SAFE) reached_run = 1;
+        }
     }
-    printf("FB_MUL_INT: %d of 400 cycles returned SL_OK\n", ok);
+    printf("FB_MUL_INT: %d of %d cycles (8 valid random configurations) returned SL_OK; run-like state %s, ERROR %s; invalid share: %d configurations, %d cycles\n", ok, cycles, reached_run ? "reached" : "NOT reached", reached_error ? "reached" : "NOT reached", inv_config, inv_cycles);
+    if (2 * ok <= cycles) printf("  status histogram (0, -1, ... -11): %d %d %d %d %d %d %d %d %d %d %d\n", hist[0], hist[1], hist[2], hist[3], hist[4], hist[5], hist[6], hist[7], hist[8], hist[9], hist[10]);
+    CHECK(cycles > 0 && 2 * ok > cycles, "FB_MUL_INT: only %d of %d cycles with valid configurations returned SL_OK", ok, cycles);
+    CHECK(reached_run, "FB_MUL_INT: the random test never reached a running state (an output on)");
+    CHECK(reached_error, "FB_MUL_INT: the random test never reached ERROR");
 }
 
+static void rnd_config_mul_uint(FB_MUL_UINT *x)
+{
+    { static const unsigned v[] = {0u, 1u, 10u, 100u}; x->nAnalogIn1 = (uint16_t)v[rnd() % 4u]; }
+    { static const unsigned v[] = {0u, 1u, 10u, 100u}; x->nAnalogIn2 = (uint16_t)v[rnd() % 4u]; }
+    x->wInputActive = (uint16_t)(rnd() & 0x0u);
+}
+/* 1: a valid configuration (want_valid) or an invalid one was drawn into a and b */
+static int draw_mul_uint(FB_MUL_UINT *a, FB_MUL_UINT *b, int want_valid)
+{
+    long k;
+    for (k = 0; k < 200000L; k++) {
+        static FB_MUL_UINT x;
+        int valid;
+        memset(&x, 0, sizeof x);
+        rnd_config_mul_uint(&x);
+        valid = sl_mul_uint_init(&x) == SL_OK && sl_mul_uint_cycle(&x, 0u) == SL_OK;
+        if (valid == want_valid) {
+            memset(&x.bRun, 0, 0); /* keep x's parameters, reset the instance */
+            memset(a, 0, sizeof *a);
+            rnd_config_mul_uint(a); /* placeholder, overwritten below */
+            a->nAnalogIn1 = x.nAnalogIn1;
+            a->nAnalogIn2 = x.nAnalogIn2;
+            a->wInputActive = x.wInputActive;
+            *b = *a;
+            return 1;
+        }
+    }
+    return 0;
+}
 static void test_mul_uint(void)
 {
     static FB_MUL_UINT a, b;
     cds_sl_mul_uint_cycle_struct p;
-    int k, ok = 0;
+    int c, k, bump, ok = 0, cycles = 0, inv_cycles = 0, inv_config = 0, reached_run = 0, reached_error = 0;
+    int hist[12] = {0};
+    unsigned pol = 0;
+    uint32_t t = 1000u;
     memset(&a, 0, sizeof a);
     memset(&b, 0, sizeof b);
     memset(&p, 0, sizeof p);
@@ -1345,26 +2942,81 @@ static void test_mul_uint(void)
     a.wInputActive = b.wInputActive = 1;
     { cds_sl_mul_uint_init_struct q; int32_t r; q.pFb = &a; cds_sl_mul_uint_init(&q); r = sl_mul_uint_init(&b);
       CHECK(q.cds_sl_mul_uint_init == r && memcmp(&a, &b, sizeof a) == 0, "cds_sl_mul_uint_init differs from sl_mul_uint_init"); }
-    for (k = 0; k < 400; k++) {
-        int32_t direct;
-        unsigned r = rnd();
-        a.bErrAck = b.bErrAck = (uint8_t)((rnd() % 7u) != 0u);
-        p.pFb = &a;
-        p.tNow = (uint32_t)(k * 10u + (r % 5u));
-        cds_sl_mul_uint_cycle(&p);
-        direct = sl_mul_uint_cycle(&b, p.tNow);
-        CHECK(p.cds_sl_mul_uint_cycle == direct, "FB_MUL_UINT cycle %d: adapter %d, direct %d", k, (int)p.cds_sl_mul_uint_cycle, (int)direct);
-        CHECK(memcmp(&a, &b, sizeof a) == 0, "FB_MUL_UINT cycle %d: instances differ", k);
-        if (direct == SL_OK) ok++;
+    for (c = 0; c < 10; c++) {
+        int valid = c < 8; /* 8 valid configurations, then the labelled invalid share: 2 */
+        if (!draw_mul_uint(&a, &b, valid)) {
+            CHECK(!valid, "FB_MUL_UINT: no valid configuration found in 200000 random draws");
+            continue;
+        }
+        if (!valid) inv_config++;
+        a.bErrAck = b.bErrAck = (uint8_t)(0);
+        bump = 20 + (int)(rnd() % 20u);
+        pol = (c % 2 == 1) ? rnd() : 0u;
+        for (k = 0; k < 50; k++) {
+            int32_t direct;
+            next_machine();
+            a.bErrAck = b.bErrAck = next_signal(a.bErrAck, 1, pol >> 0);
+            a.bRun = b.bRun = (uint8_t)(k >= 2 && rnd() % 100u != 0u);
+            if (valid && k == bump) { a.nAnalogIn1++; b.nAnalogIn1++; } /* changed while running: ERROR */
+            if (valid && k == bump + 2) { a.nAnalogIn1--; b.nAnalogIn1--; } /* restored */
+            p.pFb = &a;
+            p.tNow = t += 10u;
+            cds_sl_mul_uint_cycle(&p);
+            direct = sl_mul_uint_cycle(&b, p.tNow);
+            CHECK(p.cds_sl_mul_uint_cycle == direct, "FB_MUL_UINT config %d cycle %d: adapter %d, direct %d", c, k, (int)p.cds_sl_mul_uint_cycle, (int)direct);
+            CHECK(memcmp(&a, &b, sizeof a) == 0, "FB_MUL_UINT config %d cycle %d: instances differ", c, k);
+            if (!valid) { inv_cycles++; continue; }
+            cycles++;
+            if (direct == SL_OK) ok++;
+            if (direct <= 0 && direct > -12) hist[-direct]++;
+            if (b.nState == SL_STATE_ERROR) reached_error = 1;
+            if (b.nState != SL_STATE_STOP && b.nState != SL_STATE_ERROR && b.nState != SL_STATE_RESET && b.nState != SL_STATE_SAFE) reached_run = 1;
+        }
     }
-    printf("FB_MUL_UINT: %d of 400 cycles returned SL_OK\n", ok);
+    printf("FB_MUL_UINT: %d of %d cycles (8 valid random configurations) returned SL_OK; run-like state %s, ERROR %s; invalid share: %d configurations, %d cycles\n", ok, cycles, reached_run ? "reached" : "NOT reached", reached_error ? "reached" : "NOT reached", inv_config, inv_cycles);
+    if (2 * ok <= cycles) printf("  status histogram (0, -1, ... -11): %d %d %d %d %d %d %d %d %d %d %d\n", hist[0], hist[1], hist[2], hist[3], hist[4], hist[5], hist[6], hist[7], hist[8], hist[9], hist[10]);
+    CHECK(cycles > 0 && 2 * ok > cycles, "FB_MUL_UINT: only %d of %d cycles with valid configurations returned SL_OK", ok, cycles);
+    CHECK(reached_run, "FB_MUL_UINT: the random test never reached a running state (an output on)");
+    CHECK(reached_error, "FB_MUL_UINT: the random test never reached ERROR");
 }
 
+static void rnd_config_mul_dint(FB_MUL_DINT *x)
+{
+    { static const unsigned v[] = {0u, 1u, 10u, 100u}; x->nAnalogIn1 = (int32_t)v[rnd() % 4u]; }
+    { static const unsigned v[] = {0u, 1u, 10u, 100u}; x->nAnalogIn2 = (int32_t)v[rnd() % 4u]; }
+    x->wInputActive = (uint16_t)(rnd() & 0x0u);
+}
+/* 1: a valid configuration (want_valid) or an invalid one was drawn into a and b */
+static int draw_mul_dint(FB_MUL_DINT *a, FB_MUL_DINT *b, int want_valid)
+{
+    long k;
+    for (k = 0; k < 200000L; k++) {
+        static FB_MUL_DINT x;
+        int valid;
+        memset(&x, 0, sizeof x);
+        rnd_config_mul_dint(&x);
+        valid = sl_mul_dint_init(&x) == SL_OK && sl_mul_dint_cycle(&x, 0u) == SL_OK;
+        if (valid == want_valid) {
+            memset(&x.bRun, 0, 0); /* keep x's parameters, reset the instance */
+            memset(a, 0, sizeof *a);
+            rnd_config_mul_dint(a); /* placeholder, overwritten below */
+            a->nAnalogIn1 = x.nAnalogIn1;
+            a->nAnalogIn2 = x.nAnalogIn2;
+            a->wInputActive = x.wInputActive;
+            *b = *a;
+            return 1;
+        }
+    }
+    return 0;
+}
 static void test_mul_dint(void)
 {
     static FB_MUL_DINT a, b;
     cds_sl_mul_dint_cycle_struct p;
-    int k, ok = 0;
+    int c, k, bump, ok = 0, cycles = 0, inv_cycles = 0, inv_config = 0, reached_run = 0, reached_error = 0;
+    int hist[12] = {0};
+    unsigned pol = 0;
+    uint32_t t = 1000u;
     memset(&a, 0, sizeof a);
     memset(&b, 0, sizeof b);
     memset(&p, 0, sizeof p);
@@ -1376,26 +3028,81 @@ static void test_mul_dint(void)
     a.wInputActive = b.wInputActive = 1;
     { cds_sl_mul_dint_init_struct q; int32_t r; q.pFb = &a; cds_sl_mul_dint_init(&q); r = sl_mul_dint_init(&b);
       CHECK(q.cds_sl_mul_dint_init == r && memcmp(&a, &b, sizeof a) == 0, "cds_sl_mul_dint_init differs from sl_mul_dint_init"); }
-    for (k = 0; k < 400; k++) {
-        int32_t direct;
-        unsigned r = rnd();
-        a.bErrAck = b.bErrAck = (uint8_t)((rnd() % 7u) != 0u);
-        p.pFb = &a;
-        p.tNow = (uint32_t)(k * 10u + (r % 5u));
-        cds_sl_mul_dint_cycle(&p);
-        direct = sl_mul_dint_cycle(&b, p.tNow);
-        CHECK(p.cds_sl_mul_dint_cycle == direct, "FB_MUL_DINT cycle %d: adapter %d, direct %d", k, (int)p.cds_sl_mul_dint_cycle, (int)direct);
-        CHECK(memcmp(&a, &b, sizeof a) == 0, "FB_MUL_DINT cycle %d: instances differ", k);
-        if (direct == SL_OK) ok++;
+    for (c = 0; c < 10; c++) {
+        int valid = c < 8; /* 8 valid configurations, then the labelled invalid share: 2 */
+        if (!draw_mul_dint(&a, &b, valid)) {
+            CHECK(!valid, "FB_MUL_DINT: no valid configuration found in 200000 random draws");
+            continue;
+        }
+        if (!valid) inv_config++;
+        a.bErrAck = b.bErrAck = (uint8_t)(0);
+        bump = 20 + (int)(rnd() % 20u);
+        pol = (c % 2 == 1) ? rnd() : 0u;
+        for (k = 0; k < 50; k++) {
+            int32_t direct;
+            next_machine();
+            a.bErrAck = b.bErrAck = next_signal(a.bErrAck, 1, pol >> 0);
+            a.bRun = b.bRun = (uint8_t)(k >= 2 && rnd() % 100u != 0u);
+            if (valid && k == bump) { a.nAnalogIn1++; b.nAnalogIn1++; } /* changed while running: ERROR */
+            if (valid && k == bump + 2) { a.nAnalogIn1--; b.nAnalogIn1--; } /* restored */
+            p.pFb = &a;
+            p.tNow = t += 10u;
+            cds_sl_mul_dint_cycle(&p);
+            direct = sl_mul_dint_cycle(&b, p.tNow);
+            CHECK(p.cds_sl_mul_dint_cycle == direct, "FB_MUL_DINT config %d cycle %d: adapter %d, direct %d", c, k, (int)p.cds_sl_mul_dint_cycle, (int)direct);
+            CHECK(memcmp(&a, &b, sizeof a) == 0, "FB_MUL_DINT config %d cycle %d: instances differ", c, k);
+            if (!valid) { inv_cycles++; continue; }
+            cycles++;
+            if (direct == SL_OK) ok++;
+            if (direct <= 0 && direct > -12) hist[-direct]++;
+            if (b.nState == SL_STATE_ERROR) reached_error = 1;
+            if (b.nState != SL_STATE_STOP && b.nState != SL_STATE_ERROR && b.nState != SL_STATE_RESET && b.nState != SL_STATE_SAFE) reached_run = 1;
+        }
     }
-    printf("FB_MUL_DINT: %d of 400 cycles returned SL_OK\n", ok);
+    printf("FB_MUL_DINT: %d of %d cycles (8 valid random configurations) returned SL_OK; run-like state %s, ERROR %s; invalid share: %d configurations, %d cycles\n", ok, cycles, reached_run ? "reached" : "NOT reached", reached_error ? "reached" : "NOT reached", inv_config, inv_cycles);
+    if (2 * ok <= cycles) printf("  status histogram (0, -1, ... -11): %d %d %d %d %d %d %d %d %d %d %d\n", hist[0], hist[1], hist[2], hist[3], hist[4], hist[5], hist[6], hist[7], hist[8], hist[9], hist[10]);
+    CHECK(cycles > 0 && 2 * ok > cycles, "FB_MUL_DINT: only %d of %d cycles with valid configurations returned SL_OK", ok, cycles);
+    CHECK(reached_run, "FB_MUL_DINT: the random test never reached a running state (an output on)");
+    CHECK(reached_error, "FB_MUL_DINT: the random test never reached ERROR");
 }
 
+static void rnd_config_mul_udint(FB_MUL_UDINT *x)
+{
+    { static const unsigned v[] = {0u, 1u, 10u, 100u}; x->nAnalogIn1 = (uint32_t)v[rnd() % 4u]; }
+    { static const unsigned v[] = {0u, 1u, 10u, 100u}; x->nAnalogIn2 = (uint32_t)v[rnd() % 4u]; }
+    x->wInputActive = (uint16_t)(rnd() & 0x0u);
+}
+/* 1: a valid configuration (want_valid) or an invalid one was drawn into a and b */
+static int draw_mul_udint(FB_MUL_UDINT *a, FB_MUL_UDINT *b, int want_valid)
+{
+    long k;
+    for (k = 0; k < 200000L; k++) {
+        static FB_MUL_UDINT x;
+        int valid;
+        memset(&x, 0, sizeof x);
+        rnd_config_mul_udint(&x);
+        valid = sl_mul_udint_init(&x) == SL_OK && sl_mul_udint_cycle(&x, 0u) == SL_OK;
+        if (valid == want_valid) {
+            memset(&x.bRun, 0, 0); /* keep x's parameters, reset the instance */
+            memset(a, 0, sizeof *a);
+            rnd_config_mul_udint(a); /* placeholder, overwritten below */
+            a->nAnalogIn1 = x.nAnalogIn1;
+            a->nAnalogIn2 = x.nAnalogIn2;
+            a->wInputActive = x.wInputActive;
+            *b = *a;
+            return 1;
+        }
+    }
+    return 0;
+}
 static void test_mul_udint(void)
 {
     static FB_MUL_UDINT a, b;
     cds_sl_mul_udint_cycle_struct p;
-    int k, ok = 0;
+    int c, k, bump, ok = 0, cycles = 0, inv_cycles = 0, inv_config = 0, reached_run = 0, reached_error = 0;
+    int hist[12] = {0};
+    unsigned pol = 0;
+    uint32_t t = 1000u;
     memset(&a, 0, sizeof a);
     memset(&b, 0, sizeof b);
     memset(&p, 0, sizeof p);
@@ -1407,26 +3114,83 @@ static void test_mul_udint(void)
     a.wInputActive = b.wInputActive = 1;
     { cds_sl_mul_udint_init_struct q; int32_t r; q.pFb = &a; cds_sl_mul_udint_init(&q); r = sl_mul_udint_init(&b);
       CHECK(q.cds_sl_mul_udint_init == r && memcmp(&a, &b, sizeof a) == 0, "cds_sl_mul_udint_init differs from sl_mul_udint_init"); }
-    for (k = 0; k < 400; k++) {
-        int32_t direct;
-        unsigned r = rnd();
-        a.bErrAck = b.bErrAck = (uint8_t)((rnd() % 7u) != 0u);
-        p.pFb = &a;
-        p.tNow = (uint32_t)(k * 10u + (r % 5u));
-        cds_sl_mul_udint_cycle(&p);
-        direct = sl_mul_udint_cycle(&b, p.tNow);
-        CHECK(p.cds_sl_mul_udint_cycle == direct, "FB_MUL_UDINT cycle %d: adapter %d, direct %d", k, (int)p.cds_sl_mul_udint_cycle, (int)direct);
-        CHECK(memcmp(&a, &b, sizeof a) == 0, "FB_MUL_UDINT cycle %d: instances differ", k);
-        if (direct == SL_OK) ok++;
+    for (c = 0; c < 10; c++) {
+        int valid = c < 8; /* 8 valid configurations, then the labelled invalid share: 2 */
+        if (!draw_mul_udint(&a, &b, valid)) {
+            CHECK(!valid, "FB_MUL_UDINT: no valid configuration found in 200000 random draws");
+            continue;
+        }
+        if (!valid) inv_config++;
+        a.bErrAck = b.bErrAck = (uint8_t)(0);
+        bump = 20 + (int)(rnd() % 20u);
+        pol = (c % 2 == 1) ? rnd() : 0u;
+        for (k = 0; k < 50; k++) {
+            int32_t direct;
+            next_machine();
+            a.bErrAck = b.bErrAck = next_signal(a.bErrAck, 1, pol >> 0);
+            a.bRun = b.bRun = (uint8_t)(k >= 2 && rnd() % 100u != 0u);
+            if (valid && k == bump) { a.nAnalogIn1++; b.nAnalogIn1++; } /* changed while running: ERROR */
+            if (valid && k == bump + 2) { a.nAnalogIn1--; b.nAnalogIn1--; } /* restored */
+            p.pFb = &a;
+            p.tNow = t += 10u;
+            cds_sl_mul_udint_cycle(&p);
+            direct = sl_mul_udint_cycle(&b, p.tNow);
+            CHECK(p.cds_sl_mul_udint_cycle == direct, "FB_MUL_UDINT config %d cycle %d: adapter %d, direct %d", c, k, (int)p.cds_sl_mul_udint_cycle, (int)direct);
+            CHECK(memcmp(&a, &b, sizeof a) == 0, "FB_MUL_UDINT config %d cycle %d: instances differ", c, k);
+            if (!valid) { inv_cycles++; continue; }
+            cycles++;
+            if (direct == SL_OK) ok++;
+            if (direct <= 0 && direct > -12) hist[-direct]++;
+            if (b.nState == SL_STATE_ERROR) reached_error = 1;
+            if (b.nState != SL_STATE_STOP && b.nState != SL_STATE_ERROR && b.nState != SL_STATE_RESET && b.nState != SL_STATE_SAFE) reached_run = 1;
+        }
     }
-    printf("FB_MUL_UDINT: %d of 400 cycles returned SL_OK\n", ok);
+    printf("FB_MUL_UDINT: %d of %d cycles (8 valid random configurations) returned SL_OK; run-like state %s, ERROR %s; invalid share: %d configurations, %d cycles\n", ok, cycles, reached_run ? "reached" : "NOT reached", reached_error ? "reached" : "NOT reached", inv_config, inv_cycles);
+    if (2 * ok <= cycles) printf("  status histogram (0, -1, ... -11): %d %d %d %d %d %d %d %d %d %d %d\n", hist[0], hist[1], hist[2], hist[3], hist[4], hist[5], hist[6], hist[7], hist[8], hist[9], hist[10]);
+    CHECK(cycles > 0 && 2 * ok > cycles, "FB_MUL_UDINT: only %d of %d cycles with valid configurations returned SL_OK", ok, cycles);
+    CHECK(reached_run, "FB_MUL_UDINT: the random test never reached a running state (an output on)");
+    CHECK(reached_error, "FB_MUL_UDINT: the random test never reached ERROR");
 }
 
+static void rnd_config_div_int(FB_DIV_INT *x)
+{
+    { static const unsigned v[] = {0u, 1u, 10u, 100u}; x->nAnalogIn1 = (int16_t)v[rnd() % 4u]; }
+    { static const unsigned v[] = {0u, 1u, 10u, 100u}; x->nAnalogIn2 = (int16_t)v[rnd() % 4u]; }
+    { static const unsigned v[] = {0u, 1u, 10u, 100u}; x->nRounding = (uint16_t)v[rnd() % 4u]; }
+    x->wInputActive = (uint16_t)(rnd() & 0x0u);
+}
+/* 1: a valid configuration (want_valid) or an invalid one was drawn into a and b */
+static int draw_div_int(FB_DIV_INT *a, FB_DIV_INT *b, int want_valid)
+{
+    long k;
+    for (k = 0; k < 200000L; k++) {
+        static FB_DIV_INT x;
+        int valid;
+        memset(&x, 0, sizeof x);
+        rnd_config_div_int(&x);
+        valid = sl_div_int_init(&x) == SL_OK && sl_div_int_cycle(&x, 0u) == SL_OK;
+        if (valid == want_valid) {
+            memset(&x.bRun, 0, 0); /* keep x's parameters, reset the instance */
+            memset(a, 0, sizeof *a);
+            rnd_config_div_int(a); /* placeholder, overwritten below */
+            a->nAnalogIn1 = x.nAnalogIn1;
+            a->nAnalogIn2 = x.nAnalogIn2;
+            a->nRounding = x.nRounding;
+            a->wInputActive = x.wInputActive;
+            *b = *a;
+            return 1;
+        }
+    }
+    return 0;
+}
 static void test_div_int(void)
 {
     static FB_DIV_INT a, b;
     cds_sl_div_int_cycle_struct p;
-    int k, ok = 0;
+    int c, k, bump, ok = 0, cycles = 0, inv_cycles = 0, inv_config = 0, reached_run = 0, reached_error = 0;
+    int hist[12] = {0};
+    unsigned pol = 0;
+    uint32_t t = 1000u;
     memset(&a, 0, sizeof a);
     memset(&b, 0, sizeof b);
     memset(&p, 0, sizeof p);
@@ -1438,26 +3202,83 @@ static void test_div_int(void)
     a.wInputActive = b.wInputActive = 1;
     { cds_sl_div_int_init_struct q; int32_t r; q.pFb = &a; cds_sl_div_int_init(&q); r = sl_div_int_init(&b);
       CHECK(q.cds_sl_div_int_init == r && memcmp(&a, &b, sizeof a) == 0, "cds_sl_div_int_init differs from sl_div_int_init"); }
-    for (k = 0; k < 400; k++) {
-        int32_t direct;
-        unsigned r = rnd();
-        a.bErrAck = b.bErrAck = (uint8_t)((rnd() % 7u) != 0u);
-        p.pFb = &a;
-        p.tNow = (uint32_t)(k * 10u + (r % 5u));
-        cds_sl_div_int_cycle(&p);
-        direct = sl_div_int_cycle(&b, p.tNow);
-        CHECK(p.cds_sl_div_int_cycle == direct, "FB_DIV_INT cycle %d: adapter %d, direct %d", k, (int)p.cds_sl_div_int_cycle, (int)direct);
-        CHECK(memcmp(&a, &b, sizeof a) == 0, "FB_DIV_INT cycle %d: instances differ", k);
-        if (direct == SL_OK) ok++;
+    for (c = 0; c < 10; c++) {
+        int valid = c < 8; /* 8 valid configurations, then the labelled invalid share: 2 */
+        if (!draw_div_int(&a, &b, valid)) {
+            CHECK(!valid, "FB_DIV_INT: no valid configuration found in 200000 random draws");
+            continue;
+        }
+        if (!valid) inv_config++;
+        a.bErrAck = b.bErrAck = (uint8_t)(0);
+        bump = 20 + (int)(rnd() % 20u);
+        pol = (c % 2 == 1) ? rnd() : 0u;
+        for (k = 0; k < 50; k++) {
+            int32_t direct;
+            next_machine();
+            a.bErrAck = b.bErrAck = next_signal(a.bErrAck, 1, pol >> 0);
+            a.bRun = b.bRun = (uint8_t)(k >= 2 && rnd() % 100u != 0u);
+            if (valid && k == bump) { a.nAnalogIn1++; b.nAnalogIn1++; } /* changed while running: ERROR */
+            if (valid && k == bump + 2) { a.nAnalogIn1--; b.nAnalogIn1--; } /* restored */
+            p.pFb = &a;
+            p.tNow = t += 10u;
+            cds_sl_div_int_cycle(&p);
+            direct = sl_div_int_cycle(&b, p.tNow);
+            CHECK(p.cds_sl_div_int_cycle == direct, "FB_DIV_INT config %d cycle %d: adapter %d, direct %d", c, k, (int)p.cds_sl_div_int_cycle, (int)direct);
+            CHECK(memcmp(&a, &b, sizeof a) == 0, "FB_DIV_INT config %d cycle %d: instances differ", c, k);
+            if (!valid) { inv_cycles++; continue; }
+            cycles++;
+            if (direct == SL_OK) ok++;
+            if (direct <= 0 && direct > -12) hist[-direct]++;
+            if (b.nState == SL_STATE_ERROR) reached_error = 1;
+            if (b.nState != SL_STATE_STOP && b.nState != SL_STATE_ERROR && b.nState != SL_STATE_RESET && b.nState != SL_STATE_SAFE) reached_run = 1;
+        }
     }
-    printf("FB_DIV_INT: %d of 400 cycles returned SL_OK\n", ok);
+    printf("FB_DIV_INT: %d of %d cycles (8 valid random configurations) returned SL_OK; run-like state %s, ERROR %s; invalid share: %d configurations, %d cycles\n", ok, cycles, reached_run ? "reached" : "NOT reached", reached_error ? "reached" : "NOT reached", inv_config, inv_cycles);
+    if (2 * ok <= cycles) printf("  status histogram (0, -1, ... -11): %d %d %d %d %d %d %d %d %d %d %d\n", hist[0], hist[1], hist[2], hist[3], hist[4], hist[5], hist[6], hist[7], hist[8], hist[9], hist[10]);
+    CHECK(cycles > 0 && 2 * ok > cycles, "FB_DIV_INT: only %d of %d cycles with valid configurations returned SL_OK", ok, cycles);
+    CHECK(reached_run, "FB_DIV_INT: the random test never reached a running state (an output on)");
+    CHECK(reached_error, "FB_DIV_INT: the random test never reached ERROR");
 }
 
+static void rnd_config_div_uint(FB_DIV_UINT *x)
+{
+    { static const unsigned v[] = {0u, 1u, 10u, 100u}; x->nAnalogIn1 = (uint16_t)v[rnd() % 4u]; }
+    { static const unsigned v[] = {0u, 1u, 10u, 100u}; x->nAnalogIn2 = (uint16_t)v[rnd() % 4u]; }
+    { static const unsigned v[] = {0u, 1u, 10u, 100u}; x->nRounding = (uint16_t)v[rnd() % 4u]; }
+    x->wInputActive = (uint16_t)(rnd() & 0x0u);
+}
+/* 1: a valid configuration (want_valid) or an invalid one was drawn into a and b */
+static int draw_div_uint(FB_DIV_UINT *a, FB_DIV_UINT *b, int want_valid)
+{
+    long k;
+    for (k = 0; k < 200000L; k++) {
+        static FB_DIV_UINT x;
+        int valid;
+        memset(&x, 0, sizeof x);
+        rnd_config_div_uint(&x);
+        valid = sl_div_uint_init(&x) == SL_OK && sl_div_uint_cycle(&x, 0u) == SL_OK;
+        if (valid == want_valid) {
+            memset(&x.bRun, 0, 0); /* keep x's parameters, reset the instance */
+            memset(a, 0, sizeof *a);
+            rnd_config_div_uint(a); /* placeholder, overwritten below */
+            a->nAnalogIn1 = x.nAnalogIn1;
+            a->nAnalogIn2 = x.nAnalogIn2;
+            a->nRounding = x.nRounding;
+            a->wInputActive = x.wInputActive;
+            *b = *a;
+            return 1;
+        }
+    }
+    return 0;
+}
 static void test_div_uint(void)
 {
     static FB_DIV_UINT a, b;
     cds_sl_div_uint_cycle_struct p;
-    int k, ok = 0;
+    int c, k, bump, ok = 0, cycles = 0, inv_cycles = 0, inv_config = 0, reached_run = 0, reached_error = 0;
+    int hist[12] = {0};
+    unsigned pol = 0;
+    uint32_t t = 1000u;
     memset(&a, 0, sizeof a);
     memset(&b, 0, sizeof b);
     memset(&p, 0, sizeof p);
@@ -1469,26 +3290,83 @@ static void test_div_uint(void)
     a.wInputActive = b.wInputActive = 1;
     { cds_sl_div_uint_init_struct q; int32_t r; q.pFb = &a; cds_sl_div_uint_init(&q); r = sl_div_uint_init(&b);
       CHECK(q.cds_sl_div_uint_init == r && memcmp(&a, &b, sizeof a) == 0, "cds_sl_div_uint_init differs from sl_div_uint_init"); }
-    for (k = 0; k < 400; k++) {
-        int32_t direct;
-        unsigned r = rnd();
-        a.bErrAck = b.bErrAck = (uint8_t)((rnd() % 7u) != 0u);
-        p.pFb = &a;
-        p.tNow = (uint32_t)(k * 10u + (r % 5u));
-        cds_sl_div_uint_cycle(&p);
-        direct = sl_div_uint_cycle(&b, p.tNow);
-        CHECK(p.cds_sl_div_uint_cycle == direct, "FB_DIV_UINT cycle %d: adapter %d, direct %d", k, (int)p.cds_sl_div_uint_cycle, (int)direct);
-        CHECK(memcmp(&a, &b, sizeof a) == 0, "FB_DIV_UINT cycle %d: instances differ", k);
-        if (direct == SL_OK) ok++;
+    for (c = 0; c < 10; c++) {
+        int valid = c < 8; /* 8 valid configurations, then the labelled invalid share: 2 */
+        if (!draw_div_uint(&a, &b, valid)) {
+            CHECK(!valid, "FB_DIV_UINT: no valid configuration found in 200000 random draws");
+            continue;
+        }
+        if (!valid) inv_config++;
+        a.bErrAck = b.bErrAck = (uint8_t)(0);
+        bump = 20 + (int)(rnd() % 20u);
+        pol = (c % 2 == 1) ? rnd() : 0u;
+        for (k = 0; k < 50; k++) {
+            int32_t direct;
+            next_machine();
+            a.bErrAck = b.bErrAck = next_signal(a.bErrAck, 1, pol >> 0);
+            a.bRun = b.bRun = (uint8_t)(k >= 2 && rnd() % 100u != 0u);
+            if (valid && k == bump) { a.nAnalogIn1++; b.nAnalogIn1++; } /* changed while running: ERROR */
+            if (valid && k == bump + 2) { a.nAnalogIn1--; b.nAnalogIn1--; } /* restored */
+            p.pFb = &a;
+            p.tNow = t += 10u;
+            cds_sl_div_uint_cycle(&p);
+            direct = sl_div_uint_cycle(&b, p.tNow);
+            CHECK(p.cds_sl_div_uint_cycle == direct, "FB_DIV_UINT config %d cycle %d: adapter %d, direct %d", c, k, (int)p.cds_sl_div_uint_cycle, (int)direct);
+            CHECK(memcmp(&a, &b, sizeof a) == 0, "FB_DIV_UINT config %d cycle %d: instances differ", c, k);
+            if (!valid) { inv_cycles++; continue; }
+            cycles++;
+            if (direct == SL_OK) ok++;
+            if (direct <= 0 && direct > -12) hist[-direct]++;
+            if (b.nState == SL_STATE_ERROR) reached_error = 1;
+            if (b.nState != SL_STATE_STOP && b.nState != SL_STATE_ERROR && b.nState != SL_STATE_RESET && b.nState != SL_STATE_SAFE) reached_run = 1;
+        }
     }
-    printf("FB_DIV_UINT: %d of 400 cycles returned SL_OK\n", ok);
+    printf("FB_DIV_UINT: %d of %d cycles (8 valid random configurations) returned SL_OK; run-like state %s, ERROR %s; invalid share: %d configurations, %d cycles\n", ok, cycles, reached_run ? "reached" : "NOT reached", reached_error ? "reached" : "NOT reached", inv_config, inv_cycles);
+    if (2 * ok <= cycles) printf("  status histogram (0, -1, ... -11): %d %d %d %d %d %d %d %d %d %d %d\n", hist[0], hist[1], hist[2], hist[3], hist[4], hist[5], hist[6], hist[7], hist[8], hist[9], hist[10]);
+    CHECK(cycles > 0 && 2 * ok > cycles, "FB_DIV_UINT: only %d of %d cycles with valid configurations returned SL_OK", ok, cycles);
+    CHECK(reached_run, "FB_DIV_UINT: the random test never reached a running state (an output on)");
+    CHECK(reached_error, "FB_DIV_UINT: the random test never reached ERROR");
 }
 
+static void rnd_config_div_dint(FB_DIV_DINT *x)
+{
+    { static const unsigned v[] = {0u, 1u, 10u, 100u}; x->nAnalogIn1 = (int32_t)v[rnd() % 4u]; }
+    { static const unsigned v[] = {0u, 1u, 10u, 100u}; x->nAnalogIn2 = (int32_t)v[rnd() % 4u]; }
+    { static const unsigned v[] = {0u, 1u, 10u, 100u}; x->nRounding = (uint16_t)v[rnd() % 4u]; }
+    x->wInputActive = (uint16_t)(rnd() & 0x0u);
+}
+/* 1: a valid configuration (want_valid) or an invalid one was drawn into a and b */
+static int draw_div_dint(FB_DIV_DINT *a, FB_DIV_DINT *b, int want_valid)
+{
+    long k;
+    for (k = 0; k < 200000L; k++) {
+        static FB_DIV_DINT x;
+        int valid;
+        memset(&x, 0, sizeof x);
+        rnd_config_div_dint(&x);
+        valid = sl_div_dint_init(&x) == SL_OK && sl_div_dint_cycle(&x, 0u) == SL_OK;
+        if (valid == want_valid) {
+            memset(&x.bRun, 0, 0); /* keep x's parameters, reset the instance */
+            memset(a, 0, sizeof *a);
+            rnd_config_div_dint(a); /* placeholder, overwritten below */
+            a->nAnalogIn1 = x.nAnalogIn1;
+            a->nAnalogIn2 = x.nAnalogIn2;
+            a->nRounding = x.nRounding;
+            a->wInputActive = x.wInputActive;
+            *b = *a;
+            return 1;
+        }
+    }
+    return 0;
+}
 static void test_div_dint(void)
 {
     static FB_DIV_DINT a, b;
     cds_sl_div_dint_cycle_struct p;
-    int k, ok = 0;
+    int c, k, bump, ok = 0, cycles = 0, inv_cycles = 0, inv_config = 0, reached_run = 0, reached_error = 0;
+    int hist[12] = {0};
+    unsigned pol = 0;
+    uint32_t t = 1000u;
     memset(&a, 0, sizeof a);
     memset(&b, 0, sizeof b);
     memset(&p, 0, sizeof p);
@@ -1500,26 +3378,83 @@ static void test_div_dint(void)
     a.wInputActive = b.wInputActive = 1;
     { cds_sl_div_dint_init_struct q; int32_t r; q.pFb = &a; cds_sl_div_dint_init(&q); r = sl_div_dint_init(&b);
       CHECK(q.cds_sl_div_dint_init == r && memcmp(&a, &b, sizeof a) == 0, "cds_sl_div_dint_init differs from sl_div_dint_init"); }
-    for (k = 0; k < 400; k++) {
-        int32_t direct;
-        unsigned r = rnd();
-        a.bErrAck = b.bErrAck = (uint8_t)((rnd() % 7u) != 0u);
-        p.pFb = &a;
-        p.tNow = (uint32_t)(k * 10u + (r % 5u));
-        cds_sl_div_dint_cycle(&p);
-        direct = sl_div_dint_cycle(&b, p.tNow);
-        CHECK(p.cds_sl_div_dint_cycle == direct, "FB_DIV_DINT cycle %d: adapter %d, direct %d", k, (int)p.cds_sl_div_dint_cycle, (int)direct);
-        CHECK(memcmp(&a, &b, sizeof a) == 0, "FB_DIV_DINT cycle %d: instances differ", k);
-        if (direct == SL_OK) ok++;
+    for (c = 0; c < 10; c++) {
+        int valid = c < 8; /* 8 valid configurations, then the labelled invalid share: 2 */
+        if (!draw_div_dint(&a, &b, valid)) {
+            CHECK(!valid, "FB_DIV_DINT: no valid configuration found in 200000 random draws");
+            continue;
+        }
+        if (!valid) inv_config++;
+        a.bErrAck = b.bErrAck = (uint8_t)(0);
+        bump = 20 + (int)(rnd() % 20u);
+        pol = (c % 2 == 1) ? rnd() : 0u;
+        for (k = 0; k < 50; k++) {
+            int32_t direct;
+            next_machine();
+            a.bErrAck = b.bErrAck = next_signal(a.bErrAck, 1, pol >> 0);
+            a.bRun = b.bRun = (uint8_t)(k >= 2 && rnd() % 100u != 0u);
+            if (valid && k == bump) { a.nAnalogIn1++; b.nAnalogIn1++; } /* changed while running: ERROR */
+            if (valid && k == bump + 2) { a.nAnalogIn1--; b.nAnalogIn1--; } /* restored */
+            p.pFb = &a;
+            p.tNow = t += 10u;
+            cds_sl_div_dint_cycle(&p);
+            direct = sl_div_dint_cycle(&b, p.tNow);
+            CHECK(p.cds_sl_div_dint_cycle == direct, "FB_DIV_DINT config %d cycle %d: adapter %d, direct %d", c, k, (int)p.cds_sl_div_dint_cycle, (int)direct);
+            CHECK(memcmp(&a, &b, sizeof a) == 0, "FB_DIV_DINT config %d cycle %d: instances differ", c, k);
+            if (!valid) { inv_cycles++; continue; }
+            cycles++;
+            if (direct == SL_OK) ok++;
+            if (direct <= 0 && direct > -12) hist[-direct]++;
+            if (b.nState == SL_STATE_ERROR) reached_error = 1;
+            if (b.nState != SL_STATE_STOP && b.nState != SL_STATE_ERROR && b.nState != SL_STATE_RESET && b.nState != SL_STATE_SAFE) reached_run = 1;
+        }
     }
-    printf("FB_DIV_DINT: %d of 400 cycles returned SL_OK\n", ok);
+    printf("FB_DIV_DINT: %d of %d cycles (8 valid random configurations) returned SL_OK; run-like state %s, ERROR %s; invalid share: %d configurations, %d cycles\n", ok, cycles, reached_run ? "reached" : "NOT reached", reached_error ? "reached" : "NOT reached", inv_config, inv_cycles);
+    if (2 * ok <= cycles) printf("  status histogram (0, -1, ... -11): %d %d %d %d %d %d %d %d %d %d %d\n", hist[0], hist[1], hist[2], hist[3], hist[4], hist[5], hist[6], hist[7], hist[8], hist[9], hist[10]);
+    CHECK(cycles > 0 && 2 * ok > cycles, "FB_DIV_DINT: only %d of %d cycles with valid configurations returned SL_OK", ok, cycles);
+    CHECK(reached_run, "FB_DIV_DINT: the random test never reached a running state (an output on)");
+    CHECK(reached_error, "FB_DIV_DINT: the random test never reached ERROR");
 }
 
+static void rnd_config_div_udint(FB_DIV_UDINT *x)
+{
+    { static const unsigned v[] = {0u, 1u, 10u, 100u}; x->nAnalogIn1 = (uint32_t)v[rnd() % 4u]; }
+    { static const unsigned v[] = {0u, 1u, 10u, 100u}; x->nAnalogIn2 = (uint32_t)v[rnd() % 4u]; }
+    { static const unsigned v[] = {0u, 1u, 10u, 100u}; x->nRounding = (uint16_t)v[rnd() % 4u]; }
+    x->wInputActive = (uint16_t)(rnd() & 0x0u);
+}
+/* 1: a valid configuration (want_valid) or an invalid one was drawn into a and b */
+static int draw_div_udint(FB_DIV_UDINT *a, FB_DIV_UDINT *b, int want_valid)
+{
+    long k;
+    for (k = 0; k < 200000L; k++) {
+        static FB_DIV_UDINT x;
+        int valid;
+        memset(&x, 0, sizeof x);
+        rnd_config_div_udint(&x);
+        valid = sl_div_udint_init(&x) == SL_OK && sl_div_udint_cycle(&x, 0u) == SL_OK;
+        if (valid == want_valid) {
+            memset(&x.bRun, 0, 0); /* keep x's parameters, reset the instance */
+            memset(a, 0, sizeof *a);
+            rnd_config_div_udint(a); /* placeholder, overwritten below */
+            a->nAnalogIn1 = x.nAnalogIn1;
+            a->nAnalogIn2 = x.nAnalogIn2;
+            a->nRounding = x.nRounding;
+            a->wInputActive = x.wInputActive;
+            *b = *a;
+            return 1;
+        }
+    }
+    return 0;
+}
 static void test_div_udint(void)
 {
     static FB_DIV_UDINT a, b;
     cds_sl_div_udint_cycle_struct p;
-    int k, ok = 0;
+    int c, k, bump, ok = 0, cycles = 0, inv_cycles = 0, inv_config = 0, reached_run = 0, reached_error = 0;
+    int hist[12] = {0};
+    unsigned pol = 0;
+    uint32_t t = 1000u;
     memset(&a, 0, sizeof a);
     memset(&b, 0, sizeof b);
     memset(&p, 0, sizeof p);
@@ -1531,19 +3466,42 @@ static void test_div_udint(void)
     a.wInputActive = b.wInputActive = 1;
     { cds_sl_div_udint_init_struct q; int32_t r; q.pFb = &a; cds_sl_div_udint_init(&q); r = sl_div_udint_init(&b);
       CHECK(q.cds_sl_div_udint_init == r && memcmp(&a, &b, sizeof a) == 0, "cds_sl_div_udint_init differs from sl_div_udint_init"); }
-    for (k = 0; k < 400; k++) {
-        int32_t direct;
-        unsigned r = rnd();
-        a.bErrAck = b.bErrAck = (uint8_t)((rnd() % 7u) != 0u);
-        p.pFb = &a;
-        p.tNow = (uint32_t)(k * 10u + (r % 5u));
-        cds_sl_div_udint_cycle(&p);
-        direct = sl_div_udint_cycle(&b, p.tNow);
-        CHECK(p.cds_sl_div_udint_cycle == direct, "FB_DIV_UDINT cycle %d: adapter %d, direct %d", k, (int)p.cds_sl_div_udint_cycle, (int)direct);
-        CHECK(memcmp(&a, &b, sizeof a) == 0, "FB_DIV_UDINT cycle %d: instances differ", k);
-        if (direct == SL_OK) ok++;
+    for (c = 0; c < 10; c++) {
+        int valid = c < 8; /* 8 valid configurations, then the labelled invalid share: 2 */
+        if (!draw_div_udint(&a, &b, valid)) {
+            CHECK(!valid, "FB_DIV_UDINT: no valid configuration found in 200000 random draws");
+            continue;
+        }
+        if (!valid) inv_config++;
+        a.bErrAck = b.bErrAck = (uint8_t)(0);
+        bump = 20 + (int)(rnd() % 20u);
+        pol = (c % 2 == 1) ? rnd() : 0u;
+        for (k = 0; k < 50; k++) {
+            int32_t direct;
+            next_machine();
+            a.bErrAck = b.bErrAck = next_signal(a.bErrAck, 1, pol >> 0);
+            a.bRun = b.bRun = (uint8_t)(k >= 2 && rnd() % 100u != 0u);
+            if (valid && k == bump) { a.nAnalogIn1++; b.nAnalogIn1++; } /* changed while running: ERROR */
+            if (valid && k == bump + 2) { a.nAnalogIn1--; b.nAnalogIn1--; } /* restored */
+            p.pFb = &a;
+            p.tNow = t += 10u;
+            cds_sl_div_udint_cycle(&p);
+            direct = sl_div_udint_cycle(&b, p.tNow);
+            CHECK(p.cds_sl_div_udint_cycle == direct, "FB_DIV_UDINT config %d cycle %d: adapter %d, direct %d", c, k, (int)p.cds_sl_div_udint_cycle, (int)direct);
+            CHECK(memcmp(&a, &b, sizeof a) == 0, "FB_DIV_UDINT config %d cycle %d: instances differ", c, k);
+            if (!valid) { inv_cycles++; continue; }
+            cycles++;
+            if (direct == SL_OK) ok++;
+            if (direct <= 0 && direct > -12) hist[-direct]++;
+            if (b.nState == SL_STATE_ERROR) reached_error = 1;
+            if (b.nState != SL_STATE_STOP && b.nState != SL_STATE_ERROR && b.nState != SL_STATE_RESET && b.nState != SL_STATE_SAFE) reached_run = 1;
+        }
     }
-    printf("FB_DIV_UDINT: %d of 400 cycles returned SL_OK\n", ok);
+    printf("FB_DIV_UDINT: %d of %d cycles (8 valid random configurations) returned SL_OK; run-like state %s, ERROR %s; invalid share: %d configurations, %d cycles\n", ok, cycles, reached_run ? "reached" : "NOT reached", reached_error ? "reached" : "NOT reached", inv_config, inv_cycles);
+    if (2 * ok <= cycles) printf("  status histogram (0, -1, ... -11): %d %d %d %d %d %d %d %d %d %d %d\n", hist[0], hist[1], hist[2], hist[3], hist[4], hist[5], hist[6], hist[7], hist[8], hist[9], hist[10]);
+    CHECK(cycles > 0 && 2 * ok > cycles, "FB_DIV_UDINT: only %d of %d cycles with valid configurations returned SL_OK", ok, cycles);
+    CHECK(reached_run, "FB_DIV_UDINT: the random test never reached a running state (an output on)");
+    CHECK(reached_error, "FB_DIV_UDINT: the random test never reached ERROR");
 }
 
 int main(void)

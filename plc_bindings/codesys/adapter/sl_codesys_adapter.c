@@ -513,3 +513,43 @@ void CDECL CDECL_EXT cds_sl_time_now_ms(cds_sl_time_now_ms_struct *p)
     }
     p->cds_sl_time_now_ms = sl_time_now_ms();
 }
+
+void CDECL CDECL_EXT cds_sl_ton2_get_elapsed(cds_sl_ton2_get_elapsed_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_ton2_get_elapsed = sl_ton2_get_elapsed(p->pFb, p->pPElapsedMs);
+}
+
+void CDECL CDECL_EXT cds_sl_group_init(cds_sl_group_init_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_group_init = sl_group_init(p->pG, p->pAMembers, p->nMemberCap, p->pALinks, p->nLinkCap);
+}
+
+void CDECL CDECL_EXT cds_sl_group_add_member(cds_sl_group_add_member_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_group_add_member = sl_group_add_member(p->pG, p->pAMembers, p->nType, p->pPBlock, p->pPIndex);
+}
+
+void CDECL CDECL_EXT cds_sl_group_add_link(cds_sl_group_add_link_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_group_add_link = sl_group_add_link(p->pG, p->pAMembers, p->pALinks, p->nSrcMember, p->nSrcOffset, p->nDstMember, p->nDstOffset);
+}
+
+void CDECL CDECL_EXT cds_sl_group_cycle(cds_sl_group_cycle_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_group_cycle = sl_group_cycle(p->pG, p->pAMembers, p->pALinks, p->tNow);
+}

@@ -505,6 +505,59 @@ typedef struct tagcds_sl_time_now_ms_struct {
 } cds_sl_time_now_ms_struct;
 void CDECL CDECL_EXT cds_sl_time_now_ms(cds_sl_time_now_ms_struct *p);
 
+/* FUNCTION cds_sl_ton2_get_elapsed : DINT -> sl_ton2_get_elapsed() */
+typedef struct tagcds_sl_ton2_get_elapsed_struct {
+    struct FB_TON2 *pFb; /* VAR_INPUT pFb : POINTER TO ST_FB_TON2 */
+    uint32_t *pPElapsedMs; /* VAR_INPUT pPElapsedMs : POINTER TO UDINT */
+    int32_t cds_sl_ton2_get_elapsed; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_ton2_get_elapsed_struct;
+void CDECL CDECL_EXT cds_sl_ton2_get_elapsed(cds_sl_ton2_get_elapsed_struct *p);
+
+/* FUNCTION cds_sl_group_init : DINT -> sl_group_init() */
+typedef struct tagcds_sl_group_init_struct {
+    struct SL_GROUP *pG; /* VAR_INPUT pG : POINTER TO SL_GROUP */
+    struct SL_MEMBER *pAMembers; /* VAR_INPUT pAMembers : POINTER TO SL_MEMBER_STORAGE */
+    uint16_t nMemberCap; /* VAR_INPUT nMemberCap : UINT */
+    struct SL_LINK *pALinks; /* VAR_INPUT pALinks : POINTER TO SL_LINK */
+    uint16_t nLinkCap; /* VAR_INPUT nLinkCap : UINT */
+    int32_t cds_sl_group_init; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_group_init_struct;
+void CDECL CDECL_EXT cds_sl_group_init(cds_sl_group_init_struct *p);
+
+/* FUNCTION cds_sl_group_add_member : DINT -> sl_group_add_member() */
+typedef struct tagcds_sl_group_add_member_struct {
+    struct SL_GROUP *pG; /* VAR_INPUT pG : POINTER TO SL_GROUP */
+    struct SL_MEMBER *pAMembers; /* VAR_INPUT pAMembers : POINTER TO SL_MEMBER_STORAGE */
+    uint16_t nType; /* VAR_INPUT nType : UINT */
+    void *pPBlock; /* VAR_INPUT pPBlock : POINTER TO BYTE */
+    uint16_t *pPIndex; /* VAR_INPUT pPIndex : POINTER TO UINT */
+    int32_t cds_sl_group_add_member; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_group_add_member_struct;
+void CDECL CDECL_EXT cds_sl_group_add_member(cds_sl_group_add_member_struct *p);
+
+/* FUNCTION cds_sl_group_add_link : DINT -> sl_group_add_link() */
+typedef struct tagcds_sl_group_add_link_struct {
+    struct SL_GROUP *pG; /* VAR_INPUT pG : POINTER TO SL_GROUP */
+    struct SL_MEMBER *pAMembers; /* VAR_INPUT pAMembers : POINTER TO SL_MEMBER_STORAGE */
+    struct SL_LINK *pALinks; /* VAR_INPUT pALinks : POINTER TO SL_LINK */
+    uint16_t nSrcMember; /* VAR_INPUT nSrcMember : UINT */
+    uint16_t nSrcOffset; /* VAR_INPUT nSrcOffset : UINT */
+    uint16_t nDstMember; /* VAR_INPUT nDstMember : UINT */
+    uint16_t nDstOffset; /* VAR_INPUT nDstOffset : UINT */
+    int32_t cds_sl_group_add_link; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_group_add_link_struct;
+void CDECL CDECL_EXT cds_sl_group_add_link(cds_sl_group_add_link_struct *p);
+
+/* FUNCTION cds_sl_group_cycle : DINT -> sl_group_cycle() */
+typedef struct tagcds_sl_group_cycle_struct {
+    struct SL_GROUP *pG; /* VAR_INPUT pG : POINTER TO SL_GROUP */
+    struct SL_MEMBER *pAMembers; /* VAR_INPUT pAMembers : POINTER TO SL_MEMBER_STORAGE */
+    struct SL_LINK *pALinks; /* VAR_INPUT pALinks : POINTER TO SL_LINK */
+    uint32_t tNow; /* VAR_INPUT tNow : UDINT */
+    int32_t cds_sl_group_cycle; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_group_cycle_struct;
+void CDECL CDECL_EXT cds_sl_group_cycle(cds_sl_group_cycle_struct *p);
+
 /* X-macro over every entry point: X(name) for the runtime component's export table,
    e.g. #define X(n) s_pfCMRegisterAPI2(#n, (RTS_UINTPTR)n, 1, <crc from the Itf.m4>, <version>); */
 #define SL_CODESYS_FOR_EACH_EXTERNAL(X) \
@@ -571,7 +624,12 @@ void CDECL CDECL_EXT cds_sl_time_now_ms(cds_sl_time_now_ms_struct *p);
     X(cds_sl_div_dint_cycle) \
     X(cds_sl_div_udint_init) \
     X(cds_sl_div_udint_cycle) \
-    X(cds_sl_time_now_ms)
+    X(cds_sl_time_now_ms) \
+    X(cds_sl_ton2_get_elapsed) \
+    X(cds_sl_group_init) \
+    X(cds_sl_group_add_member) \
+    X(cds_sl_group_add_link) \
+    X(cds_sl_group_cycle)
 
 #ifdef __cplusplus
 }

@@ -573,3 +573,48 @@ HRESULT CSafeLogicModule::sl_div_udint_cycle(PVOID pFb, int32_t *pnResult, uint3
     *pnResult = ::sl_div_udint_cycle(static_cast<struct FB_DIV_UDINT *>(pFb), tNow);
     return S_OK;
 }
+
+HRESULT CSafeLogicModule::sl_ton2_get_elapsed(PVOID pFb, int32_t *pnResult, uint32_t * pPElapsedMs)
+{
+    if (pFb == NULL || pnResult == NULL) {
+        return E_POINTER;
+    }
+    *pnResult = ::sl_ton2_get_elapsed(static_cast<struct FB_TON2 *>(pFb), pPElapsedMs);
+    return S_OK;
+}
+
+HRESULT CSafeLogicModule::sl_group_init(PVOID pG, int32_t *pnResult, struct SL_MEMBER * pAMembers, uint16_t nMemberCap, struct SL_LINK * pALinks, uint16_t nLinkCap)
+{
+    if (pG == NULL || pnResult == NULL) {
+        return E_POINTER;
+    }
+    *pnResult = ::sl_group_init(static_cast<struct SL_GROUP *>(pG), pAMembers, nMemberCap, pALinks, nLinkCap);
+    return S_OK;
+}
+
+HRESULT CSafeLogicModule::sl_group_add_member(PVOID pG, int32_t *pnResult, struct SL_MEMBER * pAMembers, uint16_t nType, void * pPBlock, uint16_t * pPIndex)
+{
+    if (pG == NULL || pnResult == NULL) {
+        return E_POINTER;
+    }
+    *pnResult = ::sl_group_add_member(static_cast<struct SL_GROUP *>(pG), pAMembers, nType, pPBlock, pPIndex);
+    return S_OK;
+}
+
+HRESULT CSafeLogicModule::sl_group_add_link(PVOID pG, int32_t *pnResult, struct SL_MEMBER * pAMembers, struct SL_LINK * pALinks, uint16_t nSrcMember, uint16_t nSrcOffset, uint16_t nDstMember, uint16_t nDstOffset)
+{
+    if (pG == NULL || pnResult == NULL) {
+        return E_POINTER;
+    }
+    *pnResult = ::sl_group_add_link(static_cast<struct SL_GROUP *>(pG), pAMembers, pALinks, nSrcMember, nSrcOffset, nDstMember, nDstOffset);
+    return S_OK;
+}
+
+HRESULT CSafeLogicModule::sl_group_cycle(PVOID pG, int32_t *pnResult, struct SL_MEMBER * pAMembers, struct SL_LINK * pALinks, uint32_t tNow)
+{
+    if (pG == NULL || pnResult == NULL) {
+        return E_POINTER;
+    }
+    *pnResult = ::sl_group_cycle(static_cast<struct SL_GROUP *>(pG), pAMembers, pALinks, tNow);
+    return S_OK;
+}
