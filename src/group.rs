@@ -51,6 +51,7 @@ pub trait Member {
 macro_rules! impl_member {
     ([$($gen:tt)*] $ty:ty {
         info: $info:expr,
+        private: $private:ty,
         input: [$($i:ident),* $(,)?],
         param: [$($p:ident),* $(,)?],
         output: [$($o:ident),* $(,)?],
@@ -75,6 +76,17 @@ macro_rules! impl_member {
             #[inline(always)]
             fn errack_raw(&self) -> u8 {
                 self.bErrAck
+            }
+        }
+        impl<$($gen)*> $crate::registry::Private for $ty {
+            type P = $private;
+            #[inline(always)]
+            fn private(&self) -> &$private {
+                &self.stPrivate
+            }
+            #[inline(always)]
+            fn private_mut(&mut self) -> &mut $private {
+                &mut self.stPrivate
             }
         }
         impl<$($gen)*> $crate::registry::Registered for $ty {

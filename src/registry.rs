@@ -152,6 +152,16 @@ pub const fn io_kind(k: Kind) -> Kind {
     }
 }
 
+/// The block's private state (`stPrivate`), typed: what a block family's code works on.
+pub trait Private {
+    /// The private struct of the family.
+    type P;
+    /// `&self.stPrivate`.
+    fn private(&self) -> &Self::P;
+    /// `&mut self.stPrivate`.
+    fn private_mut(&mut self) -> &mut Self::P;
+}
+
 /// What a registered block type brings: its info and its field table.
 pub trait Registered {
     /// Tag, name, states and diag texts.

@@ -72,6 +72,14 @@ BLOCKS = {
                    pulse=None, change=("tFilterTime", 1), run={1}),
 }
 
+# The arithmetic blocks in every variant: two analog inputs, no BOOL input; a parameter
+# change while running (DIV: the rounding, the others: the active mask) is the error.
+for _op in ("ADD", "SUB", "MUL", "DIV"):
+    for _v in ("INT", "UINT", "DINT", "UDINT"):
+        BLOCKS[f"{_op}_{_v}"] = dict(
+            cfg=dict(wInputActive=0x300, nAnalogIn1=7, nAnalogIn2=3), pulse=None,
+            change=("nRounding", 1) if _op == "DIV" else ("wInputActive", 0x301), run={1})
+
 
 BLOCK_INPUTS = {}  # block -> its BOOL inputs (filled from the header in main)
 

@@ -371,6 +371,13 @@ def is_time_ms(f: CField) -> bool:
             and re.match(r"a?t[A-Z0-9]", f.name) is not None)
 
 
+def is_number(f: CField) -> bool:
+    """An unsigned quantity (UINT/UDINT: analog values, nRounding, nTimeBase, nDiagTextId), not
+    a bit string: the `n` prefix, except nState (BYTE) and nDiag (WORD: bits or a value)."""
+    return (not f.is_struct and f.ctype in ("uint16_t", "uint32_t")
+            and re.match(r"n[A-Z]", f.name) is not None and f.name not in ("nState", "nDiag"))
+
+
 # --------------------------------------------------------------------------------------
 # Type mapping and text helpers
 # --------------------------------------------------------------------------------------
@@ -391,7 +398,7 @@ def st_scalar(f_ctype: str, time_ms: bool) -> str:
 
 
 def dut_type(hdr: Header, f: CField) -> str:
-    base = dut_name(hdr, f.ctype) if f.is_struct else st_scalar(f.ctype, is_time_ms(f))
+    base = dut_name(hdr, f.ctype) if f.is_struct else st_scalar(f.ctype, is_time_ms(f) or is_number(f))
     if f.count is not None:
         return f"ARRAY [0..{f.count - 1}] OF {base}"
     return base
@@ -897,16 +904,19 @@ def iec_selftest_function(hdr: Header) -> Tuple[str, str]:
         "0 = identical. Returns -1 when the pragma is not compiled. *)",
         IEC_NO_INPUT_VAR,
     ]) + "\n"
-    lines = ["SL_SELFTEST_LAYOUT := DINT#-1;", "{", "  SL_SELFTEST_LAYOUT = 0;"]
+    # One pragma per struct: matiec's scanner cannot hold one pragma of more than a few
+    # tens of kilobytes (flex with REJECT does not enlarge its buffer).
+    lines = ["SL_SELFTEST_LAYOUT := DINT#-1;", "{", "  SL_SELFTEST_LAYOUT = 0;", "}"]
     for name in hdr.order:
         st = hdr.structs[name]
         dn = dut_name(hdr, name)
         v = "sl_plc_" + dn.lower()
+        lines.append("{")
         lines.append(f"  {dn} {v};")
         lines.append(f"  SL_SELFTEST_LAYOUT += (sizeof({v}) != {st.size});")
         for f in st.fields:
             lines.append(f"  SL_SELFTEST_LAYOUT += ((char *)&{v}.{f.name.upper()} - (char *)&{v} != {f.offset});")
-    lines.append("}")
+        lines.append("}")
     return decl, "\n".join(lines) + "\n"
 
 

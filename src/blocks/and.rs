@@ -84,6 +84,7 @@ pub const INFO: BlockInfo = BlockInfo {
 
 crate::impl_member!([] FB_AND {
     info: INFO,
+    private: SL_LOGIC_PRIVATE,
     input: [bAndIn1, bAndIn2, bAndIn3, bAndIn4, bAndIn5, bAndIn6, bAndIn7, bAndIn8],
     param: [wInputActive, wInputNegated],
     output: [bAndOut],
@@ -111,12 +112,6 @@ impl LogicBlock for FB_AND {
     const NEGATABLE: u16 = 0xFF;
     const MIN_ACTIVE: u32 = 2;
 
-    fn private(&self) -> &SL_LOGIC_PRIVATE {
-        &self.stPrivate
-    }
-    fn private_mut(&mut self) -> &mut SL_LOGIC_PRIVATE {
-        &mut self.stPrivate
-    }
     fn params(&self) -> LogicParams {
         LogicParams {
             active: self.wInputActive,
@@ -142,3 +137,5 @@ impl LogicBlock for FB_AND {
         self.nDiag = diag;
     }
 }
+
+super::logic::logic_block!(FB_AND);

@@ -447,6 +447,7 @@ const fn info<O: ArithOp, T: Analog>() -> BlockInfo {
 
 crate::impl_member!([O: ArithOp, T: Analog, const P1: usize, const P2: usize] FB_ARITH<O, T, P1, P2> {
     info: info::<O, T>(),
+    private: SL_ARITH_PRIVATE,
     input: [nAnalogIn1, nAnalogIn2],
     param: [wInputActive],
     output: [bError, nAnalogOut],
@@ -455,6 +456,7 @@ crate::impl_member!([O: ArithOp, T: Analog, const P1: usize, const P2: usize] FB
 
 crate::impl_member!([T: Analog, const P1: usize, const P2: usize] FB_DIV<T, P1, P2> {
     info: info::<Div, T>(),
+    private: SL_ARITH_PRIVATE,
     input: [nAnalogIn1, nAnalogIn2],
     param: [nRounding, wInputActive],
     output: [bError, nAnalogOut],
@@ -462,7 +464,7 @@ crate::impl_member!([T: Analog, const P1: usize, const P2: usize] FB_DIV<T, P1, 
 });
 
 /// What the envelope needs of the two structs; everything else is shared below.
-pub trait ArithFb {
+pub trait ArithFb: crate::registry::Private<P = SL_ARITH_PRIVATE> {
     /// The integer type.
     type T: Analog;
     /// The operation.
@@ -473,8 +475,6 @@ pub trait ArithFb {
     fn rounding(&self) -> u16;
     /// The live `wInputActive`.
     fn active(&self) -> u16;
-    fn private(&self) -> &SL_ARITH_PRIVATE;
-    fn private_mut(&mut self) -> &mut SL_ARITH_PRIVATE;
     /// Writes bError, AnalogOut and the info data.
     fn set_outputs(
         &mut self,
@@ -504,14 +504,6 @@ macro_rules! arith_fb {
                 self.wInputActive
             }
             #[inline(always)]
-            fn private(&self) -> &SL_ARITH_PRIVATE {
-                &self.stPrivate
-            }
-            #[inline(always)]
-            fn private_mut(&mut self) -> &mut SL_ARITH_PRIVATE {
-                &mut self.stPrivate
-            }
-            #[inline(always)]
             fn set_outputs(&mut self, error: bool, out: T, state: u8, diag: u16, msg: (u16, u32, u32)) {
                 self.bError = u8::from(error);
                 self.nAnalogOut = out;
@@ -532,9 +524,9 @@ macro_rules! arith_fb {
 arith_fb!([O: ArithOp, T: Analog, const P1: usize, const P2: usize] FB_ARITH<O, T, P1, P2>, O, |_: &Self| 0);
 arith_fb!([T: Analog, const P1: usize, const P2: usize] FB_DIV<T, P1, P2>, Div, |s: &Self| s.nRounding);
 
-impl<O, T: Analog, const P1: usize, const P2: usize> FB_ARITH<O, T, P1, P2> {
-    /// An all-zero instance (valid: it initialises itself on the first cycle, ABI §3.6).
-    pub const fn zeroed() -> Self {
+/// An all-zero instance of either struct; `$extra` are the fields only one of them has.
+macro_rules! zeroed {
+    ($($extra:ident: $v:expr),*) => {
         Self {
             aReserved0: [0; 16],
             bRun: 0,
@@ -556,37 +548,22 @@ impl<O, T: Analog, const P1: usize, const P2: usize> FB_ARITH<O, T, P1, P2> {
             dwDiagPar2: 0,
             dwDiagPar3: 0,
             stPrivate: SL_ARITH_PRIVATE::ZERO,
-            _op: PhantomData,
+            $($extra: $v),*
         }
+    };
+}
+
+impl<O, T: Analog, const P1: usize, const P2: usize> FB_ARITH<O, T, P1, P2> {
+    /// An all-zero instance (valid: it initialises itself on the first cycle, ABI §3.6).
+    pub const fn zeroed() -> Self {
+        zeroed!(_op: PhantomData)
     }
 }
 
 impl<T: Analog, const P1: usize, const P2: usize> FB_DIV<T, P1, P2> {
     /// An all-zero instance (valid: it initialises itself on the first cycle, ABI §3.6).
     pub const fn zeroed() -> Self {
-        Self {
-            aReserved0: [0; 16],
-            bRun: 0,
-            bErrAck: 0,
-            aReserved1: [0; 6],
-            nAnalogIn1: T::ZERO,
-            nAnalogIn2: T::ZERO,
-            nRounding: 0,
-            wInputActive: 0,
-            aReserved2: [0; P1],
-            bError: 0,
-            aReserved3: [0; 7],
-            nAnalogOut: T::ZERO,
-            aReserved4: [0; P2],
-            nState: 0,
-            aReserved5: [0; 1],
-            nDiag: 0,
-            nDiagTextId: 0,
-            aReserved6: [0; 2],
-            dwDiagPar2: 0,
-            dwDiagPar3: 0,
-            stPrivate: SL_ARITH_PRIVATE::ZERO,
-        }
+        zeroed!(nRounding: 0)
     }
 }
 

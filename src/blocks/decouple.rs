@@ -100,6 +100,7 @@ pub const INFO: BlockInfo = BlockInfo {
 
 crate::impl_member!([] FB_DECOUPLE {
     info: INFO,
+    private: SL_LOGIC_PRIVATE,
     input: [bDecIn1, bDecIn2, bDecIn3, bDecIn4, bDecIn5, bDecIn6, bDecIn7, bDecIn8],
     param: [wInputActive],
     output: [bDecOut1, bDecOut2, bDecOut3, bDecOut4, bDecOut5, bDecOut6, bDecOut7, bDecOut8],
@@ -127,12 +128,6 @@ impl LogicBlock for FB_DECOUPLE {
     const NEGATABLE: u16 = 0;
     const MIN_ACTIVE: u32 = 1;
 
-    fn private(&self) -> &SL_LOGIC_PRIVATE {
-        &self.stPrivate
-    }
-    fn private_mut(&mut self) -> &mut SL_LOGIC_PRIVATE {
-        &mut self.stPrivate
-    }
     fn params(&self) -> LogicParams {
         LogicParams {
             active: self.wInputActive,
@@ -165,3 +160,5 @@ impl LogicBlock for FB_DECOUPLE {
         self.nDiag = diag;
     }
 }
+
+super::logic::logic_block!(FB_DECOUPLE);

@@ -108,6 +108,7 @@ pub const INFO: BlockInfo = BlockInfo {
 
 crate::impl_member!([] FB_EDM {
     info: INFO,
+    private: SL_EDM_PRIVATE,
     input: [bMon1, bMon2],
     param: [tSwitchOnTime, tSwitchOffTime, wInputActive, wInputNegated],
     output: [bError],

@@ -148,6 +148,7 @@ pub const INFO: BlockInfo = BlockInfo {
 
 crate::impl_member!([] FB_ESTOP {
     info: INFO,
+    private: SL_GUARD_PRIVATE,
     input: [bRestart, bEDM1, bEDM2, bEStopIn1, bEStopIn2, bEStopIn3, bEStopIn4, bEStopIn5, bEStopIn6, bEStopIn7, bEStopIn8],
     param: [tDiscTime12, tDiscTime34, tDiscTime56, tDiscTime78, tEDM1ResetTime, tEDM2ResetTime, tEStopDelOutDelay, wInputActive, wInputNegated, dwOptions],
     output: [bError, bEStopOut, bEStopDelOut],
@@ -164,13 +165,6 @@ impl GuardBlock for FB_ESTOP {
     const TEST_INPUTS: u8 = 0;
     const ERROR_DELAY: bool = false;
     const ALWAYS_MANUAL: bool = true;
-
-    fn private(&self) -> &SL_GUARD_PRIVATE {
-        &self.stPrivate
-    }
-    fn private_mut(&mut self) -> &mut SL_GUARD_PRIVATE {
-        &mut self.stPrivate
-    }
 
     fn params(&self) -> GuardParams {
         GuardParams {
@@ -218,3 +212,5 @@ impl GuardBlock for FB_ESTOP {
         self.nDiag = diag;
     }
 }
+
+super::guard::guard_block!(FB_ESTOP);

@@ -4,11 +4,7 @@
 //! output keeps its current state. The blocks differ only in `SET_DOMINANT`. Neither
 //! reports an error of its own: ERROR (4) only comes from the envelope.
 
-use super::rs::FB_RS;
-use super::sr::FB_SR;
-use crate::prim::bools;
-use crate::prim::envelope::Block;
-use crate::prim::header::{param_crc, SL_PRIVATE_HEADER};
+use crate::prim::header::SL_PRIVATE_HEADER;
 use crate::types::*;
 
 /// Private state of FB_RS and FB_SR (32 bytes): the memory is the state (SAFE or SET) in
@@ -24,12 +20,12 @@ pub struct SL_FLIPFLOP_PRIVATE {
 const _: () = assert!(core::mem::size_of::<SL_FLIPFLOP_PRIVATE>() == 32);
 
 /// Input bits: bit 0 = Reset, bit 1 = Set (ABI §9).
-const RESET: u8 = 1 << 0;
-const SET: u8 = 1 << 1;
-const INPUTS: u16 = (RESET | SET) as u16;
+pub(crate) const RESET: u8 = 1 << 0;
+pub(crate) const SET: u8 = 1 << 1;
+pub(crate) const INPUTS: u16 = (RESET | SET) as u16;
 
 /// The state value SET (9); FB_RS and FB_SR use the same number.
-const STATE_SET: u8 = SL_STATE_RS_SET;
+pub(crate) const STATE_SET: u8 = SL_STATE_RS_SET;
 const _: () = assert!(SL_STATE_RS_SET == SL_STATE_SR_SET);
 
 /// Parameters as the user wrote them.
@@ -47,14 +43,12 @@ pub struct FlipFlopIn {
 }
 
 /// What distinguishes RS from SR.
-pub trait FlipFlopBlock {
+pub trait FlipFlopBlock: crate::registry::Private<P = SL_FLIPFLOP_PRIVATE> {
     /// Type tag stored in the private header.
     const TAG: u16;
     /// Both inputs TRUE: SET (SR) or SAFE (RS).
     const SET_DOMINANT: bool;
 
-    fn private(&self) -> &SL_FLIPFLOP_PRIVATE;
-    fn private_mut(&mut self) -> &mut SL_FLIPFLOP_PRIVATE;
     fn params(&self) -> FlipFlopParams;
     /// Raw input bytes: Reset, Set.
     fn raw(&self) -> [u8; 2];
@@ -73,7 +67,7 @@ pub const fn next(is_set: bool, inp: FlipFlopIn, set_dominant: bool) -> bool {
 }
 
 #[inline]
-const fn state_of(is_set: bool) -> u8 {
+pub(crate) const fn state_of(is_set: bool) -> u8 {
     if is_set {
         STATE_SET
     } else {
@@ -81,90 +75,122 @@ const fn state_of(is_set: bool) -> u8 {
     }
 }
 
-/// The envelope's view of every block of this family.
+/// The envelope's view of a block of this family; invoked in the member's own file.
 macro_rules! flipflop_block {
-    ($t:ty) => {
-        impl Block for $t {
-            const MAGIC: u16 = <$t as FlipFlopBlock>::TAG;
-            type Params = FlipFlopParams;
-            type In = FlipFlopIn;
+    // A member from its description: RS and SR differ only in these.
+    ($t:ty { tag: $tag:expr, set_dominant: $dom:expr, output: $out:ident $(,)? }) => {
+        impl $crate::blocks::flipflop::FlipFlopBlock for $t {
+            const TAG: u16 = $tag;
+            const SET_DOMINANT: bool = $dom;
 
-            fn live_params(&self) -> FlipFlopParams {
-                self.params()
-            }
-            fn latched_params(&self) -> FlipFlopParams {
-                let h = &self.private().stHeader;
-                FlipFlopParams {
-                    active: u16::from(h.nActive),
-                    negated: u16::from(h.nNegated),
+            fn params(&self) -> $crate::blocks::flipflop::FlipFlopParams {
+                $crate::blocks::flipflop::FlipFlopParams {
+                    active: self.wInputActive,
+                    negated: self.wInputNegated,
                 }
             }
-            /// At least one input active, no bits for inputs the block does not have
-            /// (semantics R1).
-            fn params_valid(p: &FlipFlopParams) -> bool {
-                p.active & !INPUTS == 0 && p.negated & !INPUTS == 0 && p.active != 0
+            fn raw(&self) -> [u8; 2] {
+                [self.bReset, self.bSet]
             }
-            fn store_params(&mut self, p: &FlipFlopParams) {
-                let h = &mut self.private_mut().stHeader;
-                h.nActive = p.active as u8;
-                h.nNegated = p.negated as u8;
-            }
-            fn latched_crc(&self) -> u16 {
-                let h = &self.private().stHeader;
-                param_crc(Self::MAGIC, h.nActive, h.nNegated, h.wOptions, &[])
-            }
-            /// An inactive input reads FALSE (no command). An invalid byte reads as the value
-            /// that demands the safe state of the output: Reset TRUE, Set FALSE, whatever
-            /// the negation bit (ABI §2, semantics R3).
-            fn decode(&mut self) -> (FlipFlopIn, bool) {
-                let h = &self.private().stHeader;
-                let active = h.nActive;
-                let p = bools::pack(self.raw());
-                let logical = bools::logical(p, active, h.nNegated);
-                let invalid = p.invalid & active;
-                let inp = FlipFlopIn {
-                    reset: (logical | invalid) & RESET != 0,
-                    set: logical & SET != 0,
-                };
-                (inp, invalid != 0)
-            }
-            /// STOP → run and RESET → run: the output was FALSE, so "remains in its current
-            /// state" means SAFE unless this cycle's inputs set it (semantics R4). The
-            /// parameters were latched, or compared with the live ones, in this same call.
-            fn start(&mut self, inp: &FlipFlopIn, _now: u32) {
-                let h = &mut self.private_mut().stHeader;
-                h.nState = state_of(next(false, *inp, Self::SET_DOMINANT));
-            }
-            fn step(&mut self, inp: &FlipFlopIn, _now: u32) -> i32 {
-                let is_set = match self.private().stHeader.nState {
-                    SL_STATE_SAFE => false,
-                    STATE_SET => true,
-                    // A state value this block never takes: the memory cannot be trusted.
-                    _ => false,
-                };
-                let known = matches!(self.private().stHeader.nState, SL_STATE_SAFE | STATE_SET);
-                let set = next(is_set, *inp, Self::SET_DOMINANT);
-                // The output switches on: verify the latched parameters first (C3).
-                if !known || (set && !is_set && !self.params_intact()) {
-                    self.private_mut().stHeader.enter_error(SL_DIAG_CORRUPT);
-                    return SL_E_CORRUPT;
-                }
-                self.private_mut().stHeader.nState = state_of(set);
-                SL_OK
-            }
-            fn error_remains(&mut self, _inp: &FlipFlopIn) -> bool {
-                false
-            }
-            fn write_outputs(&mut self) {
-                let h = self.private().stHeader;
-                self.set_outputs(h.nState == STATE_SET, h.nState, h.wDiag);
+            fn set_outputs(&mut self, out: bool, state: u8, diag: u16) {
+                self.$out = u8::from(out);
+                self.nState = state;
+                self.nDiag = diag;
             }
         }
+        $crate::blocks::flipflop::flipflop_block!($t);
+    };
+    ($t:ty) => {
+        const _: () = {
+            use $crate::blocks::flipflop::*;
+            use $crate::prim::envelope::Block;
+            #[allow(unused_imports)]
+            use $crate::prim::{
+                bools, bools::Edge, edm, edm::Edm, header::*, pair, restart, restart::Restart, time,
+            };
+            use $crate::registry::Private;
+            use $crate::types::*;
+
+            impl Block for $t {
+                const MAGIC: u16 = <$t as FlipFlopBlock>::TAG;
+                type Params = FlipFlopParams;
+                type In = FlipFlopIn;
+
+                fn live_params(&self) -> FlipFlopParams {
+                    self.params()
+                }
+                fn latched_params(&self) -> FlipFlopParams {
+                    let h = &self.private().stHeader;
+                    FlipFlopParams {
+                        active: u16::from(h.nActive),
+                        negated: u16::from(h.nNegated),
+                    }
+                }
+                /// At least one input active, no bits for inputs the block does not have
+                /// (semantics R1).
+                fn params_valid(p: &FlipFlopParams) -> bool {
+                    p.active & !INPUTS == 0 && p.negated & !INPUTS == 0 && p.active != 0
+                }
+                fn store_params(&mut self, p: &FlipFlopParams) {
+                    let h = &mut self.private_mut().stHeader;
+                    h.nActive = p.active as u8;
+                    h.nNegated = p.negated as u8;
+                }
+                fn latched_crc(&self) -> u16 {
+                    let h = &self.private().stHeader;
+                    param_crc(Self::MAGIC, h.nActive, h.nNegated, h.wOptions, &[])
+                }
+                /// An inactive input reads FALSE (no command). An invalid byte reads as the value
+                /// that demands the safe state of the output: Reset TRUE, Set FALSE, whatever
+                /// the negation bit (ABI §2, semantics R3).
+                fn decode(&mut self) -> (FlipFlopIn, bool) {
+                    let h = &self.private().stHeader;
+                    let active = h.nActive;
+                    let p = bools::pack(self.raw());
+                    let logical = bools::logical(p, active, h.nNegated);
+                    let invalid = p.invalid & active;
+                    let inp = FlipFlopIn {
+                        reset: (logical | invalid) & RESET != 0,
+                        set: logical & SET != 0,
+                    };
+                    (inp, invalid != 0)
+                }
+                /// STOP → run and RESET → run: the output was FALSE, so "remains in its current
+                /// state" means SAFE unless this cycle's inputs set it (semantics R4). The
+                /// parameters were latched, or compared with the live ones, in this same call.
+                fn start(&mut self, inp: &FlipFlopIn, _now: u32) {
+                    let h = &mut self.private_mut().stHeader;
+                    h.nState = state_of(next(false, *inp, Self::SET_DOMINANT));
+                }
+                fn step(&mut self, inp: &FlipFlopIn, _now: u32) -> i32 {
+                    let is_set = match self.private().stHeader.nState {
+                        SL_STATE_SAFE => false,
+                        STATE_SET => true,
+                        // A state value this block never takes: the memory cannot be trusted.
+                        _ => false,
+                    };
+                    let known = matches!(self.private().stHeader.nState, SL_STATE_SAFE | STATE_SET);
+                    let set = next(is_set, *inp, Self::SET_DOMINANT);
+                    // The output switches on: verify the latched parameters first (C3).
+                    if !known || (set && !is_set && !self.params_intact()) {
+                        self.private_mut().stHeader.enter_error(SL_DIAG_CORRUPT);
+                        return SL_E_CORRUPT;
+                    }
+                    self.private_mut().stHeader.nState = state_of(set);
+                    SL_OK
+                }
+                fn error_remains(&mut self, _inp: &FlipFlopIn) -> bool {
+                    false
+                }
+                fn write_outputs(&mut self) {
+                    let h = self.private().stHeader;
+                    self.set_outputs(h.nState == STATE_SET, h.nState, h.wDiag);
+                }
+            }
+        };
     };
 }
-
-flipflop_block!(FB_RS);
-flipflop_block!(FB_SR);
+pub(crate) use flipflop_block;
 
 #[cfg(test)]
 mod tests {

@@ -4,16 +4,11 @@
 //! automatic restart, an undelayed and a delayed output, and for MON the ERRORDELAY and
 //! FUNCTEST states. The states are the manual's status values (§4.4.2, §4.5.2).
 
-use super::estop::FB_ESTOP;
-use super::mon::FB_MON;
-use crate::prim::bools::{self, Edge};
+use crate::prim::bools::Edge;
 use crate::prim::edm::Edm;
-use crate::prim::envelope::Block;
 use crate::prim::header::{
-    param_crc, EDM_PENDING_SHIFT, F_EDM1_PENDING, F_EDM2_PENDING, F_RESTART_PREV, SL_PRIVATE_HEADER,
+    param_crc, EDM_PENDING_SHIFT, F_EDM1_PENDING, F_EDM2_PENDING, SL_PRIVATE_HEADER,
 };
-use crate::prim::restart::{self, Restart};
-use crate::prim::{pair, time};
 use crate::types::*;
 
 /// Private state of FB_ESTOP and FB_MON (64 bytes). Never written by the user.
@@ -33,9 +28,9 @@ pub struct SL_GUARD_PRIVATE {
 const _: () = assert!(core::mem::size_of::<SL_GUARD_PRIVATE>() == 64);
 const _: () = assert!(core::mem::size_of::<SL_PRIVATE_HEADER>() == 28);
 
-const T_EDM1: usize = 4;
-const T_EDM2: usize = 5;
-const T_DELAY: usize = 6;
+pub(crate) const T_EDM1: usize = 4;
+pub(crate) const T_EDM2: usize = 5;
+pub(crate) const T_DELAY: usize = 6;
 
 /// Guard parameters as the user wrote them.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
@@ -71,7 +66,7 @@ pub struct GuardIn {
 }
 
 /// What distinguishes ESTOP from MON.
-pub trait GuardBlock {
+pub trait GuardBlock: crate::registry::Private<P = SL_GUARD_PRIVATE> {
     /// Type tag stored in the private header.
     const TAG: u16;
     /// Option bits the block accepts.
@@ -89,8 +84,6 @@ pub trait GuardBlock {
     /// Restart is always manual (ESTOP).
     const ALWAYS_MANUAL: bool;
 
-    fn private(&self) -> &SL_GUARD_PRIVATE;
-    fn private_mut(&mut self) -> &mut SL_GUARD_PRIVATE;
     fn params(&self) -> GuardParams;
     fn raw(&self) -> GuardRaw;
     /// Safe-state request from the logical values of the active inputs.
@@ -100,7 +93,7 @@ pub trait GuardBlock {
 
 /// Diag bits for pair errors, with the "Safe Inputs after Disc Error" bits when it is on.
 #[inline]
-fn disc_diag(pairs: u8, safe_inputs: bool) -> u16 {
+pub(crate) fn disc_diag(pairs: u8, safe_inputs: bool) -> u16 {
     let d = u16::from(pairs);
     if safe_inputs {
         d | (d << 8)
@@ -109,19 +102,19 @@ fn disc_diag(pairs: u8, safe_inputs: bool) -> u16 {
     }
 }
 
-fn manual_restart<T: GuardBlock>(options: u16) -> bool {
+pub(crate) fn manual_restart<T: GuardBlock>(options: u16) -> bool {
     T::ALWAYS_MANUAL || u32::from(options) & SL_OPT_MANUAL_RESTART != 0
 }
 
 /// CRC of a guard block's latched parameters.
-fn latched_crc<T: GuardBlock>(p: &SL_GUARD_PRIVATE) -> u16 {
+pub(crate) fn latched_crc<T: GuardBlock>(p: &SL_GUARD_PRIVATE) -> u16 {
     let h = &p.stHeader;
     param_crc(T::TAG, h.nActive, h.nNegated, h.wOptions, &p.awTime)
 }
 
 /// Outputs switch on: verify the latched parameters first (ABI §3.6 integrity), then RUN
 /// with the EDM reset-time checks armed.
-fn enable<T: GuardBlock>(p: &mut SL_GUARD_PRIVATE, edm: &Edm, now: u32) -> (u8, i32) {
+pub(crate) fn enable<T: GuardBlock>(p: &mut SL_GUARD_PRIVATE, edm: &Edm, now: u32) -> (u8, i32) {
     if latched_crc::<T>(p) != p.stHeader.wParamCrc {
         p.stHeader.enter_error(SL_DIAG_CORRUPT);
         return (SL_STATE_ERROR, SL_E_CORRUPT);
@@ -133,298 +126,307 @@ fn enable<T: GuardBlock>(p: &mut SL_GUARD_PRIVATE, edm: &Edm, now: u32) -> (u8, 
     (SL_STATE_RUN, SL_OK)
 }
 
-/// The envelope's view of every block of this family.
+/// The envelope's view of a block of this family; invoked in the member's own file.
 macro_rules! guard_block {
     ($t:ty) => {
-        impl Block for $t {
-            const MAGIC: u16 = <$t as GuardBlock>::TAG;
-            type Params = GuardParams;
-            type In = GuardIn;
+        const _: () = {
+            use $crate::blocks::guard::*;
+            use $crate::prim::envelope::Block;
+            #[allow(unused_imports)]
+            use $crate::prim::{
+                bools, bools::Edge, edm, edm::Edm, header::*, pair, restart, restart::Restart, time,
+            };
+            use $crate::registry::Private;
+            use $crate::types::*;
 
-            fn live_params(&self) -> GuardParams {
-                self.params()
-            }
+            impl Block for $t {
+                const MAGIC: u16 = <$t as GuardBlock>::TAG;
+                type Params = GuardParams;
+                type In = GuardIn;
 
-            fn latched_params(&self) -> GuardParams {
-                let p = self.private();
-                let t = |i: usize| u32::from(p.awTime[i]);
-                GuardParams {
-                    disc: [t(0), t(1), t(2), t(3)],
-                    edm_reset: [t(T_EDM1), t(T_EDM2)],
-                    delay: t(T_DELAY),
-                    active: u16::from(p.stHeader.nActive),
-                    negated: u16::from(p.stHeader.nNegated),
-                    options: u32::from(p.stHeader.wOptions),
+                fn live_params(&self) -> GuardParams {
+                    self.params()
                 }
-            }
 
-            fn params_valid(p: &GuardParams) -> bool {
-                let times_ok = p
-                    .disc
-                    .iter()
-                    .chain(&p.edm_reset)
-                    .chain(core::iter::once(&p.delay))
-                    .all(|&t| t <= SL_TIME_PARAM_MAX);
-                // A discrepancy time belongs to a pair that exists and has both inputs active.
-                let pairs_ok = p.disc.iter().enumerate().all(|(k, &t)| {
-                    let both = 0b11u16 << (2 * k);
-                    t == 0 || (Self::PAIRS & (1 << k) != 0 && p.active & both == both)
-                });
-                // A reset time belongs to an active feedback loop.
-                let edm_ok = (p.edm_reset[0] == 0 || p.options & SL_OPT_EDM1 != 0)
-                    && (p.edm_reset[1] == 0 || p.options & SL_OPT_EDM2 != 0);
-                times_ok
-                    && pairs_ok
-                    && edm_ok
-                    && p.active & !Self::INPUTS == 0
-                    && p.negated & !Self::INPUTS == 0
-                    && p.active & Self::REQUIRED != 0
-                    && p.options & !Self::OPTIONS == 0
-            }
-
-            fn store_params(&mut self, p: &GuardParams) {
-                let q = self.private_mut();
-                // Narrowing is exact for valid parameters (all times <= SL_TIME_PARAM_MAX); an
-                // invalid set is stored truncated and never runs (F_CFG_INVALID).
-                let n = |t: u32| t as u16;
-                q.awTime = [
-                    n(p.disc[0]),
-                    n(p.disc[1]),
-                    n(p.disc[2]),
-                    n(p.disc[3]),
-                    n(p.edm_reset[0]),
-                    n(p.edm_reset[1]),
-                    n(p.delay),
-                    0,
-                ];
-                q.stHeader.nActive = p.active as u8;
-                q.stHeader.nNegated = p.negated as u8;
-                q.stHeader.wOptions = p.options as u16;
-            }
-
-            fn latched_crc(&self) -> u16 {
-                let p = self.private();
-                let h = &p.stHeader;
-                param_crc(Self::MAGIC, h.nActive, h.nNegated, h.wOptions, &p.awTime)
-            }
-
-            fn decode(&mut self) -> (GuardIn, bool) {
-                let raw = self.raw();
-                let h = &mut self.private_mut().stHeader;
-                let packed = bools::pack(raw.inputs);
-                let active = h.nActive;
-                let logical = bools::logical(packed, active, h.nNegated);
-                let restart = bools::edge(raw.restart, &mut h.nFlags, F_RESTART_PREV);
-                let options = u32::from(h.wOptions);
-                let edm = Edm {
-                    active: [options & SL_OPT_EDM1 != 0, options & SL_OPT_EDM2 != 0],
-                    is_true: [bools::is_true(raw.edm[0]), bools::is_true(raw.edm[1])],
-                    is_false: [bools::is_false(raw.edm[0]), bools::is_false(raw.edm[1])],
-                };
-                // Only bytes the block reads count as invalid: active inputs and active EDMs, and
-                // Restart where a manual restart uses it.
-                let invalid = packed.invalid & active != 0
-                    || (edm.active[0] && raw.edm[0] > 1)
-                    || (edm.active[1] && raw.edm[1] > 1)
-                    || (manual_restart::<Self>(h.wOptions) && raw.restart > 1);
-                let inp = GuardIn {
-                    logical,
-                    request: Self::request(logical, active),
-                    test_req: !logical & active & Self::TEST_INPUTS,
-                    restart,
-                    edm,
-                };
-                (inp, invalid)
-            }
-
-            fn start(&mut self, _inp: &GuardIn, now: u32) {
-                let h = &mut self.private_mut().stHeader;
-                h.wAux = 0;
-                h.nFlags &= !(F_EDM1_PENDING | F_EDM2_PENDING);
-                h.tPhase = now;
-                h.nState = if u32::from(h.wOptions) & SL_OPT_FUNCTION_TEST != 0 {
-                    SL_STATE_FUNCTEST
-                } else {
-                    SL_STATE_SAFE
-                };
-            }
-
-            fn step(&mut self, inp: &GuardIn, now: u32) -> i32 {
-                let p = self.private_mut();
-                let state = p.stHeader.nState;
-                let options = u32::from(p.stHeader.wOptions);
-                let manual = manual_restart::<Self>(p.stHeader.wOptions);
-                let delay = u32::from(p.awTime[T_DELAY]);
-
-                // Discrepancy monitoring runs in every running state.
-                let monitored = p.awTime[..4]
-                    .iter()
-                    .enumerate()
-                    .fold(0u8, |m, (k, &t)| m | (u8::from(t != 0) << k));
-                let mut running = (p.stHeader.wAux & 0xF) as u8;
-                let disc = pair::monitor(
-                    inp.logical,
-                    monitored,
-                    &mut running,
-                    &mut p.atDiscStart,
-                    &p.awTime[..4],
-                    now,
-                );
-                p.stHeader.wAux = (p.stHeader.wAux & !0xF) | u16::from(running);
-                let mut err = disc_diag(disc, options & SL_OPT_SAFE_INPUTS_AFTER_DISC != 0);
-
-                // EDM with manual restart: while the outputs are safe and Restart is TRUE (and at
-                // its falling edge in START), every active feedback must read TRUE (sample 3).
-                let outputs_safe =
-                    matches!(state, SL_STATE_SAFE | SL_STATE_START | SL_STATE_FUNCTEST);
-                if manual
-                    && outputs_safe
-                    && (inp.restart.level || (state == SL_STATE_START && inp.restart.falling))
-                {
-                    err |= inp.edm.not_released();
+                fn latched_params(&self) -> GuardParams {
+                    let p = self.private();
+                    let t = |i: usize| u32::from(p.awTime[i]);
+                    GuardParams {
+                        disc: [t(0), t(1), t(2), t(3)],
+                        edm_reset: [t(T_EDM1), t(T_EDM2)],
+                        delay: t(T_DELAY),
+                        active: u16::from(p.stHeader.nActive),
+                        negated: u16::from(p.stHeader.nNegated),
+                        options: u32::from(p.stHeader.wOptions),
+                    }
                 }
-                // EL6910 EDM reset time: after switching on, each checked feedback must drop.
-                if state == SL_STATE_RUN {
-                    let h = &mut p.stHeader;
-                    let mut pending = (h.nFlags >> EDM_PENDING_SHIFT) & 0b11;
-                    err |= inp.edm.reset_time_check(
-                        &mut pending,
-                        h.tPhase,
-                        [p.awTime[T_EDM1], p.awTime[T_EDM2]],
+
+                fn params_valid(p: &GuardParams) -> bool {
+                    let times_ok = p
+                        .disc
+                        .iter()
+                        .chain(&p.edm_reset)
+                        .chain(core::iter::once(&p.delay))
+                        .all(|&t| t <= SL_TIME_PARAM_MAX);
+                    // A discrepancy time belongs to a pair that exists and has both inputs active.
+                    let pairs_ok = p.disc.iter().enumerate().all(|(k, &t)| {
+                        let both = 0b11u16 << (2 * k);
+                        t == 0 || (Self::PAIRS & (1 << k) != 0 && p.active & both == both)
+                    });
+                    // A reset time belongs to an active feedback loop.
+                    let edm_ok = (p.edm_reset[0] == 0 || p.options & SL_OPT_EDM1 != 0)
+                        && (p.edm_reset[1] == 0 || p.options & SL_OPT_EDM2 != 0);
+                    times_ok
+                        && pairs_ok
+                        && edm_ok
+                        && p.active & !Self::INPUTS == 0
+                        && p.negated & !Self::INPUTS == 0
+                        && p.active & Self::REQUIRED != 0
+                        && p.options & !Self::OPTIONS == 0
+                }
+
+                fn store_params(&mut self, p: &GuardParams) {
+                    let q = self.private_mut();
+                    // Narrowing is exact for valid parameters (all times <= SL_TIME_PARAM_MAX); an
+                    // invalid set is stored truncated and never runs (F_CFG_INVALID).
+                    let n = |t: u32| t as u16;
+                    q.awTime = [
+                        n(p.disc[0]),
+                        n(p.disc[1]),
+                        n(p.disc[2]),
+                        n(p.disc[3]),
+                        n(p.edm_reset[0]),
+                        n(p.edm_reset[1]),
+                        n(p.delay),
+                        0,
+                    ];
+                    q.stHeader.nActive = p.active as u8;
+                    q.stHeader.nNegated = p.negated as u8;
+                    q.stHeader.wOptions = p.options as u16;
+                }
+
+                fn latched_crc(&self) -> u16 {
+                    let p = self.private();
+                    let h = &p.stHeader;
+                    param_crc(Self::MAGIC, h.nActive, h.nNegated, h.wOptions, &p.awTime)
+                }
+
+                fn decode(&mut self) -> (GuardIn, bool) {
+                    let raw = self.raw();
+                    let h = &mut self.private_mut().stHeader;
+                    let packed = bools::pack(raw.inputs);
+                    let active = h.nActive;
+                    let logical = bools::logical(packed, active, h.nNegated);
+                    let restart = bools::edge(raw.restart, &mut h.nFlags, F_RESTART_PREV);
+                    let options = u32::from(h.wOptions);
+                    let edm = Edm {
+                        active: [options & SL_OPT_EDM1 != 0, options & SL_OPT_EDM2 != 0],
+                        is_true: [bools::is_true(raw.edm[0]), bools::is_true(raw.edm[1])],
+                        is_false: [bools::is_false(raw.edm[0]), bools::is_false(raw.edm[1])],
+                    };
+                    // Only bytes the block reads count as invalid: active inputs and active EDMs, and
+                    // Restart where a manual restart uses it.
+                    let invalid = packed.invalid & active != 0
+                        || (edm.active[0] && raw.edm[0] > 1)
+                        || (edm.active[1] && raw.edm[1] > 1)
+                        || (manual_restart::<Self>(h.wOptions) && raw.restart > 1);
+                    let inp = GuardIn {
+                        logical,
+                        request: Self::request(logical, active),
+                        test_req: !logical & active & Self::TEST_INPUTS,
+                        restart,
+                        edm,
+                    };
+                    (inp, invalid)
+                }
+
+                fn start(&mut self, _inp: &GuardIn, now: u32) {
+                    let h = &mut self.private_mut().stHeader;
+                    h.wAux = 0;
+                    h.nFlags &= !(F_EDM1_PENDING | F_EDM2_PENDING);
+                    h.tPhase = now;
+                    h.nState = if u32::from(h.wOptions) & SL_OPT_FUNCTION_TEST != 0 {
+                        SL_STATE_FUNCTEST
+                    } else {
+                        SL_STATE_SAFE
+                    };
+                }
+
+                fn step(&mut self, inp: &GuardIn, now: u32) -> i32 {
+                    let p = self.private_mut();
+                    let state = p.stHeader.nState;
+                    let options = u32::from(p.stHeader.wOptions);
+                    let manual = manual_restart::<Self>(p.stHeader.wOptions);
+                    let delay = u32::from(p.awTime[T_DELAY]);
+
+                    // Discrepancy monitoring runs in every running state.
+                    let monitored = p.awTime[..4]
+                        .iter()
+                        .enumerate()
+                        .fold(0u8, |m, (k, &t)| m | (u8::from(t != 0) << k));
+                    let mut running = (p.stHeader.wAux & 0xF) as u8;
+                    let disc = pair::monitor(
+                        inp.logical,
+                        monitored,
+                        &mut running,
+                        &mut p.atDiscStart,
+                        &p.awTime[..4],
                         now,
                     );
-                    h.nFlags = (h.nFlags & !(F_EDM1_PENDING | F_EDM2_PENDING))
-                        | (pending << EDM_PENDING_SHIFT);
-                }
+                    p.stHeader.wAux = (p.stHeader.wAux & !0xF) | u16::from(running);
+                    let mut err = disc_diag(disc, options & SL_OPT_SAFE_INPUTS_AFTER_DISC != 0);
 
-                // MON: a discrepancy error while MonDelOut is still on waits for the output delay.
-                let delayable = Self::ERROR_DELAY
-                    && delay != 0
-                    && err & (SL_DIAG_EDM1 | SL_DIAG_EDM2) == 0
-                    && matches!(
-                        state,
-                        SL_STATE_RUN | SL_STATE_DELAYOUT | SL_STATE_ERRORDELAY
-                    );
-                if err != 0 && !delayable {
-                    p.stHeader.enter_error(err);
-                    return SL_OK;
-                }
-                p.stHeader.wDiag |= err;
-
-                let mut status = SL_OK;
-                let next = match state {
-                    SL_STATE_RUN | SL_STATE_DELAYOUT if err != 0 => {
-                        if state == SL_STATE_RUN {
-                            p.stHeader.tPhase = now;
-                        }
-                        SL_STATE_ERRORDELAY
+                    // EDM with manual restart: while the outputs are safe and Restart is TRUE (and at
+                    // its falling edge in START), every active feedback must read TRUE (sample 3).
+                    let outputs_safe =
+                        matches!(state, SL_STATE_SAFE | SL_STATE_START | SL_STATE_FUNCTEST);
+                    if manual
+                        && outputs_safe
+                        && (inp.restart.level || (state == SL_STATE_START && inp.restart.falling))
+                    {
+                        err |= inp.edm.not_released();
                     }
-                    SL_STATE_ERRORDELAY => {
-                        if time::reached(now, p.stHeader.tPhase, delay) {
-                            p.stHeader.enter_error(0);
-                            SL_STATE_ERROR
-                        } else {
+                    // EL6910 EDM reset time: after switching on, each checked feedback must drop.
+                    if state == SL_STATE_RUN {
+                        let h = &mut p.stHeader;
+                        let mut pending = (h.nFlags >> EDM_PENDING_SHIFT) & 0b11;
+                        err |= inp.edm.reset_time_check(
+                            &mut pending,
+                            h.tPhase,
+                            [p.awTime[T_EDM1], p.awTime[T_EDM2]],
+                            now,
+                        );
+                        h.nFlags = (h.nFlags & !(F_EDM1_PENDING | F_EDM2_PENDING))
+                            | (pending << EDM_PENDING_SHIFT);
+                    }
+
+                    // MON: a discrepancy error while MonDelOut is still on waits for the output delay.
+                    let delayable = Self::ERROR_DELAY
+                        && delay != 0
+                        && err & (SL_DIAG_EDM1 | SL_DIAG_EDM2) == 0
+                        && matches!(
+                            state,
+                            SL_STATE_RUN | SL_STATE_DELAYOUT | SL_STATE_ERRORDELAY
+                        );
+                    if err != 0 && !delayable {
+                        p.stHeader.enter_error(err);
+                        return SL_OK;
+                    }
+                    p.stHeader.wDiag |= err;
+
+                    let mut status = SL_OK;
+                    let next = match state {
+                        SL_STATE_RUN | SL_STATE_DELAYOUT if err != 0 => {
+                            if state == SL_STATE_RUN {
+                                p.stHeader.tPhase = now;
+                            }
                             SL_STATE_ERRORDELAY
                         }
-                    }
-                    SL_STATE_FUNCTEST => {
-                        let h = &mut p.stHeader;
-                        h.wAux |= u16::from(inp.test_req) << 8;
-                        let tested = (h.wAux >> 8) as u8 & Self::TEST_INPUTS;
-                        if tested == h.nActive & Self::TEST_INPUTS {
-                            SL_STATE_SAFE
-                        } else {
-                            SL_STATE_FUNCTEST
+                        SL_STATE_ERRORDELAY => {
+                            if time::reached(now, p.stHeader.tPhase, delay) {
+                                p.stHeader.enter_error(0);
+                                SL_STATE_ERROR
+                            } else {
+                                SL_STATE_ERRORDELAY
+                            }
                         }
-                    }
-                    SL_STATE_SAFE | SL_STATE_START if manual => {
-                        match restart::step(state == SL_STATE_START, inp.restart, inp.request) {
-                            Restart::Wait => SL_STATE_SAFE,
-                            Restart::Start => SL_STATE_START,
-                            Restart::Enable => {
+                        SL_STATE_FUNCTEST => {
+                            let h = &mut p.stHeader;
+                            h.wAux |= u16::from(inp.test_req) << 8;
+                            let tested = (h.wAux >> 8) as u8 & Self::TEST_INPUTS;
+                            if tested == h.nActive & Self::TEST_INPUTS {
+                                SL_STATE_SAFE
+                            } else {
+                                SL_STATE_FUNCTEST
+                            }
+                        }
+                        SL_STATE_SAFE | SL_STATE_START if manual => {
+                            match restart::step(state == SL_STATE_START, inp.restart, inp.request) {
+                                Restart::Wait => SL_STATE_SAFE,
+                                Restart::Start => SL_STATE_START,
+                                Restart::Enable => {
+                                    let (s, st) = enable::<$t>(p, &inp.edm, now);
+                                    status = st;
+                                    s
+                                }
+                            }
+                        }
+                        SL_STATE_SAFE => {
+                            if !inp.request && inp.edm.all_released() {
                                 let (s, st) = enable::<$t>(p, &inp.edm, now);
                                 status = st;
                                 s
+                            } else {
+                                SL_STATE_SAFE
                             }
                         }
-                    }
-                    SL_STATE_SAFE => {
-                        if !inp.request && inp.edm.all_released() {
-                            let (s, st) = enable::<$t>(p, &inp.edm, now);
-                            status = st;
-                            s
-                        } else {
-                            SL_STATE_SAFE
+                        SL_STATE_RUN => {
+                            if !inp.request {
+                                SL_STATE_RUN
+                            } else if delay != 0 {
+                                p.stHeader.tPhase = now;
+                                SL_STATE_DELAYOUT
+                            } else {
+                                SL_STATE_SAFE
+                            }
                         }
-                    }
-                    SL_STATE_RUN => {
-                        if !inp.request {
-                            SL_STATE_RUN
-                        } else if delay != 0 {
-                            p.stHeader.tPhase = now;
-                            SL_STATE_DELAYOUT
-                        } else {
-                            SL_STATE_SAFE
+                        SL_STATE_DELAYOUT => {
+                            if time::reached(now, p.stHeader.tPhase, delay) {
+                                SL_STATE_SAFE
+                            } else {
+                                SL_STATE_DELAYOUT
+                            }
                         }
-                    }
-                    SL_STATE_DELAYOUT => {
-                        if time::reached(now, p.stHeader.tPhase, delay) {
-                            SL_STATE_SAFE
-                        } else {
-                            SL_STATE_DELAYOUT
+                        _ => {
+                            // A state value this block never takes (START without manual restart
+                            // included): the private state cannot be trusted.
+                            p.stHeader.enter_error(SL_DIAG_CORRUPT);
+                            status = SL_E_CORRUPT;
+                            SL_STATE_ERROR
                         }
-                    }
-                    _ => {
-                        // A state value this block never takes (START without manual restart
-                        // included): the private state cannot be trusted.
-                        p.stHeader.enter_error(SL_DIAG_CORRUPT);
-                        status = SL_E_CORRUPT;
-                        SL_STATE_ERROR
-                    }
-                };
-                p.stHeader.nState = next;
-                status
-            }
+                    };
+                    p.stHeader.nState = next;
+                    status
+                }
 
-            fn stop(&mut self) {
-                let h = &mut self.private_mut().stHeader;
-                // A pending discrepancy error stays an error; every other running state stops.
-                if h.nState == SL_STATE_ERRORDELAY {
-                    h.enter_error(0);
-                } else {
-                    h.nState = SL_STATE_STOP;
+                fn stop(&mut self) {
+                    let h = &mut self.private_mut().stHeader;
+                    // A pending discrepancy error stays an error; every other running state stops.
+                    if h.nState == SL_STATE_ERRORDELAY {
+                        h.enter_error(0);
+                    } else {
+                        h.nState = SL_STATE_STOP;
+                    }
+                }
+
+                fn error_remains(&mut self, inp: &GuardIn) -> bool {
+                    let h = &mut self.private_mut().stHeader;
+                    let failed = (h.wDiag & 0xF) as u8;
+                    let need_safe = (h.wDiag >> 8) as u8 & 0xF;
+                    // "Safe Inputs after Disc Error": both channels must have requested the safe
+                    // state together since the error.
+                    let mut latched =
+                        ((h.wAux >> 4) as u8 & 0xF) | (pair::both_safe(inp.logical) & need_safe);
+                    latched &= need_safe;
+                    h.wAux = (h.wAux & !0xF0) | (u16::from(latched) << 4);
+                    let disc_remains =
+                        failed & pair::differing(inp.logical) != 0 || need_safe & !latched != 0;
+                    let edm_remains = h.wDiag & inp.edm.not_released() != 0;
+                    disc_remains || edm_remains
+                }
+
+                fn write_outputs(&mut self) {
+                    let h = self.private().stHeader;
+                    let (error, out, del_out) = match h.nState {
+                        SL_STATE_RUN => (false, true, true),
+                        SL_STATE_DELAYOUT | SL_STATE_ERRORDELAY => (false, false, true),
+                        SL_STATE_ERROR => (true, false, false),
+                        _ => (false, false, false),
+                    };
+                    self.set_outputs(error, out, del_out, h.nState, h.wDiag);
                 }
             }
-
-            fn error_remains(&mut self, inp: &GuardIn) -> bool {
-                let h = &mut self.private_mut().stHeader;
-                let failed = (h.wDiag & 0xF) as u8;
-                let need_safe = (h.wDiag >> 8) as u8 & 0xF;
-                // "Safe Inputs after Disc Error": both channels must have requested the safe
-                // state together since the error.
-                let mut latched =
-                    ((h.wAux >> 4) as u8 & 0xF) | (pair::both_safe(inp.logical) & need_safe);
-                latched &= need_safe;
-                h.wAux = (h.wAux & !0xF0) | (u16::from(latched) << 4);
-                let disc_remains =
-                    failed & pair::differing(inp.logical) != 0 || need_safe & !latched != 0;
-                let edm_remains = h.wDiag & inp.edm.not_released() != 0;
-                disc_remains || edm_remains
-            }
-
-            fn write_outputs(&mut self) {
-                let h = self.private().stHeader;
-                let (error, out, del_out) = match h.nState {
-                    SL_STATE_RUN => (false, true, true),
-                    SL_STATE_DELAYOUT | SL_STATE_ERRORDELAY => (false, false, true),
-                    SL_STATE_ERROR => (true, false, false),
-                    _ => (false, false, false),
-                };
-                self.set_outputs(error, out, del_out, h.nState, h.wDiag);
-            }
-        }
+        };
     };
 }
-
-guard_block!(FB_ESTOP);
-guard_block!(FB_MON);
+pub(crate) use guard_block;

@@ -3,13 +3,7 @@
 //! block's function is satisfied, SAFE (3) otherwise (blocks without SAFE stay in RUN with
 //! FALSE outputs). No block errors of their own: ERROR (4) only comes from the envelope.
 
-use super::and::FB_AND;
-use super::decouple::FB_DECOUPLE;
-use super::or::FB_OR;
-use super::xor::FB_XOR;
-use crate::prim::envelope::Block;
-use crate::prim::header::{param_crc, SL_PRIVATE_HEADER};
-use crate::types::*;
+use crate::prim::header::SL_PRIVATE_HEADER;
 
 /// Private state of the combinational blocks (32 bytes). Never written by the user.
 #[repr(C)]
@@ -39,7 +33,7 @@ pub struct LogicIn {
 }
 
 /// What distinguishes AND, OR, XOR and DECOUPLE.
-pub trait LogicBlock {
+pub trait LogicBlock: crate::registry::Private<P = SL_LOGIC_PRIVATE> {
     /// Type tag stored in the private header.
     const TAG: u16;
     /// Bits of wInputActive that exist.
@@ -49,8 +43,6 @@ pub trait LogicBlock {
     /// At least this many inputs must be active.
     const MIN_ACTIVE: u32;
 
-    fn private(&self) -> &SL_LOGIC_PRIVATE;
-    fn private_mut(&mut self) -> &mut SL_LOGIC_PRIVATE;
     fn params(&self) -> LogicParams;
     /// Evaluates the input bytes with the latched masks; the flag tells whether an active
     /// input byte was an invalid BOOL.
@@ -59,89 +51,96 @@ pub trait LogicBlock {
     fn set_outputs(&mut self, outputs: u8, state: u8, diag: u16);
 }
 
-/// The envelope's view of every block of this family.
+/// The envelope's view of a block of this family; invoked in the member's own file.
 macro_rules! logic_block {
     ($t:ty) => {
-        impl Block for $t {
-            const MAGIC: u16 = <$t as LogicBlock>::TAG;
-            type Params = LogicParams;
-            type In = LogicIn;
+        const _: () = {
+            use $crate::blocks::logic::*;
+            use $crate::prim::envelope::Block;
+            #[allow(unused_imports)]
+            use $crate::prim::{
+                bools, bools::Edge, edm, edm::Edm, header::*, pair, restart, restart::Restart, time,
+            };
+            use $crate::registry::Private;
+            use $crate::types::*;
 
-            #[inline(always)]
-            fn live_params(&self) -> LogicParams {
-                self.params()
-            }
-            #[inline(always)]
-            fn latched_params(&self) -> LogicParams {
-                let h = &self.private().stHeader;
-                LogicParams {
-                    active: u16::from(h.nActive),
-                    negated: u16::from(h.nNegated),
+            impl Block for $t {
+                const MAGIC: u16 = <$t as LogicBlock>::TAG;
+                type Params = LogicParams;
+                type In = LogicIn;
+
+                #[inline(always)]
+                fn live_params(&self) -> LogicParams {
+                    self.params()
+                }
+                #[inline(always)]
+                fn latched_params(&self) -> LogicParams {
+                    let h = &self.private().stHeader;
+                    LogicParams {
+                        active: u16::from(h.nActive),
+                        negated: u16::from(h.nNegated),
+                    }
+                }
+                #[inline(always)]
+                fn params_valid(p: &LogicParams) -> bool {
+                    p.active & !Self::INPUTS == 0
+                        && p.negated & !Self::NEGATABLE == 0
+                        && p.active.count_ones() >= Self::MIN_ACTIVE
+                }
+                #[inline(always)]
+                fn store_params(&mut self, p: &LogicParams) {
+                    let h = &mut self.private_mut().stHeader;
+                    h.nActive = p.active as u8;
+                    h.nNegated = p.negated as u8;
+                }
+                #[inline(always)]
+                fn latched_crc(&self) -> u16 {
+                    let h = &self.private().stHeader;
+                    param_crc(Self::MAGIC, h.nActive, h.nNegated, h.wOptions, &[])
+                }
+                #[inline(always)]
+                fn decode(&mut self) -> (LogicIn, bool) {
+                    let h = &self.private().stHeader;
+                    self.evaluate(h.nActive, h.nNegated)
+                }
+                #[inline(always)]
+                fn start(&mut self, inp: &LogicIn, now: u32) {
+                    self.step(inp, now);
+                }
+                #[inline(always)]
+                fn step(&mut self, inp: &LogicIn, _now: u32) -> i32 {
+                    // An output switching on is where the latched parameters are verified (C3).
+                    let was_on = if self.private().stHeader.nState == SL_STATE_RUN {
+                        self.private().stHeader.wAux as u8
+                    } else {
+                        0
+                    };
+                    let rising = inp.state == SL_STATE_RUN && inp.outputs & !was_on != 0;
+                    if rising && self.latched_crc() != self.private().stHeader.wParamCrc {
+                        self.private_mut().stHeader.enter_error(SL_DIAG_CORRUPT);
+                        return SL_E_CORRUPT;
+                    }
+                    let h = &mut self.private_mut().stHeader;
+                    h.nState = inp.state;
+                    h.wAux = u16::from(inp.outputs);
+                    SL_OK
+                }
+                #[inline(always)]
+                fn error_remains(&mut self, _inp: &LogicIn) -> bool {
+                    false
+                }
+                #[inline(always)]
+                fn write_outputs(&mut self) {
+                    let h = self.private().stHeader;
+                    let outputs = if h.nState == SL_STATE_RUN {
+                        h.wAux as u8
+                    } else {
+                        0
+                    };
+                    self.set_outputs(outputs, h.nState, h.wDiag);
                 }
             }
-            #[inline(always)]
-            fn params_valid(p: &LogicParams) -> bool {
-                p.active & !Self::INPUTS == 0
-                    && p.negated & !Self::NEGATABLE == 0
-                    && p.active.count_ones() >= Self::MIN_ACTIVE
-            }
-            #[inline(always)]
-            fn store_params(&mut self, p: &LogicParams) {
-                let h = &mut self.private_mut().stHeader;
-                h.nActive = p.active as u8;
-                h.nNegated = p.negated as u8;
-            }
-            #[inline(always)]
-            fn latched_crc(&self) -> u16 {
-                let h = &self.private().stHeader;
-                param_crc(Self::MAGIC, h.nActive, h.nNegated, h.wOptions, &[])
-            }
-            #[inline(always)]
-            fn decode(&mut self) -> (LogicIn, bool) {
-                let h = &self.private().stHeader;
-                self.evaluate(h.nActive, h.nNegated)
-            }
-            #[inline(always)]
-            fn start(&mut self, inp: &LogicIn, now: u32) {
-                self.step(inp, now);
-            }
-            #[inline(always)]
-            fn step(&mut self, inp: &LogicIn, _now: u32) -> i32 {
-                // An output switching on is where the latched parameters are verified (C3).
-                let was_on = if self.private().stHeader.nState == SL_STATE_RUN {
-                    self.private().stHeader.wAux as u8
-                } else {
-                    0
-                };
-                let rising = inp.state == SL_STATE_RUN && inp.outputs & !was_on != 0;
-                if rising && self.latched_crc() != self.private().stHeader.wParamCrc {
-                    self.private_mut().stHeader.enter_error(SL_DIAG_CORRUPT);
-                    return SL_E_CORRUPT;
-                }
-                let h = &mut self.private_mut().stHeader;
-                h.nState = inp.state;
-                h.wAux = u16::from(inp.outputs);
-                SL_OK
-            }
-            #[inline(always)]
-            fn error_remains(&mut self, _inp: &LogicIn) -> bool {
-                false
-            }
-            #[inline(always)]
-            fn write_outputs(&mut self) {
-                let h = self.private().stHeader;
-                let outputs = if h.nState == SL_STATE_RUN {
-                    h.wAux as u8
-                } else {
-                    0
-                };
-                self.set_outputs(outputs, h.nState, h.wDiag);
-            }
-        }
+        };
     };
 }
-
-logic_block!(FB_AND);
-logic_block!(FB_OR);
-logic_block!(FB_XOR);
-logic_block!(FB_DECOUPLE);
+pub(crate) use logic_block;

@@ -158,6 +158,7 @@ pub const INFO: BlockInfo = BlockInfo {
 
 crate::impl_member!([] FB_MON {
     info: INFO,
+    private: SL_GUARD_PRIVATE,
     input: [bRestart, bEDM1, bEDM2, bMonIn1, bMonIn2, bMonIn3, bMonIn4, bSecure1, bSecure2],
     param: [tDiscTime12, tDiscTime34, tDiscTimeSecure12, tEDM1ResetTime, tEDM2ResetTime, tMonDelOutDelay, wInputActive, wInputNegated, dwOptions],
     output: [bError, bMonOut, bMonDelOut],
@@ -177,13 +178,6 @@ impl GuardBlock for FB_MON {
     const TEST_INPUTS: u8 = MON_INPUTS;
     const ERROR_DELAY: bool = true;
     const ALWAYS_MANUAL: bool = false;
-
-    fn private(&self) -> &SL_GUARD_PRIVATE {
-        &self.stPrivate
-    }
-    fn private_mut(&mut self) -> &mut SL_GUARD_PRIVATE {
-        &mut self.stPrivate
-    }
 
     fn params(&self) -> GuardParams {
         GuardParams {
@@ -236,3 +230,5 @@ impl GuardBlock for FB_MON {
         self.nDiag = diag;
     }
 }
+
+super::guard::guard_block!(FB_MON);

@@ -203,6 +203,7 @@ pub const INFO: BlockInfo = BlockInfo {
 
 crate::impl_member!([] FB_MUTING {
     info: INFO,
+    private: SL_MUTING_PRIVATE,
     input: [bMutingEnable, bEDM1, bEDM2, bMutingIn1, bMutingIn2, bOSSDIn1, bOSSDIn2, bMutingIn3, bMutingIn4],
     param: [tDiscTime12, tDiscTimeOSSD, tDiscTime34, tFilterTime, tMaxMutingTime, tMuteDelOutDelay, wInputActive, wInputNegated, dwOptions],
     output: [bError, bMutingActive, bMuteOut, bMuteDelOut],

@@ -139,6 +139,7 @@ pub const INFO: BlockInfo = BlockInfo {
 
 crate::impl_member!([] FB_OPMODE {
     info: INFO,
+    private: SL_OPMODE_PRIVATE,
     input: [bRestart, bOpIn1, bOpIn2, bOpIn3, bOpIn4, bOpIn5, bOpIn6, bOpIn7, bOpIn8],
     param: [tDiscTime, wInputActive, dwOptions],
     output: [bError, bOpOut1, bOpOut2, bOpOut3, bOpOut4, bOpOut5, bOpOut6, bOpOut7, bOpOut8],

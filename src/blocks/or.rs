@@ -84,6 +84,7 @@ pub const INFO: BlockInfo = BlockInfo {
 
 crate::impl_member!([] FB_OR {
     info: INFO,
+    private: SL_LOGIC_PRIVATE,
     input: [bOrIn1, bOrIn2, bOrIn3, bOrIn4, bOrIn5, bOrIn6, bOrIn7, bOrIn8],
     param: [wInputActive, wInputNegated],
     output: [bOrOut],
@@ -111,12 +112,6 @@ impl LogicBlock for FB_OR {
     const NEGATABLE: u16 = 0xFF;
     const MIN_ACTIVE: u32 = 1;
 
-    fn private(&self) -> &SL_LOGIC_PRIVATE {
-        &self.stPrivate
-    }
-    fn private_mut(&mut self) -> &mut SL_LOGIC_PRIVATE {
-        &mut self.stPrivate
-    }
     fn params(&self) -> LogicParams {
         LogicParams {
             active: self.wInputActive,
@@ -142,3 +137,5 @@ impl LogicBlock for FB_OR {
         self.nDiag = diag;
     }
 }
+
+super::logic::logic_block!(FB_OR);

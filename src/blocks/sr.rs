@@ -4,7 +4,7 @@
 //! States STOP (2), SAFE (3), SET (9); diag always 0; no error output.
 //! The state machine is shared with FB RS (`flipflop`).
 
-use super::flipflop::{FlipFlopBlock, FlipFlopParams, SL_FLIPFLOP_PRIVATE};
+use super::flipflop::SL_FLIPFLOP_PRIVATE;
 use super::{BlockInfo, ERROR, RESET, SAFE, STOP};
 use crate::types::*;
 use core::mem::{offset_of, size_of};
@@ -77,34 +77,15 @@ pub const INFO: BlockInfo = BlockInfo {
 
 crate::impl_member!([] FB_SR {
     info: INFO,
+    private: SL_FLIPFLOP_PRIVATE,
     input: [bReset, bSet],
     param: [wInputActive, wInputNegated],
     output: [bSrOut],
     info_fields: [],
 });
 
-impl FlipFlopBlock for FB_SR {
-    const TAG: u16 = 0x5E5A;
-    const SET_DOMINANT: bool = true;
-
-    fn private(&self) -> &SL_FLIPFLOP_PRIVATE {
-        &self.stPrivate
-    }
-    fn private_mut(&mut self) -> &mut SL_FLIPFLOP_PRIVATE {
-        &mut self.stPrivate
-    }
-    fn params(&self) -> FlipFlopParams {
-        FlipFlopParams {
-            active: self.wInputActive,
-            negated: self.wInputNegated,
-        }
-    }
-    fn raw(&self) -> [u8; 2] {
-        [self.bReset, self.bSet]
-    }
-    fn set_outputs(&mut self, out: bool, state: u8, diag: u16) {
-        self.bSrOut = u8::from(out);
-        self.nState = state;
-        self.nDiag = diag;
-    }
-}
+super::flipflop::flipflop_block!(FB_SR {
+    tag: 0x5E5A,
+    set_dominant: true,
+    output: bSrOut,
+});

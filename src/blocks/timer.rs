@@ -25,13 +25,7 @@
 //! the host persists with `sl_ton2_get_elapsed` and hands back with
 //! `sl_ton2_restore_elapsed` after power-up.
 
-use super::tof::FB_TOF;
-use super::ton::FB_TON;
-use super::ton2::FB_TON2;
-use crate::prim::bools;
-use crate::prim::envelope::Block;
 use crate::prim::header::{param_crc, SL_PRIVATE_HEADER};
-use crate::prim::time;
 use crate::types::*;
 
 /// Private state of FB_TON, FB_TON2 and FB_TOF (48 bytes). Never written by the user.
@@ -78,7 +72,7 @@ impl Default for SL_TIMER_PRIVATE {
 impl SL_TIMER_PRIVATE {
     /// Starts the timer as if it had started at `start`.
     #[inline]
-    fn set_start(&mut self, start: u32) {
+    pub(crate) fn set_start(&mut self, start: u32) {
         self.stHeader.tPhase = start;
         self.tPhaseCheck = !start;
     }
@@ -161,7 +155,7 @@ pub struct TimerIn {
 }
 
 /// What distinguishes TON, TON2 and TOF.
-pub trait TimerBlock {
+pub trait TimerBlock: crate::registry::Private<P = SL_TIMER_PRIVATE> {
     /// Type tag stored in the private header.
     const TAG: u16;
     /// TOF: the timer runs while the input is FALSE and the output is on until it expires.
@@ -173,8 +167,6 @@ pub trait TimerBlock {
     /// The state value of the Timing phase (DELAYIN 9 / DELAYOUT 8).
     const TIMING_STATE: u8;
 
-    fn private(&self) -> &SL_TIMER_PRIVATE;
-    fn private_mut(&mut self) -> &mut SL_TIMER_PRIVATE;
     fn params(&self) -> TimerParams;
     /// The raw timer input byte and the raw Enable byte (0 for blocks without Enable).
     fn raw(&self) -> (u8, u8);
@@ -184,14 +176,14 @@ pub trait TimerBlock {
 
 /// The three phases of the shared timer (module comment).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-enum Phase {
+pub(crate) enum Phase {
     Idle,
     Timing,
     Expired,
 }
 
 /// The state value of a phase.
-const fn state_of<T: TimerBlock>(p: Phase) -> u8 {
+pub(crate) const fn state_of<T: TimerBlock>(p: Phase) -> u8 {
     match (p, T::OFF_DELAY) {
         (Phase::Idle, false) | (Phase::Expired, true) => SL_STATE_SAFE,
         (Phase::Idle, true) | (Phase::Expired, false) => SL_STATE_RUN,
@@ -200,19 +192,19 @@ const fn state_of<T: TimerBlock>(p: Phase) -> u8 {
 }
 
 /// The phase of a state value; `None` outside the running states.
-fn phase_of<T: TimerBlock>(state: u8) -> Option<Phase> {
+pub(crate) fn phase_of<T: TimerBlock>(state: u8) -> Option<Phase> {
     [Phase::Idle, Phase::Timing, Phase::Expired]
         .into_iter()
         .find(|&p| state_of::<T>(p) == state)
 }
 
 /// The output in a phase: TON on when expired, TOF on until expired.
-const fn output<T: TimerBlock>(p: Phase) -> bool {
+pub(crate) const fn output<T: TimerBlock>(p: Phase) -> bool {
     matches!(p, Phase::Expired) != T::OFF_DELAY
 }
 
 /// CRC of a timer's latched parameters (header masks, delay, timebase).
-fn timer_crc(magic: u16, p: &SL_TIMER_PRIVATE) -> u16 {
+pub(crate) fn timer_crc(magic: u16, p: &SL_TIMER_PRIVATE) -> u16 {
     let h = &p.stHeader;
     let d = p.dwDelay;
     param_crc(
@@ -224,9 +216,63 @@ fn timer_crc(magic: u16, p: &SL_TIMER_PRIVATE) -> u16 {
     )
 }
 
-/// The envelope's view of every block of this family.
+/// The envelope's view of a block of this family; invoked in the member's own file.
 macro_rules! timer_block {
+    // A member from its description: the TimerBlock impl from its constants and field
+    // names (TON, TOF, TON2 differ in nothing else), then the envelope's Block.
+    ($t:ty {
+        tag: $tag:expr,
+        off_delay: $off:expr,
+        persists: $persists:expr,
+        timing_state: $timing:expr,
+        input: $in:ident,
+        output: $out:ident
+        $(, enable: $en:ident)?
+        $(, options: $opt_field:ident = $opts:expr)?
+        $(,)?
+    }) => {
+        impl $crate::blocks::timer::TimerBlock for $t {
+            const TAG: u16 = $tag;
+            const OFF_DELAY: bool = $off;
+            const OPTIONS: u32 = 0 $(| $opts)?;
+            const PERSISTS: bool = $persists;
+            const TIMING_STATE: u8 = $timing;
+
+            fn params(&self) -> $crate::blocks::timer::TimerParams {
+                #[allow(unused_variables)]
+                let options = 0;
+                $(let options = self.$opt_field;)?
+                $crate::blocks::timer::TimerParams {
+                    delay: self.tDelay,
+                    time_base: self.nTimeBase,
+                    active: self.wInputActive,
+                    negated: self.wInputNegated,
+                    options,
+                }
+            }
+            fn raw(&self) -> (u8, u8) {
+                #[allow(unused_variables)]
+                let enable = 0;
+                $(let enable = self.$en;)?
+                (self.$in, enable)
+            }
+            fn set_outputs(&mut self, out: bool, state: u8, diag: u16) {
+                self.$out = u8::from(out);
+                self.nState = state;
+                self.nDiag = diag;
+            }
+        }
+        $crate::blocks::timer::timer_block!($t);
+    };
     ($t:ty) => {
+        const _: () = {
+            use $crate::blocks::timer::*;
+            #[allow(unused_imports)]
+            use $crate::prim::{bools, bools::Edge, edm, edm::Edm, header::*, pair, restart, restart::Restart, time};
+            use $crate::prim::envelope::Block;
+            use $crate::registry::Private;
+            use $crate::types::*;
+
         impl Block for $t {
             const MAGIC: u16 = <$t as TimerBlock>::TAG;
             type Params = TimerParams;
@@ -359,12 +405,10 @@ macro_rules! timer_block {
                 self.set_outputs(out, h.nState, h.wDiag);
             }
         }
+        };
     };
 }
-
-timer_block!(FB_TON);
-timer_block!(FB_TON2);
-timer_block!(FB_TOF);
+pub(crate) use timer_block;
 
 #[cfg(test)]
 mod tests {

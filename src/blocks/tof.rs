@@ -6,7 +6,7 @@
 //! States RUN (1), STOP (2), SAFE (3), DELAYOUT (8); the manual's diag value is always 0.
 //! The state machine is the shared timer (`timer`, docs/semantics.md T1–T5, T7–T9, T16).
 
-use super::timer::{TimerBlock, TimerParams, SL_TIMER_PRIVATE};
+use super::timer::SL_TIMER_PRIVATE;
 use super::{BlockInfo, DELAYOUT, ERROR, RESET, RUN, SAFE, STOP};
 use crate::types::*;
 use core::mem::{offset_of, size_of};
@@ -88,40 +88,18 @@ pub const INFO: BlockInfo = BlockInfo {
 
 crate::impl_member!([] FB_TOF {
     info: INFO,
+    private: SL_TIMER_PRIVATE,
     input: [bTofIn1],
     param: [tDelay, nTimeBase, wInputActive, wInputNegated],
     output: [bTofOut],
     info_fields: [],
 });
 
-impl TimerBlock for FB_TOF {
-    const TAG: u16 = 0x70F5;
-    const OFF_DELAY: bool = true;
-    const OPTIONS: u32 = 0;
-    const PERSISTS: bool = false;
-    const TIMING_STATE: u8 = SL_STATE_DELAYOUT;
-
-    fn private(&self) -> &SL_TIMER_PRIVATE {
-        &self.stPrivate
-    }
-    fn private_mut(&mut self) -> &mut SL_TIMER_PRIVATE {
-        &mut self.stPrivate
-    }
-    fn params(&self) -> TimerParams {
-        TimerParams {
-            delay: self.tDelay,
-            time_base: self.nTimeBase,
-            active: self.wInputActive,
-            negated: self.wInputNegated,
-            options: 0,
-        }
-    }
-    fn raw(&self) -> (u8, u8) {
-        (self.bTofIn1, 0)
-    }
-    fn set_outputs(&mut self, out: bool, state: u8, diag: u16) {
-        self.bTofOut = u8::from(out);
-        self.nState = state;
-        self.nDiag = diag;
-    }
-}
+super::timer::timer_block!(FB_TOF {
+    tag: 0x70F5,
+    off_delay: true,
+    persists: false,
+    timing_state: SL_STATE_DELAYOUT,
+    input: bTofIn1,
+    output: bTofOut,
+});

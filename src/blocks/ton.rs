@@ -5,7 +5,7 @@
 //! (9); the manual's diag value is always 0. The state machine is the shared timer
 //! (`timer`, docs/semantics.md T1–T6, T8, T9, T16).
 
-use super::timer::{TimerBlock, TimerParams, SL_TIMER_PRIVATE};
+use super::timer::SL_TIMER_PRIVATE;
 use super::{BlockInfo, ERROR, RESET, RUN, SAFE, STOP};
 use crate::types::*;
 use core::mem::{offset_of, size_of};
@@ -94,40 +94,18 @@ pub const INFO: BlockInfo = BlockInfo {
 
 crate::impl_member!([] FB_TON {
     info: INFO,
+    private: SL_TIMER_PRIVATE,
     input: [bTonIn1],
     param: [tDelay, nTimeBase, wInputActive, wInputNegated],
     output: [bTonOut],
     info_fields: [],
 });
 
-impl TimerBlock for FB_TON {
-    const TAG: u16 = 0x7013;
-    const OFF_DELAY: bool = false;
-    const OPTIONS: u32 = 0;
-    const PERSISTS: bool = false;
-    const TIMING_STATE: u8 = SL_STATE_TON_DELAYIN;
-
-    fn private(&self) -> &SL_TIMER_PRIVATE {
-        &self.stPrivate
-    }
-    fn private_mut(&mut self) -> &mut SL_TIMER_PRIVATE {
-        &mut self.stPrivate
-    }
-    fn params(&self) -> TimerParams {
-        TimerParams {
-            delay: self.tDelay,
-            time_base: self.nTimeBase,
-            active: self.wInputActive,
-            negated: self.wInputNegated,
-            options: 0,
-        }
-    }
-    fn raw(&self) -> (u8, u8) {
-        (self.bTonIn1, 0)
-    }
-    fn set_outputs(&mut self, out: bool, state: u8, diag: u16) {
-        self.bTonOut = u8::from(out);
-        self.nState = state;
-        self.nDiag = diag;
-    }
-}
+super::timer::timer_block!(FB_TON {
+    tag: 0x7013,
+    off_delay: false,
+    persists: false,
+    timing_state: SL_STATE_TON_DELAYIN,
+    input: bTonIn1,
+    output: bTonOut,
+});

@@ -10,7 +10,7 @@
 //! diag bit 12 and SL_E_RESTORE. States RUN (1), STOP (2), SAFE (3), DELAYIN (9).
 //! docs/semantics.md T10–T17.
 
-use super::timer::{TimerBlock, TimerParams, SL_TIMER_PRIVATE};
+use super::timer::SL_TIMER_PRIVATE;
 use super::{BlockInfo, ERROR, RESET, RUN, SAFE, STOP};
 use crate::prim::envelope::{self, Block, Instance};
 use crate::prim::header::F_CFG_INVALID;
@@ -113,43 +113,12 @@ pub const INFO: BlockInfo = BlockInfo {
 
 crate::impl_member!([] FB_TON2 {
     info: INFO,
+    private: SL_TIMER_PRIVATE,
     input: [bTonIn1, bEnable],
     param: [tDelay, nTimeBase, wInputActive, wInputNegated, dwOptions],
     output: [bTonOut],
     info_fields: [],
 });
-
-impl TimerBlock for FB_TON2 {
-    const TAG: u16 = 0x7014;
-    const OFF_DELAY: bool = false;
-    const OPTIONS: u32 = SL_OPT_TON2_REMAINING_TIME;
-    const PERSISTS: bool = true;
-    const TIMING_STATE: u8 = SL_STATE_TON2_DELAYIN;
-
-    fn private(&self) -> &SL_TIMER_PRIVATE {
-        &self.stPrivate
-    }
-    fn private_mut(&mut self) -> &mut SL_TIMER_PRIVATE {
-        &mut self.stPrivate
-    }
-    fn params(&self) -> TimerParams {
-        TimerParams {
-            delay: self.tDelay,
-            time_base: self.nTimeBase,
-            active: self.wInputActive,
-            negated: self.wInputNegated,
-            options: self.dwOptions,
-        }
-    }
-    fn raw(&self) -> (u8, u8) {
-        (self.bTonIn1, self.bEnable)
-    }
-    fn set_outputs(&mut self, out: bool, state: u8, diag: u16) {
-        self.bTonOut = u8::from(out);
-        self.nState = state;
-        self.nDiag = diag;
-    }
-}
 
 /// `sl_ton2_get_elapsed`: the stored elapsed time in ms, to be persisted by the host
 /// (docs/semantics.md T11, T15). Any state; 0 for a never-initialised instance;
@@ -207,3 +176,14 @@ pub fn restore_elapsed(fb: &mut FB_TON2, elapsed_ms: u32) -> i32 {
     p.set_elapsed(elapsed_ms);
     SL_OK
 }
+
+super::timer::timer_block!(FB_TON2 {
+    tag: 0x7014,
+    off_delay: false,
+    persists: true,
+    timing_state: SL_STATE_TON2_DELAYIN,
+    input: bTonIn1,
+    output: bTonOut,
+    enable: bEnable,
+    options: dwOptions = SL_OPT_TON2_REMAINING_TIME,
+});

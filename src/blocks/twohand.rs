@@ -157,6 +157,7 @@ pub const INFO: BlockInfo = BlockInfo {
 
 crate::impl_member!([] FB_TWOHAND {
     info: INFO,
+    private: SL_TWOHAND_PRIVATE,
     input: [bTwoHand1, bTwoHand2, bTwoHand3, bTwoHand4],
     param: [tDiscTime12, tDiscTime34, tDiscTimePairs, wInputActive, wInputNegated, dwOptions],
     output: [bError, bTwoHandOut],

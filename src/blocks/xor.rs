@@ -116,6 +116,7 @@ pub const INFO: BlockInfo = BlockInfo {
 
 crate::impl_member!([] FB_XOR {
     info: INFO,
+    private: SL_LOGIC_PRIVATE,
     input: [bXor1In1, bXor2In1, bXor1In2, bXor2In2, bXor1In3, bXor2In3, bXor1In4, bXor2In4, bXor1In5, bXor2In5, bXor1In6, bXor2In6, bXor1In7, bXor2In7, bXor1In8, bXor2In8],
     param: [wInputActive],
     output: [bXorOut1, bXorOut2, bXorOut3, bXorOut4, bXorOut5, bXorOut6, bXorOut7, bXorOut8],
@@ -158,12 +159,6 @@ impl LogicBlock for FB_XOR {
     const NEGATABLE: u16 = 0;
     const MIN_ACTIVE: u32 = 1;
 
-    fn private(&self) -> &SL_LOGIC_PRIVATE {
-        &self.stPrivate
-    }
-    fn private_mut(&mut self) -> &mut SL_LOGIC_PRIVATE {
-        &mut self.stPrivate
-    }
     fn params(&self) -> LogicParams {
         LogicParams {
             active: self.wInputActive,
@@ -200,3 +195,5 @@ impl LogicBlock for FB_XOR {
         self.nDiag = diag;
     }
 }
+
+super::logic::logic_block!(FB_XOR);
