@@ -357,6 +357,27 @@ fn main() {
         |f| f.nState,
     ));
 
+    // The arithmetic blocks, one variant per width and operation (no target in the issue:
+    // reported against the logic target).
+    macro_rules! arith_row {
+        ($($name:literal, $ty:ty, $tag:expr, $cycle:ident, $a:expr, $b:expr;)*) => {$(
+            let mut fb = <$ty>::default();
+            fb.wInputActive = safelogic::blocks::arith::ARITH_ACTIVE;
+            (fb.nAnalogIn1, fb.nAnalogIn2, fb.bRun) = ($a, $b, 1);
+            fb.init();
+            let private = size_of_val(&fb.stPrivate);
+            rows.push(measure(($name, $tag, logic), batches, fb, private, $cycle, |f| f.nState));
+        )*};
+    }
+    use safelogic::blocks::arith::*;
+    arith_row! {
+        "ADD_INT", FB_ADD_INT, SL_TYPE_ADD_INT, sl_add_int_cycle, 1200, -34;
+        "SUB_UDINT", FB_SUB_UDINT, SL_TYPE_SUB_UDINT, sl_sub_udint_cycle, 70_000, 3;
+        "MUL_DINT", FB_MUL_DINT, SL_TYPE_MUL_DINT, sl_mul_dint_cycle, 4_000, -300;
+        "DIV_INT", FB_DIV_INT, SL_TYPE_DIV_INT, sl_div_int_cycle, -7_001, 3;
+        "DIV_UDINT", FB_DIV_UDINT, SL_TYPE_DIV_UDINT, sl_div_udint_cycle, 4_000_000_000, 7;
+    }
+
     let cpu = std::fs::read_to_string("/proc/cpuinfo")
         .ok()
         .and_then(|s| {

@@ -16,6 +16,11 @@
 #include <stddef.h>
 
 /*
+ Block type tag of FB_AND.
+ */
+#define SL_TYPE_AND 3
+
+/*
  Type tags of the arithmetic blocks (ABI-2 §10.6: sequential from 16).
  */
 #define SL_TYPE_ADD_INT 16
@@ -135,6 +140,303 @@
  both required (ABI-2 §10.5).
  */
 #define ARITH_ACTIVE 768
+
+/*
+ Block type tag of FB_DECOUPLE.
+ */
+#define SL_TYPE_DECOUPLE 6
+
+/*
+ Block type tag of FB_EDM.
+ */
+#define SL_TYPE_EDM 10
+
+/*
+ FB_EDM state MONOFF (manual §4.9.2: 14): Mon1 is FALSE, switch-off monitoring.
+ */
+#define SL_STATE_EDM_MONOFF 14
+
+/*
+ FB_EDM state MONON (manual §4.9.2: 15): Mon1 is TRUE, switch-on monitoring.
+ */
+#define SL_STATE_EDM_MONON 15
+
+/*
+ FB_EDM diag bit 0 (manual §4.9.2): switch-off timer elapsed.
+ */
+#define SL_DIAG_EDM_SWITCH_OFF (1 << 0)
+
+/*
+ FB_EDM diag bit 1 (manual §4.9.2): switch-on timer elapsed.
+ */
+#define SL_DIAG_EDM_SWITCH_ON (1 << 1)
+
+/*
+ Largest tSwitchOnTime / tSwitchOffTime of FB_EDM in ms (manual §4.9.1: "maximum 10000 ms").
+ */
+#define SL_EDM_TIME_MAX 10000
+
+/*
+ Block type tag of FB_ESTOP (`SL_MEMBER.nType`, `sl_diag_text`).
+ */
+#define SL_TYPE_ESTOP 1
+
+/*
+ FB_SR state SET (manual §4.11.2: 9): the output SrOut is TRUE.
+ */
+#define SL_STATE_SR_SET 9
+
+/*
+ FB_RS state SET (manual §4.10.2: 9): the output RsOut is TRUE.
+ */
+#define SL_STATE_RS_SET 9
+
+/*
+ Block type tag of FB_MON.
+ */
+#define SL_TYPE_MON 2
+
+/*
+ FB_MUTING "Sequential Inputs": the four muting inputs are single-channel sensors checked
+ one after the other (clear: two two-channel groups MutingIn1/2 and MutingIn3/4, parallel).
+ */
+#define SL_OPT_MUTING_SEQUENTIAL (1 << 8)
+
+/*
+ FB_MUTING "Backwards Mode" (EL6910): a sequence may also run backwards, starting at MutingIn4.
+ */
+#define SL_OPT_MUTING_BACKWARDS (1 << 9)
+
+/*
+ FB_MUTING "OSSD Check Optional" (EL6910): the protective field is not part of the sequence
+ check; it may be interrupted at any step of a running sequence.
+ */
+#define SL_OPT_MUTING_OSSD_CHECK_OPTIONAL (1 << 10)
+
+/*
+ Diag bit 6 (FB_MUTING): the muting sequence was violated.
+ */
+#define SL_DIAG_MUTING_SEQUENCE (1 << 6)
+
+/*
+ Diag bit 7 (FB_MUTING): the maximum muting time was exceeded.
+ */
+#define SL_DIAG_MUTING_MAX_TIME (1 << 7)
+
+/*
+ FB_MUTING state MUTING1 (9): first step of the muting sequence (docs/semantics.md M1).
+ */
+#define SL_STATE_MUTING_MUTING1 9
+
+/*
+ FB_MUTING state MUTING2 (10).
+ */
+#define SL_STATE_MUTING_MUTING2 10
+
+/*
+ FB_MUTING state MUTING3 (11).
+ */
+#define SL_STATE_MUTING_MUTING3 11
+
+/*
+ FB_MUTING state MUTING4 (12).
+ */
+#define SL_STATE_MUTING_MUTING4 12
+
+/*
+ FB_MUTING state MUTING5 (13).
+ */
+#define SL_STATE_MUTING_MUTING5 13
+
+/*
+ FB_MUTING state MUTING6 (14).
+ */
+#define SL_STATE_MUTING_MUTING6 14
+
+/*
+ FB_MUTING state MUTING7 (15).
+ */
+#define SL_STATE_MUTING_MUTING7 15
+
+/*
+ FB_MUTING state MUTING8 (16).
+ */
+#define SL_STATE_MUTING_MUTING8 16
+
+/*
+ FB_MUTING state MUTING9 (17): last step of the muting sequence.
+ */
+#define SL_STATE_MUTING_MUTING9 17
+
+/*
+ Block type tag of FB_MUTING.
+ */
+#define SL_TYPE_MUTING 9
+
+/*
+ Largest `tFilterTime` of FB_MUTING in ms (manual §4.8.1: "up to 500 ms").
+ */
+#define SL_MUTING_FILTER_TIME_MAX 500
+
+/*
+ Largest `tMaxMutingTime` of FB_MUTING in ms (manual §4.8.1: "a maximum of 10 minutes").
+ */
+#define SL_MUTING_MAX_MUTING_TIME_MAX 600000
+
+/*
+ Largest `tMuteDelOutDelay` of FB_MUTING in ms (manual §4.8.1: "delayed by up to 30 seconds").
+ */
+#define SL_MUTING_DELOUT_DELAY_MAX 30000
+
+/*
+ FB_OPMODE diag bit 0: discrepancy monitoring error (no mode or more than one mode selected
+ for tDiscTime, manual §4.3.2).
+ */
+#define SL_DIAG_OPMODE_DISC (1 << 0)
+
+/*
+ Block type tag of FB_OPMODE.
+ */
+#define SL_TYPE_OPMODE 7
+
+/*
+ Block type tag of FB_OR.
+ */
+#define SL_TYPE_OR 4
+
+/*
+ Block type tag of FB_RS.
+ */
+#define SL_TYPE_RS 11
+
+/*
+ Block type tag of FB_SR.
+ */
+#define SL_TYPE_SR 12
+
+/*
+ Library extension, FB_TON2 diag bit 12: the restored elapsed time was refused
+ (SL_E_RESTORE; the manual's global shutdown 0x3510).
+ */
+#define SL_DIAG_TON2_RESTORE (1 << 12)
+
+/*
+ FB_TON2 "Starts with remaining time" (manual §4.13): with Enable TRUE when TonIn rises,
+ the timer starts with tDelay minus the stored elapsed time.
+ */
+#define SL_OPT_TON2_REMAINING_TIME (1 << 8)
+
+/*
+ `nTimeBase` of FB_TON/FB_TON2/FB_TOF: automatic, the smallest timebase whose range
+ holds tDelay (the manual: "automatically selected ... according to the set time").
+ */
+#define SL_TIMEBASE_AUTO 0
+
+/*
+ `nTimeBase` 1 ms: tDelay 1 to 60,000 ms in 1 ms steps.
+ */
+#define SL_TIMEBASE_1MS 1
+
+/*
+ `nTimeBase` 10 ms: tDelay 10 to 600,000 ms in 10 ms steps.
+ */
+#define SL_TIMEBASE_10MS 10
+
+/*
+ `nTimeBase` 100 ms (EL6910 SW 04): tDelay 100 ms to 6,000 s in 100 ms steps.
+ */
+#define SL_TIMEBASE_100MS 100
+
+/*
+ `nTimeBase` 1000 ms (EL6910 SW 04): tDelay 1 s to 60,000 s in 1 s steps.
+ */
+#define SL_TIMEBASE_1000MS 1000
+
+/*
+ Most timebase steps in a timer delay (tDelay / timebase).
+ */
+#define SL_TIMER_STEPS_MAX 60000
+
+/*
+ Largest timer delay in ms (60,000 s; 60,000 steps of 1000 ms).
+ */
+#define SL_TIMER_DELAY_MAX 60000000
+
+/*
+ Block type tag of FB_TOF.
+ */
+#define SL_TYPE_TOF 15
+
+/*
+ FB_TON state DELAYIN (9): TonIn is TRUE and the delay has not yet expired.
+ */
+#define SL_STATE_TON_DELAYIN 9
+
+/*
+ Block type tag of FB_TON.
+ */
+#define SL_TYPE_TON 13
+
+/*
+ FB_TON2 state DELAYIN (9): TonIn is TRUE and the delay has not yet expired.
+ */
+#define SL_STATE_TON2_DELAYIN 9
+
+/*
+ Block type tag of FB_TON2.
+ */
+#define SL_TYPE_TON2 14
+
+/*
+ FB_TWOHAND diag bit 2: discrepancy error between the two input pairs (the second group was
+ not actuated within tDiscTimePairs, manual §4.7.2). Bits 0/1 are SL_DIAG_DISC1/2.
+ */
+#define SL_DIAG_TWOHAND_PAIRS (1 << 2)
+
+/*
+ FB_TWOHAND diag bit 6: two-hand error (the second group was actuated while the first was
+ no longer actuated, manual §4.7.2).
+ */
+#define SL_DIAG_TWOHAND_ERROR (1 << 6)
+
+/*
+ FB_TWOHAND diag bit 10: bit 2 with "Safe Inputs after Disc Error" active (set in addition
+ to bit 2). Bits 8/9 are SL_DIAG_SAFE_IN_DISC1/2.
+ */
+#define SL_DIAG_TWOHAND_SAFE_IN_PAIRS (1 << 10)
+
+/*
+ FB_TWOHAND state 1BUTTON (11): every active input of the first group is TRUE, the second
+ group is not actuated yet (manual §4.7.2).
+ */
+#define SL_STATE_TWOHAND_1BUTTON 11
+
+/*
+ FB_TWOHAND state 2BUTTON (12): every active input of the second group is TRUE, the first
+ group is not actuated yet.
+ */
+#define SL_STATE_TWOHAND_2BUTTON 12
+
+/*
+ FB_TWOHAND state RELEASE (13): waiting until every active input is FALSE before the output
+ can be set again.
+ */
+#define SL_STATE_TWOHAND_RELEASE 13
+
+/*
+ Block type tag of FB_TWOHAND.
+ */
+#define SL_TYPE_TWOHAND 8
+
+/*
+ Largest tDiscTimePairs of FB_TWOHAND in ms (manual §4.7.1: "up to 2500 ms").
+ */
+#define SL_TWOHAND_PAIRS_TIME_MAX 2500
+
+/*
+ Block type tag of FB_XOR.
+ */
+#define SL_TYPE_XOR 5
 
 /*
  Link kind: BOOL output to BOOL input.
@@ -277,29 +579,6 @@
 #define SL_OPT_FUNCTION_TEST (1 << 4)
 
 /*
- FB_TON2 "Starts with remaining time" (manual §4.13): with Enable TRUE when TonIn rises,
- the timer starts with tDelay minus the stored elapsed time.
- */
-#define SL_OPT_TON2_REMAINING_TIME (1 << 8)
-
-/*
- FB_MUTING "Sequential Inputs": the four muting inputs are single-channel sensors checked
- one after the other (clear: two two-channel groups MutingIn1/2 and MutingIn3/4, parallel).
- */
-#define SL_OPT_MUTING_SEQUENTIAL (1 << 8)
-
-/*
- FB_MUTING "Backwards Mode" (EL6910): a sequence may also run backwards, starting at MutingIn4.
- */
-#define SL_OPT_MUTING_BACKWARDS (1 << 9)
-
-/*
- FB_MUTING "OSSD Check Optional" (EL6910): the protective field is not part of the sequence
- check; it may be interrupted at any step of a running sequence.
- */
-#define SL_OPT_MUTING_OSSD_CHECK_OPTIONAL (1 << 10)
-
-/*
  Diag bit 0: discrepancy error input group 1.
  */
 #define SL_DIAG_DISC1 (1 << 0)
@@ -330,16 +609,6 @@
 #define SL_DIAG_EDM2 (1 << 5)
 
 /*
- Diag bit 6 (FB_MUTING): the muting sequence was violated.
- */
-#define SL_DIAG_MUTING_SEQUENCE (1 << 6)
-
-/*
- Diag bit 7 (FB_MUTING): the maximum muting time was exceeded.
- */
-#define SL_DIAG_MUTING_MAX_TIME (1 << 7)
-
-/*
  Diag bit 8: bit 0 with "Safe Inputs after Disc Error" active (set in addition to bit 0).
  */
 #define SL_DIAG_SAFE_IN_DISC1 (1 << 8)
@@ -358,36 +627,6 @@
  Diag bit 11: bit 3 with "Safe Inputs after Disc Error" active.
  */
 #define SL_DIAG_SAFE_IN_DISC4 (1 << 11)
-
-/*
- FB_OPMODE diag bit 0: discrepancy monitoring error (no mode or more than one mode selected
- for tDiscTime, manual §4.3.2).
- */
-#define SL_DIAG_OPMODE_DISC (1 << 0)
-
-/*
- FB_TWOHAND diag bit 2: discrepancy error between the two input pairs (the second group was
- not actuated within tDiscTimePairs, manual §4.7.2). Bits 0/1 are SL_DIAG_DISC1/2.
- */
-#define SL_DIAG_TWOHAND_PAIRS (1 << 2)
-
-/*
- FB_TWOHAND diag bit 6: two-hand error (the second group was actuated while the first was
- no longer actuated, manual §4.7.2).
- */
-#define SL_DIAG_TWOHAND_ERROR (1 << 6)
-
-/*
- FB_TWOHAND diag bit 10: bit 2 with "Safe Inputs after Disc Error" active (set in addition
- to bit 2). Bits 8/9 are SL_DIAG_SAFE_IN_DISC1/2.
- */
-#define SL_DIAG_TWOHAND_SAFE_IN_PAIRS (1 << 10)
-
-/*
- Library extension, FB_TON2 diag bit 12: the restored elapsed time was refused
- (SL_E_RESTORE; the manual's global shutdown 0x3510).
- */
-#define SL_DIAG_TON2_RESTORE (1 << 12)
 
 /*
  Library extension, diag bit 13: a parameter changed outside STOP (SL_E_PARAM_CHANGED).
@@ -455,249 +694,10 @@
 #define SL_STATE_FUNCTEST 9
 
 /*
- FB_TWOHAND state 1BUTTON (11): every active input of the first group is TRUE, the second
- group is not actuated yet (manual §4.7.2).
- */
-#define SL_STATE_TWOHAND_1BUTTON 11
-
-/*
- FB_TWOHAND state 2BUTTON (12): every active input of the second group is TRUE, the first
- group is not actuated yet.
- */
-#define SL_STATE_TWOHAND_2BUTTON 12
-
-/*
- FB_TWOHAND state RELEASE (13): waiting until every active input is FALSE before the output
- can be set again.
- */
-#define SL_STATE_TWOHAND_RELEASE 13
-
-/*
- FB_TON state DELAYIN (9): TonIn is TRUE and the delay has not yet expired.
- */
-#define SL_STATE_TON_DELAYIN 9
-
-/*
- FB_TON2 state DELAYIN (9): TonIn is TRUE and the delay has not yet expired.
- */
-#define SL_STATE_TON2_DELAYIN 9
-
-/*
- FB_MUTING state MUTING1 (9): first step of the muting sequence (docs/semantics.md M1).
- */
-#define SL_STATE_MUTING_MUTING1 9
-
-/*
- FB_MUTING state MUTING2 (10).
- */
-#define SL_STATE_MUTING_MUTING2 10
-
-/*
- FB_MUTING state MUTING3 (11).
- */
-#define SL_STATE_MUTING_MUTING3 11
-
-/*
- FB_MUTING state MUTING4 (12).
- */
-#define SL_STATE_MUTING_MUTING4 12
-
-/*
- FB_MUTING state MUTING5 (13).
- */
-#define SL_STATE_MUTING_MUTING5 13
-
-/*
- FB_MUTING state MUTING6 (14).
- */
-#define SL_STATE_MUTING_MUTING6 14
-
-/*
- FB_MUTING state MUTING7 (15).
- */
-#define SL_STATE_MUTING_MUTING7 15
-
-/*
- FB_MUTING state MUTING8 (16).
- */
-#define SL_STATE_MUTING_MUTING8 16
-
-/*
- FB_MUTING state MUTING9 (17): last step of the muting sequence.
- */
-#define SL_STATE_MUTING_MUTING9 17
-
-/*
- Block type tag of FB_ESTOP (`SL_MEMBER.nType`, `sl_diag_text`).
- */
-#define SL_TYPE_ESTOP 1
-
-/*
- Block type tag of FB_MON.
- */
-#define SL_TYPE_MON 2
-
-/*
- Block type tag of FB_AND.
- */
-#define SL_TYPE_AND 3
-
-/*
- Block type tag of FB_OR.
- */
-#define SL_TYPE_OR 4
-
-/*
- Block type tag of FB_OPMODE.
- */
-#define SL_TYPE_OPMODE 7
-
-/*
- Block type tag of FB_TWOHAND.
- */
-#define SL_TYPE_TWOHAND 8
-
-/*
- Block type tag of FB_TON.
- */
-#define SL_TYPE_TON 13
-
-/*
- Block type tag of FB_TON2.
- */
-#define SL_TYPE_TON2 14
-
-/*
- Block type tag of FB_TOF.
- */
-#define SL_TYPE_TOF 15
-
-/*
- Block type tag of FB_MUTING.
- */
-#define SL_TYPE_MUTING 9
-
-/*
- Block type tag of FB_XOR.
- */
-#define SL_TYPE_XOR 5
-
-/*
- Block type tag of FB_DECOUPLE.
- */
-#define SL_TYPE_DECOUPLE 6
-
-/*
- Block type tag of FB_EDM.
- */
-#define SL_TYPE_EDM 10
-
-/*
- Block type tag of FB_RS.
- */
-#define SL_TYPE_RS 11
-
-/*
- Block type tag of FB_SR.
- */
-#define SL_TYPE_SR 12
-
-/*
- FB_EDM state MONOFF (manual §4.9.2: 14): Mon1 is FALSE, switch-off monitoring.
- */
-#define SL_STATE_EDM_MONOFF 14
-
-/*
- FB_EDM state MONON (manual §4.9.2: 15): Mon1 is TRUE, switch-on monitoring.
- */
-#define SL_STATE_EDM_MONON 15
-
-/*
- FB_RS state SET (manual §4.10.2: 9): the output RsOut is TRUE.
- */
-#define SL_STATE_RS_SET 9
-
-/*
- FB_SR state SET (manual §4.11.2: 9): the output SrOut is TRUE.
- */
-#define SL_STATE_SR_SET 9
-
-/*
- FB_EDM diag bit 0 (manual §4.9.2): switch-off timer elapsed.
- */
-#define SL_DIAG_EDM_SWITCH_OFF (1 << 0)
-
-/*
- FB_EDM diag bit 1 (manual §4.9.2): switch-on timer elapsed.
- */
-#define SL_DIAG_EDM_SWITCH_ON (1 << 1)
-
-/*
- Largest tSwitchOnTime / tSwitchOffTime of FB_EDM in ms (manual §4.9.1: "maximum 10000 ms").
- */
-#define SL_EDM_TIME_MAX 10000
-
-/*
  Largest time parameter of FB_ESTOP and FB_MON, and largest discrepancy time of FB_OPMODE
  and FB_TWOHAND, in ms (see docs/semantics.md C10, O3, H3).
  */
 #define SL_TIME_PARAM_MAX 65535
-
-/*
- Largest tDiscTimePairs of FB_TWOHAND in ms (manual §4.7.1: "up to 2500 ms").
- */
-#define SL_TWOHAND_PAIRS_TIME_MAX 2500
-
-/*
- `nTimeBase` of FB_TON/FB_TON2/FB_TOF: automatic, the smallest timebase whose range
- holds tDelay (the manual: "automatically selected ... according to the set time").
- */
-#define SL_TIMEBASE_AUTO 0
-
-/*
- `nTimeBase` 1 ms: tDelay 1 to 60,000 ms in 1 ms steps.
- */
-#define SL_TIMEBASE_1MS 1
-
-/*
- `nTimeBase` 10 ms: tDelay 10 to 600,000 ms in 10 ms steps.
- */
-#define SL_TIMEBASE_10MS 10
-
-/*
- `nTimeBase` 100 ms (EL6910 SW 04): tDelay 100 ms to 6,000 s in 100 ms steps.
- */
-#define SL_TIMEBASE_100MS 100
-
-/*
- `nTimeBase` 1000 ms (EL6910 SW 04): tDelay 1 s to 60,000 s in 1 s steps.
- */
-#define SL_TIMEBASE_1000MS 1000
-
-/*
- Most timebase steps in a timer delay (tDelay / timebase).
- */
-#define SL_TIMER_STEPS_MAX 60000
-
-/*
- Largest timer delay in ms (60,000 s; 60,000 steps of 1000 ms).
- */
-#define SL_TIMER_DELAY_MAX 60000000
-
-/*
- Largest `tFilterTime` of FB_MUTING in ms (manual §4.8.1: "up to 500 ms").
- */
-#define SL_MUTING_FILTER_TIME_MAX 500
-
-/*
- Largest `tMaxMutingTime` of FB_MUTING in ms (manual §4.8.1: "a maximum of 10 minutes").
- */
-#define SL_MUTING_MAX_MUTING_TIME_MAX 600000
-
-/*
- Largest `tMuteDelOutDelay` of FB_MUTING in ms (manual §4.8.1: "delayed by up to 30 seconds").
- */
-#define SL_MUTING_DELOUT_DELAY_MAX 30000
 
 /*
  IEC 61131-3 BOOL: 0 = FALSE, 1 = TRUE, any other byte is an invalid BOOL (ABI §2).

@@ -51,7 +51,7 @@ fn instance_ref<'a, B>(p: *const B) -> Result<&'a B, i32> {
 
 /// One call of a block function behind the panic boundary. After a caught panic the
 /// instance is forced into ERROR with safe outputs.
-fn block_call<B: Block>(p: *mut B, f: impl FnOnce(&mut B) -> i32) -> i32 {
+fn block_call<B: Block>(p: *mut B, f: impl FnOnce(&mut B) -> Status) -> i32 {
     let fb = match instance(p) {
         Ok(fb) => fb,
         Err(e) => return e,
@@ -61,7 +61,7 @@ fn block_call<B: Block>(p: *mut B, f: impl FnOnce(&mut B) -> i32) -> i32 {
             ffi_boundary!((), envelope::force_error(&mut *fb));
             SL_E_INTERNAL
         },
-        f(&mut *fb)
+        f(&mut *fb).code()
     )
 }
 
@@ -137,7 +137,7 @@ pub unsafe extern "C" fn sl_ton2_get_elapsed(fb: *const FB_TON2, pElapsedMs: *mu
         let run = || -> Result<i32, i32> {
             let fb = instance_ref(fb)?;
             let out = instance(pElapsedMs)?;
-            *out = crate::blocks::ton2::elapsed(fb)?;
+            *out = crate::blocks::ton2::elapsed(fb).map_err(Status::code)?;
             Ok(SL_OK)
         };
         run().unwrap_or_else(|e| e)

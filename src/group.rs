@@ -19,7 +19,7 @@ pub trait Member {
     /// Drives bRun and bErrAck from the group.
     fn drive(&mut self, run: u8, ack: u8);
     /// One cycle of the block (`sl_<name>_cycle`).
-    fn execute(&mut self, now: u32) -> i32;
+    fn execute(&mut self, now: u32) -> Status;
     /// The block's nState.
     fn state(&self) -> u8;
     /// The block's field table (the registry's).
@@ -35,7 +35,7 @@ pub trait Member {
     fn set_input_bits(&mut self, offset: u16, bits: u32) -> bool;
     /// One cycle as a member: bRun/bErrAck from the group, then the block's cycle; returns
     /// the status and the new nState (one dynamic call instead of three).
-    fn run_in_group(&mut self, run: u8, ack: u8, now: u32) -> (i32, u8) {
+    fn run_in_group(&mut self, run: u8, ack: u8, now: u32) -> (Status, u8) {
         self.drive(run, ack);
         let status = self.execute(now);
         (status, self.state())
@@ -107,7 +107,7 @@ macro_rules! impl_member {
                 self.bRun = run;
                 self.bErrAck = ack;
             }
-            fn execute(&mut self, now: u32) -> i32 {
+            fn execute(&mut self, now: u32) -> $crate::types::Status {
                 $crate::prim::envelope::cycle(self, now)
             }
             fn state(&self) -> u8 {
@@ -540,7 +540,7 @@ pub fn cycle<M: Members + ?Sized>(g: &mut SL_GROUP, m: &mut M, links: &[SL_LINK]
         g.nState = SL_STATE_ERROR;
         return SL_E_CORRUPT;
     };
-    let mut status = SL_OK;
+    let mut status = Status::Ok;
     let raw = [
         g.bRun,
         g.bErrAck,
@@ -549,7 +549,7 @@ pub fn cycle<M: Members + ?Sized>(g: &mut SL_GROUP, m: &mut M, links: &[SL_LINK]
         g.bComStartupIn,
     ];
     if raw.iter().any(|&b| b > 1) {
-        status = SL_E_INVALID_BOOL;
+        status = Status::InvalidBool;
     }
     // Invalid bytes: Run and ErrAck read FALSE, the fault inputs read TRUE (ABI §2).
     let run = is_true(g.bRun);
@@ -615,8 +615,8 @@ pub fn cycle<M: Members + ?Sized>(g: &mut SL_GROUP, m: &mut M, links: &[SL_LINK]
         }
         let outcome = m.with(i, |b| b.run_in_group(member_run, ack_level, now));
         // A member that cannot be reached is a member error of the group, never a skip.
-        let (s, state) = outcome.unwrap_or((SL_E_CORRUPT, SL_STATE_ERROR));
-        status = worst_status(status, s);
+        let (s, state) = outcome.unwrap_or((Status::Corrupt, SL_STATE_ERROR));
+        status = status.worst(s);
         all_run &= state == SL_STATE_RUN;
         if state == SL_STATE_ERROR {
             member_error = true;
@@ -647,5 +647,5 @@ pub fn cycle<M: Members + ?Sized>(g: &mut SL_GROUP, m: &mut M, links: &[SL_LINK]
     }
     set_outputs(g, &c, member_error, all_run);
     write_info(g, &c);
-    status
+    status.code()
 }

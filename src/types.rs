@@ -45,17 +45,12 @@ pub const SL_OPT_SAFE_INPUTS_AFTER_DISC: u32 = 1 << 2;
 pub const SL_OPT_MANUAL_RESTART: u32 = 1 << 3;
 /// Manual function test (MON).
 pub const SL_OPT_FUNCTION_TEST: u32 = 1 << 4;
-/// FB_TON2 "Starts with remaining time" (manual §4.13): with Enable TRUE when TonIn rises,
-/// the timer starts with tDelay minus the stored elapsed time.
-pub const SL_OPT_TON2_REMAINING_TIME: u32 = 1 << 8;
-/// FB_MUTING "Sequential Inputs": the four muting inputs are single-channel sensors checked
-/// one after the other (clear: two two-channel groups MutingIn1/2 and MutingIn3/4, parallel).
-pub const SL_OPT_MUTING_SEQUENTIAL: u32 = 1 << 8;
-/// FB_MUTING "Backwards Mode" (EL6910): a sequence may also run backwards, starting at MutingIn4.
-pub const SL_OPT_MUTING_BACKWARDS: u32 = 1 << 9;
-/// FB_MUTING "OSSD Check Optional" (EL6910): the protective field is not part of the sequence
-/// check; it may be interrupted at any step of a running sequence.
-pub const SL_OPT_MUTING_OSSD_CHECK_OPTIONAL: u32 = 1 << 10;
+
+use crate::blocks::muting::{
+    SL_DIAG_MUTING_MAX_TIME, SL_DIAG_MUTING_SEQUENCE, SL_OPT_MUTING_BACKWARDS,
+    SL_OPT_MUTING_OSSD_CHECK_OPTIONAL, SL_OPT_MUTING_SEQUENTIAL,
+};
+use crate::blocks::twohand::SL_DIAG_TWOHAND_ERROR;
 
 bitflags::bitflags! {
     /// The option bits of `dwOptions` (ABI §6) as a typed set.
@@ -84,10 +79,6 @@ pub const SL_DIAG_DISC4: u16 = 1 << 3;
 pub const SL_DIAG_EDM1: u16 = 1 << 4;
 /// Diag bit 5: EDM monitoring error EDM2.
 pub const SL_DIAG_EDM2: u16 = 1 << 5;
-/// Diag bit 6 (FB_MUTING): the muting sequence was violated.
-pub const SL_DIAG_MUTING_SEQUENCE: u16 = 1 << 6;
-/// Diag bit 7 (FB_MUTING): the maximum muting time was exceeded.
-pub const SL_DIAG_MUTING_MAX_TIME: u16 = 1 << 7;
 /// Diag bit 8: bit 0 with "Safe Inputs after Disc Error" active (set in addition to bit 0).
 pub const SL_DIAG_SAFE_IN_DISC1: u16 = 1 << 8;
 /// Diag bit 9: bit 1 with "Safe Inputs after Disc Error" active.
@@ -96,21 +87,6 @@ pub const SL_DIAG_SAFE_IN_DISC2: u16 = 1 << 9;
 pub const SL_DIAG_SAFE_IN_DISC3: u16 = 1 << 10;
 /// Diag bit 11: bit 3 with "Safe Inputs after Disc Error" active.
 pub const SL_DIAG_SAFE_IN_DISC4: u16 = 1 << 11;
-/// FB_OPMODE diag bit 0: discrepancy monitoring error (no mode or more than one mode selected
-/// for tDiscTime, manual §4.3.2).
-pub const SL_DIAG_OPMODE_DISC: u16 = 1 << 0;
-/// FB_TWOHAND diag bit 2: discrepancy error between the two input pairs (the second group was
-/// not actuated within tDiscTimePairs, manual §4.7.2). Bits 0/1 are SL_DIAG_DISC1/2.
-pub const SL_DIAG_TWOHAND_PAIRS: u16 = 1 << 2;
-/// FB_TWOHAND diag bit 6: two-hand error (the second group was actuated while the first was
-/// no longer actuated, manual §4.7.2).
-pub const SL_DIAG_TWOHAND_ERROR: u16 = 1 << 6;
-/// FB_TWOHAND diag bit 10: bit 2 with "Safe Inputs after Disc Error" active (set in addition
-/// to bit 2). Bits 8/9 are SL_DIAG_SAFE_IN_DISC1/2.
-pub const SL_DIAG_TWOHAND_SAFE_IN_PAIRS: u16 = 1 << 10;
-/// Library extension, FB_TON2 diag bit 12: the restored elapsed time was refused
-/// (SL_E_RESTORE; the manual's global shutdown 0x3510).
-pub const SL_DIAG_TON2_RESTORE: u16 = 1 << 12;
 /// Library extension, diag bit 13: a parameter changed outside STOP (SL_E_PARAM_CHANGED).
 pub const SL_DIAG_PARAM_CHANGED: u16 = 1 << 13;
 /// Library extension, diag bit 14: the clock went backwards (SL_E_CLOCK).
@@ -162,111 +138,115 @@ pub const SL_STATE_ERRORDELAY: u8 = 7;
 pub const SL_STATE_DELAYOUT: u8 = 8;
 /// State FUNCTEST (9, MON).
 pub const SL_STATE_FUNCTEST: u8 = 9;
-/// FB_TWOHAND state 1BUTTON (11): every active input of the first group is TRUE, the second
-/// group is not actuated yet (manual §4.7.2).
-pub const SL_STATE_TWOHAND_1BUTTON: u8 = 11;
-/// FB_TWOHAND state 2BUTTON (12): every active input of the second group is TRUE, the first
-/// group is not actuated yet.
-pub const SL_STATE_TWOHAND_2BUTTON: u8 = 12;
-/// FB_TWOHAND state RELEASE (13): waiting until every active input is FALSE before the output
-/// can be set again.
-pub const SL_STATE_TWOHAND_RELEASE: u8 = 13;
-/// FB_TON state DELAYIN (9): TonIn is TRUE and the delay has not yet expired.
-pub const SL_STATE_TON_DELAYIN: u8 = 9;
-/// FB_TON2 state DELAYIN (9): TonIn is TRUE and the delay has not yet expired.
-pub const SL_STATE_TON2_DELAYIN: u8 = 9;
-/// FB_MUTING state MUTING1 (9): first step of the muting sequence (docs/semantics.md M1).
-pub const SL_STATE_MUTING_MUTING1: u8 = 9;
-/// FB_MUTING state MUTING2 (10).
-pub const SL_STATE_MUTING_MUTING2: u8 = 10;
-/// FB_MUTING state MUTING3 (11).
-pub const SL_STATE_MUTING_MUTING3: u8 = 11;
-/// FB_MUTING state MUTING4 (12).
-pub const SL_STATE_MUTING_MUTING4: u8 = 12;
-/// FB_MUTING state MUTING5 (13).
-pub const SL_STATE_MUTING_MUTING5: u8 = 13;
-/// FB_MUTING state MUTING6 (14).
-pub const SL_STATE_MUTING_MUTING6: u8 = 14;
-/// FB_MUTING state MUTING7 (15).
-pub const SL_STATE_MUTING_MUTING7: u8 = 15;
-/// FB_MUTING state MUTING8 (16).
-pub const SL_STATE_MUTING_MUTING8: u8 = 16;
-/// FB_MUTING state MUTING9 (17): last step of the muting sequence.
-pub const SL_STATE_MUTING_MUTING9: u8 = 17;
-
-/// Block type tag of FB_ESTOP (`SL_MEMBER.nType`, `sl_diag_text`).
-pub const SL_TYPE_ESTOP: u16 = 1;
-/// Block type tag of FB_MON.
-pub const SL_TYPE_MON: u16 = 2;
-/// Block type tag of FB_AND.
-pub const SL_TYPE_AND: u16 = 3;
-/// Block type tag of FB_OR.
-pub const SL_TYPE_OR: u16 = 4;
-/// Block type tag of FB_OPMODE.
-pub const SL_TYPE_OPMODE: u16 = 7;
-/// Block type tag of FB_TWOHAND.
-pub const SL_TYPE_TWOHAND: u16 = 8;
-/// Block type tag of FB_TON.
-pub const SL_TYPE_TON: u16 = 13;
-/// Block type tag of FB_TON2.
-pub const SL_TYPE_TON2: u16 = 14;
-/// Block type tag of FB_TOF.
-pub const SL_TYPE_TOF: u16 = 15;
-/// Block type tag of FB_MUTING.
-pub const SL_TYPE_MUTING: u16 = 9;
-
-/// Block type tag of FB_XOR.
-pub const SL_TYPE_XOR: u16 = 5;
-/// Block type tag of FB_DECOUPLE.
-pub const SL_TYPE_DECOUPLE: u16 = 6;
-/// Block type tag of FB_EDM.
-pub const SL_TYPE_EDM: u16 = 10;
-/// Block type tag of FB_RS.
-pub const SL_TYPE_RS: u16 = 11;
-/// Block type tag of FB_SR.
-pub const SL_TYPE_SR: u16 = 12;
-
-/// FB_EDM state MONOFF (manual §4.9.2: 14): Mon1 is FALSE, switch-off monitoring.
-pub const SL_STATE_EDM_MONOFF: u8 = 14;
-/// FB_EDM state MONON (manual §4.9.2: 15): Mon1 is TRUE, switch-on monitoring.
-pub const SL_STATE_EDM_MONON: u8 = 15;
-/// FB_RS state SET (manual §4.10.2: 9): the output RsOut is TRUE.
-pub const SL_STATE_RS_SET: u8 = 9;
-/// FB_SR state SET (manual §4.11.2: 9): the output SrOut is TRUE.
-pub const SL_STATE_SR_SET: u8 = 9;
-
-/// FB_EDM diag bit 0 (manual §4.9.2): switch-off timer elapsed.
-pub const SL_DIAG_EDM_SWITCH_OFF: u16 = 1 << 0;
-/// FB_EDM diag bit 1 (manual §4.9.2): switch-on timer elapsed.
-pub const SL_DIAG_EDM_SWITCH_ON: u16 = 1 << 1;
-
-/// Largest tSwitchOnTime / tSwitchOffTime of FB_EDM in ms (manual §4.9.1: "maximum 10000 ms").
-pub const SL_EDM_TIME_MAX: u32 = 10_000;
 
 /// Largest time parameter of FB_ESTOP and FB_MON, and largest discrepancy time of FB_OPMODE
 /// and FB_TWOHAND, in ms (see docs/semantics.md C10, O3, H3).
 pub const SL_TIME_PARAM_MAX: u32 = 65_535;
-/// Largest tDiscTimePairs of FB_TWOHAND in ms (manual §4.7.1: "up to 2500 ms").
-pub const SL_TWOHAND_PAIRS_TIME_MAX: u32 = 2_500;
 
-/// The more serious of two status codes (several things can go wrong in one call; the
-/// call reports the worst): corrupt/internal > clock > parameter changed / restore refused >
-/// config > invalid BOOL > OK.
-pub const fn worst_status(a: i32, b: i32) -> i32 {
-    const fn rank(s: i32) -> u8 {
-        match s {
-            SL_E_CORRUPT | SL_E_INTERNAL => 6,
-            SL_E_CLOCK => 5,
-            SL_E_PARAM_CHANGED | SL_E_RESTORE => 4,
-            SL_E_CONFIG => 3,
-            SL_E_INVALID_BOOL => 2,
-            _ => 0,
+/// The status of a call inside the library; the C ABI returns its [`Status::code`]
+/// (SL_OK, SL_E_*), the Rust face `Ok(())` or `Err(status)`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Status {
+    /// SL_OK.
+    Ok,
+    /// SL_E_NULL: a required pointer is NULL.
+    Null,
+    /// SL_E_CONFIG: invalid parameters; the block stays in STOP with safe outputs.
+    Config,
+    /// SL_E_PARAM_CHANGED: a parameter changed outside STOP; the block is in ERROR.
+    ParamChanged,
+    /// SL_E_CORRUPT: the private state failed its integrity check; ERROR.
+    Corrupt,
+    /// SL_E_INVALID_BOOL: an input byte was neither 0 nor 1 (read as the safe value).
+    InvalidBool,
+    /// SL_E_CLOCK: the time went backwards; ERROR.
+    Clock,
+    /// SL_E_INTERNAL: an internal fault was caught; ERROR.
+    Internal,
+    /// SL_E_ALIGNMENT: a pointer is misaligned.
+    Alignment,
+    /// SL_E_FULL: group storage full.
+    Full,
+    /// SL_E_RESTORE: a restored elapsed time was refused; ERROR.
+    Restore,
+}
+
+impl Status {
+    /// The C status code.
+    pub const fn code(self) -> i32 {
+        match self {
+            Status::Ok => SL_OK,
+            Status::Null => SL_E_NULL,
+            Status::Config => SL_E_CONFIG,
+            Status::ParamChanged => SL_E_PARAM_CHANGED,
+            Status::Corrupt => SL_E_CORRUPT,
+            Status::InvalidBool => SL_E_INVALID_BOOL,
+            Status::Clock => SL_E_CLOCK,
+            Status::Internal => SL_E_INTERNAL,
+            Status::Alignment => SL_E_ALIGNMENT,
+            Status::Full => SL_E_FULL,
+            Status::Restore => SL_E_RESTORE,
         }
     }
-    if rank(b) > rank(a) {
-        b
-    } else {
-        a
+
+    /// The status of a C code; a code the library never returns reads as `Internal`.
+    pub const fn from_code(code: i32) -> Status {
+        match code {
+            SL_OK => Status::Ok,
+            SL_E_NULL => Status::Null,
+            SL_E_CONFIG => Status::Config,
+            SL_E_PARAM_CHANGED => Status::ParamChanged,
+            SL_E_CORRUPT => Status::Corrupt,
+            SL_E_INVALID_BOOL => Status::InvalidBool,
+            SL_E_CLOCK => Status::Clock,
+            SL_E_ALIGNMENT => Status::Alignment,
+            SL_E_FULL => Status::Full,
+            SL_E_RESTORE => Status::Restore,
+            _ => Status::Internal,
+        }
+    }
+
+    /// `Ok(())` or `Err(self)`.
+    pub fn result(self) -> Result<(), Status> {
+        match self {
+            Status::Ok => Ok(()),
+            e => Err(e),
+        }
+    }
+
+    /// The more serious of two statuses (several things can go wrong in one call; the call
+    /// reports the worst): corrupt/internal > clock > parameter changed / restore refused >
+    /// config > invalid BOOL > OK.
+    #[inline]
+    pub const fn worst(self, other: Status) -> Status {
+        const fn rank(s: Status) -> u8 {
+            match s {
+                Status::Corrupt | Status::Internal => 6,
+                Status::Clock => 5,
+                Status::ParamChanged | Status::Restore => 4,
+                Status::Config => 3,
+                Status::InvalidBool => 2,
+                _ => 0,
+            }
+        }
+        if rank(other) > rank(self) {
+            other
+        } else {
+            self
+        }
+    }
+}
+
+impl core::fmt::Display for Status {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        f.write_str(status_str(self.code()))
+    }
+}
+
+/// A status compares equal to its C code (tests and hosts hold codes as `i32`).
+impl PartialEq<i32> for Status {
+    fn eq(&self, code: &i32) -> bool {
+        self.code() == *code
     }
 }
 
@@ -274,29 +254,6 @@ pub const fn worst_status(a: i32, b: i32) -> i32 {
 pub fn status_str(status: i32) -> &'static str {
     status_text(status).trim_end_matches('\0')
 }
-
-/// `nTimeBase` of FB_TON/FB_TON2/FB_TOF: automatic, the smallest timebase whose range
-/// holds tDelay (the manual: "automatically selected ... according to the set time").
-pub const SL_TIMEBASE_AUTO: u16 = 0;
-/// `nTimeBase` 1 ms: tDelay 1 to 60,000 ms in 1 ms steps.
-pub const SL_TIMEBASE_1MS: u16 = 1;
-/// `nTimeBase` 10 ms: tDelay 10 to 600,000 ms in 10 ms steps.
-pub const SL_TIMEBASE_10MS: u16 = 10;
-/// `nTimeBase` 100 ms (EL6910 SW 04): tDelay 100 ms to 6,000 s in 100 ms steps.
-pub const SL_TIMEBASE_100MS: u16 = 100;
-/// `nTimeBase` 1000 ms (EL6910 SW 04): tDelay 1 s to 60,000 s in 1 s steps.
-pub const SL_TIMEBASE_1000MS: u16 = 1000;
-/// Most timebase steps in a timer delay (tDelay / timebase).
-pub const SL_TIMER_STEPS_MAX: u32 = 60_000;
-/// Largest timer delay in ms (60,000 s; 60,000 steps of 1000 ms).
-pub const SL_TIMER_DELAY_MAX: u32 = 60_000_000;
-
-/// Largest `tFilterTime` of FB_MUTING in ms (manual §4.8.1: "up to 500 ms").
-pub const SL_MUTING_FILTER_TIME_MAX: u32 = 500;
-/// Largest `tMaxMutingTime` of FB_MUTING in ms (manual §4.8.1: "a maximum of 10 minutes").
-pub const SL_MUTING_MAX_MUTING_TIME_MAX: u32 = 600_000;
-/// Largest `tMuteDelOutDelay` of FB_MUTING in ms (manual §4.8.1: "delayed by up to 30 seconds").
-pub const SL_MUTING_DELOUT_DELAY_MAX: u32 = 30_000;
 
 /// Text for a status code (for `sl_status_str`); NUL-terminated so C can use it directly.
 pub const fn status_text(status: i32) -> &'static str {

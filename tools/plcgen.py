@@ -1493,8 +1493,14 @@ def adapter_test_c(hdr: Header) -> str:
         params = [f for f in b.inputs if f not in sig and f.name not in ("bRun",)]
         nsig = len([f for f in sig if f.name not in ("bErrAck",)])
         mask = (1 << min(nsig, 16)) - 1
-        bump = ([f for f in params if is_time_ms(f) and f.count is None] +
-                [f for f in params if f.name == "wInputNegated"] + [f for f in params if f.count is None])
+        # Analog inputs have their wInputActive bit in their doc comment ("active bit 8").
+        for f in params:
+            m = re.search(r"active bit (\d+)", f.doc)
+            if m:
+                mask |= 1 << int(m.group(1))
+        settings = [f for f in params if not re.search(r"active bit \d+", f.doc)]  # not analog inputs
+        bump = ([f for f in settings if is_time_ms(f) and f.count is None] +
+                [f for f in settings if f.name == "wInputNegated"] + [f for f in settings if f.count is None])
         run_outs = [f for f in b.outputs if C_SCALARS.get(f.ctype, (0, 0, False))[2] and f.count is None
                     and f.name != "bError"]
         out.append(f"static void rnd_config_{b.lower}({s} *x)")
@@ -1566,8 +1572,15 @@ def adapter_test_c(hdr: Header) -> str:
                 m = "cds_" + f.name
                 out.append(f"    {{ {m}_struct q; int32_t r; q.{st_param_name(f.params[0])} = &a; {m}(&q); r = {f.name}(&b);")
                 out.append(f'      CHECK(q.{m} == r && memcmp(&a, &b, sizeof a) == 0, "{m} differs from {f.name}"); }}')
-        out.append("    for (c = 0; c < 10; c++) {")
-        out.append("        int valid = c < 8; /* 8 valid configurations, then the labelled invalid share: 2 */")
+        # Each block draws from its own sequence, so that adding a block changes no other
+        # block's draws (and so what they reach).
+        seed = 2166136261
+        for ch in s.encode():
+            seed = ((seed ^ ch) * 16777619) & 0xFFFFFFFF
+        out.append(f"    rng = {seed}u; /* FNV-1a of \"{s}\" */")
+        out.append("    machine = 1u;")
+        out.append("    for (c = 0; c < 20; c++) {")
+        out.append("        int valid = c < 16; /* 16 valid configurations, then the labelled invalid share: 4 */")
         out.append(f"        if (!draw_{b.lower}(&a, &b, valid)) {{")
         out.append(f'            CHECK(!valid, "{s}: no valid configuration found in 200000 random draws");')
         out.append("            continue;")
@@ -1607,7 +1620,7 @@ def adapter_test_c(hdr: Header) -> str:
             out.append("            if (b.nState != SL_STATE_STOP && b.nState != SL_STATE_ERROR && b.nState != SL_STATE_RESET && b.nState != SL_STATE_SAFE) reached_run = 1;")
         out.append("        }")
         out.append("    }")
-        out.append(f'    printf("{s}: %d of %d cycles (8 valid random configurations) returned SL_OK; run-like state %s, ERROR %s; '
+        out.append(f'    printf("{s}: %d of %d cycles (16 valid random configurations) returned SL_OK; run-like state %s, ERROR %s; '
                    f'invalid share: %d configurations, %d cycles\\n", ok, cycles, reached_run ? "reached" : "NOT reached", '
                    f'reached_error ? "reached" : "NOT reached", inv_config, inv_cycles);')
         out.append('    if (2 * ok <= cycles) printf("  status histogram (0, -1, ... -11): %d %d %d %d %d %d %d %d %d %d %d\\n", hist[0], hist[1], hist[2], hist[3], hist[4], hist[5], hist[6], hist[7], hist[8], hist[9], hist[10]);')

@@ -584,15 +584,15 @@ static uint32_t rnd_time(void) { static const uint32_t t[] = {0u, 10u, 20u, 30u,
 static uint32_t rnd_options(void)
 {
     uint32_t o = 0;
+    if (rnd() % 4u == 0u) o |= (uint32_t)SL_OPT_MUTING_SEQUENTIAL;
+    if (rnd() % 4u == 0u) o |= (uint32_t)SL_OPT_MUTING_BACKWARDS;
+    if (rnd() % 4u == 0u) o |= (uint32_t)SL_OPT_MUTING_OSSD_CHECK_OPTIONAL;
+    if (rnd() % 4u == 0u) o |= (uint32_t)SL_OPT_TON2_REMAINING_TIME;
     if (rnd() % 4u == 0u) o |= (uint32_t)SL_OPT_EDM1;
     if (rnd() % 4u == 0u) o |= (uint32_t)SL_OPT_EDM2;
     if (rnd() % 4u == 0u) o |= (uint32_t)SL_OPT_SAFE_INPUTS_AFTER_DISC;
     if (rnd() % 4u == 0u) o |= (uint32_t)SL_OPT_MANUAL_RESTART;
     if (rnd() % 4u == 0u) o |= (uint32_t)SL_OPT_FUNCTION_TEST;
-    if (rnd() % 4u == 0u) o |= (uint32_t)SL_OPT_TON2_REMAINING_TIME;
-    if (rnd() % 4u == 0u) o |= (uint32_t)SL_OPT_MUTING_SEQUENTIAL;
-    if (rnd() % 4u == 0u) o |= (uint32_t)SL_OPT_MUTING_BACKWARDS;
-    if (rnd() % 4u == 0u) o |= (uint32_t)SL_OPT_MUTING_OSSD_CHECK_OPTIONAL;
     return o;
 }
 /* Signal inputs follow one common machine signal (mostly TRUE = no safe-state request, now and
@@ -660,8 +660,10 @@ static void test_ton2(void)
     a.wInputActive = b.wInputActive = 1;
     { cds_sl_ton2_init_struct q; int32_t r; q.pFb = &a; cds_sl_ton2_init(&q); r = sl_ton2_init(&b);
       CHECK(q.cds_sl_ton2_init == r && memcmp(&a, &b, sizeof a) == 0, "cds_sl_ton2_init differs from sl_ton2_init"); }
-    for (c = 0; c < 10; c++) {
-        int valid = c < 8; /* 8 valid configurations, then the labelled invalid share: 2 */
+    rng = 3449572771u; /* FNV-1a of "FB_TON2" */
+    machine = 1u;
+    for (c = 0; c < 20; c++) {
+        int valid = c < 16; /* 16 valid configurations, then the labelled invalid share: 4 */
         if (!draw_ton2(&a, &b, valid)) {
             CHECK(!valid, "FB_TON2: no valid configuration found in 200000 random draws");
             continue;
@@ -695,7 +697,7 @@ static void test_ton2(void)
             if (b.nState != SL_STATE_STOP && b.nState != SL_STATE_ERROR && b.nState != SL_STATE_RESET && (b.bTonOut)) reached_run = 1;
         }
     }
-    printf("FB_TON2: %d of %d cycles (8 valid random configurations) returned SL_OK; run-like state %s, ERROR %s; invalid share: %d configurations, %d cycles\n", ok, cycles, reached_run ? "reached" : "NOT reached", reached_error ? "reached" : "NOT reached", inv_config, inv_cycles);
+    printf("FB_TON2: %d of %d cycles (16 valid random configurations) returned SL_OK; run-like state %s, ERROR %s; invalid share: %d configurations, %d cycles\n", ok, cycles, reached_run ? "reached" : "NOT reached", reached_error ? "reached" : "NOT reached", inv_config, inv_cycles);
     if (2 * ok <= cycles) printf("  status histogram (0, -1, ... -11): %d %d %d %d %d %d %d %d %d %d %d\n", hist[0], hist[1], hist[2], hist[3], hist[4], hist[5], hist[6], hist[7], hist[8], hist[9], hist[10]);
     CHECK(cycles > 0 && 2 * ok > cycles, "FB_TON2: only %d of %d cycles with valid configurations returned SL_OK", ok, cycles);
     CHECK(reached_run, "FB_TON2: the random test never reached a running state (an output on)");
@@ -764,8 +766,10 @@ static void test_estop(void)
     a.wInputActive = b.wInputActive = 1;
     { cds_sl_estop_init_struct q; int32_t r; q.pFb = &a; cds_sl_estop_init(&q); r = sl_estop_init(&b);
       CHECK(q.cds_sl_estop_init == r && memcmp(&a, &b, sizeof a) == 0, "cds_sl_estop_init differs from sl_estop_init"); }
-    for (c = 0; c < 10; c++) {
-        int valid = c < 8; /* 8 valid configurations, then the labelled invalid share: 2 */
+    rng = 3938778749u; /* FNV-1a of "FB_ESTOP" */
+    machine = 1u;
+    for (c = 0; c < 20; c++) {
+        int valid = c < 16; /* 16 valid configurations, then the labelled invalid share: 4 */
         if (!draw_estop(&a, &b, valid)) {
             CHECK(!valid, "FB_ESTOP: no valid configuration found in 200000 random draws");
             continue;
@@ -817,7 +821,7 @@ static void test_estop(void)
             if (b.nState != SL_STATE_STOP && b.nState != SL_STATE_ERROR && b.nState != SL_STATE_RESET && (b.bEStopOut || b.bEStopDelOut)) reached_run = 1;
         }
     }
-    printf("FB_ESTOP: %d of %d cycles (8 valid random configurations) returned SL_OK; run-like state %s, ERROR %s; invalid share: %d configurations, %d cycles\n", ok, cycles, reached_run ? "reached" : "NOT reached", reached_error ? "reached" : "NOT reached", inv_config, inv_cycles);
+    printf("FB_ESTOP: %d of %d cycles (16 valid random configurations) returned SL_OK; run-like state %s, ERROR %s; invalid share: %d configurations, %d cycles\n", ok, cycles, reached_run ? "reached" : "NOT reached", reached_error ? "reached" : "NOT reached", inv_config, inv_cycles);
     if (2 * ok <= cycles) printf("  status histogram (0, -1, ... -11): %d %d %d %d %d %d %d %d %d %d %d\n", hist[0], hist[1], hist[2], hist[3], hist[4], hist[5], hist[6], hist[7], hist[8], hist[9], hist[10]);
     CHECK(cycles > 0 && 2 * ok > cycles, "FB_ESTOP: only %d of %d cycles with valid configurations returned SL_OK", ok, cycles);
     CHECK(reached_run, "FB_ESTOP: the random test never reached a running state (an output on)");
@@ -884,8 +888,10 @@ static void test_mon(void)
     a.wInputActive = b.wInputActive = 1;
     { cds_sl_mon_init_struct q; int32_t r; q.pFb = &a; cds_sl_mon_init(&q); r = sl_mon_init(&b);
       CHECK(q.cds_sl_mon_init == r && memcmp(&a, &b, sizeof a) == 0, "cds_sl_mon_init differs from sl_mon_init"); }
-    for (c = 0; c < 10; c++) {
-        int valid = c < 8; /* 8 valid configurations, then the labelled invalid share: 2 */
+    rng = 3268109120u; /* FNV-1a of "FB_MON" */
+    machine = 1u;
+    for (c = 0; c < 20; c++) {
+        int valid = c < 16; /* 16 valid configurations, then the labelled invalid share: 4 */
         if (!draw_mon(&a, &b, valid)) {
             CHECK(!valid, "FB_MON: no valid configuration found in 200000 random draws");
             continue;
@@ -933,7 +939,7 @@ static void test_mon(void)
             if (b.nState != SL_STATE_STOP && b.nState != SL_STATE_ERROR && b.nState != SL_STATE_RESET && (b.bMonOut || b.bMonDelOut)) reached_run = 1;
         }
     }
-    printf("FB_MON: %d of %d cycles (8 valid random configurations) returned SL_OK; run-like state %s, ERROR %s; invalid share: %d configurations, %d cycles\n", ok, cycles, reached_run ? "reached" : "NOT reached", reached_error ? "reached" : "NOT reached", inv_config, inv_cycles);
+    printf("FB_MON: %d of %d cycles (16 valid random configurations) returned SL_OK; run-like state %s, ERROR %s; invalid share: %d configurations, %d cycles\n", ok, cycles, reached_run ? "reached" : "NOT reached", reached_error ? "reached" : "NOT reached", inv_config, inv_cycles);
     if (2 * ok <= cycles) printf("  status histogram (0, -1, ... -11): %d %d %d %d %d %d %d %d %d %d %d\n", hist[0], hist[1], hist[2], hist[3], hist[4], hist[5], hist[6], hist[7], hist[8], hist[9], hist[10]);
     CHECK(cycles > 0 && 2 * ok > cycles, "FB_MON: only %d of %d cycles with valid configurations returned SL_OK", ok, cycles);
     CHECK(reached_run, "FB_MON: the random test never reached a running state (an output on)");
@@ -986,8 +992,10 @@ static void test_and(void)
     a.wInputActive = b.wInputActive = 1;
     { cds_sl_and_init_struct q; int32_t r; q.pFb = &a; cds_sl_and_init(&q); r = sl_and_init(&b);
       CHECK(q.cds_sl_and_init == r && memcmp(&a, &b, sizeof a) == 0, "cds_sl_and_init differs from sl_and_init"); }
-    for (c = 0; c < 10; c++) {
-        int valid = c < 8; /* 8 valid configurations, then the labelled invalid share: 2 */
+    rng = 2658911323u; /* FNV-1a of "FB_AND" */
+    machine = 1u;
+    for (c = 0; c < 20; c++) {
+        int valid = c < 16; /* 16 valid configurations, then the labelled invalid share: 4 */
         if (!draw_and(&a, &b, valid)) {
             CHECK(!valid, "FB_AND: no valid configuration found in 200000 random draws");
             continue;
@@ -1033,7 +1041,7 @@ static void test_and(void)
             if (b.nState != SL_STATE_STOP && b.nState != SL_STATE_ERROR && b.nState != SL_STATE_RESET && (b.bAndOut)) reached_run = 1;
         }
     }
-    printf("FB_AND: %d of %d cycles (8 valid random configurations) returned SL_OK; run-like state %s, ERROR %s; invalid share: %d configurations, %d cycles\n", ok, cycles, reached_run ? "reached" : "NOT reached", reached_error ? "reached" : "NOT reached", inv_config, inv_cycles);
+    printf("FB_AND: %d of %d cycles (16 valid random configurations) returned SL_OK; run-like state %s, ERROR %s; invalid share: %d configurations, %d cycles\n", ok, cycles, reached_run ? "reached" : "NOT reached", reached_error ? "reached" : "NOT reached", inv_config, inv_cycles);
     if (2 * ok <= cycles) printf("  status histogram (0, -1, ... -11): %d %d %d %d %d %d %d %d %d %d %d\n", hist[0], hist[1], hist[2], hist[3], hist[4], hist[5], hist[6], hist[7], hist[8], hist[9], hist[10]);
     CHECK(cycles > 0 && 2 * ok > cycles, "FB_AND: only %d of %d cycles with valid configurations returned SL_OK", ok, cycles);
     CHECK(reached_run, "FB_AND: the random test never reached a running state (an output on)");
@@ -1086,8 +1094,10 @@ static void test_or(void)
     a.wInputActive = b.wInputActive = 1;
     { cds_sl_or_init_struct q; int32_t r; q.pFb = &a; cds_sl_or_init(&q); r = sl_or_init(&b);
       CHECK(q.cds_sl_or_init == r && memcmp(&a, &b, sizeof a) == 0, "cds_sl_or_init differs from sl_or_init"); }
-    for (c = 0; c < 10; c++) {
-        int valid = c < 8; /* 8 valid configurations, then the labelled invalid share: 2 */
+    rng = 1870475495u; /* FNV-1a of "FB_OR" */
+    machine = 1u;
+    for (c = 0; c < 20; c++) {
+        int valid = c < 16; /* 16 valid configurations, then the labelled invalid share: 4 */
         if (!draw_or(&a, &b, valid)) {
             CHECK(!valid, "FB_OR: no valid configuration found in 200000 random draws");
             continue;
@@ -1133,7 +1143,7 @@ static void test_or(void)
             if (b.nState != SL_STATE_STOP && b.nState != SL_STATE_ERROR && b.nState != SL_STATE_RESET && (b.bOrOut)) reached_run = 1;
         }
     }
-    printf("FB_OR: %d of %d cycles (8 valid random configurations) returned SL_OK; run-like state %s, ERROR %s; invalid share: %d configurations, %d cycles\n", ok, cycles, reached_run ? "reached" : "NOT reached", reached_error ? "reached" : "NOT reached", inv_config, inv_cycles);
+    printf("FB_OR: %d of %d cycles (16 valid random configurations) returned SL_OK; run-like state %s, ERROR %s; invalid share: %d configurations, %d cycles\n", ok, cycles, reached_run ? "reached" : "NOT reached", reached_error ? "reached" : "NOT reached", inv_config, inv_cycles);
     if (2 * ok <= cycles) printf("  status histogram (0, -1, ... -11): %d %d %d %d %d %d %d %d %d %d %d\n", hist[0], hist[1], hist[2], hist[3], hist[4], hist[5], hist[6], hist[7], hist[8], hist[9], hist[10]);
     CHECK(cycles > 0 && 2 * ok > cycles, "FB_OR: only %d of %d cycles with valid configurations returned SL_OK", ok, cycles);
     CHECK(reached_run, "FB_OR: the random test never reached a running state (an output on)");
@@ -1184,8 +1194,10 @@ static void test_xor(void)
     a.wInputActive = b.wInputActive = 1;
     { cds_sl_xor_init_struct q; int32_t r; q.pFb = &a; cds_sl_xor_init(&q); r = sl_xor_init(&b);
       CHECK(q.cds_sl_xor_init == r && memcmp(&a, &b, sizeof a) == 0, "cds_sl_xor_init differs from sl_xor_init"); }
-    for (c = 0; c < 10; c++) {
-        int valid = c < 8; /* 8 valid configurations, then the labelled invalid share: 2 */
+    rng = 3923319771u; /* FNV-1a of "FB_XOR" */
+    machine = 1u;
+    for (c = 0; c < 20; c++) {
+        int valid = c < 16; /* 16 valid configurations, then the labelled invalid share: 4 */
         if (!draw_xor(&a, &b, valid)) {
             CHECK(!valid, "FB_XOR: no valid configuration found in 200000 random draws");
             continue;
@@ -1247,7 +1259,7 @@ static void test_xor(void)
             if (b.nState != SL_STATE_STOP && b.nState != SL_STATE_ERROR && b.nState != SL_STATE_RESET && (b.bXorOut1 || b.bXorOut2 || b.bXorOut3 || b.bXorOut4 || b.bXorOut5 || b.bXorOut6 || b.bXorOut7 || b.bXorOut8)) reached_run = 1;
         }
     }
-    printf("FB_XOR: %d of %d cycles (8 valid random configurations) returned SL_OK; run-like state %s, ERROR %s; invalid share: %d configurations, %d cycles\n", ok, cycles, reached_run ? "reached" : "NOT reached", reached_error ? "reached" : "NOT reached", inv_config, inv_cycles);
+    printf("FB_XOR: %d of %d cycles (16 valid random configurations) returned SL_OK; run-like state %s, ERROR %s; invalid share: %d configurations, %d cycles\n", ok, cycles, reached_run ? "reached" : "NOT reached", reached_error ? "reached" : "NOT reached", inv_config, inv_cycles);
     if (2 * ok <= cycles) printf("  status histogram (0, -1, ... -11): %d %d %d %d %d %d %d %d %d %d %d\n", hist[0], hist[1], hist[2], hist[3], hist[4], hist[5], hist[6], hist[7], hist[8], hist[9], hist[10]);
     CHECK(cycles > 0 && 2 * ok > cycles, "FB_XOR: only %d of %d cycles with valid configurations returned SL_OK", ok, cycles);
     CHECK(reached_run, "FB_XOR: the random test never reached a running state (an output on)");
@@ -1298,8 +1310,10 @@ static void test_decouple(void)
     a.wInputActive = b.wInputActive = 1;
     { cds_sl_decouple_init_struct q; int32_t r; q.pFb = &a; cds_sl_decouple_init(&q); r = sl_decouple_init(&b);
       CHECK(q.cds_sl_decouple_init == r && memcmp(&a, &b, sizeof a) == 0, "cds_sl_decouple_init differs from sl_decouple_init"); }
-    for (c = 0; c < 10; c++) {
-        int valid = c < 8; /* 8 valid configurations, then the labelled invalid share: 2 */
+    rng = 633328853u; /* FNV-1a of "FB_DECOUPLE" */
+    machine = 1u;
+    for (c = 0; c < 20; c++) {
+        int valid = c < 16; /* 16 valid configurations, then the labelled invalid share: 4 */
         if (!draw_decouple(&a, &b, valid)) {
             CHECK(!valid, "FB_DECOUPLE: no valid configuration found in 200000 random draws");
             continue;
@@ -1345,7 +1359,7 @@ static void test_decouple(void)
             if (b.nState != SL_STATE_STOP && b.nState != SL_STATE_ERROR && b.nState != SL_STATE_RESET && (b.bDecOut1 || b.bDecOut2 || b.bDecOut3 || b.bDecOut4 || b.bDecOut5 || b.bDecOut6 || b.bDecOut7 || b.bDecOut8)) reached_run = 1;
         }
     }
-    printf("FB_DECOUPLE: %d of %d cycles (8 valid random configurations) returned SL_OK; run-like state %s, ERROR %s; invalid share: %d configurations, %d cycles\n", ok, cycles, reached_run ? "reached" : "NOT reached", reached_error ? "reached" : "NOT reached", inv_config, inv_cycles);
+    printf("FB_DECOUPLE: %d of %d cycles (16 valid random configurations) returned SL_OK; run-like state %s, ERROR %s; invalid share: %d configurations, %d cycles\n", ok, cycles, reached_run ? "reached" : "NOT reached", reached_error ? "reached" : "NOT reached", inv_config, inv_cycles);
     if (2 * ok <= cycles) printf("  status histogram (0, -1, ... -11): %d %d %d %d %d %d %d %d %d %d %d\n", hist[0], hist[1], hist[2], hist[3], hist[4], hist[5], hist[6], hist[7], hist[8], hist[9], hist[10]);
     CHECK(cycles > 0 && 2 * ok > cycles, "FB_DECOUPLE: only %d of %d cycles with valid configurations returned SL_OK", ok, cycles);
     CHECK(reached_run, "FB_DECOUPLE: the random test never reached a running state (an output on)");
@@ -1400,8 +1414,10 @@ static void test_opmode(void)
     a.wInputActive = b.wInputActive = 1;
     { cds_sl_opmode_init_struct q; int32_t r; q.pFb = &a; cds_sl_opmode_init(&q); r = sl_opmode_init(&b);
       CHECK(q.cds_sl_opmode_init == r && memcmp(&a, &b, sizeof a) == 0, "cds_sl_opmode_init differs from sl_opmode_init"); }
-    for (c = 0; c < 10; c++) {
-        int valid = c < 8; /* 8 valid configurations, then the labelled invalid share: 2 */
+    rng = 1972961530u; /* FNV-1a of "FB_OPMODE" */
+    machine = 1u;
+    for (c = 0; c < 20; c++) {
+        int valid = c < 16; /* 16 valid configurations, then the labelled invalid share: 4 */
         if (!draw_opmode(&a, &b, valid)) {
             CHECK(!valid, "FB_OPMODE: no valid configuration found in 200000 random draws");
             continue;
@@ -1449,7 +1465,7 @@ static void test_opmode(void)
             if (b.nState != SL_STATE_STOP && b.nState != SL_STATE_ERROR && b.nState != SL_STATE_RESET && (b.bOpOut1 || b.bOpOut2 || b.bOpOut3 || b.bOpOut4 || b.bOpOut5 || b.bOpOut6 || b.bOpOut7 || b.bOpOut8)) reached_run = 1;
         }
     }
-    printf("FB_OPMODE: %d of %d cycles (8 valid random configurations) returned SL_OK; run-like state %s, ERROR %s; invalid share: %d configurations, %d cycles\n", ok, cycles, reached_run ? "reached" : "NOT reached", reached_error ? "reached" : "NOT reached", inv_config, inv_cycles);
+    printf("FB_OPMODE: %d of %d cycles (16 valid random configurations) returned SL_OK; run-like state %s, ERROR %s; invalid share: %d configurations, %d cycles\n", ok, cycles, reached_run ? "reached" : "NOT reached", reached_error ? "reached" : "NOT reached", inv_config, inv_cycles);
     if (2 * ok <= cycles) printf("  status histogram (0, -1, ... -11): %d %d %d %d %d %d %d %d %d %d %d\n", hist[0], hist[1], hist[2], hist[3], hist[4], hist[5], hist[6], hist[7], hist[8], hist[9], hist[10]);
     CHECK(cycles > 0 && 2 * ok > cycles, "FB_OPMODE: only %d of %d cycles with valid configurations returned SL_OK", ok, cycles);
     CHECK(reached_run, "FB_OPMODE: the random test never reached a running state (an output on)");
@@ -1510,8 +1526,10 @@ static void test_twohand(void)
     a.wInputActive = b.wInputActive = 1;
     { cds_sl_twohand_init_struct q; int32_t r; q.pFb = &a; cds_sl_twohand_init(&q); r = sl_twohand_init(&b);
       CHECK(q.cds_sl_twohand_init == r && memcmp(&a, &b, sizeof a) == 0, "cds_sl_twohand_init differs from sl_twohand_init"); }
-    for (c = 0; c < 10; c++) {
-        int valid = c < 8; /* 8 valid configurations, then the labelled invalid share: 2 */
+    rng = 1990491913u; /* FNV-1a of "FB_TWOHAND" */
+    machine = 1u;
+    for (c = 0; c < 20; c++) {
+        int valid = c < 16; /* 16 valid configurations, then the labelled invalid share: 4 */
         if (!draw_twohand(&a, &b, valid)) {
             CHECK(!valid, "FB_TWOHAND: no valid configuration found in 200000 random draws");
             continue;
@@ -1549,7 +1567,7 @@ static void test_twohand(void)
             if (b.nState != SL_STATE_STOP && b.nState != SL_STATE_ERROR && b.nState != SL_STATE_RESET && (b.bTwoHandOut)) reached_run = 1;
         }
     }
-    printf("FB_TWOHAND: %d of %d cycles (8 valid random configurations) returned SL_OK; run-like state %s, ERROR %s; invalid share: %d configurations, %d cycles\n", ok, cycles, reached_run ? "reached" : "NOT reached", reached_error ? "reached" : "NOT reached", inv_config, inv_cycles);
+    printf("FB_TWOHAND: %d of %d cycles (16 valid random configurations) returned SL_OK; run-like state %s, ERROR %s; invalid share: %d configurations, %d cycles\n", ok, cycles, reached_run ? "reached" : "NOT reached", reached_error ? "reached" : "NOT reached", inv_config, inv_cycles);
     if (2 * ok <= cycles) printf("  status histogram (0, -1, ... -11): %d %d %d %d %d %d %d %d %d %d %d\n", hist[0], hist[1], hist[2], hist[3], hist[4], hist[5], hist[6], hist[7], hist[8], hist[9], hist[10]);
     CHECK(cycles > 0 && 2 * ok > cycles, "FB_TWOHAND: only %d of %d cycles with valid configurations returned SL_OK", ok, cycles);
     CHECK(reached_run, "FB_TWOHAND: the random test never reached a running state (an output on)");
@@ -1616,8 +1634,10 @@ static void test_muting(void)
     a.wInputActive = b.wInputActive = 1;
     { cds_sl_muting_init_struct q; int32_t r; q.pFb = &a; cds_sl_muting_init(&q); r = sl_muting_init(&b);
       CHECK(q.cds_sl_muting_init == r && memcmp(&a, &b, sizeof a) == 0, "cds_sl_muting_init differs from sl_muting_init"); }
-    for (c = 0; c < 10; c++) {
-        int valid = c < 8; /* 8 valid configurations, then the labelled invalid share: 2 */
+    rng = 435941436u; /* FNV-1a of "FB_MUTING" */
+    machine = 1u;
+    for (c = 0; c < 20; c++) {
+        int valid = c < 16; /* 16 valid configurations, then the labelled invalid share: 4 */
         if (!draw_muting(&a, &b, valid)) {
             CHECK(!valid, "FB_MUTING: no valid configuration found in 200000 random draws");
             continue;
@@ -1665,7 +1685,7 @@ static void test_muting(void)
             if (b.nState != SL_STATE_STOP && b.nState != SL_STATE_ERROR && b.nState != SL_STATE_RESET && (b.bMutingActive || b.bMuteOut || b.bMuteDelOut)) reached_run = 1;
         }
     }
-    printf("FB_MUTING: %d of %d cycles (8 valid random configurations) returned SL_OK; run-like state %s, ERROR %s; invalid share: %d configurations, %d cycles\n", ok, cycles, reached_run ? "reached" : "NOT reached", reached_error ? "reached" : "NOT reached", inv_config, inv_cycles);
+    printf("FB_MUTING: %d of %d cycles (16 valid random configurations) returned SL_OK; run-like state %s, ERROR %s; invalid share: %d configurations, %d cycles\n", ok, cycles, reached_run ? "reached" : "NOT reached", reached_error ? "reached" : "NOT reached", inv_config, inv_cycles);
     if (2 * ok <= cycles) printf("  status histogram (0, -1, ... -11): %d %d %d %d %d %d %d %d %d %d %d\n", hist[0], hist[1], hist[2], hist[3], hist[4], hist[5], hist[6], hist[7], hist[8], hist[9], hist[10]);
     CHECK(cycles > 0 && 2 * ok > cycles, "FB_MUTING: only %d of %d cycles with valid configurations returned SL_OK", ok, cycles);
     CHECK(reached_run, "FB_MUTING: the random test never reached a running state (an output on)");
@@ -1722,8 +1742,10 @@ static void test_edm(void)
     a.wInputActive = b.wInputActive = 1;
     { cds_sl_edm_init_struct q; int32_t r; q.pFb = &a; cds_sl_edm_init(&q); r = sl_edm_init(&b);
       CHECK(q.cds_sl_edm_init == r && memcmp(&a, &b, sizeof a) == 0, "cds_sl_edm_init differs from sl_edm_init"); }
-    for (c = 0; c < 10; c++) {
-        int valid = c < 8; /* 8 valid configurations, then the labelled invalid share: 2 */
+    rng = 1806535058u; /* FNV-1a of "FB_EDM" */
+    machine = 1u;
+    for (c = 0; c < 20; c++) {
+        int valid = c < 16; /* 16 valid configurations, then the labelled invalid share: 4 */
         if (!draw_edm(&a, &b, valid)) {
             CHECK(!valid, "FB_EDM: no valid configuration found in 200000 random draws");
             continue;
@@ -1757,7 +1779,7 @@ static void test_edm(void)
             if (b.nState != SL_STATE_STOP && b.nState != SL_STATE_ERROR && b.nState != SL_STATE_RESET && b.nState != SL_STATE_SAFE) reached_run = 1;
         }
     }
-    printf("FB_EDM: %d of %d cycles (8 valid random configurations) returned SL_OK; run-like state %s, ERROR %s; invalid share: %d configurations, %d cycles\n", ok, cycles, reached_run ? "reached" : "NOT reached", reached_error ? "reached" : "NOT reached", inv_config, inv_cycles);
+    printf("FB_EDM: %d of %d cycles (16 valid random configurations) returned SL_OK; run-like state %s, ERROR %s; invalid share: %d configurations, %d cycles\n", ok, cycles, reached_run ? "reached" : "NOT reached", reached_error ? "reached" : "NOT reached", inv_config, inv_cycles);
     if (2 * ok <= cycles) printf("  status histogram (0, -1, ... -11): %d %d %d %d %d %d %d %d %d %d %d\n", hist[0], hist[1], hist[2], hist[3], hist[4], hist[5], hist[6], hist[7], hist[8], hist[9], hist[10]);
     CHECK(cycles > 0 && 2 * ok > cycles, "FB_EDM: only %d of %d cycles with valid configurations returned SL_OK", ok, cycles);
     CHECK(reached_run, "FB_EDM: the random test never reached a running state (an output on)");
@@ -1810,8 +1832,10 @@ static void test_rs(void)
     a.wInputActive = b.wInputActive = 1;
     { cds_sl_rs_init_struct q; int32_t r; q.pFb = &a; cds_sl_rs_init(&q); r = sl_rs_init(&b);
       CHECK(q.cds_sl_rs_init == r && memcmp(&a, &b, sizeof a) == 0, "cds_sl_rs_init differs from sl_rs_init"); }
-    for (c = 0; c < 10; c++) {
-        int valid = c < 8; /* 8 valid configurations, then the labelled invalid share: 2 */
+    rng = 1717358353u; /* FNV-1a of "FB_RS" */
+    machine = 1u;
+    for (c = 0; c < 20; c++) {
+        int valid = c < 16; /* 16 valid configurations, then the labelled invalid share: 4 */
         if (!draw_rs(&a, &b, valid)) {
             CHECK(!valid, "FB_RS: no valid configuration found in 200000 random draws");
             continue;
@@ -1845,7 +1869,7 @@ static void test_rs(void)
             if (b.nState != SL_STATE_STOP && b.nState != SL_STATE_ERROR && b.nState != SL_STATE_RESET && (b.bRsOut)) reached_run = 1;
         }
     }
-    printf("FB_RS: %d of %d cycles (8 valid random configurations) returned SL_OK; run-like state %s, ERROR %s; invalid share: %d configurations, %d cycles\n", ok, cycles, reached_run ? "reached" : "NOT reached", reached_error ? "reached" : "NOT reached", inv_config, inv_cycles);
+    printf("FB_RS: %d of %d cycles (16 valid random configurations) returned SL_OK; run-like state %s, ERROR %s; invalid share: %d configurations, %d cycles\n", ok, cycles, reached_run ? "reached" : "NOT reached", reached_error ? "reached" : "NOT reached", inv_config, inv_cycles);
     if (2 * ok <= cycles) printf("  status histogram (0, -1, ... -11): %d %d %d %d %d %d %d %d %d %d %d\n", hist[0], hist[1], hist[2], hist[3], hist[4], hist[5], hist[6], hist[7], hist[8], hist[9], hist[10]);
     CHECK(cycles > 0 && 2 * ok > cycles, "FB_RS: only %d of %d cycles with valid configurations returned SL_OK", ok, cycles);
     CHECK(reached_run, "FB_RS: the random test never reached a running state (an output on)");
@@ -1898,8 +1922,10 @@ static void test_sr(void)
     a.wInputActive = b.wInputActive = 1;
     { cds_sl_sr_init_struct q; int32_t r; q.pFb = &a; cds_sl_sr_init(&q); r = sl_sr_init(&b);
       CHECK(q.cds_sl_sr_init == r && memcmp(&a, &b, sizeof a) == 0, "cds_sl_sr_init differs from sl_sr_init"); }
-    for (c = 0; c < 10; c++) {
-        int valid = c < 8; /* 8 valid configurations, then the labelled invalid share: 2 */
+    rng = 2808050683u; /* FNV-1a of "FB_SR" */
+    machine = 1u;
+    for (c = 0; c < 20; c++) {
+        int valid = c < 16; /* 16 valid configurations, then the labelled invalid share: 4 */
         if (!draw_sr(&a, &b, valid)) {
             CHECK(!valid, "FB_SR: no valid configuration found in 200000 random draws");
             continue;
@@ -1933,7 +1959,7 @@ static void test_sr(void)
             if (b.nState != SL_STATE_STOP && b.nState != SL_STATE_ERROR && b.nState != SL_STATE_RESET && (b.bSrOut)) reached_run = 1;
         }
     }
-    printf("FB_SR: %d of %d cycles (8 valid random configurations) returned SL_OK; run-like state %s, ERROR %s; invalid share: %d configurations, %d cycles\n", ok, cycles, reached_run ? "reached" : "NOT reached", reached_error ? "reached" : "NOT reached", inv_config, inv_cycles);
+    printf("FB_SR: %d of %d cycles (16 valid random configurations) returned SL_OK; run-like state %s, ERROR %s; invalid share: %d configurations, %d cycles\n", ok, cycles, reached_run ? "reached" : "NOT reached", reached_error ? "reached" : "NOT reached", inv_config, inv_cycles);
     if (2 * ok <= cycles) printf("  status histogram (0, -1, ... -11): %d %d %d %d %d %d %d %d %d %d %d\n", hist[0], hist[1], hist[2], hist[3], hist[4], hist[5], hist[6], hist[7], hist[8], hist[9], hist[10]);
     CHECK(cycles > 0 && 2 * ok > cycles, "FB_SR: only %d of %d cycles with valid configurations returned SL_OK", ok, cycles);
     CHECK(reached_run, "FB_SR: the random test never reached a running state (an output on)");
@@ -1990,8 +2016,10 @@ static void test_ton(void)
     a.wInputActive = b.wInputActive = 1;
     { cds_sl_ton_init_struct q; int32_t r; q.pFb = &a; cds_sl_ton_init(&q); r = sl_ton_init(&b);
       CHECK(q.cds_sl_ton_init == r && memcmp(&a, &b, sizeof a) == 0, "cds_sl_ton_init differs from sl_ton_init"); }
-    for (c = 0; c < 10; c++) {
-        int valid = c < 8; /* 8 valid configurations, then the labelled invalid share: 2 */
+    rng = 278285699u; /* FNV-1a of "FB_TON" */
+    machine = 1u;
+    for (c = 0; c < 20; c++) {
+        int valid = c < 16; /* 16 valid configurations, then the labelled invalid share: 4 */
         if (!draw_ton(&a, &b, valid)) {
             CHECK(!valid, "FB_TON: no valid configuration found in 200000 random draws");
             continue;
@@ -2023,7 +2051,7 @@ static void test_ton(void)
             if (b.nState != SL_STATE_STOP && b.nState != SL_STATE_ERROR && b.nState != SL_STATE_RESET && (b.bTonOut)) reached_run = 1;
         }
     }
-    printf("FB_TON: %d of %d cycles (8 valid random configurations) returned SL_OK; run-like state %s, ERROR %s; invalid share: %d configurations, %d cycles\n", ok, cycles, reached_run ? "reached" : "NOT reached", reached_error ? "reached" : "NOT reached", inv_config, inv_cycles);
+    printf("FB_TON: %d of %d cycles (16 valid random configurations) returned SL_OK; run-like state %s, ERROR %s; invalid share: %d configurations, %d cycles\n", ok, cycles, reached_run ? "reached" : "NOT reached", reached_error ? "reached" : "NOT reached", inv_config, inv_cycles);
     if (2 * ok <= cycles) printf("  status histogram (0, -1, ... -11): %d %d %d %d %d %d %d %d %d %d %d\n", hist[0], hist[1], hist[2], hist[3], hist[4], hist[5], hist[6], hist[7], hist[8], hist[9], hist[10]);
     CHECK(cycles > 0 && 2 * ok > cycles, "FB_TON: only %d of %d cycles with valid configurations returned SL_OK", ok, cycles);
     CHECK(reached_run, "FB_TON: the random test never reached a running state (an output on)");
@@ -2080,8 +2108,10 @@ static void test_tof(void)
     a.wInputActive = b.wInputActive = 1;
     { cds_sl_tof_init_struct q; int32_t r; q.pFb = &a; cds_sl_tof_init(&q); r = sl_tof_init(&b);
       CHECK(q.cds_sl_tof_init == r && memcmp(&a, &b, sizeof a) == 0, "cds_sl_tof_init differs from sl_tof_init"); }
-    for (c = 0; c < 10; c++) {
-        int valid = c < 8; /* 8 valid configurations, then the labelled invalid share: 2 */
+    rng = 412506651u; /* FNV-1a of "FB_TOF" */
+    machine = 1u;
+    for (c = 0; c < 20; c++) {
+        int valid = c < 16; /* 16 valid configurations, then the labelled invalid share: 4 */
         if (!draw_tof(&a, &b, valid)) {
             CHECK(!valid, "FB_TOF: no valid configuration found in 200000 random draws");
             continue;
@@ -2113,7 +2143,7 @@ static void test_tof(void)
             if (b.nState != SL_STATE_STOP && b.nState != SL_STATE_ERROR && b.nState != SL_STATE_RESET && (b.bTofOut)) reached_run = 1;
         }
     }
-    printf("FB_TOF: %d of %d cycles (8 valid random configurations) returned SL_OK; run-like state %s, ERROR %s; invalid share: %d configurations, %d cycles\n", ok, cycles, reached_run ? "reached" : "NOT reached", reached_error ? "reached" : "NOT reached", inv_config, inv_cycles);
+    printf("FB_TOF: %d of %d cycles (16 valid random configurations) returned SL_OK; run-like state %s, ERROR %s; invalid share: %d configurations, %d cycles\n", ok, cycles, reached_run ? "reached" : "NOT reached", reached_error ? "reached" : "NOT reached", inv_config, inv_cycles);
     if (2 * ok <= cycles) printf("  status histogram (0, -1, ... -11): %d %d %d %d %d %d %d %d %d %d %d\n", hist[0], hist[1], hist[2], hist[3], hist[4], hist[5], hist[6], hist[7], hist[8], hist[9], hist[10]);
     CHECK(cycles > 0 && 2 * ok > cycles, "FB_TOF: only %d of %d cycles with valid configurations returned SL_OK", ok, cycles);
     CHECK(reached_run, "FB_TOF: the random test never reached a running state (an output on)");
@@ -2124,7 +2154,7 @@ static void rnd_config_add_int(FB_ADD_INT *x)
 {
     { static const unsigned v[] = {0u, 1u, 10u, 100u}; x->nAnalogIn1 = (int16_t)v[rnd() % 4u]; }
     { static const unsigned v[] = {0u, 1u, 10u, 100u}; x->nAnalogIn2 = (int16_t)v[rnd() % 4u]; }
-    x->wInputActive = (uint16_t)(rnd() & 0x0u);
+    x->wInputActive = (uint16_t)(rnd() & 0x300u);
 }
 /* 1: a valid configuration (want_valid) or an invalid one was drawn into a and b */
 static int draw_add_int(FB_ADD_INT *a, FB_ADD_INT *b, int want_valid)
@@ -2168,8 +2198,10 @@ static void test_add_int(void)
     a.wInputActive = b.wInputActive = 1;
     { cds_sl_add_int_init_struct q; int32_t r; q.pFb = &a; cds_sl_add_int_init(&q); r = sl_add_int_init(&b);
       CHECK(q.cds_sl_add_int_init == r && memcmp(&a, &b, sizeof a) == 0, "cds_sl_add_int_init differs from sl_add_int_init"); }
-    for (c = 0; c < 10; c++) {
-        int valid = c < 8; /* 8 valid configurations, then the labelled invalid share: 2 */
+    rng = 2942386371u; /* FNV-1a of "FB_ADD_INT" */
+    machine = 1u;
+    for (c = 0; c < 20; c++) {
+        int valid = c < 16; /* 16 valid configurations, then the labelled invalid share: 4 */
         if (!draw_add_int(&a, &b, valid)) {
             CHECK(!valid, "FB_ADD_INT: no valid configuration found in 200000 random draws");
             continue;
@@ -2183,8 +2215,8 @@ static void test_add_int(void)
             next_machine();
             a.bErrAck = b.bErrAck = next_signal(a.bErrAck, 1, pol >> 0);
             a.bRun = b.bRun = (uint8_t)(k >= 2 && rnd() % 100u != 0u);
-            if (valid && k == bump) { a.nAnalogIn1++; b.nAnalogIn1++; } /* changed while running: ERROR */
-            if (valid && k == bump + 2) { a.nAnalogIn1--; b.nAnalogIn1--; } /* restored */
+            if (valid && k == bump) { a.wInputActive++; b.wInputActive++; } /* changed while running: ERROR */
+            if (valid && k == bump + 2) { a.wInputActive--; b.wInputActive--; } /* restored */
             p.pFb = &a;
             p.tNow = t += 10u;
             cds_sl_add_int_cycle(&p);
@@ -2199,7 +2231,7 @@ static void test_add_int(void)
             if (b.nState != SL_STATE_STOP && b.nState != SL_STATE_ERROR && b.nState != SL_STATE_RESET && b.nState != SL_STATE_SAFE) reached_run = 1;
         }
     }
-    printf("FB_ADD_INT: %d of %d cycles (8 valid random configurations) returned SL_OK; run-like state %s, ERROR %s; invalid share: %d configurations, %d cycles\n", ok, cycles, reached_run ? "reached" : "NOT reached", reached_error ? "reached" : "NOT reached", inv_config, inv_cycles);
+    printf("FB_ADD_INT: %d of %d cycles (16 valid random configurations) returned SL_OK; run-like state %s, ERROR %s; invalid share: %d configurations, %d cycles\n", ok, cycles, reached_run ? "reached" : "NOT reached", reached_error ? "reached" : "NOT reached", inv_config, inv_cycles);
     if (2 * ok <= cycles) printf("  status histogram (0, -1, ... -11): %d %d %d %d %d %d %d %d %d %d %d\n", hist[0], hist[1], hist[2], hist[3], hist[4], hist[5], hist[6], hist[7], hist[8], hist[9], hist[10]);
     CHECK(cycles > 0 && 2 * ok > cycles, "FB_ADD_INT: only %d of %d cycles with valid configurations returned SL_OK", ok, cycles);
     CHECK(reached_run, "FB_ADD_INT: the random test never reached a running state (an output on)");
@@ -2210,7 +2242,7 @@ static void rnd_config_add_uint(FB_ADD_UINT *x)
 {
     { static const unsigned v[] = {0u, 1u, 10u, 100u}; x->nAnalogIn1 = (uint16_t)v[rnd() % 4u]; }
     { static const unsigned v[] = {0u, 1u, 10u, 100u}; x->nAnalogIn2 = (uint16_t)v[rnd() % 4u]; }
-    x->wInputActive = (uint16_t)(rnd() & 0x0u);
+    x->wInputActive = (uint16_t)(rnd() & 0x300u);
 }
 /* 1: a valid configuration (want_valid) or an invalid one was drawn into a and b */
 static int draw_add_uint(FB_ADD_UINT *a, FB_ADD_UINT *b, int want_valid)
@@ -2254,8 +2286,10 @@ static void test_add_uint(void)
     a.wInputActive = b.wInputActive = 1;
     { cds_sl_add_uint_init_struct q; int32_t r; q.pFb = &a; cds_sl_add_uint_init(&q); r = sl_add_uint_init(&b);
       CHECK(q.cds_sl_add_uint_init == r && memcmp(&a, &b, sizeof a) == 0, "cds_sl_add_uint_init differs from sl_add_uint_init"); }
-    for (c = 0; c < 10; c++) {
-        int valid = c < 8; /* 8 valid configurations, then the labelled invalid share: 2 */
+    rng = 3374318694u; /* FNV-1a of "FB_ADD_UINT" */
+    machine = 1u;
+    for (c = 0; c < 20; c++) {
+        int valid = c < 16; /* 16 valid configurations, then the labelled invalid share: 4 */
         if (!draw_add_uint(&a, &b, valid)) {
             CHECK(!valid, "FB_ADD_UINT: no valid configuration found in 200000 random draws");
             continue;
@@ -2269,8 +2303,8 @@ static void test_add_uint(void)
             next_machine();
             a.bErrAck = b.bErrAck = next_signal(a.bErrAck, 1, pol >> 0);
             a.bRun = b.bRun = (uint8_t)(k >= 2 && rnd() % 100u != 0u);
-            if (valid && k == bump) { a.nAnalogIn1++; b.nAnalogIn1++; } /* changed while running: ERROR */
-            if (valid && k == bump + 2) { a.nAnalogIn1--; b.nAnalogIn1--; } /* restored */
+            if (valid && k == bump) { a.wInputActive++; b.wInputActive++; } /* changed while running: ERROR */
+            if (valid && k == bump + 2) { a.wInputActive--; b.wInputActive--; } /* restored */
             p.pFb = &a;
             p.tNow = t += 10u;
             cds_sl_add_uint_cycle(&p);
@@ -2285,7 +2319,7 @@ static void test_add_uint(void)
             if (b.nState != SL_STATE_STOP && b.nState != SL_STATE_ERROR && b.nState != SL_STATE_RESET && b.nState != SL_STATE_SAFE) reached_run = 1;
         }
     }
-    printf("FB_ADD_UINT: %d of %d cycles (8 valid random configurations) returned SL_OK; run-like state %s, ERROR %s; invalid share: %d configurations, %d cycles\n", ok, cycles, reached_run ? "reached" : "NOT reached", reached_error ? "reached" : "NOT reached", inv_config, inv_cycles);
+    printf("FB_ADD_UINT: %d of %d cycles (16 valid random configurations) returned SL_OK; run-like state %s, ERROR %s; invalid share: %d configurations, %d cycles\n", ok, cycles, reached_run ? "reached" : "NOT reached", reached_error ? "reached" : "NOT reached", inv_config, inv_cycles);
     if (2 * ok <= cycles) printf("  status histogram (0, -1, ... -11): %d %d %d %d %d %d %d %d %d %d %d\n", hist[0], hist[1], hist[2], hist[3], hist[4], hist[5], hist[6], hist[7], hist[8], hist[9], hist[10]);
     CHECK(cycles > 0 && 2 * ok > cycles, "FB_ADD_UINT: only %d of %d cycles with valid configurations returned SL_OK", ok, cycles);
     CHECK(reached_run, "FB_ADD_UINT: the random test never reached a running state (an output on)");
@@ -2296,7 +2330,7 @@ static void rnd_config_add_dint(FB_ADD_DINT *x)
 {
     { static const unsigned v[] = {0u, 1u, 10u, 100u}; x->nAnalogIn1 = (int32_t)v[rnd() % 4u]; }
     { static const unsigned v[] = {0u, 1u, 10u, 100u}; x->nAnalogIn2 = (int32_t)v[rnd() % 4u]; }
-    x->wInputActive = (uint16_t)(rnd() & 0x0u);
+    x->wInputActive = (uint16_t)(rnd() & 0x300u);
 }
 /* 1: a valid configuration (want_valid) or an invalid one was drawn into a and b */
 static int draw_add_dint(FB_ADD_DINT *a, FB_ADD_DINT *b, int want_valid)
@@ -2340,8 +2374,10 @@ static void test_add_dint(void)
     a.wInputActive = b.wInputActive = 1;
     { cds_sl_add_dint_init_struct q; int32_t r; q.pFb = &a; cds_sl_add_dint_init(&q); r = sl_add_dint_init(&b);
       CHECK(q.cds_sl_add_dint_init == r && memcmp(&a, &b, sizeof a) == 0, "cds_sl_add_dint_init differs from sl_add_dint_init"); }
-    for (c = 0; c < 10; c++) {
-        int valid = c < 8; /* 8 valid configurations, then the labelled invalid share: 2 */
+    rng = 1426161443u; /* FNV-1a of "FB_ADD_DINT" */
+    machine = 1u;
+    for (c = 0; c < 20; c++) {
+        int valid = c < 16; /* 16 valid configurations, then the labelled invalid share: 4 */
         if (!draw_add_dint(&a, &b, valid)) {
             CHECK(!valid, "FB_ADD_DINT: no valid configuration found in 200000 random draws");
             continue;
@@ -2355,8 +2391,8 @@ static void test_add_dint(void)
             next_machine();
             a.bErrAck = b.bErrAck = next_signal(a.bErrAck, 1, pol >> 0);
             a.bRun = b.bRun = (uint8_t)(k >= 2 && rnd() % 100u != 0u);
-            if (valid && k == bump) { a.nAnalogIn1++; b.nAnalogIn1++; } /* changed while running: ERROR */
-            if (valid && k == bump + 2) { a.nAnalogIn1--; b.nAnalogIn1--; } /* restored */
+            if (valid && k == bump) { a.wInputActive++; b.wInputActive++; } /* changed while running: ERROR */
+            if (valid && k == bump + 2) { a.wInputActive--; b.wInputActive--; } /* restored */
             p.pFb = &a;
             p.tNow = t += 10u;
             cds_sl_add_dint_cycle(&p);
@@ -2371,7 +2407,7 @@ static void test_add_dint(void)
             if (b.nState != SL_STATE_STOP && b.nState != SL_STATE_ERROR && b.nState != SL_STATE_RESET && b.nState != SL_STATE_SAFE) reached_run = 1;
         }
     }
-    printf("FB_ADD_DINT: %d of %d cycles (8 valid random configurations) returned SL_OK; run-like state %s, ERROR %s; invalid share: %d configurations, %d cycles\n", ok, cycles, reached_run ? "reached" : "NOT reached", reached_error ? "reached" : "NOT reached", inv_config, inv_cycles);
+    printf("FB_ADD_DINT: %d of %d cycles (16 valid random configurations) returned SL_OK; run-like state %s, ERROR %s; invalid share: %d configurations, %d cycles\n", ok, cycles, reached_run ? "reached" : "NOT reached", reached_error ? "reached" : "NOT reached", inv_config, inv_cycles);
     if (2 * ok <= cycles) printf("  status histogram (0, -1, ... -11): %d %d %d %d %d %d %d %d %d %d %d\n", hist[0], hist[1], hist[2], hist[3], hist[4], hist[5], hist[6], hist[7], hist[8], hist[9], hist[10]);
     CHECK(cycles > 0 && 2 * ok > cycles, "FB_ADD_DINT: only %d of %d cycles with valid configurations returned SL_OK", ok, cycles);
     CHECK(reached_run, "FB_ADD_DINT: the random test never reached a running state (an output on)");
@@ -2382,7 +2418,7 @@ static void rnd_config_add_udint(FB_ADD_UDINT *x)
 {
     { static const unsigned v[] = {0u, 1u, 10u, 100u}; x->nAnalogIn1 = (uint32_t)v[rnd() % 4u]; }
     { static const unsigned v[] = {0u, 1u, 10u, 100u}; x->nAnalogIn2 = (uint32_t)v[rnd() % 4u]; }
-    x->wInputActive = (uint16_t)(rnd() & 0x0u);
+    x->wInputActive = (uint16_t)(rnd() & 0x300u);
 }
 /* 1: a valid configuration (want_valid) or an invalid one was drawn into a and b */
 static int draw_add_udint(FB_ADD_UDINT *a, FB_ADD_UDINT *b, int want_valid)
@@ -2426,8 +2462,10 @@ static void test_add_udint(void)
     a.wInputActive = b.wInputActive = 1;
     { cds_sl_add_udint_init_struct q; int32_t r; q.pFb = &a; cds_sl_add_udint_init(&q); r = sl_add_udint_init(&b);
       CHECK(q.cds_sl_add_udint_init == r && memcmp(&a, &b, sizeof a) == 0, "cds_sl_add_udint_init differs from sl_add_udint_init"); }
-    for (c = 0; c < 10; c++) {
-        int valid = c < 8; /* 8 valid configurations, then the labelled invalid share: 2 */
+    rng = 2013754740u; /* FNV-1a of "FB_ADD_UDINT" */
+    machine = 1u;
+    for (c = 0; c < 20; c++) {
+        int valid = c < 16; /* 16 valid configurations, then the labelled invalid share: 4 */
         if (!draw_add_udint(&a, &b, valid)) {
             CHECK(!valid, "FB_ADD_UDINT: no valid configuration found in 200000 random draws");
             continue;
@@ -2441,8 +2479,8 @@ static void test_add_udint(void)
             next_machine();
             a.bErrAck = b.bErrAck = next_signal(a.bErrAck, 1, pol >> 0);
             a.bRun = b.bRun = (uint8_t)(k >= 2 && rnd() % 100u != 0u);
-            if (valid && k == bump) { a.nAnalogIn1++; b.nAnalogIn1++; } /* changed while running: ERROR */
-            if (valid && k == bump + 2) { a.nAnalogIn1--; b.nAnalogIn1--; } /* restored */
+            if (valid && k == bump) { a.wInputActive++; b.wInputActive++; } /* changed while running: ERROR */
+            if (valid && k == bump + 2) { a.wInputActive--; b.wInputActive--; } /* restored */
             p.pFb = &a;
             p.tNow = t += 10u;
             cds_sl_add_udint_cycle(&p);
@@ -2457,7 +2495,7 @@ static void test_add_udint(void)
             if (b.nState != SL_STATE_STOP && b.nState != SL_STATE_ERROR && b.nState != SL_STATE_RESET && b.nState != SL_STATE_SAFE) reached_run = 1;
         }
     }
-    printf("FB_ADD_UDINT: %d of %d cycles (8 valid random configurations) returned SL_OK; run-like state %s, ERROR %s; invalid share: %d configurations, %d cycles\n", ok, cycles, reached_run ? "reached" : "NOT reached", reached_error ? "reached" : "NOT reached", inv_config, inv_cycles);
+    printf("FB_ADD_UDINT: %d of %d cycles (16 valid random configurations) returned SL_OK; run-like state %s, ERROR %s; invalid share: %d configurations, %d cycles\n", ok, cycles, reached_run ? "reached" : "NOT reached", reached_error ? "reached" : "NOT reached", inv_config, inv_cycles);
     if (2 * ok <= cycles) printf("  status histogram (0, -1, ... -11): %d %d %d %d %d %d %d %d %d %d %d\n", hist[0], hist[1], hist[2], hist[3], hist[4], hist[5], hist[6], hist[7], hist[8], hist[9], hist[10]);
     CHECK(cycles > 0 && 2 * ok > cycles, "FB_ADD_UDINT: only %d of %d cycles with valid configurations returned SL_OK", ok, cycles);
     CHECK(reached_run, "FB_ADD_UDINT: the random test never reached a running state (an output on)");
@@ -2468,7 +2506,7 @@ static void rnd_config_sub_int(FB_SUB_INT *x)
 {
     { static const unsigned v[] = {0u, 1u, 10u, 100u}; x->nAnalogIn1 = (int16_t)v[rnd() % 4u]; }
     { static const unsigned v[] = {0u, 1u, 10u, 100u}; x->nAnalogIn2 = (int16_t)v[rnd() % 4u]; }
-    x->wInputActive = (uint16_t)(rnd() & 0x0u);
+    x->wInputActive = (uint16_t)(rnd() & 0x300u);
 }
 /* 1: a valid configuration (want_valid) or an invalid one was drawn into a and b */
 static int draw_sub_int(FB_SUB_INT *a, FB_SUB_INT *b, int want_valid)
@@ -2512,8 +2550,10 @@ static void test_sub_int(void)
     a.wInputActive = b.wInputActive = 1;
     { cds_sl_sub_int_init_struct q; int32_t r; q.pFb = &a; cds_sl_sub_int_init(&q); r = sl_sub_int_init(&b);
       CHECK(q.cds_sl_sub_int_init == r && memcmp(&a, &b, sizeof a) == 0, "cds_sl_sub_int_init differs from sl_sub_int_init"); }
-    for (c = 0; c < 10; c++) {
-        int valid = c < 8; /* 8 valid configurations, then the labelled invalid share: 2 */
+    rng = 3260802222u; /* FNV-1a of "FB_SUB_INT" */
+    machine = 1u;
+    for (c = 0; c < 20; c++) {
+        int valid = c < 16; /* 16 valid configurations, then the labelled invalid share: 4 */
         if (!draw_sub_int(&a, &b, valid)) {
             CHECK(!valid, "FB_SUB_INT: no valid configuration found in 200000 random draws");
             continue;
@@ -2527,8 +2567,8 @@ static void test_sub_int(void)
             next_machine();
             a.bErrAck = b.bErrAck = next_signal(a.bErrAck, 1, pol >> 0);
             a.bRun = b.bRun = (uint8_t)(k >= 2 && rnd() % 100u != 0u);
-            if (valid && k == bump) { a.nAnalogIn1++; b.nAnalogIn1++; } /* changed while running: ERROR */
-            if (valid && k == bump + 2) { a.nAnalogIn1--; b.nAnalogIn1--; } /* restored */
+            if (valid && k == bump) { a.wInputActive++; b.wInputActive++; } /* changed while running: ERROR */
+            if (valid && k == bump + 2) { a.wInputActive--; b.wInputActive--; } /* restored */
             p.pFb = &a;
             p.tNow = t += 10u;
             cds_sl_sub_int_cycle(&p);
@@ -2543,7 +2583,7 @@ static void test_sub_int(void)
             if (b.nState != SL_STATE_STOP && b.nState != SL_STATE_ERROR && b.nState != SL_STATE_RESET && b.nState != SL_STATE_SAFE) reached_run = 1;
         }
     }
-    printf("FB_SUB_INT: %d of %d cycles (8 valid random configurations) returned SL_OK; run-like state %s, ERROR %s; invalid share: %d configurations, %d cycles\n", ok, cycles, reached_run ? "reached" : "NOT reached", reached_error ? "reached" : "NOT reached", inv_config, inv_cycles);
+    printf("FB_SUB_INT: %d of %d cycles (16 valid random configurations) returned SL_OK; run-like state %s, ERROR %s; invalid share: %d configurations, %d cycles\n", ok, cycles, reached_run ? "reached" : "NOT reached", reached_error ? "reached" : "NOT reached", inv_config, inv_cycles);
     if (2 * ok <= cycles) printf("  status histogram (0, -1, ... -11): %d %d %d %d %d %d %d %d %d %d %d\n", hist[0], hist[1], hist[2], hist[3], hist[4], hist[5], hist[6], hist[7], hist[8], hist[9], hist[10]);
     CHECK(cycles > 0 && 2 * ok > cycles, "FB_SUB_INT: only %d of %d cycles with valid configurations returned SL_OK", ok, cycles);
     CHECK(reached_run, "FB_SUB_INT: the random test never reached a running state (an output on)");
@@ -2554,7 +2594,7 @@ static void rnd_config_sub_uint(FB_SUB_UINT *x)
 {
     { static const unsigned v[] = {0u, 1u, 10u, 100u}; x->nAnalogIn1 = (uint16_t)v[rnd() % 4u]; }
     { static const unsigned v[] = {0u, 1u, 10u, 100u}; x->nAnalogIn2 = (uint16_t)v[rnd() % 4u]; }
-    x->wInputActive = (uint16_t)(rnd() & 0x0u);
+    x->wInputActive = (uint16_t)(rnd() & 0x300u);
 }
 /* 1: a valid configuration (want_valid) or an invalid one was drawn into a and b */
 static int draw_sub_uint(FB_SUB_UINT *a, FB_SUB_UINT *b, int want_valid)
@@ -2598,8 +2638,10 @@ static void test_sub_uint(void)
     a.wInputActive = b.wInputActive = 1;
     { cds_sl_sub_uint_init_struct q; int32_t r; q.pFb = &a; cds_sl_sub_uint_init(&q); r = sl_sub_uint_init(&b);
       CHECK(q.cds_sl_sub_uint_init == r && memcmp(&a, &b, sizeof a) == 0, "cds_sl_sub_uint_init differs from sl_sub_uint_init"); }
-    for (c = 0; c < 10; c++) {
-        int valid = c < 8; /* 8 valid configurations, then the labelled invalid share: 2 */
+    rng = 2602294737u; /* FNV-1a of "FB_SUB_UINT" */
+    machine = 1u;
+    for (c = 0; c < 20; c++) {
+        int valid = c < 16; /* 16 valid configurations, then the labelled invalid share: 4 */
         if (!draw_sub_uint(&a, &b, valid)) {
             CHECK(!valid, "FB_SUB_UINT: no valid configuration found in 200000 random draws");
             continue;
@@ -2613,8 +2655,8 @@ static void test_sub_uint(void)
             next_machine();
             a.bErrAck = b.bErrAck = next_signal(a.bErrAck, 1, pol >> 0);
             a.bRun = b.bRun = (uint8_t)(k >= 2 && rnd() % 100u != 0u);
-            if (valid && k == bump) { a.nAnalogIn1++; b.nAnalogIn1++; } /* changed while running: ERROR */
-            if (valid && k == bump + 2) { a.nAnalogIn1--; b.nAnalogIn1--; } /* restored */
+            if (valid && k == bump) { a.wInputActive++; b.wInputActive++; } /* changed while running: ERROR */
+            if (valid && k == bump + 2) { a.wInputActive--; b.wInputActive--; } /* restored */
             p.pFb = &a;
             p.tNow = t += 10u;
             cds_sl_sub_uint_cycle(&p);
@@ -2629,7 +2671,7 @@ static void test_sub_uint(void)
             if (b.nState != SL_STATE_STOP && b.nState != SL_STATE_ERROR && b.nState != SL_STATE_RESET && b.nState != SL_STATE_SAFE) reached_run = 1;
         }
     }
-    printf("FB_SUB_UINT: %d of %d cycles (8 valid random configurations) returned SL_OK; run-like state %s, ERROR %s; invalid share: %d configurations, %d cycles\n", ok, cycles, reached_run ? "reached" : "NOT reached", reached_error ? "reached" : "NOT reached", inv_config, inv_cycles);
+    printf("FB_SUB_UINT: %d of %d cycles (16 valid random configurations) returned SL_OK; run-like state %s, ERROR %s; invalid share: %d configurations, %d cycles\n", ok, cycles, reached_run ? "reached" : "NOT reached", reached_error ? "reached" : "NOT reached", inv_config, inv_cycles);
     if (2 * ok <= cycles) printf("  status histogram (0, -1, ... -11): %d %d %d %d %d %d %d %d %d %d %d\n", hist[0], hist[1], hist[2], hist[3], hist[4], hist[5], hist[6], hist[7], hist[8], hist[9], hist[10]);
     CHECK(cycles > 0 && 2 * ok > cycles, "FB_SUB_UINT: only %d of %d cycles with valid configurations returned SL_OK", ok, cycles);
     CHECK(reached_run, "FB_SUB_UINT: the random test never reached a running state (an output on)");
@@ -2640,7 +2682,7 @@ static void rnd_config_sub_dint(FB_SUB_DINT *x)
 {
     { static const unsigned v[] = {0u, 1u, 10u, 100u}; x->nAnalogIn1 = (int32_t)v[rnd() % 4u]; }
     { static const unsigned v[] = {0u, 1u, 10u, 100u}; x->nAnalogIn2 = (int32_t)v[rnd() % 4u]; }
-    x->wInputActive = (uint16_t)(rnd() & 0x0u);
+    x->wInputActive = (uint16_t)(rnd() & 0x300u);
 }
 /* 1: a valid configuration (want_valid) or an invalid one was drawn into a and b */
 static int draw_sub_dint(FB_SUB_DINT *a, FB_SUB_DINT *b, int want_valid)
@@ -2684,8 +2726,10 @@ static void test_sub_dint(void)
     a.wInputActive = b.wInputActive = 1;
     { cds_sl_sub_dint_init_struct q; int32_t r; q.pFb = &a; cds_sl_sub_dint_init(&q); r = sl_sub_dint_init(&b);
       CHECK(q.cds_sl_sub_dint_init == r && memcmp(&a, &b, sizeof a) == 0, "cds_sl_sub_dint_init differs from sl_sub_dint_init"); }
-    for (c = 0; c < 10; c++) {
-        int valid = c < 8; /* 8 valid configurations, then the labelled invalid share: 2 */
+    rng = 3591270316u; /* FNV-1a of "FB_SUB_DINT" */
+    machine = 1u;
+    for (c = 0; c < 20; c++) {
+        int valid = c < 16; /* 16 valid configurations, then the labelled invalid share: 4 */
         if (!draw_sub_dint(&a, &b, valid)) {
             CHECK(!valid, "FB_SUB_DINT: no valid configuration found in 200000 random draws");
             continue;
@@ -2699,8 +2743,8 @@ static void test_sub_dint(void)
             next_machine();
             a.bErrAck = b.bErrAck = next_signal(a.bErrAck, 1, pol >> 0);
             a.bRun = b.bRun = (uint8_t)(k >= 2 && rnd() % 100u != 0u);
-            if (valid && k == bump) { a.nAnalogIn1++; b.nAnalogIn1++; } /* changed while running: ERROR */
-            if (valid && k == bump + 2) { a.nAnalogIn1--; b.nAnalogIn1--; } /* restored */
+            if (valid && k == bump) { a.wInputActive++; b.wInputActive++; } /* changed while running: ERROR */
+            if (valid && k == bump + 2) { a.wInputActive--; b.wInputActive--; } /* restored */
             p.pFb = &a;
             p.tNow = t += 10u;
             cds_sl_sub_dint_cycle(&p);
@@ -2715,7 +2759,7 @@ static void test_sub_dint(void)
             if (b.nState != SL_STATE_STOP && b.nState != SL_STATE_ERROR && b.nState != SL_STATE_RESET && b.nState != SL_STATE_SAFE) reached_run = 1;
         }
     }
-    printf("FB_SUB_DINT: %d of %d cycles (8 valid random configurations) returned SL_OK; run-like state %s, ERROR %s; invalid share: %d configurations, %d cycles\n", ok, cycles, reached_run ? "reached" : "NOT reached", reached_error ? "reached" : "NOT reached", inv_config, inv_cycles);
+    printf("FB_SUB_DINT: %d of %d cycles (16 valid random configurations) returned SL_OK; run-like state %s, ERROR %s; invalid share: %d configurations, %d cycles\n", ok, cycles, reached_run ? "reached" : "NOT reached", reached_error ? "reached" : "NOT reached", inv_config, inv_cycles);
     if (2 * ok <= cycles) printf("  status histogram (0, -1, ... -11): %d %d %d %d %d %d %d %d %d %d %d\n", hist[0], hist[1], hist[2], hist[3], hist[4], hist[5], hist[6], hist[7], hist[8], hist[9], hist[10]);
     CHECK(cycles > 0 && 2 * ok > cycles, "FB_SUB_DINT: only %d of %d cycles with valid configurations returned SL_OK", ok, cycles);
     CHECK(reached_run, "FB_SUB_DINT: the random test never reached a running state (an output on)");
@@ -2726,7 +2770,7 @@ static void rnd_config_sub_udint(FB_SUB_UDINT *x)
 {
     { static const unsigned v[] = {0u, 1u, 10u, 100u}; x->nAnalogIn1 = (uint32_t)v[rnd() % 4u]; }
     { static const unsigned v[] = {0u, 1u, 10u, 100u}; x->nAnalogIn2 = (uint32_t)v[rnd() % 4u]; }
-    x->wInputActive = (uint16_t)(rnd() & 0x0u);
+    x->wInputActive = (uint16_t)(rnd() & 0x300u);
 }
 /* 1: a valid configuration (want_valid) or an invalid one was drawn into a and b */
 static int draw_sub_udint(FB_SUB_UDINT *a, FB_SUB_UDINT *b, int want_valid)
@@ -2770,8 +2814,10 @@ static void test_sub_udint(void)
     a.wInputActive = b.wInputActive = 1;
     { cds_sl_sub_udint_init_struct q; int32_t r; q.pFb = &a; cds_sl_sub_udint_init(&q); r = sl_sub_udint_init(&b);
       CHECK(q.cds_sl_sub_udint_init == r && memcmp(&a, &b, sizeof a) == 0, "cds_sl_sub_udint_init differs from sl_sub_udint_init"); }
-    for (c = 0; c < 10; c++) {
-        int valid = c < 8; /* 8 valid configurations, then the labelled invalid share: 2 */
+    rng = 3882225429u; /* FNV-1a of "FB_SUB_UDINT" */
+    machine = 1u;
+    for (c = 0; c < 20; c++) {
+        int valid = c < 16; /* 16 valid configurations, then the labelled invalid share: 4 */
         if (!draw_sub_udint(&a, &b, valid)) {
             CHECK(!valid, "FB_SUB_UDINT: no valid configuration found in 200000 random draws");
             continue;
@@ -2785,8 +2831,8 @@ static void test_sub_udint(void)
             next_machine();
             a.bErrAck = b.bErrAck = next_signal(a.bErrAck, 1, pol >> 0);
             a.bRun = b.bRun = (uint8_t)(k >= 2 && rnd() % 100u != 0u);
-            if (valid && k == bump) { a.nAnalogIn1++; b.nAnalogIn1++; } /* changed while running: ERROR */
-            if (valid && k == bump + 2) { a.nAnalogIn1--; b.nAnalogIn1--; } /* restored */
+            if (valid && k == bump) { a.wInputActive++; b.wInputActive++; } /* changed while running: ERROR */
+            if (valid && k == bump + 2) { a.wInputActive--; b.wInputActive--; } /* restored */
             p.pFb = &a;
             p.tNow = t += 10u;
             cds_sl_sub_udint_cycle(&p);
@@ -2801,7 +2847,7 @@ static void test_sub_udint(void)
             if (b.nState != SL_STATE_STOP && b.nState != SL_STATE_ERROR && b.nState != SL_STATE_RESET && b.nState != SL_STATE_SAFE) reached_run = 1;
         }
     }
-    printf("FB_SUB_UDINT: %d of %d cycles (8 valid random configurations) returned SL_OK; run-like state %s, ERROR %s; invalid share: %d configurations, %d cycles\n", ok, cycles, reached_run ? "reached" : "NOT reached", reached_error ? "reached" : "NOT reached", inv_config, inv_cycles);
+    printf("FB_SUB_UDINT: %d of %d cycles (16 valid random configurations) returned SL_OK; run-like state %s, ERROR %s; invalid share: %d configurations, %d cycles\n", ok, cycles, reached_run ? "reached" : "NOT reached", reached_error ? "reached" : "NOT reached", inv_config, inv_cycles);
     if (2 * ok <= cycles) printf("  status histogram (0, -1, ... -11): %d %d %d %d %d %d %d %d %d %d %d\n", hist[0], hist[1], hist[2], hist[3], hist[4], hist[5], hist[6], hist[7], hist[8], hist[9], hist[10]);
     CHECK(cycles > 0 && 2 * ok > cycles, "FB_SUB_UDINT: only %d of %d cycles with valid configurations returned SL_OK", ok, cycles);
     CHECK(reached_run, "FB_SUB_UDINT: the random test never reached a running state (an output on)");
@@ -2812,7 +2858,7 @@ static void rnd_config_mul_int(FB_MUL_INT *x)
 {
     { static const unsigned v[] = {0u, 1u, 10u, 100u}; x->nAnalogIn1 = (int16_t)v[rnd() % 4u]; }
     { static const unsigned v[] = {0u, 1u, 10u, 100u}; x->nAnalogIn2 = (int16_t)v[rnd() % 4u]; }
-    x->wInputActive = (uint16_t)(rnd() & 0x0u);
+    x->wInputActive = (uint16_t)(rnd() & 0x300u);
 }
 /* 1: a valid configuration (want_valid) or an invalid one was drawn into a and b */
 static int draw_mul_int(FB_MUL_INT *a, FB_MUL_INT *b, int want_valid)
@@ -2856,8 +2902,10 @@ static void test_mul_int(void)
     a.wInputActive = b.wInputActive = 1;
     { cds_sl_mul_int_init_struct q; int32_t r; q.pFb = &a; cds_sl_mul_int_init(&q); r = sl_mul_int_init(&b);
       CHECK(q.cds_sl_mul_int_init == r && memcmp(&a, &b, sizeof a) == 0, "cds_sl_mul_int_init differs from sl_mul_int_init"); }
-    for (c = 0; c < 10; c++) {
-        int valid = c < 8; /* 8 valid configurations, then the labelled invalid share: 2 */
+    rng = 3732231426u; /* FNV-1a of "FB_MUL_INT" */
+    machine = 1u;
+    for (c = 0; c < 20; c++) {
+        int valid = c < 16; /* 16 valid configurations, then the labelled invalid share: 4 */
         if (!draw_mul_int(&a, &b, valid)) {
             CHECK(!valid, "FB_MUL_INT: no valid configuration found in 200000 random draws");
             continue;
@@ -2871,8 +2919,8 @@ static void test_mul_int(void)
             next_machine();
             a.bErrAck = b.bErrAck = next_signal(a.bErrAck, 1, pol >> 0);
             a.bRun = b.bRun = (uint8_t)(k >= 2 && rnd() % 100u != 0u);
-            if (valid && k == bump) { a.nAnalogIn1++; b.nAnalogIn1++; } /* changed while running: ERROR */
-            if (valid && k == bump + 2) { a.nAnalogIn1--; b.nAnalogIn1--; } /* restored */
+            if (valid && k == bump) { a.wInputActive++; b.wInputActive++; } /* changed while running: ERROR */
+            if (valid && k == bump + 2) { a.wInputActive--; b.wInputActive--; } /* restored */
             p.pFb = &a;
             p.tNow = t += 10u;
             cds_sl_mul_int_cycle(&p);
@@ -2887,7 +2935,7 @@ static void test_mul_int(void)
             if (b.nState != SL_STATE_STOP && b.nState != SL_STATE_ERROR && b.nState != SL_STATE_RESET && b.nState != SL_STATE_SAFE) reached_run = 1;
         }
     }
-    printf("FB_MUL_INT: %d of %d cycles (8 valid random configurations) returned SL_OK; run-like state %s, ERROR %s; invalid share: %d configurations, %d cycles\n", ok, cycles, reached_run ? "reached" : "NOT reached", reached_error ? "reached" : "NOT reached", inv_config, inv_cycles);
+    printf("FB_MUL_INT: %d of %d cycles (16 valid random configurations) returned SL_OK; run-like state %s, ERROR %s; invalid share: %d configurations, %d cycles\n", ok, cycles, reached_run ? "reached" : "NOT reached", reached_error ? "reached" : "NOT reached", inv_config, inv_cycles);
     if (2 * ok <= cycles) printf("  status histogram (0, -1, ... -11): %d %d %d %d %d %d %d %d %d %d %d\n", hist[0], hist[1], hist[2], hist[3], hist[4], hist[5], hist[6], hist[7], hist[8], hist[9], hist[10]);
     CHECK(cycles > 0 && 2 * ok > cycles, "FB_MUL_INT: only %d of %d cycles with valid configurations returned SL_OK", ok, cycles);
     CHECK(reached_run, "FB_MUL_INT: the random test never reached a running state (an output on)");
@@ -2898,7 +2946,7 @@ static void rnd_config_mul_uint(FB_MUL_UINT *x)
 {
     { static const unsigned v[] = {0u, 1u, 10u, 100u}; x->nAnalogIn1 = (uint16_t)v[rnd() % 4u]; }
     { static const unsigned v[] = {0u, 1u, 10u, 100u}; x->nAnalogIn2 = (uint16_t)v[rnd() % 4u]; }
-    x->wInputActive = (uint16_t)(rnd() & 0x0u);
+    x->wInputActive = (uint16_t)(rnd() & 0x300u);
 }
 /* 1: a valid configuration (want_valid) or an invalid one was drawn into a and b */
 static int draw_mul_uint(FB_MUL_UINT *a, FB_MUL_UINT *b, int want_valid)
@@ -2942,8 +2990,10 @@ static void test_mul_uint(void)
     a.wInputActive = b.wInputActive = 1;
     { cds_sl_mul_uint_init_struct q; int32_t r; q.pFb = &a; cds_sl_mul_uint_init(&q); r = sl_mul_uint_init(&b);
       CHECK(q.cds_sl_mul_uint_init == r && memcmp(&a, &b, sizeof a) == 0, "cds_sl_mul_uint_init differs from sl_mul_uint_init"); }
-    for (c = 0; c < 10; c++) {
-        int valid = c < 8; /* 8 valid configurations, then the labelled invalid share: 2 */
+    rng = 4036487013u; /* FNV-1a of "FB_MUL_UINT" */
+    machine = 1u;
+    for (c = 0; c < 20; c++) {
+        int valid = c < 16; /* 16 valid configurations, then the labelled invalid share: 4 */
         if (!draw_mul_uint(&a, &b, valid)) {
             CHECK(!valid, "FB_MUL_UINT: no valid configuration found in 200000 random draws");
             continue;
@@ -2957,8 +3007,8 @@ static void test_mul_uint(void)
             next_machine();
             a.bErrAck = b.bErrAck = next_signal(a.bErrAck, 1, pol >> 0);
             a.bRun = b.bRun = (uint8_t)(k >= 2 && rnd() % 100u != 0u);
-            if (valid && k == bump) { a.nAnalogIn1++; b.nAnalogIn1++; } /* changed while running: ERROR */
-            if (valid && k == bump + 2) { a.nAnalogIn1--; b.nAnalogIn1--; } /* restored */
+            if (valid && k == bump) { a.wInputActive++; b.wInputActive++; } /* changed while running: ERROR */
+            if (valid && k == bump + 2) { a.wInputActive--; b.wInputActive--; } /* restored */
             p.pFb = &a;
             p.tNow = t += 10u;
             cds_sl_mul_uint_cycle(&p);
@@ -2973,7 +3023,7 @@ static void test_mul_uint(void)
             if (b.nState != SL_STATE_STOP && b.nState != SL_STATE_ERROR && b.nState != SL_STATE_RESET && b.nState != SL_STATE_SAFE) reached_run = 1;
         }
     }
-    printf("FB_MUL_UINT: %d of %d cycles (8 valid random configurations) returned SL_OK; run-like state %s, ERROR %s; invalid share: %d configurations, %d cycles\n", ok, cycles, reached_run ? "reached" : "NOT reached", reached_error ? "reached" : "NOT reached", inv_config, inv_cycles);
+    printf("FB_MUL_UINT: %d of %d cycles (16 valid random configurations) returned SL_OK; run-like state %s, ERROR %s; invalid share: %d configurations, %d cycles\n", ok, cycles, reached_run ? "reached" : "NOT reached", reached_error ? "reached" : "NOT reached", inv_config, inv_cycles);
     if (2 * ok <= cycles) printf("  status histogram (0, -1, ... -11): %d %d %d %d %d %d %d %d %d %d %d\n", hist[0], hist[1], hist[2], hist[3], hist[4], hist[5], hist[6], hist[7], hist[8], hist[9], hist[10]);
     CHECK(cycles > 0 && 2 * ok > cycles, "FB_MUL_UINT: only %d of %d cycles with valid configurations returned SL_OK", ok, cycles);
     CHECK(reached_run, "FB_MUL_UINT: the random test never reached a running state (an output on)");
@@ -2984,7 +3034,7 @@ static void rnd_config_mul_dint(FB_MUL_DINT *x)
 {
     { static const unsigned v[] = {0u, 1u, 10u, 100u}; x->nAnalogIn1 = (int32_t)v[rnd() % 4u]; }
     { static const unsigned v[] = {0u, 1u, 10u, 100u}; x->nAnalogIn2 = (int32_t)v[rnd() % 4u]; }
-    x->wInputActive = (uint16_t)(rnd() & 0x0u);
+    x->wInputActive = (uint16_t)(rnd() & 0x300u);
 }
 /* 1: a valid configuration (want_valid) or an invalid one was drawn into a and b */
 static int draw_mul_dint(FB_MUL_DINT *a, FB_MUL_DINT *b, int want_valid)
@@ -3028,8 +3078,10 @@ static void test_mul_dint(void)
     a.wInputActive = b.wInputActive = 1;
     { cds_sl_mul_dint_init_struct q; int32_t r; q.pFb = &a; cds_sl_mul_dint_init(&q); r = sl_mul_dint_init(&b);
       CHECK(q.cds_sl_mul_dint_init == r && memcmp(&a, &b, sizeof a) == 0, "cds_sl_mul_dint_init differs from sl_mul_dint_init"); }
-    for (c = 0; c < 10; c++) {
-        int valid = c < 8; /* 8 valid configurations, then the labelled invalid share: 2 */
+    rng = 3920391280u; /* FNV-1a of "FB_MUL_DINT" */
+    machine = 1u;
+    for (c = 0; c < 20; c++) {
+        int valid = c < 16; /* 16 valid configurations, then the labelled invalid share: 4 */
         if (!draw_mul_dint(&a, &b, valid)) {
             CHECK(!valid, "FB_MUL_DINT: no valid configuration found in 200000 random draws");
             continue;
@@ -3043,8 +3095,8 @@ static void test_mul_dint(void)
             next_machine();
             a.bErrAck = b.bErrAck = next_signal(a.bErrAck, 1, pol >> 0);
             a.bRun = b.bRun = (uint8_t)(k >= 2 && rnd() % 100u != 0u);
-            if (valid && k == bump) { a.nAnalogIn1++; b.nAnalogIn1++; } /* changed while running: ERROR */
-            if (valid && k == bump + 2) { a.nAnalogIn1--; b.nAnalogIn1--; } /* restored */
+            if (valid && k == bump) { a.wInputActive++; b.wInputActive++; } /* changed while running: ERROR */
+            if (valid && k == bump + 2) { a.wInputActive--; b.wInputActive--; } /* restored */
             p.pFb = &a;
             p.tNow = t += 10u;
             cds_sl_mul_dint_cycle(&p);
@@ -3059,7 +3111,7 @@ static void test_mul_dint(void)
             if (b.nState != SL_STATE_STOP && b.nState != SL_STATE_ERROR && b.nState != SL_STATE_RESET && b.nState != SL_STATE_SAFE) reached_run = 1;
         }
     }
-    printf("FB_MUL_DINT: %d of %d cycles (8 valid random configurations) returned SL_OK; run-like state %s, ERROR %s; invalid share: %d configurations, %d cycles\n", ok, cycles, reached_run ? "reached" : "NOT reached", reached_error ? "reached" : "NOT reached", inv_config, inv_cycles);
+    printf("FB_MUL_DINT: %d of %d cycles (16 valid random configurations) returned SL_OK; run-like state %s, ERROR %s; invalid share: %d configurations, %d cycles\n", ok, cycles, reached_run ? "reached" : "NOT reached", reached_error ? "reached" : "NOT reached", inv_config, inv_cycles);
     if (2 * ok <= cycles) printf("  status histogram (0, -1, ... -11): %d %d %d %d %d %d %d %d %d %d %d\n", hist[0], hist[1], hist[2], hist[3], hist[4], hist[5], hist[6], hist[7], hist[8], hist[9], hist[10]);
     CHECK(cycles > 0 && 2 * ok > cycles, "FB_MUL_DINT: only %d of %d cycles with valid configurations returned SL_OK", ok, cycles);
     CHECK(reached_run, "FB_MUL_DINT: the random test never reached a running state (an output on)");
@@ -3070,7 +3122,7 @@ static void rnd_config_mul_udint(FB_MUL_UDINT *x)
 {
     { static const unsigned v[] = {0u, 1u, 10u, 100u}; x->nAnalogIn1 = (uint32_t)v[rnd() % 4u]; }
     { static const unsigned v[] = {0u, 1u, 10u, 100u}; x->nAnalogIn2 = (uint32_t)v[rnd() % 4u]; }
-    x->wInputActive = (uint16_t)(rnd() & 0x0u);
+    x->wInputActive = (uint16_t)(rnd() & 0x300u);
 }
 /* 1: a valid configuration (want_valid) or an invalid one was drawn into a and b */
 static int draw_mul_udint(FB_MUL_UDINT *a, FB_MUL_UDINT *b, int want_valid)
@@ -3114,8 +3166,10 @@ static void test_mul_udint(void)
     a.wInputActive = b.wInputActive = 1;
     { cds_sl_mul_udint_init_struct q; int32_t r; q.pFb = &a; cds_sl_mul_udint_init(&q); r = sl_mul_udint_init(&b);
       CHECK(q.cds_sl_mul_udint_init == r && memcmp(&a, &b, sizeof a) == 0, "cds_sl_mul_udint_init differs from sl_mul_udint_init"); }
-    for (c = 0; c < 10; c++) {
-        int valid = c < 8; /* 8 valid configurations, then the labelled invalid share: 2 */
+    rng = 1371665769u; /* FNV-1a of "FB_MUL_UDINT" */
+    machine = 1u;
+    for (c = 0; c < 20; c++) {
+        int valid = c < 16; /* 16 valid configurations, then the labelled invalid share: 4 */
         if (!draw_mul_udint(&a, &b, valid)) {
             CHECK(!valid, "FB_MUL_UDINT: no valid configuration found in 200000 random draws");
             continue;
@@ -3129,8 +3183,8 @@ static void test_mul_udint(void)
             next_machine();
             a.bErrAck = b.bErrAck = next_signal(a.bErrAck, 1, pol >> 0);
             a.bRun = b.bRun = (uint8_t)(k >= 2 && rnd() % 100u != 0u);
-            if (valid && k == bump) { a.nAnalogIn1++; b.nAnalogIn1++; } /* changed while running: ERROR */
-            if (valid && k == bump + 2) { a.nAnalogIn1--; b.nAnalogIn1--; } /* restored */
+            if (valid && k == bump) { a.wInputActive++; b.wInputActive++; } /* changed while running: ERROR */
+            if (valid && k == bump + 2) { a.wInputActive--; b.wInputActive--; } /* restored */
             p.pFb = &a;
             p.tNow = t += 10u;
             cds_sl_mul_udint_cycle(&p);
@@ -3145,7 +3199,7 @@ static void test_mul_udint(void)
             if (b.nState != SL_STATE_STOP && b.nState != SL_STATE_ERROR && b.nState != SL_STATE_RESET && b.nState != SL_STATE_SAFE) reached_run = 1;
         }
     }
-    printf("FB_MUL_UDINT: %d of %d cycles (8 valid random configurations) returned SL_OK; run-like state %s, ERROR %s; invalid share: %d configurations, %d cycles\n", ok, cycles, reached_run ? "reached" : "NOT reached", reached_error ? "reached" : "NOT reached", inv_config, inv_cycles);
+    printf("FB_MUL_UDINT: %d of %d cycles (16 valid random configurations) returned SL_OK; run-like state %s, ERROR %s; invalid share: %d configurations, %d cycles\n", ok, cycles, reached_run ? "reached" : "NOT reached", reached_error ? "reached" : "NOT reached", inv_config, inv_cycles);
     if (2 * ok <= cycles) printf("  status histogram (0, -1, ... -11): %d %d %d %d %d %d %d %d %d %d %d\n", hist[0], hist[1], hist[2], hist[3], hist[4], hist[5], hist[6], hist[7], hist[8], hist[9], hist[10]);
     CHECK(cycles > 0 && 2 * ok > cycles, "FB_MUL_UDINT: only %d of %d cycles with valid configurations returned SL_OK", ok, cycles);
     CHECK(reached_run, "FB_MUL_UDINT: the random test never reached a running state (an output on)");
@@ -3157,7 +3211,7 @@ static void rnd_config_div_int(FB_DIV_INT *x)
     { static const unsigned v[] = {0u, 1u, 10u, 100u}; x->nAnalogIn1 = (int16_t)v[rnd() % 4u]; }
     { static const unsigned v[] = {0u, 1u, 10u, 100u}; x->nAnalogIn2 = (int16_t)v[rnd() % 4u]; }
     { static const unsigned v[] = {0u, 1u, 10u, 100u}; x->nRounding = (uint16_t)v[rnd() % 4u]; }
-    x->wInputActive = (uint16_t)(rnd() & 0x0u);
+    x->wInputActive = (uint16_t)(rnd() & 0x300u);
 }
 /* 1: a valid configuration (want_valid) or an invalid one was drawn into a and b */
 static int draw_div_int(FB_DIV_INT *a, FB_DIV_INT *b, int want_valid)
@@ -3202,8 +3256,10 @@ static void test_div_int(void)
     a.wInputActive = b.wInputActive = 1;
     { cds_sl_div_int_init_struct q; int32_t r; q.pFb = &a; cds_sl_div_int_init(&q); r = sl_div_int_init(&b);
       CHECK(q.cds_sl_div_int_init == r && memcmp(&a, &b, sizeof a) == 0, "cds_sl_div_int_init differs from sl_div_int_init"); }
-    for (c = 0; c < 10; c++) {
-        int valid = c < 8; /* 8 valid configurations, then the labelled invalid share: 2 */
+    rng = 3657290839u; /* FNV-1a of "FB_DIV_INT" */
+    machine = 1u;
+    for (c = 0; c < 20; c++) {
+        int valid = c < 16; /* 16 valid configurations, then the labelled invalid share: 4 */
         if (!draw_div_int(&a, &b, valid)) {
             CHECK(!valid, "FB_DIV_INT: no valid configuration found in 200000 random draws");
             continue;
@@ -3217,8 +3273,8 @@ static void test_div_int(void)
             next_machine();
             a.bErrAck = b.bErrAck = next_signal(a.bErrAck, 1, pol >> 0);
             a.bRun = b.bRun = (uint8_t)(k >= 2 && rnd() % 100u != 0u);
-            if (valid && k == bump) { a.nAnalogIn1++; b.nAnalogIn1++; } /* changed while running: ERROR */
-            if (valid && k == bump + 2) { a.nAnalogIn1--; b.nAnalogIn1--; } /* restored */
+            if (valid && k == bump) { a.nRounding++; b.nRounding++; } /* changed while running: ERROR */
+            if (valid && k == bump + 2) { a.nRounding--; b.nRounding--; } /* restored */
             p.pFb = &a;
             p.tNow = t += 10u;
             cds_sl_div_int_cycle(&p);
@@ -3233,7 +3289,7 @@ static void test_div_int(void)
             if (b.nState != SL_STATE_STOP && b.nState != SL_STATE_ERROR && b.nState != SL_STATE_RESET && b.nState != SL_STATE_SAFE) reached_run = 1;
         }
     }
-    printf("FB_DIV_INT: %d of %d cycles (8 valid random configurations) returned SL_OK; run-like state %s, ERROR %s; invalid share: %d configurations, %d cycles\n", ok, cycles, reached_run ? "reached" : "NOT reached", reached_error ? "reached" : "NOT reached", inv_config, inv_cycles);
+    printf("FB_DIV_INT: %d of %d cycles (16 valid random configurations) returned SL_OK; run-like state %s, ERROR %s; invalid share: %d configurations, %d cycles\n", ok, cycles, reached_run ? "reached" : "NOT reached", reached_error ? "reached" : "NOT reached", inv_config, inv_cycles);
     if (2 * ok <= cycles) printf("  status histogram (0, -1, ... -11): %d %d %d %d %d %d %d %d %d %d %d\n", hist[0], hist[1], hist[2], hist[3], hist[4], hist[5], hist[6], hist[7], hist[8], hist[9], hist[10]);
     CHECK(cycles > 0 && 2 * ok > cycles, "FB_DIV_INT: only %d of %d cycles with valid configurations returned SL_OK", ok, cycles);
     CHECK(reached_run, "FB_DIV_INT: the random test never reached a running state (an output on)");
@@ -3245,7 +3301,7 @@ static void rnd_config_div_uint(FB_DIV_UINT *x)
     { static const unsigned v[] = {0u, 1u, 10u, 100u}; x->nAnalogIn1 = (uint16_t)v[rnd() % 4u]; }
     { static const unsigned v[] = {0u, 1u, 10u, 100u}; x->nAnalogIn2 = (uint16_t)v[rnd() % 4u]; }
     { static const unsigned v[] = {0u, 1u, 10u, 100u}; x->nRounding = (uint16_t)v[rnd() % 4u]; }
-    x->wInputActive = (uint16_t)(rnd() & 0x0u);
+    x->wInputActive = (uint16_t)(rnd() & 0x300u);
 }
 /* 1: a valid configuration (want_valid) or an invalid one was drawn into a and b */
 static int draw_div_uint(FB_DIV_UINT *a, FB_DIV_UINT *b, int want_valid)
@@ -3290,8 +3346,10 @@ static void test_div_uint(void)
     a.wInputActive = b.wInputActive = 1;
     { cds_sl_div_uint_init_struct q; int32_t r; q.pFb = &a; cds_sl_div_uint_init(&q); r = sl_div_uint_init(&b);
       CHECK(q.cds_sl_div_uint_init == r && memcmp(&a, &b, sizeof a) == 0, "cds_sl_div_uint_init differs from sl_div_uint_init"); }
-    for (c = 0; c < 10; c++) {
-        int valid = c < 8; /* 8 valid configurations, then the labelled invalid share: 2 */
+    rng = 432576618u; /* FNV-1a of "FB_DIV_UINT" */
+    machine = 1u;
+    for (c = 0; c < 20; c++) {
+        int valid = c < 16; /* 16 valid configurations, then the labelled invalid share: 4 */
         if (!draw_div_uint(&a, &b, valid)) {
             CHECK(!valid, "FB_DIV_UINT: no valid configuration found in 200000 random draws");
             continue;
@@ -3305,8 +3363,8 @@ static void test_div_uint(void)
             next_machine();
             a.bErrAck = b.bErrAck = next_signal(a.bErrAck, 1, pol >> 0);
             a.bRun = b.bRun = (uint8_t)(k >= 2 && rnd() % 100u != 0u);
-            if (valid && k == bump) { a.nAnalogIn1++; b.nAnalogIn1++; } /* changed while running: ERROR */
-            if (valid && k == bump + 2) { a.nAnalogIn1--; b.nAnalogIn1--; } /* restored */
+            if (valid && k == bump) { a.nRounding++; b.nRounding++; } /* changed while running: ERROR */
+            if (valid && k == bump + 2) { a.nRounding--; b.nRounding--; } /* restored */
             p.pFb = &a;
             p.tNow = t += 10u;
             cds_sl_div_uint_cycle(&p);
@@ -3321,7 +3379,7 @@ static void test_div_uint(void)
             if (b.nState != SL_STATE_STOP && b.nState != SL_STATE_ERROR && b.nState != SL_STATE_RESET && b.nState != SL_STATE_SAFE) reached_run = 1;
         }
     }
-    printf("FB_DIV_UINT: %d of %d cycles (8 valid random configurations) returned SL_OK; run-like state %s, ERROR %s; invalid share: %d configurations, %d cycles\n", ok, cycles, reached_run ? "reached" : "NOT reached", reached_error ? "reached" : "NOT reached", inv_config, inv_cycles);
+    printf("FB_DIV_UINT: %d of %d cycles (16 valid random configurations) returned SL_OK; run-like state %s, ERROR %s; invalid share: %d configurations, %d cycles\n", ok, cycles, reached_run ? "reached" : "NOT reached", reached_error ? "reached" : "NOT reached", inv_config, inv_cycles);
     if (2 * ok <= cycles) printf("  status histogram (0, -1, ... -11): %d %d %d %d %d %d %d %d %d %d %d\n", hist[0], hist[1], hist[2], hist[3], hist[4], hist[5], hist[6], hist[7], hist[8], hist[9], hist[10]);
     CHECK(cycles > 0 && 2 * ok > cycles, "FB_DIV_UINT: only %d of %d cycles with valid configurations returned SL_OK", ok, cycles);
     CHECK(reached_run, "FB_DIV_UINT: the random test never reached a running state (an output on)");
@@ -3333,7 +3391,7 @@ static void rnd_config_div_dint(FB_DIV_DINT *x)
     { static const unsigned v[] = {0u, 1u, 10u, 100u}; x->nAnalogIn1 = (int32_t)v[rnd() % 4u]; }
     { static const unsigned v[] = {0u, 1u, 10u, 100u}; x->nAnalogIn2 = (int32_t)v[rnd() % 4u]; }
     { static const unsigned v[] = {0u, 1u, 10u, 100u}; x->nRounding = (uint16_t)v[rnd() % 4u]; }
-    x->wInputActive = (uint16_t)(rnd() & 0x0u);
+    x->wInputActive = (uint16_t)(rnd() & 0x300u);
 }
 /* 1: a valid configuration (want_valid) or an invalid one was drawn into a and b */
 static int draw_div_dint(FB_DIV_DINT *a, FB_DIV_DINT *b, int want_valid)
@@ -3378,8 +3436,10 @@ static void test_div_dint(void)
     a.wInputActive = b.wInputActive = 1;
     { cds_sl_div_dint_init_struct q; int32_t r; q.pFb = &a; cds_sl_div_dint_init(&q); r = sl_div_dint_init(&b);
       CHECK(q.cds_sl_div_dint_init == r && memcmp(&a, &b, sizeof a) == 0, "cds_sl_div_dint_init differs from sl_div_dint_init"); }
-    for (c = 0; c < 10; c++) {
-        int valid = c < 8; /* 8 valid configurations, then the labelled invalid share: 2 */
+    rng = 464982359u; /* FNV-1a of "FB_DIV_DINT" */
+    machine = 1u;
+    for (c = 0; c < 20; c++) {
+        int valid = c < 16; /* 16 valid configurations, then the labelled invalid share: 4 */
         if (!draw_div_dint(&a, &b, valid)) {
             CHECK(!valid, "FB_DIV_DINT: no valid configuration found in 200000 random draws");
             continue;
@@ -3393,8 +3453,8 @@ static void test_div_dint(void)
             next_machine();
             a.bErrAck = b.bErrAck = next_signal(a.bErrAck, 1, pol >> 0);
             a.bRun = b.bRun = (uint8_t)(k >= 2 && rnd() % 100u != 0u);
-            if (valid && k == bump) { a.nAnalogIn1++; b.nAnalogIn1++; } /* changed while running: ERROR */
-            if (valid && k == bump + 2) { a.nAnalogIn1--; b.nAnalogIn1--; } /* restored */
+            if (valid && k == bump) { a.nRounding++; b.nRounding++; } /* changed while running: ERROR */
+            if (valid && k == bump + 2) { a.nRounding--; b.nRounding--; } /* restored */
             p.pFb = &a;
             p.tNow = t += 10u;
             cds_sl_div_dint_cycle(&p);
@@ -3409,7 +3469,7 @@ static void test_div_dint(void)
             if (b.nState != SL_STATE_STOP && b.nState != SL_STATE_ERROR && b.nState != SL_STATE_RESET && b.nState != SL_STATE_SAFE) reached_run = 1;
         }
     }
-    printf("FB_DIV_DINT: %d of %d cycles (8 valid random configurations) returned SL_OK; run-like state %s, ERROR %s; invalid share: %d configurations, %d cycles\n", ok, cycles, reached_run ? "reached" : "NOT reached", reached_error ? "reached" : "NOT reached", inv_config, inv_cycles);
+    printf("FB_DIV_DINT: %d of %d cycles (16 valid random configurations) returned SL_OK; run-like state %s, ERROR %s; invalid share: %d configurations, %d cycles\n", ok, cycles, reached_run ? "reached" : "NOT reached", reached_error ? "reached" : "NOT reached", inv_config, inv_cycles);
     if (2 * ok <= cycles) printf("  status histogram (0, -1, ... -11): %d %d %d %d %d %d %d %d %d %d %d\n", hist[0], hist[1], hist[2], hist[3], hist[4], hist[5], hist[6], hist[7], hist[8], hist[9], hist[10]);
     CHECK(cycles > 0 && 2 * ok > cycles, "FB_DIV_DINT: only %d of %d cycles with valid configurations returned SL_OK", ok, cycles);
     CHECK(reached_run, "FB_DIV_DINT: the random test never reached a running state (an output on)");
@@ -3421,7 +3481,7 @@ static void rnd_config_div_udint(FB_DIV_UDINT *x)
     { static const unsigned v[] = {0u, 1u, 10u, 100u}; x->nAnalogIn1 = (uint32_t)v[rnd() % 4u]; }
     { static const unsigned v[] = {0u, 1u, 10u, 100u}; x->nAnalogIn2 = (uint32_t)v[rnd() % 4u]; }
     { static const unsigned v[] = {0u, 1u, 10u, 100u}; x->nRounding = (uint16_t)v[rnd() % 4u]; }
-    x->wInputActive = (uint16_t)(rnd() & 0x0u);
+    x->wInputActive = (uint16_t)(rnd() & 0x300u);
 }
 /* 1: a valid configuration (want_valid) or an invalid one was drawn into a and b */
 static int draw_div_udint(FB_DIV_UDINT *a, FB_DIV_UDINT *b, int want_valid)
@@ -3466,8 +3526,10 @@ static void test_div_udint(void)
     a.wInputActive = b.wInputActive = 1;
     { cds_sl_div_udint_init_struct q; int32_t r; q.pFb = &a; cds_sl_div_udint_init(&q); r = sl_div_udint_init(&b);
       CHECK(q.cds_sl_div_udint_init == r && memcmp(&a, &b, sizeof a) == 0, "cds_sl_div_udint_init differs from sl_div_udint_init"); }
-    for (c = 0; c < 10; c++) {
-        int valid = c < 8; /* 8 valid configurations, then the labelled invalid share: 2 */
+    rng = 180799560u; /* FNV-1a of "FB_DIV_UDINT" */
+    machine = 1u;
+    for (c = 0; c < 20; c++) {
+        int valid = c < 16; /* 16 valid configurations, then the labelled invalid share: 4 */
         if (!draw_div_udint(&a, &b, valid)) {
             CHECK(!valid, "FB_DIV_UDINT: no valid configuration found in 200000 random draws");
             continue;
@@ -3481,8 +3543,8 @@ static void test_div_udint(void)
             next_machine();
             a.bErrAck = b.bErrAck = next_signal(a.bErrAck, 1, pol >> 0);
             a.bRun = b.bRun = (uint8_t)(k >= 2 && rnd() % 100u != 0u);
-            if (valid && k == bump) { a.nAnalogIn1++; b.nAnalogIn1++; } /* changed while running: ERROR */
-            if (valid && k == bump + 2) { a.nAnalogIn1--; b.nAnalogIn1--; } /* restored */
+            if (valid && k == bump) { a.nRounding++; b.nRounding++; } /* changed while running: ERROR */
+            if (valid && k == bump + 2) { a.nRounding--; b.nRounding--; } /* restored */
             p.pFb = &a;
             p.tNow = t += 10u;
             cds_sl_div_udint_cycle(&p);
@@ -3497,7 +3559,7 @@ static void test_div_udint(void)
             if (b.nState != SL_STATE_STOP && b.nState != SL_STATE_ERROR && b.nState != SL_STATE_RESET && b.nState != SL_STATE_SAFE) reached_run = 1;
         }
     }
-    printf("FB_DIV_UDINT: %d of %d cycles (8 valid random configurations) returned SL_OK; run-like state %s, ERROR %s; invalid share: %d configurations, %d cycles\n", ok, cycles, reached_run ? "reached" : "NOT reached", reached_error ? "reached" : "NOT reached", inv_config, inv_cycles);
+    printf("FB_DIV_UDINT: %d of %d cycles (16 valid random configurations) returned SL_OK; run-like state %s, ERROR %s; invalid share: %d configurations, %d cycles\n", ok, cycles, reached_run ? "reached" : "NOT reached", reached_error ? "reached" : "NOT reached", inv_config, inv_cycles);
     if (2 * ok <= cycles) printf("  status histogram (0, -1, ... -11): %d %d %d %d %d %d %d %d %d %d %d\n", hist[0], hist[1], hist[2], hist[3], hist[4], hist[5], hist[6], hist[7], hist[8], hist[9], hist[10]);
     CHECK(cycles > 0 && 2 * ok > cycles, "FB_DIV_UDINT: only %d of %d cycles with valid configurations returned SL_OK", ok, cycles);
     CHECK(reached_run, "FB_DIV_UDINT: the random test never reached a running state (an output on)");

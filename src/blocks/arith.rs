@@ -656,13 +656,13 @@ impl<B: ArithFb + crate::prim::envelope::Instance + crate::registry::Registered>
         self.step(inp, now);
     }
     #[inline(always)]
-    fn step(&mut self, inp: &ArithIn, _now: u32) -> i32 {
+    fn step(&mut self, inp: &ArithIn, _now: u32) -> Status {
         // Entering RUN is where the output starts to carry a value: verify the latched
         // parameters first (C3).
         let entering = self.private().stHeader.nState != SL_STATE_RUN;
         if entering && inp.result.is_ok() && !self.params_intact() {
             self.private_mut().stHeader.enter_error(SL_DIAG_CORRUPT);
-            return SL_E_CORRUPT;
+            return Status::Corrupt;
         }
         let p = self.private_mut();
         match inp.result {
@@ -676,7 +676,7 @@ impl<B: ArithFb + crate::prim::envelope::Instance + crate::registry::Registered>
                 p.stHeader.enter_error(diag);
             }
         }
-        SL_OK
+        Status::Ok
     }
     fn error_remains(&mut self, inp: &ArithIn) -> bool {
         inp.result.is_err()

@@ -14,6 +14,24 @@ use crate::prim::{bools, time};
 use crate::types::*;
 use core::mem::{offset_of, size_of};
 
+/// Block type tag of FB_EDM.
+pub const SL_TYPE_EDM: u16 = 10;
+
+/// FB_EDM state MONOFF (manual §4.9.2: 14): Mon1 is FALSE, switch-off monitoring.
+pub const SL_STATE_EDM_MONOFF: u8 = 14;
+
+/// FB_EDM state MONON (manual §4.9.2: 15): Mon1 is TRUE, switch-on monitoring.
+pub const SL_STATE_EDM_MONON: u8 = 15;
+
+/// FB_EDM diag bit 0 (manual §4.9.2): switch-off timer elapsed.
+pub const SL_DIAG_EDM_SWITCH_OFF: u16 = 1 << 0;
+
+/// FB_EDM diag bit 1 (manual §4.9.2): switch-on timer elapsed.
+pub const SL_DIAG_EDM_SWITCH_ON: u16 = 1 << 1;
+
+/// Largest tSwitchOnTime / tSwitchOffTime of FB_EDM in ms (manual §4.9.1: "maximum 10000 ms").
+pub const SL_EDM_TIME_MAX: u32 = 10_000;
+
 /// FB EDM instance (ABI §3, §9). Inputs at the manual's offsets (§4.9.2), output base 32.
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
@@ -257,20 +275,20 @@ impl Block for FB_EDM {
         check(&mut self.stPrivate, inp, now);
     }
 
-    fn step(&mut self, inp: &EdmIn, now: u32) -> i32 {
+    fn step(&mut self, inp: &EdmIn, now: u32) -> Status {
         let p = &mut self.stPrivate;
         let state = p.stHeader.nState;
         if state != SL_STATE_EDM_MONON && state != SL_STATE_EDM_MONOFF {
             // A state value this block never takes: the private state cannot be trusted.
             p.stHeader.enter_error(SL_DIAG_CORRUPT);
-            return SL_E_CORRUPT;
+            return Status::Corrupt;
         }
         // A switch of Mon1 ends the other state's monitoring and starts this one's (E2).
         if inp.state() != state {
             enter(p, inp.state(), now);
         }
         check(p, inp, now);
-        SL_OK
+        Status::Ok
     }
 
     /// A monitoring error remains while the monitoring of Mon1's present level is on and

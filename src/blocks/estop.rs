@@ -11,6 +11,9 @@ use super::{BlockInfo, DELAYOUT, ERROR, RESET, RUN, SAFE, START, STOP};
 use crate::types::*;
 use core::mem::{offset_of, size_of};
 
+/// Block type tag of FB_ESTOP (`SL_MEMBER.nType`, `sl_diag_text`).
+pub const SL_TYPE_ESTOP: u16 = 1;
+
 /// FB ESTOP instance (ABI §3, §8). Inputs at the manual's offsets (§4.4.2), outputs at
 /// output base 56 + the manual's offsets.
 #[repr(C)]

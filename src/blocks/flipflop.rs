@@ -7,6 +7,12 @@
 use crate::prim::header::SL_PRIVATE_HEADER;
 use crate::types::*;
 
+/// FB_SR state SET (manual §4.11.2: 9): the output SrOut is TRUE.
+pub const SL_STATE_SR_SET: u8 = 9;
+
+/// FB_RS state SET (manual §4.10.2: 9): the output RsOut is TRUE.
+pub const SL_STATE_RS_SET: u8 = 9;
+
 /// Private state of FB_RS and FB_SR (32 bytes): the memory is the state (SAFE or SET) in
 /// the header, guarded by its complement copy. Never written by the user.
 #[repr(C)]
@@ -162,7 +168,7 @@ macro_rules! flipflop_block {
                     let h = &mut self.private_mut().stHeader;
                     h.nState = state_of(next(false, *inp, Self::SET_DOMINANT));
                 }
-                fn step(&mut self, inp: &FlipFlopIn, _now: u32) -> i32 {
+                fn step(&mut self, inp: &FlipFlopIn, _now: u32) -> Status {
                     let is_set = match self.private().stHeader.nState {
                         SL_STATE_SAFE => false,
                         STATE_SET => true,
@@ -174,10 +180,10 @@ macro_rules! flipflop_block {
                     // The output switches on: verify the latched parameters first (C3).
                     if !known || (set && !is_set && !self.params_intact()) {
                         self.private_mut().stHeader.enter_error(SL_DIAG_CORRUPT);
-                        return SL_E_CORRUPT;
+                        return Status::Corrupt;
                     }
                     self.private_mut().stHeader.nState = state_of(set);
-                    SL_OK
+                    Status::Ok
                 }
                 fn error_remains(&mut self, _inp: &FlipFlopIn) -> bool {
                     false

@@ -114,16 +114,16 @@ pub(crate) fn latched_crc<T: GuardBlock>(p: &SL_GUARD_PRIVATE) -> u16 {
 
 /// Outputs switch on: verify the latched parameters first (ABI §3.6 integrity), then RUN
 /// with the EDM reset-time checks armed.
-pub(crate) fn enable<T: GuardBlock>(p: &mut SL_GUARD_PRIVATE, edm: &Edm, now: u32) -> (u8, i32) {
+pub(crate) fn enable<T: GuardBlock>(p: &mut SL_GUARD_PRIVATE, edm: &Edm, now: u32) -> (u8, Status) {
     if latched_crc::<T>(p) != p.stHeader.wParamCrc {
         p.stHeader.enter_error(SL_DIAG_CORRUPT);
-        return (SL_STATE_ERROR, SL_E_CORRUPT);
+        return (SL_STATE_ERROR, Status::Corrupt);
     }
     let pending = edm.arm([p.awTime[T_EDM1], p.awTime[T_EDM2]]);
     let h = &mut p.stHeader;
     h.nFlags = (h.nFlags & !(F_EDM1_PENDING | F_EDM2_PENDING)) | (pending << EDM_PENDING_SHIFT);
     h.tPhase = now;
-    (SL_STATE_RUN, SL_OK)
+    (SL_STATE_RUN, Status::Ok)
 }
 
 /// The envelope's view of a block of this family; invoked in the member's own file.
@@ -252,7 +252,7 @@ macro_rules! guard_block {
                     };
                 }
 
-                fn step(&mut self, inp: &GuardIn, now: u32) -> i32 {
+                fn step(&mut self, inp: &GuardIn, now: u32) -> Status {
                     let p = self.private_mut();
                     let state = p.stHeader.nState;
                     let options = u32::from(p.stHeader.wOptions);
@@ -310,11 +310,11 @@ macro_rules! guard_block {
                         );
                     if err != 0 && !delayable {
                         p.stHeader.enter_error(err);
-                        return SL_OK;
+                        return Status::Ok;
                     }
                     p.stHeader.wDiag |= err;
 
-                    let mut status = SL_OK;
+                    let mut status = Status::Ok;
                     let next = match state {
                         SL_STATE_RUN | SL_STATE_DELAYOUT if err != 0 => {
                             if state == SL_STATE_RUN {
@@ -381,7 +381,7 @@ macro_rules! guard_block {
                             // A state value this block never takes (START without manual restart
                             // included): the private state cannot be trusted.
                             p.stHeader.enter_error(SL_DIAG_CORRUPT);
-                            status = SL_E_CORRUPT;
+                            status = Status::Corrupt;
                             SL_STATE_ERROR
                         }
                     };

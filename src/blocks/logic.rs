@@ -108,7 +108,7 @@ macro_rules! logic_block {
                     self.step(inp, now);
                 }
                 #[inline(always)]
-                fn step(&mut self, inp: &LogicIn, _now: u32) -> i32 {
+                fn step(&mut self, inp: &LogicIn, _now: u32) -> Status {
                     // An output switching on is where the latched parameters are verified (C3).
                     let was_on = if self.private().stHeader.nState == SL_STATE_RUN {
                         self.private().stHeader.wAux as u8
@@ -118,12 +118,12 @@ macro_rules! logic_block {
                     let rising = inp.state == SL_STATE_RUN && inp.outputs & !was_on != 0;
                     if rising && self.latched_crc() != self.private().stHeader.wParamCrc {
                         self.private_mut().stHeader.enter_error(SL_DIAG_CORRUPT);
-                        return SL_E_CORRUPT;
+                        return Status::Corrupt;
                     }
                     let h = &mut self.private_mut().stHeader;
                     h.nState = inp.state;
                     h.wAux = u16::from(inp.outputs);
-                    SL_OK
+                    Status::Ok
                 }
                 #[inline(always)]
                 fn error_remains(&mut self, _inp: &LogicIn) -> bool {

@@ -12,6 +12,9 @@ use super::{BlockInfo, DELAYOUT, ERROR, RESET, RUN, SAFE, START, STOP};
 use crate::types::*;
 use core::mem::{offset_of, size_of};
 
+/// Block type tag of FB_MON.
+pub const SL_TYPE_MON: u16 = 2;
+
 /// FB MON instance (ABI §3, §8). Inputs at the manual's offsets (§4.5.2), outputs at
 /// output base 56 + the manual's offsets.
 #[repr(C)]

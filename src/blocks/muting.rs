@@ -20,6 +20,62 @@ use crate::prim::{pair, time};
 use crate::types::*;
 use core::mem::{offset_of, size_of};
 
+/// FB_MUTING "Sequential Inputs": the four muting inputs are single-channel sensors checked
+/// one after the other (clear: two two-channel groups MutingIn1/2 and MutingIn3/4, parallel).
+pub const SL_OPT_MUTING_SEQUENTIAL: u32 = 1 << 8;
+
+/// FB_MUTING "Backwards Mode" (EL6910): a sequence may also run backwards, starting at MutingIn4.
+pub const SL_OPT_MUTING_BACKWARDS: u32 = 1 << 9;
+
+/// FB_MUTING "OSSD Check Optional" (EL6910): the protective field is not part of the sequence
+/// check; it may be interrupted at any step of a running sequence.
+pub const SL_OPT_MUTING_OSSD_CHECK_OPTIONAL: u32 = 1 << 10;
+
+/// Diag bit 6 (FB_MUTING): the muting sequence was violated.
+pub const SL_DIAG_MUTING_SEQUENCE: u16 = 1 << 6;
+
+/// Diag bit 7 (FB_MUTING): the maximum muting time was exceeded.
+pub const SL_DIAG_MUTING_MAX_TIME: u16 = 1 << 7;
+
+/// FB_MUTING state MUTING1 (9): first step of the muting sequence (docs/semantics.md M1).
+pub const SL_STATE_MUTING_MUTING1: u8 = 9;
+
+/// FB_MUTING state MUTING2 (10).
+pub const SL_STATE_MUTING_MUTING2: u8 = 10;
+
+/// FB_MUTING state MUTING3 (11).
+pub const SL_STATE_MUTING_MUTING3: u8 = 11;
+
+/// FB_MUTING state MUTING4 (12).
+pub const SL_STATE_MUTING_MUTING4: u8 = 12;
+
+/// FB_MUTING state MUTING5 (13).
+pub const SL_STATE_MUTING_MUTING5: u8 = 13;
+
+/// FB_MUTING state MUTING6 (14).
+pub const SL_STATE_MUTING_MUTING6: u8 = 14;
+
+/// FB_MUTING state MUTING7 (15).
+pub const SL_STATE_MUTING_MUTING7: u8 = 15;
+
+/// FB_MUTING state MUTING8 (16).
+pub const SL_STATE_MUTING_MUTING8: u8 = 16;
+
+/// FB_MUTING state MUTING9 (17): last step of the muting sequence.
+pub const SL_STATE_MUTING_MUTING9: u8 = 17;
+
+/// Block type tag of FB_MUTING.
+pub const SL_TYPE_MUTING: u16 = 9;
+
+/// Largest `tFilterTime` of FB_MUTING in ms (manual §4.8.1: "up to 500 ms").
+pub const SL_MUTING_FILTER_TIME_MAX: u32 = 500;
+
+/// Largest `tMaxMutingTime` of FB_MUTING in ms (manual §4.8.1: "a maximum of 10 minutes").
+pub const SL_MUTING_MAX_MUTING_TIME_MAX: u32 = 600_000;
+
+/// Largest `tMuteDelOutDelay` of FB_MUTING in ms (manual §4.8.1: "delayed by up to 30 seconds").
+pub const SL_MUTING_DELOUT_DELAY_MAX: u32 = 30_000;
+
 /// FB MUTING instance (ABI §3, §9). Inputs at the manual's offsets (§4.8.2), outputs at
 /// output base 56 + the manual's offsets.
 #[repr(C)]
@@ -547,7 +603,7 @@ impl Block for FB_MUTING {
         h.nState = SL_STATE_SAFE;
     }
 
-    fn step(&mut self, inp: &MutingIn, now: u32) -> i32 {
+    fn step(&mut self, inp: &MutingIn, now: u32) -> Status {
         let p = &mut self.stPrivate;
         let state = p.stHeader.nState;
         let active = p.stHeader.nActive;
@@ -597,7 +653,7 @@ impl Block for FB_MUTING {
         let max_time = p.tMaxMutingTime;
         let violation = SL_DIAG_MUTING_SEQUENCE;
 
-        let mut status = SL_OK;
+        let mut status = Status::Ok;
         // The next state; `Err(diag)` enters ERROR with these bits.
         let next: Result<u8, u16> = match state {
             SL_STATE_DELAYOUT => {
@@ -618,7 +674,7 @@ impl Block for FB_MUTING {
                 } else if p.intact() {
                     Ok(SL_STATE_RUN)
                 } else {
-                    status = SL_E_CORRUPT;
+                    status = Status::Corrupt;
                     Err(SL_DIAG_CORRUPT)
                 }
             }
@@ -649,7 +705,7 @@ impl Block for FB_MUTING {
                         Ok(muting_state(f))
                     }
                     Some(_) => {
-                        status = SL_E_CORRUPT;
+                        status = Status::Corrupt;
                         Err(SL_DIAG_CORRUPT)
                     }
                     // With Enable TRUE every shutdown is a sequence violation (docs M6).
@@ -662,7 +718,7 @@ impl Block for FB_MUTING {
                 let seen = seq.view(if backwards { mirror(pat) } else { pat });
                 if !seq.used(pos) {
                     // A step this configuration never takes: the private state is corrupt.
-                    status = SL_E_CORRUPT;
+                    status = Status::Corrupt;
                     Err(SL_DIAG_CORRUPT)
                 } else if !inp.enable {
                     // Enable FALSE ends muting: the field decides alone (docs M7).
@@ -685,7 +741,7 @@ impl Block for FB_MUTING {
             }
             _ => {
                 // A state value this block never takes: the private state cannot be trusted.
-                status = SL_E_CORRUPT;
+                status = Status::Corrupt;
                 Err(SL_DIAG_CORRUPT)
             }
         };

@@ -18,6 +18,13 @@ use crate::prim::time;
 use crate::types::*;
 use core::mem::{offset_of, size_of};
 
+/// FB_OPMODE diag bit 0: discrepancy monitoring error (no mode or more than one mode selected
+/// for tDiscTime, manual §4.3.2).
+pub const SL_DIAG_OPMODE_DISC: u16 = 1 << 0;
+
+/// Block type tag of FB_OPMODE.
+pub const SL_TYPE_OPMODE: u16 = 7;
+
 /// FB OPMODE instance (ABI §3, §9). Inputs at the manual's offsets (§4.3.2), outputs at
 /// output base 32 + the manual's offsets.
 #[repr(C)]
@@ -201,13 +208,13 @@ fn opmode_crc(h: &SL_PRIVATE_HEADER, disc: u16) -> u16 {
 }
 
 /// A mode output switches on: verify the latched parameters first (C3), then RUN with it.
-fn enable(h: &mut SL_PRIVATE_HEADER, disc: u16, mode: u8) -> (u8, i32) {
+fn enable(h: &mut SL_PRIVATE_HEADER, disc: u16, mode: u8) -> (u8, Status) {
     if opmode_crc(h, disc) != h.wParamCrc {
         h.enter_error(SL_DIAG_CORRUPT);
-        return (SL_STATE_ERROR, SL_E_CORRUPT);
+        return (SL_STATE_ERROR, Status::Corrupt);
     }
     h.wAux = (h.wAux & !AUX_MODE) | u16::from(mode);
-    (SL_STATE_RUN, SL_OK)
+    (SL_STATE_RUN, Status::Ok)
 }
 
 impl Block for FB_OPMODE {
@@ -281,7 +288,7 @@ impl Block for FB_OPMODE {
         h.nState = SL_STATE_SAFE;
     }
 
-    fn step(&mut self, inp: &OpmodeIn, now: u32) -> i32 {
+    fn step(&mut self, inp: &OpmodeIn, now: u32) -> Status {
         let manual = self.manual_restart();
         let p = &mut self.stPrivate;
         let disc = u32::from(p.wDiscTime);
@@ -293,7 +300,7 @@ impl Block for FB_OPMODE {
         let latched_ok = latched.count_ones() == 1 && latched & !h.nActive == 0;
         if matches!(state, SL_STATE_RUN | SL_STATE_START) && !latched_ok {
             h.enter_error(SL_DIAG_CORRUPT);
-            return SL_E_CORRUPT;
+            return Status::Corrupt;
         }
 
         // Mode-change monitoring (§4.3.1 "A discrepancy time can be specified to monitor the
@@ -305,13 +312,13 @@ impl Block for FB_OPMODE {
                 h.tPhase = now;
             } else if time::reached(now, h.tPhase, disc) {
                 h.enter_error(SL_DIAG_OPMODE_DISC);
-                return SL_OK;
+                return Status::Ok;
             }
         } else {
             h.wAux &= !AUX_DISC_RUNNING;
         }
 
-        let mut status = SL_OK;
+        let mut status = Status::Ok;
         let (next, mode) = match state {
             SL_STATE_SAFE | SL_STATE_START if manual => {
                 let in_start = state == SL_STATE_START;
@@ -354,7 +361,7 @@ impl Block for FB_OPMODE {
                 // A state value this block never takes (START without manual restart
                 // included): the private state cannot be trusted.
                 h.enter_error(SL_DIAG_CORRUPT);
-                return SL_E_CORRUPT;
+                return Status::Corrupt;
             }
         };
         if h.nState != SL_STATE_ERROR {

@@ -8,6 +8,9 @@ use crate::prim::bools;
 use crate::types::*;
 use core::mem::{offset_of, size_of};
 
+/// Block type tag of FB_OR.
+pub const SL_TYPE_OR: u16 = 4;
+
 /// FB OR instance (ABI §3, §9). Inputs at the manual's offsets (§4.2.2), output base 24.
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]

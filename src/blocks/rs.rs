@@ -4,10 +4,13 @@
 //! States STOP (2), SAFE (3), SET (9); diag always 0; no error output.
 //! The state machine is shared with FB SR (`flipflop`).
 
-use super::flipflop::SL_FLIPFLOP_PRIVATE;
+use super::flipflop::{SL_FLIPFLOP_PRIVATE, SL_STATE_RS_SET};
 use super::{BlockInfo, ERROR, RESET, SAFE, STOP};
 use crate::types::*;
 use core::mem::{offset_of, size_of};
+
+/// Block type tag of FB_RS.
+pub const SL_TYPE_RS: u16 = 11;
 
 /// FB RS instance (ABI §3, §9). Inputs at the manual's offsets (§4.10.2), output base 24.
 #[repr(C)]

@@ -4,10 +4,13 @@
 //! States STOP (2), SAFE (3), SET (9); diag always 0; no error output.
 //! The state machine is shared with FB RS (`flipflop`).
 
-use super::flipflop::SL_FLIPFLOP_PRIVATE;
+use super::flipflop::{SL_FLIPFLOP_PRIVATE, SL_STATE_SR_SET};
 use super::{BlockInfo, ERROR, RESET, SAFE, STOP};
 use crate::types::*;
 use core::mem::{offset_of, size_of};
+
+/// Block type tag of FB_SR.
+pub const SL_TYPE_SR: u16 = 12;
 
 /// FB SR instance (ABI §3, §9). Inputs at the manual's offsets (§4.11.2), output base 24.
 #[repr(C)]

@@ -11,6 +11,9 @@ use super::{BlockInfo, DELAYOUT, ERROR, RESET, RUN, SAFE, STOP};
 use crate::types::*;
 use core::mem::{offset_of, size_of};
 
+/// Block type tag of FB_TOF.
+pub const SL_TYPE_TOF: u16 = 15;
+
 /// FB TOF instance (ABI §3, §9). Input at the manual's offset (§4.14.2), output base 32.
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]

@@ -10,6 +10,12 @@ use super::{BlockInfo, ERROR, RESET, RUN, SAFE, STOP};
 use crate::types::*;
 use core::mem::{offset_of, size_of};
 
+/// FB_TON state DELAYIN (9): TonIn is TRUE and the delay has not yet expired.
+pub const SL_STATE_TON_DELAYIN: u8 = 9;
+
+/// Block type tag of FB_TON.
+pub const SL_TYPE_TON: u16 = 13;
+
 /// FB TON instance (ABI §3, §9). Input at the manual's offset (§4.12.2), output base 32.
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]

@@ -10,12 +10,18 @@
 //! diag bit 12 and SL_E_RESTORE. States RUN (1), STOP (2), SAFE (3), DELAYIN (9).
 //! docs/semantics.md T10–T17.
 
-use super::timer::SL_TIMER_PRIVATE;
+use super::timer::{SL_DIAG_TON2_RESTORE, SL_OPT_TON2_REMAINING_TIME, SL_TIMER_PRIVATE};
 use super::{BlockInfo, ERROR, RESET, RUN, SAFE, STOP};
 use crate::prim::envelope::{self, Block, Instance};
 use crate::prim::header::F_CFG_INVALID;
 use crate::types::*;
 use core::mem::{offset_of, size_of};
+
+/// FB_TON2 state DELAYIN (9): TonIn is TRUE and the delay has not yet expired.
+pub const SL_STATE_TON2_DELAYIN: u8 = 9;
+
+/// Block type tag of FB_TON2.
+pub const SL_TYPE_TON2: u16 = 14;
 
 /// FB TON2 instance (ABI §3, §9). Inputs at the manual's offsets (§4.13.2), output base 40.
 #[repr(C)]
@@ -124,13 +130,13 @@ crate::impl_member!([] FB_TON2 {
 /// (docs/semantics.md T11, T15). Any state; 0 for a never-initialised instance;
 /// `Err(SL_E_CORRUPT)` when the private head or the stored value fails its check (nothing
 /// to persist then; the next cycle puts the block into ERROR). Does not modify the block.
-pub fn elapsed(fb: &FB_TON2) -> Result<u32, i32> {
+pub fn elapsed(fb: &FB_TON2) -> Result<u32, Status> {
     let p = &fb.stPrivate;
     if p.stHeader.is_zero() {
         return Ok(0);
     }
     if !p.stHeader.intact(<FB_TON2 as Block>::MAGIC) || !p.elapsed_intact() {
-        return Err(SL_E_CORRUPT);
+        return Err(Status::Corrupt);
     }
     Ok(p.tElapsed)
 }
@@ -146,10 +152,10 @@ pub fn elapsed(fb: &FB_TON2) -> Result<u32, i32> {
 ///   block was not in STOP: ERROR with diag bit 12, the stored value is discarded (0).
 /// - `SL_E_CORRUPT`: the private state failed its check: ERROR with diag bit 15, the stored
 ///   value is discarded (0).
-pub fn restore_elapsed(fb: &mut FB_TON2, elapsed_ms: u32) -> i32 {
+pub fn restore_elapsed(fb: &mut FB_TON2, elapsed_ms: u32) -> Status {
     if fb.header().is_zero() {
         let status = envelope::init(fb);
-        if status != SL_OK {
+        if status != Status::Ok {
             return status;
         }
     }
@@ -161,20 +167,20 @@ pub fn restore_elapsed(fb: &mut FB_TON2, elapsed_ms: u32) -> i32 {
     {
         p.repair_timers();
         envelope::force_error(fb);
-        return SL_E_CORRUPT;
+        return Status::Corrupt;
     }
     if p.stHeader.flag(F_CFG_INVALID) {
-        return SL_E_CONFIG;
+        return Status::Config;
     }
     if p.stHeader.nState != SL_STATE_STOP || elapsed_ms > p.dwDelay {
         p.set_elapsed(0);
         p.stHeader.enter_error(SL_DIAG_TON2_RESTORE);
         fb.write_outputs();
         fb.header_mut().seal();
-        return SL_E_RESTORE;
+        return Status::Restore;
     }
     p.set_elapsed(elapsed_ms);
-    SL_OK
+    Status::Ok
 }
 
 super::timer::timer_block!(FB_TON2 {

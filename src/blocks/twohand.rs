@@ -17,6 +17,36 @@ use crate::prim::{pair, time};
 use crate::types::*;
 use core::mem::{offset_of, size_of};
 
+/// FB_TWOHAND diag bit 2: discrepancy error between the two input pairs (the second group was
+/// not actuated within tDiscTimePairs, manual §4.7.2). Bits 0/1 are SL_DIAG_DISC1/2.
+pub const SL_DIAG_TWOHAND_PAIRS: u16 = 1 << 2;
+
+/// FB_TWOHAND diag bit 6: two-hand error (the second group was actuated while the first was
+/// no longer actuated, manual §4.7.2).
+pub const SL_DIAG_TWOHAND_ERROR: u16 = 1 << 6;
+
+/// FB_TWOHAND diag bit 10: bit 2 with "Safe Inputs after Disc Error" active (set in addition
+/// to bit 2). Bits 8/9 are SL_DIAG_SAFE_IN_DISC1/2.
+pub const SL_DIAG_TWOHAND_SAFE_IN_PAIRS: u16 = 1 << 10;
+
+/// FB_TWOHAND state 1BUTTON (11): every active input of the first group is TRUE, the second
+/// group is not actuated yet (manual §4.7.2).
+pub const SL_STATE_TWOHAND_1BUTTON: u8 = 11;
+
+/// FB_TWOHAND state 2BUTTON (12): every active input of the second group is TRUE, the first
+/// group is not actuated yet.
+pub const SL_STATE_TWOHAND_2BUTTON: u8 = 12;
+
+/// FB_TWOHAND state RELEASE (13): waiting until every active input is FALSE before the output
+/// can be set again.
+pub const SL_STATE_TWOHAND_RELEASE: u8 = 13;
+
+/// Block type tag of FB_TWOHAND.
+pub const SL_TYPE_TWOHAND: u16 = 8;
+
+/// Largest tDiscTimePairs of FB_TWOHAND in ms (manual §4.7.1: "up to 2500 ms").
+pub const SL_TWOHAND_PAIRS_TIME_MAX: u32 = 2_500;
+
 /// FB TWOHAND instance (ABI §3, §9). Inputs at the manual's offsets (§4.7.2), outputs at
 /// output base 40 + the manual's offsets.
 #[repr(C)]
@@ -242,13 +272,13 @@ fn twohand_crc(h: &SL_PRIVATE_HEADER, times: &[u16]) -> u16 {
 }
 
 /// The output switches on: verify the latched parameters first (C3).
-fn enable(h: &mut SL_PRIVATE_HEADER, times: &[u16]) -> i32 {
+fn enable(h: &mut SL_PRIVATE_HEADER, times: &[u16]) -> Status {
     if twohand_crc(h, times) != h.wParamCrc {
         h.enter_error(SL_DIAG_CORRUPT);
-        return SL_E_CORRUPT;
+        return Status::Corrupt;
     }
     h.nState = SL_STATE_RUN;
-    SL_OK
+    Status::Ok
 }
 
 impl Block for FB_TWOHAND {
@@ -342,7 +372,7 @@ impl Block for FB_TWOHAND {
         };
     }
 
-    fn step(&mut self, inp: &TwohandIn, now: u32) -> i32 {
+    fn step(&mut self, inp: &TwohandIn, now: u32) -> Status {
         let safe_inputs = self.safe_inputs_option();
         let p = &mut self.stPrivate;
 
@@ -364,7 +394,7 @@ impl Block for FB_TWOHAND {
         h.wAux = (h.wAux & !AUX_PAIR_TIMERS) | u16::from(running);
         if disc != 0 {
             h.enter_error(with_safe_bits(u16::from(disc), safe_inputs));
-            return SL_OK;
+            return Status::Ok;
         }
 
         let state = h.nState;
@@ -395,7 +425,7 @@ impl Block for FB_TWOHAND {
                 } else if second {
                     // Diag bit 6: the second group came while the first was let go (H10).
                     h.enter_error(SL_DIAG_TWOHAND_ERROR);
-                    return SL_OK;
+                    return Status::Ok;
                 } else if !first {
                     // The first group was let go before the second came: start over (H9).
                     if inp.released {
@@ -406,7 +436,7 @@ impl Block for FB_TWOHAND {
                 } else if window != 0 && time::reached(now, h.tPhase, window) {
                     // Diag bit 2: the second group did not follow within tDiscTimePairs (H11).
                     h.enter_error(with_safe_bits(SL_DIAG_TWOHAND_PAIRS, safe_inputs));
-                    return SL_OK;
+                    return Status::Ok;
                 } else {
                     state
                 }
@@ -432,11 +462,11 @@ impl Block for FB_TWOHAND {
             _ => {
                 // A state value this block never takes: the private state cannot be trusted.
                 h.enter_error(SL_DIAG_CORRUPT);
-                return SL_E_CORRUPT;
+                return Status::Corrupt;
             }
         };
         h.nState = next;
-        SL_OK
+        Status::Ok
     }
 
     /// H13: a failed pair must agree now with valid bytes; with "Safe Inputs after Disc

@@ -9,6 +9,9 @@ use crate::prim::bools;
 use crate::types::*;
 use core::mem::{offset_of, size_of};
 
+/// Block type tag of FB_XOR.
+pub const SL_TYPE_XOR: u16 = 5;
+
 /// FB XOR instance (ABI §3, §9). Inputs at the manual's offsets 0…15 (§4.34.2), output
 /// base 24 (outputs at base + 8 … base + 15).
 #[repr(C)]

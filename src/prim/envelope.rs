@@ -51,7 +51,7 @@ pub trait Block: Instance {
     fn start(&mut self, inp: &Self::In, now: u32);
     /// One cycle in a running state (not STOP, ERROR, RESET) with bRun TRUE; returns
     /// `SL_OK` or the status of an integrity failure it found.
-    fn step(&mut self, inp: &Self::In, now: u32) -> i32;
+    fn step(&mut self, inp: &Self::In, now: u32) -> Status;
     /// bRun went FALSE in a running state.
     fn stop(&mut self) {
         self.header_mut().nState = SL_STATE_STOP;
@@ -87,21 +87,21 @@ fn power_up<B: Block>(fb: &mut B, state: u8, diag: u16) -> bool {
 
 /// `sl_<name>_init`: validate and latch parameters, reset to power-up (STOP, outputs safe).
 /// Never touches a VAR_INPUT field.
-pub fn init<B: Block>(fb: &mut B) -> i32 {
+pub fn init<B: Block>(fb: &mut B) -> Status {
     let ok = power_up(fb, SL_STATE_STOP, 0);
     fb.write_outputs();
     fb.header_mut().seal();
     if ok {
-        SL_OK
+        Status::Ok
     } else {
-        SL_E_CONFIG
+        Status::Config
     }
 }
 
 /// `sl_<name>_cycle`: one task cycle at time `now` (ms, wrapping).
 #[inline]
-pub fn cycle<B: Block>(fb: &mut B, now: u32) -> i32 {
-    let mut status = SL_OK;
+pub fn cycle<B: Block>(fb: &mut B, now: u32) -> Status {
+    let mut status = Status::Ok;
     // An error entered in this call cannot be acknowledged in the same call.
     let mut fresh_error = false;
 
@@ -111,7 +111,7 @@ pub fn cycle<B: Block>(fb: &mut B, now: u32) -> i32 {
             power_up(fb, SL_STATE_STOP, 0);
         } else {
             power_up(fb, SL_STATE_ERROR, SL_DIAG_CORRUPT);
-            status = SL_E_CORRUPT;
+            status = Status::Corrupt;
             fresh_error = true;
         }
     }
@@ -119,7 +119,7 @@ pub fn cycle<B: Block>(fb: &mut B, now: u32) -> i32 {
     let h = fb.header_mut();
     if h.flag(F_TIME_VALID) && time::went_backwards(now, h.tLast) {
         h.enter_error(SL_DIAG_CLOCK);
-        status = worst_status(status, SL_E_CLOCK);
+        status = status.worst(Status::Clock);
         fresh_error = true;
     }
     h.tLast = now;
@@ -142,10 +142,10 @@ pub fn cycle<B: Block>(fb: &mut B, now: u32) -> i32 {
         fresh_error = true;
         if fb.latched_crc() != fb.header().wParamCrc {
             power_up(fb, SL_STATE_ERROR, SL_DIAG_CORRUPT);
-            status = worst_status(status, SL_E_CORRUPT);
+            status = status.worst(Status::Corrupt);
         } else {
             fb.header_mut().enter_error(SL_DIAG_PARAM_CHANGED);
-            status = worst_status(status, SL_E_PARAM_CHANGED);
+            status = status.worst(Status::ParamChanged);
         }
     }
 
@@ -174,7 +174,7 @@ pub fn cycle<B: Block>(fb: &mut B, now: u32) -> i32 {
         }
         _ => {
             if run {
-                status = worst_status(status, fb.step(&inp, now));
+                status = status.worst(fb.step(&inp, now));
             } else {
                 fb.stop();
             }
@@ -183,10 +183,10 @@ pub fn cycle<B: Block>(fb: &mut B, now: u32) -> i32 {
 
     let h = fb.header();
     if h.flag(F_CFG_INVALID) && h.nState == SL_STATE_STOP {
-        status = worst_status(status, SL_E_CONFIG);
+        status = status.worst(Status::Config);
     }
     if invalid {
-        status = worst_status(status, SL_E_INVALID_BOOL);
+        status = status.worst(Status::InvalidBool);
     }
     fb.write_outputs();
     fb.header_mut().seal();
