@@ -168,6 +168,32 @@ pub trait Registered {
     const INFO: BlockInfo;
     /// Every named field (reserved bytes and the private state excluded).
     const FIELDS: &'static [Field];
+    /// The state values of `INFO.states` as a set (one test per call, no table walk).
+    const STATES: StateSet = StateSet::of(Self::INFO.states);
+}
+
+/// A set of state values 0–63.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct StateSet(u64);
+
+impl StateSet {
+    /// The values of a state table.
+    pub const fn of(states: &[(u8, &str)]) -> Self {
+        let mut bits = 0u64;
+        let mut i = 0;
+        while i < states.len() {
+            assert!(states[i].0 < 64, "state values are below 64");
+            bits |= 1 << states[i].0;
+            i += 1;
+        }
+        Self(bits)
+    }
+
+    /// `state` is one of the set.
+    #[inline(always)]
+    pub const fn has(self, state: u8) -> bool {
+        state < 64 && (self.0 >> state) & 1 != 0
+    }
 }
 
 /// One registered block type.

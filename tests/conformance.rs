@@ -153,6 +153,38 @@ macro_rules! harness {
 
 safelogic::for_each_block!(harness);
 
+macro_rules! unknown_state {
+    ($($ty:ty => $init:ident, $cycle:ident;)*) => {
+        /// A sealed private header with a state value the block does not have is corrupt: for
+        /// every registered type, every value 0–255 outside its state table.
+        #[test]
+        fn an_unknown_state_value_is_corrupt() {
+            use safelogic::prim::envelope::Instance;
+            let mut checked = 0;
+            $({
+                let t = block_type(<$ty as safelogic::registry::Registered>::INFO.tag).unwrap();
+                for state in 0..=255u8 {
+                    if t.info.states.iter().any(|(v, _)| *v == state) {
+                        continue;
+                    }
+                    let mut fb = <$ty>::default();
+                    FunctionBlock::init(&mut fb);
+                    fb.header_mut().nState = state;
+                    fb.header_mut().seal();
+                    fb.bRun = 1;
+                    assert_eq!(FunctionBlock::cycle(&mut fb, 0), SL_E_CORRUPT, "{} state {state}", t.info.name);
+                    assert_eq!(fb.nState, SL_STATE_ERROR);
+                    assert!(fb.nDiag & SL_DIAG_CORRUPT != 0);
+                    checked += 1;
+                }
+            })*
+            assert!(checked > 200 * BLOCKS.len(), "{checked} forged states");
+        }
+    };
+}
+
+safelogic::for_each_block!(unknown_state);
+
 #[test]
 fn every_registered_type_survives_random_bytes() {
     let reached = run_all(0x5AFE_10C1C, 200, 60);

@@ -19,7 +19,7 @@ pub trait Instance {
 }
 
 /// What a block supplies to the envelope.
-pub trait Block: Instance {
+pub trait Block: Instance + crate::registry::Registered {
     /// Type tag stored in the private header.
     const MAGIC: u16;
     /// The block's parameters as the user wrote them (wide types).
@@ -106,7 +106,9 @@ pub fn cycle<B: Block>(fb: &mut B, now: u32) -> Status {
     let mut fresh_error = false;
 
     // The cheap check first; only a failing one asks whether the area is merely unused.
-    if !fb.header().intact(B::MAGIC) {
+    // A state value the block does not have is a corruption like a broken complement:
+    // decided here, once for every block (the blocks' own matches never see one).
+    if !fb.header().intact(B::MAGIC) || !B::STATES.has(fb.header().nState) {
         if fb.header().is_zero() {
             power_up(fb, SL_STATE_STOP, 0);
         } else {
