@@ -33,6 +33,10 @@ pub trait Member {
     /// Writes the input at this byte offset from a pattern of the same type; false when the
     /// block has no input there.
     fn set_input_bits(&mut self, offset: u16, bits: u32) -> bool;
+    /// Any named field (the field table's) at this byte offset as a 32-bit pattern.
+    fn field_bits(&self, offset: u16) -> Option<u32>;
+    /// Writes the parameter at this byte offset; false when the block has none there.
+    fn set_param_bits(&mut self, offset: u16, bits: u32) -> bool;
     /// One cycle as a member: bRun/bErrAck from the group, then the block's cycle; returns
     /// the status and the new nState (one dynamic call instead of three).
     fn run_in_group(&mut self, run: u8, ack: u8, now: u32) -> (Status, u8) {
@@ -141,8 +145,25 @@ macro_rules! impl_member {
                 })*
                 false
             }
+            fn field_bits(&self, offset: u16) -> Option<u32> {
+                $crate::impl_member!(@read self, offset,
+                    $($i,)* bRun, bErrAck, $($p,)* $($o,)* nState, nDiag $(, $n)*)
+            }
+            fn set_param_bits(&mut self, offset: u16, bits: u32) -> bool {
+                $(if usize::from(offset) == core::mem::offset_of!(Self, $p) {
+                    self.$p = $crate::registry::FieldType::from_bits(bits);
+                    return true;
+                })*
+                false
+            }
         }
     };
+    (@read $s:ident, $offset:ident, $($f:ident),*) => {{
+        $(if usize::from($offset) == core::mem::offset_of!(Self, $f) {
+            return Some($crate::registry::FieldType::to_bits($s.$f));
+        })*
+        None
+    }};
     (@field $f:ident, $dir:ident, $k:ident) => {
         $crate::registry::Field {
             name: stringify!($f),

@@ -1,5 +1,32 @@
 //! safelogic — TwinSAFE-style safety logic function blocks behind a C ABI.
 //!
+//! Every block is a caller-allocated struct (`FB_ESTOP`, `FB_ADD_DINT`, …) with the C
+//! layout; Rust code drives it through [`FunctionBlock`]:
+//!
+//! ```
+//! use safelogic::{FunctionBlock, Status, FB_ADD_INT, FB_ESTOP};
+//!
+//! // E-stop with one two-channel pair; the falling edge of Restart enables the output.
+//! let mut estop = FB_ESTOP { wInputActive: 0b11, tDiscTime12: 100, ..Default::default() };
+//! estop.try_init()?;
+//! for (name, value) in [("bEStopIn1", 1), ("bEStopIn2", 1), ("bRun", 1)] {
+//!     estop.set(name, value)?;
+//! }
+//! for (t, restart) in [(0, 0), (10, 1), (20, 0)] {
+//!     estop.set("bRestart", restart)?;
+//!     estop.try_cycle(t)?;
+//! }
+//! assert_eq!((estop.state_name(), estop.get_bool("bEStopOut")), ("RUN", Some(true)));
+//!
+//! // Exact integer arithmetic: an overflow is an ERROR with the output 0, never a wrap.
+//! let mut add = FB_ADD_INT { wInputActive: 0x0300, nAnalogIn1: 30_000, nAnalogIn2: 2_768, ..Default::default() };
+//! add.try_init()?;
+//! add.bRun = 1;
+//! add.try_cycle(0)?;
+//! assert!(add.is_error() && add.nAnalogOut == 0 && add.nDiagTextId == 0x4081);
+//! # Ok::<(), Status>(())
+//! ```
+//!
 //! The block layer (`types`, `prim`, `blocks`) is `no_std`, allocation-free and free of
 //! `unsafe`; the C ABI (`ffi`, feature `std`) is the only place with `unsafe` code.
 //! Not a certified safety component: see README.md.
@@ -112,6 +139,23 @@ pub trait FunctionBlock {
     fn state_name(&self) -> &'static str;
     /// The block is in ERROR.
     fn is_error(&self) -> bool;
+    /// A field by its name in the field table (`"bEStopOut"`, `"nAnalogOut"`, `"tDelay"`):
+    /// its value as a 32-bit pattern (signed types sign-extended), `None` for an unknown name.
+    fn get(&self, name: &str) -> Option<u32>;
+    /// A BOOL field by name as `bool` (`None`: unknown, not a BOOL, or not 0/1).
+    fn get_bool(&self, name: &str) -> Option<bool> {
+        let f = self.field(name)?;
+        match (f.kind, self.get(name)?) {
+            (registry::Kind::Bool, 0) => Some(false),
+            (registry::Kind::Bool, 1) => Some(true),
+            _ => None,
+        }
+    }
+    /// Writes an input or a parameter by name; `Err(Status::Config)` for an unknown name, an
+    /// output or info field, or a value outside the field's type.
+    fn set(&mut self, name: &str, value: i64) -> Result<(), Status>;
+    /// The field-table entry of a name.
+    fn field(&self, name: &str) -> Option<&'static registry::Field>;
 }
 
 impl<B: prim::envelope::Block + registry::Registered + group::Member> FunctionBlock for B {
@@ -126,6 +170,48 @@ impl<B: prim::envelope::Block + registry::Registered + group::Member> FunctionBl
     }
     fn is_error(&self) -> bool {
         self.state() == SL_STATE_ERROR
+    }
+    fn get(&self, name: &str) -> Option<u32> {
+        self.field_bits(self.field(name)?.offset)
+    }
+    fn set(&mut self, name: &str, value: i64) -> Result<(), Status> {
+        use registry::{Dir, Kind};
+        let f = self.field(name).ok_or(Status::Config)?;
+        let (min, max) = match f.kind {
+            Kind::Bool => (0, 1),
+            Kind::U8 => (0, i64::from(u8::MAX)),
+            Kind::U16 => (0, i64::from(u16::MAX)),
+            Kind::I16 => (i64::from(i16::MIN), i64::from(i16::MAX)),
+            Kind::U32 => (0, i64::from(u32::MAX)),
+            Kind::I32 => (i64::from(i32::MIN), i64::from(i32::MAX)),
+        };
+        if !(min..=max).contains(&value) {
+            return Err(Status::Config);
+        }
+        let bits = value as u32;
+        let written = match f.dir {
+            Dir::Input => self.set_input_bits(f.offset, bits),
+            Dir::Param => self.set_param_bits(f.offset, bits),
+            Dir::Control => {
+                let bit = |n: &str| self.get(n).unwrap_or(0) as u8;
+                let (run, ack) = if f.name == "bRun" {
+                    (bits as u8, bit("bErrAck"))
+                } else {
+                    (bit("bRun"), bits as u8)
+                };
+                self.drive(run, ack);
+                true
+            }
+            Dir::Output | Dir::Info => false,
+        };
+        if written {
+            Ok(())
+        } else {
+            Err(Status::Config)
+        }
+    }
+    fn field(&self, name: &str) -> Option<&'static registry::Field> {
+        B::FIELDS.iter().find(|f| f.name == name)
     }
 }
 pub use blocks::flipflop::{SL_STATE_RS_SET, SL_STATE_SR_SET};

@@ -252,3 +252,41 @@ fn field_tables_agree_with_the_header() {
     );
     assert!(n > 300, "{n} fields checked");
 }
+
+macro_rules! named_access {
+    ($($ty:ty => $init:ident, $cycle:ident;)*) => {
+        /// The Rust face reads and writes every field by its field-table name: inputs and
+        /// parameters are writable within their type's range, outputs and info data are not,
+        /// and a value written reads back.
+        #[test]
+        fn fields_by_name() {
+            $({
+                let mut fb = <$ty>::default();
+                for f in <$ty as safelogic::registry::Registered>::FIELDS {
+                    let writable = matches!(f.dir, Dir::Input | Dir::Param | Dir::Control);
+                    let v: i64 = match f.kind { Kind::Bool => 1, Kind::I16 | Kind::I32 => -2, _ => 2 };
+                    assert_eq!(fb.set(f.name, v).is_ok(), writable, "{}", f.name);
+                    if writable {
+                        assert_eq!(fb.get(f.name), Some(v as i32 as u32), "{}", f.name);
+                        let too_big = match f.kind {
+                            Kind::Bool => 2,
+                            Kind::U8 => 256,
+                            Kind::U16 => 65_536,
+                            Kind::I16 => 32_768,
+                            Kind::U32 => 1 << 32,
+                            Kind::I32 => 1 << 31,
+                        };
+                        assert_eq!(fb.set(f.name, too_big), Err(Status::Config), "{}", f.name);
+                    }
+                    if f.kind == Kind::Bool && writable {
+                        assert_eq!(fb.get_bool(f.name), Some(true));
+                    }
+                }
+                assert_eq!(fb.set("bNoSuchField", 0), Err(Status::Config));
+                assert_eq!(fb.get("bNoSuchField"), None);
+            })*
+        }
+    };
+}
+
+safelogic::for_each_block!(named_access);
