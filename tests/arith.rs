@@ -3,6 +3,9 @@
 //! with diag value and message, DIV rounding and division by zero, ERROR → RESET → RUN.
 
 use safelogic::blocks::arith::*;
+mod common;
+
+use common::Rng;
 use safelogic::*;
 
 const ACTIVE: u16 = ARITH_ACTIVE;
@@ -42,18 +45,13 @@ fn model(op: &str, a: i128, b: i128, rounding: u16, min: i128, max: i128) -> Res
     }
 }
 
-/// xorshift64*: a small deterministic generator (reproducible failures without a seed file).
-struct Rng(u64);
-
-impl Rng {
-    fn next(&mut self) -> u64 {
-        self.0 ^= self.0 >> 12;
-        self.0 ^= self.0 << 25;
-        self.0 ^= self.0 >> 27;
-        self.0.wrapping_mul(0x2545_F491_4F6C_DD1D)
-    }
-
+/// Operands for the variant tests.
+trait Operands {
     /// Uniform over the type, or (one time in three) within 8 of MIN, MAX, 0 or ±sqrt(MAX).
+    fn value<T: TryFrom<i128> + Copy + Bounded>(&mut self) -> T;
+}
+
+impl Operands for Rng {
     fn value<T: TryFrom<i128> + Copy + Bounded>(&mut self) -> T {
         let pick = self.next();
         let v: i128 = if pick % 3 == 0 {

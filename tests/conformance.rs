@@ -6,19 +6,11 @@
 //! from the table, compiled against include/safelogic.h).
 
 use safelogic::registry::{block_type, BlockType, Dir, Kind, BLOCKS};
+mod common;
+
+use common::Rng;
 use safelogic::*;
 use std::collections::BTreeSet;
-
-struct Rng(u64);
-
-impl Rng {
-    fn next(&mut self) -> u64 {
-        self.0 ^= self.0 >> 12;
-        self.0 ^= self.0 << 25;
-        self.0 ^= self.0 >> 27;
-        self.0.wrapping_mul(0x2545_F491_4F6C_DD1D)
-    }
-}
 
 fn read(bytes: &[u8], offset: u16, kind: Kind) -> u32 {
     let o = usize::from(offset);

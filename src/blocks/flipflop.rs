@@ -108,14 +108,7 @@ macro_rules! flipflop_block {
     };
     ($t:ty) => {
         const _: () = {
-            use $crate::blocks::flipflop::*;
-            use $crate::prim::envelope::Block;
-            #[allow(unused_imports)]
-            use $crate::prim::{
-                bools, bools::Edge, edm, edm::Edm, header::*, pair, restart, restart::Restart, time,
-            };
-            use $crate::registry::Private;
-            use $crate::types::*;
+            $crate::blocks::family_prelude!(flipflop);
 
             impl Block for $t {
                 const MAGIC: u16 = <$t as FlipFlopBlock>::TAG;

@@ -130,14 +130,7 @@ pub(crate) fn enable<T: GuardBlock>(p: &mut SL_GUARD_PRIVATE, edm: &Edm, now: u3
 macro_rules! guard_block {
     ($t:ty) => {
         const _: () = {
-            use $crate::blocks::guard::*;
-            use $crate::prim::envelope::Block;
-            #[allow(unused_imports)]
-            use $crate::prim::{
-                bools, bools::Edge, edm, edm::Edm, header::*, pair, restart, restart::Restart, time,
-            };
-            use $crate::registry::Private;
-            use $crate::types::*;
+            $crate::blocks::family_prelude!(guard);
 
             impl Block for $t {
                 const MAGIC: u16 = <$t as GuardBlock>::TAG;

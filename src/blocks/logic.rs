@@ -55,14 +55,7 @@ pub trait LogicBlock: crate::registry::Private<P = SL_LOGIC_PRIVATE> {
 macro_rules! logic_block {
     ($t:ty) => {
         const _: () = {
-            use $crate::blocks::logic::*;
-            use $crate::prim::envelope::Block;
-            #[allow(unused_imports)]
-            use $crate::prim::{
-                bools, bools::Edge, edm, edm::Edm, header::*, pair, restart, restart::Restart, time,
-            };
-            use $crate::registry::Private;
-            use $crate::types::*;
+            $crate::blocks::family_prelude!(logic);
 
             impl Block for $t {
                 const MAGIC: u16 = <$t as LogicBlock>::TAG;

@@ -25,6 +25,21 @@ pub mod ton2;
 pub mod twohand;
 pub mod xor;
 
+/// The names a family's `Block` impl uses, for its expansion in a member's file.
+macro_rules! family_prelude {
+    ($family:ident) => {
+        use $crate::blocks::$family::*;
+        use $crate::prim::envelope::Block;
+        #[allow(unused_imports)]
+        use $crate::prim::{
+            bools, bools::Edge, edm, edm::Edm, header::*, pair, restart, restart::Restart, time,
+        };
+        use $crate::registry::Private;
+        use $crate::types::*;
+    };
+}
+pub(crate) use family_prelude;
+
 /// What the C ABI and HMIs need to know about a block type without an instance.
 #[derive(Clone, Copy, Debug)]
 pub struct BlockInfo {

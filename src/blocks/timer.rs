@@ -296,12 +296,7 @@ macro_rules! timer_block {
     };
     ($t:ty) => {
         const _: () = {
-            use $crate::blocks::timer::*;
-            #[allow(unused_imports)]
-            use $crate::prim::{bools, bools::Edge, edm, edm::Edm, header::*, pair, restart, restart::Restart, time};
-            use $crate::prim::envelope::Block;
-            use $crate::registry::Private;
-            use $crate::types::*;
+            $crate::blocks::family_prelude!(timer);
 
         impl Block for $t {
             const MAGIC: u16 = <$t as TimerBlock>::TAG;

@@ -330,3 +330,16 @@ pub fn expect_error<B: Guard>(fb: &B, diag: u16) {
     expect(fb, SL_STATE_ERROR);
     assert_eq!(fb.diag(), diag, "nDiag in ERROR");
 }
+
+/// xorshift64*: a small deterministic generator for random tests (reproducible failures
+/// without a seed file).
+pub struct Rng(pub u64);
+
+impl Rng {
+    pub fn next(&mut self) -> u64 {
+        self.0 ^= self.0 >> 12;
+        self.0 ^= self.0 << 25;
+        self.0 ^= self.0 >> 27;
+        self.0.wrapping_mul(0x2545_F491_4F6C_DD1D)
+    }
+}
