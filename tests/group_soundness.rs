@@ -14,8 +14,20 @@ struct Fixture {
     estop: FB_ESTOP,
 }
 
-fn running_estop_group() -> Box<Fixture> {
-    let mut f = Box::new(Fixture {
+/// The fixture is reached only through this raw pointer (as a C caller's memory): a
+/// `&mut Fixture` formed after the ESTOP's address went into the member table would, under
+/// Stacked Borrows, invalidate that address (a test-side aliasing error Miri reports).
+struct Fx(*mut Fixture);
+
+impl Drop for Fx {
+    fn drop(&mut self) {
+        // SAFETY: from `Box::into_raw` in `running_estop_group`, freed once.
+        drop(unsafe { Box::from_raw(self.0) });
+    }
+}
+
+fn running_estop_group() -> Fx {
+    let f = Fx(Box::into_raw(Box::new(Fixture {
         g: SL_GROUP::default(),
         members: [SL_MEMBER::default(); 2],
         links: [SL_LINK::default(); 2],
@@ -24,113 +36,140 @@ fn running_estop_group() -> Box<Fixture> {
             tDiscTime12: 50,
             ..Default::default()
         },
-    });
-    assert_eq!(f.estop.init(), SL_OK);
-    let f_ptr: *mut Fixture = &mut *f;
-    // SAFETY: every pointer is to a live field of the boxed fixture.
+    })));
+    let p = f.0;
+    // SAFETY: every pointer is to a field of the boxed fixture, derived from `p`.
     unsafe {
-        let f = &mut *f_ptr;
-        assert_eq!(
-            ffi::sl_group_init(&mut f.g, f.members.as_mut_ptr(), 2, f.links.as_mut_ptr(), 2),
-            SL_OK
-        );
-        let e: *mut c_void = (&mut f.estop as *mut FB_ESTOP).cast();
+        assert_eq!((*p).estop.init(), SL_OK);
+        assert_eq!(init(p), SL_OK);
+        let e: *mut c_void = std::ptr::addr_of_mut!((*p).estop).cast();
         assert_eq!(
             ffi::sl_group_add_member(
-                &mut f.g,
-                f.members.as_mut_ptr(),
+                std::ptr::addr_of_mut!((*p).g),
+                members(p),
                 SL_TYPE_ESTOP,
                 e,
                 std::ptr::null_mut()
             ),
             SL_OK
         );
+        (*p).estop.bEStopIn1 = 1;
+        (*p).estop.bEStopIn2 = 1;
+        (*p).g.bRun = 1;
+        cycle(p, 0);
+        (*p).estop.bRestart = 1;
+        cycle(p, 10);
+        (*p).estop.bRestart = 0;
+        cycle(p, 20);
+        assert_eq!((*p).g.nState, SL_STATE_RUN);
+        assert_eq!((*p).estop.bEStopOut, 1);
     }
-    f.estop.bEStopIn1 = 1;
-    f.estop.bEStopIn2 = 1;
-    f.g.bRun = 1;
-    cycle(&mut f, 0);
-    f.estop.bRestart = 1;
-    cycle(&mut f, 10);
-    f.estop.bRestart = 0;
-    cycle(&mut f, 20);
-    assert_eq!(f.g.nState, SL_STATE_RUN);
-    assert_eq!(f.estop.bEStopOut, 1);
     f
 }
 
-fn cycle(f: &mut Fixture, t: u32) -> i32 {
-    // SAFETY: the fixture's own tables, as passed to sl_group_init.
-    unsafe { ffi::sl_group_cycle(&mut f.g, f.members.as_mut_ptr(), f.links.as_mut_ptr(), t) }
+fn members(f: *mut Fixture) -> *mut SL_MEMBER {
+    // SAFETY: a field address of the live fixture.
+    unsafe { std::ptr::addr_of_mut!((*f).members).cast() }
 }
 
-fn press_estop_and_cycle(f: &mut Fixture) {
-    f.estop.bEStopIn1 = 0;
-    f.estop.bEStopIn2 = 0;
-    cycle(f, 30);
-    assert_eq!(
-        f.estop.bEStopOut, 0,
-        "the E-stop output must follow the E-stop"
-    );
+fn links(f: *mut Fixture) -> *mut SL_LINK {
+    // SAFETY: a field address of the live fixture.
+    unsafe { std::ptr::addr_of_mut!((*f).links).cast() }
+}
+
+fn init(f: *mut Fixture) -> i32 {
+    // SAFETY: the fixture's own tables.
+    unsafe { ffi::sl_group_init(std::ptr::addr_of_mut!((*f).g), members(f), 2, links(f), 2) }
+}
+
+fn cycle(f: *mut Fixture, t: u32) -> i32 {
+    // SAFETY: the fixture's own tables, as passed to sl_group_init.
+    unsafe { ffi::sl_group_cycle(std::ptr::addr_of_mut!((*f).g), members(f), links(f), t) }
+}
+
+fn press_estop_and_cycle(f: *mut Fixture) {
+    // SAFETY: fields of the live fixture, no reference kept.
+    unsafe {
+        (*f).estop.bEStopIn1 = 0;
+        (*f).estop.bEStopIn2 = 0;
+        cycle(f, 30);
+        assert_eq!(
+            (*f).estop.bEStopOut,
+            0,
+            "the E-stop output must follow the E-stop"
+        );
+    }
 }
 
 /// The reproducer of the issue: a refused init (bConnections = 2) must change nothing.
 #[test]
 fn refused_init_keeps_the_members_of_a_running_group() {
-    let mut f = running_estop_group();
-    f.g.bConnections = 2;
-    // SAFETY: the fixture's own tables.
-    let rc =
-        unsafe { ffi::sl_group_init(&mut f.g, f.members.as_mut_ptr(), 2, f.links.as_mut_ptr(), 2) };
-    assert_eq!(rc, SL_E_CONFIG);
-    assert!(!f.members[0].pBlock.is_null(), "member table untouched");
-    f.g.bConnections = 0;
-    press_estop_and_cycle(&mut f);
+    let fx = running_estop_group();
+    let f = fx.0;
+    // SAFETY: fields of the live fixture.
+    unsafe {
+        (*f).g.bConnections = 2;
+        let rc = init(f);
+        assert_eq!(rc, SL_E_CONFIG);
+        assert!(!(*f).members[0].pBlock.is_null(), "member table untouched");
+        (*f).g.bConnections = 0;
+    }
+    press_estop_and_cycle(f);
 }
 
 /// A refused init for a NULL table changes nothing either.
 #[test]
 fn init_with_null_links_keeps_the_members() {
-    let mut f = running_estop_group();
+    let fx = running_estop_group();
+    let f = fx.0;
     // SAFETY: the fixture's member table; links NULL with a capacity is refused.
-    let rc =
-        unsafe { ffi::sl_group_init(&mut f.g, f.members.as_mut_ptr(), 2, std::ptr::null_mut(), 2) };
-    assert_eq!(rc, SL_E_NULL);
-    assert!(!f.members[0].pBlock.is_null());
-    press_estop_and_cycle(&mut f);
+    unsafe {
+        let rc = ffi::sl_group_init(
+            std::ptr::addr_of_mut!((*f).g),
+            members(f),
+            2,
+            std::ptr::null_mut(),
+            2,
+        );
+        assert_eq!(rc, SL_E_NULL);
+        assert!(!(*f).members[0].pBlock.is_null());
+    }
+    press_estop_and_cycle(f);
 }
 
 /// A valid init of a group that is still running is refused (semantics GR13).
 #[test]
 fn init_of_a_running_group_is_refused() {
-    let mut f = running_estop_group();
-    // SAFETY: the fixture's own tables.
-    let rc =
-        unsafe { ffi::sl_group_init(&mut f.g, f.members.as_mut_ptr(), 2, f.links.as_mut_ptr(), 2) };
-    assert_eq!(rc, SL_E_CONFIG);
-    press_estop_and_cycle(&mut f);
-    // Stopped, the group may be initialised again.
-    f.g.bRun = 0;
-    cycle(&mut f, 40);
-    assert_eq!(f.g.nState, SL_STATE_STOP);
-    // SAFETY: the fixture's own tables.
-    let rc =
-        unsafe { ffi::sl_group_init(&mut f.g, f.members.as_mut_ptr(), 2, f.links.as_mut_ptr(), 2) };
-    assert_eq!(rc, SL_OK);
-    assert_eq!(f.g.nMembers, 0);
+    let fx = running_estop_group();
+    let f = fx.0;
+    assert_eq!(init(f), SL_E_CONFIG);
+    press_estop_and_cycle(f);
+    // SAFETY: fields of the live fixture.
+    unsafe {
+        // Stopped, the group may be initialised again.
+        (*f).g.bRun = 0;
+        cycle(f, 40);
+        assert_eq!((*f).g.nState, SL_STATE_STOP);
+        assert_eq!(init(f), SL_OK);
+        assert_eq!((*f).g.nMembers, 0);
+    }
 }
 
 /// A member entry that no longer reaches a block puts the group into ERROR.
 #[test]
 fn unreachable_member_is_a_group_error() {
-    let mut f = running_estop_group();
-    f.members[0].pBlock = std::ptr::null_mut();
-    assert_eq!(cycle(&mut f, 30), SL_E_CORRUPT);
-    assert_eq!(f.g.nState, SL_STATE_ERROR);
-    assert_eq!(f.g.bFbErr, 1);
-    assert_eq!(f.g.bInRun, 0);
-    assert_eq!(f.g.bFbRun, 0);
-    assert_eq!(f.g.nFailedMember, 0);
+    let fx = running_estop_group();
+    let f = fx.0;
+    // SAFETY: fields of the live fixture.
+    unsafe {
+        (*f).members[0].pBlock = std::ptr::null_mut();
+        assert_eq!(cycle(f, 30), SL_E_CORRUPT);
+        assert_eq!((*f).g.nState, SL_STATE_ERROR);
+        assert_eq!((*f).g.bFbErr, 1);
+        assert_eq!((*f).g.bInRun, 0);
+        assert_eq!((*f).g.bFbRun, 0);
+        assert_eq!((*f).g.nFailedMember, 0);
+    }
 }
 
 // ---------------------------------------------------------------------------------------
@@ -149,17 +188,21 @@ struct Arena([u8; ARENA]);
 
 struct Mem {
     base: *mut u8,
-    _owner: Box<Arena>,
+}
+
+impl Drop for Mem {
+    fn drop(&mut self) {
+        // SAFETY: `base` came from `Box::into_raw` in `new` and is freed once.
+        drop(unsafe { Box::from_raw(self.base.cast::<Arena>()) });
+    }
 }
 
 impl Mem {
     fn new() -> Mem {
-        let mut owner = Box::new(Arena([0; ARENA]));
-        let base = owner.0.as_mut_ptr();
-        Mem {
-            base,
-            _owner: owner,
-        }
+        // Only raw pointers from here on, as a C caller's memory (no Box is moved or
+        // retagged while the library holds pointers into it).
+        let raw = Box::into_raw(Box::new(Arena([0; ARENA])));
+        Mem { base: raw.cast() }
     }
 
     /// A pointer `off` bytes into the arena.
