@@ -1026,7 +1026,7 @@ typedef struct SL_GROUP {
 } SL_GROUP;
 
 /*
- One member entry in caller storage.
+ One member entry in caller storage (written only by `sl_group_add_member`).
  */
 typedef struct SL_MEMBER {
   /*
@@ -1037,6 +1037,10 @@ typedef struct SL_MEMBER {
    SL_TYPE_* of the block.
    */
   uint16_t nType;
+  /*
+   Private: the group's check of this entry (its block, type, place and the group's
+   member count and capacity). Never write it: an entry that fails it is a member error.
+   */
   uint8_t aReserved[6];
 } SL_MEMBER;
 
@@ -1053,6 +1057,10 @@ typedef struct SL_LINK {
    SL_LINK_BOOL, SL_LINK_ANALOG16 or SL_LINK_ANALOG32 (the type of both fields).
    */
   uint8_t nKind;
+  /*
+   Private: the group's check of this link (its fields, place and the link count).
+   Never write it: a link that fails it is a member error of its destination.
+   */
   uint8_t aReserved[3];
 } SL_LINK;
 
@@ -4180,21 +4188,34 @@ int32_t sl_ton2_restore_elapsed(struct FB_TON2 *fb, uint32_t nElapsedMs);
  Resets a group to power-up (STOP, or STOPERROR with bConnections) with the caller's
  storage for `nMemberCap` members and `nLinkCap` links. The same arrays must be passed to
  every later sl_group_* call. Does not modify the group's input fields. Checks before it
- writes: a refused init (SL_E_NULL, SL_E_ALIGNMENT, SL_E_CONFIG for bConnections > 1 or
- a group still in RUN/START) changes nothing.
+ writes: a refused init (SL_E_NULL, SL_E_ALIGNMENT, SL_E_CONFIG for bConnections > 1, a
+ group still in RUN/START, or tables that share a byte with each other or the group)
+ changes nothing.
 
  # Safety
- `g` is NULL or points to a live SL_GROUP; `aMembers` / `aLinks` are NULL or point to at least `nMemberCap` / `nLinkCap` entries; the caller keeps all of them alive and untouched for as long as the group is used.
+ `g` is NULL or points to a live SL_GROUP; `aMembers` / `aLinks` are NULL or point to at
+ least `nMemberCap` / `nLinkCap` entries; the caller keeps all of them alive, in place and
+ untouched for as long as the group is used (a table that is freed, moved or written by
+ the caller cannot be told from a valid one until its entries fail their checks).
  */
 int32_t sl_group_init(struct SL_GROUP *g, struct SL_MEMBER *aMembers, uint16_t nMemberCap, struct SL_LINK *aLinks, uint16_t nLinkCap);
 
 /*
  Adds a block as the next member (execution order) while the group is stopped.
  `nType` is `SL_TYPE_<NAME>`; the index is written to `*pIndex` unless it is NULL.
- A block can be a member once; SL_E_FULL when the member storage is full.
+ The block is checked before anything is written: SL_E_NULL for a NULL block; SL_E_FULL
+ when the member storage is full; SL_E_CONFIG for an unknown type, a misaligned block, a
+ block that shares a byte with the group, its member table or another member (a block
+ can be a member once), or a block whose private header is that of another type;
+ SL_E_CORRUPT for a block of this type whose private state fails its check, or a member
+ table whose entries fail theirs. A block with an all-zero private state (never
+ initialised) is initialised here with its type's init; initialise blocks before adding
+ them to have their type checked (docs/semantics.md GR14).
 
  # Safety
- As for `sl_group_init`, with the same tables; `pBlock` points to a live block of type `nType` that stays alive while it is a member; `pIndex` is NULL or writable.
+ As for `sl_group_init`, with the same tables; `pBlock` points to a live block of type
+ `nType` (at least its size readable) that stays alive and in place while it is a member;
+ `pIndex` is NULL or writable.
  */
 int32_t sl_group_add_member(struct SL_GROUP *g, struct SL_MEMBER *aMembers, uint16_t nType, void *pBlock, uint16_t *pIndex);
 
@@ -4205,7 +4226,9 @@ int32_t sl_group_add_member(struct SL_GROUP *g, struct SL_MEMBER *aMembers, uint
  (SL_LINK_ANALOG16), DINT/UDINT to the same (SL_LINK_ANALOG32). The value is
  copied just before the destination executes: a link from an earlier member carries this
  cycle's value, one from a later member the previous cycle's. SL_E_CONFIG for a field
- that is not a linkable output / input of a member, or an input that is already linked.
+ that is not a linkable output / input of a member, an input that is already linked, or
+ a link table that shares a byte with the group, the member table or a member;
+ SL_E_CORRUPT for a member entry that fails its check.
 
  # Safety
  As for `sl_group_init`, with the same tables.
@@ -4215,9 +4238,13 @@ int32_t sl_group_add_link(struct SL_GROUP *g, struct SL_MEMBER *aMembers, struct
 /*
  One group cycle at `tNow`: group state, then every member in order (links first), all
  with the same `tNow`. Returns the group's status or the worst status of a member.
+ A member entry or link that fails its check, or tables that share a byte with the
+ group, are member errors: the group enters ERROR, every reachable member is stopped in
+ this cycle, SL_E_CORRUPT (docs/semantics.md GR13, GR14).
 
  # Safety
- As for `sl_group_init`, with the same tables; every member block is still alive.
+ As for `sl_group_init`, with the same tables; every member block is still alive and in
+ place (a freed block cannot be detected).
  */
 int32_t sl_group_cycle(struct SL_GROUP *g, struct SL_MEMBER *aMembers, struct SL_LINK *aLinks, uint32_t tNow);
 

@@ -5,6 +5,7 @@
 
 use crate::group::{self, Member, Members, SL_LINK_BOOL};
 use crate::prim::envelope::{self, Block};
+use crate::prim::header::SL_PRIVATE_HEADER;
 use crate::registry::Registered;
 use crate::types::*;
 use crate::{FB_TON2, SL_GROUP, SL_LINK, SL_MEMBER};
@@ -135,9 +136,13 @@ const VERSION: &str = concat!(env!("CARGO_PKG_VERSION"), "\0");
 pub unsafe extern "C" fn sl_ton2_get_elapsed(fb: *const FB_TON2, pElapsedMs: *mut u32) -> i32 {
     ffi_boundary!(SL_E_INTERNAL, {
         let run = || -> Result<i32, i32> {
-            let fb = instance_ref(fb)?;
-            let out = instance(pElapsedMs)?;
-            *out = crate::blocks::ton2::elapsed(fb).map_err(Status::code)?;
+            // Both pointers are checked first; the block is read through a reference that
+            // ends before the result is written through the raw output pointer, so an
+            // output inside the block (a caller's choice) is no aliasing.
+            instance_ref(pElapsedMs.cast_const())?;
+            let v = crate::blocks::ton2::elapsed(instance_ref(fb)?).map_err(Status::code)?;
+            // SAFETY: non-null and aligned (checked above); writable by the contract.
+            unsafe { pElapsedMs.write(v) };
             Ok(SL_OK)
         };
         run().unwrap_or_else(|e| e)
@@ -197,25 +202,125 @@ macro_rules! ffi_functions {
             })*
             None
         }
+
+        /// The memory layout of every registered type, for the checks of a new member.
+        fn layouts() -> [TypeLayout; [$(stringify!($ty)),*].len()] {
+            [$(TypeLayout {
+                tag: <$ty as Registered>::INFO.tag,
+                size: core::mem::size_of::<$ty>(),
+                align: core::mem::align_of::<$ty>(),
+                header: {
+                    let u = core::mem::MaybeUninit::<$ty>::uninit();
+                    let base = u.as_ptr();
+                    // SAFETY: only the address of the field is taken, nothing is read.
+                    let h = unsafe { core::ptr::addr_of!((*base).stPrivate.stHeader) };
+                    h as usize - base as usize
+                },
+                magic: <$ty as Block>::MAGIC,
+                init: |p| {
+                    // SAFETY: `p` is a checked block of this type (add_member).
+                    unsafe { $init(p.cast::<$ty>()) }
+                },
+            }),*]
+        }
     };
 }
 
 crate::for_each_block!(ffi_functions);
 
-/// The caller's member table seen as group members.
-struct CMembers<'a>(&'a [SL_MEMBER]);
+/// What the group's member checks need of a registered type.
+#[derive(Clone, Copy)]
+struct TypeLayout {
+    tag: u16,
+    size: usize,
+    align: usize,
+    /// Offset of the private header (`stPrivate.stHeader`).
+    header: usize,
+    magic: u16,
+    init: fn(*mut c_void) -> i32,
+}
 
-impl Members for CMembers<'_> {
+fn layout(ty: u16) -> Option<TypeLayout> {
+    layouts().into_iter().find(|l| l.tag == ty)
+}
+
+/// Byte range `[p, p + len)`; `None` when it wraps the address space.
+fn span(p: usize, len: usize) -> Option<(usize, usize)> {
+    Some((p, p.checked_add(len)?))
+}
+
+/// Two byte ranges share no byte (either may lie below the other).
+fn disjoint(a: (usize, usize), b: (usize, usize)) -> bool {
+    a.0 == a.1 || b.0 == b.1 || a.1 <= b.0 || b.1 <= a.0
+}
+
+/// The caller's member table seen as group members: entries are read by value through the
+/// raw pointer (no reference to the table is held while a member runs), and each entry must
+/// pass its check before its block is reached.
+struct CMembers {
+    base: *mut SL_MEMBER,
+    count: u16,
+    cap: u16,
+    group: usize,
+}
+
+impl CMembers {
+    /// Entry `i`, if it is inside the count and passes its check.
+    fn entry(&self, i: usize) -> Option<SL_MEMBER> {
+        if i >= usize::from(self.count) {
+            return None;
+        }
+        // SAFETY: `base` is non-null and aligned (checked by `storage`) and points to at
+        // least `cap >= count > i` entries (sl_group_init contract); read by value.
+        let e = unsafe { self.base.add(i).read() };
+        let check = group::member_check(
+            self.group,
+            self.base.wrapping_add(i) as usize,
+            i as u16,
+            self.count,
+            self.cap,
+            e.pBlock as usize,
+            e.nType,
+        );
+        (e.aReserved == check).then_some(e)
+    }
+
+    /// The byte range of member `i`'s block.
+    fn span_of(&self, i: usize) -> Option<(usize, usize)> {
+        let e = self.entry(i)?;
+        span(e.pBlock as usize, layout(e.nType)?.size)
+    }
+}
+
+impl Members for CMembers {
     fn with<R>(&mut self, i: usize, f: impl FnOnce(&mut dyn Member) -> R) -> Option<R> {
-        let e = self.0.get(i)?;
+        let e = self.entry(i)?;
         member_dyn(e.nType, e.pBlock).map(f)
     }
 }
 
-/// A caller array as a slice; NULL is allowed only for an empty one.
-fn storage<'a, T>(p: *mut T, len: usize) -> Result<&'a mut [T], i32> {
+/// Link storage read by value through the raw pointer.
+struct CLinks {
+    base: *const SL_LINK,
+    count: usize,
+}
+
+impl group::Links for CLinks {
+    fn count(&self) -> usize {
+        self.count
+    }
+    fn get(&self, i: usize) -> Option<SL_LINK> {
+        // SAFETY: non-null and aligned (checked by `storage`), at least `count` entries
+        // (sl_group_init contract); read by value.
+        (i < self.count).then(|| unsafe { self.base.add(i).read() })
+    }
+}
+
+/// Checks a caller array of `len` elements (NULL is allowed only for an empty one) and
+/// returns its byte range.
+fn storage<T>(p: *mut T, len: usize) -> Result<(usize, usize), i32> {
     if len == 0 {
-        return Ok(&mut []);
+        return Ok((p as usize, p as usize));
     }
     if p.is_null() {
         return Err(SL_E_NULL);
@@ -223,21 +328,126 @@ fn storage<'a, T>(p: *mut T, len: usize) -> Result<&'a mut [T], i32> {
     if (p as usize) % core::mem::align_of::<T>() != 0 {
         return Err(SL_E_ALIGNMENT);
     }
-    // SAFETY: `p` is non-null and aligned; the caller guarantees (sl_group_init contract)
-    // that it points to at least `len` elements it owns and does not touch during the
-    // call. The slice is built from the raw pointer itself, never from a reference to its
-    // first element, so it may cover all `len` elements.
-    Ok(unsafe { core::slice::from_raw_parts_mut(p, len) })
+    len.checked_mul(core::mem::size_of::<T>())
+        .and_then(|n| span(p as usize, n))
+        .ok_or(SL_E_CONFIG)
+}
+
+/// A caller array as a slice, after `storage` accepted it.
+///
+/// # Safety
+/// `storage(p, len)` returned `Ok`; the caller owns `len` elements at `p` and does not
+/// touch them during the call, and no live reference covers them.
+unsafe fn slice_mut<'a, T>(p: *mut T, len: usize) -> &'a mut [T] {
+    if len == 0 {
+        return &mut [];
+    }
+    // SAFETY: by the function's contract. The slice is built from the raw pointer itself,
+    // never from a reference to its first element, so it may cover all `len` elements.
+    unsafe { core::slice::from_raw_parts_mut(p, len) }
+}
+
+/// The group and its two tables share no byte.
+fn tables_disjoint(
+    g: *const SL_GROUP,
+    members: (usize, usize),
+    links: Option<(usize, usize)>,
+) -> Result<(), i32> {
+    let group = span(g as usize, core::mem::size_of::<SL_GROUP>()).ok_or(SL_E_CONFIG)?;
+    let ok = disjoint(group, members)
+        && links.map_or(true, |l| disjoint(group, l) && disjoint(members, l));
+    ok.then_some(()).ok_or(SL_E_CONFIG)
+}
+
+/// The member table of `g` (count and capacity from its private state) at `table`.
+fn member_table(g: &SL_GROUP, g_addr: usize, table: *mut SL_MEMBER) -> Result<CMembers, i32> {
+    let (count, cap) = group::member_counts(g).ok_or(SL_E_CORRUPT)?;
+    storage(table, usize::from(count))?;
+    Ok(CMembers {
+        base: table,
+        count,
+        cap,
+        group: g_addr,
+    })
+}
+
+/// Rewrites the check of every entry (after the count changed).
+fn seal_members(t: &CMembers) {
+    for i in 0..usize::from(t.count) {
+        let p = t.base.wrapping_add(i);
+        // SAFETY: `i < count <= cap`: inside the caller's table (sl_group_init contract),
+        // which no live reference covers (checked disjoint from the group).
+        let e = unsafe { p.read() };
+        let check = group::member_check(
+            t.group,
+            p as usize,
+            i as u16,
+            t.count,
+            t.cap,
+            e.pBlock as usize,
+            e.nType,
+        );
+        // SAFETY: as above.
+        unsafe { core::ptr::addr_of_mut!((*p).aReserved).write(check) };
+    }
+}
+
+/// Reads the private header a block of type `l` has at its place in the block at `p`.
+///
+/// # Safety
+/// At least `l.size` bytes at `p` are readable.
+unsafe fn header_at(p: *mut c_void, l: &TypeLayout) -> SL_PRIVATE_HEADER {
+    // SAFETY: `l.header + size_of::<SL_PRIVATE_HEADER>() <= l.size` (the header is inside
+    // the block's struct); every byte of a block struct is initialised (no padding).
+    unsafe {
+        p.cast::<u8>()
+            .add(l.header)
+            .cast::<SL_PRIVATE_HEADER>()
+            .read_unaligned()
+    }
+}
+
+/// Checks that the block at `p` is a block of type `claimed` by its own private header
+/// (docs/semantics.md GR14). `Ok(true)`: an all-zero header, a never-initialised block.
+/// The registered types no larger than `claimed` are tried from the smallest, so no read
+/// leaves the block when it is an initialised block of any registered type.
+fn identify(p: *mut c_void, claimed: &TypeLayout) -> Result<bool, i32> {
+    let mut all = layouts();
+    all.sort_unstable_by_key(|l| (l.size, l.tag));
+    for l in all.iter().filter(|l| l.size <= claimed.size) {
+        // SAFETY: `l.size <= claimed.size` bytes at `p`: inside the block (caller's duty for
+        // a block of the claimed size; inside any smaller registered block tried first).
+        if unsafe { header_at(p, l) }.intact(l.magic) {
+            return if l.tag == claimed.tag {
+                Ok(false)
+            } else {
+                Err(SL_E_CONFIG)
+            };
+        }
+    }
+    // SAFETY: as above, `claimed.size` bytes.
+    let h = unsafe { header_at(p, claimed) };
+    if h.is_zero() {
+        Ok(true)
+    } else if h.wMagic == claimed.magic {
+        Err(SL_E_CORRUPT)
+    } else {
+        Err(SL_E_CONFIG)
+    }
 }
 
 /// Resets a group to power-up (STOP, or STOPERROR with bConnections) with the caller's
 /// storage for `nMemberCap` members and `nLinkCap` links. The same arrays must be passed to
 /// every later sl_group_* call. Does not modify the group's input fields. Checks before it
-/// writes: a refused init (SL_E_NULL, SL_E_ALIGNMENT, SL_E_CONFIG for bConnections > 1 or
-/// a group still in RUN/START) changes nothing.
+/// writes: a refused init (SL_E_NULL, SL_E_ALIGNMENT, SL_E_CONFIG for bConnections > 1, a
+/// group still in RUN/START, or tables that share a byte with each other or the group)
+/// changes nothing.
 ///
 /// # Safety
-/// `g` is NULL or points to a live SL_GROUP; `aMembers` / `aLinks` are NULL or point to at least `nMemberCap` / `nLinkCap` entries; the caller keeps all of them alive and untouched for as long as the group is used.
+/// `g` is NULL or points to a live SL_GROUP; `aMembers` / `aLinks` are NULL or point to at
+/// least `nMemberCap` / `nLinkCap` entries; the caller keeps all of them alive, in place and
+/// untouched for as long as the group is used (a table that is freed, moved or written by
+/// the caller cannot be told from a valid one until its entries fail their checks).
 #[no_mangle]
 #[allow(non_snake_case)]
 pub unsafe extern "C" fn sl_group_init(
@@ -249,15 +459,21 @@ pub unsafe extern "C" fn sl_group_init(
 ) -> i32 {
     ffi_boundary!(SL_E_INTERNAL, {
         let run = || -> Result<i32, i32> {
+            let g_ptr = g;
             let g = instance(g)?;
             let members = storage(aMembers, usize::from(nMemberCap))?;
             let links = storage(aLinks, usize::from(nLinkCap))?;
+            tables_disjoint(g_ptr, members, Some(links))?;
             // A refused init changes nothing: a running group keeps its members.
             if !group::init_valid(g) {
                 return Err(SL_E_CONFIG);
             }
-            members.fill(SL_MEMBER::default());
-            links.fill(SL_LINK::default());
+            // SAFETY: both arrays were checked (non-null, aligned, disjoint from the group
+            // and from each other); the caller owns them (contract above).
+            unsafe {
+                slice_mut(aMembers, usize::from(nMemberCap)).fill(SL_MEMBER::default());
+                slice_mut(aLinks, usize::from(nLinkCap)).fill(SL_LINK::default());
+            }
             Ok(group::init(g, nMemberCap, nLinkCap))
         };
         run().unwrap_or_else(|e| e)
@@ -266,10 +482,19 @@ pub unsafe extern "C" fn sl_group_init(
 
 /// Adds a block as the next member (execution order) while the group is stopped.
 /// `nType` is `SL_TYPE_<NAME>`; the index is written to `*pIndex` unless it is NULL.
-/// A block can be a member once; SL_E_FULL when the member storage is full.
+/// The block is checked before anything is written: SL_E_NULL for a NULL block; SL_E_FULL
+/// when the member storage is full; SL_E_CONFIG for an unknown type, a misaligned block, a
+/// block that shares a byte with the group, its member table or another member (a block
+/// can be a member once), or a block whose private header is that of another type;
+/// SL_E_CORRUPT for a block of this type whose private state fails its check, or a member
+/// table whose entries fail theirs. A block with an all-zero private state (never
+/// initialised) is initialised here with its type's init; initialise blocks before adding
+/// them to have their type checked (docs/semantics.md GR14).
 ///
 /// # Safety
-/// As for `sl_group_init`, with the same tables; `pBlock` points to a live block of type `nType` that stays alive while it is a member; `pIndex` is NULL or writable.
+/// As for `sl_group_init`, with the same tables; `pBlock` points to a live block of type
+/// `nType` (at least its size readable) that stays alive and in place while it is a member;
+/// `pIndex` is NULL or writable.
 #[no_mangle]
 #[allow(non_snake_case)]
 pub unsafe extern "C" fn sl_group_add_member(
@@ -280,33 +505,62 @@ pub unsafe extern "C" fn sl_group_add_member(
     pIndex: *mut u16,
 ) -> i32 {
     ffi_boundary!(SL_E_INTERNAL, {
-        let run = || -> Result<i32, i32> {
-            let group_addr = g as usize;
+        let run = || -> Result<u16, i32> {
+            let g_ptr = g;
             let g = instance(g)?;
-            member_dyn(nType, pBlock).ok_or(if pBlock.is_null() {
-                SL_E_NULL
-            } else {
-                SL_E_CONFIG
-            })?;
-            let overlaps_group =
-                (pBlock as usize).abs_diff(group_addr) < core::mem::size_of::<SL_GROUP>();
-            let (members, _) = group::storage_len(g).ok_or(SL_E_CORRUPT)?;
-            let table = storage(aMembers, members + 1)?;
-            if overlaps_group || table[..members].iter().any(|m| m.pBlock == pBlock) {
+            if pBlock.is_null() {
+                return Err(SL_E_NULL);
+            }
+            group::configurable(g)?;
+            let mut t = member_table(g, g_ptr as usize, aMembers)?;
+            let table = storage(aMembers, usize::from(t.cap))?;
+            tables_disjoint(g_ptr, table, None)?;
+            let lay = layout(nType).ok_or(SL_E_CONFIG)?;
+            if (pBlock as usize) % lay.align != 0 {
                 return Err(SL_E_CONFIG);
             }
-            let index = group::reserve_member(g)?;
-            table[usize::from(index)] = SL_MEMBER {
-                pBlock,
-                nType,
-                aReserved: [0; 6],
-            };
-            if let Ok(out) = instance(pIndex) {
-                *out = index;
+            let block = span(pBlock as usize, lay.size).ok_or(SL_E_CONFIG)?;
+            tables_disjoint(g_ptr, table, Some(block))?;
+            for i in 0..usize::from(t.count) {
+                if !disjoint(t.span_of(i).ok_or(SL_E_CORRUPT)?, block) {
+                    return Err(SL_E_CONFIG);
+                }
             }
-            Ok(SL_OK)
+            let never_initialised = identify(pBlock, &lay)?;
+            // Full only now: a duplicate or foreign block is refused as such. Nothing has
+            // been written so far, and no slice past the caller's `cap` entries is formed.
+            if t.count >= t.cap {
+                return Err(SL_E_FULL);
+            }
+            if never_initialised {
+                (lay.init)(pBlock);
+            }
+            let index = group::reserve_member(g)?;
+            let entry = t.base.wrapping_add(usize::from(index));
+            // SAFETY: `index < cap`: inside the caller's table, which shares no byte with
+            // the group or the block and which no reference covers.
+            unsafe {
+                entry.write(SL_MEMBER {
+                    pBlock,
+                    nType,
+                    aReserved: [0; 6],
+                })
+            };
+            t.count = index + 1;
+            seal_members(&t);
+            Ok(index)
         };
-        run().unwrap_or_else(|e| e)
+        match run() {
+            Ok(index) => {
+                if !pIndex.is_null() && (pIndex as usize) % core::mem::align_of::<u16>() == 0 {
+                    // SAFETY: non-null, aligned, writable by the contract; written last,
+                    // after every reference of this call has ended.
+                    unsafe { pIndex.write(index) };
+                }
+                SL_OK
+            }
+            Err(e) => e,
+        }
     })
 }
 
@@ -316,7 +570,9 @@ pub unsafe extern "C" fn sl_group_add_member(
 /// (SL_LINK_ANALOG16), DINT/UDINT to the same (SL_LINK_ANALOG32). The value is
 /// copied just before the destination executes: a link from an earlier member carries this
 /// cycle's value, one from a later member the previous cycle's. SL_E_CONFIG for a field
-/// that is not a linkable output / input of a member, or an input that is already linked.
+/// that is not a linkable output / input of a member, an input that is already linked, or
+/// a link table that shares a byte with the group, the member table or a member;
+/// SL_E_CORRUPT for a member entry that fails its check.
 ///
 /// # Safety
 /// As for `sl_group_init`, with the same tables.
@@ -333,13 +589,24 @@ pub unsafe extern "C" fn sl_group_add_link(
 ) -> i32 {
     ffi_boundary!(SL_E_INTERNAL, {
         let run = || -> Result<i32, i32> {
+            let g_ptr = g;
             let g = instance(g)?;
-            let (members, _) = group::storage_len(g).ok_or(SL_E_CORRUPT)?;
-            let table = storage(aMembers, members)?;
-            let links = storage(aLinks, group::link_capacity(g).ok_or(SL_E_CORRUPT)?)?;
+            let mut t = member_table(g, g_ptr as usize, aMembers)?;
+            let (_, link_cap) = group::link_counts(g).ok_or(SL_E_CORRUPT)?;
+            let table = storage(aMembers, usize::from(t.cap))?;
+            let link_span = storage(aLinks, usize::from(link_cap))?;
+            tables_disjoint(g_ptr, table, Some(link_span))?;
+            for i in 0..usize::from(t.count) {
+                if !disjoint(t.span_of(i).ok_or(SL_E_CORRUPT)?, link_span) {
+                    return Err(SL_E_CONFIG);
+                }
+            }
+            // SAFETY: checked above: the caller's link table, disjoint from the group, the
+            // member table and every member.
+            let links = unsafe { slice_mut(aLinks, usize::from(link_cap)) };
             // The kind follows from the source field's type; add_link refuses a
             // destination of another type.
-            let kind = CMembers(table)
+            let kind = t
                 .with(usize::from(nSrcMember), |b| {
                     b.fields()
                         .iter()
@@ -356,7 +623,7 @@ pub unsafe extern "C" fn sl_group_add_link(
                 nKind: kind,
                 aReserved: [0; 3],
             };
-            Ok(group::add_link(g, &mut CMembers(table), links, link))
+            Ok(group::add_link(g, &mut t, links, link))
         };
         run().unwrap_or_else(|e| e)
     })
@@ -364,9 +631,13 @@ pub unsafe extern "C" fn sl_group_add_link(
 
 /// One group cycle at `tNow`: group state, then every member in order (links first), all
 /// with the same `tNow`. Returns the group's status or the worst status of a member.
+/// A member entry or link that fails its check, or tables that share a byte with the
+/// group, are member errors: the group enters ERROR, every reachable member is stopped in
+/// this cycle, SL_E_CORRUPT (docs/semantics.md GR13, GR14).
 ///
 /// # Safety
-/// As for `sl_group_init`, with the same tables; every member block is still alive.
+/// As for `sl_group_init`, with the same tables; every member block is still alive and in
+/// place (a freed block cannot be detected).
 #[no_mangle]
 #[allow(non_snake_case)]
 pub unsafe extern "C" fn sl_group_cycle(
@@ -377,13 +648,28 @@ pub unsafe extern "C" fn sl_group_cycle(
 ) -> i32 {
     ffi_boundary!(SL_E_INTERNAL, {
         let run = || -> Result<i32, i32> {
+            let g_ptr = g;
             let g = instance(g)?;
-            let Some((members, links)) = group::storage_len(g) else {
-                return Ok(group::cycle(g, &mut CMembers(&[]), &[], tNow));
+            let mut none: [&mut dyn Member; 0] = [];
+            let (Some((members, _)), Some((links, _))) =
+                (group::member_counts(g), group::link_counts(g))
+            else {
+                return Ok(group::cycle(g, &mut none[..], &[], tNow));
             };
-            let table = storage(aMembers, members)?;
-            let links = storage(aLinks, links)?;
-            Ok(group::cycle(g, &mut CMembers(table), links, tNow))
+            let checked = storage(aMembers, usize::from(members)).and_then(|table| {
+                tables_disjoint(g_ptr, table, Some(storage(aLinks, usize::from(links))?))
+            });
+            if checked.is_err() {
+                // No entry can be read (NULL, misaligned, or inside the group): no member is
+                // reachable, which stops the group like any unreachable member.
+                return Ok(group::cycle(g, &mut none[..], &[], tNow));
+            }
+            let mut t = member_table(g, g_ptr as usize, aMembers)?;
+            let l = CLinks {
+                base: aLinks,
+                count: usize::from(links),
+            };
+            Ok(group::cycle_with(g, &mut t, &l, tNow))
         };
         run().unwrap_or_else(|e| e)
     })
@@ -409,7 +695,9 @@ pub unsafe extern "C" fn sl_diag_text(
             if nLen == 0 {
                 return Ok(if buf.is_null() { SL_E_NULL } else { SL_OK });
             }
-            let out = storage(buf.cast::<u8>(), nLen)?;
+            storage(buf.cast::<u8>(), nLen)?;
+            // SAFETY: checked by `storage`; `buf` points to `nLen` writable bytes (contract).
+            let out = unsafe { slice_mut(buf.cast::<u8>(), nLen) };
             let Some(info) = crate::blocks::info(nType) else {
                 out[0] = 0;
                 return Err(SL_E_CONFIG);

@@ -218,7 +218,7 @@ pub const SL_GROUP_DIAG_RESTARTERROR: u16 = 6;
 /// No member index.
 pub const SL_NO_MEMBER: u16 = 0xFFFF;
 
-/// One member entry in caller storage.
+/// One member entry in caller storage (written only by `sl_group_add_member`).
 #[repr(C)]
 #[derive(Clone, Copy, Debug)]
 #[allow(non_snake_case, non_camel_case_types)]
@@ -227,6 +227,8 @@ pub struct SL_MEMBER {
     pub pBlock: *mut c_void,
     /// SL_TYPE_* of the block.
     pub nType: u16,
+    /// Private: the group's check of this entry (its block, type, place and the group's
+    /// member count and capacity). Never write it: an entry that fails it is a member error.
     pub aReserved: [u8; 6],
 }
 
@@ -252,7 +254,76 @@ pub struct SL_LINK {
     pub nDstOffset: u16,
     /// SL_LINK_BOOL, SL_LINK_ANALOG16 or SL_LINK_ANALOG32 (the type of both fields).
     pub nKind: u8,
+    /// Private: the group's check of this link (its fields, place and the link count).
+    /// Never write it: a link that fails it is a member error of its destination.
     pub aReserved: [u8; 3],
+}
+
+/// One step of the entry checks: a bijection of `h` for a fixed word, so a change of any
+/// single word always changes the result.
+const fn mix(h: u64, w: u64) -> u64 {
+    let h = (h ^ w).wrapping_mul(0x9E37_79B9_7F4A_7C15);
+    h ^ (h >> 29)
+}
+
+/// The check a member entry carries in `aReserved` (48 bits): binds the block pointer and
+/// type to the group (`group`: its address), the entry's own address (`entry`, so a copied
+/// or moved entry fails), its index and the group's member count and capacity (so a forged
+/// count fails every entry).
+pub fn member_check(
+    group: usize,
+    entry: usize,
+    index: u16,
+    count: u16,
+    cap: u16,
+    block: usize,
+    ty: u16,
+) -> [u8; 6] {
+    let mut h = 0x5AFE_10C1_6A05_0001;
+    for w in [
+        group as u64,
+        entry as u64,
+        u64::from(index) | u64::from(count) << 16 | u64::from(cap) << 32,
+        block as u64,
+        u64::from(ty),
+    ] {
+        h = mix(h, w);
+    }
+    let b = h.to_le_bytes();
+    [b[0], b[1], b[2], b[3], b[4], b[5]]
+}
+
+/// The check a link carries in `aReserved` (24 bits): its fields, its index and the
+/// group's link count (no address: a Rust caller may move its link array).
+pub fn link_check(l: &SL_LINK, index: usize, count: u16) -> [u8; 3] {
+    let mut h = 0x5AFE_10C1_6A05_0002;
+    for w in [
+        u64::from(l.nSrcMember) | u64::from(l.nSrcOffset) << 16 | u64::from(l.nDstMember) << 32,
+        u64::from(l.nDstOffset) | u64::from(l.nKind) << 16,
+        index as u64 | u64::from(count) << 32,
+    ] {
+        h = mix(h, w);
+    }
+    let b = h.to_le_bytes();
+    [b[0], b[1], b[2]]
+}
+
+/// The group's links in caller storage, read by value (a link array that some member
+/// overlaps is then merely corrupt, never aliased).
+pub trait Links {
+    /// Number of entries.
+    fn count(&self) -> usize;
+    /// Entry `i`.
+    fn get(&self, i: usize) -> Option<SL_LINK>;
+}
+
+impl Links for [SL_LINK] {
+    fn count(&self) -> usize {
+        self.len()
+    }
+    fn get(&self, i: usize) -> Option<SL_LINK> {
+        <[SL_LINK]>::get(self, i).copied()
+    }
 }
 
 /// Private state of a group (32 bytes): data words and their complements.
@@ -459,6 +530,25 @@ pub fn link_capacity(g: &SL_GROUP) -> Option<usize> {
     g.stPrivate.load().map(|c| usize::from(c.link_cap))
 }
 
+/// Member count and capacity (`None`: the private state is corrupt).
+pub fn member_counts(g: &SL_GROUP) -> Option<(u16, u16)> {
+    g.stPrivate.load().map(|c| (c.members, c.member_cap))
+}
+
+/// Link count and capacity (`None`: the private state is corrupt).
+pub fn link_counts(g: &SL_GROUP) -> Option<(u16, u16)> {
+    g.stPrivate.load().map(|c| (c.links, c.link_cap))
+}
+
+/// Members may be added or linked now (STOP or STOPERROR); `Err` is the refusal.
+pub fn configurable(g: &SL_GROUP) -> Result<(), i32> {
+    let c = g.stPrivate.load().ok_or(SL_E_CORRUPT)?;
+    if c.state != SL_STATE_STOP && c.state != SL_GROUP_STATE_STOPERROR {
+        return Err(SL_E_CONFIG);
+    }
+    Ok(())
+}
+
 /// Reserves the next member index (execution order). The caller stores the entry.
 pub fn reserve_member(g: &mut SL_GROUP) -> Result<u16, i32> {
     let mut c = g.stPrivate.load().ok_or(SL_E_CORRUPT)?;
@@ -522,11 +612,11 @@ pub fn add_link<M: Members + ?Sized>(
     }
     let at = links[..n].partition_point(|l| l.nDstMember <= link.nDstMember);
     links.copy_within(at..n, at + 1);
-    links[at] = SL_LINK {
-        aReserved: [0; 3],
-        ..link
-    };
+    links[at] = link;
     c.links += 1;
+    for (i, l) in links[..=n].iter_mut().enumerate() {
+        l.aReserved = link_check(l, i, c.links);
+    }
     write_info(g, &c);
     SL_OK
 }
@@ -554,6 +644,16 @@ fn enter_error(c: &mut Core, flag: u8, diag: u16) {
 /// One group cycle: group state, then every member in order with its links.
 /// Returns the group's status, or the worst status a member returned.
 pub fn cycle<M: Members + ?Sized>(g: &mut SL_GROUP, m: &mut M, links: &[SL_LINK], now: u32) -> i32 {
+    cycle_with(g, m, links, now)
+}
+
+/// [`cycle`] over any link storage.
+pub fn cycle_with<M: Members + ?Sized, L: Links + ?Sized>(
+    g: &mut SL_GROUP,
+    m: &mut M,
+    links: &L,
+    now: u32,
+) -> i32 {
     let Some(mut c) = g.stPrivate.load() else {
         // Member count and storage size are unknown: no member can be reached safely.
         g.bInRun = 0;
@@ -622,19 +722,31 @@ pub fn cycle<M: Members + ?Sized>(g: &mut SL_GROUP, m: &mut M, links: &[SL_LINK]
     let mut member_error = false;
     let mut all_run = c.members > 0;
     let mut next_link = 0usize;
+    let link_count = links.count().min(usize::from(c.links));
     for i in 0..usize::from(c.members) {
+        let mut links_intact = true;
         while let Some(l) = links
             .get(next_link)
-            .filter(|l| usize::from(l.nDstMember) == i)
+            .filter(|l| next_link < link_count && usize::from(l.nDstMember) == i)
         {
+            // A link that fails its check is not copied: its destination is stopped.
+            links_intact &= l.aReserved == link_check(&l, next_link, c.links);
             next_link += 1;
+            if !links_intact {
+                continue;
+            }
             if let Some(Some(v)) =
                 m.with(usize::from(l.nSrcMember), |b| b.output_bits(l.nSrcOffset))
             {
                 m.with(i, |b| b.set_input_bits(l.nDstOffset, v));
             }
         }
-        let outcome = m.with(i, |b| b.run_in_group(member_run, ack_level, now));
+        let outcome = if links_intact {
+            m.with(i, |b| b.run_in_group(member_run, ack_level, now))
+        } else {
+            m.with(i, |b| b.run_in_group(0, ack_level, now));
+            None
+        };
         // A member that cannot be reached is a member error of the group, never a skip.
         let (s, state) = outcome.unwrap_or((Status::Corrupt, SL_STATE_ERROR));
         status = status.worst(s);
@@ -649,6 +761,20 @@ pub fn cycle<M: Members + ?Sized>(g: &mut SL_GROUP, m: &mut M, links: &[SL_LINK]
                 for j in 0..i {
                     m.with(j, |b| b.run_in_group(0, ack_level, now));
                 }
+            }
+        }
+    }
+
+    // A link that no member consumed (forged destination or order) was not applied: the
+    // group stops every member, as for a member error.
+    if next_link < link_count {
+        status = status.worst(Status::Corrupt);
+        member_error = true;
+        all_run = false;
+        if c.state == SL_STATE_RUN || c.state == SL_GROUP_STATE_START {
+            enter_error(&mut c, F_FB, SL_GROUP_DIAG_FBERROR);
+            for j in 0..usize::from(c.members) {
+                m.with(j, |b| b.run_in_group(0, ack_level, now));
             }
         }
     }

@@ -3,6 +3,7 @@
 //! member that cannot be reached stops the group instead of being skipped.
 
 use safelogic::ffi;
+use safelogic::group;
 use safelogic::*;
 use std::ffi::c_void;
 
@@ -13,8 +14,20 @@ struct Fixture {
     estop: FB_ESTOP,
 }
 
-fn running_estop_group() -> Box<Fixture> {
-    let mut f = Box::new(Fixture {
+/// The fixture is reached only through this raw pointer (as a C caller's memory): a
+/// `&mut Fixture` formed after the ESTOP's address went into the member table would, under
+/// Stacked Borrows, invalidate that address (a test-side aliasing error Miri reports).
+struct Fx(*mut Fixture);
+
+impl Drop for Fx {
+    fn drop(&mut self) {
+        // SAFETY: from `Box::into_raw` in `running_estop_group`, freed once.
+        drop(unsafe { Box::from_raw(self.0) });
+    }
+}
+
+fn running_estop_group() -> Fx {
+    let f = Fx(Box::into_raw(Box::new(Fixture {
         g: SL_GROUP::default(),
         members: [SL_MEMBER::default(); 2],
         links: [SL_LINK::default(); 2],
@@ -23,111 +36,697 @@ fn running_estop_group() -> Box<Fixture> {
             tDiscTime12: 50,
             ..Default::default()
         },
-    });
-    assert_eq!(f.estop.init(), SL_OK);
-    let f_ptr: *mut Fixture = &mut *f;
-    // SAFETY: every pointer is to a live field of the boxed fixture.
+    })));
+    let p = f.0;
+    // SAFETY: every pointer is to a field of the boxed fixture, derived from `p`.
     unsafe {
-        let f = &mut *f_ptr;
-        assert_eq!(
-            ffi::sl_group_init(&mut f.g, f.members.as_mut_ptr(), 2, f.links.as_mut_ptr(), 2),
-            SL_OK
-        );
-        let e: *mut c_void = (&mut f.estop as *mut FB_ESTOP).cast();
+        assert_eq!((*p).estop.init(), SL_OK);
+        assert_eq!(init(p), SL_OK);
+        let e: *mut c_void = std::ptr::addr_of_mut!((*p).estop).cast();
         assert_eq!(
             ffi::sl_group_add_member(
-                &mut f.g,
-                f.members.as_mut_ptr(),
+                std::ptr::addr_of_mut!((*p).g),
+                members(p),
                 SL_TYPE_ESTOP,
                 e,
                 std::ptr::null_mut()
             ),
             SL_OK
         );
+        (*p).estop.bEStopIn1 = 1;
+        (*p).estop.bEStopIn2 = 1;
+        (*p).g.bRun = 1;
+        cycle(p, 0);
+        (*p).estop.bRestart = 1;
+        cycle(p, 10);
+        (*p).estop.bRestart = 0;
+        cycle(p, 20);
+        assert_eq!((*p).g.nState, SL_STATE_RUN);
+        assert_eq!((*p).estop.bEStopOut, 1);
     }
-    f.estop.bEStopIn1 = 1;
-    f.estop.bEStopIn2 = 1;
-    f.g.bRun = 1;
-    cycle(&mut f, 0);
-    f.estop.bRestart = 1;
-    cycle(&mut f, 10);
-    f.estop.bRestart = 0;
-    cycle(&mut f, 20);
-    assert_eq!(f.g.nState, SL_STATE_RUN);
-    assert_eq!(f.estop.bEStopOut, 1);
     f
 }
 
-fn cycle(f: &mut Fixture, t: u32) -> i32 {
-    // SAFETY: the fixture's own tables, as passed to sl_group_init.
-    unsafe { ffi::sl_group_cycle(&mut f.g, f.members.as_mut_ptr(), f.links.as_mut_ptr(), t) }
+fn members(f: *mut Fixture) -> *mut SL_MEMBER {
+    // SAFETY: a field address of the live fixture.
+    unsafe { std::ptr::addr_of_mut!((*f).members).cast() }
 }
 
-fn press_estop_and_cycle(f: &mut Fixture) {
-    f.estop.bEStopIn1 = 0;
-    f.estop.bEStopIn2 = 0;
-    cycle(f, 30);
-    assert_eq!(
-        f.estop.bEStopOut, 0,
-        "the E-stop output must follow the E-stop"
-    );
+fn links(f: *mut Fixture) -> *mut SL_LINK {
+    // SAFETY: a field address of the live fixture.
+    unsafe { std::ptr::addr_of_mut!((*f).links).cast() }
+}
+
+fn init(f: *mut Fixture) -> i32 {
+    // SAFETY: the fixture's own tables.
+    unsafe { ffi::sl_group_init(std::ptr::addr_of_mut!((*f).g), members(f), 2, links(f), 2) }
+}
+
+fn cycle(f: *mut Fixture, t: u32) -> i32 {
+    // SAFETY: the fixture's own tables, as passed to sl_group_init.
+    unsafe { ffi::sl_group_cycle(std::ptr::addr_of_mut!((*f).g), members(f), links(f), t) }
+}
+
+fn press_estop_and_cycle(f: *mut Fixture) {
+    // SAFETY: fields of the live fixture, no reference kept.
+    unsafe {
+        (*f).estop.bEStopIn1 = 0;
+        (*f).estop.bEStopIn2 = 0;
+        cycle(f, 30);
+        assert_eq!(
+            (*f).estop.bEStopOut,
+            0,
+            "the E-stop output must follow the E-stop"
+        );
+    }
 }
 
 /// The reproducer of the issue: a refused init (bConnections = 2) must change nothing.
 #[test]
 fn refused_init_keeps_the_members_of_a_running_group() {
-    let mut f = running_estop_group();
-    f.g.bConnections = 2;
-    // SAFETY: the fixture's own tables.
-    let rc =
-        unsafe { ffi::sl_group_init(&mut f.g, f.members.as_mut_ptr(), 2, f.links.as_mut_ptr(), 2) };
-    assert_eq!(rc, SL_E_CONFIG);
-    assert!(!f.members[0].pBlock.is_null(), "member table untouched");
-    f.g.bConnections = 0;
-    press_estop_and_cycle(&mut f);
+    let fx = running_estop_group();
+    let f = fx.0;
+    // SAFETY: fields of the live fixture.
+    unsafe {
+        (*f).g.bConnections = 2;
+        let rc = init(f);
+        assert_eq!(rc, SL_E_CONFIG);
+        assert!(!(*f).members[0].pBlock.is_null(), "member table untouched");
+        (*f).g.bConnections = 0;
+    }
+    press_estop_and_cycle(f);
 }
 
 /// A refused init for a NULL table changes nothing either.
 #[test]
 fn init_with_null_links_keeps_the_members() {
-    let mut f = running_estop_group();
+    let fx = running_estop_group();
+    let f = fx.0;
     // SAFETY: the fixture's member table; links NULL with a capacity is refused.
-    let rc =
-        unsafe { ffi::sl_group_init(&mut f.g, f.members.as_mut_ptr(), 2, std::ptr::null_mut(), 2) };
-    assert_eq!(rc, SL_E_NULL);
-    assert!(!f.members[0].pBlock.is_null());
-    press_estop_and_cycle(&mut f);
+    unsafe {
+        let rc = ffi::sl_group_init(
+            std::ptr::addr_of_mut!((*f).g),
+            members(f),
+            2,
+            std::ptr::null_mut(),
+            2,
+        );
+        assert_eq!(rc, SL_E_NULL);
+        assert!(!(*f).members[0].pBlock.is_null());
+    }
+    press_estop_and_cycle(f);
 }
 
 /// A valid init of a group that is still running is refused (semantics GR13).
 #[test]
 fn init_of_a_running_group_is_refused() {
-    let mut f = running_estop_group();
-    // SAFETY: the fixture's own tables.
-    let rc =
-        unsafe { ffi::sl_group_init(&mut f.g, f.members.as_mut_ptr(), 2, f.links.as_mut_ptr(), 2) };
-    assert_eq!(rc, SL_E_CONFIG);
-    press_estop_and_cycle(&mut f);
-    // Stopped, the group may be initialised again.
-    f.g.bRun = 0;
-    cycle(&mut f, 40);
-    assert_eq!(f.g.nState, SL_STATE_STOP);
-    // SAFETY: the fixture's own tables.
-    let rc =
-        unsafe { ffi::sl_group_init(&mut f.g, f.members.as_mut_ptr(), 2, f.links.as_mut_ptr(), 2) };
-    assert_eq!(rc, SL_OK);
-    assert_eq!(f.g.nMembers, 0);
+    let fx = running_estop_group();
+    let f = fx.0;
+    assert_eq!(init(f), SL_E_CONFIG);
+    press_estop_and_cycle(f);
+    // SAFETY: fields of the live fixture.
+    unsafe {
+        // Stopped, the group may be initialised again.
+        (*f).g.bRun = 0;
+        cycle(f, 40);
+        assert_eq!((*f).g.nState, SL_STATE_STOP);
+        assert_eq!(init(f), SL_OK);
+        assert_eq!((*f).g.nMembers, 0);
+    }
 }
 
 /// A member entry that no longer reaches a block puts the group into ERROR.
 #[test]
 fn unreachable_member_is_a_group_error() {
-    let mut f = running_estop_group();
-    f.members[0].pBlock = std::ptr::null_mut();
-    assert_eq!(cycle(&mut f, 30), SL_E_CORRUPT);
-    assert_eq!(f.g.nState, SL_STATE_ERROR);
-    assert_eq!(f.g.bFbErr, 1);
-    assert_eq!(f.g.bInRun, 0);
-    assert_eq!(f.g.bFbRun, 0);
-    assert_eq!(f.g.nFailedMember, 0);
+    let fx = running_estop_group();
+    let f = fx.0;
+    // SAFETY: fields of the live fixture.
+    unsafe {
+        (*f).members[0].pBlock = std::ptr::null_mut();
+        assert_eq!(cycle(f, 30), SL_E_CORRUPT);
+        assert_eq!((*f).g.nState, SL_STATE_ERROR);
+        assert_eq!((*f).g.bFbErr, 1);
+        assert_eq!((*f).g.bInRun, 0);
+        assert_eq!((*f).g.bFbRun, 0);
+        assert_eq!((*f).g.nFailedMember, 0);
+    }
+}
+
+// ---------------------------------------------------------------------------------------
+// Adversarial callers (issue 16 item 1). Every object lives in one 8-aligned arena and is
+// reached only through raw pointers derived from the arena's base, as a C caller's memory
+// would be: the abuses below place blocks and tables so that they overlap, forge the
+// group's private state and the entries, and pass other tables. Miri runs this file.
+// ---------------------------------------------------------------------------------------
+
+use std::mem::{offset_of, size_of};
+
+const ARENA: usize = 4096;
+
+#[repr(C, align(8))]
+struct Arena([u8; ARENA]);
+
+struct Mem {
+    base: *mut u8,
+}
+
+impl Drop for Mem {
+    fn drop(&mut self) {
+        // SAFETY: `base` came from `Box::into_raw` in `new` and is freed once.
+        drop(unsafe { Box::from_raw(self.base.cast::<Arena>()) });
+    }
+}
+
+impl Mem {
+    fn new() -> Mem {
+        // Only raw pointers from here on, as a C caller's memory (no Box is moved or
+        // retagged while the library holds pointers into it).
+        let raw = Box::into_raw(Box::new(Arena([0; ARENA])));
+        Mem { base: raw.cast() }
+    }
+
+    /// A pointer `off` bytes into the arena.
+    fn at<T>(&self, off: usize) -> *mut T {
+        assert!(off < ARENA);
+        self.base.wrapping_add(off).cast()
+    }
+}
+
+/// A group at arena offset 0 with its member table at 64 (cap 4) and link table at 128
+/// (cap 4); blocks go from 512 on.
+const G: usize = 0;
+const MT: usize = 64;
+const LT: usize = 128;
+const CAP: u16 = 4;
+
+fn group_in(mem: &Mem) -> (*mut SL_GROUP, *mut SL_MEMBER, *mut SL_LINK) {
+    let (g, m, l) = (mem.at::<SL_GROUP>(G), mem.at(MT), mem.at(LT));
+    // SAFETY: arena memory, 8-aligned, disjoint ranges (64 + 4 * 16 = 128, 128 + 48 < 512).
+    assert_eq!(unsafe { ffi::sl_group_init(g, m, CAP, l, CAP) }, SL_OK);
+    (g, m, l)
+}
+
+fn add(g: *mut SL_GROUP, m: *mut SL_MEMBER, ty: u16, b: *mut c_void) -> i32 {
+    // SAFETY: arena pointers; the functions check everything they can.
+    unsafe { ffi::sl_group_add_member(g, m, ty, b, std::ptr::null_mut()) }
+}
+
+fn gcycle(g: *mut SL_GROUP, m: *mut SL_MEMBER, l: *mut SL_LINK, t: u32) -> i32 {
+    // SAFETY: as above.
+    unsafe { ffi::sl_group_cycle(g, m, l, t) }
+}
+
+/// An initialised two-channel ESTOP at arena offset `off`, inputs TRUE.
+fn estop_at(mem: &Mem, off: usize) -> *mut FB_ESTOP {
+    let p = mem.at::<FB_ESTOP>(off);
+    // SAFETY: arena memory large enough for the block.
+    unsafe {
+        p.write(FB_ESTOP {
+            wInputActive: 0b11,
+            bEStopIn1: 1,
+            bEStopIn2: 1,
+            ..Default::default()
+        });
+        assert_eq!(ffi::sl_estop_init(p), SL_OK);
+    }
+    p
+}
+
+fn and_at(mem: &Mem, off: usize) -> *mut FB_AND {
+    let p = mem.at::<FB_AND>(off);
+    // SAFETY: arena memory large enough for the block.
+    unsafe {
+        p.write(FB_AND {
+            wInputActive: 0b11,
+            ..Default::default()
+        });
+        assert_eq!(ffi::sl_and_init(p), SL_OK);
+    }
+    p
+}
+
+fn state(g: *mut SL_GROUP) -> SL_GROUP {
+    // SAFETY: arena memory, read by value.
+    unsafe { g.read() }
+}
+
+/// Brings the group with an ESTOP as member 0 to RUN with the E-stop output TRUE.
+fn to_run(g: *mut SL_GROUP, m: *mut SL_MEMBER, l: *mut SL_LINK, e: *mut FB_ESTOP) {
+    // SAFETY: arena pointers; no reference outlives a statement.
+    unsafe {
+        (*g).bRun = 1;
+        gcycle(g, m, l, 0);
+        (*e).bRestart = 1;
+        gcycle(g, m, l, 10);
+        (*e).bRestart = 0;
+        assert_eq!(gcycle(g, m, l, 20), SL_OK);
+        assert_eq!((*g).nState, SL_STATE_RUN);
+        assert_eq!((*e).bEStopOut, 1);
+    }
+}
+
+/// The group is in ERROR with its outputs safe and SL_E_CORRUPT. `reachable`: the ESTOP's
+/// entry is intact, so the group stopped it in the same cycle (an entry that fails its
+/// check cannot be reached: GR14 makes its outputs the caller's to treat as FALSE).
+fn assert_stopped_with_corrupt(rc: i32, g: *mut SL_GROUP, e: *mut FB_ESTOP, reachable: bool) {
+    assert_eq!(rc, SL_E_CORRUPT);
+    let gs = state(g);
+    assert_eq!(gs.nState, SL_STATE_ERROR);
+    assert_eq!((gs.bInRun, gs.bFbRun, gs.bFbErr), (0, 0, 1));
+    assert_eq!(gs.nDiag, group::SL_GROUP_DIAG_FBERROR);
+    if reachable {
+        // SAFETY: arena memory, read by value.
+        assert_eq!(unsafe { (*e).bEStopOut }, 0, "the E-stop output is FALSE");
+    }
+}
+
+#[test]
+fn block_reaching_into_the_group_from_below_is_refused() {
+    let mem = Mem::new();
+    // The group at 1024 this time, a block starting 32 bytes below it.
+    let g = mem.at::<SL_GROUP>(1024);
+    let (m, l) = (mem.at::<SL_MEMBER>(MT), mem.at::<SL_LINK>(LT));
+    // SAFETY: arena memory.
+    assert_eq!(unsafe { ffi::sl_group_init(g, m, CAP, l, CAP) }, SL_OK);
+    // (Nothing is written there: the range alone is refused, before the block is read.)
+    assert_eq!(add(g, m, SL_TYPE_ESTOP, mem.at(1024 - 32)), SL_E_CONFIG);
+    // ... and one starting inside it.
+    assert_eq!(add(g, m, SL_TYPE_ESTOP, mem.at(1024 + 8)), SL_E_CONFIG);
+    assert_eq!(state(g).nMembers, 0);
+}
+
+#[test]
+fn block_overlapping_the_member_table_or_the_link_table_is_refused() {
+    let mem = Mem::new();
+    let (g, m, l) = group_in(&mem);
+    // Over the member table (starting below it, inside it).
+    assert_eq!(add(g, m, SL_TYPE_AND, mem.at(MT - 8)), SL_E_CONFIG);
+    assert_eq!(add(g, m, SL_TYPE_AND, mem.at(MT + 16)), SL_E_CONFIG);
+    // A member over the link table is refused when a link is added ...
+    let e = estop_at(&mem, 512);
+    assert_eq!(add(g, m, SL_TYPE_ESTOP, e.cast()), SL_OK);
+    let a = and_at(&mem, LT);
+    assert_eq!(add(g, m, SL_TYPE_AND, a.cast()), SL_OK);
+    // SAFETY: arena pointers.
+    let rc = unsafe {
+        ffi::sl_group_add_link(
+            g,
+            m,
+            l,
+            0,
+            offset_of!(FB_ESTOP, bEStopOut) as u16,
+            1,
+            offset_of!(FB_AND, bAndIn1) as u16,
+        )
+    };
+    assert_eq!(rc, SL_E_CONFIG);
+    assert_eq!(state(g).nLinks, 0);
+}
+
+#[test]
+fn member_over_a_link_table_in_use_stops_the_group() {
+    let mem = Mem::new();
+    let (g, m, l) = group_in(&mem);
+    let e = estop_at(&mem, 512);
+    let a = and_at(&mem, 1024);
+    assert_eq!(add(g, m, SL_TYPE_ESTOP, e.cast()), SL_OK);
+    assert_eq!(add(g, m, SL_TYPE_AND, a.cast()), SL_OK);
+    // SAFETY: arena pointers.
+    let rc = unsafe {
+        ffi::sl_group_add_link(
+            g,
+            m,
+            l,
+            0,
+            offset_of!(FB_ESTOP, bEStopOut) as u16,
+            1,
+            offset_of!(FB_AND, bAndIn1) as u16,
+        )
+    };
+    assert_eq!(rc, SL_OK);
+    // A third member placed over the link table (add_member cannot see the link table):
+    // its own cycle writes over the link, which then fails its check.
+    let b = mem.at::<FB_OR>(LT + 8);
+    // SAFETY: arena memory.
+    unsafe {
+        b.write(FB_OR {
+            wInputActive: 1,
+            bOrIn1: 1,
+            ..Default::default()
+        });
+        assert_eq!(ffi::sl_or_init(b), SL_OK);
+    }
+    assert_eq!(add(g, m, SL_TYPE_OR, b.cast()), SL_OK);
+    // SAFETY: arena memory.
+    unsafe { (*g).bRun = 1 };
+    let mut rcs = Vec::new();
+    for t in 0..4 {
+        rcs.push(gcycle(g, m, l, t));
+    }
+    assert!(rcs.contains(&SL_E_CORRUPT), "{rcs:?}");
+    assert_eq!(state(g).nState, SL_STATE_ERROR);
+}
+
+#[test]
+fn overlapping_members_and_duplicates_are_refused() {
+    let mem = Mem::new();
+    let (g, m, _) = group_in(&mem);
+    let e = estop_at(&mem, 512);
+    assert_eq!(add(g, m, SL_TYPE_ESTOP, e.cast()), SL_OK);
+    assert_eq!(add(g, m, SL_TYPE_ESTOP, e.cast()), SL_E_CONFIG, "twice");
+    // An AND whose bytes start inside the ESTOP, and one that ends inside it.
+    let inside = and_at(&mem, 512 + 64);
+    assert_eq!(add(g, m, SL_TYPE_AND, inside.cast()), SL_E_CONFIG);
+    let below = 512 - size_of::<FB_AND>() + 8;
+    assert_eq!(add(g, m, SL_TYPE_AND, mem.at(below)), SL_E_CONFIG);
+    let next = and_at(&mem, 512 + size_of::<FB_ESTOP>());
+    assert_eq!(
+        add(g, m, SL_TYPE_AND, next.cast()),
+        SL_OK,
+        "adjacent is fine"
+    );
+    assert_eq!(state(g).nMembers, 2);
+}
+
+#[test]
+fn tables_overlapping_each_other_or_the_group_are_refused_at_init() {
+    let mem = Mem::new();
+    let g = mem.at::<SL_GROUP>(G);
+    // SAFETY: arena memory.
+    unsafe {
+        assert_eq!(
+            ffi::sl_group_init(g, mem.at(32), CAP, mem.at(LT), CAP),
+            SL_E_CONFIG
+        );
+        assert_eq!(
+            ffi::sl_group_init(g, mem.at(MT), CAP, mem.at(MT + 48), CAP),
+            SL_E_CONFIG
+        );
+        assert_eq!(
+            ffi::sl_group_init(g, mem.at(MT), CAP, mem.at(8), CAP),
+            SL_E_CONFIG
+        );
+    }
+}
+
+#[test]
+fn full_group_refuses_without_touching_past_the_table() {
+    // The member table is exactly `cap` entries at the end of its own allocation, so a
+    // slice or write one past it is an out-of-bounds access (Miri reports it).
+    let mem = Mem::new();
+    let g = mem.at::<SL_GROUP>(G);
+    let mut table = vec![SL_MEMBER::default(); 1];
+    let m = table.as_mut_ptr();
+    // SAFETY: the group in the arena, the table in its own allocation.
+    assert_eq!(
+        unsafe { ffi::sl_group_init(g, m, 1, std::ptr::null_mut(), 0) },
+        SL_OK
+    );
+    let e = estop_at(&mem, 512);
+    assert_eq!(add(g, m, SL_TYPE_ESTOP, e.cast()), SL_OK);
+    let a = and_at(&mem, 1024);
+    assert_eq!(add(g, m, SL_TYPE_AND, a.cast()), SL_E_FULL);
+    assert_eq!(state(g).nMembers, 1);
+    // The never-initialised block offered to a full group stays untouched.
+    let zero = mem.at::<FB_AND>(2048);
+    assert_eq!(add(g, m, SL_TYPE_AND, zero.cast()), SL_E_FULL);
+    // SAFETY: arena memory.
+    assert_eq!(unsafe { (*zero).stPrivate.stHeader.wMagic }, 0);
+    drop(table);
+}
+
+#[test]
+fn wrong_type_tags_are_refused() {
+    let mem = Mem::new();
+    let (g, m, _) = group_in(&mem);
+    // An AND (72 bytes) added as MUTING (larger) and as ESTOP; an ESTOP added as AND.
+    let a = and_at(&mem, 2048 - size_of::<FB_AND>());
+    assert_eq!(add(g, m, SL_TYPE_MUTING, a.cast()), SL_E_CONFIG);
+    assert_eq!(add(g, m, SL_TYPE_ESTOP, a.cast()), SL_E_CONFIG);
+    let e = estop_at(&mem, 512);
+    assert_eq!(add(g, m, SL_TYPE_AND, e.cast()), SL_E_CONFIG);
+    assert_eq!(add(g, m, SL_TYPE_OR, e.cast()), SL_E_CONFIG);
+    assert_eq!(state(g).nMembers, 0);
+    // Right tags are accepted.
+    assert_eq!(add(g, m, SL_TYPE_AND, a.cast()), SL_OK);
+    assert_eq!(add(g, m, SL_TYPE_ESTOP, e.cast()), SL_OK);
+}
+
+#[test]
+fn every_registered_type_refuses_every_other_tag() {
+    // Each initialised block of each type, offered under each other tag: refused, and
+    // nothing written. Under its own tag: accepted.
+    let types: Vec<_> = safelogic::registry::BLOCKS.iter().collect();
+    for own in &types {
+        for claimed in &types {
+            let mem = Mem::new();
+            let (g, m, _) = group_in(&mem);
+            let p = mem.at::<c_void>(1024);
+            let init = init_fn(own.info.tag);
+            assert!(matches!(init(p), SL_OK | SL_E_CONFIG));
+            // SAFETY: arena memory, read by value.
+            let before: Arena = unsafe { mem.at::<Arena>(0).read() };
+            let rc = add(g, m, claimed.info.tag, p);
+            if own.info.tag == claimed.info.tag {
+                assert_eq!(rc, SL_OK, "{}", own.info.name);
+            } else {
+                assert_eq!(
+                    rc, SL_E_CONFIG,
+                    "{} as {}",
+                    own.info.name, claimed.info.name
+                );
+                // SAFETY: as above.
+                let after: Arena = unsafe { mem.at::<Arena>(0).read() };
+                assert!(before.0 == after.0, "nothing written");
+            }
+        }
+    }
+}
+
+/// `sl_<name>_init` of a registered tag, as a function of an untyped pointer.
+fn init_fn(tag: u16) -> fn(*mut c_void) -> i32 {
+    macro_rules! pick {
+        ($($ty:ty => $init:ident, $cycle:ident;)*) => {{
+            $(if tag == <$ty as safelogic::registry::Registered>::INFO.tag {
+                return |p| {
+                    // SAFETY: arena memory large enough for any block.
+                    unsafe { ffi::$init(p.cast()) }
+                };
+            })*
+            unreachable!()
+        }};
+    }
+    safelogic::for_each_block!(pick)
+}
+
+#[test]
+fn never_initialised_block_is_initialised_when_added() {
+    let mem = Mem::new();
+    let (g, m, _) = group_in(&mem);
+    let a = mem.at::<FB_AND>(1024);
+    // SAFETY: arena memory.
+    unsafe {
+        a.write(FB_AND {
+            wInputActive: 0b11,
+            ..Default::default()
+        })
+    };
+    assert_eq!(add(g, m, SL_TYPE_AND, a.cast()), SL_OK);
+    // SAFETY: arena memory, read by value.
+    let h = unsafe { (*a).stPrivate.stHeader };
+    assert_ne!(h.wMagic, 0);
+    assert_eq!(h.nState, SL_STATE_STOP);
+}
+
+#[test]
+fn corrupt_block_of_the_right_type_is_refused() {
+    let mem = Mem::new();
+    let (g, m, _) = group_in(&mem);
+    let e = estop_at(&mem, 512);
+    // SAFETY: arena memory.
+    unsafe { (*e).stPrivate.stHeader.nState ^= 0x40 };
+    assert_eq!(add(g, m, SL_TYPE_ESTOP, e.cast()), SL_E_CORRUPT);
+    assert_eq!(state(g).nMembers, 0);
+}
+
+/// A running group with an ESTOP (member 0) and an AND (member 1) linked from it.
+fn running_pair(mem: &Mem) -> (*mut SL_GROUP, *mut SL_MEMBER, *mut SL_LINK, *mut FB_ESTOP) {
+    let (g, m, l) = group_in(mem);
+    let e = estop_at(mem, 512);
+    let a = and_at(mem, 1024);
+    assert_eq!(add(g, m, SL_TYPE_ESTOP, e.cast()), SL_OK);
+    assert_eq!(add(g, m, SL_TYPE_AND, a.cast()), SL_OK);
+    // SAFETY: arena pointers.
+    let rc = unsafe {
+        ffi::sl_group_add_link(
+            g,
+            m,
+            l,
+            0,
+            offset_of!(FB_ESTOP, bEStopOut) as u16,
+            1,
+            offset_of!(FB_AND, bAndIn1) as u16,
+        )
+    };
+    assert_eq!(rc, SL_OK);
+    to_run(g, m, l, e);
+    (g, m, l, e)
+}
+
+/// Writes the group's private member word and its complement consistently (a forgery
+/// that passes the group's own integrity check).
+fn forge_members(g: *mut SL_GROUP, count: u16, cap: u16) {
+    let w = u32::from(count) | u32::from(cap) << 16;
+    // SAFETY: arena memory.
+    unsafe {
+        (*g).stPrivate.dwMembers = w;
+        (*g).stPrivate.adwCheck[2] = !w;
+    }
+}
+
+#[test]
+fn forged_member_count_or_capacity_stops_the_group() {
+    for (count, cap) in [(1, CAP), (3, CAP), (2, CAP - 1), (2, CAP + 1)] {
+        let mem = Mem::new();
+        let (g, m, l, e) = running_pair(&mem);
+        forge_members(g, count, cap);
+        // SAFETY: arena memory.
+        unsafe {
+            (*e).bEStopIn1 = 0;
+            (*e).bEStopIn2 = 0;
+        }
+        assert_stopped_with_corrupt(gcycle(g, m, l, 30), g, e, false);
+    }
+}
+
+#[test]
+fn forged_count_that_drops_the_estop_stops_the_group() {
+    // Member 0 is an AND, member 1 the ESTOP; the count forged to 1 would drop the ESTOP.
+    let mem = Mem::new();
+    let (g, m, l) = group_in(&mem);
+    let a = and_at(&mem, 1024);
+    let e = estop_at(&mem, 512);
+    assert_eq!(add(g, m, SL_TYPE_AND, a.cast()), SL_OK);
+    assert_eq!(add(g, m, SL_TYPE_ESTOP, e.cast()), SL_OK);
+    to_run(g, m, l, e);
+    forge_members(g, 1, CAP);
+    let rc = gcycle(g, m, l, 30);
+    assert_eq!(rc, SL_E_CORRUPT);
+    assert_eq!(state(g).nState, SL_STATE_ERROR);
+    assert_eq!((state(g).bInRun, state(g).bFbRun), (0, 0));
+}
+
+#[test]
+fn forged_member_entries_stop_the_group() {
+    type Forge = fn(*mut SL_MEMBER, &Mem);
+    let forgeries: [(&str, Forge); 4] = [
+        ("pointer to another block", |m, mem| unsafe {
+            (*m.add(1)).pBlock = estop_at(mem, 2048).cast();
+        }),
+        ("type tag", |m, _| unsafe { (*m.add(1)).nType = SL_TYPE_OR }),
+        ("entries swapped", |m, _| unsafe {
+            let (a, b) = (m.read(), m.add(1).read());
+            m.write(b);
+            m.add(1).write(a);
+        }),
+        ("check bytes", |m, _| unsafe {
+            (*m.add(1)).aReserved[5] ^= 1
+        }),
+    ];
+    for (what, forge) in forgeries {
+        let mem = Mem::new();
+        let (g, m, l, e) = running_pair(&mem);
+        forge(m, &mem);
+        // SAFETY: arena memory.
+        unsafe {
+            (*e).bEStopIn1 = 0;
+            (*e).bEStopIn2 = 0;
+        }
+        let rc = gcycle(g, m, l, 30);
+        assert_eq!(rc, SL_E_CORRUPT, "{what}");
+        assert_eq!(state(g).nState, SL_STATE_ERROR, "{what}");
+        assert_eq!((state(g).bInRun, state(g).bFbRun), (0, 0), "{what}");
+    }
+}
+
+#[test]
+fn a_copy_of_the_member_table_is_not_the_table() {
+    let mem = Mem::new();
+    let (g, m, l, e) = running_pair(&mem);
+    let copy = mem.at::<SL_MEMBER>(3072);
+    // SAFETY: arena memory.
+    unsafe { std::ptr::copy_nonoverlapping(m, copy, usize::from(CAP)) };
+    assert_stopped_with_corrupt(gcycle(g, copy, l, 30), g, e, false);
+}
+
+#[test]
+fn missing_member_table_stops_the_group() {
+    let mem = Mem::new();
+    let (g, _, l, _) = running_pair(&mem);
+    let rc = gcycle(g, std::ptr::null_mut(), l, 30);
+    assert_eq!(rc, SL_E_CORRUPT);
+    assert_eq!(state(g).nState, SL_STATE_ERROR);
+    // A member table inside the group is never read.
+    let mem = Mem::new();
+    let (g, _, l, _) = running_pair(&mem);
+    assert_eq!(gcycle(g, mem.at(G + 8), l, 30), SL_E_CORRUPT);
+    assert_eq!(state(g).nState, SL_STATE_ERROR);
+}
+
+#[test]
+fn forged_links_stop_the_group() {
+    type Forge = fn(*mut SL_LINK);
+    let forgeries: [(&str, Forge); 4] = [
+        ("destination offset", |l| unsafe {
+            (*l).nDstOffset = offset_of!(FB_AND, bAndIn2) as u16
+        }),
+        ("source member", |l| unsafe { (*l).nSrcMember = 1 }),
+        ("destination beyond the members", |l| unsafe {
+            (*l).nDstMember = 7
+        }),
+        ("check bytes", |l| unsafe { (*l).aReserved[0] ^= 0x80 }),
+    ];
+    for (what, forge) in forgeries {
+        let mem = Mem::new();
+        let (g, m, l, e) = running_pair(&mem);
+        forge(l);
+        let rc = gcycle(g, m, l, 30);
+        assert_eq!(rc, SL_E_CORRUPT, "{what}");
+        assert_eq!(state(g).nState, SL_STATE_ERROR, "{what}");
+        // SAFETY: arena memory, read by value.
+        assert_eq!(unsafe { (*e).bEStopOut }, 0, "{what}");
+        assert_eq!((state(g).bInRun, state(g).bFbRun), (0, 0), "{what}");
+    }
+}
+
+#[test]
+fn forged_link_count_stops_the_group() {
+    let mem = Mem::new();
+    let (g, m, l, e) = running_pair(&mem);
+    // A link count of 2 with one link: the second entry (zero) fails its check.
+    let w = 2u32 | u32::from(CAP) << 16;
+    // SAFETY: arena memory.
+    unsafe {
+        (*g).stPrivate.dwLinks = w;
+        (*g).stPrivate.adwCheck[3] = !w;
+    }
+    assert_stopped_with_corrupt(gcycle(g, m, l, 30), g, e, true);
+}
+
+#[test]
+fn ton2_elapsed_into_its_own_block_is_no_aliasing() {
+    let mem = Mem::new();
+    let t = mem.at::<FB_TON2>(512);
+    // SAFETY: arena memory; the output lies inside the block (at tDelay), which the
+    // function must only write through the raw pointer after reading the block.
+    unsafe {
+        t.write(FB_TON2 {
+            tDelay: 100,
+            ..Default::default()
+        });
+        ffi::sl_ton2_init(t);
+        let out = std::ptr::addr_of_mut!((*t).tDelay);
+        assert_eq!(ffi::sl_ton2_get_elapsed(t, out), SL_OK);
+        assert_eq!((*t).tDelay, 0);
+    }
 }
