@@ -805,6 +805,7 @@ typedef struct SL_TIMER_PRIVATE {
 
 /*
  FB TON2 instance (ABI §3, §9). Inputs at the manual's offsets (§4.13.2), output base 40.
+ Size: 104 bytes.
  */
 typedef struct FB_TON2 {
   /*
@@ -929,6 +930,7 @@ typedef struct SL_GROUP_PRIVATE {
 
 /*
  A TwinSAFE group with the EL6910 interface (manual §3.1.1.2, §3.2.5).
+ Size: 64 bytes.
  */
 typedef struct SL_GROUP {
   /*
@@ -1047,6 +1049,7 @@ typedef struct SL_MEMBER {
 /*
  One link in caller storage: output byte `nSrcOffset` of member `nSrcMember` is copied
  to input byte `nDstOffset` of member `nDstMember` just before the destination runs.
+ Size: 12 bytes.
  */
 typedef struct SL_LINK {
   uint16_t nSrcMember;
@@ -1084,6 +1087,7 @@ typedef struct SL_GUARD_PRIVATE {
 /*
  FB ESTOP instance (ABI §3, §8). Inputs at the manual's offsets (§4.4.2), outputs at
  output base 56 + the manual's offsets.
+ Size: 136 bytes.
  */
 typedef struct FB_ESTOP {
   /*
@@ -1227,6 +1231,7 @@ typedef struct FB_ESTOP {
 /*
  FB MON instance (ABI §3, §8). Inputs at the manual's offsets (§4.5.2), outputs at
  output base 56 + the manual's offsets.
+ Size: 136 bytes.
  */
 typedef struct FB_MON {
   /*
@@ -1373,6 +1378,7 @@ typedef struct SL_LOGIC_PRIVATE {
 
 /*
  FB AND instance (ABI §3, §9). Inputs at the manual's offsets (§4.1.2), output base 24.
+ Size: 72 bytes.
  */
 typedef struct FB_AND {
   /*
@@ -1467,6 +1473,7 @@ typedef struct FB_AND {
 
 /*
  FB OR instance (ABI §3, §9). Inputs at the manual's offsets (§4.2.2), output base 24.
+ Size: 72 bytes.
  */
 typedef struct FB_OR {
   /*
@@ -1562,6 +1569,7 @@ typedef struct FB_OR {
 /*
  FB XOR instance (ABI §3, §9). Inputs at the manual's offsets 0…15 (§4.34.2), output
  base 24 (outputs at base + 8 … base + 15).
+ Size: 80 bytes.
  */
 typedef struct FB_XOR {
   /*
@@ -1709,6 +1717,7 @@ typedef struct FB_XOR {
 /*
  FB DECOUPLE instance (ABI §3, §9). Inputs at the manual's offsets 8…15 (§4.6.2), output
  base 24 (outputs at base + 8 … base + 15).
+ Size: 80 bytes.
  */
 typedef struct FB_DECOUPLE {
   /*
@@ -1831,6 +1840,7 @@ typedef struct FB_DECOUPLE {
  `stHeader.wAux` (complement-checked) bits 0-7: the mode (one input bit) that RUN drives
  or START waits to confirm; bit 8: the mode-change timer runs, started at
  `stHeader.tPhase`.
+ Size: 32 bytes.
  */
 typedef struct SL_OPMODE_PRIVATE {
   struct SL_PRIVATE_HEADER stHeader;
@@ -1844,6 +1854,7 @@ typedef struct SL_OPMODE_PRIVATE {
 /*
  FB OPMODE instance (ABI §3, §9). Inputs at the manual's offsets (§4.3.2), outputs at
  output base 32 + the manual's offsets.
+ Size: 88 bytes.
  */
 typedef struct FB_OPMODE {
   /*
@@ -1984,6 +1995,7 @@ typedef struct FB_OPMODE {
  `stHeader.wAux` (complement-checked) bits 0-1: pair discrepancy timers running; bits 4-5:
  "Safe Inputs after Disc Error" latches of pairs 1/2; bit 6: the same for the error
  between the pairs. `stHeader.tPhase`: start of the window between the groups.
+ Size: 48 bytes.
  */
 typedef struct SL_TWOHAND_PRIVATE {
   struct SL_PRIVATE_HEADER stHeader;
@@ -2001,6 +2013,7 @@ typedef struct SL_TWOHAND_PRIVATE {
 /*
  FB TWOHAND instance (ABI §3, §9). Inputs at the manual's offsets (§4.7.2), outputs at
  output base 40 + the manual's offsets.
+ Size: 104 bytes.
  */
 typedef struct FB_TWOHAND {
   /*
@@ -2101,6 +2114,7 @@ typedef struct FB_TWOHAND {
 
 /*
  Private state of FB_MUTING (72 bytes). Never written by the user.
+ Size: 72 bytes.
  */
 typedef struct SL_MUTING_PRIVATE {
   /*
@@ -2131,6 +2145,7 @@ typedef struct SL_MUTING_PRIVATE {
 /*
  FB MUTING instance (ABI §3, §9). Inputs at the manual's offsets (§4.8.2), outputs at
  output base 56 + the manual's offsets.
+ Size: 144 bytes.
  */
 typedef struct FB_MUTING {
   /*
@@ -2276,6 +2291,7 @@ typedef struct FB_MUTING {
 /*
  Private state of FB_EDM (32 bytes). Never written by the user. The header's `tPhase` is
  the start of the current monitoring, `wAux` bit 0 says it is still waiting for Mon2.
+ Size: 32 bytes.
  */
 typedef struct SL_EDM_PRIVATE {
   struct SL_PRIVATE_HEADER stHeader;
@@ -2287,6 +2303,7 @@ typedef struct SL_EDM_PRIVATE {
 
 /*
  FB EDM instance (ABI §3, §9). Inputs at the manual's offsets (§4.9.2), output base 32.
+ Size: 80 bytes.
  */
 typedef struct FB_EDM {
   /*
@@ -2375,6 +2392,7 @@ typedef struct SL_FLIPFLOP_PRIVATE {
 
 /*
  FB RS instance (ABI §3, §9). Inputs at the manual's offsets (§4.10.2), output base 24.
+ Size: 72 bytes.
  */
 typedef struct FB_RS {
   /*
@@ -2449,6 +2467,7 @@ typedef struct FB_RS {
 
 /*
  FB SR instance (ABI §3, §9). Inputs at the manual's offsets (§4.11.2), output base 24.
+ Size: 72 bytes.
  */
 typedef struct FB_SR {
   /*
@@ -2523,6 +2542,7 @@ typedef struct FB_SR {
 
 /*
  FB TON instance (ABI §3, §9). Input at the manual's offset (§4.12.2), output base 32.
+ Size: 96 bytes.
  */
 typedef struct FB_TON {
   /*
@@ -2608,6 +2628,7 @@ typedef struct FB_TON {
 
 /*
  FB TOF instance (ABI §3, §9). Input at the manual's offset (§4.14.2), output base 32.
+ Size: 96 bytes.
  */
 typedef struct FB_TOF {
   /*

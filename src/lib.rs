@@ -43,67 +43,35 @@ pub mod types;
 #[cfg(feature = "std")]
 pub mod ffi;
 
-pub use blocks::and::FB_AND;
-pub use blocks::and::SL_TYPE_AND;
-pub use blocks::arith::{
-    FB_ADD_DINT, FB_ADD_INT, FB_ADD_UDINT, FB_ADD_UINT, FB_DIV_DINT, FB_DIV_INT, FB_DIV_UDINT,
-    FB_DIV_UINT, FB_MUL_DINT, FB_MUL_INT, FB_MUL_UDINT, FB_MUL_UINT, FB_SUB_DINT, FB_SUB_INT,
-    FB_SUB_UDINT, FB_SUB_UINT,
-};
-pub use blocks::decouple::FB_DECOUPLE;
-pub use blocks::decouple::SL_TYPE_DECOUPLE;
-pub use blocks::edm::{FB_EDM, SL_EDM_PRIVATE};
-pub use blocks::edm::{
-    SL_DIAG_EDM_SWITCH_OFF, SL_DIAG_EDM_SWITCH_ON, SL_EDM_TIME_MAX, SL_STATE_EDM_MONOFF,
-    SL_STATE_EDM_MONON, SL_TYPE_EDM,
-};
-pub use blocks::estop::FB_ESTOP;
-pub use blocks::estop::SL_TYPE_ESTOP;
-pub use blocks::flipflop::SL_FLIPFLOP_PRIVATE;
+/// The registered blocks at the crate root: each row's module (its struct, variants and
+/// constants), generated from the registry rows.
+macro_rules! reexport_blocks {
+    ($($krate:ident :: blocks :: $m:ident :: $ty:ident => $init:ident, $cycle:ident;)*) => {
+        $(
+            // Integer variants share one module: its repeated glob names the same items.
+            #[allow(unused_imports)]
+            pub use $krate::blocks::$m::*;
+        )*
+    };
+}
+for_each_block!(reexport_blocks);
+
+pub use blocks::flipflop::{SL_FLIPFLOP_PRIVATE, SL_STATE_RS_SET, SL_STATE_SR_SET};
 pub use blocks::guard::SL_GUARD_PRIVATE;
 pub use blocks::logic::SL_LOGIC_PRIVATE;
-pub use blocks::mon::FB_MON;
-pub use blocks::mon::SL_TYPE_MON;
-pub use blocks::muting::{FB_MUTING, SL_MUTING_PRIVATE};
-pub use blocks::muting::{
-    SL_DIAG_MUTING_MAX_TIME, SL_DIAG_MUTING_SEQUENCE, SL_MUTING_DELOUT_DELAY_MAX,
-    SL_MUTING_FILTER_TIME_MAX, SL_MUTING_MAX_MUTING_TIME_MAX, SL_OPT_MUTING_BACKWARDS,
-    SL_OPT_MUTING_OSSD_CHECK_OPTIONAL, SL_OPT_MUTING_SEQUENTIAL, SL_STATE_MUTING_MUTING1,
-    SL_STATE_MUTING_MUTING2, SL_STATE_MUTING_MUTING3, SL_STATE_MUTING_MUTING4,
-    SL_STATE_MUTING_MUTING5, SL_STATE_MUTING_MUTING6, SL_STATE_MUTING_MUTING7,
-    SL_STATE_MUTING_MUTING8, SL_STATE_MUTING_MUTING9, SL_TYPE_MUTING,
-};
-pub use blocks::opmode::{FB_OPMODE, SL_OPMODE_PRIVATE};
-pub use blocks::opmode::{SL_DIAG_OPMODE_DISC, SL_TYPE_OPMODE};
-pub use blocks::or::FB_OR;
-pub use blocks::or::SL_TYPE_OR;
-pub use blocks::rs::FB_RS;
-pub use blocks::rs::SL_TYPE_RS;
-pub use blocks::sr::FB_SR;
-pub use blocks::sr::SL_TYPE_SR;
 pub use blocks::state_name;
 pub use blocks::timer::SL_TIMER_PRIVATE;
 pub use blocks::timer::{
     SL_DIAG_TON2_RESTORE, SL_OPT_TON2_REMAINING_TIME, SL_TIMEBASE_1000MS, SL_TIMEBASE_100MS,
     SL_TIMEBASE_10MS, SL_TIMEBASE_1MS, SL_TIMEBASE_AUTO, SL_TIMER_DELAY_MAX, SL_TIMER_STEPS_MAX,
 };
-pub use blocks::tof::FB_TOF;
-pub use blocks::tof::SL_TYPE_TOF;
-pub use blocks::ton::FB_TON;
-pub use blocks::ton::{SL_STATE_TON_DELAYIN, SL_TYPE_TON};
-pub use blocks::ton2::FB_TON2;
-pub use blocks::ton2::{SL_STATE_TON2_DELAYIN, SL_TYPE_TON2};
-pub use blocks::twohand::{FB_TWOHAND, SL_TWOHAND_PRIVATE};
-pub use blocks::twohand::{
-    SL_DIAG_TWOHAND_ERROR, SL_DIAG_TWOHAND_PAIRS, SL_DIAG_TWOHAND_SAFE_IN_PAIRS,
-    SL_STATE_TWOHAND_1BUTTON, SL_STATE_TWOHAND_2BUTTON, SL_STATE_TWOHAND_RELEASE,
-    SL_TWOHAND_PAIRS_TIME_MAX, SL_TYPE_TWOHAND,
-};
-pub use blocks::xor::FB_XOR;
-pub use blocks::xor::SL_TYPE_XOR;
 pub use group::{SL_GROUP, SL_GROUP_PRIVATE, SL_LINK, SL_MEMBER};
 pub use prim::header::SL_PRIVATE_HEADER;
 pub use types::*;
+
+// Every struct of the header at the offsets, size and alignment the header's C declarations
+// give (build.rs computes them and checks them against each field's "Offset N." comment).
+include!(concat!(env!("OUT_DIR"), "/layout_checks.rs"));
 
 /// The Rust face of every block. `init` / `cycle` return the C status code (the same calls
 /// as `sl_<name>_init` / `sl_<name>_cycle`); `try_init` / `try_cycle` return a `Result`.
@@ -214,4 +182,3 @@ impl<B: prim::envelope::Block + registry::Registered + group::Member> FunctionBl
         B::FIELDS.iter().find(|f| f.name == name)
     }
 }
-pub use blocks::flipflop::{SL_STATE_RS_SET, SL_STATE_SR_SET};

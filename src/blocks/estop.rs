@@ -9,13 +9,13 @@
 use super::guard::{GuardBlock, GuardParams, GuardRaw, SL_GUARD_PRIVATE};
 use super::{BlockInfo, DELAYOUT, ERROR, RESET, RUN, SAFE, START, STOP};
 use crate::types::*;
-use core::mem::{offset_of, size_of};
 
 /// Block type tag of FB_ESTOP (`SL_MEMBER.nType`, `sl_diag_text`).
 pub const SL_TYPE_ESTOP: u16 = 1;
 
 /// FB ESTOP instance (ABI §3, §8). Inputs at the manual's offsets (§4.4.2), outputs at
 /// output base 56 + the manual's offsets.
+/// Size: 136 bytes.
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 #[allow(non_snake_case, non_camel_case_types)]
@@ -90,35 +90,8 @@ pub struct FB_ESTOP {
     pub stPrivate: SL_GUARD_PRIVATE,
 }
 
-// The ABI's offsets (ABI §8, manual §4.4.2), checked at compile time.
-const _: () = {
-    assert!(offset_of!(FB_ESTOP, bRestart) == 0);
-    assert!(offset_of!(FB_ESTOP, bEDM1) == 1);
-    assert!(offset_of!(FB_ESTOP, bEDM2) == 2);
-    assert!(offset_of!(FB_ESTOP, bEStopIn1) == 8);
-    assert!(offset_of!(FB_ESTOP, bEStopIn8) == 15);
-    assert!(offset_of!(FB_ESTOP, bRun) == 16);
-    assert!(offset_of!(FB_ESTOP, bErrAck) == 17);
-    assert!(offset_of!(FB_ESTOP, tDiscTime12) == 20);
-    assert!(offset_of!(FB_ESTOP, tDiscTime78) == 32);
-    assert!(offset_of!(FB_ESTOP, tEDM1ResetTime) == 36);
-    assert!(offset_of!(FB_ESTOP, tEDM2ResetTime) == 40);
-    assert!(offset_of!(FB_ESTOP, tEStopDelOutDelay) == 44);
-    assert!(offset_of!(FB_ESTOP, wInputActive) == 48);
-    assert!(offset_of!(FB_ESTOP, wInputNegated) == 50);
-    assert!(offset_of!(FB_ESTOP, dwOptions) == 52);
-    assert!(offset_of!(FB_ESTOP, bError) == 56);
-    assert!(offset_of!(FB_ESTOP, bEStopOut) - offset_of!(FB_ESTOP, bError) == 1);
-    assert!(offset_of!(FB_ESTOP, bEStopDelOut) - offset_of!(FB_ESTOP, bError) == 2);
-    assert!(offset_of!(FB_ESTOP, nState) == 64);
-    assert!(offset_of!(FB_ESTOP, nDiag) == 66);
-    assert!(offset_of!(FB_ESTOP, stPrivate) == 72);
-    assert!(size_of::<FB_ESTOP>() == 136);
-    assert!(core::mem::align_of::<FB_ESTOP>() == 4);
-};
-
 /// Type tag, name and diag texts (manual §4.4.2).
-pub const INFO: BlockInfo = BlockInfo {
+const INFO: BlockInfo = BlockInfo {
     tag: SL_TYPE_ESTOP,
     name: "ESTOP",
     states: &[RUN, STOP, SAFE, ERROR, RESET, START, DELAYOUT],

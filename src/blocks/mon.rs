@@ -10,13 +10,13 @@
 use super::guard::{GuardBlock, GuardParams, GuardRaw, SL_GUARD_PRIVATE};
 use super::{BlockInfo, DELAYOUT, ERROR, RESET, RUN, SAFE, START, STOP};
 use crate::types::*;
-use core::mem::{offset_of, size_of};
 
 /// Block type tag of FB_MON.
 pub const SL_TYPE_MON: u16 = 2;
 
 /// FB MON instance (ABI §3, §8). Inputs at the manual's offsets (§4.5.2), outputs at
 /// output base 56 + the manual's offsets.
+/// Size: 136 bytes.
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 #[allow(non_snake_case, non_camel_case_types)]
@@ -89,41 +89,11 @@ pub struct FB_MON {
     pub stPrivate: SL_GUARD_PRIVATE,
 }
 
-// The ABI's offsets (ABI §8, manual §4.5.2), checked at compile time.
-const _: () = {
-    assert!(offset_of!(FB_MON, bRestart) == 0);
-    assert!(offset_of!(FB_MON, bEDM1) == 1);
-    assert!(offset_of!(FB_MON, bEDM2) == 2);
-    assert!(offset_of!(FB_MON, bMonIn1) == 8);
-    assert!(offset_of!(FB_MON, bMonIn4) == 11);
-    assert!(offset_of!(FB_MON, bSecure1) == 12);
-    assert!(offset_of!(FB_MON, bSecure2) == 13);
-    assert!(offset_of!(FB_MON, bRun) == 16);
-    assert!(offset_of!(FB_MON, bErrAck) == 17);
-    assert!(offset_of!(FB_MON, tDiscTime12) == 20);
-    assert!(offset_of!(FB_MON, tDiscTime34) == 24);
-    assert!(offset_of!(FB_MON, tDiscTimeSecure12) == 28);
-    assert!(offset_of!(FB_MON, tEDM1ResetTime) == 32);
-    assert!(offset_of!(FB_MON, tEDM2ResetTime) == 36);
-    assert!(offset_of!(FB_MON, tMonDelOutDelay) == 40);
-    assert!(offset_of!(FB_MON, wInputActive) == 44);
-    assert!(offset_of!(FB_MON, wInputNegated) == 46);
-    assert!(offset_of!(FB_MON, dwOptions) == 48);
-    assert!(offset_of!(FB_MON, bError) == 56);
-    assert!(offset_of!(FB_MON, bMonOut) - offset_of!(FB_MON, bError) == 1);
-    assert!(offset_of!(FB_MON, bMonDelOut) - offset_of!(FB_MON, bError) == 2);
-    assert!(offset_of!(FB_MON, nState) == 64);
-    assert!(offset_of!(FB_MON, nDiag) == 66);
-    assert!(offset_of!(FB_MON, stPrivate) == 72);
-    assert!(size_of::<FB_MON>() == 136);
-    assert!(core::mem::align_of::<FB_MON>() == 4);
-};
-
 const MON_INPUTS: u8 = 0x0F;
 const SECURE_INPUTS: u8 = 0x30;
 
 /// Type tag, name and diag texts (manual §4.5.2).
-pub const INFO: BlockInfo = BlockInfo {
+const INFO: BlockInfo = BlockInfo {
     tag: SL_TYPE_MON,
     name: "MON",
     states: &[

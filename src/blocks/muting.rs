@@ -18,7 +18,6 @@ use crate::prim::envelope::Block;
 use crate::prim::header::{param_crc, SL_PRIVATE_HEADER};
 use crate::prim::{pair, time};
 use crate::types::*;
-use core::mem::{offset_of, size_of};
 
 /// FB_MUTING "Sequential Inputs": the four muting inputs are single-channel sensors checked
 /// one after the other (clear: two two-channel groups MutingIn1/2 and MutingIn3/4, parallel).
@@ -78,6 +77,7 @@ pub const SL_MUTING_DELOUT_DELAY_MAX: u32 = 30_000;
 
 /// FB MUTING instance (ABI §3, §9). Inputs at the manual's offsets (§4.8.2), outputs at
 /// output base 56 + the manual's offsets.
+/// Size: 144 bytes.
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 #[allow(non_snake_case, non_camel_case_types)]
@@ -155,6 +155,7 @@ pub struct FB_MUTING {
 }
 
 /// Private state of FB_MUTING (72 bytes). Never written by the user.
+/// Size: 72 bytes.
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 #[allow(non_snake_case, non_camel_case_types)]
@@ -174,46 +175,8 @@ pub struct SL_MUTING_PRIVATE {
     pub atFilterStart: [u32; 4],
 }
 
-// The ABI's offsets (ABI §9, manual §4.8.2), checked at compile time.
-const _: () = {
-    assert!(offset_of!(FB_MUTING, bMutingEnable) == 0);
-    assert!(offset_of!(FB_MUTING, bEDM1) == 1);
-    assert!(offset_of!(FB_MUTING, bEDM2) == 2);
-    assert!(offset_of!(FB_MUTING, bMutingIn1) == 8);
-    assert!(offset_of!(FB_MUTING, bMutingIn2) == 9);
-    assert!(offset_of!(FB_MUTING, bOSSDIn1) == 10);
-    assert!(offset_of!(FB_MUTING, bOSSDIn2) == 11);
-    assert!(offset_of!(FB_MUTING, bMutingIn3) == 12);
-    assert!(offset_of!(FB_MUTING, bMutingIn4) == 13);
-    assert!(offset_of!(FB_MUTING, bRun) == 16);
-    assert!(offset_of!(FB_MUTING, bErrAck) == 17);
-    assert!(offset_of!(FB_MUTING, tDiscTime12) == 20);
-    assert!(offset_of!(FB_MUTING, tDiscTimeOSSD) == 24);
-    assert!(offset_of!(FB_MUTING, tDiscTime34) == 28);
-    assert!(offset_of!(FB_MUTING, tFilterTime) == 32);
-    assert!(offset_of!(FB_MUTING, tMaxMutingTime) == 36);
-    assert!(offset_of!(FB_MUTING, tMuteDelOutDelay) == 40);
-    assert!(offset_of!(FB_MUTING, wInputActive) == 44);
-    assert!(offset_of!(FB_MUTING, wInputNegated) == 46);
-    assert!(offset_of!(FB_MUTING, dwOptions) == 48);
-    assert!(offset_of!(FB_MUTING, bError) == 56);
-    assert!(offset_of!(FB_MUTING, bMutingActive) - offset_of!(FB_MUTING, bError) == 1);
-    assert!(offset_of!(FB_MUTING, bMuteOut) - offset_of!(FB_MUTING, bError) == 2);
-    assert!(offset_of!(FB_MUTING, bMuteDelOut) - offset_of!(FB_MUTING, bError) == 3);
-    assert!(offset_of!(FB_MUTING, nState) == 64);
-    assert!(offset_of!(FB_MUTING, nDiag) == 66);
-    assert!(offset_of!(FB_MUTING, stPrivate) == 72);
-    assert!(size_of::<FB_MUTING>() == 144);
-    assert!(core::mem::align_of::<FB_MUTING>() == 4);
-    assert!(size_of::<SL_MUTING_PRIVATE>() == 72);
-    assert!(offset_of!(SL_MUTING_PRIVATE, tMaxMutingTime) == 28);
-    assert!(offset_of!(SL_MUTING_PRIVATE, awTime) == 32);
-    assert!(offset_of!(SL_MUTING_PRIVATE, atDiscStart) == 44);
-    assert!(offset_of!(SL_MUTING_PRIVATE, atFilterStart) == 56);
-};
-
 /// Type tag, name, states and diag texts (manual §4.8.2, §4.8.4).
-pub const INFO: BlockInfo = BlockInfo {
+const INFO: BlockInfo = BlockInfo {
     tag: SL_TYPE_MUTING,
     name: "MUTING",
     states: &[

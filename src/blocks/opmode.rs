@@ -16,7 +16,6 @@ use crate::prim::header::{param_crc, F_RESTART_PREV, SL_PRIVATE_HEADER};
 use crate::prim::restart::{self, Restart};
 use crate::prim::time;
 use crate::types::*;
-use core::mem::{offset_of, size_of};
 
 /// FB_OPMODE diag bit 0: discrepancy monitoring error (no mode or more than one mode selected
 /// for tDiscTime, manual §4.3.2).
@@ -27,6 +26,7 @@ pub const SL_TYPE_OPMODE: u16 = 7;
 
 /// FB OPMODE instance (ABI §3, §9). Inputs at the manual's offsets (§4.3.2), outputs at
 /// output base 32 + the manual's offsets.
+/// Size: 88 bytes.
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 #[allow(non_snake_case, non_camel_case_types)]
@@ -104,6 +104,7 @@ pub struct FB_OPMODE {
 /// `stHeader.wAux` (complement-checked) bits 0-7: the mode (one input bit) that RUN drives
 /// or START waits to confirm; bit 8: the mode-change timer runs, started at
 /// `stHeader.tPhase`.
+/// Size: 32 bytes.
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 #[allow(non_snake_case, non_camel_case_types)]
@@ -114,29 +115,8 @@ pub struct SL_OPMODE_PRIVATE {
     pub aReserved: [u8; 2],
 }
 
-// The ABI's offsets (ABI §3, §9, manual §4.3.2), checked at compile time.
-const _: () = {
-    assert!(offset_of!(FB_OPMODE, bRestart) == 0);
-    assert!(offset_of!(FB_OPMODE, bOpIn1) == 8);
-    assert!(offset_of!(FB_OPMODE, bOpIn8) == 15);
-    assert!(offset_of!(FB_OPMODE, bRun) == 16);
-    assert!(offset_of!(FB_OPMODE, bErrAck) == 17);
-    assert!(offset_of!(FB_OPMODE, tDiscTime) == 20);
-    assert!(offset_of!(FB_OPMODE, wInputActive) == 24);
-    assert!(offset_of!(FB_OPMODE, dwOptions) == 28);
-    assert!(offset_of!(FB_OPMODE, bError) == 32);
-    assert!(offset_of!(FB_OPMODE, bOpOut1) - offset_of!(FB_OPMODE, bError) == 8);
-    assert!(offset_of!(FB_OPMODE, bOpOut8) - offset_of!(FB_OPMODE, bError) == 15);
-    assert!(offset_of!(FB_OPMODE, nState) == 48);
-    assert!(offset_of!(FB_OPMODE, nDiag) == 50);
-    assert!(offset_of!(FB_OPMODE, stPrivate) == 56);
-    assert!(size_of::<SL_OPMODE_PRIVATE>() == 32);
-    assert!(size_of::<FB_OPMODE>() == 88);
-    assert!(core::mem::align_of::<FB_OPMODE>() == 4);
-};
-
 /// Type tag, name, states and diag texts (manual §4.3.2).
-pub const INFO: BlockInfo = BlockInfo {
+const INFO: BlockInfo = BlockInfo {
     tag: SL_TYPE_OPMODE,
     name: "OPMODE",
     states: &[RUN, STOP, SAFE, ERROR, RESET, START],

@@ -6,12 +6,12 @@ use super::logic::{LogicBlock, LogicIn, LogicParams, SL_LOGIC_PRIVATE};
 use super::{BlockInfo, ERROR, RESET, RUN, SAFE, STOP};
 use crate::prim::bools;
 use crate::types::*;
-use core::mem::{offset_of, size_of};
 
 /// Block type tag of FB_OR.
 pub const SL_TYPE_OR: u16 = 4;
 
 /// FB OR instance (ABI §3, §9). Inputs at the manual's offsets (§4.2.2), output base 24.
+/// Size: 72 bytes.
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 #[allow(non_snake_case, non_camel_case_types)]
@@ -62,22 +62,8 @@ pub struct FB_OR {
     pub stPrivate: SL_LOGIC_PRIVATE,
 }
 
-const _: () = {
-    assert!(offset_of!(FB_OR, bOrIn1) == 8);
-    assert!(offset_of!(FB_OR, bOrIn8) == 15);
-    assert!(offset_of!(FB_OR, bRun) == 16);
-    assert!(offset_of!(FB_OR, bErrAck) == 17);
-    assert!(offset_of!(FB_OR, wInputActive) == 20);
-    assert!(offset_of!(FB_OR, wInputNegated) == 22);
-    assert!(offset_of!(FB_OR, bOrOut) == 24 + 1);
-    assert!(offset_of!(FB_OR, nState) == 32);
-    assert!(offset_of!(FB_OR, nDiag) == 34);
-    assert!(offset_of!(FB_OR, stPrivate) == 40);
-    assert!(size_of::<FB_OR>() == 72);
-};
-
 /// Type tag, name and diag texts (manual §4.2.2).
-pub const INFO: BlockInfo = BlockInfo {
+const INFO: BlockInfo = BlockInfo {
     tag: SL_TYPE_OR,
     name: "OR",
     states: &[RUN, STOP, SAFE, ERROR, RESET],

