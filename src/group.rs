@@ -55,6 +55,7 @@ pub trait Member {
 macro_rules! impl_member {
     ([$($gen:tt)*] $ty:ty {
         info: $info:expr,
+        state: $state:ty,
         private: $private:ty,
         input: [$($i:ident),* $(,)?],
         param: [$($p:ident),* $(,)?],
@@ -95,6 +96,7 @@ macro_rules! impl_member {
         }
         impl<$($gen)*> $crate::registry::Registered for $ty {
             const INFO: $crate::blocks::BlockInfo = $info;
+            type State = $state;
             const FIELDS: &'static [$crate::registry::Field] = &[
                 $($crate::impl_member!(@field $i, Input, io_kind)),*
                 , $crate::impl_member!(@field bRun, Control, io_kind)

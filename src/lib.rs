@@ -77,7 +77,7 @@ include!(concat!(env!("OUT_DIR"), "/layout_checks.rs"));
 /// as `sl_<name>_init` / `sl_<name>_cycle`); `try_init` / `try_cycle` return a `Result`.
 ///
 /// ```
-/// use safelogic::{FunctionBlock, Status, FB_ESTOP, SL_STATE_RUN};
+/// use safelogic::{EstopState, FunctionBlock, Status, FB_ESTOP};
 ///
 /// let mut estop = FB_ESTOP { wInputActive: 0b11, tDiscTime12: 100, ..Default::default() };
 /// estop.try_init()?;
@@ -87,10 +87,13 @@ include!(concat!(env!("OUT_DIR"), "/layout_checks.rs"));
 /// estop.try_cycle(10)?;
 /// estop.bRestart = 0; // the falling edge of Restart enables the outputs
 /// estop.try_cycle(20)?;
-/// assert_eq!((estop.state_name(), estop.bEStopOut), ("RUN", 1));
+/// assert_eq!((estop.current_state()?, estop.bEStopOut), (EstopState::Run, 1));
+/// assert_eq!(estop.state_name(), "RUN");
 /// # Ok::<(), Status>(())
 /// ```
 pub trait FunctionBlock {
+    /// The block's states (`EstopState`, `TonState`, …): the manual's status values.
+    type State: registry::BlockState;
     /// Validates and latches the parameters and resets the block to power-up (STOP).
     fn init(&mut self) -> i32;
     /// One task cycle at `now` (monotonic ms, wrapping).
@@ -103,6 +106,9 @@ pub trait FunctionBlock {
     fn try_cycle(&mut self, now: u32) -> Result<(), Status> {
         Status::from_code(self.cycle(now)).result()
     }
+    /// The current state, decoded from `nState`; `Err(Status::Corrupt)` for a value the
+    /// block does not have (the next cycle enters ERROR with the corrupt bit).
+    fn current_state(&self) -> Result<Self::State, Status>;
     /// The manual's name of the current state ("RUN", "DELAYOUT", …).
     fn state_name(&self) -> &'static str;
     /// The block is in ERROR.
@@ -132,6 +138,10 @@ impl<B: prim::envelope::Block + registry::Registered + group::Member> FunctionBl
     }
     fn cycle(&mut self, now: u32) -> i32 {
         prim::envelope::cycle(self, now).code()
+    }
+    type State = B::State;
+    fn current_state(&self) -> Result<B::State, Status> {
+        <B::State as registry::BlockState>::decode(self.state()).ok_or(Status::Corrupt)
     }
     fn state_name(&self) -> &'static str {
         blocks::state_name(B::INFO.tag, self.state())

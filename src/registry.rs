@@ -162,14 +162,35 @@ pub trait Private {
     fn private_mut(&mut self) -> &mut Self::P;
 }
 
-/// What a registered block type brings: its info and its field table.
+/// A block's states as an enum (declared with `block_states!` in the block's file): the
+/// state byte `nState` decoded once.
+pub trait BlockState: Copy + core::fmt::Debug + Eq + 'static {
+    /// (value, NUL-terminated name) of every state, the manual's status values.
+    const TABLE: &'static [(u8, &'static str)];
+    /// The state with this value; `None` for a value the block does not have (corrupt).
+    fn decode(value: u8) -> Option<Self>;
+    /// The manual's status value (`nState`).
+    fn value(self) -> u8;
+    /// The manual's name ("RUN", "DELAYIN", …).
+    fn name(self) -> &'static str {
+        let v = self.value();
+        Self::TABLE
+            .iter()
+            .find(|(s, _)| *s == v)
+            .map_or("?", |(_, n)| n.trim_end_matches('\0'))
+    }
+}
+
+/// What a registered block type brings: its info, its states and its field table.
 pub trait Registered {
     /// Tag, name, states and diag texts.
     const INFO: BlockInfo;
+    /// The block's states.
+    type State: BlockState;
     /// Every named field (reserved bytes and the private state excluded).
     const FIELDS: &'static [Field];
-    /// The state values of `INFO.states` as a set (one test per call, no table walk).
-    const STATES: StateSet = StateSet::of(Self::INFO.states);
+    /// The state values as a set (one test per call, no table walk).
+    const STATES: StateSet = StateSet::of(<Self::State as BlockState>::TABLE);
 }
 
 /// A set of state values 0–63.
@@ -315,6 +336,23 @@ mod tests {
             assert!(a.info.states.iter().all(|(_, n)| n.ends_with('\0')));
             assert_eq!(a.c_prefix, alloc_free_lower(a.info.name).as_str());
         }
+    }
+
+    #[test]
+    fn states_come_from_the_state_enum() {
+        macro_rules! check {
+            ($($ty:ty => $init:ident, $cycle:ident;)*) => {$({
+                type S = <$ty as Registered>::State;
+                let info = <$ty as Registered>::INFO;
+                assert_eq!(info.states, S::TABLE, "{}", info.name);
+                for v in 0..=u8::MAX {
+                    let known = S::TABLE.iter().any(|(s, _)| *s == v);
+                    assert_eq!(S::decode(v).map(S::value), known.then_some(v), "{}", info.name);
+                    assert_eq!(<$ty as Registered>::STATES.has(v), known, "{}", info.name);
+                }
+            })*};
+        }
+        crate::for_each_block!(check);
     }
 
     fn alloc_free_lower(name: &str) -> String {

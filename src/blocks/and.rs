@@ -3,7 +3,7 @@
 //! STOP (2), SAFE (3); diag always 0.
 
 use super::logic::{LogicBlock, LogicIn, LogicParams, SL_LOGIC_PRIVATE};
-use super::{BlockInfo, ERROR, RESET, RUN, SAFE, STOP};
+use super::BlockInfo;
 use crate::prim::bools;
 use crate::types::*;
 
@@ -62,17 +62,23 @@ pub struct FB_AND {
     pub stPrivate: SL_LOGIC_PRIVATE,
 }
 
+crate::blocks::block_states!(
+    /// The states of FB AND.
+    AndState: Run, Stop, Safe, Error, Reset
+);
+
 /// Type tag, name and diag texts (manual §4.1.2).
 const INFO: BlockInfo = BlockInfo {
     tag: SL_TYPE_AND,
     name: "AND",
-    states: &[RUN, STOP, SAFE, ERROR, RESET],
+    states: <AndState as crate::registry::BlockState>::TABLE,
     diag: &[],
     diag_values: &[],
 };
 
 crate::impl_member!([] FB_AND {
     info: INFO,
+    state: AndState,
     private: SL_LOGIC_PRIVATE,
     input: [bAndIn1, bAndIn2, bAndIn3, bAndIn4, bAndIn5, bAndIn6, bAndIn7, bAndIn8],
     param: [wInputActive, wInputNegated],

@@ -14,7 +14,7 @@
 
 #![allow(non_camel_case_types)] // the ABI's names (FB_ADD_INT …)
 
-use super::{BlockInfo, ERROR, RESET, RUN, STOP};
+use super::BlockInfo;
 use crate::prim::envelope::Block;
 use crate::prim::header::{param_crc, SL_PRIVATE_HEADER};
 use crate::registry::FieldType;
@@ -421,8 +421,12 @@ const _: () = {
     assert!(offset_of!(FB_ADD_INT, stPrivate) == 64 && offset_of!(FB_ADD_DINT, stPrivate) == 72);
 };
 
-/// States and diag value texts of every arithmetic block (manual §4.16.2 ff.).
-const STATES: &[(u8, &str)] = &[RUN, STOP, ERROR, RESET];
+crate::blocks::block_states!(
+    /// The states of FB ADD, SUB, MUL and DIV, every variant (manual §4.16.2 ff.).
+    ArithState: Run, Stop, Error, Reset
+);
+
+/// Diag value texts of every arithmetic block (manual §4.16.2 ff.).
 const DIAG_VALUES: &[(u16, &str)] = &[
     (0, "The output AnalogOut is correct"),
     (
@@ -439,7 +443,7 @@ const fn info<O: ArithOp, T: Analog>() -> BlockInfo {
     BlockInfo {
         tag: O::TAGS[T::VARIANT],
         name: O::NAMES[T::VARIANT],
-        states: STATES,
+        states: <ArithState as crate::registry::BlockState>::TABLE,
         diag: &[],
         diag_values: DIAG_VALUES,
     }
@@ -447,6 +451,7 @@ const fn info<O: ArithOp, T: Analog>() -> BlockInfo {
 
 crate::impl_member!([O: ArithOp, T: Analog, const P1: usize, const P2: usize] FB_ARITH<O, T, P1, P2> {
     info: info::<O, T>(),
+    state: ArithState,
     private: SL_ARITH_PRIVATE,
     input: [nAnalogIn1, nAnalogIn2],
     param: [wInputActive],
@@ -456,6 +461,7 @@ crate::impl_member!([O: ArithOp, T: Analog, const P1: usize, const P2: usize] FB
 
 crate::impl_member!([T: Analog, const P1: usize, const P2: usize] FB_DIV<T, P1, P2> {
     info: info::<Div, T>(),
+    state: ArithState,
     private: SL_ARITH_PRIVATE,
     input: [nAnalogIn1, nAnalogIn2],
     param: [nRounding, wInputActive],

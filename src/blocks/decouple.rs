@@ -4,7 +4,7 @@
 //! Member of the combinational family (`logic`).
 
 use super::logic::{LogicBlock, LogicIn, LogicParams, SL_LOGIC_PRIVATE};
-use super::{BlockInfo, ERROR, RESET, RUN, STOP};
+use super::BlockInfo;
 use crate::prim::bools;
 use crate::types::*;
 
@@ -76,17 +76,23 @@ pub struct FB_DECOUPLE {
     pub stPrivate: SL_LOGIC_PRIVATE,
 }
 
+crate::blocks::block_states!(
+    /// The states of FB DECOUPLE.
+    DecoupleState: Run, Stop, Error, Reset
+);
+
 /// Type tag, name and diag texts (manual §4.6.2: diag "always 0").
 const INFO: BlockInfo = BlockInfo {
     tag: SL_TYPE_DECOUPLE,
     name: "DECOUPLE",
-    states: &[RUN, STOP, ERROR, RESET],
+    states: <DecoupleState as crate::registry::BlockState>::TABLE,
     diag: &[],
     diag_values: &[],
 };
 
 crate::impl_member!([] FB_DECOUPLE {
     info: INFO,
+    state: DecoupleState,
     private: SL_LOGIC_PRIVATE,
     input: [bDecIn1, bDecIn2, bDecIn3, bDecIn4, bDecIn5, bDecIn6, bDecIn7, bDecIn8],
     param: [wInputActive],

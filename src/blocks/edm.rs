@@ -7,7 +7,7 @@
 //! MONON (15: Mon1 TRUE, switch-on monitoring). Diag bit 0: switch-off timer elapsed,
 //! bit 1: switch-on timer elapsed. Its own state machine (docs/semantics.md E1–E9).
 
-use super::{BlockInfo, ERROR, RESET, STOP};
+use super::BlockInfo;
 use crate::prim::envelope::Block;
 use crate::prim::header::{param_crc, SL_PRIVATE_HEADER};
 use crate::prim::{bools, time};
@@ -88,17 +88,21 @@ pub struct SL_EDM_PRIVATE {
     pub awTime: [u16; 2],
 }
 
+crate::blocks::block_states!(
+    /// The states of FB EDM.
+    EdmState:
+        Stop,
+        Error,
+        Reset,
+        MonOff = SL_STATE_EDM_MONOFF, "MONOFF",
+        MonOn = SL_STATE_EDM_MONON, "MONON"
+);
+
 /// Type tag, name and diag texts (manual §4.9.2).
 const INFO: BlockInfo = BlockInfo {
     tag: SL_TYPE_EDM,
     name: "EDM",
-    states: &[
-        STOP,
-        ERROR,
-        RESET,
-        (SL_STATE_EDM_MONOFF, "MONOFF\0"),
-        (SL_STATE_EDM_MONON, "MONON\0"),
-    ],
+    states: <EdmState as crate::registry::BlockState>::TABLE,
     diag: &[
         (SL_DIAG_EDM_SWITCH_OFF, "Switch-OFF timer elapsed"),
         (SL_DIAG_EDM_SWITCH_ON, "Switch-ON timer elapsed"),
@@ -108,6 +112,7 @@ const INFO: BlockInfo = BlockInfo {
 
 crate::impl_member!([] FB_EDM {
     info: INFO,
+    state: EdmState,
     private: SL_EDM_PRIVATE,
     input: [bMon1, bMon2],
     param: [tSwitchOnTime, tSwitchOffTime, wInputActive, wInputNegated],

@@ -7,7 +7,7 @@
 //! (`guard`).
 
 use super::guard::{GuardBlock, GuardParams, GuardRaw, SL_GUARD_PRIVATE};
-use super::{BlockInfo, DELAYOUT, ERROR, RESET, RUN, SAFE, START, STOP};
+use super::BlockInfo;
 use crate::types::*;
 
 /// Block type tag of FB_ESTOP (`SL_MEMBER.nType`, `sl_diag_text`).
@@ -90,11 +90,16 @@ pub struct FB_ESTOP {
     pub stPrivate: SL_GUARD_PRIVATE,
 }
 
+crate::blocks::block_states!(
+    /// The states of FB ESTOP.
+    EstopState: Run, Stop, Safe, Error, Reset, Start, DelayOut
+);
+
 /// Type tag, name and diag texts (manual §4.4.2).
 const INFO: BlockInfo = BlockInfo {
     tag: SL_TYPE_ESTOP,
     name: "ESTOP",
-    states: &[RUN, STOP, SAFE, ERROR, RESET, START, DELAYOUT],
+    states: <EstopState as crate::registry::BlockState>::TABLE,
     diag: &[
         (SL_DIAG_DISC1, "discrepancy error input group 1"),
         (SL_DIAG_DISC2, "discrepancy error input group 2"),
@@ -124,6 +129,7 @@ const INFO: BlockInfo = BlockInfo {
 
 crate::impl_member!([] FB_ESTOP {
     info: INFO,
+    state: EstopState,
     private: SL_GUARD_PRIVATE,
     input: [bRestart, bEDM1, bEDM2, bEStopIn1, bEStopIn2, bEStopIn3, bEStopIn4, bEStopIn5, bEStopIn6, bEStopIn7, bEStopIn8],
     param: [tDiscTime12, tDiscTime34, tDiscTime56, tDiscTime78, tEDM1ResetTime, tEDM2ResetTime, tEStopDelOutDelay, wInputActive, wInputNegated, dwOptions],

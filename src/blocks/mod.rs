@@ -56,14 +56,58 @@ pub struct BlockInfo {
     pub diag_values: &'static [(u16, &'static str)],
 }
 
-/// State names shared by most blocks (manual status values 1–6, 8).
-pub const RUN: (u8, &str) = (crate::types::SL_STATE_RUN, "RUN\0");
-pub const STOP: (u8, &str) = (crate::types::SL_STATE_STOP, "STOP\0");
-pub const SAFE: (u8, &str) = (crate::types::SL_STATE_SAFE, "SAFE\0");
-pub const ERROR: (u8, &str) = (crate::types::SL_STATE_ERROR, "ERROR\0");
-pub const RESET: (u8, &str) = (crate::types::SL_STATE_RESET, "RESET\0");
-pub const START: (u8, &str) = (crate::types::SL_STATE_START, "START\0");
-pub const DELAYOUT: (u8, &str) = (crate::types::SL_STATE_DELAYOUT, "DELAYOUT\0");
+/// Declares a block's states once: `pub enum $name` whose values are the manual's status
+/// values, and its table (value, NUL-terminated name) that `BlockInfo::states`,
+/// `sl_state_str` and the envelope's state check read. The common states are named by
+/// their variant alone; a block's own state gives its value and name:
+/// `block_states!(TonState: Run, Stop, Safe, Error, Reset, DelayIn = SL_STATE_TON_DELAYIN, "DELAYIN");`
+macro_rules! block_states {
+    (@value Run) => { $crate::types::SL_STATE_RUN };
+    (@value Stop) => { $crate::types::SL_STATE_STOP };
+    (@value Safe) => { $crate::types::SL_STATE_SAFE };
+    (@value Error) => { $crate::types::SL_STATE_ERROR };
+    (@value Reset) => { $crate::types::SL_STATE_RESET };
+    (@value Start) => { $crate::types::SL_STATE_START };
+    (@value DelayOut) => { $crate::types::SL_STATE_DELAYOUT };
+    (@value $v:ident $value:path) => { $value };
+    (@name Run) => { "RUN" };
+    (@name Stop) => { "STOP" };
+    (@name Safe) => { "SAFE" };
+    (@name Error) => { "ERROR" };
+    (@name Reset) => { "RESET" };
+    (@name Start) => { "START" };
+    (@name DelayOut) => { "DELAYOUT" };
+    (@name $v:ident $name:literal) => { $name };
+    ($(#[$meta:meta])* $enum:ident: $($v:ident $(= $value:path, $name:literal)?),+ $(,)?) => {
+        $(#[$meta])*
+        #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+        #[repr(u8)]
+        pub enum $enum {
+            $(
+                #[doc = concat!("The manual's state ", $crate::blocks::block_states!(@name $v $($name)?), ".")]
+                $v = $crate::blocks::block_states!(@value $v $($value)?),
+            )+
+        }
+        impl $crate::registry::BlockState for $enum {
+            const TABLE: &'static [(u8, &'static str)] = &[$((
+                $enum::$v as u8,
+                concat!($crate::blocks::block_states!(@name $v $($name)?), "\0"),
+            )),+];
+            #[inline]
+            fn decode(value: u8) -> Option<Self> {
+                $(if value == $enum::$v as u8 {
+                    return Some($enum::$v);
+                })+
+                None
+            }
+            #[inline]
+            fn value(self) -> u8 {
+                self as u8
+            }
+        }
+    };
+}
+pub(crate) use block_states;
 
 /// The block type with this tag.
 pub fn info(tag: u16) -> Option<&'static BlockInfo> {

@@ -8,7 +8,7 @@
 //! while MonDelOut is still on. The state machine is shared with FB ESTOP (`guard`).
 
 use super::guard::{GuardBlock, GuardParams, GuardRaw, SL_GUARD_PRIVATE};
-use super::{BlockInfo, DELAYOUT, ERROR, RESET, RUN, SAFE, START, STOP};
+use super::BlockInfo;
 use crate::types::*;
 
 /// Block type tag of FB_MON.
@@ -92,21 +92,25 @@ pub struct FB_MON {
 const MON_INPUTS: u8 = 0x0F;
 const SECURE_INPUTS: u8 = 0x30;
 
+crate::blocks::block_states!(
+    /// The states of FB MON.
+    MonState:
+        Run,
+        Stop,
+        Safe,
+        Error,
+        Reset,
+        Start,
+        ErrorDelay = SL_STATE_ERRORDELAY, "ERRORDELAY",
+        DelayOut,
+        FuncTest = SL_STATE_FUNCTEST, "FUNCTEST"
+);
+
 /// Type tag, name and diag texts (manual §4.5.2).
 const INFO: BlockInfo = BlockInfo {
     tag: SL_TYPE_MON,
     name: "MON",
-    states: &[
-        RUN,
-        STOP,
-        SAFE,
-        ERROR,
-        RESET,
-        START,
-        (SL_STATE_ERRORDELAY, "ERRORDELAY\0"),
-        DELAYOUT,
-        (SL_STATE_FUNCTEST, "FUNCTEST\0"),
-    ],
+    states: <MonState as crate::registry::BlockState>::TABLE,
     diag: &[
         (SL_DIAG_DISC1, "discrepancy error input group 1"),
         (SL_DIAG_DISC2, "discrepancy error input group 2"),
@@ -131,6 +135,7 @@ const INFO: BlockInfo = BlockInfo {
 
 crate::impl_member!([] FB_MON {
     info: INFO,
+    state: MonState,
     private: SL_GUARD_PRIVATE,
     input: [bRestart, bEDM1, bEDM2, bMonIn1, bMonIn2, bMonIn3, bMonIn4, bSecure1, bSecure2],
     param: [tDiscTime12, tDiscTime34, tDiscTimeSecure12, tEDM1ResetTime, tEDM2ResetTime, tMonDelOutDelay, wInputActive, wInputNegated, dwOptions],

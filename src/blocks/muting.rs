@@ -11,7 +11,7 @@
 //! mode, OSSD check optional, and MutingIn3/4 left inactive with sequential inputs. The step
 //! table and every reading are in docs/semantics.md, rows M1–M22.
 
-use super::{BlockInfo, DELAYOUT, ERROR, RESET, RUN, SAFE, STOP};
+use super::BlockInfo;
 use crate::prim::bools;
 use crate::prim::edm::Edm;
 use crate::prim::envelope::Block;
@@ -175,27 +175,31 @@ pub struct SL_MUTING_PRIVATE {
     pub atFilterStart: [u32; 4],
 }
 
+crate::blocks::block_states!(
+    /// The states of FB MUTING.
+    MutingState:
+        Run,
+        Stop,
+        Safe,
+        Error,
+        Reset,
+        DelayOut,
+        Muting1 = SL_STATE_MUTING_MUTING1, "MUTING1",
+        Muting2 = SL_STATE_MUTING_MUTING2, "MUTING2",
+        Muting3 = SL_STATE_MUTING_MUTING3, "MUTING3",
+        Muting4 = SL_STATE_MUTING_MUTING4, "MUTING4",
+        Muting5 = SL_STATE_MUTING_MUTING5, "MUTING5",
+        Muting6 = SL_STATE_MUTING_MUTING6, "MUTING6",
+        Muting7 = SL_STATE_MUTING_MUTING7, "MUTING7",
+        Muting8 = SL_STATE_MUTING_MUTING8, "MUTING8",
+        Muting9 = SL_STATE_MUTING_MUTING9, "MUTING9"
+);
+
 /// Type tag, name, states and diag texts (manual §4.8.2, §4.8.4).
 const INFO: BlockInfo = BlockInfo {
     tag: SL_TYPE_MUTING,
     name: "MUTING",
-    states: &[
-        RUN,
-        STOP,
-        SAFE,
-        ERROR,
-        RESET,
-        DELAYOUT,
-        (SL_STATE_MUTING_MUTING1, "MUTING1\0"),
-        (SL_STATE_MUTING_MUTING2, "MUTING2\0"),
-        (SL_STATE_MUTING_MUTING3, "MUTING3\0"),
-        (SL_STATE_MUTING_MUTING4, "MUTING4\0"),
-        (SL_STATE_MUTING_MUTING5, "MUTING5\0"),
-        (SL_STATE_MUTING_MUTING6, "MUTING6\0"),
-        (SL_STATE_MUTING_MUTING7, "MUTING7\0"),
-        (SL_STATE_MUTING_MUTING8, "MUTING8\0"),
-        (SL_STATE_MUTING_MUTING9, "MUTING9\0"),
-    ],
+    states: <MutingState as crate::registry::BlockState>::TABLE,
     diag: &[
         (SL_DIAG_DISC1, "discrepancy error in muting input group 1"),
         (SL_DIAG_DISC2, "discrepancy error in the OSSD input group"),
@@ -222,6 +226,7 @@ const INFO: BlockInfo = BlockInfo {
 
 crate::impl_member!([] FB_MUTING {
     info: INFO,
+    state: MutingState,
     private: SL_MUTING_PRIVATE,
     input: [bMutingEnable, bEDM1, bEDM2, bMutingIn1, bMutingIn2, bOSSDIn1, bOSSDIn2, bMutingIn3, bMutingIn4],
     param: [tDiscTime12, tDiscTimeOSSD, tDiscTime34, tFilterTime, tMaxMutingTime, tMuteDelOutDelay, wInputActive, wInputNegated, dwOptions],

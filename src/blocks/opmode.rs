@@ -9,7 +9,7 @@
 //! selected (the change from one mode to the next); beyond it: ERROR, diag bit 0.
 //! Readings of the manual: docs/semantics.md rows O1–O12.
 
-use super::{BlockInfo, ERROR, RESET, RUN, SAFE, START, STOP};
+use super::BlockInfo;
 use crate::prim::bools::{self, Edge};
 use crate::prim::envelope::Block;
 use crate::prim::header::{param_crc, F_RESTART_PREV, SL_PRIVATE_HEADER};
@@ -115,17 +115,23 @@ pub struct SL_OPMODE_PRIVATE {
     pub aReserved: [u8; 2],
 }
 
+crate::blocks::block_states!(
+    /// The states of FB OPMODE.
+    OpmodeState: Run, Stop, Safe, Error, Reset, Start
+);
+
 /// Type tag, name, states and diag texts (manual §4.3.2).
 const INFO: BlockInfo = BlockInfo {
     tag: SL_TYPE_OPMODE,
     name: "OPMODE",
-    states: &[RUN, STOP, SAFE, ERROR, RESET, START],
+    states: <OpmodeState as crate::registry::BlockState>::TABLE,
     diag: &[(SL_DIAG_OPMODE_DISC, "discrepancy monitoring error")],
     diag_values: &[],
 };
 
 crate::impl_member!([] FB_OPMODE {
     info: INFO,
+    state: OpmodeState,
     private: SL_OPMODE_PRIVATE,
     input: [bRestart, bOpIn1, bOpIn2, bOpIn3, bOpIn4, bOpIn5, bOpIn6, bOpIn7, bOpIn8],
     param: [tDiscTime, wInputActive, dwOptions],

@@ -3,7 +3,7 @@
 //! STOP (2), SAFE (3); diag always 0.
 
 use super::logic::{LogicBlock, LogicIn, LogicParams, SL_LOGIC_PRIVATE};
-use super::{BlockInfo, ERROR, RESET, RUN, SAFE, STOP};
+use super::BlockInfo;
 use crate::prim::bools;
 use crate::types::*;
 
@@ -62,17 +62,23 @@ pub struct FB_OR {
     pub stPrivate: SL_LOGIC_PRIVATE,
 }
 
+crate::blocks::block_states!(
+    /// The states of FB OR.
+    OrState: Run, Stop, Safe, Error, Reset
+);
+
 /// Type tag, name and diag texts (manual §4.2.2).
 const INFO: BlockInfo = BlockInfo {
     tag: SL_TYPE_OR,
     name: "OR",
-    states: &[RUN, STOP, SAFE, ERROR, RESET],
+    states: <OrState as crate::registry::BlockState>::TABLE,
     diag: &[],
     diag_values: &[],
 };
 
 crate::impl_member!([] FB_OR {
     info: INFO,
+    state: OrState,
     private: SL_LOGIC_PRIVATE,
     input: [bOrIn1, bOrIn2, bOrIn3, bOrIn4, bOrIn5, bOrIn6, bOrIn7, bOrIn8],
     param: [wInputActive, wInputNegated],

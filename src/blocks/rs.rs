@@ -5,7 +5,7 @@
 //! The state machine is shared with FB SR (`flipflop`).
 
 use super::flipflop::{SL_FLIPFLOP_PRIVATE, SL_STATE_RS_SET};
-use super::{BlockInfo, ERROR, RESET, SAFE, STOP};
+use super::BlockInfo;
 use crate::types::*;
 
 /// Block type tag of FB_RS.
@@ -53,17 +53,23 @@ pub struct FB_RS {
     pub stPrivate: SL_FLIPFLOP_PRIVATE,
 }
 
+crate::blocks::block_states!(
+    /// The states of FB RS.
+    RsState: Stop, Safe, Error, Reset, Set = SL_STATE_RS_SET, "SET"
+);
+
 /// Type tag, name and diag texts (manual §4.10.2: diag always 0).
 const INFO: BlockInfo = BlockInfo {
     tag: SL_TYPE_RS,
     name: "RS",
-    states: &[STOP, SAFE, ERROR, RESET, (SL_STATE_RS_SET, "SET\0")],
+    states: <RsState as crate::registry::BlockState>::TABLE,
     diag: &[],
     diag_values: &[],
 };
 
 crate::impl_member!([] FB_RS {
     info: INFO,
+    state: RsState,
     private: SL_FLIPFLOP_PRIVATE,
     input: [bReset, bSet],
     param: [wInputActive, wInputNegated],

@@ -5,7 +5,7 @@
 //! The state machine is shared with FB RS (`flipflop`).
 
 use super::flipflop::{SL_FLIPFLOP_PRIVATE, SL_STATE_SR_SET};
-use super::{BlockInfo, ERROR, RESET, SAFE, STOP};
+use super::BlockInfo;
 use crate::types::*;
 
 /// Block type tag of FB_SR.
@@ -53,17 +53,23 @@ pub struct FB_SR {
     pub stPrivate: SL_FLIPFLOP_PRIVATE,
 }
 
+crate::blocks::block_states!(
+    /// The states of FB SR.
+    SrState: Stop, Safe, Error, Reset, Set = SL_STATE_SR_SET, "SET"
+);
+
 /// Type tag, name and diag texts (manual §4.11.2: diag always 0).
 const INFO: BlockInfo = BlockInfo {
     tag: SL_TYPE_SR,
     name: "SR",
-    states: &[STOP, SAFE, ERROR, RESET, (SL_STATE_SR_SET, "SET\0")],
+    states: <SrState as crate::registry::BlockState>::TABLE,
     diag: &[],
     diag_values: &[],
 };
 
 crate::impl_member!([] FB_SR {
     info: INFO,
+    state: SrState,
     private: SL_FLIPFLOP_PRIVATE,
     input: [bReset, bSet],
     param: [wInputActive, wInputNegated],

@@ -7,7 +7,7 @@
 //! The state machine is the shared timer (`timer`, docs/semantics.md T1–T5, T7–T9, T16).
 
 use super::timer::SL_TIMER_PRIVATE;
-use super::{BlockInfo, DELAYOUT, ERROR, RESET, RUN, SAFE, STOP};
+use super::BlockInfo;
 use crate::types::*;
 
 /// Block type tag of FB_TOF.
@@ -62,17 +62,23 @@ pub struct FB_TOF {
     pub stPrivate: SL_TIMER_PRIVATE,
 }
 
+crate::blocks::block_states!(
+    /// The states of FB TOF.
+    TofState: Run, Stop, Safe, Error, Reset, DelayOut
+);
+
 /// Type tag, name, states and diag texts (manual §4.14.2: diag always 0).
 const INFO: BlockInfo = BlockInfo {
     tag: SL_TYPE_TOF,
     name: "TOF",
-    states: &[RUN, STOP, SAFE, ERROR, RESET, DELAYOUT],
+    states: <TofState as crate::registry::BlockState>::TABLE,
     diag: &[],
     diag_values: &[],
 };
 
 crate::impl_member!([] FB_TOF {
     info: INFO,
+    state: TofState,
     private: SL_TIMER_PRIVATE,
     input: [bTofIn1],
     param: [tDelay, nTimeBase, wInputActive, wInputNegated],

@@ -6,7 +6,7 @@
 //! (`timer`, docs/semantics.md T1–T6, T8, T9, T16).
 
 use super::timer::SL_TIMER_PRIVATE;
-use super::{BlockInfo, ERROR, RESET, RUN, SAFE, STOP};
+use super::BlockInfo;
 use crate::types::*;
 
 /// FB_TON state DELAYIN (9): TonIn is TRUE and the delay has not yet expired.
@@ -64,24 +64,23 @@ pub struct FB_TON {
     pub stPrivate: SL_TIMER_PRIVATE,
 }
 
+crate::blocks::block_states!(
+    /// The states of FB TON.
+    TonState: Run, Stop, Safe, Error, Reset, DelayIn = SL_STATE_TON_DELAYIN, "DELAYIN"
+);
+
 /// Type tag, name, states and diag texts (manual §4.12.2: diag always 0).
 const INFO: BlockInfo = BlockInfo {
     tag: SL_TYPE_TON,
     name: "TON",
-    states: &[
-        RUN,
-        STOP,
-        SAFE,
-        ERROR,
-        RESET,
-        (SL_STATE_TON_DELAYIN, "DELAYIN\0"),
-    ],
+    states: <TonState as crate::registry::BlockState>::TABLE,
     diag: &[],
     diag_values: &[],
 };
 
 crate::impl_member!([] FB_TON {
     info: INFO,
+    state: TonState,
     private: SL_TIMER_PRIVATE,
     input: [bTonIn1],
     param: [tDelay, nTimeBase, wInputActive, wInputNegated],

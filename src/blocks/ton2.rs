@@ -11,7 +11,7 @@
 //! docs/semantics.md T10–T17.
 
 use super::timer::{SL_DIAG_TON2_RESTORE, SL_OPT_TON2_REMAINING_TIME, SL_TIMER_PRIVATE};
-use super::{BlockInfo, ERROR, RESET, RUN, SAFE, STOP};
+use super::BlockInfo;
 use crate::prim::envelope::{self, Block, Instance};
 use crate::prim::header::F_CFG_INVALID;
 use crate::types::*;
@@ -78,18 +78,16 @@ pub struct FB_TON2 {
     pub stPrivate: SL_TIMER_PRIVATE,
 }
 
+crate::blocks::block_states!(
+    /// The states of FB TON2.
+    Ton2State: Run, Stop, Safe, Error, Reset, DelayIn = SL_STATE_TON2_DELAYIN, "DELAYIN"
+);
+
 /// Type tag, name, states and diag texts (manual §4.13.2).
 const INFO: BlockInfo = BlockInfo {
     tag: SL_TYPE_TON2,
     name: "TON2",
-    states: &[
-        RUN,
-        STOP,
-        SAFE,
-        ERROR,
-        RESET,
-        (SL_STATE_TON2_DELAYIN, "DELAYIN\0"),
-    ],
+    states: <Ton2State as crate::registry::BlockState>::TABLE,
     diag: &[(
         SL_DIAG_TON2_RESTORE,
         "restored elapsed time refused (greater than the delay time: global shutdown 0x3510)",
@@ -99,6 +97,7 @@ const INFO: BlockInfo = BlockInfo {
 
 crate::impl_member!([] FB_TON2 {
     info: INFO,
+    state: Ton2State,
     private: SL_TIMER_PRIVATE,
     input: [bTonIn1, bEnable],
     param: [tDelay, nTimeBase, wInputActive, wInputNegated, dwOptions],

@@ -9,7 +9,7 @@
 //! `tDiscTimePairs` ≠ 0 the second group must follow the first within that time.
 //! Readings of the manual: docs/semantics.md rows H1–H14.
 
-use super::{BlockInfo, ERROR, RESET, RUN, SAFE, STOP};
+use super::BlockInfo;
 use crate::prim::bools;
 use crate::prim::envelope::Block;
 use crate::prim::header::{param_crc, SL_PRIVATE_HEADER};
@@ -121,20 +121,24 @@ pub struct SL_TWOHAND_PRIVATE {
     pub aReserved: [u8; 4],
 }
 
+crate::blocks::block_states!(
+    /// The states of FB TWOHAND.
+    TwohandState:
+        Run,
+        Stop,
+        Safe,
+        Error,
+        Reset,
+        OneButton = SL_STATE_TWOHAND_1BUTTON, "1BUTTON",
+        TwoButton = SL_STATE_TWOHAND_2BUTTON, "2BUTTON",
+        Release = SL_STATE_TWOHAND_RELEASE, "RELEASE"
+);
+
 /// Type tag, name, states and diag texts (manual §4.7.2).
 const INFO: BlockInfo = BlockInfo {
     tag: SL_TYPE_TWOHAND,
     name: "TWOHAND",
-    states: &[
-        RUN,
-        STOP,
-        SAFE,
-        ERROR,
-        RESET,
-        (SL_STATE_TWOHAND_1BUTTON, "1BUTTON\0"),
-        (SL_STATE_TWOHAND_2BUTTON, "2BUTTON\0"),
-        (SL_STATE_TWOHAND_RELEASE, "RELEASE\0"),
-    ],
+    states: <TwohandState as crate::registry::BlockState>::TABLE,
     diag: &[
         (SL_DIAG_DISC1, "discrepancy error input pair 1"),
         (SL_DIAG_DISC2, "discrepancy error input pair 2"),
@@ -164,6 +168,7 @@ const INFO: BlockInfo = BlockInfo {
 
 crate::impl_member!([] FB_TWOHAND {
     info: INFO,
+    state: TwohandState,
     private: SL_TWOHAND_PRIVATE,
     input: [bTwoHand1, bTwoHand2, bTwoHand3, bTwoHand4],
     param: [tDiscTime12, tDiscTime34, tDiscTimePairs, wInputActive, wInputNegated, dwOptions],

@@ -4,7 +4,7 @@
 //! offers it everywhere). Member of the combinational family (`logic`).
 
 use super::logic::{LogicBlock, LogicIn, LogicParams, SL_LOGIC_PRIVATE};
-use super::{BlockInfo, ERROR, RESET, RUN, STOP};
+use super::BlockInfo;
 use crate::prim::bools;
 use crate::types::*;
 
@@ -90,17 +90,23 @@ pub struct FB_XOR {
     pub stPrivate: SL_LOGIC_PRIVATE,
 }
 
+crate::blocks::block_states!(
+    /// The states of FB XOR.
+    XorState: Run, Stop, Error, Reset
+);
+
 /// Type tag, name and diag texts (manual §4.34.2: no diagnostic information).
 const INFO: BlockInfo = BlockInfo {
     tag: SL_TYPE_XOR,
     name: "XOR",
-    states: &[RUN, STOP, ERROR, RESET],
+    states: <XorState as crate::registry::BlockState>::TABLE,
     diag: &[],
     diag_values: &[],
 };
 
 crate::impl_member!([] FB_XOR {
     info: INFO,
+    state: XorState,
     private: SL_LOGIC_PRIVATE,
     input: [bXor1In1, bXor2In1, bXor1In2, bXor2In2, bXor1In3, bXor2In3, bXor1In4, bXor2In4, bXor1In5, bXor2In5, bXor1In6, bXor2In6, bXor1In7, bXor2In7, bXor1In8, bXor2In8],
     param: [wInputActive],
