@@ -378,6 +378,25 @@ fn main() {
         "DIV_UDINT", FB_DIV_UDINT, SL_TYPE_DIV_UDINT, sl_div_udint_cycle, 4_000_000_000, 7;
     }
 
+    // LIMIT, one row per width: AnalogIn inside parameter limits (RUN), and INT with the
+    // minimum from its input.
+    macro_rules! limit_row {
+        ($($name:literal, $ty:ty, $tag:expr, $cycle:ident, $active:expr, $v:expr;)*) => {$(
+            let mut fb = <$ty>::default();
+            fb.wInputActive = $active;
+            (fb.nMinimumValue, fb.nMaximumValue) = (0, 1_000);
+            (fb.nAnalogIn, fb.nMinValue, fb.bRun) = ($v, 10, 1);
+            fb.init();
+            let private = size_of_val(&fb.stPrivate);
+            rows.push(measure(($name, $tag, logic), batches, fb, private, $cycle, |f| f.nState));
+        )*};
+    }
+    use safelogic::blocks::limit::*;
+    limit_row! {
+        "LIMIT_INT", FB_LIMIT_INT, SL_TYPE_LIMIT_INT, sl_limit_int_cycle, 0x300, 500;
+        "LIMIT_UDINT", FB_LIMIT_UDINT, SL_TYPE_LIMIT_UDINT, sl_limit_udint_cycle, 0x100, 500;
+    }
+
     let cpu = std::fs::read_to_string("/proc/cpuinfo")
         .ok()
         .and_then(|s| {

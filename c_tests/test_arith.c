@@ -1,8 +1,11 @@
 /*
- * FB_ADD/SUB/MUL/DIV in their integer variants through the C ABI (manual §4.16-§4.19,
- * ABI-2 §11.2, §12; docs/semantics.md A1-A6, RG2): results, range errors with diag value,
- * Text ID and parameters, DIV rounding and division by 0, acknowledgement, and an analog
- * chain ADD -> MUL -> DIV linked in a group beside a Boolean link.
+ * The blocks with analog signals through the C ABI. FB_ADD/SUB/MUL/DIV in their integer
+ * variants (manual §4.16-§4.19, ABI-2 §11.2, §12; docs/semantics.md A1-A6, RG2): results,
+ * range errors with diag value, Text ID and parameters, DIV rounding and division by 0,
+ * acknowledgement, and an analog chain ADD -> MUL -> DIV linked in a group beside a Boolean
+ * link. FB_LIMIT (manual §4.21, ABI-2 §11.4; semantics L1-L4): RUN / SAFE with BelowMin and
+ * AboveMax, MinValue > MaxValue (ERROR 0x4090 from inputs, SL_E_CONFIG from parameters),
+ * and an analog value gating a Boolean AND in a group.
  */
 #include "harness.h"
 
@@ -150,8 +153,109 @@ static void arith_chain_in_a_group(void)
     h_end();
 }
 
+static void limit_int_window_and_error(void)
+{
+    FB_LIMIT_INT l;
+    FB_LIMIT_UDINT u;
+    memset(&l, 0, sizeof l);
+    memset(&u, 0, sizeof u);
+    h_begin("LIMIT_INT: RUN/SAFE, MinValue > MaxValue -> ERROR 0x4090 (L1-L3)");
+    l.wInputActive = SL_LIMIT_ACTIVE_ANALOGIN | SL_LIMIT_ACTIVE_MINVALUE;
+    l.nMaximumValue = 100; /* parameter */
+    CHECK_INT(sl_limit_int_init(&l), SL_OK);
+    l.bRun = 1;
+    l.nMinValue = -20; /* input */
+    l.nAnalogIn = 100;
+    CHECK_INT(sl_limit_int_cycle(&l, 0), SL_OK);
+    CHECK_INT(l.nState, SL_STATE_RUN);
+    CHECK_INT(l.bInLimit, 1);
+    l.nAnalogIn = -21;
+    CHECK_INT(sl_limit_int_cycle(&l, 1), SL_OK);
+    CHECK_INT(l.nState, SL_STATE_SAFE);
+    CHECK_INT(l.bInLimit + 2 * l.bBelowMin + 4 * l.bAboveMax, 2);
+    l.nMinValue = 101;
+    CHECK_INT(sl_limit_int_cycle(&l, 2), SL_OK);
+    CHECK_INT(l.nState, SL_STATE_ERROR);
+    CHECK_INT(l.bError, 1);
+    CHECK_INT(l.nDiag, SL_DIAG_LIMIT_MIN_ABOVE_MAX);
+    CHECK_INT(l.nDiagTextId, SL_TEXT_LIMIT_MIN_ABOVE_MAX);
+    CHECK_INT(l.dwDiagPar2, 101);
+    CHECK_INT(l.dwDiagPar3, 100);
+    l.bErrAck = 1;
+    sl_limit_int_cycle(&l, 3);
+    CHECK_INT(l.nState, SL_STATE_ERROR); /* the limits still cross */
+    l.bErrAck = 0;
+    l.nMinValue = -1;
+    sl_limit_int_cycle(&l, 4);
+    l.bErrAck = 1;
+    sl_limit_int_cycle(&l, 5);
+    CHECK_INT(l.nState, SL_STATE_RESET);
+    CHECK_INT(l.nDiagTextId, 0);
+    l.bErrAck = 0;
+    l.nAnalogIn = -1;
+    sl_limit_int_cycle(&l, 6);
+    CHECK_INT(l.nState, SL_STATE_RUN);
+    CHECK_DIAG_TEXT(SL_TYPE_LIMIT_INT, 1, "MinValue is greater than MaxValue");
+    /* both limits from the parameters, crossed: a configuration error */
+    u.wInputActive = SL_LIMIT_ACTIVE_ANALOGIN;
+    u.nMinimumValue = 4000000000u;
+    u.nMaximumValue = 3999999999u;
+    CHECK_INT(sl_limit_udint_init(&u), SL_E_CONFIG);
+    u.bRun = 1;
+    CHECK_INT(sl_limit_udint_cycle(&u, 0), SL_E_CONFIG);
+    CHECK_INT(u.nState, SL_STATE_STOP);
+    CHECK_INT(u.bInLimit, 0);
+    h_end();
+}
+
+static void limit_gates_an_and_in_a_group(void)
+{
+    SL_GROUP g;
+    SL_MEMBER members[3];
+    SL_LINK links[2];
+    FB_ADD_DINT add;
+    FB_LIMIT_DINT lim;
+    FB_AND and_;
+    memset(&g, 0, sizeof g);
+    memset(&add, 0, sizeof add);
+    memset(&lim, 0, sizeof lim);
+    memset(&and_, 0, sizeof and_);
+    h_begin("group: ADD_DINT -> LIMIT_DINT (analog link), InLimit -> AND (Boolean link)");
+    add.wInputActive = 0x0300;
+    lim.wInputActive = SL_LIMIT_ACTIVE_ANALOGIN;
+    lim.nMinimumValue = 0;
+    lim.nMaximumValue = 1000;
+    and_.wInputActive = 0x3;
+    CHECK_INT(sl_group_init(&g, members, 3, links, 2), SL_OK);
+    CHECK_INT(sl_group_add_member(&g, members, SL_TYPE_ADD_DINT, &add, NULL), SL_OK);
+    CHECK_INT(sl_group_add_member(&g, members, SL_TYPE_LIMIT_DINT, &lim, NULL), SL_OK);
+    CHECK_INT(sl_group_add_member(&g, members, SL_TYPE_AND, &and_, NULL), SL_OK);
+    CHECK_INT(sl_group_add_link(&g, members, links, 0, offsetof(FB_ADD_DINT, nAnalogOut), 1,
+                                offsetof(FB_LIMIT_DINT, nAnalogIn)), SL_OK);
+    CHECK_INT(links[0].nKind, SL_LINK_ANALOG32);
+    CHECK_INT(sl_group_add_link(&g, members, links, 1, offsetof(FB_LIMIT_DINT, bInLimit), 2,
+                                offsetof(FB_AND, bAndIn1)), SL_OK);
+    CHECK_INT(links[1].nKind, SL_LINK_BOOL);
+    add.nAnalogIn1 = 600;
+    add.nAnalogIn2 = 400;
+    and_.bAndIn2 = 1;
+    g.bRun = 1;
+    CHECK_INT(sl_group_cycle(&g, members, links, 0), SL_OK);
+    CHECK_INT(lim.nAnalogIn, 1000);
+    CHECK_INT(lim.bInLimit, 1);
+    CHECK_INT(and_.bAndOut, 1);
+    add.nAnalogIn2 = 401; /* 1001: above the maximum, in the same cycle */
+    CHECK_INT(sl_group_cycle(&g, members, links, 10), SL_OK);
+    CHECK_INT(lim.bAboveMax, 1);
+    CHECK_INT(and_.bAndOut, 0);
+    CHECK_INT(g.nState, SL_STATE_RUN);
+    h_end();
+}
+
 void run_arith_scenarios(void)
 {
+    limit_int_window_and_error();
+    limit_gates_an_and_in_a_group();
     arith_add_int_overflow_and_ack();
     arith_sub_uint_underflow();
     arith_div_rounding();

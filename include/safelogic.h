@@ -192,6 +192,51 @@
 #define SL_STATE_RS_SET 9
 
 /*
+ Type tag of FB_LIMIT_INT (ABI-2 §10.6: sequential from 16 in the order of §10.3).
+ */
+#define SL_TYPE_LIMIT_INT 36
+
+/*
+ FB_LIMIT_UINT.
+ */
+#define SL_TYPE_LIMIT_UINT 37
+
+/*
+ FB_LIMIT_DINT.
+ */
+#define SL_TYPE_LIMIT_DINT 38
+
+/*
+ FB_LIMIT_UDINT.
+ */
+#define SL_TYPE_LIMIT_UDINT 39
+
+/*
+ Diag value 1: MinValue is greater than MaxValue.
+ */
+#define SL_DIAG_LIMIT_MIN_ABOVE_MAX 1
+
+/*
+ Diag message "MinValue is greater than MaxValue" (parameters: MinValue, MaxValue).
+ */
+#define SL_TEXT_LIMIT_MIN_ABOVE_MAX 16528
+
+/*
+ `wInputActive` bit of AnalogIn (required).
+ */
+#define SL_LIMIT_ACTIVE_ANALOGIN (1 << 8)
+
+/*
+ `wInputActive` bit of MinValue: set = the input is the minimum, clear = `nMinimumValue`.
+ */
+#define SL_LIMIT_ACTIVE_MINVALUE (1 << 9)
+
+/*
+ `wInputActive` bit of MaxValue: set = the input is the maximum, clear = `nMaximumValue`.
+ */
+#define SL_LIMIT_ACTIVE_MAXVALUE (1 << 10)
+
+/*
  Block type tag of FB_MON.
  */
 #define SL_TYPE_MON 2
@@ -4151,6 +4196,448 @@ typedef struct FB_DIV_UDINT {
 } FB_DIV_UDINT;
 
 
+/*
+ Private state of FB LIMIT (48 bytes). Never written by the user.
+ */
+typedef struct SL_LIMIT_PRIVATE {
+  /*
+   Common head (`wAux` bit 0: below, bit 1: above the limits in SAFE).
+   */
+  struct SL_PRIVATE_HEADER stHeader;
+  /*
+   Latched `wInputActive`.
+   */
+  uint16_t wActive;
+  /*
+   Reserved.
+   */
+  uint8_t aReserved[2];
+  /*
+   Latched `nMinimumValue`, `nMaximumValue` as 32-bit patterns.
+   */
+  uint32_t adwLimit[2];
+  /*
+   Diag message parameters 2 and 3 (Min, Max) latched at the ERROR entry.
+   */
+  uint32_t adwPar[2];
+} SL_LIMIT_PRIVATE;
+
+/*
+ FB LIMIT instance (ABI-2 §11.4), generic over the signal type `T`; `P1` is the reserved
+ gap after `wInputActive` that makes the 16- and 32-bit layouts differ.
+ */
+typedef struct FB_LIMIT_INT {
+  /*
+   Offset 0. Reserved, keep 0 (no BOOL inputs).
+   */
+  uint8_t aReserved0[16];
+  /*
+   Offset 16. FbRun of the owning group: TRUE = the block executes.
+   */
+  SL_BOOL bRun;
+  /*
+   Offset 17. ErrAck of the owning group.
+   */
+  SL_BOOL bErrAck;
+  /*
+   Offset 18. Reserved, keep 0.
+   */
+  uint8_t aReserved1[6];
+  /*
+   At the analog input base 24: AnalogIn, the value checked (active bit 8, required).
+   */
+  int16_t nAnalogIn;
+  /*
+   At 24 + W: MinValue, the minimum when active bit 9 is set.
+   */
+  int16_t nMinValue;
+  /*
+   At 24 + 2W: MaxValue, the maximum when active bit 10 is set.
+   */
+  int16_t nMaxValue;
+  /*
+   At 24 + 3W: "Minimum Value", the minimum when active bit 9 is clear.
+   */
+  int16_t nMinimumValue;
+  /*
+   At 24 + 4W: "Maximum Value", the maximum when active bit 10 is clear.
+   */
+  int16_t nMaximumValue;
+  /*
+   At 24 + 5W: bit 8 (AnalogIn) must be set; bits 9, 10 choose input or parameter.
+   */
+  uint16_t wInputActive;
+  /*
+   Reserved up to the output base (16-bit: 4 bytes, 32-bit: 2).
+   */
+  uint8_t aReserved2[4];
+  /*
+   At the output base (16-bit 40, 32-bit 48): Error, TRUE in ERROR only.
+   */
+  SL_BOOL bError;
+  /*
+   Output base + 1: InLimit, TRUE in RUN (Min ≤ AnalogIn ≤ Max).
+   */
+  SL_BOOL bInLimit;
+  /*
+   Output base + 2: BelowMin, in SAFE: AnalogIn < Min.
+   */
+  SL_BOOL bBelowMin;
+  /*
+   Output base + 3: AboveMax, in SAFE: AnalogIn > Max.
+   */
+  SL_BOOL bAboveMax;
+  /*
+   Reserved up to the info data.
+   */
+  uint8_t aReserved3[4];
+  /*
+   Info + 0: the manual's status value (RUN, STOP, SAFE, ERROR, RESET).
+   */
+  uint8_t nState;
+  /*
+   Info + 1. Reserved.
+   */
+  uint8_t aReserved4[1];
+  /*
+   Info + 2: diag value (1: MinValue is greater than MaxValue) + library bits 13-15.
+   */
+  uint16_t nDiag;
+  /*
+   Info + 4: Text ID of the latched diag message (0x4090), 0 = none.
+   */
+  uint16_t nDiagTextId;
+  /*
+   Info + 6. Reserved.
+   */
+  uint8_t aReserved5[2];
+  /*
+   Info + 8: message parameter 2 (Min as a 32-bit pattern).
+   */
+  uint32_t dwDiagPar2;
+  /*
+   Info + 12: message parameter 3 (Max).
+   */
+  uint32_t dwDiagPar3;
+  /*
+   Info + 16: private state, 48 bytes: never write it.
+   */
+  struct SL_LIMIT_PRIVATE stPrivate;
+} FB_LIMIT_INT;
+
+
+/*
+ FB LIMIT instance (ABI-2 §11.4), generic over the signal type `T`; `P1` is the reserved
+ gap after `wInputActive` that makes the 16- and 32-bit layouts differ.
+ */
+typedef struct FB_LIMIT_UINT {
+  /*
+   Offset 0. Reserved, keep 0 (no BOOL inputs).
+   */
+  uint8_t aReserved0[16];
+  /*
+   Offset 16. FbRun of the owning group: TRUE = the block executes.
+   */
+  SL_BOOL bRun;
+  /*
+   Offset 17. ErrAck of the owning group.
+   */
+  SL_BOOL bErrAck;
+  /*
+   Offset 18. Reserved, keep 0.
+   */
+  uint8_t aReserved1[6];
+  /*
+   At the analog input base 24: AnalogIn, the value checked (active bit 8, required).
+   */
+  uint16_t nAnalogIn;
+  /*
+   At 24 + W: MinValue, the minimum when active bit 9 is set.
+   */
+  uint16_t nMinValue;
+  /*
+   At 24 + 2W: MaxValue, the maximum when active bit 10 is set.
+   */
+  uint16_t nMaxValue;
+  /*
+   At 24 + 3W: "Minimum Value", the minimum when active bit 9 is clear.
+   */
+  uint16_t nMinimumValue;
+  /*
+   At 24 + 4W: "Maximum Value", the maximum when active bit 10 is clear.
+   */
+  uint16_t nMaximumValue;
+  /*
+   At 24 + 5W: bit 8 (AnalogIn) must be set; bits 9, 10 choose input or parameter.
+   */
+  uint16_t wInputActive;
+  /*
+   Reserved up to the output base (16-bit: 4 bytes, 32-bit: 2).
+   */
+  uint8_t aReserved2[4];
+  /*
+   At the output base (16-bit 40, 32-bit 48): Error, TRUE in ERROR only.
+   */
+  SL_BOOL bError;
+  /*
+   Output base + 1: InLimit, TRUE in RUN (Min ≤ AnalogIn ≤ Max).
+   */
+  SL_BOOL bInLimit;
+  /*
+   Output base + 2: BelowMin, in SAFE: AnalogIn < Min.
+   */
+  SL_BOOL bBelowMin;
+  /*
+   Output base + 3: AboveMax, in SAFE: AnalogIn > Max.
+   */
+  SL_BOOL bAboveMax;
+  /*
+   Reserved up to the info data.
+   */
+  uint8_t aReserved3[4];
+  /*
+   Info + 0: the manual's status value (RUN, STOP, SAFE, ERROR, RESET).
+   */
+  uint8_t nState;
+  /*
+   Info + 1. Reserved.
+   */
+  uint8_t aReserved4[1];
+  /*
+   Info + 2: diag value (1: MinValue is greater than MaxValue) + library bits 13-15.
+   */
+  uint16_t nDiag;
+  /*
+   Info + 4: Text ID of the latched diag message (0x4090), 0 = none.
+   */
+  uint16_t nDiagTextId;
+  /*
+   Info + 6. Reserved.
+   */
+  uint8_t aReserved5[2];
+  /*
+   Info + 8: message parameter 2 (Min as a 32-bit pattern).
+   */
+  uint32_t dwDiagPar2;
+  /*
+   Info + 12: message parameter 3 (Max).
+   */
+  uint32_t dwDiagPar3;
+  /*
+   Info + 16: private state, 48 bytes: never write it.
+   */
+  struct SL_LIMIT_PRIVATE stPrivate;
+} FB_LIMIT_UINT;
+
+
+/*
+ FB LIMIT instance (ABI-2 §11.4), generic over the signal type `T`; `P1` is the reserved
+ gap after `wInputActive` that makes the 16- and 32-bit layouts differ.
+ */
+typedef struct FB_LIMIT_DINT {
+  /*
+   Offset 0. Reserved, keep 0 (no BOOL inputs).
+   */
+  uint8_t aReserved0[16];
+  /*
+   Offset 16. FbRun of the owning group: TRUE = the block executes.
+   */
+  SL_BOOL bRun;
+  /*
+   Offset 17. ErrAck of the owning group.
+   */
+  SL_BOOL bErrAck;
+  /*
+   Offset 18. Reserved, keep 0.
+   */
+  uint8_t aReserved1[6];
+  /*
+   At the analog input base 24: AnalogIn, the value checked (active bit 8, required).
+   */
+  int32_t nAnalogIn;
+  /*
+   At 24 + W: MinValue, the minimum when active bit 9 is set.
+   */
+  int32_t nMinValue;
+  /*
+   At 24 + 2W: MaxValue, the maximum when active bit 10 is set.
+   */
+  int32_t nMaxValue;
+  /*
+   At 24 + 3W: "Minimum Value", the minimum when active bit 9 is clear.
+   */
+  int32_t nMinimumValue;
+  /*
+   At 24 + 4W: "Maximum Value", the maximum when active bit 10 is clear.
+   */
+  int32_t nMaximumValue;
+  /*
+   At 24 + 5W: bit 8 (AnalogIn) must be set; bits 9, 10 choose input or parameter.
+   */
+  uint16_t wInputActive;
+  /*
+   Reserved up to the output base (16-bit: 4 bytes, 32-bit: 2).
+   */
+  uint8_t aReserved2[2];
+  /*
+   At the output base (16-bit 40, 32-bit 48): Error, TRUE in ERROR only.
+   */
+  SL_BOOL bError;
+  /*
+   Output base + 1: InLimit, TRUE in RUN (Min ≤ AnalogIn ≤ Max).
+   */
+  SL_BOOL bInLimit;
+  /*
+   Output base + 2: BelowMin, in SAFE: AnalogIn < Min.
+   */
+  SL_BOOL bBelowMin;
+  /*
+   Output base + 3: AboveMax, in SAFE: AnalogIn > Max.
+   */
+  SL_BOOL bAboveMax;
+  /*
+   Reserved up to the info data.
+   */
+  uint8_t aReserved3[4];
+  /*
+   Info + 0: the manual's status value (RUN, STOP, SAFE, ERROR, RESET).
+   */
+  uint8_t nState;
+  /*
+   Info + 1. Reserved.
+   */
+  uint8_t aReserved4[1];
+  /*
+   Info + 2: diag value (1: MinValue is greater than MaxValue) + library bits 13-15.
+   */
+  uint16_t nDiag;
+  /*
+   Info + 4: Text ID of the latched diag message (0x4090), 0 = none.
+   */
+  uint16_t nDiagTextId;
+  /*
+   Info + 6. Reserved.
+   */
+  uint8_t aReserved5[2];
+  /*
+   Info + 8: message parameter 2 (Min as a 32-bit pattern).
+   */
+  uint32_t dwDiagPar2;
+  /*
+   Info + 12: message parameter 3 (Max).
+   */
+  uint32_t dwDiagPar3;
+  /*
+   Info + 16: private state, 48 bytes: never write it.
+   */
+  struct SL_LIMIT_PRIVATE stPrivate;
+} FB_LIMIT_DINT;
+
+
+/*
+ FB LIMIT instance (ABI-2 §11.4), generic over the signal type `T`; `P1` is the reserved
+ gap after `wInputActive` that makes the 16- and 32-bit layouts differ.
+ */
+typedef struct FB_LIMIT_UDINT {
+  /*
+   Offset 0. Reserved, keep 0 (no BOOL inputs).
+   */
+  uint8_t aReserved0[16];
+  /*
+   Offset 16. FbRun of the owning group: TRUE = the block executes.
+   */
+  SL_BOOL bRun;
+  /*
+   Offset 17. ErrAck of the owning group.
+   */
+  SL_BOOL bErrAck;
+  /*
+   Offset 18. Reserved, keep 0.
+   */
+  uint8_t aReserved1[6];
+  /*
+   At the analog input base 24: AnalogIn, the value checked (active bit 8, required).
+   */
+  uint32_t nAnalogIn;
+  /*
+   At 24 + W: MinValue, the minimum when active bit 9 is set.
+   */
+  uint32_t nMinValue;
+  /*
+   At 24 + 2W: MaxValue, the maximum when active bit 10 is set.
+   */
+  uint32_t nMaxValue;
+  /*
+   At 24 + 3W: "Minimum Value", the minimum when active bit 9 is clear.
+   */
+  uint32_t nMinimumValue;
+  /*
+   At 24 + 4W: "Maximum Value", the maximum when active bit 10 is clear.
+   */
+  uint32_t nMaximumValue;
+  /*
+   At 24 + 5W: bit 8 (AnalogIn) must be set; bits 9, 10 choose input or parameter.
+   */
+  uint16_t wInputActive;
+  /*
+   Reserved up to the output base (16-bit: 4 bytes, 32-bit: 2).
+   */
+  uint8_t aReserved2[2];
+  /*
+   At the output base (16-bit 40, 32-bit 48): Error, TRUE in ERROR only.
+   */
+  SL_BOOL bError;
+  /*
+   Output base + 1: InLimit, TRUE in RUN (Min ≤ AnalogIn ≤ Max).
+   */
+  SL_BOOL bInLimit;
+  /*
+   Output base + 2: BelowMin, in SAFE: AnalogIn < Min.
+   */
+  SL_BOOL bBelowMin;
+  /*
+   Output base + 3: AboveMax, in SAFE: AnalogIn > Max.
+   */
+  SL_BOOL bAboveMax;
+  /*
+   Reserved up to the info data.
+   */
+  uint8_t aReserved3[4];
+  /*
+   Info + 0: the manual's status value (RUN, STOP, SAFE, ERROR, RESET).
+   */
+  uint8_t nState;
+  /*
+   Info + 1. Reserved.
+   */
+  uint8_t aReserved4[1];
+  /*
+   Info + 2: diag value (1: MinValue is greater than MaxValue) + library bits 13-15.
+   */
+  uint16_t nDiag;
+  /*
+   Info + 4: Text ID of the latched diag message (0x4090), 0 = none.
+   */
+  uint16_t nDiagTextId;
+  /*
+   Info + 6. Reserved.
+   */
+  uint8_t aReserved5[2];
+  /*
+   Info + 8: message parameter 2 (Min as a 32-bit pattern).
+   */
+  uint32_t dwDiagPar2;
+  /*
+   Info + 12: message parameter 3 (Max).
+   */
+  uint32_t dwDiagPar3;
+  /*
+   Info + 16: private state, 48 bytes: never write it.
+   */
+  struct SL_LIMIT_PRIVATE stPrivate;
+} FB_LIMIT_UDINT;
+
+
 #ifdef __cplusplus
 extern "C" {
 #endif // __cplusplus
@@ -4349,6 +4836,14 @@ int32_t sl_div_dint_init(struct FB_DIV_DINT *fb);
 int32_t sl_div_dint_cycle(struct FB_DIV_DINT *fb, uint32_t tNow);
 int32_t sl_div_udint_init(struct FB_DIV_UDINT *fb);
 int32_t sl_div_udint_cycle(struct FB_DIV_UDINT *fb, uint32_t tNow);
+int32_t sl_limit_int_init(struct FB_LIMIT_INT *fb);
+int32_t sl_limit_int_cycle(struct FB_LIMIT_INT *fb, uint32_t tNow);
+int32_t sl_limit_uint_init(struct FB_LIMIT_UINT *fb);
+int32_t sl_limit_uint_cycle(struct FB_LIMIT_UINT *fb, uint32_t tNow);
+int32_t sl_limit_dint_init(struct FB_LIMIT_DINT *fb);
+int32_t sl_limit_dint_cycle(struct FB_LIMIT_DINT *fb, uint32_t tNow);
+int32_t sl_limit_udint_init(struct FB_LIMIT_UDINT *fb);
+int32_t sl_limit_udint_cycle(struct FB_LIMIT_UDINT *fb, uint32_t tNow);
 
 #ifdef __cplusplus
 }  // extern "C"
@@ -5184,5 +5679,111 @@ SL_STATIC_ASSERT(offsetof(FB_DIV_UDINT, dwDiagPar2) == 64, "offset of FB_DIV_UDI
 SL_STATIC_ASSERT(offsetof(FB_DIV_UDINT, dwDiagPar3) == 68, "offset of FB_DIV_UDINT.dwDiagPar3");
 SL_STATIC_ASSERT(offsetof(FB_DIV_UDINT, stPrivate) == 72, "offset of FB_DIV_UDINT.stPrivate");
 SL_STATIC_ASSERT(sizeof(FB_DIV_UDINT) == 120, "size of FB_DIV_UDINT");
+SL_STATIC_ASSERT(offsetof(SL_LIMIT_PRIVATE, stHeader) == 0, "offset of SL_LIMIT_PRIVATE.stHeader");
+SL_STATIC_ASSERT(offsetof(SL_LIMIT_PRIVATE, wActive) == 28, "offset of SL_LIMIT_PRIVATE.wActive");
+SL_STATIC_ASSERT(offsetof(SL_LIMIT_PRIVATE, aReserved) == 30, "offset of SL_LIMIT_PRIVATE.aReserved");
+SL_STATIC_ASSERT(offsetof(SL_LIMIT_PRIVATE, adwLimit) == 32, "offset of SL_LIMIT_PRIVATE.adwLimit");
+SL_STATIC_ASSERT(offsetof(SL_LIMIT_PRIVATE, adwPar) == 40, "offset of SL_LIMIT_PRIVATE.adwPar");
+SL_STATIC_ASSERT(sizeof(SL_LIMIT_PRIVATE) == 48, "size of SL_LIMIT_PRIVATE");
+SL_STATIC_ASSERT(offsetof(FB_LIMIT_INT, aReserved0) == 0, "offset of FB_LIMIT_INT.aReserved0");
+SL_STATIC_ASSERT(offsetof(FB_LIMIT_INT, bRun) == 16, "offset of FB_LIMIT_INT.bRun");
+SL_STATIC_ASSERT(offsetof(FB_LIMIT_INT, bErrAck) == 17, "offset of FB_LIMIT_INT.bErrAck");
+SL_STATIC_ASSERT(offsetof(FB_LIMIT_INT, aReserved1) == 18, "offset of FB_LIMIT_INT.aReserved1");
+SL_STATIC_ASSERT(offsetof(FB_LIMIT_INT, nAnalogIn) == 24, "offset of FB_LIMIT_INT.nAnalogIn");
+SL_STATIC_ASSERT(offsetof(FB_LIMIT_INT, nMinValue) == 26, "offset of FB_LIMIT_INT.nMinValue");
+SL_STATIC_ASSERT(offsetof(FB_LIMIT_INT, nMaxValue) == 28, "offset of FB_LIMIT_INT.nMaxValue");
+SL_STATIC_ASSERT(offsetof(FB_LIMIT_INT, nMinimumValue) == 30, "offset of FB_LIMIT_INT.nMinimumValue");
+SL_STATIC_ASSERT(offsetof(FB_LIMIT_INT, nMaximumValue) == 32, "offset of FB_LIMIT_INT.nMaximumValue");
+SL_STATIC_ASSERT(offsetof(FB_LIMIT_INT, wInputActive) == 34, "offset of FB_LIMIT_INT.wInputActive");
+SL_STATIC_ASSERT(offsetof(FB_LIMIT_INT, aReserved2) == 36, "offset of FB_LIMIT_INT.aReserved2");
+SL_STATIC_ASSERT(offsetof(FB_LIMIT_INT, bError) == 40, "offset of FB_LIMIT_INT.bError");
+SL_STATIC_ASSERT(offsetof(FB_LIMIT_INT, bInLimit) == 41, "offset of FB_LIMIT_INT.bInLimit");
+SL_STATIC_ASSERT(offsetof(FB_LIMIT_INT, bBelowMin) == 42, "offset of FB_LIMIT_INT.bBelowMin");
+SL_STATIC_ASSERT(offsetof(FB_LIMIT_INT, bAboveMax) == 43, "offset of FB_LIMIT_INT.bAboveMax");
+SL_STATIC_ASSERT(offsetof(FB_LIMIT_INT, aReserved3) == 44, "offset of FB_LIMIT_INT.aReserved3");
+SL_STATIC_ASSERT(offsetof(FB_LIMIT_INT, nState) == 48, "offset of FB_LIMIT_INT.nState");
+SL_STATIC_ASSERT(offsetof(FB_LIMIT_INT, aReserved4) == 49, "offset of FB_LIMIT_INT.aReserved4");
+SL_STATIC_ASSERT(offsetof(FB_LIMIT_INT, nDiag) == 50, "offset of FB_LIMIT_INT.nDiag");
+SL_STATIC_ASSERT(offsetof(FB_LIMIT_INT, nDiagTextId) == 52, "offset of FB_LIMIT_INT.nDiagTextId");
+SL_STATIC_ASSERT(offsetof(FB_LIMIT_INT, aReserved5) == 54, "offset of FB_LIMIT_INT.aReserved5");
+SL_STATIC_ASSERT(offsetof(FB_LIMIT_INT, dwDiagPar2) == 56, "offset of FB_LIMIT_INT.dwDiagPar2");
+SL_STATIC_ASSERT(offsetof(FB_LIMIT_INT, dwDiagPar3) == 60, "offset of FB_LIMIT_INT.dwDiagPar3");
+SL_STATIC_ASSERT(offsetof(FB_LIMIT_INT, stPrivate) == 64, "offset of FB_LIMIT_INT.stPrivate");
+SL_STATIC_ASSERT(sizeof(FB_LIMIT_INT) == 112, "size of FB_LIMIT_INT");
+SL_STATIC_ASSERT(offsetof(FB_LIMIT_UINT, aReserved0) == 0, "offset of FB_LIMIT_UINT.aReserved0");
+SL_STATIC_ASSERT(offsetof(FB_LIMIT_UINT, bRun) == 16, "offset of FB_LIMIT_UINT.bRun");
+SL_STATIC_ASSERT(offsetof(FB_LIMIT_UINT, bErrAck) == 17, "offset of FB_LIMIT_UINT.bErrAck");
+SL_STATIC_ASSERT(offsetof(FB_LIMIT_UINT, aReserved1) == 18, "offset of FB_LIMIT_UINT.aReserved1");
+SL_STATIC_ASSERT(offsetof(FB_LIMIT_UINT, nAnalogIn) == 24, "offset of FB_LIMIT_UINT.nAnalogIn");
+SL_STATIC_ASSERT(offsetof(FB_LIMIT_UINT, nMinValue) == 26, "offset of FB_LIMIT_UINT.nMinValue");
+SL_STATIC_ASSERT(offsetof(FB_LIMIT_UINT, nMaxValue) == 28, "offset of FB_LIMIT_UINT.nMaxValue");
+SL_STATIC_ASSERT(offsetof(FB_LIMIT_UINT, nMinimumValue) == 30, "offset of FB_LIMIT_UINT.nMinimumValue");
+SL_STATIC_ASSERT(offsetof(FB_LIMIT_UINT, nMaximumValue) == 32, "offset of FB_LIMIT_UINT.nMaximumValue");
+SL_STATIC_ASSERT(offsetof(FB_LIMIT_UINT, wInputActive) == 34, "offset of FB_LIMIT_UINT.wInputActive");
+SL_STATIC_ASSERT(offsetof(FB_LIMIT_UINT, aReserved2) == 36, "offset of FB_LIMIT_UINT.aReserved2");
+SL_STATIC_ASSERT(offsetof(FB_LIMIT_UINT, bError) == 40, "offset of FB_LIMIT_UINT.bError");
+SL_STATIC_ASSERT(offsetof(FB_LIMIT_UINT, bInLimit) == 41, "offset of FB_LIMIT_UINT.bInLimit");
+SL_STATIC_ASSERT(offsetof(FB_LIMIT_UINT, bBelowMin) == 42, "offset of FB_LIMIT_UINT.bBelowMin");
+SL_STATIC_ASSERT(offsetof(FB_LIMIT_UINT, bAboveMax) == 43, "offset of FB_LIMIT_UINT.bAboveMax");
+SL_STATIC_ASSERT(offsetof(FB_LIMIT_UINT, aReserved3) == 44, "offset of FB_LIMIT_UINT.aReserved3");
+SL_STATIC_ASSERT(offsetof(FB_LIMIT_UINT, nState) == 48, "offset of FB_LIMIT_UINT.nState");
+SL_STATIC_ASSERT(offsetof(FB_LIMIT_UINT, aReserved4) == 49, "offset of FB_LIMIT_UINT.aReserved4");
+SL_STATIC_ASSERT(offsetof(FB_LIMIT_UINT, nDiag) == 50, "offset of FB_LIMIT_UINT.nDiag");
+SL_STATIC_ASSERT(offsetof(FB_LIMIT_UINT, nDiagTextId) == 52, "offset of FB_LIMIT_UINT.nDiagTextId");
+SL_STATIC_ASSERT(offsetof(FB_LIMIT_UINT, aReserved5) == 54, "offset of FB_LIMIT_UINT.aReserved5");
+SL_STATIC_ASSERT(offsetof(FB_LIMIT_UINT, dwDiagPar2) == 56, "offset of FB_LIMIT_UINT.dwDiagPar2");
+SL_STATIC_ASSERT(offsetof(FB_LIMIT_UINT, dwDiagPar3) == 60, "offset of FB_LIMIT_UINT.dwDiagPar3");
+SL_STATIC_ASSERT(offsetof(FB_LIMIT_UINT, stPrivate) == 64, "offset of FB_LIMIT_UINT.stPrivate");
+SL_STATIC_ASSERT(sizeof(FB_LIMIT_UINT) == 112, "size of FB_LIMIT_UINT");
+SL_STATIC_ASSERT(offsetof(FB_LIMIT_DINT, aReserved0) == 0, "offset of FB_LIMIT_DINT.aReserved0");
+SL_STATIC_ASSERT(offsetof(FB_LIMIT_DINT, bRun) == 16, "offset of FB_LIMIT_DINT.bRun");
+SL_STATIC_ASSERT(offsetof(FB_LIMIT_DINT, bErrAck) == 17, "offset of FB_LIMIT_DINT.bErrAck");
+SL_STATIC_ASSERT(offsetof(FB_LIMIT_DINT, aReserved1) == 18, "offset of FB_LIMIT_DINT.aReserved1");
+SL_STATIC_ASSERT(offsetof(FB_LIMIT_DINT, nAnalogIn) == 24, "offset of FB_LIMIT_DINT.nAnalogIn");
+SL_STATIC_ASSERT(offsetof(FB_LIMIT_DINT, nMinValue) == 28, "offset of FB_LIMIT_DINT.nMinValue");
+SL_STATIC_ASSERT(offsetof(FB_LIMIT_DINT, nMaxValue) == 32, "offset of FB_LIMIT_DINT.nMaxValue");
+SL_STATIC_ASSERT(offsetof(FB_LIMIT_DINT, nMinimumValue) == 36, "offset of FB_LIMIT_DINT.nMinimumValue");
+SL_STATIC_ASSERT(offsetof(FB_LIMIT_DINT, nMaximumValue) == 40, "offset of FB_LIMIT_DINT.nMaximumValue");
+SL_STATIC_ASSERT(offsetof(FB_LIMIT_DINT, wInputActive) == 44, "offset of FB_LIMIT_DINT.wInputActive");
+SL_STATIC_ASSERT(offsetof(FB_LIMIT_DINT, aReserved2) == 46, "offset of FB_LIMIT_DINT.aReserved2");
+SL_STATIC_ASSERT(offsetof(FB_LIMIT_DINT, bError) == 48, "offset of FB_LIMIT_DINT.bError");
+SL_STATIC_ASSERT(offsetof(FB_LIMIT_DINT, bInLimit) == 49, "offset of FB_LIMIT_DINT.bInLimit");
+SL_STATIC_ASSERT(offsetof(FB_LIMIT_DINT, bBelowMin) == 50, "offset of FB_LIMIT_DINT.bBelowMin");
+SL_STATIC_ASSERT(offsetof(FB_LIMIT_DINT, bAboveMax) == 51, "offset of FB_LIMIT_DINT.bAboveMax");
+SL_STATIC_ASSERT(offsetof(FB_LIMIT_DINT, aReserved3) == 52, "offset of FB_LIMIT_DINT.aReserved3");
+SL_STATIC_ASSERT(offsetof(FB_LIMIT_DINT, nState) == 56, "offset of FB_LIMIT_DINT.nState");
+SL_STATIC_ASSERT(offsetof(FB_LIMIT_DINT, aReserved4) == 57, "offset of FB_LIMIT_DINT.aReserved4");
+SL_STATIC_ASSERT(offsetof(FB_LIMIT_DINT, nDiag) == 58, "offset of FB_LIMIT_DINT.nDiag");
+SL_STATIC_ASSERT(offsetof(FB_LIMIT_DINT, nDiagTextId) == 60, "offset of FB_LIMIT_DINT.nDiagTextId");
+SL_STATIC_ASSERT(offsetof(FB_LIMIT_DINT, aReserved5) == 62, "offset of FB_LIMIT_DINT.aReserved5");
+SL_STATIC_ASSERT(offsetof(FB_LIMIT_DINT, dwDiagPar2) == 64, "offset of FB_LIMIT_DINT.dwDiagPar2");
+SL_STATIC_ASSERT(offsetof(FB_LIMIT_DINT, dwDiagPar3) == 68, "offset of FB_LIMIT_DINT.dwDiagPar3");
+SL_STATIC_ASSERT(offsetof(FB_LIMIT_DINT, stPrivate) == 72, "offset of FB_LIMIT_DINT.stPrivate");
+SL_STATIC_ASSERT(sizeof(FB_LIMIT_DINT) == 120, "size of FB_LIMIT_DINT");
+SL_STATIC_ASSERT(offsetof(FB_LIMIT_UDINT, aReserved0) == 0, "offset of FB_LIMIT_UDINT.aReserved0");
+SL_STATIC_ASSERT(offsetof(FB_LIMIT_UDINT, bRun) == 16, "offset of FB_LIMIT_UDINT.bRun");
+SL_STATIC_ASSERT(offsetof(FB_LIMIT_UDINT, bErrAck) == 17, "offset of FB_LIMIT_UDINT.bErrAck");
+SL_STATIC_ASSERT(offsetof(FB_LIMIT_UDINT, aReserved1) == 18, "offset of FB_LIMIT_UDINT.aReserved1");
+SL_STATIC_ASSERT(offsetof(FB_LIMIT_UDINT, nAnalogIn) == 24, "offset of FB_LIMIT_UDINT.nAnalogIn");
+SL_STATIC_ASSERT(offsetof(FB_LIMIT_UDINT, nMinValue) == 28, "offset of FB_LIMIT_UDINT.nMinValue");
+SL_STATIC_ASSERT(offsetof(FB_LIMIT_UDINT, nMaxValue) == 32, "offset of FB_LIMIT_UDINT.nMaxValue");
+SL_STATIC_ASSERT(offsetof(FB_LIMIT_UDINT, nMinimumValue) == 36, "offset of FB_LIMIT_UDINT.nMinimumValue");
+SL_STATIC_ASSERT(offsetof(FB_LIMIT_UDINT, nMaximumValue) == 40, "offset of FB_LIMIT_UDINT.nMaximumValue");
+SL_STATIC_ASSERT(offsetof(FB_LIMIT_UDINT, wInputActive) == 44, "offset of FB_LIMIT_UDINT.wInputActive");
+SL_STATIC_ASSERT(offsetof(FB_LIMIT_UDINT, aReserved2) == 46, "offset of FB_LIMIT_UDINT.aReserved2");
+SL_STATIC_ASSERT(offsetof(FB_LIMIT_UDINT, bError) == 48, "offset of FB_LIMIT_UDINT.bError");
+SL_STATIC_ASSERT(offsetof(FB_LIMIT_UDINT, bInLimit) == 49, "offset of FB_LIMIT_UDINT.bInLimit");
+SL_STATIC_ASSERT(offsetof(FB_LIMIT_UDINT, bBelowMin) == 50, "offset of FB_LIMIT_UDINT.bBelowMin");
+SL_STATIC_ASSERT(offsetof(FB_LIMIT_UDINT, bAboveMax) == 51, "offset of FB_LIMIT_UDINT.bAboveMax");
+SL_STATIC_ASSERT(offsetof(FB_LIMIT_UDINT, aReserved3) == 52, "offset of FB_LIMIT_UDINT.aReserved3");
+SL_STATIC_ASSERT(offsetof(FB_LIMIT_UDINT, nState) == 56, "offset of FB_LIMIT_UDINT.nState");
+SL_STATIC_ASSERT(offsetof(FB_LIMIT_UDINT, aReserved4) == 57, "offset of FB_LIMIT_UDINT.aReserved4");
+SL_STATIC_ASSERT(offsetof(FB_LIMIT_UDINT, nDiag) == 58, "offset of FB_LIMIT_UDINT.nDiag");
+SL_STATIC_ASSERT(offsetof(FB_LIMIT_UDINT, nDiagTextId) == 60, "offset of FB_LIMIT_UDINT.nDiagTextId");
+SL_STATIC_ASSERT(offsetof(FB_LIMIT_UDINT, aReserved5) == 62, "offset of FB_LIMIT_UDINT.aReserved5");
+SL_STATIC_ASSERT(offsetof(FB_LIMIT_UDINT, dwDiagPar2) == 64, "offset of FB_LIMIT_UDINT.dwDiagPar2");
+SL_STATIC_ASSERT(offsetof(FB_LIMIT_UDINT, dwDiagPar3) == 68, "offset of FB_LIMIT_UDINT.dwDiagPar3");
+SL_STATIC_ASSERT(offsetof(FB_LIMIT_UDINT, stPrivate) == 72, "offset of FB_LIMIT_UDINT.stPrivate");
+SL_STATIC_ASSERT(sizeof(FB_LIMIT_UDINT) == 120, "size of FB_LIMIT_UDINT");
 
 #endif  /* SAFELOGIC_H */

@@ -80,6 +80,13 @@ for _op in ("ADD", "SUB", "MUL", "DIV"):
             cfg=dict(wInputActive=0x300, nAnalogIn1=7, nAnalogIn2=3), pulse=None,
             change=("nRounding", 1) if _op == "DIV" else ("wInputActive", 0x301), run={1})
 
+# LIMIT in every variant: AnalogIn between the parameter limits (RUN); changing the maximum
+# while running is the error.
+for _v in ("INT", "UINT", "DINT", "UDINT"):
+    BLOCKS[f"LIMIT_{_v}"] = dict(
+        cfg=dict(wInputActive=0x100, nMinimumValue=1, nMaximumValue=10, nAnalogIn=5), pulse=None,
+        change=("nMaximumValue", 11), run={1})
+
 
 BLOCK_INPUTS = {}  # block -> its BOOL inputs (filled from the header in main)
 

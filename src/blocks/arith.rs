@@ -14,51 +14,13 @@
 
 #![allow(non_camel_case_types)] // the ABI's names (FB_ADD_INT …)
 
+use super::analog::{magic, Analog};
 use super::BlockInfo;
 use crate::prim::envelope::Block;
 use crate::prim::header::{param_crc, SL_PRIVATE_HEADER};
 use crate::registry::FieldType;
 use crate::types::*;
 use core::marker::PhantomData;
-
-/// An integer type of the analog variants (ABI-2 §10.3).
-pub trait Analog: FieldType + Copy + Default + PartialEq + core::fmt::Debug + 'static {
-    /// Index of the variant: 0 INT, 1 UINT, 2 DINT, 3 UDINT.
-    const VARIANT: usize;
-    /// Smallest value.
-    const MIN: i128;
-    /// Largest value.
-    const MAX: i128;
-    /// The exact value.
-    fn wide(self) -> i128;
-    /// The value of an `i128` known to lie in `MIN..=MAX`.
-    fn narrow(v: i128) -> Self;
-    /// 0.
-    const ZERO: Self;
-}
-
-macro_rules! analog {
-    ($($t:ty => $i:literal),*) => {$(
-        impl Analog for $t {
-            const VARIANT: usize = $i;
-            const MIN: i128 = <$t>::MIN as i128;
-            const MAX: i128 = <$t>::MAX as i128;
-            const ZERO: Self = 0;
-            #[inline(always)]
-            fn wide(self) -> i128 {
-                self as i128
-            }
-            #[inline(always)]
-            fn narrow(v: i128) -> Self {
-                v as $t
-            }
-        }
-    )*};
-}
-analog!(i16 => 0, u16 => 1, i32 => 2, u32 => 3);
-
-/// Variant suffixes in [`Analog::VARIANT`] order.
-pub const VARIANTS: [&str; 4] = ["INT", "UINT", "DINT", "UDINT"];
 
 /// Type tags of the arithmetic blocks (ABI-2 §10.6: sequential from 16).
 pub const SL_TYPE_ADD_INT: u16 = 16;
@@ -598,12 +560,6 @@ pub struct ArithIn {
     b: u32,
     /// The exact result in range (as a pattern), or the diag value of the range error.
     result: Result<u32, u16>,
-}
-
-/// Magic of the private header: the type tag in the high byte's range of the arithmetic
-/// family, so that every variant (layouts differ) has its own.
-const fn magic(tag: u16) -> u16 {
-    0xA700 | tag
 }
 
 impl<B: ArithFb + crate::prim::envelope::Instance + crate::registry::Registered> Block for B {

@@ -4,6 +4,7 @@
 //! `flipflop`, the timers TON, TON2 and TOF (§4.12–§4.14) in `timer`. OPMODE (§4.3),
 //! TWOHAND (§4.7), MUTING (§4.8) and EDM (§4.9) have state machines of their own.
 
+pub mod analog;
 pub mod and;
 pub mod arith;
 pub mod decouple;
@@ -11,6 +12,7 @@ pub mod edm;
 pub mod estop;
 pub mod flipflop;
 pub mod guard;
+pub mod limit;
 pub mod logic;
 pub mod mon;
 pub mod muting;
