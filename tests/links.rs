@@ -7,6 +7,7 @@ use safelogic::group::{self, SL_LINK_ANALOG16, SL_LINK_ANALOG32, SL_LINK_BOOL};
 use safelogic::*;
 use std::ffi::c_void;
 use std::mem::offset_of;
+use std::ptr::addr_of_mut;
 
 struct Plant {
     g: SL_GROUP,
@@ -20,13 +21,36 @@ struct Plant {
     uadd: FB_ADD_UINT,
 }
 
-fn ptr<T>(b: &mut T) -> *mut c_void {
-    (b as *mut T).cast()
+/// The plant behind one raw pointer: the pointers handed to the library and the test's own
+/// field accesses all derive from it, so neither invalidates the other (Miri, Stacked and
+/// Tree Borrows). Field access goes through a short-lived `&mut` (Deref).
+struct Fixture(*mut Plant);
+
+impl std::ops::Deref for Fixture {
+    type Target = Plant;
+    fn deref(&self) -> &Plant {
+        // SAFETY: the box lives until Drop; no library call is running.
+        unsafe { &*self.0 }
+    }
+}
+
+impl std::ops::DerefMut for Fixture {
+    fn deref_mut(&mut self) -> &mut Plant {
+        // SAFETY: as above.
+        unsafe { &mut *self.0 }
+    }
+}
+
+impl Drop for Fixture {
+    fn drop(&mut self) {
+        // SAFETY: made by Box::into_raw in Plant::new, dropped once.
+        drop(unsafe { Box::from_raw(self.0) });
+    }
 }
 
 impl Plant {
-    fn new() -> Box<Self> {
-        let mut p = Box::new(Plant {
+    fn new() -> Fixture {
+        let q = Box::into_raw(Box::new(Plant {
             g: SL_GROUP::default(),
             members: [SL_MEMBER::default(); 6],
             links: [SL_LINK::default(); 8],
@@ -54,28 +78,33 @@ impl Plant {
                 wInputActive: ARITH_ACTIVE,
                 ..Default::default()
             },
-        });
-        let q: *mut Plant = &mut *p;
-        // SAFETY: every pointer is to a field of the boxed plant, alive for the test.
+        }));
+        // SAFETY: every pointer is to a field of the boxed plant, derived from `q`, alive
+        // for the test.
         unsafe {
-            let q = &mut *q;
             assert_eq!(
-                ffi::sl_group_init(&mut q.g, q.members.as_mut_ptr(), 6, q.links.as_mut_ptr(), 8),
+                ffi::sl_group_init(
+                    addr_of_mut!((*q).g),
+                    addr_of_mut!((*q).members).cast(),
+                    6,
+                    addr_of_mut!((*q).links).cast(),
+                    8
+                ),
                 SL_OK
             );
             let blocks: [(u16, *mut c_void); 6] = [
-                (SL_TYPE_ESTOP, ptr(&mut q.estop)),
-                (SL_TYPE_AND, ptr(&mut q.and)),
-                (safelogic::blocks::arith::SL_TYPE_ADD_INT, ptr(&mut q.add)),
-                (safelogic::blocks::arith::SL_TYPE_MUL_INT, ptr(&mut q.mul)),
-                (safelogic::blocks::arith::SL_TYPE_DIV_INT, ptr(&mut q.div)),
-                (safelogic::blocks::arith::SL_TYPE_ADD_UINT, ptr(&mut q.uadd)),
+                (SL_TYPE_ESTOP, addr_of_mut!((*q).estop).cast()),
+                (SL_TYPE_AND, addr_of_mut!((*q).and).cast()),
+                (safelogic::blocks::arith::SL_TYPE_ADD_INT, addr_of_mut!((*q).add).cast()),
+                (safelogic::blocks::arith::SL_TYPE_MUL_INT, addr_of_mut!((*q).mul).cast()),
+                (safelogic::blocks::arith::SL_TYPE_DIV_INT, addr_of_mut!((*q).div).cast()),
+                (safelogic::blocks::arith::SL_TYPE_ADD_UINT, addr_of_mut!((*q).uadd).cast()),
             ];
             for (ty, b) in blocks {
                 assert_eq!(
                     ffi::sl_group_add_member(
-                        &mut q.g,
-                        q.members.as_mut_ptr(),
+                        addr_of_mut!((*q).g),
+                        addr_of_mut!((*q).members).cast(),
                         ty,
                         b,
                         std::ptr::null_mut()
@@ -84,16 +113,19 @@ impl Plant {
                 );
             }
         }
-        p
+        Fixture(q)
     }
+}
 
+impl Fixture {
     fn link(&mut self, src: u16, so: usize, dst: u16, dof: usize) -> i32 {
-        // SAFETY: the plant's own tables.
+        let q = self.0;
+        // SAFETY: the plant's own tables, reached through the fixture's pointer.
         unsafe {
             ffi::sl_group_add_link(
-                &mut self.g,
-                self.members.as_mut_ptr(),
-                self.links.as_mut_ptr(),
+                addr_of_mut!((*q).g),
+                addr_of_mut!((*q).members).cast(),
+                addr_of_mut!((*q).links).cast(),
                 src,
                 so as u16,
                 dst,
@@ -103,12 +135,13 @@ impl Plant {
     }
 
     fn cycle(&mut self, t: u32) -> i32 {
-        // SAFETY: the plant's own tables.
+        let q = self.0;
+        // SAFETY: the plant's own tables, reached through the fixture's pointer.
         unsafe {
             ffi::sl_group_cycle(
-                &mut self.g,
-                self.members.as_mut_ptr(),
-                self.links.as_mut_ptr(),
+                addr_of_mut!((*q).g),
+                addr_of_mut!((*q).members).cast(),
+                addr_of_mut!((*q).links).cast(),
                 t,
             )
         }

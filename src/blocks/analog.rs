@@ -40,8 +40,6 @@ macro_rules! analog {
 }
 analog!(i16 => 0, u16 => 1, i32 => 2, u32 => 3);
 
-/// Variant suffixes in [`Analog::VARIANT`] order.
-pub const VARIANTS: [&str; 4] = ["INT", "UINT", "DINT", "UDINT"];
 
 /// Magic of the private header of an analog block: its type tag in the analog family's
 /// range, so that every variant (the layouts differ) has its own.
