@@ -397,6 +397,23 @@ fn main() {
         "LIMIT_UDINT", FB_LIMIT_UDINT, SL_TYPE_LIMIT_UDINT, sl_limit_udint_cycle, 0x100, 500;
     }
 
+    // COUNTER, one row per width: all inputs active, steady (no edge), counting from 0.
+    macro_rules! counter_row {
+        ($($name:literal, $ty:ty, $tag:expr, $cycle:ident;)*) => {$(
+            let mut fb = <$ty>::default();
+            fb.wInputActive = SL_COUNTER_ACTIVE_INPUTS;
+            (fb.nPresetValue, fb.nCounterLimit, fb.bRun) = (5, 100, 1);
+            fb.init();
+            let private = size_of_val(&fb.stPrivate);
+            rows.push(measure(($name, $tag, logic), batches, fb, private, $cycle, |f| f.nState));
+        )*};
+    }
+    use safelogic::blocks::counter::*;
+    counter_row! {
+        "COUNTER_INT", FB_COUNTER_INT, SL_TYPE_COUNTER_INT, sl_counter_int_cycle;
+        "COUNTER_UDINT", FB_COUNTER_UDINT, SL_TYPE_COUNTER_UDINT, sl_counter_udint_cycle;
+    }
+
     let cpu = std::fs::read_to_string("/proc/cpuinfo")
         .ok()
         .and_then(|s| {

@@ -5,7 +5,8 @@
  * acknowledgement, and an analog chain ADD -> MUL -> DIV linked in a group beside a Boolean
  * link. FB_LIMIT (manual §4.21, ABI-2 §11.4; semantics L1-L4): RUN / SAFE with BelowMin and
  * AboveMax, MinValue > MaxValue (ERROR 0x4090 from inputs, SL_E_CONFIG from parameters),
- * and an analog value gating a Boolean AND in a group.
+ * and an analog value gating a Boolean AND in a group. FB_COUNTER (manual §4.22, ABI-2
+ * §11.5; semantics K1-K4): Reset level, edges, CounterOut/CounterZero, overflow 0x40B9.
  */
 #include "harness.h"
 
@@ -252,8 +253,57 @@ static void limit_gates_an_and_in_a_group(void)
     h_end();
 }
 
+static void counter_uint_counts_and_overflows(void)
+{
+    FB_COUNTER_UINT c;
+    memset(&c, 0, sizeof c);
+    h_begin("COUNTER_UINT: Reset level, edges, CounterOut/Zero, overflow 0x40B9 (K1-K3)");
+    c.wInputActive = SL_COUNTER_ACTIVE_INPUTS;
+    c.nPresetValue = 65534;
+    c.nCounterLimit = 65535;
+    CHECK_INT(sl_counter_uint_init(&c), SL_OK);
+    c.bRun = 1;
+    CHECK_INT(sl_counter_uint_cycle(&c, 0), SL_OK);
+    CHECK_INT(c.nState, SL_STATE_RUN);
+    CHECK_INT(c.nActValue, 0);
+    CHECK_INT(c.bCounterZero, 1);
+    c.bReset = 1;
+    sl_counter_uint_cycle(&c, 1);
+    CHECK_INT(c.nActValue, 65534);
+    c.bReset = 0;
+    c.bCountUp = 1;
+    sl_counter_uint_cycle(&c, 2);
+    CHECK_INT(c.nActValue, 65535);
+    CHECK_INT(c.bCounterOut, 1);
+    sl_counter_uint_cycle(&c, 3); /* held: no edge */
+    CHECK_INT(c.nActValue, 65535);
+    c.bCountUp = 0;
+    sl_counter_uint_cycle(&c, 4);
+    c.bCountUp = 1;
+    CHECK_INT(sl_counter_uint_cycle(&c, 5), SL_OK);
+    CHECK_INT(c.nState, SL_STATE_ERROR);
+    CHECK_INT(c.bError, 1);
+    CHECK_INT(c.nActValue, 0);
+    CHECK_INT(c.bCounterOut, 0);
+    CHECK_INT(c.nDiag, SL_DIAG_VALUE_OVERFLOW);
+    CHECK_INT(c.nDiagTextId, SL_TEXT_COUNTER_OVERFLOW);
+    CHECK_INT(c.dwDiagPar2, 65535);
+    CHECK_INT(c.dwDiagPar3, 65535);
+    c.bErrAck = 1;
+    sl_counter_uint_cycle(&c, 6);
+    CHECK_INT(c.nState, SL_STATE_RESET);
+    c.bErrAck = 0;
+    sl_counter_uint_cycle(&c, 7);
+    CHECK_INT(c.nState, SL_STATE_RUN);
+    CHECK_INT(c.nActValue, 0);
+    CHECK_DIAG_TEXT(SL_TYPE_COUNTER_UINT, 2,
+                    "The output ActValue has an overflow (is greater than the largest possible value)");
+    h_end();
+}
+
 void run_arith_scenarios(void)
 {
+    counter_uint_counts_and_overflows();
     limit_int_window_and_error();
     limit_gates_an_and_in_a_group();
     arith_add_int_overflow_and_ack();

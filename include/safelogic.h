@@ -16,6 +16,17 @@
 #include <stddef.h>
 
 /*
+ Diag value 1 of every analog block with a range check (ABI-2 §12.1): the result is
+ below the smallest value of the type.
+ */
+#define SL_DIAG_VALUE_UNDERFLOW 1
+
+/*
+ Diag value 2: the result is above the largest value of the type.
+ */
+#define SL_DIAG_VALUE_OVERFLOW 2
+
+/*
  Block type tag of FB_AND.
  */
 #define SL_TYPE_AND 3
@@ -116,16 +127,6 @@
 #define SL_ROUNDING_ROUND 2
 
 /*
- Diag value 1: the result is below the smallest value of the type.
- */
-#define SL_DIAG_VALUE_UNDERFLOW 1
-
-/*
- Diag value 2: the result is above the largest value of the type.
- */
-#define SL_DIAG_VALUE_OVERFLOW 2
-
-/*
  Diag message "An underflow has occurred" (parameters: AnalogIn1, AnalogIn2).
  */
 #define SL_TEXT_ARITH_UNDERFLOW 16512
@@ -140,6 +141,41 @@
  both required (ABI-2 §10.5).
  */
 #define ARITH_ACTIVE 768
+
+/*
+ Type tag of FB_COUNTER_INT (ABI-2 §10.6: after the ten four-variant blocks of §10.3).
+ */
+#define SL_TYPE_COUNTER_INT 56
+
+/*
+ FB_COUNTER_UINT.
+ */
+#define SL_TYPE_COUNTER_UINT 57
+
+/*
+ FB_COUNTER_DINT.
+ */
+#define SL_TYPE_COUNTER_DINT 58
+
+/*
+ FB_COUNTER_UDINT.
+ */
+#define SL_TYPE_COUNTER_UDINT 59
+
+/*
+ Diag message "An underflow has occurred" (parameters: ActValue, smallest permitted value).
+ */
+#define SL_TEXT_COUNTER_UNDERFLOW 16568
+
+/*
+ Diag message "An overflow has occurred" (parameters: ActValue, largest permitted value).
+ */
+#define SL_TEXT_COUNTER_OVERFLOW 16569
+
+/*
+ `wInputActive` bits of Reset, CountUp, CountDown (optional: an inactive input reads FALSE).
+ */
+#define SL_COUNTER_ACTIVE_INPUTS 7
 
 /*
  Block type tag of FB_DECOUPLE.
@@ -4638,6 +4674,473 @@ typedef struct FB_LIMIT_UDINT {
 } FB_LIMIT_UDINT;
 
 
+/*
+ Private state of FB COUNTER (56 bytes). Never written by the user.
+ */
+typedef struct SL_COUNTER_PRIVATE {
+  /*
+   Common head (`nActive`: latched `wInputActive`; `wAux`: previous CountUp (bit 0) and
+   CountDown (bit 1) levels for the edges).
+   */
+  struct SL_PRIVATE_HEADER stHeader;
+  /*
+   Reserved.
+   */
+  uint8_t aReserved0[4];
+  /*
+   Latched `nPresetValue`, `nCounterLimit` as 32-bit patterns.
+   */
+  uint32_t adwParam[2];
+  /*
+   The counter (ActValue) as a 32-bit pattern.
+   */
+  uint32_t dwCount;
+  /*
+   Diag message parameters 2 and 3 latched at the ERROR entry.
+   */
+  uint32_t adwPar[2];
+  /*
+   Reserved.
+   */
+  uint8_t aReserved1[4];
+} SL_COUNTER_PRIVATE;
+
+/*
+ FB COUNTER instance (ABI-2 §11.5), generic over the type `T` of its values; `P1` and
+ `P2` are the reserved gaps (after `wInputActive`, after ActValue) that make the 16- and
+ 32-bit layouts differ.
+ */
+typedef struct FB_COUNTER_INT {
+  /*
+   Offset 0. Reset: TRUE (level) sets ActValue to PresetValue (active bit 0).
+   */
+  SL_BOOL bReset;
+  /*
+   Offset 1. CountUp: a rising edge adds 1 (active bit 1).
+   */
+  SL_BOOL bCountUp;
+  /*
+   Offset 2. CountDown: a rising edge subtracts 1 (active bit 2).
+   */
+  SL_BOOL bCountDown;
+  /*
+   Offset 3. Reserved, keep 0.
+   */
+  uint8_t aReserved0[13];
+  /*
+   Offset 16. FbRun of the owning group: TRUE = the block executes.
+   */
+  SL_BOOL bRun;
+  /*
+   Offset 17. ErrAck of the owning group.
+   */
+  SL_BOOL bErrAck;
+  /*
+   Offset 18. Reserved, keep 0.
+   */
+  uint8_t aReserved1[2];
+  /*
+   At 20: "Preset Value", ActValue while Reset is TRUE.
+   */
+  int16_t nPresetValue;
+  /*
+   At 20 + W: "Counter Limit": CounterOut = ActValue ≥ CounterLimit.
+   */
+  int16_t nCounterLimit;
+  /*
+   At 20 + 2W: bits 0–2 (Reset, CountUp, CountDown), no other.
+   */
+  uint16_t wInputActive;
+  /*
+   Reserved up to the output base 32 (16-bit: 6 bytes, 32-bit: 2).
+   */
+  uint8_t aReserved2[6];
+  /*
+   Output base 32: Error, TRUE in ERROR only.
+   */
+  SL_BOOL bError;
+  /*
+   33: CounterOut, in RUN: ActValue ≥ CounterLimit.
+   */
+  SL_BOOL bCounterOut;
+  /*
+   34: CounterZero, in RUN: ActValue == 0.
+   */
+  SL_BOOL bCounterZero;
+  /*
+   35. Reserved.
+   */
+  uint8_t aReserved3[5];
+  /*
+   Analog output base 40: ActValue, the counter in RUN, else 0.
+   */
+  int16_t nActValue;
+  /*
+   Reserved up to the info data 48 (16-bit: 6 bytes, 32-bit: 4).
+   */
+  uint8_t aReserved4[6];
+  /*
+   Info 48: the manual's status value (RUN, STOP, ERROR, RESET).
+   */
+  uint8_t nState;
+  /*
+   49. Reserved.
+   */
+  uint8_t aReserved5[1];
+  /*
+   50: diag value (1 underflow, 2 overflow) + library bits 13-15.
+   */
+  uint16_t nDiag;
+  /*
+   52: Text ID of the latched diag message (0x40B8, 0x40B9), 0 = none.
+   */
+  uint16_t nDiagTextId;
+  /*
+   54. Reserved.
+   */
+  uint8_t aReserved6[2];
+  /*
+   56: message parameter 2 (ActValue before the step, as a 32-bit pattern).
+   */
+  uint32_t dwDiagPar2;
+  /*
+   60: message parameter 3 (the smallest / largest value of the type).
+   */
+  uint32_t dwDiagPar3;
+  /*
+   64: private state, 56 bytes: never write it.
+   */
+  struct SL_COUNTER_PRIVATE stPrivate;
+} FB_COUNTER_INT;
+
+
+/*
+ FB COUNTER instance (ABI-2 §11.5), generic over the type `T` of its values; `P1` and
+ `P2` are the reserved gaps (after `wInputActive`, after ActValue) that make the 16- and
+ 32-bit layouts differ.
+ */
+typedef struct FB_COUNTER_UINT {
+  /*
+   Offset 0. Reset: TRUE (level) sets ActValue to PresetValue (active bit 0).
+   */
+  SL_BOOL bReset;
+  /*
+   Offset 1. CountUp: a rising edge adds 1 (active bit 1).
+   */
+  SL_BOOL bCountUp;
+  /*
+   Offset 2. CountDown: a rising edge subtracts 1 (active bit 2).
+   */
+  SL_BOOL bCountDown;
+  /*
+   Offset 3. Reserved, keep 0.
+   */
+  uint8_t aReserved0[13];
+  /*
+   Offset 16. FbRun of the owning group: TRUE = the block executes.
+   */
+  SL_BOOL bRun;
+  /*
+   Offset 17. ErrAck of the owning group.
+   */
+  SL_BOOL bErrAck;
+  /*
+   Offset 18. Reserved, keep 0.
+   */
+  uint8_t aReserved1[2];
+  /*
+   At 20: "Preset Value", ActValue while Reset is TRUE.
+   */
+  uint16_t nPresetValue;
+  /*
+   At 20 + W: "Counter Limit": CounterOut = ActValue ≥ CounterLimit.
+   */
+  uint16_t nCounterLimit;
+  /*
+   At 20 + 2W: bits 0–2 (Reset, CountUp, CountDown), no other.
+   */
+  uint16_t wInputActive;
+  /*
+   Reserved up to the output base 32 (16-bit: 6 bytes, 32-bit: 2).
+   */
+  uint8_t aReserved2[6];
+  /*
+   Output base 32: Error, TRUE in ERROR only.
+   */
+  SL_BOOL bError;
+  /*
+   33: CounterOut, in RUN: ActValue ≥ CounterLimit.
+   */
+  SL_BOOL bCounterOut;
+  /*
+   34: CounterZero, in RUN: ActValue == 0.
+   */
+  SL_BOOL bCounterZero;
+  /*
+   35. Reserved.
+   */
+  uint8_t aReserved3[5];
+  /*
+   Analog output base 40: ActValue, the counter in RUN, else 0.
+   */
+  uint16_t nActValue;
+  /*
+   Reserved up to the info data 48 (16-bit: 6 bytes, 32-bit: 4).
+   */
+  uint8_t aReserved4[6];
+  /*
+   Info 48: the manual's status value (RUN, STOP, ERROR, RESET).
+   */
+  uint8_t nState;
+  /*
+   49. Reserved.
+   */
+  uint8_t aReserved5[1];
+  /*
+   50: diag value (1 underflow, 2 overflow) + library bits 13-15.
+   */
+  uint16_t nDiag;
+  /*
+   52: Text ID of the latched diag message (0x40B8, 0x40B9), 0 = none.
+   */
+  uint16_t nDiagTextId;
+  /*
+   54. Reserved.
+   */
+  uint8_t aReserved6[2];
+  /*
+   56: message parameter 2 (ActValue before the step, as a 32-bit pattern).
+   */
+  uint32_t dwDiagPar2;
+  /*
+   60: message parameter 3 (the smallest / largest value of the type).
+   */
+  uint32_t dwDiagPar3;
+  /*
+   64: private state, 56 bytes: never write it.
+   */
+  struct SL_COUNTER_PRIVATE stPrivate;
+} FB_COUNTER_UINT;
+
+
+/*
+ FB COUNTER instance (ABI-2 §11.5), generic over the type `T` of its values; `P1` and
+ `P2` are the reserved gaps (after `wInputActive`, after ActValue) that make the 16- and
+ 32-bit layouts differ.
+ */
+typedef struct FB_COUNTER_DINT {
+  /*
+   Offset 0. Reset: TRUE (level) sets ActValue to PresetValue (active bit 0).
+   */
+  SL_BOOL bReset;
+  /*
+   Offset 1. CountUp: a rising edge adds 1 (active bit 1).
+   */
+  SL_BOOL bCountUp;
+  /*
+   Offset 2. CountDown: a rising edge subtracts 1 (active bit 2).
+   */
+  SL_BOOL bCountDown;
+  /*
+   Offset 3. Reserved, keep 0.
+   */
+  uint8_t aReserved0[13];
+  /*
+   Offset 16. FbRun of the owning group: TRUE = the block executes.
+   */
+  SL_BOOL bRun;
+  /*
+   Offset 17. ErrAck of the owning group.
+   */
+  SL_BOOL bErrAck;
+  /*
+   Offset 18. Reserved, keep 0.
+   */
+  uint8_t aReserved1[2];
+  /*
+   At 20: "Preset Value", ActValue while Reset is TRUE.
+   */
+  int32_t nPresetValue;
+  /*
+   At 20 + W: "Counter Limit": CounterOut = ActValue ≥ CounterLimit.
+   */
+  int32_t nCounterLimit;
+  /*
+   At 20 + 2W: bits 0–2 (Reset, CountUp, CountDown), no other.
+   */
+  uint16_t wInputActive;
+  /*
+   Reserved up to the output base 32 (16-bit: 6 bytes, 32-bit: 2).
+   */
+  uint8_t aReserved2[2];
+  /*
+   Output base 32: Error, TRUE in ERROR only.
+   */
+  SL_BOOL bError;
+  /*
+   33: CounterOut, in RUN: ActValue ≥ CounterLimit.
+   */
+  SL_BOOL bCounterOut;
+  /*
+   34: CounterZero, in RUN: ActValue == 0.
+   */
+  SL_BOOL bCounterZero;
+  /*
+   35. Reserved.
+   */
+  uint8_t aReserved3[5];
+  /*
+   Analog output base 40: ActValue, the counter in RUN, else 0.
+   */
+  int32_t nActValue;
+  /*
+   Reserved up to the info data 48 (16-bit: 6 bytes, 32-bit: 4).
+   */
+  uint8_t aReserved4[4];
+  /*
+   Info 48: the manual's status value (RUN, STOP, ERROR, RESET).
+   */
+  uint8_t nState;
+  /*
+   49. Reserved.
+   */
+  uint8_t aReserved5[1];
+  /*
+   50: diag value (1 underflow, 2 overflow) + library bits 13-15.
+   */
+  uint16_t nDiag;
+  /*
+   52: Text ID of the latched diag message (0x40B8, 0x40B9), 0 = none.
+   */
+  uint16_t nDiagTextId;
+  /*
+   54. Reserved.
+   */
+  uint8_t aReserved6[2];
+  /*
+   56: message parameter 2 (ActValue before the step, as a 32-bit pattern).
+   */
+  uint32_t dwDiagPar2;
+  /*
+   60: message parameter 3 (the smallest / largest value of the type).
+   */
+  uint32_t dwDiagPar3;
+  /*
+   64: private state, 56 bytes: never write it.
+   */
+  struct SL_COUNTER_PRIVATE stPrivate;
+} FB_COUNTER_DINT;
+
+
+/*
+ FB COUNTER instance (ABI-2 §11.5), generic over the type `T` of its values; `P1` and
+ `P2` are the reserved gaps (after `wInputActive`, after ActValue) that make the 16- and
+ 32-bit layouts differ.
+ */
+typedef struct FB_COUNTER_UDINT {
+  /*
+   Offset 0. Reset: TRUE (level) sets ActValue to PresetValue (active bit 0).
+   */
+  SL_BOOL bReset;
+  /*
+   Offset 1. CountUp: a rising edge adds 1 (active bit 1).
+   */
+  SL_BOOL bCountUp;
+  /*
+   Offset 2. CountDown: a rising edge subtracts 1 (active bit 2).
+   */
+  SL_BOOL bCountDown;
+  /*
+   Offset 3. Reserved, keep 0.
+   */
+  uint8_t aReserved0[13];
+  /*
+   Offset 16. FbRun of the owning group: TRUE = the block executes.
+   */
+  SL_BOOL bRun;
+  /*
+   Offset 17. ErrAck of the owning group.
+   */
+  SL_BOOL bErrAck;
+  /*
+   Offset 18. Reserved, keep 0.
+   */
+  uint8_t aReserved1[2];
+  /*
+   At 20: "Preset Value", ActValue while Reset is TRUE.
+   */
+  uint32_t nPresetValue;
+  /*
+   At 20 + W: "Counter Limit": CounterOut = ActValue ≥ CounterLimit.
+   */
+  uint32_t nCounterLimit;
+  /*
+   At 20 + 2W: bits 0–2 (Reset, CountUp, CountDown), no other.
+   */
+  uint16_t wInputActive;
+  /*
+   Reserved up to the output base 32 (16-bit: 6 bytes, 32-bit: 2).
+   */
+  uint8_t aReserved2[2];
+  /*
+   Output base 32: Error, TRUE in ERROR only.
+   */
+  SL_BOOL bError;
+  /*
+   33: CounterOut, in RUN: ActValue ≥ CounterLimit.
+   */
+  SL_BOOL bCounterOut;
+  /*
+   34: CounterZero, in RUN: ActValue == 0.
+   */
+  SL_BOOL bCounterZero;
+  /*
+   35. Reserved.
+   */
+  uint8_t aReserved3[5];
+  /*
+   Analog output base 40: ActValue, the counter in RUN, else 0.
+   */
+  uint32_t nActValue;
+  /*
+   Reserved up to the info data 48 (16-bit: 6 bytes, 32-bit: 4).
+   */
+  uint8_t aReserved4[4];
+  /*
+   Info 48: the manual's status value (RUN, STOP, ERROR, RESET).
+   */
+  uint8_t nState;
+  /*
+   49. Reserved.
+   */
+  uint8_t aReserved5[1];
+  /*
+   50: diag value (1 underflow, 2 overflow) + library bits 13-15.
+   */
+  uint16_t nDiag;
+  /*
+   52: Text ID of the latched diag message (0x40B8, 0x40B9), 0 = none.
+   */
+  uint16_t nDiagTextId;
+  /*
+   54. Reserved.
+   */
+  uint8_t aReserved6[2];
+  /*
+   56: message parameter 2 (ActValue before the step, as a 32-bit pattern).
+   */
+  uint32_t dwDiagPar2;
+  /*
+   60: message parameter 3 (the smallest / largest value of the type).
+   */
+  uint32_t dwDiagPar3;
+  /*
+   64: private state, 56 bytes: never write it.
+   */
+  struct SL_COUNTER_PRIVATE stPrivate;
+} FB_COUNTER_UDINT;
+
+
 #ifdef __cplusplus
 extern "C" {
 #endif // __cplusplus
@@ -4844,6 +5347,14 @@ int32_t sl_limit_dint_init(struct FB_LIMIT_DINT *fb);
 int32_t sl_limit_dint_cycle(struct FB_LIMIT_DINT *fb, uint32_t tNow);
 int32_t sl_limit_udint_init(struct FB_LIMIT_UDINT *fb);
 int32_t sl_limit_udint_cycle(struct FB_LIMIT_UDINT *fb, uint32_t tNow);
+int32_t sl_counter_int_init(struct FB_COUNTER_INT *fb);
+int32_t sl_counter_int_cycle(struct FB_COUNTER_INT *fb, uint32_t tNow);
+int32_t sl_counter_uint_init(struct FB_COUNTER_UINT *fb);
+int32_t sl_counter_uint_cycle(struct FB_COUNTER_UINT *fb, uint32_t tNow);
+int32_t sl_counter_dint_init(struct FB_COUNTER_DINT *fb);
+int32_t sl_counter_dint_cycle(struct FB_COUNTER_DINT *fb, uint32_t tNow);
+int32_t sl_counter_udint_init(struct FB_COUNTER_UDINT *fb);
+int32_t sl_counter_udint_cycle(struct FB_COUNTER_UDINT *fb, uint32_t tNow);
 
 #ifdef __cplusplus
 }  // extern "C"
@@ -5785,5 +6296,116 @@ SL_STATIC_ASSERT(offsetof(FB_LIMIT_UDINT, dwDiagPar2) == 64, "offset of FB_LIMIT
 SL_STATIC_ASSERT(offsetof(FB_LIMIT_UDINT, dwDiagPar3) == 68, "offset of FB_LIMIT_UDINT.dwDiagPar3");
 SL_STATIC_ASSERT(offsetof(FB_LIMIT_UDINT, stPrivate) == 72, "offset of FB_LIMIT_UDINT.stPrivate");
 SL_STATIC_ASSERT(sizeof(FB_LIMIT_UDINT) == 120, "size of FB_LIMIT_UDINT");
+SL_STATIC_ASSERT(offsetof(SL_COUNTER_PRIVATE, stHeader) == 0, "offset of SL_COUNTER_PRIVATE.stHeader");
+SL_STATIC_ASSERT(offsetof(SL_COUNTER_PRIVATE, aReserved0) == 28, "offset of SL_COUNTER_PRIVATE.aReserved0");
+SL_STATIC_ASSERT(offsetof(SL_COUNTER_PRIVATE, adwParam) == 32, "offset of SL_COUNTER_PRIVATE.adwParam");
+SL_STATIC_ASSERT(offsetof(SL_COUNTER_PRIVATE, dwCount) == 40, "offset of SL_COUNTER_PRIVATE.dwCount");
+SL_STATIC_ASSERT(offsetof(SL_COUNTER_PRIVATE, adwPar) == 44, "offset of SL_COUNTER_PRIVATE.adwPar");
+SL_STATIC_ASSERT(offsetof(SL_COUNTER_PRIVATE, aReserved1) == 52, "offset of SL_COUNTER_PRIVATE.aReserved1");
+SL_STATIC_ASSERT(sizeof(SL_COUNTER_PRIVATE) == 56, "size of SL_COUNTER_PRIVATE");
+SL_STATIC_ASSERT(offsetof(FB_COUNTER_INT, bReset) == 0, "offset of FB_COUNTER_INT.bReset");
+SL_STATIC_ASSERT(offsetof(FB_COUNTER_INT, bCountUp) == 1, "offset of FB_COUNTER_INT.bCountUp");
+SL_STATIC_ASSERT(offsetof(FB_COUNTER_INT, bCountDown) == 2, "offset of FB_COUNTER_INT.bCountDown");
+SL_STATIC_ASSERT(offsetof(FB_COUNTER_INT, aReserved0) == 3, "offset of FB_COUNTER_INT.aReserved0");
+SL_STATIC_ASSERT(offsetof(FB_COUNTER_INT, bRun) == 16, "offset of FB_COUNTER_INT.bRun");
+SL_STATIC_ASSERT(offsetof(FB_COUNTER_INT, bErrAck) == 17, "offset of FB_COUNTER_INT.bErrAck");
+SL_STATIC_ASSERT(offsetof(FB_COUNTER_INT, aReserved1) == 18, "offset of FB_COUNTER_INT.aReserved1");
+SL_STATIC_ASSERT(offsetof(FB_COUNTER_INT, nPresetValue) == 20, "offset of FB_COUNTER_INT.nPresetValue");
+SL_STATIC_ASSERT(offsetof(FB_COUNTER_INT, nCounterLimit) == 22, "offset of FB_COUNTER_INT.nCounterLimit");
+SL_STATIC_ASSERT(offsetof(FB_COUNTER_INT, wInputActive) == 24, "offset of FB_COUNTER_INT.wInputActive");
+SL_STATIC_ASSERT(offsetof(FB_COUNTER_INT, aReserved2) == 26, "offset of FB_COUNTER_INT.aReserved2");
+SL_STATIC_ASSERT(offsetof(FB_COUNTER_INT, bError) == 32, "offset of FB_COUNTER_INT.bError");
+SL_STATIC_ASSERT(offsetof(FB_COUNTER_INT, bCounterOut) == 33, "offset of FB_COUNTER_INT.bCounterOut");
+SL_STATIC_ASSERT(offsetof(FB_COUNTER_INT, bCounterZero) == 34, "offset of FB_COUNTER_INT.bCounterZero");
+SL_STATIC_ASSERT(offsetof(FB_COUNTER_INT, aReserved3) == 35, "offset of FB_COUNTER_INT.aReserved3");
+SL_STATIC_ASSERT(offsetof(FB_COUNTER_INT, nActValue) == 40, "offset of FB_COUNTER_INT.nActValue");
+SL_STATIC_ASSERT(offsetof(FB_COUNTER_INT, aReserved4) == 42, "offset of FB_COUNTER_INT.aReserved4");
+SL_STATIC_ASSERT(offsetof(FB_COUNTER_INT, nState) == 48, "offset of FB_COUNTER_INT.nState");
+SL_STATIC_ASSERT(offsetof(FB_COUNTER_INT, aReserved5) == 49, "offset of FB_COUNTER_INT.aReserved5");
+SL_STATIC_ASSERT(offsetof(FB_COUNTER_INT, nDiag) == 50, "offset of FB_COUNTER_INT.nDiag");
+SL_STATIC_ASSERT(offsetof(FB_COUNTER_INT, nDiagTextId) == 52, "offset of FB_COUNTER_INT.nDiagTextId");
+SL_STATIC_ASSERT(offsetof(FB_COUNTER_INT, aReserved6) == 54, "offset of FB_COUNTER_INT.aReserved6");
+SL_STATIC_ASSERT(offsetof(FB_COUNTER_INT, dwDiagPar2) == 56, "offset of FB_COUNTER_INT.dwDiagPar2");
+SL_STATIC_ASSERT(offsetof(FB_COUNTER_INT, dwDiagPar3) == 60, "offset of FB_COUNTER_INT.dwDiagPar3");
+SL_STATIC_ASSERT(offsetof(FB_COUNTER_INT, stPrivate) == 64, "offset of FB_COUNTER_INT.stPrivate");
+SL_STATIC_ASSERT(sizeof(FB_COUNTER_INT) == 120, "size of FB_COUNTER_INT");
+SL_STATIC_ASSERT(offsetof(FB_COUNTER_UINT, bReset) == 0, "offset of FB_COUNTER_UINT.bReset");
+SL_STATIC_ASSERT(offsetof(FB_COUNTER_UINT, bCountUp) == 1, "offset of FB_COUNTER_UINT.bCountUp");
+SL_STATIC_ASSERT(offsetof(FB_COUNTER_UINT, bCountDown) == 2, "offset of FB_COUNTER_UINT.bCountDown");
+SL_STATIC_ASSERT(offsetof(FB_COUNTER_UINT, aReserved0) == 3, "offset of FB_COUNTER_UINT.aReserved0");
+SL_STATIC_ASSERT(offsetof(FB_COUNTER_UINT, bRun) == 16, "offset of FB_COUNTER_UINT.bRun");
+SL_STATIC_ASSERT(offsetof(FB_COUNTER_UINT, bErrAck) == 17, "offset of FB_COUNTER_UINT.bErrAck");
+SL_STATIC_ASSERT(offsetof(FB_COUNTER_UINT, aReserved1) == 18, "offset of FB_COUNTER_UINT.aReserved1");
+SL_STATIC_ASSERT(offsetof(FB_COUNTER_UINT, nPresetValue) == 20, "offset of FB_COUNTER_UINT.nPresetValue");
+SL_STATIC_ASSERT(offsetof(FB_COUNTER_UINT, nCounterLimit) == 22, "offset of FB_COUNTER_UINT.nCounterLimit");
+SL_STATIC_ASSERT(offsetof(FB_COUNTER_UINT, wInputActive) == 24, "offset of FB_COUNTER_UINT.wInputActive");
+SL_STATIC_ASSERT(offsetof(FB_COUNTER_UINT, aReserved2) == 26, "offset of FB_COUNTER_UINT.aReserved2");
+SL_STATIC_ASSERT(offsetof(FB_COUNTER_UINT, bError) == 32, "offset of FB_COUNTER_UINT.bError");
+SL_STATIC_ASSERT(offsetof(FB_COUNTER_UINT, bCounterOut) == 33, "offset of FB_COUNTER_UINT.bCounterOut");
+SL_STATIC_ASSERT(offsetof(FB_COUNTER_UINT, bCounterZero) == 34, "offset of FB_COUNTER_UINT.bCounterZero");
+SL_STATIC_ASSERT(offsetof(FB_COUNTER_UINT, aReserved3) == 35, "offset of FB_COUNTER_UINT.aReserved3");
+SL_STATIC_ASSERT(offsetof(FB_COUNTER_UINT, nActValue) == 40, "offset of FB_COUNTER_UINT.nActValue");
+SL_STATIC_ASSERT(offsetof(FB_COUNTER_UINT, aReserved4) == 42, "offset of FB_COUNTER_UINT.aReserved4");
+SL_STATIC_ASSERT(offsetof(FB_COUNTER_UINT, nState) == 48, "offset of FB_COUNTER_UINT.nState");
+SL_STATIC_ASSERT(offsetof(FB_COUNTER_UINT, aReserved5) == 49, "offset of FB_COUNTER_UINT.aReserved5");
+SL_STATIC_ASSERT(offsetof(FB_COUNTER_UINT, nDiag) == 50, "offset of FB_COUNTER_UINT.nDiag");
+SL_STATIC_ASSERT(offsetof(FB_COUNTER_UINT, nDiagTextId) == 52, "offset of FB_COUNTER_UINT.nDiagTextId");
+SL_STATIC_ASSERT(offsetof(FB_COUNTER_UINT, aReserved6) == 54, "offset of FB_COUNTER_UINT.aReserved6");
+SL_STATIC_ASSERT(offsetof(FB_COUNTER_UINT, dwDiagPar2) == 56, "offset of FB_COUNTER_UINT.dwDiagPar2");
+SL_STATIC_ASSERT(offsetof(FB_COUNTER_UINT, dwDiagPar3) == 60, "offset of FB_COUNTER_UINT.dwDiagPar3");
+SL_STATIC_ASSERT(offsetof(FB_COUNTER_UINT, stPrivate) == 64, "offset of FB_COUNTER_UINT.stPrivate");
+SL_STATIC_ASSERT(sizeof(FB_COUNTER_UINT) == 120, "size of FB_COUNTER_UINT");
+SL_STATIC_ASSERT(offsetof(FB_COUNTER_DINT, bReset) == 0, "offset of FB_COUNTER_DINT.bReset");
+SL_STATIC_ASSERT(offsetof(FB_COUNTER_DINT, bCountUp) == 1, "offset of FB_COUNTER_DINT.bCountUp");
+SL_STATIC_ASSERT(offsetof(FB_COUNTER_DINT, bCountDown) == 2, "offset of FB_COUNTER_DINT.bCountDown");
+SL_STATIC_ASSERT(offsetof(FB_COUNTER_DINT, aReserved0) == 3, "offset of FB_COUNTER_DINT.aReserved0");
+SL_STATIC_ASSERT(offsetof(FB_COUNTER_DINT, bRun) == 16, "offset of FB_COUNTER_DINT.bRun");
+SL_STATIC_ASSERT(offsetof(FB_COUNTER_DINT, bErrAck) == 17, "offset of FB_COUNTER_DINT.bErrAck");
+SL_STATIC_ASSERT(offsetof(FB_COUNTER_DINT, aReserved1) == 18, "offset of FB_COUNTER_DINT.aReserved1");
+SL_STATIC_ASSERT(offsetof(FB_COUNTER_DINT, nPresetValue) == 20, "offset of FB_COUNTER_DINT.nPresetValue");
+SL_STATIC_ASSERT(offsetof(FB_COUNTER_DINT, nCounterLimit) == 24, "offset of FB_COUNTER_DINT.nCounterLimit");
+SL_STATIC_ASSERT(offsetof(FB_COUNTER_DINT, wInputActive) == 28, "offset of FB_COUNTER_DINT.wInputActive");
+SL_STATIC_ASSERT(offsetof(FB_COUNTER_DINT, aReserved2) == 30, "offset of FB_COUNTER_DINT.aReserved2");
+SL_STATIC_ASSERT(offsetof(FB_COUNTER_DINT, bError) == 32, "offset of FB_COUNTER_DINT.bError");
+SL_STATIC_ASSERT(offsetof(FB_COUNTER_DINT, bCounterOut) == 33, "offset of FB_COUNTER_DINT.bCounterOut");
+SL_STATIC_ASSERT(offsetof(FB_COUNTER_DINT, bCounterZero) == 34, "offset of FB_COUNTER_DINT.bCounterZero");
+SL_STATIC_ASSERT(offsetof(FB_COUNTER_DINT, aReserved3) == 35, "offset of FB_COUNTER_DINT.aReserved3");
+SL_STATIC_ASSERT(offsetof(FB_COUNTER_DINT, nActValue) == 40, "offset of FB_COUNTER_DINT.nActValue");
+SL_STATIC_ASSERT(offsetof(FB_COUNTER_DINT, aReserved4) == 44, "offset of FB_COUNTER_DINT.aReserved4");
+SL_STATIC_ASSERT(offsetof(FB_COUNTER_DINT, nState) == 48, "offset of FB_COUNTER_DINT.nState");
+SL_STATIC_ASSERT(offsetof(FB_COUNTER_DINT, aReserved5) == 49, "offset of FB_COUNTER_DINT.aReserved5");
+SL_STATIC_ASSERT(offsetof(FB_COUNTER_DINT, nDiag) == 50, "offset of FB_COUNTER_DINT.nDiag");
+SL_STATIC_ASSERT(offsetof(FB_COUNTER_DINT, nDiagTextId) == 52, "offset of FB_COUNTER_DINT.nDiagTextId");
+SL_STATIC_ASSERT(offsetof(FB_COUNTER_DINT, aReserved6) == 54, "offset of FB_COUNTER_DINT.aReserved6");
+SL_STATIC_ASSERT(offsetof(FB_COUNTER_DINT, dwDiagPar2) == 56, "offset of FB_COUNTER_DINT.dwDiagPar2");
+SL_STATIC_ASSERT(offsetof(FB_COUNTER_DINT, dwDiagPar3) == 60, "offset of FB_COUNTER_DINT.dwDiagPar3");
+SL_STATIC_ASSERT(offsetof(FB_COUNTER_DINT, stPrivate) == 64, "offset of FB_COUNTER_DINT.stPrivate");
+SL_STATIC_ASSERT(sizeof(FB_COUNTER_DINT) == 120, "size of FB_COUNTER_DINT");
+SL_STATIC_ASSERT(offsetof(FB_COUNTER_UDINT, bReset) == 0, "offset of FB_COUNTER_UDINT.bReset");
+SL_STATIC_ASSERT(offsetof(FB_COUNTER_UDINT, bCountUp) == 1, "offset of FB_COUNTER_UDINT.bCountUp");
+SL_STATIC_ASSERT(offsetof(FB_COUNTER_UDINT, bCountDown) == 2, "offset of FB_COUNTER_UDINT.bCountDown");
+SL_STATIC_ASSERT(offsetof(FB_COUNTER_UDINT, aReserved0) == 3, "offset of FB_COUNTER_UDINT.aReserved0");
+SL_STATIC_ASSERT(offsetof(FB_COUNTER_UDINT, bRun) == 16, "offset of FB_COUNTER_UDINT.bRun");
+SL_STATIC_ASSERT(offsetof(FB_COUNTER_UDINT, bErrAck) == 17, "offset of FB_COUNTER_UDINT.bErrAck");
+SL_STATIC_ASSERT(offsetof(FB_COUNTER_UDINT, aReserved1) == 18, "offset of FB_COUNTER_UDINT.aReserved1");
+SL_STATIC_ASSERT(offsetof(FB_COUNTER_UDINT, nPresetValue) == 20, "offset of FB_COUNTER_UDINT.nPresetValue");
+SL_STATIC_ASSERT(offsetof(FB_COUNTER_UDINT, nCounterLimit) == 24, "offset of FB_COUNTER_UDINT.nCounterLimit");
+SL_STATIC_ASSERT(offsetof(FB_COUNTER_UDINT, wInputActive) == 28, "offset of FB_COUNTER_UDINT.wInputActive");
+SL_STATIC_ASSERT(offsetof(FB_COUNTER_UDINT, aReserved2) == 30, "offset of FB_COUNTER_UDINT.aReserved2");
+SL_STATIC_ASSERT(offsetof(FB_COUNTER_UDINT, bError) == 32, "offset of FB_COUNTER_UDINT.bError");
+SL_STATIC_ASSERT(offsetof(FB_COUNTER_UDINT, bCounterOut) == 33, "offset of FB_COUNTER_UDINT.bCounterOut");
+SL_STATIC_ASSERT(offsetof(FB_COUNTER_UDINT, bCounterZero) == 34, "offset of FB_COUNTER_UDINT.bCounterZero");
+SL_STATIC_ASSERT(offsetof(FB_COUNTER_UDINT, aReserved3) == 35, "offset of FB_COUNTER_UDINT.aReserved3");
+SL_STATIC_ASSERT(offsetof(FB_COUNTER_UDINT, nActValue) == 40, "offset of FB_COUNTER_UDINT.nActValue");
+SL_STATIC_ASSERT(offsetof(FB_COUNTER_UDINT, aReserved4) == 44, "offset of FB_COUNTER_UDINT.aReserved4");
+SL_STATIC_ASSERT(offsetof(FB_COUNTER_UDINT, nState) == 48, "offset of FB_COUNTER_UDINT.nState");
+SL_STATIC_ASSERT(offsetof(FB_COUNTER_UDINT, aReserved5) == 49, "offset of FB_COUNTER_UDINT.aReserved5");
+SL_STATIC_ASSERT(offsetof(FB_COUNTER_UDINT, nDiag) == 50, "offset of FB_COUNTER_UDINT.nDiag");
+SL_STATIC_ASSERT(offsetof(FB_COUNTER_UDINT, nDiagTextId) == 52, "offset of FB_COUNTER_UDINT.nDiagTextId");
+SL_STATIC_ASSERT(offsetof(FB_COUNTER_UDINT, aReserved6) == 54, "offset of FB_COUNTER_UDINT.aReserved6");
+SL_STATIC_ASSERT(offsetof(FB_COUNTER_UDINT, dwDiagPar2) == 56, "offset of FB_COUNTER_UDINT.dwDiagPar2");
+SL_STATIC_ASSERT(offsetof(FB_COUNTER_UDINT, dwDiagPar3) == 60, "offset of FB_COUNTER_UDINT.dwDiagPar3");
+SL_STATIC_ASSERT(offsetof(FB_COUNTER_UDINT, stPrivate) == 64, "offset of FB_COUNTER_UDINT.stPrivate");
+SL_STATIC_ASSERT(sizeof(FB_COUNTER_UDINT) == 120, "size of FB_COUNTER_UDINT");
 
 #endif  /* SAFELOGIC_H */

@@ -56,6 +56,7 @@ macro_rules! reexport_blocks {
 }
 for_each_block!(reexport_blocks);
 
+pub use blocks::analog::{SL_DIAG_VALUE_OVERFLOW, SL_DIAG_VALUE_UNDERFLOW};
 pub use blocks::flipflop::{SL_FLIPFLOP_PRIVATE, SL_STATE_RS_SET, SL_STATE_SR_SET};
 pub use blocks::guard::SL_GUARD_PRIVATE;
 pub use blocks::logic::SL_LOGIC_PRIVATE;

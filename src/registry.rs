@@ -295,6 +295,10 @@ macro_rules! for_each_block {
             $crate::blocks::limit::FB_LIMIT_UINT => sl_limit_uint_init, sl_limit_uint_cycle;
             $crate::blocks::limit::FB_LIMIT_DINT => sl_limit_dint_init, sl_limit_dint_cycle;
             $crate::blocks::limit::FB_LIMIT_UDINT => sl_limit_udint_init, sl_limit_udint_cycle;
+            $crate::blocks::counter::FB_COUNTER_INT => sl_counter_int_init, sl_counter_int_cycle;
+            $crate::blocks::counter::FB_COUNTER_UINT => sl_counter_uint_init, sl_counter_uint_cycle;
+            $crate::blocks::counter::FB_COUNTER_DINT => sl_counter_dint_init, sl_counter_dint_cycle;
+            $crate::blocks::counter::FB_COUNTER_UDINT => sl_counter_udint_init, sl_counter_udint_cycle;
             // registry:end
         }
     };

@@ -49,7 +49,7 @@ impl Drop for Fixture {
 }
 
 impl Plant {
-    fn new() -> Fixture {
+    fn boxed() -> Fixture {
         let q = Box::into_raw(Box::new(Plant {
             g: SL_GROUP::default(),
             members: [SL_MEMBER::default(); 6],
@@ -95,10 +95,22 @@ impl Plant {
             let blocks: [(u16, *mut c_void); 6] = [
                 (SL_TYPE_ESTOP, addr_of_mut!((*q).estop).cast()),
                 (SL_TYPE_AND, addr_of_mut!((*q).and).cast()),
-                (safelogic::blocks::arith::SL_TYPE_ADD_INT, addr_of_mut!((*q).add).cast()),
-                (safelogic::blocks::arith::SL_TYPE_MUL_INT, addr_of_mut!((*q).mul).cast()),
-                (safelogic::blocks::arith::SL_TYPE_DIV_INT, addr_of_mut!((*q).div).cast()),
-                (safelogic::blocks::arith::SL_TYPE_ADD_UINT, addr_of_mut!((*q).uadd).cast()),
+                (
+                    safelogic::blocks::arith::SL_TYPE_ADD_INT,
+                    addr_of_mut!((*q).add).cast(),
+                ),
+                (
+                    safelogic::blocks::arith::SL_TYPE_MUL_INT,
+                    addr_of_mut!((*q).mul).cast(),
+                ),
+                (
+                    safelogic::blocks::arith::SL_TYPE_DIV_INT,
+                    addr_of_mut!((*q).div).cast(),
+                ),
+                (
+                    safelogic::blocks::arith::SL_TYPE_ADD_UINT,
+                    addr_of_mut!((*q).uadd).cast(),
+                ),
             ];
             for (ty, b) in blocks {
                 assert_eq!(
@@ -155,7 +167,7 @@ const DIV_IN1: usize = offset_of!(FB_DIV_INT, nAnalogIn1);
 
 #[test]
 fn analog_chain_beside_a_boolean_chain() {
-    let mut p = Plant::new();
+    let mut p = Plant::boxed();
     assert_eq!(
         p.link(
             0,
@@ -203,7 +215,7 @@ fn analog_chain_beside_a_boolean_chain() {
 
 #[test]
 fn links_between_different_types_are_refused() {
-    let mut p = Plant::new();
+    let mut p = Plant::boxed();
     // INT → UINT (signedness), INT → BOOL, BOOL → INT.
     assert_eq!(
         p.link(2, ADD_OUT, 5, offset_of!(FB_ADD_UINT, nAnalogIn1)),

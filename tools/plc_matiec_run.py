@@ -87,6 +87,13 @@ for _v in ("INT", "UINT", "DINT", "UDINT"):
         cfg=dict(wInputActive=0x100, nMinimumValue=1, nMaximumValue=10, nAnalogIn=5), pulse=None,
         change=("nMaximumValue", 11), run={1})
 
+# COUNTER in every variant: counting edges from the walk; changing the limit while running
+# is the error.
+for _v in ("INT", "UINT", "DINT", "UDINT"):
+    BLOCKS[f"COUNTER_{_v}"] = dict(
+        cfg=dict(wInputActive=0x7, nPresetValue=3, nCounterLimit=5), pulse=("bCountUp",),
+        change=("nCounterLimit", 6), run={1})
+
 
 BLOCK_INPUTS = {}  # block -> its BOOL inputs (filled from the header in main)
 

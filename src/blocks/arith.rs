@@ -14,7 +14,7 @@
 
 #![allow(non_camel_case_types)] // the ABI's names (FB_ADD_INT …)
 
-use super::analog::{magic, Analog};
+use super::analog::{diag_message, magic, Analog, SL_DIAG_VALUE_OVERFLOW, SL_DIAG_VALUE_UNDERFLOW};
 use super::BlockInfo;
 use crate::prim::envelope::Block;
 use crate::prim::header::{param_crc, SL_PRIVATE_HEADER};
@@ -62,10 +62,6 @@ pub const SL_ROUNDING_CEIL: u16 = 1;
 /// `nRounding` Round: commercial rounding, half away from zero (2.5 → 3, −2.5 → −3).
 pub const SL_ROUNDING_ROUND: u16 = 2;
 
-/// Diag value 1: the result is below the smallest value of the type.
-pub const SL_DIAG_VALUE_UNDERFLOW: u16 = 1;
-/// Diag value 2: the result is above the largest value of the type.
-pub const SL_DIAG_VALUE_OVERFLOW: u16 = 2;
 /// Diag message "An underflow has occurred" (parameters: AnalogIn1, AnalogIn2).
 pub const SL_TEXT_ARITH_UNDERFLOW: u16 = 0x4080;
 /// Diag message "An overflow has occurred" (parameters: AnalogIn1, AnalogIn2).
@@ -649,12 +645,14 @@ impl<B: ArithFb + crate::prim::envelope::Instance + crate::registry::Registered>
         let h = p.stHeader;
         let run = h.nState == SL_STATE_RUN;
         let error = h.nState == SL_STATE_ERROR;
-        let value = h.wDiag & !LIBRARY_DIAG_BITS;
-        let msg = match value {
-            SL_DIAG_VALUE_UNDERFLOW if error => (SL_TEXT_ARITH_UNDERFLOW, p.adwPar[0], p.adwPar[1]),
-            SL_DIAG_VALUE_OVERFLOW if error => (SL_TEXT_ARITH_OVERFLOW, p.adwPar[0], p.adwPar[1]),
-            _ => (0, 0, 0),
-        };
+        let msg = diag_message(
+            &h,
+            &[
+                (SL_DIAG_VALUE_UNDERFLOW, SL_TEXT_ARITH_UNDERFLOW),
+                (SL_DIAG_VALUE_OVERFLOW, SL_TEXT_ARITH_OVERFLOW),
+            ],
+            p.adwPar,
+        );
         let out = if run {
             FieldType::from_bits(p.dwOut)
         } else {

@@ -11,7 +11,7 @@
 
 #![allow(non_camel_case_types)] // the ABI's names (FB_LIMIT_INT …)
 
-use super::analog::{magic, Analog};
+use super::analog::{diag_message, magic, Analog};
 use super::BlockInfo;
 use crate::prim::envelope::Block;
 use crate::prim::header::{param_crc, SL_PRIVATE_HEADER};
@@ -384,17 +384,16 @@ impl<T: Analog, const P1: usize> Block for FB_LIMIT<T, P1> {
             SL_STATE_SAFE => (false, false, true),
             _ => (false, false, false),
         };
-        let msg = error && h.wDiag & !LIBRARY_DIAG_BITS == SL_DIAG_LIMIT_MIN_ABOVE_MAX;
         self.bError = u8::from(error);
         self.bInLimit = u8::from(run);
         self.bBelowMin = u8::from(safe && h.wAux == BELOW);
         self.bAboveMax = u8::from(safe && h.wAux == ABOVE);
         self.nState = h.nState;
         self.nDiag = h.wDiag;
-        (self.nDiagTextId, self.dwDiagPar2, self.dwDiagPar3) = if msg {
-            (SL_TEXT_LIMIT_MIN_ABOVE_MAX, p.adwPar[0], p.adwPar[1])
-        } else {
-            (0, 0, 0)
-        };
+        (self.nDiagTextId, self.dwDiagPar2, self.dwDiagPar3) = diag_message(
+            &h,
+            &[(SL_DIAG_LIMIT_MIN_ABOVE_MAX, SL_TEXT_LIMIT_MIN_ABOVE_MAX)],
+            p.adwPar,
+        );
     }
 }

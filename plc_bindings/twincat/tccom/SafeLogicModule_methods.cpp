@@ -646,6 +646,78 @@ HRESULT CSafeLogicModule::sl_limit_udint_cycle(PVOID pFb, int32_t *pnResult, uin
     return S_OK;
 }
 
+HRESULT CSafeLogicModule::sl_counter_int_init(PVOID pFb, int32_t *pnResult)
+{
+    if (pFb == NULL || pnResult == NULL) {
+        return E_POINTER;
+    }
+    *pnResult = ::sl_counter_int_init(static_cast<struct FB_COUNTER_INT *>(pFb));
+    return S_OK;
+}
+
+HRESULT CSafeLogicModule::sl_counter_int_cycle(PVOID pFb, int32_t *pnResult, uint32_t tNow)
+{
+    if (pFb == NULL || pnResult == NULL) {
+        return E_POINTER;
+    }
+    *pnResult = ::sl_counter_int_cycle(static_cast<struct FB_COUNTER_INT *>(pFb), tNow);
+    return S_OK;
+}
+
+HRESULT CSafeLogicModule::sl_counter_uint_init(PVOID pFb, int32_t *pnResult)
+{
+    if (pFb == NULL || pnResult == NULL) {
+        return E_POINTER;
+    }
+    *pnResult = ::sl_counter_uint_init(static_cast<struct FB_COUNTER_UINT *>(pFb));
+    return S_OK;
+}
+
+HRESULT CSafeLogicModule::sl_counter_uint_cycle(PVOID pFb, int32_t *pnResult, uint32_t tNow)
+{
+    if (pFb == NULL || pnResult == NULL) {
+        return E_POINTER;
+    }
+    *pnResult = ::sl_counter_uint_cycle(static_cast<struct FB_COUNTER_UINT *>(pFb), tNow);
+    return S_OK;
+}
+
+HRESULT CSafeLogicModule::sl_counter_dint_init(PVOID pFb, int32_t *pnResult)
+{
+    if (pFb == NULL || pnResult == NULL) {
+        return E_POINTER;
+    }
+    *pnResult = ::sl_counter_dint_init(static_cast<struct FB_COUNTER_DINT *>(pFb));
+    return S_OK;
+}
+
+HRESULT CSafeLogicModule::sl_counter_dint_cycle(PVOID pFb, int32_t *pnResult, uint32_t tNow)
+{
+    if (pFb == NULL || pnResult == NULL) {
+        return E_POINTER;
+    }
+    *pnResult = ::sl_counter_dint_cycle(static_cast<struct FB_COUNTER_DINT *>(pFb), tNow);
+    return S_OK;
+}
+
+HRESULT CSafeLogicModule::sl_counter_udint_init(PVOID pFb, int32_t *pnResult)
+{
+    if (pFb == NULL || pnResult == NULL) {
+        return E_POINTER;
+    }
+    *pnResult = ::sl_counter_udint_init(static_cast<struct FB_COUNTER_UDINT *>(pFb));
+    return S_OK;
+}
+
+HRESULT CSafeLogicModule::sl_counter_udint_cycle(PVOID pFb, int32_t *pnResult, uint32_t tNow)
+{
+    if (pFb == NULL || pnResult == NULL) {
+        return E_POINTER;
+    }
+    *pnResult = ::sl_counter_udint_cycle(static_cast<struct FB_COUNTER_UDINT *>(pFb), tNow);
+    return S_OK;
+}
+
 HRESULT CSafeLogicModule::sl_ton2_get_elapsed(PVOID pFb, int32_t *pnResult, uint32_t * pPElapsedMs)
 {
     if (pFb == NULL || pnResult == NULL) {
