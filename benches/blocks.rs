@@ -414,6 +414,24 @@ fn main() {
         "COUNTER_UDINT", FB_COUNTER_UDINT, SL_TYPE_COUNTER_UDINT, sl_counter_udint_cycle;
     }
 
+    // VIOLATIONCOUNTER, both widths: enabled, a good input every call (counter at 0, RUN).
+    macro_rules! violation_row {
+        ($($name:literal, $ty:ty, $tag:expr, $cycle:ident;)*) => {$(
+            let mut fb = <$ty>::default();
+            fb.wInputActive = SL_VIOLATIONCOUNTER_ACTIVE;
+            (fb.nIncrementError, fb.nDecrementNoError, fb.nCounterLimit) = (3, 1, 10);
+            (fb.bInput, fb.bEnable, fb.bRun) = (1, 1, 1);
+            fb.init();
+            let private = size_of_val(&fb.stPrivate);
+            rows.push(measure(($name, $tag, logic), batches, fb, private, $cycle, |f| f.nState));
+        )*};
+    }
+    use safelogic::blocks::violationcounter::*;
+    violation_row! {
+        "VIOCNT_UINT", FB_VIOLATIONCOUNTER_UINT, SL_TYPE_VIOLATIONCOUNTER_UINT, sl_violationcounter_uint_cycle;
+        "VIOCNT_UDINT", FB_VIOLATIONCOUNTER_UDINT, SL_TYPE_VIOLATIONCOUNTER_UDINT, sl_violationcounter_udint_cycle;
+    }
+
     let cpu = std::fs::read_to_string("/proc/cpuinfo")
         .ok()
         .and_then(|s| {

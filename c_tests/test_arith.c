@@ -7,6 +7,8 @@
  * AboveMax, MinValue > MaxValue (ERROR 0x4090 from inputs, SL_E_CONFIG from parameters),
  * and an analog value gating a Boolean AND in a group. FB_COUNTER (manual §4.22, ABI-2
  * §11.5; semantics K1-K4): Reset level, edges, CounterOut/CounterZero, overflow 0x40B9.
+ * FB_VIOLATIONCOUNTER (manual §4.33, ABI-2 §11.12; semantics V1-V4): weighted counting,
+ * the limit, START.
  */
 #include "harness.h"
 
@@ -301,8 +303,47 @@ static void counter_uint_counts_and_overflows(void)
     h_end();
 }
 
+static void violationcounter_udint_limit(void)
+{
+    FB_VIOLATIONCOUNTER_UDINT v;
+    memset(&v, 0, sizeof v);
+    h_begin("VIOLATIONCOUNTER_UDINT: +3 per violation, -1 per good call, limit 7, START (V1, V2)");
+    v.wInputActive = SL_VIOLATIONCOUNTER_ACTIVE;
+    v.nIncrementError = 3;
+    v.nDecrementNoError = 1;
+    v.nCounterLimit = 7;
+    CHECK_INT(sl_violationcounter_udint_init(&v), SL_OK);
+    v.bRun = 1;
+    v.bEnable = 1;
+    v.bInput = 0;
+    CHECK_INT(sl_violationcounter_udint_cycle(&v, 0), SL_OK);
+    CHECK_INT(v.nActViolationCnt, 3);
+    CHECK_INT(v.bInputOK, 1);
+    CHECK_INT(v.nState, SL_STATE_RUN);
+    sl_violationcounter_udint_cycle(&v, 1);
+    sl_violationcounter_udint_cycle(&v, 2);
+    CHECK_INT(v.nActViolationCnt, 9);
+    CHECK_INT(v.bInputOK, 0);
+    CHECK_INT(v.nState, SL_STATE_SAFE);
+    v.bInput = 1;
+    sl_violationcounter_udint_cycle(&v, 3);
+    sl_violationcounter_udint_cycle(&v, 4);
+    CHECK_INT(v.nActViolationCnt, 7);
+    CHECK_INT(v.bInputOK, 0); /* reaching the limit is not OK */
+    sl_violationcounter_udint_cycle(&v, 5);
+    CHECK_INT(v.bInputOK, 1);
+    v.bEnable = 0;
+    sl_violationcounter_udint_cycle(&v, 6);
+    CHECK_INT(v.nState, SL_STATE_START);
+    CHECK_INT(v.nActViolationCnt, 0);
+    CHECK_INT(v.bInputOK, 0);
+    CHECK_INT(v.nDiagTextId, 0);
+    h_end();
+}
+
 void run_arith_scenarios(void)
 {
+    violationcounter_udint_limit();
     counter_uint_counts_and_overflows();
     limit_int_window_and_error();
     limit_gates_an_and_in_a_group();

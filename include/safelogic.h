@@ -515,6 +515,21 @@
 #define SL_TWOHAND_PAIRS_TIME_MAX 2500
 
 /*
+ Type tag of FB_VIOLATIONCOUNTER_UINT (ABI-2 §10.6, order of §10.3).
+ */
+#define SL_TYPE_VIOLATIONCOUNTER_UINT 68
+
+/*
+ FB_VIOLATIONCOUNTER_UDINT.
+ */
+#define SL_TYPE_VIOLATIONCOUNTER_UDINT 69
+
+/*
+ `wInputActive` of FB VIOLATIONCOUNTER: Input (bit 0) and Enable (bit 1), both required.
+ */
+#define SL_VIOLATIONCOUNTER_ACTIVE 3
+
+/*
  Block type tag of FB_XOR.
  */
 #define SL_TYPE_XOR 5
@@ -5141,6 +5156,248 @@ typedef struct FB_COUNTER_UDINT {
 } FB_COUNTER_UDINT;
 
 
+/*
+ Private state of FB VIOLATIONCOUNTER (48 bytes). Never written by the user.
+ */
+typedef struct SL_VIOLATIONCOUNTER_PRIVATE {
+  /*
+   Common head (`nActive`, `nNegated`: the latched bit sets).
+   */
+  struct SL_PRIVATE_HEADER stHeader;
+  /*
+   Latched Increment Error, Decrement No Error, Counter Limit as 32-bit patterns.
+   */
+  uint32_t adwParam[3];
+  /*
+   The error counter.
+   */
+  uint32_t dwCount;
+  /*
+   Reserved.
+   */
+  uint8_t aReserved[4];
+} SL_VIOLATIONCOUNTER_PRIVATE;
+
+/*
+ FB VIOLATIONCOUNTER instance (ABI-2 §11.12), generic over the unsigned type `T`; `P1`
+ (after `wInputNegated`) and `P2` (after ActViolationCnt) are the reserved gaps that make
+ the two layouts differ.
+ */
+typedef struct FB_VIOLATIONCOUNTER_UINT {
+  /*
+   Offset 0. Input: logically TRUE decrements, FALSE increments (active bit 0,
+   negation bit 0).
+   */
+  SL_BOOL bInput;
+  /*
+   Offset 1. Enable: FALSE = START, counter 0 (active bit 1).
+   */
+  SL_BOOL bEnable;
+  /*
+   Offset 2. Reserved, keep 0.
+   */
+  uint8_t aReserved0[14];
+  /*
+   Offset 16. FbRun of the owning group: TRUE = the block executes.
+   */
+  SL_BOOL bRun;
+  /*
+   Offset 17. ErrAck of the owning group.
+   */
+  SL_BOOL bErrAck;
+  /*
+   Offset 18. Reserved, keep 0.
+   */
+  uint8_t aReserved1[2];
+  /*
+   At 20: "Increment Error", added per call with a violation.
+   */
+  uint16_t nIncrementError;
+  /*
+   At 20 + W: "Decrement No Error", subtracted per call without one.
+   */
+  uint16_t nDecrementNoError;
+  /*
+   At 20 + 2W: "Counter Limit" (≥ 1): InputOK = counter < limit.
+   */
+  uint16_t nCounterLimit;
+  /*
+   At 20 + 3W: bits 0 and 1 must be set (SL_VIOLATIONCOUNTER_ACTIVE).
+   */
+  uint16_t wInputActive;
+  /*
+   At 22 + 3W: bit 0 set = Input is negated; no other bit.
+   */
+  uint16_t wInputNegated;
+  /*
+   Reserved up to the output base (16-bit 32, 32-bit 40).
+   */
+  uint8_t aReserved2[2];
+  /*
+   Output base + 0. Reserved (the block has no Error output).
+   */
+  uint8_t aReserved3[1];
+  /*
+   Output base + 1: InputOK, TRUE in RUN only.
+   */
+  SL_BOOL bInputOK;
+  /*
+   Output base + 2. Reserved.
+   */
+  uint8_t aReserved4[6];
+  /*
+   Output base + 8: ActViolationCnt, the counter in RUN and SAFE, else 0.
+   */
+  uint16_t nActViolationCnt;
+  /*
+   Reserved up to the info data.
+   */
+  uint8_t aReserved5[6];
+  /*
+   Info + 0: the manual's status value (RUN, STOP, SAFE, START; ERROR, RESET).
+   */
+  uint8_t nState;
+  /*
+   Info + 1. Reserved.
+   */
+  uint8_t aReserved6[1];
+  /*
+   Info + 2: 0 (no diag values) + library bits 13-15.
+   */
+  uint16_t nDiag;
+  /*
+   Info + 4: always 0 (the block has no diag message).
+   */
+  uint16_t nDiagTextId;
+  /*
+   Info + 6. Reserved.
+   */
+  uint8_t aReserved7[2];
+  /*
+   Info + 8: always 0.
+   */
+  uint32_t dwDiagPar2;
+  /*
+   Info + 12: always 0.
+   */
+  uint32_t dwDiagPar3;
+  /*
+   Info + 16: private state, 48 bytes: never write it.
+   */
+  struct SL_VIOLATIONCOUNTER_PRIVATE stPrivate;
+} FB_VIOLATIONCOUNTER_UINT;
+
+
+/*
+ FB VIOLATIONCOUNTER instance (ABI-2 §11.12), generic over the unsigned type `T`; `P1`
+ (after `wInputNegated`) and `P2` (after ActViolationCnt) are the reserved gaps that make
+ the two layouts differ.
+ */
+typedef struct FB_VIOLATIONCOUNTER_UDINT {
+  /*
+   Offset 0. Input: logically TRUE decrements, FALSE increments (active bit 0,
+   negation bit 0).
+   */
+  SL_BOOL bInput;
+  /*
+   Offset 1. Enable: FALSE = START, counter 0 (active bit 1).
+   */
+  SL_BOOL bEnable;
+  /*
+   Offset 2. Reserved, keep 0.
+   */
+  uint8_t aReserved0[14];
+  /*
+   Offset 16. FbRun of the owning group: TRUE = the block executes.
+   */
+  SL_BOOL bRun;
+  /*
+   Offset 17. ErrAck of the owning group.
+   */
+  SL_BOOL bErrAck;
+  /*
+   Offset 18. Reserved, keep 0.
+   */
+  uint8_t aReserved1[2];
+  /*
+   At 20: "Increment Error", added per call with a violation.
+   */
+  uint32_t nIncrementError;
+  /*
+   At 20 + W: "Decrement No Error", subtracted per call without one.
+   */
+  uint32_t nDecrementNoError;
+  /*
+   At 20 + 2W: "Counter Limit" (≥ 1): InputOK = counter < limit.
+   */
+  uint32_t nCounterLimit;
+  /*
+   At 20 + 3W: bits 0 and 1 must be set (SL_VIOLATIONCOUNTER_ACTIVE).
+   */
+  uint16_t wInputActive;
+  /*
+   At 22 + 3W: bit 0 set = Input is negated; no other bit.
+   */
+  uint16_t wInputNegated;
+  /*
+   Reserved up to the output base (16-bit 32, 32-bit 40).
+   */
+  uint8_t aReserved2[4];
+  /*
+   Output base + 0. Reserved (the block has no Error output).
+   */
+  uint8_t aReserved3[1];
+  /*
+   Output base + 1: InputOK, TRUE in RUN only.
+   */
+  SL_BOOL bInputOK;
+  /*
+   Output base + 2. Reserved.
+   */
+  uint8_t aReserved4[6];
+  /*
+   Output base + 8: ActViolationCnt, the counter in RUN and SAFE, else 0.
+   */
+  uint32_t nActViolationCnt;
+  /*
+   Reserved up to the info data.
+   */
+  uint8_t aReserved5[4];
+  /*
+   Info + 0: the manual's status value (RUN, STOP, SAFE, START; ERROR, RESET).
+   */
+  uint8_t nState;
+  /*
+   Info + 1. Reserved.
+   */
+  uint8_t aReserved6[1];
+  /*
+   Info + 2: 0 (no diag values) + library bits 13-15.
+   */
+  uint16_t nDiag;
+  /*
+   Info + 4: always 0 (the block has no diag message).
+   */
+  uint16_t nDiagTextId;
+  /*
+   Info + 6. Reserved.
+   */
+  uint8_t aReserved7[2];
+  /*
+   Info + 8: always 0.
+   */
+  uint32_t dwDiagPar2;
+  /*
+   Info + 12: always 0.
+   */
+  uint32_t dwDiagPar3;
+  /*
+   Info + 16: private state, 48 bytes: never write it.
+   */
+  struct SL_VIOLATIONCOUNTER_PRIVATE stPrivate;
+} FB_VIOLATIONCOUNTER_UDINT;
+
+
 #ifdef __cplusplus
 extern "C" {
 #endif // __cplusplus
@@ -5355,6 +5612,10 @@ int32_t sl_counter_dint_init(struct FB_COUNTER_DINT *fb);
 int32_t sl_counter_dint_cycle(struct FB_COUNTER_DINT *fb, uint32_t tNow);
 int32_t sl_counter_udint_init(struct FB_COUNTER_UDINT *fb);
 int32_t sl_counter_udint_cycle(struct FB_COUNTER_UDINT *fb, uint32_t tNow);
+int32_t sl_violationcounter_uint_init(struct FB_VIOLATIONCOUNTER_UINT *fb);
+int32_t sl_violationcounter_uint_cycle(struct FB_VIOLATIONCOUNTER_UINT *fb, uint32_t tNow);
+int32_t sl_violationcounter_udint_init(struct FB_VIOLATIONCOUNTER_UDINT *fb);
+int32_t sl_violationcounter_udint_cycle(struct FB_VIOLATIONCOUNTER_UDINT *fb, uint32_t tNow);
 
 #ifdef __cplusplus
 }  // extern "C"
@@ -6407,5 +6668,62 @@ SL_STATIC_ASSERT(offsetof(FB_COUNTER_UDINT, dwDiagPar2) == 56, "offset of FB_COU
 SL_STATIC_ASSERT(offsetof(FB_COUNTER_UDINT, dwDiagPar3) == 60, "offset of FB_COUNTER_UDINT.dwDiagPar3");
 SL_STATIC_ASSERT(offsetof(FB_COUNTER_UDINT, stPrivate) == 64, "offset of FB_COUNTER_UDINT.stPrivate");
 SL_STATIC_ASSERT(sizeof(FB_COUNTER_UDINT) == 120, "size of FB_COUNTER_UDINT");
+SL_STATIC_ASSERT(offsetof(SL_VIOLATIONCOUNTER_PRIVATE, stHeader) == 0, "offset of SL_VIOLATIONCOUNTER_PRIVATE.stHeader");
+SL_STATIC_ASSERT(offsetof(SL_VIOLATIONCOUNTER_PRIVATE, adwParam) == 28, "offset of SL_VIOLATIONCOUNTER_PRIVATE.adwParam");
+SL_STATIC_ASSERT(offsetof(SL_VIOLATIONCOUNTER_PRIVATE, dwCount) == 40, "offset of SL_VIOLATIONCOUNTER_PRIVATE.dwCount");
+SL_STATIC_ASSERT(offsetof(SL_VIOLATIONCOUNTER_PRIVATE, aReserved) == 44, "offset of SL_VIOLATIONCOUNTER_PRIVATE.aReserved");
+SL_STATIC_ASSERT(sizeof(SL_VIOLATIONCOUNTER_PRIVATE) == 48, "size of SL_VIOLATIONCOUNTER_PRIVATE");
+SL_STATIC_ASSERT(offsetof(FB_VIOLATIONCOUNTER_UINT, bInput) == 0, "offset of FB_VIOLATIONCOUNTER_UINT.bInput");
+SL_STATIC_ASSERT(offsetof(FB_VIOLATIONCOUNTER_UINT, bEnable) == 1, "offset of FB_VIOLATIONCOUNTER_UINT.bEnable");
+SL_STATIC_ASSERT(offsetof(FB_VIOLATIONCOUNTER_UINT, aReserved0) == 2, "offset of FB_VIOLATIONCOUNTER_UINT.aReserved0");
+SL_STATIC_ASSERT(offsetof(FB_VIOLATIONCOUNTER_UINT, bRun) == 16, "offset of FB_VIOLATIONCOUNTER_UINT.bRun");
+SL_STATIC_ASSERT(offsetof(FB_VIOLATIONCOUNTER_UINT, bErrAck) == 17, "offset of FB_VIOLATIONCOUNTER_UINT.bErrAck");
+SL_STATIC_ASSERT(offsetof(FB_VIOLATIONCOUNTER_UINT, aReserved1) == 18, "offset of FB_VIOLATIONCOUNTER_UINT.aReserved1");
+SL_STATIC_ASSERT(offsetof(FB_VIOLATIONCOUNTER_UINT, nIncrementError) == 20, "offset of FB_VIOLATIONCOUNTER_UINT.nIncrementError");
+SL_STATIC_ASSERT(offsetof(FB_VIOLATIONCOUNTER_UINT, nDecrementNoError) == 22, "offset of FB_VIOLATIONCOUNTER_UINT.nDecrementNoError");
+SL_STATIC_ASSERT(offsetof(FB_VIOLATIONCOUNTER_UINT, nCounterLimit) == 24, "offset of FB_VIOLATIONCOUNTER_UINT.nCounterLimit");
+SL_STATIC_ASSERT(offsetof(FB_VIOLATIONCOUNTER_UINT, wInputActive) == 26, "offset of FB_VIOLATIONCOUNTER_UINT.wInputActive");
+SL_STATIC_ASSERT(offsetof(FB_VIOLATIONCOUNTER_UINT, wInputNegated) == 28, "offset of FB_VIOLATIONCOUNTER_UINT.wInputNegated");
+SL_STATIC_ASSERT(offsetof(FB_VIOLATIONCOUNTER_UINT, aReserved2) == 30, "offset of FB_VIOLATIONCOUNTER_UINT.aReserved2");
+SL_STATIC_ASSERT(offsetof(FB_VIOLATIONCOUNTER_UINT, aReserved3) == 32, "offset of FB_VIOLATIONCOUNTER_UINT.aReserved3");
+SL_STATIC_ASSERT(offsetof(FB_VIOLATIONCOUNTER_UINT, bInputOK) == 33, "offset of FB_VIOLATIONCOUNTER_UINT.bInputOK");
+SL_STATIC_ASSERT(offsetof(FB_VIOLATIONCOUNTER_UINT, aReserved4) == 34, "offset of FB_VIOLATIONCOUNTER_UINT.aReserved4");
+SL_STATIC_ASSERT(offsetof(FB_VIOLATIONCOUNTER_UINT, nActViolationCnt) == 40, "offset of FB_VIOLATIONCOUNTER_UINT.nActViolationCnt");
+SL_STATIC_ASSERT(offsetof(FB_VIOLATIONCOUNTER_UINT, aReserved5) == 42, "offset of FB_VIOLATIONCOUNTER_UINT.aReserved5");
+SL_STATIC_ASSERT(offsetof(FB_VIOLATIONCOUNTER_UINT, nState) == 48, "offset of FB_VIOLATIONCOUNTER_UINT.nState");
+SL_STATIC_ASSERT(offsetof(FB_VIOLATIONCOUNTER_UINT, aReserved6) == 49, "offset of FB_VIOLATIONCOUNTER_UINT.aReserved6");
+SL_STATIC_ASSERT(offsetof(FB_VIOLATIONCOUNTER_UINT, nDiag) == 50, "offset of FB_VIOLATIONCOUNTER_UINT.nDiag");
+SL_STATIC_ASSERT(offsetof(FB_VIOLATIONCOUNTER_UINT, nDiagTextId) == 52, "offset of FB_VIOLATIONCOUNTER_UINT.nDiagTextId");
+SL_STATIC_ASSERT(offsetof(FB_VIOLATIONCOUNTER_UINT, aReserved7) == 54, "offset of FB_VIOLATIONCOUNTER_UINT.aReserved7");
+SL_STATIC_ASSERT(offsetof(FB_VIOLATIONCOUNTER_UINT, dwDiagPar2) == 56, "offset of FB_VIOLATIONCOUNTER_UINT.dwDiagPar2");
+SL_STATIC_ASSERT(offsetof(FB_VIOLATIONCOUNTER_UINT, dwDiagPar3) == 60, "offset of FB_VIOLATIONCOUNTER_UINT.dwDiagPar3");
+SL_STATIC_ASSERT(offsetof(FB_VIOLATIONCOUNTER_UINT, stPrivate) == 64, "offset of FB_VIOLATIONCOUNTER_UINT.stPrivate");
+SL_STATIC_ASSERT(sizeof(FB_VIOLATIONCOUNTER_UINT) == 112, "size of FB_VIOLATIONCOUNTER_UINT");
+SL_STATIC_ASSERT(offsetof(FB_VIOLATIONCOUNTER_UDINT, bInput) == 0, "offset of FB_VIOLATIONCOUNTER_UDINT.bInput");
+SL_STATIC_ASSERT(offsetof(FB_VIOLATIONCOUNTER_UDINT, bEnable) == 1, "offset of FB_VIOLATIONCOUNTER_UDINT.bEnable");
+SL_STATIC_ASSERT(offsetof(FB_VIOLATIONCOUNTER_UDINT, aReserved0) == 2, "offset of FB_VIOLATIONCOUNTER_UDINT.aReserved0");
+SL_STATIC_ASSERT(offsetof(FB_VIOLATIONCOUNTER_UDINT, bRun) == 16, "offset of FB_VIOLATIONCOUNTER_UDINT.bRun");
+SL_STATIC_ASSERT(offsetof(FB_VIOLATIONCOUNTER_UDINT, bErrAck) == 17, "offset of FB_VIOLATIONCOUNTER_UDINT.bErrAck");
+SL_STATIC_ASSERT(offsetof(FB_VIOLATIONCOUNTER_UDINT, aReserved1) == 18, "offset of FB_VIOLATIONCOUNTER_UDINT.aReserved1");
+SL_STATIC_ASSERT(offsetof(FB_VIOLATIONCOUNTER_UDINT, nIncrementError) == 20, "offset of FB_VIOLATIONCOUNTER_UDINT.nIncrementError");
+SL_STATIC_ASSERT(offsetof(FB_VIOLATIONCOUNTER_UDINT, nDecrementNoError) == 24, "offset of FB_VIOLATIONCOUNTER_UDINT.nDecrementNoError");
+SL_STATIC_ASSERT(offsetof(FB_VIOLATIONCOUNTER_UDINT, nCounterLimit) == 28, "offset of FB_VIOLATIONCOUNTER_UDINT.nCounterLimit");
+SL_STATIC_ASSERT(offsetof(FB_VIOLATIONCOUNTER_UDINT, wInputActive) == 32, "offset of FB_VIOLATIONCOUNTER_UDINT.wInputActive");
+SL_STATIC_ASSERT(offsetof(FB_VIOLATIONCOUNTER_UDINT, wInputNegated) == 34, "offset of FB_VIOLATIONCOUNTER_UDINT.wInputNegated");
+SL_STATIC_ASSERT(offsetof(FB_VIOLATIONCOUNTER_UDINT, aReserved2) == 36, "offset of FB_VIOLATIONCOUNTER_UDINT.aReserved2");
+SL_STATIC_ASSERT(offsetof(FB_VIOLATIONCOUNTER_UDINT, aReserved3) == 40, "offset of FB_VIOLATIONCOUNTER_UDINT.aReserved3");
+SL_STATIC_ASSERT(offsetof(FB_VIOLATIONCOUNTER_UDINT, bInputOK) == 41, "offset of FB_VIOLATIONCOUNTER_UDINT.bInputOK");
+SL_STATIC_ASSERT(offsetof(FB_VIOLATIONCOUNTER_UDINT, aReserved4) == 42, "offset of FB_VIOLATIONCOUNTER_UDINT.aReserved4");
+SL_STATIC_ASSERT(offsetof(FB_VIOLATIONCOUNTER_UDINT, nActViolationCnt) == 48, "offset of FB_VIOLATIONCOUNTER_UDINT.nActViolationCnt");
+SL_STATIC_ASSERT(offsetof(FB_VIOLATIONCOUNTER_UDINT, aReserved5) == 52, "offset of FB_VIOLATIONCOUNTER_UDINT.aReserved5");
+SL_STATIC_ASSERT(offsetof(FB_VIOLATIONCOUNTER_UDINT, nState) == 56, "offset of FB_VIOLATIONCOUNTER_UDINT.nState");
+SL_STATIC_ASSERT(offsetof(FB_VIOLATIONCOUNTER_UDINT, aReserved6) == 57, "offset of FB_VIOLATIONCOUNTER_UDINT.aReserved6");
+SL_STATIC_ASSERT(offsetof(FB_VIOLATIONCOUNTER_UDINT, nDiag) == 58, "offset of FB_VIOLATIONCOUNTER_UDINT.nDiag");
+SL_STATIC_ASSERT(offsetof(FB_VIOLATIONCOUNTER_UDINT, nDiagTextId) == 60, "offset of FB_VIOLATIONCOUNTER_UDINT.nDiagTextId");
+SL_STATIC_ASSERT(offsetof(FB_VIOLATIONCOUNTER_UDINT, aReserved7) == 62, "offset of FB_VIOLATIONCOUNTER_UDINT.aReserved7");
+SL_STATIC_ASSERT(offsetof(FB_VIOLATIONCOUNTER_UDINT, dwDiagPar2) == 64, "offset of FB_VIOLATIONCOUNTER_UDINT.dwDiagPar2");
+SL_STATIC_ASSERT(offsetof(FB_VIOLATIONCOUNTER_UDINT, dwDiagPar3) == 68, "offset of FB_VIOLATIONCOUNTER_UDINT.dwDiagPar3");
+SL_STATIC_ASSERT(offsetof(FB_VIOLATIONCOUNTER_UDINT, stPrivate) == 72, "offset of FB_VIOLATIONCOUNTER_UDINT.stPrivate");
+SL_STATIC_ASSERT(sizeof(FB_VIOLATIONCOUNTER_UDINT) == 120, "size of FB_VIOLATIONCOUNTER_UDINT");
 
 #endif  /* SAFELOGIC_H */

@@ -299,6 +299,8 @@ macro_rules! for_each_block {
             $crate::blocks::counter::FB_COUNTER_UINT => sl_counter_uint_init, sl_counter_uint_cycle;
             $crate::blocks::counter::FB_COUNTER_DINT => sl_counter_dint_init, sl_counter_dint_cycle;
             $crate::blocks::counter::FB_COUNTER_UDINT => sl_counter_udint_init, sl_counter_udint_cycle;
+            $crate::blocks::violationcounter::FB_VIOLATIONCOUNTER_UINT => sl_violationcounter_uint_init, sl_violationcounter_uint_cycle;
+            $crate::blocks::violationcounter::FB_VIOLATIONCOUNTER_UDINT => sl_violationcounter_udint_init, sl_violationcounter_udint_cycle;
             // registry:end
         }
     };

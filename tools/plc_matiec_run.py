@@ -94,6 +94,13 @@ for _v in ("INT", "UINT", "DINT", "UDINT"):
         cfg=dict(wInputActive=0x7, nPresetValue=3, nCounterLimit=5), pulse=("bCountUp",),
         change=("nCounterLimit", 6), run={1})
 
+# VIOLATIONCOUNTER (UINT, UDINT): enabled with a good input; changing the limit while
+# running is the error.
+for _v in ("UINT", "UDINT"):
+    BLOCKS[f"VIOLATIONCOUNTER_{_v}"] = dict(
+        cfg=dict(wInputActive=0x3, nIncrementError=3, nDecrementNoError=1, nCounterLimit=10,
+                 bInput=1, bEnable=1), pulse=None, change=("nCounterLimit", 11), run={1})
+
 
 BLOCK_INPUTS = {}  # block -> its BOOL inputs (filled from the header in main)
 

@@ -609,6 +609,36 @@ static void test_param_structs(void)
       off = (off + sizeof(int32_t) - 1) / sizeof(int32_t) * sizeof(int32_t);
       CHECK(offsetof(cds_sl_counter_udint_cycle_struct, cds_sl_counter_udint_cycle) == off, "cds_sl_counter_udint_cycle_struct return value at %zu, expected %zu", offsetof(cds_sl_counter_udint_cycle_struct, cds_sl_counter_udint_cycle), off); }
     { size_t off = 0;
+      off = (off + sizeof(void *) - 1) / sizeof(void *) * sizeof(void *);
+      CHECK(offsetof(cds_sl_violationcounter_uint_init_struct, pFb) == off, "cds_sl_violationcounter_uint_init_struct.pFb at %zu, expected %zu", offsetof(cds_sl_violationcounter_uint_init_struct, pFb), off);
+      off += sizeof(void *);
+      off = (off + sizeof(int32_t) - 1) / sizeof(int32_t) * sizeof(int32_t);
+      CHECK(offsetof(cds_sl_violationcounter_uint_init_struct, cds_sl_violationcounter_uint_init) == off, "cds_sl_violationcounter_uint_init_struct return value at %zu, expected %zu", offsetof(cds_sl_violationcounter_uint_init_struct, cds_sl_violationcounter_uint_init), off); }
+    { size_t off = 0;
+      off = (off + sizeof(void *) - 1) / sizeof(void *) * sizeof(void *);
+      CHECK(offsetof(cds_sl_violationcounter_uint_cycle_struct, pFb) == off, "cds_sl_violationcounter_uint_cycle_struct.pFb at %zu, expected %zu", offsetof(cds_sl_violationcounter_uint_cycle_struct, pFb), off);
+      off += sizeof(void *);
+      off = (off + sizeof(uint32_t) - 1) / sizeof(uint32_t) * sizeof(uint32_t);
+      CHECK(offsetof(cds_sl_violationcounter_uint_cycle_struct, tNow) == off, "cds_sl_violationcounter_uint_cycle_struct.tNow at %zu, expected %zu", offsetof(cds_sl_violationcounter_uint_cycle_struct, tNow), off);
+      off += sizeof(uint32_t);
+      off = (off + sizeof(int32_t) - 1) / sizeof(int32_t) * sizeof(int32_t);
+      CHECK(offsetof(cds_sl_violationcounter_uint_cycle_struct, cds_sl_violationcounter_uint_cycle) == off, "cds_sl_violationcounter_uint_cycle_struct return value at %zu, expected %zu", offsetof(cds_sl_violationcounter_uint_cycle_struct, cds_sl_violationcounter_uint_cycle), off); }
+    { size_t off = 0;
+      off = (off + sizeof(void *) - 1) / sizeof(void *) * sizeof(void *);
+      CHECK(offsetof(cds_sl_violationcounter_udint_init_struct, pFb) == off, "cds_sl_violationcounter_udint_init_struct.pFb at %zu, expected %zu", offsetof(cds_sl_violationcounter_udint_init_struct, pFb), off);
+      off += sizeof(void *);
+      off = (off + sizeof(int32_t) - 1) / sizeof(int32_t) * sizeof(int32_t);
+      CHECK(offsetof(cds_sl_violationcounter_udint_init_struct, cds_sl_violationcounter_udint_init) == off, "cds_sl_violationcounter_udint_init_struct return value at %zu, expected %zu", offsetof(cds_sl_violationcounter_udint_init_struct, cds_sl_violationcounter_udint_init), off); }
+    { size_t off = 0;
+      off = (off + sizeof(void *) - 1) / sizeof(void *) * sizeof(void *);
+      CHECK(offsetof(cds_sl_violationcounter_udint_cycle_struct, pFb) == off, "cds_sl_violationcounter_udint_cycle_struct.pFb at %zu, expected %zu", offsetof(cds_sl_violationcounter_udint_cycle_struct, pFb), off);
+      off += sizeof(void *);
+      off = (off + sizeof(uint32_t) - 1) / sizeof(uint32_t) * sizeof(uint32_t);
+      CHECK(offsetof(cds_sl_violationcounter_udint_cycle_struct, tNow) == off, "cds_sl_violationcounter_udint_cycle_struct.tNow at %zu, expected %zu", offsetof(cds_sl_violationcounter_udint_cycle_struct, tNow), off);
+      off += sizeof(uint32_t);
+      off = (off + sizeof(int32_t) - 1) / sizeof(int32_t) * sizeof(int32_t);
+      CHECK(offsetof(cds_sl_violationcounter_udint_cycle_struct, cds_sl_violationcounter_udint_cycle) == off, "cds_sl_violationcounter_udint_cycle_struct return value at %zu, expected %zu", offsetof(cds_sl_violationcounter_udint_cycle_struct, cds_sl_violationcounter_udint_cycle), off); }
+    { size_t off = 0;
       off = (off + sizeof(uint32_t) - 1) / sizeof(uint32_t) * sizeof(uint32_t);
       CHECK(offsetof(cds_sl_time_now_ms_struct, cds_sl_time_now_ms) == off, "cds_sl_time_now_ms_struct return value at %zu, expected %zu", offsetof(cds_sl_time_now_ms_struct, cds_sl_time_now_ms), off); }
     { size_t off = 0;
@@ -4438,6 +4468,198 @@ static void test_counter_udint(void)
     CHECK(reached_error, "FB_COUNTER_UDINT: the random test never reached ERROR");
 }
 
+static void rnd_config_violationcounter_uint(FB_VIOLATIONCOUNTER_UINT *x)
+{
+    { static const unsigned v[] = {0u, 1u, 10u, 100u}; x->nIncrementError = (uint16_t)v[rnd() % 4u]; }
+    { static const unsigned v[] = {0u, 1u, 10u, 100u}; x->nDecrementNoError = (uint16_t)v[rnd() % 4u]; }
+    { static const unsigned v[] = {0u, 1u, 10u, 100u}; x->nCounterLimit = (uint16_t)v[rnd() % 4u]; }
+    x->wInputActive = (uint16_t)(rnd() & 0x3u);
+    x->wInputNegated = (uint16_t)(rnd() % 2u == 0u ? 0u : (rnd() & 0x3u));
+}
+/* 1: a valid configuration (want_valid) or an invalid one was drawn into a and b */
+static int draw_violationcounter_uint(FB_VIOLATIONCOUNTER_UINT *a, FB_VIOLATIONCOUNTER_UINT *b, int want_valid)
+{
+    long k;
+    for (k = 0; k < 200000L; k++) {
+        static FB_VIOLATIONCOUNTER_UINT x;
+        int valid;
+        memset(&x, 0, sizeof x);
+        rnd_config_violationcounter_uint(&x);
+        valid = sl_violationcounter_uint_init(&x) == SL_OK && sl_violationcounter_uint_cycle(&x, 0u) == SL_OK;
+        if (valid == want_valid) {
+            memset(&x.bRun, 0, 0); /* keep x's parameters, reset the instance */
+            memset(a, 0, sizeof *a);
+            rnd_config_violationcounter_uint(a); /* placeholder, overwritten below */
+            a->nIncrementError = x.nIncrementError;
+            a->nDecrementNoError = x.nDecrementNoError;
+            a->nCounterLimit = x.nCounterLimit;
+            a->wInputActive = x.wInputActive;
+            a->wInputNegated = x.wInputNegated;
+            *b = *a;
+            return 1;
+        }
+    }
+    return 0;
+}
+static void test_violationcounter_uint(void)
+{
+    static FB_VIOLATIONCOUNTER_UINT a, b;
+    cds_sl_violationcounter_uint_cycle_struct p;
+    int c, k, bump, ok = 0, cycles = 0, inv_cycles = 0, inv_config = 0, reached_run = 0, reached_error = 0;
+    int hist[12] = {0};
+    unsigned pol = 0;
+    uint32_t t = 1000u;
+    memset(&a, 0, sizeof a);
+    memset(&b, 0, sizeof b);
+    memset(&p, 0, sizeof p);
+    p.pFb = NULL;
+    p.cds_sl_violationcounter_uint_cycle = 12345;
+    cds_sl_violationcounter_uint_cycle(&p);
+    CHECK(p.cds_sl_violationcounter_uint_cycle == SL_E_NULL, "cds_sl_violationcounter_uint_cycle(NULL) returned %d", (int)p.cds_sl_violationcounter_uint_cycle);
+    a.bRun = b.bRun = 1;
+    a.wInputActive = b.wInputActive = 1;
+    { cds_sl_violationcounter_uint_init_struct q; int32_t r; q.pFb = &a; cds_sl_violationcounter_uint_init(&q); r = sl_violationcounter_uint_init(&b);
+      CHECK(q.cds_sl_violationcounter_uint_init == r && memcmp(&a, &b, sizeof a) == 0, "cds_sl_violationcounter_uint_init differs from sl_violationcounter_uint_init"); }
+    rng = 985942360u; /* FNV-1a of "FB_VIOLATIONCOUNTER_UINT" */
+    machine = 1u;
+    for (c = 0; c < 20; c++) {
+        int valid = c < 16; /* 16 valid configurations, then the labelled invalid share: 4 */
+        if (!draw_violationcounter_uint(&a, &b, valid)) {
+            CHECK(!valid, "FB_VIOLATIONCOUNTER_UINT: no valid configuration found in 200000 random draws");
+            continue;
+        }
+        if (!valid) inv_config++;
+        a.bInput = b.bInput = (uint8_t)(1);
+        a.bEnable = b.bEnable = (uint8_t)(1);
+        a.bErrAck = b.bErrAck = (uint8_t)(0);
+        bump = 20 + (int)(rnd() % 20u);
+        pol = (c % 2 == 1) ? rnd() : 0u;
+        for (k = 0; k < 50; k++) {
+            int32_t direct;
+            next_machine();
+            a.bInput = b.bInput = next_signal(a.bInput, 0, pol >> 0);
+            a.bEnable = b.bEnable = next_signal(a.bEnable, 0, pol >> 1);
+            a.bErrAck = b.bErrAck = next_signal(a.bErrAck, 1, pol >> 2);
+            a.bRun = b.bRun = (uint8_t)(k >= 2 && rnd() % 100u != 0u);
+            if (valid && k == bump) { a.wInputNegated++; b.wInputNegated++; } /* changed while running: ERROR */
+            if (valid && k == bump + 2) { a.wInputNegated--; b.wInputNegated--; } /* restored */
+            p.pFb = &a;
+            p.tNow = t += 10u;
+            cds_sl_violationcounter_uint_cycle(&p);
+            direct = sl_violationcounter_uint_cycle(&b, p.tNow);
+            CHECK(p.cds_sl_violationcounter_uint_cycle == direct, "FB_VIOLATIONCOUNTER_UINT config %d cycle %d: adapter %d, direct %d", c, k, (int)p.cds_sl_violationcounter_uint_cycle, (int)direct);
+            CHECK(memcmp(&a, &b, sizeof a) == 0, "FB_VIOLATIONCOUNTER_UINT config %d cycle %d: instances differ", c, k);
+            if (!valid) { inv_cycles++; continue; }
+            cycles++;
+            if (direct == SL_OK) ok++;
+            if (direct <= 0 && direct > -12) hist[-direct]++;
+            if (b.nState == SL_STATE_ERROR) reached_error = 1;
+            if (b.nState != SL_STATE_STOP && b.nState != SL_STATE_ERROR && b.nState != SL_STATE_RESET && (b.bInputOK)) reached_run = 1;
+        }
+    }
+    printf("FB_VIOLATIONCOUNTER_UINT: %d of %d cycles (16 valid random configurations) returned SL_OK; run-like state %s, ERROR %s; invalid share: %d configurations, %d cycles\n", ok, cycles, reached_run ? "reached" : "NOT reached", reached_error ? "reached" : "NOT reached", inv_config, inv_cycles);
+    if (2 * ok <= cycles) printf("  status histogram (0, -1, ... -11): %d %d %d %d %d %d %d %d %d %d %d\n", hist[0], hist[1], hist[2], hist[3], hist[4], hist[5], hist[6], hist[7], hist[8], hist[9], hist[10]);
+    CHECK(cycles > 0 && 2 * ok > cycles, "FB_VIOLATIONCOUNTER_UINT: only %d of %d cycles with valid configurations returned SL_OK", ok, cycles);
+    CHECK(reached_run, "FB_VIOLATIONCOUNTER_UINT: the random test never reached a running state (an output on)");
+    CHECK(reached_error, "FB_VIOLATIONCOUNTER_UINT: the random test never reached ERROR");
+}
+
+static void rnd_config_violationcounter_udint(FB_VIOLATIONCOUNTER_UDINT *x)
+{
+    { static const unsigned v[] = {0u, 1u, 10u, 100u}; x->nIncrementError = (uint32_t)v[rnd() % 4u]; }
+    { static const unsigned v[] = {0u, 1u, 10u, 100u}; x->nDecrementNoError = (uint32_t)v[rnd() % 4u]; }
+    { static const unsigned v[] = {0u, 1u, 10u, 100u}; x->nCounterLimit = (uint32_t)v[rnd() % 4u]; }
+    x->wInputActive = (uint16_t)(rnd() & 0x3u);
+    x->wInputNegated = (uint16_t)(rnd() % 2u == 0u ? 0u : (rnd() & 0x3u));
+}
+/* 1: a valid configuration (want_valid) or an invalid one was drawn into a and b */
+static int draw_violationcounter_udint(FB_VIOLATIONCOUNTER_UDINT *a, FB_VIOLATIONCOUNTER_UDINT *b, int want_valid)
+{
+    long k;
+    for (k = 0; k < 200000L; k++) {
+        static FB_VIOLATIONCOUNTER_UDINT x;
+        int valid;
+        memset(&x, 0, sizeof x);
+        rnd_config_violationcounter_udint(&x);
+        valid = sl_violationcounter_udint_init(&x) == SL_OK && sl_violationcounter_udint_cycle(&x, 0u) == SL_OK;
+        if (valid == want_valid) {
+            memset(&x.bRun, 0, 0); /* keep x's parameters, reset the instance */
+            memset(a, 0, sizeof *a);
+            rnd_config_violationcounter_udint(a); /* placeholder, overwritten below */
+            a->nIncrementError = x.nIncrementError;
+            a->nDecrementNoError = x.nDecrementNoError;
+            a->nCounterLimit = x.nCounterLimit;
+            a->wInputActive = x.wInputActive;
+            a->wInputNegated = x.wInputNegated;
+            *b = *a;
+            return 1;
+        }
+    }
+    return 0;
+}
+static void test_violationcounter_udint(void)
+{
+    static FB_VIOLATIONCOUNTER_UDINT a, b;
+    cds_sl_violationcounter_udint_cycle_struct p;
+    int c, k, bump, ok = 0, cycles = 0, inv_cycles = 0, inv_config = 0, reached_run = 0, reached_error = 0;
+    int hist[12] = {0};
+    unsigned pol = 0;
+    uint32_t t = 1000u;
+    memset(&a, 0, sizeof a);
+    memset(&b, 0, sizeof b);
+    memset(&p, 0, sizeof p);
+    p.pFb = NULL;
+    p.cds_sl_violationcounter_udint_cycle = 12345;
+    cds_sl_violationcounter_udint_cycle(&p);
+    CHECK(p.cds_sl_violationcounter_udint_cycle == SL_E_NULL, "cds_sl_violationcounter_udint_cycle(NULL) returned %d", (int)p.cds_sl_violationcounter_udint_cycle);
+    a.bRun = b.bRun = 1;
+    a.wInputActive = b.wInputActive = 1;
+    { cds_sl_violationcounter_udint_init_struct q; int32_t r; q.pFb = &a; cds_sl_violationcounter_udint_init(&q); r = sl_violationcounter_udint_init(&b);
+      CHECK(q.cds_sl_violationcounter_udint_init == r && memcmp(&a, &b, sizeof a) == 0, "cds_sl_violationcounter_udint_init differs from sl_violationcounter_udint_init"); }
+    rng = 404867226u; /* FNV-1a of "FB_VIOLATIONCOUNTER_UDINT" */
+    machine = 1u;
+    for (c = 0; c < 20; c++) {
+        int valid = c < 16; /* 16 valid configurations, then the labelled invalid share: 4 */
+        if (!draw_violationcounter_udint(&a, &b, valid)) {
+            CHECK(!valid, "FB_VIOLATIONCOUNTER_UDINT: no valid configuration found in 200000 random draws");
+            continue;
+        }
+        if (!valid) inv_config++;
+        a.bInput = b.bInput = (uint8_t)(1);
+        a.bEnable = b.bEnable = (uint8_t)(1);
+        a.bErrAck = b.bErrAck = (uint8_t)(0);
+        bump = 20 + (int)(rnd() % 20u);
+        pol = (c % 2 == 1) ? rnd() : 0u;
+        for (k = 0; k < 50; k++) {
+            int32_t direct;
+            next_machine();
+            a.bInput = b.bInput = next_signal(a.bInput, 0, pol >> 0);
+            a.bEnable = b.bEnable = next_signal(a.bEnable, 0, pol >> 1);
+            a.bErrAck = b.bErrAck = next_signal(a.bErrAck, 1, pol >> 2);
+            a.bRun = b.bRun = (uint8_t)(k >= 2 && rnd() % 100u != 0u);
+            if (valid && k == bump) { a.wInputNegated++; b.wInputNegated++; } /* changed while running: ERROR */
+            if (valid && k == bump + 2) { a.wInputNegated--; b.wInputNegated--; } /* restored */
+            p.pFb = &a;
+            p.tNow = t += 10u;
+            cds_sl_violationcounter_udint_cycle(&p);
+            direct = sl_violationcounter_udint_cycle(&b, p.tNow);
+            CHECK(p.cds_sl_violationcounter_udint_cycle == direct, "FB_VIOLATIONCOUNTER_UDINT config %d cycle %d: adapter %d, direct %d", c, k, (int)p.cds_sl_violationcounter_udint_cycle, (int)direct);
+            CHECK(memcmp(&a, &b, sizeof a) == 0, "FB_VIOLATIONCOUNTER_UDINT config %d cycle %d: instances differ", c, k);
+            if (!valid) { inv_cycles++; continue; }
+            cycles++;
+            if (direct == SL_OK) ok++;
+            if (direct <= 0 && direct > -12) hist[-direct]++;
+            if (b.nState == SL_STATE_ERROR) reached_error = 1;
+            if (b.nState != SL_STATE_STOP && b.nState != SL_STATE_ERROR && b.nState != SL_STATE_RESET && (b.bInputOK)) reached_run = 1;
+        }
+    }
+    printf("FB_VIOLATIONCOUNTER_UDINT: %d of %d cycles (16 valid random configurations) returned SL_OK; run-like state %s, ERROR %s; invalid share: %d configurations, %d cycles\n", ok, cycles, reached_run ? "reached" : "NOT reached", reached_error ? "reached" : "NOT reached", inv_config, inv_cycles);
+    if (2 * ok <= cycles) printf("  status histogram (0, -1, ... -11): %d %d %d %d %d %d %d %d %d %d %d\n", hist[0], hist[1], hist[2], hist[3], hist[4], hist[5], hist[6], hist[7], hist[8], hist[9], hist[10]);
+    CHECK(cycles > 0 && 2 * ok > cycles, "FB_VIOLATIONCOUNTER_UDINT: only %d of %d cycles with valid configurations returned SL_OK", ok, cycles);
+    CHECK(reached_run, "FB_VIOLATIONCOUNTER_UDINT: the random test never reached a running state (an output on)");
+    CHECK(reached_error, "FB_VIOLATIONCOUNTER_UDINT: the random test never reached ERROR");
+}
+
 int main(void)
 {
     test_param_structs();
@@ -4480,6 +4702,8 @@ int main(void)
     test_counter_uint();
     test_counter_dint();
     test_counter_udint();
+    test_violationcounter_uint();
+    test_violationcounter_udint();
     { cds_sl_time_now_ms_struct q; uint32_t t0 = sl_time_now_ms(); cds_sl_time_now_ms(&q);
       CHECK((uint32_t)(q.cds_sl_time_now_ms - t0) < 1000u, "cds_sl_time_now_ms = %u, sl_time_now_ms = %u", (unsigned)q.cds_sl_time_now_ms, (unsigned)t0); }
     cds_sl_ton2_cycle(NULL); /* a NULL parameter struct must not crash */

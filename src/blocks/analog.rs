@@ -64,3 +64,9 @@ pub fn diag_message(h: &SL_PRIVATE_HEADER, texts: &[(u16, u16)], par: [u32; 2]) 
         _ => (0, 0, 0),
     }
 }
+
+/// The unsigned variants (UINT, UDINT): blocks whose manual types are "UINT16 (n=2)
+/// UINT32 (n=4)" only, such as VIOLATIONCOUNTER.
+pub trait Unsigned: Analog {}
+impl Unsigned for u16 {}
+impl Unsigned for u32 {}

@@ -26,6 +26,7 @@ pub mod tof;
 pub mod ton;
 pub mod ton2;
 pub mod twohand;
+pub mod violationcounter;
 pub mod xor;
 
 /// The names a family's `Block` impl uses, for its expansion in a member's file.

@@ -619,6 +619,36 @@ typedef struct tagcds_sl_counter_udint_cycle_struct {
 } cds_sl_counter_udint_cycle_struct;
 void CDECL CDECL_EXT cds_sl_counter_udint_cycle(cds_sl_counter_udint_cycle_struct *p);
 
+/* FUNCTION cds_sl_violationcounter_uint_init : DINT -> sl_violationcounter_uint_init() */
+typedef struct tagcds_sl_violationcounter_uint_init_struct {
+    struct FB_VIOLATIONCOUNTER_UINT *pFb; /* VAR_INPUT pFb : POINTER TO ST_FB_VIOLATIONCOUNTER_UINT */
+    int32_t cds_sl_violationcounter_uint_init; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_violationcounter_uint_init_struct;
+void CDECL CDECL_EXT cds_sl_violationcounter_uint_init(cds_sl_violationcounter_uint_init_struct *p);
+
+/* FUNCTION cds_sl_violationcounter_uint_cycle : DINT -> sl_violationcounter_uint_cycle() */
+typedef struct tagcds_sl_violationcounter_uint_cycle_struct {
+    struct FB_VIOLATIONCOUNTER_UINT *pFb; /* VAR_INPUT pFb : POINTER TO ST_FB_VIOLATIONCOUNTER_UINT */
+    uint32_t tNow; /* VAR_INPUT tNow : UDINT */
+    int32_t cds_sl_violationcounter_uint_cycle; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_violationcounter_uint_cycle_struct;
+void CDECL CDECL_EXT cds_sl_violationcounter_uint_cycle(cds_sl_violationcounter_uint_cycle_struct *p);
+
+/* FUNCTION cds_sl_violationcounter_udint_init : DINT -> sl_violationcounter_udint_init() */
+typedef struct tagcds_sl_violationcounter_udint_init_struct {
+    struct FB_VIOLATIONCOUNTER_UDINT *pFb; /* VAR_INPUT pFb : POINTER TO ST_FB_VIOLATIONCOUNTER_UDINT */
+    int32_t cds_sl_violationcounter_udint_init; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_violationcounter_udint_init_struct;
+void CDECL CDECL_EXT cds_sl_violationcounter_udint_init(cds_sl_violationcounter_udint_init_struct *p);
+
+/* FUNCTION cds_sl_violationcounter_udint_cycle : DINT -> sl_violationcounter_udint_cycle() */
+typedef struct tagcds_sl_violationcounter_udint_cycle_struct {
+    struct FB_VIOLATIONCOUNTER_UDINT *pFb; /* VAR_INPUT pFb : POINTER TO ST_FB_VIOLATIONCOUNTER_UDINT */
+    uint32_t tNow; /* VAR_INPUT tNow : UDINT */
+    int32_t cds_sl_violationcounter_udint_cycle; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_violationcounter_udint_cycle_struct;
+void CDECL CDECL_EXT cds_sl_violationcounter_udint_cycle(cds_sl_violationcounter_udint_cycle_struct *p);
+
 /* FUNCTION cds_sl_time_now_ms : UDINT -> sl_time_now_ms() */
 typedef struct tagcds_sl_time_now_ms_struct {
     uint32_t cds_sl_time_now_ms; /* VAR_OUTPUT (return value) UDINT */
@@ -760,6 +790,10 @@ void CDECL CDECL_EXT cds_sl_group_cycle(cds_sl_group_cycle_struct *p);
     X(cds_sl_counter_dint_cycle) \
     X(cds_sl_counter_udint_init) \
     X(cds_sl_counter_udint_cycle) \
+    X(cds_sl_violationcounter_uint_init) \
+    X(cds_sl_violationcounter_uint_cycle) \
+    X(cds_sl_violationcounter_udint_init) \
+    X(cds_sl_violationcounter_udint_cycle) \
     X(cds_sl_time_now_ms) \
     X(cds_sl_ton2_get_elapsed) \
     X(cds_sl_group_init) \

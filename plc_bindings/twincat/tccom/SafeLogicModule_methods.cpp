@@ -718,6 +718,42 @@ HRESULT CSafeLogicModule::sl_counter_udint_cycle(PVOID pFb, int32_t *pnResult, u
     return S_OK;
 }
 
+HRESULT CSafeLogicModule::sl_violationcounter_uint_init(PVOID pFb, int32_t *pnResult)
+{
+    if (pFb == NULL || pnResult == NULL) {
+        return E_POINTER;
+    }
+    *pnResult = ::sl_violationcounter_uint_init(static_cast<struct FB_VIOLATIONCOUNTER_UINT *>(pFb));
+    return S_OK;
+}
+
+HRESULT CSafeLogicModule::sl_violationcounter_uint_cycle(PVOID pFb, int32_t *pnResult, uint32_t tNow)
+{
+    if (pFb == NULL || pnResult == NULL) {
+        return E_POINTER;
+    }
+    *pnResult = ::sl_violationcounter_uint_cycle(static_cast<struct FB_VIOLATIONCOUNTER_UINT *>(pFb), tNow);
+    return S_OK;
+}
+
+HRESULT CSafeLogicModule::sl_violationcounter_udint_init(PVOID pFb, int32_t *pnResult)
+{
+    if (pFb == NULL || pnResult == NULL) {
+        return E_POINTER;
+    }
+    *pnResult = ::sl_violationcounter_udint_init(static_cast<struct FB_VIOLATIONCOUNTER_UDINT *>(pFb));
+    return S_OK;
+}
+
+HRESULT CSafeLogicModule::sl_violationcounter_udint_cycle(PVOID pFb, int32_t *pnResult, uint32_t tNow)
+{
+    if (pFb == NULL || pnResult == NULL) {
+        return E_POINTER;
+    }
+    *pnResult = ::sl_violationcounter_udint_cycle(static_cast<struct FB_VIOLATIONCOUNTER_UDINT *>(pFb), tNow);
+    return S_OK;
+}
+
 HRESULT CSafeLogicModule::sl_ton2_get_elapsed(PVOID pFb, int32_t *pnResult, uint32_t * pPElapsedMs)
 {
     if (pFb == NULL || pnResult == NULL) {
