@@ -397,6 +397,24 @@ fn main() {
         "LIMIT_UDINT", FB_LIMIT_UDINT, SL_TYPE_LIMIT_UDINT, sl_limit_udint_cycle, 0x100, 500;
     }
 
+    // COMPARE 3oo5, one row per width: five inputs, three agreeing (RUN).
+    macro_rules! compare_row {
+        ($($name:literal, $ty:ty, $tag:expr, $cycle:ident;)*) => {$(
+            let mut fb = <$ty>::default();
+            (fb.nArchitecture, fb.wInputActive) = (SL_ARCH_3OO5, 0x1F00);
+            (fb.nAllowedDeviation, fb.tToleranceTime, fb.bRun) = (2, 100, 1);
+            (fb.nCompIn1, fb.nCompIn2, fb.nCompIn3, fb.nCompIn4, fb.nCompIn5) = (50, 10, 11, 90, 12);
+            fb.init();
+            let private = size_of_val(&fb.stPrivate);
+            rows.push(measure(($name, $tag, logic), batches, fb, private, $cycle, |f| f.nState));
+        )*};
+    }
+    use safelogic::blocks::compare::*;
+    compare_row! {
+        "COMPARE_INT", FB_COMPARE_INT, SL_TYPE_COMPARE_INT, sl_compare_int_cycle;
+        "COMPARE_UDINT", FB_COMPARE_UDINT, SL_TYPE_COMPARE_UDINT, sl_compare_udint_cycle;
+    }
+
     // COUNTER, one row per width: all inputs active, steady (no edge), counting from 0.
     macro_rules! counter_row {
         ($($name:literal, $ty:ty, $tag:expr, $cycle:ident;)*) => {$(

@@ -8,7 +8,8 @@
  * and an analog value gating a Boolean AND in a group. FB_COUNTER (manual §4.22, ABI-2
  * §11.5; semantics K1-K4): Reset level, edges, CounterOut/CounterZero, overflow 0x40B9.
  * FB_VIOLATIONCOUNTER (manual §4.33, ABI-2 §11.12; semantics V1-V4): weighted counting,
- * the limit, START.
+ * the limit, START. FB_COMPARE (manual §4.20, ABI-2 §11.3; semantics CP1-CP4): 2oo3
+ * majority, DELAYOUT for the tolerance time, SAFE.
  */
 #include "harness.h"
 
@@ -341,8 +342,44 @@ static void violationcounter_udint_limit(void)
     h_end();
 }
 
+static void compare_dint_two_out_of_three(void)
+{
+    FB_COMPARE_DINT c;
+    memset(&c, 0, sizeof c);
+    h_begin("COMPARE_DINT 2oo3: majority, DELAYOUT for the tolerance time, SAFE (CP1, CP2)");
+    c.nArchitecture = SL_ARCH_2OO3;
+    c.wInputActive = 0x0700;
+    c.nAllowedDeviation = 10;
+    c.tToleranceTime = 100;
+    CHECK_INT(sl_compare_dint_init(&c), SL_OK);
+    c.bRun = 1;
+    c.nCompIn1 = -70000;
+    c.nCompIn2 = 1000;
+    c.nCompIn3 = 1010;
+    CHECK_INT(sl_compare_dint_cycle(&c, 0), SL_OK);
+    CHECK_INT(c.nState, SL_STATE_RUN);
+    CHECK_INT(c.bIsValid, 1);
+    CHECK_INT(c.nCompOut, 1000);
+    c.nCompIn3 = 1011;
+    CHECK_INT(sl_compare_dint_cycle(&c, 10), SL_OK);
+    CHECK_INT(c.nState, SL_STATE_DELAYOUT);
+    CHECK_INT(c.bIsValid, 1);
+    CHECK_INT(c.nCompOut, 1000);
+    CHECK_INT(sl_compare_dint_cycle(&c, 110), SL_OK);
+    CHECK_INT(c.nState, SL_STATE_SAFE);
+    CHECK_INT(c.bIsValid, 0);
+    CHECK_INT(c.nCompOut, 0);
+    c.nCompIn1 = 1011;
+    CHECK_INT(sl_compare_dint_cycle(&c, 120), SL_OK);
+    CHECK_INT(c.nState, SL_STATE_RUN);
+    CHECK_INT(c.nCompOut, 1011);
+    CHECK_INT(c.bError, 0);
+    h_end();
+}
+
 void run_arith_scenarios(void)
 {
+    compare_dint_two_out_of_three();
     violationcounter_udint_limit();
     counter_uint_counts_and_overflows();
     limit_int_window_and_error();

@@ -143,6 +143,41 @@
 #define ARITH_ACTIVE 768
 
 /*
+ Type tag of FB_COMPARE_INT (ABI-2 §10.6: sequential from 16 in the order of §10.3).
+ */
+#define SL_TYPE_COMPARE_INT 32
+
+/*
+ FB_COMPARE_UINT.
+ */
+#define SL_TYPE_COMPARE_UINT 33
+
+/*
+ FB_COMPARE_DINT.
+ */
+#define SL_TYPE_COMPARE_DINT 34
+
+/*
+ FB_COMPARE_UDINT.
+ */
+#define SL_TYPE_COMPARE_UDINT 35
+
+/*
+ `nArchitecture` 1oo2: CompIn1 and CompIn2 must agree.
+ */
+#define SL_ARCH_1OO2 2
+
+/*
+ `nArchitecture` 2oo3: two of CompIn1–3 must agree.
+ */
+#define SL_ARCH_2OO3 3
+
+/*
+ `nArchitecture` 3oo5: three of CompIn1–5 must agree.
+ */
+#define SL_ARCH_3OO5 5
+
+/*
  Type tag of FB_COUNTER_INT (ABI-2 §10.6: after the ten four-variant blocks of §10.3).
  */
 #define SL_TYPE_COUNTER_INT 56
@@ -4248,6 +4283,501 @@ typedef struct FB_DIV_UDINT {
 
 
 /*
+ Private state of FB COMPARE (48 bytes). Never written by the user. The header's `tPhase`
+ is the start of the DelayOutTimer.
+ */
+typedef struct SL_COMPARE_PRIVATE {
+  /*
+   Common head.
+   */
+  struct SL_PRIVATE_HEADER stHeader;
+  /*
+   Latched `tToleranceTime`.
+   */
+  uint32_t tTolerance;
+  /*
+   Latched `nAllowedDeviation`.
+   */
+  uint32_t dwDeviation;
+  /*
+   Latched `nArchitecture`.
+   */
+  uint16_t wArchitecture;
+  /*
+   Latched `wInputActive`.
+   */
+  uint16_t wActive;
+  /*
+   CompOut of the last RUN cycle (held in DELAYOUT) as a 32-bit pattern.
+   */
+  uint32_t dwOut;
+  /*
+   Reserved.
+   */
+  uint8_t aReserved[4];
+} SL_COMPARE_PRIVATE;
+
+/*
+ FB COMPARE instance (ABI-2 §11.3), generic over the signal type `T`; `P1` (after
+ CompIn5) and `P2` (after CompOut) are the reserved gaps that make the 16- and 32-bit
+ layouts differ.
+ */
+typedef struct FB_COMPARE_INT {
+  /*
+   Offset 0. Reserved, keep 0 (no BOOL inputs).
+   */
+  uint8_t aReserved0[16];
+  /*
+   Offset 16. FbRun of the owning group: TRUE = the block executes.
+   */
+  SL_BOOL bRun;
+  /*
+   Offset 17. ErrAck of the owning group.
+   */
+  SL_BOOL bErrAck;
+  /*
+   Offset 18. Reserved, keep 0.
+   */
+  uint8_t aReserved1[6];
+  /*
+   At the analog input base 24: CompIn1 (active bit 8).
+   */
+  int16_t nCompIn1;
+  /*
+   At 24 + W: CompIn2 (active bit 9).
+   */
+  int16_t nCompIn2;
+  /*
+   At 24 + 2W: CompIn3 (active bit 10; 2oo3, 3oo5).
+   */
+  int16_t nCompIn3;
+  /*
+   At 24 + 3W: CompIn4 (active bit 11; 3oo5).
+   */
+  int16_t nCompIn4;
+  /*
+   At 24 + 4W: CompIn5 (active bit 12; 3oo5).
+   */
+  int16_t nCompIn5;
+  /*
+   Reserved (16-bit: 2 bytes, 32-bit: none).
+   */
+  uint8_t aReserved2[2];
+  /*
+   "Tolerance Time (ms)", the DelayOutTimer: 0 to 65,535 ms.
+   */
+  uint32_t tToleranceTime;
+  /*
+   "Allowed Deviation" (UDINT in every variant).
+   */
+  uint32_t nAllowedDeviation;
+  /*
+   "Architecture": SL_ARCH_1OO2 (2), SL_ARCH_2OO3 (3), SL_ARCH_3OO5 (5).
+   */
+  uint16_t nArchitecture;
+  /*
+   Exactly the bits 8 … 8 + nArchitecture − 1.
+   */
+  uint16_t wInputActive;
+  /*
+   At the output base (16-bit 48, 32-bit 56): Error, TRUE in ERROR only.
+   */
+  SL_BOOL bError;
+  /*
+   Output base + 1: IsValid, TRUE in RUN and DELAYOUT.
+   */
+  SL_BOOL bIsValid;
+  /*
+   Reserved up to the analog output base.
+   */
+  uint8_t aReserved3[6];
+  /*
+   At the output base + 8: CompOut, CompInX in RUN, held in DELAYOUT, else 0.
+   */
+  int16_t nCompOut;
+  /*
+   Reserved up to the info data.
+   */
+  uint8_t aReserved4[6];
+  /*
+   Info + 0: the manual's status value.
+   */
+  uint8_t nState;
+  /*
+   Info + 1. Reserved.
+   */
+  uint8_t aReserved5[1];
+  /*
+   Info + 2: diag value (0) + library bits 13-15.
+   */
+  uint16_t nDiag;
+  /*
+   Info + 4: Text ID of the latched diag message, 0 = none.
+   */
+  uint16_t nDiagTextId;
+  /*
+   Info + 6. Reserved.
+   */
+  uint8_t aReserved6[2];
+  /*
+   Info + 8: message parameter 2.
+   */
+  uint32_t dwDiagPar2;
+  /*
+   Info + 12: message parameter 3.
+   */
+  uint32_t dwDiagPar3;
+  /*
+   Info + 16: private state, 48 bytes: never write it.
+   */
+  struct SL_COMPARE_PRIVATE stPrivate;
+} FB_COMPARE_INT;
+
+
+/*
+ FB COMPARE instance (ABI-2 §11.3), generic over the signal type `T`; `P1` (after
+ CompIn5) and `P2` (after CompOut) are the reserved gaps that make the 16- and 32-bit
+ layouts differ.
+ */
+typedef struct FB_COMPARE_UINT {
+  /*
+   Offset 0. Reserved, keep 0 (no BOOL inputs).
+   */
+  uint8_t aReserved0[16];
+  /*
+   Offset 16. FbRun of the owning group: TRUE = the block executes.
+   */
+  SL_BOOL bRun;
+  /*
+   Offset 17. ErrAck of the owning group.
+   */
+  SL_BOOL bErrAck;
+  /*
+   Offset 18. Reserved, keep 0.
+   */
+  uint8_t aReserved1[6];
+  /*
+   At the analog input base 24: CompIn1 (active bit 8).
+   */
+  uint16_t nCompIn1;
+  /*
+   At 24 + W: CompIn2 (active bit 9).
+   */
+  uint16_t nCompIn2;
+  /*
+   At 24 + 2W: CompIn3 (active bit 10; 2oo3, 3oo5).
+   */
+  uint16_t nCompIn3;
+  /*
+   At 24 + 3W: CompIn4 (active bit 11; 3oo5).
+   */
+  uint16_t nCompIn4;
+  /*
+   At 24 + 4W: CompIn5 (active bit 12; 3oo5).
+   */
+  uint16_t nCompIn5;
+  /*
+   Reserved (16-bit: 2 bytes, 32-bit: none).
+   */
+  uint8_t aReserved2[2];
+  /*
+   "Tolerance Time (ms)", the DelayOutTimer: 0 to 65,535 ms.
+   */
+  uint32_t tToleranceTime;
+  /*
+   "Allowed Deviation" (UDINT in every variant).
+   */
+  uint32_t nAllowedDeviation;
+  /*
+   "Architecture": SL_ARCH_1OO2 (2), SL_ARCH_2OO3 (3), SL_ARCH_3OO5 (5).
+   */
+  uint16_t nArchitecture;
+  /*
+   Exactly the bits 8 … 8 + nArchitecture − 1.
+   */
+  uint16_t wInputActive;
+  /*
+   At the output base (16-bit 48, 32-bit 56): Error, TRUE in ERROR only.
+   */
+  SL_BOOL bError;
+  /*
+   Output base + 1: IsValid, TRUE in RUN and DELAYOUT.
+   */
+  SL_BOOL bIsValid;
+  /*
+   Reserved up to the analog output base.
+   */
+  uint8_t aReserved3[6];
+  /*
+   At the output base + 8: CompOut, CompInX in RUN, held in DELAYOUT, else 0.
+   */
+  uint16_t nCompOut;
+  /*
+   Reserved up to the info data.
+   */
+  uint8_t aReserved4[6];
+  /*
+   Info + 0: the manual's status value.
+   */
+  uint8_t nState;
+  /*
+   Info + 1. Reserved.
+   */
+  uint8_t aReserved5[1];
+  /*
+   Info + 2: diag value (0) + library bits 13-15.
+   */
+  uint16_t nDiag;
+  /*
+   Info + 4: Text ID of the latched diag message, 0 = none.
+   */
+  uint16_t nDiagTextId;
+  /*
+   Info + 6. Reserved.
+   */
+  uint8_t aReserved6[2];
+  /*
+   Info + 8: message parameter 2.
+   */
+  uint32_t dwDiagPar2;
+  /*
+   Info + 12: message parameter 3.
+   */
+  uint32_t dwDiagPar3;
+  /*
+   Info + 16: private state, 48 bytes: never write it.
+   */
+  struct SL_COMPARE_PRIVATE stPrivate;
+} FB_COMPARE_UINT;
+
+
+/*
+ FB COMPARE instance (ABI-2 §11.3), generic over the signal type `T`; `P1` (after
+ CompIn5) and `P2` (after CompOut) are the reserved gaps that make the 16- and 32-bit
+ layouts differ.
+ */
+typedef struct FB_COMPARE_DINT {
+  /*
+   Offset 0. Reserved, keep 0 (no BOOL inputs).
+   */
+  uint8_t aReserved0[16];
+  /*
+   Offset 16. FbRun of the owning group: TRUE = the block executes.
+   */
+  SL_BOOL bRun;
+  /*
+   Offset 17. ErrAck of the owning group.
+   */
+  SL_BOOL bErrAck;
+  /*
+   Offset 18. Reserved, keep 0.
+   */
+  uint8_t aReserved1[6];
+  /*
+   At the analog input base 24: CompIn1 (active bit 8).
+   */
+  int32_t nCompIn1;
+  /*
+   At 24 + W: CompIn2 (active bit 9).
+   */
+  int32_t nCompIn2;
+  /*
+   At 24 + 2W: CompIn3 (active bit 10; 2oo3, 3oo5).
+   */
+  int32_t nCompIn3;
+  /*
+   At 24 + 3W: CompIn4 (active bit 11; 3oo5).
+   */
+  int32_t nCompIn4;
+  /*
+   At 24 + 4W: CompIn5 (active bit 12; 3oo5).
+   */
+  int32_t nCompIn5;
+  /*
+   "Tolerance Time (ms)", the DelayOutTimer: 0 to 65,535 ms.
+   */
+  uint32_t tToleranceTime;
+  /*
+   "Allowed Deviation" (UDINT in every variant).
+   */
+  uint32_t nAllowedDeviation;
+  /*
+   "Architecture": SL_ARCH_1OO2 (2), SL_ARCH_2OO3 (3), SL_ARCH_3OO5 (5).
+   */
+  uint16_t nArchitecture;
+  /*
+   Exactly the bits 8 … 8 + nArchitecture − 1.
+   */
+  uint16_t wInputActive;
+  /*
+   At the output base (16-bit 48, 32-bit 56): Error, TRUE in ERROR only.
+   */
+  SL_BOOL bError;
+  /*
+   Output base + 1: IsValid, TRUE in RUN and DELAYOUT.
+   */
+  SL_BOOL bIsValid;
+  /*
+   Reserved up to the analog output base.
+   */
+  uint8_t aReserved3[6];
+  /*
+   At the output base + 8: CompOut, CompInX in RUN, held in DELAYOUT, else 0.
+   */
+  int32_t nCompOut;
+  /*
+   Reserved up to the info data.
+   */
+  uint8_t aReserved4[4];
+  /*
+   Info + 0: the manual's status value.
+   */
+  uint8_t nState;
+  /*
+   Info + 1. Reserved.
+   */
+  uint8_t aReserved5[1];
+  /*
+   Info + 2: diag value (0) + library bits 13-15.
+   */
+  uint16_t nDiag;
+  /*
+   Info + 4: Text ID of the latched diag message, 0 = none.
+   */
+  uint16_t nDiagTextId;
+  /*
+   Info + 6. Reserved.
+   */
+  uint8_t aReserved6[2];
+  /*
+   Info + 8: message parameter 2.
+   */
+  uint32_t dwDiagPar2;
+  /*
+   Info + 12: message parameter 3.
+   */
+  uint32_t dwDiagPar3;
+  /*
+   Info + 16: private state, 48 bytes: never write it.
+   */
+  struct SL_COMPARE_PRIVATE stPrivate;
+} FB_COMPARE_DINT;
+
+
+/*
+ FB COMPARE instance (ABI-2 §11.3), generic over the signal type `T`; `P1` (after
+ CompIn5) and `P2` (after CompOut) are the reserved gaps that make the 16- and 32-bit
+ layouts differ.
+ */
+typedef struct FB_COMPARE_UDINT {
+  /*
+   Offset 0. Reserved, keep 0 (no BOOL inputs).
+   */
+  uint8_t aReserved0[16];
+  /*
+   Offset 16. FbRun of the owning group: TRUE = the block executes.
+   */
+  SL_BOOL bRun;
+  /*
+   Offset 17. ErrAck of the owning group.
+   */
+  SL_BOOL bErrAck;
+  /*
+   Offset 18. Reserved, keep 0.
+   */
+  uint8_t aReserved1[6];
+  /*
+   At the analog input base 24: CompIn1 (active bit 8).
+   */
+  uint32_t nCompIn1;
+  /*
+   At 24 + W: CompIn2 (active bit 9).
+   */
+  uint32_t nCompIn2;
+  /*
+   At 24 + 2W: CompIn3 (active bit 10; 2oo3, 3oo5).
+   */
+  uint32_t nCompIn3;
+  /*
+   At 24 + 3W: CompIn4 (active bit 11; 3oo5).
+   */
+  uint32_t nCompIn4;
+  /*
+   At 24 + 4W: CompIn5 (active bit 12; 3oo5).
+   */
+  uint32_t nCompIn5;
+  /*
+   "Tolerance Time (ms)", the DelayOutTimer: 0 to 65,535 ms.
+   */
+  uint32_t tToleranceTime;
+  /*
+   "Allowed Deviation" (UDINT in every variant).
+   */
+  uint32_t nAllowedDeviation;
+  /*
+   "Architecture": SL_ARCH_1OO2 (2), SL_ARCH_2OO3 (3), SL_ARCH_3OO5 (5).
+   */
+  uint16_t nArchitecture;
+  /*
+   Exactly the bits 8 … 8 + nArchitecture − 1.
+   */
+  uint16_t wInputActive;
+  /*
+   At the output base (16-bit 48, 32-bit 56): Error, TRUE in ERROR only.
+   */
+  SL_BOOL bError;
+  /*
+   Output base + 1: IsValid, TRUE in RUN and DELAYOUT.
+   */
+  SL_BOOL bIsValid;
+  /*
+   Reserved up to the analog output base.
+   */
+  uint8_t aReserved3[6];
+  /*
+   At the output base + 8: CompOut, CompInX in RUN, held in DELAYOUT, else 0.
+   */
+  uint32_t nCompOut;
+  /*
+   Reserved up to the info data.
+   */
+  uint8_t aReserved4[4];
+  /*
+   Info + 0: the manual's status value.
+   */
+  uint8_t nState;
+  /*
+   Info + 1. Reserved.
+   */
+  uint8_t aReserved5[1];
+  /*
+   Info + 2: diag value (0) + library bits 13-15.
+   */
+  uint16_t nDiag;
+  /*
+   Info + 4: Text ID of the latched diag message, 0 = none.
+   */
+  uint16_t nDiagTextId;
+  /*
+   Info + 6. Reserved.
+   */
+  uint8_t aReserved6[2];
+  /*
+   Info + 8: message parameter 2.
+   */
+  uint32_t dwDiagPar2;
+  /*
+   Info + 12: message parameter 3.
+   */
+  uint32_t dwDiagPar3;
+  /*
+   Info + 16: private state, 48 bytes: never write it.
+   */
+  struct SL_COMPARE_PRIVATE stPrivate;
+} FB_COMPARE_UDINT;
+
+
+/*
  Private state of FB LIMIT (48 bytes). Never written by the user.
  */
 typedef struct SL_LIMIT_PRIVATE {
@@ -5596,6 +6126,14 @@ int32_t sl_div_dint_init(struct FB_DIV_DINT *fb);
 int32_t sl_div_dint_cycle(struct FB_DIV_DINT *fb, uint32_t tNow);
 int32_t sl_div_udint_init(struct FB_DIV_UDINT *fb);
 int32_t sl_div_udint_cycle(struct FB_DIV_UDINT *fb, uint32_t tNow);
+int32_t sl_compare_int_init(struct FB_COMPARE_INT *fb);
+int32_t sl_compare_int_cycle(struct FB_COMPARE_INT *fb, uint32_t tNow);
+int32_t sl_compare_uint_init(struct FB_COMPARE_UINT *fb);
+int32_t sl_compare_uint_cycle(struct FB_COMPARE_UINT *fb, uint32_t tNow);
+int32_t sl_compare_dint_init(struct FB_COMPARE_DINT *fb);
+int32_t sl_compare_dint_cycle(struct FB_COMPARE_DINT *fb, uint32_t tNow);
+int32_t sl_compare_udint_init(struct FB_COMPARE_UDINT *fb);
+int32_t sl_compare_udint_cycle(struct FB_COMPARE_UDINT *fb, uint32_t tNow);
 int32_t sl_limit_int_init(struct FB_LIMIT_INT *fb);
 int32_t sl_limit_int_cycle(struct FB_LIMIT_INT *fb, uint32_t tNow);
 int32_t sl_limit_uint_init(struct FB_LIMIT_UINT *fb);
@@ -6451,6 +6989,124 @@ SL_STATIC_ASSERT(offsetof(FB_DIV_UDINT, dwDiagPar2) == 64, "offset of FB_DIV_UDI
 SL_STATIC_ASSERT(offsetof(FB_DIV_UDINT, dwDiagPar3) == 68, "offset of FB_DIV_UDINT.dwDiagPar3");
 SL_STATIC_ASSERT(offsetof(FB_DIV_UDINT, stPrivate) == 72, "offset of FB_DIV_UDINT.stPrivate");
 SL_STATIC_ASSERT(sizeof(FB_DIV_UDINT) == 120, "size of FB_DIV_UDINT");
+SL_STATIC_ASSERT(offsetof(SL_COMPARE_PRIVATE, stHeader) == 0, "offset of SL_COMPARE_PRIVATE.stHeader");
+SL_STATIC_ASSERT(offsetof(SL_COMPARE_PRIVATE, tTolerance) == 28, "offset of SL_COMPARE_PRIVATE.tTolerance");
+SL_STATIC_ASSERT(offsetof(SL_COMPARE_PRIVATE, dwDeviation) == 32, "offset of SL_COMPARE_PRIVATE.dwDeviation");
+SL_STATIC_ASSERT(offsetof(SL_COMPARE_PRIVATE, wArchitecture) == 36, "offset of SL_COMPARE_PRIVATE.wArchitecture");
+SL_STATIC_ASSERT(offsetof(SL_COMPARE_PRIVATE, wActive) == 38, "offset of SL_COMPARE_PRIVATE.wActive");
+SL_STATIC_ASSERT(offsetof(SL_COMPARE_PRIVATE, dwOut) == 40, "offset of SL_COMPARE_PRIVATE.dwOut");
+SL_STATIC_ASSERT(offsetof(SL_COMPARE_PRIVATE, aReserved) == 44, "offset of SL_COMPARE_PRIVATE.aReserved");
+SL_STATIC_ASSERT(sizeof(SL_COMPARE_PRIVATE) == 48, "size of SL_COMPARE_PRIVATE");
+SL_STATIC_ASSERT(offsetof(FB_COMPARE_INT, aReserved0) == 0, "offset of FB_COMPARE_INT.aReserved0");
+SL_STATIC_ASSERT(offsetof(FB_COMPARE_INT, bRun) == 16, "offset of FB_COMPARE_INT.bRun");
+SL_STATIC_ASSERT(offsetof(FB_COMPARE_INT, bErrAck) == 17, "offset of FB_COMPARE_INT.bErrAck");
+SL_STATIC_ASSERT(offsetof(FB_COMPARE_INT, aReserved1) == 18, "offset of FB_COMPARE_INT.aReserved1");
+SL_STATIC_ASSERT(offsetof(FB_COMPARE_INT, nCompIn1) == 24, "offset of FB_COMPARE_INT.nCompIn1");
+SL_STATIC_ASSERT(offsetof(FB_COMPARE_INT, nCompIn2) == 26, "offset of FB_COMPARE_INT.nCompIn2");
+SL_STATIC_ASSERT(offsetof(FB_COMPARE_INT, nCompIn3) == 28, "offset of FB_COMPARE_INT.nCompIn3");
+SL_STATIC_ASSERT(offsetof(FB_COMPARE_INT, nCompIn4) == 30, "offset of FB_COMPARE_INT.nCompIn4");
+SL_STATIC_ASSERT(offsetof(FB_COMPARE_INT, nCompIn5) == 32, "offset of FB_COMPARE_INT.nCompIn5");
+SL_STATIC_ASSERT(offsetof(FB_COMPARE_INT, aReserved2) == 34, "offset of FB_COMPARE_INT.aReserved2");
+SL_STATIC_ASSERT(offsetof(FB_COMPARE_INT, tToleranceTime) == 36, "offset of FB_COMPARE_INT.tToleranceTime");
+SL_STATIC_ASSERT(offsetof(FB_COMPARE_INT, nAllowedDeviation) == 40, "offset of FB_COMPARE_INT.nAllowedDeviation");
+SL_STATIC_ASSERT(offsetof(FB_COMPARE_INT, nArchitecture) == 44, "offset of FB_COMPARE_INT.nArchitecture");
+SL_STATIC_ASSERT(offsetof(FB_COMPARE_INT, wInputActive) == 46, "offset of FB_COMPARE_INT.wInputActive");
+SL_STATIC_ASSERT(offsetof(FB_COMPARE_INT, bError) == 48, "offset of FB_COMPARE_INT.bError");
+SL_STATIC_ASSERT(offsetof(FB_COMPARE_INT, bIsValid) == 49, "offset of FB_COMPARE_INT.bIsValid");
+SL_STATIC_ASSERT(offsetof(FB_COMPARE_INT, aReserved3) == 50, "offset of FB_COMPARE_INT.aReserved3");
+SL_STATIC_ASSERT(offsetof(FB_COMPARE_INT, nCompOut) == 56, "offset of FB_COMPARE_INT.nCompOut");
+SL_STATIC_ASSERT(offsetof(FB_COMPARE_INT, aReserved4) == 58, "offset of FB_COMPARE_INT.aReserved4");
+SL_STATIC_ASSERT(offsetof(FB_COMPARE_INT, nState) == 64, "offset of FB_COMPARE_INT.nState");
+SL_STATIC_ASSERT(offsetof(FB_COMPARE_INT, aReserved5) == 65, "offset of FB_COMPARE_INT.aReserved5");
+SL_STATIC_ASSERT(offsetof(FB_COMPARE_INT, nDiag) == 66, "offset of FB_COMPARE_INT.nDiag");
+SL_STATIC_ASSERT(offsetof(FB_COMPARE_INT, nDiagTextId) == 68, "offset of FB_COMPARE_INT.nDiagTextId");
+SL_STATIC_ASSERT(offsetof(FB_COMPARE_INT, aReserved6) == 70, "offset of FB_COMPARE_INT.aReserved6");
+SL_STATIC_ASSERT(offsetof(FB_COMPARE_INT, dwDiagPar2) == 72, "offset of FB_COMPARE_INT.dwDiagPar2");
+SL_STATIC_ASSERT(offsetof(FB_COMPARE_INT, dwDiagPar3) == 76, "offset of FB_COMPARE_INT.dwDiagPar3");
+SL_STATIC_ASSERT(offsetof(FB_COMPARE_INT, stPrivate) == 80, "offset of FB_COMPARE_INT.stPrivate");
+SL_STATIC_ASSERT(sizeof(FB_COMPARE_INT) == 128, "size of FB_COMPARE_INT");
+SL_STATIC_ASSERT(offsetof(FB_COMPARE_UINT, aReserved0) == 0, "offset of FB_COMPARE_UINT.aReserved0");
+SL_STATIC_ASSERT(offsetof(FB_COMPARE_UINT, bRun) == 16, "offset of FB_COMPARE_UINT.bRun");
+SL_STATIC_ASSERT(offsetof(FB_COMPARE_UINT, bErrAck) == 17, "offset of FB_COMPARE_UINT.bErrAck");
+SL_STATIC_ASSERT(offsetof(FB_COMPARE_UINT, aReserved1) == 18, "offset of FB_COMPARE_UINT.aReserved1");
+SL_STATIC_ASSERT(offsetof(FB_COMPARE_UINT, nCompIn1) == 24, "offset of FB_COMPARE_UINT.nCompIn1");
+SL_STATIC_ASSERT(offsetof(FB_COMPARE_UINT, nCompIn2) == 26, "offset of FB_COMPARE_UINT.nCompIn2");
+SL_STATIC_ASSERT(offsetof(FB_COMPARE_UINT, nCompIn3) == 28, "offset of FB_COMPARE_UINT.nCompIn3");
+SL_STATIC_ASSERT(offsetof(FB_COMPARE_UINT, nCompIn4) == 30, "offset of FB_COMPARE_UINT.nCompIn4");
+SL_STATIC_ASSERT(offsetof(FB_COMPARE_UINT, nCompIn5) == 32, "offset of FB_COMPARE_UINT.nCompIn5");
+SL_STATIC_ASSERT(offsetof(FB_COMPARE_UINT, aReserved2) == 34, "offset of FB_COMPARE_UINT.aReserved2");
+SL_STATIC_ASSERT(offsetof(FB_COMPARE_UINT, tToleranceTime) == 36, "offset of FB_COMPARE_UINT.tToleranceTime");
+SL_STATIC_ASSERT(offsetof(FB_COMPARE_UINT, nAllowedDeviation) == 40, "offset of FB_COMPARE_UINT.nAllowedDeviation");
+SL_STATIC_ASSERT(offsetof(FB_COMPARE_UINT, nArchitecture) == 44, "offset of FB_COMPARE_UINT.nArchitecture");
+SL_STATIC_ASSERT(offsetof(FB_COMPARE_UINT, wInputActive) == 46, "offset of FB_COMPARE_UINT.wInputActive");
+SL_STATIC_ASSERT(offsetof(FB_COMPARE_UINT, bError) == 48, "offset of FB_COMPARE_UINT.bError");
+SL_STATIC_ASSERT(offsetof(FB_COMPARE_UINT, bIsValid) == 49, "offset of FB_COMPARE_UINT.bIsValid");
+SL_STATIC_ASSERT(offsetof(FB_COMPARE_UINT, aReserved3) == 50, "offset of FB_COMPARE_UINT.aReserved3");
+SL_STATIC_ASSERT(offsetof(FB_COMPARE_UINT, nCompOut) == 56, "offset of FB_COMPARE_UINT.nCompOut");
+SL_STATIC_ASSERT(offsetof(FB_COMPARE_UINT, aReserved4) == 58, "offset of FB_COMPARE_UINT.aReserved4");
+SL_STATIC_ASSERT(offsetof(FB_COMPARE_UINT, nState) == 64, "offset of FB_COMPARE_UINT.nState");
+SL_STATIC_ASSERT(offsetof(FB_COMPARE_UINT, aReserved5) == 65, "offset of FB_COMPARE_UINT.aReserved5");
+SL_STATIC_ASSERT(offsetof(FB_COMPARE_UINT, nDiag) == 66, "offset of FB_COMPARE_UINT.nDiag");
+SL_STATIC_ASSERT(offsetof(FB_COMPARE_UINT, nDiagTextId) == 68, "offset of FB_COMPARE_UINT.nDiagTextId");
+SL_STATIC_ASSERT(offsetof(FB_COMPARE_UINT, aReserved6) == 70, "offset of FB_COMPARE_UINT.aReserved6");
+SL_STATIC_ASSERT(offsetof(FB_COMPARE_UINT, dwDiagPar2) == 72, "offset of FB_COMPARE_UINT.dwDiagPar2");
+SL_STATIC_ASSERT(offsetof(FB_COMPARE_UINT, dwDiagPar3) == 76, "offset of FB_COMPARE_UINT.dwDiagPar3");
+SL_STATIC_ASSERT(offsetof(FB_COMPARE_UINT, stPrivate) == 80, "offset of FB_COMPARE_UINT.stPrivate");
+SL_STATIC_ASSERT(sizeof(FB_COMPARE_UINT) == 128, "size of FB_COMPARE_UINT");
+SL_STATIC_ASSERT(offsetof(FB_COMPARE_DINT, aReserved0) == 0, "offset of FB_COMPARE_DINT.aReserved0");
+SL_STATIC_ASSERT(offsetof(FB_COMPARE_DINT, bRun) == 16, "offset of FB_COMPARE_DINT.bRun");
+SL_STATIC_ASSERT(offsetof(FB_COMPARE_DINT, bErrAck) == 17, "offset of FB_COMPARE_DINT.bErrAck");
+SL_STATIC_ASSERT(offsetof(FB_COMPARE_DINT, aReserved1) == 18, "offset of FB_COMPARE_DINT.aReserved1");
+SL_STATIC_ASSERT(offsetof(FB_COMPARE_DINT, nCompIn1) == 24, "offset of FB_COMPARE_DINT.nCompIn1");
+SL_STATIC_ASSERT(offsetof(FB_COMPARE_DINT, nCompIn2) == 28, "offset of FB_COMPARE_DINT.nCompIn2");
+SL_STATIC_ASSERT(offsetof(FB_COMPARE_DINT, nCompIn3) == 32, "offset of FB_COMPARE_DINT.nCompIn3");
+SL_STATIC_ASSERT(offsetof(FB_COMPARE_DINT, nCompIn4) == 36, "offset of FB_COMPARE_DINT.nCompIn4");
+SL_STATIC_ASSERT(offsetof(FB_COMPARE_DINT, nCompIn5) == 40, "offset of FB_COMPARE_DINT.nCompIn5");
+SL_STATIC_ASSERT(offsetof(FB_COMPARE_DINT, tToleranceTime) == 44, "offset of FB_COMPARE_DINT.tToleranceTime");
+SL_STATIC_ASSERT(offsetof(FB_COMPARE_DINT, nAllowedDeviation) == 48, "offset of FB_COMPARE_DINT.nAllowedDeviation");
+SL_STATIC_ASSERT(offsetof(FB_COMPARE_DINT, nArchitecture) == 52, "offset of FB_COMPARE_DINT.nArchitecture");
+SL_STATIC_ASSERT(offsetof(FB_COMPARE_DINT, wInputActive) == 54, "offset of FB_COMPARE_DINT.wInputActive");
+SL_STATIC_ASSERT(offsetof(FB_COMPARE_DINT, bError) == 56, "offset of FB_COMPARE_DINT.bError");
+SL_STATIC_ASSERT(offsetof(FB_COMPARE_DINT, bIsValid) == 57, "offset of FB_COMPARE_DINT.bIsValid");
+SL_STATIC_ASSERT(offsetof(FB_COMPARE_DINT, aReserved3) == 58, "offset of FB_COMPARE_DINT.aReserved3");
+SL_STATIC_ASSERT(offsetof(FB_COMPARE_DINT, nCompOut) == 64, "offset of FB_COMPARE_DINT.nCompOut");
+SL_STATIC_ASSERT(offsetof(FB_COMPARE_DINT, aReserved4) == 68, "offset of FB_COMPARE_DINT.aReserved4");
+SL_STATIC_ASSERT(offsetof(FB_COMPARE_DINT, nState) == 72, "offset of FB_COMPARE_DINT.nState");
+SL_STATIC_ASSERT(offsetof(FB_COMPARE_DINT, aReserved5) == 73, "offset of FB_COMPARE_DINT.aReserved5");
+SL_STATIC_ASSERT(offsetof(FB_COMPARE_DINT, nDiag) == 74, "offset of FB_COMPARE_DINT.nDiag");
+SL_STATIC_ASSERT(offsetof(FB_COMPARE_DINT, nDiagTextId) == 76, "offset of FB_COMPARE_DINT.nDiagTextId");
+SL_STATIC_ASSERT(offsetof(FB_COMPARE_DINT, aReserved6) == 78, "offset of FB_COMPARE_DINT.aReserved6");
+SL_STATIC_ASSERT(offsetof(FB_COMPARE_DINT, dwDiagPar2) == 80, "offset of FB_COMPARE_DINT.dwDiagPar2");
+SL_STATIC_ASSERT(offsetof(FB_COMPARE_DINT, dwDiagPar3) == 84, "offset of FB_COMPARE_DINT.dwDiagPar3");
+SL_STATIC_ASSERT(offsetof(FB_COMPARE_DINT, stPrivate) == 88, "offset of FB_COMPARE_DINT.stPrivate");
+SL_STATIC_ASSERT(sizeof(FB_COMPARE_DINT) == 136, "size of FB_COMPARE_DINT");
+SL_STATIC_ASSERT(offsetof(FB_COMPARE_UDINT, aReserved0) == 0, "offset of FB_COMPARE_UDINT.aReserved0");
+SL_STATIC_ASSERT(offsetof(FB_COMPARE_UDINT, bRun) == 16, "offset of FB_COMPARE_UDINT.bRun");
+SL_STATIC_ASSERT(offsetof(FB_COMPARE_UDINT, bErrAck) == 17, "offset of FB_COMPARE_UDINT.bErrAck");
+SL_STATIC_ASSERT(offsetof(FB_COMPARE_UDINT, aReserved1) == 18, "offset of FB_COMPARE_UDINT.aReserved1");
+SL_STATIC_ASSERT(offsetof(FB_COMPARE_UDINT, nCompIn1) == 24, "offset of FB_COMPARE_UDINT.nCompIn1");
+SL_STATIC_ASSERT(offsetof(FB_COMPARE_UDINT, nCompIn2) == 28, "offset of FB_COMPARE_UDINT.nCompIn2");
+SL_STATIC_ASSERT(offsetof(FB_COMPARE_UDINT, nCompIn3) == 32, "offset of FB_COMPARE_UDINT.nCompIn3");
+SL_STATIC_ASSERT(offsetof(FB_COMPARE_UDINT, nCompIn4) == 36, "offset of FB_COMPARE_UDINT.nCompIn4");
+SL_STATIC_ASSERT(offsetof(FB_COMPARE_UDINT, nCompIn5) == 40, "offset of FB_COMPARE_UDINT.nCompIn5");
+SL_STATIC_ASSERT(offsetof(FB_COMPARE_UDINT, tToleranceTime) == 44, "offset of FB_COMPARE_UDINT.tToleranceTime");
+SL_STATIC_ASSERT(offsetof(FB_COMPARE_UDINT, nAllowedDeviation) == 48, "offset of FB_COMPARE_UDINT.nAllowedDeviation");
+SL_STATIC_ASSERT(offsetof(FB_COMPARE_UDINT, nArchitecture) == 52, "offset of FB_COMPARE_UDINT.nArchitecture");
+SL_STATIC_ASSERT(offsetof(FB_COMPARE_UDINT, wInputActive) == 54, "offset of FB_COMPARE_UDINT.wInputActive");
+SL_STATIC_ASSERT(offsetof(FB_COMPARE_UDINT, bError) == 56, "offset of FB_COMPARE_UDINT.bError");
+SL_STATIC_ASSERT(offsetof(FB_COMPARE_UDINT, bIsValid) == 57, "offset of FB_COMPARE_UDINT.bIsValid");
+SL_STATIC_ASSERT(offsetof(FB_COMPARE_UDINT, aReserved3) == 58, "offset of FB_COMPARE_UDINT.aReserved3");
+SL_STATIC_ASSERT(offsetof(FB_COMPARE_UDINT, nCompOut) == 64, "offset of FB_COMPARE_UDINT.nCompOut");
+SL_STATIC_ASSERT(offsetof(FB_COMPARE_UDINT, aReserved4) == 68, "offset of FB_COMPARE_UDINT.aReserved4");
+SL_STATIC_ASSERT(offsetof(FB_COMPARE_UDINT, nState) == 72, "offset of FB_COMPARE_UDINT.nState");
+SL_STATIC_ASSERT(offsetof(FB_COMPARE_UDINT, aReserved5) == 73, "offset of FB_COMPARE_UDINT.aReserved5");
+SL_STATIC_ASSERT(offsetof(FB_COMPARE_UDINT, nDiag) == 74, "offset of FB_COMPARE_UDINT.nDiag");
+SL_STATIC_ASSERT(offsetof(FB_COMPARE_UDINT, nDiagTextId) == 76, "offset of FB_COMPARE_UDINT.nDiagTextId");
+SL_STATIC_ASSERT(offsetof(FB_COMPARE_UDINT, aReserved6) == 78, "offset of FB_COMPARE_UDINT.aReserved6");
+SL_STATIC_ASSERT(offsetof(FB_COMPARE_UDINT, dwDiagPar2) == 80, "offset of FB_COMPARE_UDINT.dwDiagPar2");
+SL_STATIC_ASSERT(offsetof(FB_COMPARE_UDINT, dwDiagPar3) == 84, "offset of FB_COMPARE_UDINT.dwDiagPar3");
+SL_STATIC_ASSERT(offsetof(FB_COMPARE_UDINT, stPrivate) == 88, "offset of FB_COMPARE_UDINT.stPrivate");
+SL_STATIC_ASSERT(sizeof(FB_COMPARE_UDINT) == 136, "size of FB_COMPARE_UDINT");
 SL_STATIC_ASSERT(offsetof(SL_LIMIT_PRIVATE, stHeader) == 0, "offset of SL_LIMIT_PRIVATE.stHeader");
 SL_STATIC_ASSERT(offsetof(SL_LIMIT_PRIVATE, wActive) == 28, "offset of SL_LIMIT_PRIVATE.wActive");
 SL_STATIC_ASSERT(offsetof(SL_LIMIT_PRIVATE, aReserved) == 30, "offset of SL_LIMIT_PRIVATE.aReserved");

@@ -291,6 +291,10 @@ macro_rules! for_each_block {
             $crate::blocks::arith::FB_DIV_UINT => sl_div_uint_init, sl_div_uint_cycle;
             $crate::blocks::arith::FB_DIV_DINT => sl_div_dint_init, sl_div_dint_cycle;
             $crate::blocks::arith::FB_DIV_UDINT => sl_div_udint_init, sl_div_udint_cycle;
+            $crate::blocks::compare::FB_COMPARE_INT => sl_compare_int_init, sl_compare_int_cycle;
+            $crate::blocks::compare::FB_COMPARE_UINT => sl_compare_uint_init, sl_compare_uint_cycle;
+            $crate::blocks::compare::FB_COMPARE_DINT => sl_compare_dint_init, sl_compare_dint_cycle;
+            $crate::blocks::compare::FB_COMPARE_UDINT => sl_compare_udint_init, sl_compare_udint_cycle;
             $crate::blocks::limit::FB_LIMIT_INT => sl_limit_int_init, sl_limit_int_cycle;
             $crate::blocks::limit::FB_LIMIT_UINT => sl_limit_uint_init, sl_limit_uint_cycle;
             $crate::blocks::limit::FB_LIMIT_DINT => sl_limit_dint_init, sl_limit_dint_cycle;

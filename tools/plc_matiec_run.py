@@ -101,6 +101,14 @@ for _v in ("UINT", "UDINT"):
         cfg=dict(wInputActive=0x3, nIncrementError=3, nDecrementNoError=1, nCounterLimit=10,
                  bInput=1, bEnable=1), pulse=None, change=("nCounterLimit", 11), run={1})
 
+# COMPARE in every variant (2oo3): two agreeing inputs; changing the deviation while running
+# is the error.
+for _v in ("INT", "UINT", "DINT", "UDINT"):
+    BLOCKS[f"COMPARE_{_v}"] = dict(
+        cfg=dict(nArchitecture=3, wInputActive=0x700, nAllowedDeviation=2, tToleranceTime=30,
+                 nCompIn1=10, nCompIn2=11, nCompIn3=40), pulse=None,
+        change=("nAllowedDeviation", 3), run={1, 8})
+
 
 BLOCK_INPUTS = {}  # block -> its BOOL inputs (filled from the header in main)
 

@@ -1517,7 +1517,8 @@ def adapter_test_c(hdr: Header) -> str:
             elif is_time_ms(f):
                 out.append(f"    x->{f.name} = rnd_time();")
             else:
-                out.append(f"    {{ static const unsigned v[] = {{0u, 1u, 10u, 100u}}; x->{f.name} = ({c_type_of(f)})v[rnd() % 4u]; }}")
+                # small counts (architectures 2, 3, 5) besides the usual magnitudes
+                out.append(f"    {{ static const unsigned v[] = {{0u, 1u, 2u, 3u, 5u, 10u, 100u}}; x->{f.name} = ({c_type_of(f)})v[rnd() % 7u]; }}")
         out.append("}")
         out.append(f"/* 1: a valid configuration (want_valid) or an invalid one was drawn into a and b */")
         out.append(f"static int draw_{b.lower}({s} *a, {s} *b, int want_valid)")

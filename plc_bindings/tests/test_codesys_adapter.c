@@ -490,6 +490,66 @@ static void test_param_structs(void)
       CHECK(offsetof(cds_sl_div_udint_cycle_struct, cds_sl_div_udint_cycle) == off, "cds_sl_div_udint_cycle_struct return value at %zu, expected %zu", offsetof(cds_sl_div_udint_cycle_struct, cds_sl_div_udint_cycle), off); }
     { size_t off = 0;
       off = (off + sizeof(void *) - 1) / sizeof(void *) * sizeof(void *);
+      CHECK(offsetof(cds_sl_compare_int_init_struct, pFb) == off, "cds_sl_compare_int_init_struct.pFb at %zu, expected %zu", offsetof(cds_sl_compare_int_init_struct, pFb), off);
+      off += sizeof(void *);
+      off = (off + sizeof(int32_t) - 1) / sizeof(int32_t) * sizeof(int32_t);
+      CHECK(offsetof(cds_sl_compare_int_init_struct, cds_sl_compare_int_init) == off, "cds_sl_compare_int_init_struct return value at %zu, expected %zu", offsetof(cds_sl_compare_int_init_struct, cds_sl_compare_int_init), off); }
+    { size_t off = 0;
+      off = (off + sizeof(void *) - 1) / sizeof(void *) * sizeof(void *);
+      CHECK(offsetof(cds_sl_compare_int_cycle_struct, pFb) == off, "cds_sl_compare_int_cycle_struct.pFb at %zu, expected %zu", offsetof(cds_sl_compare_int_cycle_struct, pFb), off);
+      off += sizeof(void *);
+      off = (off + sizeof(uint32_t) - 1) / sizeof(uint32_t) * sizeof(uint32_t);
+      CHECK(offsetof(cds_sl_compare_int_cycle_struct, tNow) == off, "cds_sl_compare_int_cycle_struct.tNow at %zu, expected %zu", offsetof(cds_sl_compare_int_cycle_struct, tNow), off);
+      off += sizeof(uint32_t);
+      off = (off + sizeof(int32_t) - 1) / sizeof(int32_t) * sizeof(int32_t);
+      CHECK(offsetof(cds_sl_compare_int_cycle_struct, cds_sl_compare_int_cycle) == off, "cds_sl_compare_int_cycle_struct return value at %zu, expected %zu", offsetof(cds_sl_compare_int_cycle_struct, cds_sl_compare_int_cycle), off); }
+    { size_t off = 0;
+      off = (off + sizeof(void *) - 1) / sizeof(void *) * sizeof(void *);
+      CHECK(offsetof(cds_sl_compare_uint_init_struct, pFb) == off, "cds_sl_compare_uint_init_struct.pFb at %zu, expected %zu", offsetof(cds_sl_compare_uint_init_struct, pFb), off);
+      off += sizeof(void *);
+      off = (off + sizeof(int32_t) - 1) / sizeof(int32_t) * sizeof(int32_t);
+      CHECK(offsetof(cds_sl_compare_uint_init_struct, cds_sl_compare_uint_init) == off, "cds_sl_compare_uint_init_struct return value at %zu, expected %zu", offsetof(cds_sl_compare_uint_init_struct, cds_sl_compare_uint_init), off); }
+    { size_t off = 0;
+      off = (off + sizeof(void *) - 1) / sizeof(void *) * sizeof(void *);
+      CHECK(offsetof(cds_sl_compare_uint_cycle_struct, pFb) == off, "cds_sl_compare_uint_cycle_struct.pFb at %zu, expected %zu", offsetof(cds_sl_compare_uint_cycle_struct, pFb), off);
+      off += sizeof(void *);
+      off = (off + sizeof(uint32_t) - 1) / sizeof(uint32_t) * sizeof(uint32_t);
+      CHECK(offsetof(cds_sl_compare_uint_cycle_struct, tNow) == off, "cds_sl_compare_uint_cycle_struct.tNow at %zu, expected %zu", offsetof(cds_sl_compare_uint_cycle_struct, tNow), off);
+      off += sizeof(uint32_t);
+      off = (off + sizeof(int32_t) - 1) / sizeof(int32_t) * sizeof(int32_t);
+      CHECK(offsetof(cds_sl_compare_uint_cycle_struct, cds_sl_compare_uint_cycle) == off, "cds_sl_compare_uint_cycle_struct return value at %zu, expected %zu", offsetof(cds_sl_compare_uint_cycle_struct, cds_sl_compare_uint_cycle), off); }
+    { size_t off = 0;
+      off = (off + sizeof(void *) - 1) / sizeof(void *) * sizeof(void *);
+      CHECK(offsetof(cds_sl_compare_dint_init_struct, pFb) == off, "cds_sl_compare_dint_init_struct.pFb at %zu, expected %zu", offsetof(cds_sl_compare_dint_init_struct, pFb), off);
+      off += sizeof(void *);
+      off = (off + sizeof(int32_t) - 1) / sizeof(int32_t) * sizeof(int32_t);
+      CHECK(offsetof(cds_sl_compare_dint_init_struct, cds_sl_compare_dint_init) == off, "cds_sl_compare_dint_init_struct return value at %zu, expected %zu", offsetof(cds_sl_compare_dint_init_struct, cds_sl_compare_dint_init), off); }
+    { size_t off = 0;
+      off = (off + sizeof(void *) - 1) / sizeof(void *) * sizeof(void *);
+      CHECK(offsetof(cds_sl_compare_dint_cycle_struct, pFb) == off, "cds_sl_compare_dint_cycle_struct.pFb at %zu, expected %zu", offsetof(cds_sl_compare_dint_cycle_struct, pFb), off);
+      off += sizeof(void *);
+      off = (off + sizeof(uint32_t) - 1) / sizeof(uint32_t) * sizeof(uint32_t);
+      CHECK(offsetof(cds_sl_compare_dint_cycle_struct, tNow) == off, "cds_sl_compare_dint_cycle_struct.tNow at %zu, expected %zu", offsetof(cds_sl_compare_dint_cycle_struct, tNow), off);
+      off += sizeof(uint32_t);
+      off = (off + sizeof(int32_t) - 1) / sizeof(int32_t) * sizeof(int32_t);
+      CHECK(offsetof(cds_sl_compare_dint_cycle_struct, cds_sl_compare_dint_cycle) == off, "cds_sl_compare_dint_cycle_struct return value at %zu, expected %zu", offsetof(cds_sl_compare_dint_cycle_struct, cds_sl_compare_dint_cycle), off); }
+    { size_t off = 0;
+      off = (off + sizeof(void *) - 1) / sizeof(void *) * sizeof(void *);
+      CHECK(offsetof(cds_sl_compare_udint_init_struct, pFb) == off, "cds_sl_compare_udint_init_struct.pFb at %zu, expected %zu", offsetof(cds_sl_compare_udint_init_struct, pFb), off);
+      off += sizeof(void *);
+      off = (off + sizeof(int32_t) - 1) / sizeof(int32_t) * sizeof(int32_t);
+      CHECK(offsetof(cds_sl_compare_udint_init_struct, cds_sl_compare_udint_init) == off, "cds_sl_compare_udint_init_struct return value at %zu, expected %zu", offsetof(cds_sl_compare_udint_init_struct, cds_sl_compare_udint_init), off); }
+    { size_t off = 0;
+      off = (off + sizeof(void *) - 1) / sizeof(void *) * sizeof(void *);
+      CHECK(offsetof(cds_sl_compare_udint_cycle_struct, pFb) == off, "cds_sl_compare_udint_cycle_struct.pFb at %zu, expected %zu", offsetof(cds_sl_compare_udint_cycle_struct, pFb), off);
+      off += sizeof(void *);
+      off = (off + sizeof(uint32_t) - 1) / sizeof(uint32_t) * sizeof(uint32_t);
+      CHECK(offsetof(cds_sl_compare_udint_cycle_struct, tNow) == off, "cds_sl_compare_udint_cycle_struct.tNow at %zu, expected %zu", offsetof(cds_sl_compare_udint_cycle_struct, tNow), off);
+      off += sizeof(uint32_t);
+      off = (off + sizeof(int32_t) - 1) / sizeof(int32_t) * sizeof(int32_t);
+      CHECK(offsetof(cds_sl_compare_udint_cycle_struct, cds_sl_compare_udint_cycle) == off, "cds_sl_compare_udint_cycle_struct return value at %zu, expected %zu", offsetof(cds_sl_compare_udint_cycle_struct, cds_sl_compare_udint_cycle), off); }
+    { size_t off = 0;
+      off = (off + sizeof(void *) - 1) / sizeof(void *) * sizeof(void *);
       CHECK(offsetof(cds_sl_limit_int_init_struct, pFb) == off, "cds_sl_limit_int_init_struct.pFb at %zu, expected %zu", offsetof(cds_sl_limit_int_init_struct, pFb), off);
       off += sizeof(void *);
       off = (off + sizeof(int32_t) - 1) / sizeof(int32_t) * sizeof(int32_t);
@@ -761,7 +821,7 @@ static uint8_t next_signal(uint8_t v, int pulse, unsigned pol)
 static void rnd_config_ton2(FB_TON2 *x)
 {
     x->tDelay = rnd_time();
-    { static const unsigned v[] = {0u, 1u, 10u, 100u}; x->nTimeBase = (uint16_t)v[rnd() % 4u]; }
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nTimeBase = (uint16_t)v[rnd() % 7u]; }
     x->wInputActive = (uint16_t)(rnd() & 0x3u);
     x->wInputNegated = (uint16_t)(rnd() % 2u == 0u ? 0u : (rnd() & 0x3u));
     x->dwOptions = rnd_options();
@@ -2119,7 +2179,7 @@ static void test_sr(void)
 static void rnd_config_ton(FB_TON *x)
 {
     x->tDelay = rnd_time();
-    { static const unsigned v[] = {0u, 1u, 10u, 100u}; x->nTimeBase = (uint16_t)v[rnd() % 4u]; }
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nTimeBase = (uint16_t)v[rnd() % 7u]; }
     x->wInputActive = (uint16_t)(rnd() & 0x1u);
     x->wInputNegated = (uint16_t)(rnd() % 2u == 0u ? 0u : (rnd() & 0x1u));
 }
@@ -2211,7 +2271,7 @@ static void test_ton(void)
 static void rnd_config_tof(FB_TOF *x)
 {
     x->tDelay = rnd_time();
-    { static const unsigned v[] = {0u, 1u, 10u, 100u}; x->nTimeBase = (uint16_t)v[rnd() % 4u]; }
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nTimeBase = (uint16_t)v[rnd() % 7u]; }
     x->wInputActive = (uint16_t)(rnd() & 0x1u);
     x->wInputNegated = (uint16_t)(rnd() % 2u == 0u ? 0u : (rnd() & 0x1u));
 }
@@ -2302,8 +2362,8 @@ static void test_tof(void)
 
 static void rnd_config_add_int(FB_ADD_INT *x)
 {
-    { static const unsigned v[] = {0u, 1u, 10u, 100u}; x->nAnalogIn1 = (int16_t)v[rnd() % 4u]; }
-    { static const unsigned v[] = {0u, 1u, 10u, 100u}; x->nAnalogIn2 = (int16_t)v[rnd() % 4u]; }
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nAnalogIn1 = (int16_t)v[rnd() % 7u]; }
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nAnalogIn2 = (int16_t)v[rnd() % 7u]; }
     x->wInputActive = (uint16_t)(rnd() & 0x300u);
 }
 /* 1: a valid configuration (want_valid) or an invalid one was drawn into a and b */
@@ -2390,8 +2450,8 @@ static void test_add_int(void)
 
 static void rnd_config_add_uint(FB_ADD_UINT *x)
 {
-    { static const unsigned v[] = {0u, 1u, 10u, 100u}; x->nAnalogIn1 = (uint16_t)v[rnd() % 4u]; }
-    { static const unsigned v[] = {0u, 1u, 10u, 100u}; x->nAnalogIn2 = (uint16_t)v[rnd() % 4u]; }
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nAnalogIn1 = (uint16_t)v[rnd() % 7u]; }
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nAnalogIn2 = (uint16_t)v[rnd() % 7u]; }
     x->wInputActive = (uint16_t)(rnd() & 0x300u);
 }
 /* 1: a valid configuration (want_valid) or an invalid one was drawn into a and b */
@@ -2478,8 +2538,8 @@ static void test_add_uint(void)
 
 static void rnd_config_add_dint(FB_ADD_DINT *x)
 {
-    { static const unsigned v[] = {0u, 1u, 10u, 100u}; x->nAnalogIn1 = (int32_t)v[rnd() % 4u]; }
-    { static const unsigned v[] = {0u, 1u, 10u, 100u}; x->nAnalogIn2 = (int32_t)v[rnd() % 4u]; }
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nAnalogIn1 = (int32_t)v[rnd() % 7u]; }
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nAnalogIn2 = (int32_t)v[rnd() % 7u]; }
     x->wInputActive = (uint16_t)(rnd() & 0x300u);
 }
 /* 1: a valid configuration (want_valid) or an invalid one was drawn into a and b */
@@ -2566,8 +2626,8 @@ static void test_add_dint(void)
 
 static void rnd_config_add_udint(FB_ADD_UDINT *x)
 {
-    { static const unsigned v[] = {0u, 1u, 10u, 100u}; x->nAnalogIn1 = (uint32_t)v[rnd() % 4u]; }
-    { static const unsigned v[] = {0u, 1u, 10u, 100u}; x->nAnalogIn2 = (uint32_t)v[rnd() % 4u]; }
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nAnalogIn1 = (uint32_t)v[rnd() % 7u]; }
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nAnalogIn2 = (uint32_t)v[rnd() % 7u]; }
     x->wInputActive = (uint16_t)(rnd() & 0x300u);
 }
 /* 1: a valid configuration (want_valid) or an invalid one was drawn into a and b */
@@ -2654,8 +2714,8 @@ static void test_add_udint(void)
 
 static void rnd_config_sub_int(FB_SUB_INT *x)
 {
-    { static const unsigned v[] = {0u, 1u, 10u, 100u}; x->nAnalogIn1 = (int16_t)v[rnd() % 4u]; }
-    { static const unsigned v[] = {0u, 1u, 10u, 100u}; x->nAnalogIn2 = (int16_t)v[rnd() % 4u]; }
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nAnalogIn1 = (int16_t)v[rnd() % 7u]; }
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nAnalogIn2 = (int16_t)v[rnd() % 7u]; }
     x->wInputActive = (uint16_t)(rnd() & 0x300u);
 }
 /* 1: a valid configuration (want_valid) or an invalid one was drawn into a and b */
@@ -2742,8 +2802,8 @@ static void test_sub_int(void)
 
 static void rnd_config_sub_uint(FB_SUB_UINT *x)
 {
-    { static const unsigned v[] = {0u, 1u, 10u, 100u}; x->nAnalogIn1 = (uint16_t)v[rnd() % 4u]; }
-    { static const unsigned v[] = {0u, 1u, 10u, 100u}; x->nAnalogIn2 = (uint16_t)v[rnd() % 4u]; }
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nAnalogIn1 = (uint16_t)v[rnd() % 7u]; }
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nAnalogIn2 = (uint16_t)v[rnd() % 7u]; }
     x->wInputActive = (uint16_t)(rnd() & 0x300u);
 }
 /* 1: a valid configuration (want_valid) or an invalid one was drawn into a and b */
@@ -2830,8 +2890,8 @@ static void test_sub_uint(void)
 
 static void rnd_config_sub_dint(FB_SUB_DINT *x)
 {
-    { static const unsigned v[] = {0u, 1u, 10u, 100u}; x->nAnalogIn1 = (int32_t)v[rnd() % 4u]; }
-    { static const unsigned v[] = {0u, 1u, 10u, 100u}; x->nAnalogIn2 = (int32_t)v[rnd() % 4u]; }
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nAnalogIn1 = (int32_t)v[rnd() % 7u]; }
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nAnalogIn2 = (int32_t)v[rnd() % 7u]; }
     x->wInputActive = (uint16_t)(rnd() & 0x300u);
 }
 /* 1: a valid configuration (want_valid) or an invalid one was drawn into a and b */
@@ -2918,8 +2978,8 @@ static void test_sub_dint(void)
 
 static void rnd_config_sub_udint(FB_SUB_UDINT *x)
 {
-    { static const unsigned v[] = {0u, 1u, 10u, 100u}; x->nAnalogIn1 = (uint32_t)v[rnd() % 4u]; }
-    { static const unsigned v[] = {0u, 1u, 10u, 100u}; x->nAnalogIn2 = (uint32_t)v[rnd() % 4u]; }
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nAnalogIn1 = (uint32_t)v[rnd() % 7u]; }
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nAnalogIn2 = (uint32_t)v[rnd() % 7u]; }
     x->wInputActive = (uint16_t)(rnd() & 0x300u);
 }
 /* 1: a valid configuration (want_valid) or an invalid one was drawn into a and b */
@@ -3006,8 +3066,8 @@ static void test_sub_udint(void)
 
 static void rnd_config_mul_int(FB_MUL_INT *x)
 {
-    { static const unsigned v[] = {0u, 1u, 10u, 100u}; x->nAnalogIn1 = (int16_t)v[rnd() % 4u]; }
-    { static const unsigned v[] = {0u, 1u, 10u, 100u}; x->nAnalogIn2 = (int16_t)v[rnd() % 4u]; }
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nAnalogIn1 = (int16_t)v[rnd() % 7u]; }
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nAnalogIn2 = (int16_t)v[rnd() % 7u]; }
     x->wInputActive = (uint16_t)(rnd() & 0x300u);
 }
 /* 1: a valid configuration (want_valid) or an invalid one was drawn into a and b */
@@ -3094,8 +3154,8 @@ static void test_mul_int(void)
 
 static void rnd_config_mul_uint(FB_MUL_UINT *x)
 {
-    { static const unsigned v[] = {0u, 1u, 10u, 100u}; x->nAnalogIn1 = (uint16_t)v[rnd() % 4u]; }
-    { static const unsigned v[] = {0u, 1u, 10u, 100u}; x->nAnalogIn2 = (uint16_t)v[rnd() % 4u]; }
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nAnalogIn1 = (uint16_t)v[rnd() % 7u]; }
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nAnalogIn2 = (uint16_t)v[rnd() % 7u]; }
     x->wInputActive = (uint16_t)(rnd() & 0x300u);
 }
 /* 1: a valid configuration (want_valid) or an invalid one was drawn into a and b */
@@ -3182,8 +3242,8 @@ static void test_mul_uint(void)
 
 static void rnd_config_mul_dint(FB_MUL_DINT *x)
 {
-    { static const unsigned v[] = {0u, 1u, 10u, 100u}; x->nAnalogIn1 = (int32_t)v[rnd() % 4u]; }
-    { static const unsigned v[] = {0u, 1u, 10u, 100u}; x->nAnalogIn2 = (int32_t)v[rnd() % 4u]; }
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nAnalogIn1 = (int32_t)v[rnd() % 7u]; }
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nAnalogIn2 = (int32_t)v[rnd() % 7u]; }
     x->wInputActive = (uint16_t)(rnd() & 0x300u);
 }
 /* 1: a valid configuration (want_valid) or an invalid one was drawn into a and b */
@@ -3270,8 +3330,8 @@ static void test_mul_dint(void)
 
 static void rnd_config_mul_udint(FB_MUL_UDINT *x)
 {
-    { static const unsigned v[] = {0u, 1u, 10u, 100u}; x->nAnalogIn1 = (uint32_t)v[rnd() % 4u]; }
-    { static const unsigned v[] = {0u, 1u, 10u, 100u}; x->nAnalogIn2 = (uint32_t)v[rnd() % 4u]; }
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nAnalogIn1 = (uint32_t)v[rnd() % 7u]; }
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nAnalogIn2 = (uint32_t)v[rnd() % 7u]; }
     x->wInputActive = (uint16_t)(rnd() & 0x300u);
 }
 /* 1: a valid configuration (want_valid) or an invalid one was drawn into a and b */
@@ -3358,9 +3418,9 @@ static void test_mul_udint(void)
 
 static void rnd_config_div_int(FB_DIV_INT *x)
 {
-    { static const unsigned v[] = {0u, 1u, 10u, 100u}; x->nAnalogIn1 = (int16_t)v[rnd() % 4u]; }
-    { static const unsigned v[] = {0u, 1u, 10u, 100u}; x->nAnalogIn2 = (int16_t)v[rnd() % 4u]; }
-    { static const unsigned v[] = {0u, 1u, 10u, 100u}; x->nRounding = (uint16_t)v[rnd() % 4u]; }
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nAnalogIn1 = (int16_t)v[rnd() % 7u]; }
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nAnalogIn2 = (int16_t)v[rnd() % 7u]; }
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nRounding = (uint16_t)v[rnd() % 7u]; }
     x->wInputActive = (uint16_t)(rnd() & 0x300u);
 }
 /* 1: a valid configuration (want_valid) or an invalid one was drawn into a and b */
@@ -3448,9 +3508,9 @@ static void test_div_int(void)
 
 static void rnd_config_div_uint(FB_DIV_UINT *x)
 {
-    { static const unsigned v[] = {0u, 1u, 10u, 100u}; x->nAnalogIn1 = (uint16_t)v[rnd() % 4u]; }
-    { static const unsigned v[] = {0u, 1u, 10u, 100u}; x->nAnalogIn2 = (uint16_t)v[rnd() % 4u]; }
-    { static const unsigned v[] = {0u, 1u, 10u, 100u}; x->nRounding = (uint16_t)v[rnd() % 4u]; }
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nAnalogIn1 = (uint16_t)v[rnd() % 7u]; }
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nAnalogIn2 = (uint16_t)v[rnd() % 7u]; }
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nRounding = (uint16_t)v[rnd() % 7u]; }
     x->wInputActive = (uint16_t)(rnd() & 0x300u);
 }
 /* 1: a valid configuration (want_valid) or an invalid one was drawn into a and b */
@@ -3538,9 +3598,9 @@ static void test_div_uint(void)
 
 static void rnd_config_div_dint(FB_DIV_DINT *x)
 {
-    { static const unsigned v[] = {0u, 1u, 10u, 100u}; x->nAnalogIn1 = (int32_t)v[rnd() % 4u]; }
-    { static const unsigned v[] = {0u, 1u, 10u, 100u}; x->nAnalogIn2 = (int32_t)v[rnd() % 4u]; }
-    { static const unsigned v[] = {0u, 1u, 10u, 100u}; x->nRounding = (uint16_t)v[rnd() % 4u]; }
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nAnalogIn1 = (int32_t)v[rnd() % 7u]; }
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nAnalogIn2 = (int32_t)v[rnd() % 7u]; }
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nRounding = (uint16_t)v[rnd() % 7u]; }
     x->wInputActive = (uint16_t)(rnd() & 0x300u);
 }
 /* 1: a valid configuration (want_valid) or an invalid one was drawn into a and b */
@@ -3628,9 +3688,9 @@ static void test_div_dint(void)
 
 static void rnd_config_div_udint(FB_DIV_UDINT *x)
 {
-    { static const unsigned v[] = {0u, 1u, 10u, 100u}; x->nAnalogIn1 = (uint32_t)v[rnd() % 4u]; }
-    { static const unsigned v[] = {0u, 1u, 10u, 100u}; x->nAnalogIn2 = (uint32_t)v[rnd() % 4u]; }
-    { static const unsigned v[] = {0u, 1u, 10u, 100u}; x->nRounding = (uint16_t)v[rnd() % 4u]; }
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nAnalogIn1 = (uint32_t)v[rnd() % 7u]; }
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nAnalogIn2 = (uint32_t)v[rnd() % 7u]; }
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nRounding = (uint16_t)v[rnd() % 7u]; }
     x->wInputActive = (uint16_t)(rnd() & 0x300u);
 }
 /* 1: a valid configuration (want_valid) or an invalid one was drawn into a and b */
@@ -3716,13 +3776,413 @@ static void test_div_udint(void)
     CHECK(reached_error, "FB_DIV_UDINT: the random test never reached ERROR");
 }
 
+static void rnd_config_compare_int(FB_COMPARE_INT *x)
+{
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nCompIn1 = (int16_t)v[rnd() % 7u]; }
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nCompIn2 = (int16_t)v[rnd() % 7u]; }
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nCompIn3 = (int16_t)v[rnd() % 7u]; }
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nCompIn4 = (int16_t)v[rnd() % 7u]; }
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nCompIn5 = (int16_t)v[rnd() % 7u]; }
+    x->tToleranceTime = rnd_time();
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nAllowedDeviation = (uint32_t)v[rnd() % 7u]; }
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nArchitecture = (uint16_t)v[rnd() % 7u]; }
+    x->wInputActive = (uint16_t)(rnd() & 0x1F00u);
+}
+/* 1: a valid configuration (want_valid) or an invalid one was drawn into a and b */
+static int draw_compare_int(FB_COMPARE_INT *a, FB_COMPARE_INT *b, int want_valid)
+{
+    long k;
+    for (k = 0; k < 200000L; k++) {
+        static FB_COMPARE_INT x;
+        int valid;
+        memset(&x, 0, sizeof x);
+        rnd_config_compare_int(&x);
+        valid = sl_compare_int_init(&x) == SL_OK && sl_compare_int_cycle(&x, 0u) == SL_OK;
+        if (valid == want_valid) {
+            memset(&x.bRun, 0, 0); /* keep x's parameters, reset the instance */
+            memset(a, 0, sizeof *a);
+            rnd_config_compare_int(a); /* placeholder, overwritten below */
+            a->nCompIn1 = x.nCompIn1;
+            a->nCompIn2 = x.nCompIn2;
+            a->nCompIn3 = x.nCompIn3;
+            a->nCompIn4 = x.nCompIn4;
+            a->nCompIn5 = x.nCompIn5;
+            a->tToleranceTime = x.tToleranceTime;
+            a->nAllowedDeviation = x.nAllowedDeviation;
+            a->nArchitecture = x.nArchitecture;
+            a->wInputActive = x.wInputActive;
+            *b = *a;
+            return 1;
+        }
+    }
+    return 0;
+}
+static void test_compare_int(void)
+{
+    static FB_COMPARE_INT a, b;
+    cds_sl_compare_int_cycle_struct p;
+    int c, k, bump, ok = 0, cycles = 0, inv_cycles = 0, inv_config = 0, reached_run = 0, reached_error = 0;
+    int hist[12] = {0};
+    unsigned pol = 0;
+    uint32_t t = 1000u;
+    memset(&a, 0, sizeof a);
+    memset(&b, 0, sizeof b);
+    memset(&p, 0, sizeof p);
+    p.pFb = NULL;
+    p.cds_sl_compare_int_cycle = 12345;
+    cds_sl_compare_int_cycle(&p);
+    CHECK(p.cds_sl_compare_int_cycle == SL_E_NULL, "cds_sl_compare_int_cycle(NULL) returned %d", (int)p.cds_sl_compare_int_cycle);
+    a.bRun = b.bRun = 1;
+    a.wInputActive = b.wInputActive = 1;
+    { cds_sl_compare_int_init_struct q; int32_t r; q.pFb = &a; cds_sl_compare_int_init(&q); r = sl_compare_int_init(&b);
+      CHECK(q.cds_sl_compare_int_init == r && memcmp(&a, &b, sizeof a) == 0, "cds_sl_compare_int_init differs from sl_compare_int_init"); }
+    rng = 1148812067u; /* FNV-1a of "FB_COMPARE_INT" */
+    machine = 1u;
+    for (c = 0; c < 20; c++) {
+        int valid = c < 16; /* 16 valid configurations, then the labelled invalid share: 4 */
+        if (!draw_compare_int(&a, &b, valid)) {
+            CHECK(!valid, "FB_COMPARE_INT: no valid configuration found in 200000 random draws");
+            continue;
+        }
+        if (!valid) inv_config++;
+        a.bErrAck = b.bErrAck = (uint8_t)(0);
+        bump = 20 + (int)(rnd() % 20u);
+        pol = (c % 2 == 1) ? rnd() : 0u;
+        for (k = 0; k < 50; k++) {
+            int32_t direct;
+            next_machine();
+            a.bErrAck = b.bErrAck = next_signal(a.bErrAck, 1, pol >> 0);
+            a.bRun = b.bRun = (uint8_t)(k >= 2 && rnd() % 100u != 0u);
+            if (valid && k == bump) { a.tToleranceTime++; b.tToleranceTime++; } /* changed while running: ERROR */
+            if (valid && k == bump + 2) { a.tToleranceTime--; b.tToleranceTime--; } /* restored */
+            p.pFb = &a;
+            p.tNow = t += 10u;
+            cds_sl_compare_int_cycle(&p);
+            direct = sl_compare_int_cycle(&b, p.tNow);
+            CHECK(p.cds_sl_compare_int_cycle == direct, "FB_COMPARE_INT config %d cycle %d: adapter %d, direct %d", c, k, (int)p.cds_sl_compare_int_cycle, (int)direct);
+            CHECK(memcmp(&a, &b, sizeof a) == 0, "FB_COMPARE_INT config %d cycle %d: instances differ", c, k);
+            if (!valid) { inv_cycles++; continue; }
+            cycles++;
+            if (direct == SL_OK) ok++;
+            if (direct <= 0 && direct > -12) hist[-direct]++;
+            if (b.nState == SL_STATE_ERROR) reached_error = 1;
+            if (b.nState != SL_STATE_STOP && b.nState != SL_STATE_ERROR && b.nState != SL_STATE_RESET && (b.bIsValid)) reached_run = 1;
+        }
+    }
+    printf("FB_COMPARE_INT: %d of %d cycles (16 valid random configurations) returned SL_OK; run-like state %s, ERROR %s; invalid share: %d configurations, %d cycles\n", ok, cycles, reached_run ? "reached" : "NOT reached", reached_error ? "reached" : "NOT reached", inv_config, inv_cycles);
+    if (2 * ok <= cycles) printf("  status histogram (0, -1, ... -11): %d %d %d %d %d %d %d %d %d %d %d\n", hist[0], hist[1], hist[2], hist[3], hist[4], hist[5], hist[6], hist[7], hist[8], hist[9], hist[10]);
+    CHECK(cycles > 0 && 2 * ok > cycles, "FB_COMPARE_INT: only %d of %d cycles with valid configurations returned SL_OK", ok, cycles);
+    CHECK(reached_run, "FB_COMPARE_INT: the random test never reached a running state (an output on)");
+    CHECK(reached_error, "FB_COMPARE_INT: the random test never reached ERROR");
+}
+
+static void rnd_config_compare_uint(FB_COMPARE_UINT *x)
+{
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nCompIn1 = (uint16_t)v[rnd() % 7u]; }
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nCompIn2 = (uint16_t)v[rnd() % 7u]; }
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nCompIn3 = (uint16_t)v[rnd() % 7u]; }
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nCompIn4 = (uint16_t)v[rnd() % 7u]; }
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nCompIn5 = (uint16_t)v[rnd() % 7u]; }
+    x->tToleranceTime = rnd_time();
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nAllowedDeviation = (uint32_t)v[rnd() % 7u]; }
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nArchitecture = (uint16_t)v[rnd() % 7u]; }
+    x->wInputActive = (uint16_t)(rnd() & 0x1F00u);
+}
+/* 1: a valid configuration (want_valid) or an invalid one was drawn into a and b */
+static int draw_compare_uint(FB_COMPARE_UINT *a, FB_COMPARE_UINT *b, int want_valid)
+{
+    long k;
+    for (k = 0; k < 200000L; k++) {
+        static FB_COMPARE_UINT x;
+        int valid;
+        memset(&x, 0, sizeof x);
+        rnd_config_compare_uint(&x);
+        valid = sl_compare_uint_init(&x) == SL_OK && sl_compare_uint_cycle(&x, 0u) == SL_OK;
+        if (valid == want_valid) {
+            memset(&x.bRun, 0, 0); /* keep x's parameters, reset the instance */
+            memset(a, 0, sizeof *a);
+            rnd_config_compare_uint(a); /* placeholder, overwritten below */
+            a->nCompIn1 = x.nCompIn1;
+            a->nCompIn2 = x.nCompIn2;
+            a->nCompIn3 = x.nCompIn3;
+            a->nCompIn4 = x.nCompIn4;
+            a->nCompIn5 = x.nCompIn5;
+            a->tToleranceTime = x.tToleranceTime;
+            a->nAllowedDeviation = x.nAllowedDeviation;
+            a->nArchitecture = x.nArchitecture;
+            a->wInputActive = x.wInputActive;
+            *b = *a;
+            return 1;
+        }
+    }
+    return 0;
+}
+static void test_compare_uint(void)
+{
+    static FB_COMPARE_UINT a, b;
+    cds_sl_compare_uint_cycle_struct p;
+    int c, k, bump, ok = 0, cycles = 0, inv_cycles = 0, inv_config = 0, reached_run = 0, reached_error = 0;
+    int hist[12] = {0};
+    unsigned pol = 0;
+    uint32_t t = 1000u;
+    memset(&a, 0, sizeof a);
+    memset(&b, 0, sizeof b);
+    memset(&p, 0, sizeof p);
+    p.pFb = NULL;
+    p.cds_sl_compare_uint_cycle = 12345;
+    cds_sl_compare_uint_cycle(&p);
+    CHECK(p.cds_sl_compare_uint_cycle == SL_E_NULL, "cds_sl_compare_uint_cycle(NULL) returned %d", (int)p.cds_sl_compare_uint_cycle);
+    a.bRun = b.bRun = 1;
+    a.wInputActive = b.wInputActive = 1;
+    { cds_sl_compare_uint_init_struct q; int32_t r; q.pFb = &a; cds_sl_compare_uint_init(&q); r = sl_compare_uint_init(&b);
+      CHECK(q.cds_sl_compare_uint_init == r && memcmp(&a, &b, sizeof a) == 0, "cds_sl_compare_uint_init differs from sl_compare_uint_init"); }
+    rng = 3516712326u; /* FNV-1a of "FB_COMPARE_UINT" */
+    machine = 1u;
+    for (c = 0; c < 20; c++) {
+        int valid = c < 16; /* 16 valid configurations, then the labelled invalid share: 4 */
+        if (!draw_compare_uint(&a, &b, valid)) {
+            CHECK(!valid, "FB_COMPARE_UINT: no valid configuration found in 200000 random draws");
+            continue;
+        }
+        if (!valid) inv_config++;
+        a.bErrAck = b.bErrAck = (uint8_t)(0);
+        bump = 20 + (int)(rnd() % 20u);
+        pol = (c % 2 == 1) ? rnd() : 0u;
+        for (k = 0; k < 50; k++) {
+            int32_t direct;
+            next_machine();
+            a.bErrAck = b.bErrAck = next_signal(a.bErrAck, 1, pol >> 0);
+            a.bRun = b.bRun = (uint8_t)(k >= 2 && rnd() % 100u != 0u);
+            if (valid && k == bump) { a.tToleranceTime++; b.tToleranceTime++; } /* changed while running: ERROR */
+            if (valid && k == bump + 2) { a.tToleranceTime--; b.tToleranceTime--; } /* restored */
+            p.pFb = &a;
+            p.tNow = t += 10u;
+            cds_sl_compare_uint_cycle(&p);
+            direct = sl_compare_uint_cycle(&b, p.tNow);
+            CHECK(p.cds_sl_compare_uint_cycle == direct, "FB_COMPARE_UINT config %d cycle %d: adapter %d, direct %d", c, k, (int)p.cds_sl_compare_uint_cycle, (int)direct);
+            CHECK(memcmp(&a, &b, sizeof a) == 0, "FB_COMPARE_UINT config %d cycle %d: instances differ", c, k);
+            if (!valid) { inv_cycles++; continue; }
+            cycles++;
+            if (direct == SL_OK) ok++;
+            if (direct <= 0 && direct > -12) hist[-direct]++;
+            if (b.nState == SL_STATE_ERROR) reached_error = 1;
+            if (b.nState != SL_STATE_STOP && b.nState != SL_STATE_ERROR && b.nState != SL_STATE_RESET && (b.bIsValid)) reached_run = 1;
+        }
+    }
+    printf("FB_COMPARE_UINT: %d of %d cycles (16 valid random configurations) returned SL_OK; run-like state %s, ERROR %s; invalid share: %d configurations, %d cycles\n", ok, cycles, reached_run ? "reached" : "NOT reached", reached_error ? "reached" : "NOT reached", inv_config, inv_cycles);
+    if (2 * ok <= cycles) printf("  status histogram (0, -1, ... -11): %d %d %d %d %d %d %d %d %d %d %d\n", hist[0], hist[1], hist[2], hist[3], hist[4], hist[5], hist[6], hist[7], hist[8], hist[9], hist[10]);
+    CHECK(cycles > 0 && 2 * ok > cycles, "FB_COMPARE_UINT: only %d of %d cycles with valid configurations returned SL_OK", ok, cycles);
+    CHECK(reached_run, "FB_COMPARE_UINT: the random test never reached a running state (an output on)");
+    CHECK(reached_error, "FB_COMPARE_UINT: the random test never reached ERROR");
+}
+
+static void rnd_config_compare_dint(FB_COMPARE_DINT *x)
+{
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nCompIn1 = (int32_t)v[rnd() % 7u]; }
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nCompIn2 = (int32_t)v[rnd() % 7u]; }
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nCompIn3 = (int32_t)v[rnd() % 7u]; }
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nCompIn4 = (int32_t)v[rnd() % 7u]; }
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nCompIn5 = (int32_t)v[rnd() % 7u]; }
+    x->tToleranceTime = rnd_time();
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nAllowedDeviation = (uint32_t)v[rnd() % 7u]; }
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nArchitecture = (uint16_t)v[rnd() % 7u]; }
+    x->wInputActive = (uint16_t)(rnd() & 0x1F00u);
+}
+/* 1: a valid configuration (want_valid) or an invalid one was drawn into a and b */
+static int draw_compare_dint(FB_COMPARE_DINT *a, FB_COMPARE_DINT *b, int want_valid)
+{
+    long k;
+    for (k = 0; k < 200000L; k++) {
+        static FB_COMPARE_DINT x;
+        int valid;
+        memset(&x, 0, sizeof x);
+        rnd_config_compare_dint(&x);
+        valid = sl_compare_dint_init(&x) == SL_OK && sl_compare_dint_cycle(&x, 0u) == SL_OK;
+        if (valid == want_valid) {
+            memset(&x.bRun, 0, 0); /* keep x's parameters, reset the instance */
+            memset(a, 0, sizeof *a);
+            rnd_config_compare_dint(a); /* placeholder, overwritten below */
+            a->nCompIn1 = x.nCompIn1;
+            a->nCompIn2 = x.nCompIn2;
+            a->nCompIn3 = x.nCompIn3;
+            a->nCompIn4 = x.nCompIn4;
+            a->nCompIn5 = x.nCompIn5;
+            a->tToleranceTime = x.tToleranceTime;
+            a->nAllowedDeviation = x.nAllowedDeviation;
+            a->nArchitecture = x.nArchitecture;
+            a->wInputActive = x.wInputActive;
+            *b = *a;
+            return 1;
+        }
+    }
+    return 0;
+}
+static void test_compare_dint(void)
+{
+    static FB_COMPARE_DINT a, b;
+    cds_sl_compare_dint_cycle_struct p;
+    int c, k, bump, ok = 0, cycles = 0, inv_cycles = 0, inv_config = 0, reached_run = 0, reached_error = 0;
+    int hist[12] = {0};
+    unsigned pol = 0;
+    uint32_t t = 1000u;
+    memset(&a, 0, sizeof a);
+    memset(&b, 0, sizeof b);
+    memset(&p, 0, sizeof p);
+    p.pFb = NULL;
+    p.cds_sl_compare_dint_cycle = 12345;
+    cds_sl_compare_dint_cycle(&p);
+    CHECK(p.cds_sl_compare_dint_cycle == SL_E_NULL, "cds_sl_compare_dint_cycle(NULL) returned %d", (int)p.cds_sl_compare_dint_cycle);
+    a.bRun = b.bRun = 1;
+    a.wInputActive = b.wInputActive = 1;
+    { cds_sl_compare_dint_init_struct q; int32_t r; q.pFb = &a; cds_sl_compare_dint_init(&q); r = sl_compare_dint_init(&b);
+      CHECK(q.cds_sl_compare_dint_init == r && memcmp(&a, &b, sizeof a) == 0, "cds_sl_compare_dint_init differs from sl_compare_dint_init"); }
+    rng = 1377166275u; /* FNV-1a of "FB_COMPARE_DINT" */
+    machine = 1u;
+    for (c = 0; c < 20; c++) {
+        int valid = c < 16; /* 16 valid configurations, then the labelled invalid share: 4 */
+        if (!draw_compare_dint(&a, &b, valid)) {
+            CHECK(!valid, "FB_COMPARE_DINT: no valid configuration found in 200000 random draws");
+            continue;
+        }
+        if (!valid) inv_config++;
+        a.bErrAck = b.bErrAck = (uint8_t)(0);
+        bump = 20 + (int)(rnd() % 20u);
+        pol = (c % 2 == 1) ? rnd() : 0u;
+        for (k = 0; k < 50; k++) {
+            int32_t direct;
+            next_machine();
+            a.bErrAck = b.bErrAck = next_signal(a.bErrAck, 1, pol >> 0);
+            a.bRun = b.bRun = (uint8_t)(k >= 2 && rnd() % 100u != 0u);
+            if (valid && k == bump) { a.tToleranceTime++; b.tToleranceTime++; } /* changed while running: ERROR */
+            if (valid && k == bump + 2) { a.tToleranceTime--; b.tToleranceTime--; } /* restored */
+            p.pFb = &a;
+            p.tNow = t += 10u;
+            cds_sl_compare_dint_cycle(&p);
+            direct = sl_compare_dint_cycle(&b, p.tNow);
+            CHECK(p.cds_sl_compare_dint_cycle == direct, "FB_COMPARE_DINT config %d cycle %d: adapter %d, direct %d", c, k, (int)p.cds_sl_compare_dint_cycle, (int)direct);
+            CHECK(memcmp(&a, &b, sizeof a) == 0, "FB_COMPARE_DINT config %d cycle %d: instances differ", c, k);
+            if (!valid) { inv_cycles++; continue; }
+            cycles++;
+            if (direct == SL_OK) ok++;
+            if (direct <= 0 && direct > -12) hist[-direct]++;
+            if (b.nState == SL_STATE_ERROR) reached_error = 1;
+            if (b.nState != SL_STATE_STOP && b.nState != SL_STATE_ERROR && b.nState != SL_STATE_RESET && (b.bIsValid)) reached_run = 1;
+        }
+    }
+    printf("FB_COMPARE_DINT: %d of %d cycles (16 valid random configurations) returned SL_OK; run-like state %s, ERROR %s; invalid share: %d configurations, %d cycles\n", ok, cycles, reached_run ? "reached" : "NOT reached", reached_error ? "reached" : "NOT reached", inv_config, inv_cycles);
+    if (2 * ok <= cycles) printf("  status histogram (0, -1, ... -11): %d %d %d %d %d %d %d %d %d %d %d\n", hist[0], hist[1], hist[2], hist[3], hist[4], hist[5], hist[6], hist[7], hist[8], hist[9], hist[10]);
+    CHECK(cycles > 0 && 2 * ok > cycles, "FB_COMPARE_DINT: only %d of %d cycles with valid configurations returned SL_OK", ok, cycles);
+    CHECK(reached_run, "FB_COMPARE_DINT: the random test never reached a running state (an output on)");
+    CHECK(reached_error, "FB_COMPARE_DINT: the random test never reached ERROR");
+}
+
+static void rnd_config_compare_udint(FB_COMPARE_UDINT *x)
+{
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nCompIn1 = (uint32_t)v[rnd() % 7u]; }
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nCompIn2 = (uint32_t)v[rnd() % 7u]; }
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nCompIn3 = (uint32_t)v[rnd() % 7u]; }
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nCompIn4 = (uint32_t)v[rnd() % 7u]; }
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nCompIn5 = (uint32_t)v[rnd() % 7u]; }
+    x->tToleranceTime = rnd_time();
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nAllowedDeviation = (uint32_t)v[rnd() % 7u]; }
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nArchitecture = (uint16_t)v[rnd() % 7u]; }
+    x->wInputActive = (uint16_t)(rnd() & 0x1F00u);
+}
+/* 1: a valid configuration (want_valid) or an invalid one was drawn into a and b */
+static int draw_compare_udint(FB_COMPARE_UDINT *a, FB_COMPARE_UDINT *b, int want_valid)
+{
+    long k;
+    for (k = 0; k < 200000L; k++) {
+        static FB_COMPARE_UDINT x;
+        int valid;
+        memset(&x, 0, sizeof x);
+        rnd_config_compare_udint(&x);
+        valid = sl_compare_udint_init(&x) == SL_OK && sl_compare_udint_cycle(&x, 0u) == SL_OK;
+        if (valid == want_valid) {
+            memset(&x.bRun, 0, 0); /* keep x's parameters, reset the instance */
+            memset(a, 0, sizeof *a);
+            rnd_config_compare_udint(a); /* placeholder, overwritten below */
+            a->nCompIn1 = x.nCompIn1;
+            a->nCompIn2 = x.nCompIn2;
+            a->nCompIn3 = x.nCompIn3;
+            a->nCompIn4 = x.nCompIn4;
+            a->nCompIn5 = x.nCompIn5;
+            a->tToleranceTime = x.tToleranceTime;
+            a->nAllowedDeviation = x.nAllowedDeviation;
+            a->nArchitecture = x.nArchitecture;
+            a->wInputActive = x.wInputActive;
+            *b = *a;
+            return 1;
+        }
+    }
+    return 0;
+}
+static void test_compare_udint(void)
+{
+    static FB_COMPARE_UDINT a, b;
+    cds_sl_compare_udint_cycle_struct p;
+    int c, k, bump, ok = 0, cycles = 0, inv_cycles = 0, inv_config = 0, reached_run = 0, reached_error = 0;
+    int hist[12] = {0};
+    unsigned pol = 0;
+    uint32_t t = 1000u;
+    memset(&a, 0, sizeof a);
+    memset(&b, 0, sizeof b);
+    memset(&p, 0, sizeof p);
+    p.pFb = NULL;
+    p.cds_sl_compare_udint_cycle = 12345;
+    cds_sl_compare_udint_cycle(&p);
+    CHECK(p.cds_sl_compare_udint_cycle == SL_E_NULL, "cds_sl_compare_udint_cycle(NULL) returned %d", (int)p.cds_sl_compare_udint_cycle);
+    a.bRun = b.bRun = 1;
+    a.wInputActive = b.wInputActive = 1;
+    { cds_sl_compare_udint_init_struct q; int32_t r; q.pFb = &a; cds_sl_compare_udint_init(&q); r = sl_compare_udint_init(&b);
+      CHECK(q.cds_sl_compare_udint_init == r && memcmp(&a, &b, sizeof a) == 0, "cds_sl_compare_udint_init differs from sl_compare_udint_init"); }
+    rng = 3909295700u; /* FNV-1a of "FB_COMPARE_UDINT" */
+    machine = 1u;
+    for (c = 0; c < 20; c++) {
+        int valid = c < 16; /* 16 valid configurations, then the labelled invalid share: 4 */
+        if (!draw_compare_udint(&a, &b, valid)) {
+            CHECK(!valid, "FB_COMPARE_UDINT: no valid configuration found in 200000 random draws");
+            continue;
+        }
+        if (!valid) inv_config++;
+        a.bErrAck = b.bErrAck = (uint8_t)(0);
+        bump = 20 + (int)(rnd() % 20u);
+        pol = (c % 2 == 1) ? rnd() : 0u;
+        for (k = 0; k < 50; k++) {
+            int32_t direct;
+            next_machine();
+            a.bErrAck = b.bErrAck = next_signal(a.bErrAck, 1, pol >> 0);
+            a.bRun = b.bRun = (uint8_t)(k >= 2 && rnd() % 100u != 0u);
+            if (valid && k == bump) { a.tToleranceTime++; b.tToleranceTime++; } /* changed while running: ERROR */
+            if (valid && k == bump + 2) { a.tToleranceTime--; b.tToleranceTime--; } /* restored */
+            p.pFb = &a;
+            p.tNow = t += 10u;
+            cds_sl_compare_udint_cycle(&p);
+            direct = sl_compare_udint_cycle(&b, p.tNow);
+            CHECK(p.cds_sl_compare_udint_cycle == direct, "FB_COMPARE_UDINT config %d cycle %d: adapter %d, direct %d", c, k, (int)p.cds_sl_compare_udint_cycle, (int)direct);
+            CHECK(memcmp(&a, &b, sizeof a) == 0, "FB_COMPARE_UDINT config %d cycle %d: instances differ", c, k);
+            if (!valid) { inv_cycles++; continue; }
+            cycles++;
+            if (direct == SL_OK) ok++;
+            if (direct <= 0 && direct > -12) hist[-direct]++;
+            if (b.nState == SL_STATE_ERROR) reached_error = 1;
+            if (b.nState != SL_STATE_STOP && b.nState != SL_STATE_ERROR && b.nState != SL_STATE_RESET && (b.bIsValid)) reached_run = 1;
+        }
+    }
+    printf("FB_COMPARE_UDINT: %d of %d cycles (16 valid random configurations) returned SL_OK; run-like state %s, ERROR %s; invalid share: %d configurations, %d cycles\n", ok, cycles, reached_run ? "reached" : "NOT reached", reached_error ? "reached" : "NOT reached", inv_config, inv_cycles);
+    if (2 * ok <= cycles) printf("  status histogram (0, -1, ... -11): %d %d %d %d %d %d %d %d %d %d %d\n", hist[0], hist[1], hist[2], hist[3], hist[4], hist[5], hist[6], hist[7], hist[8], hist[9], hist[10]);
+    CHECK(cycles > 0 && 2 * ok > cycles, "FB_COMPARE_UDINT: only %d of %d cycles with valid configurations returned SL_OK", ok, cycles);
+    CHECK(reached_run, "FB_COMPARE_UDINT: the random test never reached a running state (an output on)");
+    CHECK(reached_error, "FB_COMPARE_UDINT: the random test never reached ERROR");
+}
+
 static void rnd_config_limit_int(FB_LIMIT_INT *x)
 {
-    { static const unsigned v[] = {0u, 1u, 10u, 100u}; x->nAnalogIn = (int16_t)v[rnd() % 4u]; }
-    { static const unsigned v[] = {0u, 1u, 10u, 100u}; x->nMinValue = (int16_t)v[rnd() % 4u]; }
-    { static const unsigned v[] = {0u, 1u, 10u, 100u}; x->nMaxValue = (int16_t)v[rnd() % 4u]; }
-    { static const unsigned v[] = {0u, 1u, 10u, 100u}; x->nMinimumValue = (int16_t)v[rnd() % 4u]; }
-    { static const unsigned v[] = {0u, 1u, 10u, 100u}; x->nMaximumValue = (int16_t)v[rnd() % 4u]; }
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nAnalogIn = (int16_t)v[rnd() % 7u]; }
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nMinValue = (int16_t)v[rnd() % 7u]; }
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nMaxValue = (int16_t)v[rnd() % 7u]; }
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nMinimumValue = (int16_t)v[rnd() % 7u]; }
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nMaximumValue = (int16_t)v[rnd() % 7u]; }
     x->wInputActive = (uint16_t)(rnd() & 0x700u);
 }
 /* 1: a valid configuration (want_valid) or an invalid one was drawn into a and b */
@@ -3812,11 +4272,11 @@ static void test_limit_int(void)
 
 static void rnd_config_limit_uint(FB_LIMIT_UINT *x)
 {
-    { static const unsigned v[] = {0u, 1u, 10u, 100u}; x->nAnalogIn = (uint16_t)v[rnd() % 4u]; }
-    { static const unsigned v[] = {0u, 1u, 10u, 100u}; x->nMinValue = (uint16_t)v[rnd() % 4u]; }
-    { static const unsigned v[] = {0u, 1u, 10u, 100u}; x->nMaxValue = (uint16_t)v[rnd() % 4u]; }
-    { static const unsigned v[] = {0u, 1u, 10u, 100u}; x->nMinimumValue = (uint16_t)v[rnd() % 4u]; }
-    { static const unsigned v[] = {0u, 1u, 10u, 100u}; x->nMaximumValue = (uint16_t)v[rnd() % 4u]; }
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nAnalogIn = (uint16_t)v[rnd() % 7u]; }
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nMinValue = (uint16_t)v[rnd() % 7u]; }
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nMaxValue = (uint16_t)v[rnd() % 7u]; }
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nMinimumValue = (uint16_t)v[rnd() % 7u]; }
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nMaximumValue = (uint16_t)v[rnd() % 7u]; }
     x->wInputActive = (uint16_t)(rnd() & 0x700u);
 }
 /* 1: a valid configuration (want_valid) or an invalid one was drawn into a and b */
@@ -3906,11 +4366,11 @@ static void test_limit_uint(void)
 
 static void rnd_config_limit_dint(FB_LIMIT_DINT *x)
 {
-    { static const unsigned v[] = {0u, 1u, 10u, 100u}; x->nAnalogIn = (int32_t)v[rnd() % 4u]; }
-    { static const unsigned v[] = {0u, 1u, 10u, 100u}; x->nMinValue = (int32_t)v[rnd() % 4u]; }
-    { static const unsigned v[] = {0u, 1u, 10u, 100u}; x->nMaxValue = (int32_t)v[rnd() % 4u]; }
-    { static const unsigned v[] = {0u, 1u, 10u, 100u}; x->nMinimumValue = (int32_t)v[rnd() % 4u]; }
-    { static const unsigned v[] = {0u, 1u, 10u, 100u}; x->nMaximumValue = (int32_t)v[rnd() % 4u]; }
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nAnalogIn = (int32_t)v[rnd() % 7u]; }
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nMinValue = (int32_t)v[rnd() % 7u]; }
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nMaxValue = (int32_t)v[rnd() % 7u]; }
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nMinimumValue = (int32_t)v[rnd() % 7u]; }
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nMaximumValue = (int32_t)v[rnd() % 7u]; }
     x->wInputActive = (uint16_t)(rnd() & 0x700u);
 }
 /* 1: a valid configuration (want_valid) or an invalid one was drawn into a and b */
@@ -4000,11 +4460,11 @@ static void test_limit_dint(void)
 
 static void rnd_config_limit_udint(FB_LIMIT_UDINT *x)
 {
-    { static const unsigned v[] = {0u, 1u, 10u, 100u}; x->nAnalogIn = (uint32_t)v[rnd() % 4u]; }
-    { static const unsigned v[] = {0u, 1u, 10u, 100u}; x->nMinValue = (uint32_t)v[rnd() % 4u]; }
-    { static const unsigned v[] = {0u, 1u, 10u, 100u}; x->nMaxValue = (uint32_t)v[rnd() % 4u]; }
-    { static const unsigned v[] = {0u, 1u, 10u, 100u}; x->nMinimumValue = (uint32_t)v[rnd() % 4u]; }
-    { static const unsigned v[] = {0u, 1u, 10u, 100u}; x->nMaximumValue = (uint32_t)v[rnd() % 4u]; }
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nAnalogIn = (uint32_t)v[rnd() % 7u]; }
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nMinValue = (uint32_t)v[rnd() % 7u]; }
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nMaxValue = (uint32_t)v[rnd() % 7u]; }
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nMinimumValue = (uint32_t)v[rnd() % 7u]; }
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nMaximumValue = (uint32_t)v[rnd() % 7u]; }
     x->wInputActive = (uint16_t)(rnd() & 0x700u);
 }
 /* 1: a valid configuration (want_valid) or an invalid one was drawn into a and b */
@@ -4094,8 +4554,8 @@ static void test_limit_udint(void)
 
 static void rnd_config_counter_int(FB_COUNTER_INT *x)
 {
-    { static const unsigned v[] = {0u, 1u, 10u, 100u}; x->nPresetValue = (int16_t)v[rnd() % 4u]; }
-    { static const unsigned v[] = {0u, 1u, 10u, 100u}; x->nCounterLimit = (int16_t)v[rnd() % 4u]; }
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nPresetValue = (int16_t)v[rnd() % 7u]; }
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nCounterLimit = (int16_t)v[rnd() % 7u]; }
     x->wInputActive = (uint16_t)(rnd() & 0x7u);
 }
 /* 1: a valid configuration (want_valid) or an invalid one was drawn into a and b */
@@ -4188,8 +4648,8 @@ static void test_counter_int(void)
 
 static void rnd_config_counter_uint(FB_COUNTER_UINT *x)
 {
-    { static const unsigned v[] = {0u, 1u, 10u, 100u}; x->nPresetValue = (uint16_t)v[rnd() % 4u]; }
-    { static const unsigned v[] = {0u, 1u, 10u, 100u}; x->nCounterLimit = (uint16_t)v[rnd() % 4u]; }
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nPresetValue = (uint16_t)v[rnd() % 7u]; }
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nCounterLimit = (uint16_t)v[rnd() % 7u]; }
     x->wInputActive = (uint16_t)(rnd() & 0x7u);
 }
 /* 1: a valid configuration (want_valid) or an invalid one was drawn into a and b */
@@ -4282,8 +4742,8 @@ static void test_counter_uint(void)
 
 static void rnd_config_counter_dint(FB_COUNTER_DINT *x)
 {
-    { static const unsigned v[] = {0u, 1u, 10u, 100u}; x->nPresetValue = (int32_t)v[rnd() % 4u]; }
-    { static const unsigned v[] = {0u, 1u, 10u, 100u}; x->nCounterLimit = (int32_t)v[rnd() % 4u]; }
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nPresetValue = (int32_t)v[rnd() % 7u]; }
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nCounterLimit = (int32_t)v[rnd() % 7u]; }
     x->wInputActive = (uint16_t)(rnd() & 0x7u);
 }
 /* 1: a valid configuration (want_valid) or an invalid one was drawn into a and b */
@@ -4376,8 +4836,8 @@ static void test_counter_dint(void)
 
 static void rnd_config_counter_udint(FB_COUNTER_UDINT *x)
 {
-    { static const unsigned v[] = {0u, 1u, 10u, 100u}; x->nPresetValue = (uint32_t)v[rnd() % 4u]; }
-    { static const unsigned v[] = {0u, 1u, 10u, 100u}; x->nCounterLimit = (uint32_t)v[rnd() % 4u]; }
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nPresetValue = (uint32_t)v[rnd() % 7u]; }
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nCounterLimit = (uint32_t)v[rnd() % 7u]; }
     x->wInputActive = (uint16_t)(rnd() & 0x7u);
 }
 /* 1: a valid configuration (want_valid) or an invalid one was drawn into a and b */
@@ -4470,9 +4930,9 @@ static void test_counter_udint(void)
 
 static void rnd_config_violationcounter_uint(FB_VIOLATIONCOUNTER_UINT *x)
 {
-    { static const unsigned v[] = {0u, 1u, 10u, 100u}; x->nIncrementError = (uint16_t)v[rnd() % 4u]; }
-    { static const unsigned v[] = {0u, 1u, 10u, 100u}; x->nDecrementNoError = (uint16_t)v[rnd() % 4u]; }
-    { static const unsigned v[] = {0u, 1u, 10u, 100u}; x->nCounterLimit = (uint16_t)v[rnd() % 4u]; }
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nIncrementError = (uint16_t)v[rnd() % 7u]; }
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nDecrementNoError = (uint16_t)v[rnd() % 7u]; }
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nCounterLimit = (uint16_t)v[rnd() % 7u]; }
     x->wInputActive = (uint16_t)(rnd() & 0x3u);
     x->wInputNegated = (uint16_t)(rnd() % 2u == 0u ? 0u : (rnd() & 0x3u));
 }
@@ -4566,9 +5026,9 @@ static void test_violationcounter_uint(void)
 
 static void rnd_config_violationcounter_udint(FB_VIOLATIONCOUNTER_UDINT *x)
 {
-    { static const unsigned v[] = {0u, 1u, 10u, 100u}; x->nIncrementError = (uint32_t)v[rnd() % 4u]; }
-    { static const unsigned v[] = {0u, 1u, 10u, 100u}; x->nDecrementNoError = (uint32_t)v[rnd() % 4u]; }
-    { static const unsigned v[] = {0u, 1u, 10u, 100u}; x->nCounterLimit = (uint32_t)v[rnd() % 4u]; }
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nIncrementError = (uint32_t)v[rnd() % 7u]; }
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nDecrementNoError = (uint32_t)v[rnd() % 7u]; }
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nCounterLimit = (uint32_t)v[rnd() % 7u]; }
     x->wInputActive = (uint16_t)(rnd() & 0x3u);
     x->wInputNegated = (uint16_t)(rnd() % 2u == 0u ? 0u : (rnd() & 0x3u));
 }
@@ -4694,6 +5154,10 @@ int main(void)
     test_div_uint();
     test_div_dint();
     test_div_udint();
+    test_compare_int();
+    test_compare_uint();
+    test_compare_dint();
+    test_compare_udint();
     test_limit_int();
     test_limit_uint();
     test_limit_dint();

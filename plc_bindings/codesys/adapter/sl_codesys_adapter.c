@@ -506,6 +506,70 @@ void CDECL CDECL_EXT cds_sl_div_udint_cycle(cds_sl_div_udint_cycle_struct *p)
     p->cds_sl_div_udint_cycle = sl_div_udint_cycle(p->pFb, p->tNow);
 }
 
+void CDECL CDECL_EXT cds_sl_compare_int_init(cds_sl_compare_int_init_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_compare_int_init = sl_compare_int_init(p->pFb);
+}
+
+void CDECL CDECL_EXT cds_sl_compare_int_cycle(cds_sl_compare_int_cycle_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_compare_int_cycle = sl_compare_int_cycle(p->pFb, p->tNow);
+}
+
+void CDECL CDECL_EXT cds_sl_compare_uint_init(cds_sl_compare_uint_init_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_compare_uint_init = sl_compare_uint_init(p->pFb);
+}
+
+void CDECL CDECL_EXT cds_sl_compare_uint_cycle(cds_sl_compare_uint_cycle_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_compare_uint_cycle = sl_compare_uint_cycle(p->pFb, p->tNow);
+}
+
+void CDECL CDECL_EXT cds_sl_compare_dint_init(cds_sl_compare_dint_init_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_compare_dint_init = sl_compare_dint_init(p->pFb);
+}
+
+void CDECL CDECL_EXT cds_sl_compare_dint_cycle(cds_sl_compare_dint_cycle_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_compare_dint_cycle = sl_compare_dint_cycle(p->pFb, p->tNow);
+}
+
+void CDECL CDECL_EXT cds_sl_compare_udint_init(cds_sl_compare_udint_init_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_compare_udint_init = sl_compare_udint_init(p->pFb);
+}
+
+void CDECL CDECL_EXT cds_sl_compare_udint_cycle(cds_sl_compare_udint_cycle_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_compare_udint_cycle = sl_compare_udint_cycle(p->pFb, p->tNow);
+}
+
 void CDECL CDECL_EXT cds_sl_limit_int_init(cds_sl_limit_int_init_struct *p)
 {
     if (p == 0) {

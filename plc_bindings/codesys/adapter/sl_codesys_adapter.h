@@ -499,6 +499,66 @@ typedef struct tagcds_sl_div_udint_cycle_struct {
 } cds_sl_div_udint_cycle_struct;
 void CDECL CDECL_EXT cds_sl_div_udint_cycle(cds_sl_div_udint_cycle_struct *p);
 
+/* FUNCTION cds_sl_compare_int_init : DINT -> sl_compare_int_init() */
+typedef struct tagcds_sl_compare_int_init_struct {
+    struct FB_COMPARE_INT *pFb; /* VAR_INPUT pFb : POINTER TO ST_FB_COMPARE_INT */
+    int32_t cds_sl_compare_int_init; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_compare_int_init_struct;
+void CDECL CDECL_EXT cds_sl_compare_int_init(cds_sl_compare_int_init_struct *p);
+
+/* FUNCTION cds_sl_compare_int_cycle : DINT -> sl_compare_int_cycle() */
+typedef struct tagcds_sl_compare_int_cycle_struct {
+    struct FB_COMPARE_INT *pFb; /* VAR_INPUT pFb : POINTER TO ST_FB_COMPARE_INT */
+    uint32_t tNow; /* VAR_INPUT tNow : UDINT */
+    int32_t cds_sl_compare_int_cycle; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_compare_int_cycle_struct;
+void CDECL CDECL_EXT cds_sl_compare_int_cycle(cds_sl_compare_int_cycle_struct *p);
+
+/* FUNCTION cds_sl_compare_uint_init : DINT -> sl_compare_uint_init() */
+typedef struct tagcds_sl_compare_uint_init_struct {
+    struct FB_COMPARE_UINT *pFb; /* VAR_INPUT pFb : POINTER TO ST_FB_COMPARE_UINT */
+    int32_t cds_sl_compare_uint_init; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_compare_uint_init_struct;
+void CDECL CDECL_EXT cds_sl_compare_uint_init(cds_sl_compare_uint_init_struct *p);
+
+/* FUNCTION cds_sl_compare_uint_cycle : DINT -> sl_compare_uint_cycle() */
+typedef struct tagcds_sl_compare_uint_cycle_struct {
+    struct FB_COMPARE_UINT *pFb; /* VAR_INPUT pFb : POINTER TO ST_FB_COMPARE_UINT */
+    uint32_t tNow; /* VAR_INPUT tNow : UDINT */
+    int32_t cds_sl_compare_uint_cycle; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_compare_uint_cycle_struct;
+void CDECL CDECL_EXT cds_sl_compare_uint_cycle(cds_sl_compare_uint_cycle_struct *p);
+
+/* FUNCTION cds_sl_compare_dint_init : DINT -> sl_compare_dint_init() */
+typedef struct tagcds_sl_compare_dint_init_struct {
+    struct FB_COMPARE_DINT *pFb; /* VAR_INPUT pFb : POINTER TO ST_FB_COMPARE_DINT */
+    int32_t cds_sl_compare_dint_init; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_compare_dint_init_struct;
+void CDECL CDECL_EXT cds_sl_compare_dint_init(cds_sl_compare_dint_init_struct *p);
+
+/* FUNCTION cds_sl_compare_dint_cycle : DINT -> sl_compare_dint_cycle() */
+typedef struct tagcds_sl_compare_dint_cycle_struct {
+    struct FB_COMPARE_DINT *pFb; /* VAR_INPUT pFb : POINTER TO ST_FB_COMPARE_DINT */
+    uint32_t tNow; /* VAR_INPUT tNow : UDINT */
+    int32_t cds_sl_compare_dint_cycle; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_compare_dint_cycle_struct;
+void CDECL CDECL_EXT cds_sl_compare_dint_cycle(cds_sl_compare_dint_cycle_struct *p);
+
+/* FUNCTION cds_sl_compare_udint_init : DINT -> sl_compare_udint_init() */
+typedef struct tagcds_sl_compare_udint_init_struct {
+    struct FB_COMPARE_UDINT *pFb; /* VAR_INPUT pFb : POINTER TO ST_FB_COMPARE_UDINT */
+    int32_t cds_sl_compare_udint_init; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_compare_udint_init_struct;
+void CDECL CDECL_EXT cds_sl_compare_udint_init(cds_sl_compare_udint_init_struct *p);
+
+/* FUNCTION cds_sl_compare_udint_cycle : DINT -> sl_compare_udint_cycle() */
+typedef struct tagcds_sl_compare_udint_cycle_struct {
+    struct FB_COMPARE_UDINT *pFb; /* VAR_INPUT pFb : POINTER TO ST_FB_COMPARE_UDINT */
+    uint32_t tNow; /* VAR_INPUT tNow : UDINT */
+    int32_t cds_sl_compare_udint_cycle; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_compare_udint_cycle_struct;
+void CDECL CDECL_EXT cds_sl_compare_udint_cycle(cds_sl_compare_udint_cycle_struct *p);
+
 /* FUNCTION cds_sl_limit_int_init : DINT -> sl_limit_int_init() */
 typedef struct tagcds_sl_limit_int_init_struct {
     struct FB_LIMIT_INT *pFb; /* VAR_INPUT pFb : POINTER TO ST_FB_LIMIT_INT */
@@ -774,6 +834,14 @@ void CDECL CDECL_EXT cds_sl_group_cycle(cds_sl_group_cycle_struct *p);
     X(cds_sl_div_dint_cycle) \
     X(cds_sl_div_udint_init) \
     X(cds_sl_div_udint_cycle) \
+    X(cds_sl_compare_int_init) \
+    X(cds_sl_compare_int_cycle) \
+    X(cds_sl_compare_uint_init) \
+    X(cds_sl_compare_uint_cycle) \
+    X(cds_sl_compare_dint_init) \
+    X(cds_sl_compare_dint_cycle) \
+    X(cds_sl_compare_udint_init) \
+    X(cds_sl_compare_udint_cycle) \
     X(cds_sl_limit_int_init) \
     X(cds_sl_limit_int_cycle) \
     X(cds_sl_limit_uint_init) \
