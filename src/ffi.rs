@@ -395,10 +395,10 @@ fn seal_members(t: &CMembers) {
 /// Reads the private header a block of type `l` has at its place in the block at `p`.
 ///
 /// # Safety
-/// At least `l.size` bytes at `p` are readable.
+/// At least `header_end(l)` bytes at `p` are readable.
 unsafe fn header_at(p: *mut c_void, l: &TypeLayout) -> SL_PRIVATE_HEADER {
-    // SAFETY: `l.header + size_of::<SL_PRIVATE_HEADER>() <= l.size` (the header is inside
-    // the block's struct); every byte of a block struct is initialised (no padding).
+    // SAFETY: the caller's bound covers the header; every byte of a block struct is
+    // initialised (no padding).
     unsafe {
         p.cast::<u8>()
             .add(l.header)
@@ -407,16 +407,24 @@ unsafe fn header_at(p: *mut c_void, l: &TypeLayout) -> SL_PRIVATE_HEADER {
     }
 }
 
+/// The end of a type's private header: the bytes `header_at` reads.
+fn header_end(l: &TypeLayout) -> usize {
+    l.header + core::mem::size_of::<SL_PRIVATE_HEADER>()
+}
+
 /// Checks that the block at `p` is a block of type `claimed` by its own private header
 /// (docs/semantics.md GR14). `Ok(true)`: an all-zero header, a never-initialised block.
-/// The registered types no larger than `claimed` are tried from the smallest, so no read
-/// leaves the block when it is an initialised block of any registered type.
+/// Every registered type whose header lies within the claimed size is tried, from the
+/// smallest type, so no read leaves the block when it is an initialised block of any
+/// registered type, and an initialised block of a larger type whose header is in reach
+/// (MUTING offered as COMPARE_DINT) is recognised instead of being taken for a zeroed one.
 fn identify(p: *mut c_void, claimed: &TypeLayout) -> Result<bool, i32> {
     let mut all = layouts();
     all.sort_unstable_by_key(|l| (l.size, l.tag));
-    for l in all.iter().filter(|l| l.size <= claimed.size) {
-        // SAFETY: `l.size <= claimed.size` bytes at `p`: inside the block (caller's duty for
-        // a block of the claimed size; inside any smaller registered block tried first).
+    for l in all.iter().filter(|l| header_end(l) <= claimed.size) {
+        // SAFETY: `header_end(l) <= claimed.size` bytes at `p`: inside the block (caller's
+        // duty for a block of the claimed size; inside any smaller registered block tried
+        // first).
         if unsafe { header_at(p, l) }.intact(l.magic) {
             return if l.tag == claimed.tag {
                 Ok(false)
