@@ -821,9 +821,10 @@ static void estop_param_changed(void)
     ES_ACK();
     fb->dwOptions = SL_OPT_EDM1;
     ES(t += 10, SL_E_PARAM_CHANGED, SL_STATE_ERROR, SL_DIAG_PARAM_CHANGED, 1, 0, 0);
-    /* adopted via bRun FALSE: tolerated, acknowledged, latched at STOP -> run */
+    /* adopted via bRun FALSE: still reported (not STOP, ABI 5/7), acknowledged, latched
+     * at STOP -> run (C5) */
     fb->bRun = 0;
-    ES_ERROR(t += 10, SL_DIAG_PARAM_CHANGED);
+    ES(t += 10, SL_E_PARAM_CHANGED, SL_STATE_ERROR, SL_DIAG_PARAM_CHANGED, 1, 0, 0);
     fb->bErrAck = 1;
     ES_RESET(t += 10);
     fb->bErrAck = 0;

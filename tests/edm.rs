@@ -499,10 +499,11 @@ fn parameter_change_while_running() {
     e.tSwitchOnTime = 20_000;
     assert_eq!(at(&mut e, 60, 0, 1), SL_E_PARAM_CHANGED);
     assert_error(&e, SL_DIAG_PARAM_CHANGED);
-    // With Run FALSE the change is tolerated: acknowledged to STOP, then latched at the
-    // next start, and rejected there (C5, C6).
+    // With Run FALSE the change is still reported (not in STOP: ABI §5, §7), but it no
+    // longer blocks the acknowledgement: acknowledged to STOP, then latched at the next
+    // start, and rejected there (C5, C6).
     e.bRun = 0;
-    assert_eq!(at(&mut e, 70, 0, 1), SL_OK);
+    assert_eq!(at(&mut e, 70, 0, 1), SL_E_PARAM_CHANGED);
     assert_error(&e, SL_DIAG_PARAM_CHANGED);
     e.bErrAck = 1;
     at(&mut e, 80, 0, 1);

@@ -281,14 +281,16 @@ fn parameter_changed_in_the_call_that_stops_is_tolerated<B: Params>(fb: B) {
 both!(parameter_changed_in_the_call_that_stops_is_tolerated);
 
 /// C5 "(or acknowledged with bRun FALSE) latches the new values at the next STOP→run";
-/// "Without the bRun exception a changed parameter could never be adopted after the error".
+/// "Without the bRun exception a changed parameter could never be adopted after the error";
+/// every call before STOP returns SL_E_PARAM_CHANGED (issue 16 item 5).
 fn parameter_change_error_acknowledged_with_run_false_adopts_the_new_value<B: Params>(fb: B) {
     let mut s = running(fb);
     s.fb.set_delay(70);
     assert_eq!(s.adv(1), SL_E_PARAM_CHANGED);
     expect_error(&s.fb, SL_DIAG_PARAM_CHANGED);
     s.fb.set_run(0);
-    assert_eq!(s.adv(1), SL_OK);
+    // Still reported with bRun FALSE (not in STOP: ABI §5, §7), no longer blocking.
+    assert_eq!(s.adv(1), SL_E_PARAM_CHANGED);
     expect_error(&s.fb, SL_DIAG_PARAM_CHANGED); // C9: ERROR persists with bRun FALSE
     s.acknowledge(SL_STATE_STOP);
     s.start_up(SL_STATE_SAFE);

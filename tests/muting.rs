@@ -1439,9 +1439,9 @@ fn parameter_change_while_running() {
     assert_eq!(b.cycle(), SL_E_PARAM_CHANGED);
     b.expect(SL_STATE_ERROR, ERROR_OUT);
     assert_eq!(b.fb.nDiag, SL_DIAG_PARAM_CHANGED);
-    // Adopted after a stop.
+    // Adopted after a stop; reported until acknowledged (C5).
     b.fb.bRun = 0;
-    assert_eq!(b.cycle(), SL_OK);
+    assert_eq!(b.cycle(), SL_E_PARAM_CHANGED);
     b.fb.bErrAck = 1;
     b.cycle();
     b.fb.bErrAck = 0;

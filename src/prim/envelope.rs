@@ -136,18 +136,27 @@ pub fn cycle<B: Block>(fb: &mut B, now: u32) -> Status {
     let (inp, invalid_in) = fb.decode();
     let invalid = invalid_in || run_raw > 1 || ack_raw > 1;
 
-    // A parameter differing from the latched copy is a fault while the block runs or is
-    // about to run; in STOP (or on the way there) it is the next latch's business.
-    let param_fault =
-        fb.header().nState != SL_STATE_STOP && run && fb.live_params() != fb.latched_params();
+    // A parameter differing from the latched copy is reported at any time other than STOP
+    // (ABI §5, §7, docs/semantics.md C5). While the block runs or is about to run it is a
+    // fault (ERROR, diag bit 13) that blocks the acknowledgement. A block in ERROR with
+    // bRun FALSE keeps reporting it (SL_E_PARAM_CHANGED, bit 13) but may be acknowledged:
+    // RESET and STOP follow, and the next STOP → run latches the new values. A block that
+    // bRun FALSE sends towards STOP (running states, RESET) is on its way to that latch.
+    let state = fb.header().nState;
+    let param_fault = state != SL_STATE_STOP
+        && (run || state == SL_STATE_ERROR)
+        && fb.live_params() != fb.latched_params();
     if param_fault {
-        fresh_error = true;
         if fb.latched_crc() != fb.header().wParamCrc {
+            fresh_error = true;
             power_up(fb, SL_STATE_ERROR, SL_DIAG_CORRUPT);
             status = status.worst(Status::Corrupt);
-        } else {
+        } else if run {
+            fresh_error = true;
             fb.header_mut().enter_error(SL_DIAG_PARAM_CHANGED);
             status = status.worst(Status::ParamChanged);
+        } else {
+            fb.header_mut().wDiag |= SL_DIAG_PARAM_CHANGED;
         }
     }
 
@@ -158,7 +167,7 @@ pub fn cycle<B: Block>(fb: &mut B, now: u32) -> Status {
             }
         }
         SL_STATE_ERROR => {
-            let remains = fb.error_remains(&inp) || param_fault;
+            let remains = fb.error_remains(&inp) || (param_fault && run);
             if ack.rising && !fresh_error && !remains {
                 let h = fb.header_mut();
                 h.nState = SL_STATE_RESET;
@@ -184,6 +193,11 @@ pub fn cycle<B: Block>(fb: &mut B, now: u32) -> Status {
     }
 
     let h = fb.header();
+    // The pending change of a block that stays in ERROR with bRun FALSE (the call that
+    // acknowledges it to RESET returns as usual).
+    if param_fault && h.nState == SL_STATE_ERROR {
+        status = status.worst(Status::ParamChanged);
+    }
     if h.flag(F_CFG_INVALID) && h.nState == SL_STATE_STOP {
         status = status.worst(Status::Config);
     }
