@@ -4,7 +4,8 @@
 #   cargo build --release && tools/plc_check.sh
 #
 # Steps (each prints its own "N passed, M failed"; the last line sums them up):
-#   1. generation drift: tools/plcgen.py --check regenerates from include/safelogic.h in memory
+#   1. generation drift: tools/plcgen.py --check regenerates from include/safelogic.h and the
+#      registry's field table (examples/field_table.rs, checked against the header) in memory
 #      and compares with every committed file under plc_bindings/ (also stale/missing files);
 #   2. Python tools in a venv under build/plc-venv (created or reused): blark (PyPI) and the
 #      strict IEC 61131-3 grammar tree-sitter-iec61131-3-st (PyPI) with the tree-sitter binding;
@@ -211,8 +212,9 @@ SYN=$WORK/synthetic
 rm -rf "$SYN"
 mkdir -p "$SYN"
 synthetic_gen() {
-    "$PY" tools/plc_synthetic.py --header include/safelogic.h --out "$SYN" || return 1
-    "$PY" tools/plcgen.py --header "$SYN/safelogic.h" --out "$SYN/plc_bindings" || return 1
+    cargo run --release --quiet --example field_table >"$SYN/fields_real.json" || return 1
+    "$PY" tools/plc_synthetic.py --header include/safelogic.h --out "$SYN" --fields "$SYN/fields_real.json" || return 1
+    "$PY" tools/plcgen.py --header "$SYN/safelogic.h" --out "$SYN/plc_bindings" --fields "$SYN/fields.json" || return 1
     grep -q 'FUNCTION_BLOCK FB_SYNTH' "$SYN/plc_bindings/iec/safelogic_iec.st" || return 1
     gcc -std=c11 -Wall -Wextra -Werror -pedantic -I"$SYN" "$SYN/plc_bindings/tests/layout_dump.c" \
         -o "$SYN/layout_dump" || return 1

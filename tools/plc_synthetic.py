@@ -8,7 +8,9 @@ Writes into --out:
                not have yet: an array input, a signed input, a time output, an array output;
                the prototype of sl_synth_cycle wrapped over two lines), with its layout asserts;
   synth_stub.c a C implementation of sl_synth_init/sl_synth_cycle to link the generated
-               CODESYS adapter test against.
+               CODESYS adapter test against;
+  fields.json  the registry's field table (--fields, printed by examples/field_table.rs)
+               with FB_SYNTH's entry added, as the registry would give it.
 The check then generates the bindings from that header and runs the layout, strict-parse,
 adapter check and the matiec compile on them: a new block in the same header style needs no change to
 the generator. Stdlib only.
@@ -17,6 +19,7 @@ the generator. Stdlib only.
 from __future__ import annotations
 
 import argparse
+import json
 from pathlib import Path
 
 BLOCK = """
@@ -163,10 +166,24 @@ int32_t sl_synth_cycle(struct FB_SYNTH *fb, uint32_t tNow)
 """
 
 
+# FB_SYNTH's field table, as a registry entry would declare it: (name, offset, C type, direction).
+SYNTH_FIELDS = [
+    ("bRestart", 0, "SL_BOOL", "input"), ("bSynIn1", 8, "SL_BOOL", "input"),
+    ("bSynIn2", 9, "SL_BOOL", "input"), ("bRun", 10, "SL_BOOL", "control"),
+    ("bErrAck", 11, "SL_BOOL", "control"), ("tDelay", 12, "uint32_t", "param"),
+    ("awLimit", 16, "uint16_t", "param"), ("nBias", 20, "int16_t", "param"),
+    ("wInputActive", 22, "uint16_t", "param"), ("dwOptions", 24, "uint32_t", "param"),
+    ("bError", 40, "SL_BOOL", "output"), ("bSynOut", 41, "SL_BOOL", "output"),
+    ("nState", 42, "uint8_t", "info"), ("nDiag", 44, "uint16_t", "info"),
+    ("awCount", 46, "uint16_t", "output"), ("tElapsed", 52, "uint32_t", "output"),
+]
+
+
 def main() -> int:
     ap = argparse.ArgumentParser()
     ap.add_argument("--header", type=Path, required=True)
     ap.add_argument("--out", type=Path, required=True)
+    ap.add_argument("--fields", type=Path, required=True, help="the real field table (JSON)")
     args = ap.parse_args()
     text = args.header.read_text(encoding="utf-8")
     anchor = '#ifdef __cplusplus\nextern "C" {'
@@ -181,6 +198,10 @@ def main() -> int:
     args.out.mkdir(parents=True, exist_ok=True)
     (args.out / "safelogic.h").write_text(text, encoding="utf-8")
     (args.out / "synth_stub.c").write_text(STUB, encoding="utf-8")
+    table = json.loads(args.fields.read_text(encoding="utf-8"))
+    table["blocks"].append({"name": "SYNTH", "struct": "FB_SYNTH", "tag": 0xFFFF, "size": 88, "fields": [
+        {"name": n, "offset": o, "ctype": c, "dir": d} for n, o, c, d in SYNTH_FIELDS]})
+    (args.out / "fields.json").write_text(json.dumps(table), encoding="utf-8")
     print(f"plc_synthetic: wrote {args.out}/safelogic.h (with FB_SYNTH) and synth_stub.c")
     return 0
 
