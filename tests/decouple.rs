@@ -2,6 +2,8 @@
 //! STOP outputs, used/unused channels, configuration errors, invalid BOOLs, library errors
 //! through the envelope, the C functions, group membership, and property tests.
 
+mod common;
+
 use proptest::prelude::*;
 use safelogic::ffi;
 use safelogic::group::{self, Member, SL_GROUP_DIAG_COMERROR};
@@ -282,11 +284,10 @@ fn member_offsets() {
     let _ = group::SL_LINK_BOOL;
 }
 
-proptest! {
-    #![proptest_config(ProptestConfig::with_cases(256))]
+common::property! {
+    cases: 256, reach: [SL_STATE_RUN, SL_STATE_STOP, SL_STATE_ERROR, SL_STATE_RESET];
     /// In RUN every used output equals its input in the same call (invalid → FALSE), unused
     /// outputs are FALSE; outside RUN every output is FALSE (D1–D3).
-    #[test]
     fn outputs_are_the_inputs_in_run_and_false_otherwise(
         active in 1u16..=0xFF,
         steps in proptest::collection::vec(
@@ -303,6 +304,7 @@ proptest! {
             d.wInputActive = if mode == 0 { active ^ 0x100 } else { active };
             t = if mode == 1 { t.wrapping_sub(5) } else { t.wrapping_add(dt) };
             d.cycle(t);
+            common::saw(d.nState);
             prop_assert!([SL_STATE_RUN, SL_STATE_STOP, SL_STATE_ERROR, SL_STATE_RESET].contains(&d.nState));
             let o = outs(&d);
             if d.nState == SL_STATE_RUN {

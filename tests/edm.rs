@@ -4,6 +4,8 @@
 //! library errors through the envelope, the C functions, group membership, and property
 //! tests against a reference model of the manual's description.
 
+mod common;
+
 use proptest::prelude::*;
 use safelogic::ffi;
 use safelogic::group::{self, Member, SL_GROUP_DIAG_FBERROR};
@@ -727,11 +729,10 @@ fn logical(raw: u8, negated: bool) -> Option<bool> {
     (raw <= 1).then_some((raw == 1) != negated)
 }
 
-proptest! {
-    #![proptest_config(ProptestConfig::with_cases(384))]
+common::property! {
+    cases: 384, reach: [MONOFF, MONON, SL_STATE_ERROR];
     /// The block against the model of the manual's description (E2–E4, E7), call by call:
     /// the state follows Mon1 in the same call, the error comes exactly when the model says.
-    #[test]
     fn matches_the_reference_model(
         on in prop_oneof![Just(0u32), 1u32..300, Just(10_000u32)],
         off in prop_oneof![Just(0u32), 1u32..300, Just(10_000u32)],
@@ -747,6 +748,7 @@ proptest! {
         for (m1, m2, dt) in steps {
             t = t.wrapping_add(dt);
             let rc = at(&mut e, t, m1, m2);
+            common::saw(e.nState);
             prop_assert_eq!(rc == SL_E_INVALID_BOOL, m1 > 1 || m2 > 1);
             let mon1 = logical(m1, negated & MON1 != 0).unwrap_or(false);
             let mon2 = logical(m2, negated & MON2 != 0);
@@ -761,10 +763,12 @@ proptest! {
             }
         }
     }
+}
 
+common::property! {
+    cases: 384, reach: [SL_STATE_STOP, SL_STATE_ERROR, SL_STATE_RESET, MONOFF, MONON];
     /// Error=1 exactly in ERROR; diag only in ERROR; only the manual's states; a Mon2 that
     /// always follows Mon1 inverted never gives an error, whatever Run, ErrAck and timing.
-    #[test]
     fn error_output_and_states(
         on in 0u32..300,
         off in 1u32..300,
@@ -782,6 +786,7 @@ proptest! {
             let mon2 = if m2 == 0 { 1 - mon1 } else { m2 - 1 };
             follower_ok &= m2 == 0;
             at(&mut e, t, mon1, mon2);
+            common::saw(e.nState);
             prop_assert!([SL_STATE_STOP, SL_STATE_ERROR, SL_STATE_RESET, MONOFF, MONON].contains(&e.nState));
             prop_assert_eq!(e.bError, u8::from(e.nState == SL_STATE_ERROR));
             if e.nState != SL_STATE_ERROR {

@@ -1,6 +1,8 @@
 //! TwinSAFE group (manual §3.1, §3.1.1.2, §3.2.5; docs/semantics.md rows GR*): group states
 //! and outputs, error propagation in both execution orders, acknowledgement, links, storage.
 
+mod common;
+
 use proptest::prelude::*;
 use safelogic::group::{self, Member, SL_GROUP_STATE_START, SL_GROUP_STATE_STOPERROR};
 use safelogic::group::{
@@ -441,10 +443,9 @@ fn invalid_group_input_bytes() {
     );
 }
 
-proptest! {
-    #![proptest_config(ProptestConfig::with_cases(256))]
+common::property! {
+    cases: 256, reach: [SL_STATE_RUN, SL_STATE_STOP, SL_STATE_ERROR, SL_STATE_RESET];
     /// No member output is TRUE at the end of a group cycle in which the group is not in RUN.
-    #[test]
     fn no_member_output_while_group_not_running(
         steps in proptest::collection::vec((0u8..3, 0u8..3, 0u8..3, any::<u8>(), 0u32..40), 1..120)
     ) {
@@ -469,6 +470,7 @@ proptest! {
             t = t.wrapping_add(dt);
             let mut ms: [&mut dyn Member; 3] = [&mut e, &mut m, &mut a];
             group::cycle(&mut g, &mut ms[..], &links, t);
+            common::saw(g.nState);
             if g.nState != SL_STATE_RUN {
                 prop_assert_eq!(ms[0].output(ESTOP_OUT), Some(0));
                 prop_assert_eq!(ms[0].output(offset_of!(FB_ESTOP, bEStopDelOut) as u16), Some(0));

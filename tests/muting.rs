@@ -4,6 +4,8 @@
 //! muting time, discrepancy monitoring, DELAYOUT with a discrepancy error arriving during it,
 //! EDM, Enable, the EL6910 options, configuration errors, invalid BOOLs, envelope errors.
 
+mod common;
+
 use proptest::prelude::*;
 use safelogic::group::{self, Member};
 use safelogic::*;
@@ -1711,13 +1713,11 @@ fn is_muting(s: u8) -> bool {
     (SL_STATE_MUTING_MUTING1..=SL_STATE_MUTING_MUTING9).contains(&s)
 }
 
-proptest! {
-    #![proptest_config(ProptestConfig::with_cases(512))]
-
+common::property! {
+    cases: 512, reach: [SL_STATE_RUN, SL_STATE_SAFE, SL_STATE_STOP, SL_STATE_ERROR];
     /// No output TRUE in STOP, ERROR, RESET (and SAFE); bError TRUE exactly in ERROR;
     /// MuteOut TRUE only with the field clear or muting active; MutingActive exactly in the
     /// MUTING states; EDM bits never set; nState always one of the block's states.
-    #[test]
     fn output_invariants(
         (active, options, negated) in config(),
         times in (0u32..80, 0u32..80, 0u32..40, 0u32..500, 0u32..60),
@@ -1779,6 +1779,7 @@ proptest! {
             fb.bEDM2 = (edm >> 1) & 1;
             t = t.wrapping_add(dt);
             let rc = fb.cycle(t);
+            common::saw(fb.nState);
             prop_assert!(matches!(rc, SL_OK | SL_E_INVALID_BOOL), "rc {}", rc);
             let s = fb.nState;
             prop_assert!(matches!(s, 1..=5 | 8 | 9..=17), "state {}", s);
@@ -1803,9 +1804,11 @@ proptest! {
             }
         }
     }
+}
 
+common::property! {
+    cases: 512, reach: [SL_STATE_RUN, SL_STATE_SAFE, SL_STATE_STOP];
     /// Run FALSE: STOP (or ERROR) with every output FALSE in the same call.
-    #[test]
     fn run_false_switches_off_at_once(
         prefix in proptest::collection::vec((0u8..64, 0u32..30), 0..60),
     ) {
@@ -1816,18 +1819,26 @@ proptest! {
             b.set(p & 0x1F);
             b.fb.bMutingEnable = (p >> 5) & 1;
             b.step(dt);
+            common::saw(b.fb.nState);
         }
         b.fb.bRun = 0;
         b.cycle();
+        common::saw(b.fb.nState);
         prop_assert!(matches!(b.fb.nState, SL_STATE_STOP | SL_STATE_ERROR | SL_STATE_RESET));
         prop_assert_eq!((b.fb.bMutingActive, b.fb.bMuteOut, b.fb.bMuteDelOut), (0, 0, 0));
     }
+}
 
+common::property! {
+    cases: 512, reach: [
+        SL_STATE_RUN, SL_STATE_MUTING_MUTING1, SL_STATE_MUTING_MUTING2, SL_STATE_MUTING_MUTING3,
+        SL_STATE_MUTING_MUTING4, SL_STATE_MUTING_MUTING5, SL_STATE_MUTING_MUTING6,
+        SL_STATE_MUTING_MUTING7, SL_STATE_MUTING_MUTING8, SL_STATE_MUTING_MUTING9,
+    ];
     /// Valid sequences of every kind complete without error whatever the dwell times, and
     /// bounces of the muting inputs shorter than the filter time change nothing (M1–M5, M9).
     /// Each step holds long enough for its change to be taken over before the bounce; a
     /// bounce of `len` < 40 ms is seen for at most `len` + 9 ms (cycle spacing) < 50 ms.
-    #[test]
     fn valid_sequences_complete(
         kind in 0usize..4,
         dwell in proptest::collection::vec((140u32..300, any::<bool>(), 0u8..4, 1u32..40), 10),
@@ -1869,6 +1880,7 @@ proptest! {
                 }
                 b.set(if in_bounce { p ^ bit } else { p });
                 b.step(dts[k % dts.len()]);
+                common::saw(b.fb.nState);
                 k += 1;
                 prop_assert_ne!(b.fb.nState, SL_STATE_ERROR, "diag {:#x}", b.fb.nDiag);
                 prop_assert_eq!(b.fb.bMuteOut, 1);

@@ -396,6 +396,7 @@ fn check<B: Subject>(params: B, t0: u32, steps: &[Step]) -> Result<(), TestCaseE
         t = t.wrapping_add(st.dt);
         let rc = fb.cycle(t);
         let state = fb.state();
+        common::saw(state);
         // ABI §3/§4: the cycle writes outputs, info data and private state only — the
         // inputs and parameters it was given are unchanged
         prop_assert_eq!(fb.bytes(), bytes.clone(), "cycle changed an input");
@@ -558,11 +559,9 @@ fn check<B: Subject>(params: B, t0: u32, steps: &[Step]) -> Result<(), TestCaseE
     Ok(())
 }
 
-proptest! {
-    #![proptest_config(ProptestConfig { cases: CASES, ..ProptestConfig::default() })]
-
+common::property! {
+    cases: CASES, reach: [SL_STATE_RUN, SL_STATE_SAFE, SL_STATE_STOP, SL_STATE_ERROR, SL_STATE_RESET];
     /// All properties for FB_ESTOP over random valid parameters and input sequences.
-    #[test]
     fn estop_random_sequences(
         params in estop_params(),
         t0 in prop_oneof![any::<u32>(), (u32::MAX - 3000)..=u32::MAX],
@@ -570,9 +569,11 @@ proptest! {
     ) {
         check(params, t0, &steps)?;
     }
+}
 
+common::property! {
+    cases: CASES, reach: [SL_STATE_RUN, SL_STATE_SAFE, SL_STATE_STOP, SL_STATE_ERROR, SL_STATE_RESET];
     /// All properties for FB_MON over random valid parameters and input sequences.
-    #[test]
     fn mon_random_sequences(
         params in mon_params(),
         t0 in prop_oneof![any::<u32>(), (u32::MAX - 3000)..=u32::MAX],
@@ -582,12 +583,10 @@ proptest! {
     }
 }
 
-proptest! {
-    #![proptest_config(ProptestConfig { cases: CASES / 4, ..ProptestConfig::default() })]
-
+common::property! {
+    cases: CASES / 4, reach: [SL_STATE_ERROR];
     /// C4/ABI §5: any backwards step (wrapping difference ≥ 2^31) in any state is
     /// SL_E_CLOCK, ERROR, bError TRUE, diag bit 14.
-    #[test]
     fn backwards_clock_is_always_a_clock_error(
         params in estop_params(),
         steps in steps(ESTOP_LAYOUT),
@@ -609,16 +608,19 @@ proptest! {
             fb.cycle(t);
         }
         let rc = fb.cycle(t.wrapping_add(back));
+        common::saw(fb.nState);
         prop_assert_eq!(rc, SL_E_CLOCK);
         prop_assert_eq!(fb.nState, SL_STATE_ERROR);
         prop_assert_eq!(fb.outs(), [1, 0, 0]);
         prop_assert!(fb.nDiag & SL_DIAG_CLOCK != 0);
     }
+}
 
+common::property! {
+    cases: CASES / 4, reach: [SL_STATE_ERROR];
     /// ABI §4 "A call is total": whole instances of random bytes (parameters, inputs,
     /// private state) through the C functions return a documented status and leave a
     /// state of the block with the state table's outputs.
-    #[test]
     fn random_instance_bytes_are_handled(
         estop_bytes in prop::collection::vec(any::<u8>(), std::mem::size_of::<FB_ESTOP>()),
         mon_bytes in prop::collection::vec(any::<u8>(), std::mem::size_of::<FB_MON>()),
@@ -636,6 +638,7 @@ proptest! {
         }
         for &t in &times {
             let rc = unsafe { safelogic::ffi::sl_estop_cycle(&mut e, t) };
+            common::saw(e.nState);
             prop_assert!(DOCUMENTED_STATUS.contains(&rc), "ESTOP status {}", rc);
             prop_assert!(ESTOP_STATES.contains(&e.nState), "ESTOP state {}", e.nState);
             prop_assert_eq!(e.outs(), table(e.nState));

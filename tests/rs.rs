@@ -3,6 +3,8 @@
 //! BOOLs, configuration errors, library errors through the envelope, the C functions,
 //! group membership, and property tests.
 
+mod common;
+
 use proptest::prelude::*;
 use safelogic::ffi;
 use safelogic::group::Member;
@@ -159,11 +161,10 @@ flipflop_shared_tests!(
     rs
 );
 
-proptest! {
-    #![proptest_config(ProptestConfig::with_cases(256))]
+common::property! {
+    cases: 256, reach: [SL_STATE_RS_SET, SL_STATE_SAFE, SL_STATE_STOP];
     /// Reference model from manual §4.10.1 and R2–R4: the output is TRUE only in SET; in the
     /// running states it follows the inputs in the same call with Reset dominant.
-    #[test]
     fn follows_the_manual_model(
         active in 1u16..=3,
         negated in 0u16..=3,
@@ -180,6 +181,7 @@ proptest! {
             t = if mode == 0 { t.wrapping_sub(1) } else { t.wrapping_add(dt) };
             let before = b.nState;
             b.cycle(t);
+            common::saw(b.nState);
             prop_assert!([SL_STATE_STOP, SL_STATE_SAFE, SL_STATE_RS_SET, SL_STATE_ERROR, SL_STATE_RESET].contains(&b.nState));
             prop_assert_eq!(b.bRsOut, u8::from(b.nState == SL_STATE_RS_SET));
             if matches!(b.nState, SL_STATE_SAFE | SL_STATE_RS_SET) {

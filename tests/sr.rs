@@ -3,6 +3,8 @@
 //! BOOLs, configuration errors, library errors through the envelope, the C functions,
 //! group membership, and property tests.
 
+mod common;
+
 use proptest::prelude::*;
 use safelogic::ffi;
 use safelogic::group::Member;
@@ -184,11 +186,10 @@ flipflop_shared_tests!(
     sr
 );
 
-proptest! {
-    #![proptest_config(ProptestConfig::with_cases(256))]
+common::property! {
+    cases: 256, reach: [SL_STATE_SR_SET, SL_STATE_SAFE, SL_STATE_STOP];
     /// Reference model from manual §4.11.1 and R2–R4: the output is TRUE only in SET; in the
     /// running states it follows the inputs in the same call with Set dominant.
-    #[test]
     fn follows_the_manual_model(
         active in 1u16..=3,
         negated in 0u16..=3,
@@ -205,6 +206,7 @@ proptest! {
             t = if mode == 0 { t.wrapping_sub(1) } else { t.wrapping_add(dt) };
             let before = b.nState;
             b.cycle(t);
+            common::saw(b.nState);
             prop_assert!([SL_STATE_STOP, SL_STATE_SAFE, SL_STATE_SR_SET, SL_STATE_ERROR, SL_STATE_RESET].contains(&b.nState));
             prop_assert_eq!(b.bSrOut, u8::from(b.nState == SL_STATE_SR_SET));
             if matches!(b.nState, SL_STATE_SAFE | SL_STATE_SR_SET) {
@@ -226,11 +228,10 @@ proptest! {
     }
 }
 
-proptest! {
-    #![proptest_config(ProptestConfig::with_cases(256))]
+common::property! {
+    cases: 256, reach: [SL_STATE_SR_SET, SL_STATE_SAFE];
     /// RS and SR differ only in the dominant input (R5): fed the same inputs, never both TRUE
     /// at once, they show the same state and output in every call.
-    #[test]
     fn sr_equals_rs_unless_both_inputs_are_true(
         steps in proptest::collection::vec((0u8..4, 0u8..3, 0u8..3, 0u32..20), 1..80)
     ) {
@@ -250,6 +251,7 @@ proptest! {
             r.bSet = set;
             t = t.wrapping_add(dt);
             prop_assert_eq!(s.cycle(t), r.cycle(t));
+            common::saw(s.nState);
             prop_assert_eq!((s.nState, s.bSrOut), (r.nState, r.bRsOut));
         }
     }

@@ -3,6 +3,8 @@
 //! timebase validation, wrapping time, clock errors, parameter changes, invalid BOOLs,
 //! STOP switching off at once.
 
+mod common;
+
 use proptest::prelude::*;
 use safelogic::ffi;
 use safelogic::group::Member;
@@ -376,12 +378,11 @@ fn c_functions_registry_and_member() {
     assert_eq!(SL_TYPE_TOF, 15);
 }
 
-proptest! {
-    #![proptest_config(ProptestConfig::with_cases(512))]
+common::property! {
+    cases: 512, reach: [SL_STATE_RUN, SL_STATE_DELAYOUT, SL_STATE_SAFE, SL_STATE_STOP];
     /// No output TRUE in STOP/ERROR/RESET; FALSE at once when bRun is FALSE; a running TOF
     /// switches its output off only after the input has been FALSE in every call for at
     /// least tDelay; an input TRUE in a running state switches it on in the same call.
-    #[test]
     fn output_off_only_after_the_input_was_false_for_the_delay(
         delay in 1u32..200,
         negated in 0u16..2,
@@ -399,6 +400,7 @@ proptest! {
             f.bRun = u8::from(run != 0);
             f.bErrAck = u8::from(ack == 0);
             let status = f.cycle(t);
+            common::saw(f.nState);
             prop_assert!(status == SL_OK || status == SL_E_INVALID_BOOL, "status {}", status);
             let logical = f.bTofIn1 <= 1 && (f.bTofIn1 == 1) != (negated == 1);
             if logical {

@@ -2,6 +2,8 @@
 //! every state and output value, the delay exactly at its limit per timebase, timebase
 //! validation, wrapping time, clock errors, parameter changes, invalid BOOLs, corruption.
 
+mod common;
+
 use proptest::prelude::*;
 use safelogic::ffi;
 use safelogic::group::Member;
@@ -608,11 +610,10 @@ fn ton_in_a_group() {
     assert_eq!((f.nState, f.bTonOut), (SL_STATE_RUN, 1));
 }
 
-proptest! {
-    #![proptest_config(ProptestConfig::with_cases(512))]
+common::property! {
+    cases: 512, reach: [SL_STATE_RUN, SL_STATE_TON_DELAYIN, SL_STATE_SAFE, SL_STATE_STOP];
     /// No output TRUE in STOP/ERROR/RESET; TonOut TRUE only in RUN and only after the input
     /// has been logically TRUE (with bRun TRUE) in every call for at least tDelay.
-    #[test]
     fn output_only_after_the_input_was_true_for_the_delay(
         delay in 1u32..200,
         negated in 0u16..2,
@@ -630,6 +631,7 @@ proptest! {
             f.bRun = u8::from(run != 0);
             f.bErrAck = u8::from(ack == 0);
             let status = f.cycle(t);
+            common::saw(f.nState);
             prop_assert!(status == SL_OK || status == SL_E_INVALID_BOOL, "status {}", status);
             let logical = f.bTonIn1 <= 1 && (f.bTonIn1 == 1) != (negated == 1);
             if logical && f.bRun == 1 {
@@ -648,10 +650,12 @@ proptest! {
             prop_assert!(f.nState != SL_STATE_ERROR, "no error source in this sequence");
         }
     }
+}
 
+common::property! {
+    cases: 512, reach: [SL_STATE_RUN, SL_STATE_TON_DELAYIN];
     /// Liveness: with the input held TRUE and bRun TRUE, the output comes on at the first
     /// call at least tDelay after the timer started (the call after start-up).
-    #[test]
     fn output_on_exactly_when_the_delay_is_reached(
         delay in 1u32..5000,
         t0 in any::<u32>(),
@@ -661,10 +665,12 @@ proptest! {
         f.bTonIn1 = 1;
         let mut t = t0.wrapping_add(1);
         f.cycle(t);
+        common::saw(f.nState);
         let start = t;
         for dt in dts {
             t = t.wrapping_add(dt);
             f.cycle(t);
+            common::saw(f.nState);
             let due = t.wrapping_sub(start) >= delay;
             prop_assert_eq!(f.bTonOut, u8::from(due));
             prop_assert_eq!(f.nState, if due { SL_STATE_RUN } else { DELAYIN });

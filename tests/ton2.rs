@@ -3,6 +3,8 @@
 //! a simulated power cycle through the C API, the global-shutdown case (SL_E_RESTORE, diag
 //! bit 12), restore sequencing and the integrity checks of the stored value.
 
+mod common;
+
 use proptest::prelude::*;
 use safelogic::ffi;
 use safelogic::group::Member;
@@ -622,15 +624,14 @@ fn parameter_change_registry_and_member() {
     );
 }
 
-proptest! {
-    #![proptest_config(ProptestConfig::with_cases(512))]
+common::property! {
+    cases: 512, reach: [SL_STATE_RUN, SL_STATE_TON2_DELAYIN, SL_STATE_SAFE, SL_STATE_STOP];
     /// No output TRUE in STOP/ERROR/RESET; TonOut TRUE only in RUN; the stored elapsed time
     /// never exceeds tDelay and equals it in RUN. Without the option, TonOut TRUE only after
     /// the input was TRUE in every call for tDelay. With it, the credit is bounded: TonOut
     /// TRUE only when the restored value R (until the first abort) plus the time the input
     /// was TRUE with bRun TRUE since the last abort reaches tDelay (an abort: the input not
     /// TRUE while the block times or runs).
-    #[test]
     fn output_and_stored_value(
         delay in 1u32..200,
         option in any::<bool>(),
@@ -654,6 +655,7 @@ proptest! {
             f.bErrAck = u8::from(ack == 0);
             f.bEnable = enable;
             let status = cyc(&mut f, t);
+            common::saw(f.nState);
             prop_assert!(status == SL_OK || status == SL_E_INVALID_BOOL, "status {}", status);
             if f.bTonIn1 == 1 && f.bRun == 1 {
                 let s = streak.map_or(t, |(s, _)| s);

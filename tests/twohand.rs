@@ -4,6 +4,8 @@
 //! acknowledgement, invalid BOOLs, the envelope errors, the C functions, property tests.
 //! Expected values come from the manual, the ABI and semantics.md.
 
+mod common;
+
 use proptest::prelude::*;
 use safelogic::group::{self, Member};
 use safelogic::*;
@@ -989,13 +991,11 @@ fn logical(raw: u8, negated: bool) -> Option<bool> {
     (raw <= 1).then_some((raw == 1) ^ negated)
 }
 
-proptest! {
-    #![proptest_config(ProptestConfig::with_cases(512))]
-
+common::property! {
+    cases: 512, reach: [SL_STATE_RUN, SL_STATE_SAFE, SL_STATE_STOP];
     /// §4.7.2 outputs per state; TwoHandOut TRUE only while both groups are actuated (in
     /// the same call); after each output period the output comes back only after a call
     /// in which every active input was released (§4.7.1 re-trigger rule, H5, H6).
-    #[test]
     fn output_only_with_both_groups_and_after_a_full_release(
         active in (0u16..16).prop_filter("both groups", |a| a & 0b11 != 0 && a & 0b1100 != 0),
         negated in 0u16..16,
@@ -1039,6 +1039,7 @@ proptest! {
             b.bTwoHand4 = bytes[3];
             t = t.wrapping_add(dt);
             let rc = b.cycle(t);
+            common::saw(b.nState);
             prop_assert!(matches!(rc, SL_OK | SL_E_INVALID_BOOL), "rc {}", rc);
             prop_assert!(
                 [1, 2, 3, 4, 5, ONE, TWO, REL].contains(&b.nState),

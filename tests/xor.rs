@@ -2,6 +2,8 @@
 //! every output, configuration errors, invalid BOOLs, library errors through the envelope,
 //! the C functions, group membership, and property tests.
 
+mod common;
+
 use proptest::prelude::*;
 use safelogic::ffi;
 use safelogic::group::{self, Member};
@@ -460,11 +462,10 @@ fn member_offsets() {
     let _ = group::SL_LINK_BOOL;
 }
 
-proptest! {
-    #![proptest_config(ProptestConfig::with_cases(256))]
+common::property! {
+    cases: 256, reach: [SL_STATE_RUN, SL_STATE_STOP, SL_STATE_ERROR, SL_STATE_RESET];
     /// Outputs are TRUE only in RUN; in RUN every output is XOR of its valid inputs AND
     /// active, in the same call (X1, X3, X4).
-    #[test]
     fn outputs_follow_the_formula_and_are_false_outside_run(
         active in 1u16..=0xFF,
         steps in proptest::collection::vec(
@@ -481,6 +482,7 @@ proptest! {
             }
             t = if clock_back && dt == 7 { t.wrapping_sub(1) } else { t.wrapping_add(dt) };
             let rc = x.cycle(t);
+            common::saw(x.nState);
             prop_assert!([SL_STATE_RUN, SL_STATE_STOP, SL_STATE_ERROR, SL_STATE_RESET].contains(&x.nState));
             let o = outs(&x);
             if x.nState != SL_STATE_RUN {

@@ -343,3 +343,59 @@ impl Rng {
         self.0.wrapping_mul(0x2545_F491_4F6C_DD1D)
     }
 }
+
+thread_local! {
+    /// The states the cases of the running property reported (bit n: state n).
+    static REACHED: std::cell::Cell<u64> = const { std::cell::Cell::new(0) };
+}
+
+/// Records that the block under test is in `state` (call it after every cycle of a
+/// property's case).
+pub fn saw(state: u8) {
+    REACHED.with(|r| r.set(r.get() | 1u64 << state.min(63)));
+}
+
+/// Runs a property with proptest's runner (shrinking included) and asserts that its cases
+/// together reached every state of `reach` (issue 12: a random test proves its reach).
+/// Syntax as `proptest!` for one test, with the case count and the required states first:
+/// `property! { cases: 256, reach: [SL_STATE_RUN, SL_STATE_ERROR]; fn name(a in 0u8..4) { … } }`
+// Every test crate includes this module; not all of them have a property.
+#[allow(unused_macros)]
+macro_rules! property {
+    (cases: $cases:expr, reach: [$($state:expr),* $(,)?];
+     $(#[doc = $doc:literal])*
+     fn $name:ident($($arg:pat in $strategy:expr),* $(,)?) $body:block) => {
+        $(#[doc = $doc])*
+        #[test]
+        fn $name() {
+            use proptest::test_runner::{Config, TestRunner};
+            let mut runner = TestRunner::new(Config::with_cases($cases));
+            let before = $crate::common::reached_reset();
+            let result = runner.run(&($($strategy,)*), |($($arg,)*)| {
+                $body
+                Ok(())
+            });
+            if let Err(e) = result {
+                panic!("{}: {}", stringify!($name), e);
+            }
+            let reached = $crate::common::reached_reset();
+            let _ = before;
+            for s in [$($state),*] {
+                assert!(
+                    reached & 1u64 << s != 0,
+                    "{}: state {} never reached (reached {:#b})",
+                    stringify!($name),
+                    s,
+                    reached
+                );
+            }
+        }
+    };
+}
+#[allow(unused_imports)]
+pub(crate) use property;
+
+/// The states recorded since the last call, and a fresh start.
+pub fn reached_reset() -> u64 {
+    REACHED.with(|r| r.replace(0))
+}
