@@ -3,7 +3,8 @@
 //! included, random time steps and input changes through the C functions → no panic, a
 //! documented status, and the safe-state invariants read through the field table; a
 //! zeroed instance is valid; the field table agrees with the C header (a C program built
-//! from the table, compiled against include/safelogic.h).
+//! from the table, compiled against include/safelogic.h); and at depth, 10,000 sequences
+//! from valid configurations per type with the safety invariants after every call.
 
 use safelogic::registry::{block_type, BlockType, Dir, Kind, BLOCKS};
 mod common;
@@ -282,3 +283,131 @@ macro_rules! named_access {
 }
 
 safelogic::for_each_block!(named_access);
+
+/// Sequences per registered type in the depth test (×`SL_PROP_DEPTH` in a deep run).
+const DEPTH_SEQUENCES: usize = 10_000;
+
+macro_rules! depth {
+    ($($ty:ty => $init:ident, $cycle:ident;)*) => {
+        /// Issue 16 item 4, for every registered type: `sequences` random sequences of 16
+        /// calls from valid configurations (found by the library itself: random parameters
+        /// until `init` accepts them), mostly valid BOOL bytes, random analog values, bRun
+        /// mostly TRUE, ErrAck pulses, time steps up to 100 ms and now and then a clock that
+        /// goes back. After every call: `check` (documented status, a state of the block's,
+        /// bError exactly in ERROR, every output FALSE/0 in STOP, ERROR, RESET and after a
+        /// refusing status) and the same-call response to bRun FALSE (STOP, ERROR or RESET
+        /// after the call). Returns, per type, the states reached.
+        fn depth_all(sequences: usize) -> Vec<(&'static str, BTreeSet<u8>)> {
+            let mut reached = Vec::new();
+            $({
+                let t = block_type(<$ty as safelogic::registry::Registered>::INFO.tag).unwrap();
+                let mut rng = Rng(0xDE97_0000 ^ u64::from(t.info.tag));
+                let bytes = |fb: &mut $ty| -> &mut [u8] {
+                    // SAFETY: every block struct holds only integer fields (and zero-sized
+                    // markers); the slice covers exactly the instance.
+                    unsafe { std::slice::from_raw_parts_mut((fb as *mut $ty).cast::<u8>(), std::mem::size_of::<$ty>()) }
+                };
+                let put = |bs: &mut [u8], o: u16, size: usize, v: u64| {
+                    for (k, b) in bs[usize::from(o)..usize::from(o) + size].iter_mut().enumerate() {
+                        *b = (v >> (8 * k)) as u8;
+                    }
+                };
+                // A pool of valid configurations.
+                let mut pool: Vec<$ty> = Vec::new();
+                for _ in 0..400_000 {
+                    if pool.len() == 64 {
+                        break;
+                    }
+                    // SAFETY: integer fields only.
+                    let mut fb: $ty = unsafe { std::mem::zeroed() };
+                    for f in t.fields.iter().filter(|f| f.dir == Dir::Param) {
+                        let r = rng.next();
+                        // Bit sets (wInputActive …) often as a run of low bits, in the BOOL or
+                        // the analog half.
+                        let k = (r >> 16) % 8 + 1;
+                        let run_of_bits = ((1u64 << k) - 1) << (8 * ((r >> 20) & 1));
+                        let v = match r % 4 {
+                            _ if f.name.starts_with('w') && r % 3 == 0 => run_of_bits,
+                            0 => [0u64, 1, 2, 3, 5, 10, 100][(r >> 8) as usize % 7],
+                            1 => (r >> 8) & 0xFF,
+                            2 => (r >> 8) & 0xFFFF,
+                            _ => r >> 8,
+                        };
+                        put(bytes(&mut fb), f.offset, f.kind.size(), v);
+                    }
+                    // SAFETY: a live, exclusively borrowed instance.
+                    if unsafe { safelogic::ffi::$init(&mut fb) } == SL_OK {
+                        pool.push(fb);
+                    }
+                }
+                assert!(!pool.is_empty(), "{}: no valid configuration found", t.info.name);
+                let mut states = BTreeSet::new();
+                for seq in 0..sequences {
+                    let mut fb = pool[seq % pool.len()];
+                    let mut now = rng.next() as u32;
+                    for step in 0..16 {
+                        let r = rng.next();
+                        for f in t.fields.iter().filter(|f| f.dir == Dir::Input) {
+                            let v = rng.next();
+                            if v % 3 != 0 {
+                                continue;
+                            }
+                            let value = if f.kind == Kind::Bool {
+                                if v % 301 == 0 { 2 } else { (v >> 8) & 1 }
+                            } else if v % 2 == 0 {
+                                (v >> 8) % 8
+                            } else {
+                                v >> 8
+                            };
+                            put(bytes(&mut fb), f.offset, f.kind.size(), value);
+                        }
+                        let run = r % 8 != 0;
+                        fb.bRun = u8::from(run);
+                        fb.bErrAck = u8::from(r >> 3 & 7 == 0);
+                        now = if r >> 6 & 255 == 0 {
+                            now.wrapping_sub(1 + (rng.next() % 50) as u32)
+                        } else {
+                            now.wrapping_add((rng.next() % 101) as u32)
+                        };
+                        // SAFETY: as above.
+                        let rc = unsafe { safelogic::ffi::$cycle(&mut fb, now) };
+                        let what = format!("sequence {seq} step {step}");
+                        let state = check(t, bytes(&mut fb), rc, &what);
+                        if !run {
+                            assert!(
+                                matches!(state, SL_STATE_STOP | SL_STATE_ERROR | SL_STATE_RESET),
+                                "{} {what}: bRun FALSE left state {state}", t.info.name
+                            );
+                        }
+                        states.insert(state);
+                    }
+                }
+                reached.push((t.info.name, states));
+            })*
+            reached
+        }
+    };
+}
+
+safelogic::for_each_block!(depth);
+
+#[test]
+fn every_registered_type_keeps_its_safety_properties_over_10000_sequences() {
+    let depth: usize = std::env::var("SL_PROP_DEPTH")
+        .ok()
+        .and_then(|v| v.parse().ok())
+        .unwrap_or(1);
+    let reached = depth_all(DEPTH_SEQUENCES * depth);
+    assert_eq!(reached.len(), BLOCKS.len());
+    for (name, states) in reached {
+        for s in [SL_STATE_STOP, SL_STATE_ERROR, SL_STATE_RESET] {
+            assert!(states.contains(&s), "{name} never reached {s}: {states:?}");
+        }
+        assert!(
+            states
+                .iter()
+                .any(|s| !matches!(*s, SL_STATE_STOP | SL_STATE_ERROR | SL_STATE_RESET)),
+            "{name} never reached a running state: {states:?}"
+        );
+    }
+}
