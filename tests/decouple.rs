@@ -285,7 +285,7 @@ fn member_offsets() {
 }
 
 common::property! {
-    cases: 256, reach: [SL_STATE_RUN, SL_STATE_STOP, SL_STATE_ERROR, SL_STATE_RESET];
+    cases: common::depth_cases(10_000), reach: [SL_STATE_RUN, SL_STATE_STOP, SL_STATE_ERROR, SL_STATE_RESET];
     /// In RUN every used output equals its input in the same call (invalid → FALSE), unused
     /// outputs are FALSE; outside RUN every output is FALSE (D1–D3).
     fn outputs_are_the_inputs_in_run_and_false_otherwise(

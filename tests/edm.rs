@@ -730,7 +730,7 @@ fn logical(raw: u8, negated: bool) -> Option<bool> {
 }
 
 common::property! {
-    cases: 384, reach: [MONOFF, MONON, SL_STATE_ERROR];
+    cases: common::depth_cases(10_000), reach: [MONOFF, MONON, SL_STATE_ERROR];
     /// The block against the model of the manual's description (E2–E4, E7), call by call:
     /// the state follows Mon1 in the same call, the error comes exactly when the model says.
     fn matches_the_reference_model(
@@ -766,7 +766,7 @@ common::property! {
 }
 
 common::property! {
-    cases: 384, reach: [SL_STATE_STOP, SL_STATE_ERROR, SL_STATE_RESET, MONOFF, MONON];
+    cases: common::depth_cases(10_000), reach: [SL_STATE_STOP, SL_STATE_ERROR, SL_STATE_RESET, MONOFF, MONON];
     /// Error=1 exactly in ERROR; diag only in ERROR; only the manual's states; a Mon2 that
     /// always follows Mon1 inverted never gives an error, whatever Run, ErrAck and timing.
     fn error_output_and_states(

@@ -444,7 +444,7 @@ fn invalid_group_input_bytes() {
 }
 
 common::property! {
-    cases: 256, reach: [SL_STATE_RUN, SL_STATE_STOP, SL_STATE_ERROR, SL_STATE_RESET];
+    cases: common::depth_cases(10_000), reach: [SL_STATE_RUN, SL_STATE_STOP, SL_STATE_ERROR, SL_STATE_RESET];
     /// No member output is TRUE at the end of a group cycle in which the group is not in RUN.
     fn no_member_output_while_group_not_running(
         steps in proptest::collection::vec((0u8..3, 0u8..3, 0u8..3, any::<u8>(), 0u32..40), 1..120)

@@ -1714,7 +1714,7 @@ fn is_muting(s: u8) -> bool {
 }
 
 common::property! {
-    cases: 512, reach: [SL_STATE_RUN, SL_STATE_SAFE, SL_STATE_STOP, SL_STATE_ERROR];
+    cases: common::depth_cases(10_000), reach: [SL_STATE_RUN, SL_STATE_SAFE, SL_STATE_STOP, SL_STATE_ERROR];
     /// No output TRUE in STOP, ERROR, RESET (and SAFE); bError TRUE exactly in ERROR;
     /// MuteOut TRUE only with the field clear or muting active; MutingActive exactly in the
     /// MUTING states; EDM bits never set; nState always one of the block's states.
@@ -1807,7 +1807,7 @@ common::property! {
 }
 
 common::property! {
-    cases: 512, reach: [SL_STATE_RUN, SL_STATE_SAFE, SL_STATE_STOP];
+    cases: common::depth_cases(10_000), reach: [SL_STATE_RUN, SL_STATE_SAFE, SL_STATE_STOP];
     /// Run FALSE: STOP (or ERROR) with every output FALSE in the same call.
     fn run_false_switches_off_at_once(
         prefix in proptest::collection::vec((0u8..64, 0u32..30), 0..60),
@@ -1830,7 +1830,7 @@ common::property! {
 }
 
 common::property! {
-    cases: 512, reach: [
+    cases: common::depth_cases(10_000), reach: [
         SL_STATE_RUN, SL_STATE_MUTING_MUTING1, SL_STATE_MUTING_MUTING2, SL_STATE_MUTING_MUTING3,
         SL_STATE_MUTING_MUTING4, SL_STATE_MUTING_MUTING5, SL_STATE_MUTING_MUTING6,
         SL_STATE_MUTING_MUTING7, SL_STATE_MUTING_MUTING8, SL_STATE_MUTING_MUTING9,

@@ -953,7 +953,7 @@ fn step_strategy() -> impl Strategy<Value = (u8, u8, u8, [u8; 8], u32)> {
 }
 
 common::property! {
-    cases: 512, reach: [SL_STATE_RUN, SL_STATE_SAFE, SL_STATE_STOP, SL_STATE_ERROR];
+    cases: common::depth_cases(10_000), reach: [SL_STATE_RUN, SL_STATE_SAFE, SL_STATE_STOP, SL_STATE_ERROR];
     /// Manual §4.3.2 outputs per state; at most one output ever; an output is TRUE only in
     /// RUN and only while its input is the single valid selected mode (same call, O1, O5).
     fn outputs_follow_the_state_table(
@@ -1004,7 +1004,7 @@ common::property! {
 }
 
 common::property! {
-    cases: 512, reach: [SL_STATE_RUN, SL_STATE_START];
+    cases: common::depth_cases(10_000), reach: [SL_STATE_RUN, SL_STATE_START];
     /// With manual restart an output only switches on in a call with a falling Restart
     /// edge (0 after 1), and never switches from one mode directly to another.
     fn manual_restart_enables_only_on_a_falling_edge(

@@ -560,7 +560,7 @@ fn check<B: Subject>(params: B, t0: u32, steps: &[Step]) -> Result<(), TestCaseE
 }
 
 common::property! {
-    cases: CASES, reach: [SL_STATE_RUN, SL_STATE_SAFE, SL_STATE_STOP, SL_STATE_ERROR, SL_STATE_RESET];
+    cases: common::depth_cases(10_000), reach: [SL_STATE_RUN, SL_STATE_SAFE, SL_STATE_STOP, SL_STATE_ERROR, SL_STATE_RESET];
     /// All properties for FB_ESTOP over random valid parameters and input sequences.
     fn estop_random_sequences(
         params in estop_params(),
@@ -572,7 +572,7 @@ common::property! {
 }
 
 common::property! {
-    cases: CASES, reach: [SL_STATE_RUN, SL_STATE_SAFE, SL_STATE_STOP, SL_STATE_ERROR, SL_STATE_RESET];
+    cases: common::depth_cases(10_000), reach: [SL_STATE_RUN, SL_STATE_SAFE, SL_STATE_STOP, SL_STATE_ERROR, SL_STATE_RESET];
     /// All properties for FB_MON over random valid parameters and input sequences.
     fn mon_random_sequences(
         params in mon_params(),

@@ -162,7 +162,7 @@ flipflop_shared_tests!(
 );
 
 common::property! {
-    cases: 256, reach: [SL_STATE_RS_SET, SL_STATE_SAFE, SL_STATE_STOP];
+    cases: common::depth_cases(10_000), reach: [SL_STATE_RS_SET, SL_STATE_SAFE, SL_STATE_STOP];
     /// Reference model from manual §4.10.1 and R2–R4: the output is TRUE only in SET; in the
     /// running states it follows the inputs in the same call with Reset dominant.
     fn follows_the_manual_model(

@@ -187,7 +187,7 @@ flipflop_shared_tests!(
 );
 
 common::property! {
-    cases: 256, reach: [SL_STATE_SR_SET, SL_STATE_SAFE, SL_STATE_STOP];
+    cases: common::depth_cases(10_000), reach: [SL_STATE_SR_SET, SL_STATE_SAFE, SL_STATE_STOP];
     /// Reference model from manual §4.11.1 and R2–R4: the output is TRUE only in SET; in the
     /// running states it follows the inputs in the same call with Set dominant.
     fn follows_the_manual_model(
@@ -229,7 +229,7 @@ common::property! {
 }
 
 common::property! {
-    cases: 256, reach: [SL_STATE_SR_SET, SL_STATE_SAFE];
+    cases: common::depth_cases(10_000), reach: [SL_STATE_SR_SET, SL_STATE_SAFE];
     /// RS and SR differ only in the dominant input (R5): fed the same inputs, never both TRUE
     /// at once, they show the same state and output in every call.
     fn sr_equals_rs_unless_both_inputs_are_true(

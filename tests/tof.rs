@@ -379,7 +379,7 @@ fn c_functions_registry_and_member() {
 }
 
 common::property! {
-    cases: 512, reach: [SL_STATE_RUN, SL_STATE_DELAYOUT, SL_STATE_SAFE, SL_STATE_STOP];
+    cases: common::depth_cases(10_000), reach: [SL_STATE_RUN, SL_STATE_DELAYOUT, SL_STATE_SAFE, SL_STATE_STOP];
     /// No output TRUE in STOP/ERROR/RESET; FALSE at once when bRun is FALSE; a running TOF
     /// switches its output off only after the input has been FALSE in every call for at
     /// least tDelay; an input TRUE in a running state switches it on in the same call.

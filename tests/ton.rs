@@ -611,7 +611,7 @@ fn ton_in_a_group() {
 }
 
 common::property! {
-    cases: 512, reach: [SL_STATE_RUN, SL_STATE_TON_DELAYIN, SL_STATE_SAFE, SL_STATE_STOP];
+    cases: common::depth_cases(10_000), reach: [SL_STATE_RUN, SL_STATE_TON_DELAYIN, SL_STATE_SAFE, SL_STATE_STOP];
     /// No output TRUE in STOP/ERROR/RESET; TonOut TRUE only in RUN and only after the input
     /// has been logically TRUE (with bRun TRUE) in every call for at least tDelay.
     fn output_only_after_the_input_was_true_for_the_delay(
@@ -653,7 +653,7 @@ common::property! {
 }
 
 common::property! {
-    cases: 512, reach: [SL_STATE_RUN, SL_STATE_TON_DELAYIN];
+    cases: common::depth_cases(10_000), reach: [SL_STATE_RUN, SL_STATE_TON_DELAYIN];
     /// Liveness: with the input held TRUE and bRun TRUE, the output comes on at the first
     /// call at least tDelay after the timer started (the call after start-up).
     fn output_on_exactly_when_the_delay_is_reached(

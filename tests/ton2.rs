@@ -625,7 +625,7 @@ fn parameter_change_registry_and_member() {
 }
 
 common::property! {
-    cases: 512, reach: [SL_STATE_RUN, SL_STATE_TON2_DELAYIN, SL_STATE_SAFE, SL_STATE_STOP];
+    cases: common::depth_cases(10_000), reach: [SL_STATE_RUN, SL_STATE_TON2_DELAYIN, SL_STATE_SAFE, SL_STATE_STOP];
     /// No output TRUE in STOP/ERROR/RESET; TonOut TRUE only in RUN; the stored elapsed time
     /// never exceeds tDelay and equals it in RUN. Without the option, TonOut TRUE only after
     /// the input was TRUE in every call for tDelay. With it, the credit is bounded: TonOut

@@ -992,7 +992,7 @@ fn logical(raw: u8, negated: bool) -> Option<bool> {
 }
 
 common::property! {
-    cases: 512, reach: [SL_STATE_RUN, SL_STATE_SAFE, SL_STATE_STOP];
+    cases: common::depth_cases(10_000), reach: [SL_STATE_RUN, SL_STATE_SAFE, SL_STATE_STOP];
     /// §4.7.2 outputs per state; TwoHandOut TRUE only while both groups are actuated (in
     /// the same call); after each output period the output comes back only after a call
     /// in which every active input was released (§4.7.1 re-trigger rule, H5, H6).

@@ -463,7 +463,7 @@ fn member_offsets() {
 }
 
 common::property! {
-    cases: 256, reach: [SL_STATE_RUN, SL_STATE_STOP, SL_STATE_ERROR, SL_STATE_RESET];
+    cases: common::depth_cases(10_000), reach: [SL_STATE_RUN, SL_STATE_STOP, SL_STATE_ERROR, SL_STATE_RESET];
     /// Outputs are TRUE only in RUN; in RUN every output is XOR of its valid inputs AND
     /// active, in the same call (X1, X3, X4).
     fn outputs_follow_the_formula_and_are_false_outside_run(

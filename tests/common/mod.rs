@@ -369,7 +369,13 @@ macro_rules! property {
         #[test]
         fn $name() {
             use proptest::test_runner::{Config, TestRunner};
-            let mut runner = TestRunner::new(Config::with_cases($cases));
+            let cases = $cases;
+            // prop_assume! rejections scale with the case count.
+            let mut runner = TestRunner::new(Config {
+                cases,
+                max_global_rejects: cases,
+                ..Config::default()
+            });
             let before = $crate::common::reached_reset();
             let result = runner.run(&($($strategy,)*), |($($arg,)*)| {
                 $body
@@ -398,4 +404,13 @@ pub(crate) use property;
 /// The states recorded since the last call, and a fresh start.
 pub fn reached_reset() -> u64 {
     REACHED.with(|r| r.replace(0))
+}
+
+/// `n` property cases, times `SL_PROP_DEPTH` (default 1) for a deep run.
+pub fn depth_cases(n: u32) -> u32 {
+    let depth: u32 = std::env::var("SL_PROP_DEPTH")
+        .ok()
+        .and_then(|v| v.parse().ok())
+        .unwrap_or(1);
+    n.saturating_mul(depth.max(1))
 }
