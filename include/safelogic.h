@@ -426,6 +426,114 @@
 #define SL_TYPE_RS 11
 
 /*
+ Type tag of FB_SCALE_INT (ABI-2 §10.6: sequential from 16 in the order of §10.3).
+ */
+#define SL_TYPE_SCALE_INT 40
+
+/*
+ FB_SCALE_UINT.
+ */
+#define SL_TYPE_SCALE_UINT 41
+
+/*
+ FB_SCALE_DINT.
+ */
+#define SL_TYPE_SCALE_DINT 42
+
+/*
+ FB_SCALE_UDINT.
+ */
+#define SL_TYPE_SCALE_UDINT 43
+
+/*
+ `dwOptions`: "Multiplication First" FALSE — divide by `nDenominator` before multiplying
+ by `nNumerator` (default: multiplication first).
+ */
+#define SL_OPT_SCALE_DIVISION_FIRST (1 << 8)
+
+/*
+ Diag value 3: "A 32-bit overflow occurred during the multiplication."
+ */
+#define SL_DIAG_SCALE_MUL_OVERFLOW 3
+
+/*
+ Diag value 4: "A 32-bit overflow occurred during the division due to rounding."
+ */
+#define SL_DIAG_SCALE_DIV_OVERFLOW 4
+
+/*
+ Diag message "The output AnalogOut has an underflow" (parameter 2: AnalogIn).
+ */
+#define SL_TEXT_SCALE_UNDERFLOW 16560
+
+/*
+ Diag message "The output AnalogOut has an overflow" (parameter 2: AnalogIn).
+ */
+#define SL_TEXT_SCALE_OVERFLOW 16561
+
+/*
+ Diag message "A 32-bit overflow occurred during the multiplication." (parameter 2: AnalogIn).
+ */
+#define SL_TEXT_SCALE_MUL_OVERFLOW 16562
+
+/*
+ Diag message "A 32-bit overflow occurred during the division due to rounding."
+ (parameter 2: AnalogIn).
+ */
+#define SL_TEXT_SCALE_DIV_OVERFLOW 16563
+
+/*
+ `wInputActive` bit of AnalogIn (required, the only bit).
+ */
+#define SL_SCALE_ACTIVE_ANALOGIN (1 << 8)
+
+/*
+ `wInputNegated` bit of AnalogIn: INT/DINT ×(−1), UINT/UDINT XOR all ones.
+ */
+#define SL_SCALE_NEGATE_ANALOGIN (1 << 8)
+
+/*
+ Type tag of FB_SPEED_INT (ABI-2 §10.6: sequential from 16 in the order of §10.3).
+ */
+#define SL_TYPE_SPEED_INT 44
+
+/*
+ FB_SPEED_UINT.
+ */
+#define SL_TYPE_SPEED_UINT 45
+
+/*
+ FB_SPEED_DINT.
+ */
+#define SL_TYPE_SPEED_DINT 46
+
+/*
+ FB_SPEED_UDINT.
+ */
+#define SL_TYPE_SPEED_UDINT 47
+
+/*
+ `dwOptions`: "Overflow Check" — the position difference is taken modulo 2^W before the
+ range check (a position counter wrapping at its type's end is no jump).
+ */
+#define SL_OPT_SPEED_OVERFLOW_CHECK (1 << 8)
+
+/*
+ Diag message "An underflow has occurred." (parameters: current, latched position).
+ */
+#define SL_TEXT_SPEED_UNDERFLOW 16520
+
+/*
+ Diag message "An overflow has occurred." (parameters: current, latched position).
+ */
+#define SL_TEXT_SPEED_OVERFLOW 16521
+
+/*
+ `wInputActive` bit of Position (required, the only bit).
+ */
+#define SL_SPEED_ACTIVE_POSITION (1 << 8)
+
+/*
  Block type tag of FB_SR.
  */
 #define SL_TYPE_SR 12
@@ -5220,6 +5328,960 @@ typedef struct FB_LIMIT_UDINT {
 
 
 /*
+ Private state of FB SCALE (72 bytes). Never written by the user. The header's `tPhase`
+ is the start of the StuckAt watchdog, `wAux` bit 0 its expiry.
+ */
+typedef struct SL_SCALE_PRIVATE {
+  /*
+   Common head.
+   */
+  struct SL_PRIVATE_HEADER stHeader;
+  /*
+   Latched `tWatchdog`.
+   */
+  uint32_t tWatchdog;
+  /*
+   Latched `nNumerator`, `nDenominator`, `nOffset` as 32-bit patterns.
+   */
+  uint32_t adwFactor[3];
+  /*
+   Latched `dwOptions`.
+   */
+  uint32_t dwOptions;
+  /*
+   Latched `nRounding`.
+   */
+  uint16_t wRounding;
+  /*
+   Latched `wInputActive`.
+   */
+  uint16_t wActive;
+  /*
+   Latched `wInputNegated`.
+   */
+  uint16_t wNegated;
+  /*
+   Reserved.
+   */
+  uint8_t aReserved0[2];
+  /*
+   The result of the last RUN cycle as a 32-bit pattern.
+   */
+  uint32_t dwOut;
+  /*
+   AnalogIn of the previous RUN cycle (the watchdog restarts when it changes).
+   */
+  uint32_t dwLastIn;
+  /*
+   Diag message parameter 2 (AnalogIn) latched at the ERROR entry.
+   */
+  uint32_t dwPar;
+  /*
+   Reserved.
+   */
+  uint8_t aReserved1[4];
+} SL_SCALE_PRIVATE;
+
+/*
+ FB SCALE instance (ABI-2 §11.6), generic over the signal type `T` and the type `T32` of
+ the scaling parameters (ABI-2 §10.3); `P1` (after AnalogIn) and `P2` (after AnalogOut)
+ are the reserved gaps that make the 16- and 32-bit layouts differ.
+ */
+typedef struct FB_SCALE_INT {
+  /*
+   Offset 0. Reserved, keep 0 (no BOOL inputs).
+   */
+  uint8_t aReserved0[16];
+  /*
+   Offset 16. FbRun of the owning group: TRUE = the block executes.
+   */
+  SL_BOOL bRun;
+  /*
+   Offset 17. ErrAck of the owning group.
+   */
+  SL_BOOL bErrAck;
+  /*
+   Offset 18. Reserved, keep 0.
+   */
+  uint8_t aReserved1[6];
+  /*
+   Offset 24. AnalogIn, the value scaled (active bit 8, required).
+   */
+  int16_t nAnalogIn;
+  /*
+   Reserved up to 28 (16-bit: 2 bytes, 32-bit: none).
+   */
+  uint8_t aReserved2[2];
+  /*
+   Offset 28. "watchdog (ms)": StuckAtError after this time without a change of
+   AnalogIn; 0 = off, at most SL_TIME_PARAM_MAX.
+   */
+  uint32_t tWatchdog;
+  /*
+   Offset 32. "Nominator": the multiplication factor.
+   */
+  int32_t nNumerator;
+  /*
+   Offset 36. "Denominator": the division factor, not 0.
+   */
+  int32_t nDenominator;
+  /*
+   Offset 40. The scaling offset, added last.
+   */
+  int32_t nOffset;
+  /*
+   Offset 44. SL_OPT_SCALE_DIVISION_FIRST, no other bit.
+   */
+  uint32_t dwOptions;
+  /*
+   Offset 48. "Division Rounding": SL_ROUNDING_FLOOR, _CEIL, _ROUND.
+   */
+  uint16_t nRounding;
+  /*
+   Offset 50. Bit 8 (AnalogIn) must be set, no other.
+   */
+  uint16_t wInputActive;
+  /*
+   Offset 52. Bit 8: AnalogIn negated; no other.
+   */
+  uint16_t wInputNegated;
+  /*
+   Offset 54. Reserved.
+   */
+  uint8_t aReserved3[2];
+  /*
+   Offset 56, the output base. Error, TRUE in ERROR only.
+   */
+  SL_BOOL bError;
+  /*
+   Offset 57. StuckAtError: in RUN, AnalogIn unchanged for `tWatchdog` (no FB error).
+   */
+  SL_BOOL bStuckAtError;
+  /*
+   Offset 58. Reserved.
+   */
+  uint8_t aReserved4[6];
+  /*
+   Offset 64. AnalogOut, the scaled value in RUN, else 0.
+   */
+  int16_t nAnalogOut;
+  /*
+   Reserved up to the info data (16-bit: 6 bytes, 32-bit: 4).
+   */
+  uint8_t aReserved5[6];
+  /*
+   Offset 72. The manual's status value (RUN, STOP, ERROR, RESET).
+   */
+  uint8_t nState;
+  /*
+   Offset 73. Reserved.
+   */
+  uint8_t aReserved6[1];
+  /*
+   Offset 74. Diag value (1 underflow, 2 overflow, 3 multiplication, 4 division) +
+   library bits 13-15.
+   */
+  uint16_t nDiag;
+  /*
+   Offset 76. Text ID of the latched diag message (0x40B0–0x40B3), 0 = none.
+   */
+  uint16_t nDiagTextId;
+  /*
+   Offset 78. Reserved.
+   */
+  uint8_t aReserved7[2];
+  /*
+   Offset 80. Message parameter 2 (AnalogIn as a 32-bit pattern).
+   */
+  uint32_t dwDiagPar2;
+  /*
+   Offset 84. Message parameter 3 (always 0: "-" in the manual).
+   */
+  uint32_t dwDiagPar3;
+  /*
+   Offset 88. Private state, 72 bytes: never write it.
+   */
+  struct SL_SCALE_PRIVATE stPrivate;
+} FB_SCALE_INT;
+
+
+/*
+ FB SCALE instance (ABI-2 §11.6), generic over the signal type `T` and the type `T32` of
+ the scaling parameters (ABI-2 §10.3); `P1` (after AnalogIn) and `P2` (after AnalogOut)
+ are the reserved gaps that make the 16- and 32-bit layouts differ.
+ */
+typedef struct FB_SCALE_UINT {
+  /*
+   Offset 0. Reserved, keep 0 (no BOOL inputs).
+   */
+  uint8_t aReserved0[16];
+  /*
+   Offset 16. FbRun of the owning group: TRUE = the block executes.
+   */
+  SL_BOOL bRun;
+  /*
+   Offset 17. ErrAck of the owning group.
+   */
+  SL_BOOL bErrAck;
+  /*
+   Offset 18. Reserved, keep 0.
+   */
+  uint8_t aReserved1[6];
+  /*
+   Offset 24. AnalogIn, the value scaled (active bit 8, required).
+   */
+  uint16_t nAnalogIn;
+  /*
+   Reserved up to 28 (16-bit: 2 bytes, 32-bit: none).
+   */
+  uint8_t aReserved2[2];
+  /*
+   Offset 28. "watchdog (ms)": StuckAtError after this time without a change of
+   AnalogIn; 0 = off, at most SL_TIME_PARAM_MAX.
+   */
+  uint32_t tWatchdog;
+  /*
+   Offset 32. "Nominator": the multiplication factor.
+   */
+  uint32_t nNumerator;
+  /*
+   Offset 36. "Denominator": the division factor, not 0.
+   */
+  uint32_t nDenominator;
+  /*
+   Offset 40. The scaling offset, added last.
+   */
+  uint32_t nOffset;
+  /*
+   Offset 44. SL_OPT_SCALE_DIVISION_FIRST, no other bit.
+   */
+  uint32_t dwOptions;
+  /*
+   Offset 48. "Division Rounding": SL_ROUNDING_FLOOR, _CEIL, _ROUND.
+   */
+  uint16_t nRounding;
+  /*
+   Offset 50. Bit 8 (AnalogIn) must be set, no other.
+   */
+  uint16_t wInputActive;
+  /*
+   Offset 52. Bit 8: AnalogIn negated; no other.
+   */
+  uint16_t wInputNegated;
+  /*
+   Offset 54. Reserved.
+   */
+  uint8_t aReserved3[2];
+  /*
+   Offset 56, the output base. Error, TRUE in ERROR only.
+   */
+  SL_BOOL bError;
+  /*
+   Offset 57. StuckAtError: in RUN, AnalogIn unchanged for `tWatchdog` (no FB error).
+   */
+  SL_BOOL bStuckAtError;
+  /*
+   Offset 58. Reserved.
+   */
+  uint8_t aReserved4[6];
+  /*
+   Offset 64. AnalogOut, the scaled value in RUN, else 0.
+   */
+  uint16_t nAnalogOut;
+  /*
+   Reserved up to the info data (16-bit: 6 bytes, 32-bit: 4).
+   */
+  uint8_t aReserved5[6];
+  /*
+   Offset 72. The manual's status value (RUN, STOP, ERROR, RESET).
+   */
+  uint8_t nState;
+  /*
+   Offset 73. Reserved.
+   */
+  uint8_t aReserved6[1];
+  /*
+   Offset 74. Diag value (1 underflow, 2 overflow, 3 multiplication, 4 division) +
+   library bits 13-15.
+   */
+  uint16_t nDiag;
+  /*
+   Offset 76. Text ID of the latched diag message (0x40B0–0x40B3), 0 = none.
+   */
+  uint16_t nDiagTextId;
+  /*
+   Offset 78. Reserved.
+   */
+  uint8_t aReserved7[2];
+  /*
+   Offset 80. Message parameter 2 (AnalogIn as a 32-bit pattern).
+   */
+  uint32_t dwDiagPar2;
+  /*
+   Offset 84. Message parameter 3 (always 0: "-" in the manual).
+   */
+  uint32_t dwDiagPar3;
+  /*
+   Offset 88. Private state, 72 bytes: never write it.
+   */
+  struct SL_SCALE_PRIVATE stPrivate;
+} FB_SCALE_UINT;
+
+
+/*
+ FB SCALE instance (ABI-2 §11.6), generic over the signal type `T` and the type `T32` of
+ the scaling parameters (ABI-2 §10.3); `P1` (after AnalogIn) and `P2` (after AnalogOut)
+ are the reserved gaps that make the 16- and 32-bit layouts differ.
+ */
+typedef struct FB_SCALE_DINT {
+  /*
+   Offset 0. Reserved, keep 0 (no BOOL inputs).
+   */
+  uint8_t aReserved0[16];
+  /*
+   Offset 16. FbRun of the owning group: TRUE = the block executes.
+   */
+  SL_BOOL bRun;
+  /*
+   Offset 17. ErrAck of the owning group.
+   */
+  SL_BOOL bErrAck;
+  /*
+   Offset 18. Reserved, keep 0.
+   */
+  uint8_t aReserved1[6];
+  /*
+   Offset 24. AnalogIn, the value scaled (active bit 8, required).
+   */
+  int32_t nAnalogIn;
+  /*
+   Offset 28. "watchdog (ms)": StuckAtError after this time without a change of
+   AnalogIn; 0 = off, at most SL_TIME_PARAM_MAX.
+   */
+  uint32_t tWatchdog;
+  /*
+   Offset 32. "Nominator": the multiplication factor.
+   */
+  int32_t nNumerator;
+  /*
+   Offset 36. "Denominator": the division factor, not 0.
+   */
+  int32_t nDenominator;
+  /*
+   Offset 40. The scaling offset, added last.
+   */
+  int32_t nOffset;
+  /*
+   Offset 44. SL_OPT_SCALE_DIVISION_FIRST, no other bit.
+   */
+  uint32_t dwOptions;
+  /*
+   Offset 48. "Division Rounding": SL_ROUNDING_FLOOR, _CEIL, _ROUND.
+   */
+  uint16_t nRounding;
+  /*
+   Offset 50. Bit 8 (AnalogIn) must be set, no other.
+   */
+  uint16_t wInputActive;
+  /*
+   Offset 52. Bit 8: AnalogIn negated; no other.
+   */
+  uint16_t wInputNegated;
+  /*
+   Offset 54. Reserved.
+   */
+  uint8_t aReserved3[2];
+  /*
+   Offset 56, the output base. Error, TRUE in ERROR only.
+   */
+  SL_BOOL bError;
+  /*
+   Offset 57. StuckAtError: in RUN, AnalogIn unchanged for `tWatchdog` (no FB error).
+   */
+  SL_BOOL bStuckAtError;
+  /*
+   Offset 58. Reserved.
+   */
+  uint8_t aReserved4[6];
+  /*
+   Offset 64. AnalogOut, the scaled value in RUN, else 0.
+   */
+  int32_t nAnalogOut;
+  /*
+   Reserved up to the info data (16-bit: 6 bytes, 32-bit: 4).
+   */
+  uint8_t aReserved5[4];
+  /*
+   Offset 72. The manual's status value (RUN, STOP, ERROR, RESET).
+   */
+  uint8_t nState;
+  /*
+   Offset 73. Reserved.
+   */
+  uint8_t aReserved6[1];
+  /*
+   Offset 74. Diag value (1 underflow, 2 overflow, 3 multiplication, 4 division) +
+   library bits 13-15.
+   */
+  uint16_t nDiag;
+  /*
+   Offset 76. Text ID of the latched diag message (0x40B0–0x40B3), 0 = none.
+   */
+  uint16_t nDiagTextId;
+  /*
+   Offset 78. Reserved.
+   */
+  uint8_t aReserved7[2];
+  /*
+   Offset 80. Message parameter 2 (AnalogIn as a 32-bit pattern).
+   */
+  uint32_t dwDiagPar2;
+  /*
+   Offset 84. Message parameter 3 (always 0: "-" in the manual).
+   */
+  uint32_t dwDiagPar3;
+  /*
+   Offset 88. Private state, 72 bytes: never write it.
+   */
+  struct SL_SCALE_PRIVATE stPrivate;
+} FB_SCALE_DINT;
+
+
+/*
+ FB SCALE instance (ABI-2 §11.6), generic over the signal type `T` and the type `T32` of
+ the scaling parameters (ABI-2 §10.3); `P1` (after AnalogIn) and `P2` (after AnalogOut)
+ are the reserved gaps that make the 16- and 32-bit layouts differ.
+ */
+typedef struct FB_SCALE_UDINT {
+  /*
+   Offset 0. Reserved, keep 0 (no BOOL inputs).
+   */
+  uint8_t aReserved0[16];
+  /*
+   Offset 16. FbRun of the owning group: TRUE = the block executes.
+   */
+  SL_BOOL bRun;
+  /*
+   Offset 17. ErrAck of the owning group.
+   */
+  SL_BOOL bErrAck;
+  /*
+   Offset 18. Reserved, keep 0.
+   */
+  uint8_t aReserved1[6];
+  /*
+   Offset 24. AnalogIn, the value scaled (active bit 8, required).
+   */
+  uint32_t nAnalogIn;
+  /*
+   Offset 28. "watchdog (ms)": StuckAtError after this time without a change of
+   AnalogIn; 0 = off, at most SL_TIME_PARAM_MAX.
+   */
+  uint32_t tWatchdog;
+  /*
+   Offset 32. "Nominator": the multiplication factor.
+   */
+  uint32_t nNumerator;
+  /*
+   Offset 36. "Denominator": the division factor, not 0.
+   */
+  uint32_t nDenominator;
+  /*
+   Offset 40. The scaling offset, added last.
+   */
+  uint32_t nOffset;
+  /*
+   Offset 44. SL_OPT_SCALE_DIVISION_FIRST, no other bit.
+   */
+  uint32_t dwOptions;
+  /*
+   Offset 48. "Division Rounding": SL_ROUNDING_FLOOR, _CEIL, _ROUND.
+   */
+  uint16_t nRounding;
+  /*
+   Offset 50. Bit 8 (AnalogIn) must be set, no other.
+   */
+  uint16_t wInputActive;
+  /*
+   Offset 52. Bit 8: AnalogIn negated; no other.
+   */
+  uint16_t wInputNegated;
+  /*
+   Offset 54. Reserved.
+   */
+  uint8_t aReserved3[2];
+  /*
+   Offset 56, the output base. Error, TRUE in ERROR only.
+   */
+  SL_BOOL bError;
+  /*
+   Offset 57. StuckAtError: in RUN, AnalogIn unchanged for `tWatchdog` (no FB error).
+   */
+  SL_BOOL bStuckAtError;
+  /*
+   Offset 58. Reserved.
+   */
+  uint8_t aReserved4[6];
+  /*
+   Offset 64. AnalogOut, the scaled value in RUN, else 0.
+   */
+  uint32_t nAnalogOut;
+  /*
+   Reserved up to the info data (16-bit: 6 bytes, 32-bit: 4).
+   */
+  uint8_t aReserved5[4];
+  /*
+   Offset 72. The manual's status value (RUN, STOP, ERROR, RESET).
+   */
+  uint8_t nState;
+  /*
+   Offset 73. Reserved.
+   */
+  uint8_t aReserved6[1];
+  /*
+   Offset 74. Diag value (1 underflow, 2 overflow, 3 multiplication, 4 division) +
+   library bits 13-15.
+   */
+  uint16_t nDiag;
+  /*
+   Offset 76. Text ID of the latched diag message (0x40B0–0x40B3), 0 = none.
+   */
+  uint16_t nDiagTextId;
+  /*
+   Offset 78. Reserved.
+   */
+  uint8_t aReserved7[2];
+  /*
+   Offset 80. Message parameter 2 (AnalogIn as a 32-bit pattern).
+   */
+  uint32_t dwDiagPar2;
+  /*
+   Offset 84. Message parameter 3 (always 0: "-" in the manual).
+   */
+  uint32_t dwDiagPar3;
+  /*
+   Offset 88. Private state, 72 bytes: never write it.
+   */
+  struct SL_SCALE_PRIVATE stPrivate;
+} FB_SCALE_UDINT;
+
+
+/*
+ Private state of FB SPEED (56 bytes). Never written by the user. The header's `tPhase`
+ is the time of the latch.
+ */
+typedef struct SL_SPEED_PRIVATE {
+  /*
+   Common head.
+   */
+  struct SL_PRIVATE_HEADER stHeader;
+  /*
+   Latched `tTimeInterval`.
+   */
+  uint32_t tInterval;
+  /*
+   Latched `dwOptions`.
+   */
+  uint32_t dwOptions;
+  /*
+   Latched `wInputActive`.
+   */
+  uint16_t wActive;
+  /*
+   Reserved.
+   */
+  uint8_t aReserved[2];
+  /*
+   The latched Position as a 32-bit pattern.
+   */
+  uint32_t dwLatch;
+  /*
+   Speed of the last update as a 32-bit pattern.
+   */
+  uint32_t dwSpeed;
+  /*
+   Diag message parameters 2 and 3 latched at the ERROR entry.
+   */
+  uint32_t adwPar[2];
+} SL_SPEED_PRIVATE;
+
+/*
+ FB SPEED instance (ABI-2 §11.7), generic over the signal type `T`; `P1` (after Position)
+ and `P2` (after Speed) are the reserved gaps that make the 16- and 32-bit layouts differ.
+ */
+typedef struct FB_SPEED_INT {
+  /*
+   Offset 0. Reserved, keep 0 (no BOOL inputs).
+   */
+  uint8_t aReserved0[16];
+  /*
+   Offset 16. FbRun of the owning group: TRUE = the block executes.
+   */
+  SL_BOOL bRun;
+  /*
+   Offset 17. ErrAck of the owning group.
+   */
+  SL_BOOL bErrAck;
+  /*
+   Offset 18. Reserved, keep 0.
+   */
+  uint8_t aReserved1[6];
+  /*
+   Offset 24. Position, the input the speed is computed from (active bit 8, required).
+   */
+  int16_t nPosition;
+  /*
+   Reserved up to 28 (16-bit: 2 bytes, 32-bit: none).
+   */
+  uint8_t aReserved2[2];
+  /*
+   Offset 28. "Time Interval" in ms, 1 … SL_TIME_PARAM_MAX.
+   */
+  uint32_t tTimeInterval;
+  /*
+   Offset 32. SL_OPT_SPEED_OVERFLOW_CHECK, no other bit.
+   */
+  uint32_t dwOptions;
+  /*
+   Offset 36. Bit 8 (Position) must be set, no other.
+   */
+  uint16_t wInputActive;
+  /*
+   Offset 38. Reserved.
+   */
+  uint8_t aReserved3[2];
+  /*
+   Offset 40, the output base. Error, TRUE in ERROR only.
+   */
+  SL_BOOL bError;
+  /*
+   Offset 41. Reserved.
+   */
+  uint8_t aReserved4[7];
+  /*
+   Offset 48. Speed in increments per interval in RUN, else 0.
+   */
+  int16_t nSpeed;
+  /*
+   Reserved up to the info data (16-bit: 6 bytes, 32-bit: 4).
+   */
+  uint8_t aReserved5[6];
+  /*
+   Offset 56. The manual's status value (RUN, STOP, ERROR, RESET).
+   */
+  uint8_t nState;
+  /*
+   Offset 57. Reserved.
+   */
+  uint8_t aReserved6[1];
+  /*
+   Offset 58. Diag value (1 underflow, 2 overflow) + library bits 13-15.
+   */
+  uint16_t nDiag;
+  /*
+   Offset 60. Text ID of the latched diag message (0x4088, 0x4089), 0 = none.
+   */
+  uint16_t nDiagTextId;
+  /*
+   Offset 62. Reserved.
+   */
+  uint8_t aReserved7[2];
+  /*
+   Offset 64. Message parameter 2 (current position as a 32-bit pattern).
+   */
+  uint32_t dwDiagPar2;
+  /*
+   Offset 68. Message parameter 3 (latched position).
+   */
+  uint32_t dwDiagPar3;
+  /*
+   Offset 72. Private state, 56 bytes: never write it.
+   */
+  struct SL_SPEED_PRIVATE stPrivate;
+} FB_SPEED_INT;
+
+
+/*
+ FB SPEED instance (ABI-2 §11.7), generic over the signal type `T`; `P1` (after Position)
+ and `P2` (after Speed) are the reserved gaps that make the 16- and 32-bit layouts differ.
+ */
+typedef struct FB_SPEED_UINT {
+  /*
+   Offset 0. Reserved, keep 0 (no BOOL inputs).
+   */
+  uint8_t aReserved0[16];
+  /*
+   Offset 16. FbRun of the owning group: TRUE = the block executes.
+   */
+  SL_BOOL bRun;
+  /*
+   Offset 17. ErrAck of the owning group.
+   */
+  SL_BOOL bErrAck;
+  /*
+   Offset 18. Reserved, keep 0.
+   */
+  uint8_t aReserved1[6];
+  /*
+   Offset 24. Position, the input the speed is computed from (active bit 8, required).
+   */
+  uint16_t nPosition;
+  /*
+   Reserved up to 28 (16-bit: 2 bytes, 32-bit: none).
+   */
+  uint8_t aReserved2[2];
+  /*
+   Offset 28. "Time Interval" in ms, 1 … SL_TIME_PARAM_MAX.
+   */
+  uint32_t tTimeInterval;
+  /*
+   Offset 32. SL_OPT_SPEED_OVERFLOW_CHECK, no other bit.
+   */
+  uint32_t dwOptions;
+  /*
+   Offset 36. Bit 8 (Position) must be set, no other.
+   */
+  uint16_t wInputActive;
+  /*
+   Offset 38. Reserved.
+   */
+  uint8_t aReserved3[2];
+  /*
+   Offset 40, the output base. Error, TRUE in ERROR only.
+   */
+  SL_BOOL bError;
+  /*
+   Offset 41. Reserved.
+   */
+  uint8_t aReserved4[7];
+  /*
+   Offset 48. Speed in increments per interval in RUN, else 0.
+   */
+  uint16_t nSpeed;
+  /*
+   Reserved up to the info data (16-bit: 6 bytes, 32-bit: 4).
+   */
+  uint8_t aReserved5[6];
+  /*
+   Offset 56. The manual's status value (RUN, STOP, ERROR, RESET).
+   */
+  uint8_t nState;
+  /*
+   Offset 57. Reserved.
+   */
+  uint8_t aReserved6[1];
+  /*
+   Offset 58. Diag value (1 underflow, 2 overflow) + library bits 13-15.
+   */
+  uint16_t nDiag;
+  /*
+   Offset 60. Text ID of the latched diag message (0x4088, 0x4089), 0 = none.
+   */
+  uint16_t nDiagTextId;
+  /*
+   Offset 62. Reserved.
+   */
+  uint8_t aReserved7[2];
+  /*
+   Offset 64. Message parameter 2 (current position as a 32-bit pattern).
+   */
+  uint32_t dwDiagPar2;
+  /*
+   Offset 68. Message parameter 3 (latched position).
+   */
+  uint32_t dwDiagPar3;
+  /*
+   Offset 72. Private state, 56 bytes: never write it.
+   */
+  struct SL_SPEED_PRIVATE stPrivate;
+} FB_SPEED_UINT;
+
+
+/*
+ FB SPEED instance (ABI-2 §11.7), generic over the signal type `T`; `P1` (after Position)
+ and `P2` (after Speed) are the reserved gaps that make the 16- and 32-bit layouts differ.
+ */
+typedef struct FB_SPEED_DINT {
+  /*
+   Offset 0. Reserved, keep 0 (no BOOL inputs).
+   */
+  uint8_t aReserved0[16];
+  /*
+   Offset 16. FbRun of the owning group: TRUE = the block executes.
+   */
+  SL_BOOL bRun;
+  /*
+   Offset 17. ErrAck of the owning group.
+   */
+  SL_BOOL bErrAck;
+  /*
+   Offset 18. Reserved, keep 0.
+   */
+  uint8_t aReserved1[6];
+  /*
+   Offset 24. Position, the input the speed is computed from (active bit 8, required).
+   */
+  int32_t nPosition;
+  /*
+   Offset 28. "Time Interval" in ms, 1 … SL_TIME_PARAM_MAX.
+   */
+  uint32_t tTimeInterval;
+  /*
+   Offset 32. SL_OPT_SPEED_OVERFLOW_CHECK, no other bit.
+   */
+  uint32_t dwOptions;
+  /*
+   Offset 36. Bit 8 (Position) must be set, no other.
+   */
+  uint16_t wInputActive;
+  /*
+   Offset 38. Reserved.
+   */
+  uint8_t aReserved3[2];
+  /*
+   Offset 40, the output base. Error, TRUE in ERROR only.
+   */
+  SL_BOOL bError;
+  /*
+   Offset 41. Reserved.
+   */
+  uint8_t aReserved4[7];
+  /*
+   Offset 48. Speed in increments per interval in RUN, else 0.
+   */
+  int32_t nSpeed;
+  /*
+   Reserved up to the info data (16-bit: 6 bytes, 32-bit: 4).
+   */
+  uint8_t aReserved5[4];
+  /*
+   Offset 56. The manual's status value (RUN, STOP, ERROR, RESET).
+   */
+  uint8_t nState;
+  /*
+   Offset 57. Reserved.
+   */
+  uint8_t aReserved6[1];
+  /*
+   Offset 58. Diag value (1 underflow, 2 overflow) + library bits 13-15.
+   */
+  uint16_t nDiag;
+  /*
+   Offset 60. Text ID of the latched diag message (0x4088, 0x4089), 0 = none.
+   */
+  uint16_t nDiagTextId;
+  /*
+   Offset 62. Reserved.
+   */
+  uint8_t aReserved7[2];
+  /*
+   Offset 64. Message parameter 2 (current position as a 32-bit pattern).
+   */
+  uint32_t dwDiagPar2;
+  /*
+   Offset 68. Message parameter 3 (latched position).
+   */
+  uint32_t dwDiagPar3;
+  /*
+   Offset 72. Private state, 56 bytes: never write it.
+   */
+  struct SL_SPEED_PRIVATE stPrivate;
+} FB_SPEED_DINT;
+
+
+/*
+ FB SPEED instance (ABI-2 §11.7), generic over the signal type `T`; `P1` (after Position)
+ and `P2` (after Speed) are the reserved gaps that make the 16- and 32-bit layouts differ.
+ */
+typedef struct FB_SPEED_UDINT {
+  /*
+   Offset 0. Reserved, keep 0 (no BOOL inputs).
+   */
+  uint8_t aReserved0[16];
+  /*
+   Offset 16. FbRun of the owning group: TRUE = the block executes.
+   */
+  SL_BOOL bRun;
+  /*
+   Offset 17. ErrAck of the owning group.
+   */
+  SL_BOOL bErrAck;
+  /*
+   Offset 18. Reserved, keep 0.
+   */
+  uint8_t aReserved1[6];
+  /*
+   Offset 24. Position, the input the speed is computed from (active bit 8, required).
+   */
+  uint32_t nPosition;
+  /*
+   Offset 28. "Time Interval" in ms, 1 … SL_TIME_PARAM_MAX.
+   */
+  uint32_t tTimeInterval;
+  /*
+   Offset 32. SL_OPT_SPEED_OVERFLOW_CHECK, no other bit.
+   */
+  uint32_t dwOptions;
+  /*
+   Offset 36. Bit 8 (Position) must be set, no other.
+   */
+  uint16_t wInputActive;
+  /*
+   Offset 38. Reserved.
+   */
+  uint8_t aReserved3[2];
+  /*
+   Offset 40, the output base. Error, TRUE in ERROR only.
+   */
+  SL_BOOL bError;
+  /*
+   Offset 41. Reserved.
+   */
+  uint8_t aReserved4[7];
+  /*
+   Offset 48. Speed in increments per interval in RUN, else 0.
+   */
+  uint32_t nSpeed;
+  /*
+   Reserved up to the info data (16-bit: 6 bytes, 32-bit: 4).
+   */
+  uint8_t aReserved5[4];
+  /*
+   Offset 56. The manual's status value (RUN, STOP, ERROR, RESET).
+   */
+  uint8_t nState;
+  /*
+   Offset 57. Reserved.
+   */
+  uint8_t aReserved6[1];
+  /*
+   Offset 58. Diag value (1 underflow, 2 overflow) + library bits 13-15.
+   */
+  uint16_t nDiag;
+  /*
+   Offset 60. Text ID of the latched diag message (0x4088, 0x4089), 0 = none.
+   */
+  uint16_t nDiagTextId;
+  /*
+   Offset 62. Reserved.
+   */
+  uint8_t aReserved7[2];
+  /*
+   Offset 64. Message parameter 2 (current position as a 32-bit pattern).
+   */
+  uint32_t dwDiagPar2;
+  /*
+   Offset 68. Message parameter 3 (latched position).
+   */
+  uint32_t dwDiagPar3;
+  /*
+   Offset 72. Private state, 56 bytes: never write it.
+   */
+  struct SL_SPEED_PRIVATE stPrivate;
+} FB_SPEED_UDINT;
+
+
+/*
  Private state of FB COUNTER (56 bytes). Never written by the user.
  */
 typedef struct SL_COUNTER_PRIVATE {
@@ -6142,6 +7204,22 @@ int32_t sl_limit_dint_init(struct FB_LIMIT_DINT *fb);
 int32_t sl_limit_dint_cycle(struct FB_LIMIT_DINT *fb, uint32_t tNow);
 int32_t sl_limit_udint_init(struct FB_LIMIT_UDINT *fb);
 int32_t sl_limit_udint_cycle(struct FB_LIMIT_UDINT *fb, uint32_t tNow);
+int32_t sl_scale_int_init(struct FB_SCALE_INT *fb);
+int32_t sl_scale_int_cycle(struct FB_SCALE_INT *fb, uint32_t tNow);
+int32_t sl_scale_uint_init(struct FB_SCALE_UINT *fb);
+int32_t sl_scale_uint_cycle(struct FB_SCALE_UINT *fb, uint32_t tNow);
+int32_t sl_scale_dint_init(struct FB_SCALE_DINT *fb);
+int32_t sl_scale_dint_cycle(struct FB_SCALE_DINT *fb, uint32_t tNow);
+int32_t sl_scale_udint_init(struct FB_SCALE_UDINT *fb);
+int32_t sl_scale_udint_cycle(struct FB_SCALE_UDINT *fb, uint32_t tNow);
+int32_t sl_speed_int_init(struct FB_SPEED_INT *fb);
+int32_t sl_speed_int_cycle(struct FB_SPEED_INT *fb, uint32_t tNow);
+int32_t sl_speed_uint_init(struct FB_SPEED_UINT *fb);
+int32_t sl_speed_uint_cycle(struct FB_SPEED_UINT *fb, uint32_t tNow);
+int32_t sl_speed_dint_init(struct FB_SPEED_DINT *fb);
+int32_t sl_speed_dint_cycle(struct FB_SPEED_DINT *fb, uint32_t tNow);
+int32_t sl_speed_udint_init(struct FB_SPEED_UDINT *fb);
+int32_t sl_speed_udint_cycle(struct FB_SPEED_UDINT *fb, uint32_t tNow);
 int32_t sl_counter_int_init(struct FB_COUNTER_INT *fb);
 int32_t sl_counter_int_cycle(struct FB_COUNTER_INT *fb, uint32_t tNow);
 int32_t sl_counter_uint_init(struct FB_COUNTER_UINT *fb);
@@ -7213,6 +8291,232 @@ SL_STATIC_ASSERT(offsetof(FB_LIMIT_UDINT, dwDiagPar2) == 64, "offset of FB_LIMIT
 SL_STATIC_ASSERT(offsetof(FB_LIMIT_UDINT, dwDiagPar3) == 68, "offset of FB_LIMIT_UDINT.dwDiagPar3");
 SL_STATIC_ASSERT(offsetof(FB_LIMIT_UDINT, stPrivate) == 72, "offset of FB_LIMIT_UDINT.stPrivate");
 SL_STATIC_ASSERT(sizeof(FB_LIMIT_UDINT) == 120, "size of FB_LIMIT_UDINT");
+SL_STATIC_ASSERT(offsetof(SL_SCALE_PRIVATE, stHeader) == 0, "offset of SL_SCALE_PRIVATE.stHeader");
+SL_STATIC_ASSERT(offsetof(SL_SCALE_PRIVATE, tWatchdog) == 28, "offset of SL_SCALE_PRIVATE.tWatchdog");
+SL_STATIC_ASSERT(offsetof(SL_SCALE_PRIVATE, adwFactor) == 32, "offset of SL_SCALE_PRIVATE.adwFactor");
+SL_STATIC_ASSERT(offsetof(SL_SCALE_PRIVATE, dwOptions) == 44, "offset of SL_SCALE_PRIVATE.dwOptions");
+SL_STATIC_ASSERT(offsetof(SL_SCALE_PRIVATE, wRounding) == 48, "offset of SL_SCALE_PRIVATE.wRounding");
+SL_STATIC_ASSERT(offsetof(SL_SCALE_PRIVATE, wActive) == 50, "offset of SL_SCALE_PRIVATE.wActive");
+SL_STATIC_ASSERT(offsetof(SL_SCALE_PRIVATE, wNegated) == 52, "offset of SL_SCALE_PRIVATE.wNegated");
+SL_STATIC_ASSERT(offsetof(SL_SCALE_PRIVATE, aReserved0) == 54, "offset of SL_SCALE_PRIVATE.aReserved0");
+SL_STATIC_ASSERT(offsetof(SL_SCALE_PRIVATE, dwOut) == 56, "offset of SL_SCALE_PRIVATE.dwOut");
+SL_STATIC_ASSERT(offsetof(SL_SCALE_PRIVATE, dwLastIn) == 60, "offset of SL_SCALE_PRIVATE.dwLastIn");
+SL_STATIC_ASSERT(offsetof(SL_SCALE_PRIVATE, dwPar) == 64, "offset of SL_SCALE_PRIVATE.dwPar");
+SL_STATIC_ASSERT(offsetof(SL_SCALE_PRIVATE, aReserved1) == 68, "offset of SL_SCALE_PRIVATE.aReserved1");
+SL_STATIC_ASSERT(sizeof(SL_SCALE_PRIVATE) == 72, "size of SL_SCALE_PRIVATE");
+SL_STATIC_ASSERT(offsetof(FB_SCALE_INT, aReserved0) == 0, "offset of FB_SCALE_INT.aReserved0");
+SL_STATIC_ASSERT(offsetof(FB_SCALE_INT, bRun) == 16, "offset of FB_SCALE_INT.bRun");
+SL_STATIC_ASSERT(offsetof(FB_SCALE_INT, bErrAck) == 17, "offset of FB_SCALE_INT.bErrAck");
+SL_STATIC_ASSERT(offsetof(FB_SCALE_INT, aReserved1) == 18, "offset of FB_SCALE_INT.aReserved1");
+SL_STATIC_ASSERT(offsetof(FB_SCALE_INT, nAnalogIn) == 24, "offset of FB_SCALE_INT.nAnalogIn");
+SL_STATIC_ASSERT(offsetof(FB_SCALE_INT, aReserved2) == 26, "offset of FB_SCALE_INT.aReserved2");
+SL_STATIC_ASSERT(offsetof(FB_SCALE_INT, tWatchdog) == 28, "offset of FB_SCALE_INT.tWatchdog");
+SL_STATIC_ASSERT(offsetof(FB_SCALE_INT, nNumerator) == 32, "offset of FB_SCALE_INT.nNumerator");
+SL_STATIC_ASSERT(offsetof(FB_SCALE_INT, nDenominator) == 36, "offset of FB_SCALE_INT.nDenominator");
+SL_STATIC_ASSERT(offsetof(FB_SCALE_INT, nOffset) == 40, "offset of FB_SCALE_INT.nOffset");
+SL_STATIC_ASSERT(offsetof(FB_SCALE_INT, dwOptions) == 44, "offset of FB_SCALE_INT.dwOptions");
+SL_STATIC_ASSERT(offsetof(FB_SCALE_INT, nRounding) == 48, "offset of FB_SCALE_INT.nRounding");
+SL_STATIC_ASSERT(offsetof(FB_SCALE_INT, wInputActive) == 50, "offset of FB_SCALE_INT.wInputActive");
+SL_STATIC_ASSERT(offsetof(FB_SCALE_INT, wInputNegated) == 52, "offset of FB_SCALE_INT.wInputNegated");
+SL_STATIC_ASSERT(offsetof(FB_SCALE_INT, aReserved3) == 54, "offset of FB_SCALE_INT.aReserved3");
+SL_STATIC_ASSERT(offsetof(FB_SCALE_INT, bError) == 56, "offset of FB_SCALE_INT.bError");
+SL_STATIC_ASSERT(offsetof(FB_SCALE_INT, bStuckAtError) == 57, "offset of FB_SCALE_INT.bStuckAtError");
+SL_STATIC_ASSERT(offsetof(FB_SCALE_INT, aReserved4) == 58, "offset of FB_SCALE_INT.aReserved4");
+SL_STATIC_ASSERT(offsetof(FB_SCALE_INT, nAnalogOut) == 64, "offset of FB_SCALE_INT.nAnalogOut");
+SL_STATIC_ASSERT(offsetof(FB_SCALE_INT, aReserved5) == 66, "offset of FB_SCALE_INT.aReserved5");
+SL_STATIC_ASSERT(offsetof(FB_SCALE_INT, nState) == 72, "offset of FB_SCALE_INT.nState");
+SL_STATIC_ASSERT(offsetof(FB_SCALE_INT, aReserved6) == 73, "offset of FB_SCALE_INT.aReserved6");
+SL_STATIC_ASSERT(offsetof(FB_SCALE_INT, nDiag) == 74, "offset of FB_SCALE_INT.nDiag");
+SL_STATIC_ASSERT(offsetof(FB_SCALE_INT, nDiagTextId) == 76, "offset of FB_SCALE_INT.nDiagTextId");
+SL_STATIC_ASSERT(offsetof(FB_SCALE_INT, aReserved7) == 78, "offset of FB_SCALE_INT.aReserved7");
+SL_STATIC_ASSERT(offsetof(FB_SCALE_INT, dwDiagPar2) == 80, "offset of FB_SCALE_INT.dwDiagPar2");
+SL_STATIC_ASSERT(offsetof(FB_SCALE_INT, dwDiagPar3) == 84, "offset of FB_SCALE_INT.dwDiagPar3");
+SL_STATIC_ASSERT(offsetof(FB_SCALE_INT, stPrivate) == 88, "offset of FB_SCALE_INT.stPrivate");
+SL_STATIC_ASSERT(sizeof(FB_SCALE_INT) == 160, "size of FB_SCALE_INT");
+SL_STATIC_ASSERT(offsetof(FB_SCALE_UINT, aReserved0) == 0, "offset of FB_SCALE_UINT.aReserved0");
+SL_STATIC_ASSERT(offsetof(FB_SCALE_UINT, bRun) == 16, "offset of FB_SCALE_UINT.bRun");
+SL_STATIC_ASSERT(offsetof(FB_SCALE_UINT, bErrAck) == 17, "offset of FB_SCALE_UINT.bErrAck");
+SL_STATIC_ASSERT(offsetof(FB_SCALE_UINT, aReserved1) == 18, "offset of FB_SCALE_UINT.aReserved1");
+SL_STATIC_ASSERT(offsetof(FB_SCALE_UINT, nAnalogIn) == 24, "offset of FB_SCALE_UINT.nAnalogIn");
+SL_STATIC_ASSERT(offsetof(FB_SCALE_UINT, aReserved2) == 26, "offset of FB_SCALE_UINT.aReserved2");
+SL_STATIC_ASSERT(offsetof(FB_SCALE_UINT, tWatchdog) == 28, "offset of FB_SCALE_UINT.tWatchdog");
+SL_STATIC_ASSERT(offsetof(FB_SCALE_UINT, nNumerator) == 32, "offset of FB_SCALE_UINT.nNumerator");
+SL_STATIC_ASSERT(offsetof(FB_SCALE_UINT, nDenominator) == 36, "offset of FB_SCALE_UINT.nDenominator");
+SL_STATIC_ASSERT(offsetof(FB_SCALE_UINT, nOffset) == 40, "offset of FB_SCALE_UINT.nOffset");
+SL_STATIC_ASSERT(offsetof(FB_SCALE_UINT, dwOptions) == 44, "offset of FB_SCALE_UINT.dwOptions");
+SL_STATIC_ASSERT(offsetof(FB_SCALE_UINT, nRounding) == 48, "offset of FB_SCALE_UINT.nRounding");
+SL_STATIC_ASSERT(offsetof(FB_SCALE_UINT, wInputActive) == 50, "offset of FB_SCALE_UINT.wInputActive");
+SL_STATIC_ASSERT(offsetof(FB_SCALE_UINT, wInputNegated) == 52, "offset of FB_SCALE_UINT.wInputNegated");
+SL_STATIC_ASSERT(offsetof(FB_SCALE_UINT, aReserved3) == 54, "offset of FB_SCALE_UINT.aReserved3");
+SL_STATIC_ASSERT(offsetof(FB_SCALE_UINT, bError) == 56, "offset of FB_SCALE_UINT.bError");
+SL_STATIC_ASSERT(offsetof(FB_SCALE_UINT, bStuckAtError) == 57, "offset of FB_SCALE_UINT.bStuckAtError");
+SL_STATIC_ASSERT(offsetof(FB_SCALE_UINT, aReserved4) == 58, "offset of FB_SCALE_UINT.aReserved4");
+SL_STATIC_ASSERT(offsetof(FB_SCALE_UINT, nAnalogOut) == 64, "offset of FB_SCALE_UINT.nAnalogOut");
+SL_STATIC_ASSERT(offsetof(FB_SCALE_UINT, aReserved5) == 66, "offset of FB_SCALE_UINT.aReserved5");
+SL_STATIC_ASSERT(offsetof(FB_SCALE_UINT, nState) == 72, "offset of FB_SCALE_UINT.nState");
+SL_STATIC_ASSERT(offsetof(FB_SCALE_UINT, aReserved6) == 73, "offset of FB_SCALE_UINT.aReserved6");
+SL_STATIC_ASSERT(offsetof(FB_SCALE_UINT, nDiag) == 74, "offset of FB_SCALE_UINT.nDiag");
+SL_STATIC_ASSERT(offsetof(FB_SCALE_UINT, nDiagTextId) == 76, "offset of FB_SCALE_UINT.nDiagTextId");
+SL_STATIC_ASSERT(offsetof(FB_SCALE_UINT, aReserved7) == 78, "offset of FB_SCALE_UINT.aReserved7");
+SL_STATIC_ASSERT(offsetof(FB_SCALE_UINT, dwDiagPar2) == 80, "offset of FB_SCALE_UINT.dwDiagPar2");
+SL_STATIC_ASSERT(offsetof(FB_SCALE_UINT, dwDiagPar3) == 84, "offset of FB_SCALE_UINT.dwDiagPar3");
+SL_STATIC_ASSERT(offsetof(FB_SCALE_UINT, stPrivate) == 88, "offset of FB_SCALE_UINT.stPrivate");
+SL_STATIC_ASSERT(sizeof(FB_SCALE_UINT) == 160, "size of FB_SCALE_UINT");
+SL_STATIC_ASSERT(offsetof(FB_SCALE_DINT, aReserved0) == 0, "offset of FB_SCALE_DINT.aReserved0");
+SL_STATIC_ASSERT(offsetof(FB_SCALE_DINT, bRun) == 16, "offset of FB_SCALE_DINT.bRun");
+SL_STATIC_ASSERT(offsetof(FB_SCALE_DINT, bErrAck) == 17, "offset of FB_SCALE_DINT.bErrAck");
+SL_STATIC_ASSERT(offsetof(FB_SCALE_DINT, aReserved1) == 18, "offset of FB_SCALE_DINT.aReserved1");
+SL_STATIC_ASSERT(offsetof(FB_SCALE_DINT, nAnalogIn) == 24, "offset of FB_SCALE_DINT.nAnalogIn");
+SL_STATIC_ASSERT(offsetof(FB_SCALE_DINT, tWatchdog) == 28, "offset of FB_SCALE_DINT.tWatchdog");
+SL_STATIC_ASSERT(offsetof(FB_SCALE_DINT, nNumerator) == 32, "offset of FB_SCALE_DINT.nNumerator");
+SL_STATIC_ASSERT(offsetof(FB_SCALE_DINT, nDenominator) == 36, "offset of FB_SCALE_DINT.nDenominator");
+SL_STATIC_ASSERT(offsetof(FB_SCALE_DINT, nOffset) == 40, "offset of FB_SCALE_DINT.nOffset");
+SL_STATIC_ASSERT(offsetof(FB_SCALE_DINT, dwOptions) == 44, "offset of FB_SCALE_DINT.dwOptions");
+SL_STATIC_ASSERT(offsetof(FB_SCALE_DINT, nRounding) == 48, "offset of FB_SCALE_DINT.nRounding");
+SL_STATIC_ASSERT(offsetof(FB_SCALE_DINT, wInputActive) == 50, "offset of FB_SCALE_DINT.wInputActive");
+SL_STATIC_ASSERT(offsetof(FB_SCALE_DINT, wInputNegated) == 52, "offset of FB_SCALE_DINT.wInputNegated");
+SL_STATIC_ASSERT(offsetof(FB_SCALE_DINT, aReserved3) == 54, "offset of FB_SCALE_DINT.aReserved3");
+SL_STATIC_ASSERT(offsetof(FB_SCALE_DINT, bError) == 56, "offset of FB_SCALE_DINT.bError");
+SL_STATIC_ASSERT(offsetof(FB_SCALE_DINT, bStuckAtError) == 57, "offset of FB_SCALE_DINT.bStuckAtError");
+SL_STATIC_ASSERT(offsetof(FB_SCALE_DINT, aReserved4) == 58, "offset of FB_SCALE_DINT.aReserved4");
+SL_STATIC_ASSERT(offsetof(FB_SCALE_DINT, nAnalogOut) == 64, "offset of FB_SCALE_DINT.nAnalogOut");
+SL_STATIC_ASSERT(offsetof(FB_SCALE_DINT, aReserved5) == 68, "offset of FB_SCALE_DINT.aReserved5");
+SL_STATIC_ASSERT(offsetof(FB_SCALE_DINT, nState) == 72, "offset of FB_SCALE_DINT.nState");
+SL_STATIC_ASSERT(offsetof(FB_SCALE_DINT, aReserved6) == 73, "offset of FB_SCALE_DINT.aReserved6");
+SL_STATIC_ASSERT(offsetof(FB_SCALE_DINT, nDiag) == 74, "offset of FB_SCALE_DINT.nDiag");
+SL_STATIC_ASSERT(offsetof(FB_SCALE_DINT, nDiagTextId) == 76, "offset of FB_SCALE_DINT.nDiagTextId");
+SL_STATIC_ASSERT(offsetof(FB_SCALE_DINT, aReserved7) == 78, "offset of FB_SCALE_DINT.aReserved7");
+SL_STATIC_ASSERT(offsetof(FB_SCALE_DINT, dwDiagPar2) == 80, "offset of FB_SCALE_DINT.dwDiagPar2");
+SL_STATIC_ASSERT(offsetof(FB_SCALE_DINT, dwDiagPar3) == 84, "offset of FB_SCALE_DINT.dwDiagPar3");
+SL_STATIC_ASSERT(offsetof(FB_SCALE_DINT, stPrivate) == 88, "offset of FB_SCALE_DINT.stPrivate");
+SL_STATIC_ASSERT(sizeof(FB_SCALE_DINT) == 160, "size of FB_SCALE_DINT");
+SL_STATIC_ASSERT(offsetof(FB_SCALE_UDINT, aReserved0) == 0, "offset of FB_SCALE_UDINT.aReserved0");
+SL_STATIC_ASSERT(offsetof(FB_SCALE_UDINT, bRun) == 16, "offset of FB_SCALE_UDINT.bRun");
+SL_STATIC_ASSERT(offsetof(FB_SCALE_UDINT, bErrAck) == 17, "offset of FB_SCALE_UDINT.bErrAck");
+SL_STATIC_ASSERT(offsetof(FB_SCALE_UDINT, aReserved1) == 18, "offset of FB_SCALE_UDINT.aReserved1");
+SL_STATIC_ASSERT(offsetof(FB_SCALE_UDINT, nAnalogIn) == 24, "offset of FB_SCALE_UDINT.nAnalogIn");
+SL_STATIC_ASSERT(offsetof(FB_SCALE_UDINT, tWatchdog) == 28, "offset of FB_SCALE_UDINT.tWatchdog");
+SL_STATIC_ASSERT(offsetof(FB_SCALE_UDINT, nNumerator) == 32, "offset of FB_SCALE_UDINT.nNumerator");
+SL_STATIC_ASSERT(offsetof(FB_SCALE_UDINT, nDenominator) == 36, "offset of FB_SCALE_UDINT.nDenominator");
+SL_STATIC_ASSERT(offsetof(FB_SCALE_UDINT, nOffset) == 40, "offset of FB_SCALE_UDINT.nOffset");
+SL_STATIC_ASSERT(offsetof(FB_SCALE_UDINT, dwOptions) == 44, "offset of FB_SCALE_UDINT.dwOptions");
+SL_STATIC_ASSERT(offsetof(FB_SCALE_UDINT, nRounding) == 48, "offset of FB_SCALE_UDINT.nRounding");
+SL_STATIC_ASSERT(offsetof(FB_SCALE_UDINT, wInputActive) == 50, "offset of FB_SCALE_UDINT.wInputActive");
+SL_STATIC_ASSERT(offsetof(FB_SCALE_UDINT, wInputNegated) == 52, "offset of FB_SCALE_UDINT.wInputNegated");
+SL_STATIC_ASSERT(offsetof(FB_SCALE_UDINT, aReserved3) == 54, "offset of FB_SCALE_UDINT.aReserved3");
+SL_STATIC_ASSERT(offsetof(FB_SCALE_UDINT, bError) == 56, "offset of FB_SCALE_UDINT.bError");
+SL_STATIC_ASSERT(offsetof(FB_SCALE_UDINT, bStuckAtError) == 57, "offset of FB_SCALE_UDINT.bStuckAtError");
+SL_STATIC_ASSERT(offsetof(FB_SCALE_UDINT, aReserved4) == 58, "offset of FB_SCALE_UDINT.aReserved4");
+SL_STATIC_ASSERT(offsetof(FB_SCALE_UDINT, nAnalogOut) == 64, "offset of FB_SCALE_UDINT.nAnalogOut");
+SL_STATIC_ASSERT(offsetof(FB_SCALE_UDINT, aReserved5) == 68, "offset of FB_SCALE_UDINT.aReserved5");
+SL_STATIC_ASSERT(offsetof(FB_SCALE_UDINT, nState) == 72, "offset of FB_SCALE_UDINT.nState");
+SL_STATIC_ASSERT(offsetof(FB_SCALE_UDINT, aReserved6) == 73, "offset of FB_SCALE_UDINT.aReserved6");
+SL_STATIC_ASSERT(offsetof(FB_SCALE_UDINT, nDiag) == 74, "offset of FB_SCALE_UDINT.nDiag");
+SL_STATIC_ASSERT(offsetof(FB_SCALE_UDINT, nDiagTextId) == 76, "offset of FB_SCALE_UDINT.nDiagTextId");
+SL_STATIC_ASSERT(offsetof(FB_SCALE_UDINT, aReserved7) == 78, "offset of FB_SCALE_UDINT.aReserved7");
+SL_STATIC_ASSERT(offsetof(FB_SCALE_UDINT, dwDiagPar2) == 80, "offset of FB_SCALE_UDINT.dwDiagPar2");
+SL_STATIC_ASSERT(offsetof(FB_SCALE_UDINT, dwDiagPar3) == 84, "offset of FB_SCALE_UDINT.dwDiagPar3");
+SL_STATIC_ASSERT(offsetof(FB_SCALE_UDINT, stPrivate) == 88, "offset of FB_SCALE_UDINT.stPrivate");
+SL_STATIC_ASSERT(sizeof(FB_SCALE_UDINT) == 160, "size of FB_SCALE_UDINT");
+SL_STATIC_ASSERT(offsetof(SL_SPEED_PRIVATE, stHeader) == 0, "offset of SL_SPEED_PRIVATE.stHeader");
+SL_STATIC_ASSERT(offsetof(SL_SPEED_PRIVATE, tInterval) == 28, "offset of SL_SPEED_PRIVATE.tInterval");
+SL_STATIC_ASSERT(offsetof(SL_SPEED_PRIVATE, dwOptions) == 32, "offset of SL_SPEED_PRIVATE.dwOptions");
+SL_STATIC_ASSERT(offsetof(SL_SPEED_PRIVATE, wActive) == 36, "offset of SL_SPEED_PRIVATE.wActive");
+SL_STATIC_ASSERT(offsetof(SL_SPEED_PRIVATE, aReserved) == 38, "offset of SL_SPEED_PRIVATE.aReserved");
+SL_STATIC_ASSERT(offsetof(SL_SPEED_PRIVATE, dwLatch) == 40, "offset of SL_SPEED_PRIVATE.dwLatch");
+SL_STATIC_ASSERT(offsetof(SL_SPEED_PRIVATE, dwSpeed) == 44, "offset of SL_SPEED_PRIVATE.dwSpeed");
+SL_STATIC_ASSERT(offsetof(SL_SPEED_PRIVATE, adwPar) == 48, "offset of SL_SPEED_PRIVATE.adwPar");
+SL_STATIC_ASSERT(sizeof(SL_SPEED_PRIVATE) == 56, "size of SL_SPEED_PRIVATE");
+SL_STATIC_ASSERT(offsetof(FB_SPEED_INT, aReserved0) == 0, "offset of FB_SPEED_INT.aReserved0");
+SL_STATIC_ASSERT(offsetof(FB_SPEED_INT, bRun) == 16, "offset of FB_SPEED_INT.bRun");
+SL_STATIC_ASSERT(offsetof(FB_SPEED_INT, bErrAck) == 17, "offset of FB_SPEED_INT.bErrAck");
+SL_STATIC_ASSERT(offsetof(FB_SPEED_INT, aReserved1) == 18, "offset of FB_SPEED_INT.aReserved1");
+SL_STATIC_ASSERT(offsetof(FB_SPEED_INT, nPosition) == 24, "offset of FB_SPEED_INT.nPosition");
+SL_STATIC_ASSERT(offsetof(FB_SPEED_INT, aReserved2) == 26, "offset of FB_SPEED_INT.aReserved2");
+SL_STATIC_ASSERT(offsetof(FB_SPEED_INT, tTimeInterval) == 28, "offset of FB_SPEED_INT.tTimeInterval");
+SL_STATIC_ASSERT(offsetof(FB_SPEED_INT, dwOptions) == 32, "offset of FB_SPEED_INT.dwOptions");
+SL_STATIC_ASSERT(offsetof(FB_SPEED_INT, wInputActive) == 36, "offset of FB_SPEED_INT.wInputActive");
+SL_STATIC_ASSERT(offsetof(FB_SPEED_INT, aReserved3) == 38, "offset of FB_SPEED_INT.aReserved3");
+SL_STATIC_ASSERT(offsetof(FB_SPEED_INT, bError) == 40, "offset of FB_SPEED_INT.bError");
+SL_STATIC_ASSERT(offsetof(FB_SPEED_INT, aReserved4) == 41, "offset of FB_SPEED_INT.aReserved4");
+SL_STATIC_ASSERT(offsetof(FB_SPEED_INT, nSpeed) == 48, "offset of FB_SPEED_INT.nSpeed");
+SL_STATIC_ASSERT(offsetof(FB_SPEED_INT, aReserved5) == 50, "offset of FB_SPEED_INT.aReserved5");
+SL_STATIC_ASSERT(offsetof(FB_SPEED_INT, nState) == 56, "offset of FB_SPEED_INT.nState");
+SL_STATIC_ASSERT(offsetof(FB_SPEED_INT, aReserved6) == 57, "offset of FB_SPEED_INT.aReserved6");
+SL_STATIC_ASSERT(offsetof(FB_SPEED_INT, nDiag) == 58, "offset of FB_SPEED_INT.nDiag");
+SL_STATIC_ASSERT(offsetof(FB_SPEED_INT, nDiagTextId) == 60, "offset of FB_SPEED_INT.nDiagTextId");
+SL_STATIC_ASSERT(offsetof(FB_SPEED_INT, aReserved7) == 62, "offset of FB_SPEED_INT.aReserved7");
+SL_STATIC_ASSERT(offsetof(FB_SPEED_INT, dwDiagPar2) == 64, "offset of FB_SPEED_INT.dwDiagPar2");
+SL_STATIC_ASSERT(offsetof(FB_SPEED_INT, dwDiagPar3) == 68, "offset of FB_SPEED_INT.dwDiagPar3");
+SL_STATIC_ASSERT(offsetof(FB_SPEED_INT, stPrivate) == 72, "offset of FB_SPEED_INT.stPrivate");
+SL_STATIC_ASSERT(sizeof(FB_SPEED_INT) == 128, "size of FB_SPEED_INT");
+SL_STATIC_ASSERT(offsetof(FB_SPEED_UINT, aReserved0) == 0, "offset of FB_SPEED_UINT.aReserved0");
+SL_STATIC_ASSERT(offsetof(FB_SPEED_UINT, bRun) == 16, "offset of FB_SPEED_UINT.bRun");
+SL_STATIC_ASSERT(offsetof(FB_SPEED_UINT, bErrAck) == 17, "offset of FB_SPEED_UINT.bErrAck");
+SL_STATIC_ASSERT(offsetof(FB_SPEED_UINT, aReserved1) == 18, "offset of FB_SPEED_UINT.aReserved1");
+SL_STATIC_ASSERT(offsetof(FB_SPEED_UINT, nPosition) == 24, "offset of FB_SPEED_UINT.nPosition");
+SL_STATIC_ASSERT(offsetof(FB_SPEED_UINT, aReserved2) == 26, "offset of FB_SPEED_UINT.aReserved2");
+SL_STATIC_ASSERT(offsetof(FB_SPEED_UINT, tTimeInterval) == 28, "offset of FB_SPEED_UINT.tTimeInterval");
+SL_STATIC_ASSERT(offsetof(FB_SPEED_UINT, dwOptions) == 32, "offset of FB_SPEED_UINT.dwOptions");
+SL_STATIC_ASSERT(offsetof(FB_SPEED_UINT, wInputActive) == 36, "offset of FB_SPEED_UINT.wInputActive");
+SL_STATIC_ASSERT(offsetof(FB_SPEED_UINT, aReserved3) == 38, "offset of FB_SPEED_UINT.aReserved3");
+SL_STATIC_ASSERT(offsetof(FB_SPEED_UINT, bError) == 40, "offset of FB_SPEED_UINT.bError");
+SL_STATIC_ASSERT(offsetof(FB_SPEED_UINT, aReserved4) == 41, "offset of FB_SPEED_UINT.aReserved4");
+SL_STATIC_ASSERT(offsetof(FB_SPEED_UINT, nSpeed) == 48, "offset of FB_SPEED_UINT.nSpeed");
+SL_STATIC_ASSERT(offsetof(FB_SPEED_UINT, aReserved5) == 50, "offset of FB_SPEED_UINT.aReserved5");
+SL_STATIC_ASSERT(offsetof(FB_SPEED_UINT, nState) == 56, "offset of FB_SPEED_UINT.nState");
+SL_STATIC_ASSERT(offsetof(FB_SPEED_UINT, aReserved6) == 57, "offset of FB_SPEED_UINT.aReserved6");
+SL_STATIC_ASSERT(offsetof(FB_SPEED_UINT, nDiag) == 58, "offset of FB_SPEED_UINT.nDiag");
+SL_STATIC_ASSERT(offsetof(FB_SPEED_UINT, nDiagTextId) == 60, "offset of FB_SPEED_UINT.nDiagTextId");
+SL_STATIC_ASSERT(offsetof(FB_SPEED_UINT, aReserved7) == 62, "offset of FB_SPEED_UINT.aReserved7");
+SL_STATIC_ASSERT(offsetof(FB_SPEED_UINT, dwDiagPar2) == 64, "offset of FB_SPEED_UINT.dwDiagPar2");
+SL_STATIC_ASSERT(offsetof(FB_SPEED_UINT, dwDiagPar3) == 68, "offset of FB_SPEED_UINT.dwDiagPar3");
+SL_STATIC_ASSERT(offsetof(FB_SPEED_UINT, stPrivate) == 72, "offset of FB_SPEED_UINT.stPrivate");
+SL_STATIC_ASSERT(sizeof(FB_SPEED_UINT) == 128, "size of FB_SPEED_UINT");
+SL_STATIC_ASSERT(offsetof(FB_SPEED_DINT, aReserved0) == 0, "offset of FB_SPEED_DINT.aReserved0");
+SL_STATIC_ASSERT(offsetof(FB_SPEED_DINT, bRun) == 16, "offset of FB_SPEED_DINT.bRun");
+SL_STATIC_ASSERT(offsetof(FB_SPEED_DINT, bErrAck) == 17, "offset of FB_SPEED_DINT.bErrAck");
+SL_STATIC_ASSERT(offsetof(FB_SPEED_DINT, aReserved1) == 18, "offset of FB_SPEED_DINT.aReserved1");
+SL_STATIC_ASSERT(offsetof(FB_SPEED_DINT, nPosition) == 24, "offset of FB_SPEED_DINT.nPosition");
+SL_STATIC_ASSERT(offsetof(FB_SPEED_DINT, tTimeInterval) == 28, "offset of FB_SPEED_DINT.tTimeInterval");
+SL_STATIC_ASSERT(offsetof(FB_SPEED_DINT, dwOptions) == 32, "offset of FB_SPEED_DINT.dwOptions");
+SL_STATIC_ASSERT(offsetof(FB_SPEED_DINT, wInputActive) == 36, "offset of FB_SPEED_DINT.wInputActive");
+SL_STATIC_ASSERT(offsetof(FB_SPEED_DINT, aReserved3) == 38, "offset of FB_SPEED_DINT.aReserved3");
+SL_STATIC_ASSERT(offsetof(FB_SPEED_DINT, bError) == 40, "offset of FB_SPEED_DINT.bError");
+SL_STATIC_ASSERT(offsetof(FB_SPEED_DINT, aReserved4) == 41, "offset of FB_SPEED_DINT.aReserved4");
+SL_STATIC_ASSERT(offsetof(FB_SPEED_DINT, nSpeed) == 48, "offset of FB_SPEED_DINT.nSpeed");
+SL_STATIC_ASSERT(offsetof(FB_SPEED_DINT, aReserved5) == 52, "offset of FB_SPEED_DINT.aReserved5");
+SL_STATIC_ASSERT(offsetof(FB_SPEED_DINT, nState) == 56, "offset of FB_SPEED_DINT.nState");
+SL_STATIC_ASSERT(offsetof(FB_SPEED_DINT, aReserved6) == 57, "offset of FB_SPEED_DINT.aReserved6");
+SL_STATIC_ASSERT(offsetof(FB_SPEED_DINT, nDiag) == 58, "offset of FB_SPEED_DINT.nDiag");
+SL_STATIC_ASSERT(offsetof(FB_SPEED_DINT, nDiagTextId) == 60, "offset of FB_SPEED_DINT.nDiagTextId");
+SL_STATIC_ASSERT(offsetof(FB_SPEED_DINT, aReserved7) == 62, "offset of FB_SPEED_DINT.aReserved7");
+SL_STATIC_ASSERT(offsetof(FB_SPEED_DINT, dwDiagPar2) == 64, "offset of FB_SPEED_DINT.dwDiagPar2");
+SL_STATIC_ASSERT(offsetof(FB_SPEED_DINT, dwDiagPar3) == 68, "offset of FB_SPEED_DINT.dwDiagPar3");
+SL_STATIC_ASSERT(offsetof(FB_SPEED_DINT, stPrivate) == 72, "offset of FB_SPEED_DINT.stPrivate");
+SL_STATIC_ASSERT(sizeof(FB_SPEED_DINT) == 128, "size of FB_SPEED_DINT");
+SL_STATIC_ASSERT(offsetof(FB_SPEED_UDINT, aReserved0) == 0, "offset of FB_SPEED_UDINT.aReserved0");
+SL_STATIC_ASSERT(offsetof(FB_SPEED_UDINT, bRun) == 16, "offset of FB_SPEED_UDINT.bRun");
+SL_STATIC_ASSERT(offsetof(FB_SPEED_UDINT, bErrAck) == 17, "offset of FB_SPEED_UDINT.bErrAck");
+SL_STATIC_ASSERT(offsetof(FB_SPEED_UDINT, aReserved1) == 18, "offset of FB_SPEED_UDINT.aReserved1");
+SL_STATIC_ASSERT(offsetof(FB_SPEED_UDINT, nPosition) == 24, "offset of FB_SPEED_UDINT.nPosition");
+SL_STATIC_ASSERT(offsetof(FB_SPEED_UDINT, tTimeInterval) == 28, "offset of FB_SPEED_UDINT.tTimeInterval");
+SL_STATIC_ASSERT(offsetof(FB_SPEED_UDINT, dwOptions) == 32, "offset of FB_SPEED_UDINT.dwOptions");
+SL_STATIC_ASSERT(offsetof(FB_SPEED_UDINT, wInputActive) == 36, "offset of FB_SPEED_UDINT.wInputActive");
+SL_STATIC_ASSERT(offsetof(FB_SPEED_UDINT, aReserved3) == 38, "offset of FB_SPEED_UDINT.aReserved3");
+SL_STATIC_ASSERT(offsetof(FB_SPEED_UDINT, bError) == 40, "offset of FB_SPEED_UDINT.bError");
+SL_STATIC_ASSERT(offsetof(FB_SPEED_UDINT, aReserved4) == 41, "offset of FB_SPEED_UDINT.aReserved4");
+SL_STATIC_ASSERT(offsetof(FB_SPEED_UDINT, nSpeed) == 48, "offset of FB_SPEED_UDINT.nSpeed");
+SL_STATIC_ASSERT(offsetof(FB_SPEED_UDINT, aReserved5) == 52, "offset of FB_SPEED_UDINT.aReserved5");
+SL_STATIC_ASSERT(offsetof(FB_SPEED_UDINT, nState) == 56, "offset of FB_SPEED_UDINT.nState");
+SL_STATIC_ASSERT(offsetof(FB_SPEED_UDINT, aReserved6) == 57, "offset of FB_SPEED_UDINT.aReserved6");
+SL_STATIC_ASSERT(offsetof(FB_SPEED_UDINT, nDiag) == 58, "offset of FB_SPEED_UDINT.nDiag");
+SL_STATIC_ASSERT(offsetof(FB_SPEED_UDINT, nDiagTextId) == 60, "offset of FB_SPEED_UDINT.nDiagTextId");
+SL_STATIC_ASSERT(offsetof(FB_SPEED_UDINT, aReserved7) == 62, "offset of FB_SPEED_UDINT.aReserved7");
+SL_STATIC_ASSERT(offsetof(FB_SPEED_UDINT, dwDiagPar2) == 64, "offset of FB_SPEED_UDINT.dwDiagPar2");
+SL_STATIC_ASSERT(offsetof(FB_SPEED_UDINT, dwDiagPar3) == 68, "offset of FB_SPEED_UDINT.dwDiagPar3");
+SL_STATIC_ASSERT(offsetof(FB_SPEED_UDINT, stPrivate) == 72, "offset of FB_SPEED_UDINT.stPrivate");
+SL_STATIC_ASSERT(sizeof(FB_SPEED_UDINT) == 128, "size of FB_SPEED_UDINT");
 SL_STATIC_ASSERT(offsetof(SL_COUNTER_PRIVATE, stHeader) == 0, "offset of SL_COUNTER_PRIVATE.stHeader");
 SL_STATIC_ASSERT(offsetof(SL_COUNTER_PRIVATE, aReserved0) == 28, "offset of SL_COUNTER_PRIVATE.aReserved0");
 SL_STATIC_ASSERT(offsetof(SL_COUNTER_PRIVATE, adwParam) == 32, "offset of SL_COUNTER_PRIVATE.adwParam");

@@ -299,6 +299,14 @@ macro_rules! for_each_block {
             $crate::blocks::limit::FB_LIMIT_UINT => sl_limit_uint_init, sl_limit_uint_cycle;
             $crate::blocks::limit::FB_LIMIT_DINT => sl_limit_dint_init, sl_limit_dint_cycle;
             $crate::blocks::limit::FB_LIMIT_UDINT => sl_limit_udint_init, sl_limit_udint_cycle;
+            $crate::blocks::scale::FB_SCALE_INT => sl_scale_int_init, sl_scale_int_cycle;
+            $crate::blocks::scale::FB_SCALE_UINT => sl_scale_uint_init, sl_scale_uint_cycle;
+            $crate::blocks::scale::FB_SCALE_DINT => sl_scale_dint_init, sl_scale_dint_cycle;
+            $crate::blocks::scale::FB_SCALE_UDINT => sl_scale_udint_init, sl_scale_udint_cycle;
+            $crate::blocks::speed::FB_SPEED_INT => sl_speed_int_init, sl_speed_int_cycle;
+            $crate::blocks::speed::FB_SPEED_UINT => sl_speed_uint_init, sl_speed_uint_cycle;
+            $crate::blocks::speed::FB_SPEED_DINT => sl_speed_dint_init, sl_speed_dint_cycle;
+            $crate::blocks::speed::FB_SPEED_UDINT => sl_speed_udint_init, sl_speed_udint_cycle;
             $crate::blocks::counter::FB_COUNTER_INT => sl_counter_int_init, sl_counter_int_cycle;
             $crate::blocks::counter::FB_COUNTER_UINT => sl_counter_uint_init, sl_counter_uint_cycle;
             $crate::blocks::counter::FB_COUNTER_DINT => sl_counter_dint_init, sl_counter_dint_cycle;

@@ -312,12 +312,17 @@ macro_rules! depth {
                         *b = (v >> (8 * k)) as u8;
                     }
                 };
-                // A pool of valid configurations.
+                // A pool of valid configurations. A type with several bit-set parameters
+                // that each admit only a few values (SCALE: wInputActive, wInputNegated,
+                // dwOptions) rarely meets them all at once: when the first 400,000 draws
+                // did not fill the pool, 400,000 more draw every bit set as 0, one bit or a
+                // run of bits.
                 let mut pool: Vec<$ty> = Vec::new();
-                for _ in 0..400_000 {
+                for attempt in 0..800_000 {
                     if pool.len() == 64 {
                         break;
                     }
+                    let bit_sets = attempt >= 400_000;
                     // SAFETY: integer fields only.
                     let mut fb: $ty = unsafe { std::mem::zeroed() };
                     for f in t.fields.iter().filter(|f| f.dir == Dir::Param) {
@@ -326,7 +331,9 @@ macro_rules! depth {
                         // the analog half.
                         let k = (r >> 16) % 8 + 1;
                         let run_of_bits = ((1u64 << k) - 1) << (8 * ((r >> 20) & 1));
+                        let bit_set = f.name.starts_with('w') || f.name.starts_with("dw");
                         let v = match r % 4 {
+                            _ if bit_set && bit_sets => [0, 1 << ((r >> 24) % 16), run_of_bits][(r % 3) as usize],
                             _ if f.name.starts_with('w') && r % 3 == 0 => run_of_bits,
                             0 => [0u64, 1, 2, 3, 5, 10, 100][(r >> 8) as usize % 7],
                             1 => (r >> 8) & 0xFF,

@@ -610,6 +610,126 @@ static void test_param_structs(void)
       CHECK(offsetof(cds_sl_limit_udint_cycle_struct, cds_sl_limit_udint_cycle) == off, "cds_sl_limit_udint_cycle_struct return value at %zu, expected %zu", offsetof(cds_sl_limit_udint_cycle_struct, cds_sl_limit_udint_cycle), off); }
     { size_t off = 0;
       off = (off + sizeof(void *) - 1) / sizeof(void *) * sizeof(void *);
+      CHECK(offsetof(cds_sl_scale_int_init_struct, pFb) == off, "cds_sl_scale_int_init_struct.pFb at %zu, expected %zu", offsetof(cds_sl_scale_int_init_struct, pFb), off);
+      off += sizeof(void *);
+      off = (off + sizeof(int32_t) - 1) / sizeof(int32_t) * sizeof(int32_t);
+      CHECK(offsetof(cds_sl_scale_int_init_struct, cds_sl_scale_int_init) == off, "cds_sl_scale_int_init_struct return value at %zu, expected %zu", offsetof(cds_sl_scale_int_init_struct, cds_sl_scale_int_init), off); }
+    { size_t off = 0;
+      off = (off + sizeof(void *) - 1) / sizeof(void *) * sizeof(void *);
+      CHECK(offsetof(cds_sl_scale_int_cycle_struct, pFb) == off, "cds_sl_scale_int_cycle_struct.pFb at %zu, expected %zu", offsetof(cds_sl_scale_int_cycle_struct, pFb), off);
+      off += sizeof(void *);
+      off = (off + sizeof(uint32_t) - 1) / sizeof(uint32_t) * sizeof(uint32_t);
+      CHECK(offsetof(cds_sl_scale_int_cycle_struct, tNow) == off, "cds_sl_scale_int_cycle_struct.tNow at %zu, expected %zu", offsetof(cds_sl_scale_int_cycle_struct, tNow), off);
+      off += sizeof(uint32_t);
+      off = (off + sizeof(int32_t) - 1) / sizeof(int32_t) * sizeof(int32_t);
+      CHECK(offsetof(cds_sl_scale_int_cycle_struct, cds_sl_scale_int_cycle) == off, "cds_sl_scale_int_cycle_struct return value at %zu, expected %zu", offsetof(cds_sl_scale_int_cycle_struct, cds_sl_scale_int_cycle), off); }
+    { size_t off = 0;
+      off = (off + sizeof(void *) - 1) / sizeof(void *) * sizeof(void *);
+      CHECK(offsetof(cds_sl_scale_uint_init_struct, pFb) == off, "cds_sl_scale_uint_init_struct.pFb at %zu, expected %zu", offsetof(cds_sl_scale_uint_init_struct, pFb), off);
+      off += sizeof(void *);
+      off = (off + sizeof(int32_t) - 1) / sizeof(int32_t) * sizeof(int32_t);
+      CHECK(offsetof(cds_sl_scale_uint_init_struct, cds_sl_scale_uint_init) == off, "cds_sl_scale_uint_init_struct return value at %zu, expected %zu", offsetof(cds_sl_scale_uint_init_struct, cds_sl_scale_uint_init), off); }
+    { size_t off = 0;
+      off = (off + sizeof(void *) - 1) / sizeof(void *) * sizeof(void *);
+      CHECK(offsetof(cds_sl_scale_uint_cycle_struct, pFb) == off, "cds_sl_scale_uint_cycle_struct.pFb at %zu, expected %zu", offsetof(cds_sl_scale_uint_cycle_struct, pFb), off);
+      off += sizeof(void *);
+      off = (off + sizeof(uint32_t) - 1) / sizeof(uint32_t) * sizeof(uint32_t);
+      CHECK(offsetof(cds_sl_scale_uint_cycle_struct, tNow) == off, "cds_sl_scale_uint_cycle_struct.tNow at %zu, expected %zu", offsetof(cds_sl_scale_uint_cycle_struct, tNow), off);
+      off += sizeof(uint32_t);
+      off = (off + sizeof(int32_t) - 1) / sizeof(int32_t) * sizeof(int32_t);
+      CHECK(offsetof(cds_sl_scale_uint_cycle_struct, cds_sl_scale_uint_cycle) == off, "cds_sl_scale_uint_cycle_struct return value at %zu, expected %zu", offsetof(cds_sl_scale_uint_cycle_struct, cds_sl_scale_uint_cycle), off); }
+    { size_t off = 0;
+      off = (off + sizeof(void *) - 1) / sizeof(void *) * sizeof(void *);
+      CHECK(offsetof(cds_sl_scale_dint_init_struct, pFb) == off, "cds_sl_scale_dint_init_struct.pFb at %zu, expected %zu", offsetof(cds_sl_scale_dint_init_struct, pFb), off);
+      off += sizeof(void *);
+      off = (off + sizeof(int32_t) - 1) / sizeof(int32_t) * sizeof(int32_t);
+      CHECK(offsetof(cds_sl_scale_dint_init_struct, cds_sl_scale_dint_init) == off, "cds_sl_scale_dint_init_struct return value at %zu, expected %zu", offsetof(cds_sl_scale_dint_init_struct, cds_sl_scale_dint_init), off); }
+    { size_t off = 0;
+      off = (off + sizeof(void *) - 1) / sizeof(void *) * sizeof(void *);
+      CHECK(offsetof(cds_sl_scale_dint_cycle_struct, pFb) == off, "cds_sl_scale_dint_cycle_struct.pFb at %zu, expected %zu", offsetof(cds_sl_scale_dint_cycle_struct, pFb), off);
+      off += sizeof(void *);
+      off = (off + sizeof(uint32_t) - 1) / sizeof(uint32_t) * sizeof(uint32_t);
+      CHECK(offsetof(cds_sl_scale_dint_cycle_struct, tNow) == off, "cds_sl_scale_dint_cycle_struct.tNow at %zu, expected %zu", offsetof(cds_sl_scale_dint_cycle_struct, tNow), off);
+      off += sizeof(uint32_t);
+      off = (off + sizeof(int32_t) - 1) / sizeof(int32_t) * sizeof(int32_t);
+      CHECK(offsetof(cds_sl_scale_dint_cycle_struct, cds_sl_scale_dint_cycle) == off, "cds_sl_scale_dint_cycle_struct return value at %zu, expected %zu", offsetof(cds_sl_scale_dint_cycle_struct, cds_sl_scale_dint_cycle), off); }
+    { size_t off = 0;
+      off = (off + sizeof(void *) - 1) / sizeof(void *) * sizeof(void *);
+      CHECK(offsetof(cds_sl_scale_udint_init_struct, pFb) == off, "cds_sl_scale_udint_init_struct.pFb at %zu, expected %zu", offsetof(cds_sl_scale_udint_init_struct, pFb), off);
+      off += sizeof(void *);
+      off = (off + sizeof(int32_t) - 1) / sizeof(int32_t) * sizeof(int32_t);
+      CHECK(offsetof(cds_sl_scale_udint_init_struct, cds_sl_scale_udint_init) == off, "cds_sl_scale_udint_init_struct return value at %zu, expected %zu", offsetof(cds_sl_scale_udint_init_struct, cds_sl_scale_udint_init), off); }
+    { size_t off = 0;
+      off = (off + sizeof(void *) - 1) / sizeof(void *) * sizeof(void *);
+      CHECK(offsetof(cds_sl_scale_udint_cycle_struct, pFb) == off, "cds_sl_scale_udint_cycle_struct.pFb at %zu, expected %zu", offsetof(cds_sl_scale_udint_cycle_struct, pFb), off);
+      off += sizeof(void *);
+      off = (off + sizeof(uint32_t) - 1) / sizeof(uint32_t) * sizeof(uint32_t);
+      CHECK(offsetof(cds_sl_scale_udint_cycle_struct, tNow) == off, "cds_sl_scale_udint_cycle_struct.tNow at %zu, expected %zu", offsetof(cds_sl_scale_udint_cycle_struct, tNow), off);
+      off += sizeof(uint32_t);
+      off = (off + sizeof(int32_t) - 1) / sizeof(int32_t) * sizeof(int32_t);
+      CHECK(offsetof(cds_sl_scale_udint_cycle_struct, cds_sl_scale_udint_cycle) == off, "cds_sl_scale_udint_cycle_struct return value at %zu, expected %zu", offsetof(cds_sl_scale_udint_cycle_struct, cds_sl_scale_udint_cycle), off); }
+    { size_t off = 0;
+      off = (off + sizeof(void *) - 1) / sizeof(void *) * sizeof(void *);
+      CHECK(offsetof(cds_sl_speed_int_init_struct, pFb) == off, "cds_sl_speed_int_init_struct.pFb at %zu, expected %zu", offsetof(cds_sl_speed_int_init_struct, pFb), off);
+      off += sizeof(void *);
+      off = (off + sizeof(int32_t) - 1) / sizeof(int32_t) * sizeof(int32_t);
+      CHECK(offsetof(cds_sl_speed_int_init_struct, cds_sl_speed_int_init) == off, "cds_sl_speed_int_init_struct return value at %zu, expected %zu", offsetof(cds_sl_speed_int_init_struct, cds_sl_speed_int_init), off); }
+    { size_t off = 0;
+      off = (off + sizeof(void *) - 1) / sizeof(void *) * sizeof(void *);
+      CHECK(offsetof(cds_sl_speed_int_cycle_struct, pFb) == off, "cds_sl_speed_int_cycle_struct.pFb at %zu, expected %zu", offsetof(cds_sl_speed_int_cycle_struct, pFb), off);
+      off += sizeof(void *);
+      off = (off + sizeof(uint32_t) - 1) / sizeof(uint32_t) * sizeof(uint32_t);
+      CHECK(offsetof(cds_sl_speed_int_cycle_struct, tNow) == off, "cds_sl_speed_int_cycle_struct.tNow at %zu, expected %zu", offsetof(cds_sl_speed_int_cycle_struct, tNow), off);
+      off += sizeof(uint32_t);
+      off = (off + sizeof(int32_t) - 1) / sizeof(int32_t) * sizeof(int32_t);
+      CHECK(offsetof(cds_sl_speed_int_cycle_struct, cds_sl_speed_int_cycle) == off, "cds_sl_speed_int_cycle_struct return value at %zu, expected %zu", offsetof(cds_sl_speed_int_cycle_struct, cds_sl_speed_int_cycle), off); }
+    { size_t off = 0;
+      off = (off + sizeof(void *) - 1) / sizeof(void *) * sizeof(void *);
+      CHECK(offsetof(cds_sl_speed_uint_init_struct, pFb) == off, "cds_sl_speed_uint_init_struct.pFb at %zu, expected %zu", offsetof(cds_sl_speed_uint_init_struct, pFb), off);
+      off += sizeof(void *);
+      off = (off + sizeof(int32_t) - 1) / sizeof(int32_t) * sizeof(int32_t);
+      CHECK(offsetof(cds_sl_speed_uint_init_struct, cds_sl_speed_uint_init) == off, "cds_sl_speed_uint_init_struct return value at %zu, expected %zu", offsetof(cds_sl_speed_uint_init_struct, cds_sl_speed_uint_init), off); }
+    { size_t off = 0;
+      off = (off + sizeof(void *) - 1) / sizeof(void *) * sizeof(void *);
+      CHECK(offsetof(cds_sl_speed_uint_cycle_struct, pFb) == off, "cds_sl_speed_uint_cycle_struct.pFb at %zu, expected %zu", offsetof(cds_sl_speed_uint_cycle_struct, pFb), off);
+      off += sizeof(void *);
+      off = (off + sizeof(uint32_t) - 1) / sizeof(uint32_t) * sizeof(uint32_t);
+      CHECK(offsetof(cds_sl_speed_uint_cycle_struct, tNow) == off, "cds_sl_speed_uint_cycle_struct.tNow at %zu, expected %zu", offsetof(cds_sl_speed_uint_cycle_struct, tNow), off);
+      off += sizeof(uint32_t);
+      off = (off + sizeof(int32_t) - 1) / sizeof(int32_t) * sizeof(int32_t);
+      CHECK(offsetof(cds_sl_speed_uint_cycle_struct, cds_sl_speed_uint_cycle) == off, "cds_sl_speed_uint_cycle_struct return value at %zu, expected %zu", offsetof(cds_sl_speed_uint_cycle_struct, cds_sl_speed_uint_cycle), off); }
+    { size_t off = 0;
+      off = (off + sizeof(void *) - 1) / sizeof(void *) * sizeof(void *);
+      CHECK(offsetof(cds_sl_speed_dint_init_struct, pFb) == off, "cds_sl_speed_dint_init_struct.pFb at %zu, expected %zu", offsetof(cds_sl_speed_dint_init_struct, pFb), off);
+      off += sizeof(void *);
+      off = (off + sizeof(int32_t) - 1) / sizeof(int32_t) * sizeof(int32_t);
+      CHECK(offsetof(cds_sl_speed_dint_init_struct, cds_sl_speed_dint_init) == off, "cds_sl_speed_dint_init_struct return value at %zu, expected %zu", offsetof(cds_sl_speed_dint_init_struct, cds_sl_speed_dint_init), off); }
+    { size_t off = 0;
+      off = (off + sizeof(void *) - 1) / sizeof(void *) * sizeof(void *);
+      CHECK(offsetof(cds_sl_speed_dint_cycle_struct, pFb) == off, "cds_sl_speed_dint_cycle_struct.pFb at %zu, expected %zu", offsetof(cds_sl_speed_dint_cycle_struct, pFb), off);
+      off += sizeof(void *);
+      off = (off + sizeof(uint32_t) - 1) / sizeof(uint32_t) * sizeof(uint32_t);
+      CHECK(offsetof(cds_sl_speed_dint_cycle_struct, tNow) == off, "cds_sl_speed_dint_cycle_struct.tNow at %zu, expected %zu", offsetof(cds_sl_speed_dint_cycle_struct, tNow), off);
+      off += sizeof(uint32_t);
+      off = (off + sizeof(int32_t) - 1) / sizeof(int32_t) * sizeof(int32_t);
+      CHECK(offsetof(cds_sl_speed_dint_cycle_struct, cds_sl_speed_dint_cycle) == off, "cds_sl_speed_dint_cycle_struct return value at %zu, expected %zu", offsetof(cds_sl_speed_dint_cycle_struct, cds_sl_speed_dint_cycle), off); }
+    { size_t off = 0;
+      off = (off + sizeof(void *) - 1) / sizeof(void *) * sizeof(void *);
+      CHECK(offsetof(cds_sl_speed_udint_init_struct, pFb) == off, "cds_sl_speed_udint_init_struct.pFb at %zu, expected %zu", offsetof(cds_sl_speed_udint_init_struct, pFb), off);
+      off += sizeof(void *);
+      off = (off + sizeof(int32_t) - 1) / sizeof(int32_t) * sizeof(int32_t);
+      CHECK(offsetof(cds_sl_speed_udint_init_struct, cds_sl_speed_udint_init) == off, "cds_sl_speed_udint_init_struct return value at %zu, expected %zu", offsetof(cds_sl_speed_udint_init_struct, cds_sl_speed_udint_init), off); }
+    { size_t off = 0;
+      off = (off + sizeof(void *) - 1) / sizeof(void *) * sizeof(void *);
+      CHECK(offsetof(cds_sl_speed_udint_cycle_struct, pFb) == off, "cds_sl_speed_udint_cycle_struct.pFb at %zu, expected %zu", offsetof(cds_sl_speed_udint_cycle_struct, pFb), off);
+      off += sizeof(void *);
+      off = (off + sizeof(uint32_t) - 1) / sizeof(uint32_t) * sizeof(uint32_t);
+      CHECK(offsetof(cds_sl_speed_udint_cycle_struct, tNow) == off, "cds_sl_speed_udint_cycle_struct.tNow at %zu, expected %zu", offsetof(cds_sl_speed_udint_cycle_struct, tNow), off);
+      off += sizeof(uint32_t);
+      off = (off + sizeof(int32_t) - 1) / sizeof(int32_t) * sizeof(int32_t);
+      CHECK(offsetof(cds_sl_speed_udint_cycle_struct, cds_sl_speed_udint_cycle) == off, "cds_sl_speed_udint_cycle_struct return value at %zu, expected %zu", offsetof(cds_sl_speed_udint_cycle_struct, cds_sl_speed_udint_cycle), off); }
+    { size_t off = 0;
+      off = (off + sizeof(void *) - 1) / sizeof(void *) * sizeof(void *);
       CHECK(offsetof(cds_sl_counter_int_init_struct, pFb) == off, "cds_sl_counter_int_init_struct.pFb at %zu, expected %zu", offsetof(cds_sl_counter_int_init_struct, pFb), off);
       off += sizeof(void *);
       off = (off + sizeof(int32_t) - 1) / sizeof(int32_t) * sizeof(int32_t);
@@ -797,6 +917,8 @@ static uint32_t rnd_options(void)
     if (rnd() % 4u == 0u) o |= (uint32_t)SL_OPT_MUTING_SEQUENTIAL;
     if (rnd() % 4u == 0u) o |= (uint32_t)SL_OPT_MUTING_BACKWARDS;
     if (rnd() % 4u == 0u) o |= (uint32_t)SL_OPT_MUTING_OSSD_CHECK_OPTIONAL;
+    if (rnd() % 4u == 0u) o |= (uint32_t)SL_OPT_SCALE_DIVISION_FIRST;
+    if (rnd() % 4u == 0u) o |= (uint32_t)SL_OPT_SPEED_OVERFLOW_CHECK;
     if (rnd() % 4u == 0u) o |= (uint32_t)SL_OPT_TON2_REMAINING_TIME;
     if (rnd() % 4u == 0u) o |= (uint32_t)SL_OPT_EDM1;
     if (rnd() % 4u == 0u) o |= (uint32_t)SL_OPT_EDM2;
@@ -4552,6 +4674,766 @@ static void test_limit_udint(void)
     CHECK(reached_error, "FB_LIMIT_UDINT: the random test never reached ERROR");
 }
 
+static void rnd_config_scale_int(FB_SCALE_INT *x)
+{
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nAnalogIn = (int16_t)v[rnd() % 7u]; }
+    x->tWatchdog = rnd_time();
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nNumerator = (int32_t)v[rnd() % 7u]; }
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nDenominator = (int32_t)v[rnd() % 7u]; }
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nOffset = (int32_t)v[rnd() % 7u]; }
+    x->dwOptions = rnd_options();
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nRounding = (uint16_t)v[rnd() % 7u]; }
+    x->wInputActive = (uint16_t)(rnd() & 0x100u);
+    x->wInputNegated = (uint16_t)(rnd() % 2u == 0u ? 0u : (rnd() & 0x100u));
+}
+/* 1: a valid configuration (want_valid) or an invalid one was drawn into a and b */
+static int draw_scale_int(FB_SCALE_INT *a, FB_SCALE_INT *b, int want_valid)
+{
+    long k;
+    for (k = 0; k < 200000L; k++) {
+        static FB_SCALE_INT x;
+        int valid;
+        memset(&x, 0, sizeof x);
+        rnd_config_scale_int(&x);
+        valid = sl_scale_int_init(&x) == SL_OK && sl_scale_int_cycle(&x, 0u) == SL_OK;
+        if (valid == want_valid) {
+            memset(&x.bRun, 0, 0); /* keep x's parameters, reset the instance */
+            memset(a, 0, sizeof *a);
+            rnd_config_scale_int(a); /* placeholder, overwritten below */
+            a->nAnalogIn = x.nAnalogIn;
+            a->tWatchdog = x.tWatchdog;
+            a->nNumerator = x.nNumerator;
+            a->nDenominator = x.nDenominator;
+            a->nOffset = x.nOffset;
+            a->dwOptions = x.dwOptions;
+            a->nRounding = x.nRounding;
+            a->wInputActive = x.wInputActive;
+            a->wInputNegated = x.wInputNegated;
+            *b = *a;
+            return 1;
+        }
+    }
+    return 0;
+}
+static void test_scale_int(void)
+{
+    static FB_SCALE_INT a, b;
+    cds_sl_scale_int_cycle_struct p;
+    int c, k, bump, ok = 0, cycles = 0, inv_cycles = 0, inv_config = 0, reached_run = 0, reached_error = 0;
+    int hist[12] = {0};
+    unsigned pol = 0;
+    uint32_t t = 1000u;
+    memset(&a, 0, sizeof a);
+    memset(&b, 0, sizeof b);
+    memset(&p, 0, sizeof p);
+    p.pFb = NULL;
+    p.cds_sl_scale_int_cycle = 12345;
+    cds_sl_scale_int_cycle(&p);
+    CHECK(p.cds_sl_scale_int_cycle == SL_E_NULL, "cds_sl_scale_int_cycle(NULL) returned %d", (int)p.cds_sl_scale_int_cycle);
+    a.bRun = b.bRun = 1;
+    a.wInputActive = b.wInputActive = 1;
+    { cds_sl_scale_int_init_struct q; int32_t r; q.pFb = &a; cds_sl_scale_int_init(&q); r = sl_scale_int_init(&b);
+      CHECK(q.cds_sl_scale_int_init == r && memcmp(&a, &b, sizeof a) == 0, "cds_sl_scale_int_init differs from sl_scale_int_init"); }
+    rng = 2731267878u; /* FNV-1a of "FB_SCALE_INT" */
+    machine = 1u;
+    for (c = 0; c < 20; c++) {
+        int valid = c < 16; /* 16 valid configurations, then the labelled invalid share: 4 */
+        if (!draw_scale_int(&a, &b, valid)) {
+            CHECK(!valid, "FB_SCALE_INT: no valid configuration found in 200000 random draws");
+            continue;
+        }
+        if (!valid) inv_config++;
+        a.bErrAck = b.bErrAck = (uint8_t)(0);
+        bump = 20 + (int)(rnd() % 20u);
+        pol = (c % 2 == 1) ? rnd() : 0u;
+        for (k = 0; k < 50; k++) {
+            int32_t direct;
+            next_machine();
+            a.bErrAck = b.bErrAck = next_signal(a.bErrAck, 1, pol >> 0);
+            a.bRun = b.bRun = (uint8_t)(k >= 2 && rnd() % 100u != 0u);
+            if (valid && k == bump) { a.tWatchdog++; b.tWatchdog++; } /* changed while running: ERROR */
+            if (valid && k == bump + 2) { a.tWatchdog--; b.tWatchdog--; } /* restored */
+            p.pFb = &a;
+            p.tNow = t += 10u;
+            cds_sl_scale_int_cycle(&p);
+            direct = sl_scale_int_cycle(&b, p.tNow);
+            CHECK(p.cds_sl_scale_int_cycle == direct, "FB_SCALE_INT config %d cycle %d: adapter %d, direct %d", c, k, (int)p.cds_sl_scale_int_cycle, (int)direct);
+            CHECK(memcmp(&a, &b, sizeof a) == 0, "FB_SCALE_INT config %d cycle %d: instances differ", c, k);
+            if (!valid) { inv_cycles++; continue; }
+            cycles++;
+            if (direct == SL_OK) ok++;
+            if (direct <= 0 && direct > -12) hist[-direct]++;
+            if (b.nState == SL_STATE_ERROR) reached_error = 1;
+            if (b.nState != SL_STATE_STOP && b.nState != SL_STATE_ERROR && b.nState != SL_STATE_RESET && (b.bStuckAtError)) reached_run = 1;
+        }
+    }
+    printf("FB_SCALE_INT: %d of %d cycles (16 valid random configurations) returned SL_OK; run-like state %s, ERROR %s; invalid share: %d configurations, %d cycles\n", ok, cycles, reached_run ? "reached" : "NOT reached", reached_error ? "reached" : "NOT reached", inv_config, inv_cycles);
+    if (2 * ok <= cycles) printf("  status histogram (0, -1, ... -11): %d %d %d %d %d %d %d %d %d %d %d\n", hist[0], hist[1], hist[2], hist[3], hist[4], hist[5], hist[6], hist[7], hist[8], hist[9], hist[10]);
+    CHECK(cycles > 0 && 2 * ok > cycles, "FB_SCALE_INT: only %d of %d cycles with valid configurations returned SL_OK", ok, cycles);
+    CHECK(reached_run, "FB_SCALE_INT: the random test never reached a running state (an output on)");
+    CHECK(reached_error, "FB_SCALE_INT: the random test never reached ERROR");
+}
+
+static void rnd_config_scale_uint(FB_SCALE_UINT *x)
+{
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nAnalogIn = (uint16_t)v[rnd() % 7u]; }
+    x->tWatchdog = rnd_time();
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nNumerator = (uint32_t)v[rnd() % 7u]; }
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nDenominator = (uint32_t)v[rnd() % 7u]; }
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nOffset = (uint32_t)v[rnd() % 7u]; }
+    x->dwOptions = rnd_options();
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nRounding = (uint16_t)v[rnd() % 7u]; }
+    x->wInputActive = (uint16_t)(rnd() & 0x100u);
+    x->wInputNegated = (uint16_t)(rnd() % 2u == 0u ? 0u : (rnd() & 0x100u));
+}
+/* 1: a valid configuration (want_valid) or an invalid one was drawn into a and b */
+static int draw_scale_uint(FB_SCALE_UINT *a, FB_SCALE_UINT *b, int want_valid)
+{
+    long k;
+    for (k = 0; k < 200000L; k++) {
+        static FB_SCALE_UINT x;
+        int valid;
+        memset(&x, 0, sizeof x);
+        rnd_config_scale_uint(&x);
+        valid = sl_scale_uint_init(&x) == SL_OK && sl_scale_uint_cycle(&x, 0u) == SL_OK;
+        if (valid == want_valid) {
+            memset(&x.bRun, 0, 0); /* keep x's parameters, reset the instance */
+            memset(a, 0, sizeof *a);
+            rnd_config_scale_uint(a); /* placeholder, overwritten below */
+            a->nAnalogIn = x.nAnalogIn;
+            a->tWatchdog = x.tWatchdog;
+            a->nNumerator = x.nNumerator;
+            a->nDenominator = x.nDenominator;
+            a->nOffset = x.nOffset;
+            a->dwOptions = x.dwOptions;
+            a->nRounding = x.nRounding;
+            a->wInputActive = x.wInputActive;
+            a->wInputNegated = x.wInputNegated;
+            *b = *a;
+            return 1;
+        }
+    }
+    return 0;
+}
+static void test_scale_uint(void)
+{
+    static FB_SCALE_UINT a, b;
+    cds_sl_scale_uint_cycle_struct p;
+    int c, k, bump, ok = 0, cycles = 0, inv_cycles = 0, inv_config = 0, reached_run = 0, reached_error = 0;
+    int hist[12] = {0};
+    unsigned pol = 0;
+    uint32_t t = 1000u;
+    memset(&a, 0, sizeof a);
+    memset(&b, 0, sizeof b);
+    memset(&p, 0, sizeof p);
+    p.pFb = NULL;
+    p.cds_sl_scale_uint_cycle = 12345;
+    cds_sl_scale_uint_cycle(&p);
+    CHECK(p.cds_sl_scale_uint_cycle == SL_E_NULL, "cds_sl_scale_uint_cycle(NULL) returned %d", (int)p.cds_sl_scale_uint_cycle);
+    a.bRun = b.bRun = 1;
+    a.wInputActive = b.wInputActive = 1;
+    { cds_sl_scale_uint_init_struct q; int32_t r; q.pFb = &a; cds_sl_scale_uint_init(&q); r = sl_scale_uint_init(&b);
+      CHECK(q.cds_sl_scale_uint_init == r && memcmp(&a, &b, sizeof a) == 0, "cds_sl_scale_uint_init differs from sl_scale_uint_init"); }
+    rng = 151824377u; /* FNV-1a of "FB_SCALE_UINT" */
+    machine = 1u;
+    for (c = 0; c < 20; c++) {
+        int valid = c < 16; /* 16 valid configurations, then the labelled invalid share: 4 */
+        if (!draw_scale_uint(&a, &b, valid)) {
+            CHECK(!valid, "FB_SCALE_UINT: no valid configuration found in 200000 random draws");
+            continue;
+        }
+        if (!valid) inv_config++;
+        a.bErrAck = b.bErrAck = (uint8_t)(0);
+        bump = 20 + (int)(rnd() % 20u);
+        pol = (c % 2 == 1) ? rnd() : 0u;
+        for (k = 0; k < 50; k++) {
+            int32_t direct;
+            next_machine();
+            a.bErrAck = b.bErrAck = next_signal(a.bErrAck, 1, pol >> 0);
+            a.bRun = b.bRun = (uint8_t)(k >= 2 && rnd() % 100u != 0u);
+            if (valid && k == bump) { a.tWatchdog++; b.tWatchdog++; } /* changed while running: ERROR */
+            if (valid && k == bump + 2) { a.tWatchdog--; b.tWatchdog--; } /* restored */
+            p.pFb = &a;
+            p.tNow = t += 10u;
+            cds_sl_scale_uint_cycle(&p);
+            direct = sl_scale_uint_cycle(&b, p.tNow);
+            CHECK(p.cds_sl_scale_uint_cycle == direct, "FB_SCALE_UINT config %d cycle %d: adapter %d, direct %d", c, k, (int)p.cds_sl_scale_uint_cycle, (int)direct);
+            CHECK(memcmp(&a, &b, sizeof a) == 0, "FB_SCALE_UINT config %d cycle %d: instances differ", c, k);
+            if (!valid) { inv_cycles++; continue; }
+            cycles++;
+            if (direct == SL_OK) ok++;
+            if (direct <= 0 && direct > -12) hist[-direct]++;
+            if (b.nState == SL_STATE_ERROR) reached_error = 1;
+            if (b.nState != SL_STATE_STOP && b.nState != SL_STATE_ERROR && b.nState != SL_STATE_RESET && (b.bStuckAtError)) reached_run = 1;
+        }
+    }
+    printf("FB_SCALE_UINT: %d of %d cycles (16 valid random configurations) returned SL_OK; run-like state %s, ERROR %s; invalid share: %d configurations, %d cycles\n", ok, cycles, reached_run ? "reached" : "NOT reached", reached_error ? "reached" : "NOT reached", inv_config, inv_cycles);
+    if (2 * ok <= cycles) printf("  status histogram (0, -1, ... -11): %d %d %d %d %d %d %d %d %d %d %d\n", hist[0], hist[1], hist[2], hist[3], hist[4], hist[5], hist[6], hist[7], hist[8], hist[9], hist[10]);
+    CHECK(cycles > 0 && 2 * ok > cycles, "FB_SCALE_UINT: only %d of %d cycles with valid configurations returned SL_OK", ok, cycles);
+    CHECK(reached_run, "FB_SCALE_UINT: the random test never reached a running state (an output on)");
+    CHECK(reached_error, "FB_SCALE_UINT: the random test never reached ERROR");
+}
+
+static void rnd_config_scale_dint(FB_SCALE_DINT *x)
+{
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nAnalogIn = (int32_t)v[rnd() % 7u]; }
+    x->tWatchdog = rnd_time();
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nNumerator = (int32_t)v[rnd() % 7u]; }
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nDenominator = (int32_t)v[rnd() % 7u]; }
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nOffset = (int32_t)v[rnd() % 7u]; }
+    x->dwOptions = rnd_options();
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nRounding = (uint16_t)v[rnd() % 7u]; }
+    x->wInputActive = (uint16_t)(rnd() & 0x100u);
+    x->wInputNegated = (uint16_t)(rnd() % 2u == 0u ? 0u : (rnd() & 0x100u));
+}
+/* 1: a valid configuration (want_valid) or an invalid one was drawn into a and b */
+static int draw_scale_dint(FB_SCALE_DINT *a, FB_SCALE_DINT *b, int want_valid)
+{
+    long k;
+    for (k = 0; k < 200000L; k++) {
+        static FB_SCALE_DINT x;
+        int valid;
+        memset(&x, 0, sizeof x);
+        rnd_config_scale_dint(&x);
+        valid = sl_scale_dint_init(&x) == SL_OK && sl_scale_dint_cycle(&x, 0u) == SL_OK;
+        if (valid == want_valid) {
+            memset(&x.bRun, 0, 0); /* keep x's parameters, reset the instance */
+            memset(a, 0, sizeof *a);
+            rnd_config_scale_dint(a); /* placeholder, overwritten below */
+            a->nAnalogIn = x.nAnalogIn;
+            a->tWatchdog = x.tWatchdog;
+            a->nNumerator = x.nNumerator;
+            a->nDenominator = x.nDenominator;
+            a->nOffset = x.nOffset;
+            a->dwOptions = x.dwOptions;
+            a->nRounding = x.nRounding;
+            a->wInputActive = x.wInputActive;
+            a->wInputNegated = x.wInputNegated;
+            *b = *a;
+            return 1;
+        }
+    }
+    return 0;
+}
+static void test_scale_dint(void)
+{
+    static FB_SCALE_DINT a, b;
+    cds_sl_scale_dint_cycle_struct p;
+    int c, k, bump, ok = 0, cycles = 0, inv_cycles = 0, inv_config = 0, reached_run = 0, reached_error = 0;
+    int hist[12] = {0};
+    unsigned pol = 0;
+    uint32_t t = 1000u;
+    memset(&a, 0, sizeof a);
+    memset(&b, 0, sizeof b);
+    memset(&p, 0, sizeof p);
+    p.pFb = NULL;
+    p.cds_sl_scale_dint_cycle = 12345;
+    cds_sl_scale_dint_cycle(&p);
+    CHECK(p.cds_sl_scale_dint_cycle == SL_E_NULL, "cds_sl_scale_dint_cycle(NULL) returned %d", (int)p.cds_sl_scale_dint_cycle);
+    a.bRun = b.bRun = 1;
+    a.wInputActive = b.wInputActive = 1;
+    { cds_sl_scale_dint_init_struct q; int32_t r; q.pFb = &a; cds_sl_scale_dint_init(&q); r = sl_scale_dint_init(&b);
+      CHECK(q.cds_sl_scale_dint_init == r && memcmp(&a, &b, sizeof a) == 0, "cds_sl_scale_dint_init differs from sl_scale_dint_init"); }
+    rng = 1211649588u; /* FNV-1a of "FB_SCALE_DINT" */
+    machine = 1u;
+    for (c = 0; c < 20; c++) {
+        int valid = c < 16; /* 16 valid configurations, then the labelled invalid share: 4 */
+        if (!draw_scale_dint(&a, &b, valid)) {
+            CHECK(!valid, "FB_SCALE_DINT: no valid configuration found in 200000 random draws");
+            continue;
+        }
+        if (!valid) inv_config++;
+        a.bErrAck = b.bErrAck = (uint8_t)(0);
+        bump = 20 + (int)(rnd() % 20u);
+        pol = (c % 2 == 1) ? rnd() : 0u;
+        for (k = 0; k < 50; k++) {
+            int32_t direct;
+            next_machine();
+            a.bErrAck = b.bErrAck = next_signal(a.bErrAck, 1, pol >> 0);
+            a.bRun = b.bRun = (uint8_t)(k >= 2 && rnd() % 100u != 0u);
+            if (valid && k == bump) { a.tWatchdog++; b.tWatchdog++; } /* changed while running: ERROR */
+            if (valid && k == bump + 2) { a.tWatchdog--; b.tWatchdog--; } /* restored */
+            p.pFb = &a;
+            p.tNow = t += 10u;
+            cds_sl_scale_dint_cycle(&p);
+            direct = sl_scale_dint_cycle(&b, p.tNow);
+            CHECK(p.cds_sl_scale_dint_cycle == direct, "FB_SCALE_DINT config %d cycle %d: adapter %d, direct %d", c, k, (int)p.cds_sl_scale_dint_cycle, (int)direct);
+            CHECK(memcmp(&a, &b, sizeof a) == 0, "FB_SCALE_DINT config %d cycle %d: instances differ", c, k);
+            if (!valid) { inv_cycles++; continue; }
+            cycles++;
+            if (direct == SL_OK) ok++;
+            if (direct <= 0 && direct > -12) hist[-direct]++;
+            if (b.nState == SL_STATE_ERROR) reached_error = 1;
+            if (b.nState != SL_STATE_STOP && b.nState != SL_STATE_ERROR && b.nState != SL_STATE_RESET && (b.bStuckAtError)) reached_run = 1;
+        }
+    }
+    printf("FB_SCALE_DINT: %d of %d cycles (16 valid random configurations) returned SL_OK; run-like state %s, ERROR %s; invalid share: %d configurations, %d cycles\n", ok, cycles, reached_run ? "reached" : "NOT reached", reached_error ? "reached" : "NOT reached", inv_config, inv_cycles);
+    if (2 * ok <= cycles) printf("  status histogram (0, -1, ... -11): %d %d %d %d %d %d %d %d %d %d %d\n", hist[0], hist[1], hist[2], hist[3], hist[4], hist[5], hist[6], hist[7], hist[8], hist[9], hist[10]);
+    CHECK(cycles > 0 && 2 * ok > cycles, "FB_SCALE_DINT: only %d of %d cycles with valid configurations returned SL_OK", ok, cycles);
+    CHECK(reached_run, "FB_SCALE_DINT: the random test never reached a running state (an output on)");
+    CHECK(reached_error, "FB_SCALE_DINT: the random test never reached ERROR");
+}
+
+static void rnd_config_scale_udint(FB_SCALE_UDINT *x)
+{
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nAnalogIn = (uint32_t)v[rnd() % 7u]; }
+    x->tWatchdog = rnd_time();
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nNumerator = (uint32_t)v[rnd() % 7u]; }
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nDenominator = (uint32_t)v[rnd() % 7u]; }
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nOffset = (uint32_t)v[rnd() % 7u]; }
+    x->dwOptions = rnd_options();
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nRounding = (uint16_t)v[rnd() % 7u]; }
+    x->wInputActive = (uint16_t)(rnd() & 0x100u);
+    x->wInputNegated = (uint16_t)(rnd() % 2u == 0u ? 0u : (rnd() & 0x100u));
+}
+/* 1: a valid configuration (want_valid) or an invalid one was drawn into a and b */
+static int draw_scale_udint(FB_SCALE_UDINT *a, FB_SCALE_UDINT *b, int want_valid)
+{
+    long k;
+    for (k = 0; k < 200000L; k++) {
+        static FB_SCALE_UDINT x;
+        int valid;
+        memset(&x, 0, sizeof x);
+        rnd_config_scale_udint(&x);
+        valid = sl_scale_udint_init(&x) == SL_OK && sl_scale_udint_cycle(&x, 0u) == SL_OK;
+        if (valid == want_valid) {
+            memset(&x.bRun, 0, 0); /* keep x's parameters, reset the instance */
+            memset(a, 0, sizeof *a);
+            rnd_config_scale_udint(a); /* placeholder, overwritten below */
+            a->nAnalogIn = x.nAnalogIn;
+            a->tWatchdog = x.tWatchdog;
+            a->nNumerator = x.nNumerator;
+            a->nDenominator = x.nDenominator;
+            a->nOffset = x.nOffset;
+            a->dwOptions = x.dwOptions;
+            a->nRounding = x.nRounding;
+            a->wInputActive = x.wInputActive;
+            a->wInputNegated = x.wInputNegated;
+            *b = *a;
+            return 1;
+        }
+    }
+    return 0;
+}
+static void test_scale_udint(void)
+{
+    static FB_SCALE_UDINT a, b;
+    cds_sl_scale_udint_cycle_struct p;
+    int c, k, bump, ok = 0, cycles = 0, inv_cycles = 0, inv_config = 0, reached_run = 0, reached_error = 0;
+    int hist[12] = {0};
+    unsigned pol = 0;
+    uint32_t t = 1000u;
+    memset(&a, 0, sizeof a);
+    memset(&b, 0, sizeof b);
+    memset(&p, 0, sizeof p);
+    p.pFb = NULL;
+    p.cds_sl_scale_udint_cycle = 12345;
+    cds_sl_scale_udint_cycle(&p);
+    CHECK(p.cds_sl_scale_udint_cycle == SL_E_NULL, "cds_sl_scale_udint_cycle(NULL) returned %d", (int)p.cds_sl_scale_udint_cycle);
+    a.bRun = b.bRun = 1;
+    a.wInputActive = b.wInputActive = 1;
+    { cds_sl_scale_udint_init_struct q; int32_t r; q.pFb = &a; cds_sl_scale_udint_init(&q); r = sl_scale_udint_init(&b);
+      CHECK(q.cds_sl_scale_udint_init == r && memcmp(&a, &b, sizeof a) == 0, "cds_sl_scale_udint_init differs from sl_scale_udint_init"); }
+    rng = 264833453u; /* FNV-1a of "FB_SCALE_UDINT" */
+    machine = 1u;
+    for (c = 0; c < 20; c++) {
+        int valid = c < 16; /* 16 valid configurations, then the labelled invalid share: 4 */
+        if (!draw_scale_udint(&a, &b, valid)) {
+            CHECK(!valid, "FB_SCALE_UDINT: no valid configuration found in 200000 random draws");
+            continue;
+        }
+        if (!valid) inv_config++;
+        a.bErrAck = b.bErrAck = (uint8_t)(0);
+        bump = 20 + (int)(rnd() % 20u);
+        pol = (c % 2 == 1) ? rnd() : 0u;
+        for (k = 0; k < 50; k++) {
+            int32_t direct;
+            next_machine();
+            a.bErrAck = b.bErrAck = next_signal(a.bErrAck, 1, pol >> 0);
+            a.bRun = b.bRun = (uint8_t)(k >= 2 && rnd() % 100u != 0u);
+            if (valid && k == bump) { a.tWatchdog++; b.tWatchdog++; } /* changed while running: ERROR */
+            if (valid && k == bump + 2) { a.tWatchdog--; b.tWatchdog--; } /* restored */
+            p.pFb = &a;
+            p.tNow = t += 10u;
+            cds_sl_scale_udint_cycle(&p);
+            direct = sl_scale_udint_cycle(&b, p.tNow);
+            CHECK(p.cds_sl_scale_udint_cycle == direct, "FB_SCALE_UDINT config %d cycle %d: adapter %d, direct %d", c, k, (int)p.cds_sl_scale_udint_cycle, (int)direct);
+            CHECK(memcmp(&a, &b, sizeof a) == 0, "FB_SCALE_UDINT config %d cycle %d: instances differ", c, k);
+            if (!valid) { inv_cycles++; continue; }
+            cycles++;
+            if (direct == SL_OK) ok++;
+            if (direct <= 0 && direct > -12) hist[-direct]++;
+            if (b.nState == SL_STATE_ERROR) reached_error = 1;
+            if (b.nState != SL_STATE_STOP && b.nState != SL_STATE_ERROR && b.nState != SL_STATE_RESET && (b.bStuckAtError)) reached_run = 1;
+        }
+    }
+    printf("FB_SCALE_UDINT: %d of %d cycles (16 valid random configurations) returned SL_OK; run-like state %s, ERROR %s; invalid share: %d configurations, %d cycles\n", ok, cycles, reached_run ? "reached" : "NOT reached", reached_error ? "reached" : "NOT reached", inv_config, inv_cycles);
+    if (2 * ok <= cycles) printf("  status histogram (0, -1, ... -11): %d %d %d %d %d %d %d %d %d %d %d\n", hist[0], hist[1], hist[2], hist[3], hist[4], hist[5], hist[6], hist[7], hist[8], hist[9], hist[10]);
+    CHECK(cycles > 0 && 2 * ok > cycles, "FB_SCALE_UDINT: only %d of %d cycles with valid configurations returned SL_OK", ok, cycles);
+    CHECK(reached_run, "FB_SCALE_UDINT: the random test never reached a running state (an output on)");
+    CHECK(reached_error, "FB_SCALE_UDINT: the random test never reached ERROR");
+}
+
+static void rnd_config_speed_int(FB_SPEED_INT *x)
+{
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nPosition = (int16_t)v[rnd() % 7u]; }
+    x->tTimeInterval = rnd_time();
+    x->dwOptions = rnd_options();
+    x->wInputActive = (uint16_t)(rnd() & 0x100u);
+}
+/* 1: a valid configuration (want_valid) or an invalid one was drawn into a and b */
+static int draw_speed_int(FB_SPEED_INT *a, FB_SPEED_INT *b, int want_valid)
+{
+    long k;
+    for (k = 0; k < 200000L; k++) {
+        static FB_SPEED_INT x;
+        int valid;
+        memset(&x, 0, sizeof x);
+        rnd_config_speed_int(&x);
+        valid = sl_speed_int_init(&x) == SL_OK && sl_speed_int_cycle(&x, 0u) == SL_OK;
+        if (valid == want_valid) {
+            memset(&x.bRun, 0, 0); /* keep x's parameters, reset the instance */
+            memset(a, 0, sizeof *a);
+            rnd_config_speed_int(a); /* placeholder, overwritten below */
+            a->nPosition = x.nPosition;
+            a->tTimeInterval = x.tTimeInterval;
+            a->dwOptions = x.dwOptions;
+            a->wInputActive = x.wInputActive;
+            *b = *a;
+            return 1;
+        }
+    }
+    return 0;
+}
+static void test_speed_int(void)
+{
+    static FB_SPEED_INT a, b;
+    cds_sl_speed_int_cycle_struct p;
+    int c, k, bump, ok = 0, cycles = 0, inv_cycles = 0, inv_config = 0, reached_run = 0, reached_error = 0;
+    int hist[12] = {0};
+    unsigned pol = 0;
+    uint32_t t = 1000u;
+    memset(&a, 0, sizeof a);
+    memset(&b, 0, sizeof b);
+    memset(&p, 0, sizeof p);
+    p.pFb = NULL;
+    p.cds_sl_speed_int_cycle = 12345;
+    cds_sl_speed_int_cycle(&p);
+    CHECK(p.cds_sl_speed_int_cycle == SL_E_NULL, "cds_sl_speed_int_cycle(NULL) returned %d", (int)p.cds_sl_speed_int_cycle);
+    a.bRun = b.bRun = 1;
+    a.wInputActive = b.wInputActive = 1;
+    { cds_sl_speed_int_init_struct q; int32_t r; q.pFb = &a; cds_sl_speed_int_init(&q); r = sl_speed_int_init(&b);
+      CHECK(q.cds_sl_speed_int_init == r && memcmp(&a, &b, sizeof a) == 0, "cds_sl_speed_int_init differs from sl_speed_int_init"); }
+    rng = 3594138727u; /* FNV-1a of "FB_SPEED_INT" */
+    machine = 1u;
+    for (c = 0; c < 20; c++) {
+        int valid = c < 16; /* 16 valid configurations, then the labelled invalid share: 4 */
+        if (!draw_speed_int(&a, &b, valid)) {
+            CHECK(!valid, "FB_SPEED_INT: no valid configuration found in 200000 random draws");
+            continue;
+        }
+        if (!valid) inv_config++;
+        a.bErrAck = b.bErrAck = (uint8_t)(0);
+        bump = 20 + (int)(rnd() % 20u);
+        pol = (c % 2 == 1) ? rnd() : 0u;
+        for (k = 0; k < 50; k++) {
+            int32_t direct;
+            next_machine();
+            a.bErrAck = b.bErrAck = next_signal(a.bErrAck, 1, pol >> 0);
+            a.bRun = b.bRun = (uint8_t)(k >= 2 && rnd() % 100u != 0u);
+            if (valid && k == bump) { a.tTimeInterval++; b.tTimeInterval++; } /* changed while running: ERROR */
+            if (valid && k == bump + 2) { a.tTimeInterval--; b.tTimeInterval--; } /* restored */
+            p.pFb = &a;
+            p.tNow = t += 10u;
+            cds_sl_speed_int_cycle(&p);
+            direct = sl_speed_int_cycle(&b, p.tNow);
+            CHECK(p.cds_sl_speed_int_cycle == direct, "FB_SPEED_INT config %d cycle %d: adapter %d, direct %d", c, k, (int)p.cds_sl_speed_int_cycle, (int)direct);
+            CHECK(memcmp(&a, &b, sizeof a) == 0, "FB_SPEED_INT config %d cycle %d: instances differ", c, k);
+            if (!valid) { inv_cycles++; continue; }
+            cycles++;
+            if (direct == SL_OK) ok++;
+            if (direct <= 0 && direct > -12) hist[-direct]++;
+            if (b.nState == SL_STATE_ERROR) reached_error = 1;
+            if (b.nState != SL_STATE_STOP && b.nState != SL_STATE_ERROR && b.nState != SL_STATE_RESET && b.nState != SL_STATE_SAFE) reached_run = 1;
+        }
+    }
+    printf("FB_SPEED_INT: %d of %d cycles (16 valid random configurations) returned SL_OK; run-like state %s, ERROR %s; invalid share: %d configurations, %d cycles\n", ok, cycles, reached_run ? "reached" : "NOT reached", reached_error ? "reached" : "NOT reached", inv_config, inv_cycles);
+    if (2 * ok <= cycles) printf("  status histogram (0, -1, ... -11): %d %d %d %d %d %d %d %d %d %d %d\n", hist[0], hist[1], hist[2], hist[3], hist[4], hist[5], hist[6], hist[7], hist[8], hist[9], hist[10]);
+    CHECK(cycles > 0 && 2 * ok > cycles, "FB_SPEED_INT: only %d of %d cycles with valid configurations returned SL_OK", ok, cycles);
+    CHECK(reached_run, "FB_SPEED_INT: the random test never reached a running state (an output on)");
+    CHECK(reached_error, "FB_SPEED_INT: the random test never reached ERROR");
+}
+
+static void rnd_config_speed_uint(FB_SPEED_UINT *x)
+{
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nPosition = (uint16_t)v[rnd() % 7u]; }
+    x->tTimeInterval = rnd_time();
+    x->dwOptions = rnd_options();
+    x->wInputActive = (uint16_t)(rnd() & 0x100u);
+}
+/* 1: a valid configuration (want_valid) or an invalid one was drawn into a and b */
+static int draw_speed_uint(FB_SPEED_UINT *a, FB_SPEED_UINT *b, int want_valid)
+{
+    long k;
+    for (k = 0; k < 200000L; k++) {
+        static FB_SPEED_UINT x;
+        int valid;
+        memset(&x, 0, sizeof x);
+        rnd_config_speed_uint(&x);
+        valid = sl_speed_uint_init(&x) == SL_OK && sl_speed_uint_cycle(&x, 0u) == SL_OK;
+        if (valid == want_valid) {
+            memset(&x.bRun, 0, 0); /* keep x's parameters, reset the instance */
+            memset(a, 0, sizeof *a);
+            rnd_config_speed_uint(a); /* placeholder, overwritten below */
+            a->nPosition = x.nPosition;
+            a->tTimeInterval = x.tTimeInterval;
+            a->dwOptions = x.dwOptions;
+            a->wInputActive = x.wInputActive;
+            *b = *a;
+            return 1;
+        }
+    }
+    return 0;
+}
+static void test_speed_uint(void)
+{
+    static FB_SPEED_UINT a, b;
+    cds_sl_speed_uint_cycle_struct p;
+    int c, k, bump, ok = 0, cycles = 0, inv_cycles = 0, inv_config = 0, reached_run = 0, reached_error = 0;
+    int hist[12] = {0};
+    unsigned pol = 0;
+    uint32_t t = 1000u;
+    memset(&a, 0, sizeof a);
+    memset(&b, 0, sizeof b);
+    memset(&p, 0, sizeof p);
+    p.pFb = NULL;
+    p.cds_sl_speed_uint_cycle = 12345;
+    cds_sl_speed_uint_cycle(&p);
+    CHECK(p.cds_sl_speed_uint_cycle == SL_E_NULL, "cds_sl_speed_uint_cycle(NULL) returned %d", (int)p.cds_sl_speed_uint_cycle);
+    a.bRun = b.bRun = 1;
+    a.wInputActive = b.wInputActive = 1;
+    { cds_sl_speed_uint_init_struct q; int32_t r; q.pFb = &a; cds_sl_speed_uint_init(&q); r = sl_speed_uint_init(&b);
+      CHECK(q.cds_sl_speed_uint_init == r && memcmp(&a, &b, sizeof a) == 0, "cds_sl_speed_uint_init differs from sl_speed_uint_init"); }
+    rng = 2464980730u; /* FNV-1a of "FB_SPEED_UINT" */
+    machine = 1u;
+    for (c = 0; c < 20; c++) {
+        int valid = c < 16; /* 16 valid configurations, then the labelled invalid share: 4 */
+        if (!draw_speed_uint(&a, &b, valid)) {
+            CHECK(!valid, "FB_SPEED_UINT: no valid configuration found in 200000 random draws");
+            continue;
+        }
+        if (!valid) inv_config++;
+        a.bErrAck = b.bErrAck = (uint8_t)(0);
+        bump = 20 + (int)(rnd() % 20u);
+        pol = (c % 2 == 1) ? rnd() : 0u;
+        for (k = 0; k < 50; k++) {
+            int32_t direct;
+            next_machine();
+            a.bErrAck = b.bErrAck = next_signal(a.bErrAck, 1, pol >> 0);
+            a.bRun = b.bRun = (uint8_t)(k >= 2 && rnd() % 100u != 0u);
+            if (valid && k == bump) { a.tTimeInterval++; b.tTimeInterval++; } /* changed while running: ERROR */
+            if (valid && k == bump + 2) { a.tTimeInterval--; b.tTimeInterval--; } /* restored */
+            p.pFb = &a;
+            p.tNow = t += 10u;
+            cds_sl_speed_uint_cycle(&p);
+            direct = sl_speed_uint_cycle(&b, p.tNow);
+            CHECK(p.cds_sl_speed_uint_cycle == direct, "FB_SPEED_UINT config %d cycle %d: adapter %d, direct %d", c, k, (int)p.cds_sl_speed_uint_cycle, (int)direct);
+            CHECK(memcmp(&a, &b, sizeof a) == 0, "FB_SPEED_UINT config %d cycle %d: instances differ", c, k);
+            if (!valid) { inv_cycles++; continue; }
+            cycles++;
+            if (direct == SL_OK) ok++;
+            if (direct <= 0 && direct > -12) hist[-direct]++;
+            if (b.nState == SL_STATE_ERROR) reached_error = 1;
+            if (b.nState != SL_STATE_STOP && b.nState != SL_STATE_ERROR && b.nState != SL_STATE_RESET && b.nState != SL_STATE_SAFE) reached_run = 1;
+        }
+    }
+    printf("FB_SPEED_UINT: %d of %d cycles (16 valid random configurations) returned SL_OK; run-like state %s, ERROR %s; invalid share: %d configurations, %d cycles\n", ok, cycles, reached_run ? "reached" : "NOT reached", reached_error ? "reached" : "NOT reached", inv_config, inv_cycles);
+    if (2 * ok <= cycles) printf("  status histogram (0, -1, ... -11): %d %d %d %d %d %d %d %d %d %d %d\n", hist[0], hist[1], hist[2], hist[3], hist[4], hist[5], hist[6], hist[7], hist[8], hist[9], hist[10]);
+    CHECK(cycles > 0 && 2 * ok > cycles, "FB_SPEED_UINT: only %d of %d cycles with valid configurations returned SL_OK", ok, cycles);
+    CHECK(reached_run, "FB_SPEED_UINT: the random test never reached a running state (an output on)");
+    CHECK(reached_error, "FB_SPEED_UINT: the random test never reached ERROR");
+}
+
+static void rnd_config_speed_dint(FB_SPEED_DINT *x)
+{
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nPosition = (int32_t)v[rnd() % 7u]; }
+    x->tTimeInterval = rnd_time();
+    x->dwOptions = rnd_options();
+    x->wInputActive = (uint16_t)(rnd() & 0x100u);
+}
+/* 1: a valid configuration (want_valid) or an invalid one was drawn into a and b */
+static int draw_speed_dint(FB_SPEED_DINT *a, FB_SPEED_DINT *b, int want_valid)
+{
+    long k;
+    for (k = 0; k < 200000L; k++) {
+        static FB_SPEED_DINT x;
+        int valid;
+        memset(&x, 0, sizeof x);
+        rnd_config_speed_dint(&x);
+        valid = sl_speed_dint_init(&x) == SL_OK && sl_speed_dint_cycle(&x, 0u) == SL_OK;
+        if (valid == want_valid) {
+            memset(&x.bRun, 0, 0); /* keep x's parameters, reset the instance */
+            memset(a, 0, sizeof *a);
+            rnd_config_speed_dint(a); /* placeholder, overwritten below */
+            a->nPosition = x.nPosition;
+            a->tTimeInterval = x.tTimeInterval;
+            a->dwOptions = x.dwOptions;
+            a->wInputActive = x.wInputActive;
+            *b = *a;
+            return 1;
+        }
+    }
+    return 0;
+}
+static void test_speed_dint(void)
+{
+    static FB_SPEED_DINT a, b;
+    cds_sl_speed_dint_cycle_struct p;
+    int c, k, bump, ok = 0, cycles = 0, inv_cycles = 0, inv_config = 0, reached_run = 0, reached_error = 0;
+    int hist[12] = {0};
+    unsigned pol = 0;
+    uint32_t t = 1000u;
+    memset(&a, 0, sizeof a);
+    memset(&b, 0, sizeof b);
+    memset(&p, 0, sizeof p);
+    p.pFb = NULL;
+    p.cds_sl_speed_dint_cycle = 12345;
+    cds_sl_speed_dint_cycle(&p);
+    CHECK(p.cds_sl_speed_dint_cycle == SL_E_NULL, "cds_sl_speed_dint_cycle(NULL) returned %d", (int)p.cds_sl_speed_dint_cycle);
+    a.bRun = b.bRun = 1;
+    a.wInputActive = b.wInputActive = 1;
+    { cds_sl_speed_dint_init_struct q; int32_t r; q.pFb = &a; cds_sl_speed_dint_init(&q); r = sl_speed_dint_init(&b);
+      CHECK(q.cds_sl_speed_dint_init == r && memcmp(&a, &b, sizeof a) == 0, "cds_sl_speed_dint_init differs from sl_speed_dint_init"); }
+    rng = 2849840967u; /* FNV-1a of "FB_SPEED_DINT" */
+    machine = 1u;
+    for (c = 0; c < 20; c++) {
+        int valid = c < 16; /* 16 valid configurations, then the labelled invalid share: 4 */
+        if (!draw_speed_dint(&a, &b, valid)) {
+            CHECK(!valid, "FB_SPEED_DINT: no valid configuration found in 200000 random draws");
+            continue;
+        }
+        if (!valid) inv_config++;
+        a.bErrAck = b.bErrAck = (uint8_t)(0);
+        bump = 20 + (int)(rnd() % 20u);
+        pol = (c % 2 == 1) ? rnd() : 0u;
+        for (k = 0; k < 50; k++) {
+            int32_t direct;
+            next_machine();
+            a.bErrAck = b.bErrAck = next_signal(a.bErrAck, 1, pol >> 0);
+            a.bRun = b.bRun = (uint8_t)(k >= 2 && rnd() % 100u != 0u);
+            if (valid && k == bump) { a.tTimeInterval++; b.tTimeInterval++; } /* changed while running: ERROR */
+            if (valid && k == bump + 2) { a.tTimeInterval--; b.tTimeInterval--; } /* restored */
+            p.pFb = &a;
+            p.tNow = t += 10u;
+            cds_sl_speed_dint_cycle(&p);
+            direct = sl_speed_dint_cycle(&b, p.tNow);
+            CHECK(p.cds_sl_speed_dint_cycle == direct, "FB_SPEED_DINT config %d cycle %d: adapter %d, direct %d", c, k, (int)p.cds_sl_speed_dint_cycle, (int)direct);
+            CHECK(memcmp(&a, &b, sizeof a) == 0, "FB_SPEED_DINT config %d cycle %d: instances differ", c, k);
+            if (!valid) { inv_cycles++; continue; }
+            cycles++;
+            if (direct == SL_OK) ok++;
+            if (direct <= 0 && direct > -12) hist[-direct]++;
+            if (b.nState == SL_STATE_ERROR) reached_error = 1;
+            if (b.nState != SL_STATE_STOP && b.nState != SL_STATE_ERROR && b.nState != SL_STATE_RESET && b.nState != SL_STATE_SAFE) reached_run = 1;
+        }
+    }
+    printf("FB_SPEED_DINT: %d of %d cycles (16 valid random configurations) returned SL_OK; run-like state %s, ERROR %s; invalid share: %d configurations, %d cycles\n", ok, cycles, reached_run ? "reached" : "NOT reached", reached_error ? "reached" : "NOT reached", inv_config, inv_cycles);
+    if (2 * ok <= cycles) printf("  status histogram (0, -1, ... -11): %d %d %d %d %d %d %d %d %d %d %d\n", hist[0], hist[1], hist[2], hist[3], hist[4], hist[5], hist[6], hist[7], hist[8], hist[9], hist[10]);
+    CHECK(cycles > 0 && 2 * ok > cycles, "FB_SPEED_DINT: only %d of %d cycles with valid configurations returned SL_OK", ok, cycles);
+    CHECK(reached_run, "FB_SPEED_DINT: the random test never reached a running state (an output on)");
+    CHECK(reached_error, "FB_SPEED_DINT: the random test never reached ERROR");
+}
+
+static void rnd_config_speed_udint(FB_SPEED_UDINT *x)
+{
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nPosition = (uint32_t)v[rnd() % 7u]; }
+    x->tTimeInterval = rnd_time();
+    x->dwOptions = rnd_options();
+    x->wInputActive = (uint16_t)(rnd() & 0x100u);
+}
+/* 1: a valid configuration (want_valid) or an invalid one was drawn into a and b */
+static int draw_speed_udint(FB_SPEED_UDINT *a, FB_SPEED_UDINT *b, int want_valid)
+{
+    long k;
+    for (k = 0; k < 200000L; k++) {
+        static FB_SPEED_UDINT x;
+        int valid;
+        memset(&x, 0, sizeof x);
+        rnd_config_speed_udint(&x);
+        valid = sl_speed_udint_init(&x) == SL_OK && sl_speed_udint_cycle(&x, 0u) == SL_OK;
+        if (valid == want_valid) {
+            memset(&x.bRun, 0, 0); /* keep x's parameters, reset the instance */
+            memset(a, 0, sizeof *a);
+            rnd_config_speed_udint(a); /* placeholder, overwritten below */
+            a->nPosition = x.nPosition;
+            a->tTimeInterval = x.tTimeInterval;
+            a->dwOptions = x.dwOptions;
+            a->wInputActive = x.wInputActive;
+            *b = *a;
+            return 1;
+        }
+    }
+    return 0;
+}
+static void test_speed_udint(void)
+{
+    static FB_SPEED_UDINT a, b;
+    cds_sl_speed_udint_cycle_struct p;
+    int c, k, bump, ok = 0, cycles = 0, inv_cycles = 0, inv_config = 0, reached_run = 0, reached_error = 0;
+    int hist[12] = {0};
+    unsigned pol = 0;
+    uint32_t t = 1000u;
+    memset(&a, 0, sizeof a);
+    memset(&b, 0, sizeof b);
+    memset(&p, 0, sizeof p);
+    p.pFb = NULL;
+    p.cds_sl_speed_udint_cycle = 12345;
+    cds_sl_speed_udint_cycle(&p);
+    CHECK(p.cds_sl_speed_udint_cycle == SL_E_NULL, "cds_sl_speed_udint_cycle(NULL) returned %d", (int)p.cds_sl_speed_udint_cycle);
+    a.bRun = b.bRun = 1;
+    a.wInputActive = b.wInputActive = 1;
+    { cds_sl_speed_udint_init_struct q; int32_t r; q.pFb = &a; cds_sl_speed_udint_init(&q); r = sl_speed_udint_init(&b);
+      CHECK(q.cds_sl_speed_udint_init == r && memcmp(&a, &b, sizeof a) == 0, "cds_sl_speed_udint_init differs from sl_speed_udint_init"); }
+    rng = 3762949752u; /* FNV-1a of "FB_SPEED_UDINT" */
+    machine = 1u;
+    for (c = 0; c < 20; c++) {
+        int valid = c < 16; /* 16 valid configurations, then the labelled invalid share: 4 */
+        if (!draw_speed_udint(&a, &b, valid)) {
+            CHECK(!valid, "FB_SPEED_UDINT: no valid configuration found in 200000 random draws");
+            continue;
+        }
+        if (!valid) inv_config++;
+        a.bErrAck = b.bErrAck = (uint8_t)(0);
+        bump = 20 + (int)(rnd() % 20u);
+        pol = (c % 2 == 1) ? rnd() : 0u;
+        for (k = 0; k < 50; k++) {
+            int32_t direct;
+            next_machine();
+            a.bErrAck = b.bErrAck = next_signal(a.bErrAck, 1, pol >> 0);
+            a.bRun = b.bRun = (uint8_t)(k >= 2 && rnd() % 100u != 0u);
+            if (valid && k == bump) { a.tTimeInterval++; b.tTimeInterval++; } /* changed while running: ERROR */
+            if (valid && k == bump + 2) { a.tTimeInterval--; b.tTimeInterval--; } /* restored */
+            p.pFb = &a;
+            p.tNow = t += 10u;
+            cds_sl_speed_udint_cycle(&p);
+            direct = sl_speed_udint_cycle(&b, p.tNow);
+            CHECK(p.cds_sl_speed_udint_cycle == direct, "FB_SPEED_UDINT config %d cycle %d: adapter %d, direct %d", c, k, (int)p.cds_sl_speed_udint_cycle, (int)direct);
+            CHECK(memcmp(&a, &b, sizeof a) == 0, "FB_SPEED_UDINT config %d cycle %d: instances differ", c, k);
+            if (!valid) { inv_cycles++; continue; }
+            cycles++;
+            if (direct == SL_OK) ok++;
+            if (direct <= 0 && direct > -12) hist[-direct]++;
+            if (b.nState == SL_STATE_ERROR) reached_error = 1;
+            if (b.nState != SL_STATE_STOP && b.nState != SL_STATE_ERROR && b.nState != SL_STATE_RESET && b.nState != SL_STATE_SAFE) reached_run = 1;
+        }
+    }
+    printf("FB_SPEED_UDINT: %d of %d cycles (16 valid random configurations) returned SL_OK; run-like state %s, ERROR %s; invalid share: %d configurations, %d cycles\n", ok, cycles, reached_run ? "reached" : "NOT reached", reached_error ? "reached" : "NOT reached", inv_config, inv_cycles);
+    if (2 * ok <= cycles) printf("  status histogram (0, -1, ... -11): %d %d %d %d %d %d %d %d %d %d %d\n", hist[0], hist[1], hist[2], hist[3], hist[4], hist[5], hist[6], hist[7], hist[8], hist[9], hist[10]);
+    CHECK(cycles > 0 && 2 * ok > cycles, "FB_SPEED_UDINT: only %d of %d cycles with valid configurations returned SL_OK", ok, cycles);
+    CHECK(reached_run, "FB_SPEED_UDINT: the random test never reached a running state (an output on)");
+    CHECK(reached_error, "FB_SPEED_UDINT: the random test never reached ERROR");
+}
+
 static void rnd_config_counter_int(FB_COUNTER_INT *x)
 {
     { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nPresetValue = (int16_t)v[rnd() % 7u]; }
@@ -5162,6 +6044,14 @@ int main(void)
     test_limit_uint();
     test_limit_dint();
     test_limit_udint();
+    test_scale_int();
+    test_scale_uint();
+    test_scale_dint();
+    test_scale_udint();
+    test_speed_int();
+    test_speed_uint();
+    test_speed_dint();
+    test_speed_udint();
     test_counter_int();
     test_counter_uint();
     test_counter_dint();

@@ -48,6 +48,20 @@ pub const SL_DIAG_VALUE_UNDERFLOW: u16 = 1;
 /// Diag value 2: the result is above the largest value of the type.
 pub const SL_DIAG_VALUE_OVERFLOW: u16 = 2;
 
+/// `v` as a value of `T`, or the diag value of the range error it makes (ABI-2 §12.1:
+/// exact result, nothing wraps, nothing saturates): underflow below `T::MIN`, overflow
+/// above `T::MAX`.
+#[inline(always)]
+pub fn in_range<T: Analog>(v: i128) -> Result<T, u16> {
+    if v < T::MIN {
+        Err(SL_DIAG_VALUE_UNDERFLOW)
+    } else if v > T::MAX {
+        Err(SL_DIAG_VALUE_OVERFLOW)
+    } else {
+        Ok(T::narrow(v))
+    }
+}
+
 /// Magic of the private header of an analog block: its type tag in the analog family's
 /// range, so that every variant (the layouts differ) has its own.
 pub const fn magic(tag: u16) -> u16 {

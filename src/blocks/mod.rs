@@ -21,6 +21,8 @@ pub mod muting;
 pub mod opmode;
 pub mod or;
 pub mod rs;
+pub mod scale;
+pub mod speed;
 pub mod sr;
 pub mod timer;
 pub mod tof;

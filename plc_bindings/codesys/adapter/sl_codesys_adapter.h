@@ -619,6 +619,126 @@ typedef struct tagcds_sl_limit_udint_cycle_struct {
 } cds_sl_limit_udint_cycle_struct;
 void CDECL CDECL_EXT cds_sl_limit_udint_cycle(cds_sl_limit_udint_cycle_struct *p);
 
+/* FUNCTION cds_sl_scale_int_init : DINT -> sl_scale_int_init() */
+typedef struct tagcds_sl_scale_int_init_struct {
+    struct FB_SCALE_INT *pFb; /* VAR_INPUT pFb : POINTER TO ST_FB_SCALE_INT */
+    int32_t cds_sl_scale_int_init; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_scale_int_init_struct;
+void CDECL CDECL_EXT cds_sl_scale_int_init(cds_sl_scale_int_init_struct *p);
+
+/* FUNCTION cds_sl_scale_int_cycle : DINT -> sl_scale_int_cycle() */
+typedef struct tagcds_sl_scale_int_cycle_struct {
+    struct FB_SCALE_INT *pFb; /* VAR_INPUT pFb : POINTER TO ST_FB_SCALE_INT */
+    uint32_t tNow; /* VAR_INPUT tNow : UDINT */
+    int32_t cds_sl_scale_int_cycle; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_scale_int_cycle_struct;
+void CDECL CDECL_EXT cds_sl_scale_int_cycle(cds_sl_scale_int_cycle_struct *p);
+
+/* FUNCTION cds_sl_scale_uint_init : DINT -> sl_scale_uint_init() */
+typedef struct tagcds_sl_scale_uint_init_struct {
+    struct FB_SCALE_UINT *pFb; /* VAR_INPUT pFb : POINTER TO ST_FB_SCALE_UINT */
+    int32_t cds_sl_scale_uint_init; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_scale_uint_init_struct;
+void CDECL CDECL_EXT cds_sl_scale_uint_init(cds_sl_scale_uint_init_struct *p);
+
+/* FUNCTION cds_sl_scale_uint_cycle : DINT -> sl_scale_uint_cycle() */
+typedef struct tagcds_sl_scale_uint_cycle_struct {
+    struct FB_SCALE_UINT *pFb; /* VAR_INPUT pFb : POINTER TO ST_FB_SCALE_UINT */
+    uint32_t tNow; /* VAR_INPUT tNow : UDINT */
+    int32_t cds_sl_scale_uint_cycle; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_scale_uint_cycle_struct;
+void CDECL CDECL_EXT cds_sl_scale_uint_cycle(cds_sl_scale_uint_cycle_struct *p);
+
+/* FUNCTION cds_sl_scale_dint_init : DINT -> sl_scale_dint_init() */
+typedef struct tagcds_sl_scale_dint_init_struct {
+    struct FB_SCALE_DINT *pFb; /* VAR_INPUT pFb : POINTER TO ST_FB_SCALE_DINT */
+    int32_t cds_sl_scale_dint_init; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_scale_dint_init_struct;
+void CDECL CDECL_EXT cds_sl_scale_dint_init(cds_sl_scale_dint_init_struct *p);
+
+/* FUNCTION cds_sl_scale_dint_cycle : DINT -> sl_scale_dint_cycle() */
+typedef struct tagcds_sl_scale_dint_cycle_struct {
+    struct FB_SCALE_DINT *pFb; /* VAR_INPUT pFb : POINTER TO ST_FB_SCALE_DINT */
+    uint32_t tNow; /* VAR_INPUT tNow : UDINT */
+    int32_t cds_sl_scale_dint_cycle; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_scale_dint_cycle_struct;
+void CDECL CDECL_EXT cds_sl_scale_dint_cycle(cds_sl_scale_dint_cycle_struct *p);
+
+/* FUNCTION cds_sl_scale_udint_init : DINT -> sl_scale_udint_init() */
+typedef struct tagcds_sl_scale_udint_init_struct {
+    struct FB_SCALE_UDINT *pFb; /* VAR_INPUT pFb : POINTER TO ST_FB_SCALE_UDINT */
+    int32_t cds_sl_scale_udint_init; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_scale_udint_init_struct;
+void CDECL CDECL_EXT cds_sl_scale_udint_init(cds_sl_scale_udint_init_struct *p);
+
+/* FUNCTION cds_sl_scale_udint_cycle : DINT -> sl_scale_udint_cycle() */
+typedef struct tagcds_sl_scale_udint_cycle_struct {
+    struct FB_SCALE_UDINT *pFb; /* VAR_INPUT pFb : POINTER TO ST_FB_SCALE_UDINT */
+    uint32_t tNow; /* VAR_INPUT tNow : UDINT */
+    int32_t cds_sl_scale_udint_cycle; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_scale_udint_cycle_struct;
+void CDECL CDECL_EXT cds_sl_scale_udint_cycle(cds_sl_scale_udint_cycle_struct *p);
+
+/* FUNCTION cds_sl_speed_int_init : DINT -> sl_speed_int_init() */
+typedef struct tagcds_sl_speed_int_init_struct {
+    struct FB_SPEED_INT *pFb; /* VAR_INPUT pFb : POINTER TO ST_FB_SPEED_INT */
+    int32_t cds_sl_speed_int_init; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_speed_int_init_struct;
+void CDECL CDECL_EXT cds_sl_speed_int_init(cds_sl_speed_int_init_struct *p);
+
+/* FUNCTION cds_sl_speed_int_cycle : DINT -> sl_speed_int_cycle() */
+typedef struct tagcds_sl_speed_int_cycle_struct {
+    struct FB_SPEED_INT *pFb; /* VAR_INPUT pFb : POINTER TO ST_FB_SPEED_INT */
+    uint32_t tNow; /* VAR_INPUT tNow : UDINT */
+    int32_t cds_sl_speed_int_cycle; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_speed_int_cycle_struct;
+void CDECL CDECL_EXT cds_sl_speed_int_cycle(cds_sl_speed_int_cycle_struct *p);
+
+/* FUNCTION cds_sl_speed_uint_init : DINT -> sl_speed_uint_init() */
+typedef struct tagcds_sl_speed_uint_init_struct {
+    struct FB_SPEED_UINT *pFb; /* VAR_INPUT pFb : POINTER TO ST_FB_SPEED_UINT */
+    int32_t cds_sl_speed_uint_init; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_speed_uint_init_struct;
+void CDECL CDECL_EXT cds_sl_speed_uint_init(cds_sl_speed_uint_init_struct *p);
+
+/* FUNCTION cds_sl_speed_uint_cycle : DINT -> sl_speed_uint_cycle() */
+typedef struct tagcds_sl_speed_uint_cycle_struct {
+    struct FB_SPEED_UINT *pFb; /* VAR_INPUT pFb : POINTER TO ST_FB_SPEED_UINT */
+    uint32_t tNow; /* VAR_INPUT tNow : UDINT */
+    int32_t cds_sl_speed_uint_cycle; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_speed_uint_cycle_struct;
+void CDECL CDECL_EXT cds_sl_speed_uint_cycle(cds_sl_speed_uint_cycle_struct *p);
+
+/* FUNCTION cds_sl_speed_dint_init : DINT -> sl_speed_dint_init() */
+typedef struct tagcds_sl_speed_dint_init_struct {
+    struct FB_SPEED_DINT *pFb; /* VAR_INPUT pFb : POINTER TO ST_FB_SPEED_DINT */
+    int32_t cds_sl_speed_dint_init; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_speed_dint_init_struct;
+void CDECL CDECL_EXT cds_sl_speed_dint_init(cds_sl_speed_dint_init_struct *p);
+
+/* FUNCTION cds_sl_speed_dint_cycle : DINT -> sl_speed_dint_cycle() */
+typedef struct tagcds_sl_speed_dint_cycle_struct {
+    struct FB_SPEED_DINT *pFb; /* VAR_INPUT pFb : POINTER TO ST_FB_SPEED_DINT */
+    uint32_t tNow; /* VAR_INPUT tNow : UDINT */
+    int32_t cds_sl_speed_dint_cycle; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_speed_dint_cycle_struct;
+void CDECL CDECL_EXT cds_sl_speed_dint_cycle(cds_sl_speed_dint_cycle_struct *p);
+
+/* FUNCTION cds_sl_speed_udint_init : DINT -> sl_speed_udint_init() */
+typedef struct tagcds_sl_speed_udint_init_struct {
+    struct FB_SPEED_UDINT *pFb; /* VAR_INPUT pFb : POINTER TO ST_FB_SPEED_UDINT */
+    int32_t cds_sl_speed_udint_init; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_speed_udint_init_struct;
+void CDECL CDECL_EXT cds_sl_speed_udint_init(cds_sl_speed_udint_init_struct *p);
+
+/* FUNCTION cds_sl_speed_udint_cycle : DINT -> sl_speed_udint_cycle() */
+typedef struct tagcds_sl_speed_udint_cycle_struct {
+    struct FB_SPEED_UDINT *pFb; /* VAR_INPUT pFb : POINTER TO ST_FB_SPEED_UDINT */
+    uint32_t tNow; /* VAR_INPUT tNow : UDINT */
+    int32_t cds_sl_speed_udint_cycle; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_speed_udint_cycle_struct;
+void CDECL CDECL_EXT cds_sl_speed_udint_cycle(cds_sl_speed_udint_cycle_struct *p);
+
 /* FUNCTION cds_sl_counter_int_init : DINT -> sl_counter_int_init() */
 typedef struct tagcds_sl_counter_int_init_struct {
     struct FB_COUNTER_INT *pFb; /* VAR_INPUT pFb : POINTER TO ST_FB_COUNTER_INT */
@@ -850,6 +970,22 @@ void CDECL CDECL_EXT cds_sl_group_cycle(cds_sl_group_cycle_struct *p);
     X(cds_sl_limit_dint_cycle) \
     X(cds_sl_limit_udint_init) \
     X(cds_sl_limit_udint_cycle) \
+    X(cds_sl_scale_int_init) \
+    X(cds_sl_scale_int_cycle) \
+    X(cds_sl_scale_uint_init) \
+    X(cds_sl_scale_uint_cycle) \
+    X(cds_sl_scale_dint_init) \
+    X(cds_sl_scale_dint_cycle) \
+    X(cds_sl_scale_udint_init) \
+    X(cds_sl_scale_udint_cycle) \
+    X(cds_sl_speed_int_init) \
+    X(cds_sl_speed_int_cycle) \
+    X(cds_sl_speed_uint_init) \
+    X(cds_sl_speed_uint_cycle) \
+    X(cds_sl_speed_dint_init) \
+    X(cds_sl_speed_dint_cycle) \
+    X(cds_sl_speed_udint_init) \
+    X(cds_sl_speed_udint_cycle) \
     X(cds_sl_counter_int_init) \
     X(cds_sl_counter_int_cycle) \
     X(cds_sl_counter_uint_init) \
