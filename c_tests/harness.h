@@ -89,6 +89,7 @@ void run_opmode_scenarios(void);
 void run_twohand_scenarios(void);
 void run_muting_scenarios(void);
 void run_arith_scenarios(void);
+void run_scale_speed_scenarios(void);
 void run_edm_scenarios(void);
 void run_flipflop_scenarios(void);
 void run_timer_scenarios(void);

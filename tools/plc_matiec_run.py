@@ -109,6 +109,19 @@ for _v in ("INT", "UINT", "DINT", "UDINT"):
                  nCompIn1=10, nCompIn2=11, nCompIn3=40), pulse=None,
         change=("nAllowedDeviation", 3), run={1, 8})
 
+# SCALE in every variant: 5 · 3 ÷ 2 + 1 (RUN); changing the offset while running is the error.
+for _v in ("INT", "UINT", "DINT", "UDINT"):
+    BLOCKS[f"SCALE_{_v}"] = dict(
+        cfg=dict(wInputActive=0x100, nNumerator=3, nDenominator=2, nOffset=1, nAnalogIn=5),
+        pulse=None, change=("nOffset", 2), run={1})
+
+# SPEED in every variant: a standing position (RUN, Speed 0); changing the interval while
+# running is the error.
+for _v in ("INT", "UINT", "DINT", "UDINT"):
+    BLOCKS[f"SPEED_{_v}"] = dict(
+        cfg=dict(wInputActive=0x100, tTimeInterval=20, nPosition=5), pulse=None,
+        change=("tTimeInterval", 21), run={1})
+
 
 BLOCK_INPUTS = {}  # block -> its BOOL inputs (filled from the header in main)
 
