@@ -415,6 +415,43 @@ fn main() {
         "COMPARE_UDINT", FB_COMPARE_UDINT, SL_TYPE_COMPARE_UDINT, sl_compare_udint_cycle;
     }
 
+    // SCALE, one row per width: x · 3 ÷ 4 + 5 with rounding and the StuckAt watchdog on
+    // (steady input: the watchdog expires and holds), DINT dividing first with negation.
+    macro_rules! scale_row {
+        ($($name:literal, $ty:ty, $tag:expr, $cycle:ident, $negated:expr, $options:expr;)*) => {$(
+            let mut fb = <$ty>::default();
+            (fb.wInputActive, fb.wInputNegated, fb.dwOptions) = (SL_SCALE_ACTIVE_ANALOGIN, $negated, $options);
+            (fb.nNumerator, fb.nDenominator, fb.nOffset) = (3, 4, 5);
+            (fb.nRounding, fb.tWatchdog, fb.nAnalogIn, fb.bRun) = (SL_ROUNDING_ROUND, 100, 1_000, 1);
+            fb.init();
+            let private = size_of_val(&fb.stPrivate);
+            rows.push(measure(($name, $tag, logic), batches, fb, private, $cycle, |f| f.nState));
+        )*};
+    }
+    use safelogic::blocks::scale::*;
+    scale_row! {
+        "SCALE_INT", FB_SCALE_INT, SL_TYPE_SCALE_INT, sl_scale_int_cycle, 0, 0;
+        "SCALE_DINT", FB_SCALE_DINT, SL_TYPE_SCALE_DINT, sl_scale_dint_cycle, SL_SCALE_NEGATE_ANALOGIN, SL_OPT_SCALE_DIVISION_FIRST;
+    }
+
+    // SPEED, one row per width: a standing position, a 10 ms interval (an update every tenth
+    // call), UDINT with the overflow check.
+    macro_rules! speed_row {
+        ($($name:literal, $ty:ty, $tag:expr, $cycle:ident, $options:expr;)*) => {$(
+            let mut fb = <$ty>::default();
+            (fb.wInputActive, fb.tTimeInterval, fb.dwOptions) = (SL_SPEED_ACTIVE_POSITION, 10, $options);
+            (fb.nPosition, fb.bRun) = (1_000, 1);
+            fb.init();
+            let private = size_of_val(&fb.stPrivate);
+            rows.push(measure(($name, $tag, logic), batches, fb, private, $cycle, |f| f.nState));
+        )*};
+    }
+    use safelogic::blocks::speed::*;
+    speed_row! {
+        "SPEED_INT", FB_SPEED_INT, SL_TYPE_SPEED_INT, sl_speed_int_cycle, 0;
+        "SPEED_UDINT", FB_SPEED_UDINT, SL_TYPE_SPEED_UDINT, sl_speed_udint_cycle, SL_OPT_SPEED_OVERFLOW_CHECK;
+    }
+
     // COUNTER, one row per width: all inputs active, steady (no edge), counting from 0.
     macro_rules! counter_row {
         ($($name:literal, $ty:ty, $tag:expr, $cycle:ident;)*) => {$(
