@@ -14,3 +14,4 @@
 #include "test_flipflop.c"
 #include "test_timers.c"
 #include "test_arith.c"
+#include "test_sli.c"

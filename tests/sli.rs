@@ -20,7 +20,12 @@ sli_tests!(udint, FB_SLI_UDINT, u32, i32, false);
 /// at RESET and a stored 7 is a corrupt state.
 #[test]
 fn sli_has_no_exceeded_state() {
-    for tag in [SL_TYPE_SLI_INT, SL_TYPE_SLI_UINT, SL_TYPE_SLI_DINT, SL_TYPE_SLI_UDINT] {
+    for tag in [
+        SL_TYPE_SLI_INT,
+        SL_TYPE_SLI_UINT,
+        SL_TYPE_SLI_DINT,
+        SL_TYPE_SLI_UDINT,
+    ] {
         let info = blocks::info(tag).unwrap();
         let states: Vec<u8> = info.states.iter().map(|s| s.0).collect();
         assert_eq!(states, [1, 2, 3, 4, 5]);
@@ -39,7 +44,10 @@ fn sli_has_no_exceeded_state() {
     fb.nState = SL_STATE_SLI2_EXCEEDED;
     fb.stPrivate.stHeader.nState = SL_STATE_SLI2_EXCEEDED;
     assert_eq!(fb.cycle(1), SL_E_CORRUPT);
-    assert_eq!((fb.nState, fb.bError, fb.bSLIActive), (SL_STATE_ERROR, 1, 0));
+    assert_eq!(
+        (fb.nState, fb.bError, fb.bSLIActive),
+        (SL_STATE_ERROR, 1, 0)
+    );
 }
 
 /// §4.27.2 diag values and the texts behind `sl_diag_text`.
@@ -54,7 +62,10 @@ fn diag_texts() {
     assert_eq!(text(0), "No diagnostic information");
     assert_eq!(text(1), "Underflow (PositionDiff < -NegLimit)");
     assert_eq!(text(2), "Overflow (PositionDiff > PosLimit)");
-    assert_eq!((SL_TEXT_SLI_UNDERFLOW, SL_TEXT_SLI_OVERFLOW), (0x40C0, 0x40C1));
+    assert_eq!(
+        (SL_TEXT_SLI_UNDERFLOW, SL_TEXT_SLI_OVERFLOW),
+        (0x40C0, 0x40C1)
+    );
 }
 
 /// UINT positions: PositionDiff is INT16 (ABI-2 §10.3 TS); a move below the latch is a

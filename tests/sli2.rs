@@ -37,7 +37,10 @@ fn exceeded_instead_of_error() {
     let mut fb = latched::<FB_SLI2_DINT>(10, 20, EXC, 1000);
     assert_eq!(call(&mut fb, 2, 1, 1011, 1, 0), SL_OK);
     let o = outs(&fb);
-    assert_eq!((o.state, o.error, o.active, o.below, o.above, o.diff), (7, 0, 0, 0, 1, 11));
+    assert_eq!(
+        (o.state, o.error, o.active, o.below, o.above, o.diff),
+        (7, 0, 0, 0, 1, 11)
+    );
     assert_eq!((o.diag, o.text, o.par), (0, 0, (0, 0)));
     assert_eq!(fb.state_name(), "EXCEEDED");
     // The difference stays live in EXCEEDED, the side with it.
@@ -47,7 +50,10 @@ fn exceeded_instead_of_error() {
     // Back inside: still EXCEEDED (left only by SLI FALSE), neither side.
     assert_eq!(call(&mut fb, 4, 1, 1000, 1, 0), SL_OK);
     let o = outs(&fb);
-    assert_eq!((o.state, o.active, o.below, o.above, o.diff), (7, 0, 0, 0, 0));
+    assert_eq!(
+        (o.state, o.active, o.below, o.above, o.diff),
+        (7, 0, 0, 0, 0)
+    );
     // ErrAck does nothing in EXCEEDED.
     assert_eq!(call(&mut fb, 5, 1, 1000, 1, 1), SL_OK);
     assert_eq!(call(&mut fb, 6, 1, 1000, 1, 0), SL_OK);
@@ -55,7 +61,10 @@ fn exceeded_instead_of_error() {
     // SLI FALSE → SAFE; a new edge → RUN.
     assert_eq!(call(&mut fb, 7, 0, 1000, 1, 0), SL_OK);
     let o = outs(&fb);
-    assert_eq!((o.state, o.below, o.above, o.diff), (SL_STATE_SAFE, 0, 0, 0));
+    assert_eq!(
+        (o.state, o.below, o.above, o.diff),
+        (SL_STATE_SAFE, 0, 0, 0)
+    );
     assert_eq!(call(&mut fb, 8, 1, 5000, 1, 0), SL_OK);
     assert_eq!((outs(&fb).state, outs(&fb).diff), (SL_STATE_RUN, 0));
 }
@@ -68,7 +77,10 @@ fn exceeded_stops_with_run() {
     assert_eq!(outs(&fb).below, 1);
     assert_eq!(call(&mut fb, 3, 1, -2, 0, 0), SL_OK);
     let o = outs(&fb);
-    assert_eq!((o.state, o.below, o.above, o.diff), (SL_STATE_STOP, 0, 0, 0));
+    assert_eq!(
+        (o.state, o.below, o.above, o.diff),
+        (SL_STATE_STOP, 0, 0, 0)
+    );
 }
 
 /// PositionDiff in EXCEEDED saturates to INT16/INT32 (ABI-2 §11.10, semantics SI7).
@@ -76,7 +88,10 @@ fn exceeded_stops_with_run() {
 fn exceeded_difference_saturates_to_the_output_type() {
     let mut fb = latched::<FB_SLI2_UINT>(10, 10, EXC, 0);
     assert_eq!(call(&mut fb, 2, 1, 65_535, 1, 0), SL_OK);
-    assert_eq!((outs(&fb).state, outs(&fb).diff, outs(&fb).above), (7, 32_767, 1));
+    assert_eq!(
+        (outs(&fb).state, outs(&fb).diff, outs(&fb).above),
+        (7, 32_767, 1)
+    );
     let mut fb = latched::<FB_SLI2_UDINT>(10, 10, EXC, u32::MAX as i128);
     assert_eq!(call(&mut fb, 2, 1, 0, 1, 0), SL_OK);
     assert_eq!((outs(&fb).diff, outs(&fb).below), (i64::from(i32::MIN), 1));
@@ -92,7 +107,10 @@ fn below_and_above_only_in_exceeded() {
     let mut fb = latched::<FB_SLI2_DINT>(10, 10, 0, 0);
     assert_eq!(call(&mut fb, 2, 1, 11, 1, 0), SL_OK);
     let o = outs(&fb);
-    assert_eq!((o.state, o.error, o.below, o.above, o.diag), (4, 1, 0, 0, 2));
+    assert_eq!(
+        (o.state, o.error, o.below, o.above, o.diag),
+        (4, 1, 0, 0, 2)
+    );
     assert_eq!(o.text, u32::from(SL_TEXT_SLI_OVERFLOW));
 }
 
@@ -119,7 +137,10 @@ fn overflow_allowed_takes_the_short_way_round() {
     assert_eq!((outs(&fb).diff, outs(&fb).state), (-1, SL_STATE_RUN));
     // Half the circle away: the most negative difference, beyond any limit.
     assert_eq!(call(&mut fb, 3, 1, 0, 1, 0), SL_OK);
-    assert_eq!((outs(&fb).state, outs(&fb).below, outs(&fb).diff), (7, 1, i64::from(i32::MIN)));
+    assert_eq!(
+        (outs(&fb).state, outs(&fb).below, outs(&fb).diff),
+        (7, 1, i64::from(i32::MIN))
+    );
 }
 
 /// Only bits 8 and 9 of `dwOptions` exist (ABI-2 §11.10); any other is SL_E_CONFIG.
@@ -145,8 +166,18 @@ fn option_change_while_running_is_an_error() {
 /// The state table of SLI2 (§4.28.2.3) and its name.
 #[test]
 fn states_and_names() {
-    for tag in [SL_TYPE_SLI2_INT, SL_TYPE_SLI2_UINT, SL_TYPE_SLI2_DINT, SL_TYPE_SLI2_UDINT] {
-        let states: Vec<u8> = blocks::info(tag).unwrap().states.iter().map(|s| s.0).collect();
+    for tag in [
+        SL_TYPE_SLI2_INT,
+        SL_TYPE_SLI2_UINT,
+        SL_TYPE_SLI2_DINT,
+        SL_TYPE_SLI2_UDINT,
+    ] {
+        let states: Vec<u8> = blocks::info(tag)
+            .unwrap()
+            .states
+            .iter()
+            .map(|s| s.0)
+            .collect();
         assert_eq!(states, [1, 2, 3, 4, 5, 7]);
         assert_eq!(state_name(tag, 7), "EXCEEDED");
     }

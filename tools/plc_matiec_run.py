@@ -109,6 +109,15 @@ for _v in ("INT", "UINT", "DINT", "UDINT"):
                  nCompIn1=10, nCompIn2=11, nCompIn3=40), pulse=None,
         change=("nAllowedDeviation", 3), run={1, 8})
 
+# SLI and SLI2 in every variant: SLI held TRUE from its rising edge (the latch) keeps RUN;
+# released before the ErrAck, since RESET is only left with SLI FALSE; changing Limit pos
+# while running is the error.
+for _b in ("SLI", "SLI2"):
+    for _v in ("INT", "UINT", "DINT", "UDINT"):
+        BLOCKS[f"{_b}_{_v}"] = dict(
+            cfg=dict(wInputActive=0x101, nLimitPos=10, nLimitNeg=10, nPosition=5),
+            pulse=("bSLI",), hold=True, change=("nLimitPos", 11), run={1})
+
 
 BLOCK_INPUTS = {}  # block -> its BOOL inputs (filled from the header in main)
 
