@@ -487,6 +487,27 @@ fn main() {
         "VIOCNT_UDINT", FB_VIOLATIONCOUNTER_UDINT, SL_TYPE_VIOLATIONCOUNTER_UDINT, sl_violationcounter_udint_cycle;
     }
 
+    // SLI and SLI2, one row per width: SLI TRUE since the first call (latched), the
+    // position inside the window (RUN); SLI2 with both options.
+    macro_rules! sli_row {
+        ($($name:literal, $ty:ty, $tag:expr, $cycle:ident $(, $options:expr)?;)*) => {$(
+            let mut fb = <$ty>::default();
+            (fb.wInputActive, fb.nLimitPos, fb.nLimitNeg) = (SL_SLI_ACTIVE, 100, 100);
+            $(fb.dwOptions = $options;)?
+            (fb.nPosition, fb.bSLI, fb.bRun) = (1_000, 1, 1);
+            fb.init();
+            let private = size_of_val(&fb.stPrivate);
+            rows.push(measure(($name, $tag, logic), batches, fb, private, $cycle, |f| f.nState));
+        )*};
+    }
+    use safelogic::blocks::{sli::*, sli2::*};
+    sli_row! {
+        "SLI_INT", FB_SLI_INT, SL_TYPE_SLI_INT, sl_sli_int_cycle;
+        "SLI_UDINT", FB_SLI_UDINT, SL_TYPE_SLI_UDINT, sl_sli_udint_cycle;
+        "SLI2_UINT", FB_SLI2_UINT, SL_TYPE_SLI2_UINT, sl_sli2_uint_cycle,
+            SL_OPT_SLI2_OVERFLOW_ALLOWED | SL_OPT_SLI2_EXCEEDED_SUPPORT;
+    }
+
     let cpu = std::fs::read_to_string("/proc/cpuinfo")
         .ok()
         .and_then(|s| {

@@ -15,3 +15,4 @@
 #include "test_timers.c"
 #include "test_arith.c"
 #include "test_scale_speed.c"
+#include "test_sli.c"

@@ -246,6 +246,7 @@ int main(void)
     run_timer_scenarios();
     run_arith_scenarios();
     run_scale_speed_scenarios();
+    run_sli_scenarios();
     printf("%d passed, %d failed\n", h_passed, h_failed);
     return h_failed == 0 ? 0 : 1;
 }

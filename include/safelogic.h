@@ -534,6 +534,79 @@
 #define SL_SPEED_ACTIVE_POSITION (1 << 8)
 
 /*
+ Type tag of FB_SLI_INT (ABI-2 §10.6: sequential in the order of §10.3).
+ */
+#define SL_TYPE_SLI_INT 60
+
+/*
+ FB_SLI_UINT.
+ */
+#define SL_TYPE_SLI_UINT 61
+
+/*
+ FB_SLI_DINT.
+ */
+#define SL_TYPE_SLI_DINT 62
+
+/*
+ FB_SLI_UDINT.
+ */
+#define SL_TYPE_SLI_UDINT 63
+
+/*
+ Diag message "An underflow has occurred" (parameters: Position, LatchPosition); FB SLI2
+ reports it too.
+ */
+#define SL_TEXT_SLI_UNDERFLOW 16576
+
+/*
+ Diag message "An overflow has occurred" (parameters: Position, LatchPosition).
+ */
+#define SL_TEXT_SLI_OVERFLOW 16577
+
+/*
+ `wInputActive` of FB_SLI and FB_SLI2: SLI (bit 0) and Position (bit 8), both required,
+ no other bit (ABI-2 §11.9 "bits 0, 8 must be set").
+ */
+#define SL_SLI_ACTIVE 257
+
+/*
+ Type tag of FB_SLI2_INT (ABI-2 §10.6: sequential in the order of §10.3).
+ */
+#define SL_TYPE_SLI2_INT 64
+
+/*
+ FB_SLI2_UINT.
+ */
+#define SL_TYPE_SLI2_UINT 65
+
+/*
+ FB_SLI2_DINT.
+ */
+#define SL_TYPE_SLI2_DINT 66
+
+/*
+ FB_SLI2_UDINT.
+ */
+#define SL_TYPE_SLI2_UDINT 67
+
+/*
+ FB_SLI2 state EXCEEDED (manual §4.28.2.3: 7): the position left the window with
+ `SL_OPT_SLI2_EXCEEDED_SUPPORT`; left only by SLI FALSE (→ SAFE).
+ */
+#define SL_STATE_SLI2_EXCEEDED 7
+
+/*
+ `dwOptions` "OverflowAllowed": PositionDiff modulo 2^W in the signed range.
+ */
+#define SL_OPT_SLI2_OVERFLOW_ALLOWED (1 << 8)
+
+/*
+ `dwOptions` "ExceededSupport": leaving the window in RUN enters EXCEEDED, not ERROR.
+ */
+#define SL_OPT_SLI2_EXCEEDED_SUPPORT (1 << 9)
+
+/*
  Block type tag of FB_SR.
  */
 #define SL_TYPE_SR 12
@@ -6749,6 +6822,945 @@ typedef struct FB_COUNTER_UDINT {
 
 
 /*
+ Private state of FB SLI and FB SLI2 (64 bytes). Never written by the user.
+ */
+typedef struct SL_SLI_PRIVATE {
+  /*
+   Common head (`wAux` bit 0: previous SLI level; bits 1, 2: below / above the window
+   in EXCEEDED).
+   */
+  struct SL_PRIVATE_HEADER stHeader;
+  /*
+   Latched `wInputActive`.
+   */
+  uint16_t wActive;
+  /*
+   Reserved.
+   */
+  uint8_t aReserved[2];
+  /*
+   Latched `nLimitPos`, `nLimitNeg`.
+   */
+  uint32_t adwLimit[2];
+  /*
+   Latched `dwOptions` (0 for SLI).
+   */
+  uint32_t dwOptions;
+  /*
+   LatchPosition as a 32-bit pattern of the position type.
+   */
+  uint32_t dwLatch;
+  /*
+   Complement of `dwLatch`: a corrupted latch must not move the window unnoticed.
+   */
+  uint32_t dwLatchCheck;
+  /*
+   PositionDiff of the last running cycle as a 32-bit pattern of the output type.
+   */
+  uint32_t dwDiff;
+  /*
+   Diag message parameters 2 and 3 (Position, LatchPosition) latched at the ERROR entry.
+   */
+  uint32_t adwPar[2];
+} SL_SLI_PRIVATE;
+
+/*
+ FB SLI instance (ABI-2 §11.9), generic over the Position type `T` and the PositionDiff
+ type `TS`; `P1` and `P2` are the reserved gaps (after Position, after PositionDiff) that
+ make the 16- and 32-bit layouts differ. Size: 136 bytes.
+ */
+typedef struct FB_SLI_INT {
+  /*
+   Offset 0. SLI: a rising edge saves Position and starts the monitoring; TRUE keeps it
+   on (active bit 0, required).
+   */
+  SL_BOOL bSLI;
+  /*
+   Offset 1. Reserved, keep 0.
+   */
+  uint8_t aReserved0[15];
+  /*
+   Offset 16. FbRun of the owning group: TRUE = the block executes.
+   */
+  SL_BOOL bRun;
+  /*
+   Offset 17. ErrAck of the owning group.
+   */
+  SL_BOOL bErrAck;
+  /*
+   Offset 18. Reserved, keep 0.
+   */
+  uint8_t aReserved1[6];
+  /*
+   Offset 24 (analog input base). Position (active bit 8, required).
+   */
+  int16_t nPosition;
+  /*
+   Reserved up to the parameters (16-bit: 2 bytes, 32-bit: none).
+   */
+  uint8_t aReserved2[2];
+  /*
+   Offset 28. "Limit pos": permitted deviation above LatchPosition, ≤ the maximum of TS.
+   */
+  uint32_t nLimitPos;
+  /*
+   Offset 32. "Limit neg": permitted deviation below LatchPosition (a magnitude), ≤ the
+   maximum of TS.
+   */
+  uint32_t nLimitNeg;
+  /*
+   Offset 36. Exactly bits 0 and 8 (SL_SLI_ACTIVE).
+   */
+  uint16_t wInputActive;
+  /*
+   Offset 38. Reserved.
+   */
+  uint8_t aReserved3[2];
+  /*
+   Offset 40 (output base). Error, TRUE in ERROR only.
+   */
+  SL_BOOL bError;
+  /*
+   Offset 41. SLIActive: TRUE in RUN (SLI TRUE, PositionDiff within the limits).
+   */
+  SL_BOOL bSLIActive;
+  /*
+   Offset 42. Reserved.
+   */
+  uint8_t aReserved4[6];
+  /*
+   Offset 48 (analog output base). PositionDiff = Position − LatchPosition in RUN,
+   else 0.
+   */
+  int16_t nPositionDiff;
+  /*
+   Reserved up to the info data (16-bit: 6 bytes, 32-bit: 4).
+   */
+  uint8_t aReserved5[6];
+  /*
+   Offset 56. The manual's status value (RUN, STOP, SAFE, ERROR, RESET).
+   */
+  uint8_t nState;
+  /*
+   Offset 57. Reserved.
+   */
+  uint8_t aReserved6[1];
+  /*
+   Offset 58. Diag value (1 underflow, 2 overflow) + library bits 13-15.
+   */
+  uint16_t nDiag;
+  /*
+   Offset 60. Text ID of the latched diag message (0x40C0, 0x40C1), 0 = none.
+   */
+  uint16_t nDiagTextId;
+  /*
+   Offset 62. Reserved.
+   */
+  uint8_t aReserved7[2];
+  /*
+   Offset 64. Message parameter 2: Position as a 32-bit pattern.
+   */
+  uint32_t dwDiagPar2;
+  /*
+   Offset 68. Message parameter 3: LatchPosition.
+   */
+  uint32_t dwDiagPar3;
+  /*
+   Offset 72. Private state, 64 bytes: never write it.
+   */
+  struct SL_SLI_PRIVATE stPrivate;
+} FB_SLI_INT;
+
+
+/*
+ FB SLI instance (ABI-2 §11.9), generic over the Position type `T` and the PositionDiff
+ type `TS`; `P1` and `P2` are the reserved gaps (after Position, after PositionDiff) that
+ make the 16- and 32-bit layouts differ. Size: 136 bytes.
+ */
+typedef struct FB_SLI_UINT {
+  /*
+   Offset 0. SLI: a rising edge saves Position and starts the monitoring; TRUE keeps it
+   on (active bit 0, required).
+   */
+  SL_BOOL bSLI;
+  /*
+   Offset 1. Reserved, keep 0.
+   */
+  uint8_t aReserved0[15];
+  /*
+   Offset 16. FbRun of the owning group: TRUE = the block executes.
+   */
+  SL_BOOL bRun;
+  /*
+   Offset 17. ErrAck of the owning group.
+   */
+  SL_BOOL bErrAck;
+  /*
+   Offset 18. Reserved, keep 0.
+   */
+  uint8_t aReserved1[6];
+  /*
+   Offset 24 (analog input base). Position (active bit 8, required).
+   */
+  uint16_t nPosition;
+  /*
+   Reserved up to the parameters (16-bit: 2 bytes, 32-bit: none).
+   */
+  uint8_t aReserved2[2];
+  /*
+   Offset 28. "Limit pos": permitted deviation above LatchPosition, ≤ the maximum of TS.
+   */
+  uint32_t nLimitPos;
+  /*
+   Offset 32. "Limit neg": permitted deviation below LatchPosition (a magnitude), ≤ the
+   maximum of TS.
+   */
+  uint32_t nLimitNeg;
+  /*
+   Offset 36. Exactly bits 0 and 8 (SL_SLI_ACTIVE).
+   */
+  uint16_t wInputActive;
+  /*
+   Offset 38. Reserved.
+   */
+  uint8_t aReserved3[2];
+  /*
+   Offset 40 (output base). Error, TRUE in ERROR only.
+   */
+  SL_BOOL bError;
+  /*
+   Offset 41. SLIActive: TRUE in RUN (SLI TRUE, PositionDiff within the limits).
+   */
+  SL_BOOL bSLIActive;
+  /*
+   Offset 42. Reserved.
+   */
+  uint8_t aReserved4[6];
+  /*
+   Offset 48 (analog output base). PositionDiff = Position − LatchPosition in RUN,
+   else 0.
+   */
+  int16_t nPositionDiff;
+  /*
+   Reserved up to the info data (16-bit: 6 bytes, 32-bit: 4).
+   */
+  uint8_t aReserved5[6];
+  /*
+   Offset 56. The manual's status value (RUN, STOP, SAFE, ERROR, RESET).
+   */
+  uint8_t nState;
+  /*
+   Offset 57. Reserved.
+   */
+  uint8_t aReserved6[1];
+  /*
+   Offset 58. Diag value (1 underflow, 2 overflow) + library bits 13-15.
+   */
+  uint16_t nDiag;
+  /*
+   Offset 60. Text ID of the latched diag message (0x40C0, 0x40C1), 0 = none.
+   */
+  uint16_t nDiagTextId;
+  /*
+   Offset 62. Reserved.
+   */
+  uint8_t aReserved7[2];
+  /*
+   Offset 64. Message parameter 2: Position as a 32-bit pattern.
+   */
+  uint32_t dwDiagPar2;
+  /*
+   Offset 68. Message parameter 3: LatchPosition.
+   */
+  uint32_t dwDiagPar3;
+  /*
+   Offset 72. Private state, 64 bytes: never write it.
+   */
+  struct SL_SLI_PRIVATE stPrivate;
+} FB_SLI_UINT;
+
+
+/*
+ FB SLI instance (ABI-2 §11.9), generic over the Position type `T` and the PositionDiff
+ type `TS`; `P1` and `P2` are the reserved gaps (after Position, after PositionDiff) that
+ make the 16- and 32-bit layouts differ. Size: 136 bytes.
+ */
+typedef struct FB_SLI_DINT {
+  /*
+   Offset 0. SLI: a rising edge saves Position and starts the monitoring; TRUE keeps it
+   on (active bit 0, required).
+   */
+  SL_BOOL bSLI;
+  /*
+   Offset 1. Reserved, keep 0.
+   */
+  uint8_t aReserved0[15];
+  /*
+   Offset 16. FbRun of the owning group: TRUE = the block executes.
+   */
+  SL_BOOL bRun;
+  /*
+   Offset 17. ErrAck of the owning group.
+   */
+  SL_BOOL bErrAck;
+  /*
+   Offset 18. Reserved, keep 0.
+   */
+  uint8_t aReserved1[6];
+  /*
+   Offset 24 (analog input base). Position (active bit 8, required).
+   */
+  int32_t nPosition;
+  /*
+   Offset 28. "Limit pos": permitted deviation above LatchPosition, ≤ the maximum of TS.
+   */
+  uint32_t nLimitPos;
+  /*
+   Offset 32. "Limit neg": permitted deviation below LatchPosition (a magnitude), ≤ the
+   maximum of TS.
+   */
+  uint32_t nLimitNeg;
+  /*
+   Offset 36. Exactly bits 0 and 8 (SL_SLI_ACTIVE).
+   */
+  uint16_t wInputActive;
+  /*
+   Offset 38. Reserved.
+   */
+  uint8_t aReserved3[2];
+  /*
+   Offset 40 (output base). Error, TRUE in ERROR only.
+   */
+  SL_BOOL bError;
+  /*
+   Offset 41. SLIActive: TRUE in RUN (SLI TRUE, PositionDiff within the limits).
+   */
+  SL_BOOL bSLIActive;
+  /*
+   Offset 42. Reserved.
+   */
+  uint8_t aReserved4[6];
+  /*
+   Offset 48 (analog output base). PositionDiff = Position − LatchPosition in RUN,
+   else 0.
+   */
+  int32_t nPositionDiff;
+  /*
+   Reserved up to the info data (16-bit: 6 bytes, 32-bit: 4).
+   */
+  uint8_t aReserved5[4];
+  /*
+   Offset 56. The manual's status value (RUN, STOP, SAFE, ERROR, RESET).
+   */
+  uint8_t nState;
+  /*
+   Offset 57. Reserved.
+   */
+  uint8_t aReserved6[1];
+  /*
+   Offset 58. Diag value (1 underflow, 2 overflow) + library bits 13-15.
+   */
+  uint16_t nDiag;
+  /*
+   Offset 60. Text ID of the latched diag message (0x40C0, 0x40C1), 0 = none.
+   */
+  uint16_t nDiagTextId;
+  /*
+   Offset 62. Reserved.
+   */
+  uint8_t aReserved7[2];
+  /*
+   Offset 64. Message parameter 2: Position as a 32-bit pattern.
+   */
+  uint32_t dwDiagPar2;
+  /*
+   Offset 68. Message parameter 3: LatchPosition.
+   */
+  uint32_t dwDiagPar3;
+  /*
+   Offset 72. Private state, 64 bytes: never write it.
+   */
+  struct SL_SLI_PRIVATE stPrivate;
+} FB_SLI_DINT;
+
+
+/*
+ FB SLI instance (ABI-2 §11.9), generic over the Position type `T` and the PositionDiff
+ type `TS`; `P1` and `P2` are the reserved gaps (after Position, after PositionDiff) that
+ make the 16- and 32-bit layouts differ. Size: 136 bytes.
+ */
+typedef struct FB_SLI_UDINT {
+  /*
+   Offset 0. SLI: a rising edge saves Position and starts the monitoring; TRUE keeps it
+   on (active bit 0, required).
+   */
+  SL_BOOL bSLI;
+  /*
+   Offset 1. Reserved, keep 0.
+   */
+  uint8_t aReserved0[15];
+  /*
+   Offset 16. FbRun of the owning group: TRUE = the block executes.
+   */
+  SL_BOOL bRun;
+  /*
+   Offset 17. ErrAck of the owning group.
+   */
+  SL_BOOL bErrAck;
+  /*
+   Offset 18. Reserved, keep 0.
+   */
+  uint8_t aReserved1[6];
+  /*
+   Offset 24 (analog input base). Position (active bit 8, required).
+   */
+  uint32_t nPosition;
+  /*
+   Offset 28. "Limit pos": permitted deviation above LatchPosition, ≤ the maximum of TS.
+   */
+  uint32_t nLimitPos;
+  /*
+   Offset 32. "Limit neg": permitted deviation below LatchPosition (a magnitude), ≤ the
+   maximum of TS.
+   */
+  uint32_t nLimitNeg;
+  /*
+   Offset 36. Exactly bits 0 and 8 (SL_SLI_ACTIVE).
+   */
+  uint16_t wInputActive;
+  /*
+   Offset 38. Reserved.
+   */
+  uint8_t aReserved3[2];
+  /*
+   Offset 40 (output base). Error, TRUE in ERROR only.
+   */
+  SL_BOOL bError;
+  /*
+   Offset 41. SLIActive: TRUE in RUN (SLI TRUE, PositionDiff within the limits).
+   */
+  SL_BOOL bSLIActive;
+  /*
+   Offset 42. Reserved.
+   */
+  uint8_t aReserved4[6];
+  /*
+   Offset 48 (analog output base). PositionDiff = Position − LatchPosition in RUN,
+   else 0.
+   */
+  int32_t nPositionDiff;
+  /*
+   Reserved up to the info data (16-bit: 6 bytes, 32-bit: 4).
+   */
+  uint8_t aReserved5[4];
+  /*
+   Offset 56. The manual's status value (RUN, STOP, SAFE, ERROR, RESET).
+   */
+  uint8_t nState;
+  /*
+   Offset 57. Reserved.
+   */
+  uint8_t aReserved6[1];
+  /*
+   Offset 58. Diag value (1 underflow, 2 overflow) + library bits 13-15.
+   */
+  uint16_t nDiag;
+  /*
+   Offset 60. Text ID of the latched diag message (0x40C0, 0x40C1), 0 = none.
+   */
+  uint16_t nDiagTextId;
+  /*
+   Offset 62. Reserved.
+   */
+  uint8_t aReserved7[2];
+  /*
+   Offset 64. Message parameter 2: Position as a 32-bit pattern.
+   */
+  uint32_t dwDiagPar2;
+  /*
+   Offset 68. Message parameter 3: LatchPosition.
+   */
+  uint32_t dwDiagPar3;
+  /*
+   Offset 72. Private state, 64 bytes: never write it.
+   */
+  struct SL_SLI_PRIVATE stPrivate;
+} FB_SLI_UDINT;
+
+
+/*
+ FB SLI2 instance (ABI-2 §11.10), generic over the Position type `T` and the
+ PositionDiff type `TS`; `P1` and `P2` are the reserved gaps (after Position, after
+ PositionDiff) that make the 16- and 32-bit layouts differ. Size: 144 bytes.
+ */
+typedef struct FB_SLI2_INT {
+  /*
+   Offset 0. SLI: a rising edge saves Position and starts the monitoring; TRUE keeps it
+   on (active bit 0, required).
+   */
+  SL_BOOL bSLI;
+  /*
+   Offset 1. Reserved, keep 0.
+   */
+  uint8_t aReserved0[15];
+  /*
+   Offset 16. FbRun of the owning group: TRUE = the block executes.
+   */
+  SL_BOOL bRun;
+  /*
+   Offset 17. ErrAck of the owning group.
+   */
+  SL_BOOL bErrAck;
+  /*
+   Offset 18. Reserved, keep 0.
+   */
+  uint8_t aReserved1[6];
+  /*
+   Offset 24 (analog input base). Position (active bit 8, required).
+   */
+  int16_t nPosition;
+  /*
+   Reserved up to the parameters (16-bit: 2 bytes, 32-bit: none).
+   */
+  uint8_t aReserved2[2];
+  /*
+   Offset 28. "Limit pos": permitted deviation above LatchPosition, ≤ the maximum of TS.
+   */
+  uint32_t nLimitPos;
+  /*
+   Offset 32. "Limit neg": permitted deviation below LatchPosition (a magnitude), ≤ the
+   maximum of TS.
+   */
+  uint32_t nLimitNeg;
+  /*
+   Offset 36. SL_OPT_SLI2_OVERFLOW_ALLOWED (bit 8), SL_OPT_SLI2_EXCEEDED_SUPPORT (bit 9).
+   */
+  uint32_t dwOptions;
+  /*
+   Offset 40. Exactly bits 0 and 8 (SL_SLI_ACTIVE).
+   */
+  uint16_t wInputActive;
+  /*
+   Offset 42. Reserved.
+   */
+  uint8_t aReserved3[6];
+  /*
+   Offset 48 (output base). Error, TRUE in ERROR only.
+   */
+  SL_BOOL bError;
+  /*
+   Offset 49. SLIActive: TRUE in RUN (SLI TRUE, PositionDiff within the limits).
+   */
+  SL_BOOL bSLIActive;
+  /*
+   Offset 50. BelowMin: in EXCEEDED, PositionDiff < −Limit neg.
+   */
+  SL_BOOL bBelowMin;
+  /*
+   Offset 51. AboveMax: in EXCEEDED, PositionDiff > Limit pos.
+   */
+  SL_BOOL bAboveMax;
+  /*
+   Offset 52. Reserved.
+   */
+  uint8_t aReserved4[4];
+  /*
+   Offset 56 (analog output base). PositionDiff = Position − LatchPosition in RUN and
+   (saturated) in EXCEEDED, else 0.
+   */
+  int16_t nPositionDiff;
+  /*
+   Reserved up to the info data (16-bit: 6 bytes, 32-bit: 4).
+   */
+  uint8_t aReserved5[6];
+  /*
+   Offset 64. The manual's status value (RUN, STOP, SAFE, ERROR, RESET, EXCEEDED).
+   */
+  uint8_t nState;
+  /*
+   Offset 65. Reserved.
+   */
+  uint8_t aReserved6[1];
+  /*
+   Offset 66. Diag value (1 underflow, 2 overflow) + library bits 13-15.
+   */
+  uint16_t nDiag;
+  /*
+   Offset 68. Text ID of the latched diag message (0x40C0, 0x40C1), 0 = none.
+   */
+  uint16_t nDiagTextId;
+  /*
+   Offset 70. Reserved.
+   */
+  uint8_t aReserved7[2];
+  /*
+   Offset 72. Message parameter 2: Position as a 32-bit pattern.
+   */
+  uint32_t dwDiagPar2;
+  /*
+   Offset 76. Message parameter 3: LatchPosition.
+   */
+  uint32_t dwDiagPar3;
+  /*
+   Offset 80. Private state, 64 bytes: never write it.
+   */
+  struct SL_SLI_PRIVATE stPrivate;
+} FB_SLI2_INT;
+
+
+/*
+ FB SLI2 instance (ABI-2 §11.10), generic over the Position type `T` and the
+ PositionDiff type `TS`; `P1` and `P2` are the reserved gaps (after Position, after
+ PositionDiff) that make the 16- and 32-bit layouts differ. Size: 144 bytes.
+ */
+typedef struct FB_SLI2_UINT {
+  /*
+   Offset 0. SLI: a rising edge saves Position and starts the monitoring; TRUE keeps it
+   on (active bit 0, required).
+   */
+  SL_BOOL bSLI;
+  /*
+   Offset 1. Reserved, keep 0.
+   */
+  uint8_t aReserved0[15];
+  /*
+   Offset 16. FbRun of the owning group: TRUE = the block executes.
+   */
+  SL_BOOL bRun;
+  /*
+   Offset 17. ErrAck of the owning group.
+   */
+  SL_BOOL bErrAck;
+  /*
+   Offset 18. Reserved, keep 0.
+   */
+  uint8_t aReserved1[6];
+  /*
+   Offset 24 (analog input base). Position (active bit 8, required).
+   */
+  uint16_t nPosition;
+  /*
+   Reserved up to the parameters (16-bit: 2 bytes, 32-bit: none).
+   */
+  uint8_t aReserved2[2];
+  /*
+   Offset 28. "Limit pos": permitted deviation above LatchPosition, ≤ the maximum of TS.
+   */
+  uint32_t nLimitPos;
+  /*
+   Offset 32. "Limit neg": permitted deviation below LatchPosition (a magnitude), ≤ the
+   maximum of TS.
+   */
+  uint32_t nLimitNeg;
+  /*
+   Offset 36. SL_OPT_SLI2_OVERFLOW_ALLOWED (bit 8), SL_OPT_SLI2_EXCEEDED_SUPPORT (bit 9).
+   */
+  uint32_t dwOptions;
+  /*
+   Offset 40. Exactly bits 0 and 8 (SL_SLI_ACTIVE).
+   */
+  uint16_t wInputActive;
+  /*
+   Offset 42. Reserved.
+   */
+  uint8_t aReserved3[6];
+  /*
+   Offset 48 (output base). Error, TRUE in ERROR only.
+   */
+  SL_BOOL bError;
+  /*
+   Offset 49. SLIActive: TRUE in RUN (SLI TRUE, PositionDiff within the limits).
+   */
+  SL_BOOL bSLIActive;
+  /*
+   Offset 50. BelowMin: in EXCEEDED, PositionDiff < −Limit neg.
+   */
+  SL_BOOL bBelowMin;
+  /*
+   Offset 51. AboveMax: in EXCEEDED, PositionDiff > Limit pos.
+   */
+  SL_BOOL bAboveMax;
+  /*
+   Offset 52. Reserved.
+   */
+  uint8_t aReserved4[4];
+  /*
+   Offset 56 (analog output base). PositionDiff = Position − LatchPosition in RUN and
+   (saturated) in EXCEEDED, else 0.
+   */
+  int16_t nPositionDiff;
+  /*
+   Reserved up to the info data (16-bit: 6 bytes, 32-bit: 4).
+   */
+  uint8_t aReserved5[6];
+  /*
+   Offset 64. The manual's status value (RUN, STOP, SAFE, ERROR, RESET, EXCEEDED).
+   */
+  uint8_t nState;
+  /*
+   Offset 65. Reserved.
+   */
+  uint8_t aReserved6[1];
+  /*
+   Offset 66. Diag value (1 underflow, 2 overflow) + library bits 13-15.
+   */
+  uint16_t nDiag;
+  /*
+   Offset 68. Text ID of the latched diag message (0x40C0, 0x40C1), 0 = none.
+   */
+  uint16_t nDiagTextId;
+  /*
+   Offset 70. Reserved.
+   */
+  uint8_t aReserved7[2];
+  /*
+   Offset 72. Message parameter 2: Position as a 32-bit pattern.
+   */
+  uint32_t dwDiagPar2;
+  /*
+   Offset 76. Message parameter 3: LatchPosition.
+   */
+  uint32_t dwDiagPar3;
+  /*
+   Offset 80. Private state, 64 bytes: never write it.
+   */
+  struct SL_SLI_PRIVATE stPrivate;
+} FB_SLI2_UINT;
+
+
+/*
+ FB SLI2 instance (ABI-2 §11.10), generic over the Position type `T` and the
+ PositionDiff type `TS`; `P1` and `P2` are the reserved gaps (after Position, after
+ PositionDiff) that make the 16- and 32-bit layouts differ. Size: 144 bytes.
+ */
+typedef struct FB_SLI2_DINT {
+  /*
+   Offset 0. SLI: a rising edge saves Position and starts the monitoring; TRUE keeps it
+   on (active bit 0, required).
+   */
+  SL_BOOL bSLI;
+  /*
+   Offset 1. Reserved, keep 0.
+   */
+  uint8_t aReserved0[15];
+  /*
+   Offset 16. FbRun of the owning group: TRUE = the block executes.
+   */
+  SL_BOOL bRun;
+  /*
+   Offset 17. ErrAck of the owning group.
+   */
+  SL_BOOL bErrAck;
+  /*
+   Offset 18. Reserved, keep 0.
+   */
+  uint8_t aReserved1[6];
+  /*
+   Offset 24 (analog input base). Position (active bit 8, required).
+   */
+  int32_t nPosition;
+  /*
+   Offset 28. "Limit pos": permitted deviation above LatchPosition, ≤ the maximum of TS.
+   */
+  uint32_t nLimitPos;
+  /*
+   Offset 32. "Limit neg": permitted deviation below LatchPosition (a magnitude), ≤ the
+   maximum of TS.
+   */
+  uint32_t nLimitNeg;
+  /*
+   Offset 36. SL_OPT_SLI2_OVERFLOW_ALLOWED (bit 8), SL_OPT_SLI2_EXCEEDED_SUPPORT (bit 9).
+   */
+  uint32_t dwOptions;
+  /*
+   Offset 40. Exactly bits 0 and 8 (SL_SLI_ACTIVE).
+   */
+  uint16_t wInputActive;
+  /*
+   Offset 42. Reserved.
+   */
+  uint8_t aReserved3[6];
+  /*
+   Offset 48 (output base). Error, TRUE in ERROR only.
+   */
+  SL_BOOL bError;
+  /*
+   Offset 49. SLIActive: TRUE in RUN (SLI TRUE, PositionDiff within the limits).
+   */
+  SL_BOOL bSLIActive;
+  /*
+   Offset 50. BelowMin: in EXCEEDED, PositionDiff < −Limit neg.
+   */
+  SL_BOOL bBelowMin;
+  /*
+   Offset 51. AboveMax: in EXCEEDED, PositionDiff > Limit pos.
+   */
+  SL_BOOL bAboveMax;
+  /*
+   Offset 52. Reserved.
+   */
+  uint8_t aReserved4[4];
+  /*
+   Offset 56 (analog output base). PositionDiff = Position − LatchPosition in RUN and
+   (saturated) in EXCEEDED, else 0.
+   */
+  int32_t nPositionDiff;
+  /*
+   Reserved up to the info data (16-bit: 6 bytes, 32-bit: 4).
+   */
+  uint8_t aReserved5[4];
+  /*
+   Offset 64. The manual's status value (RUN, STOP, SAFE, ERROR, RESET, EXCEEDED).
+   */
+  uint8_t nState;
+  /*
+   Offset 65. Reserved.
+   */
+  uint8_t aReserved6[1];
+  /*
+   Offset 66. Diag value (1 underflow, 2 overflow) + library bits 13-15.
+   */
+  uint16_t nDiag;
+  /*
+   Offset 68. Text ID of the latched diag message (0x40C0, 0x40C1), 0 = none.
+   */
+  uint16_t nDiagTextId;
+  /*
+   Offset 70. Reserved.
+   */
+  uint8_t aReserved7[2];
+  /*
+   Offset 72. Message parameter 2: Position as a 32-bit pattern.
+   */
+  uint32_t dwDiagPar2;
+  /*
+   Offset 76. Message parameter 3: LatchPosition.
+   */
+  uint32_t dwDiagPar3;
+  /*
+   Offset 80. Private state, 64 bytes: never write it.
+   */
+  struct SL_SLI_PRIVATE stPrivate;
+} FB_SLI2_DINT;
+
+
+/*
+ FB SLI2 instance (ABI-2 §11.10), generic over the Position type `T` and the
+ PositionDiff type `TS`; `P1` and `P2` are the reserved gaps (after Position, after
+ PositionDiff) that make the 16- and 32-bit layouts differ. Size: 144 bytes.
+ */
+typedef struct FB_SLI2_UDINT {
+  /*
+   Offset 0. SLI: a rising edge saves Position and starts the monitoring; TRUE keeps it
+   on (active bit 0, required).
+   */
+  SL_BOOL bSLI;
+  /*
+   Offset 1. Reserved, keep 0.
+   */
+  uint8_t aReserved0[15];
+  /*
+   Offset 16. FbRun of the owning group: TRUE = the block executes.
+   */
+  SL_BOOL bRun;
+  /*
+   Offset 17. ErrAck of the owning group.
+   */
+  SL_BOOL bErrAck;
+  /*
+   Offset 18. Reserved, keep 0.
+   */
+  uint8_t aReserved1[6];
+  /*
+   Offset 24 (analog input base). Position (active bit 8, required).
+   */
+  uint32_t nPosition;
+  /*
+   Offset 28. "Limit pos": permitted deviation above LatchPosition, ≤ the maximum of TS.
+   */
+  uint32_t nLimitPos;
+  /*
+   Offset 32. "Limit neg": permitted deviation below LatchPosition (a magnitude), ≤ the
+   maximum of TS.
+   */
+  uint32_t nLimitNeg;
+  /*
+   Offset 36. SL_OPT_SLI2_OVERFLOW_ALLOWED (bit 8), SL_OPT_SLI2_EXCEEDED_SUPPORT (bit 9).
+   */
+  uint32_t dwOptions;
+  /*
+   Offset 40. Exactly bits 0 and 8 (SL_SLI_ACTIVE).
+   */
+  uint16_t wInputActive;
+  /*
+   Offset 42. Reserved.
+   */
+  uint8_t aReserved3[6];
+  /*
+   Offset 48 (output base). Error, TRUE in ERROR only.
+   */
+  SL_BOOL bError;
+  /*
+   Offset 49. SLIActive: TRUE in RUN (SLI TRUE, PositionDiff within the limits).
+   */
+  SL_BOOL bSLIActive;
+  /*
+   Offset 50. BelowMin: in EXCEEDED, PositionDiff < −Limit neg.
+   */
+  SL_BOOL bBelowMin;
+  /*
+   Offset 51. AboveMax: in EXCEEDED, PositionDiff > Limit pos.
+   */
+  SL_BOOL bAboveMax;
+  /*
+   Offset 52. Reserved.
+   */
+  uint8_t aReserved4[4];
+  /*
+   Offset 56 (analog output base). PositionDiff = Position − LatchPosition in RUN and
+   (saturated) in EXCEEDED, else 0.
+   */
+  int32_t nPositionDiff;
+  /*
+   Reserved up to the info data (16-bit: 6 bytes, 32-bit: 4).
+   */
+  uint8_t aReserved5[4];
+  /*
+   Offset 64. The manual's status value (RUN, STOP, SAFE, ERROR, RESET, EXCEEDED).
+   */
+  uint8_t nState;
+  /*
+   Offset 65. Reserved.
+   */
+  uint8_t aReserved6[1];
+  /*
+   Offset 66. Diag value (1 underflow, 2 overflow) + library bits 13-15.
+   */
+  uint16_t nDiag;
+  /*
+   Offset 68. Text ID of the latched diag message (0x40C0, 0x40C1), 0 = none.
+   */
+  uint16_t nDiagTextId;
+  /*
+   Offset 70. Reserved.
+   */
+  uint8_t aReserved7[2];
+  /*
+   Offset 72. Message parameter 2: Position as a 32-bit pattern.
+   */
+  uint32_t dwDiagPar2;
+  /*
+   Offset 76. Message parameter 3: LatchPosition.
+   */
+  uint32_t dwDiagPar3;
+  /*
+   Offset 80. Private state, 64 bytes: never write it.
+   */
+  struct SL_SLI_PRIVATE stPrivate;
+} FB_SLI2_UDINT;
+
+
+/*
  Private state of FB VIOLATIONCOUNTER (48 bytes). Never written by the user.
  */
 typedef struct SL_VIOLATIONCOUNTER_PRIVATE {
@@ -7228,6 +8240,22 @@ int32_t sl_counter_dint_init(struct FB_COUNTER_DINT *fb);
 int32_t sl_counter_dint_cycle(struct FB_COUNTER_DINT *fb, uint32_t tNow);
 int32_t sl_counter_udint_init(struct FB_COUNTER_UDINT *fb);
 int32_t sl_counter_udint_cycle(struct FB_COUNTER_UDINT *fb, uint32_t tNow);
+int32_t sl_sli_int_init(struct FB_SLI_INT *fb);
+int32_t sl_sli_int_cycle(struct FB_SLI_INT *fb, uint32_t tNow);
+int32_t sl_sli_uint_init(struct FB_SLI_UINT *fb);
+int32_t sl_sli_uint_cycle(struct FB_SLI_UINT *fb, uint32_t tNow);
+int32_t sl_sli_dint_init(struct FB_SLI_DINT *fb);
+int32_t sl_sli_dint_cycle(struct FB_SLI_DINT *fb, uint32_t tNow);
+int32_t sl_sli_udint_init(struct FB_SLI_UDINT *fb);
+int32_t sl_sli_udint_cycle(struct FB_SLI_UDINT *fb, uint32_t tNow);
+int32_t sl_sli2_int_init(struct FB_SLI2_INT *fb);
+int32_t sl_sli2_int_cycle(struct FB_SLI2_INT *fb, uint32_t tNow);
+int32_t sl_sli2_uint_init(struct FB_SLI2_UINT *fb);
+int32_t sl_sli2_uint_cycle(struct FB_SLI2_UINT *fb, uint32_t tNow);
+int32_t sl_sli2_dint_init(struct FB_SLI2_DINT *fb);
+int32_t sl_sli2_dint_cycle(struct FB_SLI2_DINT *fb, uint32_t tNow);
+int32_t sl_sli2_udint_init(struct FB_SLI2_UDINT *fb);
+int32_t sl_sli2_udint_cycle(struct FB_SLI2_UDINT *fb, uint32_t tNow);
 int32_t sl_violationcounter_uint_init(struct FB_VIOLATIONCOUNTER_UINT *fb);
 int32_t sl_violationcounter_uint_cycle(struct FB_VIOLATIONCOUNTER_UINT *fb, uint32_t tNow);
 int32_t sl_violationcounter_udint_init(struct FB_VIOLATIONCOUNTER_UDINT *fb);
@@ -8628,6 +9656,224 @@ SL_STATIC_ASSERT(offsetof(FB_COUNTER_UDINT, dwDiagPar2) == 56, "offset of FB_COU
 SL_STATIC_ASSERT(offsetof(FB_COUNTER_UDINT, dwDiagPar3) == 60, "offset of FB_COUNTER_UDINT.dwDiagPar3");
 SL_STATIC_ASSERT(offsetof(FB_COUNTER_UDINT, stPrivate) == 64, "offset of FB_COUNTER_UDINT.stPrivate");
 SL_STATIC_ASSERT(sizeof(FB_COUNTER_UDINT) == 120, "size of FB_COUNTER_UDINT");
+SL_STATIC_ASSERT(offsetof(SL_SLI_PRIVATE, stHeader) == 0, "offset of SL_SLI_PRIVATE.stHeader");
+SL_STATIC_ASSERT(offsetof(SL_SLI_PRIVATE, wActive) == 28, "offset of SL_SLI_PRIVATE.wActive");
+SL_STATIC_ASSERT(offsetof(SL_SLI_PRIVATE, aReserved) == 30, "offset of SL_SLI_PRIVATE.aReserved");
+SL_STATIC_ASSERT(offsetof(SL_SLI_PRIVATE, adwLimit) == 32, "offset of SL_SLI_PRIVATE.adwLimit");
+SL_STATIC_ASSERT(offsetof(SL_SLI_PRIVATE, dwOptions) == 40, "offset of SL_SLI_PRIVATE.dwOptions");
+SL_STATIC_ASSERT(offsetof(SL_SLI_PRIVATE, dwLatch) == 44, "offset of SL_SLI_PRIVATE.dwLatch");
+SL_STATIC_ASSERT(offsetof(SL_SLI_PRIVATE, dwLatchCheck) == 48, "offset of SL_SLI_PRIVATE.dwLatchCheck");
+SL_STATIC_ASSERT(offsetof(SL_SLI_PRIVATE, dwDiff) == 52, "offset of SL_SLI_PRIVATE.dwDiff");
+SL_STATIC_ASSERT(offsetof(SL_SLI_PRIVATE, adwPar) == 56, "offset of SL_SLI_PRIVATE.adwPar");
+SL_STATIC_ASSERT(sizeof(SL_SLI_PRIVATE) == 64, "size of SL_SLI_PRIVATE");
+SL_STATIC_ASSERT(offsetof(FB_SLI_INT, bSLI) == 0, "offset of FB_SLI_INT.bSLI");
+SL_STATIC_ASSERT(offsetof(FB_SLI_INT, aReserved0) == 1, "offset of FB_SLI_INT.aReserved0");
+SL_STATIC_ASSERT(offsetof(FB_SLI_INT, bRun) == 16, "offset of FB_SLI_INT.bRun");
+SL_STATIC_ASSERT(offsetof(FB_SLI_INT, bErrAck) == 17, "offset of FB_SLI_INT.bErrAck");
+SL_STATIC_ASSERT(offsetof(FB_SLI_INT, aReserved1) == 18, "offset of FB_SLI_INT.aReserved1");
+SL_STATIC_ASSERT(offsetof(FB_SLI_INT, nPosition) == 24, "offset of FB_SLI_INT.nPosition");
+SL_STATIC_ASSERT(offsetof(FB_SLI_INT, aReserved2) == 26, "offset of FB_SLI_INT.aReserved2");
+SL_STATIC_ASSERT(offsetof(FB_SLI_INT, nLimitPos) == 28, "offset of FB_SLI_INT.nLimitPos");
+SL_STATIC_ASSERT(offsetof(FB_SLI_INT, nLimitNeg) == 32, "offset of FB_SLI_INT.nLimitNeg");
+SL_STATIC_ASSERT(offsetof(FB_SLI_INT, wInputActive) == 36, "offset of FB_SLI_INT.wInputActive");
+SL_STATIC_ASSERT(offsetof(FB_SLI_INT, aReserved3) == 38, "offset of FB_SLI_INT.aReserved3");
+SL_STATIC_ASSERT(offsetof(FB_SLI_INT, bError) == 40, "offset of FB_SLI_INT.bError");
+SL_STATIC_ASSERT(offsetof(FB_SLI_INT, bSLIActive) == 41, "offset of FB_SLI_INT.bSLIActive");
+SL_STATIC_ASSERT(offsetof(FB_SLI_INT, aReserved4) == 42, "offset of FB_SLI_INT.aReserved4");
+SL_STATIC_ASSERT(offsetof(FB_SLI_INT, nPositionDiff) == 48, "offset of FB_SLI_INT.nPositionDiff");
+SL_STATIC_ASSERT(offsetof(FB_SLI_INT, aReserved5) == 50, "offset of FB_SLI_INT.aReserved5");
+SL_STATIC_ASSERT(offsetof(FB_SLI_INT, nState) == 56, "offset of FB_SLI_INT.nState");
+SL_STATIC_ASSERT(offsetof(FB_SLI_INT, aReserved6) == 57, "offset of FB_SLI_INT.aReserved6");
+SL_STATIC_ASSERT(offsetof(FB_SLI_INT, nDiag) == 58, "offset of FB_SLI_INT.nDiag");
+SL_STATIC_ASSERT(offsetof(FB_SLI_INT, nDiagTextId) == 60, "offset of FB_SLI_INT.nDiagTextId");
+SL_STATIC_ASSERT(offsetof(FB_SLI_INT, aReserved7) == 62, "offset of FB_SLI_INT.aReserved7");
+SL_STATIC_ASSERT(offsetof(FB_SLI_INT, dwDiagPar2) == 64, "offset of FB_SLI_INT.dwDiagPar2");
+SL_STATIC_ASSERT(offsetof(FB_SLI_INT, dwDiagPar3) == 68, "offset of FB_SLI_INT.dwDiagPar3");
+SL_STATIC_ASSERT(offsetof(FB_SLI_INT, stPrivate) == 72, "offset of FB_SLI_INT.stPrivate");
+SL_STATIC_ASSERT(sizeof(FB_SLI_INT) == 136, "size of FB_SLI_INT");
+SL_STATIC_ASSERT(offsetof(FB_SLI_UINT, bSLI) == 0, "offset of FB_SLI_UINT.bSLI");
+SL_STATIC_ASSERT(offsetof(FB_SLI_UINT, aReserved0) == 1, "offset of FB_SLI_UINT.aReserved0");
+SL_STATIC_ASSERT(offsetof(FB_SLI_UINT, bRun) == 16, "offset of FB_SLI_UINT.bRun");
+SL_STATIC_ASSERT(offsetof(FB_SLI_UINT, bErrAck) == 17, "offset of FB_SLI_UINT.bErrAck");
+SL_STATIC_ASSERT(offsetof(FB_SLI_UINT, aReserved1) == 18, "offset of FB_SLI_UINT.aReserved1");
+SL_STATIC_ASSERT(offsetof(FB_SLI_UINT, nPosition) == 24, "offset of FB_SLI_UINT.nPosition");
+SL_STATIC_ASSERT(offsetof(FB_SLI_UINT, aReserved2) == 26, "offset of FB_SLI_UINT.aReserved2");
+SL_STATIC_ASSERT(offsetof(FB_SLI_UINT, nLimitPos) == 28, "offset of FB_SLI_UINT.nLimitPos");
+SL_STATIC_ASSERT(offsetof(FB_SLI_UINT, nLimitNeg) == 32, "offset of FB_SLI_UINT.nLimitNeg");
+SL_STATIC_ASSERT(offsetof(FB_SLI_UINT, wInputActive) == 36, "offset of FB_SLI_UINT.wInputActive");
+SL_STATIC_ASSERT(offsetof(FB_SLI_UINT, aReserved3) == 38, "offset of FB_SLI_UINT.aReserved3");
+SL_STATIC_ASSERT(offsetof(FB_SLI_UINT, bError) == 40, "offset of FB_SLI_UINT.bError");
+SL_STATIC_ASSERT(offsetof(FB_SLI_UINT, bSLIActive) == 41, "offset of FB_SLI_UINT.bSLIActive");
+SL_STATIC_ASSERT(offsetof(FB_SLI_UINT, aReserved4) == 42, "offset of FB_SLI_UINT.aReserved4");
+SL_STATIC_ASSERT(offsetof(FB_SLI_UINT, nPositionDiff) == 48, "offset of FB_SLI_UINT.nPositionDiff");
+SL_STATIC_ASSERT(offsetof(FB_SLI_UINT, aReserved5) == 50, "offset of FB_SLI_UINT.aReserved5");
+SL_STATIC_ASSERT(offsetof(FB_SLI_UINT, nState) == 56, "offset of FB_SLI_UINT.nState");
+SL_STATIC_ASSERT(offsetof(FB_SLI_UINT, aReserved6) == 57, "offset of FB_SLI_UINT.aReserved6");
+SL_STATIC_ASSERT(offsetof(FB_SLI_UINT, nDiag) == 58, "offset of FB_SLI_UINT.nDiag");
+SL_STATIC_ASSERT(offsetof(FB_SLI_UINT, nDiagTextId) == 60, "offset of FB_SLI_UINT.nDiagTextId");
+SL_STATIC_ASSERT(offsetof(FB_SLI_UINT, aReserved7) == 62, "offset of FB_SLI_UINT.aReserved7");
+SL_STATIC_ASSERT(offsetof(FB_SLI_UINT, dwDiagPar2) == 64, "offset of FB_SLI_UINT.dwDiagPar2");
+SL_STATIC_ASSERT(offsetof(FB_SLI_UINT, dwDiagPar3) == 68, "offset of FB_SLI_UINT.dwDiagPar3");
+SL_STATIC_ASSERT(offsetof(FB_SLI_UINT, stPrivate) == 72, "offset of FB_SLI_UINT.stPrivate");
+SL_STATIC_ASSERT(sizeof(FB_SLI_UINT) == 136, "size of FB_SLI_UINT");
+SL_STATIC_ASSERT(offsetof(FB_SLI_DINT, bSLI) == 0, "offset of FB_SLI_DINT.bSLI");
+SL_STATIC_ASSERT(offsetof(FB_SLI_DINT, aReserved0) == 1, "offset of FB_SLI_DINT.aReserved0");
+SL_STATIC_ASSERT(offsetof(FB_SLI_DINT, bRun) == 16, "offset of FB_SLI_DINT.bRun");
+SL_STATIC_ASSERT(offsetof(FB_SLI_DINT, bErrAck) == 17, "offset of FB_SLI_DINT.bErrAck");
+SL_STATIC_ASSERT(offsetof(FB_SLI_DINT, aReserved1) == 18, "offset of FB_SLI_DINT.aReserved1");
+SL_STATIC_ASSERT(offsetof(FB_SLI_DINT, nPosition) == 24, "offset of FB_SLI_DINT.nPosition");
+SL_STATIC_ASSERT(offsetof(FB_SLI_DINT, nLimitPos) == 28, "offset of FB_SLI_DINT.nLimitPos");
+SL_STATIC_ASSERT(offsetof(FB_SLI_DINT, nLimitNeg) == 32, "offset of FB_SLI_DINT.nLimitNeg");
+SL_STATIC_ASSERT(offsetof(FB_SLI_DINT, wInputActive) == 36, "offset of FB_SLI_DINT.wInputActive");
+SL_STATIC_ASSERT(offsetof(FB_SLI_DINT, aReserved3) == 38, "offset of FB_SLI_DINT.aReserved3");
+SL_STATIC_ASSERT(offsetof(FB_SLI_DINT, bError) == 40, "offset of FB_SLI_DINT.bError");
+SL_STATIC_ASSERT(offsetof(FB_SLI_DINT, bSLIActive) == 41, "offset of FB_SLI_DINT.bSLIActive");
+SL_STATIC_ASSERT(offsetof(FB_SLI_DINT, aReserved4) == 42, "offset of FB_SLI_DINT.aReserved4");
+SL_STATIC_ASSERT(offsetof(FB_SLI_DINT, nPositionDiff) == 48, "offset of FB_SLI_DINT.nPositionDiff");
+SL_STATIC_ASSERT(offsetof(FB_SLI_DINT, aReserved5) == 52, "offset of FB_SLI_DINT.aReserved5");
+SL_STATIC_ASSERT(offsetof(FB_SLI_DINT, nState) == 56, "offset of FB_SLI_DINT.nState");
+SL_STATIC_ASSERT(offsetof(FB_SLI_DINT, aReserved6) == 57, "offset of FB_SLI_DINT.aReserved6");
+SL_STATIC_ASSERT(offsetof(FB_SLI_DINT, nDiag) == 58, "offset of FB_SLI_DINT.nDiag");
+SL_STATIC_ASSERT(offsetof(FB_SLI_DINT, nDiagTextId) == 60, "offset of FB_SLI_DINT.nDiagTextId");
+SL_STATIC_ASSERT(offsetof(FB_SLI_DINT, aReserved7) == 62, "offset of FB_SLI_DINT.aReserved7");
+SL_STATIC_ASSERT(offsetof(FB_SLI_DINT, dwDiagPar2) == 64, "offset of FB_SLI_DINT.dwDiagPar2");
+SL_STATIC_ASSERT(offsetof(FB_SLI_DINT, dwDiagPar3) == 68, "offset of FB_SLI_DINT.dwDiagPar3");
+SL_STATIC_ASSERT(offsetof(FB_SLI_DINT, stPrivate) == 72, "offset of FB_SLI_DINT.stPrivate");
+SL_STATIC_ASSERT(sizeof(FB_SLI_DINT) == 136, "size of FB_SLI_DINT");
+SL_STATIC_ASSERT(offsetof(FB_SLI_UDINT, bSLI) == 0, "offset of FB_SLI_UDINT.bSLI");
+SL_STATIC_ASSERT(offsetof(FB_SLI_UDINT, aReserved0) == 1, "offset of FB_SLI_UDINT.aReserved0");
+SL_STATIC_ASSERT(offsetof(FB_SLI_UDINT, bRun) == 16, "offset of FB_SLI_UDINT.bRun");
+SL_STATIC_ASSERT(offsetof(FB_SLI_UDINT, bErrAck) == 17, "offset of FB_SLI_UDINT.bErrAck");
+SL_STATIC_ASSERT(offsetof(FB_SLI_UDINT, aReserved1) == 18, "offset of FB_SLI_UDINT.aReserved1");
+SL_STATIC_ASSERT(offsetof(FB_SLI_UDINT, nPosition) == 24, "offset of FB_SLI_UDINT.nPosition");
+SL_STATIC_ASSERT(offsetof(FB_SLI_UDINT, nLimitPos) == 28, "offset of FB_SLI_UDINT.nLimitPos");
+SL_STATIC_ASSERT(offsetof(FB_SLI_UDINT, nLimitNeg) == 32, "offset of FB_SLI_UDINT.nLimitNeg");
+SL_STATIC_ASSERT(offsetof(FB_SLI_UDINT, wInputActive) == 36, "offset of FB_SLI_UDINT.wInputActive");
+SL_STATIC_ASSERT(offsetof(FB_SLI_UDINT, aReserved3) == 38, "offset of FB_SLI_UDINT.aReserved3");
+SL_STATIC_ASSERT(offsetof(FB_SLI_UDINT, bError) == 40, "offset of FB_SLI_UDINT.bError");
+SL_STATIC_ASSERT(offsetof(FB_SLI_UDINT, bSLIActive) == 41, "offset of FB_SLI_UDINT.bSLIActive");
+SL_STATIC_ASSERT(offsetof(FB_SLI_UDINT, aReserved4) == 42, "offset of FB_SLI_UDINT.aReserved4");
+SL_STATIC_ASSERT(offsetof(FB_SLI_UDINT, nPositionDiff) == 48, "offset of FB_SLI_UDINT.nPositionDiff");
+SL_STATIC_ASSERT(offsetof(FB_SLI_UDINT, aReserved5) == 52, "offset of FB_SLI_UDINT.aReserved5");
+SL_STATIC_ASSERT(offsetof(FB_SLI_UDINT, nState) == 56, "offset of FB_SLI_UDINT.nState");
+SL_STATIC_ASSERT(offsetof(FB_SLI_UDINT, aReserved6) == 57, "offset of FB_SLI_UDINT.aReserved6");
+SL_STATIC_ASSERT(offsetof(FB_SLI_UDINT, nDiag) == 58, "offset of FB_SLI_UDINT.nDiag");
+SL_STATIC_ASSERT(offsetof(FB_SLI_UDINT, nDiagTextId) == 60, "offset of FB_SLI_UDINT.nDiagTextId");
+SL_STATIC_ASSERT(offsetof(FB_SLI_UDINT, aReserved7) == 62, "offset of FB_SLI_UDINT.aReserved7");
+SL_STATIC_ASSERT(offsetof(FB_SLI_UDINT, dwDiagPar2) == 64, "offset of FB_SLI_UDINT.dwDiagPar2");
+SL_STATIC_ASSERT(offsetof(FB_SLI_UDINT, dwDiagPar3) == 68, "offset of FB_SLI_UDINT.dwDiagPar3");
+SL_STATIC_ASSERT(offsetof(FB_SLI_UDINT, stPrivate) == 72, "offset of FB_SLI_UDINT.stPrivate");
+SL_STATIC_ASSERT(sizeof(FB_SLI_UDINT) == 136, "size of FB_SLI_UDINT");
+SL_STATIC_ASSERT(offsetof(FB_SLI2_INT, bSLI) == 0, "offset of FB_SLI2_INT.bSLI");
+SL_STATIC_ASSERT(offsetof(FB_SLI2_INT, aReserved0) == 1, "offset of FB_SLI2_INT.aReserved0");
+SL_STATIC_ASSERT(offsetof(FB_SLI2_INT, bRun) == 16, "offset of FB_SLI2_INT.bRun");
+SL_STATIC_ASSERT(offsetof(FB_SLI2_INT, bErrAck) == 17, "offset of FB_SLI2_INT.bErrAck");
+SL_STATIC_ASSERT(offsetof(FB_SLI2_INT, aReserved1) == 18, "offset of FB_SLI2_INT.aReserved1");
+SL_STATIC_ASSERT(offsetof(FB_SLI2_INT, nPosition) == 24, "offset of FB_SLI2_INT.nPosition");
+SL_STATIC_ASSERT(offsetof(FB_SLI2_INT, aReserved2) == 26, "offset of FB_SLI2_INT.aReserved2");
+SL_STATIC_ASSERT(offsetof(FB_SLI2_INT, nLimitPos) == 28, "offset of FB_SLI2_INT.nLimitPos");
+SL_STATIC_ASSERT(offsetof(FB_SLI2_INT, nLimitNeg) == 32, "offset of FB_SLI2_INT.nLimitNeg");
+SL_STATIC_ASSERT(offsetof(FB_SLI2_INT, dwOptions) == 36, "offset of FB_SLI2_INT.dwOptions");
+SL_STATIC_ASSERT(offsetof(FB_SLI2_INT, wInputActive) == 40, "offset of FB_SLI2_INT.wInputActive");
+SL_STATIC_ASSERT(offsetof(FB_SLI2_INT, aReserved3) == 42, "offset of FB_SLI2_INT.aReserved3");
+SL_STATIC_ASSERT(offsetof(FB_SLI2_INT, bError) == 48, "offset of FB_SLI2_INT.bError");
+SL_STATIC_ASSERT(offsetof(FB_SLI2_INT, bSLIActive) == 49, "offset of FB_SLI2_INT.bSLIActive");
+SL_STATIC_ASSERT(offsetof(FB_SLI2_INT, bBelowMin) == 50, "offset of FB_SLI2_INT.bBelowMin");
+SL_STATIC_ASSERT(offsetof(FB_SLI2_INT, bAboveMax) == 51, "offset of FB_SLI2_INT.bAboveMax");
+SL_STATIC_ASSERT(offsetof(FB_SLI2_INT, aReserved4) == 52, "offset of FB_SLI2_INT.aReserved4");
+SL_STATIC_ASSERT(offsetof(FB_SLI2_INT, nPositionDiff) == 56, "offset of FB_SLI2_INT.nPositionDiff");
+SL_STATIC_ASSERT(offsetof(FB_SLI2_INT, aReserved5) == 58, "offset of FB_SLI2_INT.aReserved5");
+SL_STATIC_ASSERT(offsetof(FB_SLI2_INT, nState) == 64, "offset of FB_SLI2_INT.nState");
+SL_STATIC_ASSERT(offsetof(FB_SLI2_INT, aReserved6) == 65, "offset of FB_SLI2_INT.aReserved6");
+SL_STATIC_ASSERT(offsetof(FB_SLI2_INT, nDiag) == 66, "offset of FB_SLI2_INT.nDiag");
+SL_STATIC_ASSERT(offsetof(FB_SLI2_INT, nDiagTextId) == 68, "offset of FB_SLI2_INT.nDiagTextId");
+SL_STATIC_ASSERT(offsetof(FB_SLI2_INT, aReserved7) == 70, "offset of FB_SLI2_INT.aReserved7");
+SL_STATIC_ASSERT(offsetof(FB_SLI2_INT, dwDiagPar2) == 72, "offset of FB_SLI2_INT.dwDiagPar2");
+SL_STATIC_ASSERT(offsetof(FB_SLI2_INT, dwDiagPar3) == 76, "offset of FB_SLI2_INT.dwDiagPar3");
+SL_STATIC_ASSERT(offsetof(FB_SLI2_INT, stPrivate) == 80, "offset of FB_SLI2_INT.stPrivate");
+SL_STATIC_ASSERT(sizeof(FB_SLI2_INT) == 144, "size of FB_SLI2_INT");
+SL_STATIC_ASSERT(offsetof(FB_SLI2_UINT, bSLI) == 0, "offset of FB_SLI2_UINT.bSLI");
+SL_STATIC_ASSERT(offsetof(FB_SLI2_UINT, aReserved0) == 1, "offset of FB_SLI2_UINT.aReserved0");
+SL_STATIC_ASSERT(offsetof(FB_SLI2_UINT, bRun) == 16, "offset of FB_SLI2_UINT.bRun");
+SL_STATIC_ASSERT(offsetof(FB_SLI2_UINT, bErrAck) == 17, "offset of FB_SLI2_UINT.bErrAck");
+SL_STATIC_ASSERT(offsetof(FB_SLI2_UINT, aReserved1) == 18, "offset of FB_SLI2_UINT.aReserved1");
+SL_STATIC_ASSERT(offsetof(FB_SLI2_UINT, nPosition) == 24, "offset of FB_SLI2_UINT.nPosition");
+SL_STATIC_ASSERT(offsetof(FB_SLI2_UINT, aReserved2) == 26, "offset of FB_SLI2_UINT.aReserved2");
+SL_STATIC_ASSERT(offsetof(FB_SLI2_UINT, nLimitPos) == 28, "offset of FB_SLI2_UINT.nLimitPos");
+SL_STATIC_ASSERT(offsetof(FB_SLI2_UINT, nLimitNeg) == 32, "offset of FB_SLI2_UINT.nLimitNeg");
+SL_STATIC_ASSERT(offsetof(FB_SLI2_UINT, dwOptions) == 36, "offset of FB_SLI2_UINT.dwOptions");
+SL_STATIC_ASSERT(offsetof(FB_SLI2_UINT, wInputActive) == 40, "offset of FB_SLI2_UINT.wInputActive");
+SL_STATIC_ASSERT(offsetof(FB_SLI2_UINT, aReserved3) == 42, "offset of FB_SLI2_UINT.aReserved3");
+SL_STATIC_ASSERT(offsetof(FB_SLI2_UINT, bError) == 48, "offset of FB_SLI2_UINT.bError");
+SL_STATIC_ASSERT(offsetof(FB_SLI2_UINT, bSLIActive) == 49, "offset of FB_SLI2_UINT.bSLIActive");
+SL_STATIC_ASSERT(offsetof(FB_SLI2_UINT, bBelowMin) == 50, "offset of FB_SLI2_UINT.bBelowMin");
+SL_STATIC_ASSERT(offsetof(FB_SLI2_UINT, bAboveMax) == 51, "offset of FB_SLI2_UINT.bAboveMax");
+SL_STATIC_ASSERT(offsetof(FB_SLI2_UINT, aReserved4) == 52, "offset of FB_SLI2_UINT.aReserved4");
+SL_STATIC_ASSERT(offsetof(FB_SLI2_UINT, nPositionDiff) == 56, "offset of FB_SLI2_UINT.nPositionDiff");
+SL_STATIC_ASSERT(offsetof(FB_SLI2_UINT, aReserved5) == 58, "offset of FB_SLI2_UINT.aReserved5");
+SL_STATIC_ASSERT(offsetof(FB_SLI2_UINT, nState) == 64, "offset of FB_SLI2_UINT.nState");
+SL_STATIC_ASSERT(offsetof(FB_SLI2_UINT, aReserved6) == 65, "offset of FB_SLI2_UINT.aReserved6");
+SL_STATIC_ASSERT(offsetof(FB_SLI2_UINT, nDiag) == 66, "offset of FB_SLI2_UINT.nDiag");
+SL_STATIC_ASSERT(offsetof(FB_SLI2_UINT, nDiagTextId) == 68, "offset of FB_SLI2_UINT.nDiagTextId");
+SL_STATIC_ASSERT(offsetof(FB_SLI2_UINT, aReserved7) == 70, "offset of FB_SLI2_UINT.aReserved7");
+SL_STATIC_ASSERT(offsetof(FB_SLI2_UINT, dwDiagPar2) == 72, "offset of FB_SLI2_UINT.dwDiagPar2");
+SL_STATIC_ASSERT(offsetof(FB_SLI2_UINT, dwDiagPar3) == 76, "offset of FB_SLI2_UINT.dwDiagPar3");
+SL_STATIC_ASSERT(offsetof(FB_SLI2_UINT, stPrivate) == 80, "offset of FB_SLI2_UINT.stPrivate");
+SL_STATIC_ASSERT(sizeof(FB_SLI2_UINT) == 144, "size of FB_SLI2_UINT");
+SL_STATIC_ASSERT(offsetof(FB_SLI2_DINT, bSLI) == 0, "offset of FB_SLI2_DINT.bSLI");
+SL_STATIC_ASSERT(offsetof(FB_SLI2_DINT, aReserved0) == 1, "offset of FB_SLI2_DINT.aReserved0");
+SL_STATIC_ASSERT(offsetof(FB_SLI2_DINT, bRun) == 16, "offset of FB_SLI2_DINT.bRun");
+SL_STATIC_ASSERT(offsetof(FB_SLI2_DINT, bErrAck) == 17, "offset of FB_SLI2_DINT.bErrAck");
+SL_STATIC_ASSERT(offsetof(FB_SLI2_DINT, aReserved1) == 18, "offset of FB_SLI2_DINT.aReserved1");
+SL_STATIC_ASSERT(offsetof(FB_SLI2_DINT, nPosition) == 24, "offset of FB_SLI2_DINT.nPosition");
+SL_STATIC_ASSERT(offsetof(FB_SLI2_DINT, nLimitPos) == 28, "offset of FB_SLI2_DINT.nLimitPos");
+SL_STATIC_ASSERT(offsetof(FB_SLI2_DINT, nLimitNeg) == 32, "offset of FB_SLI2_DINT.nLimitNeg");
+SL_STATIC_ASSERT(offsetof(FB_SLI2_DINT, dwOptions) == 36, "offset of FB_SLI2_DINT.dwOptions");
+SL_STATIC_ASSERT(offsetof(FB_SLI2_DINT, wInputActive) == 40, "offset of FB_SLI2_DINT.wInputActive");
+SL_STATIC_ASSERT(offsetof(FB_SLI2_DINT, aReserved3) == 42, "offset of FB_SLI2_DINT.aReserved3");
+SL_STATIC_ASSERT(offsetof(FB_SLI2_DINT, bError) == 48, "offset of FB_SLI2_DINT.bError");
+SL_STATIC_ASSERT(offsetof(FB_SLI2_DINT, bSLIActive) == 49, "offset of FB_SLI2_DINT.bSLIActive");
+SL_STATIC_ASSERT(offsetof(FB_SLI2_DINT, bBelowMin) == 50, "offset of FB_SLI2_DINT.bBelowMin");
+SL_STATIC_ASSERT(offsetof(FB_SLI2_DINT, bAboveMax) == 51, "offset of FB_SLI2_DINT.bAboveMax");
+SL_STATIC_ASSERT(offsetof(FB_SLI2_DINT, aReserved4) == 52, "offset of FB_SLI2_DINT.aReserved4");
+SL_STATIC_ASSERT(offsetof(FB_SLI2_DINT, nPositionDiff) == 56, "offset of FB_SLI2_DINT.nPositionDiff");
+SL_STATIC_ASSERT(offsetof(FB_SLI2_DINT, aReserved5) == 60, "offset of FB_SLI2_DINT.aReserved5");
+SL_STATIC_ASSERT(offsetof(FB_SLI2_DINT, nState) == 64, "offset of FB_SLI2_DINT.nState");
+SL_STATIC_ASSERT(offsetof(FB_SLI2_DINT, aReserved6) == 65, "offset of FB_SLI2_DINT.aReserved6");
+SL_STATIC_ASSERT(offsetof(FB_SLI2_DINT, nDiag) == 66, "offset of FB_SLI2_DINT.nDiag");
+SL_STATIC_ASSERT(offsetof(FB_SLI2_DINT, nDiagTextId) == 68, "offset of FB_SLI2_DINT.nDiagTextId");
+SL_STATIC_ASSERT(offsetof(FB_SLI2_DINT, aReserved7) == 70, "offset of FB_SLI2_DINT.aReserved7");
+SL_STATIC_ASSERT(offsetof(FB_SLI2_DINT, dwDiagPar2) == 72, "offset of FB_SLI2_DINT.dwDiagPar2");
+SL_STATIC_ASSERT(offsetof(FB_SLI2_DINT, dwDiagPar3) == 76, "offset of FB_SLI2_DINT.dwDiagPar3");
+SL_STATIC_ASSERT(offsetof(FB_SLI2_DINT, stPrivate) == 80, "offset of FB_SLI2_DINT.stPrivate");
+SL_STATIC_ASSERT(sizeof(FB_SLI2_DINT) == 144, "size of FB_SLI2_DINT");
+SL_STATIC_ASSERT(offsetof(FB_SLI2_UDINT, bSLI) == 0, "offset of FB_SLI2_UDINT.bSLI");
+SL_STATIC_ASSERT(offsetof(FB_SLI2_UDINT, aReserved0) == 1, "offset of FB_SLI2_UDINT.aReserved0");
+SL_STATIC_ASSERT(offsetof(FB_SLI2_UDINT, bRun) == 16, "offset of FB_SLI2_UDINT.bRun");
+SL_STATIC_ASSERT(offsetof(FB_SLI2_UDINT, bErrAck) == 17, "offset of FB_SLI2_UDINT.bErrAck");
+SL_STATIC_ASSERT(offsetof(FB_SLI2_UDINT, aReserved1) == 18, "offset of FB_SLI2_UDINT.aReserved1");
+SL_STATIC_ASSERT(offsetof(FB_SLI2_UDINT, nPosition) == 24, "offset of FB_SLI2_UDINT.nPosition");
+SL_STATIC_ASSERT(offsetof(FB_SLI2_UDINT, nLimitPos) == 28, "offset of FB_SLI2_UDINT.nLimitPos");
+SL_STATIC_ASSERT(offsetof(FB_SLI2_UDINT, nLimitNeg) == 32, "offset of FB_SLI2_UDINT.nLimitNeg");
+SL_STATIC_ASSERT(offsetof(FB_SLI2_UDINT, dwOptions) == 36, "offset of FB_SLI2_UDINT.dwOptions");
+SL_STATIC_ASSERT(offsetof(FB_SLI2_UDINT, wInputActive) == 40, "offset of FB_SLI2_UDINT.wInputActive");
+SL_STATIC_ASSERT(offsetof(FB_SLI2_UDINT, aReserved3) == 42, "offset of FB_SLI2_UDINT.aReserved3");
+SL_STATIC_ASSERT(offsetof(FB_SLI2_UDINT, bError) == 48, "offset of FB_SLI2_UDINT.bError");
+SL_STATIC_ASSERT(offsetof(FB_SLI2_UDINT, bSLIActive) == 49, "offset of FB_SLI2_UDINT.bSLIActive");
+SL_STATIC_ASSERT(offsetof(FB_SLI2_UDINT, bBelowMin) == 50, "offset of FB_SLI2_UDINT.bBelowMin");
+SL_STATIC_ASSERT(offsetof(FB_SLI2_UDINT, bAboveMax) == 51, "offset of FB_SLI2_UDINT.bAboveMax");
+SL_STATIC_ASSERT(offsetof(FB_SLI2_UDINT, aReserved4) == 52, "offset of FB_SLI2_UDINT.aReserved4");
+SL_STATIC_ASSERT(offsetof(FB_SLI2_UDINT, nPositionDiff) == 56, "offset of FB_SLI2_UDINT.nPositionDiff");
+SL_STATIC_ASSERT(offsetof(FB_SLI2_UDINT, aReserved5) == 60, "offset of FB_SLI2_UDINT.aReserved5");
+SL_STATIC_ASSERT(offsetof(FB_SLI2_UDINT, nState) == 64, "offset of FB_SLI2_UDINT.nState");
+SL_STATIC_ASSERT(offsetof(FB_SLI2_UDINT, aReserved6) == 65, "offset of FB_SLI2_UDINT.aReserved6");
+SL_STATIC_ASSERT(offsetof(FB_SLI2_UDINT, nDiag) == 66, "offset of FB_SLI2_UDINT.nDiag");
+SL_STATIC_ASSERT(offsetof(FB_SLI2_UDINT, nDiagTextId) == 68, "offset of FB_SLI2_UDINT.nDiagTextId");
+SL_STATIC_ASSERT(offsetof(FB_SLI2_UDINT, aReserved7) == 70, "offset of FB_SLI2_UDINT.aReserved7");
+SL_STATIC_ASSERT(offsetof(FB_SLI2_UDINT, dwDiagPar2) == 72, "offset of FB_SLI2_UDINT.dwDiagPar2");
+SL_STATIC_ASSERT(offsetof(FB_SLI2_UDINT, dwDiagPar3) == 76, "offset of FB_SLI2_UDINT.dwDiagPar3");
+SL_STATIC_ASSERT(offsetof(FB_SLI2_UDINT, stPrivate) == 80, "offset of FB_SLI2_UDINT.stPrivate");
+SL_STATIC_ASSERT(sizeof(FB_SLI2_UDINT) == 144, "size of FB_SLI2_UDINT");
 SL_STATIC_ASSERT(offsetof(SL_VIOLATIONCOUNTER_PRIVATE, stHeader) == 0, "offset of SL_VIOLATIONCOUNTER_PRIVATE.stHeader");
 SL_STATIC_ASSERT(offsetof(SL_VIOLATIONCOUNTER_PRIVATE, adwParam) == 28, "offset of SL_VIOLATIONCOUNTER_PRIVATE.adwParam");
 SL_STATIC_ASSERT(offsetof(SL_VIOLATIONCOUNTER_PRIVATE, dwCount) == 40, "offset of SL_VIOLATIONCOUNTER_PRIVATE.dwCount");

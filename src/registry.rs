@@ -311,6 +311,14 @@ macro_rules! for_each_block {
             $crate::blocks::counter::FB_COUNTER_UINT => sl_counter_uint_init, sl_counter_uint_cycle;
             $crate::blocks::counter::FB_COUNTER_DINT => sl_counter_dint_init, sl_counter_dint_cycle;
             $crate::blocks::counter::FB_COUNTER_UDINT => sl_counter_udint_init, sl_counter_udint_cycle;
+            $crate::blocks::sli::FB_SLI_INT => sl_sli_int_init, sl_sli_int_cycle;
+            $crate::blocks::sli::FB_SLI_UINT => sl_sli_uint_init, sl_sli_uint_cycle;
+            $crate::blocks::sli::FB_SLI_DINT => sl_sli_dint_init, sl_sli_dint_cycle;
+            $crate::blocks::sli::FB_SLI_UDINT => sl_sli_udint_init, sl_sli_udint_cycle;
+            $crate::blocks::sli2::FB_SLI2_INT => sl_sli2_int_init, sl_sli2_int_cycle;
+            $crate::blocks::sli2::FB_SLI2_UINT => sl_sli2_uint_init, sl_sli2_uint_cycle;
+            $crate::blocks::sli2::FB_SLI2_DINT => sl_sli2_dint_init, sl_sli2_dint_cycle;
+            $crate::blocks::sli2::FB_SLI2_UDINT => sl_sli2_udint_init, sl_sli2_udint_cycle;
             $crate::blocks::violationcounter::FB_VIOLATIONCOUNTER_UINT => sl_violationcounter_uint_init, sl_violationcounter_uint_cycle;
             $crate::blocks::violationcounter::FB_VIOLATIONCOUNTER_UDINT => sl_violationcounter_udint_init, sl_violationcounter_udint_cycle;
             // registry:end

@@ -328,10 +328,15 @@ macro_rules! depth {
                     for f in t.fields.iter().filter(|f| f.dir == Dir::Param) {
                         let r = rng.next();
                         // Bit sets (wInputActive …) often as a run of low bits, in the BOOL or
-                        // the analog half.
+                        // the analog half, now and then in both halves (SLI: bits 0 and 8).
                         let k = (r >> 16) % 8 + 1;
-                        let run_of_bits = ((1u64 << k) - 1) << (8 * ((r >> 20) & 1));
                         let bit_set = f.name.starts_with('w') || f.name.starts_with("dw");
+                        let run = (1u64 << k) - 1;
+                        let run_of_bits = if (r >> 21) % 4 == 0 {
+                            run | run << 8
+                        } else {
+                            run << (8 * ((r >> 20) & 1))
+                        };
                         let v = match r % 4 {
                             _ if bit_set && bit_sets => [0, 1 << ((r >> 24) % 16), run_of_bits][(r % 3) as usize],
                             _ if f.name.starts_with('w') && r % 3 == 0 => run_of_bits,

@@ -121,6 +121,14 @@ for _v in ("INT", "UINT", "DINT", "UDINT"):
     BLOCKS[f"SPEED_{_v}"] = dict(
         cfg=dict(wInputActive=0x100, tTimeInterval=20, nPosition=5), pulse=None,
         change=("tTimeInterval", 21), run={1})
+# SLI and SLI2 in every variant: SLI held TRUE from its rising edge (the latch) keeps RUN;
+# released before the ErrAck, since RESET is only left with SLI FALSE; changing Limit pos
+# while running is the error.
+for _b in ("SLI", "SLI2"):
+    for _v in ("INT", "UINT", "DINT", "UDINT"):
+        BLOCKS[f"{_b}_{_v}"] = dict(
+            cfg=dict(wInputActive=0x101, nLimitPos=10, nLimitNeg=10, nPosition=5),
+            pulse=("bSLI",), hold=True, change=("nLimitPos", 11), run={1})
 
 
 BLOCK_INPUTS = {}  # block -> its BOOL inputs (filled from the header in main)

@@ -790,6 +790,126 @@ static void test_param_structs(void)
       CHECK(offsetof(cds_sl_counter_udint_cycle_struct, cds_sl_counter_udint_cycle) == off, "cds_sl_counter_udint_cycle_struct return value at %zu, expected %zu", offsetof(cds_sl_counter_udint_cycle_struct, cds_sl_counter_udint_cycle), off); }
     { size_t off = 0;
       off = (off + sizeof(void *) - 1) / sizeof(void *) * sizeof(void *);
+      CHECK(offsetof(cds_sl_sli_int_init_struct, pFb) == off, "cds_sl_sli_int_init_struct.pFb at %zu, expected %zu", offsetof(cds_sl_sli_int_init_struct, pFb), off);
+      off += sizeof(void *);
+      off = (off + sizeof(int32_t) - 1) / sizeof(int32_t) * sizeof(int32_t);
+      CHECK(offsetof(cds_sl_sli_int_init_struct, cds_sl_sli_int_init) == off, "cds_sl_sli_int_init_struct return value at %zu, expected %zu", offsetof(cds_sl_sli_int_init_struct, cds_sl_sli_int_init), off); }
+    { size_t off = 0;
+      off = (off + sizeof(void *) - 1) / sizeof(void *) * sizeof(void *);
+      CHECK(offsetof(cds_sl_sli_int_cycle_struct, pFb) == off, "cds_sl_sli_int_cycle_struct.pFb at %zu, expected %zu", offsetof(cds_sl_sli_int_cycle_struct, pFb), off);
+      off += sizeof(void *);
+      off = (off + sizeof(uint32_t) - 1) / sizeof(uint32_t) * sizeof(uint32_t);
+      CHECK(offsetof(cds_sl_sli_int_cycle_struct, tNow) == off, "cds_sl_sli_int_cycle_struct.tNow at %zu, expected %zu", offsetof(cds_sl_sli_int_cycle_struct, tNow), off);
+      off += sizeof(uint32_t);
+      off = (off + sizeof(int32_t) - 1) / sizeof(int32_t) * sizeof(int32_t);
+      CHECK(offsetof(cds_sl_sli_int_cycle_struct, cds_sl_sli_int_cycle) == off, "cds_sl_sli_int_cycle_struct return value at %zu, expected %zu", offsetof(cds_sl_sli_int_cycle_struct, cds_sl_sli_int_cycle), off); }
+    { size_t off = 0;
+      off = (off + sizeof(void *) - 1) / sizeof(void *) * sizeof(void *);
+      CHECK(offsetof(cds_sl_sli_uint_init_struct, pFb) == off, "cds_sl_sli_uint_init_struct.pFb at %zu, expected %zu", offsetof(cds_sl_sli_uint_init_struct, pFb), off);
+      off += sizeof(void *);
+      off = (off + sizeof(int32_t) - 1) / sizeof(int32_t) * sizeof(int32_t);
+      CHECK(offsetof(cds_sl_sli_uint_init_struct, cds_sl_sli_uint_init) == off, "cds_sl_sli_uint_init_struct return value at %zu, expected %zu", offsetof(cds_sl_sli_uint_init_struct, cds_sl_sli_uint_init), off); }
+    { size_t off = 0;
+      off = (off + sizeof(void *) - 1) / sizeof(void *) * sizeof(void *);
+      CHECK(offsetof(cds_sl_sli_uint_cycle_struct, pFb) == off, "cds_sl_sli_uint_cycle_struct.pFb at %zu, expected %zu", offsetof(cds_sl_sli_uint_cycle_struct, pFb), off);
+      off += sizeof(void *);
+      off = (off + sizeof(uint32_t) - 1) / sizeof(uint32_t) * sizeof(uint32_t);
+      CHECK(offsetof(cds_sl_sli_uint_cycle_struct, tNow) == off, "cds_sl_sli_uint_cycle_struct.tNow at %zu, expected %zu", offsetof(cds_sl_sli_uint_cycle_struct, tNow), off);
+      off += sizeof(uint32_t);
+      off = (off + sizeof(int32_t) - 1) / sizeof(int32_t) * sizeof(int32_t);
+      CHECK(offsetof(cds_sl_sli_uint_cycle_struct, cds_sl_sli_uint_cycle) == off, "cds_sl_sli_uint_cycle_struct return value at %zu, expected %zu", offsetof(cds_sl_sli_uint_cycle_struct, cds_sl_sli_uint_cycle), off); }
+    { size_t off = 0;
+      off = (off + sizeof(void *) - 1) / sizeof(void *) * sizeof(void *);
+      CHECK(offsetof(cds_sl_sli_dint_init_struct, pFb) == off, "cds_sl_sli_dint_init_struct.pFb at %zu, expected %zu", offsetof(cds_sl_sli_dint_init_struct, pFb), off);
+      off += sizeof(void *);
+      off = (off + sizeof(int32_t) - 1) / sizeof(int32_t) * sizeof(int32_t);
+      CHECK(offsetof(cds_sl_sli_dint_init_struct, cds_sl_sli_dint_init) == off, "cds_sl_sli_dint_init_struct return value at %zu, expected %zu", offsetof(cds_sl_sli_dint_init_struct, cds_sl_sli_dint_init), off); }
+    { size_t off = 0;
+      off = (off + sizeof(void *) - 1) / sizeof(void *) * sizeof(void *);
+      CHECK(offsetof(cds_sl_sli_dint_cycle_struct, pFb) == off, "cds_sl_sli_dint_cycle_struct.pFb at %zu, expected %zu", offsetof(cds_sl_sli_dint_cycle_struct, pFb), off);
+      off += sizeof(void *);
+      off = (off + sizeof(uint32_t) - 1) / sizeof(uint32_t) * sizeof(uint32_t);
+      CHECK(offsetof(cds_sl_sli_dint_cycle_struct, tNow) == off, "cds_sl_sli_dint_cycle_struct.tNow at %zu, expected %zu", offsetof(cds_sl_sli_dint_cycle_struct, tNow), off);
+      off += sizeof(uint32_t);
+      off = (off + sizeof(int32_t) - 1) / sizeof(int32_t) * sizeof(int32_t);
+      CHECK(offsetof(cds_sl_sli_dint_cycle_struct, cds_sl_sli_dint_cycle) == off, "cds_sl_sli_dint_cycle_struct return value at %zu, expected %zu", offsetof(cds_sl_sli_dint_cycle_struct, cds_sl_sli_dint_cycle), off); }
+    { size_t off = 0;
+      off = (off + sizeof(void *) - 1) / sizeof(void *) * sizeof(void *);
+      CHECK(offsetof(cds_sl_sli_udint_init_struct, pFb) == off, "cds_sl_sli_udint_init_struct.pFb at %zu, expected %zu", offsetof(cds_sl_sli_udint_init_struct, pFb), off);
+      off += sizeof(void *);
+      off = (off + sizeof(int32_t) - 1) / sizeof(int32_t) * sizeof(int32_t);
+      CHECK(offsetof(cds_sl_sli_udint_init_struct, cds_sl_sli_udint_init) == off, "cds_sl_sli_udint_init_struct return value at %zu, expected %zu", offsetof(cds_sl_sli_udint_init_struct, cds_sl_sli_udint_init), off); }
+    { size_t off = 0;
+      off = (off + sizeof(void *) - 1) / sizeof(void *) * sizeof(void *);
+      CHECK(offsetof(cds_sl_sli_udint_cycle_struct, pFb) == off, "cds_sl_sli_udint_cycle_struct.pFb at %zu, expected %zu", offsetof(cds_sl_sli_udint_cycle_struct, pFb), off);
+      off += sizeof(void *);
+      off = (off + sizeof(uint32_t) - 1) / sizeof(uint32_t) * sizeof(uint32_t);
+      CHECK(offsetof(cds_sl_sli_udint_cycle_struct, tNow) == off, "cds_sl_sli_udint_cycle_struct.tNow at %zu, expected %zu", offsetof(cds_sl_sli_udint_cycle_struct, tNow), off);
+      off += sizeof(uint32_t);
+      off = (off + sizeof(int32_t) - 1) / sizeof(int32_t) * sizeof(int32_t);
+      CHECK(offsetof(cds_sl_sli_udint_cycle_struct, cds_sl_sli_udint_cycle) == off, "cds_sl_sli_udint_cycle_struct return value at %zu, expected %zu", offsetof(cds_sl_sli_udint_cycle_struct, cds_sl_sli_udint_cycle), off); }
+    { size_t off = 0;
+      off = (off + sizeof(void *) - 1) / sizeof(void *) * sizeof(void *);
+      CHECK(offsetof(cds_sl_sli2_int_init_struct, pFb) == off, "cds_sl_sli2_int_init_struct.pFb at %zu, expected %zu", offsetof(cds_sl_sli2_int_init_struct, pFb), off);
+      off += sizeof(void *);
+      off = (off + sizeof(int32_t) - 1) / sizeof(int32_t) * sizeof(int32_t);
+      CHECK(offsetof(cds_sl_sli2_int_init_struct, cds_sl_sli2_int_init) == off, "cds_sl_sli2_int_init_struct return value at %zu, expected %zu", offsetof(cds_sl_sli2_int_init_struct, cds_sl_sli2_int_init), off); }
+    { size_t off = 0;
+      off = (off + sizeof(void *) - 1) / sizeof(void *) * sizeof(void *);
+      CHECK(offsetof(cds_sl_sli2_int_cycle_struct, pFb) == off, "cds_sl_sli2_int_cycle_struct.pFb at %zu, expected %zu", offsetof(cds_sl_sli2_int_cycle_struct, pFb), off);
+      off += sizeof(void *);
+      off = (off + sizeof(uint32_t) - 1) / sizeof(uint32_t) * sizeof(uint32_t);
+      CHECK(offsetof(cds_sl_sli2_int_cycle_struct, tNow) == off, "cds_sl_sli2_int_cycle_struct.tNow at %zu, expected %zu", offsetof(cds_sl_sli2_int_cycle_struct, tNow), off);
+      off += sizeof(uint32_t);
+      off = (off + sizeof(int32_t) - 1) / sizeof(int32_t) * sizeof(int32_t);
+      CHECK(offsetof(cds_sl_sli2_int_cycle_struct, cds_sl_sli2_int_cycle) == off, "cds_sl_sli2_int_cycle_struct return value at %zu, expected %zu", offsetof(cds_sl_sli2_int_cycle_struct, cds_sl_sli2_int_cycle), off); }
+    { size_t off = 0;
+      off = (off + sizeof(void *) - 1) / sizeof(void *) * sizeof(void *);
+      CHECK(offsetof(cds_sl_sli2_uint_init_struct, pFb) == off, "cds_sl_sli2_uint_init_struct.pFb at %zu, expected %zu", offsetof(cds_sl_sli2_uint_init_struct, pFb), off);
+      off += sizeof(void *);
+      off = (off + sizeof(int32_t) - 1) / sizeof(int32_t) * sizeof(int32_t);
+      CHECK(offsetof(cds_sl_sli2_uint_init_struct, cds_sl_sli2_uint_init) == off, "cds_sl_sli2_uint_init_struct return value at %zu, expected %zu", offsetof(cds_sl_sli2_uint_init_struct, cds_sl_sli2_uint_init), off); }
+    { size_t off = 0;
+      off = (off + sizeof(void *) - 1) / sizeof(void *) * sizeof(void *);
+      CHECK(offsetof(cds_sl_sli2_uint_cycle_struct, pFb) == off, "cds_sl_sli2_uint_cycle_struct.pFb at %zu, expected %zu", offsetof(cds_sl_sli2_uint_cycle_struct, pFb), off);
+      off += sizeof(void *);
+      off = (off + sizeof(uint32_t) - 1) / sizeof(uint32_t) * sizeof(uint32_t);
+      CHECK(offsetof(cds_sl_sli2_uint_cycle_struct, tNow) == off, "cds_sl_sli2_uint_cycle_struct.tNow at %zu, expected %zu", offsetof(cds_sl_sli2_uint_cycle_struct, tNow), off);
+      off += sizeof(uint32_t);
+      off = (off + sizeof(int32_t) - 1) / sizeof(int32_t) * sizeof(int32_t);
+      CHECK(offsetof(cds_sl_sli2_uint_cycle_struct, cds_sl_sli2_uint_cycle) == off, "cds_sl_sli2_uint_cycle_struct return value at %zu, expected %zu", offsetof(cds_sl_sli2_uint_cycle_struct, cds_sl_sli2_uint_cycle), off); }
+    { size_t off = 0;
+      off = (off + sizeof(void *) - 1) / sizeof(void *) * sizeof(void *);
+      CHECK(offsetof(cds_sl_sli2_dint_init_struct, pFb) == off, "cds_sl_sli2_dint_init_struct.pFb at %zu, expected %zu", offsetof(cds_sl_sli2_dint_init_struct, pFb), off);
+      off += sizeof(void *);
+      off = (off + sizeof(int32_t) - 1) / sizeof(int32_t) * sizeof(int32_t);
+      CHECK(offsetof(cds_sl_sli2_dint_init_struct, cds_sl_sli2_dint_init) == off, "cds_sl_sli2_dint_init_struct return value at %zu, expected %zu", offsetof(cds_sl_sli2_dint_init_struct, cds_sl_sli2_dint_init), off); }
+    { size_t off = 0;
+      off = (off + sizeof(void *) - 1) / sizeof(void *) * sizeof(void *);
+      CHECK(offsetof(cds_sl_sli2_dint_cycle_struct, pFb) == off, "cds_sl_sli2_dint_cycle_struct.pFb at %zu, expected %zu", offsetof(cds_sl_sli2_dint_cycle_struct, pFb), off);
+      off += sizeof(void *);
+      off = (off + sizeof(uint32_t) - 1) / sizeof(uint32_t) * sizeof(uint32_t);
+      CHECK(offsetof(cds_sl_sli2_dint_cycle_struct, tNow) == off, "cds_sl_sli2_dint_cycle_struct.tNow at %zu, expected %zu", offsetof(cds_sl_sli2_dint_cycle_struct, tNow), off);
+      off += sizeof(uint32_t);
+      off = (off + sizeof(int32_t) - 1) / sizeof(int32_t) * sizeof(int32_t);
+      CHECK(offsetof(cds_sl_sli2_dint_cycle_struct, cds_sl_sli2_dint_cycle) == off, "cds_sl_sli2_dint_cycle_struct return value at %zu, expected %zu", offsetof(cds_sl_sli2_dint_cycle_struct, cds_sl_sli2_dint_cycle), off); }
+    { size_t off = 0;
+      off = (off + sizeof(void *) - 1) / sizeof(void *) * sizeof(void *);
+      CHECK(offsetof(cds_sl_sli2_udint_init_struct, pFb) == off, "cds_sl_sli2_udint_init_struct.pFb at %zu, expected %zu", offsetof(cds_sl_sli2_udint_init_struct, pFb), off);
+      off += sizeof(void *);
+      off = (off + sizeof(int32_t) - 1) / sizeof(int32_t) * sizeof(int32_t);
+      CHECK(offsetof(cds_sl_sli2_udint_init_struct, cds_sl_sli2_udint_init) == off, "cds_sl_sli2_udint_init_struct return value at %zu, expected %zu", offsetof(cds_sl_sli2_udint_init_struct, cds_sl_sli2_udint_init), off); }
+    { size_t off = 0;
+      off = (off + sizeof(void *) - 1) / sizeof(void *) * sizeof(void *);
+      CHECK(offsetof(cds_sl_sli2_udint_cycle_struct, pFb) == off, "cds_sl_sli2_udint_cycle_struct.pFb at %zu, expected %zu", offsetof(cds_sl_sli2_udint_cycle_struct, pFb), off);
+      off += sizeof(void *);
+      off = (off + sizeof(uint32_t) - 1) / sizeof(uint32_t) * sizeof(uint32_t);
+      CHECK(offsetof(cds_sl_sli2_udint_cycle_struct, tNow) == off, "cds_sl_sli2_udint_cycle_struct.tNow at %zu, expected %zu", offsetof(cds_sl_sli2_udint_cycle_struct, tNow), off);
+      off += sizeof(uint32_t);
+      off = (off + sizeof(int32_t) - 1) / sizeof(int32_t) * sizeof(int32_t);
+      CHECK(offsetof(cds_sl_sli2_udint_cycle_struct, cds_sl_sli2_udint_cycle) == off, "cds_sl_sli2_udint_cycle_struct return value at %zu, expected %zu", offsetof(cds_sl_sli2_udint_cycle_struct, cds_sl_sli2_udint_cycle), off); }
+    { size_t off = 0;
+      off = (off + sizeof(void *) - 1) / sizeof(void *) * sizeof(void *);
       CHECK(offsetof(cds_sl_violationcounter_uint_init_struct, pFb) == off, "cds_sl_violationcounter_uint_init_struct.pFb at %zu, expected %zu", offsetof(cds_sl_violationcounter_uint_init_struct, pFb), off);
       off += sizeof(void *);
       off = (off + sizeof(int32_t) - 1) / sizeof(int32_t) * sizeof(int32_t);
@@ -919,6 +1039,8 @@ static uint32_t rnd_options(void)
     if (rnd() % 4u == 0u) o |= (uint32_t)SL_OPT_MUTING_OSSD_CHECK_OPTIONAL;
     if (rnd() % 4u == 0u) o |= (uint32_t)SL_OPT_SCALE_DIVISION_FIRST;
     if (rnd() % 4u == 0u) o |= (uint32_t)SL_OPT_SPEED_OVERFLOW_CHECK;
+    if (rnd() % 4u == 0u) o |= (uint32_t)SL_OPT_SLI2_OVERFLOW_ALLOWED;
+    if (rnd() % 4u == 0u) o |= (uint32_t)SL_OPT_SLI2_EXCEEDED_SUPPORT;
     if (rnd() % 4u == 0u) o |= (uint32_t)SL_OPT_TON2_REMAINING_TIME;
     if (rnd() % 4u == 0u) o |= (uint32_t)SL_OPT_EDM1;
     if (rnd() % 4u == 0u) o |= (uint32_t)SL_OPT_EDM2;
@@ -5810,6 +5932,750 @@ static void test_counter_udint(void)
     CHECK(reached_error, "FB_COUNTER_UDINT: the random test never reached ERROR");
 }
 
+static void rnd_config_sli_int(FB_SLI_INT *x)
+{
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nPosition = (int16_t)v[rnd() % 7u]; }
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nLimitPos = (uint32_t)v[rnd() % 7u]; }
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nLimitNeg = (uint32_t)v[rnd() % 7u]; }
+    x->wInputActive = (uint16_t)(rnd() & 0x101u);
+}
+/* 1: a valid configuration (want_valid) or an invalid one was drawn into a and b */
+static int draw_sli_int(FB_SLI_INT *a, FB_SLI_INT *b, int want_valid)
+{
+    long k;
+    for (k = 0; k < 200000L; k++) {
+        static FB_SLI_INT x;
+        int valid;
+        memset(&x, 0, sizeof x);
+        rnd_config_sli_int(&x);
+        valid = sl_sli_int_init(&x) == SL_OK && sl_sli_int_cycle(&x, 0u) == SL_OK;
+        if (valid == want_valid) {
+            memset(&x.bRun, 0, 0); /* keep x's parameters, reset the instance */
+            memset(a, 0, sizeof *a);
+            rnd_config_sli_int(a); /* placeholder, overwritten below */
+            a->nPosition = x.nPosition;
+            a->nLimitPos = x.nLimitPos;
+            a->nLimitNeg = x.nLimitNeg;
+            a->wInputActive = x.wInputActive;
+            *b = *a;
+            return 1;
+        }
+    }
+    return 0;
+}
+static void test_sli_int(void)
+{
+    static FB_SLI_INT a, b;
+    cds_sl_sli_int_cycle_struct p;
+    int c, k, bump, ok = 0, cycles = 0, inv_cycles = 0, inv_config = 0, reached_run = 0, reached_error = 0;
+    int hist[12] = {0};
+    unsigned pol = 0;
+    uint32_t t = 1000u;
+    memset(&a, 0, sizeof a);
+    memset(&b, 0, sizeof b);
+    memset(&p, 0, sizeof p);
+    p.pFb = NULL;
+    p.cds_sl_sli_int_cycle = 12345;
+    cds_sl_sli_int_cycle(&p);
+    CHECK(p.cds_sl_sli_int_cycle == SL_E_NULL, "cds_sl_sli_int_cycle(NULL) returned %d", (int)p.cds_sl_sli_int_cycle);
+    a.bRun = b.bRun = 1;
+    a.wInputActive = b.wInputActive = 1;
+    { cds_sl_sli_int_init_struct q; int32_t r; q.pFb = &a; cds_sl_sli_int_init(&q); r = sl_sli_int_init(&b);
+      CHECK(q.cds_sl_sli_int_init == r && memcmp(&a, &b, sizeof a) == 0, "cds_sl_sli_int_init differs from sl_sli_int_init"); }
+    rng = 1648054274u; /* FNV-1a of "FB_SLI_INT" */
+    machine = 1u;
+    for (c = 0; c < 20; c++) {
+        int valid = c < 16; /* 16 valid configurations, then the labelled invalid share: 4 */
+        if (!draw_sli_int(&a, &b, valid)) {
+            CHECK(!valid, "FB_SLI_INT: no valid configuration found in 200000 random draws");
+            continue;
+        }
+        if (!valid) inv_config++;
+        a.bSLI = b.bSLI = (uint8_t)(1);
+        a.bErrAck = b.bErrAck = (uint8_t)(0);
+        bump = 20 + (int)(rnd() % 20u);
+        pol = (c % 2 == 1) ? rnd() : 0u;
+        for (k = 0; k < 50; k++) {
+            int32_t direct;
+            next_machine();
+            a.bSLI = b.bSLI = next_signal(a.bSLI, 0, pol >> 0);
+            a.bErrAck = b.bErrAck = next_signal(a.bErrAck, 1, pol >> 1);
+            a.bRun = b.bRun = (uint8_t)(k >= 2 && rnd() % 100u != 0u);
+            if (valid && k == bump) { a.nLimitPos++; b.nLimitPos++; } /* changed while running: ERROR */
+            if (valid && k == bump + 2) { a.nLimitPos--; b.nLimitPos--; } /* restored */
+            p.pFb = &a;
+            p.tNow = t += 10u;
+            cds_sl_sli_int_cycle(&p);
+            direct = sl_sli_int_cycle(&b, p.tNow);
+            CHECK(p.cds_sl_sli_int_cycle == direct, "FB_SLI_INT config %d cycle %d: adapter %d, direct %d", c, k, (int)p.cds_sl_sli_int_cycle, (int)direct);
+            CHECK(memcmp(&a, &b, sizeof a) == 0, "FB_SLI_INT config %d cycle %d: instances differ", c, k);
+            if (!valid) { inv_cycles++; continue; }
+            cycles++;
+            if (direct == SL_OK) ok++;
+            if (direct <= 0 && direct > -12) hist[-direct]++;
+            if (b.nState == SL_STATE_ERROR) reached_error = 1;
+            if (b.nState != SL_STATE_STOP && b.nState != SL_STATE_ERROR && b.nState != SL_STATE_RESET && (b.bSLIActive)) reached_run = 1;
+        }
+    }
+    printf("FB_SLI_INT: %d of %d cycles (16 valid random configurations) returned SL_OK; run-like state %s, ERROR %s; invalid share: %d configurations, %d cycles\n", ok, cycles, reached_run ? "reached" : "NOT reached", reached_error ? "reached" : "NOT reached", inv_config, inv_cycles);
+    if (2 * ok <= cycles) printf("  status histogram (0, -1, ... -11): %d %d %d %d %d %d %d %d %d %d %d\n", hist[0], hist[1], hist[2], hist[3], hist[4], hist[5], hist[6], hist[7], hist[8], hist[9], hist[10]);
+    CHECK(cycles > 0 && 2 * ok > cycles, "FB_SLI_INT: only %d of %d cycles with valid configurations returned SL_OK", ok, cycles);
+    CHECK(reached_run, "FB_SLI_INT: the random test never reached a running state (an output on)");
+    CHECK(reached_error, "FB_SLI_INT: the random test never reached ERROR");
+}
+
+static void rnd_config_sli_uint(FB_SLI_UINT *x)
+{
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nPosition = (uint16_t)v[rnd() % 7u]; }
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nLimitPos = (uint32_t)v[rnd() % 7u]; }
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nLimitNeg = (uint32_t)v[rnd() % 7u]; }
+    x->wInputActive = (uint16_t)(rnd() & 0x101u);
+}
+/* 1: a valid configuration (want_valid) or an invalid one was drawn into a and b */
+static int draw_sli_uint(FB_SLI_UINT *a, FB_SLI_UINT *b, int want_valid)
+{
+    long k;
+    for (k = 0; k < 200000L; k++) {
+        static FB_SLI_UINT x;
+        int valid;
+        memset(&x, 0, sizeof x);
+        rnd_config_sli_uint(&x);
+        valid = sl_sli_uint_init(&x) == SL_OK && sl_sli_uint_cycle(&x, 0u) == SL_OK;
+        if (valid == want_valid) {
+            memset(&x.bRun, 0, 0); /* keep x's parameters, reset the instance */
+            memset(a, 0, sizeof *a);
+            rnd_config_sli_uint(a); /* placeholder, overwritten below */
+            a->nPosition = x.nPosition;
+            a->nLimitPos = x.nLimitPos;
+            a->nLimitNeg = x.nLimitNeg;
+            a->wInputActive = x.wInputActive;
+            *b = *a;
+            return 1;
+        }
+    }
+    return 0;
+}
+static void test_sli_uint(void)
+{
+    static FB_SLI_UINT a, b;
+    cds_sl_sli_uint_cycle_struct p;
+    int c, k, bump, ok = 0, cycles = 0, inv_cycles = 0, inv_config = 0, reached_run = 0, reached_error = 0;
+    int hist[12] = {0};
+    unsigned pol = 0;
+    uint32_t t = 1000u;
+    memset(&a, 0, sizeof a);
+    memset(&b, 0, sizeof b);
+    memset(&p, 0, sizeof p);
+    p.pFb = NULL;
+    p.cds_sl_sli_uint_cycle = 12345;
+    cds_sl_sli_uint_cycle(&p);
+    CHECK(p.cds_sl_sli_uint_cycle == SL_E_NULL, "cds_sl_sli_uint_cycle(NULL) returned %d", (int)p.cds_sl_sli_uint_cycle);
+    a.bRun = b.bRun = 1;
+    a.wInputActive = b.wInputActive = 1;
+    { cds_sl_sli_uint_init_struct q; int32_t r; q.pFb = &a; cds_sl_sli_uint_init(&q); r = sl_sli_uint_init(&b);
+      CHECK(q.cds_sl_sli_uint_init == r && memcmp(&a, &b, sizeof a) == 0, "cds_sl_sli_uint_init differs from sl_sli_uint_init"); }
+    rng = 1631717477u; /* FNV-1a of "FB_SLI_UINT" */
+    machine = 1u;
+    for (c = 0; c < 20; c++) {
+        int valid = c < 16; /* 16 valid configurations, then the labelled invalid share: 4 */
+        if (!draw_sli_uint(&a, &b, valid)) {
+            CHECK(!valid, "FB_SLI_UINT: no valid configuration found in 200000 random draws");
+            continue;
+        }
+        if (!valid) inv_config++;
+        a.bSLI = b.bSLI = (uint8_t)(1);
+        a.bErrAck = b.bErrAck = (uint8_t)(0);
+        bump = 20 + (int)(rnd() % 20u);
+        pol = (c % 2 == 1) ? rnd() : 0u;
+        for (k = 0; k < 50; k++) {
+            int32_t direct;
+            next_machine();
+            a.bSLI = b.bSLI = next_signal(a.bSLI, 0, pol >> 0);
+            a.bErrAck = b.bErrAck = next_signal(a.bErrAck, 1, pol >> 1);
+            a.bRun = b.bRun = (uint8_t)(k >= 2 && rnd() % 100u != 0u);
+            if (valid && k == bump) { a.nLimitPos++; b.nLimitPos++; } /* changed while running: ERROR */
+            if (valid && k == bump + 2) { a.nLimitPos--; b.nLimitPos--; } /* restored */
+            p.pFb = &a;
+            p.tNow = t += 10u;
+            cds_sl_sli_uint_cycle(&p);
+            direct = sl_sli_uint_cycle(&b, p.tNow);
+            CHECK(p.cds_sl_sli_uint_cycle == direct, "FB_SLI_UINT config %d cycle %d: adapter %d, direct %d", c, k, (int)p.cds_sl_sli_uint_cycle, (int)direct);
+            CHECK(memcmp(&a, &b, sizeof a) == 0, "FB_SLI_UINT config %d cycle %d: instances differ", c, k);
+            if (!valid) { inv_cycles++; continue; }
+            cycles++;
+            if (direct == SL_OK) ok++;
+            if (direct <= 0 && direct > -12) hist[-direct]++;
+            if (b.nState == SL_STATE_ERROR) reached_error = 1;
+            if (b.nState != SL_STATE_STOP && b.nState != SL_STATE_ERROR && b.nState != SL_STATE_RESET && (b.bSLIActive)) reached_run = 1;
+        }
+    }
+    printf("FB_SLI_UINT: %d of %d cycles (16 valid random configurations) returned SL_OK; run-like state %s, ERROR %s; invalid share: %d configurations, %d cycles\n", ok, cycles, reached_run ? "reached" : "NOT reached", reached_error ? "reached" : "NOT reached", inv_config, inv_cycles);
+    if (2 * ok <= cycles) printf("  status histogram (0, -1, ... -11): %d %d %d %d %d %d %d %d %d %d %d\n", hist[0], hist[1], hist[2], hist[3], hist[4], hist[5], hist[6], hist[7], hist[8], hist[9], hist[10]);
+    CHECK(cycles > 0 && 2 * ok > cycles, "FB_SLI_UINT: only %d of %d cycles with valid configurations returned SL_OK", ok, cycles);
+    CHECK(reached_run, "FB_SLI_UINT: the random test never reached a running state (an output on)");
+    CHECK(reached_error, "FB_SLI_UINT: the random test never reached ERROR");
+}
+
+static void rnd_config_sli_dint(FB_SLI_DINT *x)
+{
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nPosition = (int32_t)v[rnd() % 7u]; }
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nLimitPos = (uint32_t)v[rnd() % 7u]; }
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nLimitNeg = (uint32_t)v[rnd() % 7u]; }
+    x->wInputActive = (uint16_t)(rnd() & 0x101u);
+}
+/* 1: a valid configuration (want_valid) or an invalid one was drawn into a and b */
+static int draw_sli_dint(FB_SLI_DINT *a, FB_SLI_DINT *b, int want_valid)
+{
+    long k;
+    for (k = 0; k < 200000L; k++) {
+        static FB_SLI_DINT x;
+        int valid;
+        memset(&x, 0, sizeof x);
+        rnd_config_sli_dint(&x);
+        valid = sl_sli_dint_init(&x) == SL_OK && sl_sli_dint_cycle(&x, 0u) == SL_OK;
+        if (valid == want_valid) {
+            memset(&x.bRun, 0, 0); /* keep x's parameters, reset the instance */
+            memset(a, 0, sizeof *a);
+            rnd_config_sli_dint(a); /* placeholder, overwritten below */
+            a->nPosition = x.nPosition;
+            a->nLimitPos = x.nLimitPos;
+            a->nLimitNeg = x.nLimitNeg;
+            a->wInputActive = x.wInputActive;
+            *b = *a;
+            return 1;
+        }
+    }
+    return 0;
+}
+static void test_sli_dint(void)
+{
+    static FB_SLI_DINT a, b;
+    cds_sl_sli_dint_cycle_struct p;
+    int c, k, bump, ok = 0, cycles = 0, inv_cycles = 0, inv_config = 0, reached_run = 0, reached_error = 0;
+    int hist[12] = {0};
+    unsigned pol = 0;
+    uint32_t t = 1000u;
+    memset(&a, 0, sizeof a);
+    memset(&b, 0, sizeof b);
+    memset(&p, 0, sizeof p);
+    p.pFb = NULL;
+    p.cds_sl_sli_dint_cycle = 12345;
+    cds_sl_sli_dint_cycle(&p);
+    CHECK(p.cds_sl_sli_dint_cycle == SL_E_NULL, "cds_sl_sli_dint_cycle(NULL) returned %d", (int)p.cds_sl_sli_dint_cycle);
+    a.bRun = b.bRun = 1;
+    a.wInputActive = b.wInputActive = 1;
+    { cds_sl_sli_dint_init_struct q; int32_t r; q.pFb = &a; cds_sl_sli_dint_init(&q); r = sl_sli_dint_init(&b);
+      CHECK(q.cds_sl_sli_dint_init == r && memcmp(&a, &b, sizeof a) == 0, "cds_sl_sli_dint_init differs from sl_sli_dint_init"); }
+    rng = 1515621744u; /* FNV-1a of "FB_SLI_DINT" */
+    machine = 1u;
+    for (c = 0; c < 20; c++) {
+        int valid = c < 16; /* 16 valid configurations, then the labelled invalid share: 4 */
+        if (!draw_sli_dint(&a, &b, valid)) {
+            CHECK(!valid, "FB_SLI_DINT: no valid configuration found in 200000 random draws");
+            continue;
+        }
+        if (!valid) inv_config++;
+        a.bSLI = b.bSLI = (uint8_t)(1);
+        a.bErrAck = b.bErrAck = (uint8_t)(0);
+        bump = 20 + (int)(rnd() % 20u);
+        pol = (c % 2 == 1) ? rnd() : 0u;
+        for (k = 0; k < 50; k++) {
+            int32_t direct;
+            next_machine();
+            a.bSLI = b.bSLI = next_signal(a.bSLI, 0, pol >> 0);
+            a.bErrAck = b.bErrAck = next_signal(a.bErrAck, 1, pol >> 1);
+            a.bRun = b.bRun = (uint8_t)(k >= 2 && rnd() % 100u != 0u);
+            if (valid && k == bump) { a.nLimitPos++; b.nLimitPos++; } /* changed while running: ERROR */
+            if (valid && k == bump + 2) { a.nLimitPos--; b.nLimitPos--; } /* restored */
+            p.pFb = &a;
+            p.tNow = t += 10u;
+            cds_sl_sli_dint_cycle(&p);
+            direct = sl_sli_dint_cycle(&b, p.tNow);
+            CHECK(p.cds_sl_sli_dint_cycle == direct, "FB_SLI_DINT config %d cycle %d: adapter %d, direct %d", c, k, (int)p.cds_sl_sli_dint_cycle, (int)direct);
+            CHECK(memcmp(&a, &b, sizeof a) == 0, "FB_SLI_DINT config %d cycle %d: instances differ", c, k);
+            if (!valid) { inv_cycles++; continue; }
+            cycles++;
+            if (direct == SL_OK) ok++;
+            if (direct <= 0 && direct > -12) hist[-direct]++;
+            if (b.nState == SL_STATE_ERROR) reached_error = 1;
+            if (b.nState != SL_STATE_STOP && b.nState != SL_STATE_ERROR && b.nState != SL_STATE_RESET && (b.bSLIActive)) reached_run = 1;
+        }
+    }
+    printf("FB_SLI_DINT: %d of %d cycles (16 valid random configurations) returned SL_OK; run-like state %s, ERROR %s; invalid share: %d configurations, %d cycles\n", ok, cycles, reached_run ? "reached" : "NOT reached", reached_error ? "reached" : "NOT reached", inv_config, inv_cycles);
+    if (2 * ok <= cycles) printf("  status histogram (0, -1, ... -11): %d %d %d %d %d %d %d %d %d %d %d\n", hist[0], hist[1], hist[2], hist[3], hist[4], hist[5], hist[6], hist[7], hist[8], hist[9], hist[10]);
+    CHECK(cycles > 0 && 2 * ok > cycles, "FB_SLI_DINT: only %d of %d cycles with valid configurations returned SL_OK", ok, cycles);
+    CHECK(reached_run, "FB_SLI_DINT: the random test never reached a running state (an output on)");
+    CHECK(reached_error, "FB_SLI_DINT: the random test never reached ERROR");
+}
+
+static void rnd_config_sli_udint(FB_SLI_UDINT *x)
+{
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nPosition = (uint32_t)v[rnd() % 7u]; }
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nLimitPos = (uint32_t)v[rnd() % 7u]; }
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nLimitNeg = (uint32_t)v[rnd() % 7u]; }
+    x->wInputActive = (uint16_t)(rnd() & 0x101u);
+}
+/* 1: a valid configuration (want_valid) or an invalid one was drawn into a and b */
+static int draw_sli_udint(FB_SLI_UDINT *a, FB_SLI_UDINT *b, int want_valid)
+{
+    long k;
+    for (k = 0; k < 200000L; k++) {
+        static FB_SLI_UDINT x;
+        int valid;
+        memset(&x, 0, sizeof x);
+        rnd_config_sli_udint(&x);
+        valid = sl_sli_udint_init(&x) == SL_OK && sl_sli_udint_cycle(&x, 0u) == SL_OK;
+        if (valid == want_valid) {
+            memset(&x.bRun, 0, 0); /* keep x's parameters, reset the instance */
+            memset(a, 0, sizeof *a);
+            rnd_config_sli_udint(a); /* placeholder, overwritten below */
+            a->nPosition = x.nPosition;
+            a->nLimitPos = x.nLimitPos;
+            a->nLimitNeg = x.nLimitNeg;
+            a->wInputActive = x.wInputActive;
+            *b = *a;
+            return 1;
+        }
+    }
+    return 0;
+}
+static void test_sli_udint(void)
+{
+    static FB_SLI_UDINT a, b;
+    cds_sl_sli_udint_cycle_struct p;
+    int c, k, bump, ok = 0, cycles = 0, inv_cycles = 0, inv_config = 0, reached_run = 0, reached_error = 0;
+    int hist[12] = {0};
+    unsigned pol = 0;
+    uint32_t t = 1000u;
+    memset(&a, 0, sizeof a);
+    memset(&b, 0, sizeof b);
+    memset(&p, 0, sizeof p);
+    p.pFb = NULL;
+    p.cds_sl_sli_udint_cycle = 12345;
+    cds_sl_sli_udint_cycle(&p);
+    CHECK(p.cds_sl_sli_udint_cycle == SL_E_NULL, "cds_sl_sli_udint_cycle(NULL) returned %d", (int)p.cds_sl_sli_udint_cycle);
+    a.bRun = b.bRun = 1;
+    a.wInputActive = b.wInputActive = 1;
+    { cds_sl_sli_udint_init_struct q; int32_t r; q.pFb = &a; cds_sl_sli_udint_init(&q); r = sl_sli_udint_init(&b);
+      CHECK(q.cds_sl_sli_udint_init == r && memcmp(&a, &b, sizeof a) == 0, "cds_sl_sli_udint_init differs from sl_sli_udint_init"); }
+    rng = 2912151657u; /* FNV-1a of "FB_SLI_UDINT" */
+    machine = 1u;
+    for (c = 0; c < 20; c++) {
+        int valid = c < 16; /* 16 valid configurations, then the labelled invalid share: 4 */
+        if (!draw_sli_udint(&a, &b, valid)) {
+            CHECK(!valid, "FB_SLI_UDINT: no valid configuration found in 200000 random draws");
+            continue;
+        }
+        if (!valid) inv_config++;
+        a.bSLI = b.bSLI = (uint8_t)(1);
+        a.bErrAck = b.bErrAck = (uint8_t)(0);
+        bump = 20 + (int)(rnd() % 20u);
+        pol = (c % 2 == 1) ? rnd() : 0u;
+        for (k = 0; k < 50; k++) {
+            int32_t direct;
+            next_machine();
+            a.bSLI = b.bSLI = next_signal(a.bSLI, 0, pol >> 0);
+            a.bErrAck = b.bErrAck = next_signal(a.bErrAck, 1, pol >> 1);
+            a.bRun = b.bRun = (uint8_t)(k >= 2 && rnd() % 100u != 0u);
+            if (valid && k == bump) { a.nLimitPos++; b.nLimitPos++; } /* changed while running: ERROR */
+            if (valid && k == bump + 2) { a.nLimitPos--; b.nLimitPos--; } /* restored */
+            p.pFb = &a;
+            p.tNow = t += 10u;
+            cds_sl_sli_udint_cycle(&p);
+            direct = sl_sli_udint_cycle(&b, p.tNow);
+            CHECK(p.cds_sl_sli_udint_cycle == direct, "FB_SLI_UDINT config %d cycle %d: adapter %d, direct %d", c, k, (int)p.cds_sl_sli_udint_cycle, (int)direct);
+            CHECK(memcmp(&a, &b, sizeof a) == 0, "FB_SLI_UDINT config %d cycle %d: instances differ", c, k);
+            if (!valid) { inv_cycles++; continue; }
+            cycles++;
+            if (direct == SL_OK) ok++;
+            if (direct <= 0 && direct > -12) hist[-direct]++;
+            if (b.nState == SL_STATE_ERROR) reached_error = 1;
+            if (b.nState != SL_STATE_STOP && b.nState != SL_STATE_ERROR && b.nState != SL_STATE_RESET && (b.bSLIActive)) reached_run = 1;
+        }
+    }
+    printf("FB_SLI_UDINT: %d of %d cycles (16 valid random configurations) returned SL_OK; run-like state %s, ERROR %s; invalid share: %d configurations, %d cycles\n", ok, cycles, reached_run ? "reached" : "NOT reached", reached_error ? "reached" : "NOT reached", inv_config, inv_cycles);
+    if (2 * ok <= cycles) printf("  status histogram (0, -1, ... -11): %d %d %d %d %d %d %d %d %d %d %d\n", hist[0], hist[1], hist[2], hist[3], hist[4], hist[5], hist[6], hist[7], hist[8], hist[9], hist[10]);
+    CHECK(cycles > 0 && 2 * ok > cycles, "FB_SLI_UDINT: only %d of %d cycles with valid configurations returned SL_OK", ok, cycles);
+    CHECK(reached_run, "FB_SLI_UDINT: the random test never reached a running state (an output on)");
+    CHECK(reached_error, "FB_SLI_UDINT: the random test never reached ERROR");
+}
+
+static void rnd_config_sli2_int(FB_SLI2_INT *x)
+{
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nPosition = (int16_t)v[rnd() % 7u]; }
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nLimitPos = (uint32_t)v[rnd() % 7u]; }
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nLimitNeg = (uint32_t)v[rnd() % 7u]; }
+    x->dwOptions = rnd_options();
+    x->wInputActive = (uint16_t)(rnd() & 0x101u);
+}
+/* 1: a valid configuration (want_valid) or an invalid one was drawn into a and b */
+static int draw_sli2_int(FB_SLI2_INT *a, FB_SLI2_INT *b, int want_valid)
+{
+    long k;
+    for (k = 0; k < 200000L; k++) {
+        static FB_SLI2_INT x;
+        int valid;
+        memset(&x, 0, sizeof x);
+        rnd_config_sli2_int(&x);
+        valid = sl_sli2_int_init(&x) == SL_OK && sl_sli2_int_cycle(&x, 0u) == SL_OK;
+        if (valid == want_valid) {
+            memset(&x.bRun, 0, 0); /* keep x's parameters, reset the instance */
+            memset(a, 0, sizeof *a);
+            rnd_config_sli2_int(a); /* placeholder, overwritten below */
+            a->nPosition = x.nPosition;
+            a->nLimitPos = x.nLimitPos;
+            a->nLimitNeg = x.nLimitNeg;
+            a->dwOptions = x.dwOptions;
+            a->wInputActive = x.wInputActive;
+            *b = *a;
+            return 1;
+        }
+    }
+    return 0;
+}
+static void test_sli2_int(void)
+{
+    static FB_SLI2_INT a, b;
+    cds_sl_sli2_int_cycle_struct p;
+    int c, k, bump, ok = 0, cycles = 0, inv_cycles = 0, inv_config = 0, reached_run = 0, reached_error = 0;
+    int hist[12] = {0};
+    unsigned pol = 0;
+    uint32_t t = 1000u;
+    memset(&a, 0, sizeof a);
+    memset(&b, 0, sizeof b);
+    memset(&p, 0, sizeof p);
+    p.pFb = NULL;
+    p.cds_sl_sli2_int_cycle = 12345;
+    cds_sl_sli2_int_cycle(&p);
+    CHECK(p.cds_sl_sli2_int_cycle == SL_E_NULL, "cds_sl_sli2_int_cycle(NULL) returned %d", (int)p.cds_sl_sli2_int_cycle);
+    a.bRun = b.bRun = 1;
+    a.wInputActive = b.wInputActive = 1;
+    { cds_sl_sli2_int_init_struct q; int32_t r; q.pFb = &a; cds_sl_sli2_int_init(&q); r = sl_sli2_int_init(&b);
+      CHECK(q.cds_sl_sli2_int_init == r && memcmp(&a, &b, sizeof a) == 0, "cds_sl_sli2_int_init differs from sl_sli2_int_init"); }
+    rng = 4215847656u; /* FNV-1a of "FB_SLI2_INT" */
+    machine = 1u;
+    for (c = 0; c < 20; c++) {
+        int valid = c < 16; /* 16 valid configurations, then the labelled invalid share: 4 */
+        if (!draw_sli2_int(&a, &b, valid)) {
+            CHECK(!valid, "FB_SLI2_INT: no valid configuration found in 200000 random draws");
+            continue;
+        }
+        if (!valid) inv_config++;
+        a.bSLI = b.bSLI = (uint8_t)(1);
+        a.bErrAck = b.bErrAck = (uint8_t)(0);
+        bump = 20 + (int)(rnd() % 20u);
+        pol = (c % 2 == 1) ? rnd() : 0u;
+        for (k = 0; k < 50; k++) {
+            int32_t direct;
+            next_machine();
+            a.bSLI = b.bSLI = next_signal(a.bSLI, 0, pol >> 0);
+            a.bErrAck = b.bErrAck = next_signal(a.bErrAck, 1, pol >> 1);
+            a.bRun = b.bRun = (uint8_t)(k >= 2 && rnd() % 100u != 0u);
+            if (valid && k == bump) { a.nLimitPos++; b.nLimitPos++; } /* changed while running: ERROR */
+            if (valid && k == bump + 2) { a.nLimitPos--; b.nLimitPos--; } /* restored */
+            p.pFb = &a;
+            p.tNow = t += 10u;
+            cds_sl_sli2_int_cycle(&p);
+            direct = sl_sli2_int_cycle(&b, p.tNow);
+            CHECK(p.cds_sl_sli2_int_cycle == direct, "FB_SLI2_INT config %d cycle %d: adapter %d, direct %d", c, k, (int)p.cds_sl_sli2_int_cycle, (int)direct);
+            CHECK(memcmp(&a, &b, sizeof a) == 0, "FB_SLI2_INT config %d cycle %d: instances differ", c, k);
+            if (!valid) { inv_cycles++; continue; }
+            cycles++;
+            if (direct == SL_OK) ok++;
+            if (direct <= 0 && direct > -12) hist[-direct]++;
+            if (b.nState == SL_STATE_ERROR) reached_error = 1;
+            if (b.nState != SL_STATE_STOP && b.nState != SL_STATE_ERROR && b.nState != SL_STATE_RESET && (b.bSLIActive || b.bBelowMin || b.bAboveMax)) reached_run = 1;
+        }
+    }
+    printf("FB_SLI2_INT: %d of %d cycles (16 valid random configurations) returned SL_OK; run-like state %s, ERROR %s; invalid share: %d configurations, %d cycles\n", ok, cycles, reached_run ? "reached" : "NOT reached", reached_error ? "reached" : "NOT reached", inv_config, inv_cycles);
+    if (2 * ok <= cycles) printf("  status histogram (0, -1, ... -11): %d %d %d %d %d %d %d %d %d %d %d\n", hist[0], hist[1], hist[2], hist[3], hist[4], hist[5], hist[6], hist[7], hist[8], hist[9], hist[10]);
+    CHECK(cycles > 0 && 2 * ok > cycles, "FB_SLI2_INT: only %d of %d cycles with valid configurations returned SL_OK", ok, cycles);
+    CHECK(reached_run, "FB_SLI2_INT: the random test never reached a running state (an output on)");
+    CHECK(reached_error, "FB_SLI2_INT: the random test never reached ERROR");
+}
+
+static void rnd_config_sli2_uint(FB_SLI2_UINT *x)
+{
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nPosition = (uint16_t)v[rnd() % 7u]; }
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nLimitPos = (uint32_t)v[rnd() % 7u]; }
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nLimitNeg = (uint32_t)v[rnd() % 7u]; }
+    x->dwOptions = rnd_options();
+    x->wInputActive = (uint16_t)(rnd() & 0x101u);
+}
+/* 1: a valid configuration (want_valid) or an invalid one was drawn into a and b */
+static int draw_sli2_uint(FB_SLI2_UINT *a, FB_SLI2_UINT *b, int want_valid)
+{
+    long k;
+    for (k = 0; k < 200000L; k++) {
+        static FB_SLI2_UINT x;
+        int valid;
+        memset(&x, 0, sizeof x);
+        rnd_config_sli2_uint(&x);
+        valid = sl_sli2_uint_init(&x) == SL_OK && sl_sli2_uint_cycle(&x, 0u) == SL_OK;
+        if (valid == want_valid) {
+            memset(&x.bRun, 0, 0); /* keep x's parameters, reset the instance */
+            memset(a, 0, sizeof *a);
+            rnd_config_sli2_uint(a); /* placeholder, overwritten below */
+            a->nPosition = x.nPosition;
+            a->nLimitPos = x.nLimitPos;
+            a->nLimitNeg = x.nLimitNeg;
+            a->dwOptions = x.dwOptions;
+            a->wInputActive = x.wInputActive;
+            *b = *a;
+            return 1;
+        }
+    }
+    return 0;
+}
+static void test_sli2_uint(void)
+{
+    static FB_SLI2_UINT a, b;
+    cds_sl_sli2_uint_cycle_struct p;
+    int c, k, bump, ok = 0, cycles = 0, inv_cycles = 0, inv_config = 0, reached_run = 0, reached_error = 0;
+    int hist[12] = {0};
+    unsigned pol = 0;
+    uint32_t t = 1000u;
+    memset(&a, 0, sizeof a);
+    memset(&b, 0, sizeof b);
+    memset(&p, 0, sizeof p);
+    p.pFb = NULL;
+    p.cds_sl_sli2_uint_cycle = 12345;
+    cds_sl_sli2_uint_cycle(&p);
+    CHECK(p.cds_sl_sli2_uint_cycle == SL_E_NULL, "cds_sl_sli2_uint_cycle(NULL) returned %d", (int)p.cds_sl_sli2_uint_cycle);
+    a.bRun = b.bRun = 1;
+    a.wInputActive = b.wInputActive = 1;
+    { cds_sl_sli2_uint_init_struct q; int32_t r; q.pFb = &a; cds_sl_sli2_uint_init(&q); r = sl_sli2_uint_init(&b);
+      CHECK(q.cds_sl_sli2_uint_init == r && memcmp(&a, &b, sizeof a) == 0, "cds_sl_sli2_uint_init differs from sl_sli2_uint_init"); }
+    rng = 3449419447u; /* FNV-1a of "FB_SLI2_UINT" */
+    machine = 1u;
+    for (c = 0; c < 20; c++) {
+        int valid = c < 16; /* 16 valid configurations, then the labelled invalid share: 4 */
+        if (!draw_sli2_uint(&a, &b, valid)) {
+            CHECK(!valid, "FB_SLI2_UINT: no valid configuration found in 200000 random draws");
+            continue;
+        }
+        if (!valid) inv_config++;
+        a.bSLI = b.bSLI = (uint8_t)(1);
+        a.bErrAck = b.bErrAck = (uint8_t)(0);
+        bump = 20 + (int)(rnd() % 20u);
+        pol = (c % 2 == 1) ? rnd() : 0u;
+        for (k = 0; k < 50; k++) {
+            int32_t direct;
+            next_machine();
+            a.bSLI = b.bSLI = next_signal(a.bSLI, 0, pol >> 0);
+            a.bErrAck = b.bErrAck = next_signal(a.bErrAck, 1, pol >> 1);
+            a.bRun = b.bRun = (uint8_t)(k >= 2 && rnd() % 100u != 0u);
+            if (valid && k == bump) { a.nLimitPos++; b.nLimitPos++; } /* changed while running: ERROR */
+            if (valid && k == bump + 2) { a.nLimitPos--; b.nLimitPos--; } /* restored */
+            p.pFb = &a;
+            p.tNow = t += 10u;
+            cds_sl_sli2_uint_cycle(&p);
+            direct = sl_sli2_uint_cycle(&b, p.tNow);
+            CHECK(p.cds_sl_sli2_uint_cycle == direct, "FB_SLI2_UINT config %d cycle %d: adapter %d, direct %d", c, k, (int)p.cds_sl_sli2_uint_cycle, (int)direct);
+            CHECK(memcmp(&a, &b, sizeof a) == 0, "FB_SLI2_UINT config %d cycle %d: instances differ", c, k);
+            if (!valid) { inv_cycles++; continue; }
+            cycles++;
+            if (direct == SL_OK) ok++;
+            if (direct <= 0 && direct > -12) hist[-direct]++;
+            if (b.nState == SL_STATE_ERROR) reached_error = 1;
+            if (b.nState != SL_STATE_STOP && b.nState != SL_STATE_ERROR && b.nState != SL_STATE_RESET && (b.bSLIActive || b.bBelowMin || b.bAboveMax)) reached_run = 1;
+        }
+    }
+    printf("FB_SLI2_UINT: %d of %d cycles (16 valid random configurations) returned SL_OK; run-like state %s, ERROR %s; invalid share: %d configurations, %d cycles\n", ok, cycles, reached_run ? "reached" : "NOT reached", reached_error ? "reached" : "NOT reached", inv_config, inv_cycles);
+    if (2 * ok <= cycles) printf("  status histogram (0, -1, ... -11): %d %d %d %d %d %d %d %d %d %d %d\n", hist[0], hist[1], hist[2], hist[3], hist[4], hist[5], hist[6], hist[7], hist[8], hist[9], hist[10]);
+    CHECK(cycles > 0 && 2 * ok > cycles, "FB_SLI2_UINT: only %d of %d cycles with valid configurations returned SL_OK", ok, cycles);
+    CHECK(reached_run, "FB_SLI2_UINT: the random test never reached a running state (an output on)");
+    CHECK(reached_error, "FB_SLI2_UINT: the random test never reached ERROR");
+}
+
+static void rnd_config_sli2_dint(FB_SLI2_DINT *x)
+{
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nPosition = (int32_t)v[rnd() % 7u]; }
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nLimitPos = (uint32_t)v[rnd() % 7u]; }
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nLimitNeg = (uint32_t)v[rnd() % 7u]; }
+    x->dwOptions = rnd_options();
+    x->wInputActive = (uint16_t)(rnd() & 0x101u);
+}
+/* 1: a valid configuration (want_valid) or an invalid one was drawn into a and b */
+static int draw_sli2_dint(FB_SLI2_DINT *a, FB_SLI2_DINT *b, int want_valid)
+{
+    long k;
+    for (k = 0; k < 200000L; k++) {
+        static FB_SLI2_DINT x;
+        int valid;
+        memset(&x, 0, sizeof x);
+        rnd_config_sli2_dint(&x);
+        valid = sl_sli2_dint_init(&x) == SL_OK && sl_sli2_dint_cycle(&x, 0u) == SL_OK;
+        if (valid == want_valid) {
+            memset(&x.bRun, 0, 0); /* keep x's parameters, reset the instance */
+            memset(a, 0, sizeof *a);
+            rnd_config_sli2_dint(a); /* placeholder, overwritten below */
+            a->nPosition = x.nPosition;
+            a->nLimitPos = x.nLimitPos;
+            a->nLimitNeg = x.nLimitNeg;
+            a->dwOptions = x.dwOptions;
+            a->wInputActive = x.wInputActive;
+            *b = *a;
+            return 1;
+        }
+    }
+    return 0;
+}
+static void test_sli2_dint(void)
+{
+    static FB_SLI2_DINT a, b;
+    cds_sl_sli2_dint_cycle_struct p;
+    int c, k, bump, ok = 0, cycles = 0, inv_cycles = 0, inv_config = 0, reached_run = 0, reached_error = 0;
+    int hist[12] = {0};
+    unsigned pol = 0;
+    uint32_t t = 1000u;
+    memset(&a, 0, sizeof a);
+    memset(&b, 0, sizeof b);
+    memset(&p, 0, sizeof p);
+    p.pFb = NULL;
+    p.cds_sl_sli2_dint_cycle = 12345;
+    cds_sl_sli2_dint_cycle(&p);
+    CHECK(p.cds_sl_sli2_dint_cycle == SL_E_NULL, "cds_sl_sli2_dint_cycle(NULL) returned %d", (int)p.cds_sl_sli2_dint_cycle);
+    a.bRun = b.bRun = 1;
+    a.wInputActive = b.wInputActive = 1;
+    { cds_sl_sli2_dint_init_struct q; int32_t r; q.pFb = &a; cds_sl_sli2_dint_init(&q); r = sl_sli2_dint_init(&b);
+      CHECK(q.cds_sl_sli2_dint_init == r && memcmp(&a, &b, sizeof a) == 0, "cds_sl_sli2_dint_init differs from sl_sli2_dint_init"); }
+    rng = 1057301322u; /* FNV-1a of "FB_SLI2_DINT" */
+    machine = 1u;
+    for (c = 0; c < 20; c++) {
+        int valid = c < 16; /* 16 valid configurations, then the labelled invalid share: 4 */
+        if (!draw_sli2_dint(&a, &b, valid)) {
+            CHECK(!valid, "FB_SLI2_DINT: no valid configuration found in 200000 random draws");
+            continue;
+        }
+        if (!valid) inv_config++;
+        a.bSLI = b.bSLI = (uint8_t)(1);
+        a.bErrAck = b.bErrAck = (uint8_t)(0);
+        bump = 20 + (int)(rnd() % 20u);
+        pol = (c % 2 == 1) ? rnd() : 0u;
+        for (k = 0; k < 50; k++) {
+            int32_t direct;
+            next_machine();
+            a.bSLI = b.bSLI = next_signal(a.bSLI, 0, pol >> 0);
+            a.bErrAck = b.bErrAck = next_signal(a.bErrAck, 1, pol >> 1);
+            a.bRun = b.bRun = (uint8_t)(k >= 2 && rnd() % 100u != 0u);
+            if (valid && k == bump) { a.nLimitPos++; b.nLimitPos++; } /* changed while running: ERROR */
+            if (valid && k == bump + 2) { a.nLimitPos--; b.nLimitPos--; } /* restored */
+            p.pFb = &a;
+            p.tNow = t += 10u;
+            cds_sl_sli2_dint_cycle(&p);
+            direct = sl_sli2_dint_cycle(&b, p.tNow);
+            CHECK(p.cds_sl_sli2_dint_cycle == direct, "FB_SLI2_DINT config %d cycle %d: adapter %d, direct %d", c, k, (int)p.cds_sl_sli2_dint_cycle, (int)direct);
+            CHECK(memcmp(&a, &b, sizeof a) == 0, "FB_SLI2_DINT config %d cycle %d: instances differ", c, k);
+            if (!valid) { inv_cycles++; continue; }
+            cycles++;
+            if (direct == SL_OK) ok++;
+            if (direct <= 0 && direct > -12) hist[-direct]++;
+            if (b.nState == SL_STATE_ERROR) reached_error = 1;
+            if (b.nState != SL_STATE_STOP && b.nState != SL_STATE_ERROR && b.nState != SL_STATE_RESET && (b.bSLIActive || b.bBelowMin || b.bAboveMax)) reached_run = 1;
+        }
+    }
+    printf("FB_SLI2_DINT: %d of %d cycles (16 valid random configurations) returned SL_OK; run-like state %s, ERROR %s; invalid share: %d configurations, %d cycles\n", ok, cycles, reached_run ? "reached" : "NOT reached", reached_error ? "reached" : "NOT reached", inv_config, inv_cycles);
+    if (2 * ok <= cycles) printf("  status histogram (0, -1, ... -11): %d %d %d %d %d %d %d %d %d %d %d\n", hist[0], hist[1], hist[2], hist[3], hist[4], hist[5], hist[6], hist[7], hist[8], hist[9], hist[10]);
+    CHECK(cycles > 0 && 2 * ok > cycles, "FB_SLI2_DINT: only %d of %d cycles with valid configurations returned SL_OK", ok, cycles);
+    CHECK(reached_run, "FB_SLI2_DINT: the random test never reached a running state (an output on)");
+    CHECK(reached_error, "FB_SLI2_DINT: the random test never reached ERROR");
+}
+
+static void rnd_config_sli2_udint(FB_SLI2_UDINT *x)
+{
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nPosition = (uint32_t)v[rnd() % 7u]; }
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nLimitPos = (uint32_t)v[rnd() % 7u]; }
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nLimitNeg = (uint32_t)v[rnd() % 7u]; }
+    x->dwOptions = rnd_options();
+    x->wInputActive = (uint16_t)(rnd() & 0x101u);
+}
+/* 1: a valid configuration (want_valid) or an invalid one was drawn into a and b */
+static int draw_sli2_udint(FB_SLI2_UDINT *a, FB_SLI2_UDINT *b, int want_valid)
+{
+    long k;
+    for (k = 0; k < 200000L; k++) {
+        static FB_SLI2_UDINT x;
+        int valid;
+        memset(&x, 0, sizeof x);
+        rnd_config_sli2_udint(&x);
+        valid = sl_sli2_udint_init(&x) == SL_OK && sl_sli2_udint_cycle(&x, 0u) == SL_OK;
+        if (valid == want_valid) {
+            memset(&x.bRun, 0, 0); /* keep x's parameters, reset the instance */
+            memset(a, 0, sizeof *a);
+            rnd_config_sli2_udint(a); /* placeholder, overwritten below */
+            a->nPosition = x.nPosition;
+            a->nLimitPos = x.nLimitPos;
+            a->nLimitNeg = x.nLimitNeg;
+            a->dwOptions = x.dwOptions;
+            a->wInputActive = x.wInputActive;
+            *b = *a;
+            return 1;
+        }
+    }
+    return 0;
+}
+static void test_sli2_udint(void)
+{
+    static FB_SLI2_UDINT a, b;
+    cds_sl_sli2_udint_cycle_struct p;
+    int c, k, bump, ok = 0, cycles = 0, inv_cycles = 0, inv_config = 0, reached_run = 0, reached_error = 0;
+    int hist[12] = {0};
+    unsigned pol = 0;
+    uint32_t t = 1000u;
+    memset(&a, 0, sizeof a);
+    memset(&b, 0, sizeof b);
+    memset(&p, 0, sizeof p);
+    p.pFb = NULL;
+    p.cds_sl_sli2_udint_cycle = 12345;
+    cds_sl_sli2_udint_cycle(&p);
+    CHECK(p.cds_sl_sli2_udint_cycle == SL_E_NULL, "cds_sl_sli2_udint_cycle(NULL) returned %d", (int)p.cds_sl_sli2_udint_cycle);
+    a.bRun = b.bRun = 1;
+    a.wInputActive = b.wInputActive = 1;
+    { cds_sl_sli2_udint_init_struct q; int32_t r; q.pFb = &a; cds_sl_sli2_udint_init(&q); r = sl_sli2_udint_init(&b);
+      CHECK(q.cds_sl_sli2_udint_init == r && memcmp(&a, &b, sizeof a) == 0, "cds_sl_sli2_udint_init differs from sl_sli2_udint_init"); }
+    rng = 4181981687u; /* FNV-1a of "FB_SLI2_UDINT" */
+    machine = 1u;
+    for (c = 0; c < 20; c++) {
+        int valid = c < 16; /* 16 valid configurations, then the labelled invalid share: 4 */
+        if (!draw_sli2_udint(&a, &b, valid)) {
+            CHECK(!valid, "FB_SLI2_UDINT: no valid configuration found in 200000 random draws");
+            continue;
+        }
+        if (!valid) inv_config++;
+        a.bSLI = b.bSLI = (uint8_t)(1);
+        a.bErrAck = b.bErrAck = (uint8_t)(0);
+        bump = 20 + (int)(rnd() % 20u);
+        pol = (c % 2 == 1) ? rnd() : 0u;
+        for (k = 0; k < 50; k++) {
+            int32_t direct;
+            next_machine();
+            a.bSLI = b.bSLI = next_signal(a.bSLI, 0, pol >> 0);
+            a.bErrAck = b.bErrAck = next_signal(a.bErrAck, 1, pol >> 1);
+            a.bRun = b.bRun = (uint8_t)(k >= 2 && rnd() % 100u != 0u);
+            if (valid && k == bump) { a.nLimitPos++; b.nLimitPos++; } /* changed while running: ERROR */
+            if (valid && k == bump + 2) { a.nLimitPos--; b.nLimitPos--; } /* restored */
+            p.pFb = &a;
+            p.tNow = t += 10u;
+            cds_sl_sli2_udint_cycle(&p);
+            direct = sl_sli2_udint_cycle(&b, p.tNow);
+            CHECK(p.cds_sl_sli2_udint_cycle == direct, "FB_SLI2_UDINT config %d cycle %d: adapter %d, direct %d", c, k, (int)p.cds_sl_sli2_udint_cycle, (int)direct);
+            CHECK(memcmp(&a, &b, sizeof a) == 0, "FB_SLI2_UDINT config %d cycle %d: instances differ", c, k);
+            if (!valid) { inv_cycles++; continue; }
+            cycles++;
+            if (direct == SL_OK) ok++;
+            if (direct <= 0 && direct > -12) hist[-direct]++;
+            if (b.nState == SL_STATE_ERROR) reached_error = 1;
+            if (b.nState != SL_STATE_STOP && b.nState != SL_STATE_ERROR && b.nState != SL_STATE_RESET && (b.bSLIActive || b.bBelowMin || b.bAboveMax)) reached_run = 1;
+        }
+    }
+    printf("FB_SLI2_UDINT: %d of %d cycles (16 valid random configurations) returned SL_OK; run-like state %s, ERROR %s; invalid share: %d configurations, %d cycles\n", ok, cycles, reached_run ? "reached" : "NOT reached", reached_error ? "reached" : "NOT reached", inv_config, inv_cycles);
+    if (2 * ok <= cycles) printf("  status histogram (0, -1, ... -11): %d %d %d %d %d %d %d %d %d %d %d\n", hist[0], hist[1], hist[2], hist[3], hist[4], hist[5], hist[6], hist[7], hist[8], hist[9], hist[10]);
+    CHECK(cycles > 0 && 2 * ok > cycles, "FB_SLI2_UDINT: only %d of %d cycles with valid configurations returned SL_OK", ok, cycles);
+    CHECK(reached_run, "FB_SLI2_UDINT: the random test never reached a running state (an output on)");
+    CHECK(reached_error, "FB_SLI2_UDINT: the random test never reached ERROR");
+}
+
 static void rnd_config_violationcounter_uint(FB_VIOLATIONCOUNTER_UINT *x)
 {
     { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nIncrementError = (uint16_t)v[rnd() % 7u]; }
@@ -6056,6 +6922,14 @@ int main(void)
     test_counter_uint();
     test_counter_dint();
     test_counter_udint();
+    test_sli_int();
+    test_sli_uint();
+    test_sli_dint();
+    test_sli_udint();
+    test_sli2_int();
+    test_sli2_uint();
+    test_sli2_dint();
+    test_sli2_udint();
     test_violationcounter_uint();
     test_violationcounter_udint();
     { cds_sl_time_now_ms_struct q; uint32_t t0 = sl_time_now_ms(); cds_sl_time_now_ms(&q);

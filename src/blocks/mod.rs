@@ -1,8 +1,9 @@
 //! The function blocks. One file per block, citing its manual section; blocks that share a
 //! state machine share it: ESTOP and MON (manual §4.4, §4.5) in `guard`, the
 //! combinational blocks (AND, OR, XOR, DECOUPLE) in `logic`, RS and SR (§4.10, §4.11) in
-//! `flipflop`, the timers TON, TON2 and TOF (§4.12–§4.14) in `timer`. OPMODE (§4.3),
-//! TWOHAND (§4.7), MUTING (§4.8) and EDM (§4.9) have state machines of their own.
+//! `flipflop`, the timers TON, TON2 and TOF (§4.12–§4.14) in `timer`, SLI and SLI2
+//! (§4.27, §4.28) in `window`. OPMODE (§4.3), TWOHAND (§4.7), MUTING (§4.8) and EDM (§4.9)
+//! have state machines of their own.
 
 pub mod analog;
 pub mod and;
@@ -22,6 +23,8 @@ pub mod opmode;
 pub mod or;
 pub mod rs;
 pub mod scale;
+pub mod sli;
+pub mod sli2;
 pub mod speed;
 pub mod sr;
 pub mod timer;
@@ -30,6 +33,7 @@ pub mod ton;
 pub mod ton2;
 pub mod twohand;
 pub mod violationcounter;
+pub mod window;
 pub mod xor;
 
 /// The names a family's `Block` impl uses, for its expansion in a member's file.

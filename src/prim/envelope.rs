@@ -2,8 +2,8 @@
 //! state, clock check, parameter latching and change detection, Run → STOP, ERROR → RESET
 //! with ErrAck edges, the status code. The block itself only supplies its running states.
 
-use super::bools::{edge, is_true};
-use super::header::{F_CFG_INVALID, F_ERRACK_PREV, F_TIME_VALID, SL_PRIVATE_HEADER};
+use super::bools::{edge, is_false, is_true};
+use super::header::{F_CFG_INVALID, F_ERRACK_PREV, F_RESET_HELD, F_TIME_VALID, SL_PRIVATE_HEADER};
 use super::time;
 use crate::types::*;
 
@@ -58,6 +58,12 @@ pub trait Block: Instance + crate::registry::Registered {
     }
     /// In ERROR: does a block-specific error condition remain (ABI §7 "Errors")?
     fn error_remains(&mut self, inp: &Self::In) -> bool;
+    /// In RESET once ErrAck has fallen, bRun TRUE: may the block start now? A block that
+    /// may not holds RESET and starts in the first call in which it may while ErrAck stays
+    /// FALSE (FB SLI: "should only exit the RESET state if ErrAck=FALSE and SLI=FALSE").
+    fn may_leave_reset(&self, _inp: &Self::In) -> bool {
+        true
+    }
     /// Writes the VAR_OUTPUT and info fields from the private state.
     fn write_outputs(&mut self);
 }
@@ -172,14 +178,23 @@ pub fn cycle<B: Block>(fb: &mut B, now: u32) -> Status {
                 let h = fb.header_mut();
                 h.nState = SL_STATE_RESET;
                 h.wDiag = 0;
+                h.set_flag(F_RESET_HELD, false);
             }
         }
         SL_STATE_RESET => {
-            if ack.falling {
-                if run && !fb.header().flag(F_CFG_INVALID) {
-                    fb.start(&inp, now);
+            // ErrAck fell in this call, or fell earlier while the block held RESET.
+            let held = fb.header().flag(F_RESET_HELD);
+            if ack.falling || (held && is_false(ack_raw)) {
+                let start = run && !fb.header().flag(F_CFG_INVALID);
+                if start && !fb.may_leave_reset(&inp) {
+                    fb.header_mut().set_flag(F_RESET_HELD, true);
                 } else {
-                    fb.header_mut().nState = SL_STATE_STOP;
+                    fb.header_mut().set_flag(F_RESET_HELD, false);
+                    if start {
+                        fb.start(&inp, now);
+                    } else {
+                        fb.header_mut().nState = SL_STATE_STOP;
+                    }
                 }
             }
         }

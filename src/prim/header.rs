@@ -59,6 +59,8 @@ pub(crate) const F_EDM1_PENDING: u8 = 1 << 3;
 pub(crate) const F_EDM2_PENDING: u8 = 1 << 4;
 /// The latched parameters are invalid: the block may only be in STOP or ERROR/RESET.
 pub(crate) const F_CFG_INVALID: u8 = 1 << 5;
+/// In RESET: ErrAck has fallen but the block may not start yet (`Block::may_leave_reset`).
+pub(crate) const F_RESET_HELD: u8 = 1 << 6;
 
 /// Shift from `F_EDM1_PENDING` to bit 0 of an EDM pending mask.
 pub(crate) const EDM_PENDING_SHIFT: u32 = 3;

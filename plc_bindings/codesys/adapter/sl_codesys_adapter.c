@@ -826,6 +826,134 @@ void CDECL CDECL_EXT cds_sl_counter_udint_cycle(cds_sl_counter_udint_cycle_struc
     p->cds_sl_counter_udint_cycle = sl_counter_udint_cycle(p->pFb, p->tNow);
 }
 
+void CDECL CDECL_EXT cds_sl_sli_int_init(cds_sl_sli_int_init_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_sli_int_init = sl_sli_int_init(p->pFb);
+}
+
+void CDECL CDECL_EXT cds_sl_sli_int_cycle(cds_sl_sli_int_cycle_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_sli_int_cycle = sl_sli_int_cycle(p->pFb, p->tNow);
+}
+
+void CDECL CDECL_EXT cds_sl_sli_uint_init(cds_sl_sli_uint_init_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_sli_uint_init = sl_sli_uint_init(p->pFb);
+}
+
+void CDECL CDECL_EXT cds_sl_sli_uint_cycle(cds_sl_sli_uint_cycle_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_sli_uint_cycle = sl_sli_uint_cycle(p->pFb, p->tNow);
+}
+
+void CDECL CDECL_EXT cds_sl_sli_dint_init(cds_sl_sli_dint_init_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_sli_dint_init = sl_sli_dint_init(p->pFb);
+}
+
+void CDECL CDECL_EXT cds_sl_sli_dint_cycle(cds_sl_sli_dint_cycle_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_sli_dint_cycle = sl_sli_dint_cycle(p->pFb, p->tNow);
+}
+
+void CDECL CDECL_EXT cds_sl_sli_udint_init(cds_sl_sli_udint_init_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_sli_udint_init = sl_sli_udint_init(p->pFb);
+}
+
+void CDECL CDECL_EXT cds_sl_sli_udint_cycle(cds_sl_sli_udint_cycle_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_sli_udint_cycle = sl_sli_udint_cycle(p->pFb, p->tNow);
+}
+
+void CDECL CDECL_EXT cds_sl_sli2_int_init(cds_sl_sli2_int_init_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_sli2_int_init = sl_sli2_int_init(p->pFb);
+}
+
+void CDECL CDECL_EXT cds_sl_sli2_int_cycle(cds_sl_sli2_int_cycle_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_sli2_int_cycle = sl_sli2_int_cycle(p->pFb, p->tNow);
+}
+
+void CDECL CDECL_EXT cds_sl_sli2_uint_init(cds_sl_sli2_uint_init_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_sli2_uint_init = sl_sli2_uint_init(p->pFb);
+}
+
+void CDECL CDECL_EXT cds_sl_sli2_uint_cycle(cds_sl_sli2_uint_cycle_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_sli2_uint_cycle = sl_sli2_uint_cycle(p->pFb, p->tNow);
+}
+
+void CDECL CDECL_EXT cds_sl_sli2_dint_init(cds_sl_sli2_dint_init_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_sli2_dint_init = sl_sli2_dint_init(p->pFb);
+}
+
+void CDECL CDECL_EXT cds_sl_sli2_dint_cycle(cds_sl_sli2_dint_cycle_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_sli2_dint_cycle = sl_sli2_dint_cycle(p->pFb, p->tNow);
+}
+
+void CDECL CDECL_EXT cds_sl_sli2_udint_init(cds_sl_sli2_udint_init_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_sli2_udint_init = sl_sli2_udint_init(p->pFb);
+}
+
+void CDECL CDECL_EXT cds_sl_sli2_udint_cycle(cds_sl_sli2_udint_cycle_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_sli2_udint_cycle = sl_sli2_udint_cycle(p->pFb, p->tNow);
+}
+
 void CDECL CDECL_EXT cds_sl_violationcounter_uint_init(cds_sl_violationcounter_uint_init_struct *p)
 {
     if (p == 0) {

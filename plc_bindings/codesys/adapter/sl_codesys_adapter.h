@@ -799,6 +799,126 @@ typedef struct tagcds_sl_counter_udint_cycle_struct {
 } cds_sl_counter_udint_cycle_struct;
 void CDECL CDECL_EXT cds_sl_counter_udint_cycle(cds_sl_counter_udint_cycle_struct *p);
 
+/* FUNCTION cds_sl_sli_int_init : DINT -> sl_sli_int_init() */
+typedef struct tagcds_sl_sli_int_init_struct {
+    struct FB_SLI_INT *pFb; /* VAR_INPUT pFb : POINTER TO ST_FB_SLI_INT */
+    int32_t cds_sl_sli_int_init; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_sli_int_init_struct;
+void CDECL CDECL_EXT cds_sl_sli_int_init(cds_sl_sli_int_init_struct *p);
+
+/* FUNCTION cds_sl_sli_int_cycle : DINT -> sl_sli_int_cycle() */
+typedef struct tagcds_sl_sli_int_cycle_struct {
+    struct FB_SLI_INT *pFb; /* VAR_INPUT pFb : POINTER TO ST_FB_SLI_INT */
+    uint32_t tNow; /* VAR_INPUT tNow : UDINT */
+    int32_t cds_sl_sli_int_cycle; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_sli_int_cycle_struct;
+void CDECL CDECL_EXT cds_sl_sli_int_cycle(cds_sl_sli_int_cycle_struct *p);
+
+/* FUNCTION cds_sl_sli_uint_init : DINT -> sl_sli_uint_init() */
+typedef struct tagcds_sl_sli_uint_init_struct {
+    struct FB_SLI_UINT *pFb; /* VAR_INPUT pFb : POINTER TO ST_FB_SLI_UINT */
+    int32_t cds_sl_sli_uint_init; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_sli_uint_init_struct;
+void CDECL CDECL_EXT cds_sl_sli_uint_init(cds_sl_sli_uint_init_struct *p);
+
+/* FUNCTION cds_sl_sli_uint_cycle : DINT -> sl_sli_uint_cycle() */
+typedef struct tagcds_sl_sli_uint_cycle_struct {
+    struct FB_SLI_UINT *pFb; /* VAR_INPUT pFb : POINTER TO ST_FB_SLI_UINT */
+    uint32_t tNow; /* VAR_INPUT tNow : UDINT */
+    int32_t cds_sl_sli_uint_cycle; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_sli_uint_cycle_struct;
+void CDECL CDECL_EXT cds_sl_sli_uint_cycle(cds_sl_sli_uint_cycle_struct *p);
+
+/* FUNCTION cds_sl_sli_dint_init : DINT -> sl_sli_dint_init() */
+typedef struct tagcds_sl_sli_dint_init_struct {
+    struct FB_SLI_DINT *pFb; /* VAR_INPUT pFb : POINTER TO ST_FB_SLI_DINT */
+    int32_t cds_sl_sli_dint_init; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_sli_dint_init_struct;
+void CDECL CDECL_EXT cds_sl_sli_dint_init(cds_sl_sli_dint_init_struct *p);
+
+/* FUNCTION cds_sl_sli_dint_cycle : DINT -> sl_sli_dint_cycle() */
+typedef struct tagcds_sl_sli_dint_cycle_struct {
+    struct FB_SLI_DINT *pFb; /* VAR_INPUT pFb : POINTER TO ST_FB_SLI_DINT */
+    uint32_t tNow; /* VAR_INPUT tNow : UDINT */
+    int32_t cds_sl_sli_dint_cycle; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_sli_dint_cycle_struct;
+void CDECL CDECL_EXT cds_sl_sli_dint_cycle(cds_sl_sli_dint_cycle_struct *p);
+
+/* FUNCTION cds_sl_sli_udint_init : DINT -> sl_sli_udint_init() */
+typedef struct tagcds_sl_sli_udint_init_struct {
+    struct FB_SLI_UDINT *pFb; /* VAR_INPUT pFb : POINTER TO ST_FB_SLI_UDINT */
+    int32_t cds_sl_sli_udint_init; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_sli_udint_init_struct;
+void CDECL CDECL_EXT cds_sl_sli_udint_init(cds_sl_sli_udint_init_struct *p);
+
+/* FUNCTION cds_sl_sli_udint_cycle : DINT -> sl_sli_udint_cycle() */
+typedef struct tagcds_sl_sli_udint_cycle_struct {
+    struct FB_SLI_UDINT *pFb; /* VAR_INPUT pFb : POINTER TO ST_FB_SLI_UDINT */
+    uint32_t tNow; /* VAR_INPUT tNow : UDINT */
+    int32_t cds_sl_sli_udint_cycle; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_sli_udint_cycle_struct;
+void CDECL CDECL_EXT cds_sl_sli_udint_cycle(cds_sl_sli_udint_cycle_struct *p);
+
+/* FUNCTION cds_sl_sli2_int_init : DINT -> sl_sli2_int_init() */
+typedef struct tagcds_sl_sli2_int_init_struct {
+    struct FB_SLI2_INT *pFb; /* VAR_INPUT pFb : POINTER TO ST_FB_SLI2_INT */
+    int32_t cds_sl_sli2_int_init; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_sli2_int_init_struct;
+void CDECL CDECL_EXT cds_sl_sli2_int_init(cds_sl_sli2_int_init_struct *p);
+
+/* FUNCTION cds_sl_sli2_int_cycle : DINT -> sl_sli2_int_cycle() */
+typedef struct tagcds_sl_sli2_int_cycle_struct {
+    struct FB_SLI2_INT *pFb; /* VAR_INPUT pFb : POINTER TO ST_FB_SLI2_INT */
+    uint32_t tNow; /* VAR_INPUT tNow : UDINT */
+    int32_t cds_sl_sli2_int_cycle; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_sli2_int_cycle_struct;
+void CDECL CDECL_EXT cds_sl_sli2_int_cycle(cds_sl_sli2_int_cycle_struct *p);
+
+/* FUNCTION cds_sl_sli2_uint_init : DINT -> sl_sli2_uint_init() */
+typedef struct tagcds_sl_sli2_uint_init_struct {
+    struct FB_SLI2_UINT *pFb; /* VAR_INPUT pFb : POINTER TO ST_FB_SLI2_UINT */
+    int32_t cds_sl_sli2_uint_init; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_sli2_uint_init_struct;
+void CDECL CDECL_EXT cds_sl_sli2_uint_init(cds_sl_sli2_uint_init_struct *p);
+
+/* FUNCTION cds_sl_sli2_uint_cycle : DINT -> sl_sli2_uint_cycle() */
+typedef struct tagcds_sl_sli2_uint_cycle_struct {
+    struct FB_SLI2_UINT *pFb; /* VAR_INPUT pFb : POINTER TO ST_FB_SLI2_UINT */
+    uint32_t tNow; /* VAR_INPUT tNow : UDINT */
+    int32_t cds_sl_sli2_uint_cycle; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_sli2_uint_cycle_struct;
+void CDECL CDECL_EXT cds_sl_sli2_uint_cycle(cds_sl_sli2_uint_cycle_struct *p);
+
+/* FUNCTION cds_sl_sli2_dint_init : DINT -> sl_sli2_dint_init() */
+typedef struct tagcds_sl_sli2_dint_init_struct {
+    struct FB_SLI2_DINT *pFb; /* VAR_INPUT pFb : POINTER TO ST_FB_SLI2_DINT */
+    int32_t cds_sl_sli2_dint_init; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_sli2_dint_init_struct;
+void CDECL CDECL_EXT cds_sl_sli2_dint_init(cds_sl_sli2_dint_init_struct *p);
+
+/* FUNCTION cds_sl_sli2_dint_cycle : DINT -> sl_sli2_dint_cycle() */
+typedef struct tagcds_sl_sli2_dint_cycle_struct {
+    struct FB_SLI2_DINT *pFb; /* VAR_INPUT pFb : POINTER TO ST_FB_SLI2_DINT */
+    uint32_t tNow; /* VAR_INPUT tNow : UDINT */
+    int32_t cds_sl_sli2_dint_cycle; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_sli2_dint_cycle_struct;
+void CDECL CDECL_EXT cds_sl_sli2_dint_cycle(cds_sl_sli2_dint_cycle_struct *p);
+
+/* FUNCTION cds_sl_sli2_udint_init : DINT -> sl_sli2_udint_init() */
+typedef struct tagcds_sl_sli2_udint_init_struct {
+    struct FB_SLI2_UDINT *pFb; /* VAR_INPUT pFb : POINTER TO ST_FB_SLI2_UDINT */
+    int32_t cds_sl_sli2_udint_init; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_sli2_udint_init_struct;
+void CDECL CDECL_EXT cds_sl_sli2_udint_init(cds_sl_sli2_udint_init_struct *p);
+
+/* FUNCTION cds_sl_sli2_udint_cycle : DINT -> sl_sli2_udint_cycle() */
+typedef struct tagcds_sl_sli2_udint_cycle_struct {
+    struct FB_SLI2_UDINT *pFb; /* VAR_INPUT pFb : POINTER TO ST_FB_SLI2_UDINT */
+    uint32_t tNow; /* VAR_INPUT tNow : UDINT */
+    int32_t cds_sl_sli2_udint_cycle; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_sli2_udint_cycle_struct;
+void CDECL CDECL_EXT cds_sl_sli2_udint_cycle(cds_sl_sli2_udint_cycle_struct *p);
+
 /* FUNCTION cds_sl_violationcounter_uint_init : DINT -> sl_violationcounter_uint_init() */
 typedef struct tagcds_sl_violationcounter_uint_init_struct {
     struct FB_VIOLATIONCOUNTER_UINT *pFb; /* VAR_INPUT pFb : POINTER TO ST_FB_VIOLATIONCOUNTER_UINT */
@@ -994,6 +1114,22 @@ void CDECL CDECL_EXT cds_sl_group_cycle(cds_sl_group_cycle_struct *p);
     X(cds_sl_counter_dint_cycle) \
     X(cds_sl_counter_udint_init) \
     X(cds_sl_counter_udint_cycle) \
+    X(cds_sl_sli_int_init) \
+    X(cds_sl_sli_int_cycle) \
+    X(cds_sl_sli_uint_init) \
+    X(cds_sl_sli_uint_cycle) \
+    X(cds_sl_sli_dint_init) \
+    X(cds_sl_sli_dint_cycle) \
+    X(cds_sl_sli_udint_init) \
+    X(cds_sl_sli_udint_cycle) \
+    X(cds_sl_sli2_int_init) \
+    X(cds_sl_sli2_int_cycle) \
+    X(cds_sl_sli2_uint_init) \
+    X(cds_sl_sli2_uint_cycle) \
+    X(cds_sl_sli2_dint_init) \
+    X(cds_sl_sli2_dint_cycle) \
+    X(cds_sl_sli2_udint_init) \
+    X(cds_sl_sli2_udint_cycle) \
     X(cds_sl_violationcounter_uint_init) \
     X(cds_sl_violationcounter_uint_cycle) \
     X(cds_sl_violationcounter_udint_init) \

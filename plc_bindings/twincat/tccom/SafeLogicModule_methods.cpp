@@ -934,6 +934,150 @@ HRESULT CSafeLogicModule::sl_counter_udint_cycle(PVOID pFb, int32_t *pnResult, u
     return S_OK;
 }
 
+HRESULT CSafeLogicModule::sl_sli_int_init(PVOID pFb, int32_t *pnResult)
+{
+    if (pFb == NULL || pnResult == NULL) {
+        return E_POINTER;
+    }
+    *pnResult = ::sl_sli_int_init(static_cast<struct FB_SLI_INT *>(pFb));
+    return S_OK;
+}
+
+HRESULT CSafeLogicModule::sl_sli_int_cycle(PVOID pFb, int32_t *pnResult, uint32_t tNow)
+{
+    if (pFb == NULL || pnResult == NULL) {
+        return E_POINTER;
+    }
+    *pnResult = ::sl_sli_int_cycle(static_cast<struct FB_SLI_INT *>(pFb), tNow);
+    return S_OK;
+}
+
+HRESULT CSafeLogicModule::sl_sli_uint_init(PVOID pFb, int32_t *pnResult)
+{
+    if (pFb == NULL || pnResult == NULL) {
+        return E_POINTER;
+    }
+    *pnResult = ::sl_sli_uint_init(static_cast<struct FB_SLI_UINT *>(pFb));
+    return S_OK;
+}
+
+HRESULT CSafeLogicModule::sl_sli_uint_cycle(PVOID pFb, int32_t *pnResult, uint32_t tNow)
+{
+    if (pFb == NULL || pnResult == NULL) {
+        return E_POINTER;
+    }
+    *pnResult = ::sl_sli_uint_cycle(static_cast<struct FB_SLI_UINT *>(pFb), tNow);
+    return S_OK;
+}
+
+HRESULT CSafeLogicModule::sl_sli_dint_init(PVOID pFb, int32_t *pnResult)
+{
+    if (pFb == NULL || pnResult == NULL) {
+        return E_POINTER;
+    }
+    *pnResult = ::sl_sli_dint_init(static_cast<struct FB_SLI_DINT *>(pFb));
+    return S_OK;
+}
+
+HRESULT CSafeLogicModule::sl_sli_dint_cycle(PVOID pFb, int32_t *pnResult, uint32_t tNow)
+{
+    if (pFb == NULL || pnResult == NULL) {
+        return E_POINTER;
+    }
+    *pnResult = ::sl_sli_dint_cycle(static_cast<struct FB_SLI_DINT *>(pFb), tNow);
+    return S_OK;
+}
+
+HRESULT CSafeLogicModule::sl_sli_udint_init(PVOID pFb, int32_t *pnResult)
+{
+    if (pFb == NULL || pnResult == NULL) {
+        return E_POINTER;
+    }
+    *pnResult = ::sl_sli_udint_init(static_cast<struct FB_SLI_UDINT *>(pFb));
+    return S_OK;
+}
+
+HRESULT CSafeLogicModule::sl_sli_udint_cycle(PVOID pFb, int32_t *pnResult, uint32_t tNow)
+{
+    if (pFb == NULL || pnResult == NULL) {
+        return E_POINTER;
+    }
+    *pnResult = ::sl_sli_udint_cycle(static_cast<struct FB_SLI_UDINT *>(pFb), tNow);
+    return S_OK;
+}
+
+HRESULT CSafeLogicModule::sl_sli2_int_init(PVOID pFb, int32_t *pnResult)
+{
+    if (pFb == NULL || pnResult == NULL) {
+        return E_POINTER;
+    }
+    *pnResult = ::sl_sli2_int_init(static_cast<struct FB_SLI2_INT *>(pFb));
+    return S_OK;
+}
+
+HRESULT CSafeLogicModule::sl_sli2_int_cycle(PVOID pFb, int32_t *pnResult, uint32_t tNow)
+{
+    if (pFb == NULL || pnResult == NULL) {
+        return E_POINTER;
+    }
+    *pnResult = ::sl_sli2_int_cycle(static_cast<struct FB_SLI2_INT *>(pFb), tNow);
+    return S_OK;
+}
+
+HRESULT CSafeLogicModule::sl_sli2_uint_init(PVOID pFb, int32_t *pnResult)
+{
+    if (pFb == NULL || pnResult == NULL) {
+        return E_POINTER;
+    }
+    *pnResult = ::sl_sli2_uint_init(static_cast<struct FB_SLI2_UINT *>(pFb));
+    return S_OK;
+}
+
+HRESULT CSafeLogicModule::sl_sli2_uint_cycle(PVOID pFb, int32_t *pnResult, uint32_t tNow)
+{
+    if (pFb == NULL || pnResult == NULL) {
+        return E_POINTER;
+    }
+    *pnResult = ::sl_sli2_uint_cycle(static_cast<struct FB_SLI2_UINT *>(pFb), tNow);
+    return S_OK;
+}
+
+HRESULT CSafeLogicModule::sl_sli2_dint_init(PVOID pFb, int32_t *pnResult)
+{
+    if (pFb == NULL || pnResult == NULL) {
+        return E_POINTER;
+    }
+    *pnResult = ::sl_sli2_dint_init(static_cast<struct FB_SLI2_DINT *>(pFb));
+    return S_OK;
+}
+
+HRESULT CSafeLogicModule::sl_sli2_dint_cycle(PVOID pFb, int32_t *pnResult, uint32_t tNow)
+{
+    if (pFb == NULL || pnResult == NULL) {
+        return E_POINTER;
+    }
+    *pnResult = ::sl_sli2_dint_cycle(static_cast<struct FB_SLI2_DINT *>(pFb), tNow);
+    return S_OK;
+}
+
+HRESULT CSafeLogicModule::sl_sli2_udint_init(PVOID pFb, int32_t *pnResult)
+{
+    if (pFb == NULL || pnResult == NULL) {
+        return E_POINTER;
+    }
+    *pnResult = ::sl_sli2_udint_init(static_cast<struct FB_SLI2_UDINT *>(pFb));
+    return S_OK;
+}
+
+HRESULT CSafeLogicModule::sl_sli2_udint_cycle(PVOID pFb, int32_t *pnResult, uint32_t tNow)
+{
+    if (pFb == NULL || pnResult == NULL) {
+        return E_POINTER;
+    }
+    *pnResult = ::sl_sli2_udint_cycle(static_cast<struct FB_SLI2_UDINT *>(pFb), tNow);
+    return S_OK;
+}
+
 HRESULT CSafeLogicModule::sl_violationcounter_uint_init(PVOID pFb, int32_t *pnResult)
 {
     if (pFb == NULL || pnResult == NULL) {
