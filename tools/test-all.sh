@@ -52,6 +52,10 @@ cargo run --release --quiet --example demo >build/demo_rust.txt
 build/c_tests/kl6904_examples >build/demo_c.txt
 diff -u build/demo_rust.txt build/demo_c.txt
 echo "examples/c/kl6904_examples.c prints exactly what cargo run --example demo prints ($(wc -l <build/demo_c.txt) lines)"
+cargo run --release --quiet --example speed_monitor >build/speed_rust.txt
+build/c_tests/speed_monitor >build/speed_c.txt
+diff -u build/speed_rust.txt build/speed_c.txt
+echo "examples/c/speed_monitor.c prints exactly what cargo run --example speed_monitor prints ($(wc -l <build/speed_c.txt) lines)"
 
 step "install step, SONAME and pkg-config: one program linked dynamically, one statically"
 rm -rf build/prefix build/stage
