@@ -323,9 +323,15 @@ macro_rules! depth {
                     for f in t.fields.iter().filter(|f| f.dir == Dir::Param) {
                         let r = rng.next();
                         // Bit sets (wInputActive …) often as a run of low bits, in the BOOL or
-                        // the analog half.
+                        // the analog half, or in both (BOOL and analog inputs required, as
+                        // ENVELOPE's 0x0101).
                         let k = (r >> 16) % 8 + 1;
-                        let run_of_bits = ((1u64 << k) - 1) << (8 * ((r >> 20) & 1));
+                        let low = (1u64 << k) - 1;
+                        let run_of_bits = if (r >> 21) & 3 == 0 {
+                            low | low << 8
+                        } else {
+                            low << (8 * ((r >> 20) & 1))
+                        };
                         let v = match r % 4 {
                             _ if f.name.starts_with('w') && r % 3 == 0 => run_of_bits,
                             0 => [0u64, 1, 2, 3, 5, 10, 100][(r >> 8) as usize % 7],
@@ -334,6 +340,23 @@ macro_rules! depth {
                             _ => r >> 8,
                         };
                         put(bytes(&mut fb), f.offset, f.kind.size(), v);
+                    }
+                    // A value table (LOADSENSING `aRow`, ABI-2 §11.8) is a parameter outside
+                    // the field table, right before `nRowCount`: random rows are almost never
+                    // ordered, so it gets an ordered one (X increasing; Y1 = WY1 < Y2 = WY2,
+                    // valid with and without the Outside option) around the small inputs.
+                    if let (Some(count), Some(x)) = (t.field("nRowCount"), t.field("nAnalogInX")) {
+                        let w = x.kind.size();
+                        let rows = usize::from(SL_LOADSENSING_ROWS_MAX);
+                        let base = usize::from(count.offset) - rows * 5 * w;
+                        for i in 0..rows {
+                            let r = rng.next();
+                            let y1 = (r % 6) as u64;
+                            let y2 = y1 + 1 + (r >> 8) % 4;
+                            for (k, v) in [i as u64, y1, y2, y1, y2].into_iter().enumerate() {
+                                put(bytes(&mut fb), ((base + (5 * i + k) * w) as u16), w, v);
+                            }
+                        }
                     }
                     // SAFETY: a live, exclusively borrowed instance.
                     if unsafe { safelogic::ffi::$init(&mut fb) } == SL_OK {
