@@ -14,3 +14,5 @@
 #include "test_flipflop.c"
 #include "test_timers.c"
 #include "test_arith.c"
+#include "test_loadsensing.c"
+#include "test_envelope.c"
