@@ -4678,6 +4678,11 @@ static void rnd_config_loadsensing_int(FB_LOADSENSING_INT *x)
     { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nAnalogInX = (int16_t)v[rnd() % 7u]; }
     { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nAnalogInY = (int16_t)v[rnd() % 7u]; }
     x->dwOptions = rnd_options();
+    { int i; for (i = 0; i < 25; i++) x->aRow[i].nX = (int16_t)(4u * (unsigned)i + rnd() % 4u); }
+    { int i; for (i = 0; i < 25; i++) x->aRow[i].nY1 = (int16_t)(4u * (unsigned)i + rnd() % 4u); }
+    { int i; for (i = 0; i < 25; i++) x->aRow[i].nY2 = (int16_t)(4u * (unsigned)i + rnd() % 4u); }
+    { int i; for (i = 0; i < 25; i++) x->aRow[i].nWY1 = (int16_t)(4u * (unsigned)i + rnd() % 4u); }
+    { int i; for (i = 0; i < 25; i++) x->aRow[i].nWY2 = (int16_t)(4u * (unsigned)i + rnd() % 4u); }
     { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nRowCount = (uint16_t)v[rnd() % 7u]; }
     x->wInputActive = (uint16_t)(rnd() & 0x301u);
 }
@@ -4698,6 +4703,7 @@ static int draw_loadsensing_int(FB_LOADSENSING_INT *a, FB_LOADSENSING_INT *b, in
             a->nAnalogInX = x.nAnalogInX;
             a->nAnalogInY = x.nAnalogInY;
             a->dwOptions = x.dwOptions;
+            memcpy(a->aRow, x.aRow, sizeof a->aRow);
             a->nRowCount = x.nRowCount;
             a->wInputActive = x.wInputActive;
             *b = *a;
@@ -4772,6 +4778,11 @@ static void rnd_config_loadsensing_uint(FB_LOADSENSING_UINT *x)
     { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nAnalogInX = (uint16_t)v[rnd() % 7u]; }
     { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nAnalogInY = (uint16_t)v[rnd() % 7u]; }
     x->dwOptions = rnd_options();
+    { int i; for (i = 0; i < 25; i++) x->aRow[i].nX = (uint16_t)(4u * (unsigned)i + rnd() % 4u); }
+    { int i; for (i = 0; i < 25; i++) x->aRow[i].nY1 = (uint16_t)(4u * (unsigned)i + rnd() % 4u); }
+    { int i; for (i = 0; i < 25; i++) x->aRow[i].nY2 = (uint16_t)(4u * (unsigned)i + rnd() % 4u); }
+    { int i; for (i = 0; i < 25; i++) x->aRow[i].nWY1 = (uint16_t)(4u * (unsigned)i + rnd() % 4u); }
+    { int i; for (i = 0; i < 25; i++) x->aRow[i].nWY2 = (uint16_t)(4u * (unsigned)i + rnd() % 4u); }
     { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nRowCount = (uint16_t)v[rnd() % 7u]; }
     x->wInputActive = (uint16_t)(rnd() & 0x301u);
 }
@@ -4792,6 +4803,7 @@ static int draw_loadsensing_uint(FB_LOADSENSING_UINT *a, FB_LOADSENSING_UINT *b,
             a->nAnalogInX = x.nAnalogInX;
             a->nAnalogInY = x.nAnalogInY;
             a->dwOptions = x.dwOptions;
+            memcpy(a->aRow, x.aRow, sizeof a->aRow);
             a->nRowCount = x.nRowCount;
             a->wInputActive = x.wInputActive;
             *b = *a;
@@ -4866,6 +4878,11 @@ static void rnd_config_loadsensing_dint(FB_LOADSENSING_DINT *x)
     { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nAnalogInX = (int32_t)v[rnd() % 7u]; }
     { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nAnalogInY = (int32_t)v[rnd() % 7u]; }
     x->dwOptions = rnd_options();
+    { int i; for (i = 0; i < 25; i++) x->aRow[i].nX = (int32_t)(4u * (unsigned)i + rnd() % 4u); }
+    { int i; for (i = 0; i < 25; i++) x->aRow[i].nY1 = (int32_t)(4u * (unsigned)i + rnd() % 4u); }
+    { int i; for (i = 0; i < 25; i++) x->aRow[i].nY2 = (int32_t)(4u * (unsigned)i + rnd() % 4u); }
+    { int i; for (i = 0; i < 25; i++) x->aRow[i].nWY1 = (int32_t)(4u * (unsigned)i + rnd() % 4u); }
+    { int i; for (i = 0; i < 25; i++) x->aRow[i].nWY2 = (int32_t)(4u * (unsigned)i + rnd() % 4u); }
     { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nRowCount = (uint16_t)v[rnd() % 7u]; }
     x->wInputActive = (uint16_t)(rnd() & 0x301u);
 }
@@ -4886,6 +4903,7 @@ static int draw_loadsensing_dint(FB_LOADSENSING_DINT *a, FB_LOADSENSING_DINT *b,
             a->nAnalogInX = x.nAnalogInX;
             a->nAnalogInY = x.nAnalogInY;
             a->dwOptions = x.dwOptions;
+            memcpy(a->aRow, x.aRow, sizeof a->aRow);
             a->nRowCount = x.nRowCount;
             a->wInputActive = x.wInputActive;
             *b = *a;
@@ -4960,6 +4978,11 @@ static void rnd_config_loadsensing_udint(FB_LOADSENSING_UDINT *x)
     { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nAnalogInX = (uint32_t)v[rnd() % 7u]; }
     { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nAnalogInY = (uint32_t)v[rnd() % 7u]; }
     x->dwOptions = rnd_options();
+    { int i; for (i = 0; i < 25; i++) x->aRow[i].nX = (uint32_t)(4u * (unsigned)i + rnd() % 4u); }
+    { int i; for (i = 0; i < 25; i++) x->aRow[i].nY1 = (uint32_t)(4u * (unsigned)i + rnd() % 4u); }
+    { int i; for (i = 0; i < 25; i++) x->aRow[i].nY2 = (uint32_t)(4u * (unsigned)i + rnd() % 4u); }
+    { int i; for (i = 0; i < 25; i++) x->aRow[i].nWY1 = (uint32_t)(4u * (unsigned)i + rnd() % 4u); }
+    { int i; for (i = 0; i < 25; i++) x->aRow[i].nWY2 = (uint32_t)(4u * (unsigned)i + rnd() % 4u); }
     { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nRowCount = (uint16_t)v[rnd() % 7u]; }
     x->wInputActive = (uint16_t)(rnd() & 0x301u);
 }
@@ -4980,6 +5003,7 @@ static int draw_loadsensing_udint(FB_LOADSENSING_UDINT *a, FB_LOADSENSING_UDINT 
             a->nAnalogInX = x.nAnalogInX;
             a->nAnalogInY = x.nAnalogInY;
             a->dwOptions = x.dwOptions;
+            memcpy(a->aRow, x.aRow, sizeof a->aRow);
             a->nRowCount = x.nRowCount;
             a->wInputActive = x.wInputActive;
             *b = *a;
