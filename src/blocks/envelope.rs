@@ -282,7 +282,7 @@ pub struct EnvelopeIn {
 /// The envelope at `t` ms after the SafeFunction edge (ABI-2 §11.11, semantics EV3): the
 /// straight line from `start` at 0 to `target` at `max_time`, as one quotient rounded down
 /// (never above the exact line), never below `target`.
-pub fn envelope_at(start: u64, target: u64, t: u32, max_time: u32) -> u64 {
+fn envelope_at(start: u64, target: u64, t: u32, max_time: u32) -> u64 {
     let (t, max) = (u64::from(t.min(max_time)), u64::from(max_time.max(1)));
     // start, target < 2^33 and t ≤ max < 2^16: the products stay below 2^50.
     ((start * (max - t) + target * t) / max).max(target)
