@@ -139,7 +139,8 @@ fn drop_comment_above<S: AsRef<str>>(lines: &mut Vec<S>) {
 }
 
 /// cbindgen names a generic struct instantiated by a type alias after its arguments
-/// (`FB_ARITH_Add__i16__2__6`) and adds `typedef struct FB_ARITH_Add__i16__2__6 FB_ADD_INT;`.
+/// (`FB_ARITH_Add__i16__2__6`, with one argument `SL_LOADSENSING_ROW_i16`) and adds
+/// `typedef struct FB_ARITH_Add__i16__2__6 FB_ADD_INT;`.
 /// Each such instantiation belongs to exactly one alias: the struct takes the alias's name,
 /// so C users and the PLC generator see `FB_ADD_INT` like any other block struct.
 fn name_variant_structs(text: &str) -> String {
@@ -150,7 +151,7 @@ fn name_variant_structs(text: &str) -> String {
         let t = line.trim();
         if let Some(rest) = t.strip_prefix("typedef struct ") {
             if let Some((from, to)) = rest.trim_end_matches(';').split_once(' ') {
-                if from.contains("__") && !to.contains(' ') && !rest.contains('{') {
+                if is_instantiation(from) && !to.contains(' ') && !rest.contains('{') {
                     renames.push((from.to_string(), to.to_string()));
                     // Drop the alias's doc comment with the typedef.
                     drop_comment_above(&mut kept);
@@ -165,6 +166,15 @@ fn name_variant_structs(text: &str) -> String {
         out = replace_word(&out, &from, &to);
     }
     out
+}
+
+/// A name cbindgen gave a generic instantiation: several arguments joined by "__", or one
+/// integer type argument appended.
+fn is_instantiation(name: &str) -> bool {
+    name.contains("__")
+        || ["_i16", "_u16", "_i32", "_u32"]
+            .iter()
+            .any(|t| name.ends_with(t))
 }
 
 /// Replaces whole-word occurrences of `from`.

@@ -508,6 +508,47 @@ fn main() {
             SL_OPT_SLI2_OVERFLOW_ALLOWED | SL_OPT_SLI2_EXCEEDED_SUPPORT;
     }
 
+    // LOADSENSING, one row per width: a full table of 25 rows, AnalogInX above the last X
+    // (the longest row search), AnalogInY inside the warning level (RUN).
+    macro_rules! loadsensing_row {
+        ($($name:literal, $ty:ty, $tag:expr, $cycle:ident;)*) => {$(
+            let mut fb = <$ty>::default();
+            fb.wInputActive = SL_LOADSENSING_ACTIVE_ANALOGINX | SL_LOADSENSING_ACTIVE_ANALOGINY;
+            fb.nRowCount = SL_LOADSENSING_ROWS_MAX;
+            for (i, r) in (0..).zip(fb.aRow.iter_mut()) {
+                (r.nX, r.nY1, r.nY2, r.nWY1, r.nWY2) = (10 * i, 100 * i, 100 * i + 90, 100 * i + 10, 100 * i + 80);
+            }
+            (fb.nAnalogInX, fb.nAnalogInY, fb.bRun) = (1_000, 2_450, 1);
+            fb.init();
+            let private = size_of_val(&fb.stPrivate);
+            rows.push(measure(($name, $tag, logic), batches, fb, private, $cycle, |f| f.nState));
+        )*};
+    }
+    use safelogic::blocks::loadsensing::*;
+    loadsensing_row! {
+        "LOADS_INT", FB_LOADSENSING_INT, SL_TYPE_LOADSENSING_INT, sl_loadsensing_int_cycle;
+        "LOADS_UDINT", FB_LOADSENSING_UDINT, SL_TYPE_LOADSENSING_UDINT, sl_loadsensing_udint_cycle;
+    }
+
+    // ENVELOPE, one row per width: SafeFunction TRUE (RUN; MONITOR ends at MaxTime ≤ 65 s,
+    // shorter than a measurement).
+    macro_rules! envelope_row {
+        ($($name:literal, $ty:ty, $tag:expr, $cycle:ident;)*) => {$(
+            let mut fb = <$ty>::default();
+            fb.wInputActive = SL_ENVELOPE_ACTIVE;
+            (fb.tTimeAfterInTarget, fb.tMaxTime, fb.nTargetValue, fb.nOffset) = (100, 5_000, 10, 50);
+            (fb.bSafeFunction, fb.nInValue, fb.bRun) = (1, 500, 1);
+            fb.init();
+            let private = size_of_val(&fb.stPrivate);
+            rows.push(measure(($name, $tag, timer), batches, fb, private, $cycle, |f| f.nState));
+        )*};
+    }
+    use safelogic::blocks::envelope::*;
+    envelope_row! {
+        "ENV_INT", FB_ENVELOPE_INT, SL_TYPE_ENVELOPE_INT, sl_envelope_int_cycle;
+        "ENV_UDINT", FB_ENVELOPE_UDINT, SL_TYPE_ENVELOPE_UDINT, sl_envelope_udint_cycle;
+    }
+
     let cpu = std::fs::read_to_string("/proc/cpuinfo")
         .ok()
         .and_then(|s| {

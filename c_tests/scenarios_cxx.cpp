@@ -16,3 +16,5 @@
 #include "test_arith.c"
 #include "test_scale_speed.c"
 #include "test_sli.c"
+#include "test_loadsensing.c"
+#include "test_envelope.c"

@@ -247,6 +247,8 @@ int main(void)
     run_arith_scenarios();
     run_scale_speed_scenarios();
     run_sli_scenarios();
+    run_loadsensing_scenarios();
+    run_envelope_scenarios();
     printf("%d passed, %d failed\n", h_passed, h_failed);
     return h_failed == 0 ? 0 : 1;
 }

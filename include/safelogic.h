@@ -248,6 +248,72 @@
 #define SL_EDM_TIME_MAX 10000
 
 /*
+ Type tag of FB_ENVELOPE_INT (ABI-2 §10.6: sequential from 16 in the order of §10.3).
+ */
+#define SL_TYPE_ENVELOPE_INT 52
+
+/*
+ FB_ENVELOPE_UINT.
+ */
+#define SL_TYPE_ENVELOPE_UINT 53
+
+/*
+ FB_ENVELOPE_DINT.
+ */
+#define SL_TYPE_ENVELOPE_DINT 54
+
+/*
+ FB_ENVELOPE_UDINT.
+ */
+#define SL_TYPE_ENVELOPE_UDINT 55
+
+/*
+ State MONITOR (manual §4.32.2 "9.0"): SafeFunction fell, InValue outside the target
+ window, checked against the envelope; SafeFunctionOut 1.
+ */
+#define SL_STATE_ENVELOPE_MONITOR 9
+
+/*
+ Diag value 1: "Underflow (InValue below the envelope)".
+ */
+#define SL_DIAG_ENVELOPE_UNDERFLOW 1
+
+/*
+ Diag value 2: "Overflow (InValue above the envelope)".
+ */
+#define SL_DIAG_ENVELOPE_OVERFLOW 2
+
+/*
+ Diag value 3: "InValue Error" (the manual defines no condition: never set, EV6).
+ */
+#define SL_DIAG_ENVELOPE_INVALUE_ERROR 3
+
+/*
+ Diag value 4: "MaxTimeExpired" (MaxTime leads to SAFE without error: never set, EV6).
+ */
+#define SL_DIAG_ENVELOPE_MAX_TIME 4
+
+/*
+ Diag message "InValueExpired AND InValue < 0" (parameters: InValue, MinAllowedValue).
+ */
+#define SL_TEXT_ENVELOPE_UNDERFLOW 16584
+
+/*
+ Diag message "InValueExpired AND InValue > 0" (parameters: InValue, MaxAllowedValue).
+ */
+#define SL_TEXT_ENVELOPE_OVERFLOW 16585
+
+/*
+ `wInputActive` of FB ENVELOPE: SafeFunction (bit 0) and InValue (bit 8), both required.
+ */
+#define SL_ENVELOPE_ACTIVE 257
+
+/*
+ Largest `tTimeAfterInTarget` and `tMaxTime` (ms; ABI-2 §12.9, semantics C10).
+ */
+#define SL_ENVELOPE_TIME_MAX 65535
+
+/*
  Block type tag of FB_ESTOP (`SL_MEMBER.nType`, `sl_diag_text`).
  */
 #define SL_TYPE_ESTOP 1
@@ -306,6 +372,61 @@
  `wInputActive` bit of MaxValue: set = the input is the maximum, clear = `nMaximumValue`.
  */
 #define SL_LIMIT_ACTIVE_MAXVALUE (1 << 10)
+
+/*
+ Type tag of FB_LOADSENSING_INT (ABI-2 §10.6: sequential from 16 in the order of §10.3).
+ */
+#define SL_TYPE_LOADSENSING_INT 48
+
+/*
+ FB_LOADSENSING_UINT.
+ */
+#define SL_TYPE_LOADSENSING_UINT 49
+
+/*
+ FB_LOADSENSING_DINT.
+ */
+#define SL_TYPE_LOADSENSING_DINT 50
+
+/*
+ FB_LOADSENSING_UDINT.
+ */
+#define SL_TYPE_LOADSENSING_UDINT 51
+
+/*
+ State INACTIVE (manual §4.25.2 "16.0"): Inactive is TRUE; Valid 0, Warning 0.
+ */
+#define SL_STATE_LOADSENSING_INACTIVE 16
+
+/*
+ State WARNING (manual §4.25.2 "17.0"): AnalogInY between the levels; Valid 1, Warning 1.
+ */
+#define SL_STATE_LOADSENSING_WARNING 17
+
+/*
+ Rows of the value table ("There can be up to 25 indices").
+ */
+#define SL_LOADSENSING_ROWS_MAX 25
+
+/*
+ `dwOptions` bit 8: "Outside [y1; y2]": values outside Y1…Y2 are valid.
+ */
+#define SL_OPT_LOADSENSING_OUTSIDE (1 << 8)
+
+/*
+ `wInputActive` bit of Inactive (optional: clear = reads FALSE, the block evaluates).
+ */
+#define SL_LOADSENSING_ACTIVE_INACTIVE (1 << 0)
+
+/*
+ `wInputActive` bit of AnalogInX (required).
+ */
+#define SL_LOADSENSING_ACTIVE_ANALOGINX (1 << 8)
+
+/*
+ `wInputActive` bit of AnalogInY (required).
+ */
+#define SL_LOADSENSING_ACTIVE_ANALOGINY (1 << 9)
 
 /*
  Block type tag of FB_MON.
@@ -493,47 +614,6 @@
 #define SL_SCALE_NEGATE_ANALOGIN (1 << 8)
 
 /*
- Type tag of FB_SPEED_INT (ABI-2 §10.6: sequential from 16 in the order of §10.3).
- */
-#define SL_TYPE_SPEED_INT 44
-
-/*
- FB_SPEED_UINT.
- */
-#define SL_TYPE_SPEED_UINT 45
-
-/*
- FB_SPEED_DINT.
- */
-#define SL_TYPE_SPEED_DINT 46
-
-/*
- FB_SPEED_UDINT.
- */
-#define SL_TYPE_SPEED_UDINT 47
-
-/*
- `dwOptions`: "Overflow Check" — the position difference is taken modulo 2^W before the
- range check (a position counter wrapping at its type's end is no jump).
- */
-#define SL_OPT_SPEED_OVERFLOW_CHECK (1 << 8)
-
-/*
- Diag message "An underflow has occurred." (parameters: current, latched position).
- */
-#define SL_TEXT_SPEED_UNDERFLOW 16520
-
-/*
- Diag message "An overflow has occurred." (parameters: current, latched position).
- */
-#define SL_TEXT_SPEED_OVERFLOW 16521
-
-/*
- `wInputActive` bit of Position (required, the only bit).
- */
-#define SL_SPEED_ACTIVE_POSITION (1 << 8)
-
-/*
  Type tag of FB_SLI_INT (ABI-2 §10.6: sequential in the order of §10.3).
  */
 #define SL_TYPE_SLI_INT 60
@@ -605,6 +685,47 @@
  `dwOptions` "ExceededSupport": leaving the window in RUN enters EXCEEDED, not ERROR.
  */
 #define SL_OPT_SLI2_EXCEEDED_SUPPORT (1 << 9)
+
+/*
+ Type tag of FB_SPEED_INT (ABI-2 §10.6: sequential from 16 in the order of §10.3).
+ */
+#define SL_TYPE_SPEED_INT 44
+
+/*
+ FB_SPEED_UINT.
+ */
+#define SL_TYPE_SPEED_UINT 45
+
+/*
+ FB_SPEED_DINT.
+ */
+#define SL_TYPE_SPEED_DINT 46
+
+/*
+ FB_SPEED_UDINT.
+ */
+#define SL_TYPE_SPEED_UDINT 47
+
+/*
+ `dwOptions`: "Overflow Check" — the position difference is taken modulo 2^W before the
+ range check (a position counter wrapping at its type's end is no jump).
+ */
+#define SL_OPT_SPEED_OVERFLOW_CHECK (1 << 8)
+
+/*
+ Diag message "An underflow has occurred." (parameters: current, latched position).
+ */
+#define SL_TEXT_SPEED_UNDERFLOW 16520
+
+/*
+ Diag message "An overflow has occurred." (parameters: current, latched position).
+ */
+#define SL_TEXT_SPEED_OVERFLOW 16521
+
+/*
+ `wInputActive` bit of Position (required, the only bit).
+ */
+#define SL_SPEED_ACTIVE_POSITION (1 << 8)
 
 /*
  Block type tag of FB_SR.
@@ -1679,6 +1800,242 @@ typedef struct FB_MON {
    */
   struct SL_GUARD_PRIVATE stPrivate;
 } FB_MON;
+
+/*
+ One row of the value table (ABI-2 §10.6): the manual's index, X, Y1, Y2, WY1, WY2, all of
+ the variant's type (10 or 20 bytes, no padding).
+ */
+typedef struct SL_LOADSENSING_ROW_INT {
+  /*
+   X: the row applies while its X is the largest below AnalogInX.
+   */
+  int16_t nX;
+  /*
+   Y1: lower switch-off level.
+   */
+  int16_t nY1;
+  /*
+   Y2: upper switch-off level.
+   */
+  int16_t nY2;
+  /*
+   WY1: lower warning level.
+   */
+  int16_t nWY1;
+  /*
+   WY2: upper warning level.
+   */
+  int16_t nWY2;
+} SL_LOADSENSING_ROW_INT;
+
+
+/*
+ One row of the value table (ABI-2 §10.6): the manual's index, X, Y1, Y2, WY1, WY2, all of
+ the variant's type (10 or 20 bytes, no padding).
+ */
+typedef struct SL_LOADSENSING_ROW_UINT {
+  /*
+   X: the row applies while its X is the largest below AnalogInX.
+   */
+  uint16_t nX;
+  /*
+   Y1: lower switch-off level.
+   */
+  uint16_t nY1;
+  /*
+   Y2: upper switch-off level.
+   */
+  uint16_t nY2;
+  /*
+   WY1: lower warning level.
+   */
+  uint16_t nWY1;
+  /*
+   WY2: upper warning level.
+   */
+  uint16_t nWY2;
+} SL_LOADSENSING_ROW_UINT;
+
+
+/*
+ One row of the value table (ABI-2 §10.6): the manual's index, X, Y1, Y2, WY1, WY2, all of
+ the variant's type (10 or 20 bytes, no padding).
+ */
+typedef struct SL_LOADSENSING_ROW_DINT {
+  /*
+   X: the row applies while its X is the largest below AnalogInX.
+   */
+  int32_t nX;
+  /*
+   Y1: lower switch-off level.
+   */
+  int32_t nY1;
+  /*
+   Y2: upper switch-off level.
+   */
+  int32_t nY2;
+  /*
+   WY1: lower warning level.
+   */
+  int32_t nWY1;
+  /*
+   WY2: upper warning level.
+   */
+  int32_t nWY2;
+} SL_LOADSENSING_ROW_DINT;
+
+
+/*
+ One row of the value table (ABI-2 §10.6): the manual's index, X, Y1, Y2, WY1, WY2, all of
+ the variant's type (10 or 20 bytes, no padding).
+ */
+typedef struct SL_LOADSENSING_ROW_UDINT {
+  /*
+   X: the row applies while its X is the largest below AnalogInX.
+   */
+  uint32_t nX;
+  /*
+   Y1: lower switch-off level.
+   */
+  uint32_t nY1;
+  /*
+   Y2: upper switch-off level.
+   */
+  uint32_t nY2;
+  /*
+   WY1: lower warning level.
+   */
+  uint32_t nWY1;
+  /*
+   WY2: upper warning level.
+   */
+  uint32_t nWY2;
+} SL_LOADSENSING_ROW_UDINT;
+
+
+/*
+ Private state of FB LOADSENSING (16-bit: 288 bytes, 32-bit: 536). Never written by the
+ user. It holds the latched copy of the whole value table: the cycle evaluates the copy,
+ and the per-call change check compares the live table with it exactly (semantics LS6).
+ */
+typedef struct SL_LOADSENSING_PRIVATE_INT {
+  /*
+   Common head.
+   */
+  struct SL_PRIVATE_HEADER stHeader;
+  /*
+   Latched `dwOptions`.
+   */
+  uint32_t dwOptions;
+  /*
+   Latched `nRowCount`.
+   */
+  uint16_t nRowCount;
+  /*
+   Latched `wInputActive`.
+   */
+  uint16_t wActive;
+  /*
+   Latched value table, all 25 rows.
+   */
+  struct SL_LOADSENSING_ROW_INT aRow[25];
+  /*
+   Reserved up to a multiple of 8 (16-bit: 2 bytes, 32-bit: none).
+   */
+  uint8_t aReserved[2];
+} SL_LOADSENSING_PRIVATE_INT;
+
+
+/*
+ Private state of FB LOADSENSING (16-bit: 288 bytes, 32-bit: 536). Never written by the
+ user. It holds the latched copy of the whole value table: the cycle evaluates the copy,
+ and the per-call change check compares the live table with it exactly (semantics LS6).
+ */
+typedef struct SL_LOADSENSING_PRIVATE_UINT {
+  /*
+   Common head.
+   */
+  struct SL_PRIVATE_HEADER stHeader;
+  /*
+   Latched `dwOptions`.
+   */
+  uint32_t dwOptions;
+  /*
+   Latched `nRowCount`.
+   */
+  uint16_t nRowCount;
+  /*
+   Latched `wInputActive`.
+   */
+  uint16_t wActive;
+  /*
+   Latched value table, all 25 rows.
+   */
+  struct SL_LOADSENSING_ROW_UINT aRow[25];
+  /*
+   Reserved up to a multiple of 8 (16-bit: 2 bytes, 32-bit: none).
+   */
+  uint8_t aReserved[2];
+} SL_LOADSENSING_PRIVATE_UINT;
+
+
+/*
+ Private state of FB LOADSENSING (16-bit: 288 bytes, 32-bit: 536). Never written by the
+ user. It holds the latched copy of the whole value table: the cycle evaluates the copy,
+ and the per-call change check compares the live table with it exactly (semantics LS6).
+ */
+typedef struct SL_LOADSENSING_PRIVATE_DINT {
+  /*
+   Common head.
+   */
+  struct SL_PRIVATE_HEADER stHeader;
+  /*
+   Latched `dwOptions`.
+   */
+  uint32_t dwOptions;
+  /*
+   Latched `nRowCount`.
+   */
+  uint16_t nRowCount;
+  /*
+   Latched `wInputActive`.
+   */
+  uint16_t wActive;
+  /*
+   Latched value table, all 25 rows.
+   */
+  struct SL_LOADSENSING_ROW_DINT aRow[25];
+} SL_LOADSENSING_PRIVATE_DINT;
+
+
+/*
+ Private state of FB LOADSENSING (16-bit: 288 bytes, 32-bit: 536). Never written by the
+ user. It holds the latched copy of the whole value table: the cycle evaluates the copy,
+ and the per-call change check compares the live table with it exactly (semantics LS6).
+ */
+typedef struct SL_LOADSENSING_PRIVATE_UDINT {
+  /*
+   Common head.
+   */
+  struct SL_PRIVATE_HEADER stHeader;
+  /*
+   Latched `dwOptions`.
+   */
+  uint32_t dwOptions;
+  /*
+   Latched `nRowCount`.
+   */
+  uint16_t nRowCount;
+  /*
+   Latched `wInputActive`.
+   */
+  uint16_t wActive;
+  /*
+   Latched value table, all 25 rows.
+   */
+  struct SL_LOADSENSING_ROW_UDINT aRow[25];
+} SL_LOADSENSING_PRIVATE_UDINT;
+
 
 /*
  Private state of the combinational blocks (32 bytes). Never written by the user.
@@ -6355,6 +6712,892 @@ typedef struct FB_SPEED_UDINT {
 
 
 /*
+ FB LOADSENSING instance (ABI-2 §11.8), generic over the signal type `T`; `P1` is the
+ reserved gap before the output base and `PR` the private state's tail, the two places
+ where the 16- and 32-bit layouts differ beyond the width.
+ */
+typedef struct FB_LOADSENSING_INT {
+  /*
+   Offset 0. Reserved, keep 0.
+   */
+  uint8_t aReserved0[6];
+  /*
+   Offset 6. Inactive: TRUE = INACTIVE (active bit 0; clear: reads FALSE).
+   */
+  SL_BOOL bInactive;
+  /*
+   Offset 7. Reserved, keep 0.
+   */
+  uint8_t aReserved1[9];
+  /*
+   Offset 16. FbRun of the owning group: TRUE = the block executes.
+   */
+  SL_BOOL bRun;
+  /*
+   Offset 17. ErrAck of the owning group.
+   */
+  SL_BOOL bErrAck;
+  /*
+   Offset 18. Reserved, keep 0.
+   */
+  uint8_t aReserved2[6];
+  /*
+   At the analog input base 24: AnalogInX, selects the row (active bit 8, required).
+   */
+  int16_t nAnalogInX;
+  /*
+   At 24 + W: AnalogInY, the value checked (active bit 9, required).
+   */
+  int16_t nAnalogInY;
+  /*
+   At 24 + 2W: SL_OPT_LOADSENSING_OUTSIDE ("Outside [y1; y2]"); no other bit.
+   */
+  uint32_t dwOptions;
+  /*
+   At 28 + 2W: the value table; row i is the manual's index i + 1.
+   */
+  struct SL_LOADSENSING_ROW_INT aRow[25];
+  /*
+   At 28 + 127W: rows used, 1…25.
+   */
+  uint16_t nRowCount;
+  /*
+   At 30 + 127W: bits 8 and 9 must be set, bit 0 activates Inactive.
+   */
+  uint16_t wInputActive;
+  /*
+   Reserved up to the output base (16-bit: 2 bytes, 32-bit: 4).
+   */
+  uint8_t aReserved3[2];
+  /*
+   Output base + 0. Reserved (the block has no Error output).
+   */
+  uint8_t aReserved4[1];
+  /*
+   Output base + 1: Valid, TRUE in RUN and WARNING.
+   */
+  SL_BOOL bValid;
+  /*
+   Output base + 2: Warning, TRUE in WARNING.
+   */
+  SL_BOOL bWarning;
+  /*
+   Reserved up to the info data.
+   */
+  uint8_t aReserved5[5];
+  /*
+   Info + 0: the manual's status value (RUN, STOP, SAFE, INACTIVE, WARNING; ERROR,
+   RESET).
+   */
+  uint8_t nState;
+  /*
+   Info + 1. Reserved.
+   */
+  uint8_t aReserved6[1];
+  /*
+   Info + 2: 0 (no diag values) + library bits 13-15.
+   */
+  uint16_t nDiag;
+  /*
+   Info + 4: always 0 (the block has no diag message).
+   */
+  uint16_t nDiagTextId;
+  /*
+   Info + 6. Reserved.
+   */
+  uint8_t aReserved7[2];
+  /*
+   Info + 8: always 0.
+   */
+  uint32_t dwDiagPar2;
+  /*
+   Info + 12: always 0.
+   */
+  uint32_t dwDiagPar3;
+  /*
+   Info + 16: private state (16-bit: 288 bytes, 32-bit: 536): never write it.
+   */
+  struct SL_LOADSENSING_PRIVATE_INT stPrivate;
+} FB_LOADSENSING_INT;
+
+
+/*
+ FB LOADSENSING instance (ABI-2 §11.8), generic over the signal type `T`; `P1` is the
+ reserved gap before the output base and `PR` the private state's tail, the two places
+ where the 16- and 32-bit layouts differ beyond the width.
+ */
+typedef struct FB_LOADSENSING_UINT {
+  /*
+   Offset 0. Reserved, keep 0.
+   */
+  uint8_t aReserved0[6];
+  /*
+   Offset 6. Inactive: TRUE = INACTIVE (active bit 0; clear: reads FALSE).
+   */
+  SL_BOOL bInactive;
+  /*
+   Offset 7. Reserved, keep 0.
+   */
+  uint8_t aReserved1[9];
+  /*
+   Offset 16. FbRun of the owning group: TRUE = the block executes.
+   */
+  SL_BOOL bRun;
+  /*
+   Offset 17. ErrAck of the owning group.
+   */
+  SL_BOOL bErrAck;
+  /*
+   Offset 18. Reserved, keep 0.
+   */
+  uint8_t aReserved2[6];
+  /*
+   At the analog input base 24: AnalogInX, selects the row (active bit 8, required).
+   */
+  uint16_t nAnalogInX;
+  /*
+   At 24 + W: AnalogInY, the value checked (active bit 9, required).
+   */
+  uint16_t nAnalogInY;
+  /*
+   At 24 + 2W: SL_OPT_LOADSENSING_OUTSIDE ("Outside [y1; y2]"); no other bit.
+   */
+  uint32_t dwOptions;
+  /*
+   At 28 + 2W: the value table; row i is the manual's index i + 1.
+   */
+  struct SL_LOADSENSING_ROW_UINT aRow[25];
+  /*
+   At 28 + 127W: rows used, 1…25.
+   */
+  uint16_t nRowCount;
+  /*
+   At 30 + 127W: bits 8 and 9 must be set, bit 0 activates Inactive.
+   */
+  uint16_t wInputActive;
+  /*
+   Reserved up to the output base (16-bit: 2 bytes, 32-bit: 4).
+   */
+  uint8_t aReserved3[2];
+  /*
+   Output base + 0. Reserved (the block has no Error output).
+   */
+  uint8_t aReserved4[1];
+  /*
+   Output base + 1: Valid, TRUE in RUN and WARNING.
+   */
+  SL_BOOL bValid;
+  /*
+   Output base + 2: Warning, TRUE in WARNING.
+   */
+  SL_BOOL bWarning;
+  /*
+   Reserved up to the info data.
+   */
+  uint8_t aReserved5[5];
+  /*
+   Info + 0: the manual's status value (RUN, STOP, SAFE, INACTIVE, WARNING; ERROR,
+   RESET).
+   */
+  uint8_t nState;
+  /*
+   Info + 1. Reserved.
+   */
+  uint8_t aReserved6[1];
+  /*
+   Info + 2: 0 (no diag values) + library bits 13-15.
+   */
+  uint16_t nDiag;
+  /*
+   Info + 4: always 0 (the block has no diag message).
+   */
+  uint16_t nDiagTextId;
+  /*
+   Info + 6. Reserved.
+   */
+  uint8_t aReserved7[2];
+  /*
+   Info + 8: always 0.
+   */
+  uint32_t dwDiagPar2;
+  /*
+   Info + 12: always 0.
+   */
+  uint32_t dwDiagPar3;
+  /*
+   Info + 16: private state (16-bit: 288 bytes, 32-bit: 536): never write it.
+   */
+  struct SL_LOADSENSING_PRIVATE_UINT stPrivate;
+} FB_LOADSENSING_UINT;
+
+
+/*
+ FB LOADSENSING instance (ABI-2 §11.8), generic over the signal type `T`; `P1` is the
+ reserved gap before the output base and `PR` the private state's tail, the two places
+ where the 16- and 32-bit layouts differ beyond the width.
+ */
+typedef struct FB_LOADSENSING_DINT {
+  /*
+   Offset 0. Reserved, keep 0.
+   */
+  uint8_t aReserved0[6];
+  /*
+   Offset 6. Inactive: TRUE = INACTIVE (active bit 0; clear: reads FALSE).
+   */
+  SL_BOOL bInactive;
+  /*
+   Offset 7. Reserved, keep 0.
+   */
+  uint8_t aReserved1[9];
+  /*
+   Offset 16. FbRun of the owning group: TRUE = the block executes.
+   */
+  SL_BOOL bRun;
+  /*
+   Offset 17. ErrAck of the owning group.
+   */
+  SL_BOOL bErrAck;
+  /*
+   Offset 18. Reserved, keep 0.
+   */
+  uint8_t aReserved2[6];
+  /*
+   At the analog input base 24: AnalogInX, selects the row (active bit 8, required).
+   */
+  int32_t nAnalogInX;
+  /*
+   At 24 + W: AnalogInY, the value checked (active bit 9, required).
+   */
+  int32_t nAnalogInY;
+  /*
+   At 24 + 2W: SL_OPT_LOADSENSING_OUTSIDE ("Outside [y1; y2]"); no other bit.
+   */
+  uint32_t dwOptions;
+  /*
+   At 28 + 2W: the value table; row i is the manual's index i + 1.
+   */
+  struct SL_LOADSENSING_ROW_DINT aRow[25];
+  /*
+   At 28 + 127W: rows used, 1…25.
+   */
+  uint16_t nRowCount;
+  /*
+   At 30 + 127W: bits 8 and 9 must be set, bit 0 activates Inactive.
+   */
+  uint16_t wInputActive;
+  /*
+   Reserved up to the output base (16-bit: 2 bytes, 32-bit: 4).
+   */
+  uint8_t aReserved3[4];
+  /*
+   Output base + 0. Reserved (the block has no Error output).
+   */
+  uint8_t aReserved4[1];
+  /*
+   Output base + 1: Valid, TRUE in RUN and WARNING.
+   */
+  SL_BOOL bValid;
+  /*
+   Output base + 2: Warning, TRUE in WARNING.
+   */
+  SL_BOOL bWarning;
+  /*
+   Reserved up to the info data.
+   */
+  uint8_t aReserved5[5];
+  /*
+   Info + 0: the manual's status value (RUN, STOP, SAFE, INACTIVE, WARNING; ERROR,
+   RESET).
+   */
+  uint8_t nState;
+  /*
+   Info + 1. Reserved.
+   */
+  uint8_t aReserved6[1];
+  /*
+   Info + 2: 0 (no diag values) + library bits 13-15.
+   */
+  uint16_t nDiag;
+  /*
+   Info + 4: always 0 (the block has no diag message).
+   */
+  uint16_t nDiagTextId;
+  /*
+   Info + 6. Reserved.
+   */
+  uint8_t aReserved7[2];
+  /*
+   Info + 8: always 0.
+   */
+  uint32_t dwDiagPar2;
+  /*
+   Info + 12: always 0.
+   */
+  uint32_t dwDiagPar3;
+  /*
+   Info + 16: private state (16-bit: 288 bytes, 32-bit: 536): never write it.
+   */
+  struct SL_LOADSENSING_PRIVATE_DINT stPrivate;
+} FB_LOADSENSING_DINT;
+
+
+/*
+ FB LOADSENSING instance (ABI-2 §11.8), generic over the signal type `T`; `P1` is the
+ reserved gap before the output base and `PR` the private state's tail, the two places
+ where the 16- and 32-bit layouts differ beyond the width.
+ */
+typedef struct FB_LOADSENSING_UDINT {
+  /*
+   Offset 0. Reserved, keep 0.
+   */
+  uint8_t aReserved0[6];
+  /*
+   Offset 6. Inactive: TRUE = INACTIVE (active bit 0; clear: reads FALSE).
+   */
+  SL_BOOL bInactive;
+  /*
+   Offset 7. Reserved, keep 0.
+   */
+  uint8_t aReserved1[9];
+  /*
+   Offset 16. FbRun of the owning group: TRUE = the block executes.
+   */
+  SL_BOOL bRun;
+  /*
+   Offset 17. ErrAck of the owning group.
+   */
+  SL_BOOL bErrAck;
+  /*
+   Offset 18. Reserved, keep 0.
+   */
+  uint8_t aReserved2[6];
+  /*
+   At the analog input base 24: AnalogInX, selects the row (active bit 8, required).
+   */
+  uint32_t nAnalogInX;
+  /*
+   At 24 + W: AnalogInY, the value checked (active bit 9, required).
+   */
+  uint32_t nAnalogInY;
+  /*
+   At 24 + 2W: SL_OPT_LOADSENSING_OUTSIDE ("Outside [y1; y2]"); no other bit.
+   */
+  uint32_t dwOptions;
+  /*
+   At 28 + 2W: the value table; row i is the manual's index i + 1.
+   */
+  struct SL_LOADSENSING_ROW_UDINT aRow[25];
+  /*
+   At 28 + 127W: rows used, 1…25.
+   */
+  uint16_t nRowCount;
+  /*
+   At 30 + 127W: bits 8 and 9 must be set, bit 0 activates Inactive.
+   */
+  uint16_t wInputActive;
+  /*
+   Reserved up to the output base (16-bit: 2 bytes, 32-bit: 4).
+   */
+  uint8_t aReserved3[4];
+  /*
+   Output base + 0. Reserved (the block has no Error output).
+   */
+  uint8_t aReserved4[1];
+  /*
+   Output base + 1: Valid, TRUE in RUN and WARNING.
+   */
+  SL_BOOL bValid;
+  /*
+   Output base + 2: Warning, TRUE in WARNING.
+   */
+  SL_BOOL bWarning;
+  /*
+   Reserved up to the info data.
+   */
+  uint8_t aReserved5[5];
+  /*
+   Info + 0: the manual's status value (RUN, STOP, SAFE, INACTIVE, WARNING; ERROR,
+   RESET).
+   */
+  uint8_t nState;
+  /*
+   Info + 1. Reserved.
+   */
+  uint8_t aReserved6[1];
+  /*
+   Info + 2: 0 (no diag values) + library bits 13-15.
+   */
+  uint16_t nDiag;
+  /*
+   Info + 4: always 0 (the block has no diag message).
+   */
+  uint16_t nDiagTextId;
+  /*
+   Info + 6. Reserved.
+   */
+  uint8_t aReserved7[2];
+  /*
+   Info + 8: always 0.
+   */
+  uint32_t dwDiagPar2;
+  /*
+   Info + 12: always 0.
+   */
+  uint32_t dwDiagPar3;
+  /*
+   Info + 16: private state (16-bit: 288 bytes, 32-bit: 536): never write it.
+   */
+  struct SL_LOADSENSING_PRIVATE_UDINT stPrivate;
+} FB_LOADSENSING_UDINT;
+
+
+/*
+ Private state of FB ENVELOPE (64 bytes). Never written by the user.
+ */
+typedef struct SL_ENVELOPE_PRIVATE {
+  /*
+   Common head (`tPhase`: the SafeFunction edge, where MaxTime and the envelope start).
+   */
+  struct SL_PRIVATE_HEADER stHeader;
+  /*
+   Latched Time after in Target, Max Time, Target Value, Offset.
+   */
+  uint32_t adwParam[4];
+  /*
+   |InValue| latched at the SafeFunction edge (InValueLatch).
+   */
+  uint32_t dwInValueLatch;
+  /*
+   Start of the "Time after in Target" timer (entry into DELAYOUT).
+   */
+  uint32_t tInTarget;
+  /*
+   Diag message parameters 2 and 3 (InValue, ∓E(t)) latched at the ERROR entry.
+   */
+  uint32_t adwPar[2];
+  /*
+   Latched `wInputActive`.
+   */
+  uint16_t wActive;
+  /*
+   Reserved.
+   */
+  uint8_t aReserved[2];
+} SL_ENVELOPE_PRIVATE;
+
+/*
+ FB ENVELOPE instance (ABI-2 §11.11), generic over the signal type `T`; `P1` is the
+ reserved gap after InValue (16-bit: 2 bytes, 32-bit: none), the only place where the
+ layouts differ beyond the width.
+ */
+typedef struct FB_ENVELOPE_INT {
+  /*
+   Offset 0. SafeFunction: FALSE starts the monitored stop (active bit 0, required).
+   */
+  SL_BOOL bSafeFunction;
+  /*
+   Offset 1. Reserved, keep 0.
+   */
+  uint8_t aReserved0[15];
+  /*
+   Offset 16. FbRun of the owning group: TRUE = the block executes.
+   */
+  SL_BOOL bRun;
+  /*
+   Offset 17. ErrAck of the owning group.
+   */
+  SL_BOOL bErrAck;
+  /*
+   Offset 18. Reserved, keep 0.
+   */
+  uint8_t aReserved1[6];
+  /*
+   At the analog input base 24: InValue, the monitored value (active bit 8, required).
+   */
+  int16_t nInValue;
+  /*
+   Reserved up to 28 (16-bit: 2 bytes, 32-bit: none).
+   */
+  uint8_t aReserved2[2];
+  /*
+   At 28: "Time after in Target (ms)", 0…65 535.
+   */
+  uint32_t tTimeAfterInTarget;
+  /*
+   At 32: "Max Time (ms)", 1…65 535.
+   */
+  uint32_t tMaxTime;
+  /*
+   At 36: "Target Value": the window −TargetValue…+TargetValue.
+   */
+  uint32_t nTargetValue;
+  /*
+   At 40: "Offset", added to |InValue| for the envelope's start.
+   */
+  uint32_t nOffset;
+  /*
+   At 44: bits 0 and 8 must be set (SL_ENVELOPE_ACTIVE).
+   */
+  uint16_t wInputActive;
+  /*
+   At 46. Reserved up to the output base.
+   */
+  uint8_t aReserved3[2];
+  /*
+   At the output base 48: Error, TRUE in ERROR only.
+   */
+  SL_BOOL bError;
+  /*
+   Output base + 1: SafeFunction Out, TRUE in RUN, DELAYOUT and MONITOR.
+   */
+  SL_BOOL bSafeFunctionOut;
+  /*
+   Reserved up to the info data.
+   */
+  uint8_t aReserved4[6];
+  /*
+   Info + 0 (56): the manual's status value.
+   */
+  uint8_t nState;
+  /*
+   Info + 1. Reserved.
+   */
+  uint8_t aReserved5[1];
+  /*
+   Info + 2: diag value (1 underflow, 2 overflow) + library bits 13-15.
+   */
+  uint16_t nDiag;
+  /*
+   Info + 4: Text ID of the latched diag message (0x40C8, 0x40C9), 0 = none.
+   */
+  uint16_t nDiagTextId;
+  /*
+   Info + 6. Reserved.
+   */
+  uint8_t aReserved6[2];
+  /*
+   Info + 8: message parameter 2 (InValue as a 32-bit pattern).
+   */
+  uint32_t dwDiagPar2;
+  /*
+   Info + 12: message parameter 3 (−E(t) for 0x40C8, +E(t) for 0x40C9).
+   */
+  uint32_t dwDiagPar3;
+  /*
+   Info + 16 (72): private state, 64 bytes: never write it.
+   */
+  struct SL_ENVELOPE_PRIVATE stPrivate;
+} FB_ENVELOPE_INT;
+
+
+/*
+ FB ENVELOPE instance (ABI-2 §11.11), generic over the signal type `T`; `P1` is the
+ reserved gap after InValue (16-bit: 2 bytes, 32-bit: none), the only place where the
+ layouts differ beyond the width.
+ */
+typedef struct FB_ENVELOPE_UINT {
+  /*
+   Offset 0. SafeFunction: FALSE starts the monitored stop (active bit 0, required).
+   */
+  SL_BOOL bSafeFunction;
+  /*
+   Offset 1. Reserved, keep 0.
+   */
+  uint8_t aReserved0[15];
+  /*
+   Offset 16. FbRun of the owning group: TRUE = the block executes.
+   */
+  SL_BOOL bRun;
+  /*
+   Offset 17. ErrAck of the owning group.
+   */
+  SL_BOOL bErrAck;
+  /*
+   Offset 18. Reserved, keep 0.
+   */
+  uint8_t aReserved1[6];
+  /*
+   At the analog input base 24: InValue, the monitored value (active bit 8, required).
+   */
+  uint16_t nInValue;
+  /*
+   Reserved up to 28 (16-bit: 2 bytes, 32-bit: none).
+   */
+  uint8_t aReserved2[2];
+  /*
+   At 28: "Time after in Target (ms)", 0…65 535.
+   */
+  uint32_t tTimeAfterInTarget;
+  /*
+   At 32: "Max Time (ms)", 1…65 535.
+   */
+  uint32_t tMaxTime;
+  /*
+   At 36: "Target Value": the window −TargetValue…+TargetValue.
+   */
+  uint32_t nTargetValue;
+  /*
+   At 40: "Offset", added to |InValue| for the envelope's start.
+   */
+  uint32_t nOffset;
+  /*
+   At 44: bits 0 and 8 must be set (SL_ENVELOPE_ACTIVE).
+   */
+  uint16_t wInputActive;
+  /*
+   At 46. Reserved up to the output base.
+   */
+  uint8_t aReserved3[2];
+  /*
+   At the output base 48: Error, TRUE in ERROR only.
+   */
+  SL_BOOL bError;
+  /*
+   Output base + 1: SafeFunction Out, TRUE in RUN, DELAYOUT and MONITOR.
+   */
+  SL_BOOL bSafeFunctionOut;
+  /*
+   Reserved up to the info data.
+   */
+  uint8_t aReserved4[6];
+  /*
+   Info + 0 (56): the manual's status value.
+   */
+  uint8_t nState;
+  /*
+   Info + 1. Reserved.
+   */
+  uint8_t aReserved5[1];
+  /*
+   Info + 2: diag value (1 underflow, 2 overflow) + library bits 13-15.
+   */
+  uint16_t nDiag;
+  /*
+   Info + 4: Text ID of the latched diag message (0x40C8, 0x40C9), 0 = none.
+   */
+  uint16_t nDiagTextId;
+  /*
+   Info + 6. Reserved.
+   */
+  uint8_t aReserved6[2];
+  /*
+   Info + 8: message parameter 2 (InValue as a 32-bit pattern).
+   */
+  uint32_t dwDiagPar2;
+  /*
+   Info + 12: message parameter 3 (−E(t) for 0x40C8, +E(t) for 0x40C9).
+   */
+  uint32_t dwDiagPar3;
+  /*
+   Info + 16 (72): private state, 64 bytes: never write it.
+   */
+  struct SL_ENVELOPE_PRIVATE stPrivate;
+} FB_ENVELOPE_UINT;
+
+
+/*
+ FB ENVELOPE instance (ABI-2 §11.11), generic over the signal type `T`; `P1` is the
+ reserved gap after InValue (16-bit: 2 bytes, 32-bit: none), the only place where the
+ layouts differ beyond the width.
+ */
+typedef struct FB_ENVELOPE_DINT {
+  /*
+   Offset 0. SafeFunction: FALSE starts the monitored stop (active bit 0, required).
+   */
+  SL_BOOL bSafeFunction;
+  /*
+   Offset 1. Reserved, keep 0.
+   */
+  uint8_t aReserved0[15];
+  /*
+   Offset 16. FbRun of the owning group: TRUE = the block executes.
+   */
+  SL_BOOL bRun;
+  /*
+   Offset 17. ErrAck of the owning group.
+   */
+  SL_BOOL bErrAck;
+  /*
+   Offset 18. Reserved, keep 0.
+   */
+  uint8_t aReserved1[6];
+  /*
+   At the analog input base 24: InValue, the monitored value (active bit 8, required).
+   */
+  int32_t nInValue;
+  /*
+   At 28: "Time after in Target (ms)", 0…65 535.
+   */
+  uint32_t tTimeAfterInTarget;
+  /*
+   At 32: "Max Time (ms)", 1…65 535.
+   */
+  uint32_t tMaxTime;
+  /*
+   At 36: "Target Value": the window −TargetValue…+TargetValue.
+   */
+  uint32_t nTargetValue;
+  /*
+   At 40: "Offset", added to |InValue| for the envelope's start.
+   */
+  uint32_t nOffset;
+  /*
+   At 44: bits 0 and 8 must be set (SL_ENVELOPE_ACTIVE).
+   */
+  uint16_t wInputActive;
+  /*
+   At 46. Reserved up to the output base.
+   */
+  uint8_t aReserved3[2];
+  /*
+   At the output base 48: Error, TRUE in ERROR only.
+   */
+  SL_BOOL bError;
+  /*
+   Output base + 1: SafeFunction Out, TRUE in RUN, DELAYOUT and MONITOR.
+   */
+  SL_BOOL bSafeFunctionOut;
+  /*
+   Reserved up to the info data.
+   */
+  uint8_t aReserved4[6];
+  /*
+   Info + 0 (56): the manual's status value.
+   */
+  uint8_t nState;
+  /*
+   Info + 1. Reserved.
+   */
+  uint8_t aReserved5[1];
+  /*
+   Info + 2: diag value (1 underflow, 2 overflow) + library bits 13-15.
+   */
+  uint16_t nDiag;
+  /*
+   Info + 4: Text ID of the latched diag message (0x40C8, 0x40C9), 0 = none.
+   */
+  uint16_t nDiagTextId;
+  /*
+   Info + 6. Reserved.
+   */
+  uint8_t aReserved6[2];
+  /*
+   Info + 8: message parameter 2 (InValue as a 32-bit pattern).
+   */
+  uint32_t dwDiagPar2;
+  /*
+   Info + 12: message parameter 3 (−E(t) for 0x40C8, +E(t) for 0x40C9).
+   */
+  uint32_t dwDiagPar3;
+  /*
+   Info + 16 (72): private state, 64 bytes: never write it.
+   */
+  struct SL_ENVELOPE_PRIVATE stPrivate;
+} FB_ENVELOPE_DINT;
+
+
+/*
+ FB ENVELOPE instance (ABI-2 §11.11), generic over the signal type `T`; `P1` is the
+ reserved gap after InValue (16-bit: 2 bytes, 32-bit: none), the only place where the
+ layouts differ beyond the width.
+ */
+typedef struct FB_ENVELOPE_UDINT {
+  /*
+   Offset 0. SafeFunction: FALSE starts the monitored stop (active bit 0, required).
+   */
+  SL_BOOL bSafeFunction;
+  /*
+   Offset 1. Reserved, keep 0.
+   */
+  uint8_t aReserved0[15];
+  /*
+   Offset 16. FbRun of the owning group: TRUE = the block executes.
+   */
+  SL_BOOL bRun;
+  /*
+   Offset 17. ErrAck of the owning group.
+   */
+  SL_BOOL bErrAck;
+  /*
+   Offset 18. Reserved, keep 0.
+   */
+  uint8_t aReserved1[6];
+  /*
+   At the analog input base 24: InValue, the monitored value (active bit 8, required).
+   */
+  uint32_t nInValue;
+  /*
+   At 28: "Time after in Target (ms)", 0…65 535.
+   */
+  uint32_t tTimeAfterInTarget;
+  /*
+   At 32: "Max Time (ms)", 1…65 535.
+   */
+  uint32_t tMaxTime;
+  /*
+   At 36: "Target Value": the window −TargetValue…+TargetValue.
+   */
+  uint32_t nTargetValue;
+  /*
+   At 40: "Offset", added to |InValue| for the envelope's start.
+   */
+  uint32_t nOffset;
+  /*
+   At 44: bits 0 and 8 must be set (SL_ENVELOPE_ACTIVE).
+   */
+  uint16_t wInputActive;
+  /*
+   At 46. Reserved up to the output base.
+   */
+  uint8_t aReserved3[2];
+  /*
+   At the output base 48: Error, TRUE in ERROR only.
+   */
+  SL_BOOL bError;
+  /*
+   Output base + 1: SafeFunction Out, TRUE in RUN, DELAYOUT and MONITOR.
+   */
+  SL_BOOL bSafeFunctionOut;
+  /*
+   Reserved up to the info data.
+   */
+  uint8_t aReserved4[6];
+  /*
+   Info + 0 (56): the manual's status value.
+   */
+  uint8_t nState;
+  /*
+   Info + 1. Reserved.
+   */
+  uint8_t aReserved5[1];
+  /*
+   Info + 2: diag value (1 underflow, 2 overflow) + library bits 13-15.
+   */
+  uint16_t nDiag;
+  /*
+   Info + 4: Text ID of the latched diag message (0x40C8, 0x40C9), 0 = none.
+   */
+  uint16_t nDiagTextId;
+  /*
+   Info + 6. Reserved.
+   */
+  uint8_t aReserved6[2];
+  /*
+   Info + 8: message parameter 2 (InValue as a 32-bit pattern).
+   */
+  uint32_t dwDiagPar2;
+  /*
+   Info + 12: message parameter 3 (−E(t) for 0x40C8, +E(t) for 0x40C9).
+   */
+  uint32_t dwDiagPar3;
+  /*
+   Info + 16 (72): private state, 64 bytes: never write it.
+   */
+  struct SL_ENVELOPE_PRIVATE stPrivate;
+} FB_ENVELOPE_UDINT;
+
+
+/*
  Private state of FB COUNTER (56 bytes). Never written by the user.
  */
 typedef struct SL_COUNTER_PRIVATE {
@@ -8232,6 +9475,22 @@ int32_t sl_speed_dint_init(struct FB_SPEED_DINT *fb);
 int32_t sl_speed_dint_cycle(struct FB_SPEED_DINT *fb, uint32_t tNow);
 int32_t sl_speed_udint_init(struct FB_SPEED_UDINT *fb);
 int32_t sl_speed_udint_cycle(struct FB_SPEED_UDINT *fb, uint32_t tNow);
+int32_t sl_loadsensing_int_init(struct FB_LOADSENSING_INT *fb);
+int32_t sl_loadsensing_int_cycle(struct FB_LOADSENSING_INT *fb, uint32_t tNow);
+int32_t sl_loadsensing_uint_init(struct FB_LOADSENSING_UINT *fb);
+int32_t sl_loadsensing_uint_cycle(struct FB_LOADSENSING_UINT *fb, uint32_t tNow);
+int32_t sl_loadsensing_dint_init(struct FB_LOADSENSING_DINT *fb);
+int32_t sl_loadsensing_dint_cycle(struct FB_LOADSENSING_DINT *fb, uint32_t tNow);
+int32_t sl_loadsensing_udint_init(struct FB_LOADSENSING_UDINT *fb);
+int32_t sl_loadsensing_udint_cycle(struct FB_LOADSENSING_UDINT *fb, uint32_t tNow);
+int32_t sl_envelope_int_init(struct FB_ENVELOPE_INT *fb);
+int32_t sl_envelope_int_cycle(struct FB_ENVELOPE_INT *fb, uint32_t tNow);
+int32_t sl_envelope_uint_init(struct FB_ENVELOPE_UINT *fb);
+int32_t sl_envelope_uint_cycle(struct FB_ENVELOPE_UINT *fb, uint32_t tNow);
+int32_t sl_envelope_dint_init(struct FB_ENVELOPE_DINT *fb);
+int32_t sl_envelope_dint_cycle(struct FB_ENVELOPE_DINT *fb, uint32_t tNow);
+int32_t sl_envelope_udint_init(struct FB_ENVELOPE_UDINT *fb);
+int32_t sl_envelope_udint_cycle(struct FB_ENVELOPE_UDINT *fb, uint32_t tNow);
 int32_t sl_counter_int_init(struct FB_COUNTER_INT *fb);
 int32_t sl_counter_int_cycle(struct FB_COUNTER_INT *fb, uint32_t tNow);
 int32_t sl_counter_uint_init(struct FB_COUNTER_UINT *fb);
@@ -8428,6 +9687,56 @@ SL_STATIC_ASSERT(offsetof(FB_MON, nDiag) == 66, "offset of FB_MON.nDiag");
 SL_STATIC_ASSERT(offsetof(FB_MON, aReserved6) == 68, "offset of FB_MON.aReserved6");
 SL_STATIC_ASSERT(offsetof(FB_MON, stPrivate) == 72, "offset of FB_MON.stPrivate");
 SL_STATIC_ASSERT(sizeof(FB_MON) == 136, "size of FB_MON");
+SL_STATIC_ASSERT(offsetof(SL_LOADSENSING_ROW_INT, nX) == 0, "offset of SL_LOADSENSING_ROW_INT.nX");
+SL_STATIC_ASSERT(offsetof(SL_LOADSENSING_ROW_INT, nY1) == 2, "offset of SL_LOADSENSING_ROW_INT.nY1");
+SL_STATIC_ASSERT(offsetof(SL_LOADSENSING_ROW_INT, nY2) == 4, "offset of SL_LOADSENSING_ROW_INT.nY2");
+SL_STATIC_ASSERT(offsetof(SL_LOADSENSING_ROW_INT, nWY1) == 6, "offset of SL_LOADSENSING_ROW_INT.nWY1");
+SL_STATIC_ASSERT(offsetof(SL_LOADSENSING_ROW_INT, nWY2) == 8, "offset of SL_LOADSENSING_ROW_INT.nWY2");
+SL_STATIC_ASSERT(sizeof(SL_LOADSENSING_ROW_INT) == 10, "size of SL_LOADSENSING_ROW_INT");
+SL_STATIC_ASSERT(offsetof(SL_LOADSENSING_ROW_UINT, nX) == 0, "offset of SL_LOADSENSING_ROW_UINT.nX");
+SL_STATIC_ASSERT(offsetof(SL_LOADSENSING_ROW_UINT, nY1) == 2, "offset of SL_LOADSENSING_ROW_UINT.nY1");
+SL_STATIC_ASSERT(offsetof(SL_LOADSENSING_ROW_UINT, nY2) == 4, "offset of SL_LOADSENSING_ROW_UINT.nY2");
+SL_STATIC_ASSERT(offsetof(SL_LOADSENSING_ROW_UINT, nWY1) == 6, "offset of SL_LOADSENSING_ROW_UINT.nWY1");
+SL_STATIC_ASSERT(offsetof(SL_LOADSENSING_ROW_UINT, nWY2) == 8, "offset of SL_LOADSENSING_ROW_UINT.nWY2");
+SL_STATIC_ASSERT(sizeof(SL_LOADSENSING_ROW_UINT) == 10, "size of SL_LOADSENSING_ROW_UINT");
+SL_STATIC_ASSERT(offsetof(SL_LOADSENSING_ROW_DINT, nX) == 0, "offset of SL_LOADSENSING_ROW_DINT.nX");
+SL_STATIC_ASSERT(offsetof(SL_LOADSENSING_ROW_DINT, nY1) == 4, "offset of SL_LOADSENSING_ROW_DINT.nY1");
+SL_STATIC_ASSERT(offsetof(SL_LOADSENSING_ROW_DINT, nY2) == 8, "offset of SL_LOADSENSING_ROW_DINT.nY2");
+SL_STATIC_ASSERT(offsetof(SL_LOADSENSING_ROW_DINT, nWY1) == 12, "offset of SL_LOADSENSING_ROW_DINT.nWY1");
+SL_STATIC_ASSERT(offsetof(SL_LOADSENSING_ROW_DINT, nWY2) == 16, "offset of SL_LOADSENSING_ROW_DINT.nWY2");
+SL_STATIC_ASSERT(sizeof(SL_LOADSENSING_ROW_DINT) == 20, "size of SL_LOADSENSING_ROW_DINT");
+SL_STATIC_ASSERT(offsetof(SL_LOADSENSING_ROW_UDINT, nX) == 0, "offset of SL_LOADSENSING_ROW_UDINT.nX");
+SL_STATIC_ASSERT(offsetof(SL_LOADSENSING_ROW_UDINT, nY1) == 4, "offset of SL_LOADSENSING_ROW_UDINT.nY1");
+SL_STATIC_ASSERT(offsetof(SL_LOADSENSING_ROW_UDINT, nY2) == 8, "offset of SL_LOADSENSING_ROW_UDINT.nY2");
+SL_STATIC_ASSERT(offsetof(SL_LOADSENSING_ROW_UDINT, nWY1) == 12, "offset of SL_LOADSENSING_ROW_UDINT.nWY1");
+SL_STATIC_ASSERT(offsetof(SL_LOADSENSING_ROW_UDINT, nWY2) == 16, "offset of SL_LOADSENSING_ROW_UDINT.nWY2");
+SL_STATIC_ASSERT(sizeof(SL_LOADSENSING_ROW_UDINT) == 20, "size of SL_LOADSENSING_ROW_UDINT");
+SL_STATIC_ASSERT(offsetof(SL_LOADSENSING_PRIVATE_INT, stHeader) == 0, "offset of SL_LOADSENSING_PRIVATE_INT.stHeader");
+SL_STATIC_ASSERT(offsetof(SL_LOADSENSING_PRIVATE_INT, dwOptions) == 28, "offset of SL_LOADSENSING_PRIVATE_INT.dwOptions");
+SL_STATIC_ASSERT(offsetof(SL_LOADSENSING_PRIVATE_INT, nRowCount) == 32, "offset of SL_LOADSENSING_PRIVATE_INT.nRowCount");
+SL_STATIC_ASSERT(offsetof(SL_LOADSENSING_PRIVATE_INT, wActive) == 34, "offset of SL_LOADSENSING_PRIVATE_INT.wActive");
+SL_STATIC_ASSERT(offsetof(SL_LOADSENSING_PRIVATE_INT, aRow) == 36, "offset of SL_LOADSENSING_PRIVATE_INT.aRow");
+SL_STATIC_ASSERT(offsetof(SL_LOADSENSING_PRIVATE_INT, aReserved) == 286, "offset of SL_LOADSENSING_PRIVATE_INT.aReserved");
+SL_STATIC_ASSERT(sizeof(SL_LOADSENSING_PRIVATE_INT) == 288, "size of SL_LOADSENSING_PRIVATE_INT");
+SL_STATIC_ASSERT(offsetof(SL_LOADSENSING_PRIVATE_UINT, stHeader) == 0, "offset of SL_LOADSENSING_PRIVATE_UINT.stHeader");
+SL_STATIC_ASSERT(offsetof(SL_LOADSENSING_PRIVATE_UINT, dwOptions) == 28, "offset of SL_LOADSENSING_PRIVATE_UINT.dwOptions");
+SL_STATIC_ASSERT(offsetof(SL_LOADSENSING_PRIVATE_UINT, nRowCount) == 32, "offset of SL_LOADSENSING_PRIVATE_UINT.nRowCount");
+SL_STATIC_ASSERT(offsetof(SL_LOADSENSING_PRIVATE_UINT, wActive) == 34, "offset of SL_LOADSENSING_PRIVATE_UINT.wActive");
+SL_STATIC_ASSERT(offsetof(SL_LOADSENSING_PRIVATE_UINT, aRow) == 36, "offset of SL_LOADSENSING_PRIVATE_UINT.aRow");
+SL_STATIC_ASSERT(offsetof(SL_LOADSENSING_PRIVATE_UINT, aReserved) == 286, "offset of SL_LOADSENSING_PRIVATE_UINT.aReserved");
+SL_STATIC_ASSERT(sizeof(SL_LOADSENSING_PRIVATE_UINT) == 288, "size of SL_LOADSENSING_PRIVATE_UINT");
+SL_STATIC_ASSERT(offsetof(SL_LOADSENSING_PRIVATE_DINT, stHeader) == 0, "offset of SL_LOADSENSING_PRIVATE_DINT.stHeader");
+SL_STATIC_ASSERT(offsetof(SL_LOADSENSING_PRIVATE_DINT, dwOptions) == 28, "offset of SL_LOADSENSING_PRIVATE_DINT.dwOptions");
+SL_STATIC_ASSERT(offsetof(SL_LOADSENSING_PRIVATE_DINT, nRowCount) == 32, "offset of SL_LOADSENSING_PRIVATE_DINT.nRowCount");
+SL_STATIC_ASSERT(offsetof(SL_LOADSENSING_PRIVATE_DINT, wActive) == 34, "offset of SL_LOADSENSING_PRIVATE_DINT.wActive");
+SL_STATIC_ASSERT(offsetof(SL_LOADSENSING_PRIVATE_DINT, aRow) == 36, "offset of SL_LOADSENSING_PRIVATE_DINT.aRow");
+SL_STATIC_ASSERT(sizeof(SL_LOADSENSING_PRIVATE_DINT) == 536, "size of SL_LOADSENSING_PRIVATE_DINT");
+SL_STATIC_ASSERT(offsetof(SL_LOADSENSING_PRIVATE_UDINT, stHeader) == 0, "offset of SL_LOADSENSING_PRIVATE_UDINT.stHeader");
+SL_STATIC_ASSERT(offsetof(SL_LOADSENSING_PRIVATE_UDINT, dwOptions) == 28, "offset of SL_LOADSENSING_PRIVATE_UDINT.dwOptions");
+SL_STATIC_ASSERT(offsetof(SL_LOADSENSING_PRIVATE_UDINT, nRowCount) == 32, "offset of SL_LOADSENSING_PRIVATE_UDINT.nRowCount");
+SL_STATIC_ASSERT(offsetof(SL_LOADSENSING_PRIVATE_UDINT, wActive) == 34, "offset of SL_LOADSENSING_PRIVATE_UDINT.wActive");
+SL_STATIC_ASSERT(offsetof(SL_LOADSENSING_PRIVATE_UDINT, aRow) == 36, "offset of SL_LOADSENSING_PRIVATE_UDINT.aRow");
+SL_STATIC_ASSERT(sizeof(SL_LOADSENSING_PRIVATE_UDINT) == 536, "size of SL_LOADSENSING_PRIVATE_UDINT");
 SL_STATIC_ASSERT(offsetof(SL_LOGIC_PRIVATE, stHeader) == 0, "offset of SL_LOGIC_PRIVATE.stHeader");
 SL_STATIC_ASSERT(offsetof(SL_LOGIC_PRIVATE, aReserved) == 28, "offset of SL_LOGIC_PRIVATE.aReserved");
 SL_STATIC_ASSERT(sizeof(SL_LOGIC_PRIVATE) == 32, "size of SL_LOGIC_PRIVATE");
@@ -9545,6 +10854,216 @@ SL_STATIC_ASSERT(offsetof(FB_SPEED_UDINT, dwDiagPar2) == 64, "offset of FB_SPEED
 SL_STATIC_ASSERT(offsetof(FB_SPEED_UDINT, dwDiagPar3) == 68, "offset of FB_SPEED_UDINT.dwDiagPar3");
 SL_STATIC_ASSERT(offsetof(FB_SPEED_UDINT, stPrivate) == 72, "offset of FB_SPEED_UDINT.stPrivate");
 SL_STATIC_ASSERT(sizeof(FB_SPEED_UDINT) == 128, "size of FB_SPEED_UDINT");
+SL_STATIC_ASSERT(offsetof(FB_LOADSENSING_INT, aReserved0) == 0, "offset of FB_LOADSENSING_INT.aReserved0");
+SL_STATIC_ASSERT(offsetof(FB_LOADSENSING_INT, bInactive) == 6, "offset of FB_LOADSENSING_INT.bInactive");
+SL_STATIC_ASSERT(offsetof(FB_LOADSENSING_INT, aReserved1) == 7, "offset of FB_LOADSENSING_INT.aReserved1");
+SL_STATIC_ASSERT(offsetof(FB_LOADSENSING_INT, bRun) == 16, "offset of FB_LOADSENSING_INT.bRun");
+SL_STATIC_ASSERT(offsetof(FB_LOADSENSING_INT, bErrAck) == 17, "offset of FB_LOADSENSING_INT.bErrAck");
+SL_STATIC_ASSERT(offsetof(FB_LOADSENSING_INT, aReserved2) == 18, "offset of FB_LOADSENSING_INT.aReserved2");
+SL_STATIC_ASSERT(offsetof(FB_LOADSENSING_INT, nAnalogInX) == 24, "offset of FB_LOADSENSING_INT.nAnalogInX");
+SL_STATIC_ASSERT(offsetof(FB_LOADSENSING_INT, nAnalogInY) == 26, "offset of FB_LOADSENSING_INT.nAnalogInY");
+SL_STATIC_ASSERT(offsetof(FB_LOADSENSING_INT, dwOptions) == 28, "offset of FB_LOADSENSING_INT.dwOptions");
+SL_STATIC_ASSERT(offsetof(FB_LOADSENSING_INT, aRow) == 32, "offset of FB_LOADSENSING_INT.aRow");
+SL_STATIC_ASSERT(offsetof(FB_LOADSENSING_INT, nRowCount) == 282, "offset of FB_LOADSENSING_INT.nRowCount");
+SL_STATIC_ASSERT(offsetof(FB_LOADSENSING_INT, wInputActive) == 284, "offset of FB_LOADSENSING_INT.wInputActive");
+SL_STATIC_ASSERT(offsetof(FB_LOADSENSING_INT, aReserved3) == 286, "offset of FB_LOADSENSING_INT.aReserved3");
+SL_STATIC_ASSERT(offsetof(FB_LOADSENSING_INT, aReserved4) == 288, "offset of FB_LOADSENSING_INT.aReserved4");
+SL_STATIC_ASSERT(offsetof(FB_LOADSENSING_INT, bValid) == 289, "offset of FB_LOADSENSING_INT.bValid");
+SL_STATIC_ASSERT(offsetof(FB_LOADSENSING_INT, bWarning) == 290, "offset of FB_LOADSENSING_INT.bWarning");
+SL_STATIC_ASSERT(offsetof(FB_LOADSENSING_INT, aReserved5) == 291, "offset of FB_LOADSENSING_INT.aReserved5");
+SL_STATIC_ASSERT(offsetof(FB_LOADSENSING_INT, nState) == 296, "offset of FB_LOADSENSING_INT.nState");
+SL_STATIC_ASSERT(offsetof(FB_LOADSENSING_INT, aReserved6) == 297, "offset of FB_LOADSENSING_INT.aReserved6");
+SL_STATIC_ASSERT(offsetof(FB_LOADSENSING_INT, nDiag) == 298, "offset of FB_LOADSENSING_INT.nDiag");
+SL_STATIC_ASSERT(offsetof(FB_LOADSENSING_INT, nDiagTextId) == 300, "offset of FB_LOADSENSING_INT.nDiagTextId");
+SL_STATIC_ASSERT(offsetof(FB_LOADSENSING_INT, aReserved7) == 302, "offset of FB_LOADSENSING_INT.aReserved7");
+SL_STATIC_ASSERT(offsetof(FB_LOADSENSING_INT, dwDiagPar2) == 304, "offset of FB_LOADSENSING_INT.dwDiagPar2");
+SL_STATIC_ASSERT(offsetof(FB_LOADSENSING_INT, dwDiagPar3) == 308, "offset of FB_LOADSENSING_INT.dwDiagPar3");
+SL_STATIC_ASSERT(offsetof(FB_LOADSENSING_INT, stPrivate) == 312, "offset of FB_LOADSENSING_INT.stPrivate");
+SL_STATIC_ASSERT(sizeof(FB_LOADSENSING_INT) == 600, "size of FB_LOADSENSING_INT");
+SL_STATIC_ASSERT(offsetof(FB_LOADSENSING_UINT, aReserved0) == 0, "offset of FB_LOADSENSING_UINT.aReserved0");
+SL_STATIC_ASSERT(offsetof(FB_LOADSENSING_UINT, bInactive) == 6, "offset of FB_LOADSENSING_UINT.bInactive");
+SL_STATIC_ASSERT(offsetof(FB_LOADSENSING_UINT, aReserved1) == 7, "offset of FB_LOADSENSING_UINT.aReserved1");
+SL_STATIC_ASSERT(offsetof(FB_LOADSENSING_UINT, bRun) == 16, "offset of FB_LOADSENSING_UINT.bRun");
+SL_STATIC_ASSERT(offsetof(FB_LOADSENSING_UINT, bErrAck) == 17, "offset of FB_LOADSENSING_UINT.bErrAck");
+SL_STATIC_ASSERT(offsetof(FB_LOADSENSING_UINT, aReserved2) == 18, "offset of FB_LOADSENSING_UINT.aReserved2");
+SL_STATIC_ASSERT(offsetof(FB_LOADSENSING_UINT, nAnalogInX) == 24, "offset of FB_LOADSENSING_UINT.nAnalogInX");
+SL_STATIC_ASSERT(offsetof(FB_LOADSENSING_UINT, nAnalogInY) == 26, "offset of FB_LOADSENSING_UINT.nAnalogInY");
+SL_STATIC_ASSERT(offsetof(FB_LOADSENSING_UINT, dwOptions) == 28, "offset of FB_LOADSENSING_UINT.dwOptions");
+SL_STATIC_ASSERT(offsetof(FB_LOADSENSING_UINT, aRow) == 32, "offset of FB_LOADSENSING_UINT.aRow");
+SL_STATIC_ASSERT(offsetof(FB_LOADSENSING_UINT, nRowCount) == 282, "offset of FB_LOADSENSING_UINT.nRowCount");
+SL_STATIC_ASSERT(offsetof(FB_LOADSENSING_UINT, wInputActive) == 284, "offset of FB_LOADSENSING_UINT.wInputActive");
+SL_STATIC_ASSERT(offsetof(FB_LOADSENSING_UINT, aReserved3) == 286, "offset of FB_LOADSENSING_UINT.aReserved3");
+SL_STATIC_ASSERT(offsetof(FB_LOADSENSING_UINT, aReserved4) == 288, "offset of FB_LOADSENSING_UINT.aReserved4");
+SL_STATIC_ASSERT(offsetof(FB_LOADSENSING_UINT, bValid) == 289, "offset of FB_LOADSENSING_UINT.bValid");
+SL_STATIC_ASSERT(offsetof(FB_LOADSENSING_UINT, bWarning) == 290, "offset of FB_LOADSENSING_UINT.bWarning");
+SL_STATIC_ASSERT(offsetof(FB_LOADSENSING_UINT, aReserved5) == 291, "offset of FB_LOADSENSING_UINT.aReserved5");
+SL_STATIC_ASSERT(offsetof(FB_LOADSENSING_UINT, nState) == 296, "offset of FB_LOADSENSING_UINT.nState");
+SL_STATIC_ASSERT(offsetof(FB_LOADSENSING_UINT, aReserved6) == 297, "offset of FB_LOADSENSING_UINT.aReserved6");
+SL_STATIC_ASSERT(offsetof(FB_LOADSENSING_UINT, nDiag) == 298, "offset of FB_LOADSENSING_UINT.nDiag");
+SL_STATIC_ASSERT(offsetof(FB_LOADSENSING_UINT, nDiagTextId) == 300, "offset of FB_LOADSENSING_UINT.nDiagTextId");
+SL_STATIC_ASSERT(offsetof(FB_LOADSENSING_UINT, aReserved7) == 302, "offset of FB_LOADSENSING_UINT.aReserved7");
+SL_STATIC_ASSERT(offsetof(FB_LOADSENSING_UINT, dwDiagPar2) == 304, "offset of FB_LOADSENSING_UINT.dwDiagPar2");
+SL_STATIC_ASSERT(offsetof(FB_LOADSENSING_UINT, dwDiagPar3) == 308, "offset of FB_LOADSENSING_UINT.dwDiagPar3");
+SL_STATIC_ASSERT(offsetof(FB_LOADSENSING_UINT, stPrivate) == 312, "offset of FB_LOADSENSING_UINT.stPrivate");
+SL_STATIC_ASSERT(sizeof(FB_LOADSENSING_UINT) == 600, "size of FB_LOADSENSING_UINT");
+SL_STATIC_ASSERT(offsetof(FB_LOADSENSING_DINT, aReserved0) == 0, "offset of FB_LOADSENSING_DINT.aReserved0");
+SL_STATIC_ASSERT(offsetof(FB_LOADSENSING_DINT, bInactive) == 6, "offset of FB_LOADSENSING_DINT.bInactive");
+SL_STATIC_ASSERT(offsetof(FB_LOADSENSING_DINT, aReserved1) == 7, "offset of FB_LOADSENSING_DINT.aReserved1");
+SL_STATIC_ASSERT(offsetof(FB_LOADSENSING_DINT, bRun) == 16, "offset of FB_LOADSENSING_DINT.bRun");
+SL_STATIC_ASSERT(offsetof(FB_LOADSENSING_DINT, bErrAck) == 17, "offset of FB_LOADSENSING_DINT.bErrAck");
+SL_STATIC_ASSERT(offsetof(FB_LOADSENSING_DINT, aReserved2) == 18, "offset of FB_LOADSENSING_DINT.aReserved2");
+SL_STATIC_ASSERT(offsetof(FB_LOADSENSING_DINT, nAnalogInX) == 24, "offset of FB_LOADSENSING_DINT.nAnalogInX");
+SL_STATIC_ASSERT(offsetof(FB_LOADSENSING_DINT, nAnalogInY) == 28, "offset of FB_LOADSENSING_DINT.nAnalogInY");
+SL_STATIC_ASSERT(offsetof(FB_LOADSENSING_DINT, dwOptions) == 32, "offset of FB_LOADSENSING_DINT.dwOptions");
+SL_STATIC_ASSERT(offsetof(FB_LOADSENSING_DINT, aRow) == 36, "offset of FB_LOADSENSING_DINT.aRow");
+SL_STATIC_ASSERT(offsetof(FB_LOADSENSING_DINT, nRowCount) == 536, "offset of FB_LOADSENSING_DINT.nRowCount");
+SL_STATIC_ASSERT(offsetof(FB_LOADSENSING_DINT, wInputActive) == 538, "offset of FB_LOADSENSING_DINT.wInputActive");
+SL_STATIC_ASSERT(offsetof(FB_LOADSENSING_DINT, aReserved3) == 540, "offset of FB_LOADSENSING_DINT.aReserved3");
+SL_STATIC_ASSERT(offsetof(FB_LOADSENSING_DINT, aReserved4) == 544, "offset of FB_LOADSENSING_DINT.aReserved4");
+SL_STATIC_ASSERT(offsetof(FB_LOADSENSING_DINT, bValid) == 545, "offset of FB_LOADSENSING_DINT.bValid");
+SL_STATIC_ASSERT(offsetof(FB_LOADSENSING_DINT, bWarning) == 546, "offset of FB_LOADSENSING_DINT.bWarning");
+SL_STATIC_ASSERT(offsetof(FB_LOADSENSING_DINT, aReserved5) == 547, "offset of FB_LOADSENSING_DINT.aReserved5");
+SL_STATIC_ASSERT(offsetof(FB_LOADSENSING_DINT, nState) == 552, "offset of FB_LOADSENSING_DINT.nState");
+SL_STATIC_ASSERT(offsetof(FB_LOADSENSING_DINT, aReserved6) == 553, "offset of FB_LOADSENSING_DINT.aReserved6");
+SL_STATIC_ASSERT(offsetof(FB_LOADSENSING_DINT, nDiag) == 554, "offset of FB_LOADSENSING_DINT.nDiag");
+SL_STATIC_ASSERT(offsetof(FB_LOADSENSING_DINT, nDiagTextId) == 556, "offset of FB_LOADSENSING_DINT.nDiagTextId");
+SL_STATIC_ASSERT(offsetof(FB_LOADSENSING_DINT, aReserved7) == 558, "offset of FB_LOADSENSING_DINT.aReserved7");
+SL_STATIC_ASSERT(offsetof(FB_LOADSENSING_DINT, dwDiagPar2) == 560, "offset of FB_LOADSENSING_DINT.dwDiagPar2");
+SL_STATIC_ASSERT(offsetof(FB_LOADSENSING_DINT, dwDiagPar3) == 564, "offset of FB_LOADSENSING_DINT.dwDiagPar3");
+SL_STATIC_ASSERT(offsetof(FB_LOADSENSING_DINT, stPrivate) == 568, "offset of FB_LOADSENSING_DINT.stPrivate");
+SL_STATIC_ASSERT(sizeof(FB_LOADSENSING_DINT) == 1104, "size of FB_LOADSENSING_DINT");
+SL_STATIC_ASSERT(offsetof(FB_LOADSENSING_UDINT, aReserved0) == 0, "offset of FB_LOADSENSING_UDINT.aReserved0");
+SL_STATIC_ASSERT(offsetof(FB_LOADSENSING_UDINT, bInactive) == 6, "offset of FB_LOADSENSING_UDINT.bInactive");
+SL_STATIC_ASSERT(offsetof(FB_LOADSENSING_UDINT, aReserved1) == 7, "offset of FB_LOADSENSING_UDINT.aReserved1");
+SL_STATIC_ASSERT(offsetof(FB_LOADSENSING_UDINT, bRun) == 16, "offset of FB_LOADSENSING_UDINT.bRun");
+SL_STATIC_ASSERT(offsetof(FB_LOADSENSING_UDINT, bErrAck) == 17, "offset of FB_LOADSENSING_UDINT.bErrAck");
+SL_STATIC_ASSERT(offsetof(FB_LOADSENSING_UDINT, aReserved2) == 18, "offset of FB_LOADSENSING_UDINT.aReserved2");
+SL_STATIC_ASSERT(offsetof(FB_LOADSENSING_UDINT, nAnalogInX) == 24, "offset of FB_LOADSENSING_UDINT.nAnalogInX");
+SL_STATIC_ASSERT(offsetof(FB_LOADSENSING_UDINT, nAnalogInY) == 28, "offset of FB_LOADSENSING_UDINT.nAnalogInY");
+SL_STATIC_ASSERT(offsetof(FB_LOADSENSING_UDINT, dwOptions) == 32, "offset of FB_LOADSENSING_UDINT.dwOptions");
+SL_STATIC_ASSERT(offsetof(FB_LOADSENSING_UDINT, aRow) == 36, "offset of FB_LOADSENSING_UDINT.aRow");
+SL_STATIC_ASSERT(offsetof(FB_LOADSENSING_UDINT, nRowCount) == 536, "offset of FB_LOADSENSING_UDINT.nRowCount");
+SL_STATIC_ASSERT(offsetof(FB_LOADSENSING_UDINT, wInputActive) == 538, "offset of FB_LOADSENSING_UDINT.wInputActive");
+SL_STATIC_ASSERT(offsetof(FB_LOADSENSING_UDINT, aReserved3) == 540, "offset of FB_LOADSENSING_UDINT.aReserved3");
+SL_STATIC_ASSERT(offsetof(FB_LOADSENSING_UDINT, aReserved4) == 544, "offset of FB_LOADSENSING_UDINT.aReserved4");
+SL_STATIC_ASSERT(offsetof(FB_LOADSENSING_UDINT, bValid) == 545, "offset of FB_LOADSENSING_UDINT.bValid");
+SL_STATIC_ASSERT(offsetof(FB_LOADSENSING_UDINT, bWarning) == 546, "offset of FB_LOADSENSING_UDINT.bWarning");
+SL_STATIC_ASSERT(offsetof(FB_LOADSENSING_UDINT, aReserved5) == 547, "offset of FB_LOADSENSING_UDINT.aReserved5");
+SL_STATIC_ASSERT(offsetof(FB_LOADSENSING_UDINT, nState) == 552, "offset of FB_LOADSENSING_UDINT.nState");
+SL_STATIC_ASSERT(offsetof(FB_LOADSENSING_UDINT, aReserved6) == 553, "offset of FB_LOADSENSING_UDINT.aReserved6");
+SL_STATIC_ASSERT(offsetof(FB_LOADSENSING_UDINT, nDiag) == 554, "offset of FB_LOADSENSING_UDINT.nDiag");
+SL_STATIC_ASSERT(offsetof(FB_LOADSENSING_UDINT, nDiagTextId) == 556, "offset of FB_LOADSENSING_UDINT.nDiagTextId");
+SL_STATIC_ASSERT(offsetof(FB_LOADSENSING_UDINT, aReserved7) == 558, "offset of FB_LOADSENSING_UDINT.aReserved7");
+SL_STATIC_ASSERT(offsetof(FB_LOADSENSING_UDINT, dwDiagPar2) == 560, "offset of FB_LOADSENSING_UDINT.dwDiagPar2");
+SL_STATIC_ASSERT(offsetof(FB_LOADSENSING_UDINT, dwDiagPar3) == 564, "offset of FB_LOADSENSING_UDINT.dwDiagPar3");
+SL_STATIC_ASSERT(offsetof(FB_LOADSENSING_UDINT, stPrivate) == 568, "offset of FB_LOADSENSING_UDINT.stPrivate");
+SL_STATIC_ASSERT(sizeof(FB_LOADSENSING_UDINT) == 1104, "size of FB_LOADSENSING_UDINT");
+SL_STATIC_ASSERT(offsetof(SL_ENVELOPE_PRIVATE, stHeader) == 0, "offset of SL_ENVELOPE_PRIVATE.stHeader");
+SL_STATIC_ASSERT(offsetof(SL_ENVELOPE_PRIVATE, adwParam) == 28, "offset of SL_ENVELOPE_PRIVATE.adwParam");
+SL_STATIC_ASSERT(offsetof(SL_ENVELOPE_PRIVATE, dwInValueLatch) == 44, "offset of SL_ENVELOPE_PRIVATE.dwInValueLatch");
+SL_STATIC_ASSERT(offsetof(SL_ENVELOPE_PRIVATE, tInTarget) == 48, "offset of SL_ENVELOPE_PRIVATE.tInTarget");
+SL_STATIC_ASSERT(offsetof(SL_ENVELOPE_PRIVATE, adwPar) == 52, "offset of SL_ENVELOPE_PRIVATE.adwPar");
+SL_STATIC_ASSERT(offsetof(SL_ENVELOPE_PRIVATE, wActive) == 60, "offset of SL_ENVELOPE_PRIVATE.wActive");
+SL_STATIC_ASSERT(offsetof(SL_ENVELOPE_PRIVATE, aReserved) == 62, "offset of SL_ENVELOPE_PRIVATE.aReserved");
+SL_STATIC_ASSERT(sizeof(SL_ENVELOPE_PRIVATE) == 64, "size of SL_ENVELOPE_PRIVATE");
+SL_STATIC_ASSERT(offsetof(FB_ENVELOPE_INT, bSafeFunction) == 0, "offset of FB_ENVELOPE_INT.bSafeFunction");
+SL_STATIC_ASSERT(offsetof(FB_ENVELOPE_INT, aReserved0) == 1, "offset of FB_ENVELOPE_INT.aReserved0");
+SL_STATIC_ASSERT(offsetof(FB_ENVELOPE_INT, bRun) == 16, "offset of FB_ENVELOPE_INT.bRun");
+SL_STATIC_ASSERT(offsetof(FB_ENVELOPE_INT, bErrAck) == 17, "offset of FB_ENVELOPE_INT.bErrAck");
+SL_STATIC_ASSERT(offsetof(FB_ENVELOPE_INT, aReserved1) == 18, "offset of FB_ENVELOPE_INT.aReserved1");
+SL_STATIC_ASSERT(offsetof(FB_ENVELOPE_INT, nInValue) == 24, "offset of FB_ENVELOPE_INT.nInValue");
+SL_STATIC_ASSERT(offsetof(FB_ENVELOPE_INT, aReserved2) == 26, "offset of FB_ENVELOPE_INT.aReserved2");
+SL_STATIC_ASSERT(offsetof(FB_ENVELOPE_INT, tTimeAfterInTarget) == 28, "offset of FB_ENVELOPE_INT.tTimeAfterInTarget");
+SL_STATIC_ASSERT(offsetof(FB_ENVELOPE_INT, tMaxTime) == 32, "offset of FB_ENVELOPE_INT.tMaxTime");
+SL_STATIC_ASSERT(offsetof(FB_ENVELOPE_INT, nTargetValue) == 36, "offset of FB_ENVELOPE_INT.nTargetValue");
+SL_STATIC_ASSERT(offsetof(FB_ENVELOPE_INT, nOffset) == 40, "offset of FB_ENVELOPE_INT.nOffset");
+SL_STATIC_ASSERT(offsetof(FB_ENVELOPE_INT, wInputActive) == 44, "offset of FB_ENVELOPE_INT.wInputActive");
+SL_STATIC_ASSERT(offsetof(FB_ENVELOPE_INT, aReserved3) == 46, "offset of FB_ENVELOPE_INT.aReserved3");
+SL_STATIC_ASSERT(offsetof(FB_ENVELOPE_INT, bError) == 48, "offset of FB_ENVELOPE_INT.bError");
+SL_STATIC_ASSERT(offsetof(FB_ENVELOPE_INT, bSafeFunctionOut) == 49, "offset of FB_ENVELOPE_INT.bSafeFunctionOut");
+SL_STATIC_ASSERT(offsetof(FB_ENVELOPE_INT, aReserved4) == 50, "offset of FB_ENVELOPE_INT.aReserved4");
+SL_STATIC_ASSERT(offsetof(FB_ENVELOPE_INT, nState) == 56, "offset of FB_ENVELOPE_INT.nState");
+SL_STATIC_ASSERT(offsetof(FB_ENVELOPE_INT, aReserved5) == 57, "offset of FB_ENVELOPE_INT.aReserved5");
+SL_STATIC_ASSERT(offsetof(FB_ENVELOPE_INT, nDiag) == 58, "offset of FB_ENVELOPE_INT.nDiag");
+SL_STATIC_ASSERT(offsetof(FB_ENVELOPE_INT, nDiagTextId) == 60, "offset of FB_ENVELOPE_INT.nDiagTextId");
+SL_STATIC_ASSERT(offsetof(FB_ENVELOPE_INT, aReserved6) == 62, "offset of FB_ENVELOPE_INT.aReserved6");
+SL_STATIC_ASSERT(offsetof(FB_ENVELOPE_INT, dwDiagPar2) == 64, "offset of FB_ENVELOPE_INT.dwDiagPar2");
+SL_STATIC_ASSERT(offsetof(FB_ENVELOPE_INT, dwDiagPar3) == 68, "offset of FB_ENVELOPE_INT.dwDiagPar3");
+SL_STATIC_ASSERT(offsetof(FB_ENVELOPE_INT, stPrivate) == 72, "offset of FB_ENVELOPE_INT.stPrivate");
+SL_STATIC_ASSERT(sizeof(FB_ENVELOPE_INT) == 136, "size of FB_ENVELOPE_INT");
+SL_STATIC_ASSERT(offsetof(FB_ENVELOPE_UINT, bSafeFunction) == 0, "offset of FB_ENVELOPE_UINT.bSafeFunction");
+SL_STATIC_ASSERT(offsetof(FB_ENVELOPE_UINT, aReserved0) == 1, "offset of FB_ENVELOPE_UINT.aReserved0");
+SL_STATIC_ASSERT(offsetof(FB_ENVELOPE_UINT, bRun) == 16, "offset of FB_ENVELOPE_UINT.bRun");
+SL_STATIC_ASSERT(offsetof(FB_ENVELOPE_UINT, bErrAck) == 17, "offset of FB_ENVELOPE_UINT.bErrAck");
+SL_STATIC_ASSERT(offsetof(FB_ENVELOPE_UINT, aReserved1) == 18, "offset of FB_ENVELOPE_UINT.aReserved1");
+SL_STATIC_ASSERT(offsetof(FB_ENVELOPE_UINT, nInValue) == 24, "offset of FB_ENVELOPE_UINT.nInValue");
+SL_STATIC_ASSERT(offsetof(FB_ENVELOPE_UINT, aReserved2) == 26, "offset of FB_ENVELOPE_UINT.aReserved2");
+SL_STATIC_ASSERT(offsetof(FB_ENVELOPE_UINT, tTimeAfterInTarget) == 28, "offset of FB_ENVELOPE_UINT.tTimeAfterInTarget");
+SL_STATIC_ASSERT(offsetof(FB_ENVELOPE_UINT, tMaxTime) == 32, "offset of FB_ENVELOPE_UINT.tMaxTime");
+SL_STATIC_ASSERT(offsetof(FB_ENVELOPE_UINT, nTargetValue) == 36, "offset of FB_ENVELOPE_UINT.nTargetValue");
+SL_STATIC_ASSERT(offsetof(FB_ENVELOPE_UINT, nOffset) == 40, "offset of FB_ENVELOPE_UINT.nOffset");
+SL_STATIC_ASSERT(offsetof(FB_ENVELOPE_UINT, wInputActive) == 44, "offset of FB_ENVELOPE_UINT.wInputActive");
+SL_STATIC_ASSERT(offsetof(FB_ENVELOPE_UINT, aReserved3) == 46, "offset of FB_ENVELOPE_UINT.aReserved3");
+SL_STATIC_ASSERT(offsetof(FB_ENVELOPE_UINT, bError) == 48, "offset of FB_ENVELOPE_UINT.bError");
+SL_STATIC_ASSERT(offsetof(FB_ENVELOPE_UINT, bSafeFunctionOut) == 49, "offset of FB_ENVELOPE_UINT.bSafeFunctionOut");
+SL_STATIC_ASSERT(offsetof(FB_ENVELOPE_UINT, aReserved4) == 50, "offset of FB_ENVELOPE_UINT.aReserved4");
+SL_STATIC_ASSERT(offsetof(FB_ENVELOPE_UINT, nState) == 56, "offset of FB_ENVELOPE_UINT.nState");
+SL_STATIC_ASSERT(offsetof(FB_ENVELOPE_UINT, aReserved5) == 57, "offset of FB_ENVELOPE_UINT.aReserved5");
+SL_STATIC_ASSERT(offsetof(FB_ENVELOPE_UINT, nDiag) == 58, "offset of FB_ENVELOPE_UINT.nDiag");
+SL_STATIC_ASSERT(offsetof(FB_ENVELOPE_UINT, nDiagTextId) == 60, "offset of FB_ENVELOPE_UINT.nDiagTextId");
+SL_STATIC_ASSERT(offsetof(FB_ENVELOPE_UINT, aReserved6) == 62, "offset of FB_ENVELOPE_UINT.aReserved6");
+SL_STATIC_ASSERT(offsetof(FB_ENVELOPE_UINT, dwDiagPar2) == 64, "offset of FB_ENVELOPE_UINT.dwDiagPar2");
+SL_STATIC_ASSERT(offsetof(FB_ENVELOPE_UINT, dwDiagPar3) == 68, "offset of FB_ENVELOPE_UINT.dwDiagPar3");
+SL_STATIC_ASSERT(offsetof(FB_ENVELOPE_UINT, stPrivate) == 72, "offset of FB_ENVELOPE_UINT.stPrivate");
+SL_STATIC_ASSERT(sizeof(FB_ENVELOPE_UINT) == 136, "size of FB_ENVELOPE_UINT");
+SL_STATIC_ASSERT(offsetof(FB_ENVELOPE_DINT, bSafeFunction) == 0, "offset of FB_ENVELOPE_DINT.bSafeFunction");
+SL_STATIC_ASSERT(offsetof(FB_ENVELOPE_DINT, aReserved0) == 1, "offset of FB_ENVELOPE_DINT.aReserved0");
+SL_STATIC_ASSERT(offsetof(FB_ENVELOPE_DINT, bRun) == 16, "offset of FB_ENVELOPE_DINT.bRun");
+SL_STATIC_ASSERT(offsetof(FB_ENVELOPE_DINT, bErrAck) == 17, "offset of FB_ENVELOPE_DINT.bErrAck");
+SL_STATIC_ASSERT(offsetof(FB_ENVELOPE_DINT, aReserved1) == 18, "offset of FB_ENVELOPE_DINT.aReserved1");
+SL_STATIC_ASSERT(offsetof(FB_ENVELOPE_DINT, nInValue) == 24, "offset of FB_ENVELOPE_DINT.nInValue");
+SL_STATIC_ASSERT(offsetof(FB_ENVELOPE_DINT, tTimeAfterInTarget) == 28, "offset of FB_ENVELOPE_DINT.tTimeAfterInTarget");
+SL_STATIC_ASSERT(offsetof(FB_ENVELOPE_DINT, tMaxTime) == 32, "offset of FB_ENVELOPE_DINT.tMaxTime");
+SL_STATIC_ASSERT(offsetof(FB_ENVELOPE_DINT, nTargetValue) == 36, "offset of FB_ENVELOPE_DINT.nTargetValue");
+SL_STATIC_ASSERT(offsetof(FB_ENVELOPE_DINT, nOffset) == 40, "offset of FB_ENVELOPE_DINT.nOffset");
+SL_STATIC_ASSERT(offsetof(FB_ENVELOPE_DINT, wInputActive) == 44, "offset of FB_ENVELOPE_DINT.wInputActive");
+SL_STATIC_ASSERT(offsetof(FB_ENVELOPE_DINT, aReserved3) == 46, "offset of FB_ENVELOPE_DINT.aReserved3");
+SL_STATIC_ASSERT(offsetof(FB_ENVELOPE_DINT, bError) == 48, "offset of FB_ENVELOPE_DINT.bError");
+SL_STATIC_ASSERT(offsetof(FB_ENVELOPE_DINT, bSafeFunctionOut) == 49, "offset of FB_ENVELOPE_DINT.bSafeFunctionOut");
+SL_STATIC_ASSERT(offsetof(FB_ENVELOPE_DINT, aReserved4) == 50, "offset of FB_ENVELOPE_DINT.aReserved4");
+SL_STATIC_ASSERT(offsetof(FB_ENVELOPE_DINT, nState) == 56, "offset of FB_ENVELOPE_DINT.nState");
+SL_STATIC_ASSERT(offsetof(FB_ENVELOPE_DINT, aReserved5) == 57, "offset of FB_ENVELOPE_DINT.aReserved5");
+SL_STATIC_ASSERT(offsetof(FB_ENVELOPE_DINT, nDiag) == 58, "offset of FB_ENVELOPE_DINT.nDiag");
+SL_STATIC_ASSERT(offsetof(FB_ENVELOPE_DINT, nDiagTextId) == 60, "offset of FB_ENVELOPE_DINT.nDiagTextId");
+SL_STATIC_ASSERT(offsetof(FB_ENVELOPE_DINT, aReserved6) == 62, "offset of FB_ENVELOPE_DINT.aReserved6");
+SL_STATIC_ASSERT(offsetof(FB_ENVELOPE_DINT, dwDiagPar2) == 64, "offset of FB_ENVELOPE_DINT.dwDiagPar2");
+SL_STATIC_ASSERT(offsetof(FB_ENVELOPE_DINT, dwDiagPar3) == 68, "offset of FB_ENVELOPE_DINT.dwDiagPar3");
+SL_STATIC_ASSERT(offsetof(FB_ENVELOPE_DINT, stPrivate) == 72, "offset of FB_ENVELOPE_DINT.stPrivate");
+SL_STATIC_ASSERT(sizeof(FB_ENVELOPE_DINT) == 136, "size of FB_ENVELOPE_DINT");
+SL_STATIC_ASSERT(offsetof(FB_ENVELOPE_UDINT, bSafeFunction) == 0, "offset of FB_ENVELOPE_UDINT.bSafeFunction");
+SL_STATIC_ASSERT(offsetof(FB_ENVELOPE_UDINT, aReserved0) == 1, "offset of FB_ENVELOPE_UDINT.aReserved0");
+SL_STATIC_ASSERT(offsetof(FB_ENVELOPE_UDINT, bRun) == 16, "offset of FB_ENVELOPE_UDINT.bRun");
+SL_STATIC_ASSERT(offsetof(FB_ENVELOPE_UDINT, bErrAck) == 17, "offset of FB_ENVELOPE_UDINT.bErrAck");
+SL_STATIC_ASSERT(offsetof(FB_ENVELOPE_UDINT, aReserved1) == 18, "offset of FB_ENVELOPE_UDINT.aReserved1");
+SL_STATIC_ASSERT(offsetof(FB_ENVELOPE_UDINT, nInValue) == 24, "offset of FB_ENVELOPE_UDINT.nInValue");
+SL_STATIC_ASSERT(offsetof(FB_ENVELOPE_UDINT, tTimeAfterInTarget) == 28, "offset of FB_ENVELOPE_UDINT.tTimeAfterInTarget");
+SL_STATIC_ASSERT(offsetof(FB_ENVELOPE_UDINT, tMaxTime) == 32, "offset of FB_ENVELOPE_UDINT.tMaxTime");
+SL_STATIC_ASSERT(offsetof(FB_ENVELOPE_UDINT, nTargetValue) == 36, "offset of FB_ENVELOPE_UDINT.nTargetValue");
+SL_STATIC_ASSERT(offsetof(FB_ENVELOPE_UDINT, nOffset) == 40, "offset of FB_ENVELOPE_UDINT.nOffset");
+SL_STATIC_ASSERT(offsetof(FB_ENVELOPE_UDINT, wInputActive) == 44, "offset of FB_ENVELOPE_UDINT.wInputActive");
+SL_STATIC_ASSERT(offsetof(FB_ENVELOPE_UDINT, aReserved3) == 46, "offset of FB_ENVELOPE_UDINT.aReserved3");
+SL_STATIC_ASSERT(offsetof(FB_ENVELOPE_UDINT, bError) == 48, "offset of FB_ENVELOPE_UDINT.bError");
+SL_STATIC_ASSERT(offsetof(FB_ENVELOPE_UDINT, bSafeFunctionOut) == 49, "offset of FB_ENVELOPE_UDINT.bSafeFunctionOut");
+SL_STATIC_ASSERT(offsetof(FB_ENVELOPE_UDINT, aReserved4) == 50, "offset of FB_ENVELOPE_UDINT.aReserved4");
+SL_STATIC_ASSERT(offsetof(FB_ENVELOPE_UDINT, nState) == 56, "offset of FB_ENVELOPE_UDINT.nState");
+SL_STATIC_ASSERT(offsetof(FB_ENVELOPE_UDINT, aReserved5) == 57, "offset of FB_ENVELOPE_UDINT.aReserved5");
+SL_STATIC_ASSERT(offsetof(FB_ENVELOPE_UDINT, nDiag) == 58, "offset of FB_ENVELOPE_UDINT.nDiag");
+SL_STATIC_ASSERT(offsetof(FB_ENVELOPE_UDINT, nDiagTextId) == 60, "offset of FB_ENVELOPE_UDINT.nDiagTextId");
+SL_STATIC_ASSERT(offsetof(FB_ENVELOPE_UDINT, aReserved6) == 62, "offset of FB_ENVELOPE_UDINT.aReserved6");
+SL_STATIC_ASSERT(offsetof(FB_ENVELOPE_UDINT, dwDiagPar2) == 64, "offset of FB_ENVELOPE_UDINT.dwDiagPar2");
+SL_STATIC_ASSERT(offsetof(FB_ENVELOPE_UDINT, dwDiagPar3) == 68, "offset of FB_ENVELOPE_UDINT.dwDiagPar3");
+SL_STATIC_ASSERT(offsetof(FB_ENVELOPE_UDINT, stPrivate) == 72, "offset of FB_ENVELOPE_UDINT.stPrivate");
+SL_STATIC_ASSERT(sizeof(FB_ENVELOPE_UDINT) == 136, "size of FB_ENVELOPE_UDINT");
 SL_STATIC_ASSERT(offsetof(SL_COUNTER_PRIVATE, stHeader) == 0, "offset of SL_COUNTER_PRIVATE.stHeader");
 SL_STATIC_ASSERT(offsetof(SL_COUNTER_PRIVATE, aReserved0) == 28, "offset of SL_COUNTER_PRIVATE.aReserved0");
 SL_STATIC_ASSERT(offsetof(SL_COUNTER_PRIVATE, adwParam) == 32, "offset of SL_COUNTER_PRIVATE.adwParam");

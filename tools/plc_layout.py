@@ -295,7 +295,7 @@ def check_fbs(src: Source, csizes, cmembers) -> None:
         blocks = src.fbs[fbname]
         ins = blocks.get("VAR_INPUT", [])
         outs = blocks.get("VAR_OUTPUT", [])
-        public = [m for m in cmembers[cname] if not is_reserved(m.name) and dut_of_type_is_struct(m, src, cname) is False]
+        public = [m for m in cmembers[cname] if not is_reserved(m.name) and not is_nested_struct(m, src, cname)]
         byname = {m.name: m for m in public}
         seen_in = [n for n, _, _ in ins if n != "tNow"]
         seen_out = [n for n, _, _ in outs if n != "nStatus"]
@@ -312,7 +312,8 @@ def check_fbs(src: Source, csizes, cmembers) -> None:
         for n, t, count in ins + outs:
             if n not in byname:
                 continue
-            size = SIZES.get(t.upper(), -1) * (count or 1)
+            esize = SIZES[t.upper()] if t.upper() in SIZES else layout(src.duts, t, 8, {})[0]
+            size = esize * (count or 1)
             R.ok(size == byname[n].size,
                  f"{src.label}: block {cname} field {n}: FB type {t} has {size} bytes, C field {byname[n].size}")
         body = src.fb_bodies.get(fbname, "")
@@ -329,11 +330,13 @@ def check_fbs(src: Source, csizes, cmembers) -> None:
                  f"{src.label}: block {cname} field {n}: output not copied from stData")
 
 
-def dut_of_type_is_struct(m: CMember, src: Source, cname: str) -> bool:
+def is_nested_struct(m: CMember, src: Source, cname: str) -> bool:
+    """A struct member that is not an interface field (the private state); an array of
+    structs (a value table, LOADSENSING's aRow) is an interface field."""
     dname = dut_of(cname)
     for sm in src.duts.get(dname, []):
         if sm.name == m.name:
-            return sm.type_name.upper() not in SIZES
+            return sm.type_name.upper() not in SIZES and sm.count is None
     return False
 
 

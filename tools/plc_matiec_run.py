@@ -131,6 +131,24 @@ for _b in ("SLI", "SLI2"):
             pulse=("bSLI",), hold=True, change=("nLimitPos", 11), run={1})
 
 
+# ENVELOPE in every variant: SafeFunction TRUE (RUN); the walk's SafeFunction pulse is a
+# monitored stop inside the target window (DELAYOUT); changing MaxTime while running is the
+# error.
+for _v in ("INT", "UINT", "DINT", "UDINT"):
+    BLOCKS[f"ENVELOPE_{_v}"] = dict(
+        cfg=dict(wInputActive=0x101, tTimeAfterInTarget=30, tMaxTime=1000, nTargetValue=10,
+                 nOffset=50, nInValue=5, bSafeFunction=1), pulse=None,
+        change=("tMaxTime", 1001), run={1, 8, 9})
+
+# LOADSENSING in every variant: one table row (X 0: Y1 100 <= WY1 110 < WY2 190 <= Y2 200),
+# AnalogInX 1 and AnalogInY 150 (RUN); changing the row count while running is the error. The
+# row is written through the FB's aRow input (element by element).
+for _v in ("INT", "UINT", "DINT", "UDINT"):
+    BLOCKS[f"LOADSENSING_{_v}"] = dict(
+        cfg={"wInputActive": 0x300, "nRowCount": 1, "aRow[0].nX": 0, "aRow[0].nY1": 100,
+             "aRow[0].nY2": 200, "aRow[0].nWY1": 110, "aRow[0].nWY2": 190, "nAnalogInX": 1,
+             "nAnalogInY": 150}, pulse=None, change=("nRowCount", 2), run={1, 17})
+
 BLOCK_INPUTS = {}  # block -> its BOOL inputs (filled from the header in main)
 
 
@@ -169,6 +187,16 @@ def script(name: str) -> dict:
 
 
 def st_literal(hdr, fl, blk, field: str, value: int) -> str:
+    if "[" in field:
+        # A member of a table element, "aRow[0].nX": the member's type.
+        table, member = field.split("[")[0], field.split(".")[-1]
+        f = [x for x in blk.inputs if x.name == table]
+        if not f:
+            raise SystemExit(f"{blk.name}: no input {table}")
+        f = [m for m in hdr.structs[f[0].ctype].fields if m.name == member]
+        if not f:
+            raise SystemExit(f"{blk.name}: no member {field}")
+        return f"{plcgen.dut_type(hdr, f[0])}#{value}"
     f = [x for x in blk.inputs if x.name == field]
     if not f:
         raise SystemExit(f"{blk.name}: no input {field}")
@@ -193,8 +221,11 @@ def st_program(hdr) -> str:
         steps = script(b.name)
         out.append(f"CASE nCycle OF")
         for c in sorted(steps):
-            args = ", ".join(f"{k} := {st_literal(hdr, fl, b, k, v)}" for k, v in steps[c].items())
-            out.append(f"    {c}: fb{b.name}({args}, tNow := nNow);")
+            # Table members are written into the instance's input before the call.
+            sets = "".join(f"fb{b.name}.{k} := {st_literal(hdr, fl, b, k, v)}; "
+                           for k, v in steps[c].items() if "[" in k)
+            args = ", ".join(f"{k} := {st_literal(hdr, fl, b, k, v)}" for k, v in steps[c].items() if "[" not in k)
+            out.append(f"    {c}: {sets}fb{b.name}({args}, tNow := nNow);")
         out.append("ELSE")
         out.append(f"    fb{b.name}(tNow := nNow);")
         out.append("END_CASE;")
@@ -370,7 +401,10 @@ def mirror_h(hdr) -> str:
     for b in hdr.blocks:
         out.append("typedef struct {")
         for f in b.inputs + b.outputs:
-            out.append(f"    {c_type(f)} {f.name}{'[%d]' % f.count if f.count else ''};")
+            if plcgen.is_table(f):
+                out.append(f"    unsigned char {f.name}[{f.size}];")
+            else:
+                out.append(f"    {c_type(f)} {f.name}{'[%d]' % f.count if f.count else ''};")
         out.append("    uint32_t tNow;")
         out.append("    int32_t nStatus;")
         out.append(f"    unsigned char stData[{b.struct.size}];")

@@ -27,7 +27,8 @@ Rules (documented in plc_bindings/README.md and docs/plc-integration.md):
     private-state parts, e.g. SL_PRIVATE_HEADER) become DUTs of the same name.
   * Field sections: fields before the first field whose doc comment mentions
     "output base" are inputs (signals, group link, parameters); from there on outputs.
-    Fields named aReserved* and nested structs (private state) stay inside the DUT only.
+    Fields named aReserved* and nested structs (private state) stay inside the DUT only; an
+    array of structs (a value table such as LOADSENSING's aRow) is an input like any array.
   * Types: SL_BOOL->BOOL, uint8/16/32/64->BYTE/WORD/DWORD/LWORD, int8/16/32/64->
     SINT/INT/DINT/LINT; a uint32_t whose name starts with t / at (a millisecond time) is
     UDINT in every DUT. In the TwinCAT/CODESYS function block such a non-array time is TIME
@@ -356,7 +357,7 @@ def _find_blocks(hdr: Header) -> None:
         for f in st.fields:
             if "output base" in f.doc.lower():
                 out = True
-            if is_reserved(f) or f.is_struct:
+            if is_reserved(f) or is_nested(f):
                 continue
             (blk.outputs if out else blk.inputs).append(f)
         if not out:
@@ -371,6 +372,18 @@ def _find_blocks(hdr: Header) -> None:
 
 def is_reserved(f: CField) -> bool:
     return re.fullmatch(r"aReserved\d*", f.name) is not None
+
+
+def is_nested(f: CField) -> bool:
+    """A nested struct that is not an interface field: the private state. An array of structs
+    (a value table) is one."""
+    return f.is_struct and f.count is None
+
+
+def is_table(f: CField) -> bool:
+    """An array of structs: a parameter table (LOADSENSING aRow). Not in the registry's field
+    table, which holds scalars; its direction follows the header's output base."""
+    return f.is_struct and f.count is not None
 
 
 def is_time_ms(f: CField) -> bool:
@@ -1513,7 +1526,14 @@ def adapter_test_c(hdr: Header) -> str:
         out.append(f"static void rnd_config_{b.lower}({s} *x)")
         out.append("{")
         for f in params:
-            if f.count is not None:
+            if is_table(f):
+                # A table: element i's members drawn from 4i ... 4i+3, so that a key member
+                # (LOADSENSING's X) increases with the index and the members of one element
+                # are ordered in some draws.
+                for m in hdr.structs[f.ctype].fields:
+                    out.append(f"    {{ int i; for (i = 0; i < {f.count}; i++) x->{f.name}[i].{m.name} = "
+                               f"({c_type_of(m)})(4u * (unsigned)i + rnd() % 4u); }}")
+            elif f.count is not None:
                 out.append(f"    {{ int i; for (i = 0; i < {f.count}; i++) x->{f.name}[i] = ({c_type_of(f)})(rnd() % 4u); }}")
             elif f.name == "wInputActive":
                 out.append(f"    x->wInputActive = (uint16_t)(rnd() & 0x{mask:X}u);")
@@ -1680,8 +1700,9 @@ users call. So:
 |---|---|---|---|---|---|---|
 {rows}
 
-Other structs of the header ({others}) are nested in the block structs (private state) and
-become DUTs of the same name. Every DUT member keeps its C name; reserved fields and the
+Other structs of the header ({others}) are nested in the block structs (private state, or
+the rows of a value table such as LOADSENSING's `aRow`, an input array) and become DUTs of
+the same name. Every DUT member keeps its C name; reserved fields and the
 private state are members too, so `SIZEOF` and every offset equal the C header (pack mode 8
 and 4, 32- and 64-bit).
 
@@ -1811,9 +1832,15 @@ def apply_field_table(hdr: Header, table: dict) -> None:
             (ins if t["dir"] in dirs_in else outs).append(f)
         if by_name:
             raise GenError(f"{name}: field table names fields the header lacks: {sorted(by_name)}")
-        if [f.name for f in ins] != [f.name for f in blk.inputs] or \
-                [f.name for f in outs] != [f.name for f in blk.outputs]:
+        tables = {f.name for f in blk.inputs + blk.outputs if is_table(f)}
+        if [f.name for f in ins] != [f.name for f in blk.inputs if f.name not in tables] or \
+                [f.name for f in outs] != [f.name for f in blk.outputs if f.name not in tables]:
             raise GenError(f"{name}: the field table's directions disagree with the header's output base")
+        order = {f.name: i for i, f in enumerate(blk.struct.fields)}
+        ins += [f for f in blk.inputs if f.name in tables]
+        outs += [f for f in blk.outputs if f.name in tables]
+        ins.sort(key=lambda f: order[f.name])
+        outs.sort(key=lambda f: order[f.name])
         if entry["size"] != blk.struct.size:
             raise GenError(f"{name}: field table size {entry['size']}, header {blk.struct.size}")
         blk.inputs, blk.outputs = ins, outs

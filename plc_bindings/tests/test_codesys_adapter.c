@@ -730,6 +730,126 @@ static void test_param_structs(void)
       CHECK(offsetof(cds_sl_speed_udint_cycle_struct, cds_sl_speed_udint_cycle) == off, "cds_sl_speed_udint_cycle_struct return value at %zu, expected %zu", offsetof(cds_sl_speed_udint_cycle_struct, cds_sl_speed_udint_cycle), off); }
     { size_t off = 0;
       off = (off + sizeof(void *) - 1) / sizeof(void *) * sizeof(void *);
+      CHECK(offsetof(cds_sl_loadsensing_int_init_struct, pFb) == off, "cds_sl_loadsensing_int_init_struct.pFb at %zu, expected %zu", offsetof(cds_sl_loadsensing_int_init_struct, pFb), off);
+      off += sizeof(void *);
+      off = (off + sizeof(int32_t) - 1) / sizeof(int32_t) * sizeof(int32_t);
+      CHECK(offsetof(cds_sl_loadsensing_int_init_struct, cds_sl_loadsensing_int_init) == off, "cds_sl_loadsensing_int_init_struct return value at %zu, expected %zu", offsetof(cds_sl_loadsensing_int_init_struct, cds_sl_loadsensing_int_init), off); }
+    { size_t off = 0;
+      off = (off + sizeof(void *) - 1) / sizeof(void *) * sizeof(void *);
+      CHECK(offsetof(cds_sl_loadsensing_int_cycle_struct, pFb) == off, "cds_sl_loadsensing_int_cycle_struct.pFb at %zu, expected %zu", offsetof(cds_sl_loadsensing_int_cycle_struct, pFb), off);
+      off += sizeof(void *);
+      off = (off + sizeof(uint32_t) - 1) / sizeof(uint32_t) * sizeof(uint32_t);
+      CHECK(offsetof(cds_sl_loadsensing_int_cycle_struct, tNow) == off, "cds_sl_loadsensing_int_cycle_struct.tNow at %zu, expected %zu", offsetof(cds_sl_loadsensing_int_cycle_struct, tNow), off);
+      off += sizeof(uint32_t);
+      off = (off + sizeof(int32_t) - 1) / sizeof(int32_t) * sizeof(int32_t);
+      CHECK(offsetof(cds_sl_loadsensing_int_cycle_struct, cds_sl_loadsensing_int_cycle) == off, "cds_sl_loadsensing_int_cycle_struct return value at %zu, expected %zu", offsetof(cds_sl_loadsensing_int_cycle_struct, cds_sl_loadsensing_int_cycle), off); }
+    { size_t off = 0;
+      off = (off + sizeof(void *) - 1) / sizeof(void *) * sizeof(void *);
+      CHECK(offsetof(cds_sl_loadsensing_uint_init_struct, pFb) == off, "cds_sl_loadsensing_uint_init_struct.pFb at %zu, expected %zu", offsetof(cds_sl_loadsensing_uint_init_struct, pFb), off);
+      off += sizeof(void *);
+      off = (off + sizeof(int32_t) - 1) / sizeof(int32_t) * sizeof(int32_t);
+      CHECK(offsetof(cds_sl_loadsensing_uint_init_struct, cds_sl_loadsensing_uint_init) == off, "cds_sl_loadsensing_uint_init_struct return value at %zu, expected %zu", offsetof(cds_sl_loadsensing_uint_init_struct, cds_sl_loadsensing_uint_init), off); }
+    { size_t off = 0;
+      off = (off + sizeof(void *) - 1) / sizeof(void *) * sizeof(void *);
+      CHECK(offsetof(cds_sl_loadsensing_uint_cycle_struct, pFb) == off, "cds_sl_loadsensing_uint_cycle_struct.pFb at %zu, expected %zu", offsetof(cds_sl_loadsensing_uint_cycle_struct, pFb), off);
+      off += sizeof(void *);
+      off = (off + sizeof(uint32_t) - 1) / sizeof(uint32_t) * sizeof(uint32_t);
+      CHECK(offsetof(cds_sl_loadsensing_uint_cycle_struct, tNow) == off, "cds_sl_loadsensing_uint_cycle_struct.tNow at %zu, expected %zu", offsetof(cds_sl_loadsensing_uint_cycle_struct, tNow), off);
+      off += sizeof(uint32_t);
+      off = (off + sizeof(int32_t) - 1) / sizeof(int32_t) * sizeof(int32_t);
+      CHECK(offsetof(cds_sl_loadsensing_uint_cycle_struct, cds_sl_loadsensing_uint_cycle) == off, "cds_sl_loadsensing_uint_cycle_struct return value at %zu, expected %zu", offsetof(cds_sl_loadsensing_uint_cycle_struct, cds_sl_loadsensing_uint_cycle), off); }
+    { size_t off = 0;
+      off = (off + sizeof(void *) - 1) / sizeof(void *) * sizeof(void *);
+      CHECK(offsetof(cds_sl_loadsensing_dint_init_struct, pFb) == off, "cds_sl_loadsensing_dint_init_struct.pFb at %zu, expected %zu", offsetof(cds_sl_loadsensing_dint_init_struct, pFb), off);
+      off += sizeof(void *);
+      off = (off + sizeof(int32_t) - 1) / sizeof(int32_t) * sizeof(int32_t);
+      CHECK(offsetof(cds_sl_loadsensing_dint_init_struct, cds_sl_loadsensing_dint_init) == off, "cds_sl_loadsensing_dint_init_struct return value at %zu, expected %zu", offsetof(cds_sl_loadsensing_dint_init_struct, cds_sl_loadsensing_dint_init), off); }
+    { size_t off = 0;
+      off = (off + sizeof(void *) - 1) / sizeof(void *) * sizeof(void *);
+      CHECK(offsetof(cds_sl_loadsensing_dint_cycle_struct, pFb) == off, "cds_sl_loadsensing_dint_cycle_struct.pFb at %zu, expected %zu", offsetof(cds_sl_loadsensing_dint_cycle_struct, pFb), off);
+      off += sizeof(void *);
+      off = (off + sizeof(uint32_t) - 1) / sizeof(uint32_t) * sizeof(uint32_t);
+      CHECK(offsetof(cds_sl_loadsensing_dint_cycle_struct, tNow) == off, "cds_sl_loadsensing_dint_cycle_struct.tNow at %zu, expected %zu", offsetof(cds_sl_loadsensing_dint_cycle_struct, tNow), off);
+      off += sizeof(uint32_t);
+      off = (off + sizeof(int32_t) - 1) / sizeof(int32_t) * sizeof(int32_t);
+      CHECK(offsetof(cds_sl_loadsensing_dint_cycle_struct, cds_sl_loadsensing_dint_cycle) == off, "cds_sl_loadsensing_dint_cycle_struct return value at %zu, expected %zu", offsetof(cds_sl_loadsensing_dint_cycle_struct, cds_sl_loadsensing_dint_cycle), off); }
+    { size_t off = 0;
+      off = (off + sizeof(void *) - 1) / sizeof(void *) * sizeof(void *);
+      CHECK(offsetof(cds_sl_loadsensing_udint_init_struct, pFb) == off, "cds_sl_loadsensing_udint_init_struct.pFb at %zu, expected %zu", offsetof(cds_sl_loadsensing_udint_init_struct, pFb), off);
+      off += sizeof(void *);
+      off = (off + sizeof(int32_t) - 1) / sizeof(int32_t) * sizeof(int32_t);
+      CHECK(offsetof(cds_sl_loadsensing_udint_init_struct, cds_sl_loadsensing_udint_init) == off, "cds_sl_loadsensing_udint_init_struct return value at %zu, expected %zu", offsetof(cds_sl_loadsensing_udint_init_struct, cds_sl_loadsensing_udint_init), off); }
+    { size_t off = 0;
+      off = (off + sizeof(void *) - 1) / sizeof(void *) * sizeof(void *);
+      CHECK(offsetof(cds_sl_loadsensing_udint_cycle_struct, pFb) == off, "cds_sl_loadsensing_udint_cycle_struct.pFb at %zu, expected %zu", offsetof(cds_sl_loadsensing_udint_cycle_struct, pFb), off);
+      off += sizeof(void *);
+      off = (off + sizeof(uint32_t) - 1) / sizeof(uint32_t) * sizeof(uint32_t);
+      CHECK(offsetof(cds_sl_loadsensing_udint_cycle_struct, tNow) == off, "cds_sl_loadsensing_udint_cycle_struct.tNow at %zu, expected %zu", offsetof(cds_sl_loadsensing_udint_cycle_struct, tNow), off);
+      off += sizeof(uint32_t);
+      off = (off + sizeof(int32_t) - 1) / sizeof(int32_t) * sizeof(int32_t);
+      CHECK(offsetof(cds_sl_loadsensing_udint_cycle_struct, cds_sl_loadsensing_udint_cycle) == off, "cds_sl_loadsensing_udint_cycle_struct return value at %zu, expected %zu", offsetof(cds_sl_loadsensing_udint_cycle_struct, cds_sl_loadsensing_udint_cycle), off); }
+    { size_t off = 0;
+      off = (off + sizeof(void *) - 1) / sizeof(void *) * sizeof(void *);
+      CHECK(offsetof(cds_sl_envelope_int_init_struct, pFb) == off, "cds_sl_envelope_int_init_struct.pFb at %zu, expected %zu", offsetof(cds_sl_envelope_int_init_struct, pFb), off);
+      off += sizeof(void *);
+      off = (off + sizeof(int32_t) - 1) / sizeof(int32_t) * sizeof(int32_t);
+      CHECK(offsetof(cds_sl_envelope_int_init_struct, cds_sl_envelope_int_init) == off, "cds_sl_envelope_int_init_struct return value at %zu, expected %zu", offsetof(cds_sl_envelope_int_init_struct, cds_sl_envelope_int_init), off); }
+    { size_t off = 0;
+      off = (off + sizeof(void *) - 1) / sizeof(void *) * sizeof(void *);
+      CHECK(offsetof(cds_sl_envelope_int_cycle_struct, pFb) == off, "cds_sl_envelope_int_cycle_struct.pFb at %zu, expected %zu", offsetof(cds_sl_envelope_int_cycle_struct, pFb), off);
+      off += sizeof(void *);
+      off = (off + sizeof(uint32_t) - 1) / sizeof(uint32_t) * sizeof(uint32_t);
+      CHECK(offsetof(cds_sl_envelope_int_cycle_struct, tNow) == off, "cds_sl_envelope_int_cycle_struct.tNow at %zu, expected %zu", offsetof(cds_sl_envelope_int_cycle_struct, tNow), off);
+      off += sizeof(uint32_t);
+      off = (off + sizeof(int32_t) - 1) / sizeof(int32_t) * sizeof(int32_t);
+      CHECK(offsetof(cds_sl_envelope_int_cycle_struct, cds_sl_envelope_int_cycle) == off, "cds_sl_envelope_int_cycle_struct return value at %zu, expected %zu", offsetof(cds_sl_envelope_int_cycle_struct, cds_sl_envelope_int_cycle), off); }
+    { size_t off = 0;
+      off = (off + sizeof(void *) - 1) / sizeof(void *) * sizeof(void *);
+      CHECK(offsetof(cds_sl_envelope_uint_init_struct, pFb) == off, "cds_sl_envelope_uint_init_struct.pFb at %zu, expected %zu", offsetof(cds_sl_envelope_uint_init_struct, pFb), off);
+      off += sizeof(void *);
+      off = (off + sizeof(int32_t) - 1) / sizeof(int32_t) * sizeof(int32_t);
+      CHECK(offsetof(cds_sl_envelope_uint_init_struct, cds_sl_envelope_uint_init) == off, "cds_sl_envelope_uint_init_struct return value at %zu, expected %zu", offsetof(cds_sl_envelope_uint_init_struct, cds_sl_envelope_uint_init), off); }
+    { size_t off = 0;
+      off = (off + sizeof(void *) - 1) / sizeof(void *) * sizeof(void *);
+      CHECK(offsetof(cds_sl_envelope_uint_cycle_struct, pFb) == off, "cds_sl_envelope_uint_cycle_struct.pFb at %zu, expected %zu", offsetof(cds_sl_envelope_uint_cycle_struct, pFb), off);
+      off += sizeof(void *);
+      off = (off + sizeof(uint32_t) - 1) / sizeof(uint32_t) * sizeof(uint32_t);
+      CHECK(offsetof(cds_sl_envelope_uint_cycle_struct, tNow) == off, "cds_sl_envelope_uint_cycle_struct.tNow at %zu, expected %zu", offsetof(cds_sl_envelope_uint_cycle_struct, tNow), off);
+      off += sizeof(uint32_t);
+      off = (off + sizeof(int32_t) - 1) / sizeof(int32_t) * sizeof(int32_t);
+      CHECK(offsetof(cds_sl_envelope_uint_cycle_struct, cds_sl_envelope_uint_cycle) == off, "cds_sl_envelope_uint_cycle_struct return value at %zu, expected %zu", offsetof(cds_sl_envelope_uint_cycle_struct, cds_sl_envelope_uint_cycle), off); }
+    { size_t off = 0;
+      off = (off + sizeof(void *) - 1) / sizeof(void *) * sizeof(void *);
+      CHECK(offsetof(cds_sl_envelope_dint_init_struct, pFb) == off, "cds_sl_envelope_dint_init_struct.pFb at %zu, expected %zu", offsetof(cds_sl_envelope_dint_init_struct, pFb), off);
+      off += sizeof(void *);
+      off = (off + sizeof(int32_t) - 1) / sizeof(int32_t) * sizeof(int32_t);
+      CHECK(offsetof(cds_sl_envelope_dint_init_struct, cds_sl_envelope_dint_init) == off, "cds_sl_envelope_dint_init_struct return value at %zu, expected %zu", offsetof(cds_sl_envelope_dint_init_struct, cds_sl_envelope_dint_init), off); }
+    { size_t off = 0;
+      off = (off + sizeof(void *) - 1) / sizeof(void *) * sizeof(void *);
+      CHECK(offsetof(cds_sl_envelope_dint_cycle_struct, pFb) == off, "cds_sl_envelope_dint_cycle_struct.pFb at %zu, expected %zu", offsetof(cds_sl_envelope_dint_cycle_struct, pFb), off);
+      off += sizeof(void *);
+      off = (off + sizeof(uint32_t) - 1) / sizeof(uint32_t) * sizeof(uint32_t);
+      CHECK(offsetof(cds_sl_envelope_dint_cycle_struct, tNow) == off, "cds_sl_envelope_dint_cycle_struct.tNow at %zu, expected %zu", offsetof(cds_sl_envelope_dint_cycle_struct, tNow), off);
+      off += sizeof(uint32_t);
+      off = (off + sizeof(int32_t) - 1) / sizeof(int32_t) * sizeof(int32_t);
+      CHECK(offsetof(cds_sl_envelope_dint_cycle_struct, cds_sl_envelope_dint_cycle) == off, "cds_sl_envelope_dint_cycle_struct return value at %zu, expected %zu", offsetof(cds_sl_envelope_dint_cycle_struct, cds_sl_envelope_dint_cycle), off); }
+    { size_t off = 0;
+      off = (off + sizeof(void *) - 1) / sizeof(void *) * sizeof(void *);
+      CHECK(offsetof(cds_sl_envelope_udint_init_struct, pFb) == off, "cds_sl_envelope_udint_init_struct.pFb at %zu, expected %zu", offsetof(cds_sl_envelope_udint_init_struct, pFb), off);
+      off += sizeof(void *);
+      off = (off + sizeof(int32_t) - 1) / sizeof(int32_t) * sizeof(int32_t);
+      CHECK(offsetof(cds_sl_envelope_udint_init_struct, cds_sl_envelope_udint_init) == off, "cds_sl_envelope_udint_init_struct return value at %zu, expected %zu", offsetof(cds_sl_envelope_udint_init_struct, cds_sl_envelope_udint_init), off); }
+    { size_t off = 0;
+      off = (off + sizeof(void *) - 1) / sizeof(void *) * sizeof(void *);
+      CHECK(offsetof(cds_sl_envelope_udint_cycle_struct, pFb) == off, "cds_sl_envelope_udint_cycle_struct.pFb at %zu, expected %zu", offsetof(cds_sl_envelope_udint_cycle_struct, pFb), off);
+      off += sizeof(void *);
+      off = (off + sizeof(uint32_t) - 1) / sizeof(uint32_t) * sizeof(uint32_t);
+      CHECK(offsetof(cds_sl_envelope_udint_cycle_struct, tNow) == off, "cds_sl_envelope_udint_cycle_struct.tNow at %zu, expected %zu", offsetof(cds_sl_envelope_udint_cycle_struct, tNow), off);
+      off += sizeof(uint32_t);
+      off = (off + sizeof(int32_t) - 1) / sizeof(int32_t) * sizeof(int32_t);
+      CHECK(offsetof(cds_sl_envelope_udint_cycle_struct, cds_sl_envelope_udint_cycle) == off, "cds_sl_envelope_udint_cycle_struct return value at %zu, expected %zu", offsetof(cds_sl_envelope_udint_cycle_struct, cds_sl_envelope_udint_cycle), off); }
+    { size_t off = 0;
+      off = (off + sizeof(void *) - 1) / sizeof(void *) * sizeof(void *);
       CHECK(offsetof(cds_sl_counter_int_init_struct, pFb) == off, "cds_sl_counter_int_init_struct.pFb at %zu, expected %zu", offsetof(cds_sl_counter_int_init_struct, pFb), off);
       off += sizeof(void *);
       off = (off + sizeof(int32_t) - 1) / sizeof(int32_t) * sizeof(int32_t);
@@ -1034,13 +1154,14 @@ static uint32_t rnd_time(void) { static const uint32_t t[] = {0u, 10u, 20u, 30u,
 static uint32_t rnd_options(void)
 {
     uint32_t o = 0;
+    if (rnd() % 4u == 0u) o |= (uint32_t)SL_OPT_LOADSENSING_OUTSIDE;
     if (rnd() % 4u == 0u) o |= (uint32_t)SL_OPT_MUTING_SEQUENTIAL;
     if (rnd() % 4u == 0u) o |= (uint32_t)SL_OPT_MUTING_BACKWARDS;
     if (rnd() % 4u == 0u) o |= (uint32_t)SL_OPT_MUTING_OSSD_CHECK_OPTIONAL;
     if (rnd() % 4u == 0u) o |= (uint32_t)SL_OPT_SCALE_DIVISION_FIRST;
-    if (rnd() % 4u == 0u) o |= (uint32_t)SL_OPT_SPEED_OVERFLOW_CHECK;
     if (rnd() % 4u == 0u) o |= (uint32_t)SL_OPT_SLI2_OVERFLOW_ALLOWED;
     if (rnd() % 4u == 0u) o |= (uint32_t)SL_OPT_SLI2_EXCEEDED_SUPPORT;
+    if (rnd() % 4u == 0u) o |= (uint32_t)SL_OPT_SPEED_OVERFLOW_CHECK;
     if (rnd() % 4u == 0u) o |= (uint32_t)SL_OPT_TON2_REMAINING_TIME;
     if (rnd() % 4u == 0u) o |= (uint32_t)SL_OPT_EDM1;
     if (rnd() % 4u == 0u) o |= (uint32_t)SL_OPT_EDM2;
@@ -5556,6 +5677,790 @@ static void test_speed_udint(void)
     CHECK(reached_error, "FB_SPEED_UDINT: the random test never reached ERROR");
 }
 
+static void rnd_config_loadsensing_int(FB_LOADSENSING_INT *x)
+{
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nAnalogInX = (int16_t)v[rnd() % 7u]; }
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nAnalogInY = (int16_t)v[rnd() % 7u]; }
+    x->dwOptions = rnd_options();
+    { int i; for (i = 0; i < 25; i++) x->aRow[i].nX = (int16_t)(4u * (unsigned)i + rnd() % 4u); }
+    { int i; for (i = 0; i < 25; i++) x->aRow[i].nY1 = (int16_t)(4u * (unsigned)i + rnd() % 4u); }
+    { int i; for (i = 0; i < 25; i++) x->aRow[i].nY2 = (int16_t)(4u * (unsigned)i + rnd() % 4u); }
+    { int i; for (i = 0; i < 25; i++) x->aRow[i].nWY1 = (int16_t)(4u * (unsigned)i + rnd() % 4u); }
+    { int i; for (i = 0; i < 25; i++) x->aRow[i].nWY2 = (int16_t)(4u * (unsigned)i + rnd() % 4u); }
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nRowCount = (uint16_t)v[rnd() % 7u]; }
+    x->wInputActive = (uint16_t)(rnd() & 0x301u);
+}
+/* 1: a valid configuration (want_valid) or an invalid one was drawn into a and b */
+static int draw_loadsensing_int(FB_LOADSENSING_INT *a, FB_LOADSENSING_INT *b, int want_valid)
+{
+    long k;
+    for (k = 0; k < 200000L; k++) {
+        static FB_LOADSENSING_INT x;
+        int valid;
+        memset(&x, 0, sizeof x);
+        rnd_config_loadsensing_int(&x);
+        valid = sl_loadsensing_int_init(&x) == SL_OK && sl_loadsensing_int_cycle(&x, 0u) == SL_OK;
+        if (valid == want_valid) {
+            memset(&x.bRun, 0, 0); /* keep x's parameters, reset the instance */
+            memset(a, 0, sizeof *a);
+            rnd_config_loadsensing_int(a); /* placeholder, overwritten below */
+            a->nAnalogInX = x.nAnalogInX;
+            a->nAnalogInY = x.nAnalogInY;
+            a->dwOptions = x.dwOptions;
+            memcpy(a->aRow, x.aRow, sizeof a->aRow);
+            a->nRowCount = x.nRowCount;
+            a->wInputActive = x.wInputActive;
+            *b = *a;
+            return 1;
+        }
+    }
+    return 0;
+}
+static void test_loadsensing_int(void)
+{
+    static FB_LOADSENSING_INT a, b;
+    cds_sl_loadsensing_int_cycle_struct p;
+    int c, k, bump, ok = 0, cycles = 0, inv_cycles = 0, inv_config = 0, reached_run = 0, reached_error = 0;
+    int hist[12] = {0};
+    unsigned pol = 0;
+    uint32_t t = 1000u;
+    memset(&a, 0, sizeof a);
+    memset(&b, 0, sizeof b);
+    memset(&p, 0, sizeof p);
+    p.pFb = NULL;
+    p.cds_sl_loadsensing_int_cycle = 12345;
+    cds_sl_loadsensing_int_cycle(&p);
+    CHECK(p.cds_sl_loadsensing_int_cycle == SL_E_NULL, "cds_sl_loadsensing_int_cycle(NULL) returned %d", (int)p.cds_sl_loadsensing_int_cycle);
+    a.bRun = b.bRun = 1;
+    a.wInputActive = b.wInputActive = 1;
+    { cds_sl_loadsensing_int_init_struct q; int32_t r; q.pFb = &a; cds_sl_loadsensing_int_init(&q); r = sl_loadsensing_int_init(&b);
+      CHECK(q.cds_sl_loadsensing_int_init == r && memcmp(&a, &b, sizeof a) == 0, "cds_sl_loadsensing_int_init differs from sl_loadsensing_int_init"); }
+    rng = 3177252997u; /* FNV-1a of "FB_LOADSENSING_INT" */
+    machine = 1u;
+    for (c = 0; c < 20; c++) {
+        int valid = c < 16; /* 16 valid configurations, then the labelled invalid share: 4 */
+        if (!draw_loadsensing_int(&a, &b, valid)) {
+            CHECK(!valid, "FB_LOADSENSING_INT: no valid configuration found in 200000 random draws");
+            continue;
+        }
+        if (!valid) inv_config++;
+        a.bInactive = b.bInactive = (uint8_t)(1);
+        a.bErrAck = b.bErrAck = (uint8_t)(0);
+        bump = 20 + (int)(rnd() % 20u);
+        pol = (c % 2 == 1) ? rnd() : 0u;
+        for (k = 0; k < 50; k++) {
+            int32_t direct;
+            next_machine();
+            a.bInactive = b.bInactive = next_signal(a.bInactive, 0, pol >> 0);
+            a.bErrAck = b.bErrAck = next_signal(a.bErrAck, 1, pol >> 1);
+            a.bRun = b.bRun = (uint8_t)(k >= 2 && rnd() % 100u != 0u);
+            if (valid && k == bump) { a.dwOptions++; b.dwOptions++; } /* changed while running: ERROR */
+            if (valid && k == bump + 2) { a.dwOptions--; b.dwOptions--; } /* restored */
+            p.pFb = &a;
+            p.tNow = t += 10u;
+            cds_sl_loadsensing_int_cycle(&p);
+            direct = sl_loadsensing_int_cycle(&b, p.tNow);
+            CHECK(p.cds_sl_loadsensing_int_cycle == direct, "FB_LOADSENSING_INT config %d cycle %d: adapter %d, direct %d", c, k, (int)p.cds_sl_loadsensing_int_cycle, (int)direct);
+            CHECK(memcmp(&a, &b, sizeof a) == 0, "FB_LOADSENSING_INT config %d cycle %d: instances differ", c, k);
+            if (!valid) { inv_cycles++; continue; }
+            cycles++;
+            if (direct == SL_OK) ok++;
+            if (direct <= 0 && direct > -12) hist[-direct]++;
+            if (b.nState == SL_STATE_ERROR) reached_error = 1;
+            if (b.nState != SL_STATE_STOP && b.nState != SL_STATE_ERROR && b.nState != SL_STATE_RESET && (b.bValid || b.bWarning)) reached_run = 1;
+        }
+    }
+    printf("FB_LOADSENSING_INT: %d of %d cycles (16 valid random configurations) returned SL_OK; run-like state %s, ERROR %s; invalid share: %d configurations, %d cycles\n", ok, cycles, reached_run ? "reached" : "NOT reached", reached_error ? "reached" : "NOT reached", inv_config, inv_cycles);
+    if (2 * ok <= cycles) printf("  status histogram (0, -1, ... -11): %d %d %d %d %d %d %d %d %d %d %d\n", hist[0], hist[1], hist[2], hist[3], hist[4], hist[5], hist[6], hist[7], hist[8], hist[9], hist[10]);
+    CHECK(cycles > 0 && 2 * ok > cycles, "FB_LOADSENSING_INT: only %d of %d cycles with valid configurations returned SL_OK", ok, cycles);
+    CHECK(reached_run, "FB_LOADSENSING_INT: the random test never reached a running state (an output on)");
+    CHECK(reached_error, "FB_LOADSENSING_INT: the random test never reached ERROR");
+}
+
+static void rnd_config_loadsensing_uint(FB_LOADSENSING_UINT *x)
+{
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nAnalogInX = (uint16_t)v[rnd() % 7u]; }
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nAnalogInY = (uint16_t)v[rnd() % 7u]; }
+    x->dwOptions = rnd_options();
+    { int i; for (i = 0; i < 25; i++) x->aRow[i].nX = (uint16_t)(4u * (unsigned)i + rnd() % 4u); }
+    { int i; for (i = 0; i < 25; i++) x->aRow[i].nY1 = (uint16_t)(4u * (unsigned)i + rnd() % 4u); }
+    { int i; for (i = 0; i < 25; i++) x->aRow[i].nY2 = (uint16_t)(4u * (unsigned)i + rnd() % 4u); }
+    { int i; for (i = 0; i < 25; i++) x->aRow[i].nWY1 = (uint16_t)(4u * (unsigned)i + rnd() % 4u); }
+    { int i; for (i = 0; i < 25; i++) x->aRow[i].nWY2 = (uint16_t)(4u * (unsigned)i + rnd() % 4u); }
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nRowCount = (uint16_t)v[rnd() % 7u]; }
+    x->wInputActive = (uint16_t)(rnd() & 0x301u);
+}
+/* 1: a valid configuration (want_valid) or an invalid one was drawn into a and b */
+static int draw_loadsensing_uint(FB_LOADSENSING_UINT *a, FB_LOADSENSING_UINT *b, int want_valid)
+{
+    long k;
+    for (k = 0; k < 200000L; k++) {
+        static FB_LOADSENSING_UINT x;
+        int valid;
+        memset(&x, 0, sizeof x);
+        rnd_config_loadsensing_uint(&x);
+        valid = sl_loadsensing_uint_init(&x) == SL_OK && sl_loadsensing_uint_cycle(&x, 0u) == SL_OK;
+        if (valid == want_valid) {
+            memset(&x.bRun, 0, 0); /* keep x's parameters, reset the instance */
+            memset(a, 0, sizeof *a);
+            rnd_config_loadsensing_uint(a); /* placeholder, overwritten below */
+            a->nAnalogInX = x.nAnalogInX;
+            a->nAnalogInY = x.nAnalogInY;
+            a->dwOptions = x.dwOptions;
+            memcpy(a->aRow, x.aRow, sizeof a->aRow);
+            a->nRowCount = x.nRowCount;
+            a->wInputActive = x.wInputActive;
+            *b = *a;
+            return 1;
+        }
+    }
+    return 0;
+}
+static void test_loadsensing_uint(void)
+{
+    static FB_LOADSENSING_UINT a, b;
+    cds_sl_loadsensing_uint_cycle_struct p;
+    int c, k, bump, ok = 0, cycles = 0, inv_cycles = 0, inv_config = 0, reached_run = 0, reached_error = 0;
+    int hist[12] = {0};
+    unsigned pol = 0;
+    uint32_t t = 1000u;
+    memset(&a, 0, sizeof a);
+    memset(&b, 0, sizeof b);
+    memset(&p, 0, sizeof p);
+    p.pFb = NULL;
+    p.cds_sl_loadsensing_uint_cycle = 12345;
+    cds_sl_loadsensing_uint_cycle(&p);
+    CHECK(p.cds_sl_loadsensing_uint_cycle == SL_E_NULL, "cds_sl_loadsensing_uint_cycle(NULL) returned %d", (int)p.cds_sl_loadsensing_uint_cycle);
+    a.bRun = b.bRun = 1;
+    a.wInputActive = b.wInputActive = 1;
+    { cds_sl_loadsensing_uint_init_struct q; int32_t r; q.pFb = &a; cds_sl_loadsensing_uint_init(&q); r = sl_loadsensing_uint_init(&b);
+      CHECK(q.cds_sl_loadsensing_uint_init == r && memcmp(&a, &b, sizeof a) == 0, "cds_sl_loadsensing_uint_init differs from sl_loadsensing_uint_init"); }
+    rng = 1699870884u; /* FNV-1a of "FB_LOADSENSING_UINT" */
+    machine = 1u;
+    for (c = 0; c < 20; c++) {
+        int valid = c < 16; /* 16 valid configurations, then the labelled invalid share: 4 */
+        if (!draw_loadsensing_uint(&a, &b, valid)) {
+            CHECK(!valid, "FB_LOADSENSING_UINT: no valid configuration found in 200000 random draws");
+            continue;
+        }
+        if (!valid) inv_config++;
+        a.bInactive = b.bInactive = (uint8_t)(1);
+        a.bErrAck = b.bErrAck = (uint8_t)(0);
+        bump = 20 + (int)(rnd() % 20u);
+        pol = (c % 2 == 1) ? rnd() : 0u;
+        for (k = 0; k < 50; k++) {
+            int32_t direct;
+            next_machine();
+            a.bInactive = b.bInactive = next_signal(a.bInactive, 0, pol >> 0);
+            a.bErrAck = b.bErrAck = next_signal(a.bErrAck, 1, pol >> 1);
+            a.bRun = b.bRun = (uint8_t)(k >= 2 && rnd() % 100u != 0u);
+            if (valid && k == bump) { a.dwOptions++; b.dwOptions++; } /* changed while running: ERROR */
+            if (valid && k == bump + 2) { a.dwOptions--; b.dwOptions--; } /* restored */
+            p.pFb = &a;
+            p.tNow = t += 10u;
+            cds_sl_loadsensing_uint_cycle(&p);
+            direct = sl_loadsensing_uint_cycle(&b, p.tNow);
+            CHECK(p.cds_sl_loadsensing_uint_cycle == direct, "FB_LOADSENSING_UINT config %d cycle %d: adapter %d, direct %d", c, k, (int)p.cds_sl_loadsensing_uint_cycle, (int)direct);
+            CHECK(memcmp(&a, &b, sizeof a) == 0, "FB_LOADSENSING_UINT config %d cycle %d: instances differ", c, k);
+            if (!valid) { inv_cycles++; continue; }
+            cycles++;
+            if (direct == SL_OK) ok++;
+            if (direct <= 0 && direct > -12) hist[-direct]++;
+            if (b.nState == SL_STATE_ERROR) reached_error = 1;
+            if (b.nState != SL_STATE_STOP && b.nState != SL_STATE_ERROR && b.nState != SL_STATE_RESET && (b.bValid || b.bWarning)) reached_run = 1;
+        }
+    }
+    printf("FB_LOADSENSING_UINT: %d of %d cycles (16 valid random configurations) returned SL_OK; run-like state %s, ERROR %s; invalid share: %d configurations, %d cycles\n", ok, cycles, reached_run ? "reached" : "NOT reached", reached_error ? "reached" : "NOT reached", inv_config, inv_cycles);
+    if (2 * ok <= cycles) printf("  status histogram (0, -1, ... -11): %d %d %d %d %d %d %d %d %d %d %d\n", hist[0], hist[1], hist[2], hist[3], hist[4], hist[5], hist[6], hist[7], hist[8], hist[9], hist[10]);
+    CHECK(cycles > 0 && 2 * ok > cycles, "FB_LOADSENSING_UINT: only %d of %d cycles with valid configurations returned SL_OK", ok, cycles);
+    CHECK(reached_run, "FB_LOADSENSING_UINT: the random test never reached a running state (an output on)");
+    CHECK(reached_error, "FB_LOADSENSING_UINT: the random test never reached ERROR");
+}
+
+static void rnd_config_loadsensing_dint(FB_LOADSENSING_DINT *x)
+{
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nAnalogInX = (int32_t)v[rnd() % 7u]; }
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nAnalogInY = (int32_t)v[rnd() % 7u]; }
+    x->dwOptions = rnd_options();
+    { int i; for (i = 0; i < 25; i++) x->aRow[i].nX = (int32_t)(4u * (unsigned)i + rnd() % 4u); }
+    { int i; for (i = 0; i < 25; i++) x->aRow[i].nY1 = (int32_t)(4u * (unsigned)i + rnd() % 4u); }
+    { int i; for (i = 0; i < 25; i++) x->aRow[i].nY2 = (int32_t)(4u * (unsigned)i + rnd() % 4u); }
+    { int i; for (i = 0; i < 25; i++) x->aRow[i].nWY1 = (int32_t)(4u * (unsigned)i + rnd() % 4u); }
+    { int i; for (i = 0; i < 25; i++) x->aRow[i].nWY2 = (int32_t)(4u * (unsigned)i + rnd() % 4u); }
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nRowCount = (uint16_t)v[rnd() % 7u]; }
+    x->wInputActive = (uint16_t)(rnd() & 0x301u);
+}
+/* 1: a valid configuration (want_valid) or an invalid one was drawn into a and b */
+static int draw_loadsensing_dint(FB_LOADSENSING_DINT *a, FB_LOADSENSING_DINT *b, int want_valid)
+{
+    long k;
+    for (k = 0; k < 200000L; k++) {
+        static FB_LOADSENSING_DINT x;
+        int valid;
+        memset(&x, 0, sizeof x);
+        rnd_config_loadsensing_dint(&x);
+        valid = sl_loadsensing_dint_init(&x) == SL_OK && sl_loadsensing_dint_cycle(&x, 0u) == SL_OK;
+        if (valid == want_valid) {
+            memset(&x.bRun, 0, 0); /* keep x's parameters, reset the instance */
+            memset(a, 0, sizeof *a);
+            rnd_config_loadsensing_dint(a); /* placeholder, overwritten below */
+            a->nAnalogInX = x.nAnalogInX;
+            a->nAnalogInY = x.nAnalogInY;
+            a->dwOptions = x.dwOptions;
+            memcpy(a->aRow, x.aRow, sizeof a->aRow);
+            a->nRowCount = x.nRowCount;
+            a->wInputActive = x.wInputActive;
+            *b = *a;
+            return 1;
+        }
+    }
+    return 0;
+}
+static void test_loadsensing_dint(void)
+{
+    static FB_LOADSENSING_DINT a, b;
+    cds_sl_loadsensing_dint_cycle_struct p;
+    int c, k, bump, ok = 0, cycles = 0, inv_cycles = 0, inv_config = 0, reached_run = 0, reached_error = 0;
+    int hist[12] = {0};
+    unsigned pol = 0;
+    uint32_t t = 1000u;
+    memset(&a, 0, sizeof a);
+    memset(&b, 0, sizeof b);
+    memset(&p, 0, sizeof p);
+    p.pFb = NULL;
+    p.cds_sl_loadsensing_dint_cycle = 12345;
+    cds_sl_loadsensing_dint_cycle(&p);
+    CHECK(p.cds_sl_loadsensing_dint_cycle == SL_E_NULL, "cds_sl_loadsensing_dint_cycle(NULL) returned %d", (int)p.cds_sl_loadsensing_dint_cycle);
+    a.bRun = b.bRun = 1;
+    a.wInputActive = b.wInputActive = 1;
+    { cds_sl_loadsensing_dint_init_struct q; int32_t r; q.pFb = &a; cds_sl_loadsensing_dint_init(&q); r = sl_loadsensing_dint_init(&b);
+      CHECK(q.cds_sl_loadsensing_dint_init == r && memcmp(&a, &b, sizeof a) == 0, "cds_sl_loadsensing_dint_init differs from sl_loadsensing_dint_init"); }
+    rng = 3954036681u; /* FNV-1a of "FB_LOADSENSING_DINT" */
+    machine = 1u;
+    for (c = 0; c < 20; c++) {
+        int valid = c < 16; /* 16 valid configurations, then the labelled invalid share: 4 */
+        if (!draw_loadsensing_dint(&a, &b, valid)) {
+            CHECK(!valid, "FB_LOADSENSING_DINT: no valid configuration found in 200000 random draws");
+            continue;
+        }
+        if (!valid) inv_config++;
+        a.bInactive = b.bInactive = (uint8_t)(1);
+        a.bErrAck = b.bErrAck = (uint8_t)(0);
+        bump = 20 + (int)(rnd() % 20u);
+        pol = (c % 2 == 1) ? rnd() : 0u;
+        for (k = 0; k < 50; k++) {
+            int32_t direct;
+            next_machine();
+            a.bInactive = b.bInactive = next_signal(a.bInactive, 0, pol >> 0);
+            a.bErrAck = b.bErrAck = next_signal(a.bErrAck, 1, pol >> 1);
+            a.bRun = b.bRun = (uint8_t)(k >= 2 && rnd() % 100u != 0u);
+            if (valid && k == bump) { a.dwOptions++; b.dwOptions++; } /* changed while running: ERROR */
+            if (valid && k == bump + 2) { a.dwOptions--; b.dwOptions--; } /* restored */
+            p.pFb = &a;
+            p.tNow = t += 10u;
+            cds_sl_loadsensing_dint_cycle(&p);
+            direct = sl_loadsensing_dint_cycle(&b, p.tNow);
+            CHECK(p.cds_sl_loadsensing_dint_cycle == direct, "FB_LOADSENSING_DINT config %d cycle %d: adapter %d, direct %d", c, k, (int)p.cds_sl_loadsensing_dint_cycle, (int)direct);
+            CHECK(memcmp(&a, &b, sizeof a) == 0, "FB_LOADSENSING_DINT config %d cycle %d: instances differ", c, k);
+            if (!valid) { inv_cycles++; continue; }
+            cycles++;
+            if (direct == SL_OK) ok++;
+            if (direct <= 0 && direct > -12) hist[-direct]++;
+            if (b.nState == SL_STATE_ERROR) reached_error = 1;
+            if (b.nState != SL_STATE_STOP && b.nState != SL_STATE_ERROR && b.nState != SL_STATE_RESET && (b.bValid || b.bWarning)) reached_run = 1;
+        }
+    }
+    printf("FB_LOADSENSING_DINT: %d of %d cycles (16 valid random configurations) returned SL_OK; run-like state %s, ERROR %s; invalid share: %d configurations, %d cycles\n", ok, cycles, reached_run ? "reached" : "NOT reached", reached_error ? "reached" : "NOT reached", inv_config, inv_cycles);
+    if (2 * ok <= cycles) printf("  status histogram (0, -1, ... -11): %d %d %d %d %d %d %d %d %d %d %d\n", hist[0], hist[1], hist[2], hist[3], hist[4], hist[5], hist[6], hist[7], hist[8], hist[9], hist[10]);
+    CHECK(cycles > 0 && 2 * ok > cycles, "FB_LOADSENSING_DINT: only %d of %d cycles with valid configurations returned SL_OK", ok, cycles);
+    CHECK(reached_run, "FB_LOADSENSING_DINT: the random test never reached a running state (an output on)");
+    CHECK(reached_error, "FB_LOADSENSING_DINT: the random test never reached ERROR");
+}
+
+static void rnd_config_loadsensing_udint(FB_LOADSENSING_UDINT *x)
+{
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nAnalogInX = (uint32_t)v[rnd() % 7u]; }
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nAnalogInY = (uint32_t)v[rnd() % 7u]; }
+    x->dwOptions = rnd_options();
+    { int i; for (i = 0; i < 25; i++) x->aRow[i].nX = (uint32_t)(4u * (unsigned)i + rnd() % 4u); }
+    { int i; for (i = 0; i < 25; i++) x->aRow[i].nY1 = (uint32_t)(4u * (unsigned)i + rnd() % 4u); }
+    { int i; for (i = 0; i < 25; i++) x->aRow[i].nY2 = (uint32_t)(4u * (unsigned)i + rnd() % 4u); }
+    { int i; for (i = 0; i < 25; i++) x->aRow[i].nWY1 = (uint32_t)(4u * (unsigned)i + rnd() % 4u); }
+    { int i; for (i = 0; i < 25; i++) x->aRow[i].nWY2 = (uint32_t)(4u * (unsigned)i + rnd() % 4u); }
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nRowCount = (uint16_t)v[rnd() % 7u]; }
+    x->wInputActive = (uint16_t)(rnd() & 0x301u);
+}
+/* 1: a valid configuration (want_valid) or an invalid one was drawn into a and b */
+static int draw_loadsensing_udint(FB_LOADSENSING_UDINT *a, FB_LOADSENSING_UDINT *b, int want_valid)
+{
+    long k;
+    for (k = 0; k < 200000L; k++) {
+        static FB_LOADSENSING_UDINT x;
+        int valid;
+        memset(&x, 0, sizeof x);
+        rnd_config_loadsensing_udint(&x);
+        valid = sl_loadsensing_udint_init(&x) == SL_OK && sl_loadsensing_udint_cycle(&x, 0u) == SL_OK;
+        if (valid == want_valid) {
+            memset(&x.bRun, 0, 0); /* keep x's parameters, reset the instance */
+            memset(a, 0, sizeof *a);
+            rnd_config_loadsensing_udint(a); /* placeholder, overwritten below */
+            a->nAnalogInX = x.nAnalogInX;
+            a->nAnalogInY = x.nAnalogInY;
+            a->dwOptions = x.dwOptions;
+            memcpy(a->aRow, x.aRow, sizeof a->aRow);
+            a->nRowCount = x.nRowCount;
+            a->wInputActive = x.wInputActive;
+            *b = *a;
+            return 1;
+        }
+    }
+    return 0;
+}
+static void test_loadsensing_udint(void)
+{
+    static FB_LOADSENSING_UDINT a, b;
+    cds_sl_loadsensing_udint_cycle_struct p;
+    int c, k, bump, ok = 0, cycles = 0, inv_cycles = 0, inv_config = 0, reached_run = 0, reached_error = 0;
+    int hist[12] = {0};
+    unsigned pol = 0;
+    uint32_t t = 1000u;
+    memset(&a, 0, sizeof a);
+    memset(&b, 0, sizeof b);
+    memset(&p, 0, sizeof p);
+    p.pFb = NULL;
+    p.cds_sl_loadsensing_udint_cycle = 12345;
+    cds_sl_loadsensing_udint_cycle(&p);
+    CHECK(p.cds_sl_loadsensing_udint_cycle == SL_E_NULL, "cds_sl_loadsensing_udint_cycle(NULL) returned %d", (int)p.cds_sl_loadsensing_udint_cycle);
+    a.bRun = b.bRun = 1;
+    a.wInputActive = b.wInputActive = 1;
+    { cds_sl_loadsensing_udint_init_struct q; int32_t r; q.pFb = &a; cds_sl_loadsensing_udint_init(&q); r = sl_loadsensing_udint_init(&b);
+      CHECK(q.cds_sl_loadsensing_udint_init == r && memcmp(&a, &b, sizeof a) == 0, "cds_sl_loadsensing_udint_init differs from sl_loadsensing_udint_init"); }
+    rng = 1841219942u; /* FNV-1a of "FB_LOADSENSING_UDINT" */
+    machine = 1u;
+    for (c = 0; c < 20; c++) {
+        int valid = c < 16; /* 16 valid configurations, then the labelled invalid share: 4 */
+        if (!draw_loadsensing_udint(&a, &b, valid)) {
+            CHECK(!valid, "FB_LOADSENSING_UDINT: no valid configuration found in 200000 random draws");
+            continue;
+        }
+        if (!valid) inv_config++;
+        a.bInactive = b.bInactive = (uint8_t)(1);
+        a.bErrAck = b.bErrAck = (uint8_t)(0);
+        bump = 20 + (int)(rnd() % 20u);
+        pol = (c % 2 == 1) ? rnd() : 0u;
+        for (k = 0; k < 50; k++) {
+            int32_t direct;
+            next_machine();
+            a.bInactive = b.bInactive = next_signal(a.bInactive, 0, pol >> 0);
+            a.bErrAck = b.bErrAck = next_signal(a.bErrAck, 1, pol >> 1);
+            a.bRun = b.bRun = (uint8_t)(k >= 2 && rnd() % 100u != 0u);
+            if (valid && k == bump) { a.dwOptions++; b.dwOptions++; } /* changed while running: ERROR */
+            if (valid && k == bump + 2) { a.dwOptions--; b.dwOptions--; } /* restored */
+            p.pFb = &a;
+            p.tNow = t += 10u;
+            cds_sl_loadsensing_udint_cycle(&p);
+            direct = sl_loadsensing_udint_cycle(&b, p.tNow);
+            CHECK(p.cds_sl_loadsensing_udint_cycle == direct, "FB_LOADSENSING_UDINT config %d cycle %d: adapter %d, direct %d", c, k, (int)p.cds_sl_loadsensing_udint_cycle, (int)direct);
+            CHECK(memcmp(&a, &b, sizeof a) == 0, "FB_LOADSENSING_UDINT config %d cycle %d: instances differ", c, k);
+            if (!valid) { inv_cycles++; continue; }
+            cycles++;
+            if (direct == SL_OK) ok++;
+            if (direct <= 0 && direct > -12) hist[-direct]++;
+            if (b.nState == SL_STATE_ERROR) reached_error = 1;
+            if (b.nState != SL_STATE_STOP && b.nState != SL_STATE_ERROR && b.nState != SL_STATE_RESET && (b.bValid || b.bWarning)) reached_run = 1;
+        }
+    }
+    printf("FB_LOADSENSING_UDINT: %d of %d cycles (16 valid random configurations) returned SL_OK; run-like state %s, ERROR %s; invalid share: %d configurations, %d cycles\n", ok, cycles, reached_run ? "reached" : "NOT reached", reached_error ? "reached" : "NOT reached", inv_config, inv_cycles);
+    if (2 * ok <= cycles) printf("  status histogram (0, -1, ... -11): %d %d %d %d %d %d %d %d %d %d %d\n", hist[0], hist[1], hist[2], hist[3], hist[4], hist[5], hist[6], hist[7], hist[8], hist[9], hist[10]);
+    CHECK(cycles > 0 && 2 * ok > cycles, "FB_LOADSENSING_UDINT: only %d of %d cycles with valid configurations returned SL_OK", ok, cycles);
+    CHECK(reached_run, "FB_LOADSENSING_UDINT: the random test never reached a running state (an output on)");
+    CHECK(reached_error, "FB_LOADSENSING_UDINT: the random test never reached ERROR");
+}
+
+static void rnd_config_envelope_int(FB_ENVELOPE_INT *x)
+{
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nInValue = (int16_t)v[rnd() % 7u]; }
+    x->tTimeAfterInTarget = rnd_time();
+    x->tMaxTime = rnd_time();
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nTargetValue = (uint32_t)v[rnd() % 7u]; }
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nOffset = (uint32_t)v[rnd() % 7u]; }
+    x->wInputActive = (uint16_t)(rnd() & 0x101u);
+}
+/* 1: a valid configuration (want_valid) or an invalid one was drawn into a and b */
+static int draw_envelope_int(FB_ENVELOPE_INT *a, FB_ENVELOPE_INT *b, int want_valid)
+{
+    long k;
+    for (k = 0; k < 200000L; k++) {
+        static FB_ENVELOPE_INT x;
+        int valid;
+        memset(&x, 0, sizeof x);
+        rnd_config_envelope_int(&x);
+        valid = sl_envelope_int_init(&x) == SL_OK && sl_envelope_int_cycle(&x, 0u) == SL_OK;
+        if (valid == want_valid) {
+            memset(&x.bRun, 0, 0); /* keep x's parameters, reset the instance */
+            memset(a, 0, sizeof *a);
+            rnd_config_envelope_int(a); /* placeholder, overwritten below */
+            a->nInValue = x.nInValue;
+            a->tTimeAfterInTarget = x.tTimeAfterInTarget;
+            a->tMaxTime = x.tMaxTime;
+            a->nTargetValue = x.nTargetValue;
+            a->nOffset = x.nOffset;
+            a->wInputActive = x.wInputActive;
+            *b = *a;
+            return 1;
+        }
+    }
+    return 0;
+}
+static void test_envelope_int(void)
+{
+    static FB_ENVELOPE_INT a, b;
+    cds_sl_envelope_int_cycle_struct p;
+    int c, k, bump, ok = 0, cycles = 0, inv_cycles = 0, inv_config = 0, reached_run = 0, reached_error = 0;
+    int hist[12] = {0};
+    unsigned pol = 0;
+    uint32_t t = 1000u;
+    memset(&a, 0, sizeof a);
+    memset(&b, 0, sizeof b);
+    memset(&p, 0, sizeof p);
+    p.pFb = NULL;
+    p.cds_sl_envelope_int_cycle = 12345;
+    cds_sl_envelope_int_cycle(&p);
+    CHECK(p.cds_sl_envelope_int_cycle == SL_E_NULL, "cds_sl_envelope_int_cycle(NULL) returned %d", (int)p.cds_sl_envelope_int_cycle);
+    a.bRun = b.bRun = 1;
+    a.wInputActive = b.wInputActive = 1;
+    { cds_sl_envelope_int_init_struct q; int32_t r; q.pFb = &a; cds_sl_envelope_int_init(&q); r = sl_envelope_int_init(&b);
+      CHECK(q.cds_sl_envelope_int_init == r && memcmp(&a, &b, sizeof a) == 0, "cds_sl_envelope_int_init differs from sl_envelope_int_init"); }
+    rng = 630261632u; /* FNV-1a of "FB_ENVELOPE_INT" */
+    machine = 1u;
+    for (c = 0; c < 20; c++) {
+        int valid = c < 16; /* 16 valid configurations, then the labelled invalid share: 4 */
+        if (!draw_envelope_int(&a, &b, valid)) {
+            CHECK(!valid, "FB_ENVELOPE_INT: no valid configuration found in 200000 random draws");
+            continue;
+        }
+        if (!valid) inv_config++;
+        a.bSafeFunction = b.bSafeFunction = (uint8_t)(1);
+        a.bErrAck = b.bErrAck = (uint8_t)(0);
+        bump = 20 + (int)(rnd() % 20u);
+        pol = (c % 2 == 1) ? rnd() : 0u;
+        for (k = 0; k < 50; k++) {
+            int32_t direct;
+            next_machine();
+            a.bSafeFunction = b.bSafeFunction = next_signal(a.bSafeFunction, 0, pol >> 0);
+            a.bErrAck = b.bErrAck = next_signal(a.bErrAck, 1, pol >> 1);
+            a.bRun = b.bRun = (uint8_t)(k >= 2 && rnd() % 100u != 0u);
+            if (valid && k == bump) { a.tTimeAfterInTarget++; b.tTimeAfterInTarget++; } /* changed while running: ERROR */
+            if (valid && k == bump + 2) { a.tTimeAfterInTarget--; b.tTimeAfterInTarget--; } /* restored */
+            p.pFb = &a;
+            p.tNow = t += 10u;
+            cds_sl_envelope_int_cycle(&p);
+            direct = sl_envelope_int_cycle(&b, p.tNow);
+            CHECK(p.cds_sl_envelope_int_cycle == direct, "FB_ENVELOPE_INT config %d cycle %d: adapter %d, direct %d", c, k, (int)p.cds_sl_envelope_int_cycle, (int)direct);
+            CHECK(memcmp(&a, &b, sizeof a) == 0, "FB_ENVELOPE_INT config %d cycle %d: instances differ", c, k);
+            if (!valid) { inv_cycles++; continue; }
+            cycles++;
+            if (direct == SL_OK) ok++;
+            if (direct <= 0 && direct > -12) hist[-direct]++;
+            if (b.nState == SL_STATE_ERROR) reached_error = 1;
+            if (b.nState != SL_STATE_STOP && b.nState != SL_STATE_ERROR && b.nState != SL_STATE_RESET && (b.bSafeFunctionOut)) reached_run = 1;
+        }
+    }
+    printf("FB_ENVELOPE_INT: %d of %d cycles (16 valid random configurations) returned SL_OK; run-like state %s, ERROR %s; invalid share: %d configurations, %d cycles\n", ok, cycles, reached_run ? "reached" : "NOT reached", reached_error ? "reached" : "NOT reached", inv_config, inv_cycles);
+    if (2 * ok <= cycles) printf("  status histogram (0, -1, ... -11): %d %d %d %d %d %d %d %d %d %d %d\n", hist[0], hist[1], hist[2], hist[3], hist[4], hist[5], hist[6], hist[7], hist[8], hist[9], hist[10]);
+    CHECK(cycles > 0 && 2 * ok > cycles, "FB_ENVELOPE_INT: only %d of %d cycles with valid configurations returned SL_OK", ok, cycles);
+    CHECK(reached_run, "FB_ENVELOPE_INT: the random test never reached a running state (an output on)");
+    CHECK(reached_error, "FB_ENVELOPE_INT: the random test never reached ERROR");
+}
+
+static void rnd_config_envelope_uint(FB_ENVELOPE_UINT *x)
+{
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nInValue = (uint16_t)v[rnd() % 7u]; }
+    x->tTimeAfterInTarget = rnd_time();
+    x->tMaxTime = rnd_time();
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nTargetValue = (uint32_t)v[rnd() % 7u]; }
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nOffset = (uint32_t)v[rnd() % 7u]; }
+    x->wInputActive = (uint16_t)(rnd() & 0x101u);
+}
+/* 1: a valid configuration (want_valid) or an invalid one was drawn into a and b */
+static int draw_envelope_uint(FB_ENVELOPE_UINT *a, FB_ENVELOPE_UINT *b, int want_valid)
+{
+    long k;
+    for (k = 0; k < 200000L; k++) {
+        static FB_ENVELOPE_UINT x;
+        int valid;
+        memset(&x, 0, sizeof x);
+        rnd_config_envelope_uint(&x);
+        valid = sl_envelope_uint_init(&x) == SL_OK && sl_envelope_uint_cycle(&x, 0u) == SL_OK;
+        if (valid == want_valid) {
+            memset(&x.bRun, 0, 0); /* keep x's parameters, reset the instance */
+            memset(a, 0, sizeof *a);
+            rnd_config_envelope_uint(a); /* placeholder, overwritten below */
+            a->nInValue = x.nInValue;
+            a->tTimeAfterInTarget = x.tTimeAfterInTarget;
+            a->tMaxTime = x.tMaxTime;
+            a->nTargetValue = x.nTargetValue;
+            a->nOffset = x.nOffset;
+            a->wInputActive = x.wInputActive;
+            *b = *a;
+            return 1;
+        }
+    }
+    return 0;
+}
+static void test_envelope_uint(void)
+{
+    static FB_ENVELOPE_UINT a, b;
+    cds_sl_envelope_uint_cycle_struct p;
+    int c, k, bump, ok = 0, cycles = 0, inv_cycles = 0, inv_config = 0, reached_run = 0, reached_error = 0;
+    int hist[12] = {0};
+    unsigned pol = 0;
+    uint32_t t = 1000u;
+    memset(&a, 0, sizeof a);
+    memset(&b, 0, sizeof b);
+    memset(&p, 0, sizeof p);
+    p.pFb = NULL;
+    p.cds_sl_envelope_uint_cycle = 12345;
+    cds_sl_envelope_uint_cycle(&p);
+    CHECK(p.cds_sl_envelope_uint_cycle == SL_E_NULL, "cds_sl_envelope_uint_cycle(NULL) returned %d", (int)p.cds_sl_envelope_uint_cycle);
+    a.bRun = b.bRun = 1;
+    a.wInputActive = b.wInputActive = 1;
+    { cds_sl_envelope_uint_init_struct q; int32_t r; q.pFb = &a; cds_sl_envelope_uint_init(&q); r = sl_envelope_uint_init(&b);
+      CHECK(q.cds_sl_envelope_uint_init == r && memcmp(&a, &b, sizeof a) == 0, "cds_sl_envelope_uint_init differs from sl_envelope_uint_init"); }
+    rng = 1236388575u; /* FNV-1a of "FB_ENVELOPE_UINT" */
+    machine = 1u;
+    for (c = 0; c < 20; c++) {
+        int valid = c < 16; /* 16 valid configurations, then the labelled invalid share: 4 */
+        if (!draw_envelope_uint(&a, &b, valid)) {
+            CHECK(!valid, "FB_ENVELOPE_UINT: no valid configuration found in 200000 random draws");
+            continue;
+        }
+        if (!valid) inv_config++;
+        a.bSafeFunction = b.bSafeFunction = (uint8_t)(1);
+        a.bErrAck = b.bErrAck = (uint8_t)(0);
+        bump = 20 + (int)(rnd() % 20u);
+        pol = (c % 2 == 1) ? rnd() : 0u;
+        for (k = 0; k < 50; k++) {
+            int32_t direct;
+            next_machine();
+            a.bSafeFunction = b.bSafeFunction = next_signal(a.bSafeFunction, 0, pol >> 0);
+            a.bErrAck = b.bErrAck = next_signal(a.bErrAck, 1, pol >> 1);
+            a.bRun = b.bRun = (uint8_t)(k >= 2 && rnd() % 100u != 0u);
+            if (valid && k == bump) { a.tTimeAfterInTarget++; b.tTimeAfterInTarget++; } /* changed while running: ERROR */
+            if (valid && k == bump + 2) { a.tTimeAfterInTarget--; b.tTimeAfterInTarget--; } /* restored */
+            p.pFb = &a;
+            p.tNow = t += 10u;
+            cds_sl_envelope_uint_cycle(&p);
+            direct = sl_envelope_uint_cycle(&b, p.tNow);
+            CHECK(p.cds_sl_envelope_uint_cycle == direct, "FB_ENVELOPE_UINT config %d cycle %d: adapter %d, direct %d", c, k, (int)p.cds_sl_envelope_uint_cycle, (int)direct);
+            CHECK(memcmp(&a, &b, sizeof a) == 0, "FB_ENVELOPE_UINT config %d cycle %d: instances differ", c, k);
+            if (!valid) { inv_cycles++; continue; }
+            cycles++;
+            if (direct == SL_OK) ok++;
+            if (direct <= 0 && direct > -12) hist[-direct]++;
+            if (b.nState == SL_STATE_ERROR) reached_error = 1;
+            if (b.nState != SL_STATE_STOP && b.nState != SL_STATE_ERROR && b.nState != SL_STATE_RESET && (b.bSafeFunctionOut)) reached_run = 1;
+        }
+    }
+    printf("FB_ENVELOPE_UINT: %d of %d cycles (16 valid random configurations) returned SL_OK; run-like state %s, ERROR %s; invalid share: %d configurations, %d cycles\n", ok, cycles, reached_run ? "reached" : "NOT reached", reached_error ? "reached" : "NOT reached", inv_config, inv_cycles);
+    if (2 * ok <= cycles) printf("  status histogram (0, -1, ... -11): %d %d %d %d %d %d %d %d %d %d %d\n", hist[0], hist[1], hist[2], hist[3], hist[4], hist[5], hist[6], hist[7], hist[8], hist[9], hist[10]);
+    CHECK(cycles > 0 && 2 * ok > cycles, "FB_ENVELOPE_UINT: only %d of %d cycles with valid configurations returned SL_OK", ok, cycles);
+    CHECK(reached_run, "FB_ENVELOPE_UINT: the random test never reached a running state (an output on)");
+    CHECK(reached_error, "FB_ENVELOPE_UINT: the random test never reached ERROR");
+}
+
+static void rnd_config_envelope_dint(FB_ENVELOPE_DINT *x)
+{
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nInValue = (int32_t)v[rnd() % 7u]; }
+    x->tTimeAfterInTarget = rnd_time();
+    x->tMaxTime = rnd_time();
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nTargetValue = (uint32_t)v[rnd() % 7u]; }
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nOffset = (uint32_t)v[rnd() % 7u]; }
+    x->wInputActive = (uint16_t)(rnd() & 0x101u);
+}
+/* 1: a valid configuration (want_valid) or an invalid one was drawn into a and b */
+static int draw_envelope_dint(FB_ENVELOPE_DINT *a, FB_ENVELOPE_DINT *b, int want_valid)
+{
+    long k;
+    for (k = 0; k < 200000L; k++) {
+        static FB_ENVELOPE_DINT x;
+        int valid;
+        memset(&x, 0, sizeof x);
+        rnd_config_envelope_dint(&x);
+        valid = sl_envelope_dint_init(&x) == SL_OK && sl_envelope_dint_cycle(&x, 0u) == SL_OK;
+        if (valid == want_valid) {
+            memset(&x.bRun, 0, 0); /* keep x's parameters, reset the instance */
+            memset(a, 0, sizeof *a);
+            rnd_config_envelope_dint(a); /* placeholder, overwritten below */
+            a->nInValue = x.nInValue;
+            a->tTimeAfterInTarget = x.tTimeAfterInTarget;
+            a->tMaxTime = x.tMaxTime;
+            a->nTargetValue = x.nTargetValue;
+            a->nOffset = x.nOffset;
+            a->wInputActive = x.wInputActive;
+            *b = *a;
+            return 1;
+        }
+    }
+    return 0;
+}
+static void test_envelope_dint(void)
+{
+    static FB_ENVELOPE_DINT a, b;
+    cds_sl_envelope_dint_cycle_struct p;
+    int c, k, bump, ok = 0, cycles = 0, inv_cycles = 0, inv_config = 0, reached_run = 0, reached_error = 0;
+    int hist[12] = {0};
+    unsigned pol = 0;
+    uint32_t t = 1000u;
+    memset(&a, 0, sizeof a);
+    memset(&b, 0, sizeof b);
+    memset(&p, 0, sizeof p);
+    p.pFb = NULL;
+    p.cds_sl_envelope_dint_cycle = 12345;
+    cds_sl_envelope_dint_cycle(&p);
+    CHECK(p.cds_sl_envelope_dint_cycle == SL_E_NULL, "cds_sl_envelope_dint_cycle(NULL) returned %d", (int)p.cds_sl_envelope_dint_cycle);
+    a.bRun = b.bRun = 1;
+    a.wInputActive = b.wInputActive = 1;
+    { cds_sl_envelope_dint_init_struct q; int32_t r; q.pFb = &a; cds_sl_envelope_dint_init(&q); r = sl_envelope_dint_init(&b);
+      CHECK(q.cds_sl_envelope_dint_init == r && memcmp(&a, &b, sizeof a) == 0, "cds_sl_envelope_dint_init differs from sl_envelope_dint_init"); }
+    rng = 3850923058u; /* FNV-1a of "FB_ENVELOPE_DINT" */
+    machine = 1u;
+    for (c = 0; c < 20; c++) {
+        int valid = c < 16; /* 16 valid configurations, then the labelled invalid share: 4 */
+        if (!draw_envelope_dint(&a, &b, valid)) {
+            CHECK(!valid, "FB_ENVELOPE_DINT: no valid configuration found in 200000 random draws");
+            continue;
+        }
+        if (!valid) inv_config++;
+        a.bSafeFunction = b.bSafeFunction = (uint8_t)(1);
+        a.bErrAck = b.bErrAck = (uint8_t)(0);
+        bump = 20 + (int)(rnd() % 20u);
+        pol = (c % 2 == 1) ? rnd() : 0u;
+        for (k = 0; k < 50; k++) {
+            int32_t direct;
+            next_machine();
+            a.bSafeFunction = b.bSafeFunction = next_signal(a.bSafeFunction, 0, pol >> 0);
+            a.bErrAck = b.bErrAck = next_signal(a.bErrAck, 1, pol >> 1);
+            a.bRun = b.bRun = (uint8_t)(k >= 2 && rnd() % 100u != 0u);
+            if (valid && k == bump) { a.tTimeAfterInTarget++; b.tTimeAfterInTarget++; } /* changed while running: ERROR */
+            if (valid && k == bump + 2) { a.tTimeAfterInTarget--; b.tTimeAfterInTarget--; } /* restored */
+            p.pFb = &a;
+            p.tNow = t += 10u;
+            cds_sl_envelope_dint_cycle(&p);
+            direct = sl_envelope_dint_cycle(&b, p.tNow);
+            CHECK(p.cds_sl_envelope_dint_cycle == direct, "FB_ENVELOPE_DINT config %d cycle %d: adapter %d, direct %d", c, k, (int)p.cds_sl_envelope_dint_cycle, (int)direct);
+            CHECK(memcmp(&a, &b, sizeof a) == 0, "FB_ENVELOPE_DINT config %d cycle %d: instances differ", c, k);
+            if (!valid) { inv_cycles++; continue; }
+            cycles++;
+            if (direct == SL_OK) ok++;
+            if (direct <= 0 && direct > -12) hist[-direct]++;
+            if (b.nState == SL_STATE_ERROR) reached_error = 1;
+            if (b.nState != SL_STATE_STOP && b.nState != SL_STATE_ERROR && b.nState != SL_STATE_RESET && (b.bSafeFunctionOut)) reached_run = 1;
+        }
+    }
+    printf("FB_ENVELOPE_DINT: %d of %d cycles (16 valid random configurations) returned SL_OK; run-like state %s, ERROR %s; invalid share: %d configurations, %d cycles\n", ok, cycles, reached_run ? "reached" : "NOT reached", reached_error ? "reached" : "NOT reached", inv_config, inv_cycles);
+    if (2 * ok <= cycles) printf("  status histogram (0, -1, ... -11): %d %d %d %d %d %d %d %d %d %d %d\n", hist[0], hist[1], hist[2], hist[3], hist[4], hist[5], hist[6], hist[7], hist[8], hist[9], hist[10]);
+    CHECK(cycles > 0 && 2 * ok > cycles, "FB_ENVELOPE_DINT: only %d of %d cycles with valid configurations returned SL_OK", ok, cycles);
+    CHECK(reached_run, "FB_ENVELOPE_DINT: the random test never reached a running state (an output on)");
+    CHECK(reached_error, "FB_ENVELOPE_DINT: the random test never reached ERROR");
+}
+
+static void rnd_config_envelope_udint(FB_ENVELOPE_UDINT *x)
+{
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nInValue = (uint32_t)v[rnd() % 7u]; }
+    x->tTimeAfterInTarget = rnd_time();
+    x->tMaxTime = rnd_time();
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nTargetValue = (uint32_t)v[rnd() % 7u]; }
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nOffset = (uint32_t)v[rnd() % 7u]; }
+    x->wInputActive = (uint16_t)(rnd() & 0x101u);
+}
+/* 1: a valid configuration (want_valid) or an invalid one was drawn into a and b */
+static int draw_envelope_udint(FB_ENVELOPE_UDINT *a, FB_ENVELOPE_UDINT *b, int want_valid)
+{
+    long k;
+    for (k = 0; k < 200000L; k++) {
+        static FB_ENVELOPE_UDINT x;
+        int valid;
+        memset(&x, 0, sizeof x);
+        rnd_config_envelope_udint(&x);
+        valid = sl_envelope_udint_init(&x) == SL_OK && sl_envelope_udint_cycle(&x, 0u) == SL_OK;
+        if (valid == want_valid) {
+            memset(&x.bRun, 0, 0); /* keep x's parameters, reset the instance */
+            memset(a, 0, sizeof *a);
+            rnd_config_envelope_udint(a); /* placeholder, overwritten below */
+            a->nInValue = x.nInValue;
+            a->tTimeAfterInTarget = x.tTimeAfterInTarget;
+            a->tMaxTime = x.tMaxTime;
+            a->nTargetValue = x.nTargetValue;
+            a->nOffset = x.nOffset;
+            a->wInputActive = x.wInputActive;
+            *b = *a;
+            return 1;
+        }
+    }
+    return 0;
+}
+static void test_envelope_udint(void)
+{
+    static FB_ENVELOPE_UDINT a, b;
+    cds_sl_envelope_udint_cycle_struct p;
+    int c, k, bump, ok = 0, cycles = 0, inv_cycles = 0, inv_config = 0, reached_run = 0, reached_error = 0;
+    int hist[12] = {0};
+    unsigned pol = 0;
+    uint32_t t = 1000u;
+    memset(&a, 0, sizeof a);
+    memset(&b, 0, sizeof b);
+    memset(&p, 0, sizeof p);
+    p.pFb = NULL;
+    p.cds_sl_envelope_udint_cycle = 12345;
+    cds_sl_envelope_udint_cycle(&p);
+    CHECK(p.cds_sl_envelope_udint_cycle == SL_E_NULL, "cds_sl_envelope_udint_cycle(NULL) returned %d", (int)p.cds_sl_envelope_udint_cycle);
+    a.bRun = b.bRun = 1;
+    a.wInputActive = b.wInputActive = 1;
+    { cds_sl_envelope_udint_init_struct q; int32_t r; q.pFb = &a; cds_sl_envelope_udint_init(&q); r = sl_envelope_udint_init(&b);
+      CHECK(q.cds_sl_envelope_udint_init == r && memcmp(&a, &b, sizeof a) == 0, "cds_sl_envelope_udint_init differs from sl_envelope_udint_init"); }
+    rng = 572099087u; /* FNV-1a of "FB_ENVELOPE_UDINT" */
+    machine = 1u;
+    for (c = 0; c < 20; c++) {
+        int valid = c < 16; /* 16 valid configurations, then the labelled invalid share: 4 */
+        if (!draw_envelope_udint(&a, &b, valid)) {
+            CHECK(!valid, "FB_ENVELOPE_UDINT: no valid configuration found in 200000 random draws");
+            continue;
+        }
+        if (!valid) inv_config++;
+        a.bSafeFunction = b.bSafeFunction = (uint8_t)(1);
+        a.bErrAck = b.bErrAck = (uint8_t)(0);
+        bump = 20 + (int)(rnd() % 20u);
+        pol = (c % 2 == 1) ? rnd() : 0u;
+        for (k = 0; k < 50; k++) {
+            int32_t direct;
+            next_machine();
+            a.bSafeFunction = b.bSafeFunction = next_signal(a.bSafeFunction, 0, pol >> 0);
+            a.bErrAck = b.bErrAck = next_signal(a.bErrAck, 1, pol >> 1);
+            a.bRun = b.bRun = (uint8_t)(k >= 2 && rnd() % 100u != 0u);
+            if (valid && k == bump) { a.tTimeAfterInTarget++; b.tTimeAfterInTarget++; } /* changed while running: ERROR */
+            if (valid && k == bump + 2) { a.tTimeAfterInTarget--; b.tTimeAfterInTarget--; } /* restored */
+            p.pFb = &a;
+            p.tNow = t += 10u;
+            cds_sl_envelope_udint_cycle(&p);
+            direct = sl_envelope_udint_cycle(&b, p.tNow);
+            CHECK(p.cds_sl_envelope_udint_cycle == direct, "FB_ENVELOPE_UDINT config %d cycle %d: adapter %d, direct %d", c, k, (int)p.cds_sl_envelope_udint_cycle, (int)direct);
+            CHECK(memcmp(&a, &b, sizeof a) == 0, "FB_ENVELOPE_UDINT config %d cycle %d: instances differ", c, k);
+            if (!valid) { inv_cycles++; continue; }
+            cycles++;
+            if (direct == SL_OK) ok++;
+            if (direct <= 0 && direct > -12) hist[-direct]++;
+            if (b.nState == SL_STATE_ERROR) reached_error = 1;
+            if (b.nState != SL_STATE_STOP && b.nState != SL_STATE_ERROR && b.nState != SL_STATE_RESET && (b.bSafeFunctionOut)) reached_run = 1;
+        }
+    }
+    printf("FB_ENVELOPE_UDINT: %d of %d cycles (16 valid random configurations) returned SL_OK; run-like state %s, ERROR %s; invalid share: %d configurations, %d cycles\n", ok, cycles, reached_run ? "reached" : "NOT reached", reached_error ? "reached" : "NOT reached", inv_config, inv_cycles);
+    if (2 * ok <= cycles) printf("  status histogram (0, -1, ... -11): %d %d %d %d %d %d %d %d %d %d %d\n", hist[0], hist[1], hist[2], hist[3], hist[4], hist[5], hist[6], hist[7], hist[8], hist[9], hist[10]);
+    CHECK(cycles > 0 && 2 * ok > cycles, "FB_ENVELOPE_UDINT: only %d of %d cycles with valid configurations returned SL_OK", ok, cycles);
+    CHECK(reached_run, "FB_ENVELOPE_UDINT: the random test never reached a running state (an output on)");
+    CHECK(reached_error, "FB_ENVELOPE_UDINT: the random test never reached ERROR");
+}
+
 static void rnd_config_counter_int(FB_COUNTER_INT *x)
 {
     { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nPresetValue = (int16_t)v[rnd() % 7u]; }
@@ -6918,6 +7823,14 @@ int main(void)
     test_speed_uint();
     test_speed_dint();
     test_speed_udint();
+    test_loadsensing_int();
+    test_loadsensing_uint();
+    test_loadsensing_dint();
+    test_loadsensing_udint();
+    test_envelope_int();
+    test_envelope_uint();
+    test_envelope_dint();
+    test_envelope_udint();
     test_counter_int();
     test_counter_uint();
     test_counter_dint();

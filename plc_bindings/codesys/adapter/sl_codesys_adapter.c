@@ -762,6 +762,134 @@ void CDECL CDECL_EXT cds_sl_speed_udint_cycle(cds_sl_speed_udint_cycle_struct *p
     p->cds_sl_speed_udint_cycle = sl_speed_udint_cycle(p->pFb, p->tNow);
 }
 
+void CDECL CDECL_EXT cds_sl_loadsensing_int_init(cds_sl_loadsensing_int_init_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_loadsensing_int_init = sl_loadsensing_int_init(p->pFb);
+}
+
+void CDECL CDECL_EXT cds_sl_loadsensing_int_cycle(cds_sl_loadsensing_int_cycle_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_loadsensing_int_cycle = sl_loadsensing_int_cycle(p->pFb, p->tNow);
+}
+
+void CDECL CDECL_EXT cds_sl_loadsensing_uint_init(cds_sl_loadsensing_uint_init_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_loadsensing_uint_init = sl_loadsensing_uint_init(p->pFb);
+}
+
+void CDECL CDECL_EXT cds_sl_loadsensing_uint_cycle(cds_sl_loadsensing_uint_cycle_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_loadsensing_uint_cycle = sl_loadsensing_uint_cycle(p->pFb, p->tNow);
+}
+
+void CDECL CDECL_EXT cds_sl_loadsensing_dint_init(cds_sl_loadsensing_dint_init_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_loadsensing_dint_init = sl_loadsensing_dint_init(p->pFb);
+}
+
+void CDECL CDECL_EXT cds_sl_loadsensing_dint_cycle(cds_sl_loadsensing_dint_cycle_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_loadsensing_dint_cycle = sl_loadsensing_dint_cycle(p->pFb, p->tNow);
+}
+
+void CDECL CDECL_EXT cds_sl_loadsensing_udint_init(cds_sl_loadsensing_udint_init_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_loadsensing_udint_init = sl_loadsensing_udint_init(p->pFb);
+}
+
+void CDECL CDECL_EXT cds_sl_loadsensing_udint_cycle(cds_sl_loadsensing_udint_cycle_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_loadsensing_udint_cycle = sl_loadsensing_udint_cycle(p->pFb, p->tNow);
+}
+
+void CDECL CDECL_EXT cds_sl_envelope_int_init(cds_sl_envelope_int_init_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_envelope_int_init = sl_envelope_int_init(p->pFb);
+}
+
+void CDECL CDECL_EXT cds_sl_envelope_int_cycle(cds_sl_envelope_int_cycle_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_envelope_int_cycle = sl_envelope_int_cycle(p->pFb, p->tNow);
+}
+
+void CDECL CDECL_EXT cds_sl_envelope_uint_init(cds_sl_envelope_uint_init_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_envelope_uint_init = sl_envelope_uint_init(p->pFb);
+}
+
+void CDECL CDECL_EXT cds_sl_envelope_uint_cycle(cds_sl_envelope_uint_cycle_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_envelope_uint_cycle = sl_envelope_uint_cycle(p->pFb, p->tNow);
+}
+
+void CDECL CDECL_EXT cds_sl_envelope_dint_init(cds_sl_envelope_dint_init_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_envelope_dint_init = sl_envelope_dint_init(p->pFb);
+}
+
+void CDECL CDECL_EXT cds_sl_envelope_dint_cycle(cds_sl_envelope_dint_cycle_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_envelope_dint_cycle = sl_envelope_dint_cycle(p->pFb, p->tNow);
+}
+
+void CDECL CDECL_EXT cds_sl_envelope_udint_init(cds_sl_envelope_udint_init_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_envelope_udint_init = sl_envelope_udint_init(p->pFb);
+}
+
+void CDECL CDECL_EXT cds_sl_envelope_udint_cycle(cds_sl_envelope_udint_cycle_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_envelope_udint_cycle = sl_envelope_udint_cycle(p->pFb, p->tNow);
+}
+
 void CDECL CDECL_EXT cds_sl_counter_int_init(cds_sl_counter_int_init_struct *p)
 {
     if (p == 0) {

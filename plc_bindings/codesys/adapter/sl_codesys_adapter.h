@@ -739,6 +739,126 @@ typedef struct tagcds_sl_speed_udint_cycle_struct {
 } cds_sl_speed_udint_cycle_struct;
 void CDECL CDECL_EXT cds_sl_speed_udint_cycle(cds_sl_speed_udint_cycle_struct *p);
 
+/* FUNCTION cds_sl_loadsensing_int_init : DINT -> sl_loadsensing_int_init() */
+typedef struct tagcds_sl_loadsensing_int_init_struct {
+    struct FB_LOADSENSING_INT *pFb; /* VAR_INPUT pFb : POINTER TO ST_FB_LOADSENSING_INT */
+    int32_t cds_sl_loadsensing_int_init; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_loadsensing_int_init_struct;
+void CDECL CDECL_EXT cds_sl_loadsensing_int_init(cds_sl_loadsensing_int_init_struct *p);
+
+/* FUNCTION cds_sl_loadsensing_int_cycle : DINT -> sl_loadsensing_int_cycle() */
+typedef struct tagcds_sl_loadsensing_int_cycle_struct {
+    struct FB_LOADSENSING_INT *pFb; /* VAR_INPUT pFb : POINTER TO ST_FB_LOADSENSING_INT */
+    uint32_t tNow; /* VAR_INPUT tNow : UDINT */
+    int32_t cds_sl_loadsensing_int_cycle; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_loadsensing_int_cycle_struct;
+void CDECL CDECL_EXT cds_sl_loadsensing_int_cycle(cds_sl_loadsensing_int_cycle_struct *p);
+
+/* FUNCTION cds_sl_loadsensing_uint_init : DINT -> sl_loadsensing_uint_init() */
+typedef struct tagcds_sl_loadsensing_uint_init_struct {
+    struct FB_LOADSENSING_UINT *pFb; /* VAR_INPUT pFb : POINTER TO ST_FB_LOADSENSING_UINT */
+    int32_t cds_sl_loadsensing_uint_init; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_loadsensing_uint_init_struct;
+void CDECL CDECL_EXT cds_sl_loadsensing_uint_init(cds_sl_loadsensing_uint_init_struct *p);
+
+/* FUNCTION cds_sl_loadsensing_uint_cycle : DINT -> sl_loadsensing_uint_cycle() */
+typedef struct tagcds_sl_loadsensing_uint_cycle_struct {
+    struct FB_LOADSENSING_UINT *pFb; /* VAR_INPUT pFb : POINTER TO ST_FB_LOADSENSING_UINT */
+    uint32_t tNow; /* VAR_INPUT tNow : UDINT */
+    int32_t cds_sl_loadsensing_uint_cycle; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_loadsensing_uint_cycle_struct;
+void CDECL CDECL_EXT cds_sl_loadsensing_uint_cycle(cds_sl_loadsensing_uint_cycle_struct *p);
+
+/* FUNCTION cds_sl_loadsensing_dint_init : DINT -> sl_loadsensing_dint_init() */
+typedef struct tagcds_sl_loadsensing_dint_init_struct {
+    struct FB_LOADSENSING_DINT *pFb; /* VAR_INPUT pFb : POINTER TO ST_FB_LOADSENSING_DINT */
+    int32_t cds_sl_loadsensing_dint_init; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_loadsensing_dint_init_struct;
+void CDECL CDECL_EXT cds_sl_loadsensing_dint_init(cds_sl_loadsensing_dint_init_struct *p);
+
+/* FUNCTION cds_sl_loadsensing_dint_cycle : DINT -> sl_loadsensing_dint_cycle() */
+typedef struct tagcds_sl_loadsensing_dint_cycle_struct {
+    struct FB_LOADSENSING_DINT *pFb; /* VAR_INPUT pFb : POINTER TO ST_FB_LOADSENSING_DINT */
+    uint32_t tNow; /* VAR_INPUT tNow : UDINT */
+    int32_t cds_sl_loadsensing_dint_cycle; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_loadsensing_dint_cycle_struct;
+void CDECL CDECL_EXT cds_sl_loadsensing_dint_cycle(cds_sl_loadsensing_dint_cycle_struct *p);
+
+/* FUNCTION cds_sl_loadsensing_udint_init : DINT -> sl_loadsensing_udint_init() */
+typedef struct tagcds_sl_loadsensing_udint_init_struct {
+    struct FB_LOADSENSING_UDINT *pFb; /* VAR_INPUT pFb : POINTER TO ST_FB_LOADSENSING_UDINT */
+    int32_t cds_sl_loadsensing_udint_init; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_loadsensing_udint_init_struct;
+void CDECL CDECL_EXT cds_sl_loadsensing_udint_init(cds_sl_loadsensing_udint_init_struct *p);
+
+/* FUNCTION cds_sl_loadsensing_udint_cycle : DINT -> sl_loadsensing_udint_cycle() */
+typedef struct tagcds_sl_loadsensing_udint_cycle_struct {
+    struct FB_LOADSENSING_UDINT *pFb; /* VAR_INPUT pFb : POINTER TO ST_FB_LOADSENSING_UDINT */
+    uint32_t tNow; /* VAR_INPUT tNow : UDINT */
+    int32_t cds_sl_loadsensing_udint_cycle; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_loadsensing_udint_cycle_struct;
+void CDECL CDECL_EXT cds_sl_loadsensing_udint_cycle(cds_sl_loadsensing_udint_cycle_struct *p);
+
+/* FUNCTION cds_sl_envelope_int_init : DINT -> sl_envelope_int_init() */
+typedef struct tagcds_sl_envelope_int_init_struct {
+    struct FB_ENVELOPE_INT *pFb; /* VAR_INPUT pFb : POINTER TO ST_FB_ENVELOPE_INT */
+    int32_t cds_sl_envelope_int_init; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_envelope_int_init_struct;
+void CDECL CDECL_EXT cds_sl_envelope_int_init(cds_sl_envelope_int_init_struct *p);
+
+/* FUNCTION cds_sl_envelope_int_cycle : DINT -> sl_envelope_int_cycle() */
+typedef struct tagcds_sl_envelope_int_cycle_struct {
+    struct FB_ENVELOPE_INT *pFb; /* VAR_INPUT pFb : POINTER TO ST_FB_ENVELOPE_INT */
+    uint32_t tNow; /* VAR_INPUT tNow : UDINT */
+    int32_t cds_sl_envelope_int_cycle; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_envelope_int_cycle_struct;
+void CDECL CDECL_EXT cds_sl_envelope_int_cycle(cds_sl_envelope_int_cycle_struct *p);
+
+/* FUNCTION cds_sl_envelope_uint_init : DINT -> sl_envelope_uint_init() */
+typedef struct tagcds_sl_envelope_uint_init_struct {
+    struct FB_ENVELOPE_UINT *pFb; /* VAR_INPUT pFb : POINTER TO ST_FB_ENVELOPE_UINT */
+    int32_t cds_sl_envelope_uint_init; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_envelope_uint_init_struct;
+void CDECL CDECL_EXT cds_sl_envelope_uint_init(cds_sl_envelope_uint_init_struct *p);
+
+/* FUNCTION cds_sl_envelope_uint_cycle : DINT -> sl_envelope_uint_cycle() */
+typedef struct tagcds_sl_envelope_uint_cycle_struct {
+    struct FB_ENVELOPE_UINT *pFb; /* VAR_INPUT pFb : POINTER TO ST_FB_ENVELOPE_UINT */
+    uint32_t tNow; /* VAR_INPUT tNow : UDINT */
+    int32_t cds_sl_envelope_uint_cycle; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_envelope_uint_cycle_struct;
+void CDECL CDECL_EXT cds_sl_envelope_uint_cycle(cds_sl_envelope_uint_cycle_struct *p);
+
+/* FUNCTION cds_sl_envelope_dint_init : DINT -> sl_envelope_dint_init() */
+typedef struct tagcds_sl_envelope_dint_init_struct {
+    struct FB_ENVELOPE_DINT *pFb; /* VAR_INPUT pFb : POINTER TO ST_FB_ENVELOPE_DINT */
+    int32_t cds_sl_envelope_dint_init; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_envelope_dint_init_struct;
+void CDECL CDECL_EXT cds_sl_envelope_dint_init(cds_sl_envelope_dint_init_struct *p);
+
+/* FUNCTION cds_sl_envelope_dint_cycle : DINT -> sl_envelope_dint_cycle() */
+typedef struct tagcds_sl_envelope_dint_cycle_struct {
+    struct FB_ENVELOPE_DINT *pFb; /* VAR_INPUT pFb : POINTER TO ST_FB_ENVELOPE_DINT */
+    uint32_t tNow; /* VAR_INPUT tNow : UDINT */
+    int32_t cds_sl_envelope_dint_cycle; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_envelope_dint_cycle_struct;
+void CDECL CDECL_EXT cds_sl_envelope_dint_cycle(cds_sl_envelope_dint_cycle_struct *p);
+
+/* FUNCTION cds_sl_envelope_udint_init : DINT -> sl_envelope_udint_init() */
+typedef struct tagcds_sl_envelope_udint_init_struct {
+    struct FB_ENVELOPE_UDINT *pFb; /* VAR_INPUT pFb : POINTER TO ST_FB_ENVELOPE_UDINT */
+    int32_t cds_sl_envelope_udint_init; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_envelope_udint_init_struct;
+void CDECL CDECL_EXT cds_sl_envelope_udint_init(cds_sl_envelope_udint_init_struct *p);
+
+/* FUNCTION cds_sl_envelope_udint_cycle : DINT -> sl_envelope_udint_cycle() */
+typedef struct tagcds_sl_envelope_udint_cycle_struct {
+    struct FB_ENVELOPE_UDINT *pFb; /* VAR_INPUT pFb : POINTER TO ST_FB_ENVELOPE_UDINT */
+    uint32_t tNow; /* VAR_INPUT tNow : UDINT */
+    int32_t cds_sl_envelope_udint_cycle; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_envelope_udint_cycle_struct;
+void CDECL CDECL_EXT cds_sl_envelope_udint_cycle(cds_sl_envelope_udint_cycle_struct *p);
+
 /* FUNCTION cds_sl_counter_int_init : DINT -> sl_counter_int_init() */
 typedef struct tagcds_sl_counter_int_init_struct {
     struct FB_COUNTER_INT *pFb; /* VAR_INPUT pFb : POINTER TO ST_FB_COUNTER_INT */
@@ -1106,6 +1226,22 @@ void CDECL CDECL_EXT cds_sl_group_cycle(cds_sl_group_cycle_struct *p);
     X(cds_sl_speed_dint_cycle) \
     X(cds_sl_speed_udint_init) \
     X(cds_sl_speed_udint_cycle) \
+    X(cds_sl_loadsensing_int_init) \
+    X(cds_sl_loadsensing_int_cycle) \
+    X(cds_sl_loadsensing_uint_init) \
+    X(cds_sl_loadsensing_uint_cycle) \
+    X(cds_sl_loadsensing_dint_init) \
+    X(cds_sl_loadsensing_dint_cycle) \
+    X(cds_sl_loadsensing_udint_init) \
+    X(cds_sl_loadsensing_udint_cycle) \
+    X(cds_sl_envelope_int_init) \
+    X(cds_sl_envelope_int_cycle) \
+    X(cds_sl_envelope_uint_init) \
+    X(cds_sl_envelope_uint_cycle) \
+    X(cds_sl_envelope_dint_init) \
+    X(cds_sl_envelope_dint_cycle) \
+    X(cds_sl_envelope_udint_init) \
+    X(cds_sl_envelope_udint_cycle) \
     X(cds_sl_counter_int_init) \
     X(cds_sl_counter_int_cycle) \
     X(cds_sl_counter_uint_init) \
