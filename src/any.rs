@@ -180,7 +180,10 @@ pub fn input_bit(block: &str, input: &str) -> Option<u8> {
     };
     let family = block.split('_').next().unwrap_or(block);
     let named = |names: &[&str], first: u8| -> Option<u8> {
-        names.iter().position(|n| *n == input).map(|i| first + i as u8)
+        names
+            .iter()
+            .position(|n| *n == input)
+            .map(|i| first + i as u8)
     };
     match family {
         "ESTOP" => nth("bEStopIn", 8),
@@ -192,7 +195,14 @@ pub fn input_bit(block: &str, input: &str) -> Option<u8> {
         "OPMODE" => nth("bOpIn", 8),
         "TWOHAND" => nth("bTwoHand", 4),
         "MUTING" => named(
-            &["bMutingIn1", "bMutingIn2", "bOSSDIn1", "bOSSDIn2", "bMutingIn3", "bMutingIn4"],
+            &[
+                "bMutingIn1",
+                "bMutingIn2",
+                "bOSSDIn1",
+                "bOSSDIn2",
+                "bMutingIn3",
+                "bMutingIn4",
+            ],
             0,
         ),
         "EDM" => named(&["bMon1", "bMon2"], 0),
@@ -224,12 +234,20 @@ mod tests {
             assert_eq!(any.fields(), b.fields);
             assert_eq!(any.state_name(), "?", "{} is all zero", b.info.name);
             // Every input and parameter can be written and read back by name.
-            for f in b.fields.iter().filter(|f| matches!(f.dir, Dir::Input | Dir::Param)) {
+            for f in b
+                .fields
+                .iter()
+                .filter(|f| matches!(f.dir, Dir::Input | Dir::Param))
+            {
                 let v = if f.kind == Kind::Bool { 1 } else { 7 };
                 assert_eq!(any.set(f.name, v), Ok(()), "{}.{}", b.info.name, f.name);
                 assert_eq!(any.value(f), Some(v), "{}.{}", b.info.name, f.name);
             }
-            for f in b.fields.iter().filter(|f| !matches!(f.dir, Dir::Input | Dir::Param)) {
+            for f in b
+                .fields
+                .iter()
+                .filter(|f| !matches!(f.dir, Dir::Input | Dir::Param))
+            {
                 assert_eq!(any.set(f.name, 0), Err(Status::Config));
             }
             assert_eq!(any.set("nope", 0), Err(Status::Config));
@@ -244,7 +262,12 @@ mod tests {
             for f in b.fields.iter().filter(|f| f.dir == Dir::Input) {
                 if let Some(bit) = input_bit(b.info.name, f.name) {
                     let xor_pair = b.info.name == "XOR" && f.name.starts_with("bXor2");
-                    assert!(xor_pair || seen & (1 << bit) == 0, "{} {}", b.info.name, f.name);
+                    assert!(
+                        xor_pair || seen & (1 << bit) == 0,
+                        "{} {}",
+                        b.info.name,
+                        f.name
+                    );
                     seen |= 1 << bit;
                 }
             }
@@ -271,7 +294,10 @@ mod tests {
         for b in &mut blocks {
             assert_eq!(b.init(), SL_OK);
         }
-        let mut g = SL_GROUP { bRun: 1, ..Default::default() };
+        let mut g = SL_GROUP {
+            bRun: 1,
+            ..Default::default()
+        };
         let mut links = [group::SL_LINK::default(); 1];
         assert_eq!(group::init(&mut g, 2, 1), SL_OK);
         for _ in 0..2 {
@@ -286,7 +312,10 @@ mod tests {
             nDstOffset: inp,
             ..Default::default()
         };
-        assert_eq!(group::add_link(&mut g, &mut blocks[..], &mut links, link), SL_OK);
+        assert_eq!(
+            group::add_link(&mut g, &mut blocks[..], &mut links, link),
+            SL_OK
+        );
         blocks[0].set("bEStopIn1", 1).unwrap();
         blocks[0].set("bEStopIn2", 1).unwrap();
         for (t, restart) in [(0, 0), (10, 1), (20, 0), (30, 0)] {

@@ -47,11 +47,7 @@ impl Source<'_> {
         let at = span.start.min(self.text.len());
         let before = &self.text[..at];
         let line = before.matches('\n').count() + 1;
-        let col = before
-            .rsplit('\n')
-            .next()
-            .map_or(0, |l| l.chars().count())
-            + 1;
+        let col = before.rsplit('\n').next().map_or(0, |l| l.chars().count()) + 1;
         Error {
             file: self.file.to_string(),
             line,

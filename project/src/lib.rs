@@ -6,6 +6,9 @@
 pub mod error;
 pub mod project;
 pub mod runtime;
+pub mod sim;
+pub mod svg;
+pub mod vcd;
 
 pub use error::Error;
 pub use project::Project;
@@ -16,3 +19,4 @@ pub fn load_project(path: &str) -> Result<Project, Error> {
     let text = std::fs::read_to_string(path).map_err(|e| error::io_error(path, &e))?;
     Project::parse(path, &text)
 }
+pub mod export_c;

@@ -275,7 +275,10 @@ fn input_mask(src: &Source, block: &BlockType, v: &Spanned<Value>) -> Result<i64
     let Value::Array(items) = v.get_ref() else {
         return Err(src.error(
             v.span(),
-            format!("wrong value type: {} given, expected a list of input names like [\"bEStopIn1\"]", type_name(v.get_ref())),
+            format!(
+                "wrong value type: {} given, expected a list of input names like [\"bEStopIn1\"]",
+                type_name(v.get_ref())
+            ),
         ));
     };
     let mut mask = 0i64;
@@ -336,7 +339,13 @@ impl Project {
                 return Err(src.error(n.span(), format!("`{}` is not a name; expected letters, digits and _ (starting with a letter)", n.get_ref())));
             }
             if seen.insert(n.get_ref().clone(), ()).is_some() {
-                return Err(src.error(n.span(), format!("duplicate name `{}`: groups and members need unique names", n.get_ref())));
+                return Err(src.error(
+                    n.span(),
+                    format!(
+                        "duplicate name `{}`: groups and members need unique names",
+                        n.get_ref()
+                    ),
+                ));
             }
             Ok(())
         };
@@ -347,7 +356,11 @@ impl Project {
             let mut members = Vec::new();
             for rm in &rg.member {
                 let m = parse_member(&src, rm)?;
-                let name_v = rm.get_ref().iter().find(|(k, _)| k.get_ref() == "name").map(|(_, v)| v);
+                let name_v = rm
+                    .get_ref()
+                    .iter()
+                    .find(|(k, _)| k.get_ref() == "name")
+                    .map(|(_, v)| v);
                 let span = name_v.map_or(rm.span(), Spanned::span);
                 claim(&Spanned::new(span, m.name.clone()))?;
                 members.push((m, rm.span()));
@@ -364,14 +377,30 @@ impl Project {
         // A "member.field" or "group.field" reference.
         let resolve = |s: &str, span: Range<usize>| -> Result<Place, Error> {
             let Some((owner, field)) = s.split_once('.') else {
-                return Err(src.error(span, format!("`{s}` is not a signal; expected <member>.<field> like \"estop.bEStopIn1\"")));
+                return Err(src.error(
+                    span,
+                    format!(
+                        "`{s}` is not a signal; expected <member>.<field> like \"estop.bEStopIn1\""
+                    ),
+                ));
             };
             if let Some(&(gi, mi)) = names.members.get(owner) {
                 let b = member_of(gi, mi).block;
                 let f = b.field(field).ok_or_else(|| {
-                    src.error(span.clone(), format!("unknown field `{field}` of {} `{owner}`{}", b.info.name, near(field, b.fields.iter().map(|f| f.name))))
+                    src.error(
+                        span.clone(),
+                        format!(
+                            "unknown field `{field}` of {} `{owner}`{}",
+                            b.info.name,
+                            near(field, b.fields.iter().map(|f| f.name))
+                        ),
+                    )
                 })?;
-                return Ok(Place::Member { group: gi, member: mi, field: f });
+                return Ok(Place::Member {
+                    group: gi,
+                    member: mi,
+                    field: f,
+                });
             }
             if let Some(&gi) = names.groups.get(owner) {
                 let f = GROUP_INPUTS
@@ -379,11 +408,38 @@ impl Project {
                     .chain(GROUP_OUTPUTS)
                     .find(|n| **n == field)
                     .ok_or_else(|| {
-                        src.error(span.clone(), format!("unknown field `{field}` of group `{owner}`; expected one of {}", GROUP_INPUTS.iter().chain(GROUP_OUTPUTS).copied().collect::<Vec<_>>().join(", ")))
+                        src.error(
+                            span.clone(),
+                            format!(
+                                "unknown field `{field}` of group `{owner}`; expected one of {}",
+                                GROUP_INPUTS
+                                    .iter()
+                                    .chain(GROUP_OUTPUTS)
+                                    .copied()
+                                    .collect::<Vec<_>>()
+                                    .join(", ")
+                            ),
+                        )
                     })?;
-                return Ok(Place::Group { group: gi, field: f });
+                return Ok(Place::Group {
+                    group: gi,
+                    field: f,
+                });
             }
-            Err(src.error(span, format!("unknown member or group `{owner}`{}", near(owner, names.members.keys().chain(names.groups.keys()).map(String::as_str)))))
+            Err(src.error(
+                span,
+                format!(
+                    "unknown member or group `{owner}`{}",
+                    near(
+                        owner,
+                        names
+                            .members
+                            .keys()
+                            .chain(names.groups.keys())
+                            .map(String::as_str)
+                    )
+                ),
+            ))
         };
 
         // Links, group by group; every input is driven once (a link, a process-image
@@ -393,7 +449,10 @@ impl Project {
             for (mi, (m, _)) in members.iter().enumerate() {
                 for (f, _) in &m.values {
                     if f.dir == Dir::Input {
-                        driven.insert((gi, mi, f.offset), format!("the constant in member `{}`", m.name));
+                        driven.insert(
+                            (gi, mi, f.offset),
+                            format!("the constant in member `{}`", m.name),
+                        );
                     }
                 }
             }
@@ -409,25 +468,66 @@ impl Project {
                 let (a, b) = (a.trim(), b.trim());
                 let pa = resolve(a, span.clone())?;
                 let pb = resolve(b, span.clone())?;
-                let (Place::Member { group: ga, member: sa, field: fa }, Place::Member { group: gb, member: db, field: fb }) = (pa, pb) else {
+                let (
+                    Place::Member {
+                        group: ga,
+                        member: sa,
+                        field: fa,
+                    },
+                    Place::Member {
+                        group: gb,
+                        member: db,
+                        field: fb,
+                    },
+                ) = (pa, pb)
+                else {
                     return Err(src.error(span, "a link connects two members; group fields are process-image signals (use [inputs] / [outputs])"));
                 };
                 if ga != gi || gb != gi {
-                    return Err(src.error(span, format!("link `{}`: both members must be in group `{}`", l.get_ref(), rg.name.get_ref())));
+                    return Err(src.error(
+                        span,
+                        format!(
+                            "link `{}`: both members must be in group `{}`",
+                            l.get_ref(),
+                            rg.name.get_ref()
+                        ),
+                    ));
                 }
                 if fa.dir != Dir::Output {
-                    return Err(src.error(span, format!("link source `{a}` is not an output; expected a VAR_OUTPUT of {}", member_of(ga, sa).block.info.name)));
+                    return Err(src.error(
+                        span,
+                        format!(
+                            "link source `{a}` is not an output; expected a VAR_OUTPUT of {}",
+                            member_of(ga, sa).block.info.name
+                        ),
+                    ));
                 }
                 if fb.dir != Dir::Input {
-                    return Err(src.error(span, format!("link destination `{b}` is not an input; expected a VAR_INPUT of {}", member_of(gb, db).block.info.name)));
+                    return Err(src.error(
+                        span,
+                        format!(
+                            "link destination `{b}` is not an input; expected a VAR_INPUT of {}",
+                            member_of(gb, db).block.info.name
+                        ),
+                    ));
                 }
                 if fa.kind != fb.kind || link_kind(fa.kind).is_none() {
                     return Err(src.error(span, format!("link between different types: `{a}` is {}, `{b}` is {}; expected the same type on both ends", kind_name(fa.kind), kind_name(fb.kind))));
                 }
-                if let Some(by) = driven.insert((gi, db, fb.offset), format!("link `{}`", l.get_ref())) {
-                    return Err(src.error(span, format!("input `{b}` is linked twice: already driven by {by}")));
+                if let Some(by) =
+                    driven.insert((gi, db, fb.offset), format!("link `{}`", l.get_ref()))
+                {
+                    return Err(src.error(
+                        span,
+                        format!("input `{b}` is linked twice: already driven by {by}"),
+                    ));
                 }
-                links.push(Link { src: sa, src_field: fa, dst: db, dst_field: fb });
+                links.push(Link {
+                    src: sa,
+                    src_field: fa,
+                    dst: db,
+                    dst_field: fb,
+                });
             }
             out_groups.push(Group {
                 name: rg.name.get_ref().clone(),
@@ -444,7 +544,10 @@ impl Project {
         raw_inputs.sort_by_key(|(k, _)| k.span().start);
         for (k, v) in raw_inputs {
             if !is_ident(k.get_ref()) || signal_names.insert(k.get_ref().clone(), ()).is_some() {
-                return Err(src.error(k.span(), format!("duplicate or invalid signal name `{}`", k.get_ref())));
+                return Err(src.error(
+                    k.span(),
+                    format!("duplicate or invalid signal name `{}`", k.get_ref()),
+                ));
             }
             let targets: Vec<(&str, Range<usize>)> = match v.get_ref() {
                 Value::String(s) => vec![(s.as_str(), v.span())],
@@ -463,27 +566,54 @@ impl Project {
                 if !ok {
                     return Err(src.error(span, format!("input `{}`: `{t}` is not an input the host can write; expected a member's VAR_INPUT or a group's {}", k.get_ref(), GROUP_INPUTS.join("/"))));
                 }
-                if let Place::Member { group, member, field } = p {
-                    if let Some(by) = driven.insert((group, member, field.offset), format!("input `{}`", k.get_ref())) {
-                        return Err(src.error(span, format!("input `{t}` is linked twice: already driven by {by}")));
+                if let Place::Member {
+                    group,
+                    member,
+                    field,
+                } = p
+                {
+                    if let Some(by) = driven.insert(
+                        (group, member, field.offset),
+                        format!("input `{}`", k.get_ref()),
+                    ) {
+                        return Err(src.error(
+                            span,
+                            format!("input `{t}` is linked twice: already driven by {by}"),
+                        ));
                     }
                 }
                 if let Some(first) = places.first().map(Place::kind) {
                     if first != p.kind() {
-                        return Err(src.error(span, format!("input `{}` drives places of different types; expected one type", k.get_ref())));
+                        return Err(src.error(
+                            span,
+                            format!(
+                                "input `{}` drives places of different types; expected one type",
+                                k.get_ref()
+                            ),
+                        ));
                     }
                 }
                 places.push(p);
             }
             let kind = places[0].kind();
-            inputs.push(Signal { name: k.get_ref().clone(), places, kind });
+            inputs.push(Signal {
+                name: k.get_ref().clone(),
+                places,
+                kind,
+            });
         }
         let mut outputs = Vec::new();
         let mut raw_outputs: Vec<_> = raw.outputs.iter().collect();
         raw_outputs.sort_by_key(|(k, _)| k.span().start);
         for (k, v) in raw_outputs {
             if !is_ident(k.get_ref()) || signal_names.insert(k.get_ref().clone(), ()).is_some() {
-                return Err(src.error(k.span(), format!("duplicate name `{}`: every process-image signal needs a unique name", k.get_ref())));
+                return Err(src.error(
+                    k.span(),
+                    format!(
+                        "duplicate name `{}`: every process-image signal needs a unique name",
+                        k.get_ref()
+                    ),
+                ));
             }
             let p = resolve(v.get_ref(), v.span())?;
             let ok = match p {
@@ -493,7 +623,11 @@ impl Project {
             if !ok {
                 return Err(src.error(v.span(), format!("output `{}`: `{}` is not an output; expected a member's VAR_OUTPUT / info field or a group's {}", k.get_ref(), v.get_ref(), GROUP_OUTPUTS.join("/"))));
             }
-            outputs.push(Signal { name: k.get_ref().clone(), places: vec![p], kind: p.kind() });
+            outputs.push(Signal {
+                name: k.get_ref().clone(),
+                places: vec![p],
+                kind: p.kind(),
+            });
         }
 
         let mut project = Project {
@@ -508,7 +642,10 @@ impl Project {
         for (gi, g) in project.groups.iter().enumerate() {
             for (mi, m) in g.members.iter().enumerate() {
                 if let Err(msg) = m.build() {
-                    return Err(src.error(groups[gi].1[mi].1.clone(), format!("member `{}`: {msg}", m.name)));
+                    return Err(src.error(
+                        groups[gi].1[mi].1.clone(),
+                        format!("member `{}`: {msg}", m.name),
+                    ));
                 }
             }
         }
@@ -537,7 +674,10 @@ impl Project {
             for l in &g.links {
                 s += &format!(
                     "link {}.{} -> {}.{}\n",
-                    g.members[l.src].name, l.src_field.name, g.members[l.dst].name, l.dst_field.name
+                    g.members[l.src].name,
+                    l.src_field.name,
+                    g.members[l.dst].name,
+                    l.dst_field.name
                 );
             }
         }
@@ -553,8 +693,15 @@ impl Project {
     /// "member.field" / "group.field".
     pub fn place_name(&self, p: &Place) -> String {
         match p {
-            Place::Member { group, member, field } => {
-                format!("{}.{}", self.groups[*group].members[*member].name, field.name)
+            Place::Member {
+                group,
+                member,
+                field,
+            } => {
+                format!(
+                    "{}.{}",
+                    self.groups[*group].members[*member].name, field.name
+                )
             }
             Place::Group { group, field } => format!("{}.{field}", self.groups[*group].name),
         }
@@ -562,9 +709,16 @@ impl Project {
 
     /// The wiring as text (what `safelogic check` prints).
     pub fn describe(&self) -> String {
-        let mut s = format!("project \"{}\", task cycle {} ms\n", self.name, self.cycle_ms);
+        let mut s = format!(
+            "project \"{}\", task cycle {} ms\n",
+            self.name, self.cycle_ms
+        );
         for g in &self.groups {
-            s += &format!("group {}{}\n", g.name, if g.connections { " (connections)" } else { "" });
+            s += &format!(
+                "group {}{}\n",
+                g.name,
+                if g.connections { " (connections)" } else { "" }
+            );
             for (i, m) in g.members.iter().enumerate() {
                 let vals: Vec<String> = m
                     .values
@@ -579,7 +733,12 @@ impl Project {
                         }
                     })
                     .collect();
-                s += &format!("  {i:>2} {:<12} {:<18} {}\n", m.name, m.block.info.name, vals.join(" "));
+                s += &format!(
+                    "  {i:>2} {:<12} {:<18} {}\n",
+                    m.name,
+                    m.block.info.name,
+                    vals.join(" ")
+                );
             }
             for l in &g.links {
                 s += &format!(
@@ -594,10 +753,20 @@ impl Project {
         }
         for sig in &self.inputs {
             let places: Vec<String> = sig.places.iter().map(|p| self.place_name(p)).collect();
-            s += &format!("input  {:<14} -> {} ({})\n", sig.name, places.join(", "), kind_name(sig.kind));
+            s += &format!(
+                "input  {:<14} -> {} ({})\n",
+                sig.name,
+                places.join(", "),
+                kind_name(sig.kind)
+            );
         }
         for sig in &self.outputs {
-            s += &format!("output {:<14} <- {} ({})\n", sig.name, self.place_name(&sig.places[0]), kind_name(sig.kind));
+            s += &format!(
+                "output {:<14} <- {} ({})\n",
+                sig.name,
+                self.place_name(&sig.places[0]),
+                kind_name(sig.kind)
+            );
         }
         s += &format!("project CRC 0x{:08X}\n", self.crc);
         s
@@ -625,15 +794,38 @@ impl Member {
 }
 
 fn parse_member(src: &Source, t: &Spanned<Table>) -> Result<Member, Error> {
-    let get = |key: &str| t.get_ref().iter().find(|(k, _)| k.get_ref() == key).map(|(_, v)| v);
+    let get = |key: &str| {
+        t.get_ref()
+            .iter()
+            .find(|(k, _)| k.get_ref() == key)
+            .map(|(_, v)| v)
+    };
     let name = match get("name") {
-        Some(v) => v.get_ref().as_str().map(str::to_string).ok_or_else(|| src.error(v.span(), "member name: wrong value type; expected a string"))?,
+        Some(v) => v.get_ref().as_str().map(str::to_string).ok_or_else(|| {
+            src.error(v.span(), "member name: wrong value type; expected a string")
+        })?,
         None => return Err(src.error(t.span(), "member without `name`; expected name = \"...\"")),
     };
-    let ty = get("type").ok_or_else(|| src.error(t.span(), format!("member `{name}` has no `type`; expected type = \"ESTOP\", \"ADD_INT\", …")))?;
-    let ty_name = ty.get_ref().as_str().ok_or_else(|| src.error(ty.span(), "type: wrong value type; expected a string like \"ESTOP\""))?;
+    let ty = get("type").ok_or_else(|| {
+        src.error(
+            t.span(),
+            format!("member `{name}` has no `type`; expected type = \"ESTOP\", \"ADD_INT\", …"),
+        )
+    })?;
+    let ty_name = ty.get_ref().as_str().ok_or_else(|| {
+        src.error(
+            ty.span(),
+            "type: wrong value type; expected a string like \"ESTOP\"",
+        )
+    })?;
     let block = block_type_named(ty_name).ok_or_else(|| {
-        src.error(ty.span(), format!("unknown type `{ty_name}`; expected a block type of the registry{}", near(ty_name, BLOCKS.iter().map(|b| b.info.name))))
+        src.error(
+            ty.span(),
+            format!(
+                "unknown type `{ty_name}`; expected a block type of the registry{}",
+                near(ty_name, BLOCKS.iter().map(|b| b.info.name))
+            ),
+        )
     })?;
     let mut values: BTreeMap<u16, (&'static Field, i64)> = BTreeMap::new();
     let mut entries: Vec<_> = t.get_ref().iter().collect();
@@ -643,17 +835,40 @@ fn parse_member(src: &Source, t: &Spanned<Table>) -> Result<Member, Error> {
         match key {
             "name" | "type" => {}
             "active" | "negated" => {
-                let field = if key == "active" { "wInputActive" } else { "wInputNegated" };
-                let f = block.field(field).ok_or_else(|| src.error(k.span(), format!("{} has no {field}", block.info.name)))?;
+                let field = if key == "active" {
+                    "wInputActive"
+                } else {
+                    "wInputNegated"
+                };
+                let f = block.field(field).ok_or_else(|| {
+                    src.error(k.span(), format!("{} has no {field}", block.info.name))
+                })?;
                 values.insert(f.offset, (f, input_mask(src, block, v)?));
             }
             _ => {
                 let f = block.field(key).ok_or_else(|| {
-                    src.error(k.span(), format!("unknown field `{key}` of {}; expected a parameter or input{}", block.info.name, near(key, block.fields.iter().map(|f| f.name))))
+                    src.error(
+                        k.span(),
+                        format!(
+                            "unknown field `{key}` of {}; expected a parameter or input{}",
+                            block.info.name,
+                            near(key, block.fields.iter().map(|f| f.name))
+                        ),
+                    )
                 })?;
                 match f.dir {
                     Dir::Param if matches!(key, "wInputActive" | "wInputNegated") => {
-                        return Err(src.error(k.span(), format!("give {key} by input names: {} = [\"...\"]", if key == "wInputActive" { "active" } else { "negated" })));
+                        return Err(src.error(
+                            k.span(),
+                            format!(
+                                "give {key} by input names: {} = [\"...\"]",
+                                if key == "wInputActive" {
+                                    "active"
+                                } else {
+                                    "negated"
+                                }
+                            ),
+                        ));
                     }
                     Dir::Param | Dir::Input => {
                         values.insert(f.offset, (f, field_value(src, f, v, block.info.name)?));
@@ -668,7 +883,11 @@ fn parse_member(src: &Source, t: &Spanned<Table>) -> Result<Member, Error> {
     // Field-table order (inputs, parameters).
     let mut values: Vec<_> = values.into_values().collect();
     values.sort_by_key(|(f, _)| block.fields.iter().position(|g| g == *f));
-    Ok(Member { name, block, values })
+    Ok(Member {
+        name,
+        block,
+        values,
+    })
 }
 
 /// CRC-32 (ISO-HDLC, the zip / Ethernet CRC) of a text.

@@ -68,7 +68,8 @@ impl Runtime {
             }
             lg.g.bRun = u8::from(!run_driven);
             for _ in 0..n {
-                group::reserve_member(&mut lg.g).map_err(|e| format!("group `{}`: {e}", pg.name))?;
+                group::reserve_member(&mut lg.g)
+                    .map_err(|e| format!("group `{}`: {e}", pg.name))?;
             }
             for l in &pg.links {
                 let link = SL_LINK {
@@ -92,7 +93,11 @@ impl Runtime {
     /// Writes a process-image input (a member input or a group input).
     pub fn write(&mut self, place: &Place, value: i64) {
         match *place {
-            Place::Member { group, member, field } => {
+            Place::Member {
+                group,
+                member,
+                field,
+            } => {
                 self.groups[group].blocks[member].set_input_bits(field.offset, value as u32);
             }
             Place::Group { group, field } => {
@@ -112,7 +117,11 @@ impl Runtime {
     /// Reads any place (signed types as signed).
     pub fn read(&self, place: &Place) -> i64 {
         match *place {
-            Place::Member { group, member, field } => {
+            Place::Member {
+                group,
+                member,
+                field,
+            } => {
                 let b = &self.groups[group].blocks[member];
                 let bits = b.field_bits(field.offset).unwrap_or(0);
                 match field.kind {
