@@ -27,7 +27,11 @@ fn member_var(p: &Project, g: usize, m: usize) -> String {
 /// The C lvalue of a place.
 fn lvalue(p: &Project, place: &Place) -> String {
     match place {
-        Place::Member { group, member, field } => {
+        Place::Member {
+            group,
+            member,
+            field,
+        } => {
             format!("{}.{}", member_var(p, *group, *member), field.name)
         }
         Place::Group { group, field } => format!("g_{}.{field}", p.groups[*group].name),
@@ -47,11 +51,26 @@ pub fn export(p: &Project, sc: Option<&Scenario>) -> String {
     s += "#include <stddef.h>\n#include <stdint.h>\n#include <stdio.h>\n#include \"safelogic.h\"\n\n";
     for (gi, g) in p.groups.iter().enumerate() {
         for (mi, m) in g.members.iter().enumerate() {
-            let _ = writeln!(s, "static FB_{} {};", m.block.info.name, member_var(p, gi, mi));
+            let _ = writeln!(
+                s,
+                "static FB_{} {};",
+                m.block.info.name,
+                member_var(p, gi, mi)
+            );
         }
         let _ = writeln!(s, "static SL_GROUP g_{};", g.name);
-        let _ = writeln!(s, "static SL_MEMBER g_{}_members[{}];", g.name, g.members.len().max(1));
-        let _ = writeln!(s, "static SL_LINK g_{}_links[{}];", g.name, g.links.len().max(1));
+        let _ = writeln!(
+            s,
+            "static SL_MEMBER g_{}_members[{}];",
+            g.name,
+            g.members.len().max(1)
+        );
+        let _ = writeln!(
+            s,
+            "static SL_LINK g_{}_links[{}];",
+            g.name,
+            g.links.len().max(1)
+        );
     }
     s += "\nstatic int check(int32_t rc, const char *what)\n{\n    if (rc != SL_OK) {\n        fprintf(stderr, \"%s: %s\\n\", what, sl_status_str(rc));\n        return 1;\n    }\n    return 0;\n}\n\n";
     s += "/* Builds every group: member parameters, init, members, links. 0 on success. */\nint project_setup(void)\n{\n";
@@ -61,9 +80,18 @@ pub fn export(p: &Project, sc: Option<&Scenario>) -> String {
             for (f, val) in &m.values {
                 let _ = writeln!(s, "    {v}.{} = {};", f.name, c_value(f.kind, *val));
             }
-            let _ = writeln!(s, "    if (check({}_init(&{v}), \"{} init\")) return 1;", m.block.c_prefix, m.name);
+            let _ = writeln!(
+                s,
+                "    if (check({}_init(&{v}), \"{} init\")) return 1;",
+                m.block.c_prefix, m.name
+            );
         }
-        let _ = writeln!(s, "    g_{}.bConnections = {};", g.name, u8::from(g.connections));
+        let _ = writeln!(
+            s,
+            "    g_{}.bConnections = {};",
+            g.name,
+            u8::from(g.connections)
+        );
         let _ = writeln!(
             s,
             "    if (check(sl_group_init(&g_{0}, g_{0}_members, {1}, g_{0}_links, {2}), \"group {0} init\")) return 1;",
@@ -107,7 +135,11 @@ pub fn export(p: &Project, sc: Option<&Scenario>) -> String {
 
 fn replay(p: &Project, sc: &Scenario) -> String {
     let mut s = String::new();
-    let _ = writeln!(s, "\n/* Scenario \"{}\": process-image writes by time, replayed by main(). */", sc.name.replace("*/", "* /"));
+    let _ = writeln!(
+        s,
+        "\n/* Scenario \"{}\": process-image writes by time, replayed by main(). */",
+        sc.name.replace("*/", "* /")
+    );
     s += "struct step { uint32_t t; int input; long long value; };\nstatic const struct step steps[] = {\n";
     let mut n = 0;
     for st in &sc.steps {
@@ -127,7 +159,11 @@ fn replay(p: &Project, sc: &Scenario) -> String {
                 Place::Member { field, .. } => c_type(field.kind),
                 Place::Group { .. } => "SL_BOOL",
             };
-            let val = if matches!(place, Place::Group { .. }) { "(v != 0)" } else { "v" };
+            let val = if matches!(place, Place::Group { .. }) {
+                "(v != 0)"
+            } else {
+                "v"
+            };
             let _ = writeln!(s, "        {} = ({ty}){val};", lvalue(p, place));
         }
         s += "        break;\n";
@@ -153,7 +189,11 @@ fn replay(p: &Project, sc: &Scenario) -> String {
         args.push(format!("group_state(g_{}.nState)", g.name));
         for (mi, m) in g.members.iter().enumerate() {
             fs.push(format!("{}=%s", m.name));
-            args.push(format!("sl_state_str(SL_TYPE_{}, {}.nState)", m.block.info.name, member_var(p, gi, mi)));
+            args.push(format!(
+                "sl_state_str(SL_TYPE_{}, {}.nState)",
+                m.block.info.name,
+                member_var(p, gi, mi)
+            ));
         }
     }
     fmt += &format!("{} | {} | {}\\n", fi.join(" "), fo.join(" "), fs.join(" "));
