@@ -79,13 +79,7 @@ impl AnyBlock {
         crate::blocks::state_name(self.tag(), self.member().state())
     }
 
-    /// A named field's value as a 32-bit pattern (signed types sign-extended).
-    pub fn get(&self, name: &str) -> Option<u32> {
-        let f = self.block_type().field(name)?;
-        self.member().field_bits(f.offset)
-    }
-
-    /// A named field's value as a number (signed types as signed).
+    /// A field's value as a number (signed types as signed).
     pub fn value(&self, f: &Field) -> Option<i64> {
         let bits = self.member().field_bits(f.offset)?;
         Some(match f.kind {
@@ -322,7 +316,8 @@ mod tests {
             blocks[0].set("bRestart", restart).unwrap();
             assert_eq!(group::cycle(&mut g, &mut blocks[..], &links, t), SL_OK);
         }
-        assert_eq!(blocks[1].get("bAndOut"), Some(1));
+        let out = blocks[1].block_type().field("bAndOut").unwrap();
+        assert_eq!(blocks[1].value(out), Some(1));
         assert_eq!(blocks[0].state_name(), "RUN");
     }
 }

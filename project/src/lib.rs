@@ -3,6 +3,8 @@
 //! file:line:column errors, its CRC, the loader that builds the groups through the
 //! registry, and the simulation of scenarios with a timeline, VCD and SVG output.
 
+#![forbid(unsafe_code)]
+
 pub mod error;
 pub mod project;
 pub mod runtime;

@@ -1,6 +1,8 @@
 //! The `safelogic` command-line tool: `check`, `sim`, `export-c`; without arguments it
 //! simulates the embedded KL6904 example 5.1 and writes its timing diagram.
 
+#![forbid(unsafe_code)]
+
 use clap::{Parser, Subcommand};
 use safelogic_project::error::io_error;
 use safelogic_project::sim::{self, Scenario};

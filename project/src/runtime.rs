@@ -5,7 +5,6 @@
 use crate::project::{Place, Project};
 use safelogic::any::AnyBlock;
 use safelogic::group::{self, link_kind, Member, SL_LINK};
-use safelogic::registry::Kind;
 use safelogic::{SL_GROUP, SL_OK};
 
 /// One loaded group.
@@ -121,14 +120,7 @@ impl Runtime {
                 group,
                 member,
                 field,
-            } => {
-                let b = &self.groups[group].blocks[member];
-                let bits = b.field_bits(field.offset).unwrap_or(0);
-                match field.kind {
-                    Kind::I16 | Kind::I32 => i64::from(bits as i32),
-                    _ => i64::from(bits),
-                }
-            }
+            } => self.groups[group].blocks[member].value(field).unwrap_or(0),
             Place::Group { group, field } => {
                 let g = &self.groups[group].g;
                 i64::from(match field {
