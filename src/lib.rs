@@ -34,6 +34,7 @@
 #![cfg_attr(not(feature = "std"), no_std)]
 #![deny(unsafe_code)]
 
+pub mod any;
 pub mod blocks;
 pub mod group;
 pub mod prim;

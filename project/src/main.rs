@@ -1,0 +1,154 @@
+//! The `safelogic` command-line tool: `check`, `sim`, `export-c`; without arguments it
+//! simulates the embedded KL6904 example 5.1 and writes its timing diagram.
+
+#![forbid(unsafe_code)]
+
+use clap::{Parser, Subcommand};
+use safelogic_project::error::io_error;
+use safelogic_project::sim::{self, Scenario};
+use safelogic_project::{load_project, svg, vcd, Error, Project};
+use std::process::ExitCode;
+
+#[derive(Parser)]
+#[command(
+    name = "safelogic",
+    version,
+    about = "Check, simulate and export safelogic projects (TOML). Without a command: simulates the embedded KL6904 example 5.1 and writes its timing diagram."
+)]
+struct Cli {
+    #[command(subcommand)]
+    command: Option<Command>,
+}
+
+#[derive(Subcommand)]
+enum Command {
+    /// Validates a project, prints its wiring and its CRC.
+    Check {
+        /// The project file.
+        project: String,
+    },
+    /// Runs a project against a scenario: prints the timeline, checks the expectations
+    /// (exit status 1 when one fails), writes VCD and SVG.
+    Sim {
+        /// The project file.
+        project: String,
+        /// The scenario file.
+        scenario: String,
+        /// Write a VCD file (GTKWave).
+        #[arg(long)]
+        vcd: Option<String>,
+        /// Write an SVG timing diagram.
+        #[arg(long)]
+        svg: Option<String>,
+        /// Print every cycle (all signals and states) instead of the timeline.
+        #[arg(long)]
+        trace: bool,
+    },
+    /// Writes a C file that sets the project up through the C API (with a scenario: a
+    /// main() that replays it and prints the same trace as `sim --trace`).
+    ExportC {
+        /// The project file.
+        project: String,
+        /// A scenario to replay.
+        scenario: Option<String>,
+        /// Output file (default: standard output).
+        #[arg(short, long)]
+        output: Option<String>,
+    },
+}
+
+const DEFAULT_PROJECT: &str = include_str!("../../examples/projects/kl6904_5_1.toml");
+const DEFAULT_SCENARIO: &str = include_str!("../../examples/projects/kl6904_5_1.scenario.toml");
+
+fn read(path: &str) -> Result<String, Error> {
+    std::fs::read_to_string(path).map_err(|e| io_error(path, &e))
+}
+
+fn write(path: &str, text: &str) -> Result<(), Error> {
+    std::fs::write(path, text).map_err(|e| io_error(path, &e))
+}
+
+/// Runs a scenario; Ok(false) when an expectation failed.
+fn simulate(
+    p: &Project,
+    sc: &Scenario,
+    vcd_out: Option<&str>,
+    svg_out: Option<&str>,
+    trace: bool,
+) -> Result<bool, Error> {
+    let mut stdout = std::io::stdout().lock();
+    let run = sim::run(p, sc, trace, &mut stdout).map_err(|msg| Error {
+        file: p.name.clone(),
+        line: 0,
+        col: 0,
+        msg,
+    })?;
+    if let Some(path) = vcd_out {
+        write(path, &vcd::vcd(&run, &p.name))?;
+        eprintln!("VCD written to {path}");
+    }
+    if let Some(path) = svg_out {
+        write(path, &svg::svg(&run, &format!("{} — {}", p.name, sc.name)))?;
+        eprintln!("timing diagram (SVG) written to {path}");
+    }
+    Ok(run.failures == 0)
+}
+
+fn main() -> ExitCode {
+    let cli = Cli::parse();
+    let result = match cli.command {
+        Some(Command::Check { project }) => load_project(&project)
+            .map(|p| print!("{}", p.describe()))
+            .map(|()| true),
+        Some(Command::Sim {
+            project,
+            scenario,
+            vcd,
+            svg,
+            trace,
+        }) => (|| {
+            let p = load_project(&project)?;
+            let sc = Scenario::parse(&scenario, &read(&scenario)?, &p)?;
+            simulate(&p, &sc, vcd.as_deref(), svg.as_deref(), trace)
+        })(),
+        Some(Command::ExportC {
+            project,
+            scenario,
+            output,
+        }) => (|| {
+            let p = load_project(&project)?;
+            let sc = match &scenario {
+                Some(path) => Some(Scenario::parse(path, &read(path)?, &p)?),
+                None => None,
+            };
+            let c = safelogic_project::export_c::export(&p, sc.as_ref());
+            match output {
+                Some(path) => write(&path, &c)?,
+                None => print!("{c}"),
+            }
+            Ok(true)
+        })(),
+        None => (|| {
+            let p = Project::parse("<embedded kl6904_5_1.toml>", DEFAULT_PROJECT)?;
+            let sc = Scenario::parse("<embedded kl6904_5_1.scenario.toml>", DEFAULT_SCENARIO, &p)?;
+            print!("{}", p.describe());
+            println!();
+            let dir = std::env::temp_dir().join("safelogic");
+            std::fs::create_dir_all(&dir).map_err(|e| io_error(&dir.display().to_string(), &e))?;
+            let svg_path = dir.join("kl6904_5_1.svg").display().to_string();
+            let vcd_path = dir.join("kl6904_5_1.vcd").display().to_string();
+            let ok = simulate(&p, &sc, Some(&vcd_path), Some(&svg_path), false)?;
+            println!("\ntiming diagram: {svg_path} (waveform for GTKWave: {vcd_path})");
+            println!("more: safelogic check|sim|export-c, projects in examples/projects/ (safelogic --help)");
+            Ok(ok)
+        })(),
+    };
+    match result {
+        Ok(true) => ExitCode::SUCCESS,
+        Ok(false) => ExitCode::FAILURE,
+        Err(e) => {
+            eprintln!("{e}");
+            ExitCode::from(2)
+        }
+    }
+}

@@ -1,0 +1,323 @@
+//! A block of a type chosen at run time, without heap and without `unsafe`: [`AnyBlock`] is
+//! one enum variant per registered type (generated from the registry's rows), so a loader
+//! that reads the type from a file (the project crate) holds its blocks in a `Vec` of
+//! them and drives them through the group's [`Member`] trait and the field table.
+//!
+//! The wInputActive / wInputNegated bit of every named input is here too
+//! ([`input_bit`]): a project names the inputs it uses, the loader turns them into the
+//! masks.
+
+use crate::group::{Member, Members};
+use crate::registry::{self, BlockType, Dir, Field, Kind, Registered};
+use crate::types::Status;
+
+macro_rules! any_block {
+    ($($krate:ident :: blocks :: $m:ident :: $ty:ident => $init:ident, $cycle:ident;)*) => {
+        /// One block of any registered type (the variant is the type, its tag the
+        /// registry's). The enum is as large as the largest block.
+        #[allow(non_camel_case_types, clippy::large_enum_variant)]
+        #[derive(Clone, Copy, Debug, PartialEq, Eq)]
+        pub enum AnyBlock {
+            $(
+                #[doc = concat!("A `", stringify!($ty), "`.")]
+                $ty($crate::$ty),
+            )*
+        }
+
+        impl AnyBlock {
+            /// A power-up (all zero) block of the type with this tag; `None` for an
+            /// unknown tag.
+            pub fn new(tag: u16) -> Option<Self> {
+                $(if tag == <$crate::$ty as Registered>::INFO.tag {
+                    return Some(Self::$ty(Default::default()));
+                })*
+                None
+            }
+
+            /// The block as a group member.
+            pub fn member(&self) -> &dyn Member {
+                match self {
+                    $(Self::$ty(b) => b,)*
+                }
+            }
+
+            /// The block as a group member, writable.
+            pub fn member_mut(&mut self) -> &mut dyn Member {
+                match self {
+                    $(Self::$ty(b) => b,)*
+                }
+            }
+
+            /// `sl_<name>_init`: validates and latches the parameters (SL_OK or
+            /// SL_E_CONFIG).
+            pub fn init(&mut self) -> i32 {
+                match self {
+                    $(Self::$ty(b) => $crate::FunctionBlock::init(b),)*
+                }
+            }
+
+            /// The registry entry of the block's type.
+            pub fn block_type(&self) -> &'static BlockType {
+                let tag = match self {
+                    $(Self::$ty(_) => <$crate::$ty as Registered>::INFO.tag,)*
+                };
+                registry::block_type(tag).expect("every variant is a registered type")
+            }
+        }
+    };
+}
+crate::for_each_block!(any_block);
+
+impl AnyBlock {
+    /// The type tag (`SL_TYPE_<NAME>`).
+    pub fn tag(&self) -> u16 {
+        self.block_type().info.tag
+    }
+
+    /// The manual's name of the current state.
+    pub fn state_name(&self) -> &'static str {
+        crate::blocks::state_name(self.tag(), self.member().state())
+    }
+
+    /// A field's value as a number (signed types as signed).
+    pub fn value(&self, f: &Field) -> Option<i64> {
+        let bits = self.member().field_bits(f.offset)?;
+        Some(match f.kind {
+            Kind::I16 | Kind::I32 => i64::from(bits as i32),
+            _ => i64::from(bits),
+        })
+    }
+
+    /// Writes an input or a parameter by name (as `FunctionBlock::set`, without the
+    /// control fields the group drives): `Err(Status::Config)` for an unknown name, a field
+    /// of another direction, or a value outside the field's type.
+    pub fn set(&mut self, name: &str, value: i64) -> Result<(), Status> {
+        let f = self.block_type().field(name).ok_or(Status::Config)?;
+        if !in_range(f.kind, value) {
+            return Err(Status::Config);
+        }
+        let bits = value as u32;
+        let m = self.member_mut();
+        let written = match f.dir {
+            Dir::Input => m.set_input_bits(f.offset, bits),
+            Dir::Param => m.set_param_bits(f.offset, bits),
+            Dir::Control | Dir::Output | Dir::Info => false,
+        };
+        written.then_some(()).ok_or(Status::Config)
+    }
+}
+
+/// `value` lies in the range of a field of this type.
+pub fn in_range(kind: Kind, value: i64) -> bool {
+    let (min, max) = match kind {
+        Kind::Bool => (0, 1),
+        Kind::U8 => (0, i64::from(u8::MAX)),
+        Kind::U16 => (0, i64::from(u16::MAX)),
+        Kind::I16 => (i64::from(i16::MIN), i64::from(i16::MAX)),
+        Kind::U32 => (0, i64::from(u32::MAX)),
+        Kind::I32 => (i64::from(i32::MIN), i64::from(i32::MAX)),
+    };
+    (min..=max).contains(&value)
+}
+
+impl Member for AnyBlock {
+    fn drive(&mut self, run: u8, ack: u8) {
+        self.member_mut().drive(run, ack)
+    }
+    fn execute(&mut self, now: u32) -> Status {
+        self.member_mut().execute(now)
+    }
+    fn state(&self) -> u8 {
+        self.member().state()
+    }
+    fn fields(&self) -> &'static [Field] {
+        self.member().fields()
+    }
+    fn input_mut(&mut self, offset: u16) -> Option<&mut u8> {
+        self.member_mut().input_mut(offset)
+    }
+    fn output(&self, offset: u16) -> Option<u8> {
+        self.member().output(offset)
+    }
+    fn output_bits(&self, offset: u16) -> Option<u32> {
+        self.member().output_bits(offset)
+    }
+    fn set_input_bits(&mut self, offset: u16, bits: u32) -> bool {
+        self.member_mut().set_input_bits(offset, bits)
+    }
+    fn field_bits(&self, offset: u16) -> Option<u32> {
+        self.member().field_bits(offset)
+    }
+    fn set_param_bits(&mut self, offset: u16, bits: u32) -> bool {
+        self.member_mut().set_param_bits(offset, bits)
+    }
+    fn run_in_group(&mut self, run: u8, ack: u8, now: u32) -> (Status, u8) {
+        self.member_mut().run_in_group(run, ack, now)
+    }
+}
+
+impl Members for [AnyBlock] {
+    fn with<R>(&mut self, i: usize, f: impl FnOnce(&mut dyn Member) -> R) -> Option<R> {
+        self.get_mut(i).map(|b| f(b.member_mut()))
+    }
+}
+
+/// The bit of `wInputActive` / `wInputNegated` that belongs to input `input` of block type
+/// `block` (the manual's name), as the blocks' parameter docs define it; `None` for an
+/// input without one (bRestart, the EDM inputs, …). The two inputs of an XOR function
+/// share its bit.
+pub fn input_bit(block: &str, input: &str) -> Option<u8> {
+    // n-th of a numbered family: the digits after `prefix`, 1-based.
+    let nth = |prefix: &str, count: u8| -> Option<u8> {
+        let n: u8 = input.strip_prefix(prefix)?.parse().ok()?;
+        (1..=count).contains(&n).then(|| n - 1)
+    };
+    let family = block.split('_').next().unwrap_or(block);
+    let named = |names: &[&str], first: u8| -> Option<u8> {
+        names
+            .iter()
+            .position(|n| *n == input)
+            .map(|i| first + i as u8)
+    };
+    match family {
+        "ESTOP" => nth("bEStopIn", 8),
+        "MON" => nth("bMonIn", 4).or_else(|| named(&["bSecure1", "bSecure2"], 4)),
+        "AND" => nth("bAndIn", 8),
+        "OR" => nth("bOrIn", 8),
+        "XOR" => nth("bXor1In", 8).or_else(|| nth("bXor2In", 8)),
+        "DECOUPLE" => nth("bDecIn", 8),
+        "OPMODE" => nth("bOpIn", 8),
+        "TWOHAND" => nth("bTwoHand", 4),
+        "MUTING" => named(
+            &[
+                "bMutingIn1",
+                "bMutingIn2",
+                "bOSSDIn1",
+                "bOSSDIn2",
+                "bMutingIn3",
+                "bMutingIn4",
+            ],
+            0,
+        ),
+        "EDM" => named(&["bMon1", "bMon2"], 0),
+        "RS" | "SR" => named(&["bReset", "bSet"], 0),
+        "TON" | "TON2" => named(&["bTonIn1"], 0),
+        "TOF" => named(&["bTofIn1"], 0),
+        "ADD" | "SUB" | "MUL" | "DIV" => named(&["nAnalogIn1", "nAnalogIn2"], 8),
+        "COMPARE" => nth("nCompIn", 5).map(|b| b + 8),
+        "LIMIT" => named(&["nAnalogIn", "nMinValue", "nMaxValue"], 8),
+        "SCALE" => named(&["nAnalogIn"], 8),
+        "SPEED" => named(&["nPosition"], 8),
+        "SLI" | "SLI2" => named(&["bSLI"], 0).or_else(|| named(&["nPosition"], 8)),
+        "COUNTER" => named(&["bReset", "bCountUp", "bCountDown"], 0),
+        "VIOLATIONCOUNTER" => named(&["bInput", "bEnable"], 0),
+        _ => None,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::registry::BLOCKS;
+
+    #[test]
+    fn every_type_has_a_variant_with_its_tag_and_fields() {
+        for b in BLOCKS {
+            let mut any = AnyBlock::new(b.info.tag).expect("variant");
+            assert_eq!(any.tag(), b.info.tag);
+            assert_eq!(any.fields(), b.fields);
+            assert_eq!(any.state_name(), "?", "{} is all zero", b.info.name);
+            // Every input and parameter can be written and read back by name.
+            for f in b
+                .fields
+                .iter()
+                .filter(|f| matches!(f.dir, Dir::Input | Dir::Param))
+            {
+                let v = if f.kind == Kind::Bool { 1 } else { 7 };
+                assert_eq!(any.set(f.name, v), Ok(()), "{}.{}", b.info.name, f.name);
+                assert_eq!(any.value(f), Some(v), "{}.{}", b.info.name, f.name);
+            }
+            for f in b
+                .fields
+                .iter()
+                .filter(|f| !matches!(f.dir, Dir::Input | Dir::Param))
+            {
+                assert_eq!(any.set(f.name, 0), Err(Status::Config));
+            }
+            assert_eq!(any.set("nope", 0), Err(Status::Config));
+        }
+        assert!(AnyBlock::new(0xFFFF).is_none());
+    }
+
+    #[test]
+    fn input_bits_name_inputs_and_differ_within_a_block() {
+        for b in BLOCKS {
+            let mut seen = 0u32;
+            for f in b.fields.iter().filter(|f| f.dir == Dir::Input) {
+                if let Some(bit) = input_bit(b.info.name, f.name) {
+                    let xor_pair = b.info.name == "XOR" && f.name.starts_with("bXor2");
+                    assert!(
+                        xor_pair || seen & (1 << bit) == 0,
+                        "{} {}",
+                        b.info.name,
+                        f.name
+                    );
+                    seen |= 1 << bit;
+                }
+            }
+            assert!(seen != 0, "{} has active bits", b.info.name);
+        }
+        assert_eq!(input_bit("ESTOP", "bEStopIn2"), Some(1));
+        assert_eq!(input_bit("ESTOP", "bRestart"), None);
+        assert_eq!(input_bit("MON", "bSecure2"), Some(5));
+        assert_eq!(input_bit("LIMIT_DINT", "nMaxValue"), Some(10));
+        assert_eq!(input_bit("XOR", "bXor2In3"), Some(2));
+    }
+
+    #[test]
+    fn a_group_of_any_blocks_runs() {
+        use crate::group;
+        use crate::{SL_GROUP, SL_OK, SL_TYPE_AND, SL_TYPE_ESTOP};
+        let mut blocks = [
+            AnyBlock::new(SL_TYPE_ESTOP).unwrap(),
+            AnyBlock::new(SL_TYPE_AND).unwrap(),
+        ];
+        blocks[0].set("wInputActive", 0b11).unwrap();
+        blocks[1].set("wInputActive", 0b11).unwrap();
+        blocks[1].set("bAndIn2", 1).unwrap();
+        for b in &mut blocks {
+            assert_eq!(b.init(), SL_OK);
+        }
+        let mut g = SL_GROUP {
+            bRun: 1,
+            ..Default::default()
+        };
+        let mut links = [group::SL_LINK::default(); 1];
+        assert_eq!(group::init(&mut g, 2, 1), SL_OK);
+        for _ in 0..2 {
+            group::reserve_member(&mut g).unwrap();
+        }
+        let out = blocks[0].block_type().field("bEStopOut").unwrap().offset;
+        let inp = blocks[1].block_type().field("bAndIn1").unwrap().offset;
+        let link = group::SL_LINK {
+            nSrcMember: 0,
+            nSrcOffset: out,
+            nDstMember: 1,
+            nDstOffset: inp,
+            ..Default::default()
+        };
+        assert_eq!(
+            group::add_link(&mut g, &mut blocks[..], &mut links, link),
+            SL_OK
+        );
+        blocks[0].set("bEStopIn1", 1).unwrap();
+        blocks[0].set("bEStopIn2", 1).unwrap();
+        for (t, restart) in [(0, 0), (10, 1), (20, 0), (30, 0)] {
+            blocks[0].set("bRestart", restart).unwrap();
+            assert_eq!(group::cycle(&mut g, &mut blocks[..], &links, t), SL_OK);
+        }
+        let out = blocks[1].block_type().field("bAndOut").unwrap();
+        assert_eq!(blocks[1].value(out), Some(1));
+        assert_eq!(blocks[0].state_name(), "RUN");
+    }
+}
