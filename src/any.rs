@@ -203,16 +203,28 @@ pub fn input_bit(block: &str, input: &str) -> Option<u8> {
         "RS" | "SR" => named(&["bReset", "bSet"], 0),
         "TON" | "TON2" => named(&["bTonIn1"], 0),
         "TOF" => named(&["bTofIn1"], 0),
-        "ADD" | "SUB" | "MUL" | "DIV" => named(&["nAnalogIn1", "nAnalogIn2"], 8),
-        "COMPARE" => nth("nCompIn", 5).map(|b| b + 8),
-        "LIMIT" => named(&["nAnalogIn", "nMinValue", "nMaxValue"], 8),
-        "SCALE" => named(&["nAnalogIn"], 8),
-        "SPEED" => named(&["nPosition"], 8),
-        "SLI" | "SLI2" => named(&["bSLI"], 0).or_else(|| named(&["nPosition"], 8)),
-        "COUNTER" => named(&["bReset", "bCountUp", "bCountDown"], 0),
-        "VIOLATIONCOUNTER" => named(&["bInput", "bEnable"], 0),
-        _ => None,
+        _ => analog_layout_bit(block, input),
     }
+}
+
+/// The rule of ABI-2 §10.5 for every block with the analog layout (type tags from 16):
+/// its BOOL inputs take bits 0… and its analog inputs bits 8… in the order of the manual's
+/// input table, which is the order of the block's declared inputs (its field table).
+fn analog_layout_bit(block: &str, input: &str) -> Option<u8> {
+    let b = registry::block_type_named(block).filter(|b| b.info.tag >= 16)?;
+    let (mut bools, mut analogs) = (0u8, 8u8);
+    for f in b.fields.iter().filter(|f| f.dir == Dir::Input) {
+        let bit = if f.kind.size() == 1 {
+            &mut bools
+        } else {
+            &mut analogs
+        };
+        if f.name == input {
+            return Some(*bit);
+        }
+        *bit += 1;
+    }
+    None
 }
 
 #[cfg(test)]
@@ -272,6 +284,37 @@ mod tests {
         assert_eq!(input_bit("MON", "bSecure2"), Some(5));
         assert_eq!(input_bit("LIMIT_DINT", "nMaxValue"), Some(10));
         assert_eq!(input_bit("XOR", "bXor2In3"), Some(2));
+        // The analog layout's rule (ABI-2 §10.5) against the blocks' own bit constants.
+        use crate::blocks::{envelope, loadsensing, speed};
+        let bit = |b: &str, i: &str| input_bit(b, i).map(|n| 1u16 << n);
+        assert_eq!(bit("COUNTER_INT", "bCountDown"), Some(1 << 2));
+        assert_eq!(bit("VIOLATIONCOUNTER_UDINT", "bEnable"), Some(1 << 1));
+        assert_eq!(bit("COMPARE_UINT", "nCompIn5"), Some(1 << 12));
+        assert_eq!(bit("ADD_INT", "nAnalogIn2"), Some(1 << 9));
+        assert_eq!(
+            bit("SPEED_DINT", "nPosition"),
+            Some(speed::SL_SPEED_ACTIVE_POSITION)
+        );
+        assert_eq!(bit("SLI2_UINT", "bSLI"), Some(1));
+        assert_eq!(bit("SLI2_UINT", "nPosition"), Some(1 << 8));
+        assert_eq!(
+            bit("LOADSENSING_DINT", "bInactive"),
+            Some(loadsensing::SL_LOADSENSING_ACTIVE_INACTIVE)
+        );
+        assert_eq!(
+            bit("LOADSENSING_DINT", "nAnalogInY"),
+            Some(loadsensing::SL_LOADSENSING_ACTIVE_ANALOGINY)
+        );
+        assert_eq!(
+            bit("ENVELOPE_INT", "bSafeFunction").unwrap()
+                | bit("ENVELOPE_INT", "nInValue").unwrap(),
+            envelope::SL_ENVELOPE_ACTIVE
+        );
+        assert_eq!(
+            input_bit("SCALE_INT", "tWatchdog"),
+            None,
+            "a parameter has no bit"
+        );
     }
 
     #[test]
