@@ -920,8 +920,9 @@ fn watchdog(c: &mut SL_FSOE_CONN, tx: &mut Tx) -> bool {
             true
         }
         SL_FSOE_STATE_SHUTDOWN if master => {
+            // Keeps offering Reset frames; the partner's Reset of this cycle still counts.
             send_reset(c, tx, 0);
-            true
+            false
         }
         _ => false,
     }
