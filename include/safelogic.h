@@ -9930,10 +9930,10 @@ uint16_t sl_fsoe_crc(uint16_t wRecvCrc0, uint16_t nConnId, uint16_t nSeqNo, uint
 
 /*
  Encodes a frame (ABI-2 §13.6) into `pFrame`: CRC_0 with `*pSeqNo`; with
- `bCollisionCheck` and CRC_0 == `wOldCrc0` the sequence number is incremented (65535 →
- 1) until CRC_0 differs; `*pSeqNo` returns the number used. `*pFrameLen` = the frame
- length. SL_E_LENGTH (nothing written) for a SafeData length not 1 or even 2…32 or a
- capacity below the frame length; SL_E_FRAME for an unknown command; SL_E_INVALID_BOOL
+ `bCollisionCheck` and CRC_0 == `wOldCrc0` the sequence number is incremented (65535
+ wraps to 1) until CRC_0 differs; `*pSeqNo` returns the number used, `*pFrameLen` the
+ frame length. SL_E_LENGTH (nothing written) for a SafeData length not 1 or even 2…32 or
+ a capacity below the frame length; SL_E_FRAME for an unknown command; SL_E_INVALID_BOOL
  for a collision flag not 0/1; SL_E_NULL / SL_E_ALIGNMENT for a bad pointer. Pure.
 
  # Safety

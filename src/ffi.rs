@@ -865,10 +865,10 @@ fn flag(b: SL_BOOL) -> Result<bool, i32> {
 }
 
 /// Encodes a frame (ABI-2 §13.6) into `pFrame`: CRC_0 with `*pSeqNo`; with
-/// `bCollisionCheck` and CRC_0 == `wOldCrc0` the sequence number is incremented (65535 →
-/// 1) until CRC_0 differs; `*pSeqNo` returns the number used. `*pFrameLen` = the frame
-/// length. SL_E_LENGTH (nothing written) for a SafeData length not 1 or even 2…32 or a
-/// capacity below the frame length; SL_E_FRAME for an unknown command; SL_E_INVALID_BOOL
+/// `bCollisionCheck` and CRC_0 == `wOldCrc0` the sequence number is incremented (65535
+/// wraps to 1) until CRC_0 differs; `*pSeqNo` returns the number used, `*pFrameLen` the
+/// frame length. SL_E_LENGTH (nothing written) for a SafeData length not 1 or even 2…32 or
+/// a capacity below the frame length; SL_E_FRAME for an unknown command; SL_E_INVALID_BOOL
 /// for a collision flag not 0/1; SL_E_NULL / SL_E_ALIGNMENT for a bad pointer. Pure.
 ///
 /// # Safety
@@ -961,7 +961,8 @@ pub unsafe extern "C" fn sl_fsoe_frame_decode(
             let collision = flag(bCollisionCheck)?;
             let fs = span(pFrame as usize, nFrameLen).ok_or(SL_E_CONFIG)?;
             let ss = span(pSeqNo as usize, 2).ok_or(SL_E_CONFIG)?;
-            let os = span(pOut as usize, core::mem::size_of::<SL_FSOE_FRAME>()).ok_or(SL_E_CONFIG)?;
+            let os =
+                span(pOut as usize, core::mem::size_of::<SL_FSOE_FRAME>()).ok_or(SL_E_CONFIG)?;
             if !(disjoint(fs, ss) && disjoint(fs, os) && disjoint(ss, os)) {
                 return Err(SL_E_CONFIG);
             }
@@ -971,7 +972,13 @@ pub unsafe extern "C" fn sl_fsoe_frame_decode(
             let mut seq = unsafe { pSeqNo.read() };
             let mut out = SL_FSOE_FRAME::default();
             let st = crate::fsoe::frame::decode(
-                frame, nSafeDataLen, wRecvCrc0, &mut seq, wOldCrc0, collision, &mut out,
+                frame,
+                nSafeDataLen,
+                wRecvCrc0,
+                &mut seq,
+                wOldCrc0,
+                collision,
+                &mut out,
             );
             if st != Status::Length {
                 // SAFETY: non-null, aligned, writable, disjoint from the frame (checked above).

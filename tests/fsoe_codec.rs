@@ -87,9 +87,18 @@ fn crc_via_c_function() {
             safelogic::ffi::sl_fsoe_crc(0xABCD, 7, 2, 0x36, 1, [0xDE, 0xAD].as_ptr(), 2),
             0xBC47
         );
-        assert_eq!(safelogic::ffi::sl_fsoe_crc(0, 0, 1, 0x4E, 0, [0x12].as_ptr(), 1), 0xA176);
-        assert_eq!(safelogic::ffi::sl_fsoe_crc(0, 0, 1, 0x4E, 0, core::ptr::null(), 1), 0);
-        assert_eq!(safelogic::ffi::sl_fsoe_crc(0, 0, 1, 0x4E, 0, [1, 2, 3].as_ptr(), 3), 0);
+        assert_eq!(
+            safelogic::ffi::sl_fsoe_crc(0, 0, 1, 0x4E, 0, [0x12].as_ptr(), 1),
+            0xA176
+        );
+        assert_eq!(
+            safelogic::ffi::sl_fsoe_crc(0, 0, 1, 0x4E, 0, core::ptr::null(), 1),
+            0
+        );
+        assert_eq!(
+            safelogic::ffi::sl_fsoe_crc(0, 0, 1, 0x4E, 0, [1, 2, 3].as_ptr(), 3),
+            0
+        );
     }
 }
 
@@ -114,32 +123,139 @@ fn single_frames_fsoe_md_12_2() {
     );
 }
 
+/// (cmd, SafeData, ConnID, recvCrc0, SeqNo, bytes).
+type TraceRow = (u8, [u8; 4], u16, u16, u16, &'static str);
+
 #[test]
 fn trace_frames_fsoe_md_12_2_encode_and_decode() {
     // (cmd, data, conn, recv, seq, bytes) of the 13-frame trace.
-    let rows: [(u8, [u8; 4], u16, u16, u16, &str); 13] = [
-        (0x2A, [0, 0, 0, 0], 0, 0, 1, "2A 00 00 C4 2D 00 00 B9 14 00 00"),
-        (0x2A, [0, 0, 0, 0], 0, 0, 1, "2A 00 00 C4 2D 00 00 B9 14 00 00"),
-        (0x4E, [0x12, 0x34, 0, 0], 0, 0, 1, "4E 12 34 07 4D 00 00 43 4E 00 00"),
-        (0x4E, [0x78, 0x56, 0, 0], 0, 0x4D07, 1, "4E 78 56 D3 B9 00 00 38 73 00 00"),
-        (0x64, [7, 0, 3, 0], 7, 0xB9D3, 2, "64 07 00 9F 29 03 00 F0 07 07 00"),
-        (0x64, [7, 0, 3, 0], 7, 0x299F, 2, "64 07 00 5B 5D 03 00 03 A3 07 00"),
-        (0x52, [2, 0, 0x64, 0], 7, 0x5D5B, 3, "52 02 00 A1 A5 64 00 D8 52 07 00"),
-        (0x52, [2, 0, 0x64, 0], 7, 0xA5A1, 3, "52 02 00 97 D1 64 00 8E DA 07 00"),
-        (0x52, [0, 0, 0, 0], 7, 0xD197, 4, "52 00 00 39 A6 00 00 BB 5B 07 00"),
-        (0x52, [0, 0, 0, 0], 7, 0xA639, 4, "52 00 00 AD 00 00 00 98 A4 07 00"),
-        (0x08, [0, 0, 0, 0], 7, 0x00AD, 5, "08 00 00 A6 00 00 00 4E 1A 07 00"),
-        (0x36, [1, 2, 3, 4], 7, 0x00A6, 5, "36 01 02 C1 8B 03 04 EB C3 07 00"),
-        (0x36, [0xAA, 0x55, 0, 0xFF], 7, 0x8BC1, 6, "36 AA 55 A0 38 00 FF 07 36 07 00"),
+    let rows: [TraceRow; 13] = [
+        (
+            0x2A,
+            [0, 0, 0, 0],
+            0,
+            0,
+            1,
+            "2A 00 00 C4 2D 00 00 B9 14 00 00",
+        ),
+        (
+            0x2A,
+            [0, 0, 0, 0],
+            0,
+            0,
+            1,
+            "2A 00 00 C4 2D 00 00 B9 14 00 00",
+        ),
+        (
+            0x4E,
+            [0x12, 0x34, 0, 0],
+            0,
+            0,
+            1,
+            "4E 12 34 07 4D 00 00 43 4E 00 00",
+        ),
+        (
+            0x4E,
+            [0x78, 0x56, 0, 0],
+            0,
+            0x4D07,
+            1,
+            "4E 78 56 D3 B9 00 00 38 73 00 00",
+        ),
+        (
+            0x64,
+            [7, 0, 3, 0],
+            7,
+            0xB9D3,
+            2,
+            "64 07 00 9F 29 03 00 F0 07 07 00",
+        ),
+        (
+            0x64,
+            [7, 0, 3, 0],
+            7,
+            0x299F,
+            2,
+            "64 07 00 5B 5D 03 00 03 A3 07 00",
+        ),
+        (
+            0x52,
+            [2, 0, 0x64, 0],
+            7,
+            0x5D5B,
+            3,
+            "52 02 00 A1 A5 64 00 D8 52 07 00",
+        ),
+        (
+            0x52,
+            [2, 0, 0x64, 0],
+            7,
+            0xA5A1,
+            3,
+            "52 02 00 97 D1 64 00 8E DA 07 00",
+        ),
+        (
+            0x52,
+            [0, 0, 0, 0],
+            7,
+            0xD197,
+            4,
+            "52 00 00 39 A6 00 00 BB 5B 07 00",
+        ),
+        (
+            0x52,
+            [0, 0, 0, 0],
+            7,
+            0xA639,
+            4,
+            "52 00 00 AD 00 00 00 98 A4 07 00",
+        ),
+        (
+            0x08,
+            [0, 0, 0, 0],
+            7,
+            0x00AD,
+            5,
+            "08 00 00 A6 00 00 00 4E 1A 07 00",
+        ),
+        (
+            0x36,
+            [1, 2, 3, 4],
+            7,
+            0x00A6,
+            5,
+            "36 01 02 C1 8B 03 04 EB C3 07 00",
+        ),
+        (
+            0x36,
+            [0xAA, 0x55, 0, 0xFF],
+            7,
+            0x8BC1,
+            6,
+            "36 AA 55 A0 38 00 FF 07 36 07 00",
+        ),
     ];
     for (i, (cmd, data, conn, recv, seq, want)) in rows.iter().enumerate() {
         let w = hex(want);
         assert_eq!(enc(*cmd, data, *conn, *recv, *seq), w, "row {}", i + 1);
-        assert_eq!(ref_frame(*cmd, data, *conn, *recv, *seq), w, "reference row {}", i + 1);
+        assert_eq!(
+            ref_frame(*cmd, data, *conn, *recv, *seq),
+            w,
+            "reference row {}",
+            i + 1
+        );
         let mut s = *seq;
         let mut f = SL_FSOE_FRAME::default();
-        assert_eq!(decode(&w, 4, *recv, &mut s, 0, true, &mut f), Status::Ok, "row {}", i + 1);
-        assert_eq!((f.nCmd, f.nConnId, f.nSeqNo, &f.aSafeData[..4]), (*cmd, *conn, *seq, &data[..]));
+        assert_eq!(
+            decode(&w, 4, *recv, &mut s, 0, true, &mut f),
+            Status::Ok,
+            "row {}",
+            i + 1
+        );
+        assert_eq!(
+            (f.nCmd, f.nConnId, f.nSeqNo, &f.aSafeData[..4]),
+            (*cmd, *conn, *seq, &data[..])
+        );
     }
     assert_eq!(hex("02 00 64 00 00 00"), [2, 0, 100, 0, 0, 0]);
 }
@@ -160,7 +276,10 @@ fn frame_lengths_and_offsets() {
     for k in 0..4 {
         assert_eq!(&f[1 + 4 * k..3 + 4 * k], &data[2 * k..2 * k + 2]);
         let crc = u16::from_le_bytes([f[3 + 4 * k], f[4 + 4 * k]]);
-        assert_eq!(crc, ref_block_crc(0x5555, 0x1234, 9, 0x36, k as u16, &data[2 * k..2 * k + 2]));
+        assert_eq!(
+            crc,
+            ref_block_crc(0x5555, 0x1234, 9, 0x36, k as u16, &data[2 * k..2 * k + 2])
+        );
     }
     assert_eq!(&f[17..19], &[0x34, 0x12]);
 }
@@ -169,13 +288,25 @@ fn frame_lengths_and_offsets() {
 fn lengths_and_unknown_commands_are_refused() {
     let mut out = [0u8; 67];
     let mut s = 1;
-    assert_eq!(encode(&mut out[..10], 0x36, &[0; 4], 1, 0, &mut s, 0, true), Err(Status::Length));
-    assert_eq!(encode(&mut out, 0x36, &[0; 3], 1, 0, &mut s, 0, true), Err(Status::Length));
-    assert_eq!(encode(&mut out, 0x99, &[0; 4], 1, 0, &mut s, 0, true), Err(Status::Frame));
+    assert_eq!(
+        encode(&mut out[..10], 0x36, &[0; 4], 1, 0, &mut s, 0, true),
+        Err(Status::Length)
+    );
+    assert_eq!(
+        encode(&mut out, 0x36, &[0; 3], 1, 0, &mut s, 0, true),
+        Err(Status::Length)
+    );
+    assert_eq!(
+        encode(&mut out, 0x99, &[0; 4], 1, 0, &mut s, 0, true),
+        Err(Status::Frame)
+    );
     assert_eq!(out, [0u8; 67]);
     let good = enc(0x36, &[1, 2, 3, 4], 1, 0, 1);
     let mut f = SL_FSOE_FRAME::default();
-    assert_eq!(decode(&good[..10], 4, 0, &mut s, 0, true, &mut f), Status::Length);
+    assert_eq!(
+        decode(&good[..10], 4, 0, &mut s, 0, true, &mut f),
+        Status::Length
+    );
     assert_eq!(decode(&good, 2, 0, &mut s, 0, true, &mut f), Status::Length);
     let mut bad = good.clone();
     bad[0] = 0x99;
@@ -192,7 +323,9 @@ fn lengths_and_unknown_commands_are_refused() {
 #[test]
 fn every_bit_flip_is_rejected() {
     for n in [1usize, 2, 4, 6, 8, 16, 32] {
-        let data: Vec<u8> = (0..n as u8).map(|i| i.wrapping_mul(37).wrapping_add(5)).collect();
+        let data: Vec<u8> = (0..n as u8)
+            .map(|i| i.wrapping_mul(37).wrapping_add(5))
+            .collect();
         let good = enc(0x36, &data, 0x0102, 0xBEEF, 77);
         for bit in 0..good.len() * 8 {
             let mut bad = good.clone();
@@ -224,11 +357,17 @@ fn collision_rule_both_sides() {
             // The receiver with the same old CRC finds the same number.
             let mut r = seq;
             let mut f = SL_FSOE_FRAME::default();
-            assert_eq!(decode(&out[..len], n, 0x1111, &mut r, old, true, &mut f), Status::Ok);
+            assert_eq!(
+                decode(&out[..len], n, 0x1111, &mut r, old, true, &mut f),
+                Status::Ok
+            );
             assert_eq!(r, s);
             // Without the collision check the receiver expects `seq` and rejects it.
             let mut r = seq;
-            assert_eq!(decode(&out[..len], n, 0x1111, &mut r, old, false, &mut f), Status::Frame);
+            assert_eq!(
+                decode(&out[..len], n, 0x1111, &mut r, old, false, &mut f),
+                Status::Frame
+            );
             // Without the check the sender keeps `seq`.
             let mut s2 = seq;
             let (_, c2) = encode(&mut out, 0x36, &data, 3, 0x1111, &mut s2, old, false).unwrap();
@@ -253,7 +392,11 @@ fn random_round_trips_against_the_reference() {
     let cmds = [0x2A, 0x4E, 0x64, 0x52, 0x36, 0x08];
     for _ in 0..10_000 {
         let r = rnd();
-        let n = if r % 17 == 0 { 1 } else { 2 * (1 + (r >> 8) as usize % 16) };
+        let n = if r % 17 == 0 {
+            1
+        } else {
+            2 * (1 + (r >> 8) as usize % 16)
+        };
         let data: Vec<u8> = (0..n).map(|_| rnd() as u8).collect();
         let cmd = cmds[(r >> 20) as usize % 6];
         let conn = (r >> 24) as u16;
@@ -264,10 +407,19 @@ fn random_round_trips_against_the_reference() {
         let mut s = seq;
         let mut out = SL_FSOE_FRAME::default();
         assert_eq!(decode(&f, n, recv, &mut s, 0, false, &mut out), Status::Ok);
-        assert_eq!((out.nCmd, out.nConnId, &out.aSafeData[..n]), (cmd, conn, &data[..]));
+        assert_eq!(
+            (out.nCmd, out.nConnId, &out.aSafeData[..n]),
+            (cmd, conn, &data[..])
+        );
         let mut s = next_seq(seq);
-        assert_eq!(decode(&f, n, recv, &mut s, 0, false, &mut out), Status::Frame);
+        assert_eq!(
+            decode(&f, n, recv, &mut s, 0, false, &mut out),
+            Status::Frame
+        );
         let mut s = seq;
-        assert_eq!(decode(&f, n, recv ^ 1, &mut s, 0, false, &mut out), Status::Frame);
+        assert_eq!(
+            decode(&f, n, recv ^ 1, &mut s, 0, false, &mut out),
+            Status::Frame
+        );
     }
 }

@@ -57,7 +57,13 @@ impl Node {
 /// Outputs consistent with the state (ABI-2 §13.1).
 pub fn check_invariants(c: &SL_FSOE_CONN) {
     assert!((100..=106).contains(&c.nState), "state {}", c.nState);
-    for b in [c.bComErr, c.bComStartup, c.bDataValid, c.bShutdown, c.bPeerFailSafe] {
+    for b in [
+        c.bComErr,
+        c.bComStartup,
+        c.bDataValid,
+        c.bShutdown,
+        c.bPeerFailSafe,
+    ] {
         assert!(b <= 1);
     }
     if c.bDataValid == 0 {
@@ -133,9 +139,15 @@ fn trace_of_fsoe_md_12_2_byte_for_byte() {
     }
     assert_eq!(frames.len(), 13);
     // Master: DATA, valid inputs 01 02 03 04; slave: outputs after the 13th frame.
-    assert_eq!((m.c.nState, m.c.bDataValid, m.c.bComErr, m.c.bComStartup), (104, 1, 0, 0));
+    assert_eq!(
+        (m.c.nState, m.c.bDataValid, m.c.bComErr, m.c.bComStartup),
+        (104, 1, 0, 0)
+    );
     assert_eq!(&m.c.aRxSafeData[..4], &[1, 2, 3, 4]);
-    assert_eq!(s.c.bPeerFailSafe, 1, "the master's first Data frame was FailSafeData");
+    assert_eq!(
+        s.c.bPeerFailSafe, 1,
+        "the master's first Data frame was FailSafeData"
+    );
     assert_eq!(s.c.nDiag, SL_FSOE_DIAG_MASTER_FAILSAFE);
     s.step(10, Some(&frames[12]));
     assert_eq!((s.c.nState, s.c.bDataValid, s.c.bPeerFailSafe), (104, 1, 0));
@@ -186,8 +198,14 @@ fn every_length_pair_and_app_para_length_reaches_data_and_carries_data() {
                         t += 1;
                     }
                     assert_eq!((m.c.bDataValid, s.c.bDataValid), (1, 1), "{a} {b} {app}");
-                    assert_eq!(&s.c.aRxSafeData[..a as usize], &m.c.aTxSafeData[..a as usize]);
-                    assert_eq!(&m.c.aRxSafeData[..b as usize], &s.c.aTxSafeData[..b as usize]);
+                    assert_eq!(
+                        &s.c.aRxSafeData[..a as usize],
+                        &m.c.aTxSafeData[..a as usize]
+                    );
+                    assert_eq!(
+                        &m.c.aRxSafeData[..b as usize],
+                        &s.c.aTxSafeData[..b as usize]
+                    );
                     assert!(s.c.aRxSafeData[a as usize..].iter().all(|&v| v == 0));
                 }
                 assert_eq!((m.c.bComErr, s.c.bComErr), (0, 0));
@@ -245,7 +263,10 @@ fn watchdog_expiry_resets_with_code_5_at_exactly_the_watchdog_time() {
     }
     assert_eq!((m.c.bComErr, m.c.bDataValid, s.c.bDataValid), (1, 0, 0));
     assert_eq!(s.c.bPeerFailSafe, 1);
-    assert_eq!(m.c.nDiag & SL_FSOE_DIAG_MASTER_FAILSAFE, SL_FSOE_DIAG_MASTER_FAILSAFE);
+    assert_eq!(
+        m.c.nDiag & SL_FSOE_DIAG_MASTER_FAILSAFE,
+        SL_FSOE_DIAG_MASTER_FAILSAFE
+    );
     m.c.bErrAck = 1;
     s.c.bErrAck = 1;
     bus(&mut m, &mut s, t);
@@ -386,9 +407,16 @@ fn shutdown_by_the_master_and_by_the_slave() {
             t += 1;
         }
         let (me, peer) = if by_master { (&m, &s) } else { (&s, &m) };
-        assert_eq!((me.c.nState, peer.c.nState), (106, 105), "by master {by_master}");
+        assert_eq!(
+            (me.c.nState, peer.c.nState),
+            (106, 105),
+            "by master {by_master}"
+        );
         for n in [&m, &s] {
-            assert_eq!((n.c.bShutdown, n.c.bComErr, n.c.bComStartup, n.c.bDataValid), (1, 0, 0, 0));
+            assert_eq!(
+                (n.c.bShutdown, n.c.bComErr, n.c.bComStartup, n.c.bDataValid),
+                (1, 0, 0, 0)
+            );
         }
         m.c.bShutdownRequest = 0;
         s.c.bShutdownRequest = 0;
@@ -463,7 +491,10 @@ fn init_refuses_invalid_parameters_and_cycle_checks_lengths() {
     assert_eq!(cycle(&mut c, 0, None, &mut tx), (Status::Length, 0));
     assert_eq!(tx, [0; 6]);
     let mut tx = [0u8; 7];
-    assert_eq!(cycle(&mut c, 0, Some(&[0; 8]), &mut tx), (Status::Length, 7));
+    assert_eq!(
+        cycle(&mut c, 0, Some(&[0; 8]), &mut tx),
+        (Status::Length, 7)
+    );
     // A corrupted private state is refused.
     c.stPrivate.nStateInv ^= 1;
     assert_eq!(cycle(&mut c, 1, None, &mut tx).0, Status::Corrupt);

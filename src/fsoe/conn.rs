@@ -508,7 +508,15 @@ fn check(c: &SL_FSOE_CONN, rx: &[u8], fresh: bool) -> (Status, SL_FSOE_FRAME, u1
         (p.wLastCrc, p.nMasterSeqNo, p.wOldMasterCrc, true)
     };
     let mut f = SL_FSOE_FRAME::default();
-    let st = decode(rx, usize::from(p.nRxLen), recv, &mut seq, old, collision, &mut f);
+    let st = decode(
+        rx,
+        usize::from(p.nRxLen),
+        recv,
+        &mut seq,
+        old,
+        collision,
+        &mut f,
+    );
     (st, f, seq)
 }
 
@@ -649,14 +657,7 @@ fn master_rx(c: &mut SL_FSOE_CONN, tx: &mut Tx, rx: &[u8], run: bool) {
 }
 
 /// Both roles in DATA: a ProcessData / FailSafeData frame.
-fn data_rx(
-    c: &mut SL_FSOE_CONN,
-    tx: &mut Tx,
-    f: &SL_FSOE_FRAME,
-    st: Status,
-    seq: u16,
-    run: bool,
-) {
+fn data_rx(c: &mut SL_FSOE_CONN, tx: &mut Tx, f: &SL_FSOE_FRAME, st: Status, seq: u16, run: bool) {
     let cmd = f.nCmd;
     if cmd != SL_FSOE_CMD_PROCESSDATA && cmd != SL_FSOE_CMD_FAILSAFEDATA {
         return go_reset(c, tx, SL_FSOE_RESET_INVALID_CMD);
@@ -995,7 +996,13 @@ pub fn cycle(c: &mut SL_FSOE_CONN, now: u32, rx: Option<&[u8]>, tx: &mut [u8]) -
         return (Status::Length, 0);
     }
     let mut status = Status::Ok;
-    let raw = [c.bRun, c.bErrAck, c.bComErrAck, c.bShutdownRequest, c.bModuleFault];
+    let raw = [
+        c.bRun,
+        c.bErrAck,
+        c.bComErrAck,
+        c.bShutdownRequest,
+        c.bModuleFault,
+    ];
     if raw.iter().any(|&b| b > 1) {
         status = Status::InvalidBool;
     }
