@@ -454,3 +454,24 @@ fn the_receiver_never_presents_data_the_sender_did_not_send() {
     }
     assert!(valid_seen > 10_000, "{valid_seen}");
 }
+
+#[test]
+fn unknown_and_unexpected_commands() {
+    let (mut m, mut s) = pair(4, 4);
+    let (mut mb, mut sb) = (Vec::new(), Vec::new());
+    let t = connect(&mut m, &mut s, &mut mb, &mut sb);
+    // Unknown command 0x99 → Reset 2 (checked before anything else).
+    let mut bad = sb.clone();
+    bad[0] = 0x99;
+    let f = step(&mut m, t, Some(&bad)).unwrap();
+    assert_eq!((f[1], m.nState, m.bComErr), (2, 100, 1));
+    // A known command that DATA does not expect (Session, CRC irrelevant) → Reset 1.
+    let (mut m, mut s) = pair(4, 4);
+    let (mut mb, mut sb) = (Vec::new(), Vec::new());
+    let t = connect(&mut m, &mut s, &mut mb, &mut sb);
+    let mut bad = mb.clone();
+    bad[0] = SL_FSOE_CMD_CONNECTION;
+    let f = step(&mut s, t, Some(&bad)).unwrap();
+    assert_eq!((f[1], s.nState, s.bComErr), (1, 100, 1));
+    assert_eq!(s.nDiag & 0x1F, 1 | SL_FSOE_DIAG_SLAVE_ERROR);
+}
