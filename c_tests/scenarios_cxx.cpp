@@ -18,3 +18,4 @@
 #include "test_sli.c"
 #include "test_loadsensing.c"
 #include "test_envelope.c"
+#include "test_fsoe.c"

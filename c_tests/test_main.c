@@ -249,6 +249,7 @@ int main(void)
     run_sli_scenarios();
     run_loadsensing_scenarios();
     run_envelope_scenarios();
+    run_fsoe_scenarios();
     printf("%d passed, %d failed\n", h_passed, h_failed);
     return h_failed == 0 ? 0 : 1;
 }

@@ -872,6 +872,207 @@
 #define SL_TYPE_XOR 5
 
 /*
+ Largest SafeData length per direction (bytes).
+ */
+#define SL_FSOE_DATA_MAX 32
+
+/*
+ Largest number of application parameter bytes.
+ */
+#define SL_FSOE_APPPARA_MAX 64
+
+/*
+ Largest frame (2 * SL_FSOE_DATA_MAX + 3 bytes).
+ */
+#define SL_FSOE_FRAME_MAX 67
+
+/*
+ Command Reset.
+ */
+#define SL_FSOE_CMD_RESET 42
+
+/*
+ Command Session.
+ */
+#define SL_FSOE_CMD_SESSION 78
+
+/*
+ Command Connection.
+ */
+#define SL_FSOE_CMD_CONNECTION 100
+
+/*
+ Command Parameter.
+ */
+#define SL_FSOE_CMD_PARAMETER 82
+
+/*
+ Command ProcessData.
+ */
+#define SL_FSOE_CMD_PROCESSDATA 54
+
+/*
+ Command FailSafeData.
+ */
+#define SL_FSOE_CMD_FAILSAFEDATA 8
+
+/*
+ Role: FSoE master.
+ */
+#define SL_FSOE_ROLE_MASTER 1
+
+/*
+ Role: FSoE slave.
+ */
+#define SL_FSOE_ROLE_SLAVE 2
+
+/*
+ Option: a communication error is acknowledged by bComErrAck and then bErrAck.
+ */
+#define SL_FSOE_OPT_COMERRACK (1 << 0)
+
+/*
+ Option "Module error is ComError": bModuleFault sets bComErr (diag 13).
+ */
+#define SL_FSOE_OPT_MODULE_ERR_IS_COMERR (1 << 1)
+
+/*
+ Connection state Reset (manual §3.2.1.3).
+ */
+#define SL_FSOE_STATE_RESET 100
+
+/*
+ Connection state Session.
+ */
+#define SL_FSOE_STATE_SESSION 101
+
+/*
+ Connection state Connection.
+ */
+#define SL_FSOE_STATE_CONNECTION 102
+
+/*
+ Connection state Parameter.
+ */
+#define SL_FSOE_STATE_PARAMETER 103
+
+/*
+ Connection state Data.
+ */
+#define SL_FSOE_STATE_DATA 104
+
+/*
+ Connection state Shutdown (shut down by the partner).
+ */
+#define SL_FSOE_STATE_SHUTDOWN 105
+
+/*
+ Connection state Shutdown-Deactive (shut down by bShutdownRequest).
+ */
+#define SL_FSOE_STATE_SHUTDOWN_DEACTIVE 106
+
+/*
+ Reset code 0: local reset / acknowledgement.
+ */
+#define SL_FSOE_RESET_LOCAL 0
+
+/*
+ Reset code 1: invalid (unexpected) command.
+ */
+#define SL_FSOE_RESET_INVALID_CMD 1
+
+/*
+ Reset code 2: unknown command.
+ */
+#define SL_FSOE_RESET_UNKNOWN_CMD 2
+
+/*
+ Reset code 3: invalid connection ID.
+ */
+#define SL_FSOE_RESET_INVALID_CONNID 3
+
+/*
+ Reset code 4: invalid CRC.
+ */
+#define SL_FSOE_RESET_INVALID_CRC 4
+
+/*
+ Reset code 5: watchdog expired.
+ */
+#define SL_FSOE_RESET_WD_EXPIRED 5
+
+/*
+ Reset code 6: invalid FSoE address (slave only).
+ */
+#define SL_FSOE_RESET_INVALID_ADDRESS 6
+
+/*
+ Reset code 7: invalid data (echo mismatch, master only).
+ */
+#define SL_FSOE_RESET_INVALID_DATA 7
+
+/*
+ Reset code 8: invalid communication parameter length (slave only).
+ */
+#define SL_FSOE_RESET_INVALID_COMMPARALEN 8
+
+/*
+ Reset code 9: invalid communication parameters (watchdog; slave only).
+ */
+#define SL_FSOE_RESET_INVALID_COMMPARA 9
+
+/*
+ Reset code 10: invalid application parameter length (slave only).
+ */
+#define SL_FSOE_RESET_INVALID_USERPARALEN 10
+
+/*
+ Reset code 11: invalid application parameters (slave only).
+ */
+#define SL_FSOE_RESET_INVALID_USERPARA 11
+
+/*
+ Library proposal (ABI-2 §13.5, semantics FS9): a Reset frame with this code shuts the
+ connection down between two safelogic nodes (not interoperable with an EL6910).
+ */
+#define SL_FSOE_RESET_SHUTDOWN 254
+
+/*
+ nDiag bit 4: the error code was detected by the slave.
+ */
+#define SL_FSOE_DIAG_SLAVE_ERROR (1 << 4)
+
+/*
+ nDiag bit 5: the slave sends FailSafeData.
+ */
+#define SL_FSOE_DIAG_SLAVE_FAILSAFE (1 << 5)
+
+/*
+ nDiag bit 6: start-up (state 100–103).
+ */
+#define SL_FSOE_DIAG_STARTUP (1 << 6)
+
+/*
+ nDiag bit 7: the master sends FailSafeData.
+ */
+#define SL_FSOE_DIAG_MASTER_FAILSAFE (1 << 7)
+
+/*
+ nDiag low nibble 12: FSoE master reset (slave role, Reset code 0 after DATA).
+ */
+#define SL_FSOE_DIAG_MASTER_RESET 12
+
+/*
+ nDiag low nibble 13: module error with "Module error is ComError".
+ */
+#define SL_FSOE_DIAG_MODULE_ERROR 13
+
+/*
+ nDiag low nibble 15: slave not yet started, or a received code above 11.
+ */
+#define SL_FSOE_DIAG_NOT_STARTED 15
+
+/*
  Link kind: BOOL output to BOOL input.
  */
 #define SL_LINK_BOOL 0
@@ -985,6 +1186,18 @@
  stored elapsed time is discarded (0), so one ErrAck sequence leaves the error.
  */
 #define SL_E_RESTORE (-10)
+
+/*
+ FSoE (ABI-2 §13.1): a length or capacity does not fit (frame length, SafeData length,
+ transmit buffer capacity); nothing was written.
+ */
+#define SL_E_LENGTH (-11)
+
+/*
+ FSoE (ABI-2 §13.6): a frame was rejected by `sl_fsoe_frame_decode` (the reason is in
+ its `nResetCode`: 2 unknown command, 4 CRC).
+ */
+#define SL_E_FRAME (-12)
 
 /*
  EDM1 feedback loop active.
@@ -1499,6 +1712,300 @@ typedef struct SL_LINK {
    */
   uint8_t aReserved[3];
 } SL_LINK;
+
+/*
+ Private state of a connection (296 bytes): never write it.
+ */
+typedef struct SL_FSOE_CONN_PRIVATE {
+  /*
+   Time the watchdog was started (the last frame sent).
+   */
+  uint32_t tWdStart;
+  /*
+   Magic of an initialised connection.
+   */
+  uint16_t wMagic;
+  /*
+   CRC_0 of the last frame sent or received (the chain input, ETG LastCrc).
+   */
+  uint16_t wLastCrc;
+  /*
+   CRC_0 of the previous frame sent by the master (collision rule).
+   */
+  uint16_t wOldMasterCrc;
+  /*
+   CRC_0 of the previous frame sent by the slave (collision rule).
+   */
+  uint16_t wOldSlaveCrc;
+  /*
+   Sequence number of the master's next frame.
+   */
+  uint16_t nMasterSeqNo;
+  /*
+   Sequence number of the slave's next frame.
+   */
+  uint16_t nSlaveSeqNo;
+  /*
+   This node's session ID.
+   */
+  uint16_t wOwnSession;
+  /*
+   The partner's session ID (as far as received).
+   */
+  uint16_t wPeerSession;
+  /*
+   Offset in the handshake item of the chunk sent last.
+   */
+  uint16_t nTxOff;
+  /*
+   Bytes of the partner's handshake item received (slave: ConnData, SafePara; both: session ID).
+   */
+  uint16_t nRxCount;
+  /*
+   Latched nConnectionId.
+   */
+  uint16_t nConnId;
+  /*
+   Latched nFsoeAddress.
+   */
+  uint16_t nAddress;
+  /*
+   Latched tWatchdogTime.
+   */
+  uint16_t nWatchdog;
+  /*
+   Latched nAppParaLen.
+   */
+  uint16_t nAppLen;
+  /*
+   Latched nRole.
+   */
+  uint8_t nRole;
+  /*
+   Latched nTxDataLen.
+   */
+  uint8_t nTxLen;
+  /*
+   Latched nRxDataLen.
+   */
+  uint8_t nRxLen;
+  /*
+   Latched dwOptions (bits 0-1).
+   */
+  uint8_t nOptions;
+  /*
+   State copy.
+   */
+  uint8_t nState;
+  /*
+   Complement of the state copy.
+   */
+  uint8_t nStateInv;
+  /*
+   Edge memory of bErrAck, bComErrAck, bShutdownRequest.
+   */
+  uint8_t nEdges;
+  /*
+   Flags (F_*).
+   */
+  uint8_t nFlags;
+  /*
+   More flags (G_*).
+   */
+  uint8_t nFlags2;
+  /*
+   Low nibble of the manual's diag byte (code of the last error, 12, 13).
+   */
+  uint8_t nDiagCode;
+  /*
+   Length of the copy of the last received frame.
+   */
+  uint8_t nLastRxLen;
+  /*
+   Reserved.
+   */
+  uint8_t nReserved;
+  /*
+   Copy of the last received frame (frame-received event).
+   */
+  uint8_t aLastRx[68];
+  /*
+   SafePara built from this node's parameters (master: sent; slave: expected).
+   */
+  uint8_t aOwnPara[72];
+  /*
+   Slave: received ConnData (0-3) and SafePara (4..).
+   */
+  uint8_t aRxItem[76];
+  /*
+   SafeData of the last accepted ProcessData frame.
+   */
+  uint8_t aRxData[32];
+  /*
+   Reserved.
+   */
+  uint8_t aReserved[4];
+} SL_FSOE_CONN_PRIVATE;
+
+/*
+ An FSoE connection, master or slave (ABI-2 §13.1). Size: 480 bytes.
+ */
+typedef struct SL_FSOE_CONN {
+  /*
+   Offset 0. FbRun of the owning group; FALSE: in DATA send FailSafeData, aRxSafeData reads 0.
+   */
+  SL_BOOL bRun;
+  /*
+   Offset 1. Group ErrAck: a rising edge acknowledges bComErr (in DATA, no error condition left).
+   */
+  SL_BOOL bErrAck;
+  /*
+   Offset 2. Per-connection ComErrAck (with SL_FSOE_OPT_COMERRACK: needed before ErrAck).
+   */
+  SL_BOOL bComErrAck;
+  /*
+   Offset 3. FB_CONNECTION_SHUTDOWN request: in DATA enter 106.
+   */
+  SL_BOOL bShutdownRequest;
+  /*
+   Offset 4. Module error of the partner (with SL_FSOE_OPT_MODULE_ERR_IS_COMERR); an invalid byte reads TRUE.
+   */
+  SL_BOOL bModuleFault;
+  /*
+   Offset 5. Reserved, keep 0.
+   */
+  uint8_t aReserved0[3];
+  /*
+   Offset 8. Caller-supplied random 16-bit value, fresh every call; taken when a session starts.
+   */
+  uint16_t nSessionIdSeed;
+  /*
+   Offset 10. Reserved, keep 0.
+   */
+  uint8_t aReserved1[6];
+  /*
+   Offset 16. SafeData to send (the first nTxDataLen bytes).
+   */
+  uint8_t aTxSafeData[32];
+  /*
+   Offset 48. Parameter: Connection ID, 1…65535, unique per bus.
+   */
+  uint16_t nConnectionId;
+  /*
+   Offset 50. Parameter: the slave's FSoE address.
+   */
+  uint16_t nFsoeAddress;
+  /*
+   Offset 52. Parameter: SL_FSOE_ROLE_MASTER (1) or SL_FSOE_ROLE_SLAVE (2).
+   */
+  uint16_t nRole;
+  /*
+   Offset 54. Parameter: SafeData bytes sent: 1 or even 2…32.
+   */
+  uint16_t nTxDataLen;
+  /*
+   Offset 56. Parameter: SafeData bytes received: 1 or even 2…32.
+   */
+  uint16_t nRxDataLen;
+  /*
+   Offset 58. Parameter: application parameter bytes, 0…64.
+   */
+  uint16_t nAppParaLen;
+  /*
+   Offset 60. Parameter: watchdog in ms, 1…65535.
+   */
+  uint32_t tWatchdogTime;
+  /*
+   Offset 64. Parameter: SL_FSOE_OPT_* bits.
+   */
+  uint32_t dwOptions;
+  /*
+   Offset 68. Parameter: application parameters (master: sent; slave: expected).
+   */
+  uint8_t aAppPara[64];
+  /*
+   Offset 132. Reserved, keep 0.
+   */
+  uint8_t aReserved2[4];
+  /*
+   Offset 136. Communication error, latched until acknowledged.
+   */
+  SL_BOOL bComErr;
+  /*
+   Offset 137. Start-up: state 100–103, not shut down.
+   */
+  SL_BOOL bComStartup;
+  /*
+   Offset 138. DATA, last accepted frame ProcessData, bRun, no bComErr.
+   */
+  SL_BOOL bDataValid;
+  /*
+   Offset 139. From entering 105/106 until DATA is reached again.
+   */
+  SL_BOOL bShutdown;
+  /*
+   Offset 140. The partner sends FailSafeData.
+   */
+  SL_BOOL bPeerFailSafe;
+  /*
+   Offset 141. Reserved.
+   */
+  uint8_t aReserved3[3];
+  /*
+   Offset 144. Received SafeData; all 0 unless bDataValid.
+   */
+  uint8_t aRxSafeData[32];
+  /*
+   Offset 176. State 100–106.
+   */
+  uint8_t nState;
+  /*
+   Offset 177. Last Reset code sent or received.
+   */
+  uint8_t nResetCode;
+  /*
+   Offset 178. Manual diag byte in bits 0-7; library bits 13-15.
+   */
+  uint16_t nDiag;
+  /*
+   Offset 180. Reserved.
+   */
+  uint8_t aReserved4[4];
+  /*
+   Offset 184. Private state: never write it.
+   */
+  struct SL_FSOE_CONN_PRIVATE stPrivate;
+} SL_FSOE_CONN;
+
+/*
+ A decoded frame (`sl_fsoe_frame_decode`). Size: 40 bytes.
+ */
+typedef struct SL_FSOE_FRAME {
+  /*
+   Offset 0. The command octet.
+   */
+  uint8_t nCmd;
+  /*
+   Offset 1. Reason when rejected (2 unknown command, 4 CRC); else a Reset frame's code (SafeData[0]), 0 for other commands.
+   */
+  uint8_t nResetCode;
+  /*
+   Offset 2. The ConnID field.
+   */
+  uint16_t nConnId;
+  /*
+   Offset 4. CRC_0 as carried by the frame.
+   */
+  uint16_t wCrc0;
+  /*
+   Offset 6. The sequence number that matched (the last one tried when rejected).
+   */
+  uint16_t nSeqNo;
+  /*
+   Offset 8. SafeData (the first nSafeDataLen bytes; the rest 0).
+   */
+  uint8_t aSafeData[32];
+} SL_FSOE_FRAME;
 
 /*
  Private state of FB_ESTOP and FB_MON (64 bytes). Never written by the user.
@@ -9245,6 +9752,8 @@ typedef struct FB_VIOLATIONCOUNTER_UDINT {
 } FB_VIOLATIONCOUNTER_UDINT;
 
 
+
+
 #ifdef __cplusplus
 extern "C" {
 #endif // __cplusplus
@@ -9373,6 +9882,79 @@ int32_t sl_group_cycle(struct SL_GROUP *g, struct SL_MEMBER *aMembers, struct SL
  `buf` is NULL or points to at least `nLen` writable bytes.
  */
 int32_t sl_diag_text(uint16_t nType, uint16_t nDiag, char *buf, size_t nLen);
+
+/*
+ Validates and latches the parameters of an FSoE connection (ABI-2 §13.1) and resets it
+ to state 100 (Reset); nothing is sent yet. Never modifies an input or parameter field.
+ SL_OK; SL_E_CONFIG for invalid parameters (nConnectionId 0, nRole not 1/2, a SafeData
+ length not 1 or even 2…32, nAppParaLen > 64, tWatchdogTime not 1…65535, unknown option
+ bits); SL_E_NULL / SL_E_ALIGNMENT for a bad pointer.
+
+ # Safety
+ `c` is NULL or points to a live, caller-owned SL_FSOE_CONN that nothing else accesses during the call.
+ */
+int32_t sl_fsoe_init(struct SL_FSOE_CONN *c);
+
+/*
+ One cycle of an FSoE connection at `tNow` (monotonic ms): processes the received frame
+ `pRxFrame`/`nRxLen` (NULL/0: none; a frame equal to the previous one is no event), runs
+ the watchdog, and writes a new frame to `pTxFrame` only when the state machine produces
+ one: `*pTxLen` = its length, else 0 and `pTxFrame` untouched. SL_E_LENGTH: `nTxCap` is
+ below the frame length of nTxDataLen (nothing done) or `nRxLen` is not the frame length
+ of nRxDataLen (the frame is ignored). Protocol errors are not call errors: they show in
+ nState / nDiag / bComErr. SL_E_INVALID_BOOL: an input byte was neither 0 nor 1.
+ SL_E_CONFIG: init refused or never done; SL_E_CORRUPT: the private state failed its
+ check; SL_E_NULL / SL_E_ALIGNMENT for a bad pointer; SL_E_CONFIG when the buffers
+ overlap each other or the connection.
+
+ # Safety
+ `c` as for `sl_fsoe_init`; `pRxFrame` is NULL or points to `nRxLen` readable bytes;
+ `pTxFrame` points to `nTxCap` writable bytes; `pTxLen` points to a writable size_t.
+ */
+int32_t sl_fsoe_cycle(struct SL_FSOE_CONN *c, uint32_t tNow, const uint8_t *pRxFrame, size_t nRxLen, uint8_t *pTxFrame, size_t nTxCap, size_t *pTxLen);
+
+/*
+ Frame length for `nSafeDataLen` SafeData bytes: 6 for 1, 2n + 3 for even n in 2…32, else 0.
+ */
+size_t sl_fsoe_frame_len(size_t nSafeDataLen);
+
+/*
+ The FSoE CRC of one block (ABI-2 §13.7): `wRecvCrc0`, `nConnId`, `nSeqNo` (LE),
+ `nCmd`, the block index (LE, only when `nIndex` > 0) and the block's `nBlockLen` (1 or
+ 2) bytes, then three zero octets. 0 for a NULL block or `nBlockLen` not 1 or 2.
+
+ # Safety
+ `pBlock` is NULL or points to `nBlockLen` readable bytes.
+ */
+uint16_t sl_fsoe_crc(uint16_t wRecvCrc0, uint16_t nConnId, uint16_t nSeqNo, uint8_t nCmd, uint16_t nIndex, const uint8_t *pBlock, size_t nBlockLen);
+
+/*
+ Encodes a frame (ABI-2 §13.6) into `pFrame`: CRC_0 with `*pSeqNo`; with
+ `bCollisionCheck` and CRC_0 == `wOldCrc0` the sequence number is incremented (65535
+ wraps to 1) until CRC_0 differs; `*pSeqNo` returns the number used, `*pFrameLen` the
+ frame length. SL_E_LENGTH (nothing written) for a SafeData length not 1 or even 2…32 or
+ a capacity below the frame length; SL_E_FRAME for an unknown command; SL_E_INVALID_BOOL
+ for a collision flag not 0/1; SL_E_NULL / SL_E_ALIGNMENT for a bad pointer. Pure.
+
+ # Safety
+ `pFrame` points to `nFrameCap` writable bytes, `pSafeData` to `nSafeDataLen` readable
+ bytes, `pFrameLen` and `pSeqNo` are writable; no two of them overlap.
+ */
+int32_t sl_fsoe_frame_encode(uint8_t *pFrame, size_t nFrameCap, size_t *pFrameLen, uint8_t nCmd, const uint8_t *pSafeData, size_t nSafeDataLen, uint16_t nConnId, uint16_t wRecvCrc0, uint16_t *pSeqNo, uint16_t wOldCrc0, SL_BOOL bCollisionCheck);
+
+/*
+ Decodes and checks a frame of `nSafeDataLen` SafeData bytes (ABI-2 §13.6) into `*pOut`.
+ SL_E_LENGTH: `nFrameLen` is not the frame length of `nSafeDataLen` (`*pOut` untouched);
+ SL_E_FRAME: unknown command (`nResetCode` 2) or CRC mismatch with the same collision
+ rule as the sender (`nResetCode` 4), the other fields still filled; on SL_OK `*pSeqNo`
+ is the sequence number that matched. SL_E_INVALID_BOOL for a collision flag not 0/1;
+ SL_E_NULL / SL_E_ALIGNMENT for a bad pointer. Pure.
+
+ # Safety
+ `pFrame` points to `nFrameLen` readable bytes, `pSeqNo` and `pOut` are writable; no two
+ of them overlap.
+ */
+int32_t sl_fsoe_frame_decode(const uint8_t *pFrame, size_t nFrameLen, size_t nSafeDataLen, uint16_t wRecvCrc0, uint16_t *pSeqNo, uint16_t wOldCrc0, SL_BOOL bCollisionCheck, struct SL_FSOE_FRAME *pOut);
 
 /*
  * The functions of every registered block type (src/registry.rs). init validates and
@@ -9613,6 +10195,78 @@ SL_STATIC_ASSERT(offsetof(SL_LINK, nDstOffset) == 6, "offset of SL_LINK.nDstOffs
 SL_STATIC_ASSERT(offsetof(SL_LINK, nKind) == 8, "offset of SL_LINK.nKind");
 SL_STATIC_ASSERT(offsetof(SL_LINK, aReserved) == 9, "offset of SL_LINK.aReserved");
 SL_STATIC_ASSERT(sizeof(SL_LINK) == 12, "size of SL_LINK");
+SL_STATIC_ASSERT(offsetof(SL_FSOE_CONN_PRIVATE, tWdStart) == 0, "offset of SL_FSOE_CONN_PRIVATE.tWdStart");
+SL_STATIC_ASSERT(offsetof(SL_FSOE_CONN_PRIVATE, wMagic) == 4, "offset of SL_FSOE_CONN_PRIVATE.wMagic");
+SL_STATIC_ASSERT(offsetof(SL_FSOE_CONN_PRIVATE, wLastCrc) == 6, "offset of SL_FSOE_CONN_PRIVATE.wLastCrc");
+SL_STATIC_ASSERT(offsetof(SL_FSOE_CONN_PRIVATE, wOldMasterCrc) == 8, "offset of SL_FSOE_CONN_PRIVATE.wOldMasterCrc");
+SL_STATIC_ASSERT(offsetof(SL_FSOE_CONN_PRIVATE, wOldSlaveCrc) == 10, "offset of SL_FSOE_CONN_PRIVATE.wOldSlaveCrc");
+SL_STATIC_ASSERT(offsetof(SL_FSOE_CONN_PRIVATE, nMasterSeqNo) == 12, "offset of SL_FSOE_CONN_PRIVATE.nMasterSeqNo");
+SL_STATIC_ASSERT(offsetof(SL_FSOE_CONN_PRIVATE, nSlaveSeqNo) == 14, "offset of SL_FSOE_CONN_PRIVATE.nSlaveSeqNo");
+SL_STATIC_ASSERT(offsetof(SL_FSOE_CONN_PRIVATE, wOwnSession) == 16, "offset of SL_FSOE_CONN_PRIVATE.wOwnSession");
+SL_STATIC_ASSERT(offsetof(SL_FSOE_CONN_PRIVATE, wPeerSession) == 18, "offset of SL_FSOE_CONN_PRIVATE.wPeerSession");
+SL_STATIC_ASSERT(offsetof(SL_FSOE_CONN_PRIVATE, nTxOff) == 20, "offset of SL_FSOE_CONN_PRIVATE.nTxOff");
+SL_STATIC_ASSERT(offsetof(SL_FSOE_CONN_PRIVATE, nRxCount) == 22, "offset of SL_FSOE_CONN_PRIVATE.nRxCount");
+SL_STATIC_ASSERT(offsetof(SL_FSOE_CONN_PRIVATE, nConnId) == 24, "offset of SL_FSOE_CONN_PRIVATE.nConnId");
+SL_STATIC_ASSERT(offsetof(SL_FSOE_CONN_PRIVATE, nAddress) == 26, "offset of SL_FSOE_CONN_PRIVATE.nAddress");
+SL_STATIC_ASSERT(offsetof(SL_FSOE_CONN_PRIVATE, nWatchdog) == 28, "offset of SL_FSOE_CONN_PRIVATE.nWatchdog");
+SL_STATIC_ASSERT(offsetof(SL_FSOE_CONN_PRIVATE, nAppLen) == 30, "offset of SL_FSOE_CONN_PRIVATE.nAppLen");
+SL_STATIC_ASSERT(offsetof(SL_FSOE_CONN_PRIVATE, nRole) == 32, "offset of SL_FSOE_CONN_PRIVATE.nRole");
+SL_STATIC_ASSERT(offsetof(SL_FSOE_CONN_PRIVATE, nTxLen) == 33, "offset of SL_FSOE_CONN_PRIVATE.nTxLen");
+SL_STATIC_ASSERT(offsetof(SL_FSOE_CONN_PRIVATE, nRxLen) == 34, "offset of SL_FSOE_CONN_PRIVATE.nRxLen");
+SL_STATIC_ASSERT(offsetof(SL_FSOE_CONN_PRIVATE, nOptions) == 35, "offset of SL_FSOE_CONN_PRIVATE.nOptions");
+SL_STATIC_ASSERT(offsetof(SL_FSOE_CONN_PRIVATE, nState) == 36, "offset of SL_FSOE_CONN_PRIVATE.nState");
+SL_STATIC_ASSERT(offsetof(SL_FSOE_CONN_PRIVATE, nStateInv) == 37, "offset of SL_FSOE_CONN_PRIVATE.nStateInv");
+SL_STATIC_ASSERT(offsetof(SL_FSOE_CONN_PRIVATE, nEdges) == 38, "offset of SL_FSOE_CONN_PRIVATE.nEdges");
+SL_STATIC_ASSERT(offsetof(SL_FSOE_CONN_PRIVATE, nFlags) == 39, "offset of SL_FSOE_CONN_PRIVATE.nFlags");
+SL_STATIC_ASSERT(offsetof(SL_FSOE_CONN_PRIVATE, nFlags2) == 40, "offset of SL_FSOE_CONN_PRIVATE.nFlags2");
+SL_STATIC_ASSERT(offsetof(SL_FSOE_CONN_PRIVATE, nDiagCode) == 41, "offset of SL_FSOE_CONN_PRIVATE.nDiagCode");
+SL_STATIC_ASSERT(offsetof(SL_FSOE_CONN_PRIVATE, nLastRxLen) == 42, "offset of SL_FSOE_CONN_PRIVATE.nLastRxLen");
+SL_STATIC_ASSERT(offsetof(SL_FSOE_CONN_PRIVATE, nReserved) == 43, "offset of SL_FSOE_CONN_PRIVATE.nReserved");
+SL_STATIC_ASSERT(offsetof(SL_FSOE_CONN_PRIVATE, aLastRx) == 44, "offset of SL_FSOE_CONN_PRIVATE.aLastRx");
+SL_STATIC_ASSERT(offsetof(SL_FSOE_CONN_PRIVATE, aOwnPara) == 112, "offset of SL_FSOE_CONN_PRIVATE.aOwnPara");
+SL_STATIC_ASSERT(offsetof(SL_FSOE_CONN_PRIVATE, aRxItem) == 184, "offset of SL_FSOE_CONN_PRIVATE.aRxItem");
+SL_STATIC_ASSERT(offsetof(SL_FSOE_CONN_PRIVATE, aRxData) == 260, "offset of SL_FSOE_CONN_PRIVATE.aRxData");
+SL_STATIC_ASSERT(offsetof(SL_FSOE_CONN_PRIVATE, aReserved) == 292, "offset of SL_FSOE_CONN_PRIVATE.aReserved");
+SL_STATIC_ASSERT(sizeof(SL_FSOE_CONN_PRIVATE) == 296, "size of SL_FSOE_CONN_PRIVATE");
+SL_STATIC_ASSERT(offsetof(SL_FSOE_CONN, bRun) == 0, "offset of SL_FSOE_CONN.bRun");
+SL_STATIC_ASSERT(offsetof(SL_FSOE_CONN, bErrAck) == 1, "offset of SL_FSOE_CONN.bErrAck");
+SL_STATIC_ASSERT(offsetof(SL_FSOE_CONN, bComErrAck) == 2, "offset of SL_FSOE_CONN.bComErrAck");
+SL_STATIC_ASSERT(offsetof(SL_FSOE_CONN, bShutdownRequest) == 3, "offset of SL_FSOE_CONN.bShutdownRequest");
+SL_STATIC_ASSERT(offsetof(SL_FSOE_CONN, bModuleFault) == 4, "offset of SL_FSOE_CONN.bModuleFault");
+SL_STATIC_ASSERT(offsetof(SL_FSOE_CONN, aReserved0) == 5, "offset of SL_FSOE_CONN.aReserved0");
+SL_STATIC_ASSERT(offsetof(SL_FSOE_CONN, nSessionIdSeed) == 8, "offset of SL_FSOE_CONN.nSessionIdSeed");
+SL_STATIC_ASSERT(offsetof(SL_FSOE_CONN, aReserved1) == 10, "offset of SL_FSOE_CONN.aReserved1");
+SL_STATIC_ASSERT(offsetof(SL_FSOE_CONN, aTxSafeData) == 16, "offset of SL_FSOE_CONN.aTxSafeData");
+SL_STATIC_ASSERT(offsetof(SL_FSOE_CONN, nConnectionId) == 48, "offset of SL_FSOE_CONN.nConnectionId");
+SL_STATIC_ASSERT(offsetof(SL_FSOE_CONN, nFsoeAddress) == 50, "offset of SL_FSOE_CONN.nFsoeAddress");
+SL_STATIC_ASSERT(offsetof(SL_FSOE_CONN, nRole) == 52, "offset of SL_FSOE_CONN.nRole");
+SL_STATIC_ASSERT(offsetof(SL_FSOE_CONN, nTxDataLen) == 54, "offset of SL_FSOE_CONN.nTxDataLen");
+SL_STATIC_ASSERT(offsetof(SL_FSOE_CONN, nRxDataLen) == 56, "offset of SL_FSOE_CONN.nRxDataLen");
+SL_STATIC_ASSERT(offsetof(SL_FSOE_CONN, nAppParaLen) == 58, "offset of SL_FSOE_CONN.nAppParaLen");
+SL_STATIC_ASSERT(offsetof(SL_FSOE_CONN, tWatchdogTime) == 60, "offset of SL_FSOE_CONN.tWatchdogTime");
+SL_STATIC_ASSERT(offsetof(SL_FSOE_CONN, dwOptions) == 64, "offset of SL_FSOE_CONN.dwOptions");
+SL_STATIC_ASSERT(offsetof(SL_FSOE_CONN, aAppPara) == 68, "offset of SL_FSOE_CONN.aAppPara");
+SL_STATIC_ASSERT(offsetof(SL_FSOE_CONN, aReserved2) == 132, "offset of SL_FSOE_CONN.aReserved2");
+SL_STATIC_ASSERT(offsetof(SL_FSOE_CONN, bComErr) == 136, "offset of SL_FSOE_CONN.bComErr");
+SL_STATIC_ASSERT(offsetof(SL_FSOE_CONN, bComStartup) == 137, "offset of SL_FSOE_CONN.bComStartup");
+SL_STATIC_ASSERT(offsetof(SL_FSOE_CONN, bDataValid) == 138, "offset of SL_FSOE_CONN.bDataValid");
+SL_STATIC_ASSERT(offsetof(SL_FSOE_CONN, bShutdown) == 139, "offset of SL_FSOE_CONN.bShutdown");
+SL_STATIC_ASSERT(offsetof(SL_FSOE_CONN, bPeerFailSafe) == 140, "offset of SL_FSOE_CONN.bPeerFailSafe");
+SL_STATIC_ASSERT(offsetof(SL_FSOE_CONN, aReserved3) == 141, "offset of SL_FSOE_CONN.aReserved3");
+SL_STATIC_ASSERT(offsetof(SL_FSOE_CONN, aRxSafeData) == 144, "offset of SL_FSOE_CONN.aRxSafeData");
+SL_STATIC_ASSERT(offsetof(SL_FSOE_CONN, nState) == 176, "offset of SL_FSOE_CONN.nState");
+SL_STATIC_ASSERT(offsetof(SL_FSOE_CONN, nResetCode) == 177, "offset of SL_FSOE_CONN.nResetCode");
+SL_STATIC_ASSERT(offsetof(SL_FSOE_CONN, nDiag) == 178, "offset of SL_FSOE_CONN.nDiag");
+SL_STATIC_ASSERT(offsetof(SL_FSOE_CONN, aReserved4) == 180, "offset of SL_FSOE_CONN.aReserved4");
+SL_STATIC_ASSERT(offsetof(SL_FSOE_CONN, stPrivate) == 184, "offset of SL_FSOE_CONN.stPrivate");
+SL_STATIC_ASSERT(sizeof(SL_FSOE_CONN) == 480, "size of SL_FSOE_CONN");
+SL_STATIC_ASSERT(offsetof(SL_FSOE_FRAME, nCmd) == 0, "offset of SL_FSOE_FRAME.nCmd");
+SL_STATIC_ASSERT(offsetof(SL_FSOE_FRAME, nResetCode) == 1, "offset of SL_FSOE_FRAME.nResetCode");
+SL_STATIC_ASSERT(offsetof(SL_FSOE_FRAME, nConnId) == 2, "offset of SL_FSOE_FRAME.nConnId");
+SL_STATIC_ASSERT(offsetof(SL_FSOE_FRAME, wCrc0) == 4, "offset of SL_FSOE_FRAME.wCrc0");
+SL_STATIC_ASSERT(offsetof(SL_FSOE_FRAME, nSeqNo) == 6, "offset of SL_FSOE_FRAME.nSeqNo");
+SL_STATIC_ASSERT(offsetof(SL_FSOE_FRAME, aSafeData) == 8, "offset of SL_FSOE_FRAME.aSafeData");
+SL_STATIC_ASSERT(sizeof(SL_FSOE_FRAME) == 40, "size of SL_FSOE_FRAME");
 SL_STATIC_ASSERT(offsetof(SL_GUARD_PRIVATE, stHeader) == 0, "offset of SL_GUARD_PRIVATE.stHeader");
 SL_STATIC_ASSERT(offsetof(SL_GUARD_PRIVATE, awTime) == 28, "offset of SL_GUARD_PRIVATE.awTime");
 SL_STATIC_ASSERT(offsetof(SL_GUARD_PRIVATE, atDiscStart) == 44, "offset of SL_GUARD_PRIVATE.atDiscStart");

@@ -8,7 +8,7 @@ use crate::prim::envelope::{self, Block};
 use crate::prim::header::SL_PRIVATE_HEADER;
 use crate::registry::Registered;
 use crate::types::*;
-use crate::{FB_TON2, SL_GROUP, SL_LINK, SL_MEMBER};
+use crate::{FB_TON2, SL_FSOE_CONN, SL_FSOE_FRAME, SL_GROUP, SL_LINK, SL_MEMBER};
 use core::ffi::{c_char, c_void};
 
 /// Runs `$body`; a panic becomes `$on_panic` instead of unwinding into C.
@@ -718,6 +718,276 @@ pub unsafe extern "C" fn sl_diag_text(
                 None => nul[0] = 0,
             }
             Ok(SL_OK)
+        };
+        run().unwrap_or_else(|e| e)
+    })
+}
+
+/// A caller's read-only byte buffer as a slice (`None` for NULL or length 0).
+///
+/// # Safety
+/// `p` is NULL or points to at least `len` readable bytes that nothing writes during the call.
+unsafe fn bytes<'a>(p: *const u8, len: usize) -> Option<&'a [u8]> {
+    if p.is_null() || len == 0 {
+        return None;
+    }
+    // SAFETY: by the function's contract; u8 needs no alignment.
+    Some(unsafe { core::slice::from_raw_parts(p, len) })
+}
+
+/// Validates and latches the parameters of an FSoE connection (ABI-2 §13.1) and resets it
+/// to state 100 (Reset); nothing is sent yet. Never modifies an input or parameter field.
+/// SL_OK; SL_E_CONFIG for invalid parameters (nConnectionId 0, nRole not 1/2, a SafeData
+/// length not 1 or even 2…32, nAppParaLen > 64, tWatchdogTime not 1…65535, unknown option
+/// bits); SL_E_NULL / SL_E_ALIGNMENT for a bad pointer.
+///
+/// # Safety
+/// `c` is NULL or points to a live, caller-owned SL_FSOE_CONN that nothing else accesses during the call.
+#[no_mangle]
+pub unsafe extern "C" fn sl_fsoe_init(c: *mut SL_FSOE_CONN) -> i32 {
+    ffi_boundary!(SL_E_INTERNAL, {
+        match instance(c) {
+            Ok(c) => crate::fsoe::conn::init(c).code(),
+            Err(e) => e,
+        }
+    })
+}
+
+/// One cycle of an FSoE connection at `tNow` (monotonic ms): processes the received frame
+/// `pRxFrame`/`nRxLen` (NULL/0: none; a frame equal to the previous one is no event), runs
+/// the watchdog, and writes a new frame to `pTxFrame` only when the state machine produces
+/// one: `*pTxLen` = its length, else 0 and `pTxFrame` untouched. SL_E_LENGTH: `nTxCap` is
+/// below the frame length of nTxDataLen (nothing done) or `nRxLen` is not the frame length
+/// of nRxDataLen (the frame is ignored). Protocol errors are not call errors: they show in
+/// nState / nDiag / bComErr. SL_E_INVALID_BOOL: an input byte was neither 0 nor 1.
+/// SL_E_CONFIG: init refused or never done; SL_E_CORRUPT: the private state failed its
+/// check; SL_E_NULL / SL_E_ALIGNMENT for a bad pointer; SL_E_CONFIG when the buffers
+/// overlap each other or the connection.
+///
+/// # Safety
+/// `c` as for `sl_fsoe_init`; `pRxFrame` is NULL or points to `nRxLen` readable bytes;
+/// `pTxFrame` points to `nTxCap` writable bytes; `pTxLen` points to a writable size_t.
+#[no_mangle]
+#[allow(non_snake_case)]
+pub unsafe extern "C" fn sl_fsoe_cycle(
+    c: *mut SL_FSOE_CONN,
+    tNow: u32,
+    pRxFrame: *const u8,
+    nRxLen: usize,
+    pTxFrame: *mut u8,
+    nTxCap: usize,
+    pTxLen: *mut usize,
+) -> i32 {
+    ffi_boundary!(SL_E_INTERNAL, {
+        let run = || -> Result<i32, i32> {
+            let conn = span(c as usize, core::mem::size_of::<SL_FSOE_CONN>()).ok_or(SL_E_CONFIG)?;
+            instance_ref(c.cast_const())?;
+            instance_ref(pTxLen.cast_const())?;
+            if pTxFrame.is_null() {
+                return Err(SL_E_NULL);
+            }
+            let txs = span(pTxFrame as usize, nTxCap).ok_or(SL_E_CONFIG)?;
+            let lens = span(pTxLen as usize, core::mem::size_of::<usize>()).ok_or(SL_E_CONFIG)?;
+            let rxs = if pRxFrame.is_null() || nRxLen == 0 {
+                (0, 0)
+            } else {
+                span(pRxFrame as usize, nRxLen).ok_or(SL_E_CONFIG)?
+            };
+            if !disjoint(conn, txs)
+                || !disjoint(conn, rxs)
+                || !disjoint(txs, rxs)
+                || !disjoint(lens, conn)
+                || !disjoint(lens, txs)
+                || !disjoint(lens, rxs)
+            {
+                return Err(SL_E_CONFIG);
+            }
+            let conn = instance(c)?;
+            // SAFETY: checked above: non-null, disjoint from the connection and from the
+            // transmit buffer; readable by the contract.
+            let rx = unsafe { bytes(pRxFrame, nRxLen) };
+            // SAFETY: non-null, disjoint from the connection and the received frame;
+            // `nTxCap` writable bytes by the contract.
+            let tx = unsafe { slice_mut(pTxFrame, nTxCap) };
+            let (status, len) = crate::fsoe::conn::cycle(conn, tNow, rx, tx);
+            // SAFETY: non-null and aligned (checked above), disjoint from every reference
+            // of this call; writable by the contract.
+            unsafe { pTxLen.write(len) };
+            Ok(status.code())
+        };
+        run().unwrap_or_else(|e| e)
+    })
+}
+
+/// Frame length for `nSafeDataLen` SafeData bytes: 6 for 1, 2n + 3 for even n in 2…32, else 0.
+#[no_mangle]
+#[allow(non_snake_case)]
+pub extern "C" fn sl_fsoe_frame_len(nSafeDataLen: usize) -> usize {
+    ffi_boundary!(0, crate::fsoe::frame::frame_len(nSafeDataLen))
+}
+
+/// The FSoE CRC of one block (ABI-2 §13.7): `wRecvCrc0`, `nConnId`, `nSeqNo` (LE),
+/// `nCmd`, the block index (LE, only when `nIndex` > 0) and the block's `nBlockLen` (1 or
+/// 2) bytes, then three zero octets. 0 for a NULL block or `nBlockLen` not 1 or 2.
+///
+/// # Safety
+/// `pBlock` is NULL or points to `nBlockLen` readable bytes.
+#[no_mangle]
+#[allow(non_snake_case)]
+pub unsafe extern "C" fn sl_fsoe_crc(
+    wRecvCrc0: u16,
+    nConnId: u16,
+    nSeqNo: u16,
+    nCmd: u8,
+    nIndex: u16,
+    pBlock: *const u8,
+    nBlockLen: usize,
+) -> u16 {
+    ffi_boundary!(0, {
+        if nBlockLen != 1 && nBlockLen != 2 {
+            return 0;
+        }
+        // SAFETY: by the contract.
+        match unsafe { bytes(pBlock, nBlockLen) } {
+            Some(b) => crate::fsoe::crc::fsoe_crc(wRecvCrc0, nConnId, nSeqNo, nCmd, nIndex, b),
+            None => 0,
+        }
+    })
+}
+
+/// A collision-check flag: 0 / 1, else refused.
+fn flag(b: SL_BOOL) -> Result<bool, i32> {
+    match b {
+        0 => Ok(false),
+        1 => Ok(true),
+        _ => Err(SL_E_INVALID_BOOL),
+    }
+}
+
+/// Encodes a frame (ABI-2 §13.6) into `pFrame`: CRC_0 with `*pSeqNo`; with
+/// `bCollisionCheck` and CRC_0 == `wOldCrc0` the sequence number is incremented (65535
+/// wraps to 1) until CRC_0 differs; `*pSeqNo` returns the number used, `*pFrameLen` the
+/// frame length. SL_E_LENGTH (nothing written) for a SafeData length not 1 or even 2…32 or
+/// a capacity below the frame length; SL_E_FRAME for an unknown command; SL_E_INVALID_BOOL
+/// for a collision flag not 0/1; SL_E_NULL / SL_E_ALIGNMENT for a bad pointer. Pure.
+///
+/// # Safety
+/// `pFrame` points to `nFrameCap` writable bytes, `pSafeData` to `nSafeDataLen` readable
+/// bytes, `pFrameLen` and `pSeqNo` are writable; no two of them overlap.
+#[no_mangle]
+#[allow(non_snake_case, clippy::too_many_arguments)]
+pub unsafe extern "C" fn sl_fsoe_frame_encode(
+    pFrame: *mut u8,
+    nFrameCap: usize,
+    pFrameLen: *mut usize,
+    nCmd: u8,
+    pSafeData: *const u8,
+    nSafeDataLen: usize,
+    nConnId: u16,
+    wRecvCrc0: u16,
+    pSeqNo: *mut u16,
+    wOldCrc0: u16,
+    bCollisionCheck: SL_BOOL,
+) -> i32 {
+    ffi_boundary!(SL_E_INTERNAL, {
+        let run = || -> Result<i32, i32> {
+            if pFrame.is_null() || pSafeData.is_null() {
+                return Err(SL_E_NULL);
+            }
+            instance_ref(pFrameLen.cast_const())?;
+            instance_ref(pSeqNo.cast_const())?;
+            let collision = flag(bCollisionCheck)?;
+            let n = crate::fsoe::frame::frame_len(nSafeDataLen);
+            if n == 0 || nFrameCap < n {
+                return Err(SL_E_LENGTH);
+            }
+            let fs = span(pFrame as usize, n).ok_or(SL_E_CONFIG)?;
+            let ds = span(pSafeData as usize, nSafeDataLen).ok_or(SL_E_CONFIG)?;
+            let ls = span(pFrameLen as usize, core::mem::size_of::<usize>()).ok_or(SL_E_CONFIG)?;
+            let ss = span(pSeqNo as usize, 2).ok_or(SL_E_CONFIG)?;
+            if !(disjoint(fs, ds) && disjoint(fs, ls) && disjoint(fs, ss) && disjoint(ls, ss)) {
+                return Err(SL_E_CONFIG);
+            }
+            // SAFETY: non-null, `nSafeDataLen` readable bytes by the contract.
+            let data = unsafe { bytes(pSafeData, nSafeDataLen) }.ok_or(SL_E_NULL)?;
+            // SAFETY: non-null, aligned; read by value.
+            let mut seq = unsafe { pSeqNo.read() };
+            // SAFETY: non-null, `n <= nFrameCap` writable bytes, disjoint from `data`.
+            let out = unsafe { slice_mut(pFrame, n) };
+            let (len, _) = crate::fsoe::frame::encode(
+                out, nCmd, data, nConnId, wRecvCrc0, &mut seq, wOldCrc0, collision,
+            )
+            .map_err(Status::code)?;
+            // SAFETY: non-null, aligned, writable, disjoint from the frame (checked above).
+            unsafe {
+                pSeqNo.write(seq);
+                pFrameLen.write(len);
+            }
+            Ok(SL_OK)
+        };
+        run().unwrap_or_else(|e| e)
+    })
+}
+
+/// Decodes and checks a frame of `nSafeDataLen` SafeData bytes (ABI-2 §13.6) into `*pOut`.
+/// SL_E_LENGTH: `nFrameLen` is not the frame length of `nSafeDataLen` (`*pOut` untouched);
+/// SL_E_FRAME: unknown command (`nResetCode` 2) or CRC mismatch with the same collision
+/// rule as the sender (`nResetCode` 4), the other fields still filled; on SL_OK `*pSeqNo`
+/// is the sequence number that matched. SL_E_INVALID_BOOL for a collision flag not 0/1;
+/// SL_E_NULL / SL_E_ALIGNMENT for a bad pointer. Pure.
+///
+/// # Safety
+/// `pFrame` points to `nFrameLen` readable bytes, `pSeqNo` and `pOut` are writable; no two
+/// of them overlap.
+#[no_mangle]
+#[allow(non_snake_case, clippy::too_many_arguments)]
+pub unsafe extern "C" fn sl_fsoe_frame_decode(
+    pFrame: *const u8,
+    nFrameLen: usize,
+    nSafeDataLen: usize,
+    wRecvCrc0: u16,
+    pSeqNo: *mut u16,
+    wOldCrc0: u16,
+    bCollisionCheck: SL_BOOL,
+    pOut: *mut SL_FSOE_FRAME,
+) -> i32 {
+    ffi_boundary!(SL_E_INTERNAL, {
+        let run = || -> Result<i32, i32> {
+            if pFrame.is_null() {
+                return Err(SL_E_NULL);
+            }
+            instance_ref(pSeqNo.cast_const())?;
+            instance_ref(pOut.cast_const())?;
+            let collision = flag(bCollisionCheck)?;
+            let fs = span(pFrame as usize, nFrameLen).ok_or(SL_E_CONFIG)?;
+            let ss = span(pSeqNo as usize, 2).ok_or(SL_E_CONFIG)?;
+            let os =
+                span(pOut as usize, core::mem::size_of::<SL_FSOE_FRAME>()).ok_or(SL_E_CONFIG)?;
+            if !(disjoint(fs, ss) && disjoint(fs, os) && disjoint(ss, os)) {
+                return Err(SL_E_CONFIG);
+            }
+            // SAFETY: non-null, `nFrameLen` readable bytes by the contract.
+            let frame = unsafe { bytes(pFrame, nFrameLen) }.unwrap_or(&[]);
+            // SAFETY: non-null, aligned; read by value.
+            let mut seq = unsafe { pSeqNo.read() };
+            let mut out = SL_FSOE_FRAME::default();
+            let st = crate::fsoe::frame::decode(
+                frame,
+                nSafeDataLen,
+                wRecvCrc0,
+                &mut seq,
+                wOldCrc0,
+                collision,
+                &mut out,
+            );
+            if st != Status::Length {
+                // SAFETY: non-null, aligned, writable, disjoint from the frame (checked above).
+                unsafe {
+                    pOut.write(out);
+                    pSeqNo.write(seq);
+                }
+            }
+            Ok(st.code())
         };
         run().unwrap_or_else(|e| e)
     })

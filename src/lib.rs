@@ -36,6 +36,7 @@
 
 pub mod any;
 pub mod blocks;
+pub mod fsoe;
 pub mod group;
 pub mod prim;
 pub mod registry;
@@ -68,6 +69,14 @@ pub use blocks::timer::{
     SL_TIMEBASE_10MS, SL_TIMEBASE_1MS, SL_TIMEBASE_AUTO, SL_TIMER_DELAY_MAX, SL_TIMER_STEPS_MAX,
 };
 pub use blocks::window::SL_SLI_PRIVATE;
+pub use fsoe::conn::{SL_FSOE_CONN, SL_FSOE_CONN_PRIVATE};
+pub use fsoe::frame::SL_FSOE_FRAME;
+pub use fsoe::{
+    SL_FSOE_APPPARA_MAX, SL_FSOE_CMD_CONNECTION, SL_FSOE_CMD_FAILSAFEDATA, SL_FSOE_CMD_PARAMETER,
+    SL_FSOE_CMD_PROCESSDATA, SL_FSOE_CMD_RESET, SL_FSOE_CMD_SESSION, SL_FSOE_DATA_MAX,
+    SL_FSOE_FRAME_MAX, SL_FSOE_OPT_COMERRACK, SL_FSOE_OPT_MODULE_ERR_IS_COMERR,
+    SL_FSOE_ROLE_MASTER, SL_FSOE_ROLE_SLAVE,
+};
 pub use group::{SL_GROUP, SL_GROUP_PRIVATE, SL_LINK, SL_MEMBER};
 pub use prim::header::SL_PRIVATE_HEADER;
 pub use types::*;

@@ -34,6 +34,12 @@ pub const SL_E_FULL: i32 = -9;
 /// not in STOP. nState = ERROR (4), output FALSE, diag bit 12 (SL_DIAG_TON2_RESTORE); the
 /// stored elapsed time is discarded (0), so one ErrAck sequence leaves the error.
 pub const SL_E_RESTORE: i32 = -10;
+/// FSoE (ABI-2 §13.1): a length or capacity does not fit (frame length, SafeData length,
+/// transmit buffer capacity); nothing was written.
+pub const SL_E_LENGTH: i32 = -11;
+/// FSoE (ABI-2 §13.6): a frame was rejected by `sl_fsoe_frame_decode` (the reason is in
+/// its `nResetCode`: 2 unknown command, 4 CRC).
+pub const SL_E_FRAME: i32 = -12;
 
 /// EDM1 feedback loop active.
 pub const SL_OPT_EDM1: u32 = 1 << 0;
@@ -169,6 +175,10 @@ pub enum Status {
     Full,
     /// SL_E_RESTORE: a restored elapsed time was refused; ERROR.
     Restore,
+    /// SL_E_LENGTH: a length or capacity does not fit (FSoE).
+    Length,
+    /// SL_E_FRAME: a frame was rejected (FSoE codec).
+    Frame,
 }
 
 impl Status {
@@ -186,6 +196,8 @@ impl Status {
             Status::Alignment => SL_E_ALIGNMENT,
             Status::Full => SL_E_FULL,
             Status::Restore => SL_E_RESTORE,
+            Status::Length => SL_E_LENGTH,
+            Status::Frame => SL_E_FRAME,
         }
     }
 
@@ -202,6 +214,8 @@ impl Status {
             SL_E_ALIGNMENT => Status::Alignment,
             SL_E_FULL => Status::Full,
             SL_E_RESTORE => Status::Restore,
+            SL_E_LENGTH => Status::Length,
+            SL_E_FRAME => Status::Frame,
             _ => Status::Internal,
         }
     }
@@ -224,7 +238,7 @@ impl Status {
                 Status::Corrupt | Status::Internal => 6,
                 Status::Clock => 5,
                 Status::ParamChanged | Status::Restore => 4,
-                Status::Config => 3,
+                Status::Config | Status::Length | Status::Frame => 3,
                 Status::InvalidBool => 2,
                 _ => 0,
             }
@@ -275,6 +289,10 @@ pub const fn status_text(status: i32) -> &'static str {
         SL_E_RESTORE => {
             "SL_E_RESTORE: restored elapsed time refused (greater than tDelay, or block not in STOP); block in ERROR\0"
         }
+        SL_E_LENGTH => {
+            "SL_E_LENGTH: a frame length, SafeData length or buffer capacity does not fit; nothing written\0"
+        }
+        SL_E_FRAME => "SL_E_FRAME: the FSoE frame was rejected (reason in nResetCode)\0",
         _ => "unknown status code\0",
     }
 }

@@ -282,6 +282,12 @@ def parse_header(text: str) -> Header:
         doc = []
     if cur is not None:
         raise GenError(f"unterminated struct {cur.name}")
+    # The FSoE connection (SL_FSOE_* structs, sl_fsoe_* functions) has no PLC binding yet
+    # (issue 11): its structs and functions are not bound; its constants are.
+    fsoe = lambda n: n.upper().startswith("SL_FSOE")  # noqa: E731
+    structs = {k: v for k, v in structs.items() if not fsoe(k)}
+    order, funcs = [n for n in order if not fsoe(n)], [f for f in funcs if not fsoe(f.name)]
+    asserts = [a for a in asserts if not fsoe(a[0])]
     hdr = Header(structs, order, funcs, defines, asserts)
     _layout(hdr)
     _find_blocks(hdr)
