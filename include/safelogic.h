@@ -577,6 +577,83 @@
 #define SL_TYPE_RS 11
 
 /*
+ Type tag of FB_SBT (ABI-2 §10.6: sequential in the order of §10.3).
+ */
+#define SL_TYPE_SBT 73
+
+/*
+ State TESTING (16; the manual's "4.0").
+ */
+#define SL_STATE_SBT_TESTING 16
+
+/*
+ State TEST-OK (17; the manual's "4.1").
+ */
+#define SL_STATE_SBT_TEST_OK 17
+
+/*
+ State TEST-FAILED (18; the manual's "4.2", its messages' "FB-State=0x12").
+ */
+#define SL_STATE_SBT_TEST_FAILED 18
+
+/*
+ State MONS-ERROR (20; the manual's "5.0", its messages' "FB-State=0x14").
+ */
+#define SL_STATE_SBT_MONS_ERROR 20
+
+/*
+ Message: the maximum duration expired without a successful test (Par2 0x12, Par3
+ LatchPosition).
+ */
+#define SL_TEXT_SBT_MAX_DURATION 16600
+
+/*
+ Message: the remaining time expired without a new test (Par2 0x14, Par3 LatchPosition).
+ */
+#define SL_TEXT_SBT_INTERVAL_EXPIRED 16601
+
+/*
+ Message: the single-turn position exceeds the maximum deviation (Par2 the difference,
+ Par3 MaxPositionDeviation).
+ */
+#define SL_TEXT_SBT_POSITION_DEVIATION 16602
+
+/*
+ `nDiag` of a message = its Text ID minus this (ABI-2 §10.4: no diag table).
+ */
+#define SL_SBT_DIAG_TEXT_BASE 16384
+
+/*
+ `wInputActive` bit of SBT (required).
+ */
+#define SL_SBT_ACTIVE_SBT (1 << 0)
+
+/*
+ `wInputActive` bit of SBC In (required).
+ */
+#define SL_SBT_ACTIVE_SBCIN (1 << 1)
+
+/*
+ `wInputActive` bit of SingleturnPos (required).
+ */
+#define SL_SBT_ACTIVE_SINGLETURNPOS (1 << 8)
+
+/*
+ `wInputActive` bit of ActCurrentIq (required).
+ */
+#define SL_SBT_ACTIVE_ACTCURRENTIQ (1 << 9)
+
+/*
+ `wInputActive` bit of MinCurrentIq: set = the input, clear = `nMinCurrentIqFix`.
+ */
+#define SL_SBT_ACTIVE_MINCURRENTIQ (1 << 10)
+
+/*
+ Largest value of the three TIME parameters (ABI-2 §12.9: 4,294,967 s in ms).
+ */
+#define SL_SBT_TIME_MAX 4294967000
+
+/*
  Type tag of FB_SCALE_INT (ABI-2 §10.6: sequential from 16 in the order of §10.3).
  */
 #define SL_TYPE_SCALE_INT 40
@@ -9511,6 +9588,181 @@ typedef struct FB_SLP {
 } FB_SLP;
 
 /*
+ Private state of FB SBT (80 bytes). Never written by the user.
+ */
+typedef struct SL_SBT_PRIVATE {
+  /*
+   Common head (`wAux` bit 0: LastTestResult, bit 1: the test condition held in the
+   previous call; `tPhase`: the previous running call; `F_RESTART_PREV`: SBT's level).
+   */
+  struct SL_PRIVATE_HEADER stHeader;
+  /*
+   Latched `wInputActive`.
+   */
+  uint16_t wActive;
+  /*
+   Text ID of the message of TEST-FAILED / MONS-ERROR.
+   */
+  uint16_t wText;
+  /*
+   Latched tBrakeTestInterval, tMinDuration, tMaxDuration (ms), nMaxPositionDeviation,
+   nMinCurrentIqFix (pattern).
+   */
+  uint32_t adwParam[5];
+  /*
+   Remaining time until the next brake test, ms.
+   */
+  uint32_t dwRemainingMs;
+  /*
+   Time since the test started (MaxDuration), ms, saturating.
+   */
+  uint32_t dwTestMs;
+  /*
+   Time the test condition has held without a break (MinDuration), ms, saturating.
+   */
+  uint32_t dwHeldMs;
+  /*
+   SingleturnPos latched at the start of the test.
+   */
+  uint32_t dwLatchPos;
+  /*
+   The message's parameters 2 and 3.
+   */
+  uint32_t adwPar[2];
+  /*
+   Reserved.
+   */
+  uint8_t aReserved[4];
+} SL_SBT_PRIVATE;
+
+/*
+ FB SBT instance (ABI-2 §11.15). Size: 176 bytes.
+ */
+typedef struct FB_SBT {
+  /*
+   Offset 0. SBT: a rising edge starts a brake test (bit 0, required; an invalid byte
+   reads FALSE without an edge).
+   */
+  SL_BOOL bSBT;
+  /*
+   Offset 1. SBC In: 0 = brake applied, 1 = released (bit 1, required; an invalid byte
+   reads TRUE, no test credit).
+   */
+  SL_BOOL bSBCIn;
+  /*
+   Offset 2. Reserved, keep 0.
+   */
+  uint8_t aReserved0[14];
+  /*
+   Offset 16. FbRun of the owning group: TRUE = the block executes.
+   */
+  SL_BOOL bRun;
+  /*
+   Offset 17. ErrAck of the owning group.
+   */
+  SL_BOOL bErrAck;
+  /*
+   Offset 18. Reserved, keep 0.
+   */
+  uint8_t aReserved1[6];
+  /*
+   Offset 24. SingleturnPos: the current safe position (bit 8, required).
+   */
+  uint32_t nSingleturnPos;
+  /*
+   Offset 28. ActCurrentIq: the torque-forming current of the axis (bit 9, required).
+   */
+  int32_t nActCurrentIq;
+  /*
+   Offset 32. MinCurrentIq: the current of the minimum required torque, used while
+   bit 10 is set.
+   */
+  int32_t nMinCurrentIq;
+  /*
+   Offset 36. "BrakeTestInterval" in ms: 1000 to 4,294,967,000, a multiple of 1000.
+   */
+  uint32_t tBrakeTestInterval;
+  /*
+   Offset 40. "MinDuration" in ms: a multiple of 100, at most tMaxDuration.
+   */
+  uint32_t tMinDuration;
+  /*
+   Offset 44. "MaxDuration" in ms: a multiple of 100, at most 4,294,967,000.
+   */
+  uint32_t tMaxDuration;
+  /*
+   Offset 48. "MaxPositionDeviation" in increments.
+   */
+  uint32_t nMaxPositionDeviation;
+  /*
+   Offset 52. Parameter "MinCurrentIq", used while bit 10 is clear.
+   */
+  int32_t nMinCurrentIqFix;
+  /*
+   Offset 56. Bits 0, 1, 8, 9 required; bit 10 chooses input or parameter.
+   */
+  uint16_t wInputActive;
+  /*
+   Offset 58. Reserved, keep 0.
+   */
+  uint8_t aReserved2[6];
+  /*
+   Offset 64 (output base + 0). TestError: TEST-FAILED or MONS-ERROR.
+   */
+  SL_BOOL bTestError;
+  /*
+   Offset 65. BrakeValid: the last test passed and its interval has not expired (RUN,
+   TEST-OK).
+   */
+  SL_BOOL bBrakeValid;
+  /*
+   Offset 66. Reserved.
+   */
+  uint8_t aReserved3[6];
+  /*
+   Offset 72 (analog output base). RemainingTime until the next brake test in
+   seconds (rounded up); 0 in STOP, ERROR, RESET, MONS-ERROR.
+   */
+  uint32_t nRemainingTime;
+  /*
+   Offset 76. Reserved.
+   */
+  uint8_t aReserved4[4];
+  /*
+   Offset 80. The manual's status value (SL_STATE_*, SL_STATE_SBT_*).
+   */
+  uint8_t nState;
+  /*
+   Offset 81. Reserved.
+   */
+  uint8_t aReserved5[1];
+  /*
+   Offset 82. The message's Text ID − 0x4000 (0xD8, 0xD9, 0xDA) + library bits 13-15.
+   */
+  uint16_t nDiag;
+  /*
+   Offset 84. Text ID of the message in TEST-FAILED / MONS-ERROR, 0 = none.
+   */
+  uint16_t nDiagTextId;
+  /*
+   Offset 86. Reserved.
+   */
+  uint8_t aReserved6[2];
+  /*
+   Offset 88. Message parameter 2.
+   */
+  uint32_t dwDiagPar2;
+  /*
+   Offset 92. Message parameter 3.
+   */
+  uint32_t dwDiagPar3;
+  /*
+   Offset 96. Private state, 80 bytes: never write it.
+   */
+  struct SL_SBT_PRIVATE stPrivate;
+} FB_SBT;
+
+/*
  Private state of FB ADVPOSMON (40 bytes). Never written by the user.
  */
 typedef struct SL_ADVPOSMON_PRIVATE {
@@ -9936,6 +10188,8 @@ int32_t sl_violationcounter_udint_init(struct FB_VIOLATIONCOUNTER_UDINT *fb);
 int32_t sl_violationcounter_udint_cycle(struct FB_VIOLATIONCOUNTER_UDINT *fb, uint32_t tNow);
 int32_t sl_slp_init(struct FB_SLP *fb);
 int32_t sl_slp_cycle(struct FB_SLP *fb, uint32_t tNow);
+int32_t sl_sbt_init(struct FB_SBT *fb);
+int32_t sl_sbt_cycle(struct FB_SBT *fb, uint32_t tNow);
 int32_t sl_advposmon_init(struct FB_ADVPOSMON *fb);
 int32_t sl_advposmon_cycle(struct FB_ADVPOSMON *fb, uint32_t tNow);
 
@@ -11909,6 +12163,47 @@ SL_STATIC_ASSERT(offsetof(FB_SLP, dwDiagPar2) == 88, "offset of FB_SLP.dwDiagPar
 SL_STATIC_ASSERT(offsetof(FB_SLP, dwDiagPar3) == 92, "offset of FB_SLP.dwDiagPar3");
 SL_STATIC_ASSERT(offsetof(FB_SLP, stPrivate) == 96, "offset of FB_SLP.stPrivate");
 SL_STATIC_ASSERT(sizeof(FB_SLP) == 160, "size of FB_SLP");
+SL_STATIC_ASSERT(offsetof(SL_SBT_PRIVATE, stHeader) == 0, "offset of SL_SBT_PRIVATE.stHeader");
+SL_STATIC_ASSERT(offsetof(SL_SBT_PRIVATE, wActive) == 28, "offset of SL_SBT_PRIVATE.wActive");
+SL_STATIC_ASSERT(offsetof(SL_SBT_PRIVATE, wText) == 30, "offset of SL_SBT_PRIVATE.wText");
+SL_STATIC_ASSERT(offsetof(SL_SBT_PRIVATE, adwParam) == 32, "offset of SL_SBT_PRIVATE.adwParam");
+SL_STATIC_ASSERT(offsetof(SL_SBT_PRIVATE, dwRemainingMs) == 52, "offset of SL_SBT_PRIVATE.dwRemainingMs");
+SL_STATIC_ASSERT(offsetof(SL_SBT_PRIVATE, dwTestMs) == 56, "offset of SL_SBT_PRIVATE.dwTestMs");
+SL_STATIC_ASSERT(offsetof(SL_SBT_PRIVATE, dwHeldMs) == 60, "offset of SL_SBT_PRIVATE.dwHeldMs");
+SL_STATIC_ASSERT(offsetof(SL_SBT_PRIVATE, dwLatchPos) == 64, "offset of SL_SBT_PRIVATE.dwLatchPos");
+SL_STATIC_ASSERT(offsetof(SL_SBT_PRIVATE, adwPar) == 68, "offset of SL_SBT_PRIVATE.adwPar");
+SL_STATIC_ASSERT(offsetof(SL_SBT_PRIVATE, aReserved) == 76, "offset of SL_SBT_PRIVATE.aReserved");
+SL_STATIC_ASSERT(sizeof(SL_SBT_PRIVATE) == 80, "size of SL_SBT_PRIVATE");
+SL_STATIC_ASSERT(offsetof(FB_SBT, bSBT) == 0, "offset of FB_SBT.bSBT");
+SL_STATIC_ASSERT(offsetof(FB_SBT, bSBCIn) == 1, "offset of FB_SBT.bSBCIn");
+SL_STATIC_ASSERT(offsetof(FB_SBT, aReserved0) == 2, "offset of FB_SBT.aReserved0");
+SL_STATIC_ASSERT(offsetof(FB_SBT, bRun) == 16, "offset of FB_SBT.bRun");
+SL_STATIC_ASSERT(offsetof(FB_SBT, bErrAck) == 17, "offset of FB_SBT.bErrAck");
+SL_STATIC_ASSERT(offsetof(FB_SBT, aReserved1) == 18, "offset of FB_SBT.aReserved1");
+SL_STATIC_ASSERT(offsetof(FB_SBT, nSingleturnPos) == 24, "offset of FB_SBT.nSingleturnPos");
+SL_STATIC_ASSERT(offsetof(FB_SBT, nActCurrentIq) == 28, "offset of FB_SBT.nActCurrentIq");
+SL_STATIC_ASSERT(offsetof(FB_SBT, nMinCurrentIq) == 32, "offset of FB_SBT.nMinCurrentIq");
+SL_STATIC_ASSERT(offsetof(FB_SBT, tBrakeTestInterval) == 36, "offset of FB_SBT.tBrakeTestInterval");
+SL_STATIC_ASSERT(offsetof(FB_SBT, tMinDuration) == 40, "offset of FB_SBT.tMinDuration");
+SL_STATIC_ASSERT(offsetof(FB_SBT, tMaxDuration) == 44, "offset of FB_SBT.tMaxDuration");
+SL_STATIC_ASSERT(offsetof(FB_SBT, nMaxPositionDeviation) == 48, "offset of FB_SBT.nMaxPositionDeviation");
+SL_STATIC_ASSERT(offsetof(FB_SBT, nMinCurrentIqFix) == 52, "offset of FB_SBT.nMinCurrentIqFix");
+SL_STATIC_ASSERT(offsetof(FB_SBT, wInputActive) == 56, "offset of FB_SBT.wInputActive");
+SL_STATIC_ASSERT(offsetof(FB_SBT, aReserved2) == 58, "offset of FB_SBT.aReserved2");
+SL_STATIC_ASSERT(offsetof(FB_SBT, bTestError) == 64, "offset of FB_SBT.bTestError");
+SL_STATIC_ASSERT(offsetof(FB_SBT, bBrakeValid) == 65, "offset of FB_SBT.bBrakeValid");
+SL_STATIC_ASSERT(offsetof(FB_SBT, aReserved3) == 66, "offset of FB_SBT.aReserved3");
+SL_STATIC_ASSERT(offsetof(FB_SBT, nRemainingTime) == 72, "offset of FB_SBT.nRemainingTime");
+SL_STATIC_ASSERT(offsetof(FB_SBT, aReserved4) == 76, "offset of FB_SBT.aReserved4");
+SL_STATIC_ASSERT(offsetof(FB_SBT, nState) == 80, "offset of FB_SBT.nState");
+SL_STATIC_ASSERT(offsetof(FB_SBT, aReserved5) == 81, "offset of FB_SBT.aReserved5");
+SL_STATIC_ASSERT(offsetof(FB_SBT, nDiag) == 82, "offset of FB_SBT.nDiag");
+SL_STATIC_ASSERT(offsetof(FB_SBT, nDiagTextId) == 84, "offset of FB_SBT.nDiagTextId");
+SL_STATIC_ASSERT(offsetof(FB_SBT, aReserved6) == 86, "offset of FB_SBT.aReserved6");
+SL_STATIC_ASSERT(offsetof(FB_SBT, dwDiagPar2) == 88, "offset of FB_SBT.dwDiagPar2");
+SL_STATIC_ASSERT(offsetof(FB_SBT, dwDiagPar3) == 92, "offset of FB_SBT.dwDiagPar3");
+SL_STATIC_ASSERT(offsetof(FB_SBT, stPrivate) == 96, "offset of FB_SBT.stPrivate");
+SL_STATIC_ASSERT(sizeof(FB_SBT) == 176, "size of FB_SBT");
 SL_STATIC_ASSERT(offsetof(SL_ADVPOSMON_PRIVATE, stHeader) == 0, "offset of SL_ADVPOSMON_PRIVATE.stHeader");
 SL_STATIC_ASSERT(offsetof(SL_ADVPOSMON_PRIVATE, wActive) == 28, "offset of SL_ADVPOSMON_PRIVATE.wActive");
 SL_STATIC_ASSERT(offsetof(SL_ADVPOSMON_PRIVATE, awFeedback) == 30, "offset of SL_ADVPOSMON_PRIVATE.awFeedback");

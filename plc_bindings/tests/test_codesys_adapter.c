@@ -1075,6 +1075,21 @@ static void test_param_structs(void)
       CHECK(offsetof(cds_sl_slp_cycle_struct, cds_sl_slp_cycle) == off, "cds_sl_slp_cycle_struct return value at %zu, expected %zu", offsetof(cds_sl_slp_cycle_struct, cds_sl_slp_cycle), off); }
     { size_t off = 0;
       off = (off + sizeof(void *) - 1) / sizeof(void *) * sizeof(void *);
+      CHECK(offsetof(cds_sl_sbt_init_struct, pFb) == off, "cds_sl_sbt_init_struct.pFb at %zu, expected %zu", offsetof(cds_sl_sbt_init_struct, pFb), off);
+      off += sizeof(void *);
+      off = (off + sizeof(int32_t) - 1) / sizeof(int32_t) * sizeof(int32_t);
+      CHECK(offsetof(cds_sl_sbt_init_struct, cds_sl_sbt_init) == off, "cds_sl_sbt_init_struct return value at %zu, expected %zu", offsetof(cds_sl_sbt_init_struct, cds_sl_sbt_init), off); }
+    { size_t off = 0;
+      off = (off + sizeof(void *) - 1) / sizeof(void *) * sizeof(void *);
+      CHECK(offsetof(cds_sl_sbt_cycle_struct, pFb) == off, "cds_sl_sbt_cycle_struct.pFb at %zu, expected %zu", offsetof(cds_sl_sbt_cycle_struct, pFb), off);
+      off += sizeof(void *);
+      off = (off + sizeof(uint32_t) - 1) / sizeof(uint32_t) * sizeof(uint32_t);
+      CHECK(offsetof(cds_sl_sbt_cycle_struct, tNow) == off, "cds_sl_sbt_cycle_struct.tNow at %zu, expected %zu", offsetof(cds_sl_sbt_cycle_struct, tNow), off);
+      off += sizeof(uint32_t);
+      off = (off + sizeof(int32_t) - 1) / sizeof(int32_t) * sizeof(int32_t);
+      CHECK(offsetof(cds_sl_sbt_cycle_struct, cds_sl_sbt_cycle) == off, "cds_sl_sbt_cycle_struct return value at %zu, expected %zu", offsetof(cds_sl_sbt_cycle_struct, cds_sl_sbt_cycle), off); }
+    { size_t off = 0;
+      off = (off + sizeof(void *) - 1) / sizeof(void *) * sizeof(void *);
       CHECK(offsetof(cds_sl_advposmon_init_struct, pFb) == off, "cds_sl_advposmon_init_struct.pFb at %zu, expected %zu", offsetof(cds_sl_advposmon_init_struct, pFb), off);
       off += sizeof(void *);
       off = (off + sizeof(int32_t) - 1) / sizeof(int32_t) * sizeof(int32_t);
@@ -7912,6 +7927,110 @@ static void test_slp(void)
     CHECK(reached_error, "FB_SLP: the random test never reached ERROR");
 }
 
+static void rnd_config_sbt(FB_SBT *x)
+{
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nSingleturnPos = (uint32_t)v[rnd() % 7u]; }
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nActCurrentIq = (int32_t)v[rnd() % 7u]; }
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nMinCurrentIq = (int32_t)v[rnd() % 7u]; }
+    x->tBrakeTestInterval = rnd_time();
+    x->tMinDuration = rnd_time();
+    x->tMaxDuration = rnd_time();
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nMaxPositionDeviation = (uint32_t)v[rnd() % 7u]; }
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nMinCurrentIqFix = (int32_t)v[rnd() % 7u]; }
+    x->wInputActive = (uint16_t)(rnd() & 0x3u);
+}
+/* 1: a valid configuration (want_valid) or an invalid one was drawn into a and b */
+static int draw_sbt(FB_SBT *a, FB_SBT *b, int want_valid)
+{
+    long k;
+    for (k = 0; k < 200000L; k++) {
+        static FB_SBT x;
+        int valid;
+        memset(&x, 0, sizeof x);
+        rnd_config_sbt(&x);
+        valid = sl_sbt_init(&x) == SL_OK && sl_sbt_cycle(&x, 0u) == SL_OK;
+        if (valid == want_valid) {
+            memset(&x.bRun, 0, 0); /* keep x's parameters, reset the instance */
+            memset(a, 0, sizeof *a);
+            rnd_config_sbt(a); /* placeholder, overwritten below */
+            a->nSingleturnPos = x.nSingleturnPos;
+            a->nActCurrentIq = x.nActCurrentIq;
+            a->nMinCurrentIq = x.nMinCurrentIq;
+            a->tBrakeTestInterval = x.tBrakeTestInterval;
+            a->tMinDuration = x.tMinDuration;
+            a->tMaxDuration = x.tMaxDuration;
+            a->nMaxPositionDeviation = x.nMaxPositionDeviation;
+            a->nMinCurrentIqFix = x.nMinCurrentIqFix;
+            a->wInputActive = x.wInputActive;
+            *b = *a;
+            return 1;
+        }
+    }
+    return 0;
+}
+static void test_sbt(void)
+{
+    static FB_SBT a, b;
+    cds_sl_sbt_cycle_struct p;
+    int c, k, bump, ok = 0, cycles = 0, inv_cycles = 0, inv_config = 0, reached_run = 0, reached_error = 0;
+    int hist[12] = {0};
+    unsigned pol = 0;
+    uint32_t t = 1000u;
+    memset(&a, 0, sizeof a);
+    memset(&b, 0, sizeof b);
+    memset(&p, 0, sizeof p);
+    p.pFb = NULL;
+    p.cds_sl_sbt_cycle = 12345;
+    cds_sl_sbt_cycle(&p);
+    CHECK(p.cds_sl_sbt_cycle == SL_E_NULL, "cds_sl_sbt_cycle(NULL) returned %d", (int)p.cds_sl_sbt_cycle);
+    a.bRun = b.bRun = 1;
+    a.wInputActive = b.wInputActive = 1;
+    { cds_sl_sbt_init_struct q; int32_t r; q.pFb = &a; cds_sl_sbt_init(&q); r = sl_sbt_init(&b);
+      CHECK(q.cds_sl_sbt_init == r && memcmp(&a, &b, sizeof a) == 0, "cds_sl_sbt_init differs from sl_sbt_init"); }
+    rng = 3927681101u; /* FNV-1a of "FB_SBT" */
+    machine = 1u;
+    for (c = 0; c < 20; c++) {
+        int valid = c < 16; /* 16 valid configurations, then the labelled invalid share: 4 */
+        if (!draw_sbt(&a, &b, valid)) {
+            CHECK(!valid, "FB_SBT: no valid configuration found in 200000 random draws");
+            continue;
+        }
+        if (!valid) inv_config++;
+        a.bSBT = b.bSBT = (uint8_t)(1);
+        a.bSBCIn = b.bSBCIn = (uint8_t)(1);
+        a.bErrAck = b.bErrAck = (uint8_t)(0);
+        bump = 20 + (int)(rnd() % 20u);
+        pol = (c % 2 == 1) ? rnd() : 0u;
+        for (k = 0; k < 50; k++) {
+            int32_t direct;
+            next_machine();
+            a.bSBT = b.bSBT = next_signal(a.bSBT, 0, pol >> 0);
+            a.bSBCIn = b.bSBCIn = next_signal(a.bSBCIn, 0, pol >> 1);
+            a.bErrAck = b.bErrAck = next_signal(a.bErrAck, 1, pol >> 2);
+            a.bRun = b.bRun = (uint8_t)(k >= 2 && rnd() % 100u != 0u);
+            if (valid && k == bump) { a.tBrakeTestInterval++; b.tBrakeTestInterval++; } /* changed while running: ERROR */
+            if (valid && k == bump + 2) { a.tBrakeTestInterval--; b.tBrakeTestInterval--; } /* restored */
+            p.pFb = &a;
+            p.tNow = t += 10u;
+            cds_sl_sbt_cycle(&p);
+            direct = sl_sbt_cycle(&b, p.tNow);
+            CHECK(p.cds_sl_sbt_cycle == direct, "FB_SBT config %d cycle %d: adapter %d, direct %d", c, k, (int)p.cds_sl_sbt_cycle, (int)direct);
+            CHECK(memcmp(&a, &b, sizeof a) == 0, "FB_SBT config %d cycle %d: instances differ", c, k);
+            if (!valid) { inv_cycles++; continue; }
+            cycles++;
+            if (direct == SL_OK) ok++;
+            if (direct <= 0 && direct > -12) hist[-direct]++;
+            if (b.nState == SL_STATE_ERROR) reached_error = 1;
+            if (b.nState != SL_STATE_STOP && b.nState != SL_STATE_ERROR && b.nState != SL_STATE_RESET && (b.bTestError || b.bBrakeValid)) reached_run = 1;
+        }
+    }
+    printf("FB_SBT: %d of %d cycles (16 valid random configurations) returned SL_OK; run-like state %s, ERROR %s; invalid share: %d configurations, %d cycles\n", ok, cycles, reached_run ? "reached" : "NOT reached", reached_error ? "reached" : "NOT reached", inv_config, inv_cycles);
+    if (2 * ok <= cycles) printf("  status histogram (0, -1, ... -11): %d %d %d %d %d %d %d %d %d %d %d\n", hist[0], hist[1], hist[2], hist[3], hist[4], hist[5], hist[6], hist[7], hist[8], hist[9], hist[10]);
+    CHECK(cycles > 0 && 2 * ok > cycles, "FB_SBT: only %d of %d cycles with valid configurations returned SL_OK", ok, cycles);
+    CHECK(reached_run, "FB_SBT: the random test never reached a running state (an output on)");
+    CHECK(reached_error, "FB_SBT: the random test never reached ERROR");
+}
+
 static void rnd_config_advposmon(FB_ADVPOSMON *x)
 {
     { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nSdfbInstance = (uint8_t)v[rnd() % 7u]; }
@@ -8089,6 +8208,7 @@ int main(void)
     test_violationcounter_uint();
     test_violationcounter_udint();
     test_slp();
+    test_sbt();
     test_advposmon();
     { cds_sl_time_now_ms_struct q; uint32_t t0 = sl_time_now_ms(); cds_sl_time_now_ms(&q);
       CHECK((uint32_t)(q.cds_sl_time_now_ms - t0) < 1000u, "cds_sl_time_now_ms = %u, sl_time_now_ms = %u", (unsigned)q.cds_sl_time_now_ms, (unsigned)t0); }

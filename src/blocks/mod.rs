@@ -25,6 +25,7 @@ pub mod muting;
 pub mod opmode;
 pub mod or;
 pub mod rs;
+pub mod sbt;
 pub mod scale;
 pub mod sli;
 pub mod sli2;

@@ -1130,6 +1130,22 @@ void CDECL CDECL_EXT cds_sl_slp_cycle(cds_sl_slp_cycle_struct *p)
     p->cds_sl_slp_cycle = sl_slp_cycle(p->pFb, p->tNow);
 }
 
+void CDECL CDECL_EXT cds_sl_sbt_init(cds_sl_sbt_init_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_sbt_init = sl_sbt_init(p->pFb);
+}
+
+void CDECL CDECL_EXT cds_sl_sbt_cycle(cds_sl_sbt_cycle_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_sbt_cycle = sl_sbt_cycle(p->pFb, p->tNow);
+}
+
 void CDECL CDECL_EXT cds_sl_advposmon_init(cds_sl_advposmon_init_struct *p)
 {
     if (p == 0) {

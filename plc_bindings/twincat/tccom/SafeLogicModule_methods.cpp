@@ -1276,6 +1276,24 @@ HRESULT CSafeLogicModule::sl_slp_cycle(PVOID pFb, int32_t *pnResult, uint32_t tN
     return S_OK;
 }
 
+HRESULT CSafeLogicModule::sl_sbt_init(PVOID pFb, int32_t *pnResult)
+{
+    if (pFb == NULL || pnResult == NULL) {
+        return E_POINTER;
+    }
+    *pnResult = ::sl_sbt_init(static_cast<struct FB_SBT *>(pFb));
+    return S_OK;
+}
+
+HRESULT CSafeLogicModule::sl_sbt_cycle(PVOID pFb, int32_t *pnResult, uint32_t tNow)
+{
+    if (pFb == NULL || pnResult == NULL) {
+        return E_POINTER;
+    }
+    *pnResult = ::sl_sbt_cycle(static_cast<struct FB_SBT *>(pFb), tNow);
+    return S_OK;
+}
+
 HRESULT CSafeLogicModule::sl_advposmon_init(PVOID pFb, int32_t *pnResult)
 {
     if (pFb == NULL || pnResult == NULL) {
