@@ -18,3 +18,6 @@
 #include "test_sli.c"
 #include "test_loadsensing.c"
 #include "test_envelope.c"
+#include "test_slp.c"
+#include "test_sbt.c"
+#include "test_advposmon.c"
