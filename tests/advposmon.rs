@@ -251,6 +251,7 @@ struct Model {
     state: u8,
     ack: bool,
     restart: bool,
+    restart_invalid: bool,
     aux: (u8, u8, u8),
     diag: u16,
 }
@@ -306,7 +307,8 @@ impl Model {
         check_ok: bool,
     ) {
         let (rise, fall) = (ack && !self.ack, !ack && self.ack);
-        let restart_fall = !restart && self.restart;
+        // An invalid Restart byte reads FALSE and makes no edge (restart_invalid).
+        let restart_fall = !restart && self.restart && !self.restart_invalid;
         self.ack = ack;
         self.restart = restart;
         let eval = |m: &mut Model| {
@@ -375,6 +377,7 @@ impl Model {
 fn random_sequences_match_the_model() {
     let mut rng = Rng(0x0AD5_050B);
     let mut reached = std::collections::BTreeSet::new();
+    let mut invalid_calls = 0u32;
     for seq in 0..12_000 {
         let restart_active = seq % 2 == 0;
         let mut fb = make(ENABLE | if restart_active { RESTART } else { 0 });
@@ -384,6 +387,7 @@ fn random_sequences_match_the_model() {
             state: SL_STATE_STOP,
             ack: false,
             restart: false,
+            restart_invalid: false,
             aux: (0, 0, 0),
             diag: 0,
         };
@@ -393,18 +397,34 @@ fn random_sequences_match_the_model() {
             let (run, ack, enable, restart) = (!bit(0, 20), bit(5, 3), !bit(10, 5), bit(15, 2));
             let (sdfb, ref_ok, check_ok) = (bit(20, 12), !bit(25, 4), !bit(30, 3));
             let instance = ((r >> 35) % 6) as u8;
-            set(
-                &mut fb,
-                u8::from(enable),
-                u8::from(restart),
-                u8::from(sdfb),
-                u8::from(ref_ok),
-                u8::from(check_ok),
-            );
+            let mut raw = [enable, restart, sdfb, ref_ok, check_ok].map(u8::from);
+            // One call in 25 has an invalid byte in one BOOL input: Enable, Restart,
+            // POS_REF_OK, POS_CHECK_OK read FALSE, SDFB_ERROR reads TRUE.
+            let invalid = bit(40, 25).then_some(((r >> 45) % 5) as usize);
+            let (mut enable, mut restart, mut sdfb, mut ref_ok, mut check_ok) =
+                (enable, restart, sdfb, ref_ok, check_ok);
+            if let Some(i) = invalid {
+                raw[i] = 2 + (r >> 50) as u8 % 254;
+                match i {
+                    0 => enable = false,
+                    1 => restart = false,
+                    2 => sdfb = true,
+                    3 => ref_ok = false,
+                    _ => check_ok = false,
+                }
+                invalid_calls += 1;
+            }
+            model.restart_invalid = invalid == Some(1);
+            set(&mut fb, raw[0], raw[1], raw[2], raw[3], raw[4]);
             fb.nSdfbInstance = instance;
             fb.bRun = u8::from(run);
             fb.bErrAck = u8::from(ack);
-            assert_eq!(fb.cycle(step), SL_OK);
+            let rc = if invalid.is_some() {
+                SL_E_INVALID_BOOL
+            } else {
+                SL_OK
+            };
+            assert_eq!(fb.cycle(step), rc);
             model.call(run, ack, enable, restart, sdfb, instance, ref_ok, check_ok);
             assert_eq!(
                 (fb.nState, outs(&fb), fb.nDiag, fb.nDiagTextId),
@@ -425,4 +445,8 @@ fn random_sequences_match_the_model() {
     ] {
         assert!(reached.contains(&s), "never reached {s}: {reached:?}");
     }
+    assert!(
+        invalid_calls > 5_000,
+        "{invalid_calls} calls with an invalid byte"
+    );
 }

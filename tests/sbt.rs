@@ -566,6 +566,7 @@ fn random_sequences_match_the_model() {
     let mut rng = Rng(0x0000_5B70_0001);
     let mut reached = std::collections::BTreeSet::new();
     let mut texts = std::collections::BTreeSet::new();
+    let mut invalid_calls = 0u32;
     for seq in 0..12_000 {
         let r = rng.next();
         let interval = 1000 * (1 + r % 3);
@@ -614,7 +615,22 @@ fn random_sequences_match_the_model() {
             } else {
                 latched_max
             };
-            set(&mut fb, u8::from(sbt), u8::from(released), pos, iq);
+            let mut raw = [u8::from(sbt), u8::from(released)];
+            // One call in 25 has an invalid byte: SBT reads FALSE (no edge), SBC In TRUE.
+            let invalid = bit(56, 25).then_some(((r >> 60) % 2) as usize);
+            let (sbt, released) = match invalid {
+                Some(i) => {
+                    raw[i] = 2 + (r >> 8) as u8 % 254;
+                    invalid_calls += 1;
+                    if i == 0 {
+                        (false, released)
+                    } else {
+                        (sbt, true)
+                    }
+                }
+                None => (sbt, released),
+            };
+            set(&mut fb, raw[0], raw[1], pos, iq);
             fb.bRun = u8::from(run);
             fb.bErrAck = u8::from(ack);
             fb.cycle(t0.wrapping_add(now as u32));
@@ -660,4 +676,8 @@ fn random_sequences_match_the_model() {
     for t in [0x40D8, 0x40D9, 0x40DA] {
         assert!(texts.contains(&t), "never showed {t:#x}: {texts:?}");
     }
+    assert!(
+        invalid_calls > 10_000,
+        "{invalid_calls} calls with an invalid byte"
+    );
 }

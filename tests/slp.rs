@@ -466,6 +466,7 @@ fn random_sequences_match_the_model() {
     let mut rng = Rng(0x051F_C0DE);
     let mut reached = std::collections::BTreeSet::new();
     let mut texts = std::collections::BTreeSet::new();
+    let mut invalid_calls = 0u32;
     for seq in 0..12_000 {
         let single = seq % 3 == 0;
         let (ll_in, ul_in) = (rng.next() % 2 == 0, rng.next() % 2 == 0);
@@ -507,11 +508,24 @@ fn random_sequences_match_the_model() {
             if (r >> 18) % 4 == 0 {
                 iul = pos(&mut rng);
             }
-            set_pos(&mut fb, u8::from(valid), p);
+            // One call in 25 has an invalid SafePosValid byte: it reads FALSE.
+            let invalid = (r >> 40) % 25 == 0;
+            let valid = valid && !invalid;
+            set_pos(
+                &mut fb,
+                if invalid {
+                    2 + (r >> 48) as u8 % 254
+                } else {
+                    u8::from(valid)
+                },
+                p,
+            );
             set_limit_inputs(&mut fb, ill, iul);
             fb.bRun = u8::from(run);
             fb.bErrAck = u8::from(ack);
-            assert_eq!(fb.cycle(step * 10), SL_OK);
+            let rc = if invalid { SL_E_INVALID_BOOL } else { SL_OK };
+            assert_eq!(fb.cycle(step * 10), rc);
+            invalid_calls += u32::from(invalid);
             let ll = if ll_in { ill } else { fll };
             let ul = if ul_in { iul } else { ful };
             let want = model.call(run, ack, valid, p, ll, ul);
@@ -538,5 +552,9 @@ fn random_sequences_match_the_model() {
     assert!(
         texts.contains(&0x40D0) && texts.contains(&0x40D1),
         "{texts:?}"
+    );
+    assert!(
+        invalid_calls > 5_000,
+        "{invalid_calls} calls with an invalid byte"
     );
 }

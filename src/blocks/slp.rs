@@ -463,16 +463,20 @@ impl Block for FB_SLP {
         self.bAboveMax = u8::from(safe && h.wAux == ABOVE);
         self.nState = h.nState;
         self.nDiag = h.wDiag;
+        // A refused configuration names its limit error (semantics PL3).
         let refused = h.nState == SL_STATE_STOP && h.flag(F_CFG_INVALID);
-        (self.nDiagTextId, self.dwDiagPar2, self.dwDiagPar3) =
-            match config_error(&self.latched_params()) {
-                // The refused configuration names its limit error (semantics PL3).
-                Some((bit, [lo, hi])) if refused => {
-                    let text = MESSAGES.iter().find(|(b, _)| *b == bit).map_or(0, |m| m.1);
-                    (text, lo, hi)
-                }
-                _ => diag_message(&h, &MESSAGES, p.adwPar),
-            };
+        let config = if refused {
+            config_error(&self.latched_params())
+        } else {
+            None
+        };
+        (self.nDiagTextId, self.dwDiagPar2, self.dwDiagPar3) = match config {
+            Some((bit, [lo, hi])) => {
+                let text = MESSAGES.iter().find(|(b, _)| *b == bit).map_or(0, |m| m.1);
+                (text, lo, hi)
+            }
+            None => diag_message(&h, &MESSAGES, p.adwPar),
+        };
     }
 }
 
