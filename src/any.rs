@@ -211,6 +211,27 @@ pub fn input_bit(block: &str, input: &str) -> Option<u8> {
         "SLI" | "SLI2" => named(&["bSLI"], 0).or_else(|| named(&["nPosition"], 8)),
         "COUNTER" => named(&["bReset", "bCountUp", "bCountDown"], 0),
         "VIOLATIONCOUNTER" => named(&["bInput", "bEnable"], 0),
+        "LOADSENSING" => {
+            named(&["bInactive"], 0).or_else(|| named(&["nAnalogInX", "nAnalogInY"], 8))
+        }
+        "ENVELOPE" => named(&["bSafeFunction"], 0).or_else(|| named(&["nInValue"], 8)),
+        "SLP" => named(&["bSafePosValid"], 0).or_else(|| {
+            named(
+                &[
+                    "nSingleturnPos",
+                    "nMultiturnPos",
+                    "nSingleturnPosUL",
+                    "nMultiturnPosUL",
+                    "nSingleturnPosLL",
+                    "nMultiturnPosLL",
+                ],
+                8,
+            )
+        }),
+        "SBT" => named(&["bSBT", "bSBCIn"], 0)
+            .or_else(|| named(&["nSingleturnPos", "nActCurrentIq", "nMinCurrentIq"], 8)),
+        // The drive's link inputs (bSdfbError …) have no bit.
+        "ADVPOSMON" => named(&["bEnable", "bRestart"], 0),
         _ => None,
     }
 }
