@@ -549,6 +549,78 @@ fn main() {
         "ENV_UDINT", FB_ENVELOPE_UDINT, SL_TYPE_ENVELOPE_UDINT, sl_envelope_udint_cycle;
     }
 
+    // SLP: multi-turn, limits from the parameters, the position inside them (RUN).
+    {
+        use safelogic::blocks::slp::*;
+        let mut fb = FB_SLP {
+            wInputActive: SL_SLP_ACTIVE_SAFEPOSVALID
+                | SL_SLP_ACTIVE_SINGLETURNPOS
+                | SL_SLP_ACTIVE_MULTITURNPOS,
+            nMultiturnPosLLFix: -1,
+            nMultiturnPosULFix: 1,
+            ..Default::default()
+        };
+        (fb.bSafePosValid, fb.nSingleturnPos, fb.bRun) = (1, 5, 1);
+        fb.init();
+        let private = size_of_val(&fb.stPrivate);
+        rows.push(measure(
+            ("SLP", SL_TYPE_SLP, logic),
+            batches,
+            fb,
+            private,
+            sl_slp_cycle,
+            |f| f.nState,
+        ));
+    }
+
+    // SBT: no test requested, the longest interval counting down (SAFE; RemainingTime
+    // updated every call).
+    {
+        use safelogic::blocks::sbt::*;
+        let mut fb = FB_SBT {
+            wInputActive: SL_SBT_ACTIVE_SBT
+                | SL_SBT_ACTIVE_SBCIN
+                | SL_SBT_ACTIVE_SINGLETURNPOS
+                | SL_SBT_ACTIVE_ACTCURRENTIQ,
+            tBrakeTestInterval: SL_SBT_TIME_MAX,
+            tMinDuration: 1_000,
+            tMaxDuration: 20_000,
+            nMaxPositionDeviation: 10,
+            ..Default::default()
+        };
+        fb.bRun = 1;
+        fb.init();
+        let private = size_of_val(&fb.stPrivate);
+        rows.push(measure(
+            ("SBT", SL_TYPE_SBT, timer),
+            batches,
+            fb,
+            private,
+            sl_sbt_cycle,
+            |f| f.nState,
+        ));
+    }
+
+    // ADVPOSMON: enabled, referenced, coverage good (RUN, Active), restart sequence active.
+    {
+        use safelogic::blocks::advposmon::*;
+        let mut fb = FB_ADVPOSMON {
+            wInputActive: SL_ADVPOSMON_ACTIVE_ENABLE | SL_ADVPOSMON_ACTIVE_RESTART,
+            ..Default::default()
+        };
+        (fb.bEnable, fb.bPosRefOk, fb.bPosCheckOk, fb.bRun) = (1, 1, 1, 1);
+        fb.init();
+        let private = size_of_val(&fb.stPrivate);
+        rows.push(measure(
+            ("ADVPOSMON", SL_TYPE_ADVPOSMON, logic),
+            batches,
+            fb,
+            private,
+            sl_advposmon_cycle,
+            |f| f.nState,
+        ));
+    }
+
     let cpu = std::fs::read_to_string("/proc/cpuinfo")
         .ok()
         .and_then(|s| {

@@ -19,3 +19,6 @@
 #include "test_loadsensing.c"
 #include "test_envelope.c"
 #include "test_fsoe.c"
+#include "test_slp.c"
+#include "test_sbt.c"
+#include "test_advposmon.c"

@@ -250,6 +250,9 @@ int main(void)
     run_loadsensing_scenarios();
     run_envelope_scenarios();
     run_fsoe_scenarios();
+    run_slp_scenarios();
+    run_sbt_scenarios();
+    run_advposmon_scenarios();
     printf("%d passed, %d failed\n", h_passed, h_failed);
     return h_failed == 0 ? 0 : 1;
 }

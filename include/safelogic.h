@@ -16,6 +16,36 @@
 #include <stddef.h>
 
 /*
+ Type tag of FB_ADVPOSMON (ABI-2 §10.6: sequential in the order of §10.3).
+ */
+#define SL_TYPE_ADVPOSMON 74
+
+/*
+ FB_ADVPOSMON state WAIT-FOR-RESTART (16, the manual's "0x10").
+ */
+#define SL_STATE_ADVPOSMON_WAIT_FOR_RESTART 16
+
+/*
+ Diag message of the ERROR state ("transfers the Diag message 0x38D1").
+ */
+#define SL_TEXT_ADVPOSMON_SDFB_ERROR 14545
+
+/*
+ `wInputActive` bit of Enable (required).
+ */
+#define SL_ADVPOSMON_ACTIVE_ENABLE (1 << 0)
+
+/*
+ `wInputActive` bit of Restart: set = RESTART_ACTIVE (the optional restart sequence).
+ */
+#define SL_ADVPOSMON_ACTIVE_RESTART (1 << 1)
+
+/*
+ Largest SAFEDRIVEFEEDBACK instance number of a feedback parameter ("instance (0-3)").
+ */
+#define SL_ADVPOSMON_FEEDBACK_MAX 3
+
+/*
  Diag value 1 of every analog block with a range check (ABI-2 §12.1): the result is
  below the smallest value of the type.
  */
@@ -547,6 +577,83 @@
 #define SL_TYPE_RS 11
 
 /*
+ Type tag of FB_SBT (ABI-2 §10.6: sequential in the order of §10.3).
+ */
+#define SL_TYPE_SBT 73
+
+/*
+ State TESTING (16; the manual's "4.0").
+ */
+#define SL_STATE_SBT_TESTING 16
+
+/*
+ State TEST-OK (17; the manual's "4.1").
+ */
+#define SL_STATE_SBT_TEST_OK 17
+
+/*
+ State TEST-FAILED (18; the manual's "4.2", its messages' "FB-State=0x12").
+ */
+#define SL_STATE_SBT_TEST_FAILED 18
+
+/*
+ State MONS-ERROR (20; the manual's "5.0", its messages' "FB-State=0x14").
+ */
+#define SL_STATE_SBT_MONS_ERROR 20
+
+/*
+ Message: the maximum duration expired without a successful test (Par2 0x12, Par3
+ LatchPosition).
+ */
+#define SL_TEXT_SBT_MAX_DURATION 16600
+
+/*
+ Message: the remaining time expired without a new test (Par2 0x14, Par3 LatchPosition).
+ */
+#define SL_TEXT_SBT_INTERVAL_EXPIRED 16601
+
+/*
+ Message: the single-turn position exceeds the maximum deviation (Par2 the difference,
+ Par3 MaxPositionDeviation).
+ */
+#define SL_TEXT_SBT_POSITION_DEVIATION 16602
+
+/*
+ `nDiag` of a message = its Text ID minus this (ABI-2 §10.4: no diag table).
+ */
+#define SL_SBT_DIAG_TEXT_BASE 16384
+
+/*
+ `wInputActive` bit of SBT (required).
+ */
+#define SL_SBT_ACTIVE_SBT (1 << 0)
+
+/*
+ `wInputActive` bit of SBC In (required).
+ */
+#define SL_SBT_ACTIVE_SBCIN (1 << 1)
+
+/*
+ `wInputActive` bit of SingleturnPos (required).
+ */
+#define SL_SBT_ACTIVE_SINGLETURNPOS (1 << 8)
+
+/*
+ `wInputActive` bit of ActCurrentIq (required).
+ */
+#define SL_SBT_ACTIVE_ACTCURRENTIQ (1 << 9)
+
+/*
+ `wInputActive` bit of MinCurrentIq: set = the input, clear = `nMinCurrentIqFix`.
+ */
+#define SL_SBT_ACTIVE_MINCURRENTIQ (1 << 10)
+
+/*
+ Largest value of the three TIME parameters (ABI-2 §12.9: 4,294,967 s in ms).
+ */
+#define SL_SBT_TIME_MAX 4294967000
+
+/*
  Type tag of FB_SCALE_INT (ABI-2 §10.6: sequential from 16 in the order of §10.3).
  */
 #define SL_TYPE_SCALE_INT 40
@@ -685,6 +792,73 @@
  `dwOptions` "ExceededSupport": leaving the window in RUN enters EXCEEDED, not ERROR.
  */
 #define SL_OPT_SLI2_EXCEEDED_SUPPORT (1 << 9)
+
+/*
+ Type tag of FB_SLP (ABI-2 §10.6: sequential in the order of §10.3).
+ */
+#define SL_TYPE_SLP 72
+
+/*
+ Option: single-turn mode (only the 32-bit single-turn values); clear = multi-turn.
+ */
+#define SL_OPT_SLP_SINGLETURN (1 << 8)
+
+/*
+ Diag bit 0: MultiturnPos_LL > MultiturnPos_UL.
+ */
+#define SL_DIAG_SLP_MULTITURN_LL_ABOVE_UL (1 << 0)
+
+/*
+ Diag bit 1: MultiturnPos_LL = MultiturnPos_UL and SingleturnPos_LL > SingleturnPos_UL.
+ */
+#define SL_DIAG_SLP_SINGLETURN_LL_ABOVE_UL (1 << 1)
+
+/*
+ Diag message of bit 0 (parameters: MultiturnPos_LL, MultiturnPos_UL).
+ */
+#define SL_TEXT_SLP_MULTITURN_LL_ABOVE_UL 16592
+
+/*
+ Diag message of bit 1 (parameters: SingleturnPos_LL, SingleturnPos_UL).
+ */
+#define SL_TEXT_SLP_SINGLETURN_LL_ABOVE_UL 16593
+
+/*
+ `wInputActive` bit of SafePosValid (required).
+ */
+#define SL_SLP_ACTIVE_SAFEPOSVALID (1 << 0)
+
+/*
+ `wInputActive` bit of SingleturnPos (required).
+ */
+#define SL_SLP_ACTIVE_SINGLETURNPOS (1 << 8)
+
+/*
+ `wInputActive` bit of MultiturnPos (required unless `SL_OPT_SLP_SINGLETURN`).
+ */
+#define SL_SLP_ACTIVE_MULTITURNPOS (1 << 9)
+
+/*
+ `wInputActive` bit of SingleturnPosUL: UL_Active (set = the upper limit comes from the
+ inputs, clear = from `nSingleturnPosULFix` / `nMultiturnPosULFix`).
+ */
+#define SL_SLP_ACTIVE_SINGLETURNPOSUL (1 << 10)
+
+/*
+ `wInputActive` bit of MultiturnPosUL (must equal bit 10).
+ */
+#define SL_SLP_ACTIVE_MULTITURNPOSUL (1 << 11)
+
+/*
+ `wInputActive` bit of SingleturnPosLL: LL_Active (set = the lower limit comes from the
+ inputs, clear = from the `…LLFix` parameters).
+ */
+#define SL_SLP_ACTIVE_SINGLETURNPOSLL (1 << 12)
+
+/*
+ `wInputActive` bit of MultiturnPosLL (must equal bit 12).
+ */
+#define SL_SLP_ACTIVE_MULTITURNPOSLL (1 << 13)
 
 /*
  Type tag of FB_SPEED_INT (ABI-2 §10.6: sequential from 16 in the order of §10.3).
@@ -9752,6 +9926,499 @@ typedef struct FB_VIOLATIONCOUNTER_UDINT {
 } FB_VIOLATIONCOUNTER_UDINT;
 
 
+/*
+ Private state of FB SLP (64 bytes). Never written by the user.
+ */
+typedef struct SL_SLP_PRIVATE {
+  /*
+   Common head (`wAux` bit 0: below, bit 1: above the limits in SAFE).
+   */
+  struct SL_PRIVATE_HEADER stHeader;
+  /*
+   Latched `wInputActive`.
+   */
+  uint16_t wActive;
+  /*
+   Reserved.
+   */
+  uint8_t aReserved0[2];
+  /*
+   Latched `dwOptions`.
+   */
+  uint32_t dwOptions;
+  /*
+   Latched `…Fix` limits as 32-bit patterns (single-turn UL, multi-turn UL,
+   single-turn LL, multi-turn LL: the struct's order).
+   */
+  uint32_t adwFix[4];
+  /*
+   Diag message parameters 2 and 3 latched at the ERROR entry.
+   */
+  uint32_t adwPar[2];
+  /*
+   Reserved.
+   */
+  uint8_t aReserved1[4];
+} SL_SLP_PRIVATE;
+
+/*
+ FB SLP instance (ABI-2 §11.14). Size: 160 bytes.
+ */
+typedef struct FB_SLP {
+  /*
+   Offset 0. SafePosValid: TRUE = the position is valid (bit 0, required; an invalid
+   byte reads FALSE).
+   */
+  SL_BOOL bSafePosValid;
+  /*
+   Offset 1. Reserved, keep 0.
+   */
+  uint8_t aReserved0[15];
+  /*
+   Offset 16. FbRun of the owning group: TRUE = the block executes.
+   */
+  SL_BOOL bRun;
+  /*
+   Offset 17. ErrAck of the owning group.
+   */
+  SL_BOOL bErrAck;
+  /*
+   Offset 18. Reserved, keep 0.
+   */
+  uint8_t aReserved1[6];
+  /*
+   Offset 24. SingleturnPos: the current single-turn position (bit 8, required).
+   */
+  uint32_t nSingleturnPos;
+  /*
+   Offset 28. MultiturnPos: the current multi-turn position (bit 9).
+   */
+  int32_t nMultiturnPos;
+  /*
+   Offset 32. SingleturnPosUL: upper limit, single-turn part (bit 10 = UL_Active).
+   */
+  uint32_t nSingleturnPosUL;
+  /*
+   Offset 36. MultiturnPosUL: upper limit, multi-turn part (bit 11 = bit 10).
+   */
+  int32_t nMultiturnPosUL;
+  /*
+   Offset 40. SingleturnPosLL: lower limit, single-turn part (bit 12 = LL_Active).
+   */
+  uint32_t nSingleturnPosLL;
+  /*
+   Offset 44. MultiturnPosLL: lower limit, multi-turn part (bit 13 = bit 12).
+   */
+  int32_t nMultiturnPosLL;
+  /*
+   Offset 48. Parameter "SingleTurn Pos UL" (upper limit while bit 10 is clear).
+   */
+  uint32_t nSingleturnPosULFix;
+  /*
+   Offset 52. Parameter "MultiTurn Pos UL".
+   */
+  int32_t nMultiturnPosULFix;
+  /*
+   Offset 56. Parameter "SingleTurn Pos LL" (lower limit while bit 12 is clear).
+   */
+  uint32_t nSingleturnPosLLFix;
+  /*
+   Offset 60. Parameter "MultiTurn Pos LL".
+   */
+  int32_t nMultiturnPosLLFix;
+  /*
+   Offset 64. `SL_OPT_SLP_SINGLETURN`; clear = multi-turn.
+   */
+  uint32_t dwOptions;
+  /*
+   Offset 68. Bits 0, 8 required; 9 required in multi-turn; 10 = 11, 12 = 13 choose
+   input or parameter.
+   */
+  uint16_t wInputActive;
+  /*
+   Offset 70. Reserved, keep 0.
+   */
+  uint8_t aReserved2[2];
+  /*
+   Offset 72 (output base + 0). Error: TRUE in ERROR only.
+   */
+  SL_BOOL bError;
+  /*
+   Offset 73. PositionInLimit: TRUE in RUN.
+   */
+  SL_BOOL bPositionInLimit;
+  /*
+   Offset 74. BelowMin: in SAFE (multi-turn), the position is below the lower limit.
+   */
+  SL_BOOL bBelowMin;
+  /*
+   Offset 75. AboveMax: in SAFE (multi-turn), the position is above the upper limit.
+   */
+  SL_BOOL bAboveMax;
+  /*
+   Offset 76. Reserved.
+   */
+  uint8_t aReserved3[4];
+  /*
+   Offset 80. The manual's status value (RUN, STOP, SAFE, ERROR, RESET, START).
+   */
+  uint8_t nState;
+  /*
+   Offset 81. Reserved.
+   */
+  uint8_t aReserved4[1];
+  /*
+   Offset 82. Diag bits 0/1 (limit errors) + library bits 13-15.
+   */
+  uint16_t nDiag;
+  /*
+   Offset 84. Text ID of the diag message (0x40D0, 0x40D1), 0 = none; also shown in
+   STOP while the `…Fix` limits cross (`SL_E_CONFIG`).
+   */
+  uint16_t nDiagTextId;
+  /*
+   Offset 86. Reserved.
+   */
+  uint8_t aReserved5[2];
+  /*
+   Offset 88. Message parameter 2 (the lower limit part as a 32-bit pattern).
+   */
+  uint32_t dwDiagPar2;
+  /*
+   Offset 92. Message parameter 3 (the upper limit part).
+   */
+  uint32_t dwDiagPar3;
+  /*
+   Offset 96. Private state, 64 bytes: never write it.
+   */
+  struct SL_SLP_PRIVATE stPrivate;
+} FB_SLP;
+
+/*
+ Private state of FB SBT (80 bytes). Never written by the user.
+ */
+typedef struct SL_SBT_PRIVATE {
+  /*
+   Common head (`wAux` bit 0: LastTestResult, bit 1: the test condition held in the
+   previous call; `tPhase`: the previous running call; `F_RESTART_PREV`: SBT's level).
+   */
+  struct SL_PRIVATE_HEADER stHeader;
+  /*
+   Latched `wInputActive`.
+   */
+  uint16_t wActive;
+  /*
+   Text ID of the message of TEST-FAILED / MONS-ERROR.
+   */
+  uint16_t wText;
+  /*
+   Latched tBrakeTestInterval, tMinDuration, tMaxDuration (ms), nMaxPositionDeviation,
+   nMinCurrentIqFix (pattern).
+   */
+  uint32_t adwParam[5];
+  /*
+   Remaining time until the next brake test, ms.
+   */
+  uint32_t dwRemainingMs;
+  /*
+   Time since the test started (MaxDuration), ms, saturating.
+   */
+  uint32_t dwTestMs;
+  /*
+   Time the test condition has held without a break (MinDuration), ms, saturating.
+   */
+  uint32_t dwHeldMs;
+  /*
+   SingleturnPos latched at the start of the test.
+   */
+  uint32_t dwLatchPos;
+  /*
+   The message's parameters 2 and 3.
+   */
+  uint32_t adwPar[2];
+  /*
+   Reserved.
+   */
+  uint8_t aReserved[4];
+} SL_SBT_PRIVATE;
+
+/*
+ FB SBT instance (ABI-2 §11.15). Size: 176 bytes.
+ */
+typedef struct FB_SBT {
+  /*
+   Offset 0. SBT: a rising edge starts a brake test (bit 0, required; an invalid byte
+   reads FALSE without an edge).
+   */
+  SL_BOOL bSBT;
+  /*
+   Offset 1. SBC In: 0 = brake applied, 1 = released (bit 1, required; an invalid byte
+   reads TRUE, no test credit).
+   */
+  SL_BOOL bSBCIn;
+  /*
+   Offset 2. Reserved, keep 0.
+   */
+  uint8_t aReserved0[14];
+  /*
+   Offset 16. FbRun of the owning group: TRUE = the block executes.
+   */
+  SL_BOOL bRun;
+  /*
+   Offset 17. ErrAck of the owning group.
+   */
+  SL_BOOL bErrAck;
+  /*
+   Offset 18. Reserved, keep 0.
+   */
+  uint8_t aReserved1[6];
+  /*
+   Offset 24. SingleturnPos: the current safe position (bit 8, required).
+   */
+  uint32_t nSingleturnPos;
+  /*
+   Offset 28. ActCurrentIq: the torque-forming current of the axis (bit 9, required).
+   */
+  int32_t nActCurrentIq;
+  /*
+   Offset 32. MinCurrentIq: the current of the minimum required torque, used while
+   bit 10 is set.
+   */
+  int32_t nMinCurrentIq;
+  /*
+   Offset 36. "BrakeTestInterval" in ms: 1000 to 4,294,967,000, a multiple of 1000.
+   */
+  uint32_t tBrakeTestInterval;
+  /*
+   Offset 40. "MinDuration" in ms: a multiple of 100, at most tMaxDuration.
+   */
+  uint32_t tMinDuration;
+  /*
+   Offset 44. "MaxDuration" in ms: a multiple of 100, at most 4,294,967,000.
+   */
+  uint32_t tMaxDuration;
+  /*
+   Offset 48. "MaxPositionDeviation" in increments.
+   */
+  uint32_t nMaxPositionDeviation;
+  /*
+   Offset 52. Parameter "MinCurrentIq", used while bit 10 is clear.
+   */
+  int32_t nMinCurrentIqFix;
+  /*
+   Offset 56. Bits 0, 1, 8, 9 required; bit 10 chooses input or parameter.
+   */
+  uint16_t wInputActive;
+  /*
+   Offset 58. Reserved, keep 0.
+   */
+  uint8_t aReserved2[6];
+  /*
+   Offset 64 (output base + 0). TestError: TEST-FAILED or MONS-ERROR.
+   */
+  SL_BOOL bTestError;
+  /*
+   Offset 65. BrakeValid: the last test passed and its interval has not expired (RUN,
+   TEST-OK).
+   */
+  SL_BOOL bBrakeValid;
+  /*
+   Offset 66. Reserved.
+   */
+  uint8_t aReserved3[6];
+  /*
+   Offset 72 (analog output base). RemainingTime until the next brake test in
+   seconds (rounded up); 0 in STOP, ERROR, RESET, MONS-ERROR.
+   */
+  uint32_t nRemainingTime;
+  /*
+   Offset 76. Reserved.
+   */
+  uint8_t aReserved4[4];
+  /*
+   Offset 80. The manual's status value (SL_STATE_*, SL_STATE_SBT_*).
+   */
+  uint8_t nState;
+  /*
+   Offset 81. Reserved.
+   */
+  uint8_t aReserved5[1];
+  /*
+   Offset 82. The message's Text ID − 0x4000 (0xD8, 0xD9, 0xDA) + library bits 13-15.
+   */
+  uint16_t nDiag;
+  /*
+   Offset 84. Text ID of the message in TEST-FAILED / MONS-ERROR, 0 = none.
+   */
+  uint16_t nDiagTextId;
+  /*
+   Offset 86. Reserved.
+   */
+  uint8_t aReserved6[2];
+  /*
+   Offset 88. Message parameter 2.
+   */
+  uint32_t dwDiagPar2;
+  /*
+   Offset 92. Message parameter 3.
+   */
+  uint32_t dwDiagPar3;
+  /*
+   Offset 96. Private state, 80 bytes: never write it.
+   */
+  struct SL_SBT_PRIVATE stPrivate;
+} FB_SBT;
+
+/*
+ Private state of FB ADVPOSMON (40 bytes). Never written by the user.
+ */
+typedef struct SL_ADVPOSMON_PRIVATE {
+  /*
+   Common head (`wAux`: the RUN outputs, and the ERROR's SDFB_ERROR mark).
+   */
+  struct SL_PRIVATE_HEADER stHeader;
+  /*
+   Latched `wInputActive`.
+   */
+  uint16_t wActive;
+  /*
+   Latched feedback instances (ChA primary, ChA secondary, ChB primary, ChB secondary).
+   */
+  uint16_t awFeedback[4];
+  /*
+   Reserved.
+   */
+  uint8_t aReserved[2];
+} SL_ADVPOSMON_PRIVATE;
+
+/*
+ FB ADVPOSMON instance (ABI-2 §11.16). Size: 104 bytes.
+ */
+typedef struct FB_ADVPOSMON {
+  /*
+   Offset 0. Enable: TRUE = position monitoring requested (bit 0, required).
+   */
+  SL_BOOL bEnable;
+  /*
+   Offset 1. Reserved, keep 0.
+   */
+  uint8_t aReserved0[7];
+  /*
+   Offset 8. Restart: the restart sequence after OverRange (bit 1 = RESTART_ACTIVE).
+   */
+  SL_BOOL bRestart;
+  /*
+   Offset 9. Reserved, keep 0.
+   */
+  uint8_t aReserved1[7];
+  /*
+   Offset 16. FbRun of the owning group: TRUE = the block executes.
+   */
+  SL_BOOL bRun;
+  /*
+   Offset 17. ErrAck of the owning group.
+   */
+  SL_BOOL bErrAck;
+  /*
+   Offset 18. Library extension: SDFB_ERROR, the assigned SAFEDRIVEFEEDBACK is in
+   ERROR (an invalid byte reads TRUE).
+   */
+  SL_BOOL bSdfbError;
+  /*
+   Offset 19. Library extension: POS_REF_OK, the encoder instance is referenced.
+   */
+  SL_BOOL bPosRefOk;
+  /*
+   Offset 20. Library extension: POS_CHECK_OK, the diagnostic coverage is ≥ 99 %.
+   */
+  SL_BOOL bPosCheckOk;
+  /*
+   Offset 21. Library extension: the SAFEDRIVEFEEDBACK instance (1-4) that reported
+   the error (diag bits 0-2).
+   */
+  uint8_t nSdfbInstance;
+  /*
+   Offset 22. Reserved, keep 0.
+   */
+  uint8_t aReserved2[2];
+  /*
+   Offset 24. Parameter "ChA Primary Feedback" (instance 0-3).
+   */
+  uint16_t nChAPrimaryFeedback;
+  /*
+   Offset 26. Parameter "ChA Secondary Feedback".
+   */
+  uint16_t nChASecondaryFeedback;
+  /*
+   Offset 28. Parameter "ChB Primary Feedback".
+   */
+  uint16_t nChBPrimaryFeedback;
+  /*
+   Offset 30. Parameter "ChB Secondary Feedback".
+   */
+  uint16_t nChBSecondaryFeedback;
+  /*
+   Offset 32. Bit 0 (Enable) required; bit 1 = RESTART_ACTIVE.
+   */
+  uint16_t wInputActive;
+  /*
+   Offset 34. Reserved, keep 0.
+   */
+  uint8_t aReserved3[6];
+  /*
+   Offset 40 (output base + 0). Error: TRUE in ERROR only.
+   */
+  SL_BOOL bError;
+  /*
+   Offset 41. Active: in RUN, POS_REF_OK and POS_CHECK_OK.
+   */
+  SL_BOOL bActive;
+  /*
+   Offset 42. Wait: in RUN, the encoder instance is not yet referenced.
+   */
+  SL_BOOL bWait;
+  /*
+   Offset 43. OverRange: diagnostic coverage < 99 % (RUN), or WAIT-FOR-RESTART, START.
+   */
+  SL_BOOL bOverRange;
+  /*
+   Offset 44. Reserved.
+   */
+  uint8_t aReserved4[4];
+  /*
+   Offset 48. The manual's status value (SL_STATE_*, WAIT-FOR-RESTART 16).
+   */
+  uint8_t nState;
+  /*
+   Offset 49. Reserved.
+   */
+  uint8_t aReserved5[1];
+  /*
+   Offset 50. Diag bits 0-2: the SAFEDRIVEFEEDBACK instance in ERROR; library bits 13-15.
+   */
+  uint16_t nDiag;
+  /*
+   Offset 52. Text ID of the diag message (0x38D1 in ERROR by SDFB_ERROR), 0 = none.
+   */
+  uint16_t nDiagTextId;
+  /*
+   Offset 54. Reserved.
+   */
+  uint8_t aReserved6[2];
+  /*
+   Offset 56. Message parameter 2 (0: the manual gives none).
+   */
+  uint32_t dwDiagPar2;
+  /*
+   Offset 60. Message parameter 3 (0).
+   */
+  uint32_t dwDiagPar3;
+  /*
+   Offset 64. Private state, 40 bytes: never write it.
+   */
+  struct SL_ADVPOSMON_PRIVATE stPrivate;
+} FB_ADVPOSMON;
+
 
 
 #ifdef __cplusplus
@@ -10101,6 +10768,12 @@ int32_t sl_violationcounter_uint_init(struct FB_VIOLATIONCOUNTER_UINT *fb);
 int32_t sl_violationcounter_uint_cycle(struct FB_VIOLATIONCOUNTER_UINT *fb, uint32_t tNow);
 int32_t sl_violationcounter_udint_init(struct FB_VIOLATIONCOUNTER_UDINT *fb);
 int32_t sl_violationcounter_udint_cycle(struct FB_VIOLATIONCOUNTER_UDINT *fb, uint32_t tNow);
+int32_t sl_slp_init(struct FB_SLP *fb);
+int32_t sl_slp_cycle(struct FB_SLP *fb, uint32_t tNow);
+int32_t sl_sbt_init(struct FB_SBT *fb);
+int32_t sl_sbt_cycle(struct FB_SBT *fb, uint32_t tNow);
+int32_t sl_advposmon_init(struct FB_ADVPOSMON *fb);
+int32_t sl_advposmon_cycle(struct FB_ADVPOSMON *fb, uint32_t tNow);
 
 #ifdef __cplusplus
 }  // extern "C"
@@ -12104,5 +12777,122 @@ SL_STATIC_ASSERT(offsetof(FB_VIOLATIONCOUNTER_UDINT, dwDiagPar2) == 64, "offset 
 SL_STATIC_ASSERT(offsetof(FB_VIOLATIONCOUNTER_UDINT, dwDiagPar3) == 68, "offset of FB_VIOLATIONCOUNTER_UDINT.dwDiagPar3");
 SL_STATIC_ASSERT(offsetof(FB_VIOLATIONCOUNTER_UDINT, stPrivate) == 72, "offset of FB_VIOLATIONCOUNTER_UDINT.stPrivate");
 SL_STATIC_ASSERT(sizeof(FB_VIOLATIONCOUNTER_UDINT) == 120, "size of FB_VIOLATIONCOUNTER_UDINT");
+SL_STATIC_ASSERT(offsetof(SL_SLP_PRIVATE, stHeader) == 0, "offset of SL_SLP_PRIVATE.stHeader");
+SL_STATIC_ASSERT(offsetof(SL_SLP_PRIVATE, wActive) == 28, "offset of SL_SLP_PRIVATE.wActive");
+SL_STATIC_ASSERT(offsetof(SL_SLP_PRIVATE, aReserved0) == 30, "offset of SL_SLP_PRIVATE.aReserved0");
+SL_STATIC_ASSERT(offsetof(SL_SLP_PRIVATE, dwOptions) == 32, "offset of SL_SLP_PRIVATE.dwOptions");
+SL_STATIC_ASSERT(offsetof(SL_SLP_PRIVATE, adwFix) == 36, "offset of SL_SLP_PRIVATE.adwFix");
+SL_STATIC_ASSERT(offsetof(SL_SLP_PRIVATE, adwPar) == 52, "offset of SL_SLP_PRIVATE.adwPar");
+SL_STATIC_ASSERT(offsetof(SL_SLP_PRIVATE, aReserved1) == 60, "offset of SL_SLP_PRIVATE.aReserved1");
+SL_STATIC_ASSERT(sizeof(SL_SLP_PRIVATE) == 64, "size of SL_SLP_PRIVATE");
+SL_STATIC_ASSERT(offsetof(FB_SLP, bSafePosValid) == 0, "offset of FB_SLP.bSafePosValid");
+SL_STATIC_ASSERT(offsetof(FB_SLP, aReserved0) == 1, "offset of FB_SLP.aReserved0");
+SL_STATIC_ASSERT(offsetof(FB_SLP, bRun) == 16, "offset of FB_SLP.bRun");
+SL_STATIC_ASSERT(offsetof(FB_SLP, bErrAck) == 17, "offset of FB_SLP.bErrAck");
+SL_STATIC_ASSERT(offsetof(FB_SLP, aReserved1) == 18, "offset of FB_SLP.aReserved1");
+SL_STATIC_ASSERT(offsetof(FB_SLP, nSingleturnPos) == 24, "offset of FB_SLP.nSingleturnPos");
+SL_STATIC_ASSERT(offsetof(FB_SLP, nMultiturnPos) == 28, "offset of FB_SLP.nMultiturnPos");
+SL_STATIC_ASSERT(offsetof(FB_SLP, nSingleturnPosUL) == 32, "offset of FB_SLP.nSingleturnPosUL");
+SL_STATIC_ASSERT(offsetof(FB_SLP, nMultiturnPosUL) == 36, "offset of FB_SLP.nMultiturnPosUL");
+SL_STATIC_ASSERT(offsetof(FB_SLP, nSingleturnPosLL) == 40, "offset of FB_SLP.nSingleturnPosLL");
+SL_STATIC_ASSERT(offsetof(FB_SLP, nMultiturnPosLL) == 44, "offset of FB_SLP.nMultiturnPosLL");
+SL_STATIC_ASSERT(offsetof(FB_SLP, nSingleturnPosULFix) == 48, "offset of FB_SLP.nSingleturnPosULFix");
+SL_STATIC_ASSERT(offsetof(FB_SLP, nMultiturnPosULFix) == 52, "offset of FB_SLP.nMultiturnPosULFix");
+SL_STATIC_ASSERT(offsetof(FB_SLP, nSingleturnPosLLFix) == 56, "offset of FB_SLP.nSingleturnPosLLFix");
+SL_STATIC_ASSERT(offsetof(FB_SLP, nMultiturnPosLLFix) == 60, "offset of FB_SLP.nMultiturnPosLLFix");
+SL_STATIC_ASSERT(offsetof(FB_SLP, dwOptions) == 64, "offset of FB_SLP.dwOptions");
+SL_STATIC_ASSERT(offsetof(FB_SLP, wInputActive) == 68, "offset of FB_SLP.wInputActive");
+SL_STATIC_ASSERT(offsetof(FB_SLP, aReserved2) == 70, "offset of FB_SLP.aReserved2");
+SL_STATIC_ASSERT(offsetof(FB_SLP, bError) == 72, "offset of FB_SLP.bError");
+SL_STATIC_ASSERT(offsetof(FB_SLP, bPositionInLimit) == 73, "offset of FB_SLP.bPositionInLimit");
+SL_STATIC_ASSERT(offsetof(FB_SLP, bBelowMin) == 74, "offset of FB_SLP.bBelowMin");
+SL_STATIC_ASSERT(offsetof(FB_SLP, bAboveMax) == 75, "offset of FB_SLP.bAboveMax");
+SL_STATIC_ASSERT(offsetof(FB_SLP, aReserved3) == 76, "offset of FB_SLP.aReserved3");
+SL_STATIC_ASSERT(offsetof(FB_SLP, nState) == 80, "offset of FB_SLP.nState");
+SL_STATIC_ASSERT(offsetof(FB_SLP, aReserved4) == 81, "offset of FB_SLP.aReserved4");
+SL_STATIC_ASSERT(offsetof(FB_SLP, nDiag) == 82, "offset of FB_SLP.nDiag");
+SL_STATIC_ASSERT(offsetof(FB_SLP, nDiagTextId) == 84, "offset of FB_SLP.nDiagTextId");
+SL_STATIC_ASSERT(offsetof(FB_SLP, aReserved5) == 86, "offset of FB_SLP.aReserved5");
+SL_STATIC_ASSERT(offsetof(FB_SLP, dwDiagPar2) == 88, "offset of FB_SLP.dwDiagPar2");
+SL_STATIC_ASSERT(offsetof(FB_SLP, dwDiagPar3) == 92, "offset of FB_SLP.dwDiagPar3");
+SL_STATIC_ASSERT(offsetof(FB_SLP, stPrivate) == 96, "offset of FB_SLP.stPrivate");
+SL_STATIC_ASSERT(sizeof(FB_SLP) == 160, "size of FB_SLP");
+SL_STATIC_ASSERT(offsetof(SL_SBT_PRIVATE, stHeader) == 0, "offset of SL_SBT_PRIVATE.stHeader");
+SL_STATIC_ASSERT(offsetof(SL_SBT_PRIVATE, wActive) == 28, "offset of SL_SBT_PRIVATE.wActive");
+SL_STATIC_ASSERT(offsetof(SL_SBT_PRIVATE, wText) == 30, "offset of SL_SBT_PRIVATE.wText");
+SL_STATIC_ASSERT(offsetof(SL_SBT_PRIVATE, adwParam) == 32, "offset of SL_SBT_PRIVATE.adwParam");
+SL_STATIC_ASSERT(offsetof(SL_SBT_PRIVATE, dwRemainingMs) == 52, "offset of SL_SBT_PRIVATE.dwRemainingMs");
+SL_STATIC_ASSERT(offsetof(SL_SBT_PRIVATE, dwTestMs) == 56, "offset of SL_SBT_PRIVATE.dwTestMs");
+SL_STATIC_ASSERT(offsetof(SL_SBT_PRIVATE, dwHeldMs) == 60, "offset of SL_SBT_PRIVATE.dwHeldMs");
+SL_STATIC_ASSERT(offsetof(SL_SBT_PRIVATE, dwLatchPos) == 64, "offset of SL_SBT_PRIVATE.dwLatchPos");
+SL_STATIC_ASSERT(offsetof(SL_SBT_PRIVATE, adwPar) == 68, "offset of SL_SBT_PRIVATE.adwPar");
+SL_STATIC_ASSERT(offsetof(SL_SBT_PRIVATE, aReserved) == 76, "offset of SL_SBT_PRIVATE.aReserved");
+SL_STATIC_ASSERT(sizeof(SL_SBT_PRIVATE) == 80, "size of SL_SBT_PRIVATE");
+SL_STATIC_ASSERT(offsetof(FB_SBT, bSBT) == 0, "offset of FB_SBT.bSBT");
+SL_STATIC_ASSERT(offsetof(FB_SBT, bSBCIn) == 1, "offset of FB_SBT.bSBCIn");
+SL_STATIC_ASSERT(offsetof(FB_SBT, aReserved0) == 2, "offset of FB_SBT.aReserved0");
+SL_STATIC_ASSERT(offsetof(FB_SBT, bRun) == 16, "offset of FB_SBT.bRun");
+SL_STATIC_ASSERT(offsetof(FB_SBT, bErrAck) == 17, "offset of FB_SBT.bErrAck");
+SL_STATIC_ASSERT(offsetof(FB_SBT, aReserved1) == 18, "offset of FB_SBT.aReserved1");
+SL_STATIC_ASSERT(offsetof(FB_SBT, nSingleturnPos) == 24, "offset of FB_SBT.nSingleturnPos");
+SL_STATIC_ASSERT(offsetof(FB_SBT, nActCurrentIq) == 28, "offset of FB_SBT.nActCurrentIq");
+SL_STATIC_ASSERT(offsetof(FB_SBT, nMinCurrentIq) == 32, "offset of FB_SBT.nMinCurrentIq");
+SL_STATIC_ASSERT(offsetof(FB_SBT, tBrakeTestInterval) == 36, "offset of FB_SBT.tBrakeTestInterval");
+SL_STATIC_ASSERT(offsetof(FB_SBT, tMinDuration) == 40, "offset of FB_SBT.tMinDuration");
+SL_STATIC_ASSERT(offsetof(FB_SBT, tMaxDuration) == 44, "offset of FB_SBT.tMaxDuration");
+SL_STATIC_ASSERT(offsetof(FB_SBT, nMaxPositionDeviation) == 48, "offset of FB_SBT.nMaxPositionDeviation");
+SL_STATIC_ASSERT(offsetof(FB_SBT, nMinCurrentIqFix) == 52, "offset of FB_SBT.nMinCurrentIqFix");
+SL_STATIC_ASSERT(offsetof(FB_SBT, wInputActive) == 56, "offset of FB_SBT.wInputActive");
+SL_STATIC_ASSERT(offsetof(FB_SBT, aReserved2) == 58, "offset of FB_SBT.aReserved2");
+SL_STATIC_ASSERT(offsetof(FB_SBT, bTestError) == 64, "offset of FB_SBT.bTestError");
+SL_STATIC_ASSERT(offsetof(FB_SBT, bBrakeValid) == 65, "offset of FB_SBT.bBrakeValid");
+SL_STATIC_ASSERT(offsetof(FB_SBT, aReserved3) == 66, "offset of FB_SBT.aReserved3");
+SL_STATIC_ASSERT(offsetof(FB_SBT, nRemainingTime) == 72, "offset of FB_SBT.nRemainingTime");
+SL_STATIC_ASSERT(offsetof(FB_SBT, aReserved4) == 76, "offset of FB_SBT.aReserved4");
+SL_STATIC_ASSERT(offsetof(FB_SBT, nState) == 80, "offset of FB_SBT.nState");
+SL_STATIC_ASSERT(offsetof(FB_SBT, aReserved5) == 81, "offset of FB_SBT.aReserved5");
+SL_STATIC_ASSERT(offsetof(FB_SBT, nDiag) == 82, "offset of FB_SBT.nDiag");
+SL_STATIC_ASSERT(offsetof(FB_SBT, nDiagTextId) == 84, "offset of FB_SBT.nDiagTextId");
+SL_STATIC_ASSERT(offsetof(FB_SBT, aReserved6) == 86, "offset of FB_SBT.aReserved6");
+SL_STATIC_ASSERT(offsetof(FB_SBT, dwDiagPar2) == 88, "offset of FB_SBT.dwDiagPar2");
+SL_STATIC_ASSERT(offsetof(FB_SBT, dwDiagPar3) == 92, "offset of FB_SBT.dwDiagPar3");
+SL_STATIC_ASSERT(offsetof(FB_SBT, stPrivate) == 96, "offset of FB_SBT.stPrivate");
+SL_STATIC_ASSERT(sizeof(FB_SBT) == 176, "size of FB_SBT");
+SL_STATIC_ASSERT(offsetof(SL_ADVPOSMON_PRIVATE, stHeader) == 0, "offset of SL_ADVPOSMON_PRIVATE.stHeader");
+SL_STATIC_ASSERT(offsetof(SL_ADVPOSMON_PRIVATE, wActive) == 28, "offset of SL_ADVPOSMON_PRIVATE.wActive");
+SL_STATIC_ASSERT(offsetof(SL_ADVPOSMON_PRIVATE, awFeedback) == 30, "offset of SL_ADVPOSMON_PRIVATE.awFeedback");
+SL_STATIC_ASSERT(offsetof(SL_ADVPOSMON_PRIVATE, aReserved) == 38, "offset of SL_ADVPOSMON_PRIVATE.aReserved");
+SL_STATIC_ASSERT(sizeof(SL_ADVPOSMON_PRIVATE) == 40, "size of SL_ADVPOSMON_PRIVATE");
+SL_STATIC_ASSERT(offsetof(FB_ADVPOSMON, bEnable) == 0, "offset of FB_ADVPOSMON.bEnable");
+SL_STATIC_ASSERT(offsetof(FB_ADVPOSMON, aReserved0) == 1, "offset of FB_ADVPOSMON.aReserved0");
+SL_STATIC_ASSERT(offsetof(FB_ADVPOSMON, bRestart) == 8, "offset of FB_ADVPOSMON.bRestart");
+SL_STATIC_ASSERT(offsetof(FB_ADVPOSMON, aReserved1) == 9, "offset of FB_ADVPOSMON.aReserved1");
+SL_STATIC_ASSERT(offsetof(FB_ADVPOSMON, bRun) == 16, "offset of FB_ADVPOSMON.bRun");
+SL_STATIC_ASSERT(offsetof(FB_ADVPOSMON, bErrAck) == 17, "offset of FB_ADVPOSMON.bErrAck");
+SL_STATIC_ASSERT(offsetof(FB_ADVPOSMON, bSdfbError) == 18, "offset of FB_ADVPOSMON.bSdfbError");
+SL_STATIC_ASSERT(offsetof(FB_ADVPOSMON, bPosRefOk) == 19, "offset of FB_ADVPOSMON.bPosRefOk");
+SL_STATIC_ASSERT(offsetof(FB_ADVPOSMON, bPosCheckOk) == 20, "offset of FB_ADVPOSMON.bPosCheckOk");
+SL_STATIC_ASSERT(offsetof(FB_ADVPOSMON, nSdfbInstance) == 21, "offset of FB_ADVPOSMON.nSdfbInstance");
+SL_STATIC_ASSERT(offsetof(FB_ADVPOSMON, aReserved2) == 22, "offset of FB_ADVPOSMON.aReserved2");
+SL_STATIC_ASSERT(offsetof(FB_ADVPOSMON, nChAPrimaryFeedback) == 24, "offset of FB_ADVPOSMON.nChAPrimaryFeedback");
+SL_STATIC_ASSERT(offsetof(FB_ADVPOSMON, nChASecondaryFeedback) == 26, "offset of FB_ADVPOSMON.nChASecondaryFeedback");
+SL_STATIC_ASSERT(offsetof(FB_ADVPOSMON, nChBPrimaryFeedback) == 28, "offset of FB_ADVPOSMON.nChBPrimaryFeedback");
+SL_STATIC_ASSERT(offsetof(FB_ADVPOSMON, nChBSecondaryFeedback) == 30, "offset of FB_ADVPOSMON.nChBSecondaryFeedback");
+SL_STATIC_ASSERT(offsetof(FB_ADVPOSMON, wInputActive) == 32, "offset of FB_ADVPOSMON.wInputActive");
+SL_STATIC_ASSERT(offsetof(FB_ADVPOSMON, aReserved3) == 34, "offset of FB_ADVPOSMON.aReserved3");
+SL_STATIC_ASSERT(offsetof(FB_ADVPOSMON, bError) == 40, "offset of FB_ADVPOSMON.bError");
+SL_STATIC_ASSERT(offsetof(FB_ADVPOSMON, bActive) == 41, "offset of FB_ADVPOSMON.bActive");
+SL_STATIC_ASSERT(offsetof(FB_ADVPOSMON, bWait) == 42, "offset of FB_ADVPOSMON.bWait");
+SL_STATIC_ASSERT(offsetof(FB_ADVPOSMON, bOverRange) == 43, "offset of FB_ADVPOSMON.bOverRange");
+SL_STATIC_ASSERT(offsetof(FB_ADVPOSMON, aReserved4) == 44, "offset of FB_ADVPOSMON.aReserved4");
+SL_STATIC_ASSERT(offsetof(FB_ADVPOSMON, nState) == 48, "offset of FB_ADVPOSMON.nState");
+SL_STATIC_ASSERT(offsetof(FB_ADVPOSMON, aReserved5) == 49, "offset of FB_ADVPOSMON.aReserved5");
+SL_STATIC_ASSERT(offsetof(FB_ADVPOSMON, nDiag) == 50, "offset of FB_ADVPOSMON.nDiag");
+SL_STATIC_ASSERT(offsetof(FB_ADVPOSMON, nDiagTextId) == 52, "offset of FB_ADVPOSMON.nDiagTextId");
+SL_STATIC_ASSERT(offsetof(FB_ADVPOSMON, aReserved6) == 54, "offset of FB_ADVPOSMON.aReserved6");
+SL_STATIC_ASSERT(offsetof(FB_ADVPOSMON, dwDiagPar2) == 56, "offset of FB_ADVPOSMON.dwDiagPar2");
+SL_STATIC_ASSERT(offsetof(FB_ADVPOSMON, dwDiagPar3) == 60, "offset of FB_ADVPOSMON.dwDiagPar3");
+SL_STATIC_ASSERT(offsetof(FB_ADVPOSMON, stPrivate) == 64, "offset of FB_ADVPOSMON.stPrivate");
+SL_STATIC_ASSERT(sizeof(FB_ADVPOSMON) == 104, "size of FB_ADVPOSMON");
 
 #endif  /* SAFELOGIC_H */

@@ -209,11 +209,14 @@ pub fn input_bit(block: &str, input: &str) -> Option<u8> {
 
 /// The rule of ABI-2 §10.5 for every block with the analog layout (type tags from 16):
 /// its BOOL inputs take bits 0… and its analog inputs bits 8… in the order of the manual's
-/// input table, which is the order of the block's declared inputs (its field table).
+/// input table, which is the order of the block's declared inputs (its field table). The
+/// link inputs at 18–23 that a non-block object writes (ABI-2 §10.2: ADVPOSMON's drive
+/// feedback) are not the manual's inputs and have no bit.
 fn analog_layout_bit(block: &str, input: &str) -> Option<u8> {
     let b = registry::block_type_named(block).filter(|b| b.info.tag >= 16)?;
     let (mut bools, mut analogs) = (0u8, 8u8);
-    for f in b.fields.iter().filter(|f| f.dir == Dir::Input) {
+    let manual_input = |f: &&Field| f.dir == Dir::Input && !(18..24).contains(&f.offset);
+    for f in b.fields.iter().filter(manual_input) {
         let bit = if f.kind.size() == 1 {
             &mut bools
         } else {

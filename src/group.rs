@@ -170,7 +170,7 @@ macro_rules! impl_member {
         $crate::registry::Field {
             name: stringify!($f),
             offset: core::mem::offset_of!(Self, $f) as u16,
-            kind: $crate::registry::$k($crate::registry::kind_of(|s: &Self| &s.$f)),
+            kind: $crate::registry::$k(stringify!($f), $crate::registry::kind_of(|s: &Self| &s.$f)),
             dir: $crate::registry::Dir::$dir,
         }
     };

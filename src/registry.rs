@@ -140,15 +140,17 @@ pub const fn kind_of<S, F: FieldType>(_: fn(&S) -> &F) -> Kind {
 }
 
 /// Parameters and info fields keep their type.
-pub const fn same(k: Kind) -> Kind {
+pub const fn same(_name: &str, k: Kind) -> Kind {
     k
 }
 
-/// Inputs and outputs of one byte are BOOLs.
-pub const fn io_kind(k: Kind) -> Kind {
-    match k {
-        Kind::U8 => Kind::Bool,
-        k => k,
+/// Inputs and outputs of one byte are BOOLs (`b…`), except a byte named as a number
+/// (`n…`: FB_ADVPOSMON's `nSdfbInstance`, an instance number written by the drive side).
+pub const fn io_kind(name: &str, k: Kind) -> Kind {
+    match (k, name.as_bytes()) {
+        (Kind::U8, [b'n', ..]) => Kind::U8,
+        (Kind::U8, _) => Kind::Bool,
+        (k, _) => k,
     }
 }
 
@@ -329,6 +331,9 @@ macro_rules! for_each_block {
             $crate::blocks::sli2::FB_SLI2_UDINT => sl_sli2_udint_init, sl_sli2_udint_cycle;
             $crate::blocks::violationcounter::FB_VIOLATIONCOUNTER_UINT => sl_violationcounter_uint_init, sl_violationcounter_uint_cycle;
             $crate::blocks::violationcounter::FB_VIOLATIONCOUNTER_UDINT => sl_violationcounter_udint_init, sl_violationcounter_udint_cycle;
+            $crate::blocks::slp::FB_SLP => sl_slp_init, sl_slp_cycle;
+            $crate::blocks::sbt::FB_SBT => sl_sbt_init, sl_sbt_cycle;
+            $crate::blocks::advposmon::FB_ADVPOSMON => sl_advposmon_init, sl_advposmon_cycle;
             // registry:end
         }
     };

@@ -340,6 +340,9 @@ macro_rules! depth {
                         let v = match r % 4 {
                             _ if bit_set && bit_sets => [0, 1 << ((r >> 24) % 16), run_of_bits][(r % 3) as usize],
                             _ if f.name.starts_with('w') && r % 3 == 0 => run_of_bits,
+                            // TIME parameters now and then in whole seconds (SBT's interval
+                            // is a multiple of 1000 ms, ABI-2 §11.15).
+                            _ if f.name.starts_with('t') && (r >> 40) % 4 == 0 => 1000 * ((r >> 8) % 50),
                             0 => [0u64, 1, 2, 3, 5, 10, 100][(r >> 8) as usize % 7],
                             1 => (r >> 8) & 0xFF,
                             2 => (r >> 8) & 0xFFFF,

@@ -149,6 +149,26 @@ for _v in ("INT", "UINT", "DINT", "UDINT"):
              "aRow[0].nY2": 200, "aRow[0].nWY1": 110, "aRow[0].nWY2": 190, "nAnalogInX": 1,
              "nAnalogInY": 150}, pulse=None, change=("nRowCount", 2), run={1, 17})
 
+# SLP: multi-turn, the position between the parameter limits (RUN); changing the upper limit
+# while running is the error.
+BLOCKS["SLP"] = dict(
+    cfg=dict(wInputActive=0x301, nSingleturnPosULFix=100, nSingleturnPos=5, bSafePosValid=1),
+    pulse=None, change=("nSingleturnPosULFix", 101), run={1})
+
+# SBT: a test started by the SBT pulse passes at once (MinDuration 0, current 0 >= 0):
+# TEST-OK, then RUN; after the ErrAck the block starts afresh in SAFE; changing the deviation
+# while running is the error.
+BLOCKS["SBT"] = dict(
+    cfg=dict(wInputActive=0x303, tBrakeTestInterval=60000, tMinDuration=0, tMaxDuration=1000,
+             nMaxPositionDeviation=10), pulse=("bSBT",), change=("nMaxPositionDeviation", 11),
+    run={1, 3, 16, 17})
+
+# ADVPOSMON: enabled, referenced, coverage good (RUN, Active); changing a feedback instance
+# while running is the error.
+BLOCKS["ADVPOSMON"] = dict(
+    cfg=dict(wInputActive=0x1, bEnable=1, bPosRefOk=1, bPosCheckOk=1), pulse=None,
+    change=("nChAPrimaryFeedback", 1), run={1})
+
 BLOCK_INPUTS = {}  # block -> its BOOL inputs (filled from the header in main)
 
 

@@ -1059,6 +1059,51 @@ static void test_param_structs(void)
       off = (off + sizeof(int32_t) - 1) / sizeof(int32_t) * sizeof(int32_t);
       CHECK(offsetof(cds_sl_violationcounter_udint_cycle_struct, cds_sl_violationcounter_udint_cycle) == off, "cds_sl_violationcounter_udint_cycle_struct return value at %zu, expected %zu", offsetof(cds_sl_violationcounter_udint_cycle_struct, cds_sl_violationcounter_udint_cycle), off); }
     { size_t off = 0;
+      off = (off + sizeof(void *) - 1) / sizeof(void *) * sizeof(void *);
+      CHECK(offsetof(cds_sl_slp_init_struct, pFb) == off, "cds_sl_slp_init_struct.pFb at %zu, expected %zu", offsetof(cds_sl_slp_init_struct, pFb), off);
+      off += sizeof(void *);
+      off = (off + sizeof(int32_t) - 1) / sizeof(int32_t) * sizeof(int32_t);
+      CHECK(offsetof(cds_sl_slp_init_struct, cds_sl_slp_init) == off, "cds_sl_slp_init_struct return value at %zu, expected %zu", offsetof(cds_sl_slp_init_struct, cds_sl_slp_init), off); }
+    { size_t off = 0;
+      off = (off + sizeof(void *) - 1) / sizeof(void *) * sizeof(void *);
+      CHECK(offsetof(cds_sl_slp_cycle_struct, pFb) == off, "cds_sl_slp_cycle_struct.pFb at %zu, expected %zu", offsetof(cds_sl_slp_cycle_struct, pFb), off);
+      off += sizeof(void *);
+      off = (off + sizeof(uint32_t) - 1) / sizeof(uint32_t) * sizeof(uint32_t);
+      CHECK(offsetof(cds_sl_slp_cycle_struct, tNow) == off, "cds_sl_slp_cycle_struct.tNow at %zu, expected %zu", offsetof(cds_sl_slp_cycle_struct, tNow), off);
+      off += sizeof(uint32_t);
+      off = (off + sizeof(int32_t) - 1) / sizeof(int32_t) * sizeof(int32_t);
+      CHECK(offsetof(cds_sl_slp_cycle_struct, cds_sl_slp_cycle) == off, "cds_sl_slp_cycle_struct return value at %zu, expected %zu", offsetof(cds_sl_slp_cycle_struct, cds_sl_slp_cycle), off); }
+    { size_t off = 0;
+      off = (off + sizeof(void *) - 1) / sizeof(void *) * sizeof(void *);
+      CHECK(offsetof(cds_sl_sbt_init_struct, pFb) == off, "cds_sl_sbt_init_struct.pFb at %zu, expected %zu", offsetof(cds_sl_sbt_init_struct, pFb), off);
+      off += sizeof(void *);
+      off = (off + sizeof(int32_t) - 1) / sizeof(int32_t) * sizeof(int32_t);
+      CHECK(offsetof(cds_sl_sbt_init_struct, cds_sl_sbt_init) == off, "cds_sl_sbt_init_struct return value at %zu, expected %zu", offsetof(cds_sl_sbt_init_struct, cds_sl_sbt_init), off); }
+    { size_t off = 0;
+      off = (off + sizeof(void *) - 1) / sizeof(void *) * sizeof(void *);
+      CHECK(offsetof(cds_sl_sbt_cycle_struct, pFb) == off, "cds_sl_sbt_cycle_struct.pFb at %zu, expected %zu", offsetof(cds_sl_sbt_cycle_struct, pFb), off);
+      off += sizeof(void *);
+      off = (off + sizeof(uint32_t) - 1) / sizeof(uint32_t) * sizeof(uint32_t);
+      CHECK(offsetof(cds_sl_sbt_cycle_struct, tNow) == off, "cds_sl_sbt_cycle_struct.tNow at %zu, expected %zu", offsetof(cds_sl_sbt_cycle_struct, tNow), off);
+      off += sizeof(uint32_t);
+      off = (off + sizeof(int32_t) - 1) / sizeof(int32_t) * sizeof(int32_t);
+      CHECK(offsetof(cds_sl_sbt_cycle_struct, cds_sl_sbt_cycle) == off, "cds_sl_sbt_cycle_struct return value at %zu, expected %zu", offsetof(cds_sl_sbt_cycle_struct, cds_sl_sbt_cycle), off); }
+    { size_t off = 0;
+      off = (off + sizeof(void *) - 1) / sizeof(void *) * sizeof(void *);
+      CHECK(offsetof(cds_sl_advposmon_init_struct, pFb) == off, "cds_sl_advposmon_init_struct.pFb at %zu, expected %zu", offsetof(cds_sl_advposmon_init_struct, pFb), off);
+      off += sizeof(void *);
+      off = (off + sizeof(int32_t) - 1) / sizeof(int32_t) * sizeof(int32_t);
+      CHECK(offsetof(cds_sl_advposmon_init_struct, cds_sl_advposmon_init) == off, "cds_sl_advposmon_init_struct return value at %zu, expected %zu", offsetof(cds_sl_advposmon_init_struct, cds_sl_advposmon_init), off); }
+    { size_t off = 0;
+      off = (off + sizeof(void *) - 1) / sizeof(void *) * sizeof(void *);
+      CHECK(offsetof(cds_sl_advposmon_cycle_struct, pFb) == off, "cds_sl_advposmon_cycle_struct.pFb at %zu, expected %zu", offsetof(cds_sl_advposmon_cycle_struct, pFb), off);
+      off += sizeof(void *);
+      off = (off + sizeof(uint32_t) - 1) / sizeof(uint32_t) * sizeof(uint32_t);
+      CHECK(offsetof(cds_sl_advposmon_cycle_struct, tNow) == off, "cds_sl_advposmon_cycle_struct.tNow at %zu, expected %zu", offsetof(cds_sl_advposmon_cycle_struct, tNow), off);
+      off += sizeof(uint32_t);
+      off = (off + sizeof(int32_t) - 1) / sizeof(int32_t) * sizeof(int32_t);
+      CHECK(offsetof(cds_sl_advposmon_cycle_struct, cds_sl_advposmon_cycle) == off, "cds_sl_advposmon_cycle_struct return value at %zu, expected %zu", offsetof(cds_sl_advposmon_cycle_struct, cds_sl_advposmon_cycle), off); }
+    { size_t off = 0;
       off = (off + sizeof(uint32_t) - 1) / sizeof(uint32_t) * sizeof(uint32_t);
       CHECK(offsetof(cds_sl_time_now_ms_struct, cds_sl_time_now_ms) == off, "cds_sl_time_now_ms_struct return value at %zu, expected %zu", offsetof(cds_sl_time_now_ms_struct, cds_sl_time_now_ms), off); }
     { size_t off = 0;
@@ -1161,6 +1206,7 @@ static uint32_t rnd_options(void)
     if (rnd() % 4u == 0u) o |= (uint32_t)SL_OPT_SCALE_DIVISION_FIRST;
     if (rnd() % 4u == 0u) o |= (uint32_t)SL_OPT_SLI2_OVERFLOW_ALLOWED;
     if (rnd() % 4u == 0u) o |= (uint32_t)SL_OPT_SLI2_EXCEEDED_SUPPORT;
+    if (rnd() % 4u == 0u) o |= (uint32_t)SL_OPT_SLP_SINGLETURN;
     if (rnd() % 4u == 0u) o |= (uint32_t)SL_OPT_SPEED_OVERFLOW_CHECK;
     if (rnd() % 4u == 0u) o |= (uint32_t)SL_OPT_TON2_REMAINING_TIME;
     if (rnd() % 4u == 0u) o |= (uint32_t)SL_OPT_EDM1;
@@ -7773,6 +7819,322 @@ static void test_violationcounter_udint(void)
     CHECK(reached_error, "FB_VIOLATIONCOUNTER_UDINT: the random test never reached ERROR");
 }
 
+static void rnd_config_slp(FB_SLP *x)
+{
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nSingleturnPos = (uint32_t)v[rnd() % 7u]; }
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nMultiturnPos = (int32_t)v[rnd() % 7u]; }
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nSingleturnPosUL = (uint32_t)v[rnd() % 7u]; }
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nMultiturnPosUL = (int32_t)v[rnd() % 7u]; }
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nSingleturnPosLL = (uint32_t)v[rnd() % 7u]; }
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nMultiturnPosLL = (int32_t)v[rnd() % 7u]; }
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nSingleturnPosULFix = (uint32_t)v[rnd() % 7u]; }
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nMultiturnPosULFix = (int32_t)v[rnd() % 7u]; }
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nSingleturnPosLLFix = (uint32_t)v[rnd() % 7u]; }
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nMultiturnPosLLFix = (int32_t)v[rnd() % 7u]; }
+    x->dwOptions = rnd_options();
+    x->wInputActive = (uint16_t)(rnd() & 0x1u);
+}
+/* 1: a valid configuration (want_valid) or an invalid one was drawn into a and b */
+static int draw_slp(FB_SLP *a, FB_SLP *b, int want_valid)
+{
+    long k;
+    for (k = 0; k < 200000L; k++) {
+        static FB_SLP x;
+        int valid;
+        memset(&x, 0, sizeof x);
+        rnd_config_slp(&x);
+        valid = sl_slp_init(&x) == SL_OK && sl_slp_cycle(&x, 0u) == SL_OK;
+        if (valid == want_valid) {
+            memset(&x.bRun, 0, 0); /* keep x's parameters, reset the instance */
+            memset(a, 0, sizeof *a);
+            rnd_config_slp(a); /* placeholder, overwritten below */
+            a->nSingleturnPos = x.nSingleturnPos;
+            a->nMultiturnPos = x.nMultiturnPos;
+            a->nSingleturnPosUL = x.nSingleturnPosUL;
+            a->nMultiturnPosUL = x.nMultiturnPosUL;
+            a->nSingleturnPosLL = x.nSingleturnPosLL;
+            a->nMultiturnPosLL = x.nMultiturnPosLL;
+            a->nSingleturnPosULFix = x.nSingleturnPosULFix;
+            a->nMultiturnPosULFix = x.nMultiturnPosULFix;
+            a->nSingleturnPosLLFix = x.nSingleturnPosLLFix;
+            a->nMultiturnPosLLFix = x.nMultiturnPosLLFix;
+            a->dwOptions = x.dwOptions;
+            a->wInputActive = x.wInputActive;
+            *b = *a;
+            return 1;
+        }
+    }
+    return 0;
+}
+static void test_slp(void)
+{
+    static FB_SLP a, b;
+    cds_sl_slp_cycle_struct p;
+    int c, k, bump, ok = 0, cycles = 0, inv_cycles = 0, inv_config = 0, reached_run = 0, reached_error = 0;
+    int hist[12] = {0};
+    unsigned pol = 0;
+    uint32_t t = 1000u;
+    memset(&a, 0, sizeof a);
+    memset(&b, 0, sizeof b);
+    memset(&p, 0, sizeof p);
+    p.pFb = NULL;
+    p.cds_sl_slp_cycle = 12345;
+    cds_sl_slp_cycle(&p);
+    CHECK(p.cds_sl_slp_cycle == SL_E_NULL, "cds_sl_slp_cycle(NULL) returned %d", (int)p.cds_sl_slp_cycle);
+    a.bRun = b.bRun = 1;
+    a.wInputActive = b.wInputActive = 1;
+    { cds_sl_slp_init_struct q; int32_t r; q.pFb = &a; cds_sl_slp_init(&q); r = sl_slp_init(&b);
+      CHECK(q.cds_sl_slp_init == r && memcmp(&a, &b, sizeof a) == 0, "cds_sl_slp_init differs from sl_slp_init"); }
+    rng = 437745327u; /* FNV-1a of "FB_SLP" */
+    machine = 1u;
+    for (c = 0; c < 20; c++) {
+        int valid = c < 16; /* 16 valid configurations, then the labelled invalid share: 4 */
+        if (!draw_slp(&a, &b, valid)) {
+            CHECK(!valid, "FB_SLP: no valid configuration found in 200000 random draws");
+            continue;
+        }
+        if (!valid) inv_config++;
+        a.bSafePosValid = b.bSafePosValid = (uint8_t)(1);
+        a.bErrAck = b.bErrAck = (uint8_t)(0);
+        bump = 20 + (int)(rnd() % 20u);
+        pol = (c % 2 == 1) ? rnd() : 0u;
+        for (k = 0; k < 50; k++) {
+            int32_t direct;
+            next_machine();
+            a.bSafePosValid = b.bSafePosValid = next_signal(a.bSafePosValid, 0, pol >> 0);
+            a.bErrAck = b.bErrAck = next_signal(a.bErrAck, 1, pol >> 1);
+            a.bRun = b.bRun = (uint8_t)(k >= 2 && rnd() % 100u != 0u);
+            if (valid && k == bump) { a.nSingleturnPos++; b.nSingleturnPos++; } /* changed while running: ERROR */
+            if (valid && k == bump + 2) { a.nSingleturnPos--; b.nSingleturnPos--; } /* restored */
+            p.pFb = &a;
+            p.tNow = t += 10u;
+            cds_sl_slp_cycle(&p);
+            direct = sl_slp_cycle(&b, p.tNow);
+            CHECK(p.cds_sl_slp_cycle == direct, "FB_SLP config %d cycle %d: adapter %d, direct %d", c, k, (int)p.cds_sl_slp_cycle, (int)direct);
+            CHECK(memcmp(&a, &b, sizeof a) == 0, "FB_SLP config %d cycle %d: instances differ", c, k);
+            if (!valid) { inv_cycles++; continue; }
+            cycles++;
+            if (direct == SL_OK) ok++;
+            if (direct <= 0 && direct > -12) hist[-direct]++;
+            if (b.nState == SL_STATE_ERROR) reached_error = 1;
+            if (b.nState != SL_STATE_STOP && b.nState != SL_STATE_ERROR && b.nState != SL_STATE_RESET && (b.bPositionInLimit || b.bBelowMin || b.bAboveMax)) reached_run = 1;
+        }
+    }
+    printf("FB_SLP: %d of %d cycles (16 valid random configurations) returned SL_OK; run-like state %s, ERROR %s; invalid share: %d configurations, %d cycles\n", ok, cycles, reached_run ? "reached" : "NOT reached", reached_error ? "reached" : "NOT reached", inv_config, inv_cycles);
+    if (2 * ok <= cycles) printf("  status histogram (0, -1, ... -11): %d %d %d %d %d %d %d %d %d %d %d\n", hist[0], hist[1], hist[2], hist[3], hist[4], hist[5], hist[6], hist[7], hist[8], hist[9], hist[10]);
+    CHECK(cycles > 0 && 2 * ok > cycles, "FB_SLP: only %d of %d cycles with valid configurations returned SL_OK", ok, cycles);
+    CHECK(reached_run, "FB_SLP: the random test never reached a running state (an output on)");
+    CHECK(reached_error, "FB_SLP: the random test never reached ERROR");
+}
+
+static void rnd_config_sbt(FB_SBT *x)
+{
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nSingleturnPos = (uint32_t)v[rnd() % 7u]; }
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nActCurrentIq = (int32_t)v[rnd() % 7u]; }
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nMinCurrentIq = (int32_t)v[rnd() % 7u]; }
+    x->tBrakeTestInterval = rnd_time();
+    x->tMinDuration = rnd_time();
+    x->tMaxDuration = rnd_time();
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nMaxPositionDeviation = (uint32_t)v[rnd() % 7u]; }
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nMinCurrentIqFix = (int32_t)v[rnd() % 7u]; }
+    x->wInputActive = (uint16_t)(rnd() & 0x3u);
+}
+/* 1: a valid configuration (want_valid) or an invalid one was drawn into a and b */
+static int draw_sbt(FB_SBT *a, FB_SBT *b, int want_valid)
+{
+    long k;
+    for (k = 0; k < 200000L; k++) {
+        static FB_SBT x;
+        int valid;
+        memset(&x, 0, sizeof x);
+        rnd_config_sbt(&x);
+        valid = sl_sbt_init(&x) == SL_OK && sl_sbt_cycle(&x, 0u) == SL_OK;
+        if (valid == want_valid) {
+            memset(&x.bRun, 0, 0); /* keep x's parameters, reset the instance */
+            memset(a, 0, sizeof *a);
+            rnd_config_sbt(a); /* placeholder, overwritten below */
+            a->nSingleturnPos = x.nSingleturnPos;
+            a->nActCurrentIq = x.nActCurrentIq;
+            a->nMinCurrentIq = x.nMinCurrentIq;
+            a->tBrakeTestInterval = x.tBrakeTestInterval;
+            a->tMinDuration = x.tMinDuration;
+            a->tMaxDuration = x.tMaxDuration;
+            a->nMaxPositionDeviation = x.nMaxPositionDeviation;
+            a->nMinCurrentIqFix = x.nMinCurrentIqFix;
+            a->wInputActive = x.wInputActive;
+            *b = *a;
+            return 1;
+        }
+    }
+    return 0;
+}
+static void test_sbt(void)
+{
+    static FB_SBT a, b;
+    cds_sl_sbt_cycle_struct p;
+    int c, k, bump, ok = 0, cycles = 0, inv_cycles = 0, inv_config = 0, reached_run = 0, reached_error = 0;
+    int hist[12] = {0};
+    unsigned pol = 0;
+    uint32_t t = 1000u;
+    memset(&a, 0, sizeof a);
+    memset(&b, 0, sizeof b);
+    memset(&p, 0, sizeof p);
+    p.pFb = NULL;
+    p.cds_sl_sbt_cycle = 12345;
+    cds_sl_sbt_cycle(&p);
+    CHECK(p.cds_sl_sbt_cycle == SL_E_NULL, "cds_sl_sbt_cycle(NULL) returned %d", (int)p.cds_sl_sbt_cycle);
+    a.bRun = b.bRun = 1;
+    a.wInputActive = b.wInputActive = 1;
+    { cds_sl_sbt_init_struct q; int32_t r; q.pFb = &a; cds_sl_sbt_init(&q); r = sl_sbt_init(&b);
+      CHECK(q.cds_sl_sbt_init == r && memcmp(&a, &b, sizeof a) == 0, "cds_sl_sbt_init differs from sl_sbt_init"); }
+    rng = 3927681101u; /* FNV-1a of "FB_SBT" */
+    machine = 1u;
+    for (c = 0; c < 20; c++) {
+        int valid = c < 16; /* 16 valid configurations, then the labelled invalid share: 4 */
+        if (!draw_sbt(&a, &b, valid)) {
+            CHECK(!valid, "FB_SBT: no valid configuration found in 200000 random draws");
+            continue;
+        }
+        if (!valid) inv_config++;
+        a.bSBT = b.bSBT = (uint8_t)(1);
+        a.bSBCIn = b.bSBCIn = (uint8_t)(1);
+        a.bErrAck = b.bErrAck = (uint8_t)(0);
+        bump = 20 + (int)(rnd() % 20u);
+        pol = (c % 2 == 1) ? rnd() : 0u;
+        for (k = 0; k < 50; k++) {
+            int32_t direct;
+            next_machine();
+            a.bSBT = b.bSBT = next_signal(a.bSBT, 0, pol >> 0);
+            a.bSBCIn = b.bSBCIn = next_signal(a.bSBCIn, 0, pol >> 1);
+            a.bErrAck = b.bErrAck = next_signal(a.bErrAck, 1, pol >> 2);
+            a.bRun = b.bRun = (uint8_t)(k >= 2 && rnd() % 100u != 0u);
+            if (valid && k == bump) { a.tBrakeTestInterval++; b.tBrakeTestInterval++; } /* changed while running: ERROR */
+            if (valid && k == bump + 2) { a.tBrakeTestInterval--; b.tBrakeTestInterval--; } /* restored */
+            p.pFb = &a;
+            p.tNow = t += 10u;
+            cds_sl_sbt_cycle(&p);
+            direct = sl_sbt_cycle(&b, p.tNow);
+            CHECK(p.cds_sl_sbt_cycle == direct, "FB_SBT config %d cycle %d: adapter %d, direct %d", c, k, (int)p.cds_sl_sbt_cycle, (int)direct);
+            CHECK(memcmp(&a, &b, sizeof a) == 0, "FB_SBT config %d cycle %d: instances differ", c, k);
+            if (!valid) { inv_cycles++; continue; }
+            cycles++;
+            if (direct == SL_OK) ok++;
+            if (direct <= 0 && direct > -12) hist[-direct]++;
+            if (b.nState == SL_STATE_ERROR) reached_error = 1;
+            if (b.nState != SL_STATE_STOP && b.nState != SL_STATE_ERROR && b.nState != SL_STATE_RESET && (b.bTestError || b.bBrakeValid)) reached_run = 1;
+        }
+    }
+    printf("FB_SBT: %d of %d cycles (16 valid random configurations) returned SL_OK; run-like state %s, ERROR %s; invalid share: %d configurations, %d cycles\n", ok, cycles, reached_run ? "reached" : "NOT reached", reached_error ? "reached" : "NOT reached", inv_config, inv_cycles);
+    if (2 * ok <= cycles) printf("  status histogram (0, -1, ... -11): %d %d %d %d %d %d %d %d %d %d %d\n", hist[0], hist[1], hist[2], hist[3], hist[4], hist[5], hist[6], hist[7], hist[8], hist[9], hist[10]);
+    CHECK(cycles > 0 && 2 * ok > cycles, "FB_SBT: only %d of %d cycles with valid configurations returned SL_OK", ok, cycles);
+    CHECK(reached_run, "FB_SBT: the random test never reached a running state (an output on)");
+    CHECK(reached_error, "FB_SBT: the random test never reached ERROR");
+}
+
+static void rnd_config_advposmon(FB_ADVPOSMON *x)
+{
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nSdfbInstance = (uint8_t)v[rnd() % 7u]; }
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nChAPrimaryFeedback = (uint16_t)v[rnd() % 7u]; }
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nChASecondaryFeedback = (uint16_t)v[rnd() % 7u]; }
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nChBPrimaryFeedback = (uint16_t)v[rnd() % 7u]; }
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nChBSecondaryFeedback = (uint16_t)v[rnd() % 7u]; }
+    x->wInputActive = (uint16_t)(rnd() & 0x1Fu);
+}
+/* 1: a valid configuration (want_valid) or an invalid one was drawn into a and b */
+static int draw_advposmon(FB_ADVPOSMON *a, FB_ADVPOSMON *b, int want_valid)
+{
+    long k;
+    for (k = 0; k < 200000L; k++) {
+        static FB_ADVPOSMON x;
+        int valid;
+        memset(&x, 0, sizeof x);
+        rnd_config_advposmon(&x);
+        valid = sl_advposmon_init(&x) == SL_OK && sl_advposmon_cycle(&x, 0u) == SL_OK;
+        if (valid == want_valid) {
+            memset(&x.bRun, 0, 0); /* keep x's parameters, reset the instance */
+            memset(a, 0, sizeof *a);
+            rnd_config_advposmon(a); /* placeholder, overwritten below */
+            a->nSdfbInstance = x.nSdfbInstance;
+            a->nChAPrimaryFeedback = x.nChAPrimaryFeedback;
+            a->nChASecondaryFeedback = x.nChASecondaryFeedback;
+            a->nChBPrimaryFeedback = x.nChBPrimaryFeedback;
+            a->nChBSecondaryFeedback = x.nChBSecondaryFeedback;
+            a->wInputActive = x.wInputActive;
+            *b = *a;
+            return 1;
+        }
+    }
+    return 0;
+}
+static void test_advposmon(void)
+{
+    static FB_ADVPOSMON a, b;
+    cds_sl_advposmon_cycle_struct p;
+    int c, k, bump, ok = 0, cycles = 0, inv_cycles = 0, inv_config = 0, reached_run = 0, reached_error = 0;
+    int hist[12] = {0};
+    unsigned pol = 0;
+    uint32_t t = 1000u;
+    memset(&a, 0, sizeof a);
+    memset(&b, 0, sizeof b);
+    memset(&p, 0, sizeof p);
+    p.pFb = NULL;
+    p.cds_sl_advposmon_cycle = 12345;
+    cds_sl_advposmon_cycle(&p);
+    CHECK(p.cds_sl_advposmon_cycle == SL_E_NULL, "cds_sl_advposmon_cycle(NULL) returned %d", (int)p.cds_sl_advposmon_cycle);
+    a.bRun = b.bRun = 1;
+    a.wInputActive = b.wInputActive = 1;
+    { cds_sl_advposmon_init_struct q; int32_t r; q.pFb = &a; cds_sl_advposmon_init(&q); r = sl_advposmon_init(&b);
+      CHECK(q.cds_sl_advposmon_init == r && memcmp(&a, &b, sizeof a) == 0, "cds_sl_advposmon_init differs from sl_advposmon_init"); }
+    rng = 3567960635u; /* FNV-1a of "FB_ADVPOSMON" */
+    machine = 1u;
+    for (c = 0; c < 20; c++) {
+        int valid = c < 16; /* 16 valid configurations, then the labelled invalid share: 4 */
+        if (!draw_advposmon(&a, &b, valid)) {
+            CHECK(!valid, "FB_ADVPOSMON: no valid configuration found in 200000 random draws");
+            continue;
+        }
+        if (!valid) inv_config++;
+        a.bEnable = b.bEnable = (uint8_t)(1);
+        a.bRestart = b.bRestart = (uint8_t)(0);
+        a.bErrAck = b.bErrAck = (uint8_t)(0);
+        a.bSdfbError = b.bSdfbError = (uint8_t)(1);
+        a.bPosRefOk = b.bPosRefOk = (uint8_t)(1);
+        a.bPosCheckOk = b.bPosCheckOk = (uint8_t)(1);
+        bump = 20 + (int)(rnd() % 20u);
+        pol = (c % 2 == 1) ? rnd() : 0u;
+        for (k = 0; k < 50; k++) {
+            int32_t direct;
+            next_machine();
+            a.bEnable = b.bEnable = next_signal(a.bEnable, 0, pol >> 0);
+            a.bRestart = b.bRestart = next_signal(a.bRestart, 1, pol >> 1);
+            a.bErrAck = b.bErrAck = next_signal(a.bErrAck, 1, pol >> 2);
+            a.bSdfbError = b.bSdfbError = next_signal(a.bSdfbError, 0, pol >> 3);
+            a.bPosRefOk = b.bPosRefOk = next_signal(a.bPosRefOk, 0, pol >> 4);
+            a.bPosCheckOk = b.bPosCheckOk = next_signal(a.bPosCheckOk, 0, pol >> 5);
+            a.bRun = b.bRun = (uint8_t)(k >= 2 && rnd() % 100u != 0u);
+            if (valid && k == bump) { a.nSdfbInstance++; b.nSdfbInstance++; } /* changed while running: ERROR */
+            if (valid && k == bump + 2) { a.nSdfbInstance--; b.nSdfbInstance--; } /* restored */
+            p.pFb = &a;
+            p.tNow = t += 10u;
+            cds_sl_advposmon_cycle(&p);
+            direct = sl_advposmon_cycle(&b, p.tNow);
+            CHECK(p.cds_sl_advposmon_cycle == direct, "FB_ADVPOSMON config %d cycle %d: adapter %d, direct %d", c, k, (int)p.cds_sl_advposmon_cycle, (int)direct);
+            CHECK(memcmp(&a, &b, sizeof a) == 0, "FB_ADVPOSMON config %d cycle %d: instances differ", c, k);
+            if (!valid) { inv_cycles++; continue; }
+            cycles++;
+            if (direct == SL_OK) ok++;
+            if (direct <= 0 && direct > -12) hist[-direct]++;
+            if (b.nState == SL_STATE_ERROR) reached_error = 1;
+            if (b.nState != SL_STATE_STOP && b.nState != SL_STATE_ERROR && b.nState != SL_STATE_RESET && (b.bActive || b.bWait || b.bOverRange)) reached_run = 1;
+        }
+    }
+    printf("FB_ADVPOSMON: %d of %d cycles (16 valid random configurations) returned SL_OK; run-like state %s, ERROR %s; invalid share: %d configurations, %d cycles\n", ok, cycles, reached_run ? "reached" : "NOT reached", reached_error ? "reached" : "NOT reached", inv_config, inv_cycles);
+    if (2 * ok <= cycles) printf("  status histogram (0, -1, ... -11): %d %d %d %d %d %d %d %d %d %d %d\n", hist[0], hist[1], hist[2], hist[3], hist[4], hist[5], hist[6], hist[7], hist[8], hist[9], hist[10]);
+    CHECK(cycles > 0 && 2 * ok > cycles, "FB_ADVPOSMON: only %d of %d cycles with valid configurations returned SL_OK", ok, cycles);
+    CHECK(reached_run, "FB_ADVPOSMON: the random test never reached a running state (an output on)");
+    CHECK(reached_error, "FB_ADVPOSMON: the random test never reached ERROR");
+}
+
 int main(void)
 {
     test_param_structs();
@@ -7845,6 +8207,9 @@ int main(void)
     test_sli2_udint();
     test_violationcounter_uint();
     test_violationcounter_udint();
+    test_slp();
+    test_sbt();
+    test_advposmon();
     { cds_sl_time_now_ms_struct q; uint32_t t0 = sl_time_now_ms(); cds_sl_time_now_ms(&q);
       CHECK((uint32_t)(q.cds_sl_time_now_ms - t0) < 1000u, "cds_sl_time_now_ms = %u, sl_time_now_ms = %u", (unsigned)q.cds_sl_time_now_ms, (unsigned)t0); }
     cds_sl_ton2_cycle(NULL); /* a NULL parameter struct must not crash */

@@ -5,6 +5,7 @@
 //! (§4.27, §4.28) in `window`. OPMODE (§4.3), TWOHAND (§4.7), MUTING (§4.8) and EDM (§4.9)
 //! have state machines of their own.
 
+pub mod advposmon;
 pub mod analog;
 pub mod and;
 pub mod arith;
@@ -24,9 +25,11 @@ pub mod muting;
 pub mod opmode;
 pub mod or;
 pub mod rs;
+pub mod sbt;
 pub mod scale;
 pub mod sli;
 pub mod sli2;
+pub mod slp;
 pub mod speed;
 pub mod sr;
 pub mod timer;

@@ -1114,6 +1114,54 @@ void CDECL CDECL_EXT cds_sl_violationcounter_udint_cycle(cds_sl_violationcounter
     p->cds_sl_violationcounter_udint_cycle = sl_violationcounter_udint_cycle(p->pFb, p->tNow);
 }
 
+void CDECL CDECL_EXT cds_sl_slp_init(cds_sl_slp_init_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_slp_init = sl_slp_init(p->pFb);
+}
+
+void CDECL CDECL_EXT cds_sl_slp_cycle(cds_sl_slp_cycle_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_slp_cycle = sl_slp_cycle(p->pFb, p->tNow);
+}
+
+void CDECL CDECL_EXT cds_sl_sbt_init(cds_sl_sbt_init_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_sbt_init = sl_sbt_init(p->pFb);
+}
+
+void CDECL CDECL_EXT cds_sl_sbt_cycle(cds_sl_sbt_cycle_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_sbt_cycle = sl_sbt_cycle(p->pFb, p->tNow);
+}
+
+void CDECL CDECL_EXT cds_sl_advposmon_init(cds_sl_advposmon_init_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_advposmon_init = sl_advposmon_init(p->pFb);
+}
+
+void CDECL CDECL_EXT cds_sl_advposmon_cycle(cds_sl_advposmon_cycle_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_advposmon_cycle = sl_advposmon_cycle(p->pFb, p->tNow);
+}
+
 void CDECL CDECL_EXT cds_sl_time_now_ms(cds_sl_time_now_ms_struct *p)
 {
     if (p == 0) {

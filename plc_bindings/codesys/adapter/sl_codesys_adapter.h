@@ -1069,6 +1069,51 @@ typedef struct tagcds_sl_violationcounter_udint_cycle_struct {
 } cds_sl_violationcounter_udint_cycle_struct;
 void CDECL CDECL_EXT cds_sl_violationcounter_udint_cycle(cds_sl_violationcounter_udint_cycle_struct *p);
 
+/* FUNCTION cds_sl_slp_init : DINT -> sl_slp_init() */
+typedef struct tagcds_sl_slp_init_struct {
+    struct FB_SLP *pFb; /* VAR_INPUT pFb : POINTER TO ST_FB_SLP */
+    int32_t cds_sl_slp_init; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_slp_init_struct;
+void CDECL CDECL_EXT cds_sl_slp_init(cds_sl_slp_init_struct *p);
+
+/* FUNCTION cds_sl_slp_cycle : DINT -> sl_slp_cycle() */
+typedef struct tagcds_sl_slp_cycle_struct {
+    struct FB_SLP *pFb; /* VAR_INPUT pFb : POINTER TO ST_FB_SLP */
+    uint32_t tNow; /* VAR_INPUT tNow : UDINT */
+    int32_t cds_sl_slp_cycle; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_slp_cycle_struct;
+void CDECL CDECL_EXT cds_sl_slp_cycle(cds_sl_slp_cycle_struct *p);
+
+/* FUNCTION cds_sl_sbt_init : DINT -> sl_sbt_init() */
+typedef struct tagcds_sl_sbt_init_struct {
+    struct FB_SBT *pFb; /* VAR_INPUT pFb : POINTER TO ST_FB_SBT */
+    int32_t cds_sl_sbt_init; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_sbt_init_struct;
+void CDECL CDECL_EXT cds_sl_sbt_init(cds_sl_sbt_init_struct *p);
+
+/* FUNCTION cds_sl_sbt_cycle : DINT -> sl_sbt_cycle() */
+typedef struct tagcds_sl_sbt_cycle_struct {
+    struct FB_SBT *pFb; /* VAR_INPUT pFb : POINTER TO ST_FB_SBT */
+    uint32_t tNow; /* VAR_INPUT tNow : UDINT */
+    int32_t cds_sl_sbt_cycle; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_sbt_cycle_struct;
+void CDECL CDECL_EXT cds_sl_sbt_cycle(cds_sl_sbt_cycle_struct *p);
+
+/* FUNCTION cds_sl_advposmon_init : DINT -> sl_advposmon_init() */
+typedef struct tagcds_sl_advposmon_init_struct {
+    struct FB_ADVPOSMON *pFb; /* VAR_INPUT pFb : POINTER TO ST_FB_ADVPOSMON */
+    int32_t cds_sl_advposmon_init; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_advposmon_init_struct;
+void CDECL CDECL_EXT cds_sl_advposmon_init(cds_sl_advposmon_init_struct *p);
+
+/* FUNCTION cds_sl_advposmon_cycle : DINT -> sl_advposmon_cycle() */
+typedef struct tagcds_sl_advposmon_cycle_struct {
+    struct FB_ADVPOSMON *pFb; /* VAR_INPUT pFb : POINTER TO ST_FB_ADVPOSMON */
+    uint32_t tNow; /* VAR_INPUT tNow : UDINT */
+    int32_t cds_sl_advposmon_cycle; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_advposmon_cycle_struct;
+void CDECL CDECL_EXT cds_sl_advposmon_cycle(cds_sl_advposmon_cycle_struct *p);
+
 /* FUNCTION cds_sl_time_now_ms : UDINT -> sl_time_now_ms() */
 typedef struct tagcds_sl_time_now_ms_struct {
     uint32_t cds_sl_time_now_ms; /* VAR_OUTPUT (return value) UDINT */
@@ -1270,6 +1315,12 @@ void CDECL CDECL_EXT cds_sl_group_cycle(cds_sl_group_cycle_struct *p);
     X(cds_sl_violationcounter_uint_cycle) \
     X(cds_sl_violationcounter_udint_init) \
     X(cds_sl_violationcounter_udint_cycle) \
+    X(cds_sl_slp_init) \
+    X(cds_sl_slp_cycle) \
+    X(cds_sl_sbt_init) \
+    X(cds_sl_sbt_cycle) \
+    X(cds_sl_advposmon_init) \
+    X(cds_sl_advposmon_cycle) \
     X(cds_sl_time_now_ms) \
     X(cds_sl_ton2_get_elapsed) \
     X(cds_sl_group_init) \

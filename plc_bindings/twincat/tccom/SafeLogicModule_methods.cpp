@@ -1258,6 +1258,60 @@ HRESULT CSafeLogicModule::sl_violationcounter_udint_cycle(PVOID pFb, int32_t *pn
     return S_OK;
 }
 
+HRESULT CSafeLogicModule::sl_slp_init(PVOID pFb, int32_t *pnResult)
+{
+    if (pFb == NULL || pnResult == NULL) {
+        return E_POINTER;
+    }
+    *pnResult = ::sl_slp_init(static_cast<struct FB_SLP *>(pFb));
+    return S_OK;
+}
+
+HRESULT CSafeLogicModule::sl_slp_cycle(PVOID pFb, int32_t *pnResult, uint32_t tNow)
+{
+    if (pFb == NULL || pnResult == NULL) {
+        return E_POINTER;
+    }
+    *pnResult = ::sl_slp_cycle(static_cast<struct FB_SLP *>(pFb), tNow);
+    return S_OK;
+}
+
+HRESULT CSafeLogicModule::sl_sbt_init(PVOID pFb, int32_t *pnResult)
+{
+    if (pFb == NULL || pnResult == NULL) {
+        return E_POINTER;
+    }
+    *pnResult = ::sl_sbt_init(static_cast<struct FB_SBT *>(pFb));
+    return S_OK;
+}
+
+HRESULT CSafeLogicModule::sl_sbt_cycle(PVOID pFb, int32_t *pnResult, uint32_t tNow)
+{
+    if (pFb == NULL || pnResult == NULL) {
+        return E_POINTER;
+    }
+    *pnResult = ::sl_sbt_cycle(static_cast<struct FB_SBT *>(pFb), tNow);
+    return S_OK;
+}
+
+HRESULT CSafeLogicModule::sl_advposmon_init(PVOID pFb, int32_t *pnResult)
+{
+    if (pFb == NULL || pnResult == NULL) {
+        return E_POINTER;
+    }
+    *pnResult = ::sl_advposmon_init(static_cast<struct FB_ADVPOSMON *>(pFb));
+    return S_OK;
+}
+
+HRESULT CSafeLogicModule::sl_advposmon_cycle(PVOID pFb, int32_t *pnResult, uint32_t tNow)
+{
+    if (pFb == NULL || pnResult == NULL) {
+        return E_POINTER;
+    }
+    *pnResult = ::sl_advposmon_cycle(static_cast<struct FB_ADVPOSMON *>(pFb), tNow);
+    return S_OK;
+}
+
 HRESULT CSafeLogicModule::sl_ton2_get_elapsed(PVOID pFb, int32_t *pnResult, uint32_t * pPElapsedMs)
 {
     if (pFb == NULL || pnResult == NULL) {
