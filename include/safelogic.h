@@ -9987,27 +9987,27 @@ typedef struct FB_SLP {
    */
   uint8_t aReserved1[6];
   /*
-   Offset 24. SingleturnPos: the current single-turn position (bit 8, required).
+   Offset 24. SingleturnPos: the current single-turn position (active bit 8, required).
    */
   uint32_t nSingleturnPos;
   /*
-   Offset 28. MultiturnPos: the current multi-turn position (bit 9).
+   Offset 28. MultiturnPos: the current multi-turn position (active bit 9).
    */
   int32_t nMultiturnPos;
   /*
-   Offset 32. SingleturnPosUL: upper limit, single-turn part (bit 10 = UL_Active).
+   Offset 32. SingleturnPosUL: upper limit, single-turn part (active bit 10 = UL_Active).
    */
   uint32_t nSingleturnPosUL;
   /*
-   Offset 36. MultiturnPosUL: upper limit, multi-turn part (bit 11 = bit 10).
+   Offset 36. MultiturnPosUL: upper limit, multi-turn part (active bit 11 = bit 10).
    */
   int32_t nMultiturnPosUL;
   /*
-   Offset 40. SingleturnPosLL: lower limit, single-turn part (bit 12 = LL_Active).
+   Offset 40. SingleturnPosLL: lower limit, single-turn part (active bit 12 = LL_Active).
    */
   uint32_t nSingleturnPosLL;
   /*
-   Offset 44. MultiturnPosLL: lower limit, multi-turn part (bit 13 = bit 12).
+   Offset 44. MultiturnPosLL: lower limit, multi-turn part (active bit 13 = bit 12).
    */
   int32_t nMultiturnPosLL;
   /*
@@ -10173,16 +10173,16 @@ typedef struct FB_SBT {
    */
   uint8_t aReserved1[6];
   /*
-   Offset 24. SingleturnPos: the current safe position (bit 8, required).
+   Offset 24. SingleturnPos: the current safe position (active bit 8, required).
    */
   uint32_t nSingleturnPos;
   /*
-   Offset 28. ActCurrentIq: the torque-forming current of the axis (bit 9, required).
+   Offset 28. ActCurrentIq: the torque-forming current of the axis (active bit 9, required).
    */
   int32_t nActCurrentIq;
   /*
    Offset 32. MinCurrentIq: the current of the minimum required torque, used while
-   bit 10 is set.
+   active bit 10 is set.
    */
   int32_t nMinCurrentIq;
   /*

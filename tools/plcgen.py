@@ -1451,6 +1451,12 @@ def layout_dump_c(hdr: Header) -> str:
     return "\n".join(out) + "\n"
 
 
+def block_family(struct_name: str) -> str:
+    """FB_SLI2_UINT -> SLI2, FB_ESTOP -> ESTOP: the block without its integer variant."""
+    name = struct_name[3:] if struct_name.startswith("FB_") else struct_name
+    return re.sub(r"_(U?D?INT)$", "", name)
+
+
 def adapter_test_c(hdr: Header) -> str:
     out = [f"/* {GEN_NOTE} */",
            "/* Test of the CODESYS adapter: parameter-struct layout, NULL handling, and for every block",
@@ -1488,11 +1494,22 @@ def adapter_test_c(hdr: Header) -> str:
     out.append("   (init SL_OK and a stopped cycle SL_OK: the valid space, whatever a block's rules are), or, for")
     out.append("   the labelled invalid share, only if the library refuses it. */")
     out.append("static uint32_t rnd_time(void) { static const uint32_t t[] = {0u, 10u, 20u, 30u, 50u, 100u}; return t[rnd() % 6u]; }")
-    out.append("static uint32_t rnd_options(void)")
+    # Each option is drawn with probability 1/4 from the block's own candidates: the options
+    # named after its family (SL_OPT_SCALE_…) and the shared ones (SL_OPT_EDM1 …). Drawing
+    # every option for every block would set some other family's bit almost always, and a
+    # block refuses unknown option bits: its valid space would be out of reach.
+    families = {block_family(b.struct.name) for b in hdr.blocks}
+
+    def option_family(name: str) -> Optional[str]:
+        owners = [f for f in families if name.startswith(f"SL_OPT_{f}_")]
+        return max(owners, key=len) if owners else None
+
+    out.append("static uint32_t rnd_options(const uint32_t *cand, unsigned n)")
     out.append("{")
     out.append("    uint32_t o = 0;")
-    for d in opts:
-        out.append(f"    if (rnd() % 4u == 0u) o |= (uint32_t){d.name};")
+    out.append("    unsigned i;")
+    out.append("    for (i = 0; i < n; i++)")
+    out.append("        if (rnd() % 4u == 0u) o |= cand[i];")
     out.append("    return o;")
     out.append("}")
     out.append("/* Signal inputs follow one common machine signal (mostly TRUE = no safe-state request, now and")
@@ -1546,7 +1563,14 @@ def adapter_test_c(hdr: Header) -> str:
             elif f.name == "wInputNegated":
                 out.append(f"    x->wInputNegated = (uint16_t)(rnd() % 2u == 0u ? 0u : (rnd() & 0x{mask:X}u));")
             elif f.name == "dwOptions":
-                out.append("    x->dwOptions = rnd_options();")
+                fam = block_family(s)
+                cand = [d.name for d in opts if option_family(d.name) in (None, fam)]
+                out.append(f"    {{ static const uint32_t o[] = {{{', '.join(f'(uint32_t){c}' for c in cand)}}};")
+                out.append(f"      x->dwOptions = rnd_options(o, {len(cand)}u); }}")
+            elif is_time_ms(f) and re.search(r"a multiple of (\d[\d,]*)", f.doc):
+                # a time in coarser steps (SBT: 100 ms, 1000 ms): small multiples of the step
+                step = re.search(r"a multiple of (\d[\d,]*)", f.doc).group(1).replace(",", "")
+                out.append(f"    x->{f.name} = {step}u * (rnd() % 4u);")
             elif is_time_ms(f):
                 out.append(f"    x->{f.name} = rnd_time();")
             else:

@@ -1196,24 +1196,12 @@ static void test_param_structs(void)
    (init SL_OK and a stopped cycle SL_OK: the valid space, whatever a block's rules are), or, for
    the labelled invalid share, only if the library refuses it. */
 static uint32_t rnd_time(void) { static const uint32_t t[] = {0u, 10u, 20u, 30u, 50u, 100u}; return t[rnd() % 6u]; }
-static uint32_t rnd_options(void)
+static uint32_t rnd_options(const uint32_t *cand, unsigned n)
 {
     uint32_t o = 0;
-    if (rnd() % 4u == 0u) o |= (uint32_t)SL_OPT_LOADSENSING_OUTSIDE;
-    if (rnd() % 4u == 0u) o |= (uint32_t)SL_OPT_MUTING_SEQUENTIAL;
-    if (rnd() % 4u == 0u) o |= (uint32_t)SL_OPT_MUTING_BACKWARDS;
-    if (rnd() % 4u == 0u) o |= (uint32_t)SL_OPT_MUTING_OSSD_CHECK_OPTIONAL;
-    if (rnd() % 4u == 0u) o |= (uint32_t)SL_OPT_SCALE_DIVISION_FIRST;
-    if (rnd() % 4u == 0u) o |= (uint32_t)SL_OPT_SLI2_OVERFLOW_ALLOWED;
-    if (rnd() % 4u == 0u) o |= (uint32_t)SL_OPT_SLI2_EXCEEDED_SUPPORT;
-    if (rnd() % 4u == 0u) o |= (uint32_t)SL_OPT_SLP_SINGLETURN;
-    if (rnd() % 4u == 0u) o |= (uint32_t)SL_OPT_SPEED_OVERFLOW_CHECK;
-    if (rnd() % 4u == 0u) o |= (uint32_t)SL_OPT_TON2_REMAINING_TIME;
-    if (rnd() % 4u == 0u) o |= (uint32_t)SL_OPT_EDM1;
-    if (rnd() % 4u == 0u) o |= (uint32_t)SL_OPT_EDM2;
-    if (rnd() % 4u == 0u) o |= (uint32_t)SL_OPT_SAFE_INPUTS_AFTER_DISC;
-    if (rnd() % 4u == 0u) o |= (uint32_t)SL_OPT_MANUAL_RESTART;
-    if (rnd() % 4u == 0u) o |= (uint32_t)SL_OPT_FUNCTION_TEST;
+    unsigned i;
+    for (i = 0; i < n; i++)
+        if (rnd() % 4u == 0u) o |= cand[i];
     return o;
 }
 /* Signal inputs follow one common machine signal (mostly TRUE = no safe-state request, now and
@@ -1235,7 +1223,8 @@ static void rnd_config_ton2(FB_TON2 *x)
     { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nTimeBase = (uint16_t)v[rnd() % 7u]; }
     x->wInputActive = (uint16_t)(rnd() & 0x3u);
     x->wInputNegated = (uint16_t)(rnd() % 2u == 0u ? 0u : (rnd() & 0x3u));
-    x->dwOptions = rnd_options();
+    { static const uint32_t o[] = {(uint32_t)SL_OPT_TON2_REMAINING_TIME, (uint32_t)SL_OPT_EDM1, (uint32_t)SL_OPT_EDM2, (uint32_t)SL_OPT_SAFE_INPUTS_AFTER_DISC, (uint32_t)SL_OPT_MANUAL_RESTART, (uint32_t)SL_OPT_FUNCTION_TEST};
+      x->dwOptions = rnd_options(o, 6u); }
 }
 /* 1: a valid configuration (want_valid) or an invalid one was drawn into a and b */
 static int draw_ton2(FB_TON2 *a, FB_TON2 *b, int want_valid)
@@ -1336,7 +1325,8 @@ static void rnd_config_estop(FB_ESTOP *x)
     x->tEStopDelOutDelay = rnd_time();
     x->wInputActive = (uint16_t)(rnd() & 0x7FFu);
     x->wInputNegated = (uint16_t)(rnd() % 2u == 0u ? 0u : (rnd() & 0x7FFu));
-    x->dwOptions = rnd_options();
+    { static const uint32_t o[] = {(uint32_t)SL_OPT_EDM1, (uint32_t)SL_OPT_EDM2, (uint32_t)SL_OPT_SAFE_INPUTS_AFTER_DISC, (uint32_t)SL_OPT_MANUAL_RESTART, (uint32_t)SL_OPT_FUNCTION_TEST};
+      x->dwOptions = rnd_options(o, 5u); }
 }
 /* 1: a valid configuration (want_valid) or an invalid one was drawn into a and b */
 static int draw_estop(FB_ESTOP *a, FB_ESTOP *b, int want_valid)
@@ -1459,7 +1449,8 @@ static void rnd_config_mon(FB_MON *x)
     x->tMonDelOutDelay = rnd_time();
     x->wInputActive = (uint16_t)(rnd() & 0x1FFu);
     x->wInputNegated = (uint16_t)(rnd() % 2u == 0u ? 0u : (rnd() & 0x1FFu));
-    x->dwOptions = rnd_options();
+    { static const uint32_t o[] = {(uint32_t)SL_OPT_EDM1, (uint32_t)SL_OPT_EDM2, (uint32_t)SL_OPT_SAFE_INPUTS_AFTER_DISC, (uint32_t)SL_OPT_MANUAL_RESTART, (uint32_t)SL_OPT_FUNCTION_TEST};
+      x->dwOptions = rnd_options(o, 5u); }
 }
 /* 1: a valid configuration (want_valid) or an invalid one was drawn into a and b */
 static int draw_mon(FB_MON *a, FB_MON *b, int want_valid)
@@ -1991,7 +1982,8 @@ static void rnd_config_opmode(FB_OPMODE *x)
 {
     x->tDiscTime = rnd_time();
     x->wInputActive = (uint16_t)(rnd() & 0x1FFu);
-    x->dwOptions = rnd_options();
+    { static const uint32_t o[] = {(uint32_t)SL_OPT_EDM1, (uint32_t)SL_OPT_EDM2, (uint32_t)SL_OPT_SAFE_INPUTS_AFTER_DISC, (uint32_t)SL_OPT_MANUAL_RESTART, (uint32_t)SL_OPT_FUNCTION_TEST};
+      x->dwOptions = rnd_options(o, 5u); }
 }
 /* 1: a valid configuration (want_valid) or an invalid one was drawn into a and b */
 static int draw_opmode(FB_OPMODE *a, FB_OPMODE *b, int want_valid)
@@ -2100,7 +2092,8 @@ static void rnd_config_twohand(FB_TWOHAND *x)
     x->tDiscTimePairs = rnd_time();
     x->wInputActive = (uint16_t)(rnd() & 0xFu);
     x->wInputNegated = (uint16_t)(rnd() % 2u == 0u ? 0u : (rnd() & 0xFu));
-    x->dwOptions = rnd_options();
+    { static const uint32_t o[] = {(uint32_t)SL_OPT_EDM1, (uint32_t)SL_OPT_EDM2, (uint32_t)SL_OPT_SAFE_INPUTS_AFTER_DISC, (uint32_t)SL_OPT_MANUAL_RESTART, (uint32_t)SL_OPT_FUNCTION_TEST};
+      x->dwOptions = rnd_options(o, 5u); }
 }
 /* 1: a valid configuration (want_valid) or an invalid one was drawn into a and b */
 static int draw_twohand(FB_TWOHAND *a, FB_TWOHAND *b, int want_valid)
@@ -2205,7 +2198,8 @@ static void rnd_config_muting(FB_MUTING *x)
     x->tMuteDelOutDelay = rnd_time();
     x->wInputActive = (uint16_t)(rnd() & 0x1FFu);
     x->wInputNegated = (uint16_t)(rnd() % 2u == 0u ? 0u : (rnd() & 0x1FFu));
-    x->dwOptions = rnd_options();
+    { static const uint32_t o[] = {(uint32_t)SL_OPT_MUTING_SEQUENTIAL, (uint32_t)SL_OPT_MUTING_BACKWARDS, (uint32_t)SL_OPT_MUTING_OSSD_CHECK_OPTIONAL, (uint32_t)SL_OPT_EDM1, (uint32_t)SL_OPT_EDM2, (uint32_t)SL_OPT_SAFE_INPUTS_AFTER_DISC, (uint32_t)SL_OPT_MANUAL_RESTART, (uint32_t)SL_OPT_FUNCTION_TEST};
+      x->dwOptions = rnd_options(o, 8u); }
 }
 /* 1: a valid configuration (want_valid) or an invalid one was drawn into a and b */
 static int draw_muting(FB_MUTING *a, FB_MUTING *b, int want_valid)
@@ -4970,7 +4964,8 @@ static void rnd_config_scale_int(FB_SCALE_INT *x)
     { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nNumerator = (int32_t)v[rnd() % 7u]; }
     { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nDenominator = (int32_t)v[rnd() % 7u]; }
     { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nOffset = (int32_t)v[rnd() % 7u]; }
-    x->dwOptions = rnd_options();
+    { static const uint32_t o[] = {(uint32_t)SL_OPT_SCALE_DIVISION_FIRST, (uint32_t)SL_OPT_EDM1, (uint32_t)SL_OPT_EDM2, (uint32_t)SL_OPT_SAFE_INPUTS_AFTER_DISC, (uint32_t)SL_OPT_MANUAL_RESTART, (uint32_t)SL_OPT_FUNCTION_TEST};
+      x->dwOptions = rnd_options(o, 6u); }
     { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nRounding = (uint16_t)v[rnd() % 7u]; }
     x->wInputActive = (uint16_t)(rnd() & 0x100u);
     x->wInputNegated = (uint16_t)(rnd() % 2u == 0u ? 0u : (rnd() & 0x100u));
@@ -5070,7 +5065,8 @@ static void rnd_config_scale_uint(FB_SCALE_UINT *x)
     { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nNumerator = (uint32_t)v[rnd() % 7u]; }
     { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nDenominator = (uint32_t)v[rnd() % 7u]; }
     { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nOffset = (uint32_t)v[rnd() % 7u]; }
-    x->dwOptions = rnd_options();
+    { static const uint32_t o[] = {(uint32_t)SL_OPT_SCALE_DIVISION_FIRST, (uint32_t)SL_OPT_EDM1, (uint32_t)SL_OPT_EDM2, (uint32_t)SL_OPT_SAFE_INPUTS_AFTER_DISC, (uint32_t)SL_OPT_MANUAL_RESTART, (uint32_t)SL_OPT_FUNCTION_TEST};
+      x->dwOptions = rnd_options(o, 6u); }
     { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nRounding = (uint16_t)v[rnd() % 7u]; }
     x->wInputActive = (uint16_t)(rnd() & 0x100u);
     x->wInputNegated = (uint16_t)(rnd() % 2u == 0u ? 0u : (rnd() & 0x100u));
@@ -5170,7 +5166,8 @@ static void rnd_config_scale_dint(FB_SCALE_DINT *x)
     { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nNumerator = (int32_t)v[rnd() % 7u]; }
     { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nDenominator = (int32_t)v[rnd() % 7u]; }
     { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nOffset = (int32_t)v[rnd() % 7u]; }
-    x->dwOptions = rnd_options();
+    { static const uint32_t o[] = {(uint32_t)SL_OPT_SCALE_DIVISION_FIRST, (uint32_t)SL_OPT_EDM1, (uint32_t)SL_OPT_EDM2, (uint32_t)SL_OPT_SAFE_INPUTS_AFTER_DISC, (uint32_t)SL_OPT_MANUAL_RESTART, (uint32_t)SL_OPT_FUNCTION_TEST};
+      x->dwOptions = rnd_options(o, 6u); }
     { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nRounding = (uint16_t)v[rnd() % 7u]; }
     x->wInputActive = (uint16_t)(rnd() & 0x100u);
     x->wInputNegated = (uint16_t)(rnd() % 2u == 0u ? 0u : (rnd() & 0x100u));
@@ -5270,7 +5267,8 @@ static void rnd_config_scale_udint(FB_SCALE_UDINT *x)
     { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nNumerator = (uint32_t)v[rnd() % 7u]; }
     { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nDenominator = (uint32_t)v[rnd() % 7u]; }
     { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nOffset = (uint32_t)v[rnd() % 7u]; }
-    x->dwOptions = rnd_options();
+    { static const uint32_t o[] = {(uint32_t)SL_OPT_SCALE_DIVISION_FIRST, (uint32_t)SL_OPT_EDM1, (uint32_t)SL_OPT_EDM2, (uint32_t)SL_OPT_SAFE_INPUTS_AFTER_DISC, (uint32_t)SL_OPT_MANUAL_RESTART, (uint32_t)SL_OPT_FUNCTION_TEST};
+      x->dwOptions = rnd_options(o, 6u); }
     { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nRounding = (uint16_t)v[rnd() % 7u]; }
     x->wInputActive = (uint16_t)(rnd() & 0x100u);
     x->wInputNegated = (uint16_t)(rnd() % 2u == 0u ? 0u : (rnd() & 0x100u));
@@ -5367,7 +5365,8 @@ static void rnd_config_speed_int(FB_SPEED_INT *x)
 {
     { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nPosition = (int16_t)v[rnd() % 7u]; }
     x->tTimeInterval = rnd_time();
-    x->dwOptions = rnd_options();
+    { static const uint32_t o[] = {(uint32_t)SL_OPT_SPEED_OVERFLOW_CHECK, (uint32_t)SL_OPT_EDM1, (uint32_t)SL_OPT_EDM2, (uint32_t)SL_OPT_SAFE_INPUTS_AFTER_DISC, (uint32_t)SL_OPT_MANUAL_RESTART, (uint32_t)SL_OPT_FUNCTION_TEST};
+      x->dwOptions = rnd_options(o, 6u); }
     x->wInputActive = (uint16_t)(rnd() & 0x100u);
 }
 /* 1: a valid configuration (want_valid) or an invalid one was drawn into a and b */
@@ -5457,7 +5456,8 @@ static void rnd_config_speed_uint(FB_SPEED_UINT *x)
 {
     { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nPosition = (uint16_t)v[rnd() % 7u]; }
     x->tTimeInterval = rnd_time();
-    x->dwOptions = rnd_options();
+    { static const uint32_t o[] = {(uint32_t)SL_OPT_SPEED_OVERFLOW_CHECK, (uint32_t)SL_OPT_EDM1, (uint32_t)SL_OPT_EDM2, (uint32_t)SL_OPT_SAFE_INPUTS_AFTER_DISC, (uint32_t)SL_OPT_MANUAL_RESTART, (uint32_t)SL_OPT_FUNCTION_TEST};
+      x->dwOptions = rnd_options(o, 6u); }
     x->wInputActive = (uint16_t)(rnd() & 0x100u);
 }
 /* 1: a valid configuration (want_valid) or an invalid one was drawn into a and b */
@@ -5547,7 +5547,8 @@ static void rnd_config_speed_dint(FB_SPEED_DINT *x)
 {
     { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nPosition = (int32_t)v[rnd() % 7u]; }
     x->tTimeInterval = rnd_time();
-    x->dwOptions = rnd_options();
+    { static const uint32_t o[] = {(uint32_t)SL_OPT_SPEED_OVERFLOW_CHECK, (uint32_t)SL_OPT_EDM1, (uint32_t)SL_OPT_EDM2, (uint32_t)SL_OPT_SAFE_INPUTS_AFTER_DISC, (uint32_t)SL_OPT_MANUAL_RESTART, (uint32_t)SL_OPT_FUNCTION_TEST};
+      x->dwOptions = rnd_options(o, 6u); }
     x->wInputActive = (uint16_t)(rnd() & 0x100u);
 }
 /* 1: a valid configuration (want_valid) or an invalid one was drawn into a and b */
@@ -5637,7 +5638,8 @@ static void rnd_config_speed_udint(FB_SPEED_UDINT *x)
 {
     { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nPosition = (uint32_t)v[rnd() % 7u]; }
     x->tTimeInterval = rnd_time();
-    x->dwOptions = rnd_options();
+    { static const uint32_t o[] = {(uint32_t)SL_OPT_SPEED_OVERFLOW_CHECK, (uint32_t)SL_OPT_EDM1, (uint32_t)SL_OPT_EDM2, (uint32_t)SL_OPT_SAFE_INPUTS_AFTER_DISC, (uint32_t)SL_OPT_MANUAL_RESTART, (uint32_t)SL_OPT_FUNCTION_TEST};
+      x->dwOptions = rnd_options(o, 6u); }
     x->wInputActive = (uint16_t)(rnd() & 0x100u);
 }
 /* 1: a valid configuration (want_valid) or an invalid one was drawn into a and b */
@@ -5727,7 +5729,8 @@ static void rnd_config_loadsensing_int(FB_LOADSENSING_INT *x)
 {
     { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nAnalogInX = (int16_t)v[rnd() % 7u]; }
     { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nAnalogInY = (int16_t)v[rnd() % 7u]; }
-    x->dwOptions = rnd_options();
+    { static const uint32_t o[] = {(uint32_t)SL_OPT_LOADSENSING_OUTSIDE, (uint32_t)SL_OPT_EDM1, (uint32_t)SL_OPT_EDM2, (uint32_t)SL_OPT_SAFE_INPUTS_AFTER_DISC, (uint32_t)SL_OPT_MANUAL_RESTART, (uint32_t)SL_OPT_FUNCTION_TEST};
+      x->dwOptions = rnd_options(o, 6u); }
     { int i; for (i = 0; i < 25; i++) x->aRow[i].nX = (int16_t)(4u * (unsigned)i + rnd() % 4u); }
     { int i; for (i = 0; i < 25; i++) x->aRow[i].nY1 = (int16_t)(4u * (unsigned)i + rnd() % 4u); }
     { int i; for (i = 0; i < 25; i++) x->aRow[i].nY2 = (int16_t)(4u * (unsigned)i + rnd() % 4u); }
@@ -5827,7 +5830,8 @@ static void rnd_config_loadsensing_uint(FB_LOADSENSING_UINT *x)
 {
     { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nAnalogInX = (uint16_t)v[rnd() % 7u]; }
     { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nAnalogInY = (uint16_t)v[rnd() % 7u]; }
-    x->dwOptions = rnd_options();
+    { static const uint32_t o[] = {(uint32_t)SL_OPT_LOADSENSING_OUTSIDE, (uint32_t)SL_OPT_EDM1, (uint32_t)SL_OPT_EDM2, (uint32_t)SL_OPT_SAFE_INPUTS_AFTER_DISC, (uint32_t)SL_OPT_MANUAL_RESTART, (uint32_t)SL_OPT_FUNCTION_TEST};
+      x->dwOptions = rnd_options(o, 6u); }
     { int i; for (i = 0; i < 25; i++) x->aRow[i].nX = (uint16_t)(4u * (unsigned)i + rnd() % 4u); }
     { int i; for (i = 0; i < 25; i++) x->aRow[i].nY1 = (uint16_t)(4u * (unsigned)i + rnd() % 4u); }
     { int i; for (i = 0; i < 25; i++) x->aRow[i].nY2 = (uint16_t)(4u * (unsigned)i + rnd() % 4u); }
@@ -5927,7 +5931,8 @@ static void rnd_config_loadsensing_dint(FB_LOADSENSING_DINT *x)
 {
     { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nAnalogInX = (int32_t)v[rnd() % 7u]; }
     { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nAnalogInY = (int32_t)v[rnd() % 7u]; }
-    x->dwOptions = rnd_options();
+    { static const uint32_t o[] = {(uint32_t)SL_OPT_LOADSENSING_OUTSIDE, (uint32_t)SL_OPT_EDM1, (uint32_t)SL_OPT_EDM2, (uint32_t)SL_OPT_SAFE_INPUTS_AFTER_DISC, (uint32_t)SL_OPT_MANUAL_RESTART, (uint32_t)SL_OPT_FUNCTION_TEST};
+      x->dwOptions = rnd_options(o, 6u); }
     { int i; for (i = 0; i < 25; i++) x->aRow[i].nX = (int32_t)(4u * (unsigned)i + rnd() % 4u); }
     { int i; for (i = 0; i < 25; i++) x->aRow[i].nY1 = (int32_t)(4u * (unsigned)i + rnd() % 4u); }
     { int i; for (i = 0; i < 25; i++) x->aRow[i].nY2 = (int32_t)(4u * (unsigned)i + rnd() % 4u); }
@@ -6027,7 +6032,8 @@ static void rnd_config_loadsensing_udint(FB_LOADSENSING_UDINT *x)
 {
     { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nAnalogInX = (uint32_t)v[rnd() % 7u]; }
     { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nAnalogInY = (uint32_t)v[rnd() % 7u]; }
-    x->dwOptions = rnd_options();
+    { static const uint32_t o[] = {(uint32_t)SL_OPT_LOADSENSING_OUTSIDE, (uint32_t)SL_OPT_EDM1, (uint32_t)SL_OPT_EDM2, (uint32_t)SL_OPT_SAFE_INPUTS_AFTER_DISC, (uint32_t)SL_OPT_MANUAL_RESTART, (uint32_t)SL_OPT_FUNCTION_TEST};
+      x->dwOptions = rnd_options(o, 6u); }
     { int i; for (i = 0; i < 25; i++) x->aRow[i].nX = (uint32_t)(4u * (unsigned)i + rnd() % 4u); }
     { int i; for (i = 0; i < 25; i++) x->aRow[i].nY1 = (uint32_t)(4u * (unsigned)i + rnd() % 4u); }
     { int i; for (i = 0; i < 25; i++) x->aRow[i].nY2 = (uint32_t)(4u * (unsigned)i + rnd() % 4u); }
@@ -7256,7 +7262,8 @@ static void rnd_config_sli2_int(FB_SLI2_INT *x)
     { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nPosition = (int16_t)v[rnd() % 7u]; }
     { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nLimitPos = (uint32_t)v[rnd() % 7u]; }
     { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nLimitNeg = (uint32_t)v[rnd() % 7u]; }
-    x->dwOptions = rnd_options();
+    { static const uint32_t o[] = {(uint32_t)SL_OPT_SLI2_OVERFLOW_ALLOWED, (uint32_t)SL_OPT_SLI2_EXCEEDED_SUPPORT, (uint32_t)SL_OPT_EDM1, (uint32_t)SL_OPT_EDM2, (uint32_t)SL_OPT_SAFE_INPUTS_AFTER_DISC, (uint32_t)SL_OPT_MANUAL_RESTART, (uint32_t)SL_OPT_FUNCTION_TEST};
+      x->dwOptions = rnd_options(o, 7u); }
     x->wInputActive = (uint16_t)(rnd() & 0x101u);
 }
 /* 1: a valid configuration (want_valid) or an invalid one was drawn into a and b */
@@ -7350,7 +7357,8 @@ static void rnd_config_sli2_uint(FB_SLI2_UINT *x)
     { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nPosition = (uint16_t)v[rnd() % 7u]; }
     { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nLimitPos = (uint32_t)v[rnd() % 7u]; }
     { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nLimitNeg = (uint32_t)v[rnd() % 7u]; }
-    x->dwOptions = rnd_options();
+    { static const uint32_t o[] = {(uint32_t)SL_OPT_SLI2_OVERFLOW_ALLOWED, (uint32_t)SL_OPT_SLI2_EXCEEDED_SUPPORT, (uint32_t)SL_OPT_EDM1, (uint32_t)SL_OPT_EDM2, (uint32_t)SL_OPT_SAFE_INPUTS_AFTER_DISC, (uint32_t)SL_OPT_MANUAL_RESTART, (uint32_t)SL_OPT_FUNCTION_TEST};
+      x->dwOptions = rnd_options(o, 7u); }
     x->wInputActive = (uint16_t)(rnd() & 0x101u);
 }
 /* 1: a valid configuration (want_valid) or an invalid one was drawn into a and b */
@@ -7444,7 +7452,8 @@ static void rnd_config_sli2_dint(FB_SLI2_DINT *x)
     { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nPosition = (int32_t)v[rnd() % 7u]; }
     { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nLimitPos = (uint32_t)v[rnd() % 7u]; }
     { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nLimitNeg = (uint32_t)v[rnd() % 7u]; }
-    x->dwOptions = rnd_options();
+    { static const uint32_t o[] = {(uint32_t)SL_OPT_SLI2_OVERFLOW_ALLOWED, (uint32_t)SL_OPT_SLI2_EXCEEDED_SUPPORT, (uint32_t)SL_OPT_EDM1, (uint32_t)SL_OPT_EDM2, (uint32_t)SL_OPT_SAFE_INPUTS_AFTER_DISC, (uint32_t)SL_OPT_MANUAL_RESTART, (uint32_t)SL_OPT_FUNCTION_TEST};
+      x->dwOptions = rnd_options(o, 7u); }
     x->wInputActive = (uint16_t)(rnd() & 0x101u);
 }
 /* 1: a valid configuration (want_valid) or an invalid one was drawn into a and b */
@@ -7538,7 +7547,8 @@ static void rnd_config_sli2_udint(FB_SLI2_UDINT *x)
     { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nPosition = (uint32_t)v[rnd() % 7u]; }
     { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nLimitPos = (uint32_t)v[rnd() % 7u]; }
     { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nLimitNeg = (uint32_t)v[rnd() % 7u]; }
-    x->dwOptions = rnd_options();
+    { static const uint32_t o[] = {(uint32_t)SL_OPT_SLI2_OVERFLOW_ALLOWED, (uint32_t)SL_OPT_SLI2_EXCEEDED_SUPPORT, (uint32_t)SL_OPT_EDM1, (uint32_t)SL_OPT_EDM2, (uint32_t)SL_OPT_SAFE_INPUTS_AFTER_DISC, (uint32_t)SL_OPT_MANUAL_RESTART, (uint32_t)SL_OPT_FUNCTION_TEST};
+      x->dwOptions = rnd_options(o, 7u); }
     x->wInputActive = (uint16_t)(rnd() & 0x101u);
 }
 /* 1: a valid configuration (want_valid) or an invalid one was drawn into a and b */
@@ -7831,8 +7841,9 @@ static void rnd_config_slp(FB_SLP *x)
     { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nMultiturnPosULFix = (int32_t)v[rnd() % 7u]; }
     { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nSingleturnPosLLFix = (uint32_t)v[rnd() % 7u]; }
     { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nMultiturnPosLLFix = (int32_t)v[rnd() % 7u]; }
-    x->dwOptions = rnd_options();
-    x->wInputActive = (uint16_t)(rnd() & 0x1u);
+    { static const uint32_t o[] = {(uint32_t)SL_OPT_SLP_SINGLETURN, (uint32_t)SL_OPT_EDM1, (uint32_t)SL_OPT_EDM2, (uint32_t)SL_OPT_SAFE_INPUTS_AFTER_DISC, (uint32_t)SL_OPT_MANUAL_RESTART, (uint32_t)SL_OPT_FUNCTION_TEST};
+      x->dwOptions = rnd_options(o, 6u); }
+    x->wInputActive = (uint16_t)(rnd() & 0x3F01u);
 }
 /* 1: a valid configuration (want_valid) or an invalid one was drawn into a and b */
 static int draw_slp(FB_SLP *a, FB_SLP *b, int want_valid)
@@ -7904,8 +7915,8 @@ static void test_slp(void)
             a.bSafePosValid = b.bSafePosValid = next_signal(a.bSafePosValid, 0, pol >> 0);
             a.bErrAck = b.bErrAck = next_signal(a.bErrAck, 1, pol >> 1);
             a.bRun = b.bRun = (uint8_t)(k >= 2 && rnd() % 100u != 0u);
-            if (valid && k == bump) { a.nSingleturnPos++; b.nSingleturnPos++; } /* changed while running: ERROR */
-            if (valid && k == bump + 2) { a.nSingleturnPos--; b.nSingleturnPos--; } /* restored */
+            if (valid && k == bump) { a.nSingleturnPosULFix++; b.nSingleturnPosULFix++; } /* changed while running: ERROR */
+            if (valid && k == bump + 2) { a.nSingleturnPosULFix--; b.nSingleturnPosULFix--; } /* restored */
             p.pFb = &a;
             p.tNow = t += 10u;
             cds_sl_slp_cycle(&p);
@@ -7932,12 +7943,12 @@ static void rnd_config_sbt(FB_SBT *x)
     { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nSingleturnPos = (uint32_t)v[rnd() % 7u]; }
     { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nActCurrentIq = (int32_t)v[rnd() % 7u]; }
     { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nMinCurrentIq = (int32_t)v[rnd() % 7u]; }
-    x->tBrakeTestInterval = rnd_time();
-    x->tMinDuration = rnd_time();
-    x->tMaxDuration = rnd_time();
+    x->tBrakeTestInterval = 1000u * (rnd() % 4u);
+    x->tMinDuration = 100u * (rnd() % 4u);
+    x->tMaxDuration = 100u * (rnd() % 4u);
     { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nMaxPositionDeviation = (uint32_t)v[rnd() % 7u]; }
     { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nMinCurrentIqFix = (int32_t)v[rnd() % 7u]; }
-    x->wInputActive = (uint16_t)(rnd() & 0x3u);
+    x->wInputActive = (uint16_t)(rnd() & 0x703u);
 }
 /* 1: a valid configuration (want_valid) or an invalid one was drawn into a and b */
 static int draw_sbt(FB_SBT *a, FB_SBT *b, int want_valid)

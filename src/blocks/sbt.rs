@@ -109,12 +109,12 @@ pub struct FB_SBT {
     pub bErrAck: SL_BOOL,
     /// Offset 18. Reserved, keep 0.
     pub aReserved1: [u8; 6],
-    /// Offset 24. SingleturnPos: the current safe position (bit 8, required).
+    /// Offset 24. SingleturnPos: the current safe position (active bit 8, required).
     pub nSingleturnPos: u32,
-    /// Offset 28. ActCurrentIq: the torque-forming current of the axis (bit 9, required).
+    /// Offset 28. ActCurrentIq: the torque-forming current of the axis (active bit 9, required).
     pub nActCurrentIq: i32,
     /// Offset 32. MinCurrentIq: the current of the minimum required torque, used while
-    /// bit 10 is set.
+    /// active bit 10 is set.
     pub nMinCurrentIq: i32,
     /// Offset 36. "BrakeTestInterval" in ms: 1000 to 4,294,967,000, a multiple of 1000.
     pub tBrakeTestInterval: u32,

@@ -91,17 +91,17 @@ pub struct FB_SLP {
     pub bErrAck: SL_BOOL,
     /// Offset 18. Reserved, keep 0.
     pub aReserved1: [u8; 6],
-    /// Offset 24. SingleturnPos: the current single-turn position (bit 8, required).
+    /// Offset 24. SingleturnPos: the current single-turn position (active bit 8, required).
     pub nSingleturnPos: u32,
-    /// Offset 28. MultiturnPos: the current multi-turn position (bit 9).
+    /// Offset 28. MultiturnPos: the current multi-turn position (active bit 9).
     pub nMultiturnPos: i32,
-    /// Offset 32. SingleturnPosUL: upper limit, single-turn part (bit 10 = UL_Active).
+    /// Offset 32. SingleturnPosUL: upper limit, single-turn part (active bit 10 = UL_Active).
     pub nSingleturnPosUL: u32,
-    /// Offset 36. MultiturnPosUL: upper limit, multi-turn part (bit 11 = bit 10).
+    /// Offset 36. MultiturnPosUL: upper limit, multi-turn part (active bit 11 = bit 10).
     pub nMultiturnPosUL: i32,
-    /// Offset 40. SingleturnPosLL: lower limit, single-turn part (bit 12 = LL_Active).
+    /// Offset 40. SingleturnPosLL: lower limit, single-turn part (active bit 12 = LL_Active).
     pub nSingleturnPosLL: u32,
-    /// Offset 44. MultiturnPosLL: lower limit, multi-turn part (bit 13 = bit 12).
+    /// Offset 44. MultiturnPosLL: lower limit, multi-turn part (active bit 13 = bit 12).
     pub nMultiturnPosLL: i32,
     /// Offset 48. Parameter "SingleTurn Pos UL" (upper limit while bit 10 is clear).
     pub nSingleturnPosULFix: u32,
