@@ -31,6 +31,10 @@ Every failure names the source, the block/struct and the field. Last line: "N pa
 from __future__ import annotations
 
 import argparse
+import hashlib
+import multiprocessing
+import os
+import pickle
 import re
 import sys
 import tempfile
@@ -38,6 +42,7 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Dict, List, Optional, Tuple
 
+import blark
 from blark import parse as bparse
 from blark import transform as tf
 
@@ -136,22 +141,102 @@ def spec_type(init) -> Tuple[str, Optional[int]]:
     return text, None
 
 
-def parse_file(path: Path, text_override: Optional[str] = None):
-    """blark parse results for a file; the IEC file is parsed through a temp copy when
-    text_override is given (see substitution note in main)."""
-    target = path
-    tmp = None
-    if text_override is not None:
-        tmp = tempfile.NamedTemporaryFile("w", suffix=path.suffix, delete=False, encoding="utf-8")
-        tmp.write(text_override)
+# The big single-file flavours (one file with every block, ~1 MB) take blark minutes as a whole,
+# and their top-level units (TYPE, FUNCTION_BLOCK, FUNCTION, METHOD, INTERFACE, PROGRAM,
+# VAR_GLOBAL) are independent: each unit is parsed on its own, on every CPU, and each parse
+# result is cached under build/plc-check/blark-cache by the unit's text, so the synthetic pass
+# (step 8) parses only what FB_SYNTH changed. A unit that does not parse is a failure, as a
+# file that does not parse was.
+UNIT_END = {
+    "TYPE": "END_TYPE", "FUNCTION_BLOCK": "END_FUNCTION_BLOCK", "FUNCTION": "END_FUNCTION",
+    "METHOD": "END_METHOD", "INTERFACE": "END_INTERFACE", "PROGRAM": "END_PROGRAM",
+    "VAR_GLOBAL": "END_VAR",
+}
+UNIT_START = re.compile(r"^(FUNCTION_BLOCK|FUNCTION|TYPE|METHOD|INTERFACE|PROGRAM|VAR_GLOBAL)\b")
+CACHE = ROOT / "build" / "plc-check" / "blark-cache"
+
+
+def split_units(text: str) -> List[Tuple[int, str]]:
+    """(first line, text) of each top-level unit, with the comments and pragmas before it;
+    trailing text after the last unit is its own piece."""
+    pieces: List[Tuple[int, str]] = []
+    cur: List[str] = []
+    first = 1
+    end: Optional[str] = None
+    for no, line in enumerate(text.splitlines(keepends=True), 1):
+        if not cur:
+            first = no
+        cur.append(line)
+        if end is None:
+            m = UNIT_START.match(line)
+            if m:
+                end = UNIT_END[m.group(1)]
+        elif re.match(rf"^{end}\b", line):
+            pieces.append((first, "".join(cur)))
+            cur, end = [], None
+    if cur and "".join(cur).strip():
+        pieces.append((first, "".join(cur)))
+    return pieces
+
+
+def extract(job: Tuple[str, str, Optional[str]]) -> dict:
+    """Parses one file (path) or one unit (text given, parsed through a temp file with the
+    path's suffix) and returns plain data: DUTs, FB interfaces and bodies, parse errors."""
+    label, path, text = job
+    # The result depends only on the parsed text and the file's name and suffix.
+    content = text if text is not None else Path(path).read_text(encoding="utf-8")
+    key = hashlib.sha256(
+        "\0".join((blark.__version__, Path(path).name, content)).encode()
+    ).hexdigest()
+    hit = CACHE / f"{key}.pickle"
+    if hit.is_file():
+        return pickle.loads(hit.read_bytes())
+    target, tmp = path, None
+    if text is not None:
+        tmp = tempfile.NamedTemporaryFile("w", suffix=Path(path).suffix, delete=False, encoding="utf-8")
+        tmp.write(text)
         tmp.close()
-        target = Path(tmp.name)
+        target = tmp.name
+    out: dict = {"errors": [], "duts": {}, "fbs": {}, "bodies": {}}
     try:
-        results = list(bparse.parse(str(target)))
+        for res in bparse.parse(str(target)):
+            if res.exception is not None:
+                out["errors"].append(f"blark could not parse {label} ({res.identifier}): {res.exception}")
+                continue
+            code = res.transform()
+            for it in getattr(code, "items", []):
+                if isinstance(it, tf.DataTypeDeclaration):
+                    d = it.declaration
+                    if isinstance(d, tf.StructureTypeDeclaration):
+                        members = []
+                        for el in d.declarations:
+                            tname, count = spec_type(el.init)
+                            for v in el.variables:
+                                members.append(StMember(str(v.name), tname, count))
+                        out["duts"][str(d.name)] = members
+                elif isinstance(it, tf.FunctionBlock):
+                    blocks: Dict[str, List[Tuple[str, str, Optional[int]]]] = {}
+                    for decl in it.declarations:
+                        hdr = str(getattr(decl, "block_header", type(decl).__name__)).split()[0]
+                        lst = blocks.setdefault(hdr, [])
+                        for item in getattr(decl, "items", []):
+                            tname, count = spec_type(item.init)
+                            for v in item.variables:
+                                lst.append((str(getattr(v, "name", v)), tname, count))
+                    out["fbs"][str(it.name)] = blocks
+                    body = getattr(it, "body", None)
+                    if body is not None:
+                        out["bodies"][str(it.name)] = str(body)
+                elif isinstance(it, tf.StatementList):
+                    # TwinCAT XML: the implementation is a separate parse result named <POU>/implementation
+                    out["bodies"][str(res.identifier).split("/")[0]] = str(it)
     finally:
         if tmp is not None:
             Path(tmp.name).unlink()
-    return results
+    if not out["errors"]:
+        CACHE.mkdir(parents=True, exist_ok=True)
+        (CACHE / f"{key}.pickle").write_bytes(pickle.dumps(out))
+    return out
 
 
 @dataclass
@@ -165,40 +250,13 @@ class Source:
     texts: Dict[str, str]      # file text (for pragma checks)
 
 
-def collect(source: Source, results) -> None:
-    for res in results:
-        if not R.ok(res.exception is None,
-                    f"{source.label}: blark could not parse {res.filename} ({res.identifier}): {res.exception}"):
-            continue
-        code = res.transform()
-        items = getattr(code, "items", [])
-        for it in items:
-            if isinstance(it, tf.DataTypeDeclaration):
-                d = it.declaration
-                if isinstance(d, tf.StructureTypeDeclaration):
-                    members = []
-                    for el in d.declarations:
-                        tname, count = spec_type(el.init)
-                        for v in el.variables:
-                            members.append(StMember(str(v.name), tname, count))
-                    source.duts[str(d.name)] = members
-            elif isinstance(it, tf.FunctionBlock):
-                blocks: Dict[str, List[Tuple[str, str, Optional[int]]]] = {}
-                for decl in it.declarations:
-                    hdr = str(getattr(decl, "block_header", type(decl).__name__)).split()[0]
-                    lst = blocks.setdefault(hdr, [])
-                    for item in getattr(decl, "items", []):
-                        tname, count = spec_type(item.init)
-                        for v in item.variables:
-                            lst.append((str(getattr(v, "name", v)), tname, count))
-                source.fbs[str(it.name)] = blocks
-                body = getattr(it, "body", None)
-                if body is not None:
-                    source.fb_bodies[str(it.name)] = str(body)
-            elif isinstance(it, tf.StatementList):
-                # TwinCAT XML: the implementation is a separate parse result named <POU>/implementation
-                name = str(res.identifier).split("/")[0]
-                source.fb_bodies[name] = str(it)
+def collect(source: Source, parts: List[dict]) -> None:
+    for part in parts:
+        for err in part["errors"]:
+            R.ok(False, f"{source.label}: {err}")
+        source.duts.update(part["duts"])
+        source.fbs.update(part["fbs"])
+        source.fb_bodies.update(part["bodies"])
 
 
 def layout(duts: Dict[str, List[StMember]], name: str, pack: int, memo) -> Tuple[int, int, List[Tuple[str, int, int]]]:
@@ -393,29 +451,36 @@ def main() -> int:
     sources = [src for k, src in sources if k in wanted]
     R.ok(bool(tc_xml) or "twincat-xml" not in wanted, "no TwinCAT XML files found")
     nfiles = 0
-    for src in sources:
-        for path in src.files:
-            if not R.ok(path.is_file(), f"{src.label}: {path} missing"):
-                continue
-            text = path.read_text(encoding="utf-8")
-            src.texts[str(path)] = text
-            override = None
-            if src.flavour == "iec":
-                # blark 0.8.3's grammar has POINTER TO/REFERENCE TO but not the IEC ed. 3
-                # REF_TO/REF(); both occur only in function parameters and call arguments
-                # (never inside a DUT). Parse a copy with that one-to-one token substitution;
-                # the strict tree-sitter check reads the file unmodified.
-                override = re.sub(r"\bREF_TO\b", "POINTER TO", text)
-                override = re.sub(r"\bREF\(", "ADR(", override)
-            collect(src, parse_file(path, override))
-            nfiles += 1
-        check_duts(src, csizes, cmembers)
-        check_pack_pragma(src)
-        check_fbs(src, csizes, cmembers)
-        check_selftest(src, csizes, cmembers)
-        nfb = sum(1 for c in csizes if is_block(c))
-        print(f"{src.label}: {len(src.files)} file(s) parsed by blark, {len(src.duts)} DUTs, "
-              f"{nfb} block FBs checked against {len(csizes)} C structs (pack 8 and 4)")
+    with multiprocessing.Pool(os.cpu_count() or 1) as pool:
+        for src in sources:
+            jobs: List[Tuple[str, str, Optional[str]]] = []
+            for path in src.files:
+                if not R.ok(path.is_file(), f"{src.label}: {path} missing"):
+                    continue
+                text = path.read_text(encoding="utf-8")
+                src.texts[str(path)] = text
+                nfiles += 1
+                if path.suffix != ".st":
+                    jobs.append((str(path), str(path), None))
+                    continue
+                if src.flavour == "iec":
+                    # blark 0.8.3's grammar has POINTER TO/REFERENCE TO but not the IEC ed. 3
+                    # REF_TO/REF(); both occur only in function parameters and call arguments
+                    # (never inside a DUT). Parse a copy with that one-to-one token
+                    # substitution; the strict tree-sitter check reads the file unmodified.
+                    text = re.sub(r"\bREF_TO\b", "POINTER TO", text)
+                    text = re.sub(r"\bREF\(", "ADR(", text)
+                for line, unit in split_units(text):
+                    jobs.append((f"{path}:{line}", str(path), unit))
+            collect(src, pool.map(extract, jobs, chunksize=4))
+            check_duts(src, csizes, cmembers)
+            check_pack_pragma(src)
+            check_fbs(src, csizes, cmembers)
+            check_selftest(src, csizes, cmembers)
+            nfb = sum(1 for c in csizes if is_block(c))
+            print(f"{src.label}: {len(src.files)} file(s) parsed by blark ({len(jobs)} parse units), "
+                  f"{len(src.duts)} DUTs, {nfb} block FBs checked against {len(csizes)} C structs "
+                  f"(pack 8 and 4)")
     print(f"plc_layout: {nfiles} files; {R.passed} passed, {R.failed} failed")
     return 1 if R.failed else 0
 
