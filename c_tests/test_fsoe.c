@@ -46,7 +46,7 @@ static void fsoe_crc_and_codec(void)
     CHECK_INT(out.nResetCode, 4);
     CHECK_INT(sl_fsoe_frame_decode(frame, 7, 1, 0, &seq, 0, 0, &out), SL_E_LENGTH);
     CHECK_INT(sl_fsoe_frame_decode(NULL, 6, 1, 0, &seq, 0, 0, &out), SL_E_NULL);
-    CHECK(sizeof(SL_FSOE_FRAME) == 40 && sizeof(SL_FSOE_CONN) == 480, "struct sizes");
+    CHECK(sizeof(SL_FSOE_FRAME) == 40 && sizeof(SL_FSOE_CONN) == 624, "struct sizes");
     h_end();
 }
 

@@ -208,6 +208,11 @@
 #define SL_ARCH_3OO5 5
 
 /*
+ Block type tag of FB_CONNECTION_SHUTDOWN (70/71: CAMMONITOR; 72–74: SLP, SBT, ADVPOSMON).
+ */
+#define SL_TYPE_CONNECTION_SHUTDOWN 75
+
+/*
  Type tag of FB_COUNTER_INT (ABI-2 §10.6: after the ten four-variant blocks of §10.3).
  */
 #define SL_TYPE_COUNTER_INT 56
@@ -1247,6 +1252,18 @@
 #define SL_FSOE_DIAG_NOT_STARTED 15
 
 /*
+ Type tag of an FSoE connection as a group member (`SL_MEMBER.nType`): not a function
+ block, so outside the registry's block tags.
+ */
+#define SL_TYPE_FSOE_CONN 256
+
+/*
+ Largest number of FSoE connections in one group whose shutdown is wired to a
+ FB_CONNECTION_SHUTDOWN (`sl_group_add_member` refuses more with SL_E_FULL).
+ */
+#define SL_GROUP_CONN_MAX 16
+
+/*
  Link kind: BOOL output to BOOL input.
  */
 #define SL_LINK_BOOL 0
@@ -1260,6 +1277,18 @@
  Link kind: 32-bit analog output to a 32-bit analog input of the same type (DINT or UDINT).
  */
 #define SL_LINK_ANALOG32 2
+
+/*
+ Link kind (ABI-2 §10.7): bit `nSrcOffset` (byte · 8 + bit) of a connection's received
+ SafeData (`aRxSafeData`) to a BOOL input (0/1).
+ */
+#define SL_LINK_RXBIT 3
+
+/*
+ Link kind (ABI-2 §10.7): a BOOL output to bit `nDstOffset` (byte · 8 + bit) of a
+ connection's SafeData to send (`aTxSafeData`).
+ */
+#define SL_LINK_TXBIT 4
 
 /*
  Group state START (6): connections still starting up.
@@ -2022,7 +2051,12 @@ typedef struct SL_FSOE_CONN_PRIVATE {
 } SL_FSOE_CONN_PRIVATE;
 
 /*
- An FSoE connection, master or slave (ABI-2 §13.1). Size: 480 bytes.
+ An FSoE connection, master or slave (ABI-2 §13.1). Standalone it is driven by
+ `sl_fsoe_cycle` with the frames as arguments; as a member of a group (`SL_TYPE_FSOE_CONN`)
+ the group runs it with the frames of its mailbox (offsets 184–327): the caller copies the
+ received frame into `aRxFrame` / `nRxFrameLen` before the group cycle and sends
+ `aTxFrame` / `nTxFrameLen` after it (docs/semantics.md FS17).
+ Size: 624 bytes.
  */
 typedef struct SL_FSOE_CONN {
   /*
@@ -2146,7 +2180,31 @@ typedef struct SL_FSOE_CONN {
    */
   uint8_t aReserved4[4];
   /*
-   Offset 184. Private state: never write it.
+   Offset 184. Group mailbox: length of the received frame in aRxFrame (0: none this cycle).
+   */
+  uint16_t nRxFrameLen;
+  /*
+   Offset 186. Group mailbox: length of the frame in aTxFrame (0: none produced yet).
+   */
+  uint16_t nTxFrameLen;
+  /*
+   Offset 188. Group mailbox: incremented (wrapping) each time a new frame is written to aTxFrame.
+   */
+  uint16_t nTxCount;
+  /*
+   Offset 190. Reserved.
+   */
+  uint8_t aReserved5[2];
+  /*
+   Offset 192. Group mailbox: the received frame (the caller writes it).
+   */
+  uint8_t aRxFrame[68];
+  /*
+   Offset 260. Group mailbox: the last frame the connection produced (send it).
+   */
+  uint8_t aTxFrame[68];
+  /*
+   Offset 328. Private state: never write it.
    */
   struct SL_FSOE_CONN_PRIVATE stPrivate;
 } SL_FSOE_CONN;
@@ -10419,6 +10477,123 @@ typedef struct FB_ADVPOSMON {
   struct SL_ADVPOSMON_PRIVATE stPrivate;
 } FB_ADVPOSMON;
 
+/*
+ Private state of FB_CONNECTION_SHUTDOWN (40 bytes).
+ */
+typedef struct SL_CONNSHUT_PRIVATE {
+  /*
+   Common header.
+   */
+  struct SL_PRIVATE_HEADER stHeader;
+  /*
+   Start of the running discrepancy time.
+   */
+  uint32_t tDiscStart;
+  /*
+   Latched tDiscTime12 (0) and nConnectionId (1).
+   */
+  uint16_t awParam[2];
+  /*
+   Reserved.
+   */
+  uint8_t aReserved[4];
+} SL_CONNSHUT_PRIVATE;
+
+/*
+ FB CONNECTION SHUTDOWN instance (ABI-2 §11.1).
+ Size: 88 bytes.
+ */
+typedef struct FB_CONNECTION_SHUTDOWN {
+  /*
+   Offset 0. Reserved, keep 0.
+   */
+  uint8_t aReserved0[8];
+  /*
+   Offset 8. Deactivate1 (pair 1 with Deactivate2); active/negated bit 0.
+   */
+  SL_BOOL bDeactivate1;
+  /*
+   Offset 9. Deactivate2; active/negated bit 1.
+   */
+  SL_BOOL bDeactivate2;
+  /*
+   Offset 10. Reserved, keep 0.
+   */
+  uint8_t aReserved1[6];
+  /*
+   Offset 16. FbRun of the owning group.
+   */
+  SL_BOOL bRun;
+  /*
+   Offset 17. ErrAck of the owning group.
+   */
+  SL_BOOL bErrAck;
+  /*
+   Offset 18. Library extension: the connection nConnectionId is shut down (its bShutdown; the group copies it).
+   */
+  SL_BOOL bConnShutdown;
+  /*
+   Offset 19. Reserved, keep 0.
+   */
+  uint8_t aReserved2[1];
+  /*
+   Offset 20. Discrepancy time of Deactivate1/2 in ms (0 = none; both inputs active).
+   */
+  uint32_t tDiscTime12;
+  /*
+   Offset 24. Connection ID of the connection to shut down (1…65535).
+   */
+  uint16_t nConnectionId;
+  /*
+   Offset 26. Bits 0-1: DeactivateX is active (none active: only a partner shutdown).
+   */
+  uint16_t wInputActive;
+  /*
+   Offset 28. Bits 0-1: DeactivateX is a make contact (negated).
+   */
+  uint16_t wInputNegated;
+  /*
+   Offset 30. Reserved, keep 0.
+   */
+  uint8_t aReserved3[2];
+  /*
+   Offset 32 (output base + 0). TRUE in ERROR.
+   */
+  SL_BOOL bError;
+  /*
+   Offset 33 (output base + 1). TRUE in RUN: the connection is shut down.
+   */
+  SL_BOOL bDeactivated;
+  /*
+   Offset 34. Library extension: the shutdown request (SAFE/RUN with the request); the group copies it to the connection.
+   */
+  SL_BOOL bShutdownRequest;
+  /*
+   Offset 35. Reserved.
+   */
+  uint8_t aReserved4[5];
+  /*
+   Offset 40. The manual's status value (SL_STATE_*).
+   */
+  uint8_t nState;
+  /*
+   Offset 41. Reserved.
+   */
+  uint8_t aReserved5[1];
+  /*
+   Offset 42. Diagnostic bits (SL_DIAG_DISC1, library bits 13-15).
+   */
+  uint16_t nDiag;
+  /*
+   Offset 44. Reserved.
+   */
+  uint8_t aReserved6[4];
+  /*
+   Offset 48. Private state, 40 bytes: never write it.
+   */
+  struct SL_CONNSHUT_PRIVATE stPrivate;
+} FB_CONNECTION_SHUTDOWN;
+
 
 
 #ifdef __cplusplus
@@ -10502,6 +10677,10 @@ int32_t sl_group_init(struct SL_GROUP *g, struct SL_MEMBER *aMembers, uint16_t n
  table whose entries fail theirs. A block with an all-zero private state (never
  initialised) is initialised here with its type's init; initialise blocks before adding
  them to have their type checked (docs/semantics.md GR14).
+ An FSoE connection is added with `nType` = SL_TYPE_FSOE_CONN (docs/semantics.md FS17):
+ connections come before every block (SL_E_CONFIG after a block), at most
+ SL_GROUP_CONN_MAX per group (SL_E_FULL), initialised with `sl_fsoe_init` first
+ (SL_E_CONFIG otherwise; SL_E_CORRUPT when its private state fails its check).
 
  # Safety
  As for `sl_group_init`, with the same tables; `pBlock` points to a live block of type
@@ -10525,6 +10704,22 @@ int32_t sl_group_add_member(struct SL_GROUP *g, struct SL_MEMBER *aMembers, uint
  As for `sl_group_init`, with the same tables.
  */
 int32_t sl_group_add_link(struct SL_GROUP *g, struct SL_MEMBER *aMembers, struct SL_LINK *aLinks, uint16_t nSrcMember, uint16_t nSrcOffset, uint16_t nDstMember, uint16_t nDstOffset);
+
+/*
+ Links as `sl_group_add_link` with the link kind stated: SL_LINK_BOOL, SL_LINK_ANALOG16,
+ SL_LINK_ANALOG32 (both fields of that type), SL_LINK_RXBIT (bit `nSrcOffset` = byte · 8
+ + bit of connection member `nSrcMember`'s received SafeData → the BOOL input at byte
+ `nDstOffset` of member `nDstMember`) or SL_LINK_TXBIT (the BOOL output at byte
+ `nSrcOffset` of member `nSrcMember` → bit `nDstOffset` of connection member
+ `nDstMember`'s SafeData to send). A bit must lie within the connection's latched
+ SafeData length. SL_E_CONFIG for an unknown kind, a field or bit that does not fit it,
+ or a destination that is already linked; otherwise as `sl_group_add_link`
+ (docs/semantics.md FS19).
+
+ # Safety
+ As for `sl_group_init`, with the same tables.
+ */
+int32_t sl_group_add_link_kind(struct SL_GROUP *g, struct SL_MEMBER *aMembers, struct SL_LINK *aLinks, uint8_t nKind, uint16_t nSrcMember, uint16_t nSrcOffset, uint16_t nDstMember, uint16_t nDstOffset);
 
 /*
  One group cycle at `tNow`: group state, then every member in order (links first), all
@@ -10774,6 +10969,8 @@ int32_t sl_sbt_init(struct FB_SBT *fb);
 int32_t sl_sbt_cycle(struct FB_SBT *fb, uint32_t tNow);
 int32_t sl_advposmon_init(struct FB_ADVPOSMON *fb);
 int32_t sl_advposmon_cycle(struct FB_ADVPOSMON *fb, uint32_t tNow);
+int32_t sl_connection_shutdown_init(struct FB_CONNECTION_SHUTDOWN *fb);
+int32_t sl_connection_shutdown_cycle(struct FB_CONNECTION_SHUTDOWN *fb, uint32_t tNow);
 
 #ifdef __cplusplus
 }  // extern "C"
@@ -10931,8 +11128,14 @@ SL_STATIC_ASSERT(offsetof(SL_FSOE_CONN, nState) == 176, "offset of SL_FSOE_CONN.
 SL_STATIC_ASSERT(offsetof(SL_FSOE_CONN, nResetCode) == 177, "offset of SL_FSOE_CONN.nResetCode");
 SL_STATIC_ASSERT(offsetof(SL_FSOE_CONN, nDiag) == 178, "offset of SL_FSOE_CONN.nDiag");
 SL_STATIC_ASSERT(offsetof(SL_FSOE_CONN, aReserved4) == 180, "offset of SL_FSOE_CONN.aReserved4");
-SL_STATIC_ASSERT(offsetof(SL_FSOE_CONN, stPrivate) == 184, "offset of SL_FSOE_CONN.stPrivate");
-SL_STATIC_ASSERT(sizeof(SL_FSOE_CONN) == 480, "size of SL_FSOE_CONN");
+SL_STATIC_ASSERT(offsetof(SL_FSOE_CONN, nRxFrameLen) == 184, "offset of SL_FSOE_CONN.nRxFrameLen");
+SL_STATIC_ASSERT(offsetof(SL_FSOE_CONN, nTxFrameLen) == 186, "offset of SL_FSOE_CONN.nTxFrameLen");
+SL_STATIC_ASSERT(offsetof(SL_FSOE_CONN, nTxCount) == 188, "offset of SL_FSOE_CONN.nTxCount");
+SL_STATIC_ASSERT(offsetof(SL_FSOE_CONN, aReserved5) == 190, "offset of SL_FSOE_CONN.aReserved5");
+SL_STATIC_ASSERT(offsetof(SL_FSOE_CONN, aRxFrame) == 192, "offset of SL_FSOE_CONN.aRxFrame");
+SL_STATIC_ASSERT(offsetof(SL_FSOE_CONN, aTxFrame) == 260, "offset of SL_FSOE_CONN.aTxFrame");
+SL_STATIC_ASSERT(offsetof(SL_FSOE_CONN, stPrivate) == 328, "offset of SL_FSOE_CONN.stPrivate");
+SL_STATIC_ASSERT(sizeof(SL_FSOE_CONN) == 624, "size of SL_FSOE_CONN");
 SL_STATIC_ASSERT(offsetof(SL_FSOE_FRAME, nCmd) == 0, "offset of SL_FSOE_FRAME.nCmd");
 SL_STATIC_ASSERT(offsetof(SL_FSOE_FRAME, nResetCode) == 1, "offset of SL_FSOE_FRAME.nResetCode");
 SL_STATIC_ASSERT(offsetof(SL_FSOE_FRAME, nConnId) == 2, "offset of SL_FSOE_FRAME.nConnId");
@@ -12894,5 +13097,33 @@ SL_STATIC_ASSERT(offsetof(FB_ADVPOSMON, dwDiagPar2) == 56, "offset of FB_ADVPOSM
 SL_STATIC_ASSERT(offsetof(FB_ADVPOSMON, dwDiagPar3) == 60, "offset of FB_ADVPOSMON.dwDiagPar3");
 SL_STATIC_ASSERT(offsetof(FB_ADVPOSMON, stPrivate) == 64, "offset of FB_ADVPOSMON.stPrivate");
 SL_STATIC_ASSERT(sizeof(FB_ADVPOSMON) == 104, "size of FB_ADVPOSMON");
+SL_STATIC_ASSERT(offsetof(SL_CONNSHUT_PRIVATE, stHeader) == 0, "offset of SL_CONNSHUT_PRIVATE.stHeader");
+SL_STATIC_ASSERT(offsetof(SL_CONNSHUT_PRIVATE, tDiscStart) == 28, "offset of SL_CONNSHUT_PRIVATE.tDiscStart");
+SL_STATIC_ASSERT(offsetof(SL_CONNSHUT_PRIVATE, awParam) == 32, "offset of SL_CONNSHUT_PRIVATE.awParam");
+SL_STATIC_ASSERT(offsetof(SL_CONNSHUT_PRIVATE, aReserved) == 36, "offset of SL_CONNSHUT_PRIVATE.aReserved");
+SL_STATIC_ASSERT(sizeof(SL_CONNSHUT_PRIVATE) == 40, "size of SL_CONNSHUT_PRIVATE");
+SL_STATIC_ASSERT(offsetof(FB_CONNECTION_SHUTDOWN, aReserved0) == 0, "offset of FB_CONNECTION_SHUTDOWN.aReserved0");
+SL_STATIC_ASSERT(offsetof(FB_CONNECTION_SHUTDOWN, bDeactivate1) == 8, "offset of FB_CONNECTION_SHUTDOWN.bDeactivate1");
+SL_STATIC_ASSERT(offsetof(FB_CONNECTION_SHUTDOWN, bDeactivate2) == 9, "offset of FB_CONNECTION_SHUTDOWN.bDeactivate2");
+SL_STATIC_ASSERT(offsetof(FB_CONNECTION_SHUTDOWN, aReserved1) == 10, "offset of FB_CONNECTION_SHUTDOWN.aReserved1");
+SL_STATIC_ASSERT(offsetof(FB_CONNECTION_SHUTDOWN, bRun) == 16, "offset of FB_CONNECTION_SHUTDOWN.bRun");
+SL_STATIC_ASSERT(offsetof(FB_CONNECTION_SHUTDOWN, bErrAck) == 17, "offset of FB_CONNECTION_SHUTDOWN.bErrAck");
+SL_STATIC_ASSERT(offsetof(FB_CONNECTION_SHUTDOWN, bConnShutdown) == 18, "offset of FB_CONNECTION_SHUTDOWN.bConnShutdown");
+SL_STATIC_ASSERT(offsetof(FB_CONNECTION_SHUTDOWN, aReserved2) == 19, "offset of FB_CONNECTION_SHUTDOWN.aReserved2");
+SL_STATIC_ASSERT(offsetof(FB_CONNECTION_SHUTDOWN, tDiscTime12) == 20, "offset of FB_CONNECTION_SHUTDOWN.tDiscTime12");
+SL_STATIC_ASSERT(offsetof(FB_CONNECTION_SHUTDOWN, nConnectionId) == 24, "offset of FB_CONNECTION_SHUTDOWN.nConnectionId");
+SL_STATIC_ASSERT(offsetof(FB_CONNECTION_SHUTDOWN, wInputActive) == 26, "offset of FB_CONNECTION_SHUTDOWN.wInputActive");
+SL_STATIC_ASSERT(offsetof(FB_CONNECTION_SHUTDOWN, wInputNegated) == 28, "offset of FB_CONNECTION_SHUTDOWN.wInputNegated");
+SL_STATIC_ASSERT(offsetof(FB_CONNECTION_SHUTDOWN, aReserved3) == 30, "offset of FB_CONNECTION_SHUTDOWN.aReserved3");
+SL_STATIC_ASSERT(offsetof(FB_CONNECTION_SHUTDOWN, bError) == 32, "offset of FB_CONNECTION_SHUTDOWN.bError");
+SL_STATIC_ASSERT(offsetof(FB_CONNECTION_SHUTDOWN, bDeactivated) == 33, "offset of FB_CONNECTION_SHUTDOWN.bDeactivated");
+SL_STATIC_ASSERT(offsetof(FB_CONNECTION_SHUTDOWN, bShutdownRequest) == 34, "offset of FB_CONNECTION_SHUTDOWN.bShutdownRequest");
+SL_STATIC_ASSERT(offsetof(FB_CONNECTION_SHUTDOWN, aReserved4) == 35, "offset of FB_CONNECTION_SHUTDOWN.aReserved4");
+SL_STATIC_ASSERT(offsetof(FB_CONNECTION_SHUTDOWN, nState) == 40, "offset of FB_CONNECTION_SHUTDOWN.nState");
+SL_STATIC_ASSERT(offsetof(FB_CONNECTION_SHUTDOWN, aReserved5) == 41, "offset of FB_CONNECTION_SHUTDOWN.aReserved5");
+SL_STATIC_ASSERT(offsetof(FB_CONNECTION_SHUTDOWN, nDiag) == 42, "offset of FB_CONNECTION_SHUTDOWN.nDiag");
+SL_STATIC_ASSERT(offsetof(FB_CONNECTION_SHUTDOWN, aReserved6) == 44, "offset of FB_CONNECTION_SHUTDOWN.aReserved6");
+SL_STATIC_ASSERT(offsetof(FB_CONNECTION_SHUTDOWN, stPrivate) == 48, "offset of FB_CONNECTION_SHUTDOWN.stPrivate");
+SL_STATIC_ASSERT(sizeof(FB_CONNECTION_SHUTDOWN) == 88, "size of FB_CONNECTION_SHUTDOWN");
 
 #endif  /* SAFELOGIC_H */

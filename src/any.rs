@@ -7,7 +7,7 @@
 //! ([`input_bit`]): a project names the inputs it uses, the loader turns them into the
 //! masks.
 
-use crate::group::{Member, Members};
+use crate::group::{Member, Members, Ran, Wiring};
 use crate::registry::{self, BlockType, Dir, Field, Kind, Registered};
 use crate::types::Status;
 
@@ -151,8 +151,8 @@ impl Member for AnyBlock {
     fn set_param_bits(&mut self, offset: u16, bits: u32) -> bool {
         self.member_mut().set_param_bits(offset, bits)
     }
-    fn run_in_group(&mut self, run: u8, ack: u8, now: u32) -> (Status, u8) {
-        self.member_mut().run_in_group(run, ack, now)
+    fn run_in_group(&mut self, run: u8, ack: u8, now: u32, w: &mut Wiring) -> Ran {
+        self.member_mut().run_in_group(run, ack, now, w)
     }
 }
 

@@ -3,6 +3,7 @@
 //! checks NULL and alignment. Nothing else in the crate is `unsafe`.
 #![allow(unsafe_code)]
 
+use crate::fsoe::SL_TYPE_FSOE_CONN;
 use crate::group::{self, Member, Members, SL_LINK_BOOL};
 use crate::prim::envelope::{self, Block};
 use crate::prim::header::SL_PRIVATE_HEADER;
@@ -194,9 +195,9 @@ macro_rules! ffi_functions {
             }
         )*
 
-        /// The one dispatch from a block type tag to the block: every group operation on a
-        /// member goes through here.
-        fn member_dyn<'a>(ty: u16, p: *mut c_void) -> Option<&'a mut dyn Member> {
+        /// The dispatch from a block type tag to the block (`member_dyn` adds the FSoE
+        /// connection).
+        fn block_dyn<'a>(ty: u16, p: *mut c_void) -> Option<&'a mut dyn Member> {
             $(if ty == <$ty as Registered>::INFO.tag {
                 return instance(p.cast::<$ty>()).ok().map(|b| b as &mut dyn Member);
             })*
@@ -228,6 +229,17 @@ macro_rules! ffi_functions {
 
 crate::for_each_block!(ffi_functions);
 
+/// The one dispatch from a member type tag to the member: every group operation on a
+/// member goes through here.
+fn member_dyn<'a>(ty: u16, p: *mut c_void) -> Option<&'a mut dyn Member> {
+    if ty == SL_TYPE_FSOE_CONN {
+        return instance(p.cast::<SL_FSOE_CONN>())
+            .ok()
+            .map(|c| c as &mut dyn Member);
+    }
+    block_dyn(ty, p)
+}
+
 /// What the group's member checks need of a registered type.
 #[derive(Clone, Copy)]
 struct TypeLayout {
@@ -241,6 +253,18 @@ struct TypeLayout {
 }
 
 fn layout(ty: u16) -> Option<TypeLayout> {
+    if ty == SL_TYPE_FSOE_CONN {
+        // Size and alignment only: a connection is checked by its own private state
+        // (`add_connection`), never by a block header.
+        return Some(TypeLayout {
+            tag: ty,
+            size: core::mem::size_of::<SL_FSOE_CONN>(),
+            align: core::mem::align_of::<SL_FSOE_CONN>(),
+            header: 0,
+            magic: 0,
+            init: |_| SL_E_CONFIG,
+        });
+    }
     layouts().into_iter().find(|l| l.tag == ty)
 }
 
@@ -444,6 +468,30 @@ fn identify(p: *mut c_void, claimed: &TypeLayout) -> Result<bool, i32> {
     }
 }
 
+/// The checks of a connection offered as a member (docs/semantics.md FS17): connections
+/// come before every block (they run first in a group cycle), at most SL_GROUP_CONN_MAX of
+/// them; it must have been initialised (SL_E_CONFIG: init refused or never done) and pass
+/// its private state's check (SL_E_CORRUPT).
+fn check_connection(t: &CMembers, c: *mut SL_FSOE_CONN) -> Result<(), i32> {
+    let mut conns = 0u16;
+    for i in 0..usize::from(t.count) {
+        let e = t.entry(i).ok_or(SL_E_CORRUPT)?;
+        if e.nType != SL_TYPE_FSOE_CONN {
+            return Err(SL_E_CONFIG);
+        }
+        conns += 1;
+    }
+    if conns >= group::SL_GROUP_CONN_MAX {
+        return Err(SL_E_FULL);
+    }
+    let c = instance_ref(c.cast_const()).map_err(|_| SL_E_CONFIG)?;
+    match crate::fsoe::conn::integrity(c) {
+        Some(true) => Ok(()),
+        Some(false) => Err(SL_E_CORRUPT),
+        None => Err(SL_E_CONFIG),
+    }
+}
+
 /// Resets a group to power-up (STOP, or STOPERROR with bConnections) with the caller's
 /// storage for `nMemberCap` members and `nLinkCap` links. The same arrays must be passed to
 /// every later sl_group_* call. Does not modify the group's input fields. Checks before it
@@ -498,6 +546,10 @@ pub unsafe extern "C" fn sl_group_init(
 /// table whose entries fail theirs. A block with an all-zero private state (never
 /// initialised) is initialised here with its type's init; initialise blocks before adding
 /// them to have their type checked (docs/semantics.md GR14).
+/// An FSoE connection is added with `nType` = SL_TYPE_FSOE_CONN (docs/semantics.md FS17):
+/// connections come before every block (SL_E_CONFIG after a block), at most
+/// SL_GROUP_CONN_MAX per group (SL_E_FULL), initialised with `sl_fsoe_init` first
+/// (SL_E_CONFIG otherwise; SL_E_CORRUPT when its private state fails its check).
 ///
 /// # Safety
 /// As for `sl_group_init`, with the same tables; `pBlock` points to a live block of type
@@ -534,7 +586,14 @@ pub unsafe extern "C" fn sl_group_add_member(
                     return Err(SL_E_CONFIG);
                 }
             }
-            let never_initialised = identify(pBlock, &lay)?;
+            if nType == SL_TYPE_FSOE_CONN {
+                check_connection(&t, pBlock.cast::<SL_FSOE_CONN>())?;
+            }
+            let never_initialised = if nType == SL_TYPE_FSOE_CONN {
+                false
+            } else {
+                identify(pBlock, &lay)?
+            };
             // Full only now: a duplicate or foreign block is refused as such. Nothing has
             // been written so far, and no slice past the caller's `cap` entries is formed.
             if t.count >= t.cap {
@@ -629,6 +688,61 @@ pub unsafe extern "C" fn sl_group_add_link(
                 nDstMember,
                 nDstOffset,
                 nKind: kind,
+                aReserved: [0; 3],
+            };
+            Ok(group::add_link(g, &mut t, links, link))
+        };
+        run().unwrap_or_else(|e| e)
+    })
+}
+
+/// Links as `sl_group_add_link` with the link kind stated: SL_LINK_BOOL, SL_LINK_ANALOG16,
+/// SL_LINK_ANALOG32 (both fields of that type), SL_LINK_RXBIT (bit `nSrcOffset` = byte · 8
+/// + bit of connection member `nSrcMember`'s received SafeData → the BOOL input at byte
+/// `nDstOffset` of member `nDstMember`) or SL_LINK_TXBIT (the BOOL output at byte
+/// `nSrcOffset` of member `nSrcMember` → bit `nDstOffset` of connection member
+/// `nDstMember`'s SafeData to send). A bit must lie within the connection's latched
+/// SafeData length. SL_E_CONFIG for an unknown kind, a field or bit that does not fit it,
+/// or a destination that is already linked; otherwise as `sl_group_add_link`
+/// (docs/semantics.md FS19).
+///
+/// # Safety
+/// As for `sl_group_init`, with the same tables.
+#[no_mangle]
+#[allow(non_snake_case, clippy::too_many_arguments)]
+pub unsafe extern "C" fn sl_group_add_link_kind(
+    g: *mut SL_GROUP,
+    aMembers: *mut SL_MEMBER,
+    aLinks: *mut SL_LINK,
+    nKind: u8,
+    nSrcMember: u16,
+    nSrcOffset: u16,
+    nDstMember: u16,
+    nDstOffset: u16,
+) -> i32 {
+    ffi_boundary!(SL_E_INTERNAL, {
+        let run = || -> Result<i32, i32> {
+            let g_ptr = g;
+            let g = instance(g)?;
+            let mut t = member_table(g, g_ptr as usize, aMembers)?;
+            let (_, link_cap) = group::link_counts(g).ok_or(SL_E_CORRUPT)?;
+            let table = storage(aMembers, usize::from(t.cap))?;
+            let link_span = storage(aLinks, usize::from(link_cap))?;
+            tables_disjoint(g_ptr, table, Some(link_span))?;
+            for i in 0..usize::from(t.count) {
+                if !disjoint(t.span_of(i).ok_or(SL_E_CORRUPT)?, link_span) {
+                    return Err(SL_E_CONFIG);
+                }
+            }
+            // SAFETY: checked above: the caller's link table, disjoint from the group, the
+            // member table and every member.
+            let links = unsafe { slice_mut(aLinks, usize::from(link_cap)) };
+            let link = SL_LINK {
+                nSrcMember,
+                nSrcOffset,
+                nDstMember,
+                nDstOffset,
+                nKind,
                 aReserved: [0; 3],
             };
             Ok(group::add_link(g, &mut t, links, link))

@@ -38,11 +38,114 @@ pub trait Member {
     /// Writes the parameter at this byte offset; false when the block has none there.
     fn set_param_bits(&mut self, offset: u16, bits: u32) -> bool;
     /// One cycle as a member: bRun/bErrAck from the group, then the block's cycle; returns
-    /// the status and the new nState (one dynamic call instead of three).
-    fn run_in_group(&mut self, run: u8, ack: u8, now: u32) -> (Status, u8) {
+    /// the status, the new nState and, for an FSoE connection, what the group reads of it
+    /// (one dynamic call instead of several). `w` carries the FSoE wiring of the cycle
+    /// (connections seen so far, a CONNECTION SHUTDOWN block's request).
+    fn run_in_group(&mut self, run: u8, ack: u8, now: u32, w: &mut Wiring) -> Ran {
+        let _ = w;
         self.drive(run, ack);
         let status = self.execute(now);
-        (status, self.state())
+        Ran {
+            status,
+            state: self.state(),
+            conn: None,
+        }
+    }
+    /// An FSoE connection: (received, sent) SafeData bits; `None` for a block.
+    fn safe_data_bits(&self) -> Option<(u16, u16)> {
+        None
+    }
+    /// Bit `bit` of a connection's received SafeData (0/1; 0 unless the data are valid).
+    fn rx_bit(&self, bit: u16) -> Option<u8> {
+        let _ = bit;
+        None
+    }
+    /// Writes bit `bit` of a connection's SafeData to send; false for a block.
+    fn set_tx_bit(&mut self, bit: u16, value: u8) -> bool {
+        let _ = (bit, value);
+        false
+    }
+}
+
+/// What a member reports after one cycle in a group.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Ran {
+    /// The cycle's status.
+    pub status: Status,
+    /// The new nState.
+    pub state: u8,
+    /// An FSoE connection's report (`None` for a block).
+    pub conn: Option<ConnReport>,
+}
+
+/// What the group reads of an FSoE connection after its cycle.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct ConnReport {
+    /// bComErr.
+    pub com_err: bool,
+    /// bComStartup.
+    pub startup: bool,
+    /// bShutdown (105/106 until DATA again).
+    pub shutdown: bool,
+    /// The latched Connection ID.
+    pub id: u16,
+}
+
+/// Largest number of FSoE connections in one group whose shutdown is wired to a
+/// FB_CONNECTION_SHUTDOWN (`sl_group_add_member` refuses more with SL_E_FULL).
+pub const SL_GROUP_CONN_MAX: u16 = 16;
+
+/// The FSoE wiring of one group cycle (ABI-2 §13.5): the connections that ran so far
+/// (member index, Connection ID, bShutdown) and the request of the CONNECTION SHUTDOWN block
+/// that just ran, which the group copies to the connection(s) with its Connection ID.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct Wiring {
+    conns: [(u16, u16, bool); SL_GROUP_CONN_MAX as usize],
+    n: usize,
+    request: Option<(u16, u8)>,
+}
+
+impl Wiring {
+    /// Records (or updates) connection member `index`.
+    pub fn connection(&mut self, index: u16, r: &ConnReport) {
+        let entry = (index, r.id, r.shutdown);
+        if let Some(e) = self.conns[..self.n].iter_mut().find(|e| e.0 == index) {
+            *e = entry;
+        } else if let Some(e) = self.conns.get_mut(self.n) {
+            *e = entry;
+            self.n += 1;
+        }
+    }
+    /// bShutdown of the connection(s) with Connection ID `id` (FALSE when none ran yet).
+    pub fn conn_shutdown(&self, id: u16) -> u8 {
+        u8::from(self.conns[..self.n].iter().any(|e| e.1 == id && e.2))
+    }
+    /// A CONNECTION SHUTDOWN block's bShutdownRequest for Connection ID `id`.
+    pub fn request(&mut self, id: u16, value: u8) {
+        self.request = Some((id, value));
+    }
+    /// The pending request with the member indices of its connections.
+    fn take_request(&mut self) -> Option<(u8, [u16; SL_GROUP_CONN_MAX as usize], usize)> {
+        let (id, v) = self.request.take()?;
+        let mut idx = [0u16; SL_GROUP_CONN_MAX as usize];
+        let mut k = 0;
+        for e in self.conns[..self.n].iter().filter(|e| e.1 == id) {
+            idx[k] = e.0;
+            k += 1;
+        }
+        Some((v, idx, k))
+    }
+}
+
+/// Copies a pending CONNECTION SHUTDOWN request to its connection(s): their
+/// bShutdownRequest input (acted on in their next cycle).
+fn apply_request<M: Members + ?Sized>(m: &mut M, w: &mut Wiring) {
+    if let Some((v, idx, k)) = w.take_request() {
+        for &i in &idx[..k] {
+            m.with(usize::from(i), |b| {
+                b.set_input_bits(crate::fsoe::member::OFFSET_SHUTDOWN_REQUEST, u32::from(v))
+            });
+        }
     }
 }
 
@@ -158,6 +261,31 @@ macro_rules! impl_member {
                 })*
                 false
             }
+            fn run_in_group(
+                &mut self,
+                run: u8,
+                ack: u8,
+                now: u32,
+                w: &mut $crate::group::Wiring,
+            ) -> $crate::group::Ran {
+                // FB_CONNECTION_SHUTDOWN is wired to its connection by Connection ID (ABI-2
+                // §13.5); the test is a constant for every other type.
+                let shut = <Self as $crate::registry::Registered>::INFO.tag
+                    == $crate::blocks::connshutdown::SL_TYPE_CONNECTION_SHUTDOWN;
+                if shut {
+                    $crate::blocks::connshutdown::before_cycle(self, w);
+                }
+                self.drive(run, ack);
+                let status = $crate::group::Member::execute(self, now);
+                if shut {
+                    $crate::blocks::connshutdown::after_cycle(self, w);
+                }
+                $crate::group::Ran {
+                    status,
+                    state: self.nState,
+                    conn: None,
+                }
+            }
         }
     };
     (@read $s:ident, $offset:ident, $($f:ident),*) => {{
@@ -182,6 +310,13 @@ pub const SL_LINK_BOOL: u8 = 0;
 pub const SL_LINK_ANALOG16: u8 = 1;
 /// Link kind: 32-bit analog output to a 32-bit analog input of the same type (DINT or UDINT).
 pub const SL_LINK_ANALOG32: u8 = 2;
+
+/// Link kind (ABI-2 §10.7): bit `nSrcOffset` (byte · 8 + bit) of a connection's received
+/// SafeData (`aRxSafeData`) to a BOOL input (0/1).
+pub const SL_LINK_RXBIT: u8 = 3;
+/// Link kind (ABI-2 §10.7): a BOOL output to bit `nDstOffset` (byte · 8 + bit) of a
+/// connection's SafeData to send (`aTxSafeData`).
+pub const SL_LINK_TXBIT: u8 = 4;
 
 /// The link kind that carries a field of this type (`None`: not linkable).
 pub fn link_kind(k: Kind) -> Option<u8> {
@@ -407,6 +542,8 @@ const F_ACK_PREV: u8 = 1 << 0;
 const F_FB: u8 = 1 << 1;
 const F_COM: u8 = 1 << 2;
 const F_MODULE: u8 = 1 << 3;
+/// A connection member reported bComStartup in the previous cycle.
+const F_CONN_STARTUP: u8 = 1 << 4;
 
 /// The group's private data, unpacked.
 #[derive(Clone, Copy, Debug, Default)]
@@ -494,7 +631,7 @@ pub fn init(g: &mut SL_GROUP, member_cap: u16, link_cap: u16) -> i32 {
         link_cap,
         ..Core::default()
     };
-    set_outputs(g, &c, false, false);
+    set_outputs(g, &c, false, false, Conns::default());
     write_info(g, &c);
     SL_OK
 }
@@ -591,14 +728,51 @@ pub fn add_link<M: Members + ?Sized>(
         })
         .flatten()
         .flatten();
-    // Same IEC type on both ends (width and signedness), carried by the stated kind.
-    let typed = match (src, dst) {
-        (Some(s), Some(d)) => s.kind == d.kind && link_kind(s.kind) == Some(link.nKind),
-        _ => false,
+    // SafeData bits (ABI-2 §10.7): the bit must lie in the connection's latched length.
+    let src_bits = in_group(link.nSrcMember)
+        .then(|| m.with(usize::from(link.nSrcMember), |b| b.safe_data_bits()))
+        .flatten()
+        .flatten();
+    let dst_bits = in_group(link.nDstMember)
+        .then(|| m.with(usize::from(link.nDstMember), |b| b.safe_data_bits()))
+        .flatten()
+        .flatten();
+    let typed = match link.nKind {
+        SL_LINK_RXBIT => {
+            let dst_bool = in_group(link.nDstMember)
+                .then(|| {
+                    m.with(usize::from(link.nDstMember), |b| {
+                        field_at(b, link.nDstOffset, Dir::Input)
+                    })
+                })
+                .flatten()
+                .flatten()
+                .is_some_and(|f| f.kind == Kind::Bool);
+            dst_bool && src_bits.is_some_and(|(rx, _)| link.nSrcOffset < rx)
+        }
+        SL_LINK_TXBIT => {
+            let src_bool = in_group(link.nSrcMember)
+                .then(|| {
+                    m.with(usize::from(link.nSrcMember), |b| {
+                        field_at(b, link.nSrcOffset, Dir::Output)
+                    })
+                })
+                .flatten()
+                .flatten()
+                .is_some_and(|f| f.kind == Kind::Bool);
+            src_bool && dst_bits.is_some_and(|(_, tx)| link.nDstOffset < tx)
+        }
+        // Same IEC type on both ends (width and signedness), carried by the stated kind.
+        _ => match (src, dst) {
+            (Some(s), Some(d)) => s.kind == d.kind && link_kind(s.kind) == Some(link.nKind),
+            _ => false,
+        },
     };
-    let taken = links[..n]
-        .iter()
-        .any(|l| l.nDstMember == link.nDstMember && l.nDstOffset == link.nDstOffset);
+    // A TXBIT destination is a bit number, every other one a byte offset.
+    let tx = |l: &SL_LINK| l.nKind == SL_LINK_TXBIT;
+    let taken = links[..n].iter().any(|l| {
+        l.nDstMember == link.nDstMember && l.nDstOffset == link.nDstOffset && tx(l) == tx(&link)
+    });
     if !typed || taken {
         return SL_E_CONFIG;
     }
@@ -613,12 +787,19 @@ pub fn add_link<M: Members + ?Sized>(
     SL_OK
 }
 
-fn set_outputs(g: &mut SL_GROUP, c: &Core, member_error: bool, all_run: bool) {
-    g.bComErr = u8::from(c.flags & F_COM != 0 || g.bComErrIn != 0);
+/// The connections' bComErr / bComStartup of this cycle (ORed into the group's).
+#[derive(Clone, Copy, Debug, Default)]
+struct Conns {
+    com_err: bool,
+    startup: bool,
+}
+
+fn set_outputs(g: &mut SL_GROUP, c: &Core, member_error: bool, all_run: bool, k: Conns) {
+    g.bComErr = u8::from(c.flags & F_COM != 0 || g.bComErrIn != 0 || k.com_err);
     g.bFbErr = u8::from(c.flags & F_FB != 0 || member_error);
     g.bOutErr = 0;
     g.bOtherErr = u8::from(c.flags & F_MODULE != 0 || g.bModuleFault != 0);
-    g.bComStartup = u8::from(g.bComStartupIn != 0);
+    g.bComStartup = u8::from(g.bComStartupIn != 0 || k.startup);
     g.bFbDeactive = 0;
     g.bInRun = u8::from(c.state == SL_STATE_RUN);
     g.bFbRun = u8::from(c.state == SL_STATE_RUN && all_run);
@@ -669,7 +850,8 @@ pub fn cycle_with<M: Members + ?Sized, L: Links + ?Sized>(
     let ack = edge(g.bErrAck, &mut c.flags, F_ACK_PREV);
     let module_fault = g.bModuleFault != 0;
     let com_err = g.bComErrIn != 0;
-    let startup = g.bComStartupIn != 0;
+    // The connections' start-up as of their last cycle (they run again below).
+    let startup = g.bComStartupIn != 0 || c.flags & F_CONN_STARTUP != 0;
     let was_error = c.state == SL_STATE_ERROR;
 
     // Transitions driven by the group's own inputs.
@@ -708,11 +890,15 @@ pub fn cycle_with<M: Members + ?Sized, L: Links + ?Sized>(
         }
     }
 
-    // The members, in order, each right after its incoming links.
+    // The members, in order, each right after its incoming links. Connections are the
+    // first members (sl_group_add_member), so their bComErr / bComStartup of this cycle
+    // reach the group before any block runs.
     let ack_level = u8::from(ack.level);
     let mut member_run = u8::from(c.state == SL_STATE_RUN);
     let mut member_error = false;
     let mut all_run = c.members > 0;
+    let mut conns = Conns::default();
+    let mut w = Wiring::default();
     let mut next_link = 0usize;
     let link_count = links.count().min(usize::from(c.links));
     for i in 0..usize::from(c.members) {
@@ -727,34 +913,57 @@ pub fn cycle_with<M: Members + ?Sized, L: Links + ?Sized>(
             if !links_intact {
                 continue;
             }
-            if let Some(Some(v)) =
-                m.with(usize::from(l.nSrcMember), |b| b.output_bits(l.nSrcOffset))
-            {
-                m.with(i, |b| b.set_input_bits(l.nDstOffset, v));
-            }
+            copy_link(m, &l, i);
         }
         let outcome = if links_intact {
-            m.with(i, |b| b.run_in_group(member_run, ack_level, now))
+            m.with(i, |b| b.run_in_group(member_run, ack_level, now, &mut w))
         } else {
-            m.with(i, |b| b.run_in_group(0, ack_level, now));
+            m.with(i, |b| b.run_in_group(0, ack_level, now, &mut w));
             None
         };
+        apply_request(m, &mut w);
         // A member that cannot be reached is a member error of the group, never a skip.
-        let (s, state) = outcome.unwrap_or((Status::Corrupt, SL_STATE_ERROR));
-        status = status.worst(s);
-        all_run &= state == SL_STATE_RUN;
-        if state == SL_STATE_ERROR {
-            member_error = true;
-            if c.state == SL_STATE_RUN || c.state == SL_GROUP_STATE_START {
-                enter_error(&mut c, F_FB, SL_GROUP_DIAG_FBERROR);
-                c.failed = i as u16;
-                member_run = 0;
-                // Members that already ran with bRun TRUE stop within this same cycle.
-                for j in 0..i {
-                    m.with(j, |b| b.run_in_group(0, ack_level, now));
+        let ran = outcome.unwrap_or(Ran {
+            status: Status::Corrupt,
+            state: SL_STATE_ERROR,
+            conn: None,
+        });
+        status = status.worst(ran.status);
+        let mut stop_earlier = false;
+        if let Some(r) = ran.conn {
+            // An FSoE connection: its errors are the group's ComErr, never a member error.
+            w.connection(i as u16, &r);
+            conns.com_err |= r.com_err;
+            conns.startup |= r.startup;
+            if r.com_err && matches!(c.state, SL_STATE_RUN | SL_GROUP_STATE_START) {
+                enter_error(&mut c, F_COM, SL_GROUP_DIAG_COMERROR);
+                stop_earlier = member_run != 0;
+            } else if r.startup && c.state == SL_STATE_RUN {
+                c.state = SL_GROUP_STATE_START;
+                stop_earlier = true;
+            }
+        } else {
+            all_run &= ran.state == SL_STATE_RUN;
+            if ran.state == SL_STATE_ERROR {
+                member_error = true;
+                if c.state == SL_STATE_RUN || c.state == SL_GROUP_STATE_START {
+                    enter_error(&mut c, F_FB, SL_GROUP_DIAG_FBERROR);
+                    c.failed = i as u16;
+                    stop_earlier = true;
                 }
             }
         }
+        if stop_earlier {
+            // Members that already ran with bRun TRUE stop within this same cycle (this
+            // one too when it is a connection: it presents no SafeData).
+            member_run = 0;
+            let last = if ran.conn.is_some() { i + 1 } else { i };
+            for j in 0..last {
+                m.with(j, |b| b.run_in_group(0, ack_level, now, &mut w));
+                apply_request(m, &mut w);
+            }
+        }
+        member_run = u8::from(c.state == SL_STATE_RUN) & member_run;
     }
 
     // A link that no member consumed (forged destination or order) was not applied: the
@@ -766,9 +975,15 @@ pub fn cycle_with<M: Members + ?Sized, L: Links + ?Sized>(
         if c.state == SL_STATE_RUN || c.state == SL_GROUP_STATE_START {
             enter_error(&mut c, F_FB, SL_GROUP_DIAG_FBERROR);
             for j in 0..usize::from(c.members) {
-                m.with(j, |b| b.run_in_group(0, ack_level, now));
+                m.with(j, |b| b.run_in_group(0, ack_level, now, &mut w));
+                apply_request(m, &mut w);
             }
         }
+    }
+    if conns.startup {
+        c.flags |= F_CONN_STARTUP;
+    } else {
+        c.flags &= !F_CONN_STARTUP;
     }
 
     // Acknowledgement, after the members saw the same ErrAck edge.
@@ -778,13 +993,37 @@ pub fn cycle_with<M: Members + ?Sized, L: Links + ?Sized>(
         && !member_error
         && !module_fault
         && !com_err
+        && !conns.com_err
     {
         c.state = SL_STATE_RESET;
         c.diag = SL_GROUP_DIAG_NONE;
         c.failed = SL_NO_MEMBER;
         c.flags &= !(F_FB | F_COM | F_MODULE);
     }
-    set_outputs(g, &c, member_error, all_run);
+    set_outputs(g, &c, member_error, all_run, conns);
     write_info(g, &c);
     status.code()
+}
+
+/// Copies one link's value to its destination, member `dst` (ABI-2 §10.7 for the bits).
+fn copy_link<M: Members + ?Sized>(m: &mut M, l: &SL_LINK, dst: usize) {
+    let src = usize::from(l.nSrcMember);
+    let (off, to) = (l.nSrcOffset, l.nDstOffset);
+    match l.nKind {
+        SL_LINK_RXBIT => {
+            if let Some(Some(v)) = m.with(src, |b| b.rx_bit(off)) {
+                m.with(dst, |b| b.set_input_bits(to, u32::from(v)));
+            }
+        }
+        SL_LINK_TXBIT => {
+            if let Some(Some(v)) = m.with(src, |b| b.output(off)) {
+                m.with(dst, |b| b.set_tx_bit(to, v));
+            }
+        }
+        _ => {
+            if let Some(Some(v)) = m.with(src, |b| b.output_bits(off)) {
+                m.with(dst, |b| b.set_input_bits(to, v));
+            }
+        }
+    }
 }

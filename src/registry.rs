@@ -334,6 +334,7 @@ macro_rules! for_each_block {
             $crate::blocks::slp::FB_SLP => sl_slp_init, sl_slp_cycle;
             $crate::blocks::sbt::FB_SBT => sl_sbt_init, sl_sbt_cycle;
             $crate::blocks::advposmon::FB_ADVPOSMON => sl_advposmon_init, sl_advposmon_cycle;
+            $crate::blocks::connshutdown::FB_CONNECTION_SHUTDOWN => sl_connection_shutdown_init, sl_connection_shutdown_cycle;
             // registry:end
         }
     };

@@ -10,6 +10,7 @@ pub mod analog;
 pub mod and;
 pub mod arith;
 pub mod compare;
+pub mod connshutdown;
 pub mod counter;
 pub mod decouple;
 pub mod edm;

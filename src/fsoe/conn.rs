@@ -123,7 +123,12 @@ impl Default for SL_FSOE_CONN_PRIVATE {
     }
 }
 
-/// An FSoE connection, master or slave (ABI-2 §13.1). Size: 480 bytes.
+/// An FSoE connection, master or slave (ABI-2 §13.1). Standalone it is driven by
+/// `sl_fsoe_cycle` with the frames as arguments; as a member of a group (`SL_TYPE_FSOE_CONN`)
+/// the group runs it with the frames of its mailbox (offsets 184–327): the caller copies the
+/// received frame into `aRxFrame` / `nRxFrameLen` before the group cycle and sends
+/// `aTxFrame` / `nTxFrameLen` after it (docs/semantics.md FS17).
+/// Size: 624 bytes.
 #[repr(C)]
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 #[allow(non_snake_case, non_camel_case_types)]
@@ -188,7 +193,19 @@ pub struct SL_FSOE_CONN {
     pub nDiag: u16,
     /// Offset 180. Reserved.
     pub aReserved4: [u8; 4],
-    /// Offset 184. Private state: never write it.
+    /// Offset 184. Group mailbox: length of the received frame in aRxFrame (0: none this cycle).
+    pub nRxFrameLen: u16,
+    /// Offset 186. Group mailbox: length of the frame in aTxFrame (0: none produced yet).
+    pub nTxFrameLen: u16,
+    /// Offset 188. Group mailbox: incremented (wrapping) each time a new frame is written to aTxFrame.
+    pub nTxCount: u16,
+    /// Offset 190. Reserved.
+    pub aReserved5: [u8; 2],
+    /// Offset 192. Group mailbox: the received frame (the caller writes it).
+    pub aRxFrame: [u8; 68],
+    /// Offset 260. Group mailbox: the last frame the connection produced (send it).
+    pub aTxFrame: [u8; 68],
+    /// Offset 328. Private state: never write it.
     pub stPrivate: SL_FSOE_CONN_PRIVATE,
 }
 
@@ -225,6 +242,12 @@ impl Default for SL_FSOE_CONN {
             nResetCode: 0,
             nDiag: 0,
             aReserved4: [0; 4],
+            nRxFrameLen: 0,
+            nTxFrameLen: 0,
+            nTxCount: 0,
+            aReserved5: [0; 2],
+            aRxFrame: [0; 68],
+            aTxFrame: [0; 68],
             stPrivate: SL_FSOE_CONN_PRIVATE::default(),
         }
     }
@@ -969,6 +992,57 @@ fn outputs(c: &mut SL_FSOE_CONN, run: bool, module: bool) {
     c.nDiag = d;
 }
 
+/// The private state's check: `None` for a connection whose init was refused or never
+/// done, `Some(false)` for one that fails its check (corrupt), `Some(true)` when intact.
+pub fn integrity(c: &SL_FSOE_CONN) -> Option<bool> {
+    let p = &c.stPrivate;
+    if p.wMagic == 0 && p.nState == 0 {
+        return None;
+    }
+    Some(
+        p.wMagic == MAGIC
+            && p.nState == !p.nStateInv
+            && p.nState == c.nState
+            && (SL_FSOE_STATE_RESET..=SL_FSOE_STATE_SHUTDOWN_DEACTIVE).contains(&p.nState)
+            && frame_len(usize::from(p.nTxLen)) != 0
+            && frame_len(usize::from(p.nRxLen)) != 0,
+    )
+}
+
+/// Latched SafeData lengths in bytes (received, sent); `None` unless intact.
+pub fn data_lens(c: &SL_FSOE_CONN) -> Option<(u8, u8)> {
+    (integrity(c) == Some(true)).then_some((c.stPrivate.nRxLen, c.stPrivate.nTxLen))
+}
+
+/// Latched Connection ID (0 unless initialised).
+pub fn conn_id(c: &SL_FSOE_CONN) -> u16 {
+    c.stPrivate.nConnId
+}
+
+/// One cycle as a group member: the received frame from the mailbox (`nRxFrameLen` > 0),
+/// a new frame into the mailbox (`aTxFrame`, `nTxFrameLen`, `nTxCount` + 1).
+/// `nRxFrameLen` above the mailbox: `Status::Length`, the frame is ignored.
+pub fn cycle_mailbox(c: &mut SL_FSOE_CONN, now: u32) -> Status {
+    let n = usize::from(c.nRxFrameLen);
+    let rx_buf = c.aRxFrame;
+    let (rx, too_long) = match n {
+        0 => (None, false),
+        n if n > rx_buf.len() => (None, true),
+        n => (Some(&rx_buf[..n]), false),
+    };
+    let mut tx = [0u8; 68];
+    let (mut status, len) = cycle(c, now, rx, &mut tx);
+    if len > 0 {
+        c.aTxFrame = tx;
+        c.nTxFrameLen = len as u16;
+        c.nTxCount = c.nTxCount.wrapping_add(1);
+    }
+    if too_long {
+        status = status.worst(Status::Length);
+    }
+    status
+}
+
 /// `sl_fsoe_cycle`: one cycle at `now` with the received frame `rx` (None: nothing new on
 /// the wire). Returns the status and the length of the frame written to `tx` (0: none).
 /// `Status::Length` when `tx` is too small (nothing done) or `rx` has the wrong length (the
@@ -976,22 +1050,17 @@ fn outputs(c: &mut SL_FSOE_CONN, run: bool, module: bool) {
 /// was neither 0 nor 1 (read as ABI-2 §13.1 says). `Status::Config` for a connection whose
 /// init was refused or never done, `Status::Corrupt` for a failed private state check.
 pub fn cycle(c: &mut SL_FSOE_CONN, now: u32, rx: Option<&[u8]>, tx: &mut [u8]) -> (Status, usize) {
+    match integrity(c) {
+        None => return (Status::Config, 0),
+        Some(false) => {
+            clear_outputs(c);
+            c.bComErr = 1;
+            c.nDiag = SL_DIAG_CORRUPT;
+            return (Status::Corrupt, 0);
+        }
+        Some(true) => {}
+    }
     let p = &c.stPrivate;
-    if p.wMagic == 0 && p.nState == 0 {
-        return (Status::Config, 0);
-    }
-    if p.wMagic != MAGIC
-        || p.nState != !p.nStateInv
-        || p.nState != c.nState
-        || !(SL_FSOE_STATE_RESET..=SL_FSOE_STATE_SHUTDOWN_DEACTIVE).contains(&p.nState)
-        || frame_len(usize::from(p.nTxLen)) == 0
-        || frame_len(usize::from(p.nRxLen)) == 0
-    {
-        clear_outputs(c);
-        c.bComErr = 1;
-        c.nDiag = SL_DIAG_CORRUPT;
-        return (Status::Corrupt, 0);
-    }
     if tx.len() < frame_len(usize::from(p.nTxLen)) {
         return (Status::Length, 0);
     }

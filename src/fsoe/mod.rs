@@ -97,3 +97,9 @@ pub const SL_FSOE_DIAG_MODULE_ERROR: u16 = 13;
 pub const SL_FSOE_DIAG_NOT_STARTED: u16 = 15;
 
 pub use frame::SL_FSOE_FRAME;
+
+pub mod member;
+
+/// Type tag of an FSoE connection as a group member (`SL_MEMBER.nType`): not a function
+/// block, so outside the registry's block tags.
+pub const SL_TYPE_FSOE_CONN: u16 = 256;
