@@ -135,8 +135,185 @@ static void fsoe_trace(void)
     h_end();
 }
 
+/* One node of the group scenario: a group with its tables, a connection and blocks. */
+typedef struct FSOE_NODE {
+    SL_GROUP g;
+    SL_MEMBER members[4];
+    SL_LINK links[8];
+    SL_FSOE_CONN c;
+    FB_ESTOP estop;
+    FB_DECOUPLE dec;
+    FB_CONNECTION_SHUTDOWN shut;
+} FSOE_NODE;
+
+static int fsoe_node_cycle(FSOE_NODE *n, uint32_t t)
+{
+    n->c.nSessionIdSeed = (uint16_t)((t * 2654435761u) >> 16) | 1u;
+    return sl_group_cycle(&n->g, n->members, n->links, t);
+}
+
+/* The black channel: one node's transmit mailbox into the other's receive mailbox. */
+static void fsoe_carry(const SL_FSOE_CONN *from, SL_FSOE_CONN *to)
+{
+    memcpy(to->aRxFrame, from->aTxFrame, sizeof to->aRxFrame);
+    to->nRxFrameLen = from->nTxFrameLen;
+}
+
+/* One bus cycle of the pair; `slave_alive` 0: the slave neither runs nor answers. */
+static void fsoe_bus(FSOE_NODE *m, FSOE_NODE *s, uint32_t t, int slave_alive)
+{
+    if (slave_alive) {
+        fsoe_carry(&s->c, &m->c);
+    }
+    CHECK_INT(fsoe_node_cycle(m, t), SL_OK);
+    if (slave_alive) {
+        fsoe_carry(&m->c, &s->c);
+        CHECK_INT(fsoe_node_cycle(s, t), SL_OK);
+    }
+}
+
+static void fsoe_group(void)
+{
+    static FSOE_NODE m;
+    static FSOE_NODE s;
+    uint16_t idx = 0;
+    uint32_t t = 0;
+    uint32_t t_kill;
+    int k;
+    h_begin("FSoE connections in groups: RXBIT/TXBIT, START, ComErr diag 2, ErrAck, "
+            "CONNECTION_SHUTDOWN (FS17-FS22, CS1-CS8)");
+    memset(&m, 0, sizeof m);
+    memset(&s, 0, sizeof s);
+    fsoe_conn_setup(&m.c, SL_FSOE_ROLE_MASTER, 1);
+    fsoe_conn_setup(&s.c, SL_FSOE_ROLE_SLAVE, 2);
+    m.c.nTxDataLen = 2;
+    m.c.nRxDataLen = 2;
+    s.c.nTxDataLen = 2;
+    s.c.nRxDataLen = 2;
+    CHECK_INT(sl_fsoe_init(&m.c), SL_OK);
+    CHECK_INT(sl_fsoe_init(&s.c), SL_OK);
+    m.estop.wInputActive = 0x3;
+    CHECK_INT(sl_estop_init(&m.estop), SL_OK);
+    m.shut.nConnectionId = 7;
+    m.shut.wInputActive = 0x1;
+    CHECK_INT(sl_connection_shutdown_init(&m.shut), SL_OK);
+    s.dec.wInputActive = 0x7;
+    CHECK_INT(sl_decouple_init(&s.dec), SL_OK);
+    CHECK_INT(sl_group_init(&m.g, m.members, 4, m.links, 8), SL_OK);
+    CHECK_INT(sl_group_init(&s.g, s.members, 4, s.links, 8), SL_OK);
+    /* Master: connection first, then the blocks. */
+    CHECK_INT(sl_group_add_member(&m.g, m.members, SL_TYPE_FSOE_CONN, &m.c, &idx), SL_OK);
+    CHECK_INT(idx, 0);
+    CHECK_INT(sl_group_add_member(&m.g, m.members, SL_TYPE_ESTOP, &m.estop, &idx), SL_OK);
+    CHECK_INT(sl_group_add_member(&m.g, m.members, SL_TYPE_CONNECTION_SHUTDOWN, &m.shut, &idx),
+              SL_OK);
+    CHECK_INT(sl_group_add_member(&m.g, m.members, SL_TYPE_FSOE_CONN, &s.c, &idx), SL_E_CONFIG);
+    CHECK_INT(sl_group_add_link_kind(&m.g, m.members, m.links, SL_LINK_RXBIT, 0, 0, 1,
+                                     (uint16_t)offsetof(FB_ESTOP, bEStopIn1)),
+              SL_OK);
+    CHECK_INT(sl_group_add_link_kind(&m.g, m.members, m.links, SL_LINK_RXBIT, 0, 1, 1,
+                                     (uint16_t)offsetof(FB_ESTOP, bEStopIn2)),
+              SL_OK);
+    CHECK_INT(sl_group_add_link_kind(&m.g, m.members, m.links, SL_LINK_RXBIT, 0, 16, 1,
+                                     (uint16_t)offsetof(FB_ESTOP, bRestart)),
+              SL_E_CONFIG);
+    CHECK_INT(sl_group_add_link_kind(&m.g, m.members, m.links, SL_LINK_TXBIT, 1,
+                                     (uint16_t)offsetof(FB_ESTOP, bEStopOut), 0, 0),
+              SL_OK);
+    /* Slave ("remote safe I/O"): DecIn1/2 are sent as bits 0/1, bit 0 received -> DecIn3. */
+    CHECK_INT(sl_group_add_member(&s.g, s.members, SL_TYPE_FSOE_CONN, &s.c, &idx), SL_OK);
+    CHECK_INT(sl_group_add_member(&s.g, s.members, SL_TYPE_DECOUPLE, &s.dec, &idx), SL_OK);
+    CHECK_INT(sl_group_add_link_kind(&s.g, s.members, s.links, SL_LINK_TXBIT, 1,
+                                     (uint16_t)offsetof(FB_DECOUPLE, bDecOut1), 0, 0),
+              SL_OK);
+    CHECK_INT(sl_group_add_link_kind(&s.g, s.members, s.links, SL_LINK_TXBIT, 1,
+                                     (uint16_t)offsetof(FB_DECOUPLE, bDecOut2), 0, 1),
+              SL_OK);
+    CHECK_INT(sl_group_add_link_kind(&s.g, s.members, s.links, SL_LINK_RXBIT, 0, 0, 1,
+                                     (uint16_t)offsetof(FB_DECOUPLE, bDecIn3)),
+              SL_OK);
+    m.g.bRun = 1;
+    s.g.bRun = 1;
+    s.dec.bDecIn1 = 1;
+    s.dec.bDecIn2 = 1;
+    /* ComStartup: START while the connections start up, then RUN. */
+    fsoe_bus(&m, &s, t, 1);
+    t += 10;
+    CHECK_INT(m.g.nState, SL_GROUP_STATE_START);
+    CHECK_INT(m.g.bComStartup, 1);
+    for (k = 0; k < 40 && m.g.nState != SL_STATE_RUN; k++, t += 10) {
+        fsoe_bus(&m, &s, t, 1);
+    }
+    CHECK_INT(m.g.nState, SL_STATE_RUN);
+    CHECK_INT(m.c.nState, SL_FSOE_STATE_DATA);
+    for (k = 0; k < 4; k++, t += 10) {
+        fsoe_bus(&m, &s, t, 1);
+    }
+    /* The slave's channels arrived at the ESTOP; restart; its output reaches the slave. */
+    CHECK_INT(m.estop.bEStopIn1, 1);
+    CHECK_INT(m.estop.bEStopIn2, 1);
+    m.estop.bRestart = 1;
+    fsoe_bus(&m, &s, t, 1);
+    t += 10;
+    m.estop.bRestart = 0;
+    for (k = 0; k < 4; k++, t += 10) {
+        fsoe_bus(&m, &s, t, 1);
+    }
+    CHECK_INT(m.estop.bEStopOut, 1);
+    CHECK_INT(s.dec.bDecOut3, 1);
+    /* The slave stops: ComErr -> group ERROR diag 2, outputs FALSE within the watchdog. */
+    t_kill = t;
+    for (k = 0; k < 20 && m.g.nState != SL_STATE_ERROR; k++, t += 10) {
+        fsoe_bus(&m, &s, t, 0);
+    }
+    CHECK_INT(m.g.nState, SL_STATE_ERROR);
+    CHECK_INT(m.g.nDiag, SL_GROUP_DIAG_COMERROR);
+    CHECK_INT(m.g.bComErr, 1);
+    CHECK(t - 10 - t_kill <= 110, "ERROR within watchdog + one cycle");
+    CHECK_INT(m.estop.bEStopOut, 0);
+    /* The slave returns: DATA again, ComErr latched until ErrAck (on both nodes). */
+    for (k = 0; k < 40 && m.c.nState != SL_FSOE_STATE_DATA; k++, t += 10) {
+        fsoe_bus(&m, &s, t, 1);
+    }
+    CHECK_INT(m.c.nState, SL_FSOE_STATE_DATA);
+    CHECK_INT(m.g.nState, SL_STATE_ERROR);
+    m.g.bErrAck = 1;
+    s.g.bErrAck = 1;
+    fsoe_bus(&m, &s, t, 1);
+    t += 10;
+    CHECK_INT(m.g.nState, SL_STATE_RESET);
+    m.g.bErrAck = 0;
+    s.g.bErrAck = 0;
+    fsoe_bus(&m, &s, t, 1);
+    t += 10;
+    CHECK_INT(m.g.nState, SL_STATE_RUN);
+    CHECK_INT(m.g.bComErr, 0);
+    /* CONNECTION_SHUTDOWN: 106 on the master, 105 on the slave, no group error. */
+    m.shut.bDeactivate1 = 1;
+    for (k = 0; k < 4; k++, t += 10) {
+        fsoe_bus(&m, &s, t, 1);
+    }
+    CHECK_INT(m.c.nState, SL_FSOE_STATE_SHUTDOWN_DEACTIVE);
+    CHECK_INT(s.c.nState, SL_FSOE_STATE_SHUTDOWN);
+    CHECK_INT(m.shut.nState, SL_STATE_RUN);
+    CHECK_INT(m.shut.bDeactivated, 1);
+    CHECK_INT(m.g.nState, SL_STATE_RUN);
+    CHECK_INT(m.g.bComErr, 0);
+    CHECK_INT(m.g.bComStartup, 0);
+    CHECK_INT(s.g.nState, SL_STATE_RUN);
+    m.shut.bDeactivate1 = 0;
+    for (k = 0; k < 40 && m.shut.nState != SL_STATE_SAFE; k++, t += 10) {
+        fsoe_bus(&m, &s, t, 1);
+    }
+    CHECK_INT(m.shut.nState, SL_STATE_SAFE);
+    CHECK_INT(m.c.nState, SL_FSOE_STATE_DATA);
+    CHECK_STR(sl_state_str(SL_TYPE_CONNECTION_SHUTDOWN, SL_STATE_RUN), "RUN");
+    h_end();
+}
+
 void run_fsoe_scenarios(void)
 {
     fsoe_crc_and_codec();
     fsoe_trace();
+    fsoe_group();
 }
