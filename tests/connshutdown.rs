@@ -19,7 +19,13 @@ fn block(active: u16, negated: u16, disc: u32) -> FB_CONNECTION_SHUTDOWN {
 }
 
 fn outs(b: &FB_CONNECTION_SHUTDOWN) -> (u8, u8, u8, u8, u16) {
-    (b.nState, b.bError, b.bDeactivated, b.bShutdownRequest, b.nDiag)
+    (
+        b.nState,
+        b.bError,
+        b.bDeactivated,
+        b.bShutdownRequest,
+        b.nDiag,
+    )
 }
 
 #[test]
@@ -35,10 +41,18 @@ fn parameters() {
         b.init()
     };
     assert_eq!(ok(0b01, 0, 0, 7), SL_OK);
-    assert_eq!(ok(0, 0, 0, 7), SL_OK, "no active input: the partner's side (CS4)");
+    assert_eq!(
+        ok(0, 0, 0, 7),
+        SL_OK,
+        "no active input: the partner's side (CS4)"
+    );
     assert_eq!(ok(0b11, 0b11, 65_535, 65_535), SL_OK);
     assert_eq!(ok(0b01, 0, 0, 0), SL_E_CONFIG, "Connection ID 0");
-    assert_eq!(ok(0b01, 0, 100, 7), SL_E_CONFIG, "discrepancy time needs the pair");
+    assert_eq!(
+        ok(0b01, 0, 100, 7),
+        SL_E_CONFIG,
+        "discrepancy time needs the pair"
+    );
     assert_eq!(ok(0b11, 0, 65_536, 7), SL_E_CONFIG);
     assert_eq!(ok(0b111, 0, 0, 7), SL_E_CONFIG);
     assert_eq!(ok(0b01, 0b100, 0, 7), SL_E_CONFIG);
@@ -56,7 +70,11 @@ fn stop_safe_run_and_the_request() {
     assert_eq!(outs(&b), (SL_STATE_STOP, 0, 0, 0, 0), "no request in STOP");
     b.bRun = 1;
     assert_eq!(b.cycle(20), SL_OK);
-    assert_eq!(outs(&b), (SL_STATE_SAFE, 0, 0, 1, 0), "SAFE with the request");
+    assert_eq!(
+        outs(&b),
+        (SL_STATE_SAFE, 0, 0, 1, 0),
+        "SAFE with the request"
+    );
     // RUN only once the connection reports its shutdown (CS1).
     b.bConnShutdown = 1;
     assert_eq!(b.cycle(30), SL_OK);
@@ -122,7 +140,11 @@ fn invalid_bytes_read_as_no_shutdown() {
     b.bDeactivate1 = 1;
     b.bConnShutdown = 2;
     assert_eq!(b.cycle(10), SL_E_INVALID_BOOL);
-    assert_eq!(outs(&b), (SL_STATE_SAFE, 0, 0, 1, 0), "not RUN on an invalid byte");
+    assert_eq!(
+        outs(&b),
+        (SL_STATE_SAFE, 0, 0, 1, 0),
+        "not RUN on an invalid byte"
+    );
 }
 
 #[test]
