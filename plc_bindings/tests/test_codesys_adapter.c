@@ -1104,6 +1104,21 @@ static void test_param_structs(void)
       off = (off + sizeof(int32_t) - 1) / sizeof(int32_t) * sizeof(int32_t);
       CHECK(offsetof(cds_sl_advposmon_cycle_struct, cds_sl_advposmon_cycle) == off, "cds_sl_advposmon_cycle_struct return value at %zu, expected %zu", offsetof(cds_sl_advposmon_cycle_struct, cds_sl_advposmon_cycle), off); }
     { size_t off = 0;
+      off = (off + sizeof(void *) - 1) / sizeof(void *) * sizeof(void *);
+      CHECK(offsetof(cds_sl_connection_shutdown_init_struct, pFb) == off, "cds_sl_connection_shutdown_init_struct.pFb at %zu, expected %zu", offsetof(cds_sl_connection_shutdown_init_struct, pFb), off);
+      off += sizeof(void *);
+      off = (off + sizeof(int32_t) - 1) / sizeof(int32_t) * sizeof(int32_t);
+      CHECK(offsetof(cds_sl_connection_shutdown_init_struct, cds_sl_connection_shutdown_init) == off, "cds_sl_connection_shutdown_init_struct return value at %zu, expected %zu", offsetof(cds_sl_connection_shutdown_init_struct, cds_sl_connection_shutdown_init), off); }
+    { size_t off = 0;
+      off = (off + sizeof(void *) - 1) / sizeof(void *) * sizeof(void *);
+      CHECK(offsetof(cds_sl_connection_shutdown_cycle_struct, pFb) == off, "cds_sl_connection_shutdown_cycle_struct.pFb at %zu, expected %zu", offsetof(cds_sl_connection_shutdown_cycle_struct, pFb), off);
+      off += sizeof(void *);
+      off = (off + sizeof(uint32_t) - 1) / sizeof(uint32_t) * sizeof(uint32_t);
+      CHECK(offsetof(cds_sl_connection_shutdown_cycle_struct, tNow) == off, "cds_sl_connection_shutdown_cycle_struct.tNow at %zu, expected %zu", offsetof(cds_sl_connection_shutdown_cycle_struct, tNow), off);
+      off += sizeof(uint32_t);
+      off = (off + sizeof(int32_t) - 1) / sizeof(int32_t) * sizeof(int32_t);
+      CHECK(offsetof(cds_sl_connection_shutdown_cycle_struct, cds_sl_connection_shutdown_cycle) == off, "cds_sl_connection_shutdown_cycle_struct return value at %zu, expected %zu", offsetof(cds_sl_connection_shutdown_cycle_struct, cds_sl_connection_shutdown_cycle), off); }
+    { size_t off = 0;
       off = (off + sizeof(uint32_t) - 1) / sizeof(uint32_t) * sizeof(uint32_t);
       CHECK(offsetof(cds_sl_time_now_ms_struct, cds_sl_time_now_ms) == off, "cds_sl_time_now_ms_struct return value at %zu, expected %zu", offsetof(cds_sl_time_now_ms_struct, cds_sl_time_now_ms), off); }
     { size_t off = 0;
@@ -1175,6 +1190,33 @@ static void test_param_structs(void)
       off += sizeof(uint16_t);
       off = (off + sizeof(int32_t) - 1) / sizeof(int32_t) * sizeof(int32_t);
       CHECK(offsetof(cds_sl_group_add_link_struct, cds_sl_group_add_link) == off, "cds_sl_group_add_link_struct return value at %zu, expected %zu", offsetof(cds_sl_group_add_link_struct, cds_sl_group_add_link), off); }
+    { size_t off = 0;
+      off = (off + sizeof(void *) - 1) / sizeof(void *) * sizeof(void *);
+      CHECK(offsetof(cds_sl_group_add_link_kind_struct, pG) == off, "cds_sl_group_add_link_kind_struct.pG at %zu, expected %zu", offsetof(cds_sl_group_add_link_kind_struct, pG), off);
+      off += sizeof(void *);
+      off = (off + sizeof(void *) - 1) / sizeof(void *) * sizeof(void *);
+      CHECK(offsetof(cds_sl_group_add_link_kind_struct, pAMembers) == off, "cds_sl_group_add_link_kind_struct.pAMembers at %zu, expected %zu", offsetof(cds_sl_group_add_link_kind_struct, pAMembers), off);
+      off += sizeof(void *);
+      off = (off + sizeof(void *) - 1) / sizeof(void *) * sizeof(void *);
+      CHECK(offsetof(cds_sl_group_add_link_kind_struct, pALinks) == off, "cds_sl_group_add_link_kind_struct.pALinks at %zu, expected %zu", offsetof(cds_sl_group_add_link_kind_struct, pALinks), off);
+      off += sizeof(void *);
+      off = (off + sizeof(uint8_t) - 1) / sizeof(uint8_t) * sizeof(uint8_t);
+      CHECK(offsetof(cds_sl_group_add_link_kind_struct, nKind) == off, "cds_sl_group_add_link_kind_struct.nKind at %zu, expected %zu", offsetof(cds_sl_group_add_link_kind_struct, nKind), off);
+      off += sizeof(uint8_t);
+      off = (off + sizeof(uint16_t) - 1) / sizeof(uint16_t) * sizeof(uint16_t);
+      CHECK(offsetof(cds_sl_group_add_link_kind_struct, nSrcMember) == off, "cds_sl_group_add_link_kind_struct.nSrcMember at %zu, expected %zu", offsetof(cds_sl_group_add_link_kind_struct, nSrcMember), off);
+      off += sizeof(uint16_t);
+      off = (off + sizeof(uint16_t) - 1) / sizeof(uint16_t) * sizeof(uint16_t);
+      CHECK(offsetof(cds_sl_group_add_link_kind_struct, nSrcOffset) == off, "cds_sl_group_add_link_kind_struct.nSrcOffset at %zu, expected %zu", offsetof(cds_sl_group_add_link_kind_struct, nSrcOffset), off);
+      off += sizeof(uint16_t);
+      off = (off + sizeof(uint16_t) - 1) / sizeof(uint16_t) * sizeof(uint16_t);
+      CHECK(offsetof(cds_sl_group_add_link_kind_struct, nDstMember) == off, "cds_sl_group_add_link_kind_struct.nDstMember at %zu, expected %zu", offsetof(cds_sl_group_add_link_kind_struct, nDstMember), off);
+      off += sizeof(uint16_t);
+      off = (off + sizeof(uint16_t) - 1) / sizeof(uint16_t) * sizeof(uint16_t);
+      CHECK(offsetof(cds_sl_group_add_link_kind_struct, nDstOffset) == off, "cds_sl_group_add_link_kind_struct.nDstOffset at %zu, expected %zu", offsetof(cds_sl_group_add_link_kind_struct, nDstOffset), off);
+      off += sizeof(uint16_t);
+      off = (off + sizeof(int32_t) - 1) / sizeof(int32_t) * sizeof(int32_t);
+      CHECK(offsetof(cds_sl_group_add_link_kind_struct, cds_sl_group_add_link_kind) == off, "cds_sl_group_add_link_kind_struct return value at %zu, expected %zu", offsetof(cds_sl_group_add_link_kind_struct, cds_sl_group_add_link_kind), off); }
     { size_t off = 0;
       off = (off + sizeof(void *) - 1) / sizeof(void *) * sizeof(void *);
       CHECK(offsetof(cds_sl_group_cycle_struct, pG) == off, "cds_sl_group_cycle_struct.pG at %zu, expected %zu", offsetof(cds_sl_group_cycle_struct, pG), off);
@@ -8146,6 +8188,102 @@ static void test_advposmon(void)
     CHECK(reached_error, "FB_ADVPOSMON: the random test never reached ERROR");
 }
 
+static void rnd_config_connection_shutdown(FB_CONNECTION_SHUTDOWN *x)
+{
+    x->tDiscTime12 = rnd_time();
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nConnectionId = (uint16_t)v[rnd() % 7u]; }
+    x->wInputActive = (uint16_t)(rnd() & 0x7u);
+    x->wInputNegated = (uint16_t)(rnd() % 2u == 0u ? 0u : (rnd() & 0x7u));
+}
+/* 1: a valid configuration (want_valid) or an invalid one was drawn into a and b */
+static int draw_connection_shutdown(FB_CONNECTION_SHUTDOWN *a, FB_CONNECTION_SHUTDOWN *b, int want_valid)
+{
+    long k;
+    for (k = 0; k < 200000L; k++) {
+        static FB_CONNECTION_SHUTDOWN x;
+        int valid;
+        memset(&x, 0, sizeof x);
+        rnd_config_connection_shutdown(&x);
+        valid = sl_connection_shutdown_init(&x) == SL_OK && sl_connection_shutdown_cycle(&x, 0u) == SL_OK;
+        if (valid == want_valid) {
+            memset(&x.bRun, 0, 0); /* keep x's parameters, reset the instance */
+            memset(a, 0, sizeof *a);
+            rnd_config_connection_shutdown(a); /* placeholder, overwritten below */
+            a->tDiscTime12 = x.tDiscTime12;
+            a->nConnectionId = x.nConnectionId;
+            a->wInputActive = x.wInputActive;
+            a->wInputNegated = x.wInputNegated;
+            *b = *a;
+            return 1;
+        }
+    }
+    return 0;
+}
+static void test_connection_shutdown(void)
+{
+    static FB_CONNECTION_SHUTDOWN a, b;
+    cds_sl_connection_shutdown_cycle_struct p;
+    int c, k, bump, ok = 0, cycles = 0, inv_cycles = 0, inv_config = 0, reached_run = 0, reached_error = 0;
+    int hist[12] = {0};
+    unsigned pol = 0;
+    uint32_t t = 1000u;
+    memset(&a, 0, sizeof a);
+    memset(&b, 0, sizeof b);
+    memset(&p, 0, sizeof p);
+    p.pFb = NULL;
+    p.cds_sl_connection_shutdown_cycle = 12345;
+    cds_sl_connection_shutdown_cycle(&p);
+    CHECK(p.cds_sl_connection_shutdown_cycle == SL_E_NULL, "cds_sl_connection_shutdown_cycle(NULL) returned %d", (int)p.cds_sl_connection_shutdown_cycle);
+    a.bRun = b.bRun = 1;
+    a.wInputActive = b.wInputActive = 1;
+    { cds_sl_connection_shutdown_init_struct q; int32_t r; q.pFb = &a; cds_sl_connection_shutdown_init(&q); r = sl_connection_shutdown_init(&b);
+      CHECK(q.cds_sl_connection_shutdown_init == r && memcmp(&a, &b, sizeof a) == 0, "cds_sl_connection_shutdown_init differs from sl_connection_shutdown_init"); }
+    rng = 3091753321u; /* FNV-1a of "FB_CONNECTION_SHUTDOWN" */
+    machine = 1u;
+    for (c = 0; c < 20; c++) {
+        int valid = c < 16; /* 16 valid configurations, then the labelled invalid share: 4 */
+        if (!draw_connection_shutdown(&a, &b, valid)) {
+            CHECK(!valid, "FB_CONNECTION_SHUTDOWN: no valid configuration found in 200000 random draws");
+            continue;
+        }
+        if (!valid) inv_config++;
+        a.bDeactivate1 = b.bDeactivate1 = (uint8_t)(1);
+        a.bDeactivate2 = b.bDeactivate2 = (uint8_t)(1);
+        a.bErrAck = b.bErrAck = (uint8_t)(0);
+        a.bConnShutdown = b.bConnShutdown = (uint8_t)(1);
+        bump = 20 + (int)(rnd() % 20u);
+        pol = (c % 2 == 1) ? rnd() : 0u;
+        for (k = 0; k < 50; k++) {
+            int32_t direct;
+            next_machine();
+            a.bDeactivate1 = b.bDeactivate1 = next_signal(a.bDeactivate1, 0, pol >> 0);
+            a.bDeactivate2 = b.bDeactivate2 = next_signal(a.bDeactivate2, 0, pol >> 1);
+            a.bErrAck = b.bErrAck = next_signal(a.bErrAck, 1, pol >> 2);
+            a.bConnShutdown = b.bConnShutdown = next_signal(a.bConnShutdown, 0, pol >> 3);
+            a.bRun = b.bRun = (uint8_t)(k >= 2 && rnd() % 100u != 0u);
+            if (valid && k == bump) { a.tDiscTime12++; b.tDiscTime12++; } /* changed while running: ERROR */
+            if (valid && k == bump + 2) { a.tDiscTime12--; b.tDiscTime12--; } /* restored */
+            p.pFb = &a;
+            p.tNow = t += 10u;
+            cds_sl_connection_shutdown_cycle(&p);
+            direct = sl_connection_shutdown_cycle(&b, p.tNow);
+            CHECK(p.cds_sl_connection_shutdown_cycle == direct, "FB_CONNECTION_SHUTDOWN config %d cycle %d: adapter %d, direct %d", c, k, (int)p.cds_sl_connection_shutdown_cycle, (int)direct);
+            CHECK(memcmp(&a, &b, sizeof a) == 0, "FB_CONNECTION_SHUTDOWN config %d cycle %d: instances differ", c, k);
+            if (!valid) { inv_cycles++; continue; }
+            cycles++;
+            if (direct == SL_OK) ok++;
+            if (direct <= 0 && direct > -12) hist[-direct]++;
+            if (b.nState == SL_STATE_ERROR) reached_error = 1;
+            if (b.nState != SL_STATE_STOP && b.nState != SL_STATE_ERROR && b.nState != SL_STATE_RESET && (b.bDeactivated || b.bShutdownRequest)) reached_run = 1;
+        }
+    }
+    printf("FB_CONNECTION_SHUTDOWN: %d of %d cycles (16 valid random configurations) returned SL_OK; run-like state %s, ERROR %s; invalid share: %d configurations, %d cycles\n", ok, cycles, reached_run ? "reached" : "NOT reached", reached_error ? "reached" : "NOT reached", inv_config, inv_cycles);
+    if (2 * ok <= cycles) printf("  status histogram (0, -1, ... -11): %d %d %d %d %d %d %d %d %d %d %d\n", hist[0], hist[1], hist[2], hist[3], hist[4], hist[5], hist[6], hist[7], hist[8], hist[9], hist[10]);
+    CHECK(cycles > 0 && 2 * ok > cycles, "FB_CONNECTION_SHUTDOWN: only %d of %d cycles with valid configurations returned SL_OK", ok, cycles);
+    CHECK(reached_run, "FB_CONNECTION_SHUTDOWN: the random test never reached a running state (an output on)");
+    CHECK(reached_error, "FB_CONNECTION_SHUTDOWN: the random test never reached ERROR");
+}
+
 int main(void)
 {
     test_param_structs();
@@ -8221,6 +8359,7 @@ int main(void)
     test_slp();
     test_sbt();
     test_advposmon();
+    test_connection_shutdown();
     { cds_sl_time_now_ms_struct q; uint32_t t0 = sl_time_now_ms(); cds_sl_time_now_ms(&q);
       CHECK((uint32_t)(q.cds_sl_time_now_ms - t0) < 1000u, "cds_sl_time_now_ms = %u, sl_time_now_ms = %u", (unsigned)q.cds_sl_time_now_ms, (unsigned)t0); }
     cds_sl_ton2_cycle(NULL); /* a NULL parameter struct must not crash */

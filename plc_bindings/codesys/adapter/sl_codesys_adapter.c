@@ -1162,6 +1162,22 @@ void CDECL CDECL_EXT cds_sl_advposmon_cycle(cds_sl_advposmon_cycle_struct *p)
     p->cds_sl_advposmon_cycle = sl_advposmon_cycle(p->pFb, p->tNow);
 }
 
+void CDECL CDECL_EXT cds_sl_connection_shutdown_init(cds_sl_connection_shutdown_init_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_connection_shutdown_init = sl_connection_shutdown_init(p->pFb);
+}
+
+void CDECL CDECL_EXT cds_sl_connection_shutdown_cycle(cds_sl_connection_shutdown_cycle_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_connection_shutdown_cycle = sl_connection_shutdown_cycle(p->pFb, p->tNow);
+}
+
 void CDECL CDECL_EXT cds_sl_time_now_ms(cds_sl_time_now_ms_struct *p)
 {
     if (p == 0) {
@@ -1200,6 +1216,14 @@ void CDECL CDECL_EXT cds_sl_group_add_link(cds_sl_group_add_link_struct *p)
         return;
     }
     p->cds_sl_group_add_link = sl_group_add_link(p->pG, p->pAMembers, p->pALinks, p->nSrcMember, p->nSrcOffset, p->nDstMember, p->nDstOffset);
+}
+
+void CDECL CDECL_EXT cds_sl_group_add_link_kind(cds_sl_group_add_link_kind_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_group_add_link_kind = sl_group_add_link_kind(p->pG, p->pAMembers, p->pALinks, p->nKind, p->nSrcMember, p->nSrcOffset, p->nDstMember, p->nDstOffset);
 }
 
 void CDECL CDECL_EXT cds_sl_group_cycle(cds_sl_group_cycle_struct *p)

@@ -1114,6 +1114,21 @@ typedef struct tagcds_sl_advposmon_cycle_struct {
 } cds_sl_advposmon_cycle_struct;
 void CDECL CDECL_EXT cds_sl_advposmon_cycle(cds_sl_advposmon_cycle_struct *p);
 
+/* FUNCTION cds_sl_connection_shutdown_init : DINT -> sl_connection_shutdown_init() */
+typedef struct tagcds_sl_connection_shutdown_init_struct {
+    struct FB_CONNECTION_SHUTDOWN *pFb; /* VAR_INPUT pFb : POINTER TO ST_FB_CONNECTION_SHUTDOWN */
+    int32_t cds_sl_connection_shutdown_init; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_connection_shutdown_init_struct;
+void CDECL CDECL_EXT cds_sl_connection_shutdown_init(cds_sl_connection_shutdown_init_struct *p);
+
+/* FUNCTION cds_sl_connection_shutdown_cycle : DINT -> sl_connection_shutdown_cycle() */
+typedef struct tagcds_sl_connection_shutdown_cycle_struct {
+    struct FB_CONNECTION_SHUTDOWN *pFb; /* VAR_INPUT pFb : POINTER TO ST_FB_CONNECTION_SHUTDOWN */
+    uint32_t tNow; /* VAR_INPUT tNow : UDINT */
+    int32_t cds_sl_connection_shutdown_cycle; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_connection_shutdown_cycle_struct;
+void CDECL CDECL_EXT cds_sl_connection_shutdown_cycle(cds_sl_connection_shutdown_cycle_struct *p);
+
 /* FUNCTION cds_sl_time_now_ms : UDINT -> sl_time_now_ms() */
 typedef struct tagcds_sl_time_now_ms_struct {
     uint32_t cds_sl_time_now_ms; /* VAR_OUTPUT (return value) UDINT */
@@ -1162,6 +1177,20 @@ typedef struct tagcds_sl_group_add_link_struct {
     int32_t cds_sl_group_add_link; /* VAR_OUTPUT (return value) DINT */
 } cds_sl_group_add_link_struct;
 void CDECL CDECL_EXT cds_sl_group_add_link(cds_sl_group_add_link_struct *p);
+
+/* FUNCTION cds_sl_group_add_link_kind : DINT -> sl_group_add_link_kind() */
+typedef struct tagcds_sl_group_add_link_kind_struct {
+    struct SL_GROUP *pG; /* VAR_INPUT pG : POINTER TO SL_GROUP */
+    struct SL_MEMBER *pAMembers; /* VAR_INPUT pAMembers : POINTER TO SL_MEMBER_STORAGE */
+    struct SL_LINK *pALinks; /* VAR_INPUT pALinks : POINTER TO SL_LINK */
+    uint8_t nKind; /* VAR_INPUT nKind : USINT */
+    uint16_t nSrcMember; /* VAR_INPUT nSrcMember : UINT */
+    uint16_t nSrcOffset; /* VAR_INPUT nSrcOffset : UINT */
+    uint16_t nDstMember; /* VAR_INPUT nDstMember : UINT */
+    uint16_t nDstOffset; /* VAR_INPUT nDstOffset : UINT */
+    int32_t cds_sl_group_add_link_kind; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_group_add_link_kind_struct;
+void CDECL CDECL_EXT cds_sl_group_add_link_kind(cds_sl_group_add_link_kind_struct *p);
 
 /* FUNCTION cds_sl_group_cycle : DINT -> sl_group_cycle() */
 typedef struct tagcds_sl_group_cycle_struct {
@@ -1321,11 +1350,14 @@ void CDECL CDECL_EXT cds_sl_group_cycle(cds_sl_group_cycle_struct *p);
     X(cds_sl_sbt_cycle) \
     X(cds_sl_advposmon_init) \
     X(cds_sl_advposmon_cycle) \
+    X(cds_sl_connection_shutdown_init) \
+    X(cds_sl_connection_shutdown_cycle) \
     X(cds_sl_time_now_ms) \
     X(cds_sl_ton2_get_elapsed) \
     X(cds_sl_group_init) \
     X(cds_sl_group_add_member) \
     X(cds_sl_group_add_link) \
+    X(cds_sl_group_add_link_kind) \
     X(cds_sl_group_cycle)
 
 #ifdef __cplusplus

@@ -1312,6 +1312,24 @@ HRESULT CSafeLogicModule::sl_advposmon_cycle(PVOID pFb, int32_t *pnResult, uint3
     return S_OK;
 }
 
+HRESULT CSafeLogicModule::sl_connection_shutdown_init(PVOID pFb, int32_t *pnResult)
+{
+    if (pFb == NULL || pnResult == NULL) {
+        return E_POINTER;
+    }
+    *pnResult = ::sl_connection_shutdown_init(static_cast<struct FB_CONNECTION_SHUTDOWN *>(pFb));
+    return S_OK;
+}
+
+HRESULT CSafeLogicModule::sl_connection_shutdown_cycle(PVOID pFb, int32_t *pnResult, uint32_t tNow)
+{
+    if (pFb == NULL || pnResult == NULL) {
+        return E_POINTER;
+    }
+    *pnResult = ::sl_connection_shutdown_cycle(static_cast<struct FB_CONNECTION_SHUTDOWN *>(pFb), tNow);
+    return S_OK;
+}
+
 HRESULT CSafeLogicModule::sl_ton2_get_elapsed(PVOID pFb, int32_t *pnResult, uint32_t * pPElapsedMs)
 {
     if (pFb == NULL || pnResult == NULL) {
@@ -1345,6 +1363,15 @@ HRESULT CSafeLogicModule::sl_group_add_link(PVOID pG, int32_t *pnResult, struct 
         return E_POINTER;
     }
     *pnResult = ::sl_group_add_link(static_cast<struct SL_GROUP *>(pG), pAMembers, pALinks, nSrcMember, nSrcOffset, nDstMember, nDstOffset);
+    return S_OK;
+}
+
+HRESULT CSafeLogicModule::sl_group_add_link_kind(PVOID pG, int32_t *pnResult, struct SL_MEMBER * pAMembers, struct SL_LINK * pALinks, uint8_t nKind, uint16_t nSrcMember, uint16_t nSrcOffset, uint16_t nDstMember, uint16_t nDstOffset)
+{
+    if (pG == NULL || pnResult == NULL) {
+        return E_POINTER;
+    }
+    *pnResult = ::sl_group_add_link_kind(static_cast<struct SL_GROUP *>(pG), pAMembers, pALinks, nKind, nSrcMember, nSrcOffset, nDstMember, nDstOffset);
     return S_OK;
 }
 
