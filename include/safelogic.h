@@ -10708,7 +10708,7 @@ int32_t sl_group_add_link(struct SL_GROUP *g, struct SL_MEMBER *aMembers, struct
 /*
  Links as `sl_group_add_link` with the link kind stated: SL_LINK_BOOL, SL_LINK_ANALOG16,
  SL_LINK_ANALOG32 (both fields of that type), SL_LINK_RXBIT (bit `nSrcOffset` = byte · 8
- + bit of connection member `nSrcMember`'s received SafeData → the BOOL input at byte
+ plus bit, of connection member `nSrcMember`'s received SafeData → the BOOL input at byte
  `nDstOffset` of member `nDstMember`) or SL_LINK_TXBIT (the BOOL output at byte
  `nSrcOffset` of member `nSrcMember` → bit `nDstOffset` of connection member
  `nDstMember`'s SafeData to send). A bit must lie within the connection's latched

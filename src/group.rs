@@ -963,7 +963,7 @@ pub fn cycle_with<M: Members + ?Sized, L: Links + ?Sized>(
                 apply_request(m, &mut w);
             }
         }
-        member_run = u8::from(c.state == SL_STATE_RUN) & member_run;
+        member_run &= u8::from(c.state == SL_STATE_RUN);
     }
 
     // A link that no member consumed (forged destination or order) was not applied: the

@@ -310,7 +310,7 @@ fn com_error_stops_the_group_within_the_watchdog_and_errack_recovers() {
         "ERROR after {} ms",
         t_err - t_kill
     );
-    assert_eq!(k as u32 * STEP, t_err - t_kill + STEP);
+    assert_eq!(k * STEP, t_err - t_kill + STEP);
     assert_eq!(p.m.g.nDiag, SL_GROUP_DIAG_COMERROR);
     assert_eq!((p.m.g.bComErr, p.m.g.bFbErr), (1, 0));
     assert_eq!(p.m.conn.bComErr, 1);
