@@ -169,6 +169,13 @@ BLOCKS["ADVPOSMON"] = dict(
     cfg=dict(wInputActive=0x1, bEnable=1, bPosRefOk=1, bPosCheckOk=1), pulse=None,
     change=("nChAPrimaryFeedback", 1), run={1})
 
+# CONNECTION_SHUTDOWN: Deactivate1 requests, the connection reports its shutdown (the input a
+# group writes, set by the program here): RUN; changing the Connection ID while running is
+# the error.
+BLOCKS["CONNECTION_SHUTDOWN"] = dict(
+    cfg=dict(wInputActive=0x1, nConnectionId=7, bDeactivate1=1, bConnShutdown=1), pulse=None,
+    change=("nConnectionId", 8), run={1, 3})
+
 BLOCK_INPUTS = {}  # block -> its BOOL inputs (filled from the header in main)
 
 
