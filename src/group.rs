@@ -8,6 +8,12 @@
 //! cycle are run once more with bRun FALSE, so their outputs are FALSE when the call
 //! returns. Links copy a member output into a member input just before the destination
 //! executes. No heap: member and link storage belong to the caller.
+//!
+//! FSoE connections (`SL_FSOE_CONN`, ABI-2 §13.5) are members too, before the blocks: they
+//! run first in every cycle, their bComErr / bComStartup are ORed into the group's ComErr /
+//! ComStartup (with the stand-ins bComErrIn / bComStartupIn), their SafeData bits are linked
+//! with `SL_LINK_RXBIT` / `SL_LINK_TXBIT`, and a FB_CONNECTION_SHUTDOWN is wired to the
+//! connection(s) with its Connection ID (docs/semantics.md FS17–FS21).
 
 use crate::prim::bools::{edge, is_true};
 use crate::registry::{Dir, Field, Kind};
