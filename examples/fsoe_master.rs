@@ -10,7 +10,8 @@
 //! ```
 //! Arguments: own UDP port, the slave's UDP port. Commands on stdin: `restart` (pulse of the
 //! ESTOP's Restart), `ack` (pulse of the group's ErrAck), `quit`. A `status …` line is
-//! printed whenever something changes. Stop the slave and the group enters ERROR (ComErr,
+//! printed whenever something changes (`since_rx`: ms since the last frame from the slave,
+//! `gap`: ms since the previous cycle). Stop the slave and the group enters ERROR (ComErr,
 //! diag 2) within the watchdog time with EStopOut FALSE; start it again and `ack`.
 //!
 //! The library builds and checks the frames; this program only carries them. The session
@@ -109,8 +110,12 @@ pub fn run(own_port: u16, peer_port: u16) {
     let mut restart_pulse = 0u8;
     let mut ack_pulse = 0u8;
     let mut buf = [0u8; 128];
+    let mut prev = 0u32;
     loop {
         let now = start.elapsed().as_millis() as u32;
+        // The time since the previous cycle (a loaded machine stretches it).
+        let gap = now.wrapping_sub(prev);
+        prev = now;
         // The newest datagram of the right size is this cycle's received frame.
         c.nRxFrameLen = 0;
         while let Ok(n) = sock.recv(&mut buf) {
@@ -157,7 +162,7 @@ pub fn run(own_port: u16, peer_port: u16) {
         };
         if shown != Some(s) {
             println!(
-                "status t={now} group={} diag={} comerr={} startup={} conn={} in={}{} out={} since_rx={}",
+                "status t={now} group={} diag={} comerr={} startup={} conn={} in={}{} out={} since_rx={} gap={gap}",
                 s.group,
                 s.diag,
                 s.com_err,

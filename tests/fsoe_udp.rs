@@ -186,17 +186,22 @@ fn master_and_slave_processes_over_udp() {
     });
     assert_eq!(f.num("diag"), 2, "COMERROR");
     assert_eq!(f.num("out"), 0);
-    // The master's own measure: time since the last frame from the slave (its cycle is
-    // 1 ms plus the sleep's overshoot).
-    let since = f.num("since_rx");
+    // The master's own measure: the time since the last frame from the slave is at most the
+    // watchdog plus the cycle that detected it (the previous cycle had not yet expired; its
+    // length is `gap`, 1 ms plus the sleep's overshoot on an idle machine).
+    let (since, gap) = (f.num("since_rx"), f.num("gap"));
     assert!(
-        since <= master::WATCHDOG_MS + 20,
-        "ERROR {since} ms after the last frame"
+        since <= master::WATCHDOG_MS + gap,
+        "ERROR {since} ms after the last frame (cycle {gap} ms)"
+    );
+    assert!(
+        since >= master::WATCHDOG_MS,
+        "not before the watchdog: {since} ms"
     );
     // Wall clock from the kill to the status line, with room for a loaded machine.
     let wall = at.duration_since(killed).as_millis() as u32;
     assert!(
-        wall <= master::WATCHDOG_MS + 500,
+        wall <= master::WATCHDOG_MS + 2000,
         "ERROR seen {wall} ms after the kill"
     );
 
