@@ -282,12 +282,11 @@ def parse_header(text: str) -> Header:
         doc = []
     if cur is not None:
         raise GenError(f"unterminated struct {cur.name}")
-    # The FSoE connection (SL_FSOE_* structs, sl_fsoe_* functions) has no PLC binding yet
-    # (issue 11): its structs and functions are not bound; its constants are.
-    fsoe = lambda n: n.upper().startswith("SL_FSOE")  # noqa: E731
-    structs = {k: v for k, v in structs.items() if not fsoe(k)}
-    order, funcs = [n for n in order if not fsoe(n)], [f for f in funcs if not fsoe(f.name)]
-    asserts = [a for a in asserts if not fsoe(a[0])]
+    # The FSoE connection (issue 11): its structs (SL_FSOE_CONN with the group mailbox,
+    # SL_FSOE_CONN_PRIVATE, SL_FSOE_FRAME) and sl_fsoe_init are bound like any other; a PLC
+    # runs a connection as a group member (sl_group_add_member with SL_TYPE_FSOE_CONN) and
+    # carries the frames through aRxFrame / aTxFrame. sl_fsoe_cycle and the codec functions
+    # (byte buffers, size_t, uint16_t results) are not wrapped.
     hdr = Header(structs, order, funcs, defines, asserts)
     _layout(hdr)
     _find_blocks(hdr)

@@ -1232,6 +1232,12 @@ static void test_param_structs(void)
       off += sizeof(uint32_t);
       off = (off + sizeof(int32_t) - 1) / sizeof(int32_t) * sizeof(int32_t);
       CHECK(offsetof(cds_sl_group_cycle_struct, cds_sl_group_cycle) == off, "cds_sl_group_cycle_struct return value at %zu, expected %zu", offsetof(cds_sl_group_cycle_struct, cds_sl_group_cycle), off); }
+    { size_t off = 0;
+      off = (off + sizeof(void *) - 1) / sizeof(void *) * sizeof(void *);
+      CHECK(offsetof(cds_sl_fsoe_init_struct, pC) == off, "cds_sl_fsoe_init_struct.pC at %zu, expected %zu", offsetof(cds_sl_fsoe_init_struct, pC), off);
+      off += sizeof(void *);
+      off = (off + sizeof(int32_t) - 1) / sizeof(int32_t) * sizeof(int32_t);
+      CHECK(offsetof(cds_sl_fsoe_init_struct, cds_sl_fsoe_init) == off, "cds_sl_fsoe_init_struct return value at %zu, expected %zu", offsetof(cds_sl_fsoe_init_struct, cds_sl_fsoe_init), off); }
 }
 
 /* Random configurations: every parameter drawn at random, kept only if the library accepts it

@@ -1233,3 +1233,11 @@ void CDECL CDECL_EXT cds_sl_group_cycle(cds_sl_group_cycle_struct *p)
     }
     p->cds_sl_group_cycle = sl_group_cycle(p->pG, p->pAMembers, p->pALinks, p->tNow);
 }
+
+void CDECL CDECL_EXT cds_sl_fsoe_init(cds_sl_fsoe_init_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_fsoe_init = sl_fsoe_init(p->pC);
+}

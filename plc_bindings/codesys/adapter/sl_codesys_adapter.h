@@ -1202,6 +1202,13 @@ typedef struct tagcds_sl_group_cycle_struct {
 } cds_sl_group_cycle_struct;
 void CDECL CDECL_EXT cds_sl_group_cycle(cds_sl_group_cycle_struct *p);
 
+/* FUNCTION cds_sl_fsoe_init : DINT -> sl_fsoe_init() */
+typedef struct tagcds_sl_fsoe_init_struct {
+    struct SL_FSOE_CONN *pC; /* VAR_INPUT pC : POINTER TO SL_FSOE_CONN */
+    int32_t cds_sl_fsoe_init; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_fsoe_init_struct;
+void CDECL CDECL_EXT cds_sl_fsoe_init(cds_sl_fsoe_init_struct *p);
+
 /* X-macro over every entry point: X(name) for the runtime component's export table,
    e.g. #define X(n) s_pfCMRegisterAPI2(#n, (RTS_UINTPTR)n, 1, <crc from the Itf.m4>, <version>); */
 #define SL_CODESYS_FOR_EACH_EXTERNAL(X) \
@@ -1358,7 +1365,8 @@ void CDECL CDECL_EXT cds_sl_group_cycle(cds_sl_group_cycle_struct *p);
     X(cds_sl_group_add_member) \
     X(cds_sl_group_add_link) \
     X(cds_sl_group_add_link_kind) \
-    X(cds_sl_group_cycle)
+    X(cds_sl_group_cycle) \
+    X(cds_sl_fsoe_init)
 
 #ifdef __cplusplus
 }

@@ -1383,3 +1383,12 @@ HRESULT CSafeLogicModule::sl_group_cycle(PVOID pG, int32_t *pnResult, struct SL_
     *pnResult = ::sl_group_cycle(static_cast<struct SL_GROUP *>(pG), pAMembers, pALinks, tNow);
     return S_OK;
 }
+
+HRESULT CSafeLogicModule::sl_fsoe_init(PVOID pC, int32_t *pnResult)
+{
+    if (pC == NULL || pnResult == NULL) {
+        return E_POINTER;
+    }
+    *pnResult = ::sl_fsoe_init(static_cast<struct SL_FSOE_CONN *>(pC));
+    return S_OK;
+}
