@@ -32,9 +32,11 @@ const PATTERN: [u16; 5] = [
     SL_TYPE_TON,
 ];
 
-fn build() -> Plant {
+/// Boxed: the group's address is sealed into its member entries (semantics GR14), so the
+/// plant must not move once the members are added (a returned struct may be moved).
+fn build() -> Box<Plant> {
     let per = MEMBERS / PATTERN.len();
-    let mut p = Plant {
+    let mut p = Box::new(Plant {
         estops: vec![
             FB_ESTOP {
                 wInputActive: 0b11,
@@ -76,7 +78,7 @@ fn build() -> Plant {
         group: SL_GROUP::default(),
         members: vec![SL_MEMBER::default(); MEMBERS],
         links: vec![SL_LINK::default(); 2 * MEMBERS],
-    };
+    });
     for e in &mut p.estops {
         (e.bEStopIn1, e.bEStopIn2) = (1, 1);
         assert_eq!(e.init(), SL_OK);
