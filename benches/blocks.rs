@@ -621,6 +621,26 @@ fn main() {
         ));
     }
 
+    // CONNECTION_SHUTDOWN: Deactivate1 requests, the connection reports its shutdown (RUN).
+    {
+        let mut fb = FB_CONNECTION_SHUTDOWN {
+            wInputActive: 0b01,
+            nConnectionId: 7,
+            ..Default::default()
+        };
+        (fb.bDeactivate1, fb.bConnShutdown, fb.bRun) = (1, 1, 1);
+        fb.init();
+        let private = size_of_val(&fb.stPrivate);
+        rows.push(measure(
+            ("CONNECTION_SHUTDOWN", SL_TYPE_CONNECTION_SHUTDOWN, logic),
+            batches,
+            fb,
+            private,
+            sl_connection_shutdown_cycle,
+            |f| f.nState,
+        ));
+    }
+
     let cpu = std::fs::read_to_string("/proc/cpuinfo")
         .ok()
         .and_then(|s| {

@@ -236,7 +236,6 @@ impl Block for FB_CONNECTION_SHUTDOWN {
     }
 
     fn step(&mut self, inp: &ConnShutdownIn, now: u32) -> Status {
-        let intact = self.params_intact();
         let p = &mut self.stPrivate;
         let both = p.stHeader.nActive & 0b11 == 0b11;
         let monitored = u8::from(p.awParam[0] != 0 && both);
@@ -252,21 +251,22 @@ impl Block for FB_CONNECTION_SHUTDOWN {
         );
         p.tDiscStart = starts[0];
         p.stHeader.wAux = (p.stHeader.wAux & !AUX_DISC) | u16::from(running & 1);
-        let h = &mut p.stHeader;
         if disc != 0 {
-            h.enter_error(SL_DIAG_DISC1);
+            p.stHeader.enter_error(SL_DIAG_DISC1);
             return Status::Ok;
         }
-        // RUN exactly while the connection reports its shutdown (semantics CS1).
-        if inp.conn_shutdown {
-            if !intact {
-                h.enter_error(SL_DIAG_CORRUPT);
-                return Status::Corrupt;
-            }
-            h.nState = SL_STATE_RUN;
-        } else {
-            h.nState = SL_STATE_SAFE;
+        // RUN exactly while the connection reports its shutdown (semantics CS1); the latched
+        // parameters are checked where the output switches on (C3).
+        let entering = inp.conn_shutdown && p.stHeader.nState != SL_STATE_RUN;
+        if entering && !self.params_intact() {
+            self.stPrivate.stHeader.enter_error(SL_DIAG_CORRUPT);
+            return Status::Corrupt;
         }
+        self.stPrivate.stHeader.nState = if inp.conn_shutdown {
+            SL_STATE_RUN
+        } else {
+            SL_STATE_SAFE
+        };
         Status::Ok
     }
 
