@@ -181,7 +181,7 @@ static void fsoe_group(void)
     uint32_t t_kill;
     int k;
     h_begin("FSoE connections in groups: RXBIT/TXBIT, START, ComErr diag 2, ErrAck, "
-            "CONNECTION_SHUTDOWN (FS17-FS22, CS1-CS8)");
+            "CONNECTION_SHUTDOWN (FS17-FS21, CS1-CS8)");
     memset(&m, 0, sizeof m);
     memset(&s, 0, sizeof s);
     fsoe_conn_setup(&m.c, SL_FSOE_ROLE_MASTER, 1);

@@ -1,5 +1,5 @@
 //! FSoE connections as members of TwinSAFE groups (ABI-2 §10.7, §11.1, §13.5; manual §3.2.5,
-//! §4.15; docs/semantics.md FS17–FS22, CS1–CS8), through the C functions: a master node
+//! §4.15; docs/semantics.md FS17–FS21, CS1–CS8), through the C functions: a master node
 //! (connection + ESTOP fed by the received bits, its output sent back) and a slave node
 //! ("remote safe I/O": connection + DECOUPLE whose outputs are sent), frames carried between
 //! the two mailboxes. ComStartup → group START; ComErr → group ERROR diag 2, outputs FALSE

@@ -1,5 +1,5 @@
 //! An FSoE connection as a member of a TwinSAFE group (ABI-2 §13.5, docs/semantics.md
-//! FS17–FS22): type tag `SL_TYPE_FSOE_CONN`, run by the group before its blocks with the
+//! FS17–FS21): type tag `SL_TYPE_FSOE_CONN`, run by the group before its blocks with the
 //! frames of its mailbox; its bComErr / bComStartup are ORed into the group's ComErr /
 //! ComStartup; its SafeData bits are reached by `SL_LINK_RXBIT` / `SL_LINK_TXBIT` links,
 //! its BOOL inputs and outputs by ordinary BOOL links.
