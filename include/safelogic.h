@@ -2160,7 +2160,7 @@ typedef struct SL_FSOE_FRAME {
    */
   uint8_t nCmd;
   /*
-   Offset 1. Reason when rejected (2 unknown command, 4 CRC); else a Reset frame's code (SafeData[0]), 0 for other commands.
+   Offset 1. Reason when rejected (2 unknown command, 4 CRC); else a Reset frame's code (SafeData byte 0), 0 for other commands.
    */
   uint8_t nResetCode;
   /*

@@ -29,6 +29,7 @@ cargo --version
 step "format and lints"
 cargo fmt --all -- --check
 cargo clippy --workspace --all-targets -- -D warnings
+RUSTDOCFLAGS="-D warnings" cargo doc --quiet --no-deps -p safelogic --lib
 
 step "no_std build of the block layer"
 cargo rustc --quiet --lib --release --no-default-features --crate-type rlib
