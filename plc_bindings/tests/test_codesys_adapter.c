@@ -8146,6 +8146,45 @@ static void test_advposmon(void)
     CHECK(reached_error, "FB_ADVPOSMON: the random test never reached ERROR");
 }
 
+/* SL_STATE_STR / SL_DIAG_TEXT through the adapter: the same text as the direct call, for
+ * every type tag (and one unknown), every state value 0-63, a set of diag words. */
+static void test_texts(void)
+{
+    static const uint16_t tags[] = {SL_TYPE_ADVPOSMON, SL_TYPE_AND, SL_TYPE_ADD_INT, SL_TYPE_ADD_UINT, SL_TYPE_ADD_DINT, SL_TYPE_ADD_UDINT, SL_TYPE_SUB_INT, SL_TYPE_SUB_UINT, SL_TYPE_SUB_DINT, SL_TYPE_SUB_UDINT, SL_TYPE_MUL_INT, SL_TYPE_MUL_UINT, SL_TYPE_MUL_DINT, SL_TYPE_MUL_UDINT, SL_TYPE_DIV_INT, SL_TYPE_DIV_UINT, SL_TYPE_DIV_DINT, SL_TYPE_DIV_UDINT, SL_TYPE_COMPARE_INT, SL_TYPE_COMPARE_UINT, SL_TYPE_COMPARE_DINT, SL_TYPE_COMPARE_UDINT, SL_TYPE_COUNTER_INT, SL_TYPE_COUNTER_UINT, SL_TYPE_COUNTER_DINT, SL_TYPE_COUNTER_UDINT, SL_TYPE_DECOUPLE, SL_TYPE_EDM, SL_TYPE_ENVELOPE_INT, SL_TYPE_ENVELOPE_UINT, SL_TYPE_ENVELOPE_DINT, SL_TYPE_ENVELOPE_UDINT, SL_TYPE_ESTOP, SL_TYPE_LIMIT_INT, SL_TYPE_LIMIT_UINT, SL_TYPE_LIMIT_DINT, SL_TYPE_LIMIT_UDINT, SL_TYPE_LOADSENSING_INT, SL_TYPE_LOADSENSING_UINT, SL_TYPE_LOADSENSING_DINT, SL_TYPE_LOADSENSING_UDINT, SL_TYPE_MON, SL_TYPE_MUTING, SL_TYPE_OPMODE, SL_TYPE_OR, SL_TYPE_RS, SL_TYPE_SBT, SL_TYPE_SCALE_INT, SL_TYPE_SCALE_UINT, SL_TYPE_SCALE_DINT, SL_TYPE_SCALE_UDINT, SL_TYPE_SLI_INT, SL_TYPE_SLI_UINT, SL_TYPE_SLI_DINT, SL_TYPE_SLI_UDINT, SL_TYPE_SLI2_INT, SL_TYPE_SLI2_UINT, SL_TYPE_SLI2_DINT, SL_TYPE_SLI2_UDINT, SL_TYPE_SLP, SL_TYPE_SPEED_INT, SL_TYPE_SPEED_UINT, SL_TYPE_SPEED_DINT, SL_TYPE_SPEED_UDINT, SL_TYPE_SR, SL_TYPE_TOF, SL_TYPE_TON, SL_TYPE_TON2, SL_TYPE_TWOHAND, SL_TYPE_VIOLATIONCOUNTER_UINT, SL_TYPE_VIOLATIONCOUNTER_UDINT, SL_TYPE_XOR, 0, 999};
+    static const uint16_t diags[] = {0, 1, 2, 3, 0x00FF, 0x1000, 0x2000, 0x4000, 0x8000, 0xE000, 0xFFFF};
+    size_t i, k, named = 0;
+    for (i = 0; i < sizeof tags / sizeof tags[0]; i++) {
+        for (k = 0; k < 64; k++) {
+            cds_sl_state_str_struct q;
+            memset(&q, 0x55, sizeof q);
+            q.nType = tags[i];
+            q.nState = (uint8_t)k;
+            cds_sl_state_str(&q);
+            CHECK(strcmp(q.cds_sl_state_str, sl_state_str(tags[i], (uint8_t)k)) == 0,
+                  "SL_STATE_STR(%u, %u) = '%s'", (unsigned)tags[i], (unsigned)k, q.cds_sl_state_str);
+            if (strcmp(q.cds_sl_state_str, "?") != 0) named++;
+        }
+        for (k = 0; k < sizeof diags / sizeof diags[0]; k++) {
+            cds_sl_diag_text_struct q;
+            char direct[256];
+            memset(&q, 0x55, sizeof q);
+            q.nType = tags[i];
+            q.nDiag = diags[k];
+            cds_sl_diag_text(&q);
+            (void)sl_diag_text(tags[i], diags[k], direct, sizeof direct);
+            CHECK(strcmp(q.cds_sl_diag_text, direct) == 0, "SL_DIAG_TEXT(%u, 0x%04x) = '%s', direct '%s'",
+                  (unsigned)tags[i], (unsigned)diags[k], q.cds_sl_diag_text, direct);
+        }
+    }
+    CHECK(named > 5 * (sizeof tags / sizeof tags[0] - 2), "state names found: %u", (unsigned)named);
+    CHECK(offsetof(cds_sl_state_str_struct, cds_sl_state_str) == 3 && sizeof(cds_sl_state_str_struct) == 84,
+          "cds_sl_state_str_struct layout");
+    CHECK(offsetof(cds_sl_diag_text_struct, cds_sl_diag_text) == 4 && sizeof(cds_sl_diag_text_struct) == 260,
+          "cds_sl_diag_text_struct layout");
+    cds_sl_state_str(NULL);
+    cds_sl_diag_text(NULL);
+}
+
 int main(void)
 {
     test_param_structs();
@@ -8223,6 +8262,7 @@ int main(void)
     test_advposmon();
     { cds_sl_time_now_ms_struct q; uint32_t t0 = sl_time_now_ms(); cds_sl_time_now_ms(&q);
       CHECK((uint32_t)(q.cds_sl_time_now_ms - t0) < 1000u, "cds_sl_time_now_ms = %u, sl_time_now_ms = %u", (unsigned)q.cds_sl_time_now_ms, (unsigned)t0); }
+    test_texts();
     cds_sl_ton2_cycle(NULL); /* a NULL parameter struct must not crash */
     printf("%d passed, %d failed\n", passed, failed);
     return failed == 0 ? 0 : 1;

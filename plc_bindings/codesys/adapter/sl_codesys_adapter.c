@@ -1209,3 +1209,27 @@ void CDECL CDECL_EXT cds_sl_group_cycle(cds_sl_group_cycle_struct *p)
     }
     p->cds_sl_group_cycle = sl_group_cycle(p->pG, p->pAMembers, p->pALinks, p->tNow);
 }
+
+void CDECL CDECL_EXT cds_sl_state_str(cds_sl_state_str_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    {
+        const char *s = sl_state_str(p->nType, p->nState);
+        size_t k = 0;
+        while (s[k] != 0 && k + 1 < sizeof p->cds_sl_state_str) {
+            p->cds_sl_state_str[k] = s[k];
+            k++;
+        }
+        p->cds_sl_state_str[k] = 0;
+    }
+}
+
+void CDECL CDECL_EXT cds_sl_diag_text(cds_sl_diag_text_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    (void)sl_diag_text(p->nType, p->nDiag, p->cds_sl_diag_text, sizeof p->cds_sl_diag_text);
+}

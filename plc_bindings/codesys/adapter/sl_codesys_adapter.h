@@ -1173,6 +1173,22 @@ typedef struct tagcds_sl_group_cycle_struct {
 } cds_sl_group_cycle_struct;
 void CDECL CDECL_EXT cds_sl_group_cycle(cds_sl_group_cycle_struct *p);
 
+/* FUNCTION cds_sl_state_str : STRING(80) -> sl_state_str() */
+typedef struct tagcds_sl_state_str_struct {
+    uint16_t nType; /* VAR_INPUT nType : UINT */
+    uint8_t nState; /* VAR_INPUT nState : BYTE */
+    char cds_sl_state_str[81]; /* VAR_OUTPUT (return value) STRING(80), NUL-terminated */
+} cds_sl_state_str_struct;
+void CDECL CDECL_EXT cds_sl_state_str(cds_sl_state_str_struct *p);
+
+/* FUNCTION cds_sl_diag_text : STRING(255) -> sl_diag_text() */
+typedef struct tagcds_sl_diag_text_struct {
+    uint16_t nType; /* VAR_INPUT nType : UINT */
+    uint16_t nDiag; /* VAR_INPUT nDiag : WORD */
+    char cds_sl_diag_text[256]; /* VAR_OUTPUT (return value) STRING(255), NUL-terminated */
+} cds_sl_diag_text_struct;
+void CDECL CDECL_EXT cds_sl_diag_text(cds_sl_diag_text_struct *p);
+
 /* X-macro over every entry point: X(name) for the runtime component's export table,
    e.g. #define X(n) s_pfCMRegisterAPI2(#n, (RTS_UINTPTR)n, 1, <crc from the Itf.m4>, <version>); */
 #define SL_CODESYS_FOR_EACH_EXTERNAL(X) \
@@ -1326,7 +1342,9 @@ void CDECL CDECL_EXT cds_sl_group_cycle(cds_sl_group_cycle_struct *p);
     X(cds_sl_group_init) \
     X(cds_sl_group_add_member) \
     X(cds_sl_group_add_link) \
-    X(cds_sl_group_cycle)
+    X(cds_sl_group_cycle) \
+    X(cds_sl_state_str) \
+    X(cds_sl_diag_text)
 
 #ifdef __cplusplus
 }

@@ -1356,3 +1356,28 @@ HRESULT CSafeLogicModule::sl_group_cycle(PVOID pG, int32_t *pnResult, struct SL_
     *pnResult = ::sl_group_cycle(static_cast<struct SL_GROUP *>(pG), pAMembers, pALinks, tNow);
     return S_OK;
 }
+
+HRESULT CSafeLogicModule::sl_state_str(PVOID pBuf, uint32_t nLen, uint16_t nType, uint8_t nState)
+{
+    if (pBuf == NULL || nLen == 0) {
+        return E_POINTER;
+    }
+    const char *s = ::sl_state_str(nType, nState);
+    char *d = static_cast<char *>(pBuf);
+    uint32_t k = 0;
+    while (s[k] != 0 && k + 1 < nLen) {
+        d[k] = s[k];
+        k++;
+    }
+    d[k] = 0;
+    return S_OK;
+}
+
+HRESULT CSafeLogicModule::sl_diag_text(PVOID pBuf, uint32_t nLen, uint16_t nType, uint16_t nDiag)
+{
+    if (pBuf == NULL || nLen == 0) {
+        return E_POINTER;
+    }
+    (void)::sl_diag_text(nType, nDiag, static_cast<char *>(pBuf), nLen);
+    return S_OK;
+}
