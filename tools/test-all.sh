@@ -128,4 +128,14 @@ fi
 step "PLC bindings (generated files fresh, blark, tree-sitter, offsets, CODESYS adapter, matiec run)"
 bash tools/plc_check.sh
 
+step "peer benchmark: plain-ST E-stop (matiec, gcc -O2) vs the library in one process (brief; figures not asserted)"
+# the scenario check (plain ST, direct C call and ST wrapper agree cycle by cycle) is asserted;
+# the full run is `cargo bench --bench peer`
+if [ -n "$MATIEC_DIR" ]; then
+    python3 tools/peer_bench.py --iec2c "$MATIEC_DIR/iec2c" --matiec-lib "$MATIEC_DIR/lib" \
+        --workdir build/peer-bench --batches 20
+else
+    echo "SKIPPED: no iec2c (see the matiec step)"
+fi
+
 step "all tests passed"
