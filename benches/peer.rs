@@ -26,7 +26,10 @@ fn main() {
         .args(["build", "--release", "--quiet", "--lib"])
         .current_dir(root)
         .status();
-    assert!(built.is_ok_and(|s| s.success()), "cargo build --release failed");
+    assert!(
+        built.is_ok_and(|s| s.success()),
+        "cargo build --release failed"
+    );
     let status = Command::new("python3")
         .arg(root.join("tools/peer_bench.py"))
         .arg("--iec2c")
@@ -39,7 +42,10 @@ fn main() {
         .current_dir(root)
         .status()
         .expect("python3 tools/peer_bench.py");
-    assert!(status.success(), "the peer benchmark's scenario check failed");
+    assert!(
+        status.success(),
+        "the peer benchmark's scenario check failed"
+    );
 }
 
 fn matiec_dir(root: &Path) -> Option<PathBuf> {
@@ -54,7 +60,11 @@ fn matiec_dir(root: &Path) -> Option<PathBuf> {
     }
     let script = root.join("../shared/vendor/matiec/build_iec2c.sh");
     let out = Command::new("bash").arg(script).arg(&local).output().ok()?;
-    let dir = String::from_utf8_lossy(&out.stdout).lines().last()?.trim().to_string();
+    let dir = String::from_utf8_lossy(&out.stdout)
+        .lines()
+        .last()?
+        .trim()
+        .to_string();
     let dir = PathBuf::from(dir);
     dir.join("iec2c").is_file().then_some(dir)
 }
