@@ -961,13 +961,15 @@ impl Track {
             SL_STATE_CAMMONITOR_WAIT_FOR_RESET | SL_STATE_SAFE if rise => SL_STATE_START,
             // Excentric (semantics CM6).
             SL_STATE_RUN if !geo.pendulum && cw => {
-                if geo.left(q) {
+                if geo.left(q) && !geo.tdc(q) {
                     SL_STATE_CAMMONITOR_MOVE_UP
                 } else {
                     SL_STATE_CAMMONITOR_MOVE_DOWN
                 }
             }
-            SL_STATE_CAMMONITOR_MOVE_DOWN if geo.left(q) => SL_STATE_CAMMONITOR_MOVE_UP,
+            SL_STATE_CAMMONITOR_MOVE_DOWN if geo.left(q) && !geo.tdc(q) => {
+                SL_STATE_CAMMONITOR_MOVE_UP
+            }
             SL_STATE_CAMMONITOR_MOVE_UP if geo.tdc_max(q) => SL_STATE_CAMMONITOR_MOVE_TDC,
             SL_STATE_CAMMONITOR_MOVE_UP if !geo.left(q) => {
                 return Err((SL_TEXT_CAMMONITOR_MOVE_UP_AREA, [inp.pos, 0]));
@@ -1136,7 +1138,12 @@ impl Track {
         } else if stop_rise {
             return Err((SL_TEXT_CAMMONITOR_STOPPED, [0; 2]));
         } else if reached(now, self.t_ps, p.adwTime[T_MOVE]) {
-            let change = geo.ahead(q, u64::from(self.ps_ref));
+            // Forward only (excentric): a step back within the jitter is no progress.
+            let change = if geo.pendulum {
+                q.abs_diff(u64::from(self.ps_ref))
+            } else {
+                geo.dist(q, u64::from(self.ps_ref)).max(0) as u64
+            };
             if change < u64::from(p.adwValue[MIN_CHANGE]) {
                 return Err((SL_TEXT_CAMMONITOR_TOO_SLOW, [inp.pos, self.ps_ref]));
             }
@@ -1449,6 +1456,10 @@ impl<T: Unsigned, const P1: usize, const P2: usize> Block for FB_CAMMONITOR<T, P
             }
             if h.wAux & LATCHED != 0 {
                 overrun_stop = geo.ahead(q, u64::from(p.dwStopLatch));
+                // Within the jitter behind the latch is no overrun (excentric).
+                if !geo.pendulum && geo.c - overrun_stop <= geo.j {
+                    overrun_stop = 0;
+                }
             }
         }
         let t = |v: u64| T::from_bits(v.min(T::MAX as u64) as u32);
