@@ -7885,6 +7885,18 @@ static void rnd_config_cammonitor_uint(FB_CAMMONITOR_UINT *x)
     { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nBDCUpperLimitFix = (uint16_t)v[rnd() % 7u]; }
     { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nOverrunMaxFix = (uint16_t)v[rnd() % 7u]; }
     x->wInputActive = (uint16_t)(rnd() & 0xFF7Fu);
+    if (rnd() % 2u == 0u) {
+        x->nAllowedPositionJitter = 4; x->nMaxPosition = 8192;
+        if (x->dwOptions & 0x100u) {
+            x->nTDC2UpperLimitFix = 400; x->nTDC2LowerLimitFix = 3696; x->nBDCLowerLimitFix = 3996;
+            x->nBDCUpperLimitFix = 4196; x->nTDC1LowerLimitFix = 4496; x->nTDC1UpperLimitFix = 7796;
+            x->nOverrunMaxFix = 0;
+        } else {
+            x->nTDC1UpperLimitFix = 100; x->nOverrunMaxFix = 800; x->nBDCLowerLimitFix = 3896;
+            x->nBDCUpperLimitFix = 4296; x->nTDC1LowerLimitFix = 8092;
+            x->nTDC2LowerLimitFix = 0; x->nTDC2UpperLimitFix = 0;
+        }
+    }
 }
 /* 1: a valid configuration (want_valid) or an invalid one was drawn into a and b */
 static int draw_cammonitor_uint(FB_CAMMONITOR_UINT *a, FB_CAMMONITOR_UINT *b, int want_valid)
@@ -8028,6 +8040,18 @@ static void rnd_config_cammonitor_udint(FB_CAMMONITOR_UDINT *x)
     { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nBDCUpperLimitFix = (uint32_t)v[rnd() % 7u]; }
     { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nOverrunMaxFix = (uint32_t)v[rnd() % 7u]; }
     x->wInputActive = (uint16_t)(rnd() & 0xFF7Fu);
+    if (rnd() % 2u == 0u) {
+        x->nAllowedPositionJitter = 4; x->nMaxPosition = 8192;
+        if (x->dwOptions & 0x100u) {
+            x->nTDC2UpperLimitFix = 400; x->nTDC2LowerLimitFix = 3696; x->nBDCLowerLimitFix = 3996;
+            x->nBDCUpperLimitFix = 4196; x->nTDC1LowerLimitFix = 4496; x->nTDC1UpperLimitFix = 7796;
+            x->nOverrunMaxFix = 0;
+        } else {
+            x->nTDC1UpperLimitFix = 100; x->nOverrunMaxFix = 800; x->nBDCLowerLimitFix = 3896;
+            x->nBDCUpperLimitFix = 4296; x->nTDC1LowerLimitFix = 8092;
+            x->nTDC2LowerLimitFix = 0; x->nTDC2UpperLimitFix = 0;
+        }
+    }
 }
 /* 1: a valid configuration (want_valid) or an invalid one was drawn into a and b */
 static int draw_cammonitor_udint(FB_CAMMONITOR_UDINT *a, FB_CAMMONITOR_UDINT *b, int want_valid)
