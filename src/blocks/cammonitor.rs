@@ -783,17 +783,30 @@ impl Geo {
 
     /// Position → place on the circle 0 … M (values up to M + J are jitter past 360°).
     fn circle(&self, pos: u64) -> u64 {
-        pos % self.c
+        if pos < self.c {
+            pos
+        } else {
+            pos % self.c
+        }
+    }
+
+    /// Clockwise distance from `from` to `to`, both on the circle.
+    fn forward(&self, to: u64, from: u64) -> u64 {
+        if to >= from {
+            to - from
+        } else {
+            to + self.c - from
+        }
     }
 
     /// Signed distance from `from` to `to`: excentric the short way round the circle,
     /// pendulum along the line (its wrap is an error of its own).
     fn dist(&self, to: u64, from: u64) -> i64 {
-        let (to, from) = (to % self.c, from % self.c);
+        let (to, from) = (self.circle(to), self.circle(from));
         if self.pendulum {
             to as i64 - from as i64
         } else {
-            let d = (to + self.c - from) % self.c;
+            let d = self.forward(to, from);
             if 2 * d > self.c {
                 d as i64 - self.c as i64
             } else {
@@ -804,11 +817,11 @@ impl Geo {
 
     /// Excentric: distance clockwise from `from` to `to`; pendulum: the absolute distance.
     fn ahead(&self, to: u64, from: u64) -> u64 {
-        let (to, from) = (to % self.c, from % self.c);
+        let (to, from) = (self.circle(to), self.circle(from));
         if self.pendulum {
             to.abs_diff(from)
         } else {
-            (to + self.c - from) % self.c
+            self.forward(to, from)
         }
     }
 
