@@ -1266,6 +1266,95 @@ macro_rules! suite {
                 (states, done, back_result)
             }
 
+            /// A random pendulum press swinging between its two TDC areas: `swings` swings,
+            /// each released by a Reset pulse, moving (true position monotone per swing,
+            /// measurement = true + 0…J, steps beyond 2J) from a stop in one TDC area to a
+            /// stop in the other, at least J inside it. Returns the states seen.
+            fn pendulum_swings(rng: &mut Rng, swings: usize) -> Vec<u8> {
+                let max_m: u64 = if core::mem::size_of::<$t>() == 2 {
+                    65_000
+                } else {
+                    2_000_000_000
+                };
+                let m = 2000 + rng.next() % (max_m - 2000);
+                let c = m + 1;
+                let j = rng.next() % (m / 200 + 1);
+                let tdc2_ul = j + 1 + m / 100;
+                let tdc2_ll = 3 * j + 2 + m / 10;
+                let (bdc_ll, bdc_ul) = (m / 2 - j - 1 - m / 50, m / 2 + j + 1 + m / 50);
+                let tdc1_ll = m - 3 * j - 2 - m / 10;
+                let tdc1_ul = m - j - 1 - m / 100;
+                let mut fb = make(
+                    true,
+                    A_RESET | A_POS,
+                    [tdc1_ll, tdc1_ul, tdc2_ll, tdc2_ul, bdc_ll, bdc_ul, 0],
+                );
+                fb.nMaxPosition = m as $t;
+                fb.nAllowedPositionJitter = j as $t;
+                assert_eq!(fb.init(), SL_OK);
+                fb.bRun = 1;
+                let max_step = (m / 25).max(2 * j + 1);
+                let mut now = 1000u32;
+                let mut states = Vec::new();
+                let mut call = |fb: &mut Fb, truth: u64, rng: &mut Rng| {
+                    let meas = (truth + rng.next() % (j + 1)) % c;
+                    fb.nPosition = meas as $t;
+                    now = now.wrapping_add(10);
+                    assert_eq!(fb.cycle(now), SL_OK);
+                    states.push(fb.nState);
+                };
+                let in_tdc2 = |rng: &mut Rng| tdc2_ul + rng.next() % (tdc2_ll - j - tdc2_ul);
+                let in_tdc1 = |rng: &mut Rng| tdc1_ll + rng.next() % (tdc1_ul - j - tdc1_ll);
+                let mut truth = in_tdc2(rng);
+                call(&mut fb, truth, rng);
+                for k in 0..swings {
+                    for r in [1, 0] {
+                        fb.bReset = r;
+                        call(&mut fb, truth, rng);
+                    }
+                    let goal = if k % 2 == 0 {
+                        in_tdc1(rng)
+                    } else {
+                        in_tdc2(rng)
+                    };
+                    while truth != goal {
+                        let step =
+                            (2 * j + 1 + rng.next() % (max_step - 2 * j)).min(truth.abs_diff(goal));
+                        truth = if goal > truth {
+                            truth + step
+                        } else {
+                            truth - step
+                        };
+                        call(&mut fb, truth, rng);
+                    }
+                    for _ in 0..2 * (fb.tStopDetectionTime / 10) + 3 {
+                        call(&mut fb, truth, rng);
+                    }
+                }
+                states
+            }
+
+            /// Property: a pendulum press swinging from one TDC area to the other, each swing
+            /// released by a Reset pulse, makes no error and is never SAFE; every pendulum
+            /// state is reached (≥ 10,000 sequences).
+            #[test]
+            fn pendulum_swings_make_no_error() {
+                let mut rng = Rng(0x9E4D_0000 ^ core::mem::size_of::<$t>() as u64);
+                let mut reached = std::collections::BTreeSet::new();
+                for seq in 0..10_000 * depth() {
+                    let swings = 2 + (rng.next() % 3) as usize;
+                    let states = pendulum_swings(&mut rng, swings);
+                    assert!(
+                        !states.contains(&ERROR) && !states.contains(&SAFE),
+                        "sequence {seq}: {states:?}"
+                    );
+                    reached.extend(states);
+                }
+                for st in [RUN, START, WAIT, 32, 33, 34, 35, 36, 37, 38, 39, 40, 41] {
+                    assert!(reached.contains(&st), "state {st} not reached: {reached:?}");
+                }
+            }
+
             fn depth() -> usize {
                 std::env::var("SL_PROP_DEPTH")
                     .ok()
