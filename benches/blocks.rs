@@ -608,6 +608,39 @@ fn main() {
         "ENV_UDINT", FB_ENVELOPE_UDINT, SL_TYPE_ENVELOPE_UDINT, sl_envelope_udint_cycle;
     }
 
+    // CAMMONITOR: excentric, both hardware cams and Press_Started monitored, released by a
+    // Reset pulse and standing at TDC (RUN: standstill window, ordering check of the
+    // limits, cam checks every call).
+    macro_rules! cammonitor_row {
+        ($($name:literal, $ty:ty, $tag:expr, $cycle:expr;)*) => {$(
+            let mut fb = <$ty>::default();
+            fb.wInputActive = SL_CAMMONITOR_ACTIVE_RESET
+                | SL_CAMMONITOR_ACTIVE_POSITION
+                | SL_CAMMONITOR_ACTIVE_PRESSSTARTED
+                | SL_CAMMONITOR_ACTIVE_OVERRUNCAM
+                | SL_CAMMONITOR_ACTIVE_UPWARDCAM;
+            (fb.tStopDetectionTime, fb.tPressStartDelayTime, fb.tMoveDetectionTime) = (50, 200, 100);
+            (fb.nAllowedPositionJitter, fb.nMinPositionChange, fb.nMaxPosition) = (4, 20, 8192);
+            (fb.nTDC1LowerLimitFix, fb.nTDC1UpperLimitFix) = (8092, 100);
+            (fb.nBDCLowerLimitFix, fb.nBDCUpperLimitFix, fb.nOverrunMaxFix) = (3896, 4296, 800);
+            (fb.nPosition, fb.bOverrunCam, fb.bRun) = (50, 1, 1);
+            fb.init();
+            // The Reset pulse just before the measurement's clock starts at 1.
+            for (t, reset) in [(u32::MAX - 2, 0), (u32::MAX - 1, 1), (u32::MAX, 0)] {
+                fb.bReset = reset;
+                fb.cycle(t);
+            }
+            assert_eq!(fb.nState, SL_STATE_RUN);
+            let private = size_of_val(&fb.stPrivate);
+            rows.push(measure(($name, $tag, timer), batches, fb, private, $cycle, |f| f.nState));
+        )*};
+    }
+    use safelogic::blocks::cammonitor::*;
+    cammonitor_row! {
+        "CAM_UINT", FB_CAMMONITOR_UINT, SL_TYPE_CAMMONITOR_UINT, sl_cammonitor_uint_cycle;
+        "CAM_UDINT", FB_CAMMONITOR_UDINT, SL_TYPE_CAMMONITOR_UDINT, sl_cammonitor_udint_cycle;
+    }
+
     // SLP: multi-turn, limits from the parameters, the position inside them (RUN).
     {
         use safelogic::blocks::slp::*;

@@ -342,6 +342,8 @@ macro_rules! for_each_block {
             $crate::blocks::sli2::FB_SLI2_UDINT => sl_sli2_udint_init, sl_sli2_udint_cycle;
             $crate::blocks::violationcounter::FB_VIOLATIONCOUNTER_UINT => sl_violationcounter_uint_init, sl_violationcounter_uint_cycle;
             $crate::blocks::violationcounter::FB_VIOLATIONCOUNTER_UDINT => sl_violationcounter_udint_init, sl_violationcounter_udint_cycle;
+            $crate::blocks::cammonitor::FB_CAMMONITOR_UINT => sl_cammonitor_uint_init, sl_cammonitor_uint_cycle;
+            $crate::blocks::cammonitor::FB_CAMMONITOR_UDINT => sl_cammonitor_udint_init, sl_cammonitor_udint_cycle;
             $crate::blocks::slp::FB_SLP => sl_slp_init, sl_slp_cycle;
             $crate::blocks::sbt::FB_SBT => sl_sbt_init, sl_sbt_cycle;
             $crate::blocks::advposmon::FB_ADVPOSMON => sl_advposmon_init, sl_advposmon_cycle;

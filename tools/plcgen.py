@@ -1671,6 +1671,23 @@ def adapter_test_c(hdr: Header) -> str:
             else:
                 # small counts (architectures 2, 3, 5) besides the usual magnitudes
                 out.append(f"    {{ static const unsigned v[] = {{0u, 1u, 2u, 3u, 5u, 10u, 100u}}; x->{f.name} = ({c_type_of(f)})v[rnd() % 7u]; }}")
+        names = {f.name for f in params}
+        if {"nMaxPosition", "nAllowedPositionJitter", "nTDC1LowerLimitFix"} <= names and "dwOptions" in names:
+            # A crank monitor's fixed limits (CAMMONITOR, ABI-2 §11.13) are ordered around the
+            # circle with gaps of the jitter; small random values never are: every other draw
+            # takes the manual's example limits for the drawn mode (bit 8 = pendulum).
+            out.append("    if (rnd() % 2u == 0u) {")
+            out.append("        x->nAllowedPositionJitter = 4; x->nMaxPosition = 8192;")
+            out.append("        if (x->dwOptions & 0x100u) {")
+            out.append("            x->nTDC2UpperLimitFix = 400; x->nTDC2LowerLimitFix = 3696; x->nBDCLowerLimitFix = 3996;")
+            out.append("            x->nBDCUpperLimitFix = 4196; x->nTDC1LowerLimitFix = 4496; x->nTDC1UpperLimitFix = 7796;")
+            out.append("            x->nOverrunMaxFix = 0;")
+            out.append("        } else {")
+            out.append("            x->nTDC1UpperLimitFix = 100; x->nOverrunMaxFix = 800; x->nBDCLowerLimitFix = 3896;")
+            out.append("            x->nBDCUpperLimitFix = 4296; x->nTDC1LowerLimitFix = 8092;")
+            out.append("            x->nTDC2LowerLimitFix = 0; x->nTDC2UpperLimitFix = 0;")
+            out.append("        }")
+            out.append("    }")
         out.append("}")
         out.append(f"/* 1: a valid configuration (want_valid) or an invalid one was drawn into a and b */")
         out.append(f"static int draw_{b.lower}({s} *a, {s} *b, int want_valid)")

@@ -76,6 +76,10 @@ cargo run --release --quiet --example speed_monitor >build/speed_rust.txt
 build/c_tests/speed_monitor >build/speed_c.txt
 diff -u build/speed_rust.txt build/speed_c.txt
 echo "examples/c/speed_monitor.c prints exactly what cargo run --example speed_monitor prints ($(wc -l <build/speed_c.txt) lines)"
+cargo run --release --quiet --example press >build/press_rust.txt
+build/c_tests/press >build/press_c.txt
+diff -u build/press_rust.txt build/press_c.txt
+echo "examples/c/press.c prints exactly what cargo run --example press prints ($(wc -l <build/press_c.txt) lines)"
 
 step "install step, SONAME and pkg-config: one program linked dynamically, one statically"
 rm -rf build/prefix build/stage

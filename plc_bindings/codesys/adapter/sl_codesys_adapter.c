@@ -1114,6 +1114,38 @@ void CDECL CDECL_EXT cds_sl_violationcounter_udint_cycle(cds_sl_violationcounter
     p->cds_sl_violationcounter_udint_cycle = sl_violationcounter_udint_cycle(p->pFb, p->tNow);
 }
 
+void CDECL CDECL_EXT cds_sl_cammonitor_uint_init(cds_sl_cammonitor_uint_init_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_cammonitor_uint_init = sl_cammonitor_uint_init(p->pFb);
+}
+
+void CDECL CDECL_EXT cds_sl_cammonitor_uint_cycle(cds_sl_cammonitor_uint_cycle_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_cammonitor_uint_cycle = sl_cammonitor_uint_cycle(p->pFb, p->tNow);
+}
+
+void CDECL CDECL_EXT cds_sl_cammonitor_udint_init(cds_sl_cammonitor_udint_init_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_cammonitor_udint_init = sl_cammonitor_udint_init(p->pFb);
+}
+
+void CDECL CDECL_EXT cds_sl_cammonitor_udint_cycle(cds_sl_cammonitor_udint_cycle_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_cammonitor_udint_cycle = sl_cammonitor_udint_cycle(p->pFb, p->tNow);
+}
+
 void CDECL CDECL_EXT cds_sl_slp_init(cds_sl_slp_init_struct *p)
 {
     if (p == 0) {

@@ -1069,6 +1069,36 @@ typedef struct tagcds_sl_violationcounter_udint_cycle_struct {
 } cds_sl_violationcounter_udint_cycle_struct;
 void CDECL CDECL_EXT cds_sl_violationcounter_udint_cycle(cds_sl_violationcounter_udint_cycle_struct *p);
 
+/* FUNCTION cds_sl_cammonitor_uint_init : DINT -> sl_cammonitor_uint_init() */
+typedef struct tagcds_sl_cammonitor_uint_init_struct {
+    struct FB_CAMMONITOR_UINT *pFb; /* VAR_INPUT pFb : POINTER TO ST_FB_CAMMONITOR_UINT */
+    int32_t cds_sl_cammonitor_uint_init; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_cammonitor_uint_init_struct;
+void CDECL CDECL_EXT cds_sl_cammonitor_uint_init(cds_sl_cammonitor_uint_init_struct *p);
+
+/* FUNCTION cds_sl_cammonitor_uint_cycle : DINT -> sl_cammonitor_uint_cycle() */
+typedef struct tagcds_sl_cammonitor_uint_cycle_struct {
+    struct FB_CAMMONITOR_UINT *pFb; /* VAR_INPUT pFb : POINTER TO ST_FB_CAMMONITOR_UINT */
+    uint32_t tNow; /* VAR_INPUT tNow : UDINT */
+    int32_t cds_sl_cammonitor_uint_cycle; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_cammonitor_uint_cycle_struct;
+void CDECL CDECL_EXT cds_sl_cammonitor_uint_cycle(cds_sl_cammonitor_uint_cycle_struct *p);
+
+/* FUNCTION cds_sl_cammonitor_udint_init : DINT -> sl_cammonitor_udint_init() */
+typedef struct tagcds_sl_cammonitor_udint_init_struct {
+    struct FB_CAMMONITOR_UDINT *pFb; /* VAR_INPUT pFb : POINTER TO ST_FB_CAMMONITOR_UDINT */
+    int32_t cds_sl_cammonitor_udint_init; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_cammonitor_udint_init_struct;
+void CDECL CDECL_EXT cds_sl_cammonitor_udint_init(cds_sl_cammonitor_udint_init_struct *p);
+
+/* FUNCTION cds_sl_cammonitor_udint_cycle : DINT -> sl_cammonitor_udint_cycle() */
+typedef struct tagcds_sl_cammonitor_udint_cycle_struct {
+    struct FB_CAMMONITOR_UDINT *pFb; /* VAR_INPUT pFb : POINTER TO ST_FB_CAMMONITOR_UDINT */
+    uint32_t tNow; /* VAR_INPUT tNow : UDINT */
+    int32_t cds_sl_cammonitor_udint_cycle; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_cammonitor_udint_cycle_struct;
+void CDECL CDECL_EXT cds_sl_cammonitor_udint_cycle(cds_sl_cammonitor_udint_cycle_struct *p);
+
 /* FUNCTION cds_sl_slp_init : DINT -> sl_slp_init() */
 typedef struct tagcds_sl_slp_init_struct {
     struct FB_SLP *pFb; /* VAR_INPUT pFb : POINTER TO ST_FB_SLP */
@@ -1331,6 +1361,10 @@ void CDECL CDECL_EXT cds_sl_diag_text(cds_sl_diag_text_struct *p);
     X(cds_sl_violationcounter_uint_cycle) \
     X(cds_sl_violationcounter_udint_init) \
     X(cds_sl_violationcounter_udint_cycle) \
+    X(cds_sl_cammonitor_uint_init) \
+    X(cds_sl_cammonitor_uint_cycle) \
+    X(cds_sl_cammonitor_udint_init) \
+    X(cds_sl_cammonitor_udint_cycle) \
     X(cds_sl_slp_init) \
     X(cds_sl_slp_cycle) \
     X(cds_sl_sbt_init) \

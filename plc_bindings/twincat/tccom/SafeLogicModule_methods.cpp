@@ -1258,6 +1258,42 @@ HRESULT CSafeLogicModule::sl_violationcounter_udint_cycle(PVOID pFb, int32_t *pn
     return S_OK;
 }
 
+HRESULT CSafeLogicModule::sl_cammonitor_uint_init(PVOID pFb, int32_t *pnResult)
+{
+    if (pFb == NULL || pnResult == NULL) {
+        return E_POINTER;
+    }
+    *pnResult = ::sl_cammonitor_uint_init(static_cast<struct FB_CAMMONITOR_UINT *>(pFb));
+    return S_OK;
+}
+
+HRESULT CSafeLogicModule::sl_cammonitor_uint_cycle(PVOID pFb, int32_t *pnResult, uint32_t tNow)
+{
+    if (pFb == NULL || pnResult == NULL) {
+        return E_POINTER;
+    }
+    *pnResult = ::sl_cammonitor_uint_cycle(static_cast<struct FB_CAMMONITOR_UINT *>(pFb), tNow);
+    return S_OK;
+}
+
+HRESULT CSafeLogicModule::sl_cammonitor_udint_init(PVOID pFb, int32_t *pnResult)
+{
+    if (pFb == NULL || pnResult == NULL) {
+        return E_POINTER;
+    }
+    *pnResult = ::sl_cammonitor_udint_init(static_cast<struct FB_CAMMONITOR_UDINT *>(pFb));
+    return S_OK;
+}
+
+HRESULT CSafeLogicModule::sl_cammonitor_udint_cycle(PVOID pFb, int32_t *pnResult, uint32_t tNow)
+{
+    if (pFb == NULL || pnResult == NULL) {
+        return E_POINTER;
+    }
+    *pnResult = ::sl_cammonitor_udint_cycle(static_cast<struct FB_CAMMONITOR_UDINT *>(pFb), tNow);
+    return S_OK;
+}
+
 HRESULT CSafeLogicModule::sl_slp_init(PVOID pFb, int32_t *pnResult)
 {
     if (pFb == NULL || pnResult == NULL) {
