@@ -21,7 +21,6 @@
 #![allow(non_camel_case_types)] // the ABI's names (FB_CAMMONITOR_UINT …)
 
 use super::analog::{magic, Unsigned};
-use super::BlockInfo;
 use crate::prim::bools::{self, edge, Edge};
 use crate::prim::envelope::Block;
 use crate::prim::header::{param_crc, F_CFG_INVALID, F_RESTART_PREV, SL_PRIVATE_HEADER};
@@ -348,37 +347,28 @@ pub type FB_CAMMONITOR_UINT = FB_CAMMONITOR<u16, 2, 4>;
 /// FB CAMMONITOR, UDINT variant.
 pub type FB_CAMMONITOR_UDINT = FB_CAMMONITOR<u32, 6, 0>;
 
-// The ABI-2 §11.13 numbers of the two layouts.
-macro_rules! layout_rule {
-    ($($ty:ty, $w:literal, $ob:literal, $info:literal;)*) => {$(
-        const _: () = {
-            use core::mem::{offset_of, size_of};
-            assert!(offset_of!($ty, bSettingMode) == 6);
-            assert!(offset_of!($ty, bRun) == 16 && offset_of!($ty, bErrAck) == 17);
-            assert!(offset_of!($ty, nPosition) == 24);
-            assert!(offset_of!($ty, nTDC1LowerLimit) == 24 + $w);
-            assert!(offset_of!($ty, nOverrunMax) == 24 + 7 * $w);
-            assert!(offset_of!($ty, tStopDetectionTime) == 24 + 8 * $w);
-            assert!(offset_of!($ty, dwOptions) == 36 + 8 * $w);
-            assert!(offset_of!($ty, nAllowedPositionJitter) == 40 + 8 * $w);
-            assert!(offset_of!($ty, nOverrunMaxFix) == 40 + 17 * $w);
-            assert!(offset_of!($ty, wInputActive) == 40 + 18 * $w);
-            assert!(offset_of!($ty, bError) == $ob && offset_of!($ty, bBDC) == $ob + 4);
-            assert!(offset_of!($ty, nOverrunTDC) == $ob + 8);
-            assert!(offset_of!($ty, nOverrunStop) == $ob + 8 + $w);
-            assert!(offset_of!($ty, nState) == $info && offset_of!($ty, nDiag) == $info + 2);
-            assert!(offset_of!($ty, nDiagTextId) == $info + 4);
-            assert!(offset_of!($ty, dwDiagPar2) == $info + 8);
-            assert!(offset_of!($ty, dwDiagPar3) == $info + 12);
-            assert!(offset_of!($ty, stPrivate) == $info + 16);
-            assert!(size_of::<$ty>() == $info + 16 + size_of::<SL_CAMMONITOR_PRIVATE>());
-        };
-    )*};
-}
-
-layout_rule! {
-    FB_CAMMONITOR_UINT, 2, 80, 96; FB_CAMMONITOR_UDINT, 4, 120, 136;
-}
+// The ABI-2 §11.13 numbers of the two layouts (the §10.2 rule itself is checked for every
+// registered analog type in registry.rs).
+const _: () = {
+    use core::mem::{offset_of, size_of};
+    type U = FB_CAMMONITOR_UINT;
+    type D = FB_CAMMONITOR_UDINT;
+    assert!(offset_of!(U, nTDC1LowerLimit) == 26 && offset_of!(D, nTDC1LowerLimit) == 28);
+    assert!(offset_of!(U, nOverrunMax) == 38 && offset_of!(D, nOverrunMax) == 52);
+    assert!(offset_of!(U, tStopDetectionTime) == 40 && offset_of!(D, tStopDetectionTime) == 56);
+    assert!(offset_of!(U, dwOptions) == 52 && offset_of!(D, dwOptions) == 68);
+    assert!(
+        offset_of!(U, nAllowedPositionJitter) == 56 && offset_of!(D, nAllowedPositionJitter) == 72
+    );
+    assert!(offset_of!(U, nOverrunMaxFix) == 74 && offset_of!(D, nOverrunMaxFix) == 108);
+    assert!(offset_of!(U, wInputActive) == 76 && offset_of!(D, wInputActive) == 112);
+    assert!(offset_of!(U, bError) == 80 && offset_of!(D, bError) == 120);
+    assert!(offset_of!(U, nOverrunTDC) == 88 && offset_of!(D, nOverrunTDC) == 128);
+    assert!(offset_of!(U, nOverrunStop) == 90 && offset_of!(D, nOverrunStop) == 132);
+    assert!(offset_of!(U, nState) == 96 && offset_of!(D, nState) == 136);
+    assert!(offset_of!(U, stPrivate) == 112 && offset_of!(D, stPrivate) == 152);
+    assert!(size_of::<U>() == 112 + size_of::<SL_CAMMONITOR_PRIVATE>());
+};
 
 crate::blocks::block_states!(
     /// The states of FB CAMMONITOR, both variants (manual §4.26.9).
@@ -443,26 +433,9 @@ const DIAG_VALUES: &[(u16, &str)] = &[
     (0x25, "The TDCUpperLimit is lower or equal than the maximum position jitter"),
 ];
 
-const fn info<T: Unsigned>() -> BlockInfo {
-    BlockInfo {
-        tag: if T::VARIANT == 1 {
-            SL_TYPE_CAMMONITOR_UINT
-        } else {
-            SL_TYPE_CAMMONITOR_UDINT
-        },
-        name: if T::VARIANT == 1 {
-            "CAMMONITOR_UINT"
-        } else {
-            "CAMMONITOR_UDINT"
-        },
-        states: <CamMonitorState as crate::registry::BlockState>::TABLE,
-        diag: &[],
-        diag_values: DIAG_VALUES,
-    }
-}
-
 crate::impl_member!([T: Unsigned, const P1: usize, const P2: usize] FB_CAMMONITOR<T, P1, P2> {
-    info: info::<T>(),
+    info: crate::blocks::analog::variant_info!(T, "CAMMONITOR", CamMonitorState, DIAG_VALUES;
+        UINT = SL_TYPE_CAMMONITOR_UINT, UDINT = SL_TYPE_CAMMONITOR_UDINT),
     state: CamMonitorState,
     private: SL_CAMMONITOR_PRIVATE,
     input: [bAutomatic, bBackwardsMove, bReset, bPressStarted, bOverrunCam, bUpwardCam,
