@@ -1,15 +1,68 @@
 //! Per-block benchmark (issue 3): every block called through its C function with steady
 //! inputs, in the steady state the inputs lead to (RUN where the block has one). Prints the
 //! median and p99 per call, the struct and private-state sizes, and each target.
-//! `cargo bench --bench blocks`. Reports, never asserts timing.
+//! `cargo bench --bench blocks`. Reports, never asserts timing. With `--bench` and valgrind
+//! on the machine it also runs its own smoke mode under callgrind and prints the
+//! instructions per steady call of every row (repeatable where times are not);
+//! `tools/callgrind_blocks.sh` prints only those.
 
 use safelogic::ffi::*;
 use safelogic::*;
+use std::collections::HashMap;
 use std::hint::black_box;
 use std::mem::size_of_val;
+use std::process::Command;
 use std::time::Instant;
 
 const CALLS_PER_BATCH: u32 = 1000;
+const WARMUP_CALLS: u32 = 200;
+const SMOKE_BATCHES: usize = 20;
+
+/// Instructions per call of every exported `sl_*_cycle` in one callgrind run of this bench's
+/// smoke mode (inclusive counts of the functions, divided by the calls each row makes), or
+/// why there are none.
+fn instructions_per_call() -> Result<HashMap<String, f64>, String> {
+    let exe = std::env::current_exe().map_err(|e| e.to_string())?;
+    let out = std::env::temp_dir().join(format!("sl-blocks-{}.callgrind", std::process::id()));
+    let run = Command::new("valgrind")
+        .arg("--tool=callgrind")
+        .arg(format!("--callgrind-out-file={}", out.display()))
+        .arg("--toggle-collect=sl_*_cycle")
+        .arg(&exe)
+        .output()
+        .map_err(|_| "valgrind is not installed".to_string())?;
+    if !run.status.success() {
+        return Err("valgrind failed".into());
+    }
+    let ann = Command::new("callgrind_annotate")
+        .arg("--inclusive=yes")
+        .arg(&out)
+        .output()
+        .map_err(|_| "callgrind_annotate is not installed".to_string())?;
+    let _ = std::fs::remove_file(&out);
+    let calls = f64::from(WARMUP_CALLS) + (SMOKE_BATCHES as f64) * f64::from(CALLS_PER_BATCH);
+    let mut per_call = HashMap::new();
+    for line in String::from_utf8_lossy(&ann.stdout).lines() {
+        let mut words = line.split_whitespace();
+        let (Some(count), Some(_)) = (words.next(), words.next()) else {
+            continue;
+        };
+        let Ok(count) = count.replace(',', "").parse::<f64>() else {
+            continue;
+        };
+        let Some(name) = line
+            .split(':')
+            .nth(1)
+            .and_then(|f| f.split_whitespace().next())
+        else {
+            continue;
+        };
+        if name.starts_with("sl_") && name.ends_with("_cycle") {
+            per_call.entry(name.to_string()).or_insert(count / calls);
+        }
+    }
+    Ok(per_call)
+}
 
 struct Row {
     name: &'static str,
@@ -34,7 +87,7 @@ fn measure<T>(
 ) -> Row {
     let f: unsafe extern "C" fn(*mut T, u32) -> i32 = black_box(cycle);
     let mut t = 0u32;
-    for _ in 0..200 {
+    for _ in 0..WARMUP_CALLS {
         t += 1;
         unsafe { f(&mut fb, t) };
     }
@@ -63,7 +116,13 @@ fn measure<T>(
 
 fn main() {
     let quick = !std::env::args().any(|a| a == "--bench");
-    let batches = if quick { 20 } else { 3000 };
+    let only_instructions = std::env::args().any(|a| a == "--instructions");
+    let instructions = (!quick || only_instructions).then(instructions_per_call);
+    let batches = if quick || only_instructions {
+        SMOKE_BATCHES
+    } else {
+        3000
+    };
     // The virtual CPUs here run slower for the first few hundred ms of a busy process: spin
     // first, so the first rows are not penalised.
     let spin = Instant::now();
@@ -549,6 +608,39 @@ fn main() {
         "ENV_UDINT", FB_ENVELOPE_UDINT, SL_TYPE_ENVELOPE_UDINT, sl_envelope_udint_cycle;
     }
 
+    // CAMMONITOR: excentric, both hardware cams and Press_Started monitored, released by a
+    // Reset pulse and standing at TDC (RUN: standstill window, ordering check of the
+    // limits, cam checks every call).
+    macro_rules! cammonitor_row {
+        ($($name:literal, $ty:ty, $tag:expr, $cycle:expr;)*) => {$(
+            let mut fb = <$ty>::default();
+            fb.wInputActive = SL_CAMMONITOR_ACTIVE_RESET
+                | SL_CAMMONITOR_ACTIVE_POSITION
+                | SL_CAMMONITOR_ACTIVE_PRESSSTARTED
+                | SL_CAMMONITOR_ACTIVE_OVERRUNCAM
+                | SL_CAMMONITOR_ACTIVE_UPWARDCAM;
+            (fb.tStopDetectionTime, fb.tPressStartDelayTime, fb.tMoveDetectionTime) = (50, 200, 100);
+            (fb.nAllowedPositionJitter, fb.nMinPositionChange, fb.nMaxPosition) = (4, 20, 8192);
+            (fb.nTDC1LowerLimitFix, fb.nTDC1UpperLimitFix) = (8092, 100);
+            (fb.nBDCLowerLimitFix, fb.nBDCUpperLimitFix, fb.nOverrunMaxFix) = (3896, 4296, 800);
+            (fb.nPosition, fb.bOverrunCam, fb.bRun) = (50, 1, 1);
+            fb.init();
+            // The Reset pulse just before the measurement's clock starts at 1.
+            for (t, reset) in [(u32::MAX - 2, 0), (u32::MAX - 1, 1), (u32::MAX, 0)] {
+                fb.bReset = reset;
+                fb.cycle(t);
+            }
+            assert_eq!(fb.nState, SL_STATE_RUN);
+            let private = size_of_val(&fb.stPrivate);
+            rows.push(measure(($name, $tag, timer), batches, fb, private, $cycle, |f| f.nState));
+        )*};
+    }
+    use safelogic::blocks::cammonitor::*;
+    cammonitor_row! {
+        "CAM_UINT", FB_CAMMONITOR_UINT, SL_TYPE_CAMMONITOR_UINT, sl_cammonitor_uint_cycle;
+        "CAM_UDINT", FB_CAMMONITOR_UDINT, SL_TYPE_CAMMONITOR_UDINT, sl_cammonitor_udint_cycle;
+    }
+
     // SLP: multi-turn, limits from the parameters, the position inside them (RUN).
     {
         use safelogic::blocks::slp::*;
@@ -658,17 +750,34 @@ fn main() {
         }
     );
     println!("  CPU: {cpu}; {batches} batches x {CALLS_PER_BATCH} calls, steady inputs, 1 ms per call, through the C functions");
+    let instr = |name: &str| match &instructions {
+        Some(Ok(m)) => m
+            .get(&format!("sl_{}_cycle", name.to_ascii_lowercase()))
+            .map_or("-".to_string(), |n| format!("{n:.0}")),
+        _ => "-".to_string(),
+    };
+    if let Some(Err(why)) = &instructions {
+        println!("  instructions per call: not counted ({why})");
+    }
+    if only_instructions {
+        println!("  {:<18} {:>10}", "block", "instr/call");
+        for r in &rows {
+            println!("  {:<18} {:>10}", r.name, instr(r.name));
+        }
+        return;
+    }
     println!(
-        "  {:<9} {:<10} {:>10} {:>10} {:>7} {:>8} {:>9}  result",
-        "block", "state", "median ns", "p99 ns", "size B", "priv. B", "target ns"
+        "  {:<9} {:<10} {:>10} {:>10} {:>10} {:>7} {:>8} {:>9}  result",
+        "block", "state", "median ns", "p99 ns", "instr/call", "size B", "priv. B", "target ns"
     );
     for r in &rows {
         println!(
-            "  {:<9} {:<10} {:>10.2} {:>10.2} {:>7} {:>8} {:>9}  {}",
+            "  {:<9} {:<10} {:>10.2} {:>10.2} {:>10} {:>7} {:>8} {:>9}  {}",
             r.name,
             state_name(r.ty, r.state),
             r.median,
             r.p99,
+            instr(r.name),
             r.size,
             r.private,
             r.target,

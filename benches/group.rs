@@ -1,6 +1,8 @@
 //! Group benchmark (issue 4): one TwinSAFE group of 1,000 mixed members wired with links,
-//! run through the C ABI (`sl_group_cycle`). Prints median and p99 per group cycle.
-//! `cargo bench --bench group`. Reports, never asserts timing.
+//! run through the C ABI (`sl_group_cycle`). Prints median and p99 per group cycle, and the
+//! cost per member of the same pattern at 10, 100, 1,000 and 10,000 members (the curve of
+//! issue "Faster than hand-written ST"). `cargo bench --bench group`. Reports, never asserts
+//! timing.
 
 use safelogic::ffi::{sl_group_add_link, sl_group_add_member, sl_group_cycle, sl_group_init};
 use safelogic::*;
@@ -9,6 +11,8 @@ use std::mem::offset_of;
 use std::time::Instant;
 
 const MEMBERS: usize = 1000;
+/// Group sizes of the per-member cost curve.
+const CURVE: [usize; 4] = [10, 100, 1000, 10_000];
 const TARGET_MEDIAN_US: f64 = 5.0;
 
 /// The blocks of the group, each kind in its own vector (stable addresses for the table).
@@ -32,10 +36,10 @@ const PATTERN: [u16; 5] = [
     SL_TYPE_TON,
 ];
 
-/// Boxed: the group's address is sealed into its member entries (semantics GR14), so the
-/// plant must not move once the members are added (a returned struct may be moved).
-fn build() -> Box<Plant> {
-    let per = MEMBERS / PATTERN.len();
+/// The plant is boxed before the group is set up: the group's seal covers its address, so
+/// it must not move afterwards.
+fn build(members: usize) -> Box<Plant> {
+    let per = members / PATTERN.len();
     let mut p = Box::new(Plant {
         estops: vec![
             FB_ESTOP {
@@ -76,8 +80,8 @@ fn build() -> Box<Plant> {
             per
         ],
         group: SL_GROUP::default(),
-        members: vec![SL_MEMBER::default(); MEMBERS],
-        links: vec![SL_LINK::default(); 2 * MEMBERS],
+        members: vec![SL_MEMBER::default(); members],
+        links: vec![SL_LINK::default(); 2 * members],
     });
     for e in &mut p.estops {
         (e.bEStopIn1, e.bEStopIn2) = (1, 1);
@@ -99,11 +103,11 @@ fn build() -> Box<Plant> {
     let g = &mut p.group as *mut SL_GROUP;
     let (mt, lt) = (p.members.as_mut_ptr(), p.links.as_mut_ptr());
     assert_eq!(
-        unsafe { sl_group_init(g, mt, MEMBERS as u16, lt, (2 * MEMBERS) as u16) },
+        unsafe { sl_group_init(g, mt, members as u16, lt, (2 * members) as u16) },
         SL_OK
     );
     let (mut ie, mut im, mut ia, mut io, mut it) = (0, 0, 0, 0, 0);
-    for i in 0..MEMBERS {
+    for i in 0..members {
         let ty = PATTERN[i % PATTERN.len()];
         let block: *mut core::ffi::c_void = match ty {
             SL_TYPE_ESTOP => (&mut p.estops[ie] as *mut FB_ESTOP).cast(),
@@ -127,7 +131,7 @@ fn build() -> Box<Plant> {
     // Wiring inside each pattern of five: AND(i+2) = ESTOP(i) · MON(i+1); OR(i+3) = AND(i+2)
     // + TON(i+4) (a link from a later member: last cycle's value); TON(i+4) delays OR(i+3).
     let o = |f: usize| f as u16;
-    for base in (0..MEMBERS).step_by(PATTERN.len()) {
+    for base in (0..members).step_by(PATTERN.len()) {
         let b = base as u16;
         let wires = [
             (
@@ -176,6 +180,15 @@ fn percentile(sorted: &[f64], q: f64) -> f64 {
     sorted[((sorted.len() - 1) as f64 * q).round() as usize]
 }
 
+/// What one group size measured.
+struct Run {
+    median_us: f64,
+    p99_us: f64,
+    links: u16,
+    running: usize,
+    guards: usize,
+}
+
 fn main() {
     let quick = !std::env::args().any(|a| a == "--bench");
     let cycles = if quick { 200 } else { 20_000 };
@@ -184,7 +197,60 @@ fn main() {
     while spin.elapsed().as_millis() < if quick { 10 } else { 1500 } {
         black_box(spin.elapsed());
     }
-    let mut p = build();
+    let r = measure(MEMBERS, cycles);
+    println!(
+        "safelogic group benchmark{}",
+        if quick {
+            " (smoke run: pass --bench for figures)"
+        } else {
+            ""
+        }
+    );
+    println!(
+        "  group     : {MEMBERS} members (ESTOP, MON, AND, OR, TON repeating), {} links",
+        r.links
+    );
+    println!(
+        "  after start: {} of {} ESTOP/MON members in RUN",
+        r.running, r.guards
+    );
+    println!("  cycles    : {cycles}, one sl_group_cycle each, timed singly");
+    println!(
+        "  per group cycle: median {:.2} us, p99 {:.2} us, per member {:.1} ns (target median <= {TARGET_MEDIAN_US} us: {})",
+        r.median_us,
+        r.p99_us,
+        r.median_us * 1000.0 / MEMBERS as f64,
+        if r.median_us <= TARGET_MEDIAN_US { "PASS" } else { "MISS" }
+    );
+    println!("  cost per member by group size (same pattern, one link per member):");
+    let mut per_member = Vec::new();
+    for n in CURVE {
+        // about the same number of member calls at every size
+        let c = (cycles * MEMBERS / n).clamp(20, 200_000);
+        let r = measure(n, c);
+        assert_eq!(
+            r.running, r.guards,
+            "{n} members: every ESTOP/MON reached RUN"
+        );
+        let ns = r.median_us * 1000.0 / n as f64;
+        per_member.push(ns);
+        println!(
+            "    {n:>6} members: median {:>9.2} us, p99 {:>9.2} us per group cycle, {ns:>6.1} ns per member ({c} cycles)",
+            r.median_us, r.p99_us
+        );
+    }
+    let (lo, hi) = per_member
+        .iter()
+        .fold((f64::MAX, 0.0f64), |(lo, hi), &x| (lo.min(x), hi.max(x)));
+    println!(
+        "    largest / smallest cost per member: {:.2}x (target: flat within 1.5x)",
+        hi / lo
+    );
+}
+
+/// Builds a group of `members`, starts it, and times `cycles` group cycles.
+fn measure(members: usize, cycles: usize) -> Run {
+    let mut p = build(members);
     p.group.bRun = 1;
     let (g, mt, lt) = (
         &mut p.group as *mut SL_GROUP,
@@ -221,27 +287,11 @@ fn main() {
         t += 1;
     }
     times.sort_by(f64::total_cmp);
-    let (median, p99) = (percentile(&times, 0.5), percentile(&times, 0.99));
-    println!(
-        "safelogic group benchmark{}",
-        if quick {
-            " (smoke run: pass --bench for figures)"
-        } else {
-            ""
-        }
-    );
-    println!(
-        "  group     : {MEMBERS} members (ESTOP, MON, AND, OR, TON repeating), {} links",
-        p.group.nLinks
-    );
-    println!(
-        "  after start: {running} of {} ESTOP/MON members in RUN",
-        p.estops.len() + p.mons.len()
-    );
-    println!("  cycles    : {cycles}, one sl_group_cycle each, timed singly");
-    println!(
-        "  per group cycle: median {median:.2} us, p99 {p99:.2} us, per member {:.1} ns (target median <= {TARGET_MEDIAN_US} us: {})",
-        median * 1000.0 / MEMBERS as f64,
-        if median <= TARGET_MEDIAN_US { "PASS" } else { "MISS" }
-    );
+    Run {
+        median_us: percentile(&times, 0.5),
+        p99_us: percentile(&times, 0.99),
+        links: p.group.nLinks,
+        running,
+        guards: p.estops.len() + p.mons.len(),
+    }
 }

@@ -80,7 +80,7 @@ void h_check_diag_text(uint16_t type, uint16_t diag, const char *expected, int c
 /* Scenario groups (test_estop.c, test_mon.c, test_api.c, test_group.c, test_logic.c,
  * test_opmode.c, test_twohand.c, test_muting.c, test_edm.c, test_flipflop.c,
  * test_timers.c, test_arith.c, test_scale_speed.c, test_sli.c, test_loadsensing.c,
- * test_envelope.c, test_fsoe.c, test_slp.c, test_sbt.c, test_advposmon.c). */
+ * test_envelope.c, test_fsoe.c, test_slp.c, test_sbt.c, test_advposmon.c, test_cammonitor.c). */
 void run_estop_scenarios(void);
 void run_mon_scenarios(void);
 void run_api_scenarios(void);
@@ -101,5 +101,6 @@ void run_sli_scenarios(void);
 void run_slp_scenarios(void);
 void run_sbt_scenarios(void);
 void run_advposmon_scenarios(void);
+void run_cammonitor_scenarios(void);
 
 #endif /* SL_C_TESTS_HARNESS_H */

@@ -22,3 +22,4 @@
 #include "test_slp.c"
 #include "test_sbt.c"
 #include "test_advposmon.c"
+#include "test_cammonitor.c"

@@ -173,6 +173,372 @@
 #define ARITH_ACTIVE 768
 
 /*
+ Type tag of FB_CAMMONITOR_UINT (ABI-2 §10.6, order of §10.3).
+ */
+#define SL_TYPE_CAMMONITOR_UINT 70
+
+/*
+ FB_CAMMONITOR_UDINT.
+ */
+#define SL_TYPE_CAMMONITOR_UDINT 71
+
+/*
+ Option: "Pendulum Mode"; clear = "Excentric Mode".
+ */
+#define SL_OPT_CAMMONITOR_PENDULUM (1 << 8)
+
+/*
+ State WAIT-FOR-RESET (15): waiting for a Reset pulse after STOP or RESET.
+ */
+#define SL_STATE_CAMMONITOR_WAIT_FOR_RESET 15
+
+/*
+ State MOVE-STOP (16, excentric): stopped in the TDC range.
+ */
+#define SL_STATE_CAMMONITOR_MOVE_STOP 16
+
+/*
+ State MOVE-START (17, excentric): Reset TRUE in MOVE-STOP.
+ */
+#define SL_STATE_CAMMONITOR_MOVE_START 17
+
+/*
+ State MOVE-DOWN (18, excentric): Reset fell in MOVE-START.
+ */
+#define SL_STATE_CAMMONITOR_MOVE_DOWN 18
+
+/*
+ State MOVE-UP (19, excentric): LeftArea reached in MOVE-DOWN.
+ */
+#define SL_STATE_CAMMONITOR_MOVE_UP 19
+
+/*
+ State MOVE-TDC (20, excentric): TDCAreaMax reached in MOVE-UP.
+ */
+#define SL_STATE_CAMMONITOR_MOVE_TDC 20
+
+/*
+ State MOVE-DOWN-CLOCKWISE (32, pendulum).
+ */
+#define SL_STATE_CAMMONITOR_MOVE_DOWN_CW 32
+
+/*
+ State MOVE-UP-CLOCKWISE (33, pendulum).
+ */
+#define SL_STATE_CAMMONITOR_MOVE_UP_CW 33
+
+/*
+ State MOVE-UP-TDC1 (34, pendulum).
+ */
+#define SL_STATE_CAMMONITOR_MOVE_UP_TDC1 34
+
+/*
+ State MOVE-STOP-TDC1 (35, pendulum).
+ */
+#define SL_STATE_CAMMONITOR_MOVE_STOP_TDC1 35
+
+/*
+ State MOVE-START-TDC1 (36, pendulum).
+ */
+#define SL_STATE_CAMMONITOR_MOVE_START_TDC1 36
+
+/*
+ State MOVE-DOWN-CONTRA-CLOCKWISE (37, pendulum).
+ */
+#define SL_STATE_CAMMONITOR_MOVE_DOWN_CCW 37
+
+/*
+ State MOVE-UP-CONTRA-CLOCKWISE (38, pendulum).
+ */
+#define SL_STATE_CAMMONITOR_MOVE_UP_CCW 38
+
+/*
+ State MOVE-UP-TDC2 (39, pendulum).
+ */
+#define SL_STATE_CAMMONITOR_MOVE_UP_TDC2 39
+
+/*
+ State MOVE-STOP-TDC2 (40, pendulum).
+ */
+#define SL_STATE_CAMMONITOR_MOVE_STOP_TDC2 40
+
+/*
+ State MOVE-START-TDC2 (41, pendulum).
+ */
+#define SL_STATE_CAMMONITOR_MOVE_START_TDC2 41
+
+/*
+ `wInputActive` bit of Automatic (optional, inactive = FALSE).
+ */
+#define SL_CAMMONITOR_ACTIVE_AUTOMATIC (1 << 0)
+
+/*
+ `wInputActive` bit of BackwardsMove (optional; excentric only).
+ */
+#define SL_CAMMONITOR_ACTIVE_BACKWARDSMOVE (1 << 1)
+
+/*
+ `wInputActive` bit of Reset (required).
+ */
+#define SL_CAMMONITOR_ACTIVE_RESET (1 << 2)
+
+/*
+ `wInputActive` bit of Press_Started (optional; active = movement is expected).
+ */
+#define SL_CAMMONITOR_ACTIVE_PRESSSTARTED (1 << 3)
+
+/*
+ `wInputActive` bit of OverrunCam (optional hardware cam; excentric only).
+ */
+#define SL_CAMMONITOR_ACTIVE_OVERRUNCAM (1 << 4)
+
+/*
+ `wInputActive` bit of UpwardCam (optional hardware cam; excentric only).
+ */
+#define SL_CAMMONITOR_ACTIVE_UPWARDCAM (1 << 5)
+
+/*
+ `wInputActive` bit of SettingMode (optional).
+ */
+#define SL_CAMMONITOR_ACTIVE_SETTINGMODE (1 << 6)
+
+/*
+ `wInputActive` bit of Position (required).
+ */
+#define SL_CAMMONITOR_ACTIVE_POSITION (1 << 8)
+
+/*
+ `wInputActive` bit of TDC1_LowerLimit: set = the input, clear = the fixed value.
+ */
+#define SL_CAMMONITOR_ACTIVE_TDC1LOWERLIMIT (1 << 9)
+
+/*
+ `wInputActive` bit of TDC1_UpperLimit.
+ */
+#define SL_CAMMONITOR_ACTIVE_TDC1UPPERLIMIT (1 << 10)
+
+/*
+ `wInputActive` bit of TDC2_LowerLimit (pendulum only).
+ */
+#define SL_CAMMONITOR_ACTIVE_TDC2LOWERLIMIT (1 << 11)
+
+/*
+ `wInputActive` bit of TDC2_UpperLimit (pendulum only).
+ */
+#define SL_CAMMONITOR_ACTIVE_TDC2UPPERLIMIT (1 << 12)
+
+/*
+ `wInputActive` bit of BDC_LowerLimit.
+ */
+#define SL_CAMMONITOR_ACTIVE_BDCLOWERLIMIT (1 << 13)
+
+/*
+ `wInputActive` bit of BDC_UpperLimit.
+ */
+#define SL_CAMMONITOR_ACTIVE_BDCUPPERLIMIT (1 << 14)
+
+/*
+ `wInputActive` bit of OverrunMax (excentric only).
+ */
+#define SL_CAMMONITOR_ACTIVE_OVERRUNMAX (1 << 15)
+
+/*
+ Largest value of the three TIME parameters (ABI-2 §12.9, semantics C10).
+ */
+#define SL_CAMMONITOR_TIME_MAX 65535
+
+/*
+ `nDiag` of a message = its Text ID minus this (ABI-2 §10.4: no diag table).
+ */
+#define SL_CAMMONITOR_DIAG_TEXT_BASE 16384
+
+/*
+ Message 0x4001 (pendulum): TDC2UpperLimit <= AllowedPositionJitter.
+ */
+#define SL_TEXT_CAMMONITOR_TDC2UL_JITTER 16385
+
+/*
+ Message 0x4002: Position > MaxPosition + AllowedPositionJitter.
+ */
+#define SL_TEXT_CAMMONITOR_POSITION_RANGE 16386
+
+/*
+ Message 0x4003: OverrunCAM FALSE in the TDC area.
+ */
+#define SL_TEXT_CAMMONITOR_OVERRUNCAM_FALSE_TDC 16387
+
+/*
+ Message 0x4004: OverrunCAM rose outside BDCUpperLimit … TDCLowerLimit.
+ */
+#define SL_TEXT_CAMMONITOR_OVERRUNCAM_RISE 16388
+
+/*
+ Message 0x4005: OverrunCAM TRUE in the BDC area beyond BDCLowerLimit.
+ */
+#define SL_TEXT_CAMMONITOR_OVERRUNCAM_TRUE_BDC 16389
+
+/*
+ Message 0x4006: OverrunCAM fell outside OverrunMax … BDCLowerLimit.
+ */
+#define SL_TEXT_CAMMONITOR_OVERRUNCAM_FALL 16390
+
+/*
+ Message 0x4007: UpwardsCAM FALSE between BDCUpperLimit and TDCLowerLimit.
+ */
+#define SL_TEXT_CAMMONITOR_UPWARDCAM_FALSE_LEFT 16391
+
+/*
+ Message 0x4008: UpwardsCAM rose outside BDCLowerLimit … TDCLowerLimit.
+ */
+#define SL_TEXT_CAMMONITOR_UPWARDCAM_RISE 16392
+
+/*
+ Message 0x4009: UpwardsCAM fell outside TDCLowerLimit … OverrunMax.
+ */
+#define SL_TEXT_CAMMONITOR_UPWARDCAM_FALL 16393
+
+/*
+ Message 0x400A: moved in MOVE-STOP.
+ */
+#define SL_TEXT_CAMMONITOR_MOVED_MOVE_STOP 16394
+
+/*
+ Message 0x400B: moved in MOVE-START (and in START, excentric).
+ */
+#define SL_TEXT_CAMMONITOR_MOVED_MOVE_START 16395
+
+/*
+ Message 0x400C: between OverrunMax and BDC in MOVE-UP.
+ */
+#define SL_TEXT_CAMMONITOR_MOVE_UP_AREA 16396
+
+/*
+ Message 0x400D: left the TDC area (past OverrunMax) while waiting for a stop.
+ */
+#define SL_TEXT_CAMMONITOR_LEFT_TDC 16397
+
+/*
+ Message 0x400E: moved backwards without BackwardsMove.
+ */
+#define SL_TEXT_CAMMONITOR_BACKWARDS 16398
+
+/*
+ Message 0x400F: UpwardsCAM TRUE between OverrunMax and BDCLowerLimit.
+ */
+#define SL_TEXT_CAMMONITOR_UPWARDCAM_TRUE_RIGHT 16399
+
+/*
+ Message 0x4010 (pendulum): circle overflow.
+ */
+#define SL_TEXT_CAMMONITOR_CIRCLE_OVERFLOW 16400
+
+/*
+ Message 0x4011 (pendulum): moved in MOVE-STOP-TDC1/2.
+ */
+#define SL_TEXT_CAMMONITOR_MOVED_STOP_TDC 16401
+
+/*
+ Message 0x4012: BackwardsMove TRUE between 180° and 360°.
+ */
+#define SL_TEXT_CAMMONITOR_BACKWARDS_AREA 16402
+
+/*
+ Message 0x4013: BackwardsMove TRUE while moving clockwise.
+ */
+#define SL_TEXT_CAMMONITOR_BACKWARDS_CLOCKWISE 16403
+
+/*
+ Message 0x4014 (pendulum): moved in MOVE-START-TDC1/2 (and in START).
+ */
+#define SL_TEXT_CAMMONITOR_MOVED_START_TDC 16404
+
+/*
+ Message 0x4015 (excentric): TDC1LowerLimit + J > MaxPosition.
+ */
+#define SL_TEXT_CAMMONITOR_TDC1LL_MAX 16405
+
+/*
+ Message 0x4016: BDCUpperLimit + 2J >= TDC1LowerLimit.
+ */
+#define SL_TEXT_CAMMONITOR_BDCUL_TDC1LL 16406
+
+/*
+ Message 0x4017: BDCUpperLimit <= MaxPosition/2 + J.
+ */
+#define SL_TEXT_CAMMONITOR_BDCUL_HALF 16407
+
+/*
+ Message 0x4018: BDCLowerLimit + J >= MaxPosition/2.
+ */
+#define SL_TEXT_CAMMONITOR_BDCLL_HALF 16408
+
+/*
+ Message 0x4019 (excentric): OverrunMax + 2J >= BDCLowerLimit.
+ */
+#define SL_TEXT_CAMMONITOR_OVERRUNMAX_BDCLL 16409
+
+/*
+ Message 0x401A (excentric): TDC1UpperLimit + 2J >= OverrunMax.
+ */
+#define SL_TEXT_CAMMONITOR_TDC1UL_OVERRUNMAX 16410
+
+/*
+ Message 0x401B (pendulum): TDC1UpperLimit + J >= MaxPosition.
+ */
+#define SL_TEXT_CAMMONITOR_TDC1UL_MAX 16411
+
+/*
+ Message 0x401C (pendulum): TDC1LowerLimit + 2J >= TDC1UpperLimit.
+ */
+#define SL_TEXT_CAMMONITOR_TDC1LL_TDC1UL 16412
+
+/*
+ Message 0x401D (pendulum): TDC2LowerLimit + 2J >= BDCLowerLimit.
+ */
+#define SL_TEXT_CAMMONITOR_TDC2LL_BDCLL 16413
+
+/*
+ Message 0x401E (pendulum): TDC2UpperLimit + 2J >= TDC2LowerLimit.
+ */
+#define SL_TEXT_CAMMONITOR_TDC2UL_TDC2LL 16414
+
+/*
+ Message 0x401F: Press_Started TRUE, no movement within PressStartDelayTime.
+ */
+#define SL_TEXT_CAMMONITOR_NOT_STARTED 16415
+
+/*
+ Message 0x4020: Press_Started TRUE, stopped after moving.
+ */
+#define SL_TEXT_CAMMONITOR_STOPPED 16416
+
+/*
+ Message 0x4021: Press_Started TRUE, moved less than MinPositionChange within
+ MoveDetectionTime (parameters: Position, comparison position).
+ */
+#define SL_TEXT_CAMMONITOR_TOO_SLOW 16417
+
+/*
+ Message 0x4022 (pendulum): counter-clockwise while moving up clockwise.
+ */
+#define SL_TEXT_CAMMONITOR_CCW_MOVING_UP_CW 16418
+
+/*
+ Message 0x4023 (pendulum): clockwise while moving up counter-clockwise.
+ */
+#define SL_TEXT_CAMMONITOR_CW_MOVING_UP_CCW 16419
+
+/*
+ Message 0x4024: moved in WAIT-FOR-RESET.
+ */
+#define SL_TEXT_CAMMONITOR_MOVED_WAIT_FOR_RESET 16420
+
+/*
+ Message 0x4025 (excentric): TDC1UpperLimit <= AllowedPositionJitter.
+ */
+#define SL_TEXT_CAMMONITOR_TDC1UL_JITTER 16421
+
+/*
  Type tag of FB_COMPARE_INT (ABI-2 §10.6: sequential from 16 in the order of §10.3).
  */
 #define SL_TYPE_COMPARE_INT 32
@@ -2218,7 +2584,7 @@ typedef struct SL_FSOE_FRAME {
    */
   uint8_t nCmd;
   /*
-   Offset 1. Reason when rejected (2 unknown command, 4 CRC); else a Reset frame's code (SafeData[0]), 0 for other commands.
+   Offset 1. Reason when rejected (2 unknown command, 4 CRC); else a Reset frame's code (SafeData byte 0), 0 for other commands.
    */
   uint8_t nResetCode;
   /*
@@ -9985,6 +10351,518 @@ typedef struct FB_VIOLATIONCOUNTER_UDINT {
 
 
 /*
+ Private state of FB CAMMONITOR (128 bytes). Never written by the user.
+ */
+typedef struct SL_CAMMONITOR_PRIVATE {
+  /*
+   Common head (`wAux`: Stopped, Press_Started progress, OverrunStop latched,
+   `F_RESTART_PREV`: Reset's level).
+   */
+  struct SL_PRIVATE_HEADER stHeader;
+  /*
+   Latched `wInputActive`.
+   */
+  uint16_t wActive;
+  /*
+   Text ID of the message of the current ERROR.
+   */
+  uint16_t wText;
+  /*
+   Latched `dwOptions`.
+   */
+  uint32_t dwOptions;
+  /*
+   Latched tStopDetectionTime, tPressStartDelayTime, tMoveDetectionTime (ms).
+   */
+  uint32_t adwTime[3];
+  /*
+   Latched AllowedPositionJitter, MinPositionChange, MaxPosition and the seven fixed
+   limits (TDC1 LL, TDC1 UL, TDC2 LL, TDC2 UL, BDC LL, BDC UL, OverrunMax).
+   */
+  uint32_t adwValue[10];
+  /*
+   Reference position of the standstill window (position at its start).
+   */
+  uint32_t dwRef;
+  /*
+   Position (on the circle) of the previous running call.
+   */
+  uint32_t dwLast;
+  /*
+   Start of the standstill window (StopDetectionTime).
+   */
+  uint32_t tRef;
+  /*
+   Start of the PressStartDelayTime / MoveDetectionTime timer.
+   */
+  uint32_t tPs;
+  /*
+   Comparison position of the MoveDetectionTime check.
+   */
+  uint32_t dwPsRef;
+  /*
+   Position at the last falling edge of Press_Started (OverrunStop).
+   */
+  uint32_t dwStopLatch;
+  /*
+   Message parameters 2 and 3 latched at the ERROR entry.
+   */
+  uint32_t adwPar[2];
+  /*
+   Edge memories of Press_Started, OverrunCam, UpwardCam.
+   */
+  uint8_t nEdges;
+  /*
+   Reserved.
+   */
+  uint8_t aReserved[7];
+} SL_CAMMONITOR_PRIVATE;
+
+/*
+ FB CAMMONITOR instance (ABI-2 §11.13), generic over the unsigned position type `T`:
+ `P1` (after `wInputActive`) and `P2` (after OverrunStop) are the reserved gaps that make
+ the two layouts differ. Analog fields: 16-bit offset / 32-bit offset.
+ */
+typedef struct FB_CAMMONITOR_UINT {
+  /*
+   Offset 0. Automatic: TRUE = automatic mode, no parameter verification and no
+   movement or cam checks (active bit 0; inactive = FALSE).
+   */
+  SL_BOOL bAutomatic;
+  /*
+   Offset 1. BackwardsMove: backward movement permitted (excentric; active bit 1).
+   */
+  SL_BOOL bBackwardsMove;
+  /*
+   Offset 2. Reset: a pulse (rising, then falling edge) releases each start (active
+   bit 2, required).
+   */
+  SL_BOOL bReset;
+  /*
+   Offset 3. Press_Started: TRUE = movement is expected (active bit 3; an invalid byte
+   reads TRUE).
+   */
+  SL_BOOL bPressStarted;
+  /*
+   Offset 4. OverrunCam: hardware overrun cam (excentric; active bit 4).
+   */
+  SL_BOOL bOverrunCam;
+  /*
+   Offset 5. UpwardCam: hardware upward cam (excentric; active bit 5).
+   */
+  SL_BOOL bUpwardCam;
+  /*
+   Offset 6. SettingMode: TRUE = changed fixed limits are re-latched (active bit 6).
+   */
+  SL_BOOL bSettingMode;
+  /*
+   Offset 7. Reserved, keep 0.
+   */
+  uint8_t aReserved0[9];
+  /*
+   Offset 16. FbRun of the owning group: TRUE = the block executes.
+   */
+  SL_BOOL bRun;
+  /*
+   Offset 17. ErrAck of the owning group.
+   */
+  SL_BOOL bErrAck;
+  /*
+   Offset 18. Reserved, keep 0.
+   */
+  uint8_t aReserved1[6];
+  /*
+   Offset 24 (analog input base). Position: the press position, 0 … MaxPosition
+   (active bit 8, required).
+   */
+  uint16_t nPosition;
+  /*
+   At 26 / 28. TDC1_LowerLimit input (active bit 9).
+   */
+  uint16_t nTDC1LowerLimit;
+  /*
+   At 28 / 32. TDC1_UpperLimit input (active bit 10).
+   */
+  uint16_t nTDC1UpperLimit;
+  /*
+   At 30 / 36. TDC2_LowerLimit input (active bit 11, pendulum).
+   */
+  uint16_t nTDC2LowerLimit;
+  /*
+   At 32 / 40. TDC2_UpperLimit input (active bit 12, pendulum).
+   */
+  uint16_t nTDC2UpperLimit;
+  /*
+   At 34 / 44. BDC_LowerLimit input (active bit 13).
+   */
+  uint16_t nBDCLowerLimit;
+  /*
+   At 36 / 48. BDC_UpperLimit input (active bit 14).
+   */
+  uint16_t nBDCUpperLimit;
+  /*
+   At 38 / 52. OverrunMax input (active bit 15, excentric).
+   */
+  uint16_t nOverrunMax;
+  /*
+   At 40 / 56. "StopDetectionTime" in ms, 1 … 65,535.
+   */
+  uint32_t tStopDetectionTime;
+  /*
+   At 44 / 60. "PressStartDelayTime" in ms, ≤ 65,535 (≥ 1 with Press_Started active).
+   */
+  uint32_t tPressStartDelayTime;
+  /*
+   At 48 / 64. "MoveDetectionTime" in ms, ≤ 65,535 (≥ 1 with Press_Started active).
+   */
+  uint32_t tMoveDetectionTime;
+  /*
+   At 52 / 68. `SL_OPT_CAMMONITOR_PENDULUM`; clear = excentric mode.
+   */
+  uint32_t dwOptions;
+  /*
+   At 56 / 72. "AllowedPositionJitter".
+   */
+  uint16_t nAllowedPositionJitter;
+  /*
+   At 58 / 76. "MinPositionChange" (≥ 1 with Press_Started active).
+   */
+  uint16_t nMinPositionChange;
+  /*
+   At 60 / 80. "MaxPosition": the position value at 360°.
+   */
+  uint16_t nMaxPosition;
+  /*
+   At 62 / 84. Fixed value TDC1_LowerLimit (used while bit 9 is clear).
+   */
+  uint16_t nTDC1LowerLimitFix;
+  /*
+   At 64 / 88. Fixed value TDC1_UpperLimit.
+   */
+  uint16_t nTDC1UpperLimitFix;
+  /*
+   At 66 / 92. Fixed value TDC2_LowerLimit (excentric: 0).
+   */
+  uint16_t nTDC2LowerLimitFix;
+  /*
+   At 68 / 96. Fixed value TDC2_UpperLimit (excentric: 0).
+   */
+  uint16_t nTDC2UpperLimitFix;
+  /*
+   At 70 / 100. Fixed value BDC_LowerLimit.
+   */
+  uint16_t nBDCLowerLimitFix;
+  /*
+   At 72 / 104. Fixed value BDC_UpperLimit.
+   */
+  uint16_t nBDCUpperLimitFix;
+  /*
+   At 74 / 108. Fixed value OverrunMax (pendulum: 0).
+   */
+  uint16_t nOverrunMaxFix;
+  /*
+   At 76 / 112. Bits 2 and 8 required; 0-6 and 8-15 known (ABI-2 §11.13).
+   */
+  uint16_t wInputActive;
+  /*
+   Reserved up to the output base (16-bit 80, 32-bit 120).
+   */
+  uint8_t aReserved2[2];
+  /*
+   At 80 / 120 (output base). Error: TRUE in ERROR only.
+   */
+  SL_BOOL bError;
+  /*
+   At 81 / 121. CamMonOK: TRUE in RUN and the MOVE-* states.
+   */
+  SL_BOOL bCamMonOK;
+  /*
+   At 82 / 122. UpwardsMove: the press moves upwards after BDC.
+   */
+  SL_BOOL bUpwardsMove;
+  /*
+   At 83 / 123. TDC: the position is in a TDC range.
+   */
+  SL_BOOL bTDC;
+  /*
+   At 84 / 124. BDC: the position is between BDC_LowerLimit and BDC_UpperLimit.
+   */
+  SL_BOOL bBDC;
+  /*
+   At 85 / 125. Reserved.
+   */
+  uint8_t aReserved3[3];
+  /*
+   At 88 / 128 (analog output base). OverrunTDC: distance from TDC1_LowerLimit in the
+   TDC range up to OverrunMax (excentric), else 0.
+   */
+  uint16_t nOverrunTDC;
+  /*
+   At 90 / 132. OverrunStop: distance from the position at the falling edge of
+   Press_Started.
+   */
+  uint16_t nOverrunStop;
+  /*
+   Reserved up to the info data.
+   */
+  uint8_t aReserved4[4];
+  /*
+   At 96 / 136 (info). The manual's status value.
+   */
+  uint8_t nState;
+  /*
+   Reserved.
+   */
+  uint8_t aReserved5[1];
+  /*
+   At 98 / 138. The message's Text ID − 0x4000 + library bits 13-15.
+   */
+  uint16_t nDiag;
+  /*
+   At 100 / 140. Text ID of the message of the current ERROR, or of a refused
+   configuration in STOP; 0 = none.
+   */
+  uint16_t nDiagTextId;
+  /*
+   Reserved.
+   */
+  uint8_t aReserved6[2];
+  /*
+   At 104 / 144. Message parameter 2.
+   */
+  uint32_t dwDiagPar2;
+  /*
+   At 108 / 148. Message parameter 3.
+   */
+  uint32_t dwDiagPar3;
+  /*
+   At 112 / 152. Private state, 128 bytes: never write it.
+   */
+  struct SL_CAMMONITOR_PRIVATE stPrivate;
+} FB_CAMMONITOR_UINT;
+
+
+/*
+ FB CAMMONITOR instance (ABI-2 §11.13), generic over the unsigned position type `T`:
+ `P1` (after `wInputActive`) and `P2` (after OverrunStop) are the reserved gaps that make
+ the two layouts differ. Analog fields: 16-bit offset / 32-bit offset.
+ */
+typedef struct FB_CAMMONITOR_UDINT {
+  /*
+   Offset 0. Automatic: TRUE = automatic mode, no parameter verification and no
+   movement or cam checks (active bit 0; inactive = FALSE).
+   */
+  SL_BOOL bAutomatic;
+  /*
+   Offset 1. BackwardsMove: backward movement permitted (excentric; active bit 1).
+   */
+  SL_BOOL bBackwardsMove;
+  /*
+   Offset 2. Reset: a pulse (rising, then falling edge) releases each start (active
+   bit 2, required).
+   */
+  SL_BOOL bReset;
+  /*
+   Offset 3. Press_Started: TRUE = movement is expected (active bit 3; an invalid byte
+   reads TRUE).
+   */
+  SL_BOOL bPressStarted;
+  /*
+   Offset 4. OverrunCam: hardware overrun cam (excentric; active bit 4).
+   */
+  SL_BOOL bOverrunCam;
+  /*
+   Offset 5. UpwardCam: hardware upward cam (excentric; active bit 5).
+   */
+  SL_BOOL bUpwardCam;
+  /*
+   Offset 6. SettingMode: TRUE = changed fixed limits are re-latched (active bit 6).
+   */
+  SL_BOOL bSettingMode;
+  /*
+   Offset 7. Reserved, keep 0.
+   */
+  uint8_t aReserved0[9];
+  /*
+   Offset 16. FbRun of the owning group: TRUE = the block executes.
+   */
+  SL_BOOL bRun;
+  /*
+   Offset 17. ErrAck of the owning group.
+   */
+  SL_BOOL bErrAck;
+  /*
+   Offset 18. Reserved, keep 0.
+   */
+  uint8_t aReserved1[6];
+  /*
+   Offset 24 (analog input base). Position: the press position, 0 … MaxPosition
+   (active bit 8, required).
+   */
+  uint32_t nPosition;
+  /*
+   At 26 / 28. TDC1_LowerLimit input (active bit 9).
+   */
+  uint32_t nTDC1LowerLimit;
+  /*
+   At 28 / 32. TDC1_UpperLimit input (active bit 10).
+   */
+  uint32_t nTDC1UpperLimit;
+  /*
+   At 30 / 36. TDC2_LowerLimit input (active bit 11, pendulum).
+   */
+  uint32_t nTDC2LowerLimit;
+  /*
+   At 32 / 40. TDC2_UpperLimit input (active bit 12, pendulum).
+   */
+  uint32_t nTDC2UpperLimit;
+  /*
+   At 34 / 44. BDC_LowerLimit input (active bit 13).
+   */
+  uint32_t nBDCLowerLimit;
+  /*
+   At 36 / 48. BDC_UpperLimit input (active bit 14).
+   */
+  uint32_t nBDCUpperLimit;
+  /*
+   At 38 / 52. OverrunMax input (active bit 15, excentric).
+   */
+  uint32_t nOverrunMax;
+  /*
+   At 40 / 56. "StopDetectionTime" in ms, 1 … 65,535.
+   */
+  uint32_t tStopDetectionTime;
+  /*
+   At 44 / 60. "PressStartDelayTime" in ms, ≤ 65,535 (≥ 1 with Press_Started active).
+   */
+  uint32_t tPressStartDelayTime;
+  /*
+   At 48 / 64. "MoveDetectionTime" in ms, ≤ 65,535 (≥ 1 with Press_Started active).
+   */
+  uint32_t tMoveDetectionTime;
+  /*
+   At 52 / 68. `SL_OPT_CAMMONITOR_PENDULUM`; clear = excentric mode.
+   */
+  uint32_t dwOptions;
+  /*
+   At 56 / 72. "AllowedPositionJitter".
+   */
+  uint32_t nAllowedPositionJitter;
+  /*
+   At 58 / 76. "MinPositionChange" (≥ 1 with Press_Started active).
+   */
+  uint32_t nMinPositionChange;
+  /*
+   At 60 / 80. "MaxPosition": the position value at 360°.
+   */
+  uint32_t nMaxPosition;
+  /*
+   At 62 / 84. Fixed value TDC1_LowerLimit (used while bit 9 is clear).
+   */
+  uint32_t nTDC1LowerLimitFix;
+  /*
+   At 64 / 88. Fixed value TDC1_UpperLimit.
+   */
+  uint32_t nTDC1UpperLimitFix;
+  /*
+   At 66 / 92. Fixed value TDC2_LowerLimit (excentric: 0).
+   */
+  uint32_t nTDC2LowerLimitFix;
+  /*
+   At 68 / 96. Fixed value TDC2_UpperLimit (excentric: 0).
+   */
+  uint32_t nTDC2UpperLimitFix;
+  /*
+   At 70 / 100. Fixed value BDC_LowerLimit.
+   */
+  uint32_t nBDCLowerLimitFix;
+  /*
+   At 72 / 104. Fixed value BDC_UpperLimit.
+   */
+  uint32_t nBDCUpperLimitFix;
+  /*
+   At 74 / 108. Fixed value OverrunMax (pendulum: 0).
+   */
+  uint32_t nOverrunMaxFix;
+  /*
+   At 76 / 112. Bits 2 and 8 required; 0-6 and 8-15 known (ABI-2 §11.13).
+   */
+  uint16_t wInputActive;
+  /*
+   Reserved up to the output base (16-bit 80, 32-bit 120).
+   */
+  uint8_t aReserved2[6];
+  /*
+   At 80 / 120 (output base). Error: TRUE in ERROR only.
+   */
+  SL_BOOL bError;
+  /*
+   At 81 / 121. CamMonOK: TRUE in RUN and the MOVE-* states.
+   */
+  SL_BOOL bCamMonOK;
+  /*
+   At 82 / 122. UpwardsMove: the press moves upwards after BDC.
+   */
+  SL_BOOL bUpwardsMove;
+  /*
+   At 83 / 123. TDC: the position is in a TDC range.
+   */
+  SL_BOOL bTDC;
+  /*
+   At 84 / 124. BDC: the position is between BDC_LowerLimit and BDC_UpperLimit.
+   */
+  SL_BOOL bBDC;
+  /*
+   At 85 / 125. Reserved.
+   */
+  uint8_t aReserved3[3];
+  /*
+   At 88 / 128 (analog output base). OverrunTDC: distance from TDC1_LowerLimit in the
+   TDC range up to OverrunMax (excentric), else 0.
+   */
+  uint32_t nOverrunTDC;
+  /*
+   At 90 / 132. OverrunStop: distance from the position at the falling edge of
+   Press_Started.
+   */
+  uint32_t nOverrunStop;
+  /*
+   At 96 / 136 (info). The manual's status value.
+   */
+  uint8_t nState;
+  /*
+   Reserved.
+   */
+  uint8_t aReserved5[1];
+  /*
+   At 98 / 138. The message's Text ID − 0x4000 + library bits 13-15.
+   */
+  uint16_t nDiag;
+  /*
+   At 100 / 140. Text ID of the message of the current ERROR, or of a refused
+   configuration in STOP; 0 = none.
+   */
+  uint16_t nDiagTextId;
+  /*
+   Reserved.
+   */
+  uint8_t aReserved6[2];
+  /*
+   At 104 / 144. Message parameter 2.
+   */
+  uint32_t dwDiagPar2;
+  /*
+   At 108 / 148. Message parameter 3.
+   */
+  uint32_t dwDiagPar3;
+  /*
+   At 112 / 152. Private state, 128 bytes: never write it.
+   */
+  struct SL_CAMMONITOR_PRIVATE stPrivate;
+} FB_CAMMONITOR_UDINT;
+
+
+/*
  Private state of FB SLP (64 bytes). Never written by the user.
  */
 typedef struct SL_SLP_PRIVATE {
@@ -10963,6 +11841,10 @@ int32_t sl_violationcounter_uint_init(struct FB_VIOLATIONCOUNTER_UINT *fb);
 int32_t sl_violationcounter_uint_cycle(struct FB_VIOLATIONCOUNTER_UINT *fb, uint32_t tNow);
 int32_t sl_violationcounter_udint_init(struct FB_VIOLATIONCOUNTER_UDINT *fb);
 int32_t sl_violationcounter_udint_cycle(struct FB_VIOLATIONCOUNTER_UDINT *fb, uint32_t tNow);
+int32_t sl_cammonitor_uint_init(struct FB_CAMMONITOR_UINT *fb);
+int32_t sl_cammonitor_uint_cycle(struct FB_CAMMONITOR_UINT *fb, uint32_t tNow);
+int32_t sl_cammonitor_udint_init(struct FB_CAMMONITOR_UDINT *fb);
+int32_t sl_cammonitor_udint_cycle(struct FB_CAMMONITOR_UDINT *fb, uint32_t tNow);
 int32_t sl_slp_init(struct FB_SLP *fb);
 int32_t sl_slp_cycle(struct FB_SLP *fb, uint32_t tNow);
 int32_t sl_sbt_init(struct FB_SBT *fb);
@@ -12980,6 +13862,127 @@ SL_STATIC_ASSERT(offsetof(FB_VIOLATIONCOUNTER_UDINT, dwDiagPar2) == 64, "offset 
 SL_STATIC_ASSERT(offsetof(FB_VIOLATIONCOUNTER_UDINT, dwDiagPar3) == 68, "offset of FB_VIOLATIONCOUNTER_UDINT.dwDiagPar3");
 SL_STATIC_ASSERT(offsetof(FB_VIOLATIONCOUNTER_UDINT, stPrivate) == 72, "offset of FB_VIOLATIONCOUNTER_UDINT.stPrivate");
 SL_STATIC_ASSERT(sizeof(FB_VIOLATIONCOUNTER_UDINT) == 120, "size of FB_VIOLATIONCOUNTER_UDINT");
+SL_STATIC_ASSERT(offsetof(SL_CAMMONITOR_PRIVATE, stHeader) == 0, "offset of SL_CAMMONITOR_PRIVATE.stHeader");
+SL_STATIC_ASSERT(offsetof(SL_CAMMONITOR_PRIVATE, wActive) == 28, "offset of SL_CAMMONITOR_PRIVATE.wActive");
+SL_STATIC_ASSERT(offsetof(SL_CAMMONITOR_PRIVATE, wText) == 30, "offset of SL_CAMMONITOR_PRIVATE.wText");
+SL_STATIC_ASSERT(offsetof(SL_CAMMONITOR_PRIVATE, dwOptions) == 32, "offset of SL_CAMMONITOR_PRIVATE.dwOptions");
+SL_STATIC_ASSERT(offsetof(SL_CAMMONITOR_PRIVATE, adwTime) == 36, "offset of SL_CAMMONITOR_PRIVATE.adwTime");
+SL_STATIC_ASSERT(offsetof(SL_CAMMONITOR_PRIVATE, adwValue) == 48, "offset of SL_CAMMONITOR_PRIVATE.adwValue");
+SL_STATIC_ASSERT(offsetof(SL_CAMMONITOR_PRIVATE, dwRef) == 88, "offset of SL_CAMMONITOR_PRIVATE.dwRef");
+SL_STATIC_ASSERT(offsetof(SL_CAMMONITOR_PRIVATE, dwLast) == 92, "offset of SL_CAMMONITOR_PRIVATE.dwLast");
+SL_STATIC_ASSERT(offsetof(SL_CAMMONITOR_PRIVATE, tRef) == 96, "offset of SL_CAMMONITOR_PRIVATE.tRef");
+SL_STATIC_ASSERT(offsetof(SL_CAMMONITOR_PRIVATE, tPs) == 100, "offset of SL_CAMMONITOR_PRIVATE.tPs");
+SL_STATIC_ASSERT(offsetof(SL_CAMMONITOR_PRIVATE, dwPsRef) == 104, "offset of SL_CAMMONITOR_PRIVATE.dwPsRef");
+SL_STATIC_ASSERT(offsetof(SL_CAMMONITOR_PRIVATE, dwStopLatch) == 108, "offset of SL_CAMMONITOR_PRIVATE.dwStopLatch");
+SL_STATIC_ASSERT(offsetof(SL_CAMMONITOR_PRIVATE, adwPar) == 112, "offset of SL_CAMMONITOR_PRIVATE.adwPar");
+SL_STATIC_ASSERT(offsetof(SL_CAMMONITOR_PRIVATE, nEdges) == 120, "offset of SL_CAMMONITOR_PRIVATE.nEdges");
+SL_STATIC_ASSERT(offsetof(SL_CAMMONITOR_PRIVATE, aReserved) == 121, "offset of SL_CAMMONITOR_PRIVATE.aReserved");
+SL_STATIC_ASSERT(sizeof(SL_CAMMONITOR_PRIVATE) == 128, "size of SL_CAMMONITOR_PRIVATE");
+SL_STATIC_ASSERT(offsetof(FB_CAMMONITOR_UINT, bAutomatic) == 0, "offset of FB_CAMMONITOR_UINT.bAutomatic");
+SL_STATIC_ASSERT(offsetof(FB_CAMMONITOR_UINT, bBackwardsMove) == 1, "offset of FB_CAMMONITOR_UINT.bBackwardsMove");
+SL_STATIC_ASSERT(offsetof(FB_CAMMONITOR_UINT, bReset) == 2, "offset of FB_CAMMONITOR_UINT.bReset");
+SL_STATIC_ASSERT(offsetof(FB_CAMMONITOR_UINT, bPressStarted) == 3, "offset of FB_CAMMONITOR_UINT.bPressStarted");
+SL_STATIC_ASSERT(offsetof(FB_CAMMONITOR_UINT, bOverrunCam) == 4, "offset of FB_CAMMONITOR_UINT.bOverrunCam");
+SL_STATIC_ASSERT(offsetof(FB_CAMMONITOR_UINT, bUpwardCam) == 5, "offset of FB_CAMMONITOR_UINT.bUpwardCam");
+SL_STATIC_ASSERT(offsetof(FB_CAMMONITOR_UINT, bSettingMode) == 6, "offset of FB_CAMMONITOR_UINT.bSettingMode");
+SL_STATIC_ASSERT(offsetof(FB_CAMMONITOR_UINT, aReserved0) == 7, "offset of FB_CAMMONITOR_UINT.aReserved0");
+SL_STATIC_ASSERT(offsetof(FB_CAMMONITOR_UINT, bRun) == 16, "offset of FB_CAMMONITOR_UINT.bRun");
+SL_STATIC_ASSERT(offsetof(FB_CAMMONITOR_UINT, bErrAck) == 17, "offset of FB_CAMMONITOR_UINT.bErrAck");
+SL_STATIC_ASSERT(offsetof(FB_CAMMONITOR_UINT, aReserved1) == 18, "offset of FB_CAMMONITOR_UINT.aReserved1");
+SL_STATIC_ASSERT(offsetof(FB_CAMMONITOR_UINT, nPosition) == 24, "offset of FB_CAMMONITOR_UINT.nPosition");
+SL_STATIC_ASSERT(offsetof(FB_CAMMONITOR_UINT, nTDC1LowerLimit) == 26, "offset of FB_CAMMONITOR_UINT.nTDC1LowerLimit");
+SL_STATIC_ASSERT(offsetof(FB_CAMMONITOR_UINT, nTDC1UpperLimit) == 28, "offset of FB_CAMMONITOR_UINT.nTDC1UpperLimit");
+SL_STATIC_ASSERT(offsetof(FB_CAMMONITOR_UINT, nTDC2LowerLimit) == 30, "offset of FB_CAMMONITOR_UINT.nTDC2LowerLimit");
+SL_STATIC_ASSERT(offsetof(FB_CAMMONITOR_UINT, nTDC2UpperLimit) == 32, "offset of FB_CAMMONITOR_UINT.nTDC2UpperLimit");
+SL_STATIC_ASSERT(offsetof(FB_CAMMONITOR_UINT, nBDCLowerLimit) == 34, "offset of FB_CAMMONITOR_UINT.nBDCLowerLimit");
+SL_STATIC_ASSERT(offsetof(FB_CAMMONITOR_UINT, nBDCUpperLimit) == 36, "offset of FB_CAMMONITOR_UINT.nBDCUpperLimit");
+SL_STATIC_ASSERT(offsetof(FB_CAMMONITOR_UINT, nOverrunMax) == 38, "offset of FB_CAMMONITOR_UINT.nOverrunMax");
+SL_STATIC_ASSERT(offsetof(FB_CAMMONITOR_UINT, tStopDetectionTime) == 40, "offset of FB_CAMMONITOR_UINT.tStopDetectionTime");
+SL_STATIC_ASSERT(offsetof(FB_CAMMONITOR_UINT, tPressStartDelayTime) == 44, "offset of FB_CAMMONITOR_UINT.tPressStartDelayTime");
+SL_STATIC_ASSERT(offsetof(FB_CAMMONITOR_UINT, tMoveDetectionTime) == 48, "offset of FB_CAMMONITOR_UINT.tMoveDetectionTime");
+SL_STATIC_ASSERT(offsetof(FB_CAMMONITOR_UINT, dwOptions) == 52, "offset of FB_CAMMONITOR_UINT.dwOptions");
+SL_STATIC_ASSERT(offsetof(FB_CAMMONITOR_UINT, nAllowedPositionJitter) == 56, "offset of FB_CAMMONITOR_UINT.nAllowedPositionJitter");
+SL_STATIC_ASSERT(offsetof(FB_CAMMONITOR_UINT, nMinPositionChange) == 58, "offset of FB_CAMMONITOR_UINT.nMinPositionChange");
+SL_STATIC_ASSERT(offsetof(FB_CAMMONITOR_UINT, nMaxPosition) == 60, "offset of FB_CAMMONITOR_UINT.nMaxPosition");
+SL_STATIC_ASSERT(offsetof(FB_CAMMONITOR_UINT, nTDC1LowerLimitFix) == 62, "offset of FB_CAMMONITOR_UINT.nTDC1LowerLimitFix");
+SL_STATIC_ASSERT(offsetof(FB_CAMMONITOR_UINT, nTDC1UpperLimitFix) == 64, "offset of FB_CAMMONITOR_UINT.nTDC1UpperLimitFix");
+SL_STATIC_ASSERT(offsetof(FB_CAMMONITOR_UINT, nTDC2LowerLimitFix) == 66, "offset of FB_CAMMONITOR_UINT.nTDC2LowerLimitFix");
+SL_STATIC_ASSERT(offsetof(FB_CAMMONITOR_UINT, nTDC2UpperLimitFix) == 68, "offset of FB_CAMMONITOR_UINT.nTDC2UpperLimitFix");
+SL_STATIC_ASSERT(offsetof(FB_CAMMONITOR_UINT, nBDCLowerLimitFix) == 70, "offset of FB_CAMMONITOR_UINT.nBDCLowerLimitFix");
+SL_STATIC_ASSERT(offsetof(FB_CAMMONITOR_UINT, nBDCUpperLimitFix) == 72, "offset of FB_CAMMONITOR_UINT.nBDCUpperLimitFix");
+SL_STATIC_ASSERT(offsetof(FB_CAMMONITOR_UINT, nOverrunMaxFix) == 74, "offset of FB_CAMMONITOR_UINT.nOverrunMaxFix");
+SL_STATIC_ASSERT(offsetof(FB_CAMMONITOR_UINT, wInputActive) == 76, "offset of FB_CAMMONITOR_UINT.wInputActive");
+SL_STATIC_ASSERT(offsetof(FB_CAMMONITOR_UINT, aReserved2) == 78, "offset of FB_CAMMONITOR_UINT.aReserved2");
+SL_STATIC_ASSERT(offsetof(FB_CAMMONITOR_UINT, bError) == 80, "offset of FB_CAMMONITOR_UINT.bError");
+SL_STATIC_ASSERT(offsetof(FB_CAMMONITOR_UINT, bCamMonOK) == 81, "offset of FB_CAMMONITOR_UINT.bCamMonOK");
+SL_STATIC_ASSERT(offsetof(FB_CAMMONITOR_UINT, bUpwardsMove) == 82, "offset of FB_CAMMONITOR_UINT.bUpwardsMove");
+SL_STATIC_ASSERT(offsetof(FB_CAMMONITOR_UINT, bTDC) == 83, "offset of FB_CAMMONITOR_UINT.bTDC");
+SL_STATIC_ASSERT(offsetof(FB_CAMMONITOR_UINT, bBDC) == 84, "offset of FB_CAMMONITOR_UINT.bBDC");
+SL_STATIC_ASSERT(offsetof(FB_CAMMONITOR_UINT, aReserved3) == 85, "offset of FB_CAMMONITOR_UINT.aReserved3");
+SL_STATIC_ASSERT(offsetof(FB_CAMMONITOR_UINT, nOverrunTDC) == 88, "offset of FB_CAMMONITOR_UINT.nOverrunTDC");
+SL_STATIC_ASSERT(offsetof(FB_CAMMONITOR_UINT, nOverrunStop) == 90, "offset of FB_CAMMONITOR_UINT.nOverrunStop");
+SL_STATIC_ASSERT(offsetof(FB_CAMMONITOR_UINT, aReserved4) == 92, "offset of FB_CAMMONITOR_UINT.aReserved4");
+SL_STATIC_ASSERT(offsetof(FB_CAMMONITOR_UINT, nState) == 96, "offset of FB_CAMMONITOR_UINT.nState");
+SL_STATIC_ASSERT(offsetof(FB_CAMMONITOR_UINT, aReserved5) == 97, "offset of FB_CAMMONITOR_UINT.aReserved5");
+SL_STATIC_ASSERT(offsetof(FB_CAMMONITOR_UINT, nDiag) == 98, "offset of FB_CAMMONITOR_UINT.nDiag");
+SL_STATIC_ASSERT(offsetof(FB_CAMMONITOR_UINT, nDiagTextId) == 100, "offset of FB_CAMMONITOR_UINT.nDiagTextId");
+SL_STATIC_ASSERT(offsetof(FB_CAMMONITOR_UINT, aReserved6) == 102, "offset of FB_CAMMONITOR_UINT.aReserved6");
+SL_STATIC_ASSERT(offsetof(FB_CAMMONITOR_UINT, dwDiagPar2) == 104, "offset of FB_CAMMONITOR_UINT.dwDiagPar2");
+SL_STATIC_ASSERT(offsetof(FB_CAMMONITOR_UINT, dwDiagPar3) == 108, "offset of FB_CAMMONITOR_UINT.dwDiagPar3");
+SL_STATIC_ASSERT(offsetof(FB_CAMMONITOR_UINT, stPrivate) == 112, "offset of FB_CAMMONITOR_UINT.stPrivate");
+SL_STATIC_ASSERT(sizeof(FB_CAMMONITOR_UINT) == 240, "size of FB_CAMMONITOR_UINT");
+SL_STATIC_ASSERT(offsetof(FB_CAMMONITOR_UDINT, bAutomatic) == 0, "offset of FB_CAMMONITOR_UDINT.bAutomatic");
+SL_STATIC_ASSERT(offsetof(FB_CAMMONITOR_UDINT, bBackwardsMove) == 1, "offset of FB_CAMMONITOR_UDINT.bBackwardsMove");
+SL_STATIC_ASSERT(offsetof(FB_CAMMONITOR_UDINT, bReset) == 2, "offset of FB_CAMMONITOR_UDINT.bReset");
+SL_STATIC_ASSERT(offsetof(FB_CAMMONITOR_UDINT, bPressStarted) == 3, "offset of FB_CAMMONITOR_UDINT.bPressStarted");
+SL_STATIC_ASSERT(offsetof(FB_CAMMONITOR_UDINT, bOverrunCam) == 4, "offset of FB_CAMMONITOR_UDINT.bOverrunCam");
+SL_STATIC_ASSERT(offsetof(FB_CAMMONITOR_UDINT, bUpwardCam) == 5, "offset of FB_CAMMONITOR_UDINT.bUpwardCam");
+SL_STATIC_ASSERT(offsetof(FB_CAMMONITOR_UDINT, bSettingMode) == 6, "offset of FB_CAMMONITOR_UDINT.bSettingMode");
+SL_STATIC_ASSERT(offsetof(FB_CAMMONITOR_UDINT, aReserved0) == 7, "offset of FB_CAMMONITOR_UDINT.aReserved0");
+SL_STATIC_ASSERT(offsetof(FB_CAMMONITOR_UDINT, bRun) == 16, "offset of FB_CAMMONITOR_UDINT.bRun");
+SL_STATIC_ASSERT(offsetof(FB_CAMMONITOR_UDINT, bErrAck) == 17, "offset of FB_CAMMONITOR_UDINT.bErrAck");
+SL_STATIC_ASSERT(offsetof(FB_CAMMONITOR_UDINT, aReserved1) == 18, "offset of FB_CAMMONITOR_UDINT.aReserved1");
+SL_STATIC_ASSERT(offsetof(FB_CAMMONITOR_UDINT, nPosition) == 24, "offset of FB_CAMMONITOR_UDINT.nPosition");
+SL_STATIC_ASSERT(offsetof(FB_CAMMONITOR_UDINT, nTDC1LowerLimit) == 28, "offset of FB_CAMMONITOR_UDINT.nTDC1LowerLimit");
+SL_STATIC_ASSERT(offsetof(FB_CAMMONITOR_UDINT, nTDC1UpperLimit) == 32, "offset of FB_CAMMONITOR_UDINT.nTDC1UpperLimit");
+SL_STATIC_ASSERT(offsetof(FB_CAMMONITOR_UDINT, nTDC2LowerLimit) == 36, "offset of FB_CAMMONITOR_UDINT.nTDC2LowerLimit");
+SL_STATIC_ASSERT(offsetof(FB_CAMMONITOR_UDINT, nTDC2UpperLimit) == 40, "offset of FB_CAMMONITOR_UDINT.nTDC2UpperLimit");
+SL_STATIC_ASSERT(offsetof(FB_CAMMONITOR_UDINT, nBDCLowerLimit) == 44, "offset of FB_CAMMONITOR_UDINT.nBDCLowerLimit");
+SL_STATIC_ASSERT(offsetof(FB_CAMMONITOR_UDINT, nBDCUpperLimit) == 48, "offset of FB_CAMMONITOR_UDINT.nBDCUpperLimit");
+SL_STATIC_ASSERT(offsetof(FB_CAMMONITOR_UDINT, nOverrunMax) == 52, "offset of FB_CAMMONITOR_UDINT.nOverrunMax");
+SL_STATIC_ASSERT(offsetof(FB_CAMMONITOR_UDINT, tStopDetectionTime) == 56, "offset of FB_CAMMONITOR_UDINT.tStopDetectionTime");
+SL_STATIC_ASSERT(offsetof(FB_CAMMONITOR_UDINT, tPressStartDelayTime) == 60, "offset of FB_CAMMONITOR_UDINT.tPressStartDelayTime");
+SL_STATIC_ASSERT(offsetof(FB_CAMMONITOR_UDINT, tMoveDetectionTime) == 64, "offset of FB_CAMMONITOR_UDINT.tMoveDetectionTime");
+SL_STATIC_ASSERT(offsetof(FB_CAMMONITOR_UDINT, dwOptions) == 68, "offset of FB_CAMMONITOR_UDINT.dwOptions");
+SL_STATIC_ASSERT(offsetof(FB_CAMMONITOR_UDINT, nAllowedPositionJitter) == 72, "offset of FB_CAMMONITOR_UDINT.nAllowedPositionJitter");
+SL_STATIC_ASSERT(offsetof(FB_CAMMONITOR_UDINT, nMinPositionChange) == 76, "offset of FB_CAMMONITOR_UDINT.nMinPositionChange");
+SL_STATIC_ASSERT(offsetof(FB_CAMMONITOR_UDINT, nMaxPosition) == 80, "offset of FB_CAMMONITOR_UDINT.nMaxPosition");
+SL_STATIC_ASSERT(offsetof(FB_CAMMONITOR_UDINT, nTDC1LowerLimitFix) == 84, "offset of FB_CAMMONITOR_UDINT.nTDC1LowerLimitFix");
+SL_STATIC_ASSERT(offsetof(FB_CAMMONITOR_UDINT, nTDC1UpperLimitFix) == 88, "offset of FB_CAMMONITOR_UDINT.nTDC1UpperLimitFix");
+SL_STATIC_ASSERT(offsetof(FB_CAMMONITOR_UDINT, nTDC2LowerLimitFix) == 92, "offset of FB_CAMMONITOR_UDINT.nTDC2LowerLimitFix");
+SL_STATIC_ASSERT(offsetof(FB_CAMMONITOR_UDINT, nTDC2UpperLimitFix) == 96, "offset of FB_CAMMONITOR_UDINT.nTDC2UpperLimitFix");
+SL_STATIC_ASSERT(offsetof(FB_CAMMONITOR_UDINT, nBDCLowerLimitFix) == 100, "offset of FB_CAMMONITOR_UDINT.nBDCLowerLimitFix");
+SL_STATIC_ASSERT(offsetof(FB_CAMMONITOR_UDINT, nBDCUpperLimitFix) == 104, "offset of FB_CAMMONITOR_UDINT.nBDCUpperLimitFix");
+SL_STATIC_ASSERT(offsetof(FB_CAMMONITOR_UDINT, nOverrunMaxFix) == 108, "offset of FB_CAMMONITOR_UDINT.nOverrunMaxFix");
+SL_STATIC_ASSERT(offsetof(FB_CAMMONITOR_UDINT, wInputActive) == 112, "offset of FB_CAMMONITOR_UDINT.wInputActive");
+SL_STATIC_ASSERT(offsetof(FB_CAMMONITOR_UDINT, aReserved2) == 114, "offset of FB_CAMMONITOR_UDINT.aReserved2");
+SL_STATIC_ASSERT(offsetof(FB_CAMMONITOR_UDINT, bError) == 120, "offset of FB_CAMMONITOR_UDINT.bError");
+SL_STATIC_ASSERT(offsetof(FB_CAMMONITOR_UDINT, bCamMonOK) == 121, "offset of FB_CAMMONITOR_UDINT.bCamMonOK");
+SL_STATIC_ASSERT(offsetof(FB_CAMMONITOR_UDINT, bUpwardsMove) == 122, "offset of FB_CAMMONITOR_UDINT.bUpwardsMove");
+SL_STATIC_ASSERT(offsetof(FB_CAMMONITOR_UDINT, bTDC) == 123, "offset of FB_CAMMONITOR_UDINT.bTDC");
+SL_STATIC_ASSERT(offsetof(FB_CAMMONITOR_UDINT, bBDC) == 124, "offset of FB_CAMMONITOR_UDINT.bBDC");
+SL_STATIC_ASSERT(offsetof(FB_CAMMONITOR_UDINT, aReserved3) == 125, "offset of FB_CAMMONITOR_UDINT.aReserved3");
+SL_STATIC_ASSERT(offsetof(FB_CAMMONITOR_UDINT, nOverrunTDC) == 128, "offset of FB_CAMMONITOR_UDINT.nOverrunTDC");
+SL_STATIC_ASSERT(offsetof(FB_CAMMONITOR_UDINT, nOverrunStop) == 132, "offset of FB_CAMMONITOR_UDINT.nOverrunStop");
+SL_STATIC_ASSERT(offsetof(FB_CAMMONITOR_UDINT, nState) == 136, "offset of FB_CAMMONITOR_UDINT.nState");
+SL_STATIC_ASSERT(offsetof(FB_CAMMONITOR_UDINT, aReserved5) == 137, "offset of FB_CAMMONITOR_UDINT.aReserved5");
+SL_STATIC_ASSERT(offsetof(FB_CAMMONITOR_UDINT, nDiag) == 138, "offset of FB_CAMMONITOR_UDINT.nDiag");
+SL_STATIC_ASSERT(offsetof(FB_CAMMONITOR_UDINT, nDiagTextId) == 140, "offset of FB_CAMMONITOR_UDINT.nDiagTextId");
+SL_STATIC_ASSERT(offsetof(FB_CAMMONITOR_UDINT, aReserved6) == 142, "offset of FB_CAMMONITOR_UDINT.aReserved6");
+SL_STATIC_ASSERT(offsetof(FB_CAMMONITOR_UDINT, dwDiagPar2) == 144, "offset of FB_CAMMONITOR_UDINT.dwDiagPar2");
+SL_STATIC_ASSERT(offsetof(FB_CAMMONITOR_UDINT, dwDiagPar3) == 148, "offset of FB_CAMMONITOR_UDINT.dwDiagPar3");
+SL_STATIC_ASSERT(offsetof(FB_CAMMONITOR_UDINT, stPrivate) == 152, "offset of FB_CAMMONITOR_UDINT.stPrivate");
+SL_STATIC_ASSERT(sizeof(FB_CAMMONITOR_UDINT) == 280, "size of FB_CAMMONITOR_UDINT");
 SL_STATIC_ASSERT(offsetof(SL_SLP_PRIVATE, stHeader) == 0, "offset of SL_SLP_PRIVATE.stHeader");
 SL_STATIC_ASSERT(offsetof(SL_SLP_PRIVATE, wActive) == 28, "offset of SL_SLP_PRIVATE.wActive");
 SL_STATIC_ASSERT(offsetof(SL_SLP_PRIVATE, aReserved0) == 30, "offset of SL_SLP_PRIVATE.aReserved0");

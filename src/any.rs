@@ -299,6 +299,19 @@ mod tests {
             Some(speed::SL_SPEED_ACTIVE_POSITION)
         );
         assert_eq!(bit("SLI2_UINT", "bSLI"), Some(1));
+        use crate::blocks::cammonitor as cam;
+        for (input, active) in [
+            ("bAutomatic", cam::SL_CAMMONITOR_ACTIVE_AUTOMATIC),
+            ("bReset", cam::SL_CAMMONITOR_ACTIVE_RESET),
+            ("bSettingMode", cam::SL_CAMMONITOR_ACTIVE_SETTINGMODE),
+            ("nPosition", cam::SL_CAMMONITOR_ACTIVE_POSITION),
+            ("nTDC1LowerLimit", cam::SL_CAMMONITOR_ACTIVE_TDC1LOWERLIMIT),
+            ("nOverrunMax", cam::SL_CAMMONITOR_ACTIVE_OVERRUNMAX),
+        ] {
+            for b in ["CAMMONITOR_UINT", "CAMMONITOR_UDINT"] {
+                assert_eq!(bit(b, input), Some(active), "{b} {input}");
+            }
+        }
         assert_eq!(bit("SLI2_UINT", "nPosition"), Some(1 << 8));
         assert_eq!(
             bit("LOADSENSING_DINT", "bInactive"),

@@ -166,6 +166,7 @@ macro_rules! impl_member {
         info: $info:expr,
         state: $state:ty,
         private: $private:ty,
+        $(table_params: [$($t:ident),* $(,)?],)?
         input: [$($i:ident),* $(,)?],
         param: [$($p:ident),* $(,)?],
         output: [$($o:ident),* $(,)?],
@@ -216,6 +217,10 @@ macro_rules! impl_member {
                 , $crate::impl_member!(@field nDiag, Info, same)
                 $(, $crate::impl_member!(@field $n, Info, same))*
             ];
+            $(const TABLE_PARAMS: &'static [(usize, usize)] = &[$((
+                core::mem::offset_of!(Self, $t),
+                $crate::registry::size_of_field(|s: &Self| &s.$t),
+            )),*];)?
         }
         impl<$($gen)*> $crate::group::Member for $ty {
             fn drive(&mut self, run: u8, ack: u8) {

@@ -139,6 +139,11 @@ pub const fn kind_of<S, F: FieldType>(_: fn(&S) -> &F) -> Kind {
     F::KIND
 }
 
+/// The size of the field a projection reaches.
+pub const fn size_of_field<S, F>(_: fn(&S) -> &F) -> usize {
+    core::mem::size_of::<F>()
+}
+
 /// Parameters and info fields keep their type.
 pub const fn same(_name: &str, k: Kind) -> Kind {
     k
@@ -191,6 +196,9 @@ pub trait Registered {
     type State: BlockState;
     /// Every named field (reserved bytes and the private state excluded).
     const FIELDS: &'static [Field];
+    /// Parameters that are arrays of structs, left out of [`Self::FIELDS`] (offset, bytes):
+    /// LOADSENSING's value table.
+    const TABLE_PARAMS: &'static [(usize, usize)] = &[];
     /// The state values as a set (one test per call, no table walk).
     const STATES: StateSet = StateSet::of(<Self::State as BlockState>::TABLE);
 }
@@ -226,6 +234,8 @@ pub struct BlockType {
     pub info: BlockInfo,
     /// The field table.
     pub fields: &'static [Field],
+    /// Array parameters left out of the field table (offset, bytes).
+    pub table_params: &'static [(usize, usize)],
     /// `sizeof(FB_<NAME>)`.
     pub size: usize,
     /// The C function prefix (`sl_estop`, `sl_add_int`).
@@ -238,6 +248,7 @@ impl BlockType {
         Self {
             info: B::INFO,
             fields: B::FIELDS,
+            table_params: B::TABLE_PARAMS,
             size: core::mem::size_of::<B>(),
             c_prefix,
         }
@@ -331,6 +342,8 @@ macro_rules! for_each_block {
             $crate::blocks::sli2::FB_SLI2_UDINT => sl_sli2_udint_init, sl_sli2_udint_cycle;
             $crate::blocks::violationcounter::FB_VIOLATIONCOUNTER_UINT => sl_violationcounter_uint_init, sl_violationcounter_uint_cycle;
             $crate::blocks::violationcounter::FB_VIOLATIONCOUNTER_UDINT => sl_violationcounter_udint_init, sl_violationcounter_udint_cycle;
+            $crate::blocks::cammonitor::FB_CAMMONITOR_UINT => sl_cammonitor_uint_init, sl_cammonitor_uint_cycle;
+            $crate::blocks::cammonitor::FB_CAMMONITOR_UDINT => sl_cammonitor_udint_init, sl_cammonitor_udint_cycle;
             $crate::blocks::slp::FB_SLP => sl_slp_init, sl_slp_cycle;
             $crate::blocks::sbt::FB_SBT => sl_sbt_init, sl_sbt_cycle;
             $crate::blocks::advposmon::FB_ADVPOSMON => sl_advposmon_init, sl_advposmon_cycle;
@@ -357,6 +370,25 @@ const fn c_prefix(init: &'static str) -> &'static str {
 }
 
 crate::for_each_block!(block_table);
+
+/// Every block with analog signals (tags from 16, `analog::has_analog_layout`) follows ABI-2 §10.2's layout rule, checked
+/// at compile time on its field table (a new registry row is checked by being a row).
+macro_rules! analog_layout_rule {
+    ($($ty:ty => $init:ident, $cycle:ident;)*) => {$(
+        const _: () = {
+            if crate::blocks::analog::has_analog_layout(<$ty as Registered>::INFO.tag) {
+                if let Err(broken) = crate::blocks::analog::layout_rule(
+                    <$ty as Registered>::FIELDS,
+                    core::mem::size_of::<$ty>(),
+                    <$ty as Registered>::TABLE_PARAMS,
+                ) {
+                    panic!("{}", broken);
+                }
+            }
+        };
+    )*};
+}
+crate::for_each_block!(analog_layout_rule);
 
 /// The block type with this tag.
 pub fn block_type(tag: u16) -> Option<&'static BlockType> {

@@ -367,6 +367,49 @@ macro_rules! depth {
                             }
                         }
                     }
+                    // Ordered fixed limits (CAMMONITOR, ABI-2 §11.13: seven limits that the
+                    // ordering checks want increasing around the circle, with gaps of the
+                    // jitter): random values almost never are, so every other draw gets
+                    // limits scaled from a drawn MaxPosition and jitter in the mode the drawn
+                    // `dwOptions` select (bit 8 = pendulum), the mode's unused ones 0.
+                    if let (Some(mx), true) = (t.field("nMaxPosition"), attempt % 2 == 0) {
+                        let w = mx.kind.size();
+                        let r = rng.next();
+                        let m = 2000 + r % if w == 2 { 60_000 } else { 1 << 30 };
+                        let j = (r >> 32) % (m / 200 + 1);
+                        let opt = t.field("dwOptions").unwrap();
+                        let pendulum = read(bytes(&mut fb), opt.offset, opt.kind) & 0x100 != 0;
+                        let (lo, hi) = (m / 2 - j - 1 - m / 50, m / 2 + j + 1 + m / 50);
+                        let limits: [(&str, u64); 9] = if pendulum {
+                            [
+                                ("nTDC2UpperLimitFix", j + 1 + m / 100),
+                                ("nTDC2LowerLimitFix", 3 * j + 2 + m / 10),
+                                ("nBDCLowerLimitFix", lo),
+                                ("nBDCUpperLimitFix", hi),
+                                ("nTDC1LowerLimitFix", m - 3 * j - 2 - m / 10),
+                                ("nTDC1UpperLimitFix", m - j - 1 - m / 100),
+                                ("nOverrunMaxFix", 0),
+                                ("nAllowedPositionJitter", j),
+                                ("nMaxPosition", m),
+                            ]
+                        } else {
+                            [
+                                ("nTDC1UpperLimitFix", j + 1 + m / 100),
+                                ("nOverrunMaxFix", 3 * j + 2 + m / 10),
+                                ("nBDCLowerLimitFix", lo),
+                                ("nBDCUpperLimitFix", hi),
+                                ("nTDC1LowerLimitFix", m - j - m / 100),
+                                ("nTDC2LowerLimitFix", 0),
+                                ("nTDC2UpperLimitFix", 0),
+                                ("nAllowedPositionJitter", j),
+                                ("nMaxPosition", m),
+                            ]
+                        };
+                        for (name, v) in limits {
+                            let f = t.field(name).unwrap();
+                            put(bytes(&mut fb), f.offset, f.kind.size(), v);
+                        }
+                    }
                     // SAFETY: a live, exclusively borrowed instance.
                     if unsafe { safelogic::ffi::$init(&mut fb) } == SL_OK {
                         pool.push(fb);

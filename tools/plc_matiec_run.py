@@ -169,6 +169,17 @@ BLOCKS["ADVPOSMON"] = dict(
     cfg=dict(wInputActive=0x1, bEnable=1, bPosRefOk=1, bPosCheckOk=1), pulse=None,
     change=("nChAPrimaryFeedback", 1), run={1})
 
+# CAMMONITOR in both variants: excentric, the manual's limits (TDC 8092..100, OverrunMax 800,
+# BDC 3896..4296), the press standing at 50; the Reset pulse releases it (START, then RUN);
+# after the ErrAck it waits in WAIT-FOR-RESET for the next pulse; changing OverrunMax's fixed
+# value while running is the error.
+for _v in ("UINT", "UDINT"):
+    BLOCKS[f"CAMMONITOR_{_v}"] = dict(
+        cfg=dict(wInputActive=0x104, tStopDetectionTime=50, nAllowedPositionJitter=4,
+                 nMaxPosition=8192, nTDC1LowerLimitFix=8092, nTDC1UpperLimitFix=100,
+                 nBDCLowerLimitFix=3896, nBDCUpperLimitFix=4296, nOverrunMaxFix=800,
+                 nPosition=50), pulse="bReset", change=("nOverrunMaxFix", 801), run={1})
+
 # CONNECTION_SHUTDOWN: Deactivate1 requests, the connection reports its shutdown (the input a
 # group writes, set by the program here): RUN; changing the Connection ID while running is
 # the error.

@@ -540,7 +540,7 @@ def extra_funcs(hdr: Header) -> List[CFunc]:
     int32_t result, first parameter a pointer to a struct with a DUT, every other parameter a
     scalar, a pointer to a scalar, to a DUT struct, to void (a block instance) or to a struct
     with pointers (its storage DUT <NAME>_STORAGE). Today: the group API and
-    sl_ton2_get_elapsed. (Strings - sl_state_str, sl_diag_text - are not among them.)"""
+    sl_ton2_get_elapsed. (The text functions sl_state_str, sl_diag_text: TEXT_FUNCS.)"""
     out = []
     for f in hdr.funcs:
         if wrappable(hdr, f, True) or f.ret != "int32_t" or not f.params:
@@ -1173,6 +1173,62 @@ def iec_text_functions(hdr: Header) -> List[Pou]:
     return objs
 
 
+# sl_state_str / sl_diag_text for TwinCAT and CODESYS: (C function, ST name, inputs as
+# (name, ST type, C type), STRING length). CODESYS calls an external FUNCTION ... : STRING(n)
+# with the return value as char[n + 1] in its parameter struct; TwinCAT reaches a TcCOM method
+# that copies the text into the caller's STRING.
+TEXT_FUNCS = [
+    ("sl_state_str", "SL_STATE_STR", [("nType", "UINT", "uint16_t"), ("nState", "BYTE", "uint8_t")], 80,
+     "Name of state nState of a block of type nType (an SL_TYPE_ value), e.g. 'RUN'; '?' for a value the block does not have."),
+    ("sl_diag_text", "SL_DIAG_TEXT", [("nType", "UINT", "uint16_t"), ("nDiag", "WORD", "uint16_t")], 255,
+     "Names of the diag bits nDiag of a block of type nType (an SL_TYPE_ value), '; '-separated, truncated to the STRING length; '' for an unknown type."),
+]
+
+
+def text_funcs(hdr: Header) -> List[Tuple[str, str, List[Tuple[str, str, str]], int, str]]:
+    return [t for t in TEXT_FUNCS if _hfunc(hdr, t[0]) is not None]
+
+
+def text_function_objects(hdr: Header, fl: Flavour) -> List[Pou]:
+    """SL_STATE_STR / SL_DIAG_TEXT in the TwinCAT and CODESYS flavours."""
+    objs: List[Pou] = []
+    for cname, stname, ins, n, doc in text_funcs(hdr):
+        name = fl.fn_name(cname) if fl.name == "codesys" else stname
+        decl = []
+        if fl.name == "codesys":
+            decl.append(f"{{attribute 'external_name' := '{name}'}}")
+        decl.append(f"FUNCTION {name} : STRING({n})")
+        if fl.name == "codesys":
+            decl.append(f"(* {doc} EXTERNAL: set Properties > Build > 'External implementation (Late link in the "
+                        f"runtime system)'. Implemented in C by plc_bindings/codesys/adapter/sl_codesys_adapter.c as "
+                        f"void {name}({name}_struct *p), which calls {cname}(). *)")
+        else:
+            decl.append(f"(* {doc} Through the TcCOM module's method {cname} (see docs/plc-integration.md); '' when "
+                        f"the module is not connected. *)")
+        decl.append("VAR_INPUT")
+        decl += [f"    {a} : {t};" for a, t, _ in ins]
+        decl.append("END_VAR")
+        body = [f"{name} := '';"]
+        if fl.name == "twincat":
+            args = ", ".join([f"pBuf := ADR({name})", f"nLen := SIZEOF({name})"] + [f"{a} := {a}" for a, _, _ in ins])
+            body += [f"IF {GVL}.ipSafeLogic <> 0 THEN",
+                     f"    {GVL}.ipSafeLogic.{cname}({args});",
+                     "END_IF;"]
+        objs.append(Pou("POU", name, "\n".join(decl) + "\n", "\n".join(body) + "\n", end="END_FUNCTION"))
+    return objs
+
+
+def text_itf_method_decl(cname: str, ins: List[Tuple[str, str, str]]) -> str:
+    out = [f"METHOD {cname} : HRESULT",
+           f"(* C++: copies ::{cname}(...) into pBuf, at most nLen bytes with the NUL; return S_OK. *)",
+           "VAR_INPUT",
+           "    pBuf : PVOID;" + cmt("the caller's STRING"),
+           "    nLen : UDINT;" + cmt("SIZEOF the caller's STRING")]
+    out += [f"    {a} : {t};" for a, t, _ in ins]
+    out.append("END_VAR")
+    return "\n".join(out) + "\n"
+
+
 # --------------------------------------------------------------------------------------
 # Files
 # --------------------------------------------------------------------------------------
@@ -1199,6 +1255,8 @@ def objects(hdr: Header, fl: Flavour) -> List[Pou]:
                   end="END_INTERFACE")
         for f in itf_methods(hdr):
             itf.methods.append((f.name, itf_method_decl(hdr, f), None))
+        for cname, _, ins, _, _ in text_funcs(hdr):
+            itf.methods.append((cname, text_itf_method_decl(cname, ins), None))
         objs.append(itf)
         mod = Pou("POU", "FB_SafeLogicModule", module_fb_decl(), module_fb_body(), end="END_FUNCTION_BLOCK")
         mod.methods.append(("FB_exit", module_fb_exit_decl(), module_fb_exit_body()))
@@ -1223,6 +1281,7 @@ def objects(hdr: Header, fl: Flavour) -> List[Pou]:
         objs += iec_text_functions(hdr)
     else:
         objs += group_fb(hdr, fl)
+        objs += text_function_objects(hdr, fl)
     if fl.iec:
         d, body = iec_selftest_function(hdr)
         objs.append(Pou("POU", "SL_SELFTEST_LAYOUT", d, body, end="END_FUNCTION"))
@@ -1370,10 +1429,20 @@ def cds_adapter_h(hdr: Header) -> str:
         out.append(f"}} {n}_struct;")
         out.append(f"void CDECL CDECL_EXT {n}({n}_struct *p);")
         out.append("")
+    for cname, _, ins, n, _ in text_funcs(hdr):
+        cn = "cds_" + cname
+        out.append(f"/* FUNCTION {cn} : STRING({n}) -> {cname}() */")
+        out.append(f"typedef struct tag{cn}_struct {{")
+        for a, t, c in ins:
+            out.append(f"    {c} {a}; /* VAR_INPUT {a} : {t} */")
+        out.append(f"    char {cn}[{n + 1}]; /* VAR_OUTPUT (return value) STRING({n}), NUL-terminated */")
+        out.append(f"}} {cn}_struct;")
+        out.append(f"void CDECL CDECL_EXT {cn}({cn}_struct *p);")
+        out.append("")
     out.append("/* X-macro over every entry point: X(name) for the runtime component's export table,")
     out.append("   e.g. #define X(n) s_pfCMRegisterAPI2(#n, (RTS_UINTPTR)n, 1, <crc from the Itf.m4>, <version>); */")
     out.append("#define SL_CODESYS_FOR_EACH_EXTERNAL(X) \\")
-    names = ["cds_" + f.name for f in cds_funcs(hdr)]
+    names = ["cds_" + f.name for f in cds_funcs(hdr)] + ["cds_" + t[0] for t in text_funcs(hdr)]
     for k, n in enumerate(names):
         out.append(f"    X({n})" + (" \\" if k + 1 < len(names) else ""))
     out += ["", "#ifdef __cplusplus", "}", "#endif", "", "#endif /* SL_CODESYS_ADAPTER_H */"]
@@ -1396,6 +1465,19 @@ def cds_adapter_c(hdr: Header) -> str:
         out.append(f"    p->{n} = {f.name}({args});")
         out.append("}")
         out.append("")
+    for cname, _, ins, n, _ in text_funcs(hdr):
+        cn = "cds_" + cname
+        args = ", ".join(f"p->{a}" for a, _, _ in ins)
+        out += [f"void CDECL CDECL_EXT {cn}({cn}_struct *p)", "{"]
+        out += ["    if (p == 0) {", "        return;", "    }"]
+        if cname == "sl_state_str":
+            out += [f"    {{", f"        const char *s = {cname}({args});", "        size_t k = 0;",
+                    f"        while (s[k] != 0 && k + 1 < sizeof p->{cn}) {{",
+                    f"            p->{cn}[k] = s[k];", "            k++;", "        }",
+                    f"        p->{cn}[k] = 0;", "    }"]
+        else:
+            out.append(f"    (void){cname}({args}, p->{cn}, sizeof p->{cn});")
+        out += ["}", ""]
     return "\n".join(out).rstrip("\n") + "\n"
 
 
@@ -1424,6 +1506,19 @@ def tccom_cpp(hdr: Header) -> str:
         out.append("    return S_OK;")
         out.append("}")
         out.append("")
+    tc = {"uint16_t": "uint16_t", "uint8_t": "uint8_t"}
+    for cname, _, ins, _, _ in text_funcs(hdr):
+        rest = "".join(f", {tc[c]} {a}" for a, _, c in ins)
+        args = ", ".join(a for a, _, _ in ins)
+        out += [f"HRESULT CSafeLogicModule::{cname}(PVOID pBuf, uint32_t nLen{rest})", "{",
+                "    if (pBuf == NULL || nLen == 0) {", "        return E_POINTER;", "    }"]
+        if cname == "sl_state_str":
+            out += [f"    const char *s = ::{cname}({args});", "    char *d = static_cast<char *>(pBuf);",
+                    "    uint32_t k = 0;", "    while (s[k] != 0 && k + 1 < nLen) {", "        d[k] = s[k];",
+                    "        k++;", "    }", "    d[k] = 0;"]
+        else:
+            out.append(f"    (void)::{cname}({args}, static_cast<char *>(pBuf), nLen);")
+        out += ["    return S_OK;", "}", ""]
     return "\n".join(out).rstrip("\n") + "\n"
 
 
@@ -1575,6 +1670,23 @@ def adapter_test_c(hdr: Header) -> str:
             else:
                 # small counts (architectures 2, 3, 5) besides the usual magnitudes
                 out.append(f"    {{ static const unsigned v[] = {{0u, 1u, 2u, 3u, 5u, 10u, 100u}}; x->{f.name} = ({c_type_of(f)})v[rnd() % 7u]; }}")
+        names = {f.name for f in params}
+        if {"nMaxPosition", "nAllowedPositionJitter", "nTDC1LowerLimitFix"} <= names and "dwOptions" in names:
+            # A crank monitor's fixed limits (CAMMONITOR, ABI-2 §11.13) are ordered around the
+            # circle with gaps of the jitter; small random values never are: every other draw
+            # takes the manual's example limits for the drawn mode (bit 8 = pendulum).
+            out.append("    if (rnd() % 2u == 0u) {")
+            out.append("        x->nAllowedPositionJitter = 4; x->nMaxPosition = 8192;")
+            out.append("        if (x->dwOptions & 0x100u) {")
+            out.append("            x->nTDC2UpperLimitFix = 400; x->nTDC2LowerLimitFix = 3696; x->nBDCLowerLimitFix = 3996;")
+            out.append("            x->nBDCUpperLimitFix = 4196; x->nTDC1LowerLimitFix = 4496; x->nTDC1UpperLimitFix = 7796;")
+            out.append("            x->nOverrunMaxFix = 0;")
+            out.append("        } else {")
+            out.append("            x->nTDC1UpperLimitFix = 100; x->nOverrunMaxFix = 800; x->nBDCLowerLimitFix = 3896;")
+            out.append("            x->nBDCUpperLimitFix = 4296; x->nTDC1LowerLimitFix = 8092;")
+            out.append("            x->nTDC2LowerLimitFix = 0; x->nTDC2UpperLimitFix = 0;")
+            out.append("        }")
+            out.append("    }")
         out.append("}")
         out.append(f"/* 1: a valid configuration (want_valid) or an invalid one was drawn into a and b */")
         out.append(f"static int draw_{b.lower}({s} *a, {s} *b, int want_valid)")
@@ -1686,6 +1798,45 @@ def adapter_test_c(hdr: Header) -> str:
         out.append(f'    CHECK(reached_error, "{s}: the random test never reached ERROR");')
         out.append("}")
         out.append("")
+    if text_funcs(hdr):
+        tags = [d.name for d in hdr.defines if d.name.startswith("SL_TYPE_")]
+        out += ["/* SL_STATE_STR / SL_DIAG_TEXT through the adapter: the same text as the direct call, for",
+                " * every type tag (and one unknown), every state value 0-63, a set of diag words. */",
+                "static void test_texts(void)", "{",
+                f"    static const uint16_t tags[] = {{{', '.join(tags)}, 0, 999}};",
+                "    static const uint16_t diags[] = {0, 1, 2, 3, 0x00FF, 0x1000, 0x2000, 0x4000, 0x8000, 0xE000, 0xFFFF};",
+                "    size_t i, k, named = 0;",
+                "    for (i = 0; i < sizeof tags / sizeof tags[0]; i++) {",
+                "        for (k = 0; k < 64; k++) {",
+                "            cds_sl_state_str_struct q;",
+                "            memset(&q, 0x55, sizeof q);",
+                "            q.nType = tags[i];",
+                "            q.nState = (uint8_t)k;",
+                "            cds_sl_state_str(&q);",
+                "            CHECK(strcmp(q.cds_sl_state_str, sl_state_str(tags[i], (uint8_t)k)) == 0,",
+                '                  "SL_STATE_STR(%u, %u) = \'%s\'", (unsigned)tags[i], (unsigned)k, q.cds_sl_state_str);',
+                "            if (strcmp(q.cds_sl_state_str, \"?\") != 0) named++;",
+                "        }",
+                "        for (k = 0; k < sizeof diags / sizeof diags[0]; k++) {",
+                "            cds_sl_diag_text_struct q;",
+                "            char direct[256];",
+                "            memset(&q, 0x55, sizeof q);",
+                "            q.nType = tags[i];",
+                "            q.nDiag = diags[k];",
+                "            cds_sl_diag_text(&q);",
+                "            (void)sl_diag_text(tags[i], diags[k], direct, sizeof direct);",
+                "            CHECK(strcmp(q.cds_sl_diag_text, direct) == 0, \"SL_DIAG_TEXT(%u, 0x%04x) = '%s', direct '%s'\",",
+                "                  (unsigned)tags[i], (unsigned)diags[k], q.cds_sl_diag_text, direct);",
+                "        }",
+                "    }",
+                "    CHECK(named > 5 * (sizeof tags / sizeof tags[0] - 2), \"state names found: %u\", (unsigned)named);",
+                "    CHECK(offsetof(cds_sl_state_str_struct, cds_sl_state_str) == 3 && sizeof(cds_sl_state_str_struct) == 84,",
+                '          "cds_sl_state_str_struct layout");',
+                "    CHECK(offsetof(cds_sl_diag_text_struct, cds_sl_diag_text) == 4 && sizeof(cds_sl_diag_text_struct) == 260,",
+                '          "cds_sl_diag_text_struct layout");',
+                "    cds_sl_state_str(NULL);",
+                "    cds_sl_diag_text(NULL);",
+                "}", ""]
     scal = [f for f in hdr.funcs if not f.params and wrappable(hdr, f, True)]
     out.append("int main(void)")
     out.append("{")
@@ -1699,6 +1850,8 @@ def adapter_test_c(hdr: Header) -> str:
             out.append(f'      CHECK((uint32_t)(q.{n} - t0) < 1000u, "{n} = %u, sl_time_now_ms = %u", (unsigned)q.{n}, (unsigned)t0); }}')
         else:
             out.append(f"    {{ {n}_struct q; {n}(&q); CHECK(q.{n} == {f.name}(), \"{n}\"); }}")
+    if text_funcs(hdr):
+        out.append("    test_texts();")
     out.append(f"    cds_{hdr.blocks[0].cycle.name}(NULL); /* a NULL parameter struct must not crash */")
     out.append('    printf("%d passed, %d failed\\n", passed, failed);')
     out.append("    return failed == 0 ? 0 : 1;")

@@ -29,6 +29,7 @@ cargo --version
 step "format and lints"
 cargo fmt --all -- --check
 cargo clippy --workspace --all-targets -- -D warnings
+RUSTDOCFLAGS="-D warnings" cargo doc --quiet --no-deps -p safelogic --lib
 
 step "no_std build of the block layer"
 cargo rustc --quiet --lib --release --no-default-features --crate-type rlib
@@ -75,6 +76,10 @@ cargo run --release --quiet --example speed_monitor >build/speed_rust.txt
 build/c_tests/speed_monitor >build/speed_c.txt
 diff -u build/speed_rust.txt build/speed_c.txt
 echo "examples/c/speed_monitor.c prints exactly what cargo run --example speed_monitor prints ($(wc -l <build/speed_c.txt) lines)"
+cargo run --release --quiet --example press >build/press_rust.txt
+build/c_tests/press >build/press_c.txt
+diff -u build/press_rust.txt build/press_c.txt
+echo "examples/c/press.c prints exactly what cargo run --example press prints ($(wc -l <build/press_c.txt) lines)"
 
 step "install step, SONAME and pkg-config: one program linked dynamically, one statically"
 rm -rf build/prefix build/stage
@@ -126,5 +131,15 @@ fi
 
 step "PLC bindings (generated files fresh, blark, tree-sitter, offsets, CODESYS adapter, matiec run)"
 bash tools/plc_check.sh
+
+step "peer benchmark: plain-ST E-stop (matiec, gcc -O2) vs the library in one process (brief; figures not asserted)"
+# the scenario check (plain ST, direct C call and ST wrapper agree cycle by cycle) is asserted;
+# the full run is `cargo bench --bench peer`
+if [ -n "$MATIEC_DIR" ]; then
+    python3 tools/peer_bench.py --iec2c "$MATIEC_DIR/iec2c" --matiec-lib "$MATIEC_DIR/lib" \
+        --workdir build/peer-bench --batches 20
+else
+    echo "SKIPPED: no iec2c (see the matiec step)"
+fi
 
 step "all tests passed"

@@ -1060,6 +1060,36 @@ static void test_param_structs(void)
       CHECK(offsetof(cds_sl_violationcounter_udint_cycle_struct, cds_sl_violationcounter_udint_cycle) == off, "cds_sl_violationcounter_udint_cycle_struct return value at %zu, expected %zu", offsetof(cds_sl_violationcounter_udint_cycle_struct, cds_sl_violationcounter_udint_cycle), off); }
     { size_t off = 0;
       off = (off + sizeof(void *) - 1) / sizeof(void *) * sizeof(void *);
+      CHECK(offsetof(cds_sl_cammonitor_uint_init_struct, pFb) == off, "cds_sl_cammonitor_uint_init_struct.pFb at %zu, expected %zu", offsetof(cds_sl_cammonitor_uint_init_struct, pFb), off);
+      off += sizeof(void *);
+      off = (off + sizeof(int32_t) - 1) / sizeof(int32_t) * sizeof(int32_t);
+      CHECK(offsetof(cds_sl_cammonitor_uint_init_struct, cds_sl_cammonitor_uint_init) == off, "cds_sl_cammonitor_uint_init_struct return value at %zu, expected %zu", offsetof(cds_sl_cammonitor_uint_init_struct, cds_sl_cammonitor_uint_init), off); }
+    { size_t off = 0;
+      off = (off + sizeof(void *) - 1) / sizeof(void *) * sizeof(void *);
+      CHECK(offsetof(cds_sl_cammonitor_uint_cycle_struct, pFb) == off, "cds_sl_cammonitor_uint_cycle_struct.pFb at %zu, expected %zu", offsetof(cds_sl_cammonitor_uint_cycle_struct, pFb), off);
+      off += sizeof(void *);
+      off = (off + sizeof(uint32_t) - 1) / sizeof(uint32_t) * sizeof(uint32_t);
+      CHECK(offsetof(cds_sl_cammonitor_uint_cycle_struct, tNow) == off, "cds_sl_cammonitor_uint_cycle_struct.tNow at %zu, expected %zu", offsetof(cds_sl_cammonitor_uint_cycle_struct, tNow), off);
+      off += sizeof(uint32_t);
+      off = (off + sizeof(int32_t) - 1) / sizeof(int32_t) * sizeof(int32_t);
+      CHECK(offsetof(cds_sl_cammonitor_uint_cycle_struct, cds_sl_cammonitor_uint_cycle) == off, "cds_sl_cammonitor_uint_cycle_struct return value at %zu, expected %zu", offsetof(cds_sl_cammonitor_uint_cycle_struct, cds_sl_cammonitor_uint_cycle), off); }
+    { size_t off = 0;
+      off = (off + sizeof(void *) - 1) / sizeof(void *) * sizeof(void *);
+      CHECK(offsetof(cds_sl_cammonitor_udint_init_struct, pFb) == off, "cds_sl_cammonitor_udint_init_struct.pFb at %zu, expected %zu", offsetof(cds_sl_cammonitor_udint_init_struct, pFb), off);
+      off += sizeof(void *);
+      off = (off + sizeof(int32_t) - 1) / sizeof(int32_t) * sizeof(int32_t);
+      CHECK(offsetof(cds_sl_cammonitor_udint_init_struct, cds_sl_cammonitor_udint_init) == off, "cds_sl_cammonitor_udint_init_struct return value at %zu, expected %zu", offsetof(cds_sl_cammonitor_udint_init_struct, cds_sl_cammonitor_udint_init), off); }
+    { size_t off = 0;
+      off = (off + sizeof(void *) - 1) / sizeof(void *) * sizeof(void *);
+      CHECK(offsetof(cds_sl_cammonitor_udint_cycle_struct, pFb) == off, "cds_sl_cammonitor_udint_cycle_struct.pFb at %zu, expected %zu", offsetof(cds_sl_cammonitor_udint_cycle_struct, pFb), off);
+      off += sizeof(void *);
+      off = (off + sizeof(uint32_t) - 1) / sizeof(uint32_t) * sizeof(uint32_t);
+      CHECK(offsetof(cds_sl_cammonitor_udint_cycle_struct, tNow) == off, "cds_sl_cammonitor_udint_cycle_struct.tNow at %zu, expected %zu", offsetof(cds_sl_cammonitor_udint_cycle_struct, tNow), off);
+      off += sizeof(uint32_t);
+      off = (off + sizeof(int32_t) - 1) / sizeof(int32_t) * sizeof(int32_t);
+      CHECK(offsetof(cds_sl_cammonitor_udint_cycle_struct, cds_sl_cammonitor_udint_cycle) == off, "cds_sl_cammonitor_udint_cycle_struct return value at %zu, expected %zu", offsetof(cds_sl_cammonitor_udint_cycle_struct, cds_sl_cammonitor_udint_cycle), off); }
+    { size_t off = 0;
+      off = (off + sizeof(void *) - 1) / sizeof(void *) * sizeof(void *);
       CHECK(offsetof(cds_sl_slp_init_struct, pFb) == off, "cds_sl_slp_init_struct.pFb at %zu, expected %zu", offsetof(cds_sl_slp_init_struct, pFb), off);
       off += sizeof(void *);
       off = (off + sizeof(int32_t) - 1) / sizeof(int32_t) * sizeof(int32_t);
@@ -7877,6 +7907,316 @@ static void test_violationcounter_udint(void)
     CHECK(reached_error, "FB_VIOLATIONCOUNTER_UDINT: the random test never reached ERROR");
 }
 
+static void rnd_config_cammonitor_uint(FB_CAMMONITOR_UINT *x)
+{
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nPosition = (uint16_t)v[rnd() % 7u]; }
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nTDC1LowerLimit = (uint16_t)v[rnd() % 7u]; }
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nTDC1UpperLimit = (uint16_t)v[rnd() % 7u]; }
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nTDC2LowerLimit = (uint16_t)v[rnd() % 7u]; }
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nTDC2UpperLimit = (uint16_t)v[rnd() % 7u]; }
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nBDCLowerLimit = (uint16_t)v[rnd() % 7u]; }
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nBDCUpperLimit = (uint16_t)v[rnd() % 7u]; }
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nOverrunMax = (uint16_t)v[rnd() % 7u]; }
+    x->tStopDetectionTime = rnd_time();
+    x->tPressStartDelayTime = rnd_time();
+    x->tMoveDetectionTime = rnd_time();
+    { static const uint32_t o[] = {(uint32_t)SL_OPT_CAMMONITOR_PENDULUM, (uint32_t)SL_OPT_EDM1, (uint32_t)SL_OPT_EDM2, (uint32_t)SL_OPT_SAFE_INPUTS_AFTER_DISC, (uint32_t)SL_OPT_MANUAL_RESTART, (uint32_t)SL_OPT_FUNCTION_TEST};
+      x->dwOptions = rnd_options(o, 6u); }
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nAllowedPositionJitter = (uint16_t)v[rnd() % 7u]; }
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nMinPositionChange = (uint16_t)v[rnd() % 7u]; }
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nMaxPosition = (uint16_t)v[rnd() % 7u]; }
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nTDC1LowerLimitFix = (uint16_t)v[rnd() % 7u]; }
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nTDC1UpperLimitFix = (uint16_t)v[rnd() % 7u]; }
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nTDC2LowerLimitFix = (uint16_t)v[rnd() % 7u]; }
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nTDC2UpperLimitFix = (uint16_t)v[rnd() % 7u]; }
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nBDCLowerLimitFix = (uint16_t)v[rnd() % 7u]; }
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nBDCUpperLimitFix = (uint16_t)v[rnd() % 7u]; }
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nOverrunMaxFix = (uint16_t)v[rnd() % 7u]; }
+    x->wInputActive = (uint16_t)(rnd() & 0xFF7Fu);
+    if (rnd() % 2u == 0u) {
+        x->nAllowedPositionJitter = 4; x->nMaxPosition = 8192;
+        if (x->dwOptions & 0x100u) {
+            x->nTDC2UpperLimitFix = 400; x->nTDC2LowerLimitFix = 3696; x->nBDCLowerLimitFix = 3996;
+            x->nBDCUpperLimitFix = 4196; x->nTDC1LowerLimitFix = 4496; x->nTDC1UpperLimitFix = 7796;
+            x->nOverrunMaxFix = 0;
+        } else {
+            x->nTDC1UpperLimitFix = 100; x->nOverrunMaxFix = 800; x->nBDCLowerLimitFix = 3896;
+            x->nBDCUpperLimitFix = 4296; x->nTDC1LowerLimitFix = 8092;
+            x->nTDC2LowerLimitFix = 0; x->nTDC2UpperLimitFix = 0;
+        }
+    }
+}
+/* 1: a valid configuration (want_valid) or an invalid one was drawn into a and b */
+static int draw_cammonitor_uint(FB_CAMMONITOR_UINT *a, FB_CAMMONITOR_UINT *b, int want_valid)
+{
+    long k;
+    for (k = 0; k < 200000L; k++) {
+        static FB_CAMMONITOR_UINT x;
+        int valid;
+        memset(&x, 0, sizeof x);
+        rnd_config_cammonitor_uint(&x);
+        valid = sl_cammonitor_uint_init(&x) == SL_OK && sl_cammonitor_uint_cycle(&x, 0u) == SL_OK;
+        if (valid == want_valid) {
+            memset(&x.bRun, 0, 0); /* keep x's parameters, reset the instance */
+            memset(a, 0, sizeof *a);
+            rnd_config_cammonitor_uint(a); /* placeholder, overwritten below */
+            a->nPosition = x.nPosition;
+            a->nTDC1LowerLimit = x.nTDC1LowerLimit;
+            a->nTDC1UpperLimit = x.nTDC1UpperLimit;
+            a->nTDC2LowerLimit = x.nTDC2LowerLimit;
+            a->nTDC2UpperLimit = x.nTDC2UpperLimit;
+            a->nBDCLowerLimit = x.nBDCLowerLimit;
+            a->nBDCUpperLimit = x.nBDCUpperLimit;
+            a->nOverrunMax = x.nOverrunMax;
+            a->tStopDetectionTime = x.tStopDetectionTime;
+            a->tPressStartDelayTime = x.tPressStartDelayTime;
+            a->tMoveDetectionTime = x.tMoveDetectionTime;
+            a->dwOptions = x.dwOptions;
+            a->nAllowedPositionJitter = x.nAllowedPositionJitter;
+            a->nMinPositionChange = x.nMinPositionChange;
+            a->nMaxPosition = x.nMaxPosition;
+            a->nTDC1LowerLimitFix = x.nTDC1LowerLimitFix;
+            a->nTDC1UpperLimitFix = x.nTDC1UpperLimitFix;
+            a->nTDC2LowerLimitFix = x.nTDC2LowerLimitFix;
+            a->nTDC2UpperLimitFix = x.nTDC2UpperLimitFix;
+            a->nBDCLowerLimitFix = x.nBDCLowerLimitFix;
+            a->nBDCUpperLimitFix = x.nBDCUpperLimitFix;
+            a->nOverrunMaxFix = x.nOverrunMaxFix;
+            a->wInputActive = x.wInputActive;
+            *b = *a;
+            return 1;
+        }
+    }
+    return 0;
+}
+static void test_cammonitor_uint(void)
+{
+    static FB_CAMMONITOR_UINT a, b;
+    cds_sl_cammonitor_uint_cycle_struct p;
+    int c, k, bump, ok = 0, cycles = 0, inv_cycles = 0, inv_config = 0, reached_run = 0, reached_error = 0;
+    int hist[12] = {0};
+    unsigned pol = 0;
+    uint32_t t = 1000u;
+    memset(&a, 0, sizeof a);
+    memset(&b, 0, sizeof b);
+    memset(&p, 0, sizeof p);
+    p.pFb = NULL;
+    p.cds_sl_cammonitor_uint_cycle = 12345;
+    cds_sl_cammonitor_uint_cycle(&p);
+    CHECK(p.cds_sl_cammonitor_uint_cycle == SL_E_NULL, "cds_sl_cammonitor_uint_cycle(NULL) returned %d", (int)p.cds_sl_cammonitor_uint_cycle);
+    a.bRun = b.bRun = 1;
+    a.wInputActive = b.wInputActive = 1;
+    { cds_sl_cammonitor_uint_init_struct q; int32_t r; q.pFb = &a; cds_sl_cammonitor_uint_init(&q); r = sl_cammonitor_uint_init(&b);
+      CHECK(q.cds_sl_cammonitor_uint_init == r && memcmp(&a, &b, sizeof a) == 0, "cds_sl_cammonitor_uint_init differs from sl_cammonitor_uint_init"); }
+    rng = 2652777194u; /* FNV-1a of "FB_CAMMONITOR_UINT" */
+    machine = 1u;
+    for (c = 0; c < 20; c++) {
+        int valid = c < 16; /* 16 valid configurations, then the labelled invalid share: 4 */
+        if (!draw_cammonitor_uint(&a, &b, valid)) {
+            CHECK(!valid, "FB_CAMMONITOR_UINT: no valid configuration found in 200000 random draws");
+            continue;
+        }
+        if (!valid) inv_config++;
+        a.bAutomatic = b.bAutomatic = (uint8_t)(1);
+        a.bBackwardsMove = b.bBackwardsMove = (uint8_t)(1);
+        a.bReset = b.bReset = (uint8_t)(1);
+        a.bPressStarted = b.bPressStarted = (uint8_t)(1);
+        a.bOverrunCam = b.bOverrunCam = (uint8_t)(1);
+        a.bUpwardCam = b.bUpwardCam = (uint8_t)(1);
+        a.bSettingMode = b.bSettingMode = (uint8_t)(1);
+        a.bErrAck = b.bErrAck = (uint8_t)(0);
+        bump = 20 + (int)(rnd() % 20u);
+        pol = (c % 2 == 1) ? rnd() : 0u;
+        for (k = 0; k < 50; k++) {
+            int32_t direct;
+            next_machine();
+            a.bAutomatic = b.bAutomatic = next_signal(a.bAutomatic, 0, pol >> 0);
+            a.bBackwardsMove = b.bBackwardsMove = next_signal(a.bBackwardsMove, 0, pol >> 1);
+            a.bReset = b.bReset = next_signal(a.bReset, 0, pol >> 2);
+            a.bPressStarted = b.bPressStarted = next_signal(a.bPressStarted, 0, pol >> 3);
+            a.bOverrunCam = b.bOverrunCam = next_signal(a.bOverrunCam, 0, pol >> 4);
+            a.bUpwardCam = b.bUpwardCam = next_signal(a.bUpwardCam, 0, pol >> 5);
+            a.bSettingMode = b.bSettingMode = next_signal(a.bSettingMode, 0, pol >> 6);
+            a.bErrAck = b.bErrAck = next_signal(a.bErrAck, 1, pol >> 7);
+            a.bRun = b.bRun = (uint8_t)(k >= 2 && rnd() % 100u != 0u);
+            if (valid && k == bump) { a.tStopDetectionTime++; b.tStopDetectionTime++; } /* changed while running: ERROR */
+            if (valid && k == bump + 2) { a.tStopDetectionTime--; b.tStopDetectionTime--; } /* restored */
+            p.pFb = &a;
+            p.tNow = t += 10u;
+            cds_sl_cammonitor_uint_cycle(&p);
+            direct = sl_cammonitor_uint_cycle(&b, p.tNow);
+            CHECK(p.cds_sl_cammonitor_uint_cycle == direct, "FB_CAMMONITOR_UINT config %d cycle %d: adapter %d, direct %d", c, k, (int)p.cds_sl_cammonitor_uint_cycle, (int)direct);
+            CHECK(memcmp(&a, &b, sizeof a) == 0, "FB_CAMMONITOR_UINT config %d cycle %d: instances differ", c, k);
+            if (!valid) { inv_cycles++; continue; }
+            cycles++;
+            if (direct == SL_OK) ok++;
+            if (direct <= 0 && direct > -12) hist[-direct]++;
+            if (b.nState == SL_STATE_ERROR) reached_error = 1;
+            if (b.nState != SL_STATE_STOP && b.nState != SL_STATE_ERROR && b.nState != SL_STATE_RESET && (b.bCamMonOK || b.bUpwardsMove || b.bTDC || b.bBDC)) reached_run = 1;
+        }
+    }
+    printf("FB_CAMMONITOR_UINT: %d of %d cycles (16 valid random configurations) returned SL_OK; run-like state %s, ERROR %s; invalid share: %d configurations, %d cycles\n", ok, cycles, reached_run ? "reached" : "NOT reached", reached_error ? "reached" : "NOT reached", inv_config, inv_cycles);
+    if (2 * ok <= cycles) printf("  status histogram (0, -1, ... -11): %d %d %d %d %d %d %d %d %d %d %d\n", hist[0], hist[1], hist[2], hist[3], hist[4], hist[5], hist[6], hist[7], hist[8], hist[9], hist[10]);
+    CHECK(cycles > 0 && 2 * ok > cycles, "FB_CAMMONITOR_UINT: only %d of %d cycles with valid configurations returned SL_OK", ok, cycles);
+    CHECK(reached_run, "FB_CAMMONITOR_UINT: the random test never reached a running state (an output on)");
+    CHECK(reached_error, "FB_CAMMONITOR_UINT: the random test never reached ERROR");
+}
+
+static void rnd_config_cammonitor_udint(FB_CAMMONITOR_UDINT *x)
+{
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nPosition = (uint32_t)v[rnd() % 7u]; }
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nTDC1LowerLimit = (uint32_t)v[rnd() % 7u]; }
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nTDC1UpperLimit = (uint32_t)v[rnd() % 7u]; }
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nTDC2LowerLimit = (uint32_t)v[rnd() % 7u]; }
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nTDC2UpperLimit = (uint32_t)v[rnd() % 7u]; }
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nBDCLowerLimit = (uint32_t)v[rnd() % 7u]; }
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nBDCUpperLimit = (uint32_t)v[rnd() % 7u]; }
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nOverrunMax = (uint32_t)v[rnd() % 7u]; }
+    x->tStopDetectionTime = rnd_time();
+    x->tPressStartDelayTime = rnd_time();
+    x->tMoveDetectionTime = rnd_time();
+    { static const uint32_t o[] = {(uint32_t)SL_OPT_CAMMONITOR_PENDULUM, (uint32_t)SL_OPT_EDM1, (uint32_t)SL_OPT_EDM2, (uint32_t)SL_OPT_SAFE_INPUTS_AFTER_DISC, (uint32_t)SL_OPT_MANUAL_RESTART, (uint32_t)SL_OPT_FUNCTION_TEST};
+      x->dwOptions = rnd_options(o, 6u); }
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nAllowedPositionJitter = (uint32_t)v[rnd() % 7u]; }
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nMinPositionChange = (uint32_t)v[rnd() % 7u]; }
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nMaxPosition = (uint32_t)v[rnd() % 7u]; }
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nTDC1LowerLimitFix = (uint32_t)v[rnd() % 7u]; }
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nTDC1UpperLimitFix = (uint32_t)v[rnd() % 7u]; }
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nTDC2LowerLimitFix = (uint32_t)v[rnd() % 7u]; }
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nTDC2UpperLimitFix = (uint32_t)v[rnd() % 7u]; }
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nBDCLowerLimitFix = (uint32_t)v[rnd() % 7u]; }
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nBDCUpperLimitFix = (uint32_t)v[rnd() % 7u]; }
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nOverrunMaxFix = (uint32_t)v[rnd() % 7u]; }
+    x->wInputActive = (uint16_t)(rnd() & 0xFF7Fu);
+    if (rnd() % 2u == 0u) {
+        x->nAllowedPositionJitter = 4; x->nMaxPosition = 8192;
+        if (x->dwOptions & 0x100u) {
+            x->nTDC2UpperLimitFix = 400; x->nTDC2LowerLimitFix = 3696; x->nBDCLowerLimitFix = 3996;
+            x->nBDCUpperLimitFix = 4196; x->nTDC1LowerLimitFix = 4496; x->nTDC1UpperLimitFix = 7796;
+            x->nOverrunMaxFix = 0;
+        } else {
+            x->nTDC1UpperLimitFix = 100; x->nOverrunMaxFix = 800; x->nBDCLowerLimitFix = 3896;
+            x->nBDCUpperLimitFix = 4296; x->nTDC1LowerLimitFix = 8092;
+            x->nTDC2LowerLimitFix = 0; x->nTDC2UpperLimitFix = 0;
+        }
+    }
+}
+/* 1: a valid configuration (want_valid) or an invalid one was drawn into a and b */
+static int draw_cammonitor_udint(FB_CAMMONITOR_UDINT *a, FB_CAMMONITOR_UDINT *b, int want_valid)
+{
+    long k;
+    for (k = 0; k < 200000L; k++) {
+        static FB_CAMMONITOR_UDINT x;
+        int valid;
+        memset(&x, 0, sizeof x);
+        rnd_config_cammonitor_udint(&x);
+        valid = sl_cammonitor_udint_init(&x) == SL_OK && sl_cammonitor_udint_cycle(&x, 0u) == SL_OK;
+        if (valid == want_valid) {
+            memset(&x.bRun, 0, 0); /* keep x's parameters, reset the instance */
+            memset(a, 0, sizeof *a);
+            rnd_config_cammonitor_udint(a); /* placeholder, overwritten below */
+            a->nPosition = x.nPosition;
+            a->nTDC1LowerLimit = x.nTDC1LowerLimit;
+            a->nTDC1UpperLimit = x.nTDC1UpperLimit;
+            a->nTDC2LowerLimit = x.nTDC2LowerLimit;
+            a->nTDC2UpperLimit = x.nTDC2UpperLimit;
+            a->nBDCLowerLimit = x.nBDCLowerLimit;
+            a->nBDCUpperLimit = x.nBDCUpperLimit;
+            a->nOverrunMax = x.nOverrunMax;
+            a->tStopDetectionTime = x.tStopDetectionTime;
+            a->tPressStartDelayTime = x.tPressStartDelayTime;
+            a->tMoveDetectionTime = x.tMoveDetectionTime;
+            a->dwOptions = x.dwOptions;
+            a->nAllowedPositionJitter = x.nAllowedPositionJitter;
+            a->nMinPositionChange = x.nMinPositionChange;
+            a->nMaxPosition = x.nMaxPosition;
+            a->nTDC1LowerLimitFix = x.nTDC1LowerLimitFix;
+            a->nTDC1UpperLimitFix = x.nTDC1UpperLimitFix;
+            a->nTDC2LowerLimitFix = x.nTDC2LowerLimitFix;
+            a->nTDC2UpperLimitFix = x.nTDC2UpperLimitFix;
+            a->nBDCLowerLimitFix = x.nBDCLowerLimitFix;
+            a->nBDCUpperLimitFix = x.nBDCUpperLimitFix;
+            a->nOverrunMaxFix = x.nOverrunMaxFix;
+            a->wInputActive = x.wInputActive;
+            *b = *a;
+            return 1;
+        }
+    }
+    return 0;
+}
+static void test_cammonitor_udint(void)
+{
+    static FB_CAMMONITOR_UDINT a, b;
+    cds_sl_cammonitor_udint_cycle_struct p;
+    int c, k, bump, ok = 0, cycles = 0, inv_cycles = 0, inv_config = 0, reached_run = 0, reached_error = 0;
+    int hist[12] = {0};
+    unsigned pol = 0;
+    uint32_t t = 1000u;
+    memset(&a, 0, sizeof a);
+    memset(&b, 0, sizeof b);
+    memset(&p, 0, sizeof p);
+    p.pFb = NULL;
+    p.cds_sl_cammonitor_udint_cycle = 12345;
+    cds_sl_cammonitor_udint_cycle(&p);
+    CHECK(p.cds_sl_cammonitor_udint_cycle == SL_E_NULL, "cds_sl_cammonitor_udint_cycle(NULL) returned %d", (int)p.cds_sl_cammonitor_udint_cycle);
+    a.bRun = b.bRun = 1;
+    a.wInputActive = b.wInputActive = 1;
+    { cds_sl_cammonitor_udint_init_struct q; int32_t r; q.pFb = &a; cds_sl_cammonitor_udint_init(&q); r = sl_cammonitor_udint_init(&b);
+      CHECK(q.cds_sl_cammonitor_udint_init == r && memcmp(&a, &b, sizeof a) == 0, "cds_sl_cammonitor_udint_init differs from sl_cammonitor_udint_init"); }
+    rng = 3715917768u; /* FNV-1a of "FB_CAMMONITOR_UDINT" */
+    machine = 1u;
+    for (c = 0; c < 20; c++) {
+        int valid = c < 16; /* 16 valid configurations, then the labelled invalid share: 4 */
+        if (!draw_cammonitor_udint(&a, &b, valid)) {
+            CHECK(!valid, "FB_CAMMONITOR_UDINT: no valid configuration found in 200000 random draws");
+            continue;
+        }
+        if (!valid) inv_config++;
+        a.bAutomatic = b.bAutomatic = (uint8_t)(1);
+        a.bBackwardsMove = b.bBackwardsMove = (uint8_t)(1);
+        a.bReset = b.bReset = (uint8_t)(1);
+        a.bPressStarted = b.bPressStarted = (uint8_t)(1);
+        a.bOverrunCam = b.bOverrunCam = (uint8_t)(1);
+        a.bUpwardCam = b.bUpwardCam = (uint8_t)(1);
+        a.bSettingMode = b.bSettingMode = (uint8_t)(1);
+        a.bErrAck = b.bErrAck = (uint8_t)(0);
+        bump = 20 + (int)(rnd() % 20u);
+        pol = (c % 2 == 1) ? rnd() : 0u;
+        for (k = 0; k < 50; k++) {
+            int32_t direct;
+            next_machine();
+            a.bAutomatic = b.bAutomatic = next_signal(a.bAutomatic, 0, pol >> 0);
+            a.bBackwardsMove = b.bBackwardsMove = next_signal(a.bBackwardsMove, 0, pol >> 1);
+            a.bReset = b.bReset = next_signal(a.bReset, 0, pol >> 2);
+            a.bPressStarted = b.bPressStarted = next_signal(a.bPressStarted, 0, pol >> 3);
+            a.bOverrunCam = b.bOverrunCam = next_signal(a.bOverrunCam, 0, pol >> 4);
+            a.bUpwardCam = b.bUpwardCam = next_signal(a.bUpwardCam, 0, pol >> 5);
+            a.bSettingMode = b.bSettingMode = next_signal(a.bSettingMode, 0, pol >> 6);
+            a.bErrAck = b.bErrAck = next_signal(a.bErrAck, 1, pol >> 7);
+            a.bRun = b.bRun = (uint8_t)(k >= 2 && rnd() % 100u != 0u);
+            if (valid && k == bump) { a.tStopDetectionTime++; b.tStopDetectionTime++; } /* changed while running: ERROR */
+            if (valid && k == bump + 2) { a.tStopDetectionTime--; b.tStopDetectionTime--; } /* restored */
+            p.pFb = &a;
+            p.tNow = t += 10u;
+            cds_sl_cammonitor_udint_cycle(&p);
+            direct = sl_cammonitor_udint_cycle(&b, p.tNow);
+            CHECK(p.cds_sl_cammonitor_udint_cycle == direct, "FB_CAMMONITOR_UDINT config %d cycle %d: adapter %d, direct %d", c, k, (int)p.cds_sl_cammonitor_udint_cycle, (int)direct);
+            CHECK(memcmp(&a, &b, sizeof a) == 0, "FB_CAMMONITOR_UDINT config %d cycle %d: instances differ", c, k);
+            if (!valid) { inv_cycles++; continue; }
+            cycles++;
+            if (direct == SL_OK) ok++;
+            if (direct <= 0 && direct > -12) hist[-direct]++;
+            if (b.nState == SL_STATE_ERROR) reached_error = 1;
+            if (b.nState != SL_STATE_STOP && b.nState != SL_STATE_ERROR && b.nState != SL_STATE_RESET && (b.bCamMonOK || b.bUpwardsMove || b.bTDC || b.bBDC)) reached_run = 1;
+        }
+    }
+    printf("FB_CAMMONITOR_UDINT: %d of %d cycles (16 valid random configurations) returned SL_OK; run-like state %s, ERROR %s; invalid share: %d configurations, %d cycles\n", ok, cycles, reached_run ? "reached" : "NOT reached", reached_error ? "reached" : "NOT reached", inv_config, inv_cycles);
+    if (2 * ok <= cycles) printf("  status histogram (0, -1, ... -11): %d %d %d %d %d %d %d %d %d %d %d\n", hist[0], hist[1], hist[2], hist[3], hist[4], hist[5], hist[6], hist[7], hist[8], hist[9], hist[10]);
+    CHECK(cycles > 0 && 2 * ok > cycles, "FB_CAMMONITOR_UDINT: only %d of %d cycles with valid configurations returned SL_OK", ok, cycles);
+    CHECK(reached_run, "FB_CAMMONITOR_UDINT: the random test never reached a running state (an output on)");
+    CHECK(reached_error, "FB_CAMMONITOR_UDINT: the random test never reached ERROR");
+}
+
 static void rnd_config_slp(FB_SLP *x)
 {
     { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nSingleturnPos = (uint32_t)v[rnd() % 7u]; }
@@ -8290,6 +8630,45 @@ static void test_connection_shutdown(void)
     CHECK(reached_error, "FB_CONNECTION_SHUTDOWN: the random test never reached ERROR");
 }
 
+/* SL_STATE_STR / SL_DIAG_TEXT through the adapter: the same text as the direct call, for
+ * every type tag (and one unknown), every state value 0-63, a set of diag words. */
+static void test_texts(void)
+{
+    static const uint16_t tags[] = {SL_TYPE_ADVPOSMON, SL_TYPE_AND, SL_TYPE_ADD_INT, SL_TYPE_ADD_UINT, SL_TYPE_ADD_DINT, SL_TYPE_ADD_UDINT, SL_TYPE_SUB_INT, SL_TYPE_SUB_UINT, SL_TYPE_SUB_DINT, SL_TYPE_SUB_UDINT, SL_TYPE_MUL_INT, SL_TYPE_MUL_UINT, SL_TYPE_MUL_DINT, SL_TYPE_MUL_UDINT, SL_TYPE_DIV_INT, SL_TYPE_DIV_UINT, SL_TYPE_DIV_DINT, SL_TYPE_DIV_UDINT, SL_TYPE_CAMMONITOR_UINT, SL_TYPE_CAMMONITOR_UDINT, SL_TYPE_COMPARE_INT, SL_TYPE_COMPARE_UINT, SL_TYPE_COMPARE_DINT, SL_TYPE_COMPARE_UDINT, SL_TYPE_CONNECTION_SHUTDOWN, SL_TYPE_COUNTER_INT, SL_TYPE_COUNTER_UINT, SL_TYPE_COUNTER_DINT, SL_TYPE_COUNTER_UDINT, SL_TYPE_DECOUPLE, SL_TYPE_EDM, SL_TYPE_ENVELOPE_INT, SL_TYPE_ENVELOPE_UINT, SL_TYPE_ENVELOPE_DINT, SL_TYPE_ENVELOPE_UDINT, SL_TYPE_ESTOP, SL_TYPE_LIMIT_INT, SL_TYPE_LIMIT_UINT, SL_TYPE_LIMIT_DINT, SL_TYPE_LIMIT_UDINT, SL_TYPE_LOADSENSING_INT, SL_TYPE_LOADSENSING_UINT, SL_TYPE_LOADSENSING_DINT, SL_TYPE_LOADSENSING_UDINT, SL_TYPE_MON, SL_TYPE_MUTING, SL_TYPE_OPMODE, SL_TYPE_OR, SL_TYPE_RS, SL_TYPE_SBT, SL_TYPE_SCALE_INT, SL_TYPE_SCALE_UINT, SL_TYPE_SCALE_DINT, SL_TYPE_SCALE_UDINT, SL_TYPE_SLI_INT, SL_TYPE_SLI_UINT, SL_TYPE_SLI_DINT, SL_TYPE_SLI_UDINT, SL_TYPE_SLI2_INT, SL_TYPE_SLI2_UINT, SL_TYPE_SLI2_DINT, SL_TYPE_SLI2_UDINT, SL_TYPE_SLP, SL_TYPE_SPEED_INT, SL_TYPE_SPEED_UINT, SL_TYPE_SPEED_DINT, SL_TYPE_SPEED_UDINT, SL_TYPE_SR, SL_TYPE_TOF, SL_TYPE_TON, SL_TYPE_TON2, SL_TYPE_TWOHAND, SL_TYPE_VIOLATIONCOUNTER_UINT, SL_TYPE_VIOLATIONCOUNTER_UDINT, SL_TYPE_XOR, SL_TYPE_FSOE_CONN, 0, 999};
+    static const uint16_t diags[] = {0, 1, 2, 3, 0x00FF, 0x1000, 0x2000, 0x4000, 0x8000, 0xE000, 0xFFFF};
+    size_t i, k, named = 0;
+    for (i = 0; i < sizeof tags / sizeof tags[0]; i++) {
+        for (k = 0; k < 64; k++) {
+            cds_sl_state_str_struct q;
+            memset(&q, 0x55, sizeof q);
+            q.nType = tags[i];
+            q.nState = (uint8_t)k;
+            cds_sl_state_str(&q);
+            CHECK(strcmp(q.cds_sl_state_str, sl_state_str(tags[i], (uint8_t)k)) == 0,
+                  "SL_STATE_STR(%u, %u) = '%s'", (unsigned)tags[i], (unsigned)k, q.cds_sl_state_str);
+            if (strcmp(q.cds_sl_state_str, "?") != 0) named++;
+        }
+        for (k = 0; k < sizeof diags / sizeof diags[0]; k++) {
+            cds_sl_diag_text_struct q;
+            char direct[256];
+            memset(&q, 0x55, sizeof q);
+            q.nType = tags[i];
+            q.nDiag = diags[k];
+            cds_sl_diag_text(&q);
+            (void)sl_diag_text(tags[i], diags[k], direct, sizeof direct);
+            CHECK(strcmp(q.cds_sl_diag_text, direct) == 0, "SL_DIAG_TEXT(%u, 0x%04x) = '%s', direct '%s'",
+                  (unsigned)tags[i], (unsigned)diags[k], q.cds_sl_diag_text, direct);
+        }
+    }
+    CHECK(named > 5 * (sizeof tags / sizeof tags[0] - 2), "state names found: %u", (unsigned)named);
+    CHECK(offsetof(cds_sl_state_str_struct, cds_sl_state_str) == 3 && sizeof(cds_sl_state_str_struct) == 84,
+          "cds_sl_state_str_struct layout");
+    CHECK(offsetof(cds_sl_diag_text_struct, cds_sl_diag_text) == 4 && sizeof(cds_sl_diag_text_struct) == 260,
+          "cds_sl_diag_text_struct layout");
+    cds_sl_state_str(NULL);
+    cds_sl_diag_text(NULL);
+}
+
 int main(void)
 {
     test_param_structs();
@@ -8362,12 +8741,15 @@ int main(void)
     test_sli2_udint();
     test_violationcounter_uint();
     test_violationcounter_udint();
+    test_cammonitor_uint();
+    test_cammonitor_udint();
     test_slp();
     test_sbt();
     test_advposmon();
     test_connection_shutdown();
     { cds_sl_time_now_ms_struct q; uint32_t t0 = sl_time_now_ms(); cds_sl_time_now_ms(&q);
       CHECK((uint32_t)(q.cds_sl_time_now_ms - t0) < 1000u, "cds_sl_time_now_ms = %u, sl_time_now_ms = %u", (unsigned)q.cds_sl_time_now_ms, (unsigned)t0); }
+    test_texts();
     cds_sl_ton2_cycle(NULL); /* a NULL parameter struct must not crash */
     printf("%d passed, %d failed\n", passed, failed);
     return failed == 0 ? 0 : 1;

@@ -329,43 +329,6 @@ pub type FB_DIV_DINT = FB_DIV<i32, 4, 4>;
 /// FB DIV, UDINT variant.
 pub type FB_DIV_UDINT = FB_DIV<u32, 4, 4>;
 
-/// The layout rule of ABI-2 §10.2 for these blocks, checked for every variant: analog
-/// inputs at 24 + k·W, output base = the next multiple of 8 after the parameters, analog
-/// output at output base + 8, info at the next multiple of 8, private 16 bytes later.
-macro_rules! layout_rule {
-    ($($ty:ty, $w:literal, $params_end:expr;)*) => {$(
-        const _: () = {
-            use core::mem::{offset_of, size_of};
-            const fn up8(n: usize) -> usize {
-                n.div_ceil(8) * 8
-            }
-            let ob = up8($params_end);
-            assert!(offset_of!($ty, bRun) == 16 && offset_of!($ty, bErrAck) == 17);
-            assert!(offset_of!($ty, nAnalogIn1) == 24);
-            assert!(offset_of!($ty, nAnalogIn2) == 24 + $w);
-            assert!(offset_of!($ty, bError) == ob);
-            assert!(offset_of!($ty, nAnalogOut) == ob + 8);
-            let info = up8(ob + 8 + $w);
-            assert!(offset_of!($ty, nState) == info);
-            assert!(offset_of!($ty, nDiag) == info + 2);
-            assert!(offset_of!($ty, nDiagTextId) == info + 4);
-            assert!(offset_of!($ty, dwDiagPar2) == info + 8);
-            assert!(offset_of!($ty, dwDiagPar3) == info + 12);
-            assert!(offset_of!($ty, stPrivate) == info + 16);
-            assert!(size_of::<$ty>() == info + 16 + 48);
-        };
-    )*};
-}
-
-layout_rule! {
-    FB_ADD_INT, 2, 24 + 4 + 2; FB_ADD_UINT, 2, 24 + 4 + 2;
-    FB_ADD_DINT, 4, 24 + 8 + 2; FB_ADD_UDINT, 4, 24 + 8 + 2;
-    FB_SUB_INT, 2, 24 + 4 + 2; FB_SUB_UDINT, 4, 24 + 8 + 2;
-    FB_MUL_UINT, 2, 24 + 4 + 2; FB_MUL_DINT, 4, 24 + 8 + 2;
-    FB_DIV_INT, 2, 24 + 4 + 4; FB_DIV_UINT, 2, 24 + 4 + 4;
-    FB_DIV_DINT, 4, 24 + 8 + 4; FB_DIV_UDINT, 4, 24 + 8 + 4;
-}
-
 // The ABI-2 §11.2 numbers of the two DIV layouts (the one place `nRounding` sits).
 const _: () = {
     use core::mem::offset_of;

@@ -12,7 +12,6 @@
 #![allow(non_camel_case_types)] // the ABI's names (FB_COMPARE_INT …)
 
 use super::analog::{magic, Analog};
-use super::BlockInfo;
 use crate::prim::envelope::Block;
 use crate::prim::header::{param_crc, SL_PRIVATE_HEADER};
 use crate::prim::time;
@@ -129,52 +128,24 @@ pub type FB_COMPARE_DINT = FB_COMPARE<i32, 0, 4>;
 /// FB COMPARE, UDINT variant.
 pub type FB_COMPARE_UDINT = FB_COMPARE<u32, 0, 4>;
 
-// The ABI-2 §11.3 numbers of the two layouts.
-macro_rules! layout_rule {
-    ($($ty:ty, $w:literal, $params:literal, $ob:literal;)*) => {$(
-        const _: () = {
-            use core::mem::{offset_of, size_of};
-            assert!(offset_of!($ty, bRun) == 16 && offset_of!($ty, bErrAck) == 17);
-            assert!(offset_of!($ty, nCompIn1) == 24 && offset_of!($ty, nCompIn5) == 24 + 4 * $w);
-            assert!(offset_of!($ty, tToleranceTime) == $params);
-            assert!(offset_of!($ty, nAllowedDeviation) == $params + 4);
-            assert!(offset_of!($ty, nArchitecture) == $params + 8);
-            assert!(offset_of!($ty, wInputActive) == $params + 10);
-            assert!(offset_of!($ty, bError) == $ob && offset_of!($ty, bIsValid) == $ob + 1);
-            assert!(offset_of!($ty, nCompOut) == $ob + 8);
-            assert!(offset_of!($ty, nState) == $ob + 16 && offset_of!($ty, nDiag) == $ob + 18);
-            assert!(offset_of!($ty, nDiagTextId) == $ob + 20);
-            assert!(offset_of!($ty, dwDiagPar2) == $ob + 24);
-            assert!(offset_of!($ty, stPrivate) == $ob + 32);
-            assert!(size_of::<$ty>() == $ob + 32 + size_of::<SL_COMPARE_PRIVATE>());
-        };
-    )*};
-}
-
-layout_rule! {
-    FB_COMPARE_INT, 2, 36, 48; FB_COMPARE_UINT, 2, 36, 48;
-    FB_COMPARE_DINT, 4, 44, 56; FB_COMPARE_UDINT, 4, 44, 56;
-}
-
-const _: () = assert!(core::mem::size_of::<SL_COMPARE_PRIVATE>() == 48);
+// The ABI-2 §11.3 numbers of the two layouts (parameters, output base).
+const _: () = {
+    use core::mem::{offset_of, size_of};
+    assert!(
+        offset_of!(FB_COMPARE_INT, tToleranceTime) == 36
+            && offset_of!(FB_COMPARE_UINT, bError) == 48
+    );
+    assert!(
+        offset_of!(FB_COMPARE_DINT, tToleranceTime) == 44
+            && offset_of!(FB_COMPARE_UDINT, bError) == 56
+    );
+    assert!(size_of::<SL_COMPARE_PRIVATE>() == 48);
+};
 
 crate::blocks::block_states!(
     /// The states of FB COMPARE, every variant (manual §4.20.2).
     CompareState: Run, Stop, Safe, Error, Reset, DelayOut
 );
-
-const TAGS: [u16; 4] = [
-    SL_TYPE_COMPARE_INT,
-    SL_TYPE_COMPARE_UINT,
-    SL_TYPE_COMPARE_DINT,
-    SL_TYPE_COMPARE_UDINT,
-];
-const NAMES: [&str; 4] = [
-    "COMPARE_INT",
-    "COMPARE_UINT",
-    "COMPARE_DINT",
-    "COMPARE_UDINT",
-];
 
 /// Diag value texts (manual §4.20.2).
 const DIAG_VALUES: &[(u16, &str)] = &[
@@ -189,18 +160,9 @@ const DIAG_VALUES: &[(u16, &str)] = &[
     ),
 ];
 
-const fn info<T: Analog>() -> BlockInfo {
-    BlockInfo {
-        tag: TAGS[T::VARIANT],
-        name: NAMES[T::VARIANT],
-        states: <CompareState as crate::registry::BlockState>::TABLE,
-        diag: &[],
-        diag_values: DIAG_VALUES,
-    }
-}
-
 crate::impl_member!([T: Analog, const P1: usize, const P2: usize] FB_COMPARE<T, P1, P2> {
-    info: info::<T>(),
+    info: crate::blocks::analog::variant_info!(T, "COMPARE", CompareState, DIAG_VALUES;
+        INT = SL_TYPE_COMPARE_INT, UINT = SL_TYPE_COMPARE_UINT, DINT = SL_TYPE_COMPARE_DINT, UDINT = SL_TYPE_COMPARE_UDINT),
     state: CompareState,
     private: SL_COMPARE_PRIVATE,
     input: [nCompIn1, nCompIn2, nCompIn3, nCompIn4, nCompIn5],

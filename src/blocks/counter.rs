@@ -12,7 +12,6 @@
 #![allow(non_camel_case_types)] // the ABI's names (FB_COUNTER_INT …)
 
 use super::analog::{diag_message, magic, Analog, SL_DIAG_VALUE_OVERFLOW, SL_DIAG_VALUE_UNDERFLOW};
-use super::BlockInfo;
 use crate::prim::bools;
 use crate::prim::envelope::Block;
 use crate::prim::header::{param_crc, SL_PRIVATE_HEADER};
@@ -126,49 +125,12 @@ pub type FB_COUNTER_UDINT = FB_COUNTER<u32, 2, 4>;
 
 // The ABI-2 §11.5 layout, every variant: parameters from 20, output base 32, ActValue at
 // 40, info at 48, private at 64.
-macro_rules! layout_rule {
-    ($($ty:ty, $w:literal;)*) => {$(
-        const _: () = {
-            use core::mem::{offset_of, size_of};
-            assert!(offset_of!($ty, bCountDown) == 2);
-            assert!(offset_of!($ty, bRun) == 16 && offset_of!($ty, bErrAck) == 17);
-            assert!(offset_of!($ty, nPresetValue) == 20);
-            assert!(offset_of!($ty, nCounterLimit) == 20 + $w);
-            assert!(offset_of!($ty, wInputActive) == 20 + 2 * $w);
-            assert!(offset_of!($ty, bError) == 32 && offset_of!($ty, bCounterZero) == 34);
-            assert!(offset_of!($ty, nActValue) == 40);
-            assert!(offset_of!($ty, nState) == 48 && offset_of!($ty, nDiag) == 50);
-            assert!(offset_of!($ty, nDiagTextId) == 52);
-            assert!(offset_of!($ty, dwDiagPar2) == 56 && offset_of!($ty, dwDiagPar3) == 60);
-            assert!(offset_of!($ty, stPrivate) == 64);
-            assert!(size_of::<$ty>() == 64 + size_of::<SL_COUNTER_PRIVATE>());
-        };
-    )*};
-}
-
-layout_rule! {
-    FB_COUNTER_INT, 2; FB_COUNTER_UINT, 2; FB_COUNTER_DINT, 4; FB_COUNTER_UDINT, 4;
-}
-
 const _: () = assert!(core::mem::size_of::<SL_COUNTER_PRIVATE>() == 56);
 
 crate::blocks::block_states!(
     /// The states of FB COUNTER, every variant (manual §4.22.2): no SAFE.
     CounterState: Run, Stop, Error, Reset
 );
-
-const TAGS: [u16; 4] = [
-    SL_TYPE_COUNTER_INT,
-    SL_TYPE_COUNTER_UINT,
-    SL_TYPE_COUNTER_DINT,
-    SL_TYPE_COUNTER_UDINT,
-];
-const NAMES: [&str; 4] = [
-    "COUNTER_INT",
-    "COUNTER_UINT",
-    "COUNTER_DINT",
-    "COUNTER_UDINT",
-];
 
 /// Diag value texts (manual §4.22.2).
 const DIAG_VALUES: &[(u16, &str)] = &[
@@ -183,18 +145,9 @@ const DIAG_VALUES: &[(u16, &str)] = &[
     ),
 ];
 
-const fn info<T: Analog>() -> BlockInfo {
-    BlockInfo {
-        tag: TAGS[T::VARIANT],
-        name: NAMES[T::VARIANT],
-        states: <CounterState as crate::registry::BlockState>::TABLE,
-        diag: &[],
-        diag_values: DIAG_VALUES,
-    }
-}
-
 crate::impl_member!([T: Analog, const P1: usize, const P2: usize] FB_COUNTER<T, P1, P2> {
-    info: info::<T>(),
+    info: crate::blocks::analog::variant_info!(T, "COUNTER", CounterState, DIAG_VALUES;
+        INT = SL_TYPE_COUNTER_INT, UINT = SL_TYPE_COUNTER_UINT, DINT = SL_TYPE_COUNTER_DINT, UDINT = SL_TYPE_COUNTER_UDINT),
     state: CounterState,
     private: SL_COUNTER_PRIVATE,
     input: [bReset, bCountUp, bCountDown],

@@ -14,7 +14,6 @@
 #![allow(non_camel_case_types)] // the ABI's names (FB_ENVELOPE_INT …)
 
 use super::analog::{diag_message, magic, Analog};
-use super::BlockInfo;
 use crate::prim::bools;
 use crate::prim::envelope::Block;
 use crate::prim::header::{param_crc, SL_PRIVATE_HEADER};
@@ -140,45 +139,11 @@ pub type FB_ENVELOPE_DINT = FB_ENVELOPE<i32, 0>;
 /// FB ENVELOPE, UDINT variant.
 pub type FB_ENVELOPE_UDINT = FB_ENVELOPE<u32, 0>;
 
-/// The ABI-2 §11.11 numbers, the same for every variant.
-macro_rules! layout_rule {
-    ($($ty:ty;)*) => {$(
-        const _: () = {
-            use core::mem::{offset_of, size_of};
-            assert!(offset_of!($ty, bRun) == 16 && offset_of!($ty, bErrAck) == 17);
-            assert!(offset_of!($ty, nInValue) == 24 && offset_of!($ty, tTimeAfterInTarget) == 28);
-            assert!(offset_of!($ty, tMaxTime) == 32 && offset_of!($ty, nTargetValue) == 36);
-            assert!(offset_of!($ty, nOffset) == 40 && offset_of!($ty, wInputActive) == 44);
-            assert!(offset_of!($ty, bError) == 48 && offset_of!($ty, bSafeFunctionOut) == 49);
-            assert!(offset_of!($ty, nState) == 56 && offset_of!($ty, nDiag) == 58);
-            assert!(offset_of!($ty, nDiagTextId) == 60 && offset_of!($ty, dwDiagPar2) == 64);
-            assert!(offset_of!($ty, dwDiagPar3) == 68 && offset_of!($ty, stPrivate) == 72);
-            assert!(size_of::<$ty>() == 72 + 64);
-        };
-    )*};
-}
-
-layout_rule! { FB_ENVELOPE_INT; FB_ENVELOPE_UINT; FB_ENVELOPE_DINT; FB_ENVELOPE_UDINT; }
-
 crate::blocks::block_states!(
     /// The states of FB ENVELOPE, every variant (manual §4.32.2).
     EnvelopeState: Run, Stop, Safe, Error, Reset, DelayOut,
     Monitor = SL_STATE_ENVELOPE_MONITOR, "MONITOR"
 );
-
-/// Type tags and names per variant, in [`Analog::VARIANT`] order.
-const TAGS: [u16; 4] = [
-    SL_TYPE_ENVELOPE_INT,
-    SL_TYPE_ENVELOPE_UINT,
-    SL_TYPE_ENVELOPE_DINT,
-    SL_TYPE_ENVELOPE_UDINT,
-];
-const NAMES: [&str; 4] = [
-    "ENVELOPE_INT",
-    "ENVELOPE_UINT",
-    "ENVELOPE_DINT",
-    "ENVELOPE_UDINT",
-];
 
 /// Diag value texts (manual §4.32.2).
 const DIAG_VALUES: &[(u16, &str)] = &[
@@ -195,18 +160,9 @@ const DIAG_VALUES: &[(u16, &str)] = &[
     (SL_DIAG_ENVELOPE_MAX_TIME, "MaxTimeExpired"),
 ];
 
-const fn info<T: Analog>() -> BlockInfo {
-    BlockInfo {
-        tag: TAGS[T::VARIANT],
-        name: NAMES[T::VARIANT],
-        states: <EnvelopeState as crate::registry::BlockState>::TABLE,
-        diag: &[],
-        diag_values: DIAG_VALUES,
-    }
-}
-
 crate::impl_member!([T: Analog, const P1: usize] FB_ENVELOPE<T, P1> {
-    info: info::<T>(),
+    info: crate::blocks::analog::variant_info!(T, "ENVELOPE", EnvelopeState, DIAG_VALUES;
+        INT = SL_TYPE_ENVELOPE_INT, UINT = SL_TYPE_ENVELOPE_UINT, DINT = SL_TYPE_ENVELOPE_DINT, UDINT = SL_TYPE_ENVELOPE_UDINT),
     state: EnvelopeState,
     private: SL_ENVELOPE_PRIVATE,
     input: [bSafeFunction, nInValue],

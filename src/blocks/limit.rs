@@ -12,7 +12,6 @@
 #![allow(non_camel_case_types)] // the ABI's names (FB_LIMIT_INT …)
 
 use super::analog::{diag_message, magic, Analog};
-use super::BlockInfo;
 use crate::prim::envelope::Block;
 use crate::prim::header::{param_crc, SL_PRIVATE_HEADER};
 use crate::registry::{Private, Registered};
@@ -121,36 +120,6 @@ pub type FB_LIMIT_DINT = FB_LIMIT<i32, 2>;
 /// FB LIMIT, UDINT variant.
 pub type FB_LIMIT_UDINT = FB_LIMIT<u32, 2>;
 
-/// The layout rule of ABI-2 §10.2, checked for every variant: analog inputs at 24 + k·W,
-/// output base = the next multiple of 8 after the parameters, info at the next multiple
-/// of 8 after the BOOL outputs, private 16 bytes later.
-macro_rules! layout_rule {
-    ($($ty:ty, $w:literal;)*) => {$(
-        const _: () = {
-            use core::mem::{offset_of, size_of};
-            const fn up8(n: usize) -> usize {
-                n.div_ceil(8) * 8
-            }
-            assert!(offset_of!($ty, bRun) == 16 && offset_of!($ty, bErrAck) == 17);
-            assert!(offset_of!($ty, nAnalogIn) == 24);
-            assert!(offset_of!($ty, nMaximumValue) == 24 + 4 * $w);
-            let ob = up8(24 + 5 * $w + 2);
-            assert!(offset_of!($ty, bError) == ob && offset_of!($ty, bAboveMax) == ob + 3);
-            let info = up8(ob + 4);
-            assert!(offset_of!($ty, nState) == info && offset_of!($ty, nDiag) == info + 2);
-            assert!(offset_of!($ty, nDiagTextId) == info + 4);
-            assert!(offset_of!($ty, dwDiagPar2) == info + 8);
-            assert!(offset_of!($ty, dwDiagPar3) == info + 12);
-            assert!(offset_of!($ty, stPrivate) == info + 16);
-            assert!(size_of::<$ty>() == info + 16 + size_of::<SL_LIMIT_PRIVATE>());
-        };
-    )*};
-}
-
-layout_rule! {
-    FB_LIMIT_INT, 2; FB_LIMIT_UINT, 2; FB_LIMIT_DINT, 4; FB_LIMIT_UDINT, 4;
-}
-
 // The ABI-2 §11.4 numbers of the two layouts.
 const _: () = {
     use core::mem::{offset_of, size_of};
@@ -167,15 +136,6 @@ crate::blocks::block_states!(
     LimitState: Run, Stop, Safe, Error, Reset
 );
 
-/// Type tags and names per variant, in [`Analog::VARIANT`] order.
-const TAGS: [u16; 4] = [
-    SL_TYPE_LIMIT_INT,
-    SL_TYPE_LIMIT_UINT,
-    SL_TYPE_LIMIT_DINT,
-    SL_TYPE_LIMIT_UDINT,
-];
-const NAMES: [&str; 4] = ["LIMIT_INT", "LIMIT_UINT", "LIMIT_DINT", "LIMIT_UDINT"];
-
 /// Diag value texts (manual §4.21.2).
 const DIAG_VALUES: &[(u16, &str)] = &[
     (0, "No diagnostic information"),
@@ -185,18 +145,9 @@ const DIAG_VALUES: &[(u16, &str)] = &[
     ),
 ];
 
-const fn info<T: Analog>() -> BlockInfo {
-    BlockInfo {
-        tag: TAGS[T::VARIANT],
-        name: NAMES[T::VARIANT],
-        states: <LimitState as crate::registry::BlockState>::TABLE,
-        diag: &[],
-        diag_values: DIAG_VALUES,
-    }
-}
-
 crate::impl_member!([T: Analog, const P1: usize] FB_LIMIT<T, P1> {
-    info: info::<T>(),
+    info: crate::blocks::analog::variant_info!(T, "LIMIT", LimitState, DIAG_VALUES;
+        INT = SL_TYPE_LIMIT_INT, UINT = SL_TYPE_LIMIT_UINT, DINT = SL_TYPE_LIMIT_DINT, UDINT = SL_TYPE_LIMIT_UDINT),
     state: LimitState,
     private: SL_LIMIT_PRIVATE,
     input: [nAnalogIn, nMinValue, nMaxValue],

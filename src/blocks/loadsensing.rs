@@ -13,7 +13,6 @@
 #![allow(non_camel_case_types)] // the ABI's names (FB_LOADSENSING_INT …)
 
 use super::analog::{magic, Analog};
-use super::BlockInfo;
 use crate::prim::envelope::Block;
 use crate::prim::header::{param_crc, SL_PRIVATE_HEADER};
 use crate::registry::{Private, Registered};
@@ -189,42 +188,27 @@ pub type FB_LOADSENSING_DINT = FB_LOADSENSING<i32, 4, 0>;
 /// FB LOADSENSING, UDINT variant.
 pub type FB_LOADSENSING_UDINT = FB_LOADSENSING<u32, 4, 0>;
 
-/// The layout rule of ABI-2 §10.2 with the numbers of §11.8, checked for every variant.
-macro_rules! layout_rule {
-    ($($ty:ty, $w:literal, $ob:literal, $private:literal;)*) => {$(
-        const _: () = {
-            use core::mem::{offset_of, size_of};
-            assert!(offset_of!($ty, bInactive) == 6);
-            assert!(offset_of!($ty, bRun) == 16 && offset_of!($ty, bErrAck) == 17);
-            assert!(offset_of!($ty, nAnalogInX) == 24 && offset_of!($ty, nAnalogInY) == 24 + $w);
-            assert!(offset_of!($ty, dwOptions) == 24 + 2 * $w);
-            assert!(offset_of!($ty, aRow) == 28 + 2 * $w);
-            assert!(size_of::<SL_LOADSENSING_ROW<<$ty as Analogs>::T>>() == 5 * $w);
-            assert!(offset_of!($ty, nRowCount) == 28 + 127 * $w);
-            assert!(offset_of!($ty, wInputActive) == 30 + 127 * $w);
-            assert!(offset_of!($ty, bValid) == $ob + 1 && offset_of!($ty, bWarning) == $ob + 2);
-            assert!(offset_of!($ty, nState) == $ob + 8 && offset_of!($ty, nDiag) == $ob + 10);
-            assert!(offset_of!($ty, nDiagTextId) == $ob + 12);
-            assert!(offset_of!($ty, dwDiagPar2) == $ob + 16);
-            assert!(offset_of!($ty, dwDiagPar3) == $ob + 20);
-            assert!(offset_of!($ty, stPrivate) == $ob + 24);
-            assert!(size_of::<$ty>() == $ob + 24 + $private);
-        };
-    )*};
-}
-
-/// The signal type of a variant, for the layout rule.
-trait Analogs {
-    type T;
-}
-impl<T, const P1: usize, const PR: usize> Analogs for FB_LOADSENSING<T, P1, PR> {
-    type T = T;
-}
-
-layout_rule! {
-    FB_LOADSENSING_INT, 2, 288, 288; FB_LOADSENSING_UINT, 2, 288, 288;
-    FB_LOADSENSING_DINT, 4, 544, 536; FB_LOADSENSING_UDINT, 4, 544, 536;
-}
+// The ABI-2 §11.8 numbers of the two layouts (value table, output base, private state).
+const _: () = {
+    use core::mem::{offset_of, size_of};
+    assert!(
+        offset_of!(FB_LOADSENSING_INT, aRow) == 32 && offset_of!(FB_LOADSENSING_DINT, aRow) == 36
+    );
+    assert!(
+        size_of::<SL_LOADSENSING_ROW<i16>>() == 10 && size_of::<SL_LOADSENSING_ROW<u32>>() == 20
+    );
+    assert!(offset_of!(FB_LOADSENSING_UINT, nRowCount) == 282);
+    assert!(offset_of!(FB_LOADSENSING_UDINT, nRowCount) == 536);
+    assert!(
+        offset_of!(FB_LOADSENSING_INT, bValid) == 289
+            && offset_of!(FB_LOADSENSING_UDINT, bValid) == 545
+    );
+    assert!(
+        offset_of!(FB_LOADSENSING_INT, stPrivate) == 312
+            && offset_of!(FB_LOADSENSING_DINT, stPrivate) == 568
+    );
+    assert!(size_of::<FB_LOADSENSING_UINT>() == 600 && size_of::<FB_LOADSENSING_UDINT>() == 1104);
+};
 
 crate::blocks::block_states!(
     /// The states of FB LOADSENSING, every variant (manual §4.25.2; ERROR and RESET for the
@@ -234,34 +218,12 @@ crate::blocks::block_states!(
     Warning = SL_STATE_LOADSENSING_WARNING, "WARNING"
 );
 
-/// Type tags and names per variant, in [`Analog::VARIANT`] order.
-const TAGS: [u16; 4] = [
-    SL_TYPE_LOADSENSING_INT,
-    SL_TYPE_LOADSENSING_UINT,
-    SL_TYPE_LOADSENSING_DINT,
-    SL_TYPE_LOADSENSING_UDINT,
-];
-const NAMES: [&str; 4] = [
-    "LOADSENSING_INT",
-    "LOADSENSING_UINT",
-    "LOADSENSING_DINT",
-    "LOADSENSING_UDINT",
-];
-
-const fn info<T: Analog>() -> BlockInfo {
-    BlockInfo {
-        tag: TAGS[T::VARIANT],
-        name: NAMES[T::VARIANT],
-        states: <LoadSensingState as crate::registry::BlockState>::TABLE,
-        diag: &[],
-        diag_values: &[(0, "No diagnostic information")],
-    }
-}
-
 crate::impl_member!([T: Analog, const P1: usize, const PR: usize] FB_LOADSENSING<T, P1, PR> {
-    info: info::<T>(),
+    info: crate::blocks::analog::variant_info!(T, "LOADSENSING", LoadSensingState, &[(0, "No diagnostic information")];
+        INT = SL_TYPE_LOADSENSING_INT, UINT = SL_TYPE_LOADSENSING_UINT, DINT = SL_TYPE_LOADSENSING_DINT, UDINT = SL_TYPE_LOADSENSING_UDINT),
     state: LoadSensingState,
     private: SL_LOADSENSING_PRIVATE<T, PR>,
+    table_params: [aRow],
     input: [bInactive, nAnalogInX, nAnalogInY],
     param: [dwOptions, nRowCount, wInputActive],
     output: [bValid, bWarning],

@@ -9,6 +9,7 @@ pub mod advposmon;
 pub mod analog;
 pub mod and;
 pub mod arith;
+pub mod cammonitor;
 pub mod compare;
 pub mod connshutdown;
 pub mod counter;

@@ -17,7 +17,6 @@
 use super::analog::{diag_message, in_range, magic, Analog};
 use super::analog::{SL_DIAG_VALUE_OVERFLOW, SL_DIAG_VALUE_UNDERFLOW};
 use super::arith::{divide, SL_ROUNDING_ROUND};
-use super::BlockInfo;
 use crate::prim::envelope::Block;
 use crate::prim::header::{param_crc, SL_PRIVATE_HEADER};
 use crate::prim::time;
@@ -165,37 +164,6 @@ pub type FB_SCALE_DINT = FB_SCALE<i32, i32, 0, 4>;
 /// FB SCALE, UDINT variant.
 pub type FB_SCALE_UDINT = FB_SCALE<u32, u32, 0, 4>;
 
-/// The layout rule of ABI-2 §10.2, checked for every variant: AnalogIn at 24, the
-/// parameters naturally aligned (32-bit first), output base = the next multiple of 8,
-/// AnalogOut at output base + 8, info at the next multiple of 8, private 16 bytes later.
-macro_rules! layout_rule {
-    ($($ty:ty, $w:literal;)*) => {$(
-        const _: () = {
-            use core::mem::{offset_of, size_of};
-            const fn up8(n: usize) -> usize {
-                n.div_ceil(8) * 8
-            }
-            assert!(offset_of!($ty, bRun) == 16 && offset_of!($ty, bErrAck) == 17);
-            assert!(offset_of!($ty, nAnalogIn) == 24);
-            assert!(offset_of!($ty, tWatchdog) == (24 + $w as usize).next_multiple_of(4));
-            let ob = up8(offset_of!($ty, wInputNegated) + 2);
-            assert!(offset_of!($ty, bError) == ob && offset_of!($ty, bStuckAtError) == ob + 1);
-            assert!(offset_of!($ty, nAnalogOut) == ob + 8);
-            let info = up8(ob + 8 + $w);
-            assert!(offset_of!($ty, nState) == info && offset_of!($ty, nDiag) == info + 2);
-            assert!(offset_of!($ty, nDiagTextId) == info + 4);
-            assert!(offset_of!($ty, dwDiagPar2) == info + 8);
-            assert!(offset_of!($ty, dwDiagPar3) == info + 12);
-            assert!(offset_of!($ty, stPrivate) == info + 16);
-            assert!(size_of::<$ty>() == info + 16 + size_of::<SL_SCALE_PRIVATE>());
-        };
-    )*};
-}
-
-layout_rule! {
-    FB_SCALE_INT, 2; FB_SCALE_UINT, 2; FB_SCALE_DINT, 4; FB_SCALE_UDINT, 4;
-}
-
 // The ABI-2 §11.6 numbers (identical for both widths).
 const _: () = {
     use core::mem::{offset_of, size_of};
@@ -214,14 +182,6 @@ crate::blocks::block_states!(
     /// The states of FB SCALE, every variant (manual §4.23.2): no SAFE.
     ScaleState: Run, Stop, Error, Reset
 );
-
-const TAGS: [u16; 4] = [
-    SL_TYPE_SCALE_INT,
-    SL_TYPE_SCALE_UINT,
-    SL_TYPE_SCALE_DINT,
-    SL_TYPE_SCALE_UDINT,
-];
-const NAMES: [&str; 4] = ["SCALE_INT", "SCALE_UINT", "SCALE_DINT", "SCALE_UDINT"];
 
 /// Diag value texts (manual §4.23.2).
 const DIAG_VALUES: &[(u16, &str)] = &[
@@ -252,18 +212,9 @@ const TEXTS: &[(u16, u16)] = &[
     (SL_DIAG_SCALE_DIV_OVERFLOW, SL_TEXT_SCALE_DIV_OVERFLOW),
 ];
 
-const fn info<T: Analog>() -> BlockInfo {
-    BlockInfo {
-        tag: TAGS[T::VARIANT],
-        name: NAMES[T::VARIANT],
-        states: <ScaleState as crate::registry::BlockState>::TABLE,
-        diag: &[],
-        diag_values: DIAG_VALUES,
-    }
-}
-
 crate::impl_member!([T: Analog, T32: Analog, const P1: usize, const P2: usize] FB_SCALE<T, T32, P1, P2> {
-    info: info::<T>(),
+    info: crate::blocks::analog::variant_info!(T, "SCALE", ScaleState, DIAG_VALUES;
+        INT = SL_TYPE_SCALE_INT, UINT = SL_TYPE_SCALE_UINT, DINT = SL_TYPE_SCALE_DINT, UDINT = SL_TYPE_SCALE_UDINT),
     state: ScaleState,
     private: SL_SCALE_PRIVATE,
     input: [nAnalogIn],

@@ -14,7 +14,6 @@
 
 use super::analog::{Analog, SL_DIAG_VALUE_OVERFLOW, SL_DIAG_VALUE_UNDERFLOW};
 use super::window::{WindowFb, WindowOut, WindowParams, SL_SLI_PRIVATE};
-use super::BlockInfo;
 use crate::types::*;
 
 /// Type tag of FB_SLI_INT (ABI-2 §10.6: sequential in the order of §10.3).
@@ -105,52 +104,17 @@ pub type FB_SLI_DINT = FB_SLI<i32, i32, 0, 4>;
 /// FB SLI, UDINT variant (PositionDiff INT32).
 pub type FB_SLI_UDINT = FB_SLI<u32, i32, 0, 4>;
 
-/// The layout rule of ABI-2 §10.2 for FB SLI, every variant: Position at the analog input
-/// base 24, output base 40 after the parameters, PositionDiff at output base + 8, info at
-/// the next multiple of 8, private 16 bytes later.
-macro_rules! layout_rule {
-    ($($ty:ty, $w:literal;)*) => {$(
-        const _: () = {
-            use core::mem::{offset_of, size_of};
-            const fn up8(n: usize) -> usize {
-                n.div_ceil(8) * 8
-            }
-            assert!(offset_of!($ty, bSLI) == 0);
-            assert!(offset_of!($ty, bRun) == 16 && offset_of!($ty, bErrAck) == 17);
-            assert!(offset_of!($ty, nPosition) == 24);
-            assert!(offset_of!($ty, nLimitPos) == 28 && offset_of!($ty, nLimitNeg) == 32);
-            let ob = up8(offset_of!($ty, wInputActive) + 2);
-            assert!(ob == 40 && offset_of!($ty, bError) == ob);
-            assert!(offset_of!($ty, bSLIActive) == ob + 1);
-            assert!(offset_of!($ty, nPositionDiff) == ob + 8);
-            let info = up8(ob + 8 + $w);
-            assert!(info == 56 && offset_of!($ty, nState) == info);
-            assert!(offset_of!($ty, nDiag) == info + 2);
-            assert!(offset_of!($ty, nDiagTextId) == info + 4);
-            assert!(offset_of!($ty, dwDiagPar2) == info + 8);
-            assert!(offset_of!($ty, dwDiagPar3) == info + 12);
-            assert!(offset_of!($ty, stPrivate) == info + 16);
-            assert!(size_of::<$ty>() == info + 16 + size_of::<SL_SLI_PRIVATE>());
-        };
-    )*};
-}
-
-layout_rule! {
-    FB_SLI_INT, 2; FB_SLI_UINT, 2; FB_SLI_DINT, 4; FB_SLI_UDINT, 4;
-}
+// The ABI-2 §11.9 numbers (identical for both widths).
+const _: () = {
+    use core::mem::offset_of;
+    assert!(offset_of!(FB_SLI_INT, bError) == 40 && offset_of!(FB_SLI_UDINT, bError) == 40);
+    assert!(offset_of!(FB_SLI_UINT, nState) == 56 && offset_of!(FB_SLI_DINT, nState) == 56);
+};
 
 crate::blocks::block_states!(
     /// The states of FB SLI, every variant (manual §4.27.2; no EXCEEDED, semantics SI1).
     SliState: Run, Stop, Safe, Error, Reset
 );
-
-const TAGS: [u16; 4] = [
-    SL_TYPE_SLI_INT,
-    SL_TYPE_SLI_UINT,
-    SL_TYPE_SLI_DINT,
-    SL_TYPE_SLI_UDINT,
-];
-const NAMES: [&str; 4] = ["SLI_INT", "SLI_UINT", "SLI_DINT", "SLI_UDINT"];
 
 /// Diag value texts (manual §4.27.2), shared with FB SLI2 (§4.28 has no table of its own).
 pub(crate) const DIAG_VALUES: &[(u16, &str)] = &[
@@ -162,18 +126,9 @@ pub(crate) const DIAG_VALUES: &[(u16, &str)] = &[
     (SL_DIAG_VALUE_OVERFLOW, "Overflow (PositionDiff > PosLimit)"),
 ];
 
-const fn info<T: Analog>() -> BlockInfo {
-    BlockInfo {
-        tag: TAGS[T::VARIANT],
-        name: NAMES[T::VARIANT],
-        states: <SliState as crate::registry::BlockState>::TABLE,
-        diag: &[],
-        diag_values: DIAG_VALUES,
-    }
-}
-
 crate::impl_member!([T: Analog, TS: Analog, const P1: usize, const P2: usize] FB_SLI<T, TS, P1, P2> {
-    info: info::<T>(),
+    info: crate::blocks::analog::variant_info!(T, "SLI", SliState, DIAG_VALUES;
+        INT = SL_TYPE_SLI_INT, UINT = SL_TYPE_SLI_UINT, DINT = SL_TYPE_SLI_DINT, UDINT = SL_TYPE_SLI_UDINT),
     state: SliState,
     private: SL_SLI_PRIVATE,
     input: [bSLI, nPosition],

@@ -15,7 +15,6 @@
 
 use super::analog::Analog;
 use super::window::{WindowFb, WindowOut, WindowParams, SL_SLI_PRIVATE};
-use super::BlockInfo;
 use crate::types::*;
 
 /// Type tag of FB_SLI2_INT (ABI-2 §10.6: sequential in the order of §10.3).
@@ -111,67 +110,21 @@ pub type FB_SLI2_DINT = FB_SLI2<i32, i32, 0, 4>;
 /// FB SLI2, UDINT variant (PositionDiff INT32).
 pub type FB_SLI2_UDINT = FB_SLI2<u32, i32, 0, 4>;
 
-/// The layout rule of ABI-2 §10.2 for FB SLI2, every variant: Position at the analog input
-/// base 24, output base 48 after the parameters, PositionDiff at output base + 8, info at
-/// the next multiple of 8, private 16 bytes later.
-macro_rules! layout_rule {
-    ($($ty:ty, $w:literal;)*) => {$(
-        const _: () = {
-            use core::mem::{offset_of, size_of};
-            const fn up8(n: usize) -> usize {
-                n.div_ceil(8) * 8
-            }
-            assert!(offset_of!($ty, bSLI) == 0);
-            assert!(offset_of!($ty, bRun) == 16 && offset_of!($ty, bErrAck) == 17);
-            assert!(offset_of!($ty, nPosition) == 24);
-            assert!(offset_of!($ty, nLimitPos) == 28 && offset_of!($ty, nLimitNeg) == 32);
-            assert!(offset_of!($ty, dwOptions) == 36);
-            let ob = up8(offset_of!($ty, wInputActive) + 2);
-            assert!(ob == 48 && offset_of!($ty, bError) == ob);
-            assert!(offset_of!($ty, bSLIActive) == ob + 1);
-            assert!(offset_of!($ty, bBelowMin) == ob + 2 && offset_of!($ty, bAboveMax) == ob + 3);
-            assert!(offset_of!($ty, nPositionDiff) == ob + 8);
-            let info = up8(ob + 8 + $w);
-            assert!(info == 64 && offset_of!($ty, nState) == info);
-            assert!(offset_of!($ty, nDiag) == info + 2);
-            assert!(offset_of!($ty, nDiagTextId) == info + 4);
-            assert!(offset_of!($ty, dwDiagPar2) == info + 8);
-            assert!(offset_of!($ty, dwDiagPar3) == info + 12);
-            assert!(offset_of!($ty, stPrivate) == info + 16);
-            assert!(size_of::<$ty>() == info + 16 + size_of::<SL_SLI_PRIVATE>());
-        };
-    )*};
-}
-
-layout_rule! {
-    FB_SLI2_INT, 2; FB_SLI2_UINT, 2; FB_SLI2_DINT, 4; FB_SLI2_UDINT, 4;
-}
+// The ABI-2 §11.10 numbers (identical for both widths).
+const _: () = {
+    use core::mem::offset_of;
+    assert!(offset_of!(FB_SLI2_INT, bError) == 48 && offset_of!(FB_SLI2_UDINT, bError) == 48);
+    assert!(offset_of!(FB_SLI2_UINT, nState) == 64 && offset_of!(FB_SLI2_DINT, nState) == 64);
+};
 
 crate::blocks::block_states!(
     /// The states of FB SLI2, every variant (manual §4.28.2.3).
     Sli2State: Run, Stop, Safe, Error, Reset, Exceeded = SL_STATE_SLI2_EXCEEDED, "EXCEEDED"
 );
 
-const TAGS: [u16; 4] = [
-    SL_TYPE_SLI2_INT,
-    SL_TYPE_SLI2_UINT,
-    SL_TYPE_SLI2_DINT,
-    SL_TYPE_SLI2_UDINT,
-];
-const NAMES: [&str; 4] = ["SLI2_INT", "SLI2_UINT", "SLI2_DINT", "SLI2_UDINT"];
-
-const fn info<T: Analog>() -> BlockInfo {
-    BlockInfo {
-        tag: TAGS[T::VARIANT],
-        name: NAMES[T::VARIANT],
-        states: <Sli2State as crate::registry::BlockState>::TABLE,
-        diag: &[],
-        diag_values: super::sli::DIAG_VALUES,
-    }
-}
-
 crate::impl_member!([T: Analog, TS: Analog, const P1: usize, const P2: usize] FB_SLI2<T, TS, P1, P2> {
-    info: info::<T>(),
+    info: crate::blocks::analog::variant_info!(T, "SLI2", Sli2State, super::sli::DIAG_VALUES;
+        INT = SL_TYPE_SLI2_INT, UINT = SL_TYPE_SLI2_UINT, DINT = SL_TYPE_SLI2_DINT, UDINT = SL_TYPE_SLI2_UDINT),
     state: Sli2State,
     private: SL_SLI_PRIVATE,
     input: [bSLI, nPosition],

@@ -15,7 +15,6 @@
 
 use super::analog::{diag_message, in_range, magic, Analog};
 use super::analog::{SL_DIAG_VALUE_OVERFLOW, SL_DIAG_VALUE_UNDERFLOW};
-use super::BlockInfo;
 use crate::prim::envelope::Block;
 use crate::prim::header::{param_crc, SL_PRIVATE_HEADER};
 use crate::prim::time;
@@ -128,36 +127,6 @@ pub type FB_SPEED_DINT = FB_SPEED<i32, 0, 4>;
 /// FB SPEED, UDINT variant.
 pub type FB_SPEED_UDINT = FB_SPEED<u32, 0, 4>;
 
-/// The layout rule of ABI-2 §10.2, checked for every variant: Position at 24, the
-/// parameters naturally aligned (32-bit first), output base = the next multiple of 8,
-/// Speed at output base + 8, info at the next multiple of 8, private 16 bytes later.
-macro_rules! layout_rule {
-    ($($ty:ty, $w:literal;)*) => {$(
-        const _: () = {
-            use core::mem::{offset_of, size_of};
-            const fn up8(n: usize) -> usize {
-                n.div_ceil(8) * 8
-            }
-            assert!(offset_of!($ty, bRun) == 16 && offset_of!($ty, bErrAck) == 17);
-            assert!(offset_of!($ty, nPosition) == 24);
-            assert!(offset_of!($ty, tTimeInterval) == (24 + $w as usize).next_multiple_of(4));
-            let ob = up8(offset_of!($ty, wInputActive) + 2);
-            assert!(offset_of!($ty, bError) == ob && offset_of!($ty, nSpeed) == ob + 8);
-            let info = up8(ob + 8 + $w);
-            assert!(offset_of!($ty, nState) == info && offset_of!($ty, nDiag) == info + 2);
-            assert!(offset_of!($ty, nDiagTextId) == info + 4);
-            assert!(offset_of!($ty, dwDiagPar2) == info + 8);
-            assert!(offset_of!($ty, dwDiagPar3) == info + 12);
-            assert!(offset_of!($ty, stPrivate) == info + 16);
-            assert!(size_of::<$ty>() == info + 16 + size_of::<SL_SPEED_PRIVATE>());
-        };
-    )*};
-}
-
-layout_rule! {
-    FB_SPEED_INT, 2; FB_SPEED_UINT, 2; FB_SPEED_DINT, 4; FB_SPEED_UDINT, 4;
-}
-
 // The ABI-2 §11.7 numbers (identical for both widths).
 const _: () = {
     use core::mem::{offset_of, size_of};
@@ -176,14 +145,6 @@ crate::blocks::block_states!(
     SpeedState: Run, Stop, Error, Reset
 );
 
-const TAGS: [u16; 4] = [
-    SL_TYPE_SPEED_INT,
-    SL_TYPE_SPEED_UINT,
-    SL_TYPE_SPEED_DINT,
-    SL_TYPE_SPEED_UDINT,
-];
-const NAMES: [&str; 4] = ["SPEED_INT", "SPEED_UINT", "SPEED_DINT", "SPEED_UDINT"];
-
 /// Diag value texts (manual §4.24.2).
 const DIAG_VALUES: &[(u16, &str)] = &[
     (0, "No diagnostic information"),
@@ -197,18 +158,9 @@ const DIAG_VALUES: &[(u16, &str)] = &[
     ),
 ];
 
-const fn info<T: Analog>() -> BlockInfo {
-    BlockInfo {
-        tag: TAGS[T::VARIANT],
-        name: NAMES[T::VARIANT],
-        states: <SpeedState as crate::registry::BlockState>::TABLE,
-        diag: &[],
-        diag_values: DIAG_VALUES,
-    }
-}
-
 crate::impl_member!([T: Analog, const P1: usize, const P2: usize] FB_SPEED<T, P1, P2> {
-    info: info::<T>(),
+    info: crate::blocks::analog::variant_info!(T, "SPEED", SpeedState, DIAG_VALUES;
+        INT = SL_TYPE_SPEED_INT, UINT = SL_TYPE_SPEED_UINT, DINT = SL_TYPE_SPEED_DINT, UDINT = SL_TYPE_SPEED_UDINT),
     state: SpeedState,
     private: SL_SPEED_PRIVATE,
     input: [nPosition],

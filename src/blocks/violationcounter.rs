@@ -11,7 +11,6 @@
 #![allow(non_camel_case_types)] // the ABI's names (FB_VIOLATIONCOUNTER_UINT …)
 
 use super::analog::{magic, Unsigned};
-use super::BlockInfo;
 use crate::prim::bools;
 use crate::prim::envelope::Block;
 use crate::prim::header::{param_crc, SL_PRIVATE_HEADER};
@@ -106,32 +105,13 @@ pub type FB_VIOLATIONCOUNTER_UINT = FB_VIOLATIONCOUNTER<u16, 2, 6>;
 /// FB VIOLATIONCOUNTER, UDINT variant.
 pub type FB_VIOLATIONCOUNTER_UDINT = FB_VIOLATIONCOUNTER<u32, 4, 4>;
 
-// The ABI-2 §11.12 numbers of the two layouts.
-macro_rules! layout_rule {
-    ($($ty:ty, $w:literal, $ob:literal;)*) => {$(
-        const _: () = {
-            use core::mem::{offset_of, size_of};
-            assert!(offset_of!($ty, bEnable) == 1);
-            assert!(offset_of!($ty, bRun) == 16 && offset_of!($ty, bErrAck) == 17);
-            assert!(offset_of!($ty, nIncrementError) == 20);
-            assert!(offset_of!($ty, nCounterLimit) == 20 + 2 * $w);
-            assert!(offset_of!($ty, wInputActive) == 20 + 3 * $w);
-            assert!(offset_of!($ty, wInputNegated) == 22 + 3 * $w);
-            assert!(offset_of!($ty, bInputOK) == $ob + 1);
-            assert!(offset_of!($ty, nActViolationCnt) == $ob + 8);
-            assert!(offset_of!($ty, nState) == $ob + 16 && offset_of!($ty, nDiag) == $ob + 18);
-            assert!(offset_of!($ty, dwDiagPar3) == $ob + 28);
-            assert!(offset_of!($ty, stPrivate) == $ob + 32);
-            assert!(size_of::<$ty>() == $ob + 32 + size_of::<SL_VIOLATIONCOUNTER_PRIVATE>());
-        };
-    )*};
-}
-
-layout_rule! {
-    FB_VIOLATIONCOUNTER_UINT, 2, 32; FB_VIOLATIONCOUNTER_UDINT, 4, 40;
-}
-
-const _: () = assert!(core::mem::size_of::<SL_VIOLATIONCOUNTER_PRIVATE>() == 48);
+// The ABI-2 §11.12 numbers of the two layouts (output base).
+const _: () = {
+    use core::mem::{offset_of, size_of};
+    assert!(offset_of!(FB_VIOLATIONCOUNTER_UINT, bInputOK) == 33);
+    assert!(offset_of!(FB_VIOLATIONCOUNTER_UDINT, bInputOK) == 41);
+    assert!(size_of::<SL_VIOLATIONCOUNTER_PRIVATE>() == 48);
+};
 
 crate::blocks::block_states!(
     /// The states of FB VIOLATIONCOUNTER, both variants (manual §4.33.2; ERROR and RESET
@@ -139,26 +119,9 @@ crate::blocks::block_states!(
     ViolationCounterState: Run, Stop, Safe, Error, Reset, Start
 );
 
-const fn info<T: Unsigned>() -> BlockInfo {
-    BlockInfo {
-        tag: if T::VARIANT == 1 {
-            SL_TYPE_VIOLATIONCOUNTER_UINT
-        } else {
-            SL_TYPE_VIOLATIONCOUNTER_UDINT
-        },
-        name: if T::VARIANT == 1 {
-            "VIOLATIONCOUNTER_UINT"
-        } else {
-            "VIOLATIONCOUNTER_UDINT"
-        },
-        states: <ViolationCounterState as crate::registry::BlockState>::TABLE,
-        diag: &[],
-        diag_values: &[(0, "No diagnostic information")],
-    }
-}
-
 crate::impl_member!([T: Unsigned, const P1: usize, const P2: usize] FB_VIOLATIONCOUNTER<T, P1, P2> {
-    info: info::<T>(),
+    info: crate::blocks::analog::variant_info!(T, "VIOLATIONCOUNTER", ViolationCounterState, &[(0, "No diagnostic information")];
+        UINT = SL_TYPE_VIOLATIONCOUNTER_UINT, UDINT = SL_TYPE_VIOLATIONCOUNTER_UDINT),
     state: ViolationCounterState,
     private: SL_VIOLATIONCOUNTER_PRIVATE,
     input: [bInput, bEnable],

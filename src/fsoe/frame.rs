@@ -15,7 +15,7 @@ use crate::types::Status;
 pub struct SL_FSOE_FRAME {
     /// Offset 0. The command octet.
     pub nCmd: u8,
-    /// Offset 1. Reason when rejected (2 unknown command, 4 CRC); else a Reset frame's code (SafeData[0]), 0 for other commands.
+    /// Offset 1. Reason when rejected (2 unknown command, 4 CRC); else a Reset frame's code (SafeData byte 0), 0 for other commands.
     pub nResetCode: u8,
     /// Offset 2. The ConnID field.
     pub nConnId: u16,

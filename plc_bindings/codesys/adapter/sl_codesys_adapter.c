@@ -1114,6 +1114,38 @@ void CDECL CDECL_EXT cds_sl_violationcounter_udint_cycle(cds_sl_violationcounter
     p->cds_sl_violationcounter_udint_cycle = sl_violationcounter_udint_cycle(p->pFb, p->tNow);
 }
 
+void CDECL CDECL_EXT cds_sl_cammonitor_uint_init(cds_sl_cammonitor_uint_init_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_cammonitor_uint_init = sl_cammonitor_uint_init(p->pFb);
+}
+
+void CDECL CDECL_EXT cds_sl_cammonitor_uint_cycle(cds_sl_cammonitor_uint_cycle_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_cammonitor_uint_cycle = sl_cammonitor_uint_cycle(p->pFb, p->tNow);
+}
+
+void CDECL CDECL_EXT cds_sl_cammonitor_udint_init(cds_sl_cammonitor_udint_init_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_cammonitor_udint_init = sl_cammonitor_udint_init(p->pFb);
+}
+
+void CDECL CDECL_EXT cds_sl_cammonitor_udint_cycle(cds_sl_cammonitor_udint_cycle_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_cammonitor_udint_cycle = sl_cammonitor_udint_cycle(p->pFb, p->tNow);
+}
+
 void CDECL CDECL_EXT cds_sl_slp_init(cds_sl_slp_init_struct *p)
 {
     if (p == 0) {
@@ -1240,4 +1272,28 @@ void CDECL CDECL_EXT cds_sl_fsoe_init(cds_sl_fsoe_init_struct *p)
         return;
     }
     p->cds_sl_fsoe_init = sl_fsoe_init(p->pC);
+}
+
+void CDECL CDECL_EXT cds_sl_state_str(cds_sl_state_str_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    {
+        const char *s = sl_state_str(p->nType, p->nState);
+        size_t k = 0;
+        while (s[k] != 0 && k + 1 < sizeof p->cds_sl_state_str) {
+            p->cds_sl_state_str[k] = s[k];
+            k++;
+        }
+        p->cds_sl_state_str[k] = 0;
+    }
+}
+
+void CDECL CDECL_EXT cds_sl_diag_text(cds_sl_diag_text_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    (void)sl_diag_text(p->nType, p->nDiag, p->cds_sl_diag_text, sizeof p->cds_sl_diag_text);
 }

@@ -1069,6 +1069,36 @@ typedef struct tagcds_sl_violationcounter_udint_cycle_struct {
 } cds_sl_violationcounter_udint_cycle_struct;
 void CDECL CDECL_EXT cds_sl_violationcounter_udint_cycle(cds_sl_violationcounter_udint_cycle_struct *p);
 
+/* FUNCTION cds_sl_cammonitor_uint_init : DINT -> sl_cammonitor_uint_init() */
+typedef struct tagcds_sl_cammonitor_uint_init_struct {
+    struct FB_CAMMONITOR_UINT *pFb; /* VAR_INPUT pFb : POINTER TO ST_FB_CAMMONITOR_UINT */
+    int32_t cds_sl_cammonitor_uint_init; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_cammonitor_uint_init_struct;
+void CDECL CDECL_EXT cds_sl_cammonitor_uint_init(cds_sl_cammonitor_uint_init_struct *p);
+
+/* FUNCTION cds_sl_cammonitor_uint_cycle : DINT -> sl_cammonitor_uint_cycle() */
+typedef struct tagcds_sl_cammonitor_uint_cycle_struct {
+    struct FB_CAMMONITOR_UINT *pFb; /* VAR_INPUT pFb : POINTER TO ST_FB_CAMMONITOR_UINT */
+    uint32_t tNow; /* VAR_INPUT tNow : UDINT */
+    int32_t cds_sl_cammonitor_uint_cycle; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_cammonitor_uint_cycle_struct;
+void CDECL CDECL_EXT cds_sl_cammonitor_uint_cycle(cds_sl_cammonitor_uint_cycle_struct *p);
+
+/* FUNCTION cds_sl_cammonitor_udint_init : DINT -> sl_cammonitor_udint_init() */
+typedef struct tagcds_sl_cammonitor_udint_init_struct {
+    struct FB_CAMMONITOR_UDINT *pFb; /* VAR_INPUT pFb : POINTER TO ST_FB_CAMMONITOR_UDINT */
+    int32_t cds_sl_cammonitor_udint_init; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_cammonitor_udint_init_struct;
+void CDECL CDECL_EXT cds_sl_cammonitor_udint_init(cds_sl_cammonitor_udint_init_struct *p);
+
+/* FUNCTION cds_sl_cammonitor_udint_cycle : DINT -> sl_cammonitor_udint_cycle() */
+typedef struct tagcds_sl_cammonitor_udint_cycle_struct {
+    struct FB_CAMMONITOR_UDINT *pFb; /* VAR_INPUT pFb : POINTER TO ST_FB_CAMMONITOR_UDINT */
+    uint32_t tNow; /* VAR_INPUT tNow : UDINT */
+    int32_t cds_sl_cammonitor_udint_cycle; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_cammonitor_udint_cycle_struct;
+void CDECL CDECL_EXT cds_sl_cammonitor_udint_cycle(cds_sl_cammonitor_udint_cycle_struct *p);
+
 /* FUNCTION cds_sl_slp_init : DINT -> sl_slp_init() */
 typedef struct tagcds_sl_slp_init_struct {
     struct FB_SLP *pFb; /* VAR_INPUT pFb : POINTER TO ST_FB_SLP */
@@ -1208,6 +1238,22 @@ typedef struct tagcds_sl_fsoe_init_struct {
     int32_t cds_sl_fsoe_init; /* VAR_OUTPUT (return value) DINT */
 } cds_sl_fsoe_init_struct;
 void CDECL CDECL_EXT cds_sl_fsoe_init(cds_sl_fsoe_init_struct *p);
+
+/* FUNCTION cds_sl_state_str : STRING(80) -> sl_state_str() */
+typedef struct tagcds_sl_state_str_struct {
+    uint16_t nType; /* VAR_INPUT nType : UINT */
+    uint8_t nState; /* VAR_INPUT nState : BYTE */
+    char cds_sl_state_str[81]; /* VAR_OUTPUT (return value) STRING(80), NUL-terminated */
+} cds_sl_state_str_struct;
+void CDECL CDECL_EXT cds_sl_state_str(cds_sl_state_str_struct *p);
+
+/* FUNCTION cds_sl_diag_text : STRING(255) -> sl_diag_text() */
+typedef struct tagcds_sl_diag_text_struct {
+    uint16_t nType; /* VAR_INPUT nType : UINT */
+    uint16_t nDiag; /* VAR_INPUT nDiag : WORD */
+    char cds_sl_diag_text[256]; /* VAR_OUTPUT (return value) STRING(255), NUL-terminated */
+} cds_sl_diag_text_struct;
+void CDECL CDECL_EXT cds_sl_diag_text(cds_sl_diag_text_struct *p);
 
 /* X-macro over every entry point: X(name) for the runtime component's export table,
    e.g. #define X(n) s_pfCMRegisterAPI2(#n, (RTS_UINTPTR)n, 1, <crc from the Itf.m4>, <version>); */
@@ -1351,6 +1397,10 @@ void CDECL CDECL_EXT cds_sl_fsoe_init(cds_sl_fsoe_init_struct *p);
     X(cds_sl_violationcounter_uint_cycle) \
     X(cds_sl_violationcounter_udint_init) \
     X(cds_sl_violationcounter_udint_cycle) \
+    X(cds_sl_cammonitor_uint_init) \
+    X(cds_sl_cammonitor_uint_cycle) \
+    X(cds_sl_cammonitor_udint_init) \
+    X(cds_sl_cammonitor_udint_cycle) \
     X(cds_sl_slp_init) \
     X(cds_sl_slp_cycle) \
     X(cds_sl_sbt_init) \
@@ -1366,7 +1416,9 @@ void CDECL CDECL_EXT cds_sl_fsoe_init(cds_sl_fsoe_init_struct *p);
     X(cds_sl_group_add_link) \
     X(cds_sl_group_add_link_kind) \
     X(cds_sl_group_cycle) \
-    X(cds_sl_fsoe_init)
+    X(cds_sl_fsoe_init) \
+    X(cds_sl_state_str) \
+    X(cds_sl_diag_text)
 
 #ifdef __cplusplus
 }

@@ -1258,6 +1258,42 @@ HRESULT CSafeLogicModule::sl_violationcounter_udint_cycle(PVOID pFb, int32_t *pn
     return S_OK;
 }
 
+HRESULT CSafeLogicModule::sl_cammonitor_uint_init(PVOID pFb, int32_t *pnResult)
+{
+    if (pFb == NULL || pnResult == NULL) {
+        return E_POINTER;
+    }
+    *pnResult = ::sl_cammonitor_uint_init(static_cast<struct FB_CAMMONITOR_UINT *>(pFb));
+    return S_OK;
+}
+
+HRESULT CSafeLogicModule::sl_cammonitor_uint_cycle(PVOID pFb, int32_t *pnResult, uint32_t tNow)
+{
+    if (pFb == NULL || pnResult == NULL) {
+        return E_POINTER;
+    }
+    *pnResult = ::sl_cammonitor_uint_cycle(static_cast<struct FB_CAMMONITOR_UINT *>(pFb), tNow);
+    return S_OK;
+}
+
+HRESULT CSafeLogicModule::sl_cammonitor_udint_init(PVOID pFb, int32_t *pnResult)
+{
+    if (pFb == NULL || pnResult == NULL) {
+        return E_POINTER;
+    }
+    *pnResult = ::sl_cammonitor_udint_init(static_cast<struct FB_CAMMONITOR_UDINT *>(pFb));
+    return S_OK;
+}
+
+HRESULT CSafeLogicModule::sl_cammonitor_udint_cycle(PVOID pFb, int32_t *pnResult, uint32_t tNow)
+{
+    if (pFb == NULL || pnResult == NULL) {
+        return E_POINTER;
+    }
+    *pnResult = ::sl_cammonitor_udint_cycle(static_cast<struct FB_CAMMONITOR_UDINT *>(pFb), tNow);
+    return S_OK;
+}
+
 HRESULT CSafeLogicModule::sl_slp_init(PVOID pFb, int32_t *pnResult)
 {
     if (pFb == NULL || pnResult == NULL) {
@@ -1390,5 +1426,30 @@ HRESULT CSafeLogicModule::sl_fsoe_init(PVOID pC, int32_t *pnResult)
         return E_POINTER;
     }
     *pnResult = ::sl_fsoe_init(static_cast<struct SL_FSOE_CONN *>(pC));
+    return S_OK;
+}
+
+HRESULT CSafeLogicModule::sl_state_str(PVOID pBuf, uint32_t nLen, uint16_t nType, uint8_t nState)
+{
+    if (pBuf == NULL || nLen == 0) {
+        return E_POINTER;
+    }
+    const char *s = ::sl_state_str(nType, nState);
+    char *d = static_cast<char *>(pBuf);
+    uint32_t k = 0;
+    while (s[k] != 0 && k + 1 < nLen) {
+        d[k] = s[k];
+        k++;
+    }
+    d[k] = 0;
+    return S_OK;
+}
+
+HRESULT CSafeLogicModule::sl_diag_text(PVOID pBuf, uint32_t nLen, uint16_t nType, uint16_t nDiag)
+{
+    if (pBuf == NULL || nLen == 0) {
+        return E_POINTER;
+    }
+    (void)::sl_diag_text(nType, nDiag, static_cast<char *>(pBuf), nLen);
     return S_OK;
 }
