@@ -11485,7 +11485,8 @@ const char *sl_status_str(int32_t status);
 
 /*
  Static, NUL-terminated name of state `nState` of a block of type `nType`
- (`SL_TYPE_<NAME>`): "RUN", "STOP", "DELAYOUT", ... ; "?" for a value the block does not
+ (`SL_TYPE_<NAME>`): "RUN", "STOP", "DELAYOUT", ... , or of an FSoE connection
+ (`SL_TYPE_FSOE_CONN`: "RESET" … "SHUTDOWN-DEACTIVE"); "?" for a value the type does not
  have. Never NULL.
  */
 const char *sl_state_str(uint16_t nType, uint8_t nState);

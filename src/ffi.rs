@@ -78,15 +78,16 @@ pub extern "C" fn sl_status_str(status: i32) -> *const c_char {
 }
 
 /// Static, NUL-terminated name of state `nState` of a block of type `nType`
-/// (`SL_TYPE_<NAME>`): "RUN", "STOP", "DELAYOUT", ... ; "?" for a value the block does not
+/// (`SL_TYPE_<NAME>`): "RUN", "STOP", "DELAYOUT", ... , or of an FSoE connection
+/// (`SL_TYPE_FSOE_CONN`: "RESET" … "SHUTDOWN-DEACTIVE"); "?" for a value the type does not
 /// have. Never NULL.
 #[no_mangle]
 #[allow(non_snake_case)]
 pub extern "C" fn sl_state_str(nType: u16, nState: u8) -> *const c_char {
     ffi_boundary!(
         UNKNOWN_STATE.as_ptr(),
-        crate::blocks::info(nType)
-            .and_then(|b| b.states.iter().find(|(v, _)| *v == nState))
+        crate::blocks::states(nType)
+            .and_then(|s| s.iter().find(|(v, _)| *v == nState))
             .map_or(UNKNOWN_STATE.as_ptr(), |(_, name)| name.as_ptr())
     )
     .cast()

@@ -500,3 +500,35 @@ fn init_refuses_invalid_parameters_and_cycle_checks_lengths() {
     assert_eq!(cycle(&mut c, 1, None, &mut tx).0, Status::Corrupt);
     assert_eq!(c.bComErr, 1);
 }
+
+/// `sl_state_str` names a connection's states (manual §3.2.1.3) by its member tag, and
+/// nothing else.
+#[test]
+fn state_names_of_a_connection() {
+    let name = |s: u8| {
+        let p = safelogic::ffi::sl_state_str(SL_TYPE_FSOE_CONN, s);
+        unsafe { std::ffi::CStr::from_ptr(p) }
+            .to_str()
+            .unwrap()
+            .to_string()
+    };
+    let want = [
+        "RESET",
+        "SESSION",
+        "CONNECTION",
+        "PARAMETER",
+        "DATA",
+        "SHUTDOWN",
+        "SHUTDOWN-DEACTIVE",
+    ];
+    for (k, w) in want.iter().enumerate() {
+        assert_eq!(name(SL_FSOE_STATE_RESET + k as u8), *w);
+    }
+    for s in (0..=u8::MAX).filter(|s| !(100..=106).contains(s)) {
+        assert_eq!(name(s), "?", "state {s}");
+    }
+    assert_eq!(
+        safelogic::blocks::state_name(SL_TYPE_FSOE_CONN, 104),
+        "DATA"
+    );
+}

@@ -132,10 +132,19 @@ pub fn info(tag: u16) -> Option<&'static BlockInfo> {
     crate::registry::block_type(tag).map(|b| &b.info)
 }
 
-/// Name of state `state` of block type `tag` ("?" for a value the block does not have).
+/// The states (value, NUL-terminated name) of a group member type: a block's, or an FSoE
+/// connection's (`SL_TYPE_FSOE_CONN`).
+pub fn states(tag: u16) -> Option<&'static [(u8, &'static str)]> {
+    if tag == crate::fsoe::SL_TYPE_FSOE_CONN {
+        return Some(crate::fsoe::STATE_NAMES);
+    }
+    info(tag).map(|b| b.states)
+}
+
+/// Name of state `state` of member type `tag` ("?" for a value the type does not have).
 pub fn state_name(tag: u16, state: u8) -> &'static str {
-    info(tag)
-        .and_then(|b| b.states.iter().find(|(v, _)| *v == state))
+    states(tag)
+        .and_then(|s| s.iter().find(|(v, _)| *v == state))
         .map_or("?", |(_, name)| name.trim_end_matches('\0'))
 }
 

@@ -100,6 +100,18 @@ pub use frame::SL_FSOE_FRAME;
 
 pub mod member;
 
+/// The connection states with their manual names (§3.2.1.3), NUL-terminated: what
+/// `sl_state_str(SL_TYPE_FSOE_CONN, nState)` returns.
+pub const STATE_NAMES: &[(u8, &str)] = &[
+    (SL_FSOE_STATE_RESET, "RESET\0"),
+    (SL_FSOE_STATE_SESSION, "SESSION\0"),
+    (SL_FSOE_STATE_CONNECTION, "CONNECTION\0"),
+    (SL_FSOE_STATE_PARAMETER, "PARAMETER\0"),
+    (SL_FSOE_STATE_DATA, "DATA\0"),
+    (SL_FSOE_STATE_SHUTDOWN, "SHUTDOWN\0"),
+    (SL_FSOE_STATE_SHUTDOWN_DEACTIVE, "SHUTDOWN-DEACTIVE\0"),
+];
+
 /// Type tag of an FSoE connection as a group member (`SL_MEMBER.nType`): not a function
 /// block, so outside the registry's block tags.
 pub const SL_TYPE_FSOE_CONN: u16 = 256;
