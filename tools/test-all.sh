@@ -89,7 +89,9 @@ lib=build/prefix/lib
 [ -f "$lib/libsafelogic.so.0.1.0" ] && [ ! -L "$lib/libsafelogic.so.0.1.0" ]
 [ "$(readlink "$lib/libsafelogic.so.0")" = libsafelogic.so.0.1.0 ]
 [ "$(readlink "$lib/libsafelogic.so")" = libsafelogic.so.0 ]
-readelf -d "$lib/libsafelogic.so.0.1.0" | grep -q 'Library soname: \[libsafelogic.so.0\]'
+# (grep reads to the end, never -q: a producer cut off by an early exit dies of SIGPIPE and
+# fails the pipeline under pipefail - seen with ldd on a loaded machine)
+readelf -d "$lib/libsafelogic.so.0.1.0" | grep 'Library soname: \[libsafelogic.so.0\]' >/dev/null
 # DESTDIR + PREFIX (staged install for packaging): files under DESTDIR, the .pc names PREFIX
 DESTDIR="$root/build/stage" PREFIX=/usr bash tools/install.sh >/dev/null
 [ -L build/stage/usr/lib/libsafelogic.so.0 ] && [ -f build/stage/usr/include/safelogic.h ]
@@ -100,15 +102,15 @@ export PKG_CONFIG_PATH="$root/build/prefix/lib/pkgconfig"
 # shellcheck disable=SC2046
 cc -std=c11 -Wall -Wextra -Werror -pedantic examples/c/group_examples.c $(pkg-config --cflags --libs safelogic) \
     -Wl,-rpath,"$(pkg-config --variable=libdir safelogic)" -o build/prefix/group_examples_dynamic
-readelf -d build/prefix/group_examples_dynamic | grep -q 'NEEDED.*\[libsafelogic.so.0\]'
-ldd build/prefix/group_examples_dynamic | grep -q "libsafelogic.so.0 => $root/build/prefix/lib/libsafelogic.so.0"
+readelf -d build/prefix/group_examples_dynamic | grep 'NEEDED.*\[libsafelogic.so.0\]' >/dev/null
+ldd build/prefix/group_examples_dynamic | grep "libsafelogic.so.0 => $root/build/prefix/lib/libsafelogic.so.0" >/dev/null
 build/prefix/group_examples_dynamic >/dev/null
 # Static, as the README says: pkg-config --static (Libs.private) with -static
 # shellcheck disable=SC2046
 cc -static -std=c11 -Wall -Wextra -Werror -pedantic examples/c/group_examples.c \
     $(pkg-config --static --cflags --libs safelogic) -o build/prefix/group_examples_static 2>build/prefix/static-link.log \
     || { cat build/prefix/static-link.log; exit 1; }
-if readelf -d build/prefix/group_examples_static 2>/dev/null | grep -q NEEDED; then
+if readelf -d build/prefix/group_examples_static 2>/dev/null | grep NEEDED >/dev/null; then
     echo "static program needs shared libraries:"; readelf -d build/prefix/group_examples_static; exit 1
 fi
 build/prefix/group_examples_static >/dev/null
