@@ -656,45 +656,68 @@ pub unsafe extern "C" fn sl_group_add_link(
     nDstOffset: u16,
 ) -> i32 {
     ffi_boundary!(SL_E_INTERNAL, {
-        let run = || -> Result<i32, i32> {
-            let g_ptr = g;
-            let g = instance(g)?;
-            let mut t = member_table(g, g_ptr as usize, aMembers)?;
-            let (_, link_cap) = group::link_counts(g).ok_or(SL_E_CORRUPT)?;
-            let table = storage(aMembers, usize::from(t.cap))?;
-            let link_span = storage(aLinks, usize::from(link_cap))?;
-            tables_disjoint(g_ptr, table, Some(link_span))?;
-            for i in 0..usize::from(t.count) {
-                if !disjoint(t.span_of(i).ok_or(SL_E_CORRUPT)?, link_span) {
-                    return Err(SL_E_CONFIG);
-                }
-            }
-            // SAFETY: checked above: the caller's link table, disjoint from the group, the
-            // member table and every member.
-            let links = unsafe { slice_mut(aLinks, usize::from(link_cap)) };
-            // The kind follows from the source field's type; add_link refuses a
-            // destination of another type.
-            let kind = t
-                .with(usize::from(nSrcMember), |b| {
-                    b.fields()
-                        .iter()
-                        .find(|f| f.offset == nSrcOffset)
-                        .and_then(|f| group::link_kind(f.kind))
-                })
-                .flatten()
-                .unwrap_or(SL_LINK_BOOL);
-            let link = SL_LINK {
-                nSrcMember,
-                nSrcOffset,
-                nDstMember,
-                nDstOffset,
-                nKind: kind,
-                aReserved: [0; 3],
-            };
-            Ok(group::add_link(g, &mut t, links, link))
-        };
-        run().unwrap_or_else(|e| e)
+        // SAFETY: forwarded under this function's contract.
+        unsafe {
+            add_link(
+                g, aMembers, aLinks, None, nSrcMember, nSrcOffset, nDstMember, nDstOffset,
+            )
+        }
+        .unwrap_or_else(|e| e)
     })
+}
+
+/// The checks and the insertion behind `sl_group_add_link` (`kind` None: the kind follows
+/// from the source field's type) and `sl_group_add_link_kind`.
+///
+/// # Safety
+/// As for `sl_group_init`, with the same tables.
+#[allow(non_snake_case, clippy::too_many_arguments)]
+unsafe fn add_link(
+    g: *mut SL_GROUP,
+    aMembers: *mut SL_MEMBER,
+    aLinks: *mut SL_LINK,
+    kind: Option<u8>,
+    nSrcMember: u16,
+    nSrcOffset: u16,
+    nDstMember: u16,
+    nDstOffset: u16,
+) -> Result<i32, i32> {
+    let g_ptr = g;
+    let g = instance(g)?;
+    let mut t = member_table(g, g_ptr as usize, aMembers)?;
+    let (_, link_cap) = group::link_counts(g).ok_or(SL_E_CORRUPT)?;
+    let table = storage(aMembers, usize::from(t.cap))?;
+    let link_span = storage(aLinks, usize::from(link_cap))?;
+    tables_disjoint(g_ptr, table, Some(link_span))?;
+    for i in 0..usize::from(t.count) {
+        if !disjoint(t.span_of(i).ok_or(SL_E_CORRUPT)?, link_span) {
+            return Err(SL_E_CONFIG);
+        }
+    }
+    // SAFETY: checked above: the caller's link table, disjoint from the group, the member
+    // table and every member.
+    let links = unsafe { slice_mut(aLinks, usize::from(link_cap)) };
+    // Without a stated kind it follows from the source field's type; add_link refuses a
+    // destination of another type.
+    let kind = kind.unwrap_or_else(|| {
+        t.with(usize::from(nSrcMember), |b| {
+            b.fields()
+                .iter()
+                .find(|f| f.offset == nSrcOffset)
+                .and_then(|f| group::link_kind(f.kind))
+        })
+        .flatten()
+        .unwrap_or(SL_LINK_BOOL)
+    });
+    let link = SL_LINK {
+        nSrcMember,
+        nSrcOffset,
+        nDstMember,
+        nDstOffset,
+        nKind: kind,
+        aReserved: [0; 3],
+    };
+    Ok(group::add_link(g, &mut t, links, link))
 }
 
 /// Links as `sl_group_add_link` with the link kind stated: SL_LINK_BOOL, SL_LINK_ANALOG16,
@@ -722,33 +745,20 @@ pub unsafe extern "C" fn sl_group_add_link_kind(
     nDstOffset: u16,
 ) -> i32 {
     ffi_boundary!(SL_E_INTERNAL, {
-        let run = || -> Result<i32, i32> {
-            let g_ptr = g;
-            let g = instance(g)?;
-            let mut t = member_table(g, g_ptr as usize, aMembers)?;
-            let (_, link_cap) = group::link_counts(g).ok_or(SL_E_CORRUPT)?;
-            let table = storage(aMembers, usize::from(t.cap))?;
-            let link_span = storage(aLinks, usize::from(link_cap))?;
-            tables_disjoint(g_ptr, table, Some(link_span))?;
-            for i in 0..usize::from(t.count) {
-                if !disjoint(t.span_of(i).ok_or(SL_E_CORRUPT)?, link_span) {
-                    return Err(SL_E_CONFIG);
-                }
-            }
-            // SAFETY: checked above: the caller's link table, disjoint from the group, the
-            // member table and every member.
-            let links = unsafe { slice_mut(aLinks, usize::from(link_cap)) };
-            let link = SL_LINK {
+        // SAFETY: forwarded under this function's contract.
+        unsafe {
+            add_link(
+                g,
+                aMembers,
+                aLinks,
+                Some(nKind),
                 nSrcMember,
                 nSrcOffset,
                 nDstMember,
                 nDstOffset,
-                nKind,
-                aReserved: [0; 3],
-            };
-            Ok(group::add_link(g, &mut t, links, link))
-        };
-        run().unwrap_or_else(|e| e)
+            )
+        }
+        .unwrap_or_else(|e| e)
     })
 }
 
