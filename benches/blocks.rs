@@ -733,6 +733,154 @@ fn main() {
         ));
     }
 
+    // Random inputs against steady ones (issue 13: no cliff off the fast path): the same
+    // block timed with inputs drawn afresh before every call and with the same inputs
+    // written before every call (so both time the writes).
+    let cliff = if only_instructions {
+        Vec::new()
+    } else {
+        vec![
+            cliff_row(
+                "ESTOP",
+                batches,
+                {
+                    let mut e = FB_ESTOP {
+                        wInputActive: 0b11,
+                        tDiscTime12: 20,
+                        bRun: 1,
+                        ..Default::default()
+                    };
+                    e.init();
+                    e
+                },
+                sl_estop_cycle,
+                |f, r| {
+                    (f.bEStopIn1, f.bEStopIn2, f.bRestart, f.bErrAck) = (
+                        (r & 1) as u8,
+                        (r >> 1 & 1) as u8,
+                        (r >> 2 & 1) as u8,
+                        (r >> 3 & 1) as u8,
+                    );
+                },
+            ),
+            cliff_row(
+                "MON",
+                batches,
+                {
+                    let mut m = FB_MON {
+                        wInputActive: 0b11,
+                        tDiscTime12: 20,
+                        bRun: 1,
+                        ..Default::default()
+                    };
+                    m.init();
+                    m
+                },
+                sl_mon_cycle,
+                |f, r| {
+                    (f.bMonIn1, f.bMonIn2, f.bRestart, f.bErrAck) = (
+                        (r & 1) as u8,
+                        (r >> 1 & 1) as u8,
+                        (r >> 2 & 1) as u8,
+                        (r >> 3 & 1) as u8,
+                    );
+                },
+            ),
+            cliff_row(
+                "AND",
+                batches,
+                {
+                    let mut a = FB_AND {
+                        wInputActive: 0b11,
+                        bRun: 1,
+                        ..Default::default()
+                    };
+                    a.init();
+                    a
+                },
+                sl_and_cycle,
+                |f, r| (f.bAndIn1, f.bAndIn2) = ((r & 1) as u8, (r >> 1 & 1) as u8),
+            ),
+            cliff_row(
+                "OR",
+                batches,
+                {
+                    let mut o = FB_OR {
+                        wInputActive: 0b11,
+                        bRun: 1,
+                        ..Default::default()
+                    };
+                    o.init();
+                    o
+                },
+                sl_or_cycle,
+                |f, r| (f.bOrIn1, f.bOrIn2) = ((r & 1) as u8, (r >> 1 & 1) as u8),
+            ),
+            cliff_row(
+                "RS",
+                batches,
+                {
+                    let mut b = FB_RS {
+                        wInputActive: 0b11,
+                        bRun: 1,
+                        ..Default::default()
+                    };
+                    b.init();
+                    b
+                },
+                sl_rs_cycle,
+                |f, r| (f.bReset, f.bSet) = ((r & 1) as u8, (r >> 1 & 1) as u8),
+            ),
+            cliff_row(
+                "SR",
+                batches,
+                {
+                    let mut b = FB_SR {
+                        wInputActive: 0b11,
+                        bRun: 1,
+                        ..Default::default()
+                    };
+                    b.init();
+                    b
+                },
+                sl_sr_cycle,
+                |f, r| (f.bReset, f.bSet) = ((r & 1) as u8, (r >> 1 & 1) as u8),
+            ),
+            cliff_row(
+                "TON",
+                batches,
+                {
+                    let mut b = FB_TON {
+                        wInputActive: 1,
+                        tDelay: 3,
+                        bRun: 1,
+                        ..Default::default()
+                    };
+                    b.init();
+                    b
+                },
+                sl_ton_cycle,
+                |f, r| f.bTonIn1 = (r & 1) as u8,
+            ),
+            cliff_row(
+                "TOF",
+                batches,
+                {
+                    let mut b = FB_TOF {
+                        wInputActive: 1,
+                        tDelay: 3,
+                        bRun: 1,
+                        ..Default::default()
+                    };
+                    b.init();
+                    b
+                },
+                sl_tof_cycle,
+                |f, r| f.bTofIn1 = (r & 1) as u8,
+            ),
+        ]
+    };
+
     let cpu = std::fs::read_to_string("/proc/cpuinfo")
         .ok()
         .and_then(|s| {
@@ -783,5 +931,81 @@ fn main() {
             r.target,
             if r.median <= r.target { "PASS" } else { "MISS" }
         );
+    }
+    if !cliff.is_empty() {
+        println!("  random inputs against steady ones (inputs written before every call in both):");
+        println!(
+            "  {:<9} {:>14} {:>14} {:>14} {:>14} {:>7}  result",
+            "block", "steady median", "steady p99", "random median", "random p99", "ratio"
+        );
+        for c in &cliff {
+            let ratio = c.random.0 / c.steady.0;
+            println!(
+                "  {:<9} {:>14.2} {:>14.2} {:>14.2} {:>14.2} {:>6.2}x  {} (target <= 2x)",
+                c.name,
+                c.steady.0,
+                c.steady.1,
+                c.random.0,
+                c.random.1,
+                ratio,
+                if ratio <= 2.0 { "PASS" } else { "MISS" }
+            );
+        }
+    }
+}
+
+/// Steady and random (median, p99) ns per call of one block.
+struct Cliff {
+    name: &'static str,
+    steady: (f64, f64),
+    random: (f64, f64),
+}
+
+/// Times `set` + `cycle` with a fixed input word (steady: the word that keeps the inputs
+/// TRUE, Restart and ErrAck FALSE) and with a fresh random word before every call.
+fn cliff_row<T: Copy>(
+    name: &'static str,
+    batches: usize,
+    fb: T,
+    cycle: unsafe extern "C" fn(*mut T, u32) -> i32,
+    set: fn(&mut T, u64),
+) -> Cliff {
+    let f: unsafe extern "C" fn(*mut T, u32) -> i32 = black_box(cycle);
+    let mut words = [0u64; 4096];
+    let mut x = 0x9E37_79B9_7F4A_7C15u64;
+    for w in words.iter_mut() {
+        x ^= x << 13;
+        x ^= x >> 7;
+        x ^= x << 17;
+        *w = x;
+    }
+    let run = |random: bool| {
+        let mut fb = fb;
+        let mut t = 0u32;
+        let mut per_call = Vec::with_capacity(batches);
+        let mut k = 0usize;
+        for b in 0..batches + 1 {
+            let start = Instant::now();
+            for _ in 0..CALLS_PER_BATCH {
+                t = t.wrapping_add(1);
+                k = (k + 1) & 4095;
+                let w = if random { words[k] } else { 0b11 };
+                set(black_box(&mut fb), w);
+                black_box(unsafe { f(black_box(&mut fb), t) });
+            }
+            if b > 0 {
+                per_call.push(start.elapsed().as_nanos() as f64 / f64::from(CALLS_PER_BATCH));
+            }
+        }
+        per_call.sort_by(f64::total_cmp);
+        let at = |q: f64| per_call[((per_call.len() - 1) as f64 * q).round() as usize];
+        (at(0.5), at(0.99))
+    };
+    let steady = run(false);
+    let random = run(true);
+    Cliff {
+        name,
+        steady,
+        random,
     }
 }

@@ -2003,7 +2003,10 @@ typedef struct SL_TIMER_PRIVATE {
    Latched `nTimeBase` as written (0 = automatic).
    */
   uint16_t wTimeBase;
-  uint8_t aReserved[2];
+  /*
+   Fast-path key and its complement (`prim::envelope`).
+   */
+  uint8_t anSteady[2];
   /*
    Complement of `stHeader.tPhase`.
    */
@@ -2233,9 +2236,11 @@ typedef struct SL_GROUP {
    */
   uint16_t nLinks;
   /*
-   Offset 26. Reserved.
+   Offset 26. Private: the check of the member and link tables that the last fully
+   checked cycle found intact (the sealed schedule, docs/performance.md). Never write it:
+   a value that does not match only costs one fully checked cycle.
    */
-  uint8_t aReserved2[6];
+  uint16_t awSchedule[3];
   /*
    Offset 32. Private state, 32 bytes: never write it.
    */
@@ -2619,7 +2624,10 @@ typedef struct SL_GUARD_PRIVATE {
    Start times of the pair discrepancy timers.
    */
   uint32_t atDiscStart[4];
-  uint8_t aReserved[4];
+  /*
+   Fast-path key and its complement (`prim::envelope`).
+   */
+  uint16_t awSteady[2];
 } SL_GUARD_PRIVATE;
 
 /*
@@ -3147,7 +3155,10 @@ typedef struct SL_LOADSENSING_PRIVATE_UDINT {
  */
 typedef struct SL_LOGIC_PRIVATE {
   struct SL_PRIVATE_HEADER stHeader;
-  uint8_t aReserved[4];
+  /*
+   Fast-path key and its complement (`prim::envelope`).
+   */
+  uint16_t awSteady[2];
 } SL_LOGIC_PRIVATE;
 
 /*
@@ -4161,7 +4172,10 @@ typedef struct FB_EDM {
  */
 typedef struct SL_FLIPFLOP_PRIVATE {
   struct SL_PRIVATE_HEADER stHeader;
-  uint8_t aReserved[4];
+  /*
+   Fast-path key and its complement (`prim::envelope`).
+   */
+  uint16_t awSteady[2];
 } SL_FLIPFLOP_PRIVATE;
 
 /*
@@ -11883,7 +11897,7 @@ SL_STATIC_ASSERT(sizeof(SL_PRIVATE_HEADER) == 28, "size of SL_PRIVATE_HEADER");
 SL_STATIC_ASSERT(offsetof(SL_TIMER_PRIVATE, stHeader) == 0, "offset of SL_TIMER_PRIVATE.stHeader");
 SL_STATIC_ASSERT(offsetof(SL_TIMER_PRIVATE, dwDelay) == 28, "offset of SL_TIMER_PRIVATE.dwDelay");
 SL_STATIC_ASSERT(offsetof(SL_TIMER_PRIVATE, wTimeBase) == 32, "offset of SL_TIMER_PRIVATE.wTimeBase");
-SL_STATIC_ASSERT(offsetof(SL_TIMER_PRIVATE, aReserved) == 34, "offset of SL_TIMER_PRIVATE.aReserved");
+SL_STATIC_ASSERT(offsetof(SL_TIMER_PRIVATE, anSteady) == 34, "offset of SL_TIMER_PRIVATE.anSteady");
 SL_STATIC_ASSERT(offsetof(SL_TIMER_PRIVATE, tPhaseCheck) == 36, "offset of SL_TIMER_PRIVATE.tPhaseCheck");
 SL_STATIC_ASSERT(offsetof(SL_TIMER_PRIVATE, tElapsed) == 40, "offset of SL_TIMER_PRIVATE.tElapsed");
 SL_STATIC_ASSERT(offsetof(SL_TIMER_PRIVATE, tElapsedCheck) == 44, "offset of SL_TIMER_PRIVATE.tElapsedCheck");
@@ -11938,7 +11952,7 @@ SL_STATIC_ASSERT(offsetof(SL_GROUP, nDiag) == 18, "offset of SL_GROUP.nDiag");
 SL_STATIC_ASSERT(offsetof(SL_GROUP, nFailedMember) == 20, "offset of SL_GROUP.nFailedMember");
 SL_STATIC_ASSERT(offsetof(SL_GROUP, nMembers) == 22, "offset of SL_GROUP.nMembers");
 SL_STATIC_ASSERT(offsetof(SL_GROUP, nLinks) == 24, "offset of SL_GROUP.nLinks");
-SL_STATIC_ASSERT(offsetof(SL_GROUP, aReserved2) == 26, "offset of SL_GROUP.aReserved2");
+SL_STATIC_ASSERT(offsetof(SL_GROUP, awSchedule) == 26, "offset of SL_GROUP.awSchedule");
 SL_STATIC_ASSERT(offsetof(SL_GROUP, stPrivate) == 32, "offset of SL_GROUP.stPrivate");
 SL_STATIC_ASSERT(sizeof(SL_GROUP) == 64, "size of SL_GROUP");
 SL_STATIC_ASSERT(offsetof(SL_LINK, nSrcMember) == 0, "offset of SL_LINK.nSrcMember");
@@ -12029,7 +12043,7 @@ SL_STATIC_ASSERT(sizeof(SL_FSOE_FRAME) == 40, "size of SL_FSOE_FRAME");
 SL_STATIC_ASSERT(offsetof(SL_GUARD_PRIVATE, stHeader) == 0, "offset of SL_GUARD_PRIVATE.stHeader");
 SL_STATIC_ASSERT(offsetof(SL_GUARD_PRIVATE, awTime) == 28, "offset of SL_GUARD_PRIVATE.awTime");
 SL_STATIC_ASSERT(offsetof(SL_GUARD_PRIVATE, atDiscStart) == 44, "offset of SL_GUARD_PRIVATE.atDiscStart");
-SL_STATIC_ASSERT(offsetof(SL_GUARD_PRIVATE, aReserved) == 60, "offset of SL_GUARD_PRIVATE.aReserved");
+SL_STATIC_ASSERT(offsetof(SL_GUARD_PRIVATE, awSteady) == 60, "offset of SL_GUARD_PRIVATE.awSteady");
 SL_STATIC_ASSERT(sizeof(SL_GUARD_PRIVATE) == 64, "size of SL_GUARD_PRIVATE");
 SL_STATIC_ASSERT(offsetof(FB_ESTOP, bRestart) == 0, "offset of FB_ESTOP.bRestart");
 SL_STATIC_ASSERT(offsetof(FB_ESTOP, bEDM1) == 1, "offset of FB_ESTOP.bEDM1");
@@ -12151,7 +12165,7 @@ SL_STATIC_ASSERT(offsetof(SL_LOADSENSING_PRIVATE_UDINT, wActive) == 34, "offset 
 SL_STATIC_ASSERT(offsetof(SL_LOADSENSING_PRIVATE_UDINT, aRow) == 36, "offset of SL_LOADSENSING_PRIVATE_UDINT.aRow");
 SL_STATIC_ASSERT(sizeof(SL_LOADSENSING_PRIVATE_UDINT) == 536, "size of SL_LOADSENSING_PRIVATE_UDINT");
 SL_STATIC_ASSERT(offsetof(SL_LOGIC_PRIVATE, stHeader) == 0, "offset of SL_LOGIC_PRIVATE.stHeader");
-SL_STATIC_ASSERT(offsetof(SL_LOGIC_PRIVATE, aReserved) == 28, "offset of SL_LOGIC_PRIVATE.aReserved");
+SL_STATIC_ASSERT(offsetof(SL_LOGIC_PRIVATE, awSteady) == 28, "offset of SL_LOGIC_PRIVATE.awSteady");
 SL_STATIC_ASSERT(sizeof(SL_LOGIC_PRIVATE) == 32, "size of SL_LOGIC_PRIVATE");
 SL_STATIC_ASSERT(offsetof(FB_AND, aReserved0) == 0, "offset of FB_AND.aReserved0");
 SL_STATIC_ASSERT(offsetof(FB_AND, bAndIn1) == 8, "offset of FB_AND.bAndIn1");
@@ -12394,7 +12408,7 @@ SL_STATIC_ASSERT(offsetof(FB_EDM, aReserved5) == 44, "offset of FB_EDM.aReserved
 SL_STATIC_ASSERT(offsetof(FB_EDM, stPrivate) == 48, "offset of FB_EDM.stPrivate");
 SL_STATIC_ASSERT(sizeof(FB_EDM) == 80, "size of FB_EDM");
 SL_STATIC_ASSERT(offsetof(SL_FLIPFLOP_PRIVATE, stHeader) == 0, "offset of SL_FLIPFLOP_PRIVATE.stHeader");
-SL_STATIC_ASSERT(offsetof(SL_FLIPFLOP_PRIVATE, aReserved) == 28, "offset of SL_FLIPFLOP_PRIVATE.aReserved");
+SL_STATIC_ASSERT(offsetof(SL_FLIPFLOP_PRIVATE, awSteady) == 28, "offset of SL_FLIPFLOP_PRIVATE.awSteady");
 SL_STATIC_ASSERT(sizeof(SL_FLIPFLOP_PRIVATE) == 32, "size of SL_FLIPFLOP_PRIVATE");
 SL_STATIC_ASSERT(offsetof(FB_RS, aReserved0) == 0, "offset of FB_RS.aReserved0");
 SL_STATIC_ASSERT(offsetof(FB_RS, bReset) == 8, "offset of FB_RS.bReset");

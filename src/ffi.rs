@@ -205,6 +205,35 @@ macro_rules! ffi_functions {
             None
         }
 
+        /// The sealed schedule's dispatch: type tag → runner (a table, not a search).
+        static RUNNERS: [Option<Runner>; {
+            let tags = [$(<$ty as Registered>::INFO.tag),*];
+            let mut max = 0;
+            let mut i = 0;
+            while i < tags.len() {
+                if tags[i] > max {
+                    max = tags[i];
+                }
+                i += 1;
+            }
+            max as usize + 1
+        }] = {
+            let mut t = [None; {
+                let tags = [$(<$ty as Registered>::INFO.tag),*];
+                let mut max = 0;
+                let mut i = 0;
+                while i < tags.len() {
+                    if tags[i] > max {
+                        max = tags[i];
+                    }
+                    i += 1;
+                }
+                max as usize + 1
+            }];
+            $(t[<$ty as Registered>::INFO.tag as usize] = Some(run_as::<$ty> as Runner);)*
+            t
+        };
+
         /// The memory layout of every registered type, for the checks of a new member.
         fn layouts() -> [TypeLayout; [$(stringify!($ty)),*].len()] {
             [$(TypeLayout {
@@ -322,6 +351,88 @@ impl Members for CMembers {
         let e = self.entry(i)?;
         member_dyn(e.nType, e.pBlock).map(f)
     }
+
+    /// Binds the group's address, both tables' addresses, counts and capacities and every
+    /// byte of every entry and link (their own checks included), in order.
+    fn schedule_check<L: group::Links + ?Sized>(&self, links: &L) -> Option<u64> {
+        let mut h = group::schedule_start(
+            self.group,
+            self.base as usize,
+            self.count,
+            self.cap,
+            links.count(),
+        );
+        for i in 0..usize::from(self.count) {
+            // SAFETY: `i < count <= cap` entries at `base` (checked by `storage`); read by
+            // value.
+            let e = unsafe { self.base.add(i).read() };
+            h = group::schedule_member(h, &e);
+        }
+        for i in 0..links.count() {
+            h = group::schedule_link(h, &links.get(i)?);
+        }
+        Some(group::schedule_end(h))
+    }
+
+    fn run_sealed(
+        &mut self,
+        i: usize,
+        run: u8,
+        ack: u8,
+        now: u32,
+        w: &mut group::Wiring,
+    ) -> Option<group::Ran> {
+        if i >= usize::from(self.count) {
+            return None;
+        }
+        // SAFETY: as in `entry`; the entry is one a fully checked cycle found intact.
+        let e = unsafe { self.base.add(i).read() };
+        match RUNNERS.get(usize::from(e.nType)).copied().flatten() {
+            Some(runner) => runner(e.pBlock, run, ack, now, w),
+            None => member_dyn(e.nType, e.pBlock).map(|b| b.run_in_group(run, ack, now, w)),
+        }
+    }
+
+    fn copy_sealed(&mut self, l: &SL_LINK) {
+        let block = |m: u16| {
+            // SAFETY: as in `entry` (`m < count`, checked when the link was added).
+            (m < self.count).then(|| unsafe { self.base.add(usize::from(m)).read() }.pBlock)
+        };
+        let width = match l.nKind {
+            SL_LINK_BOOL => 1,
+            group::SL_LINK_ANALOG16 => 2,
+            _ => 4,
+        };
+        if let (Some(src), Some(dst)) = (block(l.nSrcMember), block(l.nDstMember)) {
+            // SAFETY: both fields were checked when the link was added (an output of the
+            // source's type at nSrcOffset, an input of the same type and width at
+            // nDstOffset), inside blocks that are live and share no byte with the tables
+            // (sl_group_add_member); the tables are those a fully checked cycle saw. `copy`
+            // allows a link from a block to itself.
+            unsafe {
+                core::ptr::copy(
+                    src.cast::<u8>().add(usize::from(l.nSrcOffset)),
+                    dst.cast::<u8>().add(usize::from(l.nDstOffset)),
+                    width,
+                );
+            }
+        }
+    }
+}
+
+/// Runs the block of type `B` at `p` as a group member (the sealed schedule's dispatch).
+type Runner = fn(*mut c_void, u8, u8, u32, &mut group::Wiring) -> Option<group::Ran>;
+
+fn run_as<B: Member>(
+    p: *mut c_void,
+    run: u8,
+    ack: u8,
+    now: u32,
+    w: &mut group::Wiring,
+) -> Option<group::Ran> {
+    instance(p.cast::<B>())
+        .ok()
+        .map(|b| b.run_in_group(run, ack, now, w))
 }
 
 /// Link storage read by value through the raw pointer.
@@ -805,6 +916,35 @@ pub unsafe extern "C" fn sl_group_cycle(
             Ok(group::cycle_with(g, &mut t, &l, tNow))
         };
         run().unwrap_or_else(|e| e)
+    })
+}
+
+/// Whether the next `sl_group_cycle` with these tables runs the sealed schedule (the
+/// tables equal those the last fully checked cycle found intact, docs/performance.md). For
+/// the tests that pin the sealed schedule to the checked one; not part of the C API.
+///
+/// # Safety
+/// As for `sl_group_cycle`.
+#[doc(hidden)]
+#[allow(non_snake_case)]
+pub unsafe fn sl_group_schedule_sealed(
+    g: *mut SL_GROUP,
+    aMembers: *mut SL_MEMBER,
+    aLinks: *mut SL_LINK,
+) -> bool {
+    let g_ptr = g;
+    let Ok(g) = instance(g) else {
+        return false;
+    };
+    let Some((links, _)) = group::link_counts(g) else {
+        return false;
+    };
+    member_table(g, g_ptr as usize, aMembers).is_ok_and(|t| {
+        let l = CLinks {
+            base: aLinks,
+            count: usize::from(links),
+        };
+        group::is_sealed(g, &t, &l)
     })
 }
 

@@ -442,6 +442,50 @@ pub fn member_check(
     [b[0], b[1], b[2], b[3], b[4], b[5]]
 }
 
+/// The sealed schedule's check (docs/performance.md), in steps: where the tables are and
+/// how many entries they hold, then every member entry and every link, in order. One
+/// multiply per 64-bit word: a bijection of the running value for each word, so a change of
+/// any single word always changes the result.
+pub fn schedule_start(group: usize, members: usize, count: u16, cap: u16, links: usize) -> u64 {
+    let h = mix(0x5AFE_10C1_6A05_0003, group as u64);
+    let h = mix(h, members as u64);
+    mix(
+        h,
+        u64::from(count) | u64::from(cap) << 16 | (links as u64) << 32,
+    )
+}
+
+/// One member entry into the schedule check.
+#[inline]
+pub fn schedule_member(h: u64, e: &SL_MEMBER) -> u64 {
+    let [a, b, c, d, e0, e1] = e.aReserved;
+    let tail = u64::from(e.nType) | u64::from_le_bytes([0, 0, a, b, c, d, e0, e1]);
+    step(step(h, e.pBlock as usize as u64), tail)
+}
+
+/// One link into the schedule check.
+#[inline]
+pub fn schedule_link(h: u64, l: &SL_LINK) -> u64 {
+    let [a, b, c] = l.aReserved;
+    let w0 = u64::from(l.nSrcMember)
+        | u64::from(l.nSrcOffset) << 16
+        | u64::from(l.nDstMember) << 32
+        | u64::from(l.nDstOffset) << 48;
+    let w1 = u64::from_le_bytes([l.nKind, a, b, c, 0, 0, 0, 0]);
+    step(step(h, w0), w1)
+}
+
+/// The last step: 48 bits, the width stored in the group.
+pub fn schedule_end(h: u64) -> u64 {
+    mix(h, 0) & 0xFFFF_FFFF_FFFF
+}
+
+/// The cheap step per word (xor, multiply by an odd constant: a bijection).
+#[inline(always)]
+const fn step(h: u64, w: u64) -> u64 {
+    (h ^ w).wrapping_mul(0x9E37_79B9_7F4A_7C15)
+}
+
 /// The check a link carries in `aReserved` (24 bits): its fields, its index and the
 /// group's link count (no address: a Rust caller may move its link array).
 pub fn link_check(l: &SL_LINK, index: usize, count: u16) -> [u8; 3] {
@@ -540,8 +584,10 @@ pub struct SL_GROUP {
     pub nMembers: u16,
     /// Offset 24. Number of links.
     pub nLinks: u16,
-    /// Offset 26. Reserved.
-    pub aReserved2: [u8; 6],
+    /// Offset 26. Private: the check of the member and link tables that the last fully
+    /// checked cycle found intact (the sealed schedule, docs/performance.md). Never write it:
+    /// a value that does not match only costs one fully checked cycle.
+    pub awSchedule: [u16; 3],
     /// Offset 32. Private state, 32 bytes: never write it.
     pub stPrivate: SL_GROUP_PRIVATE,
 }
@@ -604,12 +650,46 @@ impl SL_GROUP_PRIVATE {
 pub trait Members {
     /// Runs `f` on member `i`; `None` when the entry does not hold a usable block.
     fn with<R>(&mut self, i: usize, f: impl FnOnce(&mut dyn Member) -> R) -> Option<R>;
+
+    /// The check of the member and link tables as they are now (48 bits), for storage
+    /// whose entries carry checks of their own (the C tables); `None`: no sealed schedule.
+    fn schedule_check<L: Links + ?Sized>(&self, links: &L) -> Option<u64> {
+        let _ = links;
+        None
+    }
+
+    /// Member `i` in a sealed cycle: its entry is one that a fully checked cycle found
+    /// intact, so its own check is not repeated.
+    fn run_sealed(&mut self, i: usize, run: u8, ack: u8, now: u32, w: &mut Wiring) -> Option<Ran> {
+        self.with(i, |b| b.run_in_group(run, ack, now, w))
+    }
+
+    /// A BOOL or analog link in a sealed cycle (both ends checked when it was added).
+    fn copy_sealed(&mut self, l: &SL_LINK) {
+        copy_link(self, l, usize::from(l.nDstMember));
+    }
 }
 
 impl Members for [&mut dyn Member] {
     fn with<R>(&mut self, i: usize, f: impl FnOnce(&mut dyn Member) -> R) -> Option<R> {
         self.get_mut(i).map(|m| f(&mut **m))
     }
+}
+
+/// The next cycle over these tables runs the sealed schedule.
+pub fn is_sealed<M: Members + ?Sized, L: Links + ?Sized>(g: &SL_GROUP, m: &M, links: &L) -> bool {
+    m.schedule_check(links)
+        .is_some_and(|s| s == stored_schedule(g))
+}
+
+/// The schedule check stored in the group.
+fn stored_schedule(g: &SL_GROUP) -> u64 {
+    let [a, b, c] = g.awSchedule;
+    u64::from(a) | u64::from(b) << 16 | u64::from(c) << 32
+}
+
+fn store_schedule(g: &mut SL_GROUP, check: u64) {
+    g.awSchedule = [check as u16, (check >> 16) as u16, (check >> 32) as u16];
 }
 
 fn initial_state(g: &SL_GROUP) -> u8 {
@@ -912,26 +992,40 @@ pub fn cycle_with<M: Members + ?Sized, L: Links + ?Sized>(
     let mut w = Wiring::default();
     let mut next_link = 0usize;
     let link_count = links.count().min(usize::from(c.links));
+    // The sealed schedule (docs/performance.md): tables equal to those a fully checked
+    // cycle found intact need no check per entry and link; any other cycle checks every
+    // one, and seals the tables when it found them all intact.
+    let schedule = m.schedule_check(links);
+    let sealed = schedule.is_some_and(|s| s == stored_schedule(g));
+    let mut all_intact = true;
     for i in 0..usize::from(c.members) {
         let mut links_intact = true;
         while let Some(l) = links
             .get(next_link)
             .filter(|l| next_link < link_count && usize::from(l.nDstMember) == i)
         {
-            // A link that fails its check is not copied: its destination is stopped.
-            links_intact &= l.aReserved == link_check(&l, next_link, c.links);
             next_link += 1;
+            if sealed && l.nKind <= SL_LINK_ANALOG32 {
+                m.copy_sealed(&l);
+                continue;
+            }
+            // A link that fails its check is not copied: its destination is stopped.
+            links_intact &= sealed || l.aReserved == link_check(&l, next_link - 1, c.links);
             if !links_intact {
                 continue;
             }
             copy_link(m, &l, i);
         }
-        let outcome = if links_intact {
+        all_intact &= links_intact;
+        let outcome = if sealed {
+            m.run_sealed(i, member_run, ack_level, now, &mut w)
+        } else if links_intact {
             m.with(i, |b| b.run_in_group(member_run, ack_level, now, &mut w))
         } else {
             m.with(i, |b| b.run_in_group(0, ack_level, now, &mut w));
             None
         };
+        all_intact &= outcome.is_some();
         apply_request(m, &mut w);
         // A member that cannot be reached is a member error of the group, never a skip.
         let ran = outcome.unwrap_or(Ran {
@@ -970,7 +1064,11 @@ pub fn cycle_with<M: Members + ?Sized, L: Links + ?Sized>(
             member_run = 0;
             let last = if ran.conn.is_some() { i + 1 } else { i };
             for j in 0..last {
-                m.with(j, |b| b.run_in_group(0, ack_level, now, &mut w));
+                if sealed {
+                    m.run_sealed(j, 0, ack_level, now, &mut w);
+                } else {
+                    m.with(j, |b| b.run_in_group(0, ack_level, now, &mut w));
+                }
                 apply_request(m, &mut w);
             }
         }
@@ -990,6 +1088,9 @@ pub fn cycle_with<M: Members + ?Sized, L: Links + ?Sized>(
                 apply_request(m, &mut w);
             }
         }
+    }
+    if let Some(check) = schedule.filter(|_| !sealed && all_intact && next_link == link_count) {
+        store_schedule(g, check);
     }
     if conns.startup {
         c.flags |= F_CONN_STARTUP;

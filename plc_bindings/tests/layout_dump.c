@@ -27,7 +27,7 @@ int main(void)
     printf("F SL_TIMER_PRIVATE stHeader %zu %zu\n", offsetof(SL_TIMER_PRIVATE, stHeader), sizeof(((SL_TIMER_PRIVATE *)0)->stHeader));
     printf("F SL_TIMER_PRIVATE dwDelay %zu %zu\n", offsetof(SL_TIMER_PRIVATE, dwDelay), sizeof(((SL_TIMER_PRIVATE *)0)->dwDelay));
     printf("F SL_TIMER_PRIVATE wTimeBase %zu %zu\n", offsetof(SL_TIMER_PRIVATE, wTimeBase), sizeof(((SL_TIMER_PRIVATE *)0)->wTimeBase));
-    printf("F SL_TIMER_PRIVATE aReserved %zu %zu\n", offsetof(SL_TIMER_PRIVATE, aReserved), sizeof(((SL_TIMER_PRIVATE *)0)->aReserved));
+    printf("F SL_TIMER_PRIVATE anSteady %zu %zu\n", offsetof(SL_TIMER_PRIVATE, anSteady), sizeof(((SL_TIMER_PRIVATE *)0)->anSteady));
     printf("F SL_TIMER_PRIVATE tPhaseCheck %zu %zu\n", offsetof(SL_TIMER_PRIVATE, tPhaseCheck), sizeof(((SL_TIMER_PRIVATE *)0)->tPhaseCheck));
     printf("F SL_TIMER_PRIVATE tElapsed %zu %zu\n", offsetof(SL_TIMER_PRIVATE, tElapsed), sizeof(((SL_TIMER_PRIVATE *)0)->tElapsed));
     printf("F SL_TIMER_PRIVATE tElapsedCheck %zu %zu\n", offsetof(SL_TIMER_PRIVATE, tElapsedCheck), sizeof(((SL_TIMER_PRIVATE *)0)->tElapsedCheck));
@@ -82,7 +82,7 @@ int main(void)
     printf("F SL_GROUP nFailedMember %zu %zu\n", offsetof(SL_GROUP, nFailedMember), sizeof(((SL_GROUP *)0)->nFailedMember));
     printf("F SL_GROUP nMembers %zu %zu\n", offsetof(SL_GROUP, nMembers), sizeof(((SL_GROUP *)0)->nMembers));
     printf("F SL_GROUP nLinks %zu %zu\n", offsetof(SL_GROUP, nLinks), sizeof(((SL_GROUP *)0)->nLinks));
-    printf("F SL_GROUP aReserved2 %zu %zu\n", offsetof(SL_GROUP, aReserved2), sizeof(((SL_GROUP *)0)->aReserved2));
+    printf("F SL_GROUP awSchedule %zu %zu\n", offsetof(SL_GROUP, awSchedule), sizeof(((SL_GROUP *)0)->awSchedule));
     printf("F SL_GROUP stPrivate %zu %zu\n", offsetof(SL_GROUP, stPrivate), sizeof(((SL_GROUP *)0)->stPrivate));
     printf("S SL_LINK %zu\n", sizeof(SL_LINK));
     printf("F SL_LINK nSrcMember %zu %zu\n", offsetof(SL_LINK, nSrcMember), sizeof(((SL_LINK *)0)->nSrcMember));
@@ -173,7 +173,7 @@ int main(void)
     printf("F SL_GUARD_PRIVATE stHeader %zu %zu\n", offsetof(SL_GUARD_PRIVATE, stHeader), sizeof(((SL_GUARD_PRIVATE *)0)->stHeader));
     printf("F SL_GUARD_PRIVATE awTime %zu %zu\n", offsetof(SL_GUARD_PRIVATE, awTime), sizeof(((SL_GUARD_PRIVATE *)0)->awTime));
     printf("F SL_GUARD_PRIVATE atDiscStart %zu %zu\n", offsetof(SL_GUARD_PRIVATE, atDiscStart), sizeof(((SL_GUARD_PRIVATE *)0)->atDiscStart));
-    printf("F SL_GUARD_PRIVATE aReserved %zu %zu\n", offsetof(SL_GUARD_PRIVATE, aReserved), sizeof(((SL_GUARD_PRIVATE *)0)->aReserved));
+    printf("F SL_GUARD_PRIVATE awSteady %zu %zu\n", offsetof(SL_GUARD_PRIVATE, awSteady), sizeof(((SL_GUARD_PRIVATE *)0)->awSteady));
     printf("S FB_ESTOP %zu\n", sizeof(FB_ESTOP));
     printf("F FB_ESTOP bRestart %zu %zu\n", offsetof(FB_ESTOP, bRestart), sizeof(((FB_ESTOP *)0)->bRestart));
     printf("F FB_ESTOP bEDM1 %zu %zu\n", offsetof(FB_ESTOP, bEDM1), sizeof(((FB_ESTOP *)0)->bEDM1));
@@ -295,7 +295,7 @@ int main(void)
     printf("F SL_LOADSENSING_PRIVATE_UDINT aRow %zu %zu\n", offsetof(SL_LOADSENSING_PRIVATE_UDINT, aRow), sizeof(((SL_LOADSENSING_PRIVATE_UDINT *)0)->aRow));
     printf("S SL_LOGIC_PRIVATE %zu\n", sizeof(SL_LOGIC_PRIVATE));
     printf("F SL_LOGIC_PRIVATE stHeader %zu %zu\n", offsetof(SL_LOGIC_PRIVATE, stHeader), sizeof(((SL_LOGIC_PRIVATE *)0)->stHeader));
-    printf("F SL_LOGIC_PRIVATE aReserved %zu %zu\n", offsetof(SL_LOGIC_PRIVATE, aReserved), sizeof(((SL_LOGIC_PRIVATE *)0)->aReserved));
+    printf("F SL_LOGIC_PRIVATE awSteady %zu %zu\n", offsetof(SL_LOGIC_PRIVATE, awSteady), sizeof(((SL_LOGIC_PRIVATE *)0)->awSteady));
     printf("S FB_AND %zu\n", sizeof(FB_AND));
     printf("F FB_AND aReserved0 %zu %zu\n", offsetof(FB_AND, aReserved0), sizeof(((FB_AND *)0)->aReserved0));
     printf("F FB_AND bAndIn1 %zu %zu\n", offsetof(FB_AND, bAndIn1), sizeof(((FB_AND *)0)->bAndIn1));
@@ -538,7 +538,7 @@ int main(void)
     printf("F FB_EDM stPrivate %zu %zu\n", offsetof(FB_EDM, stPrivate), sizeof(((FB_EDM *)0)->stPrivate));
     printf("S SL_FLIPFLOP_PRIVATE %zu\n", sizeof(SL_FLIPFLOP_PRIVATE));
     printf("F SL_FLIPFLOP_PRIVATE stHeader %zu %zu\n", offsetof(SL_FLIPFLOP_PRIVATE, stHeader), sizeof(((SL_FLIPFLOP_PRIVATE *)0)->stHeader));
-    printf("F SL_FLIPFLOP_PRIVATE aReserved %zu %zu\n", offsetof(SL_FLIPFLOP_PRIVATE, aReserved), sizeof(((SL_FLIPFLOP_PRIVATE *)0)->aReserved));
+    printf("F SL_FLIPFLOP_PRIVATE awSteady %zu %zu\n", offsetof(SL_FLIPFLOP_PRIVATE, awSteady), sizeof(((SL_FLIPFLOP_PRIVATE *)0)->awSteady));
     printf("S FB_RS %zu\n", sizeof(FB_RS));
     printf("F FB_RS aReserved0 %zu %zu\n", offsetof(FB_RS, aReserved0), sizeof(((FB_RS *)0)->aReserved0));
     printf("F FB_RS bReset %zu %zu\n", offsetof(FB_RS, bReset), sizeof(((FB_RS *)0)->bReset));

@@ -107,6 +107,9 @@ impl LogicBlock for FB_AND {
     const NEGATABLE: u16 = 0xFF;
     const MIN_ACTIVE: u32 = 2;
 
+    fn key_inputs(&self) -> Option<[u8; 8]> {
+        Some(self.inputs())
+    }
     fn params(&self) -> LogicParams {
         LogicParams {
             active: self.wInputActive,

@@ -121,6 +121,9 @@ impl LogicBlock for FB_DECOUPLE {
     const NEGATABLE: u16 = 0;
     const MIN_ACTIVE: u32 = 1;
 
+    fn key_inputs(&self) -> Option<[u8; 8]> {
+        Some(self.inputs())
+    }
     fn params(&self) -> LogicParams {
         LogicParams {
             active: self.wInputActive,

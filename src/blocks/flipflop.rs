@@ -20,10 +20,13 @@ pub const SL_STATE_RS_SET: u8 = 9;
 #[allow(non_snake_case, non_camel_case_types)]
 pub struct SL_FLIPFLOP_PRIVATE {
     pub stHeader: SL_PRIVATE_HEADER,
-    pub aReserved: [u8; 4],
+    /// Fast-path key and its complement (`prim::envelope`).
+    pub awSteady: [u16; 2],
 }
 
 const _: () = assert!(core::mem::size_of::<SL_FLIPFLOP_PRIVATE>() == 32);
+
+crate::prim::envelope::steady_private!(SL_FLIPFLOP_PRIVATE, awSteady, u16);
 
 /// Input bits: bit 0 = Reset, bit 1 = Set (ABI §9).
 pub(crate) const RESET: u8 = 1 << 0;
@@ -181,6 +184,17 @@ macro_rules! flipflop_block {
                 fn error_remains(&mut self, _inp: &FlipFlopIn) -> bool {
                     false
                 }
+                #[inline(always)]
+                fn steady_key(&self) -> Option<u16> {
+                    let [reset, set] = self.raw();
+                    bools::key([reset, set, self.run_raw(), self.errack_raw()])
+                }
+                /// A memory without timers: nothing depends on the time.
+                #[inline(always)]
+                fn quiet(&self) -> bool {
+                    true
+                }
+                $crate::prim::envelope::steady_hooks!();
                 fn write_outputs(&mut self) {
                     let h = self.private().stHeader;
                     self.set_outputs(h.nState == STATE_SET, h.nState, h.wDiag);

@@ -22,8 +22,11 @@ pub struct SL_GUARD_PRIVATE {
     pub awTime: [u16; 8],
     /// Start times of the pair discrepancy timers.
     pub atDiscStart: [u32; 4],
-    pub aReserved: [u8; 4],
+    /// Fast-path key and its complement (`prim::envelope`).
+    pub awSteady: [u16; 2],
 }
+
+crate::prim::envelope::steady_private!(SL_GUARD_PRIVATE, awSteady, u16);
 
 const _: () = assert!(core::mem::size_of::<SL_GUARD_PRIVATE>() == 64);
 const _: () = assert!(core::mem::size_of::<SL_PRIVATE_HEADER>() == 28);
@@ -407,6 +410,38 @@ macro_rules! guard_block {
                     let edm_remains = h.wDiag & inp.edm.not_released() != 0;
                     disc_remains || edm_remains
                 }
+
+                #[inline(always)]
+                fn steady_key(&self) -> Option<u16> {
+                    let r = self.raw();
+                    let [a, b, c, d, e, f, g, h] = r.inputs;
+                    bools::key([
+                        a,
+                        b,
+                        c,
+                        d,
+                        e,
+                        f,
+                        g,
+                        h,
+                        r.restart,
+                        r.edm[0],
+                        r.edm[1],
+                        self.run_raw(),
+                        self.errack_raw(),
+                    ])
+                }
+
+                /// No discrepancy timer, output delay, error delay or EDM reset time runs.
+                #[inline(always)]
+                fn quiet(&self) -> bool {
+                    let h = &self.private().stHeader;
+                    !matches!(h.nState, SL_STATE_DELAYOUT | SL_STATE_ERRORDELAY)
+                        && h.wAux & 0xF == 0
+                        && h.nFlags & (F_EDM1_PENDING | F_EDM2_PENDING) == 0
+                }
+
+                $crate::prim::envelope::steady_hooks!();
 
                 fn write_outputs(&mut self) {
                     let h = self.private().stHeader;

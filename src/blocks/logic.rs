@@ -11,8 +11,11 @@ use crate::prim::header::SL_PRIVATE_HEADER;
 #[allow(non_snake_case, non_camel_case_types)]
 pub struct SL_LOGIC_PRIVATE {
     pub stHeader: SL_PRIVATE_HEADER,
-    pub aReserved: [u8; 4],
+    /// Fast-path key and its complement (`prim::envelope`).
+    pub awSteady: [u16; 2],
 }
+
+crate::prim::envelope::steady_private!(SL_LOGIC_PRIVATE, awSteady, u16);
 
 const _: () = assert!(core::mem::size_of::<SL_LOGIC_PRIVATE>() == 32);
 
@@ -44,6 +47,8 @@ pub trait LogicBlock: crate::registry::Private<P = SL_LOGIC_PRIVATE> {
     const MIN_ACTIVE: u32;
 
     fn params(&self) -> LogicParams;
+    /// The input bytes when they fit the fast-path key (eight), `None` otherwise (XOR).
+    fn key_inputs(&self) -> Option<[u8; 8]>;
     /// Evaluates the input bytes with the latched masks; the flag tells whether an active
     /// input byte was an invalid BOOL.
     fn evaluate(&self, active: u8, negated: u8) -> (LogicIn, bool);
@@ -122,6 +127,17 @@ macro_rules! logic_block {
                 fn error_remains(&mut self, _inp: &LogicIn) -> bool {
                     false
                 }
+                #[inline(always)]
+                fn steady_key(&self) -> Option<u16> {
+                    let [a, b, c, d, e, f, g, h] = self.key_inputs()?;
+                    bools::key([a, b, c, d, e, f, g, h, self.run_raw(), self.errack_raw()])
+                }
+                /// Combinational: nothing depends on the time.
+                #[inline(always)]
+                fn quiet(&self) -> bool {
+                    true
+                }
+                $crate::prim::envelope::steady_hooks!();
                 #[inline(always)]
                 fn write_outputs(&mut self) {
                     let h = self.private().stHeader;

@@ -47,7 +47,8 @@ pub mod xor;
 macro_rules! family_prelude {
     ($family:ident) => {
         use $crate::blocks::$family::*;
-        use $crate::prim::envelope::Block;
+        #[allow(unused_imports)]
+        use $crate::prim::envelope::{Block, Instance};
         #[allow(unused_imports)]
         use $crate::prim::{
             bools, bools::Edge, edm, edm::Edm, header::*, pair, restart, restart::Restart, time,

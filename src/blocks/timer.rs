@@ -73,7 +73,8 @@ pub struct SL_TIMER_PRIVATE {
     pub dwDelay: u32,
     /// Latched `nTimeBase` as written (0 = automatic).
     pub wTimeBase: u16,
-    pub aReserved: [u8; 2],
+    /// Fast-path key and its complement (`prim::envelope`).
+    pub anSteady: [u8; 2],
     /// Complement of `stHeader.tPhase`.
     pub tPhaseCheck: u32,
     /// FB_TON2: the stored elapsed time in ms (the manual's "ExpiredTime" in the FRAM).
@@ -84,6 +85,8 @@ pub struct SL_TIMER_PRIVATE {
 
 const _: () = assert!(core::mem::size_of::<SL_TIMER_PRIVATE>() == 48);
 
+crate::prim::envelope::steady_private!(SL_TIMER_PRIVATE, anSteady, u8);
+
 /// A fresh private area: everything zero except the complement copies.
 impl Default for SL_TIMER_PRIVATE {
     fn default() -> Self {
@@ -91,7 +94,7 @@ impl Default for SL_TIMER_PRIVATE {
             stHeader: SL_PRIVATE_HEADER::default(),
             dwDelay: 0,
             wTimeBase: 0,
-            aReserved: [0; 2],
+            anSteady: [0; 2],
             tPhaseCheck: !0,
             tElapsed: 0,
             tElapsedCheck: !0,
@@ -423,6 +426,25 @@ macro_rules! timer_block {
             fn error_remains(&mut self, _inp: &TimerIn) -> bool {
                 false
             }
+
+            /// `None` as well while a timer value fails its complement: the full cycle
+            /// reports it.
+            #[inline(always)]
+            fn steady_key(&self) -> Option<u16> {
+                if !self.private().timers_intact() {
+                    return None;
+                }
+                let (input, enable) = self.raw();
+                bools::key([input, enable, self.run_raw(), self.errack_raw()])
+            }
+
+            /// The timer does not run.
+            #[inline(always)]
+            fn quiet(&self) -> bool {
+                phase_of::<Self>(self.private().stHeader.nState) != Some(Phase::Timing)
+            }
+
+            $crate::prim::envelope::steady_hooks!();
 
             fn write_outputs(&mut self) {
                 let h = self.private().stHeader;

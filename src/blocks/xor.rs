@@ -150,6 +150,10 @@ impl LogicBlock for FB_XOR {
     const NEGATABLE: u16 = 0;
     const MIN_ACTIVE: u32 = 1;
 
+    /// Sixteen input bytes: more than a key holds with bRun and bErrAck.
+    fn key_inputs(&self) -> Option<[u8; 8]> {
+        None
+    }
     fn params(&self) -> LogicParams {
         LogicParams {
             active: self.wInputActive,

@@ -31,6 +31,27 @@ pub fn pack<const N: usize>(input: [u8; N]) -> Packed {
     }
 }
 
+/// The fast-path key of up to sixteen BOOL bytes (bit i = byte i), or `None` when a byte
+/// is neither 0 nor 1 (such a call always takes the full cycle).
+#[inline(always)]
+pub fn key<const N: usize>(input: [u8; N]) -> Option<u16> {
+    const { assert!(N <= 16) };
+    let mut bytes = [0u8; 16];
+    for (b, i) in bytes.iter_mut().zip(input) {
+        *b = i;
+    }
+    const LSB: u64 = 0x0101_0101_0101_0101;
+    const GATHER: u64 = 0x0102_0408_1020_4080;
+    let [a0, a1, a2, a3, a4, a5, a6, a7, b0, b1, b2, b3, b4, b5, b6, b7] = bytes;
+    let lo = u64::from_le_bytes([a0, a1, a2, a3, a4, a5, a6, a7]);
+    let hi = u64::from_le_bytes([b0, b1, b2, b3, b4, b5, b6, b7]);
+    if (lo | hi) & !LSB != 0 {
+        return None;
+    }
+    let gather = |v: u64| (v.wrapping_mul(GATHER) >> 56) as u16;
+    Some(gather(lo) | gather(hi) << 8)
+}
+
 /// Logical values of safety inputs: raw XOR negation for active inputs; an invalid byte
 /// reads as logical FALSE (the safe-state request) whatever its negation. Inactive
 /// inputs read FALSE here; callers mask with the active set.
@@ -106,6 +127,22 @@ mod tests {
             for (i, &b) in bytes.iter().enumerate() {
                 assert_eq!(p.ones >> i & 1 == 1, b == 1, "{bytes:?}");
                 assert_eq!(p.invalid >> i & 1 == 1, b > 1, "{bytes:?}");
+            }
+        }
+    }
+
+    #[test]
+    fn key_is_one_bit_per_byte_and_refuses_other_bytes() {
+        assert_eq!(key([1u8, 0, 1]), Some(0b101));
+        let mut sixteen = [0u8; 16];
+        sixteen[15] = 1;
+        sixteen[8] = 1;
+        assert_eq!(key(sixteen), Some(0x8100));
+        for bad in [2u8, 0x80, 0xFF] {
+            for at in 0..16 {
+                let mut b = [1u8; 16];
+                b[at] = bad;
+                assert_eq!(key(b), None, "{b:?}");
             }
         }
     }

@@ -1,0 +1,410 @@
+//! Issue 13: the steady-state fast path (`prim::envelope`, docs/performance.md) is pinned to
+//! the full cycle. For every registered type, random sequences drive two copies of one
+//! instance — one through `cycle` (fast path where it applies), one through `cycle_full`
+//! (always the full cycle) — and after every call the two are byte for byte the same (every
+//! field, outputs, nState, nDiag and the private state) with the same status. Inputs mostly
+//! stay as they were (so the fast path is taken), and now and then: a changed or invalid
+//! input byte, bRun FALSE, an ErrAck pulse, a long time step (timers expire), a clock that
+//! goes back, a changed parameter, a corrupted private byte. For the types with a fast path
+//! the test asserts that it served a good share of the calls, in each of the states it is
+//! about.
+
+mod common;
+
+use common::Rng;
+use safelogic::prim::envelope::{cycle_full, cycle_traced, Block};
+use safelogic::registry::{block_type, Dir, Kind};
+use safelogic::*;
+use std::collections::BTreeSet;
+
+/// Sequences per type (×`SL_PROP_DEPTH` in a deep run).
+const SEQUENCES: usize = 2_000;
+const CALLS: usize = 40;
+
+/// What one type's run saw: calls, calls the fast path served, states it served them in.
+struct Seen {
+    name: &'static str,
+    calls: usize,
+    fast: usize,
+    fast_states: BTreeSet<u8>,
+    /// States after any call.
+    states: BTreeSet<u8>,
+    /// Calls that left a timed state (output delay, error delay, timing) with the same input
+    /// bytes as the call before: where a fast path that ignored a running timer would fail.
+    timed_exits: usize,
+}
+
+macro_rules! pin {
+    ($($ty:ty => $init:ident, $cycle:ident;)*) => {
+        fn pin_all(sequences: usize) -> Vec<Seen> {
+            let mut seen = Vec::new();
+            $({
+                let t = block_type(<$ty as safelogic::registry::Registered>::INFO.tag).unwrap();
+                let mut rng = Rng(0xFA57_0000 ^ u64::from(t.info.tag));
+                let bytes = |fb: &mut $ty| -> &mut [u8] {
+                    // SAFETY: every block struct holds only integer fields; the slice covers
+                    // exactly the instance.
+                    unsafe {
+                        std::slice::from_raw_parts_mut(
+                            (fb as *mut $ty).cast::<u8>(),
+                            std::mem::size_of::<$ty>(),
+                        )
+                    }
+                };
+                let put = |bs: &mut [u8], o: u16, size: usize, v: u64| {
+                    for (k, b) in bs[usize::from(o)..usize::from(o) + size].iter_mut().enumerate() {
+                        *b = (v >> (8 * k)) as u8;
+                    }
+                };
+                // Valid configurations, found by the library: small random parameters (bit
+                // sets as runs of low bits) until init accepts them.
+                let mut pool: Vec<$ty> = Vec::new();
+                for _ in 0..200_000 {
+                    if pool.len() == 32 {
+                        break;
+                    }
+                    // SAFETY: integer fields only.
+                    let mut fb: $ty = unsafe { std::mem::zeroed() };
+                    for f in t.fields.iter().filter(|f| f.dir == Dir::Param) {
+                        let r = rng.next();
+                        let v = if f.name.starts_with('w') || f.name.starts_with("dw") {
+                            match r % 4 {
+                                0 => 0,
+                                1 => (1 << ((r >> 8) % 8 + 1)) - 1,
+                                2 => 1 << ((r >> 8) % 8),
+                                _ => (r >> 8) & 0xFF,
+                            }
+                        } else {
+                            [0u64, 1, 5, 20, 50, 100][(r >> 8) as usize % 6]
+                        };
+                        put(bytes(&mut fb), f.offset, f.kind.size(), v);
+                    }
+                    // SAFETY: a live, exclusively borrowed instance.
+                    if unsafe { safelogic::ffi::$init(&mut fb) } == SL_OK {
+                        pool.push(fb);
+                    }
+                }
+                let mut s = Seen { name: t.info.name, calls: 0, fast: 0, fast_states: BTreeSet::new(), states: BTreeSet::new(), timed_exits: 0 };
+                let timed = TIMED.iter().find(|(n, _)| *n == t.info.name).map_or(&[][..], |(_, st)| *st);
+                let inputs: Vec<_> = t.fields.iter().filter(|f| f.dir == Dir::Input).collect();
+                let params: Vec<_> = t.fields.iter().filter(|f| f.dir == Dir::Param).collect();
+                for seq in 0..if pool.is_empty() { 0 } else { sequences } {
+                    let mut a = pool[seq % pool.len()];
+                    let mut now = rng.next() as u32;
+                    // Inputs start all TRUE (break contacts closed) or random.
+                    for f in &inputs {
+                        let v = if seq % 2 == 0 { 1 } else { rng.next() & 1 };
+                        let v = if f.kind == Kind::Bool { v } else { rng.next() % 8 };
+                        put(bytes(&mut a), f.offset, f.kind.size(), v);
+                    }
+                    a.bRun = 1;
+                    // Calm sequences hold their inputs for long stretches while time passes
+                    // (so timers run out under steady inputs), restless ones change often.
+                    let calm = [8u64, 23, 30][seq % 3];
+                    let mut last_key = None;
+                    for step in 0..CALLS {
+                        let r = rng.next();
+                        // Mostly nothing changes; otherwise one input, or a control, or worse.
+                        match r % 32 {
+                            c if c < calm => {}
+                            0..=27 => {
+                                if let Some(f) = inputs.get((r >> 8) as usize % inputs.len().max(1)) {
+                                    let v = if (r >> 16) % 41 == 0 { 2 + (r >> 24) % 254 } else { (r >> 24) & 1 };
+                                    let v = if f.kind == Kind::Bool { v } else { (r >> 24) % 8 };
+                                    put(bytes(&mut a), f.offset, f.kind.size(), v);
+                                }
+                            }
+                            28 => a.bErrAck = u8::from(a.bErrAck == 0),
+                            29 => a.bRun = if (r >> 8) % 9 == 0 { 7 } else { u8::from(a.bRun != 1) },
+                            30 => {
+                                if let Some(f) = params.get((r >> 8) as usize % params.len().max(1)) {
+                                    bytes(&mut a)[usize::from(f.offset)] ^= 1 << ((r >> 16) % 8);
+                                }
+                            }
+                            _ => {
+                                if (r >> 8) % 8 == 0 {
+                                    // A corrupted private byte.
+                                    let size = std::mem::size_of::<$ty>();
+                                    let private = size - std::mem::size_of_val(&a.stPrivate);
+                                    let at = private + (r >> 16) as usize % (size - private);
+                                    bytes(&mut a)[at] ^= 1 << ((r >> 40) % 8);
+                                }
+                            }
+                        }
+                        now = match (r >> 48) % 64 {
+                            0 => now.wrapping_sub(1 + (r >> 56) as u32),
+                            1..=4 => now.wrapping_add(200 + (r >> 56) as u32),
+                            5..=20 => now.wrapping_add(((r >> 56) % 30) as u32),
+                            _ => now.wrapping_add(((r >> 56) % 5) as u32),
+                        };
+                        // The reference starts from the same bytes (equal after every call).
+                        let mut b = a;
+                        let key = Block::steady_key(&a);
+                        let steady_inputs = key.is_some() && key == last_key;
+                        last_key = key;
+                        let before = a.nState;
+                        let (sa, fast) = cycle_traced(&mut a, now);
+                        let sb = cycle_full(&mut b, now);
+                        s.calls += 1;
+                        s.states.insert(a.nState);
+                        if steady_inputs && timed.contains(&before) && a.nState != before {
+                            s.timed_exits += 1;
+                        }
+                        if fast {
+                            s.fast += 1;
+                            s.fast_states.insert(a.nState);
+                        }
+                        assert_eq!(sa, sb, "{} seq {seq} step {step}: status (fast {fast})", t.info.name);
+                        assert!(
+                            bytes(&mut a) == bytes(&mut b),
+                            "{} seq {seq} step {step}: instances differ (fast {fast})\n{:?}\n{:?}",
+                            t.info.name, a, b
+                        );
+                    }
+                }
+                seen.push(s);
+            })*
+            seen
+        }
+    };
+}
+
+safelogic::for_each_block!(pin);
+
+/// ESTOP and MON driven the way a machine drives them: a configuration with a pair, an
+/// output delay and (half the time) EDM1 with a reset time, both channels switched together
+/// or one alone, Restart pulses, calm stretches of 1–10 ms steps. Their timed states
+/// (DELAYOUT, MON's ERRORDELAY, the discrepancy timer, the EDM reset time) run out under
+/// steady inputs, where the fast path must not serve; fast and full cycle pinned as above.
+macro_rules! guard_walk {
+    ($name:ident, $ty:ty, $in1:ident, $in2:ident, $delay:ident, $extra:expr) => {
+        fn $name(sequences: usize) -> Seen {
+            let mut rng = Rng(0x6A4D_0000 ^ stringify!($ty).len() as u64);
+            let mut s = Seen {
+                name: stringify!($ty),
+                calls: 0,
+                fast: 0,
+                fast_states: BTreeSet::new(),
+                states: BTreeSet::new(),
+                timed_exits: 0,
+            };
+            let timed = [SL_STATE_DELAYOUT, SL_STATE_ERRORDELAY];
+            for seq in 0..sequences {
+                let r = rng.next();
+                let edm = r % 2 == 0;
+                let mut a = <$ty>::default();
+                a.wInputActive = 0b11;
+                a.tDiscTime12 = [0, 15, 40][(r >> 8) as usize % 3];
+                a.$delay = [10, 30][(r >> 12) as usize % 2];
+                if edm {
+                    a.dwOptions = SL_OPT_EDM1;
+                    a.tEDM1ResetTime = 25;
+                }
+                $extra(&mut a, r);
+                assert_eq!(a.init(), SL_OK);
+                (a.$in1, a.$in2, a.bRun, a.bEDM1) = (1, 1, 1, 1);
+                let mut now = rng.next() as u32;
+                let mut last_key = None;
+                for step in 0..80 {
+                    let r = rng.next();
+                    match r % 16 {
+                        0 => (a.$in1, a.$in2) = (0, 0),
+                        1 => (a.$in1, a.$in2) = (1, 1),
+                        2 => a.$in1 ^= 1,
+                        3 => a.bRestart ^= 1,
+                        4 => a.bEDM1 ^= 1,
+                        5 if (r >> 8) % 4 == 0 => a.bErrAck ^= 1,
+                        _ => {}
+                    }
+                    now = now.wrapping_add(1 + ((r >> 16) % 10) as u32);
+                    let mut b = a;
+                    let key = Block::steady_key(&a);
+                    let steady_inputs = key.is_some() && key == last_key;
+                    last_key = key;
+                    let before = a.nState;
+                    let (sa, fast) = cycle_traced(&mut a, now);
+                    let sb = cycle_full(&mut b, now);
+                    s.calls += 1;
+                    s.states.insert(a.nState);
+                    if fast {
+                        s.fast += 1;
+                        s.fast_states.insert(a.nState);
+                    }
+                    if steady_inputs && timed.contains(&before) && a.nState != before {
+                        s.timed_exits += 1;
+                    }
+                    assert_eq!(sa, sb, "{} seq {seq} step {step}", s.name);
+                    assert_eq!(a, b, "{} seq {seq} step {step} (fast {fast})", s.name);
+                }
+            }
+            s
+        }
+    };
+}
+
+guard_walk!(
+    walk_estop,
+    FB_ESTOP,
+    bEStopIn1,
+    bEStopIn2,
+    tEStopDelOutDelay,
+    |_: &mut FB_ESTOP, _| {}
+);
+guard_walk!(
+    walk_mon,
+    FB_MON,
+    bMonIn1,
+    bMonIn2,
+    tMonDelOutDelay,
+    |m: &mut FB_MON, r: u64| {
+        if r >> 20 & 1 == 1 {
+            m.dwOptions |= SL_OPT_MANUAL_RESTART;
+        }
+    }
+);
+
+#[test]
+fn the_fast_path_never_serves_a_running_timer_of_estop_or_mon() {
+    let depth: usize = std::env::var("SL_PROP_DEPTH")
+        .ok()
+        .and_then(|v| v.parse().ok())
+        .unwrap_or(1);
+    for s in [walk_estop(2_000 * depth), walk_mon(2_000 * depth)] {
+        println!(
+            "{:<9} fast path {:>6} of {:>6} calls, in states {:?}; states reached {:?}; timed exits under steady inputs {}",
+            s.name, s.fast, s.calls, s.fast_states, s.states, s.timed_exits
+        );
+        assert!(
+            s.fast * 4 >= s.calls,
+            "{}: fast path {} of {}",
+            s.name,
+            s.fast,
+            s.calls
+        );
+        assert!(
+            s.timed_exits >= 100,
+            "{}: {} timed exits",
+            s.name,
+            s.timed_exits
+        );
+        for st in [
+            SL_STATE_RUN,
+            SL_STATE_SAFE,
+            SL_STATE_START,
+            SL_STATE_ERROR,
+            SL_STATE_DELAYOUT,
+        ] {
+            assert!(s.states.contains(&st), "{}: never reached {st}", s.name);
+        }
+    }
+}
+
+/// The states in which a timer of the type runs.
+const TIMED: [(&str, &[u8]); 3] = [
+    ("TON", &[SL_STATE_TON_DELAYIN]),
+    ("TON2", &[SL_STATE_TON2_DELAYIN]),
+    ("TOF", &[SL_STATE_DELAYOUT]),
+];
+
+/// The fast path's types and the states it must have served in.
+const EXPECTED: [(&str, &[u8]); 10] = [
+    (
+        "ESTOP",
+        &[
+            SL_STATE_RUN,
+            SL_STATE_SAFE,
+            SL_STATE_STOP,
+            SL_STATE_ERROR,
+            SL_STATE_START,
+        ],
+    ),
+    (
+        "MON",
+        &[SL_STATE_RUN, SL_STATE_SAFE, SL_STATE_STOP, SL_STATE_ERROR],
+    ),
+    (
+        "AND",
+        &[SL_STATE_RUN, SL_STATE_SAFE, SL_STATE_STOP, SL_STATE_ERROR],
+    ),
+    (
+        "OR",
+        &[SL_STATE_RUN, SL_STATE_SAFE, SL_STATE_STOP, SL_STATE_ERROR],
+    ),
+    ("DECOUPLE", &[SL_STATE_RUN, SL_STATE_STOP, SL_STATE_ERROR]),
+    (
+        "RS",
+        &[
+            SL_STATE_RS_SET,
+            SL_STATE_SAFE,
+            SL_STATE_STOP,
+            SL_STATE_ERROR,
+        ],
+    ),
+    (
+        "SR",
+        &[
+            SL_STATE_SR_SET,
+            SL_STATE_SAFE,
+            SL_STATE_STOP,
+            SL_STATE_ERROR,
+        ],
+    ),
+    (
+        "TON",
+        &[SL_STATE_RUN, SL_STATE_SAFE, SL_STATE_STOP, SL_STATE_ERROR],
+    ),
+    (
+        "TOF",
+        &[SL_STATE_RUN, SL_STATE_SAFE, SL_STATE_STOP, SL_STATE_ERROR],
+    ),
+    (
+        "TON2",
+        &[SL_STATE_RUN, SL_STATE_SAFE, SL_STATE_STOP, SL_STATE_ERROR],
+    ),
+];
+
+#[test]
+fn the_fast_path_gives_what_the_full_cycle_gives() {
+    let depth: usize = std::env::var("SL_PROP_DEPTH")
+        .ok()
+        .and_then(|v| v.parse().ok())
+        .unwrap_or(1);
+    let seen = pin_all(SEQUENCES * depth);
+    for s in seen.iter().filter(|s| s.fast > 0) {
+        println!(
+            "{:<9} fast path {:>6} of {:>6} calls, in states {:?}; states reached {:?}; timed exits under steady inputs {}",
+            s.name, s.fast, s.calls, s.fast_states, s.states, s.timed_exits
+        );
+    }
+    for s in &seen {
+        let expected = EXPECTED.iter().find(|(n, _)| *n == s.name);
+        match expected {
+            Some((_, states)) => {
+                assert!(
+                    s.fast * 4 >= s.calls,
+                    "{}: the fast path served only {} of {} calls",
+                    s.name,
+                    s.fast,
+                    s.calls
+                );
+                for st in *states {
+                    assert!(
+                        s.fast_states.contains(st),
+                        "{}: the fast path never served state {st}: {:?}",
+                        s.name,
+                        s.fast_states
+                    );
+                }
+            }
+            None => assert_eq!(s.fast, 0, "{}: a fast path nobody expects", s.name),
+        }
+        if TIMED.iter().any(|(n, _)| *n == s.name) {
+            assert!(
+                s.timed_exits >= 100,
+                "{}: only {} timed states ran out under steady inputs",
+                s.name,
+                s.timed_exits
+            );
+        }
+    }
+}
