@@ -29,6 +29,7 @@ fn instructions_per_call() -> Result<HashMap<String, f64>, String> {
         .arg(format!("--callgrind-out-file={}", out.display()))
         .arg("--toggle-collect=sl_*_cycle")
         .arg(&exe)
+        .arg("--callgrind-child")
         .output()
         .map_err(|_| "valgrind is not installed".to_string())?;
     if !run.status.success() {
@@ -36,6 +37,8 @@ fn instructions_per_call() -> Result<HashMap<String, f64>, String> {
     }
     let ann = Command::new("callgrind_annotate")
         .arg("--inclusive=yes")
+        // Every function: the default threshold drops the cheap ones.
+        .arg("--threshold=100")
         .arg(&out)
         .output()
         .map_err(|_| "callgrind_annotate is not installed".to_string())?;
@@ -117,7 +120,9 @@ fn measure<T>(
 fn main() {
     let quick = !std::env::args().any(|a| a == "--bench");
     let only_instructions = std::env::args().any(|a| a == "--instructions");
-    let instructions = (!quick || only_instructions).then(instructions_per_call);
+    // The run under callgrind: the steady rows only, so each function's calls are its row's.
+    let child = std::env::args().any(|a| a == "--callgrind-child");
+    let instructions = (!child && (!quick || only_instructions)).then(instructions_per_call);
     let batches = if quick || only_instructions {
         SMOKE_BATCHES
     } else {
@@ -736,7 +741,7 @@ fn main() {
     // Random inputs against steady ones (issue 13: no cliff off the fast path): the same
     // block timed with inputs drawn afresh before every call and with the same inputs
     // written before every call (so both time the writes).
-    let cliff = if only_instructions {
+    let cliff = if only_instructions || child {
         Vec::new()
     } else {
         vec![
