@@ -363,13 +363,14 @@ impl Members for CMembers {
             links.count(),
         );
         for i in 0..usize::from(self.count) {
-            // SAFETY: `i < count <= cap` entries at `base` (checked by `storage`); read by
-            // value.
-            let e = unsafe { self.base.add(i).read() };
-            h = group::schedule_member(h, &e);
+            // SAFETY: `i < count <= cap` entries at `base` (checked by `storage`); an entry
+            // is 16 bytes, 8-aligned, without padding: read by value as its two words.
+            let [w0, w1] = unsafe { self.base.add(i).cast::<[u64; 2]>().read() };
+            h = group::schedule_words(h, w0, w1);
         }
         for i in 0..links.count() {
-            h = group::schedule_link(h, &links.get(i)?);
+            let [w0, w1] = links.words(i)?;
+            h = group::schedule_words(h, w0, w1);
         }
         Some(group::schedule_end(h))
     }
@@ -398,23 +399,25 @@ impl Members for CMembers {
             // SAFETY: as in `entry` (`m < count`, checked when the link was added).
             (m < self.count).then(|| unsafe { self.base.add(usize::from(m)).read() }.pBlock)
         };
-        let width = match l.nKind {
-            SL_LINK_BOOL => 1,
-            group::SL_LINK_ANALOG16 => 2,
-            _ => 4,
-        };
         if let (Some(src), Some(dst)) = (block(l.nSrcMember), block(l.nDstMember)) {
             // SAFETY: both fields were checked when the link was added (an output of the
             // source's type at nSrcOffset, an input of the same type and width at
             // nDstOffset), inside blocks that are live and share no byte with the tables
-            // (sl_group_add_member); the tables are those a fully checked cycle saw. `copy`
-            // allows a link from a block to itself.
+            // (sl_group_add_member); the tables are those a fully checked cycle saw. The
+            // value is read completely before it is written (a link may go from a block to
+            // itself); unaligned accesses need no alignment proof.
             unsafe {
-                core::ptr::copy(
-                    src.cast::<u8>().add(usize::from(l.nSrcOffset)),
-                    dst.cast::<u8>().add(usize::from(l.nDstOffset)),
-                    width,
-                );
+                let from = src.cast::<u8>().add(usize::from(l.nSrcOffset));
+                let to = dst.cast::<u8>().add(usize::from(l.nDstOffset));
+                match l.nKind {
+                    SL_LINK_BOOL => to.write(from.read()),
+                    group::SL_LINK_ANALOG16 => to
+                        .cast::<u16>()
+                        .write_unaligned(from.cast::<u16>().read_unaligned()),
+                    _ => to
+                        .cast::<u32>()
+                        .write_unaligned(from.cast::<u32>().read_unaligned()),
+                }
             }
         }
     }
@@ -449,6 +452,17 @@ impl group::Links for CLinks {
         // SAFETY: non-null and aligned (checked by `storage`), at least `count` entries
         // (sl_group_init contract); read by value.
         (i < self.count).then(|| unsafe { self.base.add(i).read() })
+    }
+    fn words(&self, i: usize) -> Option<[u64; 2]> {
+        // SAFETY: as in `get`; a link is 12 bytes without padding: read as a 64-bit and a
+        // 32-bit word (2-aligned, so unaligned reads).
+        (i < self.count).then(|| unsafe {
+            let p = self.base.add(i).cast::<u8>();
+            [
+                p.cast::<u64>().read_unaligned(),
+                u64::from(p.add(8).cast::<u32>().read_unaligned()),
+            ]
+        })
     }
 }
 

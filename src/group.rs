@@ -145,7 +145,16 @@ impl Wiring {
 
 /// Copies a pending CONNECTION SHUTDOWN request to its connection(s): their
 /// bShutdownRequest input (acted on in their next cycle).
+#[inline(always)]
 fn apply_request<M: Members + ?Sized>(m: &mut M, w: &mut Wiring) {
+    if w.request.is_some() {
+        deliver_request(m, w);
+    }
+}
+
+/// The request of a CONNECTION SHUTDOWN block, to the connection(s) with its Connection ID.
+#[inline(never)]
+fn deliver_request<M: Members + ?Sized>(m: &mut M, w: &mut Wiring) {
     if let Some((v, idx, k)) = w.take_request() {
         for &i in &idx[..k] {
             m.with(usize::from(i), |b| {
@@ -443,9 +452,9 @@ pub fn member_check(
 }
 
 /// The sealed schedule's check (docs/performance.md), in steps: where the tables are and
-/// how many entries they hold, then every member entry and every link, in order. One
-/// multiply per 64-bit word: a bijection of the running value for each word, so a change of
-/// any single word always changes the result.
+/// how many entries they hold, then every member entry and every link, in order, as their
+/// bytes ([`schedule_words`]). One multiply per entry or link: a bijection of the running
+/// value, so a change of any single entry or link always changes the result.
 pub fn schedule_start(group: usize, members: usize, count: u16, cap: u16, links: usize) -> u64 {
     let h = mix(0x5AFE_10C1_6A05_0003, group as u64);
     let h = mix(h, members as u64);
@@ -455,24 +464,12 @@ pub fn schedule_start(group: usize, members: usize, count: u16, cap: u16, links:
     )
 }
 
-/// One member entry into the schedule check.
-#[inline]
-pub fn schedule_member(h: u64, e: &SL_MEMBER) -> u64 {
-    let [a, b, c, d, e0, e1] = e.aReserved;
-    let tail = u64::from(e.nType) | u64::from_le_bytes([0, 0, a, b, c, d, e0, e1]);
-    step(step(h, e.pBlock as usize as u64), tail)
-}
-
-/// One link into the schedule check.
-#[inline]
-pub fn schedule_link(h: u64, l: &SL_LINK) -> u64 {
-    let [a, b, c] = l.aReserved;
-    let w0 = u64::from(l.nSrcMember)
-        | u64::from(l.nSrcOffset) << 16
-        | u64::from(l.nDstMember) << 32
-        | u64::from(l.nDstOffset) << 48;
-    let w1 = u64::from_le_bytes([l.nKind, a, b, c, 0, 0, 0, 0]);
-    step(step(h, w0), w1)
+/// One member entry (its two 64-bit words) or one link (its 64-bit and 32-bit words) into
+/// the schedule check: both words folded into one step (a change of either alone always
+/// changes it).
+#[inline(always)]
+pub fn schedule_words(h: u64, w0: u64, w1: u64) -> u64 {
+    step(h, w0 ^ w1.rotate_left(32))
 }
 
 /// The last step: 48 bits, the width stored in the group.
@@ -508,6 +505,18 @@ pub trait Links {
     fn count(&self) -> usize;
     /// Entry `i`.
     fn get(&self, i: usize) -> Option<SL_LINK>;
+    /// Entry `i`'s bytes as words for the schedule check (bytes 0–7, bytes 8–11).
+    fn words(&self, i: usize) -> Option<[u64; 2]> {
+        let l = self.get(i)?;
+        let [a, b, c] = l.aReserved;
+        Some([
+            u64::from(l.nSrcMember)
+                | u64::from(l.nSrcOffset) << 16
+                | u64::from(l.nDstMember) << 32
+                | u64::from(l.nDstOffset) << 48,
+            u64::from(u32::from_le_bytes([l.nKind, a, b, c])),
+        ])
+    }
 }
 
 impl Links for [SL_LINK] {
