@@ -27,7 +27,8 @@ Rules (documented in plc_bindings/README.md and docs/plc-integration.md):
     private-state parts, e.g. SL_PRIVATE_HEADER) become DUTs of the same name.
   * Field sections: fields before the first field whose doc comment mentions
     "output base" are inputs (signals, group link, parameters); from there on outputs.
-    Fields named aReserved* and nested structs (private state) stay inside the DUT only; an
+    Fields named aReserved*, fields documented "Private:" and nested structs (private state)
+    stay inside the DUT only; an
     array of structs (a value table such as LOADSENSING's aRow) is an input like any array.
   * Types: SL_BOOL->BOOL, uint8/16/32/64->BYTE/WORD/DWORD/LWORD, int8/16/32/64->
     SINT/INT/DINT/LINT; a uint32_t whose name starts with t / at (a millisecond time) is
@@ -376,7 +377,9 @@ def _find_blocks(hdr: Header) -> None:
 
 
 def is_reserved(f: CField) -> bool:
-    return re.fullmatch(r"aReserved\d*", f.name) is not None
+    """A reserved field, or one the library keeps for itself (its doc says "Private:", as
+    SL_GROUP's awSchedule): inside the DUT only."""
+    return re.fullmatch(r"aReserved\d*", f.name) is not None or "Private:" in f.doc
 
 
 def is_nested(f: CField) -> bool:
