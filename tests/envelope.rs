@@ -1136,3 +1136,67 @@ fn latched_copy_is_verified_before_the_outputs_are_enabled() {
     expect(&s.fb, SL_STATE_ERROR);
     assert_ne!(s.fb.nDiag & SL_DIAG_CORRUPT, 0);
 }
+
+// ---------------------------------------------------------------------------------------
+// The panic boundary's recovery (src/ffi.rs `block_call`: a caught panic forces ERROR)
+// ---------------------------------------------------------------------------------------
+
+/// ABI §5 SL_E_INTERNAL "the instance is in ERROR with its outputs FALSE": after an internal
+/// fault a running block is in ERROR (diag bit 15 added to what it had), bError TRUE, the
+/// outputs FALSE; its private state is sealed (the next call sees no corruption and keeps
+/// the error) and one ErrAck edge acknowledges it (C4: nothing remains).
+fn forced_error_is_an_acknowledgeable_error<B: Guard + safelogic::prim::envelope::Block>(fb: B) {
+    let mut s = running(fb);
+    expect(&s.fb, SL_STATE_RUN);
+    safelogic::prim::envelope::force_error(&mut s.fb);
+    expect_error(&s.fb, SL_DIAG_CORRUPT);
+    assert_eq!(
+        s.adv(1),
+        SL_OK,
+        "sealed: no corruption seen in the next call"
+    );
+    expect_error(&s.fb, SL_DIAG_CORRUPT);
+    s.fb.set_errack(1);
+    s.step(1, SL_STATE_RESET);
+    s.fb.set_errack(0);
+    s.step(1, SL_STATE_SAFE);
+    s.restart();
+    expect(&s.fb, SL_STATE_RUN);
+}
+both!(forced_error_is_an_acknowledgeable_error);
+
+/// A block already in ERROR keeps its diag bits and gains bit 15 (ABI §7: a block in ERROR
+/// only gains new bits); its error condition still blocks the acknowledgement.
+fn forced_error_in_error_keeps_the_diag<B: Guard + safelogic::prim::envelope::Block>(fb: B) {
+    let mut s = running(fb);
+    disc_error(&mut s);
+    safelogic::prim::envelope::force_error(&mut s.fb);
+    expect_error(&s.fb, SL_DIAG_DISC1 | SL_DIAG_CORRUPT);
+    s.fb.set_errack(1);
+    s.step(1, SL_STATE_ERROR);
+    expect_error(&s.fb, SL_DIAG_DISC1 | SL_DIAG_CORRUPT);
+}
+both!(forced_error_in_error_keeps_the_diag);
+
+/// An internal fault on a corrupted private state: a fresh private state in ERROR (diag
+/// bit 15 only), sealed, so the next call reports no further corruption and ErrAck leads
+/// through RESET to the start state with the parameters still latched.
+fn forced_error_on_a_corrupt_instance_is_recoverable<
+    B: Params + safelogic::prim::envelope::Block,
+>(
+    fb: B,
+) {
+    let mut s = running(fb);
+    disc_error(&mut s);
+    s.fb.private_bytes()[0] ^= 0x5A; // the magic word
+    safelogic::prim::envelope::force_error(&mut s.fb);
+    expect_error(&s.fb, SL_DIAG_CORRUPT);
+    s.fb.set_in(0, 1);
+    assert_eq!(s.adv(1), SL_OK, "a fresh, sealed private state");
+    expect_error(&s.fb, SL_DIAG_CORRUPT);
+    s.fb.set_errack(1);
+    s.step(1, SL_STATE_RESET);
+    s.fb.set_errack(0);
+    s.step(1, SL_STATE_SAFE);
+}
+both!(forced_error_on_a_corrupt_instance_is_recoverable);
