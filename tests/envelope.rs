@@ -1200,3 +1200,37 @@ fn forced_error_on_a_corrupt_instance_is_recoverable<
     s.step(1, SL_STATE_SAFE);
 }
 both!(forced_error_on_a_corrupt_instance_is_recoverable);
+
+/// C5: a block in ERROR with bRun FALSE reports a changed parameter (SL_E_PARAM_CHANGED,
+/// diag bit 13) in addition to the error it is in: the diag bits of that error stay.
+fn parameter_changed_in_error_with_run_false_adds_bit_13<B: Params>(fb: B) {
+    let mut s = running(fb);
+    disc_error(&mut s);
+    s.fb.set_run(0);
+    assert_eq!(s.adv(1), SL_OK);
+    expect_error(&s.fb, SL_DIAG_DISC1);
+    s.fb.set_delay(70);
+    assert_eq!(s.adv(1), SL_E_PARAM_CHANGED);
+    expect_error(&s.fb, SL_DIAG_DISC1 | SL_DIAG_PARAM_CHANGED);
+    assert_eq!(s.adv(1), SL_E_PARAM_CHANGED);
+    expect_error(&s.fb, SL_DIAG_DISC1 | SL_DIAG_PARAM_CHANGED);
+}
+both!(parameter_changed_in_error_with_run_false_adds_bit_13);
+
+/// ABI §3.6 / C3: the private diagnosis word is under the integrity check like the state:
+/// one flipped bit of it (low or high byte) is SL_E_CORRUPT, in RUN and in ERROR.
+fn corrupted_private_diag_word_is_corrupt<B: Params>(fb: B) {
+    // SL_PRIVATE_HEADER: wMagic 0..2, wParamCrc 2..4, nState 4, nFlags 5, wDiag 6..8.
+    for (byte, bit) in [(6usize, 0x01u8), (7, 0x01), (7, 0x80)] {
+        let mut s = running(fb.clone());
+        s.fb.private_bytes()[byte] ^= bit;
+        assert_eq!(s.adv(1), SL_E_CORRUPT, "RUN, byte {byte} bit {bit:#x}");
+        expect_error(&s.fb, SL_DIAG_CORRUPT);
+        let mut s = running(fb.clone());
+        disc_error(&mut s);
+        s.fb.private_bytes()[byte] ^= bit;
+        assert_eq!(s.adv(1), SL_E_CORRUPT, "ERROR, byte {byte} bit {bit:#x}");
+        expect_error(&s.fb, SL_DIAG_CORRUPT);
+    }
+}
+both!(corrupted_private_diag_word_is_corrupt);

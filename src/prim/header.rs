@@ -48,7 +48,7 @@ pub struct SL_PRIVATE_HEADER {
 }
 
 /// Previous level of Restart.
-pub(crate) const F_RESTART_PREV: u8 = 1 << 0;
+pub(crate) const F_RESTART_PREV: u8 = 1;
 /// Previous level of ErrAck.
 pub(crate) const F_ERRACK_PREV: u8 = 1 << 1;
 /// `tLast` holds a time from an earlier call.
