@@ -1234,3 +1234,27 @@ fn corrupted_private_diag_word_is_corrupt<B: Params>(fb: B) {
     }
 }
 both!(corrupted_private_diag_word_is_corrupt);
+
+/// "Safe Inputs after Disc Error" (ABI §7 Pairs, §4.4.1): once both channels have requested
+/// the safe state together, the condition is met; an error that joins later (here the clock,
+/// C4) only adds its diag bit (ABI §7: a block in ERROR gains new bits) and does not undo
+/// it: one ErrAck edge acknowledges both.
+fn safe_inputs_condition_met_survives_a_further_error<B: Params>(mut fb: B) {
+    *fb.options() |= SL_OPT_SAFE_INPUTS_AFTER_DISC;
+    let mut s = running(fb);
+    s.fb.set_in(0, 0);
+    s.adv(1);
+    s.adv(100);
+    expect_error(&s.fb, SL_DIAG_DISC1 | SL_DIAG_SAFE_IN_DISC1);
+    s.fb.set_in(1, 0);
+    assert_eq!(s.adv(1), SL_OK);
+    s.fb.set_in(0, 1);
+    s.fb.set_in(1, 1);
+    assert_eq!(s.adv(1), SL_OK);
+    s.t -= 10;
+    assert_eq!(s.cyc(), SL_E_CLOCK);
+    expect_error(&s.fb, SL_DIAG_DISC1 | SL_DIAG_SAFE_IN_DISC1 | SL_DIAG_CLOCK);
+    s.fb.set_errack(1);
+    s.step(1, SL_STATE_RESET);
+}
+both!(safe_inputs_condition_met_survives_a_further_error);
