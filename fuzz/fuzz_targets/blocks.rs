@@ -47,7 +47,9 @@ safelogic::for_each_block!(table);
 
 /// Writes a field (by name) of the struct at `p`, in its size.
 fn set(p: *mut u8, t: &BlockType, name: &str, v: u32) {
-    let f = t.field(name).unwrap_or_else(|| panic!("{}: no field {name}", t.info.name));
+    let f = t
+        .field(name)
+        .unwrap_or_else(|| panic!("{}: no field {name}", t.info.name));
     let bytes = v.to_ne_bytes();
     for (i, b) in bytes.iter().enumerate().take(f.kind.size()) {
         // SAFETY: the field lies inside the struct (registry test).
@@ -80,10 +82,19 @@ fn configure_muting(p: *mut u8, t: &BlockType, inp: &mut Input) {
     };
     let m34 = !sequential || backwards || o & 0x80 != 0;
     let active = 0b11 | ossd | if m34 { 0b11_0000 } else { 0 };
-    let options = if sequential { SL_OPT_MUTING_SEQUENTIAL } else { 0 }
-        | if backwards { SL_OPT_MUTING_BACKWARDS } else { 0 }
-        | if o & 4 != 0 { SL_OPT_MUTING_OSSD_CHECK_OPTIONAL } else { 0 }
-        | if o & 8 != 0 { SL_OPT_EDM1 } else { 0 }
+    let options = if sequential {
+        SL_OPT_MUTING_SEQUENTIAL
+    } else {
+        0
+    } | if backwards {
+        SL_OPT_MUTING_BACKWARDS
+    } else {
+        0
+    } | if o & 4 != 0 {
+        SL_OPT_MUTING_OSSD_CHECK_OPTIONAL
+    } else {
+        0
+    } | if o & 8 != 0 { SL_OPT_EDM1 } else { 0 }
         | if o & 16 != 0 { SL_OPT_EDM2 } else { 0 };
     set(p, t, "wInputActive", active);
     set(p, t, "wInputNegated", u32::from(inp.u8() & 0x3F));
@@ -92,7 +103,12 @@ fn configure_muting(p: *mut u8, t: &BlockType, inp: &mut Input) {
     let disc_ossd = time(inp, 3000);
     let disc34 = time(inp, 3000);
     set(p, t, "tDiscTime12", if sequential { 0 } else { disc12 });
-    set(p, t, "tDiscTimeOSSD", if ossd == 0b1100 { disc_ossd } else { 0 });
+    set(
+        p,
+        t,
+        "tDiscTimeOSSD",
+        if ossd == 0b1100 { disc_ossd } else { 0 },
+    );
     set(p, t, "tDiscTime34", if sequential { 0 } else { disc34 });
     set(p, t, "tFilterTime", time(inp, 500));
     set(p, t, "tMaxMutingTime", time(inp, 20_000));
@@ -107,7 +123,11 @@ fn configure_twohand(p: *mut u8, t: &BlockType, inp: &mut Input) {
     let g2: u32 = [0b0100, 0b1000, 0b1100, 0b1100][usize::from((o >> 2) & 3)];
     set(p, t, "wInputActive", g1 | g2);
     set(p, t, "wInputNegated", u32::from(inp.u8() & 0x0F));
-    let safe_in = if o & 0x10 != 0 { SL_OPT_SAFE_INPUTS_AFTER_DISC } else { 0 };
+    let safe_in = if o & 0x10 != 0 {
+        SL_OPT_SAFE_INPUTS_AFTER_DISC
+    } else {
+        0
+    };
     set(p, t, "dwOptions", safe_in);
     let disc12 = time(inp, 3000);
     let disc34 = time(inp, 3000);
@@ -120,7 +140,11 @@ fn configure_twohand(p: *mut u8, t: &BlockType, inp: &mut Input) {
 /// change (toggle 0/1, rarely any byte; bit 5 of the step byte: more changes before the
 /// cycle) and a time step (0, < 64 ms, < 4 s, or up to ~4.5 min).
 fn walk(sel: u8, inp: &mut Input, fns: &[(u16, InitFn, Call)]) {
-    let tag = if sel & 1 == 0 { SL_TYPE_MUTING } else { SL_TYPE_TWOHAND };
+    let tag = if sel & 1 == 0 {
+        SL_TYPE_MUTING
+    } else {
+        SL_TYPE_TWOHAND
+    };
     let &(_, init, cycle) = fns.iter().find(|r| r.0 == tag).unwrap();
     let t = block_type(tag).unwrap();
     let mut store = aligned(t.size);
@@ -152,7 +176,11 @@ fn walk(sel: u8, inp: &mut Input, fns: &[(u16, InitFn, Call)]) {
         // SAFETY: the field lies inside the struct (registry test).
         unsafe {
             let cur = *p.add(off);
-            *p.add(off) = if op & 0xC0 == 0xC0 { inp.u8() } else { u8::from(cur == 0) };
+            *p.add(off) = if op & 0xC0 == 0xC0 {
+                inp.u8()
+            } else {
+                u8::from(cur == 0)
+            };
         }
         if op & 0x20 != 0 {
             continue;
@@ -178,7 +206,11 @@ fn walk(sel: u8, inp: &mut Input, fns: &[(u16, InitFn, Call)]) {
                 assert_eq!((out("bMuteOut"), out("bMuteDelOut")), (1, 1));
             }
         } else {
-            assert_eq!(out("bTwoHandOut") == 1, state == SL_STATE_RUN, "TWOHAND: state {state}");
+            assert_eq!(
+                out("bTwoHandOut") == 1,
+                state == SL_STATE_RUN,
+                "TWOHAND: state {state}"
+            );
         }
     }
     drop(store);
@@ -213,7 +245,10 @@ fuzz_target!(|data: &[u8]| {
     if mode == 1 || mode == 3 {
         // SAFETY: storage of the type's size, 8-aligned.
         let rc = unsafe { init(p) };
-        assert!(rc == safelogic::SL_OK || rc == safelogic::SL_E_CONFIG, "init: {rc}");
+        assert!(
+            rc == safelogic::SL_OK || rc == safelogic::SL_E_CONFIG,
+            "init: {rc}"
+        );
         check_block(t, &bytes(p), rc);
     }
     let inputs: Vec<_> = t
@@ -233,7 +268,9 @@ fuzz_target!(|data: &[u8]| {
                 let v = if op & 0x80 == 0 { v & 1 } else { v };
                 for i in 0..f.kind.size() {
                     // SAFETY: the field lies inside the struct (registry test).
-                    unsafe { *p.add(usize::from(f.offset) + i) = if i == 0 { v } else { inp.u8() } };
+                    unsafe {
+                        *p.add(usize::from(f.offset) + i) = if i == 0 { v } else { inp.u8() }
+                    };
                 }
             }
             // A parameter word.
