@@ -691,3 +691,39 @@ fn fb_err_and_failed_member_stay_until_the_group_error_is_acknowledged() {
         (SL_STATE_RESET, 0, group::SL_NO_MEMBER, 0)
     );
 }
+
+/// GR14 / ABI §3.6: every word of the group's private state is under its complement, and the
+/// magic is checked besides: a flipped bit whose complement was not updated (counts still in
+/// range) and a wrong magic with matching complements are both SL_E_CORRUPT, ERROR, outputs
+/// FALSE.
+#[test]
+fn every_private_word_of_the_group_is_checked() {
+    let forge: [(&str, fn(&mut SL_GROUP_PRIVATE)); 4] = [
+        ("diag word", |p| p.dwDiag ^= 1),
+        ("state bits", |p| p.dwCtrl ^= 1 << 17),
+        ("member count below the capacity", |p| p.dwMembers ^= 1),
+        ("magic with matching complement", |p| {
+            p.dwCtrl ^= 1;
+            p.adwCheck[0] = !p.dwCtrl;
+        }),
+    ];
+    for (what, f) in forge {
+        let mut a = and2();
+        let mut g = new_group(1, 0);
+        g.bRun = 1;
+        let mut ms: [&mut dyn Member; 1] = [&mut a];
+        assert_eq!(group::cycle(&mut g, &mut ms[..], &[], 0), SL_OK);
+        assert_eq!(g.nState, SL_STATE_RUN, "{what}");
+        f(&mut g.stPrivate);
+        assert_eq!(
+            group::cycle(&mut g, &mut ms[..], &[], 1),
+            SL_E_CORRUPT,
+            "{what}"
+        );
+        assert_eq!(
+            (g.nState, g.bInRun, g.bFbRun),
+            (SL_STATE_ERROR, 0, 0),
+            "{what}"
+        );
+    }
+}
