@@ -698,7 +698,8 @@ fn fb_err_and_failed_member_stay_until_the_group_error_is_acknowledged() {
 /// FALSE.
 #[test]
 fn every_private_word_of_the_group_is_checked() {
-    let forge: [(&str, fn(&mut SL_GROUP_PRIVATE)); 4] = [
+    type Forge = fn(&mut SL_GROUP_PRIVATE);
+    let forge: [(&str, Forge); 4] = [
         ("diag word", |p| p.dwDiag ^= 1),
         ("state bits", |p| p.dwCtrl ^= 1 << 17),
         ("member count below the capacity", |p| p.dwMembers ^= 1),
