@@ -455,3 +455,36 @@ counter_tests!(int, FB_COUNTER_INT, i16);
 counter_tests!(uint, FB_COUNTER_UINT, u16);
 counter_tests!(dint, FB_COUNTER_DINT, i32);
 counter_tests!(udint, FB_COUNTER_UDINT, u32);
+
+/// C3 (semantics): the latched parameter copy is verified where the outputs start to carry
+/// values. A copy corrupted while the block is in ERROR — the live field changed alike, so
+/// the live/latched comparison cannot see it — is found when the acknowledgement restarts
+/// the block (RESET → RUN needs no new latch): ERROR with diag bit 15, outputs FALSE.
+#[test]
+fn corrupted_latched_copy_is_found_when_the_acknowledgement_restarts() {
+    let mut fb = FB_COUNTER_INT {
+        wInputActive: ALL,
+        nPresetValue: 5,
+        nCounterLimit: 10,
+        ..Default::default()
+    };
+    assert_eq!(fb.init(), SL_OK);
+    fb.bRun = 1;
+    assert_eq!(fb.cycle(100), SL_OK);
+    assert_eq!(fb.nState, SL_STATE_RUN);
+    assert_eq!(fb.cycle(90), SL_E_CLOCK);
+    assert_eq!(fb.nState, SL_STATE_ERROR);
+    fb.stPrivate.adwParam[0] ^= 1;
+    fb.nPresetValue ^= 1;
+    fb.bErrAck = 1;
+    assert_eq!(fb.cycle(91), SL_OK);
+    assert_eq!(fb.nState, SL_STATE_RESET);
+    fb.bErrAck = 0;
+    fb.cycle(92);
+    assert_eq!(
+        fb.nState, SL_STATE_ERROR,
+        "the stale CRC is found at the restart"
+    );
+    assert_eq!(fb.nDiag & SL_DIAG_CORRUPT, SL_DIAG_CORRUPT);
+    assert_eq!((fb.bError, fb.bCounterOut), (1, 0));
+}

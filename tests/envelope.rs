@@ -1136,3 +1136,125 @@ fn latched_copy_is_verified_before_the_outputs_are_enabled() {
     expect(&s.fb, SL_STATE_ERROR);
     assert_ne!(s.fb.nDiag & SL_DIAG_CORRUPT, 0);
 }
+
+// ---------------------------------------------------------------------------------------
+// The panic boundary's recovery (src/ffi.rs `block_call`: a caught panic forces ERROR)
+// ---------------------------------------------------------------------------------------
+
+/// ABI §5 SL_E_INTERNAL "the instance is in ERROR with its outputs FALSE": after an internal
+/// fault a running block is in ERROR (diag bit 15 added to what it had), bError TRUE, the
+/// outputs FALSE; its private state is sealed (the next call sees no corruption and keeps
+/// the error) and one ErrAck edge acknowledges it (C4: nothing remains).
+fn forced_error_is_an_acknowledgeable_error<B: Guard + safelogic::prim::envelope::Block>(fb: B) {
+    let mut s = running(fb);
+    expect(&s.fb, SL_STATE_RUN);
+    safelogic::prim::envelope::force_error(&mut s.fb);
+    expect_error(&s.fb, SL_DIAG_CORRUPT);
+    assert_eq!(
+        s.adv(1),
+        SL_OK,
+        "sealed: no corruption seen in the next call"
+    );
+    expect_error(&s.fb, SL_DIAG_CORRUPT);
+    s.fb.set_errack(1);
+    s.step(1, SL_STATE_RESET);
+    s.fb.set_errack(0);
+    s.step(1, SL_STATE_SAFE);
+    s.restart();
+    expect(&s.fb, SL_STATE_RUN);
+}
+both!(forced_error_is_an_acknowledgeable_error);
+
+/// A block already in ERROR keeps its diag bits and gains bit 15 (ABI §7: a block in ERROR
+/// only gains new bits); its error condition still blocks the acknowledgement.
+fn forced_error_in_error_keeps_the_diag<B: Guard + safelogic::prim::envelope::Block>(fb: B) {
+    let mut s = running(fb);
+    disc_error(&mut s);
+    safelogic::prim::envelope::force_error(&mut s.fb);
+    expect_error(&s.fb, SL_DIAG_DISC1 | SL_DIAG_CORRUPT);
+    s.fb.set_errack(1);
+    s.step(1, SL_STATE_ERROR);
+    expect_error(&s.fb, SL_DIAG_DISC1 | SL_DIAG_CORRUPT);
+}
+both!(forced_error_in_error_keeps_the_diag);
+
+/// An internal fault on a corrupted private state: a fresh private state in ERROR (diag
+/// bit 15 only), sealed, so the next call reports no further corruption and ErrAck leads
+/// through RESET to the start state with the parameters still latched.
+fn forced_error_on_a_corrupt_instance_is_recoverable<
+    B: Params + safelogic::prim::envelope::Block,
+>(
+    fb: B,
+) {
+    let mut s = running(fb);
+    disc_error(&mut s);
+    s.fb.private_bytes()[0] ^= 0x5A; // the magic word
+    safelogic::prim::envelope::force_error(&mut s.fb);
+    expect_error(&s.fb, SL_DIAG_CORRUPT);
+    s.fb.set_in(0, 1);
+    assert_eq!(s.adv(1), SL_OK, "a fresh, sealed private state");
+    expect_error(&s.fb, SL_DIAG_CORRUPT);
+    s.fb.set_errack(1);
+    s.step(1, SL_STATE_RESET);
+    s.fb.set_errack(0);
+    s.step(1, SL_STATE_SAFE);
+}
+both!(forced_error_on_a_corrupt_instance_is_recoverable);
+
+/// C5: a block in ERROR with bRun FALSE reports a changed parameter (SL_E_PARAM_CHANGED,
+/// diag bit 13) in addition to the error it is in: the diag bits of that error stay.
+fn parameter_changed_in_error_with_run_false_adds_bit_13<B: Params>(fb: B) {
+    let mut s = running(fb);
+    disc_error(&mut s);
+    s.fb.set_run(0);
+    assert_eq!(s.adv(1), SL_OK);
+    expect_error(&s.fb, SL_DIAG_DISC1);
+    s.fb.set_delay(70);
+    assert_eq!(s.adv(1), SL_E_PARAM_CHANGED);
+    expect_error(&s.fb, SL_DIAG_DISC1 | SL_DIAG_PARAM_CHANGED);
+    assert_eq!(s.adv(1), SL_E_PARAM_CHANGED);
+    expect_error(&s.fb, SL_DIAG_DISC1 | SL_DIAG_PARAM_CHANGED);
+}
+both!(parameter_changed_in_error_with_run_false_adds_bit_13);
+
+/// ABI §3.6 / C3: the private diagnosis word is under the integrity check like the state:
+/// one flipped bit of it (low or high byte) is SL_E_CORRUPT, in RUN and in ERROR.
+fn corrupted_private_diag_word_is_corrupt<B: Params>(fb: B) {
+    // SL_PRIVATE_HEADER: wMagic 0..2, wParamCrc 2..4, nState 4, nFlags 5, wDiag 6..8.
+    for (byte, bit) in [(6usize, 0x01u8), (7, 0x01), (7, 0x80)] {
+        let mut s = running(fb.clone());
+        s.fb.private_bytes()[byte] ^= bit;
+        assert_eq!(s.adv(1), SL_E_CORRUPT, "RUN, byte {byte} bit {bit:#x}");
+        expect_error(&s.fb, SL_DIAG_CORRUPT);
+        let mut s = running(fb.clone());
+        disc_error(&mut s);
+        s.fb.private_bytes()[byte] ^= bit;
+        assert_eq!(s.adv(1), SL_E_CORRUPT, "ERROR, byte {byte} bit {bit:#x}");
+        expect_error(&s.fb, SL_DIAG_CORRUPT);
+    }
+}
+both!(corrupted_private_diag_word_is_corrupt);
+
+/// "Safe Inputs after Disc Error" (ABI §7 Pairs, §4.4.1): once both channels have requested
+/// the safe state together, the condition is met; an error that joins later (here the clock,
+/// C4) only adds its diag bit (ABI §7: a block in ERROR gains new bits) and does not undo
+/// it: one ErrAck edge acknowledges both.
+fn safe_inputs_condition_met_survives_a_further_error<B: Params>(mut fb: B) {
+    *fb.options() |= SL_OPT_SAFE_INPUTS_AFTER_DISC;
+    let mut s = running(fb);
+    s.fb.set_in(0, 0);
+    s.adv(1);
+    s.adv(100);
+    expect_error(&s.fb, SL_DIAG_DISC1 | SL_DIAG_SAFE_IN_DISC1);
+    s.fb.set_in(1, 0);
+    assert_eq!(s.adv(1), SL_OK);
+    s.fb.set_in(0, 1);
+    s.fb.set_in(1, 1);
+    assert_eq!(s.adv(1), SL_OK);
+    s.t -= 10;
+    assert_eq!(s.cyc(), SL_E_CLOCK);
+    expect_error(&s.fb, SL_DIAG_DISC1 | SL_DIAG_SAFE_IN_DISC1 | SL_DIAG_CLOCK);
+    s.fb.set_errack(1);
+    s.step(1, SL_STATE_RESET);
+}
+both!(safe_inputs_condition_met_survives_a_further_error);

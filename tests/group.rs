@@ -571,3 +571,160 @@ fn logic_block_verifies_its_parameters_before_switching_on() {
     assert_eq!((a.nState, a.bAndOut), (SL_STATE_ERROR, 0));
     assert_eq!(a.nDiag & SL_DIAG_CORRUPT, SL_DIAG_CORRUPT);
 }
+
+/// GR6: OtherErr and ComErr show the fault input now *or* a module / communication cause of
+/// the current group error: they stay TRUE after the input clears, until the error is
+/// acknowledged.
+#[test]
+fn other_err_and_com_err_stay_set_until_the_error_is_acknowledged() {
+    for com in [false, true] {
+        let mut a = and2();
+        let mut g = new_group(1, 0);
+        g.bRun = 1;
+        let mut ms: [&mut dyn Member; 1] = [&mut a];
+        group::cycle(&mut g, &mut ms[..], &[], 0);
+        assert_eq!(g.nState, SL_STATE_RUN);
+        let set = |g: &mut SL_GROUP, v: u8| {
+            if com {
+                g.bComErrIn = v;
+            } else {
+                g.bModuleFault = v;
+            }
+        };
+        let shown = |g: &SL_GROUP| if com { g.bComErr } else { g.bOtherErr };
+        set(&mut g, 1);
+        group::cycle(&mut g, &mut ms[..], &[], 1);
+        assert_eq!((g.nState, shown(&g)), (SL_STATE_ERROR, 1));
+        set(&mut g, 0);
+        for t in 2..5 {
+            assert_eq!(group::cycle(&mut g, &mut ms[..], &[], t), SL_OK);
+            assert_eq!(
+                (g.nState, shown(&g)),
+                (SL_STATE_ERROR, 1),
+                "cause of the current error, com={com}"
+            );
+            assert_eq!(
+                (g.bComErr, g.bOtherErr, g.bFbErr),
+                (u8::from(com), u8::from(!com), 0),
+                "only the error's own cause shows"
+            );
+        }
+        g.bErrAck = 1;
+        group::cycle(&mut g, &mut ms[..], &[], 5);
+        assert_eq!((g.nState, shown(&g)), (SL_STATE_RESET, 0));
+        // In STOP a fault input only shows while it is there (GR7): nothing is latched.
+        g.bErrAck = 0;
+        g.bRun = 0;
+        group::cycle(&mut g, &mut ms[..], &[], 6);
+        assert_eq!(g.nState, SL_STATE_STOP);
+        set(&mut g, 1);
+        group::cycle(&mut g, &mut ms[..], &[], 7);
+        assert_eq!((g.nState, shown(&g)), (SL_STATE_STOP, 1));
+        set(&mut g, 0);
+        group::cycle(&mut g, &mut ms[..], &[], 8);
+        assert_eq!((g.nState, shown(&g)), (SL_STATE_STOP, 0));
+    }
+}
+
+/// GR6: FbErr is a member in ERROR now *or* a member cause of the current group error: the
+/// member acknowledged while the group's error is held by a module fault leaves FbErr TRUE.
+/// GR5: `nFailedMember` names the failed member until the acknowledgement, 0xFFFF before
+/// and after.
+#[test]
+fn fb_err_and_failed_member_stay_until_the_group_error_is_acknowledged() {
+    let (mut a, mut m) = (and2(), mon_auto());
+    let mut g = new_group(2, 0);
+    assert_eq!(g.nFailedMember, group::SL_NO_MEMBER, "right after init");
+    g.bRun = 1;
+    let mut ms: [&mut dyn Member; 2] = [&mut a, &mut m];
+    for t in 0..3 {
+        group::cycle(&mut g, &mut ms[..], &[], t);
+        assert_eq!(g.nFailedMember, group::SL_NO_MEMBER, "no error yet, t={t}");
+    }
+    assert_eq!(g.nState, SL_STATE_RUN);
+    m.bMonIn2 = 0;
+    let mut ms: [&mut dyn Member; 2] = [&mut a, &mut m];
+    let mut t = 3;
+    while g.nState != SL_STATE_ERROR {
+        group::cycle(&mut g, &mut ms[..], &[], t);
+        t += 1;
+        assert!(t < 100);
+    }
+    assert_eq!(
+        (g.bFbErr, g.nFailedMember, g.nDiag),
+        (1, 1, SL_GROUP_DIAG_FBERROR)
+    );
+    // The pair agrees again; a module fault now holds the group's error.
+    m.bMonIn2 = 1;
+    let mut ms: [&mut dyn Member; 2] = [&mut a, &mut m];
+    g.bModuleFault = 1;
+    for _ in 0..2 {
+        group::cycle(&mut g, &mut ms[..], &[], t);
+        t += 1;
+        assert_eq!(
+            (g.nState, g.bFbErr, g.nFailedMember),
+            (SL_STATE_ERROR, 1, 1),
+            "one cycle later and more"
+        );
+    }
+    g.bErrAck = 1;
+    group::cycle(&mut g, &mut ms[..], &[], t);
+    assert_eq!(ms[1].state(), SL_STATE_RESET, "the member took the edge");
+    assert_eq!(g.nState, SL_STATE_ERROR, "the module fault holds the group");
+    assert_eq!(
+        (g.bFbErr, g.nFailedMember, g.nDiag),
+        (1, 1, SL_GROUP_DIAG_FBERROR),
+        "a member cause of the current error"
+    );
+    g.bErrAck = 0;
+    group::cycle(&mut g, &mut ms[..], &[], t + 1);
+    assert_eq!(ms[1].state(), SL_STATE_STOP);
+    assert_eq!(
+        (g.nState, g.bFbErr, g.nFailedMember),
+        (SL_STATE_ERROR, 1, 1)
+    );
+    g.bModuleFault = 0;
+    g.bErrAck = 1;
+    group::cycle(&mut g, &mut ms[..], &[], t + 2);
+    assert_eq!(
+        (g.nState, g.bFbErr, g.nFailedMember, g.nDiag),
+        (SL_STATE_RESET, 0, group::SL_NO_MEMBER, 0)
+    );
+}
+
+/// GR14 / ABI §3.6: every word of the group's private state is under its complement, and the
+/// magic is checked besides: a flipped bit whose complement was not updated (counts still in
+/// range) and a wrong magic with matching complements are both SL_E_CORRUPT, ERROR, outputs
+/// FALSE.
+#[test]
+fn every_private_word_of_the_group_is_checked() {
+    type Forge = fn(&mut SL_GROUP_PRIVATE);
+    let forge: [(&str, Forge); 4] = [
+        ("diag word", |p| p.dwDiag ^= 1),
+        ("state bits", |p| p.dwCtrl ^= 1 << 17),
+        ("member count below the capacity", |p| p.dwMembers ^= 1),
+        ("magic with matching complement", |p| {
+            p.dwCtrl ^= 1;
+            p.adwCheck[0] = !p.dwCtrl;
+        }),
+    ];
+    for (what, f) in forge {
+        let mut a = and2();
+        let mut g = new_group(1, 0);
+        g.bRun = 1;
+        let mut ms: [&mut dyn Member; 1] = [&mut a];
+        assert_eq!(group::cycle(&mut g, &mut ms[..], &[], 0), SL_OK);
+        assert_eq!(g.nState, SL_STATE_RUN, "{what}");
+        f(&mut g.stPrivate);
+        assert_eq!(
+            group::cycle(&mut g, &mut ms[..], &[], 1),
+            SL_E_CORRUPT,
+            "{what}"
+        );
+        assert_eq!(
+            (g.nState, g.bInRun, g.bFbRun),
+            (SL_STATE_ERROR, 0, 0),
+            "{what}"
+        );
+    }
+}

@@ -4,7 +4,20 @@
 # given files; one summary at the end. Bounded: -j 1 everywhere (2-core machine).
 #   bash tools/deep-check.sh [SECONDS_PER_TARGET] [FILES_FOR_MUTANTS...]
 # Needs: rustup component add --toolchain nightly miri rust-src; cargo install cargo-fuzz
-# cargo-mutants. MIRI_TESTS overrides the Miri test binaries (default below).
+# cargo-mutants. Environment:
+#   MIRI_TESTS     the Miri test binaries (default below)
+#   DEEP_STEPS     which steps run (default "miri fuzz mutants")
+#   MUTANTS_ARGS   more cargo-mutants options, e.g. "--in-diff build/my.diff" (only the
+#                  mutants on the lines of that diff; the files may then be omitted)
+#   MUTANTS_TESTS  test targets each mutant is built and tested with (besides the lib's unit
+#                  tests; default below: the suites that exercise src/prim, ESTOP/MON and the
+#                  group, without the minute-long conformance/props runs)
+# Missed mutants that match a line of tools/mutants-equivalent.txt (regex over the mutant's
+# name without its line:column; each documented in docs/testing.md) are reported apart;
+# any other missed mutant fails the check.
+# Example, the mutants of one branch's changes only:
+#   git diff main... > build/my.diff
+#   DEEP_STEPS=mutants MUTANTS_ARGS="--in-diff build/my.diff" bash tools/deep-check.sh
 set -uo pipefail
 cd "$(dirname "$0")/.."
 secs=${1:-60}
@@ -12,8 +25,11 @@ shift || true
 summary=()
 note() { summary+=("$*"); printf '\n==== %s ====\n' "$*"; }
 
+steps=${DEEP_STEPS:-"miri fuzz mutants"}
+step() { [[ " $steps " == *" $1 "* ]]; }
+
 miri_tests=${MIRI_TESTS:-"group_soundness ffi"}
-for mode in stacked tree; do
+step miri && for mode in stacked tree; do
     flags="-Zmiri-disable-isolation"
     [ "$mode" = tree ] && flags="$flags -Zmiri-tree-borrows"
     for t in $miri_tests; do
@@ -27,7 +43,7 @@ for mode in stacked tree; do
     done
 done
 
-for target in $(cd fuzz && cargo +nightly fuzz list); do
+step fuzz && for target in $(cd fuzz && cargo +nightly fuzz list); do
     log=build/deep-check/fuzz-$target.log
     (cd fuzz && CARGO_BUILD_JOBS=1 cargo +nightly fuzz run "$target" -- \
         -max_total_time="$secs" -rss_limit_mb=1024) >"$log" 2>&1
@@ -41,12 +57,30 @@ for target in $(cd fuzz && cargo +nightly fuzz list); do
     fi
 done
 
-if [ $# -gt 0 ]; then
-    args=()
+mutants_tests=${MUTANTS_TESTS:-"estop mon envelope fb_envelope edm group group_soundness links"}
+if step mutants && { [ $# -gt 0 ] || [ -n "${MUTANTS_ARGS:-}" ]; }; then
+    args=(--cargo-arg=--lib)
+    for t in $mutants_tests; do args+=("--cargo-arg=--test=$t"); done
     for f in "$@"; do args+=(--file "$f"); done
+    # shellcheck disable=SC2206 # word splitting of the option string is intended
+    args+=(${MUTANTS_ARGS:-})
     log=build/deep-check/mutants.log
-    cargo mutants -j 1 --timeout 300 "${args[@]}" >"$log" 2>&1
-    note "mutants $*: $(grep -E '^[0-9]+ mutants tested' "$log" | tail -1)"
+    out=build/deep-check/mutants
+    mkdir -p "$out"
+    CARGO_PROFILE_DEV_DEBUG=0 nice -n 10 cargo mutants -j 1 --minimum-test-timeout 30 \
+        --test-package safelogic -o "$out" "${args[@]}" >"$log" 2>&1
+    missed=$out/mutants.out/missed.txt
+    unexplained=$(sed -E 's/^([^:]+):[0-9]+:[0-9]+:/\1:/' "$missed" 2>/dev/null |
+        grep -v -E -f <(grep -v -E '^(#|$)' tools/mutants-equivalent.txt) || true)
+    equivalent=$(( $(wc -l <"$missed" 2>/dev/null || echo 0) - $(printf '%s' "$unexplained" | grep -c . || true) ))
+    summary_line=$(grep -E '^[0-9]+ mutants tested' "$log" | tail -1)
+    if [ -n "$unexplained" ]; then
+        note "mutants ${*:-} ${MUTANTS_ARGS:-}: $summary_line; FAILED: missed and not a listed equivalent:"
+        printf '%s\n' "$unexplained" | sed 's/^/    /'
+        summary+=("$(printf '%s\n' "$unexplained" | sed 's/^/    /')")
+    else
+        note "mutants ${*:-} ${MUTANTS_ARGS:-}: $summary_line ($equivalent missed, all listed equivalents)"
+    fi
 fi
 
 printf '\n==== summary ====\n'

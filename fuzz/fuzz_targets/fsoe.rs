@@ -92,13 +92,20 @@ fuzz_target!(|input: &[u8]| {
         return;
     }
     let len = frame_len(n);
-    assert_eq!(st == SL_E_LENGTH, len == 0 || frame.len() != len, "length rule");
+    assert_eq!(
+        st == SL_E_LENGTH,
+        len == 0 || frame.len() != len,
+        "length rule"
+    );
     if st == SL_E_LENGTH {
         assert_eq!((out.nCmd, seq), (0xAA, seq_in), "written on SL_E_LENGTH");
         return;
     }
     if st != SL_OK {
-        assert_eq!(seq, seq_in, "the expected sequence number moved on a refused frame");
+        assert_eq!(
+            seq, seq_in,
+            "the expected sequence number moved on a refused frame"
+        );
         return;
     }
     // Accepted: re-encode what was decoded with the sequence number that matched.
@@ -122,6 +129,10 @@ fuzz_target!(|input: &[u8]| {
         )
     };
     assert_eq!(rc, SL_OK);
-    assert_eq!(&again[..again_len], frame, "an accepted frame is not what the sender's encoder gives");
+    assert_eq!(
+        &again[..again_len],
+        frame,
+        "an accepted frame is not what the sender's encoder gives"
+    );
     assert_eq!(seq, out.nSeqNo);
 });

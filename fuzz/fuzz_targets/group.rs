@@ -78,7 +78,10 @@ fuzz_target!(|data: &[u8]| {
     let mp = members.as_mut_ptr();
     let lp = links.as_mut_ptr();
     // SAFETY: live, separate allocations.
-    assert_eq!(unsafe { ffi::sl_group_init(gp, mp, CAP, lp, LINK_CAP) }, SL_OK);
+    assert_eq!(
+        unsafe { ffi::sl_group_init(gp, mp, CAP, lp, LINK_CAP) },
+        SL_OK
+    );
     // (slot, tag it was accepted with) of the current members, in order.
     let mut in_group: Vec<(usize, u16)> = Vec::new();
     let mut now = inp.u32();
@@ -135,7 +138,11 @@ fuzz_target!(|data: &[u8]| {
             3 => {
                 let k = usize::from(inp.u8()) % SLOTS;
                 let t = block_type(slots[k].0).unwrap();
-                let ins: Vec<_> = t.fields.iter().filter(|f| matches!(f.dir, Dir::Input | Dir::Param)).collect();
+                let ins: Vec<_> = t
+                    .fields
+                    .iter()
+                    .filter(|f| matches!(f.dir, Dir::Input | Dir::Param))
+                    .collect();
                 if !ins.is_empty() {
                     let f = ins[usize::from(inp.u8()) % ins.len()];
                     let v = inp.u8();
@@ -171,10 +178,22 @@ fuzz_target!(|data: &[u8]| {
                 now = now.wrapping_add(u32::from(inp.u16() % 1024));
                 // SAFETY: as above.
                 let rc = unsafe { ffi::sl_group_cycle(gp, mp, lp, now) };
-                assert!(GROUP_STATUS.contains(&rc) && rc != SL_E_NULL && rc != SL_E_FULL, "cycle: {rc}");
+                assert!(
+                    GROUP_STATUS.contains(&rc) && rc != SL_E_NULL && rc != SL_E_FULL,
+                    "cycle: {rc}"
+                );
                 // SAFETY: read by value.
                 let gs = unsafe { gp.read() };
-                for b in [gs.bComErr, gs.bFbErr, gs.bOutErr, gs.bOtherErr, gs.bComStartup, gs.bFbDeactive, gs.bFbRun, gs.bInRun] {
+                for b in [
+                    gs.bComErr,
+                    gs.bFbErr,
+                    gs.bOutErr,
+                    gs.bOtherErr,
+                    gs.bComStartup,
+                    gs.bFbDeactive,
+                    gs.bFbRun,
+                    gs.bInRun,
+                ] {
                     assert!(b <= 1);
                 }
                 let run = gs.nState == SL_STATE_RUN;
@@ -183,7 +202,8 @@ fuzz_target!(|data: &[u8]| {
                 for &(k, tag) in &in_group {
                     let t = block_type(tag).unwrap();
                     // SAFETY: the member's bytes in the arena.
-                    let bytes = unsafe { std::slice::from_raw_parts(base.add(slots[k].1), t.size) }.to_vec();
+                    let bytes = unsafe { std::slice::from_raw_parts(base.add(slots[k].1), t.size) }
+                        .to_vec();
                     check_block(t, &bytes, SL_OK);
                     if !run {
                         check_outputs_false(t, &bytes, "the group is not in RUN");

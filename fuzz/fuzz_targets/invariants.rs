@@ -48,9 +48,17 @@ pub fn check_block(t: &BlockType, bytes: &[u8], status: i32) -> u8 {
             assert!(v <= 1, "{name}: {} = {v}", f.name);
         }
         if f.name == "bError" {
-            assert_eq!(v == 1, state == SL_STATE_ERROR, "{name}: bError in state {state}");
+            assert_eq!(
+                v == 1,
+                state == SL_STATE_ERROR,
+                "{name}: bError in state {state}"
+            );
         } else if safe_state || refused {
-            assert_eq!(v, 0, "{name}: {} = {v} in state {state}, status {status}", f.name);
+            assert_eq!(
+                v, 0,
+                "{name}: {} = {v} in state {state}, status {status}",
+                f.name
+            );
         }
     }
     state
@@ -58,7 +66,11 @@ pub fn check_block(t: &BlockType, bytes: &[u8], status: i32) -> u8 {
 
 /// Every BOOL output except `bError` is FALSE (a member of a group that is not in RUN).
 pub fn check_outputs_false(t: &BlockType, bytes: &[u8], why: &str) {
-    for f in t.fields.iter().filter(|f| f.dir == Dir::Output && f.kind == Kind::Bool) {
+    for f in t
+        .fields
+        .iter()
+        .filter(|f| f.dir == Dir::Output && f.kind == Kind::Bool)
+    {
         let v = read(bytes, f.offset, f.kind);
         assert!(v <= 1, "{}: {} = {v}", t.info.name, f.name);
         if f.name != "bError" {

@@ -139,8 +139,13 @@ crate::impl_member!([] FB_ESTOP {
 
 impl GuardBlock for FB_ESTOP {
     const TAG: u16 = 0xE570;
-    const OPTIONS: u32 =
-        SL_OPT_EDM1 | SL_OPT_EDM2 | SL_OPT_SAFE_INPUTS_AFTER_DISC | SL_OPT_MANUAL_RESTART;
+    // A set union, not `|` on the constants: the bits are disjoint, so `|` would give
+    // mutation testing equivalent `^` mutants (docs/testing.md).
+    const OPTIONS: u32 = Options::EDM1
+        .union(Options::EDM2)
+        .union(Options::SAFE_INPUTS_AFTER_DISC)
+        .union(Options::MANUAL_RESTART)
+        .bits();
     const INPUTS: u16 = 0xFF;
     const REQUIRED: u16 = 0xFF;
     const PAIRS: u8 = 0b1111;

@@ -6,9 +6,7 @@
 
 use crate::prim::bools::Edge;
 use crate::prim::edm::Edm;
-use crate::prim::header::{
-    param_crc, EDM_PENDING_SHIFT, F_EDM1_PENDING, F_EDM2_PENDING, SL_PRIVATE_HEADER,
-};
+use crate::prim::header::{param_crc, EDM_PENDING_SHIFT, F_EDM_PENDING, SL_PRIVATE_HEADER};
 use crate::types::*;
 
 /// Private state of FB_ESTOP and FB_MON (64 bytes). Never written by the user.
@@ -124,7 +122,7 @@ pub(crate) fn enable<T: GuardBlock>(p: &mut SL_GUARD_PRIVATE, edm: &Edm, now: u3
     }
     let pending = edm.arm([p.awTime[T_EDM1], p.awTime[T_EDM2]]);
     let h = &mut p.stHeader;
-    h.nFlags = (h.nFlags & !(F_EDM1_PENDING | F_EDM2_PENDING)) | (pending << EDM_PENDING_SHIFT);
+    h.nFlags = (h.nFlags & !F_EDM_PENDING) | (pending << EDM_PENDING_SHIFT);
     h.tPhase = now;
     (SL_STATE_RUN, Status::Ok)
 }
@@ -239,7 +237,7 @@ macro_rules! guard_block {
                 fn start(&mut self, _inp: &GuardIn, now: u32) {
                     let h = &mut self.private_mut().stHeader;
                     h.wAux = 0;
-                    h.nFlags &= !(F_EDM1_PENDING | F_EDM2_PENDING);
+                    h.nFlags &= !F_EDM_PENDING;
                     h.tPhase = now;
                     h.nState = if u32::from(h.wOptions) & SL_OPT_FUNCTION_TEST != 0 {
                         SL_STATE_FUNCTEST
@@ -292,8 +290,7 @@ macro_rules! guard_block {
                             [p.awTime[T_EDM1], p.awTime[T_EDM2]],
                             now,
                         );
-                        h.nFlags = (h.nFlags & !(F_EDM1_PENDING | F_EDM2_PENDING))
-                            | (pending << EDM_PENDING_SHIFT);
+                        h.nFlags = (h.nFlags & !F_EDM_PENDING) | (pending << EDM_PENDING_SHIFT);
                     }
 
                     // MON: a discrepancy error while MonDelOut is still on waits for the output delay.

@@ -48,21 +48,21 @@ pub struct SL_PRIVATE_HEADER {
 }
 
 /// Previous level of Restart.
-pub(crate) const F_RESTART_PREV: u8 = 1 << 0;
+pub(crate) const F_RESTART_PREV: u8 = 1;
 /// Previous level of ErrAck.
 pub(crate) const F_ERRACK_PREV: u8 = 1 << 1;
 /// `tLast` holds a time from an earlier call.
 pub(crate) const F_TIME_VALID: u8 = 1 << 2;
-/// EDM1 reset-time check pending (bit value matches `Edm::reset_time_check` bit 0 << 3).
-pub(crate) const F_EDM1_PENDING: u8 = 1 << 3;
-/// EDM2 reset-time check pending.
-pub(crate) const F_EDM2_PENDING: u8 = 1 << 4;
+/// EDM1 / EDM2 reset-time checks pending (bits 3, 4: the pending mask of
+/// `Edm::reset_time_check` shifted by `EDM_PENDING_SHIFT`). One mask for both, so clearing
+/// them is one operation (no `|` of two disjoint bits, docs/testing.md "Mutation testing").
+pub(crate) const F_EDM_PENDING: u8 = 0b11 << EDM_PENDING_SHIFT;
 /// The latched parameters are invalid: the block may only be in STOP or ERROR/RESET.
 pub(crate) const F_CFG_INVALID: u8 = 1 << 5;
 /// In RESET: ErrAck has fallen but the block may not start yet (`Block::may_leave_reset`).
 pub(crate) const F_RESET_HELD: u8 = 1 << 6;
 
-/// Shift from `F_EDM1_PENDING` to bit 0 of an EDM pending mask.
+/// Shift from bit 0 of an EDM pending mask to bit 3 of `nFlags` (`F_EDM_PENDING`).
 pub(crate) const EDM_PENDING_SHIFT: u32 = 3;
 
 static CRC16: Crc<u16> = Crc::<u16>::new(&CRC_16_IBM_3740);
@@ -141,7 +141,7 @@ impl SL_PRIVATE_HEADER {
     pub fn enter_error(&mut self, diag: u16) {
         if self.nState != crate::types::SL_STATE_ERROR {
             self.wAux = 0;
-            self.nFlags &= !(F_EDM1_PENDING | F_EDM2_PENDING);
+            self.nFlags &= !F_EDM_PENDING;
         }
         self.nState = crate::types::SL_STATE_ERROR;
         self.wDiag |= diag;
