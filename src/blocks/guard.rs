@@ -435,7 +435,7 @@ macro_rules! guard_block {
                     let h = &self.private().stHeader;
                     !matches!(h.nState, SL_STATE_DELAYOUT | SL_STATE_ERRORDELAY)
                         && h.wAux & 0xF == 0
-                        && h.nFlags & (F_EDM1_PENDING | F_EDM2_PENDING) == 0
+                        && h.nFlags & F_EDM_PENDING == 0
                 }
 
                 $crate::prim::envelope::steady_hooks!();
