@@ -1092,9 +1092,19 @@
 #define SL_SCALE_NEGATE_ANALOGIN (1 << 8)
 
 /*
+ Block type tag of SF_Antivalent (`SL_MEMBER.nType`, `sl_diag_text`).
+ */
+#define SL_TYPE_SF_ANTIVALENT 516
+
+/*
  Block type tag of SF_EmergencyStop (`SL_MEMBER.nType`, `sl_diag_text`).
  */
 #define SL_TYPE_SF_EMERGENCYSTOP 512
+
+/*
+ Block type tag of SF_Equivalent (`SL_MEMBER.nType`, `sl_diag_text`).
+ */
+#define SL_TYPE_SF_EQUIVALENT 515
 
 /*
  Block type tag of SF_ESPE (`SL_MEMBER.nType`, `sl_diag_text`).
@@ -11762,6 +11772,116 @@ typedef struct SF_PSE {
   struct SL_SF_PRIVATE stPrivate;
 } SF_PSE;
 
+/*
+ SF_Equivalent instance: the PLCopen VAR_INPUT / VAR_OUTPUT names, BOOL = one byte.
+ Size: 56 bytes.
+ */
+typedef struct SF_Equivalent {
+  /*
+   Offset 0. Activate: FALSE = idle (DiagCode 0000, every output FALSE), highest priority.
+   */
+  SL_BOOL Activate;
+  /*
+   Offset 1. S_ChannelA: channel A, TRUE = active.
+   */
+  SL_BOOL S_ChannelA;
+  /*
+   Offset 2. S_ChannelB: channel B, TRUE = active.
+   */
+  SL_BOOL S_ChannelB;
+  /*
+   Offset 3. Library extension, constant: DiagCode profile, 0 = v2.01 (default), 1 = v1.0; latched at activation.
+   */
+  uint8_t nDiagProfile;
+  /*
+   Offset 4. DiscrepancyTime (constant, ms): how long the channels may differ; latched at activation.
+   */
+  uint32_t DiscrepancyTime;
+  /*
+   Offset 8 (output base). Ready: TRUE while activated (DiagCode != 0000).
+   */
+  SL_BOOL Ready;
+  /*
+   Offset 9. S_EquivalentOut: the safety output, TRUE only at DiagCode 8000.
+   */
+  SL_BOOL S_EquivalentOut;
+  /*
+   Offset 10. SafetyDemand: the safety function is demanded (v2.01 code bit 0x0800).
+   */
+  SL_BOOL SafetyDemand;
+  /*
+   Offset 11. Error: DiagCode >= C000.
+   */
+  SL_BOOL Error;
+  /*
+   Offset 12. Reserved.
+   */
+  uint8_t aReserved1[2];
+  /*
+   Offset 14. DiagCode: the state or error, in the profile of nDiagProfile.
+   */
+  uint16_t DiagCode;
+  /*
+   Offset 16. Private state, 40 bytes: never write it.
+   */
+  struct SL_SF_PRIVATE stPrivate;
+} SF_Equivalent;
+
+/*
+ SF_Antivalent instance: the PLCopen VAR_INPUT / VAR_OUTPUT names, BOOL = one byte.
+ Size: 56 bytes.
+ */
+typedef struct SF_Antivalent {
+  /*
+   Offset 0. Activate: FALSE = idle (DiagCode 0000, every output FALSE), highest priority.
+   */
+  SL_BOOL Activate;
+  /*
+   Offset 1. S_ChannelNC: NC contact (break), TRUE = active.
+   */
+  SL_BOOL S_ChannelNC;
+  /*
+   Offset 2. S_ChannelNO: NO contact (make), FALSE = active (PLCopen's initial value is TRUE: connect it).
+   */
+  SL_BOOL S_ChannelNO;
+  /*
+   Offset 3. Library extension, constant: DiagCode profile, 0 = v2.01 (default), 1 = v1.0; latched at activation.
+   */
+  uint8_t nDiagProfile;
+  /*
+   Offset 4. DiscrepancyTime (constant, ms): how long the channels may differ; latched at activation.
+   */
+  uint32_t DiscrepancyTime;
+  /*
+   Offset 8 (output base). Ready: TRUE while activated (DiagCode != 0000).
+   */
+  SL_BOOL Ready;
+  /*
+   Offset 9. S_AntivalentOut: the safety output, TRUE only at DiagCode 8000.
+   */
+  SL_BOOL S_AntivalentOut;
+  /*
+   Offset 10. SafetyDemand: the safety function is demanded (v2.01 code bit 0x0800).
+   */
+  SL_BOOL SafetyDemand;
+  /*
+   Offset 11. Error: DiagCode >= C000.
+   */
+  SL_BOOL Error;
+  /*
+   Offset 12. Reserved.
+   */
+  uint8_t aReserved1[2];
+  /*
+   Offset 14. DiagCode: the state or error, in the profile of nDiagProfile.
+   */
+  uint16_t DiagCode;
+  /*
+   Offset 16. Private state, 40 bytes: never write it.
+   */
+  struct SL_SF_PRIVATE stPrivate;
+} SF_Antivalent;
+
 
 
 #ifdef __cplusplus
@@ -12150,6 +12270,10 @@ int32_t sl_sf_espe_init(struct SF_ESPE *fb);
 int32_t sl_sf_espe_cycle(struct SF_ESPE *fb, uint32_t tNow);
 int32_t sl_sf_pse_init(struct SF_PSE *fb);
 int32_t sl_sf_pse_cycle(struct SF_PSE *fb, uint32_t tNow);
+int32_t sl_sf_equivalent_init(struct SF_Equivalent *fb);
+int32_t sl_sf_equivalent_cycle(struct SF_Equivalent *fb, uint32_t tNow);
+int32_t sl_sf_antivalent_init(struct SF_Antivalent *fb);
+int32_t sl_sf_antivalent_cycle(struct SF_Antivalent *fb, uint32_t tNow);
 
 #ifdef __cplusplus
 }  // extern "C"
@@ -14478,5 +14602,31 @@ SL_STATIC_ASSERT(offsetof(SF_PSE, aReserved1) == 13, "offset of SF_PSE.aReserved
 SL_STATIC_ASSERT(offsetof(SF_PSE, DiagCode) == 14, "offset of SF_PSE.DiagCode");
 SL_STATIC_ASSERT(offsetof(SF_PSE, stPrivate) == 16, "offset of SF_PSE.stPrivate");
 SL_STATIC_ASSERT(sizeof(SF_PSE) == 56, "size of SF_PSE");
+SL_STATIC_ASSERT(offsetof(SF_Equivalent, Activate) == 0, "offset of SF_Equivalent.Activate");
+SL_STATIC_ASSERT(offsetof(SF_Equivalent, S_ChannelA) == 1, "offset of SF_Equivalent.S_ChannelA");
+SL_STATIC_ASSERT(offsetof(SF_Equivalent, S_ChannelB) == 2, "offset of SF_Equivalent.S_ChannelB");
+SL_STATIC_ASSERT(offsetof(SF_Equivalent, nDiagProfile) == 3, "offset of SF_Equivalent.nDiagProfile");
+SL_STATIC_ASSERT(offsetof(SF_Equivalent, DiscrepancyTime) == 4, "offset of SF_Equivalent.DiscrepancyTime");
+SL_STATIC_ASSERT(offsetof(SF_Equivalent, Ready) == 8, "offset of SF_Equivalent.Ready");
+SL_STATIC_ASSERT(offsetof(SF_Equivalent, S_EquivalentOut) == 9, "offset of SF_Equivalent.S_EquivalentOut");
+SL_STATIC_ASSERT(offsetof(SF_Equivalent, SafetyDemand) == 10, "offset of SF_Equivalent.SafetyDemand");
+SL_STATIC_ASSERT(offsetof(SF_Equivalent, Error) == 11, "offset of SF_Equivalent.Error");
+SL_STATIC_ASSERT(offsetof(SF_Equivalent, aReserved1) == 12, "offset of SF_Equivalent.aReserved1");
+SL_STATIC_ASSERT(offsetof(SF_Equivalent, DiagCode) == 14, "offset of SF_Equivalent.DiagCode");
+SL_STATIC_ASSERT(offsetof(SF_Equivalent, stPrivate) == 16, "offset of SF_Equivalent.stPrivate");
+SL_STATIC_ASSERT(sizeof(SF_Equivalent) == 56, "size of SF_Equivalent");
+SL_STATIC_ASSERT(offsetof(SF_Antivalent, Activate) == 0, "offset of SF_Antivalent.Activate");
+SL_STATIC_ASSERT(offsetof(SF_Antivalent, S_ChannelNC) == 1, "offset of SF_Antivalent.S_ChannelNC");
+SL_STATIC_ASSERT(offsetof(SF_Antivalent, S_ChannelNO) == 2, "offset of SF_Antivalent.S_ChannelNO");
+SL_STATIC_ASSERT(offsetof(SF_Antivalent, nDiagProfile) == 3, "offset of SF_Antivalent.nDiagProfile");
+SL_STATIC_ASSERT(offsetof(SF_Antivalent, DiscrepancyTime) == 4, "offset of SF_Antivalent.DiscrepancyTime");
+SL_STATIC_ASSERT(offsetof(SF_Antivalent, Ready) == 8, "offset of SF_Antivalent.Ready");
+SL_STATIC_ASSERT(offsetof(SF_Antivalent, S_AntivalentOut) == 9, "offset of SF_Antivalent.S_AntivalentOut");
+SL_STATIC_ASSERT(offsetof(SF_Antivalent, SafetyDemand) == 10, "offset of SF_Antivalent.SafetyDemand");
+SL_STATIC_ASSERT(offsetof(SF_Antivalent, Error) == 11, "offset of SF_Antivalent.Error");
+SL_STATIC_ASSERT(offsetof(SF_Antivalent, aReserved1) == 12, "offset of SF_Antivalent.aReserved1");
+SL_STATIC_ASSERT(offsetof(SF_Antivalent, DiagCode) == 14, "offset of SF_Antivalent.DiagCode");
+SL_STATIC_ASSERT(offsetof(SF_Antivalent, stPrivate) == 16, "offset of SF_Antivalent.stPrivate");
+SL_STATIC_ASSERT(sizeof(SF_Antivalent) == 56, "size of SF_Antivalent");
 
 #endif  /* SAFELOGIC_H */

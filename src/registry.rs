@@ -440,6 +440,8 @@ macro_rules! for_each_sf_block {
             $crate::blocks::sf_emergencystop::SF_EmergencyStop => sl_sf_emergencystop_init, sl_sf_emergencystop_cycle;
             $crate::blocks::sf_espe::SF_ESPE => sl_sf_espe_init, sl_sf_espe_cycle;
             $crate::blocks::sf_pse::SF_PSE => sl_sf_pse_init, sl_sf_pse_cycle;
+            $crate::blocks::sf_equivalent::SF_Equivalent => sl_sf_equivalent_init, sl_sf_equivalent_cycle;
+            $crate::blocks::sf_antivalent::SF_Antivalent => sl_sf_antivalent_init, sl_sf_antivalent_cycle;
             // registry:end
         }
     };

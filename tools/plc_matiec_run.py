@@ -198,10 +198,20 @@ def sf_script(name: str) -> dict:
     S_AutoReset (8000 again), then the walk over every BOOL input."""
     ins = BLOCK_INPUTS[name]
     safety = ins[1]
-    steps = {0: {"Activate": 0, safety: 0}, 2: {"Activate": 1}, 4: {safety: 1}, 6: {"Reset": 1},
-             8: {"Reset": 0}, 10: {safety: 0, "Reset": 1}, 12: {safety: 1}, 14: {"Reset": 0},
-             16: {"Activate": 0}, 18: {"Activate": 1, "S_StartReset": 1, "S_AutoReset": 1},
-             20: {safety: 0}, 22: {safety: 1}}
+    if "Reset" in ins:
+        steps = {0: {"Activate": 0, safety: 0}, 2: {"Activate": 1}, 4: {safety: 1}, 6: {"Reset": 1},
+                 8: {"Reset": 0}, 10: {safety: 0, "Reset": 1}, 12: {safety: 1}, 14: {"Reset": 0},
+                 16: {"Activate": 0}, 18: {"Activate": 1, "S_StartReset": 1, "S_AutoReset": 1},
+                 20: {safety: 0}, 22: {safety: 1}}
+    else:
+        # Two channels (SF_Equivalent, SF_Antivalent: a NO channel is active FALSE), the
+        # DiscrepancyTime left at its default 0: both active (8000), one inactive (8806,
+        # then the discrepancy error C030), both inactive (8801), Activate FALSE, again.
+        a, b = ins[1], ins[2]
+        on_b = 0 if b.endswith("NO") else 1
+        steps = {0: {"Activate": 0, a: 0, b: 1 - on_b}, 2: {"Activate": 1}, 4: {a: 1, b: on_b},
+                 8: {a: 0}, 12: {b: 1 - on_b}, 14: {a: 1, b: on_b}, 16: {"Activate": 0},
+                 18: {"Activate": 1}, 22: {a: 0, b: 1 - on_b}}
     cur = {f: 0 for f in ins}
     for c in sorted(steps):
         cur.update(steps[c])

@@ -30,7 +30,8 @@ Rules (documented in plc_bindings/README.md and docs/plc-integration.md):
     Fields named aReserved* and nested structs (private state) stay inside the DUT only; an
     array of structs (a value table such as LOADSENSING's aRow) is an input like any array.
   * Types: SL_BOOL->BOOL, uint8/16/32/64->BYTE/WORD/DWORD/LWORD, int8/16/32/64->
-    SINT/INT/DINT/LINT; a uint32_t whose name starts with t / at (a millisecond time) is
+    SINT/INT/DINT/LINT; a uint32_t whose name starts with t / at, or a PLCopen name ending
+    in Time (DiscrepancyTime), is a millisecond time: it is
     UDINT in every DUT. In the TwinCAT/CODESYS function block such a non-array time is TIME
     (32-bit ms there) and converted with TIME_TO_UDINT / UDINT_TO_TIME; in the IEC flavour
     it stays UDINT (matiec's TIME is a timespec, not ms).
@@ -401,8 +402,9 @@ def is_table(f: CField) -> bool:
 
 
 def is_time_ms(f: CField) -> bool:
+    """tDelay, atTimes (TwinSAFE), DiscrepancyTime, MonitoringTime (PLCopen's TIME inputs)."""
     return (not f.is_struct and f.ctype == "uint32_t"
-            and re.match(r"a?t[A-Z0-9]", f.name) is not None)
+            and (re.match(r"a?t[A-Z0-9]", f.name) is not None or re.fullmatch(r"[A-Z]\w*Time", f.name) is not None))
 
 
 def is_number(f: CField) -> bool:

@@ -5,7 +5,8 @@
 //! (§4.27, §4.28) in `window`. OPMODE (§4.3), TWOHAND (§4.7), MUTING (§4.8) and EDM (§4.9)
 //! have state machines of their own. The PLCopen Safety blocks (`sf_*`, struct names
 //! `SF_<Name>`) run in the PLCopen envelope (`prim::sf`); SF_EmergencyStop, SF_ESPE and
-//! SF_PSE share the restart-interlock machine of `sf_restart`.
+//! SF_PSE share the restart-interlock machine of `sf_restart`, SF_Equivalent and
+//! SF_Antivalent the two-channel machine of `sf_pair`.
 
 pub mod advposmon;
 pub mod analog;
@@ -31,8 +32,11 @@ pub mod or;
 pub mod rs;
 pub mod sbt;
 pub mod scale;
+pub mod sf_antivalent;
 pub mod sf_emergencystop;
+pub mod sf_equivalent;
 pub mod sf_espe;
+pub mod sf_pair;
 pub mod sf_pse;
 pub mod sf_restart;
 pub mod sli;

@@ -1258,6 +1258,38 @@ void CDECL CDECL_EXT cds_sl_sf_pse_cycle(cds_sl_sf_pse_cycle_struct *p)
     p->cds_sl_sf_pse_cycle = sl_sf_pse_cycle(p->pFb, p->tNow);
 }
 
+void CDECL CDECL_EXT cds_sl_sf_equivalent_init(cds_sl_sf_equivalent_init_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_sf_equivalent_init = sl_sf_equivalent_init(p->pFb);
+}
+
+void CDECL CDECL_EXT cds_sl_sf_equivalent_cycle(cds_sl_sf_equivalent_cycle_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_sf_equivalent_cycle = sl_sf_equivalent_cycle(p->pFb, p->tNow);
+}
+
+void CDECL CDECL_EXT cds_sl_sf_antivalent_init(cds_sl_sf_antivalent_init_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_sf_antivalent_init = sl_sf_antivalent_init(p->pFb);
+}
+
+void CDECL CDECL_EXT cds_sl_sf_antivalent_cycle(cds_sl_sf_antivalent_cycle_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_sf_antivalent_cycle = sl_sf_antivalent_cycle(p->pFb, p->tNow);
+}
+
 void CDECL CDECL_EXT cds_sl_time_now_ms(cds_sl_time_now_ms_struct *p)
 {
     if (p == 0) {
