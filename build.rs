@@ -57,16 +57,24 @@ struct Row {
     cycle: String,
 }
 
-/// Reads the rows between `// registry:begin` and `// registry:end` of src/registry.rs:
+/// Reads the rows between each `// registry:begin` and `// registry:end` of src/registry.rs:
 /// `path::FB_X => sl_x_init, sl_x_cycle;`.
 fn registry_rows(dir: &std::path::Path) -> Vec<Row> {
     let text = fs::read_to_string(dir.join("src/registry.rs")).expect("src/registry.rs");
-    let body = text
-        .split_once("// registry:begin")
-        .and_then(|(_, rest)| rest.split_once("// registry:end"))
-        .expect("registry markers")
-        .0;
-    body.lines()
+    // One section per family (TwinSAFE, PLCopen), in registry order.
+    let sections: Vec<&str> = text
+        .split("// registry:begin")
+        .skip(1)
+        .map(|rest| {
+            rest.split_once("// registry:end")
+                .expect("registry markers")
+                .0
+        })
+        .collect();
+    assert!(!sections.is_empty(), "registry markers");
+    sections
+        .iter()
+        .flat_map(|body| body.lines())
         .map(str::trim)
         .filter(|l| !l.is_empty() && !l.starts_with("//"))
         .map(|l| {
@@ -286,7 +294,7 @@ fn with_layout_checks(text: &str) -> (String, String) {
                 *offset % *align == 0,
                 "{name}: size {offset} is not a multiple of its alignment"
             );
-            if name.starts_with("FB_") {
+            if name.starts_with("FB_") || name.starts_with("SF_") {
                 assert!(
                     *offset % 8 == 0,
                     "{name}: size {offset} is not a multiple of 8"

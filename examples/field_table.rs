@@ -29,8 +29,9 @@ fn main() {
             })
             .collect();
         out += &format!(
-            "  {{\"name\": \"{}\", \"struct\": \"FB_{}\", \"tag\": {}, \"size\": {}, \"fields\": [\n    {}\n  ]}}{}\n",
+            "  {{\"name\": \"{}\", \"struct\": \"{}{}\", \"tag\": {}, \"size\": {}, \"fields\": [\n    {}\n  ]}}{}\n",
             b.info.name,
+            b.struct_prefix(),
             b.info.name,
             b.info.tag,
             b.size,

@@ -1092,6 +1092,31 @@
 #define SL_SCALE_NEGATE_ANALOGIN (1 << 8)
 
 /*
+ Block type tag of SF_Antivalent (`SL_MEMBER.nType`, `sl_diag_text`).
+ */
+#define SL_TYPE_SF_ANTIVALENT 516
+
+/*
+ Block type tag of SF_EmergencyStop (`SL_MEMBER.nType`, `sl_diag_text`).
+ */
+#define SL_TYPE_SF_EMERGENCYSTOP 512
+
+/*
+ Block type tag of SF_Equivalent (`SL_MEMBER.nType`, `sl_diag_text`).
+ */
+#define SL_TYPE_SF_EQUIVALENT 515
+
+/*
+ Block type tag of SF_ESPE (`SL_MEMBER.nType`, `sl_diag_text`).
+ */
+#define SL_TYPE_SF_ESPE 513
+
+/*
+ Block type tag of SF_PSE (`SL_MEMBER.nType`, `sl_diag_text`).
+ */
+#define SL_TYPE_SF_PSE 514
+
+/*
  Type tag of FB_SLI_INT (ABI-2 §10.6: sequential in the order of §10.3).
  */
 #define SL_TYPE_SLI_INT 60
@@ -1695,6 +1720,54 @@
  No member index.
  */
 #define SL_NO_MEMBER 65535
+
+/*
+ `nDiagProfile` 0: the PLCopen v2.01 DiagCodes (default).
+ */
+#define SL_SF_PROFILE_V201 0
+
+/*
+ `nDiagProfile` 1: the PLCopen v1.0 DiagCodes (blocks that exist in v1.0 only).
+ */
+#define SL_SF_PROFILE_V10 1
+
+/*
+ Library DiagCode: the private state was corrupt (SL_E_CORRUPT). Left by Activate FALSE.
+ */
+#define SL_SF_DIAG_CORRUPT 50175
+
+/*
+ Library DiagCode: the clock went backwards (SL_E_CLOCK). Left by Activate FALSE.
+ */
+#define SL_SF_DIAG_CLOCK 50174
+
+/*
+ Library DiagCode: a constant input (`nDiagProfile`, a time) changed while the block was
+ activated (SL_E_PARAM_CHANGED). Left by Activate FALSE.
+ */
+#define SL_SF_DIAG_CONST_CHANGED 50173
+
+/*
+ Library DiagCode: a constant input is invalid at activation (SL_E_CONFIG). Left by
+ Activate FALSE.
+ */
+#define SL_SF_DIAG_CONFIG 50172
+
+/*
+ Largest monitored time of an `SF_` block (ms; 2^31 − 1, the half circle of the
+ wrapping clock).
+ */
+#define SL_SF_TIME_MAX 2147483647
+
+/*
+ The DiagCode meaning "the block is activated and its safety output is enabled".
+ */
+#define SF_ENABLED 32768
+
+/*
+ First type tag of the PLCopen family.
+ */
+#define SF_TAG_BASE 512
 
 /*
  Success.
@@ -11486,6 +11559,343 @@ typedef struct FB_CONNECTION_SHUTDOWN {
   struct SL_CONNSHUT_PRIVATE stPrivate;
 } FB_CONNECTION_SHUTDOWN;
 
+/*
+ Private state of every `SF_` block (40 bytes). Never written by the user. The header's
+ `wDiag` holds the v2.01 DiagCode (the state), `nState` the [`SfPhase`], `nActive` the
+ latched profile, `tPhase` the entry time of the current state (the monitored times run
+ from there), `nFlags` the R_TRIG memories.
+ */
+typedef struct SL_SF_PRIVATE {
+  /*
+   Common head.
+   */
+  struct SL_PRIVATE_HEADER stHeader;
+  /*
+   Latched constant times (ms), covered by the header's parameter CRC.
+   */
+  uint32_t adwTime[2];
+  /*
+   Written by the owning group before each call: non-zero while the group does not run
+   the block (halted: DiagCode 0000, as with Activate FALSE).
+   */
+  uint8_t nGroupHalt;
+  /*
+   Reserved.
+   */
+  uint8_t aReserved[3];
+} SL_SF_PRIVATE;
+
+/*
+ SF_EmergencyStop instance: the PLCopen VAR_INPUT / VAR_OUTPUT names, BOOL = one byte.
+ Size: 56 bytes.
+ */
+typedef struct SF_EmergencyStop {
+  /*
+   Offset 0. Activate: FALSE = idle (DiagCode 0000, every output FALSE), highest priority.
+   */
+  SL_BOOL Activate;
+  /*
+   Offset 1. S_EStopIn: emergency stop button, FALSE = pressed (safety demand).
+   */
+  SL_BOOL S_EStopIn;
+  /*
+   Offset 2. S_StartReset: TRUE = automatic reset at activation (start-up).
+   */
+  SL_BOOL S_StartReset;
+  /*
+   Offset 3. S_AutoReset: TRUE = automatic reset when the safety demand ends.
+   */
+  SL_BOOL S_AutoReset;
+  /*
+   Offset 4. Reset: a rising edge resets; held TRUE into a wait-for-reset state it is a static-reset error.
+   */
+  SL_BOOL Reset;
+  /*
+   Offset 5. Reserved, keep 0.
+   */
+  uint8_t aReserved0[2];
+  /*
+   Offset 7. Library extension, constant: DiagCode profile, 0 = v2.01 (default), 1 = v1.0; latched at activation.
+   */
+  uint8_t nDiagProfile;
+  /*
+   Offset 8 (output base). Ready: TRUE while activated (DiagCode != 0000).
+   */
+  SL_BOOL Ready;
+  /*
+   Offset 9. S_EStopOut: the safety output, TRUE only at DiagCode 8000.
+   */
+  SL_BOOL S_EStopOut;
+  /*
+   Offset 10. SafetyDemand: the safety function is demanded (v2.01 code bit 0x0800).
+   */
+  SL_BOOL SafetyDemand;
+  /*
+   Offset 11. ResetRequest: a reset is awaited (v2.01 code bit 0x0400) and Reset is FALSE.
+   */
+  SL_BOOL ResetRequest;
+  /*
+   Offset 12. Error: DiagCode >= C000.
+   */
+  SL_BOOL Error;
+  /*
+   Offset 13. Reserved.
+   */
+  uint8_t aReserved1[1];
+  /*
+   Offset 14. DiagCode: the state or error, in the profile of nDiagProfile.
+   */
+  uint16_t DiagCode;
+  /*
+   Offset 16. Private state, 40 bytes: never write it.
+   */
+  struct SL_SF_PRIVATE stPrivate;
+} SF_EmergencyStop;
+
+/*
+ SF_ESPE instance: the PLCopen VAR_INPUT / VAR_OUTPUT names, BOOL = one byte.
+ Size: 56 bytes.
+ */
+typedef struct SF_ESPE {
+  /*
+   Offset 0. Activate: FALSE = idle (DiagCode 0000, every output FALSE), highest priority.
+   */
+  SL_BOOL Activate;
+  /*
+   Offset 1. S_ESPE_In: ESPE output (OSSD), FALSE = protective field interrupted (safety demand).
+   */
+  SL_BOOL S_ESPE_In;
+  /*
+   Offset 2. S_StartReset: TRUE = automatic reset at activation (start-up).
+   */
+  SL_BOOL S_StartReset;
+  /*
+   Offset 3. S_AutoReset: TRUE = automatic reset when the safety demand ends.
+   */
+  SL_BOOL S_AutoReset;
+  /*
+   Offset 4. Reset: a rising edge resets; held TRUE into a wait-for-reset state it is a static-reset error.
+   */
+  SL_BOOL Reset;
+  /*
+   Offset 5. Reserved, keep 0.
+   */
+  uint8_t aReserved0[2];
+  /*
+   Offset 7. Library extension, constant: DiagCode profile, 0 = v2.01 (default), 1 = v1.0; latched at activation.
+   */
+  uint8_t nDiagProfile;
+  /*
+   Offset 8 (output base). Ready: TRUE while activated (DiagCode != 0000).
+   */
+  SL_BOOL Ready;
+  /*
+   Offset 9. S_ESPE_Out: the safety output, TRUE only at DiagCode 8000.
+   */
+  SL_BOOL S_ESPE_Out;
+  /*
+   Offset 10. SafetyDemand: the safety function is demanded (v2.01 code bit 0x0800).
+   */
+  SL_BOOL SafetyDemand;
+  /*
+   Offset 11. ResetRequest: a reset is awaited (v2.01 code bit 0x0400) and Reset is FALSE.
+   */
+  SL_BOOL ResetRequest;
+  /*
+   Offset 12. Error: DiagCode >= C000.
+   */
+  SL_BOOL Error;
+  /*
+   Offset 13. Reserved.
+   */
+  uint8_t aReserved1[1];
+  /*
+   Offset 14. DiagCode: the state or error, in the profile of nDiagProfile.
+   */
+  uint16_t DiagCode;
+  /*
+   Offset 16. Private state, 40 bytes: never write it.
+   */
+  struct SL_SF_PRIVATE stPrivate;
+} SF_ESPE;
+
+/*
+ SF_PSE instance: the PLCopen VAR_INPUT / VAR_OUTPUT names, BOOL = one byte.
+ Size: 56 bytes.
+ */
+typedef struct SF_PSE {
+  /*
+   Offset 0. Activate: FALSE = idle (DiagCode 0000, every output FALSE), highest priority.
+   */
+  SL_BOOL Activate;
+  /*
+   Offset 1. S_PSE_In: pressure-sensitive equipment, FALSE = actuated (safety demand).
+   */
+  SL_BOOL S_PSE_In;
+  /*
+   Offset 2. S_StartReset: TRUE = automatic reset at activation (start-up).
+   */
+  SL_BOOL S_StartReset;
+  /*
+   Offset 3. S_AutoReset: TRUE = automatic reset when the safety demand ends.
+   */
+  SL_BOOL S_AutoReset;
+  /*
+   Offset 4. Reset: a rising edge resets; held TRUE into a wait-for-reset state it is a static-reset error.
+   */
+  SL_BOOL Reset;
+  /*
+   Offset 5. Reserved, keep 0.
+   */
+  uint8_t aReserved0[2];
+  /*
+   Offset 7. Library extension, constant: DiagCode profile, 0 = v2.01 (default), 1 = v1.0; latched at activation.
+   */
+  uint8_t nDiagProfile;
+  /*
+   Offset 8 (output base). Ready: TRUE while activated (DiagCode != 0000).
+   */
+  SL_BOOL Ready;
+  /*
+   Offset 9. S_PSE_Out: the safety output, TRUE only at DiagCode 8000.
+   */
+  SL_BOOL S_PSE_Out;
+  /*
+   Offset 10. SafetyDemand: the safety function is demanded (v2.01 code bit 0x0800).
+   */
+  SL_BOOL SafetyDemand;
+  /*
+   Offset 11. ResetRequest: a reset is awaited (v2.01 code bit 0x0400) and Reset is FALSE.
+   */
+  SL_BOOL ResetRequest;
+  /*
+   Offset 12. Error: DiagCode >= C000.
+   */
+  SL_BOOL Error;
+  /*
+   Offset 13. Reserved.
+   */
+  uint8_t aReserved1[1];
+  /*
+   Offset 14. DiagCode: the state or error, in the profile of nDiagProfile.
+   */
+  uint16_t DiagCode;
+  /*
+   Offset 16. Private state, 40 bytes: never write it.
+   */
+  struct SL_SF_PRIVATE stPrivate;
+} SF_PSE;
+
+/*
+ SF_Equivalent instance: the PLCopen VAR_INPUT / VAR_OUTPUT names, BOOL = one byte.
+ Size: 56 bytes.
+ */
+typedef struct SF_Equivalent {
+  /*
+   Offset 0. Activate: FALSE = idle (DiagCode 0000, every output FALSE), highest priority.
+   */
+  SL_BOOL Activate;
+  /*
+   Offset 1. S_ChannelA: channel A, TRUE = active.
+   */
+  SL_BOOL S_ChannelA;
+  /*
+   Offset 2. S_ChannelB: channel B, TRUE = active.
+   */
+  SL_BOOL S_ChannelB;
+  /*
+   Offset 3. Library extension, constant: DiagCode profile, 0 = v2.01 (default), 1 = v1.0; latched at activation.
+   */
+  uint8_t nDiagProfile;
+  /*
+   Offset 4. DiscrepancyTime (constant, ms): how long the channels may differ; latched at activation.
+   */
+  uint32_t DiscrepancyTime;
+  /*
+   Offset 8 (output base). Ready: TRUE while activated (DiagCode != 0000).
+   */
+  SL_BOOL Ready;
+  /*
+   Offset 9. S_EquivalentOut: the safety output, TRUE only at DiagCode 8000.
+   */
+  SL_BOOL S_EquivalentOut;
+  /*
+   Offset 10. SafetyDemand: the safety function is demanded (v2.01 code bit 0x0800).
+   */
+  SL_BOOL SafetyDemand;
+  /*
+   Offset 11. Error: DiagCode >= C000.
+   */
+  SL_BOOL Error;
+  /*
+   Offset 12. Reserved.
+   */
+  uint8_t aReserved1[2];
+  /*
+   Offset 14. DiagCode: the state or error, in the profile of nDiagProfile.
+   */
+  uint16_t DiagCode;
+  /*
+   Offset 16. Private state, 40 bytes: never write it.
+   */
+  struct SL_SF_PRIVATE stPrivate;
+} SF_Equivalent;
+
+/*
+ SF_Antivalent instance: the PLCopen VAR_INPUT / VAR_OUTPUT names, BOOL = one byte.
+ Size: 56 bytes.
+ */
+typedef struct SF_Antivalent {
+  /*
+   Offset 0. Activate: FALSE = idle (DiagCode 0000, every output FALSE), highest priority.
+   */
+  SL_BOOL Activate;
+  /*
+   Offset 1. S_ChannelNC: NC contact (break), TRUE = active.
+   */
+  SL_BOOL S_ChannelNC;
+  /*
+   Offset 2. S_ChannelNO: NO contact (make), FALSE = active (PLCopen's initial value is TRUE: connect it).
+   */
+  SL_BOOL S_ChannelNO;
+  /*
+   Offset 3. Library extension, constant: DiagCode profile, 0 = v2.01 (default), 1 = v1.0; latched at activation.
+   */
+  uint8_t nDiagProfile;
+  /*
+   Offset 4. DiscrepancyTime (constant, ms): how long the channels may differ; latched at activation.
+   */
+  uint32_t DiscrepancyTime;
+  /*
+   Offset 8 (output base). Ready: TRUE while activated (DiagCode != 0000).
+   */
+  SL_BOOL Ready;
+  /*
+   Offset 9. S_AntivalentOut: the safety output, TRUE only at DiagCode 8000.
+   */
+  SL_BOOL S_AntivalentOut;
+  /*
+   Offset 10. SafetyDemand: the safety function is demanded (v2.01 code bit 0x0800).
+   */
+  SL_BOOL SafetyDemand;
+  /*
+   Offset 11. Error: DiagCode >= C000.
+   */
+  SL_BOOL Error;
+  /*
+   Offset 12. Reserved.
+   */
+  uint8_t aReserved1[2];
+  /*
+   Offset 14. DiagCode: the state or error, in the profile of nDiagProfile.
+   */
+  uint16_t DiagCode;
+  /*
+   Offset 16. Private state, 40 bytes: never write it.
+   */
+  struct SL_SF_PRIVATE stPrivate;
+} SF_Antivalent;
+
 
 
 #ifdef __cplusplus
@@ -11868,6 +12278,16 @@ int32_t sl_advposmon_init(struct FB_ADVPOSMON *fb);
 int32_t sl_advposmon_cycle(struct FB_ADVPOSMON *fb, uint32_t tNow);
 int32_t sl_connection_shutdown_init(struct FB_CONNECTION_SHUTDOWN *fb);
 int32_t sl_connection_shutdown_cycle(struct FB_CONNECTION_SHUTDOWN *fb, uint32_t tNow);
+int32_t sl_sf_emergencystop_init(struct SF_EmergencyStop *fb);
+int32_t sl_sf_emergencystop_cycle(struct SF_EmergencyStop *fb, uint32_t tNow);
+int32_t sl_sf_espe_init(struct SF_ESPE *fb);
+int32_t sl_sf_espe_cycle(struct SF_ESPE *fb, uint32_t tNow);
+int32_t sl_sf_pse_init(struct SF_PSE *fb);
+int32_t sl_sf_pse_cycle(struct SF_PSE *fb, uint32_t tNow);
+int32_t sl_sf_equivalent_init(struct SF_Equivalent *fb);
+int32_t sl_sf_equivalent_cycle(struct SF_Equivalent *fb, uint32_t tNow);
+int32_t sl_sf_antivalent_init(struct SF_Antivalent *fb);
+int32_t sl_sf_antivalent_cycle(struct SF_Antivalent *fb, uint32_t tNow);
 
 #ifdef __cplusplus
 }  // extern "C"
@@ -14143,5 +14563,84 @@ SL_STATIC_ASSERT(offsetof(FB_CONNECTION_SHUTDOWN, nDiag) == 42, "offset of FB_CO
 SL_STATIC_ASSERT(offsetof(FB_CONNECTION_SHUTDOWN, aReserved6) == 44, "offset of FB_CONNECTION_SHUTDOWN.aReserved6");
 SL_STATIC_ASSERT(offsetof(FB_CONNECTION_SHUTDOWN, stPrivate) == 48, "offset of FB_CONNECTION_SHUTDOWN.stPrivate");
 SL_STATIC_ASSERT(sizeof(FB_CONNECTION_SHUTDOWN) == 88, "size of FB_CONNECTION_SHUTDOWN");
+SL_STATIC_ASSERT(offsetof(SL_SF_PRIVATE, stHeader) == 0, "offset of SL_SF_PRIVATE.stHeader");
+SL_STATIC_ASSERT(offsetof(SL_SF_PRIVATE, adwTime) == 28, "offset of SL_SF_PRIVATE.adwTime");
+SL_STATIC_ASSERT(offsetof(SL_SF_PRIVATE, nGroupHalt) == 36, "offset of SL_SF_PRIVATE.nGroupHalt");
+SL_STATIC_ASSERT(offsetof(SL_SF_PRIVATE, aReserved) == 37, "offset of SL_SF_PRIVATE.aReserved");
+SL_STATIC_ASSERT(sizeof(SL_SF_PRIVATE) == 40, "size of SL_SF_PRIVATE");
+SL_STATIC_ASSERT(offsetof(SF_EmergencyStop, Activate) == 0, "offset of SF_EmergencyStop.Activate");
+SL_STATIC_ASSERT(offsetof(SF_EmergencyStop, S_EStopIn) == 1, "offset of SF_EmergencyStop.S_EStopIn");
+SL_STATIC_ASSERT(offsetof(SF_EmergencyStop, S_StartReset) == 2, "offset of SF_EmergencyStop.S_StartReset");
+SL_STATIC_ASSERT(offsetof(SF_EmergencyStop, S_AutoReset) == 3, "offset of SF_EmergencyStop.S_AutoReset");
+SL_STATIC_ASSERT(offsetof(SF_EmergencyStop, Reset) == 4, "offset of SF_EmergencyStop.Reset");
+SL_STATIC_ASSERT(offsetof(SF_EmergencyStop, aReserved0) == 5, "offset of SF_EmergencyStop.aReserved0");
+SL_STATIC_ASSERT(offsetof(SF_EmergencyStop, nDiagProfile) == 7, "offset of SF_EmergencyStop.nDiagProfile");
+SL_STATIC_ASSERT(offsetof(SF_EmergencyStop, Ready) == 8, "offset of SF_EmergencyStop.Ready");
+SL_STATIC_ASSERT(offsetof(SF_EmergencyStop, S_EStopOut) == 9, "offset of SF_EmergencyStop.S_EStopOut");
+SL_STATIC_ASSERT(offsetof(SF_EmergencyStop, SafetyDemand) == 10, "offset of SF_EmergencyStop.SafetyDemand");
+SL_STATIC_ASSERT(offsetof(SF_EmergencyStop, ResetRequest) == 11, "offset of SF_EmergencyStop.ResetRequest");
+SL_STATIC_ASSERT(offsetof(SF_EmergencyStop, Error) == 12, "offset of SF_EmergencyStop.Error");
+SL_STATIC_ASSERT(offsetof(SF_EmergencyStop, aReserved1) == 13, "offset of SF_EmergencyStop.aReserved1");
+SL_STATIC_ASSERT(offsetof(SF_EmergencyStop, DiagCode) == 14, "offset of SF_EmergencyStop.DiagCode");
+SL_STATIC_ASSERT(offsetof(SF_EmergencyStop, stPrivate) == 16, "offset of SF_EmergencyStop.stPrivate");
+SL_STATIC_ASSERT(sizeof(SF_EmergencyStop) == 56, "size of SF_EmergencyStop");
+SL_STATIC_ASSERT(offsetof(SF_ESPE, Activate) == 0, "offset of SF_ESPE.Activate");
+SL_STATIC_ASSERT(offsetof(SF_ESPE, S_ESPE_In) == 1, "offset of SF_ESPE.S_ESPE_In");
+SL_STATIC_ASSERT(offsetof(SF_ESPE, S_StartReset) == 2, "offset of SF_ESPE.S_StartReset");
+SL_STATIC_ASSERT(offsetof(SF_ESPE, S_AutoReset) == 3, "offset of SF_ESPE.S_AutoReset");
+SL_STATIC_ASSERT(offsetof(SF_ESPE, Reset) == 4, "offset of SF_ESPE.Reset");
+SL_STATIC_ASSERT(offsetof(SF_ESPE, aReserved0) == 5, "offset of SF_ESPE.aReserved0");
+SL_STATIC_ASSERT(offsetof(SF_ESPE, nDiagProfile) == 7, "offset of SF_ESPE.nDiagProfile");
+SL_STATIC_ASSERT(offsetof(SF_ESPE, Ready) == 8, "offset of SF_ESPE.Ready");
+SL_STATIC_ASSERT(offsetof(SF_ESPE, S_ESPE_Out) == 9, "offset of SF_ESPE.S_ESPE_Out");
+SL_STATIC_ASSERT(offsetof(SF_ESPE, SafetyDemand) == 10, "offset of SF_ESPE.SafetyDemand");
+SL_STATIC_ASSERT(offsetof(SF_ESPE, ResetRequest) == 11, "offset of SF_ESPE.ResetRequest");
+SL_STATIC_ASSERT(offsetof(SF_ESPE, Error) == 12, "offset of SF_ESPE.Error");
+SL_STATIC_ASSERT(offsetof(SF_ESPE, aReserved1) == 13, "offset of SF_ESPE.aReserved1");
+SL_STATIC_ASSERT(offsetof(SF_ESPE, DiagCode) == 14, "offset of SF_ESPE.DiagCode");
+SL_STATIC_ASSERT(offsetof(SF_ESPE, stPrivate) == 16, "offset of SF_ESPE.stPrivate");
+SL_STATIC_ASSERT(sizeof(SF_ESPE) == 56, "size of SF_ESPE");
+SL_STATIC_ASSERT(offsetof(SF_PSE, Activate) == 0, "offset of SF_PSE.Activate");
+SL_STATIC_ASSERT(offsetof(SF_PSE, S_PSE_In) == 1, "offset of SF_PSE.S_PSE_In");
+SL_STATIC_ASSERT(offsetof(SF_PSE, S_StartReset) == 2, "offset of SF_PSE.S_StartReset");
+SL_STATIC_ASSERT(offsetof(SF_PSE, S_AutoReset) == 3, "offset of SF_PSE.S_AutoReset");
+SL_STATIC_ASSERT(offsetof(SF_PSE, Reset) == 4, "offset of SF_PSE.Reset");
+SL_STATIC_ASSERT(offsetof(SF_PSE, aReserved0) == 5, "offset of SF_PSE.aReserved0");
+SL_STATIC_ASSERT(offsetof(SF_PSE, nDiagProfile) == 7, "offset of SF_PSE.nDiagProfile");
+SL_STATIC_ASSERT(offsetof(SF_PSE, Ready) == 8, "offset of SF_PSE.Ready");
+SL_STATIC_ASSERT(offsetof(SF_PSE, S_PSE_Out) == 9, "offset of SF_PSE.S_PSE_Out");
+SL_STATIC_ASSERT(offsetof(SF_PSE, SafetyDemand) == 10, "offset of SF_PSE.SafetyDemand");
+SL_STATIC_ASSERT(offsetof(SF_PSE, ResetRequest) == 11, "offset of SF_PSE.ResetRequest");
+SL_STATIC_ASSERT(offsetof(SF_PSE, Error) == 12, "offset of SF_PSE.Error");
+SL_STATIC_ASSERT(offsetof(SF_PSE, aReserved1) == 13, "offset of SF_PSE.aReserved1");
+SL_STATIC_ASSERT(offsetof(SF_PSE, DiagCode) == 14, "offset of SF_PSE.DiagCode");
+SL_STATIC_ASSERT(offsetof(SF_PSE, stPrivate) == 16, "offset of SF_PSE.stPrivate");
+SL_STATIC_ASSERT(sizeof(SF_PSE) == 56, "size of SF_PSE");
+SL_STATIC_ASSERT(offsetof(SF_Equivalent, Activate) == 0, "offset of SF_Equivalent.Activate");
+SL_STATIC_ASSERT(offsetof(SF_Equivalent, S_ChannelA) == 1, "offset of SF_Equivalent.S_ChannelA");
+SL_STATIC_ASSERT(offsetof(SF_Equivalent, S_ChannelB) == 2, "offset of SF_Equivalent.S_ChannelB");
+SL_STATIC_ASSERT(offsetof(SF_Equivalent, nDiagProfile) == 3, "offset of SF_Equivalent.nDiagProfile");
+SL_STATIC_ASSERT(offsetof(SF_Equivalent, DiscrepancyTime) == 4, "offset of SF_Equivalent.DiscrepancyTime");
+SL_STATIC_ASSERT(offsetof(SF_Equivalent, Ready) == 8, "offset of SF_Equivalent.Ready");
+SL_STATIC_ASSERT(offsetof(SF_Equivalent, S_EquivalentOut) == 9, "offset of SF_Equivalent.S_EquivalentOut");
+SL_STATIC_ASSERT(offsetof(SF_Equivalent, SafetyDemand) == 10, "offset of SF_Equivalent.SafetyDemand");
+SL_STATIC_ASSERT(offsetof(SF_Equivalent, Error) == 11, "offset of SF_Equivalent.Error");
+SL_STATIC_ASSERT(offsetof(SF_Equivalent, aReserved1) == 12, "offset of SF_Equivalent.aReserved1");
+SL_STATIC_ASSERT(offsetof(SF_Equivalent, DiagCode) == 14, "offset of SF_Equivalent.DiagCode");
+SL_STATIC_ASSERT(offsetof(SF_Equivalent, stPrivate) == 16, "offset of SF_Equivalent.stPrivate");
+SL_STATIC_ASSERT(sizeof(SF_Equivalent) == 56, "size of SF_Equivalent");
+SL_STATIC_ASSERT(offsetof(SF_Antivalent, Activate) == 0, "offset of SF_Antivalent.Activate");
+SL_STATIC_ASSERT(offsetof(SF_Antivalent, S_ChannelNC) == 1, "offset of SF_Antivalent.S_ChannelNC");
+SL_STATIC_ASSERT(offsetof(SF_Antivalent, S_ChannelNO) == 2, "offset of SF_Antivalent.S_ChannelNO");
+SL_STATIC_ASSERT(offsetof(SF_Antivalent, nDiagProfile) == 3, "offset of SF_Antivalent.nDiagProfile");
+SL_STATIC_ASSERT(offsetof(SF_Antivalent, DiscrepancyTime) == 4, "offset of SF_Antivalent.DiscrepancyTime");
+SL_STATIC_ASSERT(offsetof(SF_Antivalent, Ready) == 8, "offset of SF_Antivalent.Ready");
+SL_STATIC_ASSERT(offsetof(SF_Antivalent, S_AntivalentOut) == 9, "offset of SF_Antivalent.S_AntivalentOut");
+SL_STATIC_ASSERT(offsetof(SF_Antivalent, SafetyDemand) == 10, "offset of SF_Antivalent.SafetyDemand");
+SL_STATIC_ASSERT(offsetof(SF_Antivalent, Error) == 11, "offset of SF_Antivalent.Error");
+SL_STATIC_ASSERT(offsetof(SF_Antivalent, aReserved1) == 12, "offset of SF_Antivalent.aReserved1");
+SL_STATIC_ASSERT(offsetof(SF_Antivalent, DiagCode) == 14, "offset of SF_Antivalent.DiagCode");
+SL_STATIC_ASSERT(offsetof(SF_Antivalent, stPrivate) == 16, "offset of SF_Antivalent.stPrivate");
+SL_STATIC_ASSERT(sizeof(SF_Antivalent) == 56, "size of SF_Antivalent");
 
 #endif  /* SAFELOGIC_H */

@@ -5,9 +5,8 @@
 
 use crate::fsoe::SL_TYPE_FSOE_CONN;
 use crate::group::{self, Member, Members, SL_LINK_BOOL};
-use crate::prim::envelope::{self, Block};
 use crate::prim::header::SL_PRIVATE_HEADER;
-use crate::registry::Registered;
+use crate::registry::{family, Cyclic, Family, Registered};
 use crate::types::*;
 use crate::{FB_TON2, SL_FSOE_CONN, SL_FSOE_FRAME, SL_GROUP, SL_LINK, SL_MEMBER};
 use core::ffi::{c_char, c_void};
@@ -53,14 +52,14 @@ fn instance_ref<'a, B>(p: *const B) -> Result<&'a B, i32> {
 
 /// One call of a block function behind the panic boundary. After a caught panic the
 /// instance is forced into ERROR with safe outputs.
-fn block_call<B: Block>(p: *mut B, f: impl FnOnce(&mut B) -> Status) -> i32 {
+fn block_call<B: Cyclic>(p: *mut B, f: impl FnOnce(&mut B) -> Status) -> i32 {
     let fb = match instance(p) {
         Ok(fb) => fb,
         Err(e) => return e,
     };
     ffi_boundary!(
         {
-            ffi_boundary!((), envelope::force_error(&mut *fb));
+            ffi_boundary!((), fb.force_safe());
             SL_E_INTERNAL
         },
         f(&mut *fb).code()
@@ -182,7 +181,7 @@ macro_rules! ffi_functions {
             /// nothing else accesses during the call (ABI §4).
             #[no_mangle]
             pub unsafe extern "C" fn $init(fb: *mut $ty) -> i32 {
-                block_call(fb, envelope::init)
+                block_call(fb, Cyclic::init_fb)
             }
 
             #[doc = concat!("`", stringify!($cycle), "`: one task cycle at `tNow` (monotonic ms, may wrap at 2^32).")]
@@ -192,7 +191,7 @@ macro_rules! ffi_functions {
             #[no_mangle]
             #[allow(non_snake_case)]
             pub unsafe extern "C" fn $cycle(fb: *mut $ty, tNow: u32) -> i32 {
-                block_call(fb, |fb| envelope::cycle(fb, tNow))
+                block_call(fb, |fb| fb.cycle_fb(tNow))
             }
         )*
 
@@ -247,7 +246,7 @@ macro_rules! ffi_functions {
                     let h = unsafe { core::ptr::addr_of!((*base).stPrivate.stHeader) };
                     h as usize - base as usize
                 },
-                magic: <$ty as Block>::MAGIC,
+                magic: <$ty as Cyclic>::MAGIC,
                 init: |p| {
                     // SAFETY: `p` is a checked block of this type (add_member).
                     unsafe { $init(p.cast::<$ty>()) }
@@ -720,6 +719,12 @@ pub unsafe extern "C" fn sl_group_add_member(
             } else {
                 identify(pBlock, &lay)?
             };
+            // A PLCopen block joins only initialised (semantics PO8): its 56 bytes are
+            // smaller than most other types' headers lie deep, so a zero header there would
+            // let many blocks of other types pass as never-initialised SF_ blocks (GR14).
+            if never_initialised && family(nType) == Family::PlcOpen {
+                return Err(SL_E_CONFIG);
+            }
             // Full only now: a duplicate or foreign block is refused as such. Nothing has
             // been written so far, and no slice past the caller's `cap` entries is formed.
             if t.count >= t.cap {

@@ -202,6 +202,22 @@ macro_rules! impl_member {
                 self.bErrAck
             }
         }
+        impl<$($gen)*> $crate::registry::Cyclic for $ty {
+            const MAGIC: u16 = <Self as $crate::prim::envelope::Block>::MAGIC;
+            fn init_fb(&mut self) -> $crate::types::Status {
+                $crate::prim::envelope::init(self)
+            }
+            #[inline(always)]
+            fn cycle_fb(&mut self, now: u32) -> $crate::types::Status {
+                $crate::prim::envelope::cycle(self, now)
+            }
+            fn force_safe(&mut self) {
+                $crate::prim::envelope::force_error(self)
+            }
+            fn in_error(&self) -> bool {
+                self.nState == $crate::types::SL_STATE_ERROR
+            }
+        }
         impl<$($gen)*> $crate::registry::Private for $ty {
             type P = $private;
             #[inline(always)]
@@ -320,6 +336,112 @@ macro_rules! impl_member {
             offset: core::mem::offset_of!(Self, $f) as u16,
             kind: $crate::registry::$k(stringify!($f), $crate::registry::kind_of(|s: &Self| &s.$f)),
             dir: $crate::registry::Dir::$dir,
+        }
+    };
+}
+
+/// `impl_member!` for a PLCopen `SF_` block (`prim::sf`): the envelope's `SfInstance`, the
+/// registry's `Registered` and `Cyclic`, the group's [`Member`]. The block has no
+/// bRun/bErrAck: the group halts it through its private state (`nGroupHalt`: DiagCode
+/// 0000, as with Activate FALSE) and never acknowledges it; the member state the group
+/// reads is the block's [`crate::prim::sf::SfPhase`]. `DiagCode` is added as info field.
+#[doc(hidden)]
+#[macro_export]
+macro_rules! impl_sf_member {
+    ($ty:ty {
+        info: $info:expr,
+        input: [$($i:ident),* $(,)?],
+        param: [$($p:ident),* $(,)?],
+        output: [$($o:ident),* $(,)?] $(,)?
+    }) => {
+        impl $crate::prim::sf::SfInstance for $ty {
+            #[inline(always)]
+            fn sf_private(&self) -> &$crate::prim::sf::SL_SF_PRIVATE {
+                &self.stPrivate
+            }
+            #[inline(always)]
+            fn sf_private_mut(&mut self) -> &mut $crate::prim::sf::SL_SF_PRIVATE {
+                &mut self.stPrivate
+            }
+            #[inline(always)]
+            fn activate_raw(&self) -> u8 {
+                self.Activate
+            }
+        }
+        impl $crate::registry::Cyclic for $ty {
+            const MAGIC: u16 = <Self as $crate::prim::sf::SfBlock>::MAGIC;
+            fn init_fb(&mut self) -> $crate::types::Status {
+                $crate::prim::sf::init(self)
+            }
+            #[inline(always)]
+            fn cycle_fb(&mut self, now: u32) -> $crate::types::Status {
+                $crate::prim::sf::cycle(self, now)
+            }
+            fn force_safe(&mut self) {
+                $crate::prim::sf::force_fault(self)
+            }
+            fn in_error(&self) -> bool {
+                self.DiagCode >= 0xC000
+            }
+        }
+        impl $crate::registry::Registered for $ty {
+            const INFO: $crate::blocks::BlockInfo = $info;
+            type State = $crate::prim::sf::SfPhase;
+            const FIELDS: &'static [$crate::registry::Field] = &[
+                $($crate::impl_member!(@field $i, Input, io_kind),)*
+                $($crate::impl_member!(@field $p, Param, same),)*
+                $($crate::impl_member!(@field $o, Output, io_kind),)*
+                $crate::impl_member!(@field DiagCode, Info, same)
+            ];
+        }
+        impl $crate::group::Member for $ty {
+            fn drive(&mut self, run: u8, _ack: u8) {
+                self.stPrivate.nGroupHalt = u8::from(run != 1);
+            }
+            fn execute(&mut self, now: u32) -> $crate::types::Status {
+                $crate::prim::sf::cycle(self, now)
+            }
+            fn state(&self) -> u8 {
+                self.stPrivate.stHeader.nState
+            }
+            fn fields(&self) -> &'static [$crate::registry::Field] {
+                <Self as $crate::registry::Registered>::FIELDS
+            }
+            fn input_mut(&mut self, offset: u16) -> Option<&mut u8> {
+                $(if usize::from(offset) == core::mem::offset_of!(Self, $i) {
+                    return $crate::registry::FieldType::as_bool_mut(&mut self.$i);
+                })*
+                None
+            }
+            fn output(&self, offset: u16) -> Option<u8> {
+                $(if usize::from(offset) == core::mem::offset_of!(Self, $o) {
+                    return $crate::registry::FieldType::as_bool(self.$o);
+                })*
+                None
+            }
+            fn output_bits(&self, offset: u16) -> Option<u32> {
+                $(if usize::from(offset) == core::mem::offset_of!(Self, $o) {
+                    return Some($crate::registry::FieldType::to_bits(self.$o));
+                })*
+                None
+            }
+            fn set_input_bits(&mut self, offset: u16, bits: u32) -> bool {
+                $(if usize::from(offset) == core::mem::offset_of!(Self, $i) {
+                    self.$i = $crate::registry::FieldType::from_bits(bits);
+                    return true;
+                })*
+                false
+            }
+            fn field_bits(&self, offset: u16) -> Option<u32> {
+                $crate::impl_member!(@read self, offset, $($i,)* $($p,)* $($o,)* DiagCode)
+            }
+            fn set_param_bits(&mut self, offset: u16, bits: u32) -> bool {
+                $(if usize::from(offset) == core::mem::offset_of!(Self, $p) {
+                    self.$p = $crate::registry::FieldType::from_bits(bits);
+                    return true;
+                })*
+                false
+            }
         }
     };
 }

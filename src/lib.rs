@@ -79,6 +79,10 @@ pub use fsoe::{
 };
 pub use group::{SL_GROUP, SL_GROUP_PRIVATE, SL_LINK, SL_MEMBER};
 pub use prim::header::SL_PRIVATE_HEADER;
+pub use prim::sf::{
+    DiagState, SfPhase, SL_SF_DIAG_CLOCK, SL_SF_DIAG_CONFIG, SL_SF_DIAG_CONST_CHANGED,
+    SL_SF_DIAG_CORRUPT, SL_SF_PRIVATE, SL_SF_PROFILE_V10, SL_SF_PROFILE_V201, SL_SF_TIME_MAX,
+};
 pub use types::*;
 
 // Every struct of the header at the offsets, size and alignment the header's C declarations
@@ -144,12 +148,12 @@ pub trait FunctionBlock {
     fn field(&self, name: &str) -> Option<&'static registry::Field>;
 }
 
-impl<B: prim::envelope::Block + registry::Registered + group::Member> FunctionBlock for B {
+impl<B: registry::Cyclic + registry::Registered + group::Member> FunctionBlock for B {
     fn init(&mut self) -> i32 {
-        prim::envelope::init(self).code()
+        self.init_fb().code()
     }
     fn cycle(&mut self, now: u32) -> i32 {
-        prim::envelope::cycle(self, now).code()
+        self.cycle_fb(now).code()
     }
     type State = B::State;
     fn current_state(&self) -> Result<B::State, Status> {
@@ -159,7 +163,7 @@ impl<B: prim::envelope::Block + registry::Registered + group::Member> FunctionBl
         blocks::state_name(B::INFO.tag, self.state())
     }
     fn is_error(&self) -> bool {
-        self.state() == SL_STATE_ERROR
+        self.in_error()
     }
     fn get(&self, name: &str) -> Option<u32> {
         self.field_bits(self.field(name)?.offset)

@@ -203,6 +203,44 @@ pub trait Registered {
     const STATES: StateSet = StateSet::of(<Self::State as BlockState>::TABLE);
 }
 
+/// How a registered type runs: what its C functions, the group and [`crate::FunctionBlock`]
+/// call. `impl_member!` implements it with the TwinSAFE envelope (`prim::envelope`),
+/// `impl_sf_member!` with the PLCopen one (`prim::sf`).
+pub trait Cyclic {
+    /// Type tag stored in the private header.
+    const MAGIC: u16;
+    /// `sl_<name>_init`.
+    fn init_fb(&mut self) -> crate::types::Status;
+    /// `sl_<name>_cycle`.
+    fn cycle_fb(&mut self, now: u32) -> crate::types::Status;
+    /// After a caught panic: the safe state with every output FALSE.
+    fn force_safe(&mut self);
+    /// The block is in an error state (TwinSAFE ERROR; PLCopen DiagCode ≥ 0xC000).
+    fn in_error(&self) -> bool;
+}
+
+/// The two block families of the registry, told apart by the type tag.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Family {
+    /// TwinSAFE blocks (`FB_<NAME>`, tags below 256): bRun/bErrAck at 16/17, nState/nDiag.
+    TwinSafe,
+    /// PLCopen Safety blocks (`SF_<Name>`, tags from [`SF_TAG_BASE`]): Activate, Ready,
+    /// Error, DiagCode (`prim::sf`).
+    PlcOpen,
+}
+
+/// First type tag of the PLCopen family.
+pub const SF_TAG_BASE: u16 = 512;
+
+/// The family of a type tag.
+pub const fn family(tag: u16) -> Family {
+    if tag >= SF_TAG_BASE {
+        Family::PlcOpen
+    } else {
+        Family::TwinSafe
+    }
+}
+
 /// A set of state values 0–63.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct StateSet(u64);
@@ -254,6 +292,15 @@ impl BlockType {
         }
     }
 
+    /// What precedes the name in the C struct's name: `FB_` for `FB_<NAME>` (TwinSAFE),
+    /// nothing for a PLCopen block (`SF_EmergencyStop` is its own struct's name).
+    pub const fn struct_prefix(&self) -> &'static str {
+        match family(self.info.tag) {
+            Family::TwinSafe => "FB_",
+            Family::PlcOpen => "",
+        }
+    }
+
     /// The field with this name.
     pub fn field(&self, name: &str) -> Option<&'static Field> {
         self.fields.iter().find(|f| f.name == name)
@@ -265,13 +312,41 @@ impl BlockType {
     }
 }
 
-/// The registry: one row per block type (struct => C init, C cycle), in tag order. Calls
-/// `$m! { rows }`; build.rs reads the rows between the markers to write the prototypes.
+/// The registry: one row per block type (struct => C init, C cycle), in tag order: the
+/// TwinSAFE rows ([`for_each_twinsafe_block!`](crate::for_each_twinsafe_block)), then the
+/// PLCopen rows ([`for_each_sf_block!`](crate::for_each_sf_block)). Calls `$m! { rows }`;
+/// build.rs reads the rows between the markers to write the prototypes. A generator that
+/// touches a family's own fields (`bRun`, `Activate`) takes that family's macro.
 #[doc(hidden)]
 #[macro_export]
 macro_rules! for_each_block {
     ($m:ident) => {
-        $m! {
+        $crate::for_each_twinsafe_block! { @rows [all] $m }
+    };
+}
+
+/// Hands a family's rows on: to `$m` alone, or (`all`) after the TwinSAFE rows to the
+/// PLCopen macro, which appends its own.
+#[doc(hidden)]
+#[macro_export]
+macro_rules! __sl_rows {
+    ([] $m:ident [$($rows:tt)*]) => {
+        $m! { $($rows)* }
+    };
+    ([all] $m:ident [$($rows:tt)*]) => {
+        $crate::for_each_sf_block! { $m [$($rows)*] }
+    };
+}
+
+/// The TwinSAFE rows (`FB_<NAME>`, tags below 256).
+#[doc(hidden)]
+#[macro_export]
+macro_rules! for_each_twinsafe_block {
+    ($m:ident) => {
+        $crate::for_each_twinsafe_block! { @rows [] $m }
+    };
+    (@rows [$($all:ident)?] $m:ident) => {
+        $crate::__sl_rows! { [$($all)?] $m [
             // registry:begin
             $crate::blocks::estop::FB_ESTOP => sl_estop_init, sl_estop_cycle;
             $crate::blocks::mon::FB_MON => sl_mon_init, sl_mon_cycle;
@@ -349,6 +424,25 @@ macro_rules! for_each_block {
             $crate::blocks::advposmon::FB_ADVPOSMON => sl_advposmon_init, sl_advposmon_cycle;
             $crate::blocks::connshutdown::FB_CONNECTION_SHUTDOWN => sl_connection_shutdown_init, sl_connection_shutdown_cycle;
             // registry:end
+        ] }
+    };
+}
+
+/// The PLCopen Safety rows (`SF_<Name>`, tags from [`SF_TAG_BASE`]), after `$pre` (the
+/// TwinSAFE rows when called for every block).
+#[doc(hidden)]
+#[macro_export]
+macro_rules! for_each_sf_block {
+    ($m:ident $([$($pre:tt)*])?) => {
+        $m! {
+            $($($pre)*)?
+            // registry:begin
+            $crate::blocks::sf_emergencystop::SF_EmergencyStop => sl_sf_emergencystop_init, sl_sf_emergencystop_cycle;
+            $crate::blocks::sf_espe::SF_ESPE => sl_sf_espe_init, sl_sf_espe_cycle;
+            $crate::blocks::sf_pse::SF_PSE => sl_sf_pse_init, sl_sf_pse_cycle;
+            $crate::blocks::sf_equivalent::SF_Equivalent => sl_sf_equivalent_init, sl_sf_equivalent_cycle;
+            $crate::blocks::sf_antivalent::SF_Antivalent => sl_sf_antivalent_init, sl_sf_antivalent_cycle;
+            // registry:end
         }
     };
 }
@@ -409,6 +503,10 @@ mod tests {
         assert!(BLOCKS.windows(2).all(|w| w[0].info.tag < w[1].info.tag));
         for (i, a) in BLOCKS.iter().enumerate() {
             assert!(BLOCKS[i + 1..].iter().all(|b| b.info.name != a.info.name));
+            assert_eq!(
+                a.info.name.starts_with("SF_"),
+                family(a.info.tag) == Family::PlcOpen
+            );
             assert!(a.info.states.iter().all(|(_, n)| n.ends_with('\0')));
             assert_eq!(a.c_prefix, alloc_free_lower(a.info.name).as_str());
         }
@@ -450,11 +548,37 @@ mod tests {
                 b.info.name
             );
             assert!(spans.last().is_some_and(|s| s.1 <= b.size));
-            for name in ["bRun", "bErrAck", "nState", "nDiag"] {
-                assert!(b.field(name).is_some(), "{} has {name}", b.info.name);
+            match family(b.info.tag) {
+                Family::TwinSafe => {
+                    for name in ["bRun", "bErrAck", "nState", "nDiag"] {
+                        assert!(b.field(name).is_some(), "{} has {name}", b.info.name);
+                    }
+                    assert_eq!(b.field("bRun").map(|f| f.offset), Some(16));
+                    assert_eq!(b.field("bErrAck").map(|f| f.offset), Some(17));
+                }
+                Family::PlcOpen => {
+                    // The PLCopen envelope: Activate first, the generic outputs, no
+                    // group control fields (the group halts a block through its private
+                    // state).
+                    assert_eq!(b.field("Activate").map(|f| f.offset), Some(0));
+                    for (name, kind) in [
+                        ("Activate", Kind::Bool),
+                        ("Ready", Kind::Bool),
+                        ("Error", Kind::Bool),
+                        ("DiagCode", Kind::U16),
+                        ("nDiagProfile", Kind::U8),
+                    ] {
+                        assert_eq!(
+                            b.field(name).map(|f| f.kind),
+                            Some(kind),
+                            "{} {name}",
+                            b.info.name
+                        );
+                    }
+                    assert!(b.fields.iter().all(|f| f.dir != Dir::Control));
+                    assert!(b.info.name.starts_with("SF_"));
+                }
             }
-            assert_eq!(b.field("bRun").map(|f| f.offset), Some(16));
-            assert_eq!(b.field("bErrAck").map(|f| f.offset), Some(17));
         }
     }
 }

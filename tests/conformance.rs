@@ -144,7 +144,7 @@ macro_rules! harness {
     };
 }
 
-safelogic::for_each_block!(harness);
+safelogic::for_each_twinsafe_block!(harness);
 
 macro_rules! unknown_state {
     ($($ty:ty => $init:ident, $cycle:ident;)*) => {
@@ -171,18 +171,18 @@ macro_rules! unknown_state {
                     checked += 1;
                 }
             })*
-            assert!(checked > 200 * BLOCKS.len(), "{checked} forged states");
+            assert!(checked > 200 * twinsafe_count(), "{checked} forged states");
         }
     };
 }
 
-safelogic::for_each_block!(unknown_state);
+safelogic::for_each_twinsafe_block!(unknown_state);
 
 #[test]
 fn every_registered_type_survives_random_bytes() {
     let reached = run_all(0x5AFE_10C1C, 200, 60);
     assert_eq!(
-        reached.len(),
+        reached.len() + sf_run_all(0x5AFE_10C1C, 200, 60).len(),
         BLOCKS.len(),
         "the harness covers every registered type"
     );
@@ -206,7 +206,7 @@ fn field_tables_agree_with_the_header() {
     let mut c = String::from("#include <stddef.h>\n#include \"safelogic.h\"\n");
     let mut n = 0;
     for t in BLOCKS {
-        let s = format!("FB_{}", t.info.name);
+        let s = format!("{}{}", t.struct_prefix(), t.info.name);
         c += &format!(
             "_Static_assert(sizeof({s}) == {}, \"size of {s}\");\n",
             t.size
@@ -464,7 +464,7 @@ macro_rules! depth {
     };
 }
 
-safelogic::for_each_block!(depth);
+safelogic::for_each_twinsafe_block!(depth);
 
 #[test]
 fn every_registered_type_keeps_its_safety_properties_over_10000_sequences() {
@@ -473,7 +473,7 @@ fn every_registered_type_keeps_its_safety_properties_over_10000_sequences() {
         .and_then(|v| v.parse().ok())
         .unwrap_or(1);
     let reached = depth_all(DEPTH_SEQUENCES * depth);
-    assert_eq!(reached.len(), BLOCKS.len());
+    assert_eq!(reached.len(), twinsafe_count());
     for (name, states) in reached {
         for s in [SL_STATE_STOP, SL_STATE_ERROR, SL_STATE_RESET] {
             assert!(states.contains(&s), "{name} never reached {s}: {states:?}");
@@ -483,6 +483,325 @@ fn every_registered_type_keeps_its_safety_properties_over_10000_sequences() {
                 .iter()
                 .any(|s| !matches!(*s, SL_STATE_STOP | SL_STATE_ERROR | SL_STATE_RESET)),
             "{name} never reached a running state: {states:?}"
+        );
+    }
+}
+
+fn twinsafe_count() -> usize {
+    BLOCKS
+        .iter()
+        .filter(|b| {
+            safelogic::registry::family(b.info.tag) == safelogic::registry::Family::TwinSafe
+        })
+        .count()
+}
+
+/// The PLCopen invariants after one call (research §0.2, §3.2; issue 15 item 3), read from
+/// the instance's bytes through the field table: a documented status; a DiagCode of the
+/// block (either profile) or of the library; `Ready == (DiagCode != 0)`, `Error ==
+/// (DiagCode >= 0xC000)`, the safety output TRUE only at 0x8000 and never after a refusing
+/// status; in the v2.01 profile SafetyDemand = bit 0x0800 and ResetRequest = bit 0x0400
+/// with Reset FALSE; Activate not TRUE → DiagCode 0000 and every output FALSE. Returns the
+/// DiagCode.
+fn check_sf(t: &BlockType, bytes: &[u8], status: i32, what: &str) -> u16 {
+    let name = t.info.name;
+    assert!(
+        DOCUMENTED.contains(&status),
+        "{name} {what}: status {status}"
+    );
+    let get = |n: &str| t.field(n).map(|f| read(bytes, f.offset, f.kind));
+    let code = get("DiagCode").unwrap() as u16;
+    let library = [
+        SL_SF_DIAG_CORRUPT,
+        SL_SF_DIAG_CLOCK,
+        SL_SF_DIAG_CONST_CHANGED,
+        SL_SF_DIAG_CONFIG,
+    ];
+    assert!(
+        code == 0 || library.contains(&code) || t.info.diag_values.iter().any(|(c, _)| *c == code),
+        "{name} {what}: DiagCode {code:04X} is not one of the block's"
+    );
+    let flag = |n: &str| {
+        get(n).map(|v| {
+            assert!(v <= 1, "{name} {what}: {n} = {v}");
+            v == 1
+        })
+    };
+    assert_eq!(
+        flag("Ready"),
+        Some(code != 0),
+        "{name} {what}: Ready at {code:04X}"
+    );
+    assert_eq!(
+        flag("Error"),
+        Some(code >= 0xC000),
+        "{name} {what}: Error at {code:04X}"
+    );
+    let refused = matches!(
+        status,
+        SL_E_CONFIG | SL_E_CORRUPT | SL_E_CLOCK | SL_E_PARAM_CHANGED
+    );
+    let generic = ["Ready", "Error", "SafetyDemand", "ResetRequest"];
+    for f in t
+        .fields
+        .iter()
+        .filter(|f| f.dir == Dir::Output && !generic.contains(&f.name))
+    {
+        let on = flag(f.name).unwrap();
+        assert!(
+            !on || code == 0x8000,
+            "{name} {what}: {} TRUE at {code:04X}",
+            f.name
+        );
+        assert!(
+            !on || !refused,
+            "{name} {what}: {} TRUE after status {status}",
+            f.name
+        );
+    }
+    if get("nDiagProfile") == Some(u32::from(SL_SF_PROFILE_V201)) && !library.contains(&code) {
+        if let Some(d) = flag("SafetyDemand") {
+            assert_eq!(
+                d,
+                code & 0x0800 != 0,
+                "{name} {what}: SafetyDemand at {code:04X}"
+            );
+        }
+        if let Some(r) = flag("ResetRequest") {
+            let reset = get("Reset") == Some(1);
+            assert_eq!(
+                r,
+                code & 0x0400 != 0 && !reset,
+                "{name} {what}: ResetRequest at {code:04X}"
+            );
+        }
+    }
+    if get("Activate") != Some(1) {
+        assert_eq!(code, 0, "{name} {what}: Activate not TRUE");
+        for f in t.fields.iter().filter(|f| f.dir == Dir::Output) {
+            assert_eq!(
+                read(bytes, f.offset, f.kind),
+                0,
+                "{name} {what}: {} idle",
+                f.name
+            );
+        }
+    }
+    code
+}
+
+macro_rules! sf_harness {
+    ($($ty:ty => $init:ident, $cycle:ident;)*) => {
+        /// Random bytes everywhere (the private state included), random time steps and
+        /// input changes through the C functions, for every PLCopen type: `check_sf` after
+        /// every call. Returns the DiagCodes reached per type.
+        fn sf_run_all(seed: u64, rounds: usize, steps: usize) -> Vec<(&'static str, BTreeSet<u16>)> {
+            let mut reached = Vec::new();
+            $({
+                let t = block_type(<$ty as safelogic::registry::Registered>::INFO.tag).unwrap();
+                assert_eq!(t.size, std::mem::size_of::<$ty>());
+                let mut rng = Rng(seed ^ u64::from(t.info.tag).wrapping_mul(0x9E37_79B9));
+                let mut codes = BTreeSet::new();
+                for round in 0..rounds {
+                    // SAFETY: integer fields only: every byte pattern is a valid value.
+                    let mut fb: $ty = unsafe { std::mem::zeroed() };
+                    let bytes = |fb: &mut $ty| -> &mut [u8] {
+                        // SAFETY: as above; the slice covers exactly the instance.
+                        unsafe { std::slice::from_raw_parts_mut((fb as *mut $ty).cast::<u8>(), std::mem::size_of::<$ty>()) }
+                    };
+                    // SAFETY: a live, exclusively borrowed instance.
+                    let rc = unsafe { safelogic::ffi::$cycle(&mut fb, 0) };
+                    assert_eq!(rc, SL_OK, "{}: zeroed instance", t.info.name);
+                    codes.insert(check_sf(t, bytes(&mut fb), rc, "zeroed"));
+                    for b in bytes(&mut fb).iter_mut() {
+                        *b = rng.next() as u8;
+                    }
+                    if round % 4 == 1 {
+                        // Activated: the random private state is a fault (C3FF), not idle.
+                        fb.Activate = 1;
+                    }
+                    if round % 2 == 0 {
+                        // SAFETY: as above.
+                        let rc = unsafe { safelogic::ffi::$init(&mut fb) };
+                        assert!(rc == SL_OK || rc == SL_E_CONFIG, "{}: init gave {rc}", t.info.name);
+                        codes.insert(check_sf(t, bytes(&mut fb), rc, "init"));
+                    }
+                    let mut now = rng.next() as u32;
+                    for step in 0..steps {
+                        let r = rng.next();
+                        for f in t.fields.iter().filter(|f| matches!(f.dir, Dir::Input | Dir::Param)) {
+                            if rng.next() % 4 == 0 {
+                                let o = usize::from(f.offset);
+                                let v = rng.next();
+                                let bs = bytes(&mut fb);
+                                if f.kind == Kind::Bool {
+                                    bs[o] = if v % 50 == 0 { v as u8 } else { (v & 1) as u8 };
+                                } else if f.dir == Dir::Param && v % 8 != 0 {
+                                    // Mostly a valid profile / small time: states are reached.
+                                    bs[o] = (v % 2) as u8;
+                                } else {
+                                    for (k, b) in bs[o..o + f.kind.size()].iter_mut().enumerate() {
+                                        *b = (v >> (8 * k)) as u8;
+                                    }
+                                }
+                            }
+                        }
+                        if r % 97 == 0 {
+                            let bs = bytes(&mut fb);
+                            let i = (rng.next() as usize) % bs.len();
+                            bs[i] = rng.next() as u8;
+                        }
+                        now = match r % 100 {
+                            0 => now.wrapping_sub(1 + (rng.next() % 1000) as u32),
+                            1 => rng.next() as u32,
+                            _ => now.wrapping_add((rng.next() % 200) as u32),
+                        };
+                        // SAFETY: as above.
+                        let rc = unsafe { safelogic::ffi::$cycle(&mut fb, now) };
+                        codes.insert(check_sf(t, bytes(&mut fb), rc, &format!("round {round} step {step}")));
+                    }
+                }
+                reached.push((t.info.name, codes));
+            })*
+            reached
+        }
+
+        /// A sealed private state whose code is not one of the block's (nor the library's)
+        /// is corrupt: the library fault C3FF with Activate TRUE, idle with Activate FALSE.
+        #[test]
+        fn sf_an_unknown_diag_code_is_corrupt() {
+            use safelogic::prim::sf::{DiagState, SfBlock, SfInstance};
+            let mut checked = 0;
+            $({
+                let t = block_type(<$ty as safelogic::registry::Registered>::INFO.tag).unwrap();
+                for code in (0..=0xFFFFu16).step_by(7) {
+                    if code == 0 || <<$ty as SfBlock>::Diag as DiagState>::decode(code).is_some() {
+                        continue;
+                    }
+                    for activate in [1u8, 0] {
+                        let mut fb = <$ty>::default();
+                        FunctionBlock::init(&mut fb);
+                        let h = &mut fb.sf_private_mut().stHeader;
+                        h.wDiag = code;
+                        h.nState = SL_STATE_RUN;
+                        h.seal();
+                        fb.Activate = activate;
+                        assert_eq!(FunctionBlock::cycle(&mut fb, 0), SL_E_CORRUPT, "{} {code:04X}", t.info.name);
+                        let expect = if activate == 1 { SL_SF_DIAG_CORRUPT } else { 0 };
+                        assert_eq!(fb.DiagCode, expect, "{} {code:04X}", t.info.name);
+                        assert_eq!(fb.Error, u8::from(activate == 1));
+                        checked += 1;
+                    }
+                }
+            })*
+            assert!(checked > 15_000, "{checked} forged codes");
+        }
+
+        /// 10,000 random sequences of 24 calls per PLCopen type from valid configurations
+        /// (both profiles): `check_sf` after every call. Returns the DiagCodes reached.
+        fn sf_depth_all(sequences: usize) -> Vec<(&'static str, BTreeSet<u16>)> {
+            let mut reached = Vec::new();
+            $({
+                let t = block_type(<$ty as safelogic::registry::Registered>::INFO.tag).unwrap();
+                let mut rng = Rng(0xDE97_5F00 ^ u64::from(t.info.tag));
+                let bytes = |fb: &mut $ty| -> &mut [u8] {
+                    // SAFETY: integer fields only; the slice covers exactly the instance.
+                    unsafe { std::slice::from_raw_parts_mut((fb as *mut $ty).cast::<u8>(), std::mem::size_of::<$ty>()) }
+                };
+                let mut codes = BTreeSet::new();
+                for seq in 0..sequences {
+                    let mut fb = <$ty>::default();
+                    for f in t.fields.iter().filter(|f| f.dir == Dir::Param) {
+                        let v = if f.name == "nDiagProfile" { (seq % 2) as i64 } else { (rng.next() % 60) as i64 };
+                        fb.set(f.name, v).unwrap();
+                    }
+                    if FunctionBlock::init(&mut fb) != SL_OK {
+                        continue;
+                    }
+                    let mut now = rng.next() as u32;
+                    for step in 0..24 {
+                        let r = rng.next();
+                        for f in t.fields.iter().filter(|f| f.dir == Dir::Input) {
+                            let v = rng.next();
+                            let change = if f.name == "Activate" { v % 16 == 0 } else { v % 3 == 0 };
+                            if change {
+                                let value = if v % 401 == 0 { 2 } else { ((v >> 8) & 1) as u8 };
+                                bytes(&mut fb)[usize::from(f.offset)] = value;
+                            }
+                        }
+                        if step == 0 {
+                            fb.Activate = 1;
+                        }
+                        now = if r & 255 == 0 {
+                            now.wrapping_sub(1 + (rng.next() % 50) as u32)
+                        } else {
+                            now.wrapping_add((rng.next() % 41) as u32)
+                        };
+                        // SAFETY: a live, exclusively borrowed instance.
+                        let rc = unsafe { safelogic::ffi::$cycle(&mut fb, now) };
+                        codes.insert(check_sf(t, bytes(&mut fb), rc, &format!("sequence {seq} step {step}")));
+                    }
+                }
+                reached.push((t.info.name, codes));
+            })*
+            reached
+        }
+    };
+}
+
+safelogic::for_each_sf_block!(sf_harness);
+
+#[test]
+fn every_plcopen_type_survives_random_bytes() {
+    for (name, codes) in sf_run_all(0x5F5F_10C1C, 200, 60) {
+        for c in [0, SL_SF_DIAG_CORRUPT] {
+            assert!(
+                codes.contains(&c),
+                "{name} never reached {c:04X}: {codes:X?}"
+            );
+        }
+    }
+}
+
+/// Every state of every PLCopen type is reached by the random sequences, in both profiles
+/// where the block has v1.0 codes (the v1.0-only codes included), and the properties of
+/// `check_sf` hold after every call.
+#[test]
+fn every_plcopen_type_keeps_its_properties_over_10000_sequences() {
+    use safelogic::prim::sf::DiagState;
+    let depth: usize = std::env::var("SL_PROP_DEPTH")
+        .ok()
+        .and_then(|v| v.parse().ok())
+        .unwrap_or(1);
+    for (name, codes) in sf_depth_all(DEPTH_SEQUENCES * depth) {
+        let t = safelogic::registry::block_type_named(name).unwrap();
+        // The v2.01 states: every code of the block's table.
+        let table: Vec<u16> = t.info.diag_values.iter().map(|(c, _)| *c).collect();
+        let v2 = match name {
+            "SF_EmergencyStop" | "SF_ESPE" | "SF_PSE" => {
+                <safelogic::blocks::sf_restart::RestartState as DiagState>::TABLE
+            }
+            "SF_Equivalent" | "SF_Antivalent" => {
+                <safelogic::blocks::sf_pair::PairState as DiagState>::TABLE
+            }
+            other => panic!("{other}: no state table named in this test"),
+        };
+        for (c2, c1, n, _) in v2 {
+            assert!(
+                codes.contains(c2),
+                "{name} never reached {n} ({c2:04X}): {codes:X?}"
+            );
+            if name != "SF_PSE" {
+                assert!(
+                    codes.contains(c1),
+                    "{name} never reached v1.0 {n} ({c1:04X})"
+                );
+            }
+        }
+        assert!(table.iter().all(|c| codes.contains(c) || name == "SF_PSE"));
+        assert!(
+            codes.contains(&SL_SF_DIAG_CLOCK),
+            "{name}: clock fault not reached"
         );
     }
 }

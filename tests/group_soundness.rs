@@ -496,7 +496,11 @@ fn every_registered_type_refuses_every_other_tag() {
             if !table_block {
                 pairs += 1;
             }
-            let hidden = looks_never_initialised(&mem, own, claimed);
+            // A PLCopen type is never accepted never-initialised (semantics PO8): the
+            // limit applies to TwinSAFE types only.
+            let hidden = looks_never_initialised(&mem, own, claimed)
+                && safelogic::registry::family(claimed.info.tag)
+                    == safelogic::registry::Family::TwinSafe;
             let rc = add(g, m, claimed.info.tag, p);
             if own.info.tag == claimed.info.tag {
                 assert_eq!(rc, SL_OK, "{}", own.info.name);

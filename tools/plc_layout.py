@@ -102,11 +102,16 @@ def read_c_layout(path: Path) -> Tuple[Dict[str, int], Dict[str, List[CMember]]]
 
 
 def dut_of(cname: str) -> str:
-    return "ST_" + cname if cname.startswith("FB_") else cname
+    return "ST_" + cname if is_block(cname) else cname
 
 
 def is_block(cname: str) -> bool:
-    return cname.startswith("FB_")
+    """FB_<NAME> (TwinSAFE) or SF_<Name> (PLCopen Safety)."""
+    return cname.startswith("FB_") or cname.startswith("SF_")
+
+
+def is_sf(cname: str) -> bool:
+    return cname.startswith("SF_")
 
 
 def is_reserved(name: str) -> bool:
@@ -357,8 +362,14 @@ def check_fbs(src: Source, csizes, cmembers) -> None:
         byname = {m.name: m for m in public}
         seen_in = [n for n, _, _ in ins if n != "tNow"]
         seen_out = [n for n, _, _ in outs if n != "nStatus"]
-        R.ok(any(n == "tNow" and t.upper() == "UDINT" for n, t, _ in ins),
-             f"{src.label}: block {cname}: VAR_INPUT tNow : UDINT missing")
+        if is_sf(cname):
+            # A PLCopen FB has exactly the PLCopen inputs: it reads its time into a VAR tNow.
+            R.ok(not any(n == "tNow" for n, _, _ in ins), f"{src.label}: block {cname}: tNow is no VAR_INPUT")
+            R.ok(any(n == "tNow" and t.upper() == "UDINT" for n, t, _ in blocks.get("VAR", [])),
+                 f"{src.label}: block {cname}: VAR tNow : UDINT missing")
+        else:
+            R.ok(any(n == "tNow" and t.upper() == "UDINT" for n, t, _ in ins),
+                 f"{src.label}: block {cname}: VAR_INPUT tNow : UDINT missing")
         R.ok(any(n == "nStatus" and t.upper() == "DINT" for n, t, _ in outs),
              f"{src.label}: block {cname}: VAR_OUTPUT nStatus : DINT missing")
         R.ok(sorted(seen_in + seen_out) == sorted(byname),
@@ -380,6 +391,9 @@ def check_fbs(src: Source, csizes, cmembers) -> None:
         flat = re.sub(r"\s+", " ", body)
         R.ok(re.search(r"nStatus := \w+\(\s*pFb := (ADR|REF)\(stData\), tNow := tNow\)", flat) is not None,
              f"{src.label}: block {cname}: body does not call the cycle function with the address of stData and tNow")
+        if is_sf(cname):
+            R.ok(re.search(r"tNow := (SL_TIME_NOW_MS\(EN := TRUE\)|TIME_TO_UDINT\(TIME\(\)\));", flat) is not None,
+                 f"{src.label}: block {cname}: body does not read the time before the call")
         for n in seen_in:
             R.ok(re.search(rf"stData\.{n}(\[\d+\])? := (TIME_TO_UDINT\()?{n}\b", flat) is not None,
                  f"{src.label}: block {cname} field {n}: input not copied into stData")
@@ -402,7 +416,8 @@ def check_selftest(src: Source, csizes, cmembers) -> None:
     text = "\n".join(src.texts.values())
     found: Dict[Tuple[str, Optional[str]], int] = {}
     if src.flavour == "iec":
-        vars_ = dict((v, t) for t, v in re.findall(r"^\s*(\w+) (sl_plc_\w+);$", text, re.M))
+        # matiec's C names are upper case (ST_SF_EmergencyStop -> ST_SF_EMERGENCYSTOP)
+        vars_ = dict((v, t.upper()) for t, v in re.findall(r"^\s*(\w+) (sl_plc_\w+);$", text, re.M))
         for v, val in re.findall(r"sizeof\((\w+)\) != (\d+)", text):
             found[(vars_.get(v, "?"), None)] = int(val)
         for v, f, val in re.findall(r"\(char \*\)&(\w+)\.(\w+) - \(char \*\)&\1 != (\d+)", text):
@@ -418,10 +433,10 @@ def check_selftest(src: Source, csizes, cmembers) -> None:
         norm = str
     for cname, size in csizes.items():
         d = dut_of(cname)
-        R.ok(found.get((d, None)) == size,
-             f"{src.label}: self-test: SIZEOF of {d} (C struct {cname}) checked against {found.get((d, None))}, C sizeof = {size}")
+        R.ok(found.get((norm(d), None)) == size,
+             f"{src.label}: self-test: SIZEOF of {d} (C struct {cname}) checked against {found.get((norm(d), None))}, C sizeof = {size}")
         for m in cmembers[cname]:
-            got = found.get((d, norm(m.name)))
+            got = found.get((norm(d), norm(m.name)))
             R.ok(got == m.offset,
                  f"{src.label}: self-test: {'block' if is_block(cname) else 'struct'} {cname} field {m.name}: "
                  f"checked against {got}, C offsetof = {m.offset}")

@@ -190,8 +190,46 @@ BLOCKS["CONNECTION_SHUTDOWN"] = dict(
 BLOCK_INPUTS = {}  # block -> its BOOL inputs (filled from the header in main)
 
 
+def sf_script(name: str) -> dict:
+    """A PLCopen block with one safety input (SF_EmergencyStop, SF_ESPE, SF_PSE) driven as a
+    user's program would, with the PLCopen names only: activation without S_StartReset, the
+    safety input, a Reset edge (8000), a safety demand and its end with Reset held (the
+    static-reset error C011), Reset released, Activate FALSE (0000), then S_StartReset and
+    S_AutoReset (8000 again), then the walk over every BOOL input."""
+    ins = BLOCK_INPUTS[name]
+    safety = ins[1]
+    if "Reset" in ins:
+        steps = {0: {"Activate": 0, safety: 0}, 2: {"Activate": 1}, 4: {safety: 1}, 6: {"Reset": 1},
+                 8: {"Reset": 0}, 10: {safety: 0, "Reset": 1}, 12: {safety: 1}, 14: {"Reset": 0},
+                 16: {"Activate": 0}, 18: {"Activate": 1, "S_StartReset": 1, "S_AutoReset": 1},
+                 20: {safety: 0}, 22: {safety: 1}}
+    else:
+        # Two channels (SF_Equivalent, SF_Antivalent: a NO channel is active FALSE), the
+        # DiscrepancyTime left at its default 0: both active (8000), one inactive (8806,
+        # then the discrepancy error C030), both inactive (8801), Activate FALSE, again.
+        a, b = ins[1], ins[2]
+        on_b = 0 if b.endswith("NO") else 1
+        steps = {0: {"Activate": 0, a: 0, b: 1 - on_b}, 2: {"Activate": 1}, 4: {a: 1, b: on_b},
+                 8: {a: 0}, 12: {b: 1 - on_b}, 14: {a: 1, b: on_b}, 16: {"Activate": 0},
+                 18: {"Activate": 1}, 22: {a: 0, b: 1 - on_b}}
+    cur = {f: 0 for f in ins}
+    for c in sorted(steps):
+        cur.update(steps[c])
+    for i, f in enumerate(ins):
+        v = cur.get(f, 0)
+        steps.setdefault(WALK + 2 * i, {}).update({f: 1 - v})
+        steps.setdefault(WALK + 2 * i + 1, {}).update({f: v})
+    return steps
+
+
+def is_sf(name: str) -> bool:
+    return name.startswith("SF_")
+
+
 def script(name: str) -> dict:
     """cycle -> {input: value}: the ST program's inputs for that cycle (unchanged otherwise)."""
+    if is_sf(name):
+        return sf_script(name)
     b = BLOCKS[name]
     steps = {0: dict(b["cfg"], bRun=0, bErrAck=0), 2: {"bRun": 1}}
     pulse = b["pulse"]
@@ -250,7 +288,7 @@ def st_program(hdr) -> str:
            "    nCycle : UDINT := UDINT#0;", "    nNow : UDINT := UDINT#1000;", "    nClock : UDINT := UDINT#0;",
            "    fbSelfTest : FB_SL_SELFTEST;"]
     for b in hdr.blocks:
-        out.append(f"    fb{b.name} : FB_{b.name};")
+        out.append(f"    fb{b.name} : {b.fb_name};")
     out += GROUP_VARS
     out += ["END_VAR", "nNow := nNow + UDINT#%d;" % CYCLE_MS, "nClock := SL_TIME_NOW_MS(EN := TRUE);",
             "IF nCycle = UDINT#0 THEN", "    fbSelfTest();", "END_IF;"]
@@ -263,9 +301,11 @@ def st_program(hdr) -> str:
             sets = "".join(f"fb{b.name}.{k} := {st_literal(hdr, fl, b, k, v)}; "
                            for k, v in steps[c].items() if "[" in k)
             args = ", ".join(f"{k} := {st_literal(hdr, fl, b, k, v)}" for k, v in steps[c].items() if "[" not in k)
-            out.append(f"    {c}: {sets}fb{b.name}({args}, tNow := nNow);")
+            # A PLCopen FB reads its time itself: the call has the PLCopen names only.
+            now = "" if b.is_sf else ", tNow := nNow"
+            out.append(f"    {c}: {sets}fb{b.name}({args}{now});")
         out.append("ELSE")
-        out.append(f"    fb{b.name}(tNow := nNow);")
+        out.append(f"    fb{b.name}({'' if b.is_sf else 'tNow := nNow'});")
         out.append("END_CASE;")
     out += ["nCycle := nCycle + UDINT#1;", "END_PROGRAM", "",
             "CONFIGURATION Config0", "  RESOURCE Res0 ON PLC",
@@ -459,7 +499,7 @@ def probe_c(hdr) -> str:
     for b in hdr.blocks:
         out.append(f"void probe_{b.lower}(MIR_{b.name} *m)")
         out.append("{")
-        out.append(f"    FB_{b.name} *fb = &RES0__INSTANCE0.FB{b.name};")
+        out.append(f"    {b.fb_name.upper()} *fb = &RES0__INSTANCE0.FB{b.name.upper()};")
         for f in b.inputs + b.outputs:
             if f.count:
                 out.append(f"    memcpy(m->{f.name}, fb->{f.name.upper()}.value.table, sizeof m->{f.name});")
@@ -494,7 +534,12 @@ def driver_c(hdr) -> str:
         out.append(f"static int ok_{b.lower};")
     out.append("")
     for b in hdr.blocks:
-        run = " || ".join(f"m.nState == {s}" for s in sorted(BLOCKS[b.name]["run"]))
+        if b.is_sf:
+            # run-like: 0x8000; error: DiagCode >= C000; "reset": idle (0000) after the error
+            run, err, rst = "m.DiagCode == 0x8000u", "m.DiagCode >= 0xC000u", "m.DiagCode == 0u"
+        else:
+            run = " || ".join(f"m.nState == {s}" for s in sorted(BLOCKS[b.name]["run"]))
+            err, rst = f"m.nState == {ERROR}", f"m.nState == {RESET}"
         out.append(f"static void step_{b.lower}(int k)")
         out.append("{")
         out.append(f"    MIR_{b.name} m;")
@@ -516,10 +561,11 @@ def driver_c(hdr) -> str:
         out.append(f'    CHECK(memcmp(m.stData, &d_{b.lower}, sizeof m.stData) == 0, "{b.name} cycle %d: the ST instance bytes differ from the direct call", k);')
         out.append(f"    if (rc == 0) ok_{b.lower}++;")
         out.append(f"    if ({run}) seen_{b.lower} |= (seen_{b.lower} & 4) ? 9u : 1u;")
-        out.append(f"    if (m.nState == {ERROR} && (seen_{b.lower} & 1)) seen_{b.lower} |= 2u;")
-        out.append(f"    if (m.nState == {RESET} && (seen_{b.lower} & 2)) seen_{b.lower} |= 4u;")
+        out.append(f"    if (({err}) && (seen_{b.lower} & 1)) seen_{b.lower} |= 2u;")
+        out.append(f"    if (({rst}) && (seen_{b.lower} & 2)) seen_{b.lower} |= 4u;")
+        state, diag = ("m.DiagCode", "m.DiagCode") if b.is_sf else ("m.nState", "m.nDiag")
         out.append("    if (getenv_trace()) printf(\"%s %2d rc %3d state %2u diag %04x\\n\", \"" + b.name +
-                   "\", k, (int)rc, (unsigned)m.nState, (unsigned)m.nDiag);")
+                   f"\", k, (int)rc, (unsigned){state}, (unsigned){diag});")
         out.append("}")
         out.append("")
     out.insert(out.index("static int passed, failed;"),
@@ -540,7 +586,7 @@ def driver_c(hdr) -> str:
         out.append(f'    CHECK(seen_{b.lower} == 15u, "{b.name}: run-like state, ERROR, RESET, run-like again: reached %s%s%s%s", '
                    f'(seen_{b.lower} & 1) ? "run " : "", (seen_{b.lower} & 2) ? "error " : "", '
                    f'(seen_{b.lower} & 4) ? "reset " : "", (seen_{b.lower} & 8) ? "run-again" : "");')
-        out.append(f'    printf("{b.name}: %d cycles through FB_{b.name}, %d returned SL_OK; run, ERROR, RESET, run again: %s\\n", '
+        out.append(f'    printf("{b.name}: %d cycles through {b.fb_name}, %d returned SL_OK; run, ERROR, RESET, run again: %s\\n", '
                    f'{N_CYCLES}, ok_{b.lower}, seen_{b.lower} == 15u ? "yes" : "NO");')
     out.append('    CHECK(seen_group == 15u, "group (ESTOP, MON -> AND): RUN, ERROR, RESET, RUN again not all reached (%u)", seen_group);')
     out.append(f'    printf("group (ESTOP, MON -> AND, 2 links) through FB_SL_GROUP: {N_CYCLES} cycles; RUN, ERROR, RESET, RUN again: %s\\n", seen_group == 15u ? "yes" : "NO");')
@@ -565,8 +611,8 @@ def compile_only(args, hdr) -> int:
     for p in gen.iterdir():
         p.unlink()
     prog = ["", "PROGRAM prog0", "VAR", "    fbSelfTest : FB_SL_SELFTEST;"]
-    prog += [f"    fb{b.name} : FB_{b.name};" for b in hdr.blocks]
-    prog += ["END_VAR", "fbSelfTest();"] + [f"fb{b.name}(tNow := UDINT#0);" for b in hdr.blocks]
+    prog += [f"    fb{b.name} : {b.fb_name};" for b in hdr.blocks]
+    prog += ["END_VAR", "fbSelfTest();"] + [f"fb{b.name}({'' if b.is_sf else 'tNow := UDINT#0'});" for b in hdr.blocks]
     prog += ["END_PROGRAM", "", "CONFIGURATION Config0", "  RESOURCE Res0 ON PLC",
              "    TASK task0(INTERVAL := T#10ms, PRIORITY := 0);", "    PROGRAM instance0 WITH task0 : prog0;",
              "  END_RESOURCE", "END_CONFIGURATION", ""]
@@ -597,7 +643,7 @@ def main() -> int:
         return compile_only(args, hdr)
     for b in hdr.blocks:
         BLOCK_INPUTS[b.name] = [f.name for f in b.inputs if f.ctype == "SL_BOOL" and not f.count]
-    missing = [b.name for b in hdr.blocks if b.name not in BLOCKS]
+    missing = [b.name for b in hdr.blocks if b.name not in BLOCKS and not b.is_sf]
     if missing:
         print(f"FAIL: no run script for {', '.join(missing)} in tools/plc_matiec_run.py BLOCKS")
         print("0 passed, 1 failed")

@@ -31,7 +31,8 @@ Rules (documented in plc_bindings/README.md and docs/plc-integration.md):
     stay inside the DUT only; an
     array of structs (a value table such as LOADSENSING's aRow) is an input like any array.
   * Types: SL_BOOL->BOOL, uint8/16/32/64->BYTE/WORD/DWORD/LWORD, int8/16/32/64->
-    SINT/INT/DINT/LINT; a uint32_t whose name starts with t / at (a millisecond time) is
+    SINT/INT/DINT/LINT; a uint32_t whose name starts with t / at, or a PLCopen name ending
+    in Time (DiscrepancyTime), is a millisecond time: it is
     UDINT in every DUT. In the TwinCAT/CODESYS function block such a non-array time is TIME
     (32-bit ms there) and converted with TIME_TO_UDINT / UDINT_TO_TIME; in the IEC flavour
     it stays UDINT (matiec's TIME is a timespec, not ms).
@@ -141,6 +142,15 @@ class Block:
     @property
     def lower(self) -> str:
         return self.name.lower()
+
+    @property
+    def is_sf(self) -> bool:
+        """A PLCopen Safety block: the struct SF_<Name> is the FB's name too."""
+        return self.struct.name.startswith("SF_")
+
+    @property
+    def fb_name(self) -> str:
+        return self.struct.name if self.is_sf else f"FB_{self.name}"
 
 
 @dataclass
@@ -342,10 +352,10 @@ def _layout(hdr: Header) -> None:
 
 def _find_blocks(hdr: Header) -> None:
     for name in hdr.order:
-        m = re.fullmatch(r"FB_(\w+)", name)
+        m = re.fullmatch(r"FB_(\w+)|(SF_\w+)", name)
         if not m:
             continue
-        bname = m.group(1)
+        bname = m.group(1) or m.group(2)
         cyc_name = f"sl_{bname.lower()}_cycle"
         cyc = [f for f in hdr.funcs if f.name == cyc_name]
         if not cyc:
@@ -395,8 +405,9 @@ def is_table(f: CField) -> bool:
 
 
 def is_time_ms(f: CField) -> bool:
+    """tDelay, atTimes (TwinSAFE), DiscrepancyTime, MonitoringTime (PLCopen's TIME inputs)."""
     return (not f.is_struct and f.ctype == "uint32_t"
-            and re.match(r"a?t[A-Z0-9]", f.name) is not None)
+            and (re.match(r"a?t[A-Z0-9]", f.name) is not None or re.fullmatch(r"[A-Z]\w*Time", f.name) is not None))
 
 
 def is_number(f: CField) -> bool:
@@ -628,7 +639,7 @@ def dut_decl(hdr: Header, fl: Flavour, st: CStruct) -> str:
 
 def fb_decl(hdr: Header, fl: Flavour, blk: Block) -> str:
     dname = dut_name(hdr, blk.struct.name)
-    out = [f"FUNCTION_BLOCK FB_{blk.name}"]
+    out = [f"FUNCTION_BLOCK {blk.fb_name}"]
     out.append(f"(* {ascii_doc(blk.struct.doc)} ST wrapper: owns one {dname} (the C layout), copies the "
                f"inputs into it, calls {blk.cycle.name} with its address and the task time, copies the outputs back. *)")
     out.append("VAR_INPUT")
@@ -637,8 +648,10 @@ def fb_decl(hdr: Header, fl: Flavour, blk: Block) -> str:
         init = "" if f.count is not None else f" := {zero_literal(t, fl.iec)}"
         note = f.doc + (" (ms)" if is_time_ms(f) and t != "TIME" and " ms" not in f.doc else "")
         out.append(f"    {f.name} : {t}{init};{cmt(note)}")
-    out.append(f"    tNow : UDINT := {zero_literal('UDINT', fl.iec)};"
-               f"{cmt('Task time in ms: monotonic, may wrap at 2^32 (sl_time_now_ms or the PLC ms counter as UDINT).')}")
+    tnow = (f"    tNow : UDINT := {zero_literal('UDINT', fl.iec)};"
+            f"{cmt('Task time in ms: monotonic, may wrap at 2^32 (sl_time_now_ms or the PLC ms counter as UDINT).')}")
+    if not blk.is_sf:
+        out.append(tnow)
     out.append("END_VAR")
     out.append("VAR_OUTPUT")
     for f in blk.outputs:
@@ -650,8 +663,19 @@ def fb_decl(hdr: Header, fl: Flavour, blk: Block) -> str:
     out.append("END_VAR")
     out.append("VAR")
     out.append(f"    stData : {dname};{cmt(f'The C instance (struct {blk.struct.name}); private part never written here.')}")
+    if blk.is_sf:
+        # A PLCopen FB has exactly the PLCopen inputs (plus the profile): the time is read
+        # in the FB, so a user's existing call compiles and its timers run.
+        out.append(tnow.replace("Task time in ms", "Read in every call from " + sf_time_source(fl) + ". Time in ms"))
     out.append("END_VAR")
     return "\n".join(out) + "\n"
+
+
+def sf_time_source(fl: Flavour) -> str:
+    """The ms clock a PLCopen FB reads: the library's monotonic clock where the FB reaches
+    C through inline C (IEC/matiec), the PLC's TIME() since start elsewhere."""
+    # matiec wants a parameter in every function call: EN, the standard one.
+    return f"{fl.fn_name('sl_time_now_ms')}(EN := TRUE)" if fl.iec else "TIME_TO_UDINT(TIME())"
 
 
 def _assign(lhs: str, rhs_tmpl: str, rhs: str) -> str:
@@ -667,6 +691,8 @@ def fb_body(hdr: Header, fl: Flavour, blk: Block) -> str:
         else:
             for k in range(f.count):
                 out.append(_assign(f"stData.{f.name}[{k}]", to_dut, f"{f.name}[{k}]"))
+    if blk.is_sf:
+        out.append(f"tNow := {sf_time_source(fl)};")
     pnames = [st_param_name(p) for p in blk.cycle.params]
     call = (f"{fl.fn_name(blk.cycle.name)}({pnames[0]} := {fl.addr()}(stData), {pnames[1]} := tNow)")
     out.append("(* one task cycle *)")
@@ -680,7 +706,7 @@ def fb_body(hdr: Header, fl: Flavour, blk: Block) -> str:
             for k in range(f.count):
                 out.append(f"    {f.name}[{k}] := {zero_literal(t.split(' OF ')[-1], fl.iec)};")
             continue
-        if f.name == "bError" and t == "BOOL":
+        if f.name == "bError" and t == "BOOL" and not blk.is_sf:
             val = "TRUE"
         elif f.name == "nState" and any(d.name == "SL_STATE_ERROR" for d in hdr.defines):
             val = fl.const(hdr, "SL_STATE_ERROR", t)
@@ -940,7 +966,8 @@ def iec_selftest_function(hdr: Header) -> Tuple[str, str]:
         dn = dut_name(hdr, name)
         v = "sl_plc_" + dn.lower()
         lines.append("{")
-        lines.append(f"  {dn} {v};")
+        # matiec names the C struct of a DUT in upper case (ST_SF_EmergencyStop too).
+        lines.append(f"  {dn.upper()} {v};")
         lines.append(f"  SL_SELFTEST_LAYOUT += (sizeof({v}) != {st.size});")
         for f in st.fields:
             lines.append(f"  SL_SELFTEST_LAYOUT += ((char *)&{v}.{f.name.upper()} - (char *)&{v} != {f.offset});")
@@ -1278,7 +1305,7 @@ def objects(hdr: Header, fl: Flavour) -> List[Pou]:
     for f in funcs:
         objs.append(Pou("POU", fl.fn_name(f.name), func_decl(hdr, fl, f), func_body(hdr, fl, f), end="END_FUNCTION"))
     for b in hdr.blocks:
-        objs.append(Pou("POU", f"FB_{b.name}", fb_decl(hdr, fl, b), fb_body(hdr, fl, b), end="END_FUNCTION_BLOCK"))
+        objs.append(Pou("POU", b.fb_name, fb_decl(hdr, fl, b), fb_body(hdr, fl, b), end="END_FUNCTION_BLOCK"))
     if fl.iec:
         objs += iec_group_objects(hdr, fl)
         objs += iec_text_functions(hdr)
@@ -1641,6 +1668,10 @@ def adapter_test_c(hdr: Header) -> str:
         settings = [f for f in params if not re.search(r"active bit \d+", f.doc)]  # not analog inputs
         bump = ([f for f in settings if is_time_ms(f) and f.count is None] +
                 [f for f in settings if f.name == "wInputNegated"] + [f for f in settings if f.count is None])
+        if b.is_sf:
+            # A changed PLCopen constant is a fault until Activate FALSE (semantics PO6): the
+            # random test reaches its errors through the static-reset rule instead.
+            bump = []
         run_outs = [f for f in b.outputs if C_SCALARS.get(f.ctype, (0, 0, False))[2] and f.count is None
                     and f.name != "bError"]
         out.append(f"static void rnd_config_{b.lower}({s} *x)")
@@ -1705,7 +1736,8 @@ def adapter_test_c(hdr: Header) -> str:
         else:
             out.append(f"        valid = {cyc}(&x, 0u) == SL_OK;")
         out.append("        if (valid == want_valid) {")
-        out.append("            memset(&x.bRun, 0, 0); /* keep x's parameters, reset the instance */")
+        if not b.is_sf:
+            out.append("            memset(&x.bRun, 0, 0); /* keep x's parameters, reset the instance */")
         out.append("            memset(a, 0, sizeof *a);")
         out.append(f"            rnd_config_{b.lower}(a); /* placeholder, overwritten below */")
         for f in params:
@@ -1758,15 +1790,20 @@ def adapter_test_c(hdr: Header) -> str:
         out.append("            continue;")
         out.append("        }")
         out.append("        if (!valid) inv_config++;")
+        # A PLCopen Reset is driven like a signal (mostly held): held into a wait-for-reset
+        # state it is the static-reset error, the error a PLCopen block reaches here.
+        pulses = ("bRestart", "bErrAck")
         for f in sig:
-            out.append(f"        a.{f.name} = b.{f.name} = (uint8_t)({0 if f.name in ('bRestart', 'bErrAck') else 1});")
+            out.append(f"        a.{f.name} = b.{f.name} = (uint8_t)({0 if f.name in pulses else 1});")
         out.append("        bump = 20 + (int)(rnd() % 20u);")
+        if not bump:
+            out.append("        (void)bump; /* no parameter to change while running */")
         out.append("        pol = (c % 2 == 1) ? rnd() : 0u;")
         out.append("        for (k = 0; k < 50; k++) {")
         out.append("            int32_t direct;")
         out.append("            next_machine();")
         for f in sig:
-            pulse = 1 if f.name in ("bRestart", "bErrAck") else 0
+            pulse = 1 if f.name in pulses else 0
             out.append(f"            a.{f.name} = b.{f.name} = next_signal(a.{f.name}, {pulse}, pol >> {sig.index(f)});")
         if any(f.name == "bRun" for f in b.inputs):
             out.append("            a.bRun = b.bRun = (uint8_t)(k >= 2 && rnd() % 100u != 0u);")
@@ -1784,11 +1821,16 @@ def adapter_test_c(hdr: Header) -> str:
         out.append("            cycles++;")
         out.append("            if (direct == SL_OK) ok++;")
         out.append("            if (direct <= 0 && direct > -12) hist[-direct]++;")
-        out.append("            if (b.nState == SL_STATE_ERROR) reached_error = 1;")
-        if run_outs:
+        if b.is_sf:
+            # PLCopen: the state is the DiagCode (semantics PO5).
+            out.append("            if (b.DiagCode >= 0xC000u) reached_error = 1;")
+            out.append("            if (b.DiagCode == 0x8000u) reached_run = 1;")
+        elif run_outs:
+            out.append("            if (b.nState == SL_STATE_ERROR) reached_error = 1;")
             cond = " || ".join(f"b.{f.name}" for f in run_outs)
             out.append(f"            if (b.nState != SL_STATE_STOP && b.nState != SL_STATE_ERROR && b.nState != SL_STATE_RESET && ({cond})) reached_run = 1;")
         else:
+            out.append("            if (b.nState == SL_STATE_ERROR) reached_error = 1;")
             out.append("            if (b.nState != SL_STATE_STOP && b.nState != SL_STATE_ERROR && b.nState != SL_STATE_RESET && b.nState != SL_STATE_SAFE) reached_run = 1;")
         out.append("        }")
         out.append("    }")
@@ -1864,7 +1906,7 @@ def adapter_test_c(hdr: Header) -> str:
 
 def readme(hdr: Header) -> str:
     rows = "\n".join(
-        f"| `{b.struct.name}` ({b.struct.size} bytes) | `ST_{b.struct.name}` | `FB_{b.name}` | "
+        f"| `{b.struct.name}` ({b.struct.size} bytes) | `ST_{b.struct.name}` | `{b.fb_name}` | "
         f"`{b.cycle.name}` | `{b.cycle.name}` (forwarder to TcCOM) | `cds_{b.cycle.name}` | `{b.cycle.name.upper()}` |"
         for b in hdr.blocks)
     others = ", ".join(f"`{n}`" for n in hdr.order if not any(b.struct.name == n for b in hdr.blocks))
@@ -2053,7 +2095,7 @@ def main(argv: Optional[List[str]] = None) -> int:
         return check(files, args.out)
     write_tree(files, args.out)
     print(f"plcgen: wrote {len(files)} files for {len(hdr.blocks)} blocks "
-          f"({', '.join('FB_' + b.name for b in hdr.blocks)}) to {args.out}")
+          f"({', '.join(b.fb_name for b in hdr.blocks)}) to {args.out}")
     return 0
 
 

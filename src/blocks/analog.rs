@@ -126,7 +126,9 @@ pub const fn pick<T: Analog>(variants: &[(usize, u16, &'static str)]) -> (u16, &
 /// The block types ABI-2 §10.2 lays out: every tag from 16 except FB_CONNECTION_SHUTDOWN,
 /// which is BOOL-only with "the 8-byte info of §9" (ABI-2 §10.2, §11.1).
 pub const fn has_analog_layout(tag: u16) -> bool {
-    tag >= 16 && tag != crate::blocks::connshutdown::SL_TYPE_CONNECTION_SHUTDOWN
+    tag >= 16
+        && tag < crate::registry::SF_TAG_BASE
+        && tag != crate::blocks::connshutdown::SL_TYPE_CONNECTION_SHUTDOWN
 }
 
 /// ABI-2 §10.2's layout rule, checked on a block's field table: BOOL inputs in 0–15 (link

@@ -3,7 +3,10 @@
 //! combinational blocks (AND, OR, XOR, DECOUPLE) in `logic`, RS and SR (§4.10, §4.11) in
 //! `flipflop`, the timers TON, TON2 and TOF (§4.12–§4.14) in `timer`, SLI and SLI2
 //! (§4.27, §4.28) in `window`. OPMODE (§4.3), TWOHAND (§4.7), MUTING (§4.8) and EDM (§4.9)
-//! have state machines of their own.
+//! have state machines of their own. The PLCopen Safety blocks (`sf_*`, struct names
+//! `SF_<Name>`) run in the PLCopen envelope (`prim::sf`); SF_EmergencyStop, SF_ESPE and
+//! SF_PSE share the restart-interlock machine of `sf_restart`, SF_Equivalent and
+//! SF_Antivalent the two-channel machine of `sf_pair`.
 
 pub mod advposmon;
 pub mod analog;
@@ -29,6 +32,13 @@ pub mod or;
 pub mod rs;
 pub mod sbt;
 pub mod scale;
+pub mod sf_antivalent;
+pub mod sf_emergencystop;
+pub mod sf_equivalent;
+pub mod sf_espe;
+pub mod sf_pair;
+pub mod sf_pse;
+pub mod sf_restart;
 pub mod sli;
 pub mod sli2;
 pub mod slp;
@@ -159,10 +169,16 @@ pub const LIBRARY_DIAG: &[(u16, &str)] = &[
     (crate::types::SL_DIAG_CORRUPT, "private state corrupt"),
 ];
 
-/// Writes the names of the bits set in `diag` into `out`, separated by "; ", truncated to
+/// Writes the names of the bits set in `diag` into `out` (a PLCopen block: the text of the
+/// DiagCode `diag`), separated by "; ", truncated to
 /// fit; returns the number of bytes written (no NUL).
 pub fn diag_text(block: &BlockInfo, diag: u16, out: &mut [u8]) -> usize {
     let mut w = Writer { out, len: 0 };
+    // A PLCopen DiagCode is one value (state or error) of either profile, never bits.
+    if crate::registry::family(block.tag) == crate::registry::Family::PlcOpen {
+        w.push(crate::prim::sf::diag_text(block.diag_values, diag).unwrap_or("unknown DiagCode"));
+        return w.len;
+    }
     let mut bits = diag;
     if !block.diag_values.is_empty() {
         let value = diag & !crate::types::LIBRARY_DIAG_BITS;

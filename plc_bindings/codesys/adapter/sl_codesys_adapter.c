@@ -1210,6 +1210,86 @@ void CDECL CDECL_EXT cds_sl_connection_shutdown_cycle(cds_sl_connection_shutdown
     p->cds_sl_connection_shutdown_cycle = sl_connection_shutdown_cycle(p->pFb, p->tNow);
 }
 
+void CDECL CDECL_EXT cds_sl_sf_emergencystop_init(cds_sl_sf_emergencystop_init_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_sf_emergencystop_init = sl_sf_emergencystop_init(p->pFb);
+}
+
+void CDECL CDECL_EXT cds_sl_sf_emergencystop_cycle(cds_sl_sf_emergencystop_cycle_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_sf_emergencystop_cycle = sl_sf_emergencystop_cycle(p->pFb, p->tNow);
+}
+
+void CDECL CDECL_EXT cds_sl_sf_espe_init(cds_sl_sf_espe_init_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_sf_espe_init = sl_sf_espe_init(p->pFb);
+}
+
+void CDECL CDECL_EXT cds_sl_sf_espe_cycle(cds_sl_sf_espe_cycle_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_sf_espe_cycle = sl_sf_espe_cycle(p->pFb, p->tNow);
+}
+
+void CDECL CDECL_EXT cds_sl_sf_pse_init(cds_sl_sf_pse_init_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_sf_pse_init = sl_sf_pse_init(p->pFb);
+}
+
+void CDECL CDECL_EXT cds_sl_sf_pse_cycle(cds_sl_sf_pse_cycle_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_sf_pse_cycle = sl_sf_pse_cycle(p->pFb, p->tNow);
+}
+
+void CDECL CDECL_EXT cds_sl_sf_equivalent_init(cds_sl_sf_equivalent_init_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_sf_equivalent_init = sl_sf_equivalent_init(p->pFb);
+}
+
+void CDECL CDECL_EXT cds_sl_sf_equivalent_cycle(cds_sl_sf_equivalent_cycle_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_sf_equivalent_cycle = sl_sf_equivalent_cycle(p->pFb, p->tNow);
+}
+
+void CDECL CDECL_EXT cds_sl_sf_antivalent_init(cds_sl_sf_antivalent_init_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_sf_antivalent_init = sl_sf_antivalent_init(p->pFb);
+}
+
+void CDECL CDECL_EXT cds_sl_sf_antivalent_cycle(cds_sl_sf_antivalent_cycle_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_sf_antivalent_cycle = sl_sf_antivalent_cycle(p->pFb, p->tNow);
+}
+
 void CDECL CDECL_EXT cds_sl_time_now_ms(cds_sl_time_now_ms_struct *p)
 {
     if (p == 0) {

@@ -1159,6 +1159,81 @@ typedef struct tagcds_sl_connection_shutdown_cycle_struct {
 } cds_sl_connection_shutdown_cycle_struct;
 void CDECL CDECL_EXT cds_sl_connection_shutdown_cycle(cds_sl_connection_shutdown_cycle_struct *p);
 
+/* FUNCTION cds_sl_sf_emergencystop_init : DINT -> sl_sf_emergencystop_init() */
+typedef struct tagcds_sl_sf_emergencystop_init_struct {
+    struct SF_EmergencyStop *pFb; /* VAR_INPUT pFb : POINTER TO ST_SF_EmergencyStop */
+    int32_t cds_sl_sf_emergencystop_init; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_sf_emergencystop_init_struct;
+void CDECL CDECL_EXT cds_sl_sf_emergencystop_init(cds_sl_sf_emergencystop_init_struct *p);
+
+/* FUNCTION cds_sl_sf_emergencystop_cycle : DINT -> sl_sf_emergencystop_cycle() */
+typedef struct tagcds_sl_sf_emergencystop_cycle_struct {
+    struct SF_EmergencyStop *pFb; /* VAR_INPUT pFb : POINTER TO ST_SF_EmergencyStop */
+    uint32_t tNow; /* VAR_INPUT tNow : UDINT */
+    int32_t cds_sl_sf_emergencystop_cycle; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_sf_emergencystop_cycle_struct;
+void CDECL CDECL_EXT cds_sl_sf_emergencystop_cycle(cds_sl_sf_emergencystop_cycle_struct *p);
+
+/* FUNCTION cds_sl_sf_espe_init : DINT -> sl_sf_espe_init() */
+typedef struct tagcds_sl_sf_espe_init_struct {
+    struct SF_ESPE *pFb; /* VAR_INPUT pFb : POINTER TO ST_SF_ESPE */
+    int32_t cds_sl_sf_espe_init; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_sf_espe_init_struct;
+void CDECL CDECL_EXT cds_sl_sf_espe_init(cds_sl_sf_espe_init_struct *p);
+
+/* FUNCTION cds_sl_sf_espe_cycle : DINT -> sl_sf_espe_cycle() */
+typedef struct tagcds_sl_sf_espe_cycle_struct {
+    struct SF_ESPE *pFb; /* VAR_INPUT pFb : POINTER TO ST_SF_ESPE */
+    uint32_t tNow; /* VAR_INPUT tNow : UDINT */
+    int32_t cds_sl_sf_espe_cycle; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_sf_espe_cycle_struct;
+void CDECL CDECL_EXT cds_sl_sf_espe_cycle(cds_sl_sf_espe_cycle_struct *p);
+
+/* FUNCTION cds_sl_sf_pse_init : DINT -> sl_sf_pse_init() */
+typedef struct tagcds_sl_sf_pse_init_struct {
+    struct SF_PSE *pFb; /* VAR_INPUT pFb : POINTER TO ST_SF_PSE */
+    int32_t cds_sl_sf_pse_init; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_sf_pse_init_struct;
+void CDECL CDECL_EXT cds_sl_sf_pse_init(cds_sl_sf_pse_init_struct *p);
+
+/* FUNCTION cds_sl_sf_pse_cycle : DINT -> sl_sf_pse_cycle() */
+typedef struct tagcds_sl_sf_pse_cycle_struct {
+    struct SF_PSE *pFb; /* VAR_INPUT pFb : POINTER TO ST_SF_PSE */
+    uint32_t tNow; /* VAR_INPUT tNow : UDINT */
+    int32_t cds_sl_sf_pse_cycle; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_sf_pse_cycle_struct;
+void CDECL CDECL_EXT cds_sl_sf_pse_cycle(cds_sl_sf_pse_cycle_struct *p);
+
+/* FUNCTION cds_sl_sf_equivalent_init : DINT -> sl_sf_equivalent_init() */
+typedef struct tagcds_sl_sf_equivalent_init_struct {
+    struct SF_Equivalent *pFb; /* VAR_INPUT pFb : POINTER TO ST_SF_Equivalent */
+    int32_t cds_sl_sf_equivalent_init; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_sf_equivalent_init_struct;
+void CDECL CDECL_EXT cds_sl_sf_equivalent_init(cds_sl_sf_equivalent_init_struct *p);
+
+/* FUNCTION cds_sl_sf_equivalent_cycle : DINT -> sl_sf_equivalent_cycle() */
+typedef struct tagcds_sl_sf_equivalent_cycle_struct {
+    struct SF_Equivalent *pFb; /* VAR_INPUT pFb : POINTER TO ST_SF_Equivalent */
+    uint32_t tNow; /* VAR_INPUT tNow : UDINT */
+    int32_t cds_sl_sf_equivalent_cycle; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_sf_equivalent_cycle_struct;
+void CDECL CDECL_EXT cds_sl_sf_equivalent_cycle(cds_sl_sf_equivalent_cycle_struct *p);
+
+/* FUNCTION cds_sl_sf_antivalent_init : DINT -> sl_sf_antivalent_init() */
+typedef struct tagcds_sl_sf_antivalent_init_struct {
+    struct SF_Antivalent *pFb; /* VAR_INPUT pFb : POINTER TO ST_SF_Antivalent */
+    int32_t cds_sl_sf_antivalent_init; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_sf_antivalent_init_struct;
+void CDECL CDECL_EXT cds_sl_sf_antivalent_init(cds_sl_sf_antivalent_init_struct *p);
+
+/* FUNCTION cds_sl_sf_antivalent_cycle : DINT -> sl_sf_antivalent_cycle() */
+typedef struct tagcds_sl_sf_antivalent_cycle_struct {
+    struct SF_Antivalent *pFb; /* VAR_INPUT pFb : POINTER TO ST_SF_Antivalent */
+    uint32_t tNow; /* VAR_INPUT tNow : UDINT */
+    int32_t cds_sl_sf_antivalent_cycle; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_sf_antivalent_cycle_struct;
+void CDECL CDECL_EXT cds_sl_sf_antivalent_cycle(cds_sl_sf_antivalent_cycle_struct *p);
+
 /* FUNCTION cds_sl_time_now_ms : UDINT -> sl_time_now_ms() */
 typedef struct tagcds_sl_time_now_ms_struct {
     uint32_t cds_sl_time_now_ms; /* VAR_OUTPUT (return value) UDINT */
@@ -1409,6 +1484,16 @@ void CDECL CDECL_EXT cds_sl_diag_text(cds_sl_diag_text_struct *p);
     X(cds_sl_advposmon_cycle) \
     X(cds_sl_connection_shutdown_init) \
     X(cds_sl_connection_shutdown_cycle) \
+    X(cds_sl_sf_emergencystop_init) \
+    X(cds_sl_sf_emergencystop_cycle) \
+    X(cds_sl_sf_espe_init) \
+    X(cds_sl_sf_espe_cycle) \
+    X(cds_sl_sf_pse_init) \
+    X(cds_sl_sf_pse_cycle) \
+    X(cds_sl_sf_equivalent_init) \
+    X(cds_sl_sf_equivalent_cycle) \
+    X(cds_sl_sf_antivalent_init) \
+    X(cds_sl_sf_antivalent_cycle) \
     X(cds_sl_time_now_ms) \
     X(cds_sl_ton2_get_elapsed) \
     X(cds_sl_group_init) \

@@ -1366,6 +1366,96 @@ HRESULT CSafeLogicModule::sl_connection_shutdown_cycle(PVOID pFb, int32_t *pnRes
     return S_OK;
 }
 
+HRESULT CSafeLogicModule::sl_sf_emergencystop_init(PVOID pFb, int32_t *pnResult)
+{
+    if (pFb == NULL || pnResult == NULL) {
+        return E_POINTER;
+    }
+    *pnResult = ::sl_sf_emergencystop_init(static_cast<struct SF_EmergencyStop *>(pFb));
+    return S_OK;
+}
+
+HRESULT CSafeLogicModule::sl_sf_emergencystop_cycle(PVOID pFb, int32_t *pnResult, uint32_t tNow)
+{
+    if (pFb == NULL || pnResult == NULL) {
+        return E_POINTER;
+    }
+    *pnResult = ::sl_sf_emergencystop_cycle(static_cast<struct SF_EmergencyStop *>(pFb), tNow);
+    return S_OK;
+}
+
+HRESULT CSafeLogicModule::sl_sf_espe_init(PVOID pFb, int32_t *pnResult)
+{
+    if (pFb == NULL || pnResult == NULL) {
+        return E_POINTER;
+    }
+    *pnResult = ::sl_sf_espe_init(static_cast<struct SF_ESPE *>(pFb));
+    return S_OK;
+}
+
+HRESULT CSafeLogicModule::sl_sf_espe_cycle(PVOID pFb, int32_t *pnResult, uint32_t tNow)
+{
+    if (pFb == NULL || pnResult == NULL) {
+        return E_POINTER;
+    }
+    *pnResult = ::sl_sf_espe_cycle(static_cast<struct SF_ESPE *>(pFb), tNow);
+    return S_OK;
+}
+
+HRESULT CSafeLogicModule::sl_sf_pse_init(PVOID pFb, int32_t *pnResult)
+{
+    if (pFb == NULL || pnResult == NULL) {
+        return E_POINTER;
+    }
+    *pnResult = ::sl_sf_pse_init(static_cast<struct SF_PSE *>(pFb));
+    return S_OK;
+}
+
+HRESULT CSafeLogicModule::sl_sf_pse_cycle(PVOID pFb, int32_t *pnResult, uint32_t tNow)
+{
+    if (pFb == NULL || pnResult == NULL) {
+        return E_POINTER;
+    }
+    *pnResult = ::sl_sf_pse_cycle(static_cast<struct SF_PSE *>(pFb), tNow);
+    return S_OK;
+}
+
+HRESULT CSafeLogicModule::sl_sf_equivalent_init(PVOID pFb, int32_t *pnResult)
+{
+    if (pFb == NULL || pnResult == NULL) {
+        return E_POINTER;
+    }
+    *pnResult = ::sl_sf_equivalent_init(static_cast<struct SF_Equivalent *>(pFb));
+    return S_OK;
+}
+
+HRESULT CSafeLogicModule::sl_sf_equivalent_cycle(PVOID pFb, int32_t *pnResult, uint32_t tNow)
+{
+    if (pFb == NULL || pnResult == NULL) {
+        return E_POINTER;
+    }
+    *pnResult = ::sl_sf_equivalent_cycle(static_cast<struct SF_Equivalent *>(pFb), tNow);
+    return S_OK;
+}
+
+HRESULT CSafeLogicModule::sl_sf_antivalent_init(PVOID pFb, int32_t *pnResult)
+{
+    if (pFb == NULL || pnResult == NULL) {
+        return E_POINTER;
+    }
+    *pnResult = ::sl_sf_antivalent_init(static_cast<struct SF_Antivalent *>(pFb));
+    return S_OK;
+}
+
+HRESULT CSafeLogicModule::sl_sf_antivalent_cycle(PVOID pFb, int32_t *pnResult, uint32_t tNow)
+{
+    if (pFb == NULL || pnResult == NULL) {
+        return E_POINTER;
+    }
+    *pnResult = ::sl_sf_antivalent_cycle(static_cast<struct SF_Antivalent *>(pFb), tNow);
+    return S_OK;
+}
+
 HRESULT CSafeLogicModule::sl_ton2_get_elapsed(PVOID pFb, int32_t *pnResult, uint32_t * pPElapsedMs)
 {
     if (pFb == NULL || pnResult == NULL) {
