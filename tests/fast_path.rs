@@ -1,5 +1,5 @@
 //! Issue 13: the steady-state fast path (`prim::envelope`, docs/performance.md) is pinned to
-//! the full cycle. For every registered type, random sequences drive two copies of one
+//! the full cycle. For every registered TwinSAFE type (the SF_ blocks have their own envelope, `prim::sf`), random sequences drive two copies of one
 //! instance — one through `cycle` (fast path where it applies), one through `cycle_full`
 //! (always the full cycle) — and after every call the two are byte for byte the same (every
 //! field, outputs, nState, nDiag and the private state) with the same status. Inputs mostly
@@ -169,7 +169,7 @@ macro_rules! pin {
     };
 }
 
-safelogic::for_each_block!(pin);
+safelogic::for_each_twinsafe_block!(pin);
 
 /// ESTOP and MON driven the way a machine drives them: a configuration with a pair, an
 /// output delay and (half the time) EDM1 with a reset time, both channels switched together
