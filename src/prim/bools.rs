@@ -144,6 +144,12 @@ mod tests {
                 b[at] = bad;
                 assert_eq!(key(b), None, "{b:?}");
             }
+            // The same bad byte in both halves (bytes i and i + 8) must not cancel out.
+            for at in 0..8 {
+                let mut b = [0u8; 16];
+                (b[at], b[at + 8]) = (bad, bad);
+                assert_eq!(key(b), None, "{b:?}");
+            }
         }
     }
 
