@@ -205,12 +205,15 @@ def sf_script(name: str) -> dict:
                  20: {safety: 0}, 22: {safety: 1}}
     else:
         # Two channels (SF_Equivalent, SF_Antivalent: a NO channel is active FALSE), the
-        # DiscrepancyTime left at its default 0: both active (8000), one inactive (8806,
-        # then the discrepancy error C030), both inactive (8801), Activate FALSE, again.
+        # DiscrepancyTime (TIME) left at its default T#0ms: both active (8000), one inactive
+        # (8806, then the discrepancy error C030), both inactive (8801), Activate FALSE; then
+        # DiscrepancyTime := T#93784005ms (1d2h3m4s5ms: the instance must latch 93,784,005,
+        # the probe converting matiec's TIME independently) and again.
         a, b = ins[1], ins[2]
         on_b = 0 if b.endswith("NO") else 1
         steps = {0: {"Activate": 0, a: 0, b: 1 - on_b}, 2: {"Activate": 1}, 4: {a: 1, b: on_b},
-                 8: {a: 0}, 12: {b: 1 - on_b}, 14: {a: 1, b: on_b}, 16: {"Activate": 0},
+                 8: {a: 0}, 12: {b: 1 - on_b}, 14: {a: 1, b: on_b},
+                 16: {"Activate": 0, "DiscrepancyTime": 93784005},
                  18: {"Activate": 1}, 22: {a: 0, b: 1 - on_b}}
     cur = {f: 0 for f in ins}
     for c in sorted(steps):
@@ -276,9 +279,11 @@ def st_literal(hdr, fl, blk, field: str, value: int) -> str:
     f = [x for x in blk.inputs if x.name == field]
     if not f:
         raise SystemExit(f"{blk.name}: no input {field}")
-    t, _, _ = fl.fb_type(hdr, f[0])
+    t, _, _ = fl.fb_type(hdr, f[0], blk.is_sf)
     if t == "BOOL":
         return "TRUE" if value else "FALSE"
+    if t == "TIME":
+        return f"T#{value}ms"
     return f"{t}#{value}"
 
 
@@ -513,6 +518,10 @@ def probe_c(hdr) -> str:
         for f in b.inputs + b.outputs:
             if f.count:
                 out.append(f"    memcpy(m->{f.name}, fb->{f.name.upper()}.value.table, sizeof m->{f.name});")
+            elif b.is_sf and plcgen.is_time_ms(f):
+                # a PLCopen TIME input: matiec's timespec in ms, converted here independently
+                out.append(f"    m->{f.name} = (uint32_t)(fb->{f.name.upper()}.value.tv_sec * 1000L"
+                           f" + fb->{f.name.upper()}.value.tv_nsec / 1000000L);")
             else:
                 out.append(f"    m->{f.name} = fb->{f.name.upper()}.value;")
         out.append("    m->tNow = fb->TNOW.value;")
