@@ -452,6 +452,11 @@ impl group::Links for CLinks {
         // (sl_group_init contract); read by value.
         (i < self.count).then(|| unsafe { self.base.add(i).read() })
     }
+    fn dst(&self, i: usize) -> Option<u16> {
+        // SAFETY: as in `get`; only the (2-aligned) nDstMember field is read.
+        (i < self.count)
+            .then(|| unsafe { core::ptr::addr_of!((*self.base.add(i)).nDstMember).read() })
+    }
     fn words(&self, i: usize) -> Option<[u64; 2]> {
         // SAFETY: as in `get`; a link is 12 bytes without padding: read as a 64-bit and a
         // 32-bit word (2-aligned, so unaligned reads).
