@@ -30,7 +30,7 @@ static void po_estop(SF_EmergencyStop *fb, uint32_t t, int32_t xrc, uint16_t xco
     h_check_int(outs, xouts, file, line, "SF_EmergencyStop outputs (Ready, S_EStopOut, SafetyDemand, ResetRequest, Error)");
 }
 
-#define ES(t_, code_, outs_) po_estop(fb, (t_), SL_OK, (code_), (outs_), __FILE__, __LINE__)
+#define PES(t_, code_, outs_) po_estop(fb, (t_), SL_OK, (code_), (outs_), __FILE__, __LINE__)
 
 static void po_estop_table(void)
 {
@@ -40,61 +40,61 @@ static void po_estop_table(void)
     h_begin("SF_EmergencyStop: the table of research 4.1 with the PLCopen names (v2.01)");
     memset(&e, 0, sizeof e);
     CHECK_INT(sl_sf_emergencystop_init(fb), SL_OK);
-    ES(0, 0x0000, 0);
+    PES(0, 0x0000, 0);
     fb->Activate = 1;
-    ES(10, 0x8001, PO_READY);                    /* IDLE -> INIT, the one transition */
-    ES(20, 0x8802, PO_READY | PO_DEMAND);        /* no S_StartReset: wait for the input */
+    PES(10, 0x8001, PO_READY);                    /* IDLE -> INIT, the one transition */
+    PES(20, 0x8802, PO_READY | PO_DEMAND);        /* no S_StartReset: wait for the input */
     fb->S_EStopIn = 1;
-    ES(30, 0x8402, PO_READY | PO_RESREQ);        /* input TRUE: wait for the Reset edge */
+    PES(30, 0x8402, PO_READY | PO_RESREQ);        /* input TRUE: wait for the Reset edge */
     fb->Reset = 1;
-    ES(40, 0x8000, PO_READY | PO_OUT);           /* R_TRIG(Reset): output enabled */
+    PES(40, 0x8000, PO_READY | PO_OUT);           /* R_TRIG(Reset): output enabled */
     fb->Reset = 0;
-    ES(50, 0x8000, PO_READY | PO_OUT);
+    PES(50, 0x8000, PO_READY | PO_OUT);
     fb->S_EStopIn = 0;
-    ES(60, 0x8804, PO_READY | PO_DEMAND);        /* safety demand: output FALSE in this call */
+    PES(60, 0x8804, PO_READY | PO_DEMAND);        /* safety demand: output FALSE in this call */
     fb->Reset = 1;
-    ES(70, 0x8804, PO_READY | PO_DEMAND);        /* no static-reset check while waiting for the input */
+    PES(70, 0x8804, PO_READY | PO_DEMAND);        /* no static-reset check while waiting for the input */
     fb->S_EStopIn = 1;
-    ES(80, 0x8404, PO_READY);                    /* ResetRequest FALSE while Reset is held */
-    ES(90, 0xC011, PO_READY | PO_ERROR);         /* Reset held into the wait: static reset */
+    PES(80, 0x8404, PO_READY);                    /* ResetRequest FALSE while Reset is held */
+    PES(90, 0xC011, PO_READY | PO_ERROR);         /* Reset held into the wait: static reset */
     fb->Reset = 0;
-    ES(100, 0x8404, PO_READY | PO_RESREQ);
+    PES(100, 0x8404, PO_READY | PO_RESREQ);
     fb->Reset = 1;
-    ES(110, 0x8000, PO_READY | PO_OUT);
+    PES(110, 0x8000, PO_READY | PO_OUT);
     fb->Activate = 0;
-    ES(120, 0x0000, 0);                          /* Activate FALSE: idle, every output FALSE */
+    PES(120, 0x0000, 0);                          /* Activate FALSE: idle, every output FALSE */
     fb->Reset = 0;
     fb->S_StartReset = 1;
     fb->S_AutoReset = 1;
     fb->Activate = 1;
-    ES(130, 0x8001, PO_READY);
-    ES(140, 0x8000, PO_READY | PO_OUT);          /* S_StartReset: no reset at start-up */
+    PES(130, 0x8001, PO_READY);
+    PES(140, 0x8000, PO_READY | PO_OUT);          /* S_StartReset: no reset at start-up */
     fb->S_EStopIn = 0;
-    ES(150, 0x8804, PO_READY | PO_DEMAND);
+    PES(150, 0x8804, PO_READY | PO_DEMAND);
     fb->S_EStopIn = 1;
-    ES(160, 0x8000, PO_READY | PO_OUT);          /* S_AutoReset after a safety demand */
+    PES(160, 0x8000, PO_READY | PO_OUT);          /* S_AutoReset after a safety demand */
     CHECK_INT(sl_diag_text(SL_TYPE_SF_EMERGENCYSTOP, 0xC011, text, sizeof text), SL_OK);
     CHECK(strstr(text, "static Reset") != NULL, "sl_diag_text names the static-reset error C011");
     h_end();
 
     h_begin("SF_EmergencyStop: the v1.0 profile, and a constant changed while activated");
     fb->Activate = 0;
-    ES(200, 0x0000, 0);
+    PES(200, 0x0000, 0);
     fb->nDiagProfile = SL_SF_PROFILE_V10;
     fb->S_StartReset = 0;
     fb->S_AutoReset = 0;
     fb->S_EStopIn = 0;
     fb->Activate = 1;
-    ES(210, 0x8001, PO_READY);
-    ES(220, 0x8002, PO_READY | PO_DEMAND);       /* v1.0 code of 8802; the outputs are the same */
+    PES(210, 0x8001, PO_READY);
+    PES(220, 0x8002, PO_READY | PO_DEMAND);       /* v1.0 code of 8802; the outputs are the same */
     fb->S_EStopIn = 1;
-    ES(230, 0x8003, PO_READY | PO_RESREQ);       /* v1.0 code of 8402 */
+    PES(230, 0x8003, PO_READY | PO_RESREQ);       /* v1.0 code of 8402 */
     fb->nDiagProfile = SL_SF_PROFILE_V201;       /* a constant input changed while activated */
     po_estop(fb, 240, SL_E_PARAM_CHANGED, SL_SF_DIAG_CONST_CHANGED, PO_READY | PO_ERROR, __FILE__, __LINE__);
     fb->Reset = 1;
     po_estop(fb, 250, SL_E_PARAM_CHANGED, SL_SF_DIAG_CONST_CHANGED, PO_READY | PO_ERROR, __FILE__, __LINE__);
     fb->Activate = 0;
-    ES(260, 0x0000, 0);                          /* only Activate FALSE leaves a library fault */
+    PES(260, 0x0000, 0);                          /* only Activate FALSE leaves a library fault */
     CHECK_INT(sl_diag_text(SL_TYPE_SF_EMERGENCYSTOP, SL_SF_DIAG_CONST_CHANGED, text, sizeof text), SL_OK);
     CHECK(strstr(text, "constant") != NULL, "sl_diag_text names the library fault");
     h_end();
