@@ -613,6 +613,33 @@ def driver_c(hdr) -> str:
     return "\n".join(out)
 
 
+def add_matiec_args(ap: argparse.ArgumentParser) -> None:
+    """The options of every tool that compiles ST with matiec and links our library."""
+    ap.add_argument("--iec2c", required=True)
+    ap.add_argument("--matiec-lib", required=True)
+    ap.add_argument("--workdir", required=True, type=Path)
+    ap.add_argument("--lib", default=str(ROOT / "target/release/libsafelogic.a"))
+
+
+def build_matiec(args, st_file: Path, gen: Path, st_side: list, driver: Path, exe: Path, opt: str = "-O0") -> None:
+    """iec2c with OpenPLC's options (-f -l -p -r -R -a) on `st_file` into `gen`; the generated C
+    and the `st_side` sources compiled as C with matiec's lib/C headers (matiec's code is not
+    warning-free: -w, errors still fail); `driver` compiled warning-free against our header;
+    linked with the library into `exe`."""
+    run([args.iec2c, "-f", "-l", "-p", "-r", "-R", "-a", "-I", args.matiec_lib, "-T", str(gen), str(st_file)])
+    w = exe.parent
+    inc = ["-I", str(Path(args.matiec_lib) / "C"), "-I", str(gen), "-I", str(w)]
+    objs = []
+    for src in [gen / "Config0.c", gen / "Res0.c", *st_side]:
+        o = w / (src.stem + ".o")
+        run(["gcc", "-std=gnu11", opt, "-w", *inc, "-c", str(src), "-o", str(o)])
+        objs.append(str(o))
+    o = w / (driver.stem + ".o")
+    run(["gcc", "-std=c11", opt, "-Wall", "-Wextra", "-Werror", "-I", str(ROOT / "include"), "-I", str(w),
+         "-c", str(driver), "-o", str(o)])
+    run(["gcc", str(o), *objs, args.lib, "-lpthread", "-ldl", "-lm", "-o", str(exe)])
+
+
 def run(cmd, **kw):
     r = subprocess.run(cmd, capture_output=True, text=True, **kw)
     if r.returncode != 0:
@@ -647,10 +674,7 @@ def compile_only(args, hdr) -> int:
 
 def main() -> int:
     ap = argparse.ArgumentParser()
-    ap.add_argument("--iec2c", required=True)
-    ap.add_argument("--matiec-lib", required=True)
-    ap.add_argument("--workdir", required=True, type=Path)
-    ap.add_argument("--lib", default=str(ROOT / "target/release/libsafelogic.a"))
+    add_matiec_args(ap)
     ap.add_argument("--header", type=Path, default=ROOT / "include/safelogic.h")
     ap.add_argument("--st", type=Path, default=ROOT / "plc_bindings/iec/safelogic_iec.st")
     ap.add_argument("--compile-only", action="store_true",
@@ -678,19 +702,9 @@ def main() -> int:
     (w / "mirror.h").write_text(mirror_h(hdr), encoding="utf-8")
     (w / "probe.c").write_text(probe_c(hdr), encoding="utf-8")
     (w / "driver.c").write_text(driver_c(hdr), encoding="utf-8")
-    r = run([args.iec2c, "-f", "-l", "-p", "-r", "-R", "-a", "-I", args.matiec_lib, "-T", str(gen), str(w / "test.st")])
+    build_matiec(args, w / "test.st", gen, [w / "probe.c"], w / "driver.c", w / "matiec_run")
     print(f"iec2c -f -l -p -r -R -a: plc_bindings/iec/safelogic_iec.st (unchanged) + test program compiled to "
           f"{', '.join(sorted(p.name for p in gen.glob('*.c')))}")
-    inc = ["-I", str(Path(args.matiec_lib) / "C"), "-I", str(gen), "-I", str(w)]
-    # matiec's generated code is not warning-free; errors still fail the build
-    objs = []
-    for src in (gen / "Config0.c", gen / "Res0.c", w / "probe.c"):
-        o = w / (src.stem + ".o")
-        run(["gcc", "-std=gnu11", "-w", *inc, "-c", str(src), "-o", str(o)])
-        objs.append(str(o))
-    run(["gcc", "-std=c11", "-Wall", "-Wextra", "-Werror", "-I", str(ROOT / "include"), "-I", str(w),
-         "-c", str(w / "driver.c"), "-o", str(w / "driver.o")])
-    run(["gcc", str(w / "driver.o"), *objs, args.lib, "-lpthread", "-ldl", "-lm", "-o", str(w / "matiec_run")])
     print("gcc: generated C compiled as C with matiec's lib/C headers, linked with libsafelogic.a")
     r = subprocess.run([str(w / "matiec_run")], capture_output=True, text=True)
     sys.stdout.write(r.stdout)

@@ -30,7 +30,6 @@ from __future__ import annotations
 import argparse
 import hashlib
 import re
-import subprocess
 import sys
 import urllib.request
 from collections import Counter, defaultdict
@@ -39,6 +38,7 @@ from pathlib import Path
 ROOT = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(ROOT / "tools"))
 import plcgen  # noqa: E402
+from plc_matiec_run import add_matiec_args, build_matiec, run  # noqa: E402
 
 PEER_REPO = "LeonOss/CycleBoundedModelCheckingTest"
 PEER_COMMIT = "e1cfea70aa78ba394384653835b905e5134bad29"
@@ -281,16 +281,6 @@ def driver_c(pairs, sequences: int, steps: int, seed: int) -> str:
     return "\n".join(out)
 
 
-def run(cmd, **kw):
-    r = subprocess.run(cmd, capture_output=True, text=True, **kw)
-    if r.returncode != 0:
-        sys.stdout.write(r.stdout[-4000:] + r.stderr[-4000:])
-        print(f"FAIL: {' '.join(map(str, cmd))} exited with {r.returncode}")
-        print("0 passed, 1 failed")
-        sys.exit(1)
-    return r
-
-
 
 def parse_record(line: str) -> dict:
     parts = line.split()
@@ -317,10 +307,7 @@ def classify(r: dict):
 
 def main() -> int:
     ap = argparse.ArgumentParser()
-    ap.add_argument("--iec2c", required=True)
-    ap.add_argument("--matiec-lib", required=True)
-    ap.add_argument("--workdir", required=True, type=Path)
-    ap.add_argument("--lib", default=str(ROOT / "target/release/libsafelogic.a"))
+    add_matiec_args(ap)
     ap.add_argument("--header", type=Path, default=ROOT / "include/safelogic.h")
     src = ap.add_mutually_exclusive_group(required=True)
     src.add_argument("--peer", help="a copy of the peer's plcopen.st (checked against PEER_SHA256)")
@@ -351,16 +338,7 @@ def main() -> int:
     (w / "peer.st").write_text(st, encoding="utf-8")
     (w / "probe.c").write_text(probe_c(pairs), encoding="utf-8")
     (w / "driver.c").write_text(driver_c(pairs, args.sequences, args.steps, args.seed), encoding="utf-8")
-    run([args.iec2c, "-f", "-l", "-p", "-r", "-R", "-a", "-I", args.matiec_lib, "-T", str(gen), str(w / "peer.st")])
-    inc = ["-I", str(Path(args.matiec_lib) / "C"), "-I", str(gen), "-I", str(w)]
-    objs = []
-    for s in (gen / "Config0.c", gen / "Res0.c", w / "probe.c"):
-        o = w / (s.stem + ".o")
-        run(["gcc", "-std=gnu11", "-O2", "-w", *inc, "-c", str(s), "-o", str(o)])
-        objs.append(str(o))
-    run(["gcc", "-std=c11", "-O2", "-Wall", "-Wextra", "-Werror", "-I", str(ROOT / "include"),
-         "-c", str(w / "driver.c"), "-o", str(w / "driver.o")])
-    run(["gcc", str(w / "driver.o"), *objs, args.lib, "-lpthread", "-ldl", "-lm", "-o", str(w / "peer_diff")])
+    build_matiec(args, w / "peer.st", gen, [w / "probe.c"], w / "driver.c", w / "peer_diff", opt="-O2")
     r = run([str(w / "peer_diff")])
     records, reached, transitions, compared = [], {}, {}, 0
     for line in r.stdout.splitlines():
