@@ -1053,6 +1053,20 @@ pub fn cycle_with<M: Members + ?Sized, L: Links + ?Sized>(
     links: &L,
     now: u32,
 ) -> i32 {
+    cycle_traced(g, m, links, now, &mut 0)
+}
+
+/// [`cycle_with`], also adding to `straight` the members the sealed schedule ran straight
+/// (`run_straight`), for the tests that pin it (the count is not observable otherwise: the
+/// member loop gives the same results, only slower).
+#[doc(hidden)]
+pub fn cycle_traced<M: Members + ?Sized, L: Links + ?Sized>(
+    g: &mut SL_GROUP,
+    m: &mut M,
+    links: &L,
+    now: u32,
+    straight: &mut usize,
+) -> i32 {
     let Some(mut c) = g.stPrivate.load() else {
         // Member count and storage size are unknown: no member can be reached safely.
         g.bInRun = 0;
@@ -1153,6 +1167,7 @@ pub fn cycle_with<M: Members + ?Sized, L: Links + ?Sized>(
             );
             status = status.worst(s.status);
             all_run &= s.all_run;
+            *straight += s.member - i;
             (i, next_link, ran_straight) = (s.member, s.link, s.ran);
             if i == members {
                 break;

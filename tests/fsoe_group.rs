@@ -289,7 +289,10 @@ fn running() -> Pair {
     p.restart();
     p.run(2);
     assert_eq!(p.m.estop.bEStopOut, 1, "state {}", p.m.estop.nState);
-    assert!(p.m.sealed() && p.s.sealed(), "both groups run sealed from here on");
+    assert!(
+        p.m.sealed() && p.s.sealed(),
+        "both groups run sealed from here on"
+    );
     p
 }
 

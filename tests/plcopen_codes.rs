@@ -18,7 +18,11 @@ fn table<B: SfBlock + Registered>(out: &mut String) {
         " (PLCopen v2.x only: the v1.0 profile is refused, SL_E_CONFIG)"
     };
     writeln!(out, "\n## {} (type tag {}){v10}\n", info.name, info.tag).unwrap();
-    writeln!(out, "| state | v2.01 (default) | v1.0 (`nDiagProfile = 1`) | meaning |").unwrap();
+    writeln!(
+        out,
+        "| state | v2.01 (default) | v1.0 (`nDiagProfile = 1`) | meaning |"
+    )
+    .unwrap();
     writeln!(out, "|---|---|---|---|").unwrap();
     for (v2, v1, name, text) in <B::Diag as DiagState>::TABLE {
         let v1 = if B::HAS_V10 {
