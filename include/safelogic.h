@@ -1112,6 +1112,11 @@
 #define SL_TYPE_SF_ESPE 513
 
 /*
+ Block type tag of SF_Guard (`SL_MEMBER.nType`, `sl_diag_text`).
+ */
+#define SL_TYPE_SF_GUARD 517
+
+/*
  Block type tag of SF_PSE (`SL_MEMBER.nType`, `sl_diag_text`).
  */
 #define SL_TYPE_SF_PSE 514
@@ -11896,6 +11901,82 @@ typedef struct SF_Antivalent {
   struct SL_SF_PRIVATE stPrivate;
 } SF_Antivalent;
 
+/*
+ SF_Guard instance (v1.0: SF_GuardMonitoring, whose output S_GuardMonitoring is
+ `S_GuardOut` here): the PLCopen VAR_INPUT / VAR_OUTPUT names, BOOL = one byte.
+ Size: 64 bytes.
+ */
+typedef struct SF_Guard {
+  /*
+   Offset 0. Activate: FALSE = idle (DiagCode 0000, every output FALSE), highest priority.
+   */
+  SL_BOOL Activate;
+  /*
+   Offset 1. S_GuardSwitch1: guard switch 1, FALSE = guard open.
+   */
+  SL_BOOL S_GuardSwitch1;
+  /*
+   Offset 2. S_GuardSwitch2: guard switch 2, FALSE = guard open (bridge it to S_GuardSwitch1 for a guard with one switch).
+   */
+  SL_BOOL S_GuardSwitch2;
+  /*
+   Offset 3. Library extension, constant: DiagCode profile, 0 = v2.01 (default), 1 = v1.0 (SF_GuardMonitoring); latched at activation.
+   */
+  uint8_t nDiagProfile;
+  /*
+   Offset 4. DiscrepancyTime (constant, ms): how long the switches may differ while the guard closes; latched at activation.
+   */
+  uint32_t DiscrepancyTime;
+  /*
+   Offset 8. S_StartReset: TRUE = automatic reset at activation (start-up).
+   */
+  SL_BOOL S_StartReset;
+  /*
+   Offset 9. S_AutoReset: TRUE = automatic reset when the guard is closed again.
+   */
+  SL_BOOL S_AutoReset;
+  /*
+   Offset 10. Reset: a rising edge resets; held TRUE into the wait-for-reset state it is a static-reset error.
+   */
+  SL_BOOL Reset;
+  /*
+   Offset 11. Reserved, keep 0.
+   */
+  uint8_t aReserved0[5];
+  /*
+   Offset 16 (output base). Ready: TRUE while activated (DiagCode != 0000).
+   */
+  SL_BOOL Ready;
+  /*
+   Offset 17. S_GuardOut: the safety output (v1.0: S_GuardMonitoring), TRUE only at DiagCode 8000.
+   */
+  SL_BOOL S_GuardOut;
+  /*
+   Offset 18. SafetyDemand: the safety function is demanded (v2.01 code bit 0x0800).
+   */
+  SL_BOOL SafetyDemand;
+  /*
+   Offset 19. ResetRequest: a reset is awaited (v2.01 code bit 0x0400) and Reset is FALSE.
+   */
+  SL_BOOL ResetRequest;
+  /*
+   Offset 20. Error: DiagCode >= C000.
+   */
+  SL_BOOL Error;
+  /*
+   Offset 21. Reserved.
+   */
+  uint8_t aReserved1[1];
+  /*
+   Offset 22. DiagCode: the state or error, in the profile of nDiagProfile.
+   */
+  uint16_t DiagCode;
+  /*
+   Offset 24. Private state, 40 bytes: never write it.
+   */
+  struct SL_SF_PRIVATE stPrivate;
+} SF_Guard;
+
 
 
 #ifdef __cplusplus
@@ -12288,6 +12369,8 @@ int32_t sl_sf_equivalent_init(struct SF_Equivalent *fb);
 int32_t sl_sf_equivalent_cycle(struct SF_Equivalent *fb, uint32_t tNow);
 int32_t sl_sf_antivalent_init(struct SF_Antivalent *fb);
 int32_t sl_sf_antivalent_cycle(struct SF_Antivalent *fb, uint32_t tNow);
+int32_t sl_sf_guard_init(struct SF_Guard *fb);
+int32_t sl_sf_guard_cycle(struct SF_Guard *fb, uint32_t tNow);
 
 #ifdef __cplusplus
 }  // extern "C"
@@ -14642,5 +14725,23 @@ SL_STATIC_ASSERT(offsetof(SF_Antivalent, aReserved1) == 12, "offset of SF_Antiva
 SL_STATIC_ASSERT(offsetof(SF_Antivalent, DiagCode) == 14, "offset of SF_Antivalent.DiagCode");
 SL_STATIC_ASSERT(offsetof(SF_Antivalent, stPrivate) == 16, "offset of SF_Antivalent.stPrivate");
 SL_STATIC_ASSERT(sizeof(SF_Antivalent) == 56, "size of SF_Antivalent");
+SL_STATIC_ASSERT(offsetof(SF_Guard, Activate) == 0, "offset of SF_Guard.Activate");
+SL_STATIC_ASSERT(offsetof(SF_Guard, S_GuardSwitch1) == 1, "offset of SF_Guard.S_GuardSwitch1");
+SL_STATIC_ASSERT(offsetof(SF_Guard, S_GuardSwitch2) == 2, "offset of SF_Guard.S_GuardSwitch2");
+SL_STATIC_ASSERT(offsetof(SF_Guard, nDiagProfile) == 3, "offset of SF_Guard.nDiagProfile");
+SL_STATIC_ASSERT(offsetof(SF_Guard, DiscrepancyTime) == 4, "offset of SF_Guard.DiscrepancyTime");
+SL_STATIC_ASSERT(offsetof(SF_Guard, S_StartReset) == 8, "offset of SF_Guard.S_StartReset");
+SL_STATIC_ASSERT(offsetof(SF_Guard, S_AutoReset) == 9, "offset of SF_Guard.S_AutoReset");
+SL_STATIC_ASSERT(offsetof(SF_Guard, Reset) == 10, "offset of SF_Guard.Reset");
+SL_STATIC_ASSERT(offsetof(SF_Guard, aReserved0) == 11, "offset of SF_Guard.aReserved0");
+SL_STATIC_ASSERT(offsetof(SF_Guard, Ready) == 16, "offset of SF_Guard.Ready");
+SL_STATIC_ASSERT(offsetof(SF_Guard, S_GuardOut) == 17, "offset of SF_Guard.S_GuardOut");
+SL_STATIC_ASSERT(offsetof(SF_Guard, SafetyDemand) == 18, "offset of SF_Guard.SafetyDemand");
+SL_STATIC_ASSERT(offsetof(SF_Guard, ResetRequest) == 19, "offset of SF_Guard.ResetRequest");
+SL_STATIC_ASSERT(offsetof(SF_Guard, Error) == 20, "offset of SF_Guard.Error");
+SL_STATIC_ASSERT(offsetof(SF_Guard, aReserved1) == 21, "offset of SF_Guard.aReserved1");
+SL_STATIC_ASSERT(offsetof(SF_Guard, DiagCode) == 22, "offset of SF_Guard.DiagCode");
+SL_STATIC_ASSERT(offsetof(SF_Guard, stPrivate) == 24, "offset of SF_Guard.stPrivate");
+SL_STATIC_ASSERT(sizeof(SF_Guard) == 64, "size of SF_Guard");
 
 #endif  /* SAFELOGIC_H */

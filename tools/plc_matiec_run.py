@@ -190,6 +190,21 @@ BLOCKS["CONNECTION_SHUTDOWN"] = dict(
 BLOCK_INPUTS = {}  # block -> its BOOL inputs (filled from the header in main)
 
 
+# PLCopen blocks with a script of their own (cycle -> inputs), PLCopen names only.
+SF_STEPS = {
+    # SF_Guard, DiscrepancyTime left at its default T#0: closed at activation with
+    # S_StartReset (8000), opened completely (8802, 8804), switch 1 closing alone (8806, then
+    # the discrepancy error C010 at once), both open (8804), Activate FALSE (0000), again
+    # with S_StartReset (8000), then without: a Reset edge (8402, 8000).
+    "SF_Guard": {0: {"Activate": 0, "S_GuardSwitch1": 0, "S_GuardSwitch2": 0},
+                 2: {"Activate": 1, "S_GuardSwitch1": 1, "S_GuardSwitch2": 1, "S_StartReset": 1},
+                 4: {"S_GuardSwitch1": 0}, 6: {"S_GuardSwitch2": 0}, 8: {"S_GuardSwitch1": 1},
+                 10: {"S_GuardSwitch1": 0}, 12: {"Activate": 0},
+                 14: {"Activate": 1, "S_GuardSwitch1": 1, "S_GuardSwitch2": 1}, 16: {"Activate": 0},
+                 18: {"Activate": 1, "S_StartReset": 0}, 20: {"Reset": 1}, 22: {"Reset": 0}},
+}
+
+
 def sf_script(name: str) -> dict:
     """A PLCopen block with one safety input (SF_EmergencyStop, SF_ESPE, SF_PSE) driven as a
     user's program would, with the PLCopen names only: activation without S_StartReset, the
@@ -198,7 +213,9 @@ def sf_script(name: str) -> dict:
     S_AutoReset (8000 again), then the walk over every BOOL input."""
     ins = BLOCK_INPUTS[name]
     safety = ins[1]
-    if "Reset" in ins:
+    if name in SF_STEPS:
+        steps = {c: dict(v) for c, v in SF_STEPS[name].items()}
+    elif "Reset" in ins:
         steps = {0: {"Activate": 0, safety: 0}, 2: {"Activate": 1}, 4: {safety: 1}, 6: {"Reset": 1},
                  8: {"Reset": 0}, 10: {safety: 0, "Reset": 1}, 12: {safety: 1}, 14: {"Reset": 0},
                  16: {"Activate": 0}, 18: {"Activate": 1, "S_StartReset": 1, "S_AutoReset": 1},

@@ -2351,5 +2351,23 @@ int main(void)
     printf("F SF_Antivalent aReserved1 %zu %zu\n", offsetof(SF_Antivalent, aReserved1), sizeof(((SF_Antivalent *)0)->aReserved1));
     printf("F SF_Antivalent DiagCode %zu %zu\n", offsetof(SF_Antivalent, DiagCode), sizeof(((SF_Antivalent *)0)->DiagCode));
     printf("F SF_Antivalent stPrivate %zu %zu\n", offsetof(SF_Antivalent, stPrivate), sizeof(((SF_Antivalent *)0)->stPrivate));
+    printf("S SF_Guard %zu\n", sizeof(SF_Guard));
+    printf("F SF_Guard Activate %zu %zu\n", offsetof(SF_Guard, Activate), sizeof(((SF_Guard *)0)->Activate));
+    printf("F SF_Guard S_GuardSwitch1 %zu %zu\n", offsetof(SF_Guard, S_GuardSwitch1), sizeof(((SF_Guard *)0)->S_GuardSwitch1));
+    printf("F SF_Guard S_GuardSwitch2 %zu %zu\n", offsetof(SF_Guard, S_GuardSwitch2), sizeof(((SF_Guard *)0)->S_GuardSwitch2));
+    printf("F SF_Guard nDiagProfile %zu %zu\n", offsetof(SF_Guard, nDiagProfile), sizeof(((SF_Guard *)0)->nDiagProfile));
+    printf("F SF_Guard DiscrepancyTime %zu %zu\n", offsetof(SF_Guard, DiscrepancyTime), sizeof(((SF_Guard *)0)->DiscrepancyTime));
+    printf("F SF_Guard S_StartReset %zu %zu\n", offsetof(SF_Guard, S_StartReset), sizeof(((SF_Guard *)0)->S_StartReset));
+    printf("F SF_Guard S_AutoReset %zu %zu\n", offsetof(SF_Guard, S_AutoReset), sizeof(((SF_Guard *)0)->S_AutoReset));
+    printf("F SF_Guard Reset %zu %zu\n", offsetof(SF_Guard, Reset), sizeof(((SF_Guard *)0)->Reset));
+    printf("F SF_Guard aReserved0 %zu %zu\n", offsetof(SF_Guard, aReserved0), sizeof(((SF_Guard *)0)->aReserved0));
+    printf("F SF_Guard Ready %zu %zu\n", offsetof(SF_Guard, Ready), sizeof(((SF_Guard *)0)->Ready));
+    printf("F SF_Guard S_GuardOut %zu %zu\n", offsetof(SF_Guard, S_GuardOut), sizeof(((SF_Guard *)0)->S_GuardOut));
+    printf("F SF_Guard SafetyDemand %zu %zu\n", offsetof(SF_Guard, SafetyDemand), sizeof(((SF_Guard *)0)->SafetyDemand));
+    printf("F SF_Guard ResetRequest %zu %zu\n", offsetof(SF_Guard, ResetRequest), sizeof(((SF_Guard *)0)->ResetRequest));
+    printf("F SF_Guard Error %zu %zu\n", offsetof(SF_Guard, Error), sizeof(((SF_Guard *)0)->Error));
+    printf("F SF_Guard aReserved1 %zu %zu\n", offsetof(SF_Guard, aReserved1), sizeof(((SF_Guard *)0)->aReserved1));
+    printf("F SF_Guard DiagCode %zu %zu\n", offsetof(SF_Guard, DiagCode), sizeof(((SF_Guard *)0)->DiagCode));
+    printf("F SF_Guard stPrivate %zu %zu\n", offsetof(SF_Guard, stPrivate), sizeof(((SF_Guard *)0)->stPrivate));
     return 0;
 }
