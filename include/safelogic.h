@@ -1122,6 +1122,11 @@
 #define SL_TYPE_SF_PSE 514
 
 /*
+ Block type tag of SF_SafetyRequest (`SL_MEMBER.nType`, `sl_diag_text`).
+ */
+#define SL_TYPE_SF_SAFETYREQUEST 518
+
+/*
  Type tag of FB_SLI_INT (ABI-2 §10.6: sequential in the order of §10.3).
  */
 #define SL_TYPE_SLI_INT 60
@@ -11977,6 +11982,77 @@ typedef struct SF_Guard {
   struct SL_SF_PRIVATE stPrivate;
 } SF_Guard;
 
+/*
+ SF_SafetyRequest instance: the PLCopen VAR_INPUT / VAR_OUTPUT names, BOOL = one byte.
+ Size: 64 bytes.
+ */
+typedef struct SF_SafetyRequest {
+  /*
+   Offset 0. Activate: FALSE = idle (DiagCode 0000, every output FALSE), highest priority.
+   */
+  SL_BOOL Activate;
+  /*
+   Offset 1. S_OpMode: requested mode, TRUE = operation mode, FALSE = safe mode requested.
+   */
+  SL_BOOL S_OpMode;
+  /*
+   Offset 2. S_Acknowledge: the actuator's confirmation, TRUE = actuator in its safe state.
+   */
+  SL_BOOL S_Acknowledge;
+  /*
+   Offset 3. Library extension, constant: DiagCode profile, 0 = v2.01 (default), 1 = v1.0; latched at activation.
+   */
+  uint8_t nDiagProfile;
+  /*
+   Offset 4. MonitoringTime (constant, ms): longest time from the safe-state request to S_Acknowledge TRUE; latched at activation.
+   */
+  uint32_t MonitoringTime;
+  /*
+   Offset 8. S_StartReset: TRUE = automatic reset at activation (start-up; v2.x input, keep FALSE for the v1.0 behaviour).
+   */
+  SL_BOOL S_StartReset;
+  /*
+   Offset 9. Reset: a rising edge resets INIT and the errors; held TRUE it is a static-reset error.
+   */
+  SL_BOOL Reset;
+  /*
+   Offset 10. Reserved, keep 0.
+   */
+  uint8_t aReserved0[6];
+  /*
+   Offset 16 (output base). Ready: TRUE while activated (DiagCode != 0000).
+   */
+  SL_BOOL Ready;
+  /*
+   Offset 17. S_SafetyActive: the safe state of the actuator is confirmed, TRUE only at DiagCode 8000.
+   */
+  SL_BOOL S_SafetyActive;
+  /*
+   Offset 18. S_SafetyRequest: to the actuator, FALSE = safe state requested; TRUE only in OP_MODE / WAIT_FOR_CONF_OPMODE (8802 / 8804).
+   */
+  SL_BOOL S_SafetyRequest;
+  /*
+   Offset 19. SafetyDemand: v2.01 code bit 0x0800 (8802, 8804).
+   */
+  SL_BOOL SafetyDemand;
+  /*
+   Offset 20. ResetRequest: a reset is awaited (v2.01 code bit 0x0400: INIT) and Reset is FALSE.
+   */
+  SL_BOOL ResetRequest;
+  /*
+   Offset 21. Error: DiagCode >= C000.
+   */
+  SL_BOOL Error;
+  /*
+   Offset 22. DiagCode: the state or error, in the profile of nDiagProfile.
+   */
+  uint16_t DiagCode;
+  /*
+   Offset 24. Private state, 40 bytes: never write it.
+   */
+  struct SL_SF_PRIVATE stPrivate;
+} SF_SafetyRequest;
+
 
 
 #ifdef __cplusplus
@@ -12371,6 +12447,8 @@ int32_t sl_sf_antivalent_init(struct SF_Antivalent *fb);
 int32_t sl_sf_antivalent_cycle(struct SF_Antivalent *fb, uint32_t tNow);
 int32_t sl_sf_guard_init(struct SF_Guard *fb);
 int32_t sl_sf_guard_cycle(struct SF_Guard *fb, uint32_t tNow);
+int32_t sl_sf_safetyrequest_init(struct SF_SafetyRequest *fb);
+int32_t sl_sf_safetyrequest_cycle(struct SF_SafetyRequest *fb, uint32_t tNow);
 
 #ifdef __cplusplus
 }  // extern "C"
@@ -14743,5 +14821,22 @@ SL_STATIC_ASSERT(offsetof(SF_Guard, aReserved1) == 21, "offset of SF_Guard.aRese
 SL_STATIC_ASSERT(offsetof(SF_Guard, DiagCode) == 22, "offset of SF_Guard.DiagCode");
 SL_STATIC_ASSERT(offsetof(SF_Guard, stPrivate) == 24, "offset of SF_Guard.stPrivate");
 SL_STATIC_ASSERT(sizeof(SF_Guard) == 64, "size of SF_Guard");
+SL_STATIC_ASSERT(offsetof(SF_SafetyRequest, Activate) == 0, "offset of SF_SafetyRequest.Activate");
+SL_STATIC_ASSERT(offsetof(SF_SafetyRequest, S_OpMode) == 1, "offset of SF_SafetyRequest.S_OpMode");
+SL_STATIC_ASSERT(offsetof(SF_SafetyRequest, S_Acknowledge) == 2, "offset of SF_SafetyRequest.S_Acknowledge");
+SL_STATIC_ASSERT(offsetof(SF_SafetyRequest, nDiagProfile) == 3, "offset of SF_SafetyRequest.nDiagProfile");
+SL_STATIC_ASSERT(offsetof(SF_SafetyRequest, MonitoringTime) == 4, "offset of SF_SafetyRequest.MonitoringTime");
+SL_STATIC_ASSERT(offsetof(SF_SafetyRequest, S_StartReset) == 8, "offset of SF_SafetyRequest.S_StartReset");
+SL_STATIC_ASSERT(offsetof(SF_SafetyRequest, Reset) == 9, "offset of SF_SafetyRequest.Reset");
+SL_STATIC_ASSERT(offsetof(SF_SafetyRequest, aReserved0) == 10, "offset of SF_SafetyRequest.aReserved0");
+SL_STATIC_ASSERT(offsetof(SF_SafetyRequest, Ready) == 16, "offset of SF_SafetyRequest.Ready");
+SL_STATIC_ASSERT(offsetof(SF_SafetyRequest, S_SafetyActive) == 17, "offset of SF_SafetyRequest.S_SafetyActive");
+SL_STATIC_ASSERT(offsetof(SF_SafetyRequest, S_SafetyRequest) == 18, "offset of SF_SafetyRequest.S_SafetyRequest");
+SL_STATIC_ASSERT(offsetof(SF_SafetyRequest, SafetyDemand) == 19, "offset of SF_SafetyRequest.SafetyDemand");
+SL_STATIC_ASSERT(offsetof(SF_SafetyRequest, ResetRequest) == 20, "offset of SF_SafetyRequest.ResetRequest");
+SL_STATIC_ASSERT(offsetof(SF_SafetyRequest, Error) == 21, "offset of SF_SafetyRequest.Error");
+SL_STATIC_ASSERT(offsetof(SF_SafetyRequest, DiagCode) == 22, "offset of SF_SafetyRequest.DiagCode");
+SL_STATIC_ASSERT(offsetof(SF_SafetyRequest, stPrivate) == 24, "offset of SF_SafetyRequest.stPrivate");
+SL_STATIC_ASSERT(sizeof(SF_SafetyRequest) == 64, "size of SF_SafetyRequest");
 
 #endif  /* SAFELOGIC_H */

@@ -202,6 +202,17 @@ SF_STEPS = {
                  10: {"S_GuardSwitch1": 0}, 12: {"Activate": 0},
                  14: {"Activate": 1, "S_GuardSwitch1": 1, "S_GuardSwitch2": 1}, 16: {"Activate": 0},
                  18: {"Activate": 1, "S_StartReset": 0}, 20: {"Reset": 1}, 22: {"Reset": 0}},
+    # SF_SafetyRequest, MonitoringTime 10 s (never elapses in this run): a Reset edge with the
+    # operation mode (8802), the safe mode requested (8002) and acknowledged (8000), the
+    # acknowledgement lost (C010), Activate FALSE (0000), again with S_StartReset and the
+    # actuator acknowledging (8804, 8002, 8000), then operation and safe mode once more.
+    "SF_SafetyRequest": {0: {"Activate": 0, "S_OpMode": 0, "S_Acknowledge": 0, "MonitoringTime": 10000},
+                         2: {"Activate": 1}, 4: {"Reset": 1, "S_OpMode": 1},
+                         6: {"Reset": 0, "S_OpMode": 0}, 8: {"S_Acknowledge": 1},
+                         10: {"S_Acknowledge": 0}, 12: {"Activate": 0},
+                         14: {"Activate": 1, "S_StartReset": 1, "S_Acknowledge": 1},
+                         18: {"S_OpMode": 1}, 20: {"S_Acknowledge": 0}, 22: {"S_OpMode": 0},
+                         24: {"S_Acknowledge": 1}},
 }
 
 

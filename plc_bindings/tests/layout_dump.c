@@ -2369,5 +2369,22 @@ int main(void)
     printf("F SF_Guard aReserved1 %zu %zu\n", offsetof(SF_Guard, aReserved1), sizeof(((SF_Guard *)0)->aReserved1));
     printf("F SF_Guard DiagCode %zu %zu\n", offsetof(SF_Guard, DiagCode), sizeof(((SF_Guard *)0)->DiagCode));
     printf("F SF_Guard stPrivate %zu %zu\n", offsetof(SF_Guard, stPrivate), sizeof(((SF_Guard *)0)->stPrivate));
+    printf("S SF_SafetyRequest %zu\n", sizeof(SF_SafetyRequest));
+    printf("F SF_SafetyRequest Activate %zu %zu\n", offsetof(SF_SafetyRequest, Activate), sizeof(((SF_SafetyRequest *)0)->Activate));
+    printf("F SF_SafetyRequest S_OpMode %zu %zu\n", offsetof(SF_SafetyRequest, S_OpMode), sizeof(((SF_SafetyRequest *)0)->S_OpMode));
+    printf("F SF_SafetyRequest S_Acknowledge %zu %zu\n", offsetof(SF_SafetyRequest, S_Acknowledge), sizeof(((SF_SafetyRequest *)0)->S_Acknowledge));
+    printf("F SF_SafetyRequest nDiagProfile %zu %zu\n", offsetof(SF_SafetyRequest, nDiagProfile), sizeof(((SF_SafetyRequest *)0)->nDiagProfile));
+    printf("F SF_SafetyRequest MonitoringTime %zu %zu\n", offsetof(SF_SafetyRequest, MonitoringTime), sizeof(((SF_SafetyRequest *)0)->MonitoringTime));
+    printf("F SF_SafetyRequest S_StartReset %zu %zu\n", offsetof(SF_SafetyRequest, S_StartReset), sizeof(((SF_SafetyRequest *)0)->S_StartReset));
+    printf("F SF_SafetyRequest Reset %zu %zu\n", offsetof(SF_SafetyRequest, Reset), sizeof(((SF_SafetyRequest *)0)->Reset));
+    printf("F SF_SafetyRequest aReserved0 %zu %zu\n", offsetof(SF_SafetyRequest, aReserved0), sizeof(((SF_SafetyRequest *)0)->aReserved0));
+    printf("F SF_SafetyRequest Ready %zu %zu\n", offsetof(SF_SafetyRequest, Ready), sizeof(((SF_SafetyRequest *)0)->Ready));
+    printf("F SF_SafetyRequest S_SafetyActive %zu %zu\n", offsetof(SF_SafetyRequest, S_SafetyActive), sizeof(((SF_SafetyRequest *)0)->S_SafetyActive));
+    printf("F SF_SafetyRequest S_SafetyRequest %zu %zu\n", offsetof(SF_SafetyRequest, S_SafetyRequest), sizeof(((SF_SafetyRequest *)0)->S_SafetyRequest));
+    printf("F SF_SafetyRequest SafetyDemand %zu %zu\n", offsetof(SF_SafetyRequest, SafetyDemand), sizeof(((SF_SafetyRequest *)0)->SafetyDemand));
+    printf("F SF_SafetyRequest ResetRequest %zu %zu\n", offsetof(SF_SafetyRequest, ResetRequest), sizeof(((SF_SafetyRequest *)0)->ResetRequest));
+    printf("F SF_SafetyRequest Error %zu %zu\n", offsetof(SF_SafetyRequest, Error), sizeof(((SF_SafetyRequest *)0)->Error));
+    printf("F SF_SafetyRequest DiagCode %zu %zu\n", offsetof(SF_SafetyRequest, DiagCode), sizeof(((SF_SafetyRequest *)0)->DiagCode));
+    printf("F SF_SafetyRequest stPrivate %zu %zu\n", offsetof(SF_SafetyRequest, stPrivate), sizeof(((SF_SafetyRequest *)0)->stPrivate));
     return 0;
 }

@@ -1474,6 +1474,24 @@ HRESULT CSafeLogicModule::sl_sf_guard_cycle(PVOID pFb, int32_t *pnResult, uint32
     return S_OK;
 }
 
+HRESULT CSafeLogicModule::sl_sf_safetyrequest_init(PVOID pFb, int32_t *pnResult)
+{
+    if (pFb == NULL || pnResult == NULL) {
+        return E_POINTER;
+    }
+    *pnResult = ::sl_sf_safetyrequest_init(static_cast<struct SF_SafetyRequest *>(pFb));
+    return S_OK;
+}
+
+HRESULT CSafeLogicModule::sl_sf_safetyrequest_cycle(PVOID pFb, int32_t *pnResult, uint32_t tNow)
+{
+    if (pFb == NULL || pnResult == NULL) {
+        return E_POINTER;
+    }
+    *pnResult = ::sl_sf_safetyrequest_cycle(static_cast<struct SF_SafetyRequest *>(pFb), tNow);
+    return S_OK;
+}
+
 HRESULT CSafeLogicModule::sl_ton2_get_elapsed(PVOID pFb, int32_t *pnResult, uint32_t * pPElapsedMs)
 {
     if (pFb == NULL || pnResult == NULL) {
