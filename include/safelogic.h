@@ -1117,6 +1117,11 @@
 #define SL_TYPE_SF_GUARD 517
 
 /*
+ Block type tag of SF_OutControl (`SL_MEMBER.nType`, `sl_diag_text`).
+ */
+#define SL_TYPE_SF_OUTCONTROL 519
+
+/*
  Block type tag of SF_PSE (`SL_MEMBER.nType`, `sl_diag_text`).
  */
 #define SL_TYPE_SF_PSE 514
@@ -12053,6 +12058,77 @@ typedef struct SF_SafetyRequest {
   struct SL_SF_PRIVATE stPrivate;
 } SF_SafetyRequest;
 
+/*
+ SF_OutControl instance: the PLCopen VAR_INPUT / VAR_OUTPUT names, BOOL = one byte.
+ Size: 56 bytes.
+ */
+typedef struct SF_OutControl {
+  /*
+   Offset 0. Activate: FALSE = idle (DiagCode 0000, every output FALSE), highest priority.
+   */
+  SL_BOOL Activate;
+  /*
+   Offset 1. S_SafeControl: from the preceding safety blocks, FALSE = safety function triggered.
+   */
+  SL_BOOL S_SafeControl;
+  /*
+   Offset 2. ProcessControl: from the standard application, TRUE = output requested.
+   */
+  SL_BOOL ProcessControl;
+  /*
+   Offset 3. StaticControl (constant): FALSE = a rising edge of ProcessControl is required after activation and after an inhibit; latched at activation.
+   */
+  SL_BOOL StaticControl;
+  /*
+   Offset 4. S_StartReset: TRUE = automatic reset at activation (no start-up inhibit).
+   */
+  SL_BOOL S_StartReset;
+  /*
+   Offset 5. S_AutoReset: TRUE = automatic reset when S_SafeControl is TRUE again (no restart inhibit).
+   */
+  SL_BOOL S_AutoReset;
+  /*
+   Offset 6. Reset: a rising edge leaves an inhibit; held TRUE into it, a static-reset error.
+   */
+  SL_BOOL Reset;
+  /*
+   Offset 7. Library extension, constant: DiagCode profile, 0 = v2.01 (default), 1 = v1.0; latched at activation.
+   */
+  uint8_t nDiagProfile;
+  /*
+   Offset 8 (output base). Ready: TRUE while activated (DiagCode != 0000).
+   */
+  SL_BOOL Ready;
+  /*
+   Offset 9. S_OutControl: the safety output, TRUE only at DiagCode 8000.
+   */
+  SL_BOOL S_OutControl;
+  /*
+   Offset 10. SafetyDemand: the safety function is demanded (v2.01 code bit 0x0800).
+   */
+  SL_BOOL SafetyDemand;
+  /*
+   Offset 11. ResetRequest: a reset is awaited (v2.01 code bit 0x0400) and Reset is FALSE.
+   */
+  SL_BOOL ResetRequest;
+  /*
+   Offset 12. Error: DiagCode >= C000.
+   */
+  SL_BOOL Error;
+  /*
+   Offset 13. Reserved.
+   */
+  uint8_t aReserved1[1];
+  /*
+   Offset 14. DiagCode: the state or error, in the profile of nDiagProfile.
+   */
+  uint16_t DiagCode;
+  /*
+   Offset 16. Private state, 40 bytes: never write it.
+   */
+  struct SL_SF_PRIVATE stPrivate;
+} SF_OutControl;
+
 
 
 #ifdef __cplusplus
@@ -12449,6 +12525,8 @@ int32_t sl_sf_guard_init(struct SF_Guard *fb);
 int32_t sl_sf_guard_cycle(struct SF_Guard *fb, uint32_t tNow);
 int32_t sl_sf_safetyrequest_init(struct SF_SafetyRequest *fb);
 int32_t sl_sf_safetyrequest_cycle(struct SF_SafetyRequest *fb, uint32_t tNow);
+int32_t sl_sf_outcontrol_init(struct SF_OutControl *fb);
+int32_t sl_sf_outcontrol_cycle(struct SF_OutControl *fb, uint32_t tNow);
 
 #ifdef __cplusplus
 }  // extern "C"
@@ -14838,5 +14916,22 @@ SL_STATIC_ASSERT(offsetof(SF_SafetyRequest, Error) == 21, "offset of SF_SafetyRe
 SL_STATIC_ASSERT(offsetof(SF_SafetyRequest, DiagCode) == 22, "offset of SF_SafetyRequest.DiagCode");
 SL_STATIC_ASSERT(offsetof(SF_SafetyRequest, stPrivate) == 24, "offset of SF_SafetyRequest.stPrivate");
 SL_STATIC_ASSERT(sizeof(SF_SafetyRequest) == 64, "size of SF_SafetyRequest");
+SL_STATIC_ASSERT(offsetof(SF_OutControl, Activate) == 0, "offset of SF_OutControl.Activate");
+SL_STATIC_ASSERT(offsetof(SF_OutControl, S_SafeControl) == 1, "offset of SF_OutControl.S_SafeControl");
+SL_STATIC_ASSERT(offsetof(SF_OutControl, ProcessControl) == 2, "offset of SF_OutControl.ProcessControl");
+SL_STATIC_ASSERT(offsetof(SF_OutControl, StaticControl) == 3, "offset of SF_OutControl.StaticControl");
+SL_STATIC_ASSERT(offsetof(SF_OutControl, S_StartReset) == 4, "offset of SF_OutControl.S_StartReset");
+SL_STATIC_ASSERT(offsetof(SF_OutControl, S_AutoReset) == 5, "offset of SF_OutControl.S_AutoReset");
+SL_STATIC_ASSERT(offsetof(SF_OutControl, Reset) == 6, "offset of SF_OutControl.Reset");
+SL_STATIC_ASSERT(offsetof(SF_OutControl, nDiagProfile) == 7, "offset of SF_OutControl.nDiagProfile");
+SL_STATIC_ASSERT(offsetof(SF_OutControl, Ready) == 8, "offset of SF_OutControl.Ready");
+SL_STATIC_ASSERT(offsetof(SF_OutControl, S_OutControl) == 9, "offset of SF_OutControl.S_OutControl");
+SL_STATIC_ASSERT(offsetof(SF_OutControl, SafetyDemand) == 10, "offset of SF_OutControl.SafetyDemand");
+SL_STATIC_ASSERT(offsetof(SF_OutControl, ResetRequest) == 11, "offset of SF_OutControl.ResetRequest");
+SL_STATIC_ASSERT(offsetof(SF_OutControl, Error) == 12, "offset of SF_OutControl.Error");
+SL_STATIC_ASSERT(offsetof(SF_OutControl, aReserved1) == 13, "offset of SF_OutControl.aReserved1");
+SL_STATIC_ASSERT(offsetof(SF_OutControl, DiagCode) == 14, "offset of SF_OutControl.DiagCode");
+SL_STATIC_ASSERT(offsetof(SF_OutControl, stPrivate) == 16, "offset of SF_OutControl.stPrivate");
+SL_STATIC_ASSERT(sizeof(SF_OutControl) == 56, "size of SF_OutControl");
 
 #endif  /* SAFELOGIC_H */

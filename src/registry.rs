@@ -444,6 +444,7 @@ macro_rules! for_each_sf_block {
             $crate::blocks::sf_antivalent::SF_Antivalent => sl_sf_antivalent_init, sl_sf_antivalent_cycle;
             $crate::blocks::sf_guard::SF_Guard => sl_sf_guard_init, sl_sf_guard_cycle;
             $crate::blocks::sf_safetyrequest::SF_SafetyRequest => sl_sf_safetyrequest_init, sl_sf_safetyrequest_cycle;
+            $crate::blocks::sf_outcontrol::SF_OutControl => sl_sf_outcontrol_init, sl_sf_outcontrol_cycle;
             // registry:end
         }
     };

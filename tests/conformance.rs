@@ -729,7 +729,8 @@ macro_rules! sf_harness {
                 for seq in 0..sequences {
                     let mut fb = <$ty>::default();
                     for f in t.fields.iter().filter(|f| f.dir == Dir::Param) {
-                        let v = if f.name == "nDiagProfile" { (seq % 2) as i64 } else { (rng.next() % 60) as i64 };
+                        // A BOOL constant (StaticControl): FALSE or TRUE.
+                        let v = if f.name == "nDiagProfile" { (seq % 2) as i64 } else if f.kind == Kind::Bool { (rng.next() % 2) as i64 } else { (rng.next() % 60) as i64 };
                         fb.set(f.name, v).unwrap();
                     }
                     if FunctionBlock::init(&mut fb) != SL_OK {
@@ -804,6 +805,9 @@ fn every_plcopen_type_keeps_its_properties_over_10000_sequences() {
             "SF_Guard" => <safelogic::blocks::sf_guard::SfGuardState as DiagState>::TABLE,
             "SF_SafetyRequest" => {
                 <safelogic::blocks::sf_safetyrequest::SafetyRequestState as DiagState>::TABLE
+            }
+            "SF_OutControl" => {
+                <safelogic::blocks::sf_outcontrol::OutControlState as DiagState>::TABLE
             }
             other => panic!("{other}: no state table named in this test"),
         };

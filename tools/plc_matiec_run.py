@@ -213,6 +213,16 @@ SF_STEPS = {
                          14: {"Activate": 1, "S_StartReset": 1, "S_Acknowledge": 1},
                          18: {"S_OpMode": 1}, 20: {"S_Acknowledge": 0}, 22: {"S_OpMode": 0},
                          24: {"S_Acknowledge": 1}},
+    # SF_OutControl, StaticControl FALSE: a Reset edge (8006), a ProcessControl edge (8000),
+    # the safety function (8802) and its end (8404), a Reset edge with ProcessControl still
+    # TRUE (8006, then the static-control error C010), Activate FALSE (0000), again with
+    # S_StartReset (8006) and a ProcessControl edge (8000).
+    "SF_OutControl": {0: {"Activate": 0, "S_SafeControl": 0, "ProcessControl": 0},
+                      2: {"Activate": 1, "S_SafeControl": 1}, 4: {"Reset": 1},
+                      6: {"Reset": 0, "ProcessControl": 1}, 8: {"S_SafeControl": 0},
+                      10: {"S_SafeControl": 1}, 12: {"Reset": 1}, 14: {"Activate": 0, "Reset": 0},
+                      16: {"Activate": 1, "S_StartReset": 1, "ProcessControl": 0},
+                      18: {"ProcessControl": 1}, 20: {"ProcessControl": 0}},
 }
 
 

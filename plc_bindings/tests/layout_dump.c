@@ -2386,5 +2386,22 @@ int main(void)
     printf("F SF_SafetyRequest Error %zu %zu\n", offsetof(SF_SafetyRequest, Error), sizeof(((SF_SafetyRequest *)0)->Error));
     printf("F SF_SafetyRequest DiagCode %zu %zu\n", offsetof(SF_SafetyRequest, DiagCode), sizeof(((SF_SafetyRequest *)0)->DiagCode));
     printf("F SF_SafetyRequest stPrivate %zu %zu\n", offsetof(SF_SafetyRequest, stPrivate), sizeof(((SF_SafetyRequest *)0)->stPrivate));
+    printf("S SF_OutControl %zu\n", sizeof(SF_OutControl));
+    printf("F SF_OutControl Activate %zu %zu\n", offsetof(SF_OutControl, Activate), sizeof(((SF_OutControl *)0)->Activate));
+    printf("F SF_OutControl S_SafeControl %zu %zu\n", offsetof(SF_OutControl, S_SafeControl), sizeof(((SF_OutControl *)0)->S_SafeControl));
+    printf("F SF_OutControl ProcessControl %zu %zu\n", offsetof(SF_OutControl, ProcessControl), sizeof(((SF_OutControl *)0)->ProcessControl));
+    printf("F SF_OutControl StaticControl %zu %zu\n", offsetof(SF_OutControl, StaticControl), sizeof(((SF_OutControl *)0)->StaticControl));
+    printf("F SF_OutControl S_StartReset %zu %zu\n", offsetof(SF_OutControl, S_StartReset), sizeof(((SF_OutControl *)0)->S_StartReset));
+    printf("F SF_OutControl S_AutoReset %zu %zu\n", offsetof(SF_OutControl, S_AutoReset), sizeof(((SF_OutControl *)0)->S_AutoReset));
+    printf("F SF_OutControl Reset %zu %zu\n", offsetof(SF_OutControl, Reset), sizeof(((SF_OutControl *)0)->Reset));
+    printf("F SF_OutControl nDiagProfile %zu %zu\n", offsetof(SF_OutControl, nDiagProfile), sizeof(((SF_OutControl *)0)->nDiagProfile));
+    printf("F SF_OutControl Ready %zu %zu\n", offsetof(SF_OutControl, Ready), sizeof(((SF_OutControl *)0)->Ready));
+    printf("F SF_OutControl S_OutControl %zu %zu\n", offsetof(SF_OutControl, S_OutControl), sizeof(((SF_OutControl *)0)->S_OutControl));
+    printf("F SF_OutControl SafetyDemand %zu %zu\n", offsetof(SF_OutControl, SafetyDemand), sizeof(((SF_OutControl *)0)->SafetyDemand));
+    printf("F SF_OutControl ResetRequest %zu %zu\n", offsetof(SF_OutControl, ResetRequest), sizeof(((SF_OutControl *)0)->ResetRequest));
+    printf("F SF_OutControl Error %zu %zu\n", offsetof(SF_OutControl, Error), sizeof(((SF_OutControl *)0)->Error));
+    printf("F SF_OutControl aReserved1 %zu %zu\n", offsetof(SF_OutControl, aReserved1), sizeof(((SF_OutControl *)0)->aReserved1));
+    printf("F SF_OutControl DiagCode %zu %zu\n", offsetof(SF_OutControl, DiagCode), sizeof(((SF_OutControl *)0)->DiagCode));
+    printf("F SF_OutControl stPrivate %zu %zu\n", offsetof(SF_OutControl, stPrivate), sizeof(((SF_OutControl *)0)->stPrivate));
     return 0;
 }

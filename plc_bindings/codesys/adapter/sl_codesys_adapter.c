@@ -1322,6 +1322,22 @@ void CDECL CDECL_EXT cds_sl_sf_safetyrequest_cycle(cds_sl_sf_safetyrequest_cycle
     p->cds_sl_sf_safetyrequest_cycle = sl_sf_safetyrequest_cycle(p->pFb, p->tNow);
 }
 
+void CDECL CDECL_EXT cds_sl_sf_outcontrol_init(cds_sl_sf_outcontrol_init_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_sf_outcontrol_init = sl_sf_outcontrol_init(p->pFb);
+}
+
+void CDECL CDECL_EXT cds_sl_sf_outcontrol_cycle(cds_sl_sf_outcontrol_cycle_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_sf_outcontrol_cycle = sl_sf_outcontrol_cycle(p->pFb, p->tNow);
+}
+
 void CDECL CDECL_EXT cds_sl_time_now_ms(cds_sl_time_now_ms_struct *p)
 {
     if (p == 0) {
