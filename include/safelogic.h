@@ -1112,9 +1112,24 @@
 #define SL_TYPE_SF_ESPE 513
 
 /*
+ Block type tag of SF_Guard (`SL_MEMBER.nType`, `sl_diag_text`).
+ */
+#define SL_TYPE_SF_GUARD 517
+
+/*
+ Block type tag of SF_OutControl (`SL_MEMBER.nType`, `sl_diag_text`).
+ */
+#define SL_TYPE_SF_OUTCONTROL 519
+
+/*
  Block type tag of SF_PSE (`SL_MEMBER.nType`, `sl_diag_text`).
  */
 #define SL_TYPE_SF_PSE 514
+
+/*
+ Block type tag of SF_SafetyRequest (`SL_MEMBER.nType`, `sl_diag_text`).
+ */
+#define SL_TYPE_SF_SAFETYREQUEST 518
 
 /*
  Type tag of FB_SLI_INT (ABI-2 §10.6: sequential in the order of §10.3).
@@ -11896,6 +11911,224 @@ typedef struct SF_Antivalent {
   struct SL_SF_PRIVATE stPrivate;
 } SF_Antivalent;
 
+/*
+ SF_Guard instance (v1.0: SF_GuardMonitoring, whose output S_GuardMonitoring is
+ `S_GuardOut` here): the PLCopen VAR_INPUT / VAR_OUTPUT names, BOOL = one byte.
+ Size: 64 bytes.
+ */
+typedef struct SF_Guard {
+  /*
+   Offset 0. Activate: FALSE = idle (DiagCode 0000, every output FALSE), highest priority.
+   */
+  SL_BOOL Activate;
+  /*
+   Offset 1. S_GuardSwitch1: guard switch 1, FALSE = guard open.
+   */
+  SL_BOOL S_GuardSwitch1;
+  /*
+   Offset 2. S_GuardSwitch2: guard switch 2, FALSE = guard open (bridge it to S_GuardSwitch1 for a guard with one switch).
+   */
+  SL_BOOL S_GuardSwitch2;
+  /*
+   Offset 3. Library extension, constant: DiagCode profile, 0 = v2.01 (default), 1 = v1.0 (SF_GuardMonitoring); latched at activation.
+   */
+  uint8_t nDiagProfile;
+  /*
+   Offset 4. DiscrepancyTime (constant, ms): how long the switches may differ while the guard closes; latched at activation.
+   */
+  uint32_t DiscrepancyTime;
+  /*
+   Offset 8. S_StartReset: TRUE = automatic reset at activation (start-up).
+   */
+  SL_BOOL S_StartReset;
+  /*
+   Offset 9. S_AutoReset: TRUE = automatic reset when the guard is closed again.
+   */
+  SL_BOOL S_AutoReset;
+  /*
+   Offset 10. Reset: a rising edge resets; held TRUE into the wait-for-reset state it is a static-reset error.
+   */
+  SL_BOOL Reset;
+  /*
+   Offset 11. Reserved, keep 0.
+   */
+  uint8_t aReserved0[5];
+  /*
+   Offset 16 (output base). Ready: TRUE while activated (DiagCode != 0000).
+   */
+  SL_BOOL Ready;
+  /*
+   Offset 17. S_GuardOut: the safety output (v1.0: S_GuardMonitoring), TRUE only at DiagCode 8000.
+   */
+  SL_BOOL S_GuardOut;
+  /*
+   Offset 18. SafetyDemand: the safety function is demanded (v2.01 code bit 0x0800).
+   */
+  SL_BOOL SafetyDemand;
+  /*
+   Offset 19. ResetRequest: a reset is awaited (v2.01 code bit 0x0400) and Reset is FALSE.
+   */
+  SL_BOOL ResetRequest;
+  /*
+   Offset 20. Error: DiagCode >= C000.
+   */
+  SL_BOOL Error;
+  /*
+   Offset 21. Reserved.
+   */
+  uint8_t aReserved1[1];
+  /*
+   Offset 22. DiagCode: the state or error, in the profile of nDiagProfile.
+   */
+  uint16_t DiagCode;
+  /*
+   Offset 24. Private state, 40 bytes: never write it.
+   */
+  struct SL_SF_PRIVATE stPrivate;
+} SF_Guard;
+
+/*
+ SF_SafetyRequest instance: the PLCopen VAR_INPUT / VAR_OUTPUT names, BOOL = one byte.
+ Size: 64 bytes.
+ */
+typedef struct SF_SafetyRequest {
+  /*
+   Offset 0. Activate: FALSE = idle (DiagCode 0000, every output FALSE), highest priority.
+   */
+  SL_BOOL Activate;
+  /*
+   Offset 1. S_OpMode: requested mode, TRUE = operation mode, FALSE = safe mode requested.
+   */
+  SL_BOOL S_OpMode;
+  /*
+   Offset 2. S_Acknowledge: the actuator's confirmation, TRUE = actuator in its safe state.
+   */
+  SL_BOOL S_Acknowledge;
+  /*
+   Offset 3. Library extension, constant: DiagCode profile, 0 = v2.01 (default), 1 = v1.0; latched at activation.
+   */
+  uint8_t nDiagProfile;
+  /*
+   Offset 4. MonitoringTime (constant, ms): longest time from the safe-state request to S_Acknowledge TRUE; latched at activation.
+   */
+  uint32_t MonitoringTime;
+  /*
+   Offset 8. S_StartReset: TRUE = automatic reset at activation (start-up; v2.x input, keep FALSE for the v1.0 behaviour).
+   */
+  SL_BOOL S_StartReset;
+  /*
+   Offset 9. Reset: a rising edge resets INIT and the errors; held TRUE it is a static-reset error.
+   */
+  SL_BOOL Reset;
+  /*
+   Offset 10. Reserved, keep 0.
+   */
+  uint8_t aReserved0[6];
+  /*
+   Offset 16 (output base). Ready: TRUE while activated (DiagCode != 0000).
+   */
+  SL_BOOL Ready;
+  /*
+   Offset 17. S_SafetyActive: the safe state of the actuator is confirmed, TRUE only at DiagCode 8000.
+   */
+  SL_BOOL S_SafetyActive;
+  /*
+   Offset 18. S_SafetyRequest: to the actuator, FALSE = safe state requested; TRUE only in OP_MODE / WAIT_FOR_CONF_OPMODE (8802 / 8804).
+   */
+  SL_BOOL S_SafetyRequest;
+  /*
+   Offset 19. SafetyDemand: v2.01 code bit 0x0800 (8802, 8804).
+   */
+  SL_BOOL SafetyDemand;
+  /*
+   Offset 20. ResetRequest: a reset is awaited (v2.01 code bit 0x0400: INIT) and Reset is FALSE.
+   */
+  SL_BOOL ResetRequest;
+  /*
+   Offset 21. Error: DiagCode >= C000.
+   */
+  SL_BOOL Error;
+  /*
+   Offset 22. DiagCode: the state or error, in the profile of nDiagProfile.
+   */
+  uint16_t DiagCode;
+  /*
+   Offset 24. Private state, 40 bytes: never write it.
+   */
+  struct SL_SF_PRIVATE stPrivate;
+} SF_SafetyRequest;
+
+/*
+ SF_OutControl instance: the PLCopen VAR_INPUT / VAR_OUTPUT names, BOOL = one byte.
+ Size: 56 bytes.
+ */
+typedef struct SF_OutControl {
+  /*
+   Offset 0. Activate: FALSE = idle (DiagCode 0000, every output FALSE), highest priority.
+   */
+  SL_BOOL Activate;
+  /*
+   Offset 1. S_SafeControl: from the preceding safety blocks, FALSE = safety function triggered.
+   */
+  SL_BOOL S_SafeControl;
+  /*
+   Offset 2. ProcessControl: from the standard application, TRUE = output requested.
+   */
+  SL_BOOL ProcessControl;
+  /*
+   Offset 3. StaticControl (constant): FALSE = a rising edge of ProcessControl is required after activation and after an inhibit; latched at activation.
+   */
+  SL_BOOL StaticControl;
+  /*
+   Offset 4. S_StartReset: TRUE = automatic reset at activation (no start-up inhibit).
+   */
+  SL_BOOL S_StartReset;
+  /*
+   Offset 5. S_AutoReset: TRUE = automatic reset when S_SafeControl is TRUE again (no restart inhibit).
+   */
+  SL_BOOL S_AutoReset;
+  /*
+   Offset 6. Reset: a rising edge leaves an inhibit; held TRUE into it, a static-reset error.
+   */
+  SL_BOOL Reset;
+  /*
+   Offset 7. Library extension, constant: DiagCode profile, 0 = v2.01 (default), 1 = v1.0; latched at activation.
+   */
+  uint8_t nDiagProfile;
+  /*
+   Offset 8 (output base). Ready: TRUE while activated (DiagCode != 0000).
+   */
+  SL_BOOL Ready;
+  /*
+   Offset 9. S_OutControl: the safety output, TRUE only at DiagCode 8000.
+   */
+  SL_BOOL S_OutControl;
+  /*
+   Offset 10. SafetyDemand: the safety function is demanded (v2.01 code bit 0x0800).
+   */
+  SL_BOOL SafetyDemand;
+  /*
+   Offset 11. ResetRequest: a reset is awaited (v2.01 code bit 0x0400) and Reset is FALSE.
+   */
+  SL_BOOL ResetRequest;
+  /*
+   Offset 12. Error: DiagCode >= C000.
+   */
+  SL_BOOL Error;
+  /*
+   Offset 13. Reserved.
+   */
+  uint8_t aReserved1[1];
+  /*
+   Offset 14. DiagCode: the state or error, in the profile of nDiagProfile.
+   */
+  uint16_t DiagCode;
+  /*
+   Offset 16. Private state, 40 bytes: never write it.
+   */
+  struct SL_SF_PRIVATE stPrivate;
+} SF_OutControl;
+
 
 
 #ifdef __cplusplus
@@ -12288,6 +12521,12 @@ int32_t sl_sf_equivalent_init(struct SF_Equivalent *fb);
 int32_t sl_sf_equivalent_cycle(struct SF_Equivalent *fb, uint32_t tNow);
 int32_t sl_sf_antivalent_init(struct SF_Antivalent *fb);
 int32_t sl_sf_antivalent_cycle(struct SF_Antivalent *fb, uint32_t tNow);
+int32_t sl_sf_guard_init(struct SF_Guard *fb);
+int32_t sl_sf_guard_cycle(struct SF_Guard *fb, uint32_t tNow);
+int32_t sl_sf_safetyrequest_init(struct SF_SafetyRequest *fb);
+int32_t sl_sf_safetyrequest_cycle(struct SF_SafetyRequest *fb, uint32_t tNow);
+int32_t sl_sf_outcontrol_init(struct SF_OutControl *fb);
+int32_t sl_sf_outcontrol_cycle(struct SF_OutControl *fb, uint32_t tNow);
 
 #ifdef __cplusplus
 }  // extern "C"
@@ -14642,5 +14881,57 @@ SL_STATIC_ASSERT(offsetof(SF_Antivalent, aReserved1) == 12, "offset of SF_Antiva
 SL_STATIC_ASSERT(offsetof(SF_Antivalent, DiagCode) == 14, "offset of SF_Antivalent.DiagCode");
 SL_STATIC_ASSERT(offsetof(SF_Antivalent, stPrivate) == 16, "offset of SF_Antivalent.stPrivate");
 SL_STATIC_ASSERT(sizeof(SF_Antivalent) == 56, "size of SF_Antivalent");
+SL_STATIC_ASSERT(offsetof(SF_Guard, Activate) == 0, "offset of SF_Guard.Activate");
+SL_STATIC_ASSERT(offsetof(SF_Guard, S_GuardSwitch1) == 1, "offset of SF_Guard.S_GuardSwitch1");
+SL_STATIC_ASSERT(offsetof(SF_Guard, S_GuardSwitch2) == 2, "offset of SF_Guard.S_GuardSwitch2");
+SL_STATIC_ASSERT(offsetof(SF_Guard, nDiagProfile) == 3, "offset of SF_Guard.nDiagProfile");
+SL_STATIC_ASSERT(offsetof(SF_Guard, DiscrepancyTime) == 4, "offset of SF_Guard.DiscrepancyTime");
+SL_STATIC_ASSERT(offsetof(SF_Guard, S_StartReset) == 8, "offset of SF_Guard.S_StartReset");
+SL_STATIC_ASSERT(offsetof(SF_Guard, S_AutoReset) == 9, "offset of SF_Guard.S_AutoReset");
+SL_STATIC_ASSERT(offsetof(SF_Guard, Reset) == 10, "offset of SF_Guard.Reset");
+SL_STATIC_ASSERT(offsetof(SF_Guard, aReserved0) == 11, "offset of SF_Guard.aReserved0");
+SL_STATIC_ASSERT(offsetof(SF_Guard, Ready) == 16, "offset of SF_Guard.Ready");
+SL_STATIC_ASSERT(offsetof(SF_Guard, S_GuardOut) == 17, "offset of SF_Guard.S_GuardOut");
+SL_STATIC_ASSERT(offsetof(SF_Guard, SafetyDemand) == 18, "offset of SF_Guard.SafetyDemand");
+SL_STATIC_ASSERT(offsetof(SF_Guard, ResetRequest) == 19, "offset of SF_Guard.ResetRequest");
+SL_STATIC_ASSERT(offsetof(SF_Guard, Error) == 20, "offset of SF_Guard.Error");
+SL_STATIC_ASSERT(offsetof(SF_Guard, aReserved1) == 21, "offset of SF_Guard.aReserved1");
+SL_STATIC_ASSERT(offsetof(SF_Guard, DiagCode) == 22, "offset of SF_Guard.DiagCode");
+SL_STATIC_ASSERT(offsetof(SF_Guard, stPrivate) == 24, "offset of SF_Guard.stPrivate");
+SL_STATIC_ASSERT(sizeof(SF_Guard) == 64, "size of SF_Guard");
+SL_STATIC_ASSERT(offsetof(SF_SafetyRequest, Activate) == 0, "offset of SF_SafetyRequest.Activate");
+SL_STATIC_ASSERT(offsetof(SF_SafetyRequest, S_OpMode) == 1, "offset of SF_SafetyRequest.S_OpMode");
+SL_STATIC_ASSERT(offsetof(SF_SafetyRequest, S_Acknowledge) == 2, "offset of SF_SafetyRequest.S_Acknowledge");
+SL_STATIC_ASSERT(offsetof(SF_SafetyRequest, nDiagProfile) == 3, "offset of SF_SafetyRequest.nDiagProfile");
+SL_STATIC_ASSERT(offsetof(SF_SafetyRequest, MonitoringTime) == 4, "offset of SF_SafetyRequest.MonitoringTime");
+SL_STATIC_ASSERT(offsetof(SF_SafetyRequest, S_StartReset) == 8, "offset of SF_SafetyRequest.S_StartReset");
+SL_STATIC_ASSERT(offsetof(SF_SafetyRequest, Reset) == 9, "offset of SF_SafetyRequest.Reset");
+SL_STATIC_ASSERT(offsetof(SF_SafetyRequest, aReserved0) == 10, "offset of SF_SafetyRequest.aReserved0");
+SL_STATIC_ASSERT(offsetof(SF_SafetyRequest, Ready) == 16, "offset of SF_SafetyRequest.Ready");
+SL_STATIC_ASSERT(offsetof(SF_SafetyRequest, S_SafetyActive) == 17, "offset of SF_SafetyRequest.S_SafetyActive");
+SL_STATIC_ASSERT(offsetof(SF_SafetyRequest, S_SafetyRequest) == 18, "offset of SF_SafetyRequest.S_SafetyRequest");
+SL_STATIC_ASSERT(offsetof(SF_SafetyRequest, SafetyDemand) == 19, "offset of SF_SafetyRequest.SafetyDemand");
+SL_STATIC_ASSERT(offsetof(SF_SafetyRequest, ResetRequest) == 20, "offset of SF_SafetyRequest.ResetRequest");
+SL_STATIC_ASSERT(offsetof(SF_SafetyRequest, Error) == 21, "offset of SF_SafetyRequest.Error");
+SL_STATIC_ASSERT(offsetof(SF_SafetyRequest, DiagCode) == 22, "offset of SF_SafetyRequest.DiagCode");
+SL_STATIC_ASSERT(offsetof(SF_SafetyRequest, stPrivate) == 24, "offset of SF_SafetyRequest.stPrivate");
+SL_STATIC_ASSERT(sizeof(SF_SafetyRequest) == 64, "size of SF_SafetyRequest");
+SL_STATIC_ASSERT(offsetof(SF_OutControl, Activate) == 0, "offset of SF_OutControl.Activate");
+SL_STATIC_ASSERT(offsetof(SF_OutControl, S_SafeControl) == 1, "offset of SF_OutControl.S_SafeControl");
+SL_STATIC_ASSERT(offsetof(SF_OutControl, ProcessControl) == 2, "offset of SF_OutControl.ProcessControl");
+SL_STATIC_ASSERT(offsetof(SF_OutControl, StaticControl) == 3, "offset of SF_OutControl.StaticControl");
+SL_STATIC_ASSERT(offsetof(SF_OutControl, S_StartReset) == 4, "offset of SF_OutControl.S_StartReset");
+SL_STATIC_ASSERT(offsetof(SF_OutControl, S_AutoReset) == 5, "offset of SF_OutControl.S_AutoReset");
+SL_STATIC_ASSERT(offsetof(SF_OutControl, Reset) == 6, "offset of SF_OutControl.Reset");
+SL_STATIC_ASSERT(offsetof(SF_OutControl, nDiagProfile) == 7, "offset of SF_OutControl.nDiagProfile");
+SL_STATIC_ASSERT(offsetof(SF_OutControl, Ready) == 8, "offset of SF_OutControl.Ready");
+SL_STATIC_ASSERT(offsetof(SF_OutControl, S_OutControl) == 9, "offset of SF_OutControl.S_OutControl");
+SL_STATIC_ASSERT(offsetof(SF_OutControl, SafetyDemand) == 10, "offset of SF_OutControl.SafetyDemand");
+SL_STATIC_ASSERT(offsetof(SF_OutControl, ResetRequest) == 11, "offset of SF_OutControl.ResetRequest");
+SL_STATIC_ASSERT(offsetof(SF_OutControl, Error) == 12, "offset of SF_OutControl.Error");
+SL_STATIC_ASSERT(offsetof(SF_OutControl, aReserved1) == 13, "offset of SF_OutControl.aReserved1");
+SL_STATIC_ASSERT(offsetof(SF_OutControl, DiagCode) == 14, "offset of SF_OutControl.DiagCode");
+SL_STATIC_ASSERT(offsetof(SF_OutControl, stPrivate) == 16, "offset of SF_OutControl.stPrivate");
+SL_STATIC_ASSERT(sizeof(SF_OutControl) == 56, "size of SF_OutControl");
 
 #endif  /* SAFELOGIC_H */

@@ -549,7 +549,7 @@ fn check_sf(t: &BlockType, bytes: &[u8], status: i32, what: &str) -> u16 {
     {
         let on = flag(f.name).unwrap();
         assert!(
-            !on || code == 0x8000,
+            !on || allowed_on(name, f.name, get("nDiagProfile"), code),
             "{name} {what}: {} TRUE at {code:04X}",
             f.name
         );
@@ -588,6 +588,23 @@ fn check_sf(t: &BlockType, bytes: &[u8], status: i32, what: &str) -> u16 {
         }
     }
     code
+}
+
+/// Where a block's own output may be TRUE: at 0x8000, except an `S_` output whose table says
+/// otherwise — SF_SafetyRequest's S_SafetyRequest asks the actuator for the operation mode
+/// in OP_MODE and WAIT_FOR_CONF_OPMODE (research §4.14, semantics QR3), and only there.
+fn allowed_on(block: &str, output: &str, profile: Option<u32>, code: u16) -> bool {
+    match (block, output) {
+        ("SF_SafetyRequest", "S_SafetyRequest") => {
+            let op = if profile == Some(u32::from(SL_SF_PROFILE_V10)) {
+                [0x8002, 0x8012]
+            } else {
+                [0x8802, 0x8804]
+            };
+            op.contains(&code)
+        }
+        _ => code == 0x8000,
+    }
 }
 
 macro_rules! sf_harness {
@@ -712,7 +729,8 @@ macro_rules! sf_harness {
                 for seq in 0..sequences {
                     let mut fb = <$ty>::default();
                     for f in t.fields.iter().filter(|f| f.dir == Dir::Param) {
-                        let v = if f.name == "nDiagProfile" { (seq % 2) as i64 } else { (rng.next() % 60) as i64 };
+                        // A BOOL constant (StaticControl): FALSE or TRUE.
+                        let v = if f.name == "nDiagProfile" { (seq % 2) as i64 } else if f.kind == Kind::Bool { (rng.next() % 2) as i64 } else { (rng.next() % 60) as i64 };
                         fb.set(f.name, v).unwrap();
                     }
                     if FunctionBlock::init(&mut fb) != SL_OK {
@@ -783,6 +801,13 @@ fn every_plcopen_type_keeps_its_properties_over_10000_sequences() {
             }
             "SF_Equivalent" | "SF_Antivalent" => {
                 <safelogic::blocks::sf_pair::PairState as DiagState>::TABLE
+            }
+            "SF_Guard" => <safelogic::blocks::sf_guard::SfGuardState as DiagState>::TABLE,
+            "SF_SafetyRequest" => {
+                <safelogic::blocks::sf_safetyrequest::SafetyRequestState as DiagState>::TABLE
+            }
+            "SF_OutControl" => {
+                <safelogic::blocks::sf_outcontrol::OutControlState as DiagState>::TABLE
             }
             other => panic!("{other}: no state table named in this test"),
         };

@@ -190,6 +190,42 @@ BLOCKS["CONNECTION_SHUTDOWN"] = dict(
 BLOCK_INPUTS = {}  # block -> its BOOL inputs (filled from the header in main)
 
 
+# PLCopen blocks with a script of their own (cycle -> inputs), PLCopen names only.
+SF_STEPS = {
+    # SF_Guard, DiscrepancyTime left at its default T#0: closed at activation with
+    # S_StartReset (8000), opened completely (8802, 8804), switch 1 closing alone (8806, then
+    # the discrepancy error C010 at once), both open (8804), Activate FALSE (0000), again
+    # with S_StartReset (8000), then without: a Reset edge (8402, 8000).
+    "SF_Guard": {0: {"Activate": 0, "S_GuardSwitch1": 0, "S_GuardSwitch2": 0},
+                 2: {"Activate": 1, "S_GuardSwitch1": 1, "S_GuardSwitch2": 1, "S_StartReset": 1},
+                 4: {"S_GuardSwitch1": 0}, 6: {"S_GuardSwitch2": 0}, 8: {"S_GuardSwitch1": 1},
+                 10: {"S_GuardSwitch1": 0}, 12: {"Activate": 0},
+                 14: {"Activate": 1, "S_GuardSwitch1": 1, "S_GuardSwitch2": 1}, 16: {"Activate": 0},
+                 18: {"Activate": 1, "S_StartReset": 0}, 20: {"Reset": 1}, 22: {"Reset": 0}},
+    # SF_SafetyRequest, MonitoringTime 10 s (never elapses in this run): a Reset edge with the
+    # operation mode (8802), the safe mode requested (8002) and acknowledged (8000), the
+    # acknowledgement lost (C010), Activate FALSE (0000), again with S_StartReset and the
+    # actuator acknowledging (8804, 8002, 8000), then operation and safe mode once more.
+    "SF_SafetyRequest": {0: {"Activate": 0, "S_OpMode": 0, "S_Acknowledge": 0, "MonitoringTime": 10000},
+                         2: {"Activate": 1}, 4: {"Reset": 1, "S_OpMode": 1},
+                         6: {"Reset": 0, "S_OpMode": 0}, 8: {"S_Acknowledge": 1},
+                         10: {"S_Acknowledge": 0}, 12: {"Activate": 0},
+                         14: {"Activate": 1, "S_StartReset": 1, "S_Acknowledge": 1},
+                         18: {"S_OpMode": 1}, 20: {"S_Acknowledge": 0}, 22: {"S_OpMode": 0},
+                         24: {"S_Acknowledge": 1}},
+    # SF_OutControl, StaticControl FALSE: a Reset edge (8006), a ProcessControl edge (8000),
+    # the safety function (8802) and its end (8404), a Reset edge with ProcessControl still
+    # TRUE (8006, then the static-control error C010), Activate FALSE (0000), again with
+    # S_StartReset (8006) and a ProcessControl edge (8000).
+    "SF_OutControl": {0: {"Activate": 0, "S_SafeControl": 0, "ProcessControl": 0},
+                      2: {"Activate": 1, "S_SafeControl": 1}, 4: {"Reset": 1},
+                      6: {"Reset": 0, "ProcessControl": 1}, 8: {"S_SafeControl": 0},
+                      10: {"S_SafeControl": 1}, 12: {"Reset": 1}, 14: {"Activate": 0, "Reset": 0},
+                      16: {"Activate": 1, "S_StartReset": 1, "ProcessControl": 0},
+                      18: {"ProcessControl": 1}, 20: {"ProcessControl": 0}},
+}
+
+
 def sf_script(name: str) -> dict:
     """A PLCopen block with one safety input (SF_EmergencyStop, SF_ESPE, SF_PSE) driven as a
     user's program would, with the PLCopen names only: activation without S_StartReset, the
@@ -198,7 +234,9 @@ def sf_script(name: str) -> dict:
     S_AutoReset (8000 again), then the walk over every BOOL input."""
     ins = BLOCK_INPUTS[name]
     safety = ins[1]
-    if "Reset" in ins:
+    if name in SF_STEPS:
+        steps = {c: dict(v) for c, v in SF_STEPS[name].items()}
+    elif "Reset" in ins:
         steps = {0: {"Activate": 0, safety: 0}, 2: {"Activate": 1}, 4: {safety: 1}, 6: {"Reset": 1},
                  8: {"Reset": 0}, 10: {safety: 0, "Reset": 1}, 12: {safety: 1}, 14: {"Reset": 0},
                  16: {"Activate": 0}, 18: {"Activate": 1, "S_StartReset": 1, "S_AutoReset": 1},

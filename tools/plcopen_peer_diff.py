@@ -69,20 +69,34 @@ STEPS = (1, 4, 10, 30, 120)
 # A record: block, prev (the code both had before the call), peer, ours (the codes after it),
 # ins (input name -> 0/1 or ms), outs (the outputs that differ), in_state (ms since our state
 # was entered). The ids are the rows of docs/plcopen-peer-diff.md.
+# The waiting states with a monitored time: block -> (the time input, v1.0 waiting state ->
+# the v1.0 error it ends in when the time has elapsed).
+TIMED_WAITS = {
+    "SF_Equivalent": ("DiscrepancyTime", {0x8004: 0xC001, 0x8014: 0xC002, 0x8005: 0xC003}),
+    "SF_Antivalent": ("DiscrepancyTime", {0x8004: 0xC001, 0x8014: 0xC002, 0x8005: 0xC003}),
+    "SF_Guard": ("DiscrepancyTime", {0x8004: 0xC011, 0x8014: 0xC012}),
+    "SF_SafetyRequest": ("MonitoringTime", {0x8003: 0xC003}),
+}
+
 CLASSES = [
-    ("D1", r"SF_(Equivalent|Antivalent)$",
-     lambda r: r["prev"] in (0x8004, 0x8014, 0x8005)
-     and r["ours"] == {0x8004: 0xC001, 0x8014: 0xC002, 0x8005: 0xC003}[r["prev"]]
-     and r["in_state"] >= r["ins"]["DiscrepancyTime"] and r["peer"] < 0xC000,
-     "peer bug (§6: timers): the discrepancy TONX is called only on entry into the waiting state, "
-     "so its Q never rises and C001/C002/C003 are never reached (the peer stays, or takes the next "
-     "guard); ours: the error once DiscrepancyTime has elapsed since the entry, before every other "
-     "guard (PP1)"),
+    ("D1", r"SF_(Equivalent|Antivalent|Guard|SafetyRequest)$",
+     lambda r: r["ours"] == TIMED_WAITS[r["block"]][1].get(r["prev"])
+     and r["in_state"] >= r["ins"][TIMED_WAITS[r["block"]][0]] and r["peer"] < 0xC000,
+     "peer bug (§6: timers): the peer calls its monitoring TONX only on the transition into the "
+     "waiting state (and with IN FALSE elsewhere), never while waiting, so its Q never rises and "
+     "the timeout error is never reached (the peer stays, or takes the next guard); ours: the "
+     "error once the monitored time has elapsed since the entry, before every other guard "
+     "(PP1, QG, QR)"),
     ("D2", r"SF_Antivalent$",
      lambda r: r["prev"] == 0x8000 and r["ins"]["S_ChannelNC"] == 0 and r["ins"]["S_ChannelNO"] == 1
      and r["peer"] == 0x8005 and r["ours"] == 0x8001,
      "peer bug (§6: Antivalent unreachable guard): in 8000 the peer tests 'NOT NC OR NO' before "
      "'NOT NC AND NO', so both channels inactive go to 8005 (and then C003); ours: 8001 (PP1)"),
+    ("D3", r"SF_SafetyRequest$",
+     lambda r: r["prev"] == 0x8001 and r["peer"] == 0x8001 and r["ours"] == 0xC001 and r["ins"]["Reset"] == 1,
+     "peer gap (§6: 'SafetyRequest lacks static-reset check in init'): a Reset held in INIT "
+     "leaves the peer waiting in 8001; ours: the static-reset error C001 (v2.01 C001), as in every "
+     "other wait for a Reset edge (QR2)"),
 ]
 
 
@@ -201,7 +215,7 @@ def driver_c(pairs, sequences: int, steps: int, seed: int) -> str:
                 f"void peer_{lo}_get(unsigned char *o, unsigned short *diag);",
                 f"static {p.b.struct.name} o_{lo};",
                 f"static unsigned char in_{lo}[{nb}];", f"static unsigned t_{lo}[{nt}];",
-                f"static int live_{lo}; static unsigned entered_{lo};",
+                f"static int live_{lo}; static unsigned hold_{lo}; static unsigned entered_{lo};",
                 f"static unsigned tr_{lo}[128]; static int ntr_{lo};",
                 f"static unsigned reached_{lo}[65536 / 32];", ""]
         out.append(f"static void step_{lo}(int seq, int k, int fresh)")
@@ -212,10 +226,11 @@ def driver_c(pairs, sequences: int, steps: int, seed: int) -> str:
         for i in range(len(p.times)):
             out.append(f"        t_{lo}[{i}] = TIMES[rnd({len(TIMES)})];")
         out.append(f"        live_{lo} = 1;")
-        out.append(f"    }} else if (!live_{lo}) {{")
-        out.append(f"        in_{lo}[0] = 0; /* after a disagreement: one idle call, then compare again */")
+        out.append(f"    }} else if (!live_{lo} && hold_{lo} == 0) {{")
+        out.append(f"        in_{lo}[0] = 0; /* after a disagreement and the calls held: one idle call, then compare again */")
         out.append(f"        live_{lo} = 1;")
         out.append("    } else {")
+        out.append(f"        if (!live_{lo}) hold_{lo}--; /* diverged: our block goes on (its states are counted), not compared */")
         out.append(f"        for (i = 0; i < {nb}; i++) {{")
         out.append(f"            if (i == 0) {{ if (rnd(100) < (in_{lo}[0] ? 2u : 40u)) in_{lo}[0] ^= 1; }}")
         out.append(f"            else if (rnd(100) < 15u) in_{lo}[i] ^= 1;")
@@ -247,6 +262,7 @@ def driver_c(pairs, sequences: int, steps: int, seed: int) -> str:
             out.append(f"    if (po[{i}] != o_{lo}.{mine}) differ = 1;")
         out.append("    if (!differ) return;")
         out.append(f"    live_{lo} = 0;")
+        out.append(f"    hold_{lo} = rnd(8);")
         out.append(f'    printf("DIFF {p.b.name} seq=%d cycle=%d prev=%04X peer=%04X ours=%04X in_state=%u", '
                    f"seq, k, prev, pd, o_{lo}.DiagCode, now_ms - prev_entered);")
         for i, (mine, _) in enumerate(p.bools):

@@ -245,6 +245,13 @@ pub trait SfBlock: SfInstance + Sized {
     /// Reads the block's own input bytes (not Activate, not Reset); whether one was an
     /// invalid BOOL (it reads FALSE, the safe value of every `S_` input).
     fn decode(&self) -> (Self::In, bool);
+    /// [`Self::decode`] plus the block's own edge memories (a block with an R_TRIG on an
+    /// input of its own, kept in the private header's flags): called once in every call,
+    /// whatever the state, like the R_TRIG of Reset. Default: no edge of its own.
+    #[inline(always)]
+    fn decode_edges(&mut self) -> (Self::In, bool) {
+        self.decode()
+    }
     /// The next state from a state other than IDLE: the block's one match, first matching
     /// guard wins. `in_state` is the time since the state was entered (ms), `times` the
     /// latched constant times.
@@ -402,7 +409,7 @@ pub fn cycle<B: SfBlock>(fb: &mut B, now: u32) -> Status {
     );
     let reset = ResetIn { level, rising };
     let activate_raw = fb.activate_raw();
-    let (inp, invalid) = fb.decode();
+    let (inp, invalid) = fb.decode_edges();
     if invalid || activate_raw > 1 || reset_raw > 1 {
         status = status.worst(Status::InvalidBool);
     }

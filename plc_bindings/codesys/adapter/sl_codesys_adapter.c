@@ -1290,6 +1290,54 @@ void CDECL CDECL_EXT cds_sl_sf_antivalent_cycle(cds_sl_sf_antivalent_cycle_struc
     p->cds_sl_sf_antivalent_cycle = sl_sf_antivalent_cycle(p->pFb, p->tNow);
 }
 
+void CDECL CDECL_EXT cds_sl_sf_guard_init(cds_sl_sf_guard_init_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_sf_guard_init = sl_sf_guard_init(p->pFb);
+}
+
+void CDECL CDECL_EXT cds_sl_sf_guard_cycle(cds_sl_sf_guard_cycle_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_sf_guard_cycle = sl_sf_guard_cycle(p->pFb, p->tNow);
+}
+
+void CDECL CDECL_EXT cds_sl_sf_safetyrequest_init(cds_sl_sf_safetyrequest_init_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_sf_safetyrequest_init = sl_sf_safetyrequest_init(p->pFb);
+}
+
+void CDECL CDECL_EXT cds_sl_sf_safetyrequest_cycle(cds_sl_sf_safetyrequest_cycle_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_sf_safetyrequest_cycle = sl_sf_safetyrequest_cycle(p->pFb, p->tNow);
+}
+
+void CDECL CDECL_EXT cds_sl_sf_outcontrol_init(cds_sl_sf_outcontrol_init_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_sf_outcontrol_init = sl_sf_outcontrol_init(p->pFb);
+}
+
+void CDECL CDECL_EXT cds_sl_sf_outcontrol_cycle(cds_sl_sf_outcontrol_cycle_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_sf_outcontrol_cycle = sl_sf_outcontrol_cycle(p->pFb, p->tNow);
+}
+
 void CDECL CDECL_EXT cds_sl_time_now_ms(cds_sl_time_now_ms_struct *p)
 {
     if (p == 0) {

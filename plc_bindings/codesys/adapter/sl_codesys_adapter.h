@@ -1234,6 +1234,51 @@ typedef struct tagcds_sl_sf_antivalent_cycle_struct {
 } cds_sl_sf_antivalent_cycle_struct;
 void CDECL CDECL_EXT cds_sl_sf_antivalent_cycle(cds_sl_sf_antivalent_cycle_struct *p);
 
+/* FUNCTION cds_sl_sf_guard_init : DINT -> sl_sf_guard_init() */
+typedef struct tagcds_sl_sf_guard_init_struct {
+    struct SF_Guard *pFb; /* VAR_INPUT pFb : POINTER TO ST_SF_Guard */
+    int32_t cds_sl_sf_guard_init; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_sf_guard_init_struct;
+void CDECL CDECL_EXT cds_sl_sf_guard_init(cds_sl_sf_guard_init_struct *p);
+
+/* FUNCTION cds_sl_sf_guard_cycle : DINT -> sl_sf_guard_cycle() */
+typedef struct tagcds_sl_sf_guard_cycle_struct {
+    struct SF_Guard *pFb; /* VAR_INPUT pFb : POINTER TO ST_SF_Guard */
+    uint32_t tNow; /* VAR_INPUT tNow : UDINT */
+    int32_t cds_sl_sf_guard_cycle; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_sf_guard_cycle_struct;
+void CDECL CDECL_EXT cds_sl_sf_guard_cycle(cds_sl_sf_guard_cycle_struct *p);
+
+/* FUNCTION cds_sl_sf_safetyrequest_init : DINT -> sl_sf_safetyrequest_init() */
+typedef struct tagcds_sl_sf_safetyrequest_init_struct {
+    struct SF_SafetyRequest *pFb; /* VAR_INPUT pFb : POINTER TO ST_SF_SafetyRequest */
+    int32_t cds_sl_sf_safetyrequest_init; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_sf_safetyrequest_init_struct;
+void CDECL CDECL_EXT cds_sl_sf_safetyrequest_init(cds_sl_sf_safetyrequest_init_struct *p);
+
+/* FUNCTION cds_sl_sf_safetyrequest_cycle : DINT -> sl_sf_safetyrequest_cycle() */
+typedef struct tagcds_sl_sf_safetyrequest_cycle_struct {
+    struct SF_SafetyRequest *pFb; /* VAR_INPUT pFb : POINTER TO ST_SF_SafetyRequest */
+    uint32_t tNow; /* VAR_INPUT tNow : UDINT */
+    int32_t cds_sl_sf_safetyrequest_cycle; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_sf_safetyrequest_cycle_struct;
+void CDECL CDECL_EXT cds_sl_sf_safetyrequest_cycle(cds_sl_sf_safetyrequest_cycle_struct *p);
+
+/* FUNCTION cds_sl_sf_outcontrol_init : DINT -> sl_sf_outcontrol_init() */
+typedef struct tagcds_sl_sf_outcontrol_init_struct {
+    struct SF_OutControl *pFb; /* VAR_INPUT pFb : POINTER TO ST_SF_OutControl */
+    int32_t cds_sl_sf_outcontrol_init; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_sf_outcontrol_init_struct;
+void CDECL CDECL_EXT cds_sl_sf_outcontrol_init(cds_sl_sf_outcontrol_init_struct *p);
+
+/* FUNCTION cds_sl_sf_outcontrol_cycle : DINT -> sl_sf_outcontrol_cycle() */
+typedef struct tagcds_sl_sf_outcontrol_cycle_struct {
+    struct SF_OutControl *pFb; /* VAR_INPUT pFb : POINTER TO ST_SF_OutControl */
+    uint32_t tNow; /* VAR_INPUT tNow : UDINT */
+    int32_t cds_sl_sf_outcontrol_cycle; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_sf_outcontrol_cycle_struct;
+void CDECL CDECL_EXT cds_sl_sf_outcontrol_cycle(cds_sl_sf_outcontrol_cycle_struct *p);
+
 /* FUNCTION cds_sl_time_now_ms : UDINT -> sl_time_now_ms() */
 typedef struct tagcds_sl_time_now_ms_struct {
     uint32_t cds_sl_time_now_ms; /* VAR_OUTPUT (return value) UDINT */
@@ -1494,6 +1539,12 @@ void CDECL CDECL_EXT cds_sl_diag_text(cds_sl_diag_text_struct *p);
     X(cds_sl_sf_equivalent_cycle) \
     X(cds_sl_sf_antivalent_init) \
     X(cds_sl_sf_antivalent_cycle) \
+    X(cds_sl_sf_guard_init) \
+    X(cds_sl_sf_guard_cycle) \
+    X(cds_sl_sf_safetyrequest_init) \
+    X(cds_sl_sf_safetyrequest_cycle) \
+    X(cds_sl_sf_outcontrol_init) \
+    X(cds_sl_sf_outcontrol_cycle) \
     X(cds_sl_time_now_ms) \
     X(cds_sl_ton2_get_elapsed) \
     X(cds_sl_group_init) \

@@ -1456,6 +1456,60 @@ HRESULT CSafeLogicModule::sl_sf_antivalent_cycle(PVOID pFb, int32_t *pnResult, u
     return S_OK;
 }
 
+HRESULT CSafeLogicModule::sl_sf_guard_init(PVOID pFb, int32_t *pnResult)
+{
+    if (pFb == NULL || pnResult == NULL) {
+        return E_POINTER;
+    }
+    *pnResult = ::sl_sf_guard_init(static_cast<struct SF_Guard *>(pFb));
+    return S_OK;
+}
+
+HRESULT CSafeLogicModule::sl_sf_guard_cycle(PVOID pFb, int32_t *pnResult, uint32_t tNow)
+{
+    if (pFb == NULL || pnResult == NULL) {
+        return E_POINTER;
+    }
+    *pnResult = ::sl_sf_guard_cycle(static_cast<struct SF_Guard *>(pFb), tNow);
+    return S_OK;
+}
+
+HRESULT CSafeLogicModule::sl_sf_safetyrequest_init(PVOID pFb, int32_t *pnResult)
+{
+    if (pFb == NULL || pnResult == NULL) {
+        return E_POINTER;
+    }
+    *pnResult = ::sl_sf_safetyrequest_init(static_cast<struct SF_SafetyRequest *>(pFb));
+    return S_OK;
+}
+
+HRESULT CSafeLogicModule::sl_sf_safetyrequest_cycle(PVOID pFb, int32_t *pnResult, uint32_t tNow)
+{
+    if (pFb == NULL || pnResult == NULL) {
+        return E_POINTER;
+    }
+    *pnResult = ::sl_sf_safetyrequest_cycle(static_cast<struct SF_SafetyRequest *>(pFb), tNow);
+    return S_OK;
+}
+
+HRESULT CSafeLogicModule::sl_sf_outcontrol_init(PVOID pFb, int32_t *pnResult)
+{
+    if (pFb == NULL || pnResult == NULL) {
+        return E_POINTER;
+    }
+    *pnResult = ::sl_sf_outcontrol_init(static_cast<struct SF_OutControl *>(pFb));
+    return S_OK;
+}
+
+HRESULT CSafeLogicModule::sl_sf_outcontrol_cycle(PVOID pFb, int32_t *pnResult, uint32_t tNow)
+{
+    if (pFb == NULL || pnResult == NULL) {
+        return E_POINTER;
+    }
+    *pnResult = ::sl_sf_outcontrol_cycle(static_cast<struct SF_OutControl *>(pFb), tNow);
+    return S_OK;
+}
+
 HRESULT CSafeLogicModule::sl_ton2_get_elapsed(PVOID pFb, int32_t *pnResult, uint32_t * pPElapsedMs)
 {
     if (pFb == NULL || pnResult == NULL) {
