@@ -630,9 +630,7 @@ pub trait Links {
     /// Entry `i`.
     fn get(&self, i: usize) -> Option<SL_LINK>;
     /// Entry `i`'s destination member (what a cycle reads first of every link).
-    fn dst(&self, i: usize) -> Option<u16> {
-        self.get(i).map(|l| l.nDstMember)
-    }
+    fn dst(&self, i: usize) -> Option<u16>;
     /// Entry `i`'s bytes as words for the schedule check (bytes 0–7, bytes 8–11).
     fn words(&self, i: usize) -> Option<[u64; 2]> {
         let l = self.get(i)?;
@@ -653,6 +651,9 @@ impl Links for [SL_LINK] {
     }
     fn get(&self, i: usize) -> Option<SL_LINK> {
         <[SL_LINK]>::get(self, i).copied()
+    }
+    fn dst(&self, i: usize) -> Option<u16> {
+        <[SL_LINK]>::get(self, i).map(|l| l.nDstMember)
     }
 }
 
@@ -1179,10 +1180,10 @@ pub fn cycle_traced<M: Members + ?Sized, L: Links + ?Sized>(
             outcome
         } else {
             let mut links_intact = true;
-            while let Some(l) = links
-                .get(next_link)
-                .filter(|l| next_link < link_count && usize::from(l.nDstMember) == i)
+            while next_link < link_count
+                && links.dst(next_link).is_some_and(|d| usize::from(d) == i)
             {
+                let Some(l) = links.get(next_link) else { break };
                 next_link += 1;
                 if sealed && l.nKind <= SL_LINK_ANALOG32 {
                     m.copy_sealed(&l);
