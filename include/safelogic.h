@@ -1102,6 +1102,11 @@
 #define SL_TYPE_SF_EMERGENCYSTOP 512
 
 /*
+ Block type tag of SF_EnableSwitch (`SL_MEMBER.nType`, `sl_diag_text`).
+ */
+#define SL_TYPE_SF_ENABLESWITCH 523
+
+/*
  Block type tag of SF_Equivalent (`SL_MEMBER.nType`, `sl_diag_text`).
  */
 #define SL_TYPE_SF_EQUIVALENT 515
@@ -11896,6 +11901,77 @@ typedef struct SF_Antivalent {
   struct SL_SF_PRIVATE stPrivate;
 } SF_Antivalent;
 
+/*
+ SF_EnableSwitch instance: the PLCopen VAR_INPUT / VAR_OUTPUT names, BOOL = one byte.
+ Size: 56 bytes.
+ */
+typedef struct SF_EnableSwitch {
+  /*
+   Offset 0. Activate: FALSE = idle (DiagCode 0000, every output FALSE), highest priority.
+   */
+  SL_BOOL Activate;
+  /*
+   Offset 1. S_SafetyActive: the safe operation mode (reduced speed …) is active; FALSE = basic mode, output FALSE.
+   */
+  SL_BOOL S_SafetyActive;
+  /*
+   Offset 2. S_EnableSwitchCh1: contacts E1 and E2 of the enable switch (TRUE in position 2 only).
+   */
+  SL_BOOL S_EnableSwitchCh1;
+  /*
+   Offset 3. S_EnableSwitchCh2: contacts E3 and E4 of the enable switch (TRUE in positions 1 and 2).
+   */
+  SL_BOOL S_EnableSwitchCh2;
+  /*
+   Offset 4. S_AutoReset: TRUE = the operation errors are left without Reset once the switch is back.
+   */
+  SL_BOOL S_AutoReset;
+  /*
+   Offset 5. Reset: a rising edge resets an operation error; held TRUE there it is a static-reset error.
+   */
+  SL_BOOL Reset;
+  /*
+   Offset 6. Reserved, keep 0.
+   */
+  uint8_t aReserved0[1];
+  /*
+   Offset 7. Library extension, constant: DiagCode profile, 0 = v2.01 (default), 1 = v1.0; latched at activation.
+   */
+  uint8_t nDiagProfile;
+  /*
+   Offset 8 (output base). Ready: TRUE while activated (DiagCode != 0000).
+   */
+  SL_BOOL Ready;
+  /*
+   Offset 9. S_EnableSwitchOut: the safety output (suspension of the guard), TRUE only at DiagCode 8000.
+   */
+  SL_BOOL S_EnableSwitchOut;
+  /*
+   Offset 10. SafetyDemand: the safety function is demanded (v2.01 code bit 0x0800).
+   */
+  SL_BOOL SafetyDemand;
+  /*
+   Offset 11. ResetRequest: a reset is awaited (v2.01 code bit 0x0400, which no state of this block has) and Reset is FALSE.
+   */
+  SL_BOOL ResetRequest;
+  /*
+   Offset 12. Error: DiagCode >= C000.
+   */
+  SL_BOOL Error;
+  /*
+   Offset 13. Reserved.
+   */
+  uint8_t aReserved1[1];
+  /*
+   Offset 14. DiagCode: the state or error, in the profile of nDiagProfile.
+   */
+  uint16_t DiagCode;
+  /*
+   Offset 16. Private state, 40 bytes: never write it.
+   */
+  struct SL_SF_PRIVATE stPrivate;
+} SF_EnableSwitch;
+
 
 
 #ifdef __cplusplus
@@ -12288,6 +12364,8 @@ int32_t sl_sf_equivalent_init(struct SF_Equivalent *fb);
 int32_t sl_sf_equivalent_cycle(struct SF_Equivalent *fb, uint32_t tNow);
 int32_t sl_sf_antivalent_init(struct SF_Antivalent *fb);
 int32_t sl_sf_antivalent_cycle(struct SF_Antivalent *fb, uint32_t tNow);
+int32_t sl_sf_enableswitch_init(struct SF_EnableSwitch *fb);
+int32_t sl_sf_enableswitch_cycle(struct SF_EnableSwitch *fb, uint32_t tNow);
 
 #ifdef __cplusplus
 }  // extern "C"
@@ -14642,5 +14720,22 @@ SL_STATIC_ASSERT(offsetof(SF_Antivalent, aReserved1) == 12, "offset of SF_Antiva
 SL_STATIC_ASSERT(offsetof(SF_Antivalent, DiagCode) == 14, "offset of SF_Antivalent.DiagCode");
 SL_STATIC_ASSERT(offsetof(SF_Antivalent, stPrivate) == 16, "offset of SF_Antivalent.stPrivate");
 SL_STATIC_ASSERT(sizeof(SF_Antivalent) == 56, "size of SF_Antivalent");
+SL_STATIC_ASSERT(offsetof(SF_EnableSwitch, Activate) == 0, "offset of SF_EnableSwitch.Activate");
+SL_STATIC_ASSERT(offsetof(SF_EnableSwitch, S_SafetyActive) == 1, "offset of SF_EnableSwitch.S_SafetyActive");
+SL_STATIC_ASSERT(offsetof(SF_EnableSwitch, S_EnableSwitchCh1) == 2, "offset of SF_EnableSwitch.S_EnableSwitchCh1");
+SL_STATIC_ASSERT(offsetof(SF_EnableSwitch, S_EnableSwitchCh2) == 3, "offset of SF_EnableSwitch.S_EnableSwitchCh2");
+SL_STATIC_ASSERT(offsetof(SF_EnableSwitch, S_AutoReset) == 4, "offset of SF_EnableSwitch.S_AutoReset");
+SL_STATIC_ASSERT(offsetof(SF_EnableSwitch, Reset) == 5, "offset of SF_EnableSwitch.Reset");
+SL_STATIC_ASSERT(offsetof(SF_EnableSwitch, aReserved0) == 6, "offset of SF_EnableSwitch.aReserved0");
+SL_STATIC_ASSERT(offsetof(SF_EnableSwitch, nDiagProfile) == 7, "offset of SF_EnableSwitch.nDiagProfile");
+SL_STATIC_ASSERT(offsetof(SF_EnableSwitch, Ready) == 8, "offset of SF_EnableSwitch.Ready");
+SL_STATIC_ASSERT(offsetof(SF_EnableSwitch, S_EnableSwitchOut) == 9, "offset of SF_EnableSwitch.S_EnableSwitchOut");
+SL_STATIC_ASSERT(offsetof(SF_EnableSwitch, SafetyDemand) == 10, "offset of SF_EnableSwitch.SafetyDemand");
+SL_STATIC_ASSERT(offsetof(SF_EnableSwitch, ResetRequest) == 11, "offset of SF_EnableSwitch.ResetRequest");
+SL_STATIC_ASSERT(offsetof(SF_EnableSwitch, Error) == 12, "offset of SF_EnableSwitch.Error");
+SL_STATIC_ASSERT(offsetof(SF_EnableSwitch, aReserved1) == 13, "offset of SF_EnableSwitch.aReserved1");
+SL_STATIC_ASSERT(offsetof(SF_EnableSwitch, DiagCode) == 14, "offset of SF_EnableSwitch.DiagCode");
+SL_STATIC_ASSERT(offsetof(SF_EnableSwitch, stPrivate) == 16, "offset of SF_EnableSwitch.stPrivate");
+SL_STATIC_ASSERT(sizeof(SF_EnableSwitch) == 56, "size of SF_EnableSwitch");
 
 #endif  /* SAFELOGIC_H */

@@ -784,6 +784,9 @@ fn every_plcopen_type_keeps_its_properties_over_10000_sequences() {
             "SF_Equivalent" | "SF_Antivalent" => {
                 <safelogic::blocks::sf_pair::PairState as DiagState>::TABLE
             }
+            "SF_EnableSwitch" => {
+                <safelogic::blocks::sf_enableswitch::EnableSwitchState as DiagState>::TABLE
+            }
             other => panic!("{other}: no state table named in this test"),
         };
         for (c2, c1, n, _) in v2 {

@@ -190,6 +190,21 @@ BLOCKS["CONNECTION_SHUTDOWN"] = dict(
 BLOCK_INPUTS = {}  # block -> its BOOL inputs (filled from the header in main)
 
 
+# PLCopen blocks with a script of their own (cycle -> inputs): run (8000), an error, idle
+# (Activate FALSE), run again; the walk over every BOOL input follows (sf_script).
+SF_STEPS = {
+    # Position 1 → 2 (8000), panic position 3 then 3 → 2 (C030), back to 1 (C040), idle,
+    # again 1 → 2, a Reset edge while released.
+    "SF_EnableSwitch": {
+        0: {"Activate": 0, "S_SafetyActive": 1, "S_EnableSwitchCh1": 0, "S_EnableSwitchCh2": 1},
+        2: {"Activate": 1}, 6: {"S_EnableSwitchCh1": 1},
+        8: {"S_EnableSwitchCh1": 0, "S_EnableSwitchCh2": 0},
+        10: {"S_EnableSwitchCh1": 1, "S_EnableSwitchCh2": 1},
+        12: {"S_EnableSwitchCh1": 0}, 14: {"Activate": 0}, 16: {"Activate": 1},
+        20: {"S_EnableSwitchCh1": 1}, 22: {"S_EnableSwitchCh1": 0, "Reset": 1}, 24: {"Reset": 0}},
+}
+
+
 def sf_script(name: str) -> dict:
     """A PLCopen block with one safety input (SF_EmergencyStop, SF_ESPE, SF_PSE) driven as a
     user's program would, with the PLCopen names only: activation without S_StartReset, the
@@ -198,7 +213,9 @@ def sf_script(name: str) -> dict:
     S_AutoReset (8000 again), then the walk over every BOOL input."""
     ins = BLOCK_INPUTS[name]
     safety = ins[1]
-    if "Reset" in ins:
+    if name in SF_STEPS:
+        steps = {c: dict(v) for c, v in SF_STEPS[name].items()}
+    elif "Reset" in ins:
         steps = {0: {"Activate": 0, safety: 0}, 2: {"Activate": 1}, 4: {safety: 1}, 6: {"Reset": 1},
                  8: {"Reset": 0}, 10: {safety: 0, "Reset": 1}, 12: {safety: 1}, 14: {"Reset": 0},
                  16: {"Activate": 0}, 18: {"Activate": 1, "S_StartReset": 1, "S_AutoReset": 1},

@@ -2351,5 +2351,22 @@ int main(void)
     printf("F SF_Antivalent aReserved1 %zu %zu\n", offsetof(SF_Antivalent, aReserved1), sizeof(((SF_Antivalent *)0)->aReserved1));
     printf("F SF_Antivalent DiagCode %zu %zu\n", offsetof(SF_Antivalent, DiagCode), sizeof(((SF_Antivalent *)0)->DiagCode));
     printf("F SF_Antivalent stPrivate %zu %zu\n", offsetof(SF_Antivalent, stPrivate), sizeof(((SF_Antivalent *)0)->stPrivate));
+    printf("S SF_EnableSwitch %zu\n", sizeof(SF_EnableSwitch));
+    printf("F SF_EnableSwitch Activate %zu %zu\n", offsetof(SF_EnableSwitch, Activate), sizeof(((SF_EnableSwitch *)0)->Activate));
+    printf("F SF_EnableSwitch S_SafetyActive %zu %zu\n", offsetof(SF_EnableSwitch, S_SafetyActive), sizeof(((SF_EnableSwitch *)0)->S_SafetyActive));
+    printf("F SF_EnableSwitch S_EnableSwitchCh1 %zu %zu\n", offsetof(SF_EnableSwitch, S_EnableSwitchCh1), sizeof(((SF_EnableSwitch *)0)->S_EnableSwitchCh1));
+    printf("F SF_EnableSwitch S_EnableSwitchCh2 %zu %zu\n", offsetof(SF_EnableSwitch, S_EnableSwitchCh2), sizeof(((SF_EnableSwitch *)0)->S_EnableSwitchCh2));
+    printf("F SF_EnableSwitch S_AutoReset %zu %zu\n", offsetof(SF_EnableSwitch, S_AutoReset), sizeof(((SF_EnableSwitch *)0)->S_AutoReset));
+    printf("F SF_EnableSwitch Reset %zu %zu\n", offsetof(SF_EnableSwitch, Reset), sizeof(((SF_EnableSwitch *)0)->Reset));
+    printf("F SF_EnableSwitch aReserved0 %zu %zu\n", offsetof(SF_EnableSwitch, aReserved0), sizeof(((SF_EnableSwitch *)0)->aReserved0));
+    printf("F SF_EnableSwitch nDiagProfile %zu %zu\n", offsetof(SF_EnableSwitch, nDiagProfile), sizeof(((SF_EnableSwitch *)0)->nDiagProfile));
+    printf("F SF_EnableSwitch Ready %zu %zu\n", offsetof(SF_EnableSwitch, Ready), sizeof(((SF_EnableSwitch *)0)->Ready));
+    printf("F SF_EnableSwitch S_EnableSwitchOut %zu %zu\n", offsetof(SF_EnableSwitch, S_EnableSwitchOut), sizeof(((SF_EnableSwitch *)0)->S_EnableSwitchOut));
+    printf("F SF_EnableSwitch SafetyDemand %zu %zu\n", offsetof(SF_EnableSwitch, SafetyDemand), sizeof(((SF_EnableSwitch *)0)->SafetyDemand));
+    printf("F SF_EnableSwitch ResetRequest %zu %zu\n", offsetof(SF_EnableSwitch, ResetRequest), sizeof(((SF_EnableSwitch *)0)->ResetRequest));
+    printf("F SF_EnableSwitch Error %zu %zu\n", offsetof(SF_EnableSwitch, Error), sizeof(((SF_EnableSwitch *)0)->Error));
+    printf("F SF_EnableSwitch aReserved1 %zu %zu\n", offsetof(SF_EnableSwitch, aReserved1), sizeof(((SF_EnableSwitch *)0)->aReserved1));
+    printf("F SF_EnableSwitch DiagCode %zu %zu\n", offsetof(SF_EnableSwitch, DiagCode), sizeof(((SF_EnableSwitch *)0)->DiagCode));
+    printf("F SF_EnableSwitch stPrivate %zu %zu\n", offsetof(SF_EnableSwitch, stPrivate), sizeof(((SF_EnableSwitch *)0)->stPrivate));
     return 0;
 }

@@ -34,6 +34,7 @@ pub mod sbt;
 pub mod scale;
 pub mod sf_antivalent;
 pub mod sf_emergencystop;
+pub mod sf_enableswitch;
 pub mod sf_equivalent;
 pub mod sf_espe;
 pub mod sf_pair;

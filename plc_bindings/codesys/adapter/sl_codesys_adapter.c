@@ -1290,6 +1290,22 @@ void CDECL CDECL_EXT cds_sl_sf_antivalent_cycle(cds_sl_sf_antivalent_cycle_struc
     p->cds_sl_sf_antivalent_cycle = sl_sf_antivalent_cycle(p->pFb, p->tNow);
 }
 
+void CDECL CDECL_EXT cds_sl_sf_enableswitch_init(cds_sl_sf_enableswitch_init_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_sf_enableswitch_init = sl_sf_enableswitch_init(p->pFb);
+}
+
+void CDECL CDECL_EXT cds_sl_sf_enableswitch_cycle(cds_sl_sf_enableswitch_cycle_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_sf_enableswitch_cycle = sl_sf_enableswitch_cycle(p->pFb, p->tNow);
+}
+
 void CDECL CDECL_EXT cds_sl_time_now_ms(cds_sl_time_now_ms_struct *p)
 {
     if (p == 0) {
