@@ -1122,6 +1122,21 @@
 #define SL_TYPE_SF_PSE 514
 
 /*
+ Type III's synchronism time (ms): fixed, not a parameter (CS-EXT, CS-LIB).
+ */
+#define SYNC_TIME_MS 500
+
+/*
+ Block type tag of SF_TwoHandControlTypeII (`SL_MEMBER.nType`, `sl_diag_text`).
+ */
+#define SL_TYPE_SF_TWOHANDCONTROLTYPEII 524
+
+/*
+ Block type tag of SF_TwoHandControlTypeIII (`SL_MEMBER.nType`, `sl_diag_text`).
+ */
+#define SL_TYPE_SF_TWOHANDCONTROLTYPEIII 525
+
+/*
  Type tag of FB_SLI_INT (ABI-2 §10.6: sequential in the order of §10.3).
  */
 #define SL_TYPE_SLI_INT 60
@@ -11972,6 +11987,116 @@ typedef struct SF_EnableSwitch {
   struct SL_SF_PRIVATE stPrivate;
 } SF_EnableSwitch;
 
+/*
+ SF_TwoHandControlTypeII instance: the PLCopen VAR_INPUT / VAR_OUTPUT names, BOOL = one byte.
+ Size: 56 bytes.
+ */
+typedef struct SF_TwoHandControlTypeII {
+  /*
+   Offset 0. Activate: FALSE = idle (DiagCode 0000, every output FALSE), highest priority.
+   */
+  SL_BOOL Activate;
+  /*
+   Offset 1. S_Button1: button 1, TRUE = actuated (category 3 or 4: from two antivalent contacts).
+   */
+  SL_BOOL S_Button1;
+  /*
+   Offset 2. S_Button2: button 2, TRUE = actuated.
+   */
+  SL_BOOL S_Button2;
+  /*
+   Offset 3. Reserved, keep 0.
+   */
+  uint8_t aReserved0[4];
+  /*
+   Offset 7. Library extension, constant: DiagCode profile, 0 = v2.01 (default), 1 = v1.0; latched at activation.
+   */
+  uint8_t nDiagProfile;
+  /*
+   Offset 8 (output base). Ready: TRUE while activated (DiagCode != 0000).
+   */
+  SL_BOOL Ready;
+  /*
+   Offset 9. S_TwoHandOut: the safety output, TRUE only at DiagCode 8000.
+   */
+  SL_BOOL S_TwoHandOut;
+  /*
+   Offset 10. SafetyDemand: the safety function is demanded (v2.01 code bit 0x0800).
+   */
+  SL_BOOL SafetyDemand;
+  /*
+   Offset 11. Error: DiagCode >= C000.
+   */
+  SL_BOOL Error;
+  /*
+   Offset 12. Reserved.
+   */
+  uint8_t aReserved1[2];
+  /*
+   Offset 14. DiagCode: the state or error, in the profile of nDiagProfile.
+   */
+  uint16_t DiagCode;
+  /*
+   Offset 16. Private state, 40 bytes: never write it.
+   */
+  struct SL_SF_PRIVATE stPrivate;
+} SF_TwoHandControlTypeII;
+
+/*
+ SF_TwoHandControlTypeIII instance: the PLCopen VAR_INPUT / VAR_OUTPUT names, BOOL = one byte.
+ Size: 56 bytes.
+ */
+typedef struct SF_TwoHandControlTypeIII {
+  /*
+   Offset 0. Activate: FALSE = idle (DiagCode 0000, every output FALSE), highest priority.
+   */
+  SL_BOOL Activate;
+  /*
+   Offset 1. S_Button1: button 1, TRUE = actuated (category 3 or 4: from two antivalent contacts).
+   */
+  SL_BOOL S_Button1;
+  /*
+   Offset 2. S_Button2: button 2, TRUE = actuated.
+   */
+  SL_BOOL S_Button2;
+  /*
+   Offset 3. Reserved, keep 0.
+   */
+  uint8_t aReserved0[4];
+  /*
+   Offset 7. Library extension, constant: DiagCode profile, 0 = v2.01 (default), 1 = v1.0; latched at activation.
+   */
+  uint8_t nDiagProfile;
+  /*
+   Offset 8 (output base). Ready: TRUE while activated (DiagCode != 0000).
+   */
+  SL_BOOL Ready;
+  /*
+   Offset 9. S_TwoHandOut: the safety output, TRUE only at DiagCode 8000.
+   */
+  SL_BOOL S_TwoHandOut;
+  /*
+   Offset 10. SafetyDemand: the safety function is demanded (v2.01 code bit 0x0800).
+   */
+  SL_BOOL SafetyDemand;
+  /*
+   Offset 11. Error: DiagCode >= C000.
+   */
+  SL_BOOL Error;
+  /*
+   Offset 12. Reserved.
+   */
+  uint8_t aReserved1[2];
+  /*
+   Offset 14. DiagCode: the state or error, in the profile of nDiagProfile.
+   */
+  uint16_t DiagCode;
+  /*
+   Offset 16. Private state, 40 bytes: never write it.
+   */
+  struct SL_SF_PRIVATE stPrivate;
+} SF_TwoHandControlTypeIII;
+
 
 
 #ifdef __cplusplus
@@ -12366,6 +12491,10 @@ int32_t sl_sf_antivalent_init(struct SF_Antivalent *fb);
 int32_t sl_sf_antivalent_cycle(struct SF_Antivalent *fb, uint32_t tNow);
 int32_t sl_sf_enableswitch_init(struct SF_EnableSwitch *fb);
 int32_t sl_sf_enableswitch_cycle(struct SF_EnableSwitch *fb, uint32_t tNow);
+int32_t sl_sf_twohandcontroltypeii_init(struct SF_TwoHandControlTypeII *fb);
+int32_t sl_sf_twohandcontroltypeii_cycle(struct SF_TwoHandControlTypeII *fb, uint32_t tNow);
+int32_t sl_sf_twohandcontroltypeiii_init(struct SF_TwoHandControlTypeIII *fb);
+int32_t sl_sf_twohandcontroltypeiii_cycle(struct SF_TwoHandControlTypeIII *fb, uint32_t tNow);
 
 #ifdef __cplusplus
 }  // extern "C"
@@ -14737,5 +14866,31 @@ SL_STATIC_ASSERT(offsetof(SF_EnableSwitch, aReserved1) == 13, "offset of SF_Enab
 SL_STATIC_ASSERT(offsetof(SF_EnableSwitch, DiagCode) == 14, "offset of SF_EnableSwitch.DiagCode");
 SL_STATIC_ASSERT(offsetof(SF_EnableSwitch, stPrivate) == 16, "offset of SF_EnableSwitch.stPrivate");
 SL_STATIC_ASSERT(sizeof(SF_EnableSwitch) == 56, "size of SF_EnableSwitch");
+SL_STATIC_ASSERT(offsetof(SF_TwoHandControlTypeII, Activate) == 0, "offset of SF_TwoHandControlTypeII.Activate");
+SL_STATIC_ASSERT(offsetof(SF_TwoHandControlTypeII, S_Button1) == 1, "offset of SF_TwoHandControlTypeII.S_Button1");
+SL_STATIC_ASSERT(offsetof(SF_TwoHandControlTypeII, S_Button2) == 2, "offset of SF_TwoHandControlTypeII.S_Button2");
+SL_STATIC_ASSERT(offsetof(SF_TwoHandControlTypeII, aReserved0) == 3, "offset of SF_TwoHandControlTypeII.aReserved0");
+SL_STATIC_ASSERT(offsetof(SF_TwoHandControlTypeII, nDiagProfile) == 7, "offset of SF_TwoHandControlTypeII.nDiagProfile");
+SL_STATIC_ASSERT(offsetof(SF_TwoHandControlTypeII, Ready) == 8, "offset of SF_TwoHandControlTypeII.Ready");
+SL_STATIC_ASSERT(offsetof(SF_TwoHandControlTypeII, S_TwoHandOut) == 9, "offset of SF_TwoHandControlTypeII.S_TwoHandOut");
+SL_STATIC_ASSERT(offsetof(SF_TwoHandControlTypeII, SafetyDemand) == 10, "offset of SF_TwoHandControlTypeII.SafetyDemand");
+SL_STATIC_ASSERT(offsetof(SF_TwoHandControlTypeII, Error) == 11, "offset of SF_TwoHandControlTypeII.Error");
+SL_STATIC_ASSERT(offsetof(SF_TwoHandControlTypeII, aReserved1) == 12, "offset of SF_TwoHandControlTypeII.aReserved1");
+SL_STATIC_ASSERT(offsetof(SF_TwoHandControlTypeII, DiagCode) == 14, "offset of SF_TwoHandControlTypeII.DiagCode");
+SL_STATIC_ASSERT(offsetof(SF_TwoHandControlTypeII, stPrivate) == 16, "offset of SF_TwoHandControlTypeII.stPrivate");
+SL_STATIC_ASSERT(sizeof(SF_TwoHandControlTypeII) == 56, "size of SF_TwoHandControlTypeII");
+SL_STATIC_ASSERT(offsetof(SF_TwoHandControlTypeIII, Activate) == 0, "offset of SF_TwoHandControlTypeIII.Activate");
+SL_STATIC_ASSERT(offsetof(SF_TwoHandControlTypeIII, S_Button1) == 1, "offset of SF_TwoHandControlTypeIII.S_Button1");
+SL_STATIC_ASSERT(offsetof(SF_TwoHandControlTypeIII, S_Button2) == 2, "offset of SF_TwoHandControlTypeIII.S_Button2");
+SL_STATIC_ASSERT(offsetof(SF_TwoHandControlTypeIII, aReserved0) == 3, "offset of SF_TwoHandControlTypeIII.aReserved0");
+SL_STATIC_ASSERT(offsetof(SF_TwoHandControlTypeIII, nDiagProfile) == 7, "offset of SF_TwoHandControlTypeIII.nDiagProfile");
+SL_STATIC_ASSERT(offsetof(SF_TwoHandControlTypeIII, Ready) == 8, "offset of SF_TwoHandControlTypeIII.Ready");
+SL_STATIC_ASSERT(offsetof(SF_TwoHandControlTypeIII, S_TwoHandOut) == 9, "offset of SF_TwoHandControlTypeIII.S_TwoHandOut");
+SL_STATIC_ASSERT(offsetof(SF_TwoHandControlTypeIII, SafetyDemand) == 10, "offset of SF_TwoHandControlTypeIII.SafetyDemand");
+SL_STATIC_ASSERT(offsetof(SF_TwoHandControlTypeIII, Error) == 11, "offset of SF_TwoHandControlTypeIII.Error");
+SL_STATIC_ASSERT(offsetof(SF_TwoHandControlTypeIII, aReserved1) == 12, "offset of SF_TwoHandControlTypeIII.aReserved1");
+SL_STATIC_ASSERT(offsetof(SF_TwoHandControlTypeIII, DiagCode) == 14, "offset of SF_TwoHandControlTypeIII.DiagCode");
+SL_STATIC_ASSERT(offsetof(SF_TwoHandControlTypeIII, stPrivate) == 16, "offset of SF_TwoHandControlTypeIII.stPrivate");
+SL_STATIC_ASSERT(sizeof(SF_TwoHandControlTypeIII) == 56, "size of SF_TwoHandControlTypeIII");
 
 #endif  /* SAFELOGIC_H */

@@ -590,6 +590,15 @@ fn check_sf(t: &BlockType, bytes: &[u8], status: i32, what: &str) -> u16 {
     code
 }
 
+/// The factor on the depth run's time steps (0–40 ms): SF_TwoHandControlTypeIII's fixed
+/// 500 ms synchronism time is reached in 24 calls only with longer steps.
+fn sf_time_scale(name: &str) -> u32 {
+    match name {
+        "SF_TwoHandControlTypeIII" => 15,
+        _ => 1,
+    }
+}
+
 macro_rules! sf_harness {
     ($($ty:ty => $init:ident, $cycle:ident;)*) => {
         /// Random bytes everywhere (the private state included), random time steps and
@@ -735,7 +744,7 @@ macro_rules! sf_harness {
                         now = if r & 255 == 0 {
                             now.wrapping_sub(1 + (rng.next() % 50) as u32)
                         } else {
-                            now.wrapping_add((rng.next() % 41) as u32)
+                            now.wrapping_add((rng.next() % 41) as u32 * sf_time_scale(t.info.name))
                         };
                         // SAFETY: a live, exclusively borrowed instance.
                         let rc = unsafe { safelogic::ffi::$cycle(&mut fb, now) };
@@ -786,6 +795,12 @@ fn every_plcopen_type_keeps_its_properties_over_10000_sequences() {
             }
             "SF_EnableSwitch" => {
                 <safelogic::blocks::sf_enableswitch::EnableSwitchState as DiagState>::TABLE
+            }
+            "SF_TwoHandControlTypeII" => {
+                <safelogic::blocks::sf_twohand::TwoHandIIState as DiagState>::TABLE
+            }
+            "SF_TwoHandControlTypeIII" => {
+                <safelogic::blocks::sf_twohand::TwoHandIIIState as DiagState>::TABLE
             }
             other => panic!("{other}: no state table named in this test"),
         };

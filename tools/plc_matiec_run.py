@@ -203,6 +203,13 @@ SF_STEPS = {
         12: {"S_EnableSwitchCh1": 0}, 14: {"Activate": 0}, 16: {"Activate": 1},
         20: {"S_EnableSwitchCh1": 1}, 22: {"S_EnableSwitchCh1": 0, "Reset": 1}, 24: {"Reset": 0}},
 }
+# Two-hand control: button 1 then 2 (8000), idle with both held, activation with both held
+# (C030), both released, idle, again 1 then 2, released one by one.
+SF_STEPS["SF_TwoHandControlTypeII"] = SF_STEPS["SF_TwoHandControlTypeIII"] = {
+    0: {"Activate": 0, "S_Button1": 0, "S_Button2": 0}, 2: {"Activate": 1}, 4: {"S_Button1": 1},
+    6: {"S_Button2": 1}, 8: {"Activate": 0}, 10: {"Activate": 1},
+    12: {"S_Button1": 0, "S_Button2": 0}, 14: {"Activate": 0}, 16: {"Activate": 1},
+    18: {"S_Button1": 1}, 20: {"S_Button2": 1}, 22: {"S_Button1": 0}, 24: {"S_Button2": 0}}
 
 
 def sf_script(name: str) -> dict:

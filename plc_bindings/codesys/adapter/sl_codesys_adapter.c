@@ -1306,6 +1306,38 @@ void CDECL CDECL_EXT cds_sl_sf_enableswitch_cycle(cds_sl_sf_enableswitch_cycle_s
     p->cds_sl_sf_enableswitch_cycle = sl_sf_enableswitch_cycle(p->pFb, p->tNow);
 }
 
+void CDECL CDECL_EXT cds_sl_sf_twohandcontroltypeii_init(cds_sl_sf_twohandcontroltypeii_init_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_sf_twohandcontroltypeii_init = sl_sf_twohandcontroltypeii_init(p->pFb);
+}
+
+void CDECL CDECL_EXT cds_sl_sf_twohandcontroltypeii_cycle(cds_sl_sf_twohandcontroltypeii_cycle_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_sf_twohandcontroltypeii_cycle = sl_sf_twohandcontroltypeii_cycle(p->pFb, p->tNow);
+}
+
+void CDECL CDECL_EXT cds_sl_sf_twohandcontroltypeiii_init(cds_sl_sf_twohandcontroltypeiii_init_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_sf_twohandcontroltypeiii_init = sl_sf_twohandcontroltypeiii_init(p->pFb);
+}
+
+void CDECL CDECL_EXT cds_sl_sf_twohandcontroltypeiii_cycle(cds_sl_sf_twohandcontroltypeiii_cycle_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_sf_twohandcontroltypeiii_cycle = sl_sf_twohandcontroltypeiii_cycle(p->pFb, p->tNow);
+}
+
 void CDECL CDECL_EXT cds_sl_time_now_ms(cds_sl_time_now_ms_struct *p)
 {
     if (p == 0) {
