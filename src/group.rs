@@ -389,7 +389,9 @@ macro_rules! impl_sf_member {
             type State = $crate::prim::sf::SfPhase;
             const FIELDS: &'static [$crate::registry::Field] = &[
                 $($crate::impl_member!(@field $i, Input, io_kind),)*
-                $($crate::impl_member!(@field $p, Param, same),)*
+                // A PLCopen constant of one byte is a BOOL (AutoSetMode), except `n…`
+                // (nDiagProfile).
+                $($crate::impl_member!(@field $p, Param, io_kind),)*
                 $($crate::impl_member!(@field $o, Output, io_kind),)*
                 $crate::impl_member!(@field DiagCode, Info, same)
             ];

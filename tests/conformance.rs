@@ -549,7 +549,7 @@ fn check_sf(t: &BlockType, bytes: &[u8], status: i32, what: &str) -> u16 {
     {
         let on = flag(f.name).unwrap();
         assert!(
-            !on || code == 0x8000,
+            !on || code == 0x8000 || sf_holds_outputs(name, get("nDiagProfile"), code),
             "{name} {what}: {} TRUE at {code:04X}",
             f.name
         );
@@ -588,6 +588,17 @@ fn check_sf(t: &BlockType, bytes: &[u8], status: i32, what: &str) -> u16 {
         }
     }
     code
+}
+
+/// A state other than 0x8000 in which a block's safety outputs may be TRUE: SF_ModeSelector's
+/// MODE_LOCKED (v2.01 8010, v1.0 8004) holds the selected mode (research §9.3, semantics QM2).
+fn sf_holds_outputs(name: &str, profile: Option<u32>, code: u16) -> bool {
+    let locked = if profile == Some(u32::from(SL_SF_PROFILE_V10)) {
+        0x8004
+    } else {
+        0x8010
+    };
+    name == "SF_ModeSelector" && code == locked
 }
 
 /// The factor on the depth run's time steps (0–40 ms): SF_TwoHandControlTypeIII's fixed
@@ -721,7 +732,14 @@ macro_rules! sf_harness {
                 for seq in 0..sequences {
                     let mut fb = <$ty>::default();
                     for f in t.fields.iter().filter(|f| f.dir == Dir::Param) {
-                        let v = if f.name == "nDiagProfile" { (seq % 2) as i64 } else { (rng.next() % 60) as i64 };
+                        let v = if f.name == "nDiagProfile" {
+                            (seq % 2) as i64
+                        } else if f.kind == Kind::Bool {
+                            // A BOOL constant (AutoSetMode).
+                            (rng.next() % 2) as i64
+                        } else {
+                            (rng.next() % 60) as i64
+                        };
                         fb.set(f.name, v).unwrap();
                     }
                     if FunctionBlock::init(&mut fb) != SL_OK {
@@ -801,6 +819,9 @@ fn every_plcopen_type_keeps_its_properties_over_10000_sequences() {
             }
             "SF_TwoHandControlTypeIII" => {
                 <safelogic::blocks::sf_twohand::TwoHandIIIState as DiagState>::TABLE
+            }
+            "SF_ModeSelector" => {
+                <safelogic::blocks::sf_modeselector::ModeState as DiagState>::TABLE
             }
             other => panic!("{other}: no state table named in this test"),
         };

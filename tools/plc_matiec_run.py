@@ -210,6 +210,13 @@ SF_STEPS["SF_TwoHandControlTypeII"] = SF_STEPS["SF_TwoHandControlTypeIII"] = {
     6: {"S_Button2": 1}, 8: {"Activate": 0}, 10: {"Activate": 1},
     12: {"S_Button1": 0, "S_Button2": 0}, 14: {"Activate": 0}, 16: {"Activate": 1},
     18: {"S_Button1": 1}, 20: {"S_Button2": 1}, 22: {"S_Button1": 0}, 24: {"S_Button2": 0}}
+# Mode selector: mode 1 confirmed by S_SetMode (8000), a second mode (C010), back to one
+# (C410), idle, again (8000), locked (8010) and unlocked, a Reset edge.
+SF_STEPS["SF_ModeSelector"] = {
+    0: {"Activate": 0, "S_Unlock": 1, "S_Mode1": 1}, 2: {"Activate": 1}, 4: {"S_SetMode": 1},
+    6: {"S_SetMode": 0}, 8: {"S_Mode2": 1}, 10: {"S_Mode2": 0}, 12: {"Activate": 0},
+    14: {"Activate": 1}, 16: {"S_SetMode": 1}, 18: {"S_SetMode": 0, "S_Unlock": 0},
+    20: {"S_Unlock": 1}, 22: {"Reset": 1}, 24: {"Reset": 0}}
 
 
 def sf_script(name: str) -> dict:

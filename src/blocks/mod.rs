@@ -6,7 +6,9 @@
 //! have state machines of their own. The PLCopen Safety blocks (`sf_*`, struct names
 //! `SF_<Name>`) run in the PLCopen envelope (`prim::sf`); SF_EmergencyStop, SF_ESPE and
 //! SF_PSE share the restart-interlock machine of `sf_restart`, SF_Equivalent and
-//! SF_Antivalent the two-channel machine of `sf_pair`.
+//! SF_Antivalent the two-channel machine of `sf_pair`, SF_TwoHandControlTypeII and
+//! SF_TwoHandControlTypeIII the two-hand machine of `sf_twohand`; SF_EnableSwitch and
+//! SF_ModeSelector have machines of their own.
 
 pub mod advposmon;
 pub mod analog;
@@ -37,6 +39,7 @@ pub mod sf_emergencystop;
 pub mod sf_enableswitch;
 pub mod sf_equivalent;
 pub mod sf_espe;
+pub mod sf_modeselector;
 pub mod sf_pair;
 pub mod sf_pse;
 pub mod sf_restart;

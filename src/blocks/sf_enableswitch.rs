@@ -62,7 +62,11 @@ pub struct EnableSwitchIn {
 /// Research §4.9's table (v2.01 codes), first matching guard wins; `NOT S_SafetyActive` comes
 /// first in every state, the errors included (semantics QN1). IDLE → BASIC_OPMODE is the
 /// envelope's (Activate).
-pub fn next(s: EnableSwitchState, i: &EnableSwitchIn, r: ResetIn) -> EnableSwitchState {
+pub fn enable_switch_next(
+    s: EnableSwitchState,
+    i: &EnableSwitchIn,
+    r: ResetIn,
+) -> EnableSwitchState {
     use EnableSwitchState::*;
     use Position::*;
     let p = i.position;
@@ -201,7 +205,7 @@ impl crate::prim::sf::SfBlock for SF_EnableSwitch {
         _in_state: u32,
         _t: [u32; 2],
     ) -> Self::Diag {
-        next(s, inp, reset)
+        enable_switch_next(s, inp, reset)
     }
     #[inline(always)]
     fn write_outputs(&mut self, o: &SfOut) {

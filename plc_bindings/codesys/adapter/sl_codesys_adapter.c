@@ -1338,6 +1338,22 @@ void CDECL CDECL_EXT cds_sl_sf_twohandcontroltypeiii_cycle(cds_sl_sf_twohandcont
     p->cds_sl_sf_twohandcontroltypeiii_cycle = sl_sf_twohandcontroltypeiii_cycle(p->pFb, p->tNow);
 }
 
+void CDECL CDECL_EXT cds_sl_sf_modeselector_init(cds_sl_sf_modeselector_init_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_sf_modeselector_init = sl_sf_modeselector_init(p->pFb);
+}
+
+void CDECL CDECL_EXT cds_sl_sf_modeselector_cycle(cds_sl_sf_modeselector_cycle_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_sf_modeselector_cycle = sl_sf_modeselector_cycle(p->pFb, p->tNow);
+}
+
 void CDECL CDECL_EXT cds_sl_time_now_ms(cds_sl_time_now_ms_struct *p)
 {
     if (p == 0) {
