@@ -23,3 +23,4 @@
 #include "test_sbt.c"
 #include "test_advposmon.c"
 #include "test_cammonitor.c"
+#include "test_plcopen.c"

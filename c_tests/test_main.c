@@ -254,6 +254,7 @@ int main(void)
     run_sbt_scenarios();
     run_advposmon_scenarios();
     run_cammonitor_scenarios();
+    run_plcopen_scenarios();
     printf("%d passed, %d failed\n", h_passed, h_failed);
     return h_failed == 0 ? 0 : 1;
 }

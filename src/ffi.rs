@@ -452,6 +452,11 @@ impl group::Links for CLinks {
         // (sl_group_init contract); read by value.
         (i < self.count).then(|| unsafe { self.base.add(i).read() })
     }
+    fn dst(&self, i: usize) -> Option<u16> {
+        // SAFETY: as in `get`; only the (2-aligned) nDstMember field is read.
+        (i < self.count)
+            .then(|| unsafe { core::ptr::addr_of!((*self.base.add(i)).nDstMember).read() })
+    }
     fn words(&self, i: usize) -> Option<[u64; 2]> {
         // SAFETY: as in `get`; a link is 12 bytes without padding: read as a 64-bit and a
         // 32-bit word (2-aligned, so unaligned reads).
@@ -909,8 +914,26 @@ pub unsafe extern "C" fn sl_group_cycle(
     aLinks: *mut SL_LINK,
     tNow: u32,
 ) -> i32 {
+    // SAFETY: the caller's contract is this function's.
+    unsafe { sl_group_cycle_traced(g, aMembers, aLinks, tNow, &mut 0) }
+}
+
+/// `sl_group_cycle`, also adding to `straight` the members the sealed schedule ran straight
+/// (group::cycle_traced): for the tests that pin the sealed schedule; not part of the C API.
+///
+/// # Safety
+/// As for `sl_group_cycle`.
+#[doc(hidden)]
+#[allow(non_snake_case)]
+pub unsafe fn sl_group_cycle_traced(
+    g: *mut SL_GROUP,
+    aMembers: *mut SL_MEMBER,
+    aLinks: *mut SL_LINK,
+    tNow: u32,
+    straight: &mut usize,
+) -> i32 {
     ffi_boundary!(SL_E_INTERNAL, {
-        let run = || -> Result<i32, i32> {
+        let mut run = || -> Result<i32, i32> {
             let g_ptr = g;
             let g = instance(g)?;
             let mut none: [&mut dyn Member; 0] = [];
@@ -932,7 +955,7 @@ pub unsafe extern "C" fn sl_group_cycle(
                 base: aLinks,
                 count: usize::from(links),
             };
-            Ok(group::cycle_with(g, &mut t, &l, tNow))
+            Ok(group::cycle_traced(g, &mut t, &l, tNow, straight))
         };
         run().unwrap_or_else(|e| e)
     })

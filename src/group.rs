@@ -629,6 +629,10 @@ pub trait Links {
     fn count(&self) -> usize;
     /// Entry `i`.
     fn get(&self, i: usize) -> Option<SL_LINK>;
+    /// Entry `i`'s destination member (what a cycle reads first of every link).
+    fn dst(&self, i: usize) -> Option<u16> {
+        self.get(i).map(|l| l.nDstMember)
+    }
     /// Entry `i`'s bytes as words for the schedule check (bytes 0–7, bytes 8–11).
     fn words(&self, i: usize) -> Option<[u64; 2]> {
         let l = self.get(i)?;
@@ -1051,6 +1055,20 @@ pub fn cycle_with<M: Members + ?Sized, L: Links + ?Sized>(
     links: &L,
     now: u32,
 ) -> i32 {
+    cycle_traced(g, m, links, now, &mut 0)
+}
+
+/// [`cycle_with`], also adding to `straight` the members the sealed schedule ran straight
+/// (`run_straight`), for the tests that pin it (the count is not observable otherwise: the
+/// member loop gives the same results, only slower).
+#[doc(hidden)]
+pub fn cycle_traced<M: Members + ?Sized, L: Links + ?Sized>(
+    g: &mut SL_GROUP,
+    m: &mut M,
+    links: &L,
+    now: u32,
+    straight: &mut usize,
+) -> i32 {
     let Some(mut c) = g.stPrivate.load() else {
         // Member count and storage size are unknown: no member can be reached safely.
         g.bInRun = 0;
@@ -1131,32 +1149,61 @@ pub fn cycle_with<M: Members + ?Sized, L: Links + ?Sized>(
     let schedule = m.schedule_check(links);
     let sealed = schedule.is_some_and(|s| s == stored_schedule(g));
     let mut all_intact = true;
-    for i in 0..usize::from(c.members) {
-        let mut links_intact = true;
-        while let Some(l) = links
-            .get(next_link)
-            .filter(|l| next_link < link_count && usize::from(l.nDstMember) == i)
-        {
-            next_link += 1;
-            if sealed && l.nKind <= SL_LINK_ANALOG32 {
-                m.copy_sealed(&l);
-                continue;
+    let members = usize::from(c.members);
+    let mut i = 0;
+    while i < members {
+        // A sealed cycle runs the plain stretches of the schedule straight; the member that
+        // needs more (or every member, otherwise) takes the steps below.
+        let mut ran_straight = None;
+        if sealed {
+            let s = run_straight(
+                m,
+                links,
+                link_count,
+                (i, next_link),
+                members,
+                member_run,
+                ack_level,
+                now,
+                &mut w,
+            );
+            status = status.worst(s.status);
+            all_run &= s.all_run;
+            *straight += s.member - i;
+            (i, next_link, ran_straight) = (s.member, s.link, s.ran);
+            if i == members {
+                break;
             }
-            // A link that fails its check is not copied: its destination is stopped.
-            links_intact &= sealed || l.aReserved == link_check(&l, next_link - 1, c.links);
-            if !links_intact {
-                continue;
-            }
-            copy_link(m, &l, i);
         }
-        all_intact &= links_intact;
-        let outcome = if sealed {
-            m.run_sealed(i, member_run, ack_level, now, &mut w)
-        } else if links_intact {
-            m.with(i, |b| b.run_in_group(member_run, ack_level, now, &mut w))
+        let outcome = if let Some(outcome) = ran_straight {
+            outcome
         } else {
-            m.with(i, |b| b.run_in_group(0, ack_level, now, &mut w));
-            None
+            let mut links_intact = true;
+            while let Some(l) = links
+                .get(next_link)
+                .filter(|l| next_link < link_count && usize::from(l.nDstMember) == i)
+            {
+                next_link += 1;
+                if sealed && l.nKind <= SL_LINK_ANALOG32 {
+                    m.copy_sealed(&l);
+                    continue;
+                }
+                // A link that fails its check is not copied: its destination is stopped.
+                links_intact &= sealed || l.aReserved == link_check(&l, next_link - 1, c.links);
+                if !links_intact {
+                    continue;
+                }
+                copy_link(m, &l, i);
+            }
+            all_intact &= links_intact;
+            if sealed {
+                m.run_sealed(i, member_run, ack_level, now, &mut w)
+            } else if links_intact {
+                m.with(i, |b| b.run_in_group(member_run, ack_level, now, &mut w))
+            } else {
+                m.with(i, |b| b.run_in_group(0, ack_level, now, &mut w));
+                None
+            }
         };
         all_intact &= outcome.is_some();
         apply_request(m, &mut w);
@@ -1206,6 +1253,7 @@ pub fn cycle_with<M: Members + ?Sized, L: Links + ?Sized>(
             }
         }
         member_run &= u8::from(c.state == SL_STATE_RUN);
+        i += 1;
     }
 
     // A link that no member consumed (forged destination or order) was not applied: the
@@ -1248,6 +1296,79 @@ pub fn cycle_with<M: Members + ?Sized, L: Links + ?Sized>(
     set_outputs(g, &c, member_error, all_run, conns);
     write_info(g, &c);
     status.code()
+}
+
+/// Where [`run_straight`] handed back to the member loop.
+struct Straight {
+    /// The member the loop goes on with (the member count: all ran).
+    member: usize,
+    /// The next link.
+    link: usize,
+    /// The worst status of the members that ran straight.
+    status: Status,
+    /// Every member that ran straight ended its cycle in RUN.
+    all_run: bool,
+    /// `Some(outcome)`: `member` already ran (its outcome goes through the loop's steps);
+    /// `None`: it did not run yet, its links from `link` on not copied.
+    ran: Option<Option<Ran>>,
+}
+
+/// A sealed cycle's straight run (docs/performance.md), from member `at.0` and link `at.1`
+/// up to `members`:
+/// for a member whose incoming links are all BOOL or analog copies and which ends its cycle
+/// as a block (not a connection) outside ERROR, with no connection request pending, all the
+/// member loop does is copy the links, run it, and fold its status and state into the
+/// group's — so that is all this loop does, with no per-member bookkeeping beyond it. It
+/// hands back at the first member that needs more: before an FSoE bit link, or after a run
+/// whose outcome the loop must see (a member that cannot be reached, ERROR, a connection,
+/// a request). The group's state does not change while it runs, so `run` holds throughout.
+#[allow(clippy::too_many_arguments)]
+fn run_straight<M: Members + ?Sized, L: Links + ?Sized>(
+    m: &mut M,
+    links: &L,
+    link_count: usize,
+    at: (usize, usize),
+    members: usize,
+    run: u8,
+    ack: u8,
+    now: u32,
+    w: &mut Wiring,
+) -> Straight {
+    let (mut i, mut k) = at;
+    let mut out = Straight {
+        member: i,
+        link: k,
+        status: Status::Ok,
+        all_run: true,
+        ran: None,
+    };
+    while i < members {
+        while k < link_count && links.dst(k).is_some_and(|d| usize::from(d) == i) {
+            let Some(l) = links.get(k) else { break };
+            if l.nKind > SL_LINK_ANALOG32 {
+                (out.member, out.link) = (i, k);
+                return out;
+            }
+            m.copy_sealed(&l);
+            k += 1;
+        }
+        let outcome = m.run_sealed(i, run, ack, now, w);
+        match outcome {
+            Some(r) if r.conn.is_none() && r.state != SL_STATE_ERROR && w.request.is_none() => {
+                if r.status != Status::Ok {
+                    out.status = out.status.worst(r.status);
+                }
+                out.all_run &= r.state == SL_STATE_RUN;
+                i += 1;
+            }
+            _ => {
+                (out.member, out.link, out.ran) = (i, k, Some(outcome));
+                return out;
+            }
+        }
+    }
+    (out.member, out.link) = (i, k);
+    out
 }
 
 /// Copies one link's value to its destination, member `dst` (ABI-2 §10.7 for the bits).

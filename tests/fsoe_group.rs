@@ -86,6 +86,19 @@ impl Node {
             )
         }
     }
+    /// The next cycle runs the sealed schedule (docs/performance.md): the scenarios below
+    /// then exercise its hand-backs (a connection member, RXBIT/TXBIT links, a shutdown
+    /// request) as well as the checked cycle.
+    fn sealed(&mut self) -> bool {
+        // SAFETY: see `new`.
+        unsafe {
+            safelogic::ffi::sl_group_schedule_sealed(
+                &mut self.g,
+                self.members.as_mut_ptr(),
+                self.links.as_mut_ptr(),
+            )
+        }
+    }
     fn cycle(&mut self, now: u32) -> i32 {
         self.conn.nSessionIdSeed = (now.wrapping_mul(2_654_435_761) >> 16) as u16 | 1;
         // SAFETY: see `new`.
@@ -276,6 +289,10 @@ fn running() -> Pair {
     p.restart();
     p.run(2);
     assert_eq!(p.m.estop.bEStopOut, 1, "state {}", p.m.estop.nState);
+    assert!(
+        p.m.sealed() && p.s.sealed(),
+        "both groups run sealed from here on"
+    );
     p
 }
 

@@ -9,7 +9,7 @@
 //! bRun FALSE, an ErrAck pulse, a discrepancy. The test asserts that A ran sealed in most
 //! cycles, that both reached RUN and ERROR, and that the corruptions stopped both.
 
-use safelogic::ffi::{self, sl_group_add_link, sl_group_add_member, sl_group_cycle, sl_group_init};
+use safelogic::ffi::{self, sl_group_add_link, sl_group_add_member, sl_group_init};
 use safelogic::*;
 use std::mem::offset_of;
 
@@ -170,14 +170,17 @@ fn build() -> Box<Plant> {
     p
 }
 
-fn cycle(p: &mut Plant, now: u32) -> i32 {
+/// One cycle, and how many members the sealed schedule ran straight in it.
+fn cycle_traced(p: &mut Plant, now: u32) -> (i32, usize) {
     let (g, mt, lt) = (
         &mut p.group as *mut SL_GROUP,
         p.members.as_mut_ptr(),
         p.links.as_mut_ptr(),
     );
+    let mut straight = 0;
     // SAFETY: the plant's own group and tables.
-    unsafe { sl_group_cycle(g, mt, lt, now) }
+    let rc = unsafe { ffi::sl_group_cycle_traced(g, mt, lt, now, &mut straight) };
+    (rc, straight)
 }
 
 fn sealed(p: &mut Plant) -> bool {
@@ -186,7 +189,7 @@ fn sealed(p: &mut Plant) -> bool {
         p.members.as_mut_ptr(),
         p.links.as_mut_ptr(),
     );
-    // SAFETY: as in `cycle`.
+    // SAFETY: the plant's own group and tables.
     unsafe { ffi::sl_group_schedule_sealed(g, mt, lt) }
 }
 
@@ -214,6 +217,16 @@ fn view(p: &Plant) -> View {
     }
 }
 
+/// The member blocks in ERROR.
+fn in_error(p: &Plant) -> usize {
+    let states = (p.estops.iter().map(|b| b.nState))
+        .chain(p.mons.iter().map(|b| b.nState))
+        .chain(p.ands.iter().map(|b| b.nState))
+        .chain(p.ors.iter().map(|b| b.nState))
+        .chain(p.tons.iter().map(|b| b.nState));
+    states.filter(|&s| s == SL_STATE_ERROR).count()
+}
+
 #[test]
 fn a_sealed_group_gives_what_a_fully_checked_group_gives() {
     let cycles = 4_000
@@ -231,6 +244,7 @@ fn a_sealed_group_gives_what_a_fully_checked_group_gives() {
     };
     let (mut sealed_cycles, mut group_states, mut corrupt_stops) =
         (0, std::collections::BTreeSet::new(), 0);
+    let (mut straight_cycles, mut handed_back, mut invalid_bools) = (0, 0, 0);
     let mut now = 1000u32;
     let mut restart_until = 0;
     for c in 0..cycles {
@@ -249,6 +263,9 @@ fn a_sealed_group_gives_what_a_fully_checked_group_gives() {
                 1 | 2 => (p.mons[k].bMonIn1, p.mons[k].bMonIn2) = (1, 1),
                 3 => p.estops[k].bEStopIn1 ^= 1,
                 4 => (p.estops[k].bEStopIn1, p.estops[k].bEStopIn2) = (1, 1),
+                // An invalid BOOL for one call: SL_E_INVALID_BOOL from a member that does
+                // not enter ERROR (the status must reach the group's in a sealed cycle too).
+                5 => p.estops[k].bRestart = 2,
                 _ => {}
             }
         }
@@ -274,24 +291,65 @@ fn a_sealed_group_gives_what_a_fully_checked_group_gives() {
             "cycle {c}: the spoiled check still matches"
         );
         now = now.wrapping_add(1 + (r >> 40) as u32 % 5);
-        let (sa, sb) = (cycle(&mut a, now), cycle(&mut b, now));
+        let ((sa, straight), (sb, straight_b)) =
+            (cycle_traced(&mut a, now), cycle_traced(&mut b, now));
         assert_eq!(sa, sb, "cycle {c}: status (A sealed: {was_sealed})");
         assert!(
             view(&a) == view(&b),
             "cycle {c}: the groups differ (A sealed: {was_sealed})"
         );
+        // Only a sealed cycle runs members straight: all of them but those that end the
+        // cycle in ERROR, which go back to the member loop (this plant has no connection,
+        // FSoE link or request, the other hand-backs).
+        assert_eq!(straight_b, 0, "cycle {c}: B is never sealed");
+        if !was_sealed {
+            assert_eq!(
+                straight, 0,
+                "cycle {c}: not sealed, yet {straight} ran straight"
+            );
+        } else {
+            let errors = in_error(&a);
+            assert_eq!(
+                straight,
+                MEMBERS - errors,
+                "cycle {c}: sealed, {errors} members in ERROR"
+            );
+            straight_cycles += usize::from(errors == 0);
+            handed_back += usize::from(errors > 0);
+        }
+        invalid_bools += usize::from(was_sealed && sa == SL_E_INVALID_BOOL);
         group_states.insert(a.group.nState);
         if corrupt {
             assert_eq!(
                 sa, SL_E_CORRUPT,
                 "cycle {c}: a corrupted check byte went unnoticed"
             );
+            // Tables that failed a check are never sealed: the next cycles check them again
+            // (and find them corrupt again) until the caller rebuilds them.
+            for _ in 0..2 {
+                now = now.wrapping_add(1);
+                assert!(!sealed(&mut a), "cycle {c}: corrupt tables were sealed");
+                let (rc, straight) = cycle_traced(&mut a, now);
+                assert_eq!(
+                    (rc, straight),
+                    (SL_E_CORRUPT, 0),
+                    "cycle {c}: after the corruption"
+                );
+            }
             corrupt_stops += 1;
             // Repair, as a caller would by rebuilding: both groups are rebuilt.
             (a, b) = (build(), build());
         }
     }
-    println!("A sealed in {sealed_cycles} of {cycles} cycles; group states {group_states:?}; corruptions stopped {corrupt_stops}");
+    println!("A sealed in {sealed_cycles} of {cycles} cycles ({straight_cycles} with every member run straight, {handed_back} with members in ERROR handed back, {invalid_bools} with SL_E_INVALID_BOOL); group states {group_states:?}; corruptions stopped {corrupt_stops}");
+    assert!(
+        straight_cycles >= 100 && handed_back >= 100,
+        "straight {straight_cycles}, handed back {handed_back}: both are the subject"
+    );
+    assert!(
+        invalid_bools >= 20,
+        "only {invalid_bools} sealed cycles with an invalid BOOL"
+    );
     assert!(
         sealed_cycles * 10 >= cycles * 9,
         "A ran sealed in only {sealed_cycles} of {cycles} cycles"

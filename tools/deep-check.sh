@@ -6,7 +6,8 @@
 # Needs: rustup component add --toolchain nightly miri rust-src; cargo install cargo-fuzz
 # cargo-mutants. Environment:
 #   MIRI_TESTS     the Miri test binaries (default below)
-#   DEEP_STEPS     which steps run (default "miri fuzz mutants")
+#   DEEP_STEPS     which steps run (default "miri fuzz mutants peer")
+#   PEER_ST        a copy of the PLCopen peer ST for the step peer (default: download it)
 #   MUTANTS_ARGS   more cargo-mutants options, e.g. "--in-diff build/my.diff" (only the
 #                  mutants on the lines of that diff; the files may then be omitted)
 #   MUTANTS_TESTS  test targets each mutant is built and tested with (besides the lib's unit
@@ -25,7 +26,7 @@ shift || true
 summary=()
 note() { summary+=("$*"); printf '\n==== %s ====\n' "$*"; }
 
-steps=${DEEP_STEPS:-"miri fuzz mutants"}
+steps=${DEEP_STEPS:-"miri fuzz mutants peer"}
 step() { [[ " $steps " == *" $1 "* ]]; }
 
 miri_tests=${MIRI_TESTS:-"group_soundness ffi"}
@@ -56,6 +57,22 @@ step fuzz && for target in $(cd fuzz && cargo +nightly fuzz list); do
         note "fuzz $target: FINDING (see $log and fuzz/artifacts/$target)"
     fi
 done
+
+# The differential run of the SF_ blocks against the PLCopen peer ST (docs/plcopen-peer-diff.md):
+# needs build/matiec (tools/test-all.sh builds it) and the peer file: PEER_ST=path, or the network.
+if step peer; then
+    log=build/deep-peer.log
+    src=(--fetch)
+    [ -n "${PEER_ST:-}" ] && src=(--peer "$PEER_ST")
+    cargo build --release --lib -q &&
+        python3 tools/plcopen_peer_diff.py --iec2c build/matiec/iec2c --matiec-lib build/matiec/lib \
+            --workdir build/peer-diff "${src[@]}" >"$log" 2>&1
+    if grep -q '^1 passed, 0 failed' "$log"; then
+        note "peer diff: $(grep -E 'calls compared' "$log" | sed 's/ (DiagCode.*//'), every disagreement classified"
+    else
+        note "peer diff FAILED (see $log)"
+    fi
+fi
 
 mutants_tests=${MUTANTS_TESTS:-"estop mon envelope fb_envelope edm group group_soundness links"}
 if step mutants && { [ $# -gt 0 ] || [ -n "${MUTANTS_ARGS:-}" ]; }; then

@@ -29,6 +29,8 @@ import sys
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parent.parent
+sys.path.insert(0, str(ROOT / "tools"))
+from plc_matiec_run import add_matiec_args, build_matiec  # noqa: E402
 
 PROGRAM = """
 PROGRAM prog0
@@ -284,22 +286,9 @@ int main(int argc, char **argv)
 """
 
 
-def run(cmd, **kw):
-    r = subprocess.run(cmd, capture_output=True, text=True, **kw)
-    if r.returncode != 0:
-        sys.stdout.write(r.stdout[-4000:] + r.stderr[-4000:])
-        print(f"FAIL: {' '.join(map(str, cmd))} exited with {r.returncode}")
-        print("0 passed, 1 failed")
-        sys.exit(1)
-    return r
-
-
 def main() -> int:
     ap = argparse.ArgumentParser()
-    ap.add_argument("--iec2c", required=True)
-    ap.add_argument("--matiec-lib", required=True)
-    ap.add_argument("--workdir", required=True, type=Path)
-    ap.add_argument("--lib", default=str(ROOT / "target/release/libsafelogic.a"))
+    add_matiec_args(ap)
     ap.add_argument("--batches", type=int, default=200)
     ap.add_argument("--callgrind", action="store_true",
                     help="also count instructions per call under valgrind's callgrind (10 batches)")
@@ -315,18 +304,7 @@ def main() -> int:
     (w / "driver.c").write_text(DRIVER, encoding="utf-8")
     (w / "st_side.c").write_text(ST_SIDE, encoding="utf-8")
     (w / "bench.h").write_text(COMMON_H, encoding="utf-8")
-    run([args.iec2c, "-f", "-l", "-p", "-r", "-R", "-a", "-I", args.matiec_lib, "-T", str(gen), str(w / "peer.st")])
-    st_inc = ["-I", str(Path(args.matiec_lib) / "C"), "-I", str(gen), "-I", str(w)]
-    objs = []
-    for src in (gen / "Config0.c", gen / "Res0.c", w / "st_side.c"):
-        o = w / (src.stem + ".o")
-        # matiec's generated code is not warning-free; errors still fail the build
-        run(["gcc", "-std=gnu11", "-O2", "-w", *st_inc, "-c", str(src), "-o", str(o)])
-        objs.append(str(o))
-    run(["gcc", "-std=c11", "-O2", "-Wall", "-Wextra", "-Werror", "-I", str(ROOT / "include"), "-I", str(w), "-c",
-         str(w / "driver.c"), "-o", str(w / "driver.o")])
-    objs.append(str(w / "driver.o"))
-    run(["gcc", *objs, args.lib, "-lpthread", "-ldl", "-lm", "-o", str(w / "peer_bench")])
+    build_matiec(args, w / "peer.st", gen, [w / "st_side.c"], w / "driver.c", w / "peer_bench", opt="-O2")
     print("iec2c -f -l -p -r -R -a: tools/peer/estop_peer.st + plc_bindings/iec/safelogic_iec.st; gcc -O2; "
           "linked with libsafelogic.a")
     r = subprocess.run(["taskset", "-c", "1", str(w / "peer_bench"), str(args.batches)], capture_output=True,

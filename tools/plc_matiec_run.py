@@ -236,12 +236,15 @@ def sf_script(name: str) -> dict:
                  20: {safety: 0}, 22: {safety: 1}}
     else:
         # Two channels (SF_Equivalent, SF_Antivalent: a NO channel is active FALSE), the
-        # DiscrepancyTime left at its default 0: both active (8000), one inactive (8806,
-        # then the discrepancy error C030), both inactive (8801), Activate FALSE, again.
+        # DiscrepancyTime (TIME) left at its default T#0ms: both active (8000), one inactive
+        # (8806, then the discrepancy error C030), both inactive (8801), Activate FALSE; then
+        # DiscrepancyTime := T#93784005ms (1d2h3m4s5ms: the instance must latch 93,784,005,
+        # the probe converting matiec's TIME independently) and again.
         a, b = ins[1], ins[2]
         on_b = 0 if b.endswith("NO") else 1
         steps = {0: {"Activate": 0, a: 0, b: 1 - on_b}, 2: {"Activate": 1}, 4: {a: 1, b: on_b},
-                 8: {a: 0}, 12: {b: 1 - on_b}, 14: {a: 1, b: on_b}, 16: {"Activate": 0},
+                 8: {a: 0}, 12: {b: 1 - on_b}, 14: {a: 1, b: on_b},
+                 16: {"Activate": 0, "DiscrepancyTime": 93784005},
                  18: {"Activate": 1}, 22: {a: 0, b: 1 - on_b}}
     cur = {f: 0 for f in ins}
     for c in sorted(steps):
@@ -307,9 +310,11 @@ def st_literal(hdr, fl, blk, field: str, value: int) -> str:
     f = [x for x in blk.inputs if x.name == field]
     if not f:
         raise SystemExit(f"{blk.name}: no input {field}")
-    t, _, _ = fl.fb_type(hdr, f[0])
+    t, _, _ = fl.fb_type(hdr, f[0], blk.is_sf)
     if t == "BOOL":
         return "TRUE" if value else "FALSE"
+    if t == "TIME":
+        return f"T#{value}ms"
     return f"{t}#{value}"
 
 
@@ -544,6 +549,10 @@ def probe_c(hdr) -> str:
         for f in b.inputs + b.outputs:
             if f.count:
                 out.append(f"    memcpy(m->{f.name}, fb->{f.name.upper()}.value.table, sizeof m->{f.name});")
+            elif b.is_sf and plcgen.is_time_ms(f):
+                # a PLCopen TIME input: matiec's timespec in ms, converted here independently
+                out.append(f"    m->{f.name} = (uint32_t)(fb->{f.name.upper()}.value.tv_sec * 1000L"
+                           f" + fb->{f.name.upper()}.value.tv_nsec / 1000000L);")
             else:
                 out.append(f"    m->{f.name} = fb->{f.name.upper()}.value;")
         out.append("    m->tNow = fb->TNOW.value;")
@@ -635,6 +644,33 @@ def driver_c(hdr) -> str:
     return "\n".join(out)
 
 
+def add_matiec_args(ap: argparse.ArgumentParser) -> None:
+    """The options of every tool that compiles ST with matiec and links our library."""
+    ap.add_argument("--iec2c", required=True)
+    ap.add_argument("--matiec-lib", required=True)
+    ap.add_argument("--workdir", required=True, type=Path)
+    ap.add_argument("--lib", default=str(ROOT / "target/release/libsafelogic.a"))
+
+
+def build_matiec(args, st_file: Path, gen: Path, st_side: list, driver: Path, exe: Path, opt: str = "-O0") -> None:
+    """iec2c with OpenPLC's options (-f -l -p -r -R -a) on `st_file` into `gen`; the generated C
+    and the `st_side` sources compiled as C with matiec's lib/C headers (matiec's code is not
+    warning-free: -w, errors still fail); `driver` compiled warning-free against our header;
+    linked with the library into `exe`."""
+    run([args.iec2c, "-f", "-l", "-p", "-r", "-R", "-a", "-I", args.matiec_lib, "-T", str(gen), str(st_file)])
+    w = exe.parent
+    inc = ["-I", str(Path(args.matiec_lib) / "C"), "-I", str(gen), "-I", str(w)]
+    objs = []
+    for src in [gen / "Config0.c", gen / "Res0.c", *st_side]:
+        o = w / (src.stem + ".o")
+        run(["gcc", "-std=gnu11", opt, "-w", *inc, "-c", str(src), "-o", str(o)])
+        objs.append(str(o))
+    o = w / (driver.stem + ".o")
+    run(["gcc", "-std=c11", opt, "-Wall", "-Wextra", "-Werror", "-I", str(ROOT / "include"), "-I", str(w),
+         "-c", str(driver), "-o", str(o)])
+    run(["gcc", str(o), *objs, args.lib, "-lpthread", "-ldl", "-lm", "-o", str(exe)])
+
+
 def run(cmd, **kw):
     r = subprocess.run(cmd, capture_output=True, text=True, **kw)
     if r.returncode != 0:
@@ -669,10 +705,7 @@ def compile_only(args, hdr) -> int:
 
 def main() -> int:
     ap = argparse.ArgumentParser()
-    ap.add_argument("--iec2c", required=True)
-    ap.add_argument("--matiec-lib", required=True)
-    ap.add_argument("--workdir", required=True, type=Path)
-    ap.add_argument("--lib", default=str(ROOT / "target/release/libsafelogic.a"))
+    add_matiec_args(ap)
     ap.add_argument("--header", type=Path, default=ROOT / "include/safelogic.h")
     ap.add_argument("--st", type=Path, default=ROOT / "plc_bindings/iec/safelogic_iec.st")
     ap.add_argument("--compile-only", action="store_true",
@@ -700,19 +733,9 @@ def main() -> int:
     (w / "mirror.h").write_text(mirror_h(hdr), encoding="utf-8")
     (w / "probe.c").write_text(probe_c(hdr), encoding="utf-8")
     (w / "driver.c").write_text(driver_c(hdr), encoding="utf-8")
-    r = run([args.iec2c, "-f", "-l", "-p", "-r", "-R", "-a", "-I", args.matiec_lib, "-T", str(gen), str(w / "test.st")])
+    build_matiec(args, w / "test.st", gen, [w / "probe.c"], w / "driver.c", w / "matiec_run")
     print(f"iec2c -f -l -p -r -R -a: plc_bindings/iec/safelogic_iec.st (unchanged) + test program compiled to "
           f"{', '.join(sorted(p.name for p in gen.glob('*.c')))}")
-    inc = ["-I", str(Path(args.matiec_lib) / "C"), "-I", str(gen), "-I", str(w)]
-    # matiec's generated code is not warning-free; errors still fail the build
-    objs = []
-    for src in (gen / "Config0.c", gen / "Res0.c", w / "probe.c"):
-        o = w / (src.stem + ".o")
-        run(["gcc", "-std=gnu11", "-w", *inc, "-c", str(src), "-o", str(o)])
-        objs.append(str(o))
-    run(["gcc", "-std=c11", "-Wall", "-Wextra", "-Werror", "-I", str(ROOT / "include"), "-I", str(w),
-         "-c", str(w / "driver.c"), "-o", str(w / "driver.o")])
-    run(["gcc", str(w / "driver.o"), *objs, args.lib, "-lpthread", "-ldl", "-lm", "-o", str(w / "matiec_run")])
     print("gcc: generated C compiled as C with matiec's lib/C headers, linked with libsafelogic.a")
     r = subprocess.run([str(w / "matiec_run")], capture_output=True, text=True)
     sys.stdout.write(r.stdout)

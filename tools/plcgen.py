@@ -497,11 +497,16 @@ class Flavour:
         return f"REF_TO {target}" if self.iec else f"POINTER TO {target}"
 
     # --- FB interface types -------------------------------------------------------------
-    def fb_type(self, hdr: Header, f: CField) -> Tuple[str, str, str]:
-        """(ST type of the FB variable, expression DUT<-var, expression var<-DUT) templates."""
+    def fb_type(self, hdr: Header, f: CField, sf: bool = False) -> Tuple[str, str, str]:
+        """(ST type of the FB variable, expression DUT<-var, expression var<-DUT) templates.
+        `sf`: a field of a PLCopen FB, whose times are TIME in every dialect (a user's
+        `DiscrepancyTime := T#20ms` compiles); matiec's TIME_TO_UDINT gives seconds, so the
+        IEC flavour converts with SL_TIME_TO_MS (inline C, milliseconds, saturating)."""
         base = dut_type(hdr, f)
         if is_time_ms(f) and f.count is None and not self.iec:
             return "TIME", "TIME_TO_UDINT({})", "UDINT_TO_TIME({})"
+        if is_time_ms(f) and f.count is None and sf:
+            return "TIME", "SL_TIME_TO_MS(tIn := {})", "{}"
         return base, "{}", "{}"
 
 
@@ -644,7 +649,7 @@ def fb_decl(hdr: Header, fl: Flavour, blk: Block) -> str:
                f"inputs into it, calls {blk.cycle.name} with its address and the task time, copies the outputs back. *)")
     out.append("VAR_INPUT")
     for f in blk.inputs:
-        t, _, _ = fl.fb_type(hdr, f)
+        t, _, _ = fl.fb_type(hdr, f, blk.is_sf)
         init = "" if f.count is not None else f" := {zero_literal(t, fl.iec)}"
         note = f.doc + (" (ms)" if is_time_ms(f) and t != "TIME" and " ms" not in f.doc else "")
         out.append(f"    {f.name} : {t}{init};{cmt(note)}")
@@ -671,6 +676,29 @@ def fb_decl(hdr: Header, fl: Flavour, blk: Block) -> str:
     return "\n".join(out) + "\n"
 
 
+def iec_time_to_ms() -> Tuple[str, str]:
+    """SL_TIME_TO_MS: a TIME in milliseconds for the C instance (matiec's TIME is a timespec and
+    its TIME_TO_UDINT gives seconds). A negative TIME or one beyond 2^32 - 1 ms gives
+    16#FFFFFFFF, which every PLCopen block refuses at activation (SL_E_CONFIG): never a wrapped,
+    plausible-looking short time."""
+    decl = "\n".join([
+        "FUNCTION SL_TIME_TO_MS : UDINT",
+        "(* A TIME in whole milliseconds (sub-millisecond parts truncated); negative or > 2^32 - 1 ms: "
+        "16#FFFFFFFF (refused by the block: SL_E_CONFIG). Inline C (matiec/OpenPLC/Beremiz). *)",
+        "VAR_INPUT",
+        "    tIn : TIME;",
+        "END_VAR",
+    ]) + "\n"
+    body = "\n".join([
+        "SL_TIME_TO_MS := UDINT#16#FFFFFFFF;",
+        "{",
+        "  long long sl_ms = (long long)TIN.tv_sec * 1000LL + (long long)(TIN.tv_nsec / 1000000L);",
+        "  if (sl_ms >= 0LL && sl_ms <= 4294967295LL) SL_TIME_TO_MS = (UDINT)sl_ms;",
+        "}",
+    ]) + "\n"
+    return decl, body
+
+
 def sf_time_source(fl: Flavour) -> str:
     """The ms clock a PLCopen FB reads: the library's monotonic clock where the FB reaches
     C through inline C (IEC/matiec), the PLC's TIME() since start elsewhere."""
@@ -685,7 +713,7 @@ def _assign(lhs: str, rhs_tmpl: str, rhs: str) -> str:
 def fb_body(hdr: Header, fl: Flavour, blk: Block) -> str:
     out = ["(* inputs and parameters -> C instance *)"]
     for f in blk.inputs:
-        _, to_dut, _ = fl.fb_type(hdr, f)
+        _, to_dut, _ = fl.fb_type(hdr, f, blk.is_sf)
         if f.count is None:
             out.append(_assign(f"stData.{f.name}", to_dut, f.name))
         else:
@@ -1306,6 +1334,8 @@ def objects(hdr: Header, fl: Flavour) -> List[Pou]:
         objs.append(Pou("POU", fl.fn_name(f.name), func_decl(hdr, fl, f), func_body(hdr, fl, f), end="END_FUNCTION"))
     for b in hdr.blocks:
         objs.append(Pou("POU", b.fb_name, fb_decl(hdr, fl, b), fb_body(hdr, fl, b), end="END_FUNCTION_BLOCK"))
+    if fl.iec and any(is_time_ms(f) for b in hdr.blocks if b.is_sf for f in b.inputs):
+        objs.append(Pou("POU", "SL_TIME_TO_MS", *iec_time_to_ms(), end="END_FUNCTION"))
     if fl.iec:
         objs += iec_group_objects(hdr, fl)
         objs += iec_text_functions(hdr)

@@ -82,10 +82,10 @@ pub trait Block: Instance + crate::registry::Registered {
     fn steady_key(&self) -> Option<u16> {
         None
     }
-    /// The key the last fixed-point call stored (`None`: the block is not steady).
+    /// The last fixed-point call stored `key` (never for a block that is not steady).
     #[inline(always)]
-    fn stored_key(&self) -> Option<u16> {
-        None
+    fn holds_key(&self, _key: u16) -> bool {
+        false
     }
     /// Stores the key of a fixed-point call, or forgets it (`None`). Whatever changes the
     /// private state outside [`cycle`] forgets it.
@@ -111,8 +111,8 @@ pub trait Block: Instance + crate::registry::Registered {
 pub trait SteadyPrivate: Copy + PartialEq {
     /// The common head.
     fn head_mut(&mut self) -> &mut SL_PRIVATE_HEADER;
-    /// The stored key, if its check copy agrees.
-    fn key(&self) -> Option<u16>;
+    /// The slot holds `key` with its check copy (one compare of the whole slot).
+    fn holds(&self, key: u16) -> bool;
     /// Stores a key with its check copy, or clears the slot (`None`).
     fn set_key(&mut self, key: Option<u16>);
 }
@@ -127,9 +127,8 @@ macro_rules! steady_private {
                 &mut self.stHeader
             }
             #[inline(always)]
-            fn key(&self) -> Option<u16> {
-                let [k, check] = self.$slot;
-                (check == !k).then_some(u16::from(k))
+            fn holds(&self, key: u16) -> bool {
+                <$w>::try_from(key).is_ok_and(|k| self.$slot == [k, !k])
             }
             #[inline(always)]
             fn set_key(&mut self, key: Option<u16>) {
@@ -148,8 +147,8 @@ pub(crate) use steady_private;
 macro_rules! steady_hooks {
     () => {
         #[inline(always)]
-        fn stored_key(&self) -> Option<u16> {
-            $crate::prim::envelope::SteadyPrivate::key(self.private())
+        fn holds_key(&self, key: u16) -> bool {
+            $crate::prim::envelope::SteadyPrivate::holds(self.private(), key)
         }
         #[inline(always)]
         fn store_key(&mut self, key: Option<u16>) {
@@ -242,7 +241,7 @@ pub fn cycle<B: Block>(fb: &mut B, now: u32) -> Status {
 #[inline(always)]
 pub fn cycle_traced<B: Block>(fb: &mut B, now: u32) -> (Status, bool) {
     let key = fb.steady_key();
-    if key.is_some() && fb.stored_key() == key {
+    if key.is_some_and(|k| fb.holds_key(k)) {
         let h = fb.header();
         if h.intact(B::MAGIC)
             && !time::went_backwards(now, h.tLast)
