@@ -108,7 +108,7 @@ def adapt(fb_text: str) -> str:
     t = t.replace("CASE DiagCode OF", "CASE WORD_TO_UINT(DiagCode) OF")
     t = re.sub(r"(?m)^(\s*)16#([0-9A-Fa-f]+)(\s*[,:])",
                lambda m: m.group(1) + str(int(m.group(2), 16)) + m.group(3), t)
-    t = re.sub(r"\bS_Mode(\d)(?=\s*[+<>=)])", r"BOOL_TO_UINT(S_Mode\1)", t)
+    t = re.sub(r"\bS_Mode(\d)(?=\s*\+)", r"BOOL_TO_UINT(S_Mode\1)", t)
     t = re.sub(r"(\+\s*)S_Mode(\d)\b", r"\1BOOL_TO_UINT(S_Mode\2)", t)
     return t
 
