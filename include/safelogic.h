@@ -1102,6 +1102,11 @@
 #define SL_TYPE_SF_EMERGENCYSTOP 512
 
 /*
+ Block type tag of SF_EnableSwitch (`SL_MEMBER.nType`, `sl_diag_text`).
+ */
+#define SL_TYPE_SF_ENABLESWITCH 523
+
+/*
  Block type tag of SF_Equivalent (`SL_MEMBER.nType`, `sl_diag_text`).
  */
 #define SL_TYPE_SF_EQUIVALENT 515
@@ -1117,6 +1122,11 @@
 #define SL_TYPE_SF_GUARD 517
 
 /*
+ Block type tag of SF_ModeSelector (`SL_MEMBER.nType`, `sl_diag_text`).
+ */
+#define SL_TYPE_SF_MODESELECTOR 526
+
+/*
  Block type tag of SF_OutControl (`SL_MEMBER.nType`, `sl_diag_text`).
  */
 #define SL_TYPE_SF_OUTCONTROL 519
@@ -1130,6 +1140,21 @@
  Block type tag of SF_SafetyRequest (`SL_MEMBER.nType`, `sl_diag_text`).
  */
 #define SL_TYPE_SF_SAFETYREQUEST 518
+
+/*
+ Type III's synchronism time (ms): fixed, not a parameter (CS-EXT, CS-LIB).
+ */
+#define SYNC_TIME_MS 500
+
+/*
+ Block type tag of SF_TwoHandControlTypeII (`SL_MEMBER.nType`, `sl_diag_text`).
+ */
+#define SL_TYPE_SF_TWOHANDCONTROLTYPEII 524
+
+/*
+ Block type tag of SF_TwoHandControlTypeIII (`SL_MEMBER.nType`, `sl_diag_text`).
+ */
+#define SL_TYPE_SF_TWOHANDCONTROLTYPEIII 525
 
 /*
  Type tag of FB_SLI_INT (ABI-2 §10.6: sequential in the order of §10.3).
@@ -12129,6 +12154,326 @@ typedef struct SF_OutControl {
   struct SL_SF_PRIVATE stPrivate;
 } SF_OutControl;
 
+/*
+ SF_EnableSwitch instance: the PLCopen VAR_INPUT / VAR_OUTPUT names, BOOL = one byte.
+ Size: 56 bytes.
+ */
+typedef struct SF_EnableSwitch {
+  /*
+   Offset 0. Activate: FALSE = idle (DiagCode 0000, every output FALSE), highest priority.
+   */
+  SL_BOOL Activate;
+  /*
+   Offset 1. S_SafetyActive: the safe operation mode (reduced speed …) is active; FALSE = basic mode, output FALSE.
+   */
+  SL_BOOL S_SafetyActive;
+  /*
+   Offset 2. S_EnableSwitchCh1: contacts E1 and E2 of the enable switch (TRUE in position 2 only).
+   */
+  SL_BOOL S_EnableSwitchCh1;
+  /*
+   Offset 3. S_EnableSwitchCh2: contacts E3 and E4 of the enable switch (TRUE in positions 1 and 2).
+   */
+  SL_BOOL S_EnableSwitchCh2;
+  /*
+   Offset 4. S_AutoReset: TRUE = the operation errors are left without Reset once the switch is back.
+   */
+  SL_BOOL S_AutoReset;
+  /*
+   Offset 5. Reset: a rising edge resets an operation error; held TRUE there it is a static-reset error.
+   */
+  SL_BOOL Reset;
+  /*
+   Offset 6. Reserved, keep 0.
+   */
+  uint8_t aReserved0[1];
+  /*
+   Offset 7. Library extension, constant: DiagCode profile, 0 = v2.01 (default), 1 = v1.0; latched at activation.
+   */
+  uint8_t nDiagProfile;
+  /*
+   Offset 8 (output base). Ready: TRUE while activated (DiagCode != 0000).
+   */
+  SL_BOOL Ready;
+  /*
+   Offset 9. S_EnableSwitchOut: the safety output (suspension of the guard), TRUE only at DiagCode 8000.
+   */
+  SL_BOOL S_EnableSwitchOut;
+  /*
+   Offset 10. SafetyDemand: the safety function is demanded (v2.01 code bit 0x0800).
+   */
+  SL_BOOL SafetyDemand;
+  /*
+   Offset 11. ResetRequest: a reset is awaited (v2.01 code bit 0x0400, which no state of this block has) and Reset is FALSE.
+   */
+  SL_BOOL ResetRequest;
+  /*
+   Offset 12. Error: DiagCode >= C000.
+   */
+  SL_BOOL Error;
+  /*
+   Offset 13. Reserved.
+   */
+  uint8_t aReserved1[1];
+  /*
+   Offset 14. DiagCode: the state or error, in the profile of nDiagProfile.
+   */
+  uint16_t DiagCode;
+  /*
+   Offset 16. Private state, 40 bytes: never write it.
+   */
+  struct SL_SF_PRIVATE stPrivate;
+} SF_EnableSwitch;
+
+/*
+ SF_TwoHandControlTypeII instance: the PLCopen VAR_INPUT / VAR_OUTPUT names, BOOL = one byte.
+ Size: 56 bytes.
+ */
+typedef struct SF_TwoHandControlTypeII {
+  /*
+   Offset 0. Activate: FALSE = idle (DiagCode 0000, every output FALSE), highest priority.
+   */
+  SL_BOOL Activate;
+  /*
+   Offset 1. S_Button1: button 1, TRUE = actuated (category 3 or 4: from two antivalent contacts).
+   */
+  SL_BOOL S_Button1;
+  /*
+   Offset 2. S_Button2: button 2, TRUE = actuated.
+   */
+  SL_BOOL S_Button2;
+  /*
+   Offset 3. Reserved, keep 0.
+   */
+  uint8_t aReserved0[4];
+  /*
+   Offset 7. Library extension, constant: DiagCode profile, 0 = v2.01 (default), 1 = v1.0; latched at activation.
+   */
+  uint8_t nDiagProfile;
+  /*
+   Offset 8 (output base). Ready: TRUE while activated (DiagCode != 0000).
+   */
+  SL_BOOL Ready;
+  /*
+   Offset 9. S_TwoHandOut: the safety output, TRUE only at DiagCode 8000.
+   */
+  SL_BOOL S_TwoHandOut;
+  /*
+   Offset 10. SafetyDemand: the safety function is demanded (v2.01 code bit 0x0800).
+   */
+  SL_BOOL SafetyDemand;
+  /*
+   Offset 11. Error: DiagCode >= C000.
+   */
+  SL_BOOL Error;
+  /*
+   Offset 12. Reserved.
+   */
+  uint8_t aReserved1[2];
+  /*
+   Offset 14. DiagCode: the state or error, in the profile of nDiagProfile.
+   */
+  uint16_t DiagCode;
+  /*
+   Offset 16. Private state, 40 bytes: never write it.
+   */
+  struct SL_SF_PRIVATE stPrivate;
+} SF_TwoHandControlTypeII;
+
+/*
+ SF_TwoHandControlTypeIII instance: the PLCopen VAR_INPUT / VAR_OUTPUT names, BOOL = one byte.
+ Size: 56 bytes.
+ */
+typedef struct SF_TwoHandControlTypeIII {
+  /*
+   Offset 0. Activate: FALSE = idle (DiagCode 0000, every output FALSE), highest priority.
+   */
+  SL_BOOL Activate;
+  /*
+   Offset 1. S_Button1: button 1, TRUE = actuated (category 3 or 4: from two antivalent contacts).
+   */
+  SL_BOOL S_Button1;
+  /*
+   Offset 2. S_Button2: button 2, TRUE = actuated.
+   */
+  SL_BOOL S_Button2;
+  /*
+   Offset 3. Reserved, keep 0.
+   */
+  uint8_t aReserved0[4];
+  /*
+   Offset 7. Library extension, constant: DiagCode profile, 0 = v2.01 (default), 1 = v1.0; latched at activation.
+   */
+  uint8_t nDiagProfile;
+  /*
+   Offset 8 (output base). Ready: TRUE while activated (DiagCode != 0000).
+   */
+  SL_BOOL Ready;
+  /*
+   Offset 9. S_TwoHandOut: the safety output, TRUE only at DiagCode 8000.
+   */
+  SL_BOOL S_TwoHandOut;
+  /*
+   Offset 10. SafetyDemand: the safety function is demanded (v2.01 code bit 0x0800).
+   */
+  SL_BOOL SafetyDemand;
+  /*
+   Offset 11. Error: DiagCode >= C000.
+   */
+  SL_BOOL Error;
+  /*
+   Offset 12. Reserved.
+   */
+  uint8_t aReserved1[2];
+  /*
+   Offset 14. DiagCode: the state or error, in the profile of nDiagProfile.
+   */
+  uint16_t DiagCode;
+  /*
+   Offset 16. Private state, 40 bytes: never write it.
+   */
+  struct SL_SF_PRIVATE stPrivate;
+} SF_TwoHandControlTypeIII;
+
+/*
+ SF_ModeSelector instance: the PLCopen VAR_INPUT / VAR_OUTPUT names, BOOL = one byte.
+ Size: 80 bytes.
+ */
+typedef struct SF_ModeSelector {
+  /*
+   Offset 0. Activate: FALSE = idle (DiagCode 0000, every output FALSE), highest priority.
+   */
+  SL_BOOL Activate;
+  /*
+   Offset 1. S_Mode0: mode 0 requested (TRUE).
+   */
+  SL_BOOL S_Mode0;
+  /*
+   Offset 2. S_Mode1: mode 1 requested.
+   */
+  SL_BOOL S_Mode1;
+  /*
+   Offset 3. S_Mode2: mode 2 requested.
+   */
+  SL_BOOL S_Mode2;
+  /*
+   Offset 4. S_Mode3: mode 3 requested.
+   */
+  SL_BOOL S_Mode3;
+  /*
+   Offset 5. S_Mode4: mode 4 requested.
+   */
+  SL_BOOL S_Mode4;
+  /*
+   Offset 6. S_Mode5: mode 5 requested.
+   */
+  SL_BOOL S_Mode5;
+  /*
+   Offset 7. S_Mode6: mode 6 requested.
+   */
+  SL_BOOL S_Mode6;
+  /*
+   Offset 8. S_Mode7: mode 7 requested.
+   */
+  SL_BOOL S_Mode7;
+  /*
+   Offset 9. S_Unlock: FALSE = the selected mode is locked (S_ModeX changes and S_SetMode ignored).
+   */
+  SL_BOOL S_Unlock;
+  /*
+   Offset 10. S_SetMode: a rising edge confirms the requested mode (not needed with AutoSetMode).
+   */
+  SL_BOOL S_SetMode;
+  /*
+   Offset 11. AutoSetMode (constant): TRUE = a valid S_ModeX change selects without S_SetMode; latched at activation.
+   */
+  SL_BOOL AutoSetMode;
+  /*
+   Offset 12. ModeMonitorTime (constant, ms): how long all S_ModeX may be FALSE after a falling S_ModeX; latched at activation.
+   */
+  uint32_t ModeMonitorTime;
+  /*
+   Offset 16. Reset: a rising edge resets an error once its fault is gone; held TRUE there it is a static-reset error.
+   */
+  SL_BOOL Reset;
+  /*
+   Offset 17. Reserved, keep 0.
+   */
+  uint8_t aReserved0[2];
+  /*
+   Offset 19. Library extension, constant: DiagCode profile, 0 = v2.01 (default), 1 = v1.0; latched at activation.
+   */
+  uint8_t nDiagProfile;
+  /*
+   Offset 20 (output base). Ready: TRUE while activated (DiagCode != 0000).
+   */
+  SL_BOOL Ready;
+  /*
+   Offset 21. S_Mode0Sel: mode 0 selected (TRUE only at DiagCode 8000 and in MODE_LOCKED).
+   */
+  SL_BOOL S_Mode0Sel;
+  /*
+   Offset 22. S_Mode1Sel: mode 1 selected.
+   */
+  SL_BOOL S_Mode1Sel;
+  /*
+   Offset 23. S_Mode2Sel: mode 2 selected.
+   */
+  SL_BOOL S_Mode2Sel;
+  /*
+   Offset 24. S_Mode3Sel: mode 3 selected.
+   */
+  SL_BOOL S_Mode3Sel;
+  /*
+   Offset 25. S_Mode4Sel: mode 4 selected.
+   */
+  SL_BOOL S_Mode4Sel;
+  /*
+   Offset 26. S_Mode5Sel: mode 5 selected.
+   */
+  SL_BOOL S_Mode5Sel;
+  /*
+   Offset 27. S_Mode6Sel: mode 6 selected.
+   */
+  SL_BOOL S_Mode6Sel;
+  /*
+   Offset 28. S_Mode7Sel: mode 7 selected.
+   */
+  SL_BOOL S_Mode7Sel;
+  /*
+   Offset 29. S_AnyModeSel: a mode is selected (DiagCode 8000 or MODE_LOCKED).
+   */
+  SL_BOOL S_AnyModeSel;
+  /*
+   Offset 30. SafetyDemand: the safety function is demanded (v2.01 code bit 0x0800).
+   */
+  SL_BOOL SafetyDemand;
+  /*
+   Offset 31. ResetRequest: a reset is awaited (v2.01 code bit 0x0400) and Reset is FALSE.
+   */
+  SL_BOOL ResetRequest;
+  /*
+   Offset 32. Error: DiagCode >= C000.
+   */
+  SL_BOOL Error;
+  /*
+   Offset 33. Reserved.
+   */
+  uint8_t aReserved1[1];
+  /*
+   Offset 34. DiagCode: the state or error, in the profile of nDiagProfile.
+   */
+  uint16_t DiagCode;
+  /*
+   Offset 36. Private state, 40 bytes: never write it.
+   */
+  struct SL_SF_PRIVATE stPrivate;
+  /*
+   Offset 76. Private: the time all S_ModeX became FALSE after a falling S_ModeX (ms); never write it.
+   */
+  uint32_t tModesOff;
+} SF_ModeSelector;
+
 
 
 #ifdef __cplusplus
@@ -12527,6 +12872,14 @@ int32_t sl_sf_safetyrequest_init(struct SF_SafetyRequest *fb);
 int32_t sl_sf_safetyrequest_cycle(struct SF_SafetyRequest *fb, uint32_t tNow);
 int32_t sl_sf_outcontrol_init(struct SF_OutControl *fb);
 int32_t sl_sf_outcontrol_cycle(struct SF_OutControl *fb, uint32_t tNow);
+int32_t sl_sf_enableswitch_init(struct SF_EnableSwitch *fb);
+int32_t sl_sf_enableswitch_cycle(struct SF_EnableSwitch *fb, uint32_t tNow);
+int32_t sl_sf_twohandcontroltypeii_init(struct SF_TwoHandControlTypeII *fb);
+int32_t sl_sf_twohandcontroltypeii_cycle(struct SF_TwoHandControlTypeII *fb, uint32_t tNow);
+int32_t sl_sf_twohandcontroltypeiii_init(struct SF_TwoHandControlTypeIII *fb);
+int32_t sl_sf_twohandcontroltypeiii_cycle(struct SF_TwoHandControlTypeIII *fb, uint32_t tNow);
+int32_t sl_sf_modeselector_init(struct SF_ModeSelector *fb);
+int32_t sl_sf_modeselector_cycle(struct SF_ModeSelector *fb, uint32_t tNow);
 
 #ifdef __cplusplus
 }  // extern "C"
@@ -14933,5 +15286,82 @@ SL_STATIC_ASSERT(offsetof(SF_OutControl, aReserved1) == 13, "offset of SF_OutCon
 SL_STATIC_ASSERT(offsetof(SF_OutControl, DiagCode) == 14, "offset of SF_OutControl.DiagCode");
 SL_STATIC_ASSERT(offsetof(SF_OutControl, stPrivate) == 16, "offset of SF_OutControl.stPrivate");
 SL_STATIC_ASSERT(sizeof(SF_OutControl) == 56, "size of SF_OutControl");
+SL_STATIC_ASSERT(offsetof(SF_EnableSwitch, Activate) == 0, "offset of SF_EnableSwitch.Activate");
+SL_STATIC_ASSERT(offsetof(SF_EnableSwitch, S_SafetyActive) == 1, "offset of SF_EnableSwitch.S_SafetyActive");
+SL_STATIC_ASSERT(offsetof(SF_EnableSwitch, S_EnableSwitchCh1) == 2, "offset of SF_EnableSwitch.S_EnableSwitchCh1");
+SL_STATIC_ASSERT(offsetof(SF_EnableSwitch, S_EnableSwitchCh2) == 3, "offset of SF_EnableSwitch.S_EnableSwitchCh2");
+SL_STATIC_ASSERT(offsetof(SF_EnableSwitch, S_AutoReset) == 4, "offset of SF_EnableSwitch.S_AutoReset");
+SL_STATIC_ASSERT(offsetof(SF_EnableSwitch, Reset) == 5, "offset of SF_EnableSwitch.Reset");
+SL_STATIC_ASSERT(offsetof(SF_EnableSwitch, aReserved0) == 6, "offset of SF_EnableSwitch.aReserved0");
+SL_STATIC_ASSERT(offsetof(SF_EnableSwitch, nDiagProfile) == 7, "offset of SF_EnableSwitch.nDiagProfile");
+SL_STATIC_ASSERT(offsetof(SF_EnableSwitch, Ready) == 8, "offset of SF_EnableSwitch.Ready");
+SL_STATIC_ASSERT(offsetof(SF_EnableSwitch, S_EnableSwitchOut) == 9, "offset of SF_EnableSwitch.S_EnableSwitchOut");
+SL_STATIC_ASSERT(offsetof(SF_EnableSwitch, SafetyDemand) == 10, "offset of SF_EnableSwitch.SafetyDemand");
+SL_STATIC_ASSERT(offsetof(SF_EnableSwitch, ResetRequest) == 11, "offset of SF_EnableSwitch.ResetRequest");
+SL_STATIC_ASSERT(offsetof(SF_EnableSwitch, Error) == 12, "offset of SF_EnableSwitch.Error");
+SL_STATIC_ASSERT(offsetof(SF_EnableSwitch, aReserved1) == 13, "offset of SF_EnableSwitch.aReserved1");
+SL_STATIC_ASSERT(offsetof(SF_EnableSwitch, DiagCode) == 14, "offset of SF_EnableSwitch.DiagCode");
+SL_STATIC_ASSERT(offsetof(SF_EnableSwitch, stPrivate) == 16, "offset of SF_EnableSwitch.stPrivate");
+SL_STATIC_ASSERT(sizeof(SF_EnableSwitch) == 56, "size of SF_EnableSwitch");
+SL_STATIC_ASSERT(offsetof(SF_TwoHandControlTypeII, Activate) == 0, "offset of SF_TwoHandControlTypeII.Activate");
+SL_STATIC_ASSERT(offsetof(SF_TwoHandControlTypeII, S_Button1) == 1, "offset of SF_TwoHandControlTypeII.S_Button1");
+SL_STATIC_ASSERT(offsetof(SF_TwoHandControlTypeII, S_Button2) == 2, "offset of SF_TwoHandControlTypeII.S_Button2");
+SL_STATIC_ASSERT(offsetof(SF_TwoHandControlTypeII, aReserved0) == 3, "offset of SF_TwoHandControlTypeII.aReserved0");
+SL_STATIC_ASSERT(offsetof(SF_TwoHandControlTypeII, nDiagProfile) == 7, "offset of SF_TwoHandControlTypeII.nDiagProfile");
+SL_STATIC_ASSERT(offsetof(SF_TwoHandControlTypeII, Ready) == 8, "offset of SF_TwoHandControlTypeII.Ready");
+SL_STATIC_ASSERT(offsetof(SF_TwoHandControlTypeII, S_TwoHandOut) == 9, "offset of SF_TwoHandControlTypeII.S_TwoHandOut");
+SL_STATIC_ASSERT(offsetof(SF_TwoHandControlTypeII, SafetyDemand) == 10, "offset of SF_TwoHandControlTypeII.SafetyDemand");
+SL_STATIC_ASSERT(offsetof(SF_TwoHandControlTypeII, Error) == 11, "offset of SF_TwoHandControlTypeII.Error");
+SL_STATIC_ASSERT(offsetof(SF_TwoHandControlTypeII, aReserved1) == 12, "offset of SF_TwoHandControlTypeII.aReserved1");
+SL_STATIC_ASSERT(offsetof(SF_TwoHandControlTypeII, DiagCode) == 14, "offset of SF_TwoHandControlTypeII.DiagCode");
+SL_STATIC_ASSERT(offsetof(SF_TwoHandControlTypeII, stPrivate) == 16, "offset of SF_TwoHandControlTypeII.stPrivate");
+SL_STATIC_ASSERT(sizeof(SF_TwoHandControlTypeII) == 56, "size of SF_TwoHandControlTypeII");
+SL_STATIC_ASSERT(offsetof(SF_TwoHandControlTypeIII, Activate) == 0, "offset of SF_TwoHandControlTypeIII.Activate");
+SL_STATIC_ASSERT(offsetof(SF_TwoHandControlTypeIII, S_Button1) == 1, "offset of SF_TwoHandControlTypeIII.S_Button1");
+SL_STATIC_ASSERT(offsetof(SF_TwoHandControlTypeIII, S_Button2) == 2, "offset of SF_TwoHandControlTypeIII.S_Button2");
+SL_STATIC_ASSERT(offsetof(SF_TwoHandControlTypeIII, aReserved0) == 3, "offset of SF_TwoHandControlTypeIII.aReserved0");
+SL_STATIC_ASSERT(offsetof(SF_TwoHandControlTypeIII, nDiagProfile) == 7, "offset of SF_TwoHandControlTypeIII.nDiagProfile");
+SL_STATIC_ASSERT(offsetof(SF_TwoHandControlTypeIII, Ready) == 8, "offset of SF_TwoHandControlTypeIII.Ready");
+SL_STATIC_ASSERT(offsetof(SF_TwoHandControlTypeIII, S_TwoHandOut) == 9, "offset of SF_TwoHandControlTypeIII.S_TwoHandOut");
+SL_STATIC_ASSERT(offsetof(SF_TwoHandControlTypeIII, SafetyDemand) == 10, "offset of SF_TwoHandControlTypeIII.SafetyDemand");
+SL_STATIC_ASSERT(offsetof(SF_TwoHandControlTypeIII, Error) == 11, "offset of SF_TwoHandControlTypeIII.Error");
+SL_STATIC_ASSERT(offsetof(SF_TwoHandControlTypeIII, aReserved1) == 12, "offset of SF_TwoHandControlTypeIII.aReserved1");
+SL_STATIC_ASSERT(offsetof(SF_TwoHandControlTypeIII, DiagCode) == 14, "offset of SF_TwoHandControlTypeIII.DiagCode");
+SL_STATIC_ASSERT(offsetof(SF_TwoHandControlTypeIII, stPrivate) == 16, "offset of SF_TwoHandControlTypeIII.stPrivate");
+SL_STATIC_ASSERT(sizeof(SF_TwoHandControlTypeIII) == 56, "size of SF_TwoHandControlTypeIII");
+SL_STATIC_ASSERT(offsetof(SF_ModeSelector, Activate) == 0, "offset of SF_ModeSelector.Activate");
+SL_STATIC_ASSERT(offsetof(SF_ModeSelector, S_Mode0) == 1, "offset of SF_ModeSelector.S_Mode0");
+SL_STATIC_ASSERT(offsetof(SF_ModeSelector, S_Mode1) == 2, "offset of SF_ModeSelector.S_Mode1");
+SL_STATIC_ASSERT(offsetof(SF_ModeSelector, S_Mode2) == 3, "offset of SF_ModeSelector.S_Mode2");
+SL_STATIC_ASSERT(offsetof(SF_ModeSelector, S_Mode3) == 4, "offset of SF_ModeSelector.S_Mode3");
+SL_STATIC_ASSERT(offsetof(SF_ModeSelector, S_Mode4) == 5, "offset of SF_ModeSelector.S_Mode4");
+SL_STATIC_ASSERT(offsetof(SF_ModeSelector, S_Mode5) == 6, "offset of SF_ModeSelector.S_Mode5");
+SL_STATIC_ASSERT(offsetof(SF_ModeSelector, S_Mode6) == 7, "offset of SF_ModeSelector.S_Mode6");
+SL_STATIC_ASSERT(offsetof(SF_ModeSelector, S_Mode7) == 8, "offset of SF_ModeSelector.S_Mode7");
+SL_STATIC_ASSERT(offsetof(SF_ModeSelector, S_Unlock) == 9, "offset of SF_ModeSelector.S_Unlock");
+SL_STATIC_ASSERT(offsetof(SF_ModeSelector, S_SetMode) == 10, "offset of SF_ModeSelector.S_SetMode");
+SL_STATIC_ASSERT(offsetof(SF_ModeSelector, AutoSetMode) == 11, "offset of SF_ModeSelector.AutoSetMode");
+SL_STATIC_ASSERT(offsetof(SF_ModeSelector, ModeMonitorTime) == 12, "offset of SF_ModeSelector.ModeMonitorTime");
+SL_STATIC_ASSERT(offsetof(SF_ModeSelector, Reset) == 16, "offset of SF_ModeSelector.Reset");
+SL_STATIC_ASSERT(offsetof(SF_ModeSelector, aReserved0) == 17, "offset of SF_ModeSelector.aReserved0");
+SL_STATIC_ASSERT(offsetof(SF_ModeSelector, nDiagProfile) == 19, "offset of SF_ModeSelector.nDiagProfile");
+SL_STATIC_ASSERT(offsetof(SF_ModeSelector, Ready) == 20, "offset of SF_ModeSelector.Ready");
+SL_STATIC_ASSERT(offsetof(SF_ModeSelector, S_Mode0Sel) == 21, "offset of SF_ModeSelector.S_Mode0Sel");
+SL_STATIC_ASSERT(offsetof(SF_ModeSelector, S_Mode1Sel) == 22, "offset of SF_ModeSelector.S_Mode1Sel");
+SL_STATIC_ASSERT(offsetof(SF_ModeSelector, S_Mode2Sel) == 23, "offset of SF_ModeSelector.S_Mode2Sel");
+SL_STATIC_ASSERT(offsetof(SF_ModeSelector, S_Mode3Sel) == 24, "offset of SF_ModeSelector.S_Mode3Sel");
+SL_STATIC_ASSERT(offsetof(SF_ModeSelector, S_Mode4Sel) == 25, "offset of SF_ModeSelector.S_Mode4Sel");
+SL_STATIC_ASSERT(offsetof(SF_ModeSelector, S_Mode5Sel) == 26, "offset of SF_ModeSelector.S_Mode5Sel");
+SL_STATIC_ASSERT(offsetof(SF_ModeSelector, S_Mode6Sel) == 27, "offset of SF_ModeSelector.S_Mode6Sel");
+SL_STATIC_ASSERT(offsetof(SF_ModeSelector, S_Mode7Sel) == 28, "offset of SF_ModeSelector.S_Mode7Sel");
+SL_STATIC_ASSERT(offsetof(SF_ModeSelector, S_AnyModeSel) == 29, "offset of SF_ModeSelector.S_AnyModeSel");
+SL_STATIC_ASSERT(offsetof(SF_ModeSelector, SafetyDemand) == 30, "offset of SF_ModeSelector.SafetyDemand");
+SL_STATIC_ASSERT(offsetof(SF_ModeSelector, ResetRequest) == 31, "offset of SF_ModeSelector.ResetRequest");
+SL_STATIC_ASSERT(offsetof(SF_ModeSelector, Error) == 32, "offset of SF_ModeSelector.Error");
+SL_STATIC_ASSERT(offsetof(SF_ModeSelector, aReserved1) == 33, "offset of SF_ModeSelector.aReserved1");
+SL_STATIC_ASSERT(offsetof(SF_ModeSelector, DiagCode) == 34, "offset of SF_ModeSelector.DiagCode");
+SL_STATIC_ASSERT(offsetof(SF_ModeSelector, stPrivate) == 36, "offset of SF_ModeSelector.stPrivate");
+SL_STATIC_ASSERT(offsetof(SF_ModeSelector, tModesOff) == 76, "offset of SF_ModeSelector.tModesOff");
+SL_STATIC_ASSERT(sizeof(SF_ModeSelector) == 80, "size of SF_ModeSelector");
 
 #endif  /* SAFELOGIC_H */

@@ -389,8 +389,8 @@ macro_rules! impl_sf_member {
             type State = $crate::prim::sf::SfPhase;
             const FIELDS: &'static [$crate::registry::Field] = &[
                 $($crate::impl_member!(@field $i, Input, io_kind),)*
-                // A one-byte constant is a BOOL (StaticControl) unless named as a number
-                // (nDiagProfile), as inputs and outputs are.
+                // A one-byte PLCopen constant is a BOOL (StaticControl, AutoSetMode) unless
+                // named as a number (nDiagProfile), as inputs and outputs are.
                 $($crate::impl_member!(@field $p, Param, io_kind),)*
                 $($crate::impl_member!(@field $o, Output, io_kind),)*
                 $crate::impl_member!(@field DiagCode, Info, same)

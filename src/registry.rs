@@ -445,6 +445,10 @@ macro_rules! for_each_sf_block {
             $crate::blocks::sf_guard::SF_Guard => sl_sf_guard_init, sl_sf_guard_cycle;
             $crate::blocks::sf_safetyrequest::SF_SafetyRequest => sl_sf_safetyrequest_init, sl_sf_safetyrequest_cycle;
             $crate::blocks::sf_outcontrol::SF_OutControl => sl_sf_outcontrol_init, sl_sf_outcontrol_cycle;
+            $crate::blocks::sf_enableswitch::SF_EnableSwitch => sl_sf_enableswitch_init, sl_sf_enableswitch_cycle;
+            $crate::blocks::sf_twohandcontroltypeii::SF_TwoHandControlTypeII => sl_sf_twohandcontroltypeii_init, sl_sf_twohandcontroltypeii_cycle;
+            $crate::blocks::sf_twohandcontroltypeiii::SF_TwoHandControlTypeIII => sl_sf_twohandcontroltypeiii_init, sl_sf_twohandcontroltypeiii_cycle;
+            $crate::blocks::sf_modeselector::SF_ModeSelector => sl_sf_modeselector_init, sl_sf_modeselector_cycle;
             // registry:end
         }
     };

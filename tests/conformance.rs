@@ -603,7 +603,27 @@ fn allowed_on(block: &str, output: &str, profile: Option<u32>, code: u16) -> boo
             };
             op.contains(&code)
         }
-        _ => code == 0x8000,
+        _ => code == 0x8000 || sf_holds_outputs(block, profile, code),
+    }
+}
+
+/// A state other than 0x8000 in which a block's safety outputs may be TRUE: SF_ModeSelector's
+/// MODE_LOCKED (v2.01 8010, v1.0 8004) holds the selected mode (research §9.3, semantics QM2).
+fn sf_holds_outputs(name: &str, profile: Option<u32>, code: u16) -> bool {
+    let locked = if profile == Some(u32::from(SL_SF_PROFILE_V10)) {
+        0x8004
+    } else {
+        0x8010
+    };
+    name == "SF_ModeSelector" && code == locked
+}
+
+/// The factor on the depth run's time steps (0–40 ms): SF_TwoHandControlTypeIII's fixed
+/// 500 ms synchronism time is reached in 24 calls only with longer steps.
+fn sf_time_scale(name: &str) -> u32 {
+    match name {
+        "SF_TwoHandControlTypeIII" => 15,
+        _ => 1,
     }
 }
 
@@ -729,8 +749,14 @@ macro_rules! sf_harness {
                 for seq in 0..sequences {
                     let mut fb = <$ty>::default();
                     for f in t.fields.iter().filter(|f| f.dir == Dir::Param) {
-                        // A BOOL constant (StaticControl): FALSE or TRUE.
-                        let v = if f.name == "nDiagProfile" { (seq % 2) as i64 } else if f.kind == Kind::Bool { (rng.next() % 2) as i64 } else { (rng.next() % 60) as i64 };
+                        let v = if f.name == "nDiagProfile" {
+                            (seq % 2) as i64
+                        } else if f.kind == Kind::Bool {
+                            // A BOOL constant (AutoSetMode).
+                            (rng.next() % 2) as i64
+                        } else {
+                            (rng.next() % 60) as i64
+                        };
                         fb.set(f.name, v).unwrap();
                     }
                     if FunctionBlock::init(&mut fb) != SL_OK {
@@ -753,7 +779,7 @@ macro_rules! sf_harness {
                         now = if r & 255 == 0 {
                             now.wrapping_sub(1 + (rng.next() % 50) as u32)
                         } else {
-                            now.wrapping_add((rng.next() % 41) as u32)
+                            now.wrapping_add((rng.next() % 41) as u32 * sf_time_scale(t.info.name))
                         };
                         // SAFETY: a live, exclusively borrowed instance.
                         let rc = unsafe { safelogic::ffi::$cycle(&mut fb, now) };
@@ -808,6 +834,18 @@ fn every_plcopen_type_keeps_its_properties_over_10000_sequences() {
             }
             "SF_OutControl" => {
                 <safelogic::blocks::sf_outcontrol::OutControlState as DiagState>::TABLE
+            }
+            "SF_EnableSwitch" => {
+                <safelogic::blocks::sf_enableswitch::EnableSwitchState as DiagState>::TABLE
+            }
+            "SF_TwoHandControlTypeII" => {
+                <safelogic::blocks::sf_twohand::TwoHandIIState as DiagState>::TABLE
+            }
+            "SF_TwoHandControlTypeIII" => {
+                <safelogic::blocks::sf_twohand::TwoHandIIIState as DiagState>::TABLE
+            }
+            "SF_ModeSelector" => {
+                <safelogic::blocks::sf_modeselector::ModeState as DiagState>::TABLE
             }
             other => panic!("{other}: no state table named in this test"),
         };

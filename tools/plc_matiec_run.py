@@ -224,6 +224,29 @@ SF_STEPS = {
                       16: {"Activate": 1, "S_StartReset": 1, "ProcessControl": 0},
                       18: {"ProcessControl": 1}, 20: {"ProcessControl": 0}},
 }
+# Enable switch: position 1 → 2 (8000), panic position 3 then 3 → 2 (C030), back to 1
+# (C040), idle, again 1 → 2, a Reset edge while released.
+SF_STEPS["SF_EnableSwitch"] = {
+        0: {"Activate": 0, "S_SafetyActive": 1, "S_EnableSwitchCh1": 0, "S_EnableSwitchCh2": 1},
+        2: {"Activate": 1}, 6: {"S_EnableSwitchCh1": 1},
+        8: {"S_EnableSwitchCh1": 0, "S_EnableSwitchCh2": 0},
+        10: {"S_EnableSwitchCh1": 1, "S_EnableSwitchCh2": 1},
+        12: {"S_EnableSwitchCh1": 0}, 14: {"Activate": 0}, 16: {"Activate": 1},
+        20: {"S_EnableSwitchCh1": 1}, 22: {"S_EnableSwitchCh1": 0, "Reset": 1}, 24: {"Reset": 0}}
+# Two-hand control: button 1 then 2 (8000), idle with both held, activation with both held
+# (C030), both released, idle, again 1 then 2, released one by one.
+SF_STEPS["SF_TwoHandControlTypeII"] = SF_STEPS["SF_TwoHandControlTypeIII"] = {
+    0: {"Activate": 0, "S_Button1": 0, "S_Button2": 0}, 2: {"Activate": 1}, 4: {"S_Button1": 1},
+    6: {"S_Button2": 1}, 8: {"Activate": 0}, 10: {"Activate": 1},
+    12: {"S_Button1": 0, "S_Button2": 0}, 14: {"Activate": 0}, 16: {"Activate": 1},
+    18: {"S_Button1": 1}, 20: {"S_Button2": 1}, 22: {"S_Button1": 0}, 24: {"S_Button2": 0}}
+# Mode selector: mode 1 confirmed by S_SetMode (8000), a second mode (C010), back to one
+# (C410), idle, again (8000), locked (8010) and unlocked, a Reset edge.
+SF_STEPS["SF_ModeSelector"] = {
+    0: {"Activate": 0, "S_Unlock": 1, "S_Mode1": 1}, 2: {"Activate": 1}, 4: {"S_SetMode": 1},
+    6: {"S_SetMode": 0}, 8: {"S_Mode2": 1}, 10: {"S_Mode2": 0}, 12: {"Activate": 0},
+    14: {"Activate": 1}, 16: {"S_SetMode": 1}, 18: {"S_SetMode": 0, "S_Unlock": 0},
+    20: {"S_Unlock": 1}, 22: {"Reset": 1}, 24: {"Reset": 0}}
 
 
 def sf_script(name: str) -> dict:

@@ -1269,6 +1269,66 @@ static void test_param_structs(void)
       off = (off + sizeof(int32_t) - 1) / sizeof(int32_t) * sizeof(int32_t);
       CHECK(offsetof(cds_sl_sf_outcontrol_cycle_struct, cds_sl_sf_outcontrol_cycle) == off, "cds_sl_sf_outcontrol_cycle_struct return value at %zu, expected %zu", offsetof(cds_sl_sf_outcontrol_cycle_struct, cds_sl_sf_outcontrol_cycle), off); }
     { size_t off = 0;
+      off = (off + sizeof(void *) - 1) / sizeof(void *) * sizeof(void *);
+      CHECK(offsetof(cds_sl_sf_enableswitch_init_struct, pFb) == off, "cds_sl_sf_enableswitch_init_struct.pFb at %zu, expected %zu", offsetof(cds_sl_sf_enableswitch_init_struct, pFb), off);
+      off += sizeof(void *);
+      off = (off + sizeof(int32_t) - 1) / sizeof(int32_t) * sizeof(int32_t);
+      CHECK(offsetof(cds_sl_sf_enableswitch_init_struct, cds_sl_sf_enableswitch_init) == off, "cds_sl_sf_enableswitch_init_struct return value at %zu, expected %zu", offsetof(cds_sl_sf_enableswitch_init_struct, cds_sl_sf_enableswitch_init), off); }
+    { size_t off = 0;
+      off = (off + sizeof(void *) - 1) / sizeof(void *) * sizeof(void *);
+      CHECK(offsetof(cds_sl_sf_enableswitch_cycle_struct, pFb) == off, "cds_sl_sf_enableswitch_cycle_struct.pFb at %zu, expected %zu", offsetof(cds_sl_sf_enableswitch_cycle_struct, pFb), off);
+      off += sizeof(void *);
+      off = (off + sizeof(uint32_t) - 1) / sizeof(uint32_t) * sizeof(uint32_t);
+      CHECK(offsetof(cds_sl_sf_enableswitch_cycle_struct, tNow) == off, "cds_sl_sf_enableswitch_cycle_struct.tNow at %zu, expected %zu", offsetof(cds_sl_sf_enableswitch_cycle_struct, tNow), off);
+      off += sizeof(uint32_t);
+      off = (off + sizeof(int32_t) - 1) / sizeof(int32_t) * sizeof(int32_t);
+      CHECK(offsetof(cds_sl_sf_enableswitch_cycle_struct, cds_sl_sf_enableswitch_cycle) == off, "cds_sl_sf_enableswitch_cycle_struct return value at %zu, expected %zu", offsetof(cds_sl_sf_enableswitch_cycle_struct, cds_sl_sf_enableswitch_cycle), off); }
+    { size_t off = 0;
+      off = (off + sizeof(void *) - 1) / sizeof(void *) * sizeof(void *);
+      CHECK(offsetof(cds_sl_sf_twohandcontroltypeii_init_struct, pFb) == off, "cds_sl_sf_twohandcontroltypeii_init_struct.pFb at %zu, expected %zu", offsetof(cds_sl_sf_twohandcontroltypeii_init_struct, pFb), off);
+      off += sizeof(void *);
+      off = (off + sizeof(int32_t) - 1) / sizeof(int32_t) * sizeof(int32_t);
+      CHECK(offsetof(cds_sl_sf_twohandcontroltypeii_init_struct, cds_sl_sf_twohandcontroltypeii_init) == off, "cds_sl_sf_twohandcontroltypeii_init_struct return value at %zu, expected %zu", offsetof(cds_sl_sf_twohandcontroltypeii_init_struct, cds_sl_sf_twohandcontroltypeii_init), off); }
+    { size_t off = 0;
+      off = (off + sizeof(void *) - 1) / sizeof(void *) * sizeof(void *);
+      CHECK(offsetof(cds_sl_sf_twohandcontroltypeii_cycle_struct, pFb) == off, "cds_sl_sf_twohandcontroltypeii_cycle_struct.pFb at %zu, expected %zu", offsetof(cds_sl_sf_twohandcontroltypeii_cycle_struct, pFb), off);
+      off += sizeof(void *);
+      off = (off + sizeof(uint32_t) - 1) / sizeof(uint32_t) * sizeof(uint32_t);
+      CHECK(offsetof(cds_sl_sf_twohandcontroltypeii_cycle_struct, tNow) == off, "cds_sl_sf_twohandcontroltypeii_cycle_struct.tNow at %zu, expected %zu", offsetof(cds_sl_sf_twohandcontroltypeii_cycle_struct, tNow), off);
+      off += sizeof(uint32_t);
+      off = (off + sizeof(int32_t) - 1) / sizeof(int32_t) * sizeof(int32_t);
+      CHECK(offsetof(cds_sl_sf_twohandcontroltypeii_cycle_struct, cds_sl_sf_twohandcontroltypeii_cycle) == off, "cds_sl_sf_twohandcontroltypeii_cycle_struct return value at %zu, expected %zu", offsetof(cds_sl_sf_twohandcontroltypeii_cycle_struct, cds_sl_sf_twohandcontroltypeii_cycle), off); }
+    { size_t off = 0;
+      off = (off + sizeof(void *) - 1) / sizeof(void *) * sizeof(void *);
+      CHECK(offsetof(cds_sl_sf_twohandcontroltypeiii_init_struct, pFb) == off, "cds_sl_sf_twohandcontroltypeiii_init_struct.pFb at %zu, expected %zu", offsetof(cds_sl_sf_twohandcontroltypeiii_init_struct, pFb), off);
+      off += sizeof(void *);
+      off = (off + sizeof(int32_t) - 1) / sizeof(int32_t) * sizeof(int32_t);
+      CHECK(offsetof(cds_sl_sf_twohandcontroltypeiii_init_struct, cds_sl_sf_twohandcontroltypeiii_init) == off, "cds_sl_sf_twohandcontroltypeiii_init_struct return value at %zu, expected %zu", offsetof(cds_sl_sf_twohandcontroltypeiii_init_struct, cds_sl_sf_twohandcontroltypeiii_init), off); }
+    { size_t off = 0;
+      off = (off + sizeof(void *) - 1) / sizeof(void *) * sizeof(void *);
+      CHECK(offsetof(cds_sl_sf_twohandcontroltypeiii_cycle_struct, pFb) == off, "cds_sl_sf_twohandcontroltypeiii_cycle_struct.pFb at %zu, expected %zu", offsetof(cds_sl_sf_twohandcontroltypeiii_cycle_struct, pFb), off);
+      off += sizeof(void *);
+      off = (off + sizeof(uint32_t) - 1) / sizeof(uint32_t) * sizeof(uint32_t);
+      CHECK(offsetof(cds_sl_sf_twohandcontroltypeiii_cycle_struct, tNow) == off, "cds_sl_sf_twohandcontroltypeiii_cycle_struct.tNow at %zu, expected %zu", offsetof(cds_sl_sf_twohandcontroltypeiii_cycle_struct, tNow), off);
+      off += sizeof(uint32_t);
+      off = (off + sizeof(int32_t) - 1) / sizeof(int32_t) * sizeof(int32_t);
+      CHECK(offsetof(cds_sl_sf_twohandcontroltypeiii_cycle_struct, cds_sl_sf_twohandcontroltypeiii_cycle) == off, "cds_sl_sf_twohandcontroltypeiii_cycle_struct return value at %zu, expected %zu", offsetof(cds_sl_sf_twohandcontroltypeiii_cycle_struct, cds_sl_sf_twohandcontroltypeiii_cycle), off); }
+    { size_t off = 0;
+      off = (off + sizeof(void *) - 1) / sizeof(void *) * sizeof(void *);
+      CHECK(offsetof(cds_sl_sf_modeselector_init_struct, pFb) == off, "cds_sl_sf_modeselector_init_struct.pFb at %zu, expected %zu", offsetof(cds_sl_sf_modeselector_init_struct, pFb), off);
+      off += sizeof(void *);
+      off = (off + sizeof(int32_t) - 1) / sizeof(int32_t) * sizeof(int32_t);
+      CHECK(offsetof(cds_sl_sf_modeselector_init_struct, cds_sl_sf_modeselector_init) == off, "cds_sl_sf_modeselector_init_struct return value at %zu, expected %zu", offsetof(cds_sl_sf_modeselector_init_struct, cds_sl_sf_modeselector_init), off); }
+    { size_t off = 0;
+      off = (off + sizeof(void *) - 1) / sizeof(void *) * sizeof(void *);
+      CHECK(offsetof(cds_sl_sf_modeselector_cycle_struct, pFb) == off, "cds_sl_sf_modeselector_cycle_struct.pFb at %zu, expected %zu", offsetof(cds_sl_sf_modeselector_cycle_struct, pFb), off);
+      off += sizeof(void *);
+      off = (off + sizeof(uint32_t) - 1) / sizeof(uint32_t) * sizeof(uint32_t);
+      CHECK(offsetof(cds_sl_sf_modeselector_cycle_struct, tNow) == off, "cds_sl_sf_modeselector_cycle_struct.tNow at %zu, expected %zu", offsetof(cds_sl_sf_modeselector_cycle_struct, tNow), off);
+      off += sizeof(uint32_t);
+      off = (off + sizeof(int32_t) - 1) / sizeof(int32_t) * sizeof(int32_t);
+      CHECK(offsetof(cds_sl_sf_modeselector_cycle_struct, cds_sl_sf_modeselector_cycle) == off, "cds_sl_sf_modeselector_cycle_struct return value at %zu, expected %zu", offsetof(cds_sl_sf_modeselector_cycle_struct, cds_sl_sf_modeselector_cycle), off); }
+    { size_t off = 0;
       off = (off + sizeof(uint32_t) - 1) / sizeof(uint32_t) * sizeof(uint32_t);
       CHECK(offsetof(cds_sl_time_now_ms_struct, cds_sl_time_now_ms) == off, "cds_sl_time_now_ms_struct return value at %zu, expected %zu", offsetof(cds_sl_time_now_ms_struct, cds_sl_time_now_ms), off); }
     { size_t off = 0;
@@ -9452,11 +9512,371 @@ static void test_sf_outcontrol(void)
     CHECK(reached_error, "SF_OutControl: the random test never reached ERROR");
 }
 
+static void rnd_config_sf_enableswitch(SF_EnableSwitch *x)
+{
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nDiagProfile = (uint8_t)v[rnd() % 7u]; }
+}
+/* 1: a valid configuration (want_valid) or an invalid one was drawn into a and b */
+static int draw_sf_enableswitch(SF_EnableSwitch *a, SF_EnableSwitch *b, int want_valid)
+{
+    long k;
+    for (k = 0; k < 200000L; k++) {
+        static SF_EnableSwitch x;
+        int valid;
+        memset(&x, 0, sizeof x);
+        rnd_config_sf_enableswitch(&x);
+        valid = sl_sf_enableswitch_init(&x) == SL_OK && sl_sf_enableswitch_cycle(&x, 0u) == SL_OK;
+        if (valid == want_valid) {
+            memset(a, 0, sizeof *a);
+            rnd_config_sf_enableswitch(a); /* placeholder, overwritten below */
+            a->nDiagProfile = x.nDiagProfile;
+            *b = *a;
+            return 1;
+        }
+    }
+    return 0;
+}
+static void test_sf_enableswitch(void)
+{
+    static SF_EnableSwitch a, b;
+    cds_sl_sf_enableswitch_cycle_struct p;
+    int c, k, bump, ok = 0, cycles = 0, inv_cycles = 0, inv_config = 0, reached_run = 0, reached_error = 0;
+    int hist[12] = {0};
+    unsigned pol = 0;
+    uint32_t t = 1000u;
+    memset(&a, 0, sizeof a);
+    memset(&b, 0, sizeof b);
+    memset(&p, 0, sizeof p);
+    p.pFb = NULL;
+    p.cds_sl_sf_enableswitch_cycle = 12345;
+    cds_sl_sf_enableswitch_cycle(&p);
+    CHECK(p.cds_sl_sf_enableswitch_cycle == SL_E_NULL, "cds_sl_sf_enableswitch_cycle(NULL) returned %d", (int)p.cds_sl_sf_enableswitch_cycle);
+    { cds_sl_sf_enableswitch_init_struct q; int32_t r; q.pFb = &a; cds_sl_sf_enableswitch_init(&q); r = sl_sf_enableswitch_init(&b);
+      CHECK(q.cds_sl_sf_enableswitch_init == r && memcmp(&a, &b, sizeof a) == 0, "cds_sl_sf_enableswitch_init differs from sl_sf_enableswitch_init"); }
+    rng = 4276349082u; /* FNV-1a of "SF_EnableSwitch" */
+    machine = 1u;
+    for (c = 0; c < 20; c++) {
+        int valid = c < 16; /* 16 valid configurations, then the labelled invalid share: 4 */
+        if (!draw_sf_enableswitch(&a, &b, valid)) {
+            CHECK(!valid, "SF_EnableSwitch: no valid configuration found in 200000 random draws");
+            continue;
+        }
+        if (!valid) inv_config++;
+        a.Activate = b.Activate = (uint8_t)(1);
+        a.S_SafetyActive = b.S_SafetyActive = (uint8_t)(1);
+        a.S_EnableSwitchCh1 = b.S_EnableSwitchCh1 = (uint8_t)(1);
+        a.S_EnableSwitchCh2 = b.S_EnableSwitchCh2 = (uint8_t)(1);
+        a.S_AutoReset = b.S_AutoReset = (uint8_t)(1);
+        a.Reset = b.Reset = (uint8_t)(1);
+        bump = 20 + (int)(rnd() % 20u);
+        (void)bump; /* no parameter to change while running */
+        pol = (c % 2 == 1) ? rnd() : 0u;
+        for (k = 0; k < 50; k++) {
+            int32_t direct;
+            next_machine();
+            a.Activate = b.Activate = next_signal(a.Activate, 0, pol >> 0);
+            a.S_SafetyActive = b.S_SafetyActive = next_signal(a.S_SafetyActive, 0, pol >> 1);
+            a.S_EnableSwitchCh1 = b.S_EnableSwitchCh1 = next_signal(a.S_EnableSwitchCh1, 0, pol >> 2);
+            a.S_EnableSwitchCh2 = b.S_EnableSwitchCh2 = next_signal(a.S_EnableSwitchCh2, 0, pol >> 3);
+            a.S_AutoReset = b.S_AutoReset = next_signal(a.S_AutoReset, 0, pol >> 4);
+            a.Reset = b.Reset = next_signal(a.Reset, 0, pol >> 5);
+            p.pFb = &a;
+            p.tNow = t += 10u;
+            cds_sl_sf_enableswitch_cycle(&p);
+            direct = sl_sf_enableswitch_cycle(&b, p.tNow);
+            CHECK(p.cds_sl_sf_enableswitch_cycle == direct, "SF_EnableSwitch config %d cycle %d: adapter %d, direct %d", c, k, (int)p.cds_sl_sf_enableswitch_cycle, (int)direct);
+            CHECK(memcmp(&a, &b, sizeof a) == 0, "SF_EnableSwitch config %d cycle %d: instances differ", c, k);
+            if (!valid) { inv_cycles++; continue; }
+            cycles++;
+            if (direct == SL_OK) ok++;
+            if (direct <= 0 && direct > -12) hist[-direct]++;
+            if (b.DiagCode >= 0xC000u) reached_error = 1;
+            if (b.DiagCode == 0x8000u) reached_run = 1;
+        }
+    }
+    printf("SF_EnableSwitch: %d of %d cycles (16 valid random configurations) returned SL_OK; run-like state %s, ERROR %s; invalid share: %d configurations, %d cycles\n", ok, cycles, reached_run ? "reached" : "NOT reached", reached_error ? "reached" : "NOT reached", inv_config, inv_cycles);
+    if (2 * ok <= cycles) printf("  status histogram (0, -1, ... -11): %d %d %d %d %d %d %d %d %d %d %d\n", hist[0], hist[1], hist[2], hist[3], hist[4], hist[5], hist[6], hist[7], hist[8], hist[9], hist[10]);
+    CHECK(cycles > 0 && 2 * ok > cycles, "SF_EnableSwitch: only %d of %d cycles with valid configurations returned SL_OK", ok, cycles);
+    CHECK(reached_run, "SF_EnableSwitch: the random test never reached a running state (an output on)");
+    CHECK(reached_error, "SF_EnableSwitch: the random test never reached ERROR");
+}
+
+static void rnd_config_sf_twohandcontroltypeii(SF_TwoHandControlTypeII *x)
+{
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nDiagProfile = (uint8_t)v[rnd() % 7u]; }
+}
+/* 1: a valid configuration (want_valid) or an invalid one was drawn into a and b */
+static int draw_sf_twohandcontroltypeii(SF_TwoHandControlTypeII *a, SF_TwoHandControlTypeII *b, int want_valid)
+{
+    long k;
+    for (k = 0; k < 200000L; k++) {
+        static SF_TwoHandControlTypeII x;
+        int valid;
+        memset(&x, 0, sizeof x);
+        rnd_config_sf_twohandcontroltypeii(&x);
+        valid = sl_sf_twohandcontroltypeii_init(&x) == SL_OK && sl_sf_twohandcontroltypeii_cycle(&x, 0u) == SL_OK;
+        if (valid == want_valid) {
+            memset(a, 0, sizeof *a);
+            rnd_config_sf_twohandcontroltypeii(a); /* placeholder, overwritten below */
+            a->nDiagProfile = x.nDiagProfile;
+            *b = *a;
+            return 1;
+        }
+    }
+    return 0;
+}
+static void test_sf_twohandcontroltypeii(void)
+{
+    static SF_TwoHandControlTypeII a, b;
+    cds_sl_sf_twohandcontroltypeii_cycle_struct p;
+    int c, k, bump, ok = 0, cycles = 0, inv_cycles = 0, inv_config = 0, reached_run = 0, reached_error = 0;
+    int hist[12] = {0};
+    unsigned pol = 0;
+    uint32_t t = 1000u;
+    memset(&a, 0, sizeof a);
+    memset(&b, 0, sizeof b);
+    memset(&p, 0, sizeof p);
+    p.pFb = NULL;
+    p.cds_sl_sf_twohandcontroltypeii_cycle = 12345;
+    cds_sl_sf_twohandcontroltypeii_cycle(&p);
+    CHECK(p.cds_sl_sf_twohandcontroltypeii_cycle == SL_E_NULL, "cds_sl_sf_twohandcontroltypeii_cycle(NULL) returned %d", (int)p.cds_sl_sf_twohandcontroltypeii_cycle);
+    { cds_sl_sf_twohandcontroltypeii_init_struct q; int32_t r; q.pFb = &a; cds_sl_sf_twohandcontroltypeii_init(&q); r = sl_sf_twohandcontroltypeii_init(&b);
+      CHECK(q.cds_sl_sf_twohandcontroltypeii_init == r && memcmp(&a, &b, sizeof a) == 0, "cds_sl_sf_twohandcontroltypeii_init differs from sl_sf_twohandcontroltypeii_init"); }
+    rng = 1420645223u; /* FNV-1a of "SF_TwoHandControlTypeII" */
+    machine = 1u;
+    for (c = 0; c < 20; c++) {
+        int valid = c < 16; /* 16 valid configurations, then the labelled invalid share: 4 */
+        if (!draw_sf_twohandcontroltypeii(&a, &b, valid)) {
+            CHECK(!valid, "SF_TwoHandControlTypeII: no valid configuration found in 200000 random draws");
+            continue;
+        }
+        if (!valid) inv_config++;
+        a.Activate = b.Activate = (uint8_t)(1);
+        a.S_Button1 = b.S_Button1 = (uint8_t)(1);
+        a.S_Button2 = b.S_Button2 = (uint8_t)(1);
+        bump = 20 + (int)(rnd() % 20u);
+        (void)bump; /* no parameter to change while running */
+        pol = (c % 2 == 1) ? rnd() : 0u;
+        for (k = 0; k < 50; k++) {
+            int32_t direct;
+            next_machine();
+            a.Activate = b.Activate = next_signal(a.Activate, 0, pol >> 0);
+            a.S_Button1 = b.S_Button1 = next_signal(a.S_Button1, 0, pol >> 1);
+            a.S_Button2 = b.S_Button2 = next_signal(a.S_Button2, 0, pol >> 2);
+            p.pFb = &a;
+            p.tNow = t += 10u;
+            cds_sl_sf_twohandcontroltypeii_cycle(&p);
+            direct = sl_sf_twohandcontroltypeii_cycle(&b, p.tNow);
+            CHECK(p.cds_sl_sf_twohandcontroltypeii_cycle == direct, "SF_TwoHandControlTypeII config %d cycle %d: adapter %d, direct %d", c, k, (int)p.cds_sl_sf_twohandcontroltypeii_cycle, (int)direct);
+            CHECK(memcmp(&a, &b, sizeof a) == 0, "SF_TwoHandControlTypeII config %d cycle %d: instances differ", c, k);
+            if (!valid) { inv_cycles++; continue; }
+            cycles++;
+            if (direct == SL_OK) ok++;
+            if (direct <= 0 && direct > -12) hist[-direct]++;
+            if (b.DiagCode >= 0xC000u) reached_error = 1;
+            if (b.DiagCode == 0x8000u) reached_run = 1;
+        }
+    }
+    printf("SF_TwoHandControlTypeII: %d of %d cycles (16 valid random configurations) returned SL_OK; run-like state %s, ERROR %s; invalid share: %d configurations, %d cycles\n", ok, cycles, reached_run ? "reached" : "NOT reached", reached_error ? "reached" : "NOT reached", inv_config, inv_cycles);
+    if (2 * ok <= cycles) printf("  status histogram (0, -1, ... -11): %d %d %d %d %d %d %d %d %d %d %d\n", hist[0], hist[1], hist[2], hist[3], hist[4], hist[5], hist[6], hist[7], hist[8], hist[9], hist[10]);
+    CHECK(cycles > 0 && 2 * ok > cycles, "SF_TwoHandControlTypeII: only %d of %d cycles with valid configurations returned SL_OK", ok, cycles);
+    CHECK(reached_run, "SF_TwoHandControlTypeII: the random test never reached a running state (an output on)");
+    CHECK(reached_error, "SF_TwoHandControlTypeII: the random test never reached ERROR");
+}
+
+static void rnd_config_sf_twohandcontroltypeiii(SF_TwoHandControlTypeIII *x)
+{
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nDiagProfile = (uint8_t)v[rnd() % 7u]; }
+}
+/* 1: a valid configuration (want_valid) or an invalid one was drawn into a and b */
+static int draw_sf_twohandcontroltypeiii(SF_TwoHandControlTypeIII *a, SF_TwoHandControlTypeIII *b, int want_valid)
+{
+    long k;
+    for (k = 0; k < 200000L; k++) {
+        static SF_TwoHandControlTypeIII x;
+        int valid;
+        memset(&x, 0, sizeof x);
+        rnd_config_sf_twohandcontroltypeiii(&x);
+        valid = sl_sf_twohandcontroltypeiii_init(&x) == SL_OK && sl_sf_twohandcontroltypeiii_cycle(&x, 0u) == SL_OK;
+        if (valid == want_valid) {
+            memset(a, 0, sizeof *a);
+            rnd_config_sf_twohandcontroltypeiii(a); /* placeholder, overwritten below */
+            a->nDiagProfile = x.nDiagProfile;
+            *b = *a;
+            return 1;
+        }
+    }
+    return 0;
+}
+static void test_sf_twohandcontroltypeiii(void)
+{
+    static SF_TwoHandControlTypeIII a, b;
+    cds_sl_sf_twohandcontroltypeiii_cycle_struct p;
+    int c, k, bump, ok = 0, cycles = 0, inv_cycles = 0, inv_config = 0, reached_run = 0, reached_error = 0;
+    int hist[12] = {0};
+    unsigned pol = 0;
+    uint32_t t = 1000u;
+    memset(&a, 0, sizeof a);
+    memset(&b, 0, sizeof b);
+    memset(&p, 0, sizeof p);
+    p.pFb = NULL;
+    p.cds_sl_sf_twohandcontroltypeiii_cycle = 12345;
+    cds_sl_sf_twohandcontroltypeiii_cycle(&p);
+    CHECK(p.cds_sl_sf_twohandcontroltypeiii_cycle == SL_E_NULL, "cds_sl_sf_twohandcontroltypeiii_cycle(NULL) returned %d", (int)p.cds_sl_sf_twohandcontroltypeiii_cycle);
+    { cds_sl_sf_twohandcontroltypeiii_init_struct q; int32_t r; q.pFb = &a; cds_sl_sf_twohandcontroltypeiii_init(&q); r = sl_sf_twohandcontroltypeiii_init(&b);
+      CHECK(q.cds_sl_sf_twohandcontroltypeiii_init == r && memcmp(&a, &b, sizeof a) == 0, "cds_sl_sf_twohandcontroltypeiii_init differs from sl_sf_twohandcontroltypeiii_init"); }
+    rng = 2061103466u; /* FNV-1a of "SF_TwoHandControlTypeIII" */
+    machine = 1u;
+    for (c = 0; c < 20; c++) {
+        int valid = c < 16; /* 16 valid configurations, then the labelled invalid share: 4 */
+        if (!draw_sf_twohandcontroltypeiii(&a, &b, valid)) {
+            CHECK(!valid, "SF_TwoHandControlTypeIII: no valid configuration found in 200000 random draws");
+            continue;
+        }
+        if (!valid) inv_config++;
+        a.Activate = b.Activate = (uint8_t)(1);
+        a.S_Button1 = b.S_Button1 = (uint8_t)(1);
+        a.S_Button2 = b.S_Button2 = (uint8_t)(1);
+        bump = 20 + (int)(rnd() % 20u);
+        (void)bump; /* no parameter to change while running */
+        pol = (c % 2 == 1) ? rnd() : 0u;
+        for (k = 0; k < 50; k++) {
+            int32_t direct;
+            next_machine();
+            a.Activate = b.Activate = next_signal(a.Activate, 0, pol >> 0);
+            a.S_Button1 = b.S_Button1 = next_signal(a.S_Button1, 0, pol >> 1);
+            a.S_Button2 = b.S_Button2 = next_signal(a.S_Button2, 0, pol >> 2);
+            p.pFb = &a;
+            p.tNow = t += 10u;
+            cds_sl_sf_twohandcontroltypeiii_cycle(&p);
+            direct = sl_sf_twohandcontroltypeiii_cycle(&b, p.tNow);
+            CHECK(p.cds_sl_sf_twohandcontroltypeiii_cycle == direct, "SF_TwoHandControlTypeIII config %d cycle %d: adapter %d, direct %d", c, k, (int)p.cds_sl_sf_twohandcontroltypeiii_cycle, (int)direct);
+            CHECK(memcmp(&a, &b, sizeof a) == 0, "SF_TwoHandControlTypeIII config %d cycle %d: instances differ", c, k);
+            if (!valid) { inv_cycles++; continue; }
+            cycles++;
+            if (direct == SL_OK) ok++;
+            if (direct <= 0 && direct > -12) hist[-direct]++;
+            if (b.DiagCode >= 0xC000u) reached_error = 1;
+            if (b.DiagCode == 0x8000u) reached_run = 1;
+        }
+    }
+    printf("SF_TwoHandControlTypeIII: %d of %d cycles (16 valid random configurations) returned SL_OK; run-like state %s, ERROR %s; invalid share: %d configurations, %d cycles\n", ok, cycles, reached_run ? "reached" : "NOT reached", reached_error ? "reached" : "NOT reached", inv_config, inv_cycles);
+    if (2 * ok <= cycles) printf("  status histogram (0, -1, ... -11): %d %d %d %d %d %d %d %d %d %d %d\n", hist[0], hist[1], hist[2], hist[3], hist[4], hist[5], hist[6], hist[7], hist[8], hist[9], hist[10]);
+    CHECK(cycles > 0 && 2 * ok > cycles, "SF_TwoHandControlTypeIII: only %d of %d cycles with valid configurations returned SL_OK", ok, cycles);
+    CHECK(reached_run, "SF_TwoHandControlTypeIII: the random test never reached a running state (an output on)");
+    CHECK(reached_error, "SF_TwoHandControlTypeIII: the random test never reached ERROR");
+}
+
+static void rnd_config_sf_modeselector(SF_ModeSelector *x)
+{
+    x->ModeMonitorTime = rnd_time();
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nDiagProfile = (uint8_t)v[rnd() % 7u]; }
+}
+/* 1: a valid configuration (want_valid) or an invalid one was drawn into a and b */
+static int draw_sf_modeselector(SF_ModeSelector *a, SF_ModeSelector *b, int want_valid)
+{
+    long k;
+    for (k = 0; k < 200000L; k++) {
+        static SF_ModeSelector x;
+        int valid;
+        memset(&x, 0, sizeof x);
+        rnd_config_sf_modeselector(&x);
+        valid = sl_sf_modeselector_init(&x) == SL_OK && sl_sf_modeselector_cycle(&x, 0u) == SL_OK;
+        if (valid == want_valid) {
+            memset(a, 0, sizeof *a);
+            rnd_config_sf_modeselector(a); /* placeholder, overwritten below */
+            a->ModeMonitorTime = x.ModeMonitorTime;
+            a->nDiagProfile = x.nDiagProfile;
+            *b = *a;
+            return 1;
+        }
+    }
+    return 0;
+}
+static void test_sf_modeselector(void)
+{
+    static SF_ModeSelector a, b;
+    cds_sl_sf_modeselector_cycle_struct p;
+    int c, k, bump, ok = 0, cycles = 0, inv_cycles = 0, inv_config = 0, reached_run = 0, reached_error = 0;
+    int hist[12] = {0};
+    unsigned pol = 0;
+    uint32_t t = 1000u;
+    memset(&a, 0, sizeof a);
+    memset(&b, 0, sizeof b);
+    memset(&p, 0, sizeof p);
+    p.pFb = NULL;
+    p.cds_sl_sf_modeselector_cycle = 12345;
+    cds_sl_sf_modeselector_cycle(&p);
+    CHECK(p.cds_sl_sf_modeselector_cycle == SL_E_NULL, "cds_sl_sf_modeselector_cycle(NULL) returned %d", (int)p.cds_sl_sf_modeselector_cycle);
+    { cds_sl_sf_modeselector_init_struct q; int32_t r; q.pFb = &a; cds_sl_sf_modeselector_init(&q); r = sl_sf_modeselector_init(&b);
+      CHECK(q.cds_sl_sf_modeselector_init == r && memcmp(&a, &b, sizeof a) == 0, "cds_sl_sf_modeselector_init differs from sl_sf_modeselector_init"); }
+    rng = 2726594083u; /* FNV-1a of "SF_ModeSelector" */
+    machine = 1u;
+    for (c = 0; c < 20; c++) {
+        int valid = c < 16; /* 16 valid configurations, then the labelled invalid share: 4 */
+        if (!draw_sf_modeselector(&a, &b, valid)) {
+            CHECK(!valid, "SF_ModeSelector: no valid configuration found in 200000 random draws");
+            continue;
+        }
+        if (!valid) inv_config++;
+        a.Activate = b.Activate = (uint8_t)(1);
+        a.S_Mode0 = b.S_Mode0 = (uint8_t)(1);
+        a.S_Mode1 = b.S_Mode1 = (uint8_t)(1);
+        a.S_Mode2 = b.S_Mode2 = (uint8_t)(1);
+        a.S_Mode3 = b.S_Mode3 = (uint8_t)(1);
+        a.S_Mode4 = b.S_Mode4 = (uint8_t)(1);
+        a.S_Mode5 = b.S_Mode5 = (uint8_t)(1);
+        a.S_Mode6 = b.S_Mode6 = (uint8_t)(1);
+        a.S_Mode7 = b.S_Mode7 = (uint8_t)(1);
+        a.S_Unlock = b.S_Unlock = (uint8_t)(1);
+        a.S_SetMode = b.S_SetMode = (uint8_t)(1);
+        a.AutoSetMode = b.AutoSetMode = (uint8_t)(1);
+        a.Reset = b.Reset = (uint8_t)(1);
+        bump = 20 + (int)(rnd() % 20u);
+        (void)bump; /* no parameter to change while running */
+        pol = (c % 2 == 1) ? rnd() : 0u;
+        for (k = 0; k < 50; k++) {
+            int32_t direct;
+            next_machine();
+            a.Activate = b.Activate = next_signal(a.Activate, 0, pol >> 0);
+            a.S_Mode0 = b.S_Mode0 = next_signal(a.S_Mode0, 0, pol >> 1);
+            a.S_Mode1 = b.S_Mode1 = next_signal(a.S_Mode1, 0, pol >> 2);
+            a.S_Mode2 = b.S_Mode2 = next_signal(a.S_Mode2, 0, pol >> 3);
+            a.S_Mode3 = b.S_Mode3 = next_signal(a.S_Mode3, 0, pol >> 4);
+            a.S_Mode4 = b.S_Mode4 = next_signal(a.S_Mode4, 0, pol >> 5);
+            a.S_Mode5 = b.S_Mode5 = next_signal(a.S_Mode5, 0, pol >> 6);
+            a.S_Mode6 = b.S_Mode6 = next_signal(a.S_Mode6, 0, pol >> 7);
+            a.S_Mode7 = b.S_Mode7 = next_signal(a.S_Mode7, 0, pol >> 8);
+            a.S_Unlock = b.S_Unlock = next_signal(a.S_Unlock, 0, pol >> 9);
+            a.S_SetMode = b.S_SetMode = next_signal(a.S_SetMode, 0, pol >> 10);
+            a.AutoSetMode = b.AutoSetMode = next_signal(a.AutoSetMode, 0, pol >> 11);
+            a.Reset = b.Reset = next_signal(a.Reset, 0, pol >> 12);
+            p.pFb = &a;
+            p.tNow = t += 10u;
+            cds_sl_sf_modeselector_cycle(&p);
+            direct = sl_sf_modeselector_cycle(&b, p.tNow);
+            CHECK(p.cds_sl_sf_modeselector_cycle == direct, "SF_ModeSelector config %d cycle %d: adapter %d, direct %d", c, k, (int)p.cds_sl_sf_modeselector_cycle, (int)direct);
+            CHECK(memcmp(&a, &b, sizeof a) == 0, "SF_ModeSelector config %d cycle %d: instances differ", c, k);
+            if (!valid) { inv_cycles++; continue; }
+            cycles++;
+            if (direct == SL_OK) ok++;
+            if (direct <= 0 && direct > -12) hist[-direct]++;
+            if (b.DiagCode >= 0xC000u) reached_error = 1;
+            if (b.DiagCode == 0x8000u) reached_run = 1;
+        }
+    }
+    printf("SF_ModeSelector: %d of %d cycles (16 valid random configurations) returned SL_OK; run-like state %s, ERROR %s; invalid share: %d configurations, %d cycles\n", ok, cycles, reached_run ? "reached" : "NOT reached", reached_error ? "reached" : "NOT reached", inv_config, inv_cycles);
+    if (2 * ok <= cycles) printf("  status histogram (0, -1, ... -11): %d %d %d %d %d %d %d %d %d %d %d\n", hist[0], hist[1], hist[2], hist[3], hist[4], hist[5], hist[6], hist[7], hist[8], hist[9], hist[10]);
+    CHECK(cycles > 0 && 2 * ok > cycles, "SF_ModeSelector: only %d of %d cycles with valid configurations returned SL_OK", ok, cycles);
+    CHECK(reached_run, "SF_ModeSelector: the random test never reached a running state (an output on)");
+    CHECK(reached_error, "SF_ModeSelector: the random test never reached ERROR");
+}
+
 /* SL_STATE_STR / SL_DIAG_TEXT through the adapter: the same text as the direct call, for
  * every type tag (and one unknown), every state value 0-63, a set of diag words. */
 static void test_texts(void)
 {
-    static const uint16_t tags[] = {SL_TYPE_ADVPOSMON, SL_TYPE_AND, SL_TYPE_ADD_INT, SL_TYPE_ADD_UINT, SL_TYPE_ADD_DINT, SL_TYPE_ADD_UDINT, SL_TYPE_SUB_INT, SL_TYPE_SUB_UINT, SL_TYPE_SUB_DINT, SL_TYPE_SUB_UDINT, SL_TYPE_MUL_INT, SL_TYPE_MUL_UINT, SL_TYPE_MUL_DINT, SL_TYPE_MUL_UDINT, SL_TYPE_DIV_INT, SL_TYPE_DIV_UINT, SL_TYPE_DIV_DINT, SL_TYPE_DIV_UDINT, SL_TYPE_CAMMONITOR_UINT, SL_TYPE_CAMMONITOR_UDINT, SL_TYPE_COMPARE_INT, SL_TYPE_COMPARE_UINT, SL_TYPE_COMPARE_DINT, SL_TYPE_COMPARE_UDINT, SL_TYPE_CONNECTION_SHUTDOWN, SL_TYPE_COUNTER_INT, SL_TYPE_COUNTER_UINT, SL_TYPE_COUNTER_DINT, SL_TYPE_COUNTER_UDINT, SL_TYPE_DECOUPLE, SL_TYPE_EDM, SL_TYPE_ENVELOPE_INT, SL_TYPE_ENVELOPE_UINT, SL_TYPE_ENVELOPE_DINT, SL_TYPE_ENVELOPE_UDINT, SL_TYPE_ESTOP, SL_TYPE_LIMIT_INT, SL_TYPE_LIMIT_UINT, SL_TYPE_LIMIT_DINT, SL_TYPE_LIMIT_UDINT, SL_TYPE_LOADSENSING_INT, SL_TYPE_LOADSENSING_UINT, SL_TYPE_LOADSENSING_DINT, SL_TYPE_LOADSENSING_UDINT, SL_TYPE_MON, SL_TYPE_MUTING, SL_TYPE_OPMODE, SL_TYPE_OR, SL_TYPE_RS, SL_TYPE_SBT, SL_TYPE_SCALE_INT, SL_TYPE_SCALE_UINT, SL_TYPE_SCALE_DINT, SL_TYPE_SCALE_UDINT, SL_TYPE_SF_ANTIVALENT, SL_TYPE_SF_EMERGENCYSTOP, SL_TYPE_SF_EQUIVALENT, SL_TYPE_SF_ESPE, SL_TYPE_SF_GUARD, SL_TYPE_SF_OUTCONTROL, SL_TYPE_SF_PSE, SL_TYPE_SF_SAFETYREQUEST, SL_TYPE_SLI_INT, SL_TYPE_SLI_UINT, SL_TYPE_SLI_DINT, SL_TYPE_SLI_UDINT, SL_TYPE_SLI2_INT, SL_TYPE_SLI2_UINT, SL_TYPE_SLI2_DINT, SL_TYPE_SLI2_UDINT, SL_TYPE_SLP, SL_TYPE_SPEED_INT, SL_TYPE_SPEED_UINT, SL_TYPE_SPEED_DINT, SL_TYPE_SPEED_UDINT, SL_TYPE_SR, SL_TYPE_TOF, SL_TYPE_TON, SL_TYPE_TON2, SL_TYPE_TWOHAND, SL_TYPE_VIOLATIONCOUNTER_UINT, SL_TYPE_VIOLATIONCOUNTER_UDINT, SL_TYPE_XOR, SL_TYPE_FSOE_CONN, 0, 999};
+    static const uint16_t tags[] = {SL_TYPE_ADVPOSMON, SL_TYPE_AND, SL_TYPE_ADD_INT, SL_TYPE_ADD_UINT, SL_TYPE_ADD_DINT, SL_TYPE_ADD_UDINT, SL_TYPE_SUB_INT, SL_TYPE_SUB_UINT, SL_TYPE_SUB_DINT, SL_TYPE_SUB_UDINT, SL_TYPE_MUL_INT, SL_TYPE_MUL_UINT, SL_TYPE_MUL_DINT, SL_TYPE_MUL_UDINT, SL_TYPE_DIV_INT, SL_TYPE_DIV_UINT, SL_TYPE_DIV_DINT, SL_TYPE_DIV_UDINT, SL_TYPE_CAMMONITOR_UINT, SL_TYPE_CAMMONITOR_UDINT, SL_TYPE_COMPARE_INT, SL_TYPE_COMPARE_UINT, SL_TYPE_COMPARE_DINT, SL_TYPE_COMPARE_UDINT, SL_TYPE_CONNECTION_SHUTDOWN, SL_TYPE_COUNTER_INT, SL_TYPE_COUNTER_UINT, SL_TYPE_COUNTER_DINT, SL_TYPE_COUNTER_UDINT, SL_TYPE_DECOUPLE, SL_TYPE_EDM, SL_TYPE_ENVELOPE_INT, SL_TYPE_ENVELOPE_UINT, SL_TYPE_ENVELOPE_DINT, SL_TYPE_ENVELOPE_UDINT, SL_TYPE_ESTOP, SL_TYPE_LIMIT_INT, SL_TYPE_LIMIT_UINT, SL_TYPE_LIMIT_DINT, SL_TYPE_LIMIT_UDINT, SL_TYPE_LOADSENSING_INT, SL_TYPE_LOADSENSING_UINT, SL_TYPE_LOADSENSING_DINT, SL_TYPE_LOADSENSING_UDINT, SL_TYPE_MON, SL_TYPE_MUTING, SL_TYPE_OPMODE, SL_TYPE_OR, SL_TYPE_RS, SL_TYPE_SBT, SL_TYPE_SCALE_INT, SL_TYPE_SCALE_UINT, SL_TYPE_SCALE_DINT, SL_TYPE_SCALE_UDINT, SL_TYPE_SF_ANTIVALENT, SL_TYPE_SF_EMERGENCYSTOP, SL_TYPE_SF_ENABLESWITCH, SL_TYPE_SF_EQUIVALENT, SL_TYPE_SF_ESPE, SL_TYPE_SF_GUARD, SL_TYPE_SF_MODESELECTOR, SL_TYPE_SF_OUTCONTROL, SL_TYPE_SF_PSE, SL_TYPE_SF_SAFETYREQUEST, SL_TYPE_SF_TWOHANDCONTROLTYPEII, SL_TYPE_SF_TWOHANDCONTROLTYPEIII, SL_TYPE_SLI_INT, SL_TYPE_SLI_UINT, SL_TYPE_SLI_DINT, SL_TYPE_SLI_UDINT, SL_TYPE_SLI2_INT, SL_TYPE_SLI2_UINT, SL_TYPE_SLI2_DINT, SL_TYPE_SLI2_UDINT, SL_TYPE_SLP, SL_TYPE_SPEED_INT, SL_TYPE_SPEED_UINT, SL_TYPE_SPEED_DINT, SL_TYPE_SPEED_UDINT, SL_TYPE_SR, SL_TYPE_TOF, SL_TYPE_TON, SL_TYPE_TON2, SL_TYPE_TWOHAND, SL_TYPE_VIOLATIONCOUNTER_UINT, SL_TYPE_VIOLATIONCOUNTER_UDINT, SL_TYPE_XOR, SL_TYPE_FSOE_CONN, 0, 999};
     static const uint16_t diags[] = {0, 1, 2, 3, 0x00FF, 0x1000, 0x2000, 0x4000, 0x8000, 0xE000, 0xFFFF};
     size_t i, k, named = 0;
     for (i = 0; i < sizeof tags / sizeof tags[0]; i++) {
@@ -9577,6 +9997,10 @@ int main(void)
     test_sf_guard();
     test_sf_safetyrequest();
     test_sf_outcontrol();
+    test_sf_enableswitch();
+    test_sf_twohandcontroltypeii();
+    test_sf_twohandcontroltypeiii();
+    test_sf_modeselector();
     { cds_sl_time_now_ms_struct q; uint32_t t0 = sl_time_now_ms(); cds_sl_time_now_ms(&q);
       CHECK((uint32_t)(q.cds_sl_time_now_ms - t0) < 1000u, "cds_sl_time_now_ms = %u, sl_time_now_ms = %u", (unsigned)q.cds_sl_time_now_ms, (unsigned)t0); }
     test_texts();

@@ -6,8 +6,10 @@
 //! have state machines of their own. The PLCopen Safety blocks (`sf_*`, struct names
 //! `SF_<Name>`) run in the PLCopen envelope (`prim::sf`); SF_EmergencyStop, SF_ESPE and
 //! SF_PSE share the restart-interlock machine of `sf_restart`, SF_Equivalent and
-//! SF_Antivalent the two-channel machine of `sf_pair`; SF_Guard, SF_SafetyRequest and
-//! SF_OutControl have their own (`sf_guard`, `sf_safetyrequest`, `sf_outcontrol`).
+//! SF_Antivalent the two-channel machine of `sf_pair`, SF_TwoHandControlTypeII and
+//! SF_TwoHandControlTypeIII the two-hand machine of `sf_twohand`; SF_Guard,
+//! SF_SafetyRequest, SF_OutControl, SF_EnableSwitch and SF_ModeSelector have machines of
+//! their own.
 
 pub mod advposmon;
 pub mod analog;
@@ -35,14 +37,19 @@ pub mod sbt;
 pub mod scale;
 pub mod sf_antivalent;
 pub mod sf_emergencystop;
+pub mod sf_enableswitch;
 pub mod sf_equivalent;
 pub mod sf_espe;
 pub mod sf_guard;
+pub mod sf_modeselector;
 pub mod sf_outcontrol;
 pub mod sf_pair;
 pub mod sf_pse;
 pub mod sf_restart;
 pub mod sf_safetyrequest;
+pub mod sf_twohand;
+pub mod sf_twohandcontroltypeii;
+pub mod sf_twohandcontroltypeiii;
 pub mod sli;
 pub mod sli2;
 pub mod slp;

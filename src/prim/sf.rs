@@ -264,6 +264,14 @@ pub trait SfBlock: SfInstance + Sized {
     ) -> Self::Diag;
     /// Writes the block's output fields.
     fn write_outputs(&mut self, o: &SfOut);
+    /// Called in every call after [`Self::decode`], before `Activate` is evaluated (edge
+    /// detectors run every call, research §3.3): a block with memory beyond its state
+    /// (edges of inputs other than Reset, a held selection, in the header's `wAux`, which
+    /// the integrity check covers, or in its own private fields) completes `inp` from it
+    /// and updates it. The header's `wDiag` is still the state before this call. Default:
+    /// nothing (SF_ModeSelector has memory).
+    #[inline(always)]
+    fn track(&mut self, _inp: &mut Self::In, _now: u32) {}
 }
 
 /// The latched constants are valid: a known profile the block has, times within range.
@@ -409,7 +417,8 @@ pub fn cycle<B: SfBlock>(fb: &mut B, now: u32) -> Status {
     );
     let reset = ResetIn { level, rising };
     let activate_raw = fb.activate_raw();
-    let (inp, invalid) = fb.decode_edges();
+    let (mut inp, invalid) = fb.decode_edges();
+    fb.track(&mut inp, now);
     if invalid || activate_raw > 1 || reset_raw > 1 {
         status = status.worst(Status::InvalidBool);
     }

@@ -1338,6 +1338,70 @@ void CDECL CDECL_EXT cds_sl_sf_outcontrol_cycle(cds_sl_sf_outcontrol_cycle_struc
     p->cds_sl_sf_outcontrol_cycle = sl_sf_outcontrol_cycle(p->pFb, p->tNow);
 }
 
+void CDECL CDECL_EXT cds_sl_sf_enableswitch_init(cds_sl_sf_enableswitch_init_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_sf_enableswitch_init = sl_sf_enableswitch_init(p->pFb);
+}
+
+void CDECL CDECL_EXT cds_sl_sf_enableswitch_cycle(cds_sl_sf_enableswitch_cycle_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_sf_enableswitch_cycle = sl_sf_enableswitch_cycle(p->pFb, p->tNow);
+}
+
+void CDECL CDECL_EXT cds_sl_sf_twohandcontroltypeii_init(cds_sl_sf_twohandcontroltypeii_init_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_sf_twohandcontroltypeii_init = sl_sf_twohandcontroltypeii_init(p->pFb);
+}
+
+void CDECL CDECL_EXT cds_sl_sf_twohandcontroltypeii_cycle(cds_sl_sf_twohandcontroltypeii_cycle_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_sf_twohandcontroltypeii_cycle = sl_sf_twohandcontroltypeii_cycle(p->pFb, p->tNow);
+}
+
+void CDECL CDECL_EXT cds_sl_sf_twohandcontroltypeiii_init(cds_sl_sf_twohandcontroltypeiii_init_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_sf_twohandcontroltypeiii_init = sl_sf_twohandcontroltypeiii_init(p->pFb);
+}
+
+void CDECL CDECL_EXT cds_sl_sf_twohandcontroltypeiii_cycle(cds_sl_sf_twohandcontroltypeiii_cycle_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_sf_twohandcontroltypeiii_cycle = sl_sf_twohandcontroltypeiii_cycle(p->pFb, p->tNow);
+}
+
+void CDECL CDECL_EXT cds_sl_sf_modeselector_init(cds_sl_sf_modeselector_init_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_sf_modeselector_init = sl_sf_modeselector_init(p->pFb);
+}
+
+void CDECL CDECL_EXT cds_sl_sf_modeselector_cycle(cds_sl_sf_modeselector_cycle_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_sf_modeselector_cycle = sl_sf_modeselector_cycle(p->pFb, p->tNow);
+}
+
 void CDECL CDECL_EXT cds_sl_time_now_ms(cds_sl_time_now_ms_struct *p)
 {
     if (p == 0) {

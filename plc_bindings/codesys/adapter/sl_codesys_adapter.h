@@ -1279,6 +1279,66 @@ typedef struct tagcds_sl_sf_outcontrol_cycle_struct {
 } cds_sl_sf_outcontrol_cycle_struct;
 void CDECL CDECL_EXT cds_sl_sf_outcontrol_cycle(cds_sl_sf_outcontrol_cycle_struct *p);
 
+/* FUNCTION cds_sl_sf_enableswitch_init : DINT -> sl_sf_enableswitch_init() */
+typedef struct tagcds_sl_sf_enableswitch_init_struct {
+    struct SF_EnableSwitch *pFb; /* VAR_INPUT pFb : POINTER TO ST_SF_EnableSwitch */
+    int32_t cds_sl_sf_enableswitch_init; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_sf_enableswitch_init_struct;
+void CDECL CDECL_EXT cds_sl_sf_enableswitch_init(cds_sl_sf_enableswitch_init_struct *p);
+
+/* FUNCTION cds_sl_sf_enableswitch_cycle : DINT -> sl_sf_enableswitch_cycle() */
+typedef struct tagcds_sl_sf_enableswitch_cycle_struct {
+    struct SF_EnableSwitch *pFb; /* VAR_INPUT pFb : POINTER TO ST_SF_EnableSwitch */
+    uint32_t tNow; /* VAR_INPUT tNow : UDINT */
+    int32_t cds_sl_sf_enableswitch_cycle; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_sf_enableswitch_cycle_struct;
+void CDECL CDECL_EXT cds_sl_sf_enableswitch_cycle(cds_sl_sf_enableswitch_cycle_struct *p);
+
+/* FUNCTION cds_sl_sf_twohandcontroltypeii_init : DINT -> sl_sf_twohandcontroltypeii_init() */
+typedef struct tagcds_sl_sf_twohandcontroltypeii_init_struct {
+    struct SF_TwoHandControlTypeII *pFb; /* VAR_INPUT pFb : POINTER TO ST_SF_TwoHandControlTypeII */
+    int32_t cds_sl_sf_twohandcontroltypeii_init; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_sf_twohandcontroltypeii_init_struct;
+void CDECL CDECL_EXT cds_sl_sf_twohandcontroltypeii_init(cds_sl_sf_twohandcontroltypeii_init_struct *p);
+
+/* FUNCTION cds_sl_sf_twohandcontroltypeii_cycle : DINT -> sl_sf_twohandcontroltypeii_cycle() */
+typedef struct tagcds_sl_sf_twohandcontroltypeii_cycle_struct {
+    struct SF_TwoHandControlTypeII *pFb; /* VAR_INPUT pFb : POINTER TO ST_SF_TwoHandControlTypeII */
+    uint32_t tNow; /* VAR_INPUT tNow : UDINT */
+    int32_t cds_sl_sf_twohandcontroltypeii_cycle; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_sf_twohandcontroltypeii_cycle_struct;
+void CDECL CDECL_EXT cds_sl_sf_twohandcontroltypeii_cycle(cds_sl_sf_twohandcontroltypeii_cycle_struct *p);
+
+/* FUNCTION cds_sl_sf_twohandcontroltypeiii_init : DINT -> sl_sf_twohandcontroltypeiii_init() */
+typedef struct tagcds_sl_sf_twohandcontroltypeiii_init_struct {
+    struct SF_TwoHandControlTypeIII *pFb; /* VAR_INPUT pFb : POINTER TO ST_SF_TwoHandControlTypeIII */
+    int32_t cds_sl_sf_twohandcontroltypeiii_init; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_sf_twohandcontroltypeiii_init_struct;
+void CDECL CDECL_EXT cds_sl_sf_twohandcontroltypeiii_init(cds_sl_sf_twohandcontroltypeiii_init_struct *p);
+
+/* FUNCTION cds_sl_sf_twohandcontroltypeiii_cycle : DINT -> sl_sf_twohandcontroltypeiii_cycle() */
+typedef struct tagcds_sl_sf_twohandcontroltypeiii_cycle_struct {
+    struct SF_TwoHandControlTypeIII *pFb; /* VAR_INPUT pFb : POINTER TO ST_SF_TwoHandControlTypeIII */
+    uint32_t tNow; /* VAR_INPUT tNow : UDINT */
+    int32_t cds_sl_sf_twohandcontroltypeiii_cycle; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_sf_twohandcontroltypeiii_cycle_struct;
+void CDECL CDECL_EXT cds_sl_sf_twohandcontroltypeiii_cycle(cds_sl_sf_twohandcontroltypeiii_cycle_struct *p);
+
+/* FUNCTION cds_sl_sf_modeselector_init : DINT -> sl_sf_modeselector_init() */
+typedef struct tagcds_sl_sf_modeselector_init_struct {
+    struct SF_ModeSelector *pFb; /* VAR_INPUT pFb : POINTER TO ST_SF_ModeSelector */
+    int32_t cds_sl_sf_modeselector_init; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_sf_modeselector_init_struct;
+void CDECL CDECL_EXT cds_sl_sf_modeselector_init(cds_sl_sf_modeselector_init_struct *p);
+
+/* FUNCTION cds_sl_sf_modeselector_cycle : DINT -> sl_sf_modeselector_cycle() */
+typedef struct tagcds_sl_sf_modeselector_cycle_struct {
+    struct SF_ModeSelector *pFb; /* VAR_INPUT pFb : POINTER TO ST_SF_ModeSelector */
+    uint32_t tNow; /* VAR_INPUT tNow : UDINT */
+    int32_t cds_sl_sf_modeselector_cycle; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_sf_modeselector_cycle_struct;
+void CDECL CDECL_EXT cds_sl_sf_modeselector_cycle(cds_sl_sf_modeselector_cycle_struct *p);
+
 /* FUNCTION cds_sl_time_now_ms : UDINT -> sl_time_now_ms() */
 typedef struct tagcds_sl_time_now_ms_struct {
     uint32_t cds_sl_time_now_ms; /* VAR_OUTPUT (return value) UDINT */
@@ -1545,6 +1605,14 @@ void CDECL CDECL_EXT cds_sl_diag_text(cds_sl_diag_text_struct *p);
     X(cds_sl_sf_safetyrequest_cycle) \
     X(cds_sl_sf_outcontrol_init) \
     X(cds_sl_sf_outcontrol_cycle) \
+    X(cds_sl_sf_enableswitch_init) \
+    X(cds_sl_sf_enableswitch_cycle) \
+    X(cds_sl_sf_twohandcontroltypeii_init) \
+    X(cds_sl_sf_twohandcontroltypeii_cycle) \
+    X(cds_sl_sf_twohandcontroltypeiii_init) \
+    X(cds_sl_sf_twohandcontroltypeiii_cycle) \
+    X(cds_sl_sf_modeselector_init) \
+    X(cds_sl_sf_modeselector_cycle) \
     X(cds_sl_time_now_ms) \
     X(cds_sl_ton2_get_elapsed) \
     X(cds_sl_group_init) \

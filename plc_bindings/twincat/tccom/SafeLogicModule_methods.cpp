@@ -1510,6 +1510,78 @@ HRESULT CSafeLogicModule::sl_sf_outcontrol_cycle(PVOID pFb, int32_t *pnResult, u
     return S_OK;
 }
 
+HRESULT CSafeLogicModule::sl_sf_enableswitch_init(PVOID pFb, int32_t *pnResult)
+{
+    if (pFb == NULL || pnResult == NULL) {
+        return E_POINTER;
+    }
+    *pnResult = ::sl_sf_enableswitch_init(static_cast<struct SF_EnableSwitch *>(pFb));
+    return S_OK;
+}
+
+HRESULT CSafeLogicModule::sl_sf_enableswitch_cycle(PVOID pFb, int32_t *pnResult, uint32_t tNow)
+{
+    if (pFb == NULL || pnResult == NULL) {
+        return E_POINTER;
+    }
+    *pnResult = ::sl_sf_enableswitch_cycle(static_cast<struct SF_EnableSwitch *>(pFb), tNow);
+    return S_OK;
+}
+
+HRESULT CSafeLogicModule::sl_sf_twohandcontroltypeii_init(PVOID pFb, int32_t *pnResult)
+{
+    if (pFb == NULL || pnResult == NULL) {
+        return E_POINTER;
+    }
+    *pnResult = ::sl_sf_twohandcontroltypeii_init(static_cast<struct SF_TwoHandControlTypeII *>(pFb));
+    return S_OK;
+}
+
+HRESULT CSafeLogicModule::sl_sf_twohandcontroltypeii_cycle(PVOID pFb, int32_t *pnResult, uint32_t tNow)
+{
+    if (pFb == NULL || pnResult == NULL) {
+        return E_POINTER;
+    }
+    *pnResult = ::sl_sf_twohandcontroltypeii_cycle(static_cast<struct SF_TwoHandControlTypeII *>(pFb), tNow);
+    return S_OK;
+}
+
+HRESULT CSafeLogicModule::sl_sf_twohandcontroltypeiii_init(PVOID pFb, int32_t *pnResult)
+{
+    if (pFb == NULL || pnResult == NULL) {
+        return E_POINTER;
+    }
+    *pnResult = ::sl_sf_twohandcontroltypeiii_init(static_cast<struct SF_TwoHandControlTypeIII *>(pFb));
+    return S_OK;
+}
+
+HRESULT CSafeLogicModule::sl_sf_twohandcontroltypeiii_cycle(PVOID pFb, int32_t *pnResult, uint32_t tNow)
+{
+    if (pFb == NULL || pnResult == NULL) {
+        return E_POINTER;
+    }
+    *pnResult = ::sl_sf_twohandcontroltypeiii_cycle(static_cast<struct SF_TwoHandControlTypeIII *>(pFb), tNow);
+    return S_OK;
+}
+
+HRESULT CSafeLogicModule::sl_sf_modeselector_init(PVOID pFb, int32_t *pnResult)
+{
+    if (pFb == NULL || pnResult == NULL) {
+        return E_POINTER;
+    }
+    *pnResult = ::sl_sf_modeselector_init(static_cast<struct SF_ModeSelector *>(pFb));
+    return S_OK;
+}
+
+HRESULT CSafeLogicModule::sl_sf_modeselector_cycle(PVOID pFb, int32_t *pnResult, uint32_t tNow)
+{
+    if (pFb == NULL || pnResult == NULL) {
+        return E_POINTER;
+    }
+    *pnResult = ::sl_sf_modeselector_cycle(static_cast<struct SF_ModeSelector *>(pFb), tNow);
+    return S_OK;
+}
+
 HRESULT CSafeLogicModule::sl_ton2_get_elapsed(PVOID pFb, int32_t *pnResult, uint32_t * pPElapsedMs)
 {
     if (pFb == NULL || pnResult == NULL) {
