@@ -1117,6 +1117,16 @@
 #define SL_TYPE_SF_PSE 514
 
 /*
+ Block type tag of SF_ResetButton (`SL_MEMBER.nType`, `sl_diag_text`).
+ */
+#define SL_TYPE_SF_RESETBUTTON 520
+
+/*
+ The least TrailingMinimum (ms): "absolute minimum 100 ms" (research §4.19, NPE).
+ */
+#define SF_RESETBUTTON_MIN_TRAILING 100
+
+/*
  Type tag of FB_SLI_INT (ABI-2 §10.6: sequential in the order of §10.3).
  */
 #define SL_TYPE_SLI_INT 60
@@ -11896,6 +11906,65 @@ typedef struct SF_Antivalent {
   struct SL_SF_PRIVATE stPrivate;
 } SF_Antivalent;
 
+/*
+ SF_ResetButton instance: the PLCopen VAR_INPUT / VAR_OUTPUT names, BOOL = one byte.
+ Size: 64 bytes.
+ */
+typedef struct SF_ResetButton {
+  /*
+   Offset 0. ResetRequested: the activation of this block (it has no Activate); connect the paired FB's ResetRequest. FALSE = idle (DiagCode 0000, ResetOut FALSE), highest priority. PLCopen initial value TRUE.
+   */
+  SL_BOOL ResetRequested;
+  /*
+   Offset 1. ResetIn: the reset button, TRUE = pressed.
+   */
+  SL_BOOL ResetIn;
+  /*
+   Offset 2. Reserved, keep 0.
+   */
+  uint8_t aReserved0[1];
+  /*
+   Offset 3. Library extension, constant: DiagCode profile, only 0 = v2.01 (1 is refused: v2.x block); latched at activation.
+   */
+  uint8_t nDiagProfile;
+  /*
+   Offset 4. TrailingMinimum (constant, ms; PLCopen default T#350ms): shortest valid press, at least 100 ms; latched at activation.
+   */
+  uint32_t TrailingMinimum;
+  /*
+   Offset 8. TrailingMaximum (constant, ms; PLCopen default T#2s): a press this long is invalid; latched at activation.
+   */
+  uint32_t TrailingMaximum;
+  /*
+   Offset 12 (output base). Ready: TRUE while activated (DiagCode != 0000).
+   */
+  SL_BOOL Ready;
+  /*
+   Offset 13. ResetOut: TRUE for one call after the falling edge of a valid press (DiagCode 8000).
+   */
+  SL_BOOL ResetOut;
+  /*
+   Offset 14. Error: DiagCode >= C000.
+   */
+  SL_BOOL Error;
+  /*
+   Offset 15. Reserved.
+   */
+  uint8_t aReserved1[1];
+  /*
+   Offset 16. DiagCode: the state or error (v2.01).
+   */
+  uint16_t DiagCode;
+  /*
+   Offset 18. Reserved.
+   */
+  uint8_t aReserved2[6];
+  /*
+   Offset 24. Private state, 40 bytes: never write it.
+   */
+  struct SL_SF_PRIVATE stPrivate;
+} SF_ResetButton;
+
 
 
 #ifdef __cplusplus
@@ -12288,6 +12357,8 @@ int32_t sl_sf_equivalent_init(struct SF_Equivalent *fb);
 int32_t sl_sf_equivalent_cycle(struct SF_Equivalent *fb, uint32_t tNow);
 int32_t sl_sf_antivalent_init(struct SF_Antivalent *fb);
 int32_t sl_sf_antivalent_cycle(struct SF_Antivalent *fb, uint32_t tNow);
+int32_t sl_sf_resetbutton_init(struct SF_ResetButton *fb);
+int32_t sl_sf_resetbutton_cycle(struct SF_ResetButton *fb, uint32_t tNow);
 
 #ifdef __cplusplus
 }  // extern "C"
@@ -14642,5 +14713,19 @@ SL_STATIC_ASSERT(offsetof(SF_Antivalent, aReserved1) == 12, "offset of SF_Antiva
 SL_STATIC_ASSERT(offsetof(SF_Antivalent, DiagCode) == 14, "offset of SF_Antivalent.DiagCode");
 SL_STATIC_ASSERT(offsetof(SF_Antivalent, stPrivate) == 16, "offset of SF_Antivalent.stPrivate");
 SL_STATIC_ASSERT(sizeof(SF_Antivalent) == 56, "size of SF_Antivalent");
+SL_STATIC_ASSERT(offsetof(SF_ResetButton, ResetRequested) == 0, "offset of SF_ResetButton.ResetRequested");
+SL_STATIC_ASSERT(offsetof(SF_ResetButton, ResetIn) == 1, "offset of SF_ResetButton.ResetIn");
+SL_STATIC_ASSERT(offsetof(SF_ResetButton, aReserved0) == 2, "offset of SF_ResetButton.aReserved0");
+SL_STATIC_ASSERT(offsetof(SF_ResetButton, nDiagProfile) == 3, "offset of SF_ResetButton.nDiagProfile");
+SL_STATIC_ASSERT(offsetof(SF_ResetButton, TrailingMinimum) == 4, "offset of SF_ResetButton.TrailingMinimum");
+SL_STATIC_ASSERT(offsetof(SF_ResetButton, TrailingMaximum) == 8, "offset of SF_ResetButton.TrailingMaximum");
+SL_STATIC_ASSERT(offsetof(SF_ResetButton, Ready) == 12, "offset of SF_ResetButton.Ready");
+SL_STATIC_ASSERT(offsetof(SF_ResetButton, ResetOut) == 13, "offset of SF_ResetButton.ResetOut");
+SL_STATIC_ASSERT(offsetof(SF_ResetButton, Error) == 14, "offset of SF_ResetButton.Error");
+SL_STATIC_ASSERT(offsetof(SF_ResetButton, aReserved1) == 15, "offset of SF_ResetButton.aReserved1");
+SL_STATIC_ASSERT(offsetof(SF_ResetButton, DiagCode) == 16, "offset of SF_ResetButton.DiagCode");
+SL_STATIC_ASSERT(offsetof(SF_ResetButton, aReserved2) == 18, "offset of SF_ResetButton.aReserved2");
+SL_STATIC_ASSERT(offsetof(SF_ResetButton, stPrivate) == 24, "offset of SF_ResetButton.stPrivate");
+SL_STATIC_ASSERT(sizeof(SF_ResetButton) == 64, "size of SF_ResetButton");
 
 #endif  /* SAFELOGIC_H */

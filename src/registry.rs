@@ -442,6 +442,7 @@ macro_rules! for_each_sf_block {
             $crate::blocks::sf_pse::SF_PSE => sl_sf_pse_init, sl_sf_pse_cycle;
             $crate::blocks::sf_equivalent::SF_Equivalent => sl_sf_equivalent_init, sl_sf_equivalent_cycle;
             $crate::blocks::sf_antivalent::SF_Antivalent => sl_sf_antivalent_init, sl_sf_antivalent_cycle;
+            $crate::blocks::sf_resetbutton::SF_ResetButton => sl_sf_resetbutton_init, sl_sf_resetbutton_cycle;
             // registry:end
         }
     };
@@ -560,9 +561,15 @@ mod tests {
                     // The PLCopen envelope: Activate first, the generic outputs, no
                     // group control fields (the group halts a block through its private
                     // state).
-                    assert_eq!(b.field("Activate").map(|f| f.offset), Some(0));
+                    // SF_ResetButton's activation is ResetRequested (it has no Activate).
+                    let act = if b.info.name == "SF_ResetButton" {
+                        "ResetRequested"
+                    } else {
+                        "Activate"
+                    };
+                    assert_eq!(b.field(act).map(|f| f.offset), Some(0));
                     for (name, kind) in [
-                        ("Activate", Kind::Bool),
+                        (act, Kind::Bool),
                         ("Ready", Kind::Bool),
                         ("Error", Kind::Bool),
                         ("DiagCode", Kind::U16),

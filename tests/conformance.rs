@@ -576,7 +576,7 @@ fn check_sf(t: &BlockType, bytes: &[u8], status: i32, what: &str) -> u16 {
             );
         }
     }
-    if get("Activate") != Some(1) {
+    if get(sf_activate_name(t)) != Some(1) {
         assert_eq!(code, 0, "{name} {what}: Activate not TRUE");
         for f in t.fields.iter().filter(|f| f.dir == Dir::Output) {
             assert_eq!(
@@ -588,6 +588,16 @@ fn check_sf(t: &BlockType, bytes: &[u8], status: i32, what: &str) -> u16 {
         }
     }
     code
+}
+
+/// The input that activates a PLCopen block: `Activate`; SF_ResetButton has none, its
+/// `ResetRequested` plays the part (research §4.19).
+fn sf_activate_name(t: &BlockType) -> &'static str {
+    if t.field("Activate").is_some() {
+        "Activate"
+    } else {
+        "ResetRequested"
+    }
 }
 
 macro_rules! sf_harness {
@@ -618,7 +628,7 @@ macro_rules! sf_harness {
                     }
                     if round % 4 == 1 {
                         // Activated: the random private state is a fault (C3FF), not idle.
-                        fb.Activate = 1;
+                        safelogic::prim::sf::SfInstance::set_activate_raw(&mut fb, 1);
                     }
                     if round % 2 == 0 {
                         // SAFETY: as above.
@@ -685,7 +695,7 @@ macro_rules! sf_harness {
                         h.wDiag = code;
                         h.nState = SL_STATE_RUN;
                         h.seal();
-                        fb.Activate = activate;
+                        fb.set_activate_raw(activate);
                         assert_eq!(FunctionBlock::cycle(&mut fb, 0), SL_E_CORRUPT, "{} {code:04X}", t.info.name);
                         let expect = if activate == 1 { SL_SF_DIAG_CORRUPT } else { 0 };
                         assert_eq!(fb.DiagCode, expect, "{} {code:04X}", t.info.name);
@@ -712,7 +722,14 @@ macro_rules! sf_harness {
                 for seq in 0..sequences {
                     let mut fb = <$ty>::default();
                     for f in t.fields.iter().filter(|f| f.dir == Dir::Param) {
-                        let v = if f.name == "nDiagProfile" { (seq % 2) as i64 } else { (rng.next() % 60) as i64 };
+                        let v = if f.name == "nDiagProfile" {
+                            (seq % 2) as i64
+                        } else if f.name.starts_with("Trailing") {
+                            // SF_ResetButton: at least 100 ms, in either order (C000).
+                            (100 + rng.next() % 100) as i64
+                        } else {
+                            (rng.next() % 60) as i64
+                        };
                         fb.set(f.name, v).unwrap();
                     }
                     if FunctionBlock::init(&mut fb) != SL_OK {
@@ -723,14 +740,14 @@ macro_rules! sf_harness {
                         let r = rng.next();
                         for f in t.fields.iter().filter(|f| f.dir == Dir::Input) {
                             let v = rng.next();
-                            let change = if f.name == "Activate" { v % 16 == 0 } else { v % 3 == 0 };
+                            let change = if f.name == sf_activate_name(t) { v % 16 == 0 } else { v % 3 == 0 };
                             if change {
                                 let value = if v % 401 == 0 { 2 } else { ((v >> 8) & 1) as u8 };
                                 bytes(&mut fb)[usize::from(f.offset)] = value;
                             }
                         }
                         if step == 0 {
-                            fb.Activate = 1;
+                            safelogic::prim::sf::SfInstance::set_activate_raw(&mut fb, 1);
                         }
                         now = if r & 255 == 0 {
                             now.wrapping_sub(1 + (rng.next() % 50) as u32)
@@ -783,6 +800,9 @@ fn every_plcopen_type_keeps_its_properties_over_10000_sequences() {
             }
             "SF_Equivalent" | "SF_Antivalent" => {
                 <safelogic::blocks::sf_pair::PairState as DiagState>::TABLE
+            }
+            "SF_ResetButton" => {
+                <safelogic::blocks::sf_resetbutton::ResetButtonState as DiagState>::TABLE
             }
             other => panic!("{other}: no state table named in this test"),
         };

@@ -188,6 +188,7 @@ BLOCKS["CONNECTION_SHUTDOWN"] = dict(
     change=("nConnectionId", 8), run={1, 3})
 
 BLOCK_INPUTS = {}  # block -> its BOOL inputs (filled from the header in main)
+PAUSES = {}  # cycle -> ms the driver waits after it (real time, for FBs reading SL_TIME_NOW_MS)
 
 
 def sf_script(name: str) -> dict:
@@ -198,7 +199,17 @@ def sf_script(name: str) -> dict:
     S_AutoReset (8000 again), then the walk over every BOOL input."""
     ins = BLOCK_INPUTS[name]
     safety = ins[1]
-    if "Reset" in ins:
+    if name == "SF_ResetButton":
+        # The press timed by the FB's own clock (SL_TIME_NOW_MS): the driver pauses 150 ms
+        # after cycles 34 and 44 (PAUSES), so those presses are valid (8000); a one-cycle
+        # press is too short (C3F0); ResetRequested FALSE is idle (0000). The run-like
+        # part lies after the walk of the FB's two BOOL inputs (cycles 28-31).
+        steps = {0: {"ResetRequested": 0, "ResetIn": 0, "TrailingMinimum": 100, "TrailingMaximum": 2000},
+                 2: {"ResetRequested": 1, "ResetIn": 1}, 6: {"ResetIn": 0},
+                 34: {"ResetIn": 1}, 35: {"ResetIn": 0}, 38: {"ResetIn": 1}, 39: {"ResetIn": 0},
+                 40: {"ResetRequested": 0}, 42: {"ResetRequested": 1}, 44: {"ResetIn": 1}, 45: {"ResetIn": 0}}
+        PAUSES.update({34: 150, 44: 150})
+    elif "Reset" in ins:
         steps = {0: {"Activate": 0, safety: 0}, 2: {"Activate": 1}, 4: {safety: 1}, 6: {"Reset": 1},
                  8: {"Reset": 0}, 10: {safety: 0, "Reset": 1}, 12: {safety: 1}, 14: {"Reset": 0},
                  16: {"Activate": 0}, 18: {"Activate": 1, "S_StartReset": 1, "S_AutoReset": 1},
@@ -587,6 +598,8 @@ def driver_c(hdr) -> str:
             "        step_group(k);"]
     for b in hdr.blocks:
         out.append(f"        step_{b.lower}(k);")
+    for c, ms in sorted(PAUSES.items()):
+        out.append(f"        if (k == {c}) {{ uint32_t tp = sl_time_now_ms(); while ((uint32_t)(sl_time_now_ms() - tp) < {ms}u) {{ }} }}")
     out += ['        CHECK((uint32_t)(probe_clock() - t0) < 1000u, "SL_TIME_NOW_MS = %u, sl_time_now_ms = %u", '
             '(unsigned)probe_clock(), (unsigned)t0);', "    }",
             '    CHECK(probe_selftest(&nChecked, &nFailed) && nFailed == 0 && nChecked > 0, '

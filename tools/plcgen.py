@@ -405,9 +405,11 @@ def is_table(f: CField) -> bool:
 
 
 def is_time_ms(f: CField) -> bool:
-    """tDelay, atTimes (TwinSAFE), DiscrepancyTime, MonitoringTime (PLCopen's TIME inputs)."""
+    """tDelay, atTimes (TwinSAFE), DiscrepancyTime, MonitoringTime, TrailingMinimum /
+    TrailingMaximum (PLCopen's TIME inputs)."""
     return (not f.is_struct and f.ctype == "uint32_t"
-            and (re.match(r"a?t[A-Z0-9]", f.name) is not None or re.fullmatch(r"[A-Z]\w*Time", f.name) is not None))
+            and (re.match(r"a?t[A-Z0-9]", f.name) is not None
+                 or re.fullmatch(r"[A-Z]\w*Time|Trailing(Minimum|Maximum)", f.name) is not None))
 
 
 def is_number(f: CField) -> bool:

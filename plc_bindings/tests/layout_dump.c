@@ -2351,5 +2351,19 @@ int main(void)
     printf("F SF_Antivalent aReserved1 %zu %zu\n", offsetof(SF_Antivalent, aReserved1), sizeof(((SF_Antivalent *)0)->aReserved1));
     printf("F SF_Antivalent DiagCode %zu %zu\n", offsetof(SF_Antivalent, DiagCode), sizeof(((SF_Antivalent *)0)->DiagCode));
     printf("F SF_Antivalent stPrivate %zu %zu\n", offsetof(SF_Antivalent, stPrivate), sizeof(((SF_Antivalent *)0)->stPrivate));
+    printf("S SF_ResetButton %zu\n", sizeof(SF_ResetButton));
+    printf("F SF_ResetButton ResetRequested %zu %zu\n", offsetof(SF_ResetButton, ResetRequested), sizeof(((SF_ResetButton *)0)->ResetRequested));
+    printf("F SF_ResetButton ResetIn %zu %zu\n", offsetof(SF_ResetButton, ResetIn), sizeof(((SF_ResetButton *)0)->ResetIn));
+    printf("F SF_ResetButton aReserved0 %zu %zu\n", offsetof(SF_ResetButton, aReserved0), sizeof(((SF_ResetButton *)0)->aReserved0));
+    printf("F SF_ResetButton nDiagProfile %zu %zu\n", offsetof(SF_ResetButton, nDiagProfile), sizeof(((SF_ResetButton *)0)->nDiagProfile));
+    printf("F SF_ResetButton TrailingMinimum %zu %zu\n", offsetof(SF_ResetButton, TrailingMinimum), sizeof(((SF_ResetButton *)0)->TrailingMinimum));
+    printf("F SF_ResetButton TrailingMaximum %zu %zu\n", offsetof(SF_ResetButton, TrailingMaximum), sizeof(((SF_ResetButton *)0)->TrailingMaximum));
+    printf("F SF_ResetButton Ready %zu %zu\n", offsetof(SF_ResetButton, Ready), sizeof(((SF_ResetButton *)0)->Ready));
+    printf("F SF_ResetButton ResetOut %zu %zu\n", offsetof(SF_ResetButton, ResetOut), sizeof(((SF_ResetButton *)0)->ResetOut));
+    printf("F SF_ResetButton Error %zu %zu\n", offsetof(SF_ResetButton, Error), sizeof(((SF_ResetButton *)0)->Error));
+    printf("F SF_ResetButton aReserved1 %zu %zu\n", offsetof(SF_ResetButton, aReserved1), sizeof(((SF_ResetButton *)0)->aReserved1));
+    printf("F SF_ResetButton DiagCode %zu %zu\n", offsetof(SF_ResetButton, DiagCode), sizeof(((SF_ResetButton *)0)->DiagCode));
+    printf("F SF_ResetButton aReserved2 %zu %zu\n", offsetof(SF_ResetButton, aReserved2), sizeof(((SF_ResetButton *)0)->aReserved2));
+    printf("F SF_ResetButton stPrivate %zu %zu\n", offsetof(SF_ResetButton, stPrivate), sizeof(((SF_ResetButton *)0)->stPrivate));
     return 0;
 }

@@ -38,6 +38,7 @@ pub mod sf_equivalent;
 pub mod sf_espe;
 pub mod sf_pair;
 pub mod sf_pse;
+pub mod sf_resetbutton;
 pub mod sf_restart;
 pub mod sli;
 pub mod sli2;

@@ -220,8 +220,10 @@ pub trait SfInstance {
     fn sf_private(&self) -> &SL_SF_PRIVATE;
     /// `&mut self.stPrivate`.
     fn sf_private_mut(&mut self) -> &mut SL_SF_PRIVATE;
-    /// The raw `Activate` byte.
+    /// The raw `Activate` byte (SF_ResetButton: `ResetRequested`, its activation).
     fn activate_raw(&self) -> u8;
+    /// Writes the `Activate` byte (SF_ResetButton: `ResetRequested`): for generic drivers.
+    fn set_activate_raw(&mut self, v: u8);
 }
 
 /// What an `SF_` block supplies to the envelope (the plumbing of [`SfInstance`] comes from
@@ -257,6 +259,13 @@ pub trait SfBlock: SfInstance + Sized {
     ) -> Self::Diag;
     /// Writes the block's output fields.
     fn write_outputs(&mut self, o: &SfOut);
+    /// The state entered from IDLE with valid latched constants (`times`): INIT. A block
+    /// whose constant inputs have limits of its own (SF_ResetButton's trailing times)
+    /// enters its parameter error here, in the activating call.
+    fn first(times: [u32; 2]) -> Self::Diag {
+        let _ = times;
+        Self::Diag::INIT
+    }
 }
 
 /// The latched constants are valid: a known profile the block has, times within range.
@@ -428,7 +437,7 @@ pub fn cycle<B: SfBlock>(fb: &mut B, now: u32) -> Status {
         // 0000 → INIT: the constant inputs are latched here (they may not change while
         // the block is activated).
         let next = if latch(fb) {
-            B::Diag::INIT.code()
+            B::first(fb.sf_private().adwTime).code()
         } else {
             status = status.worst(Status::Config);
             SL_SF_DIAG_CONFIG

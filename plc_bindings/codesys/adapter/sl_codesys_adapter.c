@@ -1290,6 +1290,22 @@ void CDECL CDECL_EXT cds_sl_sf_antivalent_cycle(cds_sl_sf_antivalent_cycle_struc
     p->cds_sl_sf_antivalent_cycle = sl_sf_antivalent_cycle(p->pFb, p->tNow);
 }
 
+void CDECL CDECL_EXT cds_sl_sf_resetbutton_init(cds_sl_sf_resetbutton_init_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_sf_resetbutton_init = sl_sf_resetbutton_init(p->pFb);
+}
+
+void CDECL CDECL_EXT cds_sl_sf_resetbutton_cycle(cds_sl_sf_resetbutton_cycle_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_sf_resetbutton_cycle = sl_sf_resetbutton_cycle(p->pFb, p->tNow);
+}
+
 void CDECL CDECL_EXT cds_sl_time_now_ms(cds_sl_time_now_ms_struct *p)
 {
     if (p == 0) {
