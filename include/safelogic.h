@@ -1097,6 +1097,11 @@
 #define SL_TYPE_SF_ANTIVALENT 516
 
 /*
+ Block type tag of SF_EDM (`SL_MEMBER.nType`, `sl_diag_text`).
+ */
+#define SL_TYPE_SF_EDM 521
+
+/*
  Block type tag of SF_EmergencyStop (`SL_MEMBER.nType`, `sl_diag_text`).
  */
 #define SL_TYPE_SF_EMERGENCYSTOP 512
@@ -11965,6 +11970,85 @@ typedef struct SF_ResetButton {
   struct SL_SF_PRIVATE stPrivate;
 } SF_ResetButton;
 
+/*
+ SF_EDM instance: the PLCopen v2.01 VAR_INPUT / VAR_OUTPUT names (plus v1.0's
+ S_StartReset), BOOL = one byte. Size: 64 bytes.
+ */
+typedef struct SF_EDM {
+  /*
+   Offset 0. Activate: FALSE = idle (DiagCode 0000, every output FALSE), highest priority.
+   */
+  SL_BOOL Activate;
+  /*
+   Offset 1. S_OutControl: the control signal of the preceding safety FB, TRUE = switch the actuators on.
+   */
+  SL_BOOL S_OutControl;
+  /*
+   Offset 2. EDM1: feedback of actuator 1, TRUE = released (de-energised); v1.0 name S_EDM1.
+   */
+  SL_BOOL EDM1;
+  /*
+   Offset 3. EDM2: feedback of actuator 2, TRUE = released; bridge it to EDM1 for one feedback; v1.0 name S_EDM2.
+   */
+  SL_BOOL EDM2;
+  /*
+   Offset 4. MonitoringTime (constant, ms): the actuators' longest response time; latched at activation.
+   */
+  uint32_t MonitoringTime;
+  /*
+   Offset 8. S_StartReset (v1.0 input; FALSE in v2.01): TRUE = no reset needed after activation.
+   */
+  SL_BOOL S_StartReset;
+  /*
+   Offset 9. Reset: a rising edge leaves INIT and the errors; held TRUE it is a static-reset error.
+   */
+  SL_BOOL Reset;
+  /*
+   Offset 10. Reserved, keep 0.
+   */
+  uint8_t aReserved0[1];
+  /*
+   Offset 11. Library extension, constant: DiagCode profile, 0 = v2.01 (default), 1 = v1.0; latched at activation.
+   */
+  uint8_t nDiagProfile;
+  /*
+   Offset 12 (output base). Ready: TRUE while activated (DiagCode != 0000).
+   */
+  SL_BOOL Ready;
+  /*
+   Offset 13. S_EDM_Out: the safety output to the actuators, TRUE only at DiagCode 8000.
+   */
+  SL_BOOL S_EDM_Out;
+  /*
+   Offset 14. SafetyDemand: the output is switched off (v2.01 code bit 0x0800).
+   */
+  SL_BOOL SafetyDemand;
+  /*
+   Offset 15. ResetRequest: a reset is awaited (v2.01 code bit 0x0400) and Reset is FALSE.
+   */
+  SL_BOOL ResetRequest;
+  /*
+   Offset 16. Error: DiagCode >= C000.
+   */
+  SL_BOOL Error;
+  /*
+   Offset 17. Reserved.
+   */
+  uint8_t aReserved1[1];
+  /*
+   Offset 18. DiagCode: the state or error, in the profile of nDiagProfile.
+   */
+  uint16_t DiagCode;
+  /*
+   Offset 20. Reserved.
+   */
+  uint8_t aReserved2[4];
+  /*
+   Offset 24. Private state, 40 bytes: never write it.
+   */
+  struct SL_SF_PRIVATE stPrivate;
+} SF_EDM;
+
 
 
 #ifdef __cplusplus
@@ -12359,6 +12443,8 @@ int32_t sl_sf_antivalent_init(struct SF_Antivalent *fb);
 int32_t sl_sf_antivalent_cycle(struct SF_Antivalent *fb, uint32_t tNow);
 int32_t sl_sf_resetbutton_init(struct SF_ResetButton *fb);
 int32_t sl_sf_resetbutton_cycle(struct SF_ResetButton *fb, uint32_t tNow);
+int32_t sl_sf_edm_init(struct SF_EDM *fb);
+int32_t sl_sf_edm_cycle(struct SF_EDM *fb, uint32_t tNow);
 
 #ifdef __cplusplus
 }  // extern "C"
@@ -14727,5 +14813,24 @@ SL_STATIC_ASSERT(offsetof(SF_ResetButton, DiagCode) == 16, "offset of SF_ResetBu
 SL_STATIC_ASSERT(offsetof(SF_ResetButton, aReserved2) == 18, "offset of SF_ResetButton.aReserved2");
 SL_STATIC_ASSERT(offsetof(SF_ResetButton, stPrivate) == 24, "offset of SF_ResetButton.stPrivate");
 SL_STATIC_ASSERT(sizeof(SF_ResetButton) == 64, "size of SF_ResetButton");
+SL_STATIC_ASSERT(offsetof(SF_EDM, Activate) == 0, "offset of SF_EDM.Activate");
+SL_STATIC_ASSERT(offsetof(SF_EDM, S_OutControl) == 1, "offset of SF_EDM.S_OutControl");
+SL_STATIC_ASSERT(offsetof(SF_EDM, EDM1) == 2, "offset of SF_EDM.EDM1");
+SL_STATIC_ASSERT(offsetof(SF_EDM, EDM2) == 3, "offset of SF_EDM.EDM2");
+SL_STATIC_ASSERT(offsetof(SF_EDM, MonitoringTime) == 4, "offset of SF_EDM.MonitoringTime");
+SL_STATIC_ASSERT(offsetof(SF_EDM, S_StartReset) == 8, "offset of SF_EDM.S_StartReset");
+SL_STATIC_ASSERT(offsetof(SF_EDM, Reset) == 9, "offset of SF_EDM.Reset");
+SL_STATIC_ASSERT(offsetof(SF_EDM, aReserved0) == 10, "offset of SF_EDM.aReserved0");
+SL_STATIC_ASSERT(offsetof(SF_EDM, nDiagProfile) == 11, "offset of SF_EDM.nDiagProfile");
+SL_STATIC_ASSERT(offsetof(SF_EDM, Ready) == 12, "offset of SF_EDM.Ready");
+SL_STATIC_ASSERT(offsetof(SF_EDM, S_EDM_Out) == 13, "offset of SF_EDM.S_EDM_Out");
+SL_STATIC_ASSERT(offsetof(SF_EDM, SafetyDemand) == 14, "offset of SF_EDM.SafetyDemand");
+SL_STATIC_ASSERT(offsetof(SF_EDM, ResetRequest) == 15, "offset of SF_EDM.ResetRequest");
+SL_STATIC_ASSERT(offsetof(SF_EDM, Error) == 16, "offset of SF_EDM.Error");
+SL_STATIC_ASSERT(offsetof(SF_EDM, aReserved1) == 17, "offset of SF_EDM.aReserved1");
+SL_STATIC_ASSERT(offsetof(SF_EDM, DiagCode) == 18, "offset of SF_EDM.DiagCode");
+SL_STATIC_ASSERT(offsetof(SF_EDM, aReserved2) == 20, "offset of SF_EDM.aReserved2");
+SL_STATIC_ASSERT(offsetof(SF_EDM, stPrivate) == 24, "offset of SF_EDM.stPrivate");
+SL_STATIC_ASSERT(sizeof(SF_EDM) == 64, "size of SF_EDM");
 
 #endif  /* SAFELOGIC_H */

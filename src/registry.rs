@@ -443,6 +443,7 @@ macro_rules! for_each_sf_block {
             $crate::blocks::sf_equivalent::SF_Equivalent => sl_sf_equivalent_init, sl_sf_equivalent_cycle;
             $crate::blocks::sf_antivalent::SF_Antivalent => sl_sf_antivalent_init, sl_sf_antivalent_cycle;
             $crate::blocks::sf_resetbutton::SF_ResetButton => sl_sf_resetbutton_init, sl_sf_resetbutton_cycle;
+            $crate::blocks::sf_edm::SF_EDM => sl_sf_edm_init, sl_sf_edm_cycle;
             // registry:end
         }
     };

@@ -804,6 +804,7 @@ fn every_plcopen_type_keeps_its_properties_over_10000_sequences() {
             "SF_ResetButton" => {
                 <safelogic::blocks::sf_resetbutton::ResetButtonState as DiagState>::TABLE
             }
+            "SF_EDM" => <safelogic::blocks::sf_edm::SfEdmState as DiagState>::TABLE,
             other => panic!("{other}: no state table named in this test"),
         };
         for (c2, c1, n, _) in v2 {

@@ -209,6 +209,16 @@ def sf_script(name: str) -> dict:
                  34: {"ResetIn": 1}, 35: {"ResetIn": 0}, 38: {"ResetIn": 1}, 39: {"ResetIn": 0},
                  40: {"ResetRequested": 0}, 42: {"ResetRequested": 1}, 44: {"ResetIn": 1}, 45: {"ResetIn": 0}}
         PAUSES.update({34: 150, 44: 150})
+    elif name == "SF_EDM":
+        # MonitoringTime 1 s (the FB's clock is real time; the cycles run back to back):
+        # Reset (8810), S_OutControl (8000), the contactors pick up; switched off and on
+        # again before they released (C030); Activate FALSE (0000); S_StartReset and
+        # S_OutControl with released contactors (8000 again).
+        steps = {0: {"Activate": 0, "S_OutControl": 0, "EDM1": 1, "EDM2": 1, "MonitoringTime": 1000},
+                 2: {"Activate": 1}, 4: {"Reset": 1}, 5: {"Reset": 0}, 6: {"S_OutControl": 1},
+                 7: {"EDM1": 0, "EDM2": 0}, 10: {"S_OutControl": 0}, 11: {"S_OutControl": 1},
+                 12: {"S_OutControl": 0, "EDM1": 1, "EDM2": 1}, 14: {"Activate": 0},
+                 16: {"Activate": 1, "S_StartReset": 1}, 18: {"S_OutControl": 1}, 19: {"EDM1": 0, "EDM2": 0}}
     elif "Reset" in ins:
         steps = {0: {"Activate": 0, safety: 0}, 2: {"Activate": 1}, 4: {safety: 1}, 6: {"Reset": 1},
                  8: {"Reset": 0}, 10: {safety: 0, "Reset": 1}, 12: {safety: 1}, 14: {"Reset": 0},

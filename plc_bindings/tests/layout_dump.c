@@ -2365,5 +2365,24 @@ int main(void)
     printf("F SF_ResetButton DiagCode %zu %zu\n", offsetof(SF_ResetButton, DiagCode), sizeof(((SF_ResetButton *)0)->DiagCode));
     printf("F SF_ResetButton aReserved2 %zu %zu\n", offsetof(SF_ResetButton, aReserved2), sizeof(((SF_ResetButton *)0)->aReserved2));
     printf("F SF_ResetButton stPrivate %zu %zu\n", offsetof(SF_ResetButton, stPrivate), sizeof(((SF_ResetButton *)0)->stPrivate));
+    printf("S SF_EDM %zu\n", sizeof(SF_EDM));
+    printf("F SF_EDM Activate %zu %zu\n", offsetof(SF_EDM, Activate), sizeof(((SF_EDM *)0)->Activate));
+    printf("F SF_EDM S_OutControl %zu %zu\n", offsetof(SF_EDM, S_OutControl), sizeof(((SF_EDM *)0)->S_OutControl));
+    printf("F SF_EDM EDM1 %zu %zu\n", offsetof(SF_EDM, EDM1), sizeof(((SF_EDM *)0)->EDM1));
+    printf("F SF_EDM EDM2 %zu %zu\n", offsetof(SF_EDM, EDM2), sizeof(((SF_EDM *)0)->EDM2));
+    printf("F SF_EDM MonitoringTime %zu %zu\n", offsetof(SF_EDM, MonitoringTime), sizeof(((SF_EDM *)0)->MonitoringTime));
+    printf("F SF_EDM S_StartReset %zu %zu\n", offsetof(SF_EDM, S_StartReset), sizeof(((SF_EDM *)0)->S_StartReset));
+    printf("F SF_EDM Reset %zu %zu\n", offsetof(SF_EDM, Reset), sizeof(((SF_EDM *)0)->Reset));
+    printf("F SF_EDM aReserved0 %zu %zu\n", offsetof(SF_EDM, aReserved0), sizeof(((SF_EDM *)0)->aReserved0));
+    printf("F SF_EDM nDiagProfile %zu %zu\n", offsetof(SF_EDM, nDiagProfile), sizeof(((SF_EDM *)0)->nDiagProfile));
+    printf("F SF_EDM Ready %zu %zu\n", offsetof(SF_EDM, Ready), sizeof(((SF_EDM *)0)->Ready));
+    printf("F SF_EDM S_EDM_Out %zu %zu\n", offsetof(SF_EDM, S_EDM_Out), sizeof(((SF_EDM *)0)->S_EDM_Out));
+    printf("F SF_EDM SafetyDemand %zu %zu\n", offsetof(SF_EDM, SafetyDemand), sizeof(((SF_EDM *)0)->SafetyDemand));
+    printf("F SF_EDM ResetRequest %zu %zu\n", offsetof(SF_EDM, ResetRequest), sizeof(((SF_EDM *)0)->ResetRequest));
+    printf("F SF_EDM Error %zu %zu\n", offsetof(SF_EDM, Error), sizeof(((SF_EDM *)0)->Error));
+    printf("F SF_EDM aReserved1 %zu %zu\n", offsetof(SF_EDM, aReserved1), sizeof(((SF_EDM *)0)->aReserved1));
+    printf("F SF_EDM DiagCode %zu %zu\n", offsetof(SF_EDM, DiagCode), sizeof(((SF_EDM *)0)->DiagCode));
+    printf("F SF_EDM aReserved2 %zu %zu\n", offsetof(SF_EDM, aReserved2), sizeof(((SF_EDM *)0)->aReserved2));
+    printf("F SF_EDM stPrivate %zu %zu\n", offsetof(SF_EDM, stPrivate), sizeof(((SF_EDM *)0)->stPrivate));
     return 0;
 }

@@ -33,6 +33,7 @@ pub mod rs;
 pub mod sbt;
 pub mod scale;
 pub mod sf_antivalent;
+pub mod sf_edm;
 pub mod sf_emergencystop;
 pub mod sf_equivalent;
 pub mod sf_espe;

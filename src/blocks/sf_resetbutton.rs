@@ -40,7 +40,7 @@ pub const fn params_valid(t: [u32; 2]) -> bool {
 /// `r` is the R_TRIG of ResetIn; the press runs from the entry into 83F2 (`in_state`, ms);
 /// `t` = [TrailingMinimum, TrailingMaximum]. IDLE → 83E2 / C000 is the envelope's
 /// (`SfBlock::first`).
-pub fn next(s: ResetButtonState, r: ResetIn, in_state: u32, t: [u32; 2]) -> ResetButtonState {
+fn next(s: ResetButtonState, r: ResetIn, in_state: u32, t: [u32; 2]) -> ResetButtonState {
     use ResetButtonState::*;
     match s {
         WaitRTrig if r.held() => ErrReset,

@@ -34,6 +34,15 @@ impl Edm {
             .fold(0, |d, x| d | DIAG[x])
     }
 
+    /// Diag bits of the active feedback loops that do not read FALSE: the contactors have
+    /// not (all) picked up (SF_EDM's check after switching on).
+    #[inline]
+    pub fn not_switched(&self) -> u16 {
+        (0..2)
+            .filter(|&x| self.active[x] && !self.is_false[x])
+            .fold(0, |d, x| d | DIAG[x])
+    }
+
     /// EDM reset-time check while the outputs are on. `pending` bit x (1 << x) stays set
     /// until EDMx reads FALSE; when `reset_time[x]` ms have passed since `t_on` with the
     /// bit still set, the EDMx diag bit is returned.

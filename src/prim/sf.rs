@@ -37,6 +37,22 @@ pub const SL_SF_DIAG_CONFIG: u16 = 0xC3FC;
 /// wrapping clock).
 pub const SL_SF_TIME_MAX: u32 = 0x7FFF_FFFF;
 
+/// Previous level of a block's own R_TRIG input (SF_EDM's S_OutControl,
+/// SF_TestableSafetySensor's StartTest): bit 7 of the header's `nFlags`, sealed with it.
+const F_TRIGGER_PREV: u8 = 1 << 7;
+
+/// R_TRIG(raw).Q of a block's own trigger input, read in `SfBlock::decode`; the memory is
+/// written by [`store_trigger`] from `SfBlock::write_outputs`, which runs at the end of
+/// every call (idle included), so the R_TRIG runs in every call as Reset's does.
+pub fn trigger_rising(p: &SL_SF_PRIVATE, raw: u8) -> bool {
+    bools::is_true(raw) && !p.stHeader.flag(F_TRIGGER_PREV)
+}
+
+/// Stores the level of the trigger input for the next call's [`trigger_rising`].
+pub fn store_trigger(p: &mut SL_SF_PRIVATE, raw: u8) {
+    p.stHeader.set_flag(F_TRIGGER_PREV, bools::is_true(raw));
+}
+
 /// The DiagCode meaning "the block is activated and its safety output is enabled".
 pub const SF_ENABLED: u16 = 0x8000;
 

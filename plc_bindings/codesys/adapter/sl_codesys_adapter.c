@@ -1306,6 +1306,22 @@ void CDECL CDECL_EXT cds_sl_sf_resetbutton_cycle(cds_sl_sf_resetbutton_cycle_str
     p->cds_sl_sf_resetbutton_cycle = sl_sf_resetbutton_cycle(p->pFb, p->tNow);
 }
 
+void CDECL CDECL_EXT cds_sl_sf_edm_init(cds_sl_sf_edm_init_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_sf_edm_init = sl_sf_edm_init(p->pFb);
+}
+
+void CDECL CDECL_EXT cds_sl_sf_edm_cycle(cds_sl_sf_edm_cycle_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_sf_edm_cycle = sl_sf_edm_cycle(p->pFb, p->tNow);
+}
+
 void CDECL CDECL_EXT cds_sl_time_now_ms(cds_sl_time_now_ms_struct *p)
 {
     if (p == 0) {

@@ -1249,6 +1249,21 @@ typedef struct tagcds_sl_sf_resetbutton_cycle_struct {
 } cds_sl_sf_resetbutton_cycle_struct;
 void CDECL CDECL_EXT cds_sl_sf_resetbutton_cycle(cds_sl_sf_resetbutton_cycle_struct *p);
 
+/* FUNCTION cds_sl_sf_edm_init : DINT -> sl_sf_edm_init() */
+typedef struct tagcds_sl_sf_edm_init_struct {
+    struct SF_EDM *pFb; /* VAR_INPUT pFb : POINTER TO ST_SF_EDM */
+    int32_t cds_sl_sf_edm_init; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_sf_edm_init_struct;
+void CDECL CDECL_EXT cds_sl_sf_edm_init(cds_sl_sf_edm_init_struct *p);
+
+/* FUNCTION cds_sl_sf_edm_cycle : DINT -> sl_sf_edm_cycle() */
+typedef struct tagcds_sl_sf_edm_cycle_struct {
+    struct SF_EDM *pFb; /* VAR_INPUT pFb : POINTER TO ST_SF_EDM */
+    uint32_t tNow; /* VAR_INPUT tNow : UDINT */
+    int32_t cds_sl_sf_edm_cycle; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_sf_edm_cycle_struct;
+void CDECL CDECL_EXT cds_sl_sf_edm_cycle(cds_sl_sf_edm_cycle_struct *p);
+
 /* FUNCTION cds_sl_time_now_ms : UDINT -> sl_time_now_ms() */
 typedef struct tagcds_sl_time_now_ms_struct {
     uint32_t cds_sl_time_now_ms; /* VAR_OUTPUT (return value) UDINT */
@@ -1511,6 +1526,8 @@ void CDECL CDECL_EXT cds_sl_diag_text(cds_sl_diag_text_struct *p);
     X(cds_sl_sf_antivalent_cycle) \
     X(cds_sl_sf_resetbutton_init) \
     X(cds_sl_sf_resetbutton_cycle) \
+    X(cds_sl_sf_edm_init) \
+    X(cds_sl_sf_edm_cycle) \
     X(cds_sl_time_now_ms) \
     X(cds_sl_ton2_get_elapsed) \
     X(cds_sl_group_init) \
