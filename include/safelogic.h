@@ -1132,6 +1132,16 @@
 #define SF_RESETBUTTON_MIN_TRAILING 100
 
 /*
+ Block type tag of SF_TestableSafetySensor (`SL_MEMBER.nType`, `sl_diag_text`).
+ */
+#define SL_TYPE_SF_TESTABLESAFETYSENSOR 522
+
+/*
+ The longest TestTime (ms): "range 0 … 150 ms" (research §4.15).
+ */
+#define SF_TSS_MAX_TEST_TIME 150
+
+/*
  Type tag of FB_SLI_INT (ABI-2 §10.6: sequential in the order of §10.3).
  */
 #define SL_TYPE_SLI_INT 60
@@ -12049,6 +12059,93 @@ typedef struct SF_EDM {
   struct SL_SF_PRIVATE stPrivate;
 } SF_EDM;
 
+/*
+ SF_TestableSafetySensor instance: the PLCopen VAR_INPUT / VAR_OUTPUT names, BOOL = one
+ byte. Size: 64 bytes.
+ */
+typedef struct SF_TestableSafetySensor {
+  /*
+   Offset 0. Activate: FALSE = idle (DiagCode 0000, every output FALSE except S_TestOut), highest priority.
+   */
+  SL_BOOL Activate;
+  /*
+   Offset 1. S_OSSD_In: the sensor's OSSD, FALSE = safety demand or test.
+   */
+  SL_BOOL S_OSSD_In;
+  /*
+   Offset 2. StartTest: a rising edge starts the automatic test (in 8010 or 8000).
+   */
+  SL_BOOL StartTest;
+  /*
+   Offset 3. NoExternalTest (constant): TRUE = no manual test after a failed automatic test; latched at activation.
+   */
+  SL_BOOL NoExternalTest;
+  /*
+   Offset 4. S_StartReset: TRUE = automatic reset at activation (start-up).
+   */
+  SL_BOOL S_StartReset;
+  /*
+   Offset 5. S_AutoReset: TRUE = automatic reset when the safety demand ends.
+   */
+  SL_BOOL S_AutoReset;
+  /*
+   Offset 6. Reset: a rising edge resets; held TRUE into a wait-for-reset state it is a static-reset error.
+   */
+  SL_BOOL Reset;
+  /*
+   Offset 7. Library extension, constant: DiagCode profile, 0 = v2.01 (default), 1 = v1.0; latched at activation.
+   */
+  uint8_t nDiagProfile;
+  /*
+   Offset 8. TestTime (constant, ms; PLCopen default T#10ms, at most 150 ms): each test phase's limit; latched at activation.
+   */
+  uint32_t TestTime;
+  /*
+   Offset 12 (output base). Ready: TRUE while activated (DiagCode != 0000).
+   */
+  SL_BOOL Ready;
+  /*
+   Offset 13. S_OSSD_Out: the safety output, TRUE at 8000, 8010 and during the test (8020, 8030).
+   */
+  SL_BOOL S_OSSD_Out;
+  /*
+   Offset 14. S_TestOut: to the sensor's test input, FALSE = transmitter off (test phase 1, 8020, and library faults).
+   */
+  SL_BOOL S_TestOut;
+  /*
+   Offset 15. TestPossible: an automatic test can be started (8010, 8000).
+   */
+  SL_BOOL TestPossible;
+  /*
+   Offset 16. TestExecuted: the automatic test passed (8000), until the next test or demand.
+   */
+  SL_BOOL TestExecuted;
+  /*
+   Offset 17. SafetyDemand: the safety function is demanded (v2.01 code bit 0x0800).
+   */
+  SL_BOOL SafetyDemand;
+  /*
+   Offset 18. ResetRequest: a reset is awaited (v2.01 code bit 0x0400) and Reset is FALSE.
+   */
+  SL_BOOL ResetRequest;
+  /*
+   Offset 19. Error: DiagCode >= C000.
+   */
+  SL_BOOL Error;
+  /*
+   Offset 20. DiagCode: the state or error, in the profile of nDiagProfile.
+   */
+  uint16_t DiagCode;
+  /*
+   Offset 22. Reserved.
+   */
+  uint8_t aReserved1[2];
+  /*
+   Offset 24. Private state, 40 bytes: never write it.
+   */
+  struct SL_SF_PRIVATE stPrivate;
+} SF_TestableSafetySensor;
+
 
 
 #ifdef __cplusplus
@@ -12445,6 +12542,8 @@ int32_t sl_sf_resetbutton_init(struct SF_ResetButton *fb);
 int32_t sl_sf_resetbutton_cycle(struct SF_ResetButton *fb, uint32_t tNow);
 int32_t sl_sf_edm_init(struct SF_EDM *fb);
 int32_t sl_sf_edm_cycle(struct SF_EDM *fb, uint32_t tNow);
+int32_t sl_sf_testablesafetysensor_init(struct SF_TestableSafetySensor *fb);
+int32_t sl_sf_testablesafetysensor_cycle(struct SF_TestableSafetySensor *fb, uint32_t tNow);
 
 #ifdef __cplusplus
 }  // extern "C"
@@ -14832,5 +14931,26 @@ SL_STATIC_ASSERT(offsetof(SF_EDM, DiagCode) == 18, "offset of SF_EDM.DiagCode");
 SL_STATIC_ASSERT(offsetof(SF_EDM, aReserved2) == 20, "offset of SF_EDM.aReserved2");
 SL_STATIC_ASSERT(offsetof(SF_EDM, stPrivate) == 24, "offset of SF_EDM.stPrivate");
 SL_STATIC_ASSERT(sizeof(SF_EDM) == 64, "size of SF_EDM");
+SL_STATIC_ASSERT(offsetof(SF_TestableSafetySensor, Activate) == 0, "offset of SF_TestableSafetySensor.Activate");
+SL_STATIC_ASSERT(offsetof(SF_TestableSafetySensor, S_OSSD_In) == 1, "offset of SF_TestableSafetySensor.S_OSSD_In");
+SL_STATIC_ASSERT(offsetof(SF_TestableSafetySensor, StartTest) == 2, "offset of SF_TestableSafetySensor.StartTest");
+SL_STATIC_ASSERT(offsetof(SF_TestableSafetySensor, NoExternalTest) == 3, "offset of SF_TestableSafetySensor.NoExternalTest");
+SL_STATIC_ASSERT(offsetof(SF_TestableSafetySensor, S_StartReset) == 4, "offset of SF_TestableSafetySensor.S_StartReset");
+SL_STATIC_ASSERT(offsetof(SF_TestableSafetySensor, S_AutoReset) == 5, "offset of SF_TestableSafetySensor.S_AutoReset");
+SL_STATIC_ASSERT(offsetof(SF_TestableSafetySensor, Reset) == 6, "offset of SF_TestableSafetySensor.Reset");
+SL_STATIC_ASSERT(offsetof(SF_TestableSafetySensor, nDiagProfile) == 7, "offset of SF_TestableSafetySensor.nDiagProfile");
+SL_STATIC_ASSERT(offsetof(SF_TestableSafetySensor, TestTime) == 8, "offset of SF_TestableSafetySensor.TestTime");
+SL_STATIC_ASSERT(offsetof(SF_TestableSafetySensor, Ready) == 12, "offset of SF_TestableSafetySensor.Ready");
+SL_STATIC_ASSERT(offsetof(SF_TestableSafetySensor, S_OSSD_Out) == 13, "offset of SF_TestableSafetySensor.S_OSSD_Out");
+SL_STATIC_ASSERT(offsetof(SF_TestableSafetySensor, S_TestOut) == 14, "offset of SF_TestableSafetySensor.S_TestOut");
+SL_STATIC_ASSERT(offsetof(SF_TestableSafetySensor, TestPossible) == 15, "offset of SF_TestableSafetySensor.TestPossible");
+SL_STATIC_ASSERT(offsetof(SF_TestableSafetySensor, TestExecuted) == 16, "offset of SF_TestableSafetySensor.TestExecuted");
+SL_STATIC_ASSERT(offsetof(SF_TestableSafetySensor, SafetyDemand) == 17, "offset of SF_TestableSafetySensor.SafetyDemand");
+SL_STATIC_ASSERT(offsetof(SF_TestableSafetySensor, ResetRequest) == 18, "offset of SF_TestableSafetySensor.ResetRequest");
+SL_STATIC_ASSERT(offsetof(SF_TestableSafetySensor, Error) == 19, "offset of SF_TestableSafetySensor.Error");
+SL_STATIC_ASSERT(offsetof(SF_TestableSafetySensor, DiagCode) == 20, "offset of SF_TestableSafetySensor.DiagCode");
+SL_STATIC_ASSERT(offsetof(SF_TestableSafetySensor, aReserved1) == 22, "offset of SF_TestableSafetySensor.aReserved1");
+SL_STATIC_ASSERT(offsetof(SF_TestableSafetySensor, stPrivate) == 24, "offset of SF_TestableSafetySensor.stPrivate");
+SL_STATIC_ASSERT(sizeof(SF_TestableSafetySensor) == 64, "size of SF_TestableSafetySensor");
 
 #endif  /* SAFELOGIC_H */

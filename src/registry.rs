@@ -444,6 +444,7 @@ macro_rules! for_each_sf_block {
             $crate::blocks::sf_antivalent::SF_Antivalent => sl_sf_antivalent_init, sl_sf_antivalent_cycle;
             $crate::blocks::sf_resetbutton::SF_ResetButton => sl_sf_resetbutton_init, sl_sf_resetbutton_cycle;
             $crate::blocks::sf_edm::SF_EDM => sl_sf_edm_init, sl_sf_edm_cycle;
+            $crate::blocks::sf_testablesafetysensor::SF_TestableSafetySensor => sl_sf_testablesafetysensor_init, sl_sf_testablesafetysensor_cycle;
             // registry:end
         }
     };

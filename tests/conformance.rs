@@ -548,6 +548,10 @@ fn check_sf(t: &BlockType, bytes: &[u8], status: i32, what: &str) -> u16 {
         .filter(|f| f.dir == Dir::Output && !generic.contains(&f.name))
     {
         let on = flag(f.name).unwrap();
+        if let Some(want) = sf_sensor_output(name, f.name, code, library.contains(&code)) {
+            assert_eq!(on, want, "{name} {what}: {} at {code:04X}", f.name);
+            continue;
+        }
         assert!(
             !on || code == 0x8000,
             "{name} {what}: {} TRUE at {code:04X}",
@@ -578,7 +582,11 @@ fn check_sf(t: &BlockType, bytes: &[u8], status: i32, what: &str) -> u16 {
     }
     if get(sf_activate_name(t)) != Some(1) {
         assert_eq!(code, 0, "{name} {what}: Activate not TRUE");
-        for f in t.fields.iter().filter(|f| f.dir == Dir::Output) {
+        for f in t
+            .fields
+            .iter()
+            .filter(|f| f.dir == Dir::Output && sf_sensor_output(name, f.name, 0, false).is_none())
+        {
             assert_eq!(
                 read(bytes, f.offset, f.kind),
                 0,
@@ -588,6 +596,24 @@ fn check_sf(t: &BlockType, bytes: &[u8], status: i32, what: &str) -> u16 {
         }
     }
     code
+}
+
+/// SF_TestableSafetySensor's own outputs, written from research §4.15 (ABB's per-state
+/// output table, PLCN; semantics QT5): S_OSSD_Out TRUE while the sensor is free (8010,
+/// 8000) and during the automatic test (8020, 8030); S_TestOut TRUE except in test phase 1
+/// (8020) and in a library fault (idle included: PLCN "S_TestOut = SAFETRUE"); TestPossible
+/// in 8010 and 8000; TestExecuted in 8000. `None`: not such an output (the generic rule).
+fn sf_sensor_output(block: &str, field: &str, code: u16, library: bool) -> Option<bool> {
+    if block != "SF_TestableSafetySensor" {
+        return None;
+    }
+    Some(match field {
+        "S_OSSD_Out" => [0x8000, 0x8010, 0x8020, 0x8030].contains(&code),
+        "S_TestOut" => !library && code != 0x8020,
+        "TestPossible" => code == 0x8000 || code == 0x8010,
+        "TestExecuted" => code == 0x8000,
+        _ => return None,
+    })
 }
 
 /// The input that activates a PLCopen block: `Activate`; SF_ResetButton has none, its
@@ -727,6 +753,9 @@ macro_rules! sf_harness {
                         } else if f.name.starts_with("Trailing") {
                             // SF_ResetButton: at least 100 ms, in either order (C000).
                             (100 + rng.next() % 100) as i64
+                        } else if f.name == "TestTime" && seq % 16 == 3 {
+                            // SF_TestableSafetySensor: above 150 ms is C000.
+                            151
                         } else {
                             (rng.next() % 60) as i64
                         };
@@ -740,7 +769,15 @@ macro_rules! sf_harness {
                         let r = rng.next();
                         for f in t.fields.iter().filter(|f| f.dir == Dir::Input) {
                             let v = rng.next();
-                            let change = if f.name == sf_activate_name(t) { v % 16 == 0 } else { v % 3 == 0 };
+                            // SF_TestableSafetySensor's NoExternalTest is a BOOL constant (a
+                            // change is C3FD): drawn once per sequence.
+                            let change = if f.name == sf_activate_name(t) {
+                                v % 16 == 0
+                            } else if f.name == "NoExternalTest" {
+                                step == 0
+                            } else {
+                                v % 3 == 0
+                            };
                             if change {
                                 let value = if v % 401 == 0 { 2 } else { ((v >> 8) & 1) as u8 };
                                 bytes(&mut fb)[usize::from(f.offset)] = value;
@@ -805,6 +842,9 @@ fn every_plcopen_type_keeps_its_properties_over_10000_sequences() {
                 <safelogic::blocks::sf_resetbutton::ResetButtonState as DiagState>::TABLE
             }
             "SF_EDM" => <safelogic::blocks::sf_edm::SfEdmState as DiagState>::TABLE,
+            "SF_TestableSafetySensor" => {
+                <safelogic::blocks::sf_testablesafetysensor::TssState as DiagState>::TABLE
+            }
             other => panic!("{other}: no state table named in this test"),
         };
         for (c2, c1, n, _) in v2 {

@@ -219,6 +219,17 @@ def sf_script(name: str) -> dict:
                  7: {"EDM1": 0, "EDM2": 0}, 10: {"S_OutControl": 0}, 11: {"S_OutControl": 1},
                  12: {"S_OutControl": 0, "EDM1": 1, "EDM2": 1}, 14: {"Activate": 0},
                  16: {"Activate": 1, "S_StartReset": 1}, 18: {"S_OutControl": 1}, 19: {"EDM1": 0, "EDM2": 0}}
+    elif name == "SF_TestableSafetySensor":
+        # TestTime 150 ms (real time; the cycles run back to back): Reset (8010), a test the
+        # sensor answers (8020, 8030, 8000), a safety demand whose end meets a held Reset
+        # (8806, 8406, the static-reset error C021), Activate FALSE (0000), S_StartReset and
+        # a second test (8000 again).
+        steps = {0: {"Activate": 0, "S_OSSD_In": 1, "TestTime": 150, "NoExternalTest": 1},
+                 2: {"Activate": 1}, 4: {"Reset": 1}, 5: {"Reset": 0}, 6: {"StartTest": 1},
+                 7: {"S_OSSD_In": 0}, 8: {"S_OSSD_In": 1, "StartTest": 0}, 10: {"S_OSSD_In": 0},
+                 11: {"Reset": 1}, 12: {"S_OSSD_In": 1}, 14: {"Activate": 0}, 15: {"Reset": 0},
+                 16: {"Activate": 1, "S_StartReset": 1}, 19: {"StartTest": 1}, 20: {"S_OSSD_In": 0},
+                 21: {"S_OSSD_In": 1}}
     elif "Reset" in ins:
         steps = {0: {"Activate": 0, safety: 0}, 2: {"Activate": 1}, 4: {safety: 1}, 6: {"Reset": 1},
                  8: {"Reset": 0}, 10: {safety: 0, "Reset": 1}, 12: {safety: 1}, 14: {"Reset": 0},

@@ -2384,5 +2384,26 @@ int main(void)
     printf("F SF_EDM DiagCode %zu %zu\n", offsetof(SF_EDM, DiagCode), sizeof(((SF_EDM *)0)->DiagCode));
     printf("F SF_EDM aReserved2 %zu %zu\n", offsetof(SF_EDM, aReserved2), sizeof(((SF_EDM *)0)->aReserved2));
     printf("F SF_EDM stPrivate %zu %zu\n", offsetof(SF_EDM, stPrivate), sizeof(((SF_EDM *)0)->stPrivate));
+    printf("S SF_TestableSafetySensor %zu\n", sizeof(SF_TestableSafetySensor));
+    printf("F SF_TestableSafetySensor Activate %zu %zu\n", offsetof(SF_TestableSafetySensor, Activate), sizeof(((SF_TestableSafetySensor *)0)->Activate));
+    printf("F SF_TestableSafetySensor S_OSSD_In %zu %zu\n", offsetof(SF_TestableSafetySensor, S_OSSD_In), sizeof(((SF_TestableSafetySensor *)0)->S_OSSD_In));
+    printf("F SF_TestableSafetySensor StartTest %zu %zu\n", offsetof(SF_TestableSafetySensor, StartTest), sizeof(((SF_TestableSafetySensor *)0)->StartTest));
+    printf("F SF_TestableSafetySensor NoExternalTest %zu %zu\n", offsetof(SF_TestableSafetySensor, NoExternalTest), sizeof(((SF_TestableSafetySensor *)0)->NoExternalTest));
+    printf("F SF_TestableSafetySensor S_StartReset %zu %zu\n", offsetof(SF_TestableSafetySensor, S_StartReset), sizeof(((SF_TestableSafetySensor *)0)->S_StartReset));
+    printf("F SF_TestableSafetySensor S_AutoReset %zu %zu\n", offsetof(SF_TestableSafetySensor, S_AutoReset), sizeof(((SF_TestableSafetySensor *)0)->S_AutoReset));
+    printf("F SF_TestableSafetySensor Reset %zu %zu\n", offsetof(SF_TestableSafetySensor, Reset), sizeof(((SF_TestableSafetySensor *)0)->Reset));
+    printf("F SF_TestableSafetySensor nDiagProfile %zu %zu\n", offsetof(SF_TestableSafetySensor, nDiagProfile), sizeof(((SF_TestableSafetySensor *)0)->nDiagProfile));
+    printf("F SF_TestableSafetySensor TestTime %zu %zu\n", offsetof(SF_TestableSafetySensor, TestTime), sizeof(((SF_TestableSafetySensor *)0)->TestTime));
+    printf("F SF_TestableSafetySensor Ready %zu %zu\n", offsetof(SF_TestableSafetySensor, Ready), sizeof(((SF_TestableSafetySensor *)0)->Ready));
+    printf("F SF_TestableSafetySensor S_OSSD_Out %zu %zu\n", offsetof(SF_TestableSafetySensor, S_OSSD_Out), sizeof(((SF_TestableSafetySensor *)0)->S_OSSD_Out));
+    printf("F SF_TestableSafetySensor S_TestOut %zu %zu\n", offsetof(SF_TestableSafetySensor, S_TestOut), sizeof(((SF_TestableSafetySensor *)0)->S_TestOut));
+    printf("F SF_TestableSafetySensor TestPossible %zu %zu\n", offsetof(SF_TestableSafetySensor, TestPossible), sizeof(((SF_TestableSafetySensor *)0)->TestPossible));
+    printf("F SF_TestableSafetySensor TestExecuted %zu %zu\n", offsetof(SF_TestableSafetySensor, TestExecuted), sizeof(((SF_TestableSafetySensor *)0)->TestExecuted));
+    printf("F SF_TestableSafetySensor SafetyDemand %zu %zu\n", offsetof(SF_TestableSafetySensor, SafetyDemand), sizeof(((SF_TestableSafetySensor *)0)->SafetyDemand));
+    printf("F SF_TestableSafetySensor ResetRequest %zu %zu\n", offsetof(SF_TestableSafetySensor, ResetRequest), sizeof(((SF_TestableSafetySensor *)0)->ResetRequest));
+    printf("F SF_TestableSafetySensor Error %zu %zu\n", offsetof(SF_TestableSafetySensor, Error), sizeof(((SF_TestableSafetySensor *)0)->Error));
+    printf("F SF_TestableSafetySensor DiagCode %zu %zu\n", offsetof(SF_TestableSafetySensor, DiagCode), sizeof(((SF_TestableSafetySensor *)0)->DiagCode));
+    printf("F SF_TestableSafetySensor aReserved1 %zu %zu\n", offsetof(SF_TestableSafetySensor, aReserved1), sizeof(((SF_TestableSafetySensor *)0)->aReserved1));
+    printf("F SF_TestableSafetySensor stPrivate %zu %zu\n", offsetof(SF_TestableSafetySensor, stPrivate), sizeof(((SF_TestableSafetySensor *)0)->stPrivate));
     return 0;
 }

@@ -41,6 +41,7 @@ pub mod sf_pair;
 pub mod sf_pse;
 pub mod sf_resetbutton;
 pub mod sf_restart;
+pub mod sf_testablesafetysensor;
 pub mod sli;
 pub mod sli2;
 pub mod slp;

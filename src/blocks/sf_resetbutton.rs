@@ -32,7 +32,7 @@ crate::sf_states!(
 );
 
 /// The trailing times `[TrailingMinimum, TrailingMaximum]` are usable (C000 otherwise).
-pub const fn params_valid(t: [u32; 2]) -> bool {
+const fn params_valid(t: [u32; 2]) -> bool {
     t[0] >= SF_RESETBUTTON_MIN_TRAILING && t[0] <= t[1]
 }
 

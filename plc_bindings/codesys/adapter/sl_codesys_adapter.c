@@ -1322,6 +1322,22 @@ void CDECL CDECL_EXT cds_sl_sf_edm_cycle(cds_sl_sf_edm_cycle_struct *p)
     p->cds_sl_sf_edm_cycle = sl_sf_edm_cycle(p->pFb, p->tNow);
 }
 
+void CDECL CDECL_EXT cds_sl_sf_testablesafetysensor_init(cds_sl_sf_testablesafetysensor_init_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_sf_testablesafetysensor_init = sl_sf_testablesafetysensor_init(p->pFb);
+}
+
+void CDECL CDECL_EXT cds_sl_sf_testablesafetysensor_cycle(cds_sl_sf_testablesafetysensor_cycle_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_sf_testablesafetysensor_cycle = sl_sf_testablesafetysensor_cycle(p->pFb, p->tNow);
+}
+
 void CDECL CDECL_EXT cds_sl_time_now_ms(cds_sl_time_now_ms_struct *p)
 {
     if (p == 0) {

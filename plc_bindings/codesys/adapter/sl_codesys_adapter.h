@@ -1264,6 +1264,21 @@ typedef struct tagcds_sl_sf_edm_cycle_struct {
 } cds_sl_sf_edm_cycle_struct;
 void CDECL CDECL_EXT cds_sl_sf_edm_cycle(cds_sl_sf_edm_cycle_struct *p);
 
+/* FUNCTION cds_sl_sf_testablesafetysensor_init : DINT -> sl_sf_testablesafetysensor_init() */
+typedef struct tagcds_sl_sf_testablesafetysensor_init_struct {
+    struct SF_TestableSafetySensor *pFb; /* VAR_INPUT pFb : POINTER TO ST_SF_TestableSafetySensor */
+    int32_t cds_sl_sf_testablesafetysensor_init; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_sf_testablesafetysensor_init_struct;
+void CDECL CDECL_EXT cds_sl_sf_testablesafetysensor_init(cds_sl_sf_testablesafetysensor_init_struct *p);
+
+/* FUNCTION cds_sl_sf_testablesafetysensor_cycle : DINT -> sl_sf_testablesafetysensor_cycle() */
+typedef struct tagcds_sl_sf_testablesafetysensor_cycle_struct {
+    struct SF_TestableSafetySensor *pFb; /* VAR_INPUT pFb : POINTER TO ST_SF_TestableSafetySensor */
+    uint32_t tNow; /* VAR_INPUT tNow : UDINT */
+    int32_t cds_sl_sf_testablesafetysensor_cycle; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_sf_testablesafetysensor_cycle_struct;
+void CDECL CDECL_EXT cds_sl_sf_testablesafetysensor_cycle(cds_sl_sf_testablesafetysensor_cycle_struct *p);
+
 /* FUNCTION cds_sl_time_now_ms : UDINT -> sl_time_now_ms() */
 typedef struct tagcds_sl_time_now_ms_struct {
     uint32_t cds_sl_time_now_ms; /* VAR_OUTPUT (return value) UDINT */
@@ -1528,6 +1543,8 @@ void CDECL CDECL_EXT cds_sl_diag_text(cds_sl_diag_text_struct *p);
     X(cds_sl_sf_resetbutton_cycle) \
     X(cds_sl_sf_edm_init) \
     X(cds_sl_sf_edm_cycle) \
+    X(cds_sl_sf_testablesafetysensor_init) \
+    X(cds_sl_sf_testablesafetysensor_cycle) \
     X(cds_sl_time_now_ms) \
     X(cds_sl_ton2_get_elapsed) \
     X(cds_sl_group_init) \

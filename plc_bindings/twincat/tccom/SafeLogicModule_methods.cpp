@@ -1492,6 +1492,24 @@ HRESULT CSafeLogicModule::sl_sf_edm_cycle(PVOID pFb, int32_t *pnResult, uint32_t
     return S_OK;
 }
 
+HRESULT CSafeLogicModule::sl_sf_testablesafetysensor_init(PVOID pFb, int32_t *pnResult)
+{
+    if (pFb == NULL || pnResult == NULL) {
+        return E_POINTER;
+    }
+    *pnResult = ::sl_sf_testablesafetysensor_init(static_cast<struct SF_TestableSafetySensor *>(pFb));
+    return S_OK;
+}
+
+HRESULT CSafeLogicModule::sl_sf_testablesafetysensor_cycle(PVOID pFb, int32_t *pnResult, uint32_t tNow)
+{
+    if (pFb == NULL || pnResult == NULL) {
+        return E_POINTER;
+    }
+    *pnResult = ::sl_sf_testablesafetysensor_cycle(static_cast<struct SF_TestableSafetySensor *>(pFb), tNow);
+    return S_OK;
+}
+
 HRESULT CSafeLogicModule::sl_ton2_get_elapsed(PVOID pFb, int32_t *pnResult, uint32_t * pPElapsedMs)
 {
     if (pFb == NULL || pnResult == NULL) {
