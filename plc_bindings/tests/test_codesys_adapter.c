@@ -8827,7 +8827,7 @@ static void test_sf_emergencystop(void)
             if (direct == SL_OK) ok++;
             if (direct <= 0 && direct > -12) hist[-direct]++;
             if (b.DiagCode >= 0xC000u) reached_error = 1;
-            if (b.DiagCode == 0x8000u) reached_run = 1;
+            if (b.DiagCode == 0x8000u || b.S_EStopOut == 1u) reached_run = 1;
         }
     }
     printf("SF_EmergencyStop: %d of %d cycles (16 valid random configurations) returned SL_OK; run-like state %s, ERROR %s; invalid share: %d configurations, %d cycles\n", ok, cycles, reached_run ? "reached" : "NOT reached", reached_error ? "reached" : "NOT reached", inv_config, inv_cycles);
@@ -8914,7 +8914,7 @@ static void test_sf_espe(void)
             if (direct == SL_OK) ok++;
             if (direct <= 0 && direct > -12) hist[-direct]++;
             if (b.DiagCode >= 0xC000u) reached_error = 1;
-            if (b.DiagCode == 0x8000u) reached_run = 1;
+            if (b.DiagCode == 0x8000u || b.S_ESPE_Out == 1u) reached_run = 1;
         }
     }
     printf("SF_ESPE: %d of %d cycles (16 valid random configurations) returned SL_OK; run-like state %s, ERROR %s; invalid share: %d configurations, %d cycles\n", ok, cycles, reached_run ? "reached" : "NOT reached", reached_error ? "reached" : "NOT reached", inv_config, inv_cycles);
@@ -9001,7 +9001,7 @@ static void test_sf_pse(void)
             if (direct == SL_OK) ok++;
             if (direct <= 0 && direct > -12) hist[-direct]++;
             if (b.DiagCode >= 0xC000u) reached_error = 1;
-            if (b.DiagCode == 0x8000u) reached_run = 1;
+            if (b.DiagCode == 0x8000u || b.S_PSE_Out == 1u) reached_run = 1;
         }
     }
     printf("SF_PSE: %d of %d cycles (16 valid random configurations) returned SL_OK; run-like state %s, ERROR %s; invalid share: %d configurations, %d cycles\n", ok, cycles, reached_run ? "reached" : "NOT reached", reached_error ? "reached" : "NOT reached", inv_config, inv_cycles);
@@ -9086,7 +9086,7 @@ static void test_sf_equivalent(void)
             if (direct == SL_OK) ok++;
             if (direct <= 0 && direct > -12) hist[-direct]++;
             if (b.DiagCode >= 0xC000u) reached_error = 1;
-            if (b.DiagCode == 0x8000u) reached_run = 1;
+            if (b.DiagCode == 0x8000u || b.S_EquivalentOut == 1u) reached_run = 1;
         }
     }
     printf("SF_Equivalent: %d of %d cycles (16 valid random configurations) returned SL_OK; run-like state %s, ERROR %s; invalid share: %d configurations, %d cycles\n", ok, cycles, reached_run ? "reached" : "NOT reached", reached_error ? "reached" : "NOT reached", inv_config, inv_cycles);
@@ -9171,7 +9171,7 @@ static void test_sf_antivalent(void)
             if (direct == SL_OK) ok++;
             if (direct <= 0 && direct > -12) hist[-direct]++;
             if (b.DiagCode >= 0xC000u) reached_error = 1;
-            if (b.DiagCode == 0x8000u) reached_run = 1;
+            if (b.DiagCode == 0x8000u || b.S_AntivalentOut == 1u) reached_run = 1;
         }
     }
     printf("SF_Antivalent: %d of %d cycles (16 valid random configurations) returned SL_OK; run-like state %s, ERROR %s; invalid share: %d configurations, %d cycles\n", ok, cycles, reached_run ? "reached" : "NOT reached", reached_error ? "reached" : "NOT reached", inv_config, inv_cycles);
@@ -9184,8 +9184,8 @@ static void test_sf_antivalent(void)
 static void rnd_config_sf_resetbutton(SF_ResetButton *x)
 {
     { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nDiagProfile = (uint8_t)v[rnd() % 7u]; }
-    x->TrailingMinimum = rnd_time();
-    x->TrailingMaximum = rnd_time();
+    x->TrailingMinimum = 100u + 50u * (rnd() % 2u);
+    x->TrailingMaximum = rnd() % 4u == 0u ? rnd_time() : 2000u;
 }
 /* 1: a valid configuration (want_valid) or an invalid one was drawn into a and b */
 static int draw_sf_resetbutton(SF_ResetButton *a, SF_ResetButton *b, int want_valid)
@@ -9235,7 +9235,6 @@ static void test_sf_resetbutton(void)
             continue;
         }
         if (!valid) inv_config++;
-        a.ResetRequested = b.ResetRequested = (uint8_t)(1);
         a.ResetIn = b.ResetIn = (uint8_t)(1);
         bump = 20 + (int)(rnd() % 20u);
         (void)bump; /* no parameter to change while running */
@@ -9243,8 +9242,8 @@ static void test_sf_resetbutton(void)
         for (k = 0; k < 50; k++) {
             int32_t direct;
             next_machine();
-            a.ResetRequested = b.ResetRequested = next_signal(a.ResetRequested, 0, pol >> 0);
-            a.ResetIn = b.ResetIn = next_signal(a.ResetIn, 0, pol >> 1);
+            a.ResetIn = b.ResetIn = next_signal(a.ResetIn, 0, pol >> 0);
+            a.ResetRequested = b.ResetRequested = (uint8_t)(k >= 2 && rnd() % 100u != 0u);
             p.pFb = &a;
             p.tNow = t += 10u;
             cds_sl_sf_resetbutton_cycle(&p);
@@ -9256,7 +9255,7 @@ static void test_sf_resetbutton(void)
             if (direct == SL_OK) ok++;
             if (direct <= 0 && direct > -12) hist[-direct]++;
             if (b.DiagCode >= 0xC000u) reached_error = 1;
-            if (b.DiagCode == 0x8000u) reached_run = 1;
+            if (b.DiagCode == 0x8000u || b.ResetOut == 1u) reached_run = 1;
         }
     }
     printf("SF_ResetButton: %d of %d cycles (16 valid random configurations) returned SL_OK; run-like state %s, ERROR %s; invalid share: %d configurations, %d cycles\n", ok, cycles, reached_run ? "reached" : "NOT reached", reached_error ? "reached" : "NOT reached", inv_config, inv_cycles);
@@ -9347,7 +9346,7 @@ static void test_sf_edm(void)
             if (direct == SL_OK) ok++;
             if (direct <= 0 && direct > -12) hist[-direct]++;
             if (b.DiagCode >= 0xC000u) reached_error = 1;
-            if (b.DiagCode == 0x8000u) reached_run = 1;
+            if (b.DiagCode == 0x8000u || b.S_EDM_Out == 1u) reached_run = 1;
         }
     }
     printf("SF_EDM: %d of %d cycles (16 valid random configurations) returned SL_OK; run-like state %s, ERROR %s; invalid share: %d configurations, %d cycles\n", ok, cycles, reached_run ? "reached" : "NOT reached", reached_error ? "reached" : "NOT reached", inv_config, inv_cycles);
@@ -9440,7 +9439,7 @@ static void test_sf_testablesafetysensor(void)
             if (direct == SL_OK) ok++;
             if (direct <= 0 && direct > -12) hist[-direct]++;
             if (b.DiagCode >= 0xC000u) reached_error = 1;
-            if (b.DiagCode == 0x8000u) reached_run = 1;
+            if (b.DiagCode == 0x8000u || b.S_OSSD_Out == 1u) reached_run = 1;
         }
     }
     printf("SF_TestableSafetySensor: %d of %d cycles (16 valid random configurations) returned SL_OK; run-like state %s, ERROR %s; invalid share: %d configurations, %d cycles\n", ok, cycles, reached_run ? "reached" : "NOT reached", reached_error ? "reached" : "NOT reached", inv_config, inv_cycles);
