@@ -523,6 +523,20 @@ mod tests {
     }
 
     #[test]
+    fn the_trigger_memory_gives_one_rising_edge() {
+        let mut p = SL_SF_PRIVATE::ZERO;
+        assert!(!trigger_rising(&p, 0));
+        assert!(trigger_rising(&p, 1));
+        assert!(!trigger_rising(&p, 2), "an invalid byte is FALSE");
+        store_trigger(&mut p, 1);
+        assert!(!trigger_rising(&p, 1), "held");
+        assert_eq!(p.stHeader.nFlags, F_TRIGGER_PREV);
+        store_trigger(&mut p, 2);
+        assert!(trigger_rising(&p, 1));
+        assert_eq!(p.stHeader.nFlags, 0);
+    }
+
+    #[test]
     fn outputs_follow_the_code() {
         let o = outputs(0x8402, false, None);
         assert!(o.ready && o.reset_request && !o.safety_demand && !o.enabled && !o.error);
