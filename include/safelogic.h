@@ -1097,6 +1097,11 @@
 #define SL_TYPE_SF_ANTIVALENT 516
 
 /*
+ Block type tag of SF_EDM (`SL_MEMBER.nType`, `sl_diag_text`).
+ */
+#define SL_TYPE_SF_EDM 521
+
+/*
  Block type tag of SF_EmergencyStop (`SL_MEMBER.nType`, `sl_diag_text`).
  */
 #define SL_TYPE_SF_EMERGENCYSTOP 512
@@ -1137,9 +1142,29 @@
 #define SL_TYPE_SF_PSE 514
 
 /*
+ Block type tag of SF_ResetButton (`SL_MEMBER.nType`, `sl_diag_text`).
+ */
+#define SL_TYPE_SF_RESETBUTTON 520
+
+/*
+ The least TrailingMinimum (ms): "absolute minimum 100 ms" (research §4.19, NPE).
+ */
+#define SF_RESETBUTTON_MIN_TRAILING 100
+
+/*
  Block type tag of SF_SafetyRequest (`SL_MEMBER.nType`, `sl_diag_text`).
  */
 #define SL_TYPE_SF_SAFETYREQUEST 518
+
+/*
+ Block type tag of SF_TestableSafetySensor (`SL_MEMBER.nType`, `sl_diag_text`).
+ */
+#define SL_TYPE_SF_TESTABLESAFETYSENSOR 522
+
+/*
+ The longest TestTime (ms): "range 0 … 150 ms" (research §4.15).
+ */
+#define SF_TSS_MAX_TEST_TIME 150
 
 /*
  Type III's synchronism time (ms): fixed, not a parameter (CS-EXT, CS-LIB).
@@ -12155,6 +12180,231 @@ typedef struct SF_OutControl {
 } SF_OutControl;
 
 /*
+ SF_ResetButton instance: the PLCopen VAR_INPUT / VAR_OUTPUT names, BOOL = one byte.
+ Size: 64 bytes.
+ */
+typedef struct SF_ResetButton {
+  /*
+   Offset 0. ResetRequested: the activation of this block (it has no Activate); connect the paired FB's ResetRequest. FALSE = idle (DiagCode 0000, ResetOut FALSE), highest priority. PLCopen initial value TRUE.
+   */
+  SL_BOOL ResetRequested;
+  /*
+   Offset 1. ResetIn: the reset button, TRUE = pressed.
+   */
+  SL_BOOL ResetIn;
+  /*
+   Offset 2. Reserved, keep 0.
+   */
+  uint8_t aReserved0[1];
+  /*
+   Offset 3. Library extension, constant: DiagCode profile, only 0 = v2.01 (1 is refused: v2.x block); latched at activation.
+   */
+  uint8_t nDiagProfile;
+  /*
+   Offset 4. TrailingMinimum (constant, ms; PLCopen default T#350ms): shortest valid press, at least 100 ms; latched at activation.
+   */
+  uint32_t TrailingMinimum;
+  /*
+   Offset 8. TrailingMaximum (constant, ms; PLCopen default T#2s): a press this long is invalid; latched at activation.
+   */
+  uint32_t TrailingMaximum;
+  /*
+   Offset 12 (output base). Ready: TRUE while activated (DiagCode != 0000).
+   */
+  SL_BOOL Ready;
+  /*
+   Offset 13. ResetOut: TRUE for one call after the falling edge of a valid press (DiagCode 8000).
+   */
+  SL_BOOL ResetOut;
+  /*
+   Offset 14. Error: DiagCode >= C000.
+   */
+  SL_BOOL Error;
+  /*
+   Offset 15. Reserved.
+   */
+  uint8_t aReserved1[1];
+  /*
+   Offset 16. DiagCode: the state or error (v2.01).
+   */
+  uint16_t DiagCode;
+  /*
+   Offset 18. Reserved.
+   */
+  uint8_t aReserved2[6];
+  /*
+   Offset 24. Private state, 40 bytes: never write it.
+   */
+  struct SL_SF_PRIVATE stPrivate;
+} SF_ResetButton;
+
+/*
+ SF_EDM instance: the PLCopen v2.01 VAR_INPUT / VAR_OUTPUT names (plus v1.0's
+ S_StartReset), BOOL = one byte. Size: 64 bytes.
+ */
+typedef struct SF_EDM {
+  /*
+   Offset 0. Activate: FALSE = idle (DiagCode 0000, every output FALSE), highest priority.
+   */
+  SL_BOOL Activate;
+  /*
+   Offset 1. S_OutControl: the control signal of the preceding safety FB, TRUE = switch the actuators on.
+   */
+  SL_BOOL S_OutControl;
+  /*
+   Offset 2. EDM1: feedback of actuator 1, TRUE = released (de-energised); v1.0 name S_EDM1.
+   */
+  SL_BOOL EDM1;
+  /*
+   Offset 3. EDM2: feedback of actuator 2, TRUE = released; bridge it to EDM1 for one feedback; v1.0 name S_EDM2.
+   */
+  SL_BOOL EDM2;
+  /*
+   Offset 4. MonitoringTime (constant, ms): the actuators' longest response time; latched at activation.
+   */
+  uint32_t MonitoringTime;
+  /*
+   Offset 8. S_StartReset (v1.0 input; FALSE in v2.01): TRUE = no reset needed after activation.
+   */
+  SL_BOOL S_StartReset;
+  /*
+   Offset 9. Reset: a rising edge leaves INIT and the errors; held TRUE it is a static-reset error.
+   */
+  SL_BOOL Reset;
+  /*
+   Offset 10. Reserved, keep 0.
+   */
+  uint8_t aReserved0[1];
+  /*
+   Offset 11. Library extension, constant: DiagCode profile, 0 = v2.01 (default), 1 = v1.0; latched at activation.
+   */
+  uint8_t nDiagProfile;
+  /*
+   Offset 12 (output base). Ready: TRUE while activated (DiagCode != 0000).
+   */
+  SL_BOOL Ready;
+  /*
+   Offset 13. S_EDM_Out: the safety output to the actuators, TRUE only at DiagCode 8000.
+   */
+  SL_BOOL S_EDM_Out;
+  /*
+   Offset 14. SafetyDemand: the output is switched off (v2.01 code bit 0x0800).
+   */
+  SL_BOOL SafetyDemand;
+  /*
+   Offset 15. ResetRequest: a reset is awaited (v2.01 code bit 0x0400) and Reset is FALSE.
+   */
+  SL_BOOL ResetRequest;
+  /*
+   Offset 16. Error: DiagCode >= C000.
+   */
+  SL_BOOL Error;
+  /*
+   Offset 17. Reserved.
+   */
+  uint8_t aReserved1[1];
+  /*
+   Offset 18. DiagCode: the state or error, in the profile of nDiagProfile.
+   */
+  uint16_t DiagCode;
+  /*
+   Offset 20. Reserved.
+   */
+  uint8_t aReserved2[4];
+  /*
+   Offset 24. Private state, 40 bytes: never write it.
+   */
+  struct SL_SF_PRIVATE stPrivate;
+} SF_EDM;
+
+/*
+ SF_TestableSafetySensor instance: the PLCopen VAR_INPUT / VAR_OUTPUT names, BOOL = one
+ byte. Size: 64 bytes.
+ */
+typedef struct SF_TestableSafetySensor {
+  /*
+   Offset 0. Activate: FALSE = idle (DiagCode 0000, every output FALSE except S_TestOut), highest priority.
+   */
+  SL_BOOL Activate;
+  /*
+   Offset 1. S_OSSD_In: the sensor's OSSD, FALSE = safety demand or test.
+   */
+  SL_BOOL S_OSSD_In;
+  /*
+   Offset 2. StartTest: a rising edge starts the automatic test (in 8010 or 8000).
+   */
+  SL_BOOL StartTest;
+  /*
+   Offset 3. NoExternalTest (constant): TRUE = no manual test after a failed automatic test; latched at activation.
+   */
+  SL_BOOL NoExternalTest;
+  /*
+   Offset 4. S_StartReset: TRUE = automatic reset at activation (start-up).
+   */
+  SL_BOOL S_StartReset;
+  /*
+   Offset 5. S_AutoReset: TRUE = automatic reset when the safety demand ends.
+   */
+  SL_BOOL S_AutoReset;
+  /*
+   Offset 6. Reset: a rising edge resets; held TRUE into a wait-for-reset state it is a static-reset error.
+   */
+  SL_BOOL Reset;
+  /*
+   Offset 7. Library extension, constant: DiagCode profile, 0 = v2.01 (default), 1 = v1.0; latched at activation.
+   */
+  uint8_t nDiagProfile;
+  /*
+   Offset 8. TestTime (constant, ms; PLCopen default T#10ms, at most 150 ms): each test phase's limit; latched at activation.
+   */
+  uint32_t TestTime;
+  /*
+   Offset 12 (output base). Ready: TRUE while activated (DiagCode != 0000).
+   */
+  SL_BOOL Ready;
+  /*
+   Offset 13. S_OSSD_Out: the safety output, TRUE at 8000, 8010 and during the test (8020, 8030).
+   */
+  SL_BOOL S_OSSD_Out;
+  /*
+   Offset 14. S_TestOut: to the sensor's test input, FALSE = transmitter off (test phase 1, 8020, and library faults).
+   */
+  SL_BOOL S_TestOut;
+  /*
+   Offset 15. TestPossible: an automatic test can be started (8010, 8000).
+   */
+  SL_BOOL TestPossible;
+  /*
+   Offset 16. TestExecuted: the automatic test passed (8000), until the next test or demand.
+   */
+  SL_BOOL TestExecuted;
+  /*
+   Offset 17. SafetyDemand: the safety function is demanded (v2.01 code bit 0x0800).
+   */
+  SL_BOOL SafetyDemand;
+  /*
+   Offset 18. ResetRequest: a reset is awaited (v2.01 code bit 0x0400) and Reset is FALSE.
+   */
+  SL_BOOL ResetRequest;
+  /*
+   Offset 19. Error: DiagCode >= C000.
+   */
+  SL_BOOL Error;
+  /*
+   Offset 20. DiagCode: the state or error, in the profile of nDiagProfile.
+   */
+  uint16_t DiagCode;
+  /*
+   Offset 22. Reserved.
+   */
+  uint8_t aReserved1[2];
+  /*
+   Offset 24. Private state, 40 bytes: never write it.
+   */
+  struct SL_SF_PRIVATE stPrivate;
+} SF_TestableSafetySensor;
+
+/*
  SF_EnableSwitch instance: the PLCopen VAR_INPUT / VAR_OUTPUT names, BOOL = one byte.
  Size: 56 bytes.
  */
@@ -12872,6 +13122,12 @@ int32_t sl_sf_safetyrequest_init(struct SF_SafetyRequest *fb);
 int32_t sl_sf_safetyrequest_cycle(struct SF_SafetyRequest *fb, uint32_t tNow);
 int32_t sl_sf_outcontrol_init(struct SF_OutControl *fb);
 int32_t sl_sf_outcontrol_cycle(struct SF_OutControl *fb, uint32_t tNow);
+int32_t sl_sf_resetbutton_init(struct SF_ResetButton *fb);
+int32_t sl_sf_resetbutton_cycle(struct SF_ResetButton *fb, uint32_t tNow);
+int32_t sl_sf_edm_init(struct SF_EDM *fb);
+int32_t sl_sf_edm_cycle(struct SF_EDM *fb, uint32_t tNow);
+int32_t sl_sf_testablesafetysensor_init(struct SF_TestableSafetySensor *fb);
+int32_t sl_sf_testablesafetysensor_cycle(struct SF_TestableSafetySensor *fb, uint32_t tNow);
 int32_t sl_sf_enableswitch_init(struct SF_EnableSwitch *fb);
 int32_t sl_sf_enableswitch_cycle(struct SF_EnableSwitch *fb, uint32_t tNow);
 int32_t sl_sf_twohandcontroltypeii_init(struct SF_TwoHandControlTypeII *fb);
@@ -15286,6 +15542,60 @@ SL_STATIC_ASSERT(offsetof(SF_OutControl, aReserved1) == 13, "offset of SF_OutCon
 SL_STATIC_ASSERT(offsetof(SF_OutControl, DiagCode) == 14, "offset of SF_OutControl.DiagCode");
 SL_STATIC_ASSERT(offsetof(SF_OutControl, stPrivate) == 16, "offset of SF_OutControl.stPrivate");
 SL_STATIC_ASSERT(sizeof(SF_OutControl) == 56, "size of SF_OutControl");
+SL_STATIC_ASSERT(offsetof(SF_ResetButton, ResetRequested) == 0, "offset of SF_ResetButton.ResetRequested");
+SL_STATIC_ASSERT(offsetof(SF_ResetButton, ResetIn) == 1, "offset of SF_ResetButton.ResetIn");
+SL_STATIC_ASSERT(offsetof(SF_ResetButton, aReserved0) == 2, "offset of SF_ResetButton.aReserved0");
+SL_STATIC_ASSERT(offsetof(SF_ResetButton, nDiagProfile) == 3, "offset of SF_ResetButton.nDiagProfile");
+SL_STATIC_ASSERT(offsetof(SF_ResetButton, TrailingMinimum) == 4, "offset of SF_ResetButton.TrailingMinimum");
+SL_STATIC_ASSERT(offsetof(SF_ResetButton, TrailingMaximum) == 8, "offset of SF_ResetButton.TrailingMaximum");
+SL_STATIC_ASSERT(offsetof(SF_ResetButton, Ready) == 12, "offset of SF_ResetButton.Ready");
+SL_STATIC_ASSERT(offsetof(SF_ResetButton, ResetOut) == 13, "offset of SF_ResetButton.ResetOut");
+SL_STATIC_ASSERT(offsetof(SF_ResetButton, Error) == 14, "offset of SF_ResetButton.Error");
+SL_STATIC_ASSERT(offsetof(SF_ResetButton, aReserved1) == 15, "offset of SF_ResetButton.aReserved1");
+SL_STATIC_ASSERT(offsetof(SF_ResetButton, DiagCode) == 16, "offset of SF_ResetButton.DiagCode");
+SL_STATIC_ASSERT(offsetof(SF_ResetButton, aReserved2) == 18, "offset of SF_ResetButton.aReserved2");
+SL_STATIC_ASSERT(offsetof(SF_ResetButton, stPrivate) == 24, "offset of SF_ResetButton.stPrivate");
+SL_STATIC_ASSERT(sizeof(SF_ResetButton) == 64, "size of SF_ResetButton");
+SL_STATIC_ASSERT(offsetof(SF_EDM, Activate) == 0, "offset of SF_EDM.Activate");
+SL_STATIC_ASSERT(offsetof(SF_EDM, S_OutControl) == 1, "offset of SF_EDM.S_OutControl");
+SL_STATIC_ASSERT(offsetof(SF_EDM, EDM1) == 2, "offset of SF_EDM.EDM1");
+SL_STATIC_ASSERT(offsetof(SF_EDM, EDM2) == 3, "offset of SF_EDM.EDM2");
+SL_STATIC_ASSERT(offsetof(SF_EDM, MonitoringTime) == 4, "offset of SF_EDM.MonitoringTime");
+SL_STATIC_ASSERT(offsetof(SF_EDM, S_StartReset) == 8, "offset of SF_EDM.S_StartReset");
+SL_STATIC_ASSERT(offsetof(SF_EDM, Reset) == 9, "offset of SF_EDM.Reset");
+SL_STATIC_ASSERT(offsetof(SF_EDM, aReserved0) == 10, "offset of SF_EDM.aReserved0");
+SL_STATIC_ASSERT(offsetof(SF_EDM, nDiagProfile) == 11, "offset of SF_EDM.nDiagProfile");
+SL_STATIC_ASSERT(offsetof(SF_EDM, Ready) == 12, "offset of SF_EDM.Ready");
+SL_STATIC_ASSERT(offsetof(SF_EDM, S_EDM_Out) == 13, "offset of SF_EDM.S_EDM_Out");
+SL_STATIC_ASSERT(offsetof(SF_EDM, SafetyDemand) == 14, "offset of SF_EDM.SafetyDemand");
+SL_STATIC_ASSERT(offsetof(SF_EDM, ResetRequest) == 15, "offset of SF_EDM.ResetRequest");
+SL_STATIC_ASSERT(offsetof(SF_EDM, Error) == 16, "offset of SF_EDM.Error");
+SL_STATIC_ASSERT(offsetof(SF_EDM, aReserved1) == 17, "offset of SF_EDM.aReserved1");
+SL_STATIC_ASSERT(offsetof(SF_EDM, DiagCode) == 18, "offset of SF_EDM.DiagCode");
+SL_STATIC_ASSERT(offsetof(SF_EDM, aReserved2) == 20, "offset of SF_EDM.aReserved2");
+SL_STATIC_ASSERT(offsetof(SF_EDM, stPrivate) == 24, "offset of SF_EDM.stPrivate");
+SL_STATIC_ASSERT(sizeof(SF_EDM) == 64, "size of SF_EDM");
+SL_STATIC_ASSERT(offsetof(SF_TestableSafetySensor, Activate) == 0, "offset of SF_TestableSafetySensor.Activate");
+SL_STATIC_ASSERT(offsetof(SF_TestableSafetySensor, S_OSSD_In) == 1, "offset of SF_TestableSafetySensor.S_OSSD_In");
+SL_STATIC_ASSERT(offsetof(SF_TestableSafetySensor, StartTest) == 2, "offset of SF_TestableSafetySensor.StartTest");
+SL_STATIC_ASSERT(offsetof(SF_TestableSafetySensor, NoExternalTest) == 3, "offset of SF_TestableSafetySensor.NoExternalTest");
+SL_STATIC_ASSERT(offsetof(SF_TestableSafetySensor, S_StartReset) == 4, "offset of SF_TestableSafetySensor.S_StartReset");
+SL_STATIC_ASSERT(offsetof(SF_TestableSafetySensor, S_AutoReset) == 5, "offset of SF_TestableSafetySensor.S_AutoReset");
+SL_STATIC_ASSERT(offsetof(SF_TestableSafetySensor, Reset) == 6, "offset of SF_TestableSafetySensor.Reset");
+SL_STATIC_ASSERT(offsetof(SF_TestableSafetySensor, nDiagProfile) == 7, "offset of SF_TestableSafetySensor.nDiagProfile");
+SL_STATIC_ASSERT(offsetof(SF_TestableSafetySensor, TestTime) == 8, "offset of SF_TestableSafetySensor.TestTime");
+SL_STATIC_ASSERT(offsetof(SF_TestableSafetySensor, Ready) == 12, "offset of SF_TestableSafetySensor.Ready");
+SL_STATIC_ASSERT(offsetof(SF_TestableSafetySensor, S_OSSD_Out) == 13, "offset of SF_TestableSafetySensor.S_OSSD_Out");
+SL_STATIC_ASSERT(offsetof(SF_TestableSafetySensor, S_TestOut) == 14, "offset of SF_TestableSafetySensor.S_TestOut");
+SL_STATIC_ASSERT(offsetof(SF_TestableSafetySensor, TestPossible) == 15, "offset of SF_TestableSafetySensor.TestPossible");
+SL_STATIC_ASSERT(offsetof(SF_TestableSafetySensor, TestExecuted) == 16, "offset of SF_TestableSafetySensor.TestExecuted");
+SL_STATIC_ASSERT(offsetof(SF_TestableSafetySensor, SafetyDemand) == 17, "offset of SF_TestableSafetySensor.SafetyDemand");
+SL_STATIC_ASSERT(offsetof(SF_TestableSafetySensor, ResetRequest) == 18, "offset of SF_TestableSafetySensor.ResetRequest");
+SL_STATIC_ASSERT(offsetof(SF_TestableSafetySensor, Error) == 19, "offset of SF_TestableSafetySensor.Error");
+SL_STATIC_ASSERT(offsetof(SF_TestableSafetySensor, DiagCode) == 20, "offset of SF_TestableSafetySensor.DiagCode");
+SL_STATIC_ASSERT(offsetof(SF_TestableSafetySensor, aReserved1) == 22, "offset of SF_TestableSafetySensor.aReserved1");
+SL_STATIC_ASSERT(offsetof(SF_TestableSafetySensor, stPrivate) == 24, "offset of SF_TestableSafetySensor.stPrivate");
+SL_STATIC_ASSERT(sizeof(SF_TestableSafetySensor) == 64, "size of SF_TestableSafetySensor");
 SL_STATIC_ASSERT(offsetof(SF_EnableSwitch, Activate) == 0, "offset of SF_EnableSwitch.Activate");
 SL_STATIC_ASSERT(offsetof(SF_EnableSwitch, S_SafetyActive) == 1, "offset of SF_EnableSwitch.S_SafetyActive");
 SL_STATIC_ASSERT(offsetof(SF_EnableSwitch, S_EnableSwitchCh1) == 2, "offset of SF_EnableSwitch.S_EnableSwitchCh1");

@@ -353,6 +353,7 @@ macro_rules! impl_sf_member {
         input: [$($i:ident),* $(,)?],
         param: [$($p:ident),* $(,)?],
         output: [$($o:ident),* $(,)?] $(,)?
+        $(activate: $act:ident $(,)?)?
     }) => {
         impl $crate::prim::sf::SfInstance for $ty {
             #[inline(always)]
@@ -365,7 +366,10 @@ macro_rules! impl_sf_member {
             }
             #[inline(always)]
             fn activate_raw(&self) -> u8 {
-                self.Activate
+                $crate::impl_sf_member!(@activate self $(, $act)?)
+            }
+            fn set_activate_raw(&mut self, v: u8) {
+                $crate::impl_sf_member!(@activate self $(, $act)?) = v;
             }
         }
         impl $crate::registry::Cyclic for $ty {
@@ -445,6 +449,14 @@ macro_rules! impl_sf_member {
                 false
             }
         }
+    };
+    // The field that activates the block: `Activate`, or the one named (SF_ResetButton's
+    // `ResetRequested`).
+    (@activate $s:ident) => {
+        $s.Activate
+    };
+    (@activate $s:ident, $act:ident) => {
+        $s.$act
     };
 }
 

@@ -445,6 +445,9 @@ macro_rules! for_each_sf_block {
             $crate::blocks::sf_guard::SF_Guard => sl_sf_guard_init, sl_sf_guard_cycle;
             $crate::blocks::sf_safetyrequest::SF_SafetyRequest => sl_sf_safetyrequest_init, sl_sf_safetyrequest_cycle;
             $crate::blocks::sf_outcontrol::SF_OutControl => sl_sf_outcontrol_init, sl_sf_outcontrol_cycle;
+            $crate::blocks::sf_resetbutton::SF_ResetButton => sl_sf_resetbutton_init, sl_sf_resetbutton_cycle;
+            $crate::blocks::sf_edm::SF_EDM => sl_sf_edm_init, sl_sf_edm_cycle;
+            $crate::blocks::sf_testablesafetysensor::SF_TestableSafetySensor => sl_sf_testablesafetysensor_init, sl_sf_testablesafetysensor_cycle;
             $crate::blocks::sf_enableswitch::SF_EnableSwitch => sl_sf_enableswitch_init, sl_sf_enableswitch_cycle;
             $crate::blocks::sf_twohandcontroltypeii::SF_TwoHandControlTypeII => sl_sf_twohandcontroltypeii_init, sl_sf_twohandcontroltypeii_cycle;
             $crate::blocks::sf_twohandcontroltypeiii::SF_TwoHandControlTypeIII => sl_sf_twohandcontroltypeiii_init, sl_sf_twohandcontroltypeiii_cycle;
@@ -567,9 +570,15 @@ mod tests {
                     // The PLCopen envelope: Activate first, the generic outputs, no
                     // group control fields (the group halts a block through its private
                     // state).
-                    assert_eq!(b.field("Activate").map(|f| f.offset), Some(0));
+                    // SF_ResetButton's activation is ResetRequested (it has no Activate).
+                    let act = if b.info.name == "SF_ResetButton" {
+                        "ResetRequested"
+                    } else {
+                        "Activate"
+                    };
+                    assert_eq!(b.field(act).map(|f| f.offset), Some(0));
                     for (name, kind) in [
-                        ("Activate", Kind::Bool),
+                        (act, Kind::Bool),
                         ("Ready", Kind::Bool),
                         ("Error", Kind::Bool),
                         ("DiagCode", Kind::U16),

@@ -548,6 +548,10 @@ fn check_sf(t: &BlockType, bytes: &[u8], status: i32, what: &str) -> u16 {
         .filter(|f| f.dir == Dir::Output && !generic.contains(&f.name))
     {
         let on = flag(f.name).unwrap();
+        if let Some(want) = sf_sensor_output(name, f.name, code, library.contains(&code)) {
+            assert_eq!(on, want, "{name} {what}: {} at {code:04X}", f.name);
+            continue;
+        }
         assert!(
             !on || allowed_on(name, f.name, get("nDiagProfile"), code),
             "{name} {what}: {} TRUE at {code:04X}",
@@ -576,9 +580,13 @@ fn check_sf(t: &BlockType, bytes: &[u8], status: i32, what: &str) -> u16 {
             );
         }
     }
-    if get("Activate") != Some(1) {
+    if get(sf_activate_name(t)) != Some(1) {
         assert_eq!(code, 0, "{name} {what}: Activate not TRUE");
-        for f in t.fields.iter().filter(|f| f.dir == Dir::Output) {
+        for f in t
+            .fields
+            .iter()
+            .filter(|f| f.dir == Dir::Output && sf_sensor_output(name, f.name, 0, false).is_none())
+        {
             assert_eq!(
                 read(bytes, f.offset, f.kind),
                 0,
@@ -627,6 +635,34 @@ fn sf_time_scale(name: &str) -> u32 {
     }
 }
 
+/// SF_TestableSafetySensor's own outputs, written from research §4.15 (ABB's per-state
+/// output table, PLCN; semantics QT5): S_OSSD_Out TRUE while the sensor is free (8010,
+/// 8000) and during the automatic test (8020, 8030); S_TestOut TRUE except in test phase 1
+/// (8020) and in a library fault (idle included: PLCN "S_TestOut = SAFETRUE"); TestPossible
+/// in 8010 and 8000; TestExecuted in 8000. `None`: not such an output (the generic rule).
+fn sf_sensor_output(block: &str, field: &str, code: u16, library: bool) -> Option<bool> {
+    if block != "SF_TestableSafetySensor" {
+        return None;
+    }
+    Some(match field {
+        "S_OSSD_Out" => [0x8000, 0x8010, 0x8020, 0x8030].contains(&code),
+        "S_TestOut" => !library && code != 0x8020,
+        "TestPossible" => code == 0x8000 || code == 0x8010,
+        "TestExecuted" => code == 0x8000,
+        _ => return None,
+    })
+}
+
+/// The input that activates a PLCopen block: `Activate`; SF_ResetButton has none, its
+/// `ResetRequested` plays the part (research §4.19).
+fn sf_activate_name(t: &BlockType) -> &'static str {
+    if t.field("Activate").is_some() {
+        "Activate"
+    } else {
+        "ResetRequested"
+    }
+}
+
 macro_rules! sf_harness {
     ($($ty:ty => $init:ident, $cycle:ident;)*) => {
         /// Random bytes everywhere (the private state included), random time steps and
@@ -655,7 +691,7 @@ macro_rules! sf_harness {
                     }
                     if round % 4 == 1 {
                         // Activated: the random private state is a fault (C3FF), not idle.
-                        fb.Activate = 1;
+                        safelogic::prim::sf::SfInstance::set_activate_raw(&mut fb, 1);
                     }
                     if round % 2 == 0 {
                         // SAFETY: as above.
@@ -722,7 +758,7 @@ macro_rules! sf_harness {
                         h.wDiag = code;
                         h.nState = SL_STATE_RUN;
                         h.seal();
-                        fb.Activate = activate;
+                        fb.set_activate_raw(activate);
                         assert_eq!(FunctionBlock::cycle(&mut fb, 0), SL_E_CORRUPT, "{} {code:04X}", t.info.name);
                         let expect = if activate == 1 { SL_SF_DIAG_CORRUPT } else { 0 };
                         assert_eq!(fb.DiagCode, expect, "{} {code:04X}", t.info.name);
@@ -751,6 +787,12 @@ macro_rules! sf_harness {
                     for f in t.fields.iter().filter(|f| f.dir == Dir::Param) {
                         let v = if f.name == "nDiagProfile" {
                             (seq % 2) as i64
+                        } else if f.name.starts_with("Trailing") {
+                            // SF_ResetButton: at least 100 ms, in either order (C000).
+                            (100 + rng.next() % 100) as i64
+                        } else if f.name == "TestTime" && seq % 16 == 3 {
+                            // SF_TestableSafetySensor: above 150 ms is C000.
+                            151
                         } else if f.kind == Kind::Bool {
                             // A BOOL constant (AutoSetMode).
                             (rng.next() % 2) as i64
@@ -767,14 +809,22 @@ macro_rules! sf_harness {
                         let r = rng.next();
                         for f in t.fields.iter().filter(|f| f.dir == Dir::Input) {
                             let v = rng.next();
-                            let change = if f.name == "Activate" { v % 16 == 0 } else { v % 3 == 0 };
+                            // SF_TestableSafetySensor's NoExternalTest is a BOOL constant (a
+                            // change is C3FD): drawn once per sequence.
+                            let change = if f.name == sf_activate_name(t) {
+                                v % 16 == 0
+                            } else if f.name == "NoExternalTest" {
+                                step == 0
+                            } else {
+                                v % 3 == 0
+                            };
                             if change {
                                 let value = if v % 401 == 0 { 2 } else { ((v >> 8) & 1) as u8 };
                                 bytes(&mut fb)[usize::from(f.offset)] = value;
                             }
                         }
                         if step == 0 {
-                            fb.Activate = 1;
+                            safelogic::prim::sf::SfInstance::set_activate_raw(&mut fb, 1);
                         }
                         now = if r & 255 == 0 {
                             now.wrapping_sub(1 + (rng.next() % 50) as u32)
@@ -846,6 +896,13 @@ fn every_plcopen_type_keeps_its_properties_over_10000_sequences() {
             }
             "SF_ModeSelector" => {
                 <safelogic::blocks::sf_modeselector::ModeState as DiagState>::TABLE
+            }
+            "SF_ResetButton" => {
+                <safelogic::blocks::sf_resetbutton::ResetButtonState as DiagState>::TABLE
+            }
+            "SF_EDM" => <safelogic::blocks::sf_edm::SfEdmState as DiagState>::TABLE,
+            "SF_TestableSafetySensor" => {
+                <safelogic::blocks::sf_testablesafetysensor::TssState as DiagState>::TABLE
             }
             other => panic!("{other}: no state table named in this test"),
         };

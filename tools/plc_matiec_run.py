@@ -188,6 +188,7 @@ BLOCKS["CONNECTION_SHUTDOWN"] = dict(
     change=("nConnectionId", 8), run={1, 3})
 
 BLOCK_INPUTS = {}  # block -> its BOOL inputs (filled from the header in main)
+PAUSES = {}  # cycle -> ms the driver waits after it (real time, for FBs reading SL_TIME_NOW_MS)
 
 
 # PLCopen blocks with a script of their own (cycle -> inputs), PLCopen names only.
@@ -259,6 +260,37 @@ def sf_script(name: str) -> dict:
     safety = ins[1]
     if name in SF_STEPS:
         steps = {c: dict(v) for c, v in SF_STEPS[name].items()}
+    elif name == "SF_ResetButton":
+        # The press timed by the FB's own clock (SL_TIME_NOW_MS): the driver pauses 150 ms
+        # after cycles 34 and 44 (PAUSES), so those presses are valid (8000); a one-cycle
+        # press is too short (C3F0); ResetRequested FALSE is idle (0000). The run-like
+        # part lies after the walk of the FB's two BOOL inputs (cycles 28-31).
+        steps = {0: {"ResetRequested": 0, "ResetIn": 0, "TrailingMinimum": 100, "TrailingMaximum": 2000},
+                 2: {"ResetRequested": 1, "ResetIn": 1}, 6: {"ResetIn": 0},
+                 34: {"ResetIn": 1}, 35: {"ResetIn": 0}, 38: {"ResetIn": 1}, 39: {"ResetIn": 0},
+                 40: {"ResetRequested": 0}, 42: {"ResetRequested": 1}, 44: {"ResetIn": 1}, 45: {"ResetIn": 0}}
+        PAUSES.update({34: 150, 44: 150})
+    elif name == "SF_EDM":
+        # MonitoringTime 1 s (the FB's clock is real time; the cycles run back to back):
+        # Reset (8810), S_OutControl (8000), the contactors pick up; switched off and on
+        # again before they released (C030); Activate FALSE (0000); S_StartReset and
+        # S_OutControl with released contactors (8000 again).
+        steps = {0: {"Activate": 0, "S_OutControl": 0, "EDM1": 1, "EDM2": 1, "MonitoringTime": 1000},
+                 2: {"Activate": 1}, 4: {"Reset": 1}, 5: {"Reset": 0}, 6: {"S_OutControl": 1},
+                 7: {"EDM1": 0, "EDM2": 0}, 10: {"S_OutControl": 0}, 11: {"S_OutControl": 1},
+                 12: {"S_OutControl": 0, "EDM1": 1, "EDM2": 1}, 14: {"Activate": 0},
+                 16: {"Activate": 1, "S_StartReset": 1}, 18: {"S_OutControl": 1}, 19: {"EDM1": 0, "EDM2": 0}}
+    elif name == "SF_TestableSafetySensor":
+        # TestTime 150 ms (real time; the cycles run back to back): Reset (8010), a test the
+        # sensor answers (8020, 8030, 8000), a safety demand whose end meets a held Reset
+        # (8806, 8406, the static-reset error C021), Activate FALSE (0000), S_StartReset and
+        # a second test (8000 again).
+        steps = {0: {"Activate": 0, "S_OSSD_In": 1, "TestTime": 150, "NoExternalTest": 1},
+                 2: {"Activate": 1}, 4: {"Reset": 1}, 5: {"Reset": 0}, 6: {"StartTest": 1},
+                 7: {"S_OSSD_In": 0}, 8: {"S_OSSD_In": 1, "StartTest": 0}, 10: {"S_OSSD_In": 0},
+                 11: {"Reset": 1}, 12: {"S_OSSD_In": 1}, 14: {"Activate": 0}, 15: {"Reset": 0},
+                 16: {"Activate": 1, "S_StartReset": 1}, 19: {"StartTest": 1}, 20: {"S_OSSD_In": 0},
+                 21: {"S_OSSD_In": 1}}
     elif "Reset" in ins:
         steps = {0: {"Activate": 0, safety: 0}, 2: {"Activate": 1}, 4: {safety: 1}, 6: {"Reset": 1},
                  8: {"Reset": 0}, 10: {safety: 0, "Reset": 1}, 12: {safety: 1}, 14: {"Reset": 0},
@@ -657,6 +689,8 @@ def driver_c(hdr) -> str:
             "        step_group(k);"]
     for b in hdr.blocks:
         out.append(f"        step_{b.lower}(k);")
+    for c, ms in sorted(PAUSES.items()):
+        out.append(f"        if (k == {c}) {{ uint32_t tp = sl_time_now_ms(); while ((uint32_t)(sl_time_now_ms() - tp) < {ms}u) {{ }} }}")
     out += ['        CHECK((uint32_t)(probe_clock() - t0) < 1000u, "SL_TIME_NOW_MS = %u, sl_time_now_ms = %u", '
             '(unsigned)probe_clock(), (unsigned)t0);', "    }",
             '    CHECK(probe_selftest(&nChecked, &nFailed) && nFailed == 0 && nChecked > 0, '

@@ -405,9 +405,11 @@ def is_table(f: CField) -> bool:
 
 
 def is_time_ms(f: CField) -> bool:
-    """tDelay, atTimes (TwinSAFE), DiscrepancyTime, MonitoringTime (PLCopen's TIME inputs)."""
+    """tDelay, atTimes (TwinSAFE), DiscrepancyTime, MonitoringTime, TrailingMinimum /
+    TrailingMaximum (PLCopen's TIME inputs)."""
     return (not f.is_struct and f.ctype == "uint32_t"
-            and (re.match(r"a?t[A-Z0-9]", f.name) is not None or re.fullmatch(r"[A-Z]\w*Time", f.name) is not None))
+            and (re.match(r"a?t[A-Z0-9]", f.name) is not None
+                 or re.fullmatch(r"[A-Z]\w*Time|Trailing(Minimum|Maximum)", f.name) is not None))
 
 
 def is_number(f: CField) -> bool:
@@ -1685,9 +1687,12 @@ def adapter_test_c(hdr: Header) -> str:
         n = "cds_" + cyc
         init = [f for f in b.funcs if f.name == f"sl_{b.lower}_init"]
         pn = [st_param_name(p) for p in b.cycle.params]
+        # SF_ResetButton's ResetRequested (its activation) is driven like bRun: were it to
+        # follow the other signals, a press could never outlast TrailingMinimum.
+        held = ("bRun", "ResetRequested")
         sig = [f for f in b.inputs if C_SCALARS.get(f.ctype, (0, 0, False))[2] and f.count is None
-               and f.name not in ("bRun",)]
-        params = [f for f in b.inputs if f not in sig and f.name not in ("bRun",)]
+               and f.name not in held]
+        params = [f for f in b.inputs if f not in sig and f.name not in held]
         nsig = len([f for f in sig if f.name not in ("bErrAck",)])
         mask = (1 << min(nsig, 16)) - 1
         # Analog inputs have their wInputActive bit in their doc comment ("active bit 8").
@@ -1720,6 +1725,13 @@ def adapter_test_c(hdr: Header) -> str:
                 out.append(f"    x->wInputActive = (uint16_t)(rnd() & 0x{mask:X}u);")
             elif f.name == "wInputNegated":
                 out.append(f"    x->wInputNegated = (uint16_t)(rnd() % 2u == 0u ? 0u : (rnd() & 0x{mask:X}u));")
+            elif f.name in ("TrailingMinimum", "TrailingMaximum"):
+                # SF_ResetButton: a minimum of 100 or 150 ms and mostly a maximum of 2 s, so
+                # a random press can be valid; sometimes a short maximum (C000, C3E0).
+                if f.name == "TrailingMinimum":
+                    out.append("    x->TrailingMinimum = 100u + 50u * (rnd() % 2u);")
+                else:
+                    out.append("    x->TrailingMaximum = rnd() % 4u == 0u ? rnd_time() : 2000u;")
             elif f.name == "dwOptions":
                 fam = block_family(s)
                 cand = [d.name for d in opts if option_family(d.name) in (None, fam)]
@@ -1835,8 +1847,9 @@ def adapter_test_c(hdr: Header) -> str:
         for f in sig:
             pulse = 1 if f.name in pulses else 0
             out.append(f"            a.{f.name} = b.{f.name} = next_signal(a.{f.name}, {pulse}, pol >> {sig.index(f)});")
-        if any(f.name == "bRun" for f in b.inputs):
-            out.append("            a.bRun = b.bRun = (uint8_t)(k >= 2 && rnd() % 100u != 0u);")
+        for h in held:
+            if any(f.name == h for f in b.inputs):
+                out.append(f"            a.{h} = b.{h} = (uint8_t)(k >= 2 && rnd() % 100u != 0u);")
         if bump:
             f = bump[0]
             out.append(f"            if (valid && k == bump) {{ a.{f.name}++; b.{f.name}++; }} /* changed while running: ERROR */")
@@ -1854,7 +1867,10 @@ def adapter_test_c(hdr: Header) -> str:
         if b.is_sf:
             # PLCopen: the state is the DiagCode (semantics PO5).
             out.append("            if (b.DiagCode >= 0xC000u) reached_error = 1;")
-            out.append("            if (b.DiagCode == 0x8000u) reached_run = 1;")
+            # Run-like: 8000, or the safety output (the output after Ready) on, which
+            # SF_TestableSafetySensor's S_OSSD_Out also is before its first test (QT5).
+            safe_out = [f.name for f in b.outputs if f.name != "Ready"][0]
+            out.append(f"            if (b.DiagCode == 0x8000u || b.{safe_out} == 1u) reached_run = 1;")
         elif run_outs:
             out.append("            if (b.nState == SL_STATE_ERROR) reached_error = 1;")
             cond = " || ".join(f"b.{f.name}" for f in run_outs)

@@ -1270,6 +1270,51 @@ static void test_param_structs(void)
       CHECK(offsetof(cds_sl_sf_outcontrol_cycle_struct, cds_sl_sf_outcontrol_cycle) == off, "cds_sl_sf_outcontrol_cycle_struct return value at %zu, expected %zu", offsetof(cds_sl_sf_outcontrol_cycle_struct, cds_sl_sf_outcontrol_cycle), off); }
     { size_t off = 0;
       off = (off + sizeof(void *) - 1) / sizeof(void *) * sizeof(void *);
+      CHECK(offsetof(cds_sl_sf_resetbutton_init_struct, pFb) == off, "cds_sl_sf_resetbutton_init_struct.pFb at %zu, expected %zu", offsetof(cds_sl_sf_resetbutton_init_struct, pFb), off);
+      off += sizeof(void *);
+      off = (off + sizeof(int32_t) - 1) / sizeof(int32_t) * sizeof(int32_t);
+      CHECK(offsetof(cds_sl_sf_resetbutton_init_struct, cds_sl_sf_resetbutton_init) == off, "cds_sl_sf_resetbutton_init_struct return value at %zu, expected %zu", offsetof(cds_sl_sf_resetbutton_init_struct, cds_sl_sf_resetbutton_init), off); }
+    { size_t off = 0;
+      off = (off + sizeof(void *) - 1) / sizeof(void *) * sizeof(void *);
+      CHECK(offsetof(cds_sl_sf_resetbutton_cycle_struct, pFb) == off, "cds_sl_sf_resetbutton_cycle_struct.pFb at %zu, expected %zu", offsetof(cds_sl_sf_resetbutton_cycle_struct, pFb), off);
+      off += sizeof(void *);
+      off = (off + sizeof(uint32_t) - 1) / sizeof(uint32_t) * sizeof(uint32_t);
+      CHECK(offsetof(cds_sl_sf_resetbutton_cycle_struct, tNow) == off, "cds_sl_sf_resetbutton_cycle_struct.tNow at %zu, expected %zu", offsetof(cds_sl_sf_resetbutton_cycle_struct, tNow), off);
+      off += sizeof(uint32_t);
+      off = (off + sizeof(int32_t) - 1) / sizeof(int32_t) * sizeof(int32_t);
+      CHECK(offsetof(cds_sl_sf_resetbutton_cycle_struct, cds_sl_sf_resetbutton_cycle) == off, "cds_sl_sf_resetbutton_cycle_struct return value at %zu, expected %zu", offsetof(cds_sl_sf_resetbutton_cycle_struct, cds_sl_sf_resetbutton_cycle), off); }
+    { size_t off = 0;
+      off = (off + sizeof(void *) - 1) / sizeof(void *) * sizeof(void *);
+      CHECK(offsetof(cds_sl_sf_edm_init_struct, pFb) == off, "cds_sl_sf_edm_init_struct.pFb at %zu, expected %zu", offsetof(cds_sl_sf_edm_init_struct, pFb), off);
+      off += sizeof(void *);
+      off = (off + sizeof(int32_t) - 1) / sizeof(int32_t) * sizeof(int32_t);
+      CHECK(offsetof(cds_sl_sf_edm_init_struct, cds_sl_sf_edm_init) == off, "cds_sl_sf_edm_init_struct return value at %zu, expected %zu", offsetof(cds_sl_sf_edm_init_struct, cds_sl_sf_edm_init), off); }
+    { size_t off = 0;
+      off = (off + sizeof(void *) - 1) / sizeof(void *) * sizeof(void *);
+      CHECK(offsetof(cds_sl_sf_edm_cycle_struct, pFb) == off, "cds_sl_sf_edm_cycle_struct.pFb at %zu, expected %zu", offsetof(cds_sl_sf_edm_cycle_struct, pFb), off);
+      off += sizeof(void *);
+      off = (off + sizeof(uint32_t) - 1) / sizeof(uint32_t) * sizeof(uint32_t);
+      CHECK(offsetof(cds_sl_sf_edm_cycle_struct, tNow) == off, "cds_sl_sf_edm_cycle_struct.tNow at %zu, expected %zu", offsetof(cds_sl_sf_edm_cycle_struct, tNow), off);
+      off += sizeof(uint32_t);
+      off = (off + sizeof(int32_t) - 1) / sizeof(int32_t) * sizeof(int32_t);
+      CHECK(offsetof(cds_sl_sf_edm_cycle_struct, cds_sl_sf_edm_cycle) == off, "cds_sl_sf_edm_cycle_struct return value at %zu, expected %zu", offsetof(cds_sl_sf_edm_cycle_struct, cds_sl_sf_edm_cycle), off); }
+    { size_t off = 0;
+      off = (off + sizeof(void *) - 1) / sizeof(void *) * sizeof(void *);
+      CHECK(offsetof(cds_sl_sf_testablesafetysensor_init_struct, pFb) == off, "cds_sl_sf_testablesafetysensor_init_struct.pFb at %zu, expected %zu", offsetof(cds_sl_sf_testablesafetysensor_init_struct, pFb), off);
+      off += sizeof(void *);
+      off = (off + sizeof(int32_t) - 1) / sizeof(int32_t) * sizeof(int32_t);
+      CHECK(offsetof(cds_sl_sf_testablesafetysensor_init_struct, cds_sl_sf_testablesafetysensor_init) == off, "cds_sl_sf_testablesafetysensor_init_struct return value at %zu, expected %zu", offsetof(cds_sl_sf_testablesafetysensor_init_struct, cds_sl_sf_testablesafetysensor_init), off); }
+    { size_t off = 0;
+      off = (off + sizeof(void *) - 1) / sizeof(void *) * sizeof(void *);
+      CHECK(offsetof(cds_sl_sf_testablesafetysensor_cycle_struct, pFb) == off, "cds_sl_sf_testablesafetysensor_cycle_struct.pFb at %zu, expected %zu", offsetof(cds_sl_sf_testablesafetysensor_cycle_struct, pFb), off);
+      off += sizeof(void *);
+      off = (off + sizeof(uint32_t) - 1) / sizeof(uint32_t) * sizeof(uint32_t);
+      CHECK(offsetof(cds_sl_sf_testablesafetysensor_cycle_struct, tNow) == off, "cds_sl_sf_testablesafetysensor_cycle_struct.tNow at %zu, expected %zu", offsetof(cds_sl_sf_testablesafetysensor_cycle_struct, tNow), off);
+      off += sizeof(uint32_t);
+      off = (off + sizeof(int32_t) - 1) / sizeof(int32_t) * sizeof(int32_t);
+      CHECK(offsetof(cds_sl_sf_testablesafetysensor_cycle_struct, cds_sl_sf_testablesafetysensor_cycle) == off, "cds_sl_sf_testablesafetysensor_cycle_struct return value at %zu, expected %zu", offsetof(cds_sl_sf_testablesafetysensor_cycle_struct, cds_sl_sf_testablesafetysensor_cycle), off); }
+    { size_t off = 0;
+      off = (off + sizeof(void *) - 1) / sizeof(void *) * sizeof(void *);
       CHECK(offsetof(cds_sl_sf_enableswitch_init_struct, pFb) == off, "cds_sl_sf_enableswitch_init_struct.pFb at %zu, expected %zu", offsetof(cds_sl_sf_enableswitch_init_struct, pFb), off);
       off += sizeof(void *);
       off = (off + sizeof(int32_t) - 1) / sizeof(int32_t) * sizeof(int32_t);
@@ -8887,7 +8932,7 @@ static void test_sf_emergencystop(void)
             if (direct == SL_OK) ok++;
             if (direct <= 0 && direct > -12) hist[-direct]++;
             if (b.DiagCode >= 0xC000u) reached_error = 1;
-            if (b.DiagCode == 0x8000u) reached_run = 1;
+            if (b.DiagCode == 0x8000u || b.S_EStopOut == 1u) reached_run = 1;
         }
     }
     printf("SF_EmergencyStop: %d of %d cycles (16 valid random configurations) returned SL_OK; run-like state %s, ERROR %s; invalid share: %d configurations, %d cycles\n", ok, cycles, reached_run ? "reached" : "NOT reached", reached_error ? "reached" : "NOT reached", inv_config, inv_cycles);
@@ -8974,7 +9019,7 @@ static void test_sf_espe(void)
             if (direct == SL_OK) ok++;
             if (direct <= 0 && direct > -12) hist[-direct]++;
             if (b.DiagCode >= 0xC000u) reached_error = 1;
-            if (b.DiagCode == 0x8000u) reached_run = 1;
+            if (b.DiagCode == 0x8000u || b.S_ESPE_Out == 1u) reached_run = 1;
         }
     }
     printf("SF_ESPE: %d of %d cycles (16 valid random configurations) returned SL_OK; run-like state %s, ERROR %s; invalid share: %d configurations, %d cycles\n", ok, cycles, reached_run ? "reached" : "NOT reached", reached_error ? "reached" : "NOT reached", inv_config, inv_cycles);
@@ -9061,7 +9106,7 @@ static void test_sf_pse(void)
             if (direct == SL_OK) ok++;
             if (direct <= 0 && direct > -12) hist[-direct]++;
             if (b.DiagCode >= 0xC000u) reached_error = 1;
-            if (b.DiagCode == 0x8000u) reached_run = 1;
+            if (b.DiagCode == 0x8000u || b.S_PSE_Out == 1u) reached_run = 1;
         }
     }
     printf("SF_PSE: %d of %d cycles (16 valid random configurations) returned SL_OK; run-like state %s, ERROR %s; invalid share: %d configurations, %d cycles\n", ok, cycles, reached_run ? "reached" : "NOT reached", reached_error ? "reached" : "NOT reached", inv_config, inv_cycles);
@@ -9146,7 +9191,7 @@ static void test_sf_equivalent(void)
             if (direct == SL_OK) ok++;
             if (direct <= 0 && direct > -12) hist[-direct]++;
             if (b.DiagCode >= 0xC000u) reached_error = 1;
-            if (b.DiagCode == 0x8000u) reached_run = 1;
+            if (b.DiagCode == 0x8000u || b.S_EquivalentOut == 1u) reached_run = 1;
         }
     }
     printf("SF_Equivalent: %d of %d cycles (16 valid random configurations) returned SL_OK; run-like state %s, ERROR %s; invalid share: %d configurations, %d cycles\n", ok, cycles, reached_run ? "reached" : "NOT reached", reached_error ? "reached" : "NOT reached", inv_config, inv_cycles);
@@ -9231,7 +9276,7 @@ static void test_sf_antivalent(void)
             if (direct == SL_OK) ok++;
             if (direct <= 0 && direct > -12) hist[-direct]++;
             if (b.DiagCode >= 0xC000u) reached_error = 1;
-            if (b.DiagCode == 0x8000u) reached_run = 1;
+            if (b.DiagCode == 0x8000u || b.S_AntivalentOut == 1u) reached_run = 1;
         }
     }
     printf("SF_Antivalent: %d of %d cycles (16 valid random configurations) returned SL_OK; run-like state %s, ERROR %s; invalid share: %d configurations, %d cycles\n", ok, cycles, reached_run ? "reached" : "NOT reached", reached_error ? "reached" : "NOT reached", inv_config, inv_cycles);
@@ -9322,7 +9367,7 @@ static void test_sf_guard(void)
             if (direct == SL_OK) ok++;
             if (direct <= 0 && direct > -12) hist[-direct]++;
             if (b.DiagCode >= 0xC000u) reached_error = 1;
-            if (b.DiagCode == 0x8000u) reached_run = 1;
+            if (b.DiagCode == 0x8000u || b.S_GuardOut == 1u) reached_run = 1;
         }
     }
     printf("SF_Guard: %d of %d cycles (16 valid random configurations) returned SL_OK; run-like state %s, ERROR %s; invalid share: %d configurations, %d cycles\n", ok, cycles, reached_run ? "reached" : "NOT reached", reached_error ? "reached" : "NOT reached", inv_config, inv_cycles);
@@ -9411,7 +9456,7 @@ static void test_sf_safetyrequest(void)
             if (direct == SL_OK) ok++;
             if (direct <= 0 && direct > -12) hist[-direct]++;
             if (b.DiagCode >= 0xC000u) reached_error = 1;
-            if (b.DiagCode == 0x8000u) reached_run = 1;
+            if (b.DiagCode == 0x8000u || b.S_SafetyActive == 1u) reached_run = 1;
         }
     }
     printf("SF_SafetyRequest: %d of %d cycles (16 valid random configurations) returned SL_OK; run-like state %s, ERROR %s; invalid share: %d configurations, %d cycles\n", ok, cycles, reached_run ? "reached" : "NOT reached", reached_error ? "reached" : "NOT reached", inv_config, inv_cycles);
@@ -9502,7 +9547,7 @@ static void test_sf_outcontrol(void)
             if (direct == SL_OK) ok++;
             if (direct <= 0 && direct > -12) hist[-direct]++;
             if (b.DiagCode >= 0xC000u) reached_error = 1;
-            if (b.DiagCode == 0x8000u) reached_run = 1;
+            if (b.DiagCode == 0x8000u || b.S_OutControl == 1u) reached_run = 1;
         }
     }
     printf("SF_OutControl: %d of %d cycles (16 valid random configurations) returned SL_OK; run-like state %s, ERROR %s; invalid share: %d configurations, %d cycles\n", ok, cycles, reached_run ? "reached" : "NOT reached", reached_error ? "reached" : "NOT reached", inv_config, inv_cycles);
@@ -9510,6 +9555,274 @@ static void test_sf_outcontrol(void)
     CHECK(cycles > 0 && 2 * ok > cycles, "SF_OutControl: only %d of %d cycles with valid configurations returned SL_OK", ok, cycles);
     CHECK(reached_run, "SF_OutControl: the random test never reached a running state (an output on)");
     CHECK(reached_error, "SF_OutControl: the random test never reached ERROR");
+}
+
+static void rnd_config_sf_resetbutton(SF_ResetButton *x)
+{
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nDiagProfile = (uint8_t)v[rnd() % 7u]; }
+    x->TrailingMinimum = 100u + 50u * (rnd() % 2u);
+    x->TrailingMaximum = rnd() % 4u == 0u ? rnd_time() : 2000u;
+}
+/* 1: a valid configuration (want_valid) or an invalid one was drawn into a and b */
+static int draw_sf_resetbutton(SF_ResetButton *a, SF_ResetButton *b, int want_valid)
+{
+    long k;
+    for (k = 0; k < 200000L; k++) {
+        static SF_ResetButton x;
+        int valid;
+        memset(&x, 0, sizeof x);
+        rnd_config_sf_resetbutton(&x);
+        valid = sl_sf_resetbutton_init(&x) == SL_OK && sl_sf_resetbutton_cycle(&x, 0u) == SL_OK;
+        if (valid == want_valid) {
+            memset(a, 0, sizeof *a);
+            rnd_config_sf_resetbutton(a); /* placeholder, overwritten below */
+            a->nDiagProfile = x.nDiagProfile;
+            a->TrailingMinimum = x.TrailingMinimum;
+            a->TrailingMaximum = x.TrailingMaximum;
+            *b = *a;
+            return 1;
+        }
+    }
+    return 0;
+}
+static void test_sf_resetbutton(void)
+{
+    static SF_ResetButton a, b;
+    cds_sl_sf_resetbutton_cycle_struct p;
+    int c, k, bump, ok = 0, cycles = 0, inv_cycles = 0, inv_config = 0, reached_run = 0, reached_error = 0;
+    int hist[12] = {0};
+    unsigned pol = 0;
+    uint32_t t = 1000u;
+    memset(&a, 0, sizeof a);
+    memset(&b, 0, sizeof b);
+    memset(&p, 0, sizeof p);
+    p.pFb = NULL;
+    p.cds_sl_sf_resetbutton_cycle = 12345;
+    cds_sl_sf_resetbutton_cycle(&p);
+    CHECK(p.cds_sl_sf_resetbutton_cycle == SL_E_NULL, "cds_sl_sf_resetbutton_cycle(NULL) returned %d", (int)p.cds_sl_sf_resetbutton_cycle);
+    { cds_sl_sf_resetbutton_init_struct q; int32_t r; q.pFb = &a; cds_sl_sf_resetbutton_init(&q); r = sl_sf_resetbutton_init(&b);
+      CHECK(q.cds_sl_sf_resetbutton_init == r && memcmp(&a, &b, sizeof a) == 0, "cds_sl_sf_resetbutton_init differs from sl_sf_resetbutton_init"); }
+    rng = 3633043104u; /* FNV-1a of "SF_ResetButton" */
+    machine = 1u;
+    for (c = 0; c < 20; c++) {
+        int valid = c < 16; /* 16 valid configurations, then the labelled invalid share: 4 */
+        if (!draw_sf_resetbutton(&a, &b, valid)) {
+            CHECK(!valid, "SF_ResetButton: no valid configuration found in 200000 random draws");
+            continue;
+        }
+        if (!valid) inv_config++;
+        a.ResetIn = b.ResetIn = (uint8_t)(1);
+        bump = 20 + (int)(rnd() % 20u);
+        (void)bump; /* no parameter to change while running */
+        pol = (c % 2 == 1) ? rnd() : 0u;
+        for (k = 0; k < 50; k++) {
+            int32_t direct;
+            next_machine();
+            a.ResetIn = b.ResetIn = next_signal(a.ResetIn, 0, pol >> 0);
+            a.ResetRequested = b.ResetRequested = (uint8_t)(k >= 2 && rnd() % 100u != 0u);
+            p.pFb = &a;
+            p.tNow = t += 10u;
+            cds_sl_sf_resetbutton_cycle(&p);
+            direct = sl_sf_resetbutton_cycle(&b, p.tNow);
+            CHECK(p.cds_sl_sf_resetbutton_cycle == direct, "SF_ResetButton config %d cycle %d: adapter %d, direct %d", c, k, (int)p.cds_sl_sf_resetbutton_cycle, (int)direct);
+            CHECK(memcmp(&a, &b, sizeof a) == 0, "SF_ResetButton config %d cycle %d: instances differ", c, k);
+            if (!valid) { inv_cycles++; continue; }
+            cycles++;
+            if (direct == SL_OK) ok++;
+            if (direct <= 0 && direct > -12) hist[-direct]++;
+            if (b.DiagCode >= 0xC000u) reached_error = 1;
+            if (b.DiagCode == 0x8000u || b.ResetOut == 1u) reached_run = 1;
+        }
+    }
+    printf("SF_ResetButton: %d of %d cycles (16 valid random configurations) returned SL_OK; run-like state %s, ERROR %s; invalid share: %d configurations, %d cycles\n", ok, cycles, reached_run ? "reached" : "NOT reached", reached_error ? "reached" : "NOT reached", inv_config, inv_cycles);
+    if (2 * ok <= cycles) printf("  status histogram (0, -1, ... -11): %d %d %d %d %d %d %d %d %d %d %d\n", hist[0], hist[1], hist[2], hist[3], hist[4], hist[5], hist[6], hist[7], hist[8], hist[9], hist[10]);
+    CHECK(cycles > 0 && 2 * ok > cycles, "SF_ResetButton: only %d of %d cycles with valid configurations returned SL_OK", ok, cycles);
+    CHECK(reached_run, "SF_ResetButton: the random test never reached a running state (an output on)");
+    CHECK(reached_error, "SF_ResetButton: the random test never reached ERROR");
+}
+
+static void rnd_config_sf_edm(SF_EDM *x)
+{
+    x->MonitoringTime = rnd_time();
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nDiagProfile = (uint8_t)v[rnd() % 7u]; }
+}
+/* 1: a valid configuration (want_valid) or an invalid one was drawn into a and b */
+static int draw_sf_edm(SF_EDM *a, SF_EDM *b, int want_valid)
+{
+    long k;
+    for (k = 0; k < 200000L; k++) {
+        static SF_EDM x;
+        int valid;
+        memset(&x, 0, sizeof x);
+        rnd_config_sf_edm(&x);
+        valid = sl_sf_edm_init(&x) == SL_OK && sl_sf_edm_cycle(&x, 0u) == SL_OK;
+        if (valid == want_valid) {
+            memset(a, 0, sizeof *a);
+            rnd_config_sf_edm(a); /* placeholder, overwritten below */
+            a->MonitoringTime = x.MonitoringTime;
+            a->nDiagProfile = x.nDiagProfile;
+            *b = *a;
+            return 1;
+        }
+    }
+    return 0;
+}
+static void test_sf_edm(void)
+{
+    static SF_EDM a, b;
+    cds_sl_sf_edm_cycle_struct p;
+    int c, k, bump, ok = 0, cycles = 0, inv_cycles = 0, inv_config = 0, reached_run = 0, reached_error = 0;
+    int hist[12] = {0};
+    unsigned pol = 0;
+    uint32_t t = 1000u;
+    memset(&a, 0, sizeof a);
+    memset(&b, 0, sizeof b);
+    memset(&p, 0, sizeof p);
+    p.pFb = NULL;
+    p.cds_sl_sf_edm_cycle = 12345;
+    cds_sl_sf_edm_cycle(&p);
+    CHECK(p.cds_sl_sf_edm_cycle == SL_E_NULL, "cds_sl_sf_edm_cycle(NULL) returned %d", (int)p.cds_sl_sf_edm_cycle);
+    { cds_sl_sf_edm_init_struct q; int32_t r; q.pFb = &a; cds_sl_sf_edm_init(&q); r = sl_sf_edm_init(&b);
+      CHECK(q.cds_sl_sf_edm_init == r && memcmp(&a, &b, sizeof a) == 0, "cds_sl_sf_edm_init differs from sl_sf_edm_init"); }
+    rng = 1079241047u; /* FNV-1a of "SF_EDM" */
+    machine = 1u;
+    for (c = 0; c < 20; c++) {
+        int valid = c < 16; /* 16 valid configurations, then the labelled invalid share: 4 */
+        if (!draw_sf_edm(&a, &b, valid)) {
+            CHECK(!valid, "SF_EDM: no valid configuration found in 200000 random draws");
+            continue;
+        }
+        if (!valid) inv_config++;
+        a.Activate = b.Activate = (uint8_t)(1);
+        a.S_OutControl = b.S_OutControl = (uint8_t)(1);
+        a.EDM1 = b.EDM1 = (uint8_t)(1);
+        a.EDM2 = b.EDM2 = (uint8_t)(1);
+        a.S_StartReset = b.S_StartReset = (uint8_t)(1);
+        a.Reset = b.Reset = (uint8_t)(1);
+        bump = 20 + (int)(rnd() % 20u);
+        (void)bump; /* no parameter to change while running */
+        pol = (c % 2 == 1) ? rnd() : 0u;
+        for (k = 0; k < 50; k++) {
+            int32_t direct;
+            next_machine();
+            a.Activate = b.Activate = next_signal(a.Activate, 0, pol >> 0);
+            a.S_OutControl = b.S_OutControl = next_signal(a.S_OutControl, 0, pol >> 1);
+            a.EDM1 = b.EDM1 = next_signal(a.EDM1, 0, pol >> 2);
+            a.EDM2 = b.EDM2 = next_signal(a.EDM2, 0, pol >> 3);
+            a.S_StartReset = b.S_StartReset = next_signal(a.S_StartReset, 0, pol >> 4);
+            a.Reset = b.Reset = next_signal(a.Reset, 0, pol >> 5);
+            p.pFb = &a;
+            p.tNow = t += 10u;
+            cds_sl_sf_edm_cycle(&p);
+            direct = sl_sf_edm_cycle(&b, p.tNow);
+            CHECK(p.cds_sl_sf_edm_cycle == direct, "SF_EDM config %d cycle %d: adapter %d, direct %d", c, k, (int)p.cds_sl_sf_edm_cycle, (int)direct);
+            CHECK(memcmp(&a, &b, sizeof a) == 0, "SF_EDM config %d cycle %d: instances differ", c, k);
+            if (!valid) { inv_cycles++; continue; }
+            cycles++;
+            if (direct == SL_OK) ok++;
+            if (direct <= 0 && direct > -12) hist[-direct]++;
+            if (b.DiagCode >= 0xC000u) reached_error = 1;
+            if (b.DiagCode == 0x8000u || b.S_EDM_Out == 1u) reached_run = 1;
+        }
+    }
+    printf("SF_EDM: %d of %d cycles (16 valid random configurations) returned SL_OK; run-like state %s, ERROR %s; invalid share: %d configurations, %d cycles\n", ok, cycles, reached_run ? "reached" : "NOT reached", reached_error ? "reached" : "NOT reached", inv_config, inv_cycles);
+    if (2 * ok <= cycles) printf("  status histogram (0, -1, ... -11): %d %d %d %d %d %d %d %d %d %d %d\n", hist[0], hist[1], hist[2], hist[3], hist[4], hist[5], hist[6], hist[7], hist[8], hist[9], hist[10]);
+    CHECK(cycles > 0 && 2 * ok > cycles, "SF_EDM: only %d of %d cycles with valid configurations returned SL_OK", ok, cycles);
+    CHECK(reached_run, "SF_EDM: the random test never reached a running state (an output on)");
+    CHECK(reached_error, "SF_EDM: the random test never reached ERROR");
+}
+
+static void rnd_config_sf_testablesafetysensor(SF_TestableSafetySensor *x)
+{
+    { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nDiagProfile = (uint8_t)v[rnd() % 7u]; }
+    x->TestTime = rnd_time();
+}
+/* 1: a valid configuration (want_valid) or an invalid one was drawn into a and b */
+static int draw_sf_testablesafetysensor(SF_TestableSafetySensor *a, SF_TestableSafetySensor *b, int want_valid)
+{
+    long k;
+    for (k = 0; k < 200000L; k++) {
+        static SF_TestableSafetySensor x;
+        int valid;
+        memset(&x, 0, sizeof x);
+        rnd_config_sf_testablesafetysensor(&x);
+        valid = sl_sf_testablesafetysensor_init(&x) == SL_OK && sl_sf_testablesafetysensor_cycle(&x, 0u) == SL_OK;
+        if (valid == want_valid) {
+            memset(a, 0, sizeof *a);
+            rnd_config_sf_testablesafetysensor(a); /* placeholder, overwritten below */
+            a->nDiagProfile = x.nDiagProfile;
+            a->TestTime = x.TestTime;
+            *b = *a;
+            return 1;
+        }
+    }
+    return 0;
+}
+static void test_sf_testablesafetysensor(void)
+{
+    static SF_TestableSafetySensor a, b;
+    cds_sl_sf_testablesafetysensor_cycle_struct p;
+    int c, k, bump, ok = 0, cycles = 0, inv_cycles = 0, inv_config = 0, reached_run = 0, reached_error = 0;
+    int hist[12] = {0};
+    unsigned pol = 0;
+    uint32_t t = 1000u;
+    memset(&a, 0, sizeof a);
+    memset(&b, 0, sizeof b);
+    memset(&p, 0, sizeof p);
+    p.pFb = NULL;
+    p.cds_sl_sf_testablesafetysensor_cycle = 12345;
+    cds_sl_sf_testablesafetysensor_cycle(&p);
+    CHECK(p.cds_sl_sf_testablesafetysensor_cycle == SL_E_NULL, "cds_sl_sf_testablesafetysensor_cycle(NULL) returned %d", (int)p.cds_sl_sf_testablesafetysensor_cycle);
+    { cds_sl_sf_testablesafetysensor_init_struct q; int32_t r; q.pFb = &a; cds_sl_sf_testablesafetysensor_init(&q); r = sl_sf_testablesafetysensor_init(&b);
+      CHECK(q.cds_sl_sf_testablesafetysensor_init == r && memcmp(&a, &b, sizeof a) == 0, "cds_sl_sf_testablesafetysensor_init differs from sl_sf_testablesafetysensor_init"); }
+    rng = 2567420677u; /* FNV-1a of "SF_TestableSafetySensor" */
+    machine = 1u;
+    for (c = 0; c < 20; c++) {
+        int valid = c < 16; /* 16 valid configurations, then the labelled invalid share: 4 */
+        if (!draw_sf_testablesafetysensor(&a, &b, valid)) {
+            CHECK(!valid, "SF_TestableSafetySensor: no valid configuration found in 200000 random draws");
+            continue;
+        }
+        if (!valid) inv_config++;
+        a.Activate = b.Activate = (uint8_t)(1);
+        a.S_OSSD_In = b.S_OSSD_In = (uint8_t)(1);
+        a.StartTest = b.StartTest = (uint8_t)(1);
+        a.NoExternalTest = b.NoExternalTest = (uint8_t)(1);
+        a.S_StartReset = b.S_StartReset = (uint8_t)(1);
+        a.S_AutoReset = b.S_AutoReset = (uint8_t)(1);
+        a.Reset = b.Reset = (uint8_t)(1);
+        bump = 20 + (int)(rnd() % 20u);
+        (void)bump; /* no parameter to change while running */
+        pol = (c % 2 == 1) ? rnd() : 0u;
+        for (k = 0; k < 50; k++) {
+            int32_t direct;
+            next_machine();
+            a.Activate = b.Activate = next_signal(a.Activate, 0, pol >> 0);
+            a.S_OSSD_In = b.S_OSSD_In = next_signal(a.S_OSSD_In, 0, pol >> 1);
+            a.StartTest = b.StartTest = next_signal(a.StartTest, 0, pol >> 2);
+            a.NoExternalTest = b.NoExternalTest = next_signal(a.NoExternalTest, 0, pol >> 3);
+            a.S_StartReset = b.S_StartReset = next_signal(a.S_StartReset, 0, pol >> 4);
+            a.S_AutoReset = b.S_AutoReset = next_signal(a.S_AutoReset, 0, pol >> 5);
+            a.Reset = b.Reset = next_signal(a.Reset, 0, pol >> 6);
+            p.pFb = &a;
+            p.tNow = t += 10u;
+            cds_sl_sf_testablesafetysensor_cycle(&p);
+            direct = sl_sf_testablesafetysensor_cycle(&b, p.tNow);
+            CHECK(p.cds_sl_sf_testablesafetysensor_cycle == direct, "SF_TestableSafetySensor config %d cycle %d: adapter %d, direct %d", c, k, (int)p.cds_sl_sf_testablesafetysensor_cycle, (int)direct);
+            CHECK(memcmp(&a, &b, sizeof a) == 0, "SF_TestableSafetySensor config %d cycle %d: instances differ", c, k);
+            if (!valid) { inv_cycles++; continue; }
+            cycles++;
+            if (direct == SL_OK) ok++;
+            if (direct <= 0 && direct > -12) hist[-direct]++;
+            if (b.DiagCode >= 0xC000u) reached_error = 1;
+            if (b.DiagCode == 0x8000u || b.S_OSSD_Out == 1u) reached_run = 1;
+        }
+    }
+    printf("SF_TestableSafetySensor: %d of %d cycles (16 valid random configurations) returned SL_OK; run-like state %s, ERROR %s; invalid share: %d configurations, %d cycles\n", ok, cycles, reached_run ? "reached" : "NOT reached", reached_error ? "reached" : "NOT reached", inv_config, inv_cycles);
+    if (2 * ok <= cycles) printf("  status histogram (0, -1, ... -11): %d %d %d %d %d %d %d %d %d %d %d\n", hist[0], hist[1], hist[2], hist[3], hist[4], hist[5], hist[6], hist[7], hist[8], hist[9], hist[10]);
+    CHECK(cycles > 0 && 2 * ok > cycles, "SF_TestableSafetySensor: only %d of %d cycles with valid configurations returned SL_OK", ok, cycles);
+    CHECK(reached_run, "SF_TestableSafetySensor: the random test never reached a running state (an output on)");
+    CHECK(reached_error, "SF_TestableSafetySensor: the random test never reached ERROR");
 }
 
 static void rnd_config_sf_enableswitch(SF_EnableSwitch *x)
@@ -9591,7 +9904,7 @@ static void test_sf_enableswitch(void)
             if (direct == SL_OK) ok++;
             if (direct <= 0 && direct > -12) hist[-direct]++;
             if (b.DiagCode >= 0xC000u) reached_error = 1;
-            if (b.DiagCode == 0x8000u) reached_run = 1;
+            if (b.DiagCode == 0x8000u || b.S_EnableSwitchOut == 1u) reached_run = 1;
         }
     }
     printf("SF_EnableSwitch: %d of %d cycles (16 valid random configurations) returned SL_OK; run-like state %s, ERROR %s; invalid share: %d configurations, %d cycles\n", ok, cycles, reached_run ? "reached" : "NOT reached", reached_error ? "reached" : "NOT reached", inv_config, inv_cycles);
@@ -9674,7 +9987,7 @@ static void test_sf_twohandcontroltypeii(void)
             if (direct == SL_OK) ok++;
             if (direct <= 0 && direct > -12) hist[-direct]++;
             if (b.DiagCode >= 0xC000u) reached_error = 1;
-            if (b.DiagCode == 0x8000u) reached_run = 1;
+            if (b.DiagCode == 0x8000u || b.S_TwoHandOut == 1u) reached_run = 1;
         }
     }
     printf("SF_TwoHandControlTypeII: %d of %d cycles (16 valid random configurations) returned SL_OK; run-like state %s, ERROR %s; invalid share: %d configurations, %d cycles\n", ok, cycles, reached_run ? "reached" : "NOT reached", reached_error ? "reached" : "NOT reached", inv_config, inv_cycles);
@@ -9757,7 +10070,7 @@ static void test_sf_twohandcontroltypeiii(void)
             if (direct == SL_OK) ok++;
             if (direct <= 0 && direct > -12) hist[-direct]++;
             if (b.DiagCode >= 0xC000u) reached_error = 1;
-            if (b.DiagCode == 0x8000u) reached_run = 1;
+            if (b.DiagCode == 0x8000u || b.S_TwoHandOut == 1u) reached_run = 1;
         }
     }
     printf("SF_TwoHandControlTypeIII: %d of %d cycles (16 valid random configurations) returned SL_OK; run-like state %s, ERROR %s; invalid share: %d configurations, %d cycles\n", ok, cycles, reached_run ? "reached" : "NOT reached", reached_error ? "reached" : "NOT reached", inv_config, inv_cycles);
@@ -9862,7 +10175,7 @@ static void test_sf_modeselector(void)
             if (direct == SL_OK) ok++;
             if (direct <= 0 && direct > -12) hist[-direct]++;
             if (b.DiagCode >= 0xC000u) reached_error = 1;
-            if (b.DiagCode == 0x8000u) reached_run = 1;
+            if (b.DiagCode == 0x8000u || b.S_Mode0Sel == 1u) reached_run = 1;
         }
     }
     printf("SF_ModeSelector: %d of %d cycles (16 valid random configurations) returned SL_OK; run-like state %s, ERROR %s; invalid share: %d configurations, %d cycles\n", ok, cycles, reached_run ? "reached" : "NOT reached", reached_error ? "reached" : "NOT reached", inv_config, inv_cycles);
@@ -9876,7 +10189,7 @@ static void test_sf_modeselector(void)
  * every type tag (and one unknown), every state value 0-63, a set of diag words. */
 static void test_texts(void)
 {
-    static const uint16_t tags[] = {SL_TYPE_ADVPOSMON, SL_TYPE_AND, SL_TYPE_ADD_INT, SL_TYPE_ADD_UINT, SL_TYPE_ADD_DINT, SL_TYPE_ADD_UDINT, SL_TYPE_SUB_INT, SL_TYPE_SUB_UINT, SL_TYPE_SUB_DINT, SL_TYPE_SUB_UDINT, SL_TYPE_MUL_INT, SL_TYPE_MUL_UINT, SL_TYPE_MUL_DINT, SL_TYPE_MUL_UDINT, SL_TYPE_DIV_INT, SL_TYPE_DIV_UINT, SL_TYPE_DIV_DINT, SL_TYPE_DIV_UDINT, SL_TYPE_CAMMONITOR_UINT, SL_TYPE_CAMMONITOR_UDINT, SL_TYPE_COMPARE_INT, SL_TYPE_COMPARE_UINT, SL_TYPE_COMPARE_DINT, SL_TYPE_COMPARE_UDINT, SL_TYPE_CONNECTION_SHUTDOWN, SL_TYPE_COUNTER_INT, SL_TYPE_COUNTER_UINT, SL_TYPE_COUNTER_DINT, SL_TYPE_COUNTER_UDINT, SL_TYPE_DECOUPLE, SL_TYPE_EDM, SL_TYPE_ENVELOPE_INT, SL_TYPE_ENVELOPE_UINT, SL_TYPE_ENVELOPE_DINT, SL_TYPE_ENVELOPE_UDINT, SL_TYPE_ESTOP, SL_TYPE_LIMIT_INT, SL_TYPE_LIMIT_UINT, SL_TYPE_LIMIT_DINT, SL_TYPE_LIMIT_UDINT, SL_TYPE_LOADSENSING_INT, SL_TYPE_LOADSENSING_UINT, SL_TYPE_LOADSENSING_DINT, SL_TYPE_LOADSENSING_UDINT, SL_TYPE_MON, SL_TYPE_MUTING, SL_TYPE_OPMODE, SL_TYPE_OR, SL_TYPE_RS, SL_TYPE_SBT, SL_TYPE_SCALE_INT, SL_TYPE_SCALE_UINT, SL_TYPE_SCALE_DINT, SL_TYPE_SCALE_UDINT, SL_TYPE_SF_ANTIVALENT, SL_TYPE_SF_EMERGENCYSTOP, SL_TYPE_SF_ENABLESWITCH, SL_TYPE_SF_EQUIVALENT, SL_TYPE_SF_ESPE, SL_TYPE_SF_GUARD, SL_TYPE_SF_MODESELECTOR, SL_TYPE_SF_OUTCONTROL, SL_TYPE_SF_PSE, SL_TYPE_SF_SAFETYREQUEST, SL_TYPE_SF_TWOHANDCONTROLTYPEII, SL_TYPE_SF_TWOHANDCONTROLTYPEIII, SL_TYPE_SLI_INT, SL_TYPE_SLI_UINT, SL_TYPE_SLI_DINT, SL_TYPE_SLI_UDINT, SL_TYPE_SLI2_INT, SL_TYPE_SLI2_UINT, SL_TYPE_SLI2_DINT, SL_TYPE_SLI2_UDINT, SL_TYPE_SLP, SL_TYPE_SPEED_INT, SL_TYPE_SPEED_UINT, SL_TYPE_SPEED_DINT, SL_TYPE_SPEED_UDINT, SL_TYPE_SR, SL_TYPE_TOF, SL_TYPE_TON, SL_TYPE_TON2, SL_TYPE_TWOHAND, SL_TYPE_VIOLATIONCOUNTER_UINT, SL_TYPE_VIOLATIONCOUNTER_UDINT, SL_TYPE_XOR, SL_TYPE_FSOE_CONN, 0, 999};
+    static const uint16_t tags[] = {SL_TYPE_ADVPOSMON, SL_TYPE_AND, SL_TYPE_ADD_INT, SL_TYPE_ADD_UINT, SL_TYPE_ADD_DINT, SL_TYPE_ADD_UDINT, SL_TYPE_SUB_INT, SL_TYPE_SUB_UINT, SL_TYPE_SUB_DINT, SL_TYPE_SUB_UDINT, SL_TYPE_MUL_INT, SL_TYPE_MUL_UINT, SL_TYPE_MUL_DINT, SL_TYPE_MUL_UDINT, SL_TYPE_DIV_INT, SL_TYPE_DIV_UINT, SL_TYPE_DIV_DINT, SL_TYPE_DIV_UDINT, SL_TYPE_CAMMONITOR_UINT, SL_TYPE_CAMMONITOR_UDINT, SL_TYPE_COMPARE_INT, SL_TYPE_COMPARE_UINT, SL_TYPE_COMPARE_DINT, SL_TYPE_COMPARE_UDINT, SL_TYPE_CONNECTION_SHUTDOWN, SL_TYPE_COUNTER_INT, SL_TYPE_COUNTER_UINT, SL_TYPE_COUNTER_DINT, SL_TYPE_COUNTER_UDINT, SL_TYPE_DECOUPLE, SL_TYPE_EDM, SL_TYPE_ENVELOPE_INT, SL_TYPE_ENVELOPE_UINT, SL_TYPE_ENVELOPE_DINT, SL_TYPE_ENVELOPE_UDINT, SL_TYPE_ESTOP, SL_TYPE_LIMIT_INT, SL_TYPE_LIMIT_UINT, SL_TYPE_LIMIT_DINT, SL_TYPE_LIMIT_UDINT, SL_TYPE_LOADSENSING_INT, SL_TYPE_LOADSENSING_UINT, SL_TYPE_LOADSENSING_DINT, SL_TYPE_LOADSENSING_UDINT, SL_TYPE_MON, SL_TYPE_MUTING, SL_TYPE_OPMODE, SL_TYPE_OR, SL_TYPE_RS, SL_TYPE_SBT, SL_TYPE_SCALE_INT, SL_TYPE_SCALE_UINT, SL_TYPE_SCALE_DINT, SL_TYPE_SCALE_UDINT, SL_TYPE_SF_ANTIVALENT, SL_TYPE_SF_EDM, SL_TYPE_SF_EMERGENCYSTOP, SL_TYPE_SF_ENABLESWITCH, SL_TYPE_SF_EQUIVALENT, SL_TYPE_SF_ESPE, SL_TYPE_SF_GUARD, SL_TYPE_SF_MODESELECTOR, SL_TYPE_SF_OUTCONTROL, SL_TYPE_SF_PSE, SL_TYPE_SF_RESETBUTTON, SL_TYPE_SF_SAFETYREQUEST, SL_TYPE_SF_TESTABLESAFETYSENSOR, SL_TYPE_SF_TWOHANDCONTROLTYPEII, SL_TYPE_SF_TWOHANDCONTROLTYPEIII, SL_TYPE_SLI_INT, SL_TYPE_SLI_UINT, SL_TYPE_SLI_DINT, SL_TYPE_SLI_UDINT, SL_TYPE_SLI2_INT, SL_TYPE_SLI2_UINT, SL_TYPE_SLI2_DINT, SL_TYPE_SLI2_UDINT, SL_TYPE_SLP, SL_TYPE_SPEED_INT, SL_TYPE_SPEED_UINT, SL_TYPE_SPEED_DINT, SL_TYPE_SPEED_UDINT, SL_TYPE_SR, SL_TYPE_TOF, SL_TYPE_TON, SL_TYPE_TON2, SL_TYPE_TWOHAND, SL_TYPE_VIOLATIONCOUNTER_UINT, SL_TYPE_VIOLATIONCOUNTER_UDINT, SL_TYPE_XOR, SL_TYPE_FSOE_CONN, 0, 999};
     static const uint16_t diags[] = {0, 1, 2, 3, 0x00FF, 0x1000, 0x2000, 0x4000, 0x8000, 0xE000, 0xFFFF};
     size_t i, k, named = 0;
     for (i = 0; i < sizeof tags / sizeof tags[0]; i++) {
@@ -9997,6 +10310,9 @@ int main(void)
     test_sf_guard();
     test_sf_safetyrequest();
     test_sf_outcontrol();
+    test_sf_resetbutton();
+    test_sf_edm();
+    test_sf_testablesafetysensor();
     test_sf_enableswitch();
     test_sf_twohandcontroltypeii();
     test_sf_twohandcontroltypeiii();

@@ -34,6 +34,15 @@ impl Edm {
             .fold(0, |d, x| d | DIAG[x])
     }
 
+    /// Diag bits of the active feedback loops that do not read FALSE: the contactors have
+    /// not (all) picked up (SF_EDM's check after switching on).
+    #[inline]
+    pub fn not_switched(&self) -> u16 {
+        (0..2)
+            .filter(|&x| self.active[x] && !self.is_false[x])
+            .fold(0, |d, x| d | DIAG[x])
+    }
+
     /// EDM reset-time check while the outputs are on. `pending` bit x (1 << x) stays set
     /// until EDMx reads FALSE; when `reset_time[x]` ms have passed since `t_on` with the
     /// bit still set, the EDMx diag bit is returned.
@@ -68,5 +77,43 @@ impl Edm {
     pub fn arm(&self, reset_time: [u16; 2]) -> u8 {
         u8::from(self.active[0] && reset_time[0] != 0)
             | (u8::from(self.active[1] && reset_time[1] != 0) << 1)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn edm(active: [bool; 2], raw: [u8; 2]) -> Edm {
+        Edm {
+            active,
+            is_true: raw.map(|b| b == 1),
+            is_false: raw.map(|b| b == 0),
+        }
+    }
+
+    #[test]
+    fn released_and_switched_name_the_loops_that_are_not() {
+        let both = [true, true];
+        assert_eq!(edm(both, [1, 1]).not_released(), 0);
+        assert_eq!(edm(both, [0, 1]).not_released(), SL_DIAG_EDM1);
+        assert_eq!(edm(both, [1, 2]).not_released(), SL_DIAG_EDM2);
+        assert_eq!(edm(both, [0, 0]).not_switched(), 0);
+        assert_eq!(edm(both, [1, 0]).not_switched(), SL_DIAG_EDM1);
+        assert_eq!(
+            edm(both, [0, 7]).not_switched(),
+            SL_DIAG_EDM2,
+            "invalid: not switched"
+        );
+        assert_eq!(
+            edm(both, [1, 1]).not_switched(),
+            SL_DIAG_EDM1 | SL_DIAG_EDM2
+        );
+        assert_eq!(
+            edm([false, true], [1, 0]).not_switched(),
+            0,
+            "inactive loop"
+        );
+        assert_eq!(edm([true, false], [1, 1]).not_switched(), SL_DIAG_EDM1);
     }
 }

@@ -37,6 +37,22 @@ pub const SL_SF_DIAG_CONFIG: u16 = 0xC3FC;
 /// wrapping clock).
 pub const SL_SF_TIME_MAX: u32 = 0x7FFF_FFFF;
 
+/// Previous level of a block's own R_TRIG input (SF_EDM's S_OutControl,
+/// SF_TestableSafetySensor's StartTest): bit 7 of the header's `nFlags`, sealed with it.
+const F_TRIGGER_PREV: u8 = 1 << 7;
+
+/// R_TRIG(raw).Q of a block's own trigger input, read in `SfBlock::decode`; the memory is
+/// written by [`store_trigger`] from `SfBlock::write_outputs`, which runs at the end of
+/// every call (idle included), so the R_TRIG runs in every call as Reset's does.
+pub fn trigger_rising(p: &SL_SF_PRIVATE, raw: u8) -> bool {
+    bools::is_true(raw) && !p.stHeader.flag(F_TRIGGER_PREV)
+}
+
+/// Stores the level of the trigger input for the next call's [`trigger_rising`].
+pub fn store_trigger(p: &mut SL_SF_PRIVATE, raw: u8) {
+    p.stHeader.set_flag(F_TRIGGER_PREV, bools::is_true(raw));
+}
+
 /// The DiagCode meaning "the block is activated and its safety output is enabled".
 pub const SF_ENABLED: u16 = 0x8000;
 
@@ -220,8 +236,10 @@ pub trait SfInstance {
     fn sf_private(&self) -> &SL_SF_PRIVATE;
     /// `&mut self.stPrivate`.
     fn sf_private_mut(&mut self) -> &mut SL_SF_PRIVATE;
-    /// The raw `Activate` byte.
+    /// The raw `Activate` byte (SF_ResetButton: `ResetRequested`, its activation).
     fn activate_raw(&self) -> u8;
+    /// Writes the `Activate` byte (SF_ResetButton: `ResetRequested`): for generic drivers.
+    fn set_activate_raw(&mut self, v: u8);
 }
 
 /// What an `SF_` block supplies to the envelope (the plumbing of [`SfInstance`] comes from
@@ -264,6 +282,13 @@ pub trait SfBlock: SfInstance + Sized {
     ) -> Self::Diag;
     /// Writes the block's output fields.
     fn write_outputs(&mut self, o: &SfOut);
+    /// The state entered from IDLE with valid latched constants (`times`): INIT. A block
+    /// whose constant inputs have limits of its own (SF_ResetButton's trailing times)
+    /// enters its parameter error here, in the activating call.
+    fn first(times: [u32; 2]) -> Self::Diag {
+        let _ = times;
+        Self::Diag::INIT
+    }
     /// Called in every call after [`Self::decode`], before `Activate` is evaluated (edge
     /// detectors run every call, research §3.3): a block with memory beyond its state
     /// (edges of inputs other than Reset, a held selection, in the header's `wAux`, which
@@ -444,7 +469,7 @@ pub fn cycle<B: SfBlock>(fb: &mut B, now: u32) -> Status {
         // 0000 → INIT: the constant inputs are latched here (they may not change while
         // the block is activated).
         let next = if latch(fb) {
-            B::Diag::INIT.code()
+            B::first(fb.sf_private().adwTime).code()
         } else {
             status = status.worst(Status::Config);
             SL_SF_DIAG_CONFIG
@@ -511,6 +536,20 @@ mod tests {
         }
         assert_eq!(phase_of(0), SL_STATE_STOP);
         assert_eq!(phase_of(0x8001), SL_STATE_RUN);
+    }
+
+    #[test]
+    fn the_trigger_memory_gives_one_rising_edge() {
+        let mut p = SL_SF_PRIVATE::ZERO;
+        assert!(!trigger_rising(&p, 0));
+        assert!(trigger_rising(&p, 1));
+        assert!(!trigger_rising(&p, 2), "an invalid byte is FALSE");
+        store_trigger(&mut p, 1);
+        assert!(!trigger_rising(&p, 1), "held");
+        assert_eq!(p.stHeader.nFlags, F_TRIGGER_PREV);
+        store_trigger(&mut p, 2);
+        assert!(trigger_rising(&p, 1));
+        assert_eq!(p.stHeader.nFlags, 0);
     }
 
     #[test]

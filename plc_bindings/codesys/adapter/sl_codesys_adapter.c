@@ -1338,6 +1338,54 @@ void CDECL CDECL_EXT cds_sl_sf_outcontrol_cycle(cds_sl_sf_outcontrol_cycle_struc
     p->cds_sl_sf_outcontrol_cycle = sl_sf_outcontrol_cycle(p->pFb, p->tNow);
 }
 
+void CDECL CDECL_EXT cds_sl_sf_resetbutton_init(cds_sl_sf_resetbutton_init_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_sf_resetbutton_init = sl_sf_resetbutton_init(p->pFb);
+}
+
+void CDECL CDECL_EXT cds_sl_sf_resetbutton_cycle(cds_sl_sf_resetbutton_cycle_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_sf_resetbutton_cycle = sl_sf_resetbutton_cycle(p->pFb, p->tNow);
+}
+
+void CDECL CDECL_EXT cds_sl_sf_edm_init(cds_sl_sf_edm_init_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_sf_edm_init = sl_sf_edm_init(p->pFb);
+}
+
+void CDECL CDECL_EXT cds_sl_sf_edm_cycle(cds_sl_sf_edm_cycle_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_sf_edm_cycle = sl_sf_edm_cycle(p->pFb, p->tNow);
+}
+
+void CDECL CDECL_EXT cds_sl_sf_testablesafetysensor_init(cds_sl_sf_testablesafetysensor_init_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_sf_testablesafetysensor_init = sl_sf_testablesafetysensor_init(p->pFb);
+}
+
+void CDECL CDECL_EXT cds_sl_sf_testablesafetysensor_cycle(cds_sl_sf_testablesafetysensor_cycle_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_sf_testablesafetysensor_cycle = sl_sf_testablesafetysensor_cycle(p->pFb, p->tNow);
+}
+
 void CDECL CDECL_EXT cds_sl_sf_enableswitch_init(cds_sl_sf_enableswitch_init_struct *p)
 {
     if (p == 0) {

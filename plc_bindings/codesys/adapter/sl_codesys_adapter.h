@@ -1279,6 +1279,51 @@ typedef struct tagcds_sl_sf_outcontrol_cycle_struct {
 } cds_sl_sf_outcontrol_cycle_struct;
 void CDECL CDECL_EXT cds_sl_sf_outcontrol_cycle(cds_sl_sf_outcontrol_cycle_struct *p);
 
+/* FUNCTION cds_sl_sf_resetbutton_init : DINT -> sl_sf_resetbutton_init() */
+typedef struct tagcds_sl_sf_resetbutton_init_struct {
+    struct SF_ResetButton *pFb; /* VAR_INPUT pFb : POINTER TO ST_SF_ResetButton */
+    int32_t cds_sl_sf_resetbutton_init; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_sf_resetbutton_init_struct;
+void CDECL CDECL_EXT cds_sl_sf_resetbutton_init(cds_sl_sf_resetbutton_init_struct *p);
+
+/* FUNCTION cds_sl_sf_resetbutton_cycle : DINT -> sl_sf_resetbutton_cycle() */
+typedef struct tagcds_sl_sf_resetbutton_cycle_struct {
+    struct SF_ResetButton *pFb; /* VAR_INPUT pFb : POINTER TO ST_SF_ResetButton */
+    uint32_t tNow; /* VAR_INPUT tNow : UDINT */
+    int32_t cds_sl_sf_resetbutton_cycle; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_sf_resetbutton_cycle_struct;
+void CDECL CDECL_EXT cds_sl_sf_resetbutton_cycle(cds_sl_sf_resetbutton_cycle_struct *p);
+
+/* FUNCTION cds_sl_sf_edm_init : DINT -> sl_sf_edm_init() */
+typedef struct tagcds_sl_sf_edm_init_struct {
+    struct SF_EDM *pFb; /* VAR_INPUT pFb : POINTER TO ST_SF_EDM */
+    int32_t cds_sl_sf_edm_init; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_sf_edm_init_struct;
+void CDECL CDECL_EXT cds_sl_sf_edm_init(cds_sl_sf_edm_init_struct *p);
+
+/* FUNCTION cds_sl_sf_edm_cycle : DINT -> sl_sf_edm_cycle() */
+typedef struct tagcds_sl_sf_edm_cycle_struct {
+    struct SF_EDM *pFb; /* VAR_INPUT pFb : POINTER TO ST_SF_EDM */
+    uint32_t tNow; /* VAR_INPUT tNow : UDINT */
+    int32_t cds_sl_sf_edm_cycle; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_sf_edm_cycle_struct;
+void CDECL CDECL_EXT cds_sl_sf_edm_cycle(cds_sl_sf_edm_cycle_struct *p);
+
+/* FUNCTION cds_sl_sf_testablesafetysensor_init : DINT -> sl_sf_testablesafetysensor_init() */
+typedef struct tagcds_sl_sf_testablesafetysensor_init_struct {
+    struct SF_TestableSafetySensor *pFb; /* VAR_INPUT pFb : POINTER TO ST_SF_TestableSafetySensor */
+    int32_t cds_sl_sf_testablesafetysensor_init; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_sf_testablesafetysensor_init_struct;
+void CDECL CDECL_EXT cds_sl_sf_testablesafetysensor_init(cds_sl_sf_testablesafetysensor_init_struct *p);
+
+/* FUNCTION cds_sl_sf_testablesafetysensor_cycle : DINT -> sl_sf_testablesafetysensor_cycle() */
+typedef struct tagcds_sl_sf_testablesafetysensor_cycle_struct {
+    struct SF_TestableSafetySensor *pFb; /* VAR_INPUT pFb : POINTER TO ST_SF_TestableSafetySensor */
+    uint32_t tNow; /* VAR_INPUT tNow : UDINT */
+    int32_t cds_sl_sf_testablesafetysensor_cycle; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_sf_testablesafetysensor_cycle_struct;
+void CDECL CDECL_EXT cds_sl_sf_testablesafetysensor_cycle(cds_sl_sf_testablesafetysensor_cycle_struct *p);
+
 /* FUNCTION cds_sl_sf_enableswitch_init : DINT -> sl_sf_enableswitch_init() */
 typedef struct tagcds_sl_sf_enableswitch_init_struct {
     struct SF_EnableSwitch *pFb; /* VAR_INPUT pFb : POINTER TO ST_SF_EnableSwitch */
@@ -1605,6 +1650,12 @@ void CDECL CDECL_EXT cds_sl_diag_text(cds_sl_diag_text_struct *p);
     X(cds_sl_sf_safetyrequest_cycle) \
     X(cds_sl_sf_outcontrol_init) \
     X(cds_sl_sf_outcontrol_cycle) \
+    X(cds_sl_sf_resetbutton_init) \
+    X(cds_sl_sf_resetbutton_cycle) \
+    X(cds_sl_sf_edm_init) \
+    X(cds_sl_sf_edm_cycle) \
+    X(cds_sl_sf_testablesafetysensor_init) \
+    X(cds_sl_sf_testablesafetysensor_cycle) \
     X(cds_sl_sf_enableswitch_init) \
     X(cds_sl_sf_enableswitch_cycle) \
     X(cds_sl_sf_twohandcontroltypeii_init) \

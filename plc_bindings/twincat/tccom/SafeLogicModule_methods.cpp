@@ -1510,6 +1510,60 @@ HRESULT CSafeLogicModule::sl_sf_outcontrol_cycle(PVOID pFb, int32_t *pnResult, u
     return S_OK;
 }
 
+HRESULT CSafeLogicModule::sl_sf_resetbutton_init(PVOID pFb, int32_t *pnResult)
+{
+    if (pFb == NULL || pnResult == NULL) {
+        return E_POINTER;
+    }
+    *pnResult = ::sl_sf_resetbutton_init(static_cast<struct SF_ResetButton *>(pFb));
+    return S_OK;
+}
+
+HRESULT CSafeLogicModule::sl_sf_resetbutton_cycle(PVOID pFb, int32_t *pnResult, uint32_t tNow)
+{
+    if (pFb == NULL || pnResult == NULL) {
+        return E_POINTER;
+    }
+    *pnResult = ::sl_sf_resetbutton_cycle(static_cast<struct SF_ResetButton *>(pFb), tNow);
+    return S_OK;
+}
+
+HRESULT CSafeLogicModule::sl_sf_edm_init(PVOID pFb, int32_t *pnResult)
+{
+    if (pFb == NULL || pnResult == NULL) {
+        return E_POINTER;
+    }
+    *pnResult = ::sl_sf_edm_init(static_cast<struct SF_EDM *>(pFb));
+    return S_OK;
+}
+
+HRESULT CSafeLogicModule::sl_sf_edm_cycle(PVOID pFb, int32_t *pnResult, uint32_t tNow)
+{
+    if (pFb == NULL || pnResult == NULL) {
+        return E_POINTER;
+    }
+    *pnResult = ::sl_sf_edm_cycle(static_cast<struct SF_EDM *>(pFb), tNow);
+    return S_OK;
+}
+
+HRESULT CSafeLogicModule::sl_sf_testablesafetysensor_init(PVOID pFb, int32_t *pnResult)
+{
+    if (pFb == NULL || pnResult == NULL) {
+        return E_POINTER;
+    }
+    *pnResult = ::sl_sf_testablesafetysensor_init(static_cast<struct SF_TestableSafetySensor *>(pFb));
+    return S_OK;
+}
+
+HRESULT CSafeLogicModule::sl_sf_testablesafetysensor_cycle(PVOID pFb, int32_t *pnResult, uint32_t tNow)
+{
+    if (pFb == NULL || pnResult == NULL) {
+        return E_POINTER;
+    }
+    *pnResult = ::sl_sf_testablesafetysensor_cycle(static_cast<struct SF_TestableSafetySensor *>(pFb), tNow);
+    return S_OK;
+}
+
 HRESULT CSafeLogicModule::sl_sf_enableswitch_init(PVOID pFb, int32_t *pnResult)
 {
     if (pFb == NULL || pnResult == NULL) {
