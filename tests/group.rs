@@ -728,3 +728,31 @@ fn every_private_word_of_the_group_is_checked() {
         );
     }
 }
+
+#[test]
+fn only_the_groups_own_link_count_is_applied() {
+    // A link table longer than the group's link count: the entries after the count (never
+    // added, never checked) are not applied, whatever they hold.
+    let (mut e, mut a) = (estop_pair(), and2());
+    a.bAndIn2 = 1;
+    let mut g = new_group(2, 2);
+    let mut links = [SL_LINK::default(); 2];
+    let mut ms: [&mut dyn Member; 2] = [&mut e, &mut a];
+    assert_eq!(
+        group::add_link(
+            &mut g,
+            &mut ms[..],
+            &mut links,
+            link(0, ESTOP_OUT, 1, AND_IN1)
+        ),
+        SL_OK
+    );
+    assert_eq!(g.nLinks, 1);
+    links[1] = link(0, ESTOP_OUT, 1, AND_IN2);
+    g.bRun = 1;
+    for t in 0..3 {
+        assert_eq!(group::cycle(&mut g, &mut ms[..], &links, t), SL_OK);
+        assert_eq!(ms[0].output(ESTOP_OUT), Some(0));
+    }
+    assert_eq!(a.bAndIn2, 1, "the link after the count was applied");
+}
