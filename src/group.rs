@@ -349,7 +349,7 @@ macro_rules! impl_member {
 #[macro_export]
 macro_rules! impl_sf_member {
     ($ty:ty {
-        info: $info:expr,
+        tag: $tag:expr,
         input: [$($i:ident),* $(,)?],
         param: [$($p:ident),* $(,)?],
         output: [$($o:ident),* $(,)?] $(,)?
@@ -372,6 +372,14 @@ macro_rules! impl_sf_member {
                 $crate::impl_sf_member!(@activate self $(, $act)?) = v;
             }
         }
+        impl $ty {
+            /// The current state (`None`: a library fault, or a corrupt private state).
+            pub fn diag_state(&self) -> Option<<Self as $crate::prim::sf::SfBlock>::Diag> {
+                <<Self as $crate::prim::sf::SfBlock>::Diag as $crate::prim::sf::DiagState>::decode(
+                    self.stPrivate.stHeader.wDiag,
+                )
+            }
+        }
         impl $crate::registry::Cyclic for $ty {
             const MAGIC: u16 = <Self as $crate::prim::sf::SfBlock>::MAGIC;
             fn init_fb(&mut self) -> $crate::types::Status {
@@ -389,7 +397,15 @@ macro_rules! impl_sf_member {
             }
         }
         impl $crate::registry::Registered for $ty {
-            const INFO: $crate::blocks::BlockInfo = $info;
+            // The name is the struct's (the PLCopen FB name), the DiagCode texts are its
+            // states'; the group-level states are the family's.
+            const INFO: $crate::blocks::BlockInfo = $crate::blocks::BlockInfo {
+                tag: $tag,
+                name: stringify!($ty),
+                states: <$crate::prim::sf::SfPhase as $crate::registry::BlockState>::TABLE,
+                diag: &[],
+                diag_values: <<$ty as $crate::prim::sf::SfBlock>::Diag as $crate::prim::sf::DiagState>::TEXTS,
+            };
             type State = $crate::prim::sf::SfPhase;
             const FIELDS: &'static [$crate::registry::Field] = &[
                 $($crate::impl_member!(@field $i, Input, io_kind),)*

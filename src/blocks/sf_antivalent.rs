@@ -39,4 +39,4 @@ pub struct SF_Antivalent {
     pub stPrivate: SL_SF_PRIVATE,
 }
 
-crate::pair_block!(SF_Antivalent, SL_TYPE_SF_ANTIVALENT, "SF_Antivalent", S_ChannelNC, S_ChannelNO, b_negated: true, S_AntivalentOut);
+crate::pair_block!(SF_Antivalent, SL_TYPE_SF_ANTIVALENT, S_ChannelNC, S_ChannelNO, b_negated: true, S_AntivalentOut);

@@ -188,13 +188,7 @@ pub struct SF_EDM {
 }
 
 crate::impl_sf_member!(SF_EDM {
-    info: crate::blocks::BlockInfo {
-        tag: SL_TYPE_SF_EDM,
-        name: "SF_EDM",
-        states: <crate::prim::sf::SfPhase as crate::registry::BlockState>::TABLE,
-        diag: &[],
-        diag_values: <SfEdmState as crate::prim::sf::DiagState>::TEXTS,
-    },
+    tag: SL_TYPE_SF_EDM,
     input: [Activate, S_OutControl, EDM1, EDM2, S_StartReset, Reset],
     param: [nDiagProfile, MonitoringTime],
     output: [Ready, S_EDM_Out, SafetyDemand, ResetRequest, Error],
@@ -284,11 +278,6 @@ impl SF_EDM {
             aReserved2: [0; 4],
             stPrivate: SL_SF_PRIVATE::ZERO,
         }
-    }
-
-    /// The current state (`None`: a library fault, or a corrupt private state).
-    pub fn diag_state(&self) -> Option<SfEdmState> {
-        <SfEdmState as sf::DiagState>::decode(self.stPrivate.stHeader.wDiag)
     }
 }
 

@@ -45,4 +45,4 @@ pub struct SF_EmergencyStop {
     pub stPrivate: SL_SF_PRIVATE,
 }
 
-crate::restart_interlock_block!(SF_EmergencyStop, SL_TYPE_SF_EMERGENCYSTOP, "SF_EmergencyStop", S_EStopIn, S_EStopOut, has_v10: true);
+crate::restart_interlock_block!(SF_EmergencyStop, SL_TYPE_SF_EMERGENCYSTOP, S_EStopIn, S_EStopOut, has_v10: true);

@@ -138,13 +138,7 @@ pub struct SF_EnableSwitch {
 }
 
 crate::impl_sf_member!(SF_EnableSwitch {
-    info: crate::blocks::BlockInfo {
-        tag: SL_TYPE_SF_ENABLESWITCH,
-        name: "SF_EnableSwitch",
-        states: <crate::prim::sf::SfPhase as crate::registry::BlockState>::TABLE,
-        diag: &[],
-        diag_values: <EnableSwitchState as crate::prim::sf::DiagState>::TEXTS,
-    },
+    tag: SL_TYPE_SF_ENABLESWITCH,
     input: [
         Activate,
         S_SafetyActive,
@@ -215,13 +209,6 @@ impl crate::prim::sf::SfBlock for SF_EnableSwitch {
         self.ResetRequest = u8::from(o.reset_request);
         self.Error = u8::from(o.error);
         self.DiagCode = o.diag_code;
-    }
-}
-
-impl SF_EnableSwitch {
-    /// The current state (`None`: a library fault, or a corrupt private state).
-    pub fn diag_state(&self) -> Option<EnableSwitchState> {
-        <EnableSwitchState as crate::prim::sf::DiagState>::decode(self.stPrivate.stHeader.wDiag)
     }
 }
 

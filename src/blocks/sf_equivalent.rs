@@ -39,4 +39,4 @@ pub struct SF_Equivalent {
     pub stPrivate: SL_SF_PRIVATE,
 }
 
-crate::pair_block!(SF_Equivalent, SL_TYPE_SF_EQUIVALENT, "SF_Equivalent", S_ChannelA, S_ChannelB, b_negated: false, S_EquivalentOut);
+crate::pair_block!(SF_Equivalent, SL_TYPE_SF_EQUIVALENT, S_ChannelA, S_ChannelB, b_negated: false, S_EquivalentOut);

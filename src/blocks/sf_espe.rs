@@ -45,4 +45,4 @@ pub struct SF_ESPE {
     pub stPrivate: SL_SF_PRIVATE,
 }
 
-crate::restart_interlock_block!(SF_ESPE, SL_TYPE_SF_ESPE, "SF_ESPE", S_ESPE_In, S_ESPE_Out, has_v10: true);
+crate::restart_interlock_block!(SF_ESPE, SL_TYPE_SF_ESPE, S_ESPE_In, S_ESPE_Out, has_v10: true);

@@ -8,7 +8,7 @@
 //! (`nDiagProfile`; docs/semantics.md QG1–QG5).
 
 use crate::prim::bools;
-use crate::prim::sf::{DiagState, ResetIn, SfBlock, SfConsts, SfOut, SL_SF_PRIVATE};
+use crate::prim::sf::{ResetIn, SfBlock, SfConsts, SfOut, SL_SF_PRIVATE};
 use crate::prim::time;
 use crate::types::SL_BOOL;
 
@@ -91,13 +91,7 @@ pub struct SF_Guard {
 }
 
 crate::impl_sf_member!(SF_Guard {
-    info: crate::blocks::BlockInfo {
-        tag: SL_TYPE_SF_GUARD,
-        name: "SF_Guard",
-        states: <crate::prim::sf::SfPhase as crate::registry::BlockState>::TABLE,
-        diag: &[],
-        diag_values: <SfGuardState as DiagState>::TEXTS,
-    },
+    tag: SL_TYPE_SF_GUARD,
     input: [
         Activate,
         S_GuardSwitch1,
@@ -218,11 +212,6 @@ impl SF_Guard {
             DiagCode: 0,
             stPrivate: SL_SF_PRIVATE::ZERO,
         }
-    }
-
-    /// The current state (`None`: a library fault, or a corrupt private state).
-    pub fn diag_state(&self) -> Option<SfGuardState> {
-        SfGuardState::decode(self.stPrivate.stHeader.wDiag)
     }
 }
 

@@ -184,13 +184,7 @@ pub struct SF_ModeSelector {
 }
 
 crate::impl_sf_member!(SF_ModeSelector {
-    info: crate::blocks::BlockInfo {
-        tag: SL_TYPE_SF_MODESELECTOR,
-        name: "SF_ModeSelector",
-        states: <crate::prim::sf::SfPhase as crate::registry::BlockState>::TABLE,
-        diag: &[],
-        diag_values: <ModeState as DiagState>::TEXTS,
-    },
+    tag: SL_TYPE_SF_MODESELECTOR,
     input: [
         Activate, S_Mode0, S_Mode1, S_Mode2, S_Mode3, S_Mode4, S_Mode5, S_Mode6, S_Mode7, S_Unlock,
         S_SetMode, Reset,
@@ -328,13 +322,6 @@ impl crate::prim::sf::SfBlock for SF_ModeSelector {
         self.ResetRequest = u8::from(o.reset_request);
         self.Error = u8::from(o.error);
         self.DiagCode = o.diag_code;
-    }
-}
-
-impl SF_ModeSelector {
-    /// The current state (`None`: a library fault, or a corrupt private state).
-    pub fn diag_state(&self) -> Option<ModeState> {
-        <ModeState as DiagState>::decode(self.stPrivate.stHeader.wDiag)
     }
 }
 

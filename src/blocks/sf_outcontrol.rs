@@ -9,7 +9,7 @@
 
 use crate::prim::bools;
 use crate::prim::header::F_ERRACK_PREV;
-use crate::prim::sf::{DiagState, ResetIn, SfBlock, SfConsts, SfOut, SL_SF_PRIVATE};
+use crate::prim::sf::{ResetIn, SfBlock, SfConsts, SfOut, SL_SF_PRIVATE};
 use crate::types::SL_BOOL;
 
 /// Block type tag of SF_OutControl (`SL_MEMBER.nType`, `sl_diag_text`).
@@ -93,13 +93,7 @@ pub struct SF_OutControl {
 }
 
 crate::impl_sf_member!(SF_OutControl {
-    info: crate::blocks::BlockInfo {
-        tag: SL_TYPE_SF_OUTCONTROL,
-        name: "SF_OutControl",
-        states: <crate::prim::sf::SfPhase as crate::registry::BlockState>::TABLE,
-        diag: &[],
-        diag_values: <OutControlState as DiagState>::TEXTS,
-    },
+    tag: SL_TYPE_SF_OUTCONTROL,
     input: [
         Activate,
         S_SafeControl,
@@ -234,11 +228,6 @@ impl SF_OutControl {
             DiagCode: 0,
             stPrivate: SL_SF_PRIVATE::ZERO,
         }
-    }
-
-    /// The current state (`None`: a library fault, or a corrupt private state).
-    pub fn diag_state(&self) -> Option<OutControlState> {
-        OutControlState::decode(self.stPrivate.stHeader.wDiag)
     }
 }
 

@@ -63,16 +63,9 @@ pub fn next(s: PairState, i: &PairIn, in_state: u32, t: u32) -> PairState {
 #[macro_export]
 #[doc(hidden)]
 macro_rules! pair_block {
-    ($ty:ident, $tag:expr, $name:literal, $a:ident, $b:ident, b_negated: $neg:expr, $output:ident) => {
+    ($ty:ident, $tag:expr, $a:ident, $b:ident, b_negated: $neg:expr, $output:ident) => {
         $crate::impl_sf_member!($ty {
-            info: $crate::blocks::BlockInfo {
-                tag: $tag,
-                name: $name,
-                states: <$crate::prim::sf::SfPhase as $crate::registry::BlockState>::TABLE,
-                diag: &[],
-                diag_values:
-                    <$crate::blocks::sf_pair::PairState as $crate::prim::sf::DiagState>::TEXTS,
-            },
+            tag: $tag,
             input: [Activate, $a, $b],
             param: [nDiagProfile, DiscrepancyTime],
             output: [Ready, $output, SafetyDemand, Error],
@@ -145,13 +138,6 @@ macro_rules! pair_block {
                     DiagCode: 0,
                     stPrivate: $crate::prim::sf::SL_SF_PRIVATE::ZERO,
                 }
-            }
-
-            /// The current state (`None`: a library fault, or a corrupt private state).
-            pub fn diag_state(&self) -> Option<$crate::blocks::sf_pair::PairState> {
-                <$crate::blocks::sf_pair::PairState as $crate::prim::sf::DiagState>::decode(
-                    self.stPrivate.stHeader.wDiag,
-                )
             }
         }
 

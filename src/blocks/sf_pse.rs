@@ -45,4 +45,4 @@ pub struct SF_PSE {
     pub stPrivate: SL_SF_PRIVATE,
 }
 
-crate::restart_interlock_block!(SF_PSE, SL_TYPE_SF_PSE, "SF_PSE", S_PSE_In, S_PSE_Out, has_v10: false);
+crate::restart_interlock_block!(SF_PSE, SL_TYPE_SF_PSE, S_PSE_In, S_PSE_Out, has_v10: false);

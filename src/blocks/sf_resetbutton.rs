@@ -91,13 +91,7 @@ pub struct SF_ResetButton {
 }
 
 crate::impl_sf_member!(SF_ResetButton {
-    info: crate::blocks::BlockInfo {
-        tag: SL_TYPE_SF_RESETBUTTON,
-        name: "SF_ResetButton",
-        states: <crate::prim::sf::SfPhase as crate::registry::BlockState>::TABLE,
-        diag: &[],
-        diag_values: <ResetButtonState as crate::prim::sf::DiagState>::TEXTS,
-    },
+    tag: SL_TYPE_SF_RESETBUTTON,
     input: [ResetRequested, ResetIn],
     param: [nDiagProfile, TrailingMinimum, TrailingMaximum],
     output: [Ready, ResetOut, Error],
@@ -170,11 +164,6 @@ impl SF_ResetButton {
             aReserved2: [0; 6],
             stPrivate: SL_SF_PRIVATE::ZERO,
         }
-    }
-
-    /// The current state (`None`: a library fault, or a corrupt private state).
-    pub fn diag_state(&self) -> Option<ResetButtonState> {
-        <ResetButtonState as crate::prim::sf::DiagState>::decode(self.stPrivate.stHeader.wDiag)
     }
 }
 

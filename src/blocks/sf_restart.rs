@@ -63,15 +63,9 @@ pub fn next(s: RestartState, i: &RestartIn, r: ResetIn) -> RestartState {
 #[macro_export]
 #[doc(hidden)]
 macro_rules! restart_interlock_block {
-    ($ty:ident, $tag:expr, $name:literal, $input:ident, $output:ident, has_v10: $v10:expr) => {
+    ($ty:ident, $tag:expr, $input:ident, $output:ident, has_v10: $v10:expr) => {
         $crate::impl_sf_member!($ty {
-            info: $crate::blocks::BlockInfo {
-                tag: $tag,
-                name: $name,
-                states: <$crate::prim::sf::SfPhase as $crate::registry::BlockState>::TABLE,
-                diag: &[],
-                diag_values: <$crate::blocks::sf_restart::RestartState as $crate::prim::sf::DiagState>::TEXTS,
-            },
+            tag: $tag,
             input: [Activate, $input, S_StartReset, S_AutoReset, Reset],
             param: [nDiagProfile],
             output: [Ready, $output, SafetyDemand, ResetRequest, Error],
@@ -95,7 +89,8 @@ macro_rules! restart_interlock_block {
             }
             #[inline(always)]
             fn decode(&self) -> (Self::In, bool) {
-                let p = $crate::prim::bools::pack([self.$input, self.S_StartReset, self.S_AutoReset]);
+                let p =
+                    $crate::prim::bools::pack([self.$input, self.S_StartReset, self.S_AutoReset]);
                 let v = $crate::prim::bools::logical(p, 0b111, 0);
                 (
                     $crate::blocks::sf_restart::RestartIn {
@@ -147,13 +142,6 @@ macro_rules! restart_interlock_block {
                     DiagCode: 0,
                     stPrivate: $crate::prim::sf::SL_SF_PRIVATE::ZERO,
                 }
-            }
-
-            /// The current state (`None`: a library fault, or a corrupt private state).
-            pub fn diag_state(&self) -> Option<$crate::blocks::sf_restart::RestartState> {
-                <$crate::blocks::sf_restart::RestartState as $crate::prim::sf::DiagState>::decode(
-                    self.stPrivate.stHeader.wDiag,
-                )
             }
         }
 

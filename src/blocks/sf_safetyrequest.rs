@@ -7,7 +7,7 @@
 //! and then `S_OpMode` TRUE (docs/semantics.md QR1–QR6).
 
 use crate::prim::bools;
-use crate::prim::sf::{DiagState, ResetIn, SfBlock, SfConsts, SfOut, SL_SF_PRIVATE};
+use crate::prim::sf::{ResetIn, SfBlock, SfConsts, SfOut, SL_SF_PRIVATE};
 use crate::prim::time;
 use crate::types::SL_BOOL;
 
@@ -85,13 +85,7 @@ pub struct SF_SafetyRequest {
 }
 
 crate::impl_sf_member!(SF_SafetyRequest {
-    info: crate::blocks::BlockInfo {
-        tag: SL_TYPE_SF_SAFETYREQUEST,
-        name: "SF_SafetyRequest",
-        states: <crate::prim::sf::SfPhase as crate::registry::BlockState>::TABLE,
-        diag: &[],
-        diag_values: <SafetyRequestState as DiagState>::TEXTS,
-    },
+    tag: SL_TYPE_SF_SAFETYREQUEST,
     input: [Activate, S_OpMode, S_Acknowledge, S_StartReset, Reset],
     param: [nDiagProfile, MonitoringTime],
     output: [
@@ -212,11 +206,6 @@ impl SF_SafetyRequest {
             DiagCode: 0,
             stPrivate: SL_SF_PRIVATE::ZERO,
         }
-    }
-
-    /// The current state (`None`: a library fault, or a corrupt private state).
-    pub fn diag_state(&self) -> Option<SafetyRequestState> {
-        SafetyRequestState::decode(self.stPrivate.stHeader.wDiag)
     }
 }
 

@@ -169,13 +169,7 @@ pub struct SF_TestableSafetySensor {
 }
 
 crate::impl_sf_member!(SF_TestableSafetySensor {
-    info: crate::blocks::BlockInfo {
-        tag: SL_TYPE_SF_TESTABLESAFETYSENSOR,
-        name: "SF_TestableSafetySensor",
-        states: <crate::prim::sf::SfPhase as crate::registry::BlockState>::TABLE,
-        diag: &[],
-        diag_values: <TssState as crate::prim::sf::DiagState>::TEXTS,
-    },
+    tag: SL_TYPE_SF_TESTABLESAFETYSENSOR,
     input: [
         Activate,
         S_OSSD_In,
@@ -299,11 +293,6 @@ impl SF_TestableSafetySensor {
             aReserved1: [0; 2],
             stPrivate: SL_SF_PRIVATE::ZERO,
         }
-    }
-
-    /// The current state (`None`: a library fault, or a corrupt private state).
-    pub fn diag_state(&self) -> Option<TssState> {
-        <TssState as sf::DiagState>::decode(self.stPrivate.stHeader.wDiag)
     }
 }
 

@@ -125,16 +125,9 @@ pub fn next_ii(s: TwoHandIIState, i: &TwoHandIn, _in_state: u32) -> TwoHandIISta
 #[macro_export]
 #[doc(hidden)]
 macro_rules! two_hand_block {
-    ($ty:ident, $tag:expr, $name:literal, $diag:ident, $next:ident) => {
+    ($ty:ident, $tag:expr, $diag:ident, $next:ident) => {
         $crate::impl_sf_member!($ty {
-            info: $crate::blocks::BlockInfo {
-                tag: $tag,
-                name: $name,
-                states: <$crate::prim::sf::SfPhase as $crate::registry::BlockState>::TABLE,
-                diag: &[],
-                diag_values:
-                    <$crate::blocks::sf_twohand::$diag as $crate::prim::sf::DiagState>::TEXTS,
-            },
+            tag: $tag,
             input: [Activate, S_Button1, S_Button2],
             param: [nDiagProfile],
             output: [Ready, S_TwoHandOut, SafetyDemand, Error],
@@ -184,15 +177,6 @@ macro_rules! two_hand_block {
                 self.SafetyDemand = u8::from(o.safety_demand);
                 self.Error = u8::from(o.error);
                 self.DiagCode = o.diag_code;
-            }
-        }
-
-        impl $ty {
-            /// The current state (`None`: a library fault, or a corrupt private state).
-            pub fn diag_state(&self) -> Option<$crate::blocks::sf_twohand::$diag> {
-                <$crate::blocks::sf_twohand::$diag as $crate::prim::sf::DiagState>::decode(
-                    self.stPrivate.stHeader.wDiag,
-                )
             }
         }
 

@@ -42,7 +42,6 @@ pub struct SF_TwoHandControlTypeII {
 crate::two_hand_block!(
     SF_TwoHandControlTypeII,
     SL_TYPE_SF_TWOHANDCONTROLTYPEII,
-    "SF_TwoHandControlTypeII",
     TwoHandIIState,
     next_ii
 );

@@ -42,7 +42,6 @@ pub struct SF_TwoHandControlTypeIII {
 crate::two_hand_block!(
     SF_TwoHandControlTypeIII,
     SL_TYPE_SF_TWOHANDCONTROLTYPEIII,
-    "SF_TwoHandControlTypeIII",
     TwoHandIIIState,
     next_iii
 );
