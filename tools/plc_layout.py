@@ -118,6 +118,19 @@ def is_reserved(name: str) -> bool:
     return re.fullmatch(r"aReserved\d*", name) is not None
 
 
+def library_fields(header: Path) -> set:
+    """(struct, field) the library keeps for itself (documented "Private:" in the header, as
+    SF_ModeSelector's tModesOff): in the DUT, not in the FB (plcgen.is_reserved)."""
+    sys.path.insert(0, str(Path(__file__).resolve().parent))
+    import plcgen
+    hdr = plcgen.parse_header(header.read_text(encoding="utf-8"))
+    return {(st.name, f.name) for st in hdr.structs.values() for f in st.fields
+            if plcgen.is_reserved(f) and not is_reserved(f.name)}
+
+
+LIBRARY_FIELDS: set = set()  # filled in main from the header the bindings were made from
+
+
 # ---------------------------------------------------------------------------------------
 # ST side (blark)
 # ---------------------------------------------------------------------------------------
@@ -358,7 +371,8 @@ def check_fbs(src: Source, csizes, cmembers) -> None:
         blocks = src.fbs[fbname]
         ins = blocks.get("VAR_INPUT", [])
         outs = blocks.get("VAR_OUTPUT", [])
-        public = [m for m in cmembers[cname] if not is_reserved(m.name) and not is_nested_struct(m, src, cname)]
+        public = [m for m in cmembers[cname] if not is_reserved(m.name) and (cname, m.name) not in LIBRARY_FIELDS
+                  and not is_nested_struct(m, src, cname)]
         byname = {m.name: m for m in public}
         seen_in = [n for n, _, _ in ins if n != "tNow"]
         seen_out = [n for n, _, _ in outs if n != "nStatus"]
@@ -395,7 +409,8 @@ def check_fbs(src: Source, csizes, cmembers) -> None:
             R.ok(re.search(r"tNow := (SL_TIME_NOW_MS\(EN := TRUE\)|TIME_TO_UDINT\(TIME\(\)\));", flat) is not None,
                  f"{src.label}: block {cname}: body does not read the time before the call")
         for n in seen_in:
-            R.ok(re.search(rf"stData\.{n}(\[\d+\])? := (TIME_TO_UDINT\()?{n}\b", flat) is not None,
+            R.ok(re.search(rf"stData\.{n}(\[\d+\])? := (TIME_TO_UDINT\(|SL_TIME_TO_MS\(tIn := )?{n}\b", flat)
+                 is not None,
                  f"{src.label}: block {cname} field {n}: input not copied into stData")
         for n in seen_out:
             R.ok(re.search(rf"\b{n}(\[\d+\])? := (UDINT_TO_TIME\()?stData\.{n}\b", flat) is not None,
@@ -449,6 +464,11 @@ def main() -> int:
     ap.add_argument("--sources", default="twincat-xml,twincat-st,codesys,iec",
                     help="comma list of: twincat-xml, twincat-st, codesys, iec (default: all)")
     args = ap.parse_args()
+    # The header the bindings were generated from: the repository's, or the synthetic one
+    # beside the synthetic bindings (tools/plc_synthetic.py).
+    header = next(h for h in (args.bindings.parent / "include/safelogic.h", args.bindings.parent / "safelogic.h")
+                  if h.exists())
+    LIBRARY_FIELDS.update(library_fields(header))
     wanted = set(args.sources.split(","))
     csizes, cmembers = read_c_layout(args.c_layout)
     b = args.bindings

@@ -404,6 +404,17 @@ def is_table(f: CField) -> bool:
     return f.is_struct and f.count is not None
 
 
+# The generated CODESYS adapter test drives most BOOL inputs as random signals; these
+# PLCopen inputs are held instead, or the block would (almost) never run: SF_EnableSwitch
+# needs the safety function active and channel 2 closed while channel 1 moves between
+# positions 1 and 2; SF_ModeSelector exactly one mode (mode 1) and S_Unlock TRUE.
+ADAPTER_HOLD = {
+    "SF_EnableSwitch": {"S_SafetyActive": 1, "S_EnableSwitchCh2": 1},
+    "SF_ModeSelector": {"S_Unlock": 1, "S_Mode1": 1,
+                        **{f"S_Mode{i}": 0 for i in (0, 2, 3, 4, 5, 6, 7)}},
+}
+
+
 def is_time_ms(f: CField) -> bool:
     """tDelay, atTimes (TwinSAFE), DiscrepancyTime, MonitoringTime, TrailingMinimum /
     TrailingMaximum (PLCopen's TIME inputs)."""
@@ -1690,9 +1701,12 @@ def adapter_test_c(hdr: Header) -> str:
         # SF_ResetButton's ResetRequested (its activation) is driven like bRun: were it to
         # follow the other signals, a press could never outlast TrailingMinimum.
         held = ("bRun", "ResetRequested")
+        # Inputs a random walk would almost never set right for the block to run, held at a
+        # value instead (the adapter is compared with the direct call either way).
+        hold = ADAPTER_HOLD.get(s, {})
         sig = [f for f in b.inputs if C_SCALARS.get(f.ctype, (0, 0, False))[2] and f.count is None
-               and f.name not in held]
-        params = [f for f in b.inputs if f not in sig and f.name not in held]
+               and f.name not in held and f.name not in hold]
+        params = [f for f in b.inputs if f not in sig and f.name not in held and f.name not in hold]
         nsig = len([f for f in sig if f.name not in ("bErrAck",)])
         mask = (1 << min(nsig, 16)) - 1
         # Analog inputs have their wInputActive bit in their doc comment ("active bit 8").
@@ -1850,6 +1864,8 @@ def adapter_test_c(hdr: Header) -> str:
         for h in held:
             if any(f.name == h for f in b.inputs):
                 out.append(f"            a.{h} = b.{h} = (uint8_t)(k >= 2 && rnd() % 100u != 0u);")
+        for h, v in hold.items():
+            out.append(f"            a.{h} = b.{h} = {v}u;")
         if bump:
             f = bump[0]
             out.append(f"            if (valid && k == bump) {{ a.{f.name}++; b.{f.name}++; }} /* changed while running: ERROR */")
