@@ -6,70 +6,15 @@
 //! from the table, compiled against include/safelogic.h); and at depth, 10,000 sequences
 //! from valid configurations per type with the safety invariants after every call.
 
-use safelogic::registry::{block_type, BlockType, Dir, Kind, BLOCKS};
+use safelogic::registry::{block_type, Dir, Kind, BLOCKS};
 mod common;
+#[path = "common/invariants.rs"]
+mod invariants;
 
 use common::Rng;
+use invariants::*;
 use safelogic::*;
 use std::collections::BTreeSet;
-
-fn read(bytes: &[u8], offset: u16, kind: Kind) -> u32 {
-    let o = usize::from(offset);
-    match kind.size() {
-        1 => u32::from(bytes[o]),
-        2 => u32::from(u16::from_ne_bytes([bytes[o], bytes[o + 1]])),
-        _ => u32::from_ne_bytes([bytes[o], bytes[o + 1], bytes[o + 2], bytes[o + 3]]),
-    }
-}
-
-const DOCUMENTED: [i32; 7] = [
-    SL_OK,
-    SL_E_CONFIG,
-    SL_E_PARAM_CHANGED,
-    SL_E_CORRUPT,
-    SL_E_INVALID_BOOL,
-    SL_E_CLOCK,
-    SL_E_RESTORE,
-];
-
-/// The invariants after one call, read from the instance's bytes.
-fn check(t: &BlockType, bytes: &[u8], status: i32, what: &str) -> u8 {
-    let name = t.info.name;
-    assert!(
-        DOCUMENTED.contains(&status),
-        "{name} {what}: status {status}"
-    );
-    let state = bytes[usize::from(t.field("nState").unwrap().offset)];
-    assert!(
-        t.info.states.iter().any(|(v, _)| *v == state),
-        "{name} {what}: state {state} is not one of the block's"
-    );
-    let safe_state = matches!(state, SL_STATE_STOP | SL_STATE_ERROR | SL_STATE_RESET);
-    let refused = matches!(
-        status,
-        SL_E_CONFIG | SL_E_CORRUPT | SL_E_CLOCK | SL_E_PARAM_CHANGED
-    );
-    for f in t.fields.iter().filter(|f| f.dir == Dir::Output) {
-        let v = read(bytes, f.offset, f.kind);
-        if f.kind == Kind::Bool {
-            assert!(v <= 1, "{name} {what}: {} = {v}", f.name);
-        }
-        if f.name == "bError" {
-            assert_eq!(
-                v == 1,
-                state == SL_STATE_ERROR,
-                "{name} {what}: bError in state {state}"
-            );
-        } else if safe_state || refused {
-            assert_eq!(
-                v, 0,
-                "{name} {what}: {} TRUE/non-zero in state {state}, status {status}",
-                f.name
-            );
-        }
-    }
-    state
-}
 
 macro_rules! harness {
     ($($ty:ty => $init:ident, $cycle:ident;)*) => {
@@ -496,170 +441,12 @@ fn twinsafe_count() -> usize {
         .count()
 }
 
-/// The PLCopen invariants after one call (research §0.2, §3.2; issue 15 item 3), read from
-/// the instance's bytes through the field table: a documented status; a DiagCode of the
-/// block (either profile) or of the library; `Ready == (DiagCode != 0)`, `Error ==
-/// (DiagCode >= 0xC000)`, the safety output TRUE only at 0x8000 and never after a refusing
-/// status; in the v2.01 profile SafetyDemand = bit 0x0800 and ResetRequest = bit 0x0400
-/// with Reset FALSE; Activate not TRUE → DiagCode 0000 and every output FALSE. Returns the
-/// DiagCode.
-fn check_sf(t: &BlockType, bytes: &[u8], status: i32, what: &str) -> u16 {
-    let name = t.info.name;
-    assert!(
-        DOCUMENTED.contains(&status),
-        "{name} {what}: status {status}"
-    );
-    let get = |n: &str| t.field(n).map(|f| read(bytes, f.offset, f.kind));
-    let code = get("DiagCode").unwrap() as u16;
-    let library = [
-        SL_SF_DIAG_CORRUPT,
-        SL_SF_DIAG_CLOCK,
-        SL_SF_DIAG_CONST_CHANGED,
-        SL_SF_DIAG_CONFIG,
-    ];
-    assert!(
-        code == 0 || library.contains(&code) || t.info.diag_values.iter().any(|(c, _)| *c == code),
-        "{name} {what}: DiagCode {code:04X} is not one of the block's"
-    );
-    let flag = |n: &str| {
-        get(n).map(|v| {
-            assert!(v <= 1, "{name} {what}: {n} = {v}");
-            v == 1
-        })
-    };
-    assert_eq!(
-        flag("Ready"),
-        Some(code != 0),
-        "{name} {what}: Ready at {code:04X}"
-    );
-    assert_eq!(
-        flag("Error"),
-        Some(code >= 0xC000),
-        "{name} {what}: Error at {code:04X}"
-    );
-    let refused = matches!(
-        status,
-        SL_E_CONFIG | SL_E_CORRUPT | SL_E_CLOCK | SL_E_PARAM_CHANGED
-    );
-    let generic = ["Ready", "Error", "SafetyDemand", "ResetRequest"];
-    for f in t
-        .fields
-        .iter()
-        .filter(|f| f.dir == Dir::Output && !generic.contains(&f.name))
-    {
-        let on = flag(f.name).unwrap();
-        if let Some(want) = sf_sensor_output(name, f.name, code, library.contains(&code)) {
-            assert_eq!(on, want, "{name} {what}: {} at {code:04X}", f.name);
-            continue;
-        }
-        assert!(
-            !on || allowed_on(name, f.name, get("nDiagProfile"), code),
-            "{name} {what}: {} TRUE at {code:04X}",
-            f.name
-        );
-        assert!(
-            !on || !refused,
-            "{name} {what}: {} TRUE after status {status}",
-            f.name
-        );
-    }
-    if get("nDiagProfile") == Some(u32::from(SL_SF_PROFILE_V201)) && !library.contains(&code) {
-        if let Some(d) = flag("SafetyDemand") {
-            assert_eq!(
-                d,
-                code & 0x0800 != 0,
-                "{name} {what}: SafetyDemand at {code:04X}"
-            );
-        }
-        if let Some(r) = flag("ResetRequest") {
-            let reset = get("Reset") == Some(1);
-            assert_eq!(
-                r,
-                code & 0x0400 != 0 && !reset,
-                "{name} {what}: ResetRequest at {code:04X}"
-            );
-        }
-    }
-    if get(sf_activate_name(t)) != Some(1) {
-        assert_eq!(code, 0, "{name} {what}: Activate not TRUE");
-        for f in t
-            .fields
-            .iter()
-            .filter(|f| f.dir == Dir::Output && sf_sensor_output(name, f.name, 0, false).is_none())
-        {
-            assert_eq!(
-                read(bytes, f.offset, f.kind),
-                0,
-                "{name} {what}: {} idle",
-                f.name
-            );
-        }
-    }
-    code
-}
-
-/// Where a block's own output may be TRUE: at 0x8000, except an `S_` output whose table says
-/// otherwise — SF_SafetyRequest's S_SafetyRequest asks the actuator for the operation mode
-/// in OP_MODE and WAIT_FOR_CONF_OPMODE (research §4.14, semantics QR3), and only there.
-fn allowed_on(block: &str, output: &str, profile: Option<u32>, code: u16) -> bool {
-    match (block, output) {
-        ("SF_SafetyRequest", "S_SafetyRequest") => {
-            let op = if profile == Some(u32::from(SL_SF_PROFILE_V10)) {
-                [0x8002, 0x8012]
-            } else {
-                [0x8802, 0x8804]
-            };
-            op.contains(&code)
-        }
-        _ => code == 0x8000 || sf_holds_outputs(block, profile, code),
-    }
-}
-
-/// A state other than 0x8000 in which a block's safety outputs may be TRUE: SF_ModeSelector's
-/// MODE_LOCKED (v2.01 8010, v1.0 8004) holds the selected mode (research §9.3, semantics QM2).
-fn sf_holds_outputs(name: &str, profile: Option<u32>, code: u16) -> bool {
-    let locked = if profile == Some(u32::from(SL_SF_PROFILE_V10)) {
-        0x8004
-    } else {
-        0x8010
-    };
-    name == "SF_ModeSelector" && code == locked
-}
-
 /// The factor on the depth run's time steps (0–40 ms): SF_TwoHandControlTypeIII's fixed
 /// 500 ms synchronism time is reached in 24 calls only with longer steps.
 fn sf_time_scale(name: &str) -> u32 {
     match name {
         "SF_TwoHandControlTypeIII" => 15,
         _ => 1,
-    }
-}
-
-/// SF_TestableSafetySensor's own outputs, written from research §4.15 (ABB's per-state
-/// output table, PLCN; semantics QT5): S_OSSD_Out TRUE while the sensor is free (8010,
-/// 8000) and during the automatic test (8020, 8030); S_TestOut TRUE except in test phase 1
-/// (8020) and in a library fault (idle included: PLCN "S_TestOut = SAFETRUE"); TestPossible
-/// in 8010 and 8000; TestExecuted in 8000. `None`: not such an output (the generic rule).
-fn sf_sensor_output(block: &str, field: &str, code: u16, library: bool) -> Option<bool> {
-    if block != "SF_TestableSafetySensor" {
-        return None;
-    }
-    Some(match field {
-        "S_OSSD_Out" => [0x8000, 0x8010, 0x8020, 0x8030].contains(&code),
-        "S_TestOut" => !library && code != 0x8020,
-        "TestPossible" => code == 0x8000 || code == 0x8010,
-        "TestExecuted" => code == 0x8000,
-        _ => return None,
-    })
-}
-
-/// The input that activates a PLCopen block: `Activate`; SF_ResetButton has none, its
-/// `ResetRequested` plays the part (research §4.19).
-fn sf_activate_name(t: &BlockType) -> &'static str {
-    if t.field("Activate").is_some() {
-        "Activate"
-    } else {
-        "ResetRequested"
     }
 }
 

@@ -7,6 +7,9 @@ use safelogic::group;
 use safelogic::*;
 use std::ffi::c_void;
 
+#[path = "common/invariants.rs"]
+mod invariants;
+
 struct Fixture {
     g: SL_GROUP,
     members: [SL_MEMBER; 2],
@@ -784,5 +787,51 @@ fn ton2_elapsed_into_its_own_block_is_no_aliasing() {
         let out = std::ptr::addr_of_mut!((*t).tDelay);
         assert_eq!(ffi::sl_ton2_get_elapsed(t, out), SL_OK);
         assert_eq!((*t).tDelay, 0);
+    }
+}
+
+/// Fuzz regression (target `group`, 2026-11-26): a member whose bytes the caller
+/// re-initialises as another type (one whose private state lies where the member's does).
+/// The tag inside the private header no longer matches, so
+/// the member's own integrity check takes it for a corrupt instance of the member's type:
+/// SL_E_CORRUPT for the cycle, and the member's invariants hold read as its own type (no
+/// safety output TRUE after SL_E_CORRUPT). A TwinSAFE member enters ERROR and stops the
+/// group; an `SF_` member with Activate FALSE returns to IDLE (semantics PO7), which the
+/// group reads as STOP.
+#[test]
+fn member_reinitialised_as_another_type_is_corrupt() {
+    for (member, other) in [
+        (SL_TYPE_SF_GUARD, SL_TYPE_SF_ENABLESWITCH),
+        (SL_TYPE_SF_EMERGENCYSTOP, SL_TYPE_SF_ESPE),
+        (SL_TYPE_ESTOP, SL_TYPE_MON),
+        (SL_TYPE_AND, SL_TYPE_OR),
+    ] {
+        let t = safelogic::registry::block_type(member).unwrap();
+        let mem = Mem::new();
+        let (g, m, l) = group_in(&mem);
+        let b: *mut c_void = match member {
+            SL_TYPE_ESTOP => estop_at(&mem, 1024).cast(),
+            SL_TYPE_AND => and_at(&mem, 1024).cast(),
+            _ => mem.at(1024),
+        };
+        if invariants::is_sf(t) {
+            assert_eq!(init_fn(member)(b), SL_OK, "{member}");
+        }
+        assert_eq!(add(g, m, member, b), SL_OK, "{member}");
+        // SAFETY: arena memory; no reference outlives a statement.
+        unsafe { (*g).bRun = 1 };
+        assert_eq!(gcycle(g, m, l, 0), SL_OK, "{member}");
+        assert_eq!(state(g).nState, SL_STATE_RUN, "{member}");
+        init_fn(other)(b);
+        let rc = gcycle(g, m, l, 10);
+        assert_eq!(rc, SL_E_CORRUPT, "{member} over {other}");
+        // SAFETY: `t.size` bytes of arena memory from 1024, read by value.
+        let bytes = unsafe { std::slice::from_raw_parts(mem.at::<u8>(1024), t.size) }.to_vec();
+        invariants::check_any(t, &bytes, rc, "re-initialised as another type");
+        if !invariants::is_sf(t) {
+            let gs = state(g);
+            assert_eq!(gs.nState, SL_STATE_ERROR, "{member} over {other}");
+            assert_eq!((gs.bInRun, gs.bFbRun), (0, 0), "{member} over {other}");
+        }
     }
 }

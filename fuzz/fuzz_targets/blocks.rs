@@ -196,7 +196,7 @@ fn walk(sel: u8, inp: &mut Input, fns: &[(u16, InitFn, Call)]) {
         // SAFETY: as above.
         let rc = unsafe { cycle(p, now) };
         let b = bytes(p);
-        let state = check_block(t, &b, rc);
+        let state = check(t, &b, rc, "walk");
         let out = |name: &str| b[usize::from(t.field(name).unwrap().offset)];
         if tag == SL_TYPE_MUTING {
             // MutingActive exactly in MUTING1…MUTING9, where both outputs stay on.
