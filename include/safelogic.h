@@ -12787,7 +12787,9 @@ int32_t sl_ton2_restore_elapsed(struct FB_TON2 *fb, uint32_t nElapsedMs);
  every later sl_group_* call. Does not modify the group's input fields. Checks before it
  writes: a refused init (SL_E_NULL, SL_E_ALIGNMENT, SL_E_CONFIG for bConnections > 1, a
  group still in RUN/START, or tables that share a byte with each other or the group)
- changes nothing.
+ changes nothing. An accepted init zeroes both tables; the link entry after the last link
+ stays zero (a cycle that finds it written stops the group with SL_E_CORRUPT, as a link
+ that fails its check: a link count forged lower is found that way).
 
  # Safety
  `g` is NULL or points to a live SL_GROUP; `aMembers` / `aLinks` are NULL or point to at

@@ -441,6 +441,8 @@ fn run_as<B: Member>(
 struct CLinks {
     base: *const SL_LINK,
     count: usize,
+    /// The table's capacity (sl_group_init contract: that many entries at `base`).
+    cap: usize,
 }
 
 impl group::Links for CLinks {
@@ -456,6 +458,14 @@ impl group::Links for CLinks {
         // SAFETY: as in `get`; only the (2-aligned) nDstMember field is read.
         (i < self.count)
             .then(|| unsafe { core::ptr::addr_of!((*self.base.add(i)).nDstMember).read() })
+    }
+    fn unused(&self, i: usize) -> bool {
+        if self.base.is_null() || i >= self.cap {
+            return true;
+        }
+        // SAFETY: non-null, `i < cap` entries at `base` (sl_group_init contract); read by
+        // value, unaligned (with no link left, `storage` checked no alignment).
+        unsafe { self.base.add(i).read_unaligned() == SL_LINK::default() }
     }
     fn words(&self, i: usize) -> Option<[u64; 2]> {
         // SAFETY: as in `get`; a link is 12 bytes without padding: read as a 64-bit and a
@@ -627,7 +637,9 @@ fn check_connection(t: &CMembers, c: *mut SL_FSOE_CONN) -> Result<(), i32> {
 /// every later sl_group_* call. Does not modify the group's input fields. Checks before it
 /// writes: a refused init (SL_E_NULL, SL_E_ALIGNMENT, SL_E_CONFIG for bConnections > 1, a
 /// group still in RUN/START, or tables that share a byte with each other or the group)
-/// changes nothing.
+/// changes nothing. An accepted init zeroes both tables; the link entry after the last link
+/// stays zero (a cycle that finds it written stops the group with SL_E_CORRUPT, as a link
+/// that fails its check: a link count forged lower is found that way).
 ///
 /// # Safety
 /// `g` is NULL or points to a live SL_GROUP; `aMembers` / `aLinks` are NULL or point to at
@@ -937,7 +949,7 @@ pub unsafe fn sl_group_cycle_traced(
             let g_ptr = g;
             let g = instance(g)?;
             let mut none: [&mut dyn Member; 0] = [];
-            let (Some((members, _)), Some((links, _))) =
+            let (Some((members, _)), Some((links, link_cap))) =
                 (group::member_counts(g), group::link_counts(g))
             else {
                 return Ok(group::cycle(g, &mut none[..], &[], tNow));
@@ -954,6 +966,7 @@ pub unsafe fn sl_group_cycle_traced(
             let l = CLinks {
                 base: aLinks,
                 count: usize::from(links),
+                cap: usize::from(link_cap),
             };
             Ok(group::cycle_traced(g, &mut t, &l, tNow, straight))
         };
@@ -978,13 +991,14 @@ pub unsafe fn sl_group_schedule_sealed(
     let Ok(g) = instance(g) else {
         return false;
     };
-    let Some((links, _)) = group::link_counts(g) else {
+    let Some((links, link_cap)) = group::link_counts(g) else {
         return false;
     };
     member_table(g, g_ptr as usize, aMembers).is_ok_and(|t| {
         let l = CLinks {
             base: aLinks,
             count: usize::from(links),
+            cap: usize::from(link_cap),
         };
         group::is_sealed(g, &t, &l)
     })

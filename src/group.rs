@@ -659,6 +659,15 @@ pub trait Links {
     fn get(&self, i: usize) -> Option<SL_LINK>;
     /// Entry `i`'s destination member (what a cycle reads first of every link).
     fn dst(&self, i: usize) -> Option<u16>;
+    /// Entry `i` (the one after the last link) is unused as far as the group can tell. The
+    /// C tables (`ffi`): beyond the capacity, or all zero as `sl_group_init` left it, since a
+    /// link count forged lower would otherwise drop the links past it unnoticed when no link
+    /// is left to fail its own check (a count of 0). A Rust caller's slice: what follows the
+    /// group's links is the caller's (a longer array).
+    fn unused(&self, i: usize) -> bool {
+        let _ = i;
+        true
+    }
     /// Entry `i`'s bytes as words for the schedule check (bytes 0–7, bytes 8–11).
     fn words(&self, i: usize) -> Option<[u64; 2]> {
         let l = self.get(i)?;
@@ -1177,6 +1186,9 @@ pub fn cycle_traced<M: Members + ?Sized, L: Links + ?Sized>(
     // one, and seals the tables when it found them all intact.
     let schedule = m.schedule_check(links);
     let sealed = schedule.is_some_and(|s| s == stored_schedule(g));
+    // A checked cycle also finds the C link table's tail as sl_group_init left it: else
+    // every member counts as having a link that failed its check (stopped, ERROR).
+    let tail_intact = sealed || links.unused(usize::from(c.links));
     let mut all_intact = true;
     let members = usize::from(c.members);
     let mut i = 0;
@@ -1207,7 +1219,7 @@ pub fn cycle_traced<M: Members + ?Sized, L: Links + ?Sized>(
         let outcome = if let Some(outcome) = ran_straight {
             outcome
         } else {
-            let mut links_intact = true;
+            let mut links_intact = tail_intact;
             while next_link < link_count
                 && links.dst(next_link).is_some_and(|d| usize::from(d) == i)
             {

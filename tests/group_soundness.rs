@@ -758,6 +758,45 @@ fn forged_links_stop_the_group() {
     }
 }
 
+/// Every single-bit change of a link (its fields or its check bytes) in a running, sealed
+/// group is found in the next cycle: the link check and the schedule check bind every bit of
+/// every field (a mutation-testing finding: a shift or an `&` in either check left bits
+/// unbound, unnoticed by the hand-picked forgeries above).
+#[test]
+fn every_single_bit_forgery_of_a_link_stops_the_group() {
+    for byte in 0..size_of::<SL_LINK>() {
+        for bit in 0..8 {
+            let mem = Mem::new();
+            let (g, m, l, e) = running_pair(&mem);
+            // SAFETY: arena memory; the link's bytes.
+            unsafe { *l.cast::<u8>().add(byte) ^= 1 << bit };
+            let rc = gcycle(g, m, l, 30);
+            assert_eq!(rc, SL_E_CORRUPT, "byte {byte} bit {bit}");
+            assert_stopped_with_corrupt(rc, g, e, true);
+        }
+    }
+}
+
+/// The same for every single-bit change of a member entry (block pointer, type tag, check
+/// bytes), of the ESTOP's entry (member 0: it cannot be reached) and of the AND's (member
+/// 1: the ESTOP that ran before it is stopped in the same cycle).
+#[test]
+fn every_single_bit_forgery_of_a_member_entry_stops_the_group() {
+    for (entry, reachable) in [(0, false), (1, true)] {
+        for byte in 0..size_of::<SL_MEMBER>() {
+            for bit in 0..8 {
+                let mem = Mem::new();
+                let (g, m, l, e) = running_pair(&mem);
+                // SAFETY: arena memory; the entry's bytes.
+                unsafe { *m.add(entry).cast::<u8>().add(byte) ^= 1 << bit };
+                let rc = gcycle(g, m, l, 30);
+                assert_eq!(rc, SL_E_CORRUPT, "entry {entry} byte {byte} bit {bit}");
+                assert_stopped_with_corrupt(rc, g, e, reachable);
+            }
+        }
+    }
+}
+
 #[test]
 fn forged_link_count_stops_the_group() {
     let mem = Mem::new();
@@ -834,4 +873,20 @@ fn member_reinitialised_as_another_type_is_corrupt() {
             assert_eq!((gs.bInRun, gs.bFbRun), (0, 0), "{member} over {other}");
         }
     }
+}
+
+/// A link count forged to 0 (with valid complements) leaves no link to fail its own check;
+/// the entry after the count is then not as sl_group_init left it, which stops the group
+/// like a link that failed its check (every member stopped in the same cycle, ERROR).
+#[test]
+fn link_count_forged_to_zero_stops_the_group() {
+    let mem = Mem::new();
+    let (g, m, l, e) = running_pair(&mem);
+    let w = u32::from(CAP) << 16;
+    // SAFETY: arena memory.
+    unsafe {
+        (*g).stPrivate.dwLinks = w;
+        (*g).stPrivate.adwCheck[3] = !w;
+    }
+    assert_stopped_with_corrupt(gcycle(g, m, l, 30), g, e, true);
 }
