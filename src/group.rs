@@ -913,18 +913,6 @@ pub fn init_valid(g: &SL_GROUP) -> bool {
     g.bConnections <= 1 && !running
 }
 
-/// Members and links in the caller's storage (`None`: the private state is corrupt).
-pub fn storage_len(g: &SL_GROUP) -> Option<(usize, usize)> {
-    g.stPrivate
-        .load()
-        .map(|c| (usize::from(c.members), usize::from(c.links)))
-}
-
-/// Capacity of the caller's link storage (`None`: the private state is corrupt).
-pub fn link_capacity(g: &SL_GROUP) -> Option<usize> {
-    g.stPrivate.load().map(|c| usize::from(c.link_cap))
-}
-
 /// Member count and capacity (`None`: the private state is corrupt).
 pub fn member_counts(g: &SL_GROUP) -> Option<(u16, u16)> {
     g.stPrivate.load().map(|c| (c.members, c.member_cap))

@@ -756,3 +756,33 @@ fn only_the_groups_own_link_count_is_applied() {
     }
     assert_eq!(a.bAndIn2, 1, "the link after the count was applied");
 }
+
+/// A Rust caller's tables get no sealed schedule (the member slice has no entry checks to
+/// seal): every cycle checks every link, so a link changed after many cycles is found in
+/// the next one (a mutation-testing finding: with a schedule for the slice, the changed link
+/// would have been copied unchecked).
+#[test]
+fn a_link_changed_after_many_cycles_is_found() {
+    let (mut e, mut a) = (estop_pair(), and2());
+    let mut g = new_group(2, 2);
+    let mut links = [SL_LINK::default(); 2];
+    let mut ms: [&mut dyn Member; 2] = [&mut e, &mut a];
+    assert_eq!(
+        group::add_link(
+            &mut g,
+            &mut ms[..],
+            &mut links,
+            link(0, ESTOP_OUT, 1, AND_IN1)
+        ),
+        SL_OK
+    );
+    g.bRun = 1;
+    for t in 0..5 {
+        assert_eq!(group::cycle(&mut g, &mut ms[..], &links, t), SL_OK);
+    }
+    assert_eq!(g.nState, SL_STATE_RUN);
+    links[0].nDstOffset = AND_IN2;
+    assert_eq!(group::cycle(&mut g, &mut ms[..], &links, 5), SL_E_CORRUPT);
+    assert_eq!(g.nState, SL_STATE_ERROR);
+    assert_eq!((g.bInRun, g.bFbRun), (0, 0));
+}
