@@ -57,20 +57,19 @@ pub trait Member {
             conn: None,
         }
     }
-    /// An FSoE connection: (received, sent) SafeData bits; `None` for a block.
-    fn safe_data_bits(&self) -> Option<(u16, u16)> {
+    /// The (received, sent) SafeData bits an RXBIT / TXBIT link may name: those of an FSoE
+    /// connection; none of a block.
+    fn safe_data_bits(&self) -> (u16, u16) {
+        (0, 0)
+    }
+    /// Bit `bit` of a connection's received SafeData (0/1; 0 unless the data are valid);
+    /// nothing of a block.
+    fn rx_bit(&self, _bit: u16) -> Option<u8> {
         None
     }
-    /// Bit `bit` of a connection's received SafeData (0/1; 0 unless the data are valid).
-    fn rx_bit(&self, bit: u16) -> Option<u8> {
-        let _ = bit;
-        None
-    }
-    /// Writes bit `bit` of a connection's SafeData to send; false for a block.
-    fn set_tx_bit(&mut self, bit: u16, value: u8) -> bool {
-        let _ = (bit, value);
-        false
-    }
+    /// Writes bit `bit` of a connection's SafeData to send (nothing for a block, or beyond
+    /// the SafeData).
+    fn set_tx_bit(&mut self, _bit: u16, _value: u8) {}
 }
 
 /// What a member reports after one cycle in a group.
@@ -985,11 +984,9 @@ pub fn add_link<M: Members + ?Sized>(
     // SafeData bits (ABI-2 §10.7): the bit must lie in the connection's latched length.
     let src_bits = in_group(link.nSrcMember)
         .then(|| m.with(usize::from(link.nSrcMember), |b| b.safe_data_bits()))
-        .flatten()
         .flatten();
     let dst_bits = in_group(link.nDstMember)
         .then(|| m.with(usize::from(link.nDstMember), |b| b.safe_data_bits()))
-        .flatten()
         .flatten();
     let typed = match link.nKind {
         SL_LINK_RXBIT => {

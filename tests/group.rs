@@ -786,3 +786,48 @@ fn a_link_changed_after_many_cycles_is_found() {
     assert_eq!(g.nState, SL_STATE_ERROR);
     assert_eq!((g.bInRun, g.bFbRun), (0, 0));
 }
+
+/// A block has no SafeData: an RXBIT link from it or a TXBIT link into it is refused, and
+/// an RXBIT link from it forged with a valid check (and a link count to match) moves
+/// nothing (mutation-testing findings: a block that claimed SafeData bits, or a block's
+/// received bit read as 0 or 1).
+#[test]
+fn safedata_bit_links_need_a_connection() {
+    let (mut e, mut a) = (estop_pair(), and2());
+    let mut g = new_group(2, 2);
+    let mut links = [SL_LINK::default(); 2];
+    let mut ms: [&mut dyn Member; 2] = [&mut e, &mut a];
+    let rx = SL_LINK {
+        nKind: group::SL_LINK_RXBIT,
+        ..link(0, 0, 1, AND_IN1)
+    };
+    let tx = SL_LINK {
+        nKind: group::SL_LINK_TXBIT,
+        ..link(0, ESTOP_OUT, 1, 0)
+    };
+    for l in [rx, tx] {
+        assert_eq!(
+            group::add_link(&mut g, &mut ms[..], &mut links, l),
+            SL_E_CONFIG
+        );
+    }
+    assert_eq!(g.nLinks, 0);
+    let forged = [SL_LINK {
+        aReserved: group::link_check(&rx, 0, 1),
+        ..rx
+    }];
+    let w = 1 | u32::from(g.stPrivate.dwLinks) & 0xFFFF_0000;
+    g.stPrivate.dwLinks = w;
+    g.stPrivate.adwCheck[3] = !w;
+    for (level, t0) in [(0, 0), (1, 10)] {
+        *ms[1].input_mut(AND_IN1).unwrap() = level;
+        for t in t0..t0 + 3 {
+            assert_eq!(group::cycle(&mut g, &mut ms[..], &forged, t), SL_OK);
+        }
+        assert_eq!(
+            *ms[1].input_mut(AND_IN1).unwrap(),
+            level,
+            "an RXBIT link from a block wrote its input"
+        );
+    }
+}

@@ -159,17 +159,17 @@ impl Member for SL_FSOE_CONN {
             }),
         }
     }
-    fn safe_data_bits(&self) -> Option<(u16, u16)> {
+    fn safe_data_bits(&self) -> (u16, u16) {
         // Before init (or when corrupt) no bit can be linked.
-        conn::data_lens(self).map(|(rx, tx)| (u16::from(rx) * 8, u16::from(tx) * 8))
+        conn::data_lens(self).map_or((0, 0), |(rx, tx)| (u16::from(rx) * 8, u16::from(tx) * 8))
     }
     fn rx_bit(&self, bit: u16) -> Option<u8> {
         let byte = self.aRxSafeData.get(usize::from(bit / 8))?;
         Some((byte >> (bit % 8)) & 1)
     }
-    fn set_tx_bit(&mut self, bit: u16, value: u8) -> bool {
+    fn set_tx_bit(&mut self, bit: u16, value: u8) {
         let Some(byte) = self.aTxSafeData.get_mut(usize::from(bit / 8)) else {
-            return false;
+            return;
         };
         let mask = 1u8 << (bit % 8);
         if value == 1 {
@@ -177,6 +177,5 @@ impl Member for SL_FSOE_CONN {
         } else {
             *byte &= !mask;
         }
-        true
     }
 }
