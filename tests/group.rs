@@ -816,7 +816,7 @@ fn safedata_bit_links_need_a_connection() {
         aReserved: group::link_check(&rx, 0, 1),
         ..rx
     }];
-    let w = 1 | u32::from(g.stPrivate.dwLinks) & 0xFFFF_0000;
+    let w = 1 | g.stPrivate.dwLinks & 0xFFFF_0000;
     g.stPrivate.dwLinks = w;
     g.stPrivate.adwCheck[3] = !w;
     for (level, t0) in [(0, 0), (1, 10)] {
