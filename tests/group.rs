@@ -831,3 +831,79 @@ fn safedata_bit_links_need_a_connection() {
         );
     }
 }
+
+/// Members and links are added in STOP or STOPERROR only: a running group refuses both and
+/// changes nothing; a group in STOPERROR (one with connections) takes them
+/// (mutation-testing findings: the STOPERROR half of each state test).
+#[test]
+fn members_and_links_are_added_in_stop_or_stoperror_only() {
+    let (mut e, mut a) = (estop_pair(), and2());
+    let mut g = SL_GROUP::default();
+    assert_eq!(group::init(&mut g, 3, 2), SL_OK);
+    for i in 0..2 {
+        assert_eq!(group::reserve_member(&mut g), Ok(i));
+    }
+    let mut links = [SL_LINK::default(); 2];
+    let mut ms: [&mut dyn Member; 2] = [&mut e, &mut a];
+    g.bRun = 1;
+    assert_eq!(group::cycle(&mut g, &mut ms[..], &links, 0), SL_OK);
+    assert_eq!(g.nState, SL_STATE_RUN);
+    assert_eq!(group::reserve_member(&mut g), Err(SL_E_CONFIG));
+    let l = link(0, ESTOP_OUT, 1, AND_IN1);
+    assert_eq!(
+        group::add_link(&mut g, &mut ms[..], &mut links, l),
+        SL_E_CONFIG
+    );
+    assert_eq!((g.nMembers, g.nLinks), (2, 0));
+    assert_eq!(links, [SL_LINK::default(); 2]);
+
+    let mut g = SL_GROUP {
+        bConnections: 1,
+        ..Default::default()
+    };
+    assert_eq!(group::init(&mut g, 3, 2), SL_OK);
+    assert_eq!(g.nState, group::SL_GROUP_STATE_STOPERROR);
+    for i in 0..2 {
+        assert_eq!(group::reserve_member(&mut g), Ok(i));
+    }
+    assert_eq!(group::add_link(&mut g, &mut ms[..], &mut links, l), SL_OK);
+    assert_eq!((g.nMembers, g.nLinks), (2, 1));
+}
+
+/// A link needs room in the group's capacity and in the caller's slice, and both ends among
+/// the group's members, even when the caller's member slice is longer (mutation-testing
+/// findings).
+#[test]
+fn a_link_needs_room_and_members_of_the_group() {
+    let (mut e, mut a, mut b) = (estop_pair(), and2(), and2());
+    let mut ms: [&mut dyn Member; 3] = [&mut e, &mut a, &mut b];
+    let l1 = link(0, ESTOP_OUT, 1, AND_IN1);
+    let l2 = link(0, ESTOP_OUT, 1, AND_IN2);
+    // Capacity 1, slice of 2.
+    let mut g = new_group(2, 1);
+    let mut links = [SL_LINK::default(); 2];
+    assert_eq!(group::add_link(&mut g, &mut ms[..], &mut links, l1), SL_OK);
+    assert_eq!(
+        group::add_link(&mut g, &mut ms[..], &mut links, l2),
+        SL_E_FULL
+    );
+    assert_eq!(links[1], SL_LINK::default());
+    // Capacity 2, slice of 1.
+    let mut g = new_group(2, 2);
+    let mut short = [SL_LINK::default(); 1];
+    assert_eq!(group::add_link(&mut g, &mut ms[..], &mut short, l1), SL_OK);
+    assert_eq!(
+        group::add_link(&mut g, &mut ms[..], &mut short, l2),
+        SL_E_FULL
+    );
+    // Member 2 is in the slice, not in the group (2 members).
+    let mut g = new_group(2, 2);
+    let mut links = [SL_LINK::default(); 2];
+    for l in [link(0, ESTOP_OUT, 2, AND_IN1), link(2, AND_OUT, 1, AND_IN1)] {
+        assert_eq!(
+            group::add_link(&mut g, &mut ms[..], &mut links, l),
+            SL_E_CONFIG
+        );
+    }
+    assert_eq!(g.nLinks, 0);
+}

@@ -890,3 +890,18 @@ fn link_count_forged_to_zero_stops_the_group() {
     }
     assert_stopped_with_corrupt(gcycle(g, m, l, 30), g, e, true);
 }
+
+/// A running group takes no member, and refuses before it touches anything: a
+/// never-initialised block stays all zero (it would be initialised first otherwise; a
+/// mutation-testing finding).
+#[test]
+fn a_running_group_refuses_a_member_before_touching_it() {
+    let mem = Mem::new();
+    let (g, m, _, _) = running_pair(&mem);
+    let b = mem.at::<FB_AND>(2048);
+    assert_eq!(add(g, m, SL_TYPE_AND, b.cast()), SL_E_CONFIG);
+    // SAFETY: arena memory, read by value.
+    let bytes = unsafe { std::slice::from_raw_parts(b.cast::<u8>(), size_of::<FB_AND>()) };
+    assert!(bytes.iter().all(|&x| x == 0), "the block was written");
+    assert_eq!(state(g).nMembers, 2);
+}
