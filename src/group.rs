@@ -111,13 +111,11 @@ pub struct Wiring {
 }
 
 impl Wiring {
-    /// Records (or updates) connection member `index`.
+    /// Records connection member `index` (each connection reports once per cycle, in the
+    /// member loop; at most SL_GROUP_CONN_MAX are wired).
     pub fn connection(&mut self, index: u16, r: &ConnReport) {
-        let entry = (index, r.id, r.shutdown);
-        if let Some(e) = self.conns[..self.n].iter_mut().find(|e| e.0 == index) {
-            *e = entry;
-        } else if let Some(e) = self.conns.get_mut(self.n) {
-            *e = entry;
+        if let Some(e) = self.conns.get_mut(self.n) {
+            *e = (index, r.id, r.shutdown);
             self.n += 1;
         }
     }
@@ -592,7 +590,9 @@ pub fn member_check(
     for w in [
         group as u64,
         entry as u64,
-        u64::from(index) | u64::from(count) << 16 | u64::from(cap) << 32,
+        u64::from(index),
+        u64::from(count),
+        u64::from(cap),
         block as u64,
         u64::from(ty),
     ] {
@@ -607,12 +607,17 @@ pub fn member_check(
 /// bytes ([`schedule_words`]). One multiply per entry or link: a bijection of the running
 /// value, so a change of any single entry or link always changes the result.
 pub fn schedule_start(group: usize, members: usize, count: u16, cap: u16, links: usize) -> u64 {
-    let h = mix(0x5AFE_10C1_6A05_0003, group as u64);
-    let h = mix(h, members as u64);
-    mix(
-        h,
-        u64::from(count) | u64::from(cap) << 16 | (links as u64) << 32,
-    )
+    let mut h = 0x5AFE_10C1_6A05_0003;
+    for w in [
+        group as u64,
+        members as u64,
+        u64::from(count),
+        u64::from(cap),
+        links as u64,
+    ] {
+        h = mix(h, w);
+    }
+    h
 }
 
 /// One member entry (its two 64-bit words) or one link (its 64-bit and 32-bit words) into
@@ -639,9 +644,13 @@ const fn step(h: u64, w: u64) -> u64 {
 pub fn link_check(l: &SL_LINK, index: usize, count: u16) -> [u8; 3] {
     let mut h = 0x5AFE_10C1_6A05_0002;
     for w in [
-        u64::from(l.nSrcMember) | u64::from(l.nSrcOffset) << 16 | u64::from(l.nDstMember) << 32,
-        u64::from(l.nDstOffset) | u64::from(l.nKind) << 16,
-        index as u64 | u64::from(count) << 32,
+        u64::from(l.nSrcMember),
+        u64::from(l.nSrcOffset),
+        u64::from(l.nDstMember),
+        u64::from(l.nDstOffset),
+        u64::from(l.nKind),
+        index as u64,
+        u64::from(count),
     ] {
         h = mix(h, w);
     }
@@ -670,13 +679,14 @@ pub trait Links {
     /// Entry `i`'s bytes as words for the schedule check (bytes 0–7, bytes 8–11).
     fn words(&self, i: usize) -> Option<[u64; 2]> {
         let l = self.get(i)?;
-        let [a, b, c] = l.aReserved;
+        let [a0, a1] = l.nSrcMember.to_le_bytes();
+        let [b0, b1] = l.nSrcOffset.to_le_bytes();
+        let [c0, c1] = l.nDstMember.to_le_bytes();
+        let [d0, d1] = l.nDstOffset.to_le_bytes();
+        let [r0, r1, r2] = l.aReserved;
         Some([
-            u64::from(l.nSrcMember)
-                | u64::from(l.nSrcOffset) << 16
-                | u64::from(l.nDstMember) << 32
-                | u64::from(l.nDstOffset) << 48,
-            u64::from(u32::from_le_bytes([l.nKind, a, b, c])),
+            u64::from_le_bytes([a0, a1, b0, b1, c0, c1, d0, d1]),
+            u64::from(u32::from_le_bytes([l.nKind, r0, r1, r2])),
         ])
     }
 }
@@ -858,8 +868,8 @@ pub fn is_sealed<M: Members + ?Sized, L: Links + ?Sized>(g: &SL_GROUP, m: &M, li
 
 /// The schedule check stored in the group.
 fn stored_schedule(g: &SL_GROUP) -> u64 {
-    let [a, b, c] = g.awSchedule;
-    u64::from(a) | u64::from(b) << 16 | u64::from(c) << 32
+    let [[a0, a1], [b0, b1], [c0, c1]] = g.awSchedule.map(u16::to_le_bytes);
+    u64::from_le_bytes([a0, a1, b0, b1, c0, c1, 0, 0])
 }
 
 fn store_schedule(g: &mut SL_GROUP, check: u64) {
@@ -1415,6 +1425,86 @@ fn copy_link<M: Members + ?Sized>(m: &mut M, l: &SL_LINK, dst: usize) {
         _ => {
             if let Some(Some(v)) = m.with(src, |b| b.output_bits(off)) {
                 m.with(dst, |b| b.set_input_bits(to, v));
+            }
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    const K: u64 = 0x9E37_79B9_7F4A_7C15;
+
+    /// The inverse of the odd multiplier modulo 2^64 (Newton's iteration).
+    fn k_inverse() -> u64 {
+        let mut inv = K;
+        for _ in 0..6 {
+            inv = inv.wrapping_mul(2u64.wrapping_sub(K.wrapping_mul(inv)));
+        }
+        inv
+    }
+
+    /// The inverse of `x ↦ x ^ (x >> 29)`.
+    fn unshift(y: u64) -> u64 {
+        let mut x = y;
+        for _ in 0..3 {
+            x = y ^ (x >> 29);
+        }
+        x
+    }
+
+    fn words(n: usize) -> impl Iterator<Item = (u64, u64)> {
+        let mut r = 0x5AFE_10C1_u64;
+        let mut next = move || {
+            r ^= r << 13;
+            r ^= r >> 7;
+            r ^= r << 17;
+            r
+        };
+        (0..n).map(move |_| (next(), next()))
+    }
+
+    /// `mix` and `step` are bijections of the running value for a fixed word (what makes a
+    /// change of any single word change every check): each is undone exactly.
+    #[test]
+    fn mix_and_step_are_bijections() {
+        let inv = k_inverse();
+        assert_eq!(K.wrapping_mul(inv), 1);
+        for (h, w) in words(10_000) {
+            assert_eq!(unshift(mix(h, w)).wrapping_mul(inv) ^ w, h);
+            assert_eq!(step(h, w).wrapping_mul(inv) ^ w, h);
+        }
+    }
+
+    /// Every connection of a cycle is kept: each one's shutdown is found by its own
+    /// Connection ID, and a request reaches exactly the connections with its ID.
+    #[test]
+    fn wiring_keeps_every_connection() {
+        let mut w = Wiring::default();
+        for (i, id) in [(0u16, 7u16), (1, 8), (2, 9), (3, 7)] {
+            let r = ConnReport {
+                id,
+                shutdown: i == 0 || i == 2,
+                ..ConnReport::default()
+            };
+            w.connection(i, &r);
+        }
+        assert_eq!([7, 8, 9].map(|id| w.conn_shutdown(id)), [1, 0, 1]);
+        w.request(7, 1);
+        let (v, idx, k) = w.take_request().unwrap();
+        assert_eq!((v, &idx[..k]), (1, &[0u16, 3][..]));
+        assert!(w.take_request().is_none());
+    }
+
+    /// A single-bit change of either word of an entry or link changes its schedule step.
+    #[test]
+    fn schedule_words_sees_every_bit_of_both_words() {
+        for (h, w) in words(200) {
+            let base = schedule_words(h, w, w.rotate_left(7));
+            for bit in 0..64 {
+                assert_ne!(schedule_words(h, w ^ 1 << bit, w.rotate_left(7)), base);
+                assert_ne!(schedule_words(h, w, w.rotate_left(7) ^ 1 << bit), base);
             }
         }
     }
