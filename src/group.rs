@@ -672,8 +672,7 @@ pub trait Links {
     /// link count forged lower would otherwise drop the links past it unnoticed when no link
     /// is left to fail its own check (a count of 0). A Rust caller's slice: what follows the
     /// group's links is the caller's (a longer array).
-    fn unused(&self, i: usize) -> bool {
-        let _ = i;
+    fn unused(&self, _i: usize) -> bool {
         true
     }
     /// Entry `i`'s bytes as words for the schedule check (bytes 0–7, bytes 8–11).
@@ -778,7 +777,7 @@ pub struct SL_GROUP {
 
 const MAGIC: u32 = 0x6A05;
 /// Previous ErrAck level.
-const F_ACK_PREV: u8 = 1 << 0;
+const F_ACK_PREV: u8 = 1;
 /// Latched error causes (cleared on ERROR → RESET).
 const F_FB: u8 = 1 << 1;
 const F_COM: u8 = 1 << 2;
@@ -837,8 +836,7 @@ pub trait Members {
 
     /// The check of the member and link tables as they are now (48 bits), for storage
     /// whose entries carry checks of their own (the C tables); `None`: no sealed schedule.
-    fn schedule_check<L: Links + ?Sized>(&self, links: &L) -> Option<u64> {
-        let _ = links;
+    fn schedule_check<L: Links + ?Sized>(&self, _links: &L) -> Option<u64> {
         None
     }
 

@@ -907,3 +907,76 @@ fn a_link_needs_room_and_members_of_the_group() {
     }
     assert_eq!(g.nLinks, 0);
 }
+
+/// A stand-in FSoE connection for the group's start-up rule: reports start-up while
+/// `startup`, and records the bRun of every run.
+struct StartingConn {
+    startup: bool,
+    runs: Vec<u8>,
+}
+
+impl Member for StartingConn {
+    fn drive(&mut self, _run: u8, _ack: u8) {}
+    fn execute(&mut self, _now: u32) -> safelogic::Status {
+        safelogic::Status::Ok
+    }
+    fn state(&self) -> u8 {
+        SL_STATE_STOP
+    }
+    fn fields(&self) -> &'static [safelogic::registry::Field] {
+        &[]
+    }
+    fn input_mut(&mut self, _offset: u16) -> Option<&mut u8> {
+        None
+    }
+    fn output(&self, _offset: u16) -> Option<u8> {
+        None
+    }
+    fn output_bits(&self, _offset: u16) -> Option<u32> {
+        None
+    }
+    fn set_input_bits(&mut self, _offset: u16, _bits: u32) -> bool {
+        false
+    }
+    fn field_bits(&self, _offset: u16) -> Option<u32> {
+        None
+    }
+    fn set_param_bits(&mut self, _offset: u16, _bits: u32) -> bool {
+        false
+    }
+    fn run_in_group(&mut self, run: u8, _ack: u8, _now: u32, _w: &mut group::Wiring) -> group::Ran {
+        self.runs.push(run);
+        group::Ran {
+            status: safelogic::Status::Ok,
+            state: SL_STATE_STOP,
+            conn: Some(group::ConnReport {
+                startup: self.startup,
+                ..Default::default()
+            }),
+        }
+    }
+}
+
+/// A connection that reported start-up in the previous cycle starts the next one in START
+/// (ABI-2 §13): it runs once, with bRun FALSE. Only the cycle in which the group first
+/// learns of the start-up runs it with bRun TRUE and then stops it again (a
+/// mutation-testing finding: without the remembered start-up every cycle ran it twice).
+#[test]
+fn a_starting_connection_runs_once_a_cycle_in_start() {
+    let mut c = StartingConn {
+        startup: true,
+        runs: Vec::new(),
+    };
+    let mut a = and2();
+    let mut g = new_group(2, 0);
+    g.bRun = 1;
+    let mut ms: [&mut dyn Member; 2] = [&mut c, &mut a];
+    assert_eq!(group::cycle(&mut g, &mut ms[..], &[], 0), SL_OK);
+    assert_eq!(g.nState, SL_GROUP_STATE_START);
+    for t in 1..4 {
+        assert_eq!(group::cycle(&mut g, &mut ms[..], &[], t), SL_OK);
+        assert_eq!(g.nState, SL_GROUP_STATE_START);
+    }
+    drop(ms);
+    assert_eq!(c.runs, [1, 0, 0, 0, 0]);
+}
