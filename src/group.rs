@@ -1028,9 +1028,11 @@ pub fn add_link<M: Members + ?Sized>(
         },
     };
     // A TXBIT destination is a bit number, every other one a byte offset.
-    let tx = |l: &SL_LINK| l.nKind == SL_LINK_TXBIT;
+    let tx = link.nKind == SL_LINK_TXBIT;
     let taken = links[..n].iter().any(|l| {
-        l.nDstMember == link.nDstMember && l.nDstOffset == link.nDstOffset && tx(l) == tx(&link)
+        l.nDstMember == link.nDstMember
+            && l.nDstOffset == link.nDstOffset
+            && (l.nKind == SL_LINK_TXBIT) == tx
     });
     if !typed || taken {
         return SL_E_CONFIG;

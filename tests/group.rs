@@ -980,3 +980,82 @@ fn a_starting_connection_runs_once_a_cycle_in_start() {
     drop(ms);
     assert_eq!(c.runs, [1, 0, 0, 0, 0]);
 }
+
+/// A stand-in FSoE connection with 16 SafeData bits each way and one BOOL input at byte 0,
+/// for the link rules that need one.
+struct BitConn {
+    input: u8,
+}
+
+const BIT_CONN_FIELDS: &[safelogic::registry::Field] = &[safelogic::registry::Field {
+    name: "bIn",
+    offset: 0,
+    kind: safelogic::registry::Kind::Bool,
+    dir: safelogic::registry::Dir::Input,
+}];
+
+impl Member for BitConn {
+    fn drive(&mut self, _run: u8, _ack: u8) {}
+    fn execute(&mut self, _now: u32) -> safelogic::Status {
+        safelogic::Status::Ok
+    }
+    fn state(&self) -> u8 {
+        SL_STATE_RUN
+    }
+    fn fields(&self) -> &'static [safelogic::registry::Field] {
+        BIT_CONN_FIELDS
+    }
+    fn input_mut(&mut self, offset: u16) -> Option<&mut u8> {
+        (offset == 0).then_some(&mut self.input)
+    }
+    fn output(&self, _offset: u16) -> Option<u8> {
+        None
+    }
+    fn output_bits(&self, _offset: u16) -> Option<u32> {
+        None
+    }
+    fn set_input_bits(&mut self, offset: u16, bits: u32) -> bool {
+        let ok = offset == 0;
+        if ok {
+            self.input = bits as u8;
+        }
+        ok
+    }
+    fn field_bits(&self, offset: u16) -> Option<u32> {
+        (offset == 0).then_some(u32::from(self.input))
+    }
+    fn set_param_bits(&mut self, _offset: u16, _bits: u32) -> bool {
+        false
+    }
+    fn safe_data_bits(&self) -> (u16, u16) {
+        (16, 16)
+    }
+}
+
+/// A TXBIT link names a bit, every other link a byte: a BOOL link into byte 0 of a
+/// connection and a TXBIT link into its bit 0 are different destinations (both accepted),
+/// while a second link into either is refused (a mutation-testing finding: the comparison
+/// of the two kinds).
+#[test]
+fn a_bit_and_a_byte_of_a_connection_are_different_destinations() {
+    let mut e = estop_pair();
+    let mut c = BitConn { input: 0 };
+    let mut g = new_group(2, 4);
+    let mut links = [SL_LINK::default(); 4];
+    let mut ms: [&mut dyn Member; 2] = [&mut e, &mut c];
+    let byte = link(0, ESTOP_OUT, 1, 0);
+    let bit = SL_LINK {
+        nKind: group::SL_LINK_TXBIT,
+        ..byte
+    };
+    for l in [byte, bit] {
+        assert_eq!(group::add_link(&mut g, &mut ms[..], &mut links, l), SL_OK);
+    }
+    for l in [byte, bit] {
+        assert_eq!(
+            group::add_link(&mut g, &mut ms[..], &mut links, l),
+            SL_E_CONFIG
+        );
+    }
+    assert_eq!(g.nLinks, 2);
+}
