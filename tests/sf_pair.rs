@@ -469,3 +469,52 @@ fn random_sequences_agree_with_the_model() {
     against_the_model::<SF_Equivalent>(0x5F11);
     against_the_model::<SF_Antivalent>(0x5F12);
 }
+
+fn equivalent_cycle(fb: &mut SF_Equivalent, now: u32) -> i32 {
+    // SAFETY: a live, exclusively borrowed instance.
+    unsafe { safelogic::ffi::sl_sf_equivalent_cycle(fb, now) }
+}
+
+/// The latched constants are under their CRC (semantics PO7; mutation-testing findings):
+/// a bit of a latched time word that changes while the block is activated is a corrupt
+/// private state (C3FF, SL_E_CORRUPT), not a changed constant (C3FD), for low and high bits
+/// of both words; and a latched copy changed together with the live input, so that the two
+/// agree, is found where the safety output would switch on.
+#[test]
+fn latched_constants_are_under_their_crc() {
+    let on = |fb: &mut SF_Equivalent| fb.apply(true, true, true);
+    for word in 0..2 {
+        for bit in [0, 15, 16, 31] {
+            let mut fb = SF_Equivalent {
+                DiscrepancyTime: 100,
+                ..Default::default()
+            };
+            fb.apply(true, false, false);
+            assert_eq!(equivalent_cycle(&mut fb, 0), SL_OK);
+            on(&mut fb);
+            assert_eq!(equivalent_cycle(&mut fb, 5), SL_OK);
+            assert_eq!(fb.DiagCode, 0x8000);
+            fb.stPrivate.adwTime[word] ^= 1 << bit;
+            assert_eq!(
+                equivalent_cycle(&mut fb, 10),
+                SL_E_CORRUPT,
+                "word {word} bit {bit}"
+            );
+            assert_eq!((fb.DiagCode, fb.S_EquivalentOut), (SL_SF_DIAG_CORRUPT, 0));
+        }
+    }
+    // Live and latched changed alike (100 → 100 + 2^20) while waiting: no changed constant
+    // to see, but the output does not switch on.
+    let mut fb = SF_Equivalent {
+        DiscrepancyTime: 100,
+        ..Default::default()
+    };
+    fb.apply(true, false, false);
+    assert_eq!(equivalent_cycle(&mut fb, 0), SL_OK);
+    assert_ne!(fb.DiagCode, 0x8000);
+    fb.DiscrepancyTime ^= 1 << 20;
+    fb.stPrivate.adwTime[0] ^= 1 << 20;
+    on(&mut fb);
+    assert_eq!(equivalent_cycle(&mut fb, 10), SL_E_CORRUPT);
+    assert_eq!((fb.DiagCode, fb.S_EquivalentOut), (SL_SF_DIAG_CORRUPT, 0));
+}
