@@ -29,7 +29,7 @@ note() { summary+=("$*"); printf '\n==== %s ====\n' "$*"; }
 steps=${DEEP_STEPS:-"miri fuzz mutants peer"}
 step() { [[ " $steps " == *" $1 "* ]]; }
 
-miri_tests=${MIRI_TESTS:-"group_soundness ffi"}
+miri_tests=${MIRI_TESTS:-"ffi group_soundness links group fsoe_group analog_group group_schedule"}
 step miri && for mode in stacked tree; do
     flags="-Zmiri-disable-isolation"
     [ "$mode" = tree ] && flags="$flags -Zmiri-tree-borrows"
@@ -74,7 +74,7 @@ if step peer; then
     fi
 fi
 
-mutants_tests=${MUTANTS_TESTS:-"estop mon envelope fb_envelope edm group group_soundness links"}
+mutants_tests=${MUTANTS_TESTS:-"estop mon envelope fb_envelope edm fast_path group group_soundness links group_schedule analog_group fsoe_group connshutdown ffi"}
 if step mutants && { [ $# -gt 0 ] || [ -n "${MUTANTS_ARGS:-}" ]; }; then
     args=(--cargo-arg=--lib)
     for t in $mutants_tests; do args+=("--cargo-arg=--test=$t"); done
