@@ -905,3 +905,40 @@ fn a_running_group_refuses_a_member_before_touching_it() {
     assert!(bytes.iter().all(|&x| x == 0), "the block was written");
     assert_eq!(state(g).nMembers, 2);
 }
+
+/// Fuzz regression (target `group`, 2026-11-26): an `SF_` member whose library fault stops
+/// the group reports it in that cycle (its DiagCode, Ready and Error TRUE, its safety output
+/// FALSE); from the next cycle on the group halts it (DiagCode 0000, semantics PO8).
+#[test]
+fn sf_member_library_fault_stops_the_group_and_is_halted_next() {
+    let mem = Mem::new();
+    let (g, m, l) = group_in(&mem);
+    let b = mem.at::<SF_Equivalent>(1024);
+    // SAFETY: arena memory; no reference outlives a statement.
+    unsafe {
+        b.write(SF_Equivalent {
+            Activate: 1,
+            DiscrepancyTime: 100,
+            ..Default::default()
+        });
+        assert_eq!(ffi::sl_sf_equivalent_init(b), SL_OK);
+        assert_eq!(add(g, m, SL_TYPE_SF_EQUIVALENT, b.cast()), SL_OK);
+        (*g).bRun = 1;
+        assert_eq!(gcycle(g, m, l, 0), SL_OK);
+        ((*b).S_ChannelA, (*b).S_ChannelB) = (1, 1);
+        assert_eq!(gcycle(g, m, l, 5), SL_OK);
+        assert_eq!(((*b).DiagCode, (*b).S_EquivalentOut), (0x8000, 1));
+        (*b).DiscrepancyTime = 200;
+        assert_eq!(gcycle(g, m, l, 10), SL_E_PARAM_CHANGED);
+        let gs = state(g);
+        assert_eq!((gs.nState, gs.bFbRun), (SL_STATE_ERROR, 0));
+        let e = b.read();
+        assert_eq!(
+            (e.DiagCode, e.Ready, e.Error, e.S_EquivalentOut),
+            (SL_SF_DIAG_CONST_CHANGED, 1, 1, 0)
+        );
+        gcycle(g, m, l, 20);
+        let e = b.read();
+        assert_eq!((e.DiagCode, e.Ready, e.Error), (0, 0, 0));
+    }
+}

@@ -241,11 +241,15 @@ pub fn check_any(t: &BlockType, bytes: &[u8], status: i32, what: &str) {
     }
 }
 
-/// Every BOOL output FALSE but `bError` (a member of a group that is not in RUN; an `SF_`
-/// block there is halted like Activate FALSE, semantics PO8, and keeps only the outputs its
-/// table defines in idle: SF_TestableSafetySensor's S_TestOut).
+/// Every BOOL output FALSE but the error status (a member of a group that is not in RUN).
+/// A TwinSAFE block's `bError`; an `SF_` block's `Ready` and `Error`, which mirror its
+/// DiagCode ([`check_sf`]): the block whose library fault stopped the group reports it in
+/// that cycle, and the group halts it from the next one on (DiagCode 0000, semantics PO8),
+/// where it keeps only the outputs its table defines in idle (SF_TestableSafetySensor's
+/// S_TestOut).
 pub fn check_outputs_false(t: &BlockType, bytes: &[u8], why: &str) {
     let name = t.info.name;
+    let status = |f: &str| f == "bError" || (is_sf(t) && (f == "Ready" || f == "Error"));
     for f in t
         .fields
         .iter()
@@ -253,9 +257,15 @@ pub fn check_outputs_false(t: &BlockType, bytes: &[u8], why: &str) {
     {
         let v = read(bytes, f.offset, f.kind);
         assert!(v <= 1, "{name}: {} = {v}", f.name);
-        let idle = sf_sensor_output(name, f.name, 0, false).unwrap_or(false);
-        if f.name != "bError" {
-            assert_eq!(v == 1, idle, "{name}: {} while {why}", f.name);
+        if status(f.name) {
+            continue;
         }
+        let code = if is_sf(t) {
+            read(bytes, t.field("DiagCode").unwrap().offset, Kind::U16) as u16
+        } else {
+            0
+        };
+        let idle = code == 0 && sf_sensor_output(name, f.name, 0, false).unwrap_or(false);
+        assert_eq!(v == 1, idle, "{name}: {} while {why}", f.name);
     }
 }
