@@ -880,3 +880,27 @@ fn in_a_group_with_a_link() {
         assert_eq!(g.nState, SL_STATE_STOP);
     }
 }
+
+/// The clock check holds across a return to IDLE (idle keeps the clock memory, semantics
+/// PO6): a clock that went back between the call that left for IDLE and the activating call
+/// is C3FE (a mutation-testing finding).
+#[test]
+fn the_clock_check_holds_across_idle() {
+    let on = In {
+        activate: true,
+        input: true,
+        start_reset: true,
+        ..In::default()
+    };
+    let mut fb = SF_EmergencyStop::default();
+    fb.apply(on);
+    assert_eq!(fb.c_cycle(100), SL_OK);
+    assert_eq!(fb.c_cycle(110), SL_OK);
+    assert_eq!(fb.DiagCode, 0x8000);
+    fb.Activate = 0;
+    assert_eq!(fb.c_cycle(120), SL_OK);
+    assert_eq!(fb.DiagCode, 0);
+    fb.Activate = 1;
+    assert_eq!(fb.c_cycle(50), SL_E_CLOCK);
+    assert_eq!((fb.DiagCode, fb.S_EStopOut), (SL_SF_DIAG_CLOCK, 0));
+}
