@@ -977,7 +977,6 @@ fn a_starting_connection_runs_once_a_cycle_in_start() {
         assert_eq!(group::cycle(&mut g, &mut ms[..], &[], t), SL_OK);
         assert_eq!(g.nState, SL_GROUP_STATE_START);
     }
-    drop(ms);
     assert_eq!(c.runs, [1, 0, 0, 0, 0]);
 }
 
