@@ -1058,3 +1058,39 @@ fn a_bit_and_a_byte_of_a_connection_are_different_destinations() {
     }
     assert_eq!(g.nLinks, 2);
 }
+
+/// The group's own state rules where only the guard decides (mutation-testing findings):
+/// STOPERROR waits for bRun before it becomes the restart error; RESET waits for ErrAck to
+/// fall, however long it is held.
+#[test]
+fn stoperror_waits_for_run_and_reset_for_errack_to_fall() {
+    let mut a = and2();
+    let mut g = SL_GROUP {
+        bConnections: 1,
+        ..Default::default()
+    };
+    assert_eq!(group::init(&mut g, 1, 0), SL_OK);
+    assert_eq!(group::reserve_member(&mut g), Ok(0));
+    let mut ms: [&mut dyn Member; 1] = [&mut a];
+    for t in 0..3 {
+        group::cycle(&mut g, &mut ms[..], &[], t);
+        assert_eq!(
+            (g.nState, g.nDiag),
+            (SL_GROUP_STATE_STOPERROR, 0),
+            "no bRun yet"
+        );
+    }
+    g.bRun = 1;
+    group::cycle(&mut g, &mut ms[..], &[], 3);
+    assert_eq!(g.nState, SL_STATE_ERROR, "the restart error");
+    g.bErrAck = 1;
+    group::cycle(&mut g, &mut ms[..], &[], 4);
+    assert_eq!(g.nState, SL_STATE_RESET);
+    for t in 5..8 {
+        group::cycle(&mut g, &mut ms[..], &[], t);
+        assert_eq!(g.nState, SL_STATE_RESET, "ErrAck held");
+    }
+    g.bErrAck = 0;
+    group::cycle(&mut g, &mut ms[..], &[], 8);
+    assert_eq!(g.nState, SL_STATE_RUN);
+}
