@@ -1094,3 +1094,16 @@ fn stoperror_waits_for_run_and_reset_for_errack_to_fall() {
     group::cycle(&mut g, &mut ms[..], &[], 8);
     assert_eq!(g.nState, SL_STATE_RUN);
 }
+
+/// FbRun says every member is in RUN: a group without members never sets it, though it is
+/// in RUN itself (a mutation-testing finding).
+#[test]
+fn an_empty_group_in_run_has_no_fb_run() {
+    let mut g = new_group(0, 0);
+    let mut none: [&mut dyn Member; 0] = [];
+    g.bRun = 1;
+    for t in 0..3 {
+        assert_eq!(group::cycle(&mut g, &mut none[..], &[], t), SL_OK);
+        assert_eq!((g.nState, g.bInRun, g.bFbRun), (SL_STATE_RUN, 1, 0));
+    }
+}
