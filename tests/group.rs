@@ -1107,3 +1107,39 @@ fn an_empty_group_in_run_has_no_fb_run() {
         assert_eq!((g.nState, g.bInRun, g.bFbRun), (SL_STATE_RUN, 1, 0));
     }
 }
+
+/// A member in ERROR stops the group in RUN and in START (FBERROR, the member's index), and
+/// leaves a stopped group in STOP (mutation-testing findings: the START half of the guard).
+#[test]
+fn a_member_error_stops_a_running_or_starting_group_only() {
+    for (run, startup, want) in [
+        (1, 1, SL_STATE_ERROR),
+        (1, 0, SL_STATE_ERROR),
+        (0, 0, SL_STATE_STOP),
+    ] {
+        let mut e = estop_pair();
+        let mut g = new_group(1, 0);
+        let mut ms: [&mut dyn Member; 1] = [&mut e];
+        (g.bRun, g.bComStartupIn) = (run, startup);
+        assert_eq!(group::cycle(&mut g, &mut ms[..], &[], 0), SL_OK);
+        let before = g.nState;
+        assert_eq!(
+            before,
+            match (run, startup) {
+                (1, 1) => SL_GROUP_STATE_START,
+                (1, _) => SL_STATE_RUN,
+                _ => SL_STATE_STOP,
+            }
+        );
+        e.stPrivate.stHeader.wDiag ^= 0x0100;
+        let mut ms: [&mut dyn Member; 1] = [&mut e];
+        assert_eq!(group::cycle(&mut g, &mut ms[..], &[], 10), SL_E_CORRUPT);
+        assert_eq!(g.nState, want, "from state {before}");
+        if want == SL_STATE_ERROR {
+            assert_eq!(
+                (g.nDiag, g.nFailedMember),
+                (group::SL_GROUP_DIAG_FBERROR, 0)
+            );
+        }
+    }
+}
