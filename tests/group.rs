@@ -1143,3 +1143,33 @@ fn a_member_error_stops_a_running_or_starting_group_only() {
         }
     }
 }
+
+/// A link that no member consumed (links out of destination order, each with a valid check)
+/// stops a running or starting group (FBERROR, SL_E_CORRUPT) and leaves a stopped one in
+/// STOP (a mutation-testing finding: the START half of the guard).
+#[test]
+fn an_unconsumed_link_stops_a_running_or_starting_group_only() {
+    for (run, startup, want) in [
+        (1, 1, SL_STATE_ERROR),
+        (1, 0, SL_STATE_ERROR),
+        (0, 0, SL_STATE_STOP),
+    ] {
+        let (mut e, mut a) = (estop_pair(), and2());
+        let mut g = new_group(2, 2);
+        let mut ms: [&mut dyn Member; 2] = [&mut e, &mut a];
+        (g.bRun, g.bComStartupIn) = (run, startup);
+        assert_eq!(group::cycle(&mut g, &mut ms[..], &[], 0), SL_OK);
+        // Destination 1 before destination 0: member 0 finds no link of its own at the
+        // head, so the second link is never consumed.
+        let mut links = [link(0, ESTOP_OUT, 1, AND_IN1), link(1, AND_OUT, 0, 0)];
+        for (i, l) in links.iter_mut().enumerate() {
+            l.aReserved = group::link_check(l, i, 2);
+        }
+        let w = 2 | g.stPrivate.dwLinks & 0xFFFF_0000;
+        g.stPrivate.dwLinks = w;
+        g.stPrivate.adwCheck[3] = !w;
+        let rc = group::cycle(&mut g, &mut ms[..], &links, 10);
+        assert_eq!(rc, SL_E_CORRUPT, "run {run} startup {startup}");
+        assert_eq!(g.nState, want, "run {run} startup {startup}");
+    }
+}
