@@ -904,3 +904,33 @@ fn the_clock_check_holds_across_idle() {
     assert_eq!(fb.c_cycle(50), SL_E_CLOCK);
     assert_eq!((fb.DiagCode, fb.S_EStopOut), (SL_SF_DIAG_CLOCK, 0));
 }
+
+/// The panic boundary's recovery of an `SF_` block (`Cyclic::force_safe`, prim::sf
+/// `force_fault`): the library fault C3FF with the safety output FALSE, sealed on the
+/// instance's own consistent state (its clock memory kept: a clock that then goes back is
+/// C3FE); only Activate FALSE leaves it. Mutation-testing findings.
+#[test]
+fn forced_fault_is_c3ff_sealed_on_the_instance() {
+    use safelogic::registry::Cyclic;
+    let on = In {
+        activate: true,
+        input: true,
+        start_reset: true,
+        ..In::default()
+    };
+    let mut fb = SF_EmergencyStop::default();
+    fb.apply(on);
+    assert_eq!(fb.c_cycle(100), SL_OK);
+    assert_eq!(fb.c_cycle(110), SL_OK);
+    assert_eq!((fb.DiagCode, fb.S_EStopOut), (0x8000, 1));
+    fb.force_safe();
+    assert_eq!(
+        (fb.DiagCode, fb.S_EStopOut, fb.Error, fb.Ready),
+        (SL_SF_DIAG_CORRUPT, 0, 1, 1)
+    );
+    assert_eq!(fb.c_cycle(50), SL_E_CLOCK, "the clock memory was kept");
+    assert_eq!((fb.DiagCode, fb.S_EStopOut), (SL_SF_DIAG_CLOCK, 0));
+    fb.Activate = 0;
+    assert_eq!(fb.c_cycle(60), SL_OK);
+    assert_eq!(fb.DiagCode, 0);
+}
