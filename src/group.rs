@@ -573,6 +573,11 @@ const fn mix(h: u64, w: u64) -> u64 {
     h ^ (h >> 29)
 }
 
+/// [`mix`] of each word in turn into `seed`: each field of a check is its own word.
+fn fold(seed: u64, words: &[u64]) -> u64 {
+    words.iter().fold(seed, |h, w| mix(h, *w))
+}
+
 /// The check a member entry carries in `aReserved` (48 bits): binds the block pointer and
 /// type to the group (`group`: its address), the entry's own address (`entry`, so a copied
 /// or moved entry fails), its index and the group's member count and capacity (so a forged
@@ -586,18 +591,18 @@ pub fn member_check(
     block: usize,
     ty: u16,
 ) -> [u8; 6] {
-    let mut h = 0x5AFE_10C1_6A05_0001;
-    for w in [
-        group as u64,
-        entry as u64,
-        u64::from(index),
-        u64::from(count),
-        u64::from(cap),
-        block as u64,
-        u64::from(ty),
-    ] {
-        h = mix(h, w);
-    }
+    let h = fold(
+        0x5AFE_10C1_6A05_0001,
+        &[
+            group as u64,
+            entry as u64,
+            u64::from(index),
+            u64::from(count),
+            u64::from(cap),
+            block as u64,
+            u64::from(ty),
+        ],
+    );
     let b = h.to_le_bytes();
     [b[0], b[1], b[2], b[3], b[4], b[5]]
 }
@@ -607,17 +612,16 @@ pub fn member_check(
 /// bytes ([`schedule_words`]). One multiply per entry or link: a bijection of the running
 /// value, so a change of any single entry or link always changes the result.
 pub fn schedule_start(group: usize, members: usize, count: u16, cap: u16, links: usize) -> u64 {
-    let mut h = 0x5AFE_10C1_6A05_0003;
-    for w in [
-        group as u64,
-        members as u64,
-        u64::from(count),
-        u64::from(cap),
-        links as u64,
-    ] {
-        h = mix(h, w);
-    }
-    h
+    fold(
+        0x5AFE_10C1_6A05_0003,
+        &[
+            group as u64,
+            members as u64,
+            u64::from(count),
+            u64::from(cap),
+            links as u64,
+        ],
+    )
 }
 
 /// One member entry (its two 64-bit words) or one link (its 64-bit and 32-bit words) into

@@ -1108,15 +1108,19 @@ fn an_empty_group_in_run_has_no_fb_run() {
     }
 }
 
+/// (bRun, bComStartupIn, the state a member or link fault leaves): a fault stops a running
+/// (RUN) or starting (START) group and leaves a stopped one in STOP.
+const STOPS_RUNNING_AND_STARTING: [(u8, u8, u8); 3] = [
+    (1, 1, SL_STATE_ERROR),
+    (1, 0, SL_STATE_ERROR),
+    (0, 0, SL_STATE_STOP),
+];
+
 /// A member in ERROR stops the group in RUN and in START (FBERROR, the member's index), and
 /// leaves a stopped group in STOP (mutation-testing findings: the START half of the guard).
 #[test]
 fn a_member_error_stops_a_running_or_starting_group_only() {
-    for (run, startup, want) in [
-        (1, 1, SL_STATE_ERROR),
-        (1, 0, SL_STATE_ERROR),
-        (0, 0, SL_STATE_STOP),
-    ] {
+    for (run, startup, want) in STOPS_RUNNING_AND_STARTING {
         let mut e = estop_pair();
         let mut g = new_group(1, 0);
         let mut ms: [&mut dyn Member; 1] = [&mut e];
@@ -1149,11 +1153,7 @@ fn a_member_error_stops_a_running_or_starting_group_only() {
 /// STOP (a mutation-testing finding: the START half of the guard).
 #[test]
 fn an_unconsumed_link_stops_a_running_or_starting_group_only() {
-    for (run, startup, want) in [
-        (1, 1, SL_STATE_ERROR),
-        (1, 0, SL_STATE_ERROR),
-        (0, 0, SL_STATE_STOP),
-    ] {
+    for (run, startup, want) in STOPS_RUNNING_AND_STARTING {
         let (mut e, mut a) = (estop_pair(), and2());
         let mut g = new_group(2, 2);
         let mut ms: [&mut dyn Member; 2] = [&mut e, &mut a];

@@ -486,8 +486,16 @@ fn every_registered_type_refuses_every_other_tag() {
     // reads as a zero header: GR14's limit by construction. Their pairs keep the exact
     // per-pair checks below but are counted apart from the rarity bound.
     const TABLE_BLOCK_PRIVATE: usize = 256;
-    for own in &types {
-        for claimed in &types {
+    // Under Miri (tools/deep-check.sh) every 11th pair plus each type under its own tag:
+    // every type is still offered as some other type and claimed by some other type, in
+    // minutes instead of hours. The stable test command checks all pairs.
+    let stride = if cfg!(miri) { 11 } else { 1 };
+    for (i, own) in types.iter().enumerate() {
+        let sampled = types
+            .iter()
+            .enumerate()
+            .filter(|(j, _)| *j == i || (i + j) % stride == 0);
+        for (_, claimed) in sampled {
             let mem = Mem::new();
             let (g, m, _) = group_in(&mem);
             let p = mem.at::<c_void>(1024);

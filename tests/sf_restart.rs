@@ -881,11 +881,8 @@ fn in_a_group_with_a_link() {
     }
 }
 
-/// The clock check holds across a return to IDLE (idle keeps the clock memory, semantics
-/// PO6): a clock that went back between the call that left for IDLE and the activating call
-/// is C3FE (a mutation-testing finding).
-#[test]
-fn the_clock_check_holds_across_idle() {
+/// An SF_EmergencyStop activated at 100 with automatic reset, its output enabled at 110.
+fn enabled_at_110() -> SF_EmergencyStop {
     let on = In {
         activate: true,
         input: true,
@@ -896,7 +893,16 @@ fn the_clock_check_holds_across_idle() {
     fb.apply(on);
     assert_eq!(fb.c_cycle(100), SL_OK);
     assert_eq!(fb.c_cycle(110), SL_OK);
-    assert_eq!(fb.DiagCode, 0x8000);
+    assert_eq!((fb.DiagCode, fb.S_EStopOut), (0x8000, 1));
+    fb
+}
+
+/// The clock check holds across a return to IDLE (idle keeps the clock memory, semantics
+/// PO6): a clock that went back between the call that left for IDLE and the activating call
+/// is C3FE (a mutation-testing finding).
+#[test]
+fn the_clock_check_holds_across_idle() {
+    let mut fb = enabled_at_110();
     fb.Activate = 0;
     assert_eq!(fb.c_cycle(120), SL_OK);
     assert_eq!(fb.DiagCode, 0);
@@ -912,17 +918,7 @@ fn the_clock_check_holds_across_idle() {
 #[test]
 fn forced_fault_is_c3ff_sealed_on_the_instance() {
     use safelogic::registry::Cyclic;
-    let on = In {
-        activate: true,
-        input: true,
-        start_reset: true,
-        ..In::default()
-    };
-    let mut fb = SF_EmergencyStop::default();
-    fb.apply(on);
-    assert_eq!(fb.c_cycle(100), SL_OK);
-    assert_eq!(fb.c_cycle(110), SL_OK);
-    assert_eq!((fb.DiagCode, fb.S_EStopOut), (0x8000, 1));
+    let mut fb = enabled_at_110();
     fb.force_safe();
     assert_eq!(
         (fb.DiagCode, fb.S_EStopOut, fb.Error, fb.Ready),
