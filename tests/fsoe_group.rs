@@ -42,42 +42,90 @@ fn conn(role: u16) -> SL_FSOE_CONN {
     }
 }
 
-impl Node {
-    fn new(role: u16) -> &'static mut Node {
-        let n: &mut Node = Box::leak(Box::default());
-        n.conn = conn(role);
-        // SAFETY (all calls below): pointers to fields of a leaked, live node that no
-        // reference covers during the call.
+/// A node, owned through the raw pointer of its box (freed on drop). The group keeps
+/// pointers to the node's blocks across calls, so they are derived from this pointer
+/// (`block`), the library calls get pointers derived from it, and no `&mut Node` is held
+/// across a call: field access goes through `Deref` / `DerefMut`, a borrow that ends before
+/// the next call (under Stacked Borrows, Miri, a `&mut Node` around a call would invalidate
+/// the group's pointers).
+struct NodeRef(*mut Node);
+
+impl Drop for NodeRef {
+    fn drop(&mut self) {
+        // SAFETY: the pointer of the box made in `Node::new`, dropped once.
+        drop(unsafe { Box::from_raw(self.0) });
+    }
+}
+
+impl std::ops::Deref for NodeRef {
+    type Target = Node;
+    fn deref(&self) -> &Node {
+        // SAFETY: a live node (freed only on drop); no library call runs while the borrow
+        // lives.
+        unsafe { &*self.0 }
+    }
+}
+
+impl std::ops::DerefMut for NodeRef {
+    fn deref_mut(&mut self) -> &mut Node {
+        // SAFETY: as in `deref`.
+        unsafe { &mut *self.0 }
+    }
+}
+
+impl NodeRef {
+    fn new(role: u16) -> NodeRef {
+        let n = NodeRef(Box::into_raw(Box::<Node>::default()));
+        // SAFETY (all calls of this impl): pointers to fields of a live node,
+        // derived from its own raw pointer, with no reference to it alive during the call.
         unsafe {
-            assert_eq!(sl_fsoe_init(&mut n.conn), SL_OK);
+            (*n.0).conn = conn(role);
+            assert_eq!(sl_fsoe_init(n.block(|n| &raw mut (*n).conn)), SL_OK);
             assert_eq!(
-                sl_group_init(&mut n.g, n.members.as_mut_ptr(), 4, n.links.as_mut_ptr(), 8),
+                sl_group_init(n.group(), n.members(), 4, n.links(), 8),
                 SL_OK
             );
         }
         n
     }
-    fn add(&mut self, ty: u16, p: *mut core::ffi::c_void) -> i32 {
+
+    /// A field of the node, derived from the node's raw pointer (see [`NodeRef`]).
+    fn block<T>(&self, field: impl FnOnce(*mut Node) -> *mut T) -> *mut T {
+        field(self.0)
+    }
+    fn group(&self) -> *mut SL_GROUP {
+        // SAFETY: a field place of the live node; no reference is formed.
+        unsafe { &raw mut (*self.0).g }
+    }
+    fn members(&self) -> *mut SL_MEMBER {
+        // SAFETY: as in `group`.
+        unsafe { &raw mut (*self.0).members }.cast()
+    }
+    fn links(&self) -> *mut SL_LINK {
+        // SAFETY: as in `group`.
+        unsafe { &raw mut (*self.0).links }.cast()
+    }
+    fn add(&self, ty: u16, p: *mut core::ffi::c_void) -> i32 {
         let mut idx = 0u16;
-        // SAFETY: see `new`.
-        let rc =
-            unsafe { sl_group_add_member(&mut self.g, self.members.as_mut_ptr(), ty, p, &mut idx) };
+        // SAFETY: see `NodeRef::new`.
+        let rc = unsafe { sl_group_add_member(self.group(), self.members(), ty, p, &mut idx) };
         if rc == SL_OK {
             assert_eq!(idx + 1, self.g.nMembers);
         }
         rc
     }
-    fn add_conn(&mut self) -> i32 {
-        let p = (&mut self.conn as *mut SL_FSOE_CONN).cast();
-        self.add(SL_TYPE_FSOE_CONN, p)
+    fn add_conn(&self) -> i32 {
+        // SAFETY: a field place of the live node.
+        let p = self.block(|n| unsafe { &raw mut (*n).conn });
+        self.add(SL_TYPE_FSOE_CONN, p.cast())
     }
-    fn link(&mut self, kind: u8, src: u16, so: usize, dst: u16, d: usize) -> i32 {
-        // SAFETY: see `new`.
+    fn link(&self, kind: u8, src: u16, so: usize, dst: u16, d: usize) -> i32 {
+        // SAFETY: see `NodeRef::new`.
         unsafe {
             sl_group_add_link_kind(
-                &mut self.g,
-                self.members.as_mut_ptr(),
-                self.links.as_mut_ptr(),
+                self.group(),
+                self.members(),
+                self.links(),
                 kind,
                 src,
                 so as u16,
@@ -89,34 +137,23 @@ impl Node {
     /// The next cycle runs the sealed schedule (docs/performance.md): the scenarios below
     /// then exercise its hand-backs (a connection member, RXBIT/TXBIT links, a shutdown
     /// request) as well as the checked cycle.
-    fn sealed(&mut self) -> bool {
-        // SAFETY: see `new`.
+    fn sealed(&self) -> bool {
+        // SAFETY: see `NodeRef::new`.
         unsafe {
-            safelogic::ffi::sl_group_schedule_sealed(
-                &mut self.g,
-                self.members.as_mut_ptr(),
-                self.links.as_mut_ptr(),
-            )
+            safelogic::ffi::sl_group_schedule_sealed(self.group(), self.members(), self.links())
         }
     }
     fn cycle(&mut self, now: u32) -> i32 {
         self.conn.nSessionIdSeed = (now.wrapping_mul(2_654_435_761) >> 16) as u16 | 1;
-        // SAFETY: see `new`.
-        unsafe {
-            sl_group_cycle(
-                &mut self.g,
-                self.members.as_mut_ptr(),
-                self.links.as_mut_ptr(),
-                now,
-            )
-        }
+        // SAFETY: see `NodeRef::new`.
+        unsafe { sl_group_cycle(self.group(), self.members(), self.links(), now) }
     }
 }
 
 /// Master node: connection (member 0), ESTOP (member 1) with its two channels from received
 /// bits 0 and 1, its EStopOut sent as bit 0; FB_CONNECTION_SHUTDOWN (member 2).
-fn master() -> &'static mut Node {
-    let n = Node::new(SL_FSOE_ROLE_MASTER);
+fn master() -> NodeRef {
+    let mut n = NodeRef::new(SL_FSOE_ROLE_MASTER);
     n.estop = FB_ESTOP {
         wInputActive: 0b11,
         ..Default::default()
@@ -126,15 +163,17 @@ fn master() -> &'static mut Node {
         wInputActive: 0b01,
         ..Default::default()
     };
-    // SAFETY: see `Node::new`.
+    // SAFETY: see `NodeRef::new`.
     unsafe {
         assert_eq!(sl_estop_init(&mut n.estop), SL_OK);
         assert_eq!(sl_connection_shutdown_init(&mut n.shut), SL_OK);
     }
     assert_eq!(n.add_conn(), SL_OK);
-    let p = (&mut n.estop as *mut FB_ESTOP).cast();
+    // SAFETY: a field place of the live node.
+    let p = n.block(|n| unsafe { &raw mut (*n).estop }).cast();
     assert_eq!(n.add(SL_TYPE_ESTOP, p), SL_OK);
-    let p = (&mut n.shut as *mut FB_CONNECTION_SHUTDOWN).cast();
+    // SAFETY: a field place of the live node.
+    let p = n.block(|n| unsafe { &raw mut (*n).shut }).cast();
     assert_eq!(n.add(SL_TYPE_CONNECTION_SHUTDOWN, p), SL_OK);
     let in1 = offset_of!(FB_ESTOP, bEStopIn1);
     let in2 = offset_of!(FB_ESTOP, bEStopIn2);
@@ -150,8 +189,8 @@ fn master() -> &'static mut Node {
 /// 2 are the hardware e-stop channels, sent as bits 0 and 1; input 3 is received bit 0
 /// (the master's EStopOut), shown at output 3. FB_CONNECTION_SHUTDOWN with no active input
 /// (member 2): the partner's shutdown only.
-fn slave() -> &'static mut Node {
-    let n = Node::new(SL_FSOE_ROLE_SLAVE);
+fn slave() -> NodeRef {
+    let mut n = NodeRef::new(SL_FSOE_ROLE_SLAVE);
     n.dec = FB_DECOUPLE {
         wInputActive: 0b111,
         ..Default::default()
@@ -160,15 +199,17 @@ fn slave() -> &'static mut Node {
         nConnectionId: 7,
         ..Default::default()
     };
-    // SAFETY: see `Node::new`.
+    // SAFETY: see `NodeRef::new`.
     unsafe {
         assert_eq!(sl_decouple_init(&mut n.dec), SL_OK);
         assert_eq!(sl_connection_shutdown_init(&mut n.shut), SL_OK);
     }
     assert_eq!(n.add_conn(), SL_OK);
-    let p = (&mut n.dec as *mut FB_DECOUPLE).cast();
+    // SAFETY: a field place of the live node.
+    let p = n.block(|n| unsafe { &raw mut (*n).dec }).cast();
     assert_eq!(n.add(SL_TYPE_DECOUPLE, p), SL_OK);
-    let p = (&mut n.shut as *mut FB_CONNECTION_SHUTDOWN).cast();
+    // SAFETY: a field place of the live node.
+    let p = n.block(|n| unsafe { &raw mut (*n).shut }).cast();
     assert_eq!(n.add(SL_TYPE_CONNECTION_SHUTDOWN, p), SL_OK);
     assert_eq!(
         n.link(SL_LINK_TXBIT, 1, offset_of!(FB_DECOUPLE, bDecOut1), 0, 0),
@@ -186,6 +227,11 @@ fn slave() -> &'static mut Node {
     n
 }
 
+/// A connection's pointer for one call.
+fn conn_ptr(c: &mut SL_FSOE_CONN) -> *mut core::ffi::c_void {
+    (c as *mut SL_FSOE_CONN).cast()
+}
+
 /// The black channel: the frame in `from`'s transmit mailbox into `to`'s receive mailbox.
 fn carry(from: &SL_FSOE_CONN, to: &mut SL_FSOE_CONN) {
     to.aRxFrame = from.aTxFrame;
@@ -193,8 +239,8 @@ fn carry(from: &SL_FSOE_CONN, to: &mut SL_FSOE_CONN) {
 }
 
 struct Pair {
-    m: &'static mut Node,
-    s: &'static mut Node,
+    m: NodeRef,
+    s: NodeRef,
     t: u32,
     /// The slave process runs and its frames reach the master.
     slave_alive: bool,
@@ -215,11 +261,11 @@ impl Pair {
             carry(&self.s.conn, &mut self.m.conn);
         }
         assert_eq!(self.m.cycle(self.t), SL_OK);
-        check(self.m);
+        check(&self.m);
         if self.slave_alive {
             carry(&self.m.conn, &mut self.s.conn);
             assert_eq!(self.s.cycle(self.t), SL_OK);
-            check(self.s);
+            check(&self.s);
         }
         self.t += STEP;
     }
@@ -245,7 +291,7 @@ impl Pair {
         self.m.estop.bRestart = 0;
         self.step();
     }
-    fn ack(n: &mut Node) {
+    fn ack(n: &mut NodeRef) {
         n.g.bErrAck = 1;
     }
 }
@@ -335,7 +381,7 @@ fn com_error_stops_the_group_within_the_watchdog_and_errack_recovers() {
     assert_eq!((p.m.estop.bEStopOut, p.m.estop.bEStopIn1), (0, 0));
     assert_eq!(p.m.g.nFailedMember, SL_NO_MEMBER);
     // ErrAck while the slave is still gone: nothing is acknowledged.
-    Pair::ack(p.m);
+    Pair::ack(&mut p.m);
     p.run(2);
     p.m.g.bErrAck = 0;
     p.run(2);
@@ -348,8 +394,8 @@ fn com_error_stops_the_group_within_the_watchdog_and_errack_recovers() {
     assert_eq!(p.m.conn.bDataValid, 0);
     // ErrAck on both nodes (the slave's watchdog expired too while it was gone).
     assert_eq!(p.s.g.nState, SL_STATE_ERROR);
-    Pair::ack(p.m);
-    Pair::ack(p.s);
+    Pair::ack(&mut p.m);
+    Pair::ack(&mut p.s);
     p.step();
     assert_eq!((p.m.g.nState, p.m.g.bComErr), (SL_STATE_RESET, 0));
     assert_eq!(p.m.conn.bComErr, 0);
@@ -411,7 +457,7 @@ fn stand_in_inputs_still_feed_the_group_beside_connections() {
     assert_eq!(p.s.dec.bDecOut3, 0);
     assert_eq!(p.s.conn.bComErr, 0);
     p.m.g.bComErrIn = 0;
-    Pair::ack(p.m);
+    Pair::ack(&mut p.m);
     p.step();
     p.m.g.bErrAck = 0;
     p.step();
@@ -486,38 +532,40 @@ fn shutdown_request_outside_data_is_not_honoured() {
 
 #[test]
 fn links_and_members_are_checked() {
-    let n = Node::new(SL_FSOE_ROLE_MASTER);
+    let mut n = NodeRef::new(SL_FSOE_ROLE_MASTER);
     n.estop = FB_ESTOP {
         wInputActive: 0b11,
         ..Default::default()
     };
-    // SAFETY: see `Node::new`.
+    // SAFETY: see `NodeRef::new`.
     unsafe { assert_eq!(sl_estop_init(&mut n.estop), SL_OK) };
-    // An uninitialised connection is refused; so is one whose init was refused.
+    // An uninitialised connection is refused; so is one whose init was refused. (Its
+    // pointer is taken anew for every call: a write to the box invalidates an older one.)
     let mut raw = Box::new(conn(SL_FSOE_ROLE_MASTER));
-    let rp = (&mut *raw as *mut SL_FSOE_CONN).cast();
-    assert_eq!(n.add(SL_TYPE_FSOE_CONN, rp), SL_E_CONFIG);
+    assert_eq!(n.add(SL_TYPE_FSOE_CONN, conn_ptr(&mut raw)), SL_E_CONFIG);
     raw.nConnectionId = 0;
     // SAFETY: a live boxed connection.
     unsafe { assert_eq!(sl_fsoe_init(&mut *raw), SL_E_CONFIG) };
-    assert_eq!(n.add(SL_TYPE_FSOE_CONN, rp), SL_E_CONFIG);
+    assert_eq!(n.add(SL_TYPE_FSOE_CONN, conn_ptr(&mut raw)), SL_E_CONFIG);
     // A corrupt one.
     raw.nConnectionId = 9;
     // SAFETY: as above.
     unsafe { assert_eq!(sl_fsoe_init(&mut *raw), SL_OK) };
     raw.stPrivate.nStateInv ^= 1;
-    assert_eq!(n.add(SL_TYPE_FSOE_CONN, rp), SL_E_CORRUPT);
+    assert_eq!(n.add(SL_TYPE_FSOE_CONN, conn_ptr(&mut raw)), SL_E_CORRUPT);
     assert_eq!(n.g.nMembers, 0);
     assert_eq!(n.add_conn(), SL_OK);
-    let p = (&mut n.estop as *mut FB_ESTOP).cast();
+    // SAFETY: a field place of the live node.
+    let p = n.block(|n| unsafe { &raw mut (*n).estop }).cast();
     assert_eq!(n.add(SL_TYPE_ESTOP, p), SL_OK);
     // A connection after a block: refused (connections run first).
     raw.stPrivate.nStateInv ^= 1;
-    assert_eq!(n.add(SL_TYPE_FSOE_CONN, rp), SL_E_CONFIG);
+    assert_eq!(n.add(SL_TYPE_FSOE_CONN, conn_ptr(&mut raw)), SL_E_CONFIG);
     // The same connection twice: refused (it shares bytes with a member).
-    let n2 = Node::new(SL_FSOE_ROLE_MASTER);
+    let n2 = NodeRef::new(SL_FSOE_ROLE_MASTER);
     assert_eq!(n2.add_conn(), SL_OK);
-    let cp = (&mut n2.conn as *mut SL_FSOE_CONN).cast();
+    // SAFETY: a field place of the live node.
+    let cp = n2.block(|n| unsafe { &raw mut (*n).conn }).cast();
     assert_eq!(n2.add(SL_TYPE_FSOE_CONN, cp), SL_E_CONFIG);
 
     let in1 = offset_of!(FB_ESTOP, bEStopIn1);
@@ -561,25 +609,22 @@ fn links_and_members_are_checked() {
 #[test]
 fn at_most_sl_group_conn_max_connections() {
     let cap = SL_GROUP_CONN_MAX + 1;
-    let g = Box::leak(Box::<SL_GROUP>::default());
-    let members = Box::leak(vec![SL_MEMBER::default(); usize::from(cap)].into_boxed_slice());
-    let conns = Box::leak(vec![conn(SL_FSOE_ROLE_MASTER); usize::from(cap)].into_boxed_slice());
-    // SAFETY: leaked, live storage that no reference covers during the calls.
+    let mut group = Box::<SL_GROUP>::default();
+    let mut members = vec![SL_MEMBER::default(); usize::from(cap)];
+    let mut conns = vec![conn(SL_FSOE_ROLE_MASTER); usize::from(cap)];
+    let (g, mt, cs) = (
+        &mut *group as *mut SL_GROUP,
+        members.as_mut_ptr(),
+        conns.as_mut_ptr(),
+    );
+    // SAFETY: live storage, reached only through these pointers while the group holds them.
     unsafe {
-        assert_eq!(
-            sl_group_init(g, members.as_mut_ptr(), cap, std::ptr::null_mut(), 0),
-            SL_OK
-        );
-        for (k, c) in conns.iter_mut().enumerate() {
-            c.nConnectionId = 1 + k as u16;
+        assert_eq!(sl_group_init(g, mt, cap, std::ptr::null_mut(), 0), SL_OK);
+        for k in 0..usize::from(cap) {
+            let c = cs.add(k);
+            (*c).nConnectionId = 1 + k as u16;
             assert_eq!(sl_fsoe_init(c), SL_OK);
-            let rc = sl_group_add_member(
-                g,
-                members.as_mut_ptr(),
-                SL_TYPE_FSOE_CONN,
-                (c as *mut SL_FSOE_CONN).cast(),
-                std::ptr::null_mut(),
-            );
+            let rc = sl_group_add_member(g, mt, SL_TYPE_FSOE_CONN, c.cast(), std::ptr::null_mut());
             let want = if k < usize::from(SL_GROUP_CONN_MAX) {
                 SL_OK
             } else {
@@ -592,7 +637,7 @@ fn at_most_sl_group_conn_max_connections() {
 
 #[test]
 fn a_corrupt_connection_is_a_com_error_of_the_group() {
-    let p = running();
+    let mut p = running();
     p.m.conn.stPrivate.nStateInv ^= 0x10;
     carry(&p.s.conn, &mut p.m.conn);
     assert_eq!(p.m.cycle(p.t), SL_E_CORRUPT);

@@ -107,11 +107,11 @@ fn build() -> Box<Plant> {
     for i in 0..MEMBERS {
         let k = i / PATTERN.len();
         let block: *mut core::ffi::c_void = match PATTERN[i % PATTERN.len()] {
-            SL_TYPE_ESTOP => (&mut p.estops[k] as *mut FB_ESTOP).cast(),
-            SL_TYPE_MON => (&mut p.mons[k] as *mut FB_MON).cast(),
-            SL_TYPE_AND => (&mut p.ands[k] as *mut FB_AND).cast(),
-            SL_TYPE_OR => (&mut p.ors[k] as *mut FB_OR).cast(),
-            _ => (&mut p.tons[k] as *mut FB_TON).cast(),
+            SL_TYPE_ESTOP => block_ptr(&mut p.estops, k),
+            SL_TYPE_MON => block_ptr(&mut p.mons, k),
+            SL_TYPE_AND => block_ptr(&mut p.ands, k),
+            SL_TYPE_OR => block_ptr(&mut p.ors, k),
+            _ => block_ptr(&mut p.tons, k),
         };
         // SAFETY: as above; every block is a distinct element of a vector that stays put.
         let rc = unsafe {
@@ -168,6 +168,23 @@ fn build() -> Box<Plant> {
         }
     }
     p
+}
+
+/// A member block's pointer for the group: element `k` of its vector, derived from the
+/// vector's own pointer. The group keeps it across calls, so every later write to a block
+/// goes through [`at`]: a `&mut` to the whole slice (`IndexMut`, `iter_mut`) would
+/// invalidate it under Stacked Borrows (Miri, tools/deep-check.sh).
+fn block_ptr<T>(v: &mut Vec<T>, k: usize) -> *mut core::ffi::c_void {
+    assert!(k < v.len());
+    v.as_mut_ptr().wrapping_add(k).cast()
+}
+
+/// Element `k` of a block vector, for a write that leaves the group's pointers valid.
+fn at<T>(v: &mut Vec<T>, k: usize) -> &mut T {
+    assert!(k < v.len());
+    // SAFETY: in bounds; derived from the vector's pointer without a reference to the
+    // slice, and borrowed no longer than `v`.
+    unsafe { &mut *v.as_mut_ptr().add(k) }
 }
 
 /// One cycle, and how many members the sealed schedule ran straight in it.
@@ -255,17 +272,20 @@ fn a_sealed_group_gives_what_a_fully_checked_group_gives() {
             p.group.bErrAck = u8::from(c % 200 == 199);
             // A restart pulse for every ESTOP and MON now and then.
             let restart = u8::from(c % 150 < 2 || c < restart_until);
-            for e in &mut p.estops {
-                e.bRestart = restart;
+            for e in 0..p.estops.len() {
+                at(&mut p.estops, e).bRestart = restart;
             }
             match (r >> 16) % 16 {
-                0 => (p.mons[k].bMonIn1, p.mons[k].bMonIn2) = (0, 0),
-                1 | 2 => (p.mons[k].bMonIn1, p.mons[k].bMonIn2) = (1, 1),
-                3 => p.estops[k].bEStopIn1 ^= 1,
-                4 => (p.estops[k].bEStopIn1, p.estops[k].bEStopIn2) = (1, 1),
+                0 => (at(&mut p.mons, k).bMonIn1, at(&mut p.mons, k).bMonIn2) = (0, 0),
+                1 | 2 => (at(&mut p.mons, k).bMonIn1, at(&mut p.mons, k).bMonIn2) = (1, 1),
+                3 => at(&mut p.estops, k).bEStopIn1 ^= 1,
+                4 => {
+                    let e = at(&mut p.estops, k);
+                    (e.bEStopIn1, e.bEStopIn2) = (1, 1);
+                }
                 // An invalid BOOL for one call: SL_E_INVALID_BOOL from a member that does
                 // not enter ERROR (the status must reach the group's in a sealed cycle too).
-                5 => p.estops[k].bRestart = 2,
+                5 => at(&mut p.estops, k).bRestart = 2,
                 _ => {}
             }
         }
