@@ -5,7 +5,9 @@
 #   bash tools/deep-check.sh [SECONDS_PER_TARGET] [FILES_FOR_MUTANTS...]
 # Needs: rustup component add --toolchain nightly miri rust-src; cargo install cargo-fuzz
 # cargo-mutants. Environment:
-#   MIRI_TESTS     the Miri test binaries (default below)
+#   MIRI_TESTS     the Miri test binaries (default below: the group and FFI suites, and the
+#                  block suites that reached the old slice-building UB of issue 16; property
+#                  tests run a hundredth of their cases under Miri, tests/common depth_cases)
 #   DEEP_STEPS     which steps run (default "miri fuzz mutants peer")
 #   PEER_ST        a copy of the PLCopen peer ST for the step peer (default: download it)
 #   MUTANTS_ARGS   more cargo-mutants options, e.g. "--in-diff build/my.diff" (only the
@@ -29,7 +31,7 @@ note() { summary+=("$*"); printf '\n==== %s ====\n' "$*"; }
 steps=${DEEP_STEPS:-"miri fuzz mutants peer"}
 step() { [[ " $steps " == *" $1 "* ]]; }
 
-miri_tests=${MIRI_TESTS:-"ffi group_soundness links group fsoe_group analog_group group_schedule"}
+miri_tests=${MIRI_TESTS:-"ffi group_soundness links group fsoe_group analog_group group_schedule edm muting opmode rs sr ton ton2 twohand xor"}
 step miri && for mode in stacked tree; do
     flags="-Zmiri-disable-isolation"
     [ "$mode" = tree ] && flags="$flags -Zmiri-tree-borrows"
