@@ -246,7 +246,10 @@ fn in_error(p: &Plant) -> usize {
 
 #[test]
 fn a_sealed_group_gives_what_a_fully_checked_group_gives() {
-    let cycles = 4_000
+    // Under Miri (tools/deep-check.sh) an eighth of the cycles, with corruptions eight
+    // times as often and the counts asked for scaled alike: the stable command runs it whole.
+    let scale = if cfg!(miri) { 8 } else { 1 };
+    let cycles = 4_000 / scale
         * std::env::var("SL_PROP_DEPTH")
             .ok()
             .and_then(|v| v.parse().ok())
@@ -290,7 +293,7 @@ fn a_sealed_group_gives_what_a_fully_checked_group_gives() {
             }
         }
         // Rarely, the same corruption of an entry's or a link's check byte in both.
-        let corrupt = r % 509 == 0;
+        let corrupt = r % (509 / scale as u64) == 0;
         if corrupt {
             let i = (r >> 24) as usize % MEMBERS;
             for p in [&mut a, &mut b] {
@@ -363,11 +366,11 @@ fn a_sealed_group_gives_what_a_fully_checked_group_gives() {
     }
     println!("A sealed in {sealed_cycles} of {cycles} cycles ({straight_cycles} with every member run straight, {handed_back} with members in ERROR handed back, {invalid_bools} with SL_E_INVALID_BOOL); group states {group_states:?}; corruptions stopped {corrupt_stops}");
     assert!(
-        straight_cycles >= 100 && handed_back >= 100,
+        straight_cycles >= 100 / scale && handed_back >= 100 / scale,
         "straight {straight_cycles}, handed back {handed_back}: both are the subject"
     );
     assert!(
-        invalid_bools >= 20,
+        invalid_bools >= 20 / scale,
         "only {invalid_bools} sealed cycles with an invalid BOOL"
     );
     assert!(
