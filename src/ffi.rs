@@ -66,6 +66,45 @@ fn block_call<B: Cyclic>(p: *mut B, f: impl FnOnce(&mut B) -> Status) -> i32 {
     )
 }
 
+/// `sl_<name>_cycle` of a type with a fast path: the fast path inline, the rest of the
+/// cycle through [`cycle_rest`] (a type without one runs its cycle in [`block_call`]).
+/// The fast path cannot panic and `cycle_rest` cannot unwind (an `extern "C"` function),
+/// so this boundary costs nothing and the fast path needs no stack frame; a panic of the
+/// full cycle is caught inside `cycle_rest`, with the same reaction as in [`block_call`].
+#[inline(always)]
+fn block_cycle<B: Cyclic>(p: *mut B, now: u32) -> i32 {
+    if !B::STEADY {
+        return block_call(p, |fb| fb.cycle_fb(now));
+    }
+    let fb = match instance(p) {
+        Ok(fb) => fb,
+        Err(e) => return e,
+    };
+    ffi_boundary!(
+        {
+            ffi_boundary!((), fb.force_safe());
+            SL_E_INTERNAL
+        },
+        match fb.cycle_fast(now) {
+            Ok(()) => SL_OK,
+            // The key crosses as a plain integer: u32::MAX is "no key".
+            Err(key) => cycle_rest(fb, key.map_or(u32::MAX, u32::from), now),
+        }
+    )
+}
+
+/// The part of a cycle the fast path did not serve, behind its own panic boundary.
+#[inline(never)]
+extern "C" fn cycle_rest<B: Cyclic>(fb: &mut B, key: u32, now: u32) -> i32 {
+    ffi_boundary!(
+        {
+            ffi_boundary!((), fb.force_safe());
+            SL_E_INTERNAL
+        },
+        fb.cycle_rest(u16::try_from(key).ok(), now).code()
+    )
+}
+
 /// Static, NUL-terminated text for a status code (never NULL).
 #[no_mangle]
 pub extern "C" fn sl_status_str(status: i32) -> *const c_char {
@@ -191,7 +230,7 @@ macro_rules! ffi_functions {
             #[no_mangle]
             #[allow(non_snake_case)]
             pub unsafe extern "C" fn $cycle(fb: *mut $ty, tNow: u32) -> i32 {
-                block_call(fb, |fb| fb.cycle_fb(tNow))
+                block_cycle(fb, tNow)
             }
         )*
 

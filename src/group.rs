@@ -201,12 +201,21 @@ macro_rules! impl_member {
         }
         impl<$($gen)*> $crate::registry::Cyclic for $ty {
             const MAGIC: u16 = <Self as $crate::prim::envelope::Block>::MAGIC;
+            const STEADY: bool = <Self as $crate::prim::envelope::Block>::STEADY;
             fn init_fb(&mut self) -> $crate::types::Status {
                 $crate::prim::envelope::init(self)
             }
             #[inline(always)]
             fn cycle_fb(&mut self, now: u32) -> $crate::types::Status {
                 $crate::prim::envelope::cycle(self, now)
+            }
+            #[inline(always)]
+            fn cycle_fast(&mut self, now: u32) -> Result<(), Option<u16>> {
+                $crate::prim::envelope::fast(self, now)
+            }
+            #[inline(always)]
+            fn cycle_rest(&mut self, key: Option<u16>, now: u32) -> $crate::types::Status {
+                $crate::prim::envelope::Block::settle(self, key, now)
             }
             fn force_safe(&mut self) {
                 $crate::prim::envelope::force_error(self)
@@ -384,6 +393,10 @@ macro_rules! impl_sf_member {
             }
             #[inline(always)]
             fn cycle_fb(&mut self, now: u32) -> $crate::types::Status {
+                $crate::prim::sf::cycle(self, now)
+            }
+            #[inline(always)]
+            fn cycle_rest(&mut self, _key: Option<u16>, now: u32) -> $crate::types::Status {
                 $crate::prim::sf::cycle(self, now)
             }
             fn force_safe(&mut self) {

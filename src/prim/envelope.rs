@@ -75,6 +75,8 @@ pub trait Block: Instance + crate::registry::Registered {
     /// Writes the VAR_OUTPUT and info fields from the private state.
     fn write_outputs(&mut self);
 
+    /// The block has a steady-state fast path (set by `steady_hooks!`).
+    const STEADY: bool = false;
     /// The key of this call for the fast path: bit i is BOOL byte i of every byte the cycle
     /// reads (inputs, bRun, bErrAck). `None` for a block without a fast path and whenever one
     /// of those bytes is neither 0 nor 1.
@@ -92,7 +94,9 @@ pub trait Block: Instance + crate::registry::Registered {
     #[inline(always)]
     fn store_key(&mut self, _key: Option<u16>) {}
     /// The full cycle, recording whether it was a fixed point for `key` ([`settle`]).
-    #[inline]
+    /// Out of line, as the fast path's `settle` is: the C function and the group's call of
+    /// the block share one copy.
+    #[inline(never)]
     fn settle(&mut self, _key: Option<u16>, now: u32) -> Status
     where
         Self: Sized,
@@ -146,6 +150,7 @@ pub(crate) use steady_private;
 /// [`SteadyPrivate`] (the family supplies `steady_key` and `quiet`).
 macro_rules! steady_hooks {
     () => {
+        const STEADY: bool = true;
         #[inline(always)]
         fn holds_key(&self, key: u16) -> bool {
             $crate::prim::envelope::SteadyPrivate::holds(self.private(), key)
@@ -240,6 +245,17 @@ pub fn cycle<B: Block>(fb: &mut B, now: u32) -> Status {
 #[doc(hidden)]
 #[inline(always)]
 pub fn cycle_traced<B: Block>(fb: &mut B, now: u32) -> (Status, bool) {
+    match fast(fb, now) {
+        Ok(()) => (Status::Ok, true),
+        Err(key) => (fb.settle(key, now), false),
+    }
+}
+
+/// The fast path alone: `Ok` when it served the call (`SL_OK`), else the call's key for
+/// [`Block::settle`], which must then run. Split from [`cycle`] so that the C boundary can
+/// keep the fast path a leaf and reach the full cycle through an out-of-line call.
+#[inline(always)]
+pub fn fast<B: Block>(fb: &mut B, now: u32) -> Result<(), Option<u16>> {
     let key = fb.steady_key();
     if key.is_some_and(|k| fb.holds_key(k)) {
         let h = fb.header();
@@ -249,10 +265,10 @@ pub fn cycle_traced<B: Block>(fb: &mut B, now: u32) -> (Status, bool) {
         {
             fb.header_mut().tLast = now;
             fb.write_outputs();
-            return (Status::Ok, true);
+            return Ok(());
         }
     }
-    (fb.settle(key, now), false)
+    Err(key)
 }
 
 /// The full cycle only, keeping the fast-path key as [`cycle`] does (the reference the
