@@ -349,13 +349,26 @@ const EXPECTED: [(&str, &[u8]); 10] = [
             SL_STATE_ERROR,
         ],
     ),
+    // TON and TOF also while their timer runs and is not yet reached (`timing_quiet`).
     (
         "TON",
-        &[SL_STATE_RUN, SL_STATE_SAFE, SL_STATE_STOP, SL_STATE_ERROR],
+        &[
+            SL_STATE_RUN,
+            SL_STATE_SAFE,
+            SL_STATE_STOP,
+            SL_STATE_ERROR,
+            SL_STATE_TON_DELAYIN,
+        ],
     ),
     (
         "TOF",
-        &[SL_STATE_RUN, SL_STATE_SAFE, SL_STATE_STOP, SL_STATE_ERROR],
+        &[
+            SL_STATE_RUN,
+            SL_STATE_SAFE,
+            SL_STATE_STOP,
+            SL_STATE_ERROR,
+            SL_STATE_DELAYOUT,
+        ],
     ),
     (
         "TON2",

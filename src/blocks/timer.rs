@@ -444,6 +444,20 @@ macro_rules! timer_block {
                 phase_of::<Self>(self.private().stHeader.nState) != Some(Phase::Timing)
             }
 
+            /// The key has four bits (input, Enable, bRun, bErrAck).
+            const TIMED_KEY: u16 = 0x80;
+
+            /// Timing and the delay not reached at `now`: the call keeps Timing and changes
+            /// nothing (TON, TOF). Never for TON2: its stored elapsed time follows the clock
+            /// in every such call.
+            #[inline(always)]
+            fn timing_quiet(&self, now: u32) -> bool {
+                let p = self.private();
+                !Self::PERSISTS
+                    && p.stHeader.nState == Self::TIMING_STATE
+                    && !time::reached(now, p.stHeader.tPhase, p.dwDelay)
+            }
+
             $crate::prim::envelope::steady_hooks!();
 
             fn write_outputs(&mut self) {
