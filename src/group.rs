@@ -659,18 +659,18 @@ const fn step(h: u64, w: u64) -> u64 {
 /// The check a link carries in `aReserved` (24 bits): its fields, its index and the
 /// group's link count (no address: a Rust caller may move its link array).
 pub fn link_check(l: &SL_LINK, index: usize, count: u16) -> [u8; 3] {
-    let mut h = 0x5AFE_10C1_6A05_0002;
-    for w in [
-        u64::from(l.nSrcMember),
-        u64::from(l.nSrcOffset),
-        u64::from(l.nDstMember),
-        u64::from(l.nDstOffset),
-        u64::from(l.nKind),
-        index as u64,
-        u64::from(count),
-    ] {
-        h = mix(h, w);
-    }
+    let h = fold(
+        0x5AFE_10C1_6A05_0002,
+        &[
+            u64::from(l.nSrcMember),
+            u64::from(l.nSrcOffset),
+            u64::from(l.nDstMember),
+            u64::from(l.nDstOffset),
+            u64::from(l.nKind),
+            index as u64,
+            u64::from(count),
+        ],
+    );
     let b = h.to_le_bytes();
     [b[0], b[1], b[2]]
 }

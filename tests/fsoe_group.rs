@@ -6,6 +6,9 @@
 //! within the watchdog time; recovery through ErrAck; TXBIT reaches the other side;
 //! FB_CONNECTION_SHUTDOWN shuts the connection down without a group error.
 
+mod common;
+
+use common::RawBox;
 use safelogic::ffi::*;
 use safelogic::fsoe::*;
 use safelogic::group::{
@@ -48,38 +51,15 @@ fn conn(role: u16) -> SL_FSOE_CONN {
 /// across a call: field access goes through `Deref` / `DerefMut`, a borrow that ends before
 /// the next call (under Stacked Borrows, Miri, a `&mut Node` around a call would invalidate
 /// the group's pointers).
-struct NodeRef(*mut Node);
-
-impl Drop for NodeRef {
-    fn drop(&mut self) {
-        // SAFETY: the pointer of the box made in `Node::new`, dropped once.
-        drop(unsafe { Box::from_raw(self.0) });
-    }
-}
-
-impl std::ops::Deref for NodeRef {
-    type Target = Node;
-    fn deref(&self) -> &Node {
-        // SAFETY: a live node (freed only on drop); no library call runs while the borrow
-        // lives.
-        unsafe { &*self.0 }
-    }
-}
-
-impl std::ops::DerefMut for NodeRef {
-    fn deref_mut(&mut self) -> &mut Node {
-        // SAFETY: as in `deref`.
-        unsafe { &mut *self.0 }
-    }
-}
+type NodeRef = RawBox<Node>;
 
 impl NodeRef {
-    fn new(role: u16) -> NodeRef {
-        let n = NodeRef(Box::into_raw(Box::<Node>::default()));
+    fn with_role(role: u16) -> NodeRef {
+        let n = NodeRef::new(Node::default());
         // SAFETY (all calls of this impl): pointers to fields of a live node,
         // derived from its own raw pointer, with no reference to it alive during the call.
         unsafe {
-            (*n.0).conn = conn(role);
+            (*n.ptr()).conn = conn(role);
             assert_eq!(sl_fsoe_init(n.block(|n| &raw mut (*n).conn)), SL_OK);
             assert_eq!(
                 sl_group_init(n.group(), n.members(), 4, n.links(), 8),
@@ -91,23 +71,23 @@ impl NodeRef {
 
     /// A field of the node, derived from the node's raw pointer (see [`NodeRef`]).
     fn block<T>(&self, field: impl FnOnce(*mut Node) -> *mut T) -> *mut T {
-        field(self.0)
+        field(self.ptr())
     }
     fn group(&self) -> *mut SL_GROUP {
         // SAFETY: a field place of the live node; no reference is formed.
-        unsafe { &raw mut (*self.0).g }
+        unsafe { &raw mut (*self.ptr()).g }
     }
     fn members(&self) -> *mut SL_MEMBER {
         // SAFETY: as in `group`.
-        unsafe { &raw mut (*self.0).members }.cast()
+        unsafe { &raw mut (*self.ptr()).members }.cast()
     }
     fn links(&self) -> *mut SL_LINK {
         // SAFETY: as in `group`.
-        unsafe { &raw mut (*self.0).links }.cast()
+        unsafe { &raw mut (*self.ptr()).links }.cast()
     }
     fn add(&self, ty: u16, p: *mut core::ffi::c_void) -> i32 {
         let mut idx = 0u16;
-        // SAFETY: see `NodeRef::new`.
+        // SAFETY: see `NodeRef::with_role`.
         let rc = unsafe { sl_group_add_member(self.group(), self.members(), ty, p, &mut idx) };
         if rc == SL_OK {
             assert_eq!(idx + 1, self.g.nMembers);
@@ -120,7 +100,7 @@ impl NodeRef {
         self.add(SL_TYPE_FSOE_CONN, p.cast())
     }
     fn link(&self, kind: u8, src: u16, so: usize, dst: u16, d: usize) -> i32 {
-        // SAFETY: see `NodeRef::new`.
+        // SAFETY: see `NodeRef::with_role`.
         unsafe {
             sl_group_add_link_kind(
                 self.group(),
@@ -138,14 +118,14 @@ impl NodeRef {
     /// then exercise its hand-backs (a connection member, RXBIT/TXBIT links, a shutdown
     /// request) as well as the checked cycle.
     fn sealed(&self) -> bool {
-        // SAFETY: see `NodeRef::new`.
+        // SAFETY: see `NodeRef::with_role`.
         unsafe {
             safelogic::ffi::sl_group_schedule_sealed(self.group(), self.members(), self.links())
         }
     }
     fn cycle(&mut self, now: u32) -> i32 {
         self.conn.nSessionIdSeed = (now.wrapping_mul(2_654_435_761) >> 16) as u16 | 1;
-        // SAFETY: see `NodeRef::new`.
+        // SAFETY: see `NodeRef::with_role`.
         unsafe { sl_group_cycle(self.group(), self.members(), self.links(), now) }
     }
 }
@@ -153,7 +133,7 @@ impl NodeRef {
 /// Master node: connection (member 0), ESTOP (member 1) with its two channels from received
 /// bits 0 and 1, its EStopOut sent as bit 0; FB_CONNECTION_SHUTDOWN (member 2).
 fn master() -> NodeRef {
-    let mut n = NodeRef::new(SL_FSOE_ROLE_MASTER);
+    let mut n = NodeRef::with_role(SL_FSOE_ROLE_MASTER);
     n.estop = FB_ESTOP {
         wInputActive: 0b11,
         ..Default::default()
@@ -163,7 +143,7 @@ fn master() -> NodeRef {
         wInputActive: 0b01,
         ..Default::default()
     };
-    // SAFETY: see `NodeRef::new`.
+    // SAFETY: see `NodeRef::with_role`.
     unsafe {
         assert_eq!(sl_estop_init(&mut n.estop), SL_OK);
         assert_eq!(sl_connection_shutdown_init(&mut n.shut), SL_OK);
@@ -190,7 +170,7 @@ fn master() -> NodeRef {
 /// (the master's EStopOut), shown at output 3. FB_CONNECTION_SHUTDOWN with no active input
 /// (member 2): the partner's shutdown only.
 fn slave() -> NodeRef {
-    let mut n = NodeRef::new(SL_FSOE_ROLE_SLAVE);
+    let mut n = NodeRef::with_role(SL_FSOE_ROLE_SLAVE);
     n.dec = FB_DECOUPLE {
         wInputActive: 0b111,
         ..Default::default()
@@ -199,7 +179,7 @@ fn slave() -> NodeRef {
         nConnectionId: 7,
         ..Default::default()
     };
-    // SAFETY: see `NodeRef::new`.
+    // SAFETY: see `NodeRef::with_role`.
     unsafe {
         assert_eq!(sl_decouple_init(&mut n.dec), SL_OK);
         assert_eq!(sl_connection_shutdown_init(&mut n.shut), SL_OK);
@@ -532,12 +512,12 @@ fn shutdown_request_outside_data_is_not_honoured() {
 
 #[test]
 fn links_and_members_are_checked() {
-    let mut n = NodeRef::new(SL_FSOE_ROLE_MASTER);
+    let mut n = NodeRef::with_role(SL_FSOE_ROLE_MASTER);
     n.estop = FB_ESTOP {
         wInputActive: 0b11,
         ..Default::default()
     };
-    // SAFETY: see `NodeRef::new`.
+    // SAFETY: see `NodeRef::with_role`.
     unsafe { assert_eq!(sl_estop_init(&mut n.estop), SL_OK) };
     // An uninitialised connection is refused; so is one whose init was refused. (Its
     // pointer is taken anew for every call: a write to the box invalidates an older one.)
@@ -562,7 +542,7 @@ fn links_and_members_are_checked() {
     raw.stPrivate.nStateInv ^= 1;
     assert_eq!(n.add(SL_TYPE_FSOE_CONN, conn_ptr(&mut raw)), SL_E_CONFIG);
     // The same connection twice: refused (it shares bytes with a member).
-    let n2 = NodeRef::new(SL_FSOE_ROLE_MASTER);
+    let n2 = NodeRef::with_role(SL_FSOE_ROLE_MASTER);
     assert_eq!(n2.add_conn(), SL_OK);
     // SAFETY: a field place of the live node.
     let cp = n2.block(|n| unsafe { &raw mut (*n).conn }).cast();

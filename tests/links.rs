@@ -1,6 +1,9 @@
 //! Typed links (ABI-2 §10.7): an analog chain ADD → MUL → DIV beside a Boolean chain
 //! ESTOP → AND in one group through the C API, and every refused link.
 
+mod common;
+
+use common::RawBox;
 use safelogic::blocks::arith::ARITH_ACTIVE;
 use safelogic::ffi;
 use safelogic::group::{self, SL_LINK_ANALOG16, SL_LINK_ANALOG32, SL_LINK_BOOL};
@@ -21,36 +24,12 @@ struct Plant {
     uadd: FB_ADD_UINT,
 }
 
-/// The plant behind one raw pointer: the pointers handed to the library and the test's own
-/// field accesses all derive from it, so neither invalidates the other (Miri, Stacked and
-/// Tree Borrows). Field access goes through a short-lived `&mut` (Deref).
-struct Fixture(*mut Plant);
-
-impl std::ops::Deref for Fixture {
-    type Target = Plant;
-    fn deref(&self) -> &Plant {
-        // SAFETY: the box lives until Drop; no library call is running.
-        unsafe { &*self.0 }
-    }
-}
-
-impl std::ops::DerefMut for Fixture {
-    fn deref_mut(&mut self) -> &mut Plant {
-        // SAFETY: as above.
-        unsafe { &mut *self.0 }
-    }
-}
-
-impl Drop for Fixture {
-    fn drop(&mut self) {
-        // SAFETY: made by Box::into_raw in Plant::new, dropped once.
-        drop(unsafe { Box::from_raw(self.0) });
-    }
-}
+/// The plant behind one raw pointer (`common::RawBox`).
+type Fixture = RawBox<Plant>;
 
 impl Plant {
     fn boxed() -> Fixture {
-        let q = Box::into_raw(Box::new(Plant {
+        let f = Fixture::new(Plant {
             g: SL_GROUP::default(),
             members: [SL_MEMBER::default(); 6],
             links: [SL_LINK::default(); 8],
@@ -78,7 +57,8 @@ impl Plant {
                 wInputActive: ARITH_ACTIVE,
                 ..Default::default()
             },
-        }));
+        });
+        let q = f.ptr();
         // SAFETY: every pointer is to a field of the boxed plant, derived from `q`, alive
         // for the test.
         unsafe {
@@ -125,13 +105,13 @@ impl Plant {
                 );
             }
         }
-        Fixture(q)
+        f
     }
 }
 
 impl Fixture {
     fn link(&mut self, src: u16, so: usize, dst: u16, dof: usize) -> i32 {
-        let q = self.0;
+        let q = self.ptr();
         // SAFETY: the plant's own tables, reached through the fixture's pointer.
         unsafe {
             ffi::sl_group_add_link(
@@ -147,7 +127,7 @@ impl Fixture {
     }
 
     fn cycle(&mut self, t: u32) -> i32 {
-        let q = self.0;
+        let q = self.ptr();
         // SAFETY: the plant's own tables, reached through the fixture's pointer.
         unsafe {
             ffi::sl_group_cycle(

@@ -8,6 +8,46 @@
 
 use safelogic::*;
 
+/// A heap value owned through the raw pointer of its box (freed on drop), for tests whose
+/// group keeps pointers into it across library calls: the pointers handed to the library
+/// and the test's own field accesses all derive from this one pointer ([`Self::ptr`]), so
+/// neither invalidates the other (Miri, Stacked and Tree Borrows). Field access goes
+/// through `Deref` / `DerefMut`, a borrow that ends before the next library call.
+pub struct RawBox<T>(*mut T);
+
+impl<T> RawBox<T> {
+    pub fn new(value: T) -> Self {
+        Self(Box::into_raw(Box::new(value)))
+    }
+    /// The pointer every other pointer into the value is derived from.
+    pub fn ptr(&self) -> *mut T {
+        self.0
+    }
+}
+
+impl<T> Drop for RawBox<T> {
+    fn drop(&mut self) {
+        // SAFETY: the pointer of the box made in `new`, dropped once.
+        drop(unsafe { Box::from_raw(self.0) });
+    }
+}
+
+impl<T> std::ops::Deref for RawBox<T> {
+    type Target = T;
+    fn deref(&self) -> &T {
+        // SAFETY: a live box (freed only on drop); no library call runs while the borrow
+        // lives.
+        unsafe { &*self.0 }
+    }
+}
+
+impl<T> std::ops::DerefMut for RawBox<T> {
+    fn deref_mut(&mut self) -> &mut T {
+        // SAFETY: as in `deref`.
+        unsafe { &mut *self.0 }
+    }
+}
+
 /// A start time far away from 0 so that "earlier" times exist.
 pub const T0: u32 = 10_000;
 
