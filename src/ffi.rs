@@ -66,16 +66,13 @@ fn block_call<B: Cyclic>(p: *mut B, f: impl FnOnce(&mut B) -> Status) -> i32 {
     )
 }
 
-/// `sl_<name>_cycle` of a type with a fast path: the fast path inline, the rest of the
-/// cycle through [`cycle_rest`] (a type without one runs its cycle in [`block_call`]).
+/// `sl_<name>_cycle`: the fast path inline, the rest of the cycle through [`cycle_rest`]
+/// (a type without a fast path goes there at once).
 /// The fast path cannot panic and `cycle_rest` cannot unwind (an `extern "C"` function),
 /// so this boundary costs nothing and the fast path needs no stack frame; a panic of the
 /// full cycle is caught inside `cycle_rest`, with the same reaction as in [`block_call`].
 #[inline(always)]
 fn block_cycle<B: Cyclic>(p: *mut B, now: u32) -> i32 {
-    if !B::STEADY {
-        return block_call(p, |fb| fb.cycle_fb(now));
-    }
     let fb = match instance(p) {
         Ok(fb) => fb,
         Err(e) => return e,

@@ -201,7 +201,6 @@ macro_rules! impl_member {
         }
         impl<$($gen)*> $crate::registry::Cyclic for $ty {
             const MAGIC: u16 = <Self as $crate::prim::envelope::Block>::MAGIC;
-            const STEADY: bool = <Self as $crate::prim::envelope::Block>::STEADY;
             fn init_fb(&mut self) -> $crate::types::Status {
                 $crate::prim::envelope::init(self)
             }

@@ -213,8 +213,6 @@ pub trait Cyclic {
     fn init_fb(&mut self) -> crate::types::Status;
     /// `sl_<name>_cycle`.
     fn cycle_fb(&mut self, now: u32) -> crate::types::Status;
-    /// The type has a steady-state fast path ([`Self::cycle_fast`] can serve a call).
-    const STEADY: bool = false;
     /// The steady-state fast path of `cycle_fb` (`prim::envelope::fast`): `Ok` when it
     /// served the call, else what [`Self::cycle_rest`] needs to finish it.
     #[inline(always)]

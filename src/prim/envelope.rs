@@ -75,8 +75,6 @@ pub trait Block: Instance + crate::registry::Registered {
     /// Writes the VAR_OUTPUT and info fields from the private state.
     fn write_outputs(&mut self);
 
-    /// The block has a steady-state fast path (set by `steady_hooks!`).
-    const STEADY: bool = false;
     /// The key of this call for the fast path: bit i is BOOL byte i of every byte the cycle
     /// reads (inputs, bRun, bErrAck). `None` for a block without a fast path and whenever one
     /// of those bytes is neither 0 nor 1.
@@ -161,7 +159,6 @@ pub(crate) use steady_private;
 /// [`SteadyPrivate`] (the family supplies `steady_key` and `quiet`).
 macro_rules! steady_hooks {
     () => {
-        const STEADY: bool = true;
         #[inline(always)]
         fn holds_key(&self, key: u16) -> bool {
             $crate::prim::envelope::SteadyPrivate::holds(self.private(), key)
