@@ -50,56 +50,46 @@ fn instance_ref<'a, B>(p: *const B) -> Result<&'a B, i32> {
     Ok(unsafe { &*p })
 }
 
-/// One call of a block function behind the panic boundary. After a caught panic the
-/// instance is forced into ERROR with safe outputs.
-fn block_call<B: Cyclic>(p: *mut B, f: impl FnOnce(&mut B) -> Status) -> i32 {
-    let fb = match instance(p) {
-        Ok(fb) => fb,
-        Err(e) => return e,
-    };
+/// One call of a block function behind the panic boundary ([`guarded`]), after the
+/// pointer check.
+fn block_call<B: Cyclic>(p: *mut B, f: impl FnOnce(&mut B) -> i32) -> i32 {
+    match instance(p) {
+        Ok(fb) => guarded(fb, f),
+        Err(e) => e,
+    }
+}
+
+/// Runs `f` on the instance behind the panic boundary. After a caught panic the instance is
+/// forced into ERROR with safe outputs.
+#[inline(always)]
+fn guarded<B: Cyclic>(fb: &mut B, f: impl FnOnce(&mut B) -> i32) -> i32 {
     ffi_boundary!(
         {
             ffi_boundary!((), fb.force_safe());
             SL_E_INTERNAL
         },
-        f(&mut *fb).code()
+        f(&mut *fb)
     )
 }
 
 /// `sl_<name>_cycle`: the fast path inline, the rest of the cycle through [`cycle_rest`]
-/// (a type without a fast path goes there at once).
-/// The fast path cannot panic and `cycle_rest` cannot unwind (an `extern "C"` function),
-/// so this boundary costs nothing and the fast path needs no stack frame; a panic of the
-/// full cycle is caught inside `cycle_rest`, with the same reaction as in [`block_call`].
+/// (a type without a fast path goes there at once). The fast path cannot panic and
+/// `cycle_rest` cannot unwind (an `extern "C"` function), so the boundary costs nothing
+/// here and the fast path needs no stack frame; a panic of the full cycle is caught inside
+/// `cycle_rest`, with the same reaction.
 #[inline(always)]
 fn block_cycle<B: Cyclic>(p: *mut B, now: u32) -> i32 {
-    let fb = match instance(p) {
-        Ok(fb) => fb,
-        Err(e) => return e,
-    };
-    ffi_boundary!(
-        {
-            ffi_boundary!((), fb.force_safe());
-            SL_E_INTERNAL
-        },
-        match fb.cycle_fast(now) {
-            Ok(()) => SL_OK,
-            // The key crosses as a plain integer: u32::MAX is "no key".
-            Err(key) => cycle_rest(fb, key.map_or(u32::MAX, u32::from), now),
-        }
-    )
+    block_call(p, |fb| match fb.cycle_fast(now) {
+        Ok(()) => SL_OK,
+        // The key crosses as a plain integer: u32::MAX is "no key".
+        Err(key) => cycle_rest(fb, key.map_or(u32::MAX, u32::from), now),
+    })
 }
 
 /// The part of a cycle the fast path did not serve, behind its own panic boundary.
 #[inline(never)]
 extern "C" fn cycle_rest<B: Cyclic>(fb: &mut B, key: u32, now: u32) -> i32 {
-    ffi_boundary!(
-        {
-            ffi_boundary!((), fb.force_safe());
-            SL_E_INTERNAL
-        },
-        fb.cycle_rest(u16::try_from(key).ok(), now).code()
-    )
+    guarded(fb, |fb| fb.cycle_rest(u16::try_from(key).ok(), now).code())
 }
 
 /// Static, NUL-terminated text for a status code (never NULL).
@@ -201,7 +191,7 @@ pub unsafe extern "C" fn sl_ton2_get_elapsed(fb: *const FB_TON2, pElapsedMs: *mu
 #[allow(non_snake_case)]
 pub unsafe extern "C" fn sl_ton2_restore_elapsed(fb: *mut FB_TON2, nElapsedMs: u32) -> i32 {
     block_call(fb, |fb| {
-        crate::blocks::ton2::restore_elapsed(fb, nElapsedMs)
+        crate::blocks::ton2::restore_elapsed(fb, nElapsedMs).code()
     })
 }
 
@@ -217,7 +207,7 @@ macro_rules! ffi_functions {
             /// nothing else accesses during the call (ABI §4).
             #[no_mangle]
             pub unsafe extern "C" fn $init(fb: *mut $ty) -> i32 {
-                block_call(fb, Cyclic::init_fb)
+                block_call(fb, |fb| fb.init_fb().code())
             }
 
             #[doc = concat!("`", stringify!($cycle), "`: one task cycle at `tNow` (monotonic ms, may wrap at 2^32).")]
