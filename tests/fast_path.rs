@@ -421,3 +421,83 @@ fn the_fast_path_gives_what_the_full_cycle_gives() {
         }
     }
 }
+
+/// A call that changes nothing but returns a status other than SL_OK is no fixed point: the
+/// fast path must never serve it, so the status comes back on every call. STOP with invalid
+/// parameters (SL_E_CONFIG, reported on every call) and ERROR with bRun FALSE and a changed
+/// parameter pending (SL_E_PARAM_CHANGED, reported on every call), for a block of each
+/// family with a fast path.
+#[test]
+fn a_steady_call_with_another_status_than_ok_is_never_served() {
+    fn pin<B: Block + FunctionBlock + Copy>(mut fb: B, invalid: fn(&mut B), change: fn(&mut B)) {
+        let name = <B as safelogic::registry::Registered>::INFO.name;
+        // STOP with invalid parameters, bRun TRUE: SL_E_CONFIG on every call.
+        let mut bad = fb;
+        invalid(&mut bad);
+        assert_eq!(
+            bad.try_init(),
+            Err(Status::Config),
+            "{name}: the parameters are valid"
+        );
+        for t in 0..5 {
+            assert_eq!(
+                cycle_traced(&mut bad, 100 + t),
+                (Status::Config, false),
+                "{name} t {t}"
+            );
+        }
+        // Running, then a parameter changes: ERROR; with bRun FALSE the change stays
+        // pending and is reported on every call.
+        assert_eq!(
+            fb.try_init(),
+            Ok(()),
+            "{name}: the parameters are not valid"
+        );
+        for t in 0..3 {
+            cycle_traced(&mut fb, 100 + t);
+        }
+        change(&mut fb);
+        assert_eq!(cycle_traced(&mut fb, 103).0, Status::ParamChanged, "{name}");
+        fb.set("bRun", 0).unwrap();
+        for t in 0..5 {
+            assert_eq!(
+                cycle_traced(&mut fb, 104 + t),
+                (Status::ParamChanged, false),
+                "{name} t {t}"
+            );
+        }
+    }
+    pin(
+        FB_ESTOP {
+            wInputActive: 0b11,
+            bEStopIn1: 1,
+            bEStopIn2: 1,
+            bRun: 1,
+            ..Default::default()
+        },
+        |f| f.tDiscTime12 = SL_TIME_PARAM_MAX + 1,
+        |f| f.tDiscTime12 += 1,
+    );
+    pin(
+        FB_AND {
+            wInputActive: 0b11,
+            bAndIn1: 1,
+            bAndIn2: 1,
+            bRun: 1,
+            ..Default::default()
+        },
+        |f| f.wInputActive = 0b1,
+        |f| f.wInputNegated = 0b1,
+    );
+    pin(
+        FB_TON {
+            wInputActive: 1,
+            tDelay: 10,
+            bTonIn1: 1,
+            bRun: 1,
+            ..Default::default()
+        },
+        |f| f.tDelay = 0,
+        |f| f.tDelay = 20,
+    );
+}

@@ -108,12 +108,13 @@ pub trait Block: Instance + crate::registry::Registered {
         false
     }
     /// A key bit no key of the block has: set in a key stored in a timing state (below).
-    /// 0: the fast path never serves a running timer.
+    /// Only meaningful for a block whose `timing_quiet` can be true.
     const TIMED_KEY: u16 = 0;
     /// A timer runs that is not reached at `now`, and a call that leaves the state as it is
     /// changes nothing else either (TON, TOF while timing): the outcome of a call at `now`
-    /// depends on the time only through the clock check and this test. Only asked of
-    /// blocks with a `TIMED_KEY`, on the calls whose key was stored in such a state.
+    /// depends on the time only through the clock check and this test. Asked by the full
+    /// cycle of a fixed point that is not quiet, and by the fast path of a call whose key
+    /// was stored in such a state.
     #[inline(always)]
     fn timing_quiet(&self, _now: u32) -> bool {
         false
@@ -206,7 +207,7 @@ where
         None
     } else if fb.quiet() {
         Some(key)
-    } else if B::TIMED_KEY != 0 && fb.timing_quiet(now) {
+    } else if fb.timing_quiet(now) {
         Some(key | B::TIMED_KEY)
     } else {
         None
@@ -280,10 +281,7 @@ pub fn fast<B: Block>(fb: &mut B, now: u32) -> Result<(), Option<u16>> {
         let served = if fb.holds_key(k) {
             unchanged(fb, now)
         } else {
-            B::TIMED_KEY != 0
-                && fb.holds_key(k | B::TIMED_KEY)
-                && unchanged(fb, now)
-                && fb.timing_quiet(now)
+            fb.holds_key(k | B::TIMED_KEY) && unchanged(fb, now) && fb.timing_quiet(now)
         };
         if served {
             fb.header_mut().tLast = now;
