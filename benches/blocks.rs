@@ -746,41 +746,27 @@ fn main() {
     let timing = if only_instructions || child {
         Vec::new()
     } else {
-        // Input active, the longest delay, running, the timer input as given.
-        macro_rules! timer {
-            ($ty:ty, $input:ident) => {{
+        // Input active, the longest delay, running; two calls with the input TRUE (the
+        // start-up call enters SAFE, the next one RUN or Timing), then the input at the
+        // level the timer runs with, and the row.
+        macro_rules! timing_row {
+            ($name:literal, $ty:ty, $tag:expr, $input:ident = $level:expr, $cycle:ident) => {{
                 let mut b = <$ty>::default();
                 (b.wInputActive, b.tDelay, b.bRun, b.$input) = (1, SL_TIMER_DELAY_MAX, 1, 1);
                 b.init();
-                b
+                for t in 0..2 {
+                    unsafe { $cycle(&mut b, t) };
+                }
+                b.$input = $level;
+                let private = size_of_val(&b.stPrivate);
+                measure(($name, $tag, timer), batches, b, private, $cycle, |f| {
+                    f.nState
+                })
             }};
         }
-        let ton = timer!(FB_TON, bTonIn1);
-        let mut tof = timer!(FB_TOF, bTofIn1);
-        // TOF times once its input has fallen in RUN (the start-up call enters SAFE, the
-        // next one RUN).
-        for t in 0..2 {
-            unsafe { sl_tof_cycle(&mut tof, t) };
-        }
-        tof.bTofIn1 = 0;
-        let private = size_of_val(&ton.stPrivate);
         vec![
-            measure(
-                ("TON", SL_TYPE_TON, timer),
-                batches,
-                ton,
-                private,
-                sl_ton_cycle,
-                |f| f.nState,
-            ),
-            measure(
-                ("TOF", SL_TYPE_TOF, timer),
-                batches,
-                tof,
-                private,
-                sl_tof_cycle,
-                |f| f.nState,
-            ),
+            timing_row!("TON", FB_TON, SL_TYPE_TON, bTonIn1 = 1, sl_ton_cycle),
+            timing_row!("TOF", FB_TOF, SL_TYPE_TOF, bTofIn1 = 0, sl_tof_cycle),
         ]
     };
     let cliff = if only_instructions || child {
