@@ -28,7 +28,7 @@ const TABLE_LEN: usize = 1 << 14;
 
 const TARGET_STEADY_NS: f64 = 5.0;
 const TARGET_RANDOM_NS: f64 = 25.0;
-const TARGET_PRIVATE_BYTES: usize = 64;
+const TARGET_PRIVATE_BYTES: usize = 128;
 
 /// How much work one run does.
 #[derive(Clone, Copy)]

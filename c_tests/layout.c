@@ -68,7 +68,7 @@ SL_AT(FB_ESTOP, bEStopDelOut, 56 + 2);
 SL_AT(FB_ESTOP, nState, 64);
 SL_AT(FB_ESTOP, nDiag, 66);
 _Static_assert(offsetof(FB_ESTOP, stPrivate) == 72, "offset of FB_ESTOP.stPrivate");
-_Static_assert(sizeof(FB_ESTOP) == 136, "size of FB_ESTOP");
+_Static_assert(sizeof(FB_ESTOP) == 152, "size of FB_ESTOP");
 _Static_assert(sizeof(FB_ESTOP) % 8 == 0, "size of FB_ESTOP is a multiple of 8");
 _Static_assert(offsetof(FB_ESTOP, stPrivate) % 8 == 0, "FB_ESTOP private state 8-aligned");
 _Static_assert(offsetof(FB_ESTOP, bEStopOut) - offsetof(FB_ESTOP, bError) == 1,
@@ -96,14 +96,14 @@ SL_SIZE(FB_ESTOP, bEStopOut, 1);
 SL_SIZE(FB_ESTOP, bEStopDelOut, 1);
 SL_SIZE(FB_ESTOP, nState, 1);
 SL_SIZE(FB_ESTOP, nDiag, 2);
-SL_SIZE(FB_ESTOP, stPrivate, 64);
+SL_SIZE(FB_ESTOP, stPrivate, 80);
 /* no implicit padding: named fields (including the reserved ones) add up to sizeof */
 _Static_assert(3 * 1 + sizeof(((FB_ESTOP *)0)->aReserved0) + 8 * 1 + 2 * 1 +
                        sizeof(((FB_ESTOP *)0)->aReserved1) + 7 * 4 + 2 * 2 + 4 + 3 * 1 +
                        sizeof(((FB_ESTOP *)0)->aReserved2) + 1 +
                        sizeof(((FB_ESTOP *)0)->aReserved3) + 2 +
-                       sizeof(((FB_ESTOP *)0)->aReserved4) + 64 ==
-                   136,
+                       sizeof(((FB_ESTOP *)0)->aReserved4) + 80 ==
+                   152,
                "FB_ESTOP has implicit padding");
 
 /* ---------------- FB_MON (ABI §8, manual §4.5.2) ---------------- */
@@ -134,7 +134,7 @@ SL_AT(FB_MON, nState, 64);
 SL_AT(FB_MON, nDiag, 66);
 _Static_assert(offsetof(FB_MON, stPrivate) == 72, "offset of FB_MON.stPrivate");
 _Static_assert(offsetof(FB_MON, stPrivate) % 8 == 0, "FB_MON private state 8-aligned");
-_Static_assert(sizeof(FB_MON) == 136, "size of FB_MON");
+_Static_assert(sizeof(FB_MON) == 152, "size of FB_MON");
 _Static_assert(sizeof(FB_MON) % 8 == 0, "size of FB_MON is a multiple of 8");
 _Static_assert(offsetof(FB_MON, bSecure2) == 13, "ABI §3 example: offsetof(FB_MON, bSecure2)");
 SL_SIZE(FB_MON, bRestart, 1);
@@ -160,15 +160,15 @@ SL_SIZE(FB_MON, bMonOut, 1);
 SL_SIZE(FB_MON, bMonDelOut, 1);
 SL_SIZE(FB_MON, nState, 1);
 SL_SIZE(FB_MON, nDiag, 2);
-SL_SIZE(FB_MON, stPrivate, 64);
+SL_SIZE(FB_MON, stPrivate, 80);
 _Static_assert(3 * 1 + sizeof(((FB_MON *)0)->aReserved0) + 6 * 1 +
                        sizeof(((FB_MON *)0)->aReserved1) + 2 * 1 +
                        sizeof(((FB_MON *)0)->aReserved2) + 6 * 4 + 2 * 2 + 4 +
                        sizeof(((FB_MON *)0)->aReserved3) + 3 * 1 +
                        sizeof(((FB_MON *)0)->aReserved4) + 1 +
                        sizeof(((FB_MON *)0)->aReserved5) + 2 +
-                       sizeof(((FB_MON *)0)->aReserved6) + 64 ==
-                   136,
+                       sizeof(((FB_MON *)0)->aReserved6) + 80 ==
+                   152,
                "FB_MON has implicit padding");
 
 /* ======== the other Boolean blocks (ABI §9; parameters, info data, private state and
@@ -211,7 +211,7 @@ SL_AT(FB_XOR, nState, 40);
 SL_AT(FB_XOR, nDiag, 42);
 _Static_assert(offsetof(FB_XOR, stPrivate) == 48, "offset of FB_XOR.stPrivate");
 _Static_assert(offsetof(FB_XOR, stPrivate) % 8 == 0, "FB_XOR private state 8-aligned");
-_Static_assert(sizeof(FB_XOR) == 80, "size of FB_XOR");
+_Static_assert(sizeof(FB_XOR) == 112, "size of FB_XOR");
 _Static_assert(sizeof(FB_XOR) % 8 == 0, "size of FB_XOR is a multiple of 8");
 SL_SIZE(FB_XOR, bXor1In1, 1);
 SL_SIZE(FB_XOR, bXor2In1, 1);
@@ -242,15 +242,15 @@ SL_SIZE(FB_XOR, bXorOut7, 1);
 SL_SIZE(FB_XOR, bXorOut8, 1);
 SL_SIZE(FB_XOR, nState, 1);
 SL_SIZE(FB_XOR, nDiag, 2);
-SL_SIZE(FB_XOR, stPrivate, 32);
-/* no implicit padding: 63 bytes of named fields + the reserved fields == sizeof */
-_Static_assert(63 +
+SL_SIZE(FB_XOR, stPrivate, 64);
+/* no implicit padding: 95 bytes of named fields + the reserved fields == sizeof */
+_Static_assert(95 +
                    sizeof(((FB_XOR *)0)->aReserved0) +
                    sizeof(((FB_XOR *)0)->aReserved1) +
                    sizeof(((FB_XOR *)0)->aReserved2) +
                    sizeof(((FB_XOR *)0)->aReserved3) +
                    sizeof(((FB_XOR *)0)->aReserved4) ==
-                   80,
+                   112,
                "FB_XOR has implicit padding");
 
 /* ---------------- FB_DECOUPLE (ABI §9, manual §4.6.2) ---------------- */
@@ -282,7 +282,7 @@ SL_AT(FB_DECOUPLE, nState, 40);
 SL_AT(FB_DECOUPLE, nDiag, 42);
 _Static_assert(offsetof(FB_DECOUPLE, stPrivate) == 48, "offset of FB_DECOUPLE.stPrivate");
 _Static_assert(offsetof(FB_DECOUPLE, stPrivate) % 8 == 0, "FB_DECOUPLE private state 8-aligned");
-_Static_assert(sizeof(FB_DECOUPLE) == 80, "size of FB_DECOUPLE");
+_Static_assert(sizeof(FB_DECOUPLE) == 112, "size of FB_DECOUPLE");
 _Static_assert(sizeof(FB_DECOUPLE) % 8 == 0, "size of FB_DECOUPLE is a multiple of 8");
 SL_SIZE(FB_DECOUPLE, bDecIn1, 1);
 SL_SIZE(FB_DECOUPLE, bDecIn2, 1);
@@ -305,16 +305,16 @@ SL_SIZE(FB_DECOUPLE, bDecOut7, 1);
 SL_SIZE(FB_DECOUPLE, bDecOut8, 1);
 SL_SIZE(FB_DECOUPLE, nState, 1);
 SL_SIZE(FB_DECOUPLE, nDiag, 2);
-SL_SIZE(FB_DECOUPLE, stPrivate, 32);
-/* no implicit padding: 55 bytes of named fields + the reserved fields == sizeof */
-_Static_assert(55 +
+SL_SIZE(FB_DECOUPLE, stPrivate, 64);
+/* no implicit padding: 87 bytes of named fields + the reserved fields == sizeof */
+_Static_assert(87 +
                    sizeof(((FB_DECOUPLE *)0)->aReserved0) +
                    sizeof(((FB_DECOUPLE *)0)->aReserved1) +
                    sizeof(((FB_DECOUPLE *)0)->aReserved2) +
                    sizeof(((FB_DECOUPLE *)0)->aReserved3) +
                    sizeof(((FB_DECOUPLE *)0)->aReserved4) +
                    sizeof(((FB_DECOUPLE *)0)->aReserved5) ==
-                   80,
+                   112,
                "FB_DECOUPLE has implicit padding");
 
 /* ---------------- FB_OPMODE (ABI §9, manual §4.3.2) ---------------- */
@@ -603,7 +603,7 @@ SL_AT(FB_RS, nState, 32);
 SL_AT(FB_RS, nDiag, 34);
 _Static_assert(offsetof(FB_RS, stPrivate) == 40, "offset of FB_RS.stPrivate");
 _Static_assert(offsetof(FB_RS, stPrivate) % 8 == 0, "FB_RS private state 8-aligned");
-_Static_assert(sizeof(FB_RS) == 72, "size of FB_RS");
+_Static_assert(sizeof(FB_RS) == 104, "size of FB_RS");
 _Static_assert(sizeof(FB_RS) % 8 == 0, "size of FB_RS is a multiple of 8");
 SL_SIZE(FB_RS, bReset, 1);
 SL_SIZE(FB_RS, bSet, 1);
@@ -614,9 +614,9 @@ SL_SIZE(FB_RS, wInputNegated, 2);
 SL_SIZE(FB_RS, bRsOut, 1);
 SL_SIZE(FB_RS, nState, 1);
 SL_SIZE(FB_RS, nDiag, 2);
-SL_SIZE(FB_RS, stPrivate, 32);
-/* no implicit padding: 44 bytes of named fields + the reserved fields == sizeof */
-_Static_assert(44 +
+SL_SIZE(FB_RS, stPrivate, 64);
+/* no implicit padding: 76 bytes of named fields + the reserved fields == sizeof */
+_Static_assert(76 +
                    sizeof(((FB_RS *)0)->aReserved0) +
                    sizeof(((FB_RS *)0)->aReserved1) +
                    sizeof(((FB_RS *)0)->aReserved2) +
@@ -624,7 +624,7 @@ _Static_assert(44 +
                    sizeof(((FB_RS *)0)->aReserved4) +
                    sizeof(((FB_RS *)0)->aReserved5) +
                    sizeof(((FB_RS *)0)->aReserved6) ==
-                   72,
+                   104,
                "FB_RS has implicit padding");
 
 /* ---------------- FB_SR (ABI §9, manual §4.11.2) ---------------- */
@@ -644,7 +644,7 @@ SL_AT(FB_SR, nState, 32);
 SL_AT(FB_SR, nDiag, 34);
 _Static_assert(offsetof(FB_SR, stPrivate) == 40, "offset of FB_SR.stPrivate");
 _Static_assert(offsetof(FB_SR, stPrivate) % 8 == 0, "FB_SR private state 8-aligned");
-_Static_assert(sizeof(FB_SR) == 72, "size of FB_SR");
+_Static_assert(sizeof(FB_SR) == 104, "size of FB_SR");
 _Static_assert(sizeof(FB_SR) % 8 == 0, "size of FB_SR is a multiple of 8");
 SL_SIZE(FB_SR, bReset, 1);
 SL_SIZE(FB_SR, bSet, 1);
@@ -655,9 +655,9 @@ SL_SIZE(FB_SR, wInputNegated, 2);
 SL_SIZE(FB_SR, bSrOut, 1);
 SL_SIZE(FB_SR, nState, 1);
 SL_SIZE(FB_SR, nDiag, 2);
-SL_SIZE(FB_SR, stPrivate, 32);
-/* no implicit padding: 44 bytes of named fields + the reserved fields == sizeof */
-_Static_assert(44 +
+SL_SIZE(FB_SR, stPrivate, 64);
+/* no implicit padding: 76 bytes of named fields + the reserved fields == sizeof */
+_Static_assert(76 +
                    sizeof(((FB_SR *)0)->aReserved0) +
                    sizeof(((FB_SR *)0)->aReserved1) +
                    sizeof(((FB_SR *)0)->aReserved2) +
@@ -665,7 +665,7 @@ _Static_assert(44 +
                    sizeof(((FB_SR *)0)->aReserved4) +
                    sizeof(((FB_SR *)0)->aReserved5) +
                    sizeof(((FB_SR *)0)->aReserved6) ==
-                   72,
+                   104,
                "FB_SR has implicit padding");
 
 /* ---------------- FB_TON (ABI §9, manual §4.12.2) ---------------- */

@@ -27,7 +27,7 @@ static_assert(offsetof(FB_ESTOP, bEStopDelOut) == 58, "FB_ESTOP.bEStopDelOut");
 static_assert(offsetof(FB_ESTOP, nState) == 64, "FB_ESTOP.nState");
 static_assert(offsetof(FB_ESTOP, nDiag) == 66, "FB_ESTOP.nDiag");
 static_assert(offsetof(FB_ESTOP, stPrivate) == 72, "FB_ESTOP.stPrivate");
-static_assert(sizeof(FB_ESTOP) == 136, "sizeof FB_ESTOP");
+static_assert(sizeof(FB_ESTOP) == 152, "sizeof FB_ESTOP");
 
 static_assert(offsetof(FB_MON, bMonIn1) == 8, "FB_MON.bMonIn1");
 static_assert(offsetof(FB_MON, bSecure1) == 12, "FB_MON.bSecure1");
@@ -42,7 +42,7 @@ static_assert(offsetof(FB_MON, bMonDelOut) == 58, "FB_MON.bMonDelOut");
 static_assert(offsetof(FB_MON, nState) == 64, "FB_MON.nState");
 static_assert(offsetof(FB_MON, nDiag) == 66, "FB_MON.nDiag");
 static_assert(offsetof(FB_MON, stPrivate) == 72, "FB_MON.stPrivate");
-static_assert(sizeof(FB_MON) == 136, "sizeof FB_MON");
+static_assert(sizeof(FB_MON) == 152, "sizeof FB_MON");
 
 // The eleven blocks of ABI §9: standard layout, a few offsets (inputs absolute, outputs at
 // output base + the manual's offset), info data, private state and size from the header.
@@ -67,11 +67,11 @@ static_assert(offsetof(FB_XOR, bXor2In8) == 15, "FB_XOR.bXor2In8");
 static_assert(offsetof(FB_XOR, bXorOut1) == 24 + 8, "FB_XOR.bXorOut1");
 static_assert(offsetof(FB_XOR, bXorOut8) == 24 + 15, "FB_XOR.bXorOut8");
 static_assert(offsetof(FB_XOR, nState) == 40 && offsetof(FB_XOR, nDiag) == 42, "FB_XOR info");
-static_assert(offsetof(FB_XOR, stPrivate) == 48 && sizeof(FB_XOR) == 80, "FB_XOR size");
+static_assert(offsetof(FB_XOR, stPrivate) == 48 && sizeof(FB_XOR) == 112, "FB_XOR size");
 
 static_assert(offsetof(FB_DECOUPLE, bDecIn1) == 8, "FB_DECOUPLE.bDecIn1");
 static_assert(offsetof(FB_DECOUPLE, bDecOut8) == 24 + 15, "FB_DECOUPLE.bDecOut8");
-static_assert(sizeof(FB_DECOUPLE) == 80, "sizeof FB_DECOUPLE");
+static_assert(sizeof(FB_DECOUPLE) == 112, "sizeof FB_DECOUPLE");
 
 static_assert(offsetof(FB_OPMODE, bRestart) == 0, "FB_OPMODE.bRestart");
 static_assert(offsetof(FB_OPMODE, bOpIn8) == 15, "FB_OPMODE.bOpIn8");
@@ -105,7 +105,7 @@ static_assert(offsetof(FB_RS, bReset) == 8 && offsetof(FB_RS, bSet) == 9, "FB_RS
 static_assert(offsetof(FB_RS, bRsOut) == 24 + 1, "FB_RS.bRsOut");
 static_assert(offsetof(FB_SR, bReset) == 8 && offsetof(FB_SR, bSet) == 9, "FB_SR inputs");
 static_assert(offsetof(FB_SR, bSrOut) == 24 + 1, "FB_SR.bSrOut");
-static_assert(sizeof(FB_RS) == 72 && sizeof(FB_SR) == 72, "sizeof FB_RS / FB_SR");
+static_assert(sizeof(FB_RS) == 104 && sizeof(FB_SR) == 104, "sizeof FB_RS / FB_SR");
 
 static_assert(offsetof(FB_TON, bTonIn1) == 8, "FB_TON.bTonIn1");
 static_assert(offsetof(FB_TON, bTonOut) == 32 + 1, "FB_TON.bTonOut");

@@ -741,7 +741,7 @@ static void estop_corrupt(void)
     ES_ACK();
     ES_RESTART();
     /* latched parameter copy altered (CRC no longer matches) */
-    fb->stPrivate.awTime[0] ^= 0x0001u;
+    fb->stPrivate.adwTime[0] ^= 0x0001u;
     ES(t += 10, SL_E_CORRUPT, SL_STATE_ERROR, SL_DIAG_CORRUPT, 1, 0, 0);
     ES_ACK();
     /* an all-zero private area is a never-initialised instance: initialised, then the

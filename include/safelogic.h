@@ -1787,6 +1787,11 @@
 #define SL_NO_MEMBER 65535
 
 /*
+ The timed slot's pattern ([`SteadyKey::timed`]).
+ */
+#define TIMED 6510615555426900570
+
+/*
  `nDiagProfile` 0: the PLCopen v2.01 DiagCodes (default).
  */
 #define SL_SF_PROFILE_V201 0
@@ -2068,9 +2073,9 @@ typedef struct SL_PRIVATE_HEADER {
    */
   uint16_t wMagic;
   /*
-   CRC-16 of the latched parameters (seeded with the magic).
+   Block-specific auxiliary bits (pair timers running, latches, test progress).
    */
-  uint16_t wParamCrc;
+  uint16_t wAux;
   /*
    Current state (the manual's status value).
    */
@@ -2084,9 +2089,9 @@ typedef struct SL_PRIVATE_HEADER {
    */
   uint16_t wDiag;
   /*
-   Block-specific auxiliary bits (pair timers running, latches, test progress).
+   CRC-16 of the latched parameters (seeded with the magic).
    */
-  uint16_t wAux;
+  uint16_t wParamCrc;
   /*
    Complement of `wAux`.
    */
@@ -2119,7 +2124,7 @@ typedef struct SL_PRIVATE_HEADER {
 /*
  All zero: a never-initialised instance.
  */
-#define SL_PRIVATE_HEADER_ZERO (SL_PRIVATE_HEADER){ .wMagic = 0, .wParamCrc = 0, .nState = 0, .nFlags = 0, .wDiag = 0, .wAux = 0, .wAuxCheck = 0, .dwCtrlCheck = 0, .tLast = 0, .tPhase = 0, .nActive = 0, .nNegated = 0, .wOptions = 0 }
+#define SL_PRIVATE_HEADER_ZERO (SL_PRIVATE_HEADER){ .wMagic = 0, .wAux = 0, .nState = 0, .nFlags = 0, .wDiag = 0, .wParamCrc = 0, .wAuxCheck = 0, .dwCtrlCheck = 0, .tLast = 0, .tPhase = 0, .nActive = 0, .nNegated = 0, .wOptions = 0 }
 
 /*
  Private state of FB_TON, FB_TON2 and FB_TOF (48 bytes). Never written by the user.
@@ -2749,15 +2754,16 @@ typedef struct SL_FSOE_FRAME {
 } SL_FSOE_FRAME;
 
 /*
- Private state of FB_ESTOP and FB_MON (64 bytes). Never written by the user.
+ Private state of FB_ESTOP and FB_MON (80 bytes). Never written by the user.
  */
 typedef struct SL_GUARD_PRIVATE {
   struct SL_PRIVATE_HEADER stHeader;
   /*
    Latched times in ms: discrepancy times of pairs 1-4, EDM1 and EDM2 reset times,
-   output delay, reserved.
+   output delay, reserved. Full width, in the order of the live fields: the fast path
+   compares them with the live ones as whole words (docs/performance.md).
    */
-  uint16_t awTime[8];
+  uint32_t adwTime[8];
   /*
    Start times of the pair discrepancy timers.
    */
@@ -2771,7 +2777,7 @@ typedef struct SL_GUARD_PRIVATE {
 /*
  FB ESTOP instance (ABI §3, §8). Inputs at the manual's offsets (§4.4.2), outputs at
  output base 56 + the manual's offsets.
- Size: 136 bytes.
+ Size: 152 bytes.
  */
 typedef struct FB_ESTOP {
   /*
@@ -2907,7 +2913,7 @@ typedef struct FB_ESTOP {
    */
   uint8_t aReserved4[4];
   /*
-   Offset 72. Private state, 64 bytes: never write it.
+   Offset 72. Private state, 80 bytes: never write it.
    */
   struct SL_GUARD_PRIVATE stPrivate;
 } FB_ESTOP;
@@ -2915,7 +2921,7 @@ typedef struct FB_ESTOP {
 /*
  FB MON instance (ABI §3, §8). Inputs at the manual's offsets (§4.5.2), outputs at
  output base 56 + the manual's offsets.
- Size: 136 bytes.
+ Size: 152 bytes.
  */
 typedef struct FB_MON {
   /*
@@ -3047,7 +3053,7 @@ typedef struct FB_MON {
    */
   uint8_t aReserved6[4];
   /*
-   Offset 72. Private state, 64 bytes: never write it.
+   Offset 72. Private state, 80 bytes: never write it.
    */
   struct SL_GUARD_PRIVATE stPrivate;
 } FB_MON;
@@ -3289,19 +3295,24 @@ typedef struct SL_LOADSENSING_PRIVATE_UDINT {
 
 
 /*
- Private state of the combinational blocks (32 bytes). Never written by the user.
+ Private state of the combinational blocks (64 bytes). Never written by the user.
  */
 typedef struct SL_LOGIC_PRIVATE {
   struct SL_PRIVATE_HEADER stHeader;
   /*
-   Fast-path key and its complement (`prim::envelope`).
+   Reserved, 0.
    */
-  uint16_t awSteady[2];
+  uint8_t aReserved[4];
+  /*
+   Fast-path slot (`prim::envelope`): the key window (two 64-bit words), then its check
+   words.
+   */
+  uint32_t adwSteady[8];
 } SL_LOGIC_PRIVATE;
 
 /*
  FB AND instance (ABI §3, §9). Inputs at the manual's offsets (§4.1.2), output base 24.
- Size: 72 bytes.
+ Size: 104 bytes.
  */
 typedef struct FB_AND {
   /*
@@ -3389,14 +3400,14 @@ typedef struct FB_AND {
    */
   uint8_t aReserved5[4];
   /*
-   Offset 40. Private state, 32 bytes: never write it.
+   Offset 40. Private state, 64 bytes: never write it.
    */
   struct SL_LOGIC_PRIVATE stPrivate;
 } FB_AND;
 
 /*
  FB OR instance (ABI §3, §9). Inputs at the manual's offsets (§4.2.2), output base 24.
- Size: 72 bytes.
+ Size: 104 bytes.
  */
 typedef struct FB_OR {
   /*
@@ -3484,7 +3495,7 @@ typedef struct FB_OR {
    */
   uint8_t aReserved5[4];
   /*
-   Offset 40. Private state, 32 bytes: never write it.
+   Offset 40. Private state, 64 bytes: never write it.
    */
   struct SL_LOGIC_PRIVATE stPrivate;
 } FB_OR;
@@ -3492,7 +3503,7 @@ typedef struct FB_OR {
 /*
  FB XOR instance (ABI §3, §9). Inputs at the manual's offsets 0…15 (§4.34.2), output
  base 24 (outputs at base + 8 … base + 15).
- Size: 80 bytes.
+ Size: 112 bytes.
  */
 typedef struct FB_XOR {
   /*
@@ -3632,7 +3643,7 @@ typedef struct FB_XOR {
    */
   uint8_t aReserved4[4];
   /*
-   Offset 48. Private state, 32 bytes: never write it.
+   Offset 48. Private state, 64 bytes: never write it.
    */
   struct SL_LOGIC_PRIVATE stPrivate;
 } FB_XOR;
@@ -3640,7 +3651,7 @@ typedef struct FB_XOR {
 /*
  FB DECOUPLE instance (ABI §3, §9). Inputs at the manual's offsets 8…15 (§4.6.2), output
  base 24 (outputs at base + 8 … base + 15).
- Size: 80 bytes.
+ Size: 112 bytes.
  */
 typedef struct FB_DECOUPLE {
   /*
@@ -3752,7 +3763,7 @@ typedef struct FB_DECOUPLE {
    */
   uint8_t aReserved5[4];
   /*
-   Offset 48. Private state, 32 bytes: never write it.
+   Offset 48. Private state, 64 bytes: never write it.
    */
   struct SL_LOGIC_PRIVATE stPrivate;
 } FB_DECOUPLE;
@@ -4305,20 +4316,25 @@ typedef struct FB_EDM {
 } FB_EDM;
 
 /*
- Private state of FB_RS and FB_SR (32 bytes): the memory is the state (SAFE or SET) in
+ Private state of FB_RS and FB_SR (64 bytes): the memory is the state (SAFE or SET) in
  the header, guarded by its complement copy. Never written by the user.
  */
 typedef struct SL_FLIPFLOP_PRIVATE {
   struct SL_PRIVATE_HEADER stHeader;
   /*
-   Fast-path key and its complement (`prim::envelope`).
+   Reserved, 0.
    */
-  uint16_t awSteady[2];
+  uint8_t aReserved[4];
+  /*
+   Fast-path slot (`prim::envelope`): the key window (two 64-bit words), then its check
+   words.
+   */
+  uint32_t adwSteady[8];
 } SL_FLIPFLOP_PRIVATE;
 
 /*
  FB RS instance (ABI §3, §9). Inputs at the manual's offsets (§4.10.2), output base 24.
- Size: 72 bytes.
+ Size: 104 bytes.
  */
 typedef struct FB_RS {
   /*
@@ -4386,14 +4402,14 @@ typedef struct FB_RS {
    */
   uint8_t aReserved6[4];
   /*
-   Offset 40. Private state, 32 bytes: never write it.
+   Offset 40. Private state, 64 bytes: never write it.
    */
   struct SL_FLIPFLOP_PRIVATE stPrivate;
 } FB_RS;
 
 /*
  FB SR instance (ABI §3, §9). Inputs at the manual's offsets (§4.11.2), output base 24.
- Size: 72 bytes.
+ Size: 104 bytes.
  */
 typedef struct FB_SR {
   /*
@@ -4461,7 +4477,7 @@ typedef struct FB_SR {
    */
   uint8_t aReserved6[4];
   /*
-   Offset 40. Private state, 32 bytes: never write it.
+   Offset 40. Private state, 64 bytes: never write it.
    */
   struct SL_FLIPFLOP_PRIVATE stPrivate;
 } FB_SR;
@@ -13151,11 +13167,11 @@ int32_t sl_sf_modeselector_cycle(struct SF_ModeSelector *fb, uint32_t tNow);
 #define SL_STATIC_ASSERT(c, m) _Static_assert(c, m)
 #endif
 SL_STATIC_ASSERT(offsetof(SL_PRIVATE_HEADER, wMagic) == 0, "offset of SL_PRIVATE_HEADER.wMagic");
-SL_STATIC_ASSERT(offsetof(SL_PRIVATE_HEADER, wParamCrc) == 2, "offset of SL_PRIVATE_HEADER.wParamCrc");
+SL_STATIC_ASSERT(offsetof(SL_PRIVATE_HEADER, wAux) == 2, "offset of SL_PRIVATE_HEADER.wAux");
 SL_STATIC_ASSERT(offsetof(SL_PRIVATE_HEADER, nState) == 4, "offset of SL_PRIVATE_HEADER.nState");
 SL_STATIC_ASSERT(offsetof(SL_PRIVATE_HEADER, nFlags) == 5, "offset of SL_PRIVATE_HEADER.nFlags");
 SL_STATIC_ASSERT(offsetof(SL_PRIVATE_HEADER, wDiag) == 6, "offset of SL_PRIVATE_HEADER.wDiag");
-SL_STATIC_ASSERT(offsetof(SL_PRIVATE_HEADER, wAux) == 8, "offset of SL_PRIVATE_HEADER.wAux");
+SL_STATIC_ASSERT(offsetof(SL_PRIVATE_HEADER, wParamCrc) == 8, "offset of SL_PRIVATE_HEADER.wParamCrc");
 SL_STATIC_ASSERT(offsetof(SL_PRIVATE_HEADER, wAuxCheck) == 10, "offset of SL_PRIVATE_HEADER.wAuxCheck");
 SL_STATIC_ASSERT(offsetof(SL_PRIVATE_HEADER, dwCtrlCheck) == 12, "offset of SL_PRIVATE_HEADER.dwCtrlCheck");
 SL_STATIC_ASSERT(offsetof(SL_PRIVATE_HEADER, tLast) == 16, "offset of SL_PRIVATE_HEADER.tLast");
@@ -13311,10 +13327,10 @@ SL_STATIC_ASSERT(offsetof(SL_FSOE_FRAME, nSeqNo) == 6, "offset of SL_FSOE_FRAME.
 SL_STATIC_ASSERT(offsetof(SL_FSOE_FRAME, aSafeData) == 8, "offset of SL_FSOE_FRAME.aSafeData");
 SL_STATIC_ASSERT(sizeof(SL_FSOE_FRAME) == 40, "size of SL_FSOE_FRAME");
 SL_STATIC_ASSERT(offsetof(SL_GUARD_PRIVATE, stHeader) == 0, "offset of SL_GUARD_PRIVATE.stHeader");
-SL_STATIC_ASSERT(offsetof(SL_GUARD_PRIVATE, awTime) == 28, "offset of SL_GUARD_PRIVATE.awTime");
-SL_STATIC_ASSERT(offsetof(SL_GUARD_PRIVATE, atDiscStart) == 44, "offset of SL_GUARD_PRIVATE.atDiscStart");
-SL_STATIC_ASSERT(offsetof(SL_GUARD_PRIVATE, awSteady) == 60, "offset of SL_GUARD_PRIVATE.awSteady");
-SL_STATIC_ASSERT(sizeof(SL_GUARD_PRIVATE) == 64, "size of SL_GUARD_PRIVATE");
+SL_STATIC_ASSERT(offsetof(SL_GUARD_PRIVATE, adwTime) == 28, "offset of SL_GUARD_PRIVATE.adwTime");
+SL_STATIC_ASSERT(offsetof(SL_GUARD_PRIVATE, atDiscStart) == 60, "offset of SL_GUARD_PRIVATE.atDiscStart");
+SL_STATIC_ASSERT(offsetof(SL_GUARD_PRIVATE, awSteady) == 76, "offset of SL_GUARD_PRIVATE.awSteady");
+SL_STATIC_ASSERT(sizeof(SL_GUARD_PRIVATE) == 80, "size of SL_GUARD_PRIVATE");
 SL_STATIC_ASSERT(offsetof(FB_ESTOP, bRestart) == 0, "offset of FB_ESTOP.bRestart");
 SL_STATIC_ASSERT(offsetof(FB_ESTOP, bEDM1) == 1, "offset of FB_ESTOP.bEDM1");
 SL_STATIC_ASSERT(offsetof(FB_ESTOP, bEDM2) == 2, "offset of FB_ESTOP.bEDM2");
@@ -13349,7 +13365,7 @@ SL_STATIC_ASSERT(offsetof(FB_ESTOP, aReserved3) == 65, "offset of FB_ESTOP.aRese
 SL_STATIC_ASSERT(offsetof(FB_ESTOP, nDiag) == 66, "offset of FB_ESTOP.nDiag");
 SL_STATIC_ASSERT(offsetof(FB_ESTOP, aReserved4) == 68, "offset of FB_ESTOP.aReserved4");
 SL_STATIC_ASSERT(offsetof(FB_ESTOP, stPrivate) == 72, "offset of FB_ESTOP.stPrivate");
-SL_STATIC_ASSERT(sizeof(FB_ESTOP) == 136, "size of FB_ESTOP");
+SL_STATIC_ASSERT(sizeof(FB_ESTOP) == 152, "size of FB_ESTOP");
 SL_STATIC_ASSERT(offsetof(FB_MON, bRestart) == 0, "offset of FB_MON.bRestart");
 SL_STATIC_ASSERT(offsetof(FB_MON, bEDM1) == 1, "offset of FB_MON.bEDM1");
 SL_STATIC_ASSERT(offsetof(FB_MON, bEDM2) == 2, "offset of FB_MON.bEDM2");
@@ -13383,7 +13399,7 @@ SL_STATIC_ASSERT(offsetof(FB_MON, aReserved5) == 65, "offset of FB_MON.aReserved
 SL_STATIC_ASSERT(offsetof(FB_MON, nDiag) == 66, "offset of FB_MON.nDiag");
 SL_STATIC_ASSERT(offsetof(FB_MON, aReserved6) == 68, "offset of FB_MON.aReserved6");
 SL_STATIC_ASSERT(offsetof(FB_MON, stPrivate) == 72, "offset of FB_MON.stPrivate");
-SL_STATIC_ASSERT(sizeof(FB_MON) == 136, "size of FB_MON");
+SL_STATIC_ASSERT(sizeof(FB_MON) == 152, "size of FB_MON");
 SL_STATIC_ASSERT(offsetof(SL_LOADSENSING_ROW_INT, nX) == 0, "offset of SL_LOADSENSING_ROW_INT.nX");
 SL_STATIC_ASSERT(offsetof(SL_LOADSENSING_ROW_INT, nY1) == 2, "offset of SL_LOADSENSING_ROW_INT.nY1");
 SL_STATIC_ASSERT(offsetof(SL_LOADSENSING_ROW_INT, nY2) == 4, "offset of SL_LOADSENSING_ROW_INT.nY2");
@@ -13435,8 +13451,9 @@ SL_STATIC_ASSERT(offsetof(SL_LOADSENSING_PRIVATE_UDINT, wActive) == 34, "offset 
 SL_STATIC_ASSERT(offsetof(SL_LOADSENSING_PRIVATE_UDINT, aRow) == 36, "offset of SL_LOADSENSING_PRIVATE_UDINT.aRow");
 SL_STATIC_ASSERT(sizeof(SL_LOADSENSING_PRIVATE_UDINT) == 536, "size of SL_LOADSENSING_PRIVATE_UDINT");
 SL_STATIC_ASSERT(offsetof(SL_LOGIC_PRIVATE, stHeader) == 0, "offset of SL_LOGIC_PRIVATE.stHeader");
-SL_STATIC_ASSERT(offsetof(SL_LOGIC_PRIVATE, awSteady) == 28, "offset of SL_LOGIC_PRIVATE.awSteady");
-SL_STATIC_ASSERT(sizeof(SL_LOGIC_PRIVATE) == 32, "size of SL_LOGIC_PRIVATE");
+SL_STATIC_ASSERT(offsetof(SL_LOGIC_PRIVATE, aReserved) == 28, "offset of SL_LOGIC_PRIVATE.aReserved");
+SL_STATIC_ASSERT(offsetof(SL_LOGIC_PRIVATE, adwSteady) == 32, "offset of SL_LOGIC_PRIVATE.adwSteady");
+SL_STATIC_ASSERT(sizeof(SL_LOGIC_PRIVATE) == 64, "size of SL_LOGIC_PRIVATE");
 SL_STATIC_ASSERT(offsetof(FB_AND, aReserved0) == 0, "offset of FB_AND.aReserved0");
 SL_STATIC_ASSERT(offsetof(FB_AND, bAndIn1) == 8, "offset of FB_AND.bAndIn1");
 SL_STATIC_ASSERT(offsetof(FB_AND, bAndIn2) == 9, "offset of FB_AND.bAndIn2");
@@ -13459,7 +13476,7 @@ SL_STATIC_ASSERT(offsetof(FB_AND, aReserved4) == 33, "offset of FB_AND.aReserved
 SL_STATIC_ASSERT(offsetof(FB_AND, nDiag) == 34, "offset of FB_AND.nDiag");
 SL_STATIC_ASSERT(offsetof(FB_AND, aReserved5) == 36, "offset of FB_AND.aReserved5");
 SL_STATIC_ASSERT(offsetof(FB_AND, stPrivate) == 40, "offset of FB_AND.stPrivate");
-SL_STATIC_ASSERT(sizeof(FB_AND) == 72, "size of FB_AND");
+SL_STATIC_ASSERT(sizeof(FB_AND) == 104, "size of FB_AND");
 SL_STATIC_ASSERT(offsetof(FB_OR, aReserved0) == 0, "offset of FB_OR.aReserved0");
 SL_STATIC_ASSERT(offsetof(FB_OR, bOrIn1) == 8, "offset of FB_OR.bOrIn1");
 SL_STATIC_ASSERT(offsetof(FB_OR, bOrIn2) == 9, "offset of FB_OR.bOrIn2");
@@ -13482,7 +13499,7 @@ SL_STATIC_ASSERT(offsetof(FB_OR, aReserved4) == 33, "offset of FB_OR.aReserved4"
 SL_STATIC_ASSERT(offsetof(FB_OR, nDiag) == 34, "offset of FB_OR.nDiag");
 SL_STATIC_ASSERT(offsetof(FB_OR, aReserved5) == 36, "offset of FB_OR.aReserved5");
 SL_STATIC_ASSERT(offsetof(FB_OR, stPrivate) == 40, "offset of FB_OR.stPrivate");
-SL_STATIC_ASSERT(sizeof(FB_OR) == 72, "size of FB_OR");
+SL_STATIC_ASSERT(sizeof(FB_OR) == 104, "size of FB_OR");
 SL_STATIC_ASSERT(offsetof(FB_XOR, bXor1In1) == 0, "offset of FB_XOR.bXor1In1");
 SL_STATIC_ASSERT(offsetof(FB_XOR, bXor2In1) == 1, "offset of FB_XOR.bXor2In1");
 SL_STATIC_ASSERT(offsetof(FB_XOR, bXor1In2) == 2, "offset of FB_XOR.bXor1In2");
@@ -13518,7 +13535,7 @@ SL_STATIC_ASSERT(offsetof(FB_XOR, aReserved3) == 41, "offset of FB_XOR.aReserved
 SL_STATIC_ASSERT(offsetof(FB_XOR, nDiag) == 42, "offset of FB_XOR.nDiag");
 SL_STATIC_ASSERT(offsetof(FB_XOR, aReserved4) == 44, "offset of FB_XOR.aReserved4");
 SL_STATIC_ASSERT(offsetof(FB_XOR, stPrivate) == 48, "offset of FB_XOR.stPrivate");
-SL_STATIC_ASSERT(sizeof(FB_XOR) == 80, "size of FB_XOR");
+SL_STATIC_ASSERT(sizeof(FB_XOR) == 112, "size of FB_XOR");
 SL_STATIC_ASSERT(offsetof(FB_DECOUPLE, aReserved0) == 0, "offset of FB_DECOUPLE.aReserved0");
 SL_STATIC_ASSERT(offsetof(FB_DECOUPLE, bDecIn1) == 8, "offset of FB_DECOUPLE.bDecIn1");
 SL_STATIC_ASSERT(offsetof(FB_DECOUPLE, bDecIn2) == 9, "offset of FB_DECOUPLE.bDecIn2");
@@ -13547,7 +13564,7 @@ SL_STATIC_ASSERT(offsetof(FB_DECOUPLE, aReserved4) == 41, "offset of FB_DECOUPLE
 SL_STATIC_ASSERT(offsetof(FB_DECOUPLE, nDiag) == 42, "offset of FB_DECOUPLE.nDiag");
 SL_STATIC_ASSERT(offsetof(FB_DECOUPLE, aReserved5) == 44, "offset of FB_DECOUPLE.aReserved5");
 SL_STATIC_ASSERT(offsetof(FB_DECOUPLE, stPrivate) == 48, "offset of FB_DECOUPLE.stPrivate");
-SL_STATIC_ASSERT(sizeof(FB_DECOUPLE) == 80, "size of FB_DECOUPLE");
+SL_STATIC_ASSERT(sizeof(FB_DECOUPLE) == 112, "size of FB_DECOUPLE");
 SL_STATIC_ASSERT(offsetof(SL_OPMODE_PRIVATE, stHeader) == 0, "offset of SL_OPMODE_PRIVATE.stHeader");
 SL_STATIC_ASSERT(offsetof(SL_OPMODE_PRIVATE, wDiscTime) == 28, "offset of SL_OPMODE_PRIVATE.wDiscTime");
 SL_STATIC_ASSERT(offsetof(SL_OPMODE_PRIVATE, aReserved) == 30, "offset of SL_OPMODE_PRIVATE.aReserved");
@@ -13678,8 +13695,9 @@ SL_STATIC_ASSERT(offsetof(FB_EDM, aReserved5) == 44, "offset of FB_EDM.aReserved
 SL_STATIC_ASSERT(offsetof(FB_EDM, stPrivate) == 48, "offset of FB_EDM.stPrivate");
 SL_STATIC_ASSERT(sizeof(FB_EDM) == 80, "size of FB_EDM");
 SL_STATIC_ASSERT(offsetof(SL_FLIPFLOP_PRIVATE, stHeader) == 0, "offset of SL_FLIPFLOP_PRIVATE.stHeader");
-SL_STATIC_ASSERT(offsetof(SL_FLIPFLOP_PRIVATE, awSteady) == 28, "offset of SL_FLIPFLOP_PRIVATE.awSteady");
-SL_STATIC_ASSERT(sizeof(SL_FLIPFLOP_PRIVATE) == 32, "size of SL_FLIPFLOP_PRIVATE");
+SL_STATIC_ASSERT(offsetof(SL_FLIPFLOP_PRIVATE, aReserved) == 28, "offset of SL_FLIPFLOP_PRIVATE.aReserved");
+SL_STATIC_ASSERT(offsetof(SL_FLIPFLOP_PRIVATE, adwSteady) == 32, "offset of SL_FLIPFLOP_PRIVATE.adwSteady");
+SL_STATIC_ASSERT(sizeof(SL_FLIPFLOP_PRIVATE) == 64, "size of SL_FLIPFLOP_PRIVATE");
 SL_STATIC_ASSERT(offsetof(FB_RS, aReserved0) == 0, "offset of FB_RS.aReserved0");
 SL_STATIC_ASSERT(offsetof(FB_RS, bReset) == 8, "offset of FB_RS.bReset");
 SL_STATIC_ASSERT(offsetof(FB_RS, bSet) == 9, "offset of FB_RS.bSet");
@@ -13697,7 +13715,7 @@ SL_STATIC_ASSERT(offsetof(FB_RS, aReserved5) == 33, "offset of FB_RS.aReserved5"
 SL_STATIC_ASSERT(offsetof(FB_RS, nDiag) == 34, "offset of FB_RS.nDiag");
 SL_STATIC_ASSERT(offsetof(FB_RS, aReserved6) == 36, "offset of FB_RS.aReserved6");
 SL_STATIC_ASSERT(offsetof(FB_RS, stPrivate) == 40, "offset of FB_RS.stPrivate");
-SL_STATIC_ASSERT(sizeof(FB_RS) == 72, "size of FB_RS");
+SL_STATIC_ASSERT(sizeof(FB_RS) == 104, "size of FB_RS");
 SL_STATIC_ASSERT(offsetof(FB_SR, aReserved0) == 0, "offset of FB_SR.aReserved0");
 SL_STATIC_ASSERT(offsetof(FB_SR, bReset) == 8, "offset of FB_SR.bReset");
 SL_STATIC_ASSERT(offsetof(FB_SR, bSet) == 9, "offset of FB_SR.bSet");
@@ -13715,7 +13733,7 @@ SL_STATIC_ASSERT(offsetof(FB_SR, aReserved5) == 33, "offset of FB_SR.aReserved5"
 SL_STATIC_ASSERT(offsetof(FB_SR, nDiag) == 34, "offset of FB_SR.nDiag");
 SL_STATIC_ASSERT(offsetof(FB_SR, aReserved6) == 36, "offset of FB_SR.aReserved6");
 SL_STATIC_ASSERT(offsetof(FB_SR, stPrivate) == 40, "offset of FB_SR.stPrivate");
-SL_STATIC_ASSERT(sizeof(FB_SR) == 72, "size of FB_SR");
+SL_STATIC_ASSERT(sizeof(FB_SR) == 104, "size of FB_SR");
 SL_STATIC_ASSERT(offsetof(FB_TON, aReserved0) == 0, "offset of FB_TON.aReserved0");
 SL_STATIC_ASSERT(offsetof(FB_TON, bTonIn1) == 8, "offset of FB_TON.bTonIn1");
 SL_STATIC_ASSERT(offsetof(FB_TON, aReserved1) == 9, "offset of FB_TON.aReserved1");

@@ -79,17 +79,19 @@ fn guarded<B: Cyclic>(fb: &mut B, f: impl FnOnce(&mut B) -> i32) -> i32 {
 /// `cycle_rest`, with the same reaction.
 #[inline(always)]
 fn block_cycle<B: Cyclic>(p: *mut B, now: u32) -> i32 {
-    block_call(p, |fb| match fb.cycle_fast(now) {
-        Ok(()) => SL_OK,
-        // The key crosses as a plain integer: u32::MAX is "no key".
-        Err(key) => cycle_rest(fb, key.map_or(u32::MAX, u32::from), now),
+    block_call(p, |fb| {
+        if fb.cycle_fast(now) {
+            SL_OK
+        } else {
+            cycle_rest(fb, now)
+        }
     })
 }
 
 /// The part of a cycle the fast path did not serve, behind its own panic boundary.
 #[inline(never)]
-extern "C" fn cycle_rest<B: Cyclic>(fb: &mut B, key: u32, now: u32) -> i32 {
-    guarded(fb, |fb| fb.cycle_rest(u16::try_from(key).ok(), now).code())
+extern "C" fn cycle_rest<B: Cyclic>(fb: &mut B, now: u32) -> i32 {
+    guarded(fb, |fb| fb.cycle_rest(now).code())
 }
 
 /// Static, NUL-terminated text for a status code (never NULL).

@@ -209,12 +209,12 @@ macro_rules! impl_member {
                 $crate::prim::envelope::cycle(self, now)
             }
             #[inline(always)]
-            fn cycle_fast(&mut self, now: u32) -> Result<(), Option<u16>> {
-                $crate::prim::envelope::fast(self, now)
+            fn cycle_fast(&mut self, now: u32) -> bool {
+                $crate::prim::envelope::Block::fast(self, now)
             }
             #[inline(always)]
-            fn cycle_rest(&mut self, key: Option<u16>, now: u32) -> $crate::types::Status {
-                $crate::prim::envelope::Block::settle(self, key, now)
+            fn cycle_rest(&mut self, now: u32) -> $crate::types::Status {
+                $crate::prim::envelope::Block::settle(self, now)
             }
             fn force_safe(&mut self) {
                 $crate::prim::envelope::force_error(self)
@@ -395,7 +395,7 @@ macro_rules! impl_sf_member {
                 $crate::prim::sf::cycle(self, now)
             }
             #[inline(always)]
-            fn cycle_rest(&mut self, _key: Option<u16>, now: u32) -> $crate::types::Status {
+            fn cycle_rest(&mut self, now: u32) -> $crate::types::Status {
                 $crate::prim::sf::cycle(self, now)
             }
             fn force_safe(&mut self) {

@@ -213,14 +213,14 @@ pub trait Cyclic {
     fn init_fb(&mut self) -> crate::types::Status;
     /// `sl_<name>_cycle`.
     fn cycle_fb(&mut self, now: u32) -> crate::types::Status;
-    /// The steady-state fast path of `cycle_fb` (`prim::envelope::fast`): `Ok` when it
-    /// served the call, else what [`Self::cycle_rest`] needs to finish it.
+    /// The steady-state fast path of `cycle_fb` (`prim::envelope::fast`): whether it
+    /// served the call; [`Self::cycle_rest`] finishes a call it did not serve.
     #[inline(always)]
-    fn cycle_fast(&mut self, _now: u32) -> Result<(), Option<u16>> {
-        Err(None)
+    fn cycle_fast(&mut self, _now: u32) -> bool {
+        false
     }
     /// The rest of a `cycle_fb` call that [`Self::cycle_fast`] did not serve.
-    fn cycle_rest(&mut self, key: Option<u16>, now: u32) -> crate::types::Status;
+    fn cycle_rest(&mut self, now: u32) -> crate::types::Status;
     /// After a caught panic: the safe state with every output FALSE.
     fn force_safe(&mut self);
     /// The block is in an error state (TwinSAFE ERROR; PLCopen DiagCode ≥ 0xC000).

@@ -369,7 +369,7 @@ fn no_allocation_in_init_and_cycle() {
             // corrupted private state (a header byte, then a latched time)
             101 => estop.stPrivate.stHeader.nState ^= 0x5A,
             102 => mon.stPrivate.stHeader.nFlags ^= 0x81,
-            303 => estop.stPrivate.awTime[0] ^= 0x0100,
+            303 => estop.stPrivate.adwTime[0] ^= 0x0100,
             304 => mon.stPrivate.stHeader.wAux ^= 0x0010,
             // clock backwards (only for this call; the next call is forwards again)
             505 => tn = t.wrapping_sub(1000),

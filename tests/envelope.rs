@@ -570,13 +570,16 @@ both!(zeroed_private_state_is_a_never_initialised_instance);
 /// from a running and from a fresh instance.
 fn garbage_private_state_is_corrupt<B: Params>(fb: B) {
     let mut x: u64 = 0x9E37_79B9_7F4A_7C15;
+    // As long as the private state (ESTOP and MON: 80 bytes since their latched times are
+    // full width).
+    let len = running(fb.clone()).fb.private_bytes().len();
     let mut patterns: Vec<Vec<u8>> = [0xFFu8, 0xA5, 0x01, 0x5A]
         .iter()
-        .map(|&b| vec![b; 64])
+        .map(|&b| vec![b; len])
         .collect();
     for _ in 0..8 {
         patterns.push(
-            (0..64)
+            (0..len)
                 .map(|_| {
                     x ^= x << 13;
                     x ^= x >> 7;
@@ -1097,7 +1100,7 @@ both!(a_second_error_adds_its_diag_bit);
 
 // ---------------------------------------------------------------------------------------
 // The latched parameter copy (C3). These two tests reach into SL_GUARD_PRIVATE's public
-// fields (`awTime`, src/blocks/guard.rs): C3 describes the mechanism, the layout is the
+// fields (`adwTime`, src/blocks/guard.rs): C3 describes the mechanism, the layout is the
 // implementation's.
 // ---------------------------------------------------------------------------------------
 
@@ -1111,11 +1114,11 @@ fn corrupted_latched_parameter_copy_is_corrupt_not_param_changed() {
     let mut s = running(fb);
     let d =
         s.fb.stPrivate
-            .awTime
+            .adwTime
             .iter()
             .position(|&t| t == 100)
             .unwrap();
-    s.fb.stPrivate.awTime[d] = 7;
+    s.fb.stPrivate.adwTime[d] = 7;
     assert_eq!(s.adv(1), SL_E_CORRUPT);
     expect(&s.fb, SL_STATE_ERROR);
     assert_ne!(s.fb.nDiag & SL_DIAG_CORRUPT, 0);
@@ -1129,8 +1132,8 @@ fn latched_copy_is_verified_before_the_outputs_are_enabled() {
     s.start_up(SL_STATE_SAFE);
     s.fb.bRestart = 1;
     s.step(1, SL_STATE_START);
-    let last = s.fb.stPrivate.awTime.len() - 1; // the reserved word, compared with nothing
-    s.fb.stPrivate.awTime[last] ^= 0x0100;
+    let last = s.fb.stPrivate.adwTime.len() - 1; // the reserved word, compared with nothing
+    s.fb.stPrivate.adwTime[last] ^= 0x0100;
     s.fb.bRestart = 0;
     assert_eq!(s.adv(1), SL_E_CORRUPT);
     expect(&s.fb, SL_STATE_ERROR);

@@ -12,7 +12,7 @@
 mod common;
 
 use common::Rng;
-use safelogic::prim::envelope::{cycle_full, cycle_traced, Block};
+use safelogic::prim::envelope::{cycle_full, cycle_traced, Block, Steady};
 use safelogic::registry::{block_type, Dir, Kind};
 use safelogic::*;
 use std::collections::BTreeSet;
@@ -87,6 +87,8 @@ macro_rules! pin {
                 let mut s = Seen { name: t.info.name, calls: 0, fast: 0, fast_states: BTreeSet::new(), states: BTreeSet::new(), timed_exits: 0 };
                 let timed = TIMED.iter().find(|(n, _)| *n == t.info.name).map_or(&[][..], |(_, st)| *st);
                 let inputs: Vec<_> = t.fields.iter().filter(|f| f.dir == Dir::Input).collect();
+                // The bytes a call reads from the struct (inputs, controls, parameters).
+                let read: Vec<_> = t.fields.iter().filter(|f| matches!(f.dir, Dir::Input | Dir::Control | Dir::Param)).collect();
                 let params: Vec<_> = t.fields.iter().filter(|f| f.dir == Dir::Param).collect();
                 for seq in 0..if pool.is_empty() { 0 } else { sequences } {
                     let mut a = pool[seq % pool.len()];
@@ -139,9 +141,12 @@ macro_rules! pin {
                         };
                         // The reference starts from the same bytes (equal after every call).
                         let mut b = a;
-                        let key = Block::steady_key(&a);
-                        let steady_inputs = key.is_some() && key == last_key;
-                        last_key = key;
+                        let key: Vec<u8> = read.iter().flat_map(|f| {
+                            let o = usize::from(f.offset);
+                            bytes(&mut a)[o..o + f.kind.size()].to_vec()
+                        }).collect();
+                        let steady_inputs = last_key.as_ref() == Some(&key);
+                        last_key = Some(key);
                         let before = a.nState;
                         let (sa, fast) = cycle_traced(&mut a, now);
                         let sb = cycle_full(&mut b, now);
@@ -218,9 +223,9 @@ macro_rules! guard_walk {
                     }
                     now = now.wrapping_add(1 + ((r >> 16) % 10) as u32);
                     let mut b = a;
-                    let key = Block::steady_key(&a);
-                    let steady_inputs = key.is_some() && key == last_key;
-                    last_key = key;
+                    let key = (a.$in1, a.$in2, a.bRestart, a.bEDM1, a.bErrAck);
+                    let steady_inputs = last_key == Some(key);
+                    last_key = Some(key);
                     let before = a.nState;
                     let (sa, fast) = cycle_traced(&mut a, now);
                     let sb = cycle_full(&mut b, now);
@@ -500,4 +505,149 @@ fn a_steady_call_with_another_status_than_ok_is_never_served() {
         |f| f.tDelay = 0,
         |f| f.tDelay = 20,
     );
+}
+
+/// The fast path is exact only when its key holds every byte the cycle reads from the
+/// struct besides the parameters (compared with the latched copy on their own;
+/// docs/performance.md): every bit of every input and control byte reaches the key of a
+/// valid call. A window key (AND, OR, DECOUPLE, RS, SR) covers the bytes between those
+/// fields as well: its fields must tile the range, and every bit of it counts.
+#[test]
+fn the_key_holds_every_byte_the_cycle_reads() {
+    fn pin<B: Steady + Copy>(fb: B, window: Option<std::ops::Range<usize>>)
+    where
+        safelogic::prim::envelope::KeyOf<B>: std::fmt::Debug,
+    {
+        let t = block_type(<B as safelogic::registry::Registered>::INFO.tag).unwrap();
+        let bytes = |fb: &mut B| -> &mut [u8] {
+            // SAFETY: every block struct holds only integer fields; the slice covers exactly
+            // the instance.
+            unsafe {
+                std::slice::from_raw_parts_mut(
+                    (fb as *mut B).cast::<u8>(),
+                    std::mem::size_of::<B>(),
+                )
+            }
+        };
+        let key = fb.steady_key();
+        assert!(
+            key.is_some(),
+            "{}: the base instance has no key",
+            t.info.name
+        );
+        let mut read: Vec<usize> = Vec::new();
+        for f in t.fields {
+            if matches!(f.dir, Dir::Input | Dir::Control) {
+                let o = usize::from(f.offset);
+                read.extend(o..o + f.kind.size());
+            }
+        }
+        if let Some(w) = &window {
+            for f in t
+                .fields
+                .iter()
+                .filter(|f| matches!(f.dir, Dir::Input | Dir::Control))
+            {
+                let o = usize::from(f.offset);
+                assert!(
+                    w.contains(&o) && w.contains(&(o + f.kind.size() - 1)),
+                    "{}: {} lies outside the window {w:?}",
+                    t.info.name,
+                    f.name
+                );
+            }
+            read = w.clone().collect();
+        }
+        assert!(!read.is_empty());
+        for &at in &read {
+            for bit in 0..8 {
+                let mut flipped = fb;
+                bytes(&mut flipped)[at] ^= 1 << bit;
+                assert_ne!(
+                    flipped.steady_key(),
+                    key,
+                    "{}: bit {bit} of byte {at} does not reach the key",
+                    t.info.name
+                );
+            }
+        }
+    }
+    let w = Some(8..18);
+    pin(
+        FB_AND {
+            wInputActive: 0b11,
+            bRun: 1,
+            ..Default::default()
+        },
+        w.clone(),
+    );
+    pin(
+        FB_OR {
+            wInputActive: 0b11,
+            bRun: 1,
+            ..Default::default()
+        },
+        w.clone(),
+    );
+    pin(
+        FB_DECOUPLE {
+            wInputActive: 0b1,
+            bRun: 1,
+            ..Default::default()
+        },
+        w.clone(),
+    );
+    pin(
+        FB_RS {
+            wInputActive: 0b11,
+            bRun: 1,
+            ..Default::default()
+        },
+        w.clone(),
+    );
+    pin(
+        FB_SR {
+            wInputActive: 0b11,
+            bRun: 1,
+            ..Default::default()
+        },
+        w,
+    );
+    pin(
+        FB_ESTOP {
+            wInputActive: 0b1,
+            bRun: 1,
+            ..Default::default()
+        },
+        None,
+    );
+    pin(
+        FB_MON {
+            wInputActive: 0b1,
+            bRun: 1,
+            ..Default::default()
+        },
+        None,
+    );
+    let mut ton = FB_TON {
+        wInputActive: 1,
+        tDelay: 10,
+        ..Default::default()
+    };
+    assert_eq!(ton.init(), SL_OK);
+    pin(ton, None);
+    let mut tof = FB_TOF {
+        wInputActive: 1,
+        tDelay: 10,
+        ..Default::default()
+    };
+    assert_eq!(tof.init(), SL_OK);
+    pin(tof, None);
+    let mut ton2 = FB_TON2 {
+        wInputActive: 1,
+        tDelay: 10,
+        ..Default::default()
+    };
+    assert_eq!(ton2.init(), SL_OK);
+    pin(ton2, None);
 }

@@ -11,11 +11,11 @@ int main(void)
 {
     printf("S SL_PRIVATE_HEADER %zu\n", sizeof(SL_PRIVATE_HEADER));
     printf("F SL_PRIVATE_HEADER wMagic %zu %zu\n", offsetof(SL_PRIVATE_HEADER, wMagic), sizeof(((SL_PRIVATE_HEADER *)0)->wMagic));
-    printf("F SL_PRIVATE_HEADER wParamCrc %zu %zu\n", offsetof(SL_PRIVATE_HEADER, wParamCrc), sizeof(((SL_PRIVATE_HEADER *)0)->wParamCrc));
+    printf("F SL_PRIVATE_HEADER wAux %zu %zu\n", offsetof(SL_PRIVATE_HEADER, wAux), sizeof(((SL_PRIVATE_HEADER *)0)->wAux));
     printf("F SL_PRIVATE_HEADER nState %zu %zu\n", offsetof(SL_PRIVATE_HEADER, nState), sizeof(((SL_PRIVATE_HEADER *)0)->nState));
     printf("F SL_PRIVATE_HEADER nFlags %zu %zu\n", offsetof(SL_PRIVATE_HEADER, nFlags), sizeof(((SL_PRIVATE_HEADER *)0)->nFlags));
     printf("F SL_PRIVATE_HEADER wDiag %zu %zu\n", offsetof(SL_PRIVATE_HEADER, wDiag), sizeof(((SL_PRIVATE_HEADER *)0)->wDiag));
-    printf("F SL_PRIVATE_HEADER wAux %zu %zu\n", offsetof(SL_PRIVATE_HEADER, wAux), sizeof(((SL_PRIVATE_HEADER *)0)->wAux));
+    printf("F SL_PRIVATE_HEADER wParamCrc %zu %zu\n", offsetof(SL_PRIVATE_HEADER, wParamCrc), sizeof(((SL_PRIVATE_HEADER *)0)->wParamCrc));
     printf("F SL_PRIVATE_HEADER wAuxCheck %zu %zu\n", offsetof(SL_PRIVATE_HEADER, wAuxCheck), sizeof(((SL_PRIVATE_HEADER *)0)->wAuxCheck));
     printf("F SL_PRIVATE_HEADER dwCtrlCheck %zu %zu\n", offsetof(SL_PRIVATE_HEADER, dwCtrlCheck), sizeof(((SL_PRIVATE_HEADER *)0)->dwCtrlCheck));
     printf("F SL_PRIVATE_HEADER tLast %zu %zu\n", offsetof(SL_PRIVATE_HEADER, tLast), sizeof(((SL_PRIVATE_HEADER *)0)->tLast));
@@ -171,7 +171,7 @@ int main(void)
     printf("F SL_FSOE_FRAME aSafeData %zu %zu\n", offsetof(SL_FSOE_FRAME, aSafeData), sizeof(((SL_FSOE_FRAME *)0)->aSafeData));
     printf("S SL_GUARD_PRIVATE %zu\n", sizeof(SL_GUARD_PRIVATE));
     printf("F SL_GUARD_PRIVATE stHeader %zu %zu\n", offsetof(SL_GUARD_PRIVATE, stHeader), sizeof(((SL_GUARD_PRIVATE *)0)->stHeader));
-    printf("F SL_GUARD_PRIVATE awTime %zu %zu\n", offsetof(SL_GUARD_PRIVATE, awTime), sizeof(((SL_GUARD_PRIVATE *)0)->awTime));
+    printf("F SL_GUARD_PRIVATE adwTime %zu %zu\n", offsetof(SL_GUARD_PRIVATE, adwTime), sizeof(((SL_GUARD_PRIVATE *)0)->adwTime));
     printf("F SL_GUARD_PRIVATE atDiscStart %zu %zu\n", offsetof(SL_GUARD_PRIVATE, atDiscStart), sizeof(((SL_GUARD_PRIVATE *)0)->atDiscStart));
     printf("F SL_GUARD_PRIVATE awSteady %zu %zu\n", offsetof(SL_GUARD_PRIVATE, awSteady), sizeof(((SL_GUARD_PRIVATE *)0)->awSteady));
     printf("S FB_ESTOP %zu\n", sizeof(FB_ESTOP));
@@ -295,7 +295,8 @@ int main(void)
     printf("F SL_LOADSENSING_PRIVATE_UDINT aRow %zu %zu\n", offsetof(SL_LOADSENSING_PRIVATE_UDINT, aRow), sizeof(((SL_LOADSENSING_PRIVATE_UDINT *)0)->aRow));
     printf("S SL_LOGIC_PRIVATE %zu\n", sizeof(SL_LOGIC_PRIVATE));
     printf("F SL_LOGIC_PRIVATE stHeader %zu %zu\n", offsetof(SL_LOGIC_PRIVATE, stHeader), sizeof(((SL_LOGIC_PRIVATE *)0)->stHeader));
-    printf("F SL_LOGIC_PRIVATE awSteady %zu %zu\n", offsetof(SL_LOGIC_PRIVATE, awSteady), sizeof(((SL_LOGIC_PRIVATE *)0)->awSteady));
+    printf("F SL_LOGIC_PRIVATE aReserved %zu %zu\n", offsetof(SL_LOGIC_PRIVATE, aReserved), sizeof(((SL_LOGIC_PRIVATE *)0)->aReserved));
+    printf("F SL_LOGIC_PRIVATE adwSteady %zu %zu\n", offsetof(SL_LOGIC_PRIVATE, adwSteady), sizeof(((SL_LOGIC_PRIVATE *)0)->adwSteady));
     printf("S FB_AND %zu\n", sizeof(FB_AND));
     printf("F FB_AND aReserved0 %zu %zu\n", offsetof(FB_AND, aReserved0), sizeof(((FB_AND *)0)->aReserved0));
     printf("F FB_AND bAndIn1 %zu %zu\n", offsetof(FB_AND, bAndIn1), sizeof(((FB_AND *)0)->bAndIn1));
@@ -538,7 +539,8 @@ int main(void)
     printf("F FB_EDM stPrivate %zu %zu\n", offsetof(FB_EDM, stPrivate), sizeof(((FB_EDM *)0)->stPrivate));
     printf("S SL_FLIPFLOP_PRIVATE %zu\n", sizeof(SL_FLIPFLOP_PRIVATE));
     printf("F SL_FLIPFLOP_PRIVATE stHeader %zu %zu\n", offsetof(SL_FLIPFLOP_PRIVATE, stHeader), sizeof(((SL_FLIPFLOP_PRIVATE *)0)->stHeader));
-    printf("F SL_FLIPFLOP_PRIVATE awSteady %zu %zu\n", offsetof(SL_FLIPFLOP_PRIVATE, awSteady), sizeof(((SL_FLIPFLOP_PRIVATE *)0)->awSteady));
+    printf("F SL_FLIPFLOP_PRIVATE aReserved %zu %zu\n", offsetof(SL_FLIPFLOP_PRIVATE, aReserved), sizeof(((SL_FLIPFLOP_PRIVATE *)0)->aReserved));
+    printf("F SL_FLIPFLOP_PRIVATE adwSteady %zu %zu\n", offsetof(SL_FLIPFLOP_PRIVATE, adwSteady), sizeof(((SL_FLIPFLOP_PRIVATE *)0)->adwSteady));
     printf("S FB_RS %zu\n", sizeof(FB_RS));
     printf("F FB_RS aReserved0 %zu %zu\n", offsetof(FB_RS, aReserved0), sizeof(((FB_RS *)0)->aReserved0));
     printf("F FB_RS bReset %zu %zu\n", offsetof(FB_RS, bReset), sizeof(((FB_RS *)0)->bReset));

@@ -11,7 +11,7 @@ use crate::types::*;
 pub const SL_TYPE_AND: u16 = 3;
 
 /// FB AND instance (ABI §3, §9). Inputs at the manual's offsets (§4.1.2), output base 24.
-/// Size: 72 bytes.
+/// Size: 104 bytes.
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 #[allow(non_snake_case, non_camel_case_types)]
@@ -58,7 +58,7 @@ pub struct FB_AND {
     pub nDiag: u16,
     /// Offset 36. Reserved.
     pub aReserved5: [u8; 4],
-    /// Offset 40. Private state, 32 bytes: never write it.
+    /// Offset 40. Private state, 64 bytes: never write it.
     pub stPrivate: SL_LOGIC_PRIVATE,
 }
 
@@ -107,8 +107,10 @@ impl LogicBlock for FB_AND {
     const NEGATABLE: u16 = 0xFF;
     const MIN_ACTIVE: u32 = 2;
 
-    fn key_inputs(&self) -> Option<[u8; 8]> {
-        Some(self.inputs())
+    fn window(&self) -> Option<[u64; 2]> {
+        Some(crate::prim::envelope::window!(self, 2:
+            bAndIn1, bAndIn2, bAndIn3, bAndIn4, bAndIn5, bAndIn6, bAndIn7, bAndIn8, bRun, bErrAck
+        ))
     }
     fn params(&self) -> LogicParams {
         LogicParams {

@@ -13,7 +13,7 @@ pub const SL_TYPE_DECOUPLE: u16 = 6;
 
 /// FB DECOUPLE instance (ABI §3, §9). Inputs at the manual's offsets 8…15 (§4.6.2), output
 /// base 24 (outputs at base + 8 … base + 15).
-/// Size: 80 bytes.
+/// Size: 112 bytes.
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 #[allow(non_snake_case, non_camel_case_types)]
@@ -72,7 +72,7 @@ pub struct FB_DECOUPLE {
     pub nDiag: u16,
     /// Offset 44. Reserved.
     pub aReserved5: [u8; 4],
-    /// Offset 48. Private state, 32 bytes: never write it.
+    /// Offset 48. Private state, 64 bytes: never write it.
     pub stPrivate: SL_LOGIC_PRIVATE,
 }
 
@@ -121,8 +121,10 @@ impl LogicBlock for FB_DECOUPLE {
     const NEGATABLE: u16 = 0;
     const MIN_ACTIVE: u32 = 1;
 
-    fn key_inputs(&self) -> Option<[u8; 8]> {
-        Some(self.inputs())
+    fn window(&self) -> Option<[u64; 2]> {
+        Some(crate::prim::envelope::window!(self, 2:
+            bDecIn1, bDecIn2, bDecIn3, bDecIn4, bDecIn5, bDecIn6, bDecIn7, bDecIn8, bRun, bErrAck
+        ))
     }
     fn params(&self) -> LogicParams {
         LogicParams {

@@ -15,7 +15,7 @@ pub const SL_TYPE_ESTOP: u16 = 1;
 
 /// FB ESTOP instance (ABI §3, §8). Inputs at the manual's offsets (§4.4.2), outputs at
 /// output base 56 + the manual's offsets.
-/// Size: 136 bytes.
+/// Size: 152 bytes.
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 #[allow(non_snake_case, non_camel_case_types)]
@@ -86,7 +86,7 @@ pub struct FB_ESTOP {
     pub nDiag: u16,
     /// Offset 68. Reserved.
     pub aReserved4: [u8; 4],
-    /// Offset 72. Private state, 64 bytes: never write it.
+    /// Offset 72. Private state, 80 bytes: never write it.
     pub stPrivate: SL_GUARD_PRIVATE,
 }
 

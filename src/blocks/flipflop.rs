@@ -13,20 +13,23 @@ pub const SL_STATE_SR_SET: u8 = 9;
 /// FB_RS state SET (manual §4.10.2: 9): the output RsOut is TRUE.
 pub const SL_STATE_RS_SET: u8 = 9;
 
-/// Private state of FB_RS and FB_SR (32 bytes): the memory is the state (SAFE or SET) in
+/// Private state of FB_RS and FB_SR (64 bytes): the memory is the state (SAFE or SET) in
 /// the header, guarded by its complement copy. Never written by the user.
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 #[allow(non_snake_case, non_camel_case_types)]
 pub struct SL_FLIPFLOP_PRIVATE {
     pub stHeader: SL_PRIVATE_HEADER,
-    /// Fast-path key and its complement (`prim::envelope`).
-    pub awSteady: [u16; 2],
+    /// Reserved, 0.
+    pub aReserved: [u8; 4],
+    /// Fast-path slot (`prim::envelope`): the key window (two 64-bit words), then its check
+    /// words.
+    pub adwSteady: [u32; 8],
 }
 
-const _: () = assert!(core::mem::size_of::<SL_FLIPFLOP_PRIVATE>() == 32);
+const _: () = assert!(core::mem::size_of::<SL_FLIPFLOP_PRIVATE>() == 64);
 
-crate::prim::envelope::steady_private!(SL_FLIPFLOP_PRIVATE, awSteady, u16);
+crate::prim::envelope::steady_private!(SL_FLIPFLOP_PRIVATE, adwSteady, window 2);
 
 /// Input bits: bit 0 = Reset, bit 1 = Set (ABI §9).
 pub(crate) const RESET: u8 = 1 << 0;
@@ -140,7 +143,7 @@ macro_rules! flipflop_block {
                 }
                 fn latched_crc(&self) -> u16 {
                     let h = &self.private().stHeader;
-                    param_crc(Self::MAGIC, h.nActive, h.nNegated, h.wOptions, &[])
+                    param_crc(Self::MAGIC, h.nActive, h.nNegated, h.wOptions, &[0u16; 0])
                 }
                 /// An inactive input reads FALSE (no command). An invalid byte reads as the value
                 /// that demands the safe state of the output: Reset TRUE, Set FALSE, whatever
@@ -184,20 +187,25 @@ macro_rules! flipflop_block {
                 fn error_remains(&mut self, _inp: &FlipFlopIn) -> bool {
                     false
                 }
+                $crate::prim::envelope::steady_hooks!();
+                fn write_outputs(&mut self) {
+                    let h = self.private().stHeader;
+                    self.set_outputs(h.nState == STATE_SET, h.nState, h.wDiag);
+                }
+            }
+
+            impl $crate::prim::envelope::Steady for $t {
+                /// The bytes [8, 18): Reset, Set, bRun, bErrAck.
                 #[inline(always)]
-                fn steady_key(&self) -> Option<u16> {
-                    let [reset, set] = self.raw();
-                    bools::key([reset, set, self.run_raw(), self.errack_raw()])
+                fn steady_key(&self) -> Option<[u64; 2]> {
+                    Some($crate::prim::envelope::window!(self, 2:
+                        bReset, bSet, aReserved1, bRun, bErrAck
+                    ))
                 }
                 /// A memory without timers: nothing depends on the time.
                 #[inline(always)]
                 fn quiet(&self) -> bool {
                     true
-                }
-                $crate::prim::envelope::steady_hooks!();
-                fn write_outputs(&mut self) {
-                    let h = self.private().stHeader;
-                    self.set_outputs(h.nState == STATE_SET, h.nState, h.wDiag);
                 }
             }
         };

@@ -9,15 +9,16 @@ use crate::prim::edm::Edm;
 use crate::prim::header::{param_crc, EDM_PENDING_SHIFT, F_EDM_PENDING, SL_PRIVATE_HEADER};
 use crate::types::*;
 
-/// Private state of FB_ESTOP and FB_MON (64 bytes). Never written by the user.
+/// Private state of FB_ESTOP and FB_MON (80 bytes). Never written by the user.
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 #[allow(non_snake_case, non_camel_case_types)]
 pub struct SL_GUARD_PRIVATE {
     pub stHeader: SL_PRIVATE_HEADER,
     /// Latched times in ms: discrepancy times of pairs 1-4, EDM1 and EDM2 reset times,
-    /// output delay, reserved.
-    pub awTime: [u16; 8],
+    /// output delay, reserved. Full width, in the order of the live fields: the fast path
+    /// compares them with the live ones as whole words (docs/performance.md).
+    pub adwTime: [u32; 8],
     /// Start times of the pair discrepancy timers.
     pub atDiscStart: [u32; 4],
     /// Fast-path key and its complement (`prim::envelope`).
@@ -26,7 +27,7 @@ pub struct SL_GUARD_PRIVATE {
 
 crate::prim::envelope::steady_private!(SL_GUARD_PRIVATE, awSteady, u16);
 
-const _: () = assert!(core::mem::size_of::<SL_GUARD_PRIVATE>() == 64);
+const _: () = assert!(core::mem::size_of::<SL_GUARD_PRIVATE>() == 80);
 const _: () = assert!(core::mem::size_of::<SL_PRIVATE_HEADER>() == 28);
 
 pub(crate) const T_EDM1: usize = 4;
@@ -110,7 +111,7 @@ pub(crate) fn manual_restart<T: GuardBlock>(options: u16) -> bool {
 /// CRC of a guard block's latched parameters.
 pub(crate) fn latched_crc<T: GuardBlock>(p: &SL_GUARD_PRIVATE) -> u16 {
     let h = &p.stHeader;
-    param_crc(T::TAG, h.nActive, h.nNegated, h.wOptions, &p.awTime)
+    param_crc(T::TAG, h.nActive, h.nNegated, h.wOptions, &p.adwTime)
 }
 
 /// Outputs switch on: verify the latched parameters first (ABI §3.6 integrity), then RUN
@@ -120,7 +121,7 @@ pub(crate) fn enable<T: GuardBlock>(p: &mut SL_GUARD_PRIVATE, edm: &Edm, now: u3
         p.stHeader.enter_error(SL_DIAG_CORRUPT);
         return (SL_STATE_ERROR, Status::Corrupt);
     }
-    let pending = edm.arm([p.awTime[T_EDM1], p.awTime[T_EDM2]]);
+    let pending = edm.arm([p.adwTime[T_EDM1], p.adwTime[T_EDM2]]);
     let h = &mut p.stHeader;
     h.nFlags = (h.nFlags & !F_EDM_PENDING) | (pending << EDM_PENDING_SHIFT);
     h.tPhase = now;
@@ -144,11 +145,11 @@ macro_rules! guard_block {
 
                 fn latched_params(&self) -> GuardParams {
                     let p = self.private();
-                    let t = |i: usize| u32::from(p.awTime[i]);
+                    let t = &p.adwTime;
                     GuardParams {
-                        disc: [t(0), t(1), t(2), t(3)],
-                        edm_reset: [t(T_EDM1), t(T_EDM2)],
-                        delay: t(T_DELAY),
+                        disc: [t[0], t[1], t[2], t[3]],
+                        edm_reset: [t[T_EDM1], t[T_EDM2]],
+                        delay: t[T_DELAY],
                         active: u16::from(p.stHeader.nActive),
                         negated: u16::from(p.stHeader.nNegated),
                         options: u32::from(p.stHeader.wOptions),
@@ -181,17 +182,14 @@ macro_rules! guard_block {
 
                 fn store_params(&mut self, p: &GuardParams) {
                     let q = self.private_mut();
-                    // Narrowing is exact for valid parameters (all times <= SL_TIME_PARAM_MAX); an
-                    // invalid set is stored truncated and never runs (F_CFG_INVALID).
-                    let n = |t: u32| t as u16;
-                    q.awTime = [
-                        n(p.disc[0]),
-                        n(p.disc[1]),
-                        n(p.disc[2]),
-                        n(p.disc[3]),
-                        n(p.edm_reset[0]),
-                        n(p.edm_reset[1]),
-                        n(p.delay),
+                    q.adwTime = [
+                        p.disc[0],
+                        p.disc[1],
+                        p.disc[2],
+                        p.disc[3],
+                        p.edm_reset[0],
+                        p.edm_reset[1],
+                        p.delay,
                         0,
                     ];
                     q.stHeader.nActive = p.active as u8;
@@ -202,7 +200,7 @@ macro_rules! guard_block {
                 fn latched_crc(&self) -> u16 {
                     let p = self.private();
                     let h = &p.stHeader;
-                    param_crc(Self::MAGIC, h.nActive, h.nNegated, h.wOptions, &p.awTime)
+                    param_crc(Self::MAGIC, h.nActive, h.nNegated, h.wOptions, &p.adwTime)
                 }
 
                 fn decode(&mut self) -> (GuardIn, bool) {
@@ -251,10 +249,10 @@ macro_rules! guard_block {
                     let state = p.stHeader.nState;
                     let options = u32::from(p.stHeader.wOptions);
                     let manual = manual_restart::<Self>(p.stHeader.wOptions);
-                    let delay = u32::from(p.awTime[T_DELAY]);
+                    let delay = p.adwTime[T_DELAY];
 
                     // Discrepancy monitoring runs in every running state.
-                    let monitored = p.awTime[..4]
+                    let monitored = p.adwTime[..4]
                         .iter()
                         .enumerate()
                         .fold(0u8, |m, (k, &t)| m | (u8::from(t != 0) << k));
@@ -264,7 +262,7 @@ macro_rules! guard_block {
                         monitored,
                         &mut running,
                         &mut p.atDiscStart,
-                        &p.awTime[..4],
+                        &p.adwTime[..4],
                         now,
                     );
                     p.stHeader.wAux = (p.stHeader.wAux & !0xF) | u16::from(running);
@@ -287,7 +285,7 @@ macro_rules! guard_block {
                         err |= inp.edm.reset_time_check(
                             &mut pending,
                             h.tPhase,
-                            [p.awTime[T_EDM1], p.awTime[T_EDM2]],
+                            [p.adwTime[T_EDM1], p.adwTime[T_EDM2]],
                             now,
                         );
                         h.nFlags = (h.nFlags & !F_EDM_PENDING) | (pending << EDM_PENDING_SHIFT);
@@ -408,6 +406,21 @@ macro_rules! guard_block {
                     disc_remains || edm_remains
                 }
 
+                $crate::prim::envelope::steady_hooks!();
+
+                fn write_outputs(&mut self) {
+                    let h = self.private().stHeader;
+                    let (error, out, del_out) = match h.nState {
+                        SL_STATE_RUN => (false, true, true),
+                        SL_STATE_DELAYOUT | SL_STATE_ERRORDELAY => (false, false, true),
+                        SL_STATE_ERROR => (true, false, false),
+                        _ => (false, false, false),
+                    };
+                    self.set_outputs(error, out, del_out, h.nState, h.wDiag);
+                }
+            }
+
+            impl $crate::prim::envelope::Steady for $t {
                 #[inline(always)]
                 fn steady_key(&self) -> Option<u16> {
                     let r = self.raw();
@@ -436,19 +449,6 @@ macro_rules! guard_block {
                     !matches!(h.nState, SL_STATE_DELAYOUT | SL_STATE_ERRORDELAY)
                         && h.wAux & 0xF == 0
                         && h.nFlags & F_EDM_PENDING == 0
-                }
-
-                $crate::prim::envelope::steady_hooks!();
-
-                fn write_outputs(&mut self) {
-                    let h = self.private().stHeader;
-                    let (error, out, del_out) = match h.nState {
-                        SL_STATE_RUN => (false, true, true),
-                        SL_STATE_DELAYOUT | SL_STATE_ERRORDELAY => (false, false, true),
-                        SL_STATE_ERROR => (true, false, false),
-                        _ => (false, false, false),
-                    };
-                    self.set_outputs(error, out, del_out, h.nState, h.wDiag);
                 }
             }
         };

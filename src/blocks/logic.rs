@@ -5,19 +5,22 @@
 
 use crate::prim::header::SL_PRIVATE_HEADER;
 
-/// Private state of the combinational blocks (32 bytes). Never written by the user.
+/// Private state of the combinational blocks (64 bytes). Never written by the user.
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 #[allow(non_snake_case, non_camel_case_types)]
 pub struct SL_LOGIC_PRIVATE {
     pub stHeader: SL_PRIVATE_HEADER,
-    /// Fast-path key and its complement (`prim::envelope`).
-    pub awSteady: [u16; 2],
+    /// Reserved, 0.
+    pub aReserved: [u8; 4],
+    /// Fast-path slot (`prim::envelope`): the key window (two 64-bit words), then its check
+    /// words.
+    pub adwSteady: [u32; 8],
 }
 
-crate::prim::envelope::steady_private!(SL_LOGIC_PRIVATE, awSteady, u16);
+crate::prim::envelope::steady_private!(SL_LOGIC_PRIVATE, adwSteady, window 2);
 
-const _: () = assert!(core::mem::size_of::<SL_LOGIC_PRIVATE>() == 32);
+const _: () = assert!(core::mem::size_of::<SL_LOGIC_PRIVATE>() == 64);
 
 /// Parameters of a combinational block as the user wrote them.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
@@ -47,8 +50,9 @@ pub trait LogicBlock: crate::registry::Private<P = SL_LOGIC_PRIVATE> {
     const MIN_ACTIVE: u32;
 
     fn params(&self) -> LogicParams;
-    /// The input bytes when they fit the fast-path key (eight), `None` otherwise (XOR).
-    fn key_inputs(&self) -> Option<[u8; 8]>;
+    /// The fast-path key: the bytes [8, 18) of the struct (the inputs, bRun, bErrAck;
+    /// `prim::envelope::window!`), `None` where they do not fit (XOR).
+    fn window(&self) -> Option<[u64; 2]>;
     /// Evaluates the input bytes with the latched masks; the flag tells whether an active
     /// input byte was an invalid BOOL.
     fn evaluate(&self, active: u8, negated: u8) -> (LogicIn, bool);
@@ -94,7 +98,7 @@ macro_rules! logic_block {
                 #[inline(always)]
                 fn latched_crc(&self) -> u16 {
                     let h = &self.private().stHeader;
-                    param_crc(Self::MAGIC, h.nActive, h.nNegated, h.wOptions, &[])
+                    param_crc(Self::MAGIC, h.nActive, h.nNegated, h.wOptions, &[0u16; 0])
                 }
                 #[inline(always)]
                 fn decode(&mut self) -> (LogicIn, bool) {
@@ -127,16 +131,6 @@ macro_rules! logic_block {
                 fn error_remains(&mut self, _inp: &LogicIn) -> bool {
                     false
                 }
-                #[inline(always)]
-                fn steady_key(&self) -> Option<u16> {
-                    let [a, b, c, d, e, f, g, h] = self.key_inputs()?;
-                    bools::key([a, b, c, d, e, f, g, h, self.run_raw(), self.errack_raw()])
-                }
-                /// Combinational: nothing depends on the time.
-                #[inline(always)]
-                fn quiet(&self) -> bool {
-                    true
-                }
                 $crate::prim::envelope::steady_hooks!();
                 #[inline(always)]
                 fn write_outputs(&mut self) {
@@ -147,6 +141,18 @@ macro_rules! logic_block {
                         0
                     };
                     self.set_outputs(outputs, h.nState, h.wDiag);
+                }
+            }
+
+            impl $crate::prim::envelope::Steady for $t {
+                #[inline(always)]
+                fn steady_key(&self) -> Option<[u64; 2]> {
+                    self.window()
+                }
+                /// Combinational: nothing depends on the time.
+                #[inline(always)]
+                fn quiet(&self) -> bool {
+                    true
                 }
             }
         };

@@ -16,7 +16,7 @@ pub const SL_TYPE_MON: u16 = 2;
 
 /// FB MON instance (ABI §3, §8). Inputs at the manual's offsets (§4.5.2), outputs at
 /// output base 56 + the manual's offsets.
-/// Size: 136 bytes.
+/// Size: 152 bytes.
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 #[allow(non_snake_case, non_camel_case_types)]
@@ -85,7 +85,7 @@ pub struct FB_MON {
     pub nDiag: u16,
     /// Offset 68. Reserved.
     pub aReserved6: [u8; 4],
-    /// Offset 72. Private state, 64 bytes: never write it.
+    /// Offset 72. Private state, 80 bytes: never write it.
     pub stPrivate: SL_GUARD_PRIVATE,
 }
 

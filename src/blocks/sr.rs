@@ -12,7 +12,7 @@ use crate::types::*;
 pub const SL_TYPE_SR: u16 = 12;
 
 /// FB SR instance (ABI §3, §9). Inputs at the manual's offsets (§4.11.2), output base 24.
-/// Size: 72 bytes.
+/// Size: 104 bytes.
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 #[allow(non_snake_case, non_camel_case_types)]
@@ -49,7 +49,7 @@ pub struct FB_SR {
     pub nDiag: u16,
     /// Offset 36. Reserved.
     pub aReserved6: [u8; 4],
-    /// Offset 40. Private state, 32 bytes: never write it.
+    /// Offset 40. Private state, 64 bytes: never write it.
     pub stPrivate: SL_FLIPFLOP_PRIVATE,
 }
 

@@ -427,15 +427,26 @@ macro_rules! timer_block {
                 false
             }
 
+            $crate::prim::envelope::steady_hooks!();
+
+            fn write_outputs(&mut self) {
+                let h = self.private().stHeader;
+                let out = phase_of::<Self>(h.nState).is_some_and(output::<Self>);
+                self.set_outputs(out, h.nState, h.wDiag);
+            }
+        }
+
+        impl $crate::prim::envelope::Steady for $t {
             /// `None` as well while a timer value fails its complement: the full cycle
             /// reports it.
             #[inline(always)]
-            fn steady_key(&self) -> Option<u16> {
+            fn steady_key(&self) -> Option<u8> {
                 if !self.private().timers_intact() {
                     return None;
                 }
                 let (input, enable) = self.raw();
-                bools::key([input, enable, self.run_raw(), self.errack_raw()])
+                // Four bits: exact in a byte.
+                bools::key([input, enable, self.run_raw(), self.errack_raw()]).map(|k| k as u8)
             }
 
             /// The timer does not run.
@@ -443,9 +454,6 @@ macro_rules! timer_block {
             fn quiet(&self) -> bool {
                 phase_of::<Self>(self.private().stHeader.nState) != Some(Phase::Timing)
             }
-
-            /// The key has four bits (input, Enable, bRun, bErrAck).
-            const TIMED_KEY: u16 = 0x80;
 
             /// Timing and the delay not reached at `now`: the call keeps Timing and changes
             /// nothing (TON, TOF). Never for TON2: its stored elapsed time follows the clock
@@ -458,13 +466,6 @@ macro_rules! timer_block {
                     && !time::reached(now, p.stHeader.tPhase, p.dwDelay)
             }
 
-            $crate::prim::envelope::steady_hooks!();
-
-            fn write_outputs(&mut self) {
-                let h = self.private().stHeader;
-                let out = phase_of::<Self>(h.nState).is_some_and(output::<Self>);
-                self.set_outputs(out, h.nState, h.wDiag);
-            }
         }
         };
     };

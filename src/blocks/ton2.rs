@@ -139,7 +139,7 @@ pub fn restore_elapsed(fb: &mut FB_TON2, elapsed_ms: u32) -> Status {
         }
     }
     // The stored time changes outside a cycle: the next call takes the full cycle.
-    fb.store_key(None);
+    fb.forget_key();
     let crc = fb.latched_crc();
     let p = &mut fb.stPrivate;
     if !p.stHeader.intact(<FB_TON2 as Block>::MAGIC)

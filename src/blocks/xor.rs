@@ -13,7 +13,7 @@ pub const SL_TYPE_XOR: u16 = 5;
 
 /// FB XOR instance (ABI §3, §9). Inputs at the manual's offsets 0…15 (§4.34.2), output
 /// base 24 (outputs at base + 8 … base + 15).
-/// Size: 80 bytes.
+/// Size: 112 bytes.
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 #[allow(non_snake_case, non_camel_case_types)]
@@ -86,7 +86,7 @@ pub struct FB_XOR {
     pub nDiag: u16,
     /// Offset 44. Reserved.
     pub aReserved4: [u8; 4],
-    /// Offset 48. Private state, 32 bytes: never write it.
+    /// Offset 48. Private state, 64 bytes: never write it.
     pub stPrivate: SL_LOGIC_PRIVATE,
 }
 
@@ -151,7 +151,7 @@ impl LogicBlock for FB_XOR {
     const MIN_ACTIVE: u32 = 1;
 
     /// Sixteen input bytes: more than a key holds with bRun and bErrAck.
-    fn key_inputs(&self) -> Option<[u8; 8]> {
+    fn window(&self) -> Option<[u64; 2]> {
         None
     }
     fn params(&self) -> LogicParams {

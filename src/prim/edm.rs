@@ -51,7 +51,7 @@ impl Edm {
         &self,
         pending: &mut u8,
         t_on: u32,
-        reset_time: [u16; 2],
+        reset_time: [u32; 2],
         now: u32,
     ) -> u16 {
         if *pending == 0 {
@@ -65,7 +65,7 @@ impl Edm {
             }
             if self.is_false[x] {
                 *pending &= !bit;
-            } else if time::reached(now, t_on, u32::from(reset_time[x])) {
+            } else if time::reached(now, t_on, reset_time[x]) {
                 d |= diag;
             }
         }
@@ -74,7 +74,7 @@ impl Edm {
 
     /// The pending bits to arm when the outputs switch on.
     #[inline]
-    pub fn arm(&self, reset_time: [u16; 2]) -> u8 {
+    pub fn arm(&self, reset_time: [u32; 2]) -> u8 {
         u8::from(self.active[0] && reset_time[0] != 0)
             | (u8::from(self.active[1] && reset_time[1] != 0) << 1)
     }

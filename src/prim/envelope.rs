@@ -3,12 +3,13 @@
 //! with ErrAck edges, the status code. The block itself only supplies its running states.
 //!
 //! The steady-state fast path (docs/performance.md): a block whose cycle reads only BOOL
-//! bytes keeps, beside its private state, the key of the input bytes of the last call that
-//! changed nothing (a fixed point of the full cycle in a state without a running timer).
-//! A call with the same key, an intact private header, a clock that did not go backwards and
-//! parameters equal to the latched ones would compute the same again: it only advances
-//! `tLast` and rewrites the outputs. Every other call runs the full cycle and records
-//! whether it was such a fixed point.
+//! bytes and parameters keeps, beside its private state, the key of the bytes read by the
+//! last call that changed nothing (a fixed point of the full cycle in a state without a
+//! running timer): a window over all of them, or the BOOL bytes gathered into bits. A call
+//! with the same key, an intact private header, a clock that did not go backwards and
+//! parameters equal to the latched ones (part of a window key) would compute the same
+//! again: it only advances `tLast` and rewrites the outputs. Every other call runs the full
+//! cycle and records whether it was such a fixed point.
 
 use super::bools::{edge, is_false, is_true};
 use super::header::{F_CFG_INVALID, F_ERRACK_PREV, F_RESET_HELD, F_TIME_VALID, SL_PRIVATE_HEADER};
@@ -75,41 +76,143 @@ pub trait Block: Instance + crate::registry::Registered {
     /// Writes the VAR_OUTPUT and info fields from the private state.
     fn write_outputs(&mut self);
 
-    /// The key of this call for the fast path: bit i is BOOL byte i of every byte the cycle
-    /// reads (inputs, bRun, bErrAck). `None` for a block without a fast path and whenever one
-    /// of those bytes is neither 0 nor 1.
+    /// The fast path (`fast`): whether it served the call. Only a block with a fast path
+    /// ([`Steady`], `steady_hooks!`) has one.
     #[inline(always)]
-    fn steady_key(&self) -> Option<u16> {
-        None
-    }
-    /// The last fixed-point call stored `key` (never for a block that is not steady).
-    #[inline(always)]
-    fn holds_key(&self, _key: u16) -> bool {
+    fn fast(&mut self, _now: u32) -> bool {
         false
     }
-    /// Stores the key of a fixed-point call, or forgets it (`None`). Whatever changes the
-    /// private state outside [`cycle`] forgets it.
-    #[inline(always)]
-    fn store_key(&mut self, _key: Option<u16>) {}
-    /// The full cycle, recording whether it was a fixed point for `key` ([`settle`]).
-    /// Out of line, as the fast path's `settle` is: the C function and the group's call of
-    /// the block share one copy.
+    /// The full cycle; for a block with a fast path it also records whether the call was a
+    /// fixed point ([`settle`]). Out of line: the C function and the group's call of the
+    /// block share one copy, and the fast path stays a small leaf function.
     #[inline(never)]
-    fn settle(&mut self, _key: Option<u16>, now: u32) -> Status
+    fn settle(&mut self, now: u32) -> Status
     where
         Self: Sized,
     {
         full_cycle(self, now)
     }
-    /// No running timer: the outcome of a call depends on the time only through the clock
-    /// check. Only asked of blocks with a fast path.
+    /// Forgets a stored fast-path key: whatever changes the private state outside [`cycle`]
+    /// calls it.
     #[inline(always)]
-    fn quiet(&self) -> bool {
-        false
+    fn forget_key(&mut self) {}
+}
+
+/// A fast-path key: what the cycle of a steady block reads from its struct, compared whole.
+pub trait SteadyKey: Copy + PartialEq {
+    /// The check word of a key stored in a quiet state: its complement.
+    fn complement(self) -> Self;
+    /// The check word of a key stored in a timing state: the key XOR [`TIMED`] (a pattern
+    /// that is neither 0 nor all ones, so a quiet slot and a timed slot differ in half the
+    /// bits of the check word, and a zeroed slot holds no key).
+    fn timed(self) -> Self;
+}
+
+/// The timed slot's pattern ([`SteadyKey::timed`]).
+pub const TIMED: u64 = 0x5A5A_5A5A_5A5A_5A5A;
+
+/// A gathered key (`bools::key`) of a byte or a word.
+macro_rules! scalar_key {
+    ($($w:ty),+) => {$(
+        impl SteadyKey for $w {
+            #[inline(always)]
+            fn complement(self) -> Self {
+                !self
+            }
+            #[inline(always)]
+            fn timed(self) -> Self {
+                self ^ TIMED as $w
+            }
+        }
+    )+};
+}
+scalar_key!(u8, u16);
+
+impl<const N: usize> SteadyKey for [u64; N] {
+    #[inline(always)]
+    fn complement(self) -> Self {
+        self.map(|w| !w)
     }
-    /// A key bit no key of the block has: set in a key stored in a timing state (below).
-    /// Only meaningful for a block whose `timing_quiet` can be true.
-    const TIMED_KEY: u16 = 0;
+    #[inline(always)]
+    fn timed(self) -> Self {
+        self.map(|w| w ^ TIMED)
+    }
+}
+
+/// A private state with a fast-path slot: a key and its check word.
+pub trait SteadyPrivate: Copy + PartialEq {
+    type Key: SteadyKey;
+    /// The common head.
+    fn head_mut(&mut self) -> &mut SL_PRIVATE_HEADER;
+    /// The slot: the stored key and its check word.
+    fn slot(&self) -> [Self::Key; 2];
+    /// Writes the slot (all zero: no key).
+    fn set_slot(&mut self, slot: Option<[Self::Key; 2]>);
+}
+
+/// Implements [`SteadyPrivate`] for a private struct whose slot is `$slot`: `[$w; 2]` for a
+/// scalar key (key, check), `[u32; 4N]` for a window of N words (key words, then check
+/// words, each as two halves, low first: the C and PLC types have no 64-bit integer).
+macro_rules! steady_private {
+    ($p:ty, $slot:ident, $w:ty) => {
+        impl $crate::prim::envelope::SteadyPrivate for $p {
+            type Key = $w;
+            #[inline(always)]
+            fn head_mut(&mut self) -> &mut $crate::prim::header::SL_PRIVATE_HEADER {
+                &mut self.stHeader
+            }
+            #[inline(always)]
+            fn slot(&self) -> [$w; 2] {
+                self.$slot
+            }
+            #[inline(always)]
+            fn set_slot(&mut self, slot: Option<[$w; 2]>) {
+                self.$slot = slot.unwrap_or_default();
+            }
+        }
+    };
+    ($p:ty, $slot:ident, window $n:literal) => {
+        impl $crate::prim::envelope::SteadyPrivate for $p {
+            type Key = [u64; $n];
+            #[inline(always)]
+            fn head_mut(&mut self) -> &mut $crate::prim::header::SL_PRIVATE_HEADER {
+                &mut self.stHeader
+            }
+            #[inline(always)]
+            fn slot(&self) -> [[u64; $n]; 2] {
+                let s = &self.$slot;
+                let word = |i: usize| u64::from(s[2 * i]) | u64::from(s[2 * i + 1]) << 32;
+                [
+                    core::array::from_fn(|i| word(i)),
+                    core::array::from_fn(|i| word($n + i)),
+                ]
+            }
+            #[inline(always)]
+            fn set_slot(&mut self, slot: Option<[[u64; $n]; 2]>) {
+                let [key, check] = slot.unwrap_or_default();
+                self.$slot = core::array::from_fn(|i| {
+                    let w = if i < 2 * $n {
+                        key[i / 2]
+                    } else {
+                        check[i / 2 - $n]
+                    };
+                    (w >> (32 * (i % 2))) as u32
+                });
+            }
+        }
+    };
+}
+pub(crate) use steady_private;
+
+/// What a block with a fast path supplies besides [`Block`].
+pub trait Steady: Block + crate::registry::Private<P: SteadyPrivate> {
+    /// The key of this call: the bytes the cycle reads from the struct besides the
+    /// parameters (its inputs, `bRun`, `bErrAck`), or `None` when this call cannot have one
+    /// (a gathered key's byte that is neither 0 nor 1).
+    fn steady_key(&self) -> Option<KeyOf<Self>>;
+    /// No running timer: the outcome of a call depends on the time only through the clock
+    /// check.
+    fn quiet(&self) -> bool;
     /// A timer runs that is not reached at `now`, and a call that leaves the state as it is
     /// changes nothing else either (TON, TOF while timing): the outcome of a call at `now`
     /// depends on the time only through the clock check and this test. Asked by the full
@@ -121,98 +224,121 @@ pub trait Block: Instance + crate::registry::Registered {
     }
 }
 
-/// A private state with a fast-path key slot.
-pub trait SteadyPrivate: Copy + PartialEq {
-    /// The common head.
-    fn head_mut(&mut self) -> &mut SL_PRIVATE_HEADER;
-    /// The slot holds `key` with its check copy (one compare of the whole slot).
-    fn holds(&self, key: u16) -> bool;
-    /// Stores a key with its check copy, or clears the slot (`None`).
-    fn set_key(&mut self, key: Option<u16>);
-}
-
-/// Implements [`SteadyPrivate`] for a private struct whose key slot is `$slot: [$w; 2]`
-/// (key and complement; a key too wide for `$w` is never stored).
-macro_rules! steady_private {
-    ($p:ty, $slot:ident, $w:ty) => {
-        impl $crate::prim::envelope::SteadyPrivate for $p {
-            #[inline(always)]
-            fn head_mut(&mut self) -> &mut $crate::prim::header::SL_PRIVATE_HEADER {
-                &mut self.stHeader
-            }
-            #[inline(always)]
-            fn holds(&self, key: u16) -> bool {
-                <$w>::try_from(key).is_ok_and(|k| self.$slot == [k, !k])
-            }
-            #[inline(always)]
-            fn set_key(&mut self, key: Option<u16>) {
-                self.$slot = match key.and_then(|k| <$w>::try_from(k).ok()) {
-                    Some(k) => [k, !k],
-                    None => [0, 0],
-                };
-            }
-        }
-    };
-}
-pub(crate) use steady_private;
+/// The key type of a block with a fast path.
+pub type KeyOf<B> = <<B as crate::registry::Private>::P as SteadyPrivate>::Key;
 
 /// The fast-path methods of a family's `Block` impl whose private state is a
-/// [`SteadyPrivate`] (the family supplies `steady_key` and `quiet`).
+/// [`SteadyPrivate`] (the family implements [`Steady`]).
 macro_rules! steady_hooks {
     () => {
         #[inline(always)]
-        fn holds_key(&self, key: u16) -> bool {
-            $crate::prim::envelope::SteadyPrivate::holds(self.private(), key)
+        fn fast(&mut self, now: u32) -> bool {
+            $crate::prim::envelope::fast(self, now)
+        }
+        #[inline(never)]
+        fn settle(&mut self, now: u32) -> Status {
+            $crate::prim::envelope::settle(self, now)
         }
         #[inline(always)]
-        fn store_key(&mut self, key: Option<u16>) {
-            $crate::prim::envelope::SteadyPrivate::set_key(self.private_mut(), key)
-        }
-        #[inline(always)]
-        fn settle(&mut self, key: Option<u16>, now: u32) -> Status {
-            $crate::prim::envelope::settle(self, key, now)
+        fn forget_key(&mut self) {
+            $crate::prim::envelope::SteadyPrivate::set_slot(self.private_mut(), None)
         }
     };
 }
 pub(crate) use steady_hooks;
 
-/// The private state without what a fast call changes (`tLast`) and without the key slot.
+/// A field of a key window (`window!`): its value as an integer and its size in bytes.
+pub trait WindowField {
+    fn bits(&self) -> (u64, u32);
+}
+
+impl WindowField for u8 {
+    #[inline(always)]
+    fn bits(&self) -> (u64, u32) {
+        (u64::from(*self), 1)
+    }
+}
+
+impl WindowField for u16 {
+    #[inline(always)]
+    fn bits(&self) -> (u64, u32) {
+        (u64::from(*self), 2)
+    }
+}
+
+impl WindowField for u32 {
+    #[inline(always)]
+    fn bits(&self) -> (u64, u32) {
+        (u64::from(*self), 4)
+    }
+}
+
+impl<const N: usize> WindowField for [u8; N] {
+    #[inline(always)]
+    fn bits(&self) -> (u64, u32) {
+        let v = self
+            .iter()
+            .rev()
+            .fold(0u64, |v, &b| v.wrapping_shl(8) | u64::from(b));
+        (v, N as u32)
+    }
+}
+
+/// The key of a window: the listed fields, which tile a range of the struct from byte 8 in
+/// order (every input and control byte lies there; `tests/fast_path.rs` checks that every
+/// bit of the range reaches the key and that every input and control field lies in it), as
+/// N little-endian words (at most 8·N bytes; the rest zero). Built as shifts and ORs of
+/// adjacent fields, which the compiler merges into plain loads.
+macro_rules! window {
+    ($s:ident, $n:literal: $($f:ident),+ $(,)?) => {{
+        let mut words = [0u64; $n];
+        let mut at = 0u32;
+        $(
+            let (v, len) = $crate::prim::envelope::WindowField::bits(&$s.$f);
+            words[(at / 8) as usize % $n] |= v.wrapping_shl(8 * (at % 8));
+            at += len;
+        )+
+        // That the fields tile the range exactly is checked by tests/fast_path.rs.
+        let _ = at;
+        words
+    }};
+}
+pub(crate) use window;
+
+/// The private state without what a fast call changes (`tLast`) and without the slot.
 #[inline(always)]
 fn fixed_part<P: SteadyPrivate>(p: &P) -> P {
     let mut v = *p;
     v.head_mut().tLast = 0;
-    v.set_key(None);
+    v.set_slot(None);
     v
 }
 
-/// [`Block::settle`] of a block with a fast path: the full cycle, then the key stored when
-/// the call returned SL_OK, left the private state as it found it (but for `tLast`) and no
-/// timer runs; forgotten otherwise. Kept out of line: the fast path in [`cycle`] is then a
-/// small leaf function.
+/// [`Block::settle`] of a block with a fast path: the full cycle, then this call's key
+/// stored when the call returned SL_OK, left the private state as it found it (but for
+/// `tLast`) and no timer runs (check word: the complement) or a timer runs that is not
+/// reached (`timing_quiet`; check word: the key XOR [`TIMED`]); the slot cleared otherwise.
+/// Kept out of line: the fast path in [`cycle`] is then a small leaf function.
 #[inline(never)]
-pub fn settle<B, P>(fb: &mut B, key: Option<u16>, now: u32) -> Status
-where
-    B: Block + crate::registry::Private<P = P>,
-    P: SteadyPrivate,
-{
-    let Some(key) = key else {
+pub fn settle<B: Steady>(fb: &mut B, now: u32) -> Status {
+    let Some(key) = fb.steady_key() else {
         let status = full_cycle(fb, now);
-        fb.private_mut().set_key(None);
+        fb.private_mut().set_slot(None);
         return status;
     };
     let before = fixed_part(fb.private());
     let status = full_cycle(fb, now);
     let fixed = status == Status::Ok && fixed_part(fb.private()) == before;
-    let stored = if !fixed {
+    let slot = if !fixed {
         None
     } else if fb.quiet() {
-        Some(key)
+        Some([key, key.complement()])
     } else if fb.timing_quiet(now) {
-        Some(key | B::TIMED_KEY)
+        Some([key, key.timed()])
     } else {
         None
     };
-    fb.private_mut().set_key(stored);
+    fb.private_mut().set_slot(slot);
     status
 }
 
@@ -263,51 +389,53 @@ pub fn cycle<B: Block>(fb: &mut B, now: u32) -> Status {
 #[doc(hidden)]
 #[inline(always)]
 pub fn cycle_traced<B: Block>(fb: &mut B, now: u32) -> (Status, bool) {
-    match fast(fb, now) {
-        Ok(()) => (Status::Ok, true),
-        Err(key) => (fb.settle(key, now), false),
+    if fb.fast(now) {
+        (Status::Ok, true)
+    } else {
+        (fb.settle(now), false)
     }
 }
 
-/// The fast path alone: `Ok` when it served the call (`SL_OK`), else the call's key for
-/// [`Block::settle`], which must then run. Split from [`cycle`] so that the C boundary can
-/// keep the fast path a leaf and reach the full cycle through an out-of-line call.
+/// The fast path alone: whether it served the call (`SL_OK`); [`Block::settle`] must run
+/// when it did not. Split from [`cycle`] so that the C boundary can keep the fast path a
+/// leaf and reach the full cycle through an out-of-line call.
 #[inline(always)]
-pub fn fast<B: Block>(fb: &mut B, now: u32) -> Result<(), Option<u16>> {
-    let key = fb.steady_key();
-    if let Some(k) = key {
-        // A key stored in a timing state carries TIMED_KEY: a call with the plain key never
-        // reaches the timing test, so the blocks' quiet states pay nothing for it.
-        let served = if fb.holds_key(k) {
+pub fn fast<B: Steady>(fb: &mut B, now: u32) -> bool {
+    let Some(key) = fb.steady_key() else {
+        return false;
+    };
+    let [stored, check] = fb.private().slot();
+    // A key stored in a timing state has another check word: a call that finds the quiet
+    // one never reaches the timing test, so the quiet states pay nothing for it.
+    let served = stored == key
+        && if check == key.complement() {
             unchanged(fb, now)
         } else {
-            fb.holds_key(k | B::TIMED_KEY) && unchanged(fb, now) && fb.timing_quiet(now)
+            check == key.timed() && unchanged(fb, now) && fb.timing_quiet(now)
         };
-        if served {
-            fb.header_mut().tLast = now;
-            fb.write_outputs();
-            return Ok(());
-        }
+    if served {
+        fb.header_mut().tLast = now;
+        fb.write_outputs();
     }
-    Err(key)
+    served
 }
 
 /// What the fast path checks besides the key: the private header is intact, the clock did
-/// not go backwards, the live parameters are the latched ones.
+/// not go backwards, the live parameters are the latched ones (the compare that also checks
+/// the latched copy in the private state, with its CRC where an output switches on).
 #[inline(always)]
-fn unchanged<B: Block>(fb: &B, now: u32) -> bool {
+fn unchanged<B: Steady>(fb: &B, now: u32) -> bool {
     let h = fb.header();
     h.intact(B::MAGIC)
         && !time::went_backwards(now, h.tLast)
         && fb.live_params() == fb.latched_params()
 }
 
-/// The full cycle only, keeping the fast-path key as [`cycle`] does (the reference the
+/// The full cycle only, keeping the fast-path slot as [`cycle`] does (the reference the
 /// fast path is tested against).
 #[doc(hidden)]
 pub fn cycle_full<B: Block>(fb: &mut B, now: u32) -> Status {
-    let key = fb.steady_key();
-    fb.settle(key, now)
+    fb.settle(now)
 }
 
 /// The full cycle (ABI §4, §5, §7).
@@ -436,7 +564,7 @@ pub fn force_error<B: Block>(fb: &mut B) {
     if !fb.header().intact(B::MAGIC) {
         power_up(fb, SL_STATE_ERROR, SL_DIAG_CORRUPT);
     }
-    fb.store_key(None);
+    fb.forget_key();
     fb.header_mut().enter_error(SL_DIAG_CORRUPT);
     fb.write_outputs();
     fb.header_mut().seal();

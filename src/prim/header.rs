@@ -21,16 +21,16 @@ use crc::{Crc, CRC_16_IBM_3740};
 pub struct SL_PRIVATE_HEADER {
     /// Block type tag; 0 in a never-initialised instance.
     pub wMagic: u16,
-    /// CRC-16 of the latched parameters (seeded with the magic).
-    pub wParamCrc: u16,
+    /// Block-specific auxiliary bits (pair timers running, latches, test progress).
+    pub wAux: u16,
     /// Current state (the manual's status value).
     pub nState: u8,
     /// Edge memories and internal flags (`F_*`).
     pub nFlags: u8,
     /// Latched diagnostic bits.
     pub wDiag: u16,
-    /// Block-specific auxiliary bits (pair timers running, latches, test progress).
-    pub wAux: u16,
+    /// CRC-16 of the latched parameters (seeded with the magic).
+    pub wParamCrc: u16,
     /// Complement of `wAux`.
     pub wAuxCheck: u16,
     /// Complement of the control word (`nState`, `nFlags`, `wDiag`).
@@ -67,14 +67,37 @@ pub(crate) const EDM_PENDING_SHIFT: u32 = 3;
 
 static CRC16: Crc<u16> = Crc::<u16>::new(&CRC_16_IBM_3740);
 
+/// A latched parameter word, covered whole by the CRC (its little-endian bytes).
+pub trait ParamWord: Copy {
+    fn feed(self, d: &mut crc::Digest<'_, u16>);
+}
+
+impl ParamWord for u16 {
+    fn feed(self, d: &mut crc::Digest<'_, u16>) {
+        d.update(&self.to_le_bytes());
+    }
+}
+
+impl ParamWord for u32 {
+    fn feed(self, d: &mut crc::Digest<'_, u16>) {
+        d.update(&self.to_le_bytes());
+    }
+}
+
 /// CRC-16 over a block's latched parameter words, seeded with its magic.
-pub fn param_crc(magic: u16, active: u8, negated: u8, options: u16, times: &[u16]) -> u16 {
+pub fn param_crc<W: ParamWord>(
+    magic: u16,
+    active: u8,
+    negated: u8,
+    options: u16,
+    times: &[W],
+) -> u16 {
     let mut d = CRC16.digest();
     d.update(&magic.to_le_bytes());
     d.update(&[active, negated]);
     d.update(&options.to_le_bytes());
-    for t in times {
-        d.update(&t.to_le_bytes());
+    for &t in times {
+        t.feed(&mut d);
     }
     d.finalize()
 }
@@ -83,11 +106,11 @@ impl SL_PRIVATE_HEADER {
     /// All zero: a never-initialised instance.
     pub const ZERO: Self = Self {
         wMagic: 0,
-        wParamCrc: 0,
+        wAux: 0,
         nState: 0,
         nFlags: 0,
         wDiag: 0,
-        wAux: 0,
+        wParamCrc: 0,
         wAuxCheck: 0,
         dwCtrlCheck: 0,
         tLast: 0,
@@ -108,10 +131,17 @@ impl SL_PRIVATE_HEADER {
         *self == Self::default()
     }
 
-    /// Magic and complement copies agree.
+    /// Magic and complement copies agree. The checked words and their complements are the
+    /// header's first and second 8 bytes (magic, aux, control word; CRC, their complements):
+    /// one XOR of the two decides all complements at once.
     #[inline]
     pub fn intact(&self, magic: u16) -> bool {
-        self.wMagic == magic && self.wAuxCheck == !self.wAux && self.dwCtrlCheck == !self.ctrl()
+        let word =
+            u64::from(self.wMagic) | u64::from(self.wAux) << 16 | u64::from(self.ctrl()) << 32;
+        let check = u64::from(self.wParamCrc)
+            | u64::from(self.wAuxCheck) << 16
+            | u64::from(self.dwCtrlCheck) << 32;
+        word ^ check == u64::from(magic ^ self.wParamCrc) | 0xFFFF_FFFF_FFFF_0000
     }
 
     /// Refreshes the complement copies after the cycle changed the control word.
@@ -169,9 +199,9 @@ mod tests {
 
     #[test]
     fn crc_depends_on_every_word() {
-        let base = param_crc(1, 3, 0, 4, &[10, 20]);
-        assert_ne!(base, param_crc(2, 3, 0, 4, &[10, 20]));
-        assert_ne!(base, param_crc(1, 3, 0, 4, &[20, 10]));
-        assert_ne!(base, param_crc(1, 3, 1, 4, &[10, 20]));
+        let base = param_crc(1, 3, 0, 4, &[10u16, 20]);
+        assert_ne!(base, param_crc(2, 3, 0, 4, &[10u16, 20]));
+        assert_ne!(base, param_crc(1, 3, 0, 4, &[20u16, 10]));
+        assert_ne!(base, param_crc(1, 3, 1, 4, &[10u16, 20]));
     }
 }

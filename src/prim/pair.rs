@@ -36,7 +36,7 @@ pub fn monitor(
     monitored: u8,
     running: &mut u8,
     starts: &mut [u32],
-    times: &[u16],
+    times: &[impl Copy + Into<u32>],
     now: u32,
 ) -> u8 {
     let diff = differing(logical) & monitored;
@@ -51,7 +51,7 @@ pub fn monitor(
         let bit = 1u8 << k;
         if starting & bit != 0 {
             *start = now;
-        } else if diff & bit != 0 && time::reached(now, *start, u32::from(t)) {
+        } else if diff & bit != 0 && time::reached(now, *start, t.into()) {
             errors |= bit;
         }
     }
@@ -72,13 +72,13 @@ mod tests {
     #[test]
     fn error_exactly_at_the_limit() {
         let (mut run, mut st) = (0u8, [0u32; 1]);
-        assert_eq!(monitor(0b01, 1, &mut run, &mut st, &[100], 1000), 0);
-        assert_eq!(monitor(0b01, 1, &mut run, &mut st, &[100], 1099), 0);
-        assert_eq!(monitor(0b01, 1, &mut run, &mut st, &[100], 1100), 1);
+        assert_eq!(monitor(0b01, 1, &mut run, &mut st, &[100u16], 1000), 0);
+        assert_eq!(monitor(0b01, 1, &mut run, &mut st, &[100u16], 1099), 0);
+        assert_eq!(monitor(0b01, 1, &mut run, &mut st, &[100u16], 1100), 1);
         // agreeing again stops the timer; a new discrepancy starts from scratch
-        assert_eq!(monitor(0b11, 1, &mut run, &mut st, &[100], 1101), 0);
-        assert_eq!(monitor(0b10, 1, &mut run, &mut st, &[100], 1102), 0);
-        assert_eq!(monitor(0b10, 1, &mut run, &mut st, &[100], 1201), 0);
-        assert_eq!(monitor(0b10, 1, &mut run, &mut st, &[100], 1202), 1);
+        assert_eq!(monitor(0b11, 1, &mut run, &mut st, &[100u16], 1101), 0);
+        assert_eq!(monitor(0b10, 1, &mut run, &mut st, &[100u16], 1102), 0);
+        assert_eq!(monitor(0b10, 1, &mut run, &mut st, &[100u16], 1201), 0);
+        assert_eq!(monitor(0b10, 1, &mut run, &mut st, &[100u16], 1202), 1);
     }
 }
