@@ -1124,6 +1124,25 @@ fn corrupted_latched_parameter_copy_is_corrupt_not_param_changed() {
     assert_ne!(s.fb.nDiag & SL_DIAG_CORRUPT, 0);
 }
 
+/// The same for the high half of a latched time (the copy keeps the times full width; the
+/// CRC covers the OR of the high halves, 0 in every valid set).
+#[test]
+fn corrupted_high_half_of_a_latched_time_is_corrupt_not_param_changed() {
+    let mut fb = estop_pair();
+    fb.tEStopDelOutDelay = 100;
+    let mut s = running(fb);
+    let d =
+        s.fb.stPrivate
+            .adwTime
+            .iter()
+            .position(|&t| t == 100)
+            .unwrap();
+    s.fb.stPrivate.adwTime[d] |= 1 << 20;
+    assert_eq!(s.adv(1), SL_E_CORRUPT);
+    expect(&s.fb, SL_STATE_ERROR);
+    assert_ne!(s.fb.nDiag & SL_DIAG_CORRUPT, 0);
+}
+
 /// C3 "The latched copy carries a CRC-16 ... verified before the outputs are enabled": a
 /// corruption of the copy that no live parameter reveals stops the restart.
 #[test]

@@ -143,7 +143,7 @@ macro_rules! flipflop_block {
                 }
                 fn latched_crc(&self) -> u16 {
                     let h = &self.private().stHeader;
-                    param_crc(Self::MAGIC, h.nActive, h.nNegated, h.wOptions, &[0u16; 0])
+                    param_crc(Self::MAGIC, h.nActive, h.nNegated, h.wOptions, &[])
                 }
                 /// An inactive input reads FALSE (no command). An invalid byte reads as the value
                 /// that demands the safe state of the output: Reset TRUE, Set FALSE, whatever

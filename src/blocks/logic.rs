@@ -98,7 +98,7 @@ macro_rules! logic_block {
                 #[inline(always)]
                 fn latched_crc(&self) -> u16 {
                     let h = &self.private().stHeader;
-                    param_crc(Self::MAGIC, h.nActive, h.nNegated, h.wOptions, &[0u16; 0])
+                    param_crc(Self::MAGIC, h.nActive, h.nNegated, h.wOptions, &[])
                 }
                 #[inline(always)]
                 fn decode(&mut self) -> (LogicIn, bool) {

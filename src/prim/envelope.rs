@@ -259,20 +259,6 @@ impl WindowField for u8 {
     }
 }
 
-impl WindowField for u16 {
-    #[inline(always)]
-    fn bits(&self) -> (u64, u32) {
-        (u64::from(*self), 2)
-    }
-}
-
-impl WindowField for u32 {
-    #[inline(always)]
-    fn bits(&self) -> (u64, u32) {
-        (u64::from(*self), 4)
-    }
-}
-
 impl<const N: usize> WindowField for [u8; N] {
     #[inline(always)]
     fn bits(&self) -> (u64, u32) {
