@@ -629,25 +629,19 @@ fn the_key_holds_every_byte_the_cycle_reads() {
         },
         None,
     );
-    let mut ton = FB_TON {
-        wInputActive: 1,
-        tDelay: 10,
-        ..Default::default()
-    };
-    assert_eq!(ton.init(), SL_OK);
-    pin(ton, None);
-    let mut tof = FB_TOF {
-        wInputActive: 1,
-        tDelay: 10,
-        ..Default::default()
-    };
-    assert_eq!(tof.init(), SL_OK);
-    pin(tof, None);
-    let mut ton2 = FB_TON2 {
-        wInputActive: 1,
-        tDelay: 10,
-        ..Default::default()
-    };
-    assert_eq!(ton2.init(), SL_OK);
-    pin(ton2, None);
+    // The timers' keys need an initialised private state (their timer words are checked).
+    macro_rules! timer {
+        ($ty:ident) => {{
+            let mut fb = $ty {
+                wInputActive: 1,
+                tDelay: 10,
+                ..Default::default()
+            };
+            assert_eq!(fb.init(), SL_OK);
+            pin(fb, None);
+        }};
+    }
+    timer!(FB_TON);
+    timer!(FB_TOF);
+    timer!(FB_TON2);
 }
