@@ -686,7 +686,7 @@ SL_AT(FB_TON, nState, 40);
 SL_AT(FB_TON, nDiag, 42);
 _Static_assert(offsetof(FB_TON, stPrivate) == 48, "offset of FB_TON.stPrivate");
 _Static_assert(offsetof(FB_TON, stPrivate) % 8 == 0, "FB_TON private state 8-aligned");
-_Static_assert(sizeof(FB_TON) == 96, "size of FB_TON");
+_Static_assert(sizeof(FB_TON) == 112, "size of FB_TON");
 _Static_assert(sizeof(FB_TON) % 8 == 0, "size of FB_TON is a multiple of 8");
 SL_SIZE(FB_TON, bTonIn1, 1);
 SL_SIZE(FB_TON, bRun, 1);
@@ -698,9 +698,9 @@ SL_SIZE(FB_TON, wInputNegated, 2);
 SL_SIZE(FB_TON, bTonOut, 1);
 SL_SIZE(FB_TON, nState, 1);
 SL_SIZE(FB_TON, nDiag, 2);
-SL_SIZE(FB_TON, stPrivate, 48);
-/* no implicit padding: 65 bytes of named fields + the reserved fields == sizeof */
-_Static_assert(65 +
+SL_SIZE(FB_TON, stPrivate, 64);
+/* no implicit padding: 81 bytes of named fields + the reserved fields == sizeof */
+_Static_assert(81 +
                    sizeof(((FB_TON *)0)->aReserved0) +
                    sizeof(((FB_TON *)0)->aReserved1) +
                    sizeof(((FB_TON *)0)->aReserved2) +
@@ -709,7 +709,7 @@ _Static_assert(65 +
                    sizeof(((FB_TON *)0)->aReserved5) +
                    sizeof(((FB_TON *)0)->aReserved6) +
                    sizeof(((FB_TON *)0)->aReserved7) ==
-                   96,
+                   112,
                "FB_TON has implicit padding");
 
 /* ---------------- FB_TON2 (ABI §9, manual §4.13.2) ---------------- */
@@ -732,7 +732,7 @@ SL_AT(FB_TON2, nState, 48);
 SL_AT(FB_TON2, nDiag, 50);
 _Static_assert(offsetof(FB_TON2, stPrivate) == 56, "offset of FB_TON2.stPrivate");
 _Static_assert(offsetof(FB_TON2, stPrivate) % 8 == 0, "FB_TON2 private state 8-aligned");
-_Static_assert(sizeof(FB_TON2) == 104, "size of FB_TON2");
+_Static_assert(sizeof(FB_TON2) == 120, "size of FB_TON2");
 _Static_assert(sizeof(FB_TON2) % 8 == 0, "size of FB_TON2 is a multiple of 8");
 SL_SIZE(FB_TON2, bTonIn1, 1);
 SL_SIZE(FB_TON2, bEnable, 1);
@@ -746,9 +746,9 @@ SL_SIZE(FB_TON2, dwOptions, 4);
 SL_SIZE(FB_TON2, bTonOut, 1);
 SL_SIZE(FB_TON2, nState, 1);
 SL_SIZE(FB_TON2, nDiag, 2);
-SL_SIZE(FB_TON2, stPrivate, 48);
-/* no implicit padding: 70 bytes of named fields + the reserved fields == sizeof */
-_Static_assert(70 +
+SL_SIZE(FB_TON2, stPrivate, 64);
+/* no implicit padding: 86 bytes of named fields + the reserved fields == sizeof */
+_Static_assert(86 +
                    sizeof(((FB_TON2 *)0)->aReserved0) +
                    sizeof(((FB_TON2 *)0)->aReserved1) +
                    sizeof(((FB_TON2 *)0)->aReserved2) +
@@ -758,7 +758,7 @@ _Static_assert(70 +
                    sizeof(((FB_TON2 *)0)->aReserved6) +
                    sizeof(((FB_TON2 *)0)->aReserved7) +
                    sizeof(((FB_TON2 *)0)->aReserved8) ==
-                   104,
+                   120,
                "FB_TON2 has implicit padding");
 
 /* ---------------- FB_TOF (ABI §9, manual §4.14.2) ---------------- */
@@ -779,7 +779,7 @@ SL_AT(FB_TOF, nState, 40);
 SL_AT(FB_TOF, nDiag, 42);
 _Static_assert(offsetof(FB_TOF, stPrivate) == 48, "offset of FB_TOF.stPrivate");
 _Static_assert(offsetof(FB_TOF, stPrivate) % 8 == 0, "FB_TOF private state 8-aligned");
-_Static_assert(sizeof(FB_TOF) == 96, "size of FB_TOF");
+_Static_assert(sizeof(FB_TOF) == 112, "size of FB_TOF");
 _Static_assert(sizeof(FB_TOF) % 8 == 0, "size of FB_TOF is a multiple of 8");
 SL_SIZE(FB_TOF, bTofIn1, 1);
 SL_SIZE(FB_TOF, bRun, 1);
@@ -791,9 +791,9 @@ SL_SIZE(FB_TOF, wInputNegated, 2);
 SL_SIZE(FB_TOF, bTofOut, 1);
 SL_SIZE(FB_TOF, nState, 1);
 SL_SIZE(FB_TOF, nDiag, 2);
-SL_SIZE(FB_TOF, stPrivate, 48);
-/* no implicit padding: 65 bytes of named fields + the reserved fields == sizeof */
-_Static_assert(65 +
+SL_SIZE(FB_TOF, stPrivate, 64);
+/* no implicit padding: 81 bytes of named fields + the reserved fields == sizeof */
+_Static_assert(81 +
                    sizeof(((FB_TOF *)0)->aReserved0) +
                    sizeof(((FB_TOF *)0)->aReserved1) +
                    sizeof(((FB_TOF *)0)->aReserved2) +
@@ -802,7 +802,7 @@ _Static_assert(65 +
                    sizeof(((FB_TOF *)0)->aReserved5) +
                    sizeof(((FB_TOF *)0)->aReserved6) +
                    sizeof(((FB_TOF *)0)->aReserved7) ==
-                   96,
+                   112,
                "FB_TOF has implicit padding");
 
 /* ---------------- constants (ABI §2, §5, §6; manual status and diag tables) ---------------- */

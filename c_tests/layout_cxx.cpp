@@ -109,14 +109,14 @@ static_assert(sizeof(FB_RS) == 104 && sizeof(FB_SR) == 104, "sizeof FB_RS / FB_S
 
 static_assert(offsetof(FB_TON, bTonIn1) == 8, "FB_TON.bTonIn1");
 static_assert(offsetof(FB_TON, bTonOut) == 32 + 1, "FB_TON.bTonOut");
-static_assert(sizeof(FB_TON) == 96, "sizeof FB_TON");
+static_assert(sizeof(FB_TON) == 112, "sizeof FB_TON");
 static_assert(offsetof(FB_TON2, bEnable) == 9, "FB_TON2.bEnable");
 static_assert(offsetof(FB_TON2, dwOptions) == 32, "FB_TON2.dwOptions");
 static_assert(offsetof(FB_TON2, bTonOut) == 40 + 1, "FB_TON2.bTonOut");
-static_assert(sizeof(FB_TON2) == 104, "sizeof FB_TON2");
+static_assert(sizeof(FB_TON2) == 120, "sizeof FB_TON2");
 static_assert(offsetof(FB_TOF, bTofIn1) == 8, "FB_TOF.bTofIn1");
 static_assert(offsetof(FB_TOF, bTofOut) == 32 + 1, "FB_TOF.bTofOut");
-static_assert(sizeof(FB_TOF) == 96, "sizeof FB_TOF");
+static_assert(sizeof(FB_TOF) == 112, "sizeof FB_TOF");
 
 int main()
 {

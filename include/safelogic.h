@@ -2127,17 +2127,26 @@ typedef struct SL_PRIVATE_HEADER {
 #define SL_PRIVATE_HEADER_ZERO (SL_PRIVATE_HEADER){ .wMagic = 0, .wAux = 0, .nState = 0, .nFlags = 0, .wDiag = 0, .wParamCrc = 0, .wAuxCheck = 0, .dwCtrlCheck = 0, .tLast = 0, .tPhase = 0, .nActive = 0, .nNegated = 0, .wOptions = 0 }
 
 /*
- Private state of FB_TON, FB_TON2 and FB_TOF (48 bytes). Never written by the user.
+ Private state of FB_TON, FB_TON2 and FB_TOF (64 bytes). Never written by the user.
 
  Unlike the guard blocks, the timer start carries a complement copy: for TON the timer
  decides when the output switches ON, so a corrupted start value must not go unnoticed
  (docs/semantics.md T9). The TON2 stored elapsed time has one as well.
+
+ The latched parameters are kept full width in the order of the live fields (`tDelay`,
+ `nTimeBase`, `wInputActive` | `wInputNegated`, reserved, `dwOptions`), so that the fast
+ path compares them as two 64-bit words (docs/performance.md); the header's `nActive`,
+ `nNegated` and `wOptions` are not used by this family and stay 0.
  */
 typedef struct SL_TIMER_PRIVATE {
   /*
    Common head; `tPhase` is the timer start.
    */
   struct SL_PRIVATE_HEADER stHeader;
+  /*
+   Complement of `stHeader.tPhase`.
+   */
+  uint32_t tPhaseCheck;
   /*
    Latched `tDelay` in ms.
    */
@@ -2147,13 +2156,21 @@ typedef struct SL_TIMER_PRIVATE {
    */
   uint16_t wTimeBase;
   /*
-   Fast-path key and its complement (`prim::envelope`).
+   Latched `wInputActive`.
    */
-  uint8_t anSteady[2];
+  uint16_t wInputActive;
   /*
-   Complement of `stHeader.tPhase`.
+   Latched `wInputNegated`.
    */
-  uint32_t tPhaseCheck;
+  uint16_t wInputNegated;
+  /*
+   Reserved, 0 (covered by the CRC and the compare with the live parameters).
+   */
+  uint16_t wReserved;
+  /*
+   Latched `dwOptions` (FB_TON2; 0 for the others).
+   */
+  uint32_t dwOptions;
   /*
    FB_TON2: the stored elapsed time in ms (the manual's "ExpiredTime" in the FRAM).
    */
@@ -2162,11 +2179,15 @@ typedef struct SL_TIMER_PRIVATE {
    Complement of `tElapsed`.
    */
   uint32_t tElapsedCheck;
+  /*
+   Fast-path key and its check word (`prim::envelope`).
+   */
+  uint32_t adwSteady[2];
 } SL_TIMER_PRIVATE;
 
 /*
  FB TON2 instance (ABI §3, §9). Inputs at the manual's offsets (§4.13.2), output base 40.
- Size: 104 bytes.
+ Size: 120 bytes.
  */
 typedef struct FB_TON2 {
   /*
@@ -2258,7 +2279,7 @@ typedef struct FB_TON2 {
    */
   uint8_t aReserved8[4];
   /*
-   Offset 56. Private state, 48 bytes: never write it.
+   Offset 56. Private state, 64 bytes: never write it.
    */
   struct SL_TIMER_PRIVATE stPrivate;
 } FB_TON2;
@@ -4484,7 +4505,7 @@ typedef struct FB_SR {
 
 /*
  FB TON instance (ABI §3, §9). Input at the manual's offset (§4.12.2), output base 32.
- Size: 96 bytes.
+ Size: 112 bytes.
  */
 typedef struct FB_TON {
   /*
@@ -4563,14 +4584,14 @@ typedef struct FB_TON {
    */
   uint8_t aReserved7[4];
   /*
-   Offset 48. Private state, 48 bytes: never write it.
+   Offset 48. Private state, 64 bytes: never write it.
    */
   struct SL_TIMER_PRIVATE stPrivate;
 } FB_TON;
 
 /*
  FB TOF instance (ABI §3, §9). Input at the manual's offset (§4.14.2), output base 32.
- Size: 96 bytes.
+ Size: 112 bytes.
  */
 typedef struct FB_TOF {
   /*
@@ -4649,7 +4670,7 @@ typedef struct FB_TOF {
    */
   uint8_t aReserved7[4];
   /*
-   Offset 48. Private state, 48 bytes: never write it.
+   Offset 48. Private state, 64 bytes: never write it.
    */
   struct SL_TIMER_PRIVATE stPrivate;
 } FB_TOF;
@@ -13181,13 +13202,17 @@ SL_STATIC_ASSERT(offsetof(SL_PRIVATE_HEADER, nNegated) == 25, "offset of SL_PRIV
 SL_STATIC_ASSERT(offsetof(SL_PRIVATE_HEADER, wOptions) == 26, "offset of SL_PRIVATE_HEADER.wOptions");
 SL_STATIC_ASSERT(sizeof(SL_PRIVATE_HEADER) == 28, "size of SL_PRIVATE_HEADER");
 SL_STATIC_ASSERT(offsetof(SL_TIMER_PRIVATE, stHeader) == 0, "offset of SL_TIMER_PRIVATE.stHeader");
-SL_STATIC_ASSERT(offsetof(SL_TIMER_PRIVATE, dwDelay) == 28, "offset of SL_TIMER_PRIVATE.dwDelay");
-SL_STATIC_ASSERT(offsetof(SL_TIMER_PRIVATE, wTimeBase) == 32, "offset of SL_TIMER_PRIVATE.wTimeBase");
-SL_STATIC_ASSERT(offsetof(SL_TIMER_PRIVATE, anSteady) == 34, "offset of SL_TIMER_PRIVATE.anSteady");
-SL_STATIC_ASSERT(offsetof(SL_TIMER_PRIVATE, tPhaseCheck) == 36, "offset of SL_TIMER_PRIVATE.tPhaseCheck");
-SL_STATIC_ASSERT(offsetof(SL_TIMER_PRIVATE, tElapsed) == 40, "offset of SL_TIMER_PRIVATE.tElapsed");
-SL_STATIC_ASSERT(offsetof(SL_TIMER_PRIVATE, tElapsedCheck) == 44, "offset of SL_TIMER_PRIVATE.tElapsedCheck");
-SL_STATIC_ASSERT(sizeof(SL_TIMER_PRIVATE) == 48, "size of SL_TIMER_PRIVATE");
+SL_STATIC_ASSERT(offsetof(SL_TIMER_PRIVATE, tPhaseCheck) == 28, "offset of SL_TIMER_PRIVATE.tPhaseCheck");
+SL_STATIC_ASSERT(offsetof(SL_TIMER_PRIVATE, dwDelay) == 32, "offset of SL_TIMER_PRIVATE.dwDelay");
+SL_STATIC_ASSERT(offsetof(SL_TIMER_PRIVATE, wTimeBase) == 36, "offset of SL_TIMER_PRIVATE.wTimeBase");
+SL_STATIC_ASSERT(offsetof(SL_TIMER_PRIVATE, wInputActive) == 38, "offset of SL_TIMER_PRIVATE.wInputActive");
+SL_STATIC_ASSERT(offsetof(SL_TIMER_PRIVATE, wInputNegated) == 40, "offset of SL_TIMER_PRIVATE.wInputNegated");
+SL_STATIC_ASSERT(offsetof(SL_TIMER_PRIVATE, wReserved) == 42, "offset of SL_TIMER_PRIVATE.wReserved");
+SL_STATIC_ASSERT(offsetof(SL_TIMER_PRIVATE, dwOptions) == 44, "offset of SL_TIMER_PRIVATE.dwOptions");
+SL_STATIC_ASSERT(offsetof(SL_TIMER_PRIVATE, tElapsed) == 48, "offset of SL_TIMER_PRIVATE.tElapsed");
+SL_STATIC_ASSERT(offsetof(SL_TIMER_PRIVATE, tElapsedCheck) == 52, "offset of SL_TIMER_PRIVATE.tElapsedCheck");
+SL_STATIC_ASSERT(offsetof(SL_TIMER_PRIVATE, adwSteady) == 56, "offset of SL_TIMER_PRIVATE.adwSteady");
+SL_STATIC_ASSERT(sizeof(SL_TIMER_PRIVATE) == 64, "size of SL_TIMER_PRIVATE");
 SL_STATIC_ASSERT(offsetof(FB_TON2, aReserved0) == 0, "offset of FB_TON2.aReserved0");
 SL_STATIC_ASSERT(offsetof(FB_TON2, bTonIn1) == 8, "offset of FB_TON2.bTonIn1");
 SL_STATIC_ASSERT(offsetof(FB_TON2, bEnable) == 9, "offset of FB_TON2.bEnable");
@@ -13210,7 +13235,7 @@ SL_STATIC_ASSERT(offsetof(FB_TON2, aReserved7) == 49, "offset of FB_TON2.aReserv
 SL_STATIC_ASSERT(offsetof(FB_TON2, nDiag) == 50, "offset of FB_TON2.nDiag");
 SL_STATIC_ASSERT(offsetof(FB_TON2, aReserved8) == 52, "offset of FB_TON2.aReserved8");
 SL_STATIC_ASSERT(offsetof(FB_TON2, stPrivate) == 56, "offset of FB_TON2.stPrivate");
-SL_STATIC_ASSERT(sizeof(FB_TON2) == 104, "size of FB_TON2");
+SL_STATIC_ASSERT(sizeof(FB_TON2) == 120, "size of FB_TON2");
 SL_STATIC_ASSERT(offsetof(SL_GROUP_PRIVATE, dwCtrl) == 0, "offset of SL_GROUP_PRIVATE.dwCtrl");
 SL_STATIC_ASSERT(offsetof(SL_GROUP_PRIVATE, dwDiag) == 4, "offset of SL_GROUP_PRIVATE.dwDiag");
 SL_STATIC_ASSERT(offsetof(SL_GROUP_PRIVATE, dwMembers) == 8, "offset of SL_GROUP_PRIVATE.dwMembers");
@@ -13753,7 +13778,7 @@ SL_STATIC_ASSERT(offsetof(FB_TON, aReserved6) == 41, "offset of FB_TON.aReserved
 SL_STATIC_ASSERT(offsetof(FB_TON, nDiag) == 42, "offset of FB_TON.nDiag");
 SL_STATIC_ASSERT(offsetof(FB_TON, aReserved7) == 44, "offset of FB_TON.aReserved7");
 SL_STATIC_ASSERT(offsetof(FB_TON, stPrivate) == 48, "offset of FB_TON.stPrivate");
-SL_STATIC_ASSERT(sizeof(FB_TON) == 96, "size of FB_TON");
+SL_STATIC_ASSERT(sizeof(FB_TON) == 112, "size of FB_TON");
 SL_STATIC_ASSERT(offsetof(FB_TOF, aReserved0) == 0, "offset of FB_TOF.aReserved0");
 SL_STATIC_ASSERT(offsetof(FB_TOF, bTofIn1) == 8, "offset of FB_TOF.bTofIn1");
 SL_STATIC_ASSERT(offsetof(FB_TOF, aReserved1) == 9, "offset of FB_TOF.aReserved1");
@@ -13773,7 +13798,7 @@ SL_STATIC_ASSERT(offsetof(FB_TOF, aReserved6) == 41, "offset of FB_TOF.aReserved
 SL_STATIC_ASSERT(offsetof(FB_TOF, nDiag) == 42, "offset of FB_TOF.nDiag");
 SL_STATIC_ASSERT(offsetof(FB_TOF, aReserved7) == 44, "offset of FB_TOF.aReserved7");
 SL_STATIC_ASSERT(offsetof(FB_TOF, stPrivate) == 48, "offset of FB_TOF.stPrivate");
-SL_STATIC_ASSERT(sizeof(FB_TOF) == 96, "size of FB_TOF");
+SL_STATIC_ASSERT(sizeof(FB_TOF) == 112, "size of FB_TOF");
 SL_STATIC_ASSERT(offsetof(SL_ARITH_PRIVATE, stHeader) == 0, "offset of SL_ARITH_PRIVATE.stHeader");
 SL_STATIC_ASSERT(offsetof(SL_ARITH_PRIVATE, wActive) == 28, "offset of SL_ARITH_PRIVATE.wActive");
 SL_STATIC_ASSERT(offsetof(SL_ARITH_PRIVATE, wRounding) == 30, "offset of SL_ARITH_PRIVATE.wRounding");

@@ -23,11 +23,8 @@ macro_rules! ffi_boundary {
 
 /// Turns an instance pointer into a reference, or the status code that refuses it.
 fn instance<'a, B>(p: *mut B) -> Result<&'a mut B, i32> {
-    if p.is_null() {
-        return Err(SL_E_NULL);
-    }
-    if (p as usize) % core::mem::align_of::<B>() != 0 {
-        return Err(SL_E_ALIGNMENT);
+    if p.is_null() || !p.is_aligned() {
+        return Err(refusal(p as usize));
     }
     // SAFETY: `p` is non-null and aligned; the caller guarantees (ABI §4) that it points to
     // a live instance of `B` that nothing else accesses during the call. `B` holds only
@@ -35,14 +32,23 @@ fn instance<'a, B>(p: *mut B) -> Result<&'a mut B, i32> {
     Ok(unsafe { &mut *p })
 }
 
+/// The status code of a refused instance pointer (NULL or misaligned): out of line, so the
+/// accepted pointer costs one test of each kind and no code for the choice.
+#[cold]
+#[inline(never)]
+fn refusal(addr: usize) -> i32 {
+    if addr == 0 {
+        SL_E_NULL
+    } else {
+        SL_E_ALIGNMENT
+    }
+}
+
 /// Turns a read-only instance pointer into a shared reference, or the status code that
 /// refuses it (NULL, misaligned).
 fn instance_ref<'a, B>(p: *const B) -> Result<&'a B, i32> {
-    if p.is_null() {
-        return Err(SL_E_NULL);
-    }
-    if (p as usize) % core::mem::align_of::<B>() != 0 {
-        return Err(SL_E_ALIGNMENT);
+    if p.is_null() || !p.is_aligned() {
+        return Err(refusal(p as usize));
     }
     // SAFETY: `p` is non-null and aligned; the caller guarantees (ABI §4) that it points to
     // a live instance of `B` that nobody writes during the call. `B` holds only integer

@@ -497,6 +497,45 @@ fn corruption_is_detected() {
     assert_eq!(st(&f), (SL_STATE_ERROR, 0));
 }
 
+/// C3: every bit of the latched copy (kept full width in the order of the live fields,
+/// with the reserved word and the options between them) is checked: a flipped bit is
+/// SL_E_CORRUPT, not a parameter change, whether the block is timing (DELAYIN) or steady in
+/// RUN (the call the fast path would serve).
+#[test]
+fn every_bit_of_the_latched_copy_is_checked() {
+    type Flip = fn(&mut SL_TIMER_PRIVATE, u32);
+    let fields: [(&str, u32, Flip); 6] = [
+        ("dwDelay", 32, |p, b| p.dwDelay ^= 1 << b),
+        ("wTimeBase", 16, |p, b| p.wTimeBase ^= 1 << b),
+        ("wInputActive", 16, |p, b| p.wInputActive ^= 1 << b),
+        ("wInputNegated", 16, |p, b| p.wInputNegated ^= 1 << b),
+        ("wReserved", 16, |p, b| p.wReserved ^= 1 << b),
+        ("dwOptions", 32, |p, b| p.dwOptions ^= 1 << b),
+    ];
+    for (name, bits, flip) in fields {
+        for bit in 0..bits {
+            for steady in [false, true] {
+                let mut f = running(100, 0, 0);
+                f.bTonIn1 = 1;
+                f.cycle(1);
+                if steady {
+                    f.cycle(101);
+                    f.cycle(102);
+                    assert_eq!(st(&f), (SL_STATE_RUN, 1));
+                }
+                flip(&mut f.stPrivate, bit);
+                assert_eq!(
+                    f.cycle(103),
+                    SL_E_CORRUPT,
+                    "{name} bit {bit}, steady {steady}"
+                );
+                assert_eq!(st(&f), (SL_STATE_ERROR, 0));
+                assert_ne!(f.nDiag & SL_DIAG_CORRUPT, 0);
+            }
+        }
+    }
+}
+
 /// C2: a never-initialised (zeroed) instance is initialised by its first cycle.
 #[test]
 fn zeroed_instance_initialises_itself() {

@@ -25,12 +25,16 @@ int main(void)
     printf("F SL_PRIVATE_HEADER wOptions %zu %zu\n", offsetof(SL_PRIVATE_HEADER, wOptions), sizeof(((SL_PRIVATE_HEADER *)0)->wOptions));
     printf("S SL_TIMER_PRIVATE %zu\n", sizeof(SL_TIMER_PRIVATE));
     printf("F SL_TIMER_PRIVATE stHeader %zu %zu\n", offsetof(SL_TIMER_PRIVATE, stHeader), sizeof(((SL_TIMER_PRIVATE *)0)->stHeader));
+    printf("F SL_TIMER_PRIVATE tPhaseCheck %zu %zu\n", offsetof(SL_TIMER_PRIVATE, tPhaseCheck), sizeof(((SL_TIMER_PRIVATE *)0)->tPhaseCheck));
     printf("F SL_TIMER_PRIVATE dwDelay %zu %zu\n", offsetof(SL_TIMER_PRIVATE, dwDelay), sizeof(((SL_TIMER_PRIVATE *)0)->dwDelay));
     printf("F SL_TIMER_PRIVATE wTimeBase %zu %zu\n", offsetof(SL_TIMER_PRIVATE, wTimeBase), sizeof(((SL_TIMER_PRIVATE *)0)->wTimeBase));
-    printf("F SL_TIMER_PRIVATE anSteady %zu %zu\n", offsetof(SL_TIMER_PRIVATE, anSteady), sizeof(((SL_TIMER_PRIVATE *)0)->anSteady));
-    printf("F SL_TIMER_PRIVATE tPhaseCheck %zu %zu\n", offsetof(SL_TIMER_PRIVATE, tPhaseCheck), sizeof(((SL_TIMER_PRIVATE *)0)->tPhaseCheck));
+    printf("F SL_TIMER_PRIVATE wInputActive %zu %zu\n", offsetof(SL_TIMER_PRIVATE, wInputActive), sizeof(((SL_TIMER_PRIVATE *)0)->wInputActive));
+    printf("F SL_TIMER_PRIVATE wInputNegated %zu %zu\n", offsetof(SL_TIMER_PRIVATE, wInputNegated), sizeof(((SL_TIMER_PRIVATE *)0)->wInputNegated));
+    printf("F SL_TIMER_PRIVATE wReserved %zu %zu\n", offsetof(SL_TIMER_PRIVATE, wReserved), sizeof(((SL_TIMER_PRIVATE *)0)->wReserved));
+    printf("F SL_TIMER_PRIVATE dwOptions %zu %zu\n", offsetof(SL_TIMER_PRIVATE, dwOptions), sizeof(((SL_TIMER_PRIVATE *)0)->dwOptions));
     printf("F SL_TIMER_PRIVATE tElapsed %zu %zu\n", offsetof(SL_TIMER_PRIVATE, tElapsed), sizeof(((SL_TIMER_PRIVATE *)0)->tElapsed));
     printf("F SL_TIMER_PRIVATE tElapsedCheck %zu %zu\n", offsetof(SL_TIMER_PRIVATE, tElapsedCheck), sizeof(((SL_TIMER_PRIVATE *)0)->tElapsedCheck));
+    printf("F SL_TIMER_PRIVATE adwSteady %zu %zu\n", offsetof(SL_TIMER_PRIVATE, adwSteady), sizeof(((SL_TIMER_PRIVATE *)0)->adwSteady));
     printf("S FB_TON2 %zu\n", sizeof(FB_TON2));
     printf("F FB_TON2 aReserved0 %zu %zu\n", offsetof(FB_TON2, aReserved0), sizeof(((FB_TON2 *)0)->aReserved0));
     printf("F FB_TON2 bTonIn1 %zu %zu\n", offsetof(FB_TON2, bTonIn1), sizeof(((FB_TON2 *)0)->bTonIn1));

@@ -58,46 +58,63 @@ pub const SL_TIMER_STEPS_MAX: u32 = 60_000;
 /// Largest timer delay in ms (60,000 s; 60,000 steps of 1000 ms).
 pub const SL_TIMER_DELAY_MAX: u32 = 60_000_000;
 
-/// Private state of FB_TON, FB_TON2 and FB_TOF (48 bytes). Never written by the user.
+/// Private state of FB_TON, FB_TON2 and FB_TOF (64 bytes). Never written by the user.
 ///
 /// Unlike the guard blocks, the timer start carries a complement copy: for TON the timer
 /// decides when the output switches ON, so a corrupted start value must not go unnoticed
 /// (docs/semantics.md T9). The TON2 stored elapsed time has one as well.
+///
+/// The latched parameters are kept full width in the order of the live fields (`tDelay`,
+/// `nTimeBase`, `wInputActive` | `wInputNegated`, reserved, `dwOptions`), so that the fast
+/// path compares them as two 64-bit words (docs/performance.md); the header's `nActive`,
+/// `nNegated` and `wOptions` are not used by this family and stay 0.
 #[repr(C)]
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 #[allow(non_snake_case, non_camel_case_types)]
 pub struct SL_TIMER_PRIVATE {
     /// Common head; `tPhase` is the timer start.
     pub stHeader: SL_PRIVATE_HEADER,
+    /// Complement of `stHeader.tPhase`.
+    pub tPhaseCheck: u32,
     /// Latched `tDelay` in ms.
     pub dwDelay: u32,
     /// Latched `nTimeBase` as written (0 = automatic).
     pub wTimeBase: u16,
-    /// Fast-path key and its complement (`prim::envelope`).
-    pub anSteady: [u8; 2],
-    /// Complement of `stHeader.tPhase`.
-    pub tPhaseCheck: u32,
+    /// Latched `wInputActive`.
+    pub wInputActive: u16,
+    /// Latched `wInputNegated`.
+    pub wInputNegated: u16,
+    /// Reserved, 0 (covered by the CRC and the compare with the live parameters).
+    pub wReserved: u16,
+    /// Latched `dwOptions` (FB_TON2; 0 for the others).
+    pub dwOptions: u32,
     /// FB_TON2: the stored elapsed time in ms (the manual's "ExpiredTime" in the FRAM).
     pub tElapsed: u32,
     /// Complement of `tElapsed`.
     pub tElapsedCheck: u32,
+    /// Fast-path key and its check word (`prim::envelope`).
+    pub adwSteady: [u32; 2],
 }
 
-const _: () = assert!(core::mem::size_of::<SL_TIMER_PRIVATE>() == 48);
+const _: () = assert!(core::mem::size_of::<SL_TIMER_PRIVATE>() == 64);
 
-crate::prim::envelope::steady_private!(SL_TIMER_PRIVATE, anSteady, u8);
+crate::prim::envelope::steady_private!(SL_TIMER_PRIVATE, adwSteady, u32);
 
 /// A fresh private area: everything zero except the complement copies.
 impl Default for SL_TIMER_PRIVATE {
     fn default() -> Self {
         Self {
             stHeader: SL_PRIVATE_HEADER::default(),
+            tPhaseCheck: !0,
             dwDelay: 0,
             wTimeBase: 0,
-            anSteady: [0; 2],
-            tPhaseCheck: !0,
+            wInputActive: 0,
+            wInputNegated: 0,
+            wReserved: 0,
+            dwOptions: 0,
             tElapsed: 0,
             tElapsedCheck: !0,
+            adwSteady: [0; 2],
         }
     }
 }
@@ -126,7 +143,8 @@ impl SL_TIMER_PRIVATE {
     /// The timer start and the stored elapsed time agree with their complements.
     #[inline]
     pub(crate) fn timers_intact(&self) -> bool {
-        self.tPhaseCheck == !self.stHeader.tPhase && self.elapsed_intact()
+        // Both differences are all ones exactly when their AND is.
+        (self.tPhaseCheck ^ self.stHeader.tPhase) & (self.tElapsedCheck ^ self.tElapsed) == !0
     }
 
     /// After a failed complement check: a consistent timer start and no stored elapsed time
@@ -169,13 +187,39 @@ pub const fn delay_valid(delay: u32, base: u16) -> bool {
 }
 
 /// Timer parameters as the user wrote them.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, Default, Eq)]
 pub struct TimerParams {
     pub delay: u32,
     pub time_base: u16,
     pub active: u16,
     pub negated: u16,
+    /// The reserved bytes between `negated` and `options` in the latched copy (0 in the
+    /// live parameters): a corrupted one is a corruption, not a parameter change.
+    pub reserved: u16,
     pub options: u32,
+}
+
+impl TimerParams {
+    /// The parameters as two words, in the order of the live fields and of the latched copy
+    /// (every bit of every parameter in exactly one place).
+    #[inline(always)]
+    fn words(&self) -> [u64; 2] {
+        [
+            u64::from(self.delay) | u64::from(self.time_base) << 32 | u64::from(self.active) << 48,
+            u64::from(self.negated)
+                | u64::from(self.reserved) << 16
+                | u64::from(self.options) << 32,
+        ]
+    }
+}
+
+/// Equal when every parameter is: compared as the two words of `TimerParams::words`, which
+/// the compiler reads whole from the live fields and from the latched copy.
+impl PartialEq for TimerParams {
+    #[inline(always)]
+    fn eq(&self, other: &Self) -> bool {
+        self.words() == other.words()
+    }
 }
 
 /// Decoded inputs of one cycle.
@@ -236,16 +280,24 @@ pub(crate) const fn output<T: TimerBlock>(p: Phase) -> bool {
     matches!(p, Phase::Expired) != T::OFF_DELAY
 }
 
-/// CRC of a timer's latched parameters (header masks, delay, timebase).
+/// CRC of a timer's latched parameters (every bit of them; the header's masks are unused).
 pub(crate) fn timer_crc(magic: u16, p: &SL_TIMER_PRIVATE) -> u16 {
-    let h = &p.stHeader;
-    let d = p.dwDelay;
+    let (d, o) = (p.dwDelay, p.dwOptions);
     param_crc(
         magic,
-        h.nActive,
-        h.nNegated,
-        h.wOptions,
-        &[d as u16, (d >> 16) as u16, p.wTimeBase],
+        0,
+        0,
+        0,
+        &[
+            d as u16,
+            (d >> 16) as u16,
+            p.wTimeBase,
+            p.wInputActive,
+            p.wInputNegated,
+            p.wReserved,
+            o as u16,
+            (o >> 16) as u16,
+        ],
     )
 }
 
@@ -280,6 +332,7 @@ macro_rules! timer_block {
                     time_base: self.nTimeBase,
                     active: self.wInputActive,
                     negated: self.wInputNegated,
+                    reserved: 0,
                     options,
                 }
             }
@@ -315,9 +368,10 @@ macro_rules! timer_block {
                 TimerParams {
                     delay: p.dwDelay,
                     time_base: p.wTimeBase,
-                    active: u16::from(p.stHeader.nActive),
-                    negated: u16::from(p.stHeader.nNegated),
-                    options: u32::from(p.stHeader.wOptions),
+                    active: p.wInputActive,
+                    negated: p.wInputNegated,
+                    reserved: p.wReserved,
+                    options: p.dwOptions,
                 }
             }
 
@@ -334,10 +388,10 @@ macro_rules! timer_block {
                 let q = self.private_mut();
                 q.dwDelay = p.delay;
                 q.wTimeBase = p.time_base;
-                // Narrowing is exact for valid parameters; an invalid set never runs.
-                q.stHeader.nActive = p.active as u8;
-                q.stHeader.nNegated = p.negated as u8;
-                q.stHeader.wOptions = p.options as u16;
+                q.wInputActive = p.active;
+                q.wInputNegated = p.negated;
+                q.wReserved = p.reserved;
+                q.dwOptions = p.options;
             }
 
             fn latched_crc(&self) -> u16 {
@@ -346,16 +400,19 @@ macro_rules! timer_block {
 
             fn decode(&mut self) -> (TimerIn, bool) {
                 let (raw_in, raw_enable) = self.raw();
-                let h = &self.private().stHeader;
+                let p = self.private();
+                // Narrowing is exact for valid parameters (bit 0 only); an invalid set never
+                // runs.
+                let (active, negated) = (p.wInputActive as u8, p.wInputNegated as u8);
                 let packed = bools::pack([raw_in]);
-                let input = bools::logical(packed, h.nActive, h.nNegated) & 1 != 0;
+                let input = bools::logical(packed, active, negated) & 1 != 0;
                 // Enable is read only with "Starts with remaining time" (T10).
-                let with_remaining = u32::from(h.wOptions) & SL_OPT_TON2_REMAINING_TIME != 0;
+                let with_remaining = p.dwOptions & SL_OPT_TON2_REMAINING_TIME != 0;
                 let inp = TimerIn {
                     input,
                     remaining: with_remaining && bools::is_true(raw_enable),
                 };
-                let invalid = packed.invalid & h.nActive != 0 || (with_remaining && raw_enable > 1);
+                let invalid = packed.invalid & active != 0 || (with_remaining && raw_enable > 1);
                 (inp, invalid)
             }
 
@@ -437,16 +494,17 @@ macro_rules! timer_block {
         }
 
         impl $crate::prim::envelope::Steady for $t {
-            /// `None` as well while a timer value fails its complement: the full cycle
-            /// reports it.
+            /// The four bytes the cycle reads (the input, Enable or 0, bRun, bErrAck) as they
+            /// are: equal keys mean equal bytes, so a byte that is not a valid BOOL needs no
+            /// test of its own. `None` while a timer value fails its complement: the full
+            /// cycle reports it.
             #[inline(always)]
-            fn steady_key(&self) -> Option<u8> {
+            fn steady_key(&self) -> Option<u32> {
                 if !self.private().timers_intact() {
                     return None;
                 }
                 let (input, enable) = self.raw();
-                // Four bits: exact in a byte.
-                bools::key([input, enable, self.run_raw(), self.errack_raw()]).map(|k| k as u8)
+                Some(u32::from_le_bytes([input, enable, self.run_raw(), self.errack_raw()]))
             }
 
             /// The timer does not run.

@@ -14,7 +14,7 @@ use crate::types::*;
 pub const SL_TYPE_TOF: u16 = 15;
 
 /// FB TOF instance (ABI §3, §9). Input at the manual's offset (§4.14.2), output base 32.
-/// Size: 96 bytes.
+/// Size: 112 bytes.
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 #[allow(non_snake_case, non_camel_case_types)]
@@ -58,7 +58,7 @@ pub struct FB_TOF {
     pub nDiag: u16,
     /// Offset 44. Reserved.
     pub aReserved7: [u8; 4],
-    /// Offset 48. Private state, 48 bytes: never write it.
+    /// Offset 48. Private state, 64 bytes: never write it.
     pub stPrivate: SL_TIMER_PRIVATE,
 }
 

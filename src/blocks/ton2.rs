@@ -23,7 +23,7 @@ pub const SL_STATE_TON2_DELAYIN: u8 = 9;
 pub const SL_TYPE_TON2: u16 = 14;
 
 /// FB TON2 instance (ABI §3, §9). Inputs at the manual's offsets (§4.13.2), output base 40.
-/// Size: 104 bytes.
+/// Size: 120 bytes.
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 #[allow(non_snake_case, non_camel_case_types)]
@@ -74,7 +74,7 @@ pub struct FB_TON2 {
     pub nDiag: u16,
     /// Offset 52. Reserved.
     pub aReserved8: [u8; 4],
-    /// Offset 56. Private state, 48 bytes: never write it.
+    /// Offset 56. Private state, 64 bytes: never write it.
     pub stPrivate: SL_TIMER_PRIVATE,
 }
 

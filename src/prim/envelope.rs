@@ -5,11 +5,11 @@
 //! The steady-state fast path (docs/performance.md): a block whose cycle reads only BOOL
 //! bytes and parameters keeps, beside its private state, the key of the bytes read by the
 //! last call that changed nothing (a fixed point of the full cycle in a state without a
-//! running timer): a window over all of them, or the BOOL bytes gathered into bits. A call
-//! with the same key, an intact private header, a clock that did not go backwards and
-//! parameters equal to the latched ones (part of a window key) would compute the same
-//! again: it only advances `tLast` and rewrites the outputs. Every other call runs the full
-//! cycle and records whether it was such a fixed point.
+//! running timer): a window over all of them, the bytes themselves side by side (the
+//! timers), or the BOOL bytes gathered into bits. A call with the same key, an intact
+//! private header, a clock that did not go backwards and parameters equal to the latched
+//! ones would compute the same again: it only advances `tLast` and rewrites the outputs.
+//! Every other call runs the full cycle and records whether it was such a fixed point.
 
 use super::bools::{edge, is_false, is_true};
 use super::header::{F_CFG_INVALID, F_ERRACK_PREV, F_RESET_HELD, F_TIME_VALID, SL_PRIVATE_HEADER};
@@ -111,7 +111,8 @@ pub trait SteadyKey: Copy + PartialEq {
 /// The timed slot's pattern ([`SteadyKey::timed`]).
 pub const TIMED: u64 = 0x5A5A_5A5A_5A5A_5A5A;
 
-/// A gathered key (`bools::key`) of a byte or a word.
+/// A key in one word: the BOOL bytes gathered into bits (`bools::key`, u16) or the bytes
+/// themselves side by side (u32).
 macro_rules! scalar_key {
     ($($w:ty),+) => {$(
         impl SteadyKey for $w {
@@ -126,7 +127,7 @@ macro_rules! scalar_key {
         }
     )+};
 }
-scalar_key!(u8, u16);
+scalar_key!(u16, u32);
 
 impl<const N: usize> SteadyKey for [u64; N] {
     #[inline(always)]
@@ -151,7 +152,7 @@ pub trait SteadyPrivate: Copy + PartialEq {
 }
 
 /// Implements [`SteadyPrivate`] for a private struct whose slot is `$slot`: `[$w; 2]` for a
-/// scalar key (key, check), `[u32; 4N]` for a window of N words (key words, then check
+/// key in one word (key, check), `[u32; 4N]` for a window of N words (key words, then check
 /// words, each as two halves, low first: the C and PLC types have no 64-bit integer).
 macro_rules! steady_private {
     ($p:ty, $slot:ident, $w:ty) => {
@@ -161,9 +162,10 @@ macro_rules! steady_private {
             fn head_mut(&mut self) -> &mut $crate::prim::header::SL_PRIVATE_HEADER {
                 &mut self.stHeader
             }
+            /// Read as two loads (a copy of the array would be one wide load, then split).
             #[inline(always)]
             fn slot(&self) -> [$w; 2] {
-                self.$slot
+                [self.$slot[0], self.$slot[1]]
             }
             #[inline(always)]
             fn set_slot(&mut self, slot: Option<[$w; 2]>) {
@@ -394,11 +396,8 @@ pub fn fast<B: Steady>(fb: &mut B, now: u32) -> bool {
     // A key stored in a timing state has another check word: a call that finds the quiet
     // one never reaches the timing test, so the quiet states pay nothing for it.
     let served = stored == key
-        && if check == key.complement() {
-            unchanged(fb, now)
-        } else {
-            check == key.timed() && unchanged(fb, now) && fb.timing_quiet(now)
-        };
+        && (check == key.complement() || check == key.timed() && fb.timing_quiet(now))
+        && unchanged(fb, now);
     if served {
         fb.header_mut().tLast = now;
         fb.write_outputs();

@@ -16,7 +16,7 @@ use crc::{Crc, CRC_16_IBM_3740};
 /// a valid value of this type; whether it is a *consistent* one is what [`Self::intact`]
 /// decides. Never written by the user.
 #[repr(C)]
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, Default, Eq)]
 #[allow(non_snake_case, non_camel_case_types)]
 pub struct SL_PRIVATE_HEADER {
     /// Block type tag; 0 in a never-initialised instance.
@@ -68,15 +68,44 @@ pub(crate) const EDM_PENDING_SHIFT: u32 = 3;
 static CRC16: Crc<u16> = Crc::<u16>::new(&CRC_16_IBM_3740);
 
 /// CRC-16 over a block's latched parameter words, seeded with its magic.
+///
+/// The bytes go to the digest in runs of up to 64 (one `update` per run: each call has a
+/// fixed cost several times that of a byte), in the same order as one word at a time.
 pub fn param_crc(magic: u16, active: u8, negated: u8, options: u16, times: &[u16]) -> u16 {
     let mut d = CRC16.digest();
-    d.update(&magic.to_le_bytes());
-    d.update(&[active, negated]);
-    d.update(&options.to_le_bytes());
-    for t in times {
-        d.update(&t.to_le_bytes());
+    let ([m0, m1], [o0, o1]) = (magic.to_le_bytes(), options.to_le_bytes());
+    d.update(&[m0, m1, active, negated, o0, o1]);
+    for run in times.chunks(32) {
+        let mut bytes = [0u8; 64];
+        for (b, t) in bytes.chunks_exact_mut(2).zip(run) {
+            b.copy_from_slice(&t.to_le_bytes());
+        }
+        d.update(bytes.get(..2 * run.len()).unwrap_or(&bytes));
     }
     d.finalize()
+}
+
+/// Equal when every field is, as the derived comparison would say, but always inline: the
+/// fixed-point test of the full cycle compares whole private states, and the compiler merges
+/// the field compares of the header with those of the fields after it only when it sees
+/// them all (an out-of-line header compare made a TON full cycle 2.5 ns slower).
+impl PartialEq for SL_PRIVATE_HEADER {
+    #[inline(always)]
+    fn eq(&self, o: &Self) -> bool {
+        self.wMagic == o.wMagic
+            && self.wAux == o.wAux
+            && self.nState == o.nState
+            && self.nFlags == o.nFlags
+            && self.wDiag == o.wDiag
+            && self.wParamCrc == o.wParamCrc
+            && self.wAuxCheck == o.wAuxCheck
+            && self.dwCtrlCheck == o.dwCtrlCheck
+            && self.tLast == o.tLast
+            && self.tPhase == o.tPhase
+            && self.nActive == o.nActive
+            && self.nNegated == o.nNegated
+            && self.wOptions == o.wOptions
+    }
 }
 
 impl SL_PRIVATE_HEADER {
@@ -180,5 +209,21 @@ mod tests {
         assert_ne!(base, param_crc(2, 3, 0, 4, &[10, 20]));
         assert_ne!(base, param_crc(1, 3, 0, 4, &[20, 10]));
         assert_ne!(base, param_crc(1, 3, 1, 4, &[10, 20]));
+    }
+
+    /// The CRC is that of the bytes magic, active, negated, options, then every word, all
+    /// little-endian, in one piece — for every length, across the 64-byte runs.
+    #[test]
+    fn crc_is_that_of_the_whole_byte_sequence() {
+        for len in 0..100u16 {
+            let words: Vec<u16> = (0..len).map(|i| i.wrapping_mul(0x9E37) ^ len).collect();
+            let mut bytes = vec![0x34, 0x12, 7, 1, 0xCD, 0xAB];
+            words.iter().for_each(|w| bytes.extend(w.to_le_bytes()));
+            assert_eq!(
+                param_crc(0x1234, 7, 1, 0xABCD, &words),
+                CRC16.checksum(&bytes),
+                "{len} words"
+            );
+        }
     }
 }
