@@ -565,6 +565,24 @@ fn zeroed_private_state_is_a_never_initialised_instance<B: Params>(fb: B) {
 }
 both!(zeroed_private_state_is_a_never_initialised_instance);
 
+/// ABI §3.6: only a private area of *all* zero bytes is a never-initialised instance. One
+/// non-zero byte anywhere in the common header of an otherwise zeroed area makes it a
+/// corrupted one (SL_E_CORRUPT, ERROR, diag bit 15), not a fresh start — whichever byte it is.
+fn one_non_zero_header_byte_is_corrupt_not_never_initialised<B: Params>(fb: B) {
+    let header = std::mem::size_of::<safelogic::prim::header::SL_PRIVATE_HEADER>();
+    for at in 0..header {
+        for value in [0x01u8, 0x80] {
+            let mut s = running(fb.clone());
+            s.fb.private_bytes().fill(0);
+            s.fb.private_bytes()[at] = value;
+            assert_eq!(s.adv(1), SL_E_CORRUPT, "header byte {at} = {value:#04x}");
+            expect(&s.fb, SL_STATE_ERROR);
+            assert_ne!(s.fb.diag() & SL_DIAG_CORRUPT, 0);
+        }
+    }
+}
+both!(one_non_zero_header_byte_is_corrupt_not_never_initialised);
+
 /// ABI §5 SL_E_CORRUPT "the private state failed its integrity check: ERROR (4), bError
 /// TRUE"; C3 "put into ERROR with diag bit 15"; outputs FALSE. Several garbage patterns,
 /// from a running and from a fresh instance.
