@@ -7,8 +7,10 @@
 //! parameters against the latched copy. The latched copy itself carries a CRC-16, computed
 //! when it is latched and verified whenever the outputs are about to be enabled and whenever
 //! a live parameter differs from it (to tell a changed parameter from a corrupted copy).
-//! Timer start values carry no redundancy; docs/semantics.md says what a corrupted one can
-//! do (at most delay a timer by its own parameter).
+//! The guards' timer start values carry no redundancy; docs/semantics.md says what a
+//! corrupted one can do (at most delay a timer by its own parameter). The timer blocks
+//! (TON, TOF, TON2) keep a complement of their start, since it decides when an output
+//! switches on (T9).
 
 use crc::{Crc, CRC_16_IBM_3740};
 
