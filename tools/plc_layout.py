@@ -11,7 +11,8 @@ FILE is the output of plc_bindings/tests/layout_dump.c (compiled against include
 
 What it does, for every source of ST (each TwinCAT .TcDUT/.TcPOU/.TcGVL/.TcIO file, and the
 TwinCAT, CODESYS and IEC plain .st files):
-  1. parses the file with blark (a failure to parse is a failure);
+  1. parses the file with blark, unit by unit, long FB bodies in runs of whole statements
+     (split_fb; a failure to parse is a failure);
   2. takes every STRUCT declaration (DUT) from the parse result and computes each member's
      offset and the DUT's SIZEOF under pack mode 8 and pack mode 4 (CODESYS/TwinCAT rules:
      a member is aligned to min(its alignment, pack), a STRUCT to min(largest member
@@ -38,6 +39,7 @@ import pickle
 import re
 import sys
 import tempfile
+import zlib
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Dict, List, Optional, Tuple
@@ -197,10 +199,84 @@ def split_units(text: str) -> List[Tuple[int, str]]:
     return pieces
 
 
-def extract(job: Tuple[str, str, Optional[str]]) -> dict:
+# The self-test FB_SL_SELFTEST has a body of ~12,700 lines, and blark's Earley parser takes
+# ~15 ms a line on this grammar (linear): as one unit it keeps one CPU busy for three minutes,
+# and any header change (step 8's FB_SYNTH) makes it new. Its body is a list of top-level
+# statements, so a long body is parsed in pieces: the declaration part with an empty body (a
+# .TcPOU file: the file with an empty implementation, through blark's TcPOU loader), then runs
+# of whole statements, each as plain ST in an FB of the same name with no declarations. The
+# grammar's statement list is a repetition and every cut is at a line start outside any
+# statement, so if every piece parses, the whole body does; a cut in the wrong place cannot hide
+# an error, the pieces on both sides of it then fail to parse. Where a cut falls depends on the
+# statements after it (a hash of their text) and on the distance to the previous cut, so a block
+# added to the header (step 8) changes only the pieces around its checks. The runs are keyed by
+# their text alone (RUN_PATH), so the TwinCAT XML, TwinCAT ST and CODESYS self-tests, whose
+# bodies are the same text, are parsed once and the others come from the cache.
+RUN_PATH = "statement-run.st"
+SPLIT_BODY_LINES = 400
+PIECE_MIN_LINES, PIECE_MAX_LINES, PIECE_CUT_ONE_IN = 100, 300, 8
+NOT_A_STATEMENT_START = re.compile(r"(END_\w+|ELSIF|ELSE|UNTIL|THEN|DO|OF)\b")
+
+
+def statement_runs(body: str) -> List[str]:
+    """body cut before top-level statements (a letter in column 0 that does not continue or
+    close a statement) into runs of PIECE_MIN_LINES..PIECE_MAX_LINES lines where possible."""
+    lines = body.splitlines(keepends=True)
+    starts = [i for i, line in enumerate(lines) if line[:1].isalpha() and not NOT_A_STATEMENT_START.match(line)]
+    cuts = [0]
+    # the hash covers the two statements after the cut: one alone may repeat verbatim
+    # (nChecked := nChecked + 1;), which would make every one of them a cut or none
+    for a, c in zip(starts, starts[2:] + [len(lines)] * 2):
+        size = a - cuts[-1]
+        if size >= PIECE_MAX_LINES or (
+            size >= PIECE_MIN_LINES and zlib.crc32("".join(lines[a:c]).encode()) % PIECE_CUT_ONE_IN == 0
+        ):
+            cuts.append(a)
+    cuts.append(len(lines))
+    return ["".join(lines[x:y]) for x, y in zip(cuts, cuts[1:]) if x < y]
+
+
+def split_fb(label: str, path: str, text: str) -> List[Tuple[str, str, str, str]]:
+    """Parse jobs (label, path, text, role) of one FUNCTION_BLOCK unit (plain ST) or one .TcPOU
+    file: [unit] when its body is short, else [declaration part] + [body runs] (see above)."""
+    if path.endswith(".TcPOU"):
+        whole = [(label, path, None, "unit")]
+        impl = list(re.finditer(r"(<Implementation>\s*<ST><!\[CDATA\[)(.*?)(\]\]></ST>)", text, re.S))
+        name = re.search(r'<POU Name="(\w+)"', text)
+        if len(impl) != 1 or not name or impl[0].group(2).count("\n") <= SPLIT_BODY_LINES:
+            return whole
+        m = impl[0]
+        head, tail = text[: m.start(2)], text[m.end(2):]
+        jobs = [(f"{label} (declaration)", path, head + tail, "unit")]
+        line = text[: m.start(2)].count("\n") + 1
+        for run in statement_runs(m.group(2)):
+            jobs.append((f"{label}:{line}", RUN_PATH, f"FUNCTION_BLOCK {name.group(1)}\n{run}END_FUNCTION_BLOCK\n", "body"))
+            line += run.count("\n")
+        return jobs
+    whole = [(label, path, text, "unit")]
+    lines = text.splitlines(keepends=True)
+    first = next((i for i, line in enumerate(lines) if line.startswith("FUNCTION_BLOCK")), None)
+    ends = [i for i, line in enumerate(lines) if re.match(r"END_FUNCTION_BLOCK\b", line)]
+    if first is None or not ends:
+        return whole
+    decl_end = max([first + 1] + [i + 1 for i, line in enumerate(lines) if re.match(r"END_VAR\b", line)])
+    end = ends[-1]
+    if end - decl_end <= SPLIT_BODY_LINES:
+        return whole
+    name = lines[first].split()[1]
+    jobs = [(f"{label} (declaration)", path, "".join(lines[:decl_end] + lines[end:]), "unit")]
+    start = int(label.rsplit(":", 1)[1]) + decl_end
+    for run in statement_runs("".join(lines[decl_end:end])):
+        jobs.append((f"{path}:{start}", RUN_PATH, f"FUNCTION_BLOCK {name}\n{run}END_FUNCTION_BLOCK\n", "body"))
+        start += run.count("\n")
+    return jobs
+
+
+def extract(job: Tuple[str, str, Optional[str], str]) -> dict:
     """Parses one file (path) or one unit (text given, parsed through a temp file with the
-    path's suffix) and returns plain data: DUTs, FB interfaces and bodies, parse errors."""
-    label, path, text = job
+    path's suffix) and returns plain data: DUTs, FB interfaces and bodies, parse errors, and
+    the job's role (a whole unit, or a run of a split body)."""
+    label, path, text, role = job
     # The result depends only on the parsed text and the file's name and suffix.
     content = text if text is not None else Path(path).read_text(encoding="utf-8")
     key = hashlib.sha256(
@@ -208,7 +284,7 @@ def extract(job: Tuple[str, str, Optional[str]]) -> dict:
     ).hexdigest()
     hit = CACHE / f"{key}.pickle"
     if hit.is_file():
-        return pickle.loads(hit.read_bytes())
+        return dict(pickle.loads(hit.read_bytes()), role=role)
     target, tmp = path, None
     if text is not None:
         tmp = tempfile.NamedTemporaryFile("w", suffix=Path(path).suffix, delete=False, encoding="utf-8")
@@ -254,7 +330,7 @@ def extract(job: Tuple[str, str, Optional[str]]) -> dict:
     if not out["errors"]:
         CACHE.mkdir(parents=True, exist_ok=True)
         (CACHE / f"{key}.pickle").write_bytes(pickle.dumps(out))
-    return out
+    return dict(out, role=role)
 
 
 @dataclass
@@ -273,8 +349,13 @@ def collect(source: Source, parts: List[dict]) -> None:
         for err in part["errors"]:
             R.ok(False, f"{source.label}: {err}")
         source.duts.update(part["duts"])
-        source.fbs.update(part["fbs"])
-        source.fb_bodies.update(part["bodies"])
+        if part["role"] == "body":
+            # a run of a split body: more statements of an FB whose declarations came before
+            for name, body in part["bodies"].items():
+                source.fb_bodies[name] = "\n".join(filter(None, (source.fb_bodies.get(name), body)))
+        else:
+            source.fbs.update(part["fbs"])
+            source.fb_bodies.update(part["bodies"])
 
 
 def layout(duts: Dict[str, List[StMember]], name: str, pack: int, memo) -> Tuple[int, int, List[Tuple[str, int, int]]]:
@@ -488,15 +569,18 @@ def main() -> int:
     nfiles = 0
     with multiprocessing.Pool(os.cpu_count() or 1) as pool:
         for src in sources:
-            jobs: List[Tuple[str, str, Optional[str]]] = []
+            jobs: List[Tuple[str, str, Optional[str], str]] = []
             for path in src.files:
                 if not R.ok(path.is_file(), f"{src.label}: {path} missing"):
                     continue
                 text = path.read_text(encoding="utf-8")
                 src.texts[str(path)] = text
                 nfiles += 1
+                if path.suffix == ".TcPOU":
+                    jobs.extend(split_fb(str(path), str(path), text))
+                    continue
                 if path.suffix != ".st":
-                    jobs.append((str(path), str(path), None))
+                    jobs.append((str(path), str(path), None, "unit"))
                     continue
                 if src.flavour == "iec":
                     # blark 0.8.3's grammar has POINTER TO/REFERENCE TO but not the IEC ed. 3
@@ -506,7 +590,7 @@ def main() -> int:
                     text = re.sub(r"\bREF_TO\b", "POINTER TO", text)
                     text = re.sub(r"\bREF\(", "ADR(", text)
                 for line, unit in split_units(text):
-                    jobs.append((f"{path}:{line}", str(path), unit))
+                    jobs.extend(split_fb(f"{path}:{line}", str(path), unit))
             collect(src, pool.map(extract, jobs, chunksize=4))
             check_duts(src, csizes, cmembers)
             check_pack_pragma(src)
