@@ -422,8 +422,27 @@ impl Members for CMembers {
         // SAFETY: as in `entry`; the entry is one a fully checked cycle found intact.
         let e = unsafe { self.base.add(i).read() };
         match RUNNERS.get(usize::from(e.nType)).copied().flatten() {
-            Some(runner) => runner(e.pBlock, run, ack, now, w),
+            Some(runner) => group::Ran::of_word(runner(e.pBlock, run, ack, now, w)),
             None => member_dyn(e.nType, e.pBlock).map(|b| b.run_in_group(run, ack, now, w)),
+        }
+    }
+
+    fn run_straight_word(
+        &mut self,
+        i: usize,
+        run: u8,
+        ack: u8,
+        now: u32,
+        w: &mut group::Wiring,
+    ) -> group::RanWord {
+        if i >= usize::from(self.count) {
+            return group::RAN_NOT_RUN;
+        }
+        // SAFETY: as in `entry`; the entry is one a fully checked cycle found intact.
+        let e = unsafe { self.base.add(i).read() };
+        match RUNNERS.get(usize::from(e.nType)).copied().flatten() {
+            Some(runner) => runner(e.pBlock, run, ack, now, w),
+            None => group::RAN_NOT_RUN,
         }
     }
 
@@ -456,8 +475,9 @@ impl Members for CMembers {
     }
 }
 
-/// Runs the block of type `B` at `p` as a group member (the sealed schedule's dispatch).
-type Runner = fn(*mut c_void, u8, u8, u32, &mut group::Wiring) -> Option<group::Ran>;
+/// Runs the block of type `B` at `p` as a group member (the sealed schedule's dispatch); a
+/// block reports no connection, so its outcome is a [`group::RanWord`].
+type Runner = fn(*mut c_void, u8, u8, u32, &mut group::Wiring) -> group::RanWord;
 
 fn run_as<B: Member>(
     p: *mut c_void,
@@ -465,10 +485,14 @@ fn run_as<B: Member>(
     ack: u8,
     now: u32,
     w: &mut group::Wiring,
-) -> Option<group::Ran> {
-    instance(p.cast::<B>())
-        .ok()
-        .map(|b| b.run_in_group(run, ack, now, w))
+) -> group::RanWord {
+    match instance(p.cast::<B>()) {
+        Ok(b) => {
+            let r = b.run_in_group(run, ack, now, w);
+            group::Ran::word(r.status, r.state)
+        }
+        Err(_) => group::RAN_UNREACHABLE,
+    }
 }
 
 /// Link storage read by value through the raw pointer.

@@ -83,6 +83,40 @@ pub struct Ran {
     pub conn: Option<ConnReport>,
 }
 
+/// A block's [`Ran`] as one word, as the sealed schedule's runners return it (in a
+/// register, where `Option<Ran>` goes through memory): the state in bits 0–7, the low byte
+/// of the status code in bits 8–15 (0: SL_OK), or one of the flags above them.
+pub type RanWord = u32;
+
+/// [`RanWord`] flag: the member's block failed its pointer check (not run).
+pub const RAN_UNREACHABLE: RanWord = 1 << 16;
+/// [`RanWord`] flag: the member is not a block the schedule runs straight (an FSoE
+/// connection, or storage without runners): not run, the member loop runs it.
+pub const RAN_NOT_RUN: RanWord = 1 << 17;
+// `run_straight` tells both flags from every block outcome by one `>= RAN_UNREACHABLE`.
+const _: () = assert!(RAN_NOT_RUN > RAN_UNREACHABLE && RAN_NOT_RUN & RAN_UNREACHABLE == 0);
+
+impl Ran {
+    /// The word of a block's outcome (a block reports no connection). Every status code
+    /// is in -12..=0, so its low byte gives it back.
+    #[inline(always)]
+    pub const fn word(status: Status, state: u8) -> RanWord {
+        state as u32 | (status.code() as u8 as u32) << 8
+    }
+
+    /// The outcome of a word that is not [`RAN_NOT_RUN`]: `None` for [`RAN_UNREACHABLE`].
+    pub const fn of_word(word: RanWord) -> Option<Ran> {
+        if word & RAN_UNREACHABLE != 0 {
+            return None;
+        }
+        Some(Ran {
+            status: Status::from_code((word >> 8) as u8 as i8 as i32),
+            state: word as u8,
+            conn: None,
+        })
+    }
+}
+
 /// What the group reads of an FSoE connection after its cycle.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct ConnReport {
@@ -302,6 +336,9 @@ macro_rules! impl_member {
                 })*
                 false
             }
+            // Always inline: the sealed schedule's runner (`run_as`) is then one function,
+            // the block's fast path included.
+            #[inline(always)]
             fn run_in_group(
                 &mut self,
                 run: u8,
@@ -317,7 +354,9 @@ macro_rules! impl_member {
                     $crate::blocks::connshutdown::before_cycle(self, w);
                 }
                 self.drive(run, ack);
-                let status = $crate::group::Member::execute(self, now);
+                // The envelope's cycle itself (not `execute`): its fast path then inlines
+                // into the sealed schedule's runner, as into the C function.
+                let status = $crate::prim::envelope::cycle(self, now);
                 if shut {
                     $crate::blocks::connshutdown::after_cycle(self, w);
                 }
@@ -862,6 +901,19 @@ pub trait Members {
         self.with(i, |b| b.run_in_group(run, ack, now, w))
     }
 
+    /// Member `i` in a sealed cycle's straight run (`run_straight`), as a [`RanWord`];
+    /// storage without runners runs nothing straight ([`RAN_NOT_RUN`]).
+    fn run_straight_word(
+        &mut self,
+        _i: usize,
+        _run: u8,
+        _ack: u8,
+        _now: u32,
+        _w: &mut Wiring,
+    ) -> RanWord {
+        RAN_NOT_RUN
+    }
+
     /// A BOOL or analog link in a sealed cycle (both ends checked when it was added).
     fn copy_sealed(&mut self, l: &SL_LINK) {
         copy_link(self, l, usize::from(l.nDstMember));
@@ -1394,32 +1446,32 @@ fn run_straight<M: Members + ?Sized, L: Links + ?Sized>(
         all_run: true,
         ran: None,
     };
-    while i < members {
+    // A bit of any state but RUN: the members that ran straight all ended in RUN iff 0.
+    let mut not_run = 0u8;
+    'members: while i < members {
         while k < link_count && links.dst(k).is_some_and(|d| usize::from(d) == i) {
             let Some(l) = links.get(k) else { break };
             if l.nKind > SL_LINK_ANALOG32 {
-                (out.member, out.link) = (i, k);
-                return out;
+                break 'members;
             }
             m.copy_sealed(&l);
             k += 1;
         }
-        let outcome = m.run_sealed(i, run, ack, now, w);
-        match outcome {
-            Some(r) if r.conn.is_none() && r.state != SL_STATE_ERROR && w.request.is_none() => {
-                if r.status != Status::Ok {
-                    out.status = out.status.worst(r.status);
-                }
-                out.all_run &= r.state == SL_STATE_RUN;
-                i += 1;
-            }
-            _ => {
-                (out.member, out.link, out.ran) = (i, k, Some(outcome));
-                return out;
-            }
+        let word = m.run_straight_word(i, run, ack, now, w);
+        if word >= RAN_UNREACHABLE || word as u8 == SL_STATE_ERROR || w.request.is_some() {
+            // RAN_NOT_RUN: its links are copied, the loop runs it.
+            out.ran = (word & RAN_NOT_RUN == 0).then(|| Ran::of_word(word));
+            break;
         }
+        if word >> 8 != 0 {
+            out.status = out
+                .status
+                .worst(Status::from_code((word >> 8) as u8 as i8 as i32));
+        }
+        not_run |= word as u8 ^ SL_STATE_RUN;
+        i += 1;
     }
-    (out.member, out.link) = (i, k);
+    (out.member, out.link, out.all_run) = (i, k, not_run == 0);
     out
 }
 
@@ -1491,6 +1543,30 @@ mod tests {
             assert_eq!(unshift(mix(h, w)).wrapping_mul(inv) ^ w, h);
             assert_eq!(step(h, w).wrapping_mul(inv) ^ w, h);
         }
+    }
+
+    /// A block's outcome survives its word for every status and every state, and no such
+    /// word has a flag bit set; the flags read as they should.
+    #[test]
+    fn ran_word_gives_back_every_block_outcome() {
+        for code in -12..=0 {
+            let status = Status::from_code(code);
+            assert_eq!(status.code(), code, "every code in the range is a status");
+            for state in 0..=u8::MAX {
+                let word = Ran::word(status, state);
+                assert!(word < RAN_UNREACHABLE);
+                let ran = Ran::of_word(word);
+                assert_eq!(
+                    ran,
+                    Some(Ran {
+                        status,
+                        state,
+                        conn: None
+                    })
+                );
+            }
+        }
+        assert_eq!(Ran::of_word(RAN_UNREACHABLE), None);
     }
 
     /// Every connection of a cycle is kept: each one's shutdown is found by its own
