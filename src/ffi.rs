@@ -436,7 +436,7 @@ impl Members for CMembers {
         w: &mut group::Wiring,
     ) -> group::RanWord {
         if i >= usize::from(self.count) {
-            return group::RAN_NOT_RUN;
+            return group::RAN_UNREACHABLE;
         }
         // SAFETY: as in `entry`; the entry is one a fully checked cycle found intact.
         let e = unsafe { self.base.add(i).read() };
