@@ -372,6 +372,14 @@ impl CMembers {
         (e.aReserved == check).then_some(e)
     }
 
+    /// Entry `i` in a sealed cycle, if it is inside the count: the entry is one a fully
+    /// checked cycle found intact, so its own check is not repeated.
+    #[inline(always)]
+    fn sealed_entry(&self, i: usize) -> Option<SL_MEMBER> {
+        // SAFETY: as in `entry` (`i < count <= cap` entries at `base`); read by value.
+        (i < usize::from(self.count)).then(|| unsafe { self.base.add(i).read() })
+    }
+
     /// The byte range of member `i`'s block.
     fn span_of(&self, i: usize) -> Option<(usize, usize)> {
         let e = self.entry(i)?;
@@ -416,14 +424,13 @@ impl Members for CMembers {
         now: u32,
         w: &mut group::Wiring,
     ) -> Option<group::Ran> {
-        if i >= usize::from(self.count) {
-            return None;
-        }
-        // SAFETY: as in `entry`; the entry is one a fully checked cycle found intact.
-        let e = unsafe { self.base.add(i).read() };
-        match RUNNERS.get(usize::from(e.nType)).copied().flatten() {
-            Some(runner) => group::Ran::of_word(runner(e.pBlock, run, ack, now, w)),
-            None => member_dyn(e.nType, e.pBlock).map(|b| b.run_in_group(run, ack, now, w)),
+        match self.run_straight_word(i, run, ack, now, w) {
+            // A type without a runner (an FSoE connection): through the type dispatch.
+            group::RAN_NOT_RUN => {
+                let e = self.sealed_entry(i)?;
+                member_dyn(e.nType, e.pBlock).map(|b| b.run_in_group(run, ack, now, w))
+            }
+            word => group::Ran::of_word(word),
         }
     }
 
@@ -435,11 +442,9 @@ impl Members for CMembers {
         now: u32,
         w: &mut group::Wiring,
     ) -> group::RanWord {
-        if i >= usize::from(self.count) {
+        let Some(e) = self.sealed_entry(i) else {
             return group::RAN_UNREACHABLE;
-        }
-        // SAFETY: as in `entry`; the entry is one a fully checked cycle found intact.
-        let e = unsafe { self.base.add(i).read() };
+        };
         match RUNNERS.get(usize::from(e.nType)).copied().flatten() {
             Some(runner) => runner(e.pBlock, run, ack, now, w),
             None => group::RAN_NOT_RUN,
@@ -447,10 +452,8 @@ impl Members for CMembers {
     }
 
     fn copy_sealed(&mut self, l: &SL_LINK) {
-        let block = |m: u16| {
-            // SAFETY: as in `entry` (`m < count`, checked when the link was added).
-            (m < self.count).then(|| unsafe { self.base.add(usize::from(m)).read() }.pBlock)
-        };
+        // Both ends were checked to be members when the link was added.
+        let block = |m: u16| self.sealed_entry(usize::from(m)).map(|e| e.pBlock);
         if let (Some(src), Some(dst)) = (block(l.nSrcMember), block(l.nDstMember)) {
             // SAFETY: both fields were checked when the link was added (an output of the
             // source's type at nSrcOffset, an input of the same type and width at
