@@ -347,18 +347,15 @@ fn measure(members: usize, cycles: usize) -> Run {
     }
     let running = p.estops.iter().filter(|e| e.nState == SL_STATE_RUN).count()
         + p.mons.iter().filter(|m| m.nState == SL_STATE_RUN).count();
-    let mut seed = 0x2545_F491_4F6C_DD1Du64;
     let mut times = Vec::with_capacity(cycles);
     for c in 0..cycles {
-        // About 2 % of the MON inputs toggle per cycle, pairwise (no discrepancy).
-        for _ in 0..4 {
-            seed ^= seed << 13;
-            seed ^= seed >> 7;
-            seed ^= seed << 17;
-            let n = p.mons.len();
-            let m = &mut p.mons[(seed as usize >> 8) % n];
-            let v = u8::from(c % 50 < 45);
-            (m.bMonIn1, m.bMonIn2) = (v, v);
+        // 2 % of the MON inputs change per cycle, pairwise (no discrepancy), at every group
+        // size: MON j reads FALSE for 10 of every 100 cycles, from cycle 90 - j (mod 100).
+        for (phase, v) in [(90, 0), (0, 1)] {
+            let first = (phase + 100 - c % 100) % 100;
+            for m in p.mons.iter_mut().skip(first).step_by(100) {
+                (m.bMonIn1, m.bMonIn2) = (v, v);
+            }
         }
         let start = Instant::now();
         black_box(unsafe { sl_group_cycle(black_box(g), mt, lt, t) });

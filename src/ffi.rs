@@ -396,24 +396,20 @@ impl Members for CMembers {
     /// Binds the group's address, both tables' addresses, counts and capacities and every
     /// byte of every entry and link (their own checks included), in order.
     fn schedule_check<L: group::Links + ?Sized>(&self, links: &L) -> Option<u64> {
-        let mut h = group::schedule_start(
+        let lanes = group::schedule_start(
             self.group,
             self.base as usize,
             self.count,
             self.cap,
             links.count(),
         );
-        for i in 0..usize::from(self.count) {
+        let lanes = group::schedule_table(lanes, usize::from(self.count), |i| {
             // SAFETY: `i < count <= cap` entries at `base` (checked by `storage`); an entry
             // is 16 bytes, 8-aligned, without padding: read by value as its two words.
-            let [w0, w1] = unsafe { self.base.add(i).cast::<[u64; 2]>().read() };
-            h = group::schedule_words(h, w0, w1);
-        }
-        for i in 0..links.count() {
-            let [w0, w1] = links.words(i)?;
-            h = group::schedule_words(h, w0, w1);
-        }
-        Some(group::schedule_end(h))
+            Some(unsafe { self.base.add(i).cast::<[u64; 2]>().read() })
+        })?;
+        let lanes = group::schedule_table(lanes, links.count(), |i| links.words(i))?;
+        Some(group::schedule_end(lanes))
     }
 
     fn run_sealed(
