@@ -380,6 +380,19 @@ impl CMembers {
         (i < usize::from(self.count)).then(|| unsafe { self.base.add(i).read() })
     }
 
+    /// The entries `0..count` of a sealed cycle as a slice (the blocks, which run while it
+    /// is held, share no byte with the table: sl_group_add_member).
+    fn sealed_entries(&self) -> &[SL_MEMBER] {
+        if self.count == 0 {
+            return &[];
+        }
+        // SAFETY: `base` is non-null and aligned (checked by `storage`) and points to at
+        // least `cap >= count` entries (sl_group_init contract), which the caller does not
+        // touch during the cycle; a block's bytes are none of them (checked when it was
+        // added), so no write through a block pointer reaches the slice.
+        unsafe { core::slice::from_raw_parts(self.base, usize::from(self.count)) }
+    }
+
     /// The byte range of member `i`'s block.
     fn span_of(&self, i: usize) -> Option<(usize, usize)> {
         let e = self.entry(i)?;
@@ -420,30 +433,70 @@ impl Members for CMembers {
         now: u32,
         w: &mut group::Wiring,
     ) -> Option<group::Ran> {
-        match self.run_straight_word(i, run, ack, now, w) {
+        let e = self.sealed_entry(i)?;
+        match run_entry(&e, run, ack, now, w) {
             // A type without a runner (an FSoE connection): through the type dispatch.
             group::RAN_NOT_RUN => {
-                let e = self.sealed_entry(i)?;
                 member_dyn(e.nType, e.pBlock).map(|b| b.run_in_group(run, ack, now, w))
             }
             word => group::Ran::of_word(word),
         }
     }
 
-    fn run_straight_word(
+    fn run_straight<L: group::Links + ?Sized>(
         &mut self,
-        i: usize,
+        links: &L,
+        link_count: usize,
+        at: (usize, usize),
+        members: usize,
         run: u8,
         ack: u8,
         now: u32,
         w: &mut group::Wiring,
-    ) -> group::RanWord {
-        let Some(e) = self.sealed_entry(i) else {
-            return group::RAN_UNREACHABLE;
-        };
-        match RUNNERS.get(usize::from(e.nType)).copied().flatten() {
-            Some(runner) => runner(e.pBlock, run, ack, now, w),
-            None => group::RAN_NOT_RUN,
+    ) -> group::Straight {
+        let entries = self.sealed_entries();
+        let entries = entries.get(..members).unwrap_or(entries);
+        let links = links.as_slice();
+        let links = links.get(..link_count).unwrap_or(links);
+        let mut i = at.0;
+        // The links not copied yet.
+        let mut rest = links.get(at.1..).unwrap_or_default();
+        let mut status = Status::Ok;
+        // A bit of any state but RUN: the members that ran straight all ended in RUN iff 0.
+        let mut not_run = 0u8;
+        let mut ran = None;
+        'members: while let Some(e) = entries.get(i) {
+            while let [l, tail @ ..] = rest {
+                if usize::from(l.nDstMember) != i {
+                    break;
+                }
+                if l.nKind > group::SL_LINK_ANALOG32 {
+                    break 'members;
+                }
+                if let Some(src) = entries.get(usize::from(l.nSrcMember)) {
+                    copy_field(src.pBlock, e.pBlock, l);
+                }
+                rest = tail;
+            }
+            let word = run_entry(e, run, ack, now, w);
+            if word >= group::RAN_UNREACHABLE || word as u8 == SL_STATE_ERROR || w.pending() {
+                // RAN_NOT_RUN: its links are copied, the loop runs it.
+                ran = (word & group::RAN_NOT_RUN == 0).then(|| group::Ran::of_word(word));
+                break;
+            }
+            if word >> 8 != 0 {
+                status = status.worst(Status::from_code((word >> 8) as u8 as i8 as i32));
+            }
+            not_run |= word as u8 ^ SL_STATE_RUN;
+            i += 1;
+        }
+        let k = links.len() - rest.len();
+        group::Straight {
+            member: i,
+            link: k,
+            status,
+            all_run: not_run == 0,
+            ran,
         }
     }
 
@@ -451,25 +504,40 @@ impl Members for CMembers {
         // Both ends were checked to be members when the link was added.
         let block = |m: u16| self.sealed_entry(usize::from(m)).map(|e| e.pBlock);
         if let (Some(src), Some(dst)) = (block(l.nSrcMember), block(l.nDstMember)) {
-            // SAFETY: both fields were checked when the link was added (an output of the
-            // source's type at nSrcOffset, an input of the same type and width at
-            // nDstOffset), inside blocks that are live and share no byte with the tables
-            // (sl_group_add_member); the tables are those a fully checked cycle saw. The
-            // value is read completely before it is written (a link may go from a block to
-            // itself); unaligned accesses need no alignment proof.
-            unsafe {
-                let from = src.cast::<u8>().add(usize::from(l.nSrcOffset));
-                let to = dst.cast::<u8>().add(usize::from(l.nDstOffset));
-                match l.nKind {
-                    SL_LINK_BOOL => to.write(from.read()),
-                    group::SL_LINK_ANALOG16 => to
-                        .cast::<u16>()
-                        .write_unaligned(from.cast::<u16>().read_unaligned()),
-                    _ => to
-                        .cast::<u32>()
-                        .write_unaligned(from.cast::<u32>().read_unaligned()),
-                }
-            }
+            copy_field(src, dst, l);
+        }
+    }
+}
+
+/// Member `e` of a sealed cycle through the runner of its type ([`group::RAN_NOT_RUN`]: a
+/// type without one).
+#[inline(always)]
+fn run_entry(e: &SL_MEMBER, run: u8, ack: u8, now: u32, w: &mut group::Wiring) -> group::RanWord {
+    match RUNNERS.get(usize::from(e.nType)).copied().flatten() {
+        Some(runner) => runner(e.pBlock, run, ack, now, w),
+        None => group::RAN_NOT_RUN,
+    }
+}
+
+/// A BOOL or analog link of a sealed cycle: its value from block `src` to block `dst`.
+#[inline(always)]
+fn copy_field(src: *mut c_void, dst: *mut c_void, l: &SL_LINK) {
+    // SAFETY: the link's fields were checked when it was added (an output of the source's
+    // type at nSrcOffset, an input of the same type and width at nDstOffset), inside blocks
+    // that are live and share no byte with the tables (sl_group_add_member); the tables are
+    // those a fully checked cycle saw. The value is read completely before it is written (a
+    // link may go from a block to itself); unaligned accesses need no alignment proof.
+    unsafe {
+        let from = src.cast::<u8>().add(usize::from(l.nSrcOffset));
+        let to = dst.cast::<u8>().add(usize::from(l.nDstOffset));
+        match l.nKind {
+            SL_LINK_BOOL => to.write(from.read()),
+            group::SL_LINK_ANALOG16 => to
+                .cast::<u16>()
+                .write_unaligned(from.cast::<u16>().read_unaligned()),
+            _ => to
+                .cast::<u32>()
+                .write_unaligned(from.cast::<u32>().read_unaligned()),
         }
     }
 }
@@ -510,6 +578,15 @@ impl group::Links for CLinks {
         // SAFETY: non-null and aligned (checked by `storage`), at least `count` entries
         // (sl_group_init contract); read by value.
         (i < self.count).then(|| unsafe { self.base.add(i).read() })
+    }
+    fn as_slice(&self) -> &[SL_LINK] {
+        if self.count == 0 {
+            return &[];
+        }
+        // SAFETY: non-null and aligned (checked by `storage`), at least `count` entries
+        // (sl_group_init contract) that the caller does not touch during the cycle; no
+        // block's bytes are among them (sl_group_add_member).
+        unsafe { core::slice::from_raw_parts(self.base, self.count) }
     }
     fn dst(&self, i: usize) -> Option<u16> {
         // SAFETY: as in `get`; only the (2-aligned) nDstMember field is read.

@@ -157,6 +157,12 @@ impl Wiring {
     pub fn conn_shutdown(&self, id: u16) -> u8 {
         u8::from(self.conns[..self.n].iter().any(|e| e.1 == id && e.2))
     }
+    /// A CONNECTION SHUTDOWN block's request waits for the group (the straight run hands
+    /// back).
+    #[inline(always)]
+    pub fn pending(&self) -> bool {
+        self.request.is_some()
+    }
     /// A CONNECTION SHUTDOWN block's bShutdownRequest for Connection ID `id`.
     pub fn request(&mut self, id: u16, value: u8) {
         self.request = Some((id, value));
@@ -755,6 +761,8 @@ pub trait Links {
     fn get(&self, i: usize) -> Option<SL_LINK>;
     /// Entry `i`'s destination member (what a cycle reads first of every link).
     fn dst(&self, i: usize) -> Option<u16>;
+    /// All entries, for a sealed cycle's straight run.
+    fn as_slice(&self) -> &[SL_LINK];
     /// Entry `i` (the one after the last link) is unused as far as the group can tell. The
     /// C tables (`ffi`): beyond the capacity, or all zero as `sl_group_init` left it, since a
     /// link count forged lower would otherwise drop the links past it unnoticed when no link
@@ -787,6 +795,9 @@ impl Links for [SL_LINK] {
     }
     fn dst(&self, i: usize) -> Option<u16> {
         <[SL_LINK]>::get(self, i).map(|l| l.nDstMember)
+    }
+    fn as_slice(&self) -> &[SL_LINK] {
+        self
     }
 }
 
@@ -934,17 +945,21 @@ pub trait Members {
         self.with(i, |b| b.run_in_group(run, ack, now, w))
     }
 
-    /// Member `i` in a sealed cycle's straight run (`run_straight`), as a [`RanWord`];
-    /// storage without runners runs nothing straight ([`RAN_NOT_RUN`]).
-    fn run_straight_word(
+    /// A sealed cycle's straight run from member `at.0` and link `at.1` up to member
+    /// `members` ([`Straight`]); storage without runners runs nothing straight.
+    #[allow(clippy::too_many_arguments)]
+    fn run_straight<L: Links + ?Sized>(
         &mut self,
-        _i: usize,
+        _links: &L,
+        _link_count: usize,
+        at: (usize, usize),
+        _members: usize,
         _run: u8,
         _ack: u8,
         _now: u32,
         _w: &mut Wiring,
-    ) -> RanWord {
-        RAN_NOT_RUN
+    ) -> Straight {
+        Straight::at(at)
     }
 
     /// A BOOL or analog link in a sealed cycle (both ends checked when it was added).
@@ -1293,8 +1308,7 @@ pub fn cycle_traced<M: Members + ?Sized, L: Links + ?Sized>(
         // needs more (or every member, otherwise) takes the steps below.
         let mut ran_straight = None;
         if sealed {
-            let s = run_straight(
-                m,
+            let s = m.run_straight(
                 links,
                 link_count,
                 (i, next_link),
@@ -1435,77 +1449,41 @@ pub fn cycle_traced<M: Members + ?Sized, L: Links + ?Sized>(
     status.code()
 }
 
-/// Where [`run_straight`] handed back to the member loop.
-struct Straight {
+/// Where a sealed cycle's straight run handed back to the member loop.
+///
+/// The straight run (docs/performance.md, [`Members::run_straight`]): for a member whose
+/// incoming links are all BOOL or analog copies and which ends its cycle as a block (not a
+/// connection) outside ERROR, with no connection request pending, all the member loop does
+/// is copy the links, run it, and fold its status and state into the group's — so that is
+/// all the straight run does, with no per-member bookkeeping beyond it. It hands back at the
+/// first member that needs more: before an FSoE bit link, or after a run whose outcome the
+/// loop must see (a member that cannot be reached, ERROR, a connection, a request). The
+/// group's state does not change while it runs, so `run` holds throughout.
+pub struct Straight {
     /// The member the loop goes on with (the member count: all ran).
-    member: usize,
+    pub member: usize,
     /// The next link.
-    link: usize,
+    pub link: usize,
     /// The worst status of the members that ran straight.
-    status: Status,
+    pub status: Status,
     /// Every member that ran straight ended its cycle in RUN.
-    all_run: bool,
+    pub all_run: bool,
     /// `Some(outcome)`: `member` already ran (its outcome goes through the loop's steps);
     /// `None`: it did not run yet, its links from `link` on not copied.
-    ran: Option<Option<Ran>>,
+    pub ran: Option<Option<Ran>>,
 }
 
-/// A sealed cycle's straight run (docs/performance.md), from member `at.0` and link `at.1`
-/// up to `members`:
-/// for a member whose incoming links are all BOOL or analog copies and which ends its cycle
-/// as a block (not a connection) outside ERROR, with no connection request pending, all the
-/// member loop does is copy the links, run it, and fold its status and state into the
-/// group's — so that is all this loop does, with no per-member bookkeeping beyond it. It
-/// hands back at the first member that needs more: before an FSoE bit link, or after a run
-/// whose outcome the loop must see (a member that cannot be reached, ERROR, a connection,
-/// a request). The group's state does not change while it runs, so `run` holds throughout.
-#[allow(clippy::too_many_arguments)]
-fn run_straight<M: Members + ?Sized, L: Links + ?Sized>(
-    m: &mut M,
-    links: &L,
-    link_count: usize,
-    at: (usize, usize),
-    members: usize,
-    run: u8,
-    ack: u8,
-    now: u32,
-    w: &mut Wiring,
-) -> Straight {
-    let (mut i, mut k) = at;
-    let mut out = Straight {
-        member: i,
-        link: k,
-        status: Status::Ok,
-        all_run: true,
-        ran: None,
-    };
-    // A bit of any state but RUN: the members that ran straight all ended in RUN iff 0.
-    let mut not_run = 0u8;
-    'members: while i < members {
-        while k < link_count && links.dst(k).is_some_and(|d| usize::from(d) == i) {
-            let Some(l) = links.get(k) else { break };
-            if l.nKind > SL_LINK_ANALOG32 {
-                break 'members;
-            }
-            m.copy_sealed(&l);
-            k += 1;
+impl Straight {
+    /// Nothing ran straight: the loop goes on at member `at.0`, link `at.1`.
+    pub fn at(at: (usize, usize)) -> Self {
+        Straight {
+            member: at.0,
+            link: at.1,
+            status: Status::Ok,
+            all_run: true,
+            ran: None,
         }
-        let word = m.run_straight_word(i, run, ack, now, w);
-        if word >= RAN_UNREACHABLE || word as u8 == SL_STATE_ERROR || w.request.is_some() {
-            // RAN_NOT_RUN: its links are copied, the loop runs it.
-            out.ran = (word & RAN_NOT_RUN == 0).then(|| Ran::of_word(word));
-            break;
-        }
-        if word >> 8 != 0 {
-            out.status = out
-                .status
-                .worst(Status::from_code((word >> 8) as u8 as i8 as i32));
-        }
-        not_run |= word as u8 ^ SL_STATE_RUN;
-        i += 1;
     }
-    (out.member, out.link, out.all_run) = (i, k, not_run == 0);
-    out
 }
 
 /// Copies one link's value to its destination, member `dst` (ABI-2 §10.7 for the bits).
