@@ -514,7 +514,7 @@ impl Members for CMembers {
 #[inline(always)]
 fn run_entry(e: &SL_MEMBER, run: u8, ack: u8, now: u32, w: &mut group::Wiring) -> group::RanWord {
     match RUNNERS.get(usize::from(e.nType)).copied().flatten() {
-        Some(runner) => runner(e.pBlock, run, ack, now, w),
+        Some(runner) => runner(e.pBlock, u16::from_le_bytes([run, ack]), now, w),
         None => group::RAN_NOT_RUN,
     }
 }
@@ -544,17 +544,20 @@ fn copy_field(src: *mut c_void, dst: *mut c_void, l: &SL_LINK) {
 
 /// Runs the block of type `B` at `p` as a group member (the sealed schedule's dispatch); a
 /// block reports no connection, so its outcome is a [`group::RanWord`].
-type Runner = fn(*mut c_void, u8, u8, u32, &mut group::Wiring) -> group::RanWord;
+/// The group's bRun and bErrAck for the member come as one word (`run | ack << 8`): one
+/// argument, and the block's two adjacent bytes written as one store, which a following
+/// wider read of them can take from the store buffer.
+type Runner = fn(*mut c_void, u16, u32, &mut group::Wiring) -> group::RanWord;
 
 fn run_as<B: Member>(
     p: *mut c_void,
-    run: u8,
-    ack: u8,
+    drive: u16,
     now: u32,
     w: &mut group::Wiring,
 ) -> group::RanWord {
     match instance(p.cast::<B>()) {
         Ok(b) => {
+            let [run, ack] = drive.to_le_bytes();
             let r = b.run_in_group(run, ack, now, w);
             group::Ran::word(r.status, r.state)
         }
