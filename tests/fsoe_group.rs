@@ -170,9 +170,14 @@ fn master() -> NodeRef {
 /// (the master's EStopOut), shown at output 3. FB_CONNECTION_SHUTDOWN with no active input
 /// (member 2): the partner's shutdown only.
 fn slave() -> NodeRef {
+    slave_with(0b111)
+}
+
+/// [`slave`] with the DECOUPLE's inputs `active`.
+fn slave_with(active: u16) -> NodeRef {
     let mut n = NodeRef::with_role(SL_FSOE_ROLE_SLAVE);
     n.dec = FB_DECOUPLE {
-        wInputActive: 0b111,
+        wInputActive: active,
         ..Default::default()
     };
     n.shut = FB_CONNECTION_SHUTDOWN {
@@ -296,7 +301,11 @@ fn check(n: &Node) {
 
 /// Brings the pair to DATA / group RUN with the e-stop released and the master's output on.
 fn running() -> Pair {
-    let mut p = Pair::new();
+    running_from(Pair::new())
+}
+
+/// [`running`] from a pair built otherwise.
+fn running_from(mut p: Pair) -> Pair {
     p.s.dec.bDecIn1 = 1;
     p.s.dec.bDecIn2 = 1;
     p.step();
@@ -320,6 +329,45 @@ fn running() -> Pair {
         "both groups run sealed from here on"
     );
     p
+}
+
+/// A BOOL link that follows an FSoE bit link into the same member: the sealed cycle's
+/// straight run hands that member back to the member loop at the bit link, and the loop
+/// copies the BOOL link after it too (here DECOUPLE's output 1 back into its input 4: last
+/// cycle's value).
+#[test]
+fn a_bool_link_after_a_bit_link_into_one_member_is_copied_in_a_sealed_cycle() {
+    let s = slave_with(0b1111);
+    let (out1, in4) = (
+        offset_of!(FB_DECOUPLE, bDecOut1),
+        offset_of!(FB_DECOUPLE, bDecIn4),
+    );
+    assert_eq!(s.link(SL_LINK_BOOL, 1, out1, 1, in4), SL_OK);
+    let kinds: Vec<(u16, u8)> = s.links[..4]
+        .iter()
+        .map(|l| (l.nDstMember, l.nKind))
+        .collect();
+    assert_eq!(
+        kinds[2..],
+        [(1, SL_LINK_RXBIT), (1, SL_LINK_BOOL)],
+        "the BOOL link follows the bit link into DECOUPLE"
+    );
+    let mut p = running_from(Pair {
+        m: master(),
+        s,
+        t: 0,
+        slave_alive: true,
+    });
+    for v in [0, 1, 0, 1] {
+        (p.s.dec.bDecIn1, p.s.dec.bDecIn2) = (v, v);
+        p.run(2);
+        assert!(p.s.sealed());
+        assert_eq!(p.s.g.nState, SL_STATE_RUN);
+        assert_eq!(
+            (p.s.dec.bDecOut1, p.s.dec.bDecIn4, p.s.dec.bDecOut4),
+            (v, v, v)
+        );
+    }
 }
 
 #[test]

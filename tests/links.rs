@@ -126,6 +126,19 @@ impl Fixture {
         }
     }
 
+    /// The next cycle runs the sealed schedule (links as plain copies of their width).
+    fn sealed(&self) -> bool {
+        let q = self.ptr();
+        // SAFETY: the plant's own tables, reached through the fixture's pointer.
+        unsafe {
+            ffi::sl_group_schedule_sealed(
+                addr_of_mut!((*q).g),
+                addr_of_mut!((*q).members).cast(),
+                addr_of_mut!((*q).links).cast(),
+            )
+        }
+    }
+
     fn cycle(&mut self, t: u32) -> i32 {
         let q = self.ptr();
         // SAFETY: the plant's own tables, reached through the fixture's pointer.
@@ -181,6 +194,15 @@ fn analog_chain_beside_a_boolean_chain() {
     assert_eq!((p.estop.bEStopOut, p.and.bAndOut), (1, 1));
     assert_eq!(p.g.nState, SL_STATE_RUN);
     assert_eq!(p.g.bFbRun, 1);
+    // Sealed cycles copy each analog link as its width, no more: the second inputs right
+    // after the linked ones stay the caller's.
+    assert!(p.sealed());
+    p.cycle(25);
+    assert_eq!(
+        (p.add.nAnalogOut, p.mul.nAnalogOut, p.div.nAnalogOut),
+        (50, -150, -21)
+    );
+    assert_eq!((p.mul.nAnalogIn2, p.div.nAnalogIn2), (-3, 7));
 
     // An overflow in the chain stops the whole group, the Boolean outputs included.
     p.add.nAnalogIn1 = i16::MAX;
