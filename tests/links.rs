@@ -110,46 +110,36 @@ impl Plant {
 }
 
 impl Fixture {
-    fn link(&mut self, src: u16, so: usize, dst: u16, dof: usize) -> i32 {
+    /// The group and its two tables, derived from the fixture's pointer.
+    fn tables(&self) -> (*mut SL_GROUP, *mut SL_MEMBER, *mut SL_LINK) {
         let q = self.ptr();
-        // SAFETY: the plant's own tables, reached through the fixture's pointer.
+        // SAFETY: field places of the live plant; no reference is formed.
         unsafe {
-            ffi::sl_group_add_link(
+            (
                 addr_of_mut!((*q).g),
                 addr_of_mut!((*q).members).cast(),
                 addr_of_mut!((*q).links).cast(),
-                src,
-                so as u16,
-                dst,
-                dof as u16,
             )
         }
+    }
+
+    fn link(&mut self, src: u16, so: usize, dst: u16, dof: usize) -> i32 {
+        let (g, m, l) = self.tables();
+        // SAFETY: the plant's own tables, reached through the fixture's pointer.
+        unsafe { ffi::sl_group_add_link(g, m, l, src, so as u16, dst, dof as u16) }
     }
 
     /// The next cycle runs the sealed schedule (links as plain copies of their width).
     fn sealed(&self) -> bool {
-        let q = self.ptr();
-        // SAFETY: the plant's own tables, reached through the fixture's pointer.
-        unsafe {
-            ffi::sl_group_schedule_sealed(
-                addr_of_mut!((*q).g),
-                addr_of_mut!((*q).members).cast(),
-                addr_of_mut!((*q).links).cast(),
-            )
-        }
+        let (g, m, l) = self.tables();
+        // SAFETY: as in `link`.
+        unsafe { ffi::sl_group_schedule_sealed(g, m, l) }
     }
 
     fn cycle(&mut self, t: u32) -> i32 {
-        let q = self.ptr();
-        // SAFETY: the plant's own tables, reached through the fixture's pointer.
-        unsafe {
-            ffi::sl_group_cycle(
-                addr_of_mut!((*q).g),
-                addr_of_mut!((*q).members).cast(),
-                addr_of_mut!((*q).links).cast(),
-                t,
-            )
-        }
+        let (g, m, l) = self.tables();
+        // SAFETY: as in `link`.
+        unsafe { ffi::sl_group_cycle(g, m, l, t) }
     }
 }
 
