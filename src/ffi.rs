@@ -545,8 +545,8 @@ fn copy_field(src: *mut c_void, dst: *mut c_void, l: &SL_LINK) {
 /// Runs the block of type `B` at `p` as a group member (the sealed schedule's dispatch); a
 /// block reports no connection, so its outcome is a [`group::RanWord`].
 /// The group's bRun and bErrAck for the member come as one word (`run | ack << 8`): one
-/// argument, and the block's two adjacent bytes written as one store, which a following
-/// wider read of them can take from the store buffer.
+/// argument, and the block's two adjacent bytes written as one 16-bit store, which a
+/// following read of the same two bytes can take from the store buffer.
 type Runner = fn(*mut c_void, u16, u32, &mut group::Wiring) -> group::RanWord;
 
 fn run_as<B: Member>(
