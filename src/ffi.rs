@@ -376,8 +376,7 @@ impl CMembers {
     /// checked cycle found intact, so its own check is not repeated.
     #[inline(always)]
     fn sealed_entry(&self, i: usize) -> Option<SL_MEMBER> {
-        // SAFETY: as in `entry` (`i < count <= cap` entries at `base`); read by value.
-        (i < usize::from(self.count)).then(|| unsafe { self.base.add(i).read() })
+        self.sealed_entries().get(i).copied()
     }
 
     /// The entries `0..count` of a sealed cycle as a slice (the blocks, which run while it
