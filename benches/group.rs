@@ -256,7 +256,13 @@ fn main() {
     if let Some(i) = args.iter().position(|a| a == "--count") {
         // A callgrind run: the start-up and `cycles` group cycles.
         let cycles = args.get(i + 1).and_then(|c| c.parse().ok()).unwrap_or(1);
-        measure(MEMBERS, cycles);
+        // `--members M`: another group size (the fixed cost per cycle shows at 10).
+        let members = args
+            .iter()
+            .position(|a| a == "--members")
+            .and_then(|m| args.get(m + 1)?.parse().ok())
+            .unwrap_or(MEMBERS);
+        measure(members, cycles);
         return;
     }
     let quick = !std::env::args().any(|a| a == "--bench");

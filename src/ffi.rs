@@ -238,8 +238,8 @@ macro_rules! ffi_functions {
             None
         }
 
-        /// The sealed schedule's dispatch: type tag → runner (a table, not a search).
-        static RUNNERS: [Option<Runner>; {
+        /// [`RUNNERS`]' length: one slot per tag up to the largest.
+        const RUNNER_SLOTS: usize = {
             let tags = [$(<$ty as Registered>::INFO.tag),*];
             let mut max = 0;
             let mut i = 0;
@@ -250,20 +250,13 @@ macro_rules! ffi_functions {
                 i += 1;
             }
             max as usize + 1
-        }] = {
-            let mut t = [None; {
-                let tags = [$(<$ty as Registered>::INFO.tag),*];
-                let mut max = 0;
-                let mut i = 0;
-                while i < tags.len() {
-                    if tags[i] > max {
-                        max = tags[i];
-                    }
-                    i += 1;
-                }
-                max as usize + 1
-            }];
-            $(t[<$ty as Registered>::INFO.tag as usize] = Some(run_as::<$ty> as Runner);)*
+        };
+
+        /// The sealed schedule's dispatch: type tag → runner (a table, not a search; a tag
+        /// without a type runs nothing).
+        static RUNNERS: [Runner; RUNNER_SLOTS] = {
+            let mut t = [not_run as Runner; RUNNER_SLOTS];
+            $(t[<$ty as Registered>::INFO.tag as usize] = run_as::<$ty> as Runner;)*
             t
         };
 
@@ -376,12 +369,12 @@ impl CMembers {
     /// checked cycle found intact, so its own check is not repeated.
     #[inline(always)]
     fn sealed_entry(&self, i: usize) -> Option<SL_MEMBER> {
-        self.sealed_entries().get(i).copied()
+        self.entries().get(i).copied()
     }
 
-    /// The entries `0..count` of a sealed cycle as a slice (the blocks, which run while it
-    /// is held, share no byte with the table: sl_group_add_member).
-    fn sealed_entries(&self) -> &[SL_MEMBER] {
+    /// The entries `0..count` as a slice (the blocks, which run while a sealed cycle holds
+    /// it, share no byte with the table: sl_group_add_member).
+    fn entries(&self) -> &[SL_MEMBER] {
         if self.count == 0 {
             return &[];
         }
@@ -415,12 +408,8 @@ impl Members for CMembers {
             self.cap,
             links.count(),
         );
-        let lanes = group::schedule_table(lanes, usize::from(self.count), |i| {
-            // SAFETY: `i < count <= cap` entries at `base` (checked by `storage`); an entry
-            // is 16 bytes, 8-aligned, without padding: read by value as its two words.
-            Some(unsafe { self.base.add(i).cast::<[u64; 2]>().read() })
-        })?;
-        let lanes = group::schedule_table(lanes, links.count(), |i| links.words(i))?;
+        let lanes = group::schedule_table(lanes, self.entries(), group::member_words);
+        let lanes = group::schedule_table(lanes, links.as_slice(), group::link_words);
         Some(group::schedule_end(lanes))
     }
 
@@ -453,38 +442,38 @@ impl Members for CMembers {
         now: u32,
         w: &mut group::Wiring,
     ) -> group::Straight {
-        let entries = self.sealed_entries();
+        let entries = self.entries();
         let entries = entries.get(..members).unwrap_or(entries);
         let links = links.as_slice();
         let links = links.get(..link_count).unwrap_or(links);
         let mut i = at.0;
         // The links not copied yet.
         let mut rest = links.get(at.1..).unwrap_or_default();
-        let mut status = Status::Ok;
         // A bit of any state but RUN: the members that ran straight all ended in RUN iff 0.
         let mut not_run = 0u8;
         let mut ran = None;
-        'members: while let Some(e) = entries.get(i) {
+        'members: while let Some(&e) = entries.get(i) {
+            // The entry by value: the copies below write through raw pointers, which could
+            // otherwise be the entry's bytes for all the compiler knows (they are not: a
+            // block shares no byte with the tables), and would make it read the entry again.
             while let [l, tail @ ..] = rest {
                 if usize::from(l.nDstMember) != i {
                     break;
                 }
-                if l.nKind > group::SL_LINK_ANALOG32 {
+                let Some(width) = copy_width(l.nKind) else {
                     break 'members;
-                }
+                };
                 if let Some(src) = entries.get(usize::from(l.nSrcMember)) {
-                    copy_field(src.pBlock, e.pBlock, l);
+                    copy_field(src.pBlock, e.pBlock, l, width);
                 }
                 rest = tail;
             }
-            let word = run_entry(e, run, ack, now, w);
-            if word >= group::RAN_UNREACHABLE || word as u8 == SL_STATE_ERROR || w.pending() {
-                // RAN_NOT_RUN: its links are copied, the loop runs it.
+            let word = run_entry(&e, run, ack, now, w);
+            // A status other than SL_OK or a flag (bits 8 and up), or ERROR: the loop takes
+            // the outcome (RAN_NOT_RUN: its links are copied, the loop runs it).
+            if word >> 8 != 0 || word as u8 == SL_STATE_ERROR {
                 ran = (word & group::RAN_NOT_RUN == 0).then(|| group::Ran::of_word(word));
                 break;
-            }
-            if word >> 8 != 0 {
-                status = status.worst(Status::from_code((word >> 8) as u8 as i8 as i32));
             }
             not_run |= word as u8 ^ SL_STATE_RUN;
             i += 1;
@@ -493,7 +482,6 @@ impl Members for CMembers {
         group::Straight {
             member: i,
             link: k,
-            status,
             all_run: not_run == 0,
             ran,
         }
@@ -502,8 +490,12 @@ impl Members for CMembers {
     fn copy_sealed(&mut self, l: &SL_LINK) {
         // Both ends were checked to be members when the link was added.
         let block = |m: u16| self.sealed_entry(usize::from(m)).map(|e| e.pBlock);
-        if let (Some(src), Some(dst)) = (block(l.nSrcMember), block(l.nDstMember)) {
-            copy_field(src, dst, l);
+        if let (Some(src), Some(dst), Some(width)) = (
+            block(l.nSrcMember),
+            block(l.nDstMember),
+            copy_width(l.nKind),
+        ) {
+            copy_field(src, dst, l, width);
         }
     }
 }
@@ -512,15 +504,35 @@ impl Members for CMembers {
 /// type without one).
 #[inline(always)]
 fn run_entry(e: &SL_MEMBER, run: u8, ack: u8, now: u32, w: &mut group::Wiring) -> group::RanWord {
-    match RUNNERS.get(usize::from(e.nType)).copied().flatten() {
+    match RUNNERS.get(usize::from(e.nType)) {
         Some(runner) => runner(e.pBlock, u16::from_le_bytes([run, ack]), now, w),
         None => group::RAN_NOT_RUN,
     }
 }
 
-/// A BOOL or analog link of a sealed cycle: its value from block `src` to block `dst`.
+/// The width of what a link copies: a BOOL, a 16-bit or a 32-bit analog value.
+#[derive(Clone, Copy)]
+enum Width {
+    Byte,
+    Half,
+    Word,
+}
+
+/// The width a link of this kind copies; `None`: not a copy (an RXBIT / TXBIT link).
 #[inline(always)]
-fn copy_field(src: *mut c_void, dst: *mut c_void, l: &SL_LINK) {
+fn copy_width(kind: u8) -> Option<Width> {
+    match kind {
+        SL_LINK_BOOL => Some(Width::Byte),
+        group::SL_LINK_ANALOG16 => Some(Width::Half),
+        group::SL_LINK_ANALOG32 => Some(Width::Word),
+        _ => None,
+    }
+}
+
+/// A BOOL or analog link of a sealed cycle (`width`: its kind's): its value from block
+/// `src` to block `dst`.
+#[inline(always)]
+fn copy_field(src: *mut c_void, dst: *mut c_void, l: &SL_LINK, width: Width) {
     // SAFETY: the link's fields were checked when it was added (an output of the source's
     // type at nSrcOffset, an input of the same type and width at nDstOffset), inside blocks
     // that are live and share no byte with the tables (sl_group_add_member); the tables are
@@ -529,12 +541,12 @@ fn copy_field(src: *mut c_void, dst: *mut c_void, l: &SL_LINK) {
     unsafe {
         let from = src.cast::<u8>().add(usize::from(l.nSrcOffset));
         let to = dst.cast::<u8>().add(usize::from(l.nDstOffset));
-        match l.nKind {
-            SL_LINK_BOOL => to.write(from.read()),
-            group::SL_LINK_ANALOG16 => to
+        match width {
+            Width::Byte => to.write(from.read()),
+            Width::Half => to
                 .cast::<u16>()
                 .write_unaligned(from.cast::<u16>().read_unaligned()),
-            _ => to
+            Width::Word => to
                 .cast::<u32>()
                 .write_unaligned(from.cast::<u32>().read_unaligned()),
         }
@@ -548,7 +560,7 @@ fn copy_field(src: *mut c_void, dst: *mut c_void, l: &SL_LINK) {
 /// following read of the same two bytes can take from the store buffer.
 type Runner = fn(*mut c_void, u16, u32, &mut group::Wiring) -> group::RanWord;
 
-fn run_as<B: Member>(
+fn run_as<B: Member + Registered>(
     p: *mut c_void,
     drive: u16,
     now: u32,
@@ -558,10 +570,23 @@ fn run_as<B: Member>(
         Ok(b) => {
             let [run, ack] = drive.to_le_bytes();
             let r = b.run_in_group(run, ack, now, w);
-            group::Ran::word(r.status, r.state)
+            let word = group::Ran::word(r.status, r.state);
+            // Only a CONNECTION SHUTDOWN block can leave a request for the group (a constant
+            // test for every other type): the member loop takes it.
+            if B::INFO.tag == crate::blocks::connshutdown::SL_TYPE_CONNECTION_SHUTDOWN {
+                word | group::RAN_HAND_BACK
+            } else {
+                word
+            }
         }
         Err(_) => group::RAN_UNREACHABLE,
     }
+}
+
+/// The runner of a tag without a type: nothing runs straight (an FSoE connection, run by
+/// the member loop through the type dispatch, or a tag no entry can hold).
+fn not_run(_: *mut c_void, _: u16, _: u32, _: &mut group::Wiring) -> group::RanWord {
+    group::RAN_NOT_RUN
 }
 
 /// Link storage read by value through the raw pointer.
@@ -602,17 +627,6 @@ impl group::Links for CLinks {
         // SAFETY: non-null, `i < cap` entries at `base` (sl_group_init contract); read by
         // value, unaligned (with no link left, `storage` checked no alignment).
         unsafe { self.base.add(i).read_unaligned() == SL_LINK::default() }
-    }
-    fn words(&self, i: usize) -> Option<[u64; 2]> {
-        // SAFETY: as in `get`; a link is 12 bytes without padding: read as a 64-bit and a
-        // 32-bit word (2-aligned, so unaligned reads).
-        (i < self.count).then(|| unsafe {
-            let p = self.base.add(i).cast::<u8>();
-            [
-                p.cast::<u64>().read_unaligned(),
-                u64::from(p.add(8).cast::<u32>().read_unaligned()),
-            ]
-        })
     }
 }
 

@@ -93,8 +93,13 @@ pub const RAN_UNREACHABLE: RanWord = 1 << 16;
 /// [`RanWord`] flag: the member is not a block the schedule runs straight (an FSoE
 /// connection, or storage without runners): not run, the member loop runs it.
 pub const RAN_NOT_RUN: RanWord = 1 << 17;
-// `run_straight` tells both flags from every block outcome by one `>= RAN_UNREACHABLE`.
-const _: () = assert!(RAN_NOT_RUN > RAN_UNREACHABLE && RAN_NOT_RUN & RAN_UNREACHABLE == 0);
+/// [`RanWord`] flag: the block ran and its outcome is in the word, but the member loop
+/// must see it (a CONNECTION SHUTDOWN block: it may have left a request for the group).
+pub const RAN_HAND_BACK: RanWord = 1 << 18;
+// Three distinct flags above the status byte: `run_straight` tells a flag or a status other
+// than SL_OK from every plain outcome by one `word >> 8 != 0`.
+const _: () =
+    assert!(RAN_UNREACHABLE >> 16 == 1 && RAN_NOT_RUN >> 16 == 2 && RAN_HAND_BACK >> 16 == 4);
 
 impl Ran {
     /// The word of a block's outcome (a block reports no connection). Every status code
@@ -156,12 +161,6 @@ impl Wiring {
     /// bShutdown of the connection(s) with Connection ID `id` (FALSE when none ran yet).
     pub fn conn_shutdown(&self, id: u16) -> u8 {
         u8::from(self.conns[..self.n].iter().any(|e| e.1 == id && e.2))
-    }
-    /// A CONNECTION SHUTDOWN block's request waits for the group (the straight run hands
-    /// back).
-    #[inline(always)]
-    pub fn pending(&self) -> bool {
-        self.request.is_some()
     }
     /// A CONNECTION SHUTDOWN block's bShutdownRequest for Connection ID `id`.
     pub fn request(&mut self, id: u16, value: u8) {
@@ -689,26 +688,48 @@ pub const LANES: usize = 4;
 /// The schedule check's running values ([`LANES`]).
 pub type Lanes = [u64; LANES];
 
-/// Every entry of a table into the lanes: `n` entries, `words(i)` the two words of entry
-/// `i` (`None`: the table cannot be read, no check).
+/// Every entry of a table into the lanes, entry `i` into lane `i % LANES`; `words`: an
+/// entry's bytes as two words.
 #[inline(always)]
-pub fn schedule_table(
-    mut lanes: Lanes,
-    n: usize,
-    mut words: impl FnMut(usize) -> Option<[u64; 2]>,
-) -> Option<Lanes> {
-    let whole = n - n % LANES;
-    for i in (0..whole).step_by(LANES) {
-        for (j, lane) in lanes.iter_mut().enumerate() {
-            let [w0, w1] = words(i + j)?;
+pub fn schedule_table<T>(mut lanes: Lanes, table: &[T], words: impl Fn(&T) -> [u64; 2]) -> Lanes {
+    let mut rounds = table.chunks_exact(LANES);
+    for round in &mut rounds {
+        for (lane, t) in lanes.iter_mut().zip(round) {
+            let [w0, w1] = words(t);
             *lane = schedule_words(*lane, w0, w1);
         }
     }
-    for (j, lane) in lanes.iter_mut().enumerate().take(n - whole) {
-        let [w0, w1] = words(whole + j)?;
+    for (lane, t) in lanes.iter_mut().zip(rounds.remainder()) {
+        let [w0, w1] = words(t);
         *lane = schedule_words(*lane, w0, w1);
     }
-    Some(lanes)
+    lanes
+}
+
+/// A member entry's bytes as words for the schedule check (the block's address, then the
+/// type and the entry's own check).
+#[inline(always)]
+pub fn member_words(e: &SL_MEMBER) -> [u64; 2] {
+    let [t0, t1] = e.nType.to_le_bytes();
+    let [r0, r1, r2, r3, r4, r5] = e.aReserved;
+    [
+        e.pBlock as usize as u64,
+        u64::from_le_bytes([t0, t1, r0, r1, r2, r3, r4, r5]),
+    ]
+}
+
+/// A link's bytes as words for the schedule check (bytes 0–7, bytes 8–11).
+#[inline(always)]
+pub fn link_words(l: &SL_LINK) -> [u64; 2] {
+    let [a0, a1] = l.nSrcMember.to_le_bytes();
+    let [b0, b1] = l.nSrcOffset.to_le_bytes();
+    let [c0, c1] = l.nDstMember.to_le_bytes();
+    let [d0, d1] = l.nDstOffset.to_le_bytes();
+    let [r0, r1, r2] = l.aReserved;
+    [
+        u64::from_le_bytes([a0, a1, b0, b1, c0, c1, d0, d1]),
+        u64::from(u32::from_le_bytes([l.nKind, r0, r1, r2])),
+    ]
 }
 
 /// One member entry (its two 64-bit words) or one link (its 64-bit and 32-bit words) into
@@ -772,19 +793,6 @@ pub trait Links {
     /// group's links is the caller's (a longer array).
     fn unused(&self, _i: usize) -> bool {
         true
-    }
-    /// Entry `i`'s bytes as words for the schedule check (bytes 0–7, bytes 8–11).
-    fn words(&self, i: usize) -> Option<[u64; 2]> {
-        let l = self.get(i)?;
-        let [a0, a1] = l.nSrcMember.to_le_bytes();
-        let [b0, b1] = l.nSrcOffset.to_le_bytes();
-        let [c0, c1] = l.nDstMember.to_le_bytes();
-        let [d0, d1] = l.nDstOffset.to_le_bytes();
-        let [r0, r1, r2] = l.aReserved;
-        Some([
-            u64::from_le_bytes([a0, a1, b0, b1, c0, c1, d0, d1]),
-            u64::from(u32::from_le_bytes([l.nKind, r0, r1, r2])),
-        ])
     }
 }
 
@@ -1320,7 +1328,6 @@ pub fn cycle_traced<M: Members + ?Sized, L: Links + ?Sized>(
                 now,
                 &mut w,
             );
-            status = status.worst(s.status);
             all_run &= s.all_run;
             *straight += s.member - i;
             (i, next_link, ran_straight) = (s.member, s.link, s.ran);
@@ -1455,19 +1462,18 @@ pub fn cycle_traced<M: Members + ?Sized, L: Links + ?Sized>(
 ///
 /// The straight run (docs/performance.md, [`Members::run_straight`]): for a member whose
 /// incoming links are all BOOL or analog copies and which ends its cycle as a block (not a
-/// connection) outside ERROR, with no connection request pending, all the member loop does
-/// is copy the links, run it, and fold its status and state into the group's — so that is
+/// connection, not a CONNECTION SHUTDOWN block) outside ERROR with SL_OK, all the member
+/// loop does is copy the links, run it, and fold its state into the group's — so that is
 /// all the straight run does, with no per-member bookkeeping beyond it. It hands back at the
 /// first member that needs more: before an FSoE bit link, or after a run whose outcome the
-/// loop must see (a member that cannot be reached, ERROR, a connection, a request). The
-/// group's state does not change while it runs, so `run` holds throughout.
+/// loop must see (a member that cannot be reached, ERROR, another status, a connection, a
+/// CONNECTION SHUTDOWN block, which may leave a request). The group's state does not change
+/// while it runs, so `run` holds throughout.
 pub struct Straight {
     /// The member the loop goes on with (the member count: all ran).
     pub member: usize,
     /// The next link.
     pub link: usize,
-    /// The worst status of the members that ran straight.
-    pub status: Status,
     /// Every member that ran straight ended its cycle in RUN.
     pub all_run: bool,
     /// `Some(outcome)`: `member` already ran (its outcome goes through the loop's steps);
@@ -1481,7 +1487,6 @@ impl Straight {
         Straight {
             member: at.0,
             link: at.1,
-            status: Status::Ok,
             all_run: true,
             ran: None,
         }
@@ -1611,7 +1616,7 @@ mod tests {
             let table: Vec<[u64; 2]> = words(n).map(|(a, b)| [a, b]).collect();
             let check = |t: &[[u64; 2]]| {
                 let lanes = schedule_start(0x1000, 0x2000, n as u16, 16, 3);
-                schedule_table(lanes, t.len(), |i| t.get(i).copied()).map(schedule_end)
+                Some(schedule_end(schedule_table(lanes, t, |w| *w)))
             };
             let base = check(&table).unwrap();
             for i in 0..n {
@@ -1639,12 +1644,6 @@ mod tests {
                 }
                 assert_ne!(check(&t), Some(base), "lanes 0 and 1 of {n} traded");
             }
-            // A table that cannot be read gives no check.
-            let lanes = schedule_start(0x1000, 0x2000, n as u16, 16, 3);
-            assert_eq!(
-                schedule_table(lanes, n + 1, |i| table.get(i).copied()),
-                None
-            );
         }
     }
 

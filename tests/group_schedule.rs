@@ -265,6 +265,7 @@ fn a_sealed_group_gives_what_a_fully_checked_group_gives() {
     let (mut sealed_cycles, mut group_states, mut corrupt_stops) =
         (0, std::collections::BTreeSet::new(), 0);
     let (mut straight_cycles, mut handed_back, mut invalid_bools) = (0, 0, 0);
+    let mut status_hand_backs = 0;
     let mut now = 1000u32;
     let mut restart_until = 0;
     for c in 0..cycles {
@@ -322,8 +323,9 @@ fn a_sealed_group_gives_what_a_fully_checked_group_gives() {
             "cycle {c}: the groups differ (A sealed: {was_sealed})"
         );
         // Only a sealed cycle runs members straight: all of them but those that end the
-        // cycle in ERROR, which go back to the member loop (this plant has no connection,
-        // FSoE link or request, the other hand-backs).
+        // cycle in ERROR or with a status other than SL_OK (here only the ESTOP given an
+        // invalid BOOL, case 5, when it is not in ERROR), which go back to the member loop
+        // (this plant has no connection, FSoE link or request, the other hand-backs).
         assert_eq!(straight_b, 0, "cycle {c}: B is never sealed");
         if !was_sealed {
             assert_eq!(
@@ -332,13 +334,15 @@ fn a_sealed_group_gives_what_a_fully_checked_group_gives() {
             );
         } else {
             let errors = in_error(&a);
+            let invalid = usize::from((r >> 16) % 16 == 5 && a.estops[k].nState != SL_STATE_ERROR);
             assert_eq!(
                 straight,
-                MEMBERS - errors,
-                "cycle {c}: sealed, {errors} members in ERROR"
+                MEMBERS - errors - invalid,
+                "cycle {c}: sealed, {errors} members in ERROR, {invalid} with SL_E_INVALID_BOOL"
             );
-            straight_cycles += usize::from(errors == 0);
+            straight_cycles += usize::from(errors + invalid == 0);
             handed_back += usize::from(errors > 0);
+            status_hand_backs += invalid;
         }
         invalid_bools += usize::from(was_sealed && sa == SL_E_INVALID_BOOL);
         group_states.insert(a.group.nState);
@@ -364,14 +368,14 @@ fn a_sealed_group_gives_what_a_fully_checked_group_gives() {
             (a, b) = (build(), build());
         }
     }
-    println!("A sealed in {sealed_cycles} of {cycles} cycles ({straight_cycles} with every member run straight, {handed_back} with members in ERROR handed back, {invalid_bools} with SL_E_INVALID_BOOL); group states {group_states:?}; corruptions stopped {corrupt_stops}");
+    println!("A sealed in {sealed_cycles} of {cycles} cycles ({straight_cycles} with every member run straight, {handed_back} with members in ERROR handed back, {invalid_bools} with SL_E_INVALID_BOOL, {status_hand_backs} of them handed back for it outside ERROR); group states {group_states:?}; corruptions stopped {corrupt_stops}");
     assert!(
         straight_cycles >= 100 / scale && handed_back >= 100 / scale,
         "straight {straight_cycles}, handed back {handed_back}: both are the subject"
     );
     assert!(
-        invalid_bools >= 20 / scale,
-        "only {invalid_bools} sealed cycles with an invalid BOOL"
+        invalid_bools >= 20 / scale && status_hand_backs >= 20 / scale,
+        "only {invalid_bools} sealed cycles with an invalid BOOL, {status_hand_backs} handed back for it"
     );
     assert!(
         sealed_cycles * 10 >= cycles * 9,
