@@ -2781,8 +2781,10 @@ typedef struct SL_GUARD_PRIVATE {
   struct SL_PRIVATE_HEADER stHeader;
   /*
    Latched times in ms: discrepancy times of pairs 1-4, EDM1 and EDM2 reset times,
-   output delay, reserved. Full width, in the order of the live fields: the fast path
-   compares them with the live ones as whole words (docs/performance.md).
+   output delay; then the input masks, wInputActive | wInputNegated << 16 (this family
+   keeps them here, not in the header's 8-bit fields, which stay 0). Full width, in the
+   order of the live fields: the fast path compares them with the live ones as whole
+   words (docs/performance.md).
    */
   uint32_t adwTime[8];
   /*

@@ -1158,16 +1158,42 @@ fn corrupted_high_half_of_a_latched_time_is_corrupt_not_param_changed() {
     altered_latched_time_is_corrupt(|t, _| t.iter_mut().for_each(|w| *w |= 1 << 20));
 }
 
+/// Every bit of the latched copy, the input masks in its last word (wInputActive |
+/// wInputNegated << 16) included, of a running ESTOP and MON: a flipped bit is SL_E_CORRUPT,
+/// not a parameter change (the copy no longer equals the live fields, and its CRC covers
+/// every bit of it).
+#[test]
+fn every_bit_of_the_latched_copy_is_corrupt_not_param_changed() {
+    for (word, bit) in (0..8).flat_map(|w| (0..32).map(move |b| (w, b))) {
+        let mut e = running(estop_pair());
+        e.fb.stPrivate.adwTime[word] ^= 1 << bit;
+        assert_eq!(e.adv(1), SL_E_CORRUPT, "ESTOP word {word}, bit {bit}");
+        expect(&e.fb, SL_STATE_ERROR);
+        let mut m = running(mon_pair());
+        m.fb.stPrivate.adwTime[word] ^= 1 << bit;
+        assert_eq!(m.adv(1), SL_E_CORRUPT, "MON word {word}, bit {bit}");
+        expect(&m.fb, SL_STATE_ERROR);
+    }
+}
+
 /// C3 "The latched copy carries a CRC-16 ... verified before the outputs are enabled": a
 /// corruption of the copy that no live parameter reveals stops the restart.
 #[test]
 fn latched_copy_is_verified_before_the_outputs_are_enabled() {
-    let mut s = Sim::new(estop_pair(), T0);
+    let mut fb = estop_pair();
+    fb.tEStopDelOutDelay = 250;
+    let mut s = Sim::new(fb, T0);
     s.start_up(SL_STATE_SAFE);
     s.fb.bRestart = 1;
     s.step(1, SL_STATE_START);
-    let last = s.fb.stPrivate.adwTime.len() - 1; // the reserved word, compared with nothing
-    s.fb.stPrivate.adwTime[last] ^= 0x0100;
+    // Every latched word is compared with its live field, so only a corruption that the
+    // live field repeats goes unseen by the compare: the latched output delay and the live
+    // one changed alike.
+    let d = (s.fb.stPrivate.adwTime.iter())
+        .position(|&t| t == 250)
+        .unwrap();
+    s.fb.stPrivate.adwTime[d] = 7;
+    s.fb.tEStopDelOutDelay = 7;
     s.fb.bRestart = 0;
     assert_eq!(s.adv(1), SL_E_CORRUPT);
     expect(&s.fb, SL_STATE_ERROR);

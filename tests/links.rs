@@ -14,7 +14,7 @@ use std::ptr::addr_of_mut;
 
 struct Plant {
     g: SL_GROUP,
-    members: [SL_MEMBER; 6],
+    members: [SL_MEMBER; 8],
     links: [SL_LINK; 8],
     estop: FB_ESTOP,
     and: FB_AND,
@@ -22,6 +22,8 @@ struct Plant {
     mul: FB_MUL_INT,
     div: FB_DIV_INT,
     uadd: FB_ADD_UINT,
+    dadd: FB_ADD_DINT,
+    dmul: FB_MUL_DINT,
 }
 
 /// The plant behind one raw pointer (`common::RawBox`).
@@ -31,7 +33,7 @@ impl Plant {
     fn boxed() -> Fixture {
         let f = Fixture::new(Plant {
             g: SL_GROUP::default(),
-            members: [SL_MEMBER::default(); 6],
+            members: [SL_MEMBER::default(); 8],
             links: [SL_LINK::default(); 8],
             estop: FB_ESTOP {
                 wInputActive: 0b11,
@@ -57,6 +59,14 @@ impl Plant {
                 wInputActive: ARITH_ACTIVE,
                 ..Default::default()
             },
+            dadd: FB_ADD_DINT {
+                wInputActive: ARITH_ACTIVE,
+                ..Default::default()
+            },
+            dmul: FB_MUL_DINT {
+                wInputActive: ARITH_ACTIVE,
+                ..Default::default()
+            },
         });
         let q = f.ptr();
         // SAFETY: every pointer is to a field of the boxed plant, derived from `q`, alive
@@ -66,13 +76,13 @@ impl Plant {
                 ffi::sl_group_init(
                     addr_of_mut!((*q).g),
                     addr_of_mut!((*q).members).cast(),
-                    6,
+                    8,
                     addr_of_mut!((*q).links).cast(),
                     8
                 ),
                 SL_OK
             );
-            let blocks: [(u16, *mut c_void); 6] = [
+            let blocks: [(u16, *mut c_void); 8] = [
                 (SL_TYPE_ESTOP, addr_of_mut!((*q).estop).cast()),
                 (SL_TYPE_AND, addr_of_mut!((*q).and).cast()),
                 (
@@ -90,6 +100,14 @@ impl Plant {
                 (
                     safelogic::blocks::arith::SL_TYPE_ADD_UINT,
                     addr_of_mut!((*q).uadd).cast(),
+                ),
+                (
+                    safelogic::blocks::arith::SL_TYPE_ADD_DINT,
+                    addr_of_mut!((*q).dadd).cast(),
+                ),
+                (
+                    safelogic::blocks::arith::SL_TYPE_MUL_DINT,
+                    addr_of_mut!((*q).dmul).cast(),
                 ),
             ];
             for (ty, b) in blocks {
@@ -203,6 +221,45 @@ fn analog_chain_beside_a_boolean_chain() {
         (p.estop.bEStopOut, p.and.bAndOut, p.mul.nAnalogOut),
         (0, 0, 0)
     );
+}
+
+/// Sealed cycles copy the source's value of this cycle through a link of every width: a
+/// 16-bit and a 32-bit value (above 16 bits) that change in every cycle reach their
+/// destinations before those run.
+#[test]
+fn sealed_cycles_copy_every_width_as_the_source_changes() {
+    let mut p = Plant::boxed();
+    assert_eq!(p.link(2, ADD_OUT, 3, MUL_IN1), SL_OK);
+    assert_eq!(
+        p.link(
+            6,
+            offset_of!(FB_ADD_DINT, nAnalogOut),
+            7,
+            offset_of!(FB_MUL_DINT, nAnalogIn1)
+        ),
+        SL_OK
+    );
+    let kinds: Vec<u8> = p.links[..2].iter().map(|l| l.nKind).collect();
+    assert_eq!(kinds, [SL_LINK_ANALOG16, SL_LINK_ANALOG32]);
+    (p.mul.nAnalogIn2, p.dmul.nAnalogIn2) = (2, 2);
+    p.g.bRun = 1;
+    assert_eq!(p.cycle(0), SL_OK);
+    for k in 1..6 {
+        assert!(p.sealed(), "cycle {k}");
+        (p.add.nAnalogIn1, p.add.nAnalogIn2) = (k as i16, 1);
+        (p.dadd.nAnalogIn1, p.dadd.nAnalogIn2) = (100_000 * k, 1);
+        assert_eq!(p.cycle(10 * k as u32), SL_OK);
+        assert_eq!(
+            (p.mul.nAnalogIn1, p.mul.nAnalogOut),
+            (k as i16 + 1, 2 * (k as i16 + 1)),
+            "cycle {k}"
+        );
+        assert_eq!(
+            (p.dmul.nAnalogIn1, p.dmul.nAnalogOut),
+            (100_000 * k + 1, 2 * (100_000 * k + 1)),
+            "cycle {k}"
+        );
+    }
 }
 
 #[test]

@@ -16,8 +16,10 @@ use crate::types::*;
 pub struct SL_GUARD_PRIVATE {
     pub stHeader: SL_PRIVATE_HEADER,
     /// Latched times in ms: discrepancy times of pairs 1-4, EDM1 and EDM2 reset times,
-    /// output delay, reserved. Full width, in the order of the live fields: the fast path
-    /// compares them with the live ones as whole words (docs/performance.md).
+    /// output delay; then the input masks, wInputActive | wInputNegated << 16 (this family
+    /// keeps them here, not in the header's 8-bit fields, which stay 0). Full width, in the
+    /// order of the live fields: the fast path compares them with the live ones as whole
+    /// words (docs/performance.md).
     pub adwTime: [u32; 8],
     /// Start times of the pair discrepancy timers.
     pub atDiscStart: [u32; 4],
@@ -33,9 +35,22 @@ const _: () = assert!(core::mem::size_of::<SL_PRIVATE_HEADER>() == 28);
 pub(crate) const T_EDM1: usize = 4;
 pub(crate) const T_EDM2: usize = 5;
 pub(crate) const T_DELAY: usize = 6;
+/// The latched input masks in `adwTime` (wInputActive | wInputNegated << 16).
+pub(crate) const T_MASKS: usize = 7;
+
+impl SL_GUARD_PRIVATE {
+    /// The latched wInputActive (the inputs are bits 0–7 of every valid set).
+    pub(crate) fn active(&self) -> u8 {
+        self.adwTime[T_MASKS] as u8
+    }
+    /// The latched wInputNegated.
+    pub(crate) fn negated(&self) -> u8 {
+        (self.adwTime[T_MASKS] >> 16) as u8
+    }
+}
 
 /// Guard parameters as the user wrote them.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, Default, Eq)]
 pub struct GuardParams {
     pub disc: [u32; 4],
     pub edm_reset: [u32; 2],
@@ -43,6 +58,37 @@ pub struct GuardParams {
     pub active: u16,
     pub negated: u16,
     pub options: u32,
+}
+
+impl GuardParams {
+    /// The times and the masks as the latched copy holds them (`adwTime`), two to a word.
+    #[inline(always)]
+    fn words(&self) -> [u64; 4] {
+        let pair = |lo: u32, hi: u32| u64::from(lo) | u64::from(hi) << 32;
+        let [d0, d1, d2, d3] = self.disc;
+        let [e1, e2] = self.edm_reset;
+        let masks = u32::from(self.active) | u32::from(self.negated) << 16;
+        [
+            pair(d0, d1),
+            pair(d2, d3),
+            pair(e1, e2),
+            pair(self.delay, masks),
+        ]
+    }
+}
+
+/// Equal when every field is, as the derived comparison would say, but as the XOR of
+/// whole words: for ESTOP, whose live fields lie in the latched copy's order, the compiler
+/// reads both sides as four 64-bit words (the fast path's parameter check).
+impl PartialEq for GuardParams {
+    #[inline(always)]
+    fn eq(&self, o: &Self) -> bool {
+        let (a, b) = (self.words(), o.words());
+        let diff = (0..4).fold(u64::from(self.options ^ o.options), |d, i| {
+            d | (a[i] ^ b[i])
+        });
+        diff == 0
+    }
 }
 
 /// Raw input bytes of one cycle.
@@ -108,16 +154,21 @@ pub(crate) fn manual_restart<T: GuardBlock>(options: u16) -> bool {
     T::ALWAYS_MANUAL || u32::from(options) & SL_OPT_MANUAL_RESTART != 0
 }
 
-/// CRC of a guard block's latched parameters: the times' low halves and the OR of their
-/// high halves, which is 0 in every valid set (a time is at most `SL_TIME_PARAM_MAX`). A
-/// corrupted high half is found as well, at the CRC length of 16-bit times: the CRC runs
-/// wherever an output switches on, and 32-bit times cost MON 10 ns per such call.
+/// CRC of a guard block's latched parameters: the times' low halves, the masks' low bytes,
+/// and the OR of the times' high halves and the masks' high bytes, which is 0 in every
+/// valid set (a time is at most `SL_TIME_PARAM_MAX`, the inputs are bits 0–7). A corrupted
+/// high part is found as well, at the CRC length of 16-bit times: the CRC runs wherever an
+/// output switches on, and 32-bit times cost MON 10 ns per such call.
 pub(crate) fn latched_crc<T: GuardBlock>(p: &SL_GUARD_PRIVATE) -> u16 {
-    let h = &p.stHeader;
-    let t = &p.adwTime;
-    let high = t.iter().fold(0, |o, &x| o | x >> 16) as u16;
-    let words: [u16; 9] = core::array::from_fn(|i| t.get(i).map_or(high, |&x| x as u16));
-    param_crc(T::TAG, h.nActive, h.nNegated, h.wOptions, &words)
+    let [times @ .., masks] = p.adwTime;
+    let [active, active_high, negated, negated_high] = masks.to_le_bytes();
+    let high = times
+        .iter()
+        .fold(u16::from(active_high | negated_high), |o, &x| {
+            o | (x >> 16) as u16
+        });
+    let words: [u16; 8] = core::array::from_fn(|i| times.get(i).map_or(high, |&x| x as u16));
+    param_crc(T::TAG, active, negated, p.stHeader.wOptions, &words)
 }
 
 /// Outputs switch on: verify the latched parameters first (ABI §3.6 integrity), then RUN
@@ -156,8 +207,8 @@ macro_rules! guard_block {
                         disc: [t[0], t[1], t[2], t[3]],
                         edm_reset: [t[T_EDM1], t[T_EDM2]],
                         delay: t[T_DELAY],
-                        active: u16::from(p.stHeader.nActive),
-                        negated: u16::from(p.stHeader.nNegated),
+                        active: t[T_MASKS] as u16,
+                        negated: (t[T_MASKS] >> 16) as u16,
                         options: u32::from(p.stHeader.wOptions),
                     }
                 }
@@ -196,10 +247,8 @@ macro_rules! guard_block {
                         p.edm_reset[0],
                         p.edm_reset[1],
                         p.delay,
-                        0,
+                        u32::from(p.active) | u32::from(p.negated) << 16,
                     ];
-                    q.stHeader.nActive = p.active as u8;
-                    q.stHeader.nNegated = p.negated as u8;
                     q.stHeader.wOptions = p.options as u16;
                 }
 
@@ -209,10 +258,11 @@ macro_rules! guard_block {
 
                 fn decode(&mut self) -> (GuardIn, bool) {
                     let raw = self.raw();
-                    let h = &mut self.private_mut().stHeader;
+                    let p = self.private_mut();
+                    let (active, negated) = (p.active(), p.negated());
+                    let h = &mut p.stHeader;
                     let packed = bools::pack(raw.inputs);
-                    let active = h.nActive;
-                    let logical = bools::logical(packed, active, h.nNegated);
+                    let logical = bools::logical(packed, active, negated);
                     let restart = bools::edge(raw.restart, &mut h.nFlags, F_RESTART_PREV);
                     let options = u32::from(h.wOptions);
                     let edm = Edm {
@@ -326,10 +376,11 @@ macro_rules! guard_block {
                             }
                         }
                         SL_STATE_FUNCTEST => {
+                            let active = p.active();
                             let h = &mut p.stHeader;
                             h.wAux |= u16::from(inp.test_req) << 8;
                             let tested = (h.wAux >> 8) as u8 & Self::TEST_INPUTS;
-                            if tested == h.nActive & Self::TEST_INPUTS {
+                            if tested == active & Self::TEST_INPUTS {
                                 SL_STATE_SAFE
                             } else {
                                 SL_STATE_FUNCTEST
