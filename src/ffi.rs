@@ -569,8 +569,7 @@ fn run_as<B: Member + Registered>(
     match instance(p.cast::<B>()) {
         Ok(b) => {
             let [run, ack] = drive.to_le_bytes();
-            let r = b.run_in_group(run, ack, now, w);
-            let word = group::Ran::word(r.status, r.state);
+            let word = b.run_word(run, ack, now, w);
             // Only a CONNECTION SHUTDOWN block can leave a request for the group (a constant
             // test for every other type): the member loop takes it.
             if B::INFO.tag == crate::blocks::connshutdown::SL_TYPE_CONNECTION_SHUTDOWN {

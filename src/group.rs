@@ -57,6 +57,14 @@ pub trait Member {
             conn: None,
         }
     }
+    /// [`Member::run_in_group`] as the sealed schedule's runners return it ([`RanWord`]).
+    /// A block's own form runs the fast path inline and reaches the rest of the cycle by a
+    /// tail call ([`settle_word`]), so the runner needs no stack frame when the fast path
+    /// serves the call.
+    fn run_word(&mut self, run: u8, ack: u8, now: u32, w: &mut Wiring) -> RanWord {
+        let r = self.run_in_group(run, ack, now, w);
+        Ran::word(r.status, r.state)
+    }
     /// The (received, sent) SafeData bits an RXBIT / TXBIT link may name: those of an FSoE
     /// connection; none of a block.
     fn safe_data_bits(&self) -> (u16, u16) {
@@ -120,6 +128,14 @@ impl Ran {
             conn: None,
         })
     }
+}
+
+/// The rest of a block's cycle when its fast path did not serve the call, with the outcome
+/// as a [`RanWord`]: out of line, so that the runner reaches it by a tail call.
+#[inline(never)]
+pub fn settle_word<B: crate::prim::envelope::Block + Member>(fb: &mut B, now: u32) -> RanWord {
+    let status = fb.settle(now);
+    Ran::word(status, fb.state())
 }
 
 /// What the group reads of an FSoE connection after its cycle.
@@ -370,6 +386,26 @@ macro_rules! impl_member {
                     state: self.nState,
                     conn: None,
                 }
+            }
+            #[inline(always)]
+            fn run_word(
+                &mut self,
+                run: u8,
+                ack: u8,
+                now: u32,
+                w: &mut $crate::group::Wiring,
+            ) -> $crate::group::RanWord {
+                if <Self as $crate::registry::Registered>::INFO.tag
+                    == $crate::blocks::connshutdown::SL_TYPE_CONNECTION_SHUTDOWN
+                {
+                    let r = self.run_in_group(run, ack, now, w);
+                    return $crate::group::Ran::word(r.status, r.state);
+                }
+                self.drive(run, ack);
+                if $crate::prim::envelope::Block::fast(self, now) {
+                    return $crate::group::Ran::word($crate::Status::Ok, self.nState);
+                }
+                $crate::group::settle_word(self, now)
             }
         }
     };

@@ -1156,6 +1156,10 @@ fn corrupted_latched_parameter_copy_is_corrupt_not_param_changed() {
 fn corrupted_high_half_of_a_latched_time_is_corrupt_not_param_changed() {
     altered_latched_time_is_corrupt(|t, d| t[d] |= 1 << 20);
     altered_latched_time_is_corrupt(|t, _| t.iter_mut().for_each(|w| *w |= 1 << 20));
+    // Two high halves with the same bit, and both masks' high bytes in the copy's last word
+    // (wInputActive | wInputNegated << 16) with the same bit: even numbers of equal changes.
+    altered_latched_time_is_corrupt(|t, _| t[..2].iter_mut().for_each(|w| *w |= 1 << 20));
+    altered_latched_time_is_corrupt(|t, _| t[7] |= 1 << 8 | 1 << 24);
 }
 
 /// Every bit of the latched copy, the input masks in its last word (wInputActive |

@@ -50,7 +50,7 @@ impl SL_GUARD_PRIVATE {
 }
 
 /// Guard parameters as the user wrote them.
-#[derive(Clone, Copy, Debug, Default, Eq)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct GuardParams {
     pub disc: [u32; 4],
     pub edm_reset: [u32; 2],
@@ -58,37 +58,6 @@ pub struct GuardParams {
     pub active: u16,
     pub negated: u16,
     pub options: u32,
-}
-
-impl GuardParams {
-    /// The times and the masks as the latched copy holds them (`adwTime`), two to a word.
-    #[inline(always)]
-    fn words(&self) -> [u64; 4] {
-        let pair = |lo: u32, hi: u32| u64::from(lo) | u64::from(hi) << 32;
-        let [d0, d1, d2, d3] = self.disc;
-        let [e1, e2] = self.edm_reset;
-        let masks = u32::from(self.active) | u32::from(self.negated) << 16;
-        [
-            pair(d0, d1),
-            pair(d2, d3),
-            pair(e1, e2),
-            pair(self.delay, masks),
-        ]
-    }
-}
-
-/// Equal when every field is, as the derived comparison would say, but as the XOR of
-/// whole words: for ESTOP, whose live fields lie in the latched copy's order, the compiler
-/// reads both sides as four 64-bit words (the fast path's parameter check).
-impl PartialEq for GuardParams {
-    #[inline(always)]
-    fn eq(&self, o: &Self) -> bool {
-        let (a, b) = (self.words(), o.words());
-        let diff = (0..4).fold(u64::from(self.options ^ o.options), |d, i| {
-            d | (a[i] ^ b[i])
-        });
-        diff == 0
-    }
 }
 
 /// Raw input bytes of one cycle.
