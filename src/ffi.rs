@@ -1098,7 +1098,7 @@ pub unsafe fn sl_group_cycle_traced(
             let g_ptr = g;
             let g = instance(g)?;
             let mut none: [&mut dyn Member; 0] = [];
-            let (Some((members, _)), Some((links, link_cap))) =
+            let (Some((members, cap)), Some((links, link_cap))) =
                 (group::member_counts(g), group::link_counts(g))
             else {
                 return Ok(group::cycle(g, &mut none[..], &[], tNow));
@@ -1111,7 +1111,14 @@ pub unsafe fn sl_group_cycle_traced(
                 // reachable, which stops the group like any unreachable member.
                 return Ok(group::cycle(g, &mut none[..], &[], tNow));
             }
-            let mut t = member_table(g, g_ptr as usize, aMembers)?;
+            // The member table as `member_table` would give it, from the counts and the
+            // `storage` check above (not read and checked a second time).
+            let mut t = CMembers {
+                base: aMembers,
+                count: members,
+                cap,
+                group: g_ptr as usize,
+            };
             let l = CLinks {
                 base: aLinks,
                 count: usize::from(links),
