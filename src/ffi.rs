@@ -345,6 +345,17 @@ struct CMembers {
 }
 
 impl CMembers {
+    /// The table of `count` entries (room for `cap`) at `base` of the group at `group`, once
+    /// `storage(base, count)` accepted it.
+    fn at(base: *mut SL_MEMBER, count: u16, cap: u16, group: usize) -> Self {
+        CMembers {
+            base,
+            count,
+            cap,
+            group,
+        }
+    }
+
     /// Entry `i`, if it is inside the count and passes its check.
     fn entry(&self, i: usize) -> Option<SL_MEMBER> {
         if i >= usize::from(self.count) {
@@ -431,6 +442,9 @@ impl Members for CMembers {
         }
     }
 
+    // Out of line: the loop keeps its counters in callee-saved registers across the
+    // runners' calls instead of on the enclosing cycle's stack (docs/performance.md).
+    #[inline(never)]
     fn run_straight<L: group::Links + ?Sized>(
         &mut self,
         links: &L,
@@ -676,12 +690,7 @@ fn tables_disjoint(
 fn member_table(g: &SL_GROUP, g_addr: usize, table: *mut SL_MEMBER) -> Result<CMembers, i32> {
     let (count, cap) = group::member_counts(g).ok_or(SL_E_CORRUPT)?;
     storage(table, usize::from(count))?;
-    Ok(CMembers {
-        base: table,
-        count,
-        cap,
-        group: g_addr,
-    })
+    Ok(CMembers::at(table, count, cap, g_addr))
 }
 
 /// Rewrites the check of every entry (after the count changed).
@@ -1113,12 +1122,7 @@ pub unsafe fn sl_group_cycle_traced(
             }
             // The member table as `member_table` would give it, from the counts and the
             // `storage` check above (not read and checked a second time).
-            let mut t = CMembers {
-                base: aMembers,
-                count: members,
-                cap,
-                group: g_ptr as usize,
-            };
+            let mut t = CMembers::at(aMembers, members, cap, g_ptr as usize);
             let l = CLinks {
                 base: aLinks,
                 count: usize::from(links),

@@ -225,6 +225,9 @@ macro_rules! guard_block {
                     latched_crc::<Self>(self.private())
                 }
 
+                // Inlined into the full cycle (`settle`), as `step`: no call, no `GuardIn`
+                // through memory (docs/performance.md).
+                #[inline(always)]
                 fn decode(&mut self) -> (GuardIn, bool) {
                     let raw = self.raw();
                     let p = self.private_mut();
@@ -267,6 +270,7 @@ macro_rules! guard_block {
                     };
                 }
 
+                #[inline(always)]
                 fn step(&mut self, inp: &GuardIn, now: u32) -> Status {
                     let p = self.private_mut();
                     let state = p.stHeader.nState;
