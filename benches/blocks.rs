@@ -3,8 +3,9 @@
 //! median and p99 per call, the struct and private-state sizes, and each target.
 //! `cargo bench --bench blocks`. Reports, never asserts timing. With `--bench` and valgrind
 //! on the machine it also runs its own smoke mode under callgrind and prints the
-//! instructions per steady call of every row (repeatable where times are not);
-//! `tools/callgrind_blocks.sh` prints only those.
+//! instructions per steady call of every row (repeatable where times are not), and those
+//! per call with random inputs of the random-against-steady rows (a second child that runs
+//! only their random calls); `tools/callgrind_blocks.sh` prints only the steady ones.
 
 use safelogic::ffi::*;
 use safelogic::*;
@@ -18,10 +19,27 @@ const CALLS_PER_BATCH: u32 = 1000;
 const WARMUP_CALLS: u32 = 200;
 const SMOKE_BATCHES: usize = 20;
 
+/// The callgrind child that runs only the random-input rows, random inputs only.
+const RANDOM_CHILD: &str = "--callgrind-random";
+
 /// Instructions per call of every exported `sl_*_cycle` in one callgrind run of this bench's
 /// smoke mode (inclusive counts of the functions, divided by the calls each row makes), or
 /// why there are none.
 fn instructions_per_call() -> Result<HashMap<String, f64>, String> {
+    let calls = f64::from(WARMUP_CALLS) + (SMOKE_BATCHES as f64) * f64::from(CALLS_PER_BATCH);
+    callgrind_per_call("--callgrind-child", calls)
+}
+
+/// Instructions per call with random inputs (the random half of `cliff_row`, which makes
+/// `SMOKE_BATCHES + 1` batches of calls in the child).
+fn random_instructions_per_call() -> Result<HashMap<String, f64>, String> {
+    let calls = ((SMOKE_BATCHES + 1) as f64) * f64::from(CALLS_PER_BATCH);
+    callgrind_per_call(RANDOM_CHILD, calls)
+}
+
+/// Runs this bench as `child` under callgrind, collecting inside the `sl_*_cycle` functions
+/// only, and divides each one's inclusive count by `calls`.
+fn callgrind_per_call(child: &str, calls: f64) -> Result<HashMap<String, f64>, String> {
     let exe = std::env::current_exe().map_err(|e| e.to_string())?;
     let out = std::env::temp_dir().join(format!("sl-blocks-{}.callgrind", std::process::id()));
     let run = Command::new("valgrind")
@@ -29,7 +47,7 @@ fn instructions_per_call() -> Result<HashMap<String, f64>, String> {
         .arg(format!("--callgrind-out-file={}", out.display()))
         .arg("--toggle-collect=sl_*_cycle")
         .arg(&exe)
-        .arg("--callgrind-child")
+        .arg(child)
         .output()
         .map_err(|_| "valgrind is not installed".to_string())?;
     if !run.status.success() {
@@ -43,7 +61,6 @@ fn instructions_per_call() -> Result<HashMap<String, f64>, String> {
         .output()
         .map_err(|_| "callgrind_annotate is not installed".to_string())?;
     let _ = std::fs::remove_file(&out);
-    let calls = f64::from(WARMUP_CALLS) + (SMOKE_BATCHES as f64) * f64::from(CALLS_PER_BATCH);
     let mut per_call = HashMap::new();
     for line in String::from_utf8_lossy(&ann.stdout).lines() {
         let mut words = line.split_whitespace();
@@ -122,7 +139,12 @@ fn main() {
     let only_instructions = std::env::args().any(|a| a == "--instructions");
     // The run under callgrind: the steady rows only, so each function's calls are its row's.
     let child = std::env::args().any(|a| a == "--callgrind-child");
+    if std::env::args().any(|a| a == RANDOM_CHILD) {
+        cliff_rows(SMOKE_BATCHES);
+        return;
+    }
     let instructions = (!child && (!quick || only_instructions)).then(instructions_per_call);
+    let random_instructions = (!quick && !only_instructions).then(random_instructions_per_call);
     let batches = if quick || only_instructions {
         SMOKE_BATCHES
     } else {
@@ -772,146 +794,7 @@ fn main() {
     let cliff = if only_instructions || child {
         Vec::new()
     } else {
-        vec![
-            cliff_row(
-                "ESTOP",
-                batches,
-                {
-                    let mut e = FB_ESTOP {
-                        wInputActive: 0b11,
-                        tDiscTime12: 20,
-                        bRun: 1,
-                        ..Default::default()
-                    };
-                    e.init();
-                    e
-                },
-                sl_estop_cycle,
-                |f, r| {
-                    (f.bEStopIn1, f.bEStopIn2, f.bRestart, f.bErrAck) = (
-                        (r & 1) as u8,
-                        (r >> 1 & 1) as u8,
-                        (r >> 2 & 1) as u8,
-                        (r >> 3 & 1) as u8,
-                    );
-                },
-            ),
-            cliff_row(
-                "MON",
-                batches,
-                {
-                    let mut m = FB_MON {
-                        wInputActive: 0b11,
-                        tDiscTime12: 20,
-                        bRun: 1,
-                        ..Default::default()
-                    };
-                    m.init();
-                    m
-                },
-                sl_mon_cycle,
-                |f, r| {
-                    (f.bMonIn1, f.bMonIn2, f.bRestart, f.bErrAck) = (
-                        (r & 1) as u8,
-                        (r >> 1 & 1) as u8,
-                        (r >> 2 & 1) as u8,
-                        (r >> 3 & 1) as u8,
-                    );
-                },
-            ),
-            cliff_row(
-                "AND",
-                batches,
-                {
-                    let mut a = FB_AND {
-                        wInputActive: 0b11,
-                        bRun: 1,
-                        ..Default::default()
-                    };
-                    a.init();
-                    a
-                },
-                sl_and_cycle,
-                |f, r| (f.bAndIn1, f.bAndIn2) = ((r & 1) as u8, (r >> 1 & 1) as u8),
-            ),
-            cliff_row(
-                "OR",
-                batches,
-                {
-                    let mut o = FB_OR {
-                        wInputActive: 0b11,
-                        bRun: 1,
-                        ..Default::default()
-                    };
-                    o.init();
-                    o
-                },
-                sl_or_cycle,
-                |f, r| (f.bOrIn1, f.bOrIn2) = ((r & 1) as u8, (r >> 1 & 1) as u8),
-            ),
-            cliff_row(
-                "RS",
-                batches,
-                {
-                    let mut b = FB_RS {
-                        wInputActive: 0b11,
-                        bRun: 1,
-                        ..Default::default()
-                    };
-                    b.init();
-                    b
-                },
-                sl_rs_cycle,
-                |f, r| (f.bReset, f.bSet) = ((r & 1) as u8, (r >> 1 & 1) as u8),
-            ),
-            cliff_row(
-                "SR",
-                batches,
-                {
-                    let mut b = FB_SR {
-                        wInputActive: 0b11,
-                        bRun: 1,
-                        ..Default::default()
-                    };
-                    b.init();
-                    b
-                },
-                sl_sr_cycle,
-                |f, r| (f.bReset, f.bSet) = ((r & 1) as u8, (r >> 1 & 1) as u8),
-            ),
-            cliff_row(
-                "TON",
-                batches,
-                {
-                    let mut b = FB_TON {
-                        wInputActive: 1,
-                        tDelay: 3,
-                        bRun: 1,
-                        ..Default::default()
-                    };
-                    b.init();
-                    b
-                },
-                sl_ton_cycle,
-                |f, r| f.bTonIn1 = (r & 1) as u8,
-            ),
-            cliff_row(
-                "TOF",
-                batches,
-                {
-                    let mut b = FB_TOF {
-                        wInputActive: 1,
-                        tDelay: 3,
-                        bRun: 1,
-                        ..Default::default()
-                    };
-                    b.init();
-                    b
-                },
-                sl_tof_cycle,
-                |f, r| f.bTofIn1 = (r & 1) as u8,
-            ),
-        ]
+        cliff_rows(batches)
     };
 
     let cpu = std::fs::read_to_string("/proc/cpuinfo")
@@ -991,24 +874,186 @@ fn main() {
     }
     if !cliff.is_empty() {
         println!("  random inputs against steady ones (inputs written before every call in both):");
+        if let Some(Err(why)) = &random_instructions {
+            println!("  instructions per random call: not counted ({why})");
+        }
         println!(
-            "  {:<9} {:>14} {:>14} {:>14} {:>14} {:>7}  result",
-            "block", "steady median", "steady p99", "random median", "random p99", "ratio"
+            "  {:<9} {:>14} {:>14} {:>14} {:>14} {:>7} {:>14}  result",
+            "block",
+            "steady median",
+            "steady p99",
+            "random median",
+            "random p99",
+            "ratio",
+            "instr rnd (st)"
         );
         for c in &cliff {
             let ratio = c.random.0 / c.steady.0;
+            // Per random call, and the steady row's count beside it.
+            let random_instr = match &random_instructions {
+                Some(Ok(m)) => m
+                    .get(&format!("sl_{}_cycle", c.name.to_ascii_lowercase()))
+                    .map_or("-".to_string(), |n| format!("{n:.0} ({})", instr(c.name))),
+                _ => "-".to_string(),
+            };
             println!(
-                "  {:<9} {:>14.2} {:>14.2} {:>14.2} {:>14.2} {:>6.2}x  {} (target <= 2x)",
+                "  {:<9} {:>14.2} {:>14.2} {:>14.2} {:>14.2} {:>6.2}x {:>14}  {} (target <= 2x)",
                 c.name,
                 c.steady.0,
                 c.steady.1,
                 c.random.0,
                 c.random.1,
                 ratio,
+                random_instr,
                 if ratio <= 2.0 { "PASS" } else { "MISS" }
             );
         }
     }
+}
+
+/// The blocks of the random-against-steady rows (`cliff_row`), each timed both ways, or only
+/// with random inputs in the callgrind child that counts their instructions.
+fn cliff_rows(batches: usize) -> Vec<Cliff> {
+    vec![
+        cliff_row(
+            "ESTOP",
+            batches,
+            {
+                let mut e = FB_ESTOP {
+                    wInputActive: 0b11,
+                    tDiscTime12: 20,
+                    bRun: 1,
+                    ..Default::default()
+                };
+                e.init();
+                e
+            },
+            sl_estop_cycle,
+            |f, r| {
+                (f.bEStopIn1, f.bEStopIn2, f.bRestart, f.bErrAck) = (
+                    (r & 1) as u8,
+                    (r >> 1 & 1) as u8,
+                    (r >> 2 & 1) as u8,
+                    (r >> 3 & 1) as u8,
+                );
+            },
+        ),
+        cliff_row(
+            "MON",
+            batches,
+            {
+                let mut m = FB_MON {
+                    wInputActive: 0b11,
+                    tDiscTime12: 20,
+                    bRun: 1,
+                    ..Default::default()
+                };
+                m.init();
+                m
+            },
+            sl_mon_cycle,
+            |f, r| {
+                (f.bMonIn1, f.bMonIn2, f.bRestart, f.bErrAck) = (
+                    (r & 1) as u8,
+                    (r >> 1 & 1) as u8,
+                    (r >> 2 & 1) as u8,
+                    (r >> 3 & 1) as u8,
+                );
+            },
+        ),
+        cliff_row(
+            "AND",
+            batches,
+            {
+                let mut a = FB_AND {
+                    wInputActive: 0b11,
+                    bRun: 1,
+                    ..Default::default()
+                };
+                a.init();
+                a
+            },
+            sl_and_cycle,
+            |f, r| (f.bAndIn1, f.bAndIn2) = ((r & 1) as u8, (r >> 1 & 1) as u8),
+        ),
+        cliff_row(
+            "OR",
+            batches,
+            {
+                let mut o = FB_OR {
+                    wInputActive: 0b11,
+                    bRun: 1,
+                    ..Default::default()
+                };
+                o.init();
+                o
+            },
+            sl_or_cycle,
+            |f, r| (f.bOrIn1, f.bOrIn2) = ((r & 1) as u8, (r >> 1 & 1) as u8),
+        ),
+        cliff_row(
+            "RS",
+            batches,
+            {
+                let mut b = FB_RS {
+                    wInputActive: 0b11,
+                    bRun: 1,
+                    ..Default::default()
+                };
+                b.init();
+                b
+            },
+            sl_rs_cycle,
+            |f, r| (f.bReset, f.bSet) = ((r & 1) as u8, (r >> 1 & 1) as u8),
+        ),
+        cliff_row(
+            "SR",
+            batches,
+            {
+                let mut b = FB_SR {
+                    wInputActive: 0b11,
+                    bRun: 1,
+                    ..Default::default()
+                };
+                b.init();
+                b
+            },
+            sl_sr_cycle,
+            |f, r| (f.bReset, f.bSet) = ((r & 1) as u8, (r >> 1 & 1) as u8),
+        ),
+        cliff_row(
+            "TON",
+            batches,
+            {
+                let mut b = FB_TON {
+                    wInputActive: 1,
+                    tDelay: 3,
+                    bRun: 1,
+                    ..Default::default()
+                };
+                b.init();
+                b
+            },
+            sl_ton_cycle,
+            |f, r| f.bTonIn1 = (r & 1) as u8,
+        ),
+        cliff_row(
+            "TOF",
+            batches,
+            {
+                let mut b = FB_TOF {
+                    wInputActive: 1,
+                    tDelay: 3,
+                    bRun: 1,
+                    ..Default::default()
+                };
+                b.init();
+                b
+            },
+            sl_tof_cycle,
+            |f, r| f.bTofIn1 = (r & 1) as u8,
+        ),
+    ]
 }
 
 /// Steady and random (median, p99) ns per call of one block.
@@ -1058,7 +1103,12 @@ fn cliff_row<T: Copy>(
         let at = |q: f64| per_call[((per_call.len() - 1) as f64 * q).round() as usize];
         (at(0.5), at(0.99))
     };
-    let steady = run(false);
+    // The callgrind child counts the random calls alone.
+    let steady = if std::env::args().any(|a| a == RANDOM_CHILD) {
+        (f64::NAN, f64::NAN)
+    } else {
+        run(false)
+    };
     let random = run(true);
     Cliff {
         name,

@@ -411,6 +411,7 @@ impl Members for CMembers {
 
     /// Binds the group's address, both tables' addresses, counts and capacities and every
     /// byte of every entry and link (their own checks included), in order.
+    #[inline(always)]
     fn schedule_check<L: group::Links + ?Sized>(&self, links: &L) -> Option<u64> {
         let lanes = group::schedule_start(
             self.group,
@@ -433,7 +434,7 @@ impl Members for CMembers {
         w: &mut group::Wiring,
     ) -> Option<group::Ran> {
         let e = self.sealed_entry(i)?;
-        match run_entry(&e, run, ack, now, w) {
+        match run_entry(&e, u16::from_le_bytes([run, ack]), now, w) {
             // A type without a runner (an FSoE connection): through the type dispatch.
             group::RAN_NOT_RUN => {
                 member_dyn(e.nType, e.pBlock).map(|b| b.run_in_group(run, ack, now, w))
@@ -451,8 +452,7 @@ impl Members for CMembers {
         link_count: usize,
         at: (usize, usize),
         members: usize,
-        run: u8,
-        ack: u8,
+        drive: u16,
         now: u32,
         w: &mut group::Wiring,
     ) -> group::Straight {
@@ -465,7 +465,8 @@ impl Members for CMembers {
         let mut rest = links.get(at.1..).unwrap_or_default();
         // A bit of any state but RUN: the members that ran straight all ended in RUN iff 0.
         let mut not_run = 0u8;
-        let mut ran = None;
+        // The outcome the loop takes (RAN_NOT_RUN: none, member `i` did not run yet).
+        let mut handed_back = group::RAN_NOT_RUN;
         'members: while let Some(&e) = entries.get(i) {
             // The entry by value: the copies below write through raw pointers, which could
             // otherwise be the entry's bytes for all the compiler knows (they are not: a
@@ -482,22 +483,23 @@ impl Members for CMembers {
                 }
                 rest = tail;
             }
-            let word = run_entry(&e, run, ack, now, w);
+            let word = run_entry(&e, drive, now, w);
             // A status other than SL_OK or a flag (bits 8 and up), or ERROR: the loop takes
             // the outcome (RAN_NOT_RUN: its links are copied, the loop runs it).
             if word >> 8 != 0 || word as u8 == SL_STATE_ERROR {
-                ran = (word & group::RAN_NOT_RUN == 0).then(|| group::Ran::of_word(word));
+                handed_back = word;
                 break;
             }
             not_run |= word as u8 ^ SL_STATE_RUN;
             i += 1;
         }
         let k = links.len() - rest.len();
+        // Both below 2^16: the counts are 16-bit.
         group::Straight {
-            member: i,
-            link: k,
+            member: i as u32,
+            link: k as u32,
+            word: handed_back,
             all_run: not_run == 0,
-            ran,
         }
     }
 
@@ -515,11 +517,11 @@ impl Members for CMembers {
 }
 
 /// Member `e` of a sealed cycle through the runner of its type ([`group::RAN_NOT_RUN`]: a
-/// type without one).
+/// type without one); `drive`: its bRun and bErrAck, `run | ack << 8`.
 #[inline(always)]
-fn run_entry(e: &SL_MEMBER, run: u8, ack: u8, now: u32, w: &mut group::Wiring) -> group::RanWord {
+fn run_entry(e: &SL_MEMBER, drive: u16, now: u32, w: &mut group::Wiring) -> group::RanWord {
     match RUNNERS.get(usize::from(e.nType)) {
-        Some(runner) => runner(e.pBlock, u16::from_le_bytes([run, ack]), now, w),
+        Some(runner) => runner(e.pBlock, drive, now, w),
         None => group::RAN_NOT_RUN,
     }
 }

@@ -992,7 +992,8 @@ pub trait Members {
     }
 
     /// A sealed cycle's straight run from member `at.0` and link `at.1` up to member
-    /// `members` ([`Straight`]); storage without runners runs nothing straight.
+    /// `members` ([`Straight`]), the members' bRun and bErrAck as one word (`drive`:
+    /// `run | ack << 8`); storage without runners runs nothing straight.
     #[allow(clippy::too_many_arguments)]
     fn run_straight<L: Links + ?Sized>(
         &mut self,
@@ -1000,8 +1001,7 @@ pub trait Members {
         _link_count: usize,
         at: (usize, usize),
         _members: usize,
-        _run: u8,
-        _ack: u8,
+        _drive: u16,
         _now: u32,
         _w: &mut Wiring,
     ) -> Straight {
@@ -1359,14 +1359,14 @@ pub fn cycle_traced<M: Members + ?Sized, L: Links + ?Sized>(
                 link_count,
                 (i, next_link),
                 members,
-                member_run,
-                ack_level,
+                u16::from_le_bytes([member_run, ack_level]),
                 now,
                 &mut w,
             );
             all_run &= s.all_run;
-            *straight += s.member - i;
-            (i, next_link, ran_straight) = (s.member, s.link, s.ran);
+            let (member, link) = (s.member as usize, s.link as usize);
+            *straight += member - i;
+            (i, next_link, ran_straight) = (member, link, s.ran());
             if i == members {
                 break;
             }
@@ -1505,27 +1505,36 @@ pub fn cycle_traced<M: Members + ?Sized, L: Links + ?Sized>(
 /// loop must see (a member that cannot be reached, ERROR, another status, a connection, a
 /// CONNECTION SHUTDOWN block, which may leave a request). The group's state does not change
 /// while it runs, so `run` holds throughout.
+///
+/// Sixteen bytes, so that it comes back in two registers (the indices fit: counts are 16-bit).
 pub struct Straight {
     /// The member the loop goes on with (the member count: all ran).
-    pub member: usize,
+    pub member: u32,
     /// The next link.
-    pub link: usize,
+    pub link: u32,
+    /// The word of `member`'s outcome when it already ran (it goes through the loop's
+    /// steps, [`Straight::ran`]); [`RAN_NOT_RUN`]: it did not run yet, its links from `link`
+    /// on not copied.
+    pub word: RanWord,
     /// Every member that ran straight ended its cycle in RUN.
     pub all_run: bool,
-    /// `Some(outcome)`: `member` already ran (its outcome goes through the loop's steps);
-    /// `None`: it did not run yet, its links from `link` on not copied.
-    pub ran: Option<Option<Ran>>,
 }
 
 impl Straight {
     /// Nothing ran straight: the loop goes on at member `at.0`, link `at.1`.
     pub fn at(at: (usize, usize)) -> Self {
         Straight {
-            member: at.0,
-            link: at.1,
+            member: at.0 as u32,
+            link: at.1 as u32,
+            word: RAN_NOT_RUN,
             all_run: true,
-            ran: None,
         }
+    }
+
+    /// `Some(outcome)`: `member` already ran (`None` inside: it could not be reached);
+    /// `None`: it did not run yet.
+    pub fn ran(&self) -> Option<Option<Ran>> {
+        (self.word & RAN_NOT_RUN == 0).then(|| Ran::of_word(self.word))
     }
 }
 
@@ -1679,6 +1688,53 @@ mod tests {
                     t.swap(i, i + 1);
                 }
                 assert_ne!(check(&t), Some(base), "lanes 0 and 1 of {n} traded");
+            }
+        }
+    }
+
+    /// A single-bit change of any word the check starts from (the group's and the member
+    /// table's addresses, the count, the capacity, the link count) changes the check, with
+    /// or without entries after it.
+    #[test]
+    fn schedule_check_sees_every_bit_of_where_and_how_many() {
+        let start = (
+            0x7F00_1234_5670usize,
+            0x7F00_8765_4320usize,
+            5u16,
+            9u16,
+            7usize,
+        );
+        for n in [0, 1, 5] {
+            let table: Vec<[u64; 2]> = words(n).map(|(a, b)| [a, b]).collect();
+            let check = |(g, m, count, cap, links): (usize, usize, u16, u16, usize)| {
+                schedule_end(schedule_table(
+                    schedule_start(g, m, count, cap, links),
+                    &table,
+                    |w| *w,
+                ))
+            };
+            let base = check(start);
+            let (g, m, count, cap, links) = start;
+            for bit in 0..usize::BITS {
+                assert_ne!(
+                    check((g ^ 1 << bit, m, count, cap, links)),
+                    base,
+                    "group {bit}"
+                );
+                assert_ne!(
+                    check((g, m ^ 1 << bit, count, cap, links)),
+                    base,
+                    "table {bit}"
+                );
+                if bit < 16 {
+                    let b = 1u16 << bit;
+                    assert_ne!(check((g, m, count ^ b, cap, links)), base, "count {bit}");
+                    assert_ne!(check((g, m, count, cap ^ b, links)), base, "cap {bit}");
+                }
+                if bit < 32 {
+                    let b = 1usize << bit;
+                    assert_ne!(check((g, m, count, cap, links ^ b)), base, "links {bit}");
+                }
             }
         }
     }
