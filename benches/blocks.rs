@@ -914,144 +914,86 @@ fn main() {
 /// The blocks of the random-against-steady rows (`cliff_row`), each timed both ways, or only
 /// with random inputs in the callgrind child that counts their instructions.
 fn cliff_rows(batches: usize) -> Vec<Cliff> {
+    // A row: the block with these parameters, bRun TRUE, initialised; a random word sets
+    // the listed BOOL inputs from its bits 0, 1, … in order.
+    macro_rules! row {
+        ($name:literal, $ty:ident { $($p:ident: $v:expr),* }, $cycle:ident, [$($f:ident),+]) => {{
+            let mut b = $ty {
+                $($p: $v,)*
+                bRun: 1,
+                ..Default::default()
+            };
+            b.init();
+            cliff_row($name, batches, b, $cycle, |f: &mut $ty, r: u64| {
+                let mut bit = 0;
+                $(
+                    f.$f = (r >> bit & 1) as u8;
+                    bit += 1;
+                )+
+                let _ = bit;
+            })
+        }};
+    }
     vec![
-        cliff_row(
+        row!(
             "ESTOP",
-            batches,
-            {
-                let mut e = FB_ESTOP {
-                    wInputActive: 0b11,
-                    tDiscTime12: 20,
-                    bRun: 1,
-                    ..Default::default()
-                };
-                e.init();
-                e
+            FB_ESTOP {
+                wInputActive: 0b11,
+                tDiscTime12: 20
             },
             sl_estop_cycle,
-            |f, r| {
-                (f.bEStopIn1, f.bEStopIn2, f.bRestart, f.bErrAck) = (
-                    (r & 1) as u8,
-                    (r >> 1 & 1) as u8,
-                    (r >> 2 & 1) as u8,
-                    (r >> 3 & 1) as u8,
-                );
-            },
+            [bEStopIn1, bEStopIn2, bRestart, bErrAck]
         ),
-        cliff_row(
+        row!(
             "MON",
-            batches,
-            {
-                let mut m = FB_MON {
-                    wInputActive: 0b11,
-                    tDiscTime12: 20,
-                    bRun: 1,
-                    ..Default::default()
-                };
-                m.init();
-                m
+            FB_MON {
+                wInputActive: 0b11,
+                tDiscTime12: 20
             },
             sl_mon_cycle,
-            |f, r| {
-                (f.bMonIn1, f.bMonIn2, f.bRestart, f.bErrAck) = (
-                    (r & 1) as u8,
-                    (r >> 1 & 1) as u8,
-                    (r >> 2 & 1) as u8,
-                    (r >> 3 & 1) as u8,
-                );
-            },
+            [bMonIn1, bMonIn2, bRestart, bErrAck]
         ),
-        cliff_row(
+        row!(
             "AND",
-            batches,
-            {
-                let mut a = FB_AND {
-                    wInputActive: 0b11,
-                    bRun: 1,
-                    ..Default::default()
-                };
-                a.init();
-                a
-            },
+            FB_AND { wInputActive: 0b11 },
             sl_and_cycle,
-            |f, r| (f.bAndIn1, f.bAndIn2) = ((r & 1) as u8, (r >> 1 & 1) as u8),
+            [bAndIn1, bAndIn2]
         ),
-        cliff_row(
+        row!(
             "OR",
-            batches,
-            {
-                let mut o = FB_OR {
-                    wInputActive: 0b11,
-                    bRun: 1,
-                    ..Default::default()
-                };
-                o.init();
-                o
-            },
+            FB_OR { wInputActive: 0b11 },
             sl_or_cycle,
-            |f, r| (f.bOrIn1, f.bOrIn2) = ((r & 1) as u8, (r >> 1 & 1) as u8),
+            [bOrIn1, bOrIn2]
         ),
-        cliff_row(
+        row!(
             "RS",
-            batches,
-            {
-                let mut b = FB_RS {
-                    wInputActive: 0b11,
-                    bRun: 1,
-                    ..Default::default()
-                };
-                b.init();
-                b
-            },
+            FB_RS { wInputActive: 0b11 },
             sl_rs_cycle,
-            |f, r| (f.bReset, f.bSet) = ((r & 1) as u8, (r >> 1 & 1) as u8),
+            [bReset, bSet]
         ),
-        cliff_row(
+        row!(
             "SR",
-            batches,
-            {
-                let mut b = FB_SR {
-                    wInputActive: 0b11,
-                    bRun: 1,
-                    ..Default::default()
-                };
-                b.init();
-                b
-            },
+            FB_SR { wInputActive: 0b11 },
             sl_sr_cycle,
-            |f, r| (f.bReset, f.bSet) = ((r & 1) as u8, (r >> 1 & 1) as u8),
+            [bReset, bSet]
         ),
-        cliff_row(
+        row!(
             "TON",
-            batches,
-            {
-                let mut b = FB_TON {
-                    wInputActive: 1,
-                    tDelay: 3,
-                    bRun: 1,
-                    ..Default::default()
-                };
-                b.init();
-                b
+            FB_TON {
+                wInputActive: 1,
+                tDelay: 3
             },
             sl_ton_cycle,
-            |f, r| f.bTonIn1 = (r & 1) as u8,
+            [bTonIn1]
         ),
-        cliff_row(
+        row!(
             "TOF",
-            batches,
-            {
-                let mut b = FB_TOF {
-                    wInputActive: 1,
-                    tDelay: 3,
-                    bRun: 1,
-                    ..Default::default()
-                };
-                b.init();
-                b
+            FB_TOF {
+                wInputActive: 1,
+                tDelay: 3
             },
             sl_tof_cycle,
-            |f, r| f.bTofIn1 = (r & 1) as u8,
+            [bTofIn1]
         ),
     ]
 }
