@@ -524,6 +524,13 @@ macro_rules! timer_block {
                     && !time::reached(now, p.stHeader.tPhase, p.dwDelay)
             }
 
+            /// Quiet, or the timing state of TON and TOF (`timing_quiet`).
+            #[inline(always)]
+            fn may_hold_key(&self) -> bool {
+                self.quiet()
+                    || !Self::PERSISTS && self.private().stHeader.nState == Self::TIMING_STATE
+            }
+
         }
         };
     };
