@@ -762,7 +762,8 @@ fn main() {
 
     // Random inputs against steady ones (issue 13: no cliff off the fast path): the same
     // block timed with inputs drawn afresh before every call and with the same inputs
-    // written before every call (so both time the writes).
+    // written before every call (so both time the writes), and the full cycle alone with
+    // the steady inputs (what a random call costs without its randomness).
     // TON and TOF while their timer runs (a delay of 60,000 s outlasts every run): the
     // fast path serves a running timer until the call that reaches it.
     let timing = if only_instructions || child {
@@ -873,19 +874,20 @@ fn main() {
         }
     }
     if !cliff.is_empty() {
-        println!("  random inputs against steady ones (inputs written before every call in both):");
+        println!("  random inputs against steady ones (inputs written before every call in both; \"full, steady\": the full cycle alone, never the fast path, with the steady inputs — what a random call costs without the randomness):");
         if let Some(Err(why)) = &random_instructions {
             println!("  instructions per random call: not counted ({why})");
         }
         println!(
-            "  {:<9} {:>14} {:>14} {:>14} {:>14} {:>7} {:>14}  result",
+            "  {:<9} {:>14} {:>14} {:>14} {:>14} {:>7} {:>14} {:>12}  result",
             "block",
             "steady median",
             "steady p99",
             "random median",
             "random p99",
             "ratio",
-            "instr rnd (st)"
+            "instr rnd (st)",
+            "full, steady"
         );
         for c in &cliff {
             let ratio = c.random.0 / c.steady.0;
@@ -897,7 +899,7 @@ fn main() {
                 _ => "-".to_string(),
             };
             println!(
-                "  {:<9} {:>14.2} {:>14.2} {:>14.2} {:>14.2} {:>6.2}x {:>14}  {} (target <= 2x)",
+                "  {:<9} {:>14.2} {:>14.2} {:>14.2} {:>14.2} {:>6.2}x {:>14} {:>12.2}  {} (target <= 2x)",
                 c.name,
                 c.steady.0,
                 c.steady.1,
@@ -905,6 +907,7 @@ fn main() {
                 c.random.1,
                 ratio,
                 random_instr,
+                c.full.0,
                 if ratio <= 2.0 { "PASS" } else { "MISS" }
             );
         }
@@ -998,16 +1001,28 @@ fn cliff_rows(batches: usize) -> Vec<Cliff> {
     ]
 }
 
-/// Steady and random (median, p99) ns per call of one block.
+/// Steady, random and full-cycle (median, p99) ns per call of one block.
 struct Cliff {
     name: &'static str,
     steady: (f64, f64),
     random: (f64, f64),
+    /// The full cycle alone with the steady inputs (`envelope::cycle_full`: never the fast
+    /// path), what a random call is measured against in docs/performance.md.
+    full: (f64, f64),
+}
+
+/// What a timed batch of `cliff_row` calls.
+#[derive(Clone, Copy, PartialEq)]
+enum Calls {
+    Steady,
+    Random,
+    Full,
 }
 
 /// Times `set` + `cycle` with a fixed input word (steady: the word that keeps the inputs
-/// TRUE, Restart and ErrAck FALSE) and with a fresh random word before every call.
-fn cliff_row<T: Copy>(
+/// TRUE, Restart and ErrAck FALSE) and with a fresh random word before every call, and
+/// `set` + the full cycle alone with the fixed word.
+fn cliff_row<T: Copy + safelogic::prim::envelope::Block>(
     name: &'static str,
     batches: usize,
     fb: T,
@@ -1015,6 +1030,7 @@ fn cliff_row<T: Copy>(
     set: fn(&mut T, u64),
 ) -> Cliff {
     let f: unsafe extern "C" fn(*mut T, u32) -> i32 = black_box(cycle);
+    let full: fn(&mut T, u32) -> Status = black_box(safelogic::prim::envelope::cycle_full::<T>);
     let mut words = [0u64; 4096];
     let mut x = 0x9E37_79B9_7F4A_7C15u64;
     for w in words.iter_mut() {
@@ -1023,7 +1039,7 @@ fn cliff_row<T: Copy>(
         x ^= x << 17;
         *w = x;
     }
-    let run = |random: bool| {
+    let run = |calls: Calls| {
         let mut fb = fb;
         let mut t = 0u32;
         let mut per_call = Vec::with_capacity(batches);
@@ -1033,9 +1049,17 @@ fn cliff_row<T: Copy>(
             for _ in 0..CALLS_PER_BATCH {
                 t = t.wrapping_add(1);
                 k = (k + 1) & 4095;
-                let w = if random { words[k] } else { 0b11 };
+                let w = if calls == Calls::Random {
+                    words[k]
+                } else {
+                    0b11
+                };
                 set(black_box(&mut fb), w);
-                black_box(unsafe { f(black_box(&mut fb), t) });
+                if calls == Calls::Full {
+                    black_box(full(black_box(&mut fb), t));
+                } else {
+                    black_box(unsafe { f(black_box(&mut fb), t) });
+                }
             }
             if b > 0 {
                 per_call.push(start.elapsed().as_nanos() as f64 / f64::from(CALLS_PER_BATCH));
@@ -1046,15 +1070,16 @@ fn cliff_row<T: Copy>(
         (at(0.5), at(0.99))
     };
     // The callgrind child counts the random calls alone.
-    let steady = if std::env::args().any(|a| a == RANDOM_CHILD) {
-        (f64::NAN, f64::NAN)
+    let (steady, full) = if std::env::args().any(|a| a == RANDOM_CHILD) {
+        ((f64::NAN, f64::NAN), (f64::NAN, f64::NAN))
     } else {
-        run(false)
+        (run(Calls::Steady), run(Calls::Full))
     };
-    let random = run(true);
+    let random = run(Calls::Random);
     Cliff {
         name,
         steady,
         random,
+        full,
     }
 }
