@@ -308,8 +308,12 @@ pub(crate) use window;
 #[inline(never)]
 pub fn settle<B: Steady>(fb: &mut B, now: u32) -> Status {
     // A state that cannot hold a key cannot be a fixed point that stores one either: a
-    // fixed point leaves the state as it was. No copy to compare with then.
-    let key = fb.steady_key().filter(|_| fb.may_hold_key());
+    // fixed point leaves the state as it was. No key, no copy to compare with then.
+    let key = if fb.may_hold_key() {
+        fb.steady_key()
+    } else {
+        None
+    };
     let Some(key) = key else {
         let status = full_cycle(fb, now);
         fb.private_mut().set_slot(None);
