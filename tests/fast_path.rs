@@ -12,7 +12,7 @@
 mod common;
 
 use common::Rng;
-use safelogic::prim::envelope::{cycle_full, cycle_traced, Block, Steady};
+use safelogic::prim::envelope::{cycle_full, cycle_traced, Block, Instance, Steady};
 use safelogic::registry::{block_type, Dir, Kind};
 use safelogic::*;
 use std::collections::BTreeSet;
@@ -22,6 +22,7 @@ const SEQUENCES: usize = 2_000;
 const CALLS: usize = 40;
 
 /// What one type's run saw: calls, calls the fast path served, states it served them in.
+#[derive(Default)]
 struct Seen {
     name: &'static str,
     calls: usize,
@@ -32,6 +33,14 @@ struct Seen {
     /// Calls that left a timed state (output delay, error delay, timing) with the same input
     /// bytes as the call before: where a fast path that ignored a running timer would fail.
     timed_exits: usize,
+    /// The idempotence probe (`Steady::IDEMPOTENT`): after a call that returned SL_OK, a
+    /// second full call with the same bytes at the same time. Probes run, the states they
+    /// started from, the probes that changed the status, a byte outside the private area or
+    /// the private header (`changed_state`), and those that changed any byte at all.
+    probes: usize,
+    probe_states: BTreeSet<u8>,
+    changed_state: usize,
+    changed_bytes: usize,
 }
 
 macro_rules! pin {
@@ -84,7 +93,7 @@ macro_rules! pin {
                         pool.push(fb);
                     }
                 }
-                let mut s = Seen { name: t.info.name, calls: 0, fast: 0, fast_states: BTreeSet::new(), states: BTreeSet::new(), timed_exits: 0 };
+                let mut s = Seen { name: t.info.name, ..Default::default() };
                 let timed = TIMED.iter().find(|(n, _)| *n == t.info.name).map_or(&[][..], |(_, st)| *st);
                 let inputs: Vec<_> = t.fields.iter().filter(|f| f.dir == Dir::Input).collect();
                 // The bytes a call reads from the struct (inputs, controls, parameters).
@@ -130,6 +139,12 @@ macro_rules! pin {
                                     let private = size - std::mem::size_of_val(&a.stPrivate);
                                     let at = private + (r >> 16) as usize % (size - private);
                                     bytes(&mut a)[at] ^= 1 << ((r >> 40) % 8);
+                                } else if (r >> 8) % 8 == 1 {
+                                    // The private state value rewritten with its complement,
+                                    // to one of the block's states or to another value.
+                                    let h = a.header_mut();
+                                    h.nState = ((r >> 16) % 20) as u8;
+                                    h.seal();
                                 }
                             }
                         }
@@ -165,6 +180,19 @@ macro_rules! pin {
                             "{} seq {seq} step {step}: instances differ (fast {fast})\n{:?}\n{:?}",
                             t.info.name, a, b
                         );
+                        if sb == Status::Ok {
+                            let mut c = b;
+                            let sc = cycle_full(&mut c, now);
+                            let outside = std::mem::size_of::<$ty>() - std::mem::size_of_val(&b.stPrivate);
+                            s.probes += 1;
+                            s.probe_states.insert(b.nState);
+                            if sc != sb || bytes(&mut c)[..outside] != bytes(&mut b)[..outside] || c.header() != b.header() {
+                                s.changed_state += 1;
+                            }
+                            if sc != sb || bytes(&mut c) != bytes(&mut b) {
+                                s.changed_bytes += 1;
+                            }
+                        }
                     }
                 }
                 seen.push(s);
@@ -187,11 +215,7 @@ macro_rules! guard_walk {
             let mut rng = Rng(0x6A4D_0000 ^ stringify!($ty).len() as u64);
             let mut s = Seen {
                 name: stringify!($ty),
-                calls: 0,
-                fast: 0,
-                fast_states: BTreeSet::new(),
-                states: BTreeSet::new(),
-                timed_exits: 0,
+                ..Default::default()
             };
             let timed = [SL_STATE_DELAYOUT, SL_STATE_ERRORDELAY];
             for seq in 0..sequences {
@@ -381,6 +405,34 @@ const EXPECTED: [(&str, &[u8]); 10] = [
     ),
 ];
 
+/// The types whose full cycle is idempotent (`Steady::IDEMPOTENT`: their `settle` stores
+/// the key of every SL_OK call without comparing the state before and after).
+const IDEMPOTENT: [&str; 5] = ["AND", "OR", "DECOUPLE", "RS", "SR"];
+
+/// The types with a fast path that may not claim it: the probe finds calls after which the
+/// same bytes move their state on (the timers' start state, the guards' steps).
+const NOT_IDEMPOTENT: [&str; 5] = ["ESTOP", "MON", "TON", "TON2", "TOF"];
+
+#[test]
+fn the_idempotent_types_are_the_ones_that_claim_it() {
+    let claims = [
+        ("ESTOP", <FB_ESTOP as Steady>::IDEMPOTENT),
+        ("MON", <FB_MON as Steady>::IDEMPOTENT),
+        ("AND", <FB_AND as Steady>::IDEMPOTENT),
+        ("OR", <FB_OR as Steady>::IDEMPOTENT),
+        ("DECOUPLE", <FB_DECOUPLE as Steady>::IDEMPOTENT),
+        ("RS", <FB_RS as Steady>::IDEMPOTENT),
+        ("SR", <FB_SR as Steady>::IDEMPOTENT),
+        ("TON", <FB_TON as Steady>::IDEMPOTENT),
+        ("TON2", <FB_TON2 as Steady>::IDEMPOTENT),
+        ("TOF", <FB_TOF as Steady>::IDEMPOTENT),
+    ];
+    for (name, claim) in claims {
+        assert_eq!(claim, IDEMPOTENT.contains(&name), "{name}");
+        assert_eq!(claim, !NOT_IDEMPOTENT.contains(&name), "{name}");
+    }
+}
+
 #[test]
 fn the_fast_path_gives_what_the_full_cycle_gives() {
     let depth: usize = std::env::var("SL_PROP_DEPTH")
@@ -392,6 +444,12 @@ fn the_fast_path_gives_what_the_full_cycle_gives() {
         println!(
             "{:<9} fast path {:>6} of {:>6} calls, in states {:?}; states reached {:?}; timed exits under steady inputs {}",
             s.name, s.fast, s.calls, s.fast_states, s.states, s.timed_exits
+        );
+    }
+    for s in &seen {
+        println!(
+            "{:<9} idempotence probes {:>6} from states {:?}: state changed {:>5}, bytes changed {:>5}",
+            s.name, s.probes, s.probe_states, s.changed_state, s.changed_bytes
         );
     }
     for s in &seen {
@@ -415,6 +473,33 @@ fn the_fast_path_gives_what_the_full_cycle_gives() {
                 }
             }
             None => assert_eq!(s.fast, 0, "{}: a fast path nobody expects", s.name),
+        }
+        // The idempotence claim holds after every SL_OK call, from each state the fast path
+        // serves and from RESET; and the probe can fail: it finds the calls after which the
+        // others move on.
+        if IDEMPOTENT.contains(&s.name) {
+            assert_eq!(
+                s.changed_bytes, 0,
+                "{}: {} of {} second calls with the same bytes changed the instance",
+                s.name, s.changed_bytes, s.probes
+            );
+            assert!(s.probes * 2 >= s.calls, "{}: {} probes", s.name, s.probes);
+            let (_, states) = expected.expect("an idempotent type has a fast path");
+            for st in states.iter().chain(&[SL_STATE_RESET]) {
+                assert!(
+                    s.probe_states.contains(st),
+                    "{}: never probed from state {st}: {:?}",
+                    s.name,
+                    s.probe_states
+                );
+            }
+        }
+        if NOT_IDEMPOTENT.contains(&s.name) {
+            assert!(
+                s.changed_state > 0,
+                "{}: the probe found no call after which the same bytes move the state on",
+                s.name
+            );
         }
         if TIMED.iter().any(|(n, _)| *n == s.name) {
             assert!(

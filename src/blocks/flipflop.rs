@@ -207,6 +207,11 @@ macro_rules! flipflop_block {
                 fn quiet(&self) -> bool {
                     true
                 }
+                /// The next state is Reset's or Set's command, or the state held when there
+                /// is none, from every state, in `start` as in `step` (`next` applied twice
+                /// to the same inputs gives what it gave once); the envelope's transitions
+                /// as for the combinational blocks (`logic.rs`).
+                const IDEMPOTENT: bool = true;
             }
         };
     };

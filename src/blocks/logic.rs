@@ -154,6 +154,12 @@ macro_rules! logic_block {
                 fn quiet(&self) -> bool {
                     true
                 }
+                /// RUN or SAFE and the outputs are a function of this call's inputs, in
+                /// `start` as in `step`; the envelope's own transitions (STOP → run, ERROR →
+                /// RESET on the ErrAck edge, RESET → run or STOP on its fall, bRun FALSE →
+                /// STOP) end in a state the same bytes keep: the edge memory then holds the
+                /// level, and a latch or an error that would differ returns another status.
+                const IDEMPOTENT: bool = true;
             }
         };
     };

@@ -280,6 +280,33 @@ pub(crate) const fn output<T: TimerBlock>(p: Phase) -> bool {
     matches!(p, Phase::Expired) != T::OFF_DELAY
 }
 
+/// The output in a state value: on in the states of the phases where [`output`] is. One
+/// state (TON, TON2): a compare; two (TOF): one bit test of their set, whose shift takes
+/// the state value modulo 32 — every state value of a timer is below 32, and no other
+/// reaches this test (the envelope refuses it first, docs/semantics.md C13; the fast path
+/// serves only the state its key was stored in). Two compares would cost TOF's steady call
+/// two instructions more.
+#[inline(always)]
+pub(crate) fn output_on<T: TimerBlock>(state: u8) -> bool {
+    let on = const {
+        let p = [Phase::Idle, Phase::Timing, Phase::Expired];
+        let mut bits = 0u32;
+        let mut i = 0;
+        while i < p.len() {
+            if output::<T>(p[i]) {
+                bits |= 1 << state_of::<T>(p[i]);
+            }
+            i += 1;
+        }
+        bits
+    };
+    if on.is_power_of_two() {
+        u32::from(state) == on.trailing_zeros()
+    } else {
+        on.wrapping_shr(u32::from(state)) & 1 != 0
+    }
+}
+
 /// CRC of a timer's latched parameters (every bit of them; the header's masks are unused).
 pub(crate) fn timer_crc(magic: u16, p: &SL_TIMER_PRIVATE) -> u16 {
     let (d, o) = (p.dwDelay, p.dwOptions);
@@ -488,7 +515,7 @@ macro_rules! timer_block {
 
             fn write_outputs(&mut self) {
                 let h = self.private().stHeader;
-                let out = phase_of::<Self>(h.nState).is_some_and(output::<Self>);
+                let out = output_on::<Self>(h.nState);
                 self.set_outputs(out, h.nState, h.wDiag);
             }
         }
@@ -568,5 +595,25 @@ mod tests {
         assert!(!delay_valid(u32::MAX, 0));
         assert!(!delay_valid(1005, 10));
         assert!(!delay_valid(60_001, 0));
+    }
+
+    /// The output's bit test gives, for every state value of each timer, what its phase
+    /// gives (the definition: `output` of the phase, off outside the running states).
+    #[test]
+    fn the_output_of_each_state_is_that_of_its_phase() {
+        fn check<T: TimerBlock + crate::registry::Registered>() {
+            let mut on = 0;
+            for v in 0..64u8 {
+                if T::STATES.has(v) {
+                    let phase = phase_of::<T>(v).is_some_and(output::<T>);
+                    assert_eq!(output_on::<T>(v), phase, "{} state {v}", T::INFO.name);
+                    on += usize::from(phase);
+                }
+            }
+            assert_eq!(on, if T::OFF_DELAY { 2 } else { 1 }, "{}", T::INFO.name);
+        }
+        check::<crate::blocks::ton::FB_TON>();
+        check::<crate::blocks::ton2::FB_TON2>();
+        check::<crate::blocks::tof::FB_TOF>();
     }
 }

@@ -4,12 +4,14 @@
 //!
 //! The steady-state fast path (docs/performance.md): a block whose cycle reads only BOOL
 //! bytes and parameters keeps, beside its private state, the key of the bytes read by the
-//! last call that changed nothing (a fixed point of the full cycle in a state without a
-//! running timer): a window over all of them, the bytes themselves side by side (the
-//! timers), or the BOOL bytes gathered into bits. A call with the same key, an intact
-//! private header, a clock that did not go backwards and parameters equal to the latched
-//! ones would compute the same again: it only advances `tLast` and rewrites the outputs.
-//! Every other call runs the full cycle and records whether it was such a fixed point.
+//! last call that left a state those bytes keep (a fixed point of the full cycle, or any
+//! SL_OK call of an idempotent block, in a state without a running timer): a window over
+//! all of them, the bytes themselves side by side (the timers), or the BOOL bytes gathered
+//! into bits, bound to the control word of that state. A call with the same key in the same
+//! state, an intact private header, a clock that did not go backwards and parameters equal
+//! to the latched ones would compute the same again: it only advances `tLast` and rewrites
+//! the outputs. Every other call runs the full cycle and records whether it left such a
+//! state.
 
 use super::bools::{edge, is_false, is_true};
 use super::header::{F_CFG_INVALID, F_ERRACK_PREV, F_RESET_HELD, F_TIME_VALID, SL_PRIVATE_HEADER};
@@ -106,6 +108,9 @@ pub trait SteadyKey: Copy + PartialEq {
     /// that is neither 0 nor all ones, so a quiet slot and a timed slot differ in half the
     /// bits of the check word, and a zeroed slot holds no key).
     fn timed(self) -> Self;
+    /// The key as stored, bound to the control word (state, flags, diag) of the state it
+    /// was stored in: the control word XOR-ed into its low bits.
+    fn bind(self, ctrl: u32) -> Self;
 }
 
 /// The timed slot's pattern ([`SteadyKey::timed`]).
@@ -124,6 +129,10 @@ macro_rules! scalar_key {
             fn timed(self) -> Self {
                 self ^ TIMED as $w
             }
+            #[inline(always)]
+            fn bind(self, ctrl: u32) -> Self {
+                self ^ ctrl as $w
+            }
         }
     )+};
 }
@@ -137,6 +146,11 @@ impl<const N: usize> SteadyKey for [u64; N] {
     #[inline(always)]
     fn timed(self) -> Self {
         self.map(|w| w ^ TIMED)
+    }
+    #[inline(always)]
+    fn bind(mut self, ctrl: u32) -> Self {
+        self[0] ^= u64::from(ctrl);
+        self
     }
 }
 
@@ -231,6 +245,15 @@ pub trait Steady: Block + crate::registry::Private<P: SteadyPrivate> {
     fn may_hold_key(&self) -> bool {
         self.quiet()
     }
+    /// The full cycle is idempotent: in every state, a call that returns SL_OK leaves a
+    /// state that a call with the same key leaves as it is (but for `tLast`), with SL_OK
+    /// and the same outputs. True for the blocks whose next state is a function of the
+    /// inputs, or holds, the same way from every state (the combinational blocks, the
+    /// flip-flops); not for a block whose start state is left by the inputs that entered it
+    /// (the timers, docs/semantics.md T5) or that steps through states under steady inputs
+    /// (ESTOP, MON). [`settle`] then stores the key of every such call without comparing
+    /// the state before and after (`tests/fast_path.rs` probes the claim after every call).
+    const IDEMPOTENT: bool = false;
 }
 
 /// The key type of a block with a fast path.
@@ -302,11 +325,24 @@ pub(crate) use window;
 
 /// [`Block::settle`] of a block with a fast path: the full cycle, then this call's key
 /// stored when the call returned SL_OK, left the private state as it found it (but for
-/// `tLast`) and no timer runs (check word: the complement) or a timer runs that is not
-/// reached (`timing_quiet`; check word: the key XOR [`TIMED`]); the slot cleared otherwise.
+/// `tLast`; for an [`IDEMPOTENT`](Steady::IDEMPOTENT) block every such call does) and no
+/// timer runs (check word: the complement) or a timer runs that is not reached
+/// (`timing_quiet`; check word: the key XOR [`TIMED`]); the slot cleared otherwise.
 /// Kept out of line: the fast path in [`cycle`] is then a small leaf function.
 #[inline(never)]
 pub fn settle<B: Steady>(fb: &mut B, now: u32) -> Status {
+    if B::IDEMPOTENT {
+        // No copy and no compare: the state this call leaves is one its key keeps.
+        let status = full_cycle(fb, now);
+        let key = if status == Status::Ok {
+            fb.steady_key()
+        } else {
+            None
+        };
+        let slot = key.and_then(|key| slot_of(fb, key, now));
+        fb.private_mut().set_slot(slot);
+        return status;
+    }
     // A state that cannot hold a key cannot be a fixed point that stores one either: a
     // fixed point leaves the state as it was. No key, no copy to compare with then.
     let key = if fb.may_hold_key() {
@@ -331,17 +367,27 @@ pub fn settle<B: Steady>(fb: &mut B, now: u32) -> Status {
     before.head_mut().tLast = t_last;
     before.set_slot(Some(after.slot()));
     let fixed = status == Status::Ok && before == *after;
-    let slot = if !fixed {
-        None
-    } else if fb.quiet() {
-        Some([key, key.complement()])
-    } else if fb.timing_quiet(now) {
-        Some([key, key.timed()])
-    } else {
-        None
-    };
+    let slot = if fixed { slot_of(fb, key, now) } else { None };
     fb.private_mut().set_slot(slot);
     status
+}
+
+/// The slot for `key` after a call that left a state its key keeps: the key bound to the
+/// control word of that state ([`SteadyKey::bind`]), and its check word when no timer runs
+/// (the complement of the key) or a timer runs that is not reached at `now` (the key XOR
+/// [`TIMED`]); `None` otherwise.
+#[inline(always)]
+fn slot_of<B: Steady>(fb: &B, key: KeyOf<B>, now: u32) -> Option<[KeyOf<B>; 2]> {
+    // The control word as the cycle's seal has just stored it, complemented: one read of
+    // that store (the fields one by one would be read as one word that waits for them).
+    let bound = key.bind(!fb.header().dwCtrlCheck);
+    if fb.quiet() {
+        Some([bound, key.complement()])
+    } else if fb.timing_quiet(now) {
+        Some([bound, key.timed()])
+    } else {
+        None
+    }
 }
 
 /// Latches the live parameters into the private copy; returns whether they are valid.
@@ -407,9 +453,17 @@ pub fn fast<B: Steady>(fb: &mut B, now: u32) -> bool {
         return false;
     };
     let [stored, check] = fb.private().slot();
-    // A key stored in a timing state has another check word: a call that finds the quiet
-    // one never reaches the timing test, so the quiet states pay nothing for it.
-    let served = stored == key
+    // The stored key is bound to the control word of the state it was stored in, its check
+    // word is not (`slot_of`): the check word pins the key, the stored key then pins the
+    // control word, so a state written behind the library's back, even with its
+    // complement, is never served (the full cycle decides it; a value the block does not
+    // have is SL_E_CORRUPT there, docs/semantics.md C13). A key stored in a timing state
+    // has another check word: a call that finds the quiet one never reaches the timing
+    // test, so the quiet states pay nothing for it. The two check words differ by
+    // !TIMED, 0xA5 in the state byte: a quiet slot matched as a timed one would need a
+    // state value that differs from the stored one in bit 7, and every state value is
+    // below 64 (`StateSet`), so it can never be the timing state.
+    let served = stored == key.bind(fb.header().ctrl())
         && (check == key.complement() || check == key.timed() && fb.timing_quiet(now))
         && unchanged(fb, now);
     if served {

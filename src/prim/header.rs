@@ -128,8 +128,9 @@ impl SL_PRIVATE_HEADER {
         wOptions: 0,
     };
 
+    /// The control word: state, flags and diag (its complement is `dwCtrlCheck`).
     #[inline]
-    fn ctrl(&self) -> u32 {
+    pub fn ctrl(&self) -> u32 {
         u32::from(self.nState) | (u32::from(self.nFlags) << 8) | (u32::from(self.wDiag) << 16)
     }
 
