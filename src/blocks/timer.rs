@@ -551,12 +551,13 @@ macro_rules! timer_block {
                     && !time::reached(now, p.stHeader.tPhase, p.dwDelay)
             }
 
-            /// Quiet, or the timing state of TON and TOF (`timing_quiet`).
-            #[inline(always)]
-            fn may_hold_key(&self) -> bool {
-                self.quiet()
-                    || !Self::PERSISTS && self.private().stHeader.nState == Self::TIMING_STATE
-            }
+            /// Every call but the one that starts the block leaves a state the same bytes
+            /// keep: a phase the condition holds or fails in stays, Timing stays while the
+            /// delay is not reached (`timing_quiet` decides that for the stored key), and
+            /// the envelope's transitions as for the combinational blocks (`logic.rs`). The
+            /// start state is left by the inputs that entered it (T5).
+            const IDEMPOTENT: bool = true;
+            const START_MOVES_ON: bool = true;
 
         }
         };

@@ -92,7 +92,7 @@ pub trait Block: Instance + crate::registry::Registered {
     where
         Self: Sized,
     {
-        full_cycle(self, now)
+        full_cycle(self, now).0
     }
     /// Forgets a stored fast-path key: whatever changes the private state outside [`cycle`]
     /// calls it.
@@ -231,29 +231,28 @@ pub trait Steady: Block + crate::registry::Private<P: SteadyPrivate> {
     fn quiet(&self) -> bool;
     /// A timer runs that is not reached at `now`, and a call that leaves the state as it is
     /// changes nothing else either (TON, TOF while timing): the outcome of a call at `now`
-    /// depends on the time only through the clock check and this test. Asked by the full
-    /// cycle of a fixed point that is not quiet, and by the fast path of a call whose key
-    /// was stored in such a state.
+    /// depends on the time only through the clock check and this test. Asked after a full
+    /// cycle that left a state its key keeps and that is not quiet, and by the fast path of
+    /// a call whose key was stored in such a state. Only an idempotent block's `settle`
+    /// stores a key in such a state (the fixed-point test asks `quiet` before the cycle).
     #[inline(always)]
     fn timing_quiet(&self, _now: u32) -> bool {
         false
-    }
-    /// A call from this state could store a key: [`quiet`](Self::quiet), or a state in which
-    /// [`timing_quiet`](Self::timing_quiet) can hold. Asked before the full cycle, which
-    /// then skips the fixed-point test where it could not store a key anyway.
-    #[inline(always)]
-    fn may_hold_key(&self) -> bool {
-        self.quiet()
     }
     /// The full cycle is idempotent: in every state, a call that returns SL_OK leaves a
     /// state that a call with the same key leaves as it is (but for `tLast`), with SL_OK
     /// and the same outputs. True for the blocks whose next state is a function of the
     /// inputs, or holds, the same way from every state (the combinational blocks, the
-    /// flip-flops); not for a block whose start state is left by the inputs that entered it
-    /// (the timers, docs/semantics.md T5) or that steps through states under steady inputs
-    /// (ESTOP, MON). [`settle`] then stores the key of every such call without comparing
-    /// the state before and after (`tests/fast_path.rs` probes the claim after every call).
+    /// flip-flops; the timers but for their start call, [`START_MOVES_ON`](Self::START_MOVES_ON));
+    /// not for a block that steps through states under steady inputs (ESTOP, MON).
+    /// [`settle`] then stores the key of every such call without comparing the state before
+    /// and after (`tests/fast_path.rs` probes the claim after every call).
     const IDEMPOTENT: bool = false;
+    /// An [`IDEMPOTENT`](Self::IDEMPOTENT) block whose start state (STOP → run, RESET →
+    /// run) may be left by the inputs that entered it: idempotent in every call but the
+    /// one that starts the block, which stores no key (the timers: TON started with its
+    /// input TRUE times from the next call, docs/semantics.md T5).
+    const START_MOVES_ON: bool = false;
 }
 
 /// The key type of a block with a fast path.
@@ -333,8 +332,8 @@ pub(crate) use window;
 pub fn settle<B: Steady>(fb: &mut B, now: u32) -> Status {
     if B::IDEMPOTENT {
         // No copy and no compare: the state this call leaves is one its key keeps.
-        let status = full_cycle(fb, now);
-        let key = if status == Status::Ok {
+        let (status, began) = full_cycle(fb, now);
+        let key = if status == Status::Ok && !(B::START_MOVES_ON && began) {
             fb.steady_key()
         } else {
             None
@@ -343,20 +342,17 @@ pub fn settle<B: Steady>(fb: &mut B, now: u32) -> Status {
         fb.private_mut().set_slot(slot);
         return status;
     }
-    // A state that cannot hold a key cannot be a fixed point that stores one either: a
-    // fixed point leaves the state as it was. No key, no copy to compare with then.
-    let key = if fb.may_hold_key() {
-        fb.steady_key()
-    } else {
-        None
-    };
+    // A state that is not quiet cannot be a fixed point that stores a key either (a fixed
+    // point leaves the state as it was, and the blocks that take this test have no
+    // `timing_quiet`): no key, no copy to compare with then.
+    let key = if fb.quiet() { fb.steady_key() } else { None };
     let Some(key) = key else {
-        let status = full_cycle(fb, now);
+        let status = full_cycle(fb, now).0;
         fb.private_mut().set_slot(None);
         return status;
     };
     let mut before = *fb.private();
-    let status = full_cycle(fb, now);
+    let status = full_cycle(fb, now).0;
     // What a fast call changes (`tLast`) and the slot are not compared: they are taken from
     // the state after the cycle into the copy, which is then compared with the state in
     // place, field by field. A second copy would read the bytes the cycle has just written
@@ -491,10 +487,12 @@ pub fn cycle_full<B: Block>(fb: &mut B, now: u32) -> Status {
     fb.settle(now)
 }
 
-/// The full cycle (ABI §4, §5, §7).
+/// The full cycle (ABI §4, §5, §7); also whether it started the block (entered its start
+/// state from STOP or RESET).
 #[inline(always)]
-fn full_cycle<B: Block>(fb: &mut B, now: u32) -> Status {
+fn full_cycle<B: Block>(fb: &mut B, now: u32) -> (Status, bool) {
     let mut status = Status::Ok;
+    let mut began = false;
     // An error entered in this call cannot be acknowledged in the same call.
     let mut fresh_error = false;
 
@@ -557,6 +555,7 @@ fn full_cycle<B: Block>(fb: &mut B, now: u32) -> Status {
         SL_STATE_STOP => {
             if started {
                 fb.start(&inp, now);
+                began = true;
             }
         }
         SL_STATE_ERROR => {
@@ -579,6 +578,7 @@ fn full_cycle<B: Block>(fb: &mut B, now: u32) -> Status {
                     fb.header_mut().set_flag(F_RESET_HELD, false);
                     if start {
                         fb.start(&inp, now);
+                        began = true;
                     } else {
                         fb.header_mut().nState = SL_STATE_STOP;
                     }
@@ -608,7 +608,7 @@ fn full_cycle<B: Block>(fb: &mut B, now: u32) -> Status {
     }
     fb.write_outputs();
     fb.header_mut().seal();
-    status
+    (status, began)
 }
 
 /// Forces the instance into ERROR with safe outputs after an internal fault (used by the
