@@ -448,14 +448,14 @@ fn main() {
     macro_rules! arith_row {
         ($($name:literal, $ty:ty, $tag:expr, $cycle:ident, $a:expr, $b:expr;)*) => {$(
             let mut fb = <$ty>::default();
-            fb.wInputActive = safelogic::blocks::arith::ARITH_ACTIVE;
+            fb.wInputActive = safelogic::blocks::analog::arith::ARITH_ACTIVE;
             (fb.nAnalogIn1, fb.nAnalogIn2, fb.bRun) = ($a, $b, 1);
             fb.init();
             let private = size_of_val(&fb.stPrivate);
             rows.push(measure(($name, $tag, logic), batches, fb, private, $cycle, |f| f.nState));
         )*};
     }
-    use safelogic::blocks::arith::*;
+    use safelogic::blocks::analog::arith::*;
     arith_row! {
         "ADD_INT", FB_ADD_INT, SL_TYPE_ADD_INT, sl_add_int_cycle, 1200, -34;
         "SUB_UDINT", FB_SUB_UDINT, SL_TYPE_SUB_UDINT, sl_sub_udint_cycle, 70_000, 3;
@@ -477,7 +477,7 @@ fn main() {
             rows.push(measure(($name, $tag, logic), batches, fb, private, $cycle, |f| f.nState));
         )*};
     }
-    use safelogic::blocks::limit::*;
+    use safelogic::blocks::analog::limit::*;
     limit_row! {
         "LIMIT_INT", FB_LIMIT_INT, SL_TYPE_LIMIT_INT, sl_limit_int_cycle, 0x300, 500;
         "LIMIT_UDINT", FB_LIMIT_UDINT, SL_TYPE_LIMIT_UDINT, sl_limit_udint_cycle, 0x100, 500;
@@ -495,7 +495,7 @@ fn main() {
             rows.push(measure(($name, $tag, logic), batches, fb, private, $cycle, |f| f.nState));
         )*};
     }
-    use safelogic::blocks::compare::*;
+    use safelogic::blocks::analog::compare::*;
     compare_row! {
         "COMPARE_INT", FB_COMPARE_INT, SL_TYPE_COMPARE_INT, sl_compare_int_cycle;
         "COMPARE_UDINT", FB_COMPARE_UDINT, SL_TYPE_COMPARE_UDINT, sl_compare_udint_cycle;
@@ -514,7 +514,7 @@ fn main() {
             rows.push(measure(($name, $tag, logic), batches, fb, private, $cycle, |f| f.nState));
         )*};
     }
-    use safelogic::blocks::scale::*;
+    use safelogic::blocks::analog::scale::*;
     scale_row! {
         "SCALE_INT", FB_SCALE_INT, SL_TYPE_SCALE_INT, sl_scale_int_cycle, 0, 0;
         "SCALE_DINT", FB_SCALE_DINT, SL_TYPE_SCALE_DINT, sl_scale_dint_cycle, SL_SCALE_NEGATE_ANALOGIN, SL_OPT_SCALE_DIVISION_FIRST;
@@ -532,7 +532,7 @@ fn main() {
             rows.push(measure(($name, $tag, logic), batches, fb, private, $cycle, |f| f.nState));
         )*};
     }
-    use safelogic::blocks::speed::*;
+    use safelogic::blocks::analog::speed::*;
     speed_row! {
         "SPEED_INT", FB_SPEED_INT, SL_TYPE_SPEED_INT, sl_speed_int_cycle, 0;
         "SPEED_UDINT", FB_SPEED_UDINT, SL_TYPE_SPEED_UDINT, sl_speed_udint_cycle, SL_OPT_SPEED_OVERFLOW_CHECK;
@@ -549,7 +549,7 @@ fn main() {
             rows.push(measure(($name, $tag, logic), batches, fb, private, $cycle, |f| f.nState));
         )*};
     }
-    use safelogic::blocks::counter::*;
+    use safelogic::blocks::analog::counter::*;
     counter_row! {
         "COUNTER_INT", FB_COUNTER_INT, SL_TYPE_COUNTER_INT, sl_counter_int_cycle;
         "COUNTER_UDINT", FB_COUNTER_UDINT, SL_TYPE_COUNTER_UDINT, sl_counter_udint_cycle;
@@ -567,7 +567,7 @@ fn main() {
             rows.push(measure(($name, $tag, logic), batches, fb, private, $cycle, |f| f.nState));
         )*};
     }
-    use safelogic::blocks::violationcounter::*;
+    use safelogic::blocks::analog::violationcounter::*;
     violation_row! {
         "VIOLATIONCOUNTER_UINT", FB_VIOLATIONCOUNTER_UINT, SL_TYPE_VIOLATIONCOUNTER_UINT, sl_violationcounter_uint_cycle;
         "VIOLATIONCOUNTER_UDINT", FB_VIOLATIONCOUNTER_UDINT, SL_TYPE_VIOLATIONCOUNTER_UDINT, sl_violationcounter_udint_cycle;
@@ -586,7 +586,7 @@ fn main() {
             rows.push(measure(($name, $tag, logic), batches, fb, private, $cycle, |f| f.nState));
         )*};
     }
-    use safelogic::blocks::{sli::*, sli2::*};
+    use safelogic::blocks::analog::{sli::*, sli2::*};
     sli_row! {
         "SLI_INT", FB_SLI_INT, SL_TYPE_SLI_INT, sl_sli_int_cycle;
         "SLI_UDINT", FB_SLI_UDINT, SL_TYPE_SLI_UDINT, sl_sli_udint_cycle;
@@ -610,7 +610,7 @@ fn main() {
             rows.push(measure(($name, $tag, logic), batches, fb, private, $cycle, |f| f.nState));
         )*};
     }
-    use safelogic::blocks::loadsensing::*;
+    use safelogic::blocks::analog::loadsensing::*;
     loadsensing_row! {
         "LOADSENSING_INT", FB_LOADSENSING_INT, SL_TYPE_LOADSENSING_INT, sl_loadsensing_int_cycle;
         "LOADSENSING_UDINT", FB_LOADSENSING_UDINT, SL_TYPE_LOADSENSING_UDINT, sl_loadsensing_udint_cycle;
@@ -629,7 +629,7 @@ fn main() {
             rows.push(measure(($name, $tag, timer), batches, fb, private, $cycle, |f| f.nState));
         )*};
     }
-    use safelogic::blocks::envelope::*;
+    use safelogic::blocks::analog::envelope::*;
     envelope_row! {
         "ENVELOPE_INT", FB_ENVELOPE_INT, SL_TYPE_ENVELOPE_INT, sl_envelope_int_cycle;
         "ENVELOPE_UDINT", FB_ENVELOPE_UDINT, SL_TYPE_ENVELOPE_UDINT, sl_envelope_udint_cycle;
@@ -662,7 +662,7 @@ fn main() {
             rows.push(measure(($name, $tag, timer), batches, fb, private, $cycle, |f| f.nState));
         )*};
     }
-    use safelogic::blocks::cammonitor::*;
+    use safelogic::blocks::motion::cammonitor::*;
     cammonitor_row! {
         "CAMMONITOR_UINT", FB_CAMMONITOR_UINT, SL_TYPE_CAMMONITOR_UINT, sl_cammonitor_uint_cycle;
         "CAMMONITOR_UDINT", FB_CAMMONITOR_UDINT, SL_TYPE_CAMMONITOR_UDINT, sl_cammonitor_udint_cycle;
@@ -670,7 +670,7 @@ fn main() {
 
     // SLP: multi-turn, limits from the parameters, the position inside them (RUN).
     {
-        use safelogic::blocks::slp::*;
+        use safelogic::blocks::motion::slp::*;
         let mut fb = FB_SLP {
             wInputActive: SL_SLP_ACTIVE_SAFEPOSVALID
                 | SL_SLP_ACTIVE_SINGLETURNPOS
@@ -695,7 +695,7 @@ fn main() {
     // SBT: no test requested, the longest interval counting down (SAFE; RemainingTime
     // updated every call).
     {
-        use safelogic::blocks::sbt::*;
+        use safelogic::blocks::motion::sbt::*;
         let mut fb = FB_SBT {
             wInputActive: SL_SBT_ACTIVE_SBT
                 | SL_SBT_ACTIVE_SBCIN
@@ -722,7 +722,7 @@ fn main() {
 
     // ADVPOSMON: enabled, referenced, coverage good (RUN, Active), restart sequence active.
     {
-        use safelogic::blocks::advposmon::*;
+        use safelogic::blocks::motion::advposmon::*;
         let mut fb = FB_ADVPOSMON {
             wInputActive: SL_ADVPOSMON_ACTIVE_ENABLE | SL_ADVPOSMON_ACTIVE_RESTART,
             ..Default::default()
@@ -1022,7 +1022,7 @@ enum Calls {
 /// Times `set` + `cycle` with a fixed input word (steady: the word that keeps the inputs
 /// TRUE, Restart and ErrAck FALSE) and with a fresh random word before every call, and
 /// `set` + the full cycle alone with the fixed word.
-fn cliff_row<T: Copy + safelogic::prim::envelope::Block>(
+fn cliff_row<T: Copy + safelogic::base::envelope::Block>(
     name: &'static str,
     batches: usize,
     fb: T,
@@ -1030,7 +1030,7 @@ fn cliff_row<T: Copy + safelogic::prim::envelope::Block>(
     set: fn(&mut T, u64),
 ) -> Cliff {
     let f: unsafe extern "C" fn(*mut T, u32) -> i32 = black_box(cycle);
-    let full: fn(&mut T, u32) -> Status = black_box(safelogic::prim::envelope::cycle_full::<T>);
+    let full: fn(&mut T, u32) -> Status = black_box(safelogic::base::envelope::cycle_full::<T>);
     let mut words = [0u64; 4096];
     let mut x = 0x9E37_79B9_7F4A_7C15u64;
     for w in words.iter_mut() {

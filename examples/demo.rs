@@ -202,7 +202,7 @@ fn state_name(state: u8) -> String {
 
 /// "SL_E_CLOCK" etc. (the part of the status text before the colon).
 fn status_name(status: i32) -> String {
-    let text = safelogic::types::status_str(status);
+    let text = safelogic::base::types::status_str(status);
     text.split(':').next().unwrap_or(text).to_string()
 }
 

@@ -118,7 +118,7 @@ impl Machine {
                 if rc == SL_OK {
                     String::new()
                 } else {
-                    format!(" [{}]", safelogic::types::status_str(rc))
+                    format!(" [{}]", safelogic::base::types::status_str(rc))
                 }
             );
         }
@@ -150,7 +150,7 @@ fn single(g: &mut SL_GROUP, m: &mut dyn Member, ty: u16, t: u32, what: &str) {
         if rc == SL_OK {
             String::new()
         } else {
-            format!(" [{}]", safelogic::types::status_str(rc))
+            format!(" [{}]", safelogic::base::types::status_str(rc))
         }
     );
 }

@@ -16,7 +16,7 @@
 //! Prints a timeline (10 ms cycle), one line per change; `cargo run --example press`. The C
 //! example `examples/c/press.c` prints the same lines (the test command diffs them).
 
-use safelogic::blocks::state_name;
+use safelogic::group::state_name;
 use safelogic::*;
 
 const C: u32 = 8193;

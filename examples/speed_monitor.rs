@@ -16,10 +16,10 @@
 //! Prints a timeline (10 ms cycle); `cargo run --example speed_monitor`. The C example
 //! `examples/c/speed_monitor.c` prints the same lines (the test command diffs them).
 
-use safelogic::blocks::compare::{SL_ARCH_1OO2, SL_TYPE_COMPARE_DINT};
-use safelogic::blocks::limit::{SL_LIMIT_ACTIVE_ANALOGIN, SL_TYPE_LIMIT_DINT};
-use safelogic::blocks::sli::{SL_SLI_ACTIVE, SL_TYPE_SLI_DINT};
-use safelogic::blocks::speed::SL_SPEED_ACTIVE_POSITION;
+use safelogic::blocks::analog::compare::{SL_ARCH_1OO2, SL_TYPE_COMPARE_DINT};
+use safelogic::blocks::analog::limit::{SL_LIMIT_ACTIVE_ANALOGIN, SL_TYPE_LIMIT_DINT};
+use safelogic::blocks::analog::sli::{SL_SLI_ACTIVE, SL_TYPE_SLI_DINT};
+use safelogic::blocks::analog::speed::SL_SPEED_ACTIVE_POSITION;
 use safelogic::group::{self, Member, SL_LINK_ANALOG32, SL_LINK_BOOL};
 use safelogic::*;
 use std::mem::offset_of;
@@ -215,7 +215,7 @@ impl Drive {
             if rc == SL_OK {
                 String::new()
             } else {
-                format!(" [{}]", safelogic::types::status_str(rc))
+                format!(" [{}]", safelogic::base::types::status_str(rc))
             }
         );
     }

@@ -16,34 +16,314 @@
 #include <stddef.h>
 
 /*
- Type tag of FB_ADVPOSMON (ABI-2 §10.6: sequential in the order of §10.3).
+ First type tag of the PLCopen family.
  */
-#define SL_TYPE_ADVPOSMON 74
+#define SF_TAG_BASE 512
 
 /*
- FB_ADVPOSMON state WAIT-FOR-RESTART (16, the manual's "0x10").
+ The timed slot's pattern ([`SteadyKey::timed`]).
  */
-#define SL_STATE_ADVPOSMON_WAIT_FOR_RESTART 16
+#define TIMED 6510615555426900570
 
 /*
- Diag message of the ERROR state ("transfers the Diag message 0x38D1").
+ Largest number of FSoE connections in one group whose shutdown is wired to a
+ FB_CONNECTION_SHUTDOWN (`sl_group_add_member` refuses more with SL_E_FULL).
  */
-#define SL_TEXT_ADVPOSMON_SDFB_ERROR 14545
+#define SL_GROUP_CONN_MAX 16
 
 /*
- `wInputActive` bit of Enable (required).
+ `nDiagProfile` 0: the PLCopen v2.01 DiagCodes (default).
  */
-#define SL_ADVPOSMON_ACTIVE_ENABLE (1 << 0)
+#define SL_SF_PROFILE_V201 0
 
 /*
- `wInputActive` bit of Restart: set = RESTART_ACTIVE (the optional restart sequence).
+ `nDiagProfile` 1: the PLCopen v1.0 DiagCodes (blocks that exist in v1.0 only).
  */
-#define SL_ADVPOSMON_ACTIVE_RESTART (1 << 1)
+#define SL_SF_PROFILE_V10 1
 
 /*
- Largest SAFEDRIVEFEEDBACK instance number of a feedback parameter ("instance (0-3)").
+ Library DiagCode: the private state was corrupt (SL_E_CORRUPT). Left by Activate FALSE.
  */
-#define SL_ADVPOSMON_FEEDBACK_MAX 3
+#define SL_SF_DIAG_CORRUPT 50175
+
+/*
+ Library DiagCode: the clock went backwards (SL_E_CLOCK). Left by Activate FALSE.
+ */
+#define SL_SF_DIAG_CLOCK 50174
+
+/*
+ Library DiagCode: a constant input (`nDiagProfile`, a time) changed while the block was
+ activated (SL_E_PARAM_CHANGED). Left by Activate FALSE.
+ */
+#define SL_SF_DIAG_CONST_CHANGED 50173
+
+/*
+ Library DiagCode: a constant input is invalid at activation (SL_E_CONFIG). Left by
+ Activate FALSE.
+ */
+#define SL_SF_DIAG_CONFIG 50172
+
+/*
+ Largest monitored time of an `SF_` block (ms; 2^31 − 1, the half circle of the
+ wrapping clock).
+ */
+#define SL_SF_TIME_MAX 2147483647
+
+/*
+ The DiagCode meaning "the block is activated and its safety output is enabled".
+ */
+#define SF_ENABLED 32768
+
+/*
+ Success.
+ */
+#define SL_OK 0
+
+/*
+ A required pointer is NULL; nothing was written.
+ */
+#define SL_E_NULL (-1)
+
+/*
+ Invalid parameters; outputs safe (all FALSE), nState = STOP (2).
+ */
+#define SL_E_CONFIG (-2)
+
+/*
+ A parameter changed while the block was not in STOP; nState = ERROR (4), bError TRUE.
+ */
+#define SL_E_PARAM_CHANGED (-3)
+
+/*
+ The private state failed its integrity check; nState = ERROR (4), bError TRUE.
+ */
+#define SL_E_CORRUPT (-4)
+
+/*
+ An input byte was not 0 or 1; it was read as the value that demands the safe state.
+ */
+#define SL_E_INVALID_BOOL (-5)
+
+/*
+ tNow went backwards (wrapping difference to the last call >= 2^31); nState = ERROR (4).
+ */
+#define SL_E_CLOCK (-6)
+
+/*
+ Library extension: an internal fault was caught at the C boundary; the instance was put
+ into ERROR (4) with every output FALSE except bError.
+ */
+#define SL_E_INTERNAL (-7)
+
+/*
+ Library extension: the instance pointer is not aligned to 4 bytes; nothing was written.
+ */
+#define SL_E_ALIGNMENT (-8)
+
+/*
+ Library extension: the caller's member or link storage of a group is full.
+ */
+#define SL_E_FULL (-9)
+
+/*
+ Library extension (FB_TON2, "Starts with remaining time"): a restored elapsed time was
+ refused, because it is greater than the latched tDelay (the manual's global shutdown,
+ error code 0x3510) or because `sl_ton2_restore_elapsed` was called while the block was
+ not in STOP. nState = ERROR (4), output FALSE, diag bit 12 (SL_DIAG_TON2_RESTORE); the
+ stored elapsed time is discarded (0), so one ErrAck sequence leaves the error.
+ */
+#define SL_E_RESTORE (-10)
+
+/*
+ FSoE (ABI-2 §13.1): a length or capacity does not fit (frame length, SafeData length,
+ transmit buffer capacity); nothing was written.
+ */
+#define SL_E_LENGTH (-11)
+
+/*
+ FSoE (ABI-2 §13.6): a frame was rejected by `sl_fsoe_frame_decode` (the reason is in
+ its `nResetCode`: 2 unknown command, 4 CRC).
+ */
+#define SL_E_FRAME (-12)
+
+/*
+ EDM1 feedback loop active.
+ */
+#define SL_OPT_EDM1 (1 << 0)
+
+/*
+ EDM2 feedback loop active.
+ */
+#define SL_OPT_EDM2 (1 << 1)
+
+/*
+ "Safe Inputs after Disc Error".
+ */
+#define SL_OPT_SAFE_INPUTS_AFTER_DISC (1 << 2)
+
+/*
+ Manual (active) restart (MON; ESTOP always restarts manually).
+ */
+#define SL_OPT_MANUAL_RESTART (1 << 3)
+
+/*
+ Manual function test (MON).
+ */
+#define SL_OPT_FUNCTION_TEST (1 << 4)
+
+/*
+ FB_MUTING "Sequential Inputs": the four muting inputs are single-channel sensors checked
+ one after the other (clear: two two-channel groups MutingIn1/2 and MutingIn3/4, parallel).
+ */
+#define SL_OPT_MUTING_SEQUENTIAL (1 << 8)
+
+/*
+ FB_MUTING "Backwards Mode" (EL6910): a sequence may also run backwards, starting at MutingIn4.
+ */
+#define SL_OPT_MUTING_BACKWARDS (1 << 9)
+
+/*
+ FB_MUTING "OSSD Check Optional" (EL6910): the protective field is not part of the sequence
+ check; it may be interrupted at any step of a running sequence.
+ */
+#define SL_OPT_MUTING_OSSD_CHECK_OPTIONAL (1 << 10)
+
+/*
+ Diag bit 6 (FB_MUTING): the muting sequence was violated.
+ */
+#define SL_DIAG_MUTING_SEQUENCE (1 << 6)
+
+/*
+ Diag bit 7 (FB_MUTING): the maximum muting time was exceeded.
+ */
+#define SL_DIAG_MUTING_MAX_TIME (1 << 7)
+
+/*
+ FB_TWOHAND diag bit 6: two-hand error (the second group was actuated while the first was
+ no longer actuated, manual §4.7.2).
+ */
+#define SL_DIAG_TWOHAND_ERROR (1 << 6)
+
+/*
+ Diag bit 0: discrepancy error input group 1.
+ */
+#define SL_DIAG_DISC1 (1 << 0)
+
+/*
+ Diag bit 1: discrepancy error input group 2.
+ */
+#define SL_DIAG_DISC2 (1 << 1)
+
+/*
+ Diag bit 2: discrepancy error input group 3 (MON: the Secure input group).
+ */
+#define SL_DIAG_DISC3 (1 << 2)
+
+/*
+ Diag bit 3: discrepancy error input group 4.
+ */
+#define SL_DIAG_DISC4 (1 << 3)
+
+/*
+ Diag bit 4: EDM monitoring error EDM1.
+ */
+#define SL_DIAG_EDM1 (1 << 4)
+
+/*
+ Diag bit 5: EDM monitoring error EDM2.
+ */
+#define SL_DIAG_EDM2 (1 << 5)
+
+/*
+ Diag bit 8: bit 0 with "Safe Inputs after Disc Error" active (set in addition to bit 0).
+ */
+#define SL_DIAG_SAFE_IN_DISC1 (1 << 8)
+
+/*
+ Diag bit 9: bit 1 with "Safe Inputs after Disc Error" active.
+ */
+#define SL_DIAG_SAFE_IN_DISC2 (1 << 9)
+
+/*
+ Diag bit 10: bit 2 with "Safe Inputs after Disc Error" active.
+ */
+#define SL_DIAG_SAFE_IN_DISC3 (1 << 10)
+
+/*
+ Diag bit 11: bit 3 with "Safe Inputs after Disc Error" active.
+ */
+#define SL_DIAG_SAFE_IN_DISC4 (1 << 11)
+
+/*
+ Library extension, diag bit 13: a parameter changed outside STOP (SL_E_PARAM_CHANGED).
+ */
+#define SL_DIAG_PARAM_CHANGED (1 << 13)
+
+/*
+ Library extension, diag bit 14: the clock went backwards (SL_E_CLOCK).
+ */
+#define SL_DIAG_CLOCK (1 << 14)
+
+/*
+ Library extension, diag bit 15: the private state was corrupt (SL_E_CORRUPT / SL_E_INTERNAL).
+ */
+#define SL_DIAG_CORRUPT (1 << 15)
+
+/*
+ The library's own diag bits (13-15); the rest of `nDiag` is the manual's bits or value.
+ */
+#define LIBRARY_DIAG_BITS ((SL_DIAG_PARAM_CHANGED | SL_DIAG_CLOCK) | SL_DIAG_CORRUPT)
+
+/*
+ State RUN (manual: status value 1).
+ */
+#define SL_STATE_RUN 1
+
+/*
+ State STOP (2).
+ */
+#define SL_STATE_STOP 2
+
+/*
+ State SAFE (3).
+ */
+#define SL_STATE_SAFE 3
+
+/*
+ State ERROR (4).
+ */
+#define SL_STATE_ERROR 4
+
+/*
+ State RESET (5).
+ */
+#define SL_STATE_RESET 5
+
+/*
+ State START (6).
+ */
+#define SL_STATE_START 6
+
+/*
+ State ERRORDELAY (7, MON).
+ */
+#define SL_STATE_ERRORDELAY 7
+
+/*
+ State DELAYOUT (8).
+ */
+#define SL_STATE_DELAYOUT 8
+
+/*
+ State FUNCTEST (9, MON).
+ */
+#define SL_STATE_FUNCTEST 9
+
+/*
+ Largest time parameter of FB_ESTOP and FB_MON, and largest discrepancy time of FB_OPMODE
+ and FB_TWOHAND, in ms (see docs/semantics.md C10, O3, H3).
+ */
+#define SL_TIME_PARAM_MAX 65535
 
 /*
  Diag value 1 of every analog block with a range check (ABI-2 §12.1): the result is
@@ -55,11 +335,6 @@
  Diag value 2: the result is above the largest value of the type.
  */
 #define SL_DIAG_VALUE_OVERFLOW 2
-
-/*
- Block type tag of FB_AND.
- */
-#define SL_TYPE_AND 3
 
 /*
  Type tags of the arithmetic blocks (ABI-2 §10.6: sequential from 16).
@@ -171,6 +446,742 @@
  both required (ABI-2 §10.5).
  */
 #define ARITH_ACTIVE 768
+
+/*
+ Type tag of FB_COMPARE_INT (ABI-2 §10.6: sequential from 16 in the order of §10.3).
+ */
+#define SL_TYPE_COMPARE_INT 32
+
+/*
+ FB_COMPARE_UINT.
+ */
+#define SL_TYPE_COMPARE_UINT 33
+
+/*
+ FB_COMPARE_DINT.
+ */
+#define SL_TYPE_COMPARE_DINT 34
+
+/*
+ FB_COMPARE_UDINT.
+ */
+#define SL_TYPE_COMPARE_UDINT 35
+
+/*
+ `nArchitecture` 1oo2: CompIn1 and CompIn2 must agree.
+ */
+#define SL_ARCH_1OO2 2
+
+/*
+ `nArchitecture` 2oo3: two of CompIn1–3 must agree.
+ */
+#define SL_ARCH_2OO3 3
+
+/*
+ `nArchitecture` 3oo5: three of CompIn1–5 must agree.
+ */
+#define SL_ARCH_3OO5 5
+
+/*
+ Type tag of FB_COUNTER_INT (ABI-2 §10.6: after the ten four-variant blocks of §10.3).
+ */
+#define SL_TYPE_COUNTER_INT 56
+
+/*
+ FB_COUNTER_UINT.
+ */
+#define SL_TYPE_COUNTER_UINT 57
+
+/*
+ FB_COUNTER_DINT.
+ */
+#define SL_TYPE_COUNTER_DINT 58
+
+/*
+ FB_COUNTER_UDINT.
+ */
+#define SL_TYPE_COUNTER_UDINT 59
+
+/*
+ Diag message "An underflow has occurred" (parameters: ActValue, smallest permitted value).
+ */
+#define SL_TEXT_COUNTER_UNDERFLOW 16568
+
+/*
+ Diag message "An overflow has occurred" (parameters: ActValue, largest permitted value).
+ */
+#define SL_TEXT_COUNTER_OVERFLOW 16569
+
+/*
+ `wInputActive` bits of Reset, CountUp, CountDown (optional: an inactive input reads FALSE).
+ */
+#define SL_COUNTER_ACTIVE_INPUTS 7
+
+/*
+ Type tag of FB_ENVELOPE_INT (ABI-2 §10.6: sequential from 16 in the order of §10.3).
+ */
+#define SL_TYPE_ENVELOPE_INT 52
+
+/*
+ FB_ENVELOPE_UINT.
+ */
+#define SL_TYPE_ENVELOPE_UINT 53
+
+/*
+ FB_ENVELOPE_DINT.
+ */
+#define SL_TYPE_ENVELOPE_DINT 54
+
+/*
+ FB_ENVELOPE_UDINT.
+ */
+#define SL_TYPE_ENVELOPE_UDINT 55
+
+/*
+ State MONITOR (manual §4.32.2 "9.0"): SafeFunction fell, InValue outside the target
+ window, checked against the envelope; SafeFunctionOut 1.
+ */
+#define SL_STATE_ENVELOPE_MONITOR 9
+
+/*
+ Diag value 1: "Underflow (InValue below the envelope)".
+ */
+#define SL_DIAG_ENVELOPE_UNDERFLOW 1
+
+/*
+ Diag value 2: "Overflow (InValue above the envelope)".
+ */
+#define SL_DIAG_ENVELOPE_OVERFLOW 2
+
+/*
+ Diag value 3: "InValue Error" (the manual defines no condition: never set, EV6).
+ */
+#define SL_DIAG_ENVELOPE_INVALUE_ERROR 3
+
+/*
+ Diag value 4: "MaxTimeExpired" (MaxTime leads to SAFE without error: never set, EV6).
+ */
+#define SL_DIAG_ENVELOPE_MAX_TIME 4
+
+/*
+ Diag message "InValueExpired AND InValue < 0" (parameters: InValue, MinAllowedValue).
+ */
+#define SL_TEXT_ENVELOPE_UNDERFLOW 16584
+
+/*
+ Diag message "InValueExpired AND InValue > 0" (parameters: InValue, MaxAllowedValue).
+ */
+#define SL_TEXT_ENVELOPE_OVERFLOW 16585
+
+/*
+ `wInputActive` of FB ENVELOPE: SafeFunction (bit 0) and InValue (bit 8), both required.
+ */
+#define SL_ENVELOPE_ACTIVE 257
+
+/*
+ Largest `tTimeAfterInTarget` and `tMaxTime` (ms; ABI-2 §12.9, semantics C10).
+ */
+#define SL_ENVELOPE_TIME_MAX 65535
+
+/*
+ Type tag of FB_LIMIT_INT (ABI-2 §10.6: sequential from 16 in the order of §10.3).
+ */
+#define SL_TYPE_LIMIT_INT 36
+
+/*
+ FB_LIMIT_UINT.
+ */
+#define SL_TYPE_LIMIT_UINT 37
+
+/*
+ FB_LIMIT_DINT.
+ */
+#define SL_TYPE_LIMIT_DINT 38
+
+/*
+ FB_LIMIT_UDINT.
+ */
+#define SL_TYPE_LIMIT_UDINT 39
+
+/*
+ Diag value 1: MinValue is greater than MaxValue.
+ */
+#define SL_DIAG_LIMIT_MIN_ABOVE_MAX 1
+
+/*
+ Diag message "MinValue is greater than MaxValue" (parameters: MinValue, MaxValue).
+ */
+#define SL_TEXT_LIMIT_MIN_ABOVE_MAX 16528
+
+/*
+ `wInputActive` bit of AnalogIn (required).
+ */
+#define SL_LIMIT_ACTIVE_ANALOGIN (1 << 8)
+
+/*
+ `wInputActive` bit of MinValue: set = the input is the minimum, clear = `nMinimumValue`.
+ */
+#define SL_LIMIT_ACTIVE_MINVALUE (1 << 9)
+
+/*
+ `wInputActive` bit of MaxValue: set = the input is the maximum, clear = `nMaximumValue`.
+ */
+#define SL_LIMIT_ACTIVE_MAXVALUE (1 << 10)
+
+/*
+ Type tag of FB_LOADSENSING_INT (ABI-2 §10.6: sequential from 16 in the order of §10.3).
+ */
+#define SL_TYPE_LOADSENSING_INT 48
+
+/*
+ FB_LOADSENSING_UINT.
+ */
+#define SL_TYPE_LOADSENSING_UINT 49
+
+/*
+ FB_LOADSENSING_DINT.
+ */
+#define SL_TYPE_LOADSENSING_DINT 50
+
+/*
+ FB_LOADSENSING_UDINT.
+ */
+#define SL_TYPE_LOADSENSING_UDINT 51
+
+/*
+ State INACTIVE (manual §4.25.2 "16.0"): Inactive is TRUE; Valid 0, Warning 0.
+ */
+#define SL_STATE_LOADSENSING_INACTIVE 16
+
+/*
+ State WARNING (manual §4.25.2 "17.0"): AnalogInY between the levels; Valid 1, Warning 1.
+ */
+#define SL_STATE_LOADSENSING_WARNING 17
+
+/*
+ Rows of the value table ("There can be up to 25 indices").
+ */
+#define SL_LOADSENSING_ROWS_MAX 25
+
+/*
+ `dwOptions` bit 8: "Outside [y1; y2]": values outside Y1…Y2 are valid.
+ */
+#define SL_OPT_LOADSENSING_OUTSIDE (1 << 8)
+
+/*
+ `wInputActive` bit of Inactive (optional: clear = reads FALSE, the block evaluates).
+ */
+#define SL_LOADSENSING_ACTIVE_INACTIVE (1 << 0)
+
+/*
+ `wInputActive` bit of AnalogInX (required).
+ */
+#define SL_LOADSENSING_ACTIVE_ANALOGINX (1 << 8)
+
+/*
+ `wInputActive` bit of AnalogInY (required).
+ */
+#define SL_LOADSENSING_ACTIVE_ANALOGINY (1 << 9)
+
+/*
+ Type tag of FB_SCALE_INT (ABI-2 §10.6: sequential from 16 in the order of §10.3).
+ */
+#define SL_TYPE_SCALE_INT 40
+
+/*
+ FB_SCALE_UINT.
+ */
+#define SL_TYPE_SCALE_UINT 41
+
+/*
+ FB_SCALE_DINT.
+ */
+#define SL_TYPE_SCALE_DINT 42
+
+/*
+ FB_SCALE_UDINT.
+ */
+#define SL_TYPE_SCALE_UDINT 43
+
+/*
+ `dwOptions`: "Multiplication First" FALSE — divide by `nDenominator` before multiplying
+ by `nNumerator` (default: multiplication first).
+ */
+#define SL_OPT_SCALE_DIVISION_FIRST (1 << 8)
+
+/*
+ Diag value 3: "A 32-bit overflow occurred during the multiplication."
+ */
+#define SL_DIAG_SCALE_MUL_OVERFLOW 3
+
+/*
+ Diag value 4: "A 32-bit overflow occurred during the division due to rounding."
+ */
+#define SL_DIAG_SCALE_DIV_OVERFLOW 4
+
+/*
+ Diag message "The output AnalogOut has an underflow" (parameter 2: AnalogIn).
+ */
+#define SL_TEXT_SCALE_UNDERFLOW 16560
+
+/*
+ Diag message "The output AnalogOut has an overflow" (parameter 2: AnalogIn).
+ */
+#define SL_TEXT_SCALE_OVERFLOW 16561
+
+/*
+ Diag message "A 32-bit overflow occurred during the multiplication." (parameter 2: AnalogIn).
+ */
+#define SL_TEXT_SCALE_MUL_OVERFLOW 16562
+
+/*
+ Diag message "A 32-bit overflow occurred during the division due to rounding."
+ (parameter 2: AnalogIn).
+ */
+#define SL_TEXT_SCALE_DIV_OVERFLOW 16563
+
+/*
+ `wInputActive` bit of AnalogIn (required, the only bit).
+ */
+#define SL_SCALE_ACTIVE_ANALOGIN (1 << 8)
+
+/*
+ `wInputNegated` bit of AnalogIn: INT/DINT ×(−1), UINT/UDINT XOR all ones.
+ */
+#define SL_SCALE_NEGATE_ANALOGIN (1 << 8)
+
+/*
+ Type tag of FB_SLI_INT (ABI-2 §10.6: sequential in the order of §10.3).
+ */
+#define SL_TYPE_SLI_INT 60
+
+/*
+ FB_SLI_UINT.
+ */
+#define SL_TYPE_SLI_UINT 61
+
+/*
+ FB_SLI_DINT.
+ */
+#define SL_TYPE_SLI_DINT 62
+
+/*
+ FB_SLI_UDINT.
+ */
+#define SL_TYPE_SLI_UDINT 63
+
+/*
+ Type tag of FB_SLI2_INT (ABI-2 §10.6: sequential in the order of §10.3).
+ */
+#define SL_TYPE_SLI2_INT 64
+
+/*
+ FB_SLI2_UINT.
+ */
+#define SL_TYPE_SLI2_UINT 65
+
+/*
+ FB_SLI2_DINT.
+ */
+#define SL_TYPE_SLI2_DINT 66
+
+/*
+ FB_SLI2_UDINT.
+ */
+#define SL_TYPE_SLI2_UDINT 67
+
+/*
+ Type tag of FB_SPEED_INT (ABI-2 §10.6: sequential from 16 in the order of §10.3).
+ */
+#define SL_TYPE_SPEED_INT 44
+
+/*
+ FB_SPEED_UINT.
+ */
+#define SL_TYPE_SPEED_UINT 45
+
+/*
+ FB_SPEED_DINT.
+ */
+#define SL_TYPE_SPEED_DINT 46
+
+/*
+ FB_SPEED_UDINT.
+ */
+#define SL_TYPE_SPEED_UDINT 47
+
+/*
+ `dwOptions`: "Overflow Check" — the position difference is taken modulo 2^W before the
+ range check (a position counter wrapping at its type's end is no jump).
+ */
+#define SL_OPT_SPEED_OVERFLOW_CHECK (1 << 8)
+
+/*
+ Diag message "An underflow has occurred." (parameters: current, latched position).
+ */
+#define SL_TEXT_SPEED_UNDERFLOW 16520
+
+/*
+ Diag message "An overflow has occurred." (parameters: current, latched position).
+ */
+#define SL_TEXT_SPEED_OVERFLOW 16521
+
+/*
+ `wInputActive` bit of Position (required, the only bit).
+ */
+#define SL_SPEED_ACTIVE_POSITION (1 << 8)
+
+/*
+ Type tag of FB_VIOLATIONCOUNTER_UINT (ABI-2 §10.6, order of §10.3).
+ */
+#define SL_TYPE_VIOLATIONCOUNTER_UINT 68
+
+/*
+ FB_VIOLATIONCOUNTER_UDINT.
+ */
+#define SL_TYPE_VIOLATIONCOUNTER_UDINT 69
+
+/*
+ `wInputActive` of FB VIOLATIONCOUNTER: Input (bit 0) and Enable (bit 1), both required.
+ */
+#define SL_VIOLATIONCOUNTER_ACTIVE 3
+
+/*
+ Diag message "An underflow has occurred" (parameters: Position, LatchPosition); FB SLI2
+ reports it too.
+ */
+#define SL_TEXT_SLI_UNDERFLOW 16576
+
+/*
+ Diag message "An overflow has occurred" (parameters: Position, LatchPosition).
+ */
+#define SL_TEXT_SLI_OVERFLOW 16577
+
+/*
+ `wInputActive` of FB_SLI and FB_SLI2: SLI (bit 0) and Position (bit 8), both required,
+ no other bit (ABI-2 §11.9 "bits 0, 8 must be set").
+ */
+#define SL_SLI_ACTIVE 257
+
+/*
+ FB_SLI2 state EXCEEDED (manual §4.28.2.3: 7): the position left the window with
+ `SL_OPT_SLI2_EXCEEDED_SUPPORT`; left only by SLI FALSE (→ SAFE).
+ */
+#define SL_STATE_SLI2_EXCEEDED 7
+
+/*
+ `dwOptions` "OverflowAllowed": PositionDiff modulo 2^W in the signed range.
+ */
+#define SL_OPT_SLI2_OVERFLOW_ALLOWED (1 << 8)
+
+/*
+ `dwOptions` "ExceededSupport": leaving the window in RUN enters EXCEEDED, not ERROR.
+ */
+#define SL_OPT_SLI2_EXCEEDED_SUPPORT (1 << 9)
+
+/*
+ Block type tag of FB_AND.
+ */
+#define SL_TYPE_AND 3
+
+/*
+ Block type tag of FB_DECOUPLE.
+ */
+#define SL_TYPE_DECOUPLE 6
+
+/*
+ Block type tag of FB_EDM.
+ */
+#define SL_TYPE_EDM 10
+
+/*
+ FB_EDM state MONOFF (manual §4.9.2: 14): Mon1 is FALSE, switch-off monitoring.
+ */
+#define SL_STATE_EDM_MONOFF 14
+
+/*
+ FB_EDM state MONON (manual §4.9.2: 15): Mon1 is TRUE, switch-on monitoring.
+ */
+#define SL_STATE_EDM_MONON 15
+
+/*
+ FB_EDM diag bit 0 (manual §4.9.2): switch-off timer elapsed.
+ */
+#define SL_DIAG_EDM_SWITCH_OFF (1 << 0)
+
+/*
+ FB_EDM diag bit 1 (manual §4.9.2): switch-on timer elapsed.
+ */
+#define SL_DIAG_EDM_SWITCH_ON (1 << 1)
+
+/*
+ Largest tSwitchOnTime / tSwitchOffTime of FB_EDM in ms (manual §4.9.1: "maximum 10000 ms").
+ */
+#define SL_EDM_TIME_MAX 10000
+
+/*
+ Block type tag of FB_ESTOP (`SL_MEMBER.nType`, `sl_diag_text`).
+ */
+#define SL_TYPE_ESTOP 1
+
+/*
+ FB_SR state SET (manual §4.11.2: 9): the output SrOut is TRUE.
+ */
+#define SL_STATE_SR_SET 9
+
+/*
+ FB_RS state SET (manual §4.10.2: 9): the output RsOut is TRUE.
+ */
+#define SL_STATE_RS_SET 9
+
+/*
+ Block type tag of FB_MON.
+ */
+#define SL_TYPE_MON 2
+
+/*
+ FB_MUTING state MUTING1 (9): first step of the muting sequence (docs/semantics.md M1).
+ */
+#define SL_STATE_MUTING_MUTING1 9
+
+/*
+ FB_MUTING state MUTING2 (10).
+ */
+#define SL_STATE_MUTING_MUTING2 10
+
+/*
+ FB_MUTING state MUTING3 (11).
+ */
+#define SL_STATE_MUTING_MUTING3 11
+
+/*
+ FB_MUTING state MUTING4 (12).
+ */
+#define SL_STATE_MUTING_MUTING4 12
+
+/*
+ FB_MUTING state MUTING5 (13).
+ */
+#define SL_STATE_MUTING_MUTING5 13
+
+/*
+ FB_MUTING state MUTING6 (14).
+ */
+#define SL_STATE_MUTING_MUTING6 14
+
+/*
+ FB_MUTING state MUTING7 (15).
+ */
+#define SL_STATE_MUTING_MUTING7 15
+
+/*
+ FB_MUTING state MUTING8 (16).
+ */
+#define SL_STATE_MUTING_MUTING8 16
+
+/*
+ FB_MUTING state MUTING9 (17): last step of the muting sequence.
+ */
+#define SL_STATE_MUTING_MUTING9 17
+
+/*
+ Block type tag of FB_MUTING.
+ */
+#define SL_TYPE_MUTING 9
+
+/*
+ Largest `tFilterTime` of FB_MUTING in ms (manual §4.8.1: "up to 500 ms").
+ */
+#define SL_MUTING_FILTER_TIME_MAX 500
+
+/*
+ Largest `tMaxMutingTime` of FB_MUTING in ms (manual §4.8.1: "a maximum of 10 minutes").
+ */
+#define SL_MUTING_MAX_MUTING_TIME_MAX 600000
+
+/*
+ Largest `tMuteDelOutDelay` of FB_MUTING in ms (manual §4.8.1: "delayed by up to 30 seconds").
+ */
+#define SL_MUTING_DELOUT_DELAY_MAX 30000
+
+/*
+ FB_OPMODE diag bit 0: discrepancy monitoring error (no mode or more than one mode selected
+ for tDiscTime, manual §4.3.2).
+ */
+#define SL_DIAG_OPMODE_DISC (1 << 0)
+
+/*
+ Block type tag of FB_OPMODE.
+ */
+#define SL_TYPE_OPMODE 7
+
+/*
+ Block type tag of FB_OR.
+ */
+#define SL_TYPE_OR 4
+
+/*
+ Block type tag of FB_RS.
+ */
+#define SL_TYPE_RS 11
+
+/*
+ Block type tag of FB_SR.
+ */
+#define SL_TYPE_SR 12
+
+/*
+ Library extension, FB_TON2 diag bit 12: the restored elapsed time was refused
+ (SL_E_RESTORE; the manual's global shutdown 0x3510).
+ */
+#define SL_DIAG_TON2_RESTORE (1 << 12)
+
+/*
+ FB_TON2 "Starts with remaining time" (manual §4.13): with Enable TRUE when TonIn rises,
+ the timer starts with tDelay minus the stored elapsed time.
+ */
+#define SL_OPT_TON2_REMAINING_TIME (1 << 8)
+
+/*
+ `nTimeBase` of FB_TON/FB_TON2/FB_TOF: automatic, the smallest timebase whose range
+ holds tDelay (the manual: "automatically selected ... according to the set time").
+ */
+#define SL_TIMEBASE_AUTO 0
+
+/*
+ `nTimeBase` 1 ms: tDelay 1 to 60,000 ms in 1 ms steps.
+ */
+#define SL_TIMEBASE_1MS 1
+
+/*
+ `nTimeBase` 10 ms: tDelay 10 to 600,000 ms in 10 ms steps.
+ */
+#define SL_TIMEBASE_10MS 10
+
+/*
+ `nTimeBase` 100 ms (EL6910 SW 04): tDelay 100 ms to 6,000 s in 100 ms steps.
+ */
+#define SL_TIMEBASE_100MS 100
+
+/*
+ `nTimeBase` 1000 ms (EL6910 SW 04): tDelay 1 s to 60,000 s in 1 s steps.
+ */
+#define SL_TIMEBASE_1000MS 1000
+
+/*
+ Most timebase steps in a timer delay (tDelay / timebase).
+ */
+#define SL_TIMER_STEPS_MAX 60000
+
+/*
+ Largest timer delay in ms (60,000 s; 60,000 steps of 1000 ms).
+ */
+#define SL_TIMER_DELAY_MAX 60000000
+
+/*
+ Block type tag of FB_TOF.
+ */
+#define SL_TYPE_TOF 15
+
+/*
+ FB_TON state DELAYIN (9): TonIn is TRUE and the delay has not yet expired.
+ */
+#define SL_STATE_TON_DELAYIN 9
+
+/*
+ Block type tag of FB_TON.
+ */
+#define SL_TYPE_TON 13
+
+/*
+ FB_TON2 state DELAYIN (9): TonIn is TRUE and the delay has not yet expired.
+ */
+#define SL_STATE_TON2_DELAYIN 9
+
+/*
+ Block type tag of FB_TON2.
+ */
+#define SL_TYPE_TON2 14
+
+/*
+ FB_TWOHAND diag bit 2: discrepancy error between the two input pairs (the second group was
+ not actuated within tDiscTimePairs, manual §4.7.2). Bits 0/1 are SL_DIAG_DISC1/2.
+ */
+#define SL_DIAG_TWOHAND_PAIRS (1 << 2)
+
+/*
+ FB_TWOHAND diag bit 10: bit 2 with "Safe Inputs after Disc Error" active (set in addition
+ to bit 2). Bits 8/9 are SL_DIAG_SAFE_IN_DISC1/2.
+ */
+#define SL_DIAG_TWOHAND_SAFE_IN_PAIRS (1 << 10)
+
+/*
+ FB_TWOHAND state 1BUTTON (11): every active input of the first group is TRUE, the second
+ group is not actuated yet (manual §4.7.2).
+ */
+#define SL_STATE_TWOHAND_1BUTTON 11
+
+/*
+ FB_TWOHAND state 2BUTTON (12): every active input of the second group is TRUE, the first
+ group is not actuated yet.
+ */
+#define SL_STATE_TWOHAND_2BUTTON 12
+
+/*
+ FB_TWOHAND state RELEASE (13): waiting until every active input is FALSE before the output
+ can be set again.
+ */
+#define SL_STATE_TWOHAND_RELEASE 13
+
+/*
+ Block type tag of FB_TWOHAND.
+ */
+#define SL_TYPE_TWOHAND 8
+
+/*
+ Largest tDiscTimePairs of FB_TWOHAND in ms (manual §4.7.1: "up to 2500 ms").
+ */
+#define SL_TWOHAND_PAIRS_TIME_MAX 2500
+
+/*
+ Block type tag of FB_XOR.
+ */
+#define SL_TYPE_XOR 5
+
+/*
+ Block type tag of FB_CONNECTION_SHUTDOWN (70/71: CAMMONITOR; 72–74: SLP, SBT, ADVPOSMON).
+ */
+#define SL_TYPE_CONNECTION_SHUTDOWN 75
+
+/*
+ Type tag of FB_ADVPOSMON (ABI-2 §10.6: sequential in the order of §10.3).
+ */
+#define SL_TYPE_ADVPOSMON 74
+
+/*
+ FB_ADVPOSMON state WAIT-FOR-RESTART (16, the manual's "0x10").
+ */
+#define SL_STATE_ADVPOSMON_WAIT_FOR_RESTART 16
+
+/*
+ Diag message of the ERROR state ("transfers the Diag message 0x38D1").
+ */
+#define SL_TEXT_ADVPOSMON_SDFB_ERROR 14545
+
+/*
+ `wInputActive` bit of Enable (required).
+ */
+#define SL_ADVPOSMON_ACTIVE_ENABLE (1 << 0)
+
+/*
+ `wInputActive` bit of Restart: set = RESTART_ACTIVE (the optional restart sequence).
+ */
+#define SL_ADVPOSMON_ACTIVE_RESTART (1 << 1)
+
+/*
+ Largest SAFEDRIVEFEEDBACK instance number of a feedback parameter ("instance (0-3)").
+ */
+#define SL_ADVPOSMON_FEEDBACK_MAX 3
 
 /*
  Type tag of FB_CAMMONITOR_UINT (ABI-2 §10.6, order of §10.3).
@@ -539,415 +1550,6 @@
 #define SL_TEXT_CAMMONITOR_TDC1UL_JITTER 16421
 
 /*
- Type tag of FB_COMPARE_INT (ABI-2 §10.6: sequential from 16 in the order of §10.3).
- */
-#define SL_TYPE_COMPARE_INT 32
-
-/*
- FB_COMPARE_UINT.
- */
-#define SL_TYPE_COMPARE_UINT 33
-
-/*
- FB_COMPARE_DINT.
- */
-#define SL_TYPE_COMPARE_DINT 34
-
-/*
- FB_COMPARE_UDINT.
- */
-#define SL_TYPE_COMPARE_UDINT 35
-
-/*
- `nArchitecture` 1oo2: CompIn1 and CompIn2 must agree.
- */
-#define SL_ARCH_1OO2 2
-
-/*
- `nArchitecture` 2oo3: two of CompIn1–3 must agree.
- */
-#define SL_ARCH_2OO3 3
-
-/*
- `nArchitecture` 3oo5: three of CompIn1–5 must agree.
- */
-#define SL_ARCH_3OO5 5
-
-/*
- Block type tag of FB_CONNECTION_SHUTDOWN (70/71: CAMMONITOR; 72–74: SLP, SBT, ADVPOSMON).
- */
-#define SL_TYPE_CONNECTION_SHUTDOWN 75
-
-/*
- Type tag of FB_COUNTER_INT (ABI-2 §10.6: after the ten four-variant blocks of §10.3).
- */
-#define SL_TYPE_COUNTER_INT 56
-
-/*
- FB_COUNTER_UINT.
- */
-#define SL_TYPE_COUNTER_UINT 57
-
-/*
- FB_COUNTER_DINT.
- */
-#define SL_TYPE_COUNTER_DINT 58
-
-/*
- FB_COUNTER_UDINT.
- */
-#define SL_TYPE_COUNTER_UDINT 59
-
-/*
- Diag message "An underflow has occurred" (parameters: ActValue, smallest permitted value).
- */
-#define SL_TEXT_COUNTER_UNDERFLOW 16568
-
-/*
- Diag message "An overflow has occurred" (parameters: ActValue, largest permitted value).
- */
-#define SL_TEXT_COUNTER_OVERFLOW 16569
-
-/*
- `wInputActive` bits of Reset, CountUp, CountDown (optional: an inactive input reads FALSE).
- */
-#define SL_COUNTER_ACTIVE_INPUTS 7
-
-/*
- Block type tag of FB_DECOUPLE.
- */
-#define SL_TYPE_DECOUPLE 6
-
-/*
- Block type tag of FB_EDM.
- */
-#define SL_TYPE_EDM 10
-
-/*
- FB_EDM state MONOFF (manual §4.9.2: 14): Mon1 is FALSE, switch-off monitoring.
- */
-#define SL_STATE_EDM_MONOFF 14
-
-/*
- FB_EDM state MONON (manual §4.9.2: 15): Mon1 is TRUE, switch-on monitoring.
- */
-#define SL_STATE_EDM_MONON 15
-
-/*
- FB_EDM diag bit 0 (manual §4.9.2): switch-off timer elapsed.
- */
-#define SL_DIAG_EDM_SWITCH_OFF (1 << 0)
-
-/*
- FB_EDM diag bit 1 (manual §4.9.2): switch-on timer elapsed.
- */
-#define SL_DIAG_EDM_SWITCH_ON (1 << 1)
-
-/*
- Largest tSwitchOnTime / tSwitchOffTime of FB_EDM in ms (manual §4.9.1: "maximum 10000 ms").
- */
-#define SL_EDM_TIME_MAX 10000
-
-/*
- Type tag of FB_ENVELOPE_INT (ABI-2 §10.6: sequential from 16 in the order of §10.3).
- */
-#define SL_TYPE_ENVELOPE_INT 52
-
-/*
- FB_ENVELOPE_UINT.
- */
-#define SL_TYPE_ENVELOPE_UINT 53
-
-/*
- FB_ENVELOPE_DINT.
- */
-#define SL_TYPE_ENVELOPE_DINT 54
-
-/*
- FB_ENVELOPE_UDINT.
- */
-#define SL_TYPE_ENVELOPE_UDINT 55
-
-/*
- State MONITOR (manual §4.32.2 "9.0"): SafeFunction fell, InValue outside the target
- window, checked against the envelope; SafeFunctionOut 1.
- */
-#define SL_STATE_ENVELOPE_MONITOR 9
-
-/*
- Diag value 1: "Underflow (InValue below the envelope)".
- */
-#define SL_DIAG_ENVELOPE_UNDERFLOW 1
-
-/*
- Diag value 2: "Overflow (InValue above the envelope)".
- */
-#define SL_DIAG_ENVELOPE_OVERFLOW 2
-
-/*
- Diag value 3: "InValue Error" (the manual defines no condition: never set, EV6).
- */
-#define SL_DIAG_ENVELOPE_INVALUE_ERROR 3
-
-/*
- Diag value 4: "MaxTimeExpired" (MaxTime leads to SAFE without error: never set, EV6).
- */
-#define SL_DIAG_ENVELOPE_MAX_TIME 4
-
-/*
- Diag message "InValueExpired AND InValue < 0" (parameters: InValue, MinAllowedValue).
- */
-#define SL_TEXT_ENVELOPE_UNDERFLOW 16584
-
-/*
- Diag message "InValueExpired AND InValue > 0" (parameters: InValue, MaxAllowedValue).
- */
-#define SL_TEXT_ENVELOPE_OVERFLOW 16585
-
-/*
- `wInputActive` of FB ENVELOPE: SafeFunction (bit 0) and InValue (bit 8), both required.
- */
-#define SL_ENVELOPE_ACTIVE 257
-
-/*
- Largest `tTimeAfterInTarget` and `tMaxTime` (ms; ABI-2 §12.9, semantics C10).
- */
-#define SL_ENVELOPE_TIME_MAX 65535
-
-/*
- Block type tag of FB_ESTOP (`SL_MEMBER.nType`, `sl_diag_text`).
- */
-#define SL_TYPE_ESTOP 1
-
-/*
- FB_SR state SET (manual §4.11.2: 9): the output SrOut is TRUE.
- */
-#define SL_STATE_SR_SET 9
-
-/*
- FB_RS state SET (manual §4.10.2: 9): the output RsOut is TRUE.
- */
-#define SL_STATE_RS_SET 9
-
-/*
- Type tag of FB_LIMIT_INT (ABI-2 §10.6: sequential from 16 in the order of §10.3).
- */
-#define SL_TYPE_LIMIT_INT 36
-
-/*
- FB_LIMIT_UINT.
- */
-#define SL_TYPE_LIMIT_UINT 37
-
-/*
- FB_LIMIT_DINT.
- */
-#define SL_TYPE_LIMIT_DINT 38
-
-/*
- FB_LIMIT_UDINT.
- */
-#define SL_TYPE_LIMIT_UDINT 39
-
-/*
- Diag value 1: MinValue is greater than MaxValue.
- */
-#define SL_DIAG_LIMIT_MIN_ABOVE_MAX 1
-
-/*
- Diag message "MinValue is greater than MaxValue" (parameters: MinValue, MaxValue).
- */
-#define SL_TEXT_LIMIT_MIN_ABOVE_MAX 16528
-
-/*
- `wInputActive` bit of AnalogIn (required).
- */
-#define SL_LIMIT_ACTIVE_ANALOGIN (1 << 8)
-
-/*
- `wInputActive` bit of MinValue: set = the input is the minimum, clear = `nMinimumValue`.
- */
-#define SL_LIMIT_ACTIVE_MINVALUE (1 << 9)
-
-/*
- `wInputActive` bit of MaxValue: set = the input is the maximum, clear = `nMaximumValue`.
- */
-#define SL_LIMIT_ACTIVE_MAXVALUE (1 << 10)
-
-/*
- Type tag of FB_LOADSENSING_INT (ABI-2 §10.6: sequential from 16 in the order of §10.3).
- */
-#define SL_TYPE_LOADSENSING_INT 48
-
-/*
- FB_LOADSENSING_UINT.
- */
-#define SL_TYPE_LOADSENSING_UINT 49
-
-/*
- FB_LOADSENSING_DINT.
- */
-#define SL_TYPE_LOADSENSING_DINT 50
-
-/*
- FB_LOADSENSING_UDINT.
- */
-#define SL_TYPE_LOADSENSING_UDINT 51
-
-/*
- State INACTIVE (manual §4.25.2 "16.0"): Inactive is TRUE; Valid 0, Warning 0.
- */
-#define SL_STATE_LOADSENSING_INACTIVE 16
-
-/*
- State WARNING (manual §4.25.2 "17.0"): AnalogInY between the levels; Valid 1, Warning 1.
- */
-#define SL_STATE_LOADSENSING_WARNING 17
-
-/*
- Rows of the value table ("There can be up to 25 indices").
- */
-#define SL_LOADSENSING_ROWS_MAX 25
-
-/*
- `dwOptions` bit 8: "Outside [y1; y2]": values outside Y1…Y2 are valid.
- */
-#define SL_OPT_LOADSENSING_OUTSIDE (1 << 8)
-
-/*
- `wInputActive` bit of Inactive (optional: clear = reads FALSE, the block evaluates).
- */
-#define SL_LOADSENSING_ACTIVE_INACTIVE (1 << 0)
-
-/*
- `wInputActive` bit of AnalogInX (required).
- */
-#define SL_LOADSENSING_ACTIVE_ANALOGINX (1 << 8)
-
-/*
- `wInputActive` bit of AnalogInY (required).
- */
-#define SL_LOADSENSING_ACTIVE_ANALOGINY (1 << 9)
-
-/*
- Block type tag of FB_MON.
- */
-#define SL_TYPE_MON 2
-
-/*
- FB_MUTING "Sequential Inputs": the four muting inputs are single-channel sensors checked
- one after the other (clear: two two-channel groups MutingIn1/2 and MutingIn3/4, parallel).
- */
-#define SL_OPT_MUTING_SEQUENTIAL (1 << 8)
-
-/*
- FB_MUTING "Backwards Mode" (EL6910): a sequence may also run backwards, starting at MutingIn4.
- */
-#define SL_OPT_MUTING_BACKWARDS (1 << 9)
-
-/*
- FB_MUTING "OSSD Check Optional" (EL6910): the protective field is not part of the sequence
- check; it may be interrupted at any step of a running sequence.
- */
-#define SL_OPT_MUTING_OSSD_CHECK_OPTIONAL (1 << 10)
-
-/*
- Diag bit 6 (FB_MUTING): the muting sequence was violated.
- */
-#define SL_DIAG_MUTING_SEQUENCE (1 << 6)
-
-/*
- Diag bit 7 (FB_MUTING): the maximum muting time was exceeded.
- */
-#define SL_DIAG_MUTING_MAX_TIME (1 << 7)
-
-/*
- FB_MUTING state MUTING1 (9): first step of the muting sequence (docs/semantics.md M1).
- */
-#define SL_STATE_MUTING_MUTING1 9
-
-/*
- FB_MUTING state MUTING2 (10).
- */
-#define SL_STATE_MUTING_MUTING2 10
-
-/*
- FB_MUTING state MUTING3 (11).
- */
-#define SL_STATE_MUTING_MUTING3 11
-
-/*
- FB_MUTING state MUTING4 (12).
- */
-#define SL_STATE_MUTING_MUTING4 12
-
-/*
- FB_MUTING state MUTING5 (13).
- */
-#define SL_STATE_MUTING_MUTING5 13
-
-/*
- FB_MUTING state MUTING6 (14).
- */
-#define SL_STATE_MUTING_MUTING6 14
-
-/*
- FB_MUTING state MUTING7 (15).
- */
-#define SL_STATE_MUTING_MUTING7 15
-
-/*
- FB_MUTING state MUTING8 (16).
- */
-#define SL_STATE_MUTING_MUTING8 16
-
-/*
- FB_MUTING state MUTING9 (17): last step of the muting sequence.
- */
-#define SL_STATE_MUTING_MUTING9 17
-
-/*
- Block type tag of FB_MUTING.
- */
-#define SL_TYPE_MUTING 9
-
-/*
- Largest `tFilterTime` of FB_MUTING in ms (manual §4.8.1: "up to 500 ms").
- */
-#define SL_MUTING_FILTER_TIME_MAX 500
-
-/*
- Largest `tMaxMutingTime` of FB_MUTING in ms (manual §4.8.1: "a maximum of 10 minutes").
- */
-#define SL_MUTING_MAX_MUTING_TIME_MAX 600000
-
-/*
- Largest `tMuteDelOutDelay` of FB_MUTING in ms (manual §4.8.1: "delayed by up to 30 seconds").
- */
-#define SL_MUTING_DELOUT_DELAY_MAX 30000
-
-/*
- FB_OPMODE diag bit 0: discrepancy monitoring error (no mode or more than one mode selected
- for tDiscTime, manual §4.3.2).
- */
-#define SL_DIAG_OPMODE_DISC (1 << 0)
-
-/*
- Block type tag of FB_OPMODE.
- */
-#define SL_TYPE_OPMODE 7
-
-/*
- Block type tag of FB_OR.
- */
-#define SL_TYPE_OR 4
-
-/*
- Block type tag of FB_RS.
- */
-#define SL_TYPE_RS 11
-
-/*
  Type tag of FB_SBT (ABI-2 §10.6: sequential in the order of §10.3).
  */
 #define SL_TYPE_SBT 73
@@ -1025,71 +1627,71 @@
 #define SL_SBT_TIME_MAX 4294967000
 
 /*
- Type tag of FB_SCALE_INT (ABI-2 §10.6: sequential from 16 in the order of §10.3).
+ Type tag of FB_SLP (ABI-2 §10.6: sequential in the order of §10.3).
  */
-#define SL_TYPE_SCALE_INT 40
+#define SL_TYPE_SLP 72
 
 /*
- FB_SCALE_UINT.
+ Option: single-turn mode (only the 32-bit single-turn values); clear = multi-turn.
  */
-#define SL_TYPE_SCALE_UINT 41
+#define SL_OPT_SLP_SINGLETURN (1 << 8)
 
 /*
- FB_SCALE_DINT.
+ Diag bit 0: MultiturnPos_LL > MultiturnPos_UL.
  */
-#define SL_TYPE_SCALE_DINT 42
+#define SL_DIAG_SLP_MULTITURN_LL_ABOVE_UL (1 << 0)
 
 /*
- FB_SCALE_UDINT.
+ Diag bit 1: MultiturnPos_LL = MultiturnPos_UL and SingleturnPos_LL > SingleturnPos_UL.
  */
-#define SL_TYPE_SCALE_UDINT 43
+#define SL_DIAG_SLP_SINGLETURN_LL_ABOVE_UL (1 << 1)
 
 /*
- `dwOptions`: "Multiplication First" FALSE — divide by `nDenominator` before multiplying
- by `nNumerator` (default: multiplication first).
+ Diag message of bit 0 (parameters: MultiturnPos_LL, MultiturnPos_UL).
  */
-#define SL_OPT_SCALE_DIVISION_FIRST (1 << 8)
+#define SL_TEXT_SLP_MULTITURN_LL_ABOVE_UL 16592
 
 /*
- Diag value 3: "A 32-bit overflow occurred during the multiplication."
+ Diag message of bit 1 (parameters: SingleturnPos_LL, SingleturnPos_UL).
  */
-#define SL_DIAG_SCALE_MUL_OVERFLOW 3
+#define SL_TEXT_SLP_SINGLETURN_LL_ABOVE_UL 16593
 
 /*
- Diag value 4: "A 32-bit overflow occurred during the division due to rounding."
+ `wInputActive` bit of SafePosValid (required).
  */
-#define SL_DIAG_SCALE_DIV_OVERFLOW 4
+#define SL_SLP_ACTIVE_SAFEPOSVALID (1 << 0)
 
 /*
- Diag message "The output AnalogOut has an underflow" (parameter 2: AnalogIn).
+ `wInputActive` bit of SingleturnPos (required).
  */
-#define SL_TEXT_SCALE_UNDERFLOW 16560
+#define SL_SLP_ACTIVE_SINGLETURNPOS (1 << 8)
 
 /*
- Diag message "The output AnalogOut has an overflow" (parameter 2: AnalogIn).
+ `wInputActive` bit of MultiturnPos (required unless `SL_OPT_SLP_SINGLETURN`).
  */
-#define SL_TEXT_SCALE_OVERFLOW 16561
+#define SL_SLP_ACTIVE_MULTITURNPOS (1 << 9)
 
 /*
- Diag message "A 32-bit overflow occurred during the multiplication." (parameter 2: AnalogIn).
+ `wInputActive` bit of SingleturnPosUL: UL_Active (set = the upper limit comes from the
+ inputs, clear = from `nSingleturnPosULFix` / `nMultiturnPosULFix`).
  */
-#define SL_TEXT_SCALE_MUL_OVERFLOW 16562
+#define SL_SLP_ACTIVE_SINGLETURNPOSUL (1 << 10)
 
 /*
- Diag message "A 32-bit overflow occurred during the division due to rounding."
- (parameter 2: AnalogIn).
+ `wInputActive` bit of MultiturnPosUL (must equal bit 10).
  */
-#define SL_TEXT_SCALE_DIV_OVERFLOW 16563
+#define SL_SLP_ACTIVE_MULTITURNPOSUL (1 << 11)
 
 /*
- `wInputActive` bit of AnalogIn (required, the only bit).
+ `wInputActive` bit of SingleturnPosLL: LL_Active (set = the lower limit comes from the
+ inputs, clear = from the `…LLFix` parameters).
  */
-#define SL_SCALE_ACTIVE_ANALOGIN (1 << 8)
+#define SL_SLP_ACTIVE_SINGLETURNPOSLL (1 << 12)
 
 /*
- `wInputNegated` bit of AnalogIn: INT/DINT ×(−1), UINT/UDINT XOR all ones.
+ `wInputActive` bit of MultiturnPosLL (must equal bit 12).
  */
-#define SL_SCALE_NEGATE_ANALOGIN (1 << 8)
+#define SL_SLP_ACTIVE_MULTITURNPOSLL (1 << 13)
 
 /*
  Block type tag of SF_Antivalent (`SL_MEMBER.nType`, `sl_diag_text`).
@@ -1180,331 +1782,6 @@
  Block type tag of SF_TwoHandControlTypeIII (`SL_MEMBER.nType`, `sl_diag_text`).
  */
 #define SL_TYPE_SF_TWOHANDCONTROLTYPEIII 525
-
-/*
- Type tag of FB_SLI_INT (ABI-2 §10.6: sequential in the order of §10.3).
- */
-#define SL_TYPE_SLI_INT 60
-
-/*
- FB_SLI_UINT.
- */
-#define SL_TYPE_SLI_UINT 61
-
-/*
- FB_SLI_DINT.
- */
-#define SL_TYPE_SLI_DINT 62
-
-/*
- FB_SLI_UDINT.
- */
-#define SL_TYPE_SLI_UDINT 63
-
-/*
- Diag message "An underflow has occurred" (parameters: Position, LatchPosition); FB SLI2
- reports it too.
- */
-#define SL_TEXT_SLI_UNDERFLOW 16576
-
-/*
- Diag message "An overflow has occurred" (parameters: Position, LatchPosition).
- */
-#define SL_TEXT_SLI_OVERFLOW 16577
-
-/*
- `wInputActive` of FB_SLI and FB_SLI2: SLI (bit 0) and Position (bit 8), both required,
- no other bit (ABI-2 §11.9 "bits 0, 8 must be set").
- */
-#define SL_SLI_ACTIVE 257
-
-/*
- Type tag of FB_SLI2_INT (ABI-2 §10.6: sequential in the order of §10.3).
- */
-#define SL_TYPE_SLI2_INT 64
-
-/*
- FB_SLI2_UINT.
- */
-#define SL_TYPE_SLI2_UINT 65
-
-/*
- FB_SLI2_DINT.
- */
-#define SL_TYPE_SLI2_DINT 66
-
-/*
- FB_SLI2_UDINT.
- */
-#define SL_TYPE_SLI2_UDINT 67
-
-/*
- FB_SLI2 state EXCEEDED (manual §4.28.2.3: 7): the position left the window with
- `SL_OPT_SLI2_EXCEEDED_SUPPORT`; left only by SLI FALSE (→ SAFE).
- */
-#define SL_STATE_SLI2_EXCEEDED 7
-
-/*
- `dwOptions` "OverflowAllowed": PositionDiff modulo 2^W in the signed range.
- */
-#define SL_OPT_SLI2_OVERFLOW_ALLOWED (1 << 8)
-
-/*
- `dwOptions` "ExceededSupport": leaving the window in RUN enters EXCEEDED, not ERROR.
- */
-#define SL_OPT_SLI2_EXCEEDED_SUPPORT (1 << 9)
-
-/*
- Type tag of FB_SLP (ABI-2 §10.6: sequential in the order of §10.3).
- */
-#define SL_TYPE_SLP 72
-
-/*
- Option: single-turn mode (only the 32-bit single-turn values); clear = multi-turn.
- */
-#define SL_OPT_SLP_SINGLETURN (1 << 8)
-
-/*
- Diag bit 0: MultiturnPos_LL > MultiturnPos_UL.
- */
-#define SL_DIAG_SLP_MULTITURN_LL_ABOVE_UL (1 << 0)
-
-/*
- Diag bit 1: MultiturnPos_LL = MultiturnPos_UL and SingleturnPos_LL > SingleturnPos_UL.
- */
-#define SL_DIAG_SLP_SINGLETURN_LL_ABOVE_UL (1 << 1)
-
-/*
- Diag message of bit 0 (parameters: MultiturnPos_LL, MultiturnPos_UL).
- */
-#define SL_TEXT_SLP_MULTITURN_LL_ABOVE_UL 16592
-
-/*
- Diag message of bit 1 (parameters: SingleturnPos_LL, SingleturnPos_UL).
- */
-#define SL_TEXT_SLP_SINGLETURN_LL_ABOVE_UL 16593
-
-/*
- `wInputActive` bit of SafePosValid (required).
- */
-#define SL_SLP_ACTIVE_SAFEPOSVALID (1 << 0)
-
-/*
- `wInputActive` bit of SingleturnPos (required).
- */
-#define SL_SLP_ACTIVE_SINGLETURNPOS (1 << 8)
-
-/*
- `wInputActive` bit of MultiturnPos (required unless `SL_OPT_SLP_SINGLETURN`).
- */
-#define SL_SLP_ACTIVE_MULTITURNPOS (1 << 9)
-
-/*
- `wInputActive` bit of SingleturnPosUL: UL_Active (set = the upper limit comes from the
- inputs, clear = from `nSingleturnPosULFix` / `nMultiturnPosULFix`).
- */
-#define SL_SLP_ACTIVE_SINGLETURNPOSUL (1 << 10)
-
-/*
- `wInputActive` bit of MultiturnPosUL (must equal bit 10).
- */
-#define SL_SLP_ACTIVE_MULTITURNPOSUL (1 << 11)
-
-/*
- `wInputActive` bit of SingleturnPosLL: LL_Active (set = the lower limit comes from the
- inputs, clear = from the `…LLFix` parameters).
- */
-#define SL_SLP_ACTIVE_SINGLETURNPOSLL (1 << 12)
-
-/*
- `wInputActive` bit of MultiturnPosLL (must equal bit 12).
- */
-#define SL_SLP_ACTIVE_MULTITURNPOSLL (1 << 13)
-
-/*
- Type tag of FB_SPEED_INT (ABI-2 §10.6: sequential from 16 in the order of §10.3).
- */
-#define SL_TYPE_SPEED_INT 44
-
-/*
- FB_SPEED_UINT.
- */
-#define SL_TYPE_SPEED_UINT 45
-
-/*
- FB_SPEED_DINT.
- */
-#define SL_TYPE_SPEED_DINT 46
-
-/*
- FB_SPEED_UDINT.
- */
-#define SL_TYPE_SPEED_UDINT 47
-
-/*
- `dwOptions`: "Overflow Check" — the position difference is taken modulo 2^W before the
- range check (a position counter wrapping at its type's end is no jump).
- */
-#define SL_OPT_SPEED_OVERFLOW_CHECK (1 << 8)
-
-/*
- Diag message "An underflow has occurred." (parameters: current, latched position).
- */
-#define SL_TEXT_SPEED_UNDERFLOW 16520
-
-/*
- Diag message "An overflow has occurred." (parameters: current, latched position).
- */
-#define SL_TEXT_SPEED_OVERFLOW 16521
-
-/*
- `wInputActive` bit of Position (required, the only bit).
- */
-#define SL_SPEED_ACTIVE_POSITION (1 << 8)
-
-/*
- Block type tag of FB_SR.
- */
-#define SL_TYPE_SR 12
-
-/*
- Library extension, FB_TON2 diag bit 12: the restored elapsed time was refused
- (SL_E_RESTORE; the manual's global shutdown 0x3510).
- */
-#define SL_DIAG_TON2_RESTORE (1 << 12)
-
-/*
- FB_TON2 "Starts with remaining time" (manual §4.13): with Enable TRUE when TonIn rises,
- the timer starts with tDelay minus the stored elapsed time.
- */
-#define SL_OPT_TON2_REMAINING_TIME (1 << 8)
-
-/*
- `nTimeBase` of FB_TON/FB_TON2/FB_TOF: automatic, the smallest timebase whose range
- holds tDelay (the manual: "automatically selected ... according to the set time").
- */
-#define SL_TIMEBASE_AUTO 0
-
-/*
- `nTimeBase` 1 ms: tDelay 1 to 60,000 ms in 1 ms steps.
- */
-#define SL_TIMEBASE_1MS 1
-
-/*
- `nTimeBase` 10 ms: tDelay 10 to 600,000 ms in 10 ms steps.
- */
-#define SL_TIMEBASE_10MS 10
-
-/*
- `nTimeBase` 100 ms (EL6910 SW 04): tDelay 100 ms to 6,000 s in 100 ms steps.
- */
-#define SL_TIMEBASE_100MS 100
-
-/*
- `nTimeBase` 1000 ms (EL6910 SW 04): tDelay 1 s to 60,000 s in 1 s steps.
- */
-#define SL_TIMEBASE_1000MS 1000
-
-/*
- Most timebase steps in a timer delay (tDelay / timebase).
- */
-#define SL_TIMER_STEPS_MAX 60000
-
-/*
- Largest timer delay in ms (60,000 s; 60,000 steps of 1000 ms).
- */
-#define SL_TIMER_DELAY_MAX 60000000
-
-/*
- Block type tag of FB_TOF.
- */
-#define SL_TYPE_TOF 15
-
-/*
- FB_TON state DELAYIN (9): TonIn is TRUE and the delay has not yet expired.
- */
-#define SL_STATE_TON_DELAYIN 9
-
-/*
- Block type tag of FB_TON.
- */
-#define SL_TYPE_TON 13
-
-/*
- FB_TON2 state DELAYIN (9): TonIn is TRUE and the delay has not yet expired.
- */
-#define SL_STATE_TON2_DELAYIN 9
-
-/*
- Block type tag of FB_TON2.
- */
-#define SL_TYPE_TON2 14
-
-/*
- FB_TWOHAND diag bit 2: discrepancy error between the two input pairs (the second group was
- not actuated within tDiscTimePairs, manual §4.7.2). Bits 0/1 are SL_DIAG_DISC1/2.
- */
-#define SL_DIAG_TWOHAND_PAIRS (1 << 2)
-
-/*
- FB_TWOHAND diag bit 6: two-hand error (the second group was actuated while the first was
- no longer actuated, manual §4.7.2).
- */
-#define SL_DIAG_TWOHAND_ERROR (1 << 6)
-
-/*
- FB_TWOHAND diag bit 10: bit 2 with "Safe Inputs after Disc Error" active (set in addition
- to bit 2). Bits 8/9 are SL_DIAG_SAFE_IN_DISC1/2.
- */
-#define SL_DIAG_TWOHAND_SAFE_IN_PAIRS (1 << 10)
-
-/*
- FB_TWOHAND state 1BUTTON (11): every active input of the first group is TRUE, the second
- group is not actuated yet (manual §4.7.2).
- */
-#define SL_STATE_TWOHAND_1BUTTON 11
-
-/*
- FB_TWOHAND state 2BUTTON (12): every active input of the second group is TRUE, the first
- group is not actuated yet.
- */
-#define SL_STATE_TWOHAND_2BUTTON 12
-
-/*
- FB_TWOHAND state RELEASE (13): waiting until every active input is FALSE before the output
- can be set again.
- */
-#define SL_STATE_TWOHAND_RELEASE 13
-
-/*
- Block type tag of FB_TWOHAND.
- */
-#define SL_TYPE_TWOHAND 8
-
-/*
- Largest tDiscTimePairs of FB_TWOHAND in ms (manual §4.7.1: "up to 2500 ms").
- */
-#define SL_TWOHAND_PAIRS_TIME_MAX 2500
-
-/*
- Type tag of FB_VIOLATIONCOUNTER_UINT (ABI-2 §10.6, order of §10.3).
- */
-#define SL_TYPE_VIOLATIONCOUNTER_UINT 68
-
-/*
- FB_VIOLATIONCOUNTER_UDINT.
- */
-#define SL_TYPE_VIOLATIONCOUNTER_UDINT 69
-
-/*
- `wInputActive` of FB VIOLATIONCOUNTER: Input (bit 0) and Enable (bit 1), both required.
- */
-#define SL_VIOLATIONCOUNTER_ACTIVE 3
-
-/*
- Block type tag of FB_XOR.
- */
-#define SL_TYPE_XOR 5
 
 /*
  Largest SafeData length per direction (bytes).
@@ -1714,12 +1991,6 @@
 #define SL_TYPE_FSOE_CONN 256
 
 /*
- Largest number of FSoE connections in one group whose shutdown is wired to a
- FB_CONNECTION_SHUTDOWN (`sl_group_add_member` refuses more with SL_E_FULL).
- */
-#define SL_GROUP_CONN_MAX 16
-
-/*
  Link kind: BOOL output to BOOL input.
  */
 #define SL_LINK_BOOL 0
@@ -1785,277 +2056,6 @@
  No member index.
  */
 #define SL_NO_MEMBER 65535
-
-/*
- The timed slot's pattern ([`SteadyKey::timed`]).
- */
-#define TIMED 6510615555426900570
-
-/*
- `nDiagProfile` 0: the PLCopen v2.01 DiagCodes (default).
- */
-#define SL_SF_PROFILE_V201 0
-
-/*
- `nDiagProfile` 1: the PLCopen v1.0 DiagCodes (blocks that exist in v1.0 only).
- */
-#define SL_SF_PROFILE_V10 1
-
-/*
- Library DiagCode: the private state was corrupt (SL_E_CORRUPT). Left by Activate FALSE.
- */
-#define SL_SF_DIAG_CORRUPT 50175
-
-/*
- Library DiagCode: the clock went backwards (SL_E_CLOCK). Left by Activate FALSE.
- */
-#define SL_SF_DIAG_CLOCK 50174
-
-/*
- Library DiagCode: a constant input (`nDiagProfile`, a time) changed while the block was
- activated (SL_E_PARAM_CHANGED). Left by Activate FALSE.
- */
-#define SL_SF_DIAG_CONST_CHANGED 50173
-
-/*
- Library DiagCode: a constant input is invalid at activation (SL_E_CONFIG). Left by
- Activate FALSE.
- */
-#define SL_SF_DIAG_CONFIG 50172
-
-/*
- Largest monitored time of an `SF_` block (ms; 2^31 − 1, the half circle of the
- wrapping clock).
- */
-#define SL_SF_TIME_MAX 2147483647
-
-/*
- The DiagCode meaning "the block is activated and its safety output is enabled".
- */
-#define SF_ENABLED 32768
-
-/*
- First type tag of the PLCopen family.
- */
-#define SF_TAG_BASE 512
-
-/*
- Success.
- */
-#define SL_OK 0
-
-/*
- A required pointer is NULL; nothing was written.
- */
-#define SL_E_NULL (-1)
-
-/*
- Invalid parameters; outputs safe (all FALSE), nState = STOP (2).
- */
-#define SL_E_CONFIG (-2)
-
-/*
- A parameter changed while the block was not in STOP; nState = ERROR (4), bError TRUE.
- */
-#define SL_E_PARAM_CHANGED (-3)
-
-/*
- The private state failed its integrity check; nState = ERROR (4), bError TRUE.
- */
-#define SL_E_CORRUPT (-4)
-
-/*
- An input byte was not 0 or 1; it was read as the value that demands the safe state.
- */
-#define SL_E_INVALID_BOOL (-5)
-
-/*
- tNow went backwards (wrapping difference to the last call >= 2^31); nState = ERROR (4).
- */
-#define SL_E_CLOCK (-6)
-
-/*
- Library extension: an internal fault was caught at the C boundary; the instance was put
- into ERROR (4) with every output FALSE except bError.
- */
-#define SL_E_INTERNAL (-7)
-
-/*
- Library extension: the instance pointer is not aligned to 4 bytes; nothing was written.
- */
-#define SL_E_ALIGNMENT (-8)
-
-/*
- Library extension: the caller's member or link storage of a group is full.
- */
-#define SL_E_FULL (-9)
-
-/*
- Library extension (FB_TON2, "Starts with remaining time"): a restored elapsed time was
- refused, because it is greater than the latched tDelay (the manual's global shutdown,
- error code 0x3510) or because `sl_ton2_restore_elapsed` was called while the block was
- not in STOP. nState = ERROR (4), output FALSE, diag bit 12 (SL_DIAG_TON2_RESTORE); the
- stored elapsed time is discarded (0), so one ErrAck sequence leaves the error.
- */
-#define SL_E_RESTORE (-10)
-
-/*
- FSoE (ABI-2 §13.1): a length or capacity does not fit (frame length, SafeData length,
- transmit buffer capacity); nothing was written.
- */
-#define SL_E_LENGTH (-11)
-
-/*
- FSoE (ABI-2 §13.6): a frame was rejected by `sl_fsoe_frame_decode` (the reason is in
- its `nResetCode`: 2 unknown command, 4 CRC).
- */
-#define SL_E_FRAME (-12)
-
-/*
- EDM1 feedback loop active.
- */
-#define SL_OPT_EDM1 (1 << 0)
-
-/*
- EDM2 feedback loop active.
- */
-#define SL_OPT_EDM2 (1 << 1)
-
-/*
- "Safe Inputs after Disc Error".
- */
-#define SL_OPT_SAFE_INPUTS_AFTER_DISC (1 << 2)
-
-/*
- Manual (active) restart (MON; ESTOP always restarts manually).
- */
-#define SL_OPT_MANUAL_RESTART (1 << 3)
-
-/*
- Manual function test (MON).
- */
-#define SL_OPT_FUNCTION_TEST (1 << 4)
-
-/*
- Diag bit 0: discrepancy error input group 1.
- */
-#define SL_DIAG_DISC1 (1 << 0)
-
-/*
- Diag bit 1: discrepancy error input group 2.
- */
-#define SL_DIAG_DISC2 (1 << 1)
-
-/*
- Diag bit 2: discrepancy error input group 3 (MON: the Secure input group).
- */
-#define SL_DIAG_DISC3 (1 << 2)
-
-/*
- Diag bit 3: discrepancy error input group 4.
- */
-#define SL_DIAG_DISC4 (1 << 3)
-
-/*
- Diag bit 4: EDM monitoring error EDM1.
- */
-#define SL_DIAG_EDM1 (1 << 4)
-
-/*
- Diag bit 5: EDM monitoring error EDM2.
- */
-#define SL_DIAG_EDM2 (1 << 5)
-
-/*
- Diag bit 8: bit 0 with "Safe Inputs after Disc Error" active (set in addition to bit 0).
- */
-#define SL_DIAG_SAFE_IN_DISC1 (1 << 8)
-
-/*
- Diag bit 9: bit 1 with "Safe Inputs after Disc Error" active.
- */
-#define SL_DIAG_SAFE_IN_DISC2 (1 << 9)
-
-/*
- Diag bit 10: bit 2 with "Safe Inputs after Disc Error" active.
- */
-#define SL_DIAG_SAFE_IN_DISC3 (1 << 10)
-
-/*
- Diag bit 11: bit 3 with "Safe Inputs after Disc Error" active.
- */
-#define SL_DIAG_SAFE_IN_DISC4 (1 << 11)
-
-/*
- Library extension, diag bit 13: a parameter changed outside STOP (SL_E_PARAM_CHANGED).
- */
-#define SL_DIAG_PARAM_CHANGED (1 << 13)
-
-/*
- Library extension, diag bit 14: the clock went backwards (SL_E_CLOCK).
- */
-#define SL_DIAG_CLOCK (1 << 14)
-
-/*
- Library extension, diag bit 15: the private state was corrupt (SL_E_CORRUPT / SL_E_INTERNAL).
- */
-#define SL_DIAG_CORRUPT (1 << 15)
-
-/*
- The library's own diag bits (13-15); the rest of `nDiag` is the manual's bits or value.
- */
-#define LIBRARY_DIAG_BITS ((SL_DIAG_PARAM_CHANGED | SL_DIAG_CLOCK) | SL_DIAG_CORRUPT)
-
-/*
- State RUN (manual: status value 1).
- */
-#define SL_STATE_RUN 1
-
-/*
- State STOP (2).
- */
-#define SL_STATE_STOP 2
-
-/*
- State SAFE (3).
- */
-#define SL_STATE_SAFE 3
-
-/*
- State ERROR (4).
- */
-#define SL_STATE_ERROR 4
-
-/*
- State RESET (5).
- */
-#define SL_STATE_RESET 5
-
-/*
- State START (6).
- */
-#define SL_STATE_START 6
-
-/*
- State ERRORDELAY (7, MON).
- */
-#define SL_STATE_ERRORDELAY 7
-
-/*
- State DELAYOUT (8).
- */
-#define SL_STATE_DELAYOUT 8
-
-/*
- State FUNCTEST (9, MON).
- */
-#define SL_STATE_FUNCTEST 9
-
-/*
- Largest time parameter of FB_ESTOP and FB_MON, and largest discrepancy time of FB_OPMODE
- and FB_TWOHAND, in ms (see docs/semantics.md C10, O3, H3).
- */
-#define SL_TIME_PARAM_MAX 65535
 
 /*
  IEC 61131-3 BOOL: 0 = FALSE, 1 = TRUE, any other byte is an invalid BOOL (ABI §2).
@@ -2180,7 +2180,7 @@ typedef struct SL_TIMER_PRIVATE {
    */
   uint32_t tElapsedCheck;
   /*
-   Fast-path key and its check word (`prim::envelope`).
+   Fast-path key and its check word (`base::envelope`).
    */
   uint32_t adwSteady[2];
 } SL_TIMER_PRIVATE;
@@ -2792,7 +2792,7 @@ typedef struct SL_GUARD_PRIVATE {
    */
   uint32_t atDiscStart[4];
   /*
-   Fast-path key and its complement (`prim::envelope`).
+   Fast-path key and its complement (`base::envelope`).
    */
   uint16_t awSteady[2];
 } SL_GUARD_PRIVATE;
@@ -3327,7 +3327,7 @@ typedef struct SL_LOGIC_PRIVATE {
    */
   uint8_t aReserved[4];
   /*
-   Fast-path slot (`prim::envelope`): the key window (two 64-bit words), then its check
+   Fast-path slot (`base::envelope`): the key window (two 64-bit words), then its check
    words.
    */
   uint32_t adwSteady[8];
@@ -4349,7 +4349,7 @@ typedef struct SL_FLIPFLOP_PRIVATE {
    */
   uint8_t aReserved[4];
   /*
-   Fast-path slot (`prim::envelope`): the key window (two 64-bit words), then its check
+   Fast-path slot (`base::envelope`): the key window (two 64-bit words), then its check
    words.
    */
   uint32_t adwSteady[8];

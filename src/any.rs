@@ -7,12 +7,134 @@
 //! ([`input_bit`]): a project names the inputs it uses, the loader turns them into the
 //! masks.
 
-use crate::group::{Member, Members, Ran, Wiring};
-use crate::registry::{self, BlockType, Dir, Field, Kind, Registered};
-use crate::types::Status;
+use crate::base::block::{Dir, Field, Kind, Registered};
+use crate::base::member::{Member, Ran, Wiring};
+use crate::base::types::Status;
+use crate::group::Members;
+use crate::registry::{self, BlockType};
+
+/// The Rust face of every block. `init` / `cycle` return the C status code (the same calls
+/// as `sl_<name>_init` / `sl_<name>_cycle`); `try_init` / `try_cycle` return a `Result`.
+///
+/// ```
+/// use safelogic::{EstopState, FunctionBlock, Status, FB_ESTOP};
+///
+/// let mut estop = FB_ESTOP { wInputActive: 0b11, tDiscTime12: 100, ..Default::default() };
+/// estop.try_init()?;
+/// (estop.bEStopIn1, estop.bEStopIn2, estop.bRun) = (1, 1, 1);
+/// estop.try_cycle(0)?;
+/// estop.bRestart = 1;
+/// estop.try_cycle(10)?;
+/// estop.bRestart = 0; // the falling edge of Restart enables the outputs
+/// estop.try_cycle(20)?;
+/// assert_eq!((estop.current_state()?, estop.bEStopOut), (EstopState::Run, 1));
+/// assert_eq!(estop.state_name(), "RUN");
+/// # Ok::<(), Status>(())
+/// ```
+pub trait FunctionBlock {
+    /// The block's states (`EstopState`, `TonState`, …): the manual's status values.
+    type State: crate::base::block::BlockState;
+    /// Validates and latches the parameters and resets the block to power-up (STOP).
+    fn init(&mut self) -> i32;
+    /// One task cycle at `now` (monotonic ms, wrapping).
+    fn cycle(&mut self, now: u32) -> i32;
+    /// [`Self::init`] as a `Result`.
+    fn try_init(&mut self) -> Result<(), Status> {
+        Status::from_code(self.init()).result()
+    }
+    /// [`Self::cycle`] as a `Result`.
+    fn try_cycle(&mut self, now: u32) -> Result<(), Status> {
+        Status::from_code(self.cycle(now)).result()
+    }
+    /// The current state, decoded from `nState`; `Err(Status::Corrupt)` for a value the
+    /// block does not have (the next cycle enters ERROR with the corrupt bit).
+    fn current_state(&self) -> Result<Self::State, Status>;
+    /// The manual's name of the current state ("RUN", "DELAYOUT", …).
+    fn state_name(&self) -> &'static str;
+    /// The block is in ERROR.
+    fn is_error(&self) -> bool;
+    /// A field by its name in the field table (`"bEStopOut"`, `"nAnalogOut"`, `"tDelay"`):
+    /// its value as a 32-bit pattern (signed types sign-extended), `None` for an unknown name.
+    fn get(&self, name: &str) -> Option<u32>;
+    /// A BOOL field by name as `bool` (`None`: unknown, not a BOOL, or not 0/1).
+    fn get_bool(&self, name: &str) -> Option<bool> {
+        let f = self.field(name)?;
+        match (f.kind, self.get(name)?) {
+            (crate::base::block::Kind::Bool, 0) => Some(false),
+            (crate::base::block::Kind::Bool, 1) => Some(true),
+            _ => None,
+        }
+    }
+    /// Writes an input or a parameter by name; `Err(Status::Config)` for an unknown name, an
+    /// output or info field, or a value outside the field's type.
+    fn set(&mut self, name: &str, value: i64) -> Result<(), Status>;
+    /// The field-table entry of a name.
+    fn field(&self, name: &str) -> Option<&'static crate::base::block::Field>;
+}
+
+impl<B: crate::base::block::Cyclic + crate::base::block::Registered + Member> FunctionBlock for B {
+    fn init(&mut self) -> i32 {
+        self.init_fb().code()
+    }
+    fn cycle(&mut self, now: u32) -> i32 {
+        self.cycle_fb(now).code()
+    }
+    type State = B::State;
+    fn current_state(&self) -> Result<B::State, Status> {
+        <B::State as crate::base::block::BlockState>::decode(self.state()).ok_or(Status::Corrupt)
+    }
+    fn state_name(&self) -> &'static str {
+        crate::group::state_name(B::INFO.tag, self.state())
+    }
+    fn is_error(&self) -> bool {
+        self.in_error()
+    }
+    fn get(&self, name: &str) -> Option<u32> {
+        self.field_bits(self.field(name)?.offset)
+    }
+    fn set(&mut self, name: &str, value: i64) -> Result<(), Status> {
+        use crate::base::block::{Dir, Kind};
+        let f = self.field(name).ok_or(Status::Config)?;
+        let (min, max) = match f.kind {
+            Kind::Bool => (0, 1),
+            Kind::U8 => (0, i64::from(u8::MAX)),
+            Kind::U16 => (0, i64::from(u16::MAX)),
+            Kind::I16 => (i64::from(i16::MIN), i64::from(i16::MAX)),
+            Kind::U32 => (0, i64::from(u32::MAX)),
+            Kind::I32 => (i64::from(i32::MIN), i64::from(i32::MAX)),
+        };
+        if !(min..=max).contains(&value) {
+            return Err(Status::Config);
+        }
+        let bits = value as u32;
+        let written = match f.dir {
+            Dir::Input => self.set_input_bits(f.offset, bits),
+            Dir::Param => self.set_param_bits(f.offset, bits),
+            Dir::Control => {
+                let bit = |n: &str| self.get(n).unwrap_or(0) as u8;
+                let (run, ack) = if f.name == "bRun" {
+                    (bits as u8, bit("bErrAck"))
+                } else {
+                    (bit("bRun"), bits as u8)
+                };
+                self.drive(run, ack);
+                true
+            }
+            Dir::Output | Dir::Info => false,
+        };
+        if written {
+            Ok(())
+        } else {
+            Err(Status::Config)
+        }
+    }
+    fn field(&self, name: &str) -> Option<&'static crate::base::block::Field> {
+        B::FIELDS.iter().find(|f| f.name == name)
+    }
+}
 
 macro_rules! any_block {
-    ($($krate:ident :: blocks :: $m:ident :: $ty:ident => $init:ident, $cycle:ident;)*) => {
+    ($($krate:ident :: blocks :: $fam:ident :: $m:ident :: $ty:ident => $init:ident, $cycle:ident;)*) => {
         /// One block of any registered type (the variant is the type, its tag the
         /// registry's). The enum is as large as the largest block.
         #[allow(non_camel_case_types, clippy::large_enum_variant)]
@@ -20,7 +142,7 @@ macro_rules! any_block {
         pub enum AnyBlock {
             $(
                 #[doc = concat!("A `", stringify!($ty), "`.")]
-                $ty($crate::$ty),
+                $ty($krate::blocks::$fam::$m::$ty),
             )*
         }
 
@@ -28,7 +150,7 @@ macro_rules! any_block {
             /// A power-up (all zero) block of the type with this tag; `None` for an
             /// unknown tag.
             pub fn new(tag: u16) -> Option<Self> {
-                $(if tag == <$crate::$ty as Registered>::INFO.tag {
+                $(if tag == <$krate::blocks::$fam::$m::$ty as Registered>::INFO.tag {
                     return Some(Self::$ty(Default::default()));
                 })*
                 None
@@ -52,14 +174,14 @@ macro_rules! any_block {
             /// SL_E_CONFIG).
             pub fn init(&mut self) -> i32 {
                 match self {
-                    $(Self::$ty(b) => $crate::FunctionBlock::init(b),)*
+                    $(Self::$ty(b) => $crate::any::FunctionBlock::init(b),)*
                 }
             }
 
             /// The registry entry of the block's type.
             pub fn block_type(&self) -> &'static BlockType {
                 let tag = match self {
-                    $(Self::$ty(_) => <$crate::$ty as Registered>::INFO.tag,)*
+                    $(Self::$ty(_) => <$krate::blocks::$fam::$m::$ty as Registered>::INFO.tag,)*
                 };
                 registry::block_type(tag).expect("every variant is a registered type")
             }
@@ -76,7 +198,7 @@ impl AnyBlock {
 
     /// The manual's name of the current state.
     pub fn state_name(&self) -> &'static str {
-        crate::blocks::state_name(self.tag(), self.member().state())
+        crate::group::state_name(self.tag(), self.member().state())
     }
 
     /// A field's value as a number (signed types as signed).
@@ -288,7 +410,7 @@ mod tests {
         assert_eq!(input_bit("LIMIT_DINT", "nMaxValue"), Some(10));
         assert_eq!(input_bit("XOR", "bXor2In3"), Some(2));
         // The analog layout's rule (ABI-2 §10.5) against the blocks' own bit constants.
-        use crate::blocks::{envelope, loadsensing, speed};
+        use crate::blocks::analog::{envelope, loadsensing, speed};
         let bit = |b: &str, i: &str| input_bit(b, i).map(|n| 1u16 << n);
         assert_eq!(bit("COUNTER_INT", "bCountDown"), Some(1 << 2));
         assert_eq!(bit("VIOLATIONCOUNTER_UDINT", "bEnable"), Some(1 << 1));
@@ -299,7 +421,7 @@ mod tests {
             Some(speed::SL_SPEED_ACTIVE_POSITION)
         );
         assert_eq!(bit("SLI2_UINT", "bSLI"), Some(1));
-        use crate::blocks::cammonitor as cam;
+        use crate::blocks::motion::cammonitor as cam;
         for (input, active) in [
             ("bAutomatic", cam::SL_CAMMONITOR_ACTIVE_AUTOMATIC),
             ("bReset", cam::SL_CAMMONITOR_ACTIVE_RESET),

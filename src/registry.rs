@@ -9,269 +9,11 @@
 //! offset, type, direction), which the group's link checks, the PLC generator and the
 //! project loader read.
 
-use crate::blocks::BlockInfo;
-
-/// Which way a field of a block struct goes.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Dir {
-    /// A VAR_INPUT the host or a link writes.
-    Input,
-    /// `bRun` / `bErrAck`, driven by the owning group (never linkable).
-    Control,
-    /// A parameter, latched at init and STOP→run.
-    Param,
-    /// A VAR_OUTPUT the block writes.
-    Output,
-    /// Info data (`nState`, `nDiag`, diag message).
-    Info,
-}
-
-/// The IEC type of a field.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Kind {
-    /// BOOL (one byte, 0 or 1).
-    Bool,
-    /// BYTE / USINT.
-    U8,
-    /// WORD / UINT.
-    U16,
-    /// INT.
-    I16,
-    /// DWORD / UDINT / TIME (ms).
-    U32,
-    /// DINT.
-    I32,
-}
-
-impl Kind {
-    /// Bytes the field occupies.
-    pub const fn size(self) -> usize {
-        match self {
-            Kind::Bool | Kind::U8 => 1,
-            Kind::U16 | Kind::I16 => 2,
-            Kind::U32 | Kind::I32 => 4,
-        }
-    }
-
-    /// The C type of the header.
-    pub const fn c_type(self) -> &'static str {
-        match self {
-            Kind::Bool => "SL_BOOL",
-            Kind::U8 => "uint8_t",
-            Kind::U16 => "uint16_t",
-            Kind::I16 => "int16_t",
-            Kind::U32 => "uint32_t",
-            Kind::I32 => "int32_t",
-        }
-    }
-}
-
-/// One named field of a block struct.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub struct Field {
-    /// The C / PLC name (`bEStopIn1`, `tDiscTime12`, `nAnalogIn1`).
-    pub name: &'static str,
-    /// Byte offset in the struct.
-    pub offset: u16,
-    /// IEC type.
-    pub kind: Kind,
-    /// Direction.
-    pub dir: Dir,
-}
-
-/// A scalar field type of a block struct.
-pub trait FieldType: Copy {
-    /// Its IEC type (a `u8` input or output is a BOOL: see [`io_kind`]).
-    const KIND: Kind;
-    /// The value as a 32-bit pattern (sign-extended for signed types).
-    fn to_bits(self) -> u32;
-    /// The value from a pattern written by [`Self::to_bits`] of the same type.
-    fn from_bits(bits: u32) -> Self;
-    /// The field as a BOOL byte (only a one-byte field is one).
-    fn as_bool_mut(&mut self) -> Option<&mut u8> {
-        None
-    }
-    /// The value of a BOOL byte.
-    fn as_bool(self) -> Option<u8> {
-        None
-    }
-}
-
-macro_rules! field_type {
-    ($($t:ty => $k:ident),*) => {$(
-        impl FieldType for $t {
-            const KIND: Kind = Kind::$k;
-            #[inline(always)]
-            fn to_bits(self) -> u32 {
-                self as u32
-            }
-            #[inline(always)]
-            fn from_bits(bits: u32) -> Self {
-                bits as $t
-            }
-        }
-    )*};
-}
-field_type!(u16 => U16, i16 => I16, u32 => U32, i32 => I32);
-
-impl FieldType for u8 {
-    const KIND: Kind = Kind::U8;
-    #[inline(always)]
-    fn to_bits(self) -> u32 {
-        u32::from(self)
-    }
-    #[inline(always)]
-    fn from_bits(bits: u32) -> Self {
-        bits as u8
-    }
-    #[inline(always)]
-    fn as_bool_mut(&mut self) -> Option<&mut u8> {
-        Some(self)
-    }
-    #[inline(always)]
-    fn as_bool(self) -> Option<u8> {
-        Some(self)
-    }
-}
-
-/// The [`Kind`] of the field a projection reaches (type inference does the work).
-pub const fn kind_of<S, F: FieldType>(_: fn(&S) -> &F) -> Kind {
-    F::KIND
-}
-
-/// The size of the field a projection reaches.
-pub const fn size_of_field<S, F>(_: fn(&S) -> &F) -> usize {
-    core::mem::size_of::<F>()
-}
-
-/// Parameters and info fields keep their type.
-pub const fn same(_name: &str, k: Kind) -> Kind {
-    k
-}
-
-/// Inputs and outputs of one byte are BOOLs (`b…`), except a byte named as a number
-/// (`n…`: FB_ADVPOSMON's `nSdfbInstance`, an instance number written by the drive side).
-pub const fn io_kind(name: &str, k: Kind) -> Kind {
-    match (k, name.as_bytes()) {
-        (Kind::U8, [b'n', ..]) => Kind::U8,
-        (Kind::U8, _) => Kind::Bool,
-        (k, _) => k,
-    }
-}
-
-/// The block's private state (`stPrivate`), typed: what a block family's code works on.
-pub trait Private {
-    /// The private struct of the family.
-    type P;
-    /// `&self.stPrivate`.
-    fn private(&self) -> &Self::P;
-    /// `&mut self.stPrivate`.
-    fn private_mut(&mut self) -> &mut Self::P;
-}
-
-/// A block's states as an enum (declared with `block_states!` in the block's file): the
-/// state byte `nState` decoded once.
-pub trait BlockState: Copy + core::fmt::Debug + Eq + 'static {
-    /// (value, NUL-terminated name) of every state, the manual's status values.
-    const TABLE: &'static [(u8, &'static str)];
-    /// The state with this value; `None` for a value the block does not have (corrupt).
-    fn decode(value: u8) -> Option<Self>;
-    /// The manual's status value (`nState`).
-    fn value(self) -> u8;
-    /// The manual's name ("RUN", "DELAYIN", …).
-    fn name(self) -> &'static str {
-        let v = self.value();
-        Self::TABLE
-            .iter()
-            .find(|(s, _)| *s == v)
-            .map_or("?", |(_, n)| n.trim_end_matches('\0'))
-    }
-}
-
-/// What a registered block type brings: its info, its states and its field table.
-pub trait Registered {
-    /// Tag, name, states and diag texts.
-    const INFO: BlockInfo;
-    /// The block's states.
-    type State: BlockState;
-    /// Every named field (reserved bytes and the private state excluded).
-    const FIELDS: &'static [Field];
-    /// Parameters that are arrays of structs, left out of [`Self::FIELDS`] (offset, bytes):
-    /// LOADSENSING's value table.
-    const TABLE_PARAMS: &'static [(usize, usize)] = &[];
-    /// The state values as a set (one test per call, no table walk).
-    const STATES: StateSet = StateSet::of(<Self::State as BlockState>::TABLE);
-}
-
-/// How a registered type runs: what its C functions, the group and [`crate::FunctionBlock`]
-/// call. `impl_member!` implements it with the TwinSAFE envelope (`prim::envelope`),
-/// `impl_sf_member!` with the PLCopen one (`prim::sf`).
-pub trait Cyclic {
-    /// Type tag stored in the private header.
-    const MAGIC: u16;
-    /// `sl_<name>_init`.
-    fn init_fb(&mut self) -> crate::types::Status;
-    /// `sl_<name>_cycle`.
-    fn cycle_fb(&mut self, now: u32) -> crate::types::Status;
-    /// The steady-state fast path of `cycle_fb` (`prim::envelope::fast`): whether it
-    /// served the call; [`Self::cycle_rest`] finishes a call it did not serve.
-    #[inline(always)]
-    fn cycle_fast(&mut self, _now: u32) -> bool {
-        false
-    }
-    /// The rest of a `cycle_fb` call that [`Self::cycle_fast`] did not serve.
-    fn cycle_rest(&mut self, now: u32) -> crate::types::Status;
-    /// After a caught panic: the safe state with every output FALSE.
-    fn force_safe(&mut self);
-    /// The block is in an error state (TwinSAFE ERROR; PLCopen DiagCode ≥ 0xC000).
-    fn in_error(&self) -> bool;
-}
-
-/// The two block families of the registry, told apart by the type tag.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Family {
-    /// TwinSAFE blocks (`FB_<NAME>`, tags below 256): bRun/bErrAck at 16/17, nState/nDiag.
-    TwinSafe,
-    /// PLCopen Safety blocks (`SF_<Name>`, tags from [`SF_TAG_BASE`]): Activate, Ready,
-    /// Error, DiagCode (`prim::sf`).
-    PlcOpen,
-}
-
-/// First type tag of the PLCopen family.
-pub const SF_TAG_BASE: u16 = 512;
-
-/// The family of a type tag.
-pub const fn family(tag: u16) -> Family {
-    if tag >= SF_TAG_BASE {
-        Family::PlcOpen
-    } else {
-        Family::TwinSafe
-    }
-}
-
-/// A set of state values 0–63.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub struct StateSet(u64);
-
-impl StateSet {
-    /// The values of a state table.
-    pub const fn of(states: &[(u8, &str)]) -> Self {
-        let mut bits = 0u64;
-        let mut i = 0;
-        while i < states.len() {
-            assert!(states[i].0 < 64, "state values are below 64");
-            bits |= 1 << states[i].0;
-            i += 1;
-        }
-        Self(bits)
-    }
-
-    /// `state` is one of the set.
-    #[inline(always)]
-    pub const fn has(self, state: u8) -> bool {
-        state < 64 && (self.0 >> state) & 1 != 0
-    }
-}
+// The vocabulary of a row (what a block declares about itself), public here as well: a
+// user of the registry reads rows without reaching into the core layer.
+pub use crate::base::block::{
+    family, BlockInfo, BlockState, Dir, Family, Field, FieldType, Kind, Registered, SF_TAG_BASE,
+};
 
 /// One registered block type.
 #[derive(Clone, Copy, Debug)]
@@ -356,81 +98,81 @@ macro_rules! for_each_twinsafe_block {
     (@rows [$($all:ident)?] $m:ident) => {
         $crate::__sl_rows! { [$($all)?] $m [
             // registry:begin
-            $crate::blocks::estop::FB_ESTOP => sl_estop_init, sl_estop_cycle;
-            $crate::blocks::mon::FB_MON => sl_mon_init, sl_mon_cycle;
-            $crate::blocks::and::FB_AND => sl_and_init, sl_and_cycle;
-            $crate::blocks::or::FB_OR => sl_or_init, sl_or_cycle;
-            $crate::blocks::xor::FB_XOR => sl_xor_init, sl_xor_cycle;
-            $crate::blocks::decouple::FB_DECOUPLE => sl_decouple_init, sl_decouple_cycle;
-            $crate::blocks::opmode::FB_OPMODE => sl_opmode_init, sl_opmode_cycle;
-            $crate::blocks::twohand::FB_TWOHAND => sl_twohand_init, sl_twohand_cycle;
-            $crate::blocks::muting::FB_MUTING => sl_muting_init, sl_muting_cycle;
-            $crate::blocks::edm::FB_EDM => sl_edm_init, sl_edm_cycle;
-            $crate::blocks::rs::FB_RS => sl_rs_init, sl_rs_cycle;
-            $crate::blocks::sr::FB_SR => sl_sr_init, sl_sr_cycle;
-            $crate::blocks::ton::FB_TON => sl_ton_init, sl_ton_cycle;
-            $crate::blocks::ton2::FB_TON2 => sl_ton2_init, sl_ton2_cycle;
-            $crate::blocks::tof::FB_TOF => sl_tof_init, sl_tof_cycle;
-            $crate::blocks::arith::FB_ADD_INT => sl_add_int_init, sl_add_int_cycle;
-            $crate::blocks::arith::FB_ADD_UINT => sl_add_uint_init, sl_add_uint_cycle;
-            $crate::blocks::arith::FB_ADD_DINT => sl_add_dint_init, sl_add_dint_cycle;
-            $crate::blocks::arith::FB_ADD_UDINT => sl_add_udint_init, sl_add_udint_cycle;
-            $crate::blocks::arith::FB_SUB_INT => sl_sub_int_init, sl_sub_int_cycle;
-            $crate::blocks::arith::FB_SUB_UINT => sl_sub_uint_init, sl_sub_uint_cycle;
-            $crate::blocks::arith::FB_SUB_DINT => sl_sub_dint_init, sl_sub_dint_cycle;
-            $crate::blocks::arith::FB_SUB_UDINT => sl_sub_udint_init, sl_sub_udint_cycle;
-            $crate::blocks::arith::FB_MUL_INT => sl_mul_int_init, sl_mul_int_cycle;
-            $crate::blocks::arith::FB_MUL_UINT => sl_mul_uint_init, sl_mul_uint_cycle;
-            $crate::blocks::arith::FB_MUL_DINT => sl_mul_dint_init, sl_mul_dint_cycle;
-            $crate::blocks::arith::FB_MUL_UDINT => sl_mul_udint_init, sl_mul_udint_cycle;
-            $crate::blocks::arith::FB_DIV_INT => sl_div_int_init, sl_div_int_cycle;
-            $crate::blocks::arith::FB_DIV_UINT => sl_div_uint_init, sl_div_uint_cycle;
-            $crate::blocks::arith::FB_DIV_DINT => sl_div_dint_init, sl_div_dint_cycle;
-            $crate::blocks::arith::FB_DIV_UDINT => sl_div_udint_init, sl_div_udint_cycle;
-            $crate::blocks::compare::FB_COMPARE_INT => sl_compare_int_init, sl_compare_int_cycle;
-            $crate::blocks::compare::FB_COMPARE_UINT => sl_compare_uint_init, sl_compare_uint_cycle;
-            $crate::blocks::compare::FB_COMPARE_DINT => sl_compare_dint_init, sl_compare_dint_cycle;
-            $crate::blocks::compare::FB_COMPARE_UDINT => sl_compare_udint_init, sl_compare_udint_cycle;
-            $crate::blocks::limit::FB_LIMIT_INT => sl_limit_int_init, sl_limit_int_cycle;
-            $crate::blocks::limit::FB_LIMIT_UINT => sl_limit_uint_init, sl_limit_uint_cycle;
-            $crate::blocks::limit::FB_LIMIT_DINT => sl_limit_dint_init, sl_limit_dint_cycle;
-            $crate::blocks::limit::FB_LIMIT_UDINT => sl_limit_udint_init, sl_limit_udint_cycle;
-            $crate::blocks::scale::FB_SCALE_INT => sl_scale_int_init, sl_scale_int_cycle;
-            $crate::blocks::scale::FB_SCALE_UINT => sl_scale_uint_init, sl_scale_uint_cycle;
-            $crate::blocks::scale::FB_SCALE_DINT => sl_scale_dint_init, sl_scale_dint_cycle;
-            $crate::blocks::scale::FB_SCALE_UDINT => sl_scale_udint_init, sl_scale_udint_cycle;
-            $crate::blocks::speed::FB_SPEED_INT => sl_speed_int_init, sl_speed_int_cycle;
-            $crate::blocks::speed::FB_SPEED_UINT => sl_speed_uint_init, sl_speed_uint_cycle;
-            $crate::blocks::speed::FB_SPEED_DINT => sl_speed_dint_init, sl_speed_dint_cycle;
-            $crate::blocks::speed::FB_SPEED_UDINT => sl_speed_udint_init, sl_speed_udint_cycle;
-            $crate::blocks::loadsensing::FB_LOADSENSING_INT => sl_loadsensing_int_init, sl_loadsensing_int_cycle;
-            $crate::blocks::loadsensing::FB_LOADSENSING_UINT => sl_loadsensing_uint_init, sl_loadsensing_uint_cycle;
-            $crate::blocks::loadsensing::FB_LOADSENSING_DINT => sl_loadsensing_dint_init, sl_loadsensing_dint_cycle;
-            $crate::blocks::loadsensing::FB_LOADSENSING_UDINT => sl_loadsensing_udint_init, sl_loadsensing_udint_cycle;
-            $crate::blocks::envelope::FB_ENVELOPE_INT => sl_envelope_int_init, sl_envelope_int_cycle;
-            $crate::blocks::envelope::FB_ENVELOPE_UINT => sl_envelope_uint_init, sl_envelope_uint_cycle;
-            $crate::blocks::envelope::FB_ENVELOPE_DINT => sl_envelope_dint_init, sl_envelope_dint_cycle;
-            $crate::blocks::envelope::FB_ENVELOPE_UDINT => sl_envelope_udint_init, sl_envelope_udint_cycle;
-            $crate::blocks::counter::FB_COUNTER_INT => sl_counter_int_init, sl_counter_int_cycle;
-            $crate::blocks::counter::FB_COUNTER_UINT => sl_counter_uint_init, sl_counter_uint_cycle;
-            $crate::blocks::counter::FB_COUNTER_DINT => sl_counter_dint_init, sl_counter_dint_cycle;
-            $crate::blocks::counter::FB_COUNTER_UDINT => sl_counter_udint_init, sl_counter_udint_cycle;
-            $crate::blocks::sli::FB_SLI_INT => sl_sli_int_init, sl_sli_int_cycle;
-            $crate::blocks::sli::FB_SLI_UINT => sl_sli_uint_init, sl_sli_uint_cycle;
-            $crate::blocks::sli::FB_SLI_DINT => sl_sli_dint_init, sl_sli_dint_cycle;
-            $crate::blocks::sli::FB_SLI_UDINT => sl_sli_udint_init, sl_sli_udint_cycle;
-            $crate::blocks::sli2::FB_SLI2_INT => sl_sli2_int_init, sl_sli2_int_cycle;
-            $crate::blocks::sli2::FB_SLI2_UINT => sl_sli2_uint_init, sl_sli2_uint_cycle;
-            $crate::blocks::sli2::FB_SLI2_DINT => sl_sli2_dint_init, sl_sli2_dint_cycle;
-            $crate::blocks::sli2::FB_SLI2_UDINT => sl_sli2_udint_init, sl_sli2_udint_cycle;
-            $crate::blocks::violationcounter::FB_VIOLATIONCOUNTER_UINT => sl_violationcounter_uint_init, sl_violationcounter_uint_cycle;
-            $crate::blocks::violationcounter::FB_VIOLATIONCOUNTER_UDINT => sl_violationcounter_udint_init, sl_violationcounter_udint_cycle;
-            $crate::blocks::cammonitor::FB_CAMMONITOR_UINT => sl_cammonitor_uint_init, sl_cammonitor_uint_cycle;
-            $crate::blocks::cammonitor::FB_CAMMONITOR_UDINT => sl_cammonitor_udint_init, sl_cammonitor_udint_cycle;
-            $crate::blocks::slp::FB_SLP => sl_slp_init, sl_slp_cycle;
-            $crate::blocks::sbt::FB_SBT => sl_sbt_init, sl_sbt_cycle;
-            $crate::blocks::advposmon::FB_ADVPOSMON => sl_advposmon_init, sl_advposmon_cycle;
-            $crate::blocks::connshutdown::FB_CONNECTION_SHUTDOWN => sl_connection_shutdown_init, sl_connection_shutdown_cycle;
+            $crate::blocks::boolean::estop::FB_ESTOP => sl_estop_init, sl_estop_cycle;
+            $crate::blocks::boolean::mon::FB_MON => sl_mon_init, sl_mon_cycle;
+            $crate::blocks::boolean::and::FB_AND => sl_and_init, sl_and_cycle;
+            $crate::blocks::boolean::or::FB_OR => sl_or_init, sl_or_cycle;
+            $crate::blocks::boolean::xor::FB_XOR => sl_xor_init, sl_xor_cycle;
+            $crate::blocks::boolean::decouple::FB_DECOUPLE => sl_decouple_init, sl_decouple_cycle;
+            $crate::blocks::boolean::opmode::FB_OPMODE => sl_opmode_init, sl_opmode_cycle;
+            $crate::blocks::boolean::twohand::FB_TWOHAND => sl_twohand_init, sl_twohand_cycle;
+            $crate::blocks::boolean::muting::FB_MUTING => sl_muting_init, sl_muting_cycle;
+            $crate::blocks::boolean::edm::FB_EDM => sl_edm_init, sl_edm_cycle;
+            $crate::blocks::boolean::rs::FB_RS => sl_rs_init, sl_rs_cycle;
+            $crate::blocks::boolean::sr::FB_SR => sl_sr_init, sl_sr_cycle;
+            $crate::blocks::boolean::ton::FB_TON => sl_ton_init, sl_ton_cycle;
+            $crate::blocks::boolean::ton2::FB_TON2 => sl_ton2_init, sl_ton2_cycle;
+            $crate::blocks::boolean::tof::FB_TOF => sl_tof_init, sl_tof_cycle;
+            $crate::blocks::analog::arith::FB_ADD_INT => sl_add_int_init, sl_add_int_cycle;
+            $crate::blocks::analog::arith::FB_ADD_UINT => sl_add_uint_init, sl_add_uint_cycle;
+            $crate::blocks::analog::arith::FB_ADD_DINT => sl_add_dint_init, sl_add_dint_cycle;
+            $crate::blocks::analog::arith::FB_ADD_UDINT => sl_add_udint_init, sl_add_udint_cycle;
+            $crate::blocks::analog::arith::FB_SUB_INT => sl_sub_int_init, sl_sub_int_cycle;
+            $crate::blocks::analog::arith::FB_SUB_UINT => sl_sub_uint_init, sl_sub_uint_cycle;
+            $crate::blocks::analog::arith::FB_SUB_DINT => sl_sub_dint_init, sl_sub_dint_cycle;
+            $crate::blocks::analog::arith::FB_SUB_UDINT => sl_sub_udint_init, sl_sub_udint_cycle;
+            $crate::blocks::analog::arith::FB_MUL_INT => sl_mul_int_init, sl_mul_int_cycle;
+            $crate::blocks::analog::arith::FB_MUL_UINT => sl_mul_uint_init, sl_mul_uint_cycle;
+            $crate::blocks::analog::arith::FB_MUL_DINT => sl_mul_dint_init, sl_mul_dint_cycle;
+            $crate::blocks::analog::arith::FB_MUL_UDINT => sl_mul_udint_init, sl_mul_udint_cycle;
+            $crate::blocks::analog::arith::FB_DIV_INT => sl_div_int_init, sl_div_int_cycle;
+            $crate::blocks::analog::arith::FB_DIV_UINT => sl_div_uint_init, sl_div_uint_cycle;
+            $crate::blocks::analog::arith::FB_DIV_DINT => sl_div_dint_init, sl_div_dint_cycle;
+            $crate::blocks::analog::arith::FB_DIV_UDINT => sl_div_udint_init, sl_div_udint_cycle;
+            $crate::blocks::analog::compare::FB_COMPARE_INT => sl_compare_int_init, sl_compare_int_cycle;
+            $crate::blocks::analog::compare::FB_COMPARE_UINT => sl_compare_uint_init, sl_compare_uint_cycle;
+            $crate::blocks::analog::compare::FB_COMPARE_DINT => sl_compare_dint_init, sl_compare_dint_cycle;
+            $crate::blocks::analog::compare::FB_COMPARE_UDINT => sl_compare_udint_init, sl_compare_udint_cycle;
+            $crate::blocks::analog::limit::FB_LIMIT_INT => sl_limit_int_init, sl_limit_int_cycle;
+            $crate::blocks::analog::limit::FB_LIMIT_UINT => sl_limit_uint_init, sl_limit_uint_cycle;
+            $crate::blocks::analog::limit::FB_LIMIT_DINT => sl_limit_dint_init, sl_limit_dint_cycle;
+            $crate::blocks::analog::limit::FB_LIMIT_UDINT => sl_limit_udint_init, sl_limit_udint_cycle;
+            $crate::blocks::analog::scale::FB_SCALE_INT => sl_scale_int_init, sl_scale_int_cycle;
+            $crate::blocks::analog::scale::FB_SCALE_UINT => sl_scale_uint_init, sl_scale_uint_cycle;
+            $crate::blocks::analog::scale::FB_SCALE_DINT => sl_scale_dint_init, sl_scale_dint_cycle;
+            $crate::blocks::analog::scale::FB_SCALE_UDINT => sl_scale_udint_init, sl_scale_udint_cycle;
+            $crate::blocks::analog::speed::FB_SPEED_INT => sl_speed_int_init, sl_speed_int_cycle;
+            $crate::blocks::analog::speed::FB_SPEED_UINT => sl_speed_uint_init, sl_speed_uint_cycle;
+            $crate::blocks::analog::speed::FB_SPEED_DINT => sl_speed_dint_init, sl_speed_dint_cycle;
+            $crate::blocks::analog::speed::FB_SPEED_UDINT => sl_speed_udint_init, sl_speed_udint_cycle;
+            $crate::blocks::analog::loadsensing::FB_LOADSENSING_INT => sl_loadsensing_int_init, sl_loadsensing_int_cycle;
+            $crate::blocks::analog::loadsensing::FB_LOADSENSING_UINT => sl_loadsensing_uint_init, sl_loadsensing_uint_cycle;
+            $crate::blocks::analog::loadsensing::FB_LOADSENSING_DINT => sl_loadsensing_dint_init, sl_loadsensing_dint_cycle;
+            $crate::blocks::analog::loadsensing::FB_LOADSENSING_UDINT => sl_loadsensing_udint_init, sl_loadsensing_udint_cycle;
+            $crate::blocks::analog::envelope::FB_ENVELOPE_INT => sl_envelope_int_init, sl_envelope_int_cycle;
+            $crate::blocks::analog::envelope::FB_ENVELOPE_UINT => sl_envelope_uint_init, sl_envelope_uint_cycle;
+            $crate::blocks::analog::envelope::FB_ENVELOPE_DINT => sl_envelope_dint_init, sl_envelope_dint_cycle;
+            $crate::blocks::analog::envelope::FB_ENVELOPE_UDINT => sl_envelope_udint_init, sl_envelope_udint_cycle;
+            $crate::blocks::analog::counter::FB_COUNTER_INT => sl_counter_int_init, sl_counter_int_cycle;
+            $crate::blocks::analog::counter::FB_COUNTER_UINT => sl_counter_uint_init, sl_counter_uint_cycle;
+            $crate::blocks::analog::counter::FB_COUNTER_DINT => sl_counter_dint_init, sl_counter_dint_cycle;
+            $crate::blocks::analog::counter::FB_COUNTER_UDINT => sl_counter_udint_init, sl_counter_udint_cycle;
+            $crate::blocks::analog::sli::FB_SLI_INT => sl_sli_int_init, sl_sli_int_cycle;
+            $crate::blocks::analog::sli::FB_SLI_UINT => sl_sli_uint_init, sl_sli_uint_cycle;
+            $crate::blocks::analog::sli::FB_SLI_DINT => sl_sli_dint_init, sl_sli_dint_cycle;
+            $crate::blocks::analog::sli::FB_SLI_UDINT => sl_sli_udint_init, sl_sli_udint_cycle;
+            $crate::blocks::analog::sli2::FB_SLI2_INT => sl_sli2_int_init, sl_sli2_int_cycle;
+            $crate::blocks::analog::sli2::FB_SLI2_UINT => sl_sli2_uint_init, sl_sli2_uint_cycle;
+            $crate::blocks::analog::sli2::FB_SLI2_DINT => sl_sli2_dint_init, sl_sli2_dint_cycle;
+            $crate::blocks::analog::sli2::FB_SLI2_UDINT => sl_sli2_udint_init, sl_sli2_udint_cycle;
+            $crate::blocks::analog::violationcounter::FB_VIOLATIONCOUNTER_UINT => sl_violationcounter_uint_init, sl_violationcounter_uint_cycle;
+            $crate::blocks::analog::violationcounter::FB_VIOLATIONCOUNTER_UDINT => sl_violationcounter_udint_init, sl_violationcounter_udint_cycle;
+            $crate::blocks::motion::cammonitor::FB_CAMMONITOR_UINT => sl_cammonitor_uint_init, sl_cammonitor_uint_cycle;
+            $crate::blocks::motion::cammonitor::FB_CAMMONITOR_UDINT => sl_cammonitor_udint_init, sl_cammonitor_udint_cycle;
+            $crate::blocks::motion::slp::FB_SLP => sl_slp_init, sl_slp_cycle;
+            $crate::blocks::motion::sbt::FB_SBT => sl_sbt_init, sl_sbt_cycle;
+            $crate::blocks::motion::advposmon::FB_ADVPOSMON => sl_advposmon_init, sl_advposmon_cycle;
+            $crate::blocks::connection::connshutdown::FB_CONNECTION_SHUTDOWN => sl_connection_shutdown_init, sl_connection_shutdown_cycle;
             // registry:end
         ] }
     };
@@ -445,21 +187,21 @@ macro_rules! for_each_sf_block {
         $m! {
             $($($pre)*)?
             // registry:begin
-            $crate::blocks::sf_emergencystop::SF_EmergencyStop => sl_sf_emergencystop_init, sl_sf_emergencystop_cycle;
-            $crate::blocks::sf_espe::SF_ESPE => sl_sf_espe_init, sl_sf_espe_cycle;
-            $crate::blocks::sf_pse::SF_PSE => sl_sf_pse_init, sl_sf_pse_cycle;
-            $crate::blocks::sf_equivalent::SF_Equivalent => sl_sf_equivalent_init, sl_sf_equivalent_cycle;
-            $crate::blocks::sf_antivalent::SF_Antivalent => sl_sf_antivalent_init, sl_sf_antivalent_cycle;
-            $crate::blocks::sf_guard::SF_Guard => sl_sf_guard_init, sl_sf_guard_cycle;
-            $crate::blocks::sf_safetyrequest::SF_SafetyRequest => sl_sf_safetyrequest_init, sl_sf_safetyrequest_cycle;
-            $crate::blocks::sf_outcontrol::SF_OutControl => sl_sf_outcontrol_init, sl_sf_outcontrol_cycle;
-            $crate::blocks::sf_resetbutton::SF_ResetButton => sl_sf_resetbutton_init, sl_sf_resetbutton_cycle;
-            $crate::blocks::sf_edm::SF_EDM => sl_sf_edm_init, sl_sf_edm_cycle;
-            $crate::blocks::sf_testablesafetysensor::SF_TestableSafetySensor => sl_sf_testablesafetysensor_init, sl_sf_testablesafetysensor_cycle;
-            $crate::blocks::sf_enableswitch::SF_EnableSwitch => sl_sf_enableswitch_init, sl_sf_enableswitch_cycle;
-            $crate::blocks::sf_twohandcontroltypeii::SF_TwoHandControlTypeII => sl_sf_twohandcontroltypeii_init, sl_sf_twohandcontroltypeii_cycle;
-            $crate::blocks::sf_twohandcontroltypeiii::SF_TwoHandControlTypeIII => sl_sf_twohandcontroltypeiii_init, sl_sf_twohandcontroltypeiii_cycle;
-            $crate::blocks::sf_modeselector::SF_ModeSelector => sl_sf_modeselector_init, sl_sf_modeselector_cycle;
+            $crate::blocks::plcopen::emergencystop::SF_EmergencyStop => sl_sf_emergencystop_init, sl_sf_emergencystop_cycle;
+            $crate::blocks::plcopen::espe::SF_ESPE => sl_sf_espe_init, sl_sf_espe_cycle;
+            $crate::blocks::plcopen::pse::SF_PSE => sl_sf_pse_init, sl_sf_pse_cycle;
+            $crate::blocks::plcopen::equivalent::SF_Equivalent => sl_sf_equivalent_init, sl_sf_equivalent_cycle;
+            $crate::blocks::plcopen::antivalent::SF_Antivalent => sl_sf_antivalent_init, sl_sf_antivalent_cycle;
+            $crate::blocks::plcopen::guard::SF_Guard => sl_sf_guard_init, sl_sf_guard_cycle;
+            $crate::blocks::plcopen::safetyrequest::SF_SafetyRequest => sl_sf_safetyrequest_init, sl_sf_safetyrequest_cycle;
+            $crate::blocks::plcopen::outcontrol::SF_OutControl => sl_sf_outcontrol_init, sl_sf_outcontrol_cycle;
+            $crate::blocks::plcopen::resetbutton::SF_ResetButton => sl_sf_resetbutton_init, sl_sf_resetbutton_cycle;
+            $crate::blocks::plcopen::edm::SF_EDM => sl_sf_edm_init, sl_sf_edm_cycle;
+            $crate::blocks::plcopen::testablesafetysensor::SF_TestableSafetySensor => sl_sf_testablesafetysensor_init, sl_sf_testablesafetysensor_cycle;
+            $crate::blocks::plcopen::enableswitch::SF_EnableSwitch => sl_sf_enableswitch_init, sl_sf_enableswitch_cycle;
+            $crate::blocks::plcopen::twohandcontroltypeii::SF_TwoHandControlTypeII => sl_sf_twohandcontroltypeii_init, sl_sf_twohandcontroltypeii_cycle;
+            $crate::blocks::plcopen::twohandcontroltypeiii::SF_TwoHandControlTypeIII => sl_sf_twohandcontroltypeiii_init, sl_sf_twohandcontroltypeiii_cycle;
+            $crate::blocks::plcopen::modeselector::SF_ModeSelector => sl_sf_modeselector_init, sl_sf_modeselector_cycle;
             // registry:end
         }
     };
@@ -510,6 +252,11 @@ pub fn block_type(tag: u16) -> Option<&'static BlockType> {
 /// The block type with this manual name (`ESTOP`, `ADD_INT`).
 pub fn block_type_named(name: &str) -> Option<&'static BlockType> {
     BLOCKS.iter().find(|b| b.info.name == name)
+}
+
+/// The block type with this tag.
+pub fn info(tag: u16) -> Option<&'static BlockInfo> {
+    crate::registry::block_type(tag).map(|b| &b.info)
 }
 
 #[cfg(test)]

@@ -3,8 +3,8 @@
 //! happens in the cycle of its cause (members run in order, links are copied just before
 //! their destination runs); an analog range error stops the whole group.
 
-use safelogic::blocks::limit::SL_LIMIT_ACTIVE_ANALOGIN;
-use safelogic::blocks::speed::SL_SPEED_ACTIVE_POSITION;
+use safelogic::blocks::analog::limit::SL_LIMIT_ACTIVE_ANALOGIN;
+use safelogic::blocks::analog::speed::SL_SPEED_ACTIVE_POSITION;
 use safelogic::group::{self, Member, SL_LINK_ANALOG16, SL_LINK_BOOL};
 use safelogic::*;
 use std::mem::offset_of;
@@ -194,7 +194,7 @@ fn an_analog_range_error_stops_the_whole_group_until_acknowledged() {
     assert_eq!(p.b.speed.nState, SL_STATE_ERROR);
     assert_eq!(
         p.b.speed.nDiagTextId,
-        safelogic::blocks::speed::SL_TEXT_SPEED_OVERFLOW
+        safelogic::blocks::analog::speed::SL_TEXT_SPEED_OVERFLOW
     );
     assert_eq!(
         (p.b.speed.dwDiagPar2, p.b.speed.dwDiagPar3),

@@ -2,7 +2,7 @@
 //! in all four integer variants: exact results against an `i128` model, the range errors
 //! with diag value and message, DIV rounding and division by zero, ERROR → RESET → RUN.
 
-use safelogic::blocks::arith::*;
+use safelogic::blocks::analog::arith::*;
 mod common;
 
 use common::Rng;
@@ -300,14 +300,14 @@ fn unsigned_sub_below_zero_is_an_underflow() {
 /// The diag value reads as the manual's text.
 #[test]
 fn diag_text_of_a_value() {
-    let info = safelogic::blocks::info(SL_TYPE_ADD_INT).expect("registered");
+    let info = safelogic::registry::info(SL_TYPE_ADD_INT).expect("registered");
     let mut buf = [0u8; 128];
-    let n = safelogic::blocks::diag_text(info, 2, &mut buf);
+    let n = safelogic::base::diag::diag_text(info, 2, &mut buf);
     assert_eq!(
         std::str::from_utf8(&buf[..n]).unwrap(),
         "The output AnalogOut has an overflow (is greater than the largest possible value)"
     );
-    let n = safelogic::blocks::diag_text(info, 1 | SL_DIAG_CLOCK, &mut buf);
+    let n = safelogic::base::diag::diag_text(info, 1 | SL_DIAG_CLOCK, &mut buf);
     assert!(std::str::from_utf8(&buf[..n])
         .unwrap()
         .ends_with("; clock went backwards"));

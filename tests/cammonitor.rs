@@ -1097,7 +1097,7 @@ macro_rules! suite {
                 limits_from_inputs_are_verified_unless_automatic();
                 setting_mode_relatches_the_fixed_values();
                 let (states, texts) = SEEN.with(|s| s.borrow().clone());
-                let table = <Fb as safelogic::registry::Registered>::INFO.states;
+                let table = <Fb as safelogic::base::block::Registered>::INFO.states;
                 assert_eq!(table.len(), 22);
                 for (v, name) in table {
                     assert!(states.contains(v), "state {v} {name} never reached");
@@ -1106,7 +1106,7 @@ macro_rules! suite {
                     assert!(texts.contains(&text), "Text ID {text:#x} never shown");
                     let v = text - 0x4000;
                     assert!(
-                        <Fb as safelogic::registry::Registered>::INFO
+                        <Fb as safelogic::base::block::Registered>::INFO
                             .diag_values
                             .iter()
                             .any(|(d, _)| *d == v),

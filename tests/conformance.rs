@@ -22,7 +22,7 @@ macro_rules! harness {
         fn run_all(seed: u64, rounds: usize, steps: usize) -> Vec<(&'static str, BTreeSet<u8>)> {
             let mut reached = Vec::new();
             $({
-                let t = block_type(<$ty as safelogic::registry::Registered>::INFO.tag).unwrap();
+                let t = block_type(<$ty as safelogic::base::block::Registered>::INFO.tag).unwrap();
                 assert_eq!(t.size, std::mem::size_of::<$ty>());
                 let mut rng = Rng(seed ^ u64::from(t.info.tag).wrapping_mul(0x9E37_79B9));
                 let mut states = BTreeSet::new();
@@ -97,10 +97,10 @@ macro_rules! unknown_state {
         /// every registered type, every value 0–255 outside its state table.
         #[test]
         fn an_unknown_state_value_is_corrupt() {
-            use safelogic::prim::envelope::Instance;
+            use safelogic::base::envelope::Instance;
             let mut checked = 0;
             $({
-                let t = block_type(<$ty as safelogic::registry::Registered>::INFO.tag).unwrap();
+                let t = block_type(<$ty as safelogic::base::block::Registered>::INFO.tag).unwrap();
                 for state in 0..=255u8 {
                     if t.info.states.iter().any(|(v, _)| *v == state) {
                         continue;
@@ -200,7 +200,7 @@ macro_rules! named_access {
         fn fields_by_name() {
             $({
                 let mut fb = <$ty>::default();
-                for f in <$ty as safelogic::registry::Registered>::FIELDS {
+                for f in <$ty as safelogic::base::block::Registered>::FIELDS {
                     let writable = matches!(f.dir, Dir::Input | Dir::Param | Dir::Control);
                     let v: i64 = match f.kind { Kind::Bool => 1, Kind::I16 | Kind::I32 => -2, _ => 2 };
                     assert_eq!(fb.set(f.name, v).is_ok(), writable, "{}", f.name);
@@ -245,7 +245,7 @@ macro_rules! depth {
         fn depth_all(sequences: usize) -> Vec<(&'static str, BTreeSet<u8>)> {
             let mut reached = Vec::new();
             $({
-                let t = block_type(<$ty as safelogic::registry::Registered>::INFO.tag).unwrap();
+                let t = block_type(<$ty as safelogic::base::block::Registered>::INFO.tag).unwrap();
                 let mut rng = Rng(0xDE97_0000 ^ u64::from(t.info.tag));
                 let bytes = |fb: &mut $ty| -> &mut [u8] {
                     // SAFETY: every block struct holds only integer fields (and zero-sized
@@ -436,7 +436,7 @@ fn twinsafe_count() -> usize {
     BLOCKS
         .iter()
         .filter(|b| {
-            safelogic::registry::family(b.info.tag) == safelogic::registry::Family::TwinSafe
+            safelogic::base::block::family(b.info.tag) == safelogic::base::block::Family::TwinSafe
         })
         .count()
 }
@@ -458,7 +458,7 @@ macro_rules! sf_harness {
         fn sf_run_all(seed: u64, rounds: usize, steps: usize) -> Vec<(&'static str, BTreeSet<u16>)> {
             let mut reached = Vec::new();
             $({
-                let t = block_type(<$ty as safelogic::registry::Registered>::INFO.tag).unwrap();
+                let t = block_type(<$ty as safelogic::base::block::Registered>::INFO.tag).unwrap();
                 assert_eq!(t.size, std::mem::size_of::<$ty>());
                 let mut rng = Rng(seed ^ u64::from(t.info.tag).wrapping_mul(0x9E37_79B9));
                 let mut codes = BTreeSet::new();
@@ -478,7 +478,7 @@ macro_rules! sf_harness {
                     }
                     if round % 4 == 1 {
                         // Activated: the random private state is a fault (C3FF), not idle.
-                        safelogic::prim::sf::SfInstance::set_activate_raw(&mut fb, 1);
+                        safelogic::base::sf::SfInstance::set_activate_raw(&mut fb, 1);
                     }
                     if round % 2 == 0 {
                         // SAFETY: as above.
@@ -530,10 +530,10 @@ macro_rules! sf_harness {
         /// is corrupt: the library fault C3FF with Activate TRUE, idle with Activate FALSE.
         #[test]
         fn sf_an_unknown_diag_code_is_corrupt() {
-            use safelogic::prim::sf::{DiagState, SfBlock, SfInstance};
+            use safelogic::base::sf::{DiagState, SfBlock, SfInstance};
             let mut checked = 0;
             $({
-                let t = block_type(<$ty as safelogic::registry::Registered>::INFO.tag).unwrap();
+                let t = block_type(<$ty as safelogic::base::block::Registered>::INFO.tag).unwrap();
                 for code in (0..=0xFFFFu16).step_by(7) {
                     if code == 0 || <<$ty as SfBlock>::Diag as DiagState>::decode(code).is_some() {
                         continue;
@@ -562,7 +562,7 @@ macro_rules! sf_harness {
         fn sf_depth_all(sequences: usize) -> Vec<(&'static str, BTreeSet<u16>)> {
             let mut reached = Vec::new();
             $({
-                let t = block_type(<$ty as safelogic::registry::Registered>::INFO.tag).unwrap();
+                let t = block_type(<$ty as safelogic::base::block::Registered>::INFO.tag).unwrap();
                 let mut rng = Rng(0xDE97_5F00 ^ u64::from(t.info.tag));
                 let bytes = |fb: &mut $ty| -> &mut [u8] {
                     // SAFETY: integer fields only; the slice covers exactly the instance.
@@ -611,7 +611,7 @@ macro_rules! sf_harness {
                             }
                         }
                         if step == 0 {
-                            safelogic::prim::sf::SfInstance::set_activate_raw(&mut fb, 1);
+                            safelogic::base::sf::SfInstance::set_activate_raw(&mut fb, 1);
                         }
                         now = if r & 255 == 0 {
                             now.wrapping_sub(1 + (rng.next() % 50) as u32)
@@ -649,7 +649,7 @@ fn every_plcopen_type_survives_random_bytes() {
 /// `check_sf` hold after every call.
 #[test]
 fn every_plcopen_type_keeps_its_properties_over_10000_sequences() {
-    use safelogic::prim::sf::DiagState;
+    use safelogic::base::sf::DiagState;
     let depth: usize = std::env::var("SL_PROP_DEPTH")
         .ok()
         .and_then(|v| v.parse().ok())
@@ -660,36 +660,36 @@ fn every_plcopen_type_keeps_its_properties_over_10000_sequences() {
         let table: Vec<u16> = t.info.diag_values.iter().map(|(c, _)| *c).collect();
         let v2 = match name {
             "SF_EmergencyStop" | "SF_ESPE" | "SF_PSE" => {
-                <safelogic::blocks::sf_restart::RestartState as DiagState>::TABLE
+                <safelogic::blocks::plcopen::restart::RestartState as DiagState>::TABLE
             }
             "SF_Equivalent" | "SF_Antivalent" => {
-                <safelogic::blocks::sf_pair::PairState as DiagState>::TABLE
+                <safelogic::blocks::plcopen::pair::PairState as DiagState>::TABLE
             }
-            "SF_Guard" => <safelogic::blocks::sf_guard::SfGuardState as DiagState>::TABLE,
+            "SF_Guard" => <safelogic::blocks::plcopen::guard::SfGuardState as DiagState>::TABLE,
             "SF_SafetyRequest" => {
-                <safelogic::blocks::sf_safetyrequest::SafetyRequestState as DiagState>::TABLE
+                <safelogic::blocks::plcopen::safetyrequest::SafetyRequestState as DiagState>::TABLE
             }
             "SF_OutControl" => {
-                <safelogic::blocks::sf_outcontrol::OutControlState as DiagState>::TABLE
+                <safelogic::blocks::plcopen::outcontrol::OutControlState as DiagState>::TABLE
             }
             "SF_EnableSwitch" => {
-                <safelogic::blocks::sf_enableswitch::EnableSwitchState as DiagState>::TABLE
+                <safelogic::blocks::plcopen::enableswitch::EnableSwitchState as DiagState>::TABLE
             }
             "SF_TwoHandControlTypeII" => {
-                <safelogic::blocks::sf_twohand::TwoHandIIState as DiagState>::TABLE
+                <safelogic::blocks::plcopen::twohand::TwoHandIIState as DiagState>::TABLE
             }
             "SF_TwoHandControlTypeIII" => {
-                <safelogic::blocks::sf_twohand::TwoHandIIIState as DiagState>::TABLE
+                <safelogic::blocks::plcopen::twohand::TwoHandIIIState as DiagState>::TABLE
             }
             "SF_ModeSelector" => {
-                <safelogic::blocks::sf_modeselector::ModeState as DiagState>::TABLE
+                <safelogic::blocks::plcopen::modeselector::ModeState as DiagState>::TABLE
             }
             "SF_ResetButton" => {
-                <safelogic::blocks::sf_resetbutton::ResetButtonState as DiagState>::TABLE
+                <safelogic::blocks::plcopen::resetbutton::ResetButtonState as DiagState>::TABLE
             }
-            "SF_EDM" => <safelogic::blocks::sf_edm::SfEdmState as DiagState>::TABLE,
+            "SF_EDM" => <safelogic::blocks::plcopen::edm::SfEdmState as DiagState>::TABLE,
             "SF_TestableSafetySensor" => {
-                <safelogic::blocks::sf_testablesafetysensor::TssState as DiagState>::TABLE
+                <safelogic::blocks::plcopen::testablesafetysensor::TssState as DiagState>::TABLE
             }
             other => panic!("{other}: no state table named in this test"),
         };

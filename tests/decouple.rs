@@ -34,7 +34,7 @@ fn outs(d: &FB_DECOUPLE) -> [u8; 8] {
 
 fn state_name(ty: u16, state: u8) -> &'static str {
     let p = ffi::sl_state_str(ty, state);
-    safelogic::blocks::info(ty)
+    safelogic::registry::info(ty)
         .and_then(|b| b.states.iter().find(|(_, n)| n.as_ptr().cast() == p))
         .map_or("?", |(_, n)| n.trim_end_matches('\0'))
 }

@@ -569,7 +569,7 @@ both!(zeroed_private_state_is_a_never_initialised_instance);
 /// non-zero byte anywhere in the common header of an otherwise zeroed area makes it a
 /// corrupted one (SL_E_CORRUPT, ERROR, diag bit 15), not a fresh start — whichever byte it is.
 fn one_non_zero_header_byte_is_corrupt_not_never_initialised<B: Params>(fb: B) {
-    let header = std::mem::size_of::<safelogic::prim::header::SL_PRIVATE_HEADER>();
+    let header = std::mem::size_of::<safelogic::base::header::SL_PRIVATE_HEADER>();
     for at in 0..header {
         for value in [0x01u8, 0x80] {
             let mut s = running(fb.clone());
@@ -1118,7 +1118,7 @@ both!(a_second_error_adds_its_diag_bit);
 
 // ---------------------------------------------------------------------------------------
 // The latched parameter copy (C3). These two tests reach into SL_GUARD_PRIVATE's public
-// fields (`adwTime`, src/blocks/guard.rs): C3 describes the mechanism, the layout is the
+// fields (`adwTime`, src/blocks/boolean/guard.rs): C3 describes the mechanism, the layout is the
 // implementation's.
 // ---------------------------------------------------------------------------------------
 
@@ -1205,17 +1205,17 @@ fn latched_copy_is_verified_before_the_outputs_are_enabled() {
 }
 
 // ---------------------------------------------------------------------------------------
-// The panic boundary's recovery (src/ffi.rs `block_call`: a caught panic forces ERROR)
+// The panic boundary's recovery (src/ffi/mod.rs `block_call`: a caught panic forces ERROR)
 // ---------------------------------------------------------------------------------------
 
 /// ABI §5 SL_E_INTERNAL "the instance is in ERROR with its outputs FALSE": after an internal
 /// fault a running block is in ERROR (diag bit 15 added to what it had), bError TRUE, the
 /// outputs FALSE; its private state is sealed (the next call sees no corruption and keeps
 /// the error) and one ErrAck edge acknowledges it (C4: nothing remains).
-fn forced_error_is_an_acknowledgeable_error<B: Guard + safelogic::prim::envelope::Block>(fb: B) {
+fn forced_error_is_an_acknowledgeable_error<B: Guard + safelogic::base::envelope::Block>(fb: B) {
     let mut s = running(fb);
     expect(&s.fb, SL_STATE_RUN);
-    safelogic::prim::envelope::force_error(&mut s.fb);
+    safelogic::base::envelope::force_error(&mut s.fb);
     expect_error(&s.fb, SL_DIAG_CORRUPT);
     assert_eq!(
         s.adv(1),
@@ -1234,10 +1234,10 @@ both!(forced_error_is_an_acknowledgeable_error);
 
 /// A block already in ERROR keeps its diag bits and gains bit 15 (ABI §7: a block in ERROR
 /// only gains new bits); its error condition still blocks the acknowledgement.
-fn forced_error_in_error_keeps_the_diag<B: Guard + safelogic::prim::envelope::Block>(fb: B) {
+fn forced_error_in_error_keeps_the_diag<B: Guard + safelogic::base::envelope::Block>(fb: B) {
     let mut s = running(fb);
     disc_error(&mut s);
-    safelogic::prim::envelope::force_error(&mut s.fb);
+    safelogic::base::envelope::force_error(&mut s.fb);
     expect_error(&s.fb, SL_DIAG_DISC1 | SL_DIAG_CORRUPT);
     s.fb.set_errack(1);
     s.step(1, SL_STATE_ERROR);
@@ -1249,14 +1249,14 @@ both!(forced_error_in_error_keeps_the_diag);
 /// bit 15 only), sealed, so the next call reports no further corruption and ErrAck leads
 /// through RESET to the start state with the parameters still latched.
 fn forced_error_on_a_corrupt_instance_is_recoverable<
-    B: Params + safelogic::prim::envelope::Block,
+    B: Params + safelogic::base::envelope::Block,
 >(
     fb: B,
 ) {
     let mut s = running(fb);
     disc_error(&mut s);
     s.fb.private_bytes()[0] ^= 0x5A; // the magic word
-    safelogic::prim::envelope::force_error(&mut s.fb);
+    safelogic::base::envelope::force_error(&mut s.fb);
     expect_error(&s.fb, SL_DIAG_CORRUPT);
     s.fb.set_in(0, 1);
     assert_eq!(s.adv(1), SL_OK, "a fresh, sealed private state");

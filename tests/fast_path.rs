@@ -1,5 +1,5 @@
-//! Issue 13: the steady-state fast path (`prim::envelope`, docs/performance.md) is pinned to
-//! the full cycle. For every registered TwinSAFE type (the SF_ blocks have their own envelope, `prim::sf`), random sequences drive two copies of one
+//! Issue 13: the steady-state fast path (`base::envelope`, docs/performance.md) is pinned to
+//! the full cycle. For every registered TwinSAFE type (the SF_ blocks have their own envelope, `base::sf`), random sequences drive two copies of one
 //! instance — one through `cycle` (fast path where it applies), one through `cycle_full`
 //! (always the full cycle) — and after every call the two are byte for byte the same (every
 //! field, outputs, nState, nDiag and the private state) with the same status. Inputs mostly
@@ -16,7 +16,7 @@
 mod common;
 
 use common::Rng;
-use safelogic::prim::envelope::{cycle_full, cycle_traced, Block, Instance, Steady};
+use safelogic::base::envelope::{cycle_full, cycle_traced, Block, Instance, Steady};
 use safelogic::registry::{block_type, Dir, Kind};
 use safelogic::*;
 use std::collections::BTreeSet;
@@ -58,7 +58,7 @@ macro_rules! pin {
         fn pin_all(sequences: usize) -> Vec<Seen> {
             let mut seen = Vec::new();
             $({
-                let t = block_type(<$ty as safelogic::registry::Registered>::INFO.tag).unwrap();
+                let t = block_type(<$ty as safelogic::base::block::Registered>::INFO.tag).unwrap();
                 let mut rng = Rng(0xFA57_0000 ^ u64::from(t.info.tag));
                 let bytes = |fb: &mut $ty| -> &mut [u8] {
                     // SAFETY: every block struct holds only integer fields; the slice covers
@@ -560,7 +560,7 @@ fn the_fast_path_gives_what_the_full_cycle_gives() {
 #[test]
 fn a_steady_call_with_another_status_than_ok_is_never_served() {
     fn pin<B: Block + FunctionBlock + Copy>(mut fb: B, invalid: fn(&mut B), change: fn(&mut B)) {
-        let name = <B as safelogic::registry::Registered>::INFO.name;
+        let name = <B as safelogic::base::block::Registered>::INFO.name;
         // STOP with invalid parameters, bRun TRUE: SL_E_CONFIG on every call.
         let mut bad = fb;
         invalid(&mut bad);
@@ -641,9 +641,9 @@ fn a_steady_call_with_another_status_than_ok_is_never_served() {
 fn the_key_holds_every_byte_the_cycle_reads() {
     fn pin<B: Steady + Copy>(fb: B, window: Option<std::ops::Range<usize>>)
     where
-        safelogic::prim::envelope::KeyOf<B>: std::fmt::Debug,
+        safelogic::base::envelope::KeyOf<B>: std::fmt::Debug,
     {
-        let t = block_type(<B as safelogic::registry::Registered>::INFO.tag).unwrap();
+        let t = block_type(<B as safelogic::base::block::Registered>::INFO.tag).unwrap();
         let bytes = |fb: &mut B| -> &mut [u8] {
             // SAFETY: every block struct holds only integer fields; the slice covers exactly
             // the instance.

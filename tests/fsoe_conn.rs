@@ -527,8 +527,5 @@ fn state_names_of_a_connection() {
     for s in (0..=u8::MAX).filter(|s| !(100..=106).contains(s)) {
         assert_eq!(name(s), "?", "state {s}");
     }
-    assert_eq!(
-        safelogic::blocks::state_name(SL_TYPE_FSOE_CONN, 104),
-        "DATA"
-    );
+    assert_eq!(safelogic::group::state_name(SL_TYPE_FSOE_CONN, 104), "DATA");
 }

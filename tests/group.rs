@@ -923,7 +923,7 @@ impl Member for StartingConn {
     fn state(&self) -> u8 {
         SL_STATE_STOP
     }
-    fn fields(&self) -> &'static [safelogic::registry::Field] {
+    fn fields(&self) -> &'static [safelogic::base::block::Field] {
         &[]
     }
     fn input_mut(&mut self, _offset: u16) -> Option<&mut u8> {
@@ -986,11 +986,11 @@ struct BitConn {
     input: u8,
 }
 
-const BIT_CONN_FIELDS: &[safelogic::registry::Field] = &[safelogic::registry::Field {
+const BIT_CONN_FIELDS: &[safelogic::base::block::Field] = &[safelogic::base::block::Field {
     name: "bIn",
     offset: 0,
-    kind: safelogic::registry::Kind::Bool,
-    dir: safelogic::registry::Dir::Input,
+    kind: safelogic::base::block::Kind::Bool,
+    dir: safelogic::base::block::Dir::Input,
 }];
 
 impl Member for BitConn {
@@ -1001,7 +1001,7 @@ impl Member for BitConn {
     fn state(&self) -> u8 {
         SL_STATE_RUN
     }
-    fn fields(&self) -> &'static [safelogic::registry::Field] {
+    fn fields(&self) -> &'static [safelogic::base::block::Field] {
         BIT_CONN_FIELDS
     }
     fn input_mut(&mut self, offset: u16) -> Option<&mut u8> {

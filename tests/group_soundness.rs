@@ -510,8 +510,8 @@ fn every_registered_type_refuses_every_other_tag() {
             // A PLCopen type is never accepted never-initialised (semantics PO8): the
             // limit applies to TwinSAFE types only.
             let hidden = looks_never_initialised(&mem, own, claimed)
-                && safelogic::registry::family(claimed.info.tag)
-                    == safelogic::registry::Family::TwinSafe;
+                && safelogic::base::block::family(claimed.info.tag)
+                    == safelogic::base::block::Family::TwinSafe;
             let rc = add(g, m, claimed.info.tag, p);
             if own.info.tag == claimed.info.tag {
                 assert_eq!(rc, SL_OK, "{}", own.info.name);
@@ -561,7 +561,7 @@ fn looks_never_initialised(
 fn private_offset(tag: u16) -> usize {
     macro_rules! pick {
         ($($ty:ty => $init:ident, $cycle:ident;)*) => {{
-            $(if tag == <$ty as safelogic::registry::Registered>::INFO.tag {
+            $(if tag == <$ty as safelogic::base::block::Registered>::INFO.tag {
                 return offset_of!($ty, stPrivate);
             })*
             unreachable!()
@@ -574,7 +574,7 @@ fn private_offset(tag: u16) -> usize {
 fn init_fn(tag: u16) -> fn(*mut c_void) -> i32 {
     macro_rules! pick {
         ($($ty:ty => $init:ident, $cycle:ident;)*) => {{
-            $(if tag == <$ty as safelogic::registry::Registered>::INFO.tag {
+            $(if tag == <$ty as safelogic::base::block::Registered>::INFO.tag {
                 return |p| {
                     // SAFETY: arena memory large enough for any block.
                     unsafe { ffi::$init(p.cast()) }

@@ -4,7 +4,7 @@
 mod common;
 
 use common::RawBox;
-use safelogic::blocks::arith::ARITH_ACTIVE;
+use safelogic::blocks::analog::arith::ARITH_ACTIVE;
 use safelogic::ffi;
 use safelogic::group::{self, SL_LINK_ANALOG16, SL_LINK_ANALOG32, SL_LINK_BOOL};
 use safelogic::*;
@@ -86,27 +86,27 @@ impl Plant {
                 (SL_TYPE_ESTOP, addr_of_mut!((*q).estop).cast()),
                 (SL_TYPE_AND, addr_of_mut!((*q).and).cast()),
                 (
-                    safelogic::blocks::arith::SL_TYPE_ADD_INT,
+                    safelogic::blocks::analog::arith::SL_TYPE_ADD_INT,
                     addr_of_mut!((*q).add).cast(),
                 ),
                 (
-                    safelogic::blocks::arith::SL_TYPE_MUL_INT,
+                    safelogic::blocks::analog::arith::SL_TYPE_MUL_INT,
                     addr_of_mut!((*q).mul).cast(),
                 ),
                 (
-                    safelogic::blocks::arith::SL_TYPE_DIV_INT,
+                    safelogic::blocks::analog::arith::SL_TYPE_DIV_INT,
                     addr_of_mut!((*q).div).cast(),
                 ),
                 (
-                    safelogic::blocks::arith::SL_TYPE_ADD_UINT,
+                    safelogic::blocks::analog::arith::SL_TYPE_ADD_UINT,
                     addr_of_mut!((*q).uadd).cast(),
                 ),
                 (
-                    safelogic::blocks::arith::SL_TYPE_ADD_DINT,
+                    safelogic::blocks::analog::arith::SL_TYPE_ADD_DINT,
                     addr_of_mut!((*q).dadd).cast(),
                 ),
                 (
-                    safelogic::blocks::arith::SL_TYPE_MUL_DINT,
+                    safelogic::blocks::analog::arith::SL_TYPE_MUL_DINT,
                     addr_of_mut!((*q).dmul).cast(),
                 ),
             ];

@@ -218,7 +218,7 @@ fn abi_numbers() {
 #[test]
 fn state_names_and_diag_texts() {
     // The registry behind sl_state_str.
-    let info = safelogic::blocks::info(SL_TYPE_MUTING).expect("MUTING is registered");
+    let info = safelogic::registry::info(SL_TYPE_MUTING).expect("MUTING is registered");
     assert_eq!(info.name, "MUTING");
     let name = |s: u8| {
         info.states

@@ -829,7 +829,7 @@ fn c_functions() {
         SL_E_NULL
     );
     // sl_state_str returns the registry's static names (§4.3.2 states 1-6).
-    let info = safelogic::blocks::info(SL_TYPE_OPMODE).unwrap();
+    let info = safelogic::registry::info(SL_TYPE_OPMODE).unwrap();
     let names: Vec<&str> = info.states.iter().map(|(_, n)| *n).collect();
     assert_eq!(
         names,

@@ -3,11 +3,11 @@
 //! values `sl_diag_text` and the blocks use) and must equal a fresh generation; run with
 //! `SAFELOGIC_WRITE_DOCS=1` to rewrite it. A new `SF_` registry row adds its table.
 
-use safelogic::prim::sf::{
+use safelogic::base::block::Registered;
+use safelogic::base::sf::{
     DiagState, SfBlock, LIBRARY_CODES, SL_SF_DIAG_CLOCK, SL_SF_DIAG_CONFIG,
     SL_SF_DIAG_CONST_CHANGED, SL_SF_DIAG_CORRUPT,
 };
-use safelogic::registry::Registered;
 use std::fmt::Write;
 
 fn table<B: SfBlock + Registered>(out: &mut String) {

@@ -6,8 +6,8 @@
 mod common;
 
 use proptest::prelude::*;
+use safelogic::base::member::Member;
 use safelogic::ffi;
-use safelogic::group::Member;
 use safelogic::*;
 use std::mem::{offset_of, size_of};
 

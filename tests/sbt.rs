@@ -396,7 +396,7 @@ fn names_and_texts() {
         ]
     );
     let mut out = [0u8; 128];
-    let n = blocks::diag_text(&t.info, 0xDA, &mut out);
+    let n = base::diag::diag_text(&t.info, 0xDA, &mut out);
     assert_eq!(
         std::str::from_utf8(&out[..n]).unwrap(),
         "The single-turn position exceeds the maximum position deviation."

@@ -5,8 +5,8 @@
 mod common;
 
 use common::Rng;
+use safelogic::base::block::FieldType;
 use safelogic::blocks::analog::Analog;
-use safelogic::registry::FieldType;
 use safelogic::*;
 
 const IN: u16 = SL_SCALE_ACTIVE_ANALOGIN;
@@ -661,7 +661,7 @@ macro_rules! scale_tests {
             #[test]
             fn diag_value_table() {
                 let info =
-                    safelogic::blocks::info(<Fb as safelogic::registry::Registered>::INFO.tag)
+                    safelogic::registry::info(<Fb as safelogic::base::block::Registered>::INFO.tag)
                         .unwrap();
                 let values: Vec<u16> = info.diag_values.iter().map(|(v, _)| *v).collect();
                 assert_eq!(values, [0, 1, 2, 3, 4]);

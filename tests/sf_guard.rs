@@ -6,7 +6,7 @@
 //! with a link, and 10,000 random sequences per profile against an independent model with
 //! every state reached. Expected codes are the research table's, never read back.
 
-use safelogic::group::Member;
+use safelogic::base::member::Member;
 use safelogic::*;
 use std::collections::BTreeSet;
 use std::ffi::CStr;

@@ -6,7 +6,7 @@
 //! 10,000 random sequences against an independent model of the table. Every expected code
 //! is the research table's (v2.01 / v1.0 column), never read back from the library.
 
-use safelogic::group::Member;
+use safelogic::base::member::Member;
 use safelogic::*;
 use std::collections::BTreeSet;
 use std::ffi::CStr;
@@ -911,13 +911,13 @@ fn the_clock_check_holds_across_idle() {
     assert_eq!((fb.DiagCode, fb.S_EStopOut), (SL_SF_DIAG_CLOCK, 0));
 }
 
-/// The panic boundary's recovery of an `SF_` block (`Cyclic::force_safe`, prim::sf
+/// The panic boundary's recovery of an `SF_` block (`Cyclic::force_safe`, base::sf
 /// `force_fault`): the library fault C3FF with the safety output FALSE, sealed on the
 /// instance's own consistent state (its clock memory kept: a clock that then goes back is
 /// C3FE); only Activate FALSE leaves it. Mutation-testing findings.
 #[test]
 fn forced_fault_is_c3ff_sealed_on_the_instance() {
-    use safelogic::registry::Cyclic;
+    use safelogic::base::block::Cyclic;
     let mut fb = enabled_at_110();
     fb.force_safe();
     assert_eq!(

@@ -381,7 +381,7 @@ fn texts_for_every_diag_code() {
 /// Type II's private state never holds a type III code: C040 forged into it is corrupt.
 #[test]
 fn type_ii_has_no_synchronism_codes() {
-    use safelogic::prim::sf::SfInstance;
+    use safelogic::base::sf::SfInstance;
     let mut fb = SF_TwoHandControlTypeII::default();
     assert_eq!(fb.init(), SL_OK);
     let h = &mut fb.sf_private_mut().stHeader;

@@ -26,7 +26,7 @@ fn sli_has_no_exceeded_state() {
         SL_TYPE_SLI_DINT,
         SL_TYPE_SLI_UDINT,
     ] {
-        let info = blocks::info(tag).unwrap();
+        let info = registry::info(tag).unwrap();
         let states: Vec<u8> = info.states.iter().map(|s| s.0).collect();
         assert_eq!(states, [1, 2, 3, 4, 5]);
         assert_eq!(state_name(tag, 7), "?");
@@ -53,10 +53,10 @@ fn sli_has_no_exceeded_state() {
 /// §4.27.2 diag values and the texts behind `sl_diag_text`.
 #[test]
 fn diag_texts() {
-    let info = blocks::info(SL_TYPE_SLI_DINT).unwrap();
+    let info = registry::info(SL_TYPE_SLI_DINT).unwrap();
     let text = |d: u16| {
         let mut buf = [0u8; 96];
-        let n = blocks::diag_text(info, d, &mut buf);
+        let n = base::diag::diag_text(info, d, &mut buf);
         String::from_utf8(buf[..n].to_vec()).unwrap()
     };
     assert_eq!(text(0), "No diagnostic information");

@@ -172,7 +172,7 @@ fn states_and_names() {
         SL_TYPE_SLI2_DINT,
         SL_TYPE_SLI2_UDINT,
     ] {
-        let states: Vec<u8> = blocks::info(tag)
+        let states: Vec<u8> = registry::info(tag)
             .unwrap()
             .states
             .iter()

@@ -336,7 +336,7 @@ fn names_and_texts() {
         ]
     );
     let mut out = [0u8; 128];
-    let n = blocks::diag_text(&t.info, 2, &mut out);
+    let n = base::diag::diag_text(&t.info, 2, &mut out);
     assert_eq!(
         std::str::from_utf8(&out[..n]).unwrap(),
         "MultiturnPos_LL=MultiturnPos_UL AND SingleturnPosLL>SingleturnPos_UL"

@@ -5,8 +5,8 @@
 mod common;
 
 use common::Rng;
+use safelogic::base::block::FieldType;
 use safelogic::blocks::analog::Analog;
-use safelogic::registry::FieldType;
 use safelogic::*;
 
 const POS: u16 = SL_SPEED_ACTIVE_POSITION;
@@ -154,7 +154,7 @@ macro_rules! speed_tests {
                 assert_eq!(fb.nSpeed.wide(), 3);
             }
 
-            /// ABI §4: the interval across the 2^32 ms wrap of tNow (prim::time), at the
+            /// ABI §4: the interval across the 2^32 ms wrap of tNow (base::time), at the
             /// largest interval too.
             #[test]
             fn interval_across_the_clock_wrap() {
@@ -318,7 +318,7 @@ macro_rules! speed_tests {
             #[test]
             fn diag_value_table() {
                 let info =
-                    safelogic::blocks::info(<Fb as safelogic::registry::Registered>::INFO.tag)
+                    safelogic::registry::info(<Fb as safelogic::base::block::Registered>::INFO.tag)
                         .unwrap();
                 let values: Vec<u16> = info.diag_values.iter().map(|(v, _)| *v).collect();
                 assert_eq!(values, [0, 1, 2]);

@@ -860,7 +860,7 @@ fn c_functions() {
         unsafe { ffi::sl_twohand_cycle(std::ptr::null_mut(), 0) },
         SL_E_NULL
     );
-    let info = safelogic::blocks::info(SL_TYPE_TWOHAND).unwrap();
+    let info = safelogic::registry::info(SL_TYPE_TWOHAND).unwrap();
     assert_eq!(info.name, "TWOHAND");
     let states: Vec<(u8, &str)> = info.states.to_vec();
     assert_eq!(

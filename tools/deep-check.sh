@@ -13,7 +13,7 @@
 #   MUTANTS_ARGS   more cargo-mutants options, e.g. "--in-diff build/my.diff" (only the
 #                  mutants on the lines of that diff; the files may then be omitted)
 #   MUTANTS_TESTS  test targets each mutant is built and tested with (besides the lib's unit
-#                  tests; default below: the suites that exercise src/prim, ESTOP/MON and the
+#                  tests; default below: the suites that exercise src/base, ESTOP/MON and the
 #                  group, without the minute-long conformance/props runs)
 # Missed mutants that match a line of tools/mutants-equivalent.txt (regex over the mutant's
 # name without its line:column; each documented in docs/testing.md) are reported apart;

@@ -27,7 +27,7 @@ fn max_size() -> usize {
 macro_rules! inits {
     ($($ty:ty => $init:ident, $cycle:ident;)*) => {
         fn init_block(tag: u16, p: *mut u8) -> i32 {
-            $(if tag == <$ty as safelogic::registry::Registered>::INFO.tag {
+            $(if tag == <$ty as safelogic::base::block::Registered>::INFO.tag {
                 // SAFETY: `p` is 8-aligned arena memory of at least the type's size.
                 return unsafe { safelogic::ffi::$init(p.cast()) };
             })*

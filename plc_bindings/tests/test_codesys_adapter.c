@@ -1526,7 +1526,7 @@ static void rnd_config_ton2(FB_TON2 *x)
     { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nTimeBase = (uint16_t)v[rnd() % 7u]; }
     x->wInputActive = (uint16_t)(rnd() & 0x3u);
     x->wInputNegated = (uint16_t)(rnd() % 2u == 0u ? 0u : (rnd() & 0x3u));
-    { static const uint32_t o[] = {(uint32_t)SL_OPT_TON2_REMAINING_TIME, (uint32_t)SL_OPT_EDM1, (uint32_t)SL_OPT_EDM2, (uint32_t)SL_OPT_SAFE_INPUTS_AFTER_DISC, (uint32_t)SL_OPT_MANUAL_RESTART, (uint32_t)SL_OPT_FUNCTION_TEST};
+    { static const uint32_t o[] = {(uint32_t)SL_OPT_EDM1, (uint32_t)SL_OPT_EDM2, (uint32_t)SL_OPT_SAFE_INPUTS_AFTER_DISC, (uint32_t)SL_OPT_MANUAL_RESTART, (uint32_t)SL_OPT_FUNCTION_TEST, (uint32_t)SL_OPT_TON2_REMAINING_TIME};
       x->dwOptions = rnd_options(o, 6u); }
 }
 /* 1: a valid configuration (want_valid) or an invalid one was drawn into a and b */
@@ -2501,7 +2501,7 @@ static void rnd_config_muting(FB_MUTING *x)
     x->tMuteDelOutDelay = rnd_time();
     x->wInputActive = (uint16_t)(rnd() & 0x1FFu);
     x->wInputNegated = (uint16_t)(rnd() % 2u == 0u ? 0u : (rnd() & 0x1FFu));
-    { static const uint32_t o[] = {(uint32_t)SL_OPT_MUTING_SEQUENTIAL, (uint32_t)SL_OPT_MUTING_BACKWARDS, (uint32_t)SL_OPT_MUTING_OSSD_CHECK_OPTIONAL, (uint32_t)SL_OPT_EDM1, (uint32_t)SL_OPT_EDM2, (uint32_t)SL_OPT_SAFE_INPUTS_AFTER_DISC, (uint32_t)SL_OPT_MANUAL_RESTART, (uint32_t)SL_OPT_FUNCTION_TEST};
+    { static const uint32_t o[] = {(uint32_t)SL_OPT_EDM1, (uint32_t)SL_OPT_EDM2, (uint32_t)SL_OPT_SAFE_INPUTS_AFTER_DISC, (uint32_t)SL_OPT_MANUAL_RESTART, (uint32_t)SL_OPT_FUNCTION_TEST, (uint32_t)SL_OPT_MUTING_SEQUENTIAL, (uint32_t)SL_OPT_MUTING_BACKWARDS, (uint32_t)SL_OPT_MUTING_OSSD_CHECK_OPTIONAL};
       x->dwOptions = rnd_options(o, 8u); }
 }
 /* 1: a valid configuration (want_valid) or an invalid one was drawn into a and b */
@@ -5267,7 +5267,7 @@ static void rnd_config_scale_int(FB_SCALE_INT *x)
     { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nNumerator = (int32_t)v[rnd() % 7u]; }
     { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nDenominator = (int32_t)v[rnd() % 7u]; }
     { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nOffset = (int32_t)v[rnd() % 7u]; }
-    { static const uint32_t o[] = {(uint32_t)SL_OPT_SCALE_DIVISION_FIRST, (uint32_t)SL_OPT_EDM1, (uint32_t)SL_OPT_EDM2, (uint32_t)SL_OPT_SAFE_INPUTS_AFTER_DISC, (uint32_t)SL_OPT_MANUAL_RESTART, (uint32_t)SL_OPT_FUNCTION_TEST};
+    { static const uint32_t o[] = {(uint32_t)SL_OPT_EDM1, (uint32_t)SL_OPT_EDM2, (uint32_t)SL_OPT_SAFE_INPUTS_AFTER_DISC, (uint32_t)SL_OPT_MANUAL_RESTART, (uint32_t)SL_OPT_FUNCTION_TEST, (uint32_t)SL_OPT_SCALE_DIVISION_FIRST};
       x->dwOptions = rnd_options(o, 6u); }
     { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nRounding = (uint16_t)v[rnd() % 7u]; }
     x->wInputActive = (uint16_t)(rnd() & 0x100u);
@@ -5368,7 +5368,7 @@ static void rnd_config_scale_uint(FB_SCALE_UINT *x)
     { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nNumerator = (uint32_t)v[rnd() % 7u]; }
     { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nDenominator = (uint32_t)v[rnd() % 7u]; }
     { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nOffset = (uint32_t)v[rnd() % 7u]; }
-    { static const uint32_t o[] = {(uint32_t)SL_OPT_SCALE_DIVISION_FIRST, (uint32_t)SL_OPT_EDM1, (uint32_t)SL_OPT_EDM2, (uint32_t)SL_OPT_SAFE_INPUTS_AFTER_DISC, (uint32_t)SL_OPT_MANUAL_RESTART, (uint32_t)SL_OPT_FUNCTION_TEST};
+    { static const uint32_t o[] = {(uint32_t)SL_OPT_EDM1, (uint32_t)SL_OPT_EDM2, (uint32_t)SL_OPT_SAFE_INPUTS_AFTER_DISC, (uint32_t)SL_OPT_MANUAL_RESTART, (uint32_t)SL_OPT_FUNCTION_TEST, (uint32_t)SL_OPT_SCALE_DIVISION_FIRST};
       x->dwOptions = rnd_options(o, 6u); }
     { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nRounding = (uint16_t)v[rnd() % 7u]; }
     x->wInputActive = (uint16_t)(rnd() & 0x100u);
@@ -5469,7 +5469,7 @@ static void rnd_config_scale_dint(FB_SCALE_DINT *x)
     { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nNumerator = (int32_t)v[rnd() % 7u]; }
     { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nDenominator = (int32_t)v[rnd() % 7u]; }
     { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nOffset = (int32_t)v[rnd() % 7u]; }
-    { static const uint32_t o[] = {(uint32_t)SL_OPT_SCALE_DIVISION_FIRST, (uint32_t)SL_OPT_EDM1, (uint32_t)SL_OPT_EDM2, (uint32_t)SL_OPT_SAFE_INPUTS_AFTER_DISC, (uint32_t)SL_OPT_MANUAL_RESTART, (uint32_t)SL_OPT_FUNCTION_TEST};
+    { static const uint32_t o[] = {(uint32_t)SL_OPT_EDM1, (uint32_t)SL_OPT_EDM2, (uint32_t)SL_OPT_SAFE_INPUTS_AFTER_DISC, (uint32_t)SL_OPT_MANUAL_RESTART, (uint32_t)SL_OPT_FUNCTION_TEST, (uint32_t)SL_OPT_SCALE_DIVISION_FIRST};
       x->dwOptions = rnd_options(o, 6u); }
     { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nRounding = (uint16_t)v[rnd() % 7u]; }
     x->wInputActive = (uint16_t)(rnd() & 0x100u);
@@ -5570,7 +5570,7 @@ static void rnd_config_scale_udint(FB_SCALE_UDINT *x)
     { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nNumerator = (uint32_t)v[rnd() % 7u]; }
     { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nDenominator = (uint32_t)v[rnd() % 7u]; }
     { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nOffset = (uint32_t)v[rnd() % 7u]; }
-    { static const uint32_t o[] = {(uint32_t)SL_OPT_SCALE_DIVISION_FIRST, (uint32_t)SL_OPT_EDM1, (uint32_t)SL_OPT_EDM2, (uint32_t)SL_OPT_SAFE_INPUTS_AFTER_DISC, (uint32_t)SL_OPT_MANUAL_RESTART, (uint32_t)SL_OPT_FUNCTION_TEST};
+    { static const uint32_t o[] = {(uint32_t)SL_OPT_EDM1, (uint32_t)SL_OPT_EDM2, (uint32_t)SL_OPT_SAFE_INPUTS_AFTER_DISC, (uint32_t)SL_OPT_MANUAL_RESTART, (uint32_t)SL_OPT_FUNCTION_TEST, (uint32_t)SL_OPT_SCALE_DIVISION_FIRST};
       x->dwOptions = rnd_options(o, 6u); }
     { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nRounding = (uint16_t)v[rnd() % 7u]; }
     x->wInputActive = (uint16_t)(rnd() & 0x100u);
@@ -5668,7 +5668,7 @@ static void rnd_config_speed_int(FB_SPEED_INT *x)
 {
     { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nPosition = (int16_t)v[rnd() % 7u]; }
     x->tTimeInterval = rnd_time();
-    { static const uint32_t o[] = {(uint32_t)SL_OPT_SPEED_OVERFLOW_CHECK, (uint32_t)SL_OPT_EDM1, (uint32_t)SL_OPT_EDM2, (uint32_t)SL_OPT_SAFE_INPUTS_AFTER_DISC, (uint32_t)SL_OPT_MANUAL_RESTART, (uint32_t)SL_OPT_FUNCTION_TEST};
+    { static const uint32_t o[] = {(uint32_t)SL_OPT_EDM1, (uint32_t)SL_OPT_EDM2, (uint32_t)SL_OPT_SAFE_INPUTS_AFTER_DISC, (uint32_t)SL_OPT_MANUAL_RESTART, (uint32_t)SL_OPT_FUNCTION_TEST, (uint32_t)SL_OPT_SPEED_OVERFLOW_CHECK};
       x->dwOptions = rnd_options(o, 6u); }
     x->wInputActive = (uint16_t)(rnd() & 0x100u);
 }
@@ -5759,7 +5759,7 @@ static void rnd_config_speed_uint(FB_SPEED_UINT *x)
 {
     { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nPosition = (uint16_t)v[rnd() % 7u]; }
     x->tTimeInterval = rnd_time();
-    { static const uint32_t o[] = {(uint32_t)SL_OPT_SPEED_OVERFLOW_CHECK, (uint32_t)SL_OPT_EDM1, (uint32_t)SL_OPT_EDM2, (uint32_t)SL_OPT_SAFE_INPUTS_AFTER_DISC, (uint32_t)SL_OPT_MANUAL_RESTART, (uint32_t)SL_OPT_FUNCTION_TEST};
+    { static const uint32_t o[] = {(uint32_t)SL_OPT_EDM1, (uint32_t)SL_OPT_EDM2, (uint32_t)SL_OPT_SAFE_INPUTS_AFTER_DISC, (uint32_t)SL_OPT_MANUAL_RESTART, (uint32_t)SL_OPT_FUNCTION_TEST, (uint32_t)SL_OPT_SPEED_OVERFLOW_CHECK};
       x->dwOptions = rnd_options(o, 6u); }
     x->wInputActive = (uint16_t)(rnd() & 0x100u);
 }
@@ -5850,7 +5850,7 @@ static void rnd_config_speed_dint(FB_SPEED_DINT *x)
 {
     { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nPosition = (int32_t)v[rnd() % 7u]; }
     x->tTimeInterval = rnd_time();
-    { static const uint32_t o[] = {(uint32_t)SL_OPT_SPEED_OVERFLOW_CHECK, (uint32_t)SL_OPT_EDM1, (uint32_t)SL_OPT_EDM2, (uint32_t)SL_OPT_SAFE_INPUTS_AFTER_DISC, (uint32_t)SL_OPT_MANUAL_RESTART, (uint32_t)SL_OPT_FUNCTION_TEST};
+    { static const uint32_t o[] = {(uint32_t)SL_OPT_EDM1, (uint32_t)SL_OPT_EDM2, (uint32_t)SL_OPT_SAFE_INPUTS_AFTER_DISC, (uint32_t)SL_OPT_MANUAL_RESTART, (uint32_t)SL_OPT_FUNCTION_TEST, (uint32_t)SL_OPT_SPEED_OVERFLOW_CHECK};
       x->dwOptions = rnd_options(o, 6u); }
     x->wInputActive = (uint16_t)(rnd() & 0x100u);
 }
@@ -5941,7 +5941,7 @@ static void rnd_config_speed_udint(FB_SPEED_UDINT *x)
 {
     { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nPosition = (uint32_t)v[rnd() % 7u]; }
     x->tTimeInterval = rnd_time();
-    { static const uint32_t o[] = {(uint32_t)SL_OPT_SPEED_OVERFLOW_CHECK, (uint32_t)SL_OPT_EDM1, (uint32_t)SL_OPT_EDM2, (uint32_t)SL_OPT_SAFE_INPUTS_AFTER_DISC, (uint32_t)SL_OPT_MANUAL_RESTART, (uint32_t)SL_OPT_FUNCTION_TEST};
+    { static const uint32_t o[] = {(uint32_t)SL_OPT_EDM1, (uint32_t)SL_OPT_EDM2, (uint32_t)SL_OPT_SAFE_INPUTS_AFTER_DISC, (uint32_t)SL_OPT_MANUAL_RESTART, (uint32_t)SL_OPT_FUNCTION_TEST, (uint32_t)SL_OPT_SPEED_OVERFLOW_CHECK};
       x->dwOptions = rnd_options(o, 6u); }
     x->wInputActive = (uint16_t)(rnd() & 0x100u);
 }
@@ -6032,7 +6032,7 @@ static void rnd_config_loadsensing_int(FB_LOADSENSING_INT *x)
 {
     { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nAnalogInX = (int16_t)v[rnd() % 7u]; }
     { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nAnalogInY = (int16_t)v[rnd() % 7u]; }
-    { static const uint32_t o[] = {(uint32_t)SL_OPT_LOADSENSING_OUTSIDE, (uint32_t)SL_OPT_EDM1, (uint32_t)SL_OPT_EDM2, (uint32_t)SL_OPT_SAFE_INPUTS_AFTER_DISC, (uint32_t)SL_OPT_MANUAL_RESTART, (uint32_t)SL_OPT_FUNCTION_TEST};
+    { static const uint32_t o[] = {(uint32_t)SL_OPT_EDM1, (uint32_t)SL_OPT_EDM2, (uint32_t)SL_OPT_SAFE_INPUTS_AFTER_DISC, (uint32_t)SL_OPT_MANUAL_RESTART, (uint32_t)SL_OPT_FUNCTION_TEST, (uint32_t)SL_OPT_LOADSENSING_OUTSIDE};
       x->dwOptions = rnd_options(o, 6u); }
     { int i; for (i = 0; i < 25; i++) x->aRow[i].nX = (int16_t)(4u * (unsigned)i + rnd() % 4u); }
     { int i; for (i = 0; i < 25; i++) x->aRow[i].nY1 = (int16_t)(4u * (unsigned)i + rnd() % 4u); }
@@ -6133,7 +6133,7 @@ static void rnd_config_loadsensing_uint(FB_LOADSENSING_UINT *x)
 {
     { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nAnalogInX = (uint16_t)v[rnd() % 7u]; }
     { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nAnalogInY = (uint16_t)v[rnd() % 7u]; }
-    { static const uint32_t o[] = {(uint32_t)SL_OPT_LOADSENSING_OUTSIDE, (uint32_t)SL_OPT_EDM1, (uint32_t)SL_OPT_EDM2, (uint32_t)SL_OPT_SAFE_INPUTS_AFTER_DISC, (uint32_t)SL_OPT_MANUAL_RESTART, (uint32_t)SL_OPT_FUNCTION_TEST};
+    { static const uint32_t o[] = {(uint32_t)SL_OPT_EDM1, (uint32_t)SL_OPT_EDM2, (uint32_t)SL_OPT_SAFE_INPUTS_AFTER_DISC, (uint32_t)SL_OPT_MANUAL_RESTART, (uint32_t)SL_OPT_FUNCTION_TEST, (uint32_t)SL_OPT_LOADSENSING_OUTSIDE};
       x->dwOptions = rnd_options(o, 6u); }
     { int i; for (i = 0; i < 25; i++) x->aRow[i].nX = (uint16_t)(4u * (unsigned)i + rnd() % 4u); }
     { int i; for (i = 0; i < 25; i++) x->aRow[i].nY1 = (uint16_t)(4u * (unsigned)i + rnd() % 4u); }
@@ -6234,7 +6234,7 @@ static void rnd_config_loadsensing_dint(FB_LOADSENSING_DINT *x)
 {
     { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nAnalogInX = (int32_t)v[rnd() % 7u]; }
     { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nAnalogInY = (int32_t)v[rnd() % 7u]; }
-    { static const uint32_t o[] = {(uint32_t)SL_OPT_LOADSENSING_OUTSIDE, (uint32_t)SL_OPT_EDM1, (uint32_t)SL_OPT_EDM2, (uint32_t)SL_OPT_SAFE_INPUTS_AFTER_DISC, (uint32_t)SL_OPT_MANUAL_RESTART, (uint32_t)SL_OPT_FUNCTION_TEST};
+    { static const uint32_t o[] = {(uint32_t)SL_OPT_EDM1, (uint32_t)SL_OPT_EDM2, (uint32_t)SL_OPT_SAFE_INPUTS_AFTER_DISC, (uint32_t)SL_OPT_MANUAL_RESTART, (uint32_t)SL_OPT_FUNCTION_TEST, (uint32_t)SL_OPT_LOADSENSING_OUTSIDE};
       x->dwOptions = rnd_options(o, 6u); }
     { int i; for (i = 0; i < 25; i++) x->aRow[i].nX = (int32_t)(4u * (unsigned)i + rnd() % 4u); }
     { int i; for (i = 0; i < 25; i++) x->aRow[i].nY1 = (int32_t)(4u * (unsigned)i + rnd() % 4u); }
@@ -6335,7 +6335,7 @@ static void rnd_config_loadsensing_udint(FB_LOADSENSING_UDINT *x)
 {
     { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nAnalogInX = (uint32_t)v[rnd() % 7u]; }
     { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nAnalogInY = (uint32_t)v[rnd() % 7u]; }
-    { static const uint32_t o[] = {(uint32_t)SL_OPT_LOADSENSING_OUTSIDE, (uint32_t)SL_OPT_EDM1, (uint32_t)SL_OPT_EDM2, (uint32_t)SL_OPT_SAFE_INPUTS_AFTER_DISC, (uint32_t)SL_OPT_MANUAL_RESTART, (uint32_t)SL_OPT_FUNCTION_TEST};
+    { static const uint32_t o[] = {(uint32_t)SL_OPT_EDM1, (uint32_t)SL_OPT_EDM2, (uint32_t)SL_OPT_SAFE_INPUTS_AFTER_DISC, (uint32_t)SL_OPT_MANUAL_RESTART, (uint32_t)SL_OPT_FUNCTION_TEST, (uint32_t)SL_OPT_LOADSENSING_OUTSIDE};
       x->dwOptions = rnd_options(o, 6u); }
     { int i; for (i = 0; i < 25; i++) x->aRow[i].nX = (uint32_t)(4u * (unsigned)i + rnd() % 4u); }
     { int i; for (i = 0; i < 25; i++) x->aRow[i].nY1 = (uint32_t)(4u * (unsigned)i + rnd() % 4u); }
@@ -7565,7 +7565,7 @@ static void rnd_config_sli2_int(FB_SLI2_INT *x)
     { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nPosition = (int16_t)v[rnd() % 7u]; }
     { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nLimitPos = (uint32_t)v[rnd() % 7u]; }
     { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nLimitNeg = (uint32_t)v[rnd() % 7u]; }
-    { static const uint32_t o[] = {(uint32_t)SL_OPT_SLI2_OVERFLOW_ALLOWED, (uint32_t)SL_OPT_SLI2_EXCEEDED_SUPPORT, (uint32_t)SL_OPT_EDM1, (uint32_t)SL_OPT_EDM2, (uint32_t)SL_OPT_SAFE_INPUTS_AFTER_DISC, (uint32_t)SL_OPT_MANUAL_RESTART, (uint32_t)SL_OPT_FUNCTION_TEST};
+    { static const uint32_t o[] = {(uint32_t)SL_OPT_EDM1, (uint32_t)SL_OPT_EDM2, (uint32_t)SL_OPT_SAFE_INPUTS_AFTER_DISC, (uint32_t)SL_OPT_MANUAL_RESTART, (uint32_t)SL_OPT_FUNCTION_TEST, (uint32_t)SL_OPT_SLI2_OVERFLOW_ALLOWED, (uint32_t)SL_OPT_SLI2_EXCEEDED_SUPPORT};
       x->dwOptions = rnd_options(o, 7u); }
     x->wInputActive = (uint16_t)(rnd() & 0x101u);
 }
@@ -7660,7 +7660,7 @@ static void rnd_config_sli2_uint(FB_SLI2_UINT *x)
     { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nPosition = (uint16_t)v[rnd() % 7u]; }
     { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nLimitPos = (uint32_t)v[rnd() % 7u]; }
     { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nLimitNeg = (uint32_t)v[rnd() % 7u]; }
-    { static const uint32_t o[] = {(uint32_t)SL_OPT_SLI2_OVERFLOW_ALLOWED, (uint32_t)SL_OPT_SLI2_EXCEEDED_SUPPORT, (uint32_t)SL_OPT_EDM1, (uint32_t)SL_OPT_EDM2, (uint32_t)SL_OPT_SAFE_INPUTS_AFTER_DISC, (uint32_t)SL_OPT_MANUAL_RESTART, (uint32_t)SL_OPT_FUNCTION_TEST};
+    { static const uint32_t o[] = {(uint32_t)SL_OPT_EDM1, (uint32_t)SL_OPT_EDM2, (uint32_t)SL_OPT_SAFE_INPUTS_AFTER_DISC, (uint32_t)SL_OPT_MANUAL_RESTART, (uint32_t)SL_OPT_FUNCTION_TEST, (uint32_t)SL_OPT_SLI2_OVERFLOW_ALLOWED, (uint32_t)SL_OPT_SLI2_EXCEEDED_SUPPORT};
       x->dwOptions = rnd_options(o, 7u); }
     x->wInputActive = (uint16_t)(rnd() & 0x101u);
 }
@@ -7755,7 +7755,7 @@ static void rnd_config_sli2_dint(FB_SLI2_DINT *x)
     { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nPosition = (int32_t)v[rnd() % 7u]; }
     { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nLimitPos = (uint32_t)v[rnd() % 7u]; }
     { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nLimitNeg = (uint32_t)v[rnd() % 7u]; }
-    { static const uint32_t o[] = {(uint32_t)SL_OPT_SLI2_OVERFLOW_ALLOWED, (uint32_t)SL_OPT_SLI2_EXCEEDED_SUPPORT, (uint32_t)SL_OPT_EDM1, (uint32_t)SL_OPT_EDM2, (uint32_t)SL_OPT_SAFE_INPUTS_AFTER_DISC, (uint32_t)SL_OPT_MANUAL_RESTART, (uint32_t)SL_OPT_FUNCTION_TEST};
+    { static const uint32_t o[] = {(uint32_t)SL_OPT_EDM1, (uint32_t)SL_OPT_EDM2, (uint32_t)SL_OPT_SAFE_INPUTS_AFTER_DISC, (uint32_t)SL_OPT_MANUAL_RESTART, (uint32_t)SL_OPT_FUNCTION_TEST, (uint32_t)SL_OPT_SLI2_OVERFLOW_ALLOWED, (uint32_t)SL_OPT_SLI2_EXCEEDED_SUPPORT};
       x->dwOptions = rnd_options(o, 7u); }
     x->wInputActive = (uint16_t)(rnd() & 0x101u);
 }
@@ -7850,7 +7850,7 @@ static void rnd_config_sli2_udint(FB_SLI2_UDINT *x)
     { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nPosition = (uint32_t)v[rnd() % 7u]; }
     { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nLimitPos = (uint32_t)v[rnd() % 7u]; }
     { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nLimitNeg = (uint32_t)v[rnd() % 7u]; }
-    { static const uint32_t o[] = {(uint32_t)SL_OPT_SLI2_OVERFLOW_ALLOWED, (uint32_t)SL_OPT_SLI2_EXCEEDED_SUPPORT, (uint32_t)SL_OPT_EDM1, (uint32_t)SL_OPT_EDM2, (uint32_t)SL_OPT_SAFE_INPUTS_AFTER_DISC, (uint32_t)SL_OPT_MANUAL_RESTART, (uint32_t)SL_OPT_FUNCTION_TEST};
+    { static const uint32_t o[] = {(uint32_t)SL_OPT_EDM1, (uint32_t)SL_OPT_EDM2, (uint32_t)SL_OPT_SAFE_INPUTS_AFTER_DISC, (uint32_t)SL_OPT_MANUAL_RESTART, (uint32_t)SL_OPT_FUNCTION_TEST, (uint32_t)SL_OPT_SLI2_OVERFLOW_ALLOWED, (uint32_t)SL_OPT_SLI2_EXCEEDED_SUPPORT};
       x->dwOptions = rnd_options(o, 7u); }
     x->wInputActive = (uint16_t)(rnd() & 0x101u);
 }
@@ -8145,7 +8145,7 @@ static void rnd_config_cammonitor_uint(FB_CAMMONITOR_UINT *x)
     x->tStopDetectionTime = rnd_time();
     x->tPressStartDelayTime = rnd_time();
     x->tMoveDetectionTime = rnd_time();
-    { static const uint32_t o[] = {(uint32_t)SL_OPT_CAMMONITOR_PENDULUM, (uint32_t)SL_OPT_EDM1, (uint32_t)SL_OPT_EDM2, (uint32_t)SL_OPT_SAFE_INPUTS_AFTER_DISC, (uint32_t)SL_OPT_MANUAL_RESTART, (uint32_t)SL_OPT_FUNCTION_TEST};
+    { static const uint32_t o[] = {(uint32_t)SL_OPT_EDM1, (uint32_t)SL_OPT_EDM2, (uint32_t)SL_OPT_SAFE_INPUTS_AFTER_DISC, (uint32_t)SL_OPT_MANUAL_RESTART, (uint32_t)SL_OPT_FUNCTION_TEST, (uint32_t)SL_OPT_CAMMONITOR_PENDULUM};
       x->dwOptions = rnd_options(o, 6u); }
     { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nAllowedPositionJitter = (uint16_t)v[rnd() % 7u]; }
     { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nMinPositionChange = (uint16_t)v[rnd() % 7u]; }
@@ -8300,7 +8300,7 @@ static void rnd_config_cammonitor_udint(FB_CAMMONITOR_UDINT *x)
     x->tStopDetectionTime = rnd_time();
     x->tPressStartDelayTime = rnd_time();
     x->tMoveDetectionTime = rnd_time();
-    { static const uint32_t o[] = {(uint32_t)SL_OPT_CAMMONITOR_PENDULUM, (uint32_t)SL_OPT_EDM1, (uint32_t)SL_OPT_EDM2, (uint32_t)SL_OPT_SAFE_INPUTS_AFTER_DISC, (uint32_t)SL_OPT_MANUAL_RESTART, (uint32_t)SL_OPT_FUNCTION_TEST};
+    { static const uint32_t o[] = {(uint32_t)SL_OPT_EDM1, (uint32_t)SL_OPT_EDM2, (uint32_t)SL_OPT_SAFE_INPUTS_AFTER_DISC, (uint32_t)SL_OPT_MANUAL_RESTART, (uint32_t)SL_OPT_FUNCTION_TEST, (uint32_t)SL_OPT_CAMMONITOR_PENDULUM};
       x->dwOptions = rnd_options(o, 6u); }
     { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nAllowedPositionJitter = (uint32_t)v[rnd() % 7u]; }
     { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nMinPositionChange = (uint32_t)v[rnd() % 7u]; }
@@ -8454,7 +8454,7 @@ static void rnd_config_slp(FB_SLP *x)
     { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nMultiturnPosULFix = (int32_t)v[rnd() % 7u]; }
     { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nSingleturnPosLLFix = (uint32_t)v[rnd() % 7u]; }
     { static const unsigned v[] = {0u, 1u, 2u, 3u, 5u, 10u, 100u}; x->nMultiturnPosLLFix = (int32_t)v[rnd() % 7u]; }
-    { static const uint32_t o[] = {(uint32_t)SL_OPT_SLP_SINGLETURN, (uint32_t)SL_OPT_EDM1, (uint32_t)SL_OPT_EDM2, (uint32_t)SL_OPT_SAFE_INPUTS_AFTER_DISC, (uint32_t)SL_OPT_MANUAL_RESTART, (uint32_t)SL_OPT_FUNCTION_TEST};
+    { static const uint32_t o[] = {(uint32_t)SL_OPT_EDM1, (uint32_t)SL_OPT_EDM2, (uint32_t)SL_OPT_SAFE_INPUTS_AFTER_DISC, (uint32_t)SL_OPT_MANUAL_RESTART, (uint32_t)SL_OPT_FUNCTION_TEST, (uint32_t)SL_OPT_SLP_SINGLETURN};
       x->dwOptions = rnd_options(o, 6u); }
     x->wInputActive = (uint16_t)(rnd() & 0x3F01u);
 }
@@ -10178,7 +10178,7 @@ static void test_sf_modeselector(void)
  * every type tag (and one unknown), every state value 0-63, a set of diag words. */
 static void test_texts(void)
 {
-    static const uint16_t tags[] = {SL_TYPE_ADVPOSMON, SL_TYPE_AND, SL_TYPE_ADD_INT, SL_TYPE_ADD_UINT, SL_TYPE_ADD_DINT, SL_TYPE_ADD_UDINT, SL_TYPE_SUB_INT, SL_TYPE_SUB_UINT, SL_TYPE_SUB_DINT, SL_TYPE_SUB_UDINT, SL_TYPE_MUL_INT, SL_TYPE_MUL_UINT, SL_TYPE_MUL_DINT, SL_TYPE_MUL_UDINT, SL_TYPE_DIV_INT, SL_TYPE_DIV_UINT, SL_TYPE_DIV_DINT, SL_TYPE_DIV_UDINT, SL_TYPE_CAMMONITOR_UINT, SL_TYPE_CAMMONITOR_UDINT, SL_TYPE_COMPARE_INT, SL_TYPE_COMPARE_UINT, SL_TYPE_COMPARE_DINT, SL_TYPE_COMPARE_UDINT, SL_TYPE_CONNECTION_SHUTDOWN, SL_TYPE_COUNTER_INT, SL_TYPE_COUNTER_UINT, SL_TYPE_COUNTER_DINT, SL_TYPE_COUNTER_UDINT, SL_TYPE_DECOUPLE, SL_TYPE_EDM, SL_TYPE_ENVELOPE_INT, SL_TYPE_ENVELOPE_UINT, SL_TYPE_ENVELOPE_DINT, SL_TYPE_ENVELOPE_UDINT, SL_TYPE_ESTOP, SL_TYPE_LIMIT_INT, SL_TYPE_LIMIT_UINT, SL_TYPE_LIMIT_DINT, SL_TYPE_LIMIT_UDINT, SL_TYPE_LOADSENSING_INT, SL_TYPE_LOADSENSING_UINT, SL_TYPE_LOADSENSING_DINT, SL_TYPE_LOADSENSING_UDINT, SL_TYPE_MON, SL_TYPE_MUTING, SL_TYPE_OPMODE, SL_TYPE_OR, SL_TYPE_RS, SL_TYPE_SBT, SL_TYPE_SCALE_INT, SL_TYPE_SCALE_UINT, SL_TYPE_SCALE_DINT, SL_TYPE_SCALE_UDINT, SL_TYPE_SF_ANTIVALENT, SL_TYPE_SF_EDM, SL_TYPE_SF_EMERGENCYSTOP, SL_TYPE_SF_ENABLESWITCH, SL_TYPE_SF_EQUIVALENT, SL_TYPE_SF_ESPE, SL_TYPE_SF_GUARD, SL_TYPE_SF_MODESELECTOR, SL_TYPE_SF_OUTCONTROL, SL_TYPE_SF_PSE, SL_TYPE_SF_RESETBUTTON, SL_TYPE_SF_SAFETYREQUEST, SL_TYPE_SF_TESTABLESAFETYSENSOR, SL_TYPE_SF_TWOHANDCONTROLTYPEII, SL_TYPE_SF_TWOHANDCONTROLTYPEIII, SL_TYPE_SLI_INT, SL_TYPE_SLI_UINT, SL_TYPE_SLI_DINT, SL_TYPE_SLI_UDINT, SL_TYPE_SLI2_INT, SL_TYPE_SLI2_UINT, SL_TYPE_SLI2_DINT, SL_TYPE_SLI2_UDINT, SL_TYPE_SLP, SL_TYPE_SPEED_INT, SL_TYPE_SPEED_UINT, SL_TYPE_SPEED_DINT, SL_TYPE_SPEED_UDINT, SL_TYPE_SR, SL_TYPE_TOF, SL_TYPE_TON, SL_TYPE_TON2, SL_TYPE_TWOHAND, SL_TYPE_VIOLATIONCOUNTER_UINT, SL_TYPE_VIOLATIONCOUNTER_UDINT, SL_TYPE_XOR, SL_TYPE_FSOE_CONN, 0, 999};
+    static const uint16_t tags[] = {SL_TYPE_ADD_INT, SL_TYPE_ADD_UINT, SL_TYPE_ADD_DINT, SL_TYPE_ADD_UDINT, SL_TYPE_SUB_INT, SL_TYPE_SUB_UINT, SL_TYPE_SUB_DINT, SL_TYPE_SUB_UDINT, SL_TYPE_MUL_INT, SL_TYPE_MUL_UINT, SL_TYPE_MUL_DINT, SL_TYPE_MUL_UDINT, SL_TYPE_DIV_INT, SL_TYPE_DIV_UINT, SL_TYPE_DIV_DINT, SL_TYPE_DIV_UDINT, SL_TYPE_COMPARE_INT, SL_TYPE_COMPARE_UINT, SL_TYPE_COMPARE_DINT, SL_TYPE_COMPARE_UDINT, SL_TYPE_COUNTER_INT, SL_TYPE_COUNTER_UINT, SL_TYPE_COUNTER_DINT, SL_TYPE_COUNTER_UDINT, SL_TYPE_ENVELOPE_INT, SL_TYPE_ENVELOPE_UINT, SL_TYPE_ENVELOPE_DINT, SL_TYPE_ENVELOPE_UDINT, SL_TYPE_LIMIT_INT, SL_TYPE_LIMIT_UINT, SL_TYPE_LIMIT_DINT, SL_TYPE_LIMIT_UDINT, SL_TYPE_LOADSENSING_INT, SL_TYPE_LOADSENSING_UINT, SL_TYPE_LOADSENSING_DINT, SL_TYPE_LOADSENSING_UDINT, SL_TYPE_SCALE_INT, SL_TYPE_SCALE_UINT, SL_TYPE_SCALE_DINT, SL_TYPE_SCALE_UDINT, SL_TYPE_SLI_INT, SL_TYPE_SLI_UINT, SL_TYPE_SLI_DINT, SL_TYPE_SLI_UDINT, SL_TYPE_SLI2_INT, SL_TYPE_SLI2_UINT, SL_TYPE_SLI2_DINT, SL_TYPE_SLI2_UDINT, SL_TYPE_SPEED_INT, SL_TYPE_SPEED_UINT, SL_TYPE_SPEED_DINT, SL_TYPE_SPEED_UDINT, SL_TYPE_VIOLATIONCOUNTER_UINT, SL_TYPE_VIOLATIONCOUNTER_UDINT, SL_TYPE_AND, SL_TYPE_DECOUPLE, SL_TYPE_EDM, SL_TYPE_ESTOP, SL_TYPE_MON, SL_TYPE_MUTING, SL_TYPE_OPMODE, SL_TYPE_OR, SL_TYPE_RS, SL_TYPE_SR, SL_TYPE_TOF, SL_TYPE_TON, SL_TYPE_TON2, SL_TYPE_TWOHAND, SL_TYPE_XOR, SL_TYPE_CONNECTION_SHUTDOWN, SL_TYPE_ADVPOSMON, SL_TYPE_CAMMONITOR_UINT, SL_TYPE_CAMMONITOR_UDINT, SL_TYPE_SBT, SL_TYPE_SLP, SL_TYPE_SF_ANTIVALENT, SL_TYPE_SF_EDM, SL_TYPE_SF_EMERGENCYSTOP, SL_TYPE_SF_ENABLESWITCH, SL_TYPE_SF_EQUIVALENT, SL_TYPE_SF_ESPE, SL_TYPE_SF_GUARD, SL_TYPE_SF_MODESELECTOR, SL_TYPE_SF_OUTCONTROL, SL_TYPE_SF_PSE, SL_TYPE_SF_RESETBUTTON, SL_TYPE_SF_SAFETYREQUEST, SL_TYPE_SF_TESTABLESAFETYSENSOR, SL_TYPE_SF_TWOHANDCONTROLTYPEII, SL_TYPE_SF_TWOHANDCONTROLTYPEIII, SL_TYPE_FSOE_CONN, 0, 999};
     static const uint16_t diags[] = {0, 1, 2, 3, 0x00FF, 0x1000, 0x2000, 0x4000, 0x8000, 0xE000, 0xFFFF};
     size_t i, k, named = 0;
     for (i = 0; i < sizeof tags / sizeof tags[0]; i++) {

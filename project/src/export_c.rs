@@ -5,7 +5,7 @@
 
 use crate::project::{Place, Project};
 use crate::sim::Scenario;
-use safelogic::registry::Kind;
+use safelogic::base::block::Kind;
 use std::fmt::Write;
 
 fn c_type(k: Kind) -> &'static str {

@@ -786,7 +786,7 @@ impl Member {
             return Err(format!(
                 "out-of-range parameter: {} refuses these parameters (init returned {}); see its parameter limits in the manual",
                 self.block.info.name,
-                safelogic::types::status_str(rc)
+                safelogic::base::types::status_str(rc)
             ));
         }
         Ok(b)

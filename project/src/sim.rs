@@ -309,8 +309,8 @@ pub struct Run {
     pub notes: Vec<(u32, String)>,
 }
 
-fn bits(k: safelogic::registry::Kind) -> ColKind {
-    use safelogic::registry::Kind;
+fn bits(k: safelogic::base::block::Kind) -> ColKind {
+    use safelogic::base::block::Kind;
     match k {
         Kind::Bool => ColKind::Bool,
         Kind::U8 => ColKind::Int(8),

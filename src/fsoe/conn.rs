@@ -8,10 +8,10 @@
 //! from the previous one (the frame-received event of ETG.5100).
 
 use super::crc::next_seq;
-use super::frame::{decode, encode, frame_len, is_known_cmd};
+use super::frame::{decode, encode, frame_len, is_known_cmd, SL_FSOE_FRAME};
 use super::*;
-use crate::prim::bools::edge;
-use crate::types::*;
+use crate::base::bools::edge;
+use crate::base::types::*;
 
 /// Private state of a connection (296 bytes): never write it.
 #[repr(C)]

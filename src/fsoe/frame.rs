@@ -6,7 +6,7 @@
 
 use super::crc::{fsoe_crc, next_seq};
 use super::*;
-use crate::types::Status;
+use crate::base::types::Status;
 
 /// A decoded frame (`sl_fsoe_frame_decode`). Size: 40 bytes.
 #[repr(C)]

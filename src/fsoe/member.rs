@@ -5,9 +5,9 @@
 //! its BOOL inputs and outputs by ordinary BOOL links.
 
 use super::conn::{self, SL_FSOE_CONN};
-use crate::group::{ConnReport, Member, Ran, Wiring};
-use crate::registry::{Dir, Field, Kind};
-use crate::types::Status;
+use crate::base::block::{Dir, Field, Kind};
+use crate::base::member::{ConnReport, Member, Ran, Wiring};
+use crate::base::types::Status;
 use core::mem::offset_of;
 
 /// Byte offset of `bShutdownRequest` (the group copies a CONNECTION SHUTDOWN block's

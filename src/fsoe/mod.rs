@@ -96,8 +96,6 @@ pub const SL_FSOE_DIAG_MODULE_ERROR: u16 = 13;
 /// nDiag low nibble 15: slave not yet started, or a received code above 11.
 pub const SL_FSOE_DIAG_NOT_STARTED: u16 = 15;
 
-pub use frame::SL_FSOE_FRAME;
-
 pub mod member;
 
 /// The connection states with their manual names (§3.2.1.3), NUL-terminated: what

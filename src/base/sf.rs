@@ -1,0 +1,565 @@
+//! The PLCopen Safety envelope every `SF_` block runs in (PLCopen TC5 Part 1 generic
+//! parameters and DiagCodes, `plcopen-safety-generic-diag.txt`; research
+//! `plcopen_safety.md` §3, §9): the PLCopen counterpart of [`super::envelope`].
+//!
+//! One call: (1) the integrity check of the private state, the clock check, the R_TRIG of
+//! `Reset` — every call, before anything else, so a Reset held into a wait-for-reset state
+//! is a static-reset error; (2) `Activate` FALSE (or the owning group not running the
+//! block) has the highest priority: DiagCode 0000, every output FALSE; otherwise 0000 →
+//! the block's init state latches the constant inputs, and any other state takes the
+//! block's one transition (first matching guard wins); (3) every output from the *new*
+//! state in the same call. The block's state is its v2.01 DiagCode (the default profile);
+//! the v1.0 DiagCodes are a per-instance option (`nDiagProfile`), latched at activation,
+//! so one instance never mixes them. The library's own faults are DiagCodes of the error
+//! range (`SL_SF_DIAG_*`, docs/semantics.md PO1–PO10).
+
+use super::bools::{self, Edge};
+use super::header::{param_crc, F_RESTART_PREV, F_TIME_VALID, SL_PRIVATE_HEADER};
+use super::time;
+use crate::base::types::*;
+
+/// `nDiagProfile` 0: the PLCopen v2.01 DiagCodes (default).
+pub const SL_SF_PROFILE_V201: u8 = 0;
+/// `nDiagProfile` 1: the PLCopen v1.0 DiagCodes (blocks that exist in v1.0 only).
+pub const SL_SF_PROFILE_V10: u8 = 1;
+
+/// Library DiagCode: the private state was corrupt (SL_E_CORRUPT). Left by Activate FALSE.
+pub const SL_SF_DIAG_CORRUPT: u16 = 0xC3FF;
+/// Library DiagCode: the clock went backwards (SL_E_CLOCK). Left by Activate FALSE.
+pub const SL_SF_DIAG_CLOCK: u16 = 0xC3FE;
+/// Library DiagCode: a constant input (`nDiagProfile`, a time) changed while the block was
+/// activated (SL_E_PARAM_CHANGED). Left by Activate FALSE.
+pub const SL_SF_DIAG_CONST_CHANGED: u16 = 0xC3FD;
+/// Library DiagCode: a constant input is invalid at activation (SL_E_CONFIG). Left by
+/// Activate FALSE.
+pub const SL_SF_DIAG_CONFIG: u16 = 0xC3FC;
+/// Largest monitored time of an `SF_` block (ms; 2^31 − 1, the half circle of the
+/// wrapping clock).
+pub const SL_SF_TIME_MAX: u32 = 0x7FFF_FFFF;
+
+/// Previous level of a block's own R_TRIG input (SF_EDM's S_OutControl,
+/// SF_TestableSafetySensor's StartTest): bit 7 of the header's `nFlags`, sealed with it.
+const F_TRIGGER_PREV: u8 = 1 << 7;
+
+/// R_TRIG(raw).Q of a block's own trigger input, read in `SfBlock::decode`; the memory is
+/// written by [`store_trigger`] from `SfBlock::write_outputs`, which runs at the end of
+/// every call (idle included), so the R_TRIG runs in every call as Reset's does.
+pub fn trigger_rising(p: &SL_SF_PRIVATE, raw: u8) -> bool {
+    bools::is_true(raw) && !p.stHeader.flag(F_TRIGGER_PREV)
+}
+
+/// Stores the level of the trigger input for the next call's [`trigger_rising`].
+pub fn store_trigger(p: &mut SL_SF_PRIVATE, raw: u8) {
+    p.stHeader.set_flag(F_TRIGGER_PREV, bools::is_true(raw));
+}
+
+/// The DiagCode meaning "the block is activated and its safety output is enabled".
+pub const SF_ENABLED: u16 = 0x8000;
+
+/// The library's DiagCodes with their texts (the same in both profiles).
+pub const LIBRARY_CODES: &[(u16, &str)] = &[
+    (SL_SF_DIAG_CORRUPT, "library: private state corrupt"),
+    (SL_SF_DIAG_CLOCK, "library: clock went backwards"),
+    (
+        SL_SF_DIAG_CONST_CHANGED,
+        "library: constant input changed while activated",
+    ),
+    (
+        SL_SF_DIAG_CONFIG,
+        "library: invalid constant input at activation",
+    ),
+];
+
+const fn is_library(code: u16) -> bool {
+    code == SL_SF_DIAG_CORRUPT
+        || code == SL_SF_DIAG_CLOCK
+        || code == SL_SF_DIAG_CONST_CHANGED
+        || code == SL_SF_DIAG_CONFIG
+}
+
+crate::base::block::block_states!(
+    /// Group-level state of an `SF_` block (`nState` of its private header,
+    /// `sl_state_str`): what the owning group sees. PLCopen errors (static reset,
+    /// discrepancy …) are the block's own and do not stop the group; a library fault does
+    /// (docs/semantics.md PO8).
+    SfPhase: Idle = SL_STATE_STOP, "IDLE", Active = SL_STATE_RUN, "ACTIVE",
+    Fault = SL_STATE_ERROR, "FAULT"
+);
+
+const fn phase_of(code: u16) -> u8 {
+    if code == 0 {
+        SL_STATE_STOP
+    } else if is_library(code) {
+        SL_STATE_ERROR
+    } else {
+        SL_STATE_RUN
+    }
+}
+
+/// A block's states: an enum whose values are its v2.01 DiagCodes, declared with
+/// `sf_states!`, with the v1.0 code and the text of each.
+pub trait DiagState: Copy + core::fmt::Debug + Eq + 'static {
+    /// (v2.01 code, v1.0 code, name, text) of every state, IDLE first.
+    const TABLE: &'static [(u16, u16, &'static str, &'static str)];
+    /// (code, text) of both profiles (v2.01 first): what `sl_diag_text` reads.
+    const TEXTS: &'static [(u16, &'static str)];
+    /// The state the block enters from IDLE (its INIT).
+    const INIT: Self;
+    /// The state with this v2.01 code; `None` for a code the block does not have.
+    fn decode(code: u16) -> Option<Self>;
+    /// The v2.01 DiagCode.
+    fn code(self) -> u16;
+    /// The DiagCode in `profile`.
+    fn code_in(self, profile: u8) -> u16 {
+        let c = self.code();
+        if profile != SL_SF_PROFILE_V10 {
+            return c;
+        }
+        Self::TABLE.iter().find(|e| e.0 == c).map_or(c, |e| e.1)
+    }
+}
+
+/// Declares an `SF_` block's states once: `pub enum $name` (values = the v2.01 DiagCodes),
+/// with the v1.0 code, name and text of each: `Init = 0x8001, 0x8001, "INIT", "…";`.
+/// The first entry is IDLE (0x0000); `init:` names the state entered from IDLE.
+#[macro_export]
+#[doc(hidden)]
+macro_rules! sf_states {
+    ($(#[$meta:meta])* $enum:ident, init: $init:ident {
+        $($v:ident = $code:literal, $v1:literal, $name:literal, $text:literal;)+
+    }) => {
+        $(#[$meta])*
+        #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+        #[repr(u16)]
+        pub enum $enum {
+            $(
+                #[doc = concat!($name, " (v2.01 ", stringify!($code), ", v1.0 ", stringify!($v1), "): ", $text, ".")]
+                $v = $code,
+            )+
+        }
+        impl $crate::base::sf::DiagState for $enum {
+            const TABLE: &'static [(u16, u16, &'static str, &'static str)] =
+                &[$(($code, $v1, $name, $text)),+];
+            const TEXTS: &'static [(u16, &'static str)] = &[$(($code, $text),)+ $(($v1, $text)),+];
+            const INIT: Self = $enum::$init;
+            #[inline]
+            fn decode(code: u16) -> Option<Self> {
+                $(if code == $code {
+                    return Some($enum::$v);
+                })+
+                None
+            }
+            #[inline]
+            fn code(self) -> u16 {
+                self as u16
+            }
+        }
+    };
+}
+
+/// Private state of every `SF_` block (40 bytes). Never written by the user. The header's
+/// `wDiag` holds the v2.01 DiagCode (the state), `nState` the [`SfPhase`], `nActive` the
+/// latched profile, `tPhase` the entry time of the current state (the monitored times run
+/// from there), `nFlags` the R_TRIG memories.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+#[allow(non_snake_case, non_camel_case_types)]
+pub struct SL_SF_PRIVATE {
+    /// Common head.
+    pub stHeader: SL_PRIVATE_HEADER,
+    /// Latched constant times (ms), covered by the header's parameter CRC.
+    pub adwTime: [u32; 2],
+    /// Written by the owning group before each call: non-zero while the group does not run
+    /// the block (halted: DiagCode 0000, as with Activate FALSE).
+    pub nGroupHalt: u8,
+    /// Reserved.
+    pub aReserved: [u8; 3],
+}
+
+impl SL_SF_PRIVATE {
+    /// All zero.
+    pub const ZERO: Self = Self {
+        stHeader: SL_PRIVATE_HEADER::ZERO,
+        adwTime: [0; 2],
+        nGroupHalt: 0,
+        aReserved: [0; 3],
+    };
+}
+
+/// The constant inputs of an `SF_` block: the profile and up to two monitored times.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct SfConsts {
+    /// `nDiagProfile`.
+    pub profile: u8,
+    /// The block's times (ms), unused ones 0.
+    pub times: [u32; 2],
+}
+
+/// The R_TRIG of `Reset`, evaluated every call (an invalid byte reads FALSE).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct ResetIn {
+    /// `Reset` is TRUE.
+    pub level: bool,
+    /// R_TRIG(Reset).Q.
+    pub rising: bool,
+}
+
+impl ResetIn {
+    /// "Static reset": Reset TRUE without a rising edge in this call.
+    #[inline]
+    pub const fn held(self) -> bool {
+        self.level && !self.rising
+    }
+}
+
+/// The outputs every `SF_` block derives from its new state.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct SfOut {
+    /// Ready: DiagCode ≠ 0000.
+    pub ready: bool,
+    /// The safety output: the state is 0x8000.
+    pub enabled: bool,
+    /// SafetyDemand: bit 0x0800 of the v2.01 code.
+    pub safety_demand: bool,
+    /// ResetRequest: bit 0x0400 of the v2.01 code, FALSE while Reset is TRUE.
+    pub reset_request: bool,
+    /// Error: DiagCode ≥ 0xC000.
+    pub error: bool,
+    /// DiagCode in the instance's profile.
+    pub diag_code: u16,
+}
+
+/// The fields every `SF_` block has under the same names (`stPrivate`, `Activate`);
+/// implemented by `impl_sf_member!`.
+pub trait SfInstance {
+    /// `&self.stPrivate`.
+    fn sf_private(&self) -> &SL_SF_PRIVATE;
+    /// `&mut self.stPrivate`.
+    fn sf_private_mut(&mut self) -> &mut SL_SF_PRIVATE;
+    /// The raw `Activate` byte (SF_ResetButton: `ResetRequested`, its activation).
+    fn activate_raw(&self) -> u8;
+    /// Writes the `Activate` byte (SF_ResetButton: `ResetRequested`): for generic drivers.
+    fn set_activate_raw(&mut self, v: u8);
+}
+
+/// What an `SF_` block supplies to the envelope (the plumbing of [`SfInstance`] comes from
+/// `impl_sf_member!`).
+pub trait SfBlock: SfInstance + Sized {
+    /// Type tag stored in the private header.
+    const MAGIC: u16;
+    /// The block's states (values = v2.01 DiagCodes).
+    type Diag: DiagState;
+    /// Inputs of one call after BOOL decoding.
+    type In: Copy;
+    /// The block exists in PLCopen v1.0 (the v1.0 profile may be chosen).
+    const HAS_V10: bool = true;
+    /// Number of monitored times the block has (`SfConsts::times`).
+    const TIMES: usize = 0;
+
+    /// The raw `Reset` byte (0 for a block without Reset).
+    fn reset_raw(&self) -> u8;
+    /// The constant inputs as written.
+    fn live_consts(&self) -> SfConsts;
+    /// Reads the block's own input bytes (not Activate, not Reset); whether one was an
+    /// invalid BOOL (it reads FALSE, the safe value of every `S_` input).
+    fn decode(&self) -> (Self::In, bool);
+    /// [`Self::decode`] plus the block's own edge memories (a block with an R_TRIG on an
+    /// input of its own, kept in the private header's flags): called once in every call,
+    /// whatever the state, like the R_TRIG of Reset. Default: no edge of its own.
+    #[inline(always)]
+    fn decode_edges(&mut self) -> (Self::In, bool) {
+        self.decode()
+    }
+    /// The next state from a state other than IDLE: the block's one match, first matching
+    /// guard wins. `in_state` is the time since the state was entered (ms), `times` the
+    /// latched constant times.
+    fn next(
+        s: Self::Diag,
+        inp: &Self::In,
+        reset: ResetIn,
+        in_state: u32,
+        times: [u32; 2],
+    ) -> Self::Diag;
+    /// Writes the block's output fields.
+    fn write_outputs(&mut self, o: &SfOut);
+    /// The state entered from IDLE with valid latched constants (`times`): INIT. A block
+    /// whose constant inputs have limits of its own (SF_ResetButton's trailing times)
+    /// enters its parameter error here, in the activating call.
+    fn first(times: [u32; 2]) -> Self::Diag {
+        let _ = times;
+        Self::Diag::INIT
+    }
+    /// Called in every call after [`Self::decode`], before `Activate` is evaluated (edge
+    /// detectors run every call, research §3.3): a block with memory beyond its state
+    /// (edges of inputs other than Reset, a held selection, in the header's `wAux`, which
+    /// the integrity check covers, or in its own private fields) completes `inp` from it
+    /// and updates it. The header's `wDiag` is still the state before this call. Default:
+    /// nothing (SF_ModeSelector has memory).
+    #[inline(always)]
+    fn track(&mut self, _inp: &mut Self::In, _now: u32) {}
+}
+
+/// The latched constants are valid: a known profile the block has, times within range.
+fn consts_valid<B: SfBlock>(c: &SfConsts) -> bool {
+    let profile_ok =
+        c.profile == SL_SF_PROFILE_V201 || (B::HAS_V10 && c.profile == SL_SF_PROFILE_V10);
+    profile_ok
+        && c.times.iter().all(|&t| t <= SL_SF_TIME_MAX)
+        && c.times[B::TIMES..].iter().all(|&t| t == 0)
+}
+
+fn consts_crc<B: SfBlock>(p: &SL_SF_PRIVATE) -> u16 {
+    let [a, b] = p.adwTime;
+    param_crc(
+        B::MAGIC,
+        p.stHeader.nActive,
+        0,
+        0,
+        &[a as u16, (a >> 16) as u16, b as u16, (b >> 16) as u16],
+    )
+}
+
+fn latched<B: SfBlock>(fb: &B) -> SfConsts {
+    let p = fb.sf_private();
+    SfConsts {
+        profile: p.stHeader.nActive,
+        times: p.adwTime,
+    }
+}
+
+/// Latches the live constants; whether they are valid.
+fn latch<B: SfBlock>(fb: &mut B) -> bool {
+    let c = fb.live_consts();
+    let p = fb.sf_private_mut();
+    p.stHeader.nActive = c.profile;
+    p.adwTime = c.times;
+    let crc = consts_crc::<B>(fb.sf_private());
+    fb.sf_private_mut().stHeader.wParamCrc = crc;
+    consts_valid::<B>(&c)
+}
+
+/// Enters `code` (a state of the block or a library code) at `now`.
+fn enter(h: &mut SL_PRIVATE_HEADER, code: u16, now: u32) {
+    if h.wDiag != code {
+        h.tPhase = now;
+    }
+    h.wDiag = code;
+    h.nState = phase_of(code);
+}
+
+/// Power-up: a fresh private state in IDLE. Only `keep` (a consistent instance going idle)
+/// keeps the R_TRIG memory, the clock and the group's halt; init and a corrupt state start
+/// from nothing (the owning group writes its halt again before each of its calls).
+fn idle<B: SfBlock>(fb: &mut B, keep: bool) {
+    let old = *fb.sf_private();
+    let p = fb.sf_private_mut();
+    *p = SL_SF_PRIVATE::ZERO;
+    p.stHeader.wMagic = B::MAGIC;
+    p.stHeader.nState = SL_STATE_STOP;
+    if keep {
+        p.nGroupHalt = old.nGroupHalt;
+        p.stHeader.nFlags = old.stHeader.nFlags & (F_RESTART_PREV | F_TIME_VALID);
+        p.stHeader.tLast = old.stHeader.tLast;
+    }
+}
+
+/// The outputs of a code.
+fn outputs(code: u16, reset_level: bool, state_code: Option<u16>) -> SfOut {
+    // The v2.01 code carries the SafetyDemand / reset-request bits whatever the profile.
+    let v2 = state_code.unwrap_or(code);
+    let active = code != 0;
+    let library = is_library(v2);
+    SfOut {
+        ready: active,
+        enabled: v2 == SF_ENABLED,
+        safety_demand: active && !library && v2 & 0x0800 != 0,
+        reset_request: active && !library && v2 & 0x0400 != 0 && !reset_level,
+        error: code >= 0xC000,
+        diag_code: code,
+    }
+}
+
+fn write<B: SfBlock>(fb: &mut B, reset_level: bool) {
+    let h = fb.sf_private().stHeader;
+    let code = match B::Diag::decode(h.wDiag) {
+        Some(s) => s.code_in(h.nActive),
+        None => h.wDiag,
+    };
+    let o = outputs(code, reset_level, Some(h.wDiag));
+    fb.write_outputs(&o);
+}
+
+/// `sl_sf_<name>_init`: IDLE with the constants latched (SL_OK or SL_E_CONFIG), every
+/// output FALSE. Never touches an input field.
+pub fn init<B: SfBlock>(fb: &mut B) -> Status {
+    idle(fb, false);
+    let ok = latch(fb);
+    write(fb, false);
+    fb.sf_private_mut().stHeader.seal();
+    if ok {
+        Status::Ok
+    } else {
+        Status::Config
+    }
+}
+
+/// The private state is consistent: magic and complements, a code the block has (or a
+/// library code) and the phase that goes with it.
+fn consistent<B: SfBlock>(fb: &B) -> bool {
+    let h = &fb.sf_private().stHeader;
+    h.intact(B::MAGIC)
+        && (B::Diag::decode(h.wDiag).is_some() || is_library(h.wDiag))
+        && h.nState == phase_of(h.wDiag)
+}
+
+/// `sl_sf_<name>_cycle`: one call at `now` (ms, wrapping).
+pub fn cycle<B: SfBlock>(fb: &mut B, now: u32) -> Status {
+    let mut status = Status::Ok;
+    let mut fault = None;
+    if !consistent(fb) {
+        let zero = fb.sf_private().stHeader.is_zero();
+        idle(fb, false);
+        latch(fb);
+        if !zero {
+            status = Status::Corrupt;
+            fault = Some(SL_SF_DIAG_CORRUPT);
+        }
+    }
+    let h = &mut fb.sf_private_mut().stHeader;
+    if h.flag(F_TIME_VALID) && time::went_backwards(now, h.tLast) {
+        status = status.worst(Status::Clock);
+        fault = fault.or(Some(SL_SF_DIAG_CLOCK));
+    }
+    h.tLast = now;
+    h.set_flag(F_TIME_VALID, true);
+
+    // The R_TRIG of Reset runs in every call, whatever the state (research §3.3).
+    let reset_raw = fb.reset_raw();
+    let Edge { level, rising, .. } = bools::edge(
+        reset_raw,
+        &mut fb.sf_private_mut().stHeader.nFlags,
+        F_RESTART_PREV,
+    );
+    let reset = ResetIn { level, rising };
+    let activate_raw = fb.activate_raw();
+    let (mut inp, invalid) = fb.decode_edges();
+    fb.track(&mut inp, now);
+    if invalid || activate_raw > 1 || reset_raw > 1 {
+        status = status.worst(Status::InvalidBool);
+    }
+    let activate = bools::is_true(activate_raw) && fb.sf_private().nGroupHalt == 0;
+
+    let code = fb.sf_private().stHeader.wDiag;
+    if !activate {
+        // Highest priority: IDLE, whatever the state (a fault included).
+        if code != 0 {
+            idle(fb, true);
+        }
+    } else if let Some(f) = fault {
+        enter(&mut fb.sf_private_mut().stHeader, f, now);
+    } else if is_library(code) {
+        // A library fault stays until Activate FALSE; report it again.
+        status = status.worst(match code {
+            SL_SF_DIAG_CLOCK => Status::Clock,
+            SL_SF_DIAG_CONST_CHANGED => Status::ParamChanged,
+            SL_SF_DIAG_CONFIG => Status::Config,
+            _ => Status::Corrupt,
+        });
+    } else if code == 0 {
+        // 0000 → INIT: the constant inputs are latched here (they may not change while
+        // the block is activated).
+        let next = if latch(fb) {
+            B::first(fb.sf_private().adwTime).code()
+        } else {
+            status = status.worst(Status::Config);
+            SL_SF_DIAG_CONFIG
+        };
+        enter(&mut fb.sf_private_mut().stHeader, next, now);
+    } else if fb.live_consts() != latched(fb) {
+        let p = fb.sf_private();
+        let (next, s) = if consts_crc::<B>(p) != p.stHeader.wParamCrc {
+            (SL_SF_DIAG_CORRUPT, Status::Corrupt)
+        } else {
+            (SL_SF_DIAG_CONST_CHANGED, Status::ParamChanged)
+        };
+        status = status.worst(s);
+        enter(&mut fb.sf_private_mut().stHeader, next, now);
+    } else if let Some(state) = B::Diag::decode(code) {
+        let p = fb.sf_private();
+        let in_state = time::elapsed(now, p.stHeader.tPhase);
+        let mut next = B::next(state, &inp, reset, in_state, p.adwTime).code();
+        // The safety output switching on is where the latched constants are verified.
+        if next == SF_ENABLED && code != SF_ENABLED && consts_crc::<B>(p) != p.stHeader.wParamCrc {
+            status = status.worst(Status::Corrupt);
+            next = SL_SF_DIAG_CORRUPT;
+        }
+        enter(&mut fb.sf_private_mut().stHeader, next, now);
+    }
+    write(fb, reset.level);
+    fb.sf_private_mut().stHeader.seal();
+    status
+}
+
+/// After a caught panic: the instance is forced into the library fault with its outputs
+/// FALSE (only Activate FALSE leaves it).
+pub fn force_fault<B: SfBlock>(fb: &mut B) {
+    if !consistent(fb) {
+        idle(fb, false);
+    }
+    let now = fb.sf_private().stHeader.tLast;
+    enter(&mut fb.sf_private_mut().stHeader, SL_SF_DIAG_CORRUPT, now);
+    write(fb, false);
+    fb.sf_private_mut().stHeader.seal();
+}
+
+/// The DiagCode text of a block's states or of a library code.
+pub fn diag_text(texts: &[(u16, &'static str)], code: u16) -> Option<&'static str> {
+    if code == 0 {
+        return Some("FB not activated (idle)");
+    }
+    texts
+        .iter()
+        .chain(LIBRARY_CODES)
+        .find(|(c, _)| *c == code)
+        .map(|(_, t)| *t)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn library_codes_are_errors_without_demand_or_reset_bits() {
+        for (c, _) in LIBRARY_CODES {
+            assert!(*c >= 0xC000 && c & 0x0C00 == 0);
+            assert_eq!(phase_of(*c), SL_STATE_ERROR);
+        }
+        assert_eq!(phase_of(0), SL_STATE_STOP);
+        assert_eq!(phase_of(0x8001), SL_STATE_RUN);
+    }
+
+    #[test]
+    fn the_trigger_memory_gives_one_rising_edge() {
+        let mut p = SL_SF_PRIVATE::ZERO;
+        assert!(!trigger_rising(&p, 0));
+        assert!(trigger_rising(&p, 1));
+        assert!(!trigger_rising(&p, 2), "an invalid byte is FALSE");
+        store_trigger(&mut p, 1);
+        assert!(!trigger_rising(&p, 1), "held");
+        assert_eq!(p.stHeader.nFlags, F_TRIGGER_PREV);
+        store_trigger(&mut p, 2);
+        assert!(trigger_rising(&p, 1));
+        assert_eq!(p.stHeader.nFlags, 0);
+    }
+
+    #[test]
+    fn outputs_follow_the_code() {
+        let o = outputs(0x8402, false, None);
+        assert!(o.ready && o.reset_request && !o.safety_demand && !o.enabled && !o.error);
+        assert!(!outputs(0x8402, true, None).reset_request);
+        assert!(outputs(0x8000, false, None).enabled);
+        assert_eq!(outputs(0, false, None), SfOut::default());
+        let e = outputs(SL_SF_DIAG_CORRUPT, false, None);
+        assert!(e.error && e.ready && !e.safety_demand && !e.reset_request);
+    }
+}

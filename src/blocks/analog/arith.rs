@@ -1,0 +1,626 @@
+//! FB ADD, FB SUB, FB MUL, FB DIV — manual §4.16–§4.19; layout ABI-2 §11.2, rules ABI-2 §12.
+//!
+//! `AnalogOut = AnalogIn1 (+ − · ÷) AnalogIn2`, computed exactly (in `i128`) and then
+//! compared with the range of the variant's type: below it → ERROR, diag value 1, message
+//! 0x4080; above it → ERROR, diag value 2, message 0x4081 (parameters 2 and 3: the two
+//! inputs). In ERROR, STOP and RESET the output is 0 and `bError` is TRUE only in ERROR.
+//! DIV by 0 gives 0 without an error; the quotient is rounded per `nRounding`
+//! (docs/semantics.md A2). States RUN (1), STOP (2), ERROR (4), RESET (5): no SAFE.
+//!
+//! One implementation for the four operations and the four integer types: the operation is
+//! a type parameter ([`ArithOp`]), the integer type another ([`Analog`]); the two structs
+//! differ only in DIV's `nRounding`. The variants are type aliases (`FB_ADD_INT` …), which
+//! cbindgen writes as structs of those names (build.rs).
+
+#![allow(non_camel_case_types)] // the ABI's names (FB_ADD_INT …)
+
+use super::{diag_message, magic, Analog, SL_DIAG_VALUE_OVERFLOW, SL_DIAG_VALUE_UNDERFLOW};
+use crate::base::block::BlockInfo;
+use crate::base::block::FieldType;
+use crate::base::envelope::Block;
+use crate::base::header::{param_crc, SL_PRIVATE_HEADER};
+use crate::base::types::*;
+use core::marker::PhantomData;
+
+/// Type tags of the arithmetic blocks (ABI-2 §10.6: sequential from 16).
+pub const SL_TYPE_ADD_INT: u16 = 16;
+/// FB_ADD_UINT.
+pub const SL_TYPE_ADD_UINT: u16 = 17;
+/// FB_ADD_DINT.
+pub const SL_TYPE_ADD_DINT: u16 = 18;
+/// FB_ADD_UDINT.
+pub const SL_TYPE_ADD_UDINT: u16 = 19;
+/// FB_SUB_INT.
+pub const SL_TYPE_SUB_INT: u16 = 20;
+/// FB_SUB_UINT.
+pub const SL_TYPE_SUB_UINT: u16 = 21;
+/// FB_SUB_DINT.
+pub const SL_TYPE_SUB_DINT: u16 = 22;
+/// FB_SUB_UDINT.
+pub const SL_TYPE_SUB_UDINT: u16 = 23;
+/// FB_MUL_INT.
+pub const SL_TYPE_MUL_INT: u16 = 24;
+/// FB_MUL_UINT.
+pub const SL_TYPE_MUL_UINT: u16 = 25;
+/// FB_MUL_DINT.
+pub const SL_TYPE_MUL_DINT: u16 = 26;
+/// FB_MUL_UDINT.
+pub const SL_TYPE_MUL_UDINT: u16 = 27;
+/// FB_DIV_INT.
+pub const SL_TYPE_DIV_INT: u16 = 28;
+/// FB_DIV_UINT.
+pub const SL_TYPE_DIV_UINT: u16 = 29;
+/// FB_DIV_DINT.
+pub const SL_TYPE_DIV_DINT: u16 = 30;
+/// FB_DIV_UDINT.
+pub const SL_TYPE_DIV_UDINT: u16 = 31;
+
+/// `nRounding` Floor: toward −∞ (docs/semantics.md A2).
+pub const SL_ROUNDING_FLOOR: u16 = 0;
+/// `nRounding` Ceil: toward +∞.
+pub const SL_ROUNDING_CEIL: u16 = 1;
+/// `nRounding` Round: commercial rounding, half away from zero (2.5 → 3, −2.5 → −3).
+pub const SL_ROUNDING_ROUND: u16 = 2;
+
+/// Diag message "An underflow has occurred" (parameters: AnalogIn1, AnalogIn2).
+pub const SL_TEXT_ARITH_UNDERFLOW: u16 = 0x4080;
+/// Diag message "An overflow has occurred" (parameters: AnalogIn1, AnalogIn2).
+pub const SL_TEXT_ARITH_OVERFLOW: u16 = 0x4081;
+
+/// `wInputActive` of every arithmetic block: AnalogIn1 (bit 8) and AnalogIn2 (bit 9),
+/// both required (ABI-2 §10.5).
+pub const ARITH_ACTIVE: u16 = 0x0300;
+
+/// An operation: ADD, SUB, MUL (same layout) or DIV.
+pub trait ArithOp: 'static {
+    /// Type tags per variant.
+    const TAGS: [u16; 4];
+    /// Registry names per variant.
+    const NAMES: [&'static str; 4];
+    /// The exact result; `rounding` only matters to DIV.
+    fn apply(a: i128, b: i128, rounding: u16) -> i128;
+}
+
+/// FB ADD (manual §4.16).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Add;
+/// FB SUB (manual §4.17).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Sub;
+/// FB MUL (manual §4.18).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Mul;
+/// FB DIV (manual §4.19).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Div;
+
+impl ArithOp for Add {
+    const TAGS: [u16; 4] = [
+        SL_TYPE_ADD_INT,
+        SL_TYPE_ADD_UINT,
+        SL_TYPE_ADD_DINT,
+        SL_TYPE_ADD_UDINT,
+    ];
+    const NAMES: [&'static str; 4] = ["ADD_INT", "ADD_UINT", "ADD_DINT", "ADD_UDINT"];
+    fn apply(a: i128, b: i128, _: u16) -> i128 {
+        a + b
+    }
+}
+
+impl ArithOp for Sub {
+    const TAGS: [u16; 4] = [
+        SL_TYPE_SUB_INT,
+        SL_TYPE_SUB_UINT,
+        SL_TYPE_SUB_DINT,
+        SL_TYPE_SUB_UDINT,
+    ];
+    const NAMES: [&'static str; 4] = ["SUB_INT", "SUB_UINT", "SUB_DINT", "SUB_UDINT"];
+    fn apply(a: i128, b: i128, _: u16) -> i128 {
+        a - b
+    }
+}
+
+impl ArithOp for Mul {
+    const TAGS: [u16; 4] = [
+        SL_TYPE_MUL_INT,
+        SL_TYPE_MUL_UINT,
+        SL_TYPE_MUL_DINT,
+        SL_TYPE_MUL_UDINT,
+    ];
+    const NAMES: [&'static str; 4] = ["MUL_INT", "MUL_UINT", "MUL_DINT", "MUL_UDINT"];
+    fn apply(a: i128, b: i128, _: u16) -> i128 {
+        a * b
+    }
+}
+
+impl ArithOp for Div {
+    const TAGS: [u16; 4] = [
+        SL_TYPE_DIV_INT,
+        SL_TYPE_DIV_UINT,
+        SL_TYPE_DIV_DINT,
+        SL_TYPE_DIV_UDINT,
+    ];
+    const NAMES: [&'static str; 4] = ["DIV_INT", "DIV_UINT", "DIV_DINT", "DIV_UDINT"];
+    fn apply(a: i128, b: i128, rounding: u16) -> i128 {
+        if b == 0 {
+            // Manual §4.19: "If the AnalogIn2 input is 0, the AnalogOut output is set to 0.
+            // In this case no error is output."
+            return 0;
+        }
+        divide(a, b, rounding)
+    }
+}
+
+/// `a / b` (b ≠ 0) rounded per `rounding` (docs/semantics.md A2).
+pub fn divide(a: i128, b: i128, rounding: u16) -> i128 {
+    let q = a / b; // toward zero
+    let r = a % b;
+    if r == 0 {
+        return q;
+    }
+    let negative = (a < 0) != (b < 0);
+    match rounding {
+        SL_ROUNDING_FLOOR => q - i128::from(negative),
+        SL_ROUNDING_CEIL => q + i128::from(!negative),
+        // Half away from zero: |r| ≥ |b| − |r| rounds the magnitude up.
+        _ => {
+            if 2 * r.abs() >= b.abs() {
+                if negative {
+                    q - 1
+                } else {
+                    q + 1
+                }
+            } else {
+                q
+            }
+        }
+    }
+}
+
+/// Private state of the arithmetic blocks (48 bytes). Never written by the user.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+#[allow(non_snake_case, non_camel_case_types)]
+pub struct SL_ARITH_PRIVATE {
+    /// Common head.
+    pub stHeader: SL_PRIVATE_HEADER,
+    /// Latched `wInputActive`.
+    pub wActive: u16,
+    /// Latched `nRounding` (0 for ADD, SUB, MUL).
+    pub wRounding: u16,
+    /// The result of the last RUN cycle as a 32-bit pattern.
+    pub dwOut: u32,
+    /// Diag message parameters 2 and 3 latched at the ERROR entry.
+    pub adwPar: [u32; 2],
+    pub aReserved: [u8; 4],
+}
+
+const _: () = assert!(core::mem::size_of::<SL_ARITH_PRIVATE>() == 48);
+
+/// FB ADD / SUB / MUL instance (ABI-2 §11.2). `P1` and `P2` are the reserved bytes that
+/// make the 16- and 32-bit layouts differ (after the parameters, after AnalogOut).
+#[repr(C)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[allow(non_snake_case, non_camel_case_types)]
+pub struct FB_ARITH<O, T, const P1: usize, const P2: usize> {
+    /// Offset 0. Reserved, keep 0 (no BOOL inputs).
+    pub aReserved0: [u8; 16],
+    /// Offset 16. FbRun of the owning group: TRUE = the block executes.
+    pub bRun: SL_BOOL,
+    /// Offset 17. ErrAck of the owning group.
+    pub bErrAck: SL_BOOL,
+    /// Offset 18. Reserved, keep 0.
+    pub aReserved1: [u8; 6],
+    /// At the analog input base 24: AnalogIn1 (active bit 8, required).
+    pub nAnalogIn1: T,
+    /// At 24 + W: AnalogIn2 (active bit 9, required).
+    pub nAnalogIn2: T,
+    /// At 24 + 2W: bits 8 and 9 must be set, no other (ARITH_ACTIVE).
+    pub wInputActive: u16,
+    /// Reserved up to the output base (16-bit: 2 bytes, 32-bit: 6).
+    pub aReserved2: [u8; P1],
+    /// At the output base (16-bit 32, 32-bit 40): Error, TRUE in ERROR only.
+    pub bError: SL_BOOL,
+    /// Reserved up to the analog output base.
+    pub aReserved3: [u8; 7],
+    /// At the output base + 8: AnalogOut, the result in RUN, else 0.
+    pub nAnalogOut: T,
+    /// Reserved up to the info data.
+    pub aReserved4: [u8; P2],
+    /// Info + 0: the manual's status value (RUN, STOP, ERROR, RESET).
+    pub nState: u8,
+    /// Info + 1. Reserved.
+    pub aReserved5: [u8; 1],
+    /// Info + 2: diag value (1 underflow, 2 overflow) + library bits 13-15.
+    pub nDiag: u16,
+    /// Info + 4: Text ID of the latched diag message (0x4080, 0x4081), 0 = none.
+    pub nDiagTextId: u16,
+    /// Info + 6. Reserved.
+    pub aReserved6: [u8; 2],
+    /// Info + 8: message parameter 2 (AnalogIn1 as a 32-bit pattern).
+    pub dwDiagPar2: u32,
+    /// Info + 12: message parameter 3 (AnalogIn2).
+    pub dwDiagPar3: u32,
+    /// Info + 16: private state, 48 bytes: never write it.
+    pub stPrivate: SL_ARITH_PRIVATE,
+    /// The operation (no bytes).
+    pub _op: PhantomData<O>,
+}
+
+/// FB DIV instance (ABI-2 §11.2): as [`FB_ARITH`] with `nRounding` before `wInputActive`.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[allow(non_snake_case, non_camel_case_types)]
+pub struct FB_DIV<T, const P1: usize, const P2: usize> {
+    /// Offset 0. Reserved, keep 0 (no BOOL inputs).
+    pub aReserved0: [u8; 16],
+    /// Offset 16. FbRun of the owning group: TRUE = the block executes.
+    pub bRun: SL_BOOL,
+    /// Offset 17. ErrAck of the owning group.
+    pub bErrAck: SL_BOOL,
+    /// Offset 18. Reserved, keep 0.
+    pub aReserved1: [u8; 6],
+    /// At the analog input base 24: AnalogIn1, the dividend (active bit 8, required).
+    pub nAnalogIn1: T,
+    /// At 24 + W: AnalogIn2, the divisor (active bit 9, required); 0 gives 0, no error.
+    pub nAnalogIn2: T,
+    /// At 24 + 2W: "Division Rounding": SL_ROUNDING_FLOOR, _CEIL, _ROUND.
+    pub nRounding: u16,
+    /// At 26 + 2W: bits 8 and 9 must be set, no other (ARITH_ACTIVE).
+    pub wInputActive: u16,
+    /// Reserved up to the output base (16-bit: none, 32-bit: 4 bytes).
+    pub aReserved2: [u8; P1],
+    /// At the output base (16-bit 32, 32-bit 40): Error, TRUE in ERROR only.
+    pub bError: SL_BOOL,
+    /// Reserved up to the analog output base.
+    pub aReserved3: [u8; 7],
+    /// At the output base + 8: AnalogOut, the rounded quotient in RUN, else 0.
+    pub nAnalogOut: T,
+    /// Reserved up to the info data.
+    pub aReserved4: [u8; P2],
+    /// Info + 0: the manual's status value (RUN, STOP, ERROR, RESET).
+    pub nState: u8,
+    /// Info + 1. Reserved.
+    pub aReserved5: [u8; 1],
+    /// Info + 2: diag value (2 overflow: MIN ÷ −1) + library bits 13-15.
+    pub nDiag: u16,
+    /// Info + 4: Text ID of the latched diag message (0x4081), 0 = none.
+    pub nDiagTextId: u16,
+    /// Info + 6. Reserved.
+    pub aReserved6: [u8; 2],
+    /// Info + 8: message parameter 2 (AnalogIn1 as a 32-bit pattern).
+    pub dwDiagPar2: u32,
+    /// Info + 12: message parameter 3 (AnalogIn2).
+    pub dwDiagPar3: u32,
+    /// Info + 16: private state, 48 bytes: never write it.
+    pub stPrivate: SL_ARITH_PRIVATE,
+}
+
+/// FB ADD, INT variant.
+pub type FB_ADD_INT = FB_ARITH<Add, i16, 2, 6>;
+/// FB ADD, UINT variant.
+pub type FB_ADD_UINT = FB_ARITH<Add, u16, 2, 6>;
+/// FB ADD, DINT variant.
+pub type FB_ADD_DINT = FB_ARITH<Add, i32, 6, 4>;
+/// FB ADD, UDINT variant.
+pub type FB_ADD_UDINT = FB_ARITH<Add, u32, 6, 4>;
+/// FB SUB, INT variant.
+pub type FB_SUB_INT = FB_ARITH<Sub, i16, 2, 6>;
+/// FB SUB, UINT variant.
+pub type FB_SUB_UINT = FB_ARITH<Sub, u16, 2, 6>;
+/// FB SUB, DINT variant.
+pub type FB_SUB_DINT = FB_ARITH<Sub, i32, 6, 4>;
+/// FB SUB, UDINT variant.
+pub type FB_SUB_UDINT = FB_ARITH<Sub, u32, 6, 4>;
+/// FB MUL, INT variant.
+pub type FB_MUL_INT = FB_ARITH<Mul, i16, 2, 6>;
+/// FB MUL, UINT variant.
+pub type FB_MUL_UINT = FB_ARITH<Mul, u16, 2, 6>;
+/// FB MUL, DINT variant.
+pub type FB_MUL_DINT = FB_ARITH<Mul, i32, 6, 4>;
+/// FB MUL, UDINT variant.
+pub type FB_MUL_UDINT = FB_ARITH<Mul, u32, 6, 4>;
+/// FB DIV, INT variant.
+pub type FB_DIV_INT = FB_DIV<i16, 0, 6>;
+/// FB DIV, UINT variant.
+pub type FB_DIV_UINT = FB_DIV<u16, 0, 6>;
+/// FB DIV, DINT variant.
+pub type FB_DIV_DINT = FB_DIV<i32, 4, 4>;
+/// FB DIV, UDINT variant.
+pub type FB_DIV_UDINT = FB_DIV<u32, 4, 4>;
+
+// The ABI-2 §11.2 numbers of the two DIV layouts (the one place `nRounding` sits).
+const _: () = {
+    use core::mem::offset_of;
+    assert!(offset_of!(FB_DIV_INT, nRounding) == 28 && offset_of!(FB_DIV_INT, wInputActive) == 30);
+    assert!(
+        offset_of!(FB_DIV_DINT, nRounding) == 32 && offset_of!(FB_DIV_DINT, wInputActive) == 34
+    );
+    assert!(
+        offset_of!(FB_ADD_INT, wInputActive) == 28 && offset_of!(FB_ADD_DINT, wInputActive) == 32
+    );
+    assert!(offset_of!(FB_ADD_INT, stPrivate) == 64 && offset_of!(FB_ADD_DINT, stPrivate) == 72);
+};
+
+crate::base::block::block_states!(
+    /// The states of FB ADD, SUB, MUL and DIV, every variant (manual §4.16.2 ff.).
+    ArithState: Run, Stop, Error, Reset
+);
+
+/// Diag value texts of every arithmetic block (manual §4.16.2 ff.).
+const DIAG_VALUES: &[(u16, &str)] = &[
+    (0, "The output AnalogOut is correct"),
+    (
+        SL_DIAG_VALUE_UNDERFLOW,
+        "The output AnalogOut has an underflow (is less than the smallest possible value)",
+    ),
+    (
+        SL_DIAG_VALUE_OVERFLOW,
+        "The output AnalogOut has an overflow (is greater than the largest possible value)",
+    ),
+];
+
+const fn info<O: ArithOp, T: Analog>() -> BlockInfo {
+    BlockInfo {
+        tag: O::TAGS[T::VARIANT],
+        name: O::NAMES[T::VARIANT],
+        states: <ArithState as crate::base::block::BlockState>::TABLE,
+        diag: &[],
+        diag_values: DIAG_VALUES,
+    }
+}
+
+crate::impl_member!([O: ArithOp, T: Analog, const P1: usize, const P2: usize] FB_ARITH<O, T, P1, P2> {
+    info: info::<O, T>(),
+    state: ArithState,
+    private: SL_ARITH_PRIVATE,
+    input: [nAnalogIn1, nAnalogIn2],
+    param: [wInputActive],
+    output: [bError, nAnalogOut],
+    info_fields: [nDiagTextId, dwDiagPar2, dwDiagPar3],
+});
+
+crate::impl_member!([T: Analog, const P1: usize, const P2: usize] FB_DIV<T, P1, P2> {
+    info: info::<Div, T>(),
+    state: ArithState,
+    private: SL_ARITH_PRIVATE,
+    input: [nAnalogIn1, nAnalogIn2],
+    param: [nRounding, wInputActive],
+    output: [bError, nAnalogOut],
+    info_fields: [nDiagTextId, dwDiagPar2, dwDiagPar3],
+});
+
+/// What the envelope needs of the two structs; everything else is shared below.
+pub trait ArithFb: crate::base::block::Private<P = SL_ARITH_PRIVATE> {
+    /// The integer type.
+    type T: Analog;
+    /// The operation.
+    type Op: ArithOp;
+    /// AnalogIn1, AnalogIn2.
+    fn operands(&self) -> (Self::T, Self::T);
+    /// The live `nRounding` (0 where the block has none).
+    fn rounding(&self) -> u16;
+    /// The live `wInputActive`.
+    fn active(&self) -> u16;
+    /// Writes bError, AnalogOut and the info data.
+    fn set_outputs(
+        &mut self,
+        error: bool,
+        out: Self::T,
+        state: u8,
+        diag: u16,
+        msg: (u16, u32, u32),
+    );
+}
+
+macro_rules! arith_fb {
+    ([$($gen:tt)*] $ty:ty, $op:ty, $rounding:expr) => {
+        impl<$($gen)*> ArithFb for $ty {
+            type T = T;
+            type Op = $op;
+            #[inline(always)]
+            fn operands(&self) -> (T, T) {
+                (self.nAnalogIn1, self.nAnalogIn2)
+            }
+            #[inline(always)]
+            fn rounding(&self) -> u16 {
+                $rounding(self)
+            }
+            #[inline(always)]
+            fn active(&self) -> u16 {
+                self.wInputActive
+            }
+            #[inline(always)]
+            fn set_outputs(&mut self, error: bool, out: T, state: u8, diag: u16, msg: (u16, u32, u32)) {
+                self.bError = u8::from(error);
+                self.nAnalogOut = out;
+                self.nState = state;
+                self.nDiag = diag;
+                (self.nDiagTextId, self.dwDiagPar2, self.dwDiagPar3) = msg;
+            }
+        }
+
+        impl<$($gen)*> Default for $ty {
+            fn default() -> Self {
+                Self::zeroed()
+            }
+        }
+    };
+}
+
+arith_fb!([O: ArithOp, T: Analog, const P1: usize, const P2: usize] FB_ARITH<O, T, P1, P2>, O, |_: &Self| 0);
+arith_fb!([T: Analog, const P1: usize, const P2: usize] FB_DIV<T, P1, P2>, Div, |s: &Self| s.nRounding);
+
+/// An all-zero instance of either struct; `$extra` are the fields only one of them has.
+macro_rules! zeroed {
+    ($($extra:ident: $v:expr),*) => {
+        Self {
+            aReserved0: [0; 16],
+            bRun: 0,
+            bErrAck: 0,
+            aReserved1: [0; 6],
+            nAnalogIn1: T::ZERO,
+            nAnalogIn2: T::ZERO,
+            wInputActive: 0,
+            aReserved2: [0; P1],
+            bError: 0,
+            aReserved3: [0; 7],
+            nAnalogOut: T::ZERO,
+            aReserved4: [0; P2],
+            nState: 0,
+            aReserved5: [0; 1],
+            nDiag: 0,
+            nDiagTextId: 0,
+            aReserved6: [0; 2],
+            dwDiagPar2: 0,
+            dwDiagPar3: 0,
+            stPrivate: SL_ARITH_PRIVATE::ZERO,
+            $($extra: $v),*
+        }
+    };
+}
+
+impl<O, T: Analog, const P1: usize, const P2: usize> FB_ARITH<O, T, P1, P2> {
+    /// An all-zero instance (valid: it initialises itself on the first cycle, ABI §3.6).
+    pub const fn zeroed() -> Self {
+        zeroed!(_op: PhantomData)
+    }
+}
+
+impl<T: Analog, const P1: usize, const P2: usize> FB_DIV<T, P1, P2> {
+    /// An all-zero instance (valid: it initialises itself on the first cycle, ABI §3.6).
+    pub const fn zeroed() -> Self {
+        zeroed!(nRounding: 0)
+    }
+}
+
+impl SL_ARITH_PRIVATE {
+    const ZERO: Self = Self {
+        stHeader: SL_PRIVATE_HEADER::ZERO,
+        wActive: 0,
+        wRounding: 0,
+        dwOut: 0,
+        adwPar: [0; 2],
+        aReserved: [0; 4],
+    };
+}
+
+/// Parameters as the user wrote them.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct ArithParams {
+    active: u16,
+    rounding: u16,
+}
+
+/// One cycle's inputs: the operands and their exact result.
+#[derive(Clone, Copy, Debug)]
+pub struct ArithIn {
+    a: u32,
+    b: u32,
+    /// The exact result in range (as a pattern), or the diag value of the range error.
+    result: Result<u32, u16>,
+}
+
+impl<B: ArithFb + crate::base::envelope::Instance + crate::base::block::Registered> Block for B {
+    const MAGIC: u16 = magic(<B as crate::base::block::Registered>::INFO.tag);
+    type Params = ArithParams;
+    type In = ArithIn;
+
+    #[inline(always)]
+    fn live_params(&self) -> ArithParams {
+        ArithParams {
+            active: self.active(),
+            rounding: self.rounding(),
+        }
+    }
+    #[inline(always)]
+    fn latched_params(&self) -> ArithParams {
+        let p = self.private();
+        ArithParams {
+            active: p.wActive,
+            rounding: p.wRounding,
+        }
+    }
+    fn params_valid(p: &ArithParams) -> bool {
+        p.active == ARITH_ACTIVE && p.rounding <= SL_ROUNDING_ROUND
+    }
+    fn store_params(&mut self, p: &ArithParams) {
+        let q = self.private_mut();
+        q.wActive = p.active;
+        q.wRounding = p.rounding;
+    }
+    fn latched_crc(&self) -> u16 {
+        let p = self.private();
+        param_crc(Self::MAGIC, 0, 0, 0, &[p.wActive, p.wRounding])
+    }
+    #[inline(always)]
+    fn decode(&mut self) -> (ArithIn, bool) {
+        let (a, b) = self.operands();
+        let exact = <B::Op as ArithOp>::apply(a.wide(), b.wide(), self.private().wRounding);
+        let result = if exact < B::T::MIN {
+            Err(SL_DIAG_VALUE_UNDERFLOW)
+        } else if exact > B::T::MAX {
+            Err(SL_DIAG_VALUE_OVERFLOW)
+        } else {
+            Ok(B::T::narrow(exact).to_bits())
+        };
+        (
+            ArithIn {
+                a: a.to_bits(),
+                b: b.to_bits(),
+                result,
+            },
+            false,
+        )
+    }
+    fn start(&mut self, inp: &ArithIn, now: u32) {
+        self.step(inp, now);
+    }
+    #[inline(always)]
+    fn step(&mut self, inp: &ArithIn, _now: u32) -> Status {
+        // Entering RUN is where the output starts to carry a value: verify the latched
+        // parameters first (C3).
+        let entering = self.private().stHeader.nState != SL_STATE_RUN;
+        if entering && inp.result.is_ok() && !self.params_intact() {
+            self.private_mut().stHeader.enter_error(SL_DIAG_CORRUPT);
+            return Status::Corrupt;
+        }
+        let p = self.private_mut();
+        match inp.result {
+            Ok(v) => {
+                p.dwOut = v;
+                p.stHeader.nState = SL_STATE_RUN;
+            }
+            Err(diag) => {
+                p.dwOut = 0;
+                p.adwPar = [inp.a, inp.b];
+                p.stHeader.enter_error(diag);
+            }
+        }
+        Status::Ok
+    }
+    fn error_remains(&mut self, inp: &ArithIn) -> bool {
+        inp.result.is_err()
+    }
+    #[inline(always)]
+    fn write_outputs(&mut self) {
+        let p = *self.private();
+        let h = p.stHeader;
+        let run = h.nState == SL_STATE_RUN;
+        let error = h.nState == SL_STATE_ERROR;
+        let msg = diag_message(
+            &h,
+            &[
+                (SL_DIAG_VALUE_UNDERFLOW, SL_TEXT_ARITH_UNDERFLOW),
+                (SL_DIAG_VALUE_OVERFLOW, SL_TEXT_ARITH_OVERFLOW),
+            ],
+            p.adwPar,
+        );
+        let out = if run {
+            FieldType::from_bits(p.dwOut)
+        } else {
+            B::T::ZERO
+        };
+        self.set_outputs(error, out, h.nState, h.wDiag, msg);
+    }
+}

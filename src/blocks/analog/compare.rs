@@ -1,0 +1,400 @@
+//! FB COMPARE — manual §4.20; layout ABI-2 §11.3, rules ABI-2 §12.
+//!
+//! Compares 2, 3 or 5 analog inputs (architecture 1oo2, 2oo3, 3oo5) for equality within
+//! `nAllowedDeviation`: ValuesEqual ⇔ 2 (1oo2, 2oo3) or 3 (3oo5) evaluated inputs pairwise
+//! differ by at most the deviation (exact differences). RUN: IsValid, CompOut = CompInX,
+//! X the smallest input of such a set. ValuesEqual FALSE → DELAYOUT for `tToleranceTime`
+//! (IsValid stays TRUE, CompOut unchanged), then SAFE (IsValid FALSE, CompOut 0); back to
+//! RUN automatically once ValuesEqual. States RUN (1), STOP (2), SAFE (3), ERROR (4),
+//! RESET (5), DELAYOUT (8). Readings: docs/semantics.md CP1–CP4. One implementation for the
+//! four integer types.
+
+#![allow(non_camel_case_types)] // the ABI's names (FB_COMPARE_INT …)
+
+use super::{magic, Analog};
+use crate::base::block::{Private, Registered};
+use crate::base::envelope::Block;
+use crate::base::header::{param_crc, SL_PRIVATE_HEADER};
+use crate::base::time;
+use crate::base::types::*;
+
+/// Type tag of FB_COMPARE_INT (ABI-2 §10.6: sequential from 16 in the order of §10.3).
+pub const SL_TYPE_COMPARE_INT: u16 = 32;
+/// FB_COMPARE_UINT.
+pub const SL_TYPE_COMPARE_UINT: u16 = 33;
+/// FB_COMPARE_DINT.
+pub const SL_TYPE_COMPARE_DINT: u16 = 34;
+/// FB_COMPARE_UDINT.
+pub const SL_TYPE_COMPARE_UDINT: u16 = 35;
+
+/// `nArchitecture` 1oo2: CompIn1 and CompIn2 must agree.
+pub const SL_ARCH_1OO2: u16 = 2;
+/// `nArchitecture` 2oo3: two of CompIn1–3 must agree.
+pub const SL_ARCH_2OO3: u16 = 3;
+/// `nArchitecture` 3oo5: three of CompIn1–5 must agree.
+pub const SL_ARCH_3OO5: u16 = 5;
+
+/// Private state of FB COMPARE (48 bytes). Never written by the user. The header's `tPhase`
+/// is the start of the DelayOutTimer.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+#[allow(non_snake_case)]
+pub struct SL_COMPARE_PRIVATE {
+    /// Common head.
+    pub stHeader: SL_PRIVATE_HEADER,
+    /// Latched `tToleranceTime`.
+    pub tTolerance: u32,
+    /// Latched `nAllowedDeviation`.
+    pub dwDeviation: u32,
+    /// Latched `nArchitecture`.
+    pub wArchitecture: u16,
+    /// Latched `wInputActive`.
+    pub wActive: u16,
+    /// CompOut of the last RUN cycle (held in DELAYOUT) as a 32-bit pattern.
+    pub dwOut: u32,
+    /// Reserved.
+    pub aReserved: [u8; 4],
+}
+
+/// FB COMPARE instance (ABI-2 §11.3), generic over the signal type `T`; `P1` (after
+/// CompIn5) and `P2` (after CompOut) are the reserved gaps that make the 16- and 32-bit
+/// layouts differ.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[allow(non_snake_case)]
+pub struct FB_COMPARE<T, const P1: usize, const P2: usize> {
+    /// Offset 0. Reserved, keep 0 (no BOOL inputs).
+    pub aReserved0: [u8; 16],
+    /// Offset 16. FbRun of the owning group: TRUE = the block executes.
+    pub bRun: SL_BOOL,
+    /// Offset 17. ErrAck of the owning group.
+    pub bErrAck: SL_BOOL,
+    /// Offset 18. Reserved, keep 0.
+    pub aReserved1: [u8; 6],
+    /// At the analog input base 24: CompIn1 (active bit 8).
+    pub nCompIn1: T,
+    /// At 24 + W: CompIn2 (active bit 9).
+    pub nCompIn2: T,
+    /// At 24 + 2W: CompIn3 (active bit 10; 2oo3, 3oo5).
+    pub nCompIn3: T,
+    /// At 24 + 3W: CompIn4 (active bit 11; 3oo5).
+    pub nCompIn4: T,
+    /// At 24 + 4W: CompIn5 (active bit 12; 3oo5).
+    pub nCompIn5: T,
+    /// Reserved (16-bit: 2 bytes, 32-bit: none).
+    pub aReserved2: [u8; P1],
+    /// "Tolerance Time (ms)", the DelayOutTimer: 0 to 65,535 ms.
+    pub tToleranceTime: u32,
+    /// "Allowed Deviation" (UDINT in every variant).
+    pub nAllowedDeviation: u32,
+    /// "Architecture": SL_ARCH_1OO2 (2), SL_ARCH_2OO3 (3), SL_ARCH_3OO5 (5).
+    pub nArchitecture: u16,
+    /// Exactly the bits 8 … 8 + nArchitecture − 1.
+    pub wInputActive: u16,
+    /// At the output base (16-bit 48, 32-bit 56): Error, TRUE in ERROR only.
+    pub bError: SL_BOOL,
+    /// Output base + 1: IsValid, TRUE in RUN and DELAYOUT.
+    pub bIsValid: SL_BOOL,
+    /// Reserved up to the analog output base.
+    pub aReserved3: [u8; 6],
+    /// At the output base + 8: CompOut, CompInX in RUN, held in DELAYOUT, else 0.
+    pub nCompOut: T,
+    /// Reserved up to the info data.
+    pub aReserved4: [u8; P2],
+    /// Info + 0: the manual's status value.
+    pub nState: u8,
+    /// Info + 1. Reserved.
+    pub aReserved5: [u8; 1],
+    /// Info + 2: diag value (0) + library bits 13-15.
+    pub nDiag: u16,
+    /// Info + 4: Text ID of the latched diag message, 0 = none.
+    pub nDiagTextId: u16,
+    /// Info + 6. Reserved.
+    pub aReserved6: [u8; 2],
+    /// Info + 8: message parameter 2.
+    pub dwDiagPar2: u32,
+    /// Info + 12: message parameter 3.
+    pub dwDiagPar3: u32,
+    /// Info + 16: private state, 48 bytes: never write it.
+    pub stPrivate: SL_COMPARE_PRIVATE,
+}
+
+/// FB COMPARE, INT variant.
+pub type FB_COMPARE_INT = FB_COMPARE<i16, 2, 6>;
+/// FB COMPARE, UINT variant.
+pub type FB_COMPARE_UINT = FB_COMPARE<u16, 2, 6>;
+/// FB COMPARE, DINT variant.
+pub type FB_COMPARE_DINT = FB_COMPARE<i32, 0, 4>;
+/// FB COMPARE, UDINT variant.
+pub type FB_COMPARE_UDINT = FB_COMPARE<u32, 0, 4>;
+
+// The ABI-2 §11.3 numbers of the two layouts (parameters, output base).
+const _: () = {
+    use core::mem::{offset_of, size_of};
+    assert!(
+        offset_of!(FB_COMPARE_INT, tToleranceTime) == 36
+            && offset_of!(FB_COMPARE_UINT, bError) == 48
+    );
+    assert!(
+        offset_of!(FB_COMPARE_DINT, tToleranceTime) == 44
+            && offset_of!(FB_COMPARE_UDINT, bError) == 56
+    );
+    assert!(size_of::<SL_COMPARE_PRIVATE>() == 48);
+};
+
+crate::base::block::block_states!(
+    /// The states of FB COMPARE, every variant (manual §4.20.2).
+    CompareState: Run, Stop, Safe, Error, Reset, DelayOut
+);
+
+/// Diag value texts (manual §4.20.2).
+const DIAG_VALUES: &[(u16, &str)] = &[
+    (0, "The output CompOut is correct"),
+    (
+        super::SL_DIAG_VALUE_UNDERFLOW,
+        "The output CompOut has an underflow (is less than the smallest possible value)",
+    ),
+    (
+        super::SL_DIAG_VALUE_OVERFLOW,
+        "The output CompOut has an overflow (is greater than the largest possible value)",
+    ),
+];
+
+crate::impl_member!([T: Analog, const P1: usize, const P2: usize] FB_COMPARE<T, P1, P2> {
+    info: crate::blocks::analog::variant_info!(T, "COMPARE", CompareState, DIAG_VALUES;
+        INT = SL_TYPE_COMPARE_INT, UINT = SL_TYPE_COMPARE_UINT, DINT = SL_TYPE_COMPARE_DINT, UDINT = SL_TYPE_COMPARE_UDINT),
+    state: CompareState,
+    private: SL_COMPARE_PRIVATE,
+    input: [nCompIn1, nCompIn2, nCompIn3, nCompIn4, nCompIn5],
+    param: [tToleranceTime, nAllowedDeviation, nArchitecture, wInputActive],
+    output: [bError, bIsValid, nCompOut],
+    info_fields: [nDiagTextId, dwDiagPar2, dwDiagPar3],
+});
+
+impl<T: Analog, const P1: usize, const P2: usize> FB_COMPARE<T, P1, P2> {
+    /// An all-zero instance (valid: it initialises itself on the first cycle, ABI §3.6).
+    pub const fn zeroed() -> Self {
+        Self {
+            aReserved0: [0; 16],
+            bRun: 0,
+            bErrAck: 0,
+            aReserved1: [0; 6],
+            nCompIn1: T::ZERO,
+            nCompIn2: T::ZERO,
+            nCompIn3: T::ZERO,
+            nCompIn4: T::ZERO,
+            nCompIn5: T::ZERO,
+            aReserved2: [0; P1],
+            tToleranceTime: 0,
+            nAllowedDeviation: 0,
+            nArchitecture: 0,
+            wInputActive: 0,
+            bError: 0,
+            bIsValid: 0,
+            aReserved3: [0; 6],
+            nCompOut: T::ZERO,
+            aReserved4: [0; P2],
+            nState: 0,
+            aReserved5: [0; 1],
+            nDiag: 0,
+            nDiagTextId: 0,
+            aReserved6: [0; 2],
+            dwDiagPar2: 0,
+            dwDiagPar3: 0,
+            stPrivate: SL_COMPARE_PRIVATE {
+                stHeader: SL_PRIVATE_HEADER::ZERO,
+                tTolerance: 0,
+                dwDeviation: 0,
+                wArchitecture: 0,
+                wActive: 0,
+                dwOut: 0,
+                aReserved: [0; 4],
+            },
+        }
+    }
+}
+
+impl<T: Analog, const P1: usize, const P2: usize> Default for FB_COMPARE<T, P1, P2> {
+    fn default() -> Self {
+        Self::zeroed()
+    }
+}
+
+/// Parameters as the user wrote them.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct CompareParams {
+    tolerance: u32,
+    deviation: u32,
+    architecture: u16,
+    active: u16,
+}
+
+/// One cycle's comparison: the index (0-based) of CompInX when ValuesEqual, and the inputs
+/// as 32-bit patterns.
+#[derive(Clone, Copy, Debug)]
+pub struct CompareIn {
+    x: Option<usize>,
+    values: [u32; 5],
+}
+
+/// The smallest input that is in a set of `k` evaluated inputs (the first `n`) whose values
+/// pairwise differ by at most `dev` (semantics CP1); `None` when there is no such set.
+/// In a set of pairwise-close values the extremes decide, so a set exists containing input
+/// `i` iff some window `[v, v + dev]` with `v` one of the values holds input `i` and at
+/// least `k` inputs.
+pub fn consensus(values: &[i128], k: usize, dev: i128) -> Option<usize> {
+    let mut best: Option<usize> = None;
+    for lo in values {
+        let inside = |v: &i128| *lo <= *v && *v - *lo <= dev;
+        if values.iter().filter(|v| inside(v)).count() >= k {
+            let first = values.iter().position(inside);
+            best = match (best, first) {
+                (Some(b), Some(f)) => Some(b.min(f)),
+                (None, f) => f,
+                (b, None) => b,
+            };
+        }
+    }
+    best
+}
+
+impl<T: Analog, const P1: usize, const P2: usize> Block for FB_COMPARE<T, P1, P2> {
+    const MAGIC: u16 = magic(<Self as Registered>::INFO.tag);
+    type Params = CompareParams;
+    type In = CompareIn;
+
+    #[inline(always)]
+    fn live_params(&self) -> CompareParams {
+        CompareParams {
+            tolerance: self.tToleranceTime,
+            deviation: self.nAllowedDeviation,
+            architecture: self.nArchitecture,
+            active: self.wInputActive,
+        }
+    }
+    #[inline(always)]
+    fn latched_params(&self) -> CompareParams {
+        let p = self.private();
+        CompareParams {
+            tolerance: p.tTolerance,
+            deviation: p.dwDeviation,
+            architecture: p.wArchitecture,
+            active: p.wActive,
+        }
+    }
+    /// Architecture 2, 3 or 5 with exactly its inputs active; Tolerance Time ≤ 65,535 ms
+    /// (ABI-2 §12.9); any deviation (semantics CP4).
+    fn params_valid(p: &CompareParams) -> bool {
+        matches!(p.architecture, SL_ARCH_1OO2 | SL_ARCH_2OO3 | SL_ARCH_3OO5)
+            && p.active == ((1u16 << p.architecture) - 1) << 8
+            && p.tolerance <= SL_TIME_PARAM_MAX
+    }
+    fn store_params(&mut self, p: &CompareParams) {
+        let q = self.private_mut();
+        q.tTolerance = p.tolerance;
+        q.dwDeviation = p.deviation;
+        q.wArchitecture = p.architecture;
+        q.wActive = p.active;
+    }
+    fn latched_crc(&self) -> u16 {
+        let p = self.private();
+        param_crc(
+            Self::MAGIC,
+            0,
+            0,
+            p.wArchitecture,
+            &[
+                p.tTolerance as u16,
+                (p.tTolerance >> 16) as u16,
+                p.dwDeviation as u16,
+                (p.dwDeviation >> 16) as u16,
+                p.wActive,
+            ],
+        )
+    }
+    #[inline(always)]
+    fn decode(&mut self) -> (CompareIn, bool) {
+        let p = self.private();
+        let inputs = [
+            self.nCompIn1,
+            self.nCompIn2,
+            self.nCompIn3,
+            self.nCompIn4,
+            self.nCompIn5,
+        ];
+        let n = usize::from(p.wArchitecture).min(5);
+        let k = if n == 5 { 3 } else { 2 };
+        let mut wide = [0i128; 5];
+        for (w, v) in wide.iter_mut().zip(inputs) {
+            *w = v.wide();
+        }
+        let x = wide
+            .get(..n)
+            .and_then(|v| consensus(v, k, i128::from(p.dwDeviation)));
+        (
+            CompareIn {
+                x,
+                values: inputs.map(|v| v.to_bits()),
+            },
+            false,
+        )
+    }
+    /// The start state is SAFE, decided again in the same call (semantics CP2).
+    fn start(&mut self, inp: &CompareIn, now: u32) {
+        self.private_mut().stHeader.nState = SL_STATE_SAFE;
+        self.step(inp, now);
+    }
+    #[inline(always)]
+    fn step(&mut self, inp: &CompareIn, now: u32) -> Status {
+        let state = self.private().stHeader.nState;
+        if let Some(x) = inp.x {
+            // IsValid switching on (from SAFE) is where the latched parameters are verified (C3).
+            if state == SL_STATE_SAFE && !self.params_intact() {
+                self.private_mut().stHeader.enter_error(SL_DIAG_CORRUPT);
+                return Status::Corrupt;
+            }
+            let p = self.private_mut();
+            p.dwOut = inp.values.get(x).copied().unwrap_or(0);
+            p.stHeader.nState = SL_STATE_RUN;
+            return Status::Ok;
+        }
+        let p = self.private_mut();
+        let tolerance = p.tTolerance;
+        let h = &mut p.stHeader;
+        match state {
+            SL_STATE_RUN => {
+                h.tPhase = now;
+                h.nState = SL_STATE_DELAYOUT;
+            }
+            SL_STATE_DELAYOUT => {}
+            _ => h.nState = SL_STATE_SAFE,
+        }
+        if h.nState == SL_STATE_DELAYOUT && time::reached(now, h.tPhase, tolerance) {
+            h.nState = SL_STATE_SAFE;
+        }
+        if h.nState == SL_STATE_SAFE {
+            p.dwOut = 0;
+        }
+        Status::Ok
+    }
+    /// Only the library's faults lead to ERROR (CompOut cannot leave its type); none remains.
+    fn error_remains(&mut self, _inp: &CompareIn) -> bool {
+        false
+    }
+    #[inline(always)]
+    fn write_outputs(&mut self) {
+        let p = *self.private();
+        let h = p.stHeader;
+        let valid = h.nState == SL_STATE_RUN || h.nState == SL_STATE_DELAYOUT;
+        self.bError = u8::from(h.nState == SL_STATE_ERROR);
+        self.bIsValid = u8::from(valid);
+        self.nCompOut = if valid {
+            T::from_bits(p.dwOut)
+        } else {
+            T::ZERO
+        };
+        self.nState = h.nState;
+        self.nDiag = h.wDiag;
+        (self.nDiagTextId, self.dwDiagPar2, self.dwDiagPar3) = (0, 0, 0);
+    }
+}

@@ -1,0 +1,419 @@
+//! FB ENVELOPE — manual §4.32 and `fb-envelope-states.txt`; layout ABI-2 §11.11, rules
+//! ABI-2 §12.
+//!
+//! SafeFunctionOut follows SafeFunction TRUE at once (RUN). When SafeFunction falls in RUN
+//! the block latches |InValue| and monitors the stop: MONITOR while |InValue| is above
+//! TargetValue, where |InValue| must stay within the envelope E(t) falling linearly from
+//! |InValue| + Offset to TargetValue at MaxTime (else ERROR, diag 1 or 2 with messages
+//! 0x40C8 / 0x40C9); DELAYOUT while |InValue| is within ±TargetValue, until "Time after in
+//! Target" has run in the window (reset when InValue leaves it); SAFE when that time or
+//! MaxTime (at the latest) has elapsed. States RUN (1), STOP (2), SAFE (3), ERROR (4), RESET
+//! (5), DELAYOUT (8), MONITOR (9). Readings: docs/semantics.md EV1–EV7. One implementation
+//! for the four integer types.
+
+#![allow(non_camel_case_types)] // the ABI's names (FB_ENVELOPE_INT …)
+
+use super::{diag_message, magic, Analog};
+use crate::base::block::{Private, Registered};
+use crate::base::bools;
+use crate::base::envelope::Block;
+use crate::base::header::{param_crc, SL_PRIVATE_HEADER};
+use crate::base::time;
+use crate::base::types::*;
+
+/// Type tag of FB_ENVELOPE_INT (ABI-2 §10.6: sequential from 16 in the order of §10.3).
+pub const SL_TYPE_ENVELOPE_INT: u16 = 52;
+/// FB_ENVELOPE_UINT.
+pub const SL_TYPE_ENVELOPE_UINT: u16 = 53;
+/// FB_ENVELOPE_DINT.
+pub const SL_TYPE_ENVELOPE_DINT: u16 = 54;
+/// FB_ENVELOPE_UDINT.
+pub const SL_TYPE_ENVELOPE_UDINT: u16 = 55;
+
+/// State MONITOR (manual §4.32.2 "9.0"): SafeFunction fell, InValue outside the target
+/// window, checked against the envelope; SafeFunctionOut 1.
+pub const SL_STATE_ENVELOPE_MONITOR: u8 = 9;
+
+/// Diag value 1: "Underflow (InValue below the envelope)".
+pub const SL_DIAG_ENVELOPE_UNDERFLOW: u16 = 1;
+/// Diag value 2: "Overflow (InValue above the envelope)".
+pub const SL_DIAG_ENVELOPE_OVERFLOW: u16 = 2;
+/// Diag value 3: "InValue Error" (the manual defines no condition: never set, EV6).
+pub const SL_DIAG_ENVELOPE_INVALUE_ERROR: u16 = 3;
+/// Diag value 4: "MaxTimeExpired" (MaxTime leads to SAFE without error: never set, EV6).
+pub const SL_DIAG_ENVELOPE_MAX_TIME: u16 = 4;
+/// Diag message "InValueExpired AND InValue < 0" (parameters: InValue, MinAllowedValue).
+pub const SL_TEXT_ENVELOPE_UNDERFLOW: u16 = 0x40C8;
+/// Diag message "InValueExpired AND InValue > 0" (parameters: InValue, MaxAllowedValue).
+pub const SL_TEXT_ENVELOPE_OVERFLOW: u16 = 0x40C9;
+
+/// `wInputActive` of FB ENVELOPE: SafeFunction (bit 0) and InValue (bit 8), both required.
+pub const SL_ENVELOPE_ACTIVE: u16 = 0x0101;
+/// Largest `tTimeAfterInTarget` and `tMaxTime` (ms; ABI-2 §12.9, semantics C10).
+pub const SL_ENVELOPE_TIME_MAX: u32 = 65_535;
+
+/// Private state of FB ENVELOPE (64 bytes). Never written by the user.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+#[allow(non_snake_case)]
+pub struct SL_ENVELOPE_PRIVATE {
+    /// Common head (`tPhase`: the SafeFunction edge, where MaxTime and the envelope start).
+    pub stHeader: SL_PRIVATE_HEADER,
+    /// Latched Time after in Target, Max Time, Target Value, Offset.
+    pub adwParam: [u32; 4],
+    /// |InValue| latched at the SafeFunction edge (InValueLatch).
+    pub dwInValueLatch: u32,
+    /// Start of the "Time after in Target" timer (entry into DELAYOUT).
+    pub tInTarget: u32,
+    /// Diag message parameters 2 and 3 (InValue, ∓E(t)) latched at the ERROR entry.
+    pub adwPar: [u32; 2],
+    /// Latched `wInputActive`.
+    pub wActive: u16,
+    /// Reserved.
+    pub aReserved: [u8; 2],
+}
+
+/// FB ENVELOPE instance (ABI-2 §11.11), generic over the signal type `T`; `P1` is the
+/// reserved gap after InValue (16-bit: 2 bytes, 32-bit: none), the only place where the
+/// layouts differ beyond the width.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[allow(non_snake_case)]
+pub struct FB_ENVELOPE<T, const P1: usize> {
+    /// Offset 0. SafeFunction: FALSE starts the monitored stop (active bit 0, required).
+    pub bSafeFunction: SL_BOOL,
+    /// Offset 1. Reserved, keep 0.
+    pub aReserved0: [u8; 15],
+    /// Offset 16. FbRun of the owning group: TRUE = the block executes.
+    pub bRun: SL_BOOL,
+    /// Offset 17. ErrAck of the owning group.
+    pub bErrAck: SL_BOOL,
+    /// Offset 18. Reserved, keep 0.
+    pub aReserved1: [u8; 6],
+    /// At the analog input base 24: InValue, the monitored value (active bit 8, required).
+    pub nInValue: T,
+    /// Reserved up to 28 (16-bit: 2 bytes, 32-bit: none).
+    pub aReserved2: [u8; P1],
+    /// At 28: "Time after in Target (ms)", 0…65 535.
+    pub tTimeAfterInTarget: u32,
+    /// At 32: "Max Time (ms)", 1…65 535.
+    pub tMaxTime: u32,
+    /// At 36: "Target Value": the window −TargetValue…+TargetValue.
+    pub nTargetValue: u32,
+    /// At 40: "Offset", added to |InValue| for the envelope's start.
+    pub nOffset: u32,
+    /// At 44: bits 0 and 8 must be set (SL_ENVELOPE_ACTIVE).
+    pub wInputActive: u16,
+    /// At 46. Reserved up to the output base.
+    pub aReserved3: [u8; 2],
+    /// At the output base 48: Error, TRUE in ERROR only.
+    pub bError: SL_BOOL,
+    /// Output base + 1: SafeFunction Out, TRUE in RUN, DELAYOUT and MONITOR.
+    pub bSafeFunctionOut: SL_BOOL,
+    /// Reserved up to the info data.
+    pub aReserved4: [u8; 6],
+    /// Info + 0 (56): the manual's status value.
+    pub nState: u8,
+    /// Info + 1. Reserved.
+    pub aReserved5: [u8; 1],
+    /// Info + 2: diag value (1 underflow, 2 overflow) + library bits 13-15.
+    pub nDiag: u16,
+    /// Info + 4: Text ID of the latched diag message (0x40C8, 0x40C9), 0 = none.
+    pub nDiagTextId: u16,
+    /// Info + 6. Reserved.
+    pub aReserved6: [u8; 2],
+    /// Info + 8: message parameter 2 (InValue as a 32-bit pattern).
+    pub dwDiagPar2: u32,
+    /// Info + 12: message parameter 3 (−E(t) for 0x40C8, +E(t) for 0x40C9).
+    pub dwDiagPar3: u32,
+    /// Info + 16 (72): private state, 64 bytes: never write it.
+    pub stPrivate: SL_ENVELOPE_PRIVATE,
+}
+
+/// FB ENVELOPE, INT variant.
+pub type FB_ENVELOPE_INT = FB_ENVELOPE<i16, 2>;
+/// FB ENVELOPE, UINT variant.
+pub type FB_ENVELOPE_UINT = FB_ENVELOPE<u16, 2>;
+/// FB ENVELOPE, DINT variant.
+pub type FB_ENVELOPE_DINT = FB_ENVELOPE<i32, 0>;
+/// FB ENVELOPE, UDINT variant.
+pub type FB_ENVELOPE_UDINT = FB_ENVELOPE<u32, 0>;
+
+crate::base::block::block_states!(
+    /// The states of FB ENVELOPE, every variant (manual §4.32.2).
+    EnvelopeState: Run, Stop, Safe, Error, Reset, DelayOut,
+    Monitor = SL_STATE_ENVELOPE_MONITOR, "MONITOR"
+);
+
+/// Diag value texts (manual §4.32.2).
+const DIAG_VALUES: &[(u16, &str)] = &[
+    (0, "No diagnostic information"),
+    (
+        SL_DIAG_ENVELOPE_UNDERFLOW,
+        "Underflow (InValue below the envelope)",
+    ),
+    (
+        SL_DIAG_ENVELOPE_OVERFLOW,
+        "Overflow (InValue above the envelope)",
+    ),
+    (SL_DIAG_ENVELOPE_INVALUE_ERROR, "InValue Error"),
+    (SL_DIAG_ENVELOPE_MAX_TIME, "MaxTimeExpired"),
+];
+
+crate::impl_member!([T: Analog, const P1: usize] FB_ENVELOPE<T, P1> {
+    info: crate::blocks::analog::variant_info!(T, "ENVELOPE", EnvelopeState, DIAG_VALUES;
+        INT = SL_TYPE_ENVELOPE_INT, UINT = SL_TYPE_ENVELOPE_UINT, DINT = SL_TYPE_ENVELOPE_DINT, UDINT = SL_TYPE_ENVELOPE_UDINT),
+    state: EnvelopeState,
+    private: SL_ENVELOPE_PRIVATE,
+    input: [bSafeFunction, nInValue],
+    param: [tTimeAfterInTarget, tMaxTime, nTargetValue, nOffset, wInputActive],
+    output: [bError, bSafeFunctionOut],
+    info_fields: [nDiagTextId, dwDiagPar2, dwDiagPar3],
+});
+
+impl<T: Analog, const P1: usize> FB_ENVELOPE<T, P1> {
+    /// An all-zero instance (valid: it initialises itself on the first cycle, ABI §3.6).
+    pub const fn zeroed() -> Self {
+        Self {
+            bSafeFunction: 0,
+            aReserved0: [0; 15],
+            bRun: 0,
+            bErrAck: 0,
+            aReserved1: [0; 6],
+            nInValue: T::ZERO,
+            aReserved2: [0; P1],
+            tTimeAfterInTarget: 0,
+            tMaxTime: 0,
+            nTargetValue: 0,
+            nOffset: 0,
+            wInputActive: 0,
+            aReserved3: [0; 2],
+            bError: 0,
+            bSafeFunctionOut: 0,
+            aReserved4: [0; 6],
+            nState: 0,
+            aReserved5: [0; 1],
+            nDiag: 0,
+            nDiagTextId: 0,
+            aReserved6: [0; 2],
+            dwDiagPar2: 0,
+            dwDiagPar3: 0,
+            stPrivate: SL_ENVELOPE_PRIVATE {
+                stHeader: SL_PRIVATE_HEADER::ZERO,
+                adwParam: [0; 4],
+                dwInValueLatch: 0,
+                tInTarget: 0,
+                adwPar: [0; 2],
+                wActive: 0,
+                aReserved: [0; 2],
+            },
+        }
+    }
+}
+
+impl<T: Analog, const P1: usize> Default for FB_ENVELOPE<T, P1> {
+    fn default() -> Self {
+        Self::zeroed()
+    }
+}
+
+/// Parameters as the user wrote them.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct EnvelopeParams {
+    active: u16,
+    values: [u32; 4],
+}
+
+/// Indices of the latched values (`adwParam`): the two times, then TargetValue and Offset.
+const IN_TARGET_TIME: usize = 0;
+const MAX_TIME: usize = 1;
+
+/// One cycle's inputs: SafeFunction after decoding, InValue exact.
+#[derive(Clone, Copy, Debug)]
+pub struct EnvelopeIn {
+    safe_function: bool,
+    value: i128,
+}
+
+/// The envelope at `t` ms after the SafeFunction edge (ABI-2 §11.11, semantics EV3): the
+/// straight line from `start` at 0 to `target` at `max_time`, as one quotient rounded down
+/// (never above the exact line), never below `target`.
+fn envelope_at(start: u64, target: u64, t: u32, max_time: u32) -> u64 {
+    let (t, max) = (u64::from(t.min(max_time)), u64::from(max_time.max(1)));
+    // start, target < 2^33 and t ≤ max < 2^16: the products stay below 2^50.
+    ((start * (max - t) + target * t) / max).max(target)
+}
+
+impl<T: Analog, const P1: usize> FB_ENVELOPE<T, P1> {
+    /// The next state with SafeFunction FALSE after the edge (MONITOR or DELAYOUT, or the
+    /// state being entered from RUN): MaxTime first, then the target window and its timer,
+    /// then the envelope (semantics EV2–EV5). A violation enters ERROR here, with its diag
+    /// value and message parameters, and returns ERROR.
+    fn monitor(&mut self, value: i128, now: u32) -> u8 {
+        let p = self.private();
+        let [in_target_time, max_time, target, offset] = p.adwParam;
+        let t = time::elapsed(now, p.stHeader.tPhase);
+        if t >= max_time {
+            return SL_STATE_SAFE;
+        }
+        let magnitude = value.unsigned_abs();
+        if magnitude <= u128::from(target) {
+            if p.stHeader.nState != SL_STATE_DELAYOUT {
+                self.private_mut().tInTarget = now;
+            }
+            let start = self.private().tInTarget;
+            return if time::reached(now, start, in_target_time) {
+                SL_STATE_SAFE
+            } else {
+                SL_STATE_DELAYOUT
+            };
+        }
+        let start = u64::from(p.dwInValueLatch) + u64::from(offset);
+        let limit = envelope_at(start, u64::from(target), t, max_time);
+        if magnitude <= u128::from(limit) {
+            return SL_STATE_ENVELOPE_MONITOR;
+        }
+        // |InValue| > E(t) ≥ 0, so InValue ≠ 0 and ∓E(t) lies within the range of T.
+        let (diag, bound) = if value < 0 {
+            (SL_DIAG_ENVELOPE_UNDERFLOW, -i128::from(limit))
+        } else {
+            (SL_DIAG_ENVELOPE_OVERFLOW, i128::from(limit))
+        };
+        let p = self.private_mut();
+        p.adwPar = [T::narrow(value).to_bits(), T::narrow(bound).to_bits()];
+        p.stHeader.enter_error(diag);
+        SL_STATE_ERROR
+    }
+}
+
+/// SafeFunctionOut is on in these states.
+const fn output_on(state: u8) -> bool {
+    state == SL_STATE_RUN || state == SL_STATE_DELAYOUT || state == SL_STATE_ENVELOPE_MONITOR
+}
+
+impl<T: Analog, const P1: usize> Block for FB_ENVELOPE<T, P1> {
+    const MAGIC: u16 = magic(<Self as Registered>::INFO.tag);
+    type Params = EnvelopeParams;
+    type In = EnvelopeIn;
+
+    #[inline(always)]
+    fn live_params(&self) -> EnvelopeParams {
+        EnvelopeParams {
+            active: self.wInputActive,
+            values: [
+                self.tTimeAfterInTarget,
+                self.tMaxTime,
+                self.nTargetValue,
+                self.nOffset,
+            ],
+        }
+    }
+    #[inline(always)]
+    fn latched_params(&self) -> EnvelopeParams {
+        let p = self.private();
+        EnvelopeParams {
+            active: p.wActive,
+            values: p.adwParam,
+        }
+    }
+    /// Both inputs active and nothing else (ABI-2 §10.5); both times ≤ 65 535 ms, MaxTime
+    /// ≥ 1 (ABI-2 §11.11, §12.9).
+    fn params_valid(p: &EnvelopeParams) -> bool {
+        p.active == SL_ENVELOPE_ACTIVE
+            && p.values[IN_TARGET_TIME] <= SL_ENVELOPE_TIME_MAX
+            && (1..=SL_ENVELOPE_TIME_MAX).contains(&p.values[MAX_TIME])
+    }
+    fn store_params(&mut self, p: &EnvelopeParams) {
+        let q = self.private_mut();
+        q.wActive = p.active;
+        q.adwParam = p.values;
+    }
+    fn latched_crc(&self) -> u16 {
+        let p = self.private();
+        let [a, b, c, d] = p.adwParam;
+        param_crc(
+            Self::MAGIC,
+            p.wActive as u8,
+            (p.wActive >> 8) as u8,
+            0,
+            &[
+                a as u16,
+                (a >> 16) as u16,
+                b as u16,
+                (b >> 16) as u16,
+                c as u16,
+                (c >> 16) as u16,
+                d as u16,
+                (d >> 16) as u16,
+            ],
+        )
+    }
+    /// An invalid SafeFunction byte reads FALSE, the request for the monitored stop (ABI-2
+    /// §12.7).
+    #[inline(always)]
+    fn decode(&mut self) -> (EnvelopeIn, bool) {
+        let raw = bools::pack([self.bSafeFunction]);
+        (
+            EnvelopeIn {
+                safe_function: bools::logical(raw, 1, 0) != 0,
+                value: self.nInValue.wide(),
+            },
+            raw.invalid != 0,
+        )
+    }
+    /// STOP → run and RESET → run: SafeFunction TRUE → RUN, else SAFE (there was no edge to
+    /// monitor, semantics EV1).
+    fn start(&mut self, inp: &EnvelopeIn, now: u32) {
+        self.private_mut().stHeader.nState = SL_STATE_SAFE;
+        self.step(inp, now);
+    }
+    #[inline(always)]
+    fn step(&mut self, inp: &EnvelopeIn, now: u32) -> Status {
+        let state = self.private().stHeader.nState;
+        let next = if inp.safe_function {
+            SL_STATE_RUN
+        } else {
+            match state {
+                SL_STATE_RUN => {
+                    let p = self.private_mut();
+                    p.dwInValueLatch = inp.value.unsigned_abs() as u32;
+                    p.stHeader.tPhase = now;
+                    self.monitor(inp.value, now)
+                }
+                SL_STATE_DELAYOUT | SL_STATE_ENVELOPE_MONITOR => self.monitor(inp.value, now),
+                _ => SL_STATE_SAFE,
+            }
+        };
+        if next == SL_STATE_ERROR {
+            return Status::Ok;
+        }
+        // SafeFunctionOut switching on is where the latched parameters are verified (C3).
+        if output_on(next) && !output_on(state) && !self.params_intact() {
+            self.private_mut().stHeader.enter_error(SL_DIAG_CORRUPT);
+            return Status::Corrupt;
+        }
+        self.private_mut().stHeader.nState = next;
+        Status::Ok
+    }
+    /// Envelope violations are events: nothing remains (ABI-2 §12.5).
+    fn error_remains(&mut self, _inp: &EnvelopeIn) -> bool {
+        false
+    }
+    #[inline(always)]
+    fn write_outputs(&mut self) {
+        let p = *self.private();
+        let h = p.stHeader;
+        self.bError = u8::from(h.nState == SL_STATE_ERROR);
+        self.bSafeFunctionOut = u8::from(output_on(h.nState));
+        self.nState = h.nState;
+        self.nDiag = h.wDiag;
+        (self.nDiagTextId, self.dwDiagPar2, self.dwDiagPar3) = diag_message(
+            &h,
+            &[
+                (SL_DIAG_ENVELOPE_UNDERFLOW, SL_TEXT_ENVELOPE_UNDERFLOW),
+                (SL_DIAG_ENVELOPE_OVERFLOW, SL_TEXT_ENVELOPE_OVERFLOW),
+            ],
+            p.adwPar,
+        );
+    }
+}

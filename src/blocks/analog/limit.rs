@@ -1,0 +1,350 @@
+//! FB LIMIT — manual §4.21; layout ABI-2 §11.4, rules ABI-2 §12.
+//!
+//! Checks AnalogIn against a minimum and a maximum, each taken from an input (active bit 9
+//! / 10 set: "If the FB inputs are active, they are used") or from a parameter (bit clear).
+//! RUN ⇔ Min ≤ AnalogIn ≤ Max (InLimit); otherwise SAFE with BelowMin = AnalogIn < Min and
+//! AboveMax = AnalogIn > Max; both directions automatic. Min > Max from the parameters
+//! alone is a configuration error (`SL_E_CONFIG`, ABI-2 §12.8); with an input involved it
+//! is the manual's ERROR, diag value 1, message 0x4090 (parameters 2 and 3: Min, Max), and
+//! it remains while Min > Max. States RUN (1), STOP (2), SAFE (3), ERROR (4), RESET (5).
+//! Readings: docs/semantics.md L1–L4. One implementation for the four integer types.
+
+#![allow(non_camel_case_types)] // the ABI's names (FB_LIMIT_INT …)
+
+use super::{diag_message, magic, Analog};
+use crate::base::block::{Private, Registered};
+use crate::base::envelope::Block;
+use crate::base::header::{param_crc, SL_PRIVATE_HEADER};
+use crate::base::types::*;
+
+/// Type tag of FB_LIMIT_INT (ABI-2 §10.6: sequential from 16 in the order of §10.3).
+pub const SL_TYPE_LIMIT_INT: u16 = 36;
+/// FB_LIMIT_UINT.
+pub const SL_TYPE_LIMIT_UINT: u16 = 37;
+/// FB_LIMIT_DINT.
+pub const SL_TYPE_LIMIT_DINT: u16 = 38;
+/// FB_LIMIT_UDINT.
+pub const SL_TYPE_LIMIT_UDINT: u16 = 39;
+
+/// Diag value 1: MinValue is greater than MaxValue.
+pub const SL_DIAG_LIMIT_MIN_ABOVE_MAX: u16 = 1;
+/// Diag message "MinValue is greater than MaxValue" (parameters: MinValue, MaxValue).
+pub const SL_TEXT_LIMIT_MIN_ABOVE_MAX: u16 = 0x4090;
+
+/// `wInputActive` bit of AnalogIn (required).
+pub const SL_LIMIT_ACTIVE_ANALOGIN: u16 = 1 << 8;
+/// `wInputActive` bit of MinValue: set = the input is the minimum, clear = `nMinimumValue`.
+pub const SL_LIMIT_ACTIVE_MINVALUE: u16 = 1 << 9;
+/// `wInputActive` bit of MaxValue: set = the input is the maximum, clear = `nMaximumValue`.
+pub const SL_LIMIT_ACTIVE_MAXVALUE: u16 = 1 << 10;
+
+/// Private state of FB LIMIT (48 bytes). Never written by the user.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+#[allow(non_snake_case)]
+pub struct SL_LIMIT_PRIVATE {
+    /// Common head (`wAux` bit 0: below, bit 1: above the limits in SAFE).
+    pub stHeader: SL_PRIVATE_HEADER,
+    /// Latched `wInputActive`.
+    pub wActive: u16,
+    /// Reserved.
+    pub aReserved: [u8; 2],
+    /// Latched `nMinimumValue`, `nMaximumValue` as 32-bit patterns.
+    pub adwLimit: [u32; 2],
+    /// Diag message parameters 2 and 3 (Min, Max) latched at the ERROR entry.
+    pub adwPar: [u32; 2],
+}
+
+/// FB LIMIT instance (ABI-2 §11.4), generic over the signal type `T`; `P1` is the reserved
+/// gap after `wInputActive` that makes the 16- and 32-bit layouts differ.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[allow(non_snake_case)]
+pub struct FB_LIMIT<T, const P1: usize> {
+    /// Offset 0. Reserved, keep 0 (no BOOL inputs).
+    pub aReserved0: [u8; 16],
+    /// Offset 16. FbRun of the owning group: TRUE = the block executes.
+    pub bRun: SL_BOOL,
+    /// Offset 17. ErrAck of the owning group.
+    pub bErrAck: SL_BOOL,
+    /// Offset 18. Reserved, keep 0.
+    pub aReserved1: [u8; 6],
+    /// At the analog input base 24: AnalogIn, the value checked (active bit 8, required).
+    pub nAnalogIn: T,
+    /// At 24 + W: MinValue, the minimum when active bit 9 is set.
+    pub nMinValue: T,
+    /// At 24 + 2W: MaxValue, the maximum when active bit 10 is set.
+    pub nMaxValue: T,
+    /// At 24 + 3W: "Minimum Value", the minimum when active bit 9 is clear.
+    pub nMinimumValue: T,
+    /// At 24 + 4W: "Maximum Value", the maximum when active bit 10 is clear.
+    pub nMaximumValue: T,
+    /// At 24 + 5W: bit 8 (AnalogIn) must be set; bits 9, 10 choose input or parameter.
+    pub wInputActive: u16,
+    /// Reserved up to the output base (16-bit: 4 bytes, 32-bit: 2).
+    pub aReserved2: [u8; P1],
+    /// At the output base (16-bit 40, 32-bit 48): Error, TRUE in ERROR only.
+    pub bError: SL_BOOL,
+    /// Output base + 1: InLimit, TRUE in RUN (Min ≤ AnalogIn ≤ Max).
+    pub bInLimit: SL_BOOL,
+    /// Output base + 2: BelowMin, in SAFE: AnalogIn < Min.
+    pub bBelowMin: SL_BOOL,
+    /// Output base + 3: AboveMax, in SAFE: AnalogIn > Max.
+    pub bAboveMax: SL_BOOL,
+    /// Reserved up to the info data.
+    pub aReserved3: [u8; 4],
+    /// Info + 0: the manual's status value (RUN, STOP, SAFE, ERROR, RESET).
+    pub nState: u8,
+    /// Info + 1. Reserved.
+    pub aReserved4: [u8; 1],
+    /// Info + 2: diag value (1: MinValue is greater than MaxValue) + library bits 13-15.
+    pub nDiag: u16,
+    /// Info + 4: Text ID of the latched diag message (0x4090), 0 = none.
+    pub nDiagTextId: u16,
+    /// Info + 6. Reserved.
+    pub aReserved5: [u8; 2],
+    /// Info + 8: message parameter 2 (Min as a 32-bit pattern).
+    pub dwDiagPar2: u32,
+    /// Info + 12: message parameter 3 (Max).
+    pub dwDiagPar3: u32,
+    /// Info + 16: private state, 48 bytes: never write it.
+    pub stPrivate: SL_LIMIT_PRIVATE,
+}
+
+/// FB LIMIT, INT variant.
+pub type FB_LIMIT_INT = FB_LIMIT<i16, 4>;
+/// FB LIMIT, UINT variant.
+pub type FB_LIMIT_UINT = FB_LIMIT<u16, 4>;
+/// FB LIMIT, DINT variant.
+pub type FB_LIMIT_DINT = FB_LIMIT<i32, 2>;
+/// FB LIMIT, UDINT variant.
+pub type FB_LIMIT_UDINT = FB_LIMIT<u32, 2>;
+
+// The ABI-2 §11.4 numbers of the two layouts.
+const _: () = {
+    use core::mem::{offset_of, size_of};
+    assert!(offset_of!(FB_LIMIT_INT, wInputActive) == 34 && offset_of!(FB_LIMIT_INT, bError) == 40);
+    assert!(offset_of!(FB_LIMIT_UDINT, wInputActive) == 44);
+    assert!(offset_of!(FB_LIMIT_UDINT, bError) == 48);
+    assert!(offset_of!(FB_LIMIT_INT, stPrivate) == 64);
+    assert!(offset_of!(FB_LIMIT_DINT, stPrivate) == 72);
+    assert!(size_of::<SL_LIMIT_PRIVATE>() == 48);
+};
+
+crate::base::block::block_states!(
+    /// The states of FB LIMIT, every variant (manual §4.21.2).
+    LimitState: Run, Stop, Safe, Error, Reset
+);
+
+/// Diag value texts (manual §4.21.2).
+const DIAG_VALUES: &[(u16, &str)] = &[
+    (0, "No diagnostic information"),
+    (
+        SL_DIAG_LIMIT_MIN_ABOVE_MAX,
+        "MinValue is greater than MaxValue",
+    ),
+];
+
+crate::impl_member!([T: Analog, const P1: usize] FB_LIMIT<T, P1> {
+    info: crate::blocks::analog::variant_info!(T, "LIMIT", LimitState, DIAG_VALUES;
+        INT = SL_TYPE_LIMIT_INT, UINT = SL_TYPE_LIMIT_UINT, DINT = SL_TYPE_LIMIT_DINT, UDINT = SL_TYPE_LIMIT_UDINT),
+    state: LimitState,
+    private: SL_LIMIT_PRIVATE,
+    input: [nAnalogIn, nMinValue, nMaxValue],
+    param: [nMinimumValue, nMaximumValue, wInputActive],
+    output: [bError, bInLimit, bBelowMin, bAboveMax],
+    info_fields: [nDiagTextId, dwDiagPar2, dwDiagPar3],
+});
+
+impl<T: Analog, const P1: usize> FB_LIMIT<T, P1> {
+    /// An all-zero instance (valid: it initialises itself on the first cycle, ABI §3.6).
+    pub const fn zeroed() -> Self {
+        Self {
+            aReserved0: [0; 16],
+            bRun: 0,
+            bErrAck: 0,
+            aReserved1: [0; 6],
+            nAnalogIn: T::ZERO,
+            nMinValue: T::ZERO,
+            nMaxValue: T::ZERO,
+            nMinimumValue: T::ZERO,
+            nMaximumValue: T::ZERO,
+            wInputActive: 0,
+            aReserved2: [0; P1],
+            bError: 0,
+            bInLimit: 0,
+            bBelowMin: 0,
+            bAboveMax: 0,
+            aReserved3: [0; 4],
+            nState: 0,
+            aReserved4: [0; 1],
+            nDiag: 0,
+            nDiagTextId: 0,
+            aReserved5: [0; 2],
+            dwDiagPar2: 0,
+            dwDiagPar3: 0,
+            stPrivate: SL_LIMIT_PRIVATE {
+                stHeader: SL_PRIVATE_HEADER::ZERO,
+                wActive: 0,
+                aReserved: [0; 2],
+                adwLimit: [0; 2],
+                adwPar: [0; 2],
+            },
+        }
+    }
+}
+
+impl<T: Analog, const P1: usize> Default for FB_LIMIT<T, P1> {
+    fn default() -> Self {
+        Self::zeroed()
+    }
+}
+
+/// Parameters as the user wrote them (the limits as 32-bit patterns of `T`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct LimitParams {
+    active: u16,
+    limits: [u32; 2],
+}
+
+/// One cycle's inputs: AnalogIn and the effective limits, exact.
+#[derive(Clone, Copy, Debug)]
+pub struct LimitIn {
+    value: i128,
+    min: i128,
+    max: i128,
+}
+
+/// `wAux` in SAFE: AnalogIn below the minimum / above the maximum.
+const BELOW: u16 = 1;
+const ABOVE: u16 = 2;
+
+/// The value of a `T` stored as its pattern.
+fn wide<T: Analog>(bits: u32) -> i128 {
+    T::from_bits(bits).wide()
+}
+
+impl<T: Analog, const P1: usize> Block for FB_LIMIT<T, P1> {
+    const MAGIC: u16 = magic(<Self as Registered>::INFO.tag);
+    type Params = LimitParams;
+    type In = LimitIn;
+
+    #[inline(always)]
+    fn live_params(&self) -> LimitParams {
+        LimitParams {
+            active: self.wInputActive,
+            limits: [self.nMinimumValue.to_bits(), self.nMaximumValue.to_bits()],
+        }
+    }
+    #[inline(always)]
+    fn latched_params(&self) -> LimitParams {
+        let p = self.private();
+        LimitParams {
+            active: p.wActive,
+            limits: p.adwLimit,
+        }
+    }
+    /// AnalogIn active, no bit beyond 8–10 (ABI-2 §10.5); both limits from the parameters
+    /// with Minimum > Maximum is a parameter-only check (ABI-2 §12.8, semantics L2).
+    fn params_valid(p: &LimitParams) -> bool {
+        let inputs = SL_LIMIT_ACTIVE_MINVALUE | SL_LIMIT_ACTIVE_MAXVALUE;
+        let known = SL_LIMIT_ACTIVE_ANALOGIN | inputs;
+        p.active & !known == 0
+            && p.active & SL_LIMIT_ACTIVE_ANALOGIN != 0
+            && (p.active & inputs != 0 || wide::<T>(p.limits[0]) <= wide::<T>(p.limits[1]))
+    }
+    fn store_params(&mut self, p: &LimitParams) {
+        let q = self.private_mut();
+        q.wActive = p.active;
+        q.adwLimit = p.limits;
+    }
+    fn latched_crc(&self) -> u16 {
+        let p = self.private();
+        let [min, max] = p.adwLimit;
+        param_crc(
+            Self::MAGIC,
+            0,
+            0,
+            0,
+            &[
+                p.wActive,
+                min as u16,
+                (min >> 16) as u16,
+                max as u16,
+                (max >> 16) as u16,
+            ],
+        )
+    }
+    #[inline(always)]
+    fn decode(&mut self) -> (LimitIn, bool) {
+        let p = self.private();
+        let pick = |bit: u16, input: T, param: u32| {
+            if p.wActive & bit != 0 {
+                input.wide()
+            } else {
+                wide::<T>(param)
+            }
+        };
+        (
+            LimitIn {
+                value: self.nAnalogIn.wide(),
+                min: pick(SL_LIMIT_ACTIVE_MINVALUE, self.nMinValue, p.adwLimit[0]),
+                max: pick(SL_LIMIT_ACTIVE_MAXVALUE, self.nMaxValue, p.adwLimit[1]),
+            },
+            false,
+        )
+    }
+    fn start(&mut self, inp: &LimitIn, now: u32) {
+        self.step(inp, now);
+    }
+    #[inline(always)]
+    fn step(&mut self, inp: &LimitIn, _now: u32) -> Status {
+        if inp.min > inp.max {
+            let p = self.private_mut();
+            p.adwPar = [T::narrow(inp.min).to_bits(), T::narrow(inp.max).to_bits()];
+            p.stHeader.enter_error(SL_DIAG_LIMIT_MIN_ABOVE_MAX);
+            return Status::Ok;
+        }
+        let in_limit = inp.min <= inp.value && inp.value <= inp.max;
+        // InLimit switching on is where the latched parameters are verified (C3).
+        if in_limit && self.private().stHeader.nState != SL_STATE_RUN && !self.params_intact() {
+            self.private_mut().stHeader.enter_error(SL_DIAG_CORRUPT);
+            return Status::Corrupt;
+        }
+        let h = &mut self.private_mut().stHeader;
+        if in_limit {
+            h.nState = SL_STATE_RUN;
+            h.wAux = 0;
+        } else {
+            h.nState = SL_STATE_SAFE;
+            h.wAux = if inp.value < inp.min { BELOW } else { ABOVE };
+        }
+        Status::Ok
+    }
+    /// The limits still cross (ABI-2 §12.5).
+    fn error_remains(&mut self, inp: &LimitIn) -> bool {
+        inp.min > inp.max
+    }
+    #[inline(always)]
+    fn write_outputs(&mut self) {
+        let p = *self.private();
+        let h = p.stHeader;
+        let (error, run, safe) = match h.nState {
+            SL_STATE_ERROR => (true, false, false),
+            SL_STATE_RUN => (false, true, false),
+            SL_STATE_SAFE => (false, false, true),
+            _ => (false, false, false),
+        };
+        self.bError = u8::from(error);
+        self.bInLimit = u8::from(run);
+        self.bBelowMin = u8::from(safe && h.wAux == BELOW);
+        self.bAboveMax = u8::from(safe && h.wAux == ABOVE);
+        self.nState = h.nState;
+        self.nDiag = h.wDiag;
+        (self.nDiagTextId, self.dwDiagPar2, self.dwDiagPar3) = diag_message(
+            &h,
+            &[(SL_DIAG_LIMIT_MIN_ABOVE_MAX, SL_TEXT_LIMIT_MIN_ABOVE_MAX)],
+            p.adwPar,
+        );
+    }
+}

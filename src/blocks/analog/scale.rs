@@ -1,0 +1,492 @@
+//! FB SCALE — manual §4.23; layout ABI-2 §11.6, rules ABI-2 §12.
+//!
+//! `AnalogOut = round((±AnalogIn) · Numerator ÷ Denominator) + Offset` in the manual's
+//! processing order (negation, multiplication, division, offset; with
+//! `SL_OPT_SCALE_DIVISION_FIRST` the division before the multiplication), every step exact.
+//! The factors are 32-bit (T32): a negation or product outside T32 is ERROR diag value 3
+//! (message 0x40B2), a quotient outside T32 diag value 4 (0x40B3), the result outside the
+//! variant's type diag value 1 / 2 (0x40B0 / 0x40B1); parameter 2 of every message is
+//! AnalogIn. The quotient is rounded per `nRounding` with FB DIV's rounding
+//! (`arith::divide`). The error remains while the current input still computes out of
+//! range. StuckAtError (`tWatchdog` ≠ 0): AnalogIn unchanged for `tWatchdog` ms in RUN; not
+//! an FB error. States RUN (1), STOP (2), ERROR (4), RESET (5): no SAFE.
+//! Readings: docs/semantics.md SC1–SC5. One implementation for the four integer types.
+
+#![allow(non_camel_case_types)] // the ABI's names (FB_SCALE_INT …)
+
+use super::arith::{divide, SL_ROUNDING_ROUND};
+use super::{diag_message, in_range, magic, Analog};
+use super::{SL_DIAG_VALUE_OVERFLOW, SL_DIAG_VALUE_UNDERFLOW};
+use crate::base::block::{Private, Registered};
+use crate::base::envelope::Block;
+use crate::base::header::{param_crc, SL_PRIVATE_HEADER};
+use crate::base::time;
+use crate::base::types::*;
+
+/// Type tag of FB_SCALE_INT (ABI-2 §10.6: sequential from 16 in the order of §10.3).
+pub const SL_TYPE_SCALE_INT: u16 = 40;
+/// FB_SCALE_UINT.
+pub const SL_TYPE_SCALE_UINT: u16 = 41;
+/// FB_SCALE_DINT.
+pub const SL_TYPE_SCALE_DINT: u16 = 42;
+/// FB_SCALE_UDINT.
+pub const SL_TYPE_SCALE_UDINT: u16 = 43;
+
+/// `dwOptions`: "Multiplication First" FALSE — divide by `nDenominator` before multiplying
+/// by `nNumerator` (default: multiplication first).
+pub const SL_OPT_SCALE_DIVISION_FIRST: u32 = 1 << 8;
+
+/// Diag value 3: "A 32-bit overflow occurred during the multiplication."
+pub const SL_DIAG_SCALE_MUL_OVERFLOW: u16 = 3;
+/// Diag value 4: "A 32-bit overflow occurred during the division due to rounding."
+pub const SL_DIAG_SCALE_DIV_OVERFLOW: u16 = 4;
+
+/// Diag message "The output AnalogOut has an underflow" (parameter 2: AnalogIn).
+pub const SL_TEXT_SCALE_UNDERFLOW: u16 = 0x40B0;
+/// Diag message "The output AnalogOut has an overflow" (parameter 2: AnalogIn).
+pub const SL_TEXT_SCALE_OVERFLOW: u16 = 0x40B1;
+/// Diag message "A 32-bit overflow occurred during the multiplication." (parameter 2: AnalogIn).
+pub const SL_TEXT_SCALE_MUL_OVERFLOW: u16 = 0x40B2;
+/// Diag message "A 32-bit overflow occurred during the division due to rounding."
+/// (parameter 2: AnalogIn).
+pub const SL_TEXT_SCALE_DIV_OVERFLOW: u16 = 0x40B3;
+
+/// `wInputActive` bit of AnalogIn (required, the only bit).
+pub const SL_SCALE_ACTIVE_ANALOGIN: u16 = 1 << 8;
+/// `wInputNegated` bit of AnalogIn: INT/DINT ×(−1), UINT/UDINT XOR all ones.
+pub const SL_SCALE_NEGATE_ANALOGIN: u16 = 1 << 8;
+
+/// Private state of FB SCALE (72 bytes). Never written by the user. The header's `tPhase`
+/// is the start of the StuckAt watchdog, `wAux` bit 0 its expiry.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+#[allow(non_snake_case)]
+pub struct SL_SCALE_PRIVATE {
+    /// Common head.
+    pub stHeader: SL_PRIVATE_HEADER,
+    /// Latched `tWatchdog`.
+    pub tWatchdog: u32,
+    /// Latched `nNumerator`, `nDenominator`, `nOffset` as 32-bit patterns.
+    pub adwFactor: [u32; 3],
+    /// Latched `dwOptions`.
+    pub dwOptions: u32,
+    /// Latched `nRounding`.
+    pub wRounding: u16,
+    /// Latched `wInputActive`.
+    pub wActive: u16,
+    /// Latched `wInputNegated`.
+    pub wNegated: u16,
+    /// Reserved.
+    pub aReserved0: [u8; 2],
+    /// The result of the last RUN cycle as a 32-bit pattern.
+    pub dwOut: u32,
+    /// AnalogIn of the previous RUN cycle (the watchdog restarts when it changes).
+    pub dwLastIn: u32,
+    /// Diag message parameter 2 (AnalogIn) latched at the ERROR entry.
+    pub dwPar: u32,
+    /// Reserved.
+    pub aReserved1: [u8; 4],
+}
+
+/// FB SCALE instance (ABI-2 §11.6), generic over the signal type `T` and the type `T32` of
+/// the scaling parameters (ABI-2 §10.3); `P1` (after AnalogIn) and `P2` (after AnalogOut)
+/// are the reserved gaps that make the 16- and 32-bit layouts differ.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[allow(non_snake_case)]
+pub struct FB_SCALE<T, T32, const P1: usize, const P2: usize> {
+    /// Offset 0. Reserved, keep 0 (no BOOL inputs).
+    pub aReserved0: [u8; 16],
+    /// Offset 16. FbRun of the owning group: TRUE = the block executes.
+    pub bRun: SL_BOOL,
+    /// Offset 17. ErrAck of the owning group.
+    pub bErrAck: SL_BOOL,
+    /// Offset 18. Reserved, keep 0.
+    pub aReserved1: [u8; 6],
+    /// Offset 24. AnalogIn, the value scaled (active bit 8, required).
+    pub nAnalogIn: T,
+    /// Reserved up to 28 (16-bit: 2 bytes, 32-bit: none).
+    pub aReserved2: [u8; P1],
+    /// Offset 28. "watchdog (ms)": StuckAtError after this time without a change of
+    /// AnalogIn; 0 = off, at most SL_TIME_PARAM_MAX.
+    pub tWatchdog: u32,
+    /// Offset 32. "Nominator": the multiplication factor.
+    pub nNumerator: T32,
+    /// Offset 36. "Denominator": the division factor, not 0.
+    pub nDenominator: T32,
+    /// Offset 40. The scaling offset, added last.
+    pub nOffset: T32,
+    /// Offset 44. SL_OPT_SCALE_DIVISION_FIRST, no other bit.
+    pub dwOptions: u32,
+    /// Offset 48. "Division Rounding": SL_ROUNDING_FLOOR, _CEIL, _ROUND.
+    pub nRounding: u16,
+    /// Offset 50. Bit 8 (AnalogIn) must be set, no other.
+    pub wInputActive: u16,
+    /// Offset 52. Bit 8: AnalogIn negated; no other.
+    pub wInputNegated: u16,
+    /// Offset 54. Reserved.
+    pub aReserved3: [u8; 2],
+    /// Offset 56, the output base. Error, TRUE in ERROR only.
+    pub bError: SL_BOOL,
+    /// Offset 57. StuckAtError: in RUN, AnalogIn unchanged for `tWatchdog` (no FB error).
+    pub bStuckAtError: SL_BOOL,
+    /// Offset 58. Reserved.
+    pub aReserved4: [u8; 6],
+    /// Offset 64. AnalogOut, the scaled value in RUN, else 0.
+    pub nAnalogOut: T,
+    /// Reserved up to the info data (16-bit: 6 bytes, 32-bit: 4).
+    pub aReserved5: [u8; P2],
+    /// Offset 72. The manual's status value (RUN, STOP, ERROR, RESET).
+    pub nState: u8,
+    /// Offset 73. Reserved.
+    pub aReserved6: [u8; 1],
+    /// Offset 74. Diag value (1 underflow, 2 overflow, 3 multiplication, 4 division) +
+    /// library bits 13-15.
+    pub nDiag: u16,
+    /// Offset 76. Text ID of the latched diag message (0x40B0–0x40B3), 0 = none.
+    pub nDiagTextId: u16,
+    /// Offset 78. Reserved.
+    pub aReserved7: [u8; 2],
+    /// Offset 80. Message parameter 2 (AnalogIn as a 32-bit pattern).
+    pub dwDiagPar2: u32,
+    /// Offset 84. Message parameter 3 (always 0: "-" in the manual).
+    pub dwDiagPar3: u32,
+    /// Offset 88. Private state, 72 bytes: never write it.
+    pub stPrivate: SL_SCALE_PRIVATE,
+}
+
+/// FB SCALE, INT variant.
+pub type FB_SCALE_INT = FB_SCALE<i16, i32, 2, 6>;
+/// FB SCALE, UINT variant.
+pub type FB_SCALE_UINT = FB_SCALE<u16, u32, 2, 6>;
+/// FB SCALE, DINT variant.
+pub type FB_SCALE_DINT = FB_SCALE<i32, i32, 0, 4>;
+/// FB SCALE, UDINT variant.
+pub type FB_SCALE_UDINT = FB_SCALE<u32, u32, 0, 4>;
+
+// The ABI-2 §11.6 numbers (identical for both widths).
+const _: () = {
+    use core::mem::{offset_of, size_of};
+    assert!(offset_of!(FB_SCALE_INT, nNumerator) == 32 && offset_of!(FB_SCALE_INT, nOffset) == 40);
+    assert!(offset_of!(FB_SCALE_DINT, dwOptions) == 44);
+    assert!(offset_of!(FB_SCALE_DINT, nRounding) == 48);
+    assert!(offset_of!(FB_SCALE_UINT, wInputNegated) == 52);
+    assert!(offset_of!(FB_SCALE_UINT, bError) == 56 && offset_of!(FB_SCALE_UINT, nAnalogOut) == 64);
+    assert!(
+        offset_of!(FB_SCALE_INT, stPrivate) == 88 && offset_of!(FB_SCALE_UDINT, stPrivate) == 88
+    );
+    assert!(size_of::<SL_SCALE_PRIVATE>() == 72);
+};
+
+crate::base::block::block_states!(
+    /// The states of FB SCALE, every variant (manual §4.23.2): no SAFE.
+    ScaleState: Run, Stop, Error, Reset
+);
+
+/// Diag value texts (manual §4.23.2).
+const DIAG_VALUES: &[(u16, &str)] = &[
+    (0, "No diagnostic information"),
+    (
+        SL_DIAG_VALUE_UNDERFLOW,
+        "The output AnalogOut has an underflow (is less than the smallest possible value).",
+    ),
+    (
+        SL_DIAG_VALUE_OVERFLOW,
+        "The output AnalogOut has an overflow (is greater than the largest possible value).",
+    ),
+    (
+        SL_DIAG_SCALE_MUL_OVERFLOW,
+        "A 32-bit overflow occurred during the multiplication.",
+    ),
+    (
+        SL_DIAG_SCALE_DIV_OVERFLOW,
+        "A 32-bit overflow occurred during the division due to rounding.",
+    ),
+];
+
+/// Diag value → Text ID (manual §4.23.2 "Diag Message").
+const TEXTS: &[(u16, u16)] = &[
+    (SL_DIAG_VALUE_UNDERFLOW, SL_TEXT_SCALE_UNDERFLOW),
+    (SL_DIAG_VALUE_OVERFLOW, SL_TEXT_SCALE_OVERFLOW),
+    (SL_DIAG_SCALE_MUL_OVERFLOW, SL_TEXT_SCALE_MUL_OVERFLOW),
+    (SL_DIAG_SCALE_DIV_OVERFLOW, SL_TEXT_SCALE_DIV_OVERFLOW),
+];
+
+crate::impl_member!([T: Analog, T32: Analog, const P1: usize, const P2: usize] FB_SCALE<T, T32, P1, P2> {
+    info: crate::blocks::analog::variant_info!(T, "SCALE", ScaleState, DIAG_VALUES;
+        INT = SL_TYPE_SCALE_INT, UINT = SL_TYPE_SCALE_UINT, DINT = SL_TYPE_SCALE_DINT, UDINT = SL_TYPE_SCALE_UDINT),
+    state: ScaleState,
+    private: SL_SCALE_PRIVATE,
+    input: [nAnalogIn],
+    param: [tWatchdog, nNumerator, nDenominator, nOffset, dwOptions, nRounding, wInputActive, wInputNegated],
+    output: [bError, bStuckAtError, nAnalogOut],
+    info_fields: [nDiagTextId, dwDiagPar2, dwDiagPar3],
+});
+
+impl<T: Analog, T32: Analog, const P1: usize, const P2: usize> FB_SCALE<T, T32, P1, P2> {
+    /// An all-zero instance (valid: it initialises itself on the first cycle, ABI §3.6).
+    pub const fn zeroed() -> Self {
+        Self {
+            aReserved0: [0; 16],
+            bRun: 0,
+            bErrAck: 0,
+            aReserved1: [0; 6],
+            nAnalogIn: T::ZERO,
+            aReserved2: [0; P1],
+            tWatchdog: 0,
+            nNumerator: T32::ZERO,
+            nDenominator: T32::ZERO,
+            nOffset: T32::ZERO,
+            dwOptions: 0,
+            nRounding: 0,
+            wInputActive: 0,
+            wInputNegated: 0,
+            aReserved3: [0; 2],
+            bError: 0,
+            bStuckAtError: 0,
+            aReserved4: [0; 6],
+            nAnalogOut: T::ZERO,
+            aReserved5: [0; P2],
+            nState: 0,
+            aReserved6: [0; 1],
+            nDiag: 0,
+            nDiagTextId: 0,
+            aReserved7: [0; 2],
+            dwDiagPar2: 0,
+            dwDiagPar3: 0,
+            stPrivate: SL_SCALE_PRIVATE {
+                stHeader: SL_PRIVATE_HEADER::ZERO,
+                tWatchdog: 0,
+                adwFactor: [0; 3],
+                dwOptions: 0,
+                wRounding: 0,
+                wActive: 0,
+                wNegated: 0,
+                aReserved0: [0; 2],
+                dwOut: 0,
+                dwLastIn: 0,
+                dwPar: 0,
+                aReserved1: [0; 4],
+            },
+        }
+    }
+}
+
+impl<T: Analog, T32: Analog, const P1: usize, const P2: usize> Default
+    for FB_SCALE<T, T32, P1, P2>
+{
+    fn default() -> Self {
+        Self::zeroed()
+    }
+}
+
+/// Parameters as the user wrote them (the factors as 32-bit patterns of `T32`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct ScaleParams {
+    watchdog: u32,
+    factors: [u32; 3],
+    options: u32,
+    rounding: u16,
+    active: u16,
+    negated: u16,
+}
+
+/// One cycle's input: AnalogIn as a pattern and what it scales to.
+#[derive(Clone, Copy, Debug)]
+pub struct ScaleIn {
+    raw: u32,
+    /// The result in range (as a pattern), or the diag value of the error.
+    result: Result<u32, u16>,
+}
+
+/// `wAux`: the watchdog expired since the last change of AnalogIn.
+const STUCK: u16 = 1;
+
+/// The manual's processing order on the latched parameters, every step exact: negation,
+/// multiplication and division (either order) within T32, offset, range of `T`.
+fn scale<T: Analog, T32: Analog>(x: T, p: &SL_SCALE_PRIVATE) -> Result<u32, u16> {
+    let t32 = |v: i128, diag: u16| {
+        if (T32::MIN..=T32::MAX).contains(&v) {
+            Ok(v)
+        } else {
+            Err(diag)
+        }
+    };
+    let [num, den, off] = p.adwFactor.map(|f| T32::from_bits(f).wide());
+    if den == 0 {
+        // Refused when latched (SL_E_CONFIG): only a corrupted copy holds it.
+        return Err(SL_DIAG_CORRUPT);
+    }
+    let mut x = x.wide();
+    if p.wNegated & SL_SCALE_NEGATE_ANALOGIN != 0 {
+        // Signed: a multiplication by −1 (−(−2³¹) leaves T32: diag 3); unsigned: XOR with
+        // all ones, which is MAX − x.
+        x = t32(
+            if T::MIN < 0 { -x } else { T::MAX - x },
+            SL_DIAG_SCALE_MUL_OVERFLOW,
+        )?;
+    }
+    let mul = |v: i128| t32(v * num, SL_DIAG_SCALE_MUL_OVERFLOW);
+    let div = |v: i128| t32(divide(v, den, p.wRounding), SL_DIAG_SCALE_DIV_OVERFLOW);
+    let scaled = if p.dwOptions & SL_OPT_SCALE_DIVISION_FIRST != 0 {
+        mul(div(x)?)?
+    } else {
+        div(mul(x)?)?
+    };
+    in_range::<T>(scaled + off).map(|y| y.to_bits())
+}
+
+impl<T: Analog, T32: Analog, const P1: usize, const P2: usize> Block for FB_SCALE<T, T32, P1, P2> {
+    const MAGIC: u16 = magic(<Self as Registered>::INFO.tag);
+    type Params = ScaleParams;
+    type In = ScaleIn;
+
+    #[inline(always)]
+    fn live_params(&self) -> ScaleParams {
+        ScaleParams {
+            watchdog: self.tWatchdog,
+            factors: [
+                self.nNumerator.to_bits(),
+                self.nDenominator.to_bits(),
+                self.nOffset.to_bits(),
+            ],
+            options: self.dwOptions,
+            rounding: self.nRounding,
+            active: self.wInputActive,
+            negated: self.wInputNegated,
+        }
+    }
+    #[inline(always)]
+    fn latched_params(&self) -> ScaleParams {
+        let p = self.private();
+        ScaleParams {
+            watchdog: p.tWatchdog,
+            factors: p.adwFactor,
+            options: p.dwOptions,
+            rounding: p.wRounding,
+            active: p.wActive,
+            negated: p.wNegated,
+        }
+    }
+    /// AnalogIn active and nothing else, negation of AnalogIn only, the one option, a
+    /// known rounding, watchdog ≤ 65,535 ms (ABI-2 §12.9) and Denominator ≠ 0 (a
+    /// parameter-only check, ABI-2 §12.8, semantics SC2).
+    fn params_valid(p: &ScaleParams) -> bool {
+        p.active == SL_SCALE_ACTIVE_ANALOGIN
+            && p.negated & !SL_SCALE_NEGATE_ANALOGIN == 0
+            && p.options & !SL_OPT_SCALE_DIVISION_FIRST == 0
+            && p.rounding <= SL_ROUNDING_ROUND
+            && p.watchdog <= SL_TIME_PARAM_MAX
+            && p.factors[1] != 0
+    }
+    fn store_params(&mut self, p: &ScaleParams) {
+        let q = self.private_mut();
+        q.tWatchdog = p.watchdog;
+        q.adwFactor = p.factors;
+        q.dwOptions = p.options;
+        q.wRounding = p.rounding;
+        q.wActive = p.active;
+        q.wNegated = p.negated;
+    }
+    fn latched_crc(&self) -> u16 {
+        let p = self.private();
+        let [num, den, off] = p.adwFactor;
+        let words = |v: u32| [v as u16, (v >> 16) as u16];
+        let [w0, w1] = words(p.tWatchdog);
+        let [n0, n1] = words(num);
+        let [d0, d1] = words(den);
+        let [o0, o1] = words(off);
+        let [x0, x1] = words(p.dwOptions);
+        param_crc(
+            Self::MAGIC,
+            0,
+            0,
+            0,
+            &[
+                w0,
+                w1,
+                n0,
+                n1,
+                d0,
+                d1,
+                o0,
+                o1,
+                x0,
+                x1,
+                p.wRounding,
+                p.wActive,
+                p.wNegated,
+            ],
+        )
+    }
+    #[inline(always)]
+    fn decode(&mut self) -> (ScaleIn, bool) {
+        let x = self.nAnalogIn;
+        (
+            ScaleIn {
+                raw: x.to_bits(),
+                result: scale::<T, T32>(x, self.private()),
+            },
+            false,
+        )
+    }
+    /// STOP → run and RESET → RUN restart the watchdog (semantics SC4).
+    fn start(&mut self, inp: &ScaleIn, now: u32) {
+        let p = self.private_mut();
+        p.dwLastIn = inp.raw;
+        p.stHeader.tPhase = now;
+        p.stHeader.wAux = 0;
+        self.step(inp, now);
+    }
+    #[inline(always)]
+    fn step(&mut self, inp: &ScaleIn, now: u32) -> Status {
+        // Entering RUN is where the output starts to carry a value: verify the latched
+        // parameters first (C3).
+        let entering = self.private().stHeader.nState != SL_STATE_RUN;
+        if entering && inp.result.is_ok() && !self.params_intact() {
+            self.private_mut().stHeader.enter_error(SL_DIAG_CORRUPT);
+            return Status::Corrupt;
+        }
+        let p = self.private_mut();
+        match inp.result {
+            Ok(v) => {
+                p.dwOut = v;
+                p.stHeader.nState = SL_STATE_RUN;
+                if inp.raw != p.dwLastIn {
+                    p.dwLastIn = inp.raw;
+                    p.stHeader.tPhase = now;
+                    p.stHeader.wAux = 0;
+                } else if p.tWatchdog != 0 && time::reached(now, p.stHeader.tPhase, p.tWatchdog) {
+                    // Latched, not recomputed: it holds across a wrap of the elapsed time.
+                    p.stHeader.wAux = STUCK;
+                }
+            }
+            Err(diag) => {
+                p.dwOut = 0;
+                p.dwPar = inp.raw;
+                p.stHeader.enter_error(diag);
+                if diag == SL_DIAG_CORRUPT {
+                    return Status::Corrupt;
+                }
+            }
+        }
+        Status::Ok
+    }
+    /// The current input still computes out of range (ABI-2 §12.5).
+    fn error_remains(&mut self, inp: &ScaleIn) -> bool {
+        inp.result.is_err()
+    }
+    #[inline(always)]
+    fn write_outputs(&mut self) {
+        let p = *self.private();
+        let h = p.stHeader;
+        let run = h.nState == SL_STATE_RUN;
+        self.bError = u8::from(h.nState == SL_STATE_ERROR);
+        self.bStuckAtError = u8::from(run && h.wAux == STUCK);
+        self.nAnalogOut = if run { T::from_bits(p.dwOut) } else { T::ZERO };
+        self.nState = h.nState;
+        self.nDiag = h.wDiag;
+        (self.nDiagTextId, self.dwDiagPar2, self.dwDiagPar3) =
+            diag_message(&h, TEXTS, [p.dwPar, 0]);
+    }
+}

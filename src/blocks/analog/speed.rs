@@ -1,0 +1,353 @@
+//! FB SPEED — manual §4.24; layout ABI-2 §11.7, rules ABI-2 §12.
+//!
+//! Latches Position and the time when it starts (STOP → run, RESET → RUN; Speed 0); at the
+//! first call at least `tTimeInterval` ms after the latch, Speed = Position − latched
+//! Position ("increments per time interval", not rescaled to the elapsed time) and the latch
+//! moves to this call. The difference is exact; with `SL_OPT_SPEED_OVERFLOW_CHECK` it is
+//! first reduced modulo 2^W (a wrapped position counter counts the short way round). Outside
+//! the variant's type: ERROR, diag value 1 / 2, message 0x4088 / 0x4089 (parameters 2 and
+//! 3: current position, latched position), an event that nothing keeps. Speed is 0 in STOP,
+//! ERROR and RESET. Timing by the wrapping millisecond clock (`base::time`). States RUN (1),
+//! STOP (2), ERROR (4), RESET (5): no SAFE. Readings: docs/semantics.md SP1–SP4. One
+//! implementation for the four integer types.
+
+#![allow(non_camel_case_types)] // the ABI's names (FB_SPEED_INT …)
+
+use super::{diag_message, in_range, magic, Analog};
+use super::{SL_DIAG_VALUE_OVERFLOW, SL_DIAG_VALUE_UNDERFLOW};
+use crate::base::block::{Private, Registered};
+use crate::base::envelope::Block;
+use crate::base::header::{param_crc, SL_PRIVATE_HEADER};
+use crate::base::time;
+use crate::base::types::*;
+
+/// Type tag of FB_SPEED_INT (ABI-2 §10.6: sequential from 16 in the order of §10.3).
+pub const SL_TYPE_SPEED_INT: u16 = 44;
+/// FB_SPEED_UINT.
+pub const SL_TYPE_SPEED_UINT: u16 = 45;
+/// FB_SPEED_DINT.
+pub const SL_TYPE_SPEED_DINT: u16 = 46;
+/// FB_SPEED_UDINT.
+pub const SL_TYPE_SPEED_UDINT: u16 = 47;
+
+/// `dwOptions`: "Overflow Check" — the position difference is taken modulo 2^W before the
+/// range check (a position counter wrapping at its type's end is no jump).
+pub const SL_OPT_SPEED_OVERFLOW_CHECK: u32 = 1 << 8;
+
+/// Diag message "An underflow has occurred." (parameters: current, latched position).
+pub const SL_TEXT_SPEED_UNDERFLOW: u16 = 0x4088;
+/// Diag message "An overflow has occurred." (parameters: current, latched position).
+pub const SL_TEXT_SPEED_OVERFLOW: u16 = 0x4089;
+
+/// `wInputActive` bit of Position (required, the only bit).
+pub const SL_SPEED_ACTIVE_POSITION: u16 = 1 << 8;
+
+/// Private state of FB SPEED (56 bytes). Never written by the user. The header's `tPhase`
+/// is the time of the latch.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+#[allow(non_snake_case)]
+pub struct SL_SPEED_PRIVATE {
+    /// Common head.
+    pub stHeader: SL_PRIVATE_HEADER,
+    /// Latched `tTimeInterval`.
+    pub tInterval: u32,
+    /// Latched `dwOptions`.
+    pub dwOptions: u32,
+    /// Latched `wInputActive`.
+    pub wActive: u16,
+    /// Reserved.
+    pub aReserved: [u8; 2],
+    /// The latched Position as a 32-bit pattern.
+    pub dwLatch: u32,
+    /// Speed of the last update as a 32-bit pattern.
+    pub dwSpeed: u32,
+    /// Diag message parameters 2 and 3 latched at the ERROR entry.
+    pub adwPar: [u32; 2],
+}
+
+/// FB SPEED instance (ABI-2 §11.7), generic over the signal type `T`; `P1` (after Position)
+/// and `P2` (after Speed) are the reserved gaps that make the 16- and 32-bit layouts differ.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[allow(non_snake_case)]
+pub struct FB_SPEED<T, const P1: usize, const P2: usize> {
+    /// Offset 0. Reserved, keep 0 (no BOOL inputs).
+    pub aReserved0: [u8; 16],
+    /// Offset 16. FbRun of the owning group: TRUE = the block executes.
+    pub bRun: SL_BOOL,
+    /// Offset 17. ErrAck of the owning group.
+    pub bErrAck: SL_BOOL,
+    /// Offset 18. Reserved, keep 0.
+    pub aReserved1: [u8; 6],
+    /// Offset 24. Position, the input the speed is computed from (active bit 8, required).
+    pub nPosition: T,
+    /// Reserved up to 28 (16-bit: 2 bytes, 32-bit: none).
+    pub aReserved2: [u8; P1],
+    /// Offset 28. "Time Interval" in ms, 1 … SL_TIME_PARAM_MAX.
+    pub tTimeInterval: u32,
+    /// Offset 32. SL_OPT_SPEED_OVERFLOW_CHECK, no other bit.
+    pub dwOptions: u32,
+    /// Offset 36. Bit 8 (Position) must be set, no other.
+    pub wInputActive: u16,
+    /// Offset 38. Reserved.
+    pub aReserved3: [u8; 2],
+    /// Offset 40, the output base. Error, TRUE in ERROR only.
+    pub bError: SL_BOOL,
+    /// Offset 41. Reserved.
+    pub aReserved4: [u8; 7],
+    /// Offset 48. Speed in increments per interval in RUN, else 0.
+    pub nSpeed: T,
+    /// Reserved up to the info data (16-bit: 6 bytes, 32-bit: 4).
+    pub aReserved5: [u8; P2],
+    /// Offset 56. The manual's status value (RUN, STOP, ERROR, RESET).
+    pub nState: u8,
+    /// Offset 57. Reserved.
+    pub aReserved6: [u8; 1],
+    /// Offset 58. Diag value (1 underflow, 2 overflow) + library bits 13-15.
+    pub nDiag: u16,
+    /// Offset 60. Text ID of the latched diag message (0x4088, 0x4089), 0 = none.
+    pub nDiagTextId: u16,
+    /// Offset 62. Reserved.
+    pub aReserved7: [u8; 2],
+    /// Offset 64. Message parameter 2 (current position as a 32-bit pattern).
+    pub dwDiagPar2: u32,
+    /// Offset 68. Message parameter 3 (latched position).
+    pub dwDiagPar3: u32,
+    /// Offset 72. Private state, 56 bytes: never write it.
+    pub stPrivate: SL_SPEED_PRIVATE,
+}
+
+/// FB SPEED, INT variant.
+pub type FB_SPEED_INT = FB_SPEED<i16, 2, 6>;
+/// FB SPEED, UINT variant.
+pub type FB_SPEED_UINT = FB_SPEED<u16, 2, 6>;
+/// FB SPEED, DINT variant.
+pub type FB_SPEED_DINT = FB_SPEED<i32, 0, 4>;
+/// FB SPEED, UDINT variant.
+pub type FB_SPEED_UDINT = FB_SPEED<u32, 0, 4>;
+
+// The ABI-2 §11.7 numbers (identical for both widths).
+const _: () = {
+    use core::mem::{offset_of, size_of};
+    assert!(offset_of!(FB_SPEED_INT, tTimeInterval) == 28);
+    assert!(offset_of!(FB_SPEED_DINT, dwOptions) == 32);
+    assert!(offset_of!(FB_SPEED_UINT, wInputActive) == 36);
+    assert!(offset_of!(FB_SPEED_UDINT, bError) == 40 && offset_of!(FB_SPEED_UDINT, nSpeed) == 48);
+    assert!(
+        offset_of!(FB_SPEED_INT, stPrivate) == 72 && offset_of!(FB_SPEED_DINT, stPrivate) == 72
+    );
+    assert!(size_of::<SL_SPEED_PRIVATE>() == 56);
+};
+
+crate::base::block::block_states!(
+    /// The states of FB SPEED, every variant (manual §4.24.2): no SAFE.
+    SpeedState: Run, Stop, Error, Reset
+);
+
+/// Diag value texts (manual §4.24.2).
+const DIAG_VALUES: &[(u16, &str)] = &[
+    (0, "No diagnostic information"),
+    (
+        SL_DIAG_VALUE_UNDERFLOW,
+        "The output Speed has an underflow (is less than the smallest possible value)",
+    ),
+    (
+        SL_DIAG_VALUE_OVERFLOW,
+        "The output Speed has an overflow (is greater than the largest possible value)",
+    ),
+];
+
+crate::impl_member!([T: Analog, const P1: usize, const P2: usize] FB_SPEED<T, P1, P2> {
+    info: crate::blocks::analog::variant_info!(T, "SPEED", SpeedState, DIAG_VALUES;
+        INT = SL_TYPE_SPEED_INT, UINT = SL_TYPE_SPEED_UINT, DINT = SL_TYPE_SPEED_DINT, UDINT = SL_TYPE_SPEED_UDINT),
+    state: SpeedState,
+    private: SL_SPEED_PRIVATE,
+    input: [nPosition],
+    param: [tTimeInterval, dwOptions, wInputActive],
+    output: [bError, nSpeed],
+    info_fields: [nDiagTextId, dwDiagPar2, dwDiagPar3],
+});
+
+impl<T: Analog, const P1: usize, const P2: usize> FB_SPEED<T, P1, P2> {
+    /// An all-zero instance (valid: it initialises itself on the first cycle, ABI §3.6).
+    pub const fn zeroed() -> Self {
+        Self {
+            aReserved0: [0; 16],
+            bRun: 0,
+            bErrAck: 0,
+            aReserved1: [0; 6],
+            nPosition: T::ZERO,
+            aReserved2: [0; P1],
+            tTimeInterval: 0,
+            dwOptions: 0,
+            wInputActive: 0,
+            aReserved3: [0; 2],
+            bError: 0,
+            aReserved4: [0; 7],
+            nSpeed: T::ZERO,
+            aReserved5: [0; P2],
+            nState: 0,
+            aReserved6: [0; 1],
+            nDiag: 0,
+            nDiagTextId: 0,
+            aReserved7: [0; 2],
+            dwDiagPar2: 0,
+            dwDiagPar3: 0,
+            stPrivate: SL_SPEED_PRIVATE {
+                stHeader: SL_PRIVATE_HEADER::ZERO,
+                tInterval: 0,
+                dwOptions: 0,
+                wActive: 0,
+                aReserved: [0; 2],
+                dwLatch: 0,
+                dwSpeed: 0,
+                adwPar: [0; 2],
+            },
+        }
+    }
+}
+
+impl<T: Analog, const P1: usize, const P2: usize> Default for FB_SPEED<T, P1, P2> {
+    fn default() -> Self {
+        Self::zeroed()
+    }
+}
+
+/// Parameters as the user wrote them.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct SpeedParams {
+    interval: u32,
+    options: u32,
+    active: u16,
+}
+
+/// The position difference `d` as a speed of type `T`: with the overflow check reduced
+/// modulo 2^W into [−2^(W−1), 2^(W−1)) first; then range-checked (ABI-2 §11.7, §12.1).
+fn speed<T: Analog>(d: i128, overflow_check: bool) -> Result<T, u16> {
+    if overflow_check {
+        let modulus = T::MAX - T::MIN + 1;
+        let half = modulus / 2;
+        in_range::<T>((d + half).rem_euclid(modulus) - half)
+    } else {
+        in_range::<T>(d)
+    }
+}
+
+impl<T: Analog, const P1: usize, const P2: usize> Block for FB_SPEED<T, P1, P2> {
+    const MAGIC: u16 = magic(<Self as Registered>::INFO.tag);
+    type Params = SpeedParams;
+    type In = T;
+
+    #[inline(always)]
+    fn live_params(&self) -> SpeedParams {
+        SpeedParams {
+            interval: self.tTimeInterval,
+            options: self.dwOptions,
+            active: self.wInputActive,
+        }
+    }
+    #[inline(always)]
+    fn latched_params(&self) -> SpeedParams {
+        let p = self.private();
+        SpeedParams {
+            interval: p.tInterval,
+            options: p.dwOptions,
+            active: p.wActive,
+        }
+    }
+    /// Position active and nothing else, the one option, Time Interval 1 … 65,535 ms
+    /// (ABI-2 §11.7 "≥ 1", §12.9).
+    fn params_valid(p: &SpeedParams) -> bool {
+        p.active == SL_SPEED_ACTIVE_POSITION
+            && p.options & !SL_OPT_SPEED_OVERFLOW_CHECK == 0
+            && (1..=SL_TIME_PARAM_MAX).contains(&p.interval)
+    }
+    fn store_params(&mut self, p: &SpeedParams) {
+        let q = self.private_mut();
+        q.tInterval = p.interval;
+        q.dwOptions = p.options;
+        q.wActive = p.active;
+    }
+    fn latched_crc(&self) -> u16 {
+        let p = self.private();
+        param_crc(
+            Self::MAGIC,
+            0,
+            0,
+            0,
+            &[
+                p.tInterval as u16,
+                (p.tInterval >> 16) as u16,
+                p.dwOptions as u16,
+                (p.dwOptions >> 16) as u16,
+                p.wActive,
+            ],
+        )
+    }
+    #[inline(always)]
+    fn decode(&mut self) -> (T, bool) {
+        (self.nPosition, false)
+    }
+    /// Latch Position and the time; Speed 0 until the first interval ends (semantics SP1).
+    fn start(&mut self, position: &T, now: u32) {
+        // Entering RUN is where the output starts to carry values: verify the latched
+        // parameters first (C3).
+        if !self.params_intact() {
+            self.private_mut().stHeader.enter_error(SL_DIAG_CORRUPT);
+            return;
+        }
+        let p = self.private_mut();
+        p.dwLatch = position.to_bits();
+        p.dwSpeed = 0;
+        p.stHeader.tPhase = now;
+        p.stHeader.nState = SL_STATE_RUN;
+    }
+    #[inline(always)]
+    fn step(&mut self, position: &T, now: u32) -> Status {
+        let p = self.private_mut();
+        if !time::reached(now, p.stHeader.tPhase, p.tInterval) {
+            return Status::Ok;
+        }
+        let d = position.wide() - T::from_bits(p.dwLatch).wide();
+        match speed::<T>(d, p.dwOptions & SL_OPT_SPEED_OVERFLOW_CHECK != 0) {
+            Ok(v) => {
+                p.dwSpeed = v.to_bits();
+                p.dwLatch = position.to_bits();
+                p.stHeader.tPhase = now;
+            }
+            Err(diag) => {
+                p.adwPar = [position.to_bits(), p.dwLatch];
+                p.dwSpeed = 0;
+                p.stHeader.enter_error(diag);
+            }
+        }
+        Status::Ok
+    }
+    /// A range error is an event: nothing remains after it (ABI-2 §11.7, §12.5).
+    fn error_remains(&mut self, _position: &T) -> bool {
+        false
+    }
+    #[inline(always)]
+    fn write_outputs(&mut self) {
+        let p = *self.private();
+        let h = p.stHeader;
+        let run = h.nState == SL_STATE_RUN;
+        self.bError = u8::from(h.nState == SL_STATE_ERROR);
+        self.nSpeed = if run {
+            T::from_bits(p.dwSpeed)
+        } else {
+            T::ZERO
+        };
+        self.nState = h.nState;
+        self.nDiag = h.wDiag;
+        (self.nDiagTextId, self.dwDiagPar2, self.dwDiagPar3) = diag_message(
+            &h,
+            &[
+                (SL_DIAG_VALUE_UNDERFLOW, SL_TEXT_SPEED_UNDERFLOW),
+                (SL_DIAG_VALUE_OVERFLOW, SL_TEXT_SPEED_OVERFLOW),
+            ],
+            p.adwPar,
+        );
+    }
+}

@@ -1,0 +1,240 @@
+//! The state machine FB RS (manual §4.10, reset dominant) and FB SR (§4.11, set dominant)
+//! have in common: Set TRUE with Reset FALSE → SET (9, output TRUE); Reset TRUE with Set
+//! FALSE → SAFE (3, output FALSE); both TRUE → the dominant input decides; both FALSE → the
+//! output keeps its current state. The blocks differ only in `SET_DOMINANT`. Neither
+//! reports an error of its own: ERROR (4) only comes from the envelope.
+
+use crate::base::header::SL_PRIVATE_HEADER;
+use crate::base::types::*;
+
+/// FB_SR state SET (manual §4.11.2: 9): the output SrOut is TRUE.
+pub const SL_STATE_SR_SET: u8 = 9;
+
+/// FB_RS state SET (manual §4.10.2: 9): the output RsOut is TRUE.
+pub const SL_STATE_RS_SET: u8 = 9;
+
+/// Private state of FB_RS and FB_SR (64 bytes): the memory is the state (SAFE or SET) in
+/// the header, guarded by its complement copy. Never written by the user.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+#[allow(non_snake_case, non_camel_case_types)]
+pub struct SL_FLIPFLOP_PRIVATE {
+    pub stHeader: SL_PRIVATE_HEADER,
+    /// Reserved, 0.
+    pub aReserved: [u8; 4],
+    /// Fast-path slot (`base::envelope`): the key window (two 64-bit words), then its check
+    /// words.
+    pub adwSteady: [u32; 8],
+}
+
+const _: () = assert!(core::mem::size_of::<SL_FLIPFLOP_PRIVATE>() == 64);
+
+crate::base::envelope::steady_private!(SL_FLIPFLOP_PRIVATE, adwSteady, window 2);
+
+/// Input bits: bit 0 = Reset, bit 1 = Set (ABI §9).
+pub(crate) const RESET: u8 = 1 << 0;
+pub(crate) const SET: u8 = 1 << 1;
+pub(crate) const INPUTS: u16 = (RESET | SET) as u16;
+
+/// The state value SET (9); FB_RS and FB_SR use the same number.
+pub(crate) const STATE_SET: u8 = SL_STATE_RS_SET;
+const _: () = assert!(SL_STATE_RS_SET == SL_STATE_SR_SET);
+
+/// Parameters as the user wrote them.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct FlipFlopParams {
+    pub active: u16,
+    pub negated: u16,
+}
+
+/// Logical inputs of one cycle, invalid bytes already read as their safe value.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct FlipFlopIn {
+    pub reset: bool,
+    pub set: bool,
+}
+
+/// What distinguishes RS from SR.
+pub trait FlipFlopBlock: crate::base::block::Private<P = SL_FLIPFLOP_PRIVATE> {
+    /// Type tag stored in the private header.
+    const TAG: u16;
+    /// Both inputs TRUE: SET (SR) or SAFE (RS).
+    const SET_DOMINANT: bool;
+
+    fn params(&self) -> FlipFlopParams;
+    /// Raw input bytes: Reset, Set.
+    fn raw(&self) -> [u8; 2];
+    fn set_outputs(&mut self, out: bool, state: u8, diag: u16);
+}
+
+/// The next output from the current one (manual §4.10.1 / §4.11.1).
+#[inline]
+pub const fn next(is_set: bool, inp: FlipFlopIn, set_dominant: bool) -> bool {
+    match (inp.reset, inp.set) {
+        (true, true) => set_dominant,
+        (true, false) => false,
+        (false, true) => true,
+        (false, false) => is_set,
+    }
+}
+
+#[inline]
+pub(crate) const fn state_of(is_set: bool) -> u8 {
+    if is_set {
+        STATE_SET
+    } else {
+        SL_STATE_SAFE
+    }
+}
+
+/// The envelope's view of a block of this family; invoked in the member's own file.
+macro_rules! flipflop_block {
+    // A member from its description: RS and SR differ only in these.
+    ($t:ty { tag: $tag:expr, set_dominant: $dom:expr, output: $out:ident $(,)? }) => {
+        impl $crate::blocks::boolean::flipflop::FlipFlopBlock for $t {
+            const TAG: u16 = $tag;
+            const SET_DOMINANT: bool = $dom;
+
+            fn params(&self) -> $crate::blocks::boolean::flipflop::FlipFlopParams {
+                $crate::blocks::boolean::flipflop::FlipFlopParams {
+                    active: self.wInputActive,
+                    negated: self.wInputNegated,
+                }
+            }
+            fn raw(&self) -> [u8; 2] {
+                [self.bReset, self.bSet]
+            }
+            fn set_outputs(&mut self, out: bool, state: u8, diag: u16) {
+                self.$out = u8::from(out);
+                self.nState = state;
+                self.nDiag = diag;
+            }
+        }
+        $crate::blocks::boolean::flipflop::flipflop_block!($t);
+    };
+    ($t:ty) => {
+        const _: () = {
+            $crate::base::envelope::family_prelude!($crate::blocks::boolean::flipflop);
+
+            impl Block for $t {
+                const MAGIC: u16 = <$t as FlipFlopBlock>::TAG;
+                type Params = FlipFlopParams;
+                type In = FlipFlopIn;
+
+                fn live_params(&self) -> FlipFlopParams {
+                    self.params()
+                }
+                fn latched_params(&self) -> FlipFlopParams {
+                    let h = &self.private().stHeader;
+                    FlipFlopParams {
+                        active: u16::from(h.nActive),
+                        negated: u16::from(h.nNegated),
+                    }
+                }
+                /// At least one input active, no bits for inputs the block does not have
+                /// (semantics R1).
+                fn params_valid(p: &FlipFlopParams) -> bool {
+                    p.active & !INPUTS == 0 && p.negated & !INPUTS == 0 && p.active != 0
+                }
+                fn store_params(&mut self, p: &FlipFlopParams) {
+                    let h = &mut self.private_mut().stHeader;
+                    h.nActive = p.active as u8;
+                    h.nNegated = p.negated as u8;
+                }
+                fn latched_crc(&self) -> u16 {
+                    let h = &self.private().stHeader;
+                    param_crc(Self::MAGIC, h.nActive, h.nNegated, h.wOptions, &[])
+                }
+                /// An inactive input reads FALSE (no command). An invalid byte reads as the value
+                /// that demands the safe state of the output: Reset TRUE, Set FALSE, whatever
+                /// the negation bit (ABI §2, semantics R3).
+                fn decode(&mut self) -> (FlipFlopIn, bool) {
+                    let h = &self.private().stHeader;
+                    let active = h.nActive;
+                    let p = bools::pack(self.raw());
+                    let logical = bools::logical(p, active, h.nNegated);
+                    let invalid = p.invalid & active;
+                    let inp = FlipFlopIn {
+                        reset: (logical | invalid) & RESET != 0,
+                        set: logical & SET != 0,
+                    };
+                    (inp, invalid != 0)
+                }
+                /// STOP → run and RESET → run: the output was FALSE, so "remains in its current
+                /// state" means SAFE unless this cycle's inputs set it (semantics R4). The
+                /// parameters were latched, or compared with the live ones, in this same call.
+                fn start(&mut self, inp: &FlipFlopIn, _now: u32) {
+                    let h = &mut self.private_mut().stHeader;
+                    h.nState = state_of(next(false, *inp, Self::SET_DOMINANT));
+                }
+                fn step(&mut self, inp: &FlipFlopIn, _now: u32) -> Status {
+                    let is_set = match self.private().stHeader.nState {
+                        SL_STATE_SAFE => false,
+                        STATE_SET => true,
+                        // A state value this block never takes: the memory cannot be trusted.
+                        _ => false,
+                    };
+                    let known = matches!(self.private().stHeader.nState, SL_STATE_SAFE | STATE_SET);
+                    let set = next(is_set, *inp, Self::SET_DOMINANT);
+                    // The output switches on: verify the latched parameters first (C3).
+                    if !known || (set && !is_set && !self.params_intact()) {
+                        self.private_mut().stHeader.enter_error(SL_DIAG_CORRUPT);
+                        return Status::Corrupt;
+                    }
+                    self.private_mut().stHeader.nState = state_of(set);
+                    Status::Ok
+                }
+                fn error_remains(&mut self, _inp: &FlipFlopIn) -> bool {
+                    false
+                }
+                $crate::base::envelope::steady_hooks!();
+                fn write_outputs(&mut self) {
+                    let h = self.private().stHeader;
+                    self.set_outputs(h.nState == STATE_SET, h.nState, h.wDiag);
+                }
+            }
+
+            impl $crate::base::envelope::Steady for $t {
+                /// The bytes [8, 18): Reset, Set, bRun, bErrAck.
+                #[inline(always)]
+                fn steady_key(&self) -> Option<[u64; 2]> {
+                    Some($crate::base::envelope::window!(self, 2:
+                        bReset, bSet, aReserved1, bRun, bErrAck
+                    ))
+                }
+                /// A memory without timers: nothing depends on the time.
+                #[inline(always)]
+                fn quiet(&self) -> bool {
+                    true
+                }
+                /// The next state is Reset's or Set's command, or the state held when there
+                /// is none, from every state, in `start` as in `step` (`next` applied twice
+                /// to the same inputs gives what it gave once); the envelope's transitions
+                /// as for the combinational blocks (`logic.rs`).
+                const IDEMPOTENT: bool = true;
+            }
+        };
+    };
+}
+pub(crate) use flipflop_block;
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn inp(reset: bool, set: bool) -> FlipFlopIn {
+        FlipFlopIn { reset, set }
+    }
+
+    #[test]
+    fn truth_tables() {
+        for is_set in [false, true] {
+            for dominant in [false, true] {
+                assert!(next(is_set, inp(false, true), dominant));
+                assert!(!next(is_set, inp(true, false), dominant));
+                assert_eq!(next(is_set, inp(false, false), dominant), is_set);
+                assert_eq!(next(is_set, inp(true, true), dominant), dominant);
+            }
+        }
+    }
+}

@@ -1,0 +1,747 @@
+//! FB MUTING — manual §4.8 (functional description 4.8.1, signals, states and diag bits
+//! 4.8.2, configuration and the two sensor examples 4.8.3, EL6910 extensions 4.8.4). The
+//! KL6904 has no MUTING block (manual §4.8.1 notice); its manual has no MUTING text.
+//!
+//! A protective device (light curtain: OSSDIn1/2, one- or two-channel, discrepancy time)
+//! whose interruption switches MuteOut off immediately and MuteDelOut after
+//! `tMuteDelOutDelay`, unless a muting sequence of four muting sensors is running (states
+//! MUTING1…MUTING9): sequential with four single-channel sensors, or parallel with two
+//! two-channel groups MutingIn1/2 and MutingIn3/4. Enable input, filter time of the muting
+//! inputs, maximum muting time, EDM1/EDM2 feedback loops, and the EL6910 options backwards
+//! mode, OSSD check optional, and MutingIn3/4 left inactive with sequential inputs. The step
+//! table and every reading are in docs/semantics.md, rows M1–M22.
+
+use crate::base::block::BlockInfo;
+use crate::base::bools;
+use crate::base::edm::Edm;
+use crate::base::envelope::Block;
+use crate::base::header::{param_crc, SL_PRIVATE_HEADER};
+use crate::base::types::*;
+use crate::base::{pair, time};
+
+/// FB_MUTING state MUTING1 (9): first step of the muting sequence (docs/semantics.md M1).
+pub const SL_STATE_MUTING_MUTING1: u8 = 9;
+
+/// FB_MUTING state MUTING2 (10).
+pub const SL_STATE_MUTING_MUTING2: u8 = 10;
+
+/// FB_MUTING state MUTING3 (11).
+pub const SL_STATE_MUTING_MUTING3: u8 = 11;
+
+/// FB_MUTING state MUTING4 (12).
+pub const SL_STATE_MUTING_MUTING4: u8 = 12;
+
+/// FB_MUTING state MUTING5 (13).
+pub const SL_STATE_MUTING_MUTING5: u8 = 13;
+
+/// FB_MUTING state MUTING6 (14).
+pub const SL_STATE_MUTING_MUTING6: u8 = 14;
+
+/// FB_MUTING state MUTING7 (15).
+pub const SL_STATE_MUTING_MUTING7: u8 = 15;
+
+/// FB_MUTING state MUTING8 (16).
+pub const SL_STATE_MUTING_MUTING8: u8 = 16;
+
+/// FB_MUTING state MUTING9 (17): last step of the muting sequence.
+pub const SL_STATE_MUTING_MUTING9: u8 = 17;
+
+/// Block type tag of FB_MUTING.
+pub const SL_TYPE_MUTING: u16 = 9;
+
+/// Largest `tFilterTime` of FB_MUTING in ms (manual §4.8.1: "up to 500 ms").
+pub const SL_MUTING_FILTER_TIME_MAX: u32 = 500;
+
+/// Largest `tMaxMutingTime` of FB_MUTING in ms (manual §4.8.1: "a maximum of 10 minutes").
+pub const SL_MUTING_MAX_MUTING_TIME_MAX: u32 = 600_000;
+
+/// Largest `tMuteDelOutDelay` of FB_MUTING in ms (manual §4.8.1: "delayed by up to 30 seconds").
+pub const SL_MUTING_DELOUT_DELAY_MAX: u32 = 30_000;
+
+/// FB MUTING instance (ABI §3, §9). Inputs at the manual's offsets (§4.8.2), outputs at
+/// output base 56 + the manual's offsets.
+/// Size: 144 bytes.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+#[allow(non_snake_case, non_camel_case_types)]
+pub struct FB_MUTING {
+    /// Offset 0. MutingEnable: TRUE allows a muting sequence; FALSE = an interruption of
+    /// the protective field switches the outputs off.
+    pub bMutingEnable: SL_BOOL,
+    /// Offset 1. Feedback loop of MuteOut (SL_OPT_EDM1).
+    pub bEDM1: SL_BOOL,
+    /// Offset 2. Feedback loop of MuteDelOut (SL_OPT_EDM2).
+    pub bEDM2: SL_BOOL,
+    /// Offset 3. Reserved, keep 0.
+    pub aReserved0: [u8; 5],
+    /// Offset 8. Muting sensor 1 (parallel: group 1 with MutingIn2). TRUE = actuated.
+    pub bMutingIn1: SL_BOOL,
+    /// Offset 9. Muting sensor 2.
+    pub bMutingIn2: SL_BOOL,
+    /// Offset 10. Protective device channel 1 (OSSD): TRUE = protective field clear.
+    pub bOSSDIn1: SL_BOOL,
+    /// Offset 11. Protective device channel 2 (pair with OSSDIn1).
+    pub bOSSDIn2: SL_BOOL,
+    /// Offset 12. Muting sensor 3 (parallel: group 2 with MutingIn4).
+    pub bMutingIn3: SL_BOOL,
+    /// Offset 13. Muting sensor 4.
+    pub bMutingIn4: SL_BOOL,
+    /// Offset 14. Reserved, keep 0.
+    pub aReserved1: [u8; 2],
+    /// Offset 16. FbRun of the owning group: TRUE = the block executes.
+    pub bRun: SL_BOOL,
+    /// Offset 17. ErrAck of the owning group.
+    pub bErrAck: SL_BOOL,
+    /// Offset 18. Reserved, keep 0.
+    pub aReserved2: [u8; 2],
+    /// Offset 20. Discrepancy time of group MutingIn1/2 in ms (parallel only; 0 = none).
+    pub tDiscTime12: u32,
+    /// Offset 24. Discrepancy time of OSSDIn1/2 in ms (0 = none).
+    pub tDiscTimeOSSD: u32,
+    /// Offset 28. Discrepancy time of group MutingIn3/4 in ms (parallel only; 0 = none).
+    pub tDiscTime34: u32,
+    /// Offset 32. Filter time of the muting inputs in ms (≤ 500; 0 = unfiltered).
+    pub tFilterTime: u32,
+    /// Offset 36. Maximum muting time in ms (≤ 600 000 = 10 min; 0 = not monitored).
+    pub tMaxMutingTime: u32,
+    /// Offset 40. Delay of MuteDelOut in ms (≤ 30 000).
+    pub tMuteDelOutDelay: u32,
+    /// Offset 44. Bits 0-5: MutingIn1, MutingIn2, OSSDIn1, OSSDIn2, MutingIn3, MutingIn4 active.
+    pub wInputActive: u16,
+    /// Offset 46. Same bits: input is a make contact (negated).
+    pub wInputNegated: u16,
+    /// Offset 48. SL_OPT_EDM1 | EDM2 | MUTING_SEQUENTIAL | MUTING_BACKWARDS |
+    /// MUTING_OSSD_CHECK_OPTIONAL.
+    pub dwOptions: u32,
+    /// Offset 52. Reserved.
+    pub aReserved3: [u8; 4],
+    /// Offset 56 (output base + 0). TRUE in ERROR.
+    pub bError: SL_BOOL,
+    /// Offset 57 (output base + 1). TRUE while a muting sequence runs (MUTING1…MUTING9).
+    pub bMutingActive: SL_BOOL,
+    /// Offset 58 (output base + 2). Undelayed output.
+    pub bMuteOut: SL_BOOL,
+    /// Offset 59 (output base + 3). Delayed output.
+    pub bMuteDelOut: SL_BOOL,
+    /// Offset 60. Reserved.
+    pub aReserved4: [u8; 4],
+    /// Offset 64. The manual's status value (SL_STATE_*, SL_STATE_MUTING_MUTINGx).
+    pub nState: u8,
+    /// Offset 65. Reserved.
+    pub aReserved5: [u8; 1],
+    /// Offset 66. Diagnostic bits (manual §4.8.2).
+    pub nDiag: u16,
+    /// Offset 68. Reserved.
+    pub aReserved6: [u8; 4],
+    /// Offset 72. Private state, 72 bytes: never write it.
+    pub stPrivate: SL_MUTING_PRIVATE,
+}
+
+/// Private state of FB_MUTING (72 bytes). Never written by the user.
+/// Size: 72 bytes.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+#[allow(non_snake_case, non_camel_case_types)]
+pub struct SL_MUTING_PRIVATE {
+    /// Offset 0. Common head; `wAux` holds the filtered muting inputs (bits 0-5), their
+    /// running filter timers (bits 6-11), the running pair timers (bits 12-14) and the
+    /// direction of the running sequence (bit 15, backwards).
+    pub stHeader: SL_PRIVATE_HEADER,
+    /// Offset 28. Latched maximum muting time in ms.
+    pub tMaxMutingTime: u32,
+    /// Offset 32. Latched times in ms: discrepancy times MutingIn1/2, OSSD, MutingIn3/4,
+    /// filter time, MuteDelOut delay, reserved.
+    pub awTime: [u16; 6],
+    /// Offset 44. Start times of the pair discrepancy timers.
+    pub atDiscStart: [u32; 3],
+    /// Offset 56. Start times of the filter timers of MutingIn1, 2, 3, 4.
+    pub atFilterStart: [u32; 4],
+}
+
+crate::base::block::block_states!(
+    /// The states of FB MUTING.
+    MutingState:
+        Run,
+        Stop,
+        Safe,
+        Error,
+        Reset,
+        DelayOut,
+        Muting1 = SL_STATE_MUTING_MUTING1, "MUTING1",
+        Muting2 = SL_STATE_MUTING_MUTING2, "MUTING2",
+        Muting3 = SL_STATE_MUTING_MUTING3, "MUTING3",
+        Muting4 = SL_STATE_MUTING_MUTING4, "MUTING4",
+        Muting5 = SL_STATE_MUTING_MUTING5, "MUTING5",
+        Muting6 = SL_STATE_MUTING_MUTING6, "MUTING6",
+        Muting7 = SL_STATE_MUTING_MUTING7, "MUTING7",
+        Muting8 = SL_STATE_MUTING_MUTING8, "MUTING8",
+        Muting9 = SL_STATE_MUTING_MUTING9, "MUTING9"
+);
+
+/// Type tag, name, states and diag texts (manual §4.8.2, §4.8.4).
+const INFO: BlockInfo = BlockInfo {
+    tag: SL_TYPE_MUTING,
+    name: "MUTING",
+    states: <MutingState as crate::base::block::BlockState>::TABLE,
+    diag: &[
+        (SL_DIAG_DISC1, "discrepancy error in muting input group 1"),
+        (SL_DIAG_DISC2, "discrepancy error in the OSSD input group"),
+        (SL_DIAG_DISC3, "discrepancy error in muting input group 2"),
+        (SL_DIAG_EDM1, "EDM monitoring error EDM1"),
+        (SL_DIAG_EDM2, "EDM monitoring error EDM2"),
+        (SL_DIAG_MUTING_SEQUENCE, "muting sequence was violated"),
+        (SL_DIAG_MUTING_MAX_TIME, "maximum muting time was exceeded"),
+        (
+            SL_DIAG_SAFE_IN_DISC1,
+            "discrepancy error in muting input group 1 was not yet reset",
+        ),
+        (
+            SL_DIAG_SAFE_IN_DISC2,
+            "discrepancy error in OSSD input group was not yet reset",
+        ),
+        (
+            SL_DIAG_SAFE_IN_DISC3,
+            "discrepancy error in muting input group 2 was not yet reset",
+        ),
+    ],
+    diag_values: &[],
+};
+
+crate::impl_member!([] FB_MUTING {
+    info: INFO,
+    state: MutingState,
+    private: SL_MUTING_PRIVATE,
+    input: [bMutingEnable, bEDM1, bEDM2, bMutingIn1, bMutingIn2, bOSSDIn1, bOSSDIn2, bMutingIn3, bMutingIn4],
+    param: [tDiscTime12, tDiscTimeOSSD, tDiscTime34, tFilterTime, tMaxMutingTime, tMuteDelOutDelay, wInputActive, wInputNegated, dwOptions],
+    output: [bError, bMutingActive, bMuteOut, bMuteDelOut],
+    info_fields: [],
+});
+
+/// Bits of the input masks (`wInputActive` order, ABI §9).
+const M12: u8 = 0b00_0011;
+const OSSD: u8 = 0b00_1100;
+const M34: u8 = 0b11_0000;
+const MUTING_INPUTS: u8 = M12 | M34;
+const INPUTS: u16 = 0x3F;
+/// Logical-mask bit of MutingIn1…4, in the order of `atFilterStart`.
+const M_BIT: [u8; 4] = [1 << 0, 1 << 1, 1 << 4, 1 << 5];
+
+const OPTIONS: u32 = SL_OPT_EDM1
+    | SL_OPT_EDM2
+    | SL_OPT_MUTING_SEQUENTIAL
+    | SL_OPT_MUTING_BACKWARDS
+    | SL_OPT_MUTING_OSSD_CHECK_OPTIONAL;
+
+/// Indices into `awTime`.
+const T_FILTER: usize = 3;
+const T_DELAY: usize = 4;
+
+/// `wAux` layout.
+const AUX_FILTERED: u16 = 0x003F;
+const AUX_PENDING_SHIFT: u32 = 6;
+const AUX_RUNNING_SHIFT: u32 = 12;
+const AUX_BACKWARDS: u16 = 1 << 15;
+
+// The sequence patterns: one bit per sensor and one for "protective field interrupted".
+const P_M1: u8 = 1 << 0;
+const P_M2: u8 = 1 << 1;
+const P_F: u8 = 1 << 2;
+const P_M3: u8 = 1 << 3;
+const P_M4: u8 = 1 << 4;
+const P_ALL: u8 = 0x1F;
+
+/// The forward muting sequence with four single-channel sensors (docs/semantics.md M1):
+/// the pattern of sensors actuated and field interrupted at each step. Position 0 is RUN
+/// before the sequence, positions 1…9 are MUTING1…MUTING9, position 10 is RUN after it.
+const STEPS: [u8; 11] = [
+    0,
+    P_M1,
+    P_M1 | P_M2,
+    P_M1 | P_M2 | P_F,
+    P_M1 | P_M2 | P_F | P_M3,
+    P_M1 | P_M2 | P_F | P_M3 | P_M4,
+    P_M2 | P_F | P_M3 | P_M4,
+    P_F | P_M3 | P_M4,
+    P_M3 | P_M4,
+    P_M4,
+    0,
+];
+
+/// The muting sequence of one configuration: which parts of the pattern are checked and
+/// whether the muting inputs are two two-channel groups.
+#[derive(Clone, Copy, Debug)]
+struct Sequence {
+    /// Pattern bits that take part in the check.
+    mask: u8,
+    /// Parallel muting: a group counts as actuated only with both channels actuated.
+    parallel: bool,
+}
+
+impl Sequence {
+    fn new(active: u8, options: u32) -> Self {
+        let mut mask = P_ALL;
+        if options & SL_OPT_MUTING_OSSD_CHECK_OPTIONAL != 0 {
+            mask &= !P_F;
+        }
+        if active & M34 == 0 {
+            mask &= !(P_M3 | P_M4);
+        }
+        Self {
+            mask,
+            parallel: options & SL_OPT_MUTING_SEQUENTIAL == 0,
+        }
+    }
+
+    /// A pattern as the check sees it: groups merged (parallel), unchecked bits removed.
+    fn view(&self, p: u8) -> u8 {
+        let p = if self.parallel {
+            let group = |g: u8| if p & g == g { g } else { 0 };
+            group(P_M1 | P_M2) | group(P_M3 | P_M4) | (p & P_F)
+        } else {
+            p
+        };
+        p & self.mask
+    }
+
+    /// The checked pattern of step `pos` (0…10).
+    fn expected(&self, pos: usize) -> u8 {
+        STEPS.get(pos).map_or(0, |&p| self.view(p))
+    }
+
+    /// Step `pos` is a state of this configuration's sequence: it changes the checked
+    /// pattern and is not the idle pattern (docs/semantics.md M2).
+    fn used(&self, pos: usize) -> bool {
+        let e = self.expected(pos);
+        (1..=9).contains(&pos) && e != 0 && e != self.expected(pos - 1)
+    }
+
+    /// The next state after `pos` (None: the sequence ends with the idle pattern).
+    fn next(&self, pos: usize) -> Option<usize> {
+        (pos + 1..=9).find(|&y| self.used(y))
+    }
+
+    /// The step a sequence starts with.
+    fn first(&self) -> Option<usize> {
+        self.next(0)
+    }
+}
+
+/// The sensor pattern seen backwards: MutingIn4 plays MutingIn1, MutingIn3 MutingIn2.
+const fn mirror(p: u8) -> u8 {
+    ((p & P_M1) << 4) | ((p & P_M2) << 2) | (p & P_F) | ((p & P_M3) >> 2) | ((p & P_M4) >> 4)
+}
+
+/// At least one active OSSD input requests the safe state: the protective field is
+/// interrupted (a single channel is enough, ABI §7 Signals).
+const fn field_interrupted(logical: u8, active: u8) -> bool {
+    logical & active & OSSD != active & OSSD
+}
+
+/// The sequence pattern of the evaluated inputs.
+fn pattern(eval: u8, active: u8) -> u8 {
+    let bit = |mask: u8, p: u8| if eval & mask != 0 { p } else { 0 };
+    bit(1 << 0, P_M1)
+        | bit(1 << 1, P_M2)
+        | bit(1 << 4, P_M3)
+        | bit(1 << 5, P_M4)
+        | if field_interrupted(eval, active) {
+            P_F
+        } else {
+            0
+        }
+}
+
+/// The state of sequence step `pos` (1…9).
+const fn muting_state(pos: usize) -> u8 {
+    SL_STATE_MUTING_MUTING1 - 1 + pos as u8
+}
+
+/// Filter of the muting inputs (manual §4.8.1 "filter time up to 500 ms"): a changed
+/// logical value is taken over once it has stood unchanged for `t` ms (docs M9).
+fn filter(raw: u8, filtered: &mut u8, pending: &mut u8, starts: &mut [u32; 4], t: u32, now: u32) {
+    for (&bit, start) in M_BIT.iter().zip(starts.iter_mut()) {
+        if (raw ^ *filtered) & bit == 0 {
+            *pending &= !bit;
+            continue;
+        }
+        if *pending & bit == 0 {
+            *pending |= bit;
+            *start = now;
+        }
+        if time::reached(now, *start, t) {
+            *filtered ^= bit;
+            *pending &= !bit;
+        }
+    }
+}
+
+/// Parameters as the user wrote them.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct MutingParams {
+    pub disc: [u32; 3],
+    pub filter: u32,
+    pub max_muting: u32,
+    pub delay: u32,
+    pub active: u16,
+    pub negated: u16,
+    pub options: u32,
+}
+
+/// Decoded inputs of one cycle.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct MutingIn {
+    /// Logical values of the active inputs (wInputActive bit order), unfiltered.
+    pub logical: u8,
+    /// MutingEnable reads TRUE.
+    pub enable: bool,
+    pub edm: Edm,
+}
+
+impl SL_MUTING_PRIVATE {
+    /// CRC of the latched parameters (seeded with the block's magic).
+    fn latched_crc(&self) -> u16 {
+        let h = &self.stHeader;
+        let [a, b, c, d, e, f] = self.awTime;
+        let max = self.tMaxMutingTime;
+        param_crc(
+            FB_MUTING::MAGIC,
+            h.nActive,
+            h.nNegated,
+            h.wOptions,
+            &[a, b, c, d, e, f, max as u16, (max >> 16) as u16],
+        )
+    }
+
+    /// Before the outputs switch on or muting starts, the latched parameters must still be
+    /// intact (ABI §3.6, docs/semantics.md C3, M21).
+    fn intact(&self) -> bool {
+        self.latched_crc() == self.stHeader.wParamCrc
+    }
+
+    /// The field is interrupted without muting: MuteOut off now, MuteDelOut after the delay.
+    fn switch_off(&mut self, now: u32) -> u8 {
+        if self.awTime[T_DELAY] != 0 {
+            self.stHeader.tPhase = now;
+            SL_STATE_DELAYOUT
+        } else {
+            SL_STATE_SAFE
+        }
+    }
+}
+
+impl Block for FB_MUTING {
+    const MAGIC: u16 = 0x3A7E;
+    type Params = MutingParams;
+    type In = MutingIn;
+
+    fn live_params(&self) -> MutingParams {
+        MutingParams {
+            disc: [self.tDiscTime12, self.tDiscTimeOSSD, self.tDiscTime34],
+            filter: self.tFilterTime,
+            max_muting: self.tMaxMutingTime,
+            delay: self.tMuteDelOutDelay,
+            active: self.wInputActive,
+            negated: self.wInputNegated,
+            options: self.dwOptions,
+        }
+    }
+
+    fn latched_params(&self) -> MutingParams {
+        let p = &self.stPrivate;
+        let t = |i: usize| p.awTime.get(i).map_or(0, |&v| u32::from(v));
+        MutingParams {
+            disc: [t(0), t(1), t(2)],
+            filter: t(T_FILTER),
+            max_muting: p.tMaxMutingTime,
+            delay: t(T_DELAY),
+            active: u16::from(p.stHeader.nActive),
+            negated: u16::from(p.stHeader.nNegated),
+            options: u32::from(p.stHeader.wOptions),
+        }
+    }
+
+    fn params_valid(p: &MutingParams) -> bool {
+        let a = p.active as u8;
+        let sequential = p.options & SL_OPT_MUTING_SEQUENTIAL != 0;
+        let times_ok = p.disc.iter().all(|&t| t <= SL_TIME_PARAM_MAX)
+            && p.filter <= SL_MUTING_FILTER_TIME_MAX
+            && p.max_muting <= SL_MUTING_MAX_MUTING_TIME_MAX
+            && p.delay <= SL_MUTING_DELOUT_DELAY_MAX;
+        // A discrepancy time belongs to a pair with both inputs active.
+        let pairs_ok = p
+            .disc
+            .iter()
+            .zip([M12, OSSD, M34])
+            .all(|(&t, both)| t == 0 || a & both == both);
+        // Sequential: single-channel sensors only, MutingIn3/4 both or neither (EL6910).
+        // Parallel: two two-channel groups.
+        let muting_ok = if sequential {
+            p.disc[0] == 0 && p.disc[2] == 0 && (a & M34 == 0 || a & M34 == M34)
+        } else {
+            a & MUTING_INPUTS == MUTING_INPUTS
+        };
+        // Backwards starts at MutingIn4.
+        let backwards_ok = p.options & SL_OPT_MUTING_BACKWARDS == 0 || a & M34 == M34;
+        times_ok
+            && pairs_ok
+            && muting_ok
+            && backwards_ok
+            && p.active & !INPUTS == 0
+            && p.negated & !INPUTS == 0
+            && p.options & !OPTIONS == 0
+            && a & M12 == M12
+            && a & OSSD != 0
+    }
+
+    fn store_params(&mut self, p: &MutingParams) {
+        let q = &mut self.stPrivate;
+        // Narrowing is exact for valid parameters; an invalid set is stored truncated and
+        // never runs (F_CFG_INVALID).
+        let n = |t: u32| t as u16;
+        q.awTime = [
+            n(p.disc[0]),
+            n(p.disc[1]),
+            n(p.disc[2]),
+            n(p.filter),
+            n(p.delay),
+            0,
+        ];
+        q.tMaxMutingTime = p.max_muting;
+        q.stHeader.nActive = p.active as u8;
+        q.stHeader.nNegated = p.negated as u8;
+        q.stHeader.wOptions = p.options as u16;
+    }
+
+    fn latched_crc(&self) -> u16 {
+        self.stPrivate.latched_crc()
+    }
+
+    fn decode(&mut self) -> (MutingIn, bool) {
+        let h = &self.stPrivate.stHeader;
+        let packed = bools::pack([
+            self.bMutingIn1,
+            self.bMutingIn2,
+            self.bOSSDIn1,
+            self.bOSSDIn2,
+            self.bMutingIn3,
+            self.bMutingIn4,
+        ]);
+        let active = h.nActive;
+        let options = u32::from(h.wOptions);
+        let edm = Edm {
+            active: [options & SL_OPT_EDM1 != 0, options & SL_OPT_EDM2 != 0],
+            is_true: [bools::is_true(self.bEDM1), bools::is_true(self.bEDM2)],
+            is_false: [bools::is_false(self.bEDM1), bools::is_false(self.bEDM2)],
+        };
+        // Only bytes the block reads count: active inputs, active EDMs, and MutingEnable.
+        let invalid = packed.invalid & active != 0
+            || (edm.active[0] && self.bEDM1 > 1)
+            || (edm.active[1] && self.bEDM2 > 1)
+            || self.bMutingEnable > 1;
+        let inp = MutingIn {
+            logical: bools::logical(packed, active, h.nNegated),
+            enable: bools::is_true(self.bMutingEnable),
+            edm,
+        };
+        (inp, invalid)
+    }
+
+    fn start(&mut self, inp: &MutingIn, now: u32) {
+        let h = &mut self.stPrivate.stHeader;
+        // The filter starts from the present values; no timer runs, no direction is set.
+        h.wAux = u16::from(inp.logical & MUTING_INPUTS);
+        h.tPhase = now;
+        h.nState = SL_STATE_SAFE;
+    }
+
+    fn step(&mut self, inp: &MutingIn, now: u32) -> Status {
+        let p = &mut self.stPrivate;
+        let state = p.stHeader.nState;
+        let active = p.stHeader.nActive;
+        let options = u32::from(p.stHeader.wOptions);
+        let aux = p.stHeader.wAux;
+
+        // Muting inputs through the filter, OSSD inputs as they are (docs M9).
+        let mut filtered = (aux & AUX_FILTERED) as u8 & MUTING_INPUTS;
+        let mut pending = (aux >> AUX_PENDING_SHIFT) as u8 & MUTING_INPUTS;
+        let [d12, d_ossd, d34, filter_time, delay, _] = p.awTime;
+        filter(
+            inp.logical & MUTING_INPUTS,
+            &mut filtered,
+            &mut pending,
+            &mut p.atFilterStart,
+            u32::from(filter_time),
+            now,
+        );
+        let eval = filtered | (inp.logical & OSSD);
+
+        // Discrepancy monitoring of the three pairs runs in every running state.
+        let disc_times = [d12, d_ossd, d34];
+        let monitored = disc_times
+            .iter()
+            .enumerate()
+            .fold(0u8, |m, (k, &t)| m | (u8::from(t != 0) << k));
+        let mut running = (aux >> AUX_RUNNING_SHIFT) as u8 & 0b111;
+        let disc = pair::monitor(
+            eval,
+            monitored,
+            &mut running,
+            &mut p.atDiscStart,
+            &disc_times,
+            now,
+        );
+        p.stHeader.wAux = (aux & AUX_BACKWARDS)
+            | u16::from(filtered)
+            | (u16::from(pending) << AUX_PENDING_SHIFT)
+            | (u16::from(running) << AUX_RUNNING_SHIFT);
+        // Bit k: discrepancy error of group k; bit 8+k: not yet reset (docs M14).
+        let err = u16::from(disc) | (u16::from(disc) << 8);
+
+        let seq = Sequence::new(active, options);
+        let pat = pattern(eval, active);
+        let field = field_interrupted(eval, active);
+        let backwards = p.stHeader.wAux & AUX_BACKWARDS != 0;
+        let max_time = p.tMaxMutingTime;
+        let violation = SL_DIAG_MUTING_SEQUENCE;
+
+        let mut status = Status::Ok;
+        // The next state; `Err(diag)` enters ERROR with these bits.
+        let next: Result<u8, u16> = match state {
+            SL_STATE_DELAYOUT => {
+                // A discrepancy error waits for the end of the delay (manual §4.8.2, docs M16).
+                p.stHeader.wDiag |= err;
+                if !time::reached(now, p.stHeader.tPhase, u32::from(delay)) {
+                    Ok(SL_STATE_DELAYOUT)
+                } else if p.stHeader.wDiag != 0 {
+                    Err(0)
+                } else {
+                    Ok(SL_STATE_SAFE)
+                }
+            }
+            _ if err != 0 => Err(err),
+            SL_STATE_SAFE => {
+                if field || !inp.edm.all_released() {
+                    Ok(SL_STATE_SAFE)
+                } else if p.intact() {
+                    Ok(SL_STATE_RUN)
+                } else {
+                    status = Status::Corrupt;
+                    Err(SL_DIAG_CORRUPT)
+                }
+            }
+            SL_STATE_RUN if !inp.enable => {
+                if field {
+                    Ok(p.switch_off(now))
+                } else {
+                    Ok(SL_STATE_RUN)
+                }
+            }
+            SL_STATE_RUN => {
+                let forward = seq.view(pat);
+                let dir = match seq.first() {
+                    Some(f) if forward == seq.expected(f) => Some((f, false)),
+                    Some(f)
+                        if options & SL_OPT_MUTING_BACKWARDS != 0
+                            && seq.view(mirror(pat)) == seq.expected(f) =>
+                    {
+                        Some((f, true))
+                    }
+                    _ => None,
+                };
+                match dir {
+                    Some((f, back)) if p.intact() => {
+                        let h = &mut p.stHeader;
+                        h.wAux = (h.wAux & !AUX_BACKWARDS) | if back { AUX_BACKWARDS } else { 0 };
+                        h.tPhase = now;
+                        Ok(muting_state(f))
+                    }
+                    Some(_) => {
+                        status = Status::Corrupt;
+                        Err(SL_DIAG_CORRUPT)
+                    }
+                    // With Enable TRUE every shutdown is a sequence violation (docs M6).
+                    None if field || forward != 0 => Err(violation),
+                    None => Ok(SL_STATE_RUN),
+                }
+            }
+            SL_STATE_MUTING_MUTING1..=SL_STATE_MUTING_MUTING9 => {
+                let pos = usize::from(state - SL_STATE_MUTING_MUTING1) + 1;
+                let seen = seq.view(if backwards { mirror(pat) } else { pat });
+                if !seq.used(pos) {
+                    // A step this configuration never takes: the private state is corrupt.
+                    status = Status::Corrupt;
+                    Err(SL_DIAG_CORRUPT)
+                } else if !inp.enable {
+                    // Enable FALSE ends muting: the field decides alone (docs M7).
+                    if field {
+                        Ok(p.switch_off(now))
+                    } else {
+                        Ok(SL_STATE_RUN)
+                    }
+                } else if max_time != 0 && time::reached(now, p.stHeader.tPhase, max_time) {
+                    Err(SL_DIAG_MUTING_MAX_TIME)
+                } else if seen == seq.expected(pos) {
+                    Ok(state)
+                } else {
+                    match seq.next(pos) {
+                        Some(y) if seen == seq.expected(y) => Ok(muting_state(y)),
+                        None if seen == 0 && !field => Ok(SL_STATE_RUN),
+                        _ => Err(violation),
+                    }
+                }
+            }
+            _ => {
+                // A state value this block never takes: the private state cannot be trusted.
+                status = Status::Corrupt;
+                Err(SL_DIAG_CORRUPT)
+            }
+        };
+        match next {
+            Ok(s) => p.stHeader.nState = s,
+            Err(diag) => p.stHeader.enter_error(diag),
+        }
+        status
+    }
+
+    fn stop(&mut self) {
+        let h = &mut self.stPrivate.stHeader;
+        // A discrepancy error waiting in DELAYOUT stays an error; every other state stops.
+        if h.nState == SL_STATE_DELAYOUT && h.wDiag != 0 {
+            h.enter_error(0);
+        } else {
+            h.nState = SL_STATE_STOP;
+        }
+    }
+
+    fn error_remains(&mut self, inp: &MutingIn) -> bool {
+        let h = &mut self.stPrivate.stHeader;
+        let active = h.nActive;
+        // "Not yet reset" (bits 8-10) clears once both channels of the group requested the
+        // safe state in the same cycle (docs M14).
+        let both_safe = u16::from(pair::both_safe(inp.logical) & 0b111);
+        h.wDiag &= !(both_safe << 8);
+        let failed = (h.wDiag & 0b111) as u8;
+        let disc_remains = failed & pair::differing(inp.logical) != 0 || h.wDiag & 0x0700 != 0;
+        // The muting area must be clear: no muting sensor actuated, the field clear (docs M15).
+        let area_busy = h.wDiag & 0x00FF != 0
+            && (inp.logical & MUTING_INPUTS != 0 || field_interrupted(inp.logical, active));
+        disc_remains || area_busy
+    }
+
+    fn write_outputs(&mut self) {
+        let h = self.stPrivate.stHeader;
+        let (error, muting, out, del_out) = match h.nState {
+            SL_STATE_RUN => (false, false, true, true),
+            SL_STATE_MUTING_MUTING1..=SL_STATE_MUTING_MUTING9 => (false, true, true, true),
+            SL_STATE_DELAYOUT => (false, false, false, true),
+            SL_STATE_ERROR => (true, false, false, false),
+            _ => (false, false, false, false),
+        };
+        self.bError = u8::from(error);
+        self.bMutingActive = u8::from(muting);
+        self.bMuteOut = u8::from(out);
+        self.bMuteDelOut = u8::from(del_out);
+        self.nState = h.nState;
+        self.nDiag = h.wDiag;
+    }
+}

@@ -1,0 +1,387 @@
+//! FB OPMODE — manual §4.3 (functional description 4.3.1, signals, states and diag bit 4.3.2,
+//! configuration 4.3.3, restart behaviour and samples 1–2 4.3.4).
+//!
+//! An operating mode selector: eight inputs looped through one-to-one to eight outputs. The
+//! output of the one active input that is TRUE is set; with none or more than one TRUE all
+//! outputs are FALSE. With `SL_OPT_MANUAL_RESTART` ("Restart" activated) the outputs leave
+//! the safe state at start-up and after every change of mode only through the restart
+//! sequence. `tDiscTime` (≠ 0) limits how long no mode or more than one mode may be
+//! selected (the change from one mode to the next); beyond it: ERROR, diag bit 0.
+//! Readings of the manual: docs/semantics.md rows O1–O12.
+
+use crate::base::block::BlockInfo;
+use crate::base::bools::{self, Edge};
+use crate::base::envelope::Block;
+use crate::base::header::{param_crc, F_RESTART_PREV, SL_PRIVATE_HEADER};
+use crate::base::restart::{self, Restart};
+use crate::base::time;
+use crate::base::types::*;
+
+/// FB_OPMODE diag bit 0: discrepancy monitoring error (no mode or more than one mode selected
+/// for tDiscTime, manual §4.3.2).
+pub const SL_DIAG_OPMODE_DISC: u16 = 1 << 0;
+
+/// Block type tag of FB_OPMODE.
+pub const SL_TYPE_OPMODE: u16 = 7;
+
+/// FB OPMODE instance (ABI §3, §9). Inputs at the manual's offsets (§4.3.2), outputs at
+/// output base 32 + the manual's offsets.
+/// Size: 88 bytes.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+#[allow(non_snake_case, non_camel_case_types)]
+pub struct FB_OPMODE {
+    /// Offset 0. Restart (push button, make contact): with SL_OPT_MANUAL_RESTART its falling
+    /// edge enables the selected mode's output. Ignored without the option.
+    pub bRestart: SL_BOOL,
+    /// Offset 1. Reserved, keep 0.
+    pub aReserved0: [u8; 7],
+    /// Offset 8. Operating mode input 1.
+    pub bOpIn1: SL_BOOL,
+    /// Offset 9. Operating mode input 2.
+    pub bOpIn2: SL_BOOL,
+    /// Offset 10. Operating mode input 3.
+    pub bOpIn3: SL_BOOL,
+    /// Offset 11. Operating mode input 4.
+    pub bOpIn4: SL_BOOL,
+    /// Offset 12. Operating mode input 5.
+    pub bOpIn5: SL_BOOL,
+    /// Offset 13. Operating mode input 6.
+    pub bOpIn6: SL_BOOL,
+    /// Offset 14. Operating mode input 7.
+    pub bOpIn7: SL_BOOL,
+    /// Offset 15. Operating mode input 8.
+    pub bOpIn8: SL_BOOL,
+    /// Offset 16. FbRun of the owning group: TRUE = the block executes.
+    pub bRun: SL_BOOL,
+    /// Offset 17. ErrAck of the owning group.
+    pub bErrAck: SL_BOOL,
+    /// Offset 18. Reserved, keep 0.
+    pub aReserved1: [u8; 2],
+    /// Offset 20. Longest time in ms with no mode or more than one mode selected (0 = no
+    /// monitoring; at most SL_TIME_PARAM_MAX).
+    pub tDiscTime: u32,
+    /// Offset 24. Bit n-1 set: OpInn is active (at least two).
+    pub wInputActive: u16,
+    /// Offset 26. Reserved, keep 0.
+    pub aReserved2: [u8; 2],
+    /// Offset 28. SL_OPT_MANUAL_RESTART (the Restart input is activated).
+    pub dwOptions: u32,
+    /// Offset 32 (output base + 0). TRUE in ERROR.
+    pub bError: SL_BOOL,
+    /// Offset 33. Reserved.
+    pub aReserved3: [u8; 7],
+    /// Offset 40 (output base + 8). Output of mode 1.
+    pub bOpOut1: SL_BOOL,
+    /// Offset 41 (output base + 9). Output of mode 2.
+    pub bOpOut2: SL_BOOL,
+    /// Offset 42 (output base + 10). Output of mode 3.
+    pub bOpOut3: SL_BOOL,
+    /// Offset 43 (output base + 11). Output of mode 4.
+    pub bOpOut4: SL_BOOL,
+    /// Offset 44 (output base + 12). Output of mode 5.
+    pub bOpOut5: SL_BOOL,
+    /// Offset 45 (output base + 13). Output of mode 6.
+    pub bOpOut6: SL_BOOL,
+    /// Offset 46 (output base + 14). Output of mode 7.
+    pub bOpOut7: SL_BOOL,
+    /// Offset 47 (output base + 15). Output of mode 8.
+    pub bOpOut8: SL_BOOL,
+    /// Offset 48. The manual's status value (SL_STATE_*).
+    pub nState: u8,
+    /// Offset 49. Reserved.
+    pub aReserved4: [u8; 1],
+    /// Offset 50. Diagnostic bits (SL_DIAG_OPMODE_DISC and the library bits 13-15).
+    pub nDiag: u16,
+    /// Offset 52. Reserved.
+    pub aReserved5: [u8; 4],
+    /// Offset 56. Private state, 32 bytes: never write it.
+    pub stPrivate: SL_OPMODE_PRIVATE,
+}
+
+/// Private state of FB_OPMODE (32 bytes). Never written by the user.
+///
+/// `stHeader.wAux` (complement-checked) bits 0-7: the mode (one input bit) that RUN drives
+/// or START waits to confirm; bit 8: the mode-change timer runs, started at
+/// `stHeader.tPhase`.
+/// Size: 32 bytes.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+#[allow(non_snake_case, non_camel_case_types)]
+pub struct SL_OPMODE_PRIVATE {
+    pub stHeader: SL_PRIVATE_HEADER,
+    /// Latched tDiscTime in ms.
+    pub wDiscTime: u16,
+    pub aReserved: [u8; 2],
+}
+
+crate::base::block::block_states!(
+    /// The states of FB OPMODE.
+    OpmodeState: Run, Stop, Safe, Error, Reset, Start
+);
+
+/// Type tag, name, states and diag texts (manual §4.3.2).
+const INFO: BlockInfo = BlockInfo {
+    tag: SL_TYPE_OPMODE,
+    name: "OPMODE",
+    states: <OpmodeState as crate::base::block::BlockState>::TABLE,
+    diag: &[(SL_DIAG_OPMODE_DISC, "discrepancy monitoring error")],
+    diag_values: &[],
+};
+
+crate::impl_member!([] FB_OPMODE {
+    info: INFO,
+    state: OpmodeState,
+    private: SL_OPMODE_PRIVATE,
+    input: [bRestart, bOpIn1, bOpIn2, bOpIn3, bOpIn4, bOpIn5, bOpIn6, bOpIn7, bOpIn8],
+    param: [tDiscTime, wInputActive, dwOptions],
+    output: [bError, bOpOut1, bOpOut2, bOpOut3, bOpOut4, bOpOut5, bOpOut6, bOpOut7, bOpOut8],
+    info_fields: [],
+});
+
+/// wAux bits 0-7: the latched mode.
+const AUX_MODE: u16 = 0x00FF;
+/// wAux bit 8: the mode-change timer runs.
+const AUX_DISC_RUNNING: u16 = 1 << 8;
+/// Options FB_OPMODE accepts.
+const OPTIONS: u32 = SL_OPT_MANUAL_RESTART;
+
+/// FB_OPMODE parameters as the user wrote them.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct OpmodeParams {
+    pub disc: u32,
+    pub active: u16,
+    pub options: u32,
+}
+
+/// Decoded inputs of one cycle.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct OpmodeIn {
+    /// The selected mode as its input bit: the one active input that is TRUE. 0 when none
+    /// or more than one active input is TRUE, or an active input byte is invalid (O5).
+    pub mode: u8,
+    pub restart: Edge,
+}
+
+impl FB_OPMODE {
+    fn inputs(&self) -> [u8; 8] {
+        [
+            self.bOpIn1,
+            self.bOpIn2,
+            self.bOpIn3,
+            self.bOpIn4,
+            self.bOpIn5,
+            self.bOpIn6,
+            self.bOpIn7,
+            self.bOpIn8,
+        ]
+    }
+
+    fn manual_restart(&self) -> bool {
+        u32::from(self.stPrivate.stHeader.wOptions) & SL_OPT_MANUAL_RESTART != 0
+    }
+}
+
+/// CRC of the latched parameters (header masks and the discrepancy time).
+fn opmode_crc(h: &SL_PRIVATE_HEADER, disc: u16) -> u16 {
+    param_crc(
+        <FB_OPMODE as Block>::MAGIC,
+        h.nActive,
+        h.nNegated,
+        h.wOptions,
+        &[disc],
+    )
+}
+
+/// A mode output switches on: verify the latched parameters first (C3), then RUN with it.
+fn enable(h: &mut SL_PRIVATE_HEADER, disc: u16, mode: u8) -> (u8, Status) {
+    if opmode_crc(h, disc) != h.wParamCrc {
+        h.enter_error(SL_DIAG_CORRUPT);
+        return (SL_STATE_ERROR, Status::Corrupt);
+    }
+    h.wAux = (h.wAux & !AUX_MODE) | u16::from(mode);
+    (SL_STATE_RUN, Status::Ok)
+}
+
+impl Block for FB_OPMODE {
+    const MAGIC: u16 = 0x0D7E;
+    type Params = OpmodeParams;
+    type In = OpmodeIn;
+
+    fn live_params(&self) -> OpmodeParams {
+        OpmodeParams {
+            disc: self.tDiscTime,
+            active: self.wInputActive,
+            options: self.dwOptions,
+        }
+    }
+
+    fn latched_params(&self) -> OpmodeParams {
+        let p = &self.stPrivate;
+        OpmodeParams {
+            disc: u32::from(p.wDiscTime),
+            active: u16::from(p.stHeader.nActive),
+            options: u32::from(p.stHeader.wOptions),
+        }
+    }
+
+    /// Manual §4.3.1 "At least two inputs of FB OPMODE must be connected"; C6 strictness.
+    fn params_valid(p: &OpmodeParams) -> bool {
+        p.disc <= SL_TIME_PARAM_MAX
+            && p.active & !0xFF == 0
+            && p.active.count_ones() >= 2
+            && p.options & !OPTIONS == 0
+    }
+
+    fn store_params(&mut self, p: &OpmodeParams) {
+        let q = &mut self.stPrivate;
+        // Exact for valid parameters; an invalid set is stored truncated and never runs.
+        q.wDiscTime = p.disc as u16;
+        q.stHeader.nActive = p.active as u8;
+        q.stHeader.nNegated = 0;
+        q.stHeader.wOptions = p.options as u16;
+    }
+
+    fn latched_crc(&self) -> u16 {
+        opmode_crc(&self.stPrivate.stHeader, self.stPrivate.wDiscTime)
+    }
+
+    fn decode(&mut self) -> (OpmodeIn, bool) {
+        let packed = bools::pack(self.inputs());
+        let manual = self.manual_restart();
+        let restart_raw = self.bRestart;
+        let h = &mut self.stPrivate.stHeader;
+        let active = h.nActive;
+        let on = bools::logical(packed, active, 0);
+        let bad = packed.invalid & active;
+        // An invalid byte on an active input makes the whole selection untrustworthy: no
+        // mode (O5). Only bytes the block reads count (C7): Restart only with the option.
+        let mode = if bad == 0 && on.count_ones() == 1 {
+            on
+        } else {
+            0
+        };
+        let restart = bools::edge(restart_raw, &mut h.nFlags, F_RESTART_PREV);
+        let invalid = bad != 0 || (manual && restart_raw > 1);
+        (OpmodeIn { mode, restart }, invalid)
+    }
+
+    /// STOP → run and RESET → run: SAFE with the timer stopped (O7); the next call decides.
+    fn start(&mut self, _inp: &OpmodeIn, now: u32) {
+        let h = &mut self.stPrivate.stHeader;
+        h.wAux = 0;
+        h.tPhase = now;
+        h.nState = SL_STATE_SAFE;
+    }
+
+    fn step(&mut self, inp: &OpmodeIn, now: u32) -> Status {
+        let manual = self.manual_restart();
+        let p = &mut self.stPrivate;
+        let disc = u32::from(p.wDiscTime);
+        let h = &mut p.stHeader;
+        let state = h.nState;
+        let latched = (h.wAux & AUX_MODE) as u8;
+
+        // RUN and START hold exactly one active mode bit; anything else is corruption.
+        let latched_ok = latched.count_ones() == 1 && latched & !h.nActive == 0;
+        if matches!(state, SL_STATE_RUN | SL_STATE_START) && !latched_ok {
+            h.enter_error(SL_DIAG_CORRUPT);
+            return Status::Corrupt;
+        }
+
+        // Mode-change monitoring (§4.3.1 "A discrepancy time can be specified to monitor the
+        // change from one operation mode to the next"): no mode or more than one mode must not
+        // last the full tDiscTime (O3).
+        if disc != 0 && inp.mode == 0 {
+            if h.wAux & AUX_DISC_RUNNING == 0 {
+                h.wAux |= AUX_DISC_RUNNING;
+                h.tPhase = now;
+            } else if time::reached(now, h.tPhase, disc) {
+                h.enter_error(SL_DIAG_OPMODE_DISC);
+                return Status::Ok;
+            }
+        } else {
+            h.wAux &= !AUX_DISC_RUNNING;
+        }
+
+        let mut status = Status::Ok;
+        let (next, mode) = match state {
+            SL_STATE_SAFE | SL_STATE_START if manual => {
+                let in_start = state == SL_STATE_START;
+                // In START the restart confirms the mode that was selected when START was
+                // entered: another selection is a request for the safe state (O8).
+                let request = inp.mode == 0 || (in_start && inp.mode != latched);
+                match restart::step(in_start, inp.restart, request) {
+                    Restart::Wait => (SL_STATE_SAFE, 0),
+                    Restart::Start => (SL_STATE_START, inp.mode),
+                    Restart::Enable => {
+                        let (s, st) = enable(h, disc as u16, latched);
+                        status = st;
+                        (s, latched)
+                    }
+                }
+            }
+            SL_STATE_SAFE => {
+                if inp.mode != 0 {
+                    let (s, st) = enable(h, disc as u16, inp.mode);
+                    status = st;
+                    (s, inp.mode)
+                } else {
+                    (SL_STATE_SAFE, 0)
+                }
+            }
+            SL_STATE_RUN => {
+                if inp.mode == latched {
+                    (SL_STATE_RUN, latched)
+                } else if inp.mode != 0 && !manual {
+                    // Automatic: OpOutX = OpInX, a direct change of mode switches over (O9).
+                    let (s, st) = enable(h, disc as u16, inp.mode);
+                    status = st;
+                    (s, inp.mode)
+                } else {
+                    // No valid mode, or a change of mode that needs a restart (§4.3.1).
+                    (SL_STATE_SAFE, 0)
+                }
+            }
+            _ => {
+                // A state value this block never takes (START without manual restart
+                // included): the private state cannot be trusted.
+                h.enter_error(SL_DIAG_CORRUPT);
+                return Status::Corrupt;
+            }
+        };
+        if h.nState != SL_STATE_ERROR {
+            h.nState = next;
+            h.wAux = (h.wAux & !AUX_MODE) | u16::from(mode);
+        }
+        status
+    }
+
+    /// A discrepancy error remains while no single valid mode is selected (O6).
+    fn error_remains(&mut self, inp: &OpmodeIn) -> bool {
+        self.stPrivate.stHeader.wDiag & SL_DIAG_OPMODE_DISC != 0 && inp.mode == 0
+    }
+
+    fn write_outputs(&mut self) {
+        let h = self.stPrivate.stHeader;
+        let mode = (h.wAux & AUX_MODE) as u8;
+        // Only RUN drives an output, and only a single active mode bit (never two outputs).
+        let out = if h.nState == SL_STATE_RUN && mode.count_ones() == 1 && mode & !h.nActive == 0 {
+            mode
+        } else {
+            0
+        };
+        let bit = |n: u8| (out >> n) & 1;
+        self.bError = u8::from(h.nState == SL_STATE_ERROR);
+        self.bOpOut1 = bit(0);
+        self.bOpOut2 = bit(1);
+        self.bOpOut3 = bit(2);
+        self.bOpOut4 = bit(3);
+        self.bOpOut5 = bit(4);
+        self.bOpOut6 = bit(5);
+        self.bOpOut7 = bit(6);
+        self.bOpOut8 = bit(7);
+        self.nState = h.nState;
+        self.nDiag = h.wDiag;
+    }
+}

@@ -1,0 +1,481 @@
+//! FB TWOHAND — manual §4.7 (functional description 4.7.1, signals, diag bits and states
+//! 4.7.2, configuration 4.7.3).
+//!
+//! Two-hand control: input group 1 (TwoHand1/2) and input group 2 (TwoHand3/4), each a
+//! single-channel input, a two-channel input, or a two-channel input with discrepancy
+//! monitoring (`tDiscTime12`, `tDiscTime34`, shared pair monitor). The output is set only
+//! when both groups are actuated together, starting from SAFE through 1BUTTON or 2BUTTON, and
+//! is set again only after every active input was released (RELEASE → SAFE). With
+//! `tDiscTimePairs` ≠ 0 the second group must follow the first within that time.
+//! Readings of the manual: docs/semantics.md rows H1–H14.
+
+use crate::base::block::BlockInfo;
+use crate::base::bools;
+use crate::base::envelope::Block;
+use crate::base::header::{param_crc, SL_PRIVATE_HEADER};
+use crate::base::types::*;
+use crate::base::{pair, time};
+
+/// FB_TWOHAND diag bit 2: discrepancy error between the two input pairs (the second group was
+/// not actuated within tDiscTimePairs, manual §4.7.2). Bits 0/1 are SL_DIAG_DISC1/2.
+pub const SL_DIAG_TWOHAND_PAIRS: u16 = 1 << 2;
+
+/// FB_TWOHAND diag bit 10: bit 2 with "Safe Inputs after Disc Error" active (set in addition
+/// to bit 2). Bits 8/9 are SL_DIAG_SAFE_IN_DISC1/2.
+pub const SL_DIAG_TWOHAND_SAFE_IN_PAIRS: u16 = 1 << 10;
+
+/// FB_TWOHAND state 1BUTTON (11): every active input of the first group is TRUE, the second
+/// group is not actuated yet (manual §4.7.2).
+pub const SL_STATE_TWOHAND_1BUTTON: u8 = 11;
+
+/// FB_TWOHAND state 2BUTTON (12): every active input of the second group is TRUE, the first
+/// group is not actuated yet.
+pub const SL_STATE_TWOHAND_2BUTTON: u8 = 12;
+
+/// FB_TWOHAND state RELEASE (13): waiting until every active input is FALSE before the output
+/// can be set again.
+pub const SL_STATE_TWOHAND_RELEASE: u8 = 13;
+
+/// Block type tag of FB_TWOHAND.
+pub const SL_TYPE_TWOHAND: u16 = 8;
+
+/// Largest tDiscTimePairs of FB_TWOHAND in ms (manual §4.7.1: "up to 2500 ms").
+pub const SL_TWOHAND_PAIRS_TIME_MAX: u32 = 2_500;
+
+/// FB TWOHAND instance (ABI §3, §9). Inputs at the manual's offsets (§4.7.2), outputs at
+/// output base 40 + the manual's offsets.
+/// Size: 104 bytes.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+#[allow(non_snake_case, non_camel_case_types)]
+pub struct FB_TWOHAND {
+    /// Offset 0. Reserved, keep 0.
+    pub aReserved0: [u8; 8],
+    /// Offset 8. Input group 1, first channel (pair 1 with TwoHand2).
+    pub bTwoHand1: SL_BOOL,
+    /// Offset 9. Input group 1, second channel.
+    pub bTwoHand2: SL_BOOL,
+    /// Offset 10. Input group 2, first channel (pair 2 with TwoHand4).
+    pub bTwoHand3: SL_BOOL,
+    /// Offset 11. Input group 2, second channel.
+    pub bTwoHand4: SL_BOOL,
+    /// Offset 12. Reserved, keep 0.
+    pub aReserved1: [u8; 4],
+    /// Offset 16. FbRun of the owning group: TRUE = the block executes.
+    pub bRun: SL_BOOL,
+    /// Offset 17. ErrAck of the owning group.
+    pub bErrAck: SL_BOOL,
+    /// Offset 18. Reserved, keep 0.
+    pub aReserved2: [u8; 2],
+    /// Offset 20. Discrepancy time of pair TwoHand1/2 in ms (0 = no monitoring; needs both
+    /// inputs active).
+    pub tDiscTime12: u32,
+    /// Offset 24. Discrepancy time of pair TwoHand3/4 in ms.
+    pub tDiscTime34: u32,
+    /// Offset 28. Time window in ms within which the second group must be actuated after the
+    /// first (0 = off, at most SL_TWOHAND_PAIRS_TIME_MAX = 2500).
+    pub tDiscTimePairs: u32,
+    /// Offset 32. Bits 0-3 set: TwoHand1-4 active (each group needs one).
+    pub wInputActive: u16,
+    /// Offset 34. Bits 0-3 set: TwoHand1-4 is a make contact (negated).
+    pub wInputNegated: u16,
+    /// Offset 36. SL_OPT_SAFE_INPUTS_AFTER_DISC.
+    pub dwOptions: u32,
+    /// Offset 40 (output base + 0). TRUE in ERROR.
+    pub bError: SL_BOOL,
+    /// Offset 41 (output base + 1). The two-hand output.
+    pub bTwoHandOut: SL_BOOL,
+    /// Offset 42. Reserved.
+    pub aReserved3: [u8; 6],
+    /// Offset 48. The manual's status value (SL_STATE_*, SL_STATE_TWOHAND_*).
+    pub nState: u8,
+    /// Offset 49. Reserved.
+    pub aReserved4: [u8; 1],
+    /// Offset 50. Diagnostic bits (SL_DIAG_DISC1/2, SL_DIAG_TWOHAND_*, SL_DIAG_SAFE_IN_DISC1/2).
+    pub nDiag: u16,
+    /// Offset 52. Reserved.
+    pub aReserved5: [u8; 4],
+    /// Offset 56. Private state, 48 bytes: never write it.
+    pub stPrivate: SL_TWOHAND_PRIVATE,
+}
+
+/// Private state of FB_TWOHAND (48 bytes). Never written by the user.
+///
+/// `stHeader.wAux` (complement-checked) bits 0-1: pair discrepancy timers running; bits 4-5:
+/// "Safe Inputs after Disc Error" latches of pairs 1/2; bit 6: the same for the error
+/// between the pairs. `stHeader.tPhase`: start of the window between the groups.
+/// Size: 48 bytes.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+#[allow(non_snake_case, non_camel_case_types)]
+pub struct SL_TWOHAND_PRIVATE {
+    pub stHeader: SL_PRIVATE_HEADER,
+    /// Latched times in ms: tDiscTime12, tDiscTime34, tDiscTimePairs, reserved.
+    pub awTime: [u16; 4],
+    /// Start times of the pair discrepancy timers.
+    pub atDiscStart: [u32; 2],
+    pub aReserved: [u8; 4],
+}
+
+crate::base::block::block_states!(
+    /// The states of FB TWOHAND.
+    TwohandState:
+        Run,
+        Stop,
+        Safe,
+        Error,
+        Reset,
+        OneButton = SL_STATE_TWOHAND_1BUTTON, "1BUTTON",
+        TwoButton = SL_STATE_TWOHAND_2BUTTON, "2BUTTON",
+        Release = SL_STATE_TWOHAND_RELEASE, "RELEASE"
+);
+
+/// Type tag, name, states and diag texts (manual §4.7.2).
+const INFO: BlockInfo = BlockInfo {
+    tag: SL_TYPE_TWOHAND,
+    name: "TWOHAND",
+    states: <TwohandState as crate::base::block::BlockState>::TABLE,
+    diag: &[
+        (SL_DIAG_DISC1, "discrepancy error input pair 1"),
+        (SL_DIAG_DISC2, "discrepancy error input pair 2"),
+        (
+            SL_DIAG_TWOHAND_PAIRS,
+            "discrepancy error between the two input pairs",
+        ),
+        (
+            SL_DIAG_TWOHAND_ERROR,
+            "two-hand error: second input pair actuated, first no longer actuated",
+        ),
+        (
+            SL_DIAG_SAFE_IN_DISC1,
+            "pair 1 with Safe Inputs after Disc Error",
+        ),
+        (
+            SL_DIAG_SAFE_IN_DISC2,
+            "pair 2 with Safe Inputs after Disc Error",
+        ),
+        (
+            SL_DIAG_TWOHAND_SAFE_IN_PAIRS,
+            "between the pairs with Safe Inputs after Disc Error",
+        ),
+    ],
+    diag_values: &[],
+};
+
+crate::impl_member!([] FB_TWOHAND {
+    info: INFO,
+    state: TwohandState,
+    private: SL_TWOHAND_PRIVATE,
+    input: [bTwoHand1, bTwoHand2, bTwoHand3, bTwoHand4],
+    param: [tDiscTime12, tDiscTime34, tDiscTimePairs, wInputActive, wInputNegated, dwOptions],
+    output: [bError, bTwoHandOut],
+    info_fields: [],
+});
+
+const T_DISC12: usize = 0;
+const T_DISC34: usize = 1;
+const T_PAIRS: usize = 2;
+/// Input bits of group 1 and group 2.
+const GROUP1: u8 = 0b0011;
+const GROUP2: u8 = 0b1100;
+/// wAux bits 0-1: pair timers running.
+const AUX_PAIR_TIMERS: u16 = 0b11;
+/// wAux bits 4-5: both channels of pair k requested the safe state together since the error.
+const AUX_SAFE_SHIFT: u32 = 4;
+/// wAux bit 6: every active input was released together since an error between the pairs.
+const AUX_RELEASED: u16 = 1 << 6;
+/// Options FB_TWOHAND accepts.
+const OPTIONS: u32 = SL_OPT_SAFE_INPUTS_AFTER_DISC;
+
+/// FB_TWOHAND parameters as the user wrote them.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct TwohandParams {
+    pub disc: [u32; 2],
+    pub pairs: u32,
+    pub active: u16,
+    pub negated: u16,
+    pub options: u32,
+}
+
+/// Decoded inputs of one cycle.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct TwohandIn {
+    /// Logical values of the active inputs (an invalid byte reads FALSE).
+    pub logical: u8,
+    /// Active inputs whose byte is an invalid BOOL.
+    pub invalid: u8,
+    /// Every active input of group 1 is logically TRUE (the group is actuated).
+    pub g1: bool,
+    /// Every active input of group 2 is logically TRUE.
+    pub g2: bool,
+    /// Every active input is valid and logically FALSE (both groups released, H6).
+    pub released: bool,
+}
+
+impl FB_TWOHAND {
+    fn inputs(&self) -> [u8; 4] {
+        [
+            self.bTwoHand1,
+            self.bTwoHand2,
+            self.bTwoHand3,
+            self.bTwoHand4,
+        ]
+    }
+
+    fn safe_inputs_option(&self) -> bool {
+        u32::from(self.stPrivate.stHeader.wOptions) & SL_OPT_SAFE_INPUTS_AFTER_DISC != 0
+    }
+}
+
+/// Diag bits `d` with their "Safe Inputs after Disc Error" companions (bit + 8) when the
+/// option is on (manual §4.7.2: "set in addition to bit 0/1/2").
+#[inline]
+fn with_safe_bits(d: u16, safe_inputs: bool) -> u16 {
+    if safe_inputs {
+        d | (d << 8)
+    } else {
+        d
+    }
+}
+
+/// CRC of the latched parameters (header masks and the times).
+fn twohand_crc(h: &SL_PRIVATE_HEADER, times: &[u16]) -> u16 {
+    param_crc(
+        <FB_TWOHAND as Block>::MAGIC,
+        h.nActive,
+        h.nNegated,
+        h.wOptions,
+        times,
+    )
+}
+
+/// The output switches on: verify the latched parameters first (C3).
+fn enable(h: &mut SL_PRIVATE_HEADER, times: &[u16]) -> Status {
+    if twohand_crc(h, times) != h.wParamCrc {
+        h.enter_error(SL_DIAG_CORRUPT);
+        return Status::Corrupt;
+    }
+    h.nState = SL_STATE_RUN;
+    Status::Ok
+}
+
+impl Block for FB_TWOHAND {
+    const MAGIC: u16 = 0x2A4D;
+    type Params = TwohandParams;
+    type In = TwohandIn;
+
+    fn live_params(&self) -> TwohandParams {
+        TwohandParams {
+            disc: [self.tDiscTime12, self.tDiscTime34],
+            pairs: self.tDiscTimePairs,
+            active: self.wInputActive,
+            negated: self.wInputNegated,
+            options: self.dwOptions,
+        }
+    }
+
+    fn latched_params(&self) -> TwohandParams {
+        let p = &self.stPrivate;
+        let t = |i: usize| p.awTime.get(i).map_or(0, |&v| u32::from(v));
+        TwohandParams {
+            disc: [t(T_DISC12), t(T_DISC34)],
+            pairs: t(T_PAIRS),
+            active: u16::from(p.stHeader.nActive),
+            negated: u16::from(p.stHeader.nNegated),
+            options: u32::from(p.stHeader.wOptions),
+        }
+    }
+
+    /// Each group needs an active input (a two-hand control has two groups, H2); a
+    /// discrepancy time needs both inputs of its pair active (C6); the window is at most
+    /// 2500 ms (§4.7.1).
+    fn params_valid(p: &TwohandParams) -> bool {
+        let a = p.active;
+        let g1 = u16::from(GROUP1);
+        let g2 = u16::from(GROUP2);
+        p.disc.iter().all(|&t| t <= SL_TIME_PARAM_MAX)
+            && p.pairs <= SL_TWOHAND_PAIRS_TIME_MAX
+            && (p.disc[0] == 0 || a & g1 == g1)
+            && (p.disc[1] == 0 || a & g2 == g2)
+            && a & !0x0F == 0
+            && p.negated & !0x0F == 0
+            && a & g1 != 0
+            && a & g2 != 0
+            && p.options & !OPTIONS == 0
+    }
+
+    fn store_params(&mut self, p: &TwohandParams) {
+        let q = &mut self.stPrivate;
+        // Exact for valid parameters; an invalid set is stored truncated and never runs.
+        q.awTime = [p.disc[0] as u16, p.disc[1] as u16, p.pairs as u16, 0];
+        q.stHeader.nActive = p.active as u8;
+        q.stHeader.nNegated = p.negated as u8;
+        q.stHeader.wOptions = p.options as u16;
+    }
+
+    fn latched_crc(&self) -> u16 {
+        twohand_crc(&self.stPrivate.stHeader, &self.stPrivate.awTime)
+    }
+
+    fn decode(&mut self) -> (TwohandIn, bool) {
+        let packed = bools::pack(self.inputs());
+        let h = &self.stPrivate.stHeader;
+        let active = h.nActive;
+        let logical = bools::logical(packed, active, h.nNegated);
+        let invalid = packed.invalid & active;
+        let actuated = |g: u8| {
+            let a = active & g;
+            a != 0 && logical & a == a
+        };
+        let inp = TwohandIn {
+            logical,
+            invalid,
+            g1: actuated(GROUP1),
+            g2: actuated(GROUP2),
+            released: (logical | invalid) & active == 0,
+        };
+        (inp, invalid != 0)
+    }
+
+    /// STOP → run and RESET → run: SAFE when every active input is released, else RELEASE
+    /// (a button held through start-up must be let go first, H5).
+    fn start(&mut self, inp: &TwohandIn, now: u32) {
+        let h = &mut self.stPrivate.stHeader;
+        h.wAux = 0;
+        h.tPhase = now;
+        h.nState = if inp.released {
+            SL_STATE_SAFE
+        } else {
+            SL_STATE_TWOHAND_RELEASE
+        };
+    }
+
+    fn step(&mut self, inp: &TwohandIn, now: u32) -> Status {
+        let safe_inputs = self.safe_inputs_option();
+        let p = &mut self.stPrivate;
+
+        // Discrepancy monitoring of the two-channel groups runs in every running state (H7).
+        let monitored =
+            u8::from(p.awTime[T_DISC12] != 0) | (u8::from(p.awTime[T_DISC34] != 0) << 1);
+        let mut running = (p.stHeader.wAux & AUX_PAIR_TIMERS) as u8;
+        let disc = pair::monitor(
+            inp.logical,
+            monitored,
+            &mut running,
+            &mut p.atDiscStart,
+            &p.awTime[..2],
+            now,
+        );
+        let window = u32::from(p.awTime[T_PAIRS]);
+        let times = p.awTime;
+        let h = &mut p.stHeader;
+        h.wAux = (h.wAux & !AUX_PAIR_TIMERS) | u16::from(running);
+        if disc != 0 {
+            h.enter_error(with_safe_bits(u16::from(disc), safe_inputs));
+            return Status::Ok;
+        }
+
+        let state = h.nState;
+        let next = match state {
+            // §4.7.2 SAFE: "If all active inputs of an input group are TRUE, the FB TWOHAND
+            // module leaves the SAFE state" (both at once: 1BUTTON first, H8).
+            SL_STATE_SAFE => {
+                if inp.g1 || inp.g2 {
+                    h.tPhase = now;
+                }
+                if inp.g1 {
+                    SL_STATE_TWOHAND_1BUTTON
+                } else if inp.g2 {
+                    SL_STATE_TWOHAND_2BUTTON
+                } else {
+                    SL_STATE_SAFE
+                }
+            }
+            SL_STATE_TWOHAND_1BUTTON | SL_STATE_TWOHAND_2BUTTON => {
+                let (first, second) = if state == SL_STATE_TWOHAND_1BUTTON {
+                    (inp.g1, inp.g2)
+                } else {
+                    (inp.g2, inp.g1)
+                };
+                if second && first {
+                    // RUN only from 1BUTTON/2BUTTON, with both groups actuated.
+                    return enable(h, &times);
+                } else if second {
+                    // Diag bit 6: the second group came while the first was let go (H10).
+                    h.enter_error(SL_DIAG_TWOHAND_ERROR);
+                    return Status::Ok;
+                } else if !first {
+                    // The first group was let go before the second came: start over (H9).
+                    if inp.released {
+                        SL_STATE_SAFE
+                    } else {
+                        SL_STATE_TWOHAND_RELEASE
+                    }
+                } else if window != 0 && time::reached(now, h.tPhase, window) {
+                    // Diag bit 2: the second group did not follow within tDiscTimePairs (H11).
+                    h.enter_error(with_safe_bits(SL_DIAG_TWOHAND_PAIRS, safe_inputs));
+                    return Status::Ok;
+                } else {
+                    state
+                }
+            }
+            // §4.7.2 RUN "if all active inputs are TRUE"; RELEASE "If at least one active
+            // input is FALSE" (H12).
+            SL_STATE_RUN => {
+                if inp.g1 && inp.g2 {
+                    SL_STATE_RUN
+                } else {
+                    SL_STATE_TWOHAND_RELEASE
+                }
+            }
+            // RELEASE: "If all active inputs are FALSE, the FB TWOHAND module leaves the
+            // RELEASE state" — the re-trigger rule of §4.7.1.
+            SL_STATE_TWOHAND_RELEASE => {
+                if inp.released {
+                    SL_STATE_SAFE
+                } else {
+                    SL_STATE_TWOHAND_RELEASE
+                }
+            }
+            _ => {
+                // A state value this block never takes: the private state cannot be trusted.
+                h.enter_error(SL_DIAG_CORRUPT);
+                return Status::Corrupt;
+            }
+        };
+        h.nState = next;
+        Status::Ok
+    }
+
+    /// H13: a failed pair must agree now with valid bytes; with "Safe Inputs after Disc
+    /// Error" its two channels must also have requested the safe state together since the
+    /// error (bits 8/9), and for the error between the pairs every active input must have
+    /// been released together (bit 10). Errors 2 and 6 leave nothing that remains otherwise.
+    fn error_remains(&mut self, inp: &TwohandIn) -> bool {
+        let h = &mut self.stPrivate.stHeader;
+        let failed = (h.wDiag & (SL_DIAG_DISC1 | SL_DIAG_DISC2)) as u8;
+        let need_safe = (h.wDiag >> 8) as u8 & 0b11;
+        // An invalid byte is not a safe-state request for this purpose.
+        let safe_view = inp.logical | inp.invalid;
+        let latched = (((h.wAux >> AUX_SAFE_SHIFT) as u8 & 0b11)
+            | (pair::both_safe(safe_view) & need_safe))
+            & need_safe;
+        let need_released = h.wDiag & SL_DIAG_TWOHAND_SAFE_IN_PAIRS != 0;
+        let released = need_released && (h.wAux & AUX_RELEASED != 0 || inp.released);
+        h.wAux = (h.wAux & !(0b11 << AUX_SAFE_SHIFT) & !AUX_RELEASED)
+            | (u16::from(latched) << AUX_SAFE_SHIFT)
+            | if released { AUX_RELEASED } else { 0 };
+        // A pair with an invalid byte cannot be shown to agree.
+        let pair_invalid = !pair::both_safe(inp.invalid) & 0b11;
+        let pair_bad = pair::differing(inp.logical) | pair_invalid;
+        failed & pair_bad != 0 || need_safe & !latched != 0 || (need_released && !released)
+    }
+
+    fn write_outputs(&mut self) {
+        let h = self.stPrivate.stHeader;
+        self.bError = u8::from(h.nState == SL_STATE_ERROR);
+        self.bTwoHandOut = u8::from(h.nState == SL_STATE_RUN);
+        self.nState = h.nState;
+        self.nDiag = h.wDiag;
+    }
+}

@@ -1,0 +1,194 @@
+//! FB XOR — manual §4.34: up to eight XOR functions; XorOutY = (Xor1InY XOR Xor2InY) AND
+//! "FB Input Active"(Y). States RUN (1), STOP (2); diag always 0 ("No diagnostic
+//! information"). Not available in the KL6904, EL6900 and EL6910 SW ≤ 03 (the library
+//! offers it everywhere). Member of the combinational family (`logic`).
+
+use super::logic::{LogicBlock, LogicIn, LogicParams, SL_LOGIC_PRIVATE};
+use crate::base::block::BlockInfo;
+use crate::base::bools;
+use crate::base::types::*;
+
+/// Block type tag of FB_XOR.
+pub const SL_TYPE_XOR: u16 = 5;
+
+/// FB XOR instance (ABI §3, §9). Inputs at the manual's offsets 0…15 (§4.34.2), output
+/// base 24 (outputs at base + 8 … base + 15).
+/// Size: 112 bytes.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+#[allow(non_snake_case, non_camel_case_types)]
+pub struct FB_XOR {
+    /// Offset 0. Input 1 of XOR1.
+    pub bXor1In1: SL_BOOL,
+    /// Offset 1. Input 2 of XOR1.
+    pub bXor2In1: SL_BOOL,
+    /// Offset 2. Input 1 of XOR2.
+    pub bXor1In2: SL_BOOL,
+    /// Offset 3. Input 2 of XOR2.
+    pub bXor2In2: SL_BOOL,
+    /// Offset 4. Input 1 of XOR3.
+    pub bXor1In3: SL_BOOL,
+    /// Offset 5. Input 2 of XOR3.
+    pub bXor2In3: SL_BOOL,
+    /// Offset 6. Input 1 of XOR4.
+    pub bXor1In4: SL_BOOL,
+    /// Offset 7. Input 2 of XOR4.
+    pub bXor2In4: SL_BOOL,
+    /// Offset 8. Input 1 of XOR5.
+    pub bXor1In5: SL_BOOL,
+    /// Offset 9. Input 2 of XOR5.
+    pub bXor2In5: SL_BOOL,
+    /// Offset 10. Input 1 of XOR6.
+    pub bXor1In6: SL_BOOL,
+    /// Offset 11. Input 2 of XOR6.
+    pub bXor2In6: SL_BOOL,
+    /// Offset 12. Input 1 of XOR7.
+    pub bXor1In7: SL_BOOL,
+    /// Offset 13. Input 2 of XOR7.
+    pub bXor2In7: SL_BOOL,
+    /// Offset 14. Input 1 of XOR8.
+    pub bXor1In8: SL_BOOL,
+    /// Offset 15. Input 2 of XOR8.
+    pub bXor2In8: SL_BOOL,
+    /// Offset 16. FbRun of the owning group.
+    pub bRun: SL_BOOL,
+    /// Offset 17. ErrAck of the owning group.
+    pub bErrAck: SL_BOOL,
+    /// Offset 18. Reserved, keep 0.
+    pub aReserved0: [u8; 2],
+    /// Offset 20. Bit y-1 set: XOR function y (inputs Xor1Iny, Xor2Iny) is active (at least one).
+    pub wInputActive: u16,
+    /// Offset 22. Reserved, keep 0 (the manual offers no negation for XOR inputs).
+    pub aReserved1: [u8; 2],
+    /// Offset 24 (output base + 0). Reserved.
+    pub aReserved2: [u8; 8],
+    /// Offset 32 (output base + 8). Xor1In1 XOR Xor2In1 (FALSE when XOR1 is inactive).
+    pub bXorOut1: SL_BOOL,
+    /// Offset 33 (output base + 9).
+    pub bXorOut2: SL_BOOL,
+    /// Offset 34 (output base + 10).
+    pub bXorOut3: SL_BOOL,
+    /// Offset 35 (output base + 11).
+    pub bXorOut4: SL_BOOL,
+    /// Offset 36 (output base + 12).
+    pub bXorOut5: SL_BOOL,
+    /// Offset 37 (output base + 13).
+    pub bXorOut6: SL_BOOL,
+    /// Offset 38 (output base + 14).
+    pub bXorOut7: SL_BOOL,
+    /// Offset 39 (output base + 15).
+    pub bXorOut8: SL_BOOL,
+    /// Offset 40. The manual's status value (SL_STATE_*).
+    pub nState: u8,
+    /// Offset 41. Reserved.
+    pub aReserved3: [u8; 1],
+    /// Offset 42. Diagnostic bits (only the library bits 13-15).
+    pub nDiag: u16,
+    /// Offset 44. Reserved.
+    pub aReserved4: [u8; 4],
+    /// Offset 48. Private state, 64 bytes: never write it.
+    pub stPrivate: SL_LOGIC_PRIVATE,
+}
+
+crate::base::block::block_states!(
+    /// The states of FB XOR.
+    XorState: Run, Stop, Error, Reset
+);
+
+/// Type tag, name and diag texts (manual §4.34.2: no diagnostic information).
+const INFO: BlockInfo = BlockInfo {
+    tag: SL_TYPE_XOR,
+    name: "XOR",
+    states: <XorState as crate::base::block::BlockState>::TABLE,
+    diag: &[],
+    diag_values: &[],
+};
+
+crate::impl_member!([] FB_XOR {
+    info: INFO,
+    state: XorState,
+    private: SL_LOGIC_PRIVATE,
+    input: [bXor1In1, bXor2In1, bXor1In2, bXor2In2, bXor1In3, bXor2In3, bXor1In4, bXor2In4, bXor1In5, bXor2In5, bXor1In6, bXor2In6, bXor1In7, bXor2In7, bXor1In8, bXor2In8],
+    param: [wInputActive],
+    output: [bXorOut1, bXorOut2, bXorOut3, bXorOut4, bXorOut5, bXorOut6, bXorOut7, bXorOut8],
+    info_fields: [],
+});
+
+impl FB_XOR {
+    /// Input 1 of XOR functions 1…8.
+    fn first(&self) -> [u8; 8] {
+        [
+            self.bXor1In1,
+            self.bXor1In2,
+            self.bXor1In3,
+            self.bXor1In4,
+            self.bXor1In5,
+            self.bXor1In6,
+            self.bXor1In7,
+            self.bXor1In8,
+        ]
+    }
+
+    /// Input 2 of XOR functions 1…8.
+    fn second(&self) -> [u8; 8] {
+        [
+            self.bXor2In1,
+            self.bXor2In2,
+            self.bXor2In3,
+            self.bXor2In4,
+            self.bXor2In5,
+            self.bXor2In6,
+            self.bXor2In7,
+            self.bXor2In8,
+        ]
+    }
+}
+
+impl LogicBlock for FB_XOR {
+    const TAG: u16 = 0x7C05;
+    const INPUTS: u16 = 0xFF;
+    const NEGATABLE: u16 = 0;
+    const MIN_ACTIVE: u32 = 1;
+
+    /// Sixteen input bytes: more than a key holds with bRun and bErrAck.
+    fn window(&self) -> Option<[u64; 2]> {
+        None
+    }
+    fn params(&self) -> LogicParams {
+        LogicParams {
+            active: self.wInputActive,
+            negated: 0,
+        }
+    }
+    /// Always RUN (the manual has no SAFE state for XOR). An invalid byte in an active
+    /// function makes that output FALSE, its safe state, whatever the other input: reading
+    /// the byte as FALSE would let the other input switch the output on (semantics X3).
+    fn evaluate(&self, active: u8, _negated: u8) -> (LogicIn, bool) {
+        let a = bools::pack(self.first());
+        let b = bools::pack(self.second());
+        let invalid = (a.invalid | b.invalid) & active;
+        let outputs = (a.ones ^ b.ones) & active & !invalid;
+        (
+            LogicIn {
+                state: SL_STATE_RUN,
+                outputs,
+            },
+            invalid != 0,
+        )
+    }
+    fn set_outputs(&mut self, outputs: u8, state: u8, diag: u16) {
+        let bit = |k: u8| (outputs >> k) & 1;
+        self.bXorOut1 = bit(0);
+        self.bXorOut2 = bit(1);
+        self.bXorOut3 = bit(2);
+        self.bXorOut4 = bit(3);
+        self.bXorOut5 = bit(4);
+        self.bXorOut6 = bit(5);
+        self.bXorOut7 = bit(6);
+        self.bXorOut8 = bit(7);
+        self.nState = state;
+        self.nDiag = diag;
+    }
+}
+
+super::logic::logic_block!(FB_XOR);

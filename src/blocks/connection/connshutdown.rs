@@ -1,0 +1,293 @@
+//! FB CONNECTION SHUTDOWN — manual §4.15 (functional description 4.15.1, signals and
+//! states 4.15.2, configuration 4.15.3, NOTICE 4.15.4); layout and readings ABI-2 §11.1,
+//! §13.5, §14 rows 21/22; docs/semantics.md CS1–CS8.
+//!
+//! Deactivate1/2 (pair 1 with discrepancy time `tDiscTime12`) request the shutdown of the
+//! FSoE connection with Connection ID `nConnectionId`: while the block is in SAFE or RUN the
+//! request is `bShutdownRequest`, which the group copies to that connection's
+//! `bShutdownRequest`; the connection's `bShutdown` comes back as `bConnShutdown`, and the
+//! block is in RUN (`bDeactivated` TRUE) exactly while it is TRUE — after the connection
+//! was shut down, by this request or by the partner, until it is in DATA again. A shutdown
+//! is no error: the group sees neither ComErr nor ComStartup.
+
+use crate::base::block::BlockInfo;
+use crate::base::envelope::Block;
+use crate::base::header::{param_crc, SL_PRIVATE_HEADER};
+use crate::base::member::{Member, Wiring};
+use crate::base::types::*;
+use crate::base::{bools, pair};
+use core::mem::offset_of;
+
+/// Block type tag of FB_CONNECTION_SHUTDOWN (70/71: CAMMONITOR; 72–74: SLP, SBT, ADVPOSMON).
+pub const SL_TYPE_CONNECTION_SHUTDOWN: u16 = 75;
+
+/// FB CONNECTION SHUTDOWN instance (ABI-2 §11.1).
+/// Size: 88 bytes.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+#[allow(non_snake_case, non_camel_case_types)]
+pub struct FB_CONNECTION_SHUTDOWN {
+    /// Offset 0. Reserved, keep 0.
+    pub aReserved0: [u8; 8],
+    /// Offset 8. Deactivate1 (pair 1 with Deactivate2); active/negated bit 0.
+    pub bDeactivate1: SL_BOOL,
+    /// Offset 9. Deactivate2; active/negated bit 1.
+    pub bDeactivate2: SL_BOOL,
+    /// Offset 10. Reserved, keep 0.
+    pub aReserved1: [u8; 6],
+    /// Offset 16. FbRun of the owning group.
+    pub bRun: SL_BOOL,
+    /// Offset 17. ErrAck of the owning group.
+    pub bErrAck: SL_BOOL,
+    /// Offset 18. Library extension: the connection nConnectionId is shut down (its bShutdown; the group copies it).
+    pub bConnShutdown: SL_BOOL,
+    /// Offset 19. Reserved, keep 0.
+    pub aReserved2: [u8; 1],
+    /// Offset 20. Discrepancy time of Deactivate1/2 in ms (0 = none; both inputs active).
+    pub tDiscTime12: u32,
+    /// Offset 24. Connection ID of the connection to shut down (1…65535).
+    pub nConnectionId: u16,
+    /// Offset 26. Bits 0-1: DeactivateX is active (none active: only a partner shutdown).
+    pub wInputActive: u16,
+    /// Offset 28. Bits 0-1: DeactivateX is a make contact (negated).
+    pub wInputNegated: u16,
+    /// Offset 30. Reserved, keep 0.
+    pub aReserved3: [u8; 2],
+    /// Offset 32 (output base + 0). TRUE in ERROR.
+    pub bError: SL_BOOL,
+    /// Offset 33 (output base + 1). TRUE in RUN: the connection is shut down.
+    pub bDeactivated: SL_BOOL,
+    /// Offset 34. Library extension: the shutdown request (SAFE/RUN with the request); the group copies it to the connection.
+    pub bShutdownRequest: SL_BOOL,
+    /// Offset 35. Reserved.
+    pub aReserved4: [u8; 5],
+    /// Offset 40. The manual's status value (SL_STATE_*).
+    pub nState: u8,
+    /// Offset 41. Reserved.
+    pub aReserved5: [u8; 1],
+    /// Offset 42. Diagnostic bits (SL_DIAG_DISC1, library bits 13-15).
+    pub nDiag: u16,
+    /// Offset 44. Reserved.
+    pub aReserved6: [u8; 4],
+    /// Offset 48. Private state, 40 bytes: never write it.
+    pub stPrivate: SL_CONNSHUT_PRIVATE,
+}
+
+/// Private state of FB_CONNECTION_SHUTDOWN (40 bytes).
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+#[allow(non_snake_case, non_camel_case_types)]
+pub struct SL_CONNSHUT_PRIVATE {
+    /// Common header.
+    pub stHeader: SL_PRIVATE_HEADER,
+    /// Start of the running discrepancy time.
+    pub tDiscStart: u32,
+    /// Latched tDiscTime12 (0) and nConnectionId (1).
+    pub awParam: [u16; 2],
+    /// Reserved.
+    pub aReserved: [u8; 4],
+}
+
+crate::base::block::block_states!(
+    /// The states of FB CONNECTION SHUTDOWN.
+    ConnShutdownState: Run, Stop, Safe, Error, Reset
+);
+
+const INFO: BlockInfo = BlockInfo {
+    tag: SL_TYPE_CONNECTION_SHUTDOWN,
+    name: "CONNECTION_SHUTDOWN",
+    states: <ConnShutdownState as crate::base::block::BlockState>::TABLE,
+    diag: &[(SL_DIAG_DISC1, "discrepancy error input group 1")],
+    diag_values: &[],
+};
+
+crate::impl_member!([] FB_CONNECTION_SHUTDOWN {
+    info: INFO,
+    state: ConnShutdownState,
+    private: SL_CONNSHUT_PRIVATE,
+    input: [bDeactivate1, bDeactivate2, bConnShutdown],
+    param: [tDiscTime12, nConnectionId, wInputActive, wInputNegated],
+    output: [bError, bDeactivated, bShutdownRequest],
+    info_fields: [],
+    wiring: (before_cycle, after_cycle),
+});
+
+/// wAux bit 0: the discrepancy timer of pair 1 runs.
+const AUX_DISC: u16 = 1 << 0;
+/// wAux bit 1: the request of this cycle (every active DeactivateX logically TRUE).
+const AUX_REQUEST: u16 = 1 << 1;
+
+const OFF_ID: u16 = offset_of!(FB_CONNECTION_SHUTDOWN, nConnectionId) as u16;
+const OFF_CONN_SHUTDOWN: u16 = offset_of!(FB_CONNECTION_SHUTDOWN, bConnShutdown) as u16;
+const OFF_REQUEST: u16 = offset_of!(FB_CONNECTION_SHUTDOWN, bShutdownRequest) as u16;
+
+/// Before the block's cycle in a group: `bConnShutdown` from the connection(s) with its
+/// Connection ID that ran earlier in this group cycle (FALSE when there is none).
+pub fn before_cycle<B: Member + ?Sized>(b: &mut B, w: &mut Wiring) {
+    let id = b.field_bits(OFF_ID).unwrap_or(0) as u16;
+    b.set_input_bits(OFF_CONN_SHUTDOWN, u32::from(w.conn_shutdown(id)));
+}
+
+/// After the block's cycle in a group: its request for the connection(s) with its
+/// Connection ID.
+pub fn after_cycle<B: Member + ?Sized>(b: &mut B, w: &mut Wiring) {
+    let id = b.field_bits(OFF_ID).unwrap_or(0) as u16;
+    w.request(id, b.output(OFF_REQUEST).unwrap_or(0));
+}
+
+/// The parameters as the user wrote them.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct ConnShutdownParams {
+    pub disc: u32,
+    pub id: u16,
+    pub active: u16,
+    pub negated: u16,
+}
+
+/// The inputs of one cycle.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct ConnShutdownIn {
+    /// Logical values of the active inputs (invalid bytes FALSE).
+    pub logical: u8,
+    /// Invalid bytes among the active inputs.
+    pub invalid: u8,
+    /// bConnShutdown is exactly 1.
+    pub conn_shutdown: bool,
+}
+
+fn crc(h: &SL_PRIVATE_HEADER, p: &[u16; 2]) -> u16 {
+    param_crc(
+        <FB_CONNECTION_SHUTDOWN as Block>::MAGIC,
+        h.nActive,
+        h.nNegated,
+        h.wOptions,
+        p,
+    )
+}
+
+impl Block for FB_CONNECTION_SHUTDOWN {
+    const MAGIC: u16 = 0xC5D0;
+    type Params = ConnShutdownParams;
+    type In = ConnShutdownIn;
+
+    fn live_params(&self) -> ConnShutdownParams {
+        ConnShutdownParams {
+            disc: self.tDiscTime12,
+            id: self.nConnectionId,
+            active: self.wInputActive,
+            negated: self.wInputNegated,
+        }
+    }
+
+    fn latched_params(&self) -> ConnShutdownParams {
+        let p = &self.stPrivate;
+        ConnShutdownParams {
+            disc: u32::from(p.awParam[0]),
+            id: p.awParam[1],
+            active: u16::from(p.stHeader.nActive),
+            negated: u16::from(p.stHeader.nNegated),
+        }
+    }
+
+    /// Semantics CS4: no active input is valid (the opposite side of a connection); a
+    /// discrepancy time needs both inputs active; Connection ID 0 is refused.
+    fn params_valid(p: &ConnShutdownParams) -> bool {
+        p.disc <= SL_TIME_PARAM_MAX
+            && (p.disc == 0 || p.active & 0b11 == 0b11)
+            && p.id != 0
+            && p.active & !0b11 == 0
+            && p.negated & !0b11 == 0
+    }
+
+    fn store_params(&mut self, p: &ConnShutdownParams) {
+        let q = &mut self.stPrivate;
+        q.awParam = [p.disc as u16, p.id];
+        q.stHeader.nActive = p.active as u8;
+        q.stHeader.nNegated = p.negated as u8;
+        q.stHeader.wOptions = 0;
+    }
+
+    fn latched_crc(&self) -> u16 {
+        crc(&self.stPrivate.stHeader, &self.stPrivate.awParam)
+    }
+
+    fn decode(&mut self) -> (ConnShutdownIn, bool) {
+        let packed = bools::pack([self.bDeactivate1, self.bDeactivate2]);
+        let h = &mut self.stPrivate.stHeader;
+        let active = h.nActive & 0b11;
+        let logical = bools::logical(packed, active, h.nNegated);
+        let invalid = packed.invalid & active;
+        let request = active != 0 && logical & active == active;
+        h.wAux = (h.wAux & !AUX_REQUEST) | if request { AUX_REQUEST } else { 0 };
+        let inp = ConnShutdownIn {
+            logical,
+            invalid,
+            conn_shutdown: self.bConnShutdown == 1,
+        };
+        (inp, invalid != 0 || self.bConnShutdown > 1)
+    }
+
+    fn start(&mut self, inp: &ConnShutdownIn, _now: u32) {
+        let h = &mut self.stPrivate.stHeader;
+        h.wAux &= !AUX_DISC;
+        h.nState = SL_STATE_SAFE;
+        if inp.conn_shutdown && self.params_intact() {
+            self.stPrivate.stHeader.nState = SL_STATE_RUN;
+        }
+    }
+
+    fn step(&mut self, inp: &ConnShutdownIn, now: u32) -> Status {
+        let p = &mut self.stPrivate;
+        let both = p.stHeader.nActive & 0b11 == 0b11;
+        let monitored = u8::from(p.awParam[0] != 0 && both);
+        let mut running = (p.stHeader.wAux & AUX_DISC) as u8;
+        let mut starts = [p.tDiscStart];
+        let disc = pair::monitor(
+            inp.logical,
+            monitored,
+            &mut running,
+            &mut starts,
+            &p.awParam[..1],
+            now,
+        );
+        p.tDiscStart = starts[0];
+        p.stHeader.wAux = (p.stHeader.wAux & !AUX_DISC) | u16::from(running & 1);
+        if disc != 0 {
+            p.stHeader.enter_error(SL_DIAG_DISC1);
+            return Status::Ok;
+        }
+        // RUN exactly while the connection reports its shutdown (semantics CS1); the latched
+        // parameters are checked where the output switches on (C3).
+        let entering = inp.conn_shutdown && p.stHeader.nState != SL_STATE_RUN;
+        if entering && !self.params_intact() {
+            self.stPrivate.stHeader.enter_error(SL_DIAG_CORRUPT);
+            return Status::Corrupt;
+        }
+        self.stPrivate.stHeader.nState = if inp.conn_shutdown {
+            SL_STATE_RUN
+        } else {
+            SL_STATE_SAFE
+        };
+        Status::Ok
+    }
+
+    /// The pair must agree again with valid bytes (semantics CS6).
+    fn error_remains(&mut self, inp: &ConnShutdownIn) -> bool {
+        let h = &self.stPrivate.stHeader;
+        if h.wDiag & SL_DIAG_DISC1 == 0 {
+            return false;
+        }
+        let both = h.nActive & 0b11 == 0b11;
+        both && (pair::differing(inp.logical) & 1 != 0 || inp.invalid != 0)
+    }
+
+    fn write_outputs(&mut self) {
+        let h = self.stPrivate.stHeader;
+        let running = h.nState == SL_STATE_SAFE || h.nState == SL_STATE_RUN;
+        self.bError = u8::from(h.nState == SL_STATE_ERROR);
+        self.bDeactivated = u8::from(h.nState == SL_STATE_RUN);
+        self.bShutdownRequest = u8::from(running && h.wAux & AUX_REQUEST != 0);
+        self.nState = h.nState;
+        self.nDiag = h.wDiag;
+    }
+}

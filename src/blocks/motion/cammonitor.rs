@@ -1,0 +1,1498 @@
+//! FB CAMMONITOR (electronic cam controller of a press) — manual §4.26; layout ABI-2
+//! §11.13, rules ABI-2 §12.
+//!
+//! Watches the crank position of a press (Position, 0 … MaxPosition = 360°, clockwise =
+//! increasing) against TDC, BDC and OverrunMax limits, each from its input or its fixed
+//! value. Excentric mode (default): one direction of rotation; each stroke is released by
+//! a Reset pulse (MOVE-STOP → MOVE-START → MOVE-DOWN), passes BDC into the left half
+//! (MOVE-UP, UpwardsMove) and must stop between TDC1_LowerLimit and OverrunMax (MOVE-TDC →
+//! MOVE-STOP); OverrunTDC shows the distance from TDC1_LowerLimit, OverrunStop the distance
+//! from the position at the falling edge of Press_Started. Hardware cams (OverrunCam,
+//! UpwardCam) are checked against the areas. Pendulum mode (`SL_OPT_CAMMONITOR_PENDULUM`):
+//! both directions, two upper reversal areas TDC1 (left) and TDC2 (right), any motion
+//! after a Reset pulse until BDC is passed, then only upwards to the other TDC area, which
+//! is never to be exceeded. Press_Started expects movement. Parameter-only ordering errors
+//! are `SL_E_CONFIG` with their Text ID in the info data; limits from live inputs or
+//! re-latched in SettingMode are verified every cycle (ERROR with the Text ID) unless
+//! Automatic is TRUE ("no parameter verification"), which also switches off the movement
+//! and cam checks the manual conditions on "Automatic = FALSE". The area predicates of the
+//! missing Fig. 140/143 are derived from the diag message texts: docs/semantics.md CM1–CM20.
+
+#![allow(non_camel_case_types)] // the ABI's names (FB_CAMMONITOR_UINT …)
+
+use crate::base::block::{Private, Registered};
+use crate::base::bools::{self, edge, Edge};
+use crate::base::envelope::Block;
+use crate::base::header::{param_crc, F_CFG_INVALID, F_RESTART_PREV, SL_PRIVATE_HEADER};
+use crate::base::time::reached;
+use crate::base::types::*;
+use crate::blocks::analog::{magic, Unsigned};
+
+/// Type tag of FB_CAMMONITOR_UINT (ABI-2 §10.6, order of §10.3).
+pub const SL_TYPE_CAMMONITOR_UINT: u16 = 70;
+/// FB_CAMMONITOR_UDINT.
+pub const SL_TYPE_CAMMONITOR_UDINT: u16 = 71;
+
+/// Option: "Pendulum Mode"; clear = "Excentric Mode".
+pub const SL_OPT_CAMMONITOR_PENDULUM: u32 = 1 << 8;
+
+/// State WAIT-FOR-RESET (15): waiting for a Reset pulse after STOP or RESET.
+pub const SL_STATE_CAMMONITOR_WAIT_FOR_RESET: u8 = 15;
+/// State MOVE-STOP (16, excentric): stopped in the TDC range.
+pub const SL_STATE_CAMMONITOR_MOVE_STOP: u8 = 16;
+/// State MOVE-START (17, excentric): Reset TRUE in MOVE-STOP.
+pub const SL_STATE_CAMMONITOR_MOVE_START: u8 = 17;
+/// State MOVE-DOWN (18, excentric): Reset fell in MOVE-START.
+pub const SL_STATE_CAMMONITOR_MOVE_DOWN: u8 = 18;
+/// State MOVE-UP (19, excentric): LeftArea reached in MOVE-DOWN.
+pub const SL_STATE_CAMMONITOR_MOVE_UP: u8 = 19;
+/// State MOVE-TDC (20, excentric): TDCAreaMax reached in MOVE-UP.
+pub const SL_STATE_CAMMONITOR_MOVE_TDC: u8 = 20;
+/// State MOVE-DOWN-CLOCKWISE (32, pendulum).
+pub const SL_STATE_CAMMONITOR_MOVE_DOWN_CW: u8 = 32;
+/// State MOVE-UP-CLOCKWISE (33, pendulum).
+pub const SL_STATE_CAMMONITOR_MOVE_UP_CW: u8 = 33;
+/// State MOVE-UP-TDC1 (34, pendulum).
+pub const SL_STATE_CAMMONITOR_MOVE_UP_TDC1: u8 = 34;
+/// State MOVE-STOP-TDC1 (35, pendulum).
+pub const SL_STATE_CAMMONITOR_MOVE_STOP_TDC1: u8 = 35;
+/// State MOVE-START-TDC1 (36, pendulum).
+pub const SL_STATE_CAMMONITOR_MOVE_START_TDC1: u8 = 36;
+/// State MOVE-DOWN-CONTRA-CLOCKWISE (37, pendulum).
+pub const SL_STATE_CAMMONITOR_MOVE_DOWN_CCW: u8 = 37;
+/// State MOVE-UP-CONTRA-CLOCKWISE (38, pendulum).
+pub const SL_STATE_CAMMONITOR_MOVE_UP_CCW: u8 = 38;
+/// State MOVE-UP-TDC2 (39, pendulum).
+pub const SL_STATE_CAMMONITOR_MOVE_UP_TDC2: u8 = 39;
+/// State MOVE-STOP-TDC2 (40, pendulum).
+pub const SL_STATE_CAMMONITOR_MOVE_STOP_TDC2: u8 = 40;
+/// State MOVE-START-TDC2 (41, pendulum).
+pub const SL_STATE_CAMMONITOR_MOVE_START_TDC2: u8 = 41;
+
+/// `wInputActive` bit of Automatic (optional, inactive = FALSE).
+pub const SL_CAMMONITOR_ACTIVE_AUTOMATIC: u16 = 1 << 0;
+/// `wInputActive` bit of BackwardsMove (optional; excentric only).
+pub const SL_CAMMONITOR_ACTIVE_BACKWARDSMOVE: u16 = 1 << 1;
+/// `wInputActive` bit of Reset (required).
+pub const SL_CAMMONITOR_ACTIVE_RESET: u16 = 1 << 2;
+/// `wInputActive` bit of Press_Started (optional; active = movement is expected).
+pub const SL_CAMMONITOR_ACTIVE_PRESSSTARTED: u16 = 1 << 3;
+/// `wInputActive` bit of OverrunCam (optional hardware cam; excentric only).
+pub const SL_CAMMONITOR_ACTIVE_OVERRUNCAM: u16 = 1 << 4;
+/// `wInputActive` bit of UpwardCam (optional hardware cam; excentric only).
+pub const SL_CAMMONITOR_ACTIVE_UPWARDCAM: u16 = 1 << 5;
+/// `wInputActive` bit of SettingMode (optional).
+pub const SL_CAMMONITOR_ACTIVE_SETTINGMODE: u16 = 1 << 6;
+/// `wInputActive` bit of Position (required).
+pub const SL_CAMMONITOR_ACTIVE_POSITION: u16 = 1 << 8;
+/// `wInputActive` bit of TDC1_LowerLimit: set = the input, clear = the fixed value.
+pub const SL_CAMMONITOR_ACTIVE_TDC1LOWERLIMIT: u16 = 1 << 9;
+/// `wInputActive` bit of TDC1_UpperLimit.
+pub const SL_CAMMONITOR_ACTIVE_TDC1UPPERLIMIT: u16 = 1 << 10;
+/// `wInputActive` bit of TDC2_LowerLimit (pendulum only).
+pub const SL_CAMMONITOR_ACTIVE_TDC2LOWERLIMIT: u16 = 1 << 11;
+/// `wInputActive` bit of TDC2_UpperLimit (pendulum only).
+pub const SL_CAMMONITOR_ACTIVE_TDC2UPPERLIMIT: u16 = 1 << 12;
+/// `wInputActive` bit of BDC_LowerLimit.
+pub const SL_CAMMONITOR_ACTIVE_BDCLOWERLIMIT: u16 = 1 << 13;
+/// `wInputActive` bit of BDC_UpperLimit.
+pub const SL_CAMMONITOR_ACTIVE_BDCUPPERLIMIT: u16 = 1 << 14;
+/// `wInputActive` bit of OverrunMax (excentric only).
+pub const SL_CAMMONITOR_ACTIVE_OVERRUNMAX: u16 = 1 << 15;
+
+/// Largest value of the three TIME parameters (ABI-2 §12.9, semantics C10).
+pub const SL_CAMMONITOR_TIME_MAX: u32 = 65_535;
+/// `nDiag` of a message = its Text ID minus this (ABI-2 §10.4: no diag table).
+pub const SL_CAMMONITOR_DIAG_TEXT_BASE: u16 = 0x4000;
+
+/// Message 0x4001 (pendulum): TDC2UpperLimit <= AllowedPositionJitter.
+pub const SL_TEXT_CAMMONITOR_TDC2UL_JITTER: u16 = 0x4001;
+/// Message 0x4002: Position > MaxPosition + AllowedPositionJitter.
+pub const SL_TEXT_CAMMONITOR_POSITION_RANGE: u16 = 0x4002;
+/// Message 0x4003: OverrunCAM FALSE in the TDC area.
+pub const SL_TEXT_CAMMONITOR_OVERRUNCAM_FALSE_TDC: u16 = 0x4003;
+/// Message 0x4004: OverrunCAM rose outside BDCUpperLimit … TDCLowerLimit.
+pub const SL_TEXT_CAMMONITOR_OVERRUNCAM_RISE: u16 = 0x4004;
+/// Message 0x4005: OverrunCAM TRUE in the BDC area beyond BDCLowerLimit.
+pub const SL_TEXT_CAMMONITOR_OVERRUNCAM_TRUE_BDC: u16 = 0x4005;
+/// Message 0x4006: OverrunCAM fell outside OverrunMax … BDCLowerLimit.
+pub const SL_TEXT_CAMMONITOR_OVERRUNCAM_FALL: u16 = 0x4006;
+/// Message 0x4007: UpwardsCAM FALSE between BDCUpperLimit and TDCLowerLimit.
+pub const SL_TEXT_CAMMONITOR_UPWARDCAM_FALSE_LEFT: u16 = 0x4007;
+/// Message 0x4008: UpwardsCAM rose outside BDCLowerLimit … TDCLowerLimit.
+pub const SL_TEXT_CAMMONITOR_UPWARDCAM_RISE: u16 = 0x4008;
+/// Message 0x4009: UpwardsCAM fell outside TDCLowerLimit … OverrunMax.
+pub const SL_TEXT_CAMMONITOR_UPWARDCAM_FALL: u16 = 0x4009;
+/// Message 0x400A: moved in MOVE-STOP.
+pub const SL_TEXT_CAMMONITOR_MOVED_MOVE_STOP: u16 = 0x400A;
+/// Message 0x400B: moved in MOVE-START (and in START, excentric).
+pub const SL_TEXT_CAMMONITOR_MOVED_MOVE_START: u16 = 0x400B;
+/// Message 0x400C: between OverrunMax and BDC in MOVE-UP.
+pub const SL_TEXT_CAMMONITOR_MOVE_UP_AREA: u16 = 0x400C;
+/// Message 0x400D: left the TDC area (past OverrunMax) while waiting for a stop.
+pub const SL_TEXT_CAMMONITOR_LEFT_TDC: u16 = 0x400D;
+/// Message 0x400E: moved backwards without BackwardsMove.
+pub const SL_TEXT_CAMMONITOR_BACKWARDS: u16 = 0x400E;
+/// Message 0x400F: UpwardsCAM TRUE between OverrunMax and BDCLowerLimit.
+pub const SL_TEXT_CAMMONITOR_UPWARDCAM_TRUE_RIGHT: u16 = 0x400F;
+/// Message 0x4010 (pendulum): circle overflow.
+pub const SL_TEXT_CAMMONITOR_CIRCLE_OVERFLOW: u16 = 0x4010;
+/// Message 0x4011 (pendulum): moved in MOVE-STOP-TDC1/2.
+pub const SL_TEXT_CAMMONITOR_MOVED_STOP_TDC: u16 = 0x4011;
+/// Message 0x4012: BackwardsMove TRUE between 180° and 360°.
+pub const SL_TEXT_CAMMONITOR_BACKWARDS_AREA: u16 = 0x4012;
+/// Message 0x4013: BackwardsMove TRUE while moving clockwise.
+pub const SL_TEXT_CAMMONITOR_BACKWARDS_CLOCKWISE: u16 = 0x4013;
+/// Message 0x4014 (pendulum): moved in MOVE-START-TDC1/2 (and in START).
+pub const SL_TEXT_CAMMONITOR_MOVED_START_TDC: u16 = 0x4014;
+/// Message 0x4015 (excentric): TDC1LowerLimit + J > MaxPosition.
+pub const SL_TEXT_CAMMONITOR_TDC1LL_MAX: u16 = 0x4015;
+/// Message 0x4016: BDCUpperLimit + 2J >= TDC1LowerLimit.
+pub const SL_TEXT_CAMMONITOR_BDCUL_TDC1LL: u16 = 0x4016;
+/// Message 0x4017: BDCUpperLimit <= MaxPosition/2 + J.
+pub const SL_TEXT_CAMMONITOR_BDCUL_HALF: u16 = 0x4017;
+/// Message 0x4018: BDCLowerLimit + J >= MaxPosition/2.
+pub const SL_TEXT_CAMMONITOR_BDCLL_HALF: u16 = 0x4018;
+/// Message 0x4019 (excentric): OverrunMax + 2J >= BDCLowerLimit.
+pub const SL_TEXT_CAMMONITOR_OVERRUNMAX_BDCLL: u16 = 0x4019;
+/// Message 0x401A (excentric): TDC1UpperLimit + 2J >= OverrunMax.
+pub const SL_TEXT_CAMMONITOR_TDC1UL_OVERRUNMAX: u16 = 0x401A;
+/// Message 0x401B (pendulum): TDC1UpperLimit + J >= MaxPosition.
+pub const SL_TEXT_CAMMONITOR_TDC1UL_MAX: u16 = 0x401B;
+/// Message 0x401C (pendulum): TDC1LowerLimit + 2J >= TDC1UpperLimit.
+pub const SL_TEXT_CAMMONITOR_TDC1LL_TDC1UL: u16 = 0x401C;
+/// Message 0x401D (pendulum): TDC2LowerLimit + 2J >= BDCLowerLimit.
+pub const SL_TEXT_CAMMONITOR_TDC2LL_BDCLL: u16 = 0x401D;
+/// Message 0x401E (pendulum): TDC2UpperLimit + 2J >= TDC2LowerLimit.
+pub const SL_TEXT_CAMMONITOR_TDC2UL_TDC2LL: u16 = 0x401E;
+/// Message 0x401F: Press_Started TRUE, no movement within PressStartDelayTime.
+pub const SL_TEXT_CAMMONITOR_NOT_STARTED: u16 = 0x401F;
+/// Message 0x4020: Press_Started TRUE, stopped after moving.
+pub const SL_TEXT_CAMMONITOR_STOPPED: u16 = 0x4020;
+/// Message 0x4021: Press_Started TRUE, moved less than MinPositionChange within
+/// MoveDetectionTime (parameters: Position, comparison position).
+pub const SL_TEXT_CAMMONITOR_TOO_SLOW: u16 = 0x4021;
+/// Message 0x4022 (pendulum): counter-clockwise while moving up clockwise.
+pub const SL_TEXT_CAMMONITOR_CCW_MOVING_UP_CW: u16 = 0x4022;
+/// Message 0x4023 (pendulum): clockwise while moving up counter-clockwise.
+pub const SL_TEXT_CAMMONITOR_CW_MOVING_UP_CCW: u16 = 0x4023;
+/// Message 0x4024: moved in WAIT-FOR-RESET.
+pub const SL_TEXT_CAMMONITOR_MOVED_WAIT_FOR_RESET: u16 = 0x4024;
+/// Message 0x4025 (excentric): TDC1UpperLimit <= AllowedPositionJitter.
+pub const SL_TEXT_CAMMONITOR_TDC1UL_JITTER: u16 = 0x4025;
+
+/// Private state of FB CAMMONITOR (128 bytes). Never written by the user.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+#[allow(non_snake_case)]
+pub struct SL_CAMMONITOR_PRIVATE {
+    /// Common head (`wAux`: Stopped, Press_Started progress, OverrunStop latched,
+    /// `F_RESTART_PREV`: Reset's level).
+    pub stHeader: SL_PRIVATE_HEADER,
+    /// Latched `wInputActive`.
+    pub wActive: u16,
+    /// Text ID of the message of the current ERROR.
+    pub wText: u16,
+    /// Latched `dwOptions`.
+    pub dwOptions: u32,
+    /// Latched tStopDetectionTime, tPressStartDelayTime, tMoveDetectionTime (ms).
+    pub adwTime: [u32; 3],
+    /// Latched AllowedPositionJitter, MinPositionChange, MaxPosition and the seven fixed
+    /// limits (TDC1 LL, TDC1 UL, TDC2 LL, TDC2 UL, BDC LL, BDC UL, OverrunMax).
+    pub adwValue: [u32; 10],
+    /// Reference position of the standstill window (position at its start).
+    pub dwRef: u32,
+    /// Position (on the circle) of the previous running call.
+    pub dwLast: u32,
+    /// Start of the standstill window (StopDetectionTime).
+    pub tRef: u32,
+    /// Start of the PressStartDelayTime / MoveDetectionTime timer.
+    pub tPs: u32,
+    /// Comparison position of the MoveDetectionTime check.
+    pub dwPsRef: u32,
+    /// Position at the last falling edge of Press_Started (OverrunStop).
+    pub dwStopLatch: u32,
+    /// Message parameters 2 and 3 latched at the ERROR entry.
+    pub adwPar: [u32; 2],
+    /// Edge memories of Press_Started, OverrunCam, UpwardCam.
+    pub nEdges: u8,
+    /// Reserved.
+    pub aReserved: [u8; 7],
+}
+
+const _: () = assert!(core::mem::size_of::<SL_CAMMONITOR_PRIVATE>() == 128);
+
+/// FB CAMMONITOR instance (ABI-2 §11.13), generic over the unsigned position type `T`:
+/// `P1` (after `wInputActive`) and `P2` (after OverrunStop) are the reserved gaps that make
+/// the two layouts differ. Analog fields: 16-bit offset / 32-bit offset.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[allow(non_snake_case)]
+pub struct FB_CAMMONITOR<T, const P1: usize, const P2: usize> {
+    /// Offset 0. Automatic: TRUE = automatic mode, no parameter verification and no
+    /// movement or cam checks (active bit 0; inactive = FALSE).
+    pub bAutomatic: SL_BOOL,
+    /// Offset 1. BackwardsMove: backward movement permitted (excentric; active bit 1).
+    pub bBackwardsMove: SL_BOOL,
+    /// Offset 2. Reset: a pulse (rising, then falling edge) releases each start (active
+    /// bit 2, required).
+    pub bReset: SL_BOOL,
+    /// Offset 3. Press_Started: TRUE = movement is expected (active bit 3; an invalid byte
+    /// reads TRUE).
+    pub bPressStarted: SL_BOOL,
+    /// Offset 4. OverrunCam: hardware overrun cam (excentric; active bit 4).
+    pub bOverrunCam: SL_BOOL,
+    /// Offset 5. UpwardCam: hardware upward cam (excentric; active bit 5).
+    pub bUpwardCam: SL_BOOL,
+    /// Offset 6. SettingMode: TRUE = changed fixed limits are re-latched (active bit 6).
+    pub bSettingMode: SL_BOOL,
+    /// Offset 7. Reserved, keep 0.
+    pub aReserved0: [u8; 9],
+    /// Offset 16. FbRun of the owning group: TRUE = the block executes.
+    pub bRun: SL_BOOL,
+    /// Offset 17. ErrAck of the owning group.
+    pub bErrAck: SL_BOOL,
+    /// Offset 18. Reserved, keep 0.
+    pub aReserved1: [u8; 6],
+    /// Offset 24 (analog input base). Position: the press position, 0 … MaxPosition
+    /// (active bit 8, required).
+    pub nPosition: T,
+    /// At 26 / 28. TDC1_LowerLimit input (active bit 9).
+    pub nTDC1LowerLimit: T,
+    /// At 28 / 32. TDC1_UpperLimit input (active bit 10).
+    pub nTDC1UpperLimit: T,
+    /// At 30 / 36. TDC2_LowerLimit input (active bit 11, pendulum).
+    pub nTDC2LowerLimit: T,
+    /// At 32 / 40. TDC2_UpperLimit input (active bit 12, pendulum).
+    pub nTDC2UpperLimit: T,
+    /// At 34 / 44. BDC_LowerLimit input (active bit 13).
+    pub nBDCLowerLimit: T,
+    /// At 36 / 48. BDC_UpperLimit input (active bit 14).
+    pub nBDCUpperLimit: T,
+    /// At 38 / 52. OverrunMax input (active bit 15, excentric).
+    pub nOverrunMax: T,
+    /// At 40 / 56. "StopDetectionTime" in ms, 1 … 65,535.
+    pub tStopDetectionTime: u32,
+    /// At 44 / 60. "PressStartDelayTime" in ms, ≤ 65,535 (≥ 1 with Press_Started active).
+    pub tPressStartDelayTime: u32,
+    /// At 48 / 64. "MoveDetectionTime" in ms, ≤ 65,535 (≥ 1 with Press_Started active).
+    pub tMoveDetectionTime: u32,
+    /// At 52 / 68. `SL_OPT_CAMMONITOR_PENDULUM`; clear = excentric mode.
+    pub dwOptions: u32,
+    /// At 56 / 72. "AllowedPositionJitter".
+    pub nAllowedPositionJitter: T,
+    /// At 58 / 76. "MinPositionChange" (≥ 1 with Press_Started active).
+    pub nMinPositionChange: T,
+    /// At 60 / 80. "MaxPosition": the position value at 360°.
+    pub nMaxPosition: T,
+    /// At 62 / 84. Fixed value TDC1_LowerLimit (used while bit 9 is clear).
+    pub nTDC1LowerLimitFix: T,
+    /// At 64 / 88. Fixed value TDC1_UpperLimit.
+    pub nTDC1UpperLimitFix: T,
+    /// At 66 / 92. Fixed value TDC2_LowerLimit (excentric: 0).
+    pub nTDC2LowerLimitFix: T,
+    /// At 68 / 96. Fixed value TDC2_UpperLimit (excentric: 0).
+    pub nTDC2UpperLimitFix: T,
+    /// At 70 / 100. Fixed value BDC_LowerLimit.
+    pub nBDCLowerLimitFix: T,
+    /// At 72 / 104. Fixed value BDC_UpperLimit.
+    pub nBDCUpperLimitFix: T,
+    /// At 74 / 108. Fixed value OverrunMax (pendulum: 0).
+    pub nOverrunMaxFix: T,
+    /// At 76 / 112. Bits 2 and 8 required; 0-6 and 8-15 known (ABI-2 §11.13).
+    pub wInputActive: u16,
+    /// Reserved up to the output base (16-bit 80, 32-bit 120).
+    pub aReserved2: [u8; P1],
+    /// At 80 / 120 (output base). Error: TRUE in ERROR only.
+    pub bError: SL_BOOL,
+    /// At 81 / 121. CamMonOK: TRUE in RUN and the MOVE-* states.
+    pub bCamMonOK: SL_BOOL,
+    /// At 82 / 122. UpwardsMove: the press moves upwards after BDC.
+    pub bUpwardsMove: SL_BOOL,
+    /// At 83 / 123. TDC: the position is in a TDC range.
+    pub bTDC: SL_BOOL,
+    /// At 84 / 124. BDC: the position is between BDC_LowerLimit and BDC_UpperLimit.
+    pub bBDC: SL_BOOL,
+    /// At 85 / 125. Reserved.
+    pub aReserved3: [u8; 3],
+    /// At 88 / 128 (analog output base). OverrunTDC: distance from TDC1_LowerLimit in the
+    /// TDC range up to OverrunMax (excentric), else 0.
+    pub nOverrunTDC: T,
+    /// At 90 / 132. OverrunStop: distance from the position at the falling edge of
+    /// Press_Started.
+    pub nOverrunStop: T,
+    /// Reserved up to the info data.
+    pub aReserved4: [u8; P2],
+    /// At 96 / 136 (info). The manual's status value.
+    pub nState: u8,
+    /// Reserved.
+    pub aReserved5: [u8; 1],
+    /// At 98 / 138. The message's Text ID − 0x4000 + library bits 13-15.
+    pub nDiag: u16,
+    /// At 100 / 140. Text ID of the message of the current ERROR, or of a refused
+    /// configuration in STOP; 0 = none.
+    pub nDiagTextId: u16,
+    /// Reserved.
+    pub aReserved6: [u8; 2],
+    /// At 104 / 144. Message parameter 2.
+    pub dwDiagPar2: u32,
+    /// At 108 / 148. Message parameter 3.
+    pub dwDiagPar3: u32,
+    /// At 112 / 152. Private state, 128 bytes: never write it.
+    pub stPrivate: SL_CAMMONITOR_PRIVATE,
+}
+
+/// FB CAMMONITOR, UINT variant.
+pub type FB_CAMMONITOR_UINT = FB_CAMMONITOR<u16, 2, 4>;
+/// FB CAMMONITOR, UDINT variant.
+pub type FB_CAMMONITOR_UDINT = FB_CAMMONITOR<u32, 6, 0>;
+
+// The ABI-2 §11.13 numbers of the two layouts (the §10.2 rule itself is checked for every
+// registered analog type in registry.rs).
+const _: () = {
+    use core::mem::{offset_of, size_of};
+    type U = FB_CAMMONITOR_UINT;
+    type D = FB_CAMMONITOR_UDINT;
+    assert!(offset_of!(U, nTDC1LowerLimit) == 26 && offset_of!(D, nTDC1LowerLimit) == 28);
+    assert!(offset_of!(U, nOverrunMax) == 38 && offset_of!(D, nOverrunMax) == 52);
+    assert!(offset_of!(U, tStopDetectionTime) == 40 && offset_of!(D, tStopDetectionTime) == 56);
+    assert!(offset_of!(U, dwOptions) == 52 && offset_of!(D, dwOptions) == 68);
+    assert!(
+        offset_of!(U, nAllowedPositionJitter) == 56 && offset_of!(D, nAllowedPositionJitter) == 72
+    );
+    assert!(offset_of!(U, nOverrunMaxFix) == 74 && offset_of!(D, nOverrunMaxFix) == 108);
+    assert!(offset_of!(U, wInputActive) == 76 && offset_of!(D, wInputActive) == 112);
+    assert!(offset_of!(U, bError) == 80 && offset_of!(D, bError) == 120);
+    assert!(offset_of!(U, nOverrunTDC) == 88 && offset_of!(D, nOverrunTDC) == 128);
+    assert!(offset_of!(U, nOverrunStop) == 90 && offset_of!(D, nOverrunStop) == 132);
+    assert!(offset_of!(U, nState) == 96 && offset_of!(D, nState) == 136);
+    assert!(offset_of!(U, stPrivate) == 112 && offset_of!(D, stPrivate) == 152);
+    assert!(size_of::<U>() == 112 + size_of::<SL_CAMMONITOR_PRIVATE>());
+};
+
+crate::base::block::block_states!(
+    /// The states of FB CAMMONITOR, both variants (manual §4.26.9).
+    CamMonitorState: Run, Stop, Safe, Error, Reset, Start,
+    WaitForReset = SL_STATE_CAMMONITOR_WAIT_FOR_RESET, "WAIT-FOR-RESET",
+    MoveStop = SL_STATE_CAMMONITOR_MOVE_STOP, "MOVE-STOP",
+    MoveStart = SL_STATE_CAMMONITOR_MOVE_START, "MOVE-START",
+    MoveDown = SL_STATE_CAMMONITOR_MOVE_DOWN, "MOVE-DOWN",
+    MoveUp = SL_STATE_CAMMONITOR_MOVE_UP, "MOVE-UP",
+    MoveTdc = SL_STATE_CAMMONITOR_MOVE_TDC, "MOVE-TDC",
+    MoveDownCw = SL_STATE_CAMMONITOR_MOVE_DOWN_CW, "MOVE-DOWN-CLOCKWISE",
+    MoveUpCw = SL_STATE_CAMMONITOR_MOVE_UP_CW, "MOVE-UP-CLOCKWISE",
+    MoveUpTdc1 = SL_STATE_CAMMONITOR_MOVE_UP_TDC1, "MOVE-UP-TDC1",
+    MoveStopTdc1 = SL_STATE_CAMMONITOR_MOVE_STOP_TDC1, "MOVE-STOP-TDC1",
+    MoveStartTdc1 = SL_STATE_CAMMONITOR_MOVE_START_TDC1, "MOVE-START-TDC1",
+    MoveDownCcw = SL_STATE_CAMMONITOR_MOVE_DOWN_CCW, "MOVE-DOWN-CONTRA-CLOCKWISE",
+    MoveUpCcw = SL_STATE_CAMMONITOR_MOVE_UP_CCW, "MOVE-UP-CONTRA-CLOCKWISE",
+    MoveUpTdc2 = SL_STATE_CAMMONITOR_MOVE_UP_TDC2, "MOVE-UP-TDC2",
+    MoveStopTdc2 = SL_STATE_CAMMONITOR_MOVE_STOP_TDC2, "MOVE-STOP-TDC2",
+    MoveStartTdc2 = SL_STATE_CAMMONITOR_MOVE_START_TDC2, "MOVE-START-TDC2"
+);
+
+/// The messages (Text ID − 0x4000, the manual's message text), §4.26.7 and §4.26.8.
+const DIAG_VALUES: &[(u16, &str)] = &[
+    (0, "No diagnostic information"),
+    (0x01, "The TDC2UpperLimit is lower or equal than the maximum position jitter"),
+    (0x02, "The Position is greater than the maximum position (plus the maximum position jitter)"),
+    (0x03, "The OverrunCAM input was FALSE in the top dead center area"),
+    (0x04, "The OverrunCAM input changed from FALSE to TRUE outside the area between BDCUpperLimit and TDCLowerLimit"),
+    (0x05, "The OverrunCAM input was TRUE in the area between OverrunMax and BDCUpperLimit"),
+    (0x06, "The OverrunCAM input changed from TRUE to FALSE outside the area between OverrunMax and BDCLowerLimit"),
+    (0x07, "The UpwardsCAM input was FALSE in the area between BDCUpperLimit and TDCLowerLimit"),
+    (0x08, "The UpwardsCAM input changed from FALSE to TRUE outside the area between BDCLowerLimit and TDCLowerLimit"),
+    (0x09, "The UpwardsCAM input changed from TRUE to FALSE outside the area between TDCLowerLimit and OverrunMax"),
+    (0x0A, "The Position was moving while waiting for a rising edge at the Reset input in the MOVE-STOP state"),
+    (0x0B, "The Position was moving while waiting for a falling edge at the Reset input in the MOVE-START state"),
+    (0x0C, "The Position in the area between OverrunMax and BDCLowerLimit was detected in the MOVE-UP state"),
+    (0x0D, "The Position has left the top dead center while waiting for a stop"),
+    (0x0E, "The position has been changed negatively"),
+    (0x0F, "The UpwardsCAM input was TRUE in the area between OverrunMax and BDCLowerLimit"),
+    (0x10, "The Position has a circle overflow in Pendulum Mode"),
+    (0x11, "The Position has moved while waiting for a rising edge at the Reset input in Pendulum Mode"),
+    (0x12, "The BackwardsMove input is TRUE while the Position is between 180° and 360°"),
+    (0x13, "The BackwardsMove input is TRUE while the movement is clockwise"),
+    (0x14, "The Position has moved while waiting for a falling edge at the Reset input in Pendulum Mode"),
+    (0x15, "The value of TDCLowerLimit (plus maximum position jitter) is greater than or equal to the configured position of 360°"),
+    (0x16, "The value of BDCUpperLimit (plus twice the maximum position jitter) is greater than or equal to the value of TDCLowerLimit"),
+    (0x17, "The value of BDCUpperLimit is less than or equal to the configured value of 180° (plus maximum position jitter)"),
+    (0x18, "The value of BDCLowerLimit (plus maximum position jitter) is greater than or equal to the configured value of 180°"),
+    (0x19, "The value of OverrunMax (plus twice the maximum position jitter) is greater than or equal to the value of BDCLowerLimit"),
+    (0x1A, "The value of TDCUpperLimit (plus twice the maximum position jitter) is greater than or equal to the value of OverrunMax"),
+    (0x1B, "The value of TDC1UpperLimit (plus the maximum position jitter) is greater than or to equal the configured position of 360°"),
+    (0x1C, "The value of TDC1LowerLimit (plus twice the maximum position jitter) is greater than or equal to the value of TDC1UpperLimit"),
+    (0x1D, "The value of TDC2LowerLimit (plus twice the maximum position jitter) is greater than or equal to the value of BDCLowerLimit"),
+    (0x1E, "The value of TDC2UpperLimit (plus twice the maximum position jitter) is greater than or equal to the value of TDC2LowerLimit"),
+    (0x1F, "The PressStarted input is TRUE and the position did not move after the PressStartedDelayTime"),
+    (0x20, "The PressStarted input is TRUE and the position has stopped after moving before"),
+    (0x21, "The PressStarted input is TRUE and the position has not moved enough"),
+    (0x22, "The Position has changed counter clockwise while moving up clockwise"),
+    (0x23, "The Position has changed clockwise while moving up counter clockwise"),
+    (0x24, "The Position was moving while waiting for a falling edge on the Reset input in the WAIT-FOR_RESET state"),
+    (0x25, "The TDCUpperLimit is lower or equal than the maximum position jitter"),
+];
+
+crate::impl_member!([T: Unsigned, const P1: usize, const P2: usize] FB_CAMMONITOR<T, P1, P2> {
+    info: crate::blocks::analog::variant_info!(T, "CAMMONITOR", CamMonitorState, DIAG_VALUES;
+        UINT = SL_TYPE_CAMMONITOR_UINT, UDINT = SL_TYPE_CAMMONITOR_UDINT),
+    state: CamMonitorState,
+    private: SL_CAMMONITOR_PRIVATE,
+    input: [bAutomatic, bBackwardsMove, bReset, bPressStarted, bOverrunCam, bUpwardCam,
+        bSettingMode, nPosition, nTDC1LowerLimit, nTDC1UpperLimit, nTDC2LowerLimit,
+        nTDC2UpperLimit, nBDCLowerLimit, nBDCUpperLimit, nOverrunMax],
+    param: [tStopDetectionTime, tPressStartDelayTime, tMoveDetectionTime, dwOptions,
+        nAllowedPositionJitter, nMinPositionChange, nMaxPosition, nTDC1LowerLimitFix,
+        nTDC1UpperLimitFix, nTDC2LowerLimitFix, nTDC2UpperLimitFix, nBDCLowerLimitFix,
+        nBDCUpperLimitFix, nOverrunMaxFix, wInputActive],
+    output: [bError, bCamMonOK, bUpwardsMove, bTDC, bBDC, nOverrunTDC, nOverrunStop],
+    info_fields: [nDiagTextId, dwDiagPar2, dwDiagPar3],
+});
+
+impl<T: Unsigned, const P1: usize, const P2: usize> FB_CAMMONITOR<T, P1, P2> {
+    /// An all-zero instance (valid: it initialises itself on the first cycle, ABI §3.6).
+    pub const fn zeroed() -> Self {
+        Self {
+            bAutomatic: 0,
+            bBackwardsMove: 0,
+            bReset: 0,
+            bPressStarted: 0,
+            bOverrunCam: 0,
+            bUpwardCam: 0,
+            bSettingMode: 0,
+            aReserved0: [0; 9],
+            bRun: 0,
+            bErrAck: 0,
+            aReserved1: [0; 6],
+            nPosition: T::ZERO,
+            nTDC1LowerLimit: T::ZERO,
+            nTDC1UpperLimit: T::ZERO,
+            nTDC2LowerLimit: T::ZERO,
+            nTDC2UpperLimit: T::ZERO,
+            nBDCLowerLimit: T::ZERO,
+            nBDCUpperLimit: T::ZERO,
+            nOverrunMax: T::ZERO,
+            tStopDetectionTime: 0,
+            tPressStartDelayTime: 0,
+            tMoveDetectionTime: 0,
+            dwOptions: 0,
+            nAllowedPositionJitter: T::ZERO,
+            nMinPositionChange: T::ZERO,
+            nMaxPosition: T::ZERO,
+            nTDC1LowerLimitFix: T::ZERO,
+            nTDC1UpperLimitFix: T::ZERO,
+            nTDC2LowerLimitFix: T::ZERO,
+            nTDC2UpperLimitFix: T::ZERO,
+            nBDCLowerLimitFix: T::ZERO,
+            nBDCUpperLimitFix: T::ZERO,
+            nOverrunMaxFix: T::ZERO,
+            wInputActive: 0,
+            aReserved2: [0; P1],
+            bError: 0,
+            bCamMonOK: 0,
+            bUpwardsMove: 0,
+            bTDC: 0,
+            bBDC: 0,
+            aReserved3: [0; 3],
+            nOverrunTDC: T::ZERO,
+            nOverrunStop: T::ZERO,
+            aReserved4: [0; P2],
+            nState: 0,
+            aReserved5: [0; 1],
+            nDiag: 0,
+            nDiagTextId: 0,
+            aReserved6: [0; 2],
+            dwDiagPar2: 0,
+            dwDiagPar3: 0,
+            stPrivate: SL_CAMMONITOR_PRIVATE {
+                stHeader: SL_PRIVATE_HEADER::ZERO,
+                wActive: 0,
+                wText: 0,
+                dwOptions: 0,
+                adwTime: [0; 3],
+                adwValue: [0; 10],
+                dwRef: 0,
+                dwLast: 0,
+                tRef: 0,
+                tPs: 0,
+                dwPsRef: 0,
+                dwStopLatch: 0,
+                adwPar: [0; 2],
+                nEdges: 0,
+                aReserved: [0; 7],
+            },
+        }
+    }
+}
+
+impl<T: Unsigned, const P1: usize, const P2: usize> Default for FB_CAMMONITOR<T, P1, P2> {
+    fn default() -> Self {
+        Self::zeroed()
+    }
+}
+
+// Indices into `adwValue`.
+const JITTER: usize = 0;
+const MIN_CHANGE: usize = 1;
+const MAX_POS: usize = 2;
+/// First of the seven limits (TDC1 LL, TDC1 UL, TDC2 LL, TDC2 UL, BDC LL, BDC UL,
+/// OverrunMax), in the order of their inputs and active bits 9–15.
+const FIX: usize = 3;
+// Indices into the seven limits.
+const TDC1_LL: usize = 0;
+const TDC1_UL: usize = 1;
+const TDC2_LL: usize = 2;
+const TDC2_UL: usize = 3;
+const BDC_LL: usize = 4;
+const BDC_UL: usize = 5;
+const OVERRUN: usize = 6;
+// Indices into `adwTime`.
+const T_STOP: usize = 0;
+const T_START_DELAY: usize = 1;
+const T_MOVE: usize = 2;
+
+/// The limits SettingMode re-latches (§4.26.6.4), as a mask over the seven limits.
+const fn settable(options: u32) -> u8 {
+    if options & SL_OPT_CAMMONITOR_PENDULUM != 0 {
+        0b011_1111 // TDC1 LL/UL, TDC2 LL/UL, BDC LL/UL
+    } else {
+        0b111_0011 // TDC1 LL/UL, BDC LL/UL, OverrunMax
+    }
+}
+
+/// Parameters as the user wrote them, with SettingMode's level: while it is TRUE the
+/// settable fixed limits may differ from the latched copy (they are re-latched, not a
+/// parameter change; ABI-2 §11.13, semantics CM15).
+#[derive(Clone, Copy, Debug)]
+pub struct CamParams {
+    active: u16,
+    options: u32,
+    times: [u32; 3],
+    values: [u32; 10],
+    setting: bool,
+}
+
+impl PartialEq for CamParams {
+    fn eq(&self, o: &Self) -> bool {
+        let free = if self.setting || o.setting {
+            settable(self.options)
+        } else {
+            0
+        };
+        self.active == o.active
+            && self.options == o.options
+            && self.times == o.times
+            && (0..10)
+                .all(|i| (i >= FIX && free >> (i - FIX) & 1 != 0) || self.values[i] == o.values[i])
+    }
+}
+
+/// One cycle's inputs after BOOL decoding.
+#[derive(Clone, Copy, Debug)]
+pub struct CamIn {
+    automatic: bool,
+    backwards: bool,
+    reset: Edge,
+    /// Press_Started (active; an invalid byte reads TRUE).
+    started: Edge,
+    overrun_cam: Edge,
+    upward_cam: Edge,
+    pos: u32,
+    /// The seven limit inputs as 32-bit patterns.
+    limits: [u32; 7],
+}
+
+/// `wAux` bits.
+const STOPPED: u16 = 1 << 0;
+/// Press_Started: a movement has been detected since its rising edge.
+const PS_MOVED: u16 = 1 << 1;
+/// Press_Started: the delay timer runs (set on its rising edge).
+const PS_ARMED: u16 = 1 << 2;
+/// `dwStopLatch` holds the position of the last falling edge of Press_Started.
+const LATCHED: u16 = 1 << 3;
+
+/// `nEdges` bits.
+const E_STARTED: u8 = 1 << 0;
+const E_OVERRUN_CAM: u8 = 1 << 1;
+const E_UPWARD_CAM: u8 = 1 << 2;
+
+/// A diag message: Text ID, parameters 2 and 3.
+type Msg = (u16, [u32; 2]);
+
+/// The effective geometry of one call: jitter J, MaxPosition M, the circle C = M + 1
+/// positions (ABI-2 §14 row 25) and the seven limits, all exact.
+#[derive(Clone, Copy, Debug)]
+struct Geo {
+    pendulum: bool,
+    j: u64,
+    m: u64,
+    c: u64,
+    l: [u64; 7],
+}
+
+impl Geo {
+    fn new(options: u32, values: &[u32; 10], limits: [u32; 7]) -> Self {
+        let m = u64::from(values[MAX_POS]);
+        Geo {
+            pendulum: options & SL_OPT_CAMMONITOR_PENDULUM != 0,
+            j: u64::from(values[JITTER]),
+            m,
+            c: m + 1,
+            l: limits.map(u64::from),
+        }
+    }
+
+    /// The ordering checks of §4.26.7.1 / §4.26.8.1 in the manual's order; a check is
+    /// made only when every limit it reads is in `known` (a mask over the seven limits).
+    fn ordering(&self, known: u8) -> Option<Msg> {
+        let (j, l, half) = (self.j, &self.l, self.m / 2);
+        let p = |v: u64| v as u32;
+        // (Text ID, limits read, fails, Par2, Par3)
+        let common = [
+            (
+                SL_TEXT_CAMMONITOR_BDCLL_HALF,
+                1 << BDC_LL,
+                l[BDC_LL] + j >= half,
+                p(l[BDC_LL] + j),
+                p(half),
+            ),
+            (
+                SL_TEXT_CAMMONITOR_BDCUL_HALF,
+                1 << BDC_UL,
+                l[BDC_UL] <= half + j,
+                p(l[BDC_UL]),
+                p(half + j),
+            ),
+            (
+                SL_TEXT_CAMMONITOR_BDCUL_TDC1LL,
+                1 << BDC_UL | 1 << TDC1_LL,
+                l[BDC_UL] + 2 * j >= l[TDC1_LL],
+                p(l[BDC_UL] + 2 * j),
+                p(l[TDC1_LL]),
+            ),
+        ];
+        let checks: [(u16, u8, bool, u32, u32); 8] = if self.pendulum {
+            [
+                (
+                    SL_TEXT_CAMMONITOR_TDC2UL_JITTER,
+                    1 << TDC2_UL,
+                    l[TDC2_UL] <= j,
+                    p(l[TDC2_UL]),
+                    p(j),
+                ),
+                (
+                    SL_TEXT_CAMMONITOR_TDC2UL_TDC2LL,
+                    1 << TDC2_UL | 1 << TDC2_LL,
+                    l[TDC2_UL] + 2 * j >= l[TDC2_LL],
+                    p(l[TDC2_UL] + 2 * j),
+                    p(l[TDC2_LL]),
+                ),
+                (
+                    SL_TEXT_CAMMONITOR_TDC2LL_BDCLL,
+                    1 << TDC2_LL | 1 << BDC_LL,
+                    l[TDC2_LL] + 2 * j >= l[BDC_LL],
+                    p(l[TDC2_LL] + 2 * j),
+                    p(l[BDC_LL]),
+                ),
+                common[0],
+                common[1],
+                common[2],
+                (
+                    SL_TEXT_CAMMONITOR_TDC1LL_TDC1UL,
+                    1 << TDC1_LL | 1 << TDC1_UL,
+                    l[TDC1_LL] + 2 * j >= l[TDC1_UL],
+                    p(l[TDC1_LL] + 2 * j),
+                    p(l[TDC1_UL]),
+                ),
+                (
+                    SL_TEXT_CAMMONITOR_TDC1UL_MAX,
+                    1 << TDC1_UL,
+                    l[TDC1_UL] + j >= self.m,
+                    p(l[TDC1_UL] + j),
+                    p(self.m),
+                ),
+            ]
+        } else {
+            [
+                (
+                    SL_TEXT_CAMMONITOR_TDC1UL_JITTER,
+                    1 << TDC1_UL,
+                    l[TDC1_UL] <= j,
+                    p(l[TDC1_UL]),
+                    p(j),
+                ),
+                (
+                    SL_TEXT_CAMMONITOR_TDC1UL_OVERRUNMAX,
+                    1 << TDC1_UL | 1 << OVERRUN,
+                    l[TDC1_UL] + 2 * j >= l[OVERRUN],
+                    p(l[TDC1_UL] + 2 * j),
+                    p(l[OVERRUN]),
+                ),
+                (
+                    SL_TEXT_CAMMONITOR_OVERRUNMAX_BDCLL,
+                    1 << OVERRUN | 1 << BDC_LL,
+                    l[OVERRUN] + 2 * j >= l[BDC_LL],
+                    p(l[OVERRUN] + 2 * j),
+                    p(l[BDC_LL]),
+                ),
+                common[0],
+                common[1],
+                common[2],
+                (
+                    SL_TEXT_CAMMONITOR_TDC1LL_MAX,
+                    1 << TDC1_LL,
+                    l[TDC1_LL] + j > self.m,
+                    p(l[TDC1_LL] + j),
+                    p(self.m),
+                ),
+                (0, 0, false, 0, 0),
+            ]
+        };
+        checks
+            .iter()
+            .find(|(_, reads, fails, _, _)| *fails && reads & !known == 0)
+            .map(|&(text, _, _, a, b)| (text, [a, b]))
+    }
+
+    /// Position → place on the circle 0 … M (values up to M + J are jitter past 360°).
+    fn circle(&self, pos: u64) -> u64 {
+        if pos < self.c {
+            pos
+        } else {
+            pos % self.c
+        }
+    }
+
+    /// Clockwise distance from `from` to `to`, both on the circle.
+    fn forward(&self, to: u64, from: u64) -> u64 {
+        if to >= from {
+            to - from
+        } else {
+            to + self.c - from
+        }
+    }
+
+    /// Signed distance from `from` to `to`: excentric the short way round the circle,
+    /// pendulum along the line (its wrap is an error of its own).
+    fn dist(&self, to: u64, from: u64) -> i64 {
+        let (to, from) = (self.circle(to), self.circle(from));
+        if self.pendulum {
+            to as i64 - from as i64
+        } else {
+            let d = self.forward(to, from);
+            if 2 * d > self.c {
+                d as i64 - self.c as i64
+            } else {
+                d as i64
+            }
+        }
+    }
+
+    /// Excentric: distance clockwise from `from` to `to`; pendulum: the absolute distance.
+    fn ahead(&self, to: u64, from: u64) -> u64 {
+        let (to, from) = (self.circle(to), self.circle(from));
+        if self.pendulum {
+            to.abs_diff(from)
+        } else {
+            self.forward(to, from)
+        }
+    }
+
+    // Excentric areas (semantics CM2).
+    /// LeftArea: BDC_UpperLimit … TDC1_LowerLimit (0x4004, 0x4007).
+    fn left(&self, q: u64) -> bool {
+        q >= self.l[BDC_UL] && q <= self.l[TDC1_LL]
+    }
+    /// TDCArea: TDC1_LowerLimit … 360°/0° … TDC1_UpperLimit (output TDC, 0x4003).
+    fn tdc(&self, q: u64) -> bool {
+        q >= self.l[TDC1_LL] || q <= self.l[TDC1_UL]
+    }
+    /// TDCAreaMax: TDC1_LowerLimit … 0° … OverrunMax (MOVE-TDC, 0x400D, 0x4009).
+    fn tdc_max(&self, q: u64) -> bool {
+        q >= self.l[TDC1_LL] || q <= self.l[OVERRUN]
+    }
+    /// OverrunMaxArea: OverrunMax … BDC_LowerLimit (0x4006).
+    fn overrun_area(&self, q: u64) -> bool {
+        q >= self.l[OVERRUN] && q <= self.l[BDC_LL]
+    }
+    /// BDCRightArea: beyond BDC_LowerLimit, before BDC_UpperLimit (0x4005).
+    fn bdc_right(&self, q: u64) -> bool {
+        q > self.l[BDC_LL] && q < self.l[BDC_UL]
+    }
+    /// OverrunMaxRightArea: beyond OverrunMax, before BDC_LowerLimit (0x400F).
+    fn overrun_right(&self, q: u64) -> bool {
+        q > self.l[OVERRUN] && q < self.l[BDC_LL]
+    }
+    /// BDCArea of 0x4008: BDC_LowerLimit … TDC1_LowerLimit.
+    fn upward_rise(&self, q: u64) -> bool {
+        q >= self.l[BDC_LL] && q <= self.l[TDC1_LL]
+    }
+    /// Output BDC: BDC_LowerLimit … BDC_UpperLimit.
+    fn bdc(&self, q: u64) -> bool {
+        q >= self.l[BDC_LL] && q <= self.l[BDC_UL]
+    }
+
+    // Pendulum areas (semantics CM3).
+    /// TDC1Area or TDC1ExceededArea: from TDC1_LowerLimit upwards.
+    fn tdc1_reached(&self, q: u64) -> bool {
+        q >= self.l[TDC1_LL]
+    }
+    /// TDC2Area or TDC2ExceededArea: from TDC2_LowerLimit downwards.
+    fn tdc2_reached(&self, q: u64) -> bool {
+        q <= self.l[TDC2_LL]
+    }
+    /// A reversal area exceeded: above TDC1_UpperLimit or below TDC2_UpperLimit.
+    fn exceeded(&self, q: u64) -> bool {
+        q > self.l[TDC1_UL] || q < self.l[TDC2_UL]
+    }
+    /// Output TDC in pendulum mode: TDC1Area or TDC2Area.
+    fn tdc_pendulum(&self, q: u64) -> bool {
+        (q >= self.l[TDC1_LL] && q <= self.l[TDC1_UL])
+            || (q >= self.l[TDC2_UL] && q <= self.l[TDC2_LL])
+    }
+}
+
+/// CamMonOK is TRUE in RUN and the MOVE-* states.
+fn cam_ok(state: u8) -> bool {
+    state == SL_STATE_RUN || state >= SL_STATE_CAMMONITOR_MOVE_STOP
+}
+
+/// The tracking values a call changes besides the state.
+#[derive(Clone, Copy, Debug)]
+struct Track {
+    aux: u16,
+    r: u32,
+    last: u32,
+    t_ref: u32,
+    t_ps: u32,
+    ps_ref: u32,
+    latch: u32,
+}
+
+impl Track {
+    /// One running call: checks in the order position range, circle overflow, parameter
+    /// verification, direction and cams, Press_Started, then the state's transition.
+    fn run(
+        &mut self,
+        state: u8,
+        inp: &CamIn,
+        geo: &Geo,
+        p: &SL_CAMMONITOR_PRIVATE,
+        now: u32,
+        first: bool,
+    ) -> Result<u8, Msg> {
+        let pos = u64::from(inp.pos);
+        if pos > geo.m + geo.j {
+            let limit = (geo.m + geo.j) as u32;
+            return Err((SL_TEXT_CAMMONITOR_POSITION_RANGE, [inp.pos, limit]));
+        }
+        let q = geo.circle(pos);
+        if first {
+            self.r = q as u32;
+            self.last = q as u32;
+            self.t_ref = now;
+            self.aux = 0;
+        }
+        let last = u64::from(self.last);
+        let (r, j) = (u64::from(self.r), geo.j as i64);
+        if geo.pendulum && 2 * q.abs_diff(last) > geo.c {
+            return Err((SL_TEXT_CAMMONITOR_CIRCLE_OVERFLOW, [inp.pos, self.last]));
+        }
+        if !inp.automatic {
+            if let Some(m) = geo.ordering(0x7F) {
+                return Err(m);
+            }
+        }
+        // Standstill and direction (§4.26.6.1, §4.26.6.3; semantics CM5).
+        let (d_ref, d_last) = (geo.dist(q, r), geo.dist(q, last));
+        let cw = d_ref > j || d_last > j;
+        let ccw = d_ref < -j || d_last < -j;
+        let moving = cw || ccw;
+        let was_stopped = self.aux & STOPPED != 0;
+        if moving {
+            (self.r, self.t_ref) = (q as u32, now);
+            self.aux &= !STOPPED;
+        } else if reached(now, self.t_ref, p.adwTime[T_STOP]) {
+            (self.r, self.t_ref) = (q as u32, now);
+            self.aux |= STOPPED;
+        }
+        let stopped = self.aux & STOPPED != 0;
+        let stop_rise = stopped && !was_stopped;
+        self.last = q as u32;
+
+        if !geo.pendulum && !inp.automatic {
+            self.excentric_checks(inp, geo, q, cw, ccw, first, p.wActive)?;
+        }
+        if p.wActive & SL_CAMMONITOR_ACTIVE_PRESSSTARTED != 0 {
+            self.press_started(inp, geo, p, q, moving, stop_rise, now, first)?;
+        }
+
+        let rise = !first && inp.reset.rising;
+        let fall = !first && inp.reset.falling;
+        let (qq, lastq) = (q as u32, last as u32);
+        let next = match state {
+            SL_STATE_START if moving => {
+                let text = if geo.pendulum {
+                    SL_TEXT_CAMMONITOR_MOVED_START_TDC
+                } else {
+                    SL_TEXT_CAMMONITOR_MOVED_MOVE_START
+                };
+                return Err((text, if geo.pendulum { [qq, lastq] } else { [0; 2] }));
+            }
+            SL_STATE_START if fall => SL_STATE_RUN,
+            SL_STATE_CAMMONITOR_WAIT_FOR_RESET if moving => {
+                let par = if geo.pendulum { [inp.pos, 0] } else { [0; 2] };
+                return Err((SL_TEXT_CAMMONITOR_MOVED_WAIT_FOR_RESET, par));
+            }
+            SL_STATE_CAMMONITOR_WAIT_FOR_RESET | SL_STATE_SAFE if rise => SL_STATE_START,
+            // Excentric (semantics CM6).
+            SL_STATE_RUN if !geo.pendulum && cw => {
+                if geo.left(q) && !geo.tdc(q) {
+                    SL_STATE_CAMMONITOR_MOVE_UP
+                } else {
+                    SL_STATE_CAMMONITOR_MOVE_DOWN
+                }
+            }
+            SL_STATE_CAMMONITOR_MOVE_DOWN if geo.left(q) && !geo.tdc(q) => {
+                SL_STATE_CAMMONITOR_MOVE_UP
+            }
+            SL_STATE_CAMMONITOR_MOVE_UP if geo.tdc_max(q) => SL_STATE_CAMMONITOR_MOVE_TDC,
+            SL_STATE_CAMMONITOR_MOVE_UP if !geo.left(q) => {
+                return Err((SL_TEXT_CAMMONITOR_MOVE_UP_AREA, [inp.pos, 0]));
+            }
+            SL_STATE_CAMMONITOR_MOVE_DOWN | SL_STATE_CAMMONITOR_MOVE_UP if stop_rise => {
+                SL_STATE_SAFE
+            }
+            SL_STATE_CAMMONITOR_MOVE_TDC if !geo.tdc_max(q) => {
+                return Err((SL_TEXT_CAMMONITOR_LEFT_TDC, [inp.pos, 0]));
+            }
+            SL_STATE_CAMMONITOR_MOVE_TDC if stopped => SL_STATE_CAMMONITOR_MOVE_STOP,
+            SL_STATE_CAMMONITOR_MOVE_STOP if moving => {
+                return Err((SL_TEXT_CAMMONITOR_MOVED_MOVE_STOP, [0; 2]));
+            }
+            SL_STATE_CAMMONITOR_MOVE_STOP if rise => SL_STATE_CAMMONITOR_MOVE_START,
+            SL_STATE_CAMMONITOR_MOVE_START if moving => {
+                return Err((SL_TEXT_CAMMONITOR_MOVED_MOVE_START, [0; 2]));
+            }
+            SL_STATE_CAMMONITOR_MOVE_START if fall => SL_STATE_CAMMONITOR_MOVE_DOWN,
+            // Pendulum (semantics CM7).
+            SL_STATE_RUN if geo.pendulum && cw => SL_STATE_CAMMONITOR_MOVE_DOWN_CW,
+            SL_STATE_RUN if geo.pendulum && ccw => SL_STATE_CAMMONITOR_MOVE_DOWN_CCW,
+            SL_STATE_CAMMONITOR_MOVE_DOWN_CW if ccw => SL_STATE_CAMMONITOR_MOVE_DOWN_CCW,
+            SL_STATE_CAMMONITOR_MOVE_DOWN_CCW if cw => SL_STATE_CAMMONITOR_MOVE_DOWN_CW,
+            SL_STATE_CAMMONITOR_MOVE_DOWN_CW if geo.tdc1_reached(q) && !geo.tdc1_reached(last) => {
+                SL_STATE_CAMMONITOR_MOVE_UP_TDC1
+            }
+            SL_STATE_CAMMONITOR_MOVE_DOWN_CCW if geo.tdc2_reached(q) && !geo.tdc2_reached(last) => {
+                SL_STATE_CAMMONITOR_MOVE_UP_TDC2
+            }
+            SL_STATE_CAMMONITOR_MOVE_DOWN_CW if q >= geo.l[BDC_UL] && last < geo.l[BDC_UL] => {
+                SL_STATE_CAMMONITOR_MOVE_UP_CW
+            }
+            SL_STATE_CAMMONITOR_MOVE_DOWN_CCW if q <= geo.l[BDC_LL] && last > geo.l[BDC_LL] => {
+                SL_STATE_CAMMONITOR_MOVE_UP_CCW
+            }
+            SL_STATE_CAMMONITOR_MOVE_UP_CW | SL_STATE_CAMMONITOR_MOVE_UP_TDC1 if ccw => {
+                return Err((SL_TEXT_CAMMONITOR_CCW_MOVING_UP_CW, [qq, lastq]));
+            }
+            SL_STATE_CAMMONITOR_MOVE_UP_CCW | SL_STATE_CAMMONITOR_MOVE_UP_TDC2 if cw => {
+                return Err((SL_TEXT_CAMMONITOR_CW_MOVING_UP_CCW, [qq, lastq]));
+            }
+            SL_STATE_CAMMONITOR_MOVE_UP_CW if geo.tdc1_reached(q) => {
+                SL_STATE_CAMMONITOR_MOVE_UP_TDC1
+            }
+            SL_STATE_CAMMONITOR_MOVE_UP_CCW if geo.tdc2_reached(q) => {
+                SL_STATE_CAMMONITOR_MOVE_UP_TDC2
+            }
+            SL_STATE_CAMMONITOR_MOVE_UP_CW | SL_STATE_CAMMONITOR_MOVE_UP_CCW if stop_rise => {
+                SL_STATE_SAFE
+            }
+            SL_STATE_CAMMONITOR_MOVE_UP_TDC1 if stopped => SL_STATE_CAMMONITOR_MOVE_STOP_TDC1,
+            SL_STATE_CAMMONITOR_MOVE_UP_TDC2 if stopped => SL_STATE_CAMMONITOR_MOVE_STOP_TDC2,
+            SL_STATE_CAMMONITOR_MOVE_STOP_TDC1 | SL_STATE_CAMMONITOR_MOVE_STOP_TDC2 if moving => {
+                return Err((SL_TEXT_CAMMONITOR_MOVED_STOP_TDC, [qq, lastq]));
+            }
+            SL_STATE_CAMMONITOR_MOVE_STOP_TDC1 if rise => SL_STATE_CAMMONITOR_MOVE_START_TDC1,
+            SL_STATE_CAMMONITOR_MOVE_STOP_TDC2 if rise => SL_STATE_CAMMONITOR_MOVE_START_TDC2,
+            SL_STATE_CAMMONITOR_MOVE_START_TDC1 | SL_STATE_CAMMONITOR_MOVE_START_TDC2 if moving => {
+                return Err((SL_TEXT_CAMMONITOR_MOVED_START_TDC, [qq, lastq]));
+            }
+            SL_STATE_CAMMONITOR_MOVE_START_TDC1 | SL_STATE_CAMMONITOR_MOVE_START_TDC2 if fall => {
+                SL_STATE_RUN
+            }
+            s => s,
+        };
+        // Pendulum: the upper reversal areas are never exceeded (§4.26.4; semantics CM8).
+        Ok(if geo.pendulum && cam_ok(next) && geo.exceeded(q) {
+            SL_STATE_SAFE
+        } else {
+            next
+        })
+    }
+
+    /// Direction (§4.26.7.2) and hardware cams (§4.26.7.3, §4.26.7.4), Automatic FALSE.
+    #[allow(clippy::too_many_arguments)]
+    fn excentric_checks(
+        &self,
+        inp: &CamIn,
+        geo: &Geo,
+        q: u64,
+        cw: bool,
+        ccw: bool,
+        first: bool,
+        active: u16,
+    ) -> Result<(), Msg> {
+        let pos = inp.pos;
+        if ccw && !inp.backwards {
+            return Err((SL_TEXT_CAMMONITOR_BACKWARDS, [0; 2]));
+        }
+        if cw && inp.backwards {
+            return Err((SL_TEXT_CAMMONITOR_BACKWARDS_CLOCKWISE, [0; 2]));
+        }
+        if inp.backwards && q >= geo.l[BDC_UL] {
+            return Err((SL_TEXT_CAMMONITOR_BACKWARDS_AREA, [pos, 0]));
+        }
+        if active & SL_CAMMONITOR_ACTIVE_OVERRUNCAM != 0 {
+            let cam = inp.overrun_cam;
+            let fail = if cam.level && geo.bdc_right(q) {
+                SL_TEXT_CAMMONITOR_OVERRUNCAM_TRUE_BDC
+            } else if !cam.level && geo.tdc(q) {
+                SL_TEXT_CAMMONITOR_OVERRUNCAM_FALSE_TDC
+            } else if !first && cam.rising && !geo.left(q) {
+                SL_TEXT_CAMMONITOR_OVERRUNCAM_RISE
+            } else if !first && cam.falling && !geo.overrun_area(q) {
+                SL_TEXT_CAMMONITOR_OVERRUNCAM_FALL
+            } else {
+                0
+            };
+            if fail != 0 {
+                return Err((fail, [pos, 0]));
+            }
+        }
+        if active & SL_CAMMONITOR_ACTIVE_UPWARDCAM != 0 {
+            let cam = inp.upward_cam;
+            let fail = if cam.level && geo.overrun_right(q) {
+                SL_TEXT_CAMMONITOR_UPWARDCAM_TRUE_RIGHT
+            } else if !cam.level && geo.left(q) {
+                SL_TEXT_CAMMONITOR_UPWARDCAM_FALSE_LEFT
+            } else if !first && cam.rising && !geo.upward_rise(q) {
+                SL_TEXT_CAMMONITOR_UPWARDCAM_RISE
+            } else if !first && cam.falling && !geo.tdc_max(q) {
+                SL_TEXT_CAMMONITOR_UPWARDCAM_FALL
+            } else {
+                0
+            };
+            if fail != 0 {
+                return Err((fail, [pos, 0]));
+            }
+        }
+        Ok(())
+    }
+
+    /// Press_Started (§4.26.6.2, §4.26.7.6; semantics CM10) and OverrunStop's latch.
+    #[allow(clippy::too_many_arguments)]
+    fn press_started(
+        &mut self,
+        inp: &CamIn,
+        geo: &Geo,
+        p: &SL_CAMMONITOR_PRIVATE,
+        q: u64,
+        moving: bool,
+        stop_rise: bool,
+        now: u32,
+        first: bool,
+    ) -> Result<(), Msg> {
+        let ps = inp.started;
+        if ps.rising || (first && ps.level) {
+            self.aux = (self.aux | PS_ARMED) & !(PS_MOVED | LATCHED);
+            self.t_ps = now;
+        }
+        if ps.falling {
+            self.aux = (self.aux | LATCHED) & !(PS_ARMED | PS_MOVED);
+            self.latch = q as u32;
+        }
+        if !ps.level || self.aux & PS_ARMED == 0 {
+            return Ok(());
+        }
+        if self.aux & PS_MOVED == 0 {
+            if moving {
+                self.aux |= PS_MOVED;
+                (self.t_ps, self.ps_ref) = (now, q as u32);
+            } else if reached(now, self.t_ps, p.adwTime[T_START_DELAY]) {
+                return Err((SL_TEXT_CAMMONITOR_NOT_STARTED, [0; 2]));
+            }
+        } else if stop_rise {
+            return Err((SL_TEXT_CAMMONITOR_STOPPED, [0; 2]));
+        } else if reached(now, self.t_ps, p.adwTime[T_MOVE]) {
+            // Forward only (excentric): a step back within the jitter is no progress.
+            let change = if geo.pendulum {
+                q.abs_diff(u64::from(self.ps_ref))
+            } else {
+                geo.dist(q, u64::from(self.ps_ref)).max(0) as u64
+            };
+            if change < u64::from(p.adwValue[MIN_CHANGE]) {
+                return Err((SL_TEXT_CAMMONITOR_TOO_SLOW, [inp.pos, self.ps_ref]));
+            }
+            (self.t_ps, self.ps_ref) = (now, q as u32);
+        }
+        Ok(())
+    }
+}
+
+/// The seven effective limits: the input where its active bit is set, else the latched
+/// fixed value.
+fn effective(active: u16, values: &[u32; 10], inputs: [u32; 7]) -> [u32; 7] {
+    core::array::from_fn(|i| {
+        if active & (SL_CAMMONITOR_ACTIVE_TDC1LOWERLIMIT << i) != 0 {
+            inputs[i]
+        } else {
+            values[FIX + i]
+        }
+    })
+}
+
+/// The limits that come from the fixed values (mask over the seven).
+fn from_params(active: u16) -> u8 {
+    !(active >> 9) as u8 & 0x7F
+}
+
+/// The parameter-only ordering error of a configuration (ABI-2 §12.8), if any.
+fn config_error(p: &CamParams) -> Option<Msg> {
+    let fix: [u32; 7] = core::array::from_fn(|i| p.values[FIX + i]);
+    Geo::new(p.options, &p.values, fix).ordering(from_params(p.active))
+}
+
+/// The texts of the ordering errors (they remain while their check fails, ABI-2 §12.5).
+fn is_ordering(text: u16) -> bool {
+    matches!(text, 0x4001 | 0x4015..=0x401E | 0x4025)
+}
+
+impl<T: Unsigned, const P1: usize, const P2: usize> FB_CAMMONITOR<T, P1, P2> {
+    fn geometry(&self, inp: &CamIn) -> Geo {
+        let p = self.private();
+        Geo::new(
+            p.dwOptions,
+            &p.adwValue,
+            effective(p.wActive, &p.adwValue, inp.limits),
+        )
+    }
+
+    fn limit_inputs(&self) -> [u32; 7] {
+        [
+            self.nTDC1LowerLimit.to_bits(),
+            self.nTDC1UpperLimit.to_bits(),
+            self.nTDC2LowerLimit.to_bits(),
+            self.nTDC2UpperLimit.to_bits(),
+            self.nBDCLowerLimit.to_bits(),
+            self.nBDCUpperLimit.to_bits(),
+            self.nOverrunMax.to_bits(),
+        ]
+    }
+
+    /// One running call (`first`: the call that enters the start state).
+    fn advance(&mut self, inp: &CamIn, now: u32, first: bool) -> Status {
+        let p = *self.private();
+        let h = p.stHeader;
+        let geo = self.geometry(inp);
+        let mut t = Track {
+            aux: h.wAux,
+            r: p.dwRef,
+            last: p.dwLast,
+            t_ref: p.tRef,
+            t_ps: p.tPs,
+            ps_ref: p.dwPsRef,
+            latch: p.dwStopLatch,
+        };
+        let result = t.run(h.nState, inp, &geo, &p, now, first);
+        let next = match result {
+            Ok(next) => next,
+            Err((text, par)) => {
+                let q = self.private_mut();
+                q.wText = text;
+                q.adwPar = par;
+                q.stHeader.enter_error(text - SL_CAMMONITOR_DIAG_TEXT_BASE);
+                return Status::Ok;
+            }
+        };
+        // CamMonOK switching on is where the latched parameters are verified (C3).
+        if cam_ok(next) && !cam_ok(h.nState) && !self.params_intact() {
+            self.private_mut().stHeader.enter_error(SL_DIAG_CORRUPT);
+            return Status::Corrupt;
+        }
+        let q = self.private_mut();
+        q.stHeader.nState = next;
+        q.stHeader.wAux = t.aux;
+        q.dwRef = t.r;
+        q.dwLast = t.last;
+        q.tRef = t.t_ref;
+        q.tPs = t.t_ps;
+        q.dwPsRef = t.ps_ref;
+        q.dwStopLatch = t.latch;
+        Status::Ok
+    }
+}
+
+impl<T: Unsigned, const P1: usize, const P2: usize> Block for FB_CAMMONITOR<T, P1, P2> {
+    const MAGIC: u16 = magic(<Self as Registered>::INFO.tag);
+    type Params = CamParams;
+    type In = CamIn;
+
+    #[inline(always)]
+    fn live_params(&self) -> CamParams {
+        let setting = self.private().wActive & SL_CAMMONITOR_ACTIVE_SETTINGMODE != 0
+            && self.bSettingMode == 1;
+        CamParams {
+            active: self.wInputActive,
+            options: self.dwOptions,
+            times: [
+                self.tStopDetectionTime,
+                self.tPressStartDelayTime,
+                self.tMoveDetectionTime,
+            ],
+            values: [
+                self.nAllowedPositionJitter.to_bits(),
+                self.nMinPositionChange.to_bits(),
+                self.nMaxPosition.to_bits(),
+                self.nTDC1LowerLimitFix.to_bits(),
+                self.nTDC1UpperLimitFix.to_bits(),
+                self.nTDC2LowerLimitFix.to_bits(),
+                self.nTDC2UpperLimitFix.to_bits(),
+                self.nBDCLowerLimitFix.to_bits(),
+                self.nBDCUpperLimitFix.to_bits(),
+                self.nOverrunMaxFix.to_bits(),
+            ],
+            setting,
+        }
+    }
+    #[inline(always)]
+    fn latched_params(&self) -> CamParams {
+        let p = self.private();
+        CamParams {
+            active: p.wActive,
+            options: p.dwOptions,
+            times: p.adwTime,
+            values: p.adwValue,
+            setting: false,
+        }
+    }
+    /// ABI-2 §11.13: Reset and Position active, bits 0–6 and 8–15 only, the mode's unused
+    /// inputs inactive and their fixed values 0, the times ≤ 65,535 ms, StopDetectionTime
+    /// ≥ 1, with Press_Started active its times and MinPositionChange ≥ 1, and no failing
+    /// parameter-only ordering check (semantics CM11, CM12).
+    fn params_valid(p: &CamParams) -> bool {
+        let a = p.active;
+        let required = SL_CAMMONITOR_ACTIVE_RESET | SL_CAMMONITOR_ACTIVE_POSITION;
+        let pendulum = p.options & SL_OPT_CAMMONITOR_PENDULUM != 0;
+        let v = &p.values;
+        let mode_ok = if pendulum {
+            let unused = SL_CAMMONITOR_ACTIVE_BACKWARDSMOVE
+                | SL_CAMMONITOR_ACTIVE_OVERRUNCAM
+                | SL_CAMMONITOR_ACTIVE_UPWARDCAM
+                | SL_CAMMONITOR_ACTIVE_OVERRUNMAX;
+            a & unused == 0 && v[FIX + OVERRUN] == 0
+        } else {
+            let unused = SL_CAMMONITOR_ACTIVE_TDC2LOWERLIMIT | SL_CAMMONITOR_ACTIVE_TDC2UPPERLIMIT;
+            a & unused == 0 && v[FIX + TDC2_LL] == 0 && v[FIX + TDC2_UL] == 0
+        };
+        let started = a & SL_CAMMONITOR_ACTIVE_PRESSSTARTED != 0;
+        a & 0x0080 == 0
+            && a & required == required
+            && p.options & !SL_OPT_CAMMONITOR_PENDULUM == 0
+            && mode_ok
+            && p.times.iter().all(|&t| t <= SL_CAMMONITOR_TIME_MAX)
+            && p.times[T_STOP] != 0
+            && (!started
+                || (p.times[T_START_DELAY] != 0 && p.times[T_MOVE] != 0 && v[MIN_CHANGE] != 0))
+            && config_error(p).is_none()
+    }
+    fn store_params(&mut self, p: &CamParams) {
+        let q = self.private_mut();
+        q.wActive = p.active;
+        q.dwOptions = p.options;
+        q.adwTime = p.times;
+        q.adwValue = p.values;
+    }
+    fn latched_crc(&self) -> u16 {
+        let p = self.private();
+        let mut words = [0u16; 29];
+        let options = [p.dwOptions];
+        let all = options
+            .iter()
+            .chain(p.adwTime.iter())
+            .chain(p.adwValue.iter());
+        for (i, v) in all.enumerate() {
+            words[1 + 2 * i] = *v as u16;
+            words[2 + 2 * i] = (*v >> 16) as u16;
+        }
+        words[0] = p.wActive;
+        param_crc(Self::MAGIC, 0, 0, 0, &words)
+    }
+    /// Inactive optional BOOLs read FALSE; invalid bytes read FALSE without an edge, but
+    /// Press_Started reads TRUE (ABI-2 §12.7). SettingMode TRUE outside STOP re-latches
+    /// the settable fixed limits (semantics CM15).
+    #[inline(always)]
+    fn decode(&mut self) -> (CamIn, bool) {
+        let a = self.private().wActive;
+        let raw = bools::pack([
+            self.bAutomatic,
+            self.bBackwardsMove,
+            self.bReset,
+            self.bPressStarted,
+            self.bOverrunCam,
+            self.bUpwardCam,
+            self.bSettingMode,
+        ]);
+        let on = |bit: u16, i: u8| a & bit != 0 && raw.ones >> i & 1 != 0;
+        let gated = |bit: u16, b: u8| if a & bit != 0 { b } else { 0 };
+        let started_raw = match gated(SL_CAMMONITOR_ACTIVE_PRESSSTARTED, self.bPressStarted) {
+            0 => 0,
+            _ => 1,
+        };
+        let ocam_raw = gated(SL_CAMMONITOR_ACTIVE_OVERRUNCAM, self.bOverrunCam);
+        let ucam_raw = gated(SL_CAMMONITOR_ACTIVE_UPWARDCAM, self.bUpwardCam);
+        let reset_raw = self.bReset;
+        let limits = self.limit_inputs();
+        let pos = self.nPosition.to_bits();
+        let setting = on(SL_CAMMONITOR_ACTIVE_SETTINGMODE, 6);
+        let q = self.private_mut();
+        let reset = edge(reset_raw, &mut q.stHeader.nFlags, F_RESTART_PREV);
+        let started = edge(started_raw, &mut q.nEdges, E_STARTED);
+        let overrun_cam = edge(ocam_raw, &mut q.nEdges, E_OVERRUN_CAM);
+        let upward_cam = edge(ucam_raw, &mut q.nEdges, E_UPWARD_CAM);
+        if setting && self.private().stHeader.nState != SL_STATE_STOP {
+            self.relatch_settable();
+        }
+        (
+            CamIn {
+                automatic: on(SL_CAMMONITOR_ACTIVE_AUTOMATIC, 0),
+                backwards: on(SL_CAMMONITOR_ACTIVE_BACKWARDSMOVE, 1),
+                reset,
+                started,
+                overrun_cam,
+                upward_cam,
+                pos,
+                limits,
+            },
+            raw.invalid != 0,
+        )
+    }
+    /// STOP → run and RESET → run: START with Reset TRUE, else WAIT-FOR-RESET (§4.26.9),
+    /// then this call's checks (semantics CM4).
+    fn start(&mut self, inp: &CamIn, now: u32) {
+        let q = self.private_mut();
+        q.stHeader.nState = if inp.reset.level {
+            SL_STATE_START
+        } else {
+            SL_STATE_CAMMONITOR_WAIT_FOR_RESET
+        };
+        q.stHeader.wAux = 0;
+        q.wText = 0;
+        q.adwPar = [0; 2];
+        self.advance(inp, now, true);
+    }
+    #[inline(always)]
+    fn step(&mut self, inp: &CamIn, now: u32) -> Status {
+        self.advance(inp, now, false)
+    }
+    /// A parameter error remains while its check fails, a position out of range while it
+    /// is out of range; movement and cam errors are events (ABI-2 §12.5).
+    fn error_remains(&mut self, inp: &CamIn) -> bool {
+        let text = self.private().wText;
+        let geo = self.geometry(inp);
+        if u64::from(inp.pos) > geo.m + geo.j {
+            return true;
+        }
+        is_ordering(text) && !inp.automatic && geo.ordering(0x7F).is_some()
+    }
+    #[inline(always)]
+    fn write_outputs(&mut self) {
+        let p = *self.private();
+        let h = p.stHeader;
+        let state = h.nState;
+        let ok = cam_ok(state);
+        let (mut upwards, mut tdc, mut bdc, mut overrun_tdc, mut overrun_stop) =
+            (false, false, false, 0u64, 0u64);
+        if ok {
+            let a = p.wActive;
+            let geo = Geo::new(
+                p.dwOptions,
+                &p.adwValue,
+                effective(a, &p.adwValue, self.limit_inputs()),
+            );
+            let q = u64::from(p.dwLast);
+            bdc = geo.bdc(q);
+            if geo.pendulum {
+                tdc = geo.tdc_pendulum(q);
+                upwards = matches!(
+                    state,
+                    SL_STATE_CAMMONITOR_MOVE_UP_CW
+                        | SL_STATE_CAMMONITOR_MOVE_UP_TDC1
+                        | SL_STATE_CAMMONITOR_MOVE_UP_CCW
+                        | SL_STATE_CAMMONITOR_MOVE_UP_TDC2
+                );
+            } else {
+                tdc = geo.tdc(q);
+                upwards = matches!(
+                    state,
+                    SL_STATE_CAMMONITOR_MOVE_UP | SL_STATE_CAMMONITOR_MOVE_TDC
+                ) && q >= geo.l[BDC_UL];
+                if geo.tdc_max(q) {
+                    overrun_tdc = geo.ahead(q, geo.l[TDC1_LL]);
+                }
+            }
+            if h.wAux & LATCHED != 0 {
+                overrun_stop = geo.ahead(q, u64::from(p.dwStopLatch));
+                // Within the jitter behind the latch is no overrun (excentric).
+                if !geo.pendulum && geo.c - overrun_stop <= geo.j {
+                    overrun_stop = 0;
+                }
+            }
+        }
+        let t = |v: u64| T::from_bits(v.min(T::MAX as u64) as u32);
+        self.bError = u8::from(state == SL_STATE_ERROR);
+        self.bCamMonOK = u8::from(ok);
+        self.bUpwardsMove = u8::from(upwards);
+        self.bTDC = u8::from(tdc);
+        self.bBDC = u8::from(bdc);
+        self.nOverrunTDC = t(overrun_tdc);
+        self.nOverrunStop = t(overrun_stop);
+        self.nState = state;
+        self.nDiag = h.wDiag;
+        let value = h.wDiag & !LIBRARY_DIAG_BITS;
+        let shown = state == SL_STATE_ERROR
+            && p.wText != 0
+            && value == p.wText.wrapping_sub(SL_CAMMONITOR_DIAG_TEXT_BASE);
+        let refused = state == SL_STATE_STOP && h.flag(F_CFG_INVALID);
+        (self.nDiagTextId, self.dwDiagPar2, self.dwDiagPar3) = if shown {
+            (p.wText, p.adwPar[0], p.adwPar[1])
+        } else if refused {
+            match config_error(&self.latched_params()) {
+                Some((text, [a, b])) => (text, a, b),
+                None => (0, 0, 0),
+            }
+        } else {
+            (0, 0, 0)
+        };
+    }
+}
+
+impl<T: Unsigned, const P1: usize, const P2: usize> FB_CAMMONITOR<T, P1, P2> {
+    /// SettingMode: the live settable fixed limits become the latched ones, with a new CRC
+    /// (only when one differs).
+    fn relatch_settable(&mut self) {
+        let live = self.live_params();
+        let mask = settable(self.private().dwOptions);
+        let q = self.private_mut();
+        let mut changed = false;
+        for i in 0..7 {
+            if mask >> i & 1 != 0 && q.adwValue[FIX + i] != live.values[FIX + i] {
+                q.adwValue[FIX + i] = live.values[FIX + i];
+                changed = true;
+            }
+        }
+        if changed {
+            let crc = self.latched_crc();
+            self.private_mut().stHeader.wParamCrc = crc;
+        }
+    }
+}

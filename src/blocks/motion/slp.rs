@@ -1,0 +1,494 @@
+//! FB SLP (safely limited position) — manual §4.29; layout ABI-2 §11.14, rules ABI-2 §12.
+//!
+//! With SafePosValid TRUE the block compares the position with a lower and an upper limit,
+//! each taken from its inputs (UL_Active / LL_Active, `wInputActive` bits 10/11 and
+//! 12/13) or from the `…Fix` parameters. Multi-turn (default): the 64-bit values
+//! MultiturnPos · 2³² + SingleturnPos; LL ≤ P ≤ UL → RUN (PositionInLimit), below → SAFE
+//! with BelowMin, above → SAFE with AboveMax. `SL_OPT_SLP_SINGLETURN`: only the 32-bit
+//! single-turn values; LL > UL is a window wrapping through 0; SAFE shows neither BelowMin
+//! nor AboveMax. SafePosValid FALSE → START. Multi-turn LL > UL with a limit from an input
+//! is the manual's ERROR (diag bit 0 + 0x40D0 or bit 1 + 0x40D1, remains while LL > UL);
+//! from the parameters alone it is `SL_E_CONFIG` at latch time with the Text ID shown
+//! (ABI-2 §12.8). Readings: docs/semantics.md PL1–PL6.
+
+#![allow(non_camel_case_types)] // the ABI's names
+
+use crate::base::block::BlockInfo;
+use crate::base::block::Private;
+use crate::base::bools;
+use crate::base::envelope::Block;
+use crate::base::header::{param_crc, F_CFG_INVALID, SL_PRIVATE_HEADER};
+use crate::base::types::*;
+use crate::blocks::analog::{diag_message, magic};
+
+/// Type tag of FB_SLP (ABI-2 §10.6: sequential in the order of §10.3).
+pub const SL_TYPE_SLP: u16 = 72;
+
+/// Option: single-turn mode (only the 32-bit single-turn values); clear = multi-turn.
+pub const SL_OPT_SLP_SINGLETURN: u32 = 1 << 8;
+
+/// Diag bit 0: MultiturnPos_LL > MultiturnPos_UL.
+pub const SL_DIAG_SLP_MULTITURN_LL_ABOVE_UL: u16 = 1 << 0;
+/// Diag bit 1: MultiturnPos_LL = MultiturnPos_UL and SingleturnPos_LL > SingleturnPos_UL.
+pub const SL_DIAG_SLP_SINGLETURN_LL_ABOVE_UL: u16 = 1 << 1;
+/// Diag message of bit 0 (parameters: MultiturnPos_LL, MultiturnPos_UL).
+pub const SL_TEXT_SLP_MULTITURN_LL_ABOVE_UL: u16 = 0x40D0;
+/// Diag message of bit 1 (parameters: SingleturnPos_LL, SingleturnPos_UL).
+pub const SL_TEXT_SLP_SINGLETURN_LL_ABOVE_UL: u16 = 0x40D1;
+
+/// `wInputActive` bit of SafePosValid (required).
+pub const SL_SLP_ACTIVE_SAFEPOSVALID: u16 = 1 << 0;
+/// `wInputActive` bit of SingleturnPos (required).
+pub const SL_SLP_ACTIVE_SINGLETURNPOS: u16 = 1 << 8;
+/// `wInputActive` bit of MultiturnPos (required unless `SL_OPT_SLP_SINGLETURN`).
+pub const SL_SLP_ACTIVE_MULTITURNPOS: u16 = 1 << 9;
+/// `wInputActive` bit of SingleturnPosUL: UL_Active (set = the upper limit comes from the
+/// inputs, clear = from `nSingleturnPosULFix` / `nMultiturnPosULFix`).
+pub const SL_SLP_ACTIVE_SINGLETURNPOSUL: u16 = 1 << 10;
+/// `wInputActive` bit of MultiturnPosUL (must equal bit 10).
+pub const SL_SLP_ACTIVE_MULTITURNPOSUL: u16 = 1 << 11;
+/// `wInputActive` bit of SingleturnPosLL: LL_Active (set = the lower limit comes from the
+/// inputs, clear = from the `…LLFix` parameters).
+pub const SL_SLP_ACTIVE_SINGLETURNPOSLL: u16 = 1 << 12;
+/// `wInputActive` bit of MultiturnPosLL (must equal bit 12).
+pub const SL_SLP_ACTIVE_MULTITURNPOSLL: u16 = 1 << 13;
+
+/// Private state of FB SLP (64 bytes). Never written by the user.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+#[allow(non_snake_case)]
+pub struct SL_SLP_PRIVATE {
+    /// Common head (`wAux` bit 0: below, bit 1: above the limits in SAFE).
+    pub stHeader: SL_PRIVATE_HEADER,
+    /// Latched `wInputActive`.
+    pub wActive: u16,
+    /// Reserved.
+    pub aReserved0: [u8; 2],
+    /// Latched `dwOptions`.
+    pub dwOptions: u32,
+    /// Latched `…Fix` limits as 32-bit patterns (single-turn UL, multi-turn UL,
+    /// single-turn LL, multi-turn LL: the struct's order).
+    pub adwFix: [u32; 4],
+    /// Diag message parameters 2 and 3 latched at the ERROR entry.
+    pub adwPar: [u32; 2],
+    /// Reserved.
+    pub aReserved1: [u8; 4],
+}
+
+/// FB SLP instance (ABI-2 §11.14). Size: 160 bytes.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+#[allow(non_snake_case)]
+pub struct FB_SLP {
+    /// Offset 0. SafePosValid: TRUE = the position is valid (bit 0, required; an invalid
+    /// byte reads FALSE).
+    pub bSafePosValid: SL_BOOL,
+    /// Offset 1. Reserved, keep 0.
+    pub aReserved0: [u8; 15],
+    /// Offset 16. FbRun of the owning group: TRUE = the block executes.
+    pub bRun: SL_BOOL,
+    /// Offset 17. ErrAck of the owning group.
+    pub bErrAck: SL_BOOL,
+    /// Offset 18. Reserved, keep 0.
+    pub aReserved1: [u8; 6],
+    /// Offset 24. SingleturnPos: the current single-turn position (active bit 8, required).
+    pub nSingleturnPos: u32,
+    /// Offset 28. MultiturnPos: the current multi-turn position (active bit 9).
+    pub nMultiturnPos: i32,
+    /// Offset 32. SingleturnPosUL: upper limit, single-turn part (active bit 10 = UL_Active).
+    pub nSingleturnPosUL: u32,
+    /// Offset 36. MultiturnPosUL: upper limit, multi-turn part (active bit 11 = bit 10).
+    pub nMultiturnPosUL: i32,
+    /// Offset 40. SingleturnPosLL: lower limit, single-turn part (active bit 12 = LL_Active).
+    pub nSingleturnPosLL: u32,
+    /// Offset 44. MultiturnPosLL: lower limit, multi-turn part (active bit 13 = bit 12).
+    pub nMultiturnPosLL: i32,
+    /// Offset 48. Parameter "SingleTurn Pos UL" (upper limit while bit 10 is clear).
+    pub nSingleturnPosULFix: u32,
+    /// Offset 52. Parameter "MultiTurn Pos UL".
+    pub nMultiturnPosULFix: i32,
+    /// Offset 56. Parameter "SingleTurn Pos LL" (lower limit while bit 12 is clear).
+    pub nSingleturnPosLLFix: u32,
+    /// Offset 60. Parameter "MultiTurn Pos LL".
+    pub nMultiturnPosLLFix: i32,
+    /// Offset 64. `SL_OPT_SLP_SINGLETURN`; clear = multi-turn.
+    pub dwOptions: u32,
+    /// Offset 68. Bits 0, 8 required; 9 required in multi-turn; 10 = 11, 12 = 13 choose
+    /// input or parameter.
+    pub wInputActive: u16,
+    /// Offset 70. Reserved, keep 0.
+    pub aReserved2: [u8; 2],
+    /// Offset 72 (output base + 0). Error: TRUE in ERROR only.
+    pub bError: SL_BOOL,
+    /// Offset 73. PositionInLimit: TRUE in RUN.
+    pub bPositionInLimit: SL_BOOL,
+    /// Offset 74. BelowMin: in SAFE (multi-turn), the position is below the lower limit.
+    pub bBelowMin: SL_BOOL,
+    /// Offset 75. AboveMax: in SAFE (multi-turn), the position is above the upper limit.
+    pub bAboveMax: SL_BOOL,
+    /// Offset 76. Reserved.
+    pub aReserved3: [u8; 4],
+    /// Offset 80. The manual's status value (RUN, STOP, SAFE, ERROR, RESET, START).
+    pub nState: u8,
+    /// Offset 81. Reserved.
+    pub aReserved4: [u8; 1],
+    /// Offset 82. Diag bits 0/1 (limit errors) + library bits 13-15.
+    pub nDiag: u16,
+    /// Offset 84. Text ID of the diag message (0x40D0, 0x40D1), 0 = none; also shown in
+    /// STOP while the `…Fix` limits cross (`SL_E_CONFIG`).
+    pub nDiagTextId: u16,
+    /// Offset 86. Reserved.
+    pub aReserved5: [u8; 2],
+    /// Offset 88. Message parameter 2 (the lower limit part as a 32-bit pattern).
+    pub dwDiagPar2: u32,
+    /// Offset 92. Message parameter 3 (the upper limit part).
+    pub dwDiagPar3: u32,
+    /// Offset 96. Private state, 64 bytes: never write it.
+    pub stPrivate: SL_SLP_PRIVATE,
+}
+
+const _: () = {
+    use core::mem::{offset_of, size_of};
+    assert!(offset_of!(FB_SLP, bRun) == 16 && offset_of!(FB_SLP, nSingleturnPos) == 24);
+    assert!(offset_of!(FB_SLP, nMultiturnPosLL) == 44 && offset_of!(FB_SLP, dwOptions) == 64);
+    assert!(offset_of!(FB_SLP, wInputActive) == 68 && offset_of!(FB_SLP, bError) == 72);
+    assert!(offset_of!(FB_SLP, bAboveMax) == 75 && offset_of!(FB_SLP, nState) == 80);
+    assert!(offset_of!(FB_SLP, nDiagTextId) == 84 && offset_of!(FB_SLP, dwDiagPar3) == 92);
+    assert!(offset_of!(FB_SLP, stPrivate) == 96);
+    assert!(size_of::<SL_SLP_PRIVATE>() == 64 && size_of::<FB_SLP>() == 160);
+};
+
+crate::base::block::block_states!(
+    /// The states of FB SLP (manual §4.29.2.3).
+    SlpState: Run, Stop, Safe, Error, Reset, Start
+);
+
+/// (diag bit, Text ID) of the two limit errors.
+const MESSAGES: [(u16, u16); 2] = [
+    (
+        SL_DIAG_SLP_MULTITURN_LL_ABOVE_UL,
+        SL_TEXT_SLP_MULTITURN_LL_ABOVE_UL,
+    ),
+    (
+        SL_DIAG_SLP_SINGLETURN_LL_ABOVE_UL,
+        SL_TEXT_SLP_SINGLETURN_LL_ABOVE_UL,
+    ),
+];
+
+/// Type tag, name, states and diag texts (manual §4.29.2.3).
+const INFO: BlockInfo = BlockInfo {
+    tag: SL_TYPE_SLP,
+    name: "SLP",
+    states: <SlpState as crate::base::block::BlockState>::TABLE,
+    diag: &[
+        (
+            SL_DIAG_SLP_MULTITURN_LL_ABOVE_UL,
+            "MultiturnPos_LL>MultiturnPos_UL",
+        ),
+        (
+            SL_DIAG_SLP_SINGLETURN_LL_ABOVE_UL,
+            "MultiturnPos_LL=MultiturnPos_UL AND SingleturnPosLL>SingleturnPos_UL",
+        ),
+    ],
+    diag_values: &[],
+};
+
+crate::impl_member!([] FB_SLP {
+    info: INFO,
+    state: SlpState,
+    private: SL_SLP_PRIVATE,
+    input: [bSafePosValid, nSingleturnPos, nMultiturnPos, nSingleturnPosUL, nMultiturnPosUL,
+        nSingleturnPosLL, nMultiturnPosLL],
+    param: [nSingleturnPosULFix, nMultiturnPosULFix, nSingleturnPosLLFix, nMultiturnPosLLFix,
+        dwOptions, wInputActive],
+    output: [bError, bPositionInLimit, bBelowMin, bAboveMax],
+    info_fields: [nDiagTextId, dwDiagPar2, dwDiagPar3],
+});
+
+/// Parameters as the user wrote them.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct SlpParams {
+    active: u16,
+    options: u32,
+    fix: [u32; 4],
+}
+
+/// A position or limit: its multi-turn and single-turn parts.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Turns {
+    multi: i32,
+    single: u32,
+}
+
+impl Turns {
+    /// "The complete 64 bits": MultiturnPos · 2³² + SingleturnPos.
+    fn full(self) -> i64 {
+        (i64::from(self.multi) << 32) | i64::from(self.single)
+    }
+}
+
+/// One cycle's inputs: validity, position and the effective limits.
+#[derive(Clone, Copy, Debug)]
+pub struct SlpIn {
+    valid: bool,
+    pos: Turns,
+    lower: Turns,
+    upper: Turns,
+}
+
+/// `wAux` in SAFE: below the lower / above the upper limit.
+const BELOW: u16 = 1;
+const ABOVE: u16 = 2;
+
+/// Index of the limits in `adwFix`.
+const UL: usize = 0;
+const LL: usize = 2;
+
+/// The multi-turn limit error of `lower` > `upper`: (diag bit, Par2, Par3), or `None`.
+fn limit_error(lower: Turns, upper: Turns) -> Option<(u16, [u32; 2])> {
+    if lower.multi > upper.multi {
+        Some((
+            SL_DIAG_SLP_MULTITURN_LL_ABOVE_UL,
+            [lower.multi as u32, upper.multi as u32],
+        ))
+    } else if lower.multi == upper.multi && lower.single > upper.single {
+        Some((
+            SL_DIAG_SLP_SINGLETURN_LL_ABOVE_UL,
+            [lower.single, upper.single],
+        ))
+    } else {
+        None
+    }
+}
+
+/// The limit stored at `at` in `fix`.
+fn fixed(fix: &[u32; 4], at: usize) -> Turns {
+    Turns {
+        single: fix[at],
+        multi: fix[at + 1] as i32,
+    }
+}
+
+fn single_turn(options: u32) -> bool {
+    options & SL_OPT_SLP_SINGLETURN != 0
+}
+
+/// The parameter-only limit error: multi-turn with both limits from the `…Fix` parameters
+/// and LL > UL (ABI-2 §12.8).
+fn config_error(p: &SlpParams) -> Option<(u16, [u32; 2])> {
+    let from_inputs = SL_SLP_ACTIVE_SINGLETURNPOSUL | SL_SLP_ACTIVE_SINGLETURNPOSLL;
+    if single_turn(p.options) || p.active & from_inputs != 0 {
+        return None;
+    }
+    limit_error(fixed(&p.fix, LL), fixed(&p.fix, UL))
+}
+
+impl Block for FB_SLP {
+    const MAGIC: u16 = magic(SL_TYPE_SLP);
+    type Params = SlpParams;
+    type In = SlpIn;
+
+    #[inline(always)]
+    fn live_params(&self) -> SlpParams {
+        SlpParams {
+            active: self.wInputActive,
+            options: self.dwOptions,
+            fix: [
+                self.nSingleturnPosULFix,
+                self.nMultiturnPosULFix as u32,
+                self.nSingleturnPosLLFix,
+                self.nMultiturnPosLLFix as u32,
+            ],
+        }
+    }
+    #[inline(always)]
+    fn latched_params(&self) -> SlpParams {
+        let p = self.private();
+        SlpParams {
+            active: p.wActive,
+            options: p.dwOptions,
+            fix: p.adwFix,
+        }
+    }
+    /// SafePosValid and SingleturnPos active, MultiturnPos active in multi-turn, the two
+    /// bits of each limit equal, no other bit or option (ABI-2 §10.5, §11.14); the
+    /// parameter-only limit error (semantics PL3).
+    fn params_valid(p: &SlpParams) -> bool {
+        let a = p.active;
+        let known = SL_SLP_ACTIVE_SAFEPOSVALID | 0x3F00;
+        let required = SL_SLP_ACTIVE_SAFEPOSVALID
+            | SL_SLP_ACTIVE_SINGLETURNPOS
+            | if single_turn(p.options) {
+                0
+            } else {
+                SL_SLP_ACTIVE_MULTITURNPOS
+            };
+        let pair = |st: u16, mt: u16| (a & st == 0) == (a & mt == 0);
+        a & !known == 0
+            && a & required == required
+            && pair(SL_SLP_ACTIVE_SINGLETURNPOSUL, SL_SLP_ACTIVE_MULTITURNPOSUL)
+            && pair(SL_SLP_ACTIVE_SINGLETURNPOSLL, SL_SLP_ACTIVE_MULTITURNPOSLL)
+            && p.options & !SL_OPT_SLP_SINGLETURN == 0
+            && config_error(p).is_none()
+    }
+    fn store_params(&mut self, p: &SlpParams) {
+        let q = self.private_mut();
+        q.wActive = p.active;
+        q.dwOptions = p.options;
+        q.adwFix = p.fix;
+    }
+    fn latched_crc(&self) -> u16 {
+        let p = self.private();
+        let w = |d: u32| [d as u16, (d >> 16) as u16];
+        let [a, b, c, d] = p.adwFix.map(w);
+        let o = w(p.dwOptions);
+        param_crc(
+            Self::MAGIC,
+            0,
+            0,
+            0,
+            &[
+                p.wActive, o[0], o[1], a[0], a[1], b[0], b[1], c[0], c[1], d[0], d[1],
+            ],
+        )
+    }
+    /// An invalid SafePosValid byte reads FALSE (START).
+    #[inline(always)]
+    fn decode(&mut self) -> (SlpIn, bool) {
+        let p = self.private();
+        let raw = bools::pack([self.bSafePosValid]);
+        let pick = |bit: u16, multi: i32, single: u32, at: usize| {
+            if p.wActive & bit != 0 {
+                Turns { multi, single }
+            } else {
+                fixed(&p.adwFix, at)
+            }
+        };
+        (
+            SlpIn {
+                valid: raw.ones & 1 != 0,
+                pos: Turns {
+                    multi: self.nMultiturnPos,
+                    single: self.nSingleturnPos,
+                },
+                lower: pick(
+                    SL_SLP_ACTIVE_SINGLETURNPOSLL,
+                    self.nMultiturnPosLL,
+                    self.nSingleturnPosLL,
+                    LL,
+                ),
+                upper: pick(
+                    SL_SLP_ACTIVE_SINGLETURNPOSUL,
+                    self.nMultiturnPosUL,
+                    self.nSingleturnPosUL,
+                    UL,
+                ),
+            },
+            raw.invalid != 0,
+        )
+    }
+    fn start(&mut self, inp: &SlpIn, now: u32) {
+        self.step(inp, now);
+    }
+    /// The limit error first (it concerns the limits, whatever the position's validity),
+    /// then START, RUN or SAFE (semantics PL1, PL2, PL4).
+    #[inline(always)]
+    fn step(&mut self, inp: &SlpIn, _now: u32) -> Status {
+        let single = single_turn(self.private().dwOptions);
+        if let Some((bit, par)) = self.live_limit_error(inp) {
+            let p = self.private_mut();
+            p.adwPar = par;
+            p.stHeader.enter_error(bit);
+            return Status::Ok;
+        }
+        let (state, aux) = match (inp.valid, single) {
+            (false, _) => (SL_STATE_START, 0),
+            (true, true) => {
+                let (s, lo, hi) = (inp.pos.single, inp.lower.single, inp.upper.single);
+                let in_limit = if lo <= hi {
+                    lo <= s && s <= hi
+                } else {
+                    s >= lo || s <= hi
+                };
+                (
+                    if in_limit {
+                        SL_STATE_RUN
+                    } else {
+                        SL_STATE_SAFE
+                    },
+                    0,
+                )
+            }
+            (true, false) => {
+                let (v, lo, hi) = (inp.pos.full(), inp.lower.full(), inp.upper.full());
+                if v < lo {
+                    (SL_STATE_SAFE, BELOW)
+                } else if v > hi {
+                    (SL_STATE_SAFE, ABOVE)
+                } else {
+                    (SL_STATE_RUN, 0)
+                }
+            }
+        };
+        // PositionInLimit switching on is where the latched parameters are verified (C3).
+        if state == SL_STATE_RUN
+            && self.private().stHeader.nState != SL_STATE_RUN
+            && !self.params_intact()
+        {
+            self.private_mut().stHeader.enter_error(SL_DIAG_CORRUPT);
+            return Status::Corrupt;
+        }
+        let h = &mut self.private_mut().stHeader;
+        h.nState = state;
+        h.wAux = aux;
+        Status::Ok
+    }
+    /// The limits still cross (ABI-2 §12.5).
+    fn error_remains(&mut self, inp: &SlpIn) -> bool {
+        self.live_limit_error(inp).is_some()
+    }
+    #[inline(always)]
+    fn write_outputs(&mut self) {
+        let p = *self.private();
+        let h = p.stHeader;
+        let (error, run, safe) = match h.nState {
+            SL_STATE_ERROR => (true, false, false),
+            SL_STATE_RUN => (false, true, false),
+            SL_STATE_SAFE => (false, false, true),
+            _ => (false, false, false),
+        };
+        self.bError = u8::from(error);
+        self.bPositionInLimit = u8::from(run);
+        self.bBelowMin = u8::from(safe && h.wAux == BELOW);
+        self.bAboveMax = u8::from(safe && h.wAux == ABOVE);
+        self.nState = h.nState;
+        self.nDiag = h.wDiag;
+        // A refused configuration names its limit error (semantics PL3).
+        let refused = h.nState == SL_STATE_STOP && h.flag(F_CFG_INVALID);
+        let config = if refused {
+            config_error(&self.latched_params())
+        } else {
+            None
+        };
+        (self.nDiagTextId, self.dwDiagPar2, self.dwDiagPar3) = match config {
+            Some((bit, [lo, hi])) => {
+                let text = MESSAGES.iter().find(|(b, _)| *b == bit).map_or(0, |m| m.1);
+                (text, lo, hi)
+            }
+            None => diag_message(&h, &MESSAGES, p.adwPar),
+        };
+    }
+}
+
+impl FB_SLP {
+    /// The limit error of this cycle's limits: multi-turn only (ERROR "When in multi-turn
+    /// mode"), with at least one limit from the inputs (LL_Active or UL_Active).
+    fn live_limit_error(&self, inp: &SlpIn) -> Option<(u16, [u32; 2])> {
+        let p = self.private();
+        let from_inputs = SL_SLP_ACTIVE_SINGLETURNPOSUL | SL_SLP_ACTIVE_SINGLETURNPOSLL;
+        if single_turn(p.dwOptions) || p.wActive & from_inputs == 0 {
+            return None;
+        }
+        limit_error(inp.lower, inp.upper)
+    }
+}

@@ -1,0 +1,150 @@
+//! The two-channel machine of SF_Equivalent and SF_Antivalent (PLCopen TC5 Part 1;
+//! research `plcopen_safety.md` §4.11, §4.12, §5): two channels → one output, the time the
+//! channels may differ monitored from the entry into each waiting state (DiscrepancyTime,
+//! a constant); no Reset, no restart interlock: an error is left by switching both
+//! channels to their inactive state. SF_Antivalent is the same machine on (NC, NOT NO)
+//! (§4.12's table is §4.11's with A = NC, B = NOT NO; semantics PP2).
+
+use crate::base::time;
+
+crate::sf_states!(
+    /// The states of the two-channel blocks: values = v2.01 DiagCodes (CS-LIB FBS_EQUI /
+    /// FBS_ANTI), with the v1.0 codes (research §4.11).
+    PairState, init: Init {
+        Idle = 0x0000, 0x0000, "IDLE", "FB not activated";
+        Init = 0x8801, 0x8001, "INIT", "activated; both channels inactive, waiting for switching";
+        Enabled = 0x8000, 0x8000, "OUT_ENABLED", "both channels active, output TRUE";
+        WaitB = 0x8802, 0x8004, "WAIT_FOR_CH_B", "channel A (NC) active, waiting for channel B (NO); discrepancy timer running";
+        WaitA = 0x8804, 0x8014, "WAIT_FOR_CH_A", "channel B (NO) active, waiting for channel A (NC); discrepancy timer running";
+        FromActiveWait = 0x8806, 0x8005, "FROM_ACTIVE_WAIT", "one channel inactive after the output was enabled, waiting for the other; discrepancy timer running";
+        Error1 = 0xC010, 0xC001, "ERROR_1", "discrepancy time elapsed waiting for channel B (NO)";
+        Error2 = 0xC020, 0xC002, "ERROR_2", "discrepancy time elapsed waiting for channel A (NC)";
+        Error3 = 0xC030, 0xC003, "ERROR_3", "discrepancy time elapsed waiting for the second channel to become inactive";
+    }
+);
+
+/// One call's channels, in the active sense (Equivalent: A, B; Antivalent: NC, NOT NO).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct PairIn {
+    /// Channel A active.
+    pub a: bool,
+    /// Channel B active.
+    pub b: bool,
+}
+
+/// The transition table of research §4.11 (v2.01 codes), first matching guard wins; the
+/// discrepancy time runs from the entry into the waiting state (`in_state`, ms) and has
+/// elapsed at `in_state >= t` (T#0: at the first evaluation, research §8.13).
+pub fn next(s: PairState, i: &PairIn, in_state: u32, t: u32) -> PairState {
+    use PairState::*;
+    let elapsed = time::reached(in_state, 0, t);
+    let none = !i.a && !i.b;
+    match s {
+        Init if i.a && !i.b => WaitB,
+        Init if i.b && !i.a => WaitA,
+        Init if i.a && i.b => Enabled,
+        WaitB if elapsed => Error1,
+        WaitB if !i.a => Init,
+        WaitB if i.b => Enabled,
+        WaitA if elapsed => Error2,
+        WaitA if !i.b => Init,
+        WaitA if i.a => Enabled,
+        Enabled if i.a != i.b => FromActiveWait,
+        Enabled if none => Init,
+        FromActiveWait if elapsed => Error3,
+        FromActiveWait if none => Init,
+        Error1 | Error2 | Error3 if none => Init,
+        Idle | Init | WaitB | WaitA | Enabled | FromActiveWait | Error1 | Error2 | Error3 => s,
+    }
+}
+
+/// Declares a two-channel block's envelope plumbing from its struct: tag, name, the two
+/// channel fields, whether channel B is read inverted (Antivalent's NO), the output.
+#[macro_export]
+#[doc(hidden)]
+macro_rules! pair_block {
+    ($ty:ident, $tag:expr, $a:ident, $b:ident, b_negated: $neg:expr, $output:ident) => {
+        $crate::impl_sf_member!($ty {
+            tag: $tag,
+            input: [Activate, $a, $b],
+            param: [nDiagProfile, DiscrepancyTime],
+            output: [Ready, $output, SafetyDemand, Error],
+        });
+
+        impl $crate::base::sf::SfBlock for $ty {
+            const MAGIC: u16 = $crate::blocks::plcopen::restart::magic($tag);
+            type Diag = $crate::blocks::plcopen::pair::PairState;
+            type In = $crate::blocks::plcopen::pair::PairIn;
+            const TIMES: usize = 1;
+
+            #[inline(always)]
+            fn reset_raw(&self) -> u8 {
+                0
+            }
+            fn live_consts(&self) -> $crate::base::sf::SfConsts {
+                $crate::base::sf::SfConsts {
+                    profile: self.nDiagProfile,
+                    times: [self.DiscrepancyTime, 0],
+                }
+            }
+            /// An invalid byte reads as the channel's inactive value (NC FALSE, NO TRUE).
+            #[inline(always)]
+            fn decode(&self) -> (Self::In, bool) {
+                let p = $crate::base::bools::pack([self.$a, self.$b]);
+                let neg = if $neg { 0b10 } else { 0 };
+                let v = $crate::base::bools::logical(p, 0b11, neg);
+                (
+                    $crate::blocks::plcopen::pair::PairIn {
+                        a: v & 1 != 0,
+                        b: v & 2 != 0,
+                    },
+                    p.invalid != 0,
+                )
+            }
+            #[inline(always)]
+            fn next(
+                s: Self::Diag,
+                inp: &Self::In,
+                _reset: $crate::base::sf::ResetIn,
+                in_state: u32,
+                times: [u32; 2],
+            ) -> Self::Diag {
+                $crate::blocks::plcopen::pair::next(s, inp, in_state, times[0])
+            }
+            #[inline(always)]
+            fn write_outputs(&mut self, o: &$crate::base::sf::SfOut) {
+                self.Ready = u8::from(o.ready);
+                self.$output = u8::from(o.enabled);
+                self.SafetyDemand = u8::from(o.safety_demand);
+                self.Error = u8::from(o.error);
+                self.DiagCode = o.diag_code;
+            }
+        }
+
+        impl $ty {
+            /// An all-zero instance (valid: it initialises itself on the first call).
+            pub const fn zeroed() -> Self {
+                Self {
+                    Activate: 0,
+                    $a: 0,
+                    $b: 0,
+                    nDiagProfile: 0,
+                    DiscrepancyTime: 0,
+                    Ready: 0,
+                    $output: 0,
+                    SafetyDemand: 0,
+                    Error: 0,
+                    aReserved1: [0; 2],
+                    DiagCode: 0,
+                    stPrivate: $crate::base::sf::SL_SF_PRIVATE::ZERO,
+                }
+            }
+        }
+
+        impl Default for $ty {
+            fn default() -> Self {
+                Self::zeroed()
+            }
+        }
+    };
+}

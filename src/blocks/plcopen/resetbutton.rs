@@ -1,0 +1,174 @@
+//! SF_ResetButton — PLCopen TC5 Part 1 v2.x (research `plcopen_safety.md` §4.19, §5): the
+//! trailing-edge reset of ISO 13849-1:2015 §5.2.2. A press of `ResetIn` lasting at least
+//! TrailingMinimum and less than TrailingMaximum gives a one-call pulse at `ResetOut` after
+//! its falling edge, for any rising-edge `Reset` input. PLCopen v2.x only: the v1.0 profile
+//! is refused (SL_E_CONFIG). `ResetRequested` activates the block (it has no `Activate`);
+//! the envelope's R_TRIG of `Reset` runs on `ResetIn` (docs/semantics.md QB1–QB6).
+
+use crate::base::sf::{ResetIn, SL_SF_PRIVATE};
+use crate::base::time;
+use crate::base::types::SL_BOOL;
+
+/// Block type tag of SF_ResetButton (`SL_MEMBER.nType`, `sl_diag_text`).
+pub const SL_TYPE_SF_RESETBUTTON: u16 = 520;
+
+/// The least TrailingMinimum (ms): "absolute minimum 100 ms" (research §4.19, NPE).
+pub const SF_RESETBUTTON_MIN_TRAILING: u32 = 100;
+
+crate::sf_states!(
+    /// The states of SF_ResetButton: values = v2.01 DiagCodes (CS-LIB FBS_RESBUT). The block
+    /// has no v1.0 codes (v2.x only); the v1.0 column repeats the v2.01 code and is never
+    /// shown (the v1.0 profile is refused).
+    ResetButtonState, init: WaitRTrig {
+        Idle = 0x0000, 0x0000, "IDLE", "FB not activated (ResetRequested FALSE)";
+        WaitRTrig = 0x83E2, 0x83E2, "WAIT_R_TRIG", "enabled; waiting for a rising edge of ResetIn";
+        WaitFTrig = 0x83F2, 0x83F2, "WAIT_F_TRIG", "ResetIn TRUE; waiting for its falling edge";
+        ResetDetected = 0x8000, 0x8000, "RESET_DETECTED", "valid reset: ResetOut TRUE for one call";
+        ErrParam = 0xC000, 0xC000, "ERR_PARAM", "TrailingMinimum > TrailingMaximum or TrailingMinimum < 100 ms";
+        ErrReset = 0xC001, 0xC001, "ERR_RESET", "static ResetIn: TRUE without a rising edge; waiting for ResetIn FALSE";
+        ErrTrailMax = 0xC3E0, 0xC3E0, "ERR_TRAIL_MAX", "TrailingMaximum elapsed before the falling edge of ResetIn; waiting for a rising edge";
+        ErrTrailMin = 0xC3F0, 0xC3F0, "ERR_TRAIL_MIN", "falling edge of ResetIn before TrailingMinimum elapsed; waiting for a rising edge";
+    }
+);
+
+/// The trailing times `[TrailingMinimum, TrailingMaximum]` are usable (C000 otherwise).
+const fn params_valid(t: [u32; 2]) -> bool {
+    t[0] >= SF_RESETBUTTON_MIN_TRAILING && t[0] <= t[1]
+}
+
+/// The transition table of research §4.19 (v2.01 codes), first matching guard wins.
+/// `r` is the R_TRIG of ResetIn; the press runs from the entry into 83F2 (`in_state`, ms);
+/// `t` = [TrailingMinimum, TrailingMaximum]. IDLE → 83E2 / C000 is the envelope's
+/// (`SfBlock::first`).
+fn next(s: ResetButtonState, r: ResetIn, in_state: u32, t: [u32; 2]) -> ResetButtonState {
+    use ResetButtonState::*;
+    match s {
+        WaitRTrig if r.held() => ErrReset,
+        WaitRTrig if r.rising => WaitFTrig,
+        WaitFTrig if time::reached(in_state, 0, t[1]) => ErrTrailMax,
+        WaitFTrig if !r.level && !time::reached(in_state, 0, t[0]) => ErrTrailMin,
+        WaitFTrig if !r.level => ResetDetected,
+        ResetDetected if r.rising => WaitFTrig,
+        ResetDetected => WaitRTrig,
+        ErrReset if !r.level => WaitRTrig,
+        ErrTrailMax | ErrTrailMin if r.rising => WaitFTrig,
+        Idle | WaitRTrig | WaitFTrig | ErrParam | ErrReset | ErrTrailMax | ErrTrailMin => s,
+    }
+}
+
+/// SF_ResetButton instance: the PLCopen VAR_INPUT / VAR_OUTPUT names, BOOL = one byte.
+/// Size: 64 bytes.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[allow(non_snake_case, non_camel_case_types)]
+pub struct SF_ResetButton {
+    /// Offset 0. ResetRequested: the activation of this block (it has no Activate); connect the paired FB's ResetRequest. FALSE = idle (DiagCode 0000, ResetOut FALSE), highest priority. PLCopen initial value TRUE.
+    pub ResetRequested: SL_BOOL,
+    /// Offset 1. ResetIn: the reset button, TRUE = pressed.
+    pub ResetIn: SL_BOOL,
+    /// Offset 2. Reserved, keep 0.
+    pub aReserved0: [u8; 1],
+    /// Offset 3. Library extension, constant: DiagCode profile, only 0 = v2.01 (1 is refused: v2.x block); latched at activation.
+    pub nDiagProfile: u8,
+    /// Offset 4. TrailingMinimum (constant, ms; PLCopen default T#350ms): shortest valid press, at least 100 ms; latched at activation.
+    pub TrailingMinimum: u32,
+    /// Offset 8. TrailingMaximum (constant, ms; PLCopen default T#2s): a press this long is invalid; latched at activation.
+    pub TrailingMaximum: u32,
+    /// Offset 12 (output base). Ready: TRUE while activated (DiagCode != 0000).
+    pub Ready: SL_BOOL,
+    /// Offset 13. ResetOut: TRUE for one call after the falling edge of a valid press (DiagCode 8000).
+    pub ResetOut: SL_BOOL,
+    /// Offset 14. Error: DiagCode >= C000.
+    pub Error: SL_BOOL,
+    /// Offset 15. Reserved.
+    pub aReserved1: [u8; 1],
+    /// Offset 16. DiagCode: the state or error (v2.01).
+    pub DiagCode: u16,
+    /// Offset 18. Reserved.
+    pub aReserved2: [u8; 6],
+    /// Offset 24. Private state, 40 bytes: never write it.
+    pub stPrivate: SL_SF_PRIVATE,
+}
+
+crate::impl_sf_member!(SF_ResetButton {
+    tag: SL_TYPE_SF_RESETBUTTON,
+    input: [ResetRequested, ResetIn],
+    param: [nDiagProfile, TrailingMinimum, TrailingMaximum],
+    output: [Ready, ResetOut, Error],
+    activate: ResetRequested,
+});
+
+impl crate::base::sf::SfBlock for SF_ResetButton {
+    const MAGIC: u16 = crate::blocks::plcopen::restart::magic(SL_TYPE_SF_RESETBUTTON);
+    type Diag = ResetButtonState;
+    type In = ();
+    const HAS_V10: bool = false;
+    const TIMES: usize = 2;
+
+    /// ResetIn runs through the envelope's R_TRIG, evaluated in every call.
+    #[inline(always)]
+    fn reset_raw(&self) -> u8 {
+        self.ResetIn
+    }
+    fn live_consts(&self) -> crate::base::sf::SfConsts {
+        crate::base::sf::SfConsts {
+            profile: self.nDiagProfile,
+            times: [self.TrailingMinimum, self.TrailingMaximum],
+        }
+    }
+    #[inline(always)]
+    fn decode(&self) -> (Self::In, bool) {
+        ((), false)
+    }
+    #[inline(always)]
+    fn next(
+        s: Self::Diag,
+        _inp: &(),
+        reset: ResetIn,
+        in_state: u32,
+        times: [u32; 2],
+    ) -> Self::Diag {
+        next(s, reset, in_state, times)
+    }
+    fn first(times: [u32; 2]) -> Self::Diag {
+        if params_valid(times) {
+            ResetButtonState::WaitRTrig
+        } else {
+            ResetButtonState::ErrParam
+        }
+    }
+    #[inline(always)]
+    fn write_outputs(&mut self, o: &crate::base::sf::SfOut) {
+        self.Ready = u8::from(o.ready);
+        self.ResetOut = u8::from(o.enabled);
+        self.Error = u8::from(o.error);
+        self.DiagCode = o.diag_code;
+    }
+}
+
+impl SF_ResetButton {
+    /// An all-zero instance (valid: it initialises itself on the first call).
+    pub const fn zeroed() -> Self {
+        Self {
+            ResetRequested: 0,
+            ResetIn: 0,
+            aReserved0: [0; 1],
+            nDiagProfile: 0,
+            TrailingMinimum: 0,
+            TrailingMaximum: 0,
+            Ready: 0,
+            ResetOut: 0,
+            Error: 0,
+            aReserved1: [0; 1],
+            DiagCode: 0,
+            aReserved2: [0; 6],
+            stPrivate: SL_SF_PRIVATE::ZERO,
+        }
+    }
+}
+
+impl Default for SF_ResetButton {
+    fn default() -> Self {
+        Self::zeroed()
+    }
+}

@@ -1,0 +1,162 @@
+//! The restart-interlock machine of SF_EmergencyStop, SF_ESPE and SF_PSE (PLCopen TC5
+//! Part 1; research `plcopen_safety.md` §4.1–§4.3, §5): one safety input, S_StartReset,
+//! S_AutoReset, Reset, one safety output. "The functions of SF_ESPE and SF_EmergencyStop
+//! FB are identical" (§4.2); SF_PSE has "the same code set and comments one-to-one" (§4.3)
+//! and exists in v2.x only. The blocks differ in their field names only; each block's
+//! file declares its struct and calls `restart_interlock_block!`.
+
+use crate::base::sf::{ResetIn, SL_SF_PRIVATE};
+
+crate::sf_states!(
+    /// The states of the restart-interlock blocks: values = v2.01 DiagCodes (CS-LIB
+    /// FBS_ESTOP / FBS_PSE), with the v1.0 codes (research §4.1).
+    RestartState, init: Init {
+        Idle = 0x0000, 0x0000, "IDLE", "FB not activated";
+        Init = 0x8001, 0x8001, "INIT", "activated; checks whether S_StartReset is set";
+        Enabled = 0x8000, 0x8000, "OUT_ENABLED", "safety input TRUE, safety output TRUE";
+        WaitIn1 = 0x8802, 0x8002, "WAIT_FOR_IN_1", "after activation: waiting for the safety input TRUE";
+        WaitReset1 = 0x8402, 0x8003, "WAIT_FOR_RESET_1", "after activation: safety input TRUE, waiting for a rising edge of Reset";
+        WaitIn2 = 0x8804, 0x8004, "WAIT_FOR_IN_2", "safety demand: waiting for the safety input TRUE";
+        WaitReset2 = 0x8404, 0x8005, "WAIT_FOR_RESET_2", "after a safety demand: safety input TRUE, waiting for S_AutoReset or a rising edge of Reset";
+        ErrReset1 = 0xC001, 0xC001, "ERR_RESET_1", "static Reset while waiting for the reset after activation";
+        ErrReset2 = 0xC011, 0xC002, "ERR_RESET_2", "static Reset while waiting for the reset after a safety demand";
+    }
+);
+
+/// One call's inputs.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct RestartIn {
+    /// The safety input (S_EStopIn, S_ESPE_In, S_PSE_In): FALSE = safety demand.
+    pub input: bool,
+    /// S_StartReset: automatic reset at activation.
+    pub start_reset: bool,
+    /// S_AutoReset: automatic reset after a safety demand.
+    pub auto_reset: bool,
+}
+
+/// The transition table of research §4.1 (v2.01 codes), first matching guard wins. IDLE →
+/// INIT is the envelope's (Activate).
+pub fn next(s: RestartState, i: &RestartIn, r: ResetIn) -> RestartState {
+    use RestartState::*;
+    match s {
+        Init if !i.start_reset => WaitIn1,
+        Init if !i.input => WaitIn2,
+        Init => Enabled,
+        WaitIn1 if i.input => WaitReset1,
+        WaitReset1 if r.held() => ErrReset1,
+        WaitReset1 if !i.input => WaitIn1,
+        WaitReset1 if r.rising => Enabled,
+        ErrReset1 if !r.level => WaitReset1,
+        WaitIn2 if i.input && !i.auto_reset => WaitReset2,
+        WaitIn2 if i.input => Enabled,
+        WaitReset2 if r.held() => ErrReset2,
+        WaitReset2 if !i.input => WaitIn2,
+        WaitReset2 if r.rising || i.auto_reset => Enabled,
+        ErrReset2 if !r.level => WaitReset2,
+        Enabled if !i.input => WaitIn2,
+        Idle | WaitIn1 | WaitReset1 | ErrReset1 | WaitIn2 | WaitReset2 | ErrReset2 | Enabled => s,
+    }
+}
+
+/// Declares a restart-interlock block's envelope plumbing from its struct: tag, the names
+/// of its safety input and output, whether it exists in PLCopen v1.0.
+#[macro_export]
+#[doc(hidden)]
+macro_rules! restart_interlock_block {
+    ($ty:ident, $tag:expr, $input:ident, $output:ident, has_v10: $v10:expr) => {
+        $crate::impl_sf_member!($ty {
+            tag: $tag,
+            input: [Activate, $input, S_StartReset, S_AutoReset, Reset],
+            param: [nDiagProfile],
+            output: [Ready, $output, SafetyDemand, ResetRequest, Error],
+        });
+
+        impl $crate::base::sf::SfBlock for $ty {
+            const MAGIC: u16 = $crate::blocks::plcopen::restart::magic($tag);
+            type Diag = $crate::blocks::plcopen::restart::RestartState;
+            type In = $crate::blocks::plcopen::restart::RestartIn;
+            const HAS_V10: bool = $v10;
+
+            #[inline(always)]
+            fn reset_raw(&self) -> u8 {
+                self.Reset
+            }
+            fn live_consts(&self) -> $crate::base::sf::SfConsts {
+                $crate::base::sf::SfConsts {
+                    profile: self.nDiagProfile,
+                    times: [0; 2],
+                }
+            }
+            #[inline(always)]
+            fn decode(&self) -> (Self::In, bool) {
+                let p =
+                    $crate::base::bools::pack([self.$input, self.S_StartReset, self.S_AutoReset]);
+                let v = $crate::base::bools::logical(p, 0b111, 0);
+                (
+                    $crate::blocks::plcopen::restart::RestartIn {
+                        input: v & 1 != 0,
+                        start_reset: v & 2 != 0,
+                        auto_reset: v & 4 != 0,
+                    },
+                    p.invalid != 0,
+                )
+            }
+            #[inline(always)]
+            fn next(
+                s: Self::Diag,
+                inp: &Self::In,
+                reset: $crate::base::sf::ResetIn,
+                _in_state: u32,
+                _times: [u32; 2],
+            ) -> Self::Diag {
+                $crate::blocks::plcopen::restart::next(s, inp, reset)
+            }
+            #[inline(always)]
+            fn write_outputs(&mut self, o: &$crate::base::sf::SfOut) {
+                self.Ready = u8::from(o.ready);
+                self.$output = u8::from(o.enabled);
+                self.SafetyDemand = u8::from(o.safety_demand);
+                self.ResetRequest = u8::from(o.reset_request);
+                self.Error = u8::from(o.error);
+                self.DiagCode = o.diag_code;
+            }
+        }
+
+        impl $ty {
+            /// An all-zero instance (valid: it initialises itself on the first call).
+            pub const fn zeroed() -> Self {
+                Self {
+                    Activate: 0,
+                    $input: 0,
+                    S_StartReset: 0,
+                    S_AutoReset: 0,
+                    Reset: 0,
+                    aReserved0: [0; 2],
+                    nDiagProfile: 0,
+                    Ready: 0,
+                    $output: 0,
+                    SafetyDemand: 0,
+                    ResetRequest: 0,
+                    Error: 0,
+                    aReserved1: [0; 1],
+                    DiagCode: 0,
+                    stPrivate: $crate::base::sf::SL_SF_PRIVATE::ZERO,
+                }
+            }
+        }
+
+        impl Default for $ty {
+            fn default() -> Self {
+                Self::zeroed()
+            }
+        }
+    };
+}
+
+/// The private-header magic of an `SF_` block type (distinct from every TwinSAFE magic).
+pub const fn magic(tag: u16) -> u16 {
+    0x5F00 ^ tag
+}
+
+/// The private state's size is part of every `SF_` struct's layout (ABI: 40 bytes).
+const _: () = assert!(core::mem::size_of::<SL_SF_PRIVATE>() == 40);

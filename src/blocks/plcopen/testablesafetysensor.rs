@@ -1,0 +1,303 @@
+//! SF_TestableSafetySensor — PLCopen TC5 Part 1 (research `plcopen_safety.md` §4.15, §5,
+//! §8.4): a testable single-channel sensor (type 2 ESPE) with a restart interlock and a
+//! periodic automatic test. A rising edge of StartTest switches the sensor's transmitter
+//! off (S_TestOut FALSE); its OSSD must drop within TestTime, and come back within TestTime
+//! after S_TestOut is TRUE again; S_OSSD_Out stays TRUE during the test. After a failed
+//! test a manual switching sequence of the sensor is required unless NoExternalTest. The
+//! codes the research leaves open are chosen in docs/semantics.md QT1–QT9.
+
+use crate::base::sf::{self, ResetIn, SL_SF_PRIVATE};
+use crate::base::time;
+use crate::base::types::SL_BOOL;
+
+/// Block type tag of SF_TestableSafetySensor (`SL_MEMBER.nType`, `sl_diag_text`).
+pub const SL_TYPE_SF_TESTABLESAFETYSENSOR: u16 = 522;
+
+/// The longest TestTime (ms): "range 0 … 150 ms" (research §4.15).
+pub const SF_TSS_MAX_TEST_TIME: u32 = 150;
+
+crate::sf_states!(
+    /// The states of SF_TestableSafetySensor: values = v2.01 DiagCodes (CS-LIB
+    /// FBS_TESTSEN; the errors chosen, semantics QT2), with v1.0 codes chosen where no
+    /// source has them (semantics QT3).
+    TssState, init: Init {
+        Idle = 0x0000, 0x0000, "IDLE", "FB not activated";
+        Init = 0x8401, 0x8001, "INIT", "activated; start-up inhibit: waiting for the sensor and a rising edge of Reset (or S_StartReset)";
+        Interrupted1 = 0x8802, 0x8011, "ESPE_INTERRUPTED_1", "safety demand; the sensor has not been tested automatically";
+        WaitReset1 = 0x8402, 0x8012, "WAIT_FOR_RESET_1", "sensor free again; waiting for a rising edge of Reset (not tested)";
+        FreeNoTest = 0x8010, 0x8010, "ESPE_FREE_NO_TEST", "sensor free, output TRUE; the sensor has not been tested automatically";
+        TestRequest = 0x8020, 0x8020, "TEST_REQUEST", "automatic test phase 1: transmitter off (S_TestOut FALSE), waiting for the OSSD FALSE within TestTime";
+        TestActive = 0x8030, 0x8030, "TEST_ACTIVE", "automatic test phase 2: transmitter on, waiting for the OSSD TRUE within TestTime";
+        Enabled = 0x8000, 0x8000, "ESPE_FREE_TEST_OK", "sensor free, output TRUE; the automatic test passed";
+        Interrupted2 = 0x8806, 0x8014, "ESPE_INTERRUPTED_2", "safety demand; the sensor was tested";
+        WaitReset2 = 0x8406, 0x8015, "WAIT_FOR_RESET_2", "sensor free again; waiting for a rising edge of Reset (tested)";
+        ExtTest = 0x8002, 0x8021, "EXT_FUNC_TEST", "after a failed test: external manual test required, waiting for the OSSD FALSE";
+        ExtTestInterrupted = 0x8804, 0x8022, "ESPE_INTERRUPT_EXTTEST", "external manual test: sensor interrupted, waiting for the OSSD TRUE";
+        ExtTestEnd = 0x8404, 0x8023, "END_EXTTEST", "external manual test complete; waiting for a rising edge of Reset";
+        ErrParam = 0xC000, 0xC000, "ERR_PARAM", "TestTime above 150 ms";
+        ErrReset1 = 0xC001, 0xC001, "ERR_RESET_1", "static Reset in INIT";
+        ErrTest1 = 0xC010, 0xC010, "ERR_TEST_1", "test phase 1: the OSSD did not switch FALSE within TestTime";
+        ErrTest2 = 0xC020, 0xC020, "ERR_TEST_2", "test phase 2: the OSSD did not switch TRUE within TestTime";
+        ErrReset2 = 0xC011, 0xC011, "ERR_RESET_2", "static Reset in WAIT_FOR_RESET_1";
+        ErrReset3 = 0xC021, 0xC021, "ERR_RESET_3", "static Reset in WAIT_FOR_RESET_2";
+        ErrReset4 = 0xC031, 0xC031, "ERR_RESET_4", "static Reset in END_EXTTEST";
+    }
+);
+
+/// One call's inputs.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct TssIn {
+    /// S_OSSD_In: TRUE = sensor free.
+    pub ossd: bool,
+    /// R_TRIG(StartTest).Q.
+    pub start_test: bool,
+    /// S_StartReset.
+    pub start_reset: bool,
+    /// S_AutoReset.
+    pub auto_reset: bool,
+}
+
+/// The TestTime and NoExternalTest are valid: TestTime ≤ 150 ms (C000 otherwise).
+const fn params_valid(t: [u32; 2]) -> bool {
+    t[0] <= SF_TSS_MAX_TEST_TIME
+}
+
+/// The transition table of research §4.15 with the readings of semantics QT1–QT9, first
+/// matching guard wins. `t` = [TestTime, NoExternalTest (1 = TRUE)], latched; TestTime runs
+/// from the entry into 8020 / 8030 (`in_state`, ms). IDLE → 8401 / C000 is the envelope's.
+fn next(s: TssState, i: &TssIn, r: ResetIn, in_state: u32, t: [u32; 2]) -> TssState {
+    use TssState::*;
+    let elapsed = time::reached(in_state, 0, t[0]);
+    let no_external_test = t[1] == 1;
+    match s {
+        Init if !i.ossd => Interrupted1,
+        Init if i.start_reset => FreeNoTest,
+        Init if r.held() => ErrReset1,
+        Init if r.rising => FreeNoTest,
+        ErrReset1 if !r.level => Init,
+        Interrupted1 if i.ossd && i.auto_reset => FreeNoTest,
+        Interrupted1 if i.ossd => WaitReset1,
+        WaitReset1 if r.held() => ErrReset2,
+        WaitReset1 if !i.ossd => Interrupted1,
+        WaitReset1 if r.rising => FreeNoTest,
+        ErrReset2 if !r.level => WaitReset1,
+        FreeNoTest if !i.ossd => Interrupted1,
+        Enabled if !i.ossd => Interrupted2,
+        FreeNoTest | Enabled if i.start_test => TestRequest,
+        TestRequest if elapsed => ErrTest1,
+        TestRequest if !i.ossd => TestActive,
+        TestActive if elapsed => ErrTest2,
+        TestActive if i.ossd => Enabled,
+        Interrupted2 if i.ossd && i.auto_reset => Enabled,
+        Interrupted2 if i.ossd => WaitReset2,
+        WaitReset2 if r.held() => ErrReset3,
+        WaitReset2 if !i.ossd => Interrupted2,
+        WaitReset2 if r.rising => Enabled,
+        ErrReset3 if !r.level => WaitReset2,
+        ErrTest1 | ErrTest2 if i.ossd && r.rising && no_external_test => FreeNoTest,
+        ErrTest1 | ErrTest2 if i.ossd && r.rising => ExtTest,
+        ExtTest if !i.ossd => ExtTestInterrupted,
+        ExtTestInterrupted if i.ossd => ExtTestEnd,
+        ExtTestEnd if r.held() => ErrReset4,
+        ExtTestEnd if !i.ossd => ExtTestInterrupted,
+        ExtTestEnd if r.rising => FreeNoTest,
+        ErrReset4 if !r.level => ExtTestEnd,
+        Idle | Init | ErrReset1 | Interrupted1 | WaitReset1 | ErrReset2 | FreeNoTest
+        | TestRequest | TestActive | Enabled | Interrupted2 | WaitReset2 | ErrReset3 | ExtTest
+        | ExtTestInterrupted | ExtTestEnd | ErrReset4 | ErrParam | ErrTest1 | ErrTest2 => s,
+    }
+}
+
+/// The block's own outputs of a v2.01 code (research §4.15; semantics QT5): S_OSSD_Out,
+/// S_TestOut, TestPossible, TestExecuted. `library`: a library fault (every output FALSE).
+pub const fn sensor_outputs(code: u16, library: bool) -> [bool; 4] {
+    let free = matches!(code, 0x8000 | 0x8010);
+    [
+        free || matches!(code, 0x8020 | 0x8030),
+        !library && code != 0x8020,
+        free,
+        code == 0x8000,
+    ]
+}
+
+/// SF_TestableSafetySensor instance: the PLCopen VAR_INPUT / VAR_OUTPUT names, BOOL = one
+/// byte. Size: 64 bytes.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[allow(non_snake_case, non_camel_case_types)]
+pub struct SF_TestableSafetySensor {
+    /// Offset 0. Activate: FALSE = idle (DiagCode 0000, every output FALSE except S_TestOut), highest priority.
+    pub Activate: SL_BOOL,
+    /// Offset 1. S_OSSD_In: the sensor's OSSD, FALSE = safety demand or test.
+    pub S_OSSD_In: SL_BOOL,
+    /// Offset 2. StartTest: a rising edge starts the automatic test (in 8010 or 8000).
+    pub StartTest: SL_BOOL,
+    /// Offset 3. NoExternalTest (constant): TRUE = no manual test after a failed automatic test; latched at activation.
+    pub NoExternalTest: SL_BOOL,
+    /// Offset 4. S_StartReset: TRUE = automatic reset at activation (start-up).
+    pub S_StartReset: SL_BOOL,
+    /// Offset 5. S_AutoReset: TRUE = automatic reset when the safety demand ends.
+    pub S_AutoReset: SL_BOOL,
+    /// Offset 6. Reset: a rising edge resets; held TRUE into a wait-for-reset state it is a static-reset error.
+    pub Reset: SL_BOOL,
+    /// Offset 7. Library extension, constant: DiagCode profile, 0 = v2.01 (default), 1 = v1.0; latched at activation.
+    pub nDiagProfile: u8,
+    /// Offset 8. TestTime (constant, ms; PLCopen default T#10ms, at most 150 ms): each test phase's limit; latched at activation.
+    pub TestTime: u32,
+    /// Offset 12 (output base). Ready: TRUE while activated (DiagCode != 0000).
+    pub Ready: SL_BOOL,
+    /// Offset 13. S_OSSD_Out: the safety output, TRUE at 8000, 8010 and during the test (8020, 8030).
+    pub S_OSSD_Out: SL_BOOL,
+    /// Offset 14. S_TestOut: to the sensor's test input, FALSE = transmitter off (test phase 1, 8020, and library faults).
+    pub S_TestOut: SL_BOOL,
+    /// Offset 15. TestPossible: an automatic test can be started (8010, 8000).
+    pub TestPossible: SL_BOOL,
+    /// Offset 16. TestExecuted: the automatic test passed (8000), until the next test or demand.
+    pub TestExecuted: SL_BOOL,
+    /// Offset 17. SafetyDemand: the safety function is demanded (v2.01 code bit 0x0800).
+    pub SafetyDemand: SL_BOOL,
+    /// Offset 18. ResetRequest: a reset is awaited (v2.01 code bit 0x0400) and Reset is FALSE.
+    pub ResetRequest: SL_BOOL,
+    /// Offset 19. Error: DiagCode >= C000.
+    pub Error: SL_BOOL,
+    /// Offset 20. DiagCode: the state or error, in the profile of nDiagProfile.
+    pub DiagCode: u16,
+    /// Offset 22. Reserved.
+    pub aReserved1: [u8; 2],
+    /// Offset 24. Private state, 40 bytes: never write it.
+    pub stPrivate: SL_SF_PRIVATE,
+}
+
+crate::impl_sf_member!(SF_TestableSafetySensor {
+    tag: SL_TYPE_SF_TESTABLESAFETYSENSOR,
+    input: [
+        Activate,
+        S_OSSD_In,
+        StartTest,
+        NoExternalTest,
+        S_StartReset,
+        S_AutoReset,
+        Reset
+    ],
+    param: [nDiagProfile, TestTime],
+    output: [
+        Ready,
+        S_OSSD_Out,
+        S_TestOut,
+        TestPossible,
+        TestExecuted,
+        SafetyDemand,
+        ResetRequest,
+        Error
+    ],
+});
+
+impl crate::base::sf::SfBlock for SF_TestableSafetySensor {
+    const MAGIC: u16 = crate::blocks::plcopen::restart::magic(SL_TYPE_SF_TESTABLESAFETYSENSOR);
+    type Diag = TssState;
+    type In = TssIn;
+    const TIMES: usize = 2;
+
+    #[inline(always)]
+    fn reset_raw(&self) -> u8 {
+        self.Reset
+    }
+    /// NoExternalTest is a constant too: latched as the second "time" (its raw byte, so a
+    /// change is C3FD; only 1 reads TRUE).
+    fn live_consts(&self) -> sf::SfConsts {
+        sf::SfConsts {
+            profile: self.nDiagProfile,
+            times: [self.TestTime, u32::from(self.NoExternalTest)],
+        }
+    }
+    /// An invalid byte reads FALSE (S_OSSD_In: the demand; NoExternalTest: the manual test).
+    #[inline(always)]
+    fn decode(&self) -> (Self::In, bool) {
+        let p = crate::base::bools::pack([
+            self.S_OSSD_In,
+            self.S_StartReset,
+            self.S_AutoReset,
+            self.StartTest,
+            self.NoExternalTest,
+        ]);
+        let v = crate::base::bools::logical(p, 0b11111, 0);
+        (
+            TssIn {
+                ossd: v & 1 != 0,
+                start_test: sf::trigger_rising(&self.stPrivate, self.StartTest),
+                start_reset: v & 2 != 0,
+                auto_reset: v & 4 != 0,
+            },
+            p.invalid != 0,
+        )
+    }
+    #[inline(always)]
+    fn next(
+        s: Self::Diag,
+        inp: &TssIn,
+        reset: ResetIn,
+        in_state: u32,
+        times: [u32; 2],
+    ) -> Self::Diag {
+        next(s, inp, reset, in_state, times)
+    }
+    fn first(times: [u32; 2]) -> Self::Diag {
+        if params_valid(times) {
+            TssState::Init
+        } else {
+            TssState::ErrParam
+        }
+    }
+    #[inline(always)]
+    fn write_outputs(&mut self, o: &sf::SfOut) {
+        // The v2.01 state (a library code is no state of the block).
+        let code = self.stPrivate.stHeader.wDiag;
+        let library = <TssState as sf::DiagState>::decode(code).is_none();
+        let [ossd, test_out, possible, executed] = sensor_outputs(code, library);
+        self.Ready = u8::from(o.ready);
+        self.S_OSSD_Out = u8::from(ossd);
+        self.S_TestOut = u8::from(test_out);
+        self.TestPossible = u8::from(possible);
+        self.TestExecuted = u8::from(executed);
+        self.SafetyDemand = u8::from(o.safety_demand);
+        self.ResetRequest = u8::from(o.reset_request);
+        self.Error = u8::from(o.error);
+        self.DiagCode = o.diag_code;
+        // The end of every call: the R_TRIG memory of StartTest.
+        sf::store_trigger(&mut self.stPrivate, self.StartTest);
+    }
+}
+
+impl SF_TestableSafetySensor {
+    /// An all-zero instance (valid: it initialises itself on the first call).
+    pub const fn zeroed() -> Self {
+        Self {
+            Activate: 0,
+            S_OSSD_In: 0,
+            StartTest: 0,
+            NoExternalTest: 0,
+            S_StartReset: 0,
+            S_AutoReset: 0,
+            Reset: 0,
+            nDiagProfile: 0,
+            TestTime: 0,
+            Ready: 0,
+            S_OSSD_Out: 0,
+            S_TestOut: 0,
+            TestPossible: 0,
+            TestExecuted: 0,
+            SafetyDemand: 0,
+            ResetRequest: 0,
+            Error: 0,
+            DiagCode: 0,
+            aReserved1: [0; 2],
+            stPrivate: SL_SF_PRIVATE::ZERO,
+        }
+    }
+}
+
+impl Default for SF_TestableSafetySensor {
+    fn default() -> Self {
+        Self::zeroed()
+    }
+}
