@@ -666,6 +666,42 @@ fn forged_member_count_or_capacity_stops_the_group() {
     }
 }
 
+/// A table of exactly `n` entries in an allocation of its own (nothing mapped after it that
+/// belongs to the test), as raw pointer; freed by the caller with `free_table`.
+fn own_table<T: Default + Clone>(n: usize) -> *mut T {
+    Box::into_raw(vec![T::default(); n].into_boxed_slice()).cast()
+}
+
+fn free_table<T>(p: *mut T, n: usize) {
+    // SAFETY: `p` came from `own_table(n)` and is freed once.
+    drop(unsafe { Box::from_raw(std::ptr::slice_from_raw_parts_mut(p, n)) });
+}
+
+#[test]
+fn forged_capacity_over_a_one_entry_table_is_found_before_any_other_entry_is_read() {
+    // The member table has one entry, in an allocation of its own (the link table too); the
+    // group's private state is forged to claim a capacity of 4,000, and a count of 4,000
+    // (with matching complements). Nothing past the one entry may be read (Miri: a read or a slice beyond
+    // the allocation is undefined behaviour); the group stops with SL_E_CORRUPT.
+    for forged in [(1, 4000), (4000, 4000)] {
+        let mem = Mem::new();
+        let g = mem.at::<SL_GROUP>(G);
+        let m = own_table::<SL_MEMBER>(1);
+        let l = own_table::<SL_LINK>(1);
+        // SAFETY: the group in the arena, each table in its own allocation of one entry.
+        assert_eq!(unsafe { ffi::sl_group_init(g, m, 1, l, 1) }, SL_OK);
+        let e = estop_at(&mem, 512);
+        assert_eq!(add(g, m, SL_TYPE_ESTOP, e.cast()), SL_OK);
+        to_run(g, m, l, e);
+        // twice: the sealed schedule is in place after a fully checked cycle
+        assert_eq!(gcycle(g, m, l, 25), SL_OK);
+        forge_members(g, forged.0, forged.1);
+        assert_stopped_with_corrupt(gcycle(g, m, l, 30), g, e, false);
+        free_table(m, 1);
+        free_table(l, 1);
+    }
+}
+
 #[test]
 fn forged_count_that_drops_the_estop_stops_the_group() {
     // Member 0 is an AND, member 1 the ESTOP; the count forged to 1 would drop the ESTOP.

@@ -468,7 +468,9 @@ fn picture(g: &BTreeMap<String, BTreeSet<String>>) -> String {
             }
         }
     }
-    let (w, h, bw, bh, gap) = (960.0f64, 90.0f64, 150.0f64, 40.0f64, 14.0f64);
+    let (h, bw, bh, gap) = (90.0f64, 150.0f64, 40.0f64, 14.0f64);
+    let widest = boxes.values().map(BTreeSet::len).max().unwrap_or(1) as f64;
+    let w = (130.0 + widest * bw + (widest - 1.0) * gap).max(960.0);
     let rows = LAYERS.len() as f64;
     let height = rows * h + 20.0;
     let mut pos: BTreeMap<String, (f64, f64)> = BTreeMap::new();

@@ -384,13 +384,19 @@ impl CMembers {
     /// checked cycle found intact, so its own check is not repeated.
     #[inline(always)]
     fn sealed_entry(&self, i: usize) -> Option<SL_MEMBER> {
-        self.entries().get(i).copied()
+        // SAFETY: `i < count`, and a sealed cycle's check read every entry `0..count` of
+        // this table in this call (`entries`, after entry 0's own check); read by value.
+        (i < usize::from(self.count)).then(|| unsafe { self.base.add(i).read() })
     }
 
     /// The entries `0..count` as a slice (the blocks, which run while a sealed cycle holds
-    /// it, share no byte with the table: sl_group_add_member).
+    /// it, share no byte with the table: sl_group_add_member); empty when entry 0 fails its
+    /// own check. The count and capacity come from the group's private state: entry 0's
+    /// check binds both (and the group's and the table's addresses), so a forged count or
+    /// capacity (semantics GR14) is found by reading the one entry every non-empty table
+    /// has, and no slice longer than the caller's table is ever formed.
     fn entries(&self) -> &[SL_MEMBER] {
-        if self.count == 0 {
+        if self.count == 0 || self.entry(0).is_none() {
             return &[];
         }
         // SAFETY: `base` is non-null and aligned (checked by `storage`) and points to at
@@ -637,7 +643,12 @@ impl group::Links for CLinks {
         (i < self.count).then(|| unsafe { self.base.add(i).read() })
     }
     fn as_slice(&self) -> &[SL_LINK] {
-        if self.count == 0 {
+        // Link 0's own check binds the link count from the group's private state: a forged
+        // count is found before a slice of that length is formed.
+        let first_intact = self
+            .get(0)
+            .is_some_and(|l| l.aReserved == group::link_check(&l, 0, self.count as u16));
+        if !first_intact {
             return &[];
         }
         // SAFETY: non-null and aligned (checked by `storage`), at least `count` entries
