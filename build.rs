@@ -35,8 +35,11 @@ fn main() {
         .extend(rows.iter().map(|r| r.ty.clone()));
     // Structs a family declares through one `*_struct!` macro, written out for cbindgen.
     let expanded = out.join("expanded_structs.rs");
-    fs::write(&expanded, expand::expand_struct_macros(&rust_sources(&dir.join("src"))))
-        .expect("write OUT_DIR/expanded_structs.rs");
+    fs::write(
+        &expanded,
+        expand::expand_struct_macros(&rust_sources(&dir.join("src"))),
+    )
+    .expect("write OUT_DIR/expanded_structs.rs");
     let bindings = cbindgen::Builder::new()
         .with_crate(&dir)
         .with_src(&expanded)
