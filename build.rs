@@ -8,13 +8,17 @@
 use std::collections::HashMap;
 use std::env;
 use std::fs;
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
+
+#[path = "build_support/expand.rs"]
+mod expand;
 
 fn main() {
     let dir = PathBuf::from(env::var("CARGO_MANIFEST_DIR").expect("CARGO_MANIFEST_DIR"));
     let out = PathBuf::from(env::var("OUT_DIR").expect("OUT_DIR"));
     println!("cargo:rerun-if-changed=src");
     println!("cargo:rerun-if-changed=cbindgen.toml");
+    println!("cargo:rerun-if-changed=build_support");
     println!("cargo:rerun-if-env-changed=SAFELOGIC_WRITE_HEADER");
     // SONAME of the shared library (major version 0); tools/install.sh installs the versioned names.
     if env::var("CARGO_CFG_TARGET_OS").as_deref() == Ok("linux") {
@@ -29,8 +33,16 @@ fn main() {
         .export
         .include
         .extend(rows.iter().map(|r| r.ty.clone()));
+    // Structs a family declares through one `*_struct!` macro, written out for cbindgen.
+    let expanded = out.join("expanded_structs.rs");
+    fs::write(
+        &expanded,
+        expand::expand_struct_macros(&rust_sources(&dir.join("src"))),
+    )
+    .expect("write OUT_DIR/expanded_structs.rs");
     let bindings = cbindgen::Builder::new()
         .with_crate(&dir)
+        .with_src(&expanded)
         .with_config(config)
         .generate()
         .expect("cbindgen could not generate the header");
@@ -50,6 +62,27 @@ fn main() {
     }
 }
 
+/// The text of every `.rs` file below `dir`, in path order (a stable header).
+fn rust_sources(dir: &Path) -> Vec<String> {
+    let mut paths = Vec::new();
+    let mut todo = vec![dir.to_path_buf()];
+    while let Some(d) = todo.pop() {
+        for entry in fs::read_dir(&d).expect("read src") {
+            let p = entry.expect("dir entry").path();
+            if p.is_dir() {
+                todo.push(p);
+            } else if p.extension().is_some_and(|e| e == "rs") {
+                paths.push(p);
+            }
+        }
+    }
+    paths.sort();
+    paths
+        .iter()
+        .map(|p| fs::read_to_string(p).expect("read a source file"))
+        .collect()
+}
+
 /// One row of the block registry (`src/registry.rs`): struct and C function names.
 struct Row {
     ty: String,
@@ -59,7 +92,7 @@ struct Row {
 
 /// Reads the rows between each `// registry:begin` and `// registry:end` of src/registry.rs:
 /// `path::FB_X => sl_x_init, sl_x_cycle;`.
-fn registry_rows(dir: &std::path::Path) -> Vec<Row> {
+fn registry_rows(dir: &Path) -> Vec<Row> {
     let text = fs::read_to_string(dir.join("src/registry.rs")).expect("src/registry.rs");
     // One section per family (TwinSAFE, PLCopen), in registry order.
     let sections: Vec<&str> = text

@@ -87,8 +87,88 @@ pub(crate) const fn state_of(is_set: bool) -> u8 {
     }
 }
 
-/// The envelope's view of a block of this family; invoked in the member's own file.
+/// The struct of FB RS and FB SR, declared once: they differ in the output's name and in
+/// which input's doc says "(dominant)" (`$reset`, `$set`: the two inputs' docs).
+/// build.rs writes every invocation out for cbindgen (`build_support/expand.rs`).
+macro_rules! flipflop_struct {
+    ($(#[doc = $doc:literal])* $name:ident: $reset:literal, $set:literal => $out:ident) => {
+        $(#[doc = $doc])*
+        #[repr(C)]
+        #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+        #[allow(non_snake_case, non_camel_case_types)]
+        pub struct $name {
+            /// Offset 0. Reserved, keep 0.
+            pub aReserved0: [u8; 8],
+            #[doc = concat!(" Offset 8. Reset: logic 1 switches the output off", $reset, ".")]
+            pub bReset: SL_BOOL,
+            #[doc = concat!(" Offset 9. Set: logic 1 switches the output on", $set, ".")]
+            pub bSet: SL_BOOL,
+            /// Offset 10. Reserved, keep 0.
+            pub aReserved1: [u8; 6],
+            /// Offset 16. FbRun of the owning group.
+            pub bRun: SL_BOOL,
+            /// Offset 17. ErrAck of the owning group.
+            pub bErrAck: SL_BOOL,
+            /// Offset 18. Reserved, keep 0.
+            pub aReserved2: [u8; 2],
+            /// Offset 20. Bit 0: Reset is active, bit 1: Set is active (at least one).
+            pub wInputActive: u16,
+            /// Offset 22. Same bits: the input is a make contact (negated before evaluation).
+            pub wInputNegated: u16,
+            /// Offset 24 (output base + 0). Reserved.
+            pub aReserved3: [u8; 1],
+            /// Offset 25 (output base + 1). TRUE in SET; the safe state is FALSE.
+            pub $out: SL_BOOL,
+            /// Offset 26. Reserved.
+            pub aReserved4: [u8; 6],
+            /// Offset 32. The manual's status value (SL_STATE_*).
+            pub nState: u8,
+            /// Offset 33. Reserved.
+            pub aReserved5: [u8; 1],
+            /// Offset 34. Diagnostic bits (only the library bits 13-15).
+            pub nDiag: u16,
+            /// Offset 36. Reserved.
+            pub aReserved6: [u8; 4],
+            /// Offset 40. Private state, 64 bytes: never write it.
+            pub stPrivate: $crate::blocks::boolean::flipflop::SL_FLIPFLOP_PRIVATE,
+        }
+    };
+}
+pub(crate) use flipflop_struct;
+
+/// The block behind a `flipflop_struct!`: its states, `BlockInfo`, member and the
+/// envelope's view; invoked in the member's own file.
 macro_rules! flipflop_block {
+    // The whole block: states (`$set` the SET state's constant), info and member.
+    ($(#[doc = $doc:literal])* $t:ident: $state:ident, $tag:ident, $label:literal, $set:ident;
+     magic $magic:literal, set_dominant $dom:literal, output $out:ident) => {
+        $crate::base::block::block_states!(
+            $(#[doc = $doc])*
+            $state: Stop, Safe, Error, Reset, Set = $set, "SET"
+        );
+
+        $crate::impl_member!([] $t {
+            info: $crate::base::block::BlockInfo {
+                tag: $tag,
+                name: $label,
+                states: <$state as $crate::base::block::BlockState>::TABLE,
+                diag: &[],
+                diag_values: &[],
+            },
+            state: $state,
+            private: $crate::blocks::boolean::flipflop::SL_FLIPFLOP_PRIVATE,
+            input: [bReset, bSet],
+            param: [wInputActive, wInputNegated],
+            output: [$out],
+            info_fields: [],
+        });
+
+        $crate::blocks::boolean::flipflop::flipflop_block!($t {
+            tag: $magic,
+            set_dominant: $dom,
+            output: $out,
+        });
+    };
     // A member from its description: RS and SR differ only in these.
     ($t:ty { tag: $tag:expr, set_dominant: $dom:expr, output: $out:ident $(,)? }) => {
         impl $crate::blocks::boolean::flipflop::FlipFlopBlock for $t {

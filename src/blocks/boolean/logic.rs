@@ -165,3 +165,151 @@ macro_rules! logic_block {
     };
 }
 pub(crate) use logic_block;
+
+/// The struct of the eight-input gates AND (manual §4.1) and OR (§4.2), declared once: they
+/// differ in the field names and a few words of the docs (`$op` "And"/"Or", `$OP`
+/// "AND"/"OR", `$in1` the doc of input 1, `$least` the minimum of active inputs).
+/// build.rs writes every invocation out for cbindgen (`build_support/expand.rs`).
+macro_rules! gate8_struct {
+    ($(#[doc = $doc:literal])* $name:ident: $op:literal, $OP:literal, $in1:literal, $least:literal;
+     [$i1:ident, $i2:ident, $i3:ident, $i4:ident, $i5:ident, $i6:ident, $i7:ident, $i8:ident]
+     => $out:ident) => {
+        $(#[doc = $doc])*
+        #[repr(C)]
+        #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+        #[allow(non_snake_case, non_camel_case_types)]
+        pub struct $name {
+            /// Offset 0. Reserved, keep 0.
+            pub aReserved0: [u8; 8],
+            #[doc = concat!(" Offset 8. ", $in1)]
+            pub $i1: SL_BOOL,
+            /// Offset 9.
+            pub $i2: SL_BOOL,
+            /// Offset 10.
+            pub $i3: SL_BOOL,
+            /// Offset 11.
+            pub $i4: SL_BOOL,
+            /// Offset 12.
+            pub $i5: SL_BOOL,
+            /// Offset 13.
+            pub $i6: SL_BOOL,
+            /// Offset 14.
+            pub $i7: SL_BOOL,
+            /// Offset 15.
+            pub $i8: SL_BOOL,
+            /// Offset 16. FbRun of the owning group.
+            pub bRun: SL_BOOL,
+            /// Offset 17. ErrAck of the owning group.
+            pub bErrAck: SL_BOOL,
+            /// Offset 18. Reserved, keep 0.
+            pub aReserved1: [u8; 2],
+            #[doc = concat!(" Offset 20. Bit n-1 set: ", $op, "Inn is active ", $least, ".")]
+            pub wInputActive: u16,
+            #[doc = concat!(" Offset 22. Bit n-1 set: ", $op, "Inn is a make contact (negated before the ", $OP, ").")]
+            pub wInputNegated: u16,
+            /// Offset 24 (output base + 0). Reserved.
+            pub aReserved2: [u8; 1],
+            #[doc = concat!(" Offset 25 (output base + 1). ", $OP, " of the active inputs.")]
+            pub $out: SL_BOOL,
+            /// Offset 26. Reserved.
+            pub aReserved3: [u8; 6],
+            /// Offset 32. The manual's status value (SL_STATE_*).
+            pub nState: u8,
+            /// Offset 33. Reserved.
+            pub aReserved4: [u8; 1],
+            /// Offset 34. Diagnostic bits (only the library bits 13-15).
+            pub nDiag: u16,
+            /// Offset 36. Reserved.
+            pub aReserved5: [u8; 4],
+            /// Offset 40. Private state, 64 bytes: never write it.
+            pub stPrivate: $crate::blocks::boolean::logic::SL_LOGIC_PRIVATE,
+        }
+    };
+}
+pub(crate) use gate8_struct;
+
+/// Every logically TRUE active input (AND): RUN, else SAFE.
+#[inline(always)]
+pub(crate) const fn all(logical: u8, active: u8) -> bool {
+    logical == active
+}
+
+/// At least one logically TRUE active input (OR): RUN, else SAFE.
+#[inline(always)]
+pub(crate) const fn any(logical: u8, _active: u8) -> bool {
+    logical != 0
+}
+
+/// The block behind a `gate8_struct!`: its states, `BlockInfo`, member and family impls.
+/// `$run` says from the logical and the active input bits whether the gate is in RUN.
+macro_rules! gate8_block {
+    ($(#[doc = $doc:literal])* $name:ident: $state:ident, $tag:ident, $label:literal,
+     magic $magic:literal, min $min:literal, $run:path;
+     [$($i:ident),*] => $out:ident) => {
+        $crate::base::block::block_states!(
+            $(#[doc = $doc])*
+            $state: Run, Stop, Safe, Error, Reset
+        );
+
+        $crate::impl_member!([] $name {
+            info: $crate::base::block::BlockInfo {
+                tag: $tag,
+                name: $label,
+                states: <$state as $crate::base::block::BlockState>::TABLE,
+                diag: &[],
+                diag_values: &[],
+            },
+            state: $state,
+            private: $crate::blocks::boolean::logic::SL_LOGIC_PRIVATE,
+            input: [$($i),*],
+            param: [wInputActive, wInputNegated],
+            output: [$out],
+            info_fields: [],
+        });
+
+        impl $crate::blocks::boolean::logic::LogicBlock for $name {
+            const TAG: u16 = $magic;
+            const INPUTS: u16 = 0xFF;
+            const NEGATABLE: u16 = 0xFF;
+            const MIN_ACTIVE: u32 = $min;
+
+            fn window(&self) -> Option<[u64; 2]> {
+                Some($crate::base::envelope::window!(self, 2: $($i,)* bRun, bErrAck))
+            }
+            fn params(&self) -> $crate::blocks::boolean::logic::LogicParams {
+                $crate::blocks::boolean::logic::LogicParams {
+                    active: self.wInputActive,
+                    negated: self.wInputNegated,
+                }
+            }
+            fn evaluate(
+                &self,
+                active: u8,
+                negated: u8,
+            ) -> ($crate::blocks::boolean::logic::LogicIn, bool) {
+                let p = $crate::base::bools::pack([$(self.$i),*]);
+                let on = $run($crate::base::bools::logical(p, active, negated), active);
+                let state = if on {
+                    $crate::base::types::SL_STATE_RUN
+                } else {
+                    $crate::base::types::SL_STATE_SAFE
+                };
+                (
+                    $crate::blocks::boolean::logic::LogicIn {
+                        state,
+                        outputs: u8::from(on),
+                    },
+                    p.invalid & active != 0,
+                )
+            }
+            fn set_outputs(&mut self, outputs: u8, state: u8, diag: u16) {
+                self.$out = outputs & 1;
+                self.nState = state;
+                self.nDiag = diag;
+            }
+        }
+
+        $crate::blocks::boolean::logic::logic_block!($name);
+    };
+}
+pub(crate) use gate8_block;

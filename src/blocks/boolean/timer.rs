@@ -328,6 +328,101 @@ pub(crate) fn timer_crc(magic: u16, p: &SL_TIMER_PRIVATE) -> u16 {
     )
 }
 
+/// The struct of FB TON and FB TOF, declared once: they differ in the field names (`$op`
+/// "Ton"/"Tof"), the docs of the input, the delay (`$kind` "on"/"off"), the output and the
+/// status. build.rs writes every invocation out for cbindgen (`build_support/expand.rs`).
+macro_rules! delay_struct {
+    ($(#[doc = $doc:literal])* $name:ident: $op:literal, $kind:literal, [$in_doc:literal, $in_doc2:literal],
+     $out_doc:literal, $state_doc:literal; $in:ident => $out:ident) => {
+        $(#[doc = $doc])*
+        #[repr(C)]
+        #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+        #[allow(non_snake_case, non_camel_case_types)]
+        pub struct $name {
+            /// Offset 0. Reserved, keep 0.
+            pub aReserved0: [u8; 8],
+            #[doc = concat!(" Offset 8. ", $op, "In1: ", $in_doc)]
+            #[doc = $in_doc2]
+            pub $in: SL_BOOL,
+            /// Offset 9. Reserved, keep 0.
+            pub aReserved1: [u8; 7],
+            /// Offset 16. FbRun of the owning group: TRUE = the block executes.
+            pub bRun: SL_BOOL,
+            /// Offset 17. ErrAck of the owning group.
+            pub bErrAck: SL_BOOL,
+            /// Offset 18. Reserved, keep 0.
+            pub aReserved2: [u8; 2],
+            #[doc = concat!(" Offset 20. Switch-", $kind, " delay in ms: 1 to 60,000 steps of the timebase (at most")]
+            /// 60,000,000 ms = 60,000 s), a whole number of steps.
+            pub tDelay: u32,
+            /// Offset 24. Timebase in ms: SL_TIMEBASE_1MS, _10MS, _100MS, _1000MS, or
+            /// SL_TIMEBASE_AUTO (0) = the smallest one whose range holds tDelay.
+            pub nTimeBase: u16,
+            #[doc = concat!(" Offset 26. Bit 0 must be set: ", $op, "In1 is active.")]
+            pub wInputActive: u16,
+            #[doc = concat!(" Offset 28. Bit 0 set: ", $op, "In1 is a make contact (negated before evaluation).")]
+            pub wInputNegated: u16,
+            /// Offset 30. Reserved, keep 0.
+            pub aReserved3: [u8; 2],
+            /// Offset 32 (output base + 0). Reserved (the manual's error output is inactive).
+            pub aReserved4: [u8; 1],
+            #[doc = concat!(" Offset 33 (output base + 1). ", $op, "Out: TRUE in ", $out_doc, ".")]
+            pub $out: SL_BOOL,
+            /// Offset 34. Reserved.
+            pub aReserved5: [u8; 6],
+            #[doc = concat!(" Offset 40. The manual's status value (SL_STATE_*", $state_doc, ").")]
+            pub nState: u8,
+            /// Offset 41. Reserved.
+            pub aReserved6: [u8; 1],
+            /// Offset 42. Diagnostic bits (only the library bits 13-15).
+            pub nDiag: u16,
+            /// Offset 44. Reserved.
+            pub aReserved7: [u8; 4],
+            /// Offset 48. Private state, 64 bytes: never write it.
+            pub stPrivate: $crate::blocks::boolean::timer::SL_TIMER_PRIVATE,
+        }
+    };
+}
+pub(crate) use delay_struct;
+
+/// The block behind a `delay_struct!`: states (`$states`: those after RESET), info, member
+/// and the timer family's impls.
+macro_rules! delay_block {
+    ($(#[doc = $doc:literal])* $t:ident: $state:ident [$($states:tt)*], $tag:ident, $label:literal;
+     magic $magic:literal, off_delay $off:literal, timing $timing:ident; $in:ident => $out:ident) => {
+        $crate::base::block::block_states!(
+            $(#[doc = $doc])*
+            $state: Run, Stop, Safe, Error, Reset, $($states)*
+        );
+
+        $crate::impl_member!([] $t {
+            info: $crate::base::block::BlockInfo {
+                tag: $tag,
+                name: $label,
+                states: <$state as $crate::base::block::BlockState>::TABLE,
+                diag: &[],
+                diag_values: &[],
+            },
+            state: $state,
+            private: $crate::blocks::boolean::timer::SL_TIMER_PRIVATE,
+            input: [$in],
+            param: [tDelay, nTimeBase, wInputActive, wInputNegated],
+            output: [$out],
+            info_fields: [],
+        });
+
+        $crate::blocks::boolean::timer::timer_block!($t {
+            tag: $magic,
+            off_delay: $off,
+            persists: false,
+            timing_state: $timing,
+            input: $in,
+            output: $out,
+        });
+    };
+}
+pub(crate) use delay_block;
+
 /// The envelope's view of a block of this family; invoked in the member's own file.
 macro_rules! timer_block {
     // A member from its description: the TimerBlock impl from its constants and field

@@ -1,42 +1,15 @@
 //! SF_Equivalent — PLCopen TC5 Part 1 (research `plcopen_safety.md` §4.11, DiagCodes §5): two equivalent channels (both NC or both NO) → one output with discrepancy-time monitoring; no restart interlock, so not to be used alone.
 //! The state machine is the two-channel machine of `sf_pair`.
 
-use crate::base::sf::SL_SF_PRIVATE;
 use crate::base::types::SL_BOOL;
 
 /// Block type tag of SF_Equivalent (`SL_MEMBER.nType`, `sl_diag_text`).
 pub const SL_TYPE_SF_EQUIVALENT: u16 = 515;
 
-/// SF_Equivalent instance: the PLCopen VAR_INPUT / VAR_OUTPUT names, BOOL = one byte.
-/// Size: 56 bytes.
-#[repr(C)]
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-#[allow(non_snake_case, non_camel_case_types)]
-pub struct SF_Equivalent {
-    /// Offset 0. Activate: FALSE = idle (DiagCode 0000, every output FALSE), highest priority.
-    pub Activate: SL_BOOL,
-    /// Offset 1. S_ChannelA: channel A, TRUE = active.
-    pub S_ChannelA: SL_BOOL,
-    /// Offset 2. S_ChannelB: channel B, TRUE = active.
-    pub S_ChannelB: SL_BOOL,
-    /// Offset 3. Library extension, constant: DiagCode profile, 0 = v2.01 (default), 1 = v1.0; latched at activation.
-    pub nDiagProfile: u8,
-    /// Offset 4. DiscrepancyTime (constant, ms): how long the channels may differ; latched at activation.
-    pub DiscrepancyTime: u32,
-    /// Offset 8 (output base). Ready: TRUE while activated (DiagCode != 0000).
-    pub Ready: SL_BOOL,
-    /// Offset 9. S_EquivalentOut: the safety output, TRUE only at DiagCode 8000.
-    pub S_EquivalentOut: SL_BOOL,
-    /// Offset 10. SafetyDemand: the safety function is demanded (v2.01 code bit 0x0800).
-    pub SafetyDemand: SL_BOOL,
-    /// Offset 11. Error: DiagCode >= C000.
-    pub Error: SL_BOOL,
-    /// Offset 12. Reserved.
-    pub aReserved1: [u8; 2],
-    /// Offset 14. DiagCode: the state or error, in the profile of nDiagProfile.
-    pub DiagCode: u16,
-    /// Offset 16. Private state, 40 bytes: never write it.
-    pub stPrivate: SL_SF_PRIVATE,
+crate::pair_struct! {
+    /// SF_Equivalent instance: the PLCopen VAR_INPUT / VAR_OUTPUT names, BOOL = one byte.
+    /// Size: 56 bytes.
+    SF_Equivalent: S_ChannelA "channel A, TRUE = active.", S_ChannelB "channel B, TRUE = active." => S_EquivalentOut
 }
 
 crate::pair_block!(SF_Equivalent, SL_TYPE_SF_EQUIVALENT, S_ChannelA, S_ChannelB, b_negated: false, S_EquivalentOut);

@@ -58,6 +58,46 @@ pub fn next(s: PairState, i: &PairIn, in_state: u32, t: u32) -> PairState {
     }
 }
 
+/// The struct of SF_Equivalent and SF_Antivalent, declared once: they differ in the names
+/// and docs of the channels and the output's name.
+/// build.rs writes every invocation out for cbindgen (`build_support/expand.rs`).
+#[macro_export]
+#[doc(hidden)]
+macro_rules! pair_struct {
+    ($(#[doc = $doc:literal])* $name:ident: $a:ident $a_doc:literal, $b:ident $b_doc:literal => $output:ident) => {
+        $(#[doc = $doc])*
+        #[repr(C)]
+        #[derive(Clone, Copy, Debug, PartialEq, Eq)]
+        #[allow(non_snake_case, non_camel_case_types)]
+        pub struct $name {
+            /// Offset 0. Activate: FALSE = idle (DiagCode 0000, every output FALSE), highest priority.
+            pub Activate: SL_BOOL,
+            #[doc = concat!(" Offset 1. ", stringify!($a), ": ", $a_doc)]
+            pub $a: SL_BOOL,
+            #[doc = concat!(" Offset 2. ", stringify!($b), ": ", $b_doc)]
+            pub $b: SL_BOOL,
+            /// Offset 3. Library extension, constant: DiagCode profile, 0 = v2.01 (default), 1 = v1.0; latched at activation.
+            pub nDiagProfile: u8,
+            /// Offset 4. DiscrepancyTime (constant, ms): how long the channels may differ; latched at activation.
+            pub DiscrepancyTime: u32,
+            /// Offset 8 (output base). Ready: TRUE while activated (DiagCode != 0000).
+            pub Ready: SL_BOOL,
+            #[doc = concat!(" Offset 9. ", stringify!($output), ": the safety output, TRUE only at DiagCode 8000.")]
+            pub $output: SL_BOOL,
+            /// Offset 10. SafetyDemand: the safety function is demanded (v2.01 code bit 0x0800).
+            pub SafetyDemand: SL_BOOL,
+            /// Offset 11. Error: DiagCode >= C000.
+            pub Error: SL_BOOL,
+            /// Offset 12. Reserved.
+            pub aReserved1: [u8; 2],
+            /// Offset 14. DiagCode: the state or error, in the profile of nDiagProfile.
+            pub DiagCode: u16,
+            /// Offset 16. Private state, 40 bytes: never write it.
+            pub stPrivate: $crate::base::sf::SL_SF_PRIVATE,
+        }
+    };
+}
+
 /// Declares a two-channel block's envelope plumbing from its struct: tag, name, the two
 /// channel fields, whether channel B is read inverted (Antivalent's NO), the output.
 #[macro_export]

@@ -58,6 +58,52 @@ pub fn next(s: RestartState, i: &RestartIn, r: ResetIn) -> RestartState {
     }
 }
 
+/// The struct of SF_EmergencyStop, SF_ESPE and SF_PSE, declared once: they differ in the
+/// names of the safety input and output and the input's doc (`$in_doc`).
+/// build.rs writes every invocation out for cbindgen (`build_support/expand.rs`).
+#[macro_export]
+#[doc(hidden)]
+macro_rules! restart_interlock_struct {
+    ($(#[doc = $doc:literal])* $name:ident: $input:ident $in_doc:literal => $output:ident) => {
+        $(#[doc = $doc])*
+        #[repr(C)]
+        #[derive(Clone, Copy, Debug, PartialEq, Eq)]
+        #[allow(non_snake_case, non_camel_case_types)]
+        pub struct $name {
+            /// Offset 0. Activate: FALSE = idle (DiagCode 0000, every output FALSE), highest priority.
+            pub Activate: SL_BOOL,
+            #[doc = concat!(" Offset 1. ", stringify!($input), ": ", $in_doc)]
+            pub $input: SL_BOOL,
+            /// Offset 2. S_StartReset: TRUE = automatic reset at activation (start-up).
+            pub S_StartReset: SL_BOOL,
+            /// Offset 3. S_AutoReset: TRUE = automatic reset when the safety demand ends.
+            pub S_AutoReset: SL_BOOL,
+            /// Offset 4. Reset: a rising edge resets; held TRUE into a wait-for-reset state it is a static-reset error.
+            pub Reset: SL_BOOL,
+            /// Offset 5. Reserved, keep 0.
+            pub aReserved0: [u8; 2],
+            /// Offset 7. Library extension, constant: DiagCode profile, 0 = v2.01 (default), 1 = v1.0; latched at activation.
+            pub nDiagProfile: u8,
+            /// Offset 8 (output base). Ready: TRUE while activated (DiagCode != 0000).
+            pub Ready: SL_BOOL,
+            #[doc = concat!(" Offset 9. ", stringify!($output), ": the safety output, TRUE only at DiagCode 8000.")]
+            pub $output: SL_BOOL,
+            /// Offset 10. SafetyDemand: the safety function is demanded (v2.01 code bit 0x0800).
+            pub SafetyDemand: SL_BOOL,
+            /// Offset 11. ResetRequest: a reset is awaited (v2.01 code bit 0x0400) and Reset is FALSE.
+            pub ResetRequest: SL_BOOL,
+            /// Offset 12. Error: DiagCode >= C000.
+            pub Error: SL_BOOL,
+            /// Offset 13. Reserved.
+            pub aReserved1: [u8; 1],
+            /// Offset 14. DiagCode: the state or error, in the profile of nDiagProfile.
+            pub DiagCode: u16,
+            /// Offset 16. Private state, 40 bytes: never write it.
+            pub stPrivate: $crate::base::sf::SL_SF_PRIVATE,
+        }
+    };
+}
+
 /// Declares a restart-interlock block's envelope plumbing from its struct: tag, the names
 /// of its safety input and output, whether it exists in PLCopen v1.0.
 #[macro_export]
