@@ -6,7 +6,7 @@
 # Needs: rustup component add --toolchain nightly miri rust-src; cargo install cargo-fuzz
 # cargo-mutants. Environment:
 #   MIRI_TESTS     the Miri test binaries (default below: the group and FFI suites, and the
-#                  block suites that reached the old slice-building UB of issue 16; property
+#                  block suites that go through the C functions' slice building; property
 #                  tests run a hundredth of their cases under Miri, tests/common depth_cases)
 #   DEEP_STEPS     which steps run (default "miri fuzz mutants peer")
 #   PEER_ST        a copy of the PLCopen peer ST for the step peer (default: download it)

@@ -13,7 +13,7 @@
 #                                               files land under DESTDIR, safelogic.pc says /usr)
 #   LIBDIR=lib/x86_64-linux-gnu tools/install.sh   (library directory relative to PREFIX)
 #
-# Then (see README, "Linking from C"):
+# Then (see docs/c-integration.md):
 #   cc app.c $(pkg-config --cflags --libs safelogic)                  shared; run after ldconfig,
 #                                                                      or add -Wl,-rpath,<libdir>
 #   cc -static app.c $(pkg-config --static --cflags --libs safelogic) static executable

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""The peer benchmark of issue "Faster than hand-written ST": what an E-stop cycle costs
+"""The peer benchmark ("faster than hand-written ST?"): what an E-stop cycle costs
 through the library, next to the same logic written in plain ST, in one process.
 
     python3 tools/peer_bench.py --iec2c DIR/iec2c --matiec-lib DIR/lib --workdir build/peer-bench [--batches N]

@@ -293,7 +293,7 @@ def parse_header(text: str) -> Header:
         doc = []
     if cur is not None:
         raise GenError(f"unterminated struct {cur.name}")
-    # The FSoE connection (issue 11): its structs (SL_FSOE_CONN with the group mailbox,
+    # The FSoE connection: its structs (SL_FSOE_CONN with the group mailbox,
     # SL_FSOE_CONN_PRIVATE, SL_FSOE_FRAME) and sl_fsoe_init are bound like any other; a PLC
     # runs a connection as a group member (sl_group_add_member with SL_TYPE_FSOE_CONN) and
     # carries the frames through aRxFrame / aTxFrame. sl_fsoe_cycle and the codec functions

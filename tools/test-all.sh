@@ -59,8 +59,12 @@ for f in examples/projects/*.toml; do
 done
 echo "safelogic: every example project checks, the default run passes; diagrams fresh and rendered"
 
-step "README C snippet (C11 and C++17, -Werror) and docs/abi.md against the header"
+step "README: its first steps run verbatim, its C (C11, C++17, -Werror) and Rust programs; docs: no history; docs/abi.md against the header"
 bash tools/check_readme_snippet.sh
+# README at most 200 lines, no issue numbers, sessions or experiment dates in any page; the
+# self-test first shows that each rule fails on a tree that breaks it
+bash tools/check_docs.sh --selftest
+bash tools/check_docs.sh
 python3 tools/check_abi_doc.py
 
 step "C tests (ctest)"
@@ -97,7 +101,7 @@ DESTDIR="$root/build/stage" PREFIX=/usr bash tools/install.sh >/dev/null
 [ -L build/stage/usr/lib/libsafelogic.so.0 ] && [ -f build/stage/usr/include/safelogic.h ]
 grep -qx 'prefix=/usr' build/stage/usr/lib/pkgconfig/safelogic.pc
 export PKG_CONFIG_PATH="$root/build/prefix/lib/pkgconfig"
-# Dynamic, as the README says: pkg-config, plus an rpath to pkg-config's libdir (or install
+# Dynamic, as README and docs/c-integration.md say: pkg-config, plus an rpath to pkg-config's libdir (or install
 # into a system directory and run ldconfig).
 # shellcheck disable=SC2046
 cc -std=c11 -Wall -Wextra -Werror -pedantic examples/c/group_examples.c $(pkg-config --cflags --libs safelogic) \
@@ -105,7 +109,7 @@ cc -std=c11 -Wall -Wextra -Werror -pedantic examples/c/group_examples.c $(pkg-co
 readelf -d build/prefix/group_examples_dynamic | grep 'NEEDED.*\[libsafelogic.so.0\]' >/dev/null
 ldd build/prefix/group_examples_dynamic | grep "libsafelogic.so.0 => $root/build/prefix/lib/libsafelogic.so.0" >/dev/null
 build/prefix/group_examples_dynamic >/dev/null
-# Static, as the README says: pkg-config --static (Libs.private) with -static
+# Static, as docs/c-integration.md says: pkg-config --static (Libs.private) with -static
 # shellcheck disable=SC2046
 cc -static -std=c11 -Wall -Wextra -Werror -pedantic examples/c/group_examples.c \
     $(pkg-config --static --cflags --libs safelogic) -o build/prefix/group_examples_static 2>build/prefix/static-link.log \

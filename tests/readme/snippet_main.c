@@ -1,4 +1,4 @@
-/* Driver for the C snippet of README.md ("Linking from C"), which tools/check_readme_snippet.sh
+/* Driver for the C snippet of docs/c-integration.md ("A task"), which tools/check_readme_snippet.sh
  * extracts to build/readme/snippet.c. Valid C11 and C++17: both builds link the snippet with
  * this file and run it. It plays the machine: emergency-stop switch S1 (two channels),
  * contactor K with feedback (EDM1: TRUE while K is released), restart button S2. */
