@@ -463,6 +463,7 @@ pub fn export(p: &Project, dialect: Dialect) -> Result<String, Error> {
         .iter()
         .map(|(_, _, l, _)| *l)
         .chain(lay.clock)
+        .chain(lay.start)
         .chain(lay.states.iter().map(|(_, l)| *l))
         .collect();
     let located = |l: &Location| -> String {
@@ -506,13 +507,22 @@ pub fn export(p: &Project, dialect: Dialect) -> Result<String, Error> {
             &p.place_name(&sig.places[0]),
         );
     }
+    if let Some(l) = &lay.start {
+        s += &image_line(
+            "sl_start",
+            "input",
+            "BOOL",
+            Some(l),
+            "the first cycle runs in the first scan that reads it TRUE",
+        );
+    }
     if let Some(l) = &lay.clock {
         s += &image_line(
             "sl_clock",
             "output",
             "UDINT",
             Some(l),
-            "the program time after the scan (ms)",
+            "the time of the next cycle (ms): n * cycle after n cycles",
         );
     }
     for (label, l) in &lay.states {
@@ -552,6 +562,9 @@ pub fn export(p: &Project, dialect: Dialect) -> Result<String, Error> {
             located(l),
             place_type(p, &sig.places[0])
         );
+    }
+    if let Some(l) = &lay.start {
+        let _ = writeln!(inputs_decl, "    sl_start{} : BOOL;", located(l));
     }
     let mut outputs_decl = String::new();
     for (sig, l) in p.outputs.iter().zip(&lay.outputs) {
@@ -630,11 +643,15 @@ pub fn export(p: &Project, dialect: Dialect) -> Result<String, Error> {
             "        IF sl_nSetup = DINT#0 THEN sl_nSetup := sl_nRc; END_IF; (* {what} *)"
         );
     };
+    let mut when = vec!["NOT sl_bSetUp".to_string()];
     if dialect == Dialect::TwinCat {
-        s += "sl_fbModule(oidModule := oidModule); (* connects once, then cheap *)\nIF NOT sl_bSetUp AND sl_fbModule.bConnected THEN\n";
-    } else {
-        s += "IF NOT sl_bSetUp THEN\n";
+        s += "sl_fbModule(oidModule := oidModule); (* connects once, then cheap *)\n";
+        when.push("sl_fbModule.bConnected".into());
     }
+    if lay.start.is_some() {
+        when.push(sp.signal("sl_start"));
+    }
+    let _ = writeln!(s, "IF {} THEN", when.join(" AND "));
     s += "    sl_bSetUp := TRUE;\n    sl_fbSelfTest();\n    IF NOT sl_fbSelfTest.bOk THEN\n        sl_nSetup := DINT#-100; (* the DUT layout differs from the C library: never run *)\n    END_IF;\n";
     for g in &p.groups {
         let _ = writeln!(
@@ -732,7 +749,7 @@ pub fn export(p: &Project, dialect: Dialect) -> Result<String, Error> {
         }
         s += "    END_IF;\n";
     }
-    s += "END_IF;\n\n(* process-image inputs into the members *)\n";
+    s += "END_IF;\nIF sl_bSetUp THEN\n(* process-image inputs into the members *)\n";
     for sig in &p.inputs {
         for place in &sig.places {
             if let Place::Member { .. } = place {
@@ -798,15 +815,15 @@ pub fn export(p: &Project, dialect: Dialect) -> Result<String, Error> {
             }
         }
     }
-    if lay.clock.is_some() {
-        let _ = writeln!(s, "{} := sl_tNow;", sp.signal("sl_clock"));
-    }
     let _ = writeln!(
         s,
         "sl_tNow := sl_tNow + UDINT#{}; (* wraps at 2^32 like the library's time *)",
         p.cycle_ms
     );
-    s += "END_PROGRAM\n";
+    if lay.clock.is_some() {
+        let _ = writeln!(s, "{} := sl_tNow;", sp.signal("sl_clock"));
+    }
+    s += "END_IF;\nEND_PROGRAM\n";
     if dialect == Dialect::Iec {
         let _ = writeln!(
             s,
@@ -882,12 +899,13 @@ pub fn modbus_map(p: &Project) -> Result<String, Error> {
         ins.join(",\n"),
         outs.join(",\n")
     );
-    s += &format!(
-        "  \"clock\": {},\n",
-        lay.clock
-            .as_ref()
-            .map_or("null".into(), |l| format!("{{{}}}", json_loc(l)))
-    );
+    for (key, l) in [("clock", &lay.clock), ("start", &lay.start)] {
+        s += &format!(
+            "  \"{key}\": {},\n",
+            l.as_ref()
+                .map_or("null".into(), |l| format!("{{{}}}", json_loc(l)))
+        );
+    }
     let mut states = Vec::new();
     let mut it = lay.states.iter();
     for g in &p.groups {

@@ -16,6 +16,7 @@ use toml::Spanned;
 pub(crate) struct RawPlc {
     clock: Option<Spanned<String>>,
     states: Option<Spanned<String>>,
+    start: Option<Spanned<String>>,
     #[serde(default)]
     locations: BTreeMap<Spanned<String>, Spanned<String>>,
 }
@@ -170,8 +171,12 @@ impl Location {
 /// The `[plc]` table as stated in the file.
 #[derive(Clone, Debug, Default)]
 pub struct Plc {
-    /// `clock`: the program time (ms, UDINT) after each scan.
+    /// `clock`: the program time (ms, UDINT) of the next cycle: 0 until the first cycle ran,
+    /// then n × cycle after n cycles.
     pub clock: Option<(Location, Pos)>,
+    /// `start`: a BOOL the program waits for: its first cycle (setup, time 0) runs in the
+    /// first scan that reads it TRUE.
+    pub start: Option<(Location, Pos)>,
     /// `states`: the first of the state words (every group, then its members, in order).
     pub states: Option<(Location, Pos)>,
     /// `locations`, in file order: (input?, signal index, location, where it is written).
@@ -187,6 +192,8 @@ pub struct Layout {
     pub outputs: Vec<Location>,
     /// The program clock, if stated.
     pub clock: Option<Location>,
+    /// The start input, if stated.
+    pub start: Option<Location>,
     /// The state words: (label such as `safety.state` / `estop.state`, location), every group
     /// followed by its members.
     pub states: Vec<(String, Location)>,
@@ -213,11 +220,11 @@ impl Plc {
          -> Result<Option<(Location, Pos)>, Error> {
             let Some(v) = v else { return Ok(None) };
             let l = loc(v, what)?;
-            if l.size != size || l.area == Area::I {
-                let want = if size == Size::D {
-                    "%MD or %QD (UDINT)"
-                } else {
-                    "%MW or %QW (one UINT per state)"
+            if l.size != size || (l.area == Area::I && size != Size::X) {
+                let want = match size {
+                    Size::D => "%MD or %QD (UDINT)",
+                    Size::X => "%IX or %QX (BOOL)",
+                    _ => "%MW or %QW (one UINT per state)",
                 };
                 return Err(src.error(
                     v.span(),
@@ -228,6 +235,7 @@ impl Plc {
         };
         let clock = word(&raw.clock, "clock", Size::D)?;
         let states = word(&raw.states, "states", Size::W)?;
+        let start = word(&raw.start, "start", Size::X)?;
         let mut stated = Vec::new();
         let mut entries: Vec<_> = raw.locations.iter().collect();
         entries.sort_by_key(|(k, _)| k.span().start);
@@ -277,6 +285,7 @@ impl Plc {
         }
         Ok(Plc {
             clock,
+            start,
             states,
             stated,
         })
@@ -290,6 +299,9 @@ impl Plc {
         }
         if let Some((l, _)) = &self.states {
             s += &format!("plc states {l}\n");
+        }
+        if let Some((l, _)) = &self.start {
+            s += &format!("plc start {l}\n");
         }
         for &(is_input, i, l, _) in &self.stated {
             let name = if is_input {
@@ -338,6 +350,15 @@ pub fn layout(p: &Project) -> Result<Layout, Error> {
     let clock = match p.plc.clock {
         Some((l, pos)) => {
             if let Some(by) = taken.insert(l, "the clock".into()) {
+                return Err(taken_error(p, pos, l, &by));
+            }
+            Some(l)
+        }
+        None => None,
+    };
+    let start = match p.plc.start {
+        Some((l, pos)) => {
+            if let Some(by) = taken.insert(l, "the start input".into()) {
                 return Err(taken_error(p, pos, l, &by));
             }
             Some(l)
@@ -401,6 +422,7 @@ pub fn layout(p: &Project) -> Result<Layout, Error> {
         inputs: inputs.into_iter().flatten().collect(),
         outputs: outputs.into_iter().flatten().collect(),
         clock,
+        start,
         states,
     })
 }
