@@ -146,16 +146,7 @@ step "OpenPLC v3: KL6904 5.1/5.2 and the speed monitor exported, built into the 
 # OpenPLC from ../shared/vendor/openplc (tools once into build/openplc-cache), pymodbus in build/openplc-venv
 bash tools/openplc_e2e.sh
 # the 1,000-block program of docs/performance.md built and brought to RUN (all 1,000 outputs on), briefly
-build/openplc-venv/bin/python - <<'PY' || exit 1
-import os, subprocess, sys
-root = os.getcwd()
-shared = os.environ.get("SAFELOGIC_SHARED_DIR", os.path.join(root, "..", "shared"))
-cmd = [os.path.join(root, "build/openplc-venv/bin/python"), "tools/openplc_scan_cost.py", "--safelogic", "target/release/safelogic",
-       "--lib", "target/release/libsafelogic.a", "--openplc", os.path.join(shared, "vendor/openplc"),
-       "--workdir", "build/openplc-scan", "--cache", "build/openplc-cache", "--seconds", "2"]
-netns = os.geteuid() == 0 and subprocess.run(["unshare", "-n", "true"]).returncode == 0
-sys.exit(subprocess.run((["unshare", "-n"] if netns else []) + cmd, env=dict(os.environ, OPENPLC_E2E_NETNS="1" if netns else "0")).returncode)
-PY
+bash tools/openplc_scan_cost.sh --seconds 2
 
 step "peer benchmark: plain-ST E-stop (matiec, gcc -O2) vs the library in one process (brief; figures not asserted)"
 # the scenario check (plain ST, direct C call and ST wrapper agree cycle by cycle) is asserted;
