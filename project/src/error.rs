@@ -56,6 +56,15 @@ impl Source<'_> {
         }
     }
 
+    /// The line and column of the start of `span`.
+    pub fn pos(&self, span: Range<usize>) -> crate::project::Pos {
+        let e = self.error(span, "");
+        crate::project::Pos {
+            line: e.line,
+            col: e.col,
+        }
+    }
+
     /// A TOML syntax or shape error (toml reports its span).
     pub fn toml_error(&self, e: &toml::de::Error) -> Error {
         let msg = e.message().trim().to_string();

@@ -6,6 +6,8 @@
 #![forbid(unsafe_code)]
 
 pub mod error;
+pub mod export_st;
+pub mod plc;
 pub mod project;
 pub mod runtime;
 pub mod sim;

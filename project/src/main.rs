@@ -1,10 +1,11 @@
-//! The `safelogic` command-line tool: `check`, `sim`, `export-c`; without arguments it
+//! The `safelogic` command-line tool: `check`, `sim`, `export-c`, `export-st`; without arguments it
 //! simulates the embedded KL6904 example 5.1 and writes its timing diagram.
 
 #![forbid(unsafe_code)]
 
 use clap::{Parser, Subcommand};
 use safelogic_project::error::io_error;
+use safelogic_project::export_st::{self, Dialect};
 use safelogic_project::sim::{self, Scenario};
 use safelogic_project::{load_project, svg, vcd, Error, Project};
 use std::process::ExitCode;
@@ -22,10 +23,14 @@ struct Cli {
 
 #[derive(Subcommand)]
 enum Command {
-    /// Validates a project, prints its wiring and its CRC.
+    /// Validates a project, prints its wiring and its CRC; with --dialect also what
+    /// `export-st` needs (names, group sizes, process-image locations).
     Check {
         /// The project file.
         project: String,
+        /// Check that this PLC dialect can express the project: iec, twincat or codesys.
+        #[arg(long, value_parser = parse_dialect)]
+        dialect: Option<Dialect>,
     },
     /// Runs a project against a scenario: prints the timeline, checks the expectations
     /// (exit status 1 when one fails), writes VCD and SVG.
@@ -55,6 +60,28 @@ enum Command {
         #[arg(short, long)]
         output: Option<String>,
     },
+    /// Writes the project as a PLC program in Structured Text that runs its groups through
+    /// the ST bindings (plc_bindings/): iec (matiec: OpenPLC v3, Beremiz; one self-contained
+    /// file with located variables), twincat or codesys (a GVL and a PROGRAM).
+    ExportSt {
+        /// The project file.
+        project: String,
+        /// iec, twincat or codesys.
+        #[arg(long, default_value = "iec", value_parser = parse_dialect)]
+        dialect: Dialect,
+        /// Output file (default: standard output).
+        #[arg(short, long)]
+        output: Option<String>,
+        /// Also write the process image as JSON: every signal's IEC location and OpenPLC
+        /// Modbus TCP address, the clock and the state words (with their value names).
+        #[arg(long)]
+        map: Option<String>,
+    },
+}
+
+fn parse_dialect(s: &str) -> Result<Dialect, String> {
+    Dialect::named(s)
+        .ok_or_else(|| format!("`{s}` is not a dialect; expected iec, twincat or codesys"))
 }
 
 const DEFAULT_PROJECT: &str = include_str!("../../examples/projects/kl6904_5_1.toml");
@@ -97,9 +124,17 @@ fn simulate(
 fn main() -> ExitCode {
     let cli = Cli::parse();
     let result = match cli.command {
-        Some(Command::Check { project }) => load_project(&project)
-            .map(|p| print!("{}", p.describe()))
-            .map(|()| true),
+        Some(Command::Check { project, dialect }) => (|| {
+            let p = load_project(&project)?;
+            if let Some(d) = dialect {
+                export_st::check(&p, d)?;
+            }
+            print!("{}", p.describe());
+            if let Some(d) = dialect {
+                println!("export-st --dialect {}: can be expressed", d.name());
+            }
+            Ok(true)
+        })(),
         Some(Command::Sim {
             project,
             scenario,
@@ -128,6 +163,23 @@ fn main() -> ExitCode {
             }
             Ok(true)
         })(),
+        Some(Command::ExportSt {
+            project,
+            dialect,
+            output,
+            map,
+        }) => (|| {
+            let p = load_project(&project)?;
+            let st = export_st::export(&p, dialect)?;
+            match output {
+                Some(path) => write(&path, &st)?,
+                None => print!("{st}"),
+            }
+            if let Some(path) = map {
+                write(&path, &export_st::modbus_map(&p)?)?;
+            }
+            Ok(true)
+        })(),
         None => (|| {
             let p = Project::parse("<embedded kl6904_5_1.toml>", DEFAULT_PROJECT)?;
             let sc = Scenario::parse("<embedded kl6904_5_1.scenario.toml>", DEFAULT_SCENARIO, &p)?;
@@ -139,7 +191,7 @@ fn main() -> ExitCode {
             let vcd_path = dir.join("kl6904_5_1.vcd").display().to_string();
             let ok = simulate(&p, &sc, Some(&vcd_path), Some(&svg_path), false)?;
             println!("\ntiming diagram: {svg_path} (waveform for GTKWave: {vcd_path})");
-            println!("more: safelogic check|sim|export-c, projects in examples/projects/ (safelogic --help)");
+            println!("more: safelogic check|sim|export-c|export-st, projects in examples/projects/ (safelogic --help)");
             Ok(ok)
         })(),
     };

@@ -4,6 +4,7 @@
 //! wInputActive / wInputNegated bits from `safelogic::any::input_bit`.
 
 use crate::error::{Error, Source};
+use crate::plc::{Plc, RawPlc};
 use safelogic::any::{in_range, input_bit, AnyBlock};
 use safelogic::group::link_kind;
 use safelogic::registry::{block_type_named, BlockType, Dir, Field, Kind, BLOCKS};
@@ -24,6 +25,7 @@ struct RawFile {
     inputs: Table,
     #[serde(default)]
     outputs: BTreeMap<Spanned<String>, Spanned<String>>,
+    plc: Option<RawPlc>,
 }
 
 #[derive(Deserialize)]
@@ -99,12 +101,24 @@ impl Place {
     }
 }
 
+/// Where a name is written in the project file (1-based line and column), for errors
+/// found after loading (`export-st`'s dialect checks).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Pos {
+    /// 1-based line.
+    pub line: usize,
+    /// 1-based column in characters.
+    pub col: usize,
+}
+
 /// One member: its name, type and the values written before `init` (parameters, and
 /// inputs with a constant value), in field-table order.
 #[derive(Clone, Debug)]
 pub struct Member {
     /// Unique name in the project.
     pub name: String,
+    /// Where its name is written.
+    pub pos: Pos,
     /// Its registered type.
     pub block: &'static BlockType,
     /// (field, value) written before init.
@@ -130,6 +144,8 @@ pub struct Link {
 pub struct Group {
     /// Unique name in the project.
     pub name: String,
+    /// Where its name is written.
+    pub pos: Pos,
     /// bConnections.
     pub connections: bool,
     /// Members in execution order.
@@ -144,6 +160,8 @@ pub struct Group {
 pub struct Signal {
     /// Its name.
     pub name: String,
+    /// Where its name is written.
+    pub pos: Pos,
     /// Where it goes (inputs) or comes from (outputs: exactly one).
     pub places: Vec<Place>,
     /// Its IEC type.
@@ -153,6 +171,8 @@ pub struct Signal {
 /// A checked project.
 #[derive(Clone, Debug)]
 pub struct Project {
+    /// The file as given (for errors found after loading).
+    pub file: String,
     /// The project's name.
     pub name: String,
     /// Task cycle in ms.
@@ -163,6 +183,8 @@ pub struct Project {
     pub inputs: Vec<Signal>,
     /// Process-image outputs, in file order.
     pub outputs: Vec<Signal>,
+    /// The PLC table: process-image locations and diagnostics (`[plc]`, for `export-st`).
+    pub plc: Plc,
     /// CRC-32 of the canonical content ([`Project::canonical`]).
     pub crc: u32,
 }
@@ -205,7 +227,7 @@ fn type_name(v: &Value) -> &'static str {
     }
 }
 
-fn kind_name(k: Kind) -> &'static str {
+pub(crate) fn kind_name(k: Kind) -> &'static str {
     match k {
         Kind::Bool => "BOOL",
         Kind::U8 => "BYTE",
@@ -355,13 +377,14 @@ impl Project {
             names.groups.insert(rg.name.get_ref().clone(), gi);
             let mut members = Vec::new();
             for rm in &rg.member {
-                let m = parse_member(&src, rm)?;
+                let mut m = parse_member(&src, rm)?;
                 let name_v = rm
                     .get_ref()
                     .iter()
                     .find(|(k, _)| k.get_ref() == "name")
                     .map(|(_, v)| v);
                 let span = name_v.map_or(rm.span(), Spanned::span);
+                m.pos = src.pos(span.clone());
                 claim(&Spanned::new(span, m.name.clone()))?;
                 members.push((m, rm.span()));
             }
@@ -531,6 +554,7 @@ impl Project {
             }
             out_groups.push(Group {
                 name: rg.name.get_ref().clone(),
+                pos: src.pos(rg.name.span()),
                 connections: rg.connections,
                 members: members.iter().map(|(m, _)| m.clone()).collect(),
                 links,
@@ -598,6 +622,7 @@ impl Project {
             let kind = places[0].kind();
             inputs.push(Signal {
                 name: k.get_ref().clone(),
+                pos: src.pos(k.span()),
                 places,
                 kind,
             });
@@ -625,17 +650,24 @@ impl Project {
             }
             outputs.push(Signal {
                 name: k.get_ref().clone(),
+                pos: src.pos(k.span()),
                 places: vec![p],
                 kind: p.kind(),
             });
         }
 
+        let plc = match &raw.plc {
+            Some(rp) => Plc::parse(&src, rp, &inputs, &outputs)?,
+            None => Plc::default(),
+        };
         let mut project = Project {
+            file: file.to_string(),
             name: raw.project.name.clone(),
             cycle_ms,
             groups: out_groups,
             inputs,
             outputs,
+            plc,
             crc: 0,
         };
         // Every member's parameters through its own init (limits the types cannot say).
@@ -687,6 +719,7 @@ impl Project {
                 s += &format!("{dir} {} = {}\n", sig.name, places.join(", "));
             }
         }
+        s += &self.plc.canonical(&self.inputs, &self.outputs);
         s
     }
 
@@ -885,6 +918,7 @@ fn parse_member(src: &Source, t: &Spanned<Table>) -> Result<Member, Error> {
     values.sort_by_key(|(f, _)| block.fields.iter().position(|g| g == *f));
     Ok(Member {
         name,
+        pos: Pos::default(),
         block,
         values,
     })

@@ -23,6 +23,7 @@ const EXAMPLES: &[(&str, &str, &str)] = &[
     ("opmode", "opmode_sample2", "opmode_sample2"),
     ("kl6904_5_1", "kl6904_5_1", "kl6904_5_1"),
     ("kl6904_5_2", "kl6904_5_2", "kl6904_5_2"),
+    ("speed_monitor", "speed_monitor", "speed_monitor"),
 ];
 
 fn root() -> PathBuf {
