@@ -10,7 +10,8 @@
 #
 # Two parts (docs/release.md, "The ABI check"):
 #   1. abidiff (libabigail) of target/abi/libsafelogic.so (the `abi` profile: the release
-#      build with debug info, which abidw reads) against abi/libsafelogic.abi (abidw XML).
+#      build with debug info, which abidw reads) against abi/libsafelogic.abi (abidw XML,
+#      with the Rust module paths dropped from the names: see build_so).
 #      It sees the exported functions, their parameter and return types, the structs they
 #      reach (size, field offsets and types) and the SONAME. Added functions are compatible;
 #      anything else abidiff reports fails.
@@ -47,6 +48,21 @@ header_facts() {
         sed 's/^\(layout offsetof([^,]*\), /\1,/' | LC_ALL=C sort
 }
 
+# Compares a header's facts with abi/header.txt: a removed or changed line fails.
+compare_header() {
+    header_facts "$1" >"$out/header.txt"
+    grep -v '^#' abi/header.txt | LC_ALL=C comm -23 - "$out/header.txt" >"$out/header-lost.txt"
+    if [ -s "$out/header-lost.txt" ]; then
+        echo "$1: constants or layouts of safelogic $base_version removed or changed:"
+        while read -r kind key value; do
+            now=$(awk -v k="$kind" -v n="$key" '$1 == k && $2 == n { $1 = ""; $2 = ""; sub(/^  /, ""); print }' "$out/header.txt")
+            echo "  $kind $key: $value -> ${now:-(removed)}"
+        done <"$out/header-lost.txt"
+        return 1
+    fi
+    echo "$1: every constant and layout of safelogic $base_version unchanged ($(grep -vc '^#' abi/header.txt) lines; $(($(wc -l <"$out/header.txt") - $(grep -vc '^#' abi/header.txt))) added)"
+}
+
 build_so() {
     cargo build --quiet --profile abi -p safelogic --lib
     so=${CARGO_TARGET_DIR:-target}/abi/libsafelogic.so
@@ -55,8 +71,18 @@ build_so() {
         echo "FAIL: $so has no .debug_info (profile.abi must keep debug info)"; exit 1
     }
     abidw --no-corpus-path --no-comp-dir-path --no-show-locs --type-id-style hash \
-        --out-file "$out/libsafelogic.abi" "$so"
+        --out-file "$out/libsafelogic.rust.abi" "$so"
+    # abidw names each type and function with its Rust module path
+    # (safelogic::blocks::boolean::estop::FB_ESTOP); the C ABI has no module paths and the
+    # header names it FB_ESTOP. Without the paths, moving a type between Rust modules is no
+    # change, and the report speaks C: drop the namespace elements (types refer to each other
+    # by id, functions are matched by ELF symbol) and the path prefixes inside names.
+    sed -e "/^ *<namespace-decl name='[^']*'>\$/d" -e '/^ *<\/namespace-decl>$/d' \
+        -e ':a' -e "s/\(name='[^']*\)\b[A-Za-z_][A-Za-z0-9_]*::/\1/" -e 'ta' \
+        "$out/libsafelogic.rust.abi" >"$out/libsafelogic.abi"
 }
+
+base_version=$(sed -n '1s/^# safelogic \([^:]*\):.*/\1/p' abi/header.txt 2>/dev/null || true)
 
 case $mode in
 --update)
@@ -77,47 +103,67 @@ case $mode in
     cp -R Cargo.toml Cargo.lock build.rs cbindgen.toml src include project benches abi "$scratch/src/"
     mkdir -p "$scratch/src/tools"
     cp tools/abi_check.sh "$scratch/src/tools/"
-    run_break() { # name, file, sed expression, what the report must name
-        local name=$1 file=$2 expr=$3 must=$4 rc=0
+    run_break() { # name, file, sed expression, what the report must name (one or more)
+        local name=$1 file=$2 expr=$3 rc=0 must
+        shift 3
         cp "src/$file" "$scratch/src/src/$file"
+        cp include/safelogic.h "$scratch/src/include/safelogic.h"
         sed -i "$expr" "$scratch/src/src/$file"
         if cmp -s "src/$file" "$scratch/src/src/$file"; then
             echo "FAIL: self-test '$name': the break did not apply to src/$file"; exit 1
         fi
         echo "--- self-test: $name (src/$file):"
-        diff -u "src/$file" "$scratch/src/src/$file" | sed -n '3,$p' | grep '^[-+]' || true
-        CARGO_TARGET_DIR=$scratch/target ABI_CHECK_OUT=$scratch/out \
+        diff -U1 "src/$file" "$scratch/src/src/$file" | tail -n +3 || true
+        # SAFELOGIC_WRITE_HEADER: the scratch build regenerates its include/safelogic.h, as a
+        # change is committed (tests/header.rs fails a stale header)
+        CARGO_TARGET_DIR=$scratch/target ABI_CHECK_OUT=$scratch/out SAFELOGIC_WRITE_HEADER=1 \
             bash "$scratch/src/tools/abi_check.sh" >"$scratch/$name.log" 2>&1 || rc=$?
         cat "$scratch/$name.log"
         if [ "$rc" = 0 ]; then
             echo "FAIL: self-test '$name': the ABI check passed a broken ABI"; exit 1
         fi
-        if ! grep -F -- "$must" "$scratch/$name.log" >/dev/null; then
-            echo "FAIL: self-test '$name': the check failed, but its report does not name '$must'"; exit 1
-        fi
+        for must in "$@"; do
+            if ! grep -F -- "$must" "$scratch/$name.log" >/dev/null; then
+                echo "FAIL: self-test '$name': the check failed, but its report does not say: $must"; exit 1
+            fi
+        done
         cp "src/$file" "$scratch/src/src/$file"
-        echo "--- self-test: $name: the check fails (exit $rc) and names '$must'"
+        echo "--- self-test: $name: the check fails (exit $rc) and says: $(printf '[%s] ' "$@")"
     }
     # FB_ESTOP's bEDM1 and bEDM2 trade places (offsets 1 and 2; the doc comments stay, so
     # build.rs's own offset checks still agree and only a comparison with the release sees it)
     run_break moved-field blocks/boolean/estop.rs \
         's/pub bEDM1: SL_BOOL,/pub bEDM_X: SL_BOOL,/; s/pub bEDM2: SL_BOOL,/pub bEDM1: SL_BOOL,/; s/pub bEDM_X: SL_BOOL,/pub bEDM2: SL_BOOL,/' \
-        "'bEDM1' offset changed from 8 to 16 (in bits)"
+        "'function i32 sl_estop_cycle(FB_ESTOP*, u32)' has some indirect sub-type changes" \
+        "'u8 bEDM1' offset changed from 8 to 16 (in bits)" \
+        "layout offsetof(FB_ESTOP,bEDM1): 1 -> 2"
     # sl_ton2_restore_elapsed takes its time as uint16_t instead of uint32_t
     run_break changed-signature ffi/mod.rs \
         's/\(fn sl_ton2_restore_elapsed(fb: \*mut FB_TON2, nElapsedMs: \)u32\() -> i32 {\)/\1u16\2 let nElapsedMs = u32::from(nElapsedMs);/' \
-        "sl_ton2_restore_elapsed"
-    echo "ABI check self-test: both deliberate breaks fail the check"
+        "'function i32 sl_ton2_restore_elapsed(FB_TON2*, u32)' has some indirect sub-type changes" \
+        "type name changed from 'u32' to 'u16'"
+    # The constants: abidiff does not see them, the header comparison does (no build needed)
+    sed -e 's/^#define SL_E_INTERNAL (-7)$/#define SL_E_INTERNAL (-70)/' -e '/^#define SL_OPT_EDM1 /d' \
+        include/safelogic.h >"$scratch/constants.h"
+    grep -x '#define SL_E_INTERNAL (-70)' "$scratch/constants.h" >/dev/null
+    echo "--- self-test: changed-constants (SL_E_INTERNAL -7 -> -70, SL_OPT_EDM1 removed):"
+    rc=0
+    out=$scratch compare_header "$scratch/constants.h" >"$scratch/constants.log" || rc=$?
+    cat "$scratch/constants.log"
+    [ "$rc" != 0 ] && grep -F "define SL_E_INTERNAL: (-7) -> (-70)" "$scratch/constants.log" >/dev/null &&
+        grep -F "define SL_OPT_EDM1: " "$scratch/constants.log" | grep -F -- "-> (removed)" >/dev/null || {
+        echo "FAIL: self-test 'changed-constants': the header comparison did not fail on them"; exit 1
+    }
+    echo "ABI check self-test: the moved field, the changed signature and the changed constants fail the check"
     exit 0
     ;;
 check) ;;
 *) echo "usage: tools/abi_check.sh [--update | --self-test]" >&2; exit 2 ;;
 esac
 
-[ -f abi/libsafelogic.abi ] && [ -f abi/header.txt ] || {
+[ -f abi/libsafelogic.abi ] && [ -n "$base_version" ] || {
     echo "FAIL: abi/libsafelogic.abi or abi/header.txt missing (tools/abi_check.sh --update)"; exit 1
 }
-base_version=$(sed -n '1s/^# safelogic \([^:]*\):.*/\1/p' abi/header.txt)
 if [ "${base_version%%.*}" != "$major" ]; then
     echo "FAIL: Cargo.toml says $version, abi/ describes $base_version: a new major writes its"
     echo "      baseline (tools/abi_check.sh --update) in the same commit"
@@ -143,18 +189,7 @@ else
 fi
 
 # 2. the header's constants and layouts
-header_facts include/safelogic.h >"$out/header.txt"
-grep -v '^#' abi/header.txt | LC_ALL=C comm -23 - "$out/header.txt" >"$out/header-lost.txt"
-if [ -s "$out/header-lost.txt" ]; then
-    echo "include/safelogic.h: constants or layouts of safelogic $base_version removed or changed:"
-    while read -r kind key value; do
-        now=$(awk -v k="$kind" -v n="$key" '$1 == k && $2 == n { $1 = ""; $2 = ""; sub(/^  /, ""); print }' "$out/header.txt")
-        echo "  $kind $key: $value -> ${now:-(removed)}"
-    done <"$out/header-lost.txt"
-    fail=1
-else
-    echo "include/safelogic.h: every constant and layout of safelogic $base_version unchanged ($(grep -vc '^#' abi/header.txt) lines; $(($(wc -l <"$out/header.txt") - $(grep -vc '^#' abi/header.txt))) added)"
-fi
+compare_header include/safelogic.h || fail=1
 
 if [ "$fail" != 0 ]; then
     echo "FAIL: incompatible C ABI change against safelogic $base_version. If intended: raise the"

@@ -5,6 +5,7 @@
 # one with -static, runs /usr/bin/safelogic, removes both packages with dpkg -r and checks
 # that every file they listed is gone. Needs root (or sudo) for dpkg.
 set -euo pipefail
+trap 'echo "FAIL: tools/deb_check.sh line $LINENO: $BASH_COMMAND" >&2' ERR
 cd "$(dirname "$0")/.."
 root=$(pwd)
 if [ "$(id -u)" = 0 ]; then sudo_cmd=""; else sudo_cmd="sudo"; fi
@@ -58,7 +59,9 @@ unset PKG_CONFIG_PATH PKG_CONFIG_LIBDIR
 # shellcheck disable=SC2046
 cc -std=c11 -Wall -Wextra -Werror -pedantic examples/c/version_check.c \
     $(pkg-config --cflags --libs safelogic) -o "$work/version_check_dynamic"
-ldd "$work/version_check_dynamic" | grep -F "libsafelogic.so.$major => $libdir/libsafelogic.so.$major" >/dev/null
+# the loader resolves it to the packaged file (as /lib/<multiarch>/... on a merged-/usr system)
+loaded=$(ldd "$work/version_check_dynamic" | awk -v n="libsafelogic.so.$major" '$1 == n { print $3 }')
+[ -n "$loaded" ] && [ "$(readlink -f "$loaded")" = "$libdir/libsafelogic.so.$version" ]
 "$work/version_check_dynamic"
 # shellcheck disable=SC2046
 cc -static -std=c11 -Wall -Wextra -Werror -pedantic examples/c/version_check.c \
