@@ -1,7 +1,7 @@
 # Checks on built test binaries, run by ctest as `cmake -DMODE=... -DBINARY=... -P this`.
 #
 #   MODE=asan           the binary is instrumented: `nm` lists __asan_init and UBSan handlers
-#   MODE=shared         the binary needs libsafelogic.so.0 (the SONAME) at run time (DT_NEEDED),
+#   MODE=shared         the binary needs SONAME (libsafelogic.so.MAJOR) at run time (DT_NEEDED),
 #                       with an RPATH/RUNPATH to RPATH_DIR
 #   MODE=static         the binary contains the library (defines sl_estop_cycle) and does
 #                       not need libsafelogic.so
@@ -37,14 +37,18 @@ elseif(MODE STREQUAL "shared" OR MODE STREQUAL "static")
     message(FATAL_ERROR "${READELF} -d failed on ${BINARY}: ${rc}")
   endif()
   if(MODE STREQUAL "shared")
-    # the library's SONAME: NEEDED is libsafelogic.so.0, not the unversioned dev name
-    if(NOT dyn MATCHES "NEEDED[^\n]*\\[libsafelogic\\.so\\.0\\]")
-      message(FATAL_ERROR "${BINARY} does not need libsafelogic.so.0:\n${dyn}")
+    # the library's SONAME: NEEDED is libsafelogic.so.MAJOR, not the unversioned dev name
+    if(NOT SONAME MATCHES "^libsafelogic\\.so\\.[0-9]+$")
+      message(FATAL_ERROR "SONAME not set or malformed: '${SONAME}'")
+    endif()
+    string(REPLACE "." "\\." soname_re "${SONAME}")
+    if(NOT dyn MATCHES "NEEDED[^\n]*\\[${soname_re}\\]")
+      message(FATAL_ERROR "${BINARY} does not need ${SONAME}:\n${dyn}")
     endif()
     if(NOT dyn MATCHES "(RPATH|RUNPATH)[^\n]*${RPATH_DIR}")
       message(FATAL_ERROR "${BINARY} has no RPATH/RUNPATH to ${RPATH_DIR}:\n${dyn}")
     endif()
-    message(STATUS "${BINARY}: NEEDED libsafelogic.so.0, RPATH set")
+    message(STATUS "${BINARY}: NEEDED ${SONAME}, RPATH set")
   else()
     if(dyn MATCHES "libsafelogic")
       message(FATAL_ERROR "${BINARY} should link libsafelogic statically:\n${dyn}")

@@ -154,6 +154,30 @@ static void api_version(void)
     h_end();
 }
 
+/* What docs/release.md tells a program to do: refuse at compile time a header of another
+ * major, and at run time a library that does not serve this header. */
+#if !defined(SL_VERSION_MAJOR) || !defined(SL_VERSION_MINOR) || !defined(SL_VERSION_PATCH)
+#error "safelogic.h defines no SL_VERSION_MAJOR/MINOR/PATCH"
+#endif
+#if SL_VERSION_MAJOR < 1
+#error "these tests are written for the stable C ABI (major 1 or later)"
+#endif
+
+static void api_version_compatible(void)
+{
+    char macros[48];
+    h_begin("API sl_version_compatible and the SL_VERSION_* macros");
+    snprintf(macros, sizeof macros, "%d.%d.%d", SL_VERSION_MAJOR, SL_VERSION_MINOR, SL_VERSION_PATCH);
+    CHECK(strcmp(sl_version(), macros) == 0, "sl_version() differs from the header's SL_VERSION_* macros");
+    CHECK(sl_version_compatible(SL_VERSION_MAJOR, SL_VERSION_MINOR) == 1,
+          "the library refuses its own header");
+    CHECK(sl_version_compatible(SL_VERSION_MAJOR, 0) == 1, "an older minor refused");
+    CHECK(sl_version_compatible(SL_VERSION_MAJOR, SL_VERSION_MINOR + 1) == 0, "a newer minor accepted");
+    CHECK(sl_version_compatible(SL_VERSION_MAJOR + 1, 0) == 0, "the next major accepted");
+    CHECK(sl_version_compatible(SL_VERSION_MAJOR - 1, SL_VERSION_MINOR) == 0, "the previous major accepted");
+    h_end();
+}
+
 static void api_time_now(void)
 {
     uint32_t a, b, c, e;
@@ -181,5 +205,6 @@ void run_api_scenarios(void)
     api_status_str();
     api_state_str();
     api_version();
+    api_version_compatible();
     api_time_now();
 }

@@ -16,6 +16,15 @@
 #include <stddef.h>
 
 /*
+ The version of the library this header belongs to. A program checks at compile
+ time with these macros and at run time with
+ sl_version_compatible(SL_VERSION_MAJOR, SL_VERSION_MINOR) (docs/release.md).
+ */
+#define SL_VERSION_MAJOR 1
+#define SL_VERSION_MINOR 0
+#define SL_VERSION_PATCH 0
+
+/*
  First type tag of the PLCopen family.
  */
 #define SF_TAG_BASE 512
@@ -12791,6 +12800,14 @@ uint32_t sl_time_now_ms(void);
  Library version, static and NUL-terminated ("MAJOR.MINOR.PATCH").
  */
 const char *sl_version(void);
+
+/*
+ Whether this library serves a program compiled against the header of version
+ `major`.`minor`: pass `SL_VERSION_MAJOR, SL_VERSION_MINOR`. 1 when the majors are equal
+ and the header's minor is not newer than the library's (every function, struct layout
+ and constant of that header exists here unchanged: semver of the C ABI); 0 otherwise.
+ */
+SL_BOOL sl_version_compatible(uint32_t major, uint32_t minor);
 
 /*
  Writes the elapsed time an FB_TON2 has stored (ms; the manual's "ExpiredTime") to

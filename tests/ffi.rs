@@ -7,7 +7,10 @@
 
 mod common;
 use common::*;
-use safelogic::ffi::{sl_estop_cycle, sl_estop_init, sl_mon_cycle, sl_mon_init, sl_status_str};
+use safelogic::ffi::{
+    sl_estop_cycle, sl_estop_init, sl_mon_cycle, sl_mon_init, sl_status_str, sl_version,
+    sl_version_compatible,
+};
 use safelogic::*;
 use std::ffi::CStr;
 use std::mem::{align_of, offset_of, size_of};
@@ -257,6 +260,42 @@ fn status_texts_exist_for_every_code() {
     for code in [1, -9, i32::MIN, i32::MAX] {
         assert!(!sl_status_str(code).is_null());
     }
+}
+
+/// One version source: sl_version() and the header's SL_VERSION_* macros are Cargo's
+/// version; sl_version_compatible accepts exactly the same major with a minor not newer
+/// than the library's.
+#[test]
+fn version_text_macros_and_compatibility() {
+    // SAFETY: sl_version returns static, NUL-terminated text (ABI §5).
+    let text = unsafe { CStr::from_ptr(sl_version()) }.to_str().unwrap();
+    assert_eq!(text, env!("CARGO_PKG_VERSION"));
+    let header = include_str!(concat!(env!("CARGO_MANIFEST_DIR"), "/include/safelogic.h"));
+    let macro_value = |name: &str| -> u32 {
+        let line = header
+            .lines()
+            .find_map(|l| l.strip_prefix(&format!("#define {name} ")))
+            .unwrap_or_else(|| panic!("{name} missing from the header"));
+        line.trim().parse().unwrap()
+    };
+    let (major, minor, patch) = (
+        macro_value("SL_VERSION_MAJOR"),
+        macro_value("SL_VERSION_MINOR"),
+        macro_value("SL_VERSION_PATCH"),
+    );
+    assert_eq!(text, format!("{major}.{minor}.{patch}"));
+    assert_eq!(sl_version_compatible(major, minor), 1);
+    for older in 0..minor {
+        assert_eq!(sl_version_compatible(major, older), 1, "minor {older}");
+    }
+    assert_eq!(sl_version_compatible(major, minor + 1), 0, "a newer header");
+    assert_eq!(sl_version_compatible(major + 1, 0), 0, "the next major");
+    assert_eq!(
+        sl_version_compatible(major.wrapping_sub(1), minor),
+        0,
+        "the previous major"
+    );
+    assert_eq!(sl_version_compatible(u32::MAX, u32::MAX), 0);
 }
 
 /// ABI §5 numeric values, ABI §6 option bits, manual §4.4.2/§4.5.2 state values and diag

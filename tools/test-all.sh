@@ -16,6 +16,8 @@ command -v cc >/dev/null 2>&1 || missing="$missing gcc"
 command -v c++ >/dev/null 2>&1 || missing="$missing g++"
 command -v python3 >/dev/null 2>&1 || missing="$missing python3"
 command -v pkg-config >/dev/null 2>&1 || missing="$missing pkg-config"
+# dpkg-shlibdeps, dpkg-architecture: the Debian packages (tools/deb.sh)
+command -v dpkg-shlibdeps >/dev/null 2>&1 || missing="$missing dpkg-dev"
 python3 -c 'import venv, ensurepip' >/dev/null 2>&1 || missing="$missing python3-venv"
 if [ -n "$missing" ]; then
     echo "installing:$missing"
@@ -89,16 +91,26 @@ step "install step, SONAME and pkg-config: one program linked dynamically, one s
 rm -rf build/prefix build/stage
 bash tools/install.sh "$root/build/prefix"
 lib=build/prefix/lib
+# one version source: Cargo.toml's version names the files, the SONAME (major), the .pc,
+# the header's macros, sl_version() and the tool
+version=$(sed -n 's/^version = "\(.*\)"/\1/p' Cargo.toml | head -1)
+major=${version%%.*}
+grep -x "#define SL_VERSION_MAJOR $major" include/safelogic.h >/dev/null
+grep -x "#define SL_VERSION_MINOR $(echo "$version" | cut -d. -f2)" include/safelogic.h >/dev/null
+grep -x "#define SL_VERSION_PATCH $(echo "$version" | cut -d. -f3)" include/safelogic.h >/dev/null
+grep -x "Version: $version" "$lib/pkgconfig/safelogic.pc" >/dev/null
+[ "$(build/prefix/bin/safelogic --version)" = "safelogic $version" ]
 # versioned names: the real file, the SONAME link, the link-time link
-[ -f "$lib/libsafelogic.so.0.1.0" ] && [ ! -L "$lib/libsafelogic.so.0.1.0" ]
-[ "$(readlink "$lib/libsafelogic.so.0")" = libsafelogic.so.0.1.0 ]
-[ "$(readlink "$lib/libsafelogic.so")" = libsafelogic.so.0 ]
+[ -f "$lib/libsafelogic.so.$version" ] && [ ! -L "$lib/libsafelogic.so.$version" ]
+[ "$(readlink "$lib/libsafelogic.so.$major")" = "libsafelogic.so.$version" ]
+[ "$(readlink "$lib/libsafelogic.so")" = "libsafelogic.so.$major" ]
 # (grep reads to the end, never -q: a producer cut off by an early exit dies of SIGPIPE and
 # fails the pipeline under pipefail - seen with ldd on a loaded machine)
-readelf -d "$lib/libsafelogic.so.0.1.0" | grep 'Library soname: \[libsafelogic.so.0\]' >/dev/null
+readelf -d "$lib/libsafelogic.so.$version" | grep "Library soname: \[libsafelogic.so.$major\]" >/dev/null
 # DESTDIR + PREFIX (staged install for packaging): files under DESTDIR, the .pc names PREFIX
 DESTDIR="$root/build/stage" PREFIX=/usr bash tools/install.sh >/dev/null
-[ -L build/stage/usr/lib/libsafelogic.so.0 ] && [ -f build/stage/usr/include/safelogic.h ]
+[ -L "build/stage/usr/lib/libsafelogic.so.$major" ] && [ -f build/stage/usr/include/safelogic.h ]
+[ -x build/stage/usr/bin/safelogic ] && [ -f build/stage/usr/share/safelogic/plc_bindings/iec/safelogic_iec.st ]
 grep -qx 'prefix=/usr' build/stage/usr/lib/pkgconfig/safelogic.pc
 export PKG_CONFIG_PATH="$root/build/prefix/lib/pkgconfig"
 # Dynamic, as README and docs/c-integration.md say: pkg-config, plus an rpath to pkg-config's libdir (or install
@@ -106,8 +118,8 @@ export PKG_CONFIG_PATH="$root/build/prefix/lib/pkgconfig"
 # shellcheck disable=SC2046
 cc -std=c11 -Wall -Wextra -Werror -pedantic examples/c/group_examples.c $(pkg-config --cflags --libs safelogic) \
     -Wl,-rpath,"$(pkg-config --variable=libdir safelogic)" -o build/prefix/group_examples_dynamic
-readelf -d build/prefix/group_examples_dynamic | grep 'NEEDED.*\[libsafelogic.so.0\]' >/dev/null
-ldd build/prefix/group_examples_dynamic | grep "libsafelogic.so.0 => $root/build/prefix/lib/libsafelogic.so.0" >/dev/null
+readelf -d build/prefix/group_examples_dynamic | grep "NEEDED.*\[libsafelogic.so.$major\]" >/dev/null
+ldd build/prefix/group_examples_dynamic | grep "libsafelogic.so.$major => $root/build/prefix/lib/libsafelogic.so.$major" >/dev/null
 build/prefix/group_examples_dynamic >/dev/null
 # Static, as docs/c-integration.md says: pkg-config --static (Libs.private) with -static
 # shellcheck disable=SC2046
@@ -118,8 +130,16 @@ if readelf -d build/prefix/group_examples_static 2>/dev/null | grep NEEDED >/dev
     echo "static program needs shared libraries:"; readelf -d build/prefix/group_examples_static; exit 1
 fi
 build/prefix/group_examples_static >/dev/null
-echo "installed: libsafelogic.so.0.1.0 (SONAME libsafelogic.so.0) with links, static library $(du -k "$lib/libsafelogic.a" | cut -f1) KiB, header, safelogic.pc (also under DESTDIR)"
-echo "a program linked with pkg-config runs dynamically (NEEDED libsafelogic.so.0) and statically (no NEEDED)"
+echo "installed: libsafelogic.so.$version (SONAME libsafelogic.so.$major) with links, static library $(du -k "$lib/libsafelogic.a" | cut -f1) KiB, header, safelogic.pc, tool, ST bindings (also under DESTDIR)"
+echo "a program linked with pkg-config runs dynamically (NEEDED libsafelogic.so.$major) and statically (no NEEDED)"
+
+step "C ABI against the release baseline abi/ (abidiff, header constants and layouts), and the check's self-test"
+bash tools/abi_check.sh
+# the check is shown to fail, every run: a moved field and a changed signature (scratch copy)
+bash tools/abi_check.sh --self-test
+
+step "Debian packages: build, dpkg -i, a C program via pkg-config (dynamic and -static), dpkg -r"
+bash tools/deb_check.sh
 
 step "matiec (iec2c, the IEC 61131-3 compiler of OpenPLC/Beremiz) from ../shared/vendor/matiec"
 matiec_src="$root/../shared/vendor/matiec"

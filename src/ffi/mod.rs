@@ -160,6 +160,35 @@ pub extern "C" fn sl_version() -> *const c_char {
 
 const VERSION: &str = concat!(env!("CARGO_PKG_VERSION"), "\0");
 
+/// Whether this library serves a program compiled against the header of version
+/// `major`.`minor`: pass `SL_VERSION_MAJOR, SL_VERSION_MINOR`. 1 when the majors are equal
+/// and the header's minor is not newer than the library's (every function, struct layout
+/// and constant of that header exists here unchanged: semver of the C ABI); 0 otherwise.
+#[no_mangle]
+pub extern "C" fn sl_version_compatible(major: u32, minor: u32) -> SL_BOOL {
+    // `cmp`, not `<=`: with the minor 0 of an X.0 release, clippy rejects `minor <= 0` as an
+    // absurd comparison, though the value comes from Cargo.toml and changes.
+    ffi_boundary!(
+        0,
+        SL_BOOL::from(major == VERSION_MAJOR && minor.cmp(&VERSION_MINOR).is_le())
+    )
+}
+
+const VERSION_MAJOR: u32 = decimal(env!("CARGO_PKG_VERSION_MAJOR"));
+const VERSION_MINOR: u32 = decimal(env!("CARGO_PKG_VERSION_MINOR"));
+
+/// A Cargo version part ("0", "12") as a number, at compile time.
+const fn decimal(digits: &str) -> u32 {
+    let b = digits.as_bytes();
+    let mut v = 0;
+    let mut i = 0;
+    while i < b.len() {
+        v = v * 10 + (b[i] - b'0') as u32;
+        i += 1;
+    }
+    v
+}
+
 /// Writes the elapsed time an FB_TON2 has stored (ms; the manual's "ExpiredTime") to
 /// `*pElapsedMs`, for the host to persist across a power cycle. Call it after
 /// `sl_ton2_cycle` (every cycle, or whenever the value changed) and write the value to
