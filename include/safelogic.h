@@ -12898,7 +12898,8 @@ int32_t sl_group_add_link_kind(struct SL_GROUP *g, struct SL_MEMBER *aMembers, s
  with the same `tNow`. Returns the group's status or the worst status of a member.
  A member entry or link that fails its check, or tables that share a byte with the
  group, are member errors: the group enters ERROR, every reachable member is stopped in
- this cycle, SL_E_CORRUPT (docs/semantics.md GR13, GR14).
+ this cycle, SL_E_CORRUPT (docs/semantics.md GR13, GR14). A NULL member table (group with
+ members) or link table (group with links): the same safe state, SL_E_NULL (GR16).
 
  # Safety
  As for `sl_group_init`, with the same tables; every member block is still alive and in
