@@ -1849,6 +1849,12 @@
 #define SL_FSOE_OPT_MODULE_ERR_IS_COMERR (1 << 1)
 
 /*
+ Option (slave): accept only the configured `nConnectionId`; without it the slave takes
+ the non-zero Connection ID the master sends (fsoe.md §7, §11; semantics FS11).
+ */
+#define SL_FSOE_OPT_PIN_CONNID (1 << 2)
+
+/*
  Connection state Reset (manual §3.2.1.3).
  */
 #define SL_FSOE_STATE_RESET 100
@@ -2528,7 +2534,7 @@ typedef struct SL_FSOE_CONN_PRIVATE {
    */
   uint8_t nRxLen;
   /*
-   Latched dwOptions (bits 0-1).
+   Latched dwOptions (bits 0-2).
    */
   uint8_t nOptions;
   /*
@@ -2580,9 +2586,14 @@ typedef struct SL_FSOE_CONN_PRIVATE {
    */
   uint8_t aRxData[32];
   /*
+   Slave: the Connection ID of this session, taken from the master's first Connection
+   frame (0 until then; the master uses its configured ID).
+   */
+  uint16_t nSessionConnId;
+  /*
    Reserved.
    */
-  uint8_t aReserved[4];
+  uint8_t aReserved[2];
 } SL_FSOE_CONN_PRIVATE;
 
 /*
@@ -2631,7 +2642,8 @@ typedef struct SL_FSOE_CONN {
    */
   uint8_t aTxSafeData[32];
   /*
-   Offset 48. Parameter: Connection ID, 1…65535, unique per bus.
+   Offset 48. Parameter: Connection ID, 1…65535, unique per bus. A master sends it; a
+   slave takes the master's and accepts only this one with SL_FSOE_OPT_PIN_CONNID.
    */
   uint16_t nConnectionId;
   /*
@@ -13307,7 +13319,8 @@ SL_STATIC_ASSERT(offsetof(SL_FSOE_CONN_PRIVATE, aLastRx) == 44, "offset of SL_FS
 SL_STATIC_ASSERT(offsetof(SL_FSOE_CONN_PRIVATE, aOwnPara) == 112, "offset of SL_FSOE_CONN_PRIVATE.aOwnPara");
 SL_STATIC_ASSERT(offsetof(SL_FSOE_CONN_PRIVATE, aRxItem) == 184, "offset of SL_FSOE_CONN_PRIVATE.aRxItem");
 SL_STATIC_ASSERT(offsetof(SL_FSOE_CONN_PRIVATE, aRxData) == 260, "offset of SL_FSOE_CONN_PRIVATE.aRxData");
-SL_STATIC_ASSERT(offsetof(SL_FSOE_CONN_PRIVATE, aReserved) == 292, "offset of SL_FSOE_CONN_PRIVATE.aReserved");
+SL_STATIC_ASSERT(offsetof(SL_FSOE_CONN_PRIVATE, nSessionConnId) == 292, "offset of SL_FSOE_CONN_PRIVATE.nSessionConnId");
+SL_STATIC_ASSERT(offsetof(SL_FSOE_CONN_PRIVATE, aReserved) == 294, "offset of SL_FSOE_CONN_PRIVATE.aReserved");
 SL_STATIC_ASSERT(sizeof(SL_FSOE_CONN_PRIVATE) == 296, "size of SL_FSOE_CONN_PRIVATE");
 SL_STATIC_ASSERT(offsetof(SL_FSOE_CONN, bRun) == 0, "offset of SL_FSOE_CONN.bRun");
 SL_STATIC_ASSERT(offsetof(SL_FSOE_CONN, bErrAck) == 1, "offset of SL_FSOE_CONN.bErrAck");
