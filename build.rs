@@ -5,7 +5,8 @@
 //! the computed offset. The header lands in OUT_DIR; with SAFELOGIC_WRITE_HEADER set it is
 //! also written to include/safelogic.h (the committed copy a test compares against).
 
-use std::collections::HashMap;
+use cbindgen::bindgen::ir::{IntKind, PrimitiveType, Type};
+use std::collections::{HashMap, HashSet};
 use std::env;
 use std::fs;
 use std::path::{Path, PathBuf};
@@ -66,6 +67,7 @@ fn main() {
     bindings.write(&mut raw);
     let text = String::from_utf8(raw).expect("header is UTF-8");
     let text = name_variant_structs(&drop_empty_arrays(&text));
+    let text = c_constant_literals(&text, &unsigned_constants(&bindings));
     let (header, rust_checks) = with_layout_checks(&with_block_prototypes(
         &parenthesize_negative_defines(&text),
         &rows,
@@ -251,6 +253,65 @@ fn replace_word(text: &str, from: &str, to: &str) -> String {
         rest = &rest[pos + from.len()..];
     }
     out.push_str(rest);
+    out
+}
+
+/// The constants whose Rust type is `u32` or `u64` (C `uint32_t`, `uint64_t`).
+fn unsigned_constants(bindings: &cbindgen::Bindings) -> HashSet<String> {
+    bindings
+        .constants
+        .iter()
+        .filter(|c| {
+            matches!(
+                c.ty,
+                Type::Primitive(PrimitiveType::Integer {
+                    signed: false,
+                    kind: IntKind::B32 | IntKind::B64,
+                    ..
+                })
+            )
+        })
+        .map(|c| c.export_name.clone())
+        .collect()
+}
+
+/// The literals of the `#define`s as a C reader expects them: the Text IDs (`SL_TEXT_…`) in
+/// hex, as the manual lists them (`0x4090`); an unsigned 32/64-bit constant with `U`
+/// (`4294967000U`, `(1U << 2)`), so its C type is unsigned on every platform (a literal
+/// above INT_MAX would otherwise be `long` or `long long`, and `1 << 31` overflows `int`).
+/// Any other literal above INT_MAX stops the build: it would need a type decided here.
+fn c_constant_literals(text: &str, unsigned: &HashSet<String>) -> String {
+    let mut out = String::with_capacity(text.len() + 1024);
+    for line in text.lines() {
+        let Some((name, value)) = line
+            .strip_prefix("#define ")
+            .and_then(|r| r.split_once(' '))
+            .filter(|(n, _)| n.starts_with("SL_"))
+        else {
+            out.push_str(line);
+            out.push('\n');
+            continue;
+        };
+        let decimal = value.parse::<u64>().ok();
+        let value = if let (true, Some(v)) = (name.starts_with("SL_TEXT_"), decimal) {
+            format!("0x{v:04X}")
+        } else if unsigned.contains(name) {
+            match (decimal, value.strip_prefix("(1 << ")) {
+                (Some(v), _) => format!("{v}U"),
+                (None, Some(shift)) => format!("(1U << {shift}"),
+                _ => panic!("unsigned constant {name} = {value}: unknown literal form"),
+            }
+        } else {
+            if let Some(v) = decimal {
+                assert!(
+                    v <= i32::MAX as u64,
+                    "{name} = {value} needs an unsigned type"
+                );
+            }
+            value.to_string()
+        };
+        out.push_str(&format!("#define {name} {value}\n"));
+    }
     out
 }
 

@@ -813,6 +813,15 @@ _Static_assert(SL_OK == 0 && SL_E_NULL == -1 && SL_E_CONFIG == -2 && SL_E_PARAM_
 _Static_assert(SL_OPT_EDM1 == 1 && SL_OPT_EDM2 == 2 && SL_OPT_SAFE_INPUTS_AFTER_DISC == 4 &&
                    SL_OPT_MANUAL_RESTART == 8 && SL_OPT_FUNCTION_TEST == 16,
                "option bits (ABI §6)");
+/* Unsigned 32-bit constants are unsigned in C too, whatever the platform's int (build.rs
+ * writes them with U): a literal above INT_MAX, or 1 << 31, would be signed or overflow. */
+#define SL_IS_UNSIGNED(x) _Generic((x), unsigned int: 1, unsigned long: 1, default: 0)
+_Static_assert(SL_IS_UNSIGNED(SL_SBT_TIME_MAX) && SL_SBT_TIME_MAX == 4294967000u &&
+                   SL_IS_UNSIGNED(SL_OPT_EDM1) && SL_IS_UNSIGNED(SL_FSOE_OPT_PIN_CONNID) &&
+                   SL_IS_UNSIGNED(SL_SF_TIME_MAX) && SL_IS_UNSIGNED(SL_TIME_PARAM_MAX),
+               "u32 constants are unsigned");
+/* Text IDs as the manual lists them (§4.21: 0x4090). */
+_Static_assert(SL_TEXT_LIMIT_MIN_ABOVE_MAX == 0x4090, "Text ID of LIMIT Minimum > Maximum");
 _Static_assert(SL_STATE_RUN == 1 && SL_STATE_STOP == 2 && SL_STATE_SAFE == 3 &&
                    SL_STATE_ERROR == 4 && SL_STATE_RESET == 5 && SL_STATE_START == 6 &&
                    SL_STATE_ERRORDELAY == 7 && SL_STATE_DELAYOUT == 8 && SL_STATE_FUNCTEST == 9,

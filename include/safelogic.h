@@ -76,7 +76,7 @@
  Largest monitored time of an `SF_` block (ms; 2^31 − 1, the half circle of the
  wrapping clock).
  */
-#define SL_SF_TIME_MAX 2147483647
+#define SL_SF_TIME_MAX 2147483647U
 
 /*
  The DiagCode meaning "the block is activated and its safety output is enabled".
@@ -158,44 +158,44 @@
 /*
  EDM1 feedback loop active.
  */
-#define SL_OPT_EDM1 (1 << 0)
+#define SL_OPT_EDM1 (1U << 0)
 
 /*
  EDM2 feedback loop active.
  */
-#define SL_OPT_EDM2 (1 << 1)
+#define SL_OPT_EDM2 (1U << 1)
 
 /*
  "Safe Inputs after Disc Error".
  */
-#define SL_OPT_SAFE_INPUTS_AFTER_DISC (1 << 2)
+#define SL_OPT_SAFE_INPUTS_AFTER_DISC (1U << 2)
 
 /*
  Manual (active) restart (MON; ESTOP always restarts manually).
  */
-#define SL_OPT_MANUAL_RESTART (1 << 3)
+#define SL_OPT_MANUAL_RESTART (1U << 3)
 
 /*
  Manual function test (MON).
  */
-#define SL_OPT_FUNCTION_TEST (1 << 4)
+#define SL_OPT_FUNCTION_TEST (1U << 4)
 
 /*
  FB_MUTING "Sequential Inputs": the four muting inputs are single-channel sensors checked
  one after the other (clear: two two-channel groups MutingIn1/2 and MutingIn3/4, parallel).
  */
-#define SL_OPT_MUTING_SEQUENTIAL (1 << 8)
+#define SL_OPT_MUTING_SEQUENTIAL (1U << 8)
 
 /*
  FB_MUTING "Backwards Mode" (EL6910): a sequence may also run backwards, starting at MutingIn4.
  */
-#define SL_OPT_MUTING_BACKWARDS (1 << 9)
+#define SL_OPT_MUTING_BACKWARDS (1U << 9)
 
 /*
  FB_MUTING "OSSD Check Optional" (EL6910): the protective field is not part of the sequence
  check; it may be interrupted at any step of a running sequence.
  */
-#define SL_OPT_MUTING_OSSD_CHECK_OPTIONAL (1 << 10)
+#define SL_OPT_MUTING_OSSD_CHECK_OPTIONAL (1U << 10)
 
 /*
  Diag bit 6 (FB_MUTING): the muting sequence was violated.
@@ -332,7 +332,7 @@
  Largest time parameter of FB_ESTOP and FB_MON, and largest discrepancy time of FB_OPMODE
  and FB_TWOHAND, in ms (see docs/semantics.md C10, O3, H3).
  */
-#define SL_TIME_PARAM_MAX 65535
+#define SL_TIME_PARAM_MAX 65535U
 
 /*
  Diag value 1 of every analog block with a range check (ABI-2 §12.1): the result is
@@ -443,12 +443,12 @@
 /*
  Diag message "An underflow has occurred" (parameters: AnalogIn1, AnalogIn2).
  */
-#define SL_TEXT_ARITH_UNDERFLOW 16512
+#define SL_TEXT_ARITH_UNDERFLOW 0x4080
 
 /*
  Diag message "An overflow has occurred" (parameters: AnalogIn1, AnalogIn2).
  */
-#define SL_TEXT_ARITH_OVERFLOW 16513
+#define SL_TEXT_ARITH_OVERFLOW 0x4081
 
 /*
  `wInputActive` of every arithmetic block: AnalogIn1 (bit 8) and AnalogIn2 (bit 9),
@@ -514,12 +514,12 @@
 /*
  Diag message "An underflow has occurred" (parameters: ActValue, smallest permitted value).
  */
-#define SL_TEXT_COUNTER_UNDERFLOW 16568
+#define SL_TEXT_COUNTER_UNDERFLOW 0x40B8
 
 /*
  Diag message "An overflow has occurred" (parameters: ActValue, largest permitted value).
  */
-#define SL_TEXT_COUNTER_OVERFLOW 16569
+#define SL_TEXT_COUNTER_OVERFLOW 0x40B9
 
 /*
  `wInputActive` bits of Reset, CountUp, CountDown (optional: an inactive input reads FALSE).
@@ -575,12 +575,12 @@
 /*
  Diag message "InValueExpired AND InValue < 0" (parameters: InValue, MinAllowedValue).
  */
-#define SL_TEXT_ENVELOPE_UNDERFLOW 16584
+#define SL_TEXT_ENVELOPE_UNDERFLOW 0x40C8
 
 /*
  Diag message "InValueExpired AND InValue > 0" (parameters: InValue, MaxAllowedValue).
  */
-#define SL_TEXT_ENVELOPE_OVERFLOW 16585
+#define SL_TEXT_ENVELOPE_OVERFLOW 0x40C9
 
 /*
  `wInputActive` of FB ENVELOPE: SafeFunction (bit 0) and InValue (bit 8), both required.
@@ -590,7 +590,7 @@
 /*
  Largest `tTimeAfterInTarget` and `tMaxTime` (ms; ABI-2 §12.9, semantics C10).
  */
-#define SL_ENVELOPE_TIME_MAX 65535
+#define SL_ENVELOPE_TIME_MAX 65535U
 
 /*
  Type tag of FB_LIMIT_INT (ABI-2 §10.6: sequential from 16 in the order of §10.3).
@@ -620,7 +620,7 @@
 /*
  Diag message "MinValue is greater than MaxValue" (parameters: MinValue, MaxValue).
  */
-#define SL_TEXT_LIMIT_MIN_ABOVE_MAX 16528
+#define SL_TEXT_LIMIT_MIN_ABOVE_MAX 0x4090
 
 /*
  `wInputActive` bit of AnalogIn (required).
@@ -675,7 +675,7 @@
 /*
  `dwOptions` bit 8: "Outside [y1; y2]": values outside Y1…Y2 are valid.
  */
-#define SL_OPT_LOADSENSING_OUTSIDE (1 << 8)
+#define SL_OPT_LOADSENSING_OUTSIDE (1U << 8)
 
 /*
  `wInputActive` bit of Inactive (optional: clear = reads FALSE, the block evaluates).
@@ -716,7 +716,7 @@
  `dwOptions`: "Multiplication First" FALSE — divide by `nDenominator` before multiplying
  by `nNumerator` (default: multiplication first).
  */
-#define SL_OPT_SCALE_DIVISION_FIRST (1 << 8)
+#define SL_OPT_SCALE_DIVISION_FIRST (1U << 8)
 
 /*
  Diag value 3: "A 32-bit overflow occurred during the multiplication."
@@ -731,23 +731,23 @@
 /*
  Diag message "The output AnalogOut has an underflow" (parameter 2: AnalogIn).
  */
-#define SL_TEXT_SCALE_UNDERFLOW 16560
+#define SL_TEXT_SCALE_UNDERFLOW 0x40B0
 
 /*
  Diag message "The output AnalogOut has an overflow" (parameter 2: AnalogIn).
  */
-#define SL_TEXT_SCALE_OVERFLOW 16561
+#define SL_TEXT_SCALE_OVERFLOW 0x40B1
 
 /*
  Diag message "A 32-bit overflow occurred during the multiplication." (parameter 2: AnalogIn).
  */
-#define SL_TEXT_SCALE_MUL_OVERFLOW 16562
+#define SL_TEXT_SCALE_MUL_OVERFLOW 0x40B2
 
 /*
  Diag message "A 32-bit overflow occurred during the division due to rounding."
  (parameter 2: AnalogIn).
  */
-#define SL_TEXT_SCALE_DIV_OVERFLOW 16563
+#define SL_TEXT_SCALE_DIV_OVERFLOW 0x40B3
 
 /*
  `wInputActive` bit of AnalogIn (required, the only bit).
@@ -823,17 +823,17 @@
  `dwOptions`: "Overflow Check" — the position difference is taken modulo 2^W before the
  range check (a position counter wrapping at its type's end is no jump).
  */
-#define SL_OPT_SPEED_OVERFLOW_CHECK (1 << 8)
+#define SL_OPT_SPEED_OVERFLOW_CHECK (1U << 8)
 
 /*
  Diag message "An underflow has occurred." (parameters: current, latched position).
  */
-#define SL_TEXT_SPEED_UNDERFLOW 16520
+#define SL_TEXT_SPEED_UNDERFLOW 0x4088
 
 /*
  Diag message "An overflow has occurred." (parameters: current, latched position).
  */
-#define SL_TEXT_SPEED_OVERFLOW 16521
+#define SL_TEXT_SPEED_OVERFLOW 0x4089
 
 /*
  `wInputActive` bit of Position (required, the only bit).
@@ -859,12 +859,12 @@
  Diag message "An underflow has occurred" (parameters: Position, LatchPosition); FB SLI2
  reports it too.
  */
-#define SL_TEXT_SLI_UNDERFLOW 16576
+#define SL_TEXT_SLI_UNDERFLOW 0x40C0
 
 /*
  Diag message "An overflow has occurred" (parameters: Position, LatchPosition).
  */
-#define SL_TEXT_SLI_OVERFLOW 16577
+#define SL_TEXT_SLI_OVERFLOW 0x40C1
 
 /*
  `wInputActive` of FB_SLI and FB_SLI2: SLI (bit 0) and Position (bit 8), both required,
@@ -881,12 +881,12 @@
 /*
  `dwOptions` "OverflowAllowed": PositionDiff modulo 2^W in the signed range.
  */
-#define SL_OPT_SLI2_OVERFLOW_ALLOWED (1 << 8)
+#define SL_OPT_SLI2_OVERFLOW_ALLOWED (1U << 8)
 
 /*
  `dwOptions` "ExceededSupport": leaving the window in RUN enters EXCEEDED, not ERROR.
  */
-#define SL_OPT_SLI2_EXCEEDED_SUPPORT (1 << 9)
+#define SL_OPT_SLI2_EXCEEDED_SUPPORT (1U << 9)
 
 /*
  Block type tag of FB_AND.
@@ -926,7 +926,7 @@
 /*
  Largest tSwitchOnTime / tSwitchOffTime of FB_EDM in ms (manual §4.9.1: "maximum 10000 ms").
  */
-#define SL_EDM_TIME_MAX 10000
+#define SL_EDM_TIME_MAX 10000U
 
 /*
  Block type tag of FB_ESTOP (`SL_MEMBER.nType`, `sl_diag_text`).
@@ -1001,17 +1001,17 @@
 /*
  Largest `tFilterTime` of FB_MUTING in ms (manual §4.8.1: "up to 500 ms").
  */
-#define SL_MUTING_FILTER_TIME_MAX 500
+#define SL_MUTING_FILTER_TIME_MAX 500U
 
 /*
  Largest `tMaxMutingTime` of FB_MUTING in ms (manual §4.8.1: "a maximum of 10 minutes").
  */
-#define SL_MUTING_MAX_MUTING_TIME_MAX 600000
+#define SL_MUTING_MAX_MUTING_TIME_MAX 600000U
 
 /*
  Largest `tMuteDelOutDelay` of FB_MUTING in ms (manual §4.8.1: "delayed by up to 30 seconds").
  */
-#define SL_MUTING_DELOUT_DELAY_MAX 30000
+#define SL_MUTING_DELOUT_DELAY_MAX 30000U
 
 /*
  FB_OPMODE diag bit 0: discrepancy monitoring error (no mode or more than one mode selected
@@ -1049,7 +1049,7 @@
  FB_TON2 "Starts with remaining time" (manual §4.13): with Enable TRUE when TonIn rises,
  the timer starts with tDelay minus the stored elapsed time.
  */
-#define SL_OPT_TON2_REMAINING_TIME (1 << 8)
+#define SL_OPT_TON2_REMAINING_TIME (1U << 8)
 
 /*
  `nTimeBase` of FB_TON/FB_TON2/FB_TOF: automatic, the smallest timebase whose range
@@ -1080,12 +1080,12 @@
 /*
  Most timebase steps in a timer delay (tDelay / timebase).
  */
-#define SL_TIMER_STEPS_MAX 60000
+#define SL_TIMER_STEPS_MAX 60000U
 
 /*
  Largest timer delay in ms (60,000 s; 60,000 steps of 1000 ms).
  */
-#define SL_TIMER_DELAY_MAX 60000000
+#define SL_TIMER_DELAY_MAX 60000000U
 
 /*
  Block type tag of FB_TOF.
@@ -1150,7 +1150,7 @@
 /*
  Largest tDiscTimePairs of FB_TWOHAND in ms (manual §4.7.1: "up to 2500 ms").
  */
-#define SL_TWOHAND_PAIRS_TIME_MAX 2500
+#define SL_TWOHAND_PAIRS_TIME_MAX 2500U
 
 /*
  Block type tag of FB_XOR.
@@ -1175,7 +1175,7 @@
 /*
  Diag message of the ERROR state ("transfers the Diag message 0x38D1").
  */
-#define SL_TEXT_ADVPOSMON_SDFB_ERROR 14545
+#define SL_TEXT_ADVPOSMON_SDFB_ERROR 0x38D1
 
 /*
  `wInputActive` bit of Enable (required).
@@ -1205,7 +1205,7 @@
 /*
  Option: "Pendulum Mode"; clear = "Excentric Mode".
  */
-#define SL_OPT_CAMMONITOR_PENDULUM (1 << 8)
+#define SL_OPT_CAMMONITOR_PENDULUM (1U << 8)
 
 /*
  State WAIT-FOR-RESET (15): waiting for a Reset pulse after STOP or RESET.
@@ -1365,7 +1365,7 @@
 /*
  Largest value of the three TIME parameters (ABI-2 §12.9, semantics C10).
  */
-#define SL_CAMMONITOR_TIME_MAX 65535
+#define SL_CAMMONITOR_TIME_MAX 65535U
 
 /*
  `nDiag` of a message = its Text ID minus this (ABI-2 §10.4: no diag table).
@@ -1375,188 +1375,188 @@
 /*
  Message 0x4001 (pendulum): TDC2UpperLimit <= AllowedPositionJitter.
  */
-#define SL_TEXT_CAMMONITOR_TDC2UL_JITTER 16385
+#define SL_TEXT_CAMMONITOR_TDC2UL_JITTER 0x4001
 
 /*
  Message 0x4002: Position > MaxPosition + AllowedPositionJitter.
  */
-#define SL_TEXT_CAMMONITOR_POSITION_RANGE 16386
+#define SL_TEXT_CAMMONITOR_POSITION_RANGE 0x4002
 
 /*
  Message 0x4003: OverrunCAM FALSE in the TDC area.
  */
-#define SL_TEXT_CAMMONITOR_OVERRUNCAM_FALSE_TDC 16387
+#define SL_TEXT_CAMMONITOR_OVERRUNCAM_FALSE_TDC 0x4003
 
 /*
  Message 0x4004: OverrunCAM rose outside BDCUpperLimit … TDCLowerLimit.
  */
-#define SL_TEXT_CAMMONITOR_OVERRUNCAM_RISE 16388
+#define SL_TEXT_CAMMONITOR_OVERRUNCAM_RISE 0x4004
 
 /*
  Message 0x4005: OverrunCAM TRUE in the BDC area beyond BDCLowerLimit.
  */
-#define SL_TEXT_CAMMONITOR_OVERRUNCAM_TRUE_BDC 16389
+#define SL_TEXT_CAMMONITOR_OVERRUNCAM_TRUE_BDC 0x4005
 
 /*
  Message 0x4006: OverrunCAM fell outside OverrunMax … BDCLowerLimit.
  */
-#define SL_TEXT_CAMMONITOR_OVERRUNCAM_FALL 16390
+#define SL_TEXT_CAMMONITOR_OVERRUNCAM_FALL 0x4006
 
 /*
  Message 0x4007: UpwardsCAM FALSE between BDCUpperLimit and TDCLowerLimit.
  */
-#define SL_TEXT_CAMMONITOR_UPWARDCAM_FALSE_LEFT 16391
+#define SL_TEXT_CAMMONITOR_UPWARDCAM_FALSE_LEFT 0x4007
 
 /*
  Message 0x4008: UpwardsCAM rose outside BDCLowerLimit … TDCLowerLimit.
  */
-#define SL_TEXT_CAMMONITOR_UPWARDCAM_RISE 16392
+#define SL_TEXT_CAMMONITOR_UPWARDCAM_RISE 0x4008
 
 /*
  Message 0x4009: UpwardsCAM fell outside TDCLowerLimit … OverrunMax.
  */
-#define SL_TEXT_CAMMONITOR_UPWARDCAM_FALL 16393
+#define SL_TEXT_CAMMONITOR_UPWARDCAM_FALL 0x4009
 
 /*
  Message 0x400A: moved in MOVE-STOP.
  */
-#define SL_TEXT_CAMMONITOR_MOVED_MOVE_STOP 16394
+#define SL_TEXT_CAMMONITOR_MOVED_MOVE_STOP 0x400A
 
 /*
  Message 0x400B: moved in MOVE-START (and in START, excentric).
  */
-#define SL_TEXT_CAMMONITOR_MOVED_MOVE_START 16395
+#define SL_TEXT_CAMMONITOR_MOVED_MOVE_START 0x400B
 
 /*
  Message 0x400C: between OverrunMax and BDC in MOVE-UP.
  */
-#define SL_TEXT_CAMMONITOR_MOVE_UP_AREA 16396
+#define SL_TEXT_CAMMONITOR_MOVE_UP_AREA 0x400C
 
 /*
  Message 0x400D: left the TDC area (past OverrunMax) while waiting for a stop.
  */
-#define SL_TEXT_CAMMONITOR_LEFT_TDC 16397
+#define SL_TEXT_CAMMONITOR_LEFT_TDC 0x400D
 
 /*
  Message 0x400E: moved backwards without BackwardsMove.
  */
-#define SL_TEXT_CAMMONITOR_BACKWARDS 16398
+#define SL_TEXT_CAMMONITOR_BACKWARDS 0x400E
 
 /*
  Message 0x400F: UpwardsCAM TRUE between OverrunMax and BDCLowerLimit.
  */
-#define SL_TEXT_CAMMONITOR_UPWARDCAM_TRUE_RIGHT 16399
+#define SL_TEXT_CAMMONITOR_UPWARDCAM_TRUE_RIGHT 0x400F
 
 /*
  Message 0x4010 (pendulum): circle overflow.
  */
-#define SL_TEXT_CAMMONITOR_CIRCLE_OVERFLOW 16400
+#define SL_TEXT_CAMMONITOR_CIRCLE_OVERFLOW 0x4010
 
 /*
  Message 0x4011 (pendulum): moved in MOVE-STOP-TDC1/2.
  */
-#define SL_TEXT_CAMMONITOR_MOVED_STOP_TDC 16401
+#define SL_TEXT_CAMMONITOR_MOVED_STOP_TDC 0x4011
 
 /*
  Message 0x4012: BackwardsMove TRUE between 180° and 360°.
  */
-#define SL_TEXT_CAMMONITOR_BACKWARDS_AREA 16402
+#define SL_TEXT_CAMMONITOR_BACKWARDS_AREA 0x4012
 
 /*
  Message 0x4013: BackwardsMove TRUE while moving clockwise.
  */
-#define SL_TEXT_CAMMONITOR_BACKWARDS_CLOCKWISE 16403
+#define SL_TEXT_CAMMONITOR_BACKWARDS_CLOCKWISE 0x4013
 
 /*
  Message 0x4014 (pendulum): moved in MOVE-START-TDC1/2 (and in START).
  */
-#define SL_TEXT_CAMMONITOR_MOVED_START_TDC 16404
+#define SL_TEXT_CAMMONITOR_MOVED_START_TDC 0x4014
 
 /*
  Message 0x4015 (excentric): TDC1LowerLimit + J > MaxPosition.
  */
-#define SL_TEXT_CAMMONITOR_TDC1LL_MAX 16405
+#define SL_TEXT_CAMMONITOR_TDC1LL_MAX 0x4015
 
 /*
  Message 0x4016: BDCUpperLimit + 2J >= TDC1LowerLimit.
  */
-#define SL_TEXT_CAMMONITOR_BDCUL_TDC1LL 16406
+#define SL_TEXT_CAMMONITOR_BDCUL_TDC1LL 0x4016
 
 /*
  Message 0x4017: BDCUpperLimit <= MaxPosition/2 + J.
  */
-#define SL_TEXT_CAMMONITOR_BDCUL_HALF 16407
+#define SL_TEXT_CAMMONITOR_BDCUL_HALF 0x4017
 
 /*
  Message 0x4018: BDCLowerLimit + J >= MaxPosition/2.
  */
-#define SL_TEXT_CAMMONITOR_BDCLL_HALF 16408
+#define SL_TEXT_CAMMONITOR_BDCLL_HALF 0x4018
 
 /*
  Message 0x4019 (excentric): OverrunMax + 2J >= BDCLowerLimit.
  */
-#define SL_TEXT_CAMMONITOR_OVERRUNMAX_BDCLL 16409
+#define SL_TEXT_CAMMONITOR_OVERRUNMAX_BDCLL 0x4019
 
 /*
  Message 0x401A (excentric): TDC1UpperLimit + 2J >= OverrunMax.
  */
-#define SL_TEXT_CAMMONITOR_TDC1UL_OVERRUNMAX 16410
+#define SL_TEXT_CAMMONITOR_TDC1UL_OVERRUNMAX 0x401A
 
 /*
  Message 0x401B (pendulum): TDC1UpperLimit + J >= MaxPosition.
  */
-#define SL_TEXT_CAMMONITOR_TDC1UL_MAX 16411
+#define SL_TEXT_CAMMONITOR_TDC1UL_MAX 0x401B
 
 /*
  Message 0x401C (pendulum): TDC1LowerLimit + 2J >= TDC1UpperLimit.
  */
-#define SL_TEXT_CAMMONITOR_TDC1LL_TDC1UL 16412
+#define SL_TEXT_CAMMONITOR_TDC1LL_TDC1UL 0x401C
 
 /*
  Message 0x401D (pendulum): TDC2LowerLimit + 2J >= BDCLowerLimit.
  */
-#define SL_TEXT_CAMMONITOR_TDC2LL_BDCLL 16413
+#define SL_TEXT_CAMMONITOR_TDC2LL_BDCLL 0x401D
 
 /*
  Message 0x401E (pendulum): TDC2UpperLimit + 2J >= TDC2LowerLimit.
  */
-#define SL_TEXT_CAMMONITOR_TDC2UL_TDC2LL 16414
+#define SL_TEXT_CAMMONITOR_TDC2UL_TDC2LL 0x401E
 
 /*
  Message 0x401F: Press_Started TRUE, no movement within PressStartDelayTime.
  */
-#define SL_TEXT_CAMMONITOR_NOT_STARTED 16415
+#define SL_TEXT_CAMMONITOR_NOT_STARTED 0x401F
 
 /*
  Message 0x4020: Press_Started TRUE, stopped after moving.
  */
-#define SL_TEXT_CAMMONITOR_STOPPED 16416
+#define SL_TEXT_CAMMONITOR_STOPPED 0x4020
 
 /*
  Message 0x4021: Press_Started TRUE, moved less than MinPositionChange within
  MoveDetectionTime (parameters: Position, comparison position).
  */
-#define SL_TEXT_CAMMONITOR_TOO_SLOW 16417
+#define SL_TEXT_CAMMONITOR_TOO_SLOW 0x4021
 
 /*
  Message 0x4022 (pendulum): counter-clockwise while moving up clockwise.
  */
-#define SL_TEXT_CAMMONITOR_CCW_MOVING_UP_CW 16418
+#define SL_TEXT_CAMMONITOR_CCW_MOVING_UP_CW 0x4022
 
 /*
  Message 0x4023 (pendulum): clockwise while moving up counter-clockwise.
  */
-#define SL_TEXT_CAMMONITOR_CW_MOVING_UP_CCW 16419
+#define SL_TEXT_CAMMONITOR_CW_MOVING_UP_CCW 0x4023
 
 /*
  Message 0x4024: moved in WAIT-FOR-RESET.
  */
-#define SL_TEXT_CAMMONITOR_MOVED_WAIT_FOR_RESET 16420
+#define SL_TEXT_CAMMONITOR_MOVED_WAIT_FOR_RESET 0x4024
 
 /*
  Message 0x4025 (excentric): TDC1UpperLimit <= AllowedPositionJitter.
  */
-#define SL_TEXT_CAMMONITOR_TDC1UL_JITTER 16421
+#define SL_TEXT_CAMMONITOR_TDC1UL_JITTER 0x4025
 
 /*
  Type tag of FB_SBT (ABI-2 §10.6: sequential in the order of §10.3).
@@ -1587,18 +1587,18 @@
  Message: the maximum duration expired without a successful test (Par2 0x12, Par3
  LatchPosition).
  */
-#define SL_TEXT_SBT_MAX_DURATION 16600
+#define SL_TEXT_SBT_MAX_DURATION 0x40D8
 
 /*
  Message: the remaining time expired without a new test (Par2 0x14, Par3 LatchPosition).
  */
-#define SL_TEXT_SBT_INTERVAL_EXPIRED 16601
+#define SL_TEXT_SBT_INTERVAL_EXPIRED 0x40D9
 
 /*
  Message: the single-turn position exceeds the maximum deviation (Par2 the difference,
  Par3 MaxPositionDeviation).
  */
-#define SL_TEXT_SBT_POSITION_DEVIATION 16602
+#define SL_TEXT_SBT_POSITION_DEVIATION 0x40DA
 
 /*
  `nDiag` of a message = its Text ID minus this (ABI-2 §10.4: no diag table).
@@ -1633,7 +1633,7 @@
 /*
  Largest value of the three TIME parameters (ABI-2 §12.9: 4,294,967 s in ms).
  */
-#define SL_SBT_TIME_MAX 4294967000
+#define SL_SBT_TIME_MAX 4294967000U
 
 /*
  Type tag of FB_SLP (ABI-2 §10.6: sequential in the order of §10.3).
@@ -1643,7 +1643,7 @@
 /*
  Option: single-turn mode (only the 32-bit single-turn values); clear = multi-turn.
  */
-#define SL_OPT_SLP_SINGLETURN (1 << 8)
+#define SL_OPT_SLP_SINGLETURN (1U << 8)
 
 /*
  Diag bit 0: MultiturnPos_LL > MultiturnPos_UL.
@@ -1658,12 +1658,12 @@
 /*
  Diag message of bit 0 (parameters: MultiturnPos_LL, MultiturnPos_UL).
  */
-#define SL_TEXT_SLP_MULTITURN_LL_ABOVE_UL 16592
+#define SL_TEXT_SLP_MULTITURN_LL_ABOVE_UL 0x40D0
 
 /*
  Diag message of bit 1 (parameters: SingleturnPos_LL, SingleturnPos_UL).
  */
-#define SL_TEXT_SLP_SINGLETURN_LL_ABOVE_UL 16593
+#define SL_TEXT_SLP_SINGLETURN_LL_ABOVE_UL 0x40D1
 
 /*
  `wInputActive` bit of SafePosValid (required).
@@ -1850,12 +1850,18 @@
 /*
  Option: a communication error is acknowledged by bComErrAck and then bErrAck.
  */
-#define SL_FSOE_OPT_COMERRACK (1 << 0)
+#define SL_FSOE_OPT_COMERRACK (1U << 0)
 
 /*
  Option "Module error is ComError": bModuleFault sets bComErr (diag 13).
  */
-#define SL_FSOE_OPT_MODULE_ERR_IS_COMERR (1 << 1)
+#define SL_FSOE_OPT_MODULE_ERR_IS_COMERR (1U << 1)
+
+/*
+ Option (slave): accept only the configured `nConnectionId`; without it the slave takes
+ the non-zero Connection ID the master sends (fsoe.md §7, §11; semantics FS11).
+ */
+#define SL_FSOE_OPT_PIN_CONNID (1U << 2)
 
 /*
  Connection state Reset (manual §3.2.1.3).
@@ -2537,7 +2543,7 @@ typedef struct SL_FSOE_CONN_PRIVATE {
    */
   uint8_t nRxLen;
   /*
-   Latched dwOptions (bits 0-1).
+   Latched dwOptions (bits 0-2).
    */
   uint8_t nOptions;
   /*
@@ -2589,9 +2595,14 @@ typedef struct SL_FSOE_CONN_PRIVATE {
    */
   uint8_t aRxData[32];
   /*
+   Slave: the Connection ID of this session, taken from the master's first Connection
+   frame (0 until then; the master uses its configured ID).
+   */
+  uint16_t nSessionConnId;
+  /*
    Reserved.
    */
-  uint8_t aReserved[4];
+  uint8_t aReserved[2];
 } SL_FSOE_CONN_PRIVATE;
 
 /*
@@ -2640,7 +2651,8 @@ typedef struct SL_FSOE_CONN {
    */
   uint8_t aTxSafeData[32];
   /*
-   Offset 48. Parameter: Connection ID, 1…65535, unique per bus.
+   Offset 48. Parameter: Connection ID, 1…65535, unique per bus. A master sends it; a
+   slave takes the master's and accepts only this one with SL_FSOE_OPT_PIN_CONNID.
    */
   uint16_t nConnectionId;
   /*
@@ -12915,7 +12927,8 @@ int32_t sl_group_add_link_kind(struct SL_GROUP *g, struct SL_MEMBER *aMembers, s
  with the same `tNow`. Returns the group's status or the worst status of a member.
  A member entry or link that fails its check, or tables that share a byte with the
  group, are member errors: the group enters ERROR, every reachable member is stopped in
- this cycle, SL_E_CORRUPT (docs/semantics.md GR13, GR14).
+ this cycle, SL_E_CORRUPT (docs/semantics.md GR13, GR14). A NULL member table (group with
+ members) or link table (group with links): the same safe state, SL_E_NULL (GR16).
 
  # Safety
  As for `sl_group_init`, with the same tables; every member block is still alive and in
@@ -13323,7 +13336,8 @@ SL_STATIC_ASSERT(offsetof(SL_FSOE_CONN_PRIVATE, aLastRx) == 44, "offset of SL_FS
 SL_STATIC_ASSERT(offsetof(SL_FSOE_CONN_PRIVATE, aOwnPara) == 112, "offset of SL_FSOE_CONN_PRIVATE.aOwnPara");
 SL_STATIC_ASSERT(offsetof(SL_FSOE_CONN_PRIVATE, aRxItem) == 184, "offset of SL_FSOE_CONN_PRIVATE.aRxItem");
 SL_STATIC_ASSERT(offsetof(SL_FSOE_CONN_PRIVATE, aRxData) == 260, "offset of SL_FSOE_CONN_PRIVATE.aRxData");
-SL_STATIC_ASSERT(offsetof(SL_FSOE_CONN_PRIVATE, aReserved) == 292, "offset of SL_FSOE_CONN_PRIVATE.aReserved");
+SL_STATIC_ASSERT(offsetof(SL_FSOE_CONN_PRIVATE, nSessionConnId) == 292, "offset of SL_FSOE_CONN_PRIVATE.nSessionConnId");
+SL_STATIC_ASSERT(offsetof(SL_FSOE_CONN_PRIVATE, aReserved) == 294, "offset of SL_FSOE_CONN_PRIVATE.aReserved");
 SL_STATIC_ASSERT(sizeof(SL_FSOE_CONN_PRIVATE) == 296, "size of SL_FSOE_CONN_PRIVATE");
 SL_STATIC_ASSERT(offsetof(SL_FSOE_CONN, bRun) == 0, "offset of SL_FSOE_CONN.bRun");
 SL_STATIC_ASSERT(offsetof(SL_FSOE_CONN, bErrAck) == 1, "offset of SL_FSOE_CONN.bErrAck");

@@ -475,7 +475,7 @@ fn init_refuses_invalid_parameters_and_cycle_checks_lengths() {
         |c| c.nAppParaLen = 65,
         |c| c.tWatchdogTime = 0,
         |c| c.tWatchdogTime = 65_536,
-        |c| c.dwOptions = 4,
+        |c| c.dwOptions = 8,
     ];
     for f in bad {
         let mut c = good;
@@ -528,4 +528,74 @@ fn state_names_of_a_connection() {
         assert_eq!(name(s), "?", "state {s}");
     }
     assert_eq!(safelogic::group::state_name(SL_TYPE_FSOE_CONN, 104), "DATA");
+}
+
+/// fsoe.md §7/§11: the slave takes the non-zero Connection ID the master sends (checking
+/// the FSoE address as before). A master that assigns a new ID at each (re)initialisation,
+/// as a configurator may, reaches DATA after every restart; the slave's own
+/// `nConnectionId` does not have to match (semantics FS11).
+#[test]
+fn slave_takes_the_connection_id_the_master_assigns_at_each_start() {
+    let mut sc = conn(SL_FSOE_ROLE_SLAVE, 2, 2, 2);
+    sc.nConnectionId = 500;
+    let mut s = Node::new(sc);
+    s.c.bRun = 1;
+    let mut t = 0;
+    for (k, id) in [7u16, 8, 0x1234, 65_535, 1].into_iter().enumerate() {
+        let mut mc = conn(SL_FSOE_ROLE_MASTER, 2, 2, 40 + k as u16);
+        mc.nConnectionId = id;
+        let mut m = Node::new(mc);
+        m.c.bRun = 1;
+        t = connect(&mut m, &mut s, t);
+        for _ in 0..3 {
+            bus(&mut m, &mut s, t);
+            t += 1;
+        }
+        assert_eq!((m.c.bDataValid, s.c.bDataValid), (1, 1), "ID {id}");
+        // The slave's frames carry the master's ID (last two octets, little endian).
+        let n = s.buf.len();
+        assert_eq!(u16::from_le_bytes([s.buf[n - 2], s.buf[n - 1]]), id);
+        assert_eq!(s.c.nConnectionId, 500, "the parameter is not written");
+        assert_eq!((m.c.bComErr, s.c.bComErr), (0, 0), "ID {id}");
+    }
+    // The FSoE address is still checked: a master for another address is refused (6).
+    let mut mc = conn(SL_FSOE_ROLE_MASTER, 2, 2, 99);
+    mc.nConnectionId = 42;
+    mc.nFsoeAddress = 4;
+    let mut m = Node::new(mc);
+    let mut code = 0;
+    for _ in 0..50 {
+        bus(&mut m, &mut s, t);
+        t += 1;
+        assert_ne!(s.c.nState, SL_FSOE_STATE_DATA);
+        if s.c.nResetCode != 0 {
+            code = s.c.nResetCode;
+            break;
+        }
+    }
+    assert_eq!(code, SL_FSOE_RESET_INVALID_ADDRESS);
+}
+
+/// With `SL_FSOE_OPT_PIN_CONNID` the slave accepts only its configured `nConnectionId`
+/// (Reset 3 otherwise), and still reaches DATA with a master that sends it.
+#[test]
+fn a_pinned_connection_id_refuses_any_other() {
+    let mut sc = conn(SL_FSOE_ROLE_SLAVE, 2, 2, 2);
+    sc.dwOptions = SL_FSOE_OPT_PIN_CONNID;
+    let mut s = Node::new(sc);
+    let mut mc = conn(SL_FSOE_ROLE_MASTER, 2, 2, 3);
+    mc.nConnectionId = 8;
+    let mut m = Node::new(mc);
+    let mut code = 0;
+    for t in 0..50 {
+        bus(&mut m, &mut s, t);
+        assert_ne!(s.c.nState, SL_FSOE_STATE_DATA);
+        if s.c.nResetCode != 0 {
+            code = s.c.nResetCode;
+            break;
+        }
+    }
+    assert_eq!(code, SL_FSOE_RESET_INVALID_CONNID);
+    let mut m = Node::new(conn(SL_FSOE_ROLE_MASTER, 2, 2, 4));
+    connect(&mut m, &mut s, 100);
 }

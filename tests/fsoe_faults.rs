@@ -251,7 +251,14 @@ fn wrong_conn_id_address_watchdog_and_application_parameters() {
     let s = conn(SL_FSOE_ROLE_SLAVE, 4, 4, 2);
     type Case = (fn(&mut SL_FSOE_CONN), u8);
     let cases: [Case; 5] = [
-        (|c| c.nConnectionId = 8, 3),
+        // A slave pinned to another Connection ID (without the pin it takes the master's).
+        (
+            |c| {
+                c.nConnectionId = 8;
+                c.dwOptions = SL_FSOE_OPT_PIN_CONNID;
+            },
+            3,
+        ),
         (|c| c.nFsoeAddress = 4, 6),
         (|c| c.tWatchdogTime = 200, 9),
         (|c| c.nAppParaLen = 2, 10),

@@ -55,7 +55,7 @@ fn random_bytes_everywhere_are_survived() {
             c.nRxDataLen = [1, 2, 4, 8][rng.next() as usize % 4];
             c.nAppParaLen = (rng.next() % 65) as u16;
             c.tWatchdogTime = 1 + (rng.next() % 200) as u32;
-            c.dwOptions = (rng.next() % 4) as u32;
+            c.dwOptions = (rng.next() % 8) as u32;
         }
         if round % 3 != 0 {
             // SAFETY: a live, exclusively borrowed instance.

@@ -762,13 +762,37 @@ fn a_copy_of_the_member_table_is_not_the_table() {
     assert_stopped_with_corrupt(gcycle(g, copy, l, 30), g, e, false);
 }
 
+/// A NULL member or link table is the caller's NULL, not corrupt memory (ABI §5:
+/// SL_E_NULL), and the group still takes its safe state (semantics GR16): ERROR, outputs
+/// FALSE, FBERROR, acknowledged like any error once the tables are passed again.
 #[test]
 fn missing_member_table_stops_the_group() {
     let mem = Mem::new();
-    let (g, _, l, _) = running_pair(&mem);
+    let (g, m, l, e) = running_pair(&mem);
     let rc = gcycle(g, std::ptr::null_mut(), l, 30);
-    assert_eq!(rc, SL_E_CORRUPT);
+    assert_eq!(rc, SL_E_NULL);
+    let gs = state(g);
+    assert_eq!(gs.nState, SL_STATE_ERROR);
+    assert_eq!((gs.bInRun, gs.bFbRun, gs.bFbErr), (0, 0, 1));
+    assert_eq!(gs.nDiag, group::SL_GROUP_DIAG_FBERROR);
+    // With the table again, the group runs its members (stopped) and is acknowledged.
+    assert_eq!(gcycle(g, m, l, 40), SL_OK);
+    // SAFETY: arena memory, read by value.
+    assert_eq!(unsafe { (*e).bEStopOut }, 0);
     assert_eq!(state(g).nState, SL_STATE_ERROR);
+    // A NULL link table for a group that has links: the same.
+    let mem = Mem::new();
+    let (g, m, _, _) = running_pair(&mem);
+    assert_eq!(gcycle(g, m, std::ptr::null_mut(), 30), SL_E_NULL);
+    assert_eq!(state(g).nState, SL_STATE_ERROR);
+    assert_eq!((state(g).bInRun, state(g).bFbRun), (0, 0));
+    // A stopped group stays stopped (GR7), still told SL_E_NULL.
+    let mem = Mem::new();
+    let (g, m, l) = group_in(&mem);
+    assert_eq!(add(g, m, SL_TYPE_AND, and_at(&mem, 1024).cast()), SL_OK);
+    assert_eq!(gcycle(g, std::ptr::null_mut(), l, 30), SL_E_NULL);
+    assert_eq!(state(g).nState, SL_STATE_STOP);
+    assert_eq!(state(g).bInRun, 0);
     // A member table inside the group is never read.
     let mem = Mem::new();
     let (g, _, l, _) = running_pair(&mem);

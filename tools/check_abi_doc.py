@@ -20,10 +20,11 @@ hdr = (ROOT / "include" / "safelogic.h").read_text(encoding="utf-8")
 
 def cval(text):
     text = text.strip()
-    m = re.fullmatch(r"\(?\s*(-?\s*\d+)\s*\)?", text)
+    # Unsigned constants carry U (4294967000U, (1U << 2)), Text IDs are hex (build.rs).
+    m = re.fullmatch(r"\(?\s*(-?\s*(?:0x[0-9A-Fa-f]+|\d+))U?\s*\)?", text)
     if m:
-        return int(m.group(1).replace(" ", ""))
-    m = re.fullmatch(r"\(\s*(\d+)\s*<<\s*(\d+)\s*\)", text)
+        return int(m.group(1).replace(" ", ""), 0)
+    m = re.fullmatch(r"\(\s*(\d+)U?\s*<<\s*(\d+)\s*\)", text)
     if m:
         return int(m.group(1)) << int(m.group(2))
     return None

@@ -170,10 +170,11 @@ def _clean_doc(lines: List[str]) -> str:
 
 def _int_value(text: str) -> Optional[int]:
     text = text.strip()
-    m = re.fullmatch(r"\(?\s*(-?\s*(?:0x[0-9A-Fa-f]+|\d+))\s*\)?", text)
+    # Unsigned constants carry U (4294967000U, (1U << 2)), Text IDs are hex (build.rs).
+    m = re.fullmatch(r"\(?\s*(-?\s*(?:0x[0-9A-Fa-f]+|\d+))U?\s*\)?", text)
     if m:
         return int(m.group(1).replace(" ", ""), 0)
-    m = re.fullmatch(r"\(\s*(\d+)\s*<<\s*(\d+)\s*\)", text)
+    m = re.fullmatch(r"\(\s*(\d+)U?\s*<<\s*(\d+)\s*\)", text)
     if m:
         return int(m.group(1)) << int(m.group(2))
     return None

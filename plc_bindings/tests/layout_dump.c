@@ -127,6 +127,7 @@ int main(void)
     printf("F SL_FSOE_CONN_PRIVATE aOwnPara %zu %zu\n", offsetof(SL_FSOE_CONN_PRIVATE, aOwnPara), sizeof(((SL_FSOE_CONN_PRIVATE *)0)->aOwnPara));
     printf("F SL_FSOE_CONN_PRIVATE aRxItem %zu %zu\n", offsetof(SL_FSOE_CONN_PRIVATE, aRxItem), sizeof(((SL_FSOE_CONN_PRIVATE *)0)->aRxItem));
     printf("F SL_FSOE_CONN_PRIVATE aRxData %zu %zu\n", offsetof(SL_FSOE_CONN_PRIVATE, aRxData), sizeof(((SL_FSOE_CONN_PRIVATE *)0)->aRxData));
+    printf("F SL_FSOE_CONN_PRIVATE nSessionConnId %zu %zu\n", offsetof(SL_FSOE_CONN_PRIVATE, nSessionConnId), sizeof(((SL_FSOE_CONN_PRIVATE *)0)->nSessionConnId));
     printf("F SL_FSOE_CONN_PRIVATE aReserved %zu %zu\n", offsetof(SL_FSOE_CONN_PRIVATE, aReserved), sizeof(((SL_FSOE_CONN_PRIVATE *)0)->aReserved));
     printf("S SL_FSOE_CONN %zu\n", sizeof(SL_FSOE_CONN));
     printf("F SL_FSOE_CONN bRun %zu %zu\n", offsetof(SL_FSOE_CONN, bRun), sizeof(((SL_FSOE_CONN *)0)->bRun));

@@ -65,9 +65,16 @@ impl Source<'_> {
         }
     }
 
-    /// A TOML syntax or shape error (toml reports its span).
+    /// A TOML syntax or shape error (toml reports its span). A duplicate key is named (toml
+    /// says only "duplicate key"; its span is the key).
     pub fn toml_error(&self, e: &toml::de::Error) -> Error {
-        let msg = e.message().trim().to_string();
+        let mut msg = e.message().trim().to_string();
+        if let (true, Some(key)) = (
+            msg == "duplicate key",
+            e.span().and_then(|s| self.text.get(s)),
+        ) {
+            msg = format!("duplicate key `{}`", key.trim());
+        }
         match e.span() {
             Some(span) => self.error(span, msg),
             None => Error {
@@ -81,11 +88,74 @@ impl Source<'_> {
 }
 
 /// A file that could not be read.
-pub fn io_error(file: &str, e: &std::io::Error) -> Error {
+pub fn read_error(file: &str, e: &std::io::Error) -> Error {
     Error {
         file: file.to_string(),
         line: 0,
         col: 0,
         msg: format!("cannot read the file: {e}"),
     }
+}
+
+/// A file that could not be written.
+pub fn write_error(file: &str, e: &std::io::Error) -> Error {
+    Error {
+        file: file.to_string(),
+        line: 0,
+        col: 0,
+        msg: format!("cannot write the file: {e}"),
+    }
+}
+
+/// Reads a text file: a read error, or a file that is not UTF-8 with the line, column and
+/// byte offset of its first invalid byte.
+pub fn read_text(file: &str) -> Result<String, Error> {
+    let bytes = std::fs::read(file).map_err(|e| read_error(file, &e))?;
+    String::from_utf8(bytes).map_err(|e| {
+        let at = e.utf8_error().valid_up_to();
+        let bytes = e.as_bytes();
+        // The valid prefix is text: its lines and characters give the position.
+        let before = std::str::from_utf8(&bytes[..at]).unwrap_or("");
+        let src = Source { file, text: before };
+        let mut err = src.error(at..at, "");
+        err.msg = format!(
+            "the file is not UTF-8 text: byte 0x{:02X} at byte offset {at} is not valid UTF-8",
+            bytes[at]
+        );
+        err
+    })
+}
+
+/// Writes files all or nothing: each text goes to a temporary file in its target's
+/// directory, and only when every one was written are they renamed into place (a rename
+/// within a directory is atomic). On any failure the temporary files are removed and no
+/// target is touched, so a failed run leaves nothing behind.
+pub fn write_all(files: &[(&str, &str)]) -> Result<(), Error> {
+    let mut temps: Vec<(std::path::PathBuf, &str)> = Vec::new();
+    let cleanup = |temps: &[(std::path::PathBuf, &str)]| {
+        for (t, _) in temps {
+            // Best effort: the temporary file may not exist if its creation failed.
+            std::fs::remove_file(t).ok();
+        }
+    };
+    for (i, (path, text)) in files.iter().enumerate() {
+        let target = std::path::Path::new(path);
+        let name = target
+            .file_name()
+            .map_or_else(|| "out".into(), |n| n.to_string_lossy().into_owned());
+        let tmp = target.with_file_name(format!(".{name}.{}.{i}.tmp", std::process::id()));
+        if let Err(e) = std::fs::write(&tmp, text) {
+            cleanup(&temps);
+            std::fs::remove_file(&tmp).ok();
+            return Err(write_error(path, &e));
+        }
+        temps.push((tmp, path));
+    }
+    for (k, (tmp, path)) in temps.iter().enumerate() {
+        if let Err(e) = std::fs::rename(tmp, path) {
+            cleanup(&temps[k..]);
+            return Err(write_error(path, &e));
+        }
+    }
+    Ok(())
 }

@@ -20,7 +20,7 @@ pub use runtime::Runtime;
 
 /// Reads and checks a project file.
 pub fn load_project(path: &str) -> Result<Project, Error> {
-    let text = std::fs::read_to_string(path).map_err(|e| error::io_error(path, &e))?;
+    let text = error::read_text(path)?;
     Project::parse(path, &text)
 }
 pub mod export_c;

@@ -4,7 +4,7 @@
 #![forbid(unsafe_code)]
 
 use clap::{Parser, Subcommand};
-use safelogic_project::error::io_error;
+use safelogic_project::error::{read_text, write_all, write_error};
 use safelogic_project::export_st::{self, Dialect};
 use safelogic_project::sim::{self, Scenario};
 use safelogic_project::{load_project, svg, vcd, Error, Project};
@@ -88,11 +88,7 @@ const DEFAULT_PROJECT: &str = include_str!("../../examples/projects/kl6904_5_1.t
 const DEFAULT_SCENARIO: &str = include_str!("../../examples/projects/kl6904_5_1.scenario.toml");
 
 fn read(path: &str) -> Result<String, Error> {
-    std::fs::read_to_string(path).map_err(|e| io_error(path, &e))
-}
-
-fn write(path: &str, text: &str) -> Result<(), Error> {
-    std::fs::write(path, text).map_err(|e| io_error(path, &e))
+    read_text(path)
 }
 
 /// Runs a scenario; Ok(false) when an expectation failed.
@@ -110,12 +106,19 @@ fn simulate(
         col: 0,
         msg,
     })?;
+    // Both files or neither (a failed run leaves nothing behind).
+    let vcd_text = vcd_out.map(|path| (path, vcd::vcd(&run, &p.name)));
+    let svg_text = svg_out.map(|path| (path, svg::svg(&run, &format!("{} — {}", p.name, sc.name))));
+    let files: Vec<(&str, &str)> = [&vcd_text, &svg_text]
+        .into_iter()
+        .flatten()
+        .map(|(path, text)| (*path, text.as_str()))
+        .collect();
+    write_all(&files)?;
     if let Some(path) = vcd_out {
-        write(path, &vcd::vcd(&run, &p.name))?;
         eprintln!("VCD written to {path}");
     }
     if let Some(path) = svg_out {
-        write(path, &svg::svg(&run, &format!("{} — {}", p.name, sc.name)))?;
         eprintln!("timing diagram (SVG) written to {path}");
     }
     Ok(run.failures == 0)
@@ -158,7 +161,7 @@ fn main() -> ExitCode {
             };
             let c = safelogic_project::export_c::export(&p, sc.as_ref());
             match output {
-                Some(path) => write(&path, &c)?,
+                Some(path) => write_all(&[(&path, &c)])?,
                 None => print!("{c}"),
             }
             Ok(true)
@@ -171,12 +174,21 @@ fn main() -> ExitCode {
         }) => (|| {
             let p = load_project(&project)?;
             let st = export_st::export(&p, dialect)?;
-            match output {
-                Some(path) => write(&path, &st)?,
-                None => print!("{st}"),
+            let map_text = map
+                .as_ref()
+                .map(|_| export_st::modbus_map(&p))
+                .transpose()?;
+            // both files or neither (atomic writes: nothing left from a failed run)
+            let mut files: Vec<(&str, &str)> = Vec::new();
+            if let Some(path) = &output {
+                files.push((path, &st));
             }
-            if let Some(path) = map {
-                write(&path, &export_st::modbus_map(&p)?)?;
+            if let (Some(path), Some(text)) = (&map, &map_text) {
+                files.push((path, text));
+            }
+            write_all(&files)?;
+            if output.is_none() {
+                print!("{st}");
             }
             Ok(true)
         })(),
@@ -186,7 +198,8 @@ fn main() -> ExitCode {
             print!("{}", p.describe());
             println!();
             let dir = std::env::temp_dir().join("safelogic");
-            std::fs::create_dir_all(&dir).map_err(|e| io_error(&dir.display().to_string(), &e))?;
+            std::fs::create_dir_all(&dir)
+                .map_err(|e| write_error(&dir.display().to_string(), &e))?;
             let svg_path = dir.join("kl6904_5_1.svg").display().to_string();
             let vcd_path = dir.join("kl6904_5_1.vcd").display().to_string();
             let ok = simulate(&p, &sc, Some(&vcd_path), Some(&svg_path), false)?;

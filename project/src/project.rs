@@ -227,7 +227,8 @@ fn type_name(v: &Value) -> &'static str {
     }
 }
 
-pub(crate) fn kind_name(k: Kind) -> &'static str {
+/// The IEC type's name in messages.
+pub fn kind_name(k: Kind) -> &'static str {
     match k {
         Kind::Bool => "BOOL",
         Kind::U8 => "BYTE",
@@ -258,19 +259,31 @@ fn near<'a>(name: &str, all: impl Iterator<Item = &'a str>) -> String {
 
 /// A value for field `f` from the file.
 fn field_value(src: &Source, f: &Field, v: &Spanned<Value>, block: &str) -> Result<i64, Error> {
+    typed_value(src, f.kind, is_time(f), v, &format!("{block}.{}", f.name))
+}
+
+/// A value of IEC type `kind` (a time in ms when `time`) for `what` (the key or field it
+/// is given for, named in every message): the project file's parameters and inputs and the
+/// scenario's sets and expectations use the same rules and the same words.
+pub fn typed_value(
+    src: &Source,
+    kind: Kind,
+    time: bool,
+    v: &Spanned<Value>,
+    what: &str,
+) -> Result<i64, Error> {
     let at = v.span();
-    let what = format!("{block}.{}", f.name);
-    let n = match (v.get_ref(), f.kind) {
+    let n = match (v.get_ref(), kind) {
         (Value::Boolean(b), Kind::Bool) => i64::from(*b),
-        (Value::String(s), _) if is_time(f) => i64::from(parse_time(s).ok_or_else(|| {
+        (Value::String(s), _) if time => i64::from(parse_time(s).ok_or_else(|| {
             src.error(
                 at.clone(),
                 format!("{what}: `{s}` is not a time; expected a whole number with a unit, like \"100 ms\", \"2 s\""),
             )
         })?),
-        (Value::Integer(i), k) if k != Kind::Bool && !is_time(f) => *i,
+        (Value::Integer(i), k) if k != Kind::Bool && !time => *i,
         (other, k) => {
-            let expected = if is_time(f) {
+            let expected = if time {
                 "a time like \"100 ms\"".to_string()
             } else if k == Kind::Bool {
                 "true or false".to_string()
@@ -283,22 +296,31 @@ fn field_value(src: &Source, f: &Field, v: &Spanned<Value>, block: &str) -> Resu
             ));
         }
     };
-    if !in_range(f.kind, n) {
+    if !in_range(kind, n) {
         return Err(src.error(
             at,
-            format!("{what}: {n} is out of range for {}", kind_name(f.kind)),
+            format!("{what}: {n} is out of range for {}", kind_name(kind)),
         ));
     }
     Ok(n)
 }
 
+/// The most members (and links) of one group: the C API counts them in a UINT
+/// (`sl_group_init`), so `sim` and `export-c` could not build more.
+pub const GROUP_MAX: usize = u16::MAX as usize;
+
 /// A list of input names given for `active` / `negated`, as a bit mask.
-fn input_mask(src: &Source, block: &BlockType, v: &Spanned<Value>) -> Result<i64, Error> {
+fn input_mask(
+    src: &Source,
+    block: &BlockType,
+    key: &str,
+    v: &Spanned<Value>,
+) -> Result<i64, Error> {
     let Value::Array(items) = v.get_ref() else {
         return Err(src.error(
             v.span(),
             format!(
-                "wrong value type: {} given, expected a list of input names like [\"bEStopIn1\"]",
+                "{key}: wrong value type: {} given, expected a list of input names like [\"bEStopIn1\"]",
                 type_name(v.get_ref())
             ),
         ));
@@ -316,12 +338,35 @@ fn input_mask(src: &Source, block: &BlockType, v: &Spanned<Value>) -> Result<i64
                 .join(", ");
             src.error(
                 v.span(),
-                format!("`{name}` is not an input of {} with an active/negated bit; expected one of {with_bits}", block.info.name),
+                format!("{key}: `{name}` is not an input of {} with an active/negated bit; expected one of {with_bits}", block.info.name),
             )
         })?;
         mask |= 1 << bit;
     }
     Ok(mask)
+}
+
+/// What a reference names: a source (an output or info field) or a destination (an input).
+#[derive(Clone, Copy)]
+enum Role {
+    Output,
+    Input,
+}
+
+impl Role {
+    fn noun(self) -> &'static str {
+        match self {
+            Role::Output => "output",
+            Role::Input => "input",
+        }
+    }
+
+    fn fits(self, d: Dir) -> bool {
+        match self {
+            Role::Output => matches!(d, Dir::Output | Dir::Info),
+            Role::Input => d == Dir::Input,
+        }
+    }
 }
 
 struct Names {
@@ -377,7 +422,10 @@ impl Project {
             names.groups.insert(rg.name.get_ref().clone(), gi);
             let mut members = Vec::new();
             for rm in &rg.member {
-                let mut m = parse_member(&src, rm)?;
+                let (mut m, spans) = parse_member(&src, rm)?;
+                if members.len() == GROUP_MAX {
+                    return Err(src.error(rm.span(), format!("group `{}`: member `{}` is one too many: at most {GROUP_MAX} members per group (the C API counts them in a UINT)", rg.name.get_ref(), m.name)));
+                }
                 let name_v = rm
                     .get_ref()
                     .iter()
@@ -386,19 +434,20 @@ impl Project {
                 let span = name_v.map_or(rm.span(), Spanned::span);
                 m.pos = src.pos(span.clone());
                 claim(&Spanned::new(span, m.name.clone()))?;
-                members.push((m, rm.span()));
+                members.push((m, rm.span(), spans));
             }
             groups.push((rg, members));
         }
         for (gi, (_, members)) in groups.iter().enumerate() {
-            for (mi, (m, _)) in members.iter().enumerate() {
+            for (mi, (m, ..)) in members.iter().enumerate() {
                 names.members.insert(m.name.clone(), (gi, mi));
             }
         }
         let member_of = |gi: usize, mi: usize| -> &Member { &groups[gi].1[mi].0 };
 
-        // A "member.field" or "group.field" reference.
-        let resolve = |s: &str, span: Range<usize>| -> Result<Place, Error> {
+        // A "member.field" or "group.field" reference; `role` says what is looked for, so
+        // that a misspelled name gets hints of that direction.
+        let resolve = |s: &str, span: Range<usize>, role: Role| -> Result<Place, Error> {
             let Some((owner, field)) = s.split_once('.') else {
                 return Err(src.error(
                     span,
@@ -413,9 +462,13 @@ impl Project {
                     src.error(
                         span.clone(),
                         format!(
-                            "unknown field `{field}` of {} `{owner}`{}",
+                            "unknown {} `{field}` of {} `{owner}`{}",
+                            role.noun(),
                             b.info.name,
-                            near(field, b.fields.iter().map(|f| f.name))
+                            near(
+                                field,
+                                b.fields.iter().filter(|f| role.fits(f.dir)).map(|f| f.name)
+                            )
                         ),
                     )
                 })?;
@@ -469,7 +522,7 @@ impl Project {
         // input, or a constant in the member table).
         let mut driven: BTreeMap<(usize, usize, u16), String> = BTreeMap::new();
         for (gi, (_, members)) in groups.iter().enumerate() {
-            for (mi, (m, _)) in members.iter().enumerate() {
+            for (mi, (m, ..)) in members.iter().enumerate() {
                 for (f, _) in &m.values {
                     if f.dir == Dir::Input {
                         driven.insert(
@@ -485,12 +538,15 @@ impl Project {
             let mut links = Vec::new();
             for l in &rg.links {
                 let span = l.span();
+                if links.len() == GROUP_MAX {
+                    return Err(src.error(span, format!("group `{}`: link `{}` is one too many: at most {GROUP_MAX} links per group (the C API counts them in a UINT)", rg.name.get_ref(), l.get_ref())));
+                }
                 let Some((a, b)) = l.get_ref().split_once("->") else {
                     return Err(src.error(span, format!("`{}` is not a link; expected \"<member>.<output> -> <member>.<input>\"", l.get_ref())));
                 };
                 let (a, b) = (a.trim(), b.trim());
-                let pa = resolve(a, span.clone())?;
-                let pb = resolve(b, span.clone())?;
+                let pa = resolve(a, span.clone(), Role::Output)?;
+                let pb = resolve(b, span.clone(), Role::Input)?;
                 let (
                     Place::Member {
                         group: ga,
@@ -504,7 +560,7 @@ impl Project {
                     },
                 ) = (pa, pb)
                 else {
-                    return Err(src.error(span, "a link connects two members; group fields are process-image signals (use [inputs] / [outputs])"));
+                    return Err(src.error(span, format!("link `{}`: a link connects two members; group fields are process-image signals (use [inputs] / [outputs])", l.get_ref())));
                 };
                 if ga != gi || gb != gi {
                     return Err(src.error(
@@ -556,7 +612,7 @@ impl Project {
                 name: rg.name.get_ref().clone(),
                 pos: src.pos(rg.name.span()),
                 connections: rg.connections,
-                members: members.iter().map(|(m, _)| m.clone()).collect(),
+                members: members.iter().map(|(m, ..)| m.clone()).collect(),
                 links,
             });
         }
@@ -582,7 +638,7 @@ impl Project {
             };
             let mut places = Vec::new();
             for (t, span) in targets {
-                let p = resolve(t, span.clone())?;
+                let p = resolve(t, span.clone(), Role::Input)?;
                 let ok = match p {
                     Place::Member { field, .. } => field.dir == Dir::Input,
                     Place::Group { field, .. } => GROUP_INPUTS.contains(&field),
@@ -640,7 +696,7 @@ impl Project {
                     ),
                 ));
             }
-            let p = resolve(v.get_ref(), v.span())?;
+            let p = resolve(v.get_ref(), v.span(), Role::Output)?;
             let ok = match p {
                 Place::Member { field, .. } => matches!(field.dir, Dir::Output | Dir::Info),
                 Place::Group { field, .. } => GROUP_OUTPUTS.contains(&field),
@@ -674,10 +730,16 @@ impl Project {
         for (gi, g) in project.groups.iter().enumerate() {
             for (mi, m) in g.members.iter().enumerate() {
                 if let Err(msg) = m.build() {
-                    return Err(src.error(
-                        groups[gi].1[mi].1.clone(),
-                        format!("member `{}`: {msg}", m.name),
-                    ));
+                    let (_, member_span, spans) = &groups[gi].1[mi];
+                    return Err(match m.refused_value() {
+                        Some((f, range)) => src.error(
+                            spans.get(&f.offset).unwrap_or(member_span).clone(),
+                            format!("member `{}`: {range}", m.name),
+                        ),
+                        None => {
+                            src.error(member_span.clone(), format!("member `{}`: {msg}", m.name))
+                        }
+                    });
                 }
             }
         }
@@ -809,9 +871,19 @@ impl Project {
 impl Member {
     /// A block of this member's type with its values written and `init` called.
     pub fn build(&self) -> Result<AnyBlock, String> {
+        self.build_with(None)
+    }
+
+    /// [`Member::build`] with the value of one field replaced (`Some((field, value))`; a
+    /// value the field's type cannot hold is refused like a refused init).
+    fn build_with(&self, replace: Option<(&Field, i64)>) -> Result<AnyBlock, String> {
         let mut b = AnyBlock::new(self.block.info.tag).ok_or("unregistered type")?;
         for (f, v) in &self.values {
-            b.set(f.name, *v)
+            let v = match replace {
+                Some((r, x)) if r == *f => x,
+                _ => *v,
+            };
+            b.set(f.name, v)
                 .map_err(|_| format!("{} cannot be written", f.name))?;
         }
         let rc = b.init();
@@ -826,7 +898,10 @@ impl Member {
     }
 }
 
-fn parse_member(src: &Source, t: &Spanned<Table>) -> Result<Member, Error> {
+/// Where each value of a member is written (by field offset).
+type Spans = BTreeMap<u16, Range<usize>>;
+
+fn parse_member(src: &Source, t: &Spanned<Table>) -> Result<(Member, Spans), Error> {
     let get = |key: &str| {
         t.get_ref()
             .iter()
@@ -861,6 +936,7 @@ fn parse_member(src: &Source, t: &Spanned<Table>) -> Result<Member, Error> {
         )
     })?;
     let mut values: BTreeMap<u16, (&'static Field, i64)> = BTreeMap::new();
+    let mut spans = Spans::new();
     let mut entries: Vec<_> = t.get_ref().iter().collect();
     entries.sort_by_key(|(k, _)| k.span().start);
     for (k, v) in entries {
@@ -876,7 +952,8 @@ fn parse_member(src: &Source, t: &Spanned<Table>) -> Result<Member, Error> {
                 let f = block.field(field).ok_or_else(|| {
                     src.error(k.span(), format!("{} has no {field}", block.info.name))
                 })?;
-                values.insert(f.offset, (f, input_mask(src, block, v)?));
+                values.insert(f.offset, (f, input_mask(src, block, key, v)?));
+                spans.insert(f.offset, v.span());
             }
             _ => {
                 let f = block.field(key).ok_or_else(|| {
@@ -905,6 +982,7 @@ fn parse_member(src: &Source, t: &Spanned<Table>) -> Result<Member, Error> {
                     }
                     Dir::Param | Dir::Input => {
                         values.insert(f.offset, (f, field_value(src, f, v, block.info.name)?));
+                        spans.insert(f.offset, v.span());
                     }
                     _ => {
                         return Err(src.error(k.span(), format!("`{key}` is an output, info or group-driven field of {}; expected a parameter or an input", block.info.name)));
@@ -916,12 +994,93 @@ fn parse_member(src: &Source, t: &Spanned<Table>) -> Result<Member, Error> {
     // Field-table order (inputs, parameters).
     let mut values: Vec<_> = values.into_values().collect();
     values.sort_by_key(|(f, _)| block.fields.iter().position(|g| g == *f));
-    Ok(Member {
-        name,
-        pos: Pos::default(),
-        block,
-        values,
-    })
+    Ok((
+        Member {
+            name,
+            pos: Pos::default(),
+            block,
+            values,
+        },
+        spans,
+    ))
+}
+
+impl Member {
+    /// Which value the block's init refuses, and what it would accept: the first parameter
+    /// (in field-table order) whose value alone, set to its zero default, makes the init
+    /// accept, with the interval of values around that default the init accepts with the
+    /// other parameters as given (found by bisection, so an interval: every parameter
+    /// limit of the manual is a bound or a relation to another parameter). `None` when no
+    /// single parameter is the cause.
+    fn refused_value(&self) -> Option<(&'static Field, String)> {
+        let accepts = |f: &Field, v: i64| self.build_with(Some((f, v))).is_ok();
+        let (f, given) = self
+            .values
+            .iter()
+            .find(|(f, _)| matches!(f.dir, Dir::Param) && accepts(f, 0))
+            .copied()?;
+        let (min, max) = kind_bounds(f.kind);
+        // The bound between an accepted value `ok` and a refused one `bad`: the last accepted.
+        let edge = |mut ok: i64, mut bad: i64| {
+            while (bad - ok).abs() > 1 {
+                let mid = ok + (bad - ok) / 2;
+                if accepts(f, mid) {
+                    ok = mid;
+                } else {
+                    bad = mid;
+                }
+            }
+            ok
+        };
+        let lo = if accepts(f, min) { min } else { edge(0, min) };
+        let hi = if accepts(f, max) { max } else { edge(0, max) };
+        let show = |v: i64| {
+            if is_time(f) {
+                format!("{v} ms")
+            } else if f.name.starts_with('w') || f.name.starts_with("dw") {
+                format!("0x{v:X}")
+            } else {
+                v.to_string()
+            }
+        };
+        let name = self.block.info.name;
+        // `active` / `negated` are written as input lists; the mask is what init sees.
+        let label = match f.name {
+            "wInputActive" => "active (wInputActive)".to_string(),
+            "wInputNegated" => "negated (wInputNegated)".to_string(),
+            n => format!("{name}.{n}"),
+        };
+        let range = if given < lo || given > hi {
+            format!(
+                "allowed with the other parameters as given: {} … {}",
+                show(lo),
+                show(hi)
+            )
+        } else {
+            // Inside the interval around the default, yet refused: a rule the interval does
+            // not describe (e.g. a bit pattern); say which value to change.
+            "refused with the other parameters as given; 0 is accepted".to_string()
+        };
+        Some((
+            f,
+            format!(
+                "{label} = {} is refused by {name}'s init; {range}",
+                show(given)
+            ),
+        ))
+    }
+}
+
+/// The smallest and largest value of an IEC type.
+fn kind_bounds(k: Kind) -> (i64, i64) {
+    match k {
+        Kind::Bool => (0, 1),
+        Kind::U8 => (0, i64::from(u8::MAX)),
+        Kind::U16 => (0, i64::from(u16::MAX)),
+        Kind::I16 => (i64::from(i16::MIN), i64::from(i16::MAX)),
+        Kind::U32 => (0, i64::from(u32::MAX)),
+        Kind::I32 => (i64::from(i32::MIN), i64::from(i32::MAX)),
+    }
 }
 
 /// CRC-32 (ISO-HDLC, the zip / Ethernet CRC) of a text.

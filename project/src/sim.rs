@@ -4,7 +4,7 @@
 //! VCD and SVG writers draw.
 
 use crate::error::{Error, Source};
-use crate::project::{parse_time, Place, Project};
+use crate::project::{parse_time, typed_value, Place, Project};
 use crate::runtime::Runtime;
 use serde::Deserialize;
 use std::collections::BTreeMap;
@@ -112,12 +112,12 @@ impl Scenario {
     pub fn parse(file: &str, text: &str, project: &Project) -> Result<Scenario, Error> {
         let src = Source { file, text };
         let raw: RawScenario = toml::from_str(text).map_err(|e| src.toml_error(&e))?;
-        let time = |s: &Spanned<String>| -> Result<u32, Error> {
+        let time = |key: &str, s: &Spanned<String>| -> Result<u32, Error> {
             let t = parse_time(s.get_ref()).ok_or_else(|| {
                 src.error(
                     s.span(),
                     format!(
-                        "`{}` is not a time; expected a whole number with a unit, like \"100 ms\"",
+                        "{key}: `{}` is not a time; expected a whole number with a unit, like \"100 ms\"",
                         s.get_ref()
                     ),
                 )
@@ -126,7 +126,7 @@ impl Scenario {
                 return Err(src.error(
                     s.span(),
                     format!(
-                        "{t} ms is not a multiple of the task cycle ({} ms)",
+                        "{key}: {t} ms is not a multiple of the task cycle ({} ms)",
                         project.cycle_ms
                     ),
                 ));
@@ -135,7 +135,7 @@ impl Scenario {
         };
         let mut steps = Vec::new();
         for rs in &raw.step {
-            let at = time(&rs.at)?;
+            let at = time("step.at", &rs.at)?;
             let mut sets = Vec::new();
             let mut entries: Vec<_> = rs.set.iter().collect();
             entries.sort_by_key(|(k, _)| k.span().start);
@@ -159,22 +159,8 @@ impl Scenario {
                             ),
                         )
                     })?;
-                let n = match v.get_ref() {
-                    Value::Boolean(b) => i64::from(*b),
-                    Value::Integer(n) => *n,
-                    _ => {
-                        return Err(src.error(
-                            v.span(),
-                            "wrong value type; expected true/false or an integer",
-                        ))
-                    }
-                };
-                if !safelogic::any::in_range(project.inputs[i].kind, n) {
-                    return Err(src.error(
-                        v.span(),
-                        format!("{n} is out of range for input `{}`", k.get_ref()),
-                    ));
-                }
+                // The signal's own type, with the project file's rules and words.
+                let n = typed_value(&src, project.inputs[i].kind, false, v, k.get_ref())?;
                 sets.push((i, n));
             }
             let mut expects = Vec::new();
@@ -186,10 +172,30 @@ impl Scenario {
                     src.error(k.span(), format!("unknown signal `{label}`; expected an output ({}), <member>.state, <group>.state or <member>.<field>", project.outputs.iter().map(|s| s.name.as_str()).collect::<Vec<_>>().join(", ")))
                 })?;
                 let want = match (v.get_ref(), &probe) {
-                    (Value::String(s), Probe::MemberState(..) | Probe::GroupState(..)) => Val::S(state_name_static(project, &probe, s).ok_or_else(|| src.error(v.span(), format!("`{s}` is not a state of `{label}`")))?),
-                    (Value::Boolean(b), Probe::Output(_) | Probe::Place(_)) => Val::N(i64::from(*b)),
-                    (Value::Integer(n), Probe::Output(_) | Probe::Place(_)) => Val::N(*n),
-                    _ => return Err(src.error(v.span(), format!("wrong value type for `{label}`; expected a state name for .state, else true/false or an integer"))),
+                    (Value::String(s), Probe::MemberState(..) | Probe::GroupState(..)) => {
+                        Val::S(state_name_static(project, &probe, s).ok_or_else(|| {
+                            src.error(
+                                v.span(),
+                                format!("{label}: `{s}` is not a state of `{label}`"),
+                            )
+                        })?)
+                    }
+                    (_, Probe::MemberState(..) | Probe::GroupState(..)) => {
+                        return Err(src.error(
+                            v.span(),
+                            format!(
+                                "{label}: wrong value type: a state name like \"RUN\" expected"
+                            ),
+                        ))
+                    }
+                    (_, Probe::Output(i)) => Val::N(typed_value(
+                        &src,
+                        project.outputs[*i].kind,
+                        false,
+                        v,
+                        &label,
+                    )?),
+                    (_, Probe::Place(p)) => Val::N(typed_value(&src, p.kind(), false, v, &label)?),
                 };
                 let e = src.error(k.span(), "");
                 expects.push(Expect {
@@ -209,7 +215,7 @@ impl Scenario {
         steps.sort_by_key(|s| s.at);
         let last = steps.last().map_or(0, |s| s.at);
         let until = match &raw.scenario.until {
-            Some(u) => time(u)?.max(last),
+            Some(u) => time("scenario.until", u)?.max(last),
             None => last,
         };
         Ok(Scenario {

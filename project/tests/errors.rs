@@ -84,7 +84,7 @@ fn unknown_field() {
     assert!(e.starts_with("13:1: unknown field `tDiscTime21` of ESTOP; expected a parameter or input (did you mean"), "{e}");
     let e = error("K1 = \"k1.bAndOut\"", "K1 = \"k1.bAndOt\"");
     assert!(
-        e.starts_with("31:6: unknown field `bAndOt` of AND `k1`"),
+        e.starts_with("31:6: unknown output `bAndOt` of AND `k1`"),
         "{e}"
     );
     let e = error("active = [\"bMonIn1\"]", "active = [\"bMonIn9\"]");

@@ -1128,7 +1128,8 @@ pub unsafe extern "C" fn sl_group_add_link_kind(
 /// with the same `tNow`. Returns the group's status or the worst status of a member.
 /// A member entry or link that fails its check, or tables that share a byte with the
 /// group, are member errors: the group enters ERROR, every reachable member is stopped in
-/// this cycle, SL_E_CORRUPT (docs/semantics.md GR13, GR14).
+/// this cycle, SL_E_CORRUPT (docs/semantics.md GR13, GR14). A NULL member table (group with
+/// members) or link table (group with links): the same safe state, SL_E_NULL (GR16).
 ///
 /// # Safety
 /// As for `sl_group_init`, with the same tables; every member block is still alive and in
@@ -1172,10 +1173,13 @@ pub unsafe fn sl_group_cycle_traced(
             let checked = storage(aMembers, usize::from(members)).and_then(|table| {
                 tables_disjoint(g_ptr, table, Some(storage(aLinks, usize::from(links))?))
             });
-            if checked.is_err() {
+            if let Err(e) = checked {
                 // No entry can be read (NULL, misaligned, or inside the group): no member is
-                // reachable, which stops the group like any unreachable member.
-                return Ok(group::cycle(g, &mut none[..], &[], tNow));
+                // reachable, which stops the group like any unreachable member. A NULL table
+                // is the caller's NULL (ABI §5), not corrupt memory: the group still takes
+                // its safe state, the status says what was wrong (semantics GR16).
+                let status = group::cycle(g, &mut none[..], &[], tNow);
+                return Ok(if e == SL_E_NULL { e } else { status });
             }
             // The member table as `member_table` would give it, from the counts and the
             // `storage` check above (not read and checked a second time).

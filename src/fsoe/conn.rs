@@ -54,7 +54,7 @@ pub struct SL_FSOE_CONN_PRIVATE {
     pub nTxLen: u8,
     /// Latched nRxDataLen.
     pub nRxLen: u8,
-    /// Latched dwOptions (bits 0-1).
+    /// Latched dwOptions (bits 0-2).
     pub nOptions: u8,
     /// State copy.
     pub nState: u8,
@@ -80,8 +80,11 @@ pub struct SL_FSOE_CONN_PRIVATE {
     pub aRxItem: [u8; 76],
     /// SafeData of the last accepted ProcessData frame.
     pub aRxData: [u8; 32],
+    /// Slave: the Connection ID of this session, taken from the master's first Connection
+    /// frame (0 until then; the master uses its configured ID).
+    pub nSessionConnId: u16,
     /// Reserved.
-    pub aReserved: [u8; 4],
+    pub aReserved: [u8; 2],
 }
 
 impl Default for SL_FSOE_CONN_PRIVATE {
@@ -118,7 +121,8 @@ impl Default for SL_FSOE_CONN_PRIVATE {
             aOwnPara: [0; 72],
             aRxItem: [0; 76],
             aRxData: [0; 32],
-            aReserved: [0; 4],
+            nSessionConnId: 0,
+            aReserved: [0; 2],
         }
     }
 }
@@ -151,7 +155,8 @@ pub struct SL_FSOE_CONN {
     pub aReserved1: [u8; 6],
     /// Offset 16. SafeData to send (the first nTxDataLen bytes).
     pub aTxSafeData: [u8; 32],
-    /// Offset 48. Parameter: Connection ID, 1…65535, unique per bus.
+    /// Offset 48. Parameter: Connection ID, 1…65535, unique per bus. A master sends it; a
+    /// slave takes the master's and accepts only this one with SL_FSOE_OPT_PIN_CONNID.
     pub nConnectionId: u16,
     /// Offset 50. Parameter: the slave's FSoE address.
     pub nFsoeAddress: u16,
@@ -273,7 +278,8 @@ const E_ACK: u8 = 1 << 0;
 const E_COMACK: u8 = 1 << 1;
 const E_SHUT: u8 = 1 << 2;
 
-const ALL_OPTIONS: u32 = SL_FSOE_OPT_COMERRACK | SL_FSOE_OPT_MODULE_ERR_IS_COMERR;
+const ALL_OPTIONS: u32 =
+    SL_FSOE_OPT_COMERRACK | SL_FSOE_OPT_MODULE_ERR_IS_COMERR | SL_FSOE_OPT_PIN_CONNID;
 
 /// Start of SafePara in `aRxItem` (ConnData occupies 0-3).
 const PARA_AT: usize = 4;
@@ -349,9 +355,21 @@ fn chunk(c: &SL_FSOE_CONN) -> usize {
     usize::from(c.stPrivate.nTxLen.min(c.stPrivate.nRxLen))
 }
 
-/// Every transition to Reset: chain, sequence numbers, counters, received data.
+/// The Connection ID of the current session: the master's configured one; the slave's as
+/// taken from the master (0 before its first Connection frame).
+fn session_conn_id(c: &SL_FSOE_CONN) -> u16 {
+    if is_master(c) {
+        c.stPrivate.nConnId
+    } else {
+        c.stPrivate.nSessionConnId
+    }
+}
+
+/// Every transition to Reset: chain, sequence numbers, counters, received data, the
+/// slave's session Connection ID (a new session may bring a new one).
 fn reset_vars(c: &mut SL_FSOE_CONN) {
     let p = &mut c.stPrivate;
+    p.nSessionConnId = 0;
     p.wLastCrc = 0;
     p.wOldMasterCrc = 0;
     p.wOldSlaveCrc = 0;
@@ -379,6 +397,7 @@ fn send(c: &mut SL_FSOE_CONN, tx: &mut Tx, cmd: u8, data: &[u8], collision: bool
     let k = data.len().min(n);
     sd[..k].copy_from_slice(&data[..k]);
     let master = is_master(c);
+    let session_id = session_conn_id(c);
     let p = &mut c.stPrivate;
     let (conn, recv, mut seq, old) = if cmd == SL_FSOE_CMD_RESET {
         (0, 0, 1, 0)
@@ -386,7 +405,7 @@ fn send(c: &mut SL_FSOE_CONN, tx: &mut Tx, cmd: u8, data: &[u8], collision: bool
         let conn = if cmd == SL_FSOE_CMD_SESSION {
             0
         } else {
-            p.nConnId
+            session_id
         };
         if master {
             (conn, p.wLastCrc, p.nMasterSeqNo, p.wOldMasterCrc)
@@ -685,7 +704,7 @@ fn data_rx(c: &mut SL_FSOE_CONN, tx: &mut Tx, f: &SL_FSOE_FRAME, st: Status, seq
     if cmd != SL_FSOE_CMD_PROCESSDATA && cmd != SL_FSOE_CMD_FAILSAFEDATA {
         return go_reset(c, tx, SL_FSOE_RESET_INVALID_CMD);
     }
-    if f.nConnId != c.stPrivate.nConnId {
+    if f.nConnId != session_conn_id(c) {
         return go_reset(c, tx, SL_FSOE_RESET_INVALID_CONNID);
     }
     if st != Status::Ok {
@@ -815,7 +834,15 @@ fn slave_rx(c: &mut SL_FSOE_CONN, tx: &mut Tx, rx: &[u8], run: bool) {
         return;
     }
     let ch = chunk(c);
-    let conn_ok = f.nConnId == c.stPrivate.nConnId;
+    // The master's first Connection frame brings the session's Connection ID: any non-zero
+    // one, or only the configured one with SL_FSOE_OPT_PIN_CONNID (semantics FS11). Every
+    // later frame, and ConnData's ConnID, must carry that one.
+    let conn_ok = if s == SL_FSOE_STATE_SESSION {
+        let pinned = u32::from(c.stPrivate.nOptions) & SL_FSOE_OPT_PIN_CONNID != 0;
+        f.nConnId != 0 && (!pinned || f.nConnId == c.stPrivate.nConnId)
+    } else {
+        f.nConnId == c.stPrivate.nSessionConnId
+    };
     match (s, cmd) {
         (SL_FSOE_STATE_RESET, SL_FSOE_CMD_SESSION) => slave_session_start(c, tx, rx),
         (SL_FSOE_STATE_SESSION, SL_FSOE_CMD_SESSION) => {
@@ -851,6 +878,7 @@ fn slave_rx(c: &mut SL_FSOE_CONN, tx: &mut Tx, rx: &[u8], run: bool) {
             accept(c, &f, seq);
             if first {
                 c.stPrivate.nRxCount = 0;
+                c.stPrivate.nSessionConnId = f.nConnId;
                 set_state(c, SL_FSOE_STATE_CONNECTION);
             }
             let p = &mut c.stPrivate;
@@ -870,7 +898,7 @@ fn slave_rx(c: &mut SL_FSOE_CONN, tx: &mut Tx, rx: &[u8], run: bool) {
             let p = &c.stPrivate;
             let cd_conn = u16::from_le_bytes([p.aRxItem[0], p.aRxItem[1]]);
             let cd_addr = u16::from_le_bytes([p.aRxItem[2], p.aRxItem[3]]);
-            if !conn_ok || cd_conn != p.nConnId {
+            if !conn_ok || cd_conn != p.nSessionConnId {
                 return go_reset(c, tx, SL_FSOE_RESET_INVALID_CONNID);
             }
             if cd_addr != p.nAddress {

@@ -37,6 +37,9 @@ pub const SL_FSOE_ROLE_SLAVE: u16 = 2;
 pub const SL_FSOE_OPT_COMERRACK: u32 = 1 << 0;
 /// Option "Module error is ComError": bModuleFault sets bComErr (diag 13).
 pub const SL_FSOE_OPT_MODULE_ERR_IS_COMERR: u32 = 1 << 1;
+/// Option (slave): accept only the configured `nConnectionId`; without it the slave takes
+/// the non-zero Connection ID the master sends (fsoe.md §7, §11; semantics FS11).
+pub const SL_FSOE_OPT_PIN_CONNID: u32 = 1 << 2;
 
 /// Connection state Reset (manual §3.2.1.3).
 pub const SL_FSOE_STATE_RESET: u8 = 100;
