@@ -459,3 +459,20 @@ pub fn depth_cases(n: u32) -> u32 {
         .unwrap_or(1);
     n.saturating_mul(depth.max(1))
 }
+
+pub mod cgroup;
+pub mod plcopen;
+
+/// The text `sl_diag_text` writes for `code` of block type `ty` (the call must return SL_OK).
+#[track_caller]
+pub fn diag_text(ty: u16, code: u16) -> String {
+    let mut buf = [0 as std::ffi::c_char; 256];
+    // SAFETY: a writable buffer of the stated length.
+    let rc = unsafe { safelogic::ffi::sl_diag_text(ty, code, buf.as_mut_ptr(), buf.len()) };
+    assert_eq!(rc, SL_OK, "sl_diag_text({ty}, {code:#06x})");
+    // SAFETY: NUL-terminated by the call.
+    unsafe { std::ffi::CStr::from_ptr(buf.as_ptr()) }
+        .to_str()
+        .unwrap()
+        .to_string()
+}
