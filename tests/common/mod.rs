@@ -476,3 +476,36 @@ pub fn diag_text(ty: u16, code: u16) -> String {
         .unwrap()
         .to_string()
 }
+
+/// The states every TwinSAFE block has (RUN, STOP, SAFE, ERROR, RESET); a block's own follow.
+pub const CORE_STATES: [u8; 5] = [
+    SL_STATE_RUN,
+    SL_STATE_STOP,
+    SL_STATE_SAFE,
+    SL_STATE_ERROR,
+    SL_STATE_RESET,
+];
+
+/// Name of a state through the C function `sl_state_str`.
+pub fn state_name(ty: u16, state: u8) -> &'static str {
+    let p = safelogic::ffi::sl_state_str(ty, state);
+    safelogic::registry::info(ty)
+        .and_then(|b| b.states.iter().find(|(_, n)| n.as_ptr().cast() == p))
+        .map_or("?", |(_, n)| n.trim_end_matches('\0'))
+}
+
+/// One group cycle through the C API. The member table gets fresh pointers to the blocks
+/// first: the test writes the blocks directly between calls, which ends the validity of
+/// pointers taken before (no `unsafe` here, and nothing the compiler may reorder).
+#[macro_export]
+macro_rules! c_group_cycle {
+    ($g:expr, $members:expr, $links:expr, $t:expr; $($b:ident),+) => {{
+        let mut i = 0;
+        $(
+            $members[i].pBlock = std::ptr::addr_of_mut!($b).cast();
+            i += 1;
+        )+
+        let _ = i;
+        unsafe { safelogic::ffi::sl_group_cycle(&mut $g, $members.as_mut_ptr(), $links.as_mut_ptr(), $t) }
+    }};
+}
