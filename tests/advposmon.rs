@@ -4,7 +4,7 @@
 
 mod common;
 
-use common::Rng;
+use common::{Rng, CORE_STATES};
 use safelogic::*;
 
 const ENABLE: u16 = SL_ADVPOSMON_ACTIVE_ENABLE;
@@ -434,15 +434,7 @@ fn random_sequences_match_the_model() {
             reached.insert(fb.nState);
         }
     }
-    for s in [
-        SL_STATE_RUN,
-        SL_STATE_STOP,
-        SL_STATE_SAFE,
-        SL_STATE_ERROR,
-        SL_STATE_RESET,
-        SL_STATE_START,
-        WFR,
-    ] {
+    for s in CORE_STATES.into_iter().chain([SL_STATE_START, WFR]) {
         assert!(reached.contains(&s), "never reached {s}: {reached:?}");
     }
     assert!(

@@ -3,6 +3,7 @@
 //! through the envelope, the C functions, group membership, and property tests.
 
 mod common;
+use common::state_name;
 
 use proptest::prelude::*;
 use safelogic::ffi;
@@ -30,28 +31,6 @@ fn outs(d: &FB_DECOUPLE) -> [u8; 8] {
         d.bDecOut1, d.bDecOut2, d.bDecOut3, d.bDecOut4, d.bDecOut5, d.bDecOut6, d.bDecOut7,
         d.bDecOut8,
     ]
-}
-
-fn state_name(ty: u16, state: u8) -> &'static str {
-    let p = ffi::sl_state_str(ty, state);
-    safelogic::registry::info(ty)
-        .and_then(|b| b.states.iter().find(|(_, n)| n.as_ptr().cast() == p))
-        .map_or("?", |(_, n)| n.trim_end_matches('\0'))
-}
-
-/// One group cycle through the C API. The member table gets fresh pointers to the blocks
-/// first: the test writes the blocks directly between calls, which ends the validity of
-/// pointers taken before (no `unsafe` here, and nothing the compiler may reorder).
-macro_rules! c_group_cycle {
-    ($g:expr, $members:expr, $links:expr, $t:expr; $($b:ident),+) => {{
-        let mut i = 0;
-        $(
-            $members[i].pBlock = std::ptr::addr_of_mut!($b).cast();
-            i += 1;
-        )+
-        let _ = i;
-        unsafe { ffi::sl_group_cycle(&mut $g, $members.as_mut_ptr(), $links.as_mut_ptr(), $t) }
-    }};
 }
 
 #[test]

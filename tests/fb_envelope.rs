@@ -5,7 +5,7 @@
 
 mod common;
 
-use common::Rng;
+use common::{Rng, CORE_STATES};
 use safelogic::blocks::analog::Analog;
 use safelogic::*;
 
@@ -656,15 +656,7 @@ macro_rules! envelope_tests {
                         diags[usize::from(fb.outputs().diag).min(4)] += 1;
                     }
                 }
-                for s in [
-                    SL_STATE_RUN,
-                    SL_STATE_STOP,
-                    SL_STATE_SAFE,
-                    SL_STATE_ERROR,
-                    SL_STATE_RESET,
-                    DELAYOUT,
-                    MONITOR,
-                ] {
+                for s in CORE_STATES.into_iter().chain([DELAYOUT, MONITOR]) {
                     assert!(
                         reached & 1 << s != 0,
                         "state {s} never reached ({reached:#b})"

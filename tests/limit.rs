@@ -4,7 +4,7 @@
 
 mod common;
 
-use common::Rng;
+use common::{Rng, CORE_STATES};
 use safelogic::blocks::analog::Analog;
 use safelogic::*;
 
@@ -462,13 +462,7 @@ macro_rules! limit_tests {
                         above += u32::from(fb.outputs().above);
                     }
                 }
-                for s in [
-                    SL_STATE_RUN,
-                    SL_STATE_STOP,
-                    SL_STATE_SAFE,
-                    SL_STATE_ERROR,
-                    SL_STATE_RESET,
-                ] {
+                for s in CORE_STATES {
                     assert!(
                         reached & 1 << s != 0,
                         "state {s} never reached ({reached:#b})"

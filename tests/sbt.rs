@@ -5,7 +5,7 @@
 
 mod common;
 
-use common::Rng;
+use common::{Rng, CORE_STATES};
 use safelogic::*;
 
 const ALL: u16 = SL_SBT_ACTIVE_SBT
@@ -660,17 +660,10 @@ fn random_sequences_match_the_model() {
             texts.insert(fb.nDiagTextId);
         }
     }
-    for s in [
-        SL_STATE_RUN,
-        SL_STATE_STOP,
-        SL_STATE_SAFE,
-        SL_STATE_ERROR,
-        SL_STATE_RESET,
-        TESTING,
-        TEST_OK,
-        TEST_FAILED,
-        MONS_ERROR,
-    ] {
+    for s in CORE_STATES
+        .into_iter()
+        .chain([TESTING, TEST_OK, TEST_FAILED, MONS_ERROR])
+    {
         assert!(reached.contains(&s), "never reached {s}: {reached:?}");
     }
     for t in [0x40D8, 0x40D9, 0x40DA] {

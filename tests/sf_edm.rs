@@ -7,12 +7,13 @@
 //! against an independent model. Expected codes are research §4.10's (v2.01 CS-LIB FBS_EDM,
 //! v1.0 B&R) and, where the research has none, semantics QD2's.
 
+mod common;
+use common::cgroup::*;
+use common::plcopen::*;
+use common::*;
 use safelogic::*;
 use std::collections::BTreeSet;
-use std::ffi::CStr;
 
-/// (v2.01, v1.0).
-type Code = (u16, u16);
 const IDLE: Code = (0x0000, 0x0000);
 const INIT: Code = (0x8401, 0x8001);
 const DISABLE: Code = (0x8810, 0x8010);
@@ -80,11 +81,7 @@ impl Rig {
         }
     }
     fn c(&self, s: Code) -> u16 {
-        if self.profile == SL_SF_PROFILE_V10 {
-            s.1
-        } else {
-            s.0
-        }
+        code(self.profile, s)
     }
     /// One call `dt` ms later with the inputs changed by `f`.
     fn at(&mut self, dt: u32, f: impl FnOnce(&mut In)) -> u16 {
@@ -189,10 +186,6 @@ impl Rig {
             }
         }
     }
-}
-
-fn profiles() -> [u8; 2] {
-    [SL_SF_PROFILE_V201, SL_SF_PROFILE_V10]
 }
 
 #[test]
@@ -402,19 +395,7 @@ fn invalid_bytes() {
 
 #[test]
 fn texts_for_every_diag_code() {
-    let text = |code: u16| {
-        let mut buf = [0 as std::ffi::c_char; 160];
-        // SAFETY: a writable buffer of the stated length.
-        let rc = unsafe {
-            safelogic::ffi::sl_diag_text(SL_TYPE_SF_EDM, code, buf.as_mut_ptr(), buf.len())
-        };
-        assert_eq!(rc, SL_OK);
-        // SAFETY: NUL-terminated by the call.
-        unsafe { CStr::from_ptr(buf.as_ptr()) }
-            .to_str()
-            .unwrap()
-            .to_string()
-    };
+    let text = |code: u16| diag_text(SL_TYPE_SF_EDM, code);
     let mut seen = BTreeSet::new();
     for (v2, v1) in all() {
         for c in [v2, v1] {
@@ -431,123 +412,64 @@ fn texts_for_every_diag_code() {
 /// EDM's output to an FB_AND; an EDM error does not stop the group.
 #[test]
 fn in_a_group_behind_an_emergency_stop() {
-    use safelogic::ffi::*;
-    let mut es = SF_EmergencyStop {
+    let mut es = RawBox::new(SF_EmergencyStop {
         Activate: 1,
         S_EStopIn: 1,
         S_StartReset: 1,
         ..Default::default()
-    };
-    let mut edm = SF_EDM {
+    });
+    let mut edm = RawBox::new(SF_EDM {
         Activate: 1,
         EDM1: 1,
         EDM2: 1,
         S_StartReset: 1,
         MonitoringTime: 50,
         ..Default::default()
-    };
-    let mut and = FB_AND {
+    });
+    let and = RawBox::new(FB_AND {
         wInputActive: 0x3,
         bAndIn2: 1,
         ..Default::default()
-    };
-    let mut g = SL_GROUP::default();
-    let mut members = [SL_MEMBER::default(); 3];
-    let mut links = [SL_LINK::default(); 2];
-    let off = |t: u16, n: &str| {
-        safelogic::registry::block_type(t)
-            .and_then(|t| t.field(n))
-            .unwrap()
-            .offset
-    };
-    // SAFETY: every pointer is to a live local that nothing else accesses; the group keeps
-    // them for the rest of the test, in place.
-    unsafe {
-        assert_eq!(
-            sl_group_init(&mut g, members.as_mut_ptr(), 3, links.as_mut_ptr(), 2),
-            SL_OK
-        );
-        let es_p = std::ptr::addr_of_mut!(es);
-        let edm_p = std::ptr::addr_of_mut!(edm);
-        let and_p = std::ptr::addr_of_mut!(and);
-        assert_eq!(sl_sf_emergencystop_init(es_p), SL_OK);
-        assert_eq!(sl_sf_edm_init(edm_p), SL_OK);
-        assert_eq!(sl_and_init(and_p), SL_OK);
-        for (tag, p) in [
-            (SL_TYPE_SF_EMERGENCYSTOP, es_p.cast::<core::ffi::c_void>()),
-            (SL_TYPE_SF_EDM, edm_p.cast()),
-            (SL_TYPE_AND, and_p.cast()),
-        ] {
-            assert_eq!(
-                sl_group_add_member(&mut g, members.as_mut_ptr(), tag, p, std::ptr::null_mut()),
-                SL_OK
-            );
-        }
-        for (src, so, dst, d) in [
-            (
-                0,
-                off(SL_TYPE_SF_EMERGENCYSTOP, "S_EStopOut"),
-                1,
-                off(SL_TYPE_SF_EDM, "S_OutControl"),
-            ),
-            (
-                1,
-                off(SL_TYPE_SF_EDM, "S_EDM_Out"),
-                2,
-                off(SL_TYPE_AND, "bAndIn1"),
-            ),
-        ] {
-            assert_eq!(
-                sl_group_add_link(
-                    &mut g,
-                    members.as_mut_ptr(),
-                    links.as_mut_ptr(),
-                    src,
-                    so,
-                    dst,
-                    d
-                ),
-                SL_OK
-            );
-        }
-        g.bRun = 1;
-        let mut now = 0;
-        let mut cycle = |g: &mut SL_GROUP| {
-            now += 10;
-            sl_group_cycle(g, members.as_mut_ptr(), links.as_mut_ptr(), now)
-        };
-        for _ in 0..4 {
-            assert_eq!(cycle(&mut g), SL_OK);
-        }
-        assert_eq!(((*edm_p).DiagCode, (*and_p).bAndOut), (0x8000, 1));
-        (*edm_p).EDM1 = 0;
-        (*edm_p).EDM2 = 0;
-        for _ in 0..10 {
-            cycle(&mut g);
-        }
-        assert_eq!((*edm_p).DiagCode, 0x8000, "switched in time");
-        // The E-stop pressed: the EDM switches off in the next group call (link order);
-        // contactor 1 welded: C040 after 50 ms; the group runs on.
-        (*es_p).S_EStopIn = 0;
-        cycle(&mut g);
-        assert_eq!(((*edm_p).DiagCode, (*and_p).bAndOut), (0x8810, 0));
-        (*edm_p).EDM2 = 1;
-        for _ in 0..5 {
-            cycle(&mut g);
-        }
-        assert_eq!(((*edm_p).DiagCode, (*edm_p).Error), (0xC040, 1));
-        assert_eq!(g.nState, SL_STATE_RUN);
-    }
-}
+    });
+    let mut grp = CGroup::new(3, 2);
+    grp.add_init(
+        SL_TYPE_SF_EMERGENCYSTOP,
+        &es,
+        safelogic::ffi::sl_sf_emergencystop_init,
+    );
+    grp.add_init(SL_TYPE_SF_EDM, &edm, safelogic::ffi::sl_sf_edm_init);
+    grp.add_init(SL_TYPE_AND, &and, safelogic::ffi::sl_and_init);
+    let es_out = field(SL_TYPE_SF_EMERGENCYSTOP, "S_EStopOut");
+    grp.link(0, es_out, 1, field(SL_TYPE_SF_EDM, "S_OutControl"));
+    grp.link(
+        1,
+        field(SL_TYPE_SF_EDM, "S_EDM_Out"),
+        2,
+        field(SL_TYPE_AND, "bAndIn1"),
+    );
 
-struct Rng(u64);
-impl Rng {
-    fn next(&mut self) -> u64 {
-        self.0 ^= self.0 >> 12;
-        self.0 ^= self.0 << 25;
-        self.0 ^= self.0 >> 27;
-        self.0.wrapping_mul(0x2545_F491_4F6C_DD1D)
+    grp.g.bRun = 1;
+    for k in 0..4 {
+        assert_eq!(grp.cycle(10), SL_OK, "group call {k}");
     }
+    assert_eq!((edm.DiagCode, and.bAndOut), (0x8000, 1));
+    edm.EDM1 = 0;
+    edm.EDM2 = 0;
+    for _ in 0..10 {
+        grp.cycle(10);
+    }
+    assert_eq!(edm.DiagCode, 0x8000, "switched in time");
+    // The E-stop pressed: the EDM switches off in the next group call (link order);
+    // contactor 1 welded: C040 after 50 ms; the group runs on.
+    es.S_EStopIn = 0;
+    grp.cycle(10);
+    assert_eq!((edm.DiagCode, and.bAndOut), (0x8810, 0));
+    edm.EDM2 = 1;
+    for _ in 0..5 {
+        grp.cycle(10);
+    }
+    assert_eq!((edm.DiagCode, edm.Error), (0xC040, 1));
+    assert_eq!(grp.g.nState, SL_STATE_RUN);
 }
 
 /// The model, written from research §4.10 (v2.01 column) with NPE's split and the codes of

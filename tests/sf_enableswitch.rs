@@ -6,36 +6,19 @@
 //! 10,000 random sequences per profile against an independent model with every state
 //! reached. Expected codes are the research table's (v2.01 / v1.0 columns).
 
+mod common;
+use common::cgroup::*;
+use common::plcopen::*;
+use common::*;
 use safelogic::*;
 use std::collections::BTreeSet;
-use std::ffi::CStr;
 
-const IDLE: (u16, u16) = (0x0000, 0x0000);
-const BASIC: (u16, u16) = (0x8002, 0x8004);
-const SAFE: (u16, u16) = (0x8004, 0x8005);
-const POS1: (u16, u16) = (0x8802, 0x8006);
-const POS3: (u16, u16) = (0x8804, 0x8007);
-const POS2: (u16, u16) = (0x8000, 0x8000);
-const ERR1: (u16, u16) = (0xC010, 0xC010);
-const ERR2: (u16, u16) = (0xC020, 0xC020);
-const ERR3: (u16, u16) = (0xC030, 0xC030);
-const ERR4: (u16, u16) = (0xC040, 0xC040);
-const ERR_RESET_1: (u16, u16) = (0xC001, 0xC001);
-const ERR_RESET_2: (u16, u16) = (0xC011, 0xC002);
-const ALL: [(u16, u16); 12] = [
-    IDLE,
-    BASIC,
-    SAFE,
-    POS1,
-    POS3,
-    POS2,
-    ERR1,
-    ERR2,
-    ERR3,
-    ERR4,
-    ERR_RESET_1,
-    ERR_RESET_2,
-];
+codes! {
+    IDLE = 0x0000 / 0x0000, BASIC = 0x8002 / 0x8004, SAFE = 0x8004 / 0x8005,
+    POS1 = 0x8802 / 0x8006, POS3 = 0x8804 / 0x8007, POS2 = 0x8000 / 0x8000,
+    ERR1 = 0xC010 / 0xC010, ERR2 = 0xC020 / 0xC020, ERR3 = 0xC030 / 0xC030,
+    ERR4 = 0xC040 / 0xC040, ERR_RESET_1 = 0xC001 / 0xC001, ERR_RESET_2 = 0xC011 / 0xC002,
+}
 
 /// (Ch1, Ch2) of the switch positions (research §4.9 [I]) and the invalid combination.
 const P1: (bool, bool) = (false, true);
@@ -101,16 +84,12 @@ impl Rig {
         assert_eq!(rc, SL_OK);
         fb.DiagCode
     }
-    fn c(&self, s: (u16, u16)) -> u16 {
-        if self.profile == SL_SF_PROFILE_V10 {
-            s.1
-        } else {
-            s.0
-        }
+    fn c(&self, s: Code) -> u16 {
+        code(self.profile, s)
     }
     /// IDLE → `target` by the table's paths; returns the last inputs.
-    fn reach(&mut self, target: (u16, u16)) -> In {
-        let go = |rig: &mut Self, i: In, s: (u16, u16)| {
+    fn reach(&mut self, target: Code) -> In {
+        let go = |rig: &mut Self, i: In, s: Code| {
             assert_eq!(rig.step(i), rig.c(s), "on the way to {target:X?}");
             i
         };
@@ -168,12 +147,8 @@ impl Rig {
     }
 }
 
-fn profiles() -> [u8; 2] {
-    [SL_SF_PROFILE_V201, SL_SF_PROFILE_V10]
-}
-
 /// One transition: from `from` (reached by the table's paths), inputs `i` give `to`.
-fn t(p: u8, from: (u16, u16), i: In, to: (u16, u16), what: &str) {
+fn t(p: u8, from: Code, i: In, to: Code, what: &str) {
     let mut rig = Rig::new(p);
     rig.reach(from);
     assert_eq!(
@@ -398,19 +373,7 @@ fn profile_constant_and_library_faults() {
 
 #[test]
 fn texts_for_every_diag_code() {
-    let text = |code: u16| {
-        let mut buf = [0 as std::ffi::c_char; 160];
-        // SAFETY: a writable buffer of the stated length.
-        let rc = unsafe {
-            safelogic::ffi::sl_diag_text(SL_TYPE_SF_ENABLESWITCH, code, buf.as_mut_ptr(), buf.len())
-        };
-        assert_eq!(rc, SL_OK);
-        // SAFETY: NUL-terminated by the call.
-        unsafe { CStr::from_ptr(buf.as_ptr()) }
-            .to_str()
-            .unwrap()
-            .to_string()
-    };
+    let text = |code: u16| diag_text(SL_TYPE_SF_ENABLESWITCH, code);
     let mut seen = BTreeSet::new();
     for (v2, v1) in ALL {
         for c in [v2, v1] {
@@ -430,103 +393,32 @@ fn texts_for_every_diag_code() {
 /// the group; the group's STOP halts it.
 #[test]
 fn in_a_group_with_a_link() {
-    use safelogic::ffi::*;
-    let mut es = SF_EnableSwitch::default();
-    let mut and = FB_AND {
-        wInputActive: 0x3,
-        bAndIn2: 1,
-        ..Default::default()
-    };
-    let mut g = SL_GROUP::default();
-    let mut members = [SL_MEMBER::default(); 2];
-    let mut links = [SL_LINK::default(); 1];
-    let in1 = safelogic::registry::block_type(SL_TYPE_AND)
-        .and_then(|t| t.field("bAndIn1"))
-        .unwrap()
-        .offset;
-    let out = core::mem::offset_of!(SF_EnableSwitch, S_EnableSwitchOut) as u16;
-    // SAFETY: every pointer is to a live local that nothing else accesses; the group keeps
-    // them for the rest of the test, in place.
-    unsafe {
-        assert_eq!(
-            sl_group_init(&mut g, members.as_mut_ptr(), 2, links.as_mut_ptr(), 1),
-            SL_OK
-        );
-        let es_p = std::ptr::addr_of_mut!(es);
-        let and_p = std::ptr::addr_of_mut!(and);
-        assert_eq!(sl_sf_enableswitch_init(es_p), SL_OK);
-        assert_eq!(
-            sl_group_add_member(
-                &mut g,
-                members.as_mut_ptr(),
-                SL_TYPE_SF_ENABLESWITCH,
-                es_p.cast(),
-                std::ptr::null_mut()
-            ),
-            SL_OK
-        );
-        assert_eq!(sl_and_init(and_p), SL_OK);
-        assert_eq!(
-            sl_group_add_member(
-                &mut g,
-                members.as_mut_ptr(),
-                SL_TYPE_AND,
-                and_p.cast(),
-                std::ptr::null_mut()
-            ),
-            SL_OK
-        );
-        assert_eq!(
-            sl_group_add_link(
-                &mut g,
-                members.as_mut_ptr(),
-                links.as_mut_ptr(),
-                0,
-                out,
-                1,
-                in1
-            ),
-            SL_OK
-        );
-        (*es_p).Activate = 1;
-        (*es_p).S_SafetyActive = 1;
-        (*es_p).S_EnableSwitchCh2 = 1;
-        g.bRun = 1;
-        let mut now = 0;
-        let mut cycle = |g: &mut SL_GROUP| {
-            now += 10;
-            sl_group_cycle(g, members.as_mut_ptr(), links.as_mut_ptr(), now)
-        };
-        for _ in 0..4 {
-            assert_eq!(cycle(&mut g), SL_OK);
-        }
-        assert_eq!((*es_p).DiagCode, 0x8802);
-        (*es_p).S_EnableSwitchCh1 = 1;
-        cycle(&mut g);
-        assert_eq!(((*es_p).DiagCode, (*and_p).bAndOut), (0x8000, 1));
-        // Panic position, then 3 → 2: C030, the group runs on, the link carries FALSE.
-        ((*es_p).S_EnableSwitchCh1, (*es_p).S_EnableSwitchCh2) = (0, 0);
-        cycle(&mut g);
-        ((*es_p).S_EnableSwitchCh1, (*es_p).S_EnableSwitchCh2) = (1, 1);
-        cycle(&mut g);
-        assert_eq!(
-            ((*es_p).DiagCode, (*and_p).bAndOut, g.nState),
-            (0xC030, 0, SL_STATE_RUN)
-        );
-        g.bRun = 0;
-        assert_eq!(cycle(&mut g), SL_OK);
-        assert_eq!(((*es_p).DiagCode, (*es_p).Ready), (0, 0));
-    }
-}
-
-struct Rng(u64);
-impl Rng {
-    fn next(&mut self) -> u64 {
-        self.0 ^= self.0 >> 12;
-        self.0 ^= self.0 << 25;
-        self.0 ^= self.0 >> 27;
-        self.0.wrapping_mul(0x2545_F491_4F6C_DD1D)
-    }
+    let mut w = WithAnd::new(
+        SL_TYPE_SF_ENABLESWITCH,
+        SF_EnableSwitch::default(),
+        safelogic::ffi::sl_sf_enableswitch_init,
+        core::mem::offset_of!(SF_EnableSwitch, S_EnableSwitchOut),
+    );
+    w.fb.Activate = 1;
+    w.fb.S_SafetyActive = 1;
+    w.fb.S_EnableSwitchCh2 = 1;
+    w.run(4);
+    assert_eq!(w.fb.DiagCode, 0x8802);
+    w.fb.S_EnableSwitchCh1 = 1;
+    w.grp.cycle(10);
+    assert_eq!((w.fb.DiagCode, w.and.bAndOut), (0x8000, 1));
+    // Panic position, then 3 → 2: C030, the group runs on, the link carries FALSE.
+    (w.fb.S_EnableSwitchCh1, w.fb.S_EnableSwitchCh2) = (0, 0);
+    w.grp.cycle(10);
+    (w.fb.S_EnableSwitchCh1, w.fb.S_EnableSwitchCh2) = (1, 1);
+    w.grp.cycle(10);
+    assert_eq!(
+        (w.fb.DiagCode, w.and.bAndOut, w.grp.g.nState),
+        (0xC030, 0, SL_STATE_RUN)
+    );
+    w.grp.g.bRun = 0;
+    assert_eq!(w.grp.cycle(10), SL_OK);
+    assert_eq!((w.fb.DiagCode, w.fb.Ready), (0, 0));
 }
 
 /// The model: research §4.9's table with the v1.0 codes, written from the text (position 1 =

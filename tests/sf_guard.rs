@@ -6,10 +6,13 @@
 //! with a link, and 10,000 random sequences per profile against an independent model with
 //! every state reached. Expected codes are the research table's, never read back.
 
+mod common;
+use common::cgroup::*;
+use common::plcopen::*;
+use common::*;
 use safelogic::base::member::Member;
 use safelogic::*;
 use std::collections::BTreeSet;
-use std::ffi::CStr;
 
 /// (v2.01, v1.0) codes of §4.4's DiagCode table.
 const IDLE: (u16, u16) = (0x0000, 0x0000);
@@ -145,12 +148,8 @@ impl Rig {
     fn step(&mut self, i: In) -> u16 {
         self.at(1, i)
     }
-    fn c(&self, s: (u16, u16)) -> u16 {
-        if self.profile == SL_SF_PROFILE_V10 {
-            s.1
-        } else {
-            s.0
-        }
+    fn c(&self, s: Code) -> u16 {
+        code(self.profile, s)
     }
     fn outputs(&self) -> [u8; 5] {
         let f = &self.fb;
@@ -227,10 +226,6 @@ impl Rig {
             other => panic!("no path to {other:X?}"),
         }
     }
-}
-
-fn profiles() -> [u8; 2] {
-    [SL_SF_PROFILE_V201, SL_SF_PROFILE_V10]
 }
 
 /// Every row of §4.4's table in both profiles, with the earlier guards of a row made to
@@ -636,19 +631,7 @@ fn the_constants() {
 /// (semantics QG5).
 #[test]
 fn texts_for_every_diag_code() {
-    let text = |code: u16| {
-        let mut buf = [0 as std::ffi::c_char; 160];
-        // SAFETY: a writable buffer of the stated length.
-        let rc = unsafe {
-            safelogic::ffi::sl_diag_text(SL_TYPE_SF_GUARD, code, buf.as_mut_ptr(), buf.len())
-        };
-        assert_eq!(rc, SL_OK);
-        // SAFETY: NUL-terminated by the call.
-        unsafe { CStr::from_ptr(buf.as_ptr()) }
-            .to_str()
-            .unwrap()
-            .to_string()
-    };
+    let text = |code: u16| diag_text(SL_TYPE_SF_GUARD, code);
     let mut v2_texts = BTreeSet::new();
     for (v2, v1) in ALL {
         let t = text(v2);
@@ -663,16 +646,6 @@ fn texts_for_every_diag_code() {
     assert!(text(0x8806).contains("S_GuardSwitch2"));
     assert_eq!(text(0x8123), "unknown DiagCode");
     assert!(text(SL_SF_DIAG_CORRUPT).starts_with("library: "));
-}
-
-struct Rng(u64);
-impl Rng {
-    fn next(&mut self) -> u64 {
-        self.0 ^= self.0 >> 12;
-        self.0 ^= self.0 << 25;
-        self.0 ^= self.0 >> 27;
-        self.0.wrapping_mul(0x2545_F491_4F6C_DD1D)
-    }
 }
 
 /// 10,000 random sequences of 40 calls per profile against the model: the same DiagCode
@@ -725,91 +698,34 @@ fn random_sequences_agree_with_the_model() {
 /// stop the group; group STOP halts it (DiagCode 0000).
 #[test]
 fn in_a_group_with_a_link() {
-    use safelogic::ffi::*;
-    let mut gd = SF_Guard {
-        DiscrepancyTime: 50,
-        ..Default::default()
-    };
-    let mut and = FB_AND {
-        wInputActive: 0x3,
-        bAndIn2: 1,
-        ..Default::default()
-    };
-    let mut g = SL_GROUP::default();
-    let mut members = [SL_MEMBER::default(); 2];
-    let mut links = [SL_LINK::default(); 1];
-    let in1 = safelogic::registry::block_type(SL_TYPE_AND)
-        .and_then(|t| t.field("bAndIn1"))
-        .unwrap()
-        .offset;
-    let out = core::mem::offset_of!(SF_Guard, S_GuardOut) as u16;
-    assert_eq!(
-        safelogic::registry::block_type(SL_TYPE_SF_GUARD)
-            .and_then(|t| t.field("S_GuardOut"))
-            .map(|f| f.offset),
-        Some(out)
+    let mut w = WithAnd::new(
+        SL_TYPE_SF_GUARD,
+        SF_Guard {
+            DiscrepancyTime: 50,
+            ..Default::default()
+        },
+        safelogic::ffi::sl_sf_guard_init,
+        core::mem::offset_of!(SF_Guard, S_GuardOut),
     );
-    // SAFETY: every pointer is to a live local that nothing else accesses during the
-    // group's use of it, in place.
-    unsafe {
-        assert_eq!(
-            sl_group_init(&mut g, members.as_mut_ptr(), 2, links.as_mut_ptr(), 1),
-            SL_OK
-        );
-        let gd_p = std::ptr::addr_of_mut!(gd);
-        let and_p = std::ptr::addr_of_mut!(and);
-        assert_eq!(sl_sf_guard_init(gd_p), SL_OK);
-        let mp = members.as_mut_ptr();
-        assert_eq!(
-            sl_group_add_member(
-                &mut g,
-                mp,
-                SL_TYPE_SF_GUARD,
-                gd_p.cast(),
-                std::ptr::null_mut()
-            ),
-            SL_OK
-        );
-        assert_eq!(sl_and_init(and_p), SL_OK);
-        assert_eq!(
-            sl_group_add_member(&mut g, mp, SL_TYPE_AND, and_p.cast(), std::ptr::null_mut()),
-            SL_OK
-        );
-        assert_eq!(
-            sl_group_add_link(&mut g, mp, links.as_mut_ptr(), 0, out, 1, in1),
-            SL_OK
-        );
-        (*gd_p).Activate = 1;
-        (*gd_p).S_GuardSwitch1 = 1;
-        (*gd_p).S_GuardSwitch2 = 1;
-        (*gd_p).S_StartReset = 1;
-        g.bRun = 1;
-        let mut now = 0;
-        let mut cycle = |g: &mut SL_GROUP| {
-            now += 10;
-            sl_group_cycle(g, members.as_mut_ptr(), links.as_mut_ptr(), now)
-        };
-        for _ in 0..3 {
-            assert_eq!(cycle(&mut g), SL_OK);
-        }
-        assert_eq!(((*gd_p).DiagCode, (*and_p).bAndOut), (0x8000, 1));
-        // Open both, close switch 1 only: C010 after 50 ms, the group runs on.
-        (*gd_p).S_GuardSwitch1 = 0;
-        (*gd_p).S_GuardSwitch2 = 0;
-        cycle(&mut g);
-        assert_eq!(((*gd_p).DiagCode, (*and_p).bAndOut), (0x8802, 0));
-        cycle(&mut g);
-        (*gd_p).S_GuardSwitch1 = 1;
-        for _ in 0..7 {
-            cycle(&mut g);
-        }
-        assert_eq!(((*gd_p).DiagCode, g.nState), (0xC010, SL_STATE_RUN));
-        assert_eq!((*gd_p).state(), SL_STATE_RUN);
-        g.bRun = 0;
-        assert_eq!(cycle(&mut g), SL_OK);
-        assert_eq!(
-            ((*gd_p).DiagCode, (*gd_p).Ready, (*and_p).bAndOut),
-            (0, 0, 0)
-        );
+    w.fb.Activate = 1;
+    w.fb.S_GuardSwitch1 = 1;
+    w.fb.S_GuardSwitch2 = 1;
+    w.fb.S_StartReset = 1;
+    w.run(3);
+    assert_eq!((w.fb.DiagCode, w.and.bAndOut), (0x8000, 1));
+    // Open both, close switch 1 only: C010 after 50 ms, the group runs on.
+    w.fb.S_GuardSwitch1 = 0;
+    w.fb.S_GuardSwitch2 = 0;
+    w.grp.cycle(10);
+    assert_eq!((w.fb.DiagCode, w.and.bAndOut), (0x8802, 0));
+    w.grp.cycle(10);
+    w.fb.S_GuardSwitch1 = 1;
+    for _ in 0..7 {
+        w.grp.cycle(10);
     }
+    assert_eq!((w.fb.DiagCode, w.grp.g.nState), (0xC010, SL_STATE_RUN));
+    assert_eq!(w.fb.state(), SL_STATE_RUN);
+    w.grp.g.bRun = 0;
+    assert_eq!(w.grp.cycle(10), SL_OK);
+    assert_eq!((w.fb.DiagCode, w.fb.Ready, w.and.bAndOut), (0, 0, 0));
 }

@@ -7,9 +7,12 @@
 //! sequences per profile against an independent model with every state reached. Expected
 //! codes are the research table's (v2.01 / v1.0 columns).
 
+mod common;
+use common::cgroup::*;
+use common::plcopen::*;
+use common::*;
 use safelogic::*;
 use std::collections::BTreeSet;
-use std::ffi::CStr;
 
 const IDLE: (u16, u16) = (0x0000, 0x0000);
 const CHANGED: (u16, u16) = (0x8802, 0x8005);
@@ -108,12 +111,8 @@ impl Rig {
     fn step(&mut self, i: In) -> u16 {
         self.at(10, i)
     }
-    fn c(&self, s: (u16, u16)) -> u16 {
-        if self.profile == SL_SF_PROFILE_V10 {
-            s.1
-        } else {
-            s.0
-        }
+    fn c(&self, s: Code) -> u16 {
+        code(self.profile, s)
     }
     fn go(&mut self, dt: u32, i: In, s: (u16, u16)) -> In {
         assert_eq!(self.at(dt, i), self.c(s), "towards {s:X?}: {i:?}");
@@ -179,10 +178,6 @@ impl Rig {
         }
         last
     }
-}
-
-fn profiles() -> [u8; 2] {
-    [SL_SF_PROFILE_V201, SL_SF_PROFILE_V10]
 }
 
 fn t(p: u8, from: (u16, u16), i: In, to: (u16, u16), what: &str) -> Rig {
@@ -423,19 +418,7 @@ fn constants_and_invalid_bytes() {
 
 #[test]
 fn texts_for_every_diag_code() {
-    let text = |code: u16| {
-        let mut buf = [0 as std::ffi::c_char; 200];
-        // SAFETY: a writable buffer of the stated length.
-        let rc = unsafe {
-            safelogic::ffi::sl_diag_text(SL_TYPE_SF_MODESELECTOR, code, buf.as_mut_ptr(), buf.len())
-        };
-        assert_eq!(rc, SL_OK);
-        // SAFETY: NUL-terminated by the call.
-        unsafe { CStr::from_ptr(buf.as_ptr()) }
-            .to_str()
-            .unwrap()
-            .to_string()
-    };
+    let text = |code: u16| diag_text(SL_TYPE_SF_MODESELECTOR, code);
     let mut seen = BTreeSet::new();
     for (v2, v1) in ALL {
         for c in [v2, v1] {
@@ -452,103 +435,36 @@ fn texts_for_every_diag_code() {
 
 #[test]
 fn in_a_group_with_a_link() {
-    use safelogic::ffi::*;
-    let mut ms = SF_ModeSelector::default();
-    let mut and = FB_AND {
-        wInputActive: 0x3,
-        bAndIn2: 1,
-        ..Default::default()
-    };
-    let mut g = SL_GROUP::default();
-    let mut members = [SL_MEMBER::default(); 2];
-    let mut links = [SL_LINK::default(); 1];
-    let in1 = safelogic::registry::block_type(SL_TYPE_AND)
-        .and_then(|t| t.field("bAndIn1"))
-        .unwrap()
-        .offset;
-    let out = core::mem::offset_of!(SF_ModeSelector, S_Mode1Sel) as u16;
-    // SAFETY: every pointer is to a live local that nothing else accesses; the group keeps
-    // them for the rest of the test, in place.
-    unsafe {
-        assert_eq!(
-            sl_group_init(&mut g, members.as_mut_ptr(), 2, links.as_mut_ptr(), 1),
-            SL_OK
-        );
-        let ms_p = std::ptr::addr_of_mut!(ms);
-        let and_p = std::ptr::addr_of_mut!(and);
-        let null = std::ptr::null_mut();
-        assert_eq!(sl_sf_modeselector_init(ms_p), SL_OK);
-        let tag = SL_TYPE_SF_MODESELECTOR;
-        assert_eq!(
-            sl_group_add_member(&mut g, members.as_mut_ptr(), tag, ms_p.cast(), null),
-            SL_OK
-        );
-        assert_eq!(sl_and_init(and_p), SL_OK);
-        assert_eq!(
-            sl_group_add_member(
-                &mut g,
-                members.as_mut_ptr(),
-                SL_TYPE_AND,
-                and_p.cast(),
-                null
-            ),
-            SL_OK
-        );
-        assert_eq!(
-            sl_group_add_link(
-                &mut g,
-                members.as_mut_ptr(),
-                links.as_mut_ptr(),
-                0,
-                out,
-                1,
-                in1
-            ),
-            SL_OK
-        );
-        (*ms_p).Activate = 1;
-        (*ms_p).S_Unlock = 1;
-        (*ms_p).S_Mode1 = 1;
-        g.bRun = 1;
-        let mut now = 0;
-        let mut cycle = |g: &mut SL_GROUP| {
-            now += 10;
-            sl_group_cycle(g, members.as_mut_ptr(), links.as_mut_ptr(), now)
-        };
-        for _ in 0..3 {
-            assert_eq!(cycle(&mut g), SL_OK);
-        }
-        (*ms_p).S_SetMode = 1;
-        cycle(&mut g);
-        assert_eq!(((*ms_p).DiagCode, (*and_p).bAndOut), (0x8000, 1));
-        // Locked: the link keeps carrying the selection.
-        (*ms_p).S_Unlock = 0;
-        cycle(&mut g);
-        (*ms_p).S_Mode1 = 0;
-        cycle(&mut g);
-        assert_eq!(((*ms_p).DiagCode, (*and_p).bAndOut), (0x8010, 1));
-        // Unlocked with a short circuit: 8802, then C010; the group runs on.
-        ((*ms_p).S_Unlock, (*ms_p).S_Mode2, (*ms_p).S_Mode3) = (1, 1, 1);
-        cycle(&mut g);
-        cycle(&mut g);
-        assert_eq!(
-            ((*ms_p).DiagCode, (*and_p).bAndOut, g.nState),
-            (0xC010, 0, SL_STATE_RUN)
-        );
-        g.bRun = 0;
-        assert_eq!(cycle(&mut g), SL_OK);
-        assert_eq!(((*ms_p).DiagCode, (*ms_p).Ready), (0, 0));
-    }
-}
-
-struct Rng(u64);
-impl Rng {
-    fn next(&mut self) -> u64 {
-        self.0 ^= self.0 >> 12;
-        self.0 ^= self.0 << 25;
-        self.0 ^= self.0 >> 27;
-        self.0.wrapping_mul(0x2545_F491_4F6C_DD1D)
-    }
+    let mut w = WithAnd::new(
+        SL_TYPE_SF_MODESELECTOR,
+        SF_ModeSelector::default(),
+        safelogic::ffi::sl_sf_modeselector_init,
+        core::mem::offset_of!(SF_ModeSelector, S_Mode1Sel),
+    );
+    w.fb.Activate = 1;
+    w.fb.S_Unlock = 1;
+    w.fb.S_Mode1 = 1;
+    w.run(3);
+    w.fb.S_SetMode = 1;
+    w.grp.cycle(10);
+    assert_eq!((w.fb.DiagCode, w.and.bAndOut), (0x8000, 1));
+    // Locked: the link keeps carrying the selection.
+    w.fb.S_Unlock = 0;
+    w.grp.cycle(10);
+    w.fb.S_Mode1 = 0;
+    w.grp.cycle(10);
+    assert_eq!((w.fb.DiagCode, w.and.bAndOut), (0x8010, 1));
+    // Unlocked with a short circuit: 8802, then C010; the group runs on.
+    (w.fb.S_Unlock, w.fb.S_Mode2, w.fb.S_Mode3) = (1, 1, 1);
+    w.grp.cycle(10);
+    w.grp.cycle(10);
+    assert_eq!(
+        (w.fb.DiagCode, w.and.bAndOut, w.grp.g.nState),
+        (0xC010, 0, SL_STATE_RUN)
+    );
+    w.grp.g.bRun = 0;
+    assert_eq!(w.grp.cycle(10), SL_OK);
+    assert_eq!((w.fb.DiagCode, w.fb.Ready), (0, 0));
 }
 
 /// The model, written from research §4.8 and semantics QM1–QM6 (v2.01 codes): R_TRIG of

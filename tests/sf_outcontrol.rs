@@ -6,35 +6,20 @@
 //! 10,000 random sequences per profile against an independent model with every state
 //! reached. Expected codes are the research's, never read back.
 
+mod common;
+use common::cgroup::*;
+use common::plcopen::*;
+use common::*;
 use safelogic::*;
 use std::collections::BTreeSet;
-use std::ffi::CStr;
 
-/// (v2.01, v1.0) codes of §4.13 (v1.0: the research's recollection, semantics QO6).
-const IDLE: (u16, u16) = (0x0000, 0x0000);
-const INIT: (u16, u16) = (0x8401, 0x8001);
-const SAFE: (u16, u16) = (0x8802, 0x8002);
-const LOCK: (u16, u16) = (0x8404, 0x8003);
-const DISABLE: (u16, u16) = (0x8006, 0x8010);
-const ENABLE: (u16, u16) = (0x8000, 0x8000);
-const ERR_RESET_1: (u16, u16) = (0xC001, 0xC001);
-const ERR_RESET_2: (u16, u16) = (0xC011, 0xC002);
-const ERR_CONTROL: (u16, u16) = (0xC010, 0xC010);
-const ERR_INIT: (u16, u16) = (0xC020, 0xC011);
-const ERR_LOCK: (u16, u16) = (0xC030, 0xC111);
-const ALL: [(u16, u16); 11] = [
-    IDLE,
-    INIT,
-    SAFE,
-    LOCK,
-    DISABLE,
-    ENABLE,
-    ERR_RESET_1,
-    ERR_RESET_2,
-    ERR_CONTROL,
-    ERR_INIT,
-    ERR_LOCK,
-];
+// (v2.01, v1.0) codes of §4.13 (v1.0: the research's recollection, semantics QO6).
+codes! {
+    IDLE = 0x0000 / 0x0000, INIT = 0x8401 / 0x8001, SAFE = 0x8802 / 0x8002,
+    LOCK = 0x8404 / 0x8003, DISABLE = 0x8006 / 0x8010, ENABLE = 0x8000 / 0x8000,
+    ERR_RESET_1 = 0xC001 / 0xC001, ERR_RESET_2 = 0xC011 / 0xC002, ERR_CONTROL = 0xC010 / 0xC010,
+    ERR_INIT = 0xC020 / 0xC011, ERR_LOCK = 0xC030 / 0xC111,
+}
 
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 struct In {
@@ -142,12 +127,8 @@ impl Rig {
         assert_eq!(rc, SL_OK);
         self.fb.DiagCode
     }
-    fn c(&self, s: (u16, u16)) -> u16 {
-        if self.profile == SL_SF_PROFILE_V10 {
-            s.1
-        } else {
-            s.0
-        }
+    fn c(&self, s: Code) -> u16 {
+        code(self.profile, s)
     }
     fn outputs(&self) -> [u8; 5] {
         let f = &self.fb;
@@ -160,7 +141,7 @@ impl Rig {
         ]
     }
     /// IDLE → `target` by the machine's paths (StaticControl FALSE); returns the last inputs.
-    fn reach(&mut self, target: (u16, u16)) -> In {
+    fn reach(&mut self, target: Code) -> In {
         let mut i = ON;
         if target == ERR_RESET_1 {
             i.reset = true;
@@ -230,10 +211,6 @@ impl Rig {
             other => panic!("no path to {other:X?}"),
         }
     }
-}
-
-fn profiles() -> [u8; 2] {
-    [SL_SF_PROFILE_V201, SL_SF_PROFILE_V10]
 }
 
 #[test]
@@ -437,7 +414,7 @@ fn the_process_control_edge_is_evaluated_every_call() {
 
 #[test]
 fn outputs_per_state_and_activate_false_from_every_state() {
-    let expect = |s: (u16, u16)| -> [u8; 5] {
+    let expect = |s: Code| -> [u8; 5] {
         match s {
             INIT | LOCK => [1, 0, 0, 1, 0],
             SAFE => [1, 0, 1, 0, 0],
@@ -502,19 +479,7 @@ fn start_up_with_and_without_s_start_reset() {
 /// text is given: semantics QO6).
 #[test]
 fn texts_for_every_diag_code() {
-    let text = |code: u16| {
-        let mut buf = [0 as std::ffi::c_char; 160];
-        // SAFETY: a writable buffer of the stated length.
-        let rc = unsafe {
-            safelogic::ffi::sl_diag_text(SL_TYPE_SF_OUTCONTROL, code, buf.as_mut_ptr(), buf.len())
-        };
-        assert_eq!(rc, SL_OK);
-        // SAFETY: NUL-terminated by the call.
-        unsafe { CStr::from_ptr(buf.as_ptr()) }
-            .to_str()
-            .unwrap()
-            .to_string()
-    };
+    let text = |code: u16| diag_text(SL_TYPE_SF_OUTCONTROL, code);
     let mut seen = BTreeSet::new();
     for (v2, v1) in ALL {
         let t = text(v2);
@@ -527,16 +492,6 @@ fn texts_for_every_diag_code() {
     assert_eq!(seen.len(), ALL.len());
     assert_eq!(text(0xC011), text(ERR_RESET_2.0));
     assert_eq!(text(0x8123), "unknown DiagCode");
-}
-
-struct Rng(u64);
-impl Rng {
-    fn next(&mut self) -> u64 {
-        self.0 ^= self.0 >> 12;
-        self.0 ^= self.0 << 25;
-        self.0 ^= self.0 >> 27;
-        self.0.wrapping_mul(0x2545_F491_4F6C_DD1D)
-    }
 }
 
 #[test]
@@ -583,79 +538,56 @@ fn random_sequences_agree_with_the_model() {
 /// S_OutControl to an FB_AND; the E-stop pressed drops the chain in the same group cycle.
 #[test]
 fn in_a_group_with_links() {
-    use safelogic::ffi::*;
-    let mut es = SF_EmergencyStop::default();
-    let mut oc = SF_OutControl::default();
-    let mut and = FB_AND {
+    let mut es = RawBox::new(SF_EmergencyStop::default());
+    let mut oc = RawBox::new(SF_OutControl::default());
+    let and = RawBox::new(FB_AND {
         wInputActive: 0x3,
         bAndIn2: 1,
         ..Default::default()
-    };
-    let mut g = SL_GROUP::default();
-    let mut members = [SL_MEMBER::default(); 3];
-    let mut links = [SL_LINK::default(); 2];
-    let in1 = safelogic::registry::block_type(SL_TYPE_AND)
-        .and_then(|t| t.field("bAndIn1"))
-        .unwrap()
-        .offset;
-    let es_out = core::mem::offset_of!(SF_EmergencyStop, S_EStopOut) as u16;
-    let oc_in = core::mem::offset_of!(SF_OutControl, S_SafeControl) as u16;
-    let oc_out = core::mem::offset_of!(SF_OutControl, S_OutControl) as u16;
-    // SAFETY: every pointer is to a live local that nothing else accesses during the
-    // group's use of it, in place.
-    unsafe {
-        assert_eq!(
-            sl_group_init(&mut g, members.as_mut_ptr(), 3, links.as_mut_ptr(), 2),
-            SL_OK
-        );
-        let es_p = std::ptr::addr_of_mut!(es);
-        let oc_p = std::ptr::addr_of_mut!(oc);
-        let and_p = std::ptr::addr_of_mut!(and);
-        let mp = members.as_mut_ptr();
-        let none = std::ptr::null_mut();
-        assert_eq!(sl_sf_emergencystop_init(es_p), SL_OK);
-        assert_eq!(sl_sf_outcontrol_init(oc_p), SL_OK);
-        assert_eq!(sl_and_init(and_p), SL_OK);
-        for (tag, p) in [
-            (SL_TYPE_SF_EMERGENCYSTOP, es_p.cast()),
-            (SL_TYPE_SF_OUTCONTROL, oc_p.cast()),
-            (SL_TYPE_AND, and_p.cast()),
-        ] {
-            assert_eq!(sl_group_add_member(&mut g, mp, tag, p, none), SL_OK);
-        }
-        let lp = links.as_mut_ptr();
-        assert_eq!(
-            sl_group_add_link(&mut g, mp, lp, 0, es_out, 1, oc_in),
-            SL_OK
-        );
-        assert_eq!(sl_group_add_link(&mut g, mp, lp, 1, oc_out, 2, in1), SL_OK);
-        (*es_p).Activate = 1;
-        (*es_p).S_EStopIn = 1;
-        (*es_p).S_StartReset = 1;
-        (*oc_p).Activate = 1;
-        (*oc_p).S_StartReset = 1;
-        (*oc_p).S_AutoReset = 1;
-        g.bRun = 1;
-        let mut now = 0;
-        let mut cycle = |g: &mut SL_GROUP| {
-            now += 10;
-            sl_group_cycle(g, members.as_mut_ptr(), links.as_mut_ptr(), now)
-        };
-        for _ in 0..3 {
-            assert_eq!(cycle(&mut g), SL_OK);
-        }
-        assert_eq!((*oc_p).DiagCode, 0x8006);
-        (*oc_p).ProcessControl = 1;
-        cycle(&mut g);
-        assert_eq!(((*oc_p).DiagCode, (*and_p).bAndOut), (0x8000, 1));
-        (*es_p).S_EStopIn = 0;
-        cycle(&mut g);
-        assert_eq!(
-            ((*es_p).DiagCode, (*oc_p).DiagCode, (*and_p).bAndOut),
-            (0x8804, 0x8802, 0)
-        );
-        g.bRun = 0;
-        assert_eq!(cycle(&mut g), SL_OK);
-        assert_eq!(((*oc_p).DiagCode, (*oc_p).Ready), (0, 0));
+    });
+    let mut grp = CGroup::new(3, 2);
+    grp.add_init(
+        SL_TYPE_SF_EMERGENCYSTOP,
+        &es,
+        safelogic::ffi::sl_sf_emergencystop_init,
+    );
+    grp.add_init(
+        SL_TYPE_SF_OUTCONTROL,
+        &oc,
+        safelogic::ffi::sl_sf_outcontrol_init,
+    );
+    grp.add_init(SL_TYPE_AND, &and, safelogic::ffi::sl_and_init);
+    grp.link(
+        0,
+        core::mem::offset_of!(SF_EmergencyStop, S_EStopOut) as u16,
+        1,
+        core::mem::offset_of!(SF_OutControl, S_SafeControl) as u16,
+    );
+    grp.link(
+        1,
+        core::mem::offset_of!(SF_OutControl, S_OutControl) as u16,
+        2,
+        field(SL_TYPE_AND, "bAndIn1"),
+    );
+
+    es.Activate = 1;
+    es.S_EStopIn = 1;
+    es.S_StartReset = 1;
+    oc.Activate = 1;
+    oc.S_StartReset = 1;
+    oc.S_AutoReset = 1;
+    grp.g.bRun = 1;
+    for k in 0..3 {
+        assert_eq!(grp.cycle(10), SL_OK, "group call {k}");
     }
+    assert_eq!(oc.DiagCode, 0x8006);
+    oc.ProcessControl = 1;
+    grp.cycle(10);
+    assert_eq!((oc.DiagCode, and.bAndOut), (0x8000, 1));
+    es.S_EStopIn = 0;
+    grp.cycle(10);
+    assert_eq!((es.DiagCode, oc.DiagCode, and.bAndOut), (0x8804, 0x8802, 0));
+    grp.g.bRun = 0;
+    assert_eq!(grp.cycle(10), SL_OK);
+    assert_eq!((oc.DiagCode, oc.Ready), (0, 0));
 }

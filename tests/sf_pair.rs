@@ -6,29 +6,17 @@
 //! and 10,000 random sequences per block and profile against an independent model with
 //! every state reached. Expected codes are the research table's.
 
+mod common;
+use common::plcopen::*;
+use common::*;
 use safelogic::*;
 use std::collections::BTreeSet;
 
-const IDLE: (u16, u16) = (0x0000, 0x0000);
-const INIT: (u16, u16) = (0x8801, 0x8001);
-const ENABLED: (u16, u16) = (0x8000, 0x8000);
-const WAIT_B: (u16, u16) = (0x8802, 0x8004);
-const WAIT_A: (u16, u16) = (0x8804, 0x8014);
-const FROM_ACTIVE: (u16, u16) = (0x8806, 0x8005);
-const ERR1: (u16, u16) = (0xC010, 0xC001);
-const ERR2: (u16, u16) = (0xC020, 0xC002);
-const ERR3: (u16, u16) = (0xC030, 0xC003);
-const ALL: [(u16, u16); 9] = [
-    IDLE,
-    INIT,
-    ENABLED,
-    WAIT_B,
-    WAIT_A,
-    FROM_ACTIVE,
-    ERR1,
-    ERR2,
-    ERR3,
-];
+codes! {
+    IDLE = 0x0000 / 0x0000, INIT = 0x8801 / 0x8001, ENABLED = 0x8000 / 0x8000,
+    WAIT_B = 0x8802 / 0x8004, WAIT_A = 0x8804 / 0x8014, FROM_ACTIVE = 0x8806 / 0x8005,
+    ERR1 = 0xC010 / 0xC001, ERR2 = 0xC020 / 0xC002, ERR3 = 0xC030 / 0xC003,
+}
 
 /// The channels in the active sense: Equivalent (A, B); Antivalent (NC, NOT NO).
 trait Pair: FunctionBlock + Default + Copy {
@@ -109,15 +97,11 @@ impl<B: Pair> Rig<B> {
     fn step(&mut self, a: bool, b: bool) -> u16 {
         self.at(1, a, b)
     }
-    fn c(&self, s: (u16, u16)) -> u16 {
-        if self.profile == SL_SF_PROFILE_V10 {
-            s.1
-        } else {
-            s.0
-        }
+    fn c(&self, s: Code) -> u16 {
+        code(self.profile, s)
     }
     /// IDLE → INIT → `target` by the table's paths (t = the rig's DiscrepancyTime ≥ 10).
-    fn reach(&mut self, target: (u16, u16)) {
+    fn reach(&mut self, target: Code) {
         assert_eq!(self.step(false, false), self.c(INIT));
         match target {
             INIT => {}
@@ -144,10 +128,6 @@ impl<B: Pair> Rig<B> {
             other => panic!("{other:X?}"),
         }
     }
-}
-
-fn profiles() -> [u8; 2] {
-    [SL_SF_PROFILE_V201, SL_SF_PROFILE_V10]
 }
 
 fn transitions<B: Pair>() {
@@ -375,16 +355,6 @@ fn the_timer_runs_across_the_clock_wrap() {
     assert_eq!(fb.DiagCode, 0x8802, "99 ms");
     assert_eq!(fb.cycle(49), SL_OK);
     assert_eq!(fb.DiagCode, 0xC010, "100 ms");
-}
-
-struct Rng(u64);
-impl Rng {
-    fn next(&mut self) -> u64 {
-        self.0 ^= self.0 >> 12;
-        self.0 ^= self.0 << 25;
-        self.0 ^= self.0 >> 27;
-        self.0.wrapping_mul(0x2545_F491_4F6C_DD1D)
-    }
 }
 
 /// The model: research §4.11's table with the v1.0 codes, written from the text; the timer

@@ -6,9 +6,12 @@
 //! group with ResetOut linked to an SF_EmergencyStop's Reset, and 10,000 random sequences
 //! against an independent model. Expected codes are the research table's (CS-LIB FBS_RESBUT).
 
+mod common;
+use common::cgroup::*;
+
+use common::*;
 use safelogic::*;
 use std::collections::BTreeSet;
-use std::ffi::CStr;
 
 const IDLE: u16 = 0x0000;
 const WAIT_R: u16 = 0x83E2;
@@ -263,19 +266,7 @@ fn constants_profile_and_library_faults() {
 
 #[test]
 fn texts_for_every_diag_code() {
-    let text = |code: u16| {
-        let mut buf = [0 as std::ffi::c_char; 160];
-        // SAFETY: a writable buffer of the stated length.
-        let rc = unsafe {
-            safelogic::ffi::sl_diag_text(SL_TYPE_SF_RESETBUTTON, code, buf.as_mut_ptr(), buf.len())
-        };
-        assert_eq!(rc, SL_OK);
-        // SAFETY: NUL-terminated by the call.
-        unsafe { CStr::from_ptr(buf.as_ptr()) }
-            .to_str()
-            .unwrap()
-            .to_string()
-    };
+    let text = |code: u16| diag_text(SL_TYPE_SF_RESETBUTTON, code);
     let seen: BTreeSet<String> = ALL.iter().map(|c| text(*c)).collect();
     assert_eq!(seen.len(), ALL.len());
     assert!(!seen.contains("unknown DiagCode"));
@@ -293,110 +284,65 @@ fn texts_for_every_diag_code() {
 /// error of the E-stop any more (that is the point of the block).
 #[test]
 fn in_a_group_in_front_of_an_emergency_stop() {
-    use safelogic::ffi::*;
-    let mut es = SF_EmergencyStop {
+    let mut es = RawBox::new(SF_EmergencyStop {
         Activate: 1,
         S_EStopIn: 1,
         ..Default::default()
-    };
-    let mut rb = SF_ResetButton {
+    });
+    let mut rb = RawBox::new(SF_ResetButton {
         TrailingMinimum: 350,
         TrailingMaximum: 2_000,
         ..Default::default()
-    };
-    let mut g = SL_GROUP::default();
-    let mut members = [SL_MEMBER::default(); 2];
-    let mut links = [SL_LINK::default(); 2];
-    let off = |n: &str, t: u16| {
-        safelogic::registry::block_type(t)
-            .and_then(|t| t.field(n))
-            .unwrap()
-            .offset
-    };
-    // SAFETY: every pointer is to a live local that nothing else accesses; the group keeps
-    // them for the rest of the test, in place.
-    unsafe {
-        assert_eq!(
-            sl_group_init(&mut g, members.as_mut_ptr(), 2, links.as_mut_ptr(), 2),
-            SL_OK
-        );
-        let es_p = std::ptr::addr_of_mut!(es);
-        let rb_p = std::ptr::addr_of_mut!(rb);
-        assert_eq!(sl_sf_resetbutton_init(rb_p), SL_OK);
-        assert_eq!(sl_sf_emergencystop_init(es_p), SL_OK);
-        for (tag, p) in [
-            (SL_TYPE_SF_EMERGENCYSTOP, es_p.cast::<core::ffi::c_void>()),
-            (SL_TYPE_SF_RESETBUTTON, rb_p.cast()),
-        ] {
-            assert_eq!(
-                sl_group_add_member(&mut g, members.as_mut_ptr(), tag, p, std::ptr::null_mut()),
-                SL_OK
-            );
-        }
-        let es_t = SL_TYPE_SF_EMERGENCYSTOP;
-        let rb_t = SL_TYPE_SF_RESETBUTTON;
-        for (src, so, dst, d) in [
-            (0, off("ResetRequest", es_t), 1, off("ResetRequested", rb_t)),
-            (1, off("ResetOut", rb_t), 0, off("Reset", es_t)),
-        ] {
-            assert_eq!(
-                sl_group_add_link(
-                    &mut g,
-                    members.as_mut_ptr(),
-                    links.as_mut_ptr(),
-                    src,
-                    so,
-                    dst,
-                    d
-                ),
-                SL_OK
-            );
-        }
-        g.bRun = 1;
-        let mut now = 0;
-        let mut cycle = |g: &mut SL_GROUP, dt: u32| {
-            now += dt;
-            sl_group_cycle(g, members.as_mut_ptr(), links.as_mut_ptr(), now)
-        };
-        for _ in 0..3 {
-            assert_eq!(cycle(&mut g, 10), SL_OK);
-        }
-        assert_eq!(((*es_p).DiagCode, (*es_p).ResetRequest), (0x8402, 1));
-        assert_eq!((*rb_p).DiagCode, WAIT_R, "activated by ResetRequest");
-        (*rb_p).ResetIn = 1;
-        cycle(&mut g, 10);
-        cycle(&mut g, 400);
-        assert_eq!(((*rb_p).DiagCode, (*es_p).DiagCode), (WAIT_F, 0x8402));
-        (*rb_p).ResetIn = 0;
-        cycle(&mut g, 10);
-        assert_eq!(((*rb_p).DiagCode, (*rb_p).ResetOut), (DETECTED, 1));
-        cycle(&mut g, 10);
-        assert_eq!(((*es_p).DiagCode, (*es_p).S_EStopOut), (0x8000, 1));
-        assert_eq!((*rb_p).DiagCode, IDLE, "no reset requested any more");
-        // A press too short: no reset, ERR_TRAIL_MIN, the group runs on.
-        (*es_p).S_EStopIn = 0;
-        cycle(&mut g, 10);
-        (*es_p).S_EStopIn = 1;
-        cycle(&mut g, 10);
-        cycle(&mut g, 10);
-        assert_eq!((*es_p).DiagCode, 0x8404);
-        (*rb_p).ResetIn = 1;
-        cycle(&mut g, 10);
-        (*rb_p).ResetIn = 0;
-        cycle(&mut g, 50);
-        assert_eq!(((*rb_p).DiagCode, (*es_p).DiagCode), (ERR_MIN, 0x8404));
-        assert_eq!(g.nState, SL_STATE_RUN);
-    }
-}
+    });
+    let mut grp = CGroup::new(2, 2);
+    grp.add_init(
+        SL_TYPE_SF_EMERGENCYSTOP,
+        &es,
+        safelogic::ffi::sl_sf_emergencystop_init,
+    );
+    grp.add_init(
+        SL_TYPE_SF_RESETBUTTON,
+        &rb,
+        safelogic::ffi::sl_sf_resetbutton_init,
+    );
+    let (es_t, rb_t) = (SL_TYPE_SF_EMERGENCYSTOP, SL_TYPE_SF_RESETBUTTON);
+    grp.link(
+        0,
+        field(es_t, "ResetRequest"),
+        1,
+        field(rb_t, "ResetRequested"),
+    );
+    grp.link(1, field(rb_t, "ResetOut"), 0, field(es_t, "Reset"));
 
-struct Rng(u64);
-impl Rng {
-    fn next(&mut self) -> u64 {
-        self.0 ^= self.0 >> 12;
-        self.0 ^= self.0 << 25;
-        self.0 ^= self.0 >> 27;
-        self.0.wrapping_mul(0x2545_F491_4F6C_DD1D)
+    grp.g.bRun = 1;
+    for k in 0..3 {
+        assert_eq!(grp.cycle(10), SL_OK, "group call {k}");
     }
+    assert_eq!((es.DiagCode, es.ResetRequest), (0x8402, 1));
+    assert_eq!(rb.DiagCode, WAIT_R, "activated by ResetRequest");
+    rb.ResetIn = 1;
+    grp.cycle(10);
+    grp.cycle(400);
+    assert_eq!((rb.DiagCode, es.DiagCode), (WAIT_F, 0x8402));
+    rb.ResetIn = 0;
+    grp.cycle(10);
+    assert_eq!((rb.DiagCode, rb.ResetOut), (DETECTED, 1));
+    grp.cycle(10);
+    assert_eq!((es.DiagCode, es.S_EStopOut), (0x8000, 1));
+    assert_eq!(rb.DiagCode, IDLE, "no reset requested any more");
+    // A press too short: no reset, ERR_TRAIL_MIN, the group runs on.
+    es.S_EStopIn = 0;
+    grp.cycle(10);
+    es.S_EStopIn = 1;
+    grp.cycle(10);
+    grp.cycle(10);
+    assert_eq!(es.DiagCode, 0x8404);
+    rb.ResetIn = 1;
+    grp.cycle(10);
+    rb.ResetIn = 0;
+    grp.cycle(50);
+    assert_eq!((rb.DiagCode, es.DiagCode), (ERR_MIN, 0x8404));
+    assert_eq!(grp.g.nState, SL_STATE_RUN);
 }
 
 /// The model, written from research §4.19's table: an R_TRIG of ResetIn called in every

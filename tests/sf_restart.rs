@@ -6,32 +6,21 @@
 //! 10,000 random sequences against an independent model of the table. Every expected code
 //! is the research table's (v2.01 / v1.0 column), never read back from the library.
 
+mod common;
+use common::cgroup::*;
+use common::plcopen::*;
+use common::*;
 use safelogic::base::member::Member;
 use safelogic::*;
 use std::collections::BTreeSet;
 use std::ffi::CStr;
 
-/// (v2.01, v1.0) codes of the states of §4.1's DiagCode table.
-const IDLE: (u16, u16) = (0x0000, 0x0000);
-const INIT: (u16, u16) = (0x8001, 0x8001);
-const ENABLED: (u16, u16) = (0x8000, 0x8000);
-const WAIT_IN_1: (u16, u16) = (0x8802, 0x8002);
-const WAIT_RESET_1: (u16, u16) = (0x8402, 0x8003);
-const WAIT_IN_2: (u16, u16) = (0x8804, 0x8004);
-const WAIT_RESET_2: (u16, u16) = (0x8404, 0x8005);
-const ERR_RESET_1: (u16, u16) = (0xC001, 0xC001);
-const ERR_RESET_2: (u16, u16) = (0xC011, 0xC002);
-const ALL: [(u16, u16); 9] = [
-    IDLE,
-    INIT,
-    ENABLED,
-    WAIT_IN_1,
-    WAIT_RESET_1,
-    WAIT_IN_2,
-    WAIT_RESET_2,
-    ERR_RESET_1,
-    ERR_RESET_2,
-];
+// (v2.01, v1.0) codes of the states of §4.1's DiagCode table.
+codes! {
+    IDLE = 0x0000 / 0x0000, INIT = 0x8001 / 0x8001, ENABLED = 0x8000 / 0x8000,
+    WAIT_IN_1 = 0x8802 / 0x8002, WAIT_RESET_1 = 0x8402 / 0x8003, WAIT_IN_2 = 0x8804 / 0x8004,
+    WAIT_RESET_2 = 0x8404 / 0x8005, ERR_RESET_1 = 0xC001 / 0xC001, ERR_RESET_2 = 0xC011 / 0xC002,
+}
 
 /// One call's inputs.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
@@ -192,16 +181,12 @@ impl<B: Family> Rig<B> {
         self.fb.code()
     }
     /// The code of a state pair in this rig's profile.
-    fn c(&self, s: (u16, u16)) -> u16 {
-        if self.profile == SL_SF_PROFILE_V10 {
-            s.1
-        } else {
-            s.0
-        }
+    fn c(&self, s: Code) -> u16 {
+        code(self.profile, s)
     }
     /// Drives to a state of §4.1 from IDLE by its documented path; the path's own codes are
     /// checked on the way.
-    fn reach(&mut self, target: (u16, u16)) -> In {
+    fn reach(&mut self, target: Code) -> In {
         let mut i = In {
             activate: true,
             ..In::default()
@@ -394,7 +379,7 @@ fn every_transition_in_first_match_order() {
 /// Outputs of each state (research §3.2, §9.3; the generic page's examples): Ready, the
 /// safety output, SafetyDemand, ResetRequest (Reset FALSE), Error.
 fn outputs_per_state<B: Family>() {
-    let expect = |s: (u16, u16)| -> [u8; 5] {
+    let expect = |s: Code| -> [u8; 5] {
         match s {
             INIT => [1, 0, 0, 0, 0],
             ENABLED => [1, 1, 0, 0, 0],
@@ -668,17 +653,7 @@ fn a_group_halt_is_idle() {
 /// the group-level states.
 #[test]
 fn texts_for_every_diag_code() {
-    let text = |tag: u16, code: u16| {
-        let mut buf = [0 as std::ffi::c_char; 160];
-        // SAFETY: a writable buffer of the stated length.
-        let rc = unsafe { safelogic::ffi::sl_diag_text(tag, code, buf.as_mut_ptr(), buf.len()) };
-        assert_eq!(rc, SL_OK);
-        // SAFETY: NUL-terminated by the call.
-        unsafe { CStr::from_ptr(buf.as_ptr()) }
-            .to_str()
-            .unwrap()
-            .to_string()
-    };
+    let text = |tag: u16, code: u16| diag_text(tag, code);
     for tag in [SL_TYPE_SF_EMERGENCYSTOP, SL_TYPE_SF_ESPE, SL_TYPE_SF_PSE] {
         let mut seen = BTreeSet::new();
         for (v2, v1) in ALL {
@@ -719,15 +694,6 @@ fn texts_for_every_diag_code() {
 }
 
 /// xorshift, as the other tests.
-struct Rng(u64);
-impl Rng {
-    fn next(&mut self) -> u64 {
-        self.0 ^= self.0 >> 12;
-        self.0 ^= self.0 << 25;
-        self.0 ^= self.0 >> 27;
-        self.0.wrapping_mul(0x2545_F491_4F6C_DD1D)
-    }
-}
 
 /// 10,000 random sequences of 40 calls per block and profile against the model: the same
 /// DiagCode after every call, the outputs from it, and every state reached.
@@ -785,100 +751,43 @@ fn random_sequences_agree_with_the_model() {
 /// not stop the group; the group's FbRun FALSE (group STOP) halts it: DiagCode 0000.
 #[test]
 fn in_a_group_with_a_link() {
-    use safelogic::ffi::*;
-    let mut es = SF_EmergencyStop::default();
-    let mut and = FB_AND {
-        wInputActive: 0x3,
-        bAndIn2: 1,
-        ..Default::default()
-    };
-    let mut g = SL_GROUP::default();
-    let mut members = [SL_MEMBER::default(); 2];
-    let mut links = [SL_LINK::default(); 1];
-    let in1 = safelogic::registry::block_type(SL_TYPE_AND)
-        .and_then(|t| t.field("bAndIn1"))
-        .unwrap()
-        .offset;
-    let out = core::mem::offset_of!(SF_EmergencyStop, S_EStopOut) as u16;
-    // SAFETY: every pointer is to a live local that nothing else accesses; the group keeps
-    // them for the rest of the test, in place.
-    unsafe {
-        assert_eq!(
-            sl_group_init(&mut g, members.as_mut_ptr(), 2, links.as_mut_ptr(), 1),
-            SL_OK
-        );
-        let es_p = std::ptr::addr_of_mut!(es);
-        let and_p = std::ptr::addr_of_mut!(and);
-        let add = |g: &mut SL_GROUP, m: &mut [SL_MEMBER; 2], tag, p: *mut core::ffi::c_void| {
-            sl_group_add_member(g, m.as_mut_ptr(), tag, p, std::ptr::null_mut())
-        };
-        assert_eq!(
-            add(&mut g, &mut members, SL_TYPE_SF_EMERGENCYSTOP, es_p.cast()),
-            SL_E_CONFIG,
-            "never initialised"
-        );
-        assert_eq!(sl_sf_emergencystop_init(es_p), SL_OK);
-        assert_eq!(
-            add(&mut g, &mut members, SL_TYPE_SF_EMERGENCYSTOP, es_p.cast()),
-            SL_OK
-        );
-        assert_eq!(sl_and_init(and_p), SL_OK);
-        assert_eq!(add(&mut g, &mut members, SL_TYPE_AND, and_p.cast()), SL_OK);
-        assert_eq!(
-            sl_group_add_link(
-                &mut g,
-                members.as_mut_ptr(),
-                links.as_mut_ptr(),
-                0,
-                out,
-                1,
-                in1
-            ),
-            SL_OK
-        );
-        (*es_p).Activate = 1;
-        (*es_p).S_EStopIn = 1;
-        (*es_p).S_StartReset = 1;
-        g.bRun = 1;
-        let mut now = 0;
-        let mut cycle = |g: &mut SL_GROUP| {
-            now += 10;
-            sl_group_cycle(g, members.as_mut_ptr(), links.as_mut_ptr(), now)
-        };
-        for _ in 0..3 {
-            assert_eq!(cycle(&mut g), SL_OK);
-        }
-        assert_eq!(
-            ((*es_p).DiagCode, (*and_p).bAndOut, g.nState),
-            (0x8000, 1, SL_STATE_RUN)
-        );
-        // A safety demand and a Reset held into the wait state: C011, the group runs on.
-        (*es_p).S_StartReset = 0;
-        (*es_p).S_EStopIn = 0;
-        (*es_p).Reset = 1;
-        cycle(&mut g);
-        assert_eq!(((*es_p).DiagCode, (*and_p).bAndOut), (0x8804, 0));
-        (*es_p).S_EStopIn = 1;
-        cycle(&mut g);
-        cycle(&mut g);
-        assert_eq!(
-            ((*es_p).DiagCode, (*es_p).Error, g.nState),
-            (0xC011, 1, SL_STATE_RUN)
-        );
-        (*es_p).Reset = 0;
-        cycle(&mut g);
-        (*es_p).Reset = 1;
-        cycle(&mut g);
-        assert_eq!(((*es_p).DiagCode, (*and_p).bAndOut), (0x8000, 1));
-        // Group STOP: the SF_ block is halted (idle), its link carries FALSE.
-        g.bRun = 0;
-        assert_eq!(cycle(&mut g), SL_OK);
-        assert_eq!(
-            ((*es_p).DiagCode, (*es_p).S_EStopOut, (*es_p).Ready),
-            (0, 0, 0)
-        );
-        assert_eq!(g.nState, SL_STATE_STOP);
-    }
+    let mut w = WithAnd::new(
+        SL_TYPE_SF_EMERGENCYSTOP,
+        SF_EmergencyStop::default(),
+        safelogic::ffi::sl_sf_emergencystop_init,
+        core::mem::offset_of!(SF_EmergencyStop, S_EStopOut),
+    );
+    w.fb.Activate = 1;
+    w.fb.S_EStopIn = 1;
+    w.fb.S_StartReset = 1;
+    w.run(3);
+    assert_eq!(
+        (w.fb.DiagCode, w.and.bAndOut, w.grp.g.nState),
+        (0x8000, 1, SL_STATE_RUN)
+    );
+    // A safety demand and a Reset held into the wait state: C011, the group runs on.
+    w.fb.S_StartReset = 0;
+    w.fb.S_EStopIn = 0;
+    w.fb.Reset = 1;
+    w.grp.cycle(10);
+    assert_eq!((w.fb.DiagCode, w.and.bAndOut), (0x8804, 0));
+    w.fb.S_EStopIn = 1;
+    w.grp.cycle(10);
+    w.grp.cycle(10);
+    assert_eq!(
+        (w.fb.DiagCode, w.fb.Error, w.grp.g.nState),
+        (0xC011, 1, SL_STATE_RUN)
+    );
+    w.fb.Reset = 0;
+    w.grp.cycle(10);
+    w.fb.Reset = 1;
+    w.grp.cycle(10);
+    assert_eq!((w.fb.DiagCode, w.and.bAndOut), (0x8000, 1));
+    // Group STOP: the SF_ block is halted (idle), its link carries FALSE.
+    w.grp.g.bRun = 0;
+    assert_eq!(w.grp.cycle(10), SL_OK);
+    assert_eq!((w.fb.DiagCode, w.fb.S_EStopOut, w.fb.Ready), (0, 0, 0));
+    assert_eq!(w.grp.g.nState, SL_STATE_STOP);
 }
 
 /// An SF_EmergencyStop activated at 100 with automatic reset, its output enabled at 110.

@@ -7,37 +7,20 @@
 //! profile against an independent model with every state reached. Expected codes are the
 //! research table's, never read back.
 
+mod common;
+use common::cgroup::*;
+use common::plcopen::*;
+use common::*;
 use safelogic::*;
 use std::collections::BTreeSet;
-use std::ffi::CStr;
 
-/// (v2.01, v1.0) codes of §4.14's DiagCode table (ERR_RESET_1's v1.0 code C001: QR2).
-const IDLE: (u16, u16) = (0x0000, 0x0000);
-const INIT: (u16, u16) = (0x8401, 0x8001);
-const SAFE: (u16, u16) = (0x8000, 0x8000);
-const OP: (u16, u16) = (0x8802, 0x8002);
-const CONF_OP: (u16, u16) = (0x8804, 0x8012);
-const CONF: (u16, u16) = (0x8002, 0x8003);
-const WAIT_OP: (u16, u16) = (0x8004, 0x8005);
-const ERR_RESET_1: (u16, u16) = (0xC001, 0xC001);
-const ERR_ACK: (u16, u16) = (0xC010, 0xC002);
-const ERR_TIME: (u16, u16) = (0xC020, 0xC003);
-const ERR_RESET_2: (u16, u16) = (0xC014, 0xC004);
-const ERR_RESET_3: (u16, u16) = (0xC011, 0xC005);
-const ALL: [(u16, u16); 12] = [
-    IDLE,
-    INIT,
-    SAFE,
-    OP,
-    CONF_OP,
-    CONF,
-    WAIT_OP,
-    ERR_RESET_1,
-    ERR_ACK,
-    ERR_TIME,
-    ERR_RESET_2,
-    ERR_RESET_3,
-];
+// (v2.01, v1.0) codes of §4.14's DiagCode table (ERR_RESET_1's v1.0 code C001: QR2).
+codes! {
+    IDLE = 0x0000 / 0x0000, INIT = 0x8401 / 0x8001, SAFE = 0x8000 / 0x8000,
+    OP = 0x8802 / 0x8002, CONF_OP = 0x8804 / 0x8012, CONF = 0x8002 / 0x8003,
+    WAIT_OP = 0x8004 / 0x8005, ERR_RESET_1 = 0xC001 / 0xC001, ERR_ACK = 0xC010 / 0xC002,
+    ERR_TIME = 0xC020 / 0xC003, ERR_RESET_2 = 0xC014 / 0xC004, ERR_RESET_3 = 0xC011 / 0xC005,
+}
 
 /// One call's inputs.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
@@ -150,12 +133,8 @@ impl Rig {
     fn step(&mut self, i: In) -> u16 {
         self.at(1, i)
     }
-    fn c(&self, s: (u16, u16)) -> u16 {
-        if self.profile == SL_SF_PROFILE_V10 {
-            s.1
-        } else {
-            s.0
-        }
+    fn c(&self, s: Code) -> u16 {
+        code(self.profile, s)
     }
     /// Ready, S_SafetyActive, S_SafetyRequest, SafetyDemand, ResetRequest, Error.
     fn outputs(&self) -> [u8; 6] {
@@ -171,7 +150,7 @@ impl Rig {
     }
     /// IDLE → `target` by the table's paths (MonitoringTime ≥ 10 ms), checking the codes on
     /// the way; returns the last inputs.
-    fn reach(&mut self, target: (u16, u16)) -> In {
+    fn reach(&mut self, target: Code) -> In {
         let mut i = ON;
         if target == ERR_RESET_1 {
             // Reset pressed in the activation call: held in INIT.
@@ -247,10 +226,6 @@ impl Rig {
             }
         }
     }
-}
-
-fn profiles() -> [u8; 2] {
-    [SL_SF_PROFILE_V201, SL_SF_PROFILE_V10]
 }
 
 #[test]
@@ -386,7 +361,7 @@ fn every_transition_in_first_match_order() {
 /// FALSE from the state: 0000, every output FALSE.
 #[test]
 fn outputs_per_state_and_activate_false_from_every_state() {
-    let expect = |s: (u16, u16)| -> [u8; 6] {
+    let expect = |s: Code| -> [u8; 6] {
         match s {
             INIT => [1, 0, 0, 0, 1, 0],
             SAFE => [1, 1, 0, 0, 0, 0],
@@ -506,24 +481,7 @@ fn the_monitoring_time() {
 /// unused) reads as the v2.01 state's (semantics QR6).
 #[test]
 fn texts_for_every_diag_code() {
-    let text = |code: u16| {
-        let mut buf = [0 as std::ffi::c_char; 160];
-        // SAFETY: a writable buffer of the stated length.
-        let rc = unsafe {
-            safelogic::ffi::sl_diag_text(
-                SL_TYPE_SF_SAFETYREQUEST,
-                code,
-                buf.as_mut_ptr(),
-                buf.len(),
-            )
-        };
-        assert_eq!(rc, SL_OK);
-        // SAFETY: NUL-terminated by the call.
-        unsafe { CStr::from_ptr(buf.as_ptr()) }
-            .to_str()
-            .unwrap()
-            .to_string()
-    };
+    let text = |code: u16| diag_text(SL_TYPE_SF_SAFETYREQUEST, code);
     let mut seen = BTreeSet::new();
     for (v2, v1) in ALL {
         let t = text(v2);
@@ -538,16 +496,6 @@ fn texts_for_every_diag_code() {
     assert!(text(0xC014).contains("ERR_ACK_LOST"));
     assert!(text(0xC011).contains("ERR_MONTIME"));
     assert_eq!(text(0x8123), "unknown DiagCode");
-}
-
-struct Rng(u64);
-impl Rng {
-    fn next(&mut self) -> u64 {
-        self.0 ^= self.0 >> 12;
-        self.0 ^= self.0 << 25;
-        self.0 ^= self.0 >> 27;
-        self.0.wrapping_mul(0x2545_F491_4F6C_DD1D)
-    }
 }
 
 #[test]
@@ -595,75 +543,27 @@ fn random_sequences_agree_with_the_model() {
 /// lost (C010) does not stop the group; group STOP halts it.
 #[test]
 fn in_a_group_with_a_link() {
-    use safelogic::ffi::*;
-    let mut sr = SF_SafetyRequest {
-        MonitoringTime: 100,
-        ..Default::default()
-    };
-    let mut and = FB_AND {
-        wInputActive: 0x3,
-        bAndIn2: 1,
-        ..Default::default()
-    };
-    let mut g = SL_GROUP::default();
-    let mut members = [SL_MEMBER::default(); 2];
-    let mut links = [SL_LINK::default(); 1];
-    let in1 = safelogic::registry::block_type(SL_TYPE_AND)
-        .and_then(|t| t.field("bAndIn1"))
-        .unwrap()
-        .offset;
-    let out = core::mem::offset_of!(SF_SafetyRequest, S_SafetyActive) as u16;
-    // SAFETY: every pointer is to a live local that nothing else accesses during the
-    // group's use of it, in place.
-    unsafe {
-        assert_eq!(
-            sl_group_init(&mut g, members.as_mut_ptr(), 2, links.as_mut_ptr(), 1),
-            SL_OK
-        );
-        let sr_p = std::ptr::addr_of_mut!(sr);
-        let and_p = std::ptr::addr_of_mut!(and);
-        let mp = members.as_mut_ptr();
-        let none = std::ptr::null_mut();
-        assert_eq!(
-            sl_group_add_member(&mut g, mp, SL_TYPE_SF_SAFETYREQUEST, sr_p.cast(), none),
-            SL_E_CONFIG,
-            "never initialised"
-        );
-        assert_eq!(sl_sf_safetyrequest_init(sr_p), SL_OK);
-        assert_eq!(
-            sl_group_add_member(&mut g, mp, SL_TYPE_SF_SAFETYREQUEST, sr_p.cast(), none),
-            SL_OK
-        );
-        assert_eq!(sl_and_init(and_p), SL_OK);
-        assert_eq!(
-            sl_group_add_member(&mut g, mp, SL_TYPE_AND, and_p.cast(), none),
-            SL_OK
-        );
-        assert_eq!(
-            sl_group_add_link(&mut g, mp, links.as_mut_ptr(), 0, out, 1, in1),
-            SL_OK
-        );
-        (*sr_p).Activate = 1;
-        (*sr_p).S_StartReset = 1;
-        (*sr_p).S_Acknowledge = 1;
-        g.bRun = 1;
-        let mut now = 0;
-        let mut cycle = |g: &mut SL_GROUP| {
-            now += 10;
-            sl_group_cycle(g, members.as_mut_ptr(), links.as_mut_ptr(), now)
-        };
-        for _ in 0..4 {
-            assert_eq!(cycle(&mut g), SL_OK);
-        }
-        assert_eq!(((*sr_p).DiagCode, (*and_p).bAndOut), (0x8000, 1));
-        (*sr_p).S_Acknowledge = 0;
-        cycle(&mut g);
-        assert_eq!(
-            ((*sr_p).DiagCode, (*and_p).bAndOut, g.nState),
-            (0xC010, 0, SL_STATE_RUN)
-        );
-        g.bRun = 0;
-        assert_eq!(cycle(&mut g), SL_OK);
-        assert_eq!(((*sr_p).DiagCode, (*sr_p).Ready), (0, 0));
-    }
+    let mut w = WithAnd::new(
+        SL_TYPE_SF_SAFETYREQUEST,
+        SF_SafetyRequest {
+            MonitoringTime: 100,
+            ..Default::default()
+        },
+        safelogic::ffi::sl_sf_safetyrequest_init,
+        core::mem::offset_of!(SF_SafetyRequest, S_SafetyActive),
+    );
+    w.fb.Activate = 1;
+    w.fb.S_StartReset = 1;
+    w.fb.S_Acknowledge = 1;
+    w.run(4);
+    assert_eq!((w.fb.DiagCode, w.and.bAndOut), (0x8000, 1));
+    w.fb.S_Acknowledge = 0;
+    w.grp.cycle(10);
+    assert_eq!(
+        (w.fb.DiagCode, w.and.bAndOut, w.grp.g.nState),
+        (0xC010, 0, SL_STATE_RUN)
+    );
+    w.grp.g.bRun = 0;
+    assert_eq!(w.grp.cycle(10), SL_OK);
+    assert_eq!((w.fb.DiagCode, w.fb.Ready), (0, 0));
 }

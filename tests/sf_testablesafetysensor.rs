@@ -7,54 +7,22 @@
 //! in a group, and 10,000 random sequences per profile against an independent model.
 //! Expected codes: research §4.15 (CS-LIB FBS_TESTSEN, ABB) and semantics QT2/QT3.
 
+mod common;
+use common::cgroup::*;
+use common::plcopen::*;
+use common::*;
 use safelogic::*;
 use std::collections::BTreeSet;
-use std::ffi::CStr;
 
-/// (v2.01, v1.0).
-type Code = (u16, u16);
-const IDLE: Code = (0x0000, 0x0000);
-const INIT: Code = (0x8401, 0x8001);
-const INT1: Code = (0x8802, 0x8011);
-const WAIT1: Code = (0x8402, 0x8012);
-const FREE_NO_TEST: Code = (0x8010, 0x8010);
-const TEST_REQ: Code = (0x8020, 0x8020);
-const TEST_ACT: Code = (0x8030, 0x8030);
-const OK: Code = (0x8000, 0x8000);
-const INT2: Code = (0x8806, 0x8014);
-const WAIT2: Code = (0x8406, 0x8015);
-const EXT: Code = (0x8002, 0x8021);
-const EXT_INT: Code = (0x8804, 0x8022);
-const EXT_END: Code = (0x8404, 0x8023);
-const ERR_PARAM: Code = (0xC000, 0xC000);
-const ERR_RESET_1: Code = (0xC001, 0xC001);
-const ERR_TEST_1: Code = (0xC010, 0xC010);
-const ERR_TEST_2: Code = (0xC020, 0xC020);
-const ERR_RESET_2: Code = (0xC011, 0xC011);
-const ERR_RESET_3: Code = (0xC021, 0xC021);
-const ERR_RESET_4: Code = (0xC031, 0xC031);
-const ALL: [Code; 20] = [
-    IDLE,
-    INIT,
-    INT1,
-    WAIT1,
-    FREE_NO_TEST,
-    TEST_REQ,
-    TEST_ACT,
-    OK,
-    INT2,
-    WAIT2,
-    EXT,
-    EXT_INT,
-    EXT_END,
-    ERR_PARAM,
-    ERR_RESET_1,
-    ERR_TEST_1,
-    ERR_TEST_2,
-    ERR_RESET_2,
-    ERR_RESET_3,
-    ERR_RESET_4,
-];
+codes! {
+    IDLE = 0x0000 / 0x0000, INIT = 0x8401 / 0x8001, INT1 = 0x8802 / 0x8011,
+    WAIT1 = 0x8402 / 0x8012, FREE_NO_TEST = 0x8010 / 0x8010, TEST_REQ = 0x8020 / 0x8020,
+    TEST_ACT = 0x8030 / 0x8030, OK = 0x8000 / 0x8000, INT2 = 0x8806 / 0x8014,
+    WAIT2 = 0x8406 / 0x8015, EXT = 0x8002 / 0x8021, EXT_INT = 0x8804 / 0x8022,
+    EXT_END = 0x8404 / 0x8023, ERR_PARAM = 0xC000 / 0xC000, ERR_RESET_1 = 0xC001 / 0xC001,
+    ERR_TEST_1 = 0xC010 / 0xC010, ERR_TEST_2 = 0xC020 / 0xC020, ERR_RESET_2 = 0xC011 / 0xC011,
+    ERR_RESET_3 = 0xC021 / 0xC021, ERR_RESET_4 = 0xC031 / 0xC031,
+}
 
 #[derive(Clone, Copy, Debug, Default)]
 struct In {
@@ -94,11 +62,7 @@ impl Rig {
         }
     }
     fn c(&self, s: Code) -> u16 {
-        if self.profile == SL_SF_PROFILE_V10 {
-            s.1
-        } else {
-            s.0
-        }
+        code(self.profile, s)
     }
     fn at(&mut self, dt: u32, f: impl FnOnce(&mut In)) -> u16 {
         f(&mut self.i);
@@ -242,10 +206,6 @@ impl Rig {
             other => panic!("{other:X?}"),
         }
     }
-}
-
-fn profiles() -> [u8; 2] {
-    [SL_SF_PROFILE_V201, SL_SF_PROFILE_V10]
 }
 
 #[test]
@@ -476,24 +436,7 @@ fn constants_invalid_bytes_and_library_faults() {
 
 #[test]
 fn texts_for_every_diag_code() {
-    let text = |code: u16| {
-        let mut buf = [0 as std::ffi::c_char; 160];
-        // SAFETY: a writable buffer of the stated length.
-        let rc = unsafe {
-            safelogic::ffi::sl_diag_text(
-                SL_TYPE_SF_TESTABLESAFETYSENSOR,
-                code,
-                buf.as_mut_ptr(),
-                buf.len(),
-            )
-        };
-        assert_eq!(rc, SL_OK);
-        // SAFETY: NUL-terminated by the call.
-        unsafe { CStr::from_ptr(buf.as_ptr()) }
-            .to_str()
-            .unwrap()
-            .to_string()
-    };
+    let text = |code: u16| diag_text(SL_TYPE_SF_TESTABLESAFETYSENSOR, code);
     let mut seen = BTreeSet::new();
     for (v2, v1) in ALL {
         assert_eq!(text(v2), text(v1), "one text per state in both profiles");
@@ -506,108 +449,45 @@ fn texts_for_every_diag_code() {
 /// In a group: S_OSSD_Out linked to an FB_AND; a failed test does not stop the group.
 #[test]
 fn in_a_group_with_a_link() {
-    use safelogic::ffi::*;
-    let mut s = SF_TestableSafetySensor {
-        Activate: 1,
-        S_OSSD_In: 1,
-        S_StartReset: 1,
-        TestTime: 50,
-        ..Default::default()
-    };
-    let mut and = FB_AND {
-        wInputActive: 0x3,
-        bAndIn2: 1,
-        ..Default::default()
-    };
-    let mut g = SL_GROUP::default();
-    let mut members = [SL_MEMBER::default(); 2];
-    let mut links = [SL_LINK::default(); 1];
-    let in1 = safelogic::registry::block_type(SL_TYPE_AND)
-        .and_then(|t| t.field("bAndIn1"))
-        .unwrap()
-        .offset;
-    let out = core::mem::offset_of!(SF_TestableSafetySensor, S_OSSD_Out) as u16;
-    // SAFETY: every pointer is to a live local that nothing else accesses; the group keeps
-    // them for the rest of the test, in place.
-    unsafe {
-        assert_eq!(
-            sl_group_init(&mut g, members.as_mut_ptr(), 2, links.as_mut_ptr(), 1),
-            SL_OK
-        );
-        let s_p = std::ptr::addr_of_mut!(s);
-        let and_p = std::ptr::addr_of_mut!(and);
-        assert_eq!(sl_sf_testablesafetysensor_init(s_p), SL_OK);
-        assert_eq!(sl_and_init(and_p), SL_OK);
-        for (tag, p) in [
-            (
-                SL_TYPE_SF_TESTABLESAFETYSENSOR,
-                s_p.cast::<core::ffi::c_void>(),
-            ),
-            (SL_TYPE_AND, and_p.cast()),
-        ] {
-            assert_eq!(
-                sl_group_add_member(&mut g, members.as_mut_ptr(), tag, p, std::ptr::null_mut()),
-                SL_OK
-            );
-        }
-        assert_eq!(
-            sl_group_add_link(
-                &mut g,
-                members.as_mut_ptr(),
-                links.as_mut_ptr(),
-                0,
-                out,
-                1,
-                in1
-            ),
-            SL_OK
-        );
-        g.bRun = 1;
-        let mut now = 0;
-        let mut cycle = |g: &mut SL_GROUP| {
-            now += 10;
-            sl_group_cycle(g, members.as_mut_ptr(), links.as_mut_ptr(), now)
-        };
-        for _ in 0..3 {
-            assert_eq!(cycle(&mut g), SL_OK);
-        }
-        assert_eq!(((*s_p).DiagCode, (*and_p).bAndOut), (0x8010, 1));
-        // A test the sensor answers: 8020, 8030 with the output TRUE throughout, 8000.
-        (*s_p).StartTest = 1;
-        cycle(&mut g);
-        assert_eq!(
-            ((*s_p).DiagCode, (*s_p).S_TestOut, (*and_p).bAndOut),
-            (0x8020, 0, 1)
-        );
-        (*s_p).S_OSSD_In = 0;
-        cycle(&mut g);
-        assert_eq!(
-            ((*s_p).DiagCode, (*s_p).S_TestOut, (*and_p).bAndOut),
-            (0x8030, 1, 1)
-        );
-        (*s_p).S_OSSD_In = 1;
-        cycle(&mut g);
-        assert_eq!(((*s_p).DiagCode, (*s_p).TestExecuted), (0x8000, 1));
-        // A test the sensor does not answer: C010 after 50 ms; the group runs on.
-        (*s_p).StartTest = 0;
-        cycle(&mut g);
-        (*s_p).StartTest = 1;
-        for _ in 0..6 {
-            cycle(&mut g);
-        }
-        assert_eq!(((*s_p).DiagCode, (*and_p).bAndOut), (0xC010, 0));
-        assert_eq!(g.nState, SL_STATE_RUN);
+    let mut w = WithAnd::new(
+        SL_TYPE_SF_TESTABLESAFETYSENSOR,
+        SF_TestableSafetySensor {
+            Activate: 1,
+            S_OSSD_In: 1,
+            S_StartReset: 1,
+            TestTime: 50,
+            ..Default::default()
+        },
+        safelogic::ffi::sl_sf_testablesafetysensor_init,
+        core::mem::offset_of!(SF_TestableSafetySensor, S_OSSD_Out),
+    );
+    w.run(3);
+    assert_eq!((w.fb.DiagCode, w.and.bAndOut), (0x8010, 1));
+    // A test the sensor answers: 8020, 8030 with the output TRUE throughout, 8000.
+    w.fb.StartTest = 1;
+    w.grp.cycle(10);
+    assert_eq!(
+        (w.fb.DiagCode, w.fb.S_TestOut, w.and.bAndOut),
+        (0x8020, 0, 1)
+    );
+    w.fb.S_OSSD_In = 0;
+    w.grp.cycle(10);
+    assert_eq!(
+        (w.fb.DiagCode, w.fb.S_TestOut, w.and.bAndOut),
+        (0x8030, 1, 1)
+    );
+    w.fb.S_OSSD_In = 1;
+    w.grp.cycle(10);
+    assert_eq!((w.fb.DiagCode, w.fb.TestExecuted), (0x8000, 1));
+    // A test the sensor does not answer: C010 after 50 ms; the group runs on.
+    w.fb.StartTest = 0;
+    w.grp.cycle(10);
+    w.fb.StartTest = 1;
+    for _ in 0..6 {
+        w.grp.cycle(10);
     }
-}
-
-struct Rng(u64);
-impl Rng {
-    fn next(&mut self) -> u64 {
-        self.0 ^= self.0 >> 12;
-        self.0 ^= self.0 << 25;
-        self.0 ^= self.0 >> 27;
-        self.0.wrapping_mul(0x2545_F491_4F6C_DD1D)
-    }
+    assert_eq!((w.fb.DiagCode, w.and.bAndOut), (0xC010, 0));
+    assert_eq!(w.grp.g.nState, SL_STATE_RUN);
 }
 
 /// The model, written from research §4.15 with semantics QT1–QT9 (v2.01 codes): R_TRIGs of

@@ -7,9 +7,12 @@
 //! independent model with every state reached. Expected codes are the research table's
 //! (v1.0 column; v2.01 states column) and semantics QH1 for the v2.01 error codes.
 
+mod common;
+use common::cgroup::*;
+use common::plcopen::*;
+use common::*;
 use safelogic::*;
 use std::collections::BTreeSet;
-use std::ffi::CStr;
 
 const IDLE: (u16, u16) = (0x0000, 0x0000);
 const INIT: (u16, u16) = (0x8001, 0x8001);
@@ -125,12 +128,8 @@ impl<B: TwoHand> Rig<B> {
     fn step(&mut self, b: (bool, bool)) -> u16 {
         self.at(10, b)
     }
-    fn c(&self, s: (u16, u16)) -> u16 {
-        if self.profile == SL_SF_PROFILE_V10 {
-            s.1
-        } else {
-            s.0
-        }
+    fn c(&self, s: Code) -> u16 {
+        code(self.profile, s)
     }
     fn go(&mut self, dt: u32, b: (bool, bool), s: (u16, u16)) -> (bool, bool) {
         assert_eq!(self.at(dt, b), self.c(s), "{} towards {s:X?}", B::NAME);
@@ -188,10 +187,6 @@ impl<B: TwoHand> Rig<B> {
         }
         last
     }
-}
-
-fn profiles() -> [u8; 2] {
-    [SL_SF_PROFILE_V201, SL_SF_PROFILE_V10]
 }
 
 fn t<B: TwoHand>(p: u8, from: (u16, u16), b: (bool, bool), to: (u16, u16)) {
@@ -349,18 +344,7 @@ fn start_up_with_a_button_held() {
 #[test]
 fn texts_for_every_diag_code() {
     fn check<B: TwoHand>() {
-        let text = |code: u16| {
-            let mut buf = [0 as std::ffi::c_char; 200];
-            // SAFETY: a writable buffer of the stated length.
-            let rc =
-                unsafe { safelogic::ffi::sl_diag_text(B::TAG, code, buf.as_mut_ptr(), buf.len()) };
-            assert_eq!(rc, SL_OK);
-            // SAFETY: NUL-terminated by the call.
-            unsafe { CStr::from_ptr(buf.as_ptr()) }
-                .to_str()
-                .unwrap()
-                .to_string()
-        };
+        let text = |code: u16| diag_text(B::TAG, code);
         let states = B::states();
         let mut seen = BTreeSet::new();
         for (v2, v1) in &states {
@@ -395,100 +379,33 @@ fn type_ii_has_no_synchronism_codes() {
 
 #[test]
 fn in_a_group_with_a_link() {
-    use safelogic::ffi::*;
-    let mut th = SF_TwoHandControlTypeIII::default();
-    let mut and = FB_AND {
-        wInputActive: 0x3,
-        bAndIn2: 1,
-        ..Default::default()
-    };
-    let mut g = SL_GROUP::default();
-    let mut members = [SL_MEMBER::default(); 2];
-    let mut links = [SL_LINK::default(); 1];
-    let in1 = safelogic::registry::block_type(SL_TYPE_AND)
-        .and_then(|t| t.field("bAndIn1"))
-        .unwrap()
-        .offset;
-    let out = core::mem::offset_of!(SF_TwoHandControlTypeIII, S_TwoHandOut) as u16;
-    // SAFETY: every pointer is to a live local that nothing else accesses; the group keeps
-    // them for the rest of the test, in place.
-    unsafe {
-        assert_eq!(
-            sl_group_init(&mut g, members.as_mut_ptr(), 2, links.as_mut_ptr(), 1),
-            SL_OK
-        );
-        let th_p = std::ptr::addr_of_mut!(th);
-        let and_p = std::ptr::addr_of_mut!(and);
-        assert_eq!(sl_sf_twohandcontroltypeiii_init(th_p), SL_OK);
-        let tag = SL_TYPE_SF_TWOHANDCONTROLTYPEIII;
-        let null = std::ptr::null_mut();
-        assert_eq!(
-            sl_group_add_member(&mut g, members.as_mut_ptr(), tag, th_p.cast(), null),
-            SL_OK
-        );
-        assert_eq!(sl_and_init(and_p), SL_OK);
-        assert_eq!(
-            sl_group_add_member(
-                &mut g,
-                members.as_mut_ptr(),
-                SL_TYPE_AND,
-                and_p.cast(),
-                null
-            ),
-            SL_OK
-        );
-        assert_eq!(
-            sl_group_add_link(
-                &mut g,
-                members.as_mut_ptr(),
-                links.as_mut_ptr(),
-                0,
-                out,
-                1,
-                in1
-            ),
-            SL_OK
-        );
-        (*th_p).Activate = 1;
-        g.bRun = 1;
-        let mut now = 0;
-        let mut cycle = |g: &mut SL_GROUP, dt: u32| {
-            now += dt;
-            sl_group_cycle(g, members.as_mut_ptr(), links.as_mut_ptr(), now)
-        };
-        for _ in 0..3 {
-            assert_eq!(cycle(&mut g, 10), SL_OK);
-        }
-        assert_eq!((*th_p).DiagCode, 0x8802);
-        (*th_p).S_Button1 = 1;
-        cycle(&mut g, 10);
-        (*th_p).S_Button2 = 1;
-        cycle(&mut g, 10);
-        assert_eq!(((*th_p).DiagCode, (*and_p).bAndOut), (0x8000, 1));
-        // Both released, then button 1 alone for 600 ms: the synchronism error, group runs.
-        ((*th_p).S_Button1, (*th_p).S_Button2) = (0, 0);
-        cycle(&mut g, 10);
-        (*th_p).S_Button1 = 1;
-        cycle(&mut g, 10);
-        cycle(&mut g, 600);
-        assert_eq!(
-            ((*th_p).DiagCode, (*and_p).bAndOut, g.nState),
-            (0xC050, 0, SL_STATE_RUN)
-        );
-        g.bRun = 0;
-        assert_eq!(cycle(&mut g, 10), SL_OK);
-        assert_eq!(((*th_p).DiagCode, (*th_p).Ready), (0, 0));
-    }
-}
-
-struct Rng(u64);
-impl Rng {
-    fn next(&mut self) -> u64 {
-        self.0 ^= self.0 >> 12;
-        self.0 ^= self.0 << 25;
-        self.0 ^= self.0 >> 27;
-        self.0.wrapping_mul(0x2545_F491_4F6C_DD1D)
-    }
+    let mut w = WithAnd::new(
+        SL_TYPE_SF_TWOHANDCONTROLTYPEIII,
+        SF_TwoHandControlTypeIII::default(),
+        safelogic::ffi::sl_sf_twohandcontroltypeiii_init,
+        core::mem::offset_of!(SF_TwoHandControlTypeIII, S_TwoHandOut),
+    );
+    w.fb.Activate = 1;
+    w.run(3);
+    assert_eq!(w.fb.DiagCode, 0x8802);
+    w.fb.S_Button1 = 1;
+    w.grp.cycle(10);
+    w.fb.S_Button2 = 1;
+    w.grp.cycle(10);
+    assert_eq!((w.fb.DiagCode, w.and.bAndOut), (0x8000, 1));
+    // Both released, then button 1 alone for 600 ms: the synchronism error, group runs.
+    (w.fb.S_Button1, w.fb.S_Button2) = (0, 0);
+    w.grp.cycle(10);
+    w.fb.S_Button1 = 1;
+    w.grp.cycle(10);
+    w.grp.cycle(600);
+    assert_eq!(
+        (w.fb.DiagCode, w.and.bAndOut, w.grp.g.nState),
+        (0xC050, 0, SL_STATE_RUN)
+    );
+    w.grp.g.bRun = 0;
+    assert_eq!(w.grp.cycle(10), SL_OK);
+    assert_eq!((w.fb.DiagCode, w.fb.Ready), (0, 0));
 }
 
 /// The model: §4.6's table with the v1.0 codes, written from the research text, plus §4.7's

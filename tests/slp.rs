@@ -4,7 +4,7 @@
 
 mod common;
 
-use common::Rng;
+use common::{Rng, CORE_STATES};
 use safelogic::*;
 
 const VALID: u16 = SL_SLP_ACTIVE_SAFEPOSVALID;
@@ -539,14 +539,7 @@ fn random_sequences_match_the_model() {
             texts.insert(fb.nDiagTextId);
         }
     }
-    for s in [
-        SL_STATE_RUN,
-        SL_STATE_STOP,
-        SL_STATE_SAFE,
-        SL_STATE_ERROR,
-        SL_STATE_RESET,
-        SL_STATE_START,
-    ] {
+    for s in CORE_STATES.into_iter().chain([SL_STATE_START]) {
         assert!(reached.contains(&s), "never reached {s}: {reached:?}");
     }
     assert!(

@@ -15,7 +15,7 @@ use std::mem::{offset_of, size_of};
 #[path = "common/flipflop.rs"]
 mod flipflop;
 
-use flipflop::state_name;
+use common::state_name;
 
 const RESET: u16 = 1 << 0;
 const SET: u16 = 1 << 1;

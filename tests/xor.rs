@@ -3,6 +3,7 @@
 //! the C functions, group membership, and property tests.
 
 mod common;
+use common::state_name;
 
 use proptest::prelude::*;
 use safelogic::ffi;
@@ -45,30 +46,6 @@ fn outs(x: &FB_XOR) -> [u8; 8] {
         x.bXorOut1, x.bXorOut2, x.bXorOut3, x.bXorOut4, x.bXorOut5, x.bXorOut6, x.bXorOut7,
         x.bXorOut8,
     ]
-}
-
-/// The state name `sl_state_str` returns (the registry's static text; compared by address so
-/// that the test needs no `unsafe`).
-fn state_name(ty: u16, state: u8) -> &'static str {
-    let p = ffi::sl_state_str(ty, state);
-    safelogic::registry::info(ty)
-        .and_then(|b| b.states.iter().find(|(_, n)| n.as_ptr().cast() == p))
-        .map_or("?", |(_, n)| n.trim_end_matches('\0'))
-}
-
-/// One group cycle through the C API. The member table gets fresh pointers to the blocks
-/// first: the test writes the blocks directly between calls, which ends the validity of
-/// pointers taken before (no `unsafe` here, and nothing the compiler may reorder).
-macro_rules! c_group_cycle {
-    ($g:expr, $members:expr, $links:expr, $t:expr; $($b:ident),+) => {{
-        let mut i = 0;
-        $(
-            $members[i].pBlock = std::ptr::addr_of_mut!($b).cast();
-            i += 1;
-        )+
-        let _ = i;
-        unsafe { ffi::sl_group_cycle(&mut $g, $members.as_mut_ptr(), $links.as_mut_ptr(), $t) }
-    }};
 }
 
 #[test]

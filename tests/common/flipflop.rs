@@ -1,32 +1,6 @@
 //! Tests shared by FB RS and FB SR (manual §4.10, §4.11): everything that does not depend on
 //! which input dominates. `tests/rs.rs` and `tests/sr.rs` each instantiate them once.
 
-use safelogic::ffi;
-
-/// Name of a state through the C function `sl_state_str`.
-pub fn state_name(ty: u16, state: u8) -> &'static str {
-    let p = ffi::sl_state_str(ty, state);
-    safelogic::registry::info(ty)
-        .and_then(|b| b.states.iter().find(|(_, n)| n.as_ptr().cast() == p))
-        .map_or("?", |(_, n)| n.trim_end_matches('\0'))
-}
-
-/// One group cycle through the C API. The member table gets fresh pointers to the blocks
-/// first: the test writes the blocks directly between calls, which ends the validity of
-/// pointers taken before (no `unsafe` here, and nothing the compiler may reorder).
-#[macro_export]
-macro_rules! c_group_cycle {
-    ($g:expr, $members:expr, $links:expr, $t:expr; $($b:ident),+) => {{
-        let mut i = 0;
-        $(
-            $members[i].pBlock = std::ptr::addr_of_mut!($b).cast();
-            i += 1;
-        )+
-        let _ = i;
-        unsafe { ffi::sl_group_cycle(&mut $g, $members.as_mut_ptr(), $links.as_mut_ptr(), $t) }
-    }};
-}
-
 /// The tests of the common RS/SR behaviour for one block type: `$new(active, negated)`
 /// builds an initialised instance, `$set` is the block's SET state.
 #[macro_export]

@@ -459,3 +459,53 @@ pub fn depth_cases(n: u32) -> u32 {
         .unwrap_or(1);
     n.saturating_mul(depth.max(1))
 }
+
+pub mod cgroup;
+pub mod plcopen;
+
+/// The text `sl_diag_text` writes for `code` of block type `ty` (the call must return SL_OK).
+#[track_caller]
+pub fn diag_text(ty: u16, code: u16) -> String {
+    let mut buf = [0 as std::ffi::c_char; 256];
+    // SAFETY: a writable buffer of the stated length.
+    let rc = unsafe { safelogic::ffi::sl_diag_text(ty, code, buf.as_mut_ptr(), buf.len()) };
+    assert_eq!(rc, SL_OK, "sl_diag_text({ty}, {code:#06x})");
+    // SAFETY: NUL-terminated by the call.
+    unsafe { std::ffi::CStr::from_ptr(buf.as_ptr()) }
+        .to_str()
+        .unwrap()
+        .to_string()
+}
+
+/// The states every TwinSAFE block has (RUN, STOP, SAFE, ERROR, RESET); a block's own follow.
+pub const CORE_STATES: [u8; 5] = [
+    SL_STATE_RUN,
+    SL_STATE_STOP,
+    SL_STATE_SAFE,
+    SL_STATE_ERROR,
+    SL_STATE_RESET,
+];
+
+/// Name of a state through the C function `sl_state_str`.
+pub fn state_name(ty: u16, state: u8) -> &'static str {
+    let p = safelogic::ffi::sl_state_str(ty, state);
+    safelogic::registry::info(ty)
+        .and_then(|b| b.states.iter().find(|(_, n)| n.as_ptr().cast() == p))
+        .map_or("?", |(_, n)| n.trim_end_matches('\0'))
+}
+
+/// One group cycle through the C API. The member table gets fresh pointers to the blocks
+/// first: the test writes the blocks directly between calls, which ends the validity of
+/// pointers taken before (no `unsafe` here, and nothing the compiler may reorder).
+#[macro_export]
+macro_rules! c_group_cycle {
+    ($g:expr, $members:expr, $links:expr, $t:expr; $($b:ident),+) => {{
+        let mut i = 0;
+        $(
+            $members[i].pBlock = std::ptr::addr_of_mut!($b).cast();
+            i += 1;
+        )+
+        let _ = i;
+        unsafe { safelogic::ffi::sl_group_cycle(&mut $g, $members.as_mut_ptr(), $links.as_mut_ptr(), $t) }
+    }};
+}

@@ -1,0 +1,146 @@
+//! A group driven through the C API (`sl_group_*`), its members in [`RawBox`]es so that the
+//! pointers the group keeps stay valid while the test reads and writes the blocks between
+//! calls.
+
+use super::RawBox;
+use safelogic::ffi::*;
+use safelogic::*;
+
+/// An `SL_GROUP` with its member and link tables and a clock. The group is boxed: it must
+/// not move after `sl_group_init`.
+pub struct CGroup {
+    pub g: RawBox<SL_GROUP>,
+    members: Vec<SL_MEMBER>,
+    links: Vec<SL_LINK>,
+    pub now: u32,
+}
+
+/// Offset of the field `name` of block type `ty` as the registry lists it.
+pub fn field(ty: u16, name: &str) -> u16 {
+    registry::block_type(ty)
+        .and_then(|t| t.field(name))
+        .unwrap_or_else(|| panic!("type {ty} has no field {name}"))
+        .offset
+}
+
+impl CGroup {
+    /// `sl_group_init` with tables of `members` and `links` entries (must return SL_OK).
+    #[track_caller]
+    pub fn new(members: u16, links: u16) -> Self {
+        let mut s = CGroup {
+            g: RawBox::new(SL_GROUP::default()),
+            members: vec![SL_MEMBER::default(); members.into()],
+            links: vec![SL_LINK::default(); links.into()],
+            now: 0,
+        };
+        // SAFETY: the tables are live for the group's life and hold the stated counts.
+        let rc = unsafe {
+            sl_group_init(
+                s.g.ptr(),
+                s.members.as_mut_ptr(),
+                members,
+                s.links.as_mut_ptr(),
+                links,
+            )
+        };
+        assert_eq!(rc, SL_OK, "sl_group_init");
+        s
+    }
+
+    /// `sl_group_add_member` of the block in `b` as type `ty`: its status.
+    pub fn add<T>(&mut self, ty: u16, b: &RawBox<T>) -> i32 {
+        // SAFETY: `b` owns a live block that outlives the group's use in the test.
+        unsafe {
+            sl_group_add_member(
+                self.g.ptr(),
+                self.members.as_mut_ptr(),
+                ty,
+                b.ptr().cast(),
+                std::ptr::null_mut(),
+            )
+        }
+    }
+
+    /// `init` (the block's C init) on `b`, then adds it as type `ty`; both must return SL_OK.
+    #[track_caller]
+    pub fn add_init<T>(
+        &mut self,
+        ty: u16,
+        b: &RawBox<T>,
+        init: unsafe extern "C" fn(*mut T) -> i32,
+    ) {
+        // SAFETY: a live block, no borrow of it alive.
+        assert_eq!(unsafe { init(b.ptr()) }, SL_OK, "init of type {ty}");
+        assert_eq!(self.add(ty, b), SL_OK, "sl_group_add_member type {ty}");
+    }
+
+    /// `sl_group_add_link` from member `src` at `src_off` to member `dst` at `dst_off`
+    /// (must return SL_OK).
+    #[track_caller]
+    pub fn link(&mut self, src: u16, src_off: u16, dst: u16, dst_off: u16) {
+        // SAFETY: the group's own tables.
+        let rc = unsafe {
+            sl_group_add_link(
+                self.g.ptr(),
+                self.members.as_mut_ptr(),
+                self.links.as_mut_ptr(),
+                src,
+                src_off,
+                dst,
+                dst_off,
+            )
+        };
+        assert_eq!(rc, SL_OK, "link {src}@{src_off} -> {dst}@{dst_off}");
+    }
+
+    /// One `sl_group_cycle`, `dt` ms after the last.
+    pub fn cycle(&mut self, dt: u32) -> i32 {
+        self.now = self.now.wrapping_add(dt);
+        // SAFETY: the group's own tables; the members' boxes are alive and not borrowed.
+        unsafe {
+            sl_group_cycle(
+                self.g.ptr(),
+                self.members.as_mut_ptr(),
+                self.links.as_mut_ptr(),
+                self.now,
+            )
+        }
+    }
+}
+
+/// A PLCopen block whose safety output (at `out`) is linked to `bAndIn1` of an FB_AND with
+/// inputs 1 and 2 active and `bAndIn2` TRUE: members 0 (the block) and 1 (the AND).
+pub struct WithAnd<T> {
+    pub grp: CGroup,
+    pub fb: RawBox<T>,
+    pub and: RawBox<FB_AND>,
+}
+
+impl<T> WithAnd<T> {
+    /// Builds the group around `fb` of type `ty`, running (bRun): the group refuses the
+    /// block before `init` (semantics PO8) and accepts it after.
+    #[track_caller]
+    pub fn new(ty: u16, fb: T, init: unsafe extern "C" fn(*mut T) -> i32, out: usize) -> Self {
+        let mut grp = CGroup::new(2, 1);
+        let fb = RawBox::new(fb);
+        assert_eq!(grp.add(ty, &fb), SL_E_CONFIG, "never initialised");
+        let and = RawBox::new(FB_AND {
+            wInputActive: 0x3,
+            bAndIn2: 1,
+            ..Default::default()
+        });
+        grp.add_init(ty, &fb, init);
+        grp.add_init(SL_TYPE_AND, &and, sl_and_init);
+        grp.link(0, out as u16, 1, field(SL_TYPE_AND, "bAndIn1"));
+        grp.g.bRun = 1;
+        WithAnd { grp, fb, and }
+    }
+
+    /// `n` group calls 10 ms apart, each SL_OK.
+    #[track_caller]
+    pub fn run(&mut self, n: usize) {
+        for k in 0..n {
+            assert_eq!(self.grp.cycle(10), SL_OK, "group call {k}");
+        }
+    }
+}
