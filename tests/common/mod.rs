@@ -506,6 +506,9 @@ macro_rules! c_group_cycle {
             i += 1;
         )+
         let _ = i;
-        unsafe { safelogic::ffi::sl_group_cycle(&mut $g, $members.as_mut_ptr(), $links.as_mut_ptr(), $t) }
+        let (g, members, links, t) = (&mut $g, $members.as_mut_ptr(), $links.as_mut_ptr(), $t);
+        // SAFETY: the group, its member table (with fresh block pointers) and its link table
+        // are the test's own, alive for the call.
+        unsafe { safelogic::ffi::sl_group_cycle(g, members, links, t) }
     }};
 }
