@@ -100,7 +100,7 @@ case $mode in
     scratch=$out/self-test
     rm -rf "$scratch/src"
     mkdir -p "$scratch/src"
-    cp -R Cargo.toml Cargo.lock build.rs cbindgen.toml src include project benches abi "$scratch/src/"
+    cp -R Cargo.toml Cargo.lock build.rs build_support cbindgen.toml src include project benches abi "$scratch/src/"
     mkdir -p "$scratch/src/tools"
     cp tools/abi_check.sh "$scratch/src/tools/"
     run_break() { # name, file, sed expression, what the report must name (one or more)
