@@ -693,8 +693,6 @@ fn texts_for_every_diag_code() {
     }
 }
 
-/// xorshift, as the other tests.
-
 /// 10,000 random sequences of 40 calls per block and profile against the model: the same
 /// DiagCode after every call, the outputs from it, and every state reached.
 fn against_the_model<B: Family>(seed: u64) {

@@ -506,7 +506,9 @@ macro_rules! c_group_cycle {
             i += 1;
         )+
         let _ = i;
-        unsafe { safelogic::ffi::sl_group_cycle(&mut $g, $members.as_mut_ptr(), $links.as_mut_ptr(), $t) }
+        // The arguments are evaluated outside the unsafe block.
+        let (g, m, l, t) = (&mut $g, $members.as_mut_ptr(), $links.as_mut_ptr(), $t);
+        unsafe { safelogic::ffi::sl_group_cycle(g, m, l, t) }
     }};
 }
 
