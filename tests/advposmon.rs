@@ -4,7 +4,7 @@
 
 mod common;
 
-use common::{Rng, CORE_STATES};
+use common::{state_names, Rng, CORE_STATES, CORE_STATE_NAMES};
 use safelogic::*;
 
 const ENABLE: u16 = SL_ADVPOSMON_ACTIVE_ENABLE;
@@ -226,24 +226,9 @@ fn parameters_at_their_limits() {
 #[test]
 fn names() {
     let t = registry::block_type(SL_TYPE_ADVPOSMON).unwrap();
-    let names: Vec<_> = t
-        .info
-        .states
-        .iter()
-        .map(|(v, n)| (*v, n.trim_end_matches('\0')))
-        .collect();
-    assert_eq!(
-        names,
-        [
-            (1, "RUN"),
-            (2, "STOP"),
-            (3, "SAFE"),
-            (4, "ERROR"),
-            (5, "RESET"),
-            (6, "START"),
-            (16, "WAIT-FOR-RESTART")
-        ]
-    );
+    let names = state_names(&t.info);
+    assert_eq!(names[..5], CORE_STATE_NAMES);
+    assert_eq!(names[5..], [(6, "START"), (16, "WAIT-FOR-RESTART")]);
 }
 
 struct Model {

@@ -5,7 +5,7 @@
 
 mod common;
 
-use common::{Rng, CORE_STATES};
+use common::{state_names, Rng, CORE_STATES, CORE_STATE_NAMES};
 use safelogic::*;
 
 const ALL: u16 = SL_SBT_ACTIVE_SBT
@@ -375,20 +375,11 @@ fn library_error_and_reset() {
 #[test]
 fn names_and_texts() {
     let t = registry::block_type(SL_TYPE_SBT).unwrap();
-    let names: Vec<_> = t
-        .info
-        .states
-        .iter()
-        .map(|(v, n)| (*v, n.trim_end_matches('\0')))
-        .collect();
+    let names = state_names(&t.info);
+    assert_eq!(names[..5], CORE_STATE_NAMES);
     assert_eq!(
-        names,
+        names[5..],
         [
-            (1, "RUN"),
-            (2, "STOP"),
-            (3, "SAFE"),
-            (4, "ERROR"),
-            (5, "RESET"),
             (16, "TESTING"),
             (17, "TEST-OK"),
             (18, "TEST-FAILED"),

@@ -4,7 +4,7 @@
 
 mod common;
 
-use common::{Rng, CORE_STATES};
+use common::{state_names, Rng, CORE_STATES, CORE_STATE_NAMES};
 use safelogic::*;
 
 const VALID: u16 = SL_SLP_ACTIVE_SAFEPOSVALID;
@@ -318,23 +318,9 @@ fn a_changed_limit_while_running_is_param_changed() {
 #[test]
 fn names_and_texts() {
     let t = registry::block_type(SL_TYPE_SLP).unwrap();
-    let names: Vec<_> = t
-        .info
-        .states
-        .iter()
-        .map(|(v, n)| (*v, n.trim_end_matches('\0')))
-        .collect();
-    assert_eq!(
-        names,
-        [
-            (1, "RUN"),
-            (2, "STOP"),
-            (3, "SAFE"),
-            (4, "ERROR"),
-            (5, "RESET"),
-            (6, "START")
-        ]
-    );
+    let names = state_names(&t.info);
+    assert_eq!(names[..5], CORE_STATE_NAMES);
+    assert_eq!(names[5..], [(6, "START")]);
     let mut out = [0u8; 128];
     let n = base::diag::diag_text(&t.info, 2, &mut out);
     assert_eq!(

@@ -512,3 +512,20 @@ macro_rules! c_group_cycle {
         unsafe { safelogic::ffi::sl_group_cycle(g, members, links, t) }
     }};
 }
+
+/// Names of [`CORE_STATES`] as every registry row spells them.
+pub const CORE_STATE_NAMES: [(u8, &str); 5] = [
+    (1, "RUN"),
+    (2, "STOP"),
+    (3, "SAFE"),
+    (4, "ERROR"),
+    (5, "RESET"),
+];
+
+/// A registry row's states with their names (NUL terminator removed), in the row's order.
+pub fn state_names(info: &safelogic::registry::BlockInfo) -> Vec<(u8, &'static str)> {
+    info.states
+        .iter()
+        .map(|(v, n)| (*v, n.trim_end_matches('\0')))
+        .collect()
+}
