@@ -167,17 +167,18 @@ fn fold(seed: u64, words: &[u64]) -> u64 {
 
 /// The check a member entry carries in `aReserved` (48 bits): binds the block pointer and
 /// type to the group (`group`: its address), the entry's own address (`entry`, so a copied
-/// or moved entry fails), its index and the group's member count and capacity (so a forged
-/// count fails every entry).
+/// or moved entry fails), its index, and the group's member count, member capacity and link
+/// capacity (`shape`: so a forged count or capacity of either table fails every entry, and
+/// entry 0 vouches for the link capacity before any link past the count is read).
 pub fn member_check(
     group: usize,
     entry: usize,
     index: u16,
-    count: u16,
-    cap: u16,
+    shape: [u16; 3],
     block: usize,
     ty: u16,
 ) -> [u8; 6] {
+    let [count, cap, link_cap] = shape;
     let h = fold(
         0x5AFE_10C1_6A05_0001,
         &[
@@ -186,6 +187,7 @@ pub fn member_check(
             u64::from(index),
             u64::from(count),
             u64::from(cap),
+            u64::from(link_cap),
             block as u64,
             u64::from(ty),
         ],

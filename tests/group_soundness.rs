@@ -702,6 +702,40 @@ fn forged_capacity_over_a_one_entry_table_is_found_before_any_other_entry_is_rea
     }
 }
 
+/// Writes the group's private link word and its complement consistently.
+fn forge_links(g: *mut SL_GROUP, count: u16, cap: u16) {
+    let w = u32::from(count) | u32::from(cap) << 16;
+    // SAFETY: arena memory.
+    unsafe {
+        (*g).stPrivate.dwLinks = w;
+        (*g).stPrivate.adwCheck[3] = !w;
+    }
+}
+
+#[test]
+fn forged_link_capacity_over_a_small_link_table_is_found_before_a_link_past_it_is_read() {
+    // The link table is in an allocation of its own with room for `real` links (none used;
+    // for 0 the pointer is a dangling, never-readable one); the private state is forged to
+    // claim `forged` (count, capacity) with matching complements. The checked cycle reads
+    // the slot after the last link: with the forged capacity that slot is past the table
+    // (Miri: undefined behaviour), so the capacity must be found forged first.
+    for (real, forged) in [(1, (0, 4000)), (1, (3999, 4000)), (1, (1, 4000)), (0, (0, 5))] {
+        let mem = Mem::new();
+        let g = mem.at::<SL_GROUP>(G);
+        let m = own_table::<SL_MEMBER>(1);
+        let l = own_table::<SL_LINK>(real);
+        // SAFETY: the group in the arena, each table in its own allocation.
+        assert_eq!(unsafe { ffi::sl_group_init(g, m, 1, l, real as u16) }, SL_OK);
+        let e = estop_at(&mem, 512);
+        assert_eq!(add(g, m, SL_TYPE_ESTOP, e.cast()), SL_OK);
+        to_run(g, m, l, e);
+        forge_links(g, forged.0, forged.1);
+        assert_stopped_with_corrupt(gcycle(g, m, l, 30), g, e, false);
+        free_table(m, 1);
+        free_table(l, real);
+    }
+}
+
 #[test]
 fn forged_count_that_drops_the_estop_stops_the_group() {
     // Member 0 is an AND, member 1 the ESTOP; the count forged to 1 would drop the ESTOP.

@@ -374,24 +374,35 @@ struct CMembers {
     base: *mut SL_MEMBER,
     count: u16,
     cap: u16,
+    /// The link table's capacity from the same private state, bound by every entry's check.
+    link_cap: u16,
     group: usize,
 }
 
 impl CMembers {
-    /// The table of `count` entries (room for `cap`) at `base` of the group at `group`, once
-    /// `storage(base, count)` accepted it.
-    fn at(base: *mut SL_MEMBER, count: u16, cap: u16, group: usize) -> Self {
+    /// The table of `count` entries (room for `cap`) at `base` of the group at `group` whose
+    /// link table has room for `link_cap`, once `storage(base, count)` accepted it.
+    fn at(base: *mut SL_MEMBER, count: u16, cap: u16, link_cap: u16, group: usize) -> Self {
         CMembers {
             base,
             count,
             cap,
+            link_cap,
             group,
         }
     }
 
-    /// Entry `i`, if it is inside the count and passes its check.
+    /// The shape every entry's check binds: count, capacity, link capacity.
+    fn shape(&self) -> [u16; 3] {
+        [self.count, self.cap, self.link_cap]
+    }
+
+    /// Entry `i`, if it is inside the count and passes its check. The count and capacity
+    /// come from the group's private state: entry 0's check binds both, so entry 0 is
+    /// checked before any entry past it is read (a forged count, semantics GR14, would
+    /// otherwise point the read past the caller's table).
     fn entry(&self, i: usize) -> Option<SL_MEMBER> {
-        if i >= usize::from(self.count) {
+        if i >= usize::from(self.count) || (i > 0 && self.entry(0).is_none()) {
             return None;
         }
         // SAFETY: `base` is non-null and aligned (checked by `storage`) and points to at
@@ -401,8 +412,7 @@ impl CMembers {
             self.group,
             self.base.wrapping_add(i) as usize,
             i as u16,
-            self.count,
-            self.cap,
+            self.shape(),
             e.pBlock as usize,
             e.nType,
         );
@@ -662,13 +672,32 @@ struct CLinks {
     cap: usize,
 }
 
+impl CLinks {
+    /// The link table of the group whose member table is `t`, as the group's private state
+    /// gives it (`count` links, room for `cap`). The capacity is trusted only when entry 0
+    /// of the member table vouches for it (its check binds the link capacity): a forged
+    /// capacity with valid complements (semantics GR14) would otherwise point reads past the
+    /// caller's table. Untrusted, no link is read; every member entry then fails too (each
+    /// is read only after entry 0), so the group stops. Without members nothing reads a link.
+    fn of(t: &CMembers, base: *const SL_LINK, count: u16, cap: u16) -> Self {
+        let trusted = cap > 0 && t.count > 0 && t.entry(0).is_some();
+        let (count, cap) = if trusted { (count, cap) } else { (0, 0) };
+        CLinks {
+            base,
+            count: usize::from(count),
+            cap: usize::from(cap),
+        }
+    }
+}
+
 impl group::Links for CLinks {
     fn count(&self) -> usize {
         self.count
     }
     fn get(&self, i: usize) -> Option<SL_LINK> {
         // SAFETY: non-null and aligned (checked by `storage`), at least `count` entries
-        // (sl_group_init contract); read by value.
+        // (sl_group_init contract; `count <= cap`, vouched for in `CLinks::of`); read by
+        // value.
         (i < self.count).then(|| unsafe { self.base.add(i).read() })
     }
     fn as_slice(&self) -> &[SL_LINK] {
@@ -694,8 +723,9 @@ impl group::Links for CLinks {
         if self.base.is_null() || i >= self.cap {
             return true;
         }
-        // SAFETY: non-null, `i < cap` entries at `base` (sl_group_init contract); read by
-        // value, unaligned (with no link left, `storage` checked no alignment).
+        // SAFETY: non-null, `i < cap` entries at `base` (sl_group_init contract; `cap`
+        // vouched for in `CLinks::of`); read by value, unaligned (with no link left,
+        // `storage` checked no alignment).
         unsafe { self.base.add(i).read_unaligned() == SL_LINK::default() }
     }
 }
@@ -746,8 +776,9 @@ fn tables_disjoint(
 /// The member table of `g` (count and capacity from its private state) at `table`.
 fn member_table(g: &SL_GROUP, g_addr: usize, table: *mut SL_MEMBER) -> Result<CMembers, i32> {
     let (count, cap) = group::member_counts(g).ok_or(SL_E_CORRUPT)?;
+    let (_, link_cap) = group::link_counts(g).ok_or(SL_E_CORRUPT)?;
     storage(table, usize::from(count))?;
-    Ok(CMembers::at(table, count, cap, g_addr))
+    Ok(CMembers::at(table, count, cap, link_cap, g_addr))
 }
 
 /// Rewrites the check of every entry (after the count changed).
@@ -761,8 +792,7 @@ fn seal_members(t: &CMembers) {
             t.group,
             p as usize,
             i as u16,
-            t.count,
-            t.cap,
+            t.shape(),
             e.pBlock as usize,
             e.nType,
         );
@@ -1183,12 +1213,8 @@ pub unsafe fn sl_group_cycle_traced(
             }
             // The member table as `member_table` would give it, from the counts and the
             // `storage` check above (not read and checked a second time).
-            let mut t = CMembers::at(aMembers, members, cap, g_ptr as usize);
-            let l = CLinks {
-                base: aLinks,
-                count: usize::from(links),
-                cap: usize::from(link_cap),
-            };
+            let mut t = CMembers::at(aMembers, members, cap, link_cap, g_ptr as usize);
+            let l = CLinks::of(&t, aLinks, links, link_cap);
             Ok(group::cycle_traced(g, &mut t, &l, tNow, straight))
         };
         run().unwrap_or_else(|e| e)
@@ -1216,11 +1242,7 @@ pub unsafe fn sl_group_schedule_sealed(
         return false;
     };
     member_table(g, g_ptr as usize, aMembers).is_ok_and(|t| {
-        let l = CLinks {
-            base: aLinks,
-            count: usize::from(links),
-            cap: usize::from(link_cap),
-        };
+        let l = CLinks::of(&t, aLinks, links, link_cap);
         group::is_sealed(g, &t, &l)
     })
 }
