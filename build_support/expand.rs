@@ -1,7 +1,8 @@
-//! Expands the crate's `*_struct!` macros for cbindgen, which reads the sources literally
-//! and does not expand macros: a family of blocks whose structs have one shape declares it
-//! once as a `macro_rules!` whose name ends in `_struct`, and every invocation of it is
-//! written out here as plain Rust for cbindgen (`Builder::with_src`), next to the crate.
+//! Expands the crate's `*_struct!` (and `*_variants!`) macros for cbindgen, which reads the
+//! sources literally and does not expand macros: a family of blocks whose structs have one
+//! shape declares it once as a `macro_rules!` whose name ends in `_struct` (`_variants`
+//! for the tags and aliases of generic variants), and every invocation of it is written
+//! out here as plain Rust for cbindgen (`Builder::with_src`), next to the crate.
 //!
 //! This is a small `macro_rules!` interpreter for what those macros use: one or more arms;
 //! fragments `ident`, `literal`, `tt`, `ty` (one group or a path with generic arguments), `path`,
@@ -433,7 +434,11 @@ fn print(toks: &[Tok], out: &mut String) {
     }
 }
 
-/// The arms of every `macro_rules! *_struct` in `sources`.
+/// The macros written out for cbindgen, by the end of their names: `*_struct` declare
+/// structs, `*_variants` the type tags and type aliases of a generic block's variants.
+const EXPANDED: [&str; 2] = ["_struct", "_variants"];
+
+/// The arms of every `macro_rules! *_struct` (or `*_variants`) in `sources`.
 type Arms = Vec<(Vec<Pat>, Vec<Tok>)>;
 
 fn definitions(sources: &[String]) -> HashMap<String, Arms> {
@@ -448,7 +453,7 @@ fn definitions(sources: &[String]) -> HashMap<String, Arms> {
                 .take_while(|c| c.is_alphanumeric() || *c == '_')
                 .collect();
             rest = after;
-            if !name.ends_with("_struct") {
+            if !EXPANDED.iter().any(|s| name.ends_with(s)) {
                 continue;
             }
             let brace = after.find('{').expect("macro body");

@@ -25,6 +25,286 @@
 #define SL_VERSION_PATCH 0
 
 /*
+ Type tag of FB_ADD_INT.
+ */
+#define SL_TYPE_ADD_INT 16
+
+/*
+ Type tag of FB_ADD_UINT.
+ */
+#define SL_TYPE_ADD_UINT 17
+
+/*
+ Type tag of FB_ADD_DINT.
+ */
+#define SL_TYPE_ADD_DINT 18
+
+/*
+ Type tag of FB_ADD_UDINT.
+ */
+#define SL_TYPE_ADD_UDINT 19
+
+/*
+ Type tag of FB_SUB_INT.
+ */
+#define SL_TYPE_SUB_INT 20
+
+/*
+ Type tag of FB_SUB_UINT.
+ */
+#define SL_TYPE_SUB_UINT 21
+
+/*
+ Type tag of FB_SUB_DINT.
+ */
+#define SL_TYPE_SUB_DINT 22
+
+/*
+ Type tag of FB_SUB_UDINT.
+ */
+#define SL_TYPE_SUB_UDINT 23
+
+/*
+ Type tag of FB_MUL_INT.
+ */
+#define SL_TYPE_MUL_INT 24
+
+/*
+ Type tag of FB_MUL_UINT.
+ */
+#define SL_TYPE_MUL_UINT 25
+
+/*
+ Type tag of FB_MUL_DINT.
+ */
+#define SL_TYPE_MUL_DINT 26
+
+/*
+ Type tag of FB_MUL_UDINT.
+ */
+#define SL_TYPE_MUL_UDINT 27
+
+/*
+ Type tag of FB_DIV_INT.
+ */
+#define SL_TYPE_DIV_INT 28
+
+/*
+ Type tag of FB_DIV_UINT.
+ */
+#define SL_TYPE_DIV_UINT 29
+
+/*
+ Type tag of FB_DIV_DINT.
+ */
+#define SL_TYPE_DIV_DINT 30
+
+/*
+ Type tag of FB_DIV_UDINT.
+ */
+#define SL_TYPE_DIV_UDINT 31
+
+/*
+ Type tag of FB_COMPARE_INT.
+ */
+#define SL_TYPE_COMPARE_INT 32
+
+/*
+ Type tag of FB_COMPARE_UINT.
+ */
+#define SL_TYPE_COMPARE_UINT 33
+
+/*
+ Type tag of FB_COMPARE_DINT.
+ */
+#define SL_TYPE_COMPARE_DINT 34
+
+/*
+ Type tag of FB_COMPARE_UDINT.
+ */
+#define SL_TYPE_COMPARE_UDINT 35
+
+/*
+ Type tag of FB_COUNTER_INT.
+ */
+#define SL_TYPE_COUNTER_INT 56
+
+/*
+ Type tag of FB_COUNTER_UINT.
+ */
+#define SL_TYPE_COUNTER_UINT 57
+
+/*
+ Type tag of FB_COUNTER_DINT.
+ */
+#define SL_TYPE_COUNTER_DINT 58
+
+/*
+ Type tag of FB_COUNTER_UDINT.
+ */
+#define SL_TYPE_COUNTER_UDINT 59
+
+/*
+ Type tag of FB_ENVELOPE_INT.
+ */
+#define SL_TYPE_ENVELOPE_INT 52
+
+/*
+ Type tag of FB_ENVELOPE_UINT.
+ */
+#define SL_TYPE_ENVELOPE_UINT 53
+
+/*
+ Type tag of FB_ENVELOPE_DINT.
+ */
+#define SL_TYPE_ENVELOPE_DINT 54
+
+/*
+ Type tag of FB_ENVELOPE_UDINT.
+ */
+#define SL_TYPE_ENVELOPE_UDINT 55
+
+/*
+ Type tag of FB_LIMIT_INT.
+ */
+#define SL_TYPE_LIMIT_INT 36
+
+/*
+ Type tag of FB_LIMIT_UINT.
+ */
+#define SL_TYPE_LIMIT_UINT 37
+
+/*
+ Type tag of FB_LIMIT_DINT.
+ */
+#define SL_TYPE_LIMIT_DINT 38
+
+/*
+ Type tag of FB_LIMIT_UDINT.
+ */
+#define SL_TYPE_LIMIT_UDINT 39
+
+/*
+ Type tag of FB_LOADSENSING_INT.
+ */
+#define SL_TYPE_LOADSENSING_INT 48
+
+/*
+ Type tag of FB_LOADSENSING_UINT.
+ */
+#define SL_TYPE_LOADSENSING_UINT 49
+
+/*
+ Type tag of FB_LOADSENSING_DINT.
+ */
+#define SL_TYPE_LOADSENSING_DINT 50
+
+/*
+ Type tag of FB_LOADSENSING_UDINT.
+ */
+#define SL_TYPE_LOADSENSING_UDINT 51
+
+/*
+ Type tag of FB_SCALE_INT.
+ */
+#define SL_TYPE_SCALE_INT 40
+
+/*
+ Type tag of FB_SCALE_UINT.
+ */
+#define SL_TYPE_SCALE_UINT 41
+
+/*
+ Type tag of FB_SCALE_DINT.
+ */
+#define SL_TYPE_SCALE_DINT 42
+
+/*
+ Type tag of FB_SCALE_UDINT.
+ */
+#define SL_TYPE_SCALE_UDINT 43
+
+/*
+ Type tag of FB_SLI_INT.
+ */
+#define SL_TYPE_SLI_INT 60
+
+/*
+ Type tag of FB_SLI_UINT.
+ */
+#define SL_TYPE_SLI_UINT 61
+
+/*
+ Type tag of FB_SLI_DINT.
+ */
+#define SL_TYPE_SLI_DINT 62
+
+/*
+ Type tag of FB_SLI_UDINT.
+ */
+#define SL_TYPE_SLI_UDINT 63
+
+/*
+ Type tag of FB_SLI2_INT.
+ */
+#define SL_TYPE_SLI2_INT 64
+
+/*
+ Type tag of FB_SLI2_UINT.
+ */
+#define SL_TYPE_SLI2_UINT 65
+
+/*
+ Type tag of FB_SLI2_DINT.
+ */
+#define SL_TYPE_SLI2_DINT 66
+
+/*
+ Type tag of FB_SLI2_UDINT.
+ */
+#define SL_TYPE_SLI2_UDINT 67
+
+/*
+ Type tag of FB_SPEED_INT.
+ */
+#define SL_TYPE_SPEED_INT 44
+
+/*
+ Type tag of FB_SPEED_UINT.
+ */
+#define SL_TYPE_SPEED_UINT 45
+
+/*
+ Type tag of FB_SPEED_DINT.
+ */
+#define SL_TYPE_SPEED_DINT 46
+
+/*
+ Type tag of FB_SPEED_UDINT.
+ */
+#define SL_TYPE_SPEED_UDINT 47
+
+/*
+ Type tag of FB_VIOLATIONCOUNTER_UINT.
+ */
+#define SL_TYPE_VIOLATIONCOUNTER_UINT 68
+
+/*
+ Type tag of FB_VIOLATIONCOUNTER_UDINT.
+ */
+#define SL_TYPE_VIOLATIONCOUNTER_UDINT 69
+
+/*
+ Type tag of FB_CAMMONITOR_UINT.
+ */
+#define SL_TYPE_CAMMONITOR_UINT 70
+
+/*
+ Type tag of FB_CAMMONITOR_UDINT.
+ */
+#define SL_TYPE_CAMMONITOR_UDINT 71
+
+/*
  First type tag of the PLCopen family.
  */
 #define SF_TAG_BASE 512
@@ -346,86 +626,6 @@
 #define SL_DIAG_VALUE_OVERFLOW 2
 
 /*
- Type tags of the arithmetic blocks (ABI-2 §10.6: sequential from 16).
- */
-#define SL_TYPE_ADD_INT 16
-
-/*
- FB_ADD_UINT.
- */
-#define SL_TYPE_ADD_UINT 17
-
-/*
- FB_ADD_DINT.
- */
-#define SL_TYPE_ADD_DINT 18
-
-/*
- FB_ADD_UDINT.
- */
-#define SL_TYPE_ADD_UDINT 19
-
-/*
- FB_SUB_INT.
- */
-#define SL_TYPE_SUB_INT 20
-
-/*
- FB_SUB_UINT.
- */
-#define SL_TYPE_SUB_UINT 21
-
-/*
- FB_SUB_DINT.
- */
-#define SL_TYPE_SUB_DINT 22
-
-/*
- FB_SUB_UDINT.
- */
-#define SL_TYPE_SUB_UDINT 23
-
-/*
- FB_MUL_INT.
- */
-#define SL_TYPE_MUL_INT 24
-
-/*
- FB_MUL_UINT.
- */
-#define SL_TYPE_MUL_UINT 25
-
-/*
- FB_MUL_DINT.
- */
-#define SL_TYPE_MUL_DINT 26
-
-/*
- FB_MUL_UDINT.
- */
-#define SL_TYPE_MUL_UDINT 27
-
-/*
- FB_DIV_INT.
- */
-#define SL_TYPE_DIV_INT 28
-
-/*
- FB_DIV_UINT.
- */
-#define SL_TYPE_DIV_UINT 29
-
-/*
- FB_DIV_DINT.
- */
-#define SL_TYPE_DIV_DINT 30
-
-/*
- FB_DIV_UDINT.
- */
-#define SL_TYPE_DIV_UDINT 31
-
-/*
  `nRounding` Floor: toward −∞ (docs/semantics.md A2).
  */
 #define SL_ROUNDING_FLOOR 0
@@ -457,26 +657,6 @@
 #define ARITH_ACTIVE 768
 
 /*
- Type tag of FB_COMPARE_INT (ABI-2 §10.6: sequential from 16 in the order of §10.3).
- */
-#define SL_TYPE_COMPARE_INT 32
-
-/*
- FB_COMPARE_UINT.
- */
-#define SL_TYPE_COMPARE_UINT 33
-
-/*
- FB_COMPARE_DINT.
- */
-#define SL_TYPE_COMPARE_DINT 34
-
-/*
- FB_COMPARE_UDINT.
- */
-#define SL_TYPE_COMPARE_UDINT 35
-
-/*
  `nArchitecture` 1oo2: CompIn1 and CompIn2 must agree.
  */
 #define SL_ARCH_1OO2 2
@@ -492,26 +672,6 @@
 #define SL_ARCH_3OO5 5
 
 /*
- Type tag of FB_COUNTER_INT (ABI-2 §10.6: after the ten four-variant blocks of §10.3).
- */
-#define SL_TYPE_COUNTER_INT 56
-
-/*
- FB_COUNTER_UINT.
- */
-#define SL_TYPE_COUNTER_UINT 57
-
-/*
- FB_COUNTER_DINT.
- */
-#define SL_TYPE_COUNTER_DINT 58
-
-/*
- FB_COUNTER_UDINT.
- */
-#define SL_TYPE_COUNTER_UDINT 59
-
-/*
  Diag message "An underflow has occurred" (parameters: ActValue, smallest permitted value).
  */
 #define SL_TEXT_COUNTER_UNDERFLOW 0x40B8
@@ -525,26 +685,6 @@
  `wInputActive` bits of Reset, CountUp, CountDown (optional: an inactive input reads FALSE).
  */
 #define SL_COUNTER_ACTIVE_INPUTS 7
-
-/*
- Type tag of FB_ENVELOPE_INT (ABI-2 §10.6: sequential from 16 in the order of §10.3).
- */
-#define SL_TYPE_ENVELOPE_INT 52
-
-/*
- FB_ENVELOPE_UINT.
- */
-#define SL_TYPE_ENVELOPE_UINT 53
-
-/*
- FB_ENVELOPE_DINT.
- */
-#define SL_TYPE_ENVELOPE_DINT 54
-
-/*
- FB_ENVELOPE_UDINT.
- */
-#define SL_TYPE_ENVELOPE_UDINT 55
 
 /*
  State MONITOR (manual §4.32.2 "9.0"): SafeFunction fell, InValue outside the target
@@ -593,26 +733,6 @@
 #define SL_ENVELOPE_TIME_MAX 65535U
 
 /*
- Type tag of FB_LIMIT_INT (ABI-2 §10.6: sequential from 16 in the order of §10.3).
- */
-#define SL_TYPE_LIMIT_INT 36
-
-/*
- FB_LIMIT_UINT.
- */
-#define SL_TYPE_LIMIT_UINT 37
-
-/*
- FB_LIMIT_DINT.
- */
-#define SL_TYPE_LIMIT_DINT 38
-
-/*
- FB_LIMIT_UDINT.
- */
-#define SL_TYPE_LIMIT_UDINT 39
-
-/*
  Diag value 1: MinValue is greater than MaxValue.
  */
 #define SL_DIAG_LIMIT_MIN_ABOVE_MAX 1
@@ -636,26 +756,6 @@
  `wInputActive` bit of MaxValue: set = the input is the maximum, clear = `nMaximumValue`.
  */
 #define SL_LIMIT_ACTIVE_MAXVALUE (1 << 10)
-
-/*
- Type tag of FB_LOADSENSING_INT (ABI-2 §10.6: sequential from 16 in the order of §10.3).
- */
-#define SL_TYPE_LOADSENSING_INT 48
-
-/*
- FB_LOADSENSING_UINT.
- */
-#define SL_TYPE_LOADSENSING_UINT 49
-
-/*
- FB_LOADSENSING_DINT.
- */
-#define SL_TYPE_LOADSENSING_DINT 50
-
-/*
- FB_LOADSENSING_UDINT.
- */
-#define SL_TYPE_LOADSENSING_UDINT 51
 
 /*
  State INACTIVE (manual §4.25.2 "16.0"): Inactive is TRUE; Valid 0, Warning 0.
@@ -691,26 +791,6 @@
  `wInputActive` bit of AnalogInY (required).
  */
 #define SL_LOADSENSING_ACTIVE_ANALOGINY (1 << 9)
-
-/*
- Type tag of FB_SCALE_INT (ABI-2 §10.6: sequential from 16 in the order of §10.3).
- */
-#define SL_TYPE_SCALE_INT 40
-
-/*
- FB_SCALE_UINT.
- */
-#define SL_TYPE_SCALE_UINT 41
-
-/*
- FB_SCALE_DINT.
- */
-#define SL_TYPE_SCALE_DINT 42
-
-/*
- FB_SCALE_UDINT.
- */
-#define SL_TYPE_SCALE_UDINT 43
 
 /*
  `dwOptions`: "Multiplication First" FALSE — divide by `nDenominator` before multiplying
@@ -760,66 +840,6 @@
 #define SL_SCALE_NEGATE_ANALOGIN (1 << 8)
 
 /*
- Type tag of FB_SLI_INT (ABI-2 §10.6: sequential in the order of §10.3).
- */
-#define SL_TYPE_SLI_INT 60
-
-/*
- FB_SLI_UINT.
- */
-#define SL_TYPE_SLI_UINT 61
-
-/*
- FB_SLI_DINT.
- */
-#define SL_TYPE_SLI_DINT 62
-
-/*
- FB_SLI_UDINT.
- */
-#define SL_TYPE_SLI_UDINT 63
-
-/*
- Type tag of FB_SLI2_INT (ABI-2 §10.6: sequential in the order of §10.3).
- */
-#define SL_TYPE_SLI2_INT 64
-
-/*
- FB_SLI2_UINT.
- */
-#define SL_TYPE_SLI2_UINT 65
-
-/*
- FB_SLI2_DINT.
- */
-#define SL_TYPE_SLI2_DINT 66
-
-/*
- FB_SLI2_UDINT.
- */
-#define SL_TYPE_SLI2_UDINT 67
-
-/*
- Type tag of FB_SPEED_INT (ABI-2 §10.6: sequential from 16 in the order of §10.3).
- */
-#define SL_TYPE_SPEED_INT 44
-
-/*
- FB_SPEED_UINT.
- */
-#define SL_TYPE_SPEED_UINT 45
-
-/*
- FB_SPEED_DINT.
- */
-#define SL_TYPE_SPEED_DINT 46
-
-/*
- FB_SPEED_UDINT.
- */
-#define SL_TYPE_SPEED_UDINT 47
-
-/*
  `dwOptions`: "Overflow Check" — the position difference is taken modulo 2^W before the
  range check (a position counter wrapping at its type's end is no jump).
  */
@@ -839,16 +859,6 @@
  `wInputActive` bit of Position (required, the only bit).
  */
 #define SL_SPEED_ACTIVE_POSITION (1 << 8)
-
-/*
- Type tag of FB_VIOLATIONCOUNTER_UINT (ABI-2 §10.6, order of §10.3).
- */
-#define SL_TYPE_VIOLATIONCOUNTER_UINT 68
-
-/*
- FB_VIOLATIONCOUNTER_UDINT.
- */
-#define SL_TYPE_VIOLATIONCOUNTER_UDINT 69
 
 /*
  `wInputActive` of FB VIOLATIONCOUNTER: Input (bit 0) and Enable (bit 1), both required.
@@ -1191,16 +1201,6 @@
  Largest SAFEDRIVEFEEDBACK instance number of a feedback parameter ("instance (0-3)").
  */
 #define SL_ADVPOSMON_FEEDBACK_MAX 3
-
-/*
- Type tag of FB_CAMMONITOR_UINT (ABI-2 §10.6, order of §10.3).
- */
-#define SL_TYPE_CAMMONITOR_UINT 70
-
-/*
- FB_CAMMONITOR_UDINT.
- */
-#define SL_TYPE_CAMMONITOR_UDINT 71
 
 /*
  Option: "Pendulum Mode"; clear = "Excentric Mode".

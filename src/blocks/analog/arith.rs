@@ -23,38 +23,20 @@ use crate::base::layout::Zeroed;
 use crate::base::types::*;
 use core::marker::PhantomData;
 
-/// Type tags of the arithmetic blocks (ABI-2 §10.6: sequential from 16).
-pub const SL_TYPE_ADD_INT: u16 = 16;
-/// FB_ADD_UINT.
-pub const SL_TYPE_ADD_UINT: u16 = 17;
-/// FB_ADD_DINT.
-pub const SL_TYPE_ADD_DINT: u16 = 18;
-/// FB_ADD_UDINT.
-pub const SL_TYPE_ADD_UDINT: u16 = 19;
-/// FB_SUB_INT.
-pub const SL_TYPE_SUB_INT: u16 = 20;
-/// FB_SUB_UINT.
-pub const SL_TYPE_SUB_UINT: u16 = 21;
-/// FB_SUB_DINT.
-pub const SL_TYPE_SUB_DINT: u16 = 22;
-/// FB_SUB_UDINT.
-pub const SL_TYPE_SUB_UDINT: u16 = 23;
-/// FB_MUL_INT.
-pub const SL_TYPE_MUL_INT: u16 = 24;
-/// FB_MUL_UINT.
-pub const SL_TYPE_MUL_UINT: u16 = 25;
-/// FB_MUL_DINT.
-pub const SL_TYPE_MUL_DINT: u16 = 26;
-/// FB_MUL_UDINT.
-pub const SL_TYPE_MUL_UDINT: u16 = 27;
-/// FB_DIV_INT.
-pub const SL_TYPE_DIV_INT: u16 = 28;
-/// FB_DIV_UINT.
-pub const SL_TYPE_DIV_UINT: u16 = 29;
-/// FB_DIV_DINT.
-pub const SL_TYPE_DIV_DINT: u16 = 30;
-/// FB_DIV_UDINT.
-pub const SL_TYPE_DIV_UDINT: u16 = 31;
+super::analog_variants! {
+    FB_ARITH:
+        INT SL_TYPE_ADD_INT = 16 => FB_ADD_INT[Add, i16, 2, 6], UINT SL_TYPE_ADD_UINT = 17 => FB_ADD_UINT[Add, u16, 2, 6],
+        DINT SL_TYPE_ADD_DINT = 18 => FB_ADD_DINT[Add, i32, 6, 4], UDINT SL_TYPE_ADD_UDINT = 19 => FB_ADD_UDINT[Add, u32, 6, 4],
+        INT SL_TYPE_SUB_INT = 20 => FB_SUB_INT[Sub, i16, 2, 6], UINT SL_TYPE_SUB_UINT = 21 => FB_SUB_UINT[Sub, u16, 2, 6],
+        DINT SL_TYPE_SUB_DINT = 22 => FB_SUB_DINT[Sub, i32, 6, 4], UDINT SL_TYPE_SUB_UDINT = 23 => FB_SUB_UDINT[Sub, u32, 6, 4],
+        INT SL_TYPE_MUL_INT = 24 => FB_MUL_INT[Mul, i16, 2, 6], UINT SL_TYPE_MUL_UINT = 25 => FB_MUL_UINT[Mul, u16, 2, 6],
+        DINT SL_TYPE_MUL_DINT = 26 => FB_MUL_DINT[Mul, i32, 6, 4], UDINT SL_TYPE_MUL_UDINT = 27 => FB_MUL_UDINT[Mul, u32, 6, 4]
+}
+super::analog_variants! {
+    FB_DIV:
+        INT SL_TYPE_DIV_INT = 28 => FB_DIV_INT[i16, 0, 6], UINT SL_TYPE_DIV_UINT = 29 => FB_DIV_UINT[u16, 0, 6],
+        DINT SL_TYPE_DIV_DINT = 30 => FB_DIV_DINT[i32, 4, 4], UDINT SL_TYPE_DIV_UDINT = 31 => FB_DIV_UDINT[u32, 4, 4]
+}
 
 /// `nRounding` Floor: toward −∞ (docs/semantics.md A2).
 pub const SL_ROUNDING_FLOOR: u16 = 0;
@@ -267,39 +249,6 @@ crate::base::layout::block_struct! {
         "Text ID of the latched diag message (0x4081), 0 = none.",
         "message parameter 2 (AnalogIn1 as a 32-bit pattern).", "message parameter 3 (AnalogIn2)."
 }
-
-/// FB ADD, INT variant.
-pub type FB_ADD_INT = FB_ARITH<Add, i16, 2, 6>;
-/// FB ADD, UINT variant.
-pub type FB_ADD_UINT = FB_ARITH<Add, u16, 2, 6>;
-/// FB ADD, DINT variant.
-pub type FB_ADD_DINT = FB_ARITH<Add, i32, 6, 4>;
-/// FB ADD, UDINT variant.
-pub type FB_ADD_UDINT = FB_ARITH<Add, u32, 6, 4>;
-/// FB SUB, INT variant.
-pub type FB_SUB_INT = FB_ARITH<Sub, i16, 2, 6>;
-/// FB SUB, UINT variant.
-pub type FB_SUB_UINT = FB_ARITH<Sub, u16, 2, 6>;
-/// FB SUB, DINT variant.
-pub type FB_SUB_DINT = FB_ARITH<Sub, i32, 6, 4>;
-/// FB SUB, UDINT variant.
-pub type FB_SUB_UDINT = FB_ARITH<Sub, u32, 6, 4>;
-/// FB MUL, INT variant.
-pub type FB_MUL_INT = FB_ARITH<Mul, i16, 2, 6>;
-/// FB MUL, UINT variant.
-pub type FB_MUL_UINT = FB_ARITH<Mul, u16, 2, 6>;
-/// FB MUL, DINT variant.
-pub type FB_MUL_DINT = FB_ARITH<Mul, i32, 6, 4>;
-/// FB MUL, UDINT variant.
-pub type FB_MUL_UDINT = FB_ARITH<Mul, u32, 6, 4>;
-/// FB DIV, INT variant.
-pub type FB_DIV_INT = FB_DIV<i16, 0, 6>;
-/// FB DIV, UINT variant.
-pub type FB_DIV_UINT = FB_DIV<u16, 0, 6>;
-/// FB DIV, DINT variant.
-pub type FB_DIV_DINT = FB_DIV<i32, 4, 4>;
-/// FB DIV, UDINT variant.
-pub type FB_DIV_UDINT = FB_DIV<u32, 4, 4>;
 
 // The ABI-2 §11.2 numbers of the two DIV layouts (the one place `nRounding` sits).
 const _: () = {

@@ -18,14 +18,11 @@ use crate::base::header::param_crc;
 use crate::base::time;
 use crate::base::types::*;
 
-/// Type tag of FB_COMPARE_INT (ABI-2 §10.6: sequential from 16 in the order of §10.3).
-pub const SL_TYPE_COMPARE_INT: u16 = 32;
-/// FB_COMPARE_UINT.
-pub const SL_TYPE_COMPARE_UINT: u16 = 33;
-/// FB_COMPARE_DINT.
-pub const SL_TYPE_COMPARE_DINT: u16 = 34;
-/// FB_COMPARE_UDINT.
-pub const SL_TYPE_COMPARE_UDINT: u16 = 35;
+super::analog_variants! {
+    FB_COMPARE:
+        INT SL_TYPE_COMPARE_INT = 32 => FB_COMPARE_INT[i16, 2, 6], UINT SL_TYPE_COMPARE_UINT = 33 => FB_COMPARE_UINT[u16, 2, 6],
+        DINT SL_TYPE_COMPARE_DINT = 34 => FB_COMPARE_DINT[i32, 0, 4], UDINT SL_TYPE_COMPARE_UDINT = 35 => FB_COMPARE_UDINT[u32, 0, 4]
+}
 
 /// `nArchitecture` 1oo2: CompIn1 and CompIn2 must agree.
 pub const SL_ARCH_1OO2: u16 = 2;
@@ -101,15 +98,6 @@ crate::base::layout::block_struct! {
         "Text ID of the latched diag message, 0 = none.", "message parameter 2.",
         "message parameter 3."
 }
-
-/// FB COMPARE, INT variant.
-pub type FB_COMPARE_INT = FB_COMPARE<i16, 2, 6>;
-/// FB COMPARE, UINT variant.
-pub type FB_COMPARE_UINT = FB_COMPARE<u16, 2, 6>;
-/// FB COMPARE, DINT variant.
-pub type FB_COMPARE_DINT = FB_COMPARE<i32, 0, 4>;
-/// FB COMPARE, UDINT variant.
-pub type FB_COMPARE_UDINT = FB_COMPARE<u32, 0, 4>;
 
 // The ABI-2 §11.3 numbers of the two layouts (parameters, output base).
 const _: () = {

@@ -18,14 +18,11 @@ use crate::base::envelope::Block;
 use crate::base::header::param_crc;
 use crate::base::types::*;
 
-/// Type tag of FB_COUNTER_INT (ABI-2 §10.6: after the ten four-variant blocks of §10.3).
-pub const SL_TYPE_COUNTER_INT: u16 = 56;
-/// FB_COUNTER_UINT.
-pub const SL_TYPE_COUNTER_UINT: u16 = 57;
-/// FB_COUNTER_DINT.
-pub const SL_TYPE_COUNTER_DINT: u16 = 58;
-/// FB_COUNTER_UDINT.
-pub const SL_TYPE_COUNTER_UDINT: u16 = 59;
+super::analog_variants! {
+    FB_COUNTER:
+        INT SL_TYPE_COUNTER_INT = 56 => FB_COUNTER_INT[i16, 6, 6], UINT SL_TYPE_COUNTER_UINT = 57 => FB_COUNTER_UINT[u16, 6, 6],
+        DINT SL_TYPE_COUNTER_DINT = 58 => FB_COUNTER_DINT[i32, 2, 4], UDINT SL_TYPE_COUNTER_UDINT = 59 => FB_COUNTER_UDINT[u32, 2, 4]
+}
 
 /// Diag message "An underflow has occurred" (parameters: ActValue, smallest permitted value).
 pub const SL_TEXT_COUNTER_UNDERFLOW: u16 = 0x40B8;
@@ -100,15 +97,6 @@ crate::base::layout::block_struct! {
         "message parameter 2 (ActValue before the step, as a 32-bit pattern).",
         "message parameter 3 (the smallest / largest value of the type)."
 }
-
-/// FB COUNTER, INT variant.
-pub type FB_COUNTER_INT = FB_COUNTER<i16, 6, 6>;
-/// FB COUNTER, UINT variant.
-pub type FB_COUNTER_UINT = FB_COUNTER<u16, 6, 6>;
-/// FB COUNTER, DINT variant.
-pub type FB_COUNTER_DINT = FB_COUNTER<i32, 2, 4>;
-/// FB COUNTER, UDINT variant.
-pub type FB_COUNTER_UDINT = FB_COUNTER<u32, 2, 4>;
 
 // The ABI-2 §11.5 layout, every variant: parameters from 20, output base 32, ActValue at
 // 40, info at 48, private at 64.

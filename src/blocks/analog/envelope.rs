@@ -21,14 +21,11 @@ use crate::base::header::param_crc;
 use crate::base::time;
 use crate::base::types::*;
 
-/// Type tag of FB_ENVELOPE_INT (ABI-2 §10.6: sequential from 16 in the order of §10.3).
-pub const SL_TYPE_ENVELOPE_INT: u16 = 52;
-/// FB_ENVELOPE_UINT.
-pub const SL_TYPE_ENVELOPE_UINT: u16 = 53;
-/// FB_ENVELOPE_DINT.
-pub const SL_TYPE_ENVELOPE_DINT: u16 = 54;
-/// FB_ENVELOPE_UDINT.
-pub const SL_TYPE_ENVELOPE_UDINT: u16 = 55;
+super::analog_variants! {
+    FB_ENVELOPE:
+        INT SL_TYPE_ENVELOPE_INT = 52 => FB_ENVELOPE_INT[i16, 2], UINT SL_TYPE_ENVELOPE_UINT = 53 => FB_ENVELOPE_UINT[u16, 2],
+        DINT SL_TYPE_ENVELOPE_DINT = 54 => FB_ENVELOPE_DINT[i32, 0], UDINT SL_TYPE_ENVELOPE_UDINT = 55 => FB_ENVELOPE_UDINT[u32, 0]
+}
 
 /// State MONITOR (manual §4.32.2 "9.0"): SafeFunction fell, InValue outside the target
 /// window, checked against the envelope; SafeFunctionOut 1.
@@ -115,15 +112,6 @@ crate::base::layout::block_struct! {
         "message parameter 2 (InValue as a 32-bit pattern).",
         "message parameter 3 (−E(t) for 0x40C8, +E(t) for 0x40C9)."
 }
-
-/// FB ENVELOPE, INT variant.
-pub type FB_ENVELOPE_INT = FB_ENVELOPE<i16, 2>;
-/// FB ENVELOPE, UINT variant.
-pub type FB_ENVELOPE_UINT = FB_ENVELOPE<u16, 2>;
-/// FB ENVELOPE, DINT variant.
-pub type FB_ENVELOPE_DINT = FB_ENVELOPE<i32, 0>;
-/// FB ENVELOPE, UDINT variant.
-pub type FB_ENVELOPE_UDINT = FB_ENVELOPE<u32, 0>;
 
 crate::base::block::block_states!(
     /// The states of FB ENVELOPE, every variant (manual §4.32.2).

@@ -17,14 +17,11 @@ use crate::base::envelope::Block;
 use crate::base::header::param_crc;
 use crate::base::types::*;
 
-/// Type tag of FB_LIMIT_INT (ABI-2 §10.6: sequential from 16 in the order of §10.3).
-pub const SL_TYPE_LIMIT_INT: u16 = 36;
-/// FB_LIMIT_UINT.
-pub const SL_TYPE_LIMIT_UINT: u16 = 37;
-/// FB_LIMIT_DINT.
-pub const SL_TYPE_LIMIT_DINT: u16 = 38;
-/// FB_LIMIT_UDINT.
-pub const SL_TYPE_LIMIT_UDINT: u16 = 39;
+super::analog_variants! {
+    FB_LIMIT:
+        INT SL_TYPE_LIMIT_INT = 36 => FB_LIMIT_INT[i16, 4], UINT SL_TYPE_LIMIT_UINT = 37 => FB_LIMIT_UINT[u16, 4],
+        DINT SL_TYPE_LIMIT_DINT = 38 => FB_LIMIT_DINT[i32, 2], UDINT SL_TYPE_LIMIT_UDINT = 39 => FB_LIMIT_UDINT[u32, 2]
+}
 
 /// Diag value 1: MinValue is greater than MaxValue.
 pub const SL_DIAG_LIMIT_MIN_ABOVE_MAX: u16 = 1;
@@ -96,15 +93,6 @@ crate::base::layout::block_struct! {
         "Text ID of the latched diag message (0x4090), 0 = none.",
         "message parameter 2 (Min as a 32-bit pattern).", "message parameter 3 (Max)."
 }
-
-/// FB LIMIT, INT variant.
-pub type FB_LIMIT_INT = FB_LIMIT<i16, 4>;
-/// FB LIMIT, UINT variant.
-pub type FB_LIMIT_UINT = FB_LIMIT<u16, 4>;
-/// FB LIMIT, DINT variant.
-pub type FB_LIMIT_DINT = FB_LIMIT<i32, 2>;
-/// FB LIMIT, UDINT variant.
-pub type FB_LIMIT_UDINT = FB_LIMIT<u32, 2>;
 
 // The ABI-2 §11.4 numbers of the two layouts.
 const _: () = {

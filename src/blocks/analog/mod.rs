@@ -124,6 +124,25 @@ macro_rules! variant_info {
 }
 pub(crate) use variant_info;
 
+/// Declares the variants of a generic analog block once: for each, its type tag (ABI-2
+/// §10.6: sequential from 16 in the order of §10.3) and its type alias, the generic struct
+/// with the variant's type and reserved gaps:
+/// `analog_variants! { FB_SPEED: INT SL_TYPE_SPEED_INT = 44 => FB_SPEED_INT[i16, 2, 6], … }`.
+/// build.rs writes every invocation out for cbindgen (`build_support/expand.rs`).
+macro_rules! analog_variants {
+    ($name:ident: $($v:ident $tag:ident = $n:literal => $alias:ident [$($arg:tt),*]),+ $(,)?) => {
+        $(
+            #[doc = concat!(" Type tag of ", stringify!($alias), ".")]
+            pub const $tag: u16 = $n;
+        )+
+        $(
+            #[doc = concat!(" ", stringify!($name), ", ", stringify!($v), " variant.")]
+            pub type $alias = $name<$($arg),*>;
+        )+
+    };
+}
+pub(crate) use analog_variants;
+
 /// The (tag, name) of `T`'s variant in a block's list of (variant index, tag, name).
 pub const fn pick<T: Analog>(variants: &[(usize, u16, &'static str)]) -> (u16, &'static str) {
     let mut i = 0;

@@ -23,14 +23,11 @@ use crate::base::header::param_crc;
 use crate::base::time;
 use crate::base::types::*;
 
-/// Type tag of FB_SCALE_INT (ABI-2 §10.6: sequential from 16 in the order of §10.3).
-pub const SL_TYPE_SCALE_INT: u16 = 40;
-/// FB_SCALE_UINT.
-pub const SL_TYPE_SCALE_UINT: u16 = 41;
-/// FB_SCALE_DINT.
-pub const SL_TYPE_SCALE_DINT: u16 = 42;
-/// FB_SCALE_UDINT.
-pub const SL_TYPE_SCALE_UDINT: u16 = 43;
+super::analog_variants! {
+    FB_SCALE:
+        INT SL_TYPE_SCALE_INT = 40 => FB_SCALE_INT[i16, i32, 2, 6], UINT SL_TYPE_SCALE_UINT = 41 => FB_SCALE_UINT[u16, u32, 2, 6],
+        DINT SL_TYPE_SCALE_DINT = 42 => FB_SCALE_DINT[i32, i32, 0, 4], UDINT SL_TYPE_SCALE_UDINT = 43 => FB_SCALE_UDINT[u32, u32, 0, 4]
+}
 
 /// `dwOptions`: "Multiplication First" FALSE — divide by `nDenominator` before multiplying
 /// by `nNumerator` (default: multiplication first).
@@ -138,15 +135,6 @@ crate::base::layout::block_struct! {
         "Message parameter 2 (AnalogIn as a 32-bit pattern).",
         "Message parameter 3 (always 0: \"-\" in the manual)."
 }
-
-/// FB SCALE, INT variant.
-pub type FB_SCALE_INT = FB_SCALE<i16, i32, 2, 6>;
-/// FB SCALE, UINT variant.
-pub type FB_SCALE_UINT = FB_SCALE<u16, u32, 2, 6>;
-/// FB SCALE, DINT variant.
-pub type FB_SCALE_DINT = FB_SCALE<i32, i32, 0, 4>;
-/// FB SCALE, UDINT variant.
-pub type FB_SCALE_UDINT = FB_SCALE<u32, u32, 0, 4>;
 
 // The ABI-2 §11.6 numbers (identical for both widths).
 const _: () = {

@@ -17,14 +17,11 @@ pub use super::window::{SL_SLI_ACTIVE, SL_TEXT_SLI_OVERFLOW, SL_TEXT_SLI_UNDERFL
 use super::{Analog, SL_DIAG_VALUE_OVERFLOW, SL_DIAG_VALUE_UNDERFLOW};
 use crate::base::types::*;
 
-/// Type tag of FB_SLI_INT (ABI-2 §10.6: sequential in the order of §10.3).
-pub const SL_TYPE_SLI_INT: u16 = 60;
-/// FB_SLI_UINT.
-pub const SL_TYPE_SLI_UINT: u16 = 61;
-/// FB_SLI_DINT.
-pub const SL_TYPE_SLI_DINT: u16 = 62;
-/// FB_SLI_UDINT.
-pub const SL_TYPE_SLI_UDINT: u16 = 63;
+super::analog_variants! {
+    FB_SLI:
+        INT SL_TYPE_SLI_INT = 60 => FB_SLI_INT[i16, i16, 2, 6], UINT SL_TYPE_SLI_UINT = 61 => FB_SLI_UINT[u16, i16, 2, 6],
+        DINT SL_TYPE_SLI_DINT = 62 => FB_SLI_DINT[i32, i32, 0, 4], UDINT SL_TYPE_SLI_UDINT = 63 => FB_SLI_UDINT[u32, i32, 0, 4]
+}
 
 crate::base::layout::block_struct! {
     /// FB SLI instance (ABI-2 §11.9), generic over the Position type `T` and the PositionDiff
@@ -72,15 +69,6 @@ crate::base::layout::block_struct! {
         "Text ID of the latched diag message (0x40C0, 0x40C1), 0 = none.",
         "Message parameter 2: Position as a 32-bit pattern.", "Message parameter 3: LatchPosition."
 }
-
-/// FB SLI, INT variant (PositionDiff INT16).
-pub type FB_SLI_INT = FB_SLI<i16, i16, 2, 6>;
-/// FB SLI, UINT variant (PositionDiff INT16).
-pub type FB_SLI_UINT = FB_SLI<u16, i16, 2, 6>;
-/// FB SLI, DINT variant (PositionDiff INT32).
-pub type FB_SLI_DINT = FB_SLI<i32, i32, 0, 4>;
-/// FB SLI, UDINT variant (PositionDiff INT32).
-pub type FB_SLI_UDINT = FB_SLI<u32, i32, 0, 4>;
 
 // The ABI-2 §11.9 numbers (identical for both widths).
 const _: () = {

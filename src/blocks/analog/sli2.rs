@@ -20,14 +20,11 @@ pub use super::window::{
 use super::Analog;
 use crate::base::types::*;
 
-/// Type tag of FB_SLI2_INT (ABI-2 §10.6: sequential in the order of §10.3).
-pub const SL_TYPE_SLI2_INT: u16 = 64;
-/// FB_SLI2_UINT.
-pub const SL_TYPE_SLI2_UINT: u16 = 65;
-/// FB_SLI2_DINT.
-pub const SL_TYPE_SLI2_DINT: u16 = 66;
-/// FB_SLI2_UDINT.
-pub const SL_TYPE_SLI2_UDINT: u16 = 67;
+super::analog_variants! {
+    FB_SLI2:
+        INT SL_TYPE_SLI2_INT = 64 => FB_SLI2_INT[i16, i16, 2, 6], UINT SL_TYPE_SLI2_UINT = 65 => FB_SLI2_UINT[u16, i16, 2, 6],
+        DINT SL_TYPE_SLI2_DINT = 66 => FB_SLI2_DINT[i32, i32, 0, 4], UDINT SL_TYPE_SLI2_UDINT = 67 => FB_SLI2_UDINT[u32, i32, 0, 4]
+}
 
 crate::base::layout::block_struct! {
     /// FB SLI2 instance (ABI-2 §11.10), generic over the Position type `T` and the
@@ -81,15 +78,6 @@ crate::base::layout::block_struct! {
         "Text ID of the latched diag message (0x40C0, 0x40C1), 0 = none.",
         "Message parameter 2: Position as a 32-bit pattern.", "Message parameter 3: LatchPosition."
 }
-
-/// FB SLI2, INT variant (PositionDiff INT16).
-pub type FB_SLI2_INT = FB_SLI2<i16, i16, 2, 6>;
-/// FB SLI2, UINT variant (PositionDiff INT16).
-pub type FB_SLI2_UINT = FB_SLI2<u16, i16, 2, 6>;
-/// FB SLI2, DINT variant (PositionDiff INT32).
-pub type FB_SLI2_DINT = FB_SLI2<i32, i32, 0, 4>;
-/// FB SLI2, UDINT variant (PositionDiff INT32).
-pub type FB_SLI2_UDINT = FB_SLI2<u32, i32, 0, 4>;
 
 // The ABI-2 §11.10 numbers (identical for both widths).
 const _: () = {

@@ -21,14 +21,11 @@ use crate::base::header::param_crc;
 use crate::base::time;
 use crate::base::types::*;
 
-/// Type tag of FB_SPEED_INT (ABI-2 §10.6: sequential from 16 in the order of §10.3).
-pub const SL_TYPE_SPEED_INT: u16 = 44;
-/// FB_SPEED_UINT.
-pub const SL_TYPE_SPEED_UINT: u16 = 45;
-/// FB_SPEED_DINT.
-pub const SL_TYPE_SPEED_DINT: u16 = 46;
-/// FB_SPEED_UDINT.
-pub const SL_TYPE_SPEED_UDINT: u16 = 47;
+super::analog_variants! {
+    FB_SPEED:
+        INT SL_TYPE_SPEED_INT = 44 => FB_SPEED_INT[i16, 2, 6], UINT SL_TYPE_SPEED_UINT = 45 => FB_SPEED_UINT[u16, 2, 6],
+        DINT SL_TYPE_SPEED_DINT = 46 => FB_SPEED_DINT[i32, 0, 4], UDINT SL_TYPE_SPEED_UDINT = 47 => FB_SPEED_UDINT[u32, 0, 4]
+}
 
 /// `dwOptions`: "Overflow Check" — the position difference is taken modulo 2^W before the
 /// range check (a position counter wrapping at its type's end is no jump).
@@ -102,15 +99,6 @@ crate::base::layout::block_struct! {
         "Message parameter 2 (current position as a 32-bit pattern).",
         "Message parameter 3 (latched position)."
 }
-
-/// FB SPEED, INT variant.
-pub type FB_SPEED_INT = FB_SPEED<i16, 2, 6>;
-/// FB SPEED, UINT variant.
-pub type FB_SPEED_UINT = FB_SPEED<u16, 2, 6>;
-/// FB SPEED, DINT variant.
-pub type FB_SPEED_DINT = FB_SPEED<i32, 0, 4>;
-/// FB SPEED, UDINT variant.
-pub type FB_SPEED_UDINT = FB_SPEED<u32, 0, 4>;
 
 // The ABI-2 §11.7 numbers (identical for both widths).
 const _: () = {

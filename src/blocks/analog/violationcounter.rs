@@ -17,10 +17,10 @@ use crate::base::envelope::Block;
 use crate::base::header::param_crc;
 use crate::base::types::*;
 
-/// Type tag of FB_VIOLATIONCOUNTER_UINT (ABI-2 §10.6, order of §10.3).
-pub const SL_TYPE_VIOLATIONCOUNTER_UINT: u16 = 68;
-/// FB_VIOLATIONCOUNTER_UDINT.
-pub const SL_TYPE_VIOLATIONCOUNTER_UDINT: u16 = 69;
+super::analog_variants! {
+    FB_VIOLATIONCOUNTER:
+        UINT SL_TYPE_VIOLATIONCOUNTER_UINT = 68 => FB_VIOLATIONCOUNTER_UINT[u16, 2, 6], UDINT SL_TYPE_VIOLATIONCOUNTER_UDINT = 69 => FB_VIOLATIONCOUNTER_UDINT[u32, 4, 4]
+}
 
 /// `wInputActive` of FB VIOLATIONCOUNTER: Input (bit 0) and Enable (bit 1), both required.
 pub const SL_VIOLATIONCOUNTER_ACTIVE: u16 = 0x0003;
@@ -84,11 +84,6 @@ crate::base::layout::block_struct! {
         "0 (no diag values) + library bits 13-15.", "always 0 (the block has no diag message).",
         "always 0.", "always 0."
 }
-
-/// FB VIOLATIONCOUNTER, UINT variant.
-pub type FB_VIOLATIONCOUNTER_UINT = FB_VIOLATIONCOUNTER<u16, 2, 6>;
-/// FB VIOLATIONCOUNTER, UDINT variant.
-pub type FB_VIOLATIONCOUNTER_UDINT = FB_VIOLATIONCOUNTER<u32, 4, 4>;
 
 // The ABI-2 §11.12 numbers of the two layouts (output base).
 const _: () = {

@@ -28,10 +28,10 @@ use crate::base::time::reached;
 use crate::base::types::*;
 use crate::blocks::analog::{magic, Unsigned};
 
-/// Type tag of FB_CAMMONITOR_UINT (ABI-2 §10.6, order of §10.3).
-pub const SL_TYPE_CAMMONITOR_UINT: u16 = 70;
-/// FB_CAMMONITOR_UDINT.
-pub const SL_TYPE_CAMMONITOR_UDINT: u16 = 71;
+crate::blocks::analog::analog_variants! {
+    FB_CAMMONITOR:
+        UINT SL_TYPE_CAMMONITOR_UINT = 70 => FB_CAMMONITOR_UINT[u16, 2, 4], UDINT SL_TYPE_CAMMONITOR_UDINT = 71 => FB_CAMMONITOR_UDINT[u32, 6, 0]
+}
 
 /// Option: "Pendulum Mode"; clear = "Excentric Mode".
 pub const SL_OPT_CAMMONITOR_PENDULUM: u32 = 1 << 8;
@@ -325,11 +325,6 @@ crate::base::layout::block_struct! {
         "Text ID of the message of the current ERROR, or of a refused configuration in STOP; 0 = none.",
         "Message parameter 2.", "Message parameter 3."
 }
-
-/// FB CAMMONITOR, UINT variant.
-pub type FB_CAMMONITOR_UINT = FB_CAMMONITOR<u16, 2, 4>;
-/// FB CAMMONITOR, UDINT variant.
-pub type FB_CAMMONITOR_UDINT = FB_CAMMONITOR<u32, 6, 0>;
 
 // The ABI-2 §11.13 numbers of the two layouts (the §10.2 rule itself is checked for every
 // registered analog type in registry.rs).
