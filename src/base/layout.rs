@@ -65,6 +65,39 @@ macro_rules! block_struct {
             pub stPrivate: $private,
         }
     };
+    // A block whose own fields end at its private state (the PLCopen SF_ blocks:
+    // `private 24: SL_SF_PRIVATE, 40`, the offset, type and size of the private state);
+    // `zeroed()` and `Default` from [`Zeroed`].
+    ($(#[doc = $doc:literal])* $name:ident {
+        $($(#[doc = $fd:expr])* pub $f:ident: $ft:ty,)*
+    } private $po:literal: $private:ty, $bytes:literal) => {
+        $(#[doc = $doc])*
+        #[repr(C)]
+        #[derive(Clone, Copy, Debug, PartialEq, Eq)]
+        #[allow(non_snake_case, non_camel_case_types)]
+        pub struct $name {
+            $($(#[doc = $fd])* pub $f: $ft,)*
+            #[doc = concat!(" Offset ", $po, ". Private state, ", $bytes, " bytes: never write it.")]
+            pub stPrivate: $private,
+        }
+
+        impl $name {
+            /// An all-zero instance (valid: it initialises itself on the first call).
+            pub const fn zeroed() -> Self {
+                use $crate::base::layout::Zeroed;
+                Self {
+                    $($f: <$ft as Zeroed>::ZERO,)*
+                    stPrivate: <$private as Zeroed>::ZERO,
+                }
+            }
+        }
+
+        impl Default for $name {
+            fn default() -> Self {
+                Self::zeroed()
+            }
+        }
+    };
     // ABI-2 §10.4: the info data of the blocks with a diag message (analog, motion) —
     // nState, nDiag, the message's Text ID and parameters 2 and 3, the private state — at
     // offsets relative to the info base ("Info + N"), the same for every width. After the

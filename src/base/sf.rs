@@ -15,6 +15,7 @@
 
 use super::bools::{self, Edge};
 use super::header::{param_crc, F_RESTART_PREV, F_TIME_VALID, SL_PRIVATE_HEADER};
+use super::layout::Zeroed;
 use super::time;
 use crate::base::types::*;
 
@@ -171,16 +172,6 @@ crate::base::layout::private_struct! {
         /// Reserved.
         pub aReserved: [u8; 3],
     }
-}
-
-impl SL_SF_PRIVATE {
-    /// All zero.
-    pub const ZERO: Self = Self {
-        stHeader: SL_PRIVATE_HEADER::ZERO,
-        adwTime: [0; 2],
-        nGroupHalt: 0,
-        aReserved: [0; 3],
-    };
 }
 
 /// The constant inputs of an `SF_` block: the profile and up to two monitored times.
