@@ -2,8 +2,8 @@
 //! info data every TwinSAFE block ends with (`block_struct!`) and the common head of every
 //! private state (`private_struct!`). Both are `*_struct` macros: build.rs writes each
 //! invocation out as plain Rust for cbindgen (`build_support/expand.rs`), so the header
-//! shows literal declarations. [`Zeroed`] gives the all-zero value of a generic struct
-//! (whose reserved gaps have no `Default`) in a `const fn`.
+//! shows literal declarations. [`Zeroed`] gives the all-zero value of a struct whose
+//! arrays have no `Default` (generic or longer than 32) in a `const fn` (`zeroed_struct!`).
 
 use core::marker::PhantomData;
 
@@ -210,3 +210,32 @@ macro_rules! private_struct {
     };
 }
 pub(crate) use private_struct;
+
+/// Declares a C struct whose all-zero value is its `Default` (arrays longer than 32 bytes
+/// have no derived one): `#[repr(C)]`, the derives, the fields, [`Zeroed`] and `Default`.
+macro_rules! zeroed_struct {
+    ($(#[doc = $doc:literal])* $name:ident {
+        $($(#[doc = $fd:literal])* pub $f:ident: $ft:ty,)*
+    }) => {
+        $(#[doc = $doc])*
+        #[repr(C)]
+        #[derive(Clone, Copy, Debug, PartialEq, Eq)]
+        #[allow(non_snake_case, non_camel_case_types)]
+        pub struct $name {
+            $($(#[doc = $fd])* pub $f: $ft,)*
+        }
+
+        impl $crate::base::layout::Zeroed for $name {
+            const ZERO: Self = Self {
+                $($f: <$ft as $crate::base::layout::Zeroed>::ZERO,)*
+            };
+        }
+
+        impl Default for $name {
+            fn default() -> Self {
+                <Self as $crate::base::layout::Zeroed>::ZERO
+            }
+        }
+    };
+}
+pub(crate) use zeroed_struct;
