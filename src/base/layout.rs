@@ -107,6 +107,26 @@ macro_rules! block_struct {
         $crate::base::layout::block_struct!(@info
             [$(#[doc = $doc])* #[derive(Default)]] $name [] { $($body)* } $($info)*);
     };
+    // ABI-2 §10.2: the head of an analog block without BOOL inputs (16 reserved bytes,
+    // bRun, bErrAck, 6 reserved bytes up to the analog input base 24), written as
+    // `no_bool_inputs;` at the start of the fields.
+    ($(#[doc = $doc:literal])* $name:ident [$($gen:tt)*] { no_bool_inputs; $($rest:tt)* }
+     $($tail:tt)*) => {
+        $crate::base::layout::block_struct! {
+            $(#[doc = $doc])*
+            $name [$($gen)*] {
+                /// Offset 0. Reserved, keep 0 (no BOOL inputs).
+                pub aReserved0: [u8; 16],
+                /// Offset 16. FbRun of the owning group: TRUE = the block executes.
+                pub bRun: $crate::base::types::SL_BOOL,
+                /// Offset 17. ErrAck of the owning group.
+                pub bErrAck: $crate::base::types::SL_BOOL,
+                /// Offset 18. Reserved, keep 0.
+                pub aReserved1: [u8; 6],
+                $($rest)*
+            } $($tail)*
+        }
+    };
     // Generic over the signal type(s) `$t` with reserved gaps of lengths `$c`
     // (`FB_SPEED[T: Analog; P1, P2]`, every bound implying [`Zeroed`] where a field has that type): no `Default` derive; `zeroed()` and `Default` from
     // [`Zeroed`] instead.

@@ -181,16 +181,9 @@ crate::base::layout::block_struct! {
     /// FB ADD / SUB / MUL instance (ABI-2 §11.2). `P1` and `P2` are the reserved bytes that
     /// make the 16- and 32-bit layouts differ (after the parameters, after AnalogOut).
     FB_ARITH[O: ArithOp, T: Analog; P1, P2] {
+        no_bool_inputs;
         /// The operation (no bytes).
         pub _op: PhantomData<O>,
-        /// Offset 0. Reserved, keep 0 (no BOOL inputs).
-        pub aReserved0: [u8; 16],
-        /// Offset 16. FbRun of the owning group: TRUE = the block executes.
-        pub bRun: SL_BOOL,
-        /// Offset 17. ErrAck of the owning group.
-        pub bErrAck: SL_BOOL,
-        /// Offset 18. Reserved, keep 0.
-        pub aReserved1: [u8; 6],
         /// At the analog input base 24: AnalogIn1 (active bit 8, required).
         pub nAnalogIn1: T,
         /// At 24 + W: AnalogIn2 (active bit 9, required).
@@ -217,14 +210,7 @@ crate::base::layout::block_struct! {
 crate::base::layout::block_struct! {
     /// FB DIV instance (ABI-2 §11.2): as [`FB_ARITH`] with `nRounding` before `wInputActive`.
     FB_DIV[T: Analog; P1, P2] {
-        /// Offset 0. Reserved, keep 0 (no BOOL inputs).
-        pub aReserved0: [u8; 16],
-        /// Offset 16. FbRun of the owning group: TRUE = the block executes.
-        pub bRun: SL_BOOL,
-        /// Offset 17. ErrAck of the owning group.
-        pub bErrAck: SL_BOOL,
-        /// Offset 18. Reserved, keep 0.
-        pub aReserved1: [u8; 6],
+        no_bool_inputs;
         /// At the analog input base 24: AnalogIn1, the dividend (active bit 8, required).
         pub nAnalogIn1: T,
         /// At 24 + W: AnalogIn2, the divisor (active bit 9, required); 0 gives 0, no error.

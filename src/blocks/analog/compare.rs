@@ -55,14 +55,7 @@ crate::base::layout::block_struct! {
     /// CompIn5) and `P2` (after CompOut) are the reserved gaps that make the 16- and 32-bit
     /// layouts differ.
     FB_COMPARE[T: Analog; P1, P2] {
-        /// Offset 0. Reserved, keep 0 (no BOOL inputs).
-        pub aReserved0: [u8; 16],
-        /// Offset 16. FbRun of the owning group: TRUE = the block executes.
-        pub bRun: SL_BOOL,
-        /// Offset 17. ErrAck of the owning group.
-        pub bErrAck: SL_BOOL,
-        /// Offset 18. Reserved, keep 0.
-        pub aReserved1: [u8; 6],
+        no_bool_inputs;
         /// At the analog input base 24: CompIn1 (active bit 8).
         pub nCompIn1: T,
         /// At 24 + W: CompIn2 (active bit 9).

@@ -55,14 +55,7 @@ crate::base::layout::block_struct! {
     /// FB LIMIT instance (ABI-2 §11.4), generic over the signal type `T`; `P1` is the reserved
     /// gap after `wInputActive` that makes the 16- and 32-bit layouts differ.
     FB_LIMIT[T: Analog; P1] {
-        /// Offset 0. Reserved, keep 0 (no BOOL inputs).
-        pub aReserved0: [u8; 16],
-        /// Offset 16. FbRun of the owning group: TRUE = the block executes.
-        pub bRun: SL_BOOL,
-        /// Offset 17. ErrAck of the owning group.
-        pub bErrAck: SL_BOOL,
-        /// Offset 18. Reserved, keep 0.
-        pub aReserved1: [u8; 6],
+        no_bool_inputs;
         /// At the analog input base 24: AnalogIn, the value checked (active bit 8, required).
         pub nAnalogIn: T,
         /// At 24 + W: MinValue, the minimum when active bit 9 is set.

@@ -87,14 +87,7 @@ crate::base::layout::block_struct! {
     /// the scaling parameters (ABI-2 §10.3); `P1` (after AnalogIn) and `P2` (after AnalogOut)
     /// are the reserved gaps that make the 16- and 32-bit layouts differ.
     FB_SCALE[T: Analog, T32: Analog; P1, P2] {
-        /// Offset 0. Reserved, keep 0 (no BOOL inputs).
-        pub aReserved0: [u8; 16],
-        /// Offset 16. FbRun of the owning group: TRUE = the block executes.
-        pub bRun: SL_BOOL,
-        /// Offset 17. ErrAck of the owning group.
-        pub bErrAck: SL_BOOL,
-        /// Offset 18. Reserved, keep 0.
-        pub aReserved1: [u8; 6],
+        no_bool_inputs;
         /// Offset 24. AnalogIn, the value scaled (active bit 8, required).
         pub nAnalogIn: T,
         /// Reserved up to 28 (16-bit: 2 bytes, 32-bit: none).

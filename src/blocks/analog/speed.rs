@@ -64,14 +64,7 @@ crate::base::layout::block_struct! {
     /// FB SPEED instance (ABI-2 §11.7), generic over the signal type `T`; `P1` (after Position)
     /// and `P2` (after Speed) are the reserved gaps that make the 16- and 32-bit layouts differ.
     FB_SPEED[T: Analog; P1, P2] {
-        /// Offset 0. Reserved, keep 0 (no BOOL inputs).
-        pub aReserved0: [u8; 16],
-        /// Offset 16. FbRun of the owning group: TRUE = the block executes.
-        pub bRun: SL_BOOL,
-        /// Offset 17. ErrAck of the owning group.
-        pub bErrAck: SL_BOOL,
-        /// Offset 18. Reserved, keep 0.
-        pub aReserved1: [u8; 6],
+        no_bool_inputs;
         /// Offset 24. Position, the input the speed is computed from (active bit 8, required).
         pub nPosition: T,
         /// Reserved up to 28 (16-bit: 2 bytes, 32-bit: none).
