@@ -105,7 +105,7 @@ macro_rules! block_struct {
     // nDiagTextId, dwDiagPar2 and dwDiagPar3. Non-generic.
     ($(#[doc = $doc:literal])* $name:ident { $($body:tt)* } info $($info:tt)*) => {
         $crate::base::layout::block_struct!(@info
-            [$(#[doc = $doc])* #[derive(Default)]] $name [] { $($body)* } $($info)*);
+            [$(#[doc = $doc])* #[derive(Default)]] $name [] { $($body)* } $($info)* {});
     };
     // ABI-2 §10.2: the head of an analog block without BOOL inputs (16 reserved bytes,
     // bRun, bErrAck, 6 reserved bytes up to the analog input base 24), written as
@@ -128,14 +128,18 @@ macro_rules! block_struct {
         }
     };
     // Generic over the signal type(s) `$t` with reserved gaps of lengths `$c`
-    // (`FB_SPEED[T: Analog; P1, P2]`, every bound implying [`Zeroed`] where a field has that type): no `Default` derive; `zeroed()` and `Default` from
-    // [`Zeroed`] instead.
+    // (`FB_SPEED[T: Analog; P1, P2]`, each bound implying [`Zeroed`] where a field has the
+    // type): no `Default` derive, `zeroed()` and `Default` from [`Zeroed`] instead. After
+    // the docs, `; pub _op: PhantomData<O>` is a zero-sized field after the private state
+    // (FB_ARITH's operation: where it always was, for the debug info abidiff reads).
     ($(#[doc = $doc:literal])* $name:ident [$($t:ident: $bound:path),*; $($c:ident),*] {
         $($(#[doc = $fd:literal])* pub $f:ident: $ft:ty,)*
-    } info [$r:ident, $q:ident] $private:ty, $bytes:literal: $($info:tt)*) => {
+    } info [$r:ident, $q:ident] $private:ty, $bytes:literal:
+        $s:literal, $d:literal, $x:literal, $p:literal, $o:literal
+        $(; $(#[doc = $zd:literal])* pub $z:ident: $zt:ty)?) => {
         $crate::base::layout::block_struct!(@info [$(#[doc = $doc])*]
             $name [$($t,)* $(const $c: usize),*] { $($(#[doc = $fd])* pub $f: $ft,)* }
-            [$r, $q] $private, $bytes: $($info)*);
+            [$r, $q] $private, $bytes: $s, $d, $x, $p, $o { $($(#[doc = $zd])* pub $z: $zt,)? });
 
         impl<$($t: $bound,)* $(const $c: usize),*> $name<$($t,)* $($c),*> {
             /// An all-zero instance (valid: it initialises itself on the first cycle,
@@ -152,6 +156,7 @@ macro_rules! block_struct {
                     dwDiagPar2: 0,
                     dwDiagPar3: 0,
                     stPrivate: <$private as Zeroed>::ZERO,
+                    $($z: <$zt as Zeroed>::ZERO,)?
                 }
             }
         }
@@ -164,7 +169,7 @@ macro_rules! block_struct {
     };
     (@info [$($attr:tt)*] $name:ident [$($gen:tt)*] { $($body:tt)* }
      [$r:ident, $q:ident] $private:ty, $bytes:literal:
-     $s:literal, $d:literal, $x:literal, $p:literal, $o:literal) => {
+     $s:literal, $d:literal, $x:literal, $p:literal, $o:literal { $($after:tt)* }) => {
         $($attr)*
         #[repr(C)]
         #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -187,6 +192,7 @@ macro_rules! block_struct {
             pub dwDiagPar3: u32,
             #[doc = concat!(" Info + 16: private state, ", $bytes, ": never write it.")]
             pub stPrivate: $private,
+            $($after)*
         }
     };
 }

@@ -182,8 +182,6 @@ crate::base::layout::block_struct! {
     /// make the 16- and 32-bit layouts differ (after the parameters, after AnalogOut).
     FB_ARITH[O: ArithOp, T: Analog; P1, P2] {
         no_bool_inputs;
-        /// The operation (no bytes).
-        pub _op: PhantomData<O>,
         /// At the analog input base 24: AnalogIn1 (active bit 8, required).
         pub nAnalogIn1: T,
         /// At 24 + W: AnalogIn2 (active bit 9, required).
@@ -204,7 +202,9 @@ crate::base::layout::block_struct! {
         "the manual's status value (RUN, STOP, ERROR, RESET).",
         "diag value (1 underflow, 2 overflow) + library bits 13-15.",
         "Text ID of the latched diag message (0x4080, 0x4081), 0 = none.",
-        "message parameter 2 (AnalogIn1 as a 32-bit pattern).", "message parameter 3 (AnalogIn2)."
+        "message parameter 2 (AnalogIn1 as a 32-bit pattern).", "message parameter 3 (AnalogIn2).";
+    /// The operation (no bytes).
+    pub _op: PhantomData<O>
 }
 
 crate::base::layout::block_struct! {
