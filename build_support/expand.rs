@@ -1,10 +1,11 @@
-//! Expands the crate's `*_struct!` macros for cbindgen, which reads the sources literally
-//! and does not expand macros: a family of blocks whose structs have one shape declares it
-//! once as a `macro_rules!` whose name ends in `_struct`, and every invocation of it is
-//! written out here as plain Rust for cbindgen (`Builder::with_src`), next to the crate.
+//! Expands the crate's `*_struct!` (and `*_variants!`) macros for cbindgen, which reads the
+//! sources literally and does not expand macros: a family of blocks whose structs have one
+//! shape declares it once as a `macro_rules!` whose name ends in `_struct` (`_variants`
+//! for the tags and aliases of generic variants), and every invocation of it is written
+//! out here as plain Rust for cbindgen (`Builder::with_src`), next to the crate.
 //!
 //! This is a small `macro_rules!` interpreter for what those macros use: one or more arms;
-//! fragments `ident`, `literal`, `tt`, `ty` (one group or a path with generic arguments),
+//! fragments `ident`, `literal`, `tt`, `ty` (one group or a path with generic arguments), `path`,
 //! `expr` (up to the next `,` or `;`), `meta` (the rest of the group); repetitions `$(…)*`,
 //! `$(…),*`, `+`, `?`; `$crate`; `concat!` of literals and `stringify!` of an ident (how a macro builds a doc string
 //! such as `Offset 8.`). Doc comments become `#[doc = "…"]` attributes, as rustc reads
@@ -203,9 +204,9 @@ fn fragment(frag: &str, input: &[Tok]) -> Option<usize> {
                 .position(|t| matches!(t, Tok::Punct(',' | ';', _)))
                 .unwrap_or(input.len()),
         ),
-        "ty" => {
+        "ty" | "path" => {
             if matches!(first, Tok::Group(..)) {
-                return Some(1);
+                return (frag == "ty").then_some(1);
             }
             let mut n = 0;
             loop {
@@ -433,7 +434,11 @@ fn print(toks: &[Tok], out: &mut String) {
     }
 }
 
-/// The arms of every `macro_rules! *_struct` in `sources`.
+/// The macros written out for cbindgen, by the end of their names: `*_struct` declare
+/// structs, `*_variants` the type tags and type aliases of a generic block's variants.
+const EXPANDED: [&str; 2] = ["_struct", "_variants"];
+
+/// The arms of every `macro_rules! *_struct` (or `*_variants`) in `sources`.
 type Arms = Vec<(Vec<Pat>, Vec<Tok>)>;
 
 fn definitions(sources: &[String]) -> HashMap<String, Arms> {
@@ -448,7 +453,7 @@ fn definitions(sources: &[String]) -> HashMap<String, Arms> {
                 .take_while(|c| c.is_alphanumeric() || *c == '_')
                 .collect();
             rest = after;
-            if !name.ends_with("_struct") {
+            if !EXPANDED.iter().any(|s| name.ends_with(s)) {
                 continue;
             }
             let brace = after.find('{').expect("macro body");
@@ -472,19 +477,89 @@ fn definitions(sources: &[String]) -> HashMap<String, Arms> {
     defs
 }
 
+/// The byte ranges of the bodies of every `macro_rules!` in `text`: an invocation written
+/// there is part of a definition (its caller's expansion reaches it), not an item.
+fn definition_spans(text: &str) -> Vec<(usize, usize)> {
+    let mut spans = Vec::new();
+    let mut from = 0;
+    while let Some(p) = text[from..].find("macro_rules!") {
+        let start = from + p;
+        let brace = start + text[start..].find('{').expect("macro body");
+        let (_, end) = tokenize(text, brace + 1, Some('}'));
+        spans.push((start, end));
+        from = end;
+    }
+    spans
+}
+
+/// `name!` applied to `args`, with every `*_struct!` invocation its expansion makes expanded
+/// in turn (a family's macro may declare its struct through the core's).
+fn expand_call(defs: &HashMap<String, Arms>, name: &str, args: &[Tok]) -> Vec<Tok> {
+    let expanded = defs[name]
+        .iter()
+        .find_map(|(pat, body)| {
+            let mut binds = HashMap::new();
+            (match_seq(pat, args, &mut binds)? == args.len()).then(|| {
+                let mut toks = Vec::new();
+                transcribe(body, &binds, &mut toks);
+                toks
+            })
+        })
+        .unwrap_or_else(|| {
+            let mut text = String::new();
+            print(&args[..args.len().min(40)], &mut text);
+            panic!("{name}!: no arm matches the invocation {text}…")
+        });
+    expand_nested(defs, expanded)
+}
+
+/// Replaces each `path::name!(…)` of a `*_struct` macro in `toks` by its expansion; any
+/// other macro call is left for cbindgen (which reads only items).
+fn expand_nested(defs: &HashMap<String, Arms>, toks: Vec<Tok>) -> Vec<Tok> {
+    let mut out: Vec<Tok> = Vec::new();
+    let mut it = toks.into_iter().peekable();
+    while let Some(t) = it.next() {
+        match t {
+            Tok::Ident(ref n)
+                if defs.contains_key(n) && matches!(it.peek(), Some(Tok::Punct('!', _))) =>
+            {
+                it.next();
+                let Some(Tok::Group(_, args)) = it.next() else {
+                    panic!("{n}! without arguments");
+                };
+                // The call's path (`crate::base::block::`) goes with it.
+                while let [.., Tok::Ident(_), Tok::Punct(':', _), Tok::Punct(':', _)] = &out[..] {
+                    out.truncate(out.len() - 3);
+                }
+                out.extend(expand_call(defs, n, &args));
+                // A call in item position ends with `;` after `(…)` or `[…]`.
+                if matches!(it.peek(), Some(Tok::Punct(';', _))) {
+                    it.next();
+                }
+            }
+            Tok::Group(d, inner) => out.push(Tok::Group(d, expand_nested(defs, inner))),
+            t => out.push(t),
+        }
+    }
+    out
+}
+
 /// Every invocation of a `*_struct!` macro in `sources`, expanded, as one Rust file.
 pub fn expand_struct_macros(sources: &[String]) -> String {
     let defs = definitions(sources);
     let mut out =
         String::from("// Generated by build.rs (build_support/expand.rs) for cbindgen.\n");
     for text in sources {
-        for (name, arms) in &defs {
+        let spans = definition_spans(text);
+        let mut calls = Vec::new();
+        for name in defs.keys() {
             let call = format!("{name}!");
             for (pos, _) in text.match_indices(&call) {
                 let line_start = text[..pos].rfind('\n').map_or(0, |n| n + 1);
                 let before = text[..pos].chars().next_back();
                 if text[line_start..pos].trim_start().starts_with("//")
                     || before.is_some_and(|c| c.is_alphanumeric() || c == '_' || c == '`')
+                    || spans.iter().any(|&(s, e)| s <= pos && pos < e)
                 {
                     continue;
                 }
@@ -493,21 +568,15 @@ pub fn expand_struct_macros(sources: &[String]) -> String {
                 let Some(d @ ('(' | '[' | '{')) = text[open..].chars().next() else {
                     continue;
                 };
-                let (args, _) = tokenize(text, open + 1, Some(close_of(d)));
-                let expanded = arms
-                    .iter()
-                    .find_map(|(pat, body)| {
-                        let mut binds = HashMap::new();
-                        (match_seq(pat, &args, &mut binds)? == args.len()).then(|| {
-                            let mut toks = Vec::new();
-                            transcribe(body, &binds, &mut toks);
-                            toks
-                        })
-                    })
-                    .unwrap_or_else(|| panic!("{name}!: no arm matches an invocation"));
-                print(&fold_concat(expanded), &mut out);
-                out.push('\n');
+                calls.push((pos, name, open, d));
             }
+        }
+        // In the order of the file (a stable output).
+        calls.sort();
+        for (_, name, open, d) in calls {
+            let (args, _) = tokenize(text, open + 1, Some(close_of(d)));
+            print(&fold_concat(expand_call(&defs, name, &args)), &mut out);
+            out.push('\n');
         }
     }
     out

@@ -25,6 +25,286 @@
 #define SL_VERSION_PATCH 0
 
 /*
+ Type tag of FB_ADD_INT.
+ */
+#define SL_TYPE_ADD_INT 16
+
+/*
+ Type tag of FB_ADD_UINT.
+ */
+#define SL_TYPE_ADD_UINT 17
+
+/*
+ Type tag of FB_ADD_DINT.
+ */
+#define SL_TYPE_ADD_DINT 18
+
+/*
+ Type tag of FB_ADD_UDINT.
+ */
+#define SL_TYPE_ADD_UDINT 19
+
+/*
+ Type tag of FB_SUB_INT.
+ */
+#define SL_TYPE_SUB_INT 20
+
+/*
+ Type tag of FB_SUB_UINT.
+ */
+#define SL_TYPE_SUB_UINT 21
+
+/*
+ Type tag of FB_SUB_DINT.
+ */
+#define SL_TYPE_SUB_DINT 22
+
+/*
+ Type tag of FB_SUB_UDINT.
+ */
+#define SL_TYPE_SUB_UDINT 23
+
+/*
+ Type tag of FB_MUL_INT.
+ */
+#define SL_TYPE_MUL_INT 24
+
+/*
+ Type tag of FB_MUL_UINT.
+ */
+#define SL_TYPE_MUL_UINT 25
+
+/*
+ Type tag of FB_MUL_DINT.
+ */
+#define SL_TYPE_MUL_DINT 26
+
+/*
+ Type tag of FB_MUL_UDINT.
+ */
+#define SL_TYPE_MUL_UDINT 27
+
+/*
+ Type tag of FB_DIV_INT.
+ */
+#define SL_TYPE_DIV_INT 28
+
+/*
+ Type tag of FB_DIV_UINT.
+ */
+#define SL_TYPE_DIV_UINT 29
+
+/*
+ Type tag of FB_DIV_DINT.
+ */
+#define SL_TYPE_DIV_DINT 30
+
+/*
+ Type tag of FB_DIV_UDINT.
+ */
+#define SL_TYPE_DIV_UDINT 31
+
+/*
+ Type tag of FB_COMPARE_INT.
+ */
+#define SL_TYPE_COMPARE_INT 32
+
+/*
+ Type tag of FB_COMPARE_UINT.
+ */
+#define SL_TYPE_COMPARE_UINT 33
+
+/*
+ Type tag of FB_COMPARE_DINT.
+ */
+#define SL_TYPE_COMPARE_DINT 34
+
+/*
+ Type tag of FB_COMPARE_UDINT.
+ */
+#define SL_TYPE_COMPARE_UDINT 35
+
+/*
+ Type tag of FB_COUNTER_INT.
+ */
+#define SL_TYPE_COUNTER_INT 56
+
+/*
+ Type tag of FB_COUNTER_UINT.
+ */
+#define SL_TYPE_COUNTER_UINT 57
+
+/*
+ Type tag of FB_COUNTER_DINT.
+ */
+#define SL_TYPE_COUNTER_DINT 58
+
+/*
+ Type tag of FB_COUNTER_UDINT.
+ */
+#define SL_TYPE_COUNTER_UDINT 59
+
+/*
+ Type tag of FB_ENVELOPE_INT.
+ */
+#define SL_TYPE_ENVELOPE_INT 52
+
+/*
+ Type tag of FB_ENVELOPE_UINT.
+ */
+#define SL_TYPE_ENVELOPE_UINT 53
+
+/*
+ Type tag of FB_ENVELOPE_DINT.
+ */
+#define SL_TYPE_ENVELOPE_DINT 54
+
+/*
+ Type tag of FB_ENVELOPE_UDINT.
+ */
+#define SL_TYPE_ENVELOPE_UDINT 55
+
+/*
+ Type tag of FB_LIMIT_INT.
+ */
+#define SL_TYPE_LIMIT_INT 36
+
+/*
+ Type tag of FB_LIMIT_UINT.
+ */
+#define SL_TYPE_LIMIT_UINT 37
+
+/*
+ Type tag of FB_LIMIT_DINT.
+ */
+#define SL_TYPE_LIMIT_DINT 38
+
+/*
+ Type tag of FB_LIMIT_UDINT.
+ */
+#define SL_TYPE_LIMIT_UDINT 39
+
+/*
+ Type tag of FB_LOADSENSING_INT.
+ */
+#define SL_TYPE_LOADSENSING_INT 48
+
+/*
+ Type tag of FB_LOADSENSING_UINT.
+ */
+#define SL_TYPE_LOADSENSING_UINT 49
+
+/*
+ Type tag of FB_LOADSENSING_DINT.
+ */
+#define SL_TYPE_LOADSENSING_DINT 50
+
+/*
+ Type tag of FB_LOADSENSING_UDINT.
+ */
+#define SL_TYPE_LOADSENSING_UDINT 51
+
+/*
+ Type tag of FB_SCALE_INT.
+ */
+#define SL_TYPE_SCALE_INT 40
+
+/*
+ Type tag of FB_SCALE_UINT.
+ */
+#define SL_TYPE_SCALE_UINT 41
+
+/*
+ Type tag of FB_SCALE_DINT.
+ */
+#define SL_TYPE_SCALE_DINT 42
+
+/*
+ Type tag of FB_SCALE_UDINT.
+ */
+#define SL_TYPE_SCALE_UDINT 43
+
+/*
+ Type tag of FB_SLI_INT.
+ */
+#define SL_TYPE_SLI_INT 60
+
+/*
+ Type tag of FB_SLI_UINT.
+ */
+#define SL_TYPE_SLI_UINT 61
+
+/*
+ Type tag of FB_SLI_DINT.
+ */
+#define SL_TYPE_SLI_DINT 62
+
+/*
+ Type tag of FB_SLI_UDINT.
+ */
+#define SL_TYPE_SLI_UDINT 63
+
+/*
+ Type tag of FB_SLI2_INT.
+ */
+#define SL_TYPE_SLI2_INT 64
+
+/*
+ Type tag of FB_SLI2_UINT.
+ */
+#define SL_TYPE_SLI2_UINT 65
+
+/*
+ Type tag of FB_SLI2_DINT.
+ */
+#define SL_TYPE_SLI2_DINT 66
+
+/*
+ Type tag of FB_SLI2_UDINT.
+ */
+#define SL_TYPE_SLI2_UDINT 67
+
+/*
+ Type tag of FB_SPEED_INT.
+ */
+#define SL_TYPE_SPEED_INT 44
+
+/*
+ Type tag of FB_SPEED_UINT.
+ */
+#define SL_TYPE_SPEED_UINT 45
+
+/*
+ Type tag of FB_SPEED_DINT.
+ */
+#define SL_TYPE_SPEED_DINT 46
+
+/*
+ Type tag of FB_SPEED_UDINT.
+ */
+#define SL_TYPE_SPEED_UDINT 47
+
+/*
+ Type tag of FB_VIOLATIONCOUNTER_UINT.
+ */
+#define SL_TYPE_VIOLATIONCOUNTER_UINT 68
+
+/*
+ Type tag of FB_VIOLATIONCOUNTER_UDINT.
+ */
+#define SL_TYPE_VIOLATIONCOUNTER_UDINT 69
+
+/*
+ Type tag of FB_CAMMONITOR_UINT.
+ */
+#define SL_TYPE_CAMMONITOR_UINT 70
+
+/*
+ Type tag of FB_CAMMONITOR_UDINT.
+ */
+#define SL_TYPE_CAMMONITOR_UDINT 71
+
+/*
  First type tag of the PLCopen family.
  */
 #define SF_TAG_BASE 512
@@ -346,86 +626,6 @@
 #define SL_DIAG_VALUE_OVERFLOW 2
 
 /*
- Type tags of the arithmetic blocks (ABI-2 §10.6: sequential from 16).
- */
-#define SL_TYPE_ADD_INT 16
-
-/*
- FB_ADD_UINT.
- */
-#define SL_TYPE_ADD_UINT 17
-
-/*
- FB_ADD_DINT.
- */
-#define SL_TYPE_ADD_DINT 18
-
-/*
- FB_ADD_UDINT.
- */
-#define SL_TYPE_ADD_UDINT 19
-
-/*
- FB_SUB_INT.
- */
-#define SL_TYPE_SUB_INT 20
-
-/*
- FB_SUB_UINT.
- */
-#define SL_TYPE_SUB_UINT 21
-
-/*
- FB_SUB_DINT.
- */
-#define SL_TYPE_SUB_DINT 22
-
-/*
- FB_SUB_UDINT.
- */
-#define SL_TYPE_SUB_UDINT 23
-
-/*
- FB_MUL_INT.
- */
-#define SL_TYPE_MUL_INT 24
-
-/*
- FB_MUL_UINT.
- */
-#define SL_TYPE_MUL_UINT 25
-
-/*
- FB_MUL_DINT.
- */
-#define SL_TYPE_MUL_DINT 26
-
-/*
- FB_MUL_UDINT.
- */
-#define SL_TYPE_MUL_UDINT 27
-
-/*
- FB_DIV_INT.
- */
-#define SL_TYPE_DIV_INT 28
-
-/*
- FB_DIV_UINT.
- */
-#define SL_TYPE_DIV_UINT 29
-
-/*
- FB_DIV_DINT.
- */
-#define SL_TYPE_DIV_DINT 30
-
-/*
- FB_DIV_UDINT.
- */
-#define SL_TYPE_DIV_UDINT 31
-
-/*
  `nRounding` Floor: toward −∞ (docs/semantics.md A2).
  */
 #define SL_ROUNDING_FLOOR 0
@@ -457,26 +657,6 @@
 #define ARITH_ACTIVE 768
 
 /*
- Type tag of FB_COMPARE_INT (ABI-2 §10.6: sequential from 16 in the order of §10.3).
- */
-#define SL_TYPE_COMPARE_INT 32
-
-/*
- FB_COMPARE_UINT.
- */
-#define SL_TYPE_COMPARE_UINT 33
-
-/*
- FB_COMPARE_DINT.
- */
-#define SL_TYPE_COMPARE_DINT 34
-
-/*
- FB_COMPARE_UDINT.
- */
-#define SL_TYPE_COMPARE_UDINT 35
-
-/*
  `nArchitecture` 1oo2: CompIn1 and CompIn2 must agree.
  */
 #define SL_ARCH_1OO2 2
@@ -492,26 +672,6 @@
 #define SL_ARCH_3OO5 5
 
 /*
- Type tag of FB_COUNTER_INT (ABI-2 §10.6: after the ten four-variant blocks of §10.3).
- */
-#define SL_TYPE_COUNTER_INT 56
-
-/*
- FB_COUNTER_UINT.
- */
-#define SL_TYPE_COUNTER_UINT 57
-
-/*
- FB_COUNTER_DINT.
- */
-#define SL_TYPE_COUNTER_DINT 58
-
-/*
- FB_COUNTER_UDINT.
- */
-#define SL_TYPE_COUNTER_UDINT 59
-
-/*
  Diag message "An underflow has occurred" (parameters: ActValue, smallest permitted value).
  */
 #define SL_TEXT_COUNTER_UNDERFLOW 0x40B8
@@ -525,26 +685,6 @@
  `wInputActive` bits of Reset, CountUp, CountDown (optional: an inactive input reads FALSE).
  */
 #define SL_COUNTER_ACTIVE_INPUTS 7
-
-/*
- Type tag of FB_ENVELOPE_INT (ABI-2 §10.6: sequential from 16 in the order of §10.3).
- */
-#define SL_TYPE_ENVELOPE_INT 52
-
-/*
- FB_ENVELOPE_UINT.
- */
-#define SL_TYPE_ENVELOPE_UINT 53
-
-/*
- FB_ENVELOPE_DINT.
- */
-#define SL_TYPE_ENVELOPE_DINT 54
-
-/*
- FB_ENVELOPE_UDINT.
- */
-#define SL_TYPE_ENVELOPE_UDINT 55
 
 /*
  State MONITOR (manual §4.32.2 "9.0"): SafeFunction fell, InValue outside the target
@@ -593,26 +733,6 @@
 #define SL_ENVELOPE_TIME_MAX 65535U
 
 /*
- Type tag of FB_LIMIT_INT (ABI-2 §10.6: sequential from 16 in the order of §10.3).
- */
-#define SL_TYPE_LIMIT_INT 36
-
-/*
- FB_LIMIT_UINT.
- */
-#define SL_TYPE_LIMIT_UINT 37
-
-/*
- FB_LIMIT_DINT.
- */
-#define SL_TYPE_LIMIT_DINT 38
-
-/*
- FB_LIMIT_UDINT.
- */
-#define SL_TYPE_LIMIT_UDINT 39
-
-/*
  Diag value 1: MinValue is greater than MaxValue.
  */
 #define SL_DIAG_LIMIT_MIN_ABOVE_MAX 1
@@ -636,26 +756,6 @@
  `wInputActive` bit of MaxValue: set = the input is the maximum, clear = `nMaximumValue`.
  */
 #define SL_LIMIT_ACTIVE_MAXVALUE (1 << 10)
-
-/*
- Type tag of FB_LOADSENSING_INT (ABI-2 §10.6: sequential from 16 in the order of §10.3).
- */
-#define SL_TYPE_LOADSENSING_INT 48
-
-/*
- FB_LOADSENSING_UINT.
- */
-#define SL_TYPE_LOADSENSING_UINT 49
-
-/*
- FB_LOADSENSING_DINT.
- */
-#define SL_TYPE_LOADSENSING_DINT 50
-
-/*
- FB_LOADSENSING_UDINT.
- */
-#define SL_TYPE_LOADSENSING_UDINT 51
 
 /*
  State INACTIVE (manual §4.25.2 "16.0"): Inactive is TRUE; Valid 0, Warning 0.
@@ -691,26 +791,6 @@
  `wInputActive` bit of AnalogInY (required).
  */
 #define SL_LOADSENSING_ACTIVE_ANALOGINY (1 << 9)
-
-/*
- Type tag of FB_SCALE_INT (ABI-2 §10.6: sequential from 16 in the order of §10.3).
- */
-#define SL_TYPE_SCALE_INT 40
-
-/*
- FB_SCALE_UINT.
- */
-#define SL_TYPE_SCALE_UINT 41
-
-/*
- FB_SCALE_DINT.
- */
-#define SL_TYPE_SCALE_DINT 42
-
-/*
- FB_SCALE_UDINT.
- */
-#define SL_TYPE_SCALE_UDINT 43
 
 /*
  `dwOptions`: "Multiplication First" FALSE — divide by `nDenominator` before multiplying
@@ -760,66 +840,6 @@
 #define SL_SCALE_NEGATE_ANALOGIN (1 << 8)
 
 /*
- Type tag of FB_SLI_INT (ABI-2 §10.6: sequential in the order of §10.3).
- */
-#define SL_TYPE_SLI_INT 60
-
-/*
- FB_SLI_UINT.
- */
-#define SL_TYPE_SLI_UINT 61
-
-/*
- FB_SLI_DINT.
- */
-#define SL_TYPE_SLI_DINT 62
-
-/*
- FB_SLI_UDINT.
- */
-#define SL_TYPE_SLI_UDINT 63
-
-/*
- Type tag of FB_SLI2_INT (ABI-2 §10.6: sequential in the order of §10.3).
- */
-#define SL_TYPE_SLI2_INT 64
-
-/*
- FB_SLI2_UINT.
- */
-#define SL_TYPE_SLI2_UINT 65
-
-/*
- FB_SLI2_DINT.
- */
-#define SL_TYPE_SLI2_DINT 66
-
-/*
- FB_SLI2_UDINT.
- */
-#define SL_TYPE_SLI2_UDINT 67
-
-/*
- Type tag of FB_SPEED_INT (ABI-2 §10.6: sequential from 16 in the order of §10.3).
- */
-#define SL_TYPE_SPEED_INT 44
-
-/*
- FB_SPEED_UINT.
- */
-#define SL_TYPE_SPEED_UINT 45
-
-/*
- FB_SPEED_DINT.
- */
-#define SL_TYPE_SPEED_DINT 46
-
-/*
- FB_SPEED_UDINT.
- */
-#define SL_TYPE_SPEED_UDINT 47
-
-/*
  `dwOptions`: "Overflow Check" — the position difference is taken modulo 2^W before the
  range check (a position counter wrapping at its type's end is no jump).
  */
@@ -839,16 +859,6 @@
  `wInputActive` bit of Position (required, the only bit).
  */
 #define SL_SPEED_ACTIVE_POSITION (1 << 8)
-
-/*
- Type tag of FB_VIOLATIONCOUNTER_UINT (ABI-2 §10.6, order of §10.3).
- */
-#define SL_TYPE_VIOLATIONCOUNTER_UINT 68
-
-/*
- FB_VIOLATIONCOUNTER_UDINT.
- */
-#define SL_TYPE_VIOLATIONCOUNTER_UDINT 69
 
 /*
  `wInputActive` of FB VIOLATIONCOUNTER: Input (bit 0) and Enable (bit 1), both required.
@@ -1191,16 +1201,6 @@
  Largest SAFEDRIVEFEEDBACK instance number of a feedback parameter ("instance (0-3)").
  */
 #define SL_ADVPOSMON_FEEDBACK_MAX 3
-
-/*
- Type tag of FB_CAMMONITOR_UINT (ABI-2 §10.6, order of §10.3).
- */
-#define SL_TYPE_CAMMONITOR_UINT 70
-
-/*
- FB_CAMMONITOR_UDINT.
- */
-#define SL_TYPE_CAMMONITOR_UDINT 71
 
 /*
  Option: "Pendulum Mode"; clear = "Excentric Mode".
@@ -2799,6 +2799,9 @@ typedef struct SL_FSOE_FRAME {
  Private state of FB_ESTOP and FB_MON (80 bytes). Never written by the user.
  */
 typedef struct SL_GUARD_PRIVATE {
+  /*
+   Common head.
+   */
   struct SL_PRIVATE_HEADER stHeader;
   /*
    Latched times in ms: discrepancy times of pairs 1-4, EDM1 and EDM2 reset times,
@@ -3342,6 +3345,9 @@ typedef struct SL_LOADSENSING_PRIVATE_UDINT {
  Private state of the combinational blocks (64 bytes). Never written by the user.
  */
 typedef struct SL_LOGIC_PRIVATE {
+  /*
+   Common head.
+   */
   struct SL_PRIVATE_HEADER stHeader;
   /*
    Reserved, 0.
@@ -3821,6 +3827,9 @@ typedef struct FB_DECOUPLE {
  Size: 32 bytes.
  */
 typedef struct SL_OPMODE_PRIVATE {
+  /*
+   Common head.
+   */
   struct SL_PRIVATE_HEADER stHeader;
   /*
    Latched tDiscTime in ms.
@@ -3976,6 +3985,9 @@ typedef struct FB_OPMODE {
  Size: 48 bytes.
  */
 typedef struct SL_TWOHAND_PRIVATE {
+  /*
+   Common head.
+   */
   struct SL_PRIVATE_HEADER stHeader;
   /*
    Latched times in ms: tDiscTime12, tDiscTime34, tDiscTimePairs, reserved.
@@ -4272,6 +4284,9 @@ typedef struct FB_MUTING {
  Size: 32 bytes.
  */
 typedef struct SL_EDM_PRIVATE {
+  /*
+   Common head.
+   */
   struct SL_PRIVATE_HEADER stHeader;
   /*
    Latched times in ms: switch-on, switch-off.
@@ -4364,6 +4379,9 @@ typedef struct FB_EDM {
  the header, guarded by its complement copy. Never written by the user.
  */
 typedef struct SL_FLIPFLOP_PRIVATE {
+  /*
+   Common head.
+   */
   struct SL_PRIVATE_HEADER stHeader;
   /*
    Reserved, 0.
@@ -7217,36 +7235,35 @@ typedef struct FB_SCALE_INT {
    */
   uint8_t aReserved5[6];
   /*
-   Offset 72. The manual's status value (RUN, STOP, ERROR, RESET).
+   Info + 0: The manual's status value (RUN, STOP, ERROR, RESET).
    */
   uint8_t nState;
   /*
-   Offset 73. Reserved.
+   Info + 1. Reserved.
    */
   uint8_t aReserved6[1];
   /*
-   Offset 74. Diag value (1 underflow, 2 overflow, 3 multiplication, 4 division) +
-   library bits 13-15.
+   Info + 2: Diag value (1 underflow, 2 overflow, 3 multiplication, 4 division) + library bits 13-15.
    */
   uint16_t nDiag;
   /*
-   Offset 76. Text ID of the latched diag message (0x40B0–0x40B3), 0 = none.
+   Info + 4: Text ID of the latched diag message (0x40B0–0x40B3), 0 = none.
    */
   uint16_t nDiagTextId;
   /*
-   Offset 78. Reserved.
+   Info + 6. Reserved.
    */
   uint8_t aReserved7[2];
   /*
-   Offset 80. Message parameter 2 (AnalogIn as a 32-bit pattern).
+   Info + 8: Message parameter 2 (AnalogIn as a 32-bit pattern).
    */
   uint32_t dwDiagPar2;
   /*
-   Offset 84. Message parameter 3 (always 0: "-" in the manual).
+   Info + 12: Message parameter 3 (always 0: "-" in the manual).
    */
   uint32_t dwDiagPar3;
   /*
-   Offset 88. Private state, 72 bytes: never write it.
+   Info + 16: private state, 72 bytes: never write it.
    */
   struct SL_SCALE_PRIVATE stPrivate;
 } FB_SCALE_INT;
@@ -7340,36 +7357,35 @@ typedef struct FB_SCALE_UINT {
    */
   uint8_t aReserved5[6];
   /*
-   Offset 72. The manual's status value (RUN, STOP, ERROR, RESET).
+   Info + 0: The manual's status value (RUN, STOP, ERROR, RESET).
    */
   uint8_t nState;
   /*
-   Offset 73. Reserved.
+   Info + 1. Reserved.
    */
   uint8_t aReserved6[1];
   /*
-   Offset 74. Diag value (1 underflow, 2 overflow, 3 multiplication, 4 division) +
-   library bits 13-15.
+   Info + 2: Diag value (1 underflow, 2 overflow, 3 multiplication, 4 division) + library bits 13-15.
    */
   uint16_t nDiag;
   /*
-   Offset 76. Text ID of the latched diag message (0x40B0–0x40B3), 0 = none.
+   Info + 4: Text ID of the latched diag message (0x40B0–0x40B3), 0 = none.
    */
   uint16_t nDiagTextId;
   /*
-   Offset 78. Reserved.
+   Info + 6. Reserved.
    */
   uint8_t aReserved7[2];
   /*
-   Offset 80. Message parameter 2 (AnalogIn as a 32-bit pattern).
+   Info + 8: Message parameter 2 (AnalogIn as a 32-bit pattern).
    */
   uint32_t dwDiagPar2;
   /*
-   Offset 84. Message parameter 3 (always 0: "-" in the manual).
+   Info + 12: Message parameter 3 (always 0: "-" in the manual).
    */
   uint32_t dwDiagPar3;
   /*
-   Offset 88. Private state, 72 bytes: never write it.
+   Info + 16: private state, 72 bytes: never write it.
    */
   struct SL_SCALE_PRIVATE stPrivate;
 } FB_SCALE_UINT;
@@ -7459,36 +7475,35 @@ typedef struct FB_SCALE_DINT {
    */
   uint8_t aReserved5[4];
   /*
-   Offset 72. The manual's status value (RUN, STOP, ERROR, RESET).
+   Info + 0: The manual's status value (RUN, STOP, ERROR, RESET).
    */
   uint8_t nState;
   /*
-   Offset 73. Reserved.
+   Info + 1. Reserved.
    */
   uint8_t aReserved6[1];
   /*
-   Offset 74. Diag value (1 underflow, 2 overflow, 3 multiplication, 4 division) +
-   library bits 13-15.
+   Info + 2: Diag value (1 underflow, 2 overflow, 3 multiplication, 4 division) + library bits 13-15.
    */
   uint16_t nDiag;
   /*
-   Offset 76. Text ID of the latched diag message (0x40B0–0x40B3), 0 = none.
+   Info + 4: Text ID of the latched diag message (0x40B0–0x40B3), 0 = none.
    */
   uint16_t nDiagTextId;
   /*
-   Offset 78. Reserved.
+   Info + 6. Reserved.
    */
   uint8_t aReserved7[2];
   /*
-   Offset 80. Message parameter 2 (AnalogIn as a 32-bit pattern).
+   Info + 8: Message parameter 2 (AnalogIn as a 32-bit pattern).
    */
   uint32_t dwDiagPar2;
   /*
-   Offset 84. Message parameter 3 (always 0: "-" in the manual).
+   Info + 12: Message parameter 3 (always 0: "-" in the manual).
    */
   uint32_t dwDiagPar3;
   /*
-   Offset 88. Private state, 72 bytes: never write it.
+   Info + 16: private state, 72 bytes: never write it.
    */
   struct SL_SCALE_PRIVATE stPrivate;
 } FB_SCALE_DINT;
@@ -7578,36 +7593,35 @@ typedef struct FB_SCALE_UDINT {
    */
   uint8_t aReserved5[4];
   /*
-   Offset 72. The manual's status value (RUN, STOP, ERROR, RESET).
+   Info + 0: The manual's status value (RUN, STOP, ERROR, RESET).
    */
   uint8_t nState;
   /*
-   Offset 73. Reserved.
+   Info + 1. Reserved.
    */
   uint8_t aReserved6[1];
   /*
-   Offset 74. Diag value (1 underflow, 2 overflow, 3 multiplication, 4 division) +
-   library bits 13-15.
+   Info + 2: Diag value (1 underflow, 2 overflow, 3 multiplication, 4 division) + library bits 13-15.
    */
   uint16_t nDiag;
   /*
-   Offset 76. Text ID of the latched diag message (0x40B0–0x40B3), 0 = none.
+   Info + 4: Text ID of the latched diag message (0x40B0–0x40B3), 0 = none.
    */
   uint16_t nDiagTextId;
   /*
-   Offset 78. Reserved.
+   Info + 6. Reserved.
    */
   uint8_t aReserved7[2];
   /*
-   Offset 80. Message parameter 2 (AnalogIn as a 32-bit pattern).
+   Info + 8: Message parameter 2 (AnalogIn as a 32-bit pattern).
    */
   uint32_t dwDiagPar2;
   /*
-   Offset 84. Message parameter 3 (always 0: "-" in the manual).
+   Info + 12: Message parameter 3 (always 0: "-" in the manual).
    */
   uint32_t dwDiagPar3;
   /*
-   Offset 88. Private state, 72 bytes: never write it.
+   Info + 16: private state, 72 bytes: never write it.
    */
   struct SL_SCALE_PRIVATE stPrivate;
 } FB_SCALE_UDINT;
@@ -7714,35 +7728,35 @@ typedef struct FB_SPEED_INT {
    */
   uint8_t aReserved5[6];
   /*
-   Offset 56. The manual's status value (RUN, STOP, ERROR, RESET).
+   Info + 0: The manual's status value (RUN, STOP, ERROR, RESET).
    */
   uint8_t nState;
   /*
-   Offset 57. Reserved.
+   Info + 1. Reserved.
    */
   uint8_t aReserved6[1];
   /*
-   Offset 58. Diag value (1 underflow, 2 overflow) + library bits 13-15.
+   Info + 2: Diag value (1 underflow, 2 overflow) + library bits 13-15.
    */
   uint16_t nDiag;
   /*
-   Offset 60. Text ID of the latched diag message (0x4088, 0x4089), 0 = none.
+   Info + 4: Text ID of the latched diag message (0x4088, 0x4089), 0 = none.
    */
   uint16_t nDiagTextId;
   /*
-   Offset 62. Reserved.
+   Info + 6. Reserved.
    */
   uint8_t aReserved7[2];
   /*
-   Offset 64. Message parameter 2 (current position as a 32-bit pattern).
+   Info + 8: Message parameter 2 (current position as a 32-bit pattern).
    */
   uint32_t dwDiagPar2;
   /*
-   Offset 68. Message parameter 3 (latched position).
+   Info + 12: Message parameter 3 (latched position).
    */
   uint32_t dwDiagPar3;
   /*
-   Offset 72. Private state, 56 bytes: never write it.
+   Info + 16: private state, 56 bytes: never write it.
    */
   struct SL_SPEED_PRIVATE stPrivate;
 } FB_SPEED_INT;
@@ -7810,35 +7824,35 @@ typedef struct FB_SPEED_UINT {
    */
   uint8_t aReserved5[6];
   /*
-   Offset 56. The manual's status value (RUN, STOP, ERROR, RESET).
+   Info + 0: The manual's status value (RUN, STOP, ERROR, RESET).
    */
   uint8_t nState;
   /*
-   Offset 57. Reserved.
+   Info + 1. Reserved.
    */
   uint8_t aReserved6[1];
   /*
-   Offset 58. Diag value (1 underflow, 2 overflow) + library bits 13-15.
+   Info + 2: Diag value (1 underflow, 2 overflow) + library bits 13-15.
    */
   uint16_t nDiag;
   /*
-   Offset 60. Text ID of the latched diag message (0x4088, 0x4089), 0 = none.
+   Info + 4: Text ID of the latched diag message (0x4088, 0x4089), 0 = none.
    */
   uint16_t nDiagTextId;
   /*
-   Offset 62. Reserved.
+   Info + 6. Reserved.
    */
   uint8_t aReserved7[2];
   /*
-   Offset 64. Message parameter 2 (current position as a 32-bit pattern).
+   Info + 8: Message parameter 2 (current position as a 32-bit pattern).
    */
   uint32_t dwDiagPar2;
   /*
-   Offset 68. Message parameter 3 (latched position).
+   Info + 12: Message parameter 3 (latched position).
    */
   uint32_t dwDiagPar3;
   /*
-   Offset 72. Private state, 56 bytes: never write it.
+   Info + 16: private state, 56 bytes: never write it.
    */
   struct SL_SPEED_PRIVATE stPrivate;
 } FB_SPEED_UINT;
@@ -7902,35 +7916,35 @@ typedef struct FB_SPEED_DINT {
    */
   uint8_t aReserved5[4];
   /*
-   Offset 56. The manual's status value (RUN, STOP, ERROR, RESET).
+   Info + 0: The manual's status value (RUN, STOP, ERROR, RESET).
    */
   uint8_t nState;
   /*
-   Offset 57. Reserved.
+   Info + 1. Reserved.
    */
   uint8_t aReserved6[1];
   /*
-   Offset 58. Diag value (1 underflow, 2 overflow) + library bits 13-15.
+   Info + 2: Diag value (1 underflow, 2 overflow) + library bits 13-15.
    */
   uint16_t nDiag;
   /*
-   Offset 60. Text ID of the latched diag message (0x4088, 0x4089), 0 = none.
+   Info + 4: Text ID of the latched diag message (0x4088, 0x4089), 0 = none.
    */
   uint16_t nDiagTextId;
   /*
-   Offset 62. Reserved.
+   Info + 6. Reserved.
    */
   uint8_t aReserved7[2];
   /*
-   Offset 64. Message parameter 2 (current position as a 32-bit pattern).
+   Info + 8: Message parameter 2 (current position as a 32-bit pattern).
    */
   uint32_t dwDiagPar2;
   /*
-   Offset 68. Message parameter 3 (latched position).
+   Info + 12: Message parameter 3 (latched position).
    */
   uint32_t dwDiagPar3;
   /*
-   Offset 72. Private state, 56 bytes: never write it.
+   Info + 16: private state, 56 bytes: never write it.
    */
   struct SL_SPEED_PRIVATE stPrivate;
 } FB_SPEED_DINT;
@@ -7994,35 +8008,35 @@ typedef struct FB_SPEED_UDINT {
    */
   uint8_t aReserved5[4];
   /*
-   Offset 56. The manual's status value (RUN, STOP, ERROR, RESET).
+   Info + 0: The manual's status value (RUN, STOP, ERROR, RESET).
    */
   uint8_t nState;
   /*
-   Offset 57. Reserved.
+   Info + 1. Reserved.
    */
   uint8_t aReserved6[1];
   /*
-   Offset 58. Diag value (1 underflow, 2 overflow) + library bits 13-15.
+   Info + 2: Diag value (1 underflow, 2 overflow) + library bits 13-15.
    */
   uint16_t nDiag;
   /*
-   Offset 60. Text ID of the latched diag message (0x4088, 0x4089), 0 = none.
+   Info + 4: Text ID of the latched diag message (0x4088, 0x4089), 0 = none.
    */
   uint16_t nDiagTextId;
   /*
-   Offset 62. Reserved.
+   Info + 6. Reserved.
    */
   uint8_t aReserved7[2];
   /*
-   Offset 64. Message parameter 2 (current position as a 32-bit pattern).
+   Info + 8: Message parameter 2 (current position as a 32-bit pattern).
    */
   uint32_t dwDiagPar2;
   /*
-   Offset 68. Message parameter 3 (latched position).
+   Info + 12: Message parameter 3 (latched position).
    */
   uint32_t dwDiagPar3;
   /*
-   Offset 72. Private state, 56 bytes: never write it.
+   Info + 16: private state, 56 bytes: never write it.
    */
   struct SL_SPEED_PRIVATE stPrivate;
 } FB_SPEED_UDINT;
@@ -8573,7 +8587,7 @@ typedef struct FB_ENVELOPE_INT {
    */
   uint8_t aReserved4[6];
   /*
-   Info + 0 (56): the manual's status value.
+   Info + 0: the manual's status value.
    */
   uint8_t nState;
   /*
@@ -8601,7 +8615,7 @@ typedef struct FB_ENVELOPE_INT {
    */
   uint32_t dwDiagPar3;
   /*
-   Info + 16 (72): private state, 64 bytes: never write it.
+   Info + 16: private state, 64 bytes: never write it.
    */
   struct SL_ENVELOPE_PRIVATE stPrivate;
 } FB_ENVELOPE_INT;
@@ -8678,7 +8692,7 @@ typedef struct FB_ENVELOPE_UINT {
    */
   uint8_t aReserved4[6];
   /*
-   Info + 0 (56): the manual's status value.
+   Info + 0: the manual's status value.
    */
   uint8_t nState;
   /*
@@ -8706,7 +8720,7 @@ typedef struct FB_ENVELOPE_UINT {
    */
   uint32_t dwDiagPar3;
   /*
-   Info + 16 (72): private state, 64 bytes: never write it.
+   Info + 16: private state, 64 bytes: never write it.
    */
   struct SL_ENVELOPE_PRIVATE stPrivate;
 } FB_ENVELOPE_UINT;
@@ -8779,7 +8793,7 @@ typedef struct FB_ENVELOPE_DINT {
    */
   uint8_t aReserved4[6];
   /*
-   Info + 0 (56): the manual's status value.
+   Info + 0: the manual's status value.
    */
   uint8_t nState;
   /*
@@ -8807,7 +8821,7 @@ typedef struct FB_ENVELOPE_DINT {
    */
   uint32_t dwDiagPar3;
   /*
-   Info + 16 (72): private state, 64 bytes: never write it.
+   Info + 16: private state, 64 bytes: never write it.
    */
   struct SL_ENVELOPE_PRIVATE stPrivate;
 } FB_ENVELOPE_DINT;
@@ -8880,7 +8894,7 @@ typedef struct FB_ENVELOPE_UDINT {
    */
   uint8_t aReserved4[6];
   /*
-   Info + 0 (56): the manual's status value.
+   Info + 0: the manual's status value.
    */
   uint8_t nState;
   /*
@@ -8908,7 +8922,7 @@ typedef struct FB_ENVELOPE_UDINT {
    */
   uint32_t dwDiagPar3;
   /*
-   Info + 16 (72): private state, 64 bytes: never write it.
+   Info + 16: private state, 64 bytes: never write it.
    */
   struct SL_ENVELOPE_PRIVATE stPrivate;
 } FB_ENVELOPE_UDINT;
@@ -9020,35 +9034,35 @@ typedef struct FB_COUNTER_INT {
    */
   uint8_t aReserved4[6];
   /*
-   Info 48: the manual's status value (RUN, STOP, ERROR, RESET).
+   Info + 0: the manual's status value (RUN, STOP, ERROR, RESET).
    */
   uint8_t nState;
   /*
-   49. Reserved.
+   Info + 1. Reserved.
    */
   uint8_t aReserved5[1];
   /*
-   50: diag value (1 underflow, 2 overflow) + library bits 13-15.
+   Info + 2: diag value (1 underflow, 2 overflow) + library bits 13-15.
    */
   uint16_t nDiag;
   /*
-   52: Text ID of the latched diag message (0x40B8, 0x40B9), 0 = none.
+   Info + 4: Text ID of the latched diag message (0x40B8, 0x40B9), 0 = none.
    */
   uint16_t nDiagTextId;
   /*
-   54. Reserved.
+   Info + 6. Reserved.
    */
   uint8_t aReserved6[2];
   /*
-   56: message parameter 2 (ActValue before the step, as a 32-bit pattern).
+   Info + 8: message parameter 2 (ActValue before the step, as a 32-bit pattern).
    */
   uint32_t dwDiagPar2;
   /*
-   60: message parameter 3 (the smallest / largest value of the type).
+   Info + 12: message parameter 3 (the smallest / largest value of the type).
    */
   uint32_t dwDiagPar3;
   /*
-   64: private state, 56 bytes: never write it.
+   Info + 16: private state, 56 bytes: never write it.
    */
   struct SL_COUNTER_PRIVATE stPrivate;
 } FB_COUNTER_INT;
@@ -9129,35 +9143,35 @@ typedef struct FB_COUNTER_UINT {
    */
   uint8_t aReserved4[6];
   /*
-   Info 48: the manual's status value (RUN, STOP, ERROR, RESET).
+   Info + 0: the manual's status value (RUN, STOP, ERROR, RESET).
    */
   uint8_t nState;
   /*
-   49. Reserved.
+   Info + 1. Reserved.
    */
   uint8_t aReserved5[1];
   /*
-   50: diag value (1 underflow, 2 overflow) + library bits 13-15.
+   Info + 2: diag value (1 underflow, 2 overflow) + library bits 13-15.
    */
   uint16_t nDiag;
   /*
-   52: Text ID of the latched diag message (0x40B8, 0x40B9), 0 = none.
+   Info + 4: Text ID of the latched diag message (0x40B8, 0x40B9), 0 = none.
    */
   uint16_t nDiagTextId;
   /*
-   54. Reserved.
+   Info + 6. Reserved.
    */
   uint8_t aReserved6[2];
   /*
-   56: message parameter 2 (ActValue before the step, as a 32-bit pattern).
+   Info + 8: message parameter 2 (ActValue before the step, as a 32-bit pattern).
    */
   uint32_t dwDiagPar2;
   /*
-   60: message parameter 3 (the smallest / largest value of the type).
+   Info + 12: message parameter 3 (the smallest / largest value of the type).
    */
   uint32_t dwDiagPar3;
   /*
-   64: private state, 56 bytes: never write it.
+   Info + 16: private state, 56 bytes: never write it.
    */
   struct SL_COUNTER_PRIVATE stPrivate;
 } FB_COUNTER_UINT;
@@ -9238,35 +9252,35 @@ typedef struct FB_COUNTER_DINT {
    */
   uint8_t aReserved4[4];
   /*
-   Info 48: the manual's status value (RUN, STOP, ERROR, RESET).
+   Info + 0: the manual's status value (RUN, STOP, ERROR, RESET).
    */
   uint8_t nState;
   /*
-   49. Reserved.
+   Info + 1. Reserved.
    */
   uint8_t aReserved5[1];
   /*
-   50: diag value (1 underflow, 2 overflow) + library bits 13-15.
+   Info + 2: diag value (1 underflow, 2 overflow) + library bits 13-15.
    */
   uint16_t nDiag;
   /*
-   52: Text ID of the latched diag message (0x40B8, 0x40B9), 0 = none.
+   Info + 4: Text ID of the latched diag message (0x40B8, 0x40B9), 0 = none.
    */
   uint16_t nDiagTextId;
   /*
-   54. Reserved.
+   Info + 6. Reserved.
    */
   uint8_t aReserved6[2];
   /*
-   56: message parameter 2 (ActValue before the step, as a 32-bit pattern).
+   Info + 8: message parameter 2 (ActValue before the step, as a 32-bit pattern).
    */
   uint32_t dwDiagPar2;
   /*
-   60: message parameter 3 (the smallest / largest value of the type).
+   Info + 12: message parameter 3 (the smallest / largest value of the type).
    */
   uint32_t dwDiagPar3;
   /*
-   64: private state, 56 bytes: never write it.
+   Info + 16: private state, 56 bytes: never write it.
    */
   struct SL_COUNTER_PRIVATE stPrivate;
 } FB_COUNTER_DINT;
@@ -9347,35 +9361,35 @@ typedef struct FB_COUNTER_UDINT {
    */
   uint8_t aReserved4[4];
   /*
-   Info 48: the manual's status value (RUN, STOP, ERROR, RESET).
+   Info + 0: the manual's status value (RUN, STOP, ERROR, RESET).
    */
   uint8_t nState;
   /*
-   49. Reserved.
+   Info + 1. Reserved.
    */
   uint8_t aReserved5[1];
   /*
-   50: diag value (1 underflow, 2 overflow) + library bits 13-15.
+   Info + 2: diag value (1 underflow, 2 overflow) + library bits 13-15.
    */
   uint16_t nDiag;
   /*
-   52: Text ID of the latched diag message (0x40B8, 0x40B9), 0 = none.
+   Info + 4: Text ID of the latched diag message (0x40B8, 0x40B9), 0 = none.
    */
   uint16_t nDiagTextId;
   /*
-   54. Reserved.
+   Info + 6. Reserved.
    */
   uint8_t aReserved6[2];
   /*
-   56: message parameter 2 (ActValue before the step, as a 32-bit pattern).
+   Info + 8: message parameter 2 (ActValue before the step, as a 32-bit pattern).
    */
   uint32_t dwDiagPar2;
   /*
-   60: message parameter 3 (the smallest / largest value of the type).
+   Info + 12: message parameter 3 (the smallest / largest value of the type).
    */
   uint32_t dwDiagPar3;
   /*
-   64: private state, 56 bytes: never write it.
+   Info + 16: private state, 56 bytes: never write it.
    */
   struct SL_COUNTER_PRIVATE stPrivate;
 } FB_COUNTER_UDINT;
@@ -9498,35 +9512,35 @@ typedef struct FB_SLI_INT {
    */
   uint8_t aReserved5[6];
   /*
-   Offset 56. The manual's status value (RUN, STOP, SAFE, ERROR, RESET).
+   Info + 0: The manual's status value (RUN, STOP, SAFE, ERROR, RESET).
    */
   uint8_t nState;
   /*
-   Offset 57. Reserved.
+   Info + 1. Reserved.
    */
   uint8_t aReserved6[1];
   /*
-   Offset 58. Diag value (1 underflow, 2 overflow) + library bits 13-15.
+   Info + 2: Diag value (1 underflow, 2 overflow) + library bits 13-15.
    */
   uint16_t nDiag;
   /*
-   Offset 60. Text ID of the latched diag message (0x40C0, 0x40C1), 0 = none.
+   Info + 4: Text ID of the latched diag message (0x40C0, 0x40C1), 0 = none.
    */
   uint16_t nDiagTextId;
   /*
-   Offset 62. Reserved.
+   Info + 6. Reserved.
    */
   uint8_t aReserved7[2];
   /*
-   Offset 64. Message parameter 2: Position as a 32-bit pattern.
+   Info + 8: Message parameter 2: Position as a 32-bit pattern.
    */
   uint32_t dwDiagPar2;
   /*
-   Offset 68. Message parameter 3: LatchPosition.
+   Info + 12: Message parameter 3: LatchPosition.
    */
   uint32_t dwDiagPar3;
   /*
-   Offset 72. Private state, 64 bytes: never write it.
+   Info + 16: private state, 64 bytes: never write it.
    */
   struct SL_SLI_PRIVATE stPrivate;
 } FB_SLI_INT;
@@ -9606,35 +9620,35 @@ typedef struct FB_SLI_UINT {
    */
   uint8_t aReserved5[6];
   /*
-   Offset 56. The manual's status value (RUN, STOP, SAFE, ERROR, RESET).
+   Info + 0: The manual's status value (RUN, STOP, SAFE, ERROR, RESET).
    */
   uint8_t nState;
   /*
-   Offset 57. Reserved.
+   Info + 1. Reserved.
    */
   uint8_t aReserved6[1];
   /*
-   Offset 58. Diag value (1 underflow, 2 overflow) + library bits 13-15.
+   Info + 2: Diag value (1 underflow, 2 overflow) + library bits 13-15.
    */
   uint16_t nDiag;
   /*
-   Offset 60. Text ID of the latched diag message (0x40C0, 0x40C1), 0 = none.
+   Info + 4: Text ID of the latched diag message (0x40C0, 0x40C1), 0 = none.
    */
   uint16_t nDiagTextId;
   /*
-   Offset 62. Reserved.
+   Info + 6. Reserved.
    */
   uint8_t aReserved7[2];
   /*
-   Offset 64. Message parameter 2: Position as a 32-bit pattern.
+   Info + 8: Message parameter 2: Position as a 32-bit pattern.
    */
   uint32_t dwDiagPar2;
   /*
-   Offset 68. Message parameter 3: LatchPosition.
+   Info + 12: Message parameter 3: LatchPosition.
    */
   uint32_t dwDiagPar3;
   /*
-   Offset 72. Private state, 64 bytes: never write it.
+   Info + 16: private state, 64 bytes: never write it.
    */
   struct SL_SLI_PRIVATE stPrivate;
 } FB_SLI_UINT;
@@ -9710,35 +9724,35 @@ typedef struct FB_SLI_DINT {
    */
   uint8_t aReserved5[4];
   /*
-   Offset 56. The manual's status value (RUN, STOP, SAFE, ERROR, RESET).
+   Info + 0: The manual's status value (RUN, STOP, SAFE, ERROR, RESET).
    */
   uint8_t nState;
   /*
-   Offset 57. Reserved.
+   Info + 1. Reserved.
    */
   uint8_t aReserved6[1];
   /*
-   Offset 58. Diag value (1 underflow, 2 overflow) + library bits 13-15.
+   Info + 2: Diag value (1 underflow, 2 overflow) + library bits 13-15.
    */
   uint16_t nDiag;
   /*
-   Offset 60. Text ID of the latched diag message (0x40C0, 0x40C1), 0 = none.
+   Info + 4: Text ID of the latched diag message (0x40C0, 0x40C1), 0 = none.
    */
   uint16_t nDiagTextId;
   /*
-   Offset 62. Reserved.
+   Info + 6. Reserved.
    */
   uint8_t aReserved7[2];
   /*
-   Offset 64. Message parameter 2: Position as a 32-bit pattern.
+   Info + 8: Message parameter 2: Position as a 32-bit pattern.
    */
   uint32_t dwDiagPar2;
   /*
-   Offset 68. Message parameter 3: LatchPosition.
+   Info + 12: Message parameter 3: LatchPosition.
    */
   uint32_t dwDiagPar3;
   /*
-   Offset 72. Private state, 64 bytes: never write it.
+   Info + 16: private state, 64 bytes: never write it.
    */
   struct SL_SLI_PRIVATE stPrivate;
 } FB_SLI_DINT;
@@ -9814,35 +9828,35 @@ typedef struct FB_SLI_UDINT {
    */
   uint8_t aReserved5[4];
   /*
-   Offset 56. The manual's status value (RUN, STOP, SAFE, ERROR, RESET).
+   Info + 0: The manual's status value (RUN, STOP, SAFE, ERROR, RESET).
    */
   uint8_t nState;
   /*
-   Offset 57. Reserved.
+   Info + 1. Reserved.
    */
   uint8_t aReserved6[1];
   /*
-   Offset 58. Diag value (1 underflow, 2 overflow) + library bits 13-15.
+   Info + 2: Diag value (1 underflow, 2 overflow) + library bits 13-15.
    */
   uint16_t nDiag;
   /*
-   Offset 60. Text ID of the latched diag message (0x40C0, 0x40C1), 0 = none.
+   Info + 4: Text ID of the latched diag message (0x40C0, 0x40C1), 0 = none.
    */
   uint16_t nDiagTextId;
   /*
-   Offset 62. Reserved.
+   Info + 6. Reserved.
    */
   uint8_t aReserved7[2];
   /*
-   Offset 64. Message parameter 2: Position as a 32-bit pattern.
+   Info + 8: Message parameter 2: Position as a 32-bit pattern.
    */
   uint32_t dwDiagPar2;
   /*
-   Offset 68. Message parameter 3: LatchPosition.
+   Info + 12: Message parameter 3: LatchPosition.
    */
   uint32_t dwDiagPar3;
   /*
-   Offset 72. Private state, 64 bytes: never write it.
+   Info + 16: private state, 64 bytes: never write it.
    */
   struct SL_SLI_PRIVATE stPrivate;
 } FB_SLI_UDINT;
@@ -9934,35 +9948,35 @@ typedef struct FB_SLI2_INT {
    */
   uint8_t aReserved5[6];
   /*
-   Offset 64. The manual's status value (RUN, STOP, SAFE, ERROR, RESET, EXCEEDED).
+   Info + 0: The manual's status value (RUN, STOP, SAFE, ERROR, RESET, EXCEEDED).
    */
   uint8_t nState;
   /*
-   Offset 65. Reserved.
+   Info + 1. Reserved.
    */
   uint8_t aReserved6[1];
   /*
-   Offset 66. Diag value (1 underflow, 2 overflow) + library bits 13-15.
+   Info + 2: Diag value (1 underflow, 2 overflow) + library bits 13-15.
    */
   uint16_t nDiag;
   /*
-   Offset 68. Text ID of the latched diag message (0x40C0, 0x40C1), 0 = none.
+   Info + 4: Text ID of the latched diag message (0x40C0, 0x40C1), 0 = none.
    */
   uint16_t nDiagTextId;
   /*
-   Offset 70. Reserved.
+   Info + 6. Reserved.
    */
   uint8_t aReserved7[2];
   /*
-   Offset 72. Message parameter 2: Position as a 32-bit pattern.
+   Info + 8: Message parameter 2: Position as a 32-bit pattern.
    */
   uint32_t dwDiagPar2;
   /*
-   Offset 76. Message parameter 3: LatchPosition.
+   Info + 12: Message parameter 3: LatchPosition.
    */
   uint32_t dwDiagPar3;
   /*
-   Offset 80. Private state, 64 bytes: never write it.
+   Info + 16: private state, 64 bytes: never write it.
    */
   struct SL_SLI_PRIVATE stPrivate;
 } FB_SLI2_INT;
@@ -10054,35 +10068,35 @@ typedef struct FB_SLI2_UINT {
    */
   uint8_t aReserved5[6];
   /*
-   Offset 64. The manual's status value (RUN, STOP, SAFE, ERROR, RESET, EXCEEDED).
+   Info + 0: The manual's status value (RUN, STOP, SAFE, ERROR, RESET, EXCEEDED).
    */
   uint8_t nState;
   /*
-   Offset 65. Reserved.
+   Info + 1. Reserved.
    */
   uint8_t aReserved6[1];
   /*
-   Offset 66. Diag value (1 underflow, 2 overflow) + library bits 13-15.
+   Info + 2: Diag value (1 underflow, 2 overflow) + library bits 13-15.
    */
   uint16_t nDiag;
   /*
-   Offset 68. Text ID of the latched diag message (0x40C0, 0x40C1), 0 = none.
+   Info + 4: Text ID of the latched diag message (0x40C0, 0x40C1), 0 = none.
    */
   uint16_t nDiagTextId;
   /*
-   Offset 70. Reserved.
+   Info + 6. Reserved.
    */
   uint8_t aReserved7[2];
   /*
-   Offset 72. Message parameter 2: Position as a 32-bit pattern.
+   Info + 8: Message parameter 2: Position as a 32-bit pattern.
    */
   uint32_t dwDiagPar2;
   /*
-   Offset 76. Message parameter 3: LatchPosition.
+   Info + 12: Message parameter 3: LatchPosition.
    */
   uint32_t dwDiagPar3;
   /*
-   Offset 80. Private state, 64 bytes: never write it.
+   Info + 16: private state, 64 bytes: never write it.
    */
   struct SL_SLI_PRIVATE stPrivate;
 } FB_SLI2_UINT;
@@ -10170,35 +10184,35 @@ typedef struct FB_SLI2_DINT {
    */
   uint8_t aReserved5[4];
   /*
-   Offset 64. The manual's status value (RUN, STOP, SAFE, ERROR, RESET, EXCEEDED).
+   Info + 0: The manual's status value (RUN, STOP, SAFE, ERROR, RESET, EXCEEDED).
    */
   uint8_t nState;
   /*
-   Offset 65. Reserved.
+   Info + 1. Reserved.
    */
   uint8_t aReserved6[1];
   /*
-   Offset 66. Diag value (1 underflow, 2 overflow) + library bits 13-15.
+   Info + 2: Diag value (1 underflow, 2 overflow) + library bits 13-15.
    */
   uint16_t nDiag;
   /*
-   Offset 68. Text ID of the latched diag message (0x40C0, 0x40C1), 0 = none.
+   Info + 4: Text ID of the latched diag message (0x40C0, 0x40C1), 0 = none.
    */
   uint16_t nDiagTextId;
   /*
-   Offset 70. Reserved.
+   Info + 6. Reserved.
    */
   uint8_t aReserved7[2];
   /*
-   Offset 72. Message parameter 2: Position as a 32-bit pattern.
+   Info + 8: Message parameter 2: Position as a 32-bit pattern.
    */
   uint32_t dwDiagPar2;
   /*
-   Offset 76. Message parameter 3: LatchPosition.
+   Info + 12: Message parameter 3: LatchPosition.
    */
   uint32_t dwDiagPar3;
   /*
-   Offset 80. Private state, 64 bytes: never write it.
+   Info + 16: private state, 64 bytes: never write it.
    */
   struct SL_SLI_PRIVATE stPrivate;
 } FB_SLI2_DINT;
@@ -10286,35 +10300,35 @@ typedef struct FB_SLI2_UDINT {
    */
   uint8_t aReserved5[4];
   /*
-   Offset 64. The manual's status value (RUN, STOP, SAFE, ERROR, RESET, EXCEEDED).
+   Info + 0: The manual's status value (RUN, STOP, SAFE, ERROR, RESET, EXCEEDED).
    */
   uint8_t nState;
   /*
-   Offset 65. Reserved.
+   Info + 1. Reserved.
    */
   uint8_t aReserved6[1];
   /*
-   Offset 66. Diag value (1 underflow, 2 overflow) + library bits 13-15.
+   Info + 2: Diag value (1 underflow, 2 overflow) + library bits 13-15.
    */
   uint16_t nDiag;
   /*
-   Offset 68. Text ID of the latched diag message (0x40C0, 0x40C1), 0 = none.
+   Info + 4: Text ID of the latched diag message (0x40C0, 0x40C1), 0 = none.
    */
   uint16_t nDiagTextId;
   /*
-   Offset 70. Reserved.
+   Info + 6. Reserved.
    */
   uint8_t aReserved7[2];
   /*
-   Offset 72. Message parameter 2: Position as a 32-bit pattern.
+   Info + 8: Message parameter 2: Position as a 32-bit pattern.
    */
   uint32_t dwDiagPar2;
   /*
-   Offset 76. Message parameter 3: LatchPosition.
+   Info + 12: Message parameter 3: LatchPosition.
    */
   uint32_t dwDiagPar3;
   /*
-   Offset 80. Private state, 64 bytes: never write it.
+   Info + 16: private state, 64 bytes: never write it.
    */
   struct SL_SLI_PRIVATE stPrivate;
 } FB_SLI2_UDINT;
@@ -10819,36 +10833,35 @@ typedef struct FB_CAMMONITOR_UINT {
    */
   uint8_t aReserved4[4];
   /*
-   At 96 / 136 (info). The manual's status value.
+   Info + 0: The manual's status value.
    */
   uint8_t nState;
   /*
-   Reserved.
+   Info + 1. Reserved.
    */
   uint8_t aReserved5[1];
   /*
-   At 98 / 138. The message's Text ID − 0x4000 + library bits 13-15.
+   Info + 2: The message's Text ID − 0x4000 + library bits 13-15.
    */
   uint16_t nDiag;
   /*
-   At 100 / 140. Text ID of the message of the current ERROR, or of a refused
-   configuration in STOP; 0 = none.
+   Info + 4: Text ID of the message of the current ERROR, or of a refused configuration in STOP; 0 = none.
    */
   uint16_t nDiagTextId;
   /*
-   Reserved.
+   Info + 6. Reserved.
    */
   uint8_t aReserved6[2];
   /*
-   At 104 / 144. Message parameter 2.
+   Info + 8: Message parameter 2.
    */
   uint32_t dwDiagPar2;
   /*
-   At 108 / 148. Message parameter 3.
+   Info + 12: Message parameter 3.
    */
   uint32_t dwDiagPar3;
   /*
-   At 112 / 152. Private state, 128 bytes: never write it.
+   Info + 16: private state, 128 bytes: never write it.
    */
   struct SL_CAMMONITOR_PRIVATE stPrivate;
 } FB_CAMMONITOR_UINT;
@@ -11039,36 +11052,35 @@ typedef struct FB_CAMMONITOR_UDINT {
    */
   uint32_t nOverrunStop;
   /*
-   At 96 / 136 (info). The manual's status value.
+   Info + 0: The manual's status value.
    */
   uint8_t nState;
   /*
-   Reserved.
+   Info + 1. Reserved.
    */
   uint8_t aReserved5[1];
   /*
-   At 98 / 138. The message's Text ID − 0x4000 + library bits 13-15.
+   Info + 2: The message's Text ID − 0x4000 + library bits 13-15.
    */
   uint16_t nDiag;
   /*
-   At 100 / 140. Text ID of the message of the current ERROR, or of a refused
-   configuration in STOP; 0 = none.
+   Info + 4: Text ID of the message of the current ERROR, or of a refused configuration in STOP; 0 = none.
    */
   uint16_t nDiagTextId;
   /*
-   Reserved.
+   Info + 6. Reserved.
    */
   uint8_t aReserved6[2];
   /*
-   At 104 / 144. Message parameter 2.
+   Info + 8: Message parameter 2.
    */
   uint32_t dwDiagPar2;
   /*
-   At 108 / 148. Message parameter 3.
+   Info + 12: Message parameter 3.
    */
   uint32_t dwDiagPar3;
   /*
-   At 112 / 152. Private state, 128 bytes: never write it.
+   Info + 16: private state, 128 bytes: never write it.
    */
   struct SL_CAMMONITOR_PRIVATE stPrivate;
 } FB_CAMMONITOR_UDINT;
@@ -11208,36 +11220,35 @@ typedef struct FB_SLP {
    */
   uint8_t aReserved3[4];
   /*
-   Offset 80. The manual's status value (RUN, STOP, SAFE, ERROR, RESET, START).
+   Info + 0: The manual's status value (RUN, STOP, SAFE, ERROR, RESET, START).
    */
   uint8_t nState;
   /*
-   Offset 81. Reserved.
+   Info + 1. Reserved.
    */
   uint8_t aReserved4[1];
   /*
-   Offset 82. Diag bits 0/1 (limit errors) + library bits 13-15.
+   Info + 2: Diag bits 0/1 (limit errors) + library bits 13-15.
    */
   uint16_t nDiag;
   /*
-   Offset 84. Text ID of the diag message (0x40D0, 0x40D1), 0 = none; also shown in
-   STOP while the `…Fix` limits cross (`SL_E_CONFIG`).
+   Info + 4: Text ID of the diag message (0x40D0, 0x40D1), 0 = none; also shown in STOP while the `…Fix` limits cross (`SL_E_CONFIG`).
    */
   uint16_t nDiagTextId;
   /*
-   Offset 86. Reserved.
+   Info + 6. Reserved.
    */
   uint8_t aReserved5[2];
   /*
-   Offset 88. Message parameter 2 (the lower limit part as a 32-bit pattern).
+   Info + 8: Message parameter 2 (the lower limit part as a 32-bit pattern).
    */
   uint32_t dwDiagPar2;
   /*
-   Offset 92. Message parameter 3 (the upper limit part).
+   Info + 12: Message parameter 3 (the upper limit part).
    */
   uint32_t dwDiagPar3;
   /*
-   Offset 96. Private state, 64 bytes: never write it.
+   Info + 16: private state, 64 bytes: never write it.
    */
   struct SL_SLP_PRIVATE stPrivate;
 } FB_SLP;
@@ -11384,35 +11395,35 @@ typedef struct FB_SBT {
    */
   uint8_t aReserved4[4];
   /*
-   Offset 80. The manual's status value (SL_STATE_*, SL_STATE_SBT_*).
+   Info + 0: The manual's status value (SL_STATE_*, SL_STATE_SBT_*).
    */
   uint8_t nState;
   /*
-   Offset 81. Reserved.
+   Info + 1. Reserved.
    */
   uint8_t aReserved5[1];
   /*
-   Offset 82. The message's Text ID − 0x4000 (0xD8, 0xD9, 0xDA) + library bits 13-15.
+   Info + 2: The message's Text ID − 0x4000 (0xD8, 0xD9, 0xDA) + library bits 13-15.
    */
   uint16_t nDiag;
   /*
-   Offset 84. Text ID of the message in TEST-FAILED / MONS-ERROR, 0 = none.
+   Info + 4: Text ID of the message in TEST-FAILED / MONS-ERROR, 0 = none.
    */
   uint16_t nDiagTextId;
   /*
-   Offset 86. Reserved.
+   Info + 6. Reserved.
    */
   uint8_t aReserved6[2];
   /*
-   Offset 88. Message parameter 2.
+   Info + 8: Message parameter 2.
    */
   uint32_t dwDiagPar2;
   /*
-   Offset 92. Message parameter 3.
+   Info + 12: Message parameter 3.
    */
   uint32_t dwDiagPar3;
   /*
-   Offset 96. Private state, 80 bytes: never write it.
+   Info + 16: private state, 80 bytes: never write it.
    */
   struct SL_SBT_PRIVATE stPrivate;
 } FB_SBT;
@@ -11534,35 +11545,35 @@ typedef struct FB_ADVPOSMON {
    */
   uint8_t aReserved4[4];
   /*
-   Offset 48. The manual's status value (SL_STATE_*, WAIT-FOR-RESTART 16).
+   Info + 0: The manual's status value (SL_STATE_*, WAIT-FOR-RESTART 16).
    */
   uint8_t nState;
   /*
-   Offset 49. Reserved.
+   Info + 1. Reserved.
    */
   uint8_t aReserved5[1];
   /*
-   Offset 50. Diag bits 0-2: the SAFEDRIVEFEEDBACK instance in ERROR; library bits 13-15.
+   Info + 2: Diag bits 0-2: the SAFEDRIVEFEEDBACK instance in ERROR; library bits 13-15.
    */
   uint16_t nDiag;
   /*
-   Offset 52. Text ID of the diag message (0x38D1 in ERROR by SDFB_ERROR), 0 = none.
+   Info + 4: Text ID of the diag message (0x38D1 in ERROR by SDFB_ERROR), 0 = none.
    */
   uint16_t nDiagTextId;
   /*
-   Offset 54. Reserved.
+   Info + 6. Reserved.
    */
   uint8_t aReserved6[2];
   /*
-   Offset 56. Message parameter 2 (0: the manual gives none).
+   Info + 8: Message parameter 2 (0: the manual gives none).
    */
   uint32_t dwDiagPar2;
   /*
-   Offset 60. Message parameter 3 (0).
+   Info + 12: Message parameter 3 (0).
    */
   uint32_t dwDiagPar3;
   /*
-   Offset 64. Private state, 40 bytes: never write it.
+   Info + 16: private state, 40 bytes: never write it.
    */
   struct SL_ADVPOSMON_PRIVATE stPrivate;
 } FB_ADVPOSMON;

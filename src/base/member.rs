@@ -293,44 +293,10 @@ macro_rules! impl_member {
             fn state(&self) -> u8 {
                 self.nState
             }
-            fn fields(&self) -> &'static [$crate::base::block::Field] {
-                <Self as $crate::base::block::Registered>::FIELDS
-            }
-            fn input_mut(&mut self, offset: u16) -> Option<&mut u8> {
-                $(if usize::from(offset) == core::mem::offset_of!(Self, $i) {
-                    return $crate::base::block::FieldType::as_bool_mut(&mut self.$i);
-                })*
-                None
-            }
-            fn output(&self, offset: u16) -> Option<u8> {
-                $(if usize::from(offset) == core::mem::offset_of!(Self, $o) {
-                    return $crate::base::block::FieldType::as_bool(self.$o);
-                })*
-                None
-            }
-            fn output_bits(&self, offset: u16) -> Option<u32> {
-                $(if usize::from(offset) == core::mem::offset_of!(Self, $o) {
-                    return Some($crate::base::block::FieldType::to_bits(self.$o));
-                })*
-                None
-            }
-            fn set_input_bits(&mut self, offset: u16, bits: u32) -> bool {
-                $(if usize::from(offset) == core::mem::offset_of!(Self, $i) {
-                    self.$i = $crate::base::block::FieldType::from_bits(bits);
-                    return true;
-                })*
-                false
-            }
+            $crate::impl_member!(@access [$($i),*] [$($p),*] [$($o),*]);
             fn field_bits(&self, offset: u16) -> Option<u32> {
                 $crate::impl_member!(@read self, offset,
                     $($i,)* bRun, bErrAck, $($p,)* $($o,)* nState, nDiag $(, $n)*)
-            }
-            fn set_param_bits(&mut self, offset: u16, bits: u32) -> bool {
-                $(if usize::from(offset) == core::mem::offset_of!(Self, $p) {
-                    self.$p = $crate::base::block::FieldType::from_bits(bits);
-                    return true;
-                })*
-                false
             }
             // Always inline: the sealed schedule's runner (`run_as`) is then one function,
             // the block's fast path included.
@@ -388,6 +354,45 @@ macro_rules! impl_member {
         })*
         None
     }};
+    // The field accessors of `Member` from the field lists, the same in both families
+    // (`impl_sf_member!` uses them too).
+    (@access [$($i:ident),*] [$($p:ident),*] [$($o:ident),*]) => {
+        fn fields(&self) -> &'static [$crate::base::block::Field] {
+            <Self as $crate::base::block::Registered>::FIELDS
+        }
+        fn input_mut(&mut self, offset: u16) -> Option<&mut u8> {
+            $(if usize::from(offset) == core::mem::offset_of!(Self, $i) {
+                return $crate::base::block::FieldType::as_bool_mut(&mut self.$i);
+            })*
+            None
+        }
+        fn output(&self, offset: u16) -> Option<u8> {
+            $(if usize::from(offset) == core::mem::offset_of!(Self, $o) {
+                return $crate::base::block::FieldType::as_bool(self.$o);
+            })*
+            None
+        }
+        fn output_bits(&self, offset: u16) -> Option<u32> {
+            $(if usize::from(offset) == core::mem::offset_of!(Self, $o) {
+                return Some($crate::base::block::FieldType::to_bits(self.$o));
+            })*
+            None
+        }
+        fn set_input_bits(&mut self, offset: u16, bits: u32) -> bool {
+            $(if usize::from(offset) == core::mem::offset_of!(Self, $i) {
+                self.$i = $crate::base::block::FieldType::from_bits(bits);
+                return true;
+            })*
+            false
+        }
+        fn set_param_bits(&mut self, offset: u16, bits: u32) -> bool {
+            $(if usize::from(offset) == core::mem::offset_of!(Self, $p) {
+                self.$p = $crate::base::block::FieldType::from_bits(bits);
+                return true;
+            })*
+            false
+        }
+    };
     (@field $f:ident, $dir:ident, $k:ident) => {
         $crate::base::block::Field {
             name: stringify!($f),
@@ -488,43 +493,9 @@ macro_rules! impl_sf_member {
             fn state(&self) -> u8 {
                 self.stPrivate.stHeader.nState
             }
-            fn fields(&self) -> &'static [$crate::base::block::Field] {
-                <Self as $crate::base::block::Registered>::FIELDS
-            }
-            fn input_mut(&mut self, offset: u16) -> Option<&mut u8> {
-                $(if usize::from(offset) == core::mem::offset_of!(Self, $i) {
-                    return $crate::base::block::FieldType::as_bool_mut(&mut self.$i);
-                })*
-                None
-            }
-            fn output(&self, offset: u16) -> Option<u8> {
-                $(if usize::from(offset) == core::mem::offset_of!(Self, $o) {
-                    return $crate::base::block::FieldType::as_bool(self.$o);
-                })*
-                None
-            }
-            fn output_bits(&self, offset: u16) -> Option<u32> {
-                $(if usize::from(offset) == core::mem::offset_of!(Self, $o) {
-                    return Some($crate::base::block::FieldType::to_bits(self.$o));
-                })*
-                None
-            }
-            fn set_input_bits(&mut self, offset: u16, bits: u32) -> bool {
-                $(if usize::from(offset) == core::mem::offset_of!(Self, $i) {
-                    self.$i = $crate::base::block::FieldType::from_bits(bits);
-                    return true;
-                })*
-                false
-            }
+            $crate::impl_member!(@access [$($i),*] [$($p),*] [$($o),*]);
             fn field_bits(&self, offset: u16) -> Option<u32> {
                 $crate::impl_member!(@read self, offset, $($i,)* $($p,)* $($o,)* DiagCode)
-            }
-            fn set_param_bits(&mut self, offset: u16, bits: u32) -> bool {
-                $(if usize::from(offset) == core::mem::offset_of!(Self, $p) {
-                    self.$p = $crate::base::block::FieldType::from_bits(bits);
-                    return true;
-                })*
-                false
             }
         }
     };

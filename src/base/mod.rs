@@ -13,6 +13,7 @@ pub mod diag;
 pub mod edm;
 pub mod envelope;
 pub mod header;
+pub mod layout;
 pub mod member;
 pub mod pair;
 pub mod restart;

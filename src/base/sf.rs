@@ -15,6 +15,7 @@
 
 use super::bools::{self, Edge};
 use super::header::{param_crc, F_RESTART_PREV, F_TIME_VALID, SL_PRIVATE_HEADER};
+use super::layout::Zeroed;
 use super::time;
 use crate::base::types::*;
 
@@ -157,33 +158,20 @@ macro_rules! sf_states {
     };
 }
 
-/// Private state of every `SF_` block (40 bytes). Never written by the user. The header's
-/// `wDiag` holds the v2.01 DiagCode (the state), `nState` the [`SfPhase`], `nActive` the
-/// latched profile, `tPhase` the entry time of the current state (the monitored times run
-/// from there), `nFlags` the R_TRIG memories.
-#[repr(C)]
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-#[allow(non_snake_case, non_camel_case_types)]
-pub struct SL_SF_PRIVATE {
-    /// Common head.
-    pub stHeader: SL_PRIVATE_HEADER,
-    /// Latched constant times (ms), covered by the header's parameter CRC.
-    pub adwTime: [u32; 2],
-    /// Written by the owning group before each call: non-zero while the group does not run
-    /// the block (halted: DiagCode 0000, as with Activate FALSE).
-    pub nGroupHalt: u8,
-    /// Reserved.
-    pub aReserved: [u8; 3],
-}
-
-impl SL_SF_PRIVATE {
-    /// All zero.
-    pub const ZERO: Self = Self {
-        stHeader: SL_PRIVATE_HEADER::ZERO,
-        adwTime: [0; 2],
-        nGroupHalt: 0,
-        aReserved: [0; 3],
-    };
+crate::base::layout::private_struct! {
+    /// Private state of every `SF_` block (40 bytes). Never written by the user. The header's
+    /// `wDiag` holds the v2.01 DiagCode (the state), `nState` the [`SfPhase`], `nActive` the
+    /// latched profile, `tPhase` the entry time of the current state (the monitored times run
+    /// from there), `nFlags` the R_TRIG memories.
+    SL_SF_PRIVATE {
+        /// Latched constant times (ms), covered by the header's parameter CRC.
+        pub adwTime: [u32; 2],
+        /// Written by the owning group before each call: non-zero while the group does not run
+        /// the block (halted: DiagCode 0000, as with Activate FALSE).
+        pub nGroupHalt: u8,
+        /// Reserved.
+        pub aReserved: [u8; 3],
+    }
 }
 
 /// The constant inputs of an `SF_` block: the profile and up to two monitored times.

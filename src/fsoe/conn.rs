@@ -13,248 +13,162 @@ use super::*;
 use crate::base::bools::edge;
 use crate::base::types::*;
 
-/// Private state of a connection (296 bytes): never write it.
-#[repr(C)]
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-#[allow(non_snake_case, non_camel_case_types)]
-pub struct SL_FSOE_CONN_PRIVATE {
-    /// Time the watchdog was started (the last frame sent).
-    pub tWdStart: u32,
-    /// Magic of an initialised connection.
-    pub wMagic: u16,
-    /// CRC_0 of the last frame sent or received (the chain input, ETG LastCrc).
-    pub wLastCrc: u16,
-    /// CRC_0 of the previous frame sent by the master (collision rule).
-    pub wOldMasterCrc: u16,
-    /// CRC_0 of the previous frame sent by the slave (collision rule).
-    pub wOldSlaveCrc: u16,
-    /// Sequence number of the master's next frame.
-    pub nMasterSeqNo: u16,
-    /// Sequence number of the slave's next frame.
-    pub nSlaveSeqNo: u16,
-    /// This node's session ID.
-    pub wOwnSession: u16,
-    /// The partner's session ID (as far as received).
-    pub wPeerSession: u16,
-    /// Offset in the handshake item of the chunk sent last.
-    pub nTxOff: u16,
-    /// Bytes of the partner's handshake item received (slave: ConnData, SafePara; both: session ID).
-    pub nRxCount: u16,
-    /// Latched nConnectionId.
-    pub nConnId: u16,
-    /// Latched nFsoeAddress.
-    pub nAddress: u16,
-    /// Latched tWatchdogTime.
-    pub nWatchdog: u16,
-    /// Latched nAppParaLen.
-    pub nAppLen: u16,
-    /// Latched nRole.
-    pub nRole: u8,
-    /// Latched nTxDataLen.
-    pub nTxLen: u8,
-    /// Latched nRxDataLen.
-    pub nRxLen: u8,
-    /// Latched dwOptions (bits 0-2).
-    pub nOptions: u8,
-    /// State copy.
-    pub nState: u8,
-    /// Complement of the state copy.
-    pub nStateInv: u8,
-    /// Edge memory of bErrAck, bComErrAck, bShutdownRequest.
-    pub nEdges: u8,
-    /// Flags (F_*).
-    pub nFlags: u8,
-    /// More flags (G_*).
-    pub nFlags2: u8,
-    /// Low nibble of the manual's diag byte (code of the last error, 12, 13).
-    pub nDiagCode: u8,
-    /// Length of the copy of the last received frame.
-    pub nLastRxLen: u8,
-    /// Reserved.
-    pub nReserved: u8,
-    /// Copy of the last received frame (frame-received event).
-    pub aLastRx: [u8; 68],
-    /// SafePara built from this node's parameters (master: sent; slave: expected).
-    pub aOwnPara: [u8; 72],
-    /// Slave: received ConnData (0-3) and SafePara (4..).
-    pub aRxItem: [u8; 76],
-    /// SafeData of the last accepted ProcessData frame.
-    pub aRxData: [u8; 32],
-    /// Slave: the Connection ID of this session, taken from the master's first Connection
-    /// frame (0 until then; the master uses its configured ID).
-    pub nSessionConnId: u16,
-    /// Reserved.
-    pub aReserved: [u8; 2],
-}
-
-impl Default for SL_FSOE_CONN_PRIVATE {
-    fn default() -> Self {
-        SL_FSOE_CONN_PRIVATE {
-            tWdStart: 0,
-            wMagic: 0,
-            wLastCrc: 0,
-            wOldMasterCrc: 0,
-            wOldSlaveCrc: 0,
-            nMasterSeqNo: 0,
-            nSlaveSeqNo: 0,
-            wOwnSession: 0,
-            wPeerSession: 0,
-            nTxOff: 0,
-            nRxCount: 0,
-            nConnId: 0,
-            nAddress: 0,
-            nWatchdog: 0,
-            nAppLen: 0,
-            nRole: 0,
-            nTxLen: 0,
-            nRxLen: 0,
-            nOptions: 0,
-            nState: 0,
-            nStateInv: 0,
-            nEdges: 0,
-            nFlags: 0,
-            nFlags2: 0,
-            nDiagCode: 0,
-            nLastRxLen: 0,
-            nReserved: 0,
-            aLastRx: [0; 68],
-            aOwnPara: [0; 72],
-            aRxItem: [0; 76],
-            aRxData: [0; 32],
-            nSessionConnId: 0,
-            aReserved: [0; 2],
-        }
+crate::base::layout::zeroed_struct! {
+    /// Private state of a connection (296 bytes): never write it.
+    SL_FSOE_CONN_PRIVATE {
+        /// Time the watchdog was started (the last frame sent).
+        pub tWdStart: u32,
+        /// Magic of an initialised connection.
+        pub wMagic: u16,
+        /// CRC_0 of the last frame sent or received (the chain input, ETG LastCrc).
+        pub wLastCrc: u16,
+        /// CRC_0 of the previous frame sent by the master (collision rule).
+        pub wOldMasterCrc: u16,
+        /// CRC_0 of the previous frame sent by the slave (collision rule).
+        pub wOldSlaveCrc: u16,
+        /// Sequence number of the master's next frame.
+        pub nMasterSeqNo: u16,
+        /// Sequence number of the slave's next frame.
+        pub nSlaveSeqNo: u16,
+        /// This node's session ID.
+        pub wOwnSession: u16,
+        /// The partner's session ID (as far as received).
+        pub wPeerSession: u16,
+        /// Offset in the handshake item of the chunk sent last.
+        pub nTxOff: u16,
+        /// Bytes of the partner's handshake item received (slave: ConnData, SafePara; both: session ID).
+        pub nRxCount: u16,
+        /// Latched nConnectionId.
+        pub nConnId: u16,
+        /// Latched nFsoeAddress.
+        pub nAddress: u16,
+        /// Latched tWatchdogTime.
+        pub nWatchdog: u16,
+        /// Latched nAppParaLen.
+        pub nAppLen: u16,
+        /// Latched nRole.
+        pub nRole: u8,
+        /// Latched nTxDataLen.
+        pub nTxLen: u8,
+        /// Latched nRxDataLen.
+        pub nRxLen: u8,
+        /// Latched dwOptions (bits 0-2).
+        pub nOptions: u8,
+        /// State copy.
+        pub nState: u8,
+        /// Complement of the state copy.
+        pub nStateInv: u8,
+        /// Edge memory of bErrAck, bComErrAck, bShutdownRequest.
+        pub nEdges: u8,
+        /// Flags (F_*).
+        pub nFlags: u8,
+        /// More flags (G_*).
+        pub nFlags2: u8,
+        /// Low nibble of the manual's diag byte (code of the last error, 12, 13).
+        pub nDiagCode: u8,
+        /// Length of the copy of the last received frame.
+        pub nLastRxLen: u8,
+        /// Reserved.
+        pub nReserved: u8,
+        /// Copy of the last received frame (frame-received event).
+        pub aLastRx: [u8; 68],
+        /// SafePara built from this node's parameters (master: sent; slave: expected).
+        pub aOwnPara: [u8; 72],
+        /// Slave: received ConnData (0-3) and SafePara (4..).
+        pub aRxItem: [u8; 76],
+        /// SafeData of the last accepted ProcessData frame.
+        pub aRxData: [u8; 32],
+        /// Slave: the Connection ID of this session, taken from the master's first Connection
+        /// frame (0 until then; the master uses its configured ID).
+        pub nSessionConnId: u16,
+        /// Reserved.
+        pub aReserved: [u8; 2],
     }
 }
 
-/// An FSoE connection, master or slave (ABI-2 §13.1). Standalone it is driven by
-/// `sl_fsoe_cycle` with the frames as arguments; as a member of a group (`SL_TYPE_FSOE_CONN`)
-/// the group runs it with the frames of its mailbox (offsets 184–327): the caller copies the
-/// received frame into `aRxFrame` / `nRxFrameLen` before the group cycle and sends
-/// `aTxFrame` / `nTxFrameLen` after it (docs/semantics.md FS17).
-/// Size: 624 bytes.
-#[repr(C)]
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-#[allow(non_snake_case, non_camel_case_types)]
-pub struct SL_FSOE_CONN {
-    /// Offset 0. FbRun of the owning group; FALSE: in DATA send FailSafeData, aRxSafeData reads 0.
-    pub bRun: SL_BOOL,
-    /// Offset 1. Group ErrAck: a rising edge acknowledges bComErr (in DATA, no error condition left).
-    pub bErrAck: SL_BOOL,
-    /// Offset 2. Per-connection ComErrAck (with SL_FSOE_OPT_COMERRACK: needed before ErrAck).
-    pub bComErrAck: SL_BOOL,
-    /// Offset 3. FB_CONNECTION_SHUTDOWN request: in DATA enter 106.
-    pub bShutdownRequest: SL_BOOL,
-    /// Offset 4. Module error of the partner (with SL_FSOE_OPT_MODULE_ERR_IS_COMERR); an invalid byte reads TRUE.
-    pub bModuleFault: SL_BOOL,
-    /// Offset 5. Reserved, keep 0.
-    pub aReserved0: [u8; 3],
-    /// Offset 8. Caller-supplied random 16-bit value, fresh every call; taken when a session starts.
-    pub nSessionIdSeed: u16,
-    /// Offset 10. Reserved, keep 0.
-    pub aReserved1: [u8; 6],
-    /// Offset 16. SafeData to send (the first nTxDataLen bytes).
-    pub aTxSafeData: [u8; 32],
-    /// Offset 48. Parameter: Connection ID, 1…65535, unique per bus. A master sends it; a
-    /// slave takes the master's and accepts only this one with SL_FSOE_OPT_PIN_CONNID.
-    pub nConnectionId: u16,
-    /// Offset 50. Parameter: the slave's FSoE address.
-    pub nFsoeAddress: u16,
-    /// Offset 52. Parameter: SL_FSOE_ROLE_MASTER (1) or SL_FSOE_ROLE_SLAVE (2).
-    pub nRole: u16,
-    /// Offset 54. Parameter: SafeData bytes sent: 1 or even 2…32.
-    pub nTxDataLen: u16,
-    /// Offset 56. Parameter: SafeData bytes received: 1 or even 2…32.
-    pub nRxDataLen: u16,
-    /// Offset 58. Parameter: application parameter bytes, 0…64.
-    pub nAppParaLen: u16,
-    /// Offset 60. Parameter: watchdog in ms, 1…65535.
-    pub tWatchdogTime: u32,
-    /// Offset 64. Parameter: SL_FSOE_OPT_* bits.
-    pub dwOptions: u32,
-    /// Offset 68. Parameter: application parameters (master: sent; slave: expected).
-    pub aAppPara: [u8; 64],
-    /// Offset 132. Reserved, keep 0.
-    pub aReserved2: [u8; 4],
-    /// Offset 136. Communication error, latched until acknowledged.
-    pub bComErr: SL_BOOL,
-    /// Offset 137. Start-up: state 100–103, not shut down.
-    pub bComStartup: SL_BOOL,
-    /// Offset 138. DATA, last accepted frame ProcessData, bRun, no bComErr.
-    pub bDataValid: SL_BOOL,
-    /// Offset 139. From entering 105/106 until DATA is reached again.
-    pub bShutdown: SL_BOOL,
-    /// Offset 140. The partner sends FailSafeData.
-    pub bPeerFailSafe: SL_BOOL,
-    /// Offset 141. Reserved.
-    pub aReserved3: [u8; 3],
-    /// Offset 144. Received SafeData; all 0 unless bDataValid.
-    pub aRxSafeData: [u8; 32],
-    /// Offset 176. State 100–106.
-    pub nState: u8,
-    /// Offset 177. Last Reset code sent or received.
-    pub nResetCode: u8,
-    /// Offset 178. Manual diag byte in bits 0-7; library bits 13-15.
-    pub nDiag: u16,
-    /// Offset 180. Reserved.
-    pub aReserved4: [u8; 4],
-    /// Offset 184. Group mailbox: length of the received frame in aRxFrame (0: none this cycle).
-    pub nRxFrameLen: u16,
-    /// Offset 186. Group mailbox: length of the frame in aTxFrame (0: none produced yet).
-    pub nTxFrameLen: u16,
-    /// Offset 188. Group mailbox: incremented (wrapping) each time a new frame is written to aTxFrame.
-    pub nTxCount: u16,
-    /// Offset 190. Reserved.
-    pub aReserved5: [u8; 2],
-    /// Offset 192. Group mailbox: the received frame (the caller writes it).
-    pub aRxFrame: [u8; 68],
-    /// Offset 260. Group mailbox: the last frame the connection produced (send it).
-    pub aTxFrame: [u8; 68],
-    /// Offset 328. Private state: never write it.
-    pub stPrivate: SL_FSOE_CONN_PRIVATE,
-}
-
-impl Default for SL_FSOE_CONN {
-    fn default() -> Self {
-        SL_FSOE_CONN {
-            bRun: 0,
-            bErrAck: 0,
-            bComErrAck: 0,
-            bShutdownRequest: 0,
-            bModuleFault: 0,
-            aReserved0: [0; 3],
-            nSessionIdSeed: 0,
-            aReserved1: [0; 6],
-            aTxSafeData: [0; 32],
-            nConnectionId: 0,
-            nFsoeAddress: 0,
-            nRole: 0,
-            nTxDataLen: 0,
-            nRxDataLen: 0,
-            nAppParaLen: 0,
-            tWatchdogTime: 0,
-            dwOptions: 0,
-            aAppPara: [0; 64],
-            aReserved2: [0; 4],
-            bComErr: 0,
-            bComStartup: 0,
-            bDataValid: 0,
-            bShutdown: 0,
-            bPeerFailSafe: 0,
-            aReserved3: [0; 3],
-            aRxSafeData: [0; 32],
-            nState: 0,
-            nResetCode: 0,
-            nDiag: 0,
-            aReserved4: [0; 4],
-            nRxFrameLen: 0,
-            nTxFrameLen: 0,
-            nTxCount: 0,
-            aReserved5: [0; 2],
-            aRxFrame: [0; 68],
-            aTxFrame: [0; 68],
-            stPrivate: SL_FSOE_CONN_PRIVATE::default(),
-        }
+crate::base::layout::zeroed_struct! {
+    /// An FSoE connection, master or slave (ABI-2 §13.1). Standalone it is driven by
+    /// `sl_fsoe_cycle` with the frames as arguments; as a member of a group (`SL_TYPE_FSOE_CONN`)
+    /// the group runs it with the frames of its mailbox (offsets 184–327): the caller copies the
+    /// received frame into `aRxFrame` / `nRxFrameLen` before the group cycle and sends
+    /// `aTxFrame` / `nTxFrameLen` after it (docs/semantics.md FS17).
+    /// Size: 624 bytes.
+    SL_FSOE_CONN {
+        /// Offset 0. FbRun of the owning group; FALSE: in DATA send FailSafeData, aRxSafeData reads 0.
+        pub bRun: SL_BOOL,
+        /// Offset 1. Group ErrAck: a rising edge acknowledges bComErr (in DATA, no error condition left).
+        pub bErrAck: SL_BOOL,
+        /// Offset 2. Per-connection ComErrAck (with SL_FSOE_OPT_COMERRACK: needed before ErrAck).
+        pub bComErrAck: SL_BOOL,
+        /// Offset 3. FB_CONNECTION_SHUTDOWN request: in DATA enter 106.
+        pub bShutdownRequest: SL_BOOL,
+        /// Offset 4. Module error of the partner (with SL_FSOE_OPT_MODULE_ERR_IS_COMERR); an invalid byte reads TRUE.
+        pub bModuleFault: SL_BOOL,
+        /// Offset 5. Reserved, keep 0.
+        pub aReserved0: [u8; 3],
+        /// Offset 8. Caller-supplied random 16-bit value, fresh every call; taken when a session starts.
+        pub nSessionIdSeed: u16,
+        /// Offset 10. Reserved, keep 0.
+        pub aReserved1: [u8; 6],
+        /// Offset 16. SafeData to send (the first nTxDataLen bytes).
+        pub aTxSafeData: [u8; 32],
+        /// Offset 48. Parameter: Connection ID, 1…65535, unique per bus. A master sends it; a
+        /// slave takes the master's and accepts only this one with SL_FSOE_OPT_PIN_CONNID.
+        pub nConnectionId: u16,
+        /// Offset 50. Parameter: the slave's FSoE address.
+        pub nFsoeAddress: u16,
+        /// Offset 52. Parameter: SL_FSOE_ROLE_MASTER (1) or SL_FSOE_ROLE_SLAVE (2).
+        pub nRole: u16,
+        /// Offset 54. Parameter: SafeData bytes sent: 1 or even 2…32.
+        pub nTxDataLen: u16,
+        /// Offset 56. Parameter: SafeData bytes received: 1 or even 2…32.
+        pub nRxDataLen: u16,
+        /// Offset 58. Parameter: application parameter bytes, 0…64.
+        pub nAppParaLen: u16,
+        /// Offset 60. Parameter: watchdog in ms, 1…65535.
+        pub tWatchdogTime: u32,
+        /// Offset 64. Parameter: SL_FSOE_OPT_* bits.
+        pub dwOptions: u32,
+        /// Offset 68. Parameter: application parameters (master: sent; slave: expected).
+        pub aAppPara: [u8; 64],
+        /// Offset 132. Reserved, keep 0.
+        pub aReserved2: [u8; 4],
+        /// Offset 136. Communication error, latched until acknowledged.
+        pub bComErr: SL_BOOL,
+        /// Offset 137. Start-up: state 100–103, not shut down.
+        pub bComStartup: SL_BOOL,
+        /// Offset 138. DATA, last accepted frame ProcessData, bRun, no bComErr.
+        pub bDataValid: SL_BOOL,
+        /// Offset 139. From entering 105/106 until DATA is reached again.
+        pub bShutdown: SL_BOOL,
+        /// Offset 140. The partner sends FailSafeData.
+        pub bPeerFailSafe: SL_BOOL,
+        /// Offset 141. Reserved.
+        pub aReserved3: [u8; 3],
+        /// Offset 144. Received SafeData; all 0 unless bDataValid.
+        pub aRxSafeData: [u8; 32],
+        /// Offset 176. State 100–106.
+        pub nState: u8,
+        /// Offset 177. Last Reset code sent or received.
+        pub nResetCode: u8,
+        /// Offset 178. Manual diag byte in bits 0-7; library bits 13-15.
+        pub nDiag: u16,
+        /// Offset 180. Reserved.
+        pub aReserved4: [u8; 4],
+        /// Offset 184. Group mailbox: length of the received frame in aRxFrame (0: none this cycle).
+        pub nRxFrameLen: u16,
+        /// Offset 186. Group mailbox: length of the frame in aTxFrame (0: none produced yet).
+        pub nTxFrameLen: u16,
+        /// Offset 188. Group mailbox: incremented (wrapping) each time a new frame is written to aTxFrame.
+        pub nTxCount: u16,
+        /// Offset 190. Reserved.
+        pub aReserved5: [u8; 2],
+        /// Offset 192. Group mailbox: the received frame (the caller writes it).
+        pub aRxFrame: [u8; 68],
+        /// Offset 260. Group mailbox: the last frame the connection produced (send it).
+        pub aTxFrame: [u8; 68],
+        /// Offset 328. Private state: never write it.
+        pub stPrivate: SL_FSOE_CONN_PRIVATE,
     }
 }
 

@@ -18,42 +18,25 @@ use super::{diag_message, magic, Analog, SL_DIAG_VALUE_OVERFLOW, SL_DIAG_VALUE_U
 use crate::base::block::BlockInfo;
 use crate::base::block::FieldType;
 use crate::base::envelope::Block;
-use crate::base::header::{param_crc, SL_PRIVATE_HEADER};
+use crate::base::header::param_crc;
+use crate::base::layout::Zeroed;
 use crate::base::types::*;
 use core::marker::PhantomData;
 
-/// Type tags of the arithmetic blocks (ABI-2 §10.6: sequential from 16).
-pub const SL_TYPE_ADD_INT: u16 = 16;
-/// FB_ADD_UINT.
-pub const SL_TYPE_ADD_UINT: u16 = 17;
-/// FB_ADD_DINT.
-pub const SL_TYPE_ADD_DINT: u16 = 18;
-/// FB_ADD_UDINT.
-pub const SL_TYPE_ADD_UDINT: u16 = 19;
-/// FB_SUB_INT.
-pub const SL_TYPE_SUB_INT: u16 = 20;
-/// FB_SUB_UINT.
-pub const SL_TYPE_SUB_UINT: u16 = 21;
-/// FB_SUB_DINT.
-pub const SL_TYPE_SUB_DINT: u16 = 22;
-/// FB_SUB_UDINT.
-pub const SL_TYPE_SUB_UDINT: u16 = 23;
-/// FB_MUL_INT.
-pub const SL_TYPE_MUL_INT: u16 = 24;
-/// FB_MUL_UINT.
-pub const SL_TYPE_MUL_UINT: u16 = 25;
-/// FB_MUL_DINT.
-pub const SL_TYPE_MUL_DINT: u16 = 26;
-/// FB_MUL_UDINT.
-pub const SL_TYPE_MUL_UDINT: u16 = 27;
-/// FB_DIV_INT.
-pub const SL_TYPE_DIV_INT: u16 = 28;
-/// FB_DIV_UINT.
-pub const SL_TYPE_DIV_UINT: u16 = 29;
-/// FB_DIV_DINT.
-pub const SL_TYPE_DIV_DINT: u16 = 30;
-/// FB_DIV_UDINT.
-pub const SL_TYPE_DIV_UDINT: u16 = 31;
+super::analog_variants! {
+    FB_ARITH:
+        INT SL_TYPE_ADD_INT = 16 => FB_ADD_INT[Add, i16, 2, 6], UINT SL_TYPE_ADD_UINT = 17 => FB_ADD_UINT[Add, u16, 2, 6],
+        DINT SL_TYPE_ADD_DINT = 18 => FB_ADD_DINT[Add, i32, 6, 4], UDINT SL_TYPE_ADD_UDINT = 19 => FB_ADD_UDINT[Add, u32, 6, 4],
+        INT SL_TYPE_SUB_INT = 20 => FB_SUB_INT[Sub, i16, 2, 6], UINT SL_TYPE_SUB_UINT = 21 => FB_SUB_UINT[Sub, u16, 2, 6],
+        DINT SL_TYPE_SUB_DINT = 22 => FB_SUB_DINT[Sub, i32, 6, 4], UDINT SL_TYPE_SUB_UDINT = 23 => FB_SUB_UDINT[Sub, u32, 6, 4],
+        INT SL_TYPE_MUL_INT = 24 => FB_MUL_INT[Mul, i16, 2, 6], UINT SL_TYPE_MUL_UINT = 25 => FB_MUL_UINT[Mul, u16, 2, 6],
+        DINT SL_TYPE_MUL_DINT = 26 => FB_MUL_DINT[Mul, i32, 6, 4], UDINT SL_TYPE_MUL_UDINT = 27 => FB_MUL_UDINT[Mul, u32, 6, 4]
+}
+super::analog_variants! {
+    FB_DIV:
+        INT SL_TYPE_DIV_INT = 28 => FB_DIV_INT[i16, 0, 6], UINT SL_TYPE_DIV_UINT = 29 => FB_DIV_UINT[u16, 0, 6],
+        DINT SL_TYPE_DIV_DINT = 30 => FB_DIV_DINT[i32, 4, 4], UDINT SL_TYPE_DIV_UDINT = 31 => FB_DIV_UDINT[u32, 4, 4]
+}
 
 /// `nRounding` Floor: toward −∞ (docs/semantics.md A2).
 pub const SL_ROUNDING_FLOOR: u16 = 0;
@@ -177,157 +160,81 @@ pub fn divide(a: i128, b: i128, rounding: u16) -> i128 {
     }
 }
 
-/// Private state of the arithmetic blocks (48 bytes). Never written by the user.
-#[repr(C)]
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-#[allow(non_snake_case, non_camel_case_types)]
-pub struct SL_ARITH_PRIVATE {
-    /// Common head.
-    pub stHeader: SL_PRIVATE_HEADER,
-    /// Latched `wInputActive`.
-    pub wActive: u16,
-    /// Latched `nRounding` (0 for ADD, SUB, MUL).
-    pub wRounding: u16,
-    /// The result of the last RUN cycle as a 32-bit pattern.
-    pub dwOut: u32,
-    /// Diag message parameters 2 and 3 latched at the ERROR entry.
-    pub adwPar: [u32; 2],
-    pub aReserved: [u8; 4],
+crate::base::layout::private_struct! {
+    /// Private state of the arithmetic blocks (48 bytes). Never written by the user.
+    SL_ARITH_PRIVATE {
+        /// Latched `wInputActive`.
+        pub wActive: u16,
+        /// Latched `nRounding` (0 for ADD, SUB, MUL).
+        pub wRounding: u16,
+        /// The result of the last RUN cycle as a 32-bit pattern.
+        pub dwOut: u32,
+        /// Diag message parameters 2 and 3 latched at the ERROR entry.
+        pub adwPar: [u32; 2],
+        pub aReserved: [u8; 4],
+    }
 }
 
 const _: () = assert!(core::mem::size_of::<SL_ARITH_PRIVATE>() == 48);
 
-/// FB ADD / SUB / MUL instance (ABI-2 §11.2). `P1` and `P2` are the reserved bytes that
-/// make the 16- and 32-bit layouts differ (after the parameters, after AnalogOut).
-#[repr(C)]
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-#[allow(non_snake_case, non_camel_case_types)]
-pub struct FB_ARITH<O, T, const P1: usize, const P2: usize> {
-    /// Offset 0. Reserved, keep 0 (no BOOL inputs).
-    pub aReserved0: [u8; 16],
-    /// Offset 16. FbRun of the owning group: TRUE = the block executes.
-    pub bRun: SL_BOOL,
-    /// Offset 17. ErrAck of the owning group.
-    pub bErrAck: SL_BOOL,
-    /// Offset 18. Reserved, keep 0.
-    pub aReserved1: [u8; 6],
-    /// At the analog input base 24: AnalogIn1 (active bit 8, required).
-    pub nAnalogIn1: T,
-    /// At 24 + W: AnalogIn2 (active bit 9, required).
-    pub nAnalogIn2: T,
-    /// At 24 + 2W: bits 8 and 9 must be set, no other (ARITH_ACTIVE).
-    pub wInputActive: u16,
-    /// Reserved up to the output base (16-bit: 2 bytes, 32-bit: 6).
-    pub aReserved2: [u8; P1],
-    /// At the output base (16-bit 32, 32-bit 40): Error, TRUE in ERROR only.
-    pub bError: SL_BOOL,
-    /// Reserved up to the analog output base.
-    pub aReserved3: [u8; 7],
-    /// At the output base + 8: AnalogOut, the result in RUN, else 0.
-    pub nAnalogOut: T,
-    /// Reserved up to the info data.
-    pub aReserved4: [u8; P2],
-    /// Info + 0: the manual's status value (RUN, STOP, ERROR, RESET).
-    pub nState: u8,
-    /// Info + 1. Reserved.
-    pub aReserved5: [u8; 1],
-    /// Info + 2: diag value (1 underflow, 2 overflow) + library bits 13-15.
-    pub nDiag: u16,
-    /// Info + 4: Text ID of the latched diag message (0x4080, 0x4081), 0 = none.
-    pub nDiagTextId: u16,
-    /// Info + 6. Reserved.
-    pub aReserved6: [u8; 2],
-    /// Info + 8: message parameter 2 (AnalogIn1 as a 32-bit pattern).
-    pub dwDiagPar2: u32,
-    /// Info + 12: message parameter 3 (AnalogIn2).
-    pub dwDiagPar3: u32,
-    /// Info + 16: private state, 48 bytes: never write it.
-    pub stPrivate: SL_ARITH_PRIVATE,
+crate::base::layout::block_struct! {
+    /// FB ADD / SUB / MUL instance (ABI-2 §11.2). `P1` and `P2` are the reserved bytes that
+    /// make the 16- and 32-bit layouts differ (after the parameters, after AnalogOut).
+    FB_ARITH[O: ArithOp, T: Analog; P1, P2] {
+        no_bool_inputs;
+        /// At the analog input base 24: AnalogIn1 (active bit 8, required).
+        pub nAnalogIn1: T,
+        /// At 24 + W: AnalogIn2 (active bit 9, required).
+        pub nAnalogIn2: T,
+        /// At 24 + 2W: bits 8 and 9 must be set, no other (ARITH_ACTIVE).
+        pub wInputActive: u16,
+        /// Reserved up to the output base (16-bit: 2 bytes, 32-bit: 6).
+        pub aReserved2: [u8; P1],
+        /// At the output base (16-bit 32, 32-bit 40): Error, TRUE in ERROR only.
+        pub bError: SL_BOOL,
+        /// Reserved up to the analog output base.
+        pub aReserved3: [u8; 7],
+        /// At the output base + 8: AnalogOut, the result in RUN, else 0.
+        pub nAnalogOut: T,
+        /// Reserved up to the info data.
+        pub aReserved4: [u8; P2],
+    } info [aReserved5, aReserved6] SL_ARITH_PRIVATE, "48 bytes":
+        "the manual's status value (RUN, STOP, ERROR, RESET).",
+        "diag value (1 underflow, 2 overflow) + library bits 13-15.",
+        "Text ID of the latched diag message (0x4080, 0x4081), 0 = none.",
+        "message parameter 2 (AnalogIn1 as a 32-bit pattern).", "message parameter 3 (AnalogIn2).";
     /// The operation (no bytes).
-    pub _op: PhantomData<O>,
+    pub _op: PhantomData<O>
 }
 
-/// FB DIV instance (ABI-2 §11.2): as [`FB_ARITH`] with `nRounding` before `wInputActive`.
-#[repr(C)]
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-#[allow(non_snake_case, non_camel_case_types)]
-pub struct FB_DIV<T, const P1: usize, const P2: usize> {
-    /// Offset 0. Reserved, keep 0 (no BOOL inputs).
-    pub aReserved0: [u8; 16],
-    /// Offset 16. FbRun of the owning group: TRUE = the block executes.
-    pub bRun: SL_BOOL,
-    /// Offset 17. ErrAck of the owning group.
-    pub bErrAck: SL_BOOL,
-    /// Offset 18. Reserved, keep 0.
-    pub aReserved1: [u8; 6],
-    /// At the analog input base 24: AnalogIn1, the dividend (active bit 8, required).
-    pub nAnalogIn1: T,
-    /// At 24 + W: AnalogIn2, the divisor (active bit 9, required); 0 gives 0, no error.
-    pub nAnalogIn2: T,
-    /// At 24 + 2W: "Division Rounding": SL_ROUNDING_FLOOR, _CEIL, _ROUND.
-    pub nRounding: u16,
-    /// At 26 + 2W: bits 8 and 9 must be set, no other (ARITH_ACTIVE).
-    pub wInputActive: u16,
-    /// Reserved up to the output base (16-bit: none, 32-bit: 4 bytes).
-    pub aReserved2: [u8; P1],
-    /// At the output base (16-bit 32, 32-bit 40): Error, TRUE in ERROR only.
-    pub bError: SL_BOOL,
-    /// Reserved up to the analog output base.
-    pub aReserved3: [u8; 7],
-    /// At the output base + 8: AnalogOut, the rounded quotient in RUN, else 0.
-    pub nAnalogOut: T,
-    /// Reserved up to the info data.
-    pub aReserved4: [u8; P2],
-    /// Info + 0: the manual's status value (RUN, STOP, ERROR, RESET).
-    pub nState: u8,
-    /// Info + 1. Reserved.
-    pub aReserved5: [u8; 1],
-    /// Info + 2: diag value (2 overflow: MIN ÷ −1) + library bits 13-15.
-    pub nDiag: u16,
-    /// Info + 4: Text ID of the latched diag message (0x4081), 0 = none.
-    pub nDiagTextId: u16,
-    /// Info + 6. Reserved.
-    pub aReserved6: [u8; 2],
-    /// Info + 8: message parameter 2 (AnalogIn1 as a 32-bit pattern).
-    pub dwDiagPar2: u32,
-    /// Info + 12: message parameter 3 (AnalogIn2).
-    pub dwDiagPar3: u32,
-    /// Info + 16: private state, 48 bytes: never write it.
-    pub stPrivate: SL_ARITH_PRIVATE,
+crate::base::layout::block_struct! {
+    /// FB DIV instance (ABI-2 §11.2): as [`FB_ARITH`] with `nRounding` before `wInputActive`.
+    FB_DIV[T: Analog; P1, P2] {
+        no_bool_inputs;
+        /// At the analog input base 24: AnalogIn1, the dividend (active bit 8, required).
+        pub nAnalogIn1: T,
+        /// At 24 + W: AnalogIn2, the divisor (active bit 9, required); 0 gives 0, no error.
+        pub nAnalogIn2: T,
+        /// At 24 + 2W: "Division Rounding": SL_ROUNDING_FLOOR, _CEIL, _ROUND.
+        pub nRounding: u16,
+        /// At 26 + 2W: bits 8 and 9 must be set, no other (ARITH_ACTIVE).
+        pub wInputActive: u16,
+        /// Reserved up to the output base (16-bit: none, 32-bit: 4 bytes).
+        pub aReserved2: [u8; P1],
+        /// At the output base (16-bit 32, 32-bit 40): Error, TRUE in ERROR only.
+        pub bError: SL_BOOL,
+        /// Reserved up to the analog output base.
+        pub aReserved3: [u8; 7],
+        /// At the output base + 8: AnalogOut, the rounded quotient in RUN, else 0.
+        pub nAnalogOut: T,
+        /// Reserved up to the info data.
+        pub aReserved4: [u8; P2],
+    } info [aReserved5, aReserved6] SL_ARITH_PRIVATE, "48 bytes":
+        "the manual's status value (RUN, STOP, ERROR, RESET).",
+        "diag value (2 overflow: MIN ÷ −1) + library bits 13-15.",
+        "Text ID of the latched diag message (0x4081), 0 = none.",
+        "message parameter 2 (AnalogIn1 as a 32-bit pattern).", "message parameter 3 (AnalogIn2)."
 }
-
-/// FB ADD, INT variant.
-pub type FB_ADD_INT = FB_ARITH<Add, i16, 2, 6>;
-/// FB ADD, UINT variant.
-pub type FB_ADD_UINT = FB_ARITH<Add, u16, 2, 6>;
-/// FB ADD, DINT variant.
-pub type FB_ADD_DINT = FB_ARITH<Add, i32, 6, 4>;
-/// FB ADD, UDINT variant.
-pub type FB_ADD_UDINT = FB_ARITH<Add, u32, 6, 4>;
-/// FB SUB, INT variant.
-pub type FB_SUB_INT = FB_ARITH<Sub, i16, 2, 6>;
-/// FB SUB, UINT variant.
-pub type FB_SUB_UINT = FB_ARITH<Sub, u16, 2, 6>;
-/// FB SUB, DINT variant.
-pub type FB_SUB_DINT = FB_ARITH<Sub, i32, 6, 4>;
-/// FB SUB, UDINT variant.
-pub type FB_SUB_UDINT = FB_ARITH<Sub, u32, 6, 4>;
-/// FB MUL, INT variant.
-pub type FB_MUL_INT = FB_ARITH<Mul, i16, 2, 6>;
-/// FB MUL, UINT variant.
-pub type FB_MUL_UINT = FB_ARITH<Mul, u16, 2, 6>;
-/// FB MUL, DINT variant.
-pub type FB_MUL_DINT = FB_ARITH<Mul, i32, 6, 4>;
-/// FB MUL, UDINT variant.
-pub type FB_MUL_UDINT = FB_ARITH<Mul, u32, 6, 4>;
-/// FB DIV, INT variant.
-pub type FB_DIV_INT = FB_DIV<i16, 0, 6>;
-/// FB DIV, UINT variant.
-pub type FB_DIV_UINT = FB_DIV<u16, 0, 6>;
-/// FB DIV, DINT variant.
-pub type FB_DIV_DINT = FB_DIV<i32, 4, 4>;
-/// FB DIV, UDINT variant.
-pub type FB_DIV_UDINT = FB_DIV<u32, 4, 4>;
 
 // The ABI-2 §11.2 numbers of the two DIV layouts (the one place `nRounding` sits).
 const _: () = {
@@ -439,71 +346,11 @@ macro_rules! arith_fb {
                 (self.nDiagTextId, self.dwDiagPar2, self.dwDiagPar3) = msg;
             }
         }
-
-        impl<$($gen)*> Default for $ty {
-            fn default() -> Self {
-                Self::zeroed()
-            }
-        }
     };
 }
 
 arith_fb!([O: ArithOp, T: Analog, const P1: usize, const P2: usize] FB_ARITH<O, T, P1, P2>, O, |_: &Self| 0);
 arith_fb!([T: Analog, const P1: usize, const P2: usize] FB_DIV<T, P1, P2>, Div, |s: &Self| s.nRounding);
-
-/// An all-zero instance of either struct; `$extra` are the fields only one of them has.
-macro_rules! zeroed {
-    ($($extra:ident: $v:expr),*) => {
-        Self {
-            aReserved0: [0; 16],
-            bRun: 0,
-            bErrAck: 0,
-            aReserved1: [0; 6],
-            nAnalogIn1: T::ZERO,
-            nAnalogIn2: T::ZERO,
-            wInputActive: 0,
-            aReserved2: [0; P1],
-            bError: 0,
-            aReserved3: [0; 7],
-            nAnalogOut: T::ZERO,
-            aReserved4: [0; P2],
-            nState: 0,
-            aReserved5: [0; 1],
-            nDiag: 0,
-            nDiagTextId: 0,
-            aReserved6: [0; 2],
-            dwDiagPar2: 0,
-            dwDiagPar3: 0,
-            stPrivate: SL_ARITH_PRIVATE::ZERO,
-            $($extra: $v),*
-        }
-    };
-}
-
-impl<O, T: Analog, const P1: usize, const P2: usize> FB_ARITH<O, T, P1, P2> {
-    /// An all-zero instance (valid: it initialises itself on the first cycle, ABI §3.6).
-    pub const fn zeroed() -> Self {
-        zeroed!(_op: PhantomData)
-    }
-}
-
-impl<T: Analog, const P1: usize, const P2: usize> FB_DIV<T, P1, P2> {
-    /// An all-zero instance (valid: it initialises itself on the first cycle, ABI §3.6).
-    pub const fn zeroed() -> Self {
-        zeroed!(nRounding: 0)
-    }
-}
-
-impl SL_ARITH_PRIVATE {
-    const ZERO: Self = Self {
-        stHeader: SL_PRIVATE_HEADER::ZERO,
-        wActive: 0,
-        wRounding: 0,
-        dwOut: 0,
-        adwPar: [0; 2],
-        aReserved: [0; 4],
-    };
-}
 
 /// Parameters as the user wrote them.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

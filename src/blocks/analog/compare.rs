@@ -14,18 +14,15 @@
 use super::{magic, Analog};
 use crate::base::block::{Private, Registered};
 use crate::base::envelope::Block;
-use crate::base::header::{param_crc, SL_PRIVATE_HEADER};
+use crate::base::header::param_crc;
 use crate::base::time;
 use crate::base::types::*;
 
-/// Type tag of FB_COMPARE_INT (ABI-2 §10.6: sequential from 16 in the order of §10.3).
-pub const SL_TYPE_COMPARE_INT: u16 = 32;
-/// FB_COMPARE_UINT.
-pub const SL_TYPE_COMPARE_UINT: u16 = 33;
-/// FB_COMPARE_DINT.
-pub const SL_TYPE_COMPARE_DINT: u16 = 34;
-/// FB_COMPARE_UDINT.
-pub const SL_TYPE_COMPARE_UDINT: u16 = 35;
+super::analog_variants! {
+    FB_COMPARE:
+        INT SL_TYPE_COMPARE_INT = 32 => FB_COMPARE_INT[i16, 2, 6], UINT SL_TYPE_COMPARE_UINT = 33 => FB_COMPARE_UINT[u16, 2, 6],
+        DINT SL_TYPE_COMPARE_DINT = 34 => FB_COMPARE_DINT[i32, 0, 4], UDINT SL_TYPE_COMPARE_UDINT = 35 => FB_COMPARE_UDINT[u32, 0, 4]
+}
 
 /// `nArchitecture` 1oo2: CompIn1 and CompIn2 must agree.
 pub const SL_ARCH_1OO2: u16 = 2;
@@ -34,99 +31,66 @@ pub const SL_ARCH_2OO3: u16 = 3;
 /// `nArchitecture` 3oo5: three of CompIn1–5 must agree.
 pub const SL_ARCH_3OO5: u16 = 5;
 
-/// Private state of FB COMPARE (48 bytes). Never written by the user. The header's `tPhase`
-/// is the start of the DelayOutTimer.
-#[repr(C)]
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-#[allow(non_snake_case)]
-pub struct SL_COMPARE_PRIVATE {
-    /// Common head.
-    pub stHeader: SL_PRIVATE_HEADER,
-    /// Latched `tToleranceTime`.
-    pub tTolerance: u32,
-    /// Latched `nAllowedDeviation`.
-    pub dwDeviation: u32,
-    /// Latched `nArchitecture`.
-    pub wArchitecture: u16,
-    /// Latched `wInputActive`.
-    pub wActive: u16,
-    /// CompOut of the last RUN cycle (held in DELAYOUT) as a 32-bit pattern.
-    pub dwOut: u32,
-    /// Reserved.
-    pub aReserved: [u8; 4],
+crate::base::layout::private_struct! {
+    /// Private state of FB COMPARE (48 bytes). Never written by the user. The header's `tPhase`
+    /// is the start of the DelayOutTimer.
+    SL_COMPARE_PRIVATE {
+        /// Latched `tToleranceTime`.
+        pub tTolerance: u32,
+        /// Latched `nAllowedDeviation`.
+        pub dwDeviation: u32,
+        /// Latched `nArchitecture`.
+        pub wArchitecture: u16,
+        /// Latched `wInputActive`.
+        pub wActive: u16,
+        /// CompOut of the last RUN cycle (held in DELAYOUT) as a 32-bit pattern.
+        pub dwOut: u32,
+        /// Reserved.
+        pub aReserved: [u8; 4],
+    }
 }
 
-/// FB COMPARE instance (ABI-2 §11.3), generic over the signal type `T`; `P1` (after
-/// CompIn5) and `P2` (after CompOut) are the reserved gaps that make the 16- and 32-bit
-/// layouts differ.
-#[repr(C)]
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-#[allow(non_snake_case)]
-pub struct FB_COMPARE<T, const P1: usize, const P2: usize> {
-    /// Offset 0. Reserved, keep 0 (no BOOL inputs).
-    pub aReserved0: [u8; 16],
-    /// Offset 16. FbRun of the owning group: TRUE = the block executes.
-    pub bRun: SL_BOOL,
-    /// Offset 17. ErrAck of the owning group.
-    pub bErrAck: SL_BOOL,
-    /// Offset 18. Reserved, keep 0.
-    pub aReserved1: [u8; 6],
-    /// At the analog input base 24: CompIn1 (active bit 8).
-    pub nCompIn1: T,
-    /// At 24 + W: CompIn2 (active bit 9).
-    pub nCompIn2: T,
-    /// At 24 + 2W: CompIn3 (active bit 10; 2oo3, 3oo5).
-    pub nCompIn3: T,
-    /// At 24 + 3W: CompIn4 (active bit 11; 3oo5).
-    pub nCompIn4: T,
-    /// At 24 + 4W: CompIn5 (active bit 12; 3oo5).
-    pub nCompIn5: T,
-    /// Reserved (16-bit: 2 bytes, 32-bit: none).
-    pub aReserved2: [u8; P1],
-    /// "Tolerance Time (ms)", the DelayOutTimer: 0 to 65,535 ms.
-    pub tToleranceTime: u32,
-    /// "Allowed Deviation" (UDINT in every variant).
-    pub nAllowedDeviation: u32,
-    /// "Architecture": SL_ARCH_1OO2 (2), SL_ARCH_2OO3 (3), SL_ARCH_3OO5 (5).
-    pub nArchitecture: u16,
-    /// Exactly the bits 8 … 8 + nArchitecture − 1.
-    pub wInputActive: u16,
-    /// At the output base (16-bit 48, 32-bit 56): Error, TRUE in ERROR only.
-    pub bError: SL_BOOL,
-    /// Output base + 1: IsValid, TRUE in RUN and DELAYOUT.
-    pub bIsValid: SL_BOOL,
-    /// Reserved up to the analog output base.
-    pub aReserved3: [u8; 6],
-    /// At the output base + 8: CompOut, CompInX in RUN, held in DELAYOUT, else 0.
-    pub nCompOut: T,
-    /// Reserved up to the info data.
-    pub aReserved4: [u8; P2],
-    /// Info + 0: the manual's status value.
-    pub nState: u8,
-    /// Info + 1. Reserved.
-    pub aReserved5: [u8; 1],
-    /// Info + 2: diag value (0) + library bits 13-15.
-    pub nDiag: u16,
-    /// Info + 4: Text ID of the latched diag message, 0 = none.
-    pub nDiagTextId: u16,
-    /// Info + 6. Reserved.
-    pub aReserved6: [u8; 2],
-    /// Info + 8: message parameter 2.
-    pub dwDiagPar2: u32,
-    /// Info + 12: message parameter 3.
-    pub dwDiagPar3: u32,
-    /// Info + 16: private state, 48 bytes: never write it.
-    pub stPrivate: SL_COMPARE_PRIVATE,
+crate::base::layout::block_struct! {
+    /// FB COMPARE instance (ABI-2 §11.3), generic over the signal type `T`; `P1` (after
+    /// CompIn5) and `P2` (after CompOut) are the reserved gaps that make the 16- and 32-bit
+    /// layouts differ.
+    FB_COMPARE[T: Analog; P1, P2] {
+        no_bool_inputs;
+        /// At the analog input base 24: CompIn1 (active bit 8).
+        pub nCompIn1: T,
+        /// At 24 + W: CompIn2 (active bit 9).
+        pub nCompIn2: T,
+        /// At 24 + 2W: CompIn3 (active bit 10; 2oo3, 3oo5).
+        pub nCompIn3: T,
+        /// At 24 + 3W: CompIn4 (active bit 11; 3oo5).
+        pub nCompIn4: T,
+        /// At 24 + 4W: CompIn5 (active bit 12; 3oo5).
+        pub nCompIn5: T,
+        /// Reserved (16-bit: 2 bytes, 32-bit: none).
+        pub aReserved2: [u8; P1],
+        /// "Tolerance Time (ms)", the DelayOutTimer: 0 to 65,535 ms.
+        pub tToleranceTime: u32,
+        /// "Allowed Deviation" (UDINT in every variant).
+        pub nAllowedDeviation: u32,
+        /// "Architecture": SL_ARCH_1OO2 (2), SL_ARCH_2OO3 (3), SL_ARCH_3OO5 (5).
+        pub nArchitecture: u16,
+        /// Exactly the bits 8 … 8 + nArchitecture − 1.
+        pub wInputActive: u16,
+        /// At the output base (16-bit 48, 32-bit 56): Error, TRUE in ERROR only.
+        pub bError: SL_BOOL,
+        /// Output base + 1: IsValid, TRUE in RUN and DELAYOUT.
+        pub bIsValid: SL_BOOL,
+        /// Reserved up to the analog output base.
+        pub aReserved3: [u8; 6],
+        /// At the output base + 8: CompOut, CompInX in RUN, held in DELAYOUT, else 0.
+        pub nCompOut: T,
+        /// Reserved up to the info data.
+        pub aReserved4: [u8; P2],
+    } info [aReserved5, aReserved6] SL_COMPARE_PRIVATE, "48 bytes":
+        "the manual's status value.", "diag value (0) + library bits 13-15.",
+        "Text ID of the latched diag message, 0 = none.", "message parameter 2.",
+        "message parameter 3."
 }
-
-/// FB COMPARE, INT variant.
-pub type FB_COMPARE_INT = FB_COMPARE<i16, 2, 6>;
-/// FB COMPARE, UINT variant.
-pub type FB_COMPARE_UINT = FB_COMPARE<u16, 2, 6>;
-/// FB COMPARE, DINT variant.
-pub type FB_COMPARE_DINT = FB_COMPARE<i32, 0, 4>;
-/// FB COMPARE, UDINT variant.
-pub type FB_COMPARE_UDINT = FB_COMPARE<u32, 0, 4>;
 
 // The ABI-2 §11.3 numbers of the two layouts (parameters, output base).
 const _: () = {
@@ -170,55 +134,6 @@ crate::impl_member!([T: Analog, const P1: usize, const P2: usize] FB_COMPARE<T, 
     output: [bError, bIsValid, nCompOut],
     info_fields: [nDiagTextId, dwDiagPar2, dwDiagPar3],
 });
-
-impl<T: Analog, const P1: usize, const P2: usize> FB_COMPARE<T, P1, P2> {
-    /// An all-zero instance (valid: it initialises itself on the first cycle, ABI §3.6).
-    pub const fn zeroed() -> Self {
-        Self {
-            aReserved0: [0; 16],
-            bRun: 0,
-            bErrAck: 0,
-            aReserved1: [0; 6],
-            nCompIn1: T::ZERO,
-            nCompIn2: T::ZERO,
-            nCompIn3: T::ZERO,
-            nCompIn4: T::ZERO,
-            nCompIn5: T::ZERO,
-            aReserved2: [0; P1],
-            tToleranceTime: 0,
-            nAllowedDeviation: 0,
-            nArchitecture: 0,
-            wInputActive: 0,
-            bError: 0,
-            bIsValid: 0,
-            aReserved3: [0; 6],
-            nCompOut: T::ZERO,
-            aReserved4: [0; P2],
-            nState: 0,
-            aReserved5: [0; 1],
-            nDiag: 0,
-            nDiagTextId: 0,
-            aReserved6: [0; 2],
-            dwDiagPar2: 0,
-            dwDiagPar3: 0,
-            stPrivate: SL_COMPARE_PRIVATE {
-                stHeader: SL_PRIVATE_HEADER::ZERO,
-                tTolerance: 0,
-                dwDeviation: 0,
-                wArchitecture: 0,
-                wActive: 0,
-                dwOut: 0,
-                aReserved: [0; 4],
-            },
-        }
-    }
-}
-
-impl<T: Analog, const P1: usize, const P2: usize> Default for FB_COMPARE<T, P1, P2> {
-    fn default() -> Self {
-        Self::zeroed()
-    }
-}
 
 /// Parameters as the user wrote them.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

@@ -15,17 +15,14 @@ use super::{diag_message, magic, Analog, SL_DIAG_VALUE_OVERFLOW, SL_DIAG_VALUE_U
 use crate::base::block::{Private, Registered};
 use crate::base::bools;
 use crate::base::envelope::Block;
-use crate::base::header::{param_crc, SL_PRIVATE_HEADER};
+use crate::base::header::param_crc;
 use crate::base::types::*;
 
-/// Type tag of FB_COUNTER_INT (ABI-2 §10.6: after the ten four-variant blocks of §10.3).
-pub const SL_TYPE_COUNTER_INT: u16 = 56;
-/// FB_COUNTER_UINT.
-pub const SL_TYPE_COUNTER_UINT: u16 = 57;
-/// FB_COUNTER_DINT.
-pub const SL_TYPE_COUNTER_DINT: u16 = 58;
-/// FB_COUNTER_UDINT.
-pub const SL_TYPE_COUNTER_UDINT: u16 = 59;
+super::analog_variants! {
+    FB_COUNTER:
+        INT SL_TYPE_COUNTER_INT = 56 => FB_COUNTER_INT[i16, 6, 6], UINT SL_TYPE_COUNTER_UINT = 57 => FB_COUNTER_UINT[u16, 6, 6],
+        DINT SL_TYPE_COUNTER_DINT = 58 => FB_COUNTER_DINT[i32, 2, 4], UDINT SL_TYPE_COUNTER_UDINT = 59 => FB_COUNTER_UDINT[u32, 2, 4]
+}
 
 /// Diag message "An underflow has occurred" (parameters: ActValue, smallest permitted value).
 pub const SL_TEXT_COUNTER_UNDERFLOW: u16 = 0x40B8;
@@ -35,93 +32,71 @@ pub const SL_TEXT_COUNTER_OVERFLOW: u16 = 0x40B9;
 /// `wInputActive` bits of Reset, CountUp, CountDown (optional: an inactive input reads FALSE).
 pub const SL_COUNTER_ACTIVE_INPUTS: u16 = 0x0007;
 
-/// Private state of FB COUNTER (56 bytes). Never written by the user.
-#[repr(C)]
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-#[allow(non_snake_case)]
-pub struct SL_COUNTER_PRIVATE {
-    /// Common head (`nActive`: latched `wInputActive`; `wAux`: previous CountUp (bit 0) and
-    /// CountDown (bit 1) levels for the edges).
-    pub stHeader: SL_PRIVATE_HEADER,
-    /// Reserved.
-    pub aReserved0: [u8; 4],
-    /// Latched `nPresetValue`, `nCounterLimit` as 32-bit patterns.
-    pub adwParam: [u32; 2],
-    /// The counter (ActValue) as a 32-bit pattern.
-    pub dwCount: u32,
-    /// Diag message parameters 2 and 3 latched at the ERROR entry.
-    pub adwPar: [u32; 2],
-    /// Reserved.
-    pub aReserved1: [u8; 4],
+crate::base::layout::private_struct! {
+    /// Private state of FB COUNTER (56 bytes). Never written by the user.
+    SL_COUNTER_PRIVATE {
+        /// Common head (`nActive`: latched `wInputActive`; `wAux`: previous CountUp (bit 0) and
+        /// CountDown (bit 1) levels for the edges).
+        stHeader;
+        /// Reserved.
+        pub aReserved0: [u8; 4],
+        /// Latched `nPresetValue`, `nCounterLimit` as 32-bit patterns.
+        pub adwParam: [u32; 2],
+        /// The counter (ActValue) as a 32-bit pattern.
+        pub dwCount: u32,
+        /// Diag message parameters 2 and 3 latched at the ERROR entry.
+        pub adwPar: [u32; 2],
+        /// Reserved.
+        pub aReserved1: [u8; 4],
+    }
 }
 
-/// FB COUNTER instance (ABI-2 §11.5), generic over the type `T` of its values; `P1` and
-/// `P2` are the reserved gaps (after `wInputActive`, after ActValue) that make the 16- and
-/// 32-bit layouts differ.
-#[repr(C)]
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-#[allow(non_snake_case)]
-pub struct FB_COUNTER<T, const P1: usize, const P2: usize> {
-    /// Offset 0. Reset: TRUE (level) sets ActValue to PresetValue (active bit 0).
-    pub bReset: SL_BOOL,
-    /// Offset 1. CountUp: a rising edge adds 1 (active bit 1).
-    pub bCountUp: SL_BOOL,
-    /// Offset 2. CountDown: a rising edge subtracts 1 (active bit 2).
-    pub bCountDown: SL_BOOL,
-    /// Offset 3. Reserved, keep 0.
-    pub aReserved0: [u8; 13],
-    /// Offset 16. FbRun of the owning group: TRUE = the block executes.
-    pub bRun: SL_BOOL,
-    /// Offset 17. ErrAck of the owning group.
-    pub bErrAck: SL_BOOL,
-    /// Offset 18. Reserved, keep 0.
-    pub aReserved1: [u8; 2],
-    /// At 20: "Preset Value", ActValue while Reset is TRUE.
-    pub nPresetValue: T,
-    /// At 20 + W: "Counter Limit": CounterOut = ActValue ≥ CounterLimit.
-    pub nCounterLimit: T,
-    /// At 20 + 2W: bits 0–2 (Reset, CountUp, CountDown), no other.
-    pub wInputActive: u16,
-    /// Reserved up to the output base 32 (16-bit: 6 bytes, 32-bit: 2).
-    pub aReserved2: [u8; P1],
-    /// Output base 32: Error, TRUE in ERROR only.
-    pub bError: SL_BOOL,
-    /// 33: CounterOut, in RUN: ActValue ≥ CounterLimit.
-    pub bCounterOut: SL_BOOL,
-    /// 34: CounterZero, in RUN: ActValue == 0.
-    pub bCounterZero: SL_BOOL,
-    /// 35. Reserved.
-    pub aReserved3: [u8; 5],
-    /// Analog output base 40: ActValue, the counter in RUN, else 0.
-    pub nActValue: T,
-    /// Reserved up to the info data 48 (16-bit: 6 bytes, 32-bit: 4).
-    pub aReserved4: [u8; P2],
-    /// Info 48: the manual's status value (RUN, STOP, ERROR, RESET).
-    pub nState: u8,
-    /// 49. Reserved.
-    pub aReserved5: [u8; 1],
-    /// 50: diag value (1 underflow, 2 overflow) + library bits 13-15.
-    pub nDiag: u16,
-    /// 52: Text ID of the latched diag message (0x40B8, 0x40B9), 0 = none.
-    pub nDiagTextId: u16,
-    /// 54. Reserved.
-    pub aReserved6: [u8; 2],
-    /// 56: message parameter 2 (ActValue before the step, as a 32-bit pattern).
-    pub dwDiagPar2: u32,
-    /// 60: message parameter 3 (the smallest / largest value of the type).
-    pub dwDiagPar3: u32,
-    /// 64: private state, 56 bytes: never write it.
-    pub stPrivate: SL_COUNTER_PRIVATE,
+crate::base::layout::block_struct! {
+    /// FB COUNTER instance (ABI-2 §11.5), generic over the type `T` of its values; `P1` and
+    /// `P2` are the reserved gaps (after `wInputActive`, after ActValue) that make the 16- and
+    /// 32-bit layouts differ.
+    FB_COUNTER[T: Analog; P1, P2] {
+        /// Offset 0. Reset: TRUE (level) sets ActValue to PresetValue (active bit 0).
+        pub bReset: SL_BOOL,
+        /// Offset 1. CountUp: a rising edge adds 1 (active bit 1).
+        pub bCountUp: SL_BOOL,
+        /// Offset 2. CountDown: a rising edge subtracts 1 (active bit 2).
+        pub bCountDown: SL_BOOL,
+        /// Offset 3. Reserved, keep 0.
+        pub aReserved0: [u8; 13],
+        /// Offset 16. FbRun of the owning group: TRUE = the block executes.
+        pub bRun: SL_BOOL,
+        /// Offset 17. ErrAck of the owning group.
+        pub bErrAck: SL_BOOL,
+        /// Offset 18. Reserved, keep 0.
+        pub aReserved1: [u8; 2],
+        /// At 20: "Preset Value", ActValue while Reset is TRUE.
+        pub nPresetValue: T,
+        /// At 20 + W: "Counter Limit": CounterOut = ActValue ≥ CounterLimit.
+        pub nCounterLimit: T,
+        /// At 20 + 2W: bits 0–2 (Reset, CountUp, CountDown), no other.
+        pub wInputActive: u16,
+        /// Reserved up to the output base 32 (16-bit: 6 bytes, 32-bit: 2).
+        pub aReserved2: [u8; P1],
+        /// Output base 32: Error, TRUE in ERROR only.
+        pub bError: SL_BOOL,
+        /// 33: CounterOut, in RUN: ActValue ≥ CounterLimit.
+        pub bCounterOut: SL_BOOL,
+        /// 34: CounterZero, in RUN: ActValue == 0.
+        pub bCounterZero: SL_BOOL,
+        /// 35. Reserved.
+        pub aReserved3: [u8; 5],
+        /// Analog output base 40: ActValue, the counter in RUN, else 0.
+        pub nActValue: T,
+        /// Reserved up to the info data 48 (16-bit: 6 bytes, 32-bit: 4).
+        pub aReserved4: [u8; P2],
+    } info [aReserved5, aReserved6] SL_COUNTER_PRIVATE, "56 bytes":
+        "the manual's status value (RUN, STOP, ERROR, RESET).",
+        "diag value (1 underflow, 2 overflow) + library bits 13-15.",
+        "Text ID of the latched diag message (0x40B8, 0x40B9), 0 = none.",
+        "message parameter 2 (ActValue before the step, as a 32-bit pattern).",
+        "message parameter 3 (the smallest / largest value of the type)."
 }
-
-/// FB COUNTER, INT variant.
-pub type FB_COUNTER_INT = FB_COUNTER<i16, 6, 6>;
-/// FB COUNTER, UINT variant.
-pub type FB_COUNTER_UINT = FB_COUNTER<u16, 6, 6>;
-/// FB COUNTER, DINT variant.
-pub type FB_COUNTER_DINT = FB_COUNTER<i32, 2, 4>;
-/// FB COUNTER, UDINT variant.
-pub type FB_COUNTER_UDINT = FB_COUNTER<u32, 2, 4>;
 
 // The ABI-2 §11.5 layout, every variant: parameters from 20, output base 32, ActValue at
 // 40, info at 48, private at 64.
@@ -155,52 +130,6 @@ crate::impl_member!([T: Analog, const P1: usize, const P2: usize] FB_COUNTER<T, 
     output: [bError, bCounterOut, bCounterZero, nActValue],
     info_fields: [nDiagTextId, dwDiagPar2, dwDiagPar3],
 });
-
-impl<T: Analog, const P1: usize, const P2: usize> FB_COUNTER<T, P1, P2> {
-    /// An all-zero instance (valid: it initialises itself on the first cycle, ABI §3.6).
-    pub const fn zeroed() -> Self {
-        Self {
-            bReset: 0,
-            bCountUp: 0,
-            bCountDown: 0,
-            aReserved0: [0; 13],
-            bRun: 0,
-            bErrAck: 0,
-            aReserved1: [0; 2],
-            nPresetValue: T::ZERO,
-            nCounterLimit: T::ZERO,
-            wInputActive: 0,
-            aReserved2: [0; P1],
-            bError: 0,
-            bCounterOut: 0,
-            bCounterZero: 0,
-            aReserved3: [0; 5],
-            nActValue: T::ZERO,
-            aReserved4: [0; P2],
-            nState: 0,
-            aReserved5: [0; 1],
-            nDiag: 0,
-            nDiagTextId: 0,
-            aReserved6: [0; 2],
-            dwDiagPar2: 0,
-            dwDiagPar3: 0,
-            stPrivate: SL_COUNTER_PRIVATE {
-                stHeader: SL_PRIVATE_HEADER::ZERO,
-                aReserved0: [0; 4],
-                adwParam: [0; 2],
-                dwCount: 0,
-                adwPar: [0; 2],
-                aReserved1: [0; 4],
-            },
-        }
-    }
-}
-
-impl<T: Analog, const P1: usize, const P2: usize> Default for FB_COUNTER<T, P1, P2> {
-    fn default() -> Self {
-        Self::zeroed()
-    }
-}
 
 /// Parameters as the user wrote them (preset and limit as 32-bit patterns of `T`).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

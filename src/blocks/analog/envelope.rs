@@ -17,18 +17,15 @@ use super::{diag_message, magic, Analog};
 use crate::base::block::{Private, Registered};
 use crate::base::bools;
 use crate::base::envelope::Block;
-use crate::base::header::{param_crc, SL_PRIVATE_HEADER};
+use crate::base::header::param_crc;
 use crate::base::time;
 use crate::base::types::*;
 
-/// Type tag of FB_ENVELOPE_INT (ABI-2 §10.6: sequential from 16 in the order of §10.3).
-pub const SL_TYPE_ENVELOPE_INT: u16 = 52;
-/// FB_ENVELOPE_UINT.
-pub const SL_TYPE_ENVELOPE_UINT: u16 = 53;
-/// FB_ENVELOPE_DINT.
-pub const SL_TYPE_ENVELOPE_DINT: u16 = 54;
-/// FB_ENVELOPE_UDINT.
-pub const SL_TYPE_ENVELOPE_UDINT: u16 = 55;
+super::analog_variants! {
+    FB_ENVELOPE:
+        INT SL_TYPE_ENVELOPE_INT = 52 => FB_ENVELOPE_INT[i16, 2], UINT SL_TYPE_ENVELOPE_UINT = 53 => FB_ENVELOPE_UINT[u16, 2],
+        DINT SL_TYPE_ENVELOPE_DINT = 54 => FB_ENVELOPE_DINT[i32, 0], UDINT SL_TYPE_ENVELOPE_UDINT = 55 => FB_ENVELOPE_UDINT[u32, 0]
+}
 
 /// State MONITOR (manual §4.32.2 "9.0"): SafeFunction fell, InValue outside the target
 /// window, checked against the envelope; SafeFunctionOut 1.
@@ -52,92 +49,69 @@ pub const SL_ENVELOPE_ACTIVE: u16 = 0x0101;
 /// Largest `tTimeAfterInTarget` and `tMaxTime` (ms; ABI-2 §12.9, semantics C10).
 pub const SL_ENVELOPE_TIME_MAX: u32 = 65_535;
 
-/// Private state of FB ENVELOPE (64 bytes). Never written by the user.
-#[repr(C)]
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-#[allow(non_snake_case)]
-pub struct SL_ENVELOPE_PRIVATE {
-    /// Common head (`tPhase`: the SafeFunction edge, where MaxTime and the envelope start).
-    pub stHeader: SL_PRIVATE_HEADER,
-    /// Latched Time after in Target, Max Time, Target Value, Offset.
-    pub adwParam: [u32; 4],
-    /// |InValue| latched at the SafeFunction edge (InValueLatch).
-    pub dwInValueLatch: u32,
-    /// Start of the "Time after in Target" timer (entry into DELAYOUT).
-    pub tInTarget: u32,
-    /// Diag message parameters 2 and 3 (InValue, ∓E(t)) latched at the ERROR entry.
-    pub adwPar: [u32; 2],
-    /// Latched `wInputActive`.
-    pub wActive: u16,
-    /// Reserved.
-    pub aReserved: [u8; 2],
+crate::base::layout::private_struct! {
+    /// Private state of FB ENVELOPE (64 bytes). Never written by the user.
+    SL_ENVELOPE_PRIVATE {
+        /// Common head (`tPhase`: the SafeFunction edge, where MaxTime and the envelope start).
+        stHeader;
+        /// Latched Time after in Target, Max Time, Target Value, Offset.
+        pub adwParam: [u32; 4],
+        /// |InValue| latched at the SafeFunction edge (InValueLatch).
+        pub dwInValueLatch: u32,
+        /// Start of the "Time after in Target" timer (entry into DELAYOUT).
+        pub tInTarget: u32,
+        /// Diag message parameters 2 and 3 (InValue, ∓E(t)) latched at the ERROR entry.
+        pub adwPar: [u32; 2],
+        /// Latched `wInputActive`.
+        pub wActive: u16,
+        /// Reserved.
+        pub aReserved: [u8; 2],
+    }
 }
 
-/// FB ENVELOPE instance (ABI-2 §11.11), generic over the signal type `T`; `P1` is the
-/// reserved gap after InValue (16-bit: 2 bytes, 32-bit: none), the only place where the
-/// layouts differ beyond the width.
-#[repr(C)]
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-#[allow(non_snake_case)]
-pub struct FB_ENVELOPE<T, const P1: usize> {
-    /// Offset 0. SafeFunction: FALSE starts the monitored stop (active bit 0, required).
-    pub bSafeFunction: SL_BOOL,
-    /// Offset 1. Reserved, keep 0.
-    pub aReserved0: [u8; 15],
-    /// Offset 16. FbRun of the owning group: TRUE = the block executes.
-    pub bRun: SL_BOOL,
-    /// Offset 17. ErrAck of the owning group.
-    pub bErrAck: SL_BOOL,
-    /// Offset 18. Reserved, keep 0.
-    pub aReserved1: [u8; 6],
-    /// At the analog input base 24: InValue, the monitored value (active bit 8, required).
-    pub nInValue: T,
-    /// Reserved up to 28 (16-bit: 2 bytes, 32-bit: none).
-    pub aReserved2: [u8; P1],
-    /// At 28: "Time after in Target (ms)", 0…65 535.
-    pub tTimeAfterInTarget: u32,
-    /// At 32: "Max Time (ms)", 1…65 535.
-    pub tMaxTime: u32,
-    /// At 36: "Target Value": the window −TargetValue…+TargetValue.
-    pub nTargetValue: u32,
-    /// At 40: "Offset", added to |InValue| for the envelope's start.
-    pub nOffset: u32,
-    /// At 44: bits 0 and 8 must be set (SL_ENVELOPE_ACTIVE).
-    pub wInputActive: u16,
-    /// At 46. Reserved up to the output base.
-    pub aReserved3: [u8; 2],
-    /// At the output base 48: Error, TRUE in ERROR only.
-    pub bError: SL_BOOL,
-    /// Output base + 1: SafeFunction Out, TRUE in RUN, DELAYOUT and MONITOR.
-    pub bSafeFunctionOut: SL_BOOL,
-    /// Reserved up to the info data.
-    pub aReserved4: [u8; 6],
-    /// Info + 0 (56): the manual's status value.
-    pub nState: u8,
-    /// Info + 1. Reserved.
-    pub aReserved5: [u8; 1],
-    /// Info + 2: diag value (1 underflow, 2 overflow) + library bits 13-15.
-    pub nDiag: u16,
-    /// Info + 4: Text ID of the latched diag message (0x40C8, 0x40C9), 0 = none.
-    pub nDiagTextId: u16,
-    /// Info + 6. Reserved.
-    pub aReserved6: [u8; 2],
-    /// Info + 8: message parameter 2 (InValue as a 32-bit pattern).
-    pub dwDiagPar2: u32,
-    /// Info + 12: message parameter 3 (−E(t) for 0x40C8, +E(t) for 0x40C9).
-    pub dwDiagPar3: u32,
-    /// Info + 16 (72): private state, 64 bytes: never write it.
-    pub stPrivate: SL_ENVELOPE_PRIVATE,
+crate::base::layout::block_struct! {
+    /// FB ENVELOPE instance (ABI-2 §11.11), generic over the signal type `T`; `P1` is the
+    /// reserved gap after InValue (16-bit: 2 bytes, 32-bit: none), the only place where the
+    /// layouts differ beyond the width.
+    FB_ENVELOPE[T: Analog; P1] {
+        /// Offset 0. SafeFunction: FALSE starts the monitored stop (active bit 0, required).
+        pub bSafeFunction: SL_BOOL,
+        /// Offset 1. Reserved, keep 0.
+        pub aReserved0: [u8; 15],
+        /// Offset 16. FbRun of the owning group: TRUE = the block executes.
+        pub bRun: SL_BOOL,
+        /// Offset 17. ErrAck of the owning group.
+        pub bErrAck: SL_BOOL,
+        /// Offset 18. Reserved, keep 0.
+        pub aReserved1: [u8; 6],
+        /// At the analog input base 24: InValue, the monitored value (active bit 8, required).
+        pub nInValue: T,
+        /// Reserved up to 28 (16-bit: 2 bytes, 32-bit: none).
+        pub aReserved2: [u8; P1],
+        /// At 28: "Time after in Target (ms)", 0…65 535.
+        pub tTimeAfterInTarget: u32,
+        /// At 32: "Max Time (ms)", 1…65 535.
+        pub tMaxTime: u32,
+        /// At 36: "Target Value": the window −TargetValue…+TargetValue.
+        pub nTargetValue: u32,
+        /// At 40: "Offset", added to |InValue| for the envelope's start.
+        pub nOffset: u32,
+        /// At 44: bits 0 and 8 must be set (SL_ENVELOPE_ACTIVE).
+        pub wInputActive: u16,
+        /// At 46. Reserved up to the output base.
+        pub aReserved3: [u8; 2],
+        /// At the output base 48: Error, TRUE in ERROR only.
+        pub bError: SL_BOOL,
+        /// Output base + 1: SafeFunction Out, TRUE in RUN, DELAYOUT and MONITOR.
+        pub bSafeFunctionOut: SL_BOOL,
+        /// Reserved up to the info data.
+        pub aReserved4: [u8; 6],
+    } info [aReserved5, aReserved6] SL_ENVELOPE_PRIVATE, "64 bytes":
+        "the manual's status value.", "diag value (1 underflow, 2 overflow) + library bits 13-15.",
+        "Text ID of the latched diag message (0x40C8, 0x40C9), 0 = none.",
+        "message parameter 2 (InValue as a 32-bit pattern).",
+        "message parameter 3 (−E(t) for 0x40C8, +E(t) for 0x40C9)."
 }
-
-/// FB ENVELOPE, INT variant.
-pub type FB_ENVELOPE_INT = FB_ENVELOPE<i16, 2>;
-/// FB ENVELOPE, UINT variant.
-pub type FB_ENVELOPE_UINT = FB_ENVELOPE<u16, 2>;
-/// FB ENVELOPE, DINT variant.
-pub type FB_ENVELOPE_DINT = FB_ENVELOPE<i32, 0>;
-/// FB ENVELOPE, UDINT variant.
-pub type FB_ENVELOPE_UDINT = FB_ENVELOPE<u32, 0>;
 
 crate::base::block::block_states!(
     /// The states of FB ENVELOPE, every variant (manual §4.32.2).
@@ -170,52 +144,6 @@ crate::impl_member!([T: Analog, const P1: usize] FB_ENVELOPE<T, P1> {
     output: [bError, bSafeFunctionOut],
     info_fields: [nDiagTextId, dwDiagPar2, dwDiagPar3],
 });
-
-impl<T: Analog, const P1: usize> FB_ENVELOPE<T, P1> {
-    /// An all-zero instance (valid: it initialises itself on the first cycle, ABI §3.6).
-    pub const fn zeroed() -> Self {
-        Self {
-            bSafeFunction: 0,
-            aReserved0: [0; 15],
-            bRun: 0,
-            bErrAck: 0,
-            aReserved1: [0; 6],
-            nInValue: T::ZERO,
-            aReserved2: [0; P1],
-            tTimeAfterInTarget: 0,
-            tMaxTime: 0,
-            nTargetValue: 0,
-            nOffset: 0,
-            wInputActive: 0,
-            aReserved3: [0; 2],
-            bError: 0,
-            bSafeFunctionOut: 0,
-            aReserved4: [0; 6],
-            nState: 0,
-            aReserved5: [0; 1],
-            nDiag: 0,
-            nDiagTextId: 0,
-            aReserved6: [0; 2],
-            dwDiagPar2: 0,
-            dwDiagPar3: 0,
-            stPrivate: SL_ENVELOPE_PRIVATE {
-                stHeader: SL_PRIVATE_HEADER::ZERO,
-                adwParam: [0; 4],
-                dwInValueLatch: 0,
-                tInTarget: 0,
-                adwPar: [0; 2],
-                wActive: 0,
-                aReserved: [0; 2],
-            },
-        }
-    }
-}
-
-impl<T: Analog, const P1: usize> Default for FB_ENVELOPE<T, P1> {
-    fn default() -> Self {
-        Self::zeroed()
-    }
-}
 
 /// Parameters as the user wrote them.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

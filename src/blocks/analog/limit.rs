@@ -14,17 +14,14 @@
 use super::{diag_message, magic, Analog};
 use crate::base::block::{Private, Registered};
 use crate::base::envelope::Block;
-use crate::base::header::{param_crc, SL_PRIVATE_HEADER};
+use crate::base::header::param_crc;
 use crate::base::types::*;
 
-/// Type tag of FB_LIMIT_INT (ABI-2 §10.6: sequential from 16 in the order of §10.3).
-pub const SL_TYPE_LIMIT_INT: u16 = 36;
-/// FB_LIMIT_UINT.
-pub const SL_TYPE_LIMIT_UINT: u16 = 37;
-/// FB_LIMIT_DINT.
-pub const SL_TYPE_LIMIT_DINT: u16 = 38;
-/// FB_LIMIT_UDINT.
-pub const SL_TYPE_LIMIT_UDINT: u16 = 39;
+super::analog_variants! {
+    FB_LIMIT:
+        INT SL_TYPE_LIMIT_INT = 36 => FB_LIMIT_INT[i16, 4], UINT SL_TYPE_LIMIT_UINT = 37 => FB_LIMIT_UINT[u16, 4],
+        DINT SL_TYPE_LIMIT_DINT = 38 => FB_LIMIT_DINT[i32, 2], UDINT SL_TYPE_LIMIT_UDINT = 39 => FB_LIMIT_UDINT[u32, 2]
+}
 
 /// Diag value 1: MinValue is greater than MaxValue.
 pub const SL_DIAG_LIMIT_MIN_ABOVE_MAX: u16 = 1;
@@ -38,87 +35,57 @@ pub const SL_LIMIT_ACTIVE_MINVALUE: u16 = 1 << 9;
 /// `wInputActive` bit of MaxValue: set = the input is the maximum, clear = `nMaximumValue`.
 pub const SL_LIMIT_ACTIVE_MAXVALUE: u16 = 1 << 10;
 
-/// Private state of FB LIMIT (48 bytes). Never written by the user.
-#[repr(C)]
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-#[allow(non_snake_case)]
-pub struct SL_LIMIT_PRIVATE {
-    /// Common head (`wAux` bit 0: below, bit 1: above the limits in SAFE).
-    pub stHeader: SL_PRIVATE_HEADER,
-    /// Latched `wInputActive`.
-    pub wActive: u16,
-    /// Reserved.
-    pub aReserved: [u8; 2],
-    /// Latched `nMinimumValue`, `nMaximumValue` as 32-bit patterns.
-    pub adwLimit: [u32; 2],
-    /// Diag message parameters 2 and 3 (Min, Max) latched at the ERROR entry.
-    pub adwPar: [u32; 2],
+crate::base::layout::private_struct! {
+    /// Private state of FB LIMIT (48 bytes). Never written by the user.
+    SL_LIMIT_PRIVATE {
+        /// Common head (`wAux` bit 0: below, bit 1: above the limits in SAFE).
+        stHeader;
+        /// Latched `wInputActive`.
+        pub wActive: u16,
+        /// Reserved.
+        pub aReserved: [u8; 2],
+        /// Latched `nMinimumValue`, `nMaximumValue` as 32-bit patterns.
+        pub adwLimit: [u32; 2],
+        /// Diag message parameters 2 and 3 (Min, Max) latched at the ERROR entry.
+        pub adwPar: [u32; 2],
+    }
 }
 
-/// FB LIMIT instance (ABI-2 §11.4), generic over the signal type `T`; `P1` is the reserved
-/// gap after `wInputActive` that makes the 16- and 32-bit layouts differ.
-#[repr(C)]
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-#[allow(non_snake_case)]
-pub struct FB_LIMIT<T, const P1: usize> {
-    /// Offset 0. Reserved, keep 0 (no BOOL inputs).
-    pub aReserved0: [u8; 16],
-    /// Offset 16. FbRun of the owning group: TRUE = the block executes.
-    pub bRun: SL_BOOL,
-    /// Offset 17. ErrAck of the owning group.
-    pub bErrAck: SL_BOOL,
-    /// Offset 18. Reserved, keep 0.
-    pub aReserved1: [u8; 6],
-    /// At the analog input base 24: AnalogIn, the value checked (active bit 8, required).
-    pub nAnalogIn: T,
-    /// At 24 + W: MinValue, the minimum when active bit 9 is set.
-    pub nMinValue: T,
-    /// At 24 + 2W: MaxValue, the maximum when active bit 10 is set.
-    pub nMaxValue: T,
-    /// At 24 + 3W: "Minimum Value", the minimum when active bit 9 is clear.
-    pub nMinimumValue: T,
-    /// At 24 + 4W: "Maximum Value", the maximum when active bit 10 is clear.
-    pub nMaximumValue: T,
-    /// At 24 + 5W: bit 8 (AnalogIn) must be set; bits 9, 10 choose input or parameter.
-    pub wInputActive: u16,
-    /// Reserved up to the output base (16-bit: 4 bytes, 32-bit: 2).
-    pub aReserved2: [u8; P1],
-    /// At the output base (16-bit 40, 32-bit 48): Error, TRUE in ERROR only.
-    pub bError: SL_BOOL,
-    /// Output base + 1: InLimit, TRUE in RUN (Min ≤ AnalogIn ≤ Max).
-    pub bInLimit: SL_BOOL,
-    /// Output base + 2: BelowMin, in SAFE: AnalogIn < Min.
-    pub bBelowMin: SL_BOOL,
-    /// Output base + 3: AboveMax, in SAFE: AnalogIn > Max.
-    pub bAboveMax: SL_BOOL,
-    /// Reserved up to the info data.
-    pub aReserved3: [u8; 4],
-    /// Info + 0: the manual's status value (RUN, STOP, SAFE, ERROR, RESET).
-    pub nState: u8,
-    /// Info + 1. Reserved.
-    pub aReserved4: [u8; 1],
-    /// Info + 2: diag value (1: MinValue is greater than MaxValue) + library bits 13-15.
-    pub nDiag: u16,
-    /// Info + 4: Text ID of the latched diag message (0x4090), 0 = none.
-    pub nDiagTextId: u16,
-    /// Info + 6. Reserved.
-    pub aReserved5: [u8; 2],
-    /// Info + 8: message parameter 2 (Min as a 32-bit pattern).
-    pub dwDiagPar2: u32,
-    /// Info + 12: message parameter 3 (Max).
-    pub dwDiagPar3: u32,
-    /// Info + 16: private state, 48 bytes: never write it.
-    pub stPrivate: SL_LIMIT_PRIVATE,
+crate::base::layout::block_struct! {
+    /// FB LIMIT instance (ABI-2 §11.4), generic over the signal type `T`; `P1` is the reserved
+    /// gap after `wInputActive` that makes the 16- and 32-bit layouts differ.
+    FB_LIMIT[T: Analog; P1] {
+        no_bool_inputs;
+        /// At the analog input base 24: AnalogIn, the value checked (active bit 8, required).
+        pub nAnalogIn: T,
+        /// At 24 + W: MinValue, the minimum when active bit 9 is set.
+        pub nMinValue: T,
+        /// At 24 + 2W: MaxValue, the maximum when active bit 10 is set.
+        pub nMaxValue: T,
+        /// At 24 + 3W: "Minimum Value", the minimum when active bit 9 is clear.
+        pub nMinimumValue: T,
+        /// At 24 + 4W: "Maximum Value", the maximum when active bit 10 is clear.
+        pub nMaximumValue: T,
+        /// At 24 + 5W: bit 8 (AnalogIn) must be set; bits 9, 10 choose input or parameter.
+        pub wInputActive: u16,
+        /// Reserved up to the output base (16-bit: 4 bytes, 32-bit: 2).
+        pub aReserved2: [u8; P1],
+        /// At the output base (16-bit 40, 32-bit 48): Error, TRUE in ERROR only.
+        pub bError: SL_BOOL,
+        /// Output base + 1: InLimit, TRUE in RUN (Min ≤ AnalogIn ≤ Max).
+        pub bInLimit: SL_BOOL,
+        /// Output base + 2: BelowMin, in SAFE: AnalogIn < Min.
+        pub bBelowMin: SL_BOOL,
+        /// Output base + 3: AboveMax, in SAFE: AnalogIn > Max.
+        pub bAboveMax: SL_BOOL,
+        /// Reserved up to the info data.
+        pub aReserved3: [u8; 4],
+    } info [aReserved4, aReserved5] SL_LIMIT_PRIVATE, "48 bytes":
+        "the manual's status value (RUN, STOP, SAFE, ERROR, RESET).",
+        "diag value (1: MinValue is greater than MaxValue) + library bits 13-15.",
+        "Text ID of the latched diag message (0x4090), 0 = none.",
+        "message parameter 2 (Min as a 32-bit pattern).", "message parameter 3 (Max)."
 }
-
-/// FB LIMIT, INT variant.
-pub type FB_LIMIT_INT = FB_LIMIT<i16, 4>;
-/// FB LIMIT, UINT variant.
-pub type FB_LIMIT_UINT = FB_LIMIT<u16, 4>;
-/// FB LIMIT, DINT variant.
-pub type FB_LIMIT_DINT = FB_LIMIT<i32, 2>;
-/// FB LIMIT, UDINT variant.
-pub type FB_LIMIT_UDINT = FB_LIMIT<u32, 2>;
 
 // The ABI-2 §11.4 numbers of the two layouts.
 const _: () = {
@@ -155,50 +122,6 @@ crate::impl_member!([T: Analog, const P1: usize] FB_LIMIT<T, P1> {
     output: [bError, bInLimit, bBelowMin, bAboveMax],
     info_fields: [nDiagTextId, dwDiagPar2, dwDiagPar3],
 });
-
-impl<T: Analog, const P1: usize> FB_LIMIT<T, P1> {
-    /// An all-zero instance (valid: it initialises itself on the first cycle, ABI §3.6).
-    pub const fn zeroed() -> Self {
-        Self {
-            aReserved0: [0; 16],
-            bRun: 0,
-            bErrAck: 0,
-            aReserved1: [0; 6],
-            nAnalogIn: T::ZERO,
-            nMinValue: T::ZERO,
-            nMaxValue: T::ZERO,
-            nMinimumValue: T::ZERO,
-            nMaximumValue: T::ZERO,
-            wInputActive: 0,
-            aReserved2: [0; P1],
-            bError: 0,
-            bInLimit: 0,
-            bBelowMin: 0,
-            bAboveMax: 0,
-            aReserved3: [0; 4],
-            nState: 0,
-            aReserved4: [0; 1],
-            nDiag: 0,
-            nDiagTextId: 0,
-            aReserved5: [0; 2],
-            dwDiagPar2: 0,
-            dwDiagPar3: 0,
-            stPrivate: SL_LIMIT_PRIVATE {
-                stHeader: SL_PRIVATE_HEADER::ZERO,
-                wActive: 0,
-                aReserved: [0; 2],
-                adwLimit: [0; 2],
-                adwPar: [0; 2],
-            },
-        }
-    }
-}
-
-impl<T: Analog, const P1: usize> Default for FB_LIMIT<T, P1> {
-    fn default() -> Self {
-        Self::zeroed()
-    }
-}
 
 /// Parameters as the user wrote them (the limits as 32-bit patterns of `T`).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

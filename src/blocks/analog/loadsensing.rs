@@ -18,14 +18,11 @@ use crate::base::envelope::Block;
 use crate::base::header::{param_crc, SL_PRIVATE_HEADER};
 use crate::base::types::*;
 
-/// Type tag of FB_LOADSENSING_INT (ABI-2 §10.6: sequential from 16 in the order of §10.3).
-pub const SL_TYPE_LOADSENSING_INT: u16 = 48;
-/// FB_LOADSENSING_UINT.
-pub const SL_TYPE_LOADSENSING_UINT: u16 = 49;
-/// FB_LOADSENSING_DINT.
-pub const SL_TYPE_LOADSENSING_DINT: u16 = 50;
-/// FB_LOADSENSING_UDINT.
-pub const SL_TYPE_LOADSENSING_UDINT: u16 = 51;
+super::analog_variants! {
+    FB_LOADSENSING:
+        INT SL_TYPE_LOADSENSING_INT = 48 => FB_LOADSENSING_INT[i16, 2, 2], UINT SL_TYPE_LOADSENSING_UINT = 49 => FB_LOADSENSING_UINT[u16, 2, 2],
+        DINT SL_TYPE_LOADSENSING_DINT = 50 => FB_LOADSENSING_DINT[i32, 4, 0], UDINT SL_TYPE_LOADSENSING_UDINT = 51 => FB_LOADSENSING_UDINT[u32, 4, 0]
+}
 
 /// State INACTIVE (manual §4.25.2 "16.0"): Inactive is TRUE; Valid 0, Warning 0.
 pub const SL_STATE_LOADSENSING_INACTIVE: u8 = 16;
@@ -178,15 +175,6 @@ pub struct FB_LOADSENSING<T, const P1: usize, const PR: usize> {
     /// Info + 16: private state (16-bit: 288 bytes, 32-bit: 536): never write it.
     pub stPrivate: SL_LOADSENSING_PRIVATE<T, PR>,
 }
-
-/// FB LOADSENSING, INT variant.
-pub type FB_LOADSENSING_INT = FB_LOADSENSING<i16, 2, 2>;
-/// FB LOADSENSING, UINT variant.
-pub type FB_LOADSENSING_UINT = FB_LOADSENSING<u16, 2, 2>;
-/// FB LOADSENSING, DINT variant.
-pub type FB_LOADSENSING_DINT = FB_LOADSENSING<i32, 4, 0>;
-/// FB LOADSENSING, UDINT variant.
-pub type FB_LOADSENSING_UDINT = FB_LOADSENSING<u32, 4, 0>;
 
 // The ABI-2 §11.8 numbers of the two layouts (value table, output base, private state).
 const _: () = {

@@ -17,10 +17,13 @@ pub mod window;
 
 use crate::base::block::{Dir, Field, FieldType};
 use crate::base::header::SL_PRIVATE_HEADER;
+use crate::base::layout::Zeroed;
 use crate::base::types::{LIBRARY_DIAG_BITS, SL_STATE_ERROR};
 
 /// An integer type of the analog variants (ABI-2 §10.3).
-pub trait Analog: FieldType + Copy + Default + PartialEq + core::fmt::Debug + 'static {
+pub trait Analog:
+    FieldType + Zeroed + Copy + Default + PartialEq + core::fmt::Debug + 'static
+{
     /// Index of the variant: 0 INT, 1 UINT, 2 DINT, 3 UDINT.
     const VARIANT: usize;
     /// Smallest value.
@@ -31,8 +34,6 @@ pub trait Analog: FieldType + Copy + Default + PartialEq + core::fmt::Debug + 's
     fn wide(self) -> i128;
     /// The value of an `i128` known to lie in `MIN..=MAX`.
     fn narrow(v: i128) -> Self;
-    /// 0.
-    const ZERO: Self;
 }
 
 macro_rules! analog {
@@ -41,7 +42,6 @@ macro_rules! analog {
             const VARIANT: usize = $i;
             const MIN: i128 = <$t>::MIN as i128;
             const MAX: i128 = <$t>::MAX as i128;
-            const ZERO: Self = 0;
             #[inline(always)]
             fn wide(self) -> i128 {
                 self as i128
@@ -123,6 +123,25 @@ macro_rules! variant_info {
     (@index UDINT) => { 3 };
 }
 pub(crate) use variant_info;
+
+/// Declares the variants of a generic analog block once: for each, its type tag (ABI-2
+/// §10.6: sequential from 16 in the order of §10.3) and its type alias, the generic struct
+/// with the variant's type and reserved gaps:
+/// `analog_variants! { FB_SPEED: INT SL_TYPE_SPEED_INT = 44 => FB_SPEED_INT[i16, 2, 6], … }`.
+/// build.rs writes every invocation out for cbindgen (`build_support/expand.rs`).
+macro_rules! analog_variants {
+    ($name:ident: $($v:ident $tag:ident = $n:literal => $alias:ident [$($arg:tt),*]),+ $(,)?) => {
+        $(
+            #[doc = concat!(" Type tag of ", stringify!($alias), ".")]
+            pub const $tag: u16 = $n;
+        )+
+        $(
+            #[doc = concat!(" ", stringify!($name), ", ", stringify!($v), " variant.")]
+            pub type $alias = $name<$($arg),*>;
+        )+
+    };
+}
+pub(crate) use analog_variants;
 
 /// The (tag, name) of `T`'s variant in a block's list of (variant index, tag, name).
 pub const fn pick<T: Analog>(variants: &[(usize, u16, &'static str)]) -> (u16, &'static str) {

@@ -19,18 +19,15 @@ use super::{diag_message, in_range, magic, Analog};
 use super::{SL_DIAG_VALUE_OVERFLOW, SL_DIAG_VALUE_UNDERFLOW};
 use crate::base::block::{Private, Registered};
 use crate::base::envelope::Block;
-use crate::base::header::{param_crc, SL_PRIVATE_HEADER};
+use crate::base::header::param_crc;
 use crate::base::time;
 use crate::base::types::*;
 
-/// Type tag of FB_SCALE_INT (ABI-2 §10.6: sequential from 16 in the order of §10.3).
-pub const SL_TYPE_SCALE_INT: u16 = 40;
-/// FB_SCALE_UINT.
-pub const SL_TYPE_SCALE_UINT: u16 = 41;
-/// FB_SCALE_DINT.
-pub const SL_TYPE_SCALE_DINT: u16 = 42;
-/// FB_SCALE_UDINT.
-pub const SL_TYPE_SCALE_UDINT: u16 = 43;
+super::analog_variants! {
+    FB_SCALE:
+        INT SL_TYPE_SCALE_INT = 40 => FB_SCALE_INT[i16, i32, 2, 6], UINT SL_TYPE_SCALE_UINT = 41 => FB_SCALE_UINT[u16, u32, 2, 6],
+        DINT SL_TYPE_SCALE_DINT = 42 => FB_SCALE_DINT[i32, i32, 0, 4], UDINT SL_TYPE_SCALE_UDINT = 43 => FB_SCALE_UDINT[u32, u32, 0, 4]
+}
 
 /// `dwOptions`: "Multiplication First" FALSE — divide by `nDenominator` before multiplying
 /// by `nNumerator` (default: multiplication first).
@@ -56,113 +53,81 @@ pub const SL_SCALE_ACTIVE_ANALOGIN: u16 = 1 << 8;
 /// `wInputNegated` bit of AnalogIn: INT/DINT ×(−1), UINT/UDINT XOR all ones.
 pub const SL_SCALE_NEGATE_ANALOGIN: u16 = 1 << 8;
 
-/// Private state of FB SCALE (72 bytes). Never written by the user. The header's `tPhase`
-/// is the start of the StuckAt watchdog, `wAux` bit 0 its expiry.
-#[repr(C)]
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-#[allow(non_snake_case)]
-pub struct SL_SCALE_PRIVATE {
-    /// Common head.
-    pub stHeader: SL_PRIVATE_HEADER,
-    /// Latched `tWatchdog`.
-    pub tWatchdog: u32,
-    /// Latched `nNumerator`, `nDenominator`, `nOffset` as 32-bit patterns.
-    pub adwFactor: [u32; 3],
-    /// Latched `dwOptions`.
-    pub dwOptions: u32,
-    /// Latched `nRounding`.
-    pub wRounding: u16,
-    /// Latched `wInputActive`.
-    pub wActive: u16,
-    /// Latched `wInputNegated`.
-    pub wNegated: u16,
-    /// Reserved.
-    pub aReserved0: [u8; 2],
-    /// The result of the last RUN cycle as a 32-bit pattern.
-    pub dwOut: u32,
-    /// AnalogIn of the previous RUN cycle (the watchdog restarts when it changes).
-    pub dwLastIn: u32,
-    /// Diag message parameter 2 (AnalogIn) latched at the ERROR entry.
-    pub dwPar: u32,
-    /// Reserved.
-    pub aReserved1: [u8; 4],
+crate::base::layout::private_struct! {
+    /// Private state of FB SCALE (72 bytes). Never written by the user. The header's `tPhase`
+    /// is the start of the StuckAt watchdog, `wAux` bit 0 its expiry.
+    SL_SCALE_PRIVATE {
+        /// Latched `tWatchdog`.
+        pub tWatchdog: u32,
+        /// Latched `nNumerator`, `nDenominator`, `nOffset` as 32-bit patterns.
+        pub adwFactor: [u32; 3],
+        /// Latched `dwOptions`.
+        pub dwOptions: u32,
+        /// Latched `nRounding`.
+        pub wRounding: u16,
+        /// Latched `wInputActive`.
+        pub wActive: u16,
+        /// Latched `wInputNegated`.
+        pub wNegated: u16,
+        /// Reserved.
+        pub aReserved0: [u8; 2],
+        /// The result of the last RUN cycle as a 32-bit pattern.
+        pub dwOut: u32,
+        /// AnalogIn of the previous RUN cycle (the watchdog restarts when it changes).
+        pub dwLastIn: u32,
+        /// Diag message parameter 2 (AnalogIn) latched at the ERROR entry.
+        pub dwPar: u32,
+        /// Reserved.
+        pub aReserved1: [u8; 4],
+    }
 }
 
-/// FB SCALE instance (ABI-2 §11.6), generic over the signal type `T` and the type `T32` of
-/// the scaling parameters (ABI-2 §10.3); `P1` (after AnalogIn) and `P2` (after AnalogOut)
-/// are the reserved gaps that make the 16- and 32-bit layouts differ.
-#[repr(C)]
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-#[allow(non_snake_case)]
-pub struct FB_SCALE<T, T32, const P1: usize, const P2: usize> {
-    /// Offset 0. Reserved, keep 0 (no BOOL inputs).
-    pub aReserved0: [u8; 16],
-    /// Offset 16. FbRun of the owning group: TRUE = the block executes.
-    pub bRun: SL_BOOL,
-    /// Offset 17. ErrAck of the owning group.
-    pub bErrAck: SL_BOOL,
-    /// Offset 18. Reserved, keep 0.
-    pub aReserved1: [u8; 6],
-    /// Offset 24. AnalogIn, the value scaled (active bit 8, required).
-    pub nAnalogIn: T,
-    /// Reserved up to 28 (16-bit: 2 bytes, 32-bit: none).
-    pub aReserved2: [u8; P1],
-    /// Offset 28. "watchdog (ms)": StuckAtError after this time without a change of
-    /// AnalogIn; 0 = off, at most SL_TIME_PARAM_MAX.
-    pub tWatchdog: u32,
-    /// Offset 32. "Nominator": the multiplication factor.
-    pub nNumerator: T32,
-    /// Offset 36. "Denominator": the division factor, not 0.
-    pub nDenominator: T32,
-    /// Offset 40. The scaling offset, added last.
-    pub nOffset: T32,
-    /// Offset 44. SL_OPT_SCALE_DIVISION_FIRST, no other bit.
-    pub dwOptions: u32,
-    /// Offset 48. "Division Rounding": SL_ROUNDING_FLOOR, _CEIL, _ROUND.
-    pub nRounding: u16,
-    /// Offset 50. Bit 8 (AnalogIn) must be set, no other.
-    pub wInputActive: u16,
-    /// Offset 52. Bit 8: AnalogIn negated; no other.
-    pub wInputNegated: u16,
-    /// Offset 54. Reserved.
-    pub aReserved3: [u8; 2],
-    /// Offset 56, the output base. Error, TRUE in ERROR only.
-    pub bError: SL_BOOL,
-    /// Offset 57. StuckAtError: in RUN, AnalogIn unchanged for `tWatchdog` (no FB error).
-    pub bStuckAtError: SL_BOOL,
-    /// Offset 58. Reserved.
-    pub aReserved4: [u8; 6],
-    /// Offset 64. AnalogOut, the scaled value in RUN, else 0.
-    pub nAnalogOut: T,
-    /// Reserved up to the info data (16-bit: 6 bytes, 32-bit: 4).
-    pub aReserved5: [u8; P2],
-    /// Offset 72. The manual's status value (RUN, STOP, ERROR, RESET).
-    pub nState: u8,
-    /// Offset 73. Reserved.
-    pub aReserved6: [u8; 1],
-    /// Offset 74. Diag value (1 underflow, 2 overflow, 3 multiplication, 4 division) +
-    /// library bits 13-15.
-    pub nDiag: u16,
-    /// Offset 76. Text ID of the latched diag message (0x40B0–0x40B3), 0 = none.
-    pub nDiagTextId: u16,
-    /// Offset 78. Reserved.
-    pub aReserved7: [u8; 2],
-    /// Offset 80. Message parameter 2 (AnalogIn as a 32-bit pattern).
-    pub dwDiagPar2: u32,
-    /// Offset 84. Message parameter 3 (always 0: "-" in the manual).
-    pub dwDiagPar3: u32,
-    /// Offset 88. Private state, 72 bytes: never write it.
-    pub stPrivate: SL_SCALE_PRIVATE,
+crate::base::layout::block_struct! {
+    /// FB SCALE instance (ABI-2 §11.6), generic over the signal type `T` and the type `T32` of
+    /// the scaling parameters (ABI-2 §10.3); `P1` (after AnalogIn) and `P2` (after AnalogOut)
+    /// are the reserved gaps that make the 16- and 32-bit layouts differ.
+    FB_SCALE[T: Analog, T32: Analog; P1, P2] {
+        no_bool_inputs;
+        /// Offset 24. AnalogIn, the value scaled (active bit 8, required).
+        pub nAnalogIn: T,
+        /// Reserved up to 28 (16-bit: 2 bytes, 32-bit: none).
+        pub aReserved2: [u8; P1],
+        /// Offset 28. "watchdog (ms)": StuckAtError after this time without a change of
+        /// AnalogIn; 0 = off, at most SL_TIME_PARAM_MAX.
+        pub tWatchdog: u32,
+        /// Offset 32. "Nominator": the multiplication factor.
+        pub nNumerator: T32,
+        /// Offset 36. "Denominator": the division factor, not 0.
+        pub nDenominator: T32,
+        /// Offset 40. The scaling offset, added last.
+        pub nOffset: T32,
+        /// Offset 44. SL_OPT_SCALE_DIVISION_FIRST, no other bit.
+        pub dwOptions: u32,
+        /// Offset 48. "Division Rounding": SL_ROUNDING_FLOOR, _CEIL, _ROUND.
+        pub nRounding: u16,
+        /// Offset 50. Bit 8 (AnalogIn) must be set, no other.
+        pub wInputActive: u16,
+        /// Offset 52. Bit 8: AnalogIn negated; no other.
+        pub wInputNegated: u16,
+        /// Offset 54. Reserved.
+        pub aReserved3: [u8; 2],
+        /// Offset 56, the output base. Error, TRUE in ERROR only.
+        pub bError: SL_BOOL,
+        /// Offset 57. StuckAtError: in RUN, AnalogIn unchanged for `tWatchdog` (no FB error).
+        pub bStuckAtError: SL_BOOL,
+        /// Offset 58. Reserved.
+        pub aReserved4: [u8; 6],
+        /// Offset 64. AnalogOut, the scaled value in RUN, else 0.
+        pub nAnalogOut: T,
+        /// Reserved up to the info data (16-bit: 6 bytes, 32-bit: 4).
+        pub aReserved5: [u8; P2],
+    } info [aReserved6, aReserved7] SL_SCALE_PRIVATE, "72 bytes":
+        "The manual's status value (RUN, STOP, ERROR, RESET).",
+        "Diag value (1 underflow, 2 overflow, 3 multiplication, 4 division) + library bits 13-15.",
+        "Text ID of the latched diag message (0x40B0–0x40B3), 0 = none.",
+        "Message parameter 2 (AnalogIn as a 32-bit pattern).",
+        "Message parameter 3 (always 0: \"-\" in the manual)."
 }
-
-/// FB SCALE, INT variant.
-pub type FB_SCALE_INT = FB_SCALE<i16, i32, 2, 6>;
-/// FB SCALE, UINT variant.
-pub type FB_SCALE_UINT = FB_SCALE<u16, u32, 2, 6>;
-/// FB SCALE, DINT variant.
-pub type FB_SCALE_DINT = FB_SCALE<i32, i32, 0, 4>;
-/// FB SCALE, UDINT variant.
-pub type FB_SCALE_UDINT = FB_SCALE<u32, u32, 0, 4>;
 
 // The ABI-2 §11.6 numbers (identical for both widths).
 const _: () = {
@@ -222,63 +187,6 @@ crate::impl_member!([T: Analog, T32: Analog, const P1: usize, const P2: usize] F
     output: [bError, bStuckAtError, nAnalogOut],
     info_fields: [nDiagTextId, dwDiagPar2, dwDiagPar3],
 });
-
-impl<T: Analog, T32: Analog, const P1: usize, const P2: usize> FB_SCALE<T, T32, P1, P2> {
-    /// An all-zero instance (valid: it initialises itself on the first cycle, ABI §3.6).
-    pub const fn zeroed() -> Self {
-        Self {
-            aReserved0: [0; 16],
-            bRun: 0,
-            bErrAck: 0,
-            aReserved1: [0; 6],
-            nAnalogIn: T::ZERO,
-            aReserved2: [0; P1],
-            tWatchdog: 0,
-            nNumerator: T32::ZERO,
-            nDenominator: T32::ZERO,
-            nOffset: T32::ZERO,
-            dwOptions: 0,
-            nRounding: 0,
-            wInputActive: 0,
-            wInputNegated: 0,
-            aReserved3: [0; 2],
-            bError: 0,
-            bStuckAtError: 0,
-            aReserved4: [0; 6],
-            nAnalogOut: T::ZERO,
-            aReserved5: [0; P2],
-            nState: 0,
-            aReserved6: [0; 1],
-            nDiag: 0,
-            nDiagTextId: 0,
-            aReserved7: [0; 2],
-            dwDiagPar2: 0,
-            dwDiagPar3: 0,
-            stPrivate: SL_SCALE_PRIVATE {
-                stHeader: SL_PRIVATE_HEADER::ZERO,
-                tWatchdog: 0,
-                adwFactor: [0; 3],
-                dwOptions: 0,
-                wRounding: 0,
-                wActive: 0,
-                wNegated: 0,
-                aReserved0: [0; 2],
-                dwOut: 0,
-                dwLastIn: 0,
-                dwPar: 0,
-                aReserved1: [0; 4],
-            },
-        }
-    }
-}
-
-impl<T: Analog, T32: Analog, const P1: usize, const P2: usize> Default
-    for FB_SCALE<T, T32, P1, P2>
-{
-    fn default() -> Self {
-        Self::zeroed()
-    }
-}
 
 /// Parameters as the user wrote them (the factors as 32-bit patterns of `T32`).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

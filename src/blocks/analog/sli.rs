@@ -17,83 +17,58 @@ pub use super::window::{SL_SLI_ACTIVE, SL_TEXT_SLI_OVERFLOW, SL_TEXT_SLI_UNDERFL
 use super::{Analog, SL_DIAG_VALUE_OVERFLOW, SL_DIAG_VALUE_UNDERFLOW};
 use crate::base::types::*;
 
-/// Type tag of FB_SLI_INT (ABI-2 §10.6: sequential in the order of §10.3).
-pub const SL_TYPE_SLI_INT: u16 = 60;
-/// FB_SLI_UINT.
-pub const SL_TYPE_SLI_UINT: u16 = 61;
-/// FB_SLI_DINT.
-pub const SL_TYPE_SLI_DINT: u16 = 62;
-/// FB_SLI_UDINT.
-pub const SL_TYPE_SLI_UDINT: u16 = 63;
-
-/// FB SLI instance (ABI-2 §11.9), generic over the Position type `T` and the PositionDiff
-/// type `TS`; `P1` and `P2` are the reserved gaps (after Position, after PositionDiff) that
-/// make the 16- and 32-bit layouts differ. Size: 136 bytes.
-#[repr(C)]
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-#[allow(non_snake_case)]
-pub struct FB_SLI<T, TS, const P1: usize, const P2: usize> {
-    /// Offset 0. SLI: a rising edge saves Position and starts the monitoring; TRUE keeps it
-    /// on (active bit 0, required).
-    pub bSLI: SL_BOOL,
-    /// Offset 1. Reserved, keep 0.
-    pub aReserved0: [u8; 15],
-    /// Offset 16. FbRun of the owning group: TRUE = the block executes.
-    pub bRun: SL_BOOL,
-    /// Offset 17. ErrAck of the owning group.
-    pub bErrAck: SL_BOOL,
-    /// Offset 18. Reserved, keep 0.
-    pub aReserved1: [u8; 6],
-    /// Offset 24 (analog input base). Position (active bit 8, required).
-    pub nPosition: T,
-    /// Reserved up to the parameters (16-bit: 2 bytes, 32-bit: none).
-    pub aReserved2: [u8; P1],
-    /// Offset 28. "Limit pos": permitted deviation above LatchPosition, ≤ the maximum of TS.
-    pub nLimitPos: u32,
-    /// Offset 32. "Limit neg": permitted deviation below LatchPosition (a magnitude), ≤ the
-    /// maximum of TS.
-    pub nLimitNeg: u32,
-    /// Offset 36. Exactly bits 0 and 8 (SL_SLI_ACTIVE).
-    pub wInputActive: u16,
-    /// Offset 38. Reserved.
-    pub aReserved3: [u8; 2],
-    /// Offset 40 (output base). Error, TRUE in ERROR only.
-    pub bError: SL_BOOL,
-    /// Offset 41. SLIActive: TRUE in RUN (SLI TRUE, PositionDiff within the limits).
-    pub bSLIActive: SL_BOOL,
-    /// Offset 42. Reserved.
-    pub aReserved4: [u8; 6],
-    /// Offset 48 (analog output base). PositionDiff = Position − LatchPosition in RUN,
-    /// else 0.
-    pub nPositionDiff: TS,
-    /// Reserved up to the info data (16-bit: 6 bytes, 32-bit: 4).
-    pub aReserved5: [u8; P2],
-    /// Offset 56. The manual's status value (RUN, STOP, SAFE, ERROR, RESET).
-    pub nState: u8,
-    /// Offset 57. Reserved.
-    pub aReserved6: [u8; 1],
-    /// Offset 58. Diag value (1 underflow, 2 overflow) + library bits 13-15.
-    pub nDiag: u16,
-    /// Offset 60. Text ID of the latched diag message (0x40C0, 0x40C1), 0 = none.
-    pub nDiagTextId: u16,
-    /// Offset 62. Reserved.
-    pub aReserved7: [u8; 2],
-    /// Offset 64. Message parameter 2: Position as a 32-bit pattern.
-    pub dwDiagPar2: u32,
-    /// Offset 68. Message parameter 3: LatchPosition.
-    pub dwDiagPar3: u32,
-    /// Offset 72. Private state, 64 bytes: never write it.
-    pub stPrivate: SL_SLI_PRIVATE,
+super::analog_variants! {
+    FB_SLI:
+        INT SL_TYPE_SLI_INT = 60 => FB_SLI_INT[i16, i16, 2, 6], UINT SL_TYPE_SLI_UINT = 61 => FB_SLI_UINT[u16, i16, 2, 6],
+        DINT SL_TYPE_SLI_DINT = 62 => FB_SLI_DINT[i32, i32, 0, 4], UDINT SL_TYPE_SLI_UDINT = 63 => FB_SLI_UDINT[u32, i32, 0, 4]
 }
 
-/// FB SLI, INT variant (PositionDiff INT16).
-pub type FB_SLI_INT = FB_SLI<i16, i16, 2, 6>;
-/// FB SLI, UINT variant (PositionDiff INT16).
-pub type FB_SLI_UINT = FB_SLI<u16, i16, 2, 6>;
-/// FB SLI, DINT variant (PositionDiff INT32).
-pub type FB_SLI_DINT = FB_SLI<i32, i32, 0, 4>;
-/// FB SLI, UDINT variant (PositionDiff INT32).
-pub type FB_SLI_UDINT = FB_SLI<u32, i32, 0, 4>;
+crate::base::layout::block_struct! {
+    /// FB SLI instance (ABI-2 §11.9), generic over the Position type `T` and the PositionDiff
+    /// type `TS`; `P1` and `P2` are the reserved gaps (after Position, after PositionDiff) that
+    /// make the 16- and 32-bit layouts differ. Size: 136 bytes.
+    FB_SLI[T: Analog, TS: Analog; P1, P2] {
+        /// Offset 0. SLI: a rising edge saves Position and starts the monitoring; TRUE keeps it
+        /// on (active bit 0, required).
+        pub bSLI: SL_BOOL,
+        /// Offset 1. Reserved, keep 0.
+        pub aReserved0: [u8; 15],
+        /// Offset 16. FbRun of the owning group: TRUE = the block executes.
+        pub bRun: SL_BOOL,
+        /// Offset 17. ErrAck of the owning group.
+        pub bErrAck: SL_BOOL,
+        /// Offset 18. Reserved, keep 0.
+        pub aReserved1: [u8; 6],
+        /// Offset 24 (analog input base). Position (active bit 8, required).
+        pub nPosition: T,
+        /// Reserved up to the parameters (16-bit: 2 bytes, 32-bit: none).
+        pub aReserved2: [u8; P1],
+        /// Offset 28. "Limit pos": permitted deviation above LatchPosition, ≤ the maximum of TS.
+        pub nLimitPos: u32,
+        /// Offset 32. "Limit neg": permitted deviation below LatchPosition (a magnitude), ≤ the
+        /// maximum of TS.
+        pub nLimitNeg: u32,
+        /// Offset 36. Exactly bits 0 and 8 (SL_SLI_ACTIVE).
+        pub wInputActive: u16,
+        /// Offset 38. Reserved.
+        pub aReserved3: [u8; 2],
+        /// Offset 40 (output base). Error, TRUE in ERROR only.
+        pub bError: SL_BOOL,
+        /// Offset 41. SLIActive: TRUE in RUN (SLI TRUE, PositionDiff within the limits).
+        pub bSLIActive: SL_BOOL,
+        /// Offset 42. Reserved.
+        pub aReserved4: [u8; 6],
+        /// Offset 48 (analog output base). PositionDiff = Position − LatchPosition in RUN,
+        /// else 0.
+        pub nPositionDiff: TS,
+        /// Reserved up to the info data (16-bit: 6 bytes, 32-bit: 4).
+        pub aReserved5: [u8; P2],
+    } info [aReserved6, aReserved7] SL_SLI_PRIVATE, "64 bytes":
+        "The manual's status value (RUN, STOP, SAFE, ERROR, RESET).",
+        "Diag value (1 underflow, 2 overflow) + library bits 13-15.",
+        "Text ID of the latched diag message (0x40C0, 0x40C1), 0 = none.",
+        "Message parameter 2: Position as a 32-bit pattern.", "Message parameter 3: LatchPosition."
+}
 
 // The ABI-2 §11.9 numbers (identical for both widths).
 const _: () = {
@@ -160,41 +135,3 @@ impl<T: Analog, TS: Analog, const P1: usize, const P2: usize> WindowFb for FB_SL
 }
 
 super::window::window_block!([T: Analog, TS: Analog, const P1: usize, const P2: usize] FB_SLI<T, TS, P1, P2>);
-
-impl<T: Analog, TS: Analog, const P1: usize, const P2: usize> FB_SLI<T, TS, P1, P2> {
-    /// An all-zero instance (valid: it initialises itself on the first cycle, ABI §3.6).
-    pub const fn zeroed() -> Self {
-        Self {
-            bSLI: 0,
-            aReserved0: [0; 15],
-            bRun: 0,
-            bErrAck: 0,
-            aReserved1: [0; 6],
-            nPosition: T::ZERO,
-            aReserved2: [0; P1],
-            nLimitPos: 0,
-            nLimitNeg: 0,
-            wInputActive: 0,
-            aReserved3: [0; 2],
-            bError: 0,
-            bSLIActive: 0,
-            aReserved4: [0; 6],
-            nPositionDiff: TS::ZERO,
-            aReserved5: [0; P2],
-            nState: 0,
-            aReserved6: [0; 1],
-            nDiag: 0,
-            nDiagTextId: 0,
-            aReserved7: [0; 2],
-            dwDiagPar2: 0,
-            dwDiagPar3: 0,
-            stPrivate: SL_SLI_PRIVATE::ZERO,
-        }
-    }
-}
-
-impl<T: Analog, TS: Analog, const P1: usize, const P2: usize> Default for FB_SLI<T, TS, P1, P2> {
-    fn default() -> Self {
-        Self::zeroed()
-    }
-}

@@ -20,89 +20,64 @@ pub use super::window::{
 use super::Analog;
 use crate::base::types::*;
 
-/// Type tag of FB_SLI2_INT (ABI-2 §10.6: sequential in the order of §10.3).
-pub const SL_TYPE_SLI2_INT: u16 = 64;
-/// FB_SLI2_UINT.
-pub const SL_TYPE_SLI2_UINT: u16 = 65;
-/// FB_SLI2_DINT.
-pub const SL_TYPE_SLI2_DINT: u16 = 66;
-/// FB_SLI2_UDINT.
-pub const SL_TYPE_SLI2_UDINT: u16 = 67;
-
-/// FB SLI2 instance (ABI-2 §11.10), generic over the Position type `T` and the
-/// PositionDiff type `TS`; `P1` and `P2` are the reserved gaps (after Position, after
-/// PositionDiff) that make the 16- and 32-bit layouts differ. Size: 144 bytes.
-#[repr(C)]
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-#[allow(non_snake_case)]
-pub struct FB_SLI2<T, TS, const P1: usize, const P2: usize> {
-    /// Offset 0. SLI: a rising edge saves Position and starts the monitoring; TRUE keeps it
-    /// on (active bit 0, required).
-    pub bSLI: SL_BOOL,
-    /// Offset 1. Reserved, keep 0.
-    pub aReserved0: [u8; 15],
-    /// Offset 16. FbRun of the owning group: TRUE = the block executes.
-    pub bRun: SL_BOOL,
-    /// Offset 17. ErrAck of the owning group.
-    pub bErrAck: SL_BOOL,
-    /// Offset 18. Reserved, keep 0.
-    pub aReserved1: [u8; 6],
-    /// Offset 24 (analog input base). Position (active bit 8, required).
-    pub nPosition: T,
-    /// Reserved up to the parameters (16-bit: 2 bytes, 32-bit: none).
-    pub aReserved2: [u8; P1],
-    /// Offset 28. "Limit pos": permitted deviation above LatchPosition, ≤ the maximum of TS.
-    pub nLimitPos: u32,
-    /// Offset 32. "Limit neg": permitted deviation below LatchPosition (a magnitude), ≤ the
-    /// maximum of TS.
-    pub nLimitNeg: u32,
-    /// Offset 36. SL_OPT_SLI2_OVERFLOW_ALLOWED (bit 8), SL_OPT_SLI2_EXCEEDED_SUPPORT (bit 9).
-    pub dwOptions: u32,
-    /// Offset 40. Exactly bits 0 and 8 (SL_SLI_ACTIVE).
-    pub wInputActive: u16,
-    /// Offset 42. Reserved.
-    pub aReserved3: [u8; 6],
-    /// Offset 48 (output base). Error, TRUE in ERROR only.
-    pub bError: SL_BOOL,
-    /// Offset 49. SLIActive: TRUE in RUN (SLI TRUE, PositionDiff within the limits).
-    pub bSLIActive: SL_BOOL,
-    /// Offset 50. BelowMin: in EXCEEDED, PositionDiff < −Limit neg.
-    pub bBelowMin: SL_BOOL,
-    /// Offset 51. AboveMax: in EXCEEDED, PositionDiff > Limit pos.
-    pub bAboveMax: SL_BOOL,
-    /// Offset 52. Reserved.
-    pub aReserved4: [u8; 4],
-    /// Offset 56 (analog output base). PositionDiff = Position − LatchPosition in RUN and
-    /// (saturated) in EXCEEDED, else 0.
-    pub nPositionDiff: TS,
-    /// Reserved up to the info data (16-bit: 6 bytes, 32-bit: 4).
-    pub aReserved5: [u8; P2],
-    /// Offset 64. The manual's status value (RUN, STOP, SAFE, ERROR, RESET, EXCEEDED).
-    pub nState: u8,
-    /// Offset 65. Reserved.
-    pub aReserved6: [u8; 1],
-    /// Offset 66. Diag value (1 underflow, 2 overflow) + library bits 13-15.
-    pub nDiag: u16,
-    /// Offset 68. Text ID of the latched diag message (0x40C0, 0x40C1), 0 = none.
-    pub nDiagTextId: u16,
-    /// Offset 70. Reserved.
-    pub aReserved7: [u8; 2],
-    /// Offset 72. Message parameter 2: Position as a 32-bit pattern.
-    pub dwDiagPar2: u32,
-    /// Offset 76. Message parameter 3: LatchPosition.
-    pub dwDiagPar3: u32,
-    /// Offset 80. Private state, 64 bytes: never write it.
-    pub stPrivate: SL_SLI_PRIVATE,
+super::analog_variants! {
+    FB_SLI2:
+        INT SL_TYPE_SLI2_INT = 64 => FB_SLI2_INT[i16, i16, 2, 6], UINT SL_TYPE_SLI2_UINT = 65 => FB_SLI2_UINT[u16, i16, 2, 6],
+        DINT SL_TYPE_SLI2_DINT = 66 => FB_SLI2_DINT[i32, i32, 0, 4], UDINT SL_TYPE_SLI2_UDINT = 67 => FB_SLI2_UDINT[u32, i32, 0, 4]
 }
 
-/// FB SLI2, INT variant (PositionDiff INT16).
-pub type FB_SLI2_INT = FB_SLI2<i16, i16, 2, 6>;
-/// FB SLI2, UINT variant (PositionDiff INT16).
-pub type FB_SLI2_UINT = FB_SLI2<u16, i16, 2, 6>;
-/// FB SLI2, DINT variant (PositionDiff INT32).
-pub type FB_SLI2_DINT = FB_SLI2<i32, i32, 0, 4>;
-/// FB SLI2, UDINT variant (PositionDiff INT32).
-pub type FB_SLI2_UDINT = FB_SLI2<u32, i32, 0, 4>;
+crate::base::layout::block_struct! {
+    /// FB SLI2 instance (ABI-2 §11.10), generic over the Position type `T` and the
+    /// PositionDiff type `TS`; `P1` and `P2` are the reserved gaps (after Position, after
+    /// PositionDiff) that make the 16- and 32-bit layouts differ. Size: 144 bytes.
+    FB_SLI2[T: Analog, TS: Analog; P1, P2] {
+        /// Offset 0. SLI: a rising edge saves Position and starts the monitoring; TRUE keeps it
+        /// on (active bit 0, required).
+        pub bSLI: SL_BOOL,
+        /// Offset 1. Reserved, keep 0.
+        pub aReserved0: [u8; 15],
+        /// Offset 16. FbRun of the owning group: TRUE = the block executes.
+        pub bRun: SL_BOOL,
+        /// Offset 17. ErrAck of the owning group.
+        pub bErrAck: SL_BOOL,
+        /// Offset 18. Reserved, keep 0.
+        pub aReserved1: [u8; 6],
+        /// Offset 24 (analog input base). Position (active bit 8, required).
+        pub nPosition: T,
+        /// Reserved up to the parameters (16-bit: 2 bytes, 32-bit: none).
+        pub aReserved2: [u8; P1],
+        /// Offset 28. "Limit pos": permitted deviation above LatchPosition, ≤ the maximum of TS.
+        pub nLimitPos: u32,
+        /// Offset 32. "Limit neg": permitted deviation below LatchPosition (a magnitude), ≤ the
+        /// maximum of TS.
+        pub nLimitNeg: u32,
+        /// Offset 36. SL_OPT_SLI2_OVERFLOW_ALLOWED (bit 8), SL_OPT_SLI2_EXCEEDED_SUPPORT (bit 9).
+        pub dwOptions: u32,
+        /// Offset 40. Exactly bits 0 and 8 (SL_SLI_ACTIVE).
+        pub wInputActive: u16,
+        /// Offset 42. Reserved.
+        pub aReserved3: [u8; 6],
+        /// Offset 48 (output base). Error, TRUE in ERROR only.
+        pub bError: SL_BOOL,
+        /// Offset 49. SLIActive: TRUE in RUN (SLI TRUE, PositionDiff within the limits).
+        pub bSLIActive: SL_BOOL,
+        /// Offset 50. BelowMin: in EXCEEDED, PositionDiff < −Limit neg.
+        pub bBelowMin: SL_BOOL,
+        /// Offset 51. AboveMax: in EXCEEDED, PositionDiff > Limit pos.
+        pub bAboveMax: SL_BOOL,
+        /// Offset 52. Reserved.
+        pub aReserved4: [u8; 4],
+        /// Offset 56 (analog output base). PositionDiff = Position − LatchPosition in RUN and
+        /// (saturated) in EXCEEDED, else 0.
+        pub nPositionDiff: TS,
+        /// Reserved up to the info data (16-bit: 6 bytes, 32-bit: 4).
+        pub aReserved5: [u8; P2],
+    } info [aReserved6, aReserved7] SL_SLI_PRIVATE, "64 bytes":
+        "The manual's status value (RUN, STOP, SAFE, ERROR, RESET, EXCEEDED).",
+        "Diag value (1 underflow, 2 overflow) + library bits 13-15.",
+        "Text ID of the latched diag message (0x40C0, 0x40C1), 0 = none.",
+        "Message parameter 2: Position as a 32-bit pattern.", "Message parameter 3: LatchPosition."
+}
 
 // The ABI-2 §11.10 numbers (identical for both widths).
 const _: () = {
@@ -161,44 +136,3 @@ impl<T: Analog, TS: Analog, const P1: usize, const P2: usize> WindowFb for FB_SL
 }
 
 super::window::window_block!([T: Analog, TS: Analog, const P1: usize, const P2: usize] FB_SLI2<T, TS, P1, P2>);
-
-impl<T: Analog, TS: Analog, const P1: usize, const P2: usize> FB_SLI2<T, TS, P1, P2> {
-    /// An all-zero instance (valid: it initialises itself on the first cycle, ABI §3.6).
-    pub const fn zeroed() -> Self {
-        Self {
-            bSLI: 0,
-            aReserved0: [0; 15],
-            bRun: 0,
-            bErrAck: 0,
-            aReserved1: [0; 6],
-            nPosition: T::ZERO,
-            aReserved2: [0; P1],
-            nLimitPos: 0,
-            nLimitNeg: 0,
-            dwOptions: 0,
-            wInputActive: 0,
-            aReserved3: [0; 6],
-            bError: 0,
-            bSLIActive: 0,
-            bBelowMin: 0,
-            bAboveMax: 0,
-            aReserved4: [0; 4],
-            nPositionDiff: TS::ZERO,
-            aReserved5: [0; P2],
-            nState: 0,
-            aReserved6: [0; 1],
-            nDiag: 0,
-            nDiagTextId: 0,
-            aReserved7: [0; 2],
-            dwDiagPar2: 0,
-            dwDiagPar3: 0,
-            stPrivate: SL_SLI_PRIVATE::ZERO,
-        }
-    }
-}
-
-impl<T: Analog, TS: Analog, const P1: usize, const P2: usize> Default for FB_SLI2<T, TS, P1, P2> {
-    fn default() -> Self {
-        Self::zeroed()
-    }
-}

@@ -17,18 +17,15 @@ use super::{diag_message, in_range, magic, Analog};
 use super::{SL_DIAG_VALUE_OVERFLOW, SL_DIAG_VALUE_UNDERFLOW};
 use crate::base::block::{Private, Registered};
 use crate::base::envelope::Block;
-use crate::base::header::{param_crc, SL_PRIVATE_HEADER};
+use crate::base::header::param_crc;
 use crate::base::time;
 use crate::base::types::*;
 
-/// Type tag of FB_SPEED_INT (ABI-2 §10.6: sequential from 16 in the order of §10.3).
-pub const SL_TYPE_SPEED_INT: u16 = 44;
-/// FB_SPEED_UINT.
-pub const SL_TYPE_SPEED_UINT: u16 = 45;
-/// FB_SPEED_DINT.
-pub const SL_TYPE_SPEED_DINT: u16 = 46;
-/// FB_SPEED_UDINT.
-pub const SL_TYPE_SPEED_UDINT: u16 = 47;
+super::analog_variants! {
+    FB_SPEED:
+        INT SL_TYPE_SPEED_INT = 44 => FB_SPEED_INT[i16, 2, 6], UINT SL_TYPE_SPEED_UINT = 45 => FB_SPEED_UINT[u16, 2, 6],
+        DINT SL_TYPE_SPEED_DINT = 46 => FB_SPEED_DINT[i32, 0, 4], UDINT SL_TYPE_SPEED_UDINT = 47 => FB_SPEED_UDINT[u32, 0, 4]
+}
 
 /// `dwOptions`: "Overflow Check" — the position difference is taken modulo 2^W before the
 /// range check (a position counter wrapping at its type's end is no jump).
@@ -42,90 +39,59 @@ pub const SL_TEXT_SPEED_OVERFLOW: u16 = 0x4089;
 /// `wInputActive` bit of Position (required, the only bit).
 pub const SL_SPEED_ACTIVE_POSITION: u16 = 1 << 8;
 
-/// Private state of FB SPEED (56 bytes). Never written by the user. The header's `tPhase`
-/// is the time of the latch.
-#[repr(C)]
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-#[allow(non_snake_case)]
-pub struct SL_SPEED_PRIVATE {
-    /// Common head.
-    pub stHeader: SL_PRIVATE_HEADER,
-    /// Latched `tTimeInterval`.
-    pub tInterval: u32,
-    /// Latched `dwOptions`.
-    pub dwOptions: u32,
-    /// Latched `wInputActive`.
-    pub wActive: u16,
-    /// Reserved.
-    pub aReserved: [u8; 2],
-    /// The latched Position as a 32-bit pattern.
-    pub dwLatch: u32,
-    /// Speed of the last update as a 32-bit pattern.
-    pub dwSpeed: u32,
-    /// Diag message parameters 2 and 3 latched at the ERROR entry.
-    pub adwPar: [u32; 2],
+crate::base::layout::private_struct! {
+    /// Private state of FB SPEED (56 bytes). Never written by the user. The header's `tPhase`
+    /// is the time of the latch.
+    SL_SPEED_PRIVATE {
+        /// Latched `tTimeInterval`.
+        pub tInterval: u32,
+        /// Latched `dwOptions`.
+        pub dwOptions: u32,
+        /// Latched `wInputActive`.
+        pub wActive: u16,
+        /// Reserved.
+        pub aReserved: [u8; 2],
+        /// The latched Position as a 32-bit pattern.
+        pub dwLatch: u32,
+        /// Speed of the last update as a 32-bit pattern.
+        pub dwSpeed: u32,
+        /// Diag message parameters 2 and 3 latched at the ERROR entry.
+        pub adwPar: [u32; 2],
+    }
 }
 
-/// FB SPEED instance (ABI-2 §11.7), generic over the signal type `T`; `P1` (after Position)
-/// and `P2` (after Speed) are the reserved gaps that make the 16- and 32-bit layouts differ.
-#[repr(C)]
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-#[allow(non_snake_case)]
-pub struct FB_SPEED<T, const P1: usize, const P2: usize> {
-    /// Offset 0. Reserved, keep 0 (no BOOL inputs).
-    pub aReserved0: [u8; 16],
-    /// Offset 16. FbRun of the owning group: TRUE = the block executes.
-    pub bRun: SL_BOOL,
-    /// Offset 17. ErrAck of the owning group.
-    pub bErrAck: SL_BOOL,
-    /// Offset 18. Reserved, keep 0.
-    pub aReserved1: [u8; 6],
-    /// Offset 24. Position, the input the speed is computed from (active bit 8, required).
-    pub nPosition: T,
-    /// Reserved up to 28 (16-bit: 2 bytes, 32-bit: none).
-    pub aReserved2: [u8; P1],
-    /// Offset 28. "Time Interval" in ms, 1 … SL_TIME_PARAM_MAX.
-    pub tTimeInterval: u32,
-    /// Offset 32. SL_OPT_SPEED_OVERFLOW_CHECK, no other bit.
-    pub dwOptions: u32,
-    /// Offset 36. Bit 8 (Position) must be set, no other.
-    pub wInputActive: u16,
-    /// Offset 38. Reserved.
-    pub aReserved3: [u8; 2],
-    /// Offset 40, the output base. Error, TRUE in ERROR only.
-    pub bError: SL_BOOL,
-    /// Offset 41. Reserved.
-    pub aReserved4: [u8; 7],
-    /// Offset 48. Speed in increments per interval in RUN, else 0.
-    pub nSpeed: T,
-    /// Reserved up to the info data (16-bit: 6 bytes, 32-bit: 4).
-    pub aReserved5: [u8; P2],
-    /// Offset 56. The manual's status value (RUN, STOP, ERROR, RESET).
-    pub nState: u8,
-    /// Offset 57. Reserved.
-    pub aReserved6: [u8; 1],
-    /// Offset 58. Diag value (1 underflow, 2 overflow) + library bits 13-15.
-    pub nDiag: u16,
-    /// Offset 60. Text ID of the latched diag message (0x4088, 0x4089), 0 = none.
-    pub nDiagTextId: u16,
-    /// Offset 62. Reserved.
-    pub aReserved7: [u8; 2],
-    /// Offset 64. Message parameter 2 (current position as a 32-bit pattern).
-    pub dwDiagPar2: u32,
-    /// Offset 68. Message parameter 3 (latched position).
-    pub dwDiagPar3: u32,
-    /// Offset 72. Private state, 56 bytes: never write it.
-    pub stPrivate: SL_SPEED_PRIVATE,
+crate::base::layout::block_struct! {
+    /// FB SPEED instance (ABI-2 §11.7), generic over the signal type `T`; `P1` (after Position)
+    /// and `P2` (after Speed) are the reserved gaps that make the 16- and 32-bit layouts differ.
+    FB_SPEED[T: Analog; P1, P2] {
+        no_bool_inputs;
+        /// Offset 24. Position, the input the speed is computed from (active bit 8, required).
+        pub nPosition: T,
+        /// Reserved up to 28 (16-bit: 2 bytes, 32-bit: none).
+        pub aReserved2: [u8; P1],
+        /// Offset 28. "Time Interval" in ms, 1 … SL_TIME_PARAM_MAX.
+        pub tTimeInterval: u32,
+        /// Offset 32. SL_OPT_SPEED_OVERFLOW_CHECK, no other bit.
+        pub dwOptions: u32,
+        /// Offset 36. Bit 8 (Position) must be set, no other.
+        pub wInputActive: u16,
+        /// Offset 38. Reserved.
+        pub aReserved3: [u8; 2],
+        /// Offset 40, the output base. Error, TRUE in ERROR only.
+        pub bError: SL_BOOL,
+        /// Offset 41. Reserved.
+        pub aReserved4: [u8; 7],
+        /// Offset 48. Speed in increments per interval in RUN, else 0.
+        pub nSpeed: T,
+        /// Reserved up to the info data (16-bit: 6 bytes, 32-bit: 4).
+        pub aReserved5: [u8; P2],
+    } info [aReserved6, aReserved7] SL_SPEED_PRIVATE, "56 bytes":
+        "The manual's status value (RUN, STOP, ERROR, RESET).",
+        "Diag value (1 underflow, 2 overflow) + library bits 13-15.",
+        "Text ID of the latched diag message (0x4088, 0x4089), 0 = none.",
+        "Message parameter 2 (current position as a 32-bit pattern).",
+        "Message parameter 3 (latched position)."
 }
-
-/// FB SPEED, INT variant.
-pub type FB_SPEED_INT = FB_SPEED<i16, 2, 6>;
-/// FB SPEED, UINT variant.
-pub type FB_SPEED_UINT = FB_SPEED<u16, 2, 6>;
-/// FB SPEED, DINT variant.
-pub type FB_SPEED_DINT = FB_SPEED<i32, 0, 4>;
-/// FB SPEED, UDINT variant.
-pub type FB_SPEED_UDINT = FB_SPEED<u32, 0, 4>;
 
 // The ABI-2 §11.7 numbers (identical for both widths).
 const _: () = {
@@ -168,51 +134,6 @@ crate::impl_member!([T: Analog, const P1: usize, const P2: usize] FB_SPEED<T, P1
     output: [bError, nSpeed],
     info_fields: [nDiagTextId, dwDiagPar2, dwDiagPar3],
 });
-
-impl<T: Analog, const P1: usize, const P2: usize> FB_SPEED<T, P1, P2> {
-    /// An all-zero instance (valid: it initialises itself on the first cycle, ABI §3.6).
-    pub const fn zeroed() -> Self {
-        Self {
-            aReserved0: [0; 16],
-            bRun: 0,
-            bErrAck: 0,
-            aReserved1: [0; 6],
-            nPosition: T::ZERO,
-            aReserved2: [0; P1],
-            tTimeInterval: 0,
-            dwOptions: 0,
-            wInputActive: 0,
-            aReserved3: [0; 2],
-            bError: 0,
-            aReserved4: [0; 7],
-            nSpeed: T::ZERO,
-            aReserved5: [0; P2],
-            nState: 0,
-            aReserved6: [0; 1],
-            nDiag: 0,
-            nDiagTextId: 0,
-            aReserved7: [0; 2],
-            dwDiagPar2: 0,
-            dwDiagPar3: 0,
-            stPrivate: SL_SPEED_PRIVATE {
-                stHeader: SL_PRIVATE_HEADER::ZERO,
-                tInterval: 0,
-                dwOptions: 0,
-                wActive: 0,
-                aReserved: [0; 2],
-                dwLatch: 0,
-                dwSpeed: 0,
-                adwPar: [0; 2],
-            },
-        }
-    }
-}
-
-impl<T: Analog, const P1: usize, const P2: usize> Default for FB_SPEED<T, P1, P2> {
-    fn default() -> Self {
-        Self::zeroed()
-    }
-}
 
 /// Parameters as the user wrote them.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

@@ -9,7 +9,6 @@
 //! state machine below exists once, for every variant of both.
 
 use super::Analog;
-use crate::base::header::SL_PRIVATE_HEADER;
 use crate::base::types::*;
 
 /// Diag message "An underflow has occurred" (parameters: Position, LatchPosition); FB SLI2
@@ -31,47 +30,32 @@ pub const SL_OPT_SLI2_OVERFLOW_ALLOWED: u32 = 1 << 8;
 /// `dwOptions` "ExceededSupport": leaving the window in RUN enters EXCEEDED, not ERROR.
 pub const SL_OPT_SLI2_EXCEEDED_SUPPORT: u32 = 1 << 9;
 
-/// Private state of FB SLI and FB SLI2 (64 bytes). Never written by the user.
-#[repr(C)]
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-#[allow(non_snake_case, non_camel_case_types)]
-pub struct SL_SLI_PRIVATE {
-    /// Common head (`wAux` bit 0: previous SLI level; bits 1, 2: below / above the window
-    /// in EXCEEDED).
-    pub stHeader: SL_PRIVATE_HEADER,
-    /// Latched `wInputActive`.
-    pub wActive: u16,
-    /// Reserved.
-    pub aReserved: [u8; 2],
-    /// Latched `nLimitPos`, `nLimitNeg`.
-    pub adwLimit: [u32; 2],
-    /// Latched `dwOptions` (0 for SLI).
-    pub dwOptions: u32,
-    /// LatchPosition as a 32-bit pattern of the position type.
-    pub dwLatch: u32,
-    /// Complement of `dwLatch`: a corrupted latch must not move the window unnoticed.
-    pub dwLatchCheck: u32,
-    /// PositionDiff of the last running cycle as a 32-bit pattern of the output type.
-    pub dwDiff: u32,
-    /// Diag message parameters 2 and 3 (Position, LatchPosition) latched at the ERROR entry.
-    pub adwPar: [u32; 2],
+crate::base::layout::private_struct! {
+    /// Private state of FB SLI and FB SLI2 (64 bytes). Never written by the user.
+    SL_SLI_PRIVATE {
+        /// Common head (`wAux` bit 0: previous SLI level; bits 1, 2: below / above the window
+        /// in EXCEEDED).
+        stHeader;
+        /// Latched `wInputActive`.
+        pub wActive: u16,
+        /// Reserved.
+        pub aReserved: [u8; 2],
+        /// Latched `nLimitPos`, `nLimitNeg`.
+        pub adwLimit: [u32; 2],
+        /// Latched `dwOptions` (0 for SLI).
+        pub dwOptions: u32,
+        /// LatchPosition as a 32-bit pattern of the position type.
+        pub dwLatch: u32,
+        /// Complement of `dwLatch`: a corrupted latch must not move the window unnoticed.
+        pub dwLatchCheck: u32,
+        /// PositionDiff of the last running cycle as a 32-bit pattern of the output type.
+        pub dwDiff: u32,
+        /// Diag message parameters 2 and 3 (Position, LatchPosition) latched at the ERROR entry.
+        pub adwPar: [u32; 2],
+    }
 }
 
 const _: () = assert!(core::mem::size_of::<SL_SLI_PRIVATE>() == 64);
-
-impl SL_SLI_PRIVATE {
-    pub(crate) const ZERO: Self = Self {
-        stHeader: SL_PRIVATE_HEADER::ZERO,
-        wActive: 0,
-        aReserved: [0; 2],
-        adwLimit: [0; 2],
-        dwOptions: 0,
-        dwLatch: 0,
-        dwLatchCheck: 0,
-        dwDiff: 0,
-        adwPar: [0; 2],
-    };
-}
 
 /// Parameters as the user wrote them.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

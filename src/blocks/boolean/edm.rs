@@ -9,7 +9,7 @@
 
 use crate::base::block::BlockInfo;
 use crate::base::envelope::Block;
-use crate::base::header::{param_crc, SL_PRIVATE_HEADER};
+use crate::base::header::param_crc;
 use crate::base::types::*;
 use crate::base::{bools, time};
 
@@ -31,61 +31,49 @@ pub const SL_DIAG_EDM_SWITCH_ON: u16 = 1 << 1;
 /// Largest tSwitchOnTime / tSwitchOffTime of FB_EDM in ms (manual §4.9.1: "maximum 10000 ms").
 pub const SL_EDM_TIME_MAX: u32 = 10_000;
 
-/// FB EDM instance (ABI §3, §9). Inputs at the manual's offsets (§4.9.2), output base 32.
-/// Size: 80 bytes.
-#[repr(C)]
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-#[allow(non_snake_case, non_camel_case_types)]
-pub struct FB_EDM {
-    /// Offset 0. Reserved, keep 0.
-    pub aReserved0: [u8; 8],
-    /// Offset 8. Mon1: the monitored command (break or make contact).
-    pub bMon1: SL_BOOL,
-    /// Offset 9. Mon2: the feedback; it has to assume the value opposite to Mon1 within the
-    /// set times.
-    pub bMon2: SL_BOOL,
-    /// Offset 10. Reserved, keep 0.
-    pub aReserved1: [u8; 6],
-    /// Offset 16. FbRun of the owning group.
-    pub bRun: SL_BOOL,
-    /// Offset 17. ErrAck of the owning group.
-    pub bErrAck: SL_BOOL,
-    /// Offset 18. Reserved, keep 0.
-    pub aReserved2: [u8; 2],
-    /// Offset 20. Switch-on monitoring time in ms (≤ 10000; 0 = switch-on monitoring off).
-    pub tSwitchOnTime: u32,
-    /// Offset 24. Switch-off monitoring time in ms (≤ 10000; 0 = switch-off monitoring off).
-    pub tSwitchOffTime: u32,
-    /// Offset 28. Bit 0: Mon1 active, bit 1: Mon2 active (both required).
-    pub wInputActive: u16,
-    /// Offset 30. Same bits: the input is a make contact (negated before evaluation).
-    pub wInputNegated: u16,
-    /// Offset 32 (output base + 0). TRUE in ERROR: a monitoring time was exceeded.
-    pub bError: SL_BOOL,
-    /// Offset 33. Reserved.
-    pub aReserved3: [u8; 7],
-    /// Offset 40. The manual's status value (SL_STATE_*).
-    pub nState: u8,
-    /// Offset 41. Reserved.
-    pub aReserved4: [u8; 1],
-    /// Offset 42. Diagnostic bits (SL_DIAG_EDM_SWITCH_OFF, SL_DIAG_EDM_SWITCH_ON, library bits).
-    pub nDiag: u16,
-    /// Offset 44. Reserved.
-    pub aReserved5: [u8; 4],
-    /// Offset 48. Private state, 32 bytes: never write it.
-    pub stPrivate: SL_EDM_PRIVATE,
+crate::base::layout::block_struct! {
+    /// FB EDM instance (ABI §3, §9). Inputs at the manual's offsets (§4.9.2), output base 32.
+    /// Size: 80 bytes.
+    FB_EDM {
+        /// Offset 0. Reserved, keep 0.
+        pub aReserved0: [u8; 8],
+        /// Offset 8. Mon1: the monitored command (break or make contact).
+        pub bMon1: SL_BOOL,
+        /// Offset 9. Mon2: the feedback; it has to assume the value opposite to Mon1 within the
+        /// set times.
+        pub bMon2: SL_BOOL,
+        /// Offset 10. Reserved, keep 0.
+        pub aReserved1: [u8; 6],
+        /// Offset 16. FbRun of the owning group.
+        pub bRun: SL_BOOL,
+        /// Offset 17. ErrAck of the owning group.
+        pub bErrAck: SL_BOOL,
+        /// Offset 18. Reserved, keep 0.
+        pub aReserved2: [u8; 2],
+        /// Offset 20. Switch-on monitoring time in ms (≤ 10000; 0 = switch-on monitoring off).
+        pub tSwitchOnTime: u32,
+        /// Offset 24. Switch-off monitoring time in ms (≤ 10000; 0 = switch-off monitoring off).
+        pub tSwitchOffTime: u32,
+        /// Offset 28. Bit 0: Mon1 active, bit 1: Mon2 active (both required).
+        pub wInputActive: u16,
+        /// Offset 30. Same bits: the input is a make contact (negated before evaluation).
+        pub wInputNegated: u16,
+        /// Offset 32 (output base + 0). TRUE in ERROR: a monitoring time was exceeded.
+        pub bError: SL_BOOL,
+        /// Offset 33. Reserved.
+        pub aReserved3: [u8; 7],
+    } tail 40 41 42 44 48 [aReserved4, aReserved5] SL_EDM_PRIVATE, 32:
+        "(SL_STATE_*)", "Diagnostic bits (SL_DIAG_EDM_SWITCH_OFF, SL_DIAG_EDM_SWITCH_ON, library bits)."
 }
 
-/// Private state of FB_EDM (32 bytes). Never written by the user. The header's `tPhase` is
-/// the start of the current monitoring, `wAux` bit 0 says it is still waiting for Mon2.
-/// Size: 32 bytes.
-#[repr(C)]
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-#[allow(non_snake_case, non_camel_case_types)]
-pub struct SL_EDM_PRIVATE {
-    pub stHeader: SL_PRIVATE_HEADER,
-    /// Latched times in ms: switch-on, switch-off.
-    pub awTime: [u16; 2],
+crate::base::layout::private_struct! {
+    /// Private state of FB_EDM (32 bytes). Never written by the user. The header's `tPhase` is
+    /// the start of the current monitoring, `wAux` bit 0 says it is still waiting for Mon2.
+    /// Size: 32 bytes.
+    SL_EDM_PRIVATE {
+        /// Latched times in ms: switch-on, switch-off.
+        pub awTime: [u16; 2],
+    }
 }
 
 crate::base::block::block_states!(

@@ -4,7 +4,6 @@
 //! output keeps its current state. The blocks differ only in `SET_DOMINANT`. Neither
 //! reports an error of its own: ERROR (4) only comes from the envelope.
 
-use crate::base::header::SL_PRIVATE_HEADER;
 use crate::base::types::*;
 
 /// FB_SR state SET (manual §4.11.2: 9): the output SrOut is TRUE.
@@ -13,18 +12,16 @@ pub const SL_STATE_SR_SET: u8 = 9;
 /// FB_RS state SET (manual §4.10.2: 9): the output RsOut is TRUE.
 pub const SL_STATE_RS_SET: u8 = 9;
 
-/// Private state of FB_RS and FB_SR (64 bytes): the memory is the state (SAFE or SET) in
-/// the header, guarded by its complement copy. Never written by the user.
-#[repr(C)]
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-#[allow(non_snake_case, non_camel_case_types)]
-pub struct SL_FLIPFLOP_PRIVATE {
-    pub stHeader: SL_PRIVATE_HEADER,
-    /// Reserved, 0.
-    pub aReserved: [u8; 4],
-    /// Fast-path slot (`base::envelope`): the key window (two 64-bit words), then its check
-    /// words.
-    pub adwSteady: [u32; 8],
+crate::base::layout::private_struct! {
+    /// Private state of FB_RS and FB_SR (64 bytes): the memory is the state (SAFE or SET) in
+    /// the header, guarded by its complement copy. Never written by the user.
+    SL_FLIPFLOP_PRIVATE {
+        /// Reserved, 0.
+        pub aReserved: [u8; 4],
+        /// Fast-path slot (`base::envelope`): the key window (two 64-bit words), then its check
+        /// words.
+        pub adwSteady: [u32; 8],
+    }
 }
 
 const _: () = assert!(core::mem::size_of::<SL_FLIPFLOP_PRIVATE>() == 64);
@@ -92,45 +89,35 @@ pub(crate) const fn state_of(is_set: bool) -> u8 {
 /// build.rs writes every invocation out for cbindgen (`build_support/expand.rs`).
 macro_rules! flipflop_struct {
     ($(#[doc = $doc:literal])* $name:ident: $reset:literal, $set:literal => $out:ident) => {
-        $(#[doc = $doc])*
-        #[repr(C)]
-        #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-        #[allow(non_snake_case, non_camel_case_types)]
-        pub struct $name {
-            /// Offset 0. Reserved, keep 0.
-            pub aReserved0: [u8; 8],
-            #[doc = concat!(" Offset 8. Reset: logic 1 switches the output off", $reset, ".")]
-            pub bReset: SL_BOOL,
-            #[doc = concat!(" Offset 9. Set: logic 1 switches the output on", $set, ".")]
-            pub bSet: SL_BOOL,
-            /// Offset 10. Reserved, keep 0.
-            pub aReserved1: [u8; 6],
-            /// Offset 16. FbRun of the owning group.
-            pub bRun: SL_BOOL,
-            /// Offset 17. ErrAck of the owning group.
-            pub bErrAck: SL_BOOL,
-            /// Offset 18. Reserved, keep 0.
-            pub aReserved2: [u8; 2],
-            /// Offset 20. Bit 0: Reset is active, bit 1: Set is active (at least one).
-            pub wInputActive: u16,
-            /// Offset 22. Same bits: the input is a make contact (negated before evaluation).
-            pub wInputNegated: u16,
-            /// Offset 24 (output base + 0). Reserved.
-            pub aReserved3: [u8; 1],
-            /// Offset 25 (output base + 1). TRUE in SET; the safe state is FALSE.
-            pub $out: SL_BOOL,
-            /// Offset 26. Reserved.
-            pub aReserved4: [u8; 6],
-            /// Offset 32. The manual's status value (SL_STATE_*).
-            pub nState: u8,
-            /// Offset 33. Reserved.
-            pub aReserved5: [u8; 1],
-            /// Offset 34. Diagnostic bits (only the library bits 13-15).
-            pub nDiag: u16,
-            /// Offset 36. Reserved.
-            pub aReserved6: [u8; 4],
-            /// Offset 40. Private state, 64 bytes: never write it.
-            pub stPrivate: $crate::blocks::boolean::flipflop::SL_FLIPFLOP_PRIVATE,
+        $crate::base::layout::block_struct! {
+            $(#[doc = $doc])*
+            $name {
+                /// Offset 0. Reserved, keep 0.
+                pub aReserved0: [u8; 8],
+                #[doc = concat!(" Offset 8. Reset: logic 1 switches the output off", $reset, ".")]
+                pub bReset: SL_BOOL,
+                #[doc = concat!(" Offset 9. Set: logic 1 switches the output on", $set, ".")]
+                pub bSet: SL_BOOL,
+                /// Offset 10. Reserved, keep 0.
+                pub aReserved1: [u8; 6],
+                /// Offset 16. FbRun of the owning group.
+                pub bRun: SL_BOOL,
+                /// Offset 17. ErrAck of the owning group.
+                pub bErrAck: SL_BOOL,
+                /// Offset 18. Reserved, keep 0.
+                pub aReserved2: [u8; 2],
+                /// Offset 20. Bit 0: Reset is active, bit 1: Set is active (at least one).
+                pub wInputActive: u16,
+                /// Offset 22. Same bits: the input is a make contact (negated before evaluation).
+                pub wInputNegated: u16,
+                /// Offset 24 (output base + 0). Reserved.
+                pub aReserved3: [u8; 1],
+                /// Offset 25 (output base + 1). TRUE in SET; the safe state is FALSE.
+                pub $out: SL_BOOL,
+                /// Offset 26. Reserved.
+                pub aReserved4: [u8; 6],
+            } tail 32 33 34 36 40 [aReserved5, aReserved6] $crate::blocks::boolean::flipflop::SL_FLIPFLOP_PRIVATE, 64:
+                "(SL_STATE_*)", "Diagnostic bits (only the library bits 13-15)."
         }
     };
 }

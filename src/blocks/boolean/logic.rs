@@ -3,19 +3,15 @@
 //! block's function is satisfied, SAFE (3) otherwise (blocks without SAFE stay in RUN with
 //! FALSE outputs). No block errors of their own: ERROR (4) only comes from the envelope.
 
-use crate::base::header::SL_PRIVATE_HEADER;
-
-/// Private state of the combinational blocks (64 bytes). Never written by the user.
-#[repr(C)]
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-#[allow(non_snake_case, non_camel_case_types)]
-pub struct SL_LOGIC_PRIVATE {
-    pub stHeader: SL_PRIVATE_HEADER,
-    /// Reserved, 0.
-    pub aReserved: [u8; 4],
-    /// Fast-path slot (`base::envelope`): the key window (two 64-bit words), then its check
-    /// words.
-    pub adwSteady: [u32; 8],
+crate::base::layout::private_struct! {
+    /// Private state of the combinational blocks (64 bytes). Never written by the user.
+    SL_LOGIC_PRIVATE {
+        /// Reserved, 0.
+        pub aReserved: [u8; 4],
+        /// Fast-path slot (`base::envelope`): the key window (two 64-bit words), then its check
+        /// words.
+        pub adwSteady: [u32; 8],
+    }
 }
 
 crate::base::envelope::steady_private!(SL_LOGIC_PRIVATE, adwSteady, window 2);
@@ -174,55 +170,45 @@ macro_rules! gate8_struct {
     ($(#[doc = $doc:literal])* $name:ident: $op:literal, $OP:literal, $in1:literal, $least:literal;
      [$i1:ident, $i2:ident, $i3:ident, $i4:ident, $i5:ident, $i6:ident, $i7:ident, $i8:ident]
      => $out:ident) => {
-        $(#[doc = $doc])*
-        #[repr(C)]
-        #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-        #[allow(non_snake_case, non_camel_case_types)]
-        pub struct $name {
-            /// Offset 0. Reserved, keep 0.
-            pub aReserved0: [u8; 8],
-            #[doc = concat!(" Offset 8. ", $in1)]
-            pub $i1: SL_BOOL,
-            /// Offset 9.
-            pub $i2: SL_BOOL,
-            /// Offset 10.
-            pub $i3: SL_BOOL,
-            /// Offset 11.
-            pub $i4: SL_BOOL,
-            /// Offset 12.
-            pub $i5: SL_BOOL,
-            /// Offset 13.
-            pub $i6: SL_BOOL,
-            /// Offset 14.
-            pub $i7: SL_BOOL,
-            /// Offset 15.
-            pub $i8: SL_BOOL,
-            /// Offset 16. FbRun of the owning group.
-            pub bRun: SL_BOOL,
-            /// Offset 17. ErrAck of the owning group.
-            pub bErrAck: SL_BOOL,
-            /// Offset 18. Reserved, keep 0.
-            pub aReserved1: [u8; 2],
-            #[doc = concat!(" Offset 20. Bit n-1 set: ", $op, "Inn is active ", $least, ".")]
-            pub wInputActive: u16,
-            #[doc = concat!(" Offset 22. Bit n-1 set: ", $op, "Inn is a make contact (negated before the ", $OP, ").")]
-            pub wInputNegated: u16,
-            /// Offset 24 (output base + 0). Reserved.
-            pub aReserved2: [u8; 1],
-            #[doc = concat!(" Offset 25 (output base + 1). ", $OP, " of the active inputs.")]
-            pub $out: SL_BOOL,
-            /// Offset 26. Reserved.
-            pub aReserved3: [u8; 6],
-            /// Offset 32. The manual's status value (SL_STATE_*).
-            pub nState: u8,
-            /// Offset 33. Reserved.
-            pub aReserved4: [u8; 1],
-            /// Offset 34. Diagnostic bits (only the library bits 13-15).
-            pub nDiag: u16,
-            /// Offset 36. Reserved.
-            pub aReserved5: [u8; 4],
-            /// Offset 40. Private state, 64 bytes: never write it.
-            pub stPrivate: $crate::blocks::boolean::logic::SL_LOGIC_PRIVATE,
+        $crate::base::layout::block_struct! {
+            $(#[doc = $doc])*
+            $name {
+                /// Offset 0. Reserved, keep 0.
+                pub aReserved0: [u8; 8],
+                #[doc = concat!(" Offset 8. ", $in1)]
+                pub $i1: SL_BOOL,
+                /// Offset 9.
+                pub $i2: SL_BOOL,
+                /// Offset 10.
+                pub $i3: SL_BOOL,
+                /// Offset 11.
+                pub $i4: SL_BOOL,
+                /// Offset 12.
+                pub $i5: SL_BOOL,
+                /// Offset 13.
+                pub $i6: SL_BOOL,
+                /// Offset 14.
+                pub $i7: SL_BOOL,
+                /// Offset 15.
+                pub $i8: SL_BOOL,
+                /// Offset 16. FbRun of the owning group.
+                pub bRun: SL_BOOL,
+                /// Offset 17. ErrAck of the owning group.
+                pub bErrAck: SL_BOOL,
+                /// Offset 18. Reserved, keep 0.
+                pub aReserved1: [u8; 2],
+                #[doc = concat!(" Offset 20. Bit n-1 set: ", $op, "Inn is active ", $least, ".")]
+                pub wInputActive: u16,
+                #[doc = concat!(" Offset 22. Bit n-1 set: ", $op, "Inn is a make contact (negated before the ", $OP, ").")]
+                pub wInputNegated: u16,
+                /// Offset 24 (output base + 0). Reserved.
+                pub aReserved2: [u8; 1],
+                #[doc = concat!(" Offset 25 (output base + 1). ", $OP, " of the active inputs.")]
+                pub $out: SL_BOOL,
+                /// Offset 26. Reserved.
+                pub aReserved3: [u8; 6],
+            } tail 32 33 34 36 40 [aReserved4, aReserved5] $crate::blocks::boolean::logic::SL_LOGIC_PRIVATE, 64:
+                "(SL_STATE_*)", "Diagnostic bits (only the library bits 13-15)."
         }
     };
 }

@@ -15,7 +15,7 @@ use crate::base::block::BlockInfo;
 use crate::base::bools;
 use crate::base::edm::Edm;
 use crate::base::envelope::Block;
-use crate::base::header::{param_crc, SL_PRIVATE_HEADER};
+use crate::base::header::param_crc;
 use crate::base::types::*;
 use crate::base::{pair, time};
 
@@ -58,104 +58,93 @@ pub const SL_MUTING_MAX_MUTING_TIME_MAX: u32 = 600_000;
 /// Largest `tMuteDelOutDelay` of FB_MUTING in ms (manual §4.8.1: "delayed by up to 30 seconds").
 pub const SL_MUTING_DELOUT_DELAY_MAX: u32 = 30_000;
 
-/// FB MUTING instance (ABI §3, §9). Inputs at the manual's offsets (§4.8.2), outputs at
-/// output base 56 + the manual's offsets.
-/// Size: 144 bytes.
-#[repr(C)]
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-#[allow(non_snake_case, non_camel_case_types)]
-pub struct FB_MUTING {
-    /// Offset 0. MutingEnable: TRUE allows a muting sequence; FALSE = an interruption of
-    /// the protective field switches the outputs off.
-    pub bMutingEnable: SL_BOOL,
-    /// Offset 1. Feedback loop of MuteOut (SL_OPT_EDM1).
-    pub bEDM1: SL_BOOL,
-    /// Offset 2. Feedback loop of MuteDelOut (SL_OPT_EDM2).
-    pub bEDM2: SL_BOOL,
-    /// Offset 3. Reserved, keep 0.
-    pub aReserved0: [u8; 5],
-    /// Offset 8. Muting sensor 1 (parallel: group 1 with MutingIn2). TRUE = actuated.
-    pub bMutingIn1: SL_BOOL,
-    /// Offset 9. Muting sensor 2.
-    pub bMutingIn2: SL_BOOL,
-    /// Offset 10. Protective device channel 1 (OSSD): TRUE = protective field clear.
-    pub bOSSDIn1: SL_BOOL,
-    /// Offset 11. Protective device channel 2 (pair with OSSDIn1).
-    pub bOSSDIn2: SL_BOOL,
-    /// Offset 12. Muting sensor 3 (parallel: group 2 with MutingIn4).
-    pub bMutingIn3: SL_BOOL,
-    /// Offset 13. Muting sensor 4.
-    pub bMutingIn4: SL_BOOL,
-    /// Offset 14. Reserved, keep 0.
-    pub aReserved1: [u8; 2],
-    /// Offset 16. FbRun of the owning group: TRUE = the block executes.
-    pub bRun: SL_BOOL,
-    /// Offset 17. ErrAck of the owning group.
-    pub bErrAck: SL_BOOL,
-    /// Offset 18. Reserved, keep 0.
-    pub aReserved2: [u8; 2],
-    /// Offset 20. Discrepancy time of group MutingIn1/2 in ms (parallel only; 0 = none).
-    pub tDiscTime12: u32,
-    /// Offset 24. Discrepancy time of OSSDIn1/2 in ms (0 = none).
-    pub tDiscTimeOSSD: u32,
-    /// Offset 28. Discrepancy time of group MutingIn3/4 in ms (parallel only; 0 = none).
-    pub tDiscTime34: u32,
-    /// Offset 32. Filter time of the muting inputs in ms (≤ 500; 0 = unfiltered).
-    pub tFilterTime: u32,
-    /// Offset 36. Maximum muting time in ms (≤ 600 000 = 10 min; 0 = not monitored).
-    pub tMaxMutingTime: u32,
-    /// Offset 40. Delay of MuteDelOut in ms (≤ 30 000).
-    pub tMuteDelOutDelay: u32,
-    /// Offset 44. Bits 0-5: MutingIn1, MutingIn2, OSSDIn1, OSSDIn2, MutingIn3, MutingIn4 active.
-    pub wInputActive: u16,
-    /// Offset 46. Same bits: input is a make contact (negated).
-    pub wInputNegated: u16,
-    /// Offset 48. SL_OPT_EDM1 | EDM2 | MUTING_SEQUENTIAL | MUTING_BACKWARDS |
-    /// MUTING_OSSD_CHECK_OPTIONAL.
-    pub dwOptions: u32,
-    /// Offset 52. Reserved.
-    pub aReserved3: [u8; 4],
-    /// Offset 56 (output base + 0). TRUE in ERROR.
-    pub bError: SL_BOOL,
-    /// Offset 57 (output base + 1). TRUE while a muting sequence runs (MUTING1…MUTING9).
-    pub bMutingActive: SL_BOOL,
-    /// Offset 58 (output base + 2). Undelayed output.
-    pub bMuteOut: SL_BOOL,
-    /// Offset 59 (output base + 3). Delayed output.
-    pub bMuteDelOut: SL_BOOL,
-    /// Offset 60. Reserved.
-    pub aReserved4: [u8; 4],
-    /// Offset 64. The manual's status value (SL_STATE_*, SL_STATE_MUTING_MUTINGx).
-    pub nState: u8,
-    /// Offset 65. Reserved.
-    pub aReserved5: [u8; 1],
-    /// Offset 66. Diagnostic bits (manual §4.8.2).
-    pub nDiag: u16,
-    /// Offset 68. Reserved.
-    pub aReserved6: [u8; 4],
-    /// Offset 72. Private state, 72 bytes: never write it.
-    pub stPrivate: SL_MUTING_PRIVATE,
+crate::base::layout::block_struct! {
+    /// FB MUTING instance (ABI §3, §9). Inputs at the manual's offsets (§4.8.2), outputs at
+    /// output base 56 + the manual's offsets.
+    /// Size: 144 bytes.
+    FB_MUTING {
+        /// Offset 0. MutingEnable: TRUE allows a muting sequence; FALSE = an interruption of
+        /// the protective field switches the outputs off.
+        pub bMutingEnable: SL_BOOL,
+        /// Offset 1. Feedback loop of MuteOut (SL_OPT_EDM1).
+        pub bEDM1: SL_BOOL,
+        /// Offset 2. Feedback loop of MuteDelOut (SL_OPT_EDM2).
+        pub bEDM2: SL_BOOL,
+        /// Offset 3. Reserved, keep 0.
+        pub aReserved0: [u8; 5],
+        /// Offset 8. Muting sensor 1 (parallel: group 1 with MutingIn2). TRUE = actuated.
+        pub bMutingIn1: SL_BOOL,
+        /// Offset 9. Muting sensor 2.
+        pub bMutingIn2: SL_BOOL,
+        /// Offset 10. Protective device channel 1 (OSSD): TRUE = protective field clear.
+        pub bOSSDIn1: SL_BOOL,
+        /// Offset 11. Protective device channel 2 (pair with OSSDIn1).
+        pub bOSSDIn2: SL_BOOL,
+        /// Offset 12. Muting sensor 3 (parallel: group 2 with MutingIn4).
+        pub bMutingIn3: SL_BOOL,
+        /// Offset 13. Muting sensor 4.
+        pub bMutingIn4: SL_BOOL,
+        /// Offset 14. Reserved, keep 0.
+        pub aReserved1: [u8; 2],
+        /// Offset 16. FbRun of the owning group: TRUE = the block executes.
+        pub bRun: SL_BOOL,
+        /// Offset 17. ErrAck of the owning group.
+        pub bErrAck: SL_BOOL,
+        /// Offset 18. Reserved, keep 0.
+        pub aReserved2: [u8; 2],
+        /// Offset 20. Discrepancy time of group MutingIn1/2 in ms (parallel only; 0 = none).
+        pub tDiscTime12: u32,
+        /// Offset 24. Discrepancy time of OSSDIn1/2 in ms (0 = none).
+        pub tDiscTimeOSSD: u32,
+        /// Offset 28. Discrepancy time of group MutingIn3/4 in ms (parallel only; 0 = none).
+        pub tDiscTime34: u32,
+        /// Offset 32. Filter time of the muting inputs in ms (≤ 500; 0 = unfiltered).
+        pub tFilterTime: u32,
+        /// Offset 36. Maximum muting time in ms (≤ 600 000 = 10 min; 0 = not monitored).
+        pub tMaxMutingTime: u32,
+        /// Offset 40. Delay of MuteDelOut in ms (≤ 30 000).
+        pub tMuteDelOutDelay: u32,
+        /// Offset 44. Bits 0-5: MutingIn1, MutingIn2, OSSDIn1, OSSDIn2, MutingIn3, MutingIn4 active.
+        pub wInputActive: u16,
+        /// Offset 46. Same bits: input is a make contact (negated).
+        pub wInputNegated: u16,
+        /// Offset 48. SL_OPT_EDM1 | EDM2 | MUTING_SEQUENTIAL | MUTING_BACKWARDS |
+        /// MUTING_OSSD_CHECK_OPTIONAL.
+        pub dwOptions: u32,
+        /// Offset 52. Reserved.
+        pub aReserved3: [u8; 4],
+        /// Offset 56 (output base + 0). TRUE in ERROR.
+        pub bError: SL_BOOL,
+        /// Offset 57 (output base + 1). TRUE while a muting sequence runs (MUTING1…MUTING9).
+        pub bMutingActive: SL_BOOL,
+        /// Offset 58 (output base + 2). Undelayed output.
+        pub bMuteOut: SL_BOOL,
+        /// Offset 59 (output base + 3). Delayed output.
+        pub bMuteDelOut: SL_BOOL,
+        /// Offset 60. Reserved.
+        pub aReserved4: [u8; 4],
+    } tail 64 65 66 68 72 [aReserved5, aReserved6] SL_MUTING_PRIVATE, 72:
+        "(SL_STATE_*, SL_STATE_MUTING_MUTINGx)", "Diagnostic bits (manual §4.8.2)."
 }
 
-/// Private state of FB_MUTING (72 bytes). Never written by the user.
-/// Size: 72 bytes.
-#[repr(C)]
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-#[allow(non_snake_case, non_camel_case_types)]
-pub struct SL_MUTING_PRIVATE {
-    /// Offset 0. Common head; `wAux` holds the filtered muting inputs (bits 0-5), their
-    /// running filter timers (bits 6-11), the running pair timers (bits 12-14) and the
-    /// direction of the running sequence (bit 15, backwards).
-    pub stHeader: SL_PRIVATE_HEADER,
-    /// Offset 28. Latched maximum muting time in ms.
-    pub tMaxMutingTime: u32,
-    /// Offset 32. Latched times in ms: discrepancy times MutingIn1/2, OSSD, MutingIn3/4,
-    /// filter time, MuteDelOut delay, reserved.
-    pub awTime: [u16; 6],
-    /// Offset 44. Start times of the pair discrepancy timers.
-    pub atDiscStart: [u32; 3],
-    /// Offset 56. Start times of the filter timers of MutingIn1, 2, 3, 4.
-    pub atFilterStart: [u32; 4],
+crate::base::layout::private_struct! {
+    /// Private state of FB_MUTING (72 bytes). Never written by the user.
+    /// Size: 72 bytes.
+    SL_MUTING_PRIVATE {
+        /// Offset 0. Common head; `wAux` holds the filtered muting inputs (bits 0-5), their
+        /// running filter timers (bits 6-11), the running pair timers (bits 12-14) and the
+        /// direction of the running sequence (bit 15, backwards).
+        stHeader;
+        /// Offset 28. Latched maximum muting time in ms.
+        pub tMaxMutingTime: u32,
+        /// Offset 32. Latched times in ms: discrepancy times MutingIn1/2, OSSD, MutingIn3/4,
+        /// filter time, MuteDelOut delay, reserved.
+        pub awTime: [u16; 6],
+        /// Offset 44. Start times of the pair discrepancy timers.
+        pub atDiscStart: [u32; 3],
+        /// Offset 56. Start times of the filter timers of MutingIn1, 2, 3, 4.
+        pub atFilterStart: [u32; 4],
+    }
 }
 
 crate::base::block::block_states!(

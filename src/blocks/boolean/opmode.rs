@@ -24,95 +24,83 @@ pub const SL_DIAG_OPMODE_DISC: u16 = 1 << 0;
 /// Block type tag of FB_OPMODE.
 pub const SL_TYPE_OPMODE: u16 = 7;
 
-/// FB OPMODE instance (ABI §3, §9). Inputs at the manual's offsets (§4.3.2), outputs at
-/// output base 32 + the manual's offsets.
-/// Size: 88 bytes.
-#[repr(C)]
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-#[allow(non_snake_case, non_camel_case_types)]
-pub struct FB_OPMODE {
-    /// Offset 0. Restart (push button, make contact): with SL_OPT_MANUAL_RESTART its falling
-    /// edge enables the selected mode's output. Ignored without the option.
-    pub bRestart: SL_BOOL,
-    /// Offset 1. Reserved, keep 0.
-    pub aReserved0: [u8; 7],
-    /// Offset 8. Operating mode input 1.
-    pub bOpIn1: SL_BOOL,
-    /// Offset 9. Operating mode input 2.
-    pub bOpIn2: SL_BOOL,
-    /// Offset 10. Operating mode input 3.
-    pub bOpIn3: SL_BOOL,
-    /// Offset 11. Operating mode input 4.
-    pub bOpIn4: SL_BOOL,
-    /// Offset 12. Operating mode input 5.
-    pub bOpIn5: SL_BOOL,
-    /// Offset 13. Operating mode input 6.
-    pub bOpIn6: SL_BOOL,
-    /// Offset 14. Operating mode input 7.
-    pub bOpIn7: SL_BOOL,
-    /// Offset 15. Operating mode input 8.
-    pub bOpIn8: SL_BOOL,
-    /// Offset 16. FbRun of the owning group: TRUE = the block executes.
-    pub bRun: SL_BOOL,
-    /// Offset 17. ErrAck of the owning group.
-    pub bErrAck: SL_BOOL,
-    /// Offset 18. Reserved, keep 0.
-    pub aReserved1: [u8; 2],
-    /// Offset 20. Longest time in ms with no mode or more than one mode selected (0 = no
-    /// monitoring; at most SL_TIME_PARAM_MAX).
-    pub tDiscTime: u32,
-    /// Offset 24. Bit n-1 set: OpInn is active (at least two).
-    pub wInputActive: u16,
-    /// Offset 26. Reserved, keep 0.
-    pub aReserved2: [u8; 2],
-    /// Offset 28. SL_OPT_MANUAL_RESTART (the Restart input is activated).
-    pub dwOptions: u32,
-    /// Offset 32 (output base + 0). TRUE in ERROR.
-    pub bError: SL_BOOL,
-    /// Offset 33. Reserved.
-    pub aReserved3: [u8; 7],
-    /// Offset 40 (output base + 8). Output of mode 1.
-    pub bOpOut1: SL_BOOL,
-    /// Offset 41 (output base + 9). Output of mode 2.
-    pub bOpOut2: SL_BOOL,
-    /// Offset 42 (output base + 10). Output of mode 3.
-    pub bOpOut3: SL_BOOL,
-    /// Offset 43 (output base + 11). Output of mode 4.
-    pub bOpOut4: SL_BOOL,
-    /// Offset 44 (output base + 12). Output of mode 5.
-    pub bOpOut5: SL_BOOL,
-    /// Offset 45 (output base + 13). Output of mode 6.
-    pub bOpOut6: SL_BOOL,
-    /// Offset 46 (output base + 14). Output of mode 7.
-    pub bOpOut7: SL_BOOL,
-    /// Offset 47 (output base + 15). Output of mode 8.
-    pub bOpOut8: SL_BOOL,
-    /// Offset 48. The manual's status value (SL_STATE_*).
-    pub nState: u8,
-    /// Offset 49. Reserved.
-    pub aReserved4: [u8; 1],
-    /// Offset 50. Diagnostic bits (SL_DIAG_OPMODE_DISC and the library bits 13-15).
-    pub nDiag: u16,
-    /// Offset 52. Reserved.
-    pub aReserved5: [u8; 4],
-    /// Offset 56. Private state, 32 bytes: never write it.
-    pub stPrivate: SL_OPMODE_PRIVATE,
+crate::base::layout::block_struct! {
+    /// FB OPMODE instance (ABI §3, §9). Inputs at the manual's offsets (§4.3.2), outputs at
+    /// output base 32 + the manual's offsets.
+    /// Size: 88 bytes.
+    FB_OPMODE {
+        /// Offset 0. Restart (push button, make contact): with SL_OPT_MANUAL_RESTART its falling
+        /// edge enables the selected mode's output. Ignored without the option.
+        pub bRestart: SL_BOOL,
+        /// Offset 1. Reserved, keep 0.
+        pub aReserved0: [u8; 7],
+        /// Offset 8. Operating mode input 1.
+        pub bOpIn1: SL_BOOL,
+        /// Offset 9. Operating mode input 2.
+        pub bOpIn2: SL_BOOL,
+        /// Offset 10. Operating mode input 3.
+        pub bOpIn3: SL_BOOL,
+        /// Offset 11. Operating mode input 4.
+        pub bOpIn4: SL_BOOL,
+        /// Offset 12. Operating mode input 5.
+        pub bOpIn5: SL_BOOL,
+        /// Offset 13. Operating mode input 6.
+        pub bOpIn6: SL_BOOL,
+        /// Offset 14. Operating mode input 7.
+        pub bOpIn7: SL_BOOL,
+        /// Offset 15. Operating mode input 8.
+        pub bOpIn8: SL_BOOL,
+        /// Offset 16. FbRun of the owning group: TRUE = the block executes.
+        pub bRun: SL_BOOL,
+        /// Offset 17. ErrAck of the owning group.
+        pub bErrAck: SL_BOOL,
+        /// Offset 18. Reserved, keep 0.
+        pub aReserved1: [u8; 2],
+        /// Offset 20. Longest time in ms with no mode or more than one mode selected (0 = no
+        /// monitoring; at most SL_TIME_PARAM_MAX).
+        pub tDiscTime: u32,
+        /// Offset 24. Bit n-1 set: OpInn is active (at least two).
+        pub wInputActive: u16,
+        /// Offset 26. Reserved, keep 0.
+        pub aReserved2: [u8; 2],
+        /// Offset 28. SL_OPT_MANUAL_RESTART (the Restart input is activated).
+        pub dwOptions: u32,
+        /// Offset 32 (output base + 0). TRUE in ERROR.
+        pub bError: SL_BOOL,
+        /// Offset 33. Reserved.
+        pub aReserved3: [u8; 7],
+        /// Offset 40 (output base + 8). Output of mode 1.
+        pub bOpOut1: SL_BOOL,
+        /// Offset 41 (output base + 9). Output of mode 2.
+        pub bOpOut2: SL_BOOL,
+        /// Offset 42 (output base + 10). Output of mode 3.
+        pub bOpOut3: SL_BOOL,
+        /// Offset 43 (output base + 11). Output of mode 4.
+        pub bOpOut4: SL_BOOL,
+        /// Offset 44 (output base + 12). Output of mode 5.
+        pub bOpOut5: SL_BOOL,
+        /// Offset 45 (output base + 13). Output of mode 6.
+        pub bOpOut6: SL_BOOL,
+        /// Offset 46 (output base + 14). Output of mode 7.
+        pub bOpOut7: SL_BOOL,
+        /// Offset 47 (output base + 15). Output of mode 8.
+        pub bOpOut8: SL_BOOL,
+    } tail 48 49 50 52 56 [aReserved4, aReserved5] SL_OPMODE_PRIVATE, 32:
+        "(SL_STATE_*)", "Diagnostic bits (SL_DIAG_OPMODE_DISC and the library bits 13-15)."
 }
 
-/// Private state of FB_OPMODE (32 bytes). Never written by the user.
-///
-/// `stHeader.wAux` (complement-checked) bits 0-7: the mode (one input bit) that RUN drives
-/// or START waits to confirm; bit 8: the mode-change timer runs, started at
-/// `stHeader.tPhase`.
-/// Size: 32 bytes.
-#[repr(C)]
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-#[allow(non_snake_case, non_camel_case_types)]
-pub struct SL_OPMODE_PRIVATE {
-    pub stHeader: SL_PRIVATE_HEADER,
-    /// Latched tDiscTime in ms.
-    pub wDiscTime: u16,
-    pub aReserved: [u8; 2],
+crate::base::layout::private_struct! {
+    /// Private state of FB_OPMODE (32 bytes). Never written by the user.
+    ///
+    /// `stHeader.wAux` (complement-checked) bits 0-7: the mode (one input bit) that RUN drives
+    /// or START waits to confirm; bit 8: the mode-change timer runs, started at
+    /// `stHeader.tPhase`.
+    /// Size: 32 bytes.
+    SL_OPMODE_PRIVATE {
+        /// Latched tDiscTime in ms.
+        pub wDiscTime: u16,
+        pub aReserved: [u8; 2],
+    }
 }
 
 crate::base::block::block_states!(

@@ -334,52 +334,42 @@ pub(crate) fn timer_crc(magic: u16, p: &SL_TIMER_PRIVATE) -> u16 {
 macro_rules! delay_struct {
     ($(#[doc = $doc:literal])* $name:ident: $op:literal, $kind:literal, [$in_doc:literal, $in_doc2:literal],
      $out_doc:literal, $state_doc:literal; $in:ident => $out:ident) => {
-        $(#[doc = $doc])*
-        #[repr(C)]
-        #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-        #[allow(non_snake_case, non_camel_case_types)]
-        pub struct $name {
-            /// Offset 0. Reserved, keep 0.
-            pub aReserved0: [u8; 8],
-            #[doc = concat!(" Offset 8. ", $op, "In1: ", $in_doc)]
-            #[doc = $in_doc2]
-            pub $in: SL_BOOL,
-            /// Offset 9. Reserved, keep 0.
-            pub aReserved1: [u8; 7],
-            /// Offset 16. FbRun of the owning group: TRUE = the block executes.
-            pub bRun: SL_BOOL,
-            /// Offset 17. ErrAck of the owning group.
-            pub bErrAck: SL_BOOL,
-            /// Offset 18. Reserved, keep 0.
-            pub aReserved2: [u8; 2],
-            #[doc = concat!(" Offset 20. Switch-", $kind, " delay in ms: 1 to 60,000 steps of the timebase (at most")]
-            /// 60,000,000 ms = 60,000 s), a whole number of steps.
-            pub tDelay: u32,
-            /// Offset 24. Timebase in ms: SL_TIMEBASE_1MS, _10MS, _100MS, _1000MS, or
-            /// SL_TIMEBASE_AUTO (0) = the smallest one whose range holds tDelay.
-            pub nTimeBase: u16,
-            #[doc = concat!(" Offset 26. Bit 0 must be set: ", $op, "In1 is active.")]
-            pub wInputActive: u16,
-            #[doc = concat!(" Offset 28. Bit 0 set: ", $op, "In1 is a make contact (negated before evaluation).")]
-            pub wInputNegated: u16,
-            /// Offset 30. Reserved, keep 0.
-            pub aReserved3: [u8; 2],
-            /// Offset 32 (output base + 0). Reserved (the manual's error output is inactive).
-            pub aReserved4: [u8; 1],
-            #[doc = concat!(" Offset 33 (output base + 1). ", $op, "Out: TRUE in ", $out_doc, ".")]
-            pub $out: SL_BOOL,
-            /// Offset 34. Reserved.
-            pub aReserved5: [u8; 6],
-            #[doc = concat!(" Offset 40. The manual's status value (SL_STATE_*", $state_doc, ").")]
-            pub nState: u8,
-            /// Offset 41. Reserved.
-            pub aReserved6: [u8; 1],
-            /// Offset 42. Diagnostic bits (only the library bits 13-15).
-            pub nDiag: u16,
-            /// Offset 44. Reserved.
-            pub aReserved7: [u8; 4],
-            /// Offset 48. Private state, 64 bytes: never write it.
-            pub stPrivate: $crate::blocks::boolean::timer::SL_TIMER_PRIVATE,
+        $crate::base::layout::block_struct! {
+            $(#[doc = $doc])*
+            $name {
+                /// Offset 0. Reserved, keep 0.
+                pub aReserved0: [u8; 8],
+                #[doc = concat!(" Offset 8. ", $op, "In1: ", $in_doc)]
+                #[doc = $in_doc2]
+                pub $in: SL_BOOL,
+                /// Offset 9. Reserved, keep 0.
+                pub aReserved1: [u8; 7],
+                /// Offset 16. FbRun of the owning group: TRUE = the block executes.
+                pub bRun: SL_BOOL,
+                /// Offset 17. ErrAck of the owning group.
+                pub bErrAck: SL_BOOL,
+                /// Offset 18. Reserved, keep 0.
+                pub aReserved2: [u8; 2],
+                #[doc = concat!(" Offset 20. Switch-", $kind, " delay in ms: 1 to 60,000 steps of the timebase (at most")]
+                /// 60,000,000 ms = 60,000 s), a whole number of steps.
+                pub tDelay: u32,
+                /// Offset 24. Timebase in ms: SL_TIMEBASE_1MS, _10MS, _100MS, _1000MS, or
+                /// SL_TIMEBASE_AUTO (0) = the smallest one whose range holds tDelay.
+                pub nTimeBase: u16,
+                #[doc = concat!(" Offset 26. Bit 0 must be set: ", $op, "In1 is active.")]
+                pub wInputActive: u16,
+                #[doc = concat!(" Offset 28. Bit 0 set: ", $op, "In1 is a make contact (negated before evaluation).")]
+                pub wInputNegated: u16,
+                /// Offset 30. Reserved, keep 0.
+                pub aReserved3: [u8; 2],
+                /// Offset 32 (output base + 0). Reserved (the manual's error output is inactive).
+                pub aReserved4: [u8; 1],
+                #[doc = concat!(" Offset 33 (output base + 1). ", $op, "Out: TRUE in ", $out_doc, ".")]
+                pub $out: SL_BOOL,
+                /// Offset 34. Reserved.
+                pub aReserved5: [u8; 6],
+            } tail 40 41 42 44 48 [aReserved6, aReserved7] $crate::blocks::boolean::timer::SL_TIMER_PRIVATE, 64:
+                concat!("(SL_STATE_*", $state_doc, ")"), "Diagnostic bits (only the library bits 13-15)."
         }
     };
 }

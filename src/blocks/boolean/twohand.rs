@@ -42,79 +42,67 @@ pub const SL_TYPE_TWOHAND: u16 = 8;
 /// Largest tDiscTimePairs of FB_TWOHAND in ms (manual §4.7.1: "up to 2500 ms").
 pub const SL_TWOHAND_PAIRS_TIME_MAX: u32 = 2_500;
 
-/// FB TWOHAND instance (ABI §3, §9). Inputs at the manual's offsets (§4.7.2), outputs at
-/// output base 40 + the manual's offsets.
-/// Size: 104 bytes.
-#[repr(C)]
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-#[allow(non_snake_case, non_camel_case_types)]
-pub struct FB_TWOHAND {
-    /// Offset 0. Reserved, keep 0.
-    pub aReserved0: [u8; 8],
-    /// Offset 8. Input group 1, first channel (pair 1 with TwoHand2).
-    pub bTwoHand1: SL_BOOL,
-    /// Offset 9. Input group 1, second channel.
-    pub bTwoHand2: SL_BOOL,
-    /// Offset 10. Input group 2, first channel (pair 2 with TwoHand4).
-    pub bTwoHand3: SL_BOOL,
-    /// Offset 11. Input group 2, second channel.
-    pub bTwoHand4: SL_BOOL,
-    /// Offset 12. Reserved, keep 0.
-    pub aReserved1: [u8; 4],
-    /// Offset 16. FbRun of the owning group: TRUE = the block executes.
-    pub bRun: SL_BOOL,
-    /// Offset 17. ErrAck of the owning group.
-    pub bErrAck: SL_BOOL,
-    /// Offset 18. Reserved, keep 0.
-    pub aReserved2: [u8; 2],
-    /// Offset 20. Discrepancy time of pair TwoHand1/2 in ms (0 = no monitoring; needs both
-    /// inputs active).
-    pub tDiscTime12: u32,
-    /// Offset 24. Discrepancy time of pair TwoHand3/4 in ms.
-    pub tDiscTime34: u32,
-    /// Offset 28. Time window in ms within which the second group must be actuated after the
-    /// first (0 = off, at most SL_TWOHAND_PAIRS_TIME_MAX = 2500).
-    pub tDiscTimePairs: u32,
-    /// Offset 32. Bits 0-3 set: TwoHand1-4 active (each group needs one).
-    pub wInputActive: u16,
-    /// Offset 34. Bits 0-3 set: TwoHand1-4 is a make contact (negated).
-    pub wInputNegated: u16,
-    /// Offset 36. SL_OPT_SAFE_INPUTS_AFTER_DISC.
-    pub dwOptions: u32,
-    /// Offset 40 (output base + 0). TRUE in ERROR.
-    pub bError: SL_BOOL,
-    /// Offset 41 (output base + 1). The two-hand output.
-    pub bTwoHandOut: SL_BOOL,
-    /// Offset 42. Reserved.
-    pub aReserved3: [u8; 6],
-    /// Offset 48. The manual's status value (SL_STATE_*, SL_STATE_TWOHAND_*).
-    pub nState: u8,
-    /// Offset 49. Reserved.
-    pub aReserved4: [u8; 1],
-    /// Offset 50. Diagnostic bits (SL_DIAG_DISC1/2, SL_DIAG_TWOHAND_*, SL_DIAG_SAFE_IN_DISC1/2).
-    pub nDiag: u16,
-    /// Offset 52. Reserved.
-    pub aReserved5: [u8; 4],
-    /// Offset 56. Private state, 48 bytes: never write it.
-    pub stPrivate: SL_TWOHAND_PRIVATE,
+crate::base::layout::block_struct! {
+    /// FB TWOHAND instance (ABI §3, §9). Inputs at the manual's offsets (§4.7.2), outputs at
+    /// output base 40 + the manual's offsets.
+    /// Size: 104 bytes.
+    FB_TWOHAND {
+        /// Offset 0. Reserved, keep 0.
+        pub aReserved0: [u8; 8],
+        /// Offset 8. Input group 1, first channel (pair 1 with TwoHand2).
+        pub bTwoHand1: SL_BOOL,
+        /// Offset 9. Input group 1, second channel.
+        pub bTwoHand2: SL_BOOL,
+        /// Offset 10. Input group 2, first channel (pair 2 with TwoHand4).
+        pub bTwoHand3: SL_BOOL,
+        /// Offset 11. Input group 2, second channel.
+        pub bTwoHand4: SL_BOOL,
+        /// Offset 12. Reserved, keep 0.
+        pub aReserved1: [u8; 4],
+        /// Offset 16. FbRun of the owning group: TRUE = the block executes.
+        pub bRun: SL_BOOL,
+        /// Offset 17. ErrAck of the owning group.
+        pub bErrAck: SL_BOOL,
+        /// Offset 18. Reserved, keep 0.
+        pub aReserved2: [u8; 2],
+        /// Offset 20. Discrepancy time of pair TwoHand1/2 in ms (0 = no monitoring; needs both
+        /// inputs active).
+        pub tDiscTime12: u32,
+        /// Offset 24. Discrepancy time of pair TwoHand3/4 in ms.
+        pub tDiscTime34: u32,
+        /// Offset 28. Time window in ms within which the second group must be actuated after the
+        /// first (0 = off, at most SL_TWOHAND_PAIRS_TIME_MAX = 2500).
+        pub tDiscTimePairs: u32,
+        /// Offset 32. Bits 0-3 set: TwoHand1-4 active (each group needs one).
+        pub wInputActive: u16,
+        /// Offset 34. Bits 0-3 set: TwoHand1-4 is a make contact (negated).
+        pub wInputNegated: u16,
+        /// Offset 36. SL_OPT_SAFE_INPUTS_AFTER_DISC.
+        pub dwOptions: u32,
+        /// Offset 40 (output base + 0). TRUE in ERROR.
+        pub bError: SL_BOOL,
+        /// Offset 41 (output base + 1). The two-hand output.
+        pub bTwoHandOut: SL_BOOL,
+        /// Offset 42. Reserved.
+        pub aReserved3: [u8; 6],
+    } tail 48 49 50 52 56 [aReserved4, aReserved5] SL_TWOHAND_PRIVATE, 48:
+        "(SL_STATE_*, SL_STATE_TWOHAND_*)", "Diagnostic bits (SL_DIAG_DISC1/2, SL_DIAG_TWOHAND_*, SL_DIAG_SAFE_IN_DISC1/2)."
 }
 
-/// Private state of FB_TWOHAND (48 bytes). Never written by the user.
-///
-/// `stHeader.wAux` (complement-checked) bits 0-1: pair discrepancy timers running; bits 4-5:
-/// "Safe Inputs after Disc Error" latches of pairs 1/2; bit 6: the same for the error
-/// between the pairs. `stHeader.tPhase`: start of the window between the groups.
-/// Size: 48 bytes.
-#[repr(C)]
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-#[allow(non_snake_case, non_camel_case_types)]
-pub struct SL_TWOHAND_PRIVATE {
-    pub stHeader: SL_PRIVATE_HEADER,
-    /// Latched times in ms: tDiscTime12, tDiscTime34, tDiscTimePairs, reserved.
-    pub awTime: [u16; 4],
-    /// Start times of the pair discrepancy timers.
-    pub atDiscStart: [u32; 2],
-    pub aReserved: [u8; 4],
+crate::base::layout::private_struct! {
+    /// Private state of FB_TWOHAND (48 bytes). Never written by the user.
+    ///
+    /// `stHeader.wAux` (complement-checked) bits 0-1: pair discrepancy timers running; bits 4-5:
+    /// "Safe Inputs after Disc Error" latches of pairs 1/2; bit 6: the same for the error
+    /// between the pairs. `stHeader.tPhase`: start of the window between the groups.
+    /// Size: 48 bytes.
+    SL_TWOHAND_PRIVATE {
+        /// Latched times in ms: tDiscTime12, tDiscTime34, tDiscTimePairs, reserved.
+        pub awTime: [u16; 4],
+        /// Start times of the pair discrepancy timers.
+        pub atDiscStart: [u32; 2],
+        pub aReserved: [u8; 4],
+    }
 }
 
 crate::base::block::block_states!(

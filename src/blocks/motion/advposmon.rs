@@ -17,7 +17,7 @@ use crate::base::block::BlockInfo;
 use crate::base::block::Private;
 use crate::base::bools::{self, edge};
 use crate::base::envelope::Block;
-use crate::base::header::{param_crc, F_RESTART_PREV, SL_PRIVATE_HEADER};
+use crate::base::header::{param_crc, F_RESTART_PREV};
 use crate::base::restart::{self, Restart};
 use crate::base::types::*;
 use crate::blocks::analog::magic;
@@ -39,88 +39,74 @@ pub const SL_ADVPOSMON_ACTIVE_RESTART: u16 = 1 << 1;
 /// Largest SAFEDRIVEFEEDBACK instance number of a feedback parameter ("instance (0-3)").
 pub const SL_ADVPOSMON_FEEDBACK_MAX: u16 = 3;
 
-/// Private state of FB ADVPOSMON (40 bytes). Never written by the user.
-#[repr(C)]
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-#[allow(non_snake_case)]
-pub struct SL_ADVPOSMON_PRIVATE {
-    /// Common head (`wAux`: the RUN outputs, and the ERROR's SDFB_ERROR mark).
-    pub stHeader: SL_PRIVATE_HEADER,
-    /// Latched `wInputActive`.
-    pub wActive: u16,
-    /// Latched feedback instances (ChA primary, ChA secondary, ChB primary, ChB secondary).
-    pub awFeedback: [u16; 4],
-    /// Reserved.
-    pub aReserved: [u8; 2],
+crate::base::layout::private_struct! {
+    /// Private state of FB ADVPOSMON (40 bytes). Never written by the user.
+    SL_ADVPOSMON_PRIVATE {
+        /// Common head (`wAux`: the RUN outputs, and the ERROR's SDFB_ERROR mark).
+        stHeader;
+        /// Latched `wInputActive`.
+        pub wActive: u16,
+        /// Latched feedback instances (ChA primary, ChA secondary, ChB primary, ChB secondary).
+        pub awFeedback: [u16; 4],
+        /// Reserved.
+        pub aReserved: [u8; 2],
+    }
 }
 
-/// FB ADVPOSMON instance (ABI-2 §11.16). Size: 104 bytes.
-#[repr(C)]
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-#[allow(non_snake_case)]
-pub struct FB_ADVPOSMON {
-    /// Offset 0. Enable: TRUE = position monitoring requested (bit 0, required).
-    pub bEnable: SL_BOOL,
-    /// Offset 1. Reserved, keep 0.
-    pub aReserved0: [u8; 7],
-    /// Offset 8. Restart: the restart sequence after OverRange (bit 1 = RESTART_ACTIVE).
-    pub bRestart: SL_BOOL,
-    /// Offset 9. Reserved, keep 0.
-    pub aReserved1: [u8; 7],
-    /// Offset 16. FbRun of the owning group: TRUE = the block executes.
-    pub bRun: SL_BOOL,
-    /// Offset 17. ErrAck of the owning group.
-    pub bErrAck: SL_BOOL,
-    /// Offset 18. Library extension: SDFB_ERROR, the assigned SAFEDRIVEFEEDBACK is in
-    /// ERROR (an invalid byte reads TRUE).
-    pub bSdfbError: SL_BOOL,
-    /// Offset 19. Library extension: POS_REF_OK, the encoder instance is referenced.
-    pub bPosRefOk: SL_BOOL,
-    /// Offset 20. Library extension: POS_CHECK_OK, the diagnostic coverage is ≥ 99 %.
-    pub bPosCheckOk: SL_BOOL,
-    /// Offset 21. Library extension: the SAFEDRIVEFEEDBACK instance (1-4) that reported
-    /// the error (diag bits 0-2).
-    pub nSdfbInstance: u8,
-    /// Offset 22. Reserved, keep 0.
-    pub aReserved2: [u8; 2],
-    /// Offset 24. Parameter "ChA Primary Feedback" (instance 0-3).
-    pub nChAPrimaryFeedback: u16,
-    /// Offset 26. Parameter "ChA Secondary Feedback".
-    pub nChASecondaryFeedback: u16,
-    /// Offset 28. Parameter "ChB Primary Feedback".
-    pub nChBPrimaryFeedback: u16,
-    /// Offset 30. Parameter "ChB Secondary Feedback".
-    pub nChBSecondaryFeedback: u16,
-    /// Offset 32. Bit 0 (Enable) required; bit 1 = RESTART_ACTIVE.
-    pub wInputActive: u16,
-    /// Offset 34. Reserved, keep 0.
-    pub aReserved3: [u8; 6],
-    /// Offset 40 (output base + 0). Error: TRUE in ERROR only.
-    pub bError: SL_BOOL,
-    /// Offset 41. Active: in RUN, POS_REF_OK and POS_CHECK_OK.
-    pub bActive: SL_BOOL,
-    /// Offset 42. Wait: in RUN, the encoder instance is not yet referenced.
-    pub bWait: SL_BOOL,
-    /// Offset 43. OverRange: diagnostic coverage < 99 % (RUN), or WAIT-FOR-RESTART, START.
-    pub bOverRange: SL_BOOL,
-    /// Offset 44. Reserved.
-    pub aReserved4: [u8; 4],
-    /// Offset 48. The manual's status value (SL_STATE_*, WAIT-FOR-RESTART 16).
-    pub nState: u8,
-    /// Offset 49. Reserved.
-    pub aReserved5: [u8; 1],
-    /// Offset 50. Diag bits 0-2: the SAFEDRIVEFEEDBACK instance in ERROR; library bits 13-15.
-    pub nDiag: u16,
-    /// Offset 52. Text ID of the diag message (0x38D1 in ERROR by SDFB_ERROR), 0 = none.
-    pub nDiagTextId: u16,
-    /// Offset 54. Reserved.
-    pub aReserved6: [u8; 2],
-    /// Offset 56. Message parameter 2 (0: the manual gives none).
-    pub dwDiagPar2: u32,
-    /// Offset 60. Message parameter 3 (0).
-    pub dwDiagPar3: u32,
-    /// Offset 64. Private state, 40 bytes: never write it.
-    pub stPrivate: SL_ADVPOSMON_PRIVATE,
+crate::base::layout::block_struct! {
+    /// FB ADVPOSMON instance (ABI-2 §11.16). Size: 104 bytes.
+    FB_ADVPOSMON {
+        /// Offset 0. Enable: TRUE = position monitoring requested (bit 0, required).
+        pub bEnable: SL_BOOL,
+        /// Offset 1. Reserved, keep 0.
+        pub aReserved0: [u8; 7],
+        /// Offset 8. Restart: the restart sequence after OverRange (bit 1 = RESTART_ACTIVE).
+        pub bRestart: SL_BOOL,
+        /// Offset 9. Reserved, keep 0.
+        pub aReserved1: [u8; 7],
+        /// Offset 16. FbRun of the owning group: TRUE = the block executes.
+        pub bRun: SL_BOOL,
+        /// Offset 17. ErrAck of the owning group.
+        pub bErrAck: SL_BOOL,
+        /// Offset 18. Library extension: SDFB_ERROR, the assigned SAFEDRIVEFEEDBACK is in
+        /// ERROR (an invalid byte reads TRUE).
+        pub bSdfbError: SL_BOOL,
+        /// Offset 19. Library extension: POS_REF_OK, the encoder instance is referenced.
+        pub bPosRefOk: SL_BOOL,
+        /// Offset 20. Library extension: POS_CHECK_OK, the diagnostic coverage is ≥ 99 %.
+        pub bPosCheckOk: SL_BOOL,
+        /// Offset 21. Library extension: the SAFEDRIVEFEEDBACK instance (1-4) that reported
+        /// the error (diag bits 0-2).
+        pub nSdfbInstance: u8,
+        /// Offset 22. Reserved, keep 0.
+        pub aReserved2: [u8; 2],
+        /// Offset 24. Parameter "ChA Primary Feedback" (instance 0-3).
+        pub nChAPrimaryFeedback: u16,
+        /// Offset 26. Parameter "ChA Secondary Feedback".
+        pub nChASecondaryFeedback: u16,
+        /// Offset 28. Parameter "ChB Primary Feedback".
+        pub nChBPrimaryFeedback: u16,
+        /// Offset 30. Parameter "ChB Secondary Feedback".
+        pub nChBSecondaryFeedback: u16,
+        /// Offset 32. Bit 0 (Enable) required; bit 1 = RESTART_ACTIVE.
+        pub wInputActive: u16,
+        /// Offset 34. Reserved, keep 0.
+        pub aReserved3: [u8; 6],
+        /// Offset 40 (output base + 0). Error: TRUE in ERROR only.
+        pub bError: SL_BOOL,
+        /// Offset 41. Active: in RUN, POS_REF_OK and POS_CHECK_OK.
+        pub bActive: SL_BOOL,
+        /// Offset 42. Wait: in RUN, the encoder instance is not yet referenced.
+        pub bWait: SL_BOOL,
+        /// Offset 43. OverRange: diagnostic coverage < 99 % (RUN), or WAIT-FOR-RESTART, START.
+        pub bOverRange: SL_BOOL,
+        /// Offset 44. Reserved.
+        pub aReserved4: [u8; 4],
+    } info [aReserved5, aReserved6] SL_ADVPOSMON_PRIVATE, "40 bytes":
+        "The manual's status value (SL_STATE_*, WAIT-FOR-RESTART 16).",
+        "Diag bits 0-2: the SAFEDRIVEFEEDBACK instance in ERROR; library bits 13-15.",
+        "Text ID of the diag message (0x38D1 in ERROR by SDFB_ERROR), 0 = none.",
+        "Message parameter 2 (0: the manual gives none).", "Message parameter 3 (0)."
 }
 
 const _: () = {

@@ -23,15 +23,15 @@
 use crate::base::block::{Private, Registered};
 use crate::base::bools::{self, edge, Edge};
 use crate::base::envelope::Block;
-use crate::base::header::{param_crc, F_CFG_INVALID, F_RESTART_PREV, SL_PRIVATE_HEADER};
+use crate::base::header::{param_crc, F_CFG_INVALID, F_RESTART_PREV};
 use crate::base::time::reached;
 use crate::base::types::*;
 use crate::blocks::analog::{magic, Unsigned};
 
-/// Type tag of FB_CAMMONITOR_UINT (ABI-2 §10.6, order of §10.3).
-pub const SL_TYPE_CAMMONITOR_UINT: u16 = 70;
-/// FB_CAMMONITOR_UDINT.
-pub const SL_TYPE_CAMMONITOR_UDINT: u16 = 71;
+crate::blocks::analog::analog_variants! {
+    FB_CAMMONITOR:
+        UINT SL_TYPE_CAMMONITOR_UINT = 70 => FB_CAMMONITOR_UINT[u16, 2, 4], UDINT SL_TYPE_CAMMONITOR_UDINT = 71 => FB_CAMMONITOR_UDINT[u32, 6, 0]
+}
 
 /// Option: "Pendulum Mode"; clear = "Excentric Mode".
 pub const SL_OPT_CAMMONITOR_PENDULUM: u32 = 1 << 8;
@@ -181,171 +181,150 @@ pub const SL_TEXT_CAMMONITOR_MOVED_WAIT_FOR_RESET: u16 = 0x4024;
 /// Message 0x4025 (excentric): TDC1UpperLimit <= AllowedPositionJitter.
 pub const SL_TEXT_CAMMONITOR_TDC1UL_JITTER: u16 = 0x4025;
 
-/// Private state of FB CAMMONITOR (128 bytes). Never written by the user.
-#[repr(C)]
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-#[allow(non_snake_case)]
-pub struct SL_CAMMONITOR_PRIVATE {
-    /// Common head (`wAux`: Stopped, Press_Started progress, OverrunStop latched,
-    /// `F_RESTART_PREV`: Reset's level).
-    pub stHeader: SL_PRIVATE_HEADER,
-    /// Latched `wInputActive`.
-    pub wActive: u16,
-    /// Text ID of the message of the current ERROR.
-    pub wText: u16,
-    /// Latched `dwOptions`.
-    pub dwOptions: u32,
-    /// Latched tStopDetectionTime, tPressStartDelayTime, tMoveDetectionTime (ms).
-    pub adwTime: [u32; 3],
-    /// Latched AllowedPositionJitter, MinPositionChange, MaxPosition and the seven fixed
-    /// limits (TDC1 LL, TDC1 UL, TDC2 LL, TDC2 UL, BDC LL, BDC UL, OverrunMax).
-    pub adwValue: [u32; 10],
-    /// Reference position of the standstill window (position at its start).
-    pub dwRef: u32,
-    /// Position (on the circle) of the previous running call.
-    pub dwLast: u32,
-    /// Start of the standstill window (StopDetectionTime).
-    pub tRef: u32,
-    /// Start of the PressStartDelayTime / MoveDetectionTime timer.
-    pub tPs: u32,
-    /// Comparison position of the MoveDetectionTime check.
-    pub dwPsRef: u32,
-    /// Position at the last falling edge of Press_Started (OverrunStop).
-    pub dwStopLatch: u32,
-    /// Message parameters 2 and 3 latched at the ERROR entry.
-    pub adwPar: [u32; 2],
-    /// Edge memories of Press_Started, OverrunCam, UpwardCam.
-    pub nEdges: u8,
-    /// Reserved.
-    pub aReserved: [u8; 7],
+crate::base::layout::private_struct! {
+    /// Private state of FB CAMMONITOR (128 bytes). Never written by the user.
+    SL_CAMMONITOR_PRIVATE {
+        /// Common head (`wAux`: Stopped, Press_Started progress, OverrunStop latched,
+        /// `F_RESTART_PREV`: Reset's level).
+        stHeader;
+        /// Latched `wInputActive`.
+        pub wActive: u16,
+        /// Text ID of the message of the current ERROR.
+        pub wText: u16,
+        /// Latched `dwOptions`.
+        pub dwOptions: u32,
+        /// Latched tStopDetectionTime, tPressStartDelayTime, tMoveDetectionTime (ms).
+        pub adwTime: [u32; 3],
+        /// Latched AllowedPositionJitter, MinPositionChange, MaxPosition and the seven fixed
+        /// limits (TDC1 LL, TDC1 UL, TDC2 LL, TDC2 UL, BDC LL, BDC UL, OverrunMax).
+        pub adwValue: [u32; 10],
+        /// Reference position of the standstill window (position at its start).
+        pub dwRef: u32,
+        /// Position (on the circle) of the previous running call.
+        pub dwLast: u32,
+        /// Start of the standstill window (StopDetectionTime).
+        pub tRef: u32,
+        /// Start of the PressStartDelayTime / MoveDetectionTime timer.
+        pub tPs: u32,
+        /// Comparison position of the MoveDetectionTime check.
+        pub dwPsRef: u32,
+        /// Position at the last falling edge of Press_Started (OverrunStop).
+        pub dwStopLatch: u32,
+        /// Message parameters 2 and 3 latched at the ERROR entry.
+        pub adwPar: [u32; 2],
+        /// Edge memories of Press_Started, OverrunCam, UpwardCam.
+        pub nEdges: u8,
+        /// Reserved.
+        pub aReserved: [u8; 7],
+    }
 }
 
 const _: () = assert!(core::mem::size_of::<SL_CAMMONITOR_PRIVATE>() == 128);
 
-/// FB CAMMONITOR instance (ABI-2 §11.13), generic over the unsigned position type `T`:
-/// `P1` (after `wInputActive`) and `P2` (after OverrunStop) are the reserved gaps that make
-/// the two layouts differ. Analog fields: 16-bit offset / 32-bit offset.
-#[repr(C)]
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-#[allow(non_snake_case)]
-pub struct FB_CAMMONITOR<T, const P1: usize, const P2: usize> {
-    /// Offset 0. Automatic: TRUE = automatic mode, no parameter verification and no
-    /// movement or cam checks (active bit 0; inactive = FALSE).
-    pub bAutomatic: SL_BOOL,
-    /// Offset 1. BackwardsMove: backward movement permitted (excentric; active bit 1).
-    pub bBackwardsMove: SL_BOOL,
-    /// Offset 2. Reset: a pulse (rising, then falling edge) releases each start (active
-    /// bit 2, required).
-    pub bReset: SL_BOOL,
-    /// Offset 3. Press_Started: TRUE = movement is expected (active bit 3; an invalid byte
-    /// reads TRUE).
-    pub bPressStarted: SL_BOOL,
-    /// Offset 4. OverrunCam: hardware overrun cam (excentric; active bit 4).
-    pub bOverrunCam: SL_BOOL,
-    /// Offset 5. UpwardCam: hardware upward cam (excentric; active bit 5).
-    pub bUpwardCam: SL_BOOL,
-    /// Offset 6. SettingMode: TRUE = changed fixed limits are re-latched (active bit 6).
-    pub bSettingMode: SL_BOOL,
-    /// Offset 7. Reserved, keep 0.
-    pub aReserved0: [u8; 9],
-    /// Offset 16. FbRun of the owning group: TRUE = the block executes.
-    pub bRun: SL_BOOL,
-    /// Offset 17. ErrAck of the owning group.
-    pub bErrAck: SL_BOOL,
-    /// Offset 18. Reserved, keep 0.
-    pub aReserved1: [u8; 6],
-    /// Offset 24 (analog input base). Position: the press position, 0 … MaxPosition
-    /// (active bit 8, required).
-    pub nPosition: T,
-    /// At 26 / 28. TDC1_LowerLimit input (active bit 9).
-    pub nTDC1LowerLimit: T,
-    /// At 28 / 32. TDC1_UpperLimit input (active bit 10).
-    pub nTDC1UpperLimit: T,
-    /// At 30 / 36. TDC2_LowerLimit input (active bit 11, pendulum).
-    pub nTDC2LowerLimit: T,
-    /// At 32 / 40. TDC2_UpperLimit input (active bit 12, pendulum).
-    pub nTDC2UpperLimit: T,
-    /// At 34 / 44. BDC_LowerLimit input (active bit 13).
-    pub nBDCLowerLimit: T,
-    /// At 36 / 48. BDC_UpperLimit input (active bit 14).
-    pub nBDCUpperLimit: T,
-    /// At 38 / 52. OverrunMax input (active bit 15, excentric).
-    pub nOverrunMax: T,
-    /// At 40 / 56. "StopDetectionTime" in ms, 1 … 65,535.
-    pub tStopDetectionTime: u32,
-    /// At 44 / 60. "PressStartDelayTime" in ms, ≤ 65,535 (≥ 1 with Press_Started active).
-    pub tPressStartDelayTime: u32,
-    /// At 48 / 64. "MoveDetectionTime" in ms, ≤ 65,535 (≥ 1 with Press_Started active).
-    pub tMoveDetectionTime: u32,
-    /// At 52 / 68. `SL_OPT_CAMMONITOR_PENDULUM`; clear = excentric mode.
-    pub dwOptions: u32,
-    /// At 56 / 72. "AllowedPositionJitter".
-    pub nAllowedPositionJitter: T,
-    /// At 58 / 76. "MinPositionChange" (≥ 1 with Press_Started active).
-    pub nMinPositionChange: T,
-    /// At 60 / 80. "MaxPosition": the position value at 360°.
-    pub nMaxPosition: T,
-    /// At 62 / 84. Fixed value TDC1_LowerLimit (used while bit 9 is clear).
-    pub nTDC1LowerLimitFix: T,
-    /// At 64 / 88. Fixed value TDC1_UpperLimit.
-    pub nTDC1UpperLimitFix: T,
-    /// At 66 / 92. Fixed value TDC2_LowerLimit (excentric: 0).
-    pub nTDC2LowerLimitFix: T,
-    /// At 68 / 96. Fixed value TDC2_UpperLimit (excentric: 0).
-    pub nTDC2UpperLimitFix: T,
-    /// At 70 / 100. Fixed value BDC_LowerLimit.
-    pub nBDCLowerLimitFix: T,
-    /// At 72 / 104. Fixed value BDC_UpperLimit.
-    pub nBDCUpperLimitFix: T,
-    /// At 74 / 108. Fixed value OverrunMax (pendulum: 0).
-    pub nOverrunMaxFix: T,
-    /// At 76 / 112. Bits 2 and 8 required; 0-6 and 8-15 known (ABI-2 §11.13).
-    pub wInputActive: u16,
-    /// Reserved up to the output base (16-bit 80, 32-bit 120).
-    pub aReserved2: [u8; P1],
-    /// At 80 / 120 (output base). Error: TRUE in ERROR only.
-    pub bError: SL_BOOL,
-    /// At 81 / 121. CamMonOK: TRUE in RUN and the MOVE-* states.
-    pub bCamMonOK: SL_BOOL,
-    /// At 82 / 122. UpwardsMove: the press moves upwards after BDC.
-    pub bUpwardsMove: SL_BOOL,
-    /// At 83 / 123. TDC: the position is in a TDC range.
-    pub bTDC: SL_BOOL,
-    /// At 84 / 124. BDC: the position is between BDC_LowerLimit and BDC_UpperLimit.
-    pub bBDC: SL_BOOL,
-    /// At 85 / 125. Reserved.
-    pub aReserved3: [u8; 3],
-    /// At 88 / 128 (analog output base). OverrunTDC: distance from TDC1_LowerLimit in the
-    /// TDC range up to OverrunMax (excentric), else 0.
-    pub nOverrunTDC: T,
-    /// At 90 / 132. OverrunStop: distance from the position at the falling edge of
-    /// Press_Started.
-    pub nOverrunStop: T,
-    /// Reserved up to the info data.
-    pub aReserved4: [u8; P2],
-    /// At 96 / 136 (info). The manual's status value.
-    pub nState: u8,
-    /// Reserved.
-    pub aReserved5: [u8; 1],
-    /// At 98 / 138. The message's Text ID − 0x4000 + library bits 13-15.
-    pub nDiag: u16,
-    /// At 100 / 140. Text ID of the message of the current ERROR, or of a refused
-    /// configuration in STOP; 0 = none.
-    pub nDiagTextId: u16,
-    /// Reserved.
-    pub aReserved6: [u8; 2],
-    /// At 104 / 144. Message parameter 2.
-    pub dwDiagPar2: u32,
-    /// At 108 / 148. Message parameter 3.
-    pub dwDiagPar3: u32,
-    /// At 112 / 152. Private state, 128 bytes: never write it.
-    pub stPrivate: SL_CAMMONITOR_PRIVATE,
+crate::base::layout::block_struct! {
+    /// FB CAMMONITOR instance (ABI-2 §11.13), generic over the unsigned position type `T`:
+    /// `P1` (after `wInputActive`) and `P2` (after OverrunStop) are the reserved gaps that make
+    /// the two layouts differ. Analog fields: 16-bit offset / 32-bit offset.
+    FB_CAMMONITOR[T: Unsigned; P1, P2] {
+        /// Offset 0. Automatic: TRUE = automatic mode, no parameter verification and no
+        /// movement or cam checks (active bit 0; inactive = FALSE).
+        pub bAutomatic: SL_BOOL,
+        /// Offset 1. BackwardsMove: backward movement permitted (excentric; active bit 1).
+        pub bBackwardsMove: SL_BOOL,
+        /// Offset 2. Reset: a pulse (rising, then falling edge) releases each start (active
+        /// bit 2, required).
+        pub bReset: SL_BOOL,
+        /// Offset 3. Press_Started: TRUE = movement is expected (active bit 3; an invalid byte
+        /// reads TRUE).
+        pub bPressStarted: SL_BOOL,
+        /// Offset 4. OverrunCam: hardware overrun cam (excentric; active bit 4).
+        pub bOverrunCam: SL_BOOL,
+        /// Offset 5. UpwardCam: hardware upward cam (excentric; active bit 5).
+        pub bUpwardCam: SL_BOOL,
+        /// Offset 6. SettingMode: TRUE = changed fixed limits are re-latched (active bit 6).
+        pub bSettingMode: SL_BOOL,
+        /// Offset 7. Reserved, keep 0.
+        pub aReserved0: [u8; 9],
+        /// Offset 16. FbRun of the owning group: TRUE = the block executes.
+        pub bRun: SL_BOOL,
+        /// Offset 17. ErrAck of the owning group.
+        pub bErrAck: SL_BOOL,
+        /// Offset 18. Reserved, keep 0.
+        pub aReserved1: [u8; 6],
+        /// Offset 24 (analog input base). Position: the press position, 0 … MaxPosition
+        /// (active bit 8, required).
+        pub nPosition: T,
+        /// At 26 / 28. TDC1_LowerLimit input (active bit 9).
+        pub nTDC1LowerLimit: T,
+        /// At 28 / 32. TDC1_UpperLimit input (active bit 10).
+        pub nTDC1UpperLimit: T,
+        /// At 30 / 36. TDC2_LowerLimit input (active bit 11, pendulum).
+        pub nTDC2LowerLimit: T,
+        /// At 32 / 40. TDC2_UpperLimit input (active bit 12, pendulum).
+        pub nTDC2UpperLimit: T,
+        /// At 34 / 44. BDC_LowerLimit input (active bit 13).
+        pub nBDCLowerLimit: T,
+        /// At 36 / 48. BDC_UpperLimit input (active bit 14).
+        pub nBDCUpperLimit: T,
+        /// At 38 / 52. OverrunMax input (active bit 15, excentric).
+        pub nOverrunMax: T,
+        /// At 40 / 56. "StopDetectionTime" in ms, 1 … 65,535.
+        pub tStopDetectionTime: u32,
+        /// At 44 / 60. "PressStartDelayTime" in ms, ≤ 65,535 (≥ 1 with Press_Started active).
+        pub tPressStartDelayTime: u32,
+        /// At 48 / 64. "MoveDetectionTime" in ms, ≤ 65,535 (≥ 1 with Press_Started active).
+        pub tMoveDetectionTime: u32,
+        /// At 52 / 68. `SL_OPT_CAMMONITOR_PENDULUM`; clear = excentric mode.
+        pub dwOptions: u32,
+        /// At 56 / 72. "AllowedPositionJitter".
+        pub nAllowedPositionJitter: T,
+        /// At 58 / 76. "MinPositionChange" (≥ 1 with Press_Started active).
+        pub nMinPositionChange: T,
+        /// At 60 / 80. "MaxPosition": the position value at 360°.
+        pub nMaxPosition: T,
+        /// At 62 / 84. Fixed value TDC1_LowerLimit (used while bit 9 is clear).
+        pub nTDC1LowerLimitFix: T,
+        /// At 64 / 88. Fixed value TDC1_UpperLimit.
+        pub nTDC1UpperLimitFix: T,
+        /// At 66 / 92. Fixed value TDC2_LowerLimit (excentric: 0).
+        pub nTDC2LowerLimitFix: T,
+        /// At 68 / 96. Fixed value TDC2_UpperLimit (excentric: 0).
+        pub nTDC2UpperLimitFix: T,
+        /// At 70 / 100. Fixed value BDC_LowerLimit.
+        pub nBDCLowerLimitFix: T,
+        /// At 72 / 104. Fixed value BDC_UpperLimit.
+        pub nBDCUpperLimitFix: T,
+        /// At 74 / 108. Fixed value OverrunMax (pendulum: 0).
+        pub nOverrunMaxFix: T,
+        /// At 76 / 112. Bits 2 and 8 required; 0-6 and 8-15 known (ABI-2 §11.13).
+        pub wInputActive: u16,
+        /// Reserved up to the output base (16-bit 80, 32-bit 120).
+        pub aReserved2: [u8; P1],
+        /// At 80 / 120 (output base). Error: TRUE in ERROR only.
+        pub bError: SL_BOOL,
+        /// At 81 / 121. CamMonOK: TRUE in RUN and the MOVE-* states.
+        pub bCamMonOK: SL_BOOL,
+        /// At 82 / 122. UpwardsMove: the press moves upwards after BDC.
+        pub bUpwardsMove: SL_BOOL,
+        /// At 83 / 123. TDC: the position is in a TDC range.
+        pub bTDC: SL_BOOL,
+        /// At 84 / 124. BDC: the position is between BDC_LowerLimit and BDC_UpperLimit.
+        pub bBDC: SL_BOOL,
+        /// At 85 / 125. Reserved.
+        pub aReserved3: [u8; 3],
+        /// At 88 / 128 (analog output base). OverrunTDC: distance from TDC1_LowerLimit in the
+        /// TDC range up to OverrunMax (excentric), else 0.
+        pub nOverrunTDC: T,
+        /// At 90 / 132. OverrunStop: distance from the position at the falling edge of
+        /// Press_Started.
+        pub nOverrunStop: T,
+        /// Reserved up to the info data.
+        pub aReserved4: [u8; P2],
+    } info [aReserved5, aReserved6] SL_CAMMONITOR_PRIVATE, "128 bytes":
+        "The manual's status value.", "The message's Text ID − 0x4000 + library bits 13-15.",
+        "Text ID of the message of the current ERROR, or of a refused configuration in STOP; 0 = none.",
+        "Message parameter 2.", "Message parameter 3."
 }
-
-/// FB CAMMONITOR, UINT variant.
-pub type FB_CAMMONITOR_UINT = FB_CAMMONITOR<u16, 2, 4>;
-/// FB CAMMONITOR, UDINT variant.
-pub type FB_CAMMONITOR_UDINT = FB_CAMMONITOR<u32, 6, 0>;
 
 // The ABI-2 §11.13 numbers of the two layouts (the §10.2 rule itself is checked for every
 // registered analog type in registry.rs).
@@ -448,88 +427,6 @@ crate::impl_member!([T: Unsigned, const P1: usize, const P2: usize] FB_CAMMONITO
     output: [bError, bCamMonOK, bUpwardsMove, bTDC, bBDC, nOverrunTDC, nOverrunStop],
     info_fields: [nDiagTextId, dwDiagPar2, dwDiagPar3],
 });
-
-impl<T: Unsigned, const P1: usize, const P2: usize> FB_CAMMONITOR<T, P1, P2> {
-    /// An all-zero instance (valid: it initialises itself on the first cycle, ABI §3.6).
-    pub const fn zeroed() -> Self {
-        Self {
-            bAutomatic: 0,
-            bBackwardsMove: 0,
-            bReset: 0,
-            bPressStarted: 0,
-            bOverrunCam: 0,
-            bUpwardCam: 0,
-            bSettingMode: 0,
-            aReserved0: [0; 9],
-            bRun: 0,
-            bErrAck: 0,
-            aReserved1: [0; 6],
-            nPosition: T::ZERO,
-            nTDC1LowerLimit: T::ZERO,
-            nTDC1UpperLimit: T::ZERO,
-            nTDC2LowerLimit: T::ZERO,
-            nTDC2UpperLimit: T::ZERO,
-            nBDCLowerLimit: T::ZERO,
-            nBDCUpperLimit: T::ZERO,
-            nOverrunMax: T::ZERO,
-            tStopDetectionTime: 0,
-            tPressStartDelayTime: 0,
-            tMoveDetectionTime: 0,
-            dwOptions: 0,
-            nAllowedPositionJitter: T::ZERO,
-            nMinPositionChange: T::ZERO,
-            nMaxPosition: T::ZERO,
-            nTDC1LowerLimitFix: T::ZERO,
-            nTDC1UpperLimitFix: T::ZERO,
-            nTDC2LowerLimitFix: T::ZERO,
-            nTDC2UpperLimitFix: T::ZERO,
-            nBDCLowerLimitFix: T::ZERO,
-            nBDCUpperLimitFix: T::ZERO,
-            nOverrunMaxFix: T::ZERO,
-            wInputActive: 0,
-            aReserved2: [0; P1],
-            bError: 0,
-            bCamMonOK: 0,
-            bUpwardsMove: 0,
-            bTDC: 0,
-            bBDC: 0,
-            aReserved3: [0; 3],
-            nOverrunTDC: T::ZERO,
-            nOverrunStop: T::ZERO,
-            aReserved4: [0; P2],
-            nState: 0,
-            aReserved5: [0; 1],
-            nDiag: 0,
-            nDiagTextId: 0,
-            aReserved6: [0; 2],
-            dwDiagPar2: 0,
-            dwDiagPar3: 0,
-            stPrivate: SL_CAMMONITOR_PRIVATE {
-                stHeader: SL_PRIVATE_HEADER::ZERO,
-                wActive: 0,
-                wText: 0,
-                dwOptions: 0,
-                adwTime: [0; 3],
-                adwValue: [0; 10],
-                dwRef: 0,
-                dwLast: 0,
-                tRef: 0,
-                tPs: 0,
-                dwPsRef: 0,
-                dwStopLatch: 0,
-                adwPar: [0; 2],
-                nEdges: 0,
-                aReserved: [0; 7],
-            },
-        }
-    }
-}
-
-impl<T: Unsigned, const P1: usize, const P2: usize> Default for FB_CAMMONITOR<T, P1, P2> {
-    fn default() -> Self {
-        Self::zeroed()
-    }
-}
 
 // Indices into `adwValue`.
 const JITTER: usize = 0;

@@ -19,7 +19,7 @@ use crate::base::block::BlockInfo;
 use crate::base::block::Private;
 use crate::base::bools::{self, edge};
 use crate::base::envelope::Block;
-use crate::base::header::{param_crc, F_RESTART_PREV, SL_PRIVATE_HEADER};
+use crate::base::header::{param_crc, F_RESTART_PREV};
 use crate::base::time::elapsed;
 use crate::base::types::*;
 use crate::blocks::analog::magic;
@@ -61,103 +61,89 @@ pub const SL_SBT_ACTIVE_MINCURRENTIQ: u16 = 1 << 10;
 /// Largest value of the three TIME parameters (ABI-2 §12.9: 4,294,967 s in ms).
 pub const SL_SBT_TIME_MAX: u32 = 4_294_967_000;
 
-/// Private state of FB SBT (80 bytes). Never written by the user.
-#[repr(C)]
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-#[allow(non_snake_case)]
-pub struct SL_SBT_PRIVATE {
-    /// Common head (`wAux` bit 0: LastTestResult, bit 1: the test condition held in the
-    /// previous call; `tPhase`: the previous running call; `F_RESTART_PREV`: SBT's level).
-    pub stHeader: SL_PRIVATE_HEADER,
-    /// Latched `wInputActive`.
-    pub wActive: u16,
-    /// Text ID of the message of TEST-FAILED / MONS-ERROR.
-    pub wText: u16,
-    /// Latched tBrakeTestInterval, tMinDuration, tMaxDuration (ms), nMaxPositionDeviation,
-    /// nMinCurrentIqFix (pattern).
-    pub adwParam: [u32; 5],
-    /// Remaining time until the next brake test, ms.
-    pub dwRemainingMs: u32,
-    /// Time since the test started (MaxDuration), ms, saturating.
-    pub dwTestMs: u32,
-    /// Time the test condition has held without a break (MinDuration), ms, saturating.
-    pub dwHeldMs: u32,
-    /// SingleturnPos latched at the start of the test.
-    pub dwLatchPos: u32,
-    /// The message's parameters 2 and 3.
-    pub adwPar: [u32; 2],
-    /// Reserved.
-    pub aReserved: [u8; 4],
+crate::base::layout::private_struct! {
+    /// Private state of FB SBT (80 bytes). Never written by the user.
+    SL_SBT_PRIVATE {
+        /// Common head (`wAux` bit 0: LastTestResult, bit 1: the test condition held in the
+        /// previous call; `tPhase`: the previous running call; `F_RESTART_PREV`: SBT's level).
+        stHeader;
+        /// Latched `wInputActive`.
+        pub wActive: u16,
+        /// Text ID of the message of TEST-FAILED / MONS-ERROR.
+        pub wText: u16,
+        /// Latched tBrakeTestInterval, tMinDuration, tMaxDuration (ms), nMaxPositionDeviation,
+        /// nMinCurrentIqFix (pattern).
+        pub adwParam: [u32; 5],
+        /// Remaining time until the next brake test, ms.
+        pub dwRemainingMs: u32,
+        /// Time since the test started (MaxDuration), ms, saturating.
+        pub dwTestMs: u32,
+        /// Time the test condition has held without a break (MinDuration), ms, saturating.
+        pub dwHeldMs: u32,
+        /// SingleturnPos latched at the start of the test.
+        pub dwLatchPos: u32,
+        /// The message's parameters 2 and 3.
+        pub adwPar: [u32; 2],
+        /// Reserved.
+        pub aReserved: [u8; 4],
+    }
 }
 
-/// FB SBT instance (ABI-2 §11.15). Size: 176 bytes.
-#[repr(C)]
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-#[allow(non_snake_case)]
-pub struct FB_SBT {
-    /// Offset 0. SBT: a rising edge starts a brake test (bit 0, required; an invalid byte
-    /// reads FALSE without an edge).
-    pub bSBT: SL_BOOL,
-    /// Offset 1. SBC In: 0 = brake applied, 1 = released (bit 1, required; an invalid byte
-    /// reads TRUE, no test credit).
-    pub bSBCIn: SL_BOOL,
-    /// Offset 2. Reserved, keep 0.
-    pub aReserved0: [u8; 14],
-    /// Offset 16. FbRun of the owning group: TRUE = the block executes.
-    pub bRun: SL_BOOL,
-    /// Offset 17. ErrAck of the owning group.
-    pub bErrAck: SL_BOOL,
-    /// Offset 18. Reserved, keep 0.
-    pub aReserved1: [u8; 6],
-    /// Offset 24. SingleturnPos: the current safe position (active bit 8, required).
-    pub nSingleturnPos: u32,
-    /// Offset 28. ActCurrentIq: the torque-forming current of the axis (active bit 9, required).
-    pub nActCurrentIq: i32,
-    /// Offset 32. MinCurrentIq: the current of the minimum required torque, used while
-    /// active bit 10 is set.
-    pub nMinCurrentIq: i32,
-    /// Offset 36. "BrakeTestInterval" in ms: 1000 to 4,294,967,000, a multiple of 1000.
-    pub tBrakeTestInterval: u32,
-    /// Offset 40. "MinDuration" in ms: a multiple of 100, at most tMaxDuration.
-    pub tMinDuration: u32,
-    /// Offset 44. "MaxDuration" in ms: a multiple of 100, at most 4,294,967,000.
-    pub tMaxDuration: u32,
-    /// Offset 48. "MaxPositionDeviation" in increments.
-    pub nMaxPositionDeviation: u32,
-    /// Offset 52. Parameter "MinCurrentIq", used while bit 10 is clear.
-    pub nMinCurrentIqFix: i32,
-    /// Offset 56. Bits 0, 1, 8, 9 required; bit 10 chooses input or parameter.
-    pub wInputActive: u16,
-    /// Offset 58. Reserved, keep 0.
-    pub aReserved2: [u8; 6],
-    /// Offset 64 (output base + 0). TestError: TEST-FAILED or MONS-ERROR.
-    pub bTestError: SL_BOOL,
-    /// Offset 65. BrakeValid: the last test passed and its interval has not expired (RUN,
-    /// TEST-OK).
-    pub bBrakeValid: SL_BOOL,
-    /// Offset 66. Reserved.
-    pub aReserved3: [u8; 6],
-    /// Offset 72 (analog output base). RemainingTime until the next brake test in
-    /// seconds (rounded up); 0 in STOP, ERROR, RESET, MONS-ERROR.
-    pub nRemainingTime: u32,
-    /// Offset 76. Reserved.
-    pub aReserved4: [u8; 4],
-    /// Offset 80. The manual's status value (SL_STATE_*, SL_STATE_SBT_*).
-    pub nState: u8,
-    /// Offset 81. Reserved.
-    pub aReserved5: [u8; 1],
-    /// Offset 82. The message's Text ID − 0x4000 (0xD8, 0xD9, 0xDA) + library bits 13-15.
-    pub nDiag: u16,
-    /// Offset 84. Text ID of the message in TEST-FAILED / MONS-ERROR, 0 = none.
-    pub nDiagTextId: u16,
-    /// Offset 86. Reserved.
-    pub aReserved6: [u8; 2],
-    /// Offset 88. Message parameter 2.
-    pub dwDiagPar2: u32,
-    /// Offset 92. Message parameter 3.
-    pub dwDiagPar3: u32,
-    /// Offset 96. Private state, 80 bytes: never write it.
-    pub stPrivate: SL_SBT_PRIVATE,
+crate::base::layout::block_struct! {
+    /// FB SBT instance (ABI-2 §11.15). Size: 176 bytes.
+    FB_SBT {
+        /// Offset 0. SBT: a rising edge starts a brake test (bit 0, required; an invalid byte
+        /// reads FALSE without an edge).
+        pub bSBT: SL_BOOL,
+        /// Offset 1. SBC In: 0 = brake applied, 1 = released (bit 1, required; an invalid byte
+        /// reads TRUE, no test credit).
+        pub bSBCIn: SL_BOOL,
+        /// Offset 2. Reserved, keep 0.
+        pub aReserved0: [u8; 14],
+        /// Offset 16. FbRun of the owning group: TRUE = the block executes.
+        pub bRun: SL_BOOL,
+        /// Offset 17. ErrAck of the owning group.
+        pub bErrAck: SL_BOOL,
+        /// Offset 18. Reserved, keep 0.
+        pub aReserved1: [u8; 6],
+        /// Offset 24. SingleturnPos: the current safe position (active bit 8, required).
+        pub nSingleturnPos: u32,
+        /// Offset 28. ActCurrentIq: the torque-forming current of the axis (active bit 9, required).
+        pub nActCurrentIq: i32,
+        /// Offset 32. MinCurrentIq: the current of the minimum required torque, used while
+        /// active bit 10 is set.
+        pub nMinCurrentIq: i32,
+        /// Offset 36. "BrakeTestInterval" in ms: 1000 to 4,294,967,000, a multiple of 1000.
+        pub tBrakeTestInterval: u32,
+        /// Offset 40. "MinDuration" in ms: a multiple of 100, at most tMaxDuration.
+        pub tMinDuration: u32,
+        /// Offset 44. "MaxDuration" in ms: a multiple of 100, at most 4,294,967,000.
+        pub tMaxDuration: u32,
+        /// Offset 48. "MaxPositionDeviation" in increments.
+        pub nMaxPositionDeviation: u32,
+        /// Offset 52. Parameter "MinCurrentIq", used while bit 10 is clear.
+        pub nMinCurrentIqFix: i32,
+        /// Offset 56. Bits 0, 1, 8, 9 required; bit 10 chooses input or parameter.
+        pub wInputActive: u16,
+        /// Offset 58. Reserved, keep 0.
+        pub aReserved2: [u8; 6],
+        /// Offset 64 (output base + 0). TestError: TEST-FAILED or MONS-ERROR.
+        pub bTestError: SL_BOOL,
+        /// Offset 65. BrakeValid: the last test passed and its interval has not expired (RUN,
+        /// TEST-OK).
+        pub bBrakeValid: SL_BOOL,
+        /// Offset 66. Reserved.
+        pub aReserved3: [u8; 6],
+        /// Offset 72 (analog output base). RemainingTime until the next brake test in
+        /// seconds (rounded up); 0 in STOP, ERROR, RESET, MONS-ERROR.
+        pub nRemainingTime: u32,
+        /// Offset 76. Reserved.
+        pub aReserved4: [u8; 4],
+    } info [aReserved5, aReserved6] SL_SBT_PRIVATE, "80 bytes":
+        "The manual's status value (SL_STATE_*, SL_STATE_SBT_*).",
+        "The message's Text ID − 0x4000 (0xD8, 0xD9, 0xDA) + library bits 13-15.",
+        "Text ID of the message in TEST-FAILED / MONS-ERROR, 0 = none.", "Message parameter 2.",
+        "Message parameter 3."
 }
 
 const _: () = {

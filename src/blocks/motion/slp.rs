@@ -17,7 +17,7 @@ use crate::base::block::BlockInfo;
 use crate::base::block::Private;
 use crate::base::bools;
 use crate::base::envelope::Block;
-use crate::base::header::{param_crc, F_CFG_INVALID, SL_PRIVATE_HEADER};
+use crate::base::header::{param_crc, F_CFG_INVALID};
 use crate::base::types::*;
 use crate::blocks::analog::{diag_message, magic};
 
@@ -53,98 +53,84 @@ pub const SL_SLP_ACTIVE_SINGLETURNPOSLL: u16 = 1 << 12;
 /// `wInputActive` bit of MultiturnPosLL (must equal bit 12).
 pub const SL_SLP_ACTIVE_MULTITURNPOSLL: u16 = 1 << 13;
 
-/// Private state of FB SLP (64 bytes). Never written by the user.
-#[repr(C)]
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-#[allow(non_snake_case)]
-pub struct SL_SLP_PRIVATE {
-    /// Common head (`wAux` bit 0: below, bit 1: above the limits in SAFE).
-    pub stHeader: SL_PRIVATE_HEADER,
-    /// Latched `wInputActive`.
-    pub wActive: u16,
-    /// Reserved.
-    pub aReserved0: [u8; 2],
-    /// Latched `dwOptions`.
-    pub dwOptions: u32,
-    /// Latched `…Fix` limits as 32-bit patterns (single-turn UL, multi-turn UL,
-    /// single-turn LL, multi-turn LL: the struct's order).
-    pub adwFix: [u32; 4],
-    /// Diag message parameters 2 and 3 latched at the ERROR entry.
-    pub adwPar: [u32; 2],
-    /// Reserved.
-    pub aReserved1: [u8; 4],
+crate::base::layout::private_struct! {
+    /// Private state of FB SLP (64 bytes). Never written by the user.
+    SL_SLP_PRIVATE {
+        /// Common head (`wAux` bit 0: below, bit 1: above the limits in SAFE).
+        stHeader;
+        /// Latched `wInputActive`.
+        pub wActive: u16,
+        /// Reserved.
+        pub aReserved0: [u8; 2],
+        /// Latched `dwOptions`.
+        pub dwOptions: u32,
+        /// Latched `…Fix` limits as 32-bit patterns (single-turn UL, multi-turn UL,
+        /// single-turn LL, multi-turn LL: the struct's order).
+        pub adwFix: [u32; 4],
+        /// Diag message parameters 2 and 3 latched at the ERROR entry.
+        pub adwPar: [u32; 2],
+        /// Reserved.
+        pub aReserved1: [u8; 4],
+    }
 }
 
-/// FB SLP instance (ABI-2 §11.14). Size: 160 bytes.
-#[repr(C)]
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-#[allow(non_snake_case)]
-pub struct FB_SLP {
-    /// Offset 0. SafePosValid: TRUE = the position is valid (bit 0, required; an invalid
-    /// byte reads FALSE).
-    pub bSafePosValid: SL_BOOL,
-    /// Offset 1. Reserved, keep 0.
-    pub aReserved0: [u8; 15],
-    /// Offset 16. FbRun of the owning group: TRUE = the block executes.
-    pub bRun: SL_BOOL,
-    /// Offset 17. ErrAck of the owning group.
-    pub bErrAck: SL_BOOL,
-    /// Offset 18. Reserved, keep 0.
-    pub aReserved1: [u8; 6],
-    /// Offset 24. SingleturnPos: the current single-turn position (active bit 8, required).
-    pub nSingleturnPos: u32,
-    /// Offset 28. MultiturnPos: the current multi-turn position (active bit 9).
-    pub nMultiturnPos: i32,
-    /// Offset 32. SingleturnPosUL: upper limit, single-turn part (active bit 10 = UL_Active).
-    pub nSingleturnPosUL: u32,
-    /// Offset 36. MultiturnPosUL: upper limit, multi-turn part (active bit 11 = bit 10).
-    pub nMultiturnPosUL: i32,
-    /// Offset 40. SingleturnPosLL: lower limit, single-turn part (active bit 12 = LL_Active).
-    pub nSingleturnPosLL: u32,
-    /// Offset 44. MultiturnPosLL: lower limit, multi-turn part (active bit 13 = bit 12).
-    pub nMultiturnPosLL: i32,
-    /// Offset 48. Parameter "SingleTurn Pos UL" (upper limit while bit 10 is clear).
-    pub nSingleturnPosULFix: u32,
-    /// Offset 52. Parameter "MultiTurn Pos UL".
-    pub nMultiturnPosULFix: i32,
-    /// Offset 56. Parameter "SingleTurn Pos LL" (lower limit while bit 12 is clear).
-    pub nSingleturnPosLLFix: u32,
-    /// Offset 60. Parameter "MultiTurn Pos LL".
-    pub nMultiturnPosLLFix: i32,
-    /// Offset 64. `SL_OPT_SLP_SINGLETURN`; clear = multi-turn.
-    pub dwOptions: u32,
-    /// Offset 68. Bits 0, 8 required; 9 required in multi-turn; 10 = 11, 12 = 13 choose
-    /// input or parameter.
-    pub wInputActive: u16,
-    /// Offset 70. Reserved, keep 0.
-    pub aReserved2: [u8; 2],
-    /// Offset 72 (output base + 0). Error: TRUE in ERROR only.
-    pub bError: SL_BOOL,
-    /// Offset 73. PositionInLimit: TRUE in RUN.
-    pub bPositionInLimit: SL_BOOL,
-    /// Offset 74. BelowMin: in SAFE (multi-turn), the position is below the lower limit.
-    pub bBelowMin: SL_BOOL,
-    /// Offset 75. AboveMax: in SAFE (multi-turn), the position is above the upper limit.
-    pub bAboveMax: SL_BOOL,
-    /// Offset 76. Reserved.
-    pub aReserved3: [u8; 4],
-    /// Offset 80. The manual's status value (RUN, STOP, SAFE, ERROR, RESET, START).
-    pub nState: u8,
-    /// Offset 81. Reserved.
-    pub aReserved4: [u8; 1],
-    /// Offset 82. Diag bits 0/1 (limit errors) + library bits 13-15.
-    pub nDiag: u16,
-    /// Offset 84. Text ID of the diag message (0x40D0, 0x40D1), 0 = none; also shown in
-    /// STOP while the `…Fix` limits cross (`SL_E_CONFIG`).
-    pub nDiagTextId: u16,
-    /// Offset 86. Reserved.
-    pub aReserved5: [u8; 2],
-    /// Offset 88. Message parameter 2 (the lower limit part as a 32-bit pattern).
-    pub dwDiagPar2: u32,
-    /// Offset 92. Message parameter 3 (the upper limit part).
-    pub dwDiagPar3: u32,
-    /// Offset 96. Private state, 64 bytes: never write it.
-    pub stPrivate: SL_SLP_PRIVATE,
+crate::base::layout::block_struct! {
+    /// FB SLP instance (ABI-2 §11.14). Size: 160 bytes.
+    FB_SLP {
+        /// Offset 0. SafePosValid: TRUE = the position is valid (bit 0, required; an invalid
+        /// byte reads FALSE).
+        pub bSafePosValid: SL_BOOL,
+        /// Offset 1. Reserved, keep 0.
+        pub aReserved0: [u8; 15],
+        /// Offset 16. FbRun of the owning group: TRUE = the block executes.
+        pub bRun: SL_BOOL,
+        /// Offset 17. ErrAck of the owning group.
+        pub bErrAck: SL_BOOL,
+        /// Offset 18. Reserved, keep 0.
+        pub aReserved1: [u8; 6],
+        /// Offset 24. SingleturnPos: the current single-turn position (active bit 8, required).
+        pub nSingleturnPos: u32,
+        /// Offset 28. MultiturnPos: the current multi-turn position (active bit 9).
+        pub nMultiturnPos: i32,
+        /// Offset 32. SingleturnPosUL: upper limit, single-turn part (active bit 10 = UL_Active).
+        pub nSingleturnPosUL: u32,
+        /// Offset 36. MultiturnPosUL: upper limit, multi-turn part (active bit 11 = bit 10).
+        pub nMultiturnPosUL: i32,
+        /// Offset 40. SingleturnPosLL: lower limit, single-turn part (active bit 12 = LL_Active).
+        pub nSingleturnPosLL: u32,
+        /// Offset 44. MultiturnPosLL: lower limit, multi-turn part (active bit 13 = bit 12).
+        pub nMultiturnPosLL: i32,
+        /// Offset 48. Parameter "SingleTurn Pos UL" (upper limit while bit 10 is clear).
+        pub nSingleturnPosULFix: u32,
+        /// Offset 52. Parameter "MultiTurn Pos UL".
+        pub nMultiturnPosULFix: i32,
+        /// Offset 56. Parameter "SingleTurn Pos LL" (lower limit while bit 12 is clear).
+        pub nSingleturnPosLLFix: u32,
+        /// Offset 60. Parameter "MultiTurn Pos LL".
+        pub nMultiturnPosLLFix: i32,
+        /// Offset 64. `SL_OPT_SLP_SINGLETURN`; clear = multi-turn.
+        pub dwOptions: u32,
+        /// Offset 68. Bits 0, 8 required; 9 required in multi-turn; 10 = 11, 12 = 13 choose
+        /// input or parameter.
+        pub wInputActive: u16,
+        /// Offset 70. Reserved, keep 0.
+        pub aReserved2: [u8; 2],
+        /// Offset 72 (output base + 0). Error: TRUE in ERROR only.
+        pub bError: SL_BOOL,
+        /// Offset 73. PositionInLimit: TRUE in RUN.
+        pub bPositionInLimit: SL_BOOL,
+        /// Offset 74. BelowMin: in SAFE (multi-turn), the position is below the lower limit.
+        pub bBelowMin: SL_BOOL,
+        /// Offset 75. AboveMax: in SAFE (multi-turn), the position is above the upper limit.
+        pub bAboveMax: SL_BOOL,
+        /// Offset 76. Reserved.
+        pub aReserved3: [u8; 4],
+    } info [aReserved4, aReserved5] SL_SLP_PRIVATE, "64 bytes":
+        "The manual's status value (RUN, STOP, SAFE, ERROR, RESET, START).",
+        "Diag bits 0/1 (limit errors) + library bits 13-15.",
+        "Text ID of the diag message (0x40D0, 0x40D1), 0 = none; also shown in STOP while the `…Fix` limits cross (`SL_E_CONFIG`).",
+        "Message parameter 2 (the lower limit part as a 32-bit pattern).",
+        "Message parameter 3 (the upper limit part)."
 }
 
 const _: () = {

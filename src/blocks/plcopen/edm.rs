@@ -143,48 +143,45 @@ fn next(s: SfEdmState, i: &SfEdmIn, r: ResetIn, in_state: u32, t: u32) -> SfEdmS
     }
 }
 
-/// SF_EDM instance: the PLCopen v2.01 VAR_INPUT / VAR_OUTPUT names (plus v1.0's
-/// S_StartReset), BOOL = one byte. Size: 64 bytes.
-#[repr(C)]
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-#[allow(non_snake_case, non_camel_case_types)]
-pub struct SF_EDM {
-    /// Offset 0. Activate: FALSE = idle (DiagCode 0000, every output FALSE), highest priority.
-    pub Activate: SL_BOOL,
-    /// Offset 1. S_OutControl: the control signal of the preceding safety FB, TRUE = switch the actuators on.
-    pub S_OutControl: SL_BOOL,
-    /// Offset 2. EDM1: feedback of actuator 1, TRUE = released (de-energised); v1.0 name S_EDM1.
-    pub EDM1: SL_BOOL,
-    /// Offset 3. EDM2: feedback of actuator 2, TRUE = released; bridge it to EDM1 for one feedback; v1.0 name S_EDM2.
-    pub EDM2: SL_BOOL,
-    /// Offset 4. MonitoringTime (constant, ms): the actuators' longest response time; latched at activation.
-    pub MonitoringTime: u32,
-    /// Offset 8. S_StartReset (v1.0 input; FALSE in v2.01): TRUE = no reset needed after activation.
-    pub S_StartReset: SL_BOOL,
-    /// Offset 9. Reset: a rising edge leaves INIT and the errors; held TRUE it is a static-reset error.
-    pub Reset: SL_BOOL,
-    /// Offset 10. Reserved, keep 0.
-    pub aReserved0: [u8; 1],
-    /// Offset 11. Library extension, constant: DiagCode profile, 0 = v2.01 (default), 1 = v1.0; latched at activation.
-    pub nDiagProfile: u8,
-    /// Offset 12 (output base). Ready: TRUE while activated (DiagCode != 0000).
-    pub Ready: SL_BOOL,
-    /// Offset 13. S_EDM_Out: the safety output to the actuators, TRUE only at DiagCode 8000.
-    pub S_EDM_Out: SL_BOOL,
-    /// Offset 14. SafetyDemand: the output is switched off (v2.01 code bit 0x0800).
-    pub SafetyDemand: SL_BOOL,
-    /// Offset 15. ResetRequest: a reset is awaited (v2.01 code bit 0x0400) and Reset is FALSE.
-    pub ResetRequest: SL_BOOL,
-    /// Offset 16. Error: DiagCode >= C000.
-    pub Error: SL_BOOL,
-    /// Offset 17. Reserved.
-    pub aReserved1: [u8; 1],
-    /// Offset 18. DiagCode: the state or error, in the profile of nDiagProfile.
-    pub DiagCode: u16,
-    /// Offset 20. Reserved.
-    pub aReserved2: [u8; 4],
-    /// Offset 24. Private state, 40 bytes: never write it.
-    pub stPrivate: SL_SF_PRIVATE,
+crate::base::layout::block_struct! {
+    /// SF_EDM instance: the PLCopen v2.01 VAR_INPUT / VAR_OUTPUT names (plus v1.0's
+    /// S_StartReset), BOOL = one byte. Size: 64 bytes.
+    SF_EDM {
+        /// Offset 0. Activate: FALSE = idle (DiagCode 0000, every output FALSE), highest priority.
+        pub Activate: SL_BOOL,
+        /// Offset 1. S_OutControl: the control signal of the preceding safety FB, TRUE = switch the actuators on.
+        pub S_OutControl: SL_BOOL,
+        /// Offset 2. EDM1: feedback of actuator 1, TRUE = released (de-energised); v1.0 name S_EDM1.
+        pub EDM1: SL_BOOL,
+        /// Offset 3. EDM2: feedback of actuator 2, TRUE = released; bridge it to EDM1 for one feedback; v1.0 name S_EDM2.
+        pub EDM2: SL_BOOL,
+        /// Offset 4. MonitoringTime (constant, ms): the actuators' longest response time; latched at activation.
+        pub MonitoringTime: u32,
+        /// Offset 8. S_StartReset (v1.0 input; FALSE in v2.01): TRUE = no reset needed after activation.
+        pub S_StartReset: SL_BOOL,
+        /// Offset 9. Reset: a rising edge leaves INIT and the errors; held TRUE it is a static-reset error.
+        pub Reset: SL_BOOL,
+        /// Offset 10. Reserved, keep 0.
+        pub aReserved0: [u8; 1],
+        /// Offset 11. Library extension, constant: DiagCode profile, 0 = v2.01 (default), 1 = v1.0; latched at activation.
+        pub nDiagProfile: u8,
+        /// Offset 12 (output base). Ready: TRUE while activated (DiagCode != 0000).
+        pub Ready: SL_BOOL,
+        /// Offset 13. S_EDM_Out: the safety output to the actuators, TRUE only at DiagCode 8000.
+        pub S_EDM_Out: SL_BOOL,
+        /// Offset 14. SafetyDemand: the output is switched off (v2.01 code bit 0x0800).
+        pub SafetyDemand: SL_BOOL,
+        /// Offset 15. ResetRequest: a reset is awaited (v2.01 code bit 0x0400) and Reset is FALSE.
+        pub ResetRequest: SL_BOOL,
+        /// Offset 16. Error: DiagCode >= C000.
+        pub Error: SL_BOOL,
+        /// Offset 17. Reserved.
+        pub aReserved1: [u8; 1],
+        /// Offset 18. DiagCode: the state or error, in the profile of nDiagProfile.
+        pub DiagCode: u16,
+        /// Offset 20. Reserved.
+        pub aReserved2: [u8; 4],
+    } private 24: SL_SF_PRIVATE, 40
 }
 
 crate::impl_sf_member!(SF_EDM {
@@ -252,37 +249,5 @@ impl crate::base::sf::SfBlock for SF_EDM {
         self.DiagCode = o.diag_code;
         // The end of every call: the R_TRIG memory of S_OutControl.
         sf::store_trigger(&mut self.stPrivate, self.S_OutControl);
-    }
-}
-
-impl SF_EDM {
-    /// An all-zero instance (valid: it initialises itself on the first call).
-    pub const fn zeroed() -> Self {
-        Self {
-            Activate: 0,
-            S_OutControl: 0,
-            EDM1: 0,
-            EDM2: 0,
-            MonitoringTime: 0,
-            S_StartReset: 0,
-            Reset: 0,
-            aReserved0: [0; 1],
-            nDiagProfile: 0,
-            Ready: 0,
-            S_EDM_Out: 0,
-            SafetyDemand: 0,
-            ResetRequest: 0,
-            Error: 0,
-            aReserved1: [0; 1],
-            DiagCode: 0,
-            aReserved2: [0; 4],
-            stPrivate: SL_SF_PRIVATE::ZERO,
-        }
-    }
-}
-
-impl Default for SF_EDM {
-    fn default() -> Self {
-        Self::zeroed()
     }
 }

@@ -47,47 +47,44 @@ pub struct SfGuardIn {
     pub auto_reset: bool,
 }
 
-/// SF_Guard instance (v1.0: SF_GuardMonitoring, whose output S_GuardMonitoring is
-/// `S_GuardOut` here): the PLCopen VAR_INPUT / VAR_OUTPUT names, BOOL = one byte.
-/// Size: 64 bytes.
-#[repr(C)]
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-#[allow(non_snake_case, non_camel_case_types)]
-pub struct SF_Guard {
-    /// Offset 0. Activate: FALSE = idle (DiagCode 0000, every output FALSE), highest priority.
-    pub Activate: SL_BOOL,
-    /// Offset 1. S_GuardSwitch1: guard switch 1, FALSE = guard open.
-    pub S_GuardSwitch1: SL_BOOL,
-    /// Offset 2. S_GuardSwitch2: guard switch 2, FALSE = guard open (bridge it to S_GuardSwitch1 for a guard with one switch).
-    pub S_GuardSwitch2: SL_BOOL,
-    /// Offset 3. Library extension, constant: DiagCode profile, 0 = v2.01 (default), 1 = v1.0 (SF_GuardMonitoring); latched at activation.
-    pub nDiagProfile: u8,
-    /// Offset 4. DiscrepancyTime (constant, ms): how long the switches may differ while the guard closes; latched at activation.
-    pub DiscrepancyTime: u32,
-    /// Offset 8. S_StartReset: TRUE = automatic reset at activation (start-up).
-    pub S_StartReset: SL_BOOL,
-    /// Offset 9. S_AutoReset: TRUE = automatic reset when the guard is closed again.
-    pub S_AutoReset: SL_BOOL,
-    /// Offset 10. Reset: a rising edge resets; held TRUE into the wait-for-reset state it is a static-reset error.
-    pub Reset: SL_BOOL,
-    /// Offset 11. Reserved, keep 0.
-    pub aReserved0: [u8; 5],
-    /// Offset 16 (output base). Ready: TRUE while activated (DiagCode != 0000).
-    pub Ready: SL_BOOL,
-    /// Offset 17. S_GuardOut: the safety output (v1.0: S_GuardMonitoring), TRUE only at DiagCode 8000.
-    pub S_GuardOut: SL_BOOL,
-    /// Offset 18. SafetyDemand: the safety function is demanded (v2.01 code bit 0x0800).
-    pub SafetyDemand: SL_BOOL,
-    /// Offset 19. ResetRequest: a reset is awaited (v2.01 code bit 0x0400) and Reset is FALSE.
-    pub ResetRequest: SL_BOOL,
-    /// Offset 20. Error: DiagCode >= C000.
-    pub Error: SL_BOOL,
-    /// Offset 21. Reserved.
-    pub aReserved1: [u8; 1],
-    /// Offset 22. DiagCode: the state or error, in the profile of nDiagProfile.
-    pub DiagCode: u16,
-    /// Offset 24. Private state, 40 bytes: never write it.
-    pub stPrivate: SL_SF_PRIVATE,
+crate::base::layout::block_struct! {
+    /// SF_Guard instance (v1.0: SF_GuardMonitoring, whose output S_GuardMonitoring is
+    /// `S_GuardOut` here): the PLCopen VAR_INPUT / VAR_OUTPUT names, BOOL = one byte.
+    /// Size: 64 bytes.
+    SF_Guard {
+        /// Offset 0. Activate: FALSE = idle (DiagCode 0000, every output FALSE), highest priority.
+        pub Activate: SL_BOOL,
+        /// Offset 1. S_GuardSwitch1: guard switch 1, FALSE = guard open.
+        pub S_GuardSwitch1: SL_BOOL,
+        /// Offset 2. S_GuardSwitch2: guard switch 2, FALSE = guard open (bridge it to S_GuardSwitch1 for a guard with one switch).
+        pub S_GuardSwitch2: SL_BOOL,
+        /// Offset 3. Library extension, constant: DiagCode profile, 0 = v2.01 (default), 1 = v1.0 (SF_GuardMonitoring); latched at activation.
+        pub nDiagProfile: u8,
+        /// Offset 4. DiscrepancyTime (constant, ms): how long the switches may differ while the guard closes; latched at activation.
+        pub DiscrepancyTime: u32,
+        /// Offset 8. S_StartReset: TRUE = automatic reset at activation (start-up).
+        pub S_StartReset: SL_BOOL,
+        /// Offset 9. S_AutoReset: TRUE = automatic reset when the guard is closed again.
+        pub S_AutoReset: SL_BOOL,
+        /// Offset 10. Reset: a rising edge resets; held TRUE into the wait-for-reset state it is a static-reset error.
+        pub Reset: SL_BOOL,
+        /// Offset 11. Reserved, keep 0.
+        pub aReserved0: [u8; 5],
+        /// Offset 16 (output base). Ready: TRUE while activated (DiagCode != 0000).
+        pub Ready: SL_BOOL,
+        /// Offset 17. S_GuardOut: the safety output (v1.0: S_GuardMonitoring), TRUE only at DiagCode 8000.
+        pub S_GuardOut: SL_BOOL,
+        /// Offset 18. SafetyDemand: the safety function is demanded (v2.01 code bit 0x0800).
+        pub SafetyDemand: SL_BOOL,
+        /// Offset 19. ResetRequest: a reset is awaited (v2.01 code bit 0x0400) and Reset is FALSE.
+        pub ResetRequest: SL_BOOL,
+        /// Offset 20. Error: DiagCode >= C000.
+        pub Error: SL_BOOL,
+        /// Offset 21. Reserved.
+        pub aReserved1: [u8; 1],
+        /// Offset 22. DiagCode: the state or error, in the profile of nDiagProfile.
+        pub DiagCode: u16,
+    } private 24: SL_SF_PRIVATE, 40
 }
 
 crate::impl_sf_member!(SF_Guard {
@@ -187,36 +184,5 @@ impl SfBlock for SF_Guard {
         self.ResetRequest = u8::from(o.reset_request);
         self.Error = u8::from(o.error);
         self.DiagCode = o.diag_code;
-    }
-}
-
-impl SF_Guard {
-    /// An all-zero instance (valid: it initialises itself on the first call).
-    pub const fn zeroed() -> Self {
-        Self {
-            Activate: 0,
-            S_GuardSwitch1: 0,
-            S_GuardSwitch2: 0,
-            nDiagProfile: 0,
-            DiscrepancyTime: 0,
-            S_StartReset: 0,
-            S_AutoReset: 0,
-            Reset: 0,
-            aReserved0: [0; 5],
-            Ready: 0,
-            S_GuardOut: 0,
-            SafetyDemand: 0,
-            ResetRequest: 0,
-            Error: 0,
-            aReserved1: [0; 1],
-            DiagCode: 0,
-            stPrivate: SL_SF_PRIVATE::ZERO,
-        }
-    }
-}
-
-impl Default for SF_Guard {
-    fn default() -> Self {
-        Self::zeroed()
     }
 }

@@ -52,44 +52,41 @@ pub struct OutControlIn {
     pub auto_reset: bool,
 }
 
-/// SF_OutControl instance: the PLCopen VAR_INPUT / VAR_OUTPUT names, BOOL = one byte.
-/// Size: 56 bytes.
-#[repr(C)]
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-#[allow(non_snake_case, non_camel_case_types)]
-pub struct SF_OutControl {
-    /// Offset 0. Activate: FALSE = idle (DiagCode 0000, every output FALSE), highest priority.
-    pub Activate: SL_BOOL,
-    /// Offset 1. S_SafeControl: from the preceding safety blocks, FALSE = safety function triggered.
-    pub S_SafeControl: SL_BOOL,
-    /// Offset 2. ProcessControl: from the standard application, TRUE = output requested.
-    pub ProcessControl: SL_BOOL,
-    /// Offset 3. StaticControl (constant): FALSE = a rising edge of ProcessControl is required after activation and after an inhibit; latched at activation.
-    pub StaticControl: SL_BOOL,
-    /// Offset 4. S_StartReset: TRUE = automatic reset at activation (no start-up inhibit).
-    pub S_StartReset: SL_BOOL,
-    /// Offset 5. S_AutoReset: TRUE = automatic reset when S_SafeControl is TRUE again (no restart inhibit).
-    pub S_AutoReset: SL_BOOL,
-    /// Offset 6. Reset: a rising edge leaves an inhibit; held TRUE into it, a static-reset error.
-    pub Reset: SL_BOOL,
-    /// Offset 7. Library extension, constant: DiagCode profile, 0 = v2.01 (default), 1 = v1.0; latched at activation.
-    pub nDiagProfile: u8,
-    /// Offset 8 (output base). Ready: TRUE while activated (DiagCode != 0000).
-    pub Ready: SL_BOOL,
-    /// Offset 9. S_OutControl: the safety output, TRUE only at DiagCode 8000.
-    pub S_OutControl: SL_BOOL,
-    /// Offset 10. SafetyDemand: the safety function is demanded (v2.01 code bit 0x0800).
-    pub SafetyDemand: SL_BOOL,
-    /// Offset 11. ResetRequest: a reset is awaited (v2.01 code bit 0x0400) and Reset is FALSE.
-    pub ResetRequest: SL_BOOL,
-    /// Offset 12. Error: DiagCode >= C000.
-    pub Error: SL_BOOL,
-    /// Offset 13. Reserved.
-    pub aReserved1: [u8; 1],
-    /// Offset 14. DiagCode: the state or error, in the profile of nDiagProfile.
-    pub DiagCode: u16,
-    /// Offset 16. Private state, 40 bytes: never write it.
-    pub stPrivate: SL_SF_PRIVATE,
+crate::base::layout::block_struct! {
+    /// SF_OutControl instance: the PLCopen VAR_INPUT / VAR_OUTPUT names, BOOL = one byte.
+    /// Size: 56 bytes.
+    SF_OutControl {
+        /// Offset 0. Activate: FALSE = idle (DiagCode 0000, every output FALSE), highest priority.
+        pub Activate: SL_BOOL,
+        /// Offset 1. S_SafeControl: from the preceding safety blocks, FALSE = safety function triggered.
+        pub S_SafeControl: SL_BOOL,
+        /// Offset 2. ProcessControl: from the standard application, TRUE = output requested.
+        pub ProcessControl: SL_BOOL,
+        /// Offset 3. StaticControl (constant): FALSE = a rising edge of ProcessControl is required after activation and after an inhibit; latched at activation.
+        pub StaticControl: SL_BOOL,
+        /// Offset 4. S_StartReset: TRUE = automatic reset at activation (no start-up inhibit).
+        pub S_StartReset: SL_BOOL,
+        /// Offset 5. S_AutoReset: TRUE = automatic reset when S_SafeControl is TRUE again (no restart inhibit).
+        pub S_AutoReset: SL_BOOL,
+        /// Offset 6. Reset: a rising edge leaves an inhibit; held TRUE into it, a static-reset error.
+        pub Reset: SL_BOOL,
+        /// Offset 7. Library extension, constant: DiagCode profile, 0 = v2.01 (default), 1 = v1.0; latched at activation.
+        pub nDiagProfile: u8,
+        /// Offset 8 (output base). Ready: TRUE while activated (DiagCode != 0000).
+        pub Ready: SL_BOOL,
+        /// Offset 9. S_OutControl: the safety output, TRUE only at DiagCode 8000.
+        pub S_OutControl: SL_BOOL,
+        /// Offset 10. SafetyDemand: the safety function is demanded (v2.01 code bit 0x0800).
+        pub SafetyDemand: SL_BOOL,
+        /// Offset 11. ResetRequest: a reset is awaited (v2.01 code bit 0x0400) and Reset is FALSE.
+        pub ResetRequest: SL_BOOL,
+        /// Offset 12. Error: DiagCode >= C000.
+        pub Error: SL_BOOL,
+        /// Offset 13. Reserved.
+        pub aReserved1: [u8; 1],
+        /// Offset 14. DiagCode: the state or error, in the profile of nDiagProfile.
+        pub DiagCode: u16,
+    } private 16: SL_SF_PRIVATE, 40
 }
 
 crate::impl_sf_member!(SF_OutControl {
@@ -204,35 +201,5 @@ impl SfBlock for SF_OutControl {
         self.ResetRequest = u8::from(o.reset_request);
         self.Error = u8::from(o.error);
         self.DiagCode = o.diag_code;
-    }
-}
-
-impl SF_OutControl {
-    /// An all-zero instance (valid: it initialises itself on the first call).
-    pub const fn zeroed() -> Self {
-        Self {
-            Activate: 0,
-            S_SafeControl: 0,
-            ProcessControl: 0,
-            StaticControl: 0,
-            S_StartReset: 0,
-            S_AutoReset: 0,
-            Reset: 0,
-            nDiagProfile: 0,
-            Ready: 0,
-            S_OutControl: 0,
-            SafetyDemand: 0,
-            ResetRequest: 0,
-            Error: 0,
-            aReserved1: [0; 1],
-            DiagCode: 0,
-            stPrivate: SL_SF_PRIVATE::ZERO,
-        }
-    }
-}
-
-impl Default for SF_OutControl {
-    fn default() -> Self {
-        Self::zeroed()
     }
 }

@@ -65,35 +65,32 @@ pub fn next(s: PairState, i: &PairIn, in_state: u32, t: u32) -> PairState {
 #[doc(hidden)]
 macro_rules! pair_struct {
     ($(#[doc = $doc:literal])* $name:ident: $a:ident $a_doc:literal, $b:ident $b_doc:literal => $output:ident) => {
-        $(#[doc = $doc])*
-        #[repr(C)]
-        #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-        #[allow(non_snake_case, non_camel_case_types)]
-        pub struct $name {
-            /// Offset 0. Activate: FALSE = idle (DiagCode 0000, every output FALSE), highest priority.
-            pub Activate: SL_BOOL,
-            #[doc = concat!(" Offset 1. ", stringify!($a), ": ", $a_doc)]
-            pub $a: SL_BOOL,
-            #[doc = concat!(" Offset 2. ", stringify!($b), ": ", $b_doc)]
-            pub $b: SL_BOOL,
-            /// Offset 3. Library extension, constant: DiagCode profile, 0 = v2.01 (default), 1 = v1.0; latched at activation.
-            pub nDiagProfile: u8,
-            /// Offset 4. DiscrepancyTime (constant, ms): how long the channels may differ; latched at activation.
-            pub DiscrepancyTime: u32,
-            /// Offset 8 (output base). Ready: TRUE while activated (DiagCode != 0000).
-            pub Ready: SL_BOOL,
-            #[doc = concat!(" Offset 9. ", stringify!($output), ": the safety output, TRUE only at DiagCode 8000.")]
-            pub $output: SL_BOOL,
-            /// Offset 10. SafetyDemand: the safety function is demanded (v2.01 code bit 0x0800).
-            pub SafetyDemand: SL_BOOL,
-            /// Offset 11. Error: DiagCode >= C000.
-            pub Error: SL_BOOL,
-            /// Offset 12. Reserved.
-            pub aReserved1: [u8; 2],
-            /// Offset 14. DiagCode: the state or error, in the profile of nDiagProfile.
-            pub DiagCode: u16,
-            /// Offset 16. Private state, 40 bytes: never write it.
-            pub stPrivate: $crate::base::sf::SL_SF_PRIVATE,
+        $crate::base::layout::block_struct! {
+            $(#[doc = $doc])*
+            $name {
+                /// Offset 0. Activate: FALSE = idle (DiagCode 0000, every output FALSE), highest priority.
+                pub Activate: SL_BOOL,
+                #[doc = concat!(" Offset 1. ", stringify!($a), ": ", $a_doc)]
+                pub $a: SL_BOOL,
+                #[doc = concat!(" Offset 2. ", stringify!($b), ": ", $b_doc)]
+                pub $b: SL_BOOL,
+                /// Offset 3. Library extension, constant: DiagCode profile, 0 = v2.01 (default), 1 = v1.0; latched at activation.
+                pub nDiagProfile: u8,
+                /// Offset 4. DiscrepancyTime (constant, ms): how long the channels may differ; latched at activation.
+                pub DiscrepancyTime: u32,
+                /// Offset 8 (output base). Ready: TRUE while activated (DiagCode != 0000).
+                pub Ready: SL_BOOL,
+                #[doc = concat!(" Offset 9. ", stringify!($output), ": the safety output, TRUE only at DiagCode 8000.")]
+                pub $output: SL_BOOL,
+                /// Offset 10. SafetyDemand: the safety function is demanded (v2.01 code bit 0x0800).
+                pub SafetyDemand: SL_BOOL,
+                /// Offset 11. Error: DiagCode >= C000.
+                pub Error: SL_BOOL,
+                /// Offset 12. Reserved.
+                pub aReserved1: [u8; 2],
+                /// Offset 14. DiagCode: the state or error, in the profile of nDiagProfile.
+                pub DiagCode: u16,
+            } private 16: $crate::base::sf::SL_SF_PRIVATE, 40
         }
     };
 }
@@ -158,32 +155,6 @@ macro_rules! pair_block {
                 self.SafetyDemand = u8::from(o.safety_demand);
                 self.Error = u8::from(o.error);
                 self.DiagCode = o.diag_code;
-            }
-        }
-
-        impl $ty {
-            /// An all-zero instance (valid: it initialises itself on the first call).
-            pub const fn zeroed() -> Self {
-                Self {
-                    Activate: 0,
-                    $a: 0,
-                    $b: 0,
-                    nDiagProfile: 0,
-                    DiscrepancyTime: 0,
-                    Ready: 0,
-                    $output: 0,
-                    SafetyDemand: 0,
-                    Error: 0,
-                    aReserved1: [0; 2],
-                    DiagCode: 0,
-                    stPrivate: $crate::base::sf::SL_SF_PRIVATE::ZERO,
-                }
-            }
-        }
-
-        impl Default for $ty {
-            fn default() -> Self {
-                Self::zeroed()
             }
         }
     };

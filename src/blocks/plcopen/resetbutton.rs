@@ -56,38 +56,35 @@ fn next(s: ResetButtonState, r: ResetIn, in_state: u32, t: [u32; 2]) -> ResetBut
     }
 }
 
-/// SF_ResetButton instance: the PLCopen VAR_INPUT / VAR_OUTPUT names, BOOL = one byte.
-/// Size: 64 bytes.
-#[repr(C)]
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-#[allow(non_snake_case, non_camel_case_types)]
-pub struct SF_ResetButton {
-    /// Offset 0. ResetRequested: the activation of this block (it has no Activate); connect the paired FB's ResetRequest. FALSE = idle (DiagCode 0000, ResetOut FALSE), highest priority. PLCopen initial value TRUE.
-    pub ResetRequested: SL_BOOL,
-    /// Offset 1. ResetIn: the reset button, TRUE = pressed.
-    pub ResetIn: SL_BOOL,
-    /// Offset 2. Reserved, keep 0.
-    pub aReserved0: [u8; 1],
-    /// Offset 3. Library extension, constant: DiagCode profile, only 0 = v2.01 (1 is refused: v2.x block); latched at activation.
-    pub nDiagProfile: u8,
-    /// Offset 4. TrailingMinimum (constant, ms; PLCopen default T#350ms): shortest valid press, at least 100 ms; latched at activation.
-    pub TrailingMinimum: u32,
-    /// Offset 8. TrailingMaximum (constant, ms; PLCopen default T#2s): a press this long is invalid; latched at activation.
-    pub TrailingMaximum: u32,
-    /// Offset 12 (output base). Ready: TRUE while activated (DiagCode != 0000).
-    pub Ready: SL_BOOL,
-    /// Offset 13. ResetOut: TRUE for one call after the falling edge of a valid press (DiagCode 8000).
-    pub ResetOut: SL_BOOL,
-    /// Offset 14. Error: DiagCode >= C000.
-    pub Error: SL_BOOL,
-    /// Offset 15. Reserved.
-    pub aReserved1: [u8; 1],
-    /// Offset 16. DiagCode: the state or error (v2.01).
-    pub DiagCode: u16,
-    /// Offset 18. Reserved.
-    pub aReserved2: [u8; 6],
-    /// Offset 24. Private state, 40 bytes: never write it.
-    pub stPrivate: SL_SF_PRIVATE,
+crate::base::layout::block_struct! {
+    /// SF_ResetButton instance: the PLCopen VAR_INPUT / VAR_OUTPUT names, BOOL = one byte.
+    /// Size: 64 bytes.
+    SF_ResetButton {
+        /// Offset 0. ResetRequested: the activation of this block (it has no Activate); connect the paired FB's ResetRequest. FALSE = idle (DiagCode 0000, ResetOut FALSE), highest priority. PLCopen initial value TRUE.
+        pub ResetRequested: SL_BOOL,
+        /// Offset 1. ResetIn: the reset button, TRUE = pressed.
+        pub ResetIn: SL_BOOL,
+        /// Offset 2. Reserved, keep 0.
+        pub aReserved0: [u8; 1],
+        /// Offset 3. Library extension, constant: DiagCode profile, only 0 = v2.01 (1 is refused: v2.x block); latched at activation.
+        pub nDiagProfile: u8,
+        /// Offset 4. TrailingMinimum (constant, ms; PLCopen default T#350ms): shortest valid press, at least 100 ms; latched at activation.
+        pub TrailingMinimum: u32,
+        /// Offset 8. TrailingMaximum (constant, ms; PLCopen default T#2s): a press this long is invalid; latched at activation.
+        pub TrailingMaximum: u32,
+        /// Offset 12 (output base). Ready: TRUE while activated (DiagCode != 0000).
+        pub Ready: SL_BOOL,
+        /// Offset 13. ResetOut: TRUE for one call after the falling edge of a valid press (DiagCode 8000).
+        pub ResetOut: SL_BOOL,
+        /// Offset 14. Error: DiagCode >= C000.
+        pub Error: SL_BOOL,
+        /// Offset 15. Reserved.
+        pub aReserved1: [u8; 1],
+        /// Offset 16. DiagCode: the state or error (v2.01).
+        pub DiagCode: u16,
+        /// Offset 18. Reserved.
+        pub aReserved2: [u8; 6],
+    } private 24: SL_SF_PRIVATE, 40
 }
 
 crate::impl_sf_member!(SF_ResetButton {
@@ -143,32 +140,5 @@ impl crate::base::sf::SfBlock for SF_ResetButton {
         self.ResetOut = u8::from(o.enabled);
         self.Error = u8::from(o.error);
         self.DiagCode = o.diag_code;
-    }
-}
-
-impl SF_ResetButton {
-    /// An all-zero instance (valid: it initialises itself on the first call).
-    pub const fn zeroed() -> Self {
-        Self {
-            ResetRequested: 0,
-            ResetIn: 0,
-            aReserved0: [0; 1],
-            nDiagProfile: 0,
-            TrailingMinimum: 0,
-            TrailingMaximum: 0,
-            Ready: 0,
-            ResetOut: 0,
-            Error: 0,
-            aReserved1: [0; 1],
-            DiagCode: 0,
-            aReserved2: [0; 6],
-            stPrivate: SL_SF_PRIVATE::ZERO,
-        }
-    }
-}
-
-impl Default for SF_ResetButton {
-    fn default() -> Self {
-        Self::zeroed()
     }
 }

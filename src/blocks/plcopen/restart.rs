@@ -65,41 +65,38 @@ pub fn next(s: RestartState, i: &RestartIn, r: ResetIn) -> RestartState {
 #[doc(hidden)]
 macro_rules! restart_interlock_struct {
     ($(#[doc = $doc:literal])* $name:ident: $input:ident $in_doc:literal => $output:ident) => {
-        $(#[doc = $doc])*
-        #[repr(C)]
-        #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-        #[allow(non_snake_case, non_camel_case_types)]
-        pub struct $name {
-            /// Offset 0. Activate: FALSE = idle (DiagCode 0000, every output FALSE), highest priority.
-            pub Activate: SL_BOOL,
-            #[doc = concat!(" Offset 1. ", stringify!($input), ": ", $in_doc)]
-            pub $input: SL_BOOL,
-            /// Offset 2. S_StartReset: TRUE = automatic reset at activation (start-up).
-            pub S_StartReset: SL_BOOL,
-            /// Offset 3. S_AutoReset: TRUE = automatic reset when the safety demand ends.
-            pub S_AutoReset: SL_BOOL,
-            /// Offset 4. Reset: a rising edge resets; held TRUE into a wait-for-reset state it is a static-reset error.
-            pub Reset: SL_BOOL,
-            /// Offset 5. Reserved, keep 0.
-            pub aReserved0: [u8; 2],
-            /// Offset 7. Library extension, constant: DiagCode profile, 0 = v2.01 (default), 1 = v1.0; latched at activation.
-            pub nDiagProfile: u8,
-            /// Offset 8 (output base). Ready: TRUE while activated (DiagCode != 0000).
-            pub Ready: SL_BOOL,
-            #[doc = concat!(" Offset 9. ", stringify!($output), ": the safety output, TRUE only at DiagCode 8000.")]
-            pub $output: SL_BOOL,
-            /// Offset 10. SafetyDemand: the safety function is demanded (v2.01 code bit 0x0800).
-            pub SafetyDemand: SL_BOOL,
-            /// Offset 11. ResetRequest: a reset is awaited (v2.01 code bit 0x0400) and Reset is FALSE.
-            pub ResetRequest: SL_BOOL,
-            /// Offset 12. Error: DiagCode >= C000.
-            pub Error: SL_BOOL,
-            /// Offset 13. Reserved.
-            pub aReserved1: [u8; 1],
-            /// Offset 14. DiagCode: the state or error, in the profile of nDiagProfile.
-            pub DiagCode: u16,
-            /// Offset 16. Private state, 40 bytes: never write it.
-            pub stPrivate: $crate::base::sf::SL_SF_PRIVATE,
+        $crate::base::layout::block_struct! {
+            $(#[doc = $doc])*
+            $name {
+                /// Offset 0. Activate: FALSE = idle (DiagCode 0000, every output FALSE), highest priority.
+                pub Activate: SL_BOOL,
+                #[doc = concat!(" Offset 1. ", stringify!($input), ": ", $in_doc)]
+                pub $input: SL_BOOL,
+                /// Offset 2. S_StartReset: TRUE = automatic reset at activation (start-up).
+                pub S_StartReset: SL_BOOL,
+                /// Offset 3. S_AutoReset: TRUE = automatic reset when the safety demand ends.
+                pub S_AutoReset: SL_BOOL,
+                /// Offset 4. Reset: a rising edge resets; held TRUE into a wait-for-reset state it is a static-reset error.
+                pub Reset: SL_BOOL,
+                /// Offset 5. Reserved, keep 0.
+                pub aReserved0: [u8; 2],
+                /// Offset 7. Library extension, constant: DiagCode profile, 0 = v2.01 (default), 1 = v1.0; latched at activation.
+                pub nDiagProfile: u8,
+                /// Offset 8 (output base). Ready: TRUE while activated (DiagCode != 0000).
+                pub Ready: SL_BOOL,
+                #[doc = concat!(" Offset 9. ", stringify!($output), ": the safety output, TRUE only at DiagCode 8000.")]
+                pub $output: SL_BOOL,
+                /// Offset 10. SafetyDemand: the safety function is demanded (v2.01 code bit 0x0800).
+                pub SafetyDemand: SL_BOOL,
+                /// Offset 11. ResetRequest: a reset is awaited (v2.01 code bit 0x0400) and Reset is FALSE.
+                pub ResetRequest: SL_BOOL,
+                /// Offset 12. Error: DiagCode >= C000.
+                pub Error: SL_BOOL,
+                /// Offset 13. Reserved.
+                pub aReserved1: [u8; 1],
+                /// Offset 14. DiagCode: the state or error, in the profile of nDiagProfile.
+                pub DiagCode: u16,
+            } private 16: $crate::base::sf::SL_SF_PRIVATE, 40
         }
     };
 }
@@ -165,35 +162,6 @@ macro_rules! restart_interlock_block {
                 self.ResetRequest = u8::from(o.reset_request);
                 self.Error = u8::from(o.error);
                 self.DiagCode = o.diag_code;
-            }
-        }
-
-        impl $ty {
-            /// An all-zero instance (valid: it initialises itself on the first call).
-            pub const fn zeroed() -> Self {
-                Self {
-                    Activate: 0,
-                    $input: 0,
-                    S_StartReset: 0,
-                    S_AutoReset: 0,
-                    Reset: 0,
-                    aReserved0: [0; 2],
-                    nDiagProfile: 0,
-                    Ready: 0,
-                    $output: 0,
-                    SafetyDemand: 0,
-                    ResetRequest: 0,
-                    Error: 0,
-                    aReserved1: [0; 1],
-                    DiagCode: 0,
-                    stPrivate: $crate::base::sf::SL_SF_PRIVATE::ZERO,
-                }
-            }
-        }
-
-        impl Default for $ty {
-            fn default() -> Self {
-                Self::zeroed()
             }
         }
     };

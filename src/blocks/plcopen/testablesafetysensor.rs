@@ -120,52 +120,49 @@ pub const fn sensor_outputs(code: u16, library: bool) -> [bool; 4] {
     ]
 }
 
-/// SF_TestableSafetySensor instance: the PLCopen VAR_INPUT / VAR_OUTPUT names, BOOL = one
-/// byte. Size: 64 bytes.
-#[repr(C)]
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-#[allow(non_snake_case, non_camel_case_types)]
-pub struct SF_TestableSafetySensor {
-    /// Offset 0. Activate: FALSE = idle (DiagCode 0000, every output FALSE except S_TestOut), highest priority.
-    pub Activate: SL_BOOL,
-    /// Offset 1. S_OSSD_In: the sensor's OSSD, FALSE = safety demand or test.
-    pub S_OSSD_In: SL_BOOL,
-    /// Offset 2. StartTest: a rising edge starts the automatic test (in 8010 or 8000).
-    pub StartTest: SL_BOOL,
-    /// Offset 3. NoExternalTest (constant): TRUE = no manual test after a failed automatic test; latched at activation.
-    pub NoExternalTest: SL_BOOL,
-    /// Offset 4. S_StartReset: TRUE = automatic reset at activation (start-up).
-    pub S_StartReset: SL_BOOL,
-    /// Offset 5. S_AutoReset: TRUE = automatic reset when the safety demand ends.
-    pub S_AutoReset: SL_BOOL,
-    /// Offset 6. Reset: a rising edge resets; held TRUE into a wait-for-reset state it is a static-reset error.
-    pub Reset: SL_BOOL,
-    /// Offset 7. Library extension, constant: DiagCode profile, 0 = v2.01 (default), 1 = v1.0; latched at activation.
-    pub nDiagProfile: u8,
-    /// Offset 8. TestTime (constant, ms; PLCopen default T#10ms, at most 150 ms): each test phase's limit; latched at activation.
-    pub TestTime: u32,
-    /// Offset 12 (output base). Ready: TRUE while activated (DiagCode != 0000).
-    pub Ready: SL_BOOL,
-    /// Offset 13. S_OSSD_Out: the safety output, TRUE at 8000, 8010 and during the test (8020, 8030).
-    pub S_OSSD_Out: SL_BOOL,
-    /// Offset 14. S_TestOut: to the sensor's test input, FALSE = transmitter off (test phase 1, 8020, and library faults).
-    pub S_TestOut: SL_BOOL,
-    /// Offset 15. TestPossible: an automatic test can be started (8010, 8000).
-    pub TestPossible: SL_BOOL,
-    /// Offset 16. TestExecuted: the automatic test passed (8000), until the next test or demand.
-    pub TestExecuted: SL_BOOL,
-    /// Offset 17. SafetyDemand: the safety function is demanded (v2.01 code bit 0x0800).
-    pub SafetyDemand: SL_BOOL,
-    /// Offset 18. ResetRequest: a reset is awaited (v2.01 code bit 0x0400) and Reset is FALSE.
-    pub ResetRequest: SL_BOOL,
-    /// Offset 19. Error: DiagCode >= C000.
-    pub Error: SL_BOOL,
-    /// Offset 20. DiagCode: the state or error, in the profile of nDiagProfile.
-    pub DiagCode: u16,
-    /// Offset 22. Reserved.
-    pub aReserved1: [u8; 2],
-    /// Offset 24. Private state, 40 bytes: never write it.
-    pub stPrivate: SL_SF_PRIVATE,
+crate::base::layout::block_struct! {
+    /// SF_TestableSafetySensor instance: the PLCopen VAR_INPUT / VAR_OUTPUT names, BOOL = one
+    /// byte. Size: 64 bytes.
+    SF_TestableSafetySensor {
+        /// Offset 0. Activate: FALSE = idle (DiagCode 0000, every output FALSE except S_TestOut), highest priority.
+        pub Activate: SL_BOOL,
+        /// Offset 1. S_OSSD_In: the sensor's OSSD, FALSE = safety demand or test.
+        pub S_OSSD_In: SL_BOOL,
+        /// Offset 2. StartTest: a rising edge starts the automatic test (in 8010 or 8000).
+        pub StartTest: SL_BOOL,
+        /// Offset 3. NoExternalTest (constant): TRUE = no manual test after a failed automatic test; latched at activation.
+        pub NoExternalTest: SL_BOOL,
+        /// Offset 4. S_StartReset: TRUE = automatic reset at activation (start-up).
+        pub S_StartReset: SL_BOOL,
+        /// Offset 5. S_AutoReset: TRUE = automatic reset when the safety demand ends.
+        pub S_AutoReset: SL_BOOL,
+        /// Offset 6. Reset: a rising edge resets; held TRUE into a wait-for-reset state it is a static-reset error.
+        pub Reset: SL_BOOL,
+        /// Offset 7. Library extension, constant: DiagCode profile, 0 = v2.01 (default), 1 = v1.0; latched at activation.
+        pub nDiagProfile: u8,
+        /// Offset 8. TestTime (constant, ms; PLCopen default T#10ms, at most 150 ms): each test phase's limit; latched at activation.
+        pub TestTime: u32,
+        /// Offset 12 (output base). Ready: TRUE while activated (DiagCode != 0000).
+        pub Ready: SL_BOOL,
+        /// Offset 13. S_OSSD_Out: the safety output, TRUE at 8000, 8010 and during the test (8020, 8030).
+        pub S_OSSD_Out: SL_BOOL,
+        /// Offset 14. S_TestOut: to the sensor's test input, FALSE = transmitter off (test phase 1, 8020, and library faults).
+        pub S_TestOut: SL_BOOL,
+        /// Offset 15. TestPossible: an automatic test can be started (8010, 8000).
+        pub TestPossible: SL_BOOL,
+        /// Offset 16. TestExecuted: the automatic test passed (8000), until the next test or demand.
+        pub TestExecuted: SL_BOOL,
+        /// Offset 17. SafetyDemand: the safety function is demanded (v2.01 code bit 0x0800).
+        pub SafetyDemand: SL_BOOL,
+        /// Offset 18. ResetRequest: a reset is awaited (v2.01 code bit 0x0400) and Reset is FALSE.
+        pub ResetRequest: SL_BOOL,
+        /// Offset 19. Error: DiagCode >= C000.
+        pub Error: SL_BOOL,
+        /// Offset 20. DiagCode: the state or error, in the profile of nDiagProfile.
+        pub DiagCode: u16,
+        /// Offset 22. Reserved.
+        pub aReserved1: [u8; 2],
+    } private 24: SL_SF_PRIVATE, 40
 }
 
 crate::impl_sf_member!(SF_TestableSafetySensor {
@@ -265,39 +262,5 @@ impl crate::base::sf::SfBlock for SF_TestableSafetySensor {
         self.DiagCode = o.diag_code;
         // The end of every call: the R_TRIG memory of StartTest.
         sf::store_trigger(&mut self.stPrivate, self.StartTest);
-    }
-}
-
-impl SF_TestableSafetySensor {
-    /// An all-zero instance (valid: it initialises itself on the first call).
-    pub const fn zeroed() -> Self {
-        Self {
-            Activate: 0,
-            S_OSSD_In: 0,
-            StartTest: 0,
-            NoExternalTest: 0,
-            S_StartReset: 0,
-            S_AutoReset: 0,
-            Reset: 0,
-            nDiagProfile: 0,
-            TestTime: 0,
-            Ready: 0,
-            S_OSSD_Out: 0,
-            S_TestOut: 0,
-            TestPossible: 0,
-            TestExecuted: 0,
-            SafetyDemand: 0,
-            ResetRequest: 0,
-            Error: 0,
-            DiagCode: 0,
-            aReserved1: [0; 2],
-            stPrivate: SL_SF_PRIVATE::ZERO,
-        }
-    }
-}
-
-impl Default for SF_TestableSafetySensor {
-    fn default() -> Self {
-        Self::zeroed()
     }
 }
