@@ -4,12 +4,13 @@
 
 mod common;
 use common::state_name;
+use common::{aligned_tail, offsets};
 
 use proptest::prelude::*;
 use safelogic::ffi;
 use safelogic::group::{self, Member, SL_GROUP_DIAG_COMERROR};
 use safelogic::*;
-use std::mem::{offset_of, size_of};
+use std::mem::offset_of;
 
 fn dec(active: u16) -> FB_DECOUPLE {
     let mut d = FB_DECOUPLE {
@@ -36,35 +37,32 @@ fn outs(d: &FB_DECOUPLE) -> [u8; 8] {
 #[test]
 fn layout_is_the_abi() {
     // ABI §9: bDecIn1…bDecIn8 (8…15), bDecOut1…bDecOut8 (+8…+15).
-    let ins = [
-        offset_of!(FB_DECOUPLE, bDecIn1),
-        offset_of!(FB_DECOUPLE, bDecIn2),
-        offset_of!(FB_DECOUPLE, bDecIn3),
-        offset_of!(FB_DECOUPLE, bDecIn4),
-        offset_of!(FB_DECOUPLE, bDecIn5),
-        offset_of!(FB_DECOUPLE, bDecIn6),
-        offset_of!(FB_DECOUPLE, bDecIn7),
-        offset_of!(FB_DECOUPLE, bDecIn8),
-    ];
-    let outs = [
-        offset_of!(FB_DECOUPLE, bDecOut1),
-        offset_of!(FB_DECOUPLE, bDecOut2),
-        offset_of!(FB_DECOUPLE, bDecOut3),
-        offset_of!(FB_DECOUPLE, bDecOut4),
-        offset_of!(FB_DECOUPLE, bDecOut5),
-        offset_of!(FB_DECOUPLE, bDecOut6),
-        offset_of!(FB_DECOUPLE, bDecOut7),
-        offset_of!(FB_DECOUPLE, bDecOut8),
-    ];
+    offsets!(FB_DECOUPLE {
+        bDecIn1: 8,
+        bDecIn2: 9,
+        bDecIn3: 10,
+        bDecIn4: 11,
+        bDecIn5: 12,
+        bDecIn6: 13,
+        bDecIn7: 14,
+        bDecIn8: 15,
+    });
     let base = 24;
-    for k in 0..8 {
-        assert_eq!(ins[k], 8 + k);
-        assert_eq!(outs[k], base + 8 + k);
-    }
-    assert_eq!(offset_of!(FB_DECOUPLE, bRun), 16);
-    assert_eq!(offset_of!(FB_DECOUPLE, bErrAck), 17);
-    assert_eq!(offset_of!(FB_DECOUPLE, stPrivate) % 8, 0);
-    assert_eq!(size_of::<FB_DECOUPLE>() % 8, 0);
+    offsets!(FB_DECOUPLE, base => {
+        bDecOut1: 8,
+        bDecOut2: 9,
+        bDecOut3: 10,
+        bDecOut4: 11,
+        bDecOut5: 12,
+        bDecOut6: 13,
+        bDecOut7: 14,
+        bDecOut8: 15,
+    });
+    offsets!(FB_DECOUPLE {
+        bRun: 16,
+        bErrAck: 17
+    });
+    aligned_tail!(FB_DECOUPLE);
 }
 
 /// D1: RUN "DcOutX=DcInX" in the same call; STOP "DcOutX=0".

@@ -6,12 +6,13 @@
 
 mod common;
 use common::state_name;
+use common::{aligned_tail, offsets};
 
 use proptest::prelude::*;
 use safelogic::ffi;
 use safelogic::group::{self, Member, SL_GROUP_DIAG_FBERROR};
 use safelogic::*;
-use std::mem::{offset_of, size_of};
+use std::mem::offset_of;
 
 const MON1: u16 = 1 << 0;
 const MON2: u16 = 1 << 1;
@@ -61,15 +62,16 @@ const MONOFF: u8 = SL_STATE_EDM_MONOFF;
 #[test]
 fn layout_states_and_diag_values() {
     // ABI §9: bMon1 (8), bMon2 (9), bError (+0).
-    assert_eq!(offset_of!(FB_EDM, bMon1), 8);
-    assert_eq!(offset_of!(FB_EDM, bMon2), 9);
-    assert_eq!(offset_of!(FB_EDM, bRun), 16);
-    assert_eq!(offset_of!(FB_EDM, bErrAck), 17);
+    offsets!(FB_EDM {
+        bMon1: 8,
+        bMon2: 9,
+        bRun: 16,
+        bErrAck: 17
+    });
     let base = offset_of!(FB_EDM, bError);
     assert_eq!(base % 8, 0);
     assert!(base >= offset_of!(FB_EDM, wInputNegated) + 2);
-    assert_eq!(offset_of!(FB_EDM, stPrivate) % 8, 0);
-    assert_eq!(size_of::<FB_EDM>() % 8, 0);
+    aligned_tail!(FB_EDM);
     // Manual §4.9.2: states 14 MONOFF, 15 MONON; diag bit 0 switch-OFF, bit 1 switch-ON.
     assert_eq!((MONOFF, MONON), (14, 15));
     assert_eq!((OFF, ON), (1 << 0, 1 << 1));

@@ -5,6 +5,7 @@
 //! EDM, Enable, the EL6910 options, configuration errors, invalid BOOLs, envelope errors.
 
 mod common;
+use common::{aligned_tail, offsets};
 
 use proptest::prelude::*;
 use safelogic::group::{self, Member};
@@ -196,22 +197,21 @@ fn abi_numbers() {
         SL_STATE_MUTING_MUTING9,
     ];
     assert_eq!(states, [9, 10, 11, 12, 13, 14, 15, 16, 17]);
-    assert_eq!(offset_of!(FB_MUTING, bMutingEnable), 0);
-    assert_eq!(offset_of!(FB_MUTING, bEDM1), 1);
-    assert_eq!(offset_of!(FB_MUTING, bEDM2), 2);
-    assert_eq!(offset_of!(FB_MUTING, bMutingIn1), 8);
-    assert_eq!(offset_of!(FB_MUTING, bMutingIn2), 9);
-    assert_eq!(offset_of!(FB_MUTING, bOSSDIn1), 10);
-    assert_eq!(offset_of!(FB_MUTING, bOSSDIn2), 11);
-    assert_eq!(offset_of!(FB_MUTING, bMutingIn3), 12);
-    assert_eq!(offset_of!(FB_MUTING, bMutingIn4), 13);
+    offsets!(FB_MUTING {
+        bMutingEnable: 0,
+        bEDM1: 1,
+        bEDM2: 2,
+        bMutingIn1: 8,
+        bMutingIn2: 9,
+        bOSSDIn1: 10,
+        bOSSDIn2: 11,
+        bMutingIn3: 12,
+        bMutingIn4: 13,
+    });
     let base = offset_of!(FB_MUTING, bError);
     assert_eq!(base % 8, 0);
-    assert_eq!(offset_of!(FB_MUTING, bMutingActive) - base, 1);
-    assert_eq!(offset_of!(FB_MUTING, bMuteOut) - base, 2);
-    assert_eq!(offset_of!(FB_MUTING, bMuteDelOut) - base, 3);
-    assert_eq!(offset_of!(FB_MUTING, stPrivate) % 8, 0);
-    assert_eq!(std::mem::size_of::<FB_MUTING>() % 8, 0);
+    offsets!(FB_MUTING, base => { bMutingActive: 1, bMuteOut: 2, bMuteDelOut: 3 });
+    aligned_tail!(FB_MUTING);
     assert!(std::mem::size_of::<SL_MUTING_PRIVATE>() <= 96);
 }
 

@@ -4,6 +4,7 @@
 //! property tests. Expected values come from the manual, the ABI and semantics.md.
 
 mod common;
+use common::{aligned_tail, offsets};
 
 use proptest::prelude::*;
 use safelogic::group::{self, Member};
@@ -93,17 +94,17 @@ fn assert_error(b: &FB_OPMODE, diag: u16) {
 #[test]
 fn layout_matches_the_abi() {
     // ABI §9: inputs at the manual's offsets, outputs at base + 0 and + 8 … + 15.
-    assert_eq!(offset_of!(FB_OPMODE, bRestart), 0);
-    assert_eq!(offset_of!(FB_OPMODE, bOpIn1), 8);
-    assert_eq!(offset_of!(FB_OPMODE, bOpIn8), 15);
-    assert_eq!(offset_of!(FB_OPMODE, bRun), 16);
-    assert_eq!(offset_of!(FB_OPMODE, bErrAck), 17);
+    offsets!(FB_OPMODE {
+        bRestart: 0,
+        bOpIn1: 8,
+        bOpIn8: 15,
+        bRun: 16,
+        bErrAck: 17
+    });
     let base = offset_of!(FB_OPMODE, bError);
     assert_eq!(base % 8, 0);
-    assert_eq!(offset_of!(FB_OPMODE, bOpOut1) - base, 8);
-    assert_eq!(offset_of!(FB_OPMODE, bOpOut8) - base, 15);
-    assert_eq!(offset_of!(FB_OPMODE, stPrivate) % 8, 0);
-    assert_eq!(size_of::<FB_OPMODE>() % 8, 0);
+    offsets!(FB_OPMODE, base => { bOpOut1: 8, bOpOut8: 15 });
+    aligned_tail!(FB_OPMODE);
     assert!(size_of::<SL_OPMODE_PRIVATE>() <= 64);
     assert_eq!(SL_TYPE_OPMODE, 7);
 }

@@ -4,6 +4,7 @@
 //! STOP switching off at once.
 
 mod common;
+use common::{aligned_tail, offsets};
 
 use proptest::prelude::*;
 use safelogic::base::member::Member;
@@ -41,12 +42,13 @@ fn st(f: &FB_TOF) -> (u8, u8) {
 
 #[test]
 fn layout_matches_the_abi() {
-    assert_eq!(offset_of!(FB_TOF, bTofIn1), 8);
-    assert_eq!(offset_of!(FB_TOF, bRun), 16);
-    assert_eq!(offset_of!(FB_TOF, bErrAck), 17);
+    offsets!(FB_TOF {
+        bTofIn1: 8,
+        bRun: 16,
+        bErrAck: 17
+    });
     assert_eq!(offset_of!(FB_TOF, bTofOut) % 8, 1, "output base + 1");
-    assert_eq!(std::mem::size_of::<FB_TOF>() % 8, 0);
-    assert_eq!(offset_of!(FB_TOF, stPrivate) % 8, 0);
+    aligned_tail!(FB_TOF);
 }
 
 #[test]

@@ -3,6 +3,7 @@
 //! validation, wrapping time, clock errors, parameter changes, invalid BOOLs, corruption.
 
 mod common;
+use common::{aligned_tail, offsets};
 
 use proptest::prelude::*;
 use safelogic::base::member::Member;
@@ -39,13 +40,14 @@ fn st(f: &FB_TON) -> (u8, u8) {
 
 #[test]
 fn layout_matches_the_abi() {
-    assert_eq!(offset_of!(FB_TON, bTonIn1), 8);
-    assert_eq!(offset_of!(FB_TON, bRun), 16);
-    assert_eq!(offset_of!(FB_TON, bErrAck), 17);
+    offsets!(FB_TON {
+        bTonIn1: 8,
+        bRun: 16,
+        bErrAck: 17
+    });
     assert_eq!(offset_of!(FB_TON, bTonOut) % 8, 1, "output base + 1");
-    assert_eq!(std::mem::size_of::<FB_TON>() % 8, 0);
+    aligned_tail!(FB_TON);
     assert!(std::mem::size_of::<SL_TIMER_PRIVATE>() <= 64);
-    assert_eq!(offset_of!(FB_TON, stPrivate) % 8, 0);
 }
 
 #[test]

@@ -4,6 +4,7 @@
 //! bit 12), restore sequencing and the integrity checks of the stored value.
 
 mod common;
+use common::{aligned_tail, offsets};
 
 use proptest::prelude::*;
 use safelogic::base::member::Member;
@@ -47,13 +48,14 @@ fn cyc(f: &mut FB_TON2, t: u32) -> i32 {
 
 #[test]
 fn layout_matches_the_abi() {
-    assert_eq!(offset_of!(FB_TON2, bTonIn1), 8);
-    assert_eq!(offset_of!(FB_TON2, bEnable), 9);
-    assert_eq!(offset_of!(FB_TON2, bRun), 16);
-    assert_eq!(offset_of!(FB_TON2, bErrAck), 17);
+    offsets!(FB_TON2 {
+        bTonIn1: 8,
+        bEnable: 9,
+        bRun: 16,
+        bErrAck: 17
+    });
     assert_eq!(offset_of!(FB_TON2, bTonOut) % 8, 1, "output base + 1");
-    assert_eq!(std::mem::size_of::<FB_TON2>() % 8, 0);
-    assert_eq!(offset_of!(FB_TON2, stPrivate) % 8, 0);
+    aligned_tail!(FB_TON2);
     assert_eq!(SL_OPT_TON2_REMAINING_TIME, 1 << 8);
     assert_eq!((SL_TYPE_TON2, SL_E_RESTORE), (14, -10));
     assert_eq!(SL_DIAG_TON2_RESTORE, 1 << 12);

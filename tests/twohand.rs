@@ -5,6 +5,7 @@
 //! Expected values come from the manual, the ABI and semantics.md.
 
 mod common;
+use common::{aligned_tail, offsets};
 
 use proptest::prelude::*;
 use safelogic::group::{self, Member};
@@ -100,15 +101,16 @@ fn assert_error(b: &FB_TWOHAND, diag: u16) {
 
 #[test]
 fn layout_matches_the_abi() {
-    assert_eq!(offset_of!(FB_TWOHAND, bTwoHand1), 8);
-    assert_eq!(offset_of!(FB_TWOHAND, bTwoHand4), 11);
-    assert_eq!(offset_of!(FB_TWOHAND, bRun), 16);
-    assert_eq!(offset_of!(FB_TWOHAND, bErrAck), 17);
+    offsets!(FB_TWOHAND {
+        bTwoHand1: 8,
+        bTwoHand4: 11,
+        bRun: 16,
+        bErrAck: 17
+    });
     let base = offset_of!(FB_TWOHAND, bError);
     assert_eq!(base % 8, 0);
-    assert_eq!(offset_of!(FB_TWOHAND, bTwoHandOut) - base, 1);
-    assert_eq!(offset_of!(FB_TWOHAND, stPrivate) % 8, 0);
-    assert_eq!(size_of::<FB_TWOHAND>() % 8, 0);
+    offsets!(FB_TWOHAND, base => { bTwoHandOut: 1 });
+    aligned_tail!(FB_TWOHAND);
     assert!(size_of::<SL_TWOHAND_PRIVATE>() <= 64);
     assert_eq!(SL_TYPE_TWOHAND, 8);
     assert_eq!((ONE, TWO, REL), (11, 12, 13));

@@ -4,12 +4,13 @@
 
 mod common;
 use common::state_name;
+use common::{aligned_tail, offsets};
 
 use proptest::prelude::*;
 use safelogic::ffi;
 use safelogic::group::{self, Member};
 use safelogic::*;
-use std::mem::{offset_of, size_of};
+use std::mem::offset_of;
 
 fn xor(active: u16) -> FB_XOR {
     let mut x = FB_XOR {
@@ -51,34 +52,30 @@ fn outs(x: &FB_XOR) -> [u8; 8] {
 #[test]
 fn layout_is_the_abi() {
     // ABI §9: bXor1In1 (0), bXor2In1 (1), bXor1In2 (2) … bXor2In8 (15); outputs at +8…+15.
-    assert_eq!(offset_of!(FB_XOR, bXor1In1), 0);
-    assert_eq!(offset_of!(FB_XOR, bXor2In1), 1);
-    assert_eq!(offset_of!(FB_XOR, bXor1In2), 2);
-    assert_eq!(offset_of!(FB_XOR, bXor2In2), 3);
-    assert_eq!(offset_of!(FB_XOR, bXor1In5), 8);
-    assert_eq!(offset_of!(FB_XOR, bXor1In8), 14);
-    assert_eq!(offset_of!(FB_XOR, bXor2In8), 15);
-    assert_eq!(offset_of!(FB_XOR, bRun), 16);
-    assert_eq!(offset_of!(FB_XOR, bErrAck), 17);
+    offsets!(FB_XOR {
+        bXor1In1: 0,
+        bXor2In1: 1,
+        bXor1In2: 2,
+        bXor2In2: 3,
+        bXor1In5: 8,
+        bXor1In8: 14,
+        bXor2In8: 15,
+        bRun: 16,
+        bErrAck: 17,
+    });
     let base = 24;
     assert_eq!(base % 8, 0);
-    for (k, off) in [
-        offset_of!(FB_XOR, bXorOut1),
-        offset_of!(FB_XOR, bXorOut2),
-        offset_of!(FB_XOR, bXorOut3),
-        offset_of!(FB_XOR, bXorOut4),
-        offset_of!(FB_XOR, bXorOut5),
-        offset_of!(FB_XOR, bXorOut6),
-        offset_of!(FB_XOR, bXorOut7),
-        offset_of!(FB_XOR, bXorOut8),
-    ]
-    .into_iter()
-    .enumerate()
-    {
-        assert_eq!(off, base + 8 + k, "bXorOut{}", k + 1);
-    }
-    assert_eq!(offset_of!(FB_XOR, stPrivate) % 8, 0);
-    assert_eq!(size_of::<FB_XOR>() % 8, 0);
+    offsets!(FB_XOR, base => {
+        bXorOut1: 8,
+        bXorOut2: 9,
+        bXorOut3: 10,
+        bXorOut4: 11,
+        bXorOut5: 12,
+        bXorOut6: 13,
+        bXorOut7: 14,
+        bXorOut8: 15,
+    });
+    aligned_tail!(FB_XOR);
 }
 
 #[test]

@@ -441,6 +441,42 @@ macro_rules! property {
 #[allow(unused_imports)]
 pub(crate) use property;
 
+/// ABI §9 layout: `offsets!(FB_X { bIn1: 8, bRun: 16 })` asserts each field at its offset;
+/// `offsets!(FB_X, base => { bOut: 1 })` each field at its distance from `base`. A failure
+/// names the block and the field.
+// Every test crate includes this module; not all of them check a layout.
+#[allow(unused_macros)]
+macro_rules! offsets {
+    ($t:ty { $($f:ident: $n:expr),* $(,)? }) => {
+        $(assert_eq!(
+            std::mem::offset_of!($t, $f),
+            $n,
+            concat!(stringify!($t), ".", stringify!($f))
+        );)*
+    };
+    ($t:ty, $base:expr => { $($f:ident: $n:expr),* $(,)? }) => {
+        $(assert_eq!(
+            std::mem::offset_of!($t, $f) - $base,
+            $n,
+            concat!(stringify!($t), ".", stringify!($f), " from the output base")
+        );)*
+    };
+}
+#[allow(unused_imports)]
+pub(crate) use offsets;
+
+/// ABI §9: the private state `stPrivate` and the block's size are multiples of 8 bytes.
+// Every test crate includes this module; not all of them check a layout.
+#[allow(unused_macros)]
+macro_rules! aligned_tail {
+    ($t:ty) => {
+        assert_eq!(std::mem::offset_of!($t, stPrivate) % 8, 0, stringify!($t));
+        assert_eq!(std::mem::size_of::<$t>() % 8, 0, stringify!($t));
+    };
+}
+#[allow(unused_imports)]
+pub(crate) use aligned_tail;
+
 /// The states recorded since the last call, and a fresh start.
 pub fn reached_reset() -> u64 {
     REACHED.with(|r| r.replace(0))
