@@ -682,11 +682,10 @@ fn rust_members_slice_with_a_connection() {
     use safelogic::group::{self, Member};
     let mut m = conn(SL_FSOE_ROLE_MASTER);
     assert_eq!(fsoe::conn::init(&mut m), Status::Ok);
-    let mut e = FB_ESTOP {
+    let mut e = common::ready(FB_ESTOP {
         wInputActive: 0b11,
         ..Default::default()
-    };
-    assert_eq!(e.init(), SL_OK);
+    });
     let mut g = SL_GROUP {
         bRun: 1,
         ..Default::default()

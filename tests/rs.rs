@@ -21,13 +21,11 @@ const RESET: u16 = 1 << 0;
 const SET: u16 = 1 << 1;
 
 fn rs(active: u16, negated: u16) -> FB_RS {
-    let mut b = FB_RS {
+    common::ready(FB_RS {
         wInputActive: active,
         wInputNegated: negated,
         ..Default::default()
-    };
-    assert_eq!(b.init(), SL_OK);
-    b
+    })
 }
 
 /// A running RS with both inputs active (break contacts).

@@ -21,13 +21,11 @@ const RESET: u16 = 1 << 0;
 const SET: u16 = 1 << 1;
 
 fn sr(active: u16, negated: u16) -> FB_SR {
-    let mut b = FB_SR {
+    common::ready(FB_SR {
         wInputActive: active,
         wInputNegated: negated,
         ..Default::default()
-    };
-    assert_eq!(b.init(), SL_OK);
-    b
+    })
 }
 
 /// A running RS with both inputs active (break contacts).
