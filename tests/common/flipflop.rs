@@ -198,3 +198,29 @@ macro_rules! flipflop_shared_tests {
         }
     };
 }
+
+/// A row of a flip-flop step table: the Run, Reset and Set bytes, the status, the state and
+/// the output (`None`: not checked in this row), and what the row shows.
+pub type Step = (u8, u8, u8, i32, Option<u8>, Option<u8>, &'static str);
+
+/// One call of a step table: (Run, Reset, Set) written, the call at a time, and its status
+/// with (state, output).
+pub type Io<B> = fn(&mut B, [u8; 3], u32) -> (i32, u8, u8);
+
+/// Runs a flip-flop step table, each call 10 ms after the last: `io` writes (Run, Reset,
+/// Set) into the block and returns its (state, output) after the call at `t`. A failure
+/// names the row and its note.
+#[track_caller]
+pub fn walk<B>(b: &mut B, t: &mut u32, io: Io<B>, rows: &[Step]) {
+    for (k, &(run, reset, set, rc, state, out, note)) in rows.iter().enumerate() {
+        *t += 10;
+        let (got, s, o) = io(b, [run, reset, set], *t);
+        assert_eq!(got, rc, "row {k} (t {t}): status; {note}");
+        if let Some(state) = state {
+            assert_eq!(s, state, "row {k} (t {t}): state; {note}");
+        }
+        if let Some(out) = out {
+            assert_eq!(o, out, "row {k} (t {t}): output; {note}");
+        }
+    }
+}
