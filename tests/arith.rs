@@ -236,15 +236,14 @@ variant_tests! {
 #[test]
 fn rounding_of_positive_and_negative_quotients() {
     let q = |a: i16, b: i16, r: u16| {
-        let mut fb = FB_DIV_INT {
+        let mut fb = common::ready(FB_DIV_INT {
             wInputActive: ACTIVE,
             nRounding: r,
             nAnalogIn1: a,
             nAnalogIn2: b,
             bRun: 1,
             ..Default::default()
-        };
-        assert_eq!(fb.init(), SL_OK);
+        });
         fb.cycle(0);
         fb.nAnalogOut
     };
@@ -261,14 +260,13 @@ fn rounding_of_positive_and_negative_quotients() {
 /// MIN ÷ −1 is DIV's only overflow.
 #[test]
 fn min_divided_by_minus_one_overflows() {
-    let mut fb = FB_DIV_DINT {
+    let mut fb = common::ready(FB_DIV_DINT {
         wInputActive: ACTIVE,
         nAnalogIn1: i32::MIN,
         nAnalogIn2: -1,
         bRun: 1,
         ..Default::default()
-    };
-    assert_eq!(fb.init(), SL_OK);
+    });
     fb.cycle(0);
     assert_eq!(
         (fb.nState, fb.nDiag, fb.nDiagTextId),
@@ -281,14 +279,13 @@ fn min_divided_by_minus_one_overflows() {
 /// SUB on an unsigned type: a negative difference is an underflow.
 #[test]
 fn unsigned_sub_below_zero_is_an_underflow() {
-    let mut fb = FB_SUB_UINT {
+    let mut fb = common::ready(FB_SUB_UINT {
         wInputActive: ACTIVE,
         nAnalogIn1: 3,
         nAnalogIn2: 4,
         bRun: 1,
         ..Default::default()
-    };
-    assert_eq!(fb.init(), SL_OK);
+    });
     fb.cycle(0);
     assert_eq!(
         (fb.nState, fb.nDiag, fb.nDiagTextId),
@@ -317,14 +314,13 @@ fn diag_text_of_a_value() {
 /// A parameter changed while running is SL_E_PARAM_CHANGED as for every block (C5).
 #[test]
 fn parameter_change_while_running() {
-    let mut fb = FB_DIV_UINT {
+    let mut fb = common::ready(FB_DIV_UINT {
         wInputActive: ACTIVE,
         nAnalogIn1: 9,
         nAnalogIn2: 2,
         bRun: 1,
         ..Default::default()
-    };
-    assert_eq!(fb.init(), SL_OK);
+    });
     assert_eq!(fb.cycle(0), SL_OK);
     assert_eq!(fb.nAnalogOut, 4);
     fb.nRounding = SL_ROUNDING_CEIL;

@@ -41,12 +41,7 @@ macro_rules! compare_tests {
             use super::*;
 
             type Fb = $ty;
-            const LO: i128 = <$t as Analog>::MIN;
-            const HI: i128 = <$t as Analog>::MAX;
-
-            fn t(v: i128) -> $t {
-                <$t as Analog>::narrow(v.clamp(LO, HI))
-            }
+            crate::common::analog_bounds!($t);
 
             fn new(arch: u16, dev: u32, tol: u32) -> Fb {
                 let mut fb = Fb::default();

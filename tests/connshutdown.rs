@@ -3,22 +3,28 @@
 //! bit 0), invalid bytes, parameters. Its wiring to a connection in a group:
 //! tests/fsoe_group.rs.
 
+mod common;
+use common::run_steps;
 use safelogic::*;
 
-fn block(active: u16, negated: u16, disc: u32) -> FB_CONNECTION_SHUTDOWN {
-    let mut b = FB_CONNECTION_SHUTDOWN {
-        nConnectionId: 7,
-        wInputActive: active,
-        wInputNegated: negated,
-        tDiscTime12: disc,
-        ..Default::default()
-    };
-    assert_eq!(b.init(), SL_OK);
-    b.bRun = 1;
-    b
+type Fb = FB_CONNECTION_SHUTDOWN;
+
+/// Connection ID 7, running (bRun TRUE).
+fn block(active: u16, negated: u16, disc: u32) -> Fb {
+    Fb {
+        bRun: 1,
+        ..common::ready(Fb {
+            nConnectionId: 7,
+            wInputActive: active,
+            wInputNegated: negated,
+            tDiscTime12: disc,
+            ..Default::default()
+        })
+    }
 }
 
-fn outs(b: &FB_CONNECTION_SHUTDOWN) -> (u8, u8, u8, u8, u16) {
+/// (nState, bError, bDeactivated, bShutdownRequest, nDiag).
+fn outs(b: &Fb) -> (u8, u8, u8, u8, u16) {
     (
         b.nState,
         b.bError,
@@ -62,68 +68,54 @@ fn parameters() {
 fn stop_safe_run_and_the_request() {
     let mut b = block(0b01, 0, 0);
     b.bRun = 0;
-    assert_eq!(b.cycle(0), SL_OK);
-    assert_eq!(outs(&b), (SL_STATE_STOP, 0, 0, 0, 0));
+    const STOP: (u8, u8, u8, u8, u16) = (SL_STATE_STOP, 0, 0, 0, 0);
+    #[rustfmt::skip]
+    run_steps("STOP, SAFE", &mut b, outs, &[
+        (0, |_| {}, SL_OK, Some(STOP), ""),
+    ]);
     assert_eq!(b.state_name(), "STOP");
-    b.bDeactivate1 = 1;
-    assert_eq!(b.cycle(10), SL_OK);
-    assert_eq!(outs(&b), (SL_STATE_STOP, 0, 0, 0, 0), "no request in STOP");
-    b.bRun = 1;
-    assert_eq!(b.cycle(20), SL_OK);
-    assert_eq!(
-        outs(&b),
-        (SL_STATE_SAFE, 0, 0, 1, 0),
-        "SAFE with the request"
-    );
-    // RUN only once the connection reports its shutdown (CS1).
-    b.bConnShutdown = 1;
-    assert_eq!(b.cycle(30), SL_OK);
-    assert_eq!(outs(&b), (SL_STATE_RUN, 0, 1, 1, 0));
+    #[rustfmt::skip]
+    run_steps("SAFE, RUN", &mut b, outs, &[
+        (10, |b| b.bDeactivate1 = 1, SL_OK, Some(STOP), "no request in STOP"),
+        (20, |b| b.bRun = 1, SL_OK, Some((SL_STATE_SAFE, 0, 0, 1, 0)), "SAFE with the request"),
+        // RUN only once the connection reports its shutdown (CS1).
+        (30, |b| b.bConnShutdown = 1, SL_OK, Some((SL_STATE_RUN, 0, 1, 1, 0)), ""),
+    ]);
     assert_eq!(b.state_name(), "RUN");
-    // Request released: RUN until the connection is back in DATA (bConnShutdown FALSE).
-    b.bDeactivate1 = 0;
-    assert_eq!(b.cycle(40), SL_OK);
-    assert_eq!(outs(&b), (SL_STATE_RUN, 0, 1, 0, 0));
-    b.bConnShutdown = 0;
-    assert_eq!(b.cycle(50), SL_OK);
-    assert_eq!(outs(&b), (SL_STATE_SAFE, 0, 0, 0, 0));
-    // bRun FALSE in RUN: STOP, every output FALSE.
-    b.bConnShutdown = 1;
-    b.bDeactivate1 = 1;
-    assert_eq!(b.cycle(60), SL_OK);
+    #[rustfmt::skip]
+    run_steps("release, STOP", &mut b, outs, &[
+        // Request released: RUN until the connection is back in DATA (bConnShutdown FALSE).
+        (40, |b| b.bDeactivate1 = 0, SL_OK, Some((SL_STATE_RUN, 0, 1, 0, 0)), ""),
+        (50, |b| b.bConnShutdown = 0, SL_OK, Some((SL_STATE_SAFE, 0, 0, 0, 0)), ""),
+        // bRun FALSE in RUN: STOP, every output FALSE.
+        (60, |b| (b.bConnShutdown, b.bDeactivate1) = (1, 1), SL_OK, None, "RUN, below"),
+    ]);
     assert_eq!(b.nState, SL_STATE_RUN);
-    b.bRun = 0;
-    assert_eq!(b.cycle(70), SL_OK);
-    assert_eq!(outs(&b), (SL_STATE_STOP, 0, 0, 0, 0));
-    // Started with the connection already shut down: RUN at once.
-    b.bRun = 1;
-    assert_eq!(b.cycle(80), SL_OK);
-    assert_eq!(outs(&b), (SL_STATE_RUN, 0, 1, 1, 0));
+    #[rustfmt::skip]
+    run_steps("STOP, start", &mut b, outs, &[
+        (70, |b| b.bRun = 0, SL_OK, Some(STOP), ""),
+        // Started with the connection already shut down: RUN at once.
+        (80, |b| b.bRun = 1, SL_OK, Some((SL_STATE_RUN, 0, 1, 1, 0)), ""),
+    ]);
 }
 
 #[test]
 fn every_active_input_must_request_and_negation() {
     let mut b = block(0b11, 0b10, 0);
     // Input 2 negated: its logical value is TRUE when the byte is 0.
-    b.bDeactivate1 = 1;
-    b.bDeactivate2 = 1;
-    assert_eq!(b.cycle(0), SL_OK);
-    assert_eq!(b.bShutdownRequest, 0);
-    b.bDeactivate2 = 0;
-    assert_eq!(b.cycle(10), SL_OK);
-    assert_eq!(b.bShutdownRequest, 1);
-    b.bDeactivate1 = 0;
-    assert_eq!(b.cycle(20), SL_OK);
-    assert_eq!(b.bShutdownRequest, 0);
+    #[rustfmt::skip]
+    run_steps("negated input 2", &mut b, |b| b.bShutdownRequest, &[
+        (0, |b| (b.bDeactivate1, b.bDeactivate2) = (1, 1), SL_OK, Some(0), ""),
+        (10, |b| b.bDeactivate2 = 0, SL_OK, Some(1), ""),
+        (20, |b| b.bDeactivate1 = 0, SL_OK, Some(0), ""),
+    ]);
     // No active input: never a request; a partner's shutdown still gives RUN (CS4).
     let mut p = block(0, 0, 0);
-    p.bDeactivate1 = 1;
-    p.bDeactivate2 = 1;
-    assert_eq!(p.cycle(0), SL_OK);
-    assert_eq!(outs(&p), (SL_STATE_SAFE, 0, 0, 0, 0));
-    p.bConnShutdown = 1;
-    assert_eq!(p.cycle(10), SL_OK);
-    assert_eq!(outs(&p), (SL_STATE_RUN, 0, 1, 0, 0));
+    #[rustfmt::skip]
+    run_steps("no active input", &mut p, outs, &[
+        (0, |b| (b.bDeactivate1, b.bDeactivate2) = (1, 1), SL_OK, Some((SL_STATE_SAFE, 0, 0, 0, 0)), ""),
+        (10, |b| b.bConnShutdown = 1, SL_OK, Some((SL_STATE_RUN, 0, 1, 0, 0)), ""),
+    ]);
 }
 
 #[test]
@@ -150,54 +142,47 @@ fn invalid_bytes_read_as_no_shutdown() {
 #[test]
 fn discrepancy_error_reset_and_acknowledgement() {
     let mut b = block(0b11, 0, 100);
-    assert_eq!(b.cycle(0), SL_OK);
-    b.bDeactivate1 = 1;
-    assert_eq!(b.cycle(10), SL_OK);
-    assert_eq!(b.cycle(109), SL_OK);
-    assert_eq!(b.nState, SL_STATE_SAFE);
-    assert_eq!(b.bShutdownRequest, 0, "one of the pair only: no request");
-    assert_eq!(b.cycle(110), SL_OK);
-    assert_eq!(outs(&b), (SL_STATE_ERROR, 1, 0, 0, SL_DIAG_DISC1));
+    let state_request = |b: &Fb| (b.nState, b.bShutdownRequest);
+    #[rustfmt::skip]
+    run_steps("one of the pair", &mut b, state_request, &[
+        (0, |_| {}, SL_OK, None, ""),
+        (10, |b| b.bDeactivate1 = 1, SL_OK, None, ""),
+        (109, |_| {}, SL_OK, Some((SL_STATE_SAFE, 0)), "one of the pair only: no request"),
+    ]);
+    #[rustfmt::skip]
+    run_steps("discrepancy", &mut b, outs, &[
+        (110, |_| {}, SL_OK, Some((SL_STATE_ERROR, 1, 0, 0, SL_DIAG_DISC1)), ""),
+    ]);
     assert_eq!(b.state_name(), "ERROR");
-    let mut text = [0 as core::ffi::c_char; 64];
-    // SAFETY: a 64-byte buffer.
-    let rc = unsafe {
-        safelogic::ffi::sl_diag_text(SL_TYPE_CONNECTION_SHUTDOWN, b.nDiag, text.as_mut_ptr(), 64)
-    };
-    assert_eq!(rc, SL_OK);
-    // SAFETY: NUL-terminated by sl_diag_text.
-    let s = unsafe { core::ffi::CStr::from_ptr(text.as_ptr()) };
-    assert_eq!(s.to_str().unwrap(), "discrepancy error input group 1");
-    // ErrAck while the pair still differs: stays in ERROR (CS6).
-    b.bErrAck = 1;
-    assert_eq!(b.cycle(120), SL_OK);
-    b.bErrAck = 0;
-    assert_eq!(b.cycle(130), SL_OK);
-    assert_eq!(b.nState, SL_STATE_ERROR);
-    // Agreeing again, then ErrAck: RESET, and SAFE after its falling edge.
-    b.bDeactivate2 = 1;
-    b.bConnShutdown = 1;
-    assert_eq!(b.cycle(140), SL_OK);
-    assert_eq!(b.bShutdownRequest, 0, "no request in ERROR");
-    b.bErrAck = 1;
-    assert_eq!(b.cycle(150), SL_OK);
-    assert_eq!(outs(&b), (SL_STATE_RESET, 0, 0, 0, 0));
+    assert_eq!(
+        common::diag_text(SL_TYPE_CONNECTION_SHUTDOWN, b.nDiag),
+        "discrepancy error input group 1"
+    );
+    #[rustfmt::skip]
+    run_steps("ErrAck", &mut b, |b| b.nState, &[
+        // ErrAck while the pair still differs: stays in ERROR (CS6).
+        (120, |b| b.bErrAck = 1, SL_OK, None, ""),
+        (130, |b| b.bErrAck = 0, SL_OK, Some(SL_STATE_ERROR), ""),
+    ]);
+    #[rustfmt::skip]
+    run_steps("agreeing", &mut b, |b| b.bShutdownRequest, &[
+        // Agreeing again, then ErrAck: RESET, and SAFE after its falling edge.
+        (140, |b| (b.bDeactivate2, b.bConnShutdown) = (1, 1), SL_OK, Some(0), "no request in ERROR"),
+    ]);
+    #[rustfmt::skip]
+    run_steps("RESET", &mut b, outs, &[
+        (150, |b| b.bErrAck = 1, SL_OK, Some((SL_STATE_RESET, 0, 0, 0, 0)), ""),
+    ]);
     assert_eq!(b.state_name(), "RESET");
-    b.bErrAck = 0;
-    assert_eq!(b.cycle(160), SL_OK);
-    assert_eq!(outs(&b), (SL_STATE_RUN, 0, 1, 1, 0));
-    // Back to SAFE when both are released and the connection is in DATA again.
-    b.bDeactivate1 = 0;
-    b.bDeactivate2 = 0;
-    b.bConnShutdown = 0;
-    assert_eq!(b.cycle(170), SL_OK);
-    assert_eq!(outs(&b), (SL_STATE_SAFE, 0, 0, 0, 0));
-    // A pair that differs shorter than the time: no error.
-    b.bDeactivate1 = 1;
-    assert_eq!(b.cycle(180), SL_OK);
-    b.bDeactivate2 = 1;
-    assert_eq!(b.cycle(279), SL_OK);
-    assert_eq!(outs(&b), (SL_STATE_SAFE, 0, 0, 1, 0));
+    #[rustfmt::skip]
+    run_steps("acknowledged", &mut b, outs, &[
+        (160, |b| b.bErrAck = 0, SL_OK, Some((SL_STATE_RUN, 0, 1, 1, 0)), ""),
+        // Back to SAFE when both are released and the connection is in DATA again.
+        (170, |b| (b.bDeactivate1, b.bDeactivate2, b.bConnShutdown) = (0, 0, 0), SL_OK, Some((SL_STATE_SAFE, 0, 0, 0, 0)), ""),
+        // A pair that differs shorter than the time: no error.
+        (180, |b| b.bDeactivate1 = 1, SL_OK, None, ""),
+        (279, |b| b.bDeactivate2 = 1, SL_OK, Some((SL_STATE_SAFE, 0, 0, 1, 0)), ""),
+    ]);
 }
 
 #[test]

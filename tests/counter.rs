@@ -29,12 +29,8 @@ macro_rules! counter_tests {
             use super::*;
 
             type Fb = $ty;
-            const LO: i128 = <$t as Analog>::MIN;
-            const HI: i128 = <$t as Analog>::MAX;
+            crate::common::analog_bounds!($t);
 
-            fn t(v: i128) -> $t {
-                <$t as Analog>::narrow(v.clamp(LO, HI))
-            }
             fn pattern(v: i128) -> u32 {
                 t(v) as i64 as u32
             }
@@ -462,13 +458,12 @@ counter_tests!(udint, FB_COUNTER_UDINT, u32);
 /// the block (RESET → RUN needs no new latch): ERROR with diag bit 15, outputs FALSE.
 #[test]
 fn corrupted_latched_copy_is_found_when_the_acknowledgement_restarts() {
-    let mut fb = FB_COUNTER_INT {
+    let mut fb = common::ready(FB_COUNTER_INT {
         wInputActive: ALL,
         nPresetValue: 5,
         nCounterLimit: 10,
         ..Default::default()
-    };
-    assert_eq!(fb.init(), SL_OK);
+    });
     fb.bRun = 1;
     assert_eq!(fb.cycle(100), SL_OK);
     assert_eq!(fb.nState, SL_STATE_RUN);

@@ -4,20 +4,19 @@
 
 mod common;
 use common::state_name;
+use common::{aligned_tail, null_refused, offsets, run_steps};
 
 use proptest::prelude::*;
 use safelogic::ffi;
 use safelogic::group::{self, Member, SL_GROUP_DIAG_COMERROR};
 use safelogic::*;
-use std::mem::{offset_of, size_of};
+use std::mem::offset_of;
 
 fn dec(active: u16) -> FB_DECOUPLE {
-    let mut d = FB_DECOUPLE {
+    common::ready(FB_DECOUPLE {
         wInputActive: active,
         ..Default::default()
-    };
-    assert_eq!(d.init(), SL_OK);
-    d
+    })
 }
 
 fn set_ins(d: &mut FB_DECOUPLE, v: [u8; 8]) {
@@ -36,35 +35,29 @@ fn outs(d: &FB_DECOUPLE) -> [u8; 8] {
 #[test]
 fn layout_is_the_abi() {
     // ABI §9: bDecIn1…bDecIn8 (8…15), bDecOut1…bDecOut8 (+8…+15).
-    let ins = [
-        offset_of!(FB_DECOUPLE, bDecIn1),
-        offset_of!(FB_DECOUPLE, bDecIn2),
-        offset_of!(FB_DECOUPLE, bDecIn3),
-        offset_of!(FB_DECOUPLE, bDecIn4),
-        offset_of!(FB_DECOUPLE, bDecIn5),
-        offset_of!(FB_DECOUPLE, bDecIn6),
-        offset_of!(FB_DECOUPLE, bDecIn7),
-        offset_of!(FB_DECOUPLE, bDecIn8),
-    ];
-    let outs = [
-        offset_of!(FB_DECOUPLE, bDecOut1),
-        offset_of!(FB_DECOUPLE, bDecOut2),
-        offset_of!(FB_DECOUPLE, bDecOut3),
-        offset_of!(FB_DECOUPLE, bDecOut4),
-        offset_of!(FB_DECOUPLE, bDecOut5),
-        offset_of!(FB_DECOUPLE, bDecOut6),
-        offset_of!(FB_DECOUPLE, bDecOut7),
-        offset_of!(FB_DECOUPLE, bDecOut8),
-    ];
+    offsets!(FB_DECOUPLE;
+        bDecIn1 => 8,
+        bDecIn2 => 9,
+        bDecIn3 => 10,
+        bDecIn4 => 11,
+        bDecIn5 => 12,
+        bDecIn6 => 13,
+        bDecIn7 => 14,
+        bDecIn8 => 15,
+    );
     let base = 24;
-    for k in 0..8 {
-        assert_eq!(ins[k], 8 + k);
-        assert_eq!(outs[k], base + 8 + k);
-    }
-    assert_eq!(offset_of!(FB_DECOUPLE, bRun), 16);
-    assert_eq!(offset_of!(FB_DECOUPLE, bErrAck), 17);
-    assert_eq!(offset_of!(FB_DECOUPLE, stPrivate) % 8, 0);
-    assert_eq!(size_of::<FB_DECOUPLE>() % 8, 0);
+    offsets!(FB_DECOUPLE, from base;
+        bDecOut1 => 8,
+        bDecOut2 => 9,
+        bDecOut3 => 10,
+        bDecOut4 => 11,
+        bDecOut5 => 12,
+        bDecOut6 => 13,
+        bDecOut7 => 14,
+        bDecOut8 => 15,
+    );
+    offsets!(FB_DECOUPLE; bRun => 16, bErrAck => 17);
+    aligned_tail!(FB_DECOUPLE);
 }
 
 /// D1: RUN "DcOutX=DcInX" in the same call; STOP "DcOutX=0".
@@ -138,14 +131,15 @@ fn invalid_bool() {
 #[test]
 fn configuration_errors() {
     for active in [0u16, 0x100, 0x1FF] {
-        let mut d = FB_DECOUPLE {
-            wInputActive: active,
-            bRun: 1,
-            bDecIn1: 1,
-            ..Default::default()
-        };
-        assert_eq!(d.init(), SL_E_CONFIG);
-        assert_eq!(d.cycle(0), SL_E_CONFIG);
+        let d = common::refused(
+            FB_DECOUPLE {
+                wInputActive: active,
+                bRun: 1,
+                bDecIn1: 1,
+                ..Default::default()
+            },
+            &[0],
+        );
         assert_eq!((d.nState, outs(&d)), (SL_STATE_STOP, [0; 8]));
     }
     // A never-initialised instance latches at its first cycle (C2).
@@ -162,28 +156,21 @@ fn configuration_errors() {
 #[test]
 fn parameter_change_and_clock_errors() {
     let mut d = dec(0b1);
-    d.bRun = 1;
-    d.bDecIn1 = 1;
-    d.cycle(0);
-    assert_eq!(d.bDecOut1, 1);
-    d.wInputActive = 0b11;
-    assert_eq!(d.cycle(1), SL_E_PARAM_CHANGED);
-    assert_eq!(
-        (d.nState, d.nDiag, d.bDecOut1),
-        (SL_STATE_ERROR, SL_DIAG_PARAM_CHANGED, 0)
-    );
+    #[rustfmt::skip]
+    run_steps("changed", &mut d, |d| (d.nState, d.nDiag, d.bDecOut1), &[
+        (0, |d| (d.bRun, d.bDecIn1) = (1, 1), SL_OK, Some((SL_STATE_RUN, 0, 1)), ""),
+        (1, |d| d.wInputActive = 0b11, SL_E_PARAM_CHANGED, Some((SL_STATE_ERROR, SL_DIAG_PARAM_CHANGED, 0)), ""),
+    ]);
     // With Run FALSE the change is adopted at the next start (C5).
-    d.bRun = 0;
-    d.bErrAck = 1;
-    d.cycle(2);
-    assert_eq!(d.nState, SL_STATE_RESET);
-    d.bErrAck = 0;
-    d.cycle(3);
-    assert_eq!(d.nState, SL_STATE_STOP);
-    d.bRun = 1;
-    d.bDecIn2 = 1;
-    assert_eq!(d.cycle(4), SL_OK);
-    assert_eq!((d.nState, d.bDecOut1, d.bDecOut2), (SL_STATE_RUN, 1, 1));
+    #[rustfmt::skip]
+    run_steps("adopted", &mut d, |d| d.nState, &[
+        (2, |d| (d.bRun, d.bErrAck) = (0, 1), SL_OK, Some(SL_STATE_RESET), ""),
+        (3, |d| d.bErrAck = 0, SL_OK, Some(SL_STATE_STOP), ""),
+    ]);
+    #[rustfmt::skip]
+    run_steps("started", &mut d, |d| (d.nState, d.bDecOut1, d.bDecOut2), &[
+        (4, |d| (d.bRun, d.bDecIn2) = (1, 1), SL_OK, Some((SL_STATE_RUN, 1, 1)), ""),
+    ]);
     // Clock.
     assert_eq!(d.cycle(3), SL_E_CLOCK);
     assert_eq!(
@@ -200,14 +187,7 @@ fn parameter_change_and_clock_errors() {
 /// D5: a communication error of the group stops its members: DECOUPLE's outputs go FALSE.
 #[test]
 fn group_com_error_switches_decouple_off() {
-    assert_eq!(
-        unsafe { ffi::sl_decouple_init(std::ptr::null_mut()) },
-        SL_E_NULL
-    );
-    assert_eq!(
-        unsafe { ffi::sl_decouple_cycle(std::ptr::null_mut(), 0) },
-        SL_E_NULL
-    );
+    null_refused!(ffi::sl_decouple_init, ffi::sl_decouple_cycle);
     let mut d = FB_DECOUPLE {
         wInputActive: 0xFF,
         ..Default::default()
@@ -216,21 +196,13 @@ fn group_com_error_switches_decouple_off() {
     let mut g = SL_GROUP::default();
     let mut members = [SL_MEMBER::default(); 1];
     let mut links: [SL_LINK; 0] = [];
-    assert_eq!(
-        unsafe { ffi::sl_group_init(&mut g, members.as_mut_ptr(), 1, std::ptr::null_mut(), 0) },
-        SL_OK
-    );
-    assert_eq!(
-        unsafe {
-            ffi::sl_group_add_member(
-                &mut g,
-                members.as_mut_ptr(),
-                SL_TYPE_DECOUPLE,
-                std::ptr::addr_of_mut!(d).cast(),
-                std::ptr::null_mut(),
-            )
-        },
-        SL_OK
+    common::c_group_init(&mut g, (members.as_mut_ptr(), 1), (std::ptr::null_mut(), 0));
+    common::c_add_member(
+        &mut g,
+        members.as_mut_ptr(),
+        SL_TYPE_DECOUPLE,
+        std::ptr::addr_of_mut!(d).cast(),
+        std::ptr::null_mut(),
     );
     g.bRun = 1;
     set_ins(&mut d, [1; 8]);

@@ -6,12 +6,13 @@
 
 mod common;
 use common::state_name;
+use common::{aligned_tail, null_refused, offsets, output_base};
 
 use proptest::prelude::*;
 use safelogic::ffi;
 use safelogic::group::{self, Member, SL_GROUP_DIAG_FBERROR};
 use safelogic::*;
-use std::mem::{offset_of, size_of};
+use std::mem::offset_of;
 
 const MON1: u16 = 1 << 0;
 const MON2: u16 = 1 << 1;
@@ -20,15 +21,13 @@ const ON: u16 = SL_DIAG_EDM_SWITCH_ON;
 const OFF: u16 = SL_DIAG_EDM_SWITCH_OFF;
 
 fn edm(on: u32, off: u32, negated: u16) -> FB_EDM {
-    let mut e = FB_EDM {
+    common::ready(FB_EDM {
         tSwitchOnTime: on,
         tSwitchOffTime: off,
         wInputActive: BOTH,
         wInputNegated: negated,
         ..Default::default()
-    };
-    assert_eq!(e.init(), SL_OK);
-    e
+    })
 }
 
 /// An EDM started at `t` with the given Mon1/Mon2 bytes.
@@ -61,15 +60,10 @@ const MONOFF: u8 = SL_STATE_EDM_MONOFF;
 #[test]
 fn layout_states_and_diag_values() {
     // ABI §9: bMon1 (8), bMon2 (9), bError (+0).
-    assert_eq!(offset_of!(FB_EDM, bMon1), 8);
-    assert_eq!(offset_of!(FB_EDM, bMon2), 9);
-    assert_eq!(offset_of!(FB_EDM, bRun), 16);
-    assert_eq!(offset_of!(FB_EDM, bErrAck), 17);
-    let base = offset_of!(FB_EDM, bError);
-    assert_eq!(base % 8, 0);
+    offsets!(FB_EDM; bMon1 => 8, bMon2 => 9, bRun => 16, bErrAck => 17);
+    let base = output_base!(FB_EDM);
     assert!(base >= offset_of!(FB_EDM, wInputNegated) + 2);
-    assert_eq!(offset_of!(FB_EDM, stPrivate) % 8, 0);
-    assert_eq!(size_of::<FB_EDM>() % 8, 0);
+    aligned_tail!(FB_EDM);
     // Manual §4.9.2: states 14 MONOFF, 15 MONON; diag bit 0 switch-OFF, bit 1 switch-ON.
     assert_eq!((MONOFF, MONON), (14, 15));
     assert_eq!((OFF, ON), (1 << 0, 1 << 1));
@@ -92,17 +86,19 @@ fn configuration_errors() {
         (100, 100, BOTH, 0b100),
     ];
     for (on, off, active, negated) in bad {
-        let mut e = FB_EDM {
-            tSwitchOnTime: on,
-            tSwitchOffTime: off,
-            wInputActive: active,
-            wInputNegated: negated,
-            bRun: 1,
-            bMon1: 1,
-            bMon2: 1,
-            ..Default::default()
-        };
-        assert_eq!(e.init(), SL_E_CONFIG, "{on} {off} {active:#b} {negated:#b}");
+        let mut e = common::refused(
+            FB_EDM {
+                tSwitchOnTime: on,
+                tSwitchOffTime: off,
+                wInputActive: active,
+                wInputNegated: negated,
+                bRun: 1,
+                bMon1: 1,
+                bMon2: 1,
+                ..Default::default()
+            },
+            &[],
+        );
         for t in [0, 20_000] {
             assert_eq!(e.cycle(t), SL_E_CONFIG);
             assert_eq!((e.nState, e.bError), (SL_STATE_STOP, 0));
@@ -539,11 +535,7 @@ fn corruption() {
 
 #[test]
 fn c_functions_names_diag_text() {
-    assert_eq!(unsafe { ffi::sl_edm_init(std::ptr::null_mut()) }, SL_E_NULL);
-    assert_eq!(
-        unsafe { ffi::sl_edm_cycle(std::ptr::null_mut(), 0) },
-        SL_E_NULL
-    );
+    null_refused!(ffi::sl_edm_init, ffi::sl_edm_cycle);
     let mut e = FB_EDM {
         tSwitchOnTime: 50,
         wInputActive: BOTH,
@@ -562,18 +554,8 @@ fn c_functions_names_diag_text() {
     assert_eq!(state_name(SL_TYPE_EDM, MONOFF), "MONOFF");
     assert_eq!(state_name(SL_TYPE_EDM, MONON), "MONON");
     assert_eq!(state_name(SL_TYPE_EDM, SL_STATE_RUN), "?");
-    let mut buf = [0i8; 96];
     assert_eq!(
-        unsafe { ffi::sl_diag_text(SL_TYPE_EDM, OFF | ON, buf.as_mut_ptr().cast(), buf.len()) },
-        SL_OK
-    );
-    let text: Vec<u8> = buf
-        .iter()
-        .map(|&c| c as u8)
-        .take_while(|&c| c != 0)
-        .collect();
-    assert_eq!(
-        String::from_utf8(text).unwrap(),
+        common::diag_text(SL_TYPE_EDM, OFF | ON),
         "Switch-OFF timer elapsed; Switch-ON timer elapsed"
     );
 }
@@ -582,60 +564,40 @@ fn c_functions_names_diag_text() {
 /// group (FBERROR). An AND drives Mon1 through a link; Mon2 is the device feedback.
 #[test]
 fn in_a_group() {
-    let mut a = FB_AND {
+    let mut a = common::ready(FB_AND {
         wInputActive: 0b11,
         ..Default::default()
-    };
-    assert_eq!(a.init(), SL_OK);
+    });
     let mut e = edm(100, 100, 0);
     e.bMon2 = 1;
     let mut g = SL_GROUP::default();
     let mut members = [SL_MEMBER::default(); 2];
     let mut links = [SL_LINK::default(); 1];
-    assert_eq!(
-        unsafe { ffi::sl_group_init(&mut g, members.as_mut_ptr(), 2, links.as_mut_ptr(), 1) },
-        SL_OK
-    );
+    common::c_group_init(&mut g, (members.as_mut_ptr(), 2), (links.as_mut_ptr(), 1));
     let null = std::ptr::null_mut();
     let tm = members.as_mut_ptr();
-    assert_eq!(
-        unsafe {
-            ffi::sl_group_add_member(
-                &mut g,
-                tm,
-                SL_TYPE_AND,
-                std::ptr::addr_of_mut!(a).cast(),
-                null,
-            )
-        },
-        SL_OK
+    common::c_add_member(
+        &mut g,
+        tm,
+        SL_TYPE_AND,
+        std::ptr::addr_of_mut!(a).cast(),
+        null,
     );
     let tm = members.as_mut_ptr();
-    assert_eq!(
-        unsafe {
-            ffi::sl_group_add_member(
-                &mut g,
-                tm,
-                SL_TYPE_EDM,
-                std::ptr::addr_of_mut!(e).cast(),
-                null,
-            )
-        },
-        SL_OK
+    common::c_add_member(
+        &mut g,
+        tm,
+        SL_TYPE_EDM,
+        std::ptr::addr_of_mut!(e).cast(),
+        null,
     );
-    assert_eq!(
-        unsafe {
-            ffi::sl_group_add_link(
-                &mut g,
-                members.as_mut_ptr(),
-                links.as_mut_ptr(),
-                0,
-                offset_of!(FB_AND, bAndOut) as u16,
-                1,
-                offset_of!(FB_EDM, bMon1) as u16,
-            )
-        },
-        SL_OK
+    let (src, dst) = (offset_of!(FB_AND, bAndOut), offset_of!(FB_EDM, bMon1));
+    common::c_add_link(
+        &mut g,
+        members.as_mut_ptr(),
+        links.as_mut_ptr(),
+        (0, src),
+        (1, dst),
     );
     g.bRun = 1;
     c_group_cycle!(g, members, links, 0; a, e);

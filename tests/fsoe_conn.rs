@@ -2,6 +2,8 @@
 //! fsoe.md §5–§10): the 13-frame trace of fsoe.md §12.2 byte for byte, every SafeData
 //! length, the watchdog, FailSafeData, session IDs, acknowledgement, shutdown, diag byte.
 
+mod common;
+
 use safelogic::fsoe::conn::{cycle, init};
 use safelogic::fsoe::*;
 use safelogic::*;
@@ -14,18 +16,7 @@ pub struct Node {
     pub sent: Vec<Vec<u8>>,
 }
 
-pub fn conn(role: u16, tx: u16, rx: u16, seed: u16) -> SL_FSOE_CONN {
-    SL_FSOE_CONN {
-        nConnectionId: 7,
-        nFsoeAddress: 3,
-        nRole: role,
-        nTxDataLen: tx,
-        nRxDataLen: rx,
-        tWatchdogTime: 100,
-        nSessionIdSeed: seed,
-        ..Default::default()
-    }
-}
+use common::fsoe::conn;
 
 impl Node {
     pub fn new(c: SL_FSOE_CONN) -> Node {
@@ -57,15 +48,7 @@ impl Node {
 /// Outputs consistent with the state (ABI-2 §13.1).
 pub fn check_invariants(c: &SL_FSOE_CONN) {
     assert!((100..=106).contains(&c.nState), "state {}", c.nState);
-    for b in [
-        c.bComErr,
-        c.bComStartup,
-        c.bDataValid,
-        c.bShutdown,
-        c.bPeerFailSafe,
-    ] {
-        assert!(b <= 1);
-    }
+    common::fsoe::assert_bool_outputs(c);
     if c.bDataValid == 0 {
         assert_eq!(c.aRxSafeData, [0; 32]);
     } else {

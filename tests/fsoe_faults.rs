@@ -5,24 +5,20 @@
 //! sending — each with its reaction; and the property that a receiver never presents
 //! SafeData the sender did not send (sent data or zeros) under random faults.
 
+mod common;
+
 use safelogic::fsoe::conn::{cycle, init};
 use safelogic::fsoe::frame::encode;
 use safelogic::fsoe::*;
 use safelogic::*;
 use std::collections::HashSet;
 
+/// [`common::fsoe::conn`] running, with 3 bytes of application parameters.
 fn conn(role: u16, tx: u16, rx: u16, seed: u16) -> SL_FSOE_CONN {
     let mut c = SL_FSOE_CONN {
-        nConnectionId: 7,
-        nFsoeAddress: 3,
-        nRole: role,
-        nTxDataLen: tx,
-        nRxDataLen: rx,
-        tWatchdogTime: 100,
-        nSessionIdSeed: seed,
         nAppParaLen: 3,
         bRun: 1,
-        ..Default::default()
+        ..common::fsoe::conn(role, tx, rx, seed)
     };
     c.aAppPara[..3].copy_from_slice(&[0x11, 0x22, 0x33]);
     c

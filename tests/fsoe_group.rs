@@ -35,13 +35,8 @@ struct Node {
 
 fn conn(role: u16) -> SL_FSOE_CONN {
     SL_FSOE_CONN {
-        nConnectionId: 7,
-        nFsoeAddress: 3,
-        nRole: role,
-        nTxDataLen: 2,
-        nRxDataLen: 2,
         tWatchdogTime: WD,
-        ..Default::default()
+        ..common::fsoe::conn(role, 2, 2, 0)
     }
 }
 
@@ -94,6 +89,27 @@ impl NodeRef {
         }
         rc
     }
+    /// `init` (the block's C init) on the node's block at `field`, then adds it as type
+    /// `ty`; both must return SL_OK.
+    #[track_caller]
+    fn add_init<T>(
+        &self,
+        ty: u16,
+        field: impl FnOnce(*mut Node) -> *mut T,
+        init: unsafe extern "C" fn(*mut T) -> i32,
+    ) {
+        let p = self.block(field);
+        // SAFETY: a block of the live node, no borrow of it alive.
+        assert_eq!(unsafe { init(p) }, SL_OK, "init of type {ty}");
+        assert_eq!(self.add(ty, p.cast()), SL_OK, "add type {ty}");
+    }
+    /// [`Self::with_role`] with its connection added as member 0.
+    #[track_caller]
+    fn with_conn(role: u16) -> NodeRef {
+        let n = NodeRef::with_role(role);
+        assert_eq!(n.add_conn(), SL_OK);
+        n
+    }
     fn add_conn(&self) -> i32 {
         // SAFETY: a field place of the live node.
         let p = self.block(|n| unsafe { &raw mut (*n).conn });
@@ -130,31 +146,38 @@ impl NodeRef {
     }
 }
 
+/// The node's FB_CONNECTION_SHUTDOWN (Connection ID 7, inputs `active`), initialised and
+/// added as the next member.
+fn add_shutdown(n: &mut NodeRef, active: u16) {
+    n.shut = FB_CONNECTION_SHUTDOWN {
+        nConnectionId: 7,
+        wInputActive: active,
+        ..Default::default()
+    };
+    let init = sl_connection_shutdown_init;
+    // SAFETY: a field place of the live node.
+    n.add_init(
+        SL_TYPE_CONNECTION_SHUTDOWN,
+        |n| unsafe { &raw mut (*n).shut },
+        init,
+    );
+}
+
 /// Master node: connection (member 0), ESTOP (member 1) with its two channels from received
 /// bits 0 and 1, its EStopOut sent as bit 0; FB_CONNECTION_SHUTDOWN (member 2).
 fn master() -> NodeRef {
-    let mut n = NodeRef::with_role(SL_FSOE_ROLE_MASTER);
+    let mut n = NodeRef::with_conn(SL_FSOE_ROLE_MASTER);
     n.estop = FB_ESTOP {
         wInputActive: 0b11,
         ..Default::default()
     };
-    n.shut = FB_CONNECTION_SHUTDOWN {
-        nConnectionId: 7,
-        wInputActive: 0b01,
-        ..Default::default()
-    };
-    // SAFETY: see `NodeRef::with_role`.
-    unsafe {
-        assert_eq!(sl_estop_init(&mut n.estop), SL_OK);
-        assert_eq!(sl_connection_shutdown_init(&mut n.shut), SL_OK);
-    }
-    assert_eq!(n.add_conn(), SL_OK);
     // SAFETY: a field place of the live node.
-    let p = n.block(|n| unsafe { &raw mut (*n).estop }).cast();
-    assert_eq!(n.add(SL_TYPE_ESTOP, p), SL_OK);
-    // SAFETY: a field place of the live node.
-    let p = n.block(|n| unsafe { &raw mut (*n).shut }).cast();
-    assert_eq!(n.add(SL_TYPE_CONNECTION_SHUTDOWN, p), SL_OK);
+    n.add_init(
+        SL_TYPE_ESTOP,
+        |n| unsafe { &raw mut (*n).estop },
+        sl_estop_init,
+    );
+    add_shutdown(&mut n, 0b01);
     let in1 = offset_of!(FB_ESTOP, bEStopIn1);
     let in2 = offset_of!(FB_ESTOP, bEStopIn2);
     assert_eq!(n.link(SL_LINK_RXBIT, 0, 0, 1, in1), SL_OK);
@@ -175,27 +198,18 @@ fn slave() -> NodeRef {
 
 /// [`slave`] with the DECOUPLE's inputs `active`.
 fn slave_with(active: u16) -> NodeRef {
-    let mut n = NodeRef::with_role(SL_FSOE_ROLE_SLAVE);
+    let mut n = NodeRef::with_conn(SL_FSOE_ROLE_SLAVE);
     n.dec = FB_DECOUPLE {
         wInputActive: active,
         ..Default::default()
     };
-    n.shut = FB_CONNECTION_SHUTDOWN {
-        nConnectionId: 7,
-        ..Default::default()
-    };
-    // SAFETY: see `NodeRef::with_role`.
-    unsafe {
-        assert_eq!(sl_decouple_init(&mut n.dec), SL_OK);
-        assert_eq!(sl_connection_shutdown_init(&mut n.shut), SL_OK);
-    }
-    assert_eq!(n.add_conn(), SL_OK);
     // SAFETY: a field place of the live node.
-    let p = n.block(|n| unsafe { &raw mut (*n).dec }).cast();
-    assert_eq!(n.add(SL_TYPE_DECOUPLE, p), SL_OK);
-    // SAFETY: a field place of the live node.
-    let p = n.block(|n| unsafe { &raw mut (*n).shut }).cast();
-    assert_eq!(n.add(SL_TYPE_CONNECTION_SHUTDOWN, p), SL_OK);
+    n.add_init(
+        SL_TYPE_DECOUPLE,
+        |n| unsafe { &raw mut (*n).dec },
+        sl_decouple_init,
+    );
+    add_shutdown(&mut n, 0);
     assert_eq!(
         n.link(SL_LINK_TXBIT, 1, offset_of!(FB_DECOUPLE, bDecOut1), 0, 0),
         SL_OK
@@ -590,8 +604,7 @@ fn links_and_members_are_checked() {
     raw.stPrivate.nStateInv ^= 1;
     assert_eq!(n.add(SL_TYPE_FSOE_CONN, conn_ptr(&mut raw)), SL_E_CONFIG);
     // The same connection twice: refused (it shares bytes with a member).
-    let n2 = NodeRef::with_role(SL_FSOE_ROLE_MASTER);
-    assert_eq!(n2.add_conn(), SL_OK);
+    let n2 = NodeRef::with_conn(SL_FSOE_ROLE_MASTER);
     // SAFETY: a field place of the live node.
     let cp = n2.block(|n| unsafe { &raw mut (*n).conn }).cast();
     assert_eq!(n2.add(SL_TYPE_FSOE_CONN, cp), SL_E_CONFIG);
@@ -682,11 +695,10 @@ fn rust_members_slice_with_a_connection() {
     use safelogic::group::{self, Member};
     let mut m = conn(SL_FSOE_ROLE_MASTER);
     assert_eq!(fsoe::conn::init(&mut m), Status::Ok);
-    let mut e = FB_ESTOP {
+    let mut e = common::ready(FB_ESTOP {
         wInputActive: 0b11,
         ..Default::default()
-    };
-    assert_eq!(e.init(), SL_OK);
+    });
     let mut g = SL_GROUP {
         bRun: 1,
         ..Default::default()

@@ -4,6 +4,8 @@
 //! the BOOL outputs are 0/1, `aRxSafeData` is 0 unless `bDataValid`, a refused cycle sends
 //! nothing; and the pointer checks of `sl_fsoe_cycle` (NULL, misaligned, overlapping).
 
+mod common;
+
 use safelogic::ffi::{sl_fsoe_cycle, sl_fsoe_init};
 use safelogic::fsoe::frame::frame_len;
 use safelogic::*;
@@ -110,15 +112,7 @@ fn random_bytes_everywhere_are_survived() {
             if rc == SL_E_CONFIG || rc == SL_E_CORRUPT {
                 assert_eq!(len, 0);
             }
-            for b in [
-                c.bComErr,
-                c.bComStartup,
-                c.bDataValid,
-                c.bShutdown,
-                c.bPeerFailSafe,
-            ] {
-                assert!(b <= 1);
-            }
+            common::fsoe::assert_bool_outputs(&c);
             if rc != SL_E_CONFIG && c.bDataValid == 0 {
                 assert_eq!(c.aRxSafeData, [0; 32]);
             }

@@ -2,6 +2,7 @@
 //! and outputs, error propagation in both execution orders, acknowledgement, links, storage.
 
 mod common;
+use common::{link, new_group};
 
 use proptest::prelude::*;
 use safelogic::group::{self, Member, SL_GROUP_STATE_START, SL_GROUP_STATE_STOPERROR};
@@ -13,45 +14,30 @@ use safelogic::*;
 use std::mem::offset_of;
 
 fn estop_pair() -> FB_ESTOP {
-    let mut e = FB_ESTOP {
+    common::ready(FB_ESTOP {
         wInputActive: 0b11,
         tDiscTime12: 50,
+        bEStopIn1: 1,
+        bEStopIn2: 1,
         ..Default::default()
-    };
-    e.bEStopIn1 = 1;
-    e.bEStopIn2 = 1;
-    assert_eq!(e.init(), SL_OK);
-    e
+    })
 }
 
 fn mon_auto() -> FB_MON {
-    let mut m = FB_MON {
+    common::ready(FB_MON {
         wInputActive: 0b11,
         tDiscTime12: 50,
+        bMonIn1: 1,
+        bMonIn2: 1,
         ..Default::default()
-    };
-    m.bMonIn1 = 1;
-    m.bMonIn2 = 1;
-    assert_eq!(m.init(), SL_OK);
-    m
+    })
 }
 
 fn and2() -> FB_AND {
-    let mut a = FB_AND {
+    common::ready(FB_AND {
         wInputActive: 0b11,
         ..Default::default()
-    };
-    assert_eq!(a.init(), SL_OK);
-    a
-}
-
-fn new_group(members: usize, links: u16) -> SL_GROUP {
-    let mut g = SL_GROUP::default();
-    assert_eq!(group::init(&mut g, members as u16, links), SL_OK);
-    for i in 0..members {
-        assert_eq!(group::reserve_member(&mut g), Ok(i as u16));
-    }
-    g
+    })
 }
 
 const AND_IN1: u16 = offset_of!(FB_AND, bAndIn1) as u16;
@@ -59,16 +45,6 @@ const AND_IN2: u16 = offset_of!(FB_AND, bAndIn2) as u16;
 const AND_OUT: u16 = offset_of!(FB_AND, bAndOut) as u16;
 const ESTOP_OUT: u16 = offset_of!(FB_ESTOP, bEStopOut) as u16;
 const MON_OUT: u16 = offset_of!(FB_MON, bMonOut) as u16;
-
-fn link(src: u16, so: u16, dst: u16, d: u16) -> SL_LINK {
-    SL_LINK {
-        nSrcMember: src,
-        nSrcOffset: so,
-        nDstMember: dst,
-        nDstOffset: d,
-        ..Default::default()
-    }
-}
 
 #[test]
 fn stop_run_and_outputs() {

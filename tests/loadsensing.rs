@@ -112,17 +112,7 @@ macro_rules! variant {
                 <$t as Analog>::narrow(v.clamp(<$t as Analog>::MIN, <$t as Analog>::MAX))
             }
         }
-        impl std::ops::Deref for $name {
-            type Target = $ty;
-            fn deref(&self) -> &$ty {
-                &self.0
-            }
-        }
-        impl std::ops::DerefMut for $name {
-            fn deref_mut(&mut self) -> &mut $ty {
-                &mut self.0
-            }
-        }
+        crate::common::deref_to!($name, $ty);
     };
 }
 

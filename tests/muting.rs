@@ -5,6 +5,7 @@
 //! EDM, Enable, the EL6910 options, configuration errors, invalid BOOLs, envelope errors.
 
 mod common;
+use common::{aligned_tail, null_refused, offsets, output_base};
 
 use proptest::prelude::*;
 use safelogic::group::{self, Member};
@@ -16,11 +17,11 @@ use std::mem::offset_of;
 
 /// Pattern bits of the sequence as in the docs' step table: M1, M2, F (field interrupted),
 /// M3, M4.
-const M1: u8 = 1;
-const M2: u8 = 2;
-const F: u8 = 4;
-const M3: u8 = 8;
-const M4: u8 = 16;
+const M1: u8 = 1 << 0;
+const M2: u8 = 1 << 1;
+const F: u8 = 1 << 2;
+const M3: u8 = 1 << 3;
+const M4: u8 = 1 << 4;
 
 /// The docs' sequential step table (M1): the pattern of each state MUTING1…MUTING9, with
 /// position 0 and 10 = RUN.
@@ -55,14 +56,14 @@ struct Bench {
 
 impl Bench {
     fn new(active: u16, options: u32) -> Self {
-        let mut fb = FB_MUTING {
+        let fb = FB_MUTING {
             wInputActive: active,
             dwOptions: options,
+            bMutingEnable: 1,
+            bEDM1: 1,
+            bEDM2: 1,
             ..Default::default()
         };
-        fb.bMutingEnable = 1;
-        fb.bEDM1 = 1;
-        fb.bEDM2 = 1;
         Self { fb, t: 1000 }
     }
 
@@ -196,22 +197,20 @@ fn abi_numbers() {
         SL_STATE_MUTING_MUTING9,
     ];
     assert_eq!(states, [9, 10, 11, 12, 13, 14, 15, 16, 17]);
-    assert_eq!(offset_of!(FB_MUTING, bMutingEnable), 0);
-    assert_eq!(offset_of!(FB_MUTING, bEDM1), 1);
-    assert_eq!(offset_of!(FB_MUTING, bEDM2), 2);
-    assert_eq!(offset_of!(FB_MUTING, bMutingIn1), 8);
-    assert_eq!(offset_of!(FB_MUTING, bMutingIn2), 9);
-    assert_eq!(offset_of!(FB_MUTING, bOSSDIn1), 10);
-    assert_eq!(offset_of!(FB_MUTING, bOSSDIn2), 11);
-    assert_eq!(offset_of!(FB_MUTING, bMutingIn3), 12);
-    assert_eq!(offset_of!(FB_MUTING, bMutingIn4), 13);
-    let base = offset_of!(FB_MUTING, bError);
-    assert_eq!(base % 8, 0);
-    assert_eq!(offset_of!(FB_MUTING, bMutingActive) - base, 1);
-    assert_eq!(offset_of!(FB_MUTING, bMuteOut) - base, 2);
-    assert_eq!(offset_of!(FB_MUTING, bMuteDelOut) - base, 3);
-    assert_eq!(offset_of!(FB_MUTING, stPrivate) % 8, 0);
-    assert_eq!(std::mem::size_of::<FB_MUTING>() % 8, 0);
+    offsets!(FB_MUTING;
+        bMutingEnable => 0,
+        bEDM1 => 1,
+        bEDM2 => 2,
+        bMutingIn1 => 8,
+        bMutingIn2 => 9,
+        bOSSDIn1 => 10,
+        bOSSDIn2 => 11,
+        bMutingIn3 => 12,
+        bMutingIn4 => 13,
+    );
+    let base = output_base!(FB_MUTING);
+    offsets!(FB_MUTING, from base; bMutingActive => 1, bMuteOut => 2, bMuteDelOut => 3);
+    aligned_tail!(FB_MUTING);
     assert!(std::mem::size_of::<SL_MUTING_PRIVATE>() <= 96);
 }
 
@@ -245,21 +244,9 @@ fn state_names_and_diag_texts() {
     for (s, n) in expected {
         assert_eq!(name(s), n, "state {s}");
     }
-    let mut buf = [0i8; 512];
     let all = 0b0000_0111_1111_0111u16;
     assert_eq!(
-        unsafe {
-            safelogic::ffi::sl_diag_text(SL_TYPE_MUTING, all, buf.as_mut_ptr().cast(), buf.len())
-        },
-        SL_OK
-    );
-    let text: Vec<u8> = buf
-        .iter()
-        .map(|&c| c as u8)
-        .take_while(|&c| c != 0)
-        .collect();
-    assert_eq!(
-        String::from_utf8(text).unwrap(),
+        common::diag_text(SL_TYPE_MUTING, all),
         "discrepancy error in muting input group 1; discrepancy error in the OSSD input group; \
          discrepancy error in muting input group 2; EDM monitoring error EDM1; EDM monitoring \
          error EDM2; muting sequence was violated; maximum muting time was exceeded; \
@@ -1572,11 +1559,7 @@ fn state_values_the_block_never_takes() {
 #[test]
 fn c_abi_functions() {
     use safelogic::ffi::{sl_muting_cycle, sl_muting_init};
-    assert_eq!(unsafe { sl_muting_init(std::ptr::null_mut()) }, SL_E_NULL);
-    assert_eq!(
-        unsafe { sl_muting_cycle(std::ptr::null_mut(), 0) },
-        SL_E_NULL
-    );
+    null_refused!(sl_muting_init, sl_muting_cycle);
     let mut b = Bench::sequential();
     b.set(0);
     assert_eq!(unsafe { sl_muting_init(&mut b.fb) }, SL_OK);
@@ -1603,18 +1586,14 @@ fn group_member_and_links() {
     };
     a.bAndIn2 = 1;
     assert_eq!(a.init(), SL_OK);
-    let mut g = SL_GROUP::default();
-    assert_eq!(group::init(&mut g, 2, 1), SL_OK);
-    group::reserve_member(&mut g).unwrap();
-    group::reserve_member(&mut g).unwrap();
+    let mut g = common::new_group(2, 1);
     let mut links = [SL_LINK::default(); 1];
-    let l = SL_LINK {
-        nSrcMember: 0,
-        nSrcOffset: offset_of!(FB_MUTING, bMuteOut) as u16,
-        nDstMember: 1,
-        nDstOffset: offset_of!(FB_AND, bAndIn1) as u16,
-        ..Default::default()
-    };
+    let l = common::link(
+        0,
+        offset_of!(FB_MUTING, bMuteOut) as u16,
+        1,
+        offset_of!(FB_AND, bAndIn1) as u16,
+    );
     {
         let mut ms: [&mut dyn Member; 2] = [&mut m.fb, &mut a];
         assert_eq!(group::add_link(&mut g, &mut ms[..], &mut links, l), SL_OK);
@@ -1647,17 +1626,14 @@ fn group_member_and_links() {
 
 #[test]
 fn member_via_the_c_abi() {
-    use safelogic::ffi::{sl_group_add_member, sl_group_cycle, sl_group_init};
+    use safelogic::ffi::{sl_group_add_member, sl_group_cycle};
     let mut m = Bench::sequential();
     m.set(0);
     assert_eq!(m.fb.init(), SL_OK);
     let mut g = SL_GROUP::default();
     let mut members = [SL_MEMBER::default(); 1];
     let mut links = [SL_LINK::default(); 1];
-    assert_eq!(
-        unsafe { sl_group_init(&mut g, members.as_mut_ptr(), 1, links.as_mut_ptr(), 1) },
-        SL_OK
-    );
+    common::c_group_init(&mut g, (members.as_mut_ptr(), 1), (links.as_mut_ptr(), 1));
     let mut idx = 0xFFFFu16;
     assert_eq!(
         unsafe {

@@ -4,6 +4,7 @@
 //! property tests. Expected values come from the manual, the ABI and semantics.md.
 
 mod common;
+use common::{aligned_tail, null_refused, offsets, output_base};
 
 use proptest::prelude::*;
 use safelogic::group::{self, Member};
@@ -13,14 +14,12 @@ use std::mem::{offset_of, size_of};
 const ALL: u16 = 0xFF;
 
 fn opmode(active: u16, disc: u32, options: u32) -> FB_OPMODE {
-    let mut b = FB_OPMODE {
+    common::ready(FB_OPMODE {
         wInputActive: active,
         tDiscTime: disc,
         dwOptions: options,
         ..Default::default()
-    };
-    assert_eq!(b.init(), SL_OK);
-    b
+    })
 }
 
 /// Sets OpIn1..8 from bit 0..7 of `bits` (bytes 0/1).
@@ -93,17 +92,10 @@ fn assert_error(b: &FB_OPMODE, diag: u16) {
 #[test]
 fn layout_matches_the_abi() {
     // ABI §9: inputs at the manual's offsets, outputs at base + 0 and + 8 … + 15.
-    assert_eq!(offset_of!(FB_OPMODE, bRestart), 0);
-    assert_eq!(offset_of!(FB_OPMODE, bOpIn1), 8);
-    assert_eq!(offset_of!(FB_OPMODE, bOpIn8), 15);
-    assert_eq!(offset_of!(FB_OPMODE, bRun), 16);
-    assert_eq!(offset_of!(FB_OPMODE, bErrAck), 17);
-    let base = offset_of!(FB_OPMODE, bError);
-    assert_eq!(base % 8, 0);
-    assert_eq!(offset_of!(FB_OPMODE, bOpOut1) - base, 8);
-    assert_eq!(offset_of!(FB_OPMODE, bOpOut8) - base, 15);
-    assert_eq!(offset_of!(FB_OPMODE, stPrivate) % 8, 0);
-    assert_eq!(size_of::<FB_OPMODE>() % 8, 0);
+    offsets!(FB_OPMODE; bRestart => 0, bOpIn1 => 8, bOpIn8 => 15, bRun => 16, bErrAck => 17);
+    let base = output_base!(FB_OPMODE);
+    offsets!(FB_OPMODE, from base; bOpOut1 => 8, bOpOut8 => 15);
+    aligned_tail!(FB_OPMODE);
     assert!(size_of::<SL_OPMODE_PRIVATE>() <= 64);
     assert_eq!(SL_TYPE_OPMODE, 7);
 }
@@ -156,13 +148,15 @@ fn configuration_errors() {
         (0b11, 0, 1 << 8),
     ];
     for (active, disc, options) in bad {
-        let mut b = FB_OPMODE {
-            wInputActive: active,
-            tDiscTime: disc,
-            dwOptions: options,
-            ..Default::default()
-        };
-        assert_eq!(b.init(), SL_E_CONFIG, "{active:#x} {disc} {options:#x}");
+        let mut b = common::refused(
+            FB_OPMODE {
+                wInputActive: active,
+                tDiscTime: disc,
+                dwOptions: options,
+                ..Default::default()
+            },
+            &[],
+        );
         assert_eq!((b.nState, outs(&b), b.bError), (SL_STATE_STOP, 0, 0));
         // C6: every call returns SL_E_CONFIG, the block stays in STOP even with bRun TRUE.
         b.bRun = 1;
@@ -177,23 +171,24 @@ fn configuration_errors() {
         (0xFF, 1, 0),
     ];
     for (active, disc, options) in good {
-        let mut b = FB_OPMODE {
+        common::ready(FB_OPMODE {
             wInputActive: active,
             tDiscTime: disc,
             dwOptions: options,
             ..Default::default()
-        };
-        assert_eq!(b.init(), SL_OK);
+        });
     }
 }
 
 #[test]
 fn invalid_parameters_are_fixed_in_stop_and_latched_at_the_next_start() {
-    let mut b = FB_OPMODE {
-        wInputActive: 0b1,
-        ..Default::default()
-    };
-    assert_eq!(b.init(), SL_E_CONFIG);
+    let mut b = common::refused(
+        FB_OPMODE {
+            wInputActive: 0b1,
+            ..Default::default()
+        },
+        &[],
+    );
     b.bRun = 1;
     assert_eq!(b.cycle(0), SL_E_CONFIG);
     b.bRun = 0;
@@ -820,14 +815,7 @@ fn c_functions() {
     assert_eq!(unsafe { ffi::sl_opmode_cycle(&mut b, 0) }, SL_OK);
     assert_eq!(unsafe { ffi::sl_opmode_cycle(&mut b, 1) }, SL_OK);
     assert_eq!((b.nState, b.bOpOut2), (SL_STATE_RUN, 1));
-    assert_eq!(
-        unsafe { ffi::sl_opmode_init(std::ptr::null_mut()) },
-        SL_E_NULL
-    );
-    assert_eq!(
-        unsafe { ffi::sl_opmode_cycle(std::ptr::null_mut(), 0) },
-        SL_E_NULL
-    );
+    null_refused!(ffi::sl_opmode_init, ffi::sl_opmode_cycle);
     // sl_state_str returns the registry's static names (§4.3.2 states 1-6).
     let info = safelogic::registry::info(SL_TYPE_OPMODE).unwrap();
     let names: Vec<&str> = info.states.iter().map(|(_, n)| *n).collect();
@@ -839,24 +827,10 @@ fn c_functions() {
         assert_eq!(ffi::sl_state_str(SL_TYPE_OPMODE, *v), n.as_ptr().cast());
     }
     assert_eq!(info.name, "OPMODE");
-    let mut buf = [0i8; 64];
     assert_eq!(
-        unsafe {
-            ffi::sl_diag_text(
-                SL_TYPE_OPMODE,
-                SL_DIAG_OPMODE_DISC,
-                buf.as_mut_ptr().cast(),
-                buf.len(),
-            )
-        },
-        SL_OK
+        common::diag_text(SL_TYPE_OPMODE, SL_DIAG_OPMODE_DISC),
+        "discrepancy monitoring error"
     );
-    let text: Vec<u8> = buf
-        .iter()
-        .map(|&c| c as u8)
-        .take_while(|&c| c != 0)
-        .collect();
-    assert_eq!(text, b"discrepancy monitoring error");
 }
 
 #[test]
@@ -864,24 +838,19 @@ fn opmode_as_a_group_member_with_links() {
     // OpOut1 -> AndIn1: the mode output enables a downstream AND in the same group cycle.
     let mut o = opmode(0b11, 10, 0);
     set(&mut o, 0b1);
-    let mut a = FB_AND {
+    let mut a = common::ready(FB_AND {
         wInputActive: 0b11,
         bAndIn2: 1,
         ..Default::default()
-    };
-    assert_eq!(a.init(), SL_OK);
-    let mut g = SL_GROUP::default();
-    assert_eq!(group::init(&mut g, 2, 1), SL_OK);
-    assert_eq!(group::reserve_member(&mut g), Ok(0));
-    assert_eq!(group::reserve_member(&mut g), Ok(1));
+    });
+    let mut g = common::new_group(2, 1);
     let mut links = [SL_LINK::default(); 1];
-    let l = SL_LINK {
-        nSrcMember: 0,
-        nSrcOffset: offset_of!(FB_OPMODE, bOpOut1) as u16,
-        nDstMember: 1,
-        nDstOffset: offset_of!(FB_AND, bAndIn1) as u16,
-        ..Default::default()
-    };
+    let l = common::link(
+        0,
+        offset_of!(FB_OPMODE, bOpOut1) as u16,
+        1,
+        offset_of!(FB_AND, bAndIn1) as u16,
+    );
     {
         let mut ms: [&mut dyn Member; 2] = [&mut o, &mut a];
         assert_eq!(group::add_link(&mut g, &mut ms[..], &mut links, l), SL_OK);
@@ -911,9 +880,10 @@ fn opmode_as_a_group_member_with_links() {
     // The member table through the C dispatch knows the type tag.
     let mut members = [SL_MEMBER::default(); 1];
     let mut g2 = SL_GROUP::default();
-    assert_eq!(
-        unsafe { ffi::sl_group_init(&mut g2, members.as_mut_ptr(), 1, std::ptr::null_mut(), 0) },
-        SL_OK
+    common::c_group_init(
+        &mut g2,
+        (members.as_mut_ptr(), 1),
+        (std::ptr::null_mut(), 0),
     );
     let mut o2 = opmode(0b11, 0, 0);
     assert_eq!(

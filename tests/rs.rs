@@ -21,13 +21,11 @@ const RESET: u16 = 1 << 0;
 const SET: u16 = 1 << 1;
 
 fn rs(active: u16, negated: u16) -> FB_RS {
-    let mut b = FB_RS {
+    common::ready(FB_RS {
         wInputActive: active,
         wInputNegated: negated,
         ..Default::default()
-    };
-    assert_eq!(b.init(), SL_OK);
-    b
+    })
 }
 
 /// A running RS with both inputs active (break contacts).
@@ -46,32 +44,35 @@ fn step(b: &mut FB_RS, t: &mut u32, reset: u8, set: u8) -> i32 {
     b.cycle(*t)
 }
 
+/// One call of a step table: (Run, Reset, Set) written, the call at `t`, its status with
+/// (state, output).
+fn io(b: &mut FB_RS, [run, reset, set]: [u8; 3], t: u32) -> (i32, u8, u8) {
+    (b.bRun, b.bReset, b.bSet) = (run, reset, set);
+    let rc = b.cycle(t);
+    (rc, b.nState, b.bRsOut)
+}
+
 /// Manual §4.10.1, every statement, in the same call (R5).
 #[test]
 fn manual_statements() {
     let (mut b, mut t) = running();
     // "Logic 1 at input Set and logic 0 at input Reset leads to logic 1 at the output."
-    assert_eq!(step(&mut b, &mut t, 0, 1), SL_OK);
-    assert_eq!((b.nState, b.bRsOut), (SL_STATE_RS_SET, 1));
-    // "If both inputs are logic 0, the output remains in its current state." (1)
-    step(&mut b, &mut t, 0, 0);
-    assert_eq!((b.nState, b.bRsOut), (SL_STATE_RS_SET, 1));
-    // "Logic 0 at input Set and logic 1 at input Reset leads to logic 0 at the output."
-    step(&mut b, &mut t, 1, 0);
-    assert_eq!((b.nState, b.bRsOut), (SL_STATE_SAFE, 0));
-    // ... remains (0).
-    step(&mut b, &mut t, 0, 0);
-    assert_eq!((b.nState, b.bRsOut), (SL_STATE_SAFE, 0));
-    // "If both inputs are set to logic 1, the Reset signal is dominant and leads to logic 0."
-    step(&mut b, &mut t, 1, 1);
-    assert_eq!((b.nState, b.bRsOut), (SL_STATE_SAFE, 0));
-    step(&mut b, &mut t, 0, 1);
-    assert_eq!(b.bRsOut, 1);
-    step(&mut b, &mut t, 1, 1);
-    assert_eq!((b.nState, b.bRsOut), (SL_STATE_SAFE, 0), "from SET as well");
-    // Releasing Reset while Set stays TRUE sets again (level, not edge).
-    step(&mut b, &mut t, 0, 1);
-    assert_eq!((b.nState, b.bRsOut), (SL_STATE_RS_SET, 1));
+    #[rustfmt::skip]
+    flipflop::walk(&mut b, &mut t, io, &[
+        (1, 0, 1, SL_OK, Some(SL_STATE_RS_SET), Some(1), ""),
+        // "If both inputs are logic 0, the output remains in its current state." (1)
+        (1, 0, 0, SL_OK, Some(SL_STATE_RS_SET), Some(1), ""),
+        // "Logic 0 at input Set and logic 1 at input Reset leads to logic 0 at the output."
+        (1, 1, 0, SL_OK, Some(SL_STATE_SAFE), Some(0), ""),
+        // ... remains (0).
+        (1, 0, 0, SL_OK, Some(SL_STATE_SAFE), Some(0), ""),
+        // "If both inputs are set to logic 1, the Reset signal is dominant and leads to logic 0."
+        (1, 1, 1, SL_OK, Some(SL_STATE_SAFE), Some(0), ""),
+        (1, 0, 1, SL_OK, None, Some(1), ""),
+        (1, 1, 1, SL_OK, Some(SL_STATE_SAFE), Some(0), "from SET as well"),
+        // Releasing Reset while Set stays TRUE sets again (level, not edge).
+        (1, 0, 1, SL_OK, Some(SL_STATE_RS_SET), Some(1), ""),
+    ]);
     assert_eq!(b.nDiag, 0, "diag always 0");
 }
 
@@ -79,27 +80,18 @@ fn manual_statements() {
 #[test]
 fn stop_and_start_up() {
     let (mut b, mut t) = running();
-    step(&mut b, &mut t, 0, 1);
-    assert_eq!(b.bRsOut, 1);
-    b.bRun = 0;
-    step(&mut b, &mut t, 0, 0);
-    assert_eq!((b.nState, b.bRsOut), (SL_STATE_STOP, 0));
-    b.bRun = 1;
-    step(&mut b, &mut t, 0, 0);
-    assert_eq!((b.nState, b.bRsOut), (SL_STATE_SAFE, 0), "starts FALSE");
-    // Set held through a start-up sets in the call Run rises.
-    b.bRun = 0;
-    step(&mut b, &mut t, 0, 1);
-    assert_eq!(b.bRsOut, 0);
-    b.bRun = 1;
-    step(&mut b, &mut t, 0, 1);
-    assert_eq!((b.nState, b.bRsOut), (SL_STATE_RS_SET, 1));
-    // Both TRUE at start-up: Reset dominates.
-    b.bRun = 0;
-    step(&mut b, &mut t, 1, 1);
-    b.bRun = 1;
-    step(&mut b, &mut t, 1, 1);
-    assert_eq!((b.nState, b.bRsOut), (SL_STATE_SAFE, 0));
+    #[rustfmt::skip]
+    flipflop::walk(&mut b, &mut t, io, &[
+        (1, 0, 1, SL_OK, None, Some(1), ""),
+        (0, 0, 0, SL_OK, Some(SL_STATE_STOP), Some(0), ""),
+        (1, 0, 0, SL_OK, Some(SL_STATE_SAFE), Some(0), "starts FALSE"),
+        // Set held through a start-up sets in the call Run rises.
+        (0, 0, 1, SL_OK, None, Some(0), ""),
+        (1, 0, 1, SL_OK, Some(SL_STATE_RS_SET), Some(1), ""),
+        // Both TRUE at start-up: Reset dominates.
+        (0, 1, 1, SL_OK, None, None, ""),
+        (1, 1, 1, SL_OK, Some(SL_STATE_SAFE), Some(0), ""),
+    ]);
 }
 
 /// Negation bits: a make contact is negated before evaluation.
@@ -109,12 +101,12 @@ fn negated_inputs() {
     b.bRun = 1;
     let mut t = 0;
     // raw Reset 1 = logical 0, raw Set 0 = logical 1 → SET
-    step(&mut b, &mut t, 1, 0);
-    assert_eq!(b.bRsOut, 1);
-    step(&mut b, &mut t, 1, 1);
-    assert_eq!(b.bRsOut, 1, "both logical 0: remains");
-    step(&mut b, &mut t, 0, 1);
-    assert_eq!(b.bRsOut, 0, "logical Reset 1");
+    #[rustfmt::skip]
+    flipflop::walk(&mut b, &mut t, io, &[
+        (1, 1, 0, SL_OK, None, Some(1), ""),
+        (1, 1, 1, SL_OK, None, Some(1), "both logical 0: remains"),
+        (1, 0, 1, SL_OK, None, Some(0), "logical Reset 1"),
+    ]);
     let mut b = rs(RESET | SET, RESET);
     b.bRun = 1;
     step(&mut b, &mut t, 1, 1);
@@ -127,28 +119,26 @@ fn negated_inputs() {
 #[test]
 fn invalid_bools() {
     let (mut b, mut t) = running();
-    step(&mut b, &mut t, 0, 1);
-    assert_eq!(b.bRsOut, 1);
-    assert_eq!(step(&mut b, &mut t, 2, 1), SL_E_INVALID_BOOL);
-    assert_eq!((b.nState, b.bRsOut), (SL_STATE_SAFE, 0));
-    assert_eq!(step(&mut b, &mut t, 0, 0x7F), SL_E_INVALID_BOOL);
-    assert_eq!(b.bRsOut, 0, "invalid Set does not set");
-    step(&mut b, &mut t, 0, 1);
-    assert_eq!(b.bRsOut, 1);
-    assert_eq!(step(&mut b, &mut t, 0, 0xFF), SL_E_INVALID_BOOL);
+    #[rustfmt::skip]
+    flipflop::walk(&mut b, &mut t, io, &[
+        (1, 0, 1, SL_OK, None, Some(1), ""),
+        (1, 2, 1, SL_E_INVALID_BOOL, Some(SL_STATE_SAFE), Some(0), ""),
+        (1, 0, 0x7F, SL_E_INVALID_BOOL, None, Some(0), "invalid Set does not set"),
+        (1, 0, 1, SL_OK, None, Some(1), ""),
+        (1, 0, 0xFF, SL_E_INVALID_BOOL, None, None, ""),
+    ]);
     assert_eq!(
         b.bRsOut, 1,
         "invalid Set reads FALSE: both FALSE keeps the state"
     );
     // Whatever the negation: an invalid negated Reset still resets.
     let mut b = rs(RESET | SET, RESET | SET);
-    b.bRun = 1;
-    step(&mut b, &mut t, 1, 0);
-    assert_eq!(b.bRsOut, 1);
-    assert_eq!(step(&mut b, &mut t, 3, 0), SL_E_INVALID_BOOL);
-    assert_eq!(b.bRsOut, 0);
-    assert_eq!(step(&mut b, &mut t, 1, 3), SL_E_INVALID_BOOL);
-    assert_eq!(b.bRsOut, 0, "invalid negated Set does not set");
+    #[rustfmt::skip]
+    flipflop::walk(&mut b, &mut t, io, &[
+        (1, 1, 0, SL_OK, None, Some(1), ""),
+        (1, 3, 0, SL_E_INVALID_BOOL, None, Some(0), ""),
+        (1, 1, 3, SL_E_INVALID_BOOL, None, Some(0), "invalid negated Set does not set"),
+    ]);
 }
 
 flipflop_shared_tests!(

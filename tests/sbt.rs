@@ -5,7 +5,7 @@
 
 mod common;
 
-use common::{state_names, Rng, CORE_STATES, CORE_STATE_NAMES};
+use common::{run_steps, state_names, Rng, CORE_STATES, CORE_STATE_NAMES};
 use safelogic::*;
 
 const ALL: u16 = SL_SBT_ACTIVE_SBT
@@ -278,22 +278,14 @@ fn an_aborted_test_keeps_the_last_result() {
 fn a_test_starts_on_the_rising_edge_only() {
     let mut fb = make();
     assert_eq!(fb.init(), SL_OK);
-    set(&mut fb, 1, 0, 0, 100);
-    assert_eq!(fb.cycle(0), SL_OK);
-    fb.bRun = 1;
-    assert_eq!(fb.cycle(10), SL_OK);
-    assert_eq!(fb.nState, SL_STATE_SAFE);
-    fb.bSBT = 0;
-    assert_eq!(fb.cycle(20), SL_OK);
-    fb.bSBT = 2;
-    assert_eq!(fb.cycle(30), SL_E_INVALID_BOOL);
-    assert_eq!(
-        fb.nState, SL_STATE_SAFE,
-        "an invalid byte is no rising edge"
-    );
-    fb.bSBT = 1;
-    assert_eq!(fb.cycle(40), SL_OK);
-    assert_eq!(fb.nState, TESTING);
+    #[rustfmt::skip]
+    run_steps("SBT edge", &mut fb, |f| f.nState, &[
+        (0, |f| set(f, 1, 0, 0, 100), SL_OK, None, ""),
+        (10, |f| f.bRun = 1, SL_OK, Some(SL_STATE_SAFE), "held TRUE through STOP: no start"),
+        (20, |f| f.bSBT = 0, SL_OK, None, ""),
+        (30, |f| f.bSBT = 2, SL_E_INVALID_BOOL, Some(SL_STATE_SAFE), "an invalid byte is no rising edge"),
+        (40, |f| f.bSBT = 1, SL_OK, Some(TESTING), ""),
+    ]);
 }
 
 /// MinCurrentIq from the input with bit 10, from nMinCurrentIqFix without; MinDuration 0
@@ -565,7 +557,7 @@ fn random_sequences_match_the_model() {
         let max = min + 100 * ((r >> 8) % 8);
         let dev = ((r >> 12) % 20) as u32;
         let min_iq = ((r >> 20) % 5) as i32 - 2;
-        let mut fb = FB_SBT {
+        let mut fb = common::ready(FB_SBT {
             wInputActive: ALL,
             tBrakeTestInterval: interval as u32,
             tMinDuration: min as u32,
@@ -573,8 +565,7 @@ fn random_sequences_match_the_model() {
             nMaxPositionDeviation: dev,
             nMinCurrentIqFix: min_iq,
             ..Default::default()
-        };
-        assert_eq!(fb.init(), SL_OK);
+        });
         let mut model = Model {
             interval,
             min,

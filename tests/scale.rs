@@ -115,15 +115,11 @@ macro_rules! scale_tests {
             use super::*;
 
             type Fb = $ty;
-            const LO: i128 = <$t as Analog>::MIN;
-            const HI: i128 = <$t as Analog>::MAX;
+            crate::common::analog_bounds!($t);
             const LO32: i128 = <$t32 as Analog>::MIN;
             const HI32: i128 = <$t32 as Analog>::MAX;
             const SIGNED: bool = LO < 0;
 
-            fn t(v: i128) -> $t {
-                <$t as Analog>::narrow(v.clamp(LO, HI))
-            }
             fn t32(v: i128) -> $t32 {
                 <$t32 as Analog>::narrow(v.clamp(LO32, HI32))
             }

@@ -67,12 +67,11 @@ struct Rig {
 
 impl Rig {
     fn new(profile: u8, t: u32) -> Self {
-        let mut fb = SF_EDM {
+        let fb = common::ready(SF_EDM {
             nDiagProfile: profile,
             MonitoringTime: t,
             ..Default::default()
-        };
-        assert_eq!(fb.init(), SL_OK);
+        });
         Self {
             fb,
             now: 90_000,
@@ -485,12 +484,9 @@ struct Model {
 
 impl Model {
     fn step(&mut self, i: In, now: u32, t: u32) -> u16 {
-        let rt_reset = i.reset && !self.reset;
-        let rt_control = i.control && !self.control;
-        self.reset = i.reset;
-        self.control = i.control;
+        let (rt_reset, static_reset) = edges(&mut self.reset, i.reset);
+        let (rt_control, _) = edges(&mut self.control, i.control);
         let q = now.wrapping_sub(self.since) >= t;
-        let static_reset = i.reset && !rt_reset;
         // Which loops are wrong: 1 EDM1, 2 EDM2, 3 both.
         let open = u16::from(!i.edm1) | (u16::from(!i.edm2) << 1);
         let closed = u16::from(i.edm1) | (u16::from(i.edm2) << 1);
@@ -526,45 +522,42 @@ impl Model {
 
 #[test]
 fn random_sequences_agree_with_the_model() {
-    for p in profiles() {
-        let mut rng = Rng(0x5FED_0001 ^ u64::from(p));
-        let mut reached = BTreeSet::new();
-        for _ in 0..10_000 {
+    let walk = Walk::new("SF_EDM", 0x5FED_0001, all().iter().map(|s| s.0));
+    walk.run(
+        |p, _, rng| {
             let t = [0, 10, 30, 60][(rng.next() % 4) as usize];
             let mut rig = Rig::new(p, t);
-            let mut model = Model::default();
             rig.i.start_reset = rng.next() % 4 == 0;
-            for _ in 0..40 {
-                let r = rng.next();
-                let dt = ((r >> 40) % 25) as u32;
-                let code = rig.at(dt, |i| {
-                    i.activate ^= r % 31 == 0;
-                    i.control ^= (r >> 8) % 4 == 0;
-                    // The contactors mostly follow the output.
-                    if (r >> 16) % 3 == 0 {
-                        i.edm1 = !i.control;
-                    } else if (r >> 16) % 7 == 1 {
-                        i.edm1 = !i.edm1;
-                    }
-                    if (r >> 24) % 3 == 0 {
-                        i.edm2 = !i.control;
-                    } else if (r >> 24) % 7 == 1 {
-                        i.edm2 = !i.edm2;
-                    }
-                    i.reset ^= (r >> 32) % 4 == 0;
-                });
-                let want2 = model.step(rig.i, rig.now, t);
-                let want = all()
-                    .into_iter()
-                    .find(|s| s.0 == want2)
-                    .map(|s| rig.c(s))
-                    .unwrap();
-                assert_eq!(code, want, "profile {p} t {t}");
-                assert_eq!(rig.fb.S_EDM_Out == 1, want2 == 0x8000);
-                reached.insert(want2);
-            }
-        }
-        let every: BTreeSet<u16> = all().iter().map(|s| s.0).collect();
-        assert_eq!(reached, every, "profile {p}: every state reached");
-    }
+            (t, rig, Model::default())
+        },
+        |(t, rig, model), p, rng| {
+            let r = rng.next();
+            let dt = ((r >> 40) % 25) as u32;
+            let code = rig.at(dt, |i| {
+                i.activate ^= r % 31 == 0;
+                i.control ^= (r >> 8) % 4 == 0;
+                // The contactors mostly follow the output.
+                if (r >> 16) % 3 == 0 {
+                    i.edm1 = !i.control;
+                } else if (r >> 16) % 7 == 1 {
+                    i.edm1 = !i.edm1;
+                }
+                if (r >> 24) % 3 == 0 {
+                    i.edm2 = !i.control;
+                } else if (r >> 24) % 7 == 1 {
+                    i.edm2 = !i.edm2;
+                }
+                i.reset ^= (r >> 32) % 4 == 0;
+            });
+            let want2 = model.step(rig.i, rig.now, *t);
+            let want = all()
+                .into_iter()
+                .find(|s| s.0 == want2)
+                .map(|s| rig.c(s))
+                .unwrap();
+            assert_eq!(code, want, "profile {p} t {t}");
+            assert_eq!(rig.fb.S_EDM_Out == 1, want2 == 0x8000);
+            want2
+        },
+    );
 }

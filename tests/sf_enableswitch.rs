@@ -60,11 +60,10 @@ struct Rig {
 
 impl Rig {
     fn new(profile: u8) -> Self {
-        let mut fb = SF_EnableSwitch {
+        let fb = common::ready(SF_EnableSwitch {
             nDiagProfile: profile,
             ..Default::default()
-        };
-        assert_eq!(fb.init(), SL_OK);
+        });
         Self {
             fb,
             now: 1000,
@@ -364,11 +363,13 @@ fn profile_constant_and_library_faults() {
     assert_eq!(rig.fb.DiagCode, 0x8004, "v1.0 BASIC_OPMODE");
     assert_eq!(rig.fb.cycle(5010), SL_E_CLOCK);
     assert_eq!(rig.fb.DiagCode, SL_SF_DIAG_CLOCK);
-    let mut bad = SF_EnableSwitch {
-        nDiagProfile: 2,
-        ..Default::default()
-    };
-    assert_eq!(bad.init(), SL_E_CONFIG);
+    common::refused(
+        SF_EnableSwitch {
+            nDiagProfile: 2,
+            ..Default::default()
+        },
+        &[],
+    );
 }
 
 #[test]
@@ -393,12 +394,7 @@ fn texts_for_every_diag_code() {
 /// the group; the group's STOP halts it.
 #[test]
 fn in_a_group_with_a_link() {
-    let mut w = WithAnd::new(
-        SL_TYPE_SF_ENABLESWITCH,
-        SF_EnableSwitch::default(),
-        safelogic::ffi::sl_sf_enableswitch_init,
-        core::mem::offset_of!(SF_EnableSwitch, S_EnableSwitchOut),
-    );
+    let mut w = WithAnd::of(SF_EnableSwitch::default(), "S_EnableSwitchOut");
     w.fb.Activate = 1;
     w.fb.S_SafetyActive = 1;
     w.fb.S_EnableSwitchCh2 = 1;
@@ -406,19 +402,14 @@ fn in_a_group_with_a_link() {
     assert_eq!(w.fb.DiagCode, 0x8802);
     w.fb.S_EnableSwitchCh1 = 1;
     w.grp.cycle(10);
-    assert_eq!((w.fb.DiagCode, w.and.bAndOut), (0x8000, 1));
+    w.expect(0x8000, 1);
     // Panic position, then 3 → 2: C030, the group runs on, the link carries FALSE.
     (w.fb.S_EnableSwitchCh1, w.fb.S_EnableSwitchCh2) = (0, 0);
     w.grp.cycle(10);
     (w.fb.S_EnableSwitchCh1, w.fb.S_EnableSwitchCh2) = (1, 1);
     w.grp.cycle(10);
-    assert_eq!(
-        (w.fb.DiagCode, w.and.bAndOut, w.grp.g.nState),
-        (0xC030, 0, SL_STATE_RUN)
-    );
-    w.grp.g.bRun = 0;
-    assert_eq!(w.grp.cycle(10), SL_OK);
-    assert_eq!((w.fb.DiagCode, w.fb.Ready), (0, 0));
+    w.expect_group(0xC030, 0, SL_STATE_RUN);
+    w.stop_group();
 }
 
 /// The model: research §4.9's table with the v1.0 codes, written from the text (position 1 =
@@ -431,9 +422,7 @@ struct Model {
 
 impl Model {
     fn step(&mut self, i: In) -> u16 {
-        let rt = i.reset && !self.reset_prev;
-        self.reset_prev = i.reset;
-        let st = i.reset && !rt;
+        let (rt, st) = edges(&mut self.reset_prev, i.reset);
         let pos1 = !i.ch.0 && i.ch.1;
         let pos2 = i.ch.0 && i.ch.1;
         let pos3 = !pos1 && !pos2;
@@ -472,39 +461,38 @@ impl Model {
 
 #[test]
 fn random_sequences_agree_with_the_model() {
-    for p in profiles() {
-        let mut rng = Rng(0x5F23 ^ u64::from(p));
-        let mut reached = BTreeSet::new();
-        for _ in 0..10_000 {
-            let mut rig = Rig::new(p);
-            let mut model = Model::default();
-            let rates: [u64; 6] = core::array::from_fn(|_| 2 + rng.next() % 10);
-            let mut i = In::default();
-            for _ in 0..40 {
-                let f: [bool; 6] = core::array::from_fn(|k| rng.next() % rates[k] == 0);
-                i.activate = if i.activate {
-                    !f[0] || rng.next() % 4 != 0
-                } else {
-                    true
-                };
-                i.safety ^= f[1];
-                i.ch.0 ^= f[2];
-                i.ch.1 ^= f[3];
-                i.auto ^= f[4] && rng.next() % 3 == 0;
-                i.reset ^= f[5];
-                let got = rig.step(i);
-                let v1 = model.step(i);
-                let want = ALL.iter().find(|s| s.1 == v1).map(|s| rig.c(*s)).unwrap();
-                assert_eq!(got, want, "profile {p}: {i:?}");
-                let fb = &rig.fb;
-                assert_eq!(fb.S_EnableSwitchOut == 1, got == 0x8000);
-                assert!(fb.S_EnableSwitchOut == 0 || (i.safety && i.ch == P2));
-                assert_eq!(fb.Ready == 1, got != 0);
-                assert_eq!(fb.Error == 1, got >= 0xC000);
-                reached.insert(v1);
-            }
-        }
-        let all: BTreeSet<u16> = ALL.iter().map(|s| s.1).collect();
-        assert_eq!(reached, all, "profile {p}: every state reached");
-    }
+    let walk = Walk::new("SF_EnableSwitch", 0x5F23, ALL.iter().map(|s| s.1));
+    walk.run(
+        |p, _, rng| {
+            (
+                Rig::new(p),
+                Model::default(),
+                rates::<6>(rng),
+                In::default(),
+            )
+        },
+        |(rig, model, rates, i), p, rng| {
+            let f: [bool; 6] = core::array::from_fn(|k| rng.next() % rates[k] == 0);
+            i.activate = if i.activate {
+                !f[0] || rng.next() % 4 != 0
+            } else {
+                true
+            };
+            i.safety ^= f[1];
+            i.ch.0 ^= f[2];
+            i.ch.1 ^= f[3];
+            i.auto ^= f[4] && rng.next() % 3 == 0;
+            i.reset ^= f[5];
+            let got = rig.step(*i);
+            let v1 = model.step(*i);
+            let want = ALL.iter().find(|s| s.1 == v1).map(|s| rig.c(*s)).unwrap();
+            assert_eq!(got, want, "profile {p}: {i:?}");
+            let fb = &rig.fb;
+            assert_eq!(fb.S_EnableSwitchOut == 1, got == 0x8000);
+            assert!(fb.S_EnableSwitchOut == 0 || (i.safety && i.ch == P2));
+            assert_eq!(fb.Ready == 1, got != 0);
+            assert_eq!(fb.Error == 1, got >= 0xC000);
+            v1
+        },
+    );
 }

@@ -14,23 +14,13 @@ use safelogic::base::member::Member;
 use safelogic::*;
 use std::collections::BTreeSet;
 
-/// (v2.01, v1.0) codes of §4.4's DiagCode table.
-const IDLE: (u16, u16) = (0x0000, 0x0000);
-const INIT: (u16, u16) = (0x8001, 0x8001);
-const NORMAL: (u16, u16) = (0x8000, 0x8000);
-const OPEN_START: (u16, u16) = (0x8802, 0x8002);
-const OPENED: (u16, u16) = (0x8804, 0x8012);
-const WAIT_S2: (u16, u16) = (0x8806, 0x8004);
-const WAIT_S1: (u16, u16) = (0x8808, 0x8014);
-const CLOSED: (u16, u16) = (0x8002, 0x8005);
-const WAIT_RESET: (u16, u16) = (0x8402, 0x8003);
-const ERR_RESET: (u16, u16) = (0xC001, 0xC001);
-const ERR_DISC_1: (u16, u16) = (0xC010, 0xC011);
-const ERR_DISC_2: (u16, u16) = (0xC020, 0xC012);
-const ALL: [(u16, u16); 12] = [
-    IDLE, INIT, NORMAL, OPEN_START, OPENED, WAIT_S2, WAIT_S1, CLOSED, WAIT_RESET, ERR_RESET,
-    ERR_DISC_1, ERR_DISC_2,
-];
+// (v2.01, v1.0) codes of §4.4's DiagCode table.
+codes! {
+    IDLE = 0x0000 / 0x0000, INIT = 0x8001 / 0x8001, NORMAL = 0x8000 / 0x8000,
+    OPEN_START = 0x8802 / 0x8002, OPENED = 0x8804 / 0x8012, WAIT_S2 = 0x8806 / 0x8004,
+    WAIT_S1 = 0x8808 / 0x8014, CLOSED = 0x8002 / 0x8005, WAIT_RESET = 0x8402 / 0x8003,
+    ERR_RESET = 0xC001 / 0xC001, ERR_DISC_1 = 0xC010 / 0xC011, ERR_DISC_2 = 0xC020 / 0xC012,
+}
 
 /// One call's inputs.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
@@ -64,9 +54,7 @@ struct Model {
 
 impl Model {
     fn step(&mut self, i: In, now: u32, t: u32) -> u16 {
-        let rt = i.reset && !self.reset_prev;
-        self.reset_prev = i.reset;
-        let static_reset = i.reset && !rt;
+        let (rt, static_reset) = edges(&mut self.reset_prev, i.reset);
         let q = now.wrapping_sub(self.since) >= t;
         let (s1, s2) = (i.s1, i.s2);
         let next = if !i.activate {
@@ -365,42 +353,32 @@ fn every_transition_in_first_match_order() {
             rig.c(NORMAL)
         );
         // 8402: static Reset first (before a switch open), then a switch open, then RT(Reset).
-        let (mut rig, mut i) = r(WAIT_RESET);
-        i.s1 = false;
-        i.reset = true;
-        assert_eq!(
-            rig.step(i),
-            rig.c(OPEN_START),
-            "a switch open before RT(Reset)"
-        );
-        let (mut rig, mut i) = r(OPENED);
-        i.reset = true;
-        assert_eq!(rig.step(i), rig.c(OPENED));
-        i.s1 = true;
-        i.s2 = true;
-        assert_eq!(rig.step(i), rig.c(WAIT_S2));
-        assert_eq!(rig.step(i), rig.c(CLOSED));
-        assert_eq!(rig.step(i), rig.c(WAIT_RESET));
-        i.s2 = false;
-        assert_eq!(rig.step(i), rig.c(ERR_RESET), "static Reset first");
-        let (mut rig, mut i) = r(WAIT_RESET);
-        i.auto_reset = true;
-        assert_eq!(
-            rig.step(i),
-            rig.c(WAIT_RESET),
-            "S_AutoReset does not reset here"
-        );
-        i.reset = true;
-        assert_eq!(rig.step(i), rig.c(NORMAL));
-        // C001: stays while Reset is TRUE (a switch opening changes nothing), then 8402.
-        let (mut rig, mut i) = r(ERR_RESET);
-        i.s1 = false;
-        assert_eq!(rig.step(i), rig.c(ERR_RESET));
-        i.s1 = true;
-        i.reset = false;
-        assert_eq!(rig.step(i), rig.c(WAIT_RESET));
-        i.reset = true;
-        assert_eq!(rig.step(i), rig.c(NORMAL));
+        #[rustfmt::skip]
+        let cases: &[Case<In>] = &[
+            (WAIT_RESET, &[
+                (|i| (i.s1, i.reset) = (false, true), OPEN_START, "a switch open before RT(Reset)"),
+            ]),
+            (OPENED, &[
+                (|i| i.reset = true, OPENED, ""),
+                (|i| (i.s1, i.s2) = (true, true), WAIT_S2, ""),
+                (|_| {}, CLOSED, ""),
+                (|_| {}, WAIT_RESET, ""),
+                (|i| i.s2 = false, ERR_RESET, "static Reset first"),
+            ]),
+            (WAIT_RESET, &[
+                (|i| i.auto_reset = true, WAIT_RESET, "S_AutoReset does not reset here"),
+                (|i| i.reset = true, NORMAL, ""),
+            ]),
+            // C001: stays while Reset is TRUE (a switch opening changes nothing), then 8402.
+            (ERR_RESET, &[
+                (|i| i.s1 = false, ERR_RESET, ""),
+                (|i| (i.s1, i.reset) = (true, false), WAIT_RESET, ""),
+                (|i| i.reset = true, NORMAL, ""),
+            ]),
+        ];
+        step_table(&format!("profile {p}"), cases, r, |rig, i, want| {
+            (rig.step(i), rig.c(want))
+        });
         // C010 / C020: left only with both switches open, to 8804 (no Reset needed).
         for e in [ERR_DISC_1, ERR_DISC_2] {
             let (mut rig, mut i) = r(e);
@@ -600,14 +578,15 @@ fn the_constants() {
     assert_eq!(fb.cycle(206), SL_OK);
     assert_eq!(fb.DiagCode, 0xC010, "the new time, 200 ms");
     for (t, p) in [(SL_SF_TIME_MAX + 1, 0), (100, 2)] {
-        let mut bad = SF_Guard {
-            DiscrepancyTime: t,
-            nDiagProfile: p,
-            Activate: 1,
-            ..Default::default()
-        };
-        assert_eq!(bad.init(), SL_E_CONFIG);
-        assert_eq!(bad.cycle(0), SL_E_CONFIG);
+        let bad = common::refused(
+            SF_Guard {
+                DiscrepancyTime: t,
+                nDiagProfile: p,
+                Activate: 1,
+                ..Default::default()
+            },
+            &[0],
+        );
         assert_eq!((bad.DiagCode, bad.Ready), (SL_SF_DIAG_CONFIG, 1));
     }
     // An invalid switch byte reads FALSE (open): the output drops.
@@ -652,72 +631,60 @@ fn texts_for_every_diag_code() {
 /// after every call, the outputs from it, and every state reached.
 #[test]
 fn random_sequences_agree_with_the_model() {
-    for p in profiles() {
-        let mut rng = Rng(0x5F17 ^ u64::from(p));
-        let mut reached = BTreeSet::new();
-        for _ in 0..10_000 {
+    let walk = Walk::new("SF_Guard", 0x5F17, ALL.iter().map(|s| s.1));
+    walk.run(
+        |p, _, rng| {
             let t = [0, 5, 20, 50][(rng.next() % 4) as usize];
-            let mut rig = Rig::new(p, t);
-            let mut model = Model::default();
-            let rates: [u64; 6] = core::array::from_fn(|_| 2 + rng.next() % 10);
-            let mut i = In::default();
-            for _ in 0..40 {
-                let f: [bool; 6] = core::array::from_fn(|k| rng.next() % rates[k] == 0);
-                i.activate = if i.activate {
-                    !(f[0] && rng.next() % 4 == 0)
-                } else {
-                    f[0] || rng.next() % 3 == 0
-                };
-                i.s1 ^= f[1];
-                i.s2 ^= f[2];
-                i.start_reset ^= f[3];
-                i.auto_reset ^= f[4];
-                i.reset ^= f[5];
-                let dt = (rng.next() % 12) as u32;
-                let got = rig.at(dt, i);
-                let v1 = model.step(i, rig.now, t);
-                let want = ALL.iter().find(|s| s.1 == v1).map(|s| rig.c(*s)).unwrap();
-                assert_eq!(got, want, "profile {p} t {t}: {i:?}");
-                let o = rig.outputs();
-                assert_eq!(o[0] == 1, got != 0);
-                assert_eq!(o[1] == 1, got == 0x8000);
-                assert_eq!(o[4] == 1, got >= 0xC000);
-                assert!(
-                    o[1] == 0 || (i.s1 && i.s2),
-                    "output TRUE with a switch open"
-                );
-                reached.insert(v1);
-            }
-        }
-        let all: BTreeSet<u16> = ALL.iter().map(|s| s.1).collect();
-        assert_eq!(reached, all, "profile {p}: every state reached");
-    }
+            let rig = Rig::new(p, t);
+            (t, rig, Model::default(), rates::<6>(rng), In::default())
+        },
+        |(t, rig, model, rates, i), p, rng| {
+            let f = flips(rng, rates, &mut i.activate);
+            i.s1 ^= f[1];
+            i.s2 ^= f[2];
+            i.start_reset ^= f[3];
+            i.auto_reset ^= f[4];
+            i.reset ^= f[5];
+            let dt = (rng.next() % 12) as u32;
+            let got = rig.at(dt, *i);
+            let v1 = model.step(*i, rig.now, *t);
+            let want = ALL.iter().find(|s| s.1 == v1).map(|s| rig.c(*s)).unwrap();
+            assert_eq!(got, want, "profile {p} t {t}: {i:?}");
+            let o = rig.outputs();
+            assert_eq!(o[0] == 1, got != 0);
+            assert_eq!(o[1] == 1, got == 0x8000);
+            assert_eq!(o[4] == 1, got >= 0xC000);
+            assert!(
+                o[1] == 0 || (i.s1 && i.s2),
+                "output TRUE with a switch open"
+            );
+            v1
+        },
+    );
 }
 
 /// SF_Guard as a group member: its output linked to an FB_AND; a discrepancy error does not
 /// stop the group; group STOP halts it (DiagCode 0000).
 #[test]
 fn in_a_group_with_a_link() {
-    let mut w = WithAnd::new(
-        SL_TYPE_SF_GUARD,
+    let mut w = WithAnd::of(
         SF_Guard {
             DiscrepancyTime: 50,
             ..Default::default()
         },
-        safelogic::ffi::sl_sf_guard_init,
-        core::mem::offset_of!(SF_Guard, S_GuardOut),
+        "S_GuardOut",
     );
     w.fb.Activate = 1;
     w.fb.S_GuardSwitch1 = 1;
     w.fb.S_GuardSwitch2 = 1;
     w.fb.S_StartReset = 1;
     w.run(3);
-    assert_eq!((w.fb.DiagCode, w.and.bAndOut), (0x8000, 1));
+    w.expect(0x8000, 1);
     // Open both, close switch 1 only: C010 after 50 ms, the group runs on.
     w.fb.S_GuardSwitch1 = 0;
     w.fb.S_GuardSwitch2 = 0;
     w.grp.cycle(10);
-    assert_eq!((w.fb.DiagCode, w.and.bAndOut), (0x8802, 0));
+    w.expect(0x8802, 0);
     w.grp.cycle(10);
     w.fb.S_GuardSwitch1 = 1;
     for _ in 0..7 {
@@ -725,7 +692,6 @@ fn in_a_group_with_a_link() {
     }
     assert_eq!((w.fb.DiagCode, w.grp.g.nState), (0xC010, SL_STATE_RUN));
     assert_eq!(w.fb.state(), SL_STATE_RUN);
-    w.grp.g.bRun = 0;
-    assert_eq!(w.grp.cycle(10), SL_OK);
-    assert_eq!((w.fb.DiagCode, w.fb.Ready, w.and.bAndOut), (0, 0, 0));
+    w.stop_group();
+    assert_eq!(w.and.bAndOut, 0);
 }

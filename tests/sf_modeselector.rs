@@ -14,19 +14,12 @@ use common::*;
 use safelogic::*;
 use std::collections::BTreeSet;
 
-const IDLE: (u16, u16) = (0x0000, 0x0000);
-const CHANGED: (u16, u16) = (0x8802, 0x8005);
-const SELECTED: (u16, u16) = (0x8000, 0x8000);
-const LOCKED: (u16, u16) = (0x8010, 0x8004);
-const SHORT: (u16, u16) = (0xC010, 0xC001);
-const SHORT_RR: (u16, u16) = (0xC410, 0xC001);
-const OPEN: (u16, u16) = (0xC020, 0xC002);
-const OPEN_RR: (u16, u16) = (0xC420, 0xC002);
-const RESET_1: (u16, u16) = (0xC011, 0xC003);
-const RESET_2: (u16, u16) = (0xC021, 0xC004);
-const ALL: [(u16, u16); 10] = [
-    IDLE, CHANGED, SELECTED, LOCKED, SHORT, SHORT_RR, OPEN, OPEN_RR, RESET_1, RESET_2,
-];
+codes! {
+    IDLE = 0x0000 / 0x0000, CHANGED = 0x8802 / 0x8005, SELECTED = 0x8000 / 0x8000,
+    LOCKED = 0x8010 / 0x8004, SHORT = 0xC010 / 0xC001, SHORT_RR = 0xC410 / 0xC001,
+    OPEN = 0xC020 / 0xC002, OPEN_RR = 0xC420 / 0xC002, RESET_1 = 0xC011 / 0xC003,
+    RESET_2 = 0xC021 / 0xC004,
+}
 
 /// The rig's ModeMonitorTime (ms).
 const T: u32 = 100;
@@ -75,13 +68,12 @@ struct Rig {
 
 impl Rig {
     fn with(profile: u8, auto: bool, monitor: u32) -> Self {
-        let mut fb = SF_ModeSelector {
+        let fb = common::ready(SF_ModeSelector {
             nDiagProfile: profile,
             AutoSetMode: auto.into(),
             ModeMonitorTime: monitor,
             ..Default::default()
-        };
-        assert_eq!(fb.init(), SL_OK);
+        });
         Self {
             fb,
             now: 3_000,
@@ -401,11 +393,13 @@ fn constants_and_invalid_bytes() {
     rig.reach(CHANGED);
     rig.fb.ModeMonitorTime = T + 1;
     assert_eq!(rig.fb.cycle(rig.now + 10), SL_E_PARAM_CHANGED);
-    let mut bad = SF_ModeSelector {
-        AutoSetMode: 2,
-        ..Default::default()
-    };
-    assert_eq!(bad.init(), SL_E_CONFIG);
+    let mut bad = common::refused(
+        SF_ModeSelector {
+            AutoSetMode: 2,
+            ..Default::default()
+        },
+        &[],
+    );
     bad.Activate = 1;
     assert_eq!(bad.cycle(0), SL_E_CONFIG);
     assert_eq!(bad.DiagCode, SL_SF_DIAG_CONFIG);
@@ -435,36 +429,26 @@ fn texts_for_every_diag_code() {
 
 #[test]
 fn in_a_group_with_a_link() {
-    let mut w = WithAnd::new(
-        SL_TYPE_SF_MODESELECTOR,
-        SF_ModeSelector::default(),
-        safelogic::ffi::sl_sf_modeselector_init,
-        core::mem::offset_of!(SF_ModeSelector, S_Mode1Sel),
-    );
+    let mut w = WithAnd::of(SF_ModeSelector::default(), "S_Mode1Sel");
     w.fb.Activate = 1;
     w.fb.S_Unlock = 1;
     w.fb.S_Mode1 = 1;
     w.run(3);
     w.fb.S_SetMode = 1;
     w.grp.cycle(10);
-    assert_eq!((w.fb.DiagCode, w.and.bAndOut), (0x8000, 1));
+    w.expect(0x8000, 1);
     // Locked: the link keeps carrying the selection.
     w.fb.S_Unlock = 0;
     w.grp.cycle(10);
     w.fb.S_Mode1 = 0;
     w.grp.cycle(10);
-    assert_eq!((w.fb.DiagCode, w.and.bAndOut), (0x8010, 1));
+    w.expect(0x8010, 1);
     // Unlocked with a short circuit: 8802, then C010; the group runs on.
     (w.fb.S_Unlock, w.fb.S_Mode2, w.fb.S_Mode3) = (1, 1, 1);
     w.grp.cycle(10);
     w.grp.cycle(10);
-    assert_eq!(
-        (w.fb.DiagCode, w.and.bAndOut, w.grp.g.nState),
-        (0xC010, 0, SL_STATE_RUN)
-    );
-    w.grp.g.bRun = 0;
-    assert_eq!(w.grp.cycle(10), SL_OK);
-    assert_eq!((w.fb.DiagCode, w.fb.Ready), (0, 0));
+    w.expect_group(0xC010, 0, SL_STATE_RUN);
+    w.stop_group();
 }
 
 /// The model, written from research §4.8 and semantics QM1–QM6 (v2.01 codes): R_TRIG of
@@ -482,11 +466,8 @@ struct Model {
 
 impl Model {
     fn step(&mut self, i: In, now: u32, auto: bool, t: u32) -> u16 {
-        let set_rt = i.set && !self.set_prev;
-        let rt = i.reset && !self.reset_prev;
-        let st = i.reset && !rt;
-        self.set_prev = i.set;
-        self.reset_prev = i.reset;
+        let (set_rt, _) = edges(&mut self.set_prev, i.set);
+        let (rt, st) = edges(&mut self.reset_prev, i.reset);
         if i.modes != 0 {
             self.off_since = None;
         } else if self.prev_modes != 0 && self.state != 0 {
@@ -533,51 +514,48 @@ impl Model {
 
 #[test]
 fn random_sequences_agree_with_the_model() {
-    for p in profiles() {
-        let mut rng = Rng(0x5F26 ^ u64::from(p));
-        let mut reached = BTreeSet::new();
-        for _ in 0..10_000 {
+    let walk = Walk::new("SF_ModeSelector", 0x5F26, ALL.iter().map(|s| s.0));
+    walk.run(
+        |p, _, rng| {
             let auto = rng.next() % 4 == 0;
             let t = [0, 5, 20, 60][(rng.next() % 4) as usize];
-            let mut rig = Rig::with(p, auto, t);
-            let mut model = Model::default();
-            let mut i = In {
+            let rig = Rig::with(p, auto, t);
+            let i = In {
                 activate: true,
                 ..In::default()
             };
             let rates: [u64; 4] = core::array::from_fn(|_| 2 + rng.next() % 8);
-            for _ in 0..40 {
-                let r = rng.next();
-                if r % 31 == 0 {
-                    i.activate = !i.activate;
-                }
-                // Mostly a rotary switch: one mode, none, sometimes two.
-                if (r >> 8) % rates[0] == 0 {
-                    let k = (r >> 16) % 8;
-                    i.modes = match (r >> 20) % 6 {
-                        0 => 0,
-                        1 => i.modes | 1 << k,
-                        _ => 1 << k,
-                    };
-                }
-                i.unlock ^= (r >> 24) % (rates[1] * 2) == 0;
-                i.set ^= (r >> 32) % rates[2] == 0;
-                i.reset ^= (r >> 40) % rates[3] == 0;
-                let dt = ((r >> 48) % 40) as u32;
-                let got = rig.at(dt, i);
-                let v2 = model.step(i, rig.now, auto, t);
-                let want = ALL.iter().find(|s| s.0 == v2).map(|s| rig.c(*s)).unwrap();
-                assert_eq!(got, want, "profile {p} auto {auto} t {t}: {i:?}");
-                let (mask, any) = rig.sel();
-                let selected = v2 == 0x8000 || v2 == 0x8010;
-                assert_eq!(mask, if selected { model.sel } else { 0 });
-                assert_eq!(any == 1, selected);
-                assert!(mask.count_ones() <= 1);
-                assert!(v2 != 0x8000 || (i.unlock && i.modes == mask));
-                reached.insert(v2);
+            (auto, t, rig, Model::default(), i, rates)
+        },
+        |(auto, t, rig, model, i, rates), p, rng| {
+            let r = rng.next();
+            if r % 31 == 0 {
+                i.activate = !i.activate;
             }
-        }
-        let all: BTreeSet<u16> = ALL.iter().map(|s| s.0).collect();
-        assert_eq!(reached, all, "profile {p}: every state reached");
-    }
+            // Mostly a rotary switch: one mode, none, sometimes two.
+            if (r >> 8) % rates[0] == 0 {
+                let k = (r >> 16) % 8;
+                i.modes = match (r >> 20) % 6 {
+                    0 => 0,
+                    1 => i.modes | 1 << k,
+                    _ => 1 << k,
+                };
+            }
+            i.unlock ^= (r >> 24) % (rates[1] * 2) == 0;
+            i.set ^= (r >> 32) % rates[2] == 0;
+            i.reset ^= (r >> 40) % rates[3] == 0;
+            let dt = ((r >> 48) % 40) as u32;
+            let got = rig.at(dt, *i);
+            let v2 = model.step(*i, rig.now, *auto, *t);
+            let want = ALL.iter().find(|s| s.0 == v2).map(|s| rig.c(*s)).unwrap();
+            assert_eq!(got, want, "profile {p} auto {auto} t {t}: {i:?}");
+            let (mask, any) = rig.sel();
+            let selected = v2 == 0x8000 || v2 == 0x8010;
+            assert_eq!(mask, if selected { model.sel } else { 0 });
+            assert_eq!(any == 1, selected);
+            assert!(mask.count_ones() <= 1);
+            assert!(v2 != 0x8000 || (i.unlock && i.modes == mask));
+            v2
+        },
+    );
 }

@@ -52,11 +52,8 @@ struct Model {
 
 impl Model {
     fn step(&mut self, i: In, static_control: bool) -> u16 {
-        let rt = i.reset && !self.reset_prev;
-        let rpc = i.pc && !self.pc_prev;
-        self.reset_prev = i.reset;
-        self.pc_prev = i.pc;
-        let stat = i.reset && !rt;
+        let (rt, stat) = edges(&mut self.reset_prev, i.reset);
+        let (rpc, _) = edges(&mut self.pc_prev, i.pc);
         self.state = if !i.activate {
             0
         } else {
@@ -233,96 +230,74 @@ fn every_transition_in_first_match_order() {
             }),
             rig.c(DISABLE)
         );
-        let (mut rig, mut i) = r(INIT);
-        i.safe = true;
-        i.pc = true;
-        assert_eq!(rig.step(i), rig.c(INIT), "no Reset edge: stays");
-        i.pc = false;
-        assert_eq!(rig.step(i), rig.c(INIT));
-        i.pc = true;
-        i.reset = true;
-        assert_eq!(rig.step(i), rig.c(ERR_INIT), "both edges");
-        let (mut rig, mut i) = r(INIT);
-        i.pc = true;
-        assert_eq!(rig.step(i), rig.c(INIT));
-        i.reset = true;
-        assert_eq!(
-            rig.step(i),
-            rig.c(DISABLE),
-            "Reset edge, ProcessControl held"
-        );
-        // C001: left with Reset FALSE, to INIT.
-        let (mut rig, mut i) = r(ERR_RESET_1);
-        i.safe = true;
-        assert_eq!(rig.step(i), rig.c(ERR_RESET_1));
-        i.reset = false;
-        assert_eq!(rig.step(i), rig.c(INIT));
-        // C020: left with Reset and ProcessControl FALSE, to INIT.
-        let (mut rig, mut i) = r(ERR_INIT);
-        i.reset = false;
-        assert_eq!(rig.step(i), rig.c(ERR_INIT));
-        i.reset = true;
-        i.pc = false;
-        assert_eq!(rig.step(i), rig.c(ERR_INIT));
-        i.reset = false;
-        assert_eq!(rig.step(i), rig.c(INIT));
-        // DISABLE: NOT S_SafeControl first (even with a ProcessControl edge), then the edge.
-        let (mut rig, mut i) = r(DISABLE);
-        i.safe = false;
-        i.pc = true;
-        assert_eq!(rig.step(i), rig.c(SAFE));
-        let (mut rig, mut i) = r(DISABLE);
-        i.pc = true;
-        assert_eq!(rig.step(i), rig.c(ENABLE));
-        assert_eq!(rig.fb.S_OutControl, 1);
-        // DISABLE with ProcessControl TRUE at the entry: static → C010, left with it FALSE.
-        let (mut rig, mut i) = r(ERR_CONTROL);
-        i.auto_reset = false;
-        assert_eq!(rig.step(i), rig.c(ERR_CONTROL));
-        i.pc = false;
-        assert_eq!(rig.step(i), rig.c(DISABLE));
-        i.pc = true;
-        assert_eq!(rig.step(i), rig.c(ENABLE));
-        // ENABLE: NOT S_SafeControl before NOT ProcessControl.
-        let (mut rig, mut i) = r(ENABLE);
-        i.reset = true;
-        assert_eq!(rig.step(i), rig.c(ENABLE));
-        i.safe = false;
-        i.pc = false;
-        assert_eq!(rig.step(i), rig.c(SAFE));
-        assert_eq!(rig.fb.S_OutControl, 0, "FALSE in the same call");
-        let (mut rig, mut i) = r(ENABLE);
-        i.pc = false;
-        assert_eq!(rig.step(i), rig.c(DISABLE));
-        // SAFE: S_AutoReset → DISABLE, else LOCK; stays while S_SafeControl is FALSE.
-        let (mut rig, mut i) = r(SAFE);
-        i.reset = true;
-        i.auto_reset = true;
-        assert_eq!(rig.step(i), rig.c(SAFE));
-        i.safe = true;
-        assert_eq!(rig.step(i), rig.c(DISABLE));
-        // LOCK: NOT S_SafeControl first, static Reset, both edges (C030), RT(Reset).
-        let (mut rig, mut i) = r(LOCK);
-        i.safe = false;
-        i.reset = true;
-        assert_eq!(rig.step(i), rig.c(SAFE));
-        let (mut rig, mut i) = r(LOCK);
-        i.auto_reset = true;
-        assert_eq!(rig.step(i), rig.c(LOCK), "S_AutoReset does not leave LOCK");
-        i.reset = true;
-        assert_eq!(rig.step(i), rig.c(DISABLE));
-        let (mut rig, mut i) = r(ERR_RESET_2);
-        i.safe = false;
-        assert_eq!(rig.step(i), rig.c(ERR_RESET_2), "stays while Reset is TRUE");
-        i.reset = false;
-        assert_eq!(rig.step(i), rig.c(LOCK));
-        assert_eq!(rig.step(i), rig.c(SAFE));
-        // C030: left with Reset and ProcessControl FALSE, to LOCK.
-        let (mut rig, mut i) = r(ERR_LOCK);
-        i.reset = false;
-        assert_eq!(rig.step(i), rig.c(ERR_LOCK));
-        i.pc = false;
-        assert_eq!(rig.step(i), rig.c(LOCK));
+        #[rustfmt::skip]
+        let cases: &[Case<In>] = &[
+            (INIT, &[
+                (|i| (i.safe, i.pc) = (true, true), INIT, "no Reset edge: stays"),
+                (|i| i.pc = false, INIT, ""),
+                (|i| (i.pc, i.reset) = (true, true), ERR_INIT, "both edges"),
+            ]),
+            (INIT, &[
+                (|i| i.pc = true, INIT, ""),
+                (|i| i.reset = true, DISABLE, "Reset edge, ProcessControl held"),
+            ]),
+            // C001: left with Reset FALSE, to INIT.
+            (ERR_RESET_1, &[
+                (|i| i.safe = true, ERR_RESET_1, ""),
+                (|i| i.reset = false, INIT, ""),
+            ]),
+            // C020: left with Reset and ProcessControl FALSE, to INIT.
+            (ERR_INIT, &[
+                (|i| i.reset = false, ERR_INIT, ""),
+                (|i| (i.reset, i.pc) = (true, false), ERR_INIT, ""),
+                (|i| i.reset = false, INIT, ""),
+            ]),
+            // DISABLE: NOT S_SafeControl first (even with a ProcessControl edge), then the
+            // edge; S_OutControl TRUE in ENABLE.
+            (DISABLE, &[(|i| (i.safe, i.pc) = (false, true), SAFE, "")]),
+            (DISABLE, &[(|i| i.pc = true, ENABLE, "")]),
+            // DISABLE with ProcessControl TRUE at the entry: static → C010, left with it FALSE.
+            (ERR_CONTROL, &[
+                (|i| i.auto_reset = false, ERR_CONTROL, ""),
+                (|i| i.pc = false, DISABLE, ""),
+                (|i| i.pc = true, ENABLE, ""),
+            ]),
+            // ENABLE: NOT S_SafeControl before NOT ProcessControl.
+            (ENABLE, &[
+                (|i| i.reset = true, ENABLE, ""),
+                (|i| (i.safe, i.pc) = (false, false), SAFE, "S_OutControl FALSE in the same call"),
+            ]),
+            (ENABLE, &[(|i| i.pc = false, DISABLE, "")]),
+            // SAFE: S_AutoReset → DISABLE, else LOCK; stays while S_SafeControl is FALSE.
+            (SAFE, &[
+                (|i| (i.reset, i.auto_reset) = (true, true), SAFE, ""),
+                (|i| i.safe = true, DISABLE, ""),
+            ]),
+            // LOCK: NOT S_SafeControl first, static Reset, both edges (C030), RT(Reset).
+            (LOCK, &[(|i| (i.safe, i.reset) = (false, true), SAFE, "")]),
+            (LOCK, &[
+                (|i| i.auto_reset = true, LOCK, "S_AutoReset does not leave LOCK"),
+                (|i| i.reset = true, DISABLE, ""),
+            ]),
+            (ERR_RESET_2, &[
+                (|i| i.safe = false, ERR_RESET_2, "stays while Reset is TRUE"),
+                (|i| i.reset = false, LOCK, ""),
+                (|_| {}, SAFE, ""),
+            ]),
+            // C030: left with Reset and ProcessControl FALSE, to LOCK.
+            (ERR_LOCK, &[
+                (|i| i.reset = false, ERR_LOCK, ""),
+                (|i| i.pc = false, LOCK, ""),
+            ]),
+        ];
+        // Every step: the DiagCode of the state, S_OutControl TRUE exactly in ENABLE.
+        step_table(&format!("profile {p}"), cases, r, |rig, i, want| {
+            let got = rig.step(i);
+            (
+                (got, rig.fb.S_OutControl),
+                (rig.c(want), u8::from(want == ENABLE)),
+            )
+        });
     }
 }
 
@@ -496,42 +471,38 @@ fn texts_for_every_diag_code() {
 
 #[test]
 fn random_sequences_agree_with_the_model() {
-    for p in profiles() {
-        let mut rng = Rng(0x5F19 ^ u64::from(p));
-        let mut reached = BTreeSet::new();
-        for seq in 0..10_000 {
+    let walk = Walk::new("SF_OutControl", 0x5F19, ALL.iter().map(|s| s.0));
+    walk.run(
+        |p, seq, rng| {
             let static_control = seq % 3 == 0;
-            let mut rig = Rig::new(p, static_control);
-            let mut model = Model::default();
-            let rates: [u64; 6] = core::array::from_fn(|_| 2 + rng.next() % 10);
-            let mut i = In::default();
-            for _ in 0..40 {
-                let f: [bool; 6] = core::array::from_fn(|k| rng.next() % rates[k] == 0);
-                i.activate = if i.activate {
-                    !(f[0] && rng.next() % 4 == 0)
-                } else {
-                    f[0] || rng.next() % 3 == 0
-                };
-                i.safe ^= f[1];
-                i.pc ^= f[2];
-                i.start_reset ^= f[3] && rng.next() % 3 == 0;
-                i.auto_reset ^= f[4];
-                i.reset ^= f[5];
-                let got = rig.step(i);
-                let v2 = model.step(i, static_control);
-                let want = ALL.iter().find(|s| s.0 == v2).map(|s| rig.c(*s)).unwrap();
-                assert_eq!(got, want, "profile {p} static {static_control}: {i:?}");
-                let o = rig.outputs();
-                assert_eq!(o[0] == 1, got != 0);
-                assert_eq!(o[1] == 1, got == 0x8000);
-                assert_eq!(o[4] == 1, got >= 0xC000);
-                assert!(o[1] == 0 || (i.safe && i.pc), "output TRUE without both");
-                reached.insert(v2);
-            }
-        }
-        let all: BTreeSet<u16> = ALL.iter().map(|s| s.0).collect();
-        assert_eq!(reached, all, "profile {p}: every state reached");
-    }
+            let rig = Rig::new(p, static_control);
+            (
+                static_control,
+                rig,
+                Model::default(),
+                rates::<6>(rng),
+                In::default(),
+            )
+        },
+        |(static_control, rig, model, rates, i), p, rng| {
+            let f = flips(rng, rates, &mut i.activate);
+            i.safe ^= f[1];
+            i.pc ^= f[2];
+            i.start_reset ^= f[3] && rng.next() % 3 == 0;
+            i.auto_reset ^= f[4];
+            i.reset ^= f[5];
+            let got = rig.step(*i);
+            let v2 = model.step(*i, *static_control);
+            let want = ALL.iter().find(|s| s.0 == v2).map(|s| rig.c(*s)).unwrap();
+            assert_eq!(got, want, "profile {p} static {static_control}: {i:?}");
+            let o = rig.outputs();
+            assert_eq!(o[0] == 1, got != 0);
+            assert_eq!(o[1] == 1, got == 0x8000);
+            assert_eq!(o[4] == 1, got >= 0xC000);
+            assert!(o[1] == 0 || (i.safe && i.pc), "output TRUE without both");
+            v2
+        },
+    );
 }
 
 /// SF_OutControl in a group: S_SafeControl linked from an SF_EmergencyStop's output, its

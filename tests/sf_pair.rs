@@ -8,9 +8,7 @@
 
 mod common;
 use common::plcopen::*;
-use common::*;
 use safelogic::*;
-use std::collections::BTreeSet;
 
 codes! {
     IDLE = 0x0000 / 0x0000, INIT = 0x8801 / 0x8001, ENABLED = 0x8000 / 0x8000,
@@ -323,13 +321,14 @@ fn the_discrepancy_time_is_a_constant() {
     assert_eq!(fb.DiagCode, 0x8802);
     assert_eq!(fb.cycle(204), SL_OK);
     assert_eq!(fb.DiagCode, 0xC010, "200 ms");
-    let mut bad = SF_Equivalent {
-        DiscrepancyTime: SL_SF_TIME_MAX + 1,
-        Activate: 1,
-        ..Default::default()
-    };
-    assert_eq!(bad.init(), SL_E_CONFIG);
-    assert_eq!(bad.cycle(0), SL_E_CONFIG);
+    let mut bad = common::refused(
+        SF_Equivalent {
+            DiscrepancyTime: SL_SF_TIME_MAX + 1,
+            Activate: 1,
+            ..Default::default()
+        },
+        &[0],
+    );
     assert_eq!(bad.DiagCode, SL_SF_DIAG_CONFIG);
     bad.DiscrepancyTime = SL_SF_TIME_MAX;
     bad.Activate = 0;
@@ -399,39 +398,34 @@ impl Model {
 }
 
 fn against_the_model<B: Pair>(seed: u64) {
-    for p in profiles() {
-        let mut rng = Rng(seed ^ u64::from(p));
-        let mut reached = BTreeSet::new();
-        for _ in 0..10_000 {
+    let walk = Walk::new(B::NAME, seed, ALL.iter().map(|s| s.1));
+    walk.run(
+        |p, _, rng| {
             let t = [0, 5, 20, 50][(rng.next() % 4) as usize];
-            let mut rig = Rig::<B>::new(p, t);
-            let mut model = Model::default();
-            let (mut act, mut a, mut b) = (true, false, false);
-            for _ in 0..40 {
-                let r = rng.next();
-                if r % 23 == 0 {
-                    act = !act;
-                }
-                a ^= (r >> 8) % 4 == 0;
-                b ^= (r >> 16) % 4 == 0;
-                let dt = ((r >> 24) % 12) as u32;
-                rig.fb.apply(act, a, b);
-                rig.now = rig.now.wrapping_add(dt);
-                assert_eq!(rig.fb.cycle(rig.now), SL_OK);
-                let v1 = model.step(act, a, b, rig.now, t);
-                let want = ALL.iter().find(|s| s.1 == v1).map(|s| rig.c(*s)).unwrap();
-                assert_eq!(rig.fb.code(), want, "{} profile {p} t {t}", B::NAME);
-                assert_eq!(rig.fb.out() == 1, want == 0x8000);
-                assert!(
-                    rig.fb.out() == 0 || (a && b),
-                    "output TRUE with a channel inactive"
-                );
-                reached.insert(v1);
+            (t, Rig::<B>::new(p, t), Model::default(), true, false, false)
+        },
+        |(t, rig, model, act, a, b), p, rng| {
+            let r = rng.next();
+            if r % 23 == 0 {
+                *act = !*act;
             }
-        }
-        let all: BTreeSet<u16> = ALL.iter().map(|s| s.1).collect();
-        assert_eq!(reached, all, "{} profile {p}: every state reached", B::NAME);
-    }
+            *a ^= (r >> 8) % 4 == 0;
+            *b ^= (r >> 16) % 4 == 0;
+            let dt = ((r >> 24) % 12) as u32;
+            rig.fb.apply(*act, *a, *b);
+            rig.now = rig.now.wrapping_add(dt);
+            assert_eq!(rig.fb.cycle(rig.now), SL_OK);
+            let v1 = model.step(*act, *a, *b, rig.now, *t);
+            let want = ALL.iter().find(|s| s.1 == v1).map(|s| rig.c(*s)).unwrap();
+            assert_eq!(rig.fb.code(), want, "{} profile {p} t {t}", B::NAME);
+            assert_eq!(rig.fb.out() == 1, want == 0x8000);
+            assert!(
+                rig.fb.out() == 0 || (*a && *b),
+                "output TRUE with a channel inactive"
+            );
+            v1
+        },
+    );
 }
 
 #[test]

@@ -42,9 +42,7 @@ struct Model {
 
 impl Model {
     fn step(&mut self, i: In) -> u16 {
-        let rt = i.reset && !self.reset_prev;
-        self.reset_prev = i.reset;
-        let static_reset = i.reset && !rt;
+        let (rt, static_reset) = edges(&mut self.reset_prev, i.reset);
         self.state = if !i.activate {
             0x0000
         } else {
@@ -270,93 +268,70 @@ fn transitions<B: Family>() {
         i.input = true;
         assert_eq!(rig.step(i), rig.c(WAIT_IN_1), "{}", B::NAME);
         // 8001: S_StartReset AND NOT input → 8804; S_StartReset AND input → 8000.
-        let (mut rig, mut i) = r(INIT);
-        i.start_reset = true;
-        assert_eq!(rig.step(i), rig.c(WAIT_IN_2));
-        let (mut rig, mut i) = r(INIT);
-        i.start_reset = true;
-        i.input = true;
-        assert_eq!(rig.step(i), rig.c(ENABLED));
-        // 8802: stays while the input is FALSE (a Reset edge changes nothing), input → 8402.
-        let (mut rig, mut i) = r(WAIT_IN_1);
-        i.reset = true;
-        assert_eq!(rig.step(i), rig.c(WAIT_IN_1));
-        i.reset = false;
-        i.input = true;
-        assert_eq!(rig.step(i), rig.c(WAIT_RESET_1));
-        // 8402: static Reset first (before NOT input): → C001.
-        let (mut rig, mut i) = r(WAIT_IN_1);
-        i.reset = true;
-        assert_eq!(rig.step(i), rig.c(WAIT_IN_1));
-        i.input = true;
-        assert_eq!(rig.step(i), rig.c(WAIT_RESET_1));
-        i.input = false;
-        assert_eq!(
-            rig.step(i),
-            rig.c(ERR_RESET_1),
-            "static Reset before NOT input"
+        #[rustfmt::skip]
+        let cases: &[Case<In>] = &[
+            (INIT, &[(|i| i.start_reset = true, WAIT_IN_2, "")]),
+            (INIT, &[(|i| (i.start_reset, i.input) = (true, true), ENABLED, "")]),
+            // 8802: stays while the input is FALSE (a Reset edge changes nothing), input → 8402.
+            (WAIT_IN_1, &[
+                (|i| i.reset = true, WAIT_IN_1, ""),
+                (|i| (i.reset, i.input) = (false, true), WAIT_RESET_1, ""),
+            ]),
+            // 8402: static Reset first (before NOT input): → C001.
+            (WAIT_IN_1, &[
+                (|i| i.reset = true, WAIT_IN_1, ""),
+                (|i| i.input = true, WAIT_RESET_1, ""),
+                (|i| i.input = false, ERR_RESET_1, "static Reset before NOT input"),
+            ]),
+            // 8402: NOT input before RT(Reset): → 8802.
+            (WAIT_RESET_1, &[(|i| (i.input, i.reset) = (false, true), WAIT_IN_1, "")]),
+            // 8402: RT(Reset) → 8000; stays without an edge.
+            (WAIT_RESET_1, &[
+                (|_| {}, WAIT_RESET_1, ""),
+                (|i| i.auto_reset = true, WAIT_RESET_1, ""), // S_AutoReset does not reset after activation
+                (|i| i.reset = true, ENABLED, ""),
+            ]),
+            // C001: stays while Reset is TRUE (the input falling changes nothing), NOT Reset → 8402.
+            (ERR_RESET_1, &[
+                (|i| i.input = false, ERR_RESET_1, ""),
+                (|i| (i.input, i.reset) = (true, false), WAIT_RESET_1, ""),
+                (|i| i.reset = true, ENABLED, ""),
+            ]),
+            // 8804: input AND NOT S_AutoReset → 8404; input AND S_AutoReset → 8000; a Reset
+            // edge while the input is FALSE changes nothing.
+            (WAIT_IN_2, &[
+                (|i| i.reset = true, WAIT_IN_2, ""),
+                (|i| (i.reset, i.input) = (false, true), WAIT_RESET_2, ""),
+            ]),
+            (WAIT_IN_2, &[(|i| (i.input, i.auto_reset) = (true, true), ENABLED, "")]),
+            // 8404: static Reset first (before NOT input and before S_AutoReset) → C011.
+            (WAIT_IN_2, &[
+                (|i| i.reset = true, WAIT_IN_2, ""),
+                (|i| i.input = true, WAIT_RESET_2, ""),
+                (|i| (i.input, i.auto_reset) = (false, true), ERR_RESET_2, "static Reset first"),
+            ]),
+            // 8404: NOT input before RT(Reset) / S_AutoReset → 8804.
+            (WAIT_RESET_2, &[
+                (|i| (i.input, i.reset, i.auto_reset) = (false, true, true), WAIT_IN_2, ""),
+            ]),
+            // 8404: RT(Reset) → 8000; S_AutoReset → 8000.
+            (WAIT_RESET_2, &[
+                (|_| {}, WAIT_RESET_2, ""),
+                (|i| i.reset = true, ENABLED, ""),
+            ]),
+            (WAIT_RESET_2, &[(|i| i.auto_reset = true, ENABLED, "")]),
+            // C011: stays while Reset is TRUE, NOT Reset → 8404.
+            (ERR_RESET_2, &[
+                (|_| {}, ERR_RESET_2, ""),
+                (|i| i.reset = false, WAIT_RESET_2, ""),
+            ]),
+        ];
+        step_table(
+            &format!("{} profile {p}", B::NAME),
+            cases,
+            r,
+            |rig, i, want| (rig.step(i), rig.c(want)),
         );
-        // 8402: NOT input before RT(Reset): → 8802.
-        let (mut rig, mut i) = r(WAIT_RESET_1);
-        i.input = false;
-        i.reset = true;
-        assert_eq!(rig.step(i), rig.c(WAIT_IN_1));
-        // 8402: RT(Reset) → 8000; stays without an edge.
-        let (mut rig, mut i) = r(WAIT_RESET_1);
-        assert_eq!(rig.step(i), rig.c(WAIT_RESET_1));
-        i.auto_reset = true; // S_AutoReset does not reset after activation
-        assert_eq!(rig.step(i), rig.c(WAIT_RESET_1));
-        i.reset = true;
-        assert_eq!(rig.step(i), rig.c(ENABLED));
-        // C001: stays while Reset is TRUE (the input falling changes nothing), NOT Reset → 8402.
-        let (mut rig, mut i) = r(ERR_RESET_1);
-        i.input = false;
-        assert_eq!(rig.step(i), rig.c(ERR_RESET_1));
-        i.input = true;
-        i.reset = false;
-        assert_eq!(rig.step(i), rig.c(WAIT_RESET_1));
-        i.reset = true;
-        assert_eq!(rig.step(i), rig.c(ENABLED));
-        // 8804: input AND NOT S_AutoReset → 8404; input AND S_AutoReset → 8000; a Reset
-        // edge while the input is FALSE changes nothing.
-        let (mut rig, mut i) = r(WAIT_IN_2);
-        i.reset = true;
-        assert_eq!(rig.step(i), rig.c(WAIT_IN_2));
-        i.reset = false;
-        i.input = true;
-        assert_eq!(rig.step(i), rig.c(WAIT_RESET_2));
-        let (mut rig, mut i) = r(WAIT_IN_2);
-        i.input = true;
-        i.auto_reset = true;
-        assert_eq!(rig.step(i), rig.c(ENABLED));
-        // 8404: static Reset first (before NOT input and before S_AutoReset) → C011.
-        let (mut rig, mut i) = r(WAIT_IN_2);
-        i.reset = true;
-        assert_eq!(rig.step(i), rig.c(WAIT_IN_2));
-        i.input = true;
-        assert_eq!(rig.step(i), rig.c(WAIT_RESET_2));
-        i.input = false;
-        i.auto_reset = true;
-        assert_eq!(rig.step(i), rig.c(ERR_RESET_2), "static Reset first");
-        // 8404: NOT input before RT(Reset) / S_AutoReset → 8804.
-        let (mut rig, mut i) = r(WAIT_RESET_2);
-        i.input = false;
-        i.reset = true;
-        i.auto_reset = true;
-        assert_eq!(rig.step(i), rig.c(WAIT_IN_2));
-        // 8404: RT(Reset) → 8000; S_AutoReset → 8000.
-        let (mut rig, mut i) = r(WAIT_RESET_2);
-        assert_eq!(rig.step(i), rig.c(WAIT_RESET_2));
-        i.reset = true;
-        assert_eq!(rig.step(i), rig.c(ENABLED));
-        let (mut rig, mut i) = r(WAIT_RESET_2);
-        i.auto_reset = true;
-        assert_eq!(rig.step(i), rig.c(ENABLED));
-        // C011: stays while Reset is TRUE, NOT Reset → 8404.
-        let (mut rig, mut i) = r(ERR_RESET_2);
-        assert_eq!(rig.step(i), rig.c(ERR_RESET_2));
-        i.reset = false;
-        assert_eq!(rig.step(i), rig.c(WAIT_RESET_2));
         // 8000: NOT input → 8804 with the output FALSE in the same call.
         let (mut rig, mut i) = r(ENABLED);
         assert!(rig.fb.out());
@@ -696,45 +671,44 @@ fn texts_for_every_diag_code() {
 /// 10,000 random sequences of 40 calls per block and profile against the model: the same
 /// DiagCode after every call, the outputs from it, and every state reached.
 fn against_the_model<B: Family>(seed: u64) {
-    for p in profiles::<B>() {
-        let mut rng = Rng(seed ^ u64::from(p));
-        let mut reached = BTreeSet::new();
-        for _ in 0..10_000 {
-            let mut rig = Rig::<B>::new(p);
-            let mut model = Model::default();
+    let walk = Walk {
+        profiles: profiles::<B>(),
+        ..Walk::new(B::NAME, seed, ALL.iter().map(|s| s.1))
+    };
+    walk.run(
+        |p, _, rng| {
+            let rig = Rig::<B>::new(p);
             // Per sequence, how often each input changes (some sequences hold Reset long).
             let rates: [u64; 5] = core::array::from_fn(|_| 2 + rng.next() % 12);
-            let mut i = In::default();
-            for _ in 0..40 {
-                let mut flips = [false; 5];
-                for (k, f) in flips.iter_mut().enumerate() {
-                    *f = rng.next() % rates[k] == 0;
-                }
-                // Activate mostly TRUE: an idle block reaches nothing.
-                i.activate = if i.activate {
-                    !flips[0]
-                } else {
-                    flips[0] || rng.next() % 3 == 0
-                };
-                i.input ^= flips[1];
-                i.start_reset ^= flips[2];
-                i.auto_reset ^= flips[3];
-                i.reset ^= flips[4];
-                let got = rig.step(i);
-                let v1 = model.step(i);
-                let want = ALL.iter().find(|s| s.1 == v1).map(|s| rig.c(*s)).unwrap();
-                assert_eq!(got, want, "{} profile {p}: {i:?}", B::NAME);
-                let o = rig.fb.outputs();
-                assert_eq!(o[0] == 1, got != 0);
-                assert_eq!(o[1] == 1, got == 0x8000);
-                assert_eq!(o[4] == 1, got >= 0xC000);
-                assert!(i.input || o[1] == 0, "input FALSE, output TRUE");
-                reached.insert(v1);
+            (rig, Model::default(), rates, In::default())
+        },
+        |(rig, model, rates, i), p, rng| {
+            let mut flips = [false; 5];
+            for (k, f) in flips.iter_mut().enumerate() {
+                *f = rng.next() % rates[k] == 0;
             }
-        }
-        let all: BTreeSet<u16> = ALL.iter().map(|s| s.1).collect();
-        assert_eq!(reached, all, "{} profile {p}: every state reached", B::NAME);
-    }
+            // Activate mostly TRUE: an idle block reaches nothing.
+            i.activate = if i.activate {
+                !flips[0]
+            } else {
+                flips[0] || rng.next() % 3 == 0
+            };
+            i.input ^= flips[1];
+            i.start_reset ^= flips[2];
+            i.auto_reset ^= flips[3];
+            i.reset ^= flips[4];
+            let got = rig.step(*i);
+            let v1 = model.step(*i);
+            let want = ALL.iter().find(|s| s.1 == v1).map(|s| rig.c(*s)).unwrap();
+            assert_eq!(got, want, "{} profile {p}: {i:?}", B::NAME);
+            let o = rig.fb.outputs();
+            assert_eq!(o[0] == 1, got != 0);
+            assert_eq!(o[1] == 1, got == 0x8000);
+            assert_eq!(o[4] == 1, got >= 0xC000);
+            assert!(i.input || o[1] == 0, "input FALSE, output TRUE");
+            v1
+        },
+    );
 }
 
 #[test]
@@ -749,26 +723,18 @@ fn random_sequences_agree_with_the_model() {
 /// not stop the group; the group's FbRun FALSE (group STOP) halts it: DiagCode 0000.
 #[test]
 fn in_a_group_with_a_link() {
-    let mut w = WithAnd::new(
-        SL_TYPE_SF_EMERGENCYSTOP,
-        SF_EmergencyStop::default(),
-        safelogic::ffi::sl_sf_emergencystop_init,
-        core::mem::offset_of!(SF_EmergencyStop, S_EStopOut),
-    );
+    let mut w = WithAnd::of(SF_EmergencyStop::default(), "S_EStopOut");
     w.fb.Activate = 1;
     w.fb.S_EStopIn = 1;
     w.fb.S_StartReset = 1;
     w.run(3);
-    assert_eq!(
-        (w.fb.DiagCode, w.and.bAndOut, w.grp.g.nState),
-        (0x8000, 1, SL_STATE_RUN)
-    );
+    w.expect_group(0x8000, 1, SL_STATE_RUN);
     // A safety demand and a Reset held into the wait state: C011, the group runs on.
     w.fb.S_StartReset = 0;
     w.fb.S_EStopIn = 0;
     w.fb.Reset = 1;
     w.grp.cycle(10);
-    assert_eq!((w.fb.DiagCode, w.and.bAndOut), (0x8804, 0));
+    w.expect(0x8804, 0);
     w.fb.S_EStopIn = 1;
     w.grp.cycle(10);
     w.grp.cycle(10);
@@ -780,11 +746,10 @@ fn in_a_group_with_a_link() {
     w.grp.cycle(10);
     w.fb.Reset = 1;
     w.grp.cycle(10);
-    assert_eq!((w.fb.DiagCode, w.and.bAndOut), (0x8000, 1));
+    w.expect(0x8000, 1);
     // Group STOP: the SF_ block is halted (idle), its link carries FALSE.
-    w.grp.g.bRun = 0;
-    assert_eq!(w.grp.cycle(10), SL_OK);
-    assert_eq!((w.fb.DiagCode, w.fb.S_EStopOut, w.fb.Ready), (0, 0, 0));
+    w.stop_group();
+    assert_eq!(w.fb.S_EStopOut, 0);
     assert_eq!(w.grp.g.nState, SL_STATE_STOP);
 }
 

@@ -51,9 +51,7 @@ struct Model {
 
 impl Model {
     fn step(&mut self, i: In, now: u32, t: u32) -> u16 {
-        let rt = i.reset && !self.reset_prev;
-        self.reset_prev = i.reset;
-        let stat = i.reset && !rt;
+        let (rt, stat) = edges(&mut self.reset_prev, i.reset);
         let q = now.wrapping_sub(self.since) >= t;
         let next = if !i.activate {
             0
@@ -250,16 +248,15 @@ fn every_transition_in_first_match_order() {
             rig.c(CONF_OP),
             "S_StartReset before the static Reset"
         );
-        let (mut rig, mut i) = r(INIT);
-        i.start_reset = true;
-        assert_eq!(rig.step(i), rig.c(OP));
-        let (mut rig, mut i) = r(INIT);
-        i.start_reset = true;
-        i.ack = true;
-        assert_eq!(rig.step(i), rig.c(CONF_OP));
-        let (mut rig, mut i) = r(INIT);
-        i.reset = true;
-        assert_eq!(rig.step(i), rig.c(OP));
+        #[rustfmt::skip]
+        let cases: &[Case<In>] = &[
+            (INIT, &[(|i| i.start_reset = true, OP, "")]),
+            (INIT, &[(|i| (i.start_reset, i.ack) = (true, true), CONF_OP, "")]),
+            (INIT, &[(|i| i.reset = true, OP, "")]),
+        ];
+        step_table(&format!("profile {p}"), cases, r, |rig, i, want| {
+            (rig.step(i), rig.c(want))
+        });
         // INIT: static Reset → C001; RT(Reset) by S_Acknowledge; nothing else leaves INIT.
         let (mut rig, mut i) = r(INIT);
         i.op_mode = true;
@@ -267,18 +264,19 @@ fn every_transition_in_first_match_order() {
         assert_eq!(rig.at(1_000_000, i), rig.c(INIT));
         i.reset = true;
         assert_eq!(rig.step(i), rig.c(CONF_OP));
-        let (mut rig, mut i) = r(ERR_RESET_1);
-        i.ack = true;
-        assert_eq!(rig.step(i), rig.c(ERR_RESET_1));
-        i.reset = false;
-        assert_eq!(rig.step(i), rig.c(INIT));
-        i.reset = true;
-        assert_eq!(rig.step(i), rig.c(CONF_OP));
-        // OP_MODE: NOT S_OpMode before S_Acknowledge.
-        let (mut rig, mut i) = r(OP);
-        i.op_mode = false;
-        i.ack = true;
-        assert_eq!(rig.step(i), rig.c(CONF), "NOT S_OpMode first");
+        #[rustfmt::skip]
+        let cases: &[Case<In>] = &[
+            (ERR_RESET_1, &[
+                (|i| i.ack = true, ERR_RESET_1, ""),
+                (|i| i.reset = false, INIT, ""),
+                (|i| i.reset = true, CONF_OP, ""),
+            ]),
+            // OP_MODE: NOT S_OpMode before S_Acknowledge.
+            (OP, &[(|i| (i.op_mode, i.ack) = (false, true), CONF, "NOT S_OpMode first")]),
+        ];
+        step_table(&format!("profile {p}"), cases, r, |rig, i, want| {
+            (rig.step(i), rig.c(want))
+        });
         let (mut rig, mut i) = r(OP);
         i.reset = true;
         assert_eq!(
@@ -459,13 +457,14 @@ fn the_monitoring_time() {
     fb.MonitoringTime = 101;
     assert_eq!(fb.cycle(1), SL_E_PARAM_CHANGED);
     assert_eq!((fb.DiagCode, fb.Error), (SL_SF_DIAG_CONST_CHANGED, 1));
-    let mut bad = SF_SafetyRequest {
-        MonitoringTime: SL_SF_TIME_MAX + 1,
-        Activate: 1,
-        ..Default::default()
-    };
-    assert_eq!(bad.init(), SL_E_CONFIG);
-    assert_eq!(bad.cycle(0), SL_E_CONFIG);
+    let bad = common::refused(
+        SF_SafetyRequest {
+            MonitoringTime: SL_SF_TIME_MAX + 1,
+            Activate: 1,
+            ..Default::default()
+        },
+        &[0],
+    );
     assert_eq!((bad.DiagCode, bad.S_SafetyRequest), (SL_SF_DIAG_CONFIG, 0));
     // An invalid S_Acknowledge byte reads FALSE: the acknowledgement is lost.
     let mut rig = Rig::new(0, 100);
@@ -500,70 +499,53 @@ fn texts_for_every_diag_code() {
 
 #[test]
 fn random_sequences_agree_with_the_model() {
-    for p in profiles() {
-        let mut rng = Rng(0x5F18 ^ u64::from(p));
-        let mut reached = BTreeSet::new();
-        for _ in 0..10_000 {
+    let walk = Walk::new("SF_SafetyRequest", 0x5F18, ALL.iter().map(|s| s.1));
+    walk.run(
+        |p, _, rng| {
             let t = [0, 5, 20, 50][(rng.next() % 4) as usize];
-            let mut rig = Rig::new(p, t);
-            let mut model = Model::default();
-            let rates: [u64; 5] = core::array::from_fn(|_| 2 + rng.next() % 10);
-            let mut i = In::default();
-            for _ in 0..40 {
-                let f: [bool; 5] = core::array::from_fn(|k| rng.next() % rates[k] == 0);
-                i.activate = if i.activate {
-                    !(f[0] && rng.next() % 4 == 0)
-                } else {
-                    f[0] || rng.next() % 3 == 0
-                };
-                i.op_mode ^= f[1];
-                i.ack ^= f[2];
-                i.start_reset ^= f[3] && rng.next() % 3 == 0;
-                i.reset ^= f[4];
-                let dt = (rng.next() % 12) as u32;
-                let got = rig.at(dt, i);
-                let v1 = model.step(i, rig.now, t);
-                let want = ALL.iter().find(|s| s.1 == v1).map(|s| rig.c(*s)).unwrap();
-                assert_eq!(got, want, "profile {p} t {t}: {i:?}");
-                let o = rig.outputs();
-                assert_eq!(o[0] == 1, got != 0);
-                assert_eq!(o[1] == 1, got == 0x8000);
-                assert_eq!(o[2] == 1, v1 == 0x8002 || v1 == 0x8012);
-                assert_eq!(o[5] == 1, got >= 0xC000);
-                assert!(o[1] == 0 || i.ack, "S_SafetyActive without S_Acknowledge");
-                reached.insert(v1);
-            }
-        }
-        let all: BTreeSet<u16> = ALL.iter().map(|s| s.1).collect();
-        assert_eq!(reached, all, "profile {p}: every state reached");
-    }
+            let rig = Rig::new(p, t);
+            (t, rig, Model::default(), rates::<5>(rng), In::default())
+        },
+        |(t, rig, model, rates, i), p, rng| {
+            let f = flips(rng, rates, &mut i.activate);
+            i.op_mode ^= f[1];
+            i.ack ^= f[2];
+            i.start_reset ^= f[3] && rng.next() % 3 == 0;
+            i.reset ^= f[4];
+            let dt = (rng.next() % 12) as u32;
+            let got = rig.at(dt, *i);
+            let v1 = model.step(*i, rig.now, *t);
+            let want = ALL.iter().find(|s| s.1 == v1).map(|s| rig.c(*s)).unwrap();
+            assert_eq!(got, want, "profile {p} t {t}: {i:?}");
+            let o = rig.outputs();
+            assert_eq!(o[0] == 1, got != 0);
+            assert_eq!(o[1] == 1, got == 0x8000);
+            assert_eq!(o[2] == 1, v1 == 0x8002 || v1 == 0x8012);
+            assert_eq!(o[5] == 1, got >= 0xC000);
+            assert!(o[1] == 0 || i.ack, "S_SafetyActive without S_Acknowledge");
+            v1
+        },
+    );
 }
 
 /// SF_SafetyRequest in a group: S_SafetyActive linked to an FB_AND; an acknowledgement
 /// lost (C010) does not stop the group; group STOP halts it.
 #[test]
 fn in_a_group_with_a_link() {
-    let mut w = WithAnd::new(
-        SL_TYPE_SF_SAFETYREQUEST,
+    let mut w = WithAnd::of(
         SF_SafetyRequest {
             MonitoringTime: 100,
             ..Default::default()
         },
-        safelogic::ffi::sl_sf_safetyrequest_init,
-        core::mem::offset_of!(SF_SafetyRequest, S_SafetyActive),
+        "S_SafetyActive",
     );
     w.fb.Activate = 1;
     w.fb.S_StartReset = 1;
     w.fb.S_Acknowledge = 1;
     w.run(4);
-    assert_eq!((w.fb.DiagCode, w.and.bAndOut), (0x8000, 1));
+    w.expect(0x8000, 1);
     w.fb.S_Acknowledge = 0;
     w.grp.cycle(10);
-    assert_eq!(
-        (w.fb.DiagCode, w.and.bAndOut, w.grp.g.nState),
-        (0xC010, 0, SL_STATE_RUN)
-    );
-    w.grp.g.bRun = 0;
-    assert_eq!(w.grp.cycle(10), SL_OK);
-    assert_eq!((w.fb.DiagCode, w.fb.Ready), (0, 0));
+    w.expect_group(0xC010, 0, SL_STATE_RUN);
+    w.stop_group();
 }

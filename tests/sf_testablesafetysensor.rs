@@ -43,13 +43,12 @@ struct Rig {
 
 impl Rig {
     fn new(profile: u8, t: u32, no_ext: bool) -> Self {
-        let mut fb = SF_TestableSafetySensor {
+        let fb = common::ready(SF_TestableSafetySensor {
             nDiagProfile: profile,
             TestTime: t,
             NoExternalTest: no_ext.into(),
             ..Default::default()
-        };
-        assert_eq!(fb.init(), SL_OK);
+        });
         Self {
             fb,
             now: 30_000,
@@ -449,8 +448,7 @@ fn texts_for_every_diag_code() {
 /// In a group: S_OSSD_Out linked to an FB_AND; a failed test does not stop the group.
 #[test]
 fn in_a_group_with_a_link() {
-    let mut w = WithAnd::new(
-        SL_TYPE_SF_TESTABLESAFETYSENSOR,
+    let mut w = WithAnd::of(
         SF_TestableSafetySensor {
             Activate: 1,
             S_OSSD_In: 1,
@@ -458,11 +456,10 @@ fn in_a_group_with_a_link() {
             TestTime: 50,
             ..Default::default()
         },
-        safelogic::ffi::sl_sf_testablesafetysensor_init,
-        core::mem::offset_of!(SF_TestableSafetySensor, S_OSSD_Out),
+        "S_OSSD_Out",
     );
     w.run(3);
-    assert_eq!((w.fb.DiagCode, w.and.bAndOut), (0x8010, 1));
+    w.expect(0x8010, 1);
     // A test the sensor answers: 8020, 8030 with the output TRUE throughout, 8000.
     w.fb.StartTest = 1;
     w.grp.cycle(10);
@@ -486,7 +483,7 @@ fn in_a_group_with_a_link() {
     for _ in 0..6 {
         w.grp.cycle(10);
     }
-    assert_eq!((w.fb.DiagCode, w.and.bAndOut), (0xC010, 0));
+    w.expect(0xC010, 0);
     assert_eq!(w.grp.g.nState, SL_STATE_RUN);
 }
 
@@ -502,11 +499,8 @@ struct Model {
 
 impl Model {
     fn step(&mut self, i: In, now: u32, t: u32, no_ext: bool) -> u16 {
-        let rt = i.reset && !self.reset;
-        let st = i.start_test && !self.test;
-        self.reset = i.reset;
-        self.test = i.start_test;
-        let held = i.reset && !rt;
+        let (rt, held) = edges(&mut self.reset, i.reset);
+        let (st, _) = edges(&mut self.test, i.start_test);
         let q = now.wrapping_sub(self.since) >= t;
         let o = i.ossd;
         let next = if !i.activate {
@@ -560,37 +554,41 @@ impl Model {
 
 #[test]
 fn random_sequences_agree_with_the_model() {
-    for p in profiles() {
-        let mut rng = Rng(0x5F75_5E50 ^ u64::from(p));
-        let mut reached = BTreeSet::new();
-        for _ in 0..10_000 {
+    let walk = Walk {
+        calls: 48,
+        ..Walk::new(
+            "SF_TestableSafetySensor",
+            0x5F75_5E50,
+            ALL.iter().map(|s| s.0),
+        )
+    };
+    walk.run(
+        |p, _, rng| {
             let t = [0, 20, 60, 150, 151][(rng.next() % 5) as usize];
             let no_ext = rng.next() % 2 == 0;
             let mut rig = Rig::new(p, t, no_ext);
-            let mut model = Model::default();
             rig.i.start_reset = rng.next() % 4 == 0;
             rig.i.auto_reset = rng.next() % 4 == 0;
-            for _ in 0..48 {
-                let r = rng.next();
-                let dt = ((r >> 40) % 30) as u32;
-                let code = rig.at(dt, |i| {
-                    i.activate ^= r % 41 == 0;
-                    // The sensor: mostly follows its test input, sometimes interrupted.
-                    i.ossd = if (r >> 8) % 3 == 0 { !i.ossd } else { i.ossd };
-                    i.start_test ^= (r >> 16) % 4 == 0;
-                    i.reset ^= (r >> 24) % 4 == 0;
-                });
-                let want2 = model.step(rig.i, rig.now, t, no_ext);
-                let want = ALL
-                    .iter()
-                    .find(|s| s.0 == want2)
-                    .map(|s| rig.c(*s))
-                    .unwrap();
-                assert_eq!(code, want, "profile {p} t {t} no_ext {no_ext}");
-                reached.insert(want2);
-            }
-        }
-        let every: BTreeSet<u16> = ALL.iter().map(|s| s.0).collect();
-        assert_eq!(reached, every, "profile {p}: every state reached");
-    }
+            (t, no_ext, rig, Model::default())
+        },
+        |(t, no_ext, rig, model), p, rng| {
+            let r = rng.next();
+            let dt = ((r >> 40) % 30) as u32;
+            let code = rig.at(dt, |i| {
+                i.activate ^= r % 41 == 0;
+                // The sensor: mostly follows its test input, sometimes interrupted.
+                i.ossd = if (r >> 8) % 3 == 0 { !i.ossd } else { i.ossd };
+                i.start_test ^= (r >> 16) % 4 == 0;
+                i.reset ^= (r >> 24) % 4 == 0;
+            });
+            let want2 = model.step(rig.i, rig.now, *t, *no_ext);
+            let want = ALL
+                .iter()
+                .find(|s| s.0 == want2)
+                .map(|s| rig.c(*s))
+                .unwrap();
+            assert_eq!(code, want, "profile {p} t {t} no_ext {no_ext}");
+            want2
+        },
+    );
 }

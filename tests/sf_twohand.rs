@@ -379,12 +379,7 @@ fn type_ii_has_no_synchronism_codes() {
 
 #[test]
 fn in_a_group_with_a_link() {
-    let mut w = WithAnd::new(
-        SL_TYPE_SF_TWOHANDCONTROLTYPEIII,
-        SF_TwoHandControlTypeIII::default(),
-        safelogic::ffi::sl_sf_twohandcontroltypeiii_init,
-        core::mem::offset_of!(SF_TwoHandControlTypeIII, S_TwoHandOut),
-    );
+    let mut w = WithAnd::of(SF_TwoHandControlTypeIII::default(), "S_TwoHandOut");
     w.fb.Activate = 1;
     w.run(3);
     assert_eq!(w.fb.DiagCode, 0x8802);
@@ -392,20 +387,15 @@ fn in_a_group_with_a_link() {
     w.grp.cycle(10);
     w.fb.S_Button2 = 1;
     w.grp.cycle(10);
-    assert_eq!((w.fb.DiagCode, w.and.bAndOut), (0x8000, 1));
+    w.expect(0x8000, 1);
     // Both released, then button 1 alone for 600 ms: the synchronism error, group runs.
     (w.fb.S_Button1, w.fb.S_Button2) = (0, 0);
     w.grp.cycle(10);
     w.fb.S_Button1 = 1;
     w.grp.cycle(10);
     w.grp.cycle(600);
-    assert_eq!(
-        (w.fb.DiagCode, w.and.bAndOut, w.grp.g.nState),
-        (0xC050, 0, SL_STATE_RUN)
-    );
-    w.grp.g.bRun = 0;
-    assert_eq!(w.grp.cycle(10), SL_OK);
-    assert_eq!((w.fb.DiagCode, w.fb.Ready), (0, 0));
+    w.expect_group(0xC050, 0, SL_STATE_RUN);
+    w.stop_group();
 }
 
 /// The model: §4.6's table with the v1.0 codes, written from the research text, plus §4.7's
@@ -467,44 +457,40 @@ impl Model {
 
 fn against_the_model<B: TwoHand>(seed: u64) {
     let states = B::states();
-    for p in profiles() {
-        let mut rng = Rng(seed ^ u64::from(p));
-        let mut reached = BTreeSet::new();
-        for _ in 0..10_000 {
-            let mut rig = Rig::<B>::new(p);
-            let mut model = Model::default();
-            let (mut act, mut b1, mut b2) = (true, false, false);
+    let walk = Walk::new(B::NAME, seed, states.iter().map(|s| s.1));
+    walk.run(
+        |p, _, rng| {
+            let rig = Rig::<B>::new(p);
             let rate = 2 + rng.next() % 6;
-            for _ in 0..40 {
-                let r = rng.next();
-                if r % 29 == 0 {
-                    act = !act;
-                }
-                b1 ^= (r >> 8) % rate == 0;
-                b2 ^= (r >> 16) % rate == 0;
-                let dt = if (r >> 24) % 5 == 0 {
-                    ((r >> 32) % 700) as u32
-                } else {
-                    ((r >> 32) % 120) as u32
-                };
-                rig.fb.apply(act, (b1, b2));
-                rig.now = rig.now.wrapping_add(dt);
-                assert_eq!(rig.fb.cycle(rig.now), SL_OK);
-                let v1 = model.step(act, b1, b2, rig.now, B::TYPE_III);
-                let want = states.iter().find(|s| s.1 == v1).map(|s| rig.c(*s));
-                assert_eq!(Some(rig.fb.code()), want, "{} profile {p}", B::NAME);
-                let o = rig.fb.out();
-                assert_eq!(o[1] == 1, v1 == 0x8000);
-                assert!(
-                    o[1] == 0 || (b1 && b2),
-                    "output TRUE with a button released"
-                );
-                reached.insert(v1);
+            (rig, Model::default(), rate, true, false, false)
+        },
+        |(rig, model, rate, act, b1, b2), p, rng| {
+            let r = rng.next();
+            if r % 29 == 0 {
+                *act = !*act;
             }
-        }
-        let all: BTreeSet<u16> = states.iter().map(|s| s.1).collect();
-        assert_eq!(reached, all, "{} profile {p}: every state reached", B::NAME);
-    }
+            *b1 ^= (r >> 8) % *rate == 0;
+            *b2 ^= (r >> 16) % *rate == 0;
+            let dt = if (r >> 24) % 5 == 0 {
+                ((r >> 32) % 700) as u32
+            } else {
+                ((r >> 32) % 120) as u32
+            };
+            rig.fb.apply(*act, (*b1, *b2));
+            rig.now = rig.now.wrapping_add(dt);
+            assert_eq!(rig.fb.cycle(rig.now), SL_OK);
+            let v1 = model.step(*act, *b1, *b2, rig.now, B::TYPE_III);
+            let want = states.iter().find(|s| s.1 == v1).map(|s| rig.c(*s));
+            assert_eq!(Some(rig.fb.code()), want, "{} profile {p}", B::NAME);
+            let o = rig.fb.out();
+            assert_eq!(o[1] == 1, v1 == 0x8000);
+            assert!(
+                o[1] == 0 || (*b1 && *b2),
+                "output TRUE with a button released"
+            );
+            v1
+        },
+    );
 }
 
 #[test]

@@ -32,13 +32,12 @@ fn sli_has_no_exceeded_state() {
         assert_eq!(state_name(tag, 7), "?");
         assert_eq!(state_name(tag, 3), "SAFE");
     }
-    let mut fb = FB_SLI_UINT {
+    let mut fb = common::ready(FB_SLI_UINT {
         wInputActive: SL_SLI_ACTIVE,
         nLimitPos: 10,
         nLimitNeg: 10,
         ..Default::default()
-    };
-    assert_eq!(fb.init(), SL_OK);
+    });
     (fb.bRun, fb.bSLI) = (1, 1);
     assert_eq!(fb.cycle(0), SL_OK);
     fb.nState = SL_STATE_SLI2_EXCEEDED;
@@ -72,13 +71,12 @@ fn diag_texts() {
 /// negative difference, exact.
 #[test]
 fn unsigned_positions_give_signed_differences() {
-    let mut fb = FB_SLI_UDINT {
+    let mut fb = common::ready(FB_SLI_UDINT {
         wInputActive: SL_SLI_ACTIVE,
         nLimitPos: 5,
         nLimitNeg: 5,
         ..Default::default()
-    };
-    assert_eq!(fb.init(), SL_OK);
+    });
     (fb.bRun, fb.bSLI, fb.nPosition) = (1, 1, 3);
     assert_eq!(fb.cycle(0), SL_OK);
     fb.nPosition = 0;

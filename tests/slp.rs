@@ -4,7 +4,7 @@
 
 mod common;
 
-use common::{state_names, Rng, CORE_STATES, CORE_STATE_NAMES};
+use common::{run_steps, state_names, Rng, CORE_STATES, CORE_STATE_NAMES};
 use safelogic::*;
 
 const VALID: u16 = SL_SLP_ACTIVE_SAFEPOSVALID;
@@ -122,19 +122,20 @@ fn multiturn_leaves_safe_automatically() {
 fn an_invalid_position_is_start() {
     let mut fb = running(0, (0, 0), (0, 10), (0, 5));
     assert_eq!(fb.nState, SL_STATE_RUN);
-    set_pos(&mut fb, 0, (0, 5));
-    assert_eq!(fb.cycle(1), SL_OK);
-    assert_eq!((fb.nState, outs(&fb)), (SL_STATE_START, (0, 0, 0, 0)));
-    set_pos(&mut fb, 1, (0, 5));
-    assert_eq!(fb.cycle(2), SL_OK);
+    let start = Some((SL_STATE_START, (0, 0, 0, 0)));
+    let all = |f: &FB_SLP| (f.nState, outs(f));
+    #[rustfmt::skip]
+    run_steps("invalid", &mut fb, all, &[
+        (1, |f| set_pos(f, 0, (0, 5)), SL_OK, start, ""),
+        (2, |f| set_pos(f, 1, (0, 5)), SL_OK, None, "RUN, below"),
+    ]);
     assert_eq!(fb.nState, SL_STATE_RUN);
-    set_pos(&mut fb, 2, (0, 5));
-    assert_eq!(fb.cycle(3), SL_E_INVALID_BOOL);
-    assert_eq!((fb.nState, outs(&fb)), (SL_STATE_START, (0, 0, 0, 0)));
-    // Outside the limits too: START, not SAFE.
-    set_pos(&mut fb, 0, (5, 5));
-    assert_eq!(fb.cycle(4), SL_OK);
-    assert_eq!((fb.nState, outs(&fb)), (SL_STATE_START, (0, 0, 0, 0)));
+    #[rustfmt::skip]
+    run_steps("invalid byte", &mut fb, all, &[
+        (3, |f| set_pos(f, 2, (0, 5)), SL_E_INVALID_BOOL, start, ""),
+        // Outside the limits too: START, not SAFE.
+        (4, |f| set_pos(f, 0, (5, 5)), SL_OK, start, ""),
+    ]);
 }
 
 /// STOP "If the input FbRun=FALSE": every output 0; a zeroed instance waits in STOP.
@@ -161,25 +162,21 @@ fn live_multiturn_crossing_is_error_40d0_until_acknowledged() {
     assert_eq!(fb.cycle(0), SL_OK);
     assert_eq!((fb.nState, outs(&fb)), (SL_STATE_ERROR, (1, 0, 0, 0)));
     assert_eq!(message(&fb), (1, 0x40D0, (-3i32) as u32, (-4i32) as u32));
-    // Still crossing: the acknowledgement is ignored.
-    fb.bErrAck = 1;
-    assert_eq!(fb.cycle(1), SL_OK);
-    assert_eq!(fb.nState, SL_STATE_ERROR);
-    fb.bErrAck = 0;
-    assert_eq!(fb.cycle(2), SL_OK);
-    set_limit_inputs(&mut fb, (0, 0), (-3, 5));
-    assert_eq!(fb.cycle(3), SL_OK);
-    assert_eq!(
-        fb.nState, SL_STATE_ERROR,
-        "an error is left only through RESET"
-    );
-    fb.bErrAck = 1;
-    assert_eq!(fb.cycle(4), SL_OK);
-    assert_eq!((fb.nState, outs(&fb)), (SL_STATE_RESET, (0, 0, 0, 0)));
-    assert_eq!(message(&fb), (0, 0, 0, 0));
-    fb.bErrAck = 0;
-    assert_eq!(fb.cycle(5), SL_OK);
-    assert_eq!((fb.nState, outs(&fb)), (SL_STATE_RUN, (0, 1, 0, 0)));
+    #[rustfmt::skip]
+    run_steps("crossing", &mut fb, |f| f.nState, &[
+        // Still crossing: the acknowledgement is ignored.
+        (1, |f| f.bErrAck = 1, SL_OK, Some(SL_STATE_ERROR), ""),
+        (2, |f| f.bErrAck = 0, SL_OK, None, ""),
+        (3, |f| set_limit_inputs(f, (0, 0), (-3, 5)), SL_OK, Some(SL_STATE_ERROR), "an error is left only through RESET"),
+    ]);
+    #[rustfmt::skip]
+    run_steps("acknowledged", &mut fb, |f| (f.nState, outs(f), message(f)), &[
+        (4, |f| f.bErrAck = 1, SL_OK, Some((SL_STATE_RESET, (0, 0, 0, 0), (0, 0, 0, 0))), "message cleared"),
+    ]);
+    #[rustfmt::skip]
+    run_steps("running again", &mut fb, |f| (f.nState, outs(f)), &[
+        (5, |f| f.bErrAck = 0, SL_OK, Some((SL_STATE_RUN, (0, 1, 0, 0))), ""),
+    ]);
 }
 
 /// ERROR 0x40D1: multi-turn, LL_Active, equal multi-turn parts and SingleturnPos_LL >
@@ -450,8 +447,10 @@ fn pos(rng: &mut Rng) -> Pos {
 #[test]
 fn random_sequences_match_the_model() {
     let mut rng = Rng(0x051F_C0DE);
-    let mut reached = std::collections::BTreeSet::new();
-    let mut texts = std::collections::BTreeSet::new();
+    let (mut reached, mut texts) = (
+        std::collections::BTreeSet::new(),
+        std::collections::BTreeSet::new(),
+    );
     let mut invalid_calls = 0u32;
     for seq in 0..12_000 {
         let single = seq % 3 == 0;

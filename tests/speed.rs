@@ -29,15 +29,11 @@ macro_rules! speed_tests {
             use super::*;
 
             type Fb = $ty;
-            const LO: i128 = <$t as Analog>::MIN;
-            const HI: i128 = <$t as Analog>::MAX;
+            crate::common::analog_bounds!($t);
             const SIGNED: bool = LO < 0;
             /// 2^W.
             const MODULUS: i128 = HI - LO + 1;
 
-            fn t(v: i128) -> $t {
-                <$t as Analog>::narrow(v.clamp(LO, HI))
-            }
             fn pattern(v: i128) -> u32 {
                 t(v).to_bits()
             }

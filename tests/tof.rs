@@ -4,23 +4,21 @@
 //! STOP switching off at once.
 
 mod common;
+use common::{aligned_tail, null_refused, offsets, run_steps};
 
 use proptest::prelude::*;
 use safelogic::base::member::Member;
 use safelogic::ffi;
 use safelogic::*;
-use std::ffi::CStr;
 use std::mem::offset_of;
 
 fn tof(delay: u32, base: u16) -> FB_TOF {
-    let mut f = FB_TOF {
+    common::ready(FB_TOF {
         tDelay: delay,
         nTimeBase: base,
         wInputActive: 1,
         ..Default::default()
-    };
-    assert_eq!(f.init(), SL_OK);
-    f
+    })
 }
 
 /// A TOF in RUN (input TRUE, output TRUE) after calls at `t` and `t + 1`.
@@ -41,24 +39,20 @@ fn st(f: &FB_TOF) -> (u8, u8) {
 
 #[test]
 fn layout_matches_the_abi() {
-    assert_eq!(offset_of!(FB_TOF, bTofIn1), 8);
-    assert_eq!(offset_of!(FB_TOF, bRun), 16);
-    assert_eq!(offset_of!(FB_TOF, bErrAck), 17);
+    offsets!(FB_TOF; bTofIn1 => 8, bRun => 16, bErrAck => 17);
     assert_eq!(offset_of!(FB_TOF, bTofOut) % 8, 1, "output base + 1");
-    assert_eq!(std::mem::size_of::<FB_TOF>() % 8, 0);
-    assert_eq!(offset_of!(FB_TOF, stPrivate) % 8, 0);
+    aligned_tail!(FB_TOF);
 }
 
 #[test]
 fn power_up_is_stop_with_the_output_false() {
-    let mut f = FB_TOF {
+    let mut f = common::ready(FB_TOF {
         tDelay: 100,
         wInputActive: 1,
         bTofIn1: 1,
         bTofOut: 1,
         ..Default::default()
-    };
-    assert_eq!(f.init(), SL_OK);
+    });
     assert_eq!((f.nState, f.bTofOut, f.nDiag), (SL_STATE_STOP, 0, 0));
     assert_eq!(f.cycle(0), SL_OK);
     assert_eq!(st(&f), (SL_STATE_STOP, 0), "bRun FALSE");
@@ -154,14 +148,13 @@ fn stop_switches_off_at_once() {
 
 #[test]
 fn negated_input_is_a_make_contact() {
-    let mut f = FB_TOF {
+    let mut f = common::ready(FB_TOF {
         tDelay: 10,
         wInputActive: 1,
         wInputNegated: 1,
         bRun: 1,
         ..Default::default()
-    };
-    assert_eq!(f.init(), SL_OK);
+    });
     f.cycle(0);
     f.cycle(1);
     assert_eq!(st(&f), (SL_STATE_RUN, 1), "raw FALSE negated is TRUE");
@@ -177,14 +170,13 @@ fn negated_input_is_a_make_contact() {
 #[test]
 fn invalid_bool() {
     for negated in [0u16, 1] {
-        let mut f = FB_TOF {
+        let mut f = common::ready(FB_TOF {
             tDelay: 10,
             wInputActive: 1,
             wInputNegated: negated,
             bRun: 1,
             ..Default::default()
-        };
-        assert_eq!(f.init(), SL_OK);
+        });
         f.bTofIn1 = u8::from(negated == 0);
         f.cycle(0);
         f.cycle(1);
@@ -256,18 +248,18 @@ fn config_errors() {
         (100, 0, 1, 0b10),
     ];
     for (delay, base, active, negated) in bad {
-        let mut f = FB_TOF {
-            tDelay: delay,
-            nTimeBase: base,
-            wInputActive: active,
-            wInputNegated: negated,
-            bTofIn1: 1,
-            bRun: 1,
-            ..Default::default()
-        };
-        assert_eq!(f.init(), SL_E_CONFIG, "{delay} {base} {active} {negated}");
-        assert_eq!(f.cycle(0), SL_E_CONFIG);
-        assert_eq!(f.cycle(1), SL_E_CONFIG);
+        let f = common::refused(
+            FB_TOF {
+                tDelay: delay,
+                nTimeBase: base,
+                wInputActive: active,
+                wInputNegated: negated,
+                bTofIn1: 1,
+                bRun: 1,
+                ..Default::default()
+            },
+            &[0, 1],
+        );
         assert_eq!(st(&f), (SL_STATE_STOP, 0));
     }
 }
@@ -290,63 +282,55 @@ fn time_wraps_across_2_pow_32() {
 #[test]
 fn clock_backwards() {
     let mut f = in_run(100, 0, 1000);
-    f.bTofIn1 = 0;
-    f.cycle(1010);
-    assert_eq!(st(&f), (SL_STATE_DELAYOUT, 1));
-    assert_eq!(f.cycle(1009), SL_E_CLOCK);
-    assert_eq!(st(&f), (SL_STATE_ERROR, 0));
-    assert_eq!(f.nDiag, SL_DIAG_CLOCK);
-    f.bErrAck = 1;
-    f.cycle(1011);
-    assert_eq!(st(&f), (SL_STATE_RESET, 0));
-    f.bErrAck = 0;
-    f.bTofIn1 = 1;
-    f.cycle(1012);
-    assert_eq!(st(&f), (SL_STATE_SAFE, 0));
-    f.cycle(1013);
-    assert_eq!(st(&f), (SL_STATE_RUN, 1));
+    let diag = |f: &FB_TOF| (f.nState, f.bTofOut, f.nDiag);
+    #[rustfmt::skip]
+    run_steps("clock backwards", &mut f, diag, &[
+        (1010, |f| f.bTofIn1 = 0, SL_OK, Some((SL_STATE_DELAYOUT, 1, 0)), ""),
+        (1009, |_| {}, SL_E_CLOCK, Some((SL_STATE_ERROR, 0, SL_DIAG_CLOCK)), ""),
+    ]);
+    #[rustfmt::skip]
+    run_steps("acknowledged", &mut f, st, &[
+        (1011, |f| f.bErrAck = 1, SL_OK, Some((SL_STATE_RESET, 0)), ""),
+        (1012, |f| (f.bErrAck, f.bTofIn1) = (0, 1), SL_OK, Some((SL_STATE_SAFE, 0)), ""),
+        (1013, |_| {}, SL_OK, Some((SL_STATE_RUN, 1)), ""),
+    ]);
 }
 
 /// C5: a changed parameter while running → ERROR (output off at once, also in DELAYOUT).
 #[test]
 fn parameter_change_while_running() {
     let mut f = in_run(100, 0, 0);
-    f.bTofIn1 = 0;
-    f.cycle(5);
-    f.tDelay = 200;
-    assert_eq!(f.cycle(6), SL_E_PARAM_CHANGED);
-    assert_eq!(st(&f), (SL_STATE_ERROR, 0));
-    assert_eq!(f.nDiag, SL_DIAG_PARAM_CHANGED);
+    let diag = |f: &FB_TOF| (f.nState, f.bTofOut, f.nDiag);
+    #[rustfmt::skip]
+    run_steps("changed", &mut f, diag, &[
+        (5, |f| f.bTofIn1 = 0, SL_OK, None, ""),
+        (6, |f| f.tDelay = 200, SL_E_PARAM_CHANGED, Some((SL_STATE_ERROR, 0, SL_DIAG_PARAM_CHANGED)), ""),
+    ]);
     // Stop, then the new delay is latched and acknowledged.
-    f.bRun = 0;
-    f.bErrAck = 1;
-    assert_eq!(f.cycle(7), SL_OK);
-    assert_eq!(f.nState, SL_STATE_RESET);
-    f.bErrAck = 0;
-    f.cycle(8);
-    assert_eq!(f.nState, SL_STATE_STOP);
-    f.bRun = 1;
-    f.bTofIn1 = 1;
-    f.cycle(9);
-    f.cycle(10);
-    f.bTofIn1 = 0;
-    f.cycle(11);
-    f.cycle(210);
-    assert_eq!(st(&f), (SL_STATE_DELAYOUT, 1));
-    f.cycle(211);
-    assert_eq!(st(&f), (SL_STATE_SAFE, 0), "the new 200 ms delay");
+    #[rustfmt::skip]
+    run_steps("stopped", &mut f, |f| f.nState, &[
+        (7, |f| (f.bRun, f.bErrAck) = (0, 1), SL_OK, Some(SL_STATE_RESET), ""),
+        (8, |f| f.bErrAck = 0, SL_OK, Some(SL_STATE_STOP), ""),
+    ]);
+    #[rustfmt::skip]
+    run_steps("restarted", &mut f, st, &[
+        (9, |f| (f.bRun, f.bTofIn1) = (1, 1), SL_OK, None, ""),
+        (10, |_| {}, SL_OK, None, ""),
+        (11, |f| f.bTofIn1 = 0, SL_OK, None, ""),
+        (210, |_| {}, SL_OK, Some((SL_STATE_DELAYOUT, 1)), ""),
+        (211, |_| {}, SL_OK, Some((SL_STATE_SAFE, 0)), "the new 200 ms delay"),
+    ]);
 }
 
 /// T9: a corrupted timer start in DELAYOUT is found before it can prolong the output.
 #[test]
 fn corrupted_timer_start_is_detected() {
     let mut f = in_run(100, 0, 0);
-    f.bTofIn1 = 0;
-    f.cycle(10);
-    f.stPrivate.stHeader.tPhase = 90;
-    assert_eq!(f.cycle(50), SL_E_CORRUPT);
-    assert_eq!(st(&f), (SL_STATE_ERROR, 0));
-    assert_eq!(f.nDiag, SL_DIAG_CORRUPT);
+    #[rustfmt::skip]
+    run_steps("corrupted", &mut f, |f| (f.nState, f.bTofOut, f.nDiag), &[
+        (10, |f| f.bTofIn1 = 0, SL_OK, None, ""),
+        (50, |f| f.stPrivate.stHeader.tPhase = 90, SL_E_CORRUPT, Some((SL_STATE_ERROR, 0, SL_DIAG_CORRUPT)), ""),
+    ]);
 }
 
 #[test]
@@ -359,19 +343,13 @@ fn c_functions_registry_and_member() {
         ..Default::default()
     };
     assert_eq!(unsafe { ffi::sl_tof_init(&mut f) }, SL_OK);
-    assert_eq!(unsafe { ffi::sl_tof_init(std::ptr::null_mut()) }, SL_E_NULL);
-    assert_eq!(
-        unsafe { ffi::sl_tof_cycle(std::ptr::null_mut(), 0) },
-        SL_E_NULL
-    );
+    null_refused!(ffi::sl_tof_init, ffi::sl_tof_cycle);
     assert_eq!(unsafe { ffi::sl_tof_cycle(&mut f, 0) }, SL_OK);
     assert_eq!(unsafe { ffi::sl_tof_cycle(&mut f, 1) }, SL_OK);
     assert_eq!(st(&f), (SL_STATE_RUN, 1));
-    let name = |s: u8| unsafe { CStr::from_ptr(ffi::sl_state_str(SL_TYPE_TOF, s)) };
-    assert_eq!(name(8).to_str(), Ok("DELAYOUT"));
-    assert_eq!(name(1).to_str(), Ok("RUN"));
-    assert_eq!(name(3).to_str(), Ok("SAFE"));
-    assert_eq!(name(9).to_str(), Ok("?"));
+    for (s, n) in [(8, "DELAYOUT"), (1, "RUN"), (3, "SAFE"), (9, "?")] {
+        assert_eq!(common::state_str(SL_TYPE_TOF, s), n, "state {s}");
+    }
     let m: &mut dyn Member = &mut f;
     assert!(m.input_mut(offset_of!(FB_TOF, bTofIn1) as u16).is_some());
     assert_eq!(m.output(offset_of!(FB_TOF, bTofOut) as u16), Some(1));

@@ -3,25 +3,23 @@
 //! validation, wrapping time, clock errors, parameter changes, invalid BOOLs, corruption.
 
 mod common;
+use common::{aligned_tail, null_refused, offsets};
 
 use proptest::prelude::*;
 use safelogic::base::member::Member;
 use safelogic::ffi;
 use safelogic::*;
-use std::ffi::CStr;
 use std::mem::offset_of;
 
 const DELAYIN: u8 = SL_STATE_TON_DELAYIN;
 
 fn ton(delay: u32, base: u16) -> FB_TON {
-    let mut f = FB_TON {
+    common::ready(FB_TON {
         tDelay: delay,
         nTimeBase: base,
         wInputActive: 1,
         ..Default::default()
-    };
-    assert_eq!(f.init(), SL_OK);
-    f
+    })
 }
 
 /// A TON that is running (SAFE) with bRun TRUE after one call at `t`.
@@ -39,13 +37,10 @@ fn st(f: &FB_TON) -> (u8, u8) {
 
 #[test]
 fn layout_matches_the_abi() {
-    assert_eq!(offset_of!(FB_TON, bTonIn1), 8);
-    assert_eq!(offset_of!(FB_TON, bRun), 16);
-    assert_eq!(offset_of!(FB_TON, bErrAck), 17);
+    offsets!(FB_TON; bTonIn1 => 8, bRun => 16, bErrAck => 17);
     assert_eq!(offset_of!(FB_TON, bTonOut) % 8, 1, "output base + 1");
-    assert_eq!(std::mem::size_of::<FB_TON>() % 8, 0);
+    aligned_tail!(FB_TON);
     assert!(std::mem::size_of::<SL_TIMER_PRIVATE>() <= 64);
-    assert_eq!(offset_of!(FB_TON, stPrivate) % 8, 0);
 }
 
 #[test]
@@ -172,15 +167,14 @@ fn run_false_stops_at_once() {
 
 #[test]
 fn negated_input_is_a_make_contact() {
-    let mut f = FB_TON {
+    let mut f = common::ready(FB_TON {
         tDelay: 10,
         wInputActive: 1,
         wInputNegated: 1,
         bTonIn1: 1,
         bRun: 1,
         ..Default::default()
-    };
-    assert_eq!(f.init(), SL_OK);
+    });
     f.cycle(0);
     f.cycle(1);
     assert_eq!(st(&f), (SL_STATE_SAFE, 0), "raw TRUE negated is FALSE");
@@ -195,14 +189,13 @@ fn negated_input_is_a_make_contact() {
 #[test]
 fn invalid_bool() {
     for negated in [0u16, 1] {
-        let mut f = FB_TON {
+        let mut f = common::ready(FB_TON {
             tDelay: 10,
             wInputActive: 1,
             wInputNegated: negated,
             bRun: 1,
             ..Default::default()
-        };
-        assert_eq!(f.init(), SL_OK);
+        });
         let on = u8::from(negated == 0);
         f.bTonIn1 = on;
         f.cycle(0);
@@ -561,23 +554,22 @@ fn c_functions_registry_and_member() {
         ..Default::default()
     };
     assert_eq!(unsafe { ffi::sl_ton_init(&mut f) }, SL_OK);
-    assert_eq!(unsafe { ffi::sl_ton_init(std::ptr::null_mut()) }, SL_E_NULL);
-    assert_eq!(
-        unsafe { ffi::sl_ton_cycle(std::ptr::null_mut(), 0) },
-        SL_E_NULL
-    );
+    null_refused!(ffi::sl_ton_init, ffi::sl_ton_cycle);
     f.bRun = 1;
     f.bTonIn1 = 1;
     assert_eq!(unsafe { ffi::sl_ton_cycle(&mut f, 0) }, SL_OK);
     assert_eq!(unsafe { ffi::sl_ton_cycle(&mut f, 1) }, SL_OK);
     assert_eq!(unsafe { ffi::sl_ton_cycle(&mut f, 11) }, SL_OK);
     assert_eq!(st(&f), (SL_STATE_RUN, 1));
-    let name = |s: u8| unsafe { CStr::from_ptr(ffi::sl_state_str(SL_TYPE_TON, s)) };
-    assert_eq!(name(9).to_str(), Ok("DELAYIN"));
-    assert_eq!(name(1).to_str(), Ok("RUN"));
-    assert_eq!(name(3).to_str(), Ok("SAFE"));
-    assert_eq!(name(4).to_str(), Ok("ERROR"));
-    assert_eq!(name(8).to_str(), Ok("?"));
+    for (s, n) in [
+        (9, "DELAYIN"),
+        (1, "RUN"),
+        (3, "SAFE"),
+        (4, "ERROR"),
+        (8, "?"),
+    ] {
+        assert_eq!(common::state_str(SL_TYPE_TON, s), n, "state {s}");
+    }
     // Member view: the linkable input and output.
     let m: &mut dyn Member = &mut f;
     assert!(m.input_mut(offset_of!(FB_TON, bTonIn1) as u16).is_some());
@@ -589,55 +581,30 @@ fn c_functions_registry_and_member() {
 /// Groups: a TON added by type tag through the C ABI, fed by a link from an AND.
 #[test]
 fn ton_in_a_group() {
-    let mut a = FB_AND {
+    let mut a = common::ready(FB_AND {
         wInputActive: 0b11,
         bAndIn1: 1,
         bAndIn2: 1,
         ..Default::default()
-    };
-    assert_eq!(a.init(), SL_OK);
+    });
     let mut f = ton(50, 0);
     let mut g = SL_GROUP::default();
     let mut members = [SL_MEMBER::default(); 2];
     let mut links = [SL_LINK::default(); 1];
-    assert_eq!(
-        unsafe { ffi::sl_group_init(&mut g, members.as_mut_ptr(), 2, links.as_mut_ptr(), 1) },
-        SL_OK
-    );
-    let add = |g: &mut SL_GROUP, m: &mut [SL_MEMBER], ty, p: *mut std::ffi::c_void| unsafe {
-        ffi::sl_group_add_member(g, m.as_mut_ptr(), ty, p, std::ptr::null_mut())
-    };
-    assert_eq!(
-        add(
-            &mut g,
-            &mut members,
-            SL_TYPE_AND,
-            (&mut a as *mut FB_AND).cast()
-        ),
-        SL_OK
-    );
-    assert_eq!(
-        add(
-            &mut g,
-            &mut members,
-            SL_TYPE_TON,
-            (&mut f as *mut FB_TON).cast()
-        ),
-        SL_OK
-    );
-    assert_eq!(
-        unsafe {
-            ffi::sl_group_add_link(
-                &mut g,
-                members.as_mut_ptr(),
-                links.as_mut_ptr(),
-                0,
-                offset_of!(FB_AND, bAndOut) as u16,
-                1,
-                offset_of!(FB_TON, bTonIn1) as u16,
-            )
-        },
-        SL_OK
+    common::c_group_init(&mut g, (members.as_mut_ptr(), 2), (links.as_mut_ptr(), 1));
+    for (ty, p) in [
+        (SL_TYPE_AND, std::ptr::addr_of_mut!(a).cast()),
+        (SL_TYPE_TON, std::ptr::addr_of_mut!(f).cast()),
+    ] {
+        common::c_add_member(&mut g, members.as_mut_ptr(), ty, p, std::ptr::null_mut());
+    }
+    let (src, dst) = (offset_of!(FB_AND, bAndOut), offset_of!(FB_TON, bTonIn1));
+    common::c_add_link(
+        &mut g,
+        members.as_mut_ptr(),
+        links.as_mut_ptr(),
+        (0, src),
+        (1, dst),
     );
     g.bRun = 1;
     let mut cyc =

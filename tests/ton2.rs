@@ -4,6 +4,7 @@
 //! bit 12), restore sequencing and the integrity checks of the stored value.
 
 mod common;
+use common::{aligned_tail, null_refused, offsets};
 
 use proptest::prelude::*;
 use safelogic::base::member::Member;
@@ -47,13 +48,9 @@ fn cyc(f: &mut FB_TON2, t: u32) -> i32 {
 
 #[test]
 fn layout_matches_the_abi() {
-    assert_eq!(offset_of!(FB_TON2, bTonIn1), 8);
-    assert_eq!(offset_of!(FB_TON2, bEnable), 9);
-    assert_eq!(offset_of!(FB_TON2, bRun), 16);
-    assert_eq!(offset_of!(FB_TON2, bErrAck), 17);
+    offsets!(FB_TON2; bTonIn1 => 8, bEnable => 9, bRun => 16, bErrAck => 17);
     assert_eq!(offset_of!(FB_TON2, bTonOut) % 8, 1, "output base + 1");
-    assert_eq!(std::mem::size_of::<FB_TON2>() % 8, 0);
-    assert_eq!(offset_of!(FB_TON2, stPrivate) % 8, 0);
+    aligned_tail!(FB_TON2);
     assert_eq!(SL_OPT_TON2_REMAINING_TIME, 1 << 8);
     assert_eq!((SL_TYPE_TON2, SL_E_RESTORE), (14, -10));
     assert_eq!(SL_DIAG_TON2_RESTORE, 1 << 12);
@@ -259,12 +256,7 @@ fn restored_value_above_the_delay_is_refused() {
     assert_eq!(elapsed(&f), 0, "discarded");
     let text = unsafe { CStr::from_ptr(ffi::sl_status_str(SL_E_RESTORE)) };
     assert!(text.to_str().unwrap().starts_with("SL_E_RESTORE"));
-    let mut buf = [0i8; 128];
-    assert_eq!(
-        unsafe { ffi::sl_diag_text(SL_TYPE_TON2, f.nDiag, buf.as_mut_ptr().cast(), buf.len()) },
-        SL_OK
-    );
-    let diag = unsafe { CStr::from_ptr(buf.as_ptr()) }.to_str().unwrap();
+    let diag = common::diag_text(SL_TYPE_TON2, f.nDiag);
     assert!(diag.contains("0x3510"), "{diag}");
     // ERROR also with bRun FALSE; acknowledged, then STOP → run as usual.
     f.bRun = 1;
@@ -607,21 +599,14 @@ fn parameter_change_registry_and_member() {
         ((SL_STATE_ERROR, 0), SL_DIAG_PARAM_CHANGED)
     );
     assert_eq!(elapsed(&f), 300);
-    let name = |s: u8| unsafe { CStr::from_ptr(ffi::sl_state_str(SL_TYPE_TON2, s)) };
-    assert_eq!(name(9).to_str(), Ok("DELAYIN"));
-    assert_eq!(name(2).to_str(), Ok("STOP"));
+    for (s, n) in [(9, "DELAYIN"), (2, "STOP")] {
+        assert_eq!(common::state_str(SL_TYPE_TON2, s), n, "state {s}");
+    }
     let m: &mut dyn Member = &mut f;
     assert!(m.input_mut(offset_of!(FB_TON2, bTonIn1) as u16).is_some());
     assert!(m.input_mut(offset_of!(FB_TON2, bEnable) as u16).is_some());
     assert_eq!(m.output(offset_of!(FB_TON2, bTonOut) as u16), Some(0));
-    assert_eq!(
-        unsafe { ffi::sl_ton2_init(std::ptr::null_mut()) },
-        SL_E_NULL
-    );
-    assert_eq!(
-        unsafe { ffi::sl_ton2_cycle(std::ptr::null_mut(), 0) },
-        SL_E_NULL
-    );
+    null_refused!(ffi::sl_ton2_init, ffi::sl_ton2_cycle);
 }
 
 common::property! {
@@ -695,19 +680,14 @@ common::property! {
 #[test]
 fn refused_restore_stops_the_group() {
     use safelogic::group::{self, SL_GROUP_DIAG_FBERROR};
-    let mut tof = FB_TOF {
+    let mut tof = common::ready(FB_TOF {
         tDelay: 1000,
         wInputActive: 1,
         bTofIn1: 1,
         ..Default::default()
-    };
-    assert_eq!(tof.init(), SL_OK);
+    });
     let mut f = ton2(1000, REMAINING);
-    let mut g = SL_GROUP::default();
-    assert_eq!(group::init(&mut g, 2, 0), SL_OK);
-    for _ in 0..2 {
-        group::reserve_member(&mut g).unwrap();
-    }
+    let mut g = common::new_group(2, 0);
     assert_eq!(
         unsafe { ffi::sl_ton2_restore_elapsed(&mut f, 5000) },
         SL_E_RESTORE

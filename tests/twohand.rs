@@ -5,6 +5,7 @@
 //! Expected values come from the manual, the ABI and semantics.md.
 
 mod common;
+use common::{aligned_tail, null_refused, offsets, output_base};
 
 use proptest::prelude::*;
 use safelogic::group::{self, Member};
@@ -100,15 +101,10 @@ fn assert_error(b: &FB_TWOHAND, diag: u16) {
 
 #[test]
 fn layout_matches_the_abi() {
-    assert_eq!(offset_of!(FB_TWOHAND, bTwoHand1), 8);
-    assert_eq!(offset_of!(FB_TWOHAND, bTwoHand4), 11);
-    assert_eq!(offset_of!(FB_TWOHAND, bRun), 16);
-    assert_eq!(offset_of!(FB_TWOHAND, bErrAck), 17);
-    let base = offset_of!(FB_TWOHAND, bError);
-    assert_eq!(base % 8, 0);
-    assert_eq!(offset_of!(FB_TWOHAND, bTwoHandOut) - base, 1);
-    assert_eq!(offset_of!(FB_TWOHAND, stPrivate) % 8, 0);
-    assert_eq!(size_of::<FB_TWOHAND>() % 8, 0);
+    offsets!(FB_TWOHAND; bTwoHand1 => 8, bTwoHand4 => 11, bRun => 16, bErrAck => 17);
+    let base = output_base!(FB_TWOHAND);
+    offsets!(FB_TWOHAND, from base; bTwoHandOut => 1);
+    aligned_tail!(FB_TWOHAND);
     assert!(size_of::<SL_TWOHAND_PRIVATE>() <= 64);
     assert_eq!(SL_TYPE_TWOHAND, 8);
     assert_eq!((ONE, TWO, REL), (11, 12, 13));
@@ -852,14 +848,7 @@ fn c_functions() {
     unsafe { ffi::sl_twohand_cycle(&mut b, 1) };
     unsafe { ffi::sl_twohand_cycle(&mut b, 2) };
     assert_eq!(st(&b), (SL_STATE_RUN, 0, 1));
-    assert_eq!(
-        unsafe { ffi::sl_twohand_init(std::ptr::null_mut()) },
-        SL_E_NULL
-    );
-    assert_eq!(
-        unsafe { ffi::sl_twohand_cycle(std::ptr::null_mut(), 0) },
-        SL_E_NULL
-    );
+    null_refused!(ffi::sl_twohand_init, ffi::sl_twohand_cycle);
     let info = safelogic::registry::info(SL_TYPE_TWOHAND).unwrap();
     assert_eq!(info.name, "TWOHAND");
     let states: Vec<(u8, &str)> = info.states.to_vec();
@@ -879,19 +868,7 @@ fn c_functions() {
     for (v, n) in info.states {
         assert_eq!(ffi::sl_state_str(SL_TYPE_TWOHAND, *v), n.as_ptr().cast());
     }
-    let text = |d: u16| {
-        let mut buf = [0i8; 256];
-        assert_eq!(
-            unsafe { ffi::sl_diag_text(SL_TYPE_TWOHAND, d, buf.as_mut_ptr().cast(), buf.len()) },
-            SL_OK
-        );
-        let v: Vec<u8> = buf
-            .iter()
-            .map(|&c| c as u8)
-            .take_while(|&c| c != 0)
-            .collect();
-        String::from_utf8(v).unwrap()
-    };
+    let text = |d: u16| common::diag_text(SL_TYPE_TWOHAND, d);
     // §4.7.2 diag table: bits 0, 1, 2, 6, 8, 9, 10 have texts; others are library or "bit n".
     assert_eq!(text(SL_DIAG_DISC1), "discrepancy error input pair 1");
     assert_eq!(text(SL_DIAG_DISC2), "discrepancy error input pair 2");
@@ -918,25 +895,20 @@ fn c_functions() {
 #[test]
 fn twohand_error_stops_the_group_and_members_dispatch_by_tag() {
     let mut th = twohand(cfg(SINGLE));
-    let mut o = FB_OPMODE {
+    let mut o = common::ready(FB_OPMODE {
         wInputActive: 0b11,
         bOpIn1: 1,
         ..Default::default()
-    };
-    assert_eq!(o.init(), SL_OK);
-    let mut g = SL_GROUP::default();
-    assert_eq!(group::init(&mut g, 2, 1), SL_OK);
-    group::reserve_member(&mut g).unwrap();
-    group::reserve_member(&mut g).unwrap();
+    });
+    let mut g = common::new_group(2, 1);
     let mut links = [SL_LINK::default(); 1];
     // TwoHandOut -> OpIn2: a link into another block's input.
-    let l = SL_LINK {
-        nSrcMember: 1,
-        nSrcOffset: offset_of!(FB_TWOHAND, bTwoHandOut) as u16,
-        nDstMember: 0,
-        nDstOffset: offset_of!(FB_OPMODE, bOpIn2) as u16,
-        ..Default::default()
-    };
+    let l = common::link(
+        1,
+        offset_of!(FB_TWOHAND, bTwoHandOut) as u16,
+        0,
+        offset_of!(FB_OPMODE, bOpIn2) as u16,
+    );
     {
         let mut ms: [&mut dyn Member; 2] = [&mut o, &mut th];
         assert_eq!(group::add_link(&mut g, &mut ms[..], &mut links, l), SL_OK);
@@ -967,9 +939,10 @@ fn twohand_error_stops_the_group_and_members_dispatch_by_tag() {
 
     let mut members = [SL_MEMBER::default(); 1];
     let mut g2 = SL_GROUP::default();
-    assert_eq!(
-        unsafe { ffi::sl_group_init(&mut g2, members.as_mut_ptr(), 1, std::ptr::null_mut(), 0) },
-        SL_OK
+    common::c_group_init(
+        &mut g2,
+        (members.as_mut_ptr(), 1),
+        (std::ptr::null_mut(), 0),
     );
     let mut th2 = twohand(cfg(SINGLE));
     assert_eq!(

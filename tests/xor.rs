@@ -4,20 +4,19 @@
 
 mod common;
 use common::state_name;
+use common::{aligned_tail, null_refused, offsets, run_steps};
 
 use proptest::prelude::*;
 use safelogic::ffi;
 use safelogic::group::{self, Member};
 use safelogic::*;
-use std::mem::{offset_of, size_of};
+use std::mem::offset_of;
 
 fn xor(active: u16) -> FB_XOR {
-    let mut x = FB_XOR {
+    common::ready(FB_XOR {
         wInputActive: active,
         ..Default::default()
-    };
-    assert_eq!(x.init(), SL_OK);
-    x
+    })
 }
 
 /// Sets input 1 / input 2 of XOR function y (1-based).
@@ -51,34 +50,30 @@ fn outs(x: &FB_XOR) -> [u8; 8] {
 #[test]
 fn layout_is_the_abi() {
     // ABI §9: bXor1In1 (0), bXor2In1 (1), bXor1In2 (2) … bXor2In8 (15); outputs at +8…+15.
-    assert_eq!(offset_of!(FB_XOR, bXor1In1), 0);
-    assert_eq!(offset_of!(FB_XOR, bXor2In1), 1);
-    assert_eq!(offset_of!(FB_XOR, bXor1In2), 2);
-    assert_eq!(offset_of!(FB_XOR, bXor2In2), 3);
-    assert_eq!(offset_of!(FB_XOR, bXor1In5), 8);
-    assert_eq!(offset_of!(FB_XOR, bXor1In8), 14);
-    assert_eq!(offset_of!(FB_XOR, bXor2In8), 15);
-    assert_eq!(offset_of!(FB_XOR, bRun), 16);
-    assert_eq!(offset_of!(FB_XOR, bErrAck), 17);
+    offsets!(FB_XOR;
+        bXor1In1 => 0,
+        bXor2In1 => 1,
+        bXor1In2 => 2,
+        bXor2In2 => 3,
+        bXor1In5 => 8,
+        bXor1In8 => 14,
+        bXor2In8 => 15,
+        bRun => 16,
+        bErrAck => 17,
+    );
     let base = 24;
     assert_eq!(base % 8, 0);
-    for (k, off) in [
-        offset_of!(FB_XOR, bXorOut1),
-        offset_of!(FB_XOR, bXorOut2),
-        offset_of!(FB_XOR, bXorOut3),
-        offset_of!(FB_XOR, bXorOut4),
-        offset_of!(FB_XOR, bXorOut5),
-        offset_of!(FB_XOR, bXorOut6),
-        offset_of!(FB_XOR, bXorOut7),
-        offset_of!(FB_XOR, bXorOut8),
-    ]
-    .into_iter()
-    .enumerate()
-    {
-        assert_eq!(off, base + 8 + k, "bXorOut{}", k + 1);
-    }
-    assert_eq!(offset_of!(FB_XOR, stPrivate) % 8, 0);
-    assert_eq!(size_of::<FB_XOR>() % 8, 0);
+    offsets!(FB_XOR, from base;
+        bXorOut1 => 8,
+        bXorOut2 => 9,
+        bXorOut3 => 10,
+        bXorOut4 => 11,
+        bXorOut5 => 12,
+        bXorOut6 => 13,
+        bXorOut7 => 14,
+        bXorOut8 => 15,
+    );
+    aligned_tail!(FB_XOR);
 }
 
 #[test]
@@ -202,11 +197,13 @@ fn invalid_run_reads_false() {
 #[test]
 fn configuration_errors() {
     for active in [0u16, 0x100, 0x8001, 0xFFFF] {
-        let mut x = FB_XOR {
-            wInputActive: active,
-            ..Default::default()
-        };
-        assert_eq!(x.init(), SL_E_CONFIG, "wInputActive {active:#x}");
+        let mut x = common::refused(
+            FB_XOR {
+                wInputActive: active,
+                ..Default::default()
+            },
+            &[],
+        );
         assert_eq!((x.nState, outs(&x)), (SL_STATE_STOP, [0; 8]));
         x.bRun = 1;
         set(&mut x, 1, 1, 0);
@@ -241,26 +238,25 @@ fn parameter_change_while_running() {
     let mut x = xor(0b11);
     x.bRun = 1;
     set(&mut x, 1, 1, 0);
-    x.cycle(0);
-    assert_eq!(x.bXorOut1, 1);
-    x.wInputActive = 0b111;
-    assert_eq!(x.cycle(1), SL_E_PARAM_CHANGED);
-    assert_eq!((x.nState, outs(&x)), (SL_STATE_ERROR, [0; 8]));
-    assert_eq!(x.nDiag, SL_DIAG_PARAM_CHANGED);
-    // The change remains: no acknowledgement.
-    x.bErrAck = 1;
-    assert_eq!(x.cycle(2), SL_E_PARAM_CHANGED);
-    assert_eq!(x.nState, SL_STATE_ERROR);
-    x.bErrAck = 0;
-    x.wInputActive = 0b11;
-    assert_eq!(x.cycle(3), SL_OK);
-    assert_eq!(x.nState, SL_STATE_ERROR);
-    x.bErrAck = 1;
-    x.cycle(4);
-    assert_eq!((x.nState, x.nDiag, outs(&x)), (SL_STATE_RESET, 0, [0; 8]));
-    x.bErrAck = 0;
-    x.cycle(5);
-    assert_eq!((x.nState, x.bXorOut1), (SL_STATE_RUN, 1));
+    let all = |x: &FB_XOR| (x.nState, x.nDiag, outs(x));
+    #[rustfmt::skip]
+    run_steps("running", &mut x, |x| x.bXorOut1, &[(0, |_| {}, SL_OK, Some(1), "")]);
+    #[rustfmt::skip]
+    run_steps("changed", &mut x, all, &[
+        (1, |x| x.wInputActive = 0b111, SL_E_PARAM_CHANGED, Some((SL_STATE_ERROR, SL_DIAG_PARAM_CHANGED, [0; 8])), ""),
+    ]);
+    #[rustfmt::skip]
+    run_steps("no acknowledgement", &mut x, |x| x.nState, &[
+        // The change remains: no acknowledgement.
+        (2, |x| x.bErrAck = 1, SL_E_PARAM_CHANGED, Some(SL_STATE_ERROR), ""),
+        (3, |x| (x.bErrAck, x.wInputActive) = (0, 0b11), SL_OK, Some(SL_STATE_ERROR), ""),
+    ]);
+    #[rustfmt::skip]
+    run_steps("acknowledged", &mut x, all, &[(4, |x| x.bErrAck = 1, SL_OK, Some((SL_STATE_RESET, 0, [0; 8])), "")]);
+    #[rustfmt::skip]
+    run_steps("RUN again", &mut x, |x| (x.nState, x.bXorOut1), &[
+        (5, |x| x.bErrAck = 0, SL_OK, Some((SL_STATE_RUN, 1)), ""),
+    ]);
 }
 
 #[test]
@@ -304,23 +300,16 @@ fn clock_backwards() {
 #[test]
 fn errack_held_through_the_error_needs_a_new_edge() {
     let mut x = xor(0b1);
-    x.bRun = 1;
-    x.bErrAck = 1;
-    x.cycle(100);
-    assert_eq!(x.cycle(50), SL_E_CLOCK);
-    x.cycle(51);
-    assert_eq!(x.nState, SL_STATE_ERROR);
-    x.bErrAck = 0;
-    x.cycle(52);
-    assert_eq!(x.nState, SL_STATE_ERROR);
-    x.bErrAck = 1;
-    x.cycle(53);
-    assert_eq!(x.nState, SL_STATE_RESET);
-    // RESET left to STOP when Run is FALSE (C9).
-    x.bRun = 0;
-    x.bErrAck = 0;
-    x.cycle(54);
-    assert_eq!(x.nState, SL_STATE_STOP);
+    #[rustfmt::skip]
+    run_steps("ErrAck held", &mut x, |x| x.nState, &[
+        (100, |x| (x.bRun, x.bErrAck) = (1, 1), SL_OK, None, ""),
+        (50, |_| {}, SL_E_CLOCK, None, ""),
+        (51, |_| {}, SL_OK, Some(SL_STATE_ERROR), ""),
+        (52, |x| x.bErrAck = 0, SL_OK, Some(SL_STATE_ERROR), ""),
+        (53, |x| x.bErrAck = 1, SL_OK, Some(SL_STATE_RESET), ""),
+        // RESET left to STOP when Run is FALSE (C9).
+        (54, |x| (x.bRun, x.bErrAck) = (0, 0), SL_OK, Some(SL_STATE_STOP), ""),
+    ]);
 }
 
 #[test]
@@ -337,11 +326,7 @@ fn corrupt_private_state() {
 
 #[test]
 fn c_functions_state_names_and_group_membership() {
-    assert_eq!(unsafe { ffi::sl_xor_init(std::ptr::null_mut()) }, SL_E_NULL);
-    assert_eq!(
-        unsafe { ffi::sl_xor_cycle(std::ptr::null_mut(), 0) },
-        SL_E_NULL
-    );
+    null_refused!(ffi::sl_xor_init, ffi::sl_xor_cycle);
     let mut x = FB_XOR {
         wInputActive: 1,
         bXor1In1: 1,
@@ -365,55 +350,35 @@ fn c_functions_state_names_and_group_membership() {
     let mut g = SL_GROUP::default();
     let mut members = [SL_MEMBER::default(); 2];
     let mut links = [SL_LINK::default(); 1];
-    let mut y = FB_XOR {
+    let mut y = common::ready(FB_XOR {
         wInputActive: 1,
         ..Default::default()
-    };
-    assert_eq!(y.init(), SL_OK);
-    assert_eq!(
-        unsafe { ffi::sl_group_init(&mut g, members.as_mut_ptr(), 2, links.as_mut_ptr(), 1) },
-        SL_OK
-    );
+    });
+    common::c_group_init(&mut g, (members.as_mut_ptr(), 2), (links.as_mut_ptr(), 1));
     let mut idx = 0xFFFF;
-    assert_eq!(
-        unsafe {
-            ffi::sl_group_add_member(
-                &mut g,
-                members.as_mut_ptr(),
-                SL_TYPE_XOR,
-                std::ptr::addr_of_mut!(x).cast(),
-                &mut idx,
-            )
-        },
-        SL_OK
+    common::c_add_member(
+        &mut g,
+        members.as_mut_ptr(),
+        SL_TYPE_XOR,
+        std::ptr::addr_of_mut!(x).cast(),
+        &mut idx,
     );
     assert_eq!(idx, 0);
-    assert_eq!(
-        unsafe {
-            ffi::sl_group_add_member(
-                &mut g,
-                members.as_mut_ptr(),
-                SL_TYPE_XOR,
-                std::ptr::addr_of_mut!(y).cast(),
-                &mut idx,
-            )
-        },
-        SL_OK
+    common::c_add_member(
+        &mut g,
+        members.as_mut_ptr(),
+        SL_TYPE_XOR,
+        std::ptr::addr_of_mut!(y).cast(),
+        &mut idx,
     );
     // XorOut1 of member 0 feeds Xor1In1 of member 1.
-    assert_eq!(
-        unsafe {
-            ffi::sl_group_add_link(
-                &mut g,
-                members.as_mut_ptr(),
-                links.as_mut_ptr(),
-                0,
-                offset_of!(FB_XOR, bXorOut1) as u16,
-                1,
-                offset_of!(FB_XOR, bXor1In1) as u16,
-            )
-        },
-        SL_OK
+    let (src, dst) = (offset_of!(FB_XOR, bXorOut1), offset_of!(FB_XOR, bXor1In1));
+    common::c_add_link(
+        &mut g,
+        members.as_mut_ptr(),
+        links.as_mut_ptr(),
+        (0, src),
+        (1, dst),
     );
     g.bRun = 1;
     x.bXor1In1 = 1;

@@ -144,3 +144,79 @@ impl<T> WithAnd<T> {
         }
     }
 }
+
+/// A PLCopen block's type code, C init and the outputs every PLCopen block has, for
+/// [`WithAnd`].
+pub trait SfMember: Sized {
+    const TYPE: u16;
+    const INIT: unsafe extern "C" fn(*mut Self) -> i32;
+    fn diag_code(&self) -> u16;
+    fn ready(&self) -> u8;
+}
+
+macro_rules! sf_member {
+    ($($t:ident = $ty:ident, $init:ident;)*) => {
+        $(impl SfMember for $t {
+            const TYPE: u16 = $ty;
+            const INIT: unsafe extern "C" fn(*mut Self) -> i32 = $init;
+            fn diag_code(&self) -> u16 {
+                self.DiagCode
+            }
+            fn ready(&self) -> u8 {
+                self.Ready
+            }
+        })*
+    };
+}
+
+sf_member! {
+    SF_EmergencyStop = SL_TYPE_SF_EMERGENCYSTOP, sl_sf_emergencystop_init;
+    SF_EnableSwitch = SL_TYPE_SF_ENABLESWITCH, sl_sf_enableswitch_init;
+    SF_Guard = SL_TYPE_SF_GUARD, sl_sf_guard_init;
+    SF_ModeSelector = SL_TYPE_SF_MODESELECTOR, sl_sf_modeselector_init;
+    SF_SafetyRequest = SL_TYPE_SF_SAFETYREQUEST, sl_sf_safetyrequest_init;
+    SF_TestableSafetySensor = SL_TYPE_SF_TESTABLESAFETYSENSOR, sl_sf_testablesafetysensor_init;
+    SF_TwoHandControlTypeIII = SL_TYPE_SF_TWOHANDCONTROLTYPEIII, sl_sf_twohandcontroltypeiii_init;
+}
+
+impl<T: SfMember> WithAnd<T> {
+    /// [`Self::new`] with the block's type code and C init; `out` names its safety output
+    /// as the registry lists it.
+    #[track_caller]
+    pub fn of(fb: T, out: &str) -> Self {
+        Self::new(T::TYPE, fb, T::INIT, field(T::TYPE, out).into())
+    }
+
+    /// The block's DiagCode and the AND's output (the value the link carried).
+    #[track_caller]
+    pub fn expect(&self, code: u16, and_out: u8) {
+        assert_eq!(
+            (self.fb.diag_code(), self.and.bAndOut),
+            (code, and_out),
+            "(DiagCode, AND output)"
+        );
+    }
+
+    /// As [`Self::expect`], and the group's state: a PLCopen error leaves the group running.
+    #[track_caller]
+    pub fn expect_group(&self, code: u16, and_out: u8, group: u8) {
+        assert_eq!(
+            (self.fb.diag_code(), self.and.bAndOut, self.grp.g.nState),
+            (code, and_out, group),
+            "(DiagCode, AND output, group state)"
+        );
+    }
+
+    /// Group STOP (its FbRun FALSE): the call returns SL_OK and halts the block, DiagCode
+    /// 0000 and Ready FALSE.
+    #[track_caller]
+    pub fn stop_group(&mut self) {
+        self.grp.g.bRun = 0;
+        assert_eq!(self.grp.cycle(10), SL_OK, "group STOP");
+        assert_eq!(
+            (self.fb.diag_code(), self.fb.ready()),
+            (0, 0),
+            "(DiagCode, Ready) after the group's STOP"
+        );
+    }
+}

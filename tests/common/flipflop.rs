@@ -163,53 +163,18 @@ macro_rules! flipflop_shared_tests {
             assert_eq!(state_name($ty, SL_STATE_RUN), "?");
 
             // An AND feeds Set: the block as a group member through the C API.
-            let mut a = FB_AND {
-                wInputActive: 0b11,
-                ..Default::default()
-            };
-            assert_eq!(a.init(), SL_OK);
+            let mut a = common::ready(FB_AND { wInputActive: 0b11, ..Default::default() });
             let mut g = SL_GROUP::default();
             let mut members = [SL_MEMBER::default(); 2];
             let mut links = [SL_LINK::default(); 1];
-            assert_eq!(
-                unsafe { ffi::sl_group_init(&mut g, members.as_mut_ptr(), 2, links.as_mut_ptr(), 1) },
-                SL_OK
-            );
+            common::c_group_init(&mut g, (members.as_mut_ptr(), 2), (links.as_mut_ptr(), 1));
             let null = std::ptr::null_mut();
-            let tm = members.as_mut_ptr();
-            assert_eq!(
-                unsafe { ffi::sl_group_add_member(
-                    &mut g,
-                    tm,
-                    SL_TYPE_AND,
-                    std::ptr::addr_of_mut!(a).cast(),
-                    null
-                ) },
-                SL_OK
-            );
-            let tm = members.as_mut_ptr();
-            assert_eq!(
-                unsafe { ffi::sl_group_add_member(
-                    &mut g,
-                    tm,
-                    $ty,
-                    std::ptr::addr_of_mut!(b).cast(),
-                    null
-                ) },
-                SL_OK
-            );
-            assert_eq!(
-                unsafe { ffi::sl_group_add_link(
-                    &mut g,
-                    members.as_mut_ptr(),
-                    links.as_mut_ptr(),
-                    0,
-                    offset_of!(FB_AND, bAndOut) as u16,
-                    1,
-                    offset_of!($fb, bSet) as u16
-                ) },
-                SL_OK
-            );
+            let and = std::ptr::addr_of_mut!(a).cast();
+            common::c_add_member(&mut g, members.as_mut_ptr(), SL_TYPE_AND, and, null);
+            let fb = std::ptr::addr_of_mut!(b).cast();
+            common::c_add_member(&mut g, members.as_mut_ptr(), $ty, fb, null);
+            let (src, dst) = (offset_of!(FB_AND, bAndOut), offset_of!($fb, bSet));
+            common::c_add_link(&mut g, members.as_mut_ptr(), links.as_mut_ptr(), (0, src), (1, dst));
             g.bRun = 1;
             c_group_cycle!(g, members, links, 0; a, b);
             assert_eq!((b.nState, b.$out), (SL_STATE_SAFE, 0));
@@ -232,4 +197,30 @@ macro_rules! flipflop_shared_tests {
             assert!(mb.output(offset_of!($fb, $out) as u16).is_some());
         }
     };
+}
+
+/// A row of a flip-flop step table: the Run, Reset and Set bytes, the status, the state and
+/// the output (`None`: not checked in this row), and what the row shows.
+pub type Step = (u8, u8, u8, i32, Option<u8>, Option<u8>, &'static str);
+
+/// One call of a step table: (Run, Reset, Set) written, the call at a time, and its status
+/// with (state, output).
+pub type Io<B> = fn(&mut B, [u8; 3], u32) -> (i32, u8, u8);
+
+/// Runs a flip-flop step table, each call 10 ms after the last: `io` writes (Run, Reset,
+/// Set) into the block and returns its (state, output) after the call at `t`. A failure
+/// names the row and its note.
+#[track_caller]
+pub fn walk<B>(b: &mut B, t: &mut u32, io: Io<B>, rows: &[Step]) {
+    for (k, &(run, reset, set, rc, state, out, note)) in rows.iter().enumerate() {
+        *t += 10;
+        let (got, s, o) = io(b, [run, reset, set], *t);
+        assert_eq!(got, rc, "row {k} (t {t}): status; {note}");
+        if let Some(state) = state {
+            assert_eq!(s, state, "row {k} (t {t}): state; {note}");
+        }
+        if let Some(out) = out {
+            assert_eq!(o, out, "row {k} (t {t}): output; {note}");
+        }
+    }
 }

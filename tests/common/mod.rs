@@ -102,106 +102,91 @@ pub trait Guard: FunctionBlock + Clone + std::fmt::Debug {
     fn restart(&self) -> u8;
 }
 
-impl Guard for FB_ESTOP {
-    fn state(&self) -> u8 {
-        self.nState
-    }
-    fn diag(&self) -> u16 {
-        self.nDiag
-    }
-    fn outs(&self) -> [u8; 3] {
-        [self.bError, self.bEStopOut, self.bEStopDelOut]
-    }
-    fn set_restart(&mut self, v: u8) {
-        self.bRestart = v;
-    }
-    fn set_run(&mut self, v: u8) {
-        self.bRun = v;
-    }
-    fn set_errack(&mut self, v: u8) {
-        self.bErrAck = v;
-    }
-    fn set_edm(&mut self, x: usize, v: u8) {
-        match x {
-            1 => self.bEDM1 = v,
-            2 => self.bEDM2 = v,
-            _ => panic!("EDM{x}"),
+/// [`Guard`] for a guard block: its outputs [Error, `$out`, `$del`] and the accessor `$input`
+/// of its safety inputs.
+macro_rules! guard {
+    ($fb:ty, $out:ident, $del:ident, $input:ident) => {
+        impl Guard for $fb {
+            fn state(&self) -> u8 {
+                self.nState
+            }
+            fn diag(&self) -> u16 {
+                self.nDiag
+            }
+            fn outs(&self) -> [u8; 3] {
+                [self.bError, self.$out, self.$del]
+            }
+            fn set_restart(&mut self, v: u8) {
+                self.bRestart = v;
+            }
+            fn set_run(&mut self, v: u8) {
+                self.bRun = v;
+            }
+            fn set_errack(&mut self, v: u8) {
+                self.bErrAck = v;
+            }
+            fn set_edm(&mut self, x: usize, v: u8) {
+                match x {
+                    1 => self.bEDM1 = v,
+                    2 => self.bEDM2 = v,
+                    _ => panic!("EDM{x}"),
+                }
+            }
+            fn set_in(&mut self, i: usize, v: u8) {
+                *$input(self, i) = v;
+            }
+            fn get_in(&self, i: usize) -> u8 {
+                let mut c = *self;
+                *$input(&mut c, i)
+            }
+            fn restart(&self) -> u8 {
+                self.bRestart
+            }
         }
-    }
-    fn set_in(&mut self, i: usize, v: u8) {
-        *estop_in(self, i) = v;
-    }
-    fn get_in(&self, i: usize) -> u8 {
-        let mut c = *self;
-        *estop_in(&mut c, i)
-    }
-    fn restart(&self) -> u8 {
-        self.bRestart
-    }
+    };
 }
+
+guard!(FB_ESTOP, bEStopOut, bEStopDelOut, estop_in);
+guard!(FB_MON, bMonOut, bMonDelOut, mon_in);
 
 fn estop_in(fb: &mut FB_ESTOP, i: usize) -> &mut u8 {
-    match i {
-        0 => &mut fb.bEStopIn1,
-        1 => &mut fb.bEStopIn2,
-        2 => &mut fb.bEStopIn3,
-        3 => &mut fb.bEStopIn4,
-        4 => &mut fb.bEStopIn5,
-        5 => &mut fb.bEStopIn6,
-        6 => &mut fb.bEStopIn7,
-        7 => &mut fb.bEStopIn8,
-        _ => panic!("EStopIn{}", i + 1),
-    }
+    nth_in(
+        [
+            &mut fb.bEStopIn1,
+            &mut fb.bEStopIn2,
+            &mut fb.bEStopIn3,
+            &mut fb.bEStopIn4,
+            &mut fb.bEStopIn5,
+            &mut fb.bEStopIn6,
+            &mut fb.bEStopIn7,
+            &mut fb.bEStopIn8,
+        ],
+        i,
+        "ESTOP",
+    )
 }
 
-impl Guard for FB_MON {
-    fn state(&self) -> u8 {
-        self.nState
-    }
-    fn diag(&self) -> u16 {
-        self.nDiag
-    }
-    fn outs(&self) -> [u8; 3] {
-        [self.bError, self.bMonOut, self.bMonDelOut]
-    }
-    fn set_restart(&mut self, v: u8) {
-        self.bRestart = v;
-    }
-    fn set_run(&mut self, v: u8) {
-        self.bRun = v;
-    }
-    fn set_errack(&mut self, v: u8) {
-        self.bErrAck = v;
-    }
-    fn set_edm(&mut self, x: usize, v: u8) {
-        match x {
-            1 => self.bEDM1 = v,
-            2 => self.bEDM2 = v,
-            _ => panic!("EDM{x}"),
-        }
-    }
-    fn set_in(&mut self, i: usize, v: u8) {
-        *mon_in(self, i) = v;
-    }
-    fn get_in(&self, i: usize) -> u8 {
-        let mut c = *self;
-        *mon_in(&mut c, i)
-    }
-    fn restart(&self) -> u8 {
-        self.bRestart
-    }
+/// Safety input `i` of a block whose inputs are `ins` (a panic past the end names the block).
+fn nth_in<'a, const N: usize>(ins: [&'a mut u8; N], i: usize, block: &str) -> &'a mut u8 {
+    ins.into_iter()
+        .nth(i)
+        .unwrap_or_else(|| panic!("{block} has no safety input {i}"))
 }
 
+/// MonIn1…MonIn4, then Secure1, Secure2.
 fn mon_in(fb: &mut FB_MON, i: usize) -> &mut u8 {
-    match i {
-        0 => &mut fb.bMonIn1,
-        1 => &mut fb.bMonIn2,
-        2 => &mut fb.bMonIn3,
-        3 => &mut fb.bMonIn4,
-        4 => &mut fb.bSecure1,
-        5 => &mut fb.bSecure2,
-        _ => panic!("MON input {i}"),
-    }
+    nth_in(
+        [
+            &mut fb.bMonIn1,
+            &mut fb.bMonIn2,
+            &mut fb.bMonIn3,
+            &mut fb.bMonIn4,
+            &mut fb.bSecure1,
+            &mut fb.bSecure2,
+        ],
+        i,
+        "MON",
+    )
 }
 
 /// Index of Secure1 / Secure2 in the MON input order (wInputActive bits 4, 5).
@@ -211,34 +196,110 @@ pub const SECURE2: usize = 5;
 /// An FB_ESTOP with `active` inputs as break contacts, all of them TRUE (no request),
 /// EDM bytes TRUE (contactors released), bRun TRUE, everything else zero.
 pub fn estop(active: u16) -> FB_ESTOP {
-    let mut fb = FB_ESTOP {
-        wInputActive: active,
-        bRun: 1,
-        bEDM1: 1,
-        bEDM2: 1,
-        ..Default::default()
-    };
-    for i in 0..8 {
-        fb.set_in(i, u8::from(active & (1 << i) != 0));
-    }
-    fb
+    closed(
+        FB_ESTOP {
+            wInputActive: active,
+            bRun: 1,
+            bEDM1: 1,
+            bEDM2: 1,
+            ..Default::default()
+        },
+        active,
+        8,
+    )
 }
 
 /// An FB_MON with `active` inputs (bits 0-3 MonIn, 4-5 Secure) as break contacts, all TRUE,
 /// EDM bytes TRUE, bRun TRUE, `options` as given.
 pub fn mon(active: u16, options: u32) -> FB_MON {
-    let mut fb = FB_MON {
-        wInputActive: active,
-        dwOptions: options,
-        bRun: 1,
-        bEDM1: 1,
-        bEDM2: 1,
-        ..Default::default()
-    };
-    for i in 0..6 {
+    closed(
+        FB_MON {
+            wInputActive: active,
+            dwOptions: options,
+            bRun: 1,
+            bEDM1: 1,
+            bEDM2: 1,
+            ..Default::default()
+        },
+        active,
+        6,
+    )
+}
+
+/// `fb` with each of its `n` safety inputs TRUE where `active` has the input's bit.
+fn closed<B: Guard>(mut fb: B, active: u16, n: usize) -> B {
+    for i in 0..n {
         fb.set_in(i, u8::from(active & (1 << i) != 0));
     }
     fb
+}
+
+/// `fb` after its `init` accepted the parameters (SL_OK, semantics C1).
+#[track_caller]
+pub fn ready<B: FunctionBlock + std::fmt::Debug>(mut fb: B) -> B {
+    assert_eq!(fb.init(), SL_OK, "init refused the parameters: {fb:?}");
+    fb
+}
+
+/// `fb` after its `init` refused the parameters (SL_E_CONFIG) and every call at `times`
+/// returned SL_E_CONFIG too; a failure shows the block.
+#[track_caller]
+pub fn refused<B: FunctionBlock + std::fmt::Debug>(mut fb: B, times: &[u32]) -> B {
+    assert_eq!(
+        fb.init(),
+        SL_E_CONFIG,
+        "init accepted the parameters: {fb:?}"
+    );
+    for &t in times {
+        assert_eq!(fb.cycle(t), SL_E_CONFIG, "call at {t}: {fb:?}");
+    }
+    fb
+}
+
+/// A group (Rust API) with tables for `members` and `links`, its `members` slots reserved
+/// in order.
+#[track_caller]
+pub fn new_group(members: usize, links: u16) -> SL_GROUP {
+    let mut g = SL_GROUP::default();
+    assert_eq!(safelogic::group::init(&mut g, members as u16, links), SL_OK);
+    for i in 0..members {
+        assert_eq!(safelogic::group::reserve_member(&mut g), Ok(i as u16));
+    }
+    g
+}
+
+/// A BOOL link from member `src` at offset `so` to member `dst` at offset `d`.
+pub fn link(src: u16, so: u16, dst: u16, d: u16) -> SL_LINK {
+    SL_LINK {
+        nSrcMember: src,
+        nSrcOffset: so,
+        nDstMember: dst,
+        nDstOffset: d,
+        ..Default::default()
+    }
+}
+
+/// One row of a step table: the call's time, the inputs set before it, the status it must
+/// return, the outputs it must leave (`None`: not checked in this row) and what it shows.
+pub type Row<B, O> = (u32, fn(&mut B), i32, Option<O>, &'static str);
+
+/// Runs a step table on `fb`: each row sets its inputs, calls the block at its time and
+/// checks the status and the outputs (`outs`). A failure names the table, the row's index
+/// and time, and its note.
+#[track_caller]
+pub fn run_steps<B: FunctionBlock, O: PartialEq + std::fmt::Debug>(
+    name: &str,
+    fb: &mut B,
+    outs: impl Fn(&B) -> O,
+    rows: &[Row<B, O>],
+) {
+    for (k, (t, set, rc, want, note)) in rows.iter().enumerate() {
+        set(fb);
+        assert_eq!(fb.cycle(*t), *rc, "{name} row {k} (t {t}): status; {note}");
+        if let Some(want) = want {
+            assert_eq!(&outs(fb), want, "{name} row {k} (t {t}): {note}");
+        }
+    }
 }
 
 /// A block and its clock.
@@ -441,6 +502,115 @@ macro_rules! property {
 #[allow(unused_imports)]
 pub(crate) use property;
 
+/// ABI §9 layout: `offsets!(FB_X; bIn1 => 8, bRun => 16)` asserts each field at its offset;
+/// `offsets!(FB_X, from base; bOut => 1)` each field at its distance from `base`. A failure
+/// names the block and the field.
+// Every test crate includes this module; not all of them check a layout.
+#[allow(unused_macros)]
+macro_rules! offsets {
+    ($t:ty; $($f:ident => $n:expr),* $(,)?) => {
+        $(assert_eq!(
+            std::mem::offset_of!($t, $f),
+            $n,
+            concat!(stringify!($t), ".", stringify!($f))
+        );)*
+    };
+    ($t:ty, from $base:ident; $($f:ident => $n:expr),* $(,)?) => {
+        $(assert_eq!(
+            std::mem::offset_of!($t, $f) - $base,
+            $n,
+            concat!(stringify!($t), ".", stringify!($f), " from the output base")
+        );)*
+    };
+}
+#[allow(unused_imports)]
+pub(crate) use offsets;
+
+/// ABI §9: the offset of `bError`, the base of the outputs, a multiple of 8 bytes.
+// Every test crate includes this module; not all of them check a layout.
+#[allow(unused_macros)]
+macro_rules! output_base {
+    ($t:ty) => {{
+        let base = std::mem::offset_of!($t, bError);
+        assert_eq!(base % 8, 0, concat!("output base of ", stringify!($t)));
+        base
+    }};
+}
+#[allow(unused_imports)]
+pub(crate) use output_base;
+
+/// In an analog test module: `LO` and `HI`, the bounds of the value type `$t`, and `t(v)`,
+/// `v` clamped into it (the caller has `Analog` in scope).
+// Every test crate includes this module; not all of them test an analog block.
+#[allow(unused_macros)]
+macro_rules! analog_bounds {
+    ($t:ty) => {
+        const LO: i128 = <$t as Analog>::MIN;
+        const HI: i128 = <$t as Analog>::MAX;
+
+        fn t(v: i128) -> $t {
+            <$t as Analog>::narrow(v.clamp(LO, HI))
+        }
+    };
+}
+#[allow(unused_imports)]
+pub(crate) use analog_bounds;
+
+/// `Deref` / `DerefMut` of the one-field wrapper `$name` to its block `$ty`.
+// Every test crate includes this module; not all of them wrap a block.
+#[allow(unused_macros)]
+macro_rules! deref_to {
+    ($name:ident, $ty:ty) => {
+        impl std::ops::Deref for $name {
+            type Target = $ty;
+            fn deref(&self) -> &$ty {
+                &self.0
+            }
+        }
+        impl std::ops::DerefMut for $name {
+            fn deref_mut(&mut self) -> &mut $ty {
+                &mut self.0
+            }
+        }
+    };
+}
+#[allow(unused_imports)]
+pub(crate) use deref_to;
+
+/// ABI §5: a block's C `init` and `cycle` refuse a NULL block with SL_E_NULL.
+// Every test crate includes this module; not all of them call the C functions.
+#[allow(unused_macros)]
+macro_rules! null_refused {
+    ($init:path, $cycle:path) => {
+        // SAFETY: NULL is what the functions must refuse; they dereference nothing.
+        assert_eq!(
+            unsafe { $init(std::ptr::null_mut()) },
+            SL_E_NULL,
+            stringify!($init)
+        );
+        // SAFETY: as above.
+        assert_eq!(
+            unsafe { $cycle(std::ptr::null_mut(), 0) },
+            SL_E_NULL,
+            stringify!($cycle)
+        );
+    };
+}
+#[allow(unused_imports)]
+pub(crate) use null_refused;
+
+/// ABI §9: the private state `stPrivate` and the block's size are multiples of 8 bytes.
+// Every test crate includes this module; not all of them check a layout.
+#[allow(unused_macros)]
+macro_rules! aligned_tail {
+    ($t:ty) => {
+        assert_eq!(std::mem::offset_of!($t, stPrivate) % 8, 0, stringify!($t));
+        assert_eq!(std::mem::size_of::<$t>() % 8, 0, stringify!($t));
+    };
+}
+#[allow(unused_imports)]
+pub(crate) use aligned_tail;
+
 /// The states recorded since the last call, and a fresh start.
 pub fn reached_reset() -> u64 {
     REACHED.with(|r| r.replace(0))
@@ -461,12 +631,13 @@ pub fn depth_cases(n: u32) -> u32 {
 }
 
 pub mod cgroup;
+pub mod fsoe;
 pub mod plcopen;
 
 /// The text `sl_diag_text` writes for `code` of block type `ty` (the call must return SL_OK).
 #[track_caller]
 pub fn diag_text(ty: u16, code: u16) -> String {
-    let mut buf = [0 as std::ffi::c_char; 256];
+    let mut buf = [0 as std::ffi::c_char; 512];
     // SAFETY: a writable buffer of the stated length.
     let rc = unsafe { safelogic::ffi::sl_diag_text(ty, code, buf.as_mut_ptr(), buf.len()) };
     assert_eq!(rc, SL_OK, "sl_diag_text({ty}, {code:#06x})");
@@ -486,12 +657,67 @@ pub const CORE_STATES: [u8; 5] = [
     SL_STATE_RESET,
 ];
 
+/// The text `sl_state_str` returns for `state` of block type `ty`.
+pub fn state_str(ty: u16, state: u8) -> &'static str {
+    // SAFETY: sl_state_str returns a static NUL-terminated string for every input.
+    unsafe { std::ffi::CStr::from_ptr(safelogic::ffi::sl_state_str(ty, state)) }
+        .to_str()
+        .unwrap()
+}
+
 /// Name of a state through the C function `sl_state_str`.
 pub fn state_name(ty: u16, state: u8) -> &'static str {
     let p = safelogic::ffi::sl_state_str(ty, state);
     safelogic::registry::info(ty)
         .and_then(|b| b.states.iter().find(|(_, n)| n.as_ptr().cast() == p))
         .map_or("?", |(_, n)| n.trim_end_matches('\0'))
+}
+
+/// `sl_group_init` on the test's own tables, each given with its number of entries (must
+/// return SL_OK).
+#[track_caller]
+pub fn c_group_init(
+    g: &mut SL_GROUP,
+    (ms, n): (*mut SL_MEMBER, u16),
+    (ls, m): (*mut SL_LINK, u16),
+) {
+    // SAFETY: the test's own group and tables, holding at least the stated counts.
+    assert_eq!(
+        unsafe { safelogic::ffi::sl_group_init(g, ms, n, ls, m) },
+        SL_OK,
+        "sl_group_init"
+    );
+}
+
+/// `sl_group_add_member` of the block at `block` as type `ty`, its index into `idx` unless
+/// NULL (must return SL_OK).
+#[track_caller]
+pub fn c_add_member(
+    g: &mut SL_GROUP,
+    members: *mut SL_MEMBER,
+    ty: u16,
+    block: *mut std::ffi::c_void,
+    idx: *mut u16,
+) {
+    // SAFETY: the test's own group and member table; `block` is a live block of type `ty`.
+    let rc = unsafe { safelogic::ffi::sl_group_add_member(g, members, ty, block, idx) };
+    assert_eq!(rc, SL_OK, "sl_group_add_member type {ty}");
+}
+
+/// `sl_group_add_link` from member `src` at `so` to member `dst` at `d` (must return SL_OK).
+#[track_caller]
+pub fn c_add_link(
+    g: &mut SL_GROUP,
+    members: *mut SL_MEMBER,
+    links: *mut SL_LINK,
+    (src, so): (u16, usize),
+    (dst, d): (u16, usize),
+) {
+    // SAFETY: the test's own group and tables.
+    let rc = unsafe {
+        safelogic::ffi::sl_group_add_link(g, members, links, src, so as u16, dst, d as u16)
+    };
+    assert_eq!(rc, SL_OK, "sl_group_add_link {src}@{so} -> {dst}@{d}");
 }
 
 /// One group cycle through the C API. The member table gets fresh pointers to the blocks
