@@ -25,6 +25,11 @@
 #define SL_VERSION_PATCH 0
 
 /*
+ The longest sentence `sl_reason_text` writes (bytes, without the NUL).
+ */
+#define SL_REASON_TEXT_MAX 256
+
+/*
  First type tag of the PLCopen family.
  */
 #define SF_TAG_BASE 512
@@ -39,6 +44,12 @@
  FB_CONNECTION_SHUTDOWN (`sl_group_add_member` refuses more with SL_E_FULL).
  */
 #define SL_GROUP_CONN_MAX 16
+
+/*
+ The documented library reason codes: one per kind of rule, for a refusal the manual has
+ no Text ID for (docs/c-integration.md lists them).
+ */
+#define SL_REASON_CODE_BASE 57344
 
 /*
  `nDiagProfile` 0: the PLCopen v2.01 DiagCodes (default).
@@ -12946,6 +12957,26 @@ int32_t sl_group_cycle(struct SL_GROUP *g, struct SL_MEMBER *aMembers, struct SL
  `buf` is NULL or points to at least `nLen` writable bytes.
  */
 int32_t sl_diag_text(uint16_t nType, uint16_t nDiag, char *buf, size_t nLen);
+
+/*
+ Writes why the block `pBlock` of type `nType` (`SL_TYPE_<NAME>`) refuses its parameters,
+ as one NUL-terminated sentence naming the field, the rule and the offending values
+ ("TWOHAND: tDiscTimePairs (3000 ms) must be <= 500 ms [reason 0xE001]", "LIMIT_INT:
+ nMinimumValue (5) must be <= nMaximumValue (3) [Text ID 0x4090]"), truncated to `nLen`
+ bytes including the NUL. The rules are evaluated again on the struct as it is now (the
+ block's live parameters; nothing is stored by the init or cycle calls). With valid
+ parameters and the block in an error state: the latched diag ("LIMIT_INT: ERROR:
+ MinValue is greater than MaxValue [Text ID 0x4090, Par2 5, Par3 3]"; a PLCopen block:
+ its DiagCode and text); otherwise "<NAME>: no refusal". The codes in brackets are the
+ manual's Text IDs or the library reason codes of docs/c-integration.md. For an HMI or a
+ log after SL_E_CONFIG. SL_OK; SL_E_CONFIG for an unknown type (buf then holds "");
+ SL_E_NULL for a NULL buf or pBlock; SL_E_ALIGNMENT for a misaligned pBlock.
+
+ # Safety
+ `buf` is NULL or points to at least `nLen` writable bytes; `pBlock` is NULL or points to
+ a live instance of the type `nType` names that nobody writes during the call.
+ */
+int32_t sl_reason_text(uint16_t nType, const void *pBlock, char *buf, size_t nLen);
 
 /*
  Validates and latches the parameters of an FSoE connection (ABI-2 §13.1) and resets it

@@ -15,6 +15,7 @@ pub mod envelope;
 pub mod header;
 pub mod member;
 pub mod pair;
+pub mod reason;
 pub mod restart;
 pub mod sf;
 pub mod time;

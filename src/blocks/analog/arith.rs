@@ -14,6 +14,7 @@
 
 #![allow(non_camel_case_types)] // the ABI's names (FB_ADD_INT …)
 
+use crate::base::reason::{when, Rule, RuleDef, Unit};
 use super::{diag_message, magic, Analog, SL_DIAG_VALUE_OVERFLOW, SL_DIAG_VALUE_UNDERFLOW};
 use crate::base::block::BlockInfo;
 use crate::base::block::FieldType;
@@ -541,9 +542,14 @@ impl<B: ArithFb + crate::base::envelope::Instance + crate::base::block::Register
             rounding: p.wRounding,
         }
     }
-    fn params_valid(p: &ArithParams) -> bool {
-        p.active == ARITH_ACTIVE && p.rounding <= SL_ROUNDING_ROUND
-    }
+    const RULES: &'static [RuleDef<ArithParams>] = &[
+        RuleDef::new("wInputActive", Rule::Equals, Unit::Hex, |p| {
+            when(p.active != ARITH_ACTIVE, p.active, ARITH_ACTIVE)
+        }),
+        RuleDef::new("nRounding", Rule::AtMost, Unit::Plain, |p| {
+            when(p.rounding > SL_ROUNDING_ROUND, p.rounding, SL_ROUNDING_ROUND)
+        }),
+    ];
     fn store_params(&mut self, p: &ArithParams) {
         let q = self.private_mut();
         q.wActive = p.active;

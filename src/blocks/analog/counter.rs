@@ -11,6 +11,7 @@
 
 #![allow(non_camel_case_types)] // the ABI's names (FB_COUNTER_INT …)
 
+use crate::base::reason::{when, Rule, RuleDef, Unit};
 use super::{diag_message, magic, Analog, SL_DIAG_VALUE_OVERFLOW, SL_DIAG_VALUE_UNDERFLOW};
 use crate::base::block::{Private, Registered};
 use crate::base::bools;
@@ -254,9 +255,12 @@ impl<T: Analog, const P1: usize, const P2: usize> Block for FB_COUNTER<T, P1, P2
         }
     }
     /// Bits 0–2 only (ABI-2 §11.5); PresetValue and CounterLimit take every value of `T`.
-    fn params_valid(p: &CounterParams) -> bool {
-        p.active & !SL_COUNTER_ACTIVE_INPUTS == 0
-    }
+    const RULES: &'static [RuleDef<CounterParams>] = &[RuleDef::new(
+        "wInputActive",
+        Rule::NoBitsOutside,
+        Unit::Hex,
+        |p| when(p.active & !SL_COUNTER_ACTIVE_INPUTS != 0, p.active, SL_COUNTER_ACTIVE_INPUTS),
+    )];
     fn store_params(&mut self, p: &CounterParams) {
         let q = self.private_mut();
         q.stHeader.nActive = p.active as u8;

@@ -10,6 +10,7 @@
 
 #![allow(non_camel_case_types)] // the ABI's names (FB_VIOLATIONCOUNTER_UINT …)
 
+use crate::base::reason::{when, Rule, RuleDef, Unit};
 use super::{magic, Unsigned};
 use crate::base::block::{Private, Registered};
 use crate::base::bools;
@@ -220,9 +221,18 @@ impl<T: Unsigned, const P1: usize, const P2: usize> Block for FB_VIOLATIONCOUNTE
         }
     }
     /// Both inputs active, only Input negatable, Counter Limit ≥ 1 (semantics V3).
-    fn params_valid(p: &ViolationParams) -> bool {
-        p.active == SL_VIOLATIONCOUNTER_ACTIVE && p.negated & !1 == 0 && p.values[LIMIT] != 0
-    }
+    const RULES: &'static [RuleDef<ViolationParams>] = &[
+        RuleDef::new("wInputActive", Rule::Equals, Unit::Hex, |p| {
+            let want = SL_VIOLATIONCOUNTER_ACTIVE;
+            when(p.active != want, p.active, want)
+        }),
+        RuleDef::new("wInputNegated", Rule::NoBitsOutside, Unit::Hex, |p| {
+            when(p.negated & !1 != 0, p.negated, 1)
+        }),
+        RuleDef::new("nCounterLimit", Rule::NotZero, Unit::Plain, |p| {
+            when(p.values[LIMIT] == 0, 0, 0)
+        }),
+    ];
     fn store_params(&mut self, p: &ViolationParams) {
         let q = self.private_mut();
         q.stHeader.nActive = p.active as u8;

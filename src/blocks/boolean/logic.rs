@@ -83,12 +83,20 @@ macro_rules! logic_block {
                         negated: u16::from(h.nNegated),
                     }
                 }
-                #[inline(always)]
-                fn params_valid(p: &LogicParams) -> bool {
-                    p.active & !Self::INPUTS == 0
-                        && p.negated & !Self::NEGATABLE == 0
-                        && p.active.count_ones() >= Self::MIN_ACTIVE
-                }
+                const RULES: &'static [$crate::base::reason::RuleDef<LogicParams>] = {
+                    use $crate::base::reason::{when, Rule, RuleDef, Unit};
+                    &[
+                        RuleDef::new("wInputActive", Rule::NoBitsOutside, Unit::Hex, |p| {
+                            when(p.active & !Self::INPUTS != 0, p.active, Self::INPUTS)
+                        }),
+                        RuleDef::new("wInputNegated", Rule::NoBitsOutside, Unit::Hex, |p| {
+                            when(p.negated & !Self::NEGATABLE != 0, p.negated, Self::NEGATABLE)
+                        }),
+                        RuleDef::new("wInputActive", Rule::MinBits, Unit::Hex, |p| {
+                            when(p.active.count_ones() < Self::MIN_ACTIVE, p.active, Self::MIN_ACTIVE)
+                        }),
+                    ]
+                };
                 #[inline(always)]
                 fn store_params(&mut self, p: &LogicParams) {
                     let h = &mut self.private_mut().stHeader;

@@ -9,6 +9,7 @@
 //! selected (the change from one mode to the next); beyond it: ERROR, diag bit 0.
 //! Readings of the manual: docs/semantics.md rows O1–O12.
 
+use crate::base::reason::{when, Rule, RuleDef, Unit};
 use crate::base::block::BlockInfo;
 use crate::base::bools::{self, Edge};
 use crate::base::envelope::Block;
@@ -226,12 +227,20 @@ impl Block for FB_OPMODE {
     }
 
     /// Manual §4.3.1 "At least two inputs of FB OPMODE must be connected"; C6 strictness.
-    fn params_valid(p: &OpmodeParams) -> bool {
-        p.disc <= SL_TIME_PARAM_MAX
-            && p.active & !0xFF == 0
-            && p.active.count_ones() >= 2
-            && p.options & !OPTIONS == 0
-    }
+    const RULES: &'static [RuleDef<OpmodeParams>] = &[
+        RuleDef::new("tDiscTime", Rule::AtMost, Unit::Ms, |p| {
+            when(p.disc > SL_TIME_PARAM_MAX, p.disc, SL_TIME_PARAM_MAX)
+        }),
+        RuleDef::new("wInputActive", Rule::NoBitsOutside, Unit::Hex, |p| {
+            when(p.active & !0xFF != 0, p.active, 0xFF)
+        }),
+        RuleDef::new("wInputActive", Rule::MinBits, Unit::Hex, |p| {
+            when(p.active.count_ones() < 2, p.active, 2)
+        }),
+        RuleDef::new("dwOptions", Rule::NoBitsOutside, Unit::Hex, |p| {
+            when(p.options & !OPTIONS != 0, p.options, OPTIONS)
+        }),
+    ];
 
     fn store_params(&mut self, p: &OpmodeParams) {
         let q = &mut self.stPrivate;

@@ -5,6 +5,7 @@
 //! is refused (SL_E_CONFIG). `ResetRequested` activates the block (it has no `Activate`);
 //! the envelope's R_TRIG of `Reset` runs on `ResetIn` (docs/semantics.md QB1–QB6).
 
+use crate::base::reason::{when, Rule, RuleDef, Unit};
 use crate::base::sf::{ResetIn, SL_SF_PRIVATE};
 use crate::base::time;
 use crate::base::types::SL_BOOL;
@@ -30,11 +31,6 @@ crate::sf_states!(
         ErrTrailMin = 0xC3F0, 0xC3F0, "ERR_TRAIL_MIN", "falling edge of ResetIn before TrailingMinimum elapsed; waiting for a rising edge";
     }
 );
-
-/// The trailing times `[TrailingMinimum, TrailingMaximum]` are usable (C000 otherwise).
-const fn params_valid(t: [u32; 2]) -> bool {
-    t[0] >= SF_RESETBUTTON_MIN_TRAILING && t[0] <= t[1]
-}
 
 /// The transition table of research §4.19 (v2.01 codes), first matching guard wins.
 /// `r` is the R_TRIG of ResetIn; the press runs from the entry into 83F2 (`in_state`, ms);
@@ -104,6 +100,20 @@ impl crate::base::sf::SfBlock for SF_ResetButton {
     type In = ();
     const HAS_V10: bool = false;
     const TIMES: usize = 2;
+    const CONST_RULES: &'static [RuleDef<crate::base::sf::SfConsts>] = &[
+        crate::base::sf::time0_rule("TrailingMinimum"),
+        crate::base::sf::time1_rule("TrailingMaximum"),
+    ];
+    /// The trailing times are usable (C000 otherwise).
+    const PARAM_RULES: &'static [RuleDef<crate::base::sf::SfConsts>] = &[
+        RuleDef::new("TrailingMinimum", Rule::AtLeast, Unit::Ms, |c| {
+            let min = SF_RESETBUTTON_MIN_TRAILING;
+            when(c.times[0] < min, c.times[0], min)
+        }),
+        RuleDef::new("TrailingMinimum", Rule::NotAbove("TrailingMaximum"), Unit::Ms, |c| {
+            when(c.times[0] > c.times[1], c.times[0], c.times[1])
+        }),
+    ];
 
     /// ResetIn runs through the envelope's R_TRIG, evaluated in every call.
     #[inline(always)]
@@ -131,11 +141,7 @@ impl crate::base::sf::SfBlock for SF_ResetButton {
         next(s, reset, in_state, times)
     }
     fn first(times: [u32; 2]) -> Self::Diag {
-        if params_valid(times) {
-            ResetButtonState::WaitRTrig
-        } else {
-            ResetButtonState::ErrParam
-        }
+        crate::base::sf::first_checked::<Self>(times, ResetButtonState::WaitRTrig, ResetButtonState::ErrParam)
     }
     #[inline(always)]
     fn write_outputs(&mut self, o: &crate::base::sf::SfOut) {
