@@ -256,6 +256,29 @@ macro_rules! any_block {
                 }
             }
 
+            /// The first parameter rule the live parameters break (`base::reason`).
+            pub fn refusal(&self) -> Option<crate::base::reason::Refusal> {
+                match self {
+                    $(Self::$ty(b) => $crate::base::block::Cyclic::refusal(b),)*
+                }
+            }
+
+            /// The address of the block (the C struct), for a C function such as
+            /// `sl_reason_text`.
+            pub fn as_ptr(&self) -> *const core::ffi::c_void {
+                match self {
+                    $(Self::$ty(b) => (b as *const $krate::blocks::$fam::$m::$ty).cast(),)*
+                }
+            }
+
+            /// The address of the block, writable (a table parameter such as
+            /// LOADSENSING's rows lies outside the field table).
+            pub fn as_mut_ptr(&mut self) -> *mut core::ffi::c_void {
+                match self {
+                    $(Self::$ty(b) => (b as *mut $krate::blocks::$fam::$m::$ty).cast(),)*
+                }
+            }
+
             /// Why the block refuses or is in error ([`FunctionBlock::reason`]).
             pub fn reason(&self) -> String {
                 match self {

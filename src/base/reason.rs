@@ -431,7 +431,10 @@ mod tests {
         assert_eq!(check(&rules, &(500, -100)), None);
         let r = check(&rules, &(3000, 0)).unwrap();
         assert_eq!(r.index, 0);
-        assert_eq!(sentence(&r), "X: tA (3000 ms) must be <= 500 ms [reason 0xE001]");
+        assert_eq!(
+            sentence(&r),
+            "X: tA (3000 ms) must be <= 500 ms [reason 0xE001]"
+        );
         let r = check(&rules, &(1, -80)).unwrap();
         assert_eq!(
             sentence(&r),

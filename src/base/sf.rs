@@ -314,12 +314,10 @@ static PROFILE_BOTH: RuleDef<SfConsts> = RuleDef::new(
     |c| when(c.profile > SL_SF_PROFILE_V10, c.profile, 0),
 );
 /// `nDiagProfile` of a block that exists in v2.x only.
-static PROFILE_V201: RuleDef<SfConsts> = RuleDef::new(
-    "nDiagProfile",
-    Rule::OneOf("0 (v2.01)"),
-    Unit::Plain,
-    |c| when(c.profile != SL_SF_PROFILE_V201, c.profile, 0),
-);
+static PROFILE_V201: RuleDef<SfConsts> =
+    RuleDef::new("nDiagProfile", Rule::OneOf("0 (v2.01)"), Unit::Plain, |c| {
+        when(c.profile != SL_SF_PROFILE_V201, c.profile, 0)
+    });
 
 /// A time constant (`SfConsts::times[0]`) named `name`: at most [`SL_SF_TIME_MAX`].
 pub const fn time0_rule(name: &'static str) -> RuleDef<SfConsts> {

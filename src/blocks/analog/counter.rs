@@ -11,12 +11,12 @@
 
 #![allow(non_camel_case_types)] // the ABI's names (FB_COUNTER_INT …)
 
-use crate::base::reason::{when, Rule, RuleDef, Unit};
 use super::{diag_message, magic, Analog, SL_DIAG_VALUE_OVERFLOW, SL_DIAG_VALUE_UNDERFLOW};
 use crate::base::block::{Private, Registered};
 use crate::base::bools;
 use crate::base::envelope::Block;
 use crate::base::header::{param_crc, SL_PRIVATE_HEADER};
+use crate::base::reason::{when, Rule, RuleDef, Unit};
 use crate::base::types::*;
 
 /// Type tag of FB_COUNTER_INT (ABI-2 §10.6: after the ten four-variant blocks of §10.3).
@@ -259,7 +259,13 @@ impl<T: Analog, const P1: usize, const P2: usize> Block for FB_COUNTER<T, P1, P2
         "wInputActive",
         Rule::NoBitsOutside,
         Unit::Hex,
-        |p| when(p.active & !SL_COUNTER_ACTIVE_INPUTS != 0, p.active, SL_COUNTER_ACTIVE_INPUTS),
+        |p| {
+            when(
+                p.active & !SL_COUNTER_ACTIVE_INPUTS != 0,
+                p.active,
+                SL_COUNTER_ACTIVE_INPUTS,
+            )
+        },
     )];
     fn store_params(&mut self, p: &CounterParams) {
         let q = self.private_mut();

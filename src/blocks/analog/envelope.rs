@@ -13,12 +13,12 @@
 
 #![allow(non_camel_case_types)] // the ABI's names (FB_ENVELOPE_INT …)
 
-use crate::base::reason::{when, Rule, RuleDef, Unit};
 use super::{diag_message, magic, Analog};
 use crate::base::block::{Private, Registered};
 use crate::base::bools;
 use crate::base::envelope::Block;
 use crate::base::header::{param_crc, SL_PRIVATE_HEADER};
+use crate::base::reason::{when, Rule, RuleDef, Unit};
 use crate::base::time;
 use crate::base::types::*;
 

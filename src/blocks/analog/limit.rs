@@ -11,12 +11,12 @@
 
 #![allow(non_camel_case_types)] // the ABI's names (FB_LIMIT_INT …)
 
-use crate::base::header::F_CFG_INVALID;
-use crate::base::reason::{check, when, Rule, RuleDef, Unit};
 use super::{diag_message, magic, Analog};
 use crate::base::block::{Private, Registered};
 use crate::base::envelope::Block;
+use crate::base::header::F_CFG_INVALID;
 use crate::base::header::{param_crc, SL_PRIVATE_HEADER};
+use crate::base::reason::{check, when, Rule, RuleDef, Unit};
 use crate::base::types::*;
 
 /// Type tag of FB_LIMIT_INT (ABI-2 §10.6: sequential from 16 in the order of §10.3).
@@ -247,24 +247,29 @@ impl<T: Analog, const P1: usize> Block for FB_LIMIT<T, P1> {
         }
     }
     /// AnalogIn active, no bit beyond 8–10 (ABI-2 §10.5); both limits from the parameters
-    /// with Minimum > Maximum is a parameter-only check (ABI-2 §12.8, semantics L2).
-    /// AnalogIn active, no bit beyond 8–10 (ABI-2 §10.5); both limits from the parameters
     /// with Minimum > Maximum is a parameter-only check (ABI-2 §12.8, semantics L2), with the
     /// manual's Text ID 0x4090.
     const RULES: &'static [RuleDef<LimitParams>] = &[
         RuleDef::new("wInputActive", Rule::NoBitsOutside, Unit::Hex, |p| {
-            let known = SL_LIMIT_ACTIVE_ANALOGIN | SL_LIMIT_ACTIVE_MINVALUE | SL_LIMIT_ACTIVE_MAXVALUE;
+            let known =
+                SL_LIMIT_ACTIVE_ANALOGIN | SL_LIMIT_ACTIVE_MINVALUE | SL_LIMIT_ACTIVE_MAXVALUE;
             when(p.active & !known != 0, p.active, known)
         }),
         RuleDef::new("wInputActive", Rule::BitsSet, Unit::Hex, |p| {
             let need = SL_LIMIT_ACTIVE_ANALOGIN;
             when(p.active & need == 0, p.active, need)
         }),
-        RuleDef::new("nMinimumValue", Rule::NotAbove("nMaximumValue"), Unit::Plain, |p| {
-            let [min, max] = min_max::<T>(p);
-            let from_params = p.active & (SL_LIMIT_ACTIVE_MINVALUE | SL_LIMIT_ACTIVE_MAXVALUE) == 0;
-            when(from_params && min > max, min, max)
-        })
+        RuleDef::new(
+            "nMinimumValue",
+            Rule::NotAbove("nMaximumValue"),
+            Unit::Plain,
+            |p| {
+                let [min, max] = min_max::<T>(p);
+                let from_params =
+                    p.active & (SL_LIMIT_ACTIVE_MINVALUE | SL_LIMIT_ACTIVE_MAXVALUE) == 0;
+                when(from_params && min > max, min, max)
+            },
+        )
         .text_id(SL_TEXT_LIMIT_MIN_ABOVE_MAX),
     ];
     fn store_params(&mut self, p: &LimitParams) {
@@ -361,7 +366,7 @@ impl<T: Analog, const P1: usize> Block for FB_LIMIT<T, P1> {
             p.adwPar,
         );
         // Refused because Minimum > Maximum from the parameters: the manual's message with
-        // its diag value, as in ERROR (ABI-2 §12.8, semantics L2, CM13).
+        // its diag value, as in ERROR (ABI-2 §12.8, semantics L2, C15).
         if h.nState == SL_STATE_STOP && h.flag(F_CFG_INVALID) {
             let refusal = check(Self::RULES, &self.latched_params());
             if let Some(r) = refusal.filter(|r| r.info.text_id == SL_TEXT_LIMIT_MIN_ABOVE_MAX) {

@@ -12,11 +12,11 @@
 
 #![allow(non_camel_case_types)] // the ABI's names (FB_LOADSENSING_INT …)
 
-use crate::base::reason::{when, Hit, Rule, RuleDef, Unit};
 use super::{magic, Analog};
 use crate::base::block::{Private, Registered};
 use crate::base::envelope::Block;
 use crate::base::header::{param_crc, SL_PRIVATE_HEADER};
+use crate::base::reason::{when, Hit, Rule, RuleDef, Unit};
 use crate::base::types::*;
 
 /// Type tag of FB_LOADSENSING_INT (ABI-2 §10.6: sequential from 16 in the order of §10.3).
@@ -391,39 +391,56 @@ impl<T: Analog, const P1: usize, const PR: usize> Block for FB_LOADSENSING<T, P1
             let known = SL_OPT_LOADSENSING_OUTSIDE;
             when(p.options & !known != 0, p.options, known)
         }),
-        RuleDef::new("nRowCount", Rule::AtLeast, Unit::Plain, |p| when(p.count == 0, 0, 1)),
+        RuleDef::new("nRowCount", Rule::AtLeast, Unit::Plain, |p| {
+            when(p.count == 0, 0, 1)
+        }),
         RuleDef::new("nRowCount", Rule::AtMost, Unit::Plain, |p| {
             let max = SL_LOADSENSING_ROWS_MAX;
             when(p.count > max, p.count, max)
         }),
         // The manual's formula, one comparison at a time: "Outside = FALSE: Y1 ≤ WY1 < WY2 ≤ Y2".
         RuleDef::new("nY1", Rule::NotAbove("nWY1"), Unit::Plain, |p| {
-            first_row(p, false, |[_, y1, _, wy1, _]| (y1 > wy1).then_some((y1, wy1)))
+            first_row(p, false, |[_, y1, _, wy1, _]| {
+                (y1 > wy1).then_some((y1, wy1))
+            })
         }),
         RuleDef::new("nWY1", Rule::Below("nWY2"), Unit::Plain, |p| {
-            first_row(p, false, |[_, _, _, wy1, wy2]| (wy1 >= wy2).then_some((wy1, wy2)))
+            first_row(p, false, |[_, _, _, wy1, wy2]| {
+                (wy1 >= wy2).then_some((wy1, wy2))
+            })
         }),
         RuleDef::new("nWY2", Rule::NotAbove("nY2"), Unit::Plain, |p| {
-            first_row(p, false, |[_, _, y2, _, wy2]| (wy2 > y2).then_some((wy2, y2)))
+            first_row(p, false, |[_, _, y2, _, wy2]| {
+                (wy2 > y2).then_some((wy2, y2))
+            })
         }),
         // "Outside = TRUE: WY1 ≤ Y1 < Y2 ≤ WY2".
         RuleDef::new("nWY1", Rule::NotAbove("nY1"), Unit::Plain, |p| {
-            first_row(p, true, |[_, y1, _, wy1, _]| (wy1 > y1).then_some((wy1, y1)))
+            first_row(p, true, |[_, y1, _, wy1, _]| {
+                (wy1 > y1).then_some((wy1, y1))
+            })
         }),
         RuleDef::new("nY1", Rule::Below("nY2"), Unit::Plain, |p| {
             first_row(p, true, |[_, y1, y2, _, _]| (y1 >= y2).then_some((y1, y2)))
         }),
         RuleDef::new("nY2", Rule::NotAbove("nWY2"), Unit::Plain, |p| {
-            first_row(p, true, |[_, _, y2, _, wy2]| (y2 > wy2).then_some((y2, wy2)))
-        }),
-        // X strictly increasing (the row search, semantics LS3).
-        RuleDef::new("nX", Rule::Above("nX of the row before"), Unit::Plain, |p| {
-            let used = used_rows(p);
-            used.windows(2).enumerate().find_map(|(i, w)| {
-                let (before, x) = (w[0].nX.wide() as i64, w[1].nX.wide() as i64);
-                when(x <= before, x, before).map(|h| h.in_row(i as u8 + 2))
+            first_row(p, true, |[_, _, y2, _, wy2]| {
+                (y2 > wy2).then_some((y2, wy2))
             })
         }),
+        // X strictly increasing (the row search, semantics LS3).
+        RuleDef::new(
+            "nX",
+            Rule::Above("nX of the row before"),
+            Unit::Plain,
+            |p| {
+                let used = used_rows(p);
+                used.windows(2).enumerate().find_map(|(i, w)| {
+                    let (before, x) = (w[0].nX.wide() as i64, w[1].nX.wide() as i64);
+                    when(x <= before, x, before).map(|h| h.in_row(i as u8 + 2))
+                })
+            },
+        ),
     ];
     fn store_params(&mut self, p: &LoadSensingParams<T>) {
         let q = self.private_mut();

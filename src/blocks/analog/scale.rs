@@ -14,13 +14,13 @@
 
 #![allow(non_camel_case_types)] // the ABI's names (FB_SCALE_INT …)
 
-use crate::base::reason::{when, Rule, RuleDef, Unit};
 use super::arith::{divide, SL_ROUNDING_ROUND};
 use super::{diag_message, in_range, magic, Analog};
 use super::{SL_DIAG_VALUE_OVERFLOW, SL_DIAG_VALUE_UNDERFLOW};
 use crate::base::block::{Private, Registered};
 use crate::base::envelope::Block;
 use crate::base::header::{param_crc, SL_PRIVATE_HEADER};
+use crate::base::reason::{when, Rule, RuleDef, Unit};
 use crate::base::time;
 use crate::base::types::*;
 
@@ -386,10 +386,18 @@ impl<T: Analog, T32: Analog, const P1: usize, const P2: usize> Block for FB_SCAL
             when(p.options & !known != 0, p.options, known)
         }),
         RuleDef::new("nRounding", Rule::AtMost, Unit::Plain, |p| {
-            when(p.rounding > SL_ROUNDING_ROUND, p.rounding, SL_ROUNDING_ROUND)
+            when(
+                p.rounding > SL_ROUNDING_ROUND,
+                p.rounding,
+                SL_ROUNDING_ROUND,
+            )
         }),
         RuleDef::new("tWatchdog", Rule::AtMost, Unit::Ms, |p| {
-            when(p.watchdog > SL_TIME_PARAM_MAX, p.watchdog, SL_TIME_PARAM_MAX)
+            when(
+                p.watchdog > SL_TIME_PARAM_MAX,
+                p.watchdog,
+                SL_TIME_PARAM_MAX,
+            )
         }),
         RuleDef::new("nDenominator", Rule::NotZero, Unit::Plain, |p| {
             when(p.factors[1] == 0, 0, 0)

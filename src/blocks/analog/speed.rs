@@ -13,12 +13,12 @@
 
 #![allow(non_camel_case_types)] // the ABI's names (FB_SPEED_INT …)
 
-use crate::base::reason::{when, Rule, RuleDef, Unit};
 use super::{diag_message, in_range, magic, Analog};
 use super::{SL_DIAG_VALUE_OVERFLOW, SL_DIAG_VALUE_UNDERFLOW};
 use crate::base::block::{Private, Registered};
 use crate::base::envelope::Block;
 use crate::base::header::{param_crc, SL_PRIVATE_HEADER};
+use crate::base::reason::{when, Rule, RuleDef, Unit};
 use crate::base::time;
 use crate::base::types::*;
 
@@ -272,7 +272,11 @@ impl<T: Analog, const P1: usize, const P2: usize> Block for FB_SPEED<T, P1, P2> 
             when(p.interval == 0, 0, 0)
         }),
         RuleDef::new("tTimeInterval", Rule::AtMost, Unit::Ms, |p| {
-            when(p.interval > SL_TIME_PARAM_MAX, p.interval, SL_TIME_PARAM_MAX)
+            when(
+                p.interval > SL_TIME_PARAM_MAX,
+                p.interval,
+                SL_TIME_PARAM_MAX,
+            )
         }),
     ];
     fn store_params(&mut self, p: &SpeedParams) {

@@ -10,12 +10,12 @@
 
 #![allow(non_camel_case_types)] // the ABI's names (FB_VIOLATIONCOUNTER_UINT …)
 
-use crate::base::reason::{when, Rule, RuleDef, Unit};
 use super::{magic, Unsigned};
 use crate::base::block::{Private, Registered};
 use crate::base::bools;
 use crate::base::envelope::Block;
 use crate::base::header::{param_crc, SL_PRIVATE_HEADER};
+use crate::base::reason::{when, Rule, RuleDef, Unit};
 use crate::base::types::*;
 
 /// Type tag of FB_VIOLATIONCOUNTER_UINT (ABI-2 §10.6, order of §10.3).

@@ -229,9 +229,12 @@ impl Block for FB_EDM {
         RuleDef::new("tSwitchOffTime", Rule::AtMost, Unit::Ms, |p| {
             when(p.off > SL_EDM_TIME_MAX, p.off, SL_EDM_TIME_MAX)
         }),
-        RuleDef::new("tSwitchOnTime or tSwitchOffTime", Rule::NotZero, Unit::Ms, |p| {
-            when(p.on == 0 && p.off == 0, 0, 0)
-        }),
+        RuleDef::new(
+            "tSwitchOnTime or tSwitchOffTime",
+            Rule::NotZero,
+            Unit::Ms,
+            |p| when(p.on == 0 && p.off == 0, 0, 0),
+        ),
         RuleDef::new("wInputActive", Rule::Equals, Unit::Hex, |p| {
             when(p.active != INPUTS, p.active, INPUTS)
         }),

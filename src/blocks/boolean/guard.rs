@@ -194,7 +194,9 @@ macro_rules! guard_block {
                         p: &GuardParams,
                         bad: impl Fn(usize, u32, u16) -> bool,
                     ) -> Option<(usize, u32, u16)> {
-                        (0..4).map(|k| (k, p.disc[k], 0b11u16 << (2 * k))).find(|&(k, t, both)| bad(k, t, both))
+                        (0..4)
+                            .map(|k| (k, p.disc[k], 0b11u16 << (2 * k)))
+                            .find(|&(k, t, both)| bad(k, t, both))
                     }
                     fn named(k: usize, hit: Option<Hit>) -> Option<Hit> {
                         hit.map(|h| h.in_field(<$t as GuardBlock>::DISC_NAMES[k]))
@@ -221,9 +223,12 @@ macro_rules! guard_block {
                             let t = p.edm_reset[1];
                             when(t > SL_TIME_PARAM_MAX, t, SL_TIME_PARAM_MAX)
                         }),
-                        RuleDef::new(<$t as GuardBlock>::DELAY_NAME, Rule::AtMost, Unit::Ms, |p| {
-                            when(p.delay > SL_TIME_PARAM_MAX, p.delay, SL_TIME_PARAM_MAX)
-                        }),
+                        RuleDef::new(
+                            <$t as GuardBlock>::DELAY_NAME,
+                            Rule::AtMost,
+                            Unit::Ms,
+                            |p| when(p.delay > SL_TIME_PARAM_MAX, p.delay, SL_TIME_PARAM_MAX),
+                        ),
                         // A discrepancy time belongs to a pair that exists and has both inputs active.
                         RuleDef::new("tDiscTime", Rule::Needs("wInputActive"), Unit::Ms, |p| {
                             first_pair(p, |k, t, both| {
@@ -232,14 +237,24 @@ macro_rules! guard_block {
                             .and_then(|(k, t, both)| named(k, when(true, t, both)))
                         }),
                         // A reset time belongs to an active feedback loop.
-                        RuleDef::new("tEDM1ResetTime", Rule::ZeroUnless("dwOptions has SL_OPT_EDM1"), Unit::Ms, |p| {
-                            let t = p.edm_reset[0];
-                            when(t != 0 && p.options & SL_OPT_EDM1 == 0, t, 0)
-                        }),
-                        RuleDef::new("tEDM2ResetTime", Rule::ZeroUnless("dwOptions has SL_OPT_EDM2"), Unit::Ms, |p| {
-                            let t = p.edm_reset[1];
-                            when(t != 0 && p.options & SL_OPT_EDM2 == 0, t, 0)
-                        }),
+                        RuleDef::new(
+                            "tEDM1ResetTime",
+                            Rule::ZeroUnless("dwOptions has SL_OPT_EDM1"),
+                            Unit::Ms,
+                            |p| {
+                                let t = p.edm_reset[0];
+                                when(t != 0 && p.options & SL_OPT_EDM1 == 0, t, 0)
+                            },
+                        ),
+                        RuleDef::new(
+                            "tEDM2ResetTime",
+                            Rule::ZeroUnless("dwOptions has SL_OPT_EDM2"),
+                            Unit::Ms,
+                            |p| {
+                                let t = p.edm_reset[1];
+                                when(t != 0 && p.options & SL_OPT_EDM2 == 0, t, 0)
+                            },
+                        ),
                         RuleDef::new("wInputActive", Rule::AnyBitOf, Unit::Hex, |p| {
                             when(p.active & Self::REQUIRED == 0, p.active, Self::REQUIRED)
                         }),

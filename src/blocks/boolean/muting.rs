@@ -11,12 +11,12 @@
 //! mode, OSSD check optional, and MutingIn3/4 left inactive with sequential inputs. The step
 //! table and every reading are in docs/semantics.md, rows M1–M22.
 
-use crate::base::reason::{when, Rule, RuleDef, Unit};
 use crate::base::block::BlockInfo;
 use crate::base::bools;
 use crate::base::edm::Edm;
 use crate::base::envelope::Block;
 use crate::base::header::{param_crc, SL_PRIVATE_HEADER};
+use crate::base::reason::{when, Rule, RuleDef, Unit};
 use crate::base::types::*;
 use crate::base::{pair, time};
 
@@ -481,36 +481,55 @@ impl Block for FB_MUTING {
             when(p.disc[2] > SL_TIME_PARAM_MAX, p.disc[2], SL_TIME_PARAM_MAX)
         }),
         RuleDef::new("tFilterTime", Rule::AtMost, Unit::Ms, |p| {
-            when(p.filter > SL_MUTING_FILTER_TIME_MAX, p.filter, SL_MUTING_FILTER_TIME_MAX)
+            when(
+                p.filter > SL_MUTING_FILTER_TIME_MAX,
+                p.filter,
+                SL_MUTING_FILTER_TIME_MAX,
+            )
         }),
         RuleDef::new("tMaxMutingTime", Rule::AtMost, Unit::Ms, |p| {
             let max = SL_MUTING_MAX_MUTING_TIME_MAX;
             when(p.max_muting > max, p.max_muting, max)
         }),
         RuleDef::new("tMuteDelOutDelay", Rule::AtMost, Unit::Ms, |p| {
-            when(p.delay > SL_MUTING_DELOUT_DELAY_MAX, p.delay, SL_MUTING_DELOUT_DELAY_MAX)
+            when(
+                p.delay > SL_MUTING_DELOUT_DELAY_MAX,
+                p.delay,
+                SL_MUTING_DELOUT_DELAY_MAX,
+            )
         }),
         // A discrepancy time belongs to a pair with both inputs active.
         RuleDef::new("tDiscTime12", Rule::Needs("wInputActive"), Unit::Ms, |p| {
             let both = u16::from(M12);
             when(p.disc[0] != 0 && p.active & both != both, p.disc[0], both)
         }),
-        RuleDef::new("tDiscTimeOSSD", Rule::Needs("wInputActive"), Unit::Ms, |p| {
-            let both = u16::from(OSSD);
-            when(p.disc[1] != 0 && p.active & both != both, p.disc[1], both)
-        }),
+        RuleDef::new(
+            "tDiscTimeOSSD",
+            Rule::Needs("wInputActive"),
+            Unit::Ms,
+            |p| {
+                let both = u16::from(OSSD);
+                when(p.disc[1] != 0 && p.active & both != both, p.disc[1], both)
+            },
+        ),
         RuleDef::new("tDiscTime34", Rule::Needs("wInputActive"), Unit::Ms, |p| {
             let both = u16::from(M34);
             when(p.disc[2] != 0 && p.active & both != both, p.disc[2], both)
         }),
         // Sequential: single-channel sensors only, MutingIn3/4 both or neither (EL6910).
         // Parallel: two two-channel groups.
-        RuleDef::new("tDiscTime12", Rule::ZeroUnless("muting is parallel"), Unit::Ms, |p| {
-            when(sequential(p) && p.disc[0] != 0, p.disc[0], 0)
-        }),
-        RuleDef::new("tDiscTime34", Rule::ZeroUnless("muting is parallel"), Unit::Ms, |p| {
-            when(sequential(p) && p.disc[2] != 0, p.disc[2], 0)
-        }),
+        RuleDef::new(
+            "tDiscTime12",
+            Rule::ZeroUnless("muting is parallel"),
+            Unit::Ms,
+            |p| when(sequential(p) && p.disc[0] != 0, p.disc[0], 0),
+        ),
+        RuleDef::new(
+            "tDiscTime34",
+            Rule::ZeroUnless("muting is parallel"),
+            Unit::Ms,
+            |p| when(sequential(p) && p.disc[2] != 0, p.disc[2], 0),
+        ),
         RuleDef::new("wInputActive", Rule::BothOrNeither, Unit::Hex, |p| {
             let m = u16::from(M34);
             let some = p.active & m;

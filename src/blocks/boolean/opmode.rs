@@ -9,11 +9,11 @@
 //! selected (the change from one mode to the next); beyond it: ERROR, diag bit 0.
 //! Readings of the manual: docs/semantics.md rows O1–O12.
 
-use crate::base::reason::{when, Rule, RuleDef, Unit};
 use crate::base::block::BlockInfo;
 use crate::base::bools::{self, Edge};
 use crate::base::envelope::Block;
 use crate::base::header::{param_crc, F_RESTART_PREV, SL_PRIVATE_HEADER};
+use crate::base::reason::{when, Rule, RuleDef, Unit};
 use crate::base::restart::{self, Restart};
 use crate::base::time;
 use crate::base::types::*;

@@ -9,11 +9,11 @@
 //! `tDiscTimePairs` ≠ 0 the second group must follow the first within that time.
 //! Readings of the manual: docs/semantics.md rows H1–H14.
 
-use crate::base::reason::{when, Rule, RuleDef, Unit};
 use crate::base::block::BlockInfo;
 use crate::base::bools;
 use crate::base::envelope::Block;
 use crate::base::header::{param_crc, SL_PRIVATE_HEADER};
+use crate::base::reason::{when, Rule, RuleDef, Unit};
 use crate::base::types::*;
 use crate::base::{pair, time};
 
@@ -298,7 +298,11 @@ impl Block for FB_TWOHAND {
             when(p.disc[1] > SL_TIME_PARAM_MAX, p.disc[1], SL_TIME_PARAM_MAX)
         }),
         RuleDef::new("tDiscTimePairs", Rule::AtMost, Unit::Ms, |p| {
-            when(p.pairs > SL_TWOHAND_PAIRS_TIME_MAX, p.pairs, SL_TWOHAND_PAIRS_TIME_MAX)
+            when(
+                p.pairs > SL_TWOHAND_PAIRS_TIME_MAX,
+                p.pairs,
+                SL_TWOHAND_PAIRS_TIME_MAX,
+            )
         }),
         RuleDef::new("wInputActive", Rule::NoBitsOutside, Unit::Hex, |p| {
             when(p.active & !0x0F != 0, p.active, 0x0F)

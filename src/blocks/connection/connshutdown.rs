@@ -10,11 +10,11 @@
 //! was shut down, by this request or by the partner, until it is in DATA again. A shutdown
 //! is no error: the group sees neither ComErr nor ComStartup.
 
-use crate::base::reason::{when, Rule, RuleDef, Unit};
 use crate::base::block::BlockInfo;
 use crate::base::envelope::Block;
 use crate::base::header::{param_crc, SL_PRIVATE_HEADER};
 use crate::base::member::{Member, Wiring};
+use crate::base::reason::{when, Rule, RuleDef, Unit};
 use crate::base::types::*;
 use crate::base::{bools, pair};
 use core::mem::offset_of;
@@ -205,7 +205,9 @@ impl Block for FB_CONNECTION_SHUTDOWN {
         RuleDef::new("tDiscTime12", Rule::Needs("wInputActive"), Unit::Ms, |p| {
             when(p.disc != 0 && p.active & 0b11 != 0b11, p.disc, 0b11)
         }),
-        RuleDef::new("nConnectionId", Rule::NotZero, Unit::Plain, |p| when(p.id == 0, 0, 0)),
+        RuleDef::new("nConnectionId", Rule::NotZero, Unit::Plain, |p| {
+            when(p.id == 0, 0, 0)
+        }),
     ];
 
     fn store_params(&mut self, p: &ConnShutdownParams) {

@@ -13,12 +13,12 @@
 
 #![allow(non_camel_case_types)] // the ABI's names
 
-use crate::base::reason::{when, Rule, RuleDef, Unit};
 use crate::base::block::BlockInfo;
 use crate::base::block::Private;
 use crate::base::bools::{self, edge};
 use crate::base::envelope::Block;
 use crate::base::header::{param_crc, F_RESTART_PREV, SL_PRIVATE_HEADER};
+use crate::base::reason::{when, Rule, RuleDef, Unit};
 use crate::base::restart::{self, Restart};
 use crate::base::types::*;
 use crate::blocks::analog::magic;
@@ -232,7 +232,6 @@ impl Block for FB_ADVPOSMON {
             feedback: p.awFeedback,
         }
     }
-    /// Enable active, only bits 0 and 1, feedback instances 0-3 (ABI-2 §11.16, §12.9).
     /// Enable active, only bits 0 and 1, feedback instances 0-3 (ABI-2 §11.16, §12.9).
     const RULES: &'static [RuleDef<AdvPosMonParams>] = &[
         RuleDef::new("wInputActive", Rule::NoBitsOutside, Unit::Hex, |p| {

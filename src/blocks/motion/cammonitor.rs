@@ -20,11 +20,11 @@
 
 #![allow(non_camel_case_types)] // the ABI's names (FB_CAMMONITOR_UINT …)
 
-use crate::base::reason::{when, Hit, Rule, RuleDef, Unit};
 use crate::base::block::{Private, Registered};
 use crate::base::bools::{self, edge, Edge};
 use crate::base::envelope::Block;
 use crate::base::header::{param_crc, F_CFG_INVALID, F_RESTART_PREV, SL_PRIVATE_HEADER};
+use crate::base::reason::{when, Hit, Rule, RuleDef, Unit};
 use crate::base::time::reached;
 use crate::base::types::*;
 use crate::blocks::analog::{magic, Unsigned};
@@ -1279,10 +1279,6 @@ impl<T: Unsigned, const P1: usize, const P2: usize> Block for FB_CAMMONITOR<T, P
     /// ABI-2 §11.13: Reset and Position active, bits 0–6 and 8–15 only, the mode's unused
     /// inputs inactive and their fixed values 0, the times ≤ 65,535 ms, StopDetectionTime
     /// ≥ 1, with Press_Started active its times and MinPositionChange ≥ 1, and no failing
-    /// parameter-only ordering check (semantics CM11, CM12).
-    /// ABI-2 §11.13: Reset and Position active, bits 0–6 and 8–15 only, the mode's unused
-    /// inputs inactive and their fixed values 0, the times ≤ 65,535 ms, StopDetectionTime
-    /// ≥ 1, with Press_Started active its times and MinPositionChange ≥ 1, and no failing
     /// parameter-only ordering check, each with the manual's Text ID (semantics CM11, CM12).
     const RULES: &'static [RuleDef<CamParams>] = &[
         RuleDef::new("wInputActive", Rule::BitsClear, Unit::Hex, |p| {
@@ -1303,22 +1299,37 @@ impl<T: Unsigned, const P1: usize, const P2: usize> Block for FB_CAMMONITOR<T, P
                 | SL_CAMMONITOR_ACTIVE_OVERRUNMAX;
             when(pendulum(p) && p.active & unused != 0, p.active, unused)
         }),
-        RuleDef::new("nOverrunMaxFix", Rule::ZeroUnless("the mode is excentric"), Unit::Plain, |p| {
-            let v = p.values[FIX + OVERRUN];
-            when(pendulum(p) && v != 0, v, 0)
-        }),
+        RuleDef::new(
+            "nOverrunMaxFix",
+            Rule::ZeroUnless("the mode is excentric"),
+            Unit::Plain,
+            |p| {
+                let v = p.values[FIX + OVERRUN];
+                when(pendulum(p) && v != 0, v, 0)
+            },
+        ),
         RuleDef::new("wInputActive", Rule::BitsClear, Unit::Hex, |p| {
             let unused = SL_CAMMONITOR_ACTIVE_TDC2LOWERLIMIT | SL_CAMMONITOR_ACTIVE_TDC2UPPERLIMIT;
             when(!pendulum(p) && p.active & unused != 0, p.active, unused)
         }),
-        RuleDef::new("nTDC2LowerLimitFix", Rule::ZeroUnless("the mode is pendulum"), Unit::Plain, |p| {
-            let v = p.values[FIX + TDC2_LL];
-            when(!pendulum(p) && v != 0, v, 0)
-        }),
-        RuleDef::new("nTDC2UpperLimitFix", Rule::ZeroUnless("the mode is pendulum"), Unit::Plain, |p| {
-            let v = p.values[FIX + TDC2_UL];
-            when(!pendulum(p) && v != 0, v, 0)
-        }),
+        RuleDef::new(
+            "nTDC2LowerLimitFix",
+            Rule::ZeroUnless("the mode is pendulum"),
+            Unit::Plain,
+            |p| {
+                let v = p.values[FIX + TDC2_LL];
+                when(!pendulum(p) && v != 0, v, 0)
+            },
+        ),
+        RuleDef::new(
+            "nTDC2UpperLimitFix",
+            Rule::ZeroUnless("the mode is pendulum"),
+            Unit::Plain,
+            |p| {
+                let v = p.values[FIX + TDC2_UL];
+                when(!pendulum(p) && v != 0, v, 0)
+            },
+        ),
         RuleDef::new("tStopDetectionTime", Rule::AtMost, Unit::Ms, |p| {
             let t = p.times[T_STOP];
             when(t > SL_CAMMONITOR_TIME_MAX, t, SL_CAMMONITOR_TIME_MAX)
@@ -1334,62 +1345,107 @@ impl<T: Unsigned, const P1: usize, const P2: usize> Block for FB_CAMMONITOR<T, P
         RuleDef::new("tStopDetectionTime", Rule::NotZero, Unit::Ms, |p| {
             when(p.times[T_STOP] == 0, 0, 0)
         }),
-        RuleDef::new("tPressStartDelayTime", Rule::NotZeroWhen(STARTED), Unit::Ms, |p| {
-            when(started(p) && p.times[T_START_DELAY] == 0, 0, 0)
-        }),
-        RuleDef::new("tMoveDetectionTime", Rule::NotZeroWhen(STARTED), Unit::Ms, |p| {
-            when(started(p) && p.times[T_MOVE] == 0, 0, 0)
-        }),
-        RuleDef::new("nMinPositionChange", Rule::NotZeroWhen(STARTED), Unit::Plain, |p| {
-            when(started(p) && p.values[MIN_CHANGE] == 0, 0, 0)
-        }),
-        RuleDef::new("nTDC2UpperLimitFix", Rule::Message("TDC2UpperLimit must be > AllowedPositionJitter"), Unit::Plain, |p| {
-            ordering_hit(p, SL_TEXT_CAMMONITOR_TDC2UL_JITTER)
-        })
+        RuleDef::new(
+            "tPressStartDelayTime",
+            Rule::NotZeroWhen(STARTED),
+            Unit::Ms,
+            |p| when(started(p) && p.times[T_START_DELAY] == 0, 0, 0),
+        ),
+        RuleDef::new(
+            "tMoveDetectionTime",
+            Rule::NotZeroWhen(STARTED),
+            Unit::Ms,
+            |p| when(started(p) && p.times[T_MOVE] == 0, 0, 0),
+        ),
+        RuleDef::new(
+            "nMinPositionChange",
+            Rule::NotZeroWhen(STARTED),
+            Unit::Plain,
+            |p| when(started(p) && p.values[MIN_CHANGE] == 0, 0, 0),
+        ),
+        RuleDef::new(
+            "nTDC2UpperLimitFix",
+            Rule::Message("TDC2UpperLimit must be > AllowedPositionJitter"),
+            Unit::Plain,
+            |p| ordering_hit(p, SL_TEXT_CAMMONITOR_TDC2UL_JITTER),
+        )
         .text_id(SL_TEXT_CAMMONITOR_TDC2UL_JITTER),
-        RuleDef::new("nTDC2UpperLimitFix", Rule::Message("TDC2UpperLimit + 2 x AllowedPositionJitter must be < TDC2LowerLimit"), Unit::Plain, |p| {
-            ordering_hit(p, SL_TEXT_CAMMONITOR_TDC2UL_TDC2LL)
-        })
+        RuleDef::new(
+            "nTDC2UpperLimitFix",
+            Rule::Message("TDC2UpperLimit + 2 x AllowedPositionJitter must be < TDC2LowerLimit"),
+            Unit::Plain,
+            |p| ordering_hit(p, SL_TEXT_CAMMONITOR_TDC2UL_TDC2LL),
+        )
         .text_id(SL_TEXT_CAMMONITOR_TDC2UL_TDC2LL),
-        RuleDef::new("nTDC2LowerLimitFix", Rule::Message("TDC2LowerLimit + 2 x AllowedPositionJitter must be < BDCLowerLimit"), Unit::Plain, |p| {
-            ordering_hit(p, SL_TEXT_CAMMONITOR_TDC2LL_BDCLL)
-        })
+        RuleDef::new(
+            "nTDC2LowerLimitFix",
+            Rule::Message("TDC2LowerLimit + 2 x AllowedPositionJitter must be < BDCLowerLimit"),
+            Unit::Plain,
+            |p| ordering_hit(p, SL_TEXT_CAMMONITOR_TDC2LL_BDCLL),
+        )
         .text_id(SL_TEXT_CAMMONITOR_TDC2LL_BDCLL),
-        RuleDef::new("nBDCLowerLimitFix", Rule::Message("BDCLowerLimit + AllowedPositionJitter must be < MaxPosition / 2"), Unit::Plain, |p| {
-            ordering_hit(p, SL_TEXT_CAMMONITOR_BDCLL_HALF)
-        })
+        RuleDef::new(
+            "nBDCLowerLimitFix",
+            Rule::Message("BDCLowerLimit + AllowedPositionJitter must be < MaxPosition / 2"),
+            Unit::Plain,
+            |p| ordering_hit(p, SL_TEXT_CAMMONITOR_BDCLL_HALF),
+        )
         .text_id(SL_TEXT_CAMMONITOR_BDCLL_HALF),
-        RuleDef::new("nBDCUpperLimitFix", Rule::Message("BDCUpperLimit must be > MaxPosition / 2 + AllowedPositionJitter"), Unit::Plain, |p| {
-            ordering_hit(p, SL_TEXT_CAMMONITOR_BDCUL_HALF)
-        })
+        RuleDef::new(
+            "nBDCUpperLimitFix",
+            Rule::Message("BDCUpperLimit must be > MaxPosition / 2 + AllowedPositionJitter"),
+            Unit::Plain,
+            |p| ordering_hit(p, SL_TEXT_CAMMONITOR_BDCUL_HALF),
+        )
         .text_id(SL_TEXT_CAMMONITOR_BDCUL_HALF),
-        RuleDef::new("nBDCUpperLimitFix", Rule::Message("BDCUpperLimit + 2 x AllowedPositionJitter must be < TDC1LowerLimit"), Unit::Plain, |p| {
-            ordering_hit(p, SL_TEXT_CAMMONITOR_BDCUL_TDC1LL)
-        })
+        RuleDef::new(
+            "nBDCUpperLimitFix",
+            Rule::Message("BDCUpperLimit + 2 x AllowedPositionJitter must be < TDC1LowerLimit"),
+            Unit::Plain,
+            |p| ordering_hit(p, SL_TEXT_CAMMONITOR_BDCUL_TDC1LL),
+        )
         .text_id(SL_TEXT_CAMMONITOR_BDCUL_TDC1LL),
-        RuleDef::new("nTDC1LowerLimitFix", Rule::Message("TDC1LowerLimit + 2 x AllowedPositionJitter must be < TDC1UpperLimit"), Unit::Plain, |p| {
-            ordering_hit(p, SL_TEXT_CAMMONITOR_TDC1LL_TDC1UL)
-        })
+        RuleDef::new(
+            "nTDC1LowerLimitFix",
+            Rule::Message("TDC1LowerLimit + 2 x AllowedPositionJitter must be < TDC1UpperLimit"),
+            Unit::Plain,
+            |p| ordering_hit(p, SL_TEXT_CAMMONITOR_TDC1LL_TDC1UL),
+        )
         .text_id(SL_TEXT_CAMMONITOR_TDC1LL_TDC1UL),
-        RuleDef::new("nTDC1UpperLimitFix", Rule::Message("TDC1UpperLimit + AllowedPositionJitter must be < MaxPosition"), Unit::Plain, |p| {
-            ordering_hit(p, SL_TEXT_CAMMONITOR_TDC1UL_MAX)
-        })
+        RuleDef::new(
+            "nTDC1UpperLimitFix",
+            Rule::Message("TDC1UpperLimit + AllowedPositionJitter must be < MaxPosition"),
+            Unit::Plain,
+            |p| ordering_hit(p, SL_TEXT_CAMMONITOR_TDC1UL_MAX),
+        )
         .text_id(SL_TEXT_CAMMONITOR_TDC1UL_MAX),
-        RuleDef::new("nTDC1UpperLimitFix", Rule::Message("TDC1UpperLimit must be > AllowedPositionJitter"), Unit::Plain, |p| {
-            ordering_hit(p, SL_TEXT_CAMMONITOR_TDC1UL_JITTER)
-        })
+        RuleDef::new(
+            "nTDC1UpperLimitFix",
+            Rule::Message("TDC1UpperLimit must be > AllowedPositionJitter"),
+            Unit::Plain,
+            |p| ordering_hit(p, SL_TEXT_CAMMONITOR_TDC1UL_JITTER),
+        )
         .text_id(SL_TEXT_CAMMONITOR_TDC1UL_JITTER),
-        RuleDef::new("nTDC1UpperLimitFix", Rule::Message("TDC1UpperLimit + 2 x AllowedPositionJitter must be < OverrunMax"), Unit::Plain, |p| {
-            ordering_hit(p, SL_TEXT_CAMMONITOR_TDC1UL_OVERRUNMAX)
-        })
+        RuleDef::new(
+            "nTDC1UpperLimitFix",
+            Rule::Message("TDC1UpperLimit + 2 x AllowedPositionJitter must be < OverrunMax"),
+            Unit::Plain,
+            |p| ordering_hit(p, SL_TEXT_CAMMONITOR_TDC1UL_OVERRUNMAX),
+        )
         .text_id(SL_TEXT_CAMMONITOR_TDC1UL_OVERRUNMAX),
-        RuleDef::new("nOverrunMaxFix", Rule::Message("OverrunMax + 2 x AllowedPositionJitter must be < BDCLowerLimit"), Unit::Plain, |p| {
-            ordering_hit(p, SL_TEXT_CAMMONITOR_OVERRUNMAX_BDCLL)
-        })
+        RuleDef::new(
+            "nOverrunMaxFix",
+            Rule::Message("OverrunMax + 2 x AllowedPositionJitter must be < BDCLowerLimit"),
+            Unit::Plain,
+            |p| ordering_hit(p, SL_TEXT_CAMMONITOR_OVERRUNMAX_BDCLL),
+        )
         .text_id(SL_TEXT_CAMMONITOR_OVERRUNMAX_BDCLL),
-        RuleDef::new("nTDC1LowerLimitFix", Rule::Message("TDC1LowerLimit + AllowedPositionJitter must be <= MaxPosition"), Unit::Plain, |p| {
-            ordering_hit(p, SL_TEXT_CAMMONITOR_TDC1LL_MAX)
-        })
+        RuleDef::new(
+            "nTDC1LowerLimitFix",
+            Rule::Message("TDC1LowerLimit + AllowedPositionJitter must be <= MaxPosition"),
+            Unit::Plain,
+            |p| ordering_hit(p, SL_TEXT_CAMMONITOR_TDC1LL_MAX),
+        )
         .text_id(SL_TEXT_CAMMONITOR_TDC1LL_MAX),
     ];
     fn store_params(&mut self, p: &CamParams) {
@@ -1555,7 +1611,7 @@ impl<T: Unsigned, const P1: usize, const P2: usize> Block for FB_CAMMONITOR<T, P
         } else if refused {
             match config_error(&self.latched_params()) {
                 Some((text, [a, b])) => {
-                    // The diag value of the same message, as in ERROR (semantics CM13).
+                    // The diag value of the same message, as in ERROR (semantics C15).
                     self.nDiag = h.wDiag | (text - SL_CAMMONITOR_DIAG_TEXT_BASE);
                     (text, a, b)
                 }

@@ -15,12 +15,12 @@
 
 #![allow(non_camel_case_types)] // the ABI's names
 
-use crate::base::reason::{when, Rule, RuleDef, Unit};
 use crate::base::block::BlockInfo;
 use crate::base::block::Private;
 use crate::base::bools::{self, edge};
 use crate::base::envelope::Block;
 use crate::base::header::{param_crc, F_RESTART_PREV, SL_PRIVATE_HEADER};
+use crate::base::reason::{when, Rule, RuleDef, Unit};
 use crate::base::time::elapsed;
 use crate::base::types::*;
 use crate::blocks::analog::magic;
@@ -334,20 +334,30 @@ impl Block for FB_SBT {
     }
     /// ABI-2 §11.15: the four signals active, bit 10 free, nothing else; the interval a
     /// non-zero number of seconds, the durations in tenths, MinDuration ≤ MaxDuration,
-    /// all at most SL_SBT_TIME_MAX (semantics BT7).
-    /// ABI-2 §11.15: the four signals active, bit 10 free, nothing else; the interval a
-    /// non-zero number of seconds, the durations in tenths, MinDuration ≤ MaxDuration,
-    /// all at most SL_SBT_TIME_MAX (semantics BT7).
+    /// all at most SL_SBT_TIME_MAX (semantics BT7). The limits come before the multiples:
+    /// SL_SBT_TIME_MAX is itself the largest whole second of the type.
     const RULES: &'static [RuleDef<SbtParams>] = &[
         RuleDef::new("wInputActive", Rule::NoBitsOutside, Unit::Hex, |p| {
             let known = SBT_REQUIRED | SL_SBT_ACTIVE_MINCURRENTIQ;
             when(p.active & !known != 0, p.active, known)
         }),
         RuleDef::new("wInputActive", Rule::BitsSet, Unit::Hex, |p| {
-            when(p.active & SBT_REQUIRED != SBT_REQUIRED, p.active, SBT_REQUIRED)
+            when(
+                p.active & SBT_REQUIRED != SBT_REQUIRED,
+                p.active,
+                SBT_REQUIRED,
+            )
         }),
         RuleDef::new("tBrakeTestInterval", Rule::NotZero, Unit::Ms, |p| {
             when(p.values[INTERVAL] == 0, 0, 0)
+        }),
+        RuleDef::new("tBrakeTestInterval", Rule::AtMost, Unit::Ms, |p| {
+            let t = p.values[INTERVAL];
+            when(t > SL_SBT_TIME_MAX, t, SL_SBT_TIME_MAX)
+        }),
+        RuleDef::new("tMaxDuration", Rule::AtMost, Unit::Ms, |p| {
+            let t = p.values[MAX_DURATION];
+            when(t > SL_SBT_TIME_MAX, t, SL_SBT_TIME_MAX)
         }),
         RuleDef::new("tBrakeTestInterval", Rule::MultipleOf, Unit::Ms, |p| {
             let t = p.values[INTERVAL];
@@ -361,18 +371,15 @@ impl Block for FB_SBT {
             let t = p.values[MAX_DURATION];
             when(t % 100 != 0, t, 100)
         }),
-        RuleDef::new("tMinDuration", Rule::NotAbove("tMaxDuration"), Unit::Ms, |p| {
-            let (min, max) = (p.values[MIN_DURATION], p.values[MAX_DURATION]);
-            when(min > max, min, max)
-        }),
-        RuleDef::new("tBrakeTestInterval", Rule::AtMost, Unit::Ms, |p| {
-            let t = p.values[INTERVAL];
-            when(t > SL_SBT_TIME_MAX, t, SL_SBT_TIME_MAX)
-        }),
-        RuleDef::new("tMaxDuration", Rule::AtMost, Unit::Ms, |p| {
-            let t = p.values[MAX_DURATION];
-            when(t > SL_SBT_TIME_MAX, t, SL_SBT_TIME_MAX)
-        }),
+        RuleDef::new(
+            "tMinDuration",
+            Rule::NotAbove("tMaxDuration"),
+            Unit::Ms,
+            |p| {
+                let (min, max) = (p.values[MIN_DURATION], p.values[MAX_DURATION]);
+                when(min > max, min, max)
+            },
+        ),
     ];
     fn store_params(&mut self, p: &SbtParams) {
         let q = self.private_mut();

@@ -13,12 +13,12 @@
 
 #![allow(non_camel_case_types)] // the ABI's names
 
-use crate::base::reason::{when, Rule, RuleDef, Unit};
 use crate::base::block::BlockInfo;
 use crate::base::block::Private;
 use crate::base::bools;
 use crate::base::envelope::Block;
 use crate::base::header::{param_crc, F_CFG_INVALID, SL_PRIVATE_HEADER};
+use crate::base::reason::{when, Rule, RuleDef, Unit};
 use crate::base::types::*;
 use crate::blocks::analog::{diag_message, magic};
 
@@ -313,9 +313,6 @@ impl Block for FB_SLP {
     }
     /// SafePosValid and SingleturnPos active, MultiturnPos active in multi-turn, the two
     /// bits of each limit equal, no other bit or option (ABI-2 §10.5, §11.14); the
-    /// parameter-only limit error (semantics PL3).
-    /// SafePosValid and SingleturnPos active, MultiturnPos active in multi-turn, the two
-    /// bits of each limit equal, no other bit or option (ABI-2 §10.5, §11.14); the
     /// parameter-only limit error with the manual's Text ID (semantics PL3).
     const RULES: &'static [RuleDef<SlpParams>] = &[
         RuleDef::new("wInputActive", Rule::NoBitsOutside, Unit::Hex, |p| {
@@ -341,21 +338,33 @@ impl Block for FB_SLP {
             when(p.active & m != 0 && p.active & m != m, p.active, m)
         }),
         RuleDef::new("dwOptions", Rule::NoBitsOutside, Unit::Hex, |p| {
-            when(p.options & !SL_OPT_SLP_SINGLETURN != 0, p.options, SL_OPT_SLP_SINGLETURN)
+            when(
+                p.options & !SL_OPT_SLP_SINGLETURN != 0,
+                p.options,
+                SL_OPT_SLP_SINGLETURN,
+            )
         }),
-        RuleDef::new("nMultiturnPosLLFix", Rule::NotAbove("nMultiturnPosULFix"), Unit::Plain, |p| {
-            match config_error(p) {
-                Some((SL_DIAG_SLP_MULTITURN_LL_ABOVE_UL, [lo, hi])) => when(true, lo as i32, hi as i32),
+        RuleDef::new(
+            "nMultiturnPosLLFix",
+            Rule::NotAbove("nMultiturnPosULFix"),
+            Unit::Plain,
+            |p| match config_error(p) {
+                Some((SL_DIAG_SLP_MULTITURN_LL_ABOVE_UL, [lo, hi])) => {
+                    when(true, lo as i32, hi as i32)
+                }
                 _ => None,
-            }
-        })
+            },
+        )
         .text_id(SL_TEXT_SLP_MULTITURN_LL_ABOVE_UL),
-        RuleDef::new("nSingleturnPosLLFix", Rule::NotAbove("nSingleturnPosULFix"), Unit::Plain, |p| {
-            match config_error(p) {
+        RuleDef::new(
+            "nSingleturnPosLLFix",
+            Rule::NotAbove("nSingleturnPosULFix"),
+            Unit::Plain,
+            |p| match config_error(p) {
                 Some((SL_DIAG_SLP_SINGLETURN_LL_ABOVE_UL, [lo, hi])) => when(true, lo, hi),
                 _ => None,
-            }
-        })
+            },
+        )
         .text_id(SL_TEXT_SLP_SINGLETURN_LL_ABOVE_UL),
     ];
     fn store_params(&mut self, p: &SlpParams) {
@@ -500,7 +509,7 @@ impl Block for FB_SLP {
         (self.nDiagTextId, self.dwDiagPar2, self.dwDiagPar3) = match config {
             Some((bit, [lo, hi])) => {
                 let text = MESSAGES.iter().find(|(b, _)| *b == bit).map_or(0, |m| m.1);
-                // The diag bit of the same message, as in ERROR (semantics CM13).
+                // The diag bit of the same message, as in ERROR (semantics C15).
                 self.nDiag = h.wDiag | bit;
                 (text, lo, hi)
             }

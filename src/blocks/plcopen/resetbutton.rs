@@ -15,6 +15,10 @@ pub const SL_TYPE_SF_RESETBUTTON: u16 = 520;
 
 /// The least TrailingMinimum (ms): "absolute minimum 100 ms" (research §4.19, NPE).
 pub const SF_RESETBUTTON_MIN_TRAILING: u32 = 100;
+/// PLCopen's initial value of TrailingMinimum (ms): T#350ms.
+pub const SF_RESETBUTTON_DEFAULT_TRAILING_MIN: u32 = 350;
+/// PLCopen's initial value of TrailingMaximum (ms): T#2s.
+pub const SF_RESETBUTTON_DEFAULT_TRAILING_MAX: u32 = 2_000;
 
 crate::sf_states!(
     /// The states of SF_ResetButton: values = v2.01 DiagCodes (CS-LIB FBS_RESBUT). The block
@@ -110,9 +114,12 @@ impl crate::base::sf::SfBlock for SF_ResetButton {
             let min = SF_RESETBUTTON_MIN_TRAILING;
             when(c.times[0] < min, c.times[0], min)
         }),
-        RuleDef::new("TrailingMinimum", Rule::NotAbove("TrailingMaximum"), Unit::Ms, |c| {
-            when(c.times[0] > c.times[1], c.times[0], c.times[1])
-        }),
+        RuleDef::new(
+            "TrailingMinimum",
+            Rule::NotAbove("TrailingMaximum"),
+            Unit::Ms,
+            |c| when(c.times[0] > c.times[1], c.times[0], c.times[1]),
+        ),
     ];
 
     /// ResetIn runs through the envelope's R_TRIG, evaluated in every call.
@@ -141,7 +148,11 @@ impl crate::base::sf::SfBlock for SF_ResetButton {
         next(s, reset, in_state, times)
     }
     fn first(times: [u32; 2]) -> Self::Diag {
-        crate::base::sf::first_checked::<Self>(times, ResetButtonState::WaitRTrig, ResetButtonState::ErrParam)
+        crate::base::sf::first_checked::<Self>(
+            times,
+            ResetButtonState::WaitRTrig,
+            ResetButtonState::ErrParam,
+        )
     }
     #[inline(always)]
     fn write_outputs(&mut self, o: &crate::base::sf::SfOut) {
@@ -153,6 +164,19 @@ impl crate::base::sf::SfBlock for SF_ResetButton {
 }
 
 impl SF_ResetButton {
+    /// An instance with PLCopen's initial values (`sl_sf_resetbutton_defaults`):
+    /// ResetRequested TRUE, TrailingMinimum T#350ms, TrailingMaximum T#2s, everything else
+    /// zero. The all-zero struct stays "not configured" (TrailingMinimum 0 is the block's
+    /// parameter error, semantics PO12): the defaults are written on purpose, visibly.
+    pub const fn plcopen_defaults() -> Self {
+        Self {
+            ResetRequested: 1,
+            TrailingMinimum: SF_RESETBUTTON_DEFAULT_TRAILING_MIN,
+            TrailingMaximum: SF_RESETBUTTON_DEFAULT_TRAILING_MAX,
+            ..Self::zeroed()
+        }
+    }
+
     /// An all-zero instance (valid: it initialises itself on the first call).
     pub const fn zeroed() -> Self {
         Self {

@@ -195,12 +195,14 @@ impl crate::base::sf::SfBlock for SF_TestableSafetySensor {
     const TIMES: usize = 2;
     const CONST_RULES: &'static [RuleDef<sf::SfConsts>] = &[sf::time0_rule("TestTime")];
     /// TestTime ≤ 150 ms (C000 otherwise).
-    const PARAM_RULES: &'static [RuleDef<sf::SfConsts>] = &[RuleDef::new(
-        "TestTime",
-        Rule::AtMost,
-        Unit::Ms,
-        |c| when(c.times[0] > SF_TSS_MAX_TEST_TIME, c.times[0], SF_TSS_MAX_TEST_TIME),
-    )];
+    const PARAM_RULES: &'static [RuleDef<sf::SfConsts>] =
+        &[RuleDef::new("TestTime", Rule::AtMost, Unit::Ms, |c| {
+            when(
+                c.times[0] > SF_TSS_MAX_TEST_TIME,
+                c.times[0],
+                SF_TSS_MAX_TEST_TIME,
+            )
+        })];
 
     #[inline(always)]
     fn reset_raw(&self) -> u8 {
