@@ -276,8 +276,11 @@ fn the_plcopen_defaults_are_written_on_request_and_zero_stays_not_configured() {
         "SF_ResetButton: TrailingMinimum (0 ms) must be >= 100 ms [reason 0xE002]"
     );
 
-    let mut rb = SF_ResetButton::default();
-    rb.DiagCode = 7; // overwritten: the whole struct is the defaults
+    // An output left over is overwritten: the whole struct is the defaults.
+    let mut rb = SF_ResetButton {
+        DiagCode: 7,
+        ..Default::default()
+    };
     unsafe {
         assert_eq!(sl_sf_resetbutton_defaults(&mut rb), SL_OK);
         assert_eq!(
