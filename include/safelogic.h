@@ -2163,146 +2163,6 @@ typedef struct SL_PRIVATE_HEADER {
 #define SL_PRIVATE_HEADER_ZERO (SL_PRIVATE_HEADER){ .wMagic = 0, .wAux = 0, .nState = 0, .nFlags = 0, .wDiag = 0, .wParamCrc = 0, .wAuxCheck = 0, .dwCtrlCheck = 0, .tLast = 0, .tPhase = 0, .nActive = 0, .nNegated = 0, .wOptions = 0 }
 
 /*
- Private state of every `SF_` block (40 bytes). Never written by the user. The header's
- `wDiag` holds the v2.01 DiagCode (the state), `nState` the [`SfPhase`], `nActive` the
- latched profile, `tPhase` the entry time of the current state (the monitored times run
- from there), `nFlags` the R_TRIG memories.
- */
-typedef struct SL_SF_PRIVATE {
-  /*
-   Common head.
-   */
-  struct SL_PRIVATE_HEADER stHeader;
-  /*
-   Latched constant times (ms), covered by the header's parameter CRC.
-   */
-  uint32_t adwTime[2];
-  /*
-   Written by the owning group before each call: non-zero while the group does not run
-   the block (halted: DiagCode 0000, as with Activate FALSE).
-   */
-  uint8_t nGroupHalt;
-  /*
-   Reserved.
-   */
-  uint8_t aReserved[3];
-} SL_SF_PRIVATE;
-
-/*
- SF_ResetButton instance: the PLCopen VAR_INPUT / VAR_OUTPUT names, BOOL = one byte.
- Size: 64 bytes.
- */
-typedef struct SF_ResetButton {
-  /*
-   Offset 0. ResetRequested: the activation of this block (it has no Activate); connect the paired FB's ResetRequest. FALSE = idle (DiagCode 0000, ResetOut FALSE), highest priority. PLCopen initial value TRUE.
-   */
-  SL_BOOL ResetRequested;
-  /*
-   Offset 1. ResetIn: the reset button, TRUE = pressed.
-   */
-  SL_BOOL ResetIn;
-  /*
-   Offset 2. Reserved, keep 0.
-   */
-  uint8_t aReserved0[1];
-  /*
-   Offset 3. Library extension, constant: DiagCode profile, only 0 = v2.01 (1 is refused: v2.x block); latched at activation.
-   */
-  uint8_t nDiagProfile;
-  /*
-   Offset 4. TrailingMinimum (constant, ms; PLCopen default T#350ms): shortest valid press, at least 100 ms; latched at activation.
-   */
-  uint32_t TrailingMinimum;
-  /*
-   Offset 8. TrailingMaximum (constant, ms; PLCopen default T#2s): a press this long is invalid; latched at activation.
-   */
-  uint32_t TrailingMaximum;
-  /*
-   Offset 12 (output base). Ready: TRUE while activated (DiagCode != 0000).
-   */
-  SL_BOOL Ready;
-  /*
-   Offset 13. ResetOut: TRUE for one call after the falling edge of a valid press (DiagCode 8000).
-   */
-  SL_BOOL ResetOut;
-  /*
-   Offset 14. Error: DiagCode >= C000.
-   */
-  SL_BOOL Error;
-  /*
-   Offset 15. Reserved.
-   */
-  uint8_t aReserved1[1];
-  /*
-   Offset 16. DiagCode: the state or error (v2.01).
-   */
-  uint16_t DiagCode;
-  /*
-   Offset 18. Reserved.
-   */
-  uint8_t aReserved2[6];
-  /*
-   Offset 24. Private state, 40 bytes: never write it.
-   */
-  struct SL_SF_PRIVATE stPrivate;
-} SF_ResetButton;
-
-/*
- SF_Antivalent instance: the PLCopen VAR_INPUT / VAR_OUTPUT names, BOOL = one byte.
- Size: 56 bytes.
- */
-typedef struct SF_Antivalent {
-  /*
-   Offset 0. Activate: FALSE = idle (DiagCode 0000, every output FALSE), highest priority.
-   */
-  SL_BOOL Activate;
-  /*
-   Offset 1. S_ChannelNC: NC contact (break), TRUE = active.
-   */
-  SL_BOOL S_ChannelNC;
-  /*
-   Offset 2. S_ChannelNO: NO contact (make), FALSE = active (PLCopen's initial value is TRUE: connect it).
-   */
-  SL_BOOL S_ChannelNO;
-  /*
-   Offset 3. Library extension, constant: DiagCode profile, 0 = v2.01 (default), 1 = v1.0; latched at activation.
-   */
-  uint8_t nDiagProfile;
-  /*
-   Offset 4. DiscrepancyTime (constant, ms): how long the channels may differ; latched at activation.
-   */
-  uint32_t DiscrepancyTime;
-  /*
-   Offset 8 (output base). Ready: TRUE while activated (DiagCode != 0000).
-   */
-  SL_BOOL Ready;
-  /*
-   Offset 9. S_AntivalentOut: the safety output, TRUE only at DiagCode 8000.
-   */
-  SL_BOOL S_AntivalentOut;
-  /*
-   Offset 10. SafetyDemand: the safety function is demanded (v2.01 code bit 0x0800).
-   */
-  SL_BOOL SafetyDemand;
-  /*
-   Offset 11. Error: DiagCode >= C000.
-   */
-  SL_BOOL Error;
-  /*
-   Offset 12. Reserved.
-   */
-  uint8_t aReserved1[2];
-  /*
-   Offset 14. DiagCode: the state or error, in the profile of nDiagProfile.
-   */
-  uint16_t DiagCode;
-  /*
-   Offset 16. Private state, 40 bytes: never write it.
-   */
-  struct SL_SF_PRIVATE stPrivate;
-} SF_Antivalent;
-
-/*
  Private state of FB_TON, FB_TON2 and FB_TOF (64 bytes). Never written by the user.
 
  Unlike the guard blocks, the timer start carries a complement copy: for TON the timer
@@ -2955,6 +2815,146 @@ typedef struct SL_FSOE_FRAME {
    */
   uint8_t aSafeData[32];
 } SL_FSOE_FRAME;
+
+/*
+ Private state of every `SF_` block (40 bytes). Never written by the user. The header's
+ `wDiag` holds the v2.01 DiagCode (the state), `nState` the [`SfPhase`], `nActive` the
+ latched profile, `tPhase` the entry time of the current state (the monitored times run
+ from there), `nFlags` the R_TRIG memories.
+ */
+typedef struct SL_SF_PRIVATE {
+  /*
+   Common head.
+   */
+  struct SL_PRIVATE_HEADER stHeader;
+  /*
+   Latched constant times (ms), covered by the header's parameter CRC.
+   */
+  uint32_t adwTime[2];
+  /*
+   Written by the owning group before each call: non-zero while the group does not run
+   the block (halted: DiagCode 0000, as with Activate FALSE).
+   */
+  uint8_t nGroupHalt;
+  /*
+   Reserved.
+   */
+  uint8_t aReserved[3];
+} SL_SF_PRIVATE;
+
+/*
+ SF_ResetButton instance: the PLCopen VAR_INPUT / VAR_OUTPUT names, BOOL = one byte.
+ Size: 64 bytes.
+ */
+typedef struct SF_ResetButton {
+  /*
+   Offset 0. ResetRequested: the activation of this block (it has no Activate); connect the paired FB's ResetRequest. FALSE = idle (DiagCode 0000, ResetOut FALSE), highest priority. PLCopen initial value TRUE.
+   */
+  SL_BOOL ResetRequested;
+  /*
+   Offset 1. ResetIn: the reset button, TRUE = pressed.
+   */
+  SL_BOOL ResetIn;
+  /*
+   Offset 2. Reserved, keep 0.
+   */
+  uint8_t aReserved0[1];
+  /*
+   Offset 3. Library extension, constant: DiagCode profile, only 0 = v2.01 (1 is refused: v2.x block); latched at activation.
+   */
+  uint8_t nDiagProfile;
+  /*
+   Offset 4. TrailingMinimum (constant, ms; PLCopen default T#350ms): shortest valid press, at least 100 ms; latched at activation.
+   */
+  uint32_t TrailingMinimum;
+  /*
+   Offset 8. TrailingMaximum (constant, ms; PLCopen default T#2s): a press this long is invalid; latched at activation.
+   */
+  uint32_t TrailingMaximum;
+  /*
+   Offset 12 (output base). Ready: TRUE while activated (DiagCode != 0000).
+   */
+  SL_BOOL Ready;
+  /*
+   Offset 13. ResetOut: TRUE for one call after the falling edge of a valid press (DiagCode 8000).
+   */
+  SL_BOOL ResetOut;
+  /*
+   Offset 14. Error: DiagCode >= C000.
+   */
+  SL_BOOL Error;
+  /*
+   Offset 15. Reserved.
+   */
+  uint8_t aReserved1[1];
+  /*
+   Offset 16. DiagCode: the state or error (v2.01).
+   */
+  uint16_t DiagCode;
+  /*
+   Offset 18. Reserved.
+   */
+  uint8_t aReserved2[6];
+  /*
+   Offset 24. Private state, 40 bytes: never write it.
+   */
+  struct SL_SF_PRIVATE stPrivate;
+} SF_ResetButton;
+
+/*
+ SF_Antivalent instance: the PLCopen VAR_INPUT / VAR_OUTPUT names, BOOL = one byte.
+ Size: 56 bytes.
+ */
+typedef struct SF_Antivalent {
+  /*
+   Offset 0. Activate: FALSE = idle (DiagCode 0000, every output FALSE), highest priority.
+   */
+  SL_BOOL Activate;
+  /*
+   Offset 1. S_ChannelNC: NC contact (break), TRUE = active.
+   */
+  SL_BOOL S_ChannelNC;
+  /*
+   Offset 2. S_ChannelNO: NO contact (make), FALSE = active (PLCopen's initial value is TRUE: connect it).
+   */
+  SL_BOOL S_ChannelNO;
+  /*
+   Offset 3. Library extension, constant: DiagCode profile, 0 = v2.01 (default), 1 = v1.0; latched at activation.
+   */
+  uint8_t nDiagProfile;
+  /*
+   Offset 4. DiscrepancyTime (constant, ms): how long the channels may differ; latched at activation.
+   */
+  uint32_t DiscrepancyTime;
+  /*
+   Offset 8 (output base). Ready: TRUE while activated (DiagCode != 0000).
+   */
+  SL_BOOL Ready;
+  /*
+   Offset 9. S_AntivalentOut: the safety output, TRUE only at DiagCode 8000.
+   */
+  SL_BOOL S_AntivalentOut;
+  /*
+   Offset 10. SafetyDemand: the safety function is demanded (v2.01 code bit 0x0800).
+   */
+  SL_BOOL SafetyDemand;
+  /*
+   Offset 11. Error: DiagCode >= C000.
+   */
+  SL_BOOL Error;
+  /*
+   Offset 12. Reserved.
+   */
+  uint8_t aReserved1[2];
+  /*
+   Offset 14. DiagCode: the state or error, in the profile of nDiagProfile.
+   */
+  uint16_t DiagCode;
+  /*
+   Offset 16. Private state, 40 bytes: never write it.
+   */
+  struct SL_SF_PRIVATE stPrivate;
+} SF_Antivalent;
 
 /*
  Private state of FB_ESTOP and FB_MON (80 bytes). Never written by the user.
@@ -12843,30 +12843,6 @@ const char *sl_version(void);
 SL_BOOL sl_version_compatible(uint32_t major, uint32_t minor);
 
 /*
- Writes PLCopen's initial values into `*p`: ResetRequested TRUE, TrailingMinimum 350 ms
- (T#350ms), TrailingMaximum 2000 ms (T#2s); every other field, the private state
- included, zero (a power-up instance: call `sl_sf_resetbutton_init` next). A zeroed
- struct is not these defaults (its TrailingMinimum 0 is refused at activation): zero
- stays "not configured" (docs/semantics.md PO12). SL_OK; SL_E_NULL / SL_E_ALIGNMENT for
- a bad pointer.
-
- # Safety
- `p` is NULL or points to a caller-owned SF_ResetButton that nothing else accesses during the call.
- */
-int32_t sl_sf_resetbutton_defaults(struct SF_ResetButton *p);
-
-/*
- Writes PLCopen's initial values into `*p`: S_ChannelNO TRUE (its SAFEBOOL initial
- value); every other field, the private state included, zero (a power-up instance: call
- `sl_sf_antivalent_init` next). A zeroed struct has S_ChannelNO FALSE (docs/semantics.md
- PO12). SL_OK; SL_E_NULL / SL_E_ALIGNMENT for a bad pointer.
-
- # Safety
- `p` is NULL or points to a caller-owned SF_Antivalent that nothing else accesses during the call.
- */
-int32_t sl_sf_antivalent_defaults(struct SF_Antivalent *p);
-
-/*
  Writes the elapsed time an FB_TON2 has stored (ms; the manual's "ExpiredTime") to
  `*pElapsedMs`, for the host to persist across a power cycle. Call it after
  `sl_ton2_cycle` (every cycle, or whenever the value changed) and write the value to
@@ -13086,6 +13062,30 @@ int32_t sl_fsoe_frame_encode(uint8_t *pFrame, size_t nFrameCap, size_t *pFrameLe
 int32_t sl_fsoe_frame_decode(const uint8_t *pFrame, size_t nFrameLen, size_t nSafeDataLen, uint16_t wRecvCrc0, uint16_t *pSeqNo, uint16_t wOldCrc0, SL_BOOL bCollisionCheck, struct SL_FSOE_FRAME *pOut);
 
 /*
+ Writes PLCopen's initial values into `*p`: ResetRequested TRUE, TrailingMinimum 350 ms
+ (T#350ms), TrailingMaximum 2000 ms (T#2s); every other field, the private state
+ included, zero (a power-up instance: call `sl_sf_resetbutton_init` next). A zeroed
+ struct is not these defaults (its TrailingMinimum 0 is refused at activation): zero
+ stays "not configured" (docs/semantics.md PO12). SL_OK; SL_E_NULL / SL_E_ALIGNMENT for
+ a bad pointer.
+
+ # Safety
+ `p` is NULL or points to a caller-owned SF_ResetButton that nothing else accesses during the call.
+ */
+int32_t sl_sf_resetbutton_defaults(struct SF_ResetButton *p);
+
+/*
+ Writes PLCopen's initial values into `*p`: S_ChannelNO TRUE (its SAFEBOOL initial
+ value); every other field, the private state included, zero (a power-up instance: call
+ `sl_sf_antivalent_init` next). A zeroed struct has S_ChannelNO FALSE (docs/semantics.md
+ PO12). SL_OK; SL_E_NULL / SL_E_ALIGNMENT for a bad pointer.
+
+ # Safety
+ `p` is NULL or points to a caller-owned SF_Antivalent that nothing else accesses during the call.
+ */
+int32_t sl_sf_antivalent_defaults(struct SF_Antivalent *p);
+
+/*
  * The functions of every registered block type (src/registry.rs). init validates and
 * latches the parameters and resets the block to power-up (STOP, outputs FALSE), never
 * modifying an input field: SL_OK or SL_E_CONFIG. cycle runs one task cycle at tNow
@@ -13298,38 +13298,6 @@ SL_STATIC_ASSERT(offsetof(SL_PRIVATE_HEADER, nActive) == 24, "offset of SL_PRIVA
 SL_STATIC_ASSERT(offsetof(SL_PRIVATE_HEADER, nNegated) == 25, "offset of SL_PRIVATE_HEADER.nNegated");
 SL_STATIC_ASSERT(offsetof(SL_PRIVATE_HEADER, wOptions) == 26, "offset of SL_PRIVATE_HEADER.wOptions");
 SL_STATIC_ASSERT(sizeof(SL_PRIVATE_HEADER) == 28, "size of SL_PRIVATE_HEADER");
-SL_STATIC_ASSERT(offsetof(SL_SF_PRIVATE, stHeader) == 0, "offset of SL_SF_PRIVATE.stHeader");
-SL_STATIC_ASSERT(offsetof(SL_SF_PRIVATE, adwTime) == 28, "offset of SL_SF_PRIVATE.adwTime");
-SL_STATIC_ASSERT(offsetof(SL_SF_PRIVATE, nGroupHalt) == 36, "offset of SL_SF_PRIVATE.nGroupHalt");
-SL_STATIC_ASSERT(offsetof(SL_SF_PRIVATE, aReserved) == 37, "offset of SL_SF_PRIVATE.aReserved");
-SL_STATIC_ASSERT(sizeof(SL_SF_PRIVATE) == 40, "size of SL_SF_PRIVATE");
-SL_STATIC_ASSERT(offsetof(SF_ResetButton, ResetRequested) == 0, "offset of SF_ResetButton.ResetRequested");
-SL_STATIC_ASSERT(offsetof(SF_ResetButton, ResetIn) == 1, "offset of SF_ResetButton.ResetIn");
-SL_STATIC_ASSERT(offsetof(SF_ResetButton, aReserved0) == 2, "offset of SF_ResetButton.aReserved0");
-SL_STATIC_ASSERT(offsetof(SF_ResetButton, nDiagProfile) == 3, "offset of SF_ResetButton.nDiagProfile");
-SL_STATIC_ASSERT(offsetof(SF_ResetButton, TrailingMinimum) == 4, "offset of SF_ResetButton.TrailingMinimum");
-SL_STATIC_ASSERT(offsetof(SF_ResetButton, TrailingMaximum) == 8, "offset of SF_ResetButton.TrailingMaximum");
-SL_STATIC_ASSERT(offsetof(SF_ResetButton, Ready) == 12, "offset of SF_ResetButton.Ready");
-SL_STATIC_ASSERT(offsetof(SF_ResetButton, ResetOut) == 13, "offset of SF_ResetButton.ResetOut");
-SL_STATIC_ASSERT(offsetof(SF_ResetButton, Error) == 14, "offset of SF_ResetButton.Error");
-SL_STATIC_ASSERT(offsetof(SF_ResetButton, aReserved1) == 15, "offset of SF_ResetButton.aReserved1");
-SL_STATIC_ASSERT(offsetof(SF_ResetButton, DiagCode) == 16, "offset of SF_ResetButton.DiagCode");
-SL_STATIC_ASSERT(offsetof(SF_ResetButton, aReserved2) == 18, "offset of SF_ResetButton.aReserved2");
-SL_STATIC_ASSERT(offsetof(SF_ResetButton, stPrivate) == 24, "offset of SF_ResetButton.stPrivate");
-SL_STATIC_ASSERT(sizeof(SF_ResetButton) == 64, "size of SF_ResetButton");
-SL_STATIC_ASSERT(offsetof(SF_Antivalent, Activate) == 0, "offset of SF_Antivalent.Activate");
-SL_STATIC_ASSERT(offsetof(SF_Antivalent, S_ChannelNC) == 1, "offset of SF_Antivalent.S_ChannelNC");
-SL_STATIC_ASSERT(offsetof(SF_Antivalent, S_ChannelNO) == 2, "offset of SF_Antivalent.S_ChannelNO");
-SL_STATIC_ASSERT(offsetof(SF_Antivalent, nDiagProfile) == 3, "offset of SF_Antivalent.nDiagProfile");
-SL_STATIC_ASSERT(offsetof(SF_Antivalent, DiscrepancyTime) == 4, "offset of SF_Antivalent.DiscrepancyTime");
-SL_STATIC_ASSERT(offsetof(SF_Antivalent, Ready) == 8, "offset of SF_Antivalent.Ready");
-SL_STATIC_ASSERT(offsetof(SF_Antivalent, S_AntivalentOut) == 9, "offset of SF_Antivalent.S_AntivalentOut");
-SL_STATIC_ASSERT(offsetof(SF_Antivalent, SafetyDemand) == 10, "offset of SF_Antivalent.SafetyDemand");
-SL_STATIC_ASSERT(offsetof(SF_Antivalent, Error) == 11, "offset of SF_Antivalent.Error");
-SL_STATIC_ASSERT(offsetof(SF_Antivalent, aReserved1) == 12, "offset of SF_Antivalent.aReserved1");
-SL_STATIC_ASSERT(offsetof(SF_Antivalent, DiagCode) == 14, "offset of SF_Antivalent.DiagCode");
-SL_STATIC_ASSERT(offsetof(SF_Antivalent, stPrivate) == 16, "offset of SF_Antivalent.stPrivate");
-SL_STATIC_ASSERT(sizeof(SF_Antivalent) == 56, "size of SF_Antivalent");
 SL_STATIC_ASSERT(offsetof(SL_TIMER_PRIVATE, stHeader) == 0, "offset of SL_TIMER_PRIVATE.stHeader");
 SL_STATIC_ASSERT(offsetof(SL_TIMER_PRIVATE, tPhaseCheck) == 28, "offset of SL_TIMER_PRIVATE.tPhaseCheck");
 SL_STATIC_ASSERT(offsetof(SL_TIMER_PRIVATE, dwDelay) == 32, "offset of SL_TIMER_PRIVATE.dwDelay");
@@ -13481,6 +13449,38 @@ SL_STATIC_ASSERT(offsetof(SL_FSOE_FRAME, wCrc0) == 4, "offset of SL_FSOE_FRAME.w
 SL_STATIC_ASSERT(offsetof(SL_FSOE_FRAME, nSeqNo) == 6, "offset of SL_FSOE_FRAME.nSeqNo");
 SL_STATIC_ASSERT(offsetof(SL_FSOE_FRAME, aSafeData) == 8, "offset of SL_FSOE_FRAME.aSafeData");
 SL_STATIC_ASSERT(sizeof(SL_FSOE_FRAME) == 40, "size of SL_FSOE_FRAME");
+SL_STATIC_ASSERT(offsetof(SL_SF_PRIVATE, stHeader) == 0, "offset of SL_SF_PRIVATE.stHeader");
+SL_STATIC_ASSERT(offsetof(SL_SF_PRIVATE, adwTime) == 28, "offset of SL_SF_PRIVATE.adwTime");
+SL_STATIC_ASSERT(offsetof(SL_SF_PRIVATE, nGroupHalt) == 36, "offset of SL_SF_PRIVATE.nGroupHalt");
+SL_STATIC_ASSERT(offsetof(SL_SF_PRIVATE, aReserved) == 37, "offset of SL_SF_PRIVATE.aReserved");
+SL_STATIC_ASSERT(sizeof(SL_SF_PRIVATE) == 40, "size of SL_SF_PRIVATE");
+SL_STATIC_ASSERT(offsetof(SF_ResetButton, ResetRequested) == 0, "offset of SF_ResetButton.ResetRequested");
+SL_STATIC_ASSERT(offsetof(SF_ResetButton, ResetIn) == 1, "offset of SF_ResetButton.ResetIn");
+SL_STATIC_ASSERT(offsetof(SF_ResetButton, aReserved0) == 2, "offset of SF_ResetButton.aReserved0");
+SL_STATIC_ASSERT(offsetof(SF_ResetButton, nDiagProfile) == 3, "offset of SF_ResetButton.nDiagProfile");
+SL_STATIC_ASSERT(offsetof(SF_ResetButton, TrailingMinimum) == 4, "offset of SF_ResetButton.TrailingMinimum");
+SL_STATIC_ASSERT(offsetof(SF_ResetButton, TrailingMaximum) == 8, "offset of SF_ResetButton.TrailingMaximum");
+SL_STATIC_ASSERT(offsetof(SF_ResetButton, Ready) == 12, "offset of SF_ResetButton.Ready");
+SL_STATIC_ASSERT(offsetof(SF_ResetButton, ResetOut) == 13, "offset of SF_ResetButton.ResetOut");
+SL_STATIC_ASSERT(offsetof(SF_ResetButton, Error) == 14, "offset of SF_ResetButton.Error");
+SL_STATIC_ASSERT(offsetof(SF_ResetButton, aReserved1) == 15, "offset of SF_ResetButton.aReserved1");
+SL_STATIC_ASSERT(offsetof(SF_ResetButton, DiagCode) == 16, "offset of SF_ResetButton.DiagCode");
+SL_STATIC_ASSERT(offsetof(SF_ResetButton, aReserved2) == 18, "offset of SF_ResetButton.aReserved2");
+SL_STATIC_ASSERT(offsetof(SF_ResetButton, stPrivate) == 24, "offset of SF_ResetButton.stPrivate");
+SL_STATIC_ASSERT(sizeof(SF_ResetButton) == 64, "size of SF_ResetButton");
+SL_STATIC_ASSERT(offsetof(SF_Antivalent, Activate) == 0, "offset of SF_Antivalent.Activate");
+SL_STATIC_ASSERT(offsetof(SF_Antivalent, S_ChannelNC) == 1, "offset of SF_Antivalent.S_ChannelNC");
+SL_STATIC_ASSERT(offsetof(SF_Antivalent, S_ChannelNO) == 2, "offset of SF_Antivalent.S_ChannelNO");
+SL_STATIC_ASSERT(offsetof(SF_Antivalent, nDiagProfile) == 3, "offset of SF_Antivalent.nDiagProfile");
+SL_STATIC_ASSERT(offsetof(SF_Antivalent, DiscrepancyTime) == 4, "offset of SF_Antivalent.DiscrepancyTime");
+SL_STATIC_ASSERT(offsetof(SF_Antivalent, Ready) == 8, "offset of SF_Antivalent.Ready");
+SL_STATIC_ASSERT(offsetof(SF_Antivalent, S_AntivalentOut) == 9, "offset of SF_Antivalent.S_AntivalentOut");
+SL_STATIC_ASSERT(offsetof(SF_Antivalent, SafetyDemand) == 10, "offset of SF_Antivalent.SafetyDemand");
+SL_STATIC_ASSERT(offsetof(SF_Antivalent, Error) == 11, "offset of SF_Antivalent.Error");
+SL_STATIC_ASSERT(offsetof(SF_Antivalent, aReserved1) == 12, "offset of SF_Antivalent.aReserved1");
+SL_STATIC_ASSERT(offsetof(SF_Antivalent, DiagCode) == 14, "offset of SF_Antivalent.DiagCode");
+SL_STATIC_ASSERT(offsetof(SF_Antivalent, stPrivate) == 16, "offset of SF_Antivalent.stPrivate");
+SL_STATIC_ASSERT(sizeof(SF_Antivalent) == 56, "size of SF_Antivalent");
 SL_STATIC_ASSERT(offsetof(SL_GUARD_PRIVATE, stHeader) == 0, "offset of SL_GUARD_PRIVATE.stHeader");
 SL_STATIC_ASSERT(offsetof(SL_GUARD_PRIVATE, adwTime) == 28, "offset of SL_GUARD_PRIVATE.adwTime");
 SL_STATIC_ASSERT(offsetof(SL_GUARD_PRIVATE, atDiscStart) == 60, "offset of SL_GUARD_PRIVATE.atDiscStart");

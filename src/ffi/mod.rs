@@ -189,52 +189,6 @@ const fn decimal(digits: &str) -> u32 {
     v
 }
 
-/// Writes PLCopen's initial values into `*p`: ResetRequested TRUE, TrailingMinimum 350 ms
-/// (T#350ms), TrailingMaximum 2000 ms (T#2s); every other field, the private state
-/// included, zero (a power-up instance: call `sl_sf_resetbutton_init` next). A zeroed
-/// struct is not these defaults (its TrailingMinimum 0 is refused at activation): zero
-/// stays "not configured" (docs/semantics.md PO12). SL_OK; SL_E_NULL / SL_E_ALIGNMENT for
-/// a bad pointer.
-///
-/// # Safety
-/// `p` is NULL or points to a caller-owned SF_ResetButton that nothing else accesses during the call.
-#[no_mangle]
-pub unsafe extern "C" fn sl_sf_resetbutton_defaults(
-    p: *mut crate::blocks::plcopen::resetbutton::SF_ResetButton,
-) -> i32 {
-    ffi_boundary!(SL_E_INTERNAL, {
-        match instance(p) {
-            Ok(p) => {
-                *p = crate::blocks::plcopen::resetbutton::SF_ResetButton::plcopen_defaults();
-                SL_OK
-            }
-            Err(e) => e,
-        }
-    })
-}
-
-/// Writes PLCopen's initial values into `*p`: S_ChannelNO TRUE (its SAFEBOOL initial
-/// value); every other field, the private state included, zero (a power-up instance: call
-/// `sl_sf_antivalent_init` next). A zeroed struct has S_ChannelNO FALSE (docs/semantics.md
-/// PO12). SL_OK; SL_E_NULL / SL_E_ALIGNMENT for a bad pointer.
-///
-/// # Safety
-/// `p` is NULL or points to a caller-owned SF_Antivalent that nothing else accesses during the call.
-#[no_mangle]
-pub unsafe extern "C" fn sl_sf_antivalent_defaults(
-    p: *mut crate::blocks::plcopen::antivalent::SF_Antivalent,
-) -> i32 {
-    ffi_boundary!(SL_E_INTERNAL, {
-        match instance(p) {
-            Ok(p) => {
-                *p = crate::blocks::plcopen::antivalent::SF_Antivalent::plcopen_defaults();
-                SL_OK
-            }
-            Err(e) => e,
-        }
-    })
-}
-
 /// Writes the elapsed time an FB_TON2 has stored (ms; the manual's "ExpiredTime") to
 /// `*pElapsedMs`, for the host to persist across a power cycle. Call it after
 /// `sl_ton2_cycle` (every cycle, or whenever the value changed) and write the value to
@@ -1635,5 +1589,51 @@ pub unsafe extern "C" fn sl_fsoe_frame_decode(
             Ok(st.code())
         };
         run().unwrap_or_else(|e| e)
+    })
+}
+
+/// Writes PLCopen's initial values into `*p`: ResetRequested TRUE, TrailingMinimum 350 ms
+/// (T#350ms), TrailingMaximum 2000 ms (T#2s); every other field, the private state
+/// included, zero (a power-up instance: call `sl_sf_resetbutton_init` next). A zeroed
+/// struct is not these defaults (its TrailingMinimum 0 is refused at activation): zero
+/// stays "not configured" (docs/semantics.md PO12). SL_OK; SL_E_NULL / SL_E_ALIGNMENT for
+/// a bad pointer.
+///
+/// # Safety
+/// `p` is NULL or points to a caller-owned SF_ResetButton that nothing else accesses during the call.
+#[no_mangle]
+pub unsafe extern "C" fn sl_sf_resetbutton_defaults(
+    p: *mut crate::blocks::plcopen::resetbutton::SF_ResetButton,
+) -> i32 {
+    ffi_boundary!(SL_E_INTERNAL, {
+        match instance(p) {
+            Ok(p) => {
+                *p = crate::blocks::plcopen::resetbutton::SF_ResetButton::plcopen_defaults();
+                SL_OK
+            }
+            Err(e) => e,
+        }
+    })
+}
+
+/// Writes PLCopen's initial values into `*p`: S_ChannelNO TRUE (its SAFEBOOL initial
+/// value); every other field, the private state included, zero (a power-up instance: call
+/// `sl_sf_antivalent_init` next). A zeroed struct has S_ChannelNO FALSE (docs/semantics.md
+/// PO12). SL_OK; SL_E_NULL / SL_E_ALIGNMENT for a bad pointer.
+///
+/// # Safety
+/// `p` is NULL or points to a caller-owned SF_Antivalent that nothing else accesses during the call.
+#[no_mangle]
+pub unsafe extern "C" fn sl_sf_antivalent_defaults(
+    p: *mut crate::blocks::plcopen::antivalent::SF_Antivalent,
+) -> i32 {
+    ffi_boundary!(SL_E_INTERNAL, {
+        match instance(p) {
+            Ok(p) => {
+                *p = crate::blocks::plcopen::antivalent::SF_Antivalent::plcopen_defaults();
+                SL_OK
+            }
+            Err(e) => e,
+        }
     })
 }
