@@ -88,7 +88,7 @@ pub const SL_REASON_TEXT_MAX: usize = 256;
 /// parameters break ("TWOHAND: tDiscTimePairs (3000 ms) must be <= 500 ms [reason
 /// 0xE001]"); for valid parameters in an error state, the latched diag ("LIMIT_INT: ERROR:
 /// MinValue is greater than MaxValue [Text ID 0x4090, Par2 5, Par3 3]", a PLCopen block's
-/// DiagCode and its text); otherwise "<NAME>: no refusal".
+/// DiagCode and its text); otherwise `"<NAME>: no refusal"`.
 fn reason_sentence<B>(fb: &B, out: &mut [u8]) -> usize
 where
     B: crate::base::block::Cyclic + Registered + FunctionBlock,

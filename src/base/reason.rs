@@ -215,7 +215,7 @@ pub struct Refusal {
 }
 
 impl Refusal {
-    /// The sentence: "<block>[ row N]: <field> (<a>) <rule>", then the code
+    /// The sentence: `"<block>[ row N]: <field> (<a>) <rule>"`, then the code
     /// ("LIMIT_INT: nMinimumValue (5) must be <= nMaximumValue (3) [Text ID 0x4090]").
     pub fn write(&self, block: &str, w: &mut Writer) {
         let RuleInfo {

@@ -334,7 +334,7 @@ pub const fn time1_rule(name: &'static str) -> RuleDef<SfConsts> {
 }
 
 /// The value a BOOL constant stands for in `SfConsts::times`: itself when 0 or 1, otherwise
-/// [`BOOL_CONST_INVALID`] with the byte in the low bits (above every valid time).
+/// bit 31 set with the byte in the low bits (above every valid time).
 pub const fn bool_const(byte: u8) -> u32 {
     match byte {
         0 | 1 => byte as u32,

@@ -1284,7 +1284,7 @@ pub unsafe extern "C" fn sl_diag_text(
 /// block's live parameters; nothing is stored by the init or cycle calls). With valid
 /// parameters and the block in an error state: the latched diag ("LIMIT_INT: ERROR:
 /// MinValue is greater than MaxValue [Text ID 0x4090, Par2 5, Par3 3]"; a PLCopen block:
-/// its DiagCode and text); otherwise "<NAME>: no refusal". The codes in brackets are the
+/// its DiagCode and text); otherwise `"<NAME>: no refusal"`. The codes in brackets are the
 /// manual's Text IDs or the library reason codes of docs/c-integration.md. For an HMI or a
 /// log after SL_E_CONFIG. SL_OK; SL_E_CONFIG for an unknown type (buf then holds "");
 /// SL_E_NULL for a NULL buf or pBlock; SL_E_ALIGNMENT for a misaligned pBlock.
