@@ -305,6 +305,11 @@
 #define SL_TYPE_CAMMONITOR_UDINT 71
 
 /*
+ The longest sentence `sl_reason_text` writes (bytes, without the NUL).
+ */
+#define SL_REASON_TEXT_MAX 256
+
+/*
  First type tag of the PLCopen family.
  */
 #define SF_TAG_BASE 512
@@ -319,6 +324,12 @@
  FB_CONNECTION_SHUTDOWN (`sl_group_add_member` refuses more with SL_E_FULL).
  */
 #define SL_GROUP_CONN_MAX 16
+
+/*
+ The documented library reason codes: one per kind of rule, for a refusal the manual has
+ no Text ID for (docs/c-integration.md lists them).
+ */
+#define SL_REASON_CODE_BASE 57344
 
 /*
  `nDiagProfile` 0: the PLCopen v2.01 DiagCodes (default).
@@ -1763,6 +1774,16 @@
 #define SF_RESETBUTTON_MIN_TRAILING 100
 
 /*
+ PLCopen's initial value of TrailingMinimum (ms): T#350ms.
+ */
+#define SF_RESETBUTTON_DEFAULT_TRAILING_MIN 350
+
+/*
+ PLCopen's initial value of TrailingMaximum (ms): T#2s.
+ */
+#define SF_RESETBUTTON_DEFAULT_TRAILING_MAX 2000
+
+/*
  Block type tag of SF_SafetyRequest (`SL_MEMBER.nType`, `sl_diag_text`).
  */
 #define SL_TYPE_SF_SAFETYREQUEST 518
@@ -2794,6 +2815,146 @@ typedef struct SL_FSOE_FRAME {
    */
   uint8_t aSafeData[32];
 } SL_FSOE_FRAME;
+
+/*
+ Private state of every `SF_` block (40 bytes). Never written by the user. The header's
+ `wDiag` holds the v2.01 DiagCode (the state), `nState` the [`SfPhase`], `nActive` the
+ latched profile, `tPhase` the entry time of the current state (the monitored times run
+ from there), `nFlags` the R_TRIG memories.
+ */
+typedef struct SL_SF_PRIVATE {
+  /*
+   Common head.
+   */
+  struct SL_PRIVATE_HEADER stHeader;
+  /*
+   Latched constant times (ms), covered by the header's parameter CRC.
+   */
+  uint32_t adwTime[2];
+  /*
+   Written by the owning group before each call: non-zero while the group does not run
+   the block (halted: DiagCode 0000, as with Activate FALSE).
+   */
+  uint8_t nGroupHalt;
+  /*
+   Reserved.
+   */
+  uint8_t aReserved[3];
+} SL_SF_PRIVATE;
+
+/*
+ SF_ResetButton instance: the PLCopen VAR_INPUT / VAR_OUTPUT names, BOOL = one byte.
+ Size: 64 bytes.
+ */
+typedef struct SF_ResetButton {
+  /*
+   Offset 0. ResetRequested: the activation of this block (it has no Activate); connect the paired FB's ResetRequest. FALSE = idle (DiagCode 0000, ResetOut FALSE), highest priority. PLCopen initial value TRUE.
+   */
+  SL_BOOL ResetRequested;
+  /*
+   Offset 1. ResetIn: the reset button, TRUE = pressed.
+   */
+  SL_BOOL ResetIn;
+  /*
+   Offset 2. Reserved, keep 0.
+   */
+  uint8_t aReserved0[1];
+  /*
+   Offset 3. Library extension, constant: DiagCode profile, only 0 = v2.01 (1 is refused: v2.x block); latched at activation.
+   */
+  uint8_t nDiagProfile;
+  /*
+   Offset 4. TrailingMinimum (constant, ms; PLCopen default T#350ms): shortest valid press, at least 100 ms; latched at activation.
+   */
+  uint32_t TrailingMinimum;
+  /*
+   Offset 8. TrailingMaximum (constant, ms; PLCopen default T#2s): a press this long is invalid; latched at activation.
+   */
+  uint32_t TrailingMaximum;
+  /*
+   Offset 12 (output base). Ready: TRUE while activated (DiagCode != 0000).
+   */
+  SL_BOOL Ready;
+  /*
+   Offset 13. ResetOut: TRUE for one call after the falling edge of a valid press (DiagCode 8000).
+   */
+  SL_BOOL ResetOut;
+  /*
+   Offset 14. Error: DiagCode >= C000.
+   */
+  SL_BOOL Error;
+  /*
+   Offset 15. Reserved.
+   */
+  uint8_t aReserved1[1];
+  /*
+   Offset 16. DiagCode: the state or error (v2.01).
+   */
+  uint16_t DiagCode;
+  /*
+   Offset 18. Reserved.
+   */
+  uint8_t aReserved2[6];
+  /*
+   Offset 24. Private state, 40 bytes: never write it.
+   */
+  struct SL_SF_PRIVATE stPrivate;
+} SF_ResetButton;
+
+/*
+ SF_Antivalent instance: the PLCopen VAR_INPUT / VAR_OUTPUT names, BOOL = one byte.
+ Size: 56 bytes.
+ */
+typedef struct SF_Antivalent {
+  /*
+   Offset 0. Activate: FALSE = idle (DiagCode 0000, every output FALSE), highest priority.
+   */
+  SL_BOOL Activate;
+  /*
+   Offset 1. S_ChannelNC: NC contact (break), TRUE = active.
+   */
+  SL_BOOL S_ChannelNC;
+  /*
+   Offset 2. S_ChannelNO: NO contact (make), FALSE = active (PLCopen's initial value is TRUE: connect it).
+   */
+  SL_BOOL S_ChannelNO;
+  /*
+   Offset 3. Library extension, constant: DiagCode profile, 0 = v2.01 (default), 1 = v1.0; latched at activation.
+   */
+  uint8_t nDiagProfile;
+  /*
+   Offset 4. DiscrepancyTime (constant, ms): how long the channels may differ; latched at activation.
+   */
+  uint32_t DiscrepancyTime;
+  /*
+   Offset 8 (output base). Ready: TRUE while activated (DiagCode != 0000).
+   */
+  SL_BOOL Ready;
+  /*
+   Offset 9. S_AntivalentOut: the safety output, TRUE only at DiagCode 8000.
+   */
+  SL_BOOL S_AntivalentOut;
+  /*
+   Offset 10. SafetyDemand: the safety function is demanded (v2.01 code bit 0x0800).
+   */
+  SL_BOOL SafetyDemand;
+  /*
+   Offset 11. Error: DiagCode >= C000.
+   */
+  SL_BOOL Error;
+  /*
+   Offset 12. Reserved.
+   */
+  uint8_t aReserved1[2];
+  /*
+   Offset 14. DiagCode: the state or error, in the profile of nDiagProfile.
+   */
+  uint16_t DiagCode;
+  /*
+   Offset 16. Private state, 40 bytes: never write it.
+   */
+  struct SL_SF_PRIVATE stPrivate;
+} SF_Antivalent;
 
 /*
  Private state of FB_ESTOP and FB_MON (80 bytes). Never written by the user.
@@ -11696,32 +11857,6 @@ typedef struct FB_CONNECTION_SHUTDOWN {
 } FB_CONNECTION_SHUTDOWN;
 
 /*
- Private state of every `SF_` block (40 bytes). Never written by the user. The header's
- `wDiag` holds the v2.01 DiagCode (the state), `nState` the [`SfPhase`], `nActive` the
- latched profile, `tPhase` the entry time of the current state (the monitored times run
- from there), `nFlags` the R_TRIG memories.
- */
-typedef struct SL_SF_PRIVATE {
-  /*
-   Common head.
-   */
-  struct SL_PRIVATE_HEADER stHeader;
-  /*
-   Latched constant times (ms), covered by the header's parameter CRC.
-   */
-  uint32_t adwTime[2];
-  /*
-   Written by the owning group before each call: non-zero while the group does not run
-   the block (halted: DiagCode 0000, as with Activate FALSE).
-   */
-  uint8_t nGroupHalt;
-  /*
-   Reserved.
-   */
-  uint8_t aReserved[3];
-} SL_SF_PRIVATE;
-
-/*
  SF_EmergencyStop instance: the PLCopen VAR_INPUT / VAR_OUTPUT names, BOOL = one byte.
  Size: 56 bytes.
  */
@@ -11978,61 +12113,6 @@ typedef struct SF_Equivalent {
 } SF_Equivalent;
 
 /*
- SF_Antivalent instance: the PLCopen VAR_INPUT / VAR_OUTPUT names, BOOL = one byte.
- Size: 56 bytes.
- */
-typedef struct SF_Antivalent {
-  /*
-   Offset 0. Activate: FALSE = idle (DiagCode 0000, every output FALSE), highest priority.
-   */
-  SL_BOOL Activate;
-  /*
-   Offset 1. S_ChannelNC: NC contact (break), TRUE = active.
-   */
-  SL_BOOL S_ChannelNC;
-  /*
-   Offset 2. S_ChannelNO: NO contact (make), FALSE = active (PLCopen's initial value is TRUE: connect it).
-   */
-  SL_BOOL S_ChannelNO;
-  /*
-   Offset 3. Library extension, constant: DiagCode profile, 0 = v2.01 (default), 1 = v1.0; latched at activation.
-   */
-  uint8_t nDiagProfile;
-  /*
-   Offset 4. DiscrepancyTime (constant, ms): how long the channels may differ; latched at activation.
-   */
-  uint32_t DiscrepancyTime;
-  /*
-   Offset 8 (output base). Ready: TRUE while activated (DiagCode != 0000).
-   */
-  SL_BOOL Ready;
-  /*
-   Offset 9. S_AntivalentOut: the safety output, TRUE only at DiagCode 8000.
-   */
-  SL_BOOL S_AntivalentOut;
-  /*
-   Offset 10. SafetyDemand: the safety function is demanded (v2.01 code bit 0x0800).
-   */
-  SL_BOOL SafetyDemand;
-  /*
-   Offset 11. Error: DiagCode >= C000.
-   */
-  SL_BOOL Error;
-  /*
-   Offset 12. Reserved.
-   */
-  uint8_t aReserved1[2];
-  /*
-   Offset 14. DiagCode: the state or error, in the profile of nDiagProfile.
-   */
-  uint16_t DiagCode;
-  /*
-   Offset 16. Private state, 40 bytes: never write it.
-   */
-  struct SL_SF_PRIVATE stPrivate;
-} SF_Antivalent;
-
-/*
  SF_Guard instance (v1.0: SF_GuardMonitoring, whose output S_GuardMonitoring is
  `S_GuardOut` here): the PLCopen VAR_INPUT / VAR_OUTPUT names, BOOL = one byte.
  Size: 64 bytes.
@@ -12249,65 +12329,6 @@ typedef struct SF_OutControl {
    */
   struct SL_SF_PRIVATE stPrivate;
 } SF_OutControl;
-
-/*
- SF_ResetButton instance: the PLCopen VAR_INPUT / VAR_OUTPUT names, BOOL = one byte.
- Size: 64 bytes.
- */
-typedef struct SF_ResetButton {
-  /*
-   Offset 0. ResetRequested: the activation of this block (it has no Activate); connect the paired FB's ResetRequest. FALSE = idle (DiagCode 0000, ResetOut FALSE), highest priority. PLCopen initial value TRUE.
-   */
-  SL_BOOL ResetRequested;
-  /*
-   Offset 1. ResetIn: the reset button, TRUE = pressed.
-   */
-  SL_BOOL ResetIn;
-  /*
-   Offset 2. Reserved, keep 0.
-   */
-  uint8_t aReserved0[1];
-  /*
-   Offset 3. Library extension, constant: DiagCode profile, only 0 = v2.01 (1 is refused: v2.x block); latched at activation.
-   */
-  uint8_t nDiagProfile;
-  /*
-   Offset 4. TrailingMinimum (constant, ms; PLCopen default T#350ms): shortest valid press, at least 100 ms; latched at activation.
-   */
-  uint32_t TrailingMinimum;
-  /*
-   Offset 8. TrailingMaximum (constant, ms; PLCopen default T#2s): a press this long is invalid; latched at activation.
-   */
-  uint32_t TrailingMaximum;
-  /*
-   Offset 12 (output base). Ready: TRUE while activated (DiagCode != 0000).
-   */
-  SL_BOOL Ready;
-  /*
-   Offset 13. ResetOut: TRUE for one call after the falling edge of a valid press (DiagCode 8000).
-   */
-  SL_BOOL ResetOut;
-  /*
-   Offset 14. Error: DiagCode >= C000.
-   */
-  SL_BOOL Error;
-  /*
-   Offset 15. Reserved.
-   */
-  uint8_t aReserved1[1];
-  /*
-   Offset 16. DiagCode: the state or error (v2.01).
-   */
-  uint16_t DiagCode;
-  /*
-   Offset 18. Reserved.
-   */
-  uint8_t aReserved2[6];
-  /*
-   Offset 24. Private state, 40 bytes: never write it.
-   */
-  struct SL_SF_PRIVATE stPrivate;
-} SF_ResetButton;
 
 /*
  SF_EDM instance: the PLCopen v2.01 VAR_INPUT / VAR_OUTPUT names (plus v1.0's
@@ -12959,6 +12980,26 @@ int32_t sl_group_cycle(struct SL_GROUP *g, struct SL_MEMBER *aMembers, struct SL
 int32_t sl_diag_text(uint16_t nType, uint16_t nDiag, char *buf, size_t nLen);
 
 /*
+ Writes why the block `pBlock` of type `nType` (`SL_TYPE_<NAME>`) refuses its parameters,
+ as one NUL-terminated sentence naming the field, the rule and the offending values
+ ("TWOHAND: tDiscTimePairs (3000 ms) must be <= 500 ms [reason 0xE001]", "LIMIT_INT:
+ nMinimumValue (5) must be <= nMaximumValue (3) [Text ID 0x4090]"), truncated to `nLen`
+ bytes including the NUL. The rules are evaluated again on the struct as it is now (the
+ block's live parameters; nothing is stored by the init or cycle calls). With valid
+ parameters and the block in an error state: the latched diag ("LIMIT_INT: ERROR:
+ MinValue is greater than MaxValue [Text ID 0x4090, Par2 5, Par3 3]"; a PLCopen block:
+ its DiagCode and text); otherwise `"<NAME>: no refusal"`. The codes in brackets are the
+ manual's Text IDs or the library reason codes of docs/c-integration.md. For an HMI or a
+ log after SL_E_CONFIG. SL_OK; SL_E_CONFIG for an unknown type (buf then holds "");
+ SL_E_NULL for a NULL buf or pBlock; SL_E_ALIGNMENT for a misaligned pBlock.
+
+ # Safety
+ `buf` is NULL or points to at least `nLen` writable bytes; `pBlock` is NULL or points to
+ a live instance of the type `nType` names that nobody writes during the call.
+ */
+int32_t sl_reason_text(uint16_t nType, const void *pBlock, char *buf, size_t nLen);
+
+/*
  Validates and latches the parameters of an FSoE connection (ABI-2 §13.1) and resets it
  to state 100 (Reset); nothing is sent yet. Never modifies an input or parameter field.
  SL_OK; SL_E_CONFIG for invalid parameters (nConnectionId 0, nRole not 1/2, a SafeData
@@ -13030,6 +13071,30 @@ int32_t sl_fsoe_frame_encode(uint8_t *pFrame, size_t nFrameCap, size_t *pFrameLe
  of them overlap.
  */
 int32_t sl_fsoe_frame_decode(const uint8_t *pFrame, size_t nFrameLen, size_t nSafeDataLen, uint16_t wRecvCrc0, uint16_t *pSeqNo, uint16_t wOldCrc0, SL_BOOL bCollisionCheck, struct SL_FSOE_FRAME *pOut);
+
+/*
+ Writes PLCopen's initial values into `*p`: ResetRequested TRUE, TrailingMinimum 350 ms
+ (T#350ms), TrailingMaximum 2000 ms (T#2s); every other field, the private state
+ included, zero (a power-up instance: call `sl_sf_resetbutton_init` next). A zeroed
+ struct is not these defaults (its TrailingMinimum 0 is refused at activation): zero
+ stays "not configured" (docs/semantics.md PO12). SL_OK; SL_E_NULL / SL_E_ALIGNMENT for
+ a bad pointer.
+
+ # Safety
+ `p` is NULL or points to a caller-owned SF_ResetButton that nothing else accesses during the call.
+ */
+int32_t sl_sf_resetbutton_defaults(struct SF_ResetButton *p);
+
+/*
+ Writes PLCopen's initial values into `*p`: S_ChannelNO TRUE (its SAFEBOOL initial
+ value); every other field, the private state included, zero (a power-up instance: call
+ `sl_sf_antivalent_init` next). A zeroed struct has S_ChannelNO FALSE (docs/semantics.md
+ PO12). SL_OK; SL_E_NULL / SL_E_ALIGNMENT for a bad pointer.
+
+ # Safety
+ `p` is NULL or points to a caller-owned SF_Antivalent that nothing else accesses during the call.
+ */
+int32_t sl_sf_antivalent_defaults(struct SF_Antivalent *p);
 
 /*
  * The functions of every registered block type (src/registry.rs). init validates and
@@ -13395,6 +13460,38 @@ SL_STATIC_ASSERT(offsetof(SL_FSOE_FRAME, wCrc0) == 4, "offset of SL_FSOE_FRAME.w
 SL_STATIC_ASSERT(offsetof(SL_FSOE_FRAME, nSeqNo) == 6, "offset of SL_FSOE_FRAME.nSeqNo");
 SL_STATIC_ASSERT(offsetof(SL_FSOE_FRAME, aSafeData) == 8, "offset of SL_FSOE_FRAME.aSafeData");
 SL_STATIC_ASSERT(sizeof(SL_FSOE_FRAME) == 40, "size of SL_FSOE_FRAME");
+SL_STATIC_ASSERT(offsetof(SL_SF_PRIVATE, stHeader) == 0, "offset of SL_SF_PRIVATE.stHeader");
+SL_STATIC_ASSERT(offsetof(SL_SF_PRIVATE, adwTime) == 28, "offset of SL_SF_PRIVATE.adwTime");
+SL_STATIC_ASSERT(offsetof(SL_SF_PRIVATE, nGroupHalt) == 36, "offset of SL_SF_PRIVATE.nGroupHalt");
+SL_STATIC_ASSERT(offsetof(SL_SF_PRIVATE, aReserved) == 37, "offset of SL_SF_PRIVATE.aReserved");
+SL_STATIC_ASSERT(sizeof(SL_SF_PRIVATE) == 40, "size of SL_SF_PRIVATE");
+SL_STATIC_ASSERT(offsetof(SF_ResetButton, ResetRequested) == 0, "offset of SF_ResetButton.ResetRequested");
+SL_STATIC_ASSERT(offsetof(SF_ResetButton, ResetIn) == 1, "offset of SF_ResetButton.ResetIn");
+SL_STATIC_ASSERT(offsetof(SF_ResetButton, aReserved0) == 2, "offset of SF_ResetButton.aReserved0");
+SL_STATIC_ASSERT(offsetof(SF_ResetButton, nDiagProfile) == 3, "offset of SF_ResetButton.nDiagProfile");
+SL_STATIC_ASSERT(offsetof(SF_ResetButton, TrailingMinimum) == 4, "offset of SF_ResetButton.TrailingMinimum");
+SL_STATIC_ASSERT(offsetof(SF_ResetButton, TrailingMaximum) == 8, "offset of SF_ResetButton.TrailingMaximum");
+SL_STATIC_ASSERT(offsetof(SF_ResetButton, Ready) == 12, "offset of SF_ResetButton.Ready");
+SL_STATIC_ASSERT(offsetof(SF_ResetButton, ResetOut) == 13, "offset of SF_ResetButton.ResetOut");
+SL_STATIC_ASSERT(offsetof(SF_ResetButton, Error) == 14, "offset of SF_ResetButton.Error");
+SL_STATIC_ASSERT(offsetof(SF_ResetButton, aReserved1) == 15, "offset of SF_ResetButton.aReserved1");
+SL_STATIC_ASSERT(offsetof(SF_ResetButton, DiagCode) == 16, "offset of SF_ResetButton.DiagCode");
+SL_STATIC_ASSERT(offsetof(SF_ResetButton, aReserved2) == 18, "offset of SF_ResetButton.aReserved2");
+SL_STATIC_ASSERT(offsetof(SF_ResetButton, stPrivate) == 24, "offset of SF_ResetButton.stPrivate");
+SL_STATIC_ASSERT(sizeof(SF_ResetButton) == 64, "size of SF_ResetButton");
+SL_STATIC_ASSERT(offsetof(SF_Antivalent, Activate) == 0, "offset of SF_Antivalent.Activate");
+SL_STATIC_ASSERT(offsetof(SF_Antivalent, S_ChannelNC) == 1, "offset of SF_Antivalent.S_ChannelNC");
+SL_STATIC_ASSERT(offsetof(SF_Antivalent, S_ChannelNO) == 2, "offset of SF_Antivalent.S_ChannelNO");
+SL_STATIC_ASSERT(offsetof(SF_Antivalent, nDiagProfile) == 3, "offset of SF_Antivalent.nDiagProfile");
+SL_STATIC_ASSERT(offsetof(SF_Antivalent, DiscrepancyTime) == 4, "offset of SF_Antivalent.DiscrepancyTime");
+SL_STATIC_ASSERT(offsetof(SF_Antivalent, Ready) == 8, "offset of SF_Antivalent.Ready");
+SL_STATIC_ASSERT(offsetof(SF_Antivalent, S_AntivalentOut) == 9, "offset of SF_Antivalent.S_AntivalentOut");
+SL_STATIC_ASSERT(offsetof(SF_Antivalent, SafetyDemand) == 10, "offset of SF_Antivalent.SafetyDemand");
+SL_STATIC_ASSERT(offsetof(SF_Antivalent, Error) == 11, "offset of SF_Antivalent.Error");
+SL_STATIC_ASSERT(offsetof(SF_Antivalent, aReserved1) == 12, "offset of SF_Antivalent.aReserved1");
+SL_STATIC_ASSERT(offsetof(SF_Antivalent, DiagCode) == 14, "offset of SF_Antivalent.DiagCode");
+SL_STATIC_ASSERT(offsetof(SF_Antivalent, stPrivate) == 16, "offset of SF_Antivalent.stPrivate");
+SL_STATIC_ASSERT(sizeof(SF_Antivalent) == 56, "size of SF_Antivalent");
 SL_STATIC_ASSERT(offsetof(SL_GUARD_PRIVATE, stHeader) == 0, "offset of SL_GUARD_PRIVATE.stHeader");
 SL_STATIC_ASSERT(offsetof(SL_GUARD_PRIVATE, adwTime) == 28, "offset of SL_GUARD_PRIVATE.adwTime");
 SL_STATIC_ASSERT(offsetof(SL_GUARD_PRIVATE, atDiscStart) == 60, "offset of SL_GUARD_PRIVATE.atDiscStart");
@@ -15500,11 +15597,6 @@ SL_STATIC_ASSERT(offsetof(FB_CONNECTION_SHUTDOWN, nDiag) == 42, "offset of FB_CO
 SL_STATIC_ASSERT(offsetof(FB_CONNECTION_SHUTDOWN, aReserved6) == 44, "offset of FB_CONNECTION_SHUTDOWN.aReserved6");
 SL_STATIC_ASSERT(offsetof(FB_CONNECTION_SHUTDOWN, stPrivate) == 48, "offset of FB_CONNECTION_SHUTDOWN.stPrivate");
 SL_STATIC_ASSERT(sizeof(FB_CONNECTION_SHUTDOWN) == 88, "size of FB_CONNECTION_SHUTDOWN");
-SL_STATIC_ASSERT(offsetof(SL_SF_PRIVATE, stHeader) == 0, "offset of SL_SF_PRIVATE.stHeader");
-SL_STATIC_ASSERT(offsetof(SL_SF_PRIVATE, adwTime) == 28, "offset of SL_SF_PRIVATE.adwTime");
-SL_STATIC_ASSERT(offsetof(SL_SF_PRIVATE, nGroupHalt) == 36, "offset of SL_SF_PRIVATE.nGroupHalt");
-SL_STATIC_ASSERT(offsetof(SL_SF_PRIVATE, aReserved) == 37, "offset of SL_SF_PRIVATE.aReserved");
-SL_STATIC_ASSERT(sizeof(SL_SF_PRIVATE) == 40, "size of SL_SF_PRIVATE");
 SL_STATIC_ASSERT(offsetof(SF_EmergencyStop, Activate) == 0, "offset of SF_EmergencyStop.Activate");
 SL_STATIC_ASSERT(offsetof(SF_EmergencyStop, S_EStopIn) == 1, "offset of SF_EmergencyStop.S_EStopIn");
 SL_STATIC_ASSERT(offsetof(SF_EmergencyStop, S_StartReset) == 2, "offset of SF_EmergencyStop.S_StartReset");
@@ -15566,19 +15658,6 @@ SL_STATIC_ASSERT(offsetof(SF_Equivalent, aReserved1) == 12, "offset of SF_Equiva
 SL_STATIC_ASSERT(offsetof(SF_Equivalent, DiagCode) == 14, "offset of SF_Equivalent.DiagCode");
 SL_STATIC_ASSERT(offsetof(SF_Equivalent, stPrivate) == 16, "offset of SF_Equivalent.stPrivate");
 SL_STATIC_ASSERT(sizeof(SF_Equivalent) == 56, "size of SF_Equivalent");
-SL_STATIC_ASSERT(offsetof(SF_Antivalent, Activate) == 0, "offset of SF_Antivalent.Activate");
-SL_STATIC_ASSERT(offsetof(SF_Antivalent, S_ChannelNC) == 1, "offset of SF_Antivalent.S_ChannelNC");
-SL_STATIC_ASSERT(offsetof(SF_Antivalent, S_ChannelNO) == 2, "offset of SF_Antivalent.S_ChannelNO");
-SL_STATIC_ASSERT(offsetof(SF_Antivalent, nDiagProfile) == 3, "offset of SF_Antivalent.nDiagProfile");
-SL_STATIC_ASSERT(offsetof(SF_Antivalent, DiscrepancyTime) == 4, "offset of SF_Antivalent.DiscrepancyTime");
-SL_STATIC_ASSERT(offsetof(SF_Antivalent, Ready) == 8, "offset of SF_Antivalent.Ready");
-SL_STATIC_ASSERT(offsetof(SF_Antivalent, S_AntivalentOut) == 9, "offset of SF_Antivalent.S_AntivalentOut");
-SL_STATIC_ASSERT(offsetof(SF_Antivalent, SafetyDemand) == 10, "offset of SF_Antivalent.SafetyDemand");
-SL_STATIC_ASSERT(offsetof(SF_Antivalent, Error) == 11, "offset of SF_Antivalent.Error");
-SL_STATIC_ASSERT(offsetof(SF_Antivalent, aReserved1) == 12, "offset of SF_Antivalent.aReserved1");
-SL_STATIC_ASSERT(offsetof(SF_Antivalent, DiagCode) == 14, "offset of SF_Antivalent.DiagCode");
-SL_STATIC_ASSERT(offsetof(SF_Antivalent, stPrivate) == 16, "offset of SF_Antivalent.stPrivate");
-SL_STATIC_ASSERT(sizeof(SF_Antivalent) == 56, "size of SF_Antivalent");
 SL_STATIC_ASSERT(offsetof(SF_Guard, Activate) == 0, "offset of SF_Guard.Activate");
 SL_STATIC_ASSERT(offsetof(SF_Guard, S_GuardSwitch1) == 1, "offset of SF_Guard.S_GuardSwitch1");
 SL_STATIC_ASSERT(offsetof(SF_Guard, S_GuardSwitch2) == 2, "offset of SF_Guard.S_GuardSwitch2");
@@ -15631,20 +15710,6 @@ SL_STATIC_ASSERT(offsetof(SF_OutControl, aReserved1) == 13, "offset of SF_OutCon
 SL_STATIC_ASSERT(offsetof(SF_OutControl, DiagCode) == 14, "offset of SF_OutControl.DiagCode");
 SL_STATIC_ASSERT(offsetof(SF_OutControl, stPrivate) == 16, "offset of SF_OutControl.stPrivate");
 SL_STATIC_ASSERT(sizeof(SF_OutControl) == 56, "size of SF_OutControl");
-SL_STATIC_ASSERT(offsetof(SF_ResetButton, ResetRequested) == 0, "offset of SF_ResetButton.ResetRequested");
-SL_STATIC_ASSERT(offsetof(SF_ResetButton, ResetIn) == 1, "offset of SF_ResetButton.ResetIn");
-SL_STATIC_ASSERT(offsetof(SF_ResetButton, aReserved0) == 2, "offset of SF_ResetButton.aReserved0");
-SL_STATIC_ASSERT(offsetof(SF_ResetButton, nDiagProfile) == 3, "offset of SF_ResetButton.nDiagProfile");
-SL_STATIC_ASSERT(offsetof(SF_ResetButton, TrailingMinimum) == 4, "offset of SF_ResetButton.TrailingMinimum");
-SL_STATIC_ASSERT(offsetof(SF_ResetButton, TrailingMaximum) == 8, "offset of SF_ResetButton.TrailingMaximum");
-SL_STATIC_ASSERT(offsetof(SF_ResetButton, Ready) == 12, "offset of SF_ResetButton.Ready");
-SL_STATIC_ASSERT(offsetof(SF_ResetButton, ResetOut) == 13, "offset of SF_ResetButton.ResetOut");
-SL_STATIC_ASSERT(offsetof(SF_ResetButton, Error) == 14, "offset of SF_ResetButton.Error");
-SL_STATIC_ASSERT(offsetof(SF_ResetButton, aReserved1) == 15, "offset of SF_ResetButton.aReserved1");
-SL_STATIC_ASSERT(offsetof(SF_ResetButton, DiagCode) == 16, "offset of SF_ResetButton.DiagCode");
-SL_STATIC_ASSERT(offsetof(SF_ResetButton, aReserved2) == 18, "offset of SF_ResetButton.aReserved2");
-SL_STATIC_ASSERT(offsetof(SF_ResetButton, stPrivate) == 24, "offset of SF_ResetButton.stPrivate");
-SL_STATIC_ASSERT(sizeof(SF_ResetButton) == 64, "size of SF_ResetButton");
 SL_STATIC_ASSERT(offsetof(SF_EDM, Activate) == 0, "offset of SF_EDM.Activate");
 SL_STATIC_ASSERT(offsetof(SF_EDM, S_OutControl) == 1, "offset of SF_EDM.S_OutControl");
 SL_STATIC_ASSERT(offsetof(SF_EDM, EDM1) == 2, "offset of SF_EDM.EDM1");

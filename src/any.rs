@@ -70,6 +70,81 @@ pub trait FunctionBlock {
     fn set(&mut self, name: &str, value: i64) -> Result<(), Status>;
     /// The field-table entry of a name.
     fn field(&self, name: &str) -> Option<&'static crate::base::block::Field>;
+    /// Why the block refuses or is in error, as one sentence (`sl_reason_text`), written
+    /// into `out` (truncated to fit); returns the number of bytes written (no NUL).
+    fn reason_text(&self, out: &mut [u8]) -> usize;
+    /// [`Self::reason_text`] as a `String`.
+    fn reason(&self) -> String {
+        let mut buf = [0u8; SL_REASON_TEXT_MAX];
+        let n = self.reason_text(&mut buf);
+        String::from_utf8_lossy(&buf[..n]).into_owned()
+    }
+}
+
+/// The longest sentence `sl_reason_text` writes (bytes, without the NUL).
+pub const SL_REASON_TEXT_MAX: usize = 256;
+
+/// The sentence of [`FunctionBlock::reason_text`]: the first parameter rule the live
+/// parameters break ("TWOHAND: tDiscTimePairs (3000 ms) must be <= 500 ms [reason
+/// 0xE001]"); for valid parameters in an error state, the latched diag ("LIMIT_INT: ERROR:
+/// MinValue is greater than MaxValue [Text ID 0x4090, Par2 5, Par3 3]", a PLCopen block's
+/// DiagCode and its text); otherwise `"<NAME>: no refusal"`.
+fn reason_sentence<B>(fb: &B, out: &mut [u8]) -> usize
+where
+    B: crate::base::block::Cyclic + Registered + FunctionBlock,
+{
+    use crate::base::block::{family, Family};
+    use crate::base::reason::Writer;
+    let mut w = Writer::new(out);
+    let info = B::INFO;
+    if let Some(r) = fb.refusal() {
+        r.write(info.name, &mut w);
+        return w.len();
+    }
+    w.push(info.name);
+    if !fb.in_error() {
+        w.push(": no refusal");
+        return w.len();
+    }
+    let mut text = [0u8; SL_REASON_TEXT_MAX];
+    match family(info.tag) {
+        Family::PlcOpen => {
+            let code = fb.get("DiagCode").unwrap_or(0) as u16;
+            w.push(": DiagCode ");
+            w.hex(i64::from(code), 4);
+            w.push(": ");
+            let n = crate::base::diag::diag_text(&info, code, &mut text);
+            w.push(core::str::from_utf8(&text[..n]).unwrap_or(""));
+        }
+        Family::TwinSafe => {
+            let diag = fb.get("nDiag").unwrap_or(0) as u16;
+            w.push(": ERROR: ");
+            let n = crate::base::diag::diag_text(&info, diag, &mut text);
+            w.push(core::str::from_utf8(&text[..n]).unwrap_or(""));
+            if let Some(id) = fb.get("nDiagTextId").filter(|&id| id != 0) {
+                // The message parameters in the block's signal type.
+                let signed = B::FIELDS
+                    .iter()
+                    .any(|f| matches!(f.kind, Kind::I16 | Kind::I32));
+                let par = |name: &str| {
+                    let bits = fb.get(name).unwrap_or(0);
+                    if signed {
+                        i64::from(bits as i32)
+                    } else {
+                        i64::from(bits)
+                    }
+                };
+                w.push(" [Text ID ");
+                w.hex(i64::from(id), 4);
+                w.push(", Par2 ");
+                w.int(par("dwDiagPar2"));
+                w.push(", Par3 ");
+                w.int(par("dwDiagPar3"));
+                w.push("]");
+            }
+        }
+    }
+    w.len()
 }
 
 impl<B: crate::base::block::Cyclic + crate::base::block::Registered + Member> FunctionBlock for B {
@@ -131,6 +206,9 @@ impl<B: crate::base::block::Cyclic + crate::base::block::Registered + Member> Fu
     fn field(&self, name: &str) -> Option<&'static crate::base::block::Field> {
         B::FIELDS.iter().find(|f| f.name == name)
     }
+    fn reason_text(&self, out: &mut [u8]) -> usize {
+        reason_sentence(self, out)
+    }
 }
 
 macro_rules! any_block {
@@ -175,6 +253,36 @@ macro_rules! any_block {
             pub fn init(&mut self) -> i32 {
                 match self {
                     $(Self::$ty(b) => $crate::any::FunctionBlock::init(b),)*
+                }
+            }
+
+            /// The first parameter rule the live parameters break (`base::reason`).
+            pub fn refusal(&self) -> Option<crate::base::reason::Refusal> {
+                match self {
+                    $(Self::$ty(b) => $crate::base::block::Cyclic::refusal(b),)*
+                }
+            }
+
+            /// The address of the block (the C struct), for a C function such as
+            /// `sl_reason_text`.
+            pub fn as_ptr(&self) -> *const core::ffi::c_void {
+                match self {
+                    $(Self::$ty(b) => (b as *const $krate::blocks::$fam::$m::$ty).cast(),)*
+                }
+            }
+
+            /// The address of the block, writable (a table parameter such as
+            /// LOADSENSING's rows lies outside the field table).
+            pub fn as_mut_ptr(&mut self) -> *mut core::ffi::c_void {
+                match self {
+                    $(Self::$ty(b) => (b as *mut $krate::blocks::$fam::$m::$ty).cast(),)*
+                }
+            }
+
+            /// Why the block refuses or is in error ([`FunctionBlock::reason`]).
+            pub fn reason(&self) -> String {
+                match self {
+                    $(Self::$ty(b) => $crate::any::FunctionBlock::reason(b),)*
                 }
             }
 

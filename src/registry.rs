@@ -12,8 +12,10 @@
 // The vocabulary of a row (what a block declares about itself), public here as well: a
 // user of the registry reads rows without reaching into the core layer.
 pub use crate::base::block::{
-    family, BlockInfo, BlockState, Dir, Family, Field, FieldType, Kind, Registered, SF_TAG_BASE,
+    family, BlockInfo, BlockState, Cyclic, Dir, Family, Field, FieldType, Kind, Registered,
+    SF_TAG_BASE,
 };
+pub use crate::base::reason::{Refusal, Rule, RuleInfo};
 
 /// One registered block type.
 #[derive(Clone, Copy, Debug)]
@@ -28,18 +30,26 @@ pub struct BlockType {
     pub size: usize,
     /// The C function prefix (`sl_estop`, `sl_add_int`).
     pub c_prefix: &'static str,
+    /// The `i`-th of the type's parameter rules (`base::reason`), in the order checked.
+    pub rule: fn(usize) -> Option<RuleInfo>,
 }
 
 impl BlockType {
     /// The entry of a registered type.
-    pub const fn of<B: Registered>(c_prefix: &'static str) -> Self {
+    pub const fn of<B: Registered + Cyclic>(c_prefix: &'static str) -> Self {
         Self {
             info: B::INFO,
             fields: B::FIELDS,
             table_params: B::TABLE_PARAMS,
             size: core::mem::size_of::<B>(),
             c_prefix,
+            rule: <B as Cyclic>::rule,
         }
+    }
+
+    /// The type's parameter rules, in the order they are checked.
+    pub fn rules(&self) -> impl Iterator<Item = RuleInfo> + '_ {
+        (0..).map_while(|i| (self.rule)(i))
     }
 
     /// What precedes the name in the C struct's name: `FB_` for `FB_<NAME>` (TwinSAFE),

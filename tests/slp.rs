@@ -206,20 +206,21 @@ fn live_singleturn_crossing_is_error_40d1() {
 }
 
 /// ABI-2 §12.8: crossing `…Fix` limits (multi-turn, neither limit from an input) are
-/// SL_E_CONFIG at init and STOP → run, with the Text ID and its parameters shown in STOP.
+/// SL_E_CONFIG at init and STOP → run, with the Text ID, its parameters and the diag bit
+/// the same message has in ERROR shown in STOP (semantics C15).
 #[test]
 fn fixed_limits_crossing_are_config_with_the_text_id() {
     let mut fb = make(BASE, 0, (5, 0), (4, 9));
     assert_eq!(fb.init(), SL_E_CONFIG);
     assert_eq!(fb.nState, SL_STATE_STOP);
-    assert_eq!(message(&fb), (0, 0x40D0, 5, 4));
+    assert_eq!(message(&fb), (1, 0x40D0, 5, 4));
     fb.bRun = 1;
     set_pos(&mut fb, 1, (4, 0));
     assert_eq!(fb.cycle(0), SL_E_CONFIG);
     assert_eq!((fb.nState, outs(&fb)), (SL_STATE_STOP, (0, 0, 0, 0)));
     let mut fb = make(BASE, 0, (-1, 10), (-1, 9));
     assert_eq!(fb.init(), SL_E_CONFIG);
-    assert_eq!(message(&fb), (0, 0x40D1, 10, 9));
+    assert_eq!(message(&fb), (2, 0x40D1, 10, 9));
     // Equal is valid; single-turn mode wraps instead (PL4).
     assert_eq!(make(BASE, 0, (-1, 9), (-1, 9)).init(), SL_OK);
     assert_eq!(

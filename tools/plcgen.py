@@ -472,6 +472,26 @@ def cmt(text: str) -> str:
     return f" (* {text} *)" if text else ""
 
 
+# PLCopen initial values that are not zero (docs/semantics.md PO12): the ST function blocks
+# declare them, as sl_sf_resetbutton_defaults / sl_sf_antivalent_defaults write them in C.
+# Values in the field's unit (BOOL 0/1, times in ms).
+PLCOPEN_INITIAL = {
+    ("SF_ResetButton", "ResetRequested"): 1,
+    ("SF_ResetButton", "TrailingMinimum"): 350,
+    ("SF_ResetButton", "TrailingMaximum"): 2000,
+    ("SF_Antivalent", "S_ChannelNO"): 1,
+}
+
+
+def initial_literal(st_type: str, value: int, iec: bool) -> str:
+    """The ST literal of an initial value (PLCOPEN_INITIAL) in the input's ST type."""
+    if st_type == "BOOL":
+        return "TRUE" if value else "FALSE"
+    if st_type == "TIME":
+        return f"T#{value}MS"
+    return f"{st_type}#{value}" if iec else str(value)
+
+
 def zero_literal(st_type: str, iec: bool) -> str:
     if st_type == "BOOL":
         return "FALSE"
@@ -665,6 +685,8 @@ def fb_decl(hdr: Header, fl: Flavour, blk: Block) -> str:
     for f in blk.inputs:
         t, _, _ = fl.fb_type(hdr, f, blk.is_sf)
         init = "" if f.count is not None else f" := {zero_literal(t, fl.iec)}"
+        if (blk.struct.name, f.name) in PLCOPEN_INITIAL:
+            init = f" := {initial_literal(t, PLCOPEN_INITIAL[(blk.struct.name, f.name)], fl.iec)}"
         note = f.doc + (" (ms)" if is_time_ms(f) and t != "TIME" and " ms" not in f.doc else "")
         out.append(f"    {f.name} : {t}{init};{cmt(note)}")
     tnow = (f"    tNow : UDINT := {zero_literal('UDINT', fl.iec)};"

@@ -731,12 +731,24 @@ impl Project {
             for (mi, m) in g.members.iter().enumerate() {
                 if let Err(msg) = m.build() {
                     let (_, member_span, spans) = &groups[gi].1[mi];
-                    return Err(match m.refused_value() {
-                        Some((f, range)) => src.error(
-                            spans.get(&f.offset).unwrap_or(member_span).clone(),
-                            format!("member `{}`: {range}", m.name),
-                        ),
-                        None => {
+                    let at = |f: &Field| spans.get(&f.offset).unwrap_or(member_span).clone();
+                    // The library's reason (the field and the rule it breaks), at that
+                    // field's line, with the interval the init accepts where one field alone
+                    // is the cause.
+                    return Err(match (m.reason(), m.refused_value()) {
+                        (Some((Some(f), why)), Some((g, _, range))) if f == g => {
+                            src.error(at(f), format!("member `{}`: {why}; {range}", m.name))
+                        }
+                        (Some((Some(f), why)), _) => {
+                            src.error(at(f), format!("member `{}`: {why}", m.name))
+                        }
+                        (Some((None, why)), _) => {
+                            src.error(member_span.clone(), format!("member `{}`: {why}", m.name))
+                        }
+                        (None, Some((f, given, range))) => {
+                            src.error(at(f), format!("member `{}`: {given}; {range}", m.name))
+                        }
+                        (None, None) => {
                             src.error(member_span.clone(), format!("member `{}`: {msg}", m.name))
                         }
                     });
@@ -1006,13 +1018,30 @@ fn parse_member(src: &Source, t: &Spanned<Table>) -> Result<(Member, Spans), Err
 }
 
 impl Member {
+    /// The library's reason for refusing the member's parameters (`sl_reason_text`'s
+    /// sentence) and the field it names, when that is one field of the block.
+    fn reason(&self) -> Option<(Option<&'static Field>, String)> {
+        let mut b = AnyBlock::new(self.block.info.tag)?;
+        for (f, v) in &self.values {
+            b.set(f.name, *v).ok()?;
+        }
+        let r = b.refusal()?;
+        let name = if r.hit.field.is_empty() {
+            r.info.field
+        } else {
+            r.hit.field
+        };
+        Some((self.block.field(name), b.reason()))
+    }
+
     /// Which value the block's init refuses, and what it would accept: the first parameter
     /// (in field-table order) whose value alone, set to its zero default, makes the init
     /// accept, with the interval of values around that default the init accepts with the
     /// other parameters as given (found by bisection, so an interval: every parameter
     /// limit of the manual is a bound or a relation to another parameter). `None` when no
     /// single parameter is the cause.
-    fn refused_value(&self) -> Option<(&'static Field, String)> {
+    /// Returns the field, "<field> = <value> is refused by <block>'s init" and the interval.
+    fn refused_value(&self) -> Option<(&'static Field, String, String)> {
         let accepts = |f: &Field, v: i64| self.build_with(Some((f, v))).is_ok();
         let (f, given) = self
             .values
@@ -1063,10 +1092,8 @@ impl Member {
         };
         Some((
             f,
-            format!(
-                "{label} = {} is refused by {name}'s init; {range}",
-                show(given)
-            ),
+            format!("{label} = {} is refused by {name}'s init", show(given)),
+            range,
         ))
     }
 }

@@ -271,3 +271,205 @@ fn group_case(what: &str, call: &str, set: &toml::Table, want: i32) {
     assert_eq!(g.nState, SL_STATE_ERROR, "{what}");
     assert_eq!((g.bInRun, g.bFbRun, g.bFbErr), (0, 0, 1), "{what}");
 }
+
+/// `c_rules.toml`: one violating configuration per parameter rule of every registered type
+/// (`[[case]]`: `types`, `set` fields by name, `raw` BOOL bytes, LOADSENSING `rows` as
+/// `[X, Y1, Y2, WY1, WY2]`),
+/// with the exact sentence `sl_reason_text` writes (`{type}` stands for the type's name)
+/// and the refusal it gets: `expect = "SL_E_CONFIG"` (a TwinSAFE block held in STOP with
+/// every BOOL output FALSE, a PLCopen block in DiagCode C3FC at activation) or a PLCopen
+/// parameter-error DiagCode (`expect = "DiagCode 0xC000"`), Error TRUE and every other BOOL
+/// output FALSE. Then the reach check: every rule of every type's list (`BlockType::rules`,
+/// the lists the checks run) was the refusal of a case, so a rule added without a case
+/// fails here. `SAFELOGIC_BLESS=1` rewrites the `reason` lines from the current sentences.
+#[test]
+fn every_parameter_rule_of_every_block_has_its_refusal() {
+    use safelogic::registry::{family, Family, BLOCKS};
+    use std::collections::BTreeSet;
+    let blessing = std::env::var_os("SAFELOGIC_BLESS").is_some();
+    let path = dir().join("c_rules.toml");
+    let text = std::fs::read_to_string(&path).unwrap();
+    let t: toml::Table = text.parse().unwrap();
+    let cases = t["case"].as_array().unwrap();
+    let mut hit = BTreeSet::new();
+    let mut blessed = Vec::new();
+    let mut wrong = Vec::new();
+    for (n, case) in cases.iter().enumerate() {
+        let case = case.as_table().unwrap();
+        let want = case["reason"].as_str().unwrap();
+        let expect = case["expect"].as_str().unwrap();
+        let mut templated = None;
+        for ty_name in case["types"].as_array().unwrap() {
+            let ty_name = ty_name.as_str().unwrap();
+            let what = format!("case {} ({ty_name})", n + 1);
+            let ty = block_type_named(ty_name).unwrap_or_else(|| panic!("{what}: a type"));
+            let mut b = AnyBlock::new(ty.info.tag).unwrap();
+            if let Some(set) = case.get("set").and_then(|s| s.as_table()) {
+                for (k, v) in set {
+                    b.set(k, v.as_integer().unwrap())
+                        .unwrap_or_else(|_| panic!("{what}: {k}"));
+                }
+            }
+            // A BOOL constant's byte that is neither 0 nor 1 (`set` refuses it).
+            if let Some(raw) = case.get("raw").and_then(|s| s.as_table()) {
+                for (k, v) in raw {
+                    let f = ty.field(k).unwrap_or_else(|| panic!("{what}: {k}"));
+                    assert_eq!(f.kind, Kind::Bool, "{what}: {k}");
+                    let byte = u8::try_from(v.as_integer().unwrap()).unwrap();
+                    // SAFETY: the field's byte inside the block.
+                    unsafe { *b.as_mut_ptr().cast::<u8>().add(usize::from(f.offset)) = byte };
+                }
+            }
+            if let Some(rows) = case.get("rows").and_then(|r| r.as_array()) {
+                write_rows(&mut b, rows, &what);
+            }
+            let init = b.init();
+            let refusal = b
+                .refusal()
+                .unwrap_or_else(|| panic!("{what}: the configuration is refused"));
+            hit.insert((ty.info.tag, refusal.index));
+            // The sentence through the C ABI.
+            let mut buf = [0u8; 300];
+            // SAFETY: a live block of the type named by the tag; a buffer of its length.
+            let rc = unsafe {
+                sl_reason_text(ty.info.tag, b.as_ptr(), buf.as_mut_ptr().cast(), buf.len())
+            };
+            assert_eq!(rc, SL_OK, "{what}");
+            let got = std::ffi::CStr::from_bytes_until_nul(&buf)
+                .unwrap()
+                .to_str()
+                .unwrap()
+                .replace(ty.info.name, "{type}");
+            assert_eq!(
+                templated.get_or_insert_with(|| got.clone()),
+                &got,
+                "{what}: the types of one case give one sentence"
+            );
+            if !blessing && got != want {
+                wrong.push(format!("{what}:\n  want {want}\n  got  {got}"));
+            }
+            refused_safely(&mut b, init, expect, &what);
+            assert_eq!(
+                b.reason().replace(ty.info.name, "{type}"),
+                got,
+                "{what}: Rust"
+            );
+        }
+        blessed.push(templated.unwrap());
+    }
+    if blessing {
+        let mut n = 0;
+        let out: Vec<String> = text
+            .lines()
+            .map(|l| {
+                if l.starts_with("reason = ") {
+                    n += 1;
+                    format!("reason = {:?}", blessed[n - 1])
+                } else {
+                    l.to_string()
+                }
+            })
+            .collect();
+        std::fs::write(&path, out.join("\n") + "\n").unwrap();
+    }
+    assert!(wrong.is_empty(), "{}", wrong.join("\n"));
+    let missing: Vec<String> = BLOCKS
+        .iter()
+        .flat_map(|bt| {
+            let hit = &hit;
+            bt.rules()
+                .enumerate()
+                .filter(move |&(i, _)| !hit.contains(&(bt.info.tag, i)))
+                .map(move |(i, r)| format!("{} rule {i}: {} {:?}", bt.info.name, r.field, r.rule))
+        })
+        .collect();
+    assert!(
+        missing.is_empty(),
+        "rules without a case in c_rules.toml:\n{}",
+        missing.join("\n")
+    );
+    // Every family is in the list (a type without rules would need none).
+    assert!(BLOCKS.iter().all(|bt| bt.rules().next().is_some()));
+    assert!(BLOCKS
+        .iter()
+        .any(|bt| family(bt.info.tag) == Family::PlcOpen));
+}
+
+/// Writes LOADSENSING's rows (`[X, Y1, Y2, WY1, WY2]` each) into the table parameter.
+fn write_rows(b: &mut AnyBlock, rows: &[toml::Value], what: &str) {
+    let ty = b.block_type();
+    let &(offset, bytes) = ty.table_params.first().expect("a table parameter");
+    let kind = ty.field("nAnalogInX").expect("LOADSENSING").kind;
+    let size = kind.size();
+    assert!(rows.len() * 5 * size <= bytes, "{what}: rows");
+    let base = b.as_mut_ptr().cast::<u8>();
+    for (i, row) in rows.iter().enumerate() {
+        for (j, v) in row.as_array().unwrap().iter().enumerate() {
+            let v = v.as_integer().unwrap();
+            assert!(safelogic::any::in_range(kind, v), "{what}: row value {v}");
+            let le = (v as u32).to_le_bytes();
+            // SAFETY: inside the table parameter of the block (checked above); bytes.
+            unsafe {
+                let at = base.add(offset + (i * 5 + j) * size);
+                core::ptr::copy_nonoverlapping(le.as_ptr(), at, size);
+            }
+        }
+    }
+}
+
+/// The refusal leaves the safe state (see `every_parameter_rule_of_every_block_has_its_refusal`).
+fn refused_safely(b: &mut AnyBlock, init: i32, expect: &str, what: &str) {
+    use safelogic::registry::{family, Family};
+    let ty = b.block_type();
+    let bool_outputs: Vec<_> = ty
+        .fields
+        .iter()
+        .filter(|f| f.dir == Dir::Output && f.kind == Kind::Bool)
+        .collect();
+    match family(ty.info.tag) {
+        Family::TwinSafe => {
+            assert_eq!((init, expect), (SL_E_CONFIG, "SL_E_CONFIG"), "{what}");
+            b.member_mut().drive(1, 0);
+            assert_eq!(b.member_mut().execute(1).code(), SL_E_CONFIG, "{what}");
+            let f = ty.field("nState").unwrap();
+            assert_eq!(b.value(f), Some(i64::from(SL_STATE_STOP)), "{what}");
+            for f in &bool_outputs {
+                assert_eq!(b.value(f), Some(0), "{what}: {}", f.name);
+            }
+        }
+        Family::PlcOpen => {
+            let act = if ty.info.name == "SF_ResetButton" {
+                "ResetRequested"
+            } else {
+                "Activate"
+            };
+            b.set(act, 1).unwrap();
+            let status = b.member_mut().execute(1).code();
+            let code = b.value(ty.field("DiagCode").unwrap()).unwrap();
+            if expect == "SL_E_CONFIG" {
+                assert_eq!(
+                    (init, status, code),
+                    (SL_E_CONFIG, SL_E_CONFIG, 0xC3FC),
+                    "{what}"
+                );
+            } else {
+                let want = expect.strip_prefix("DiagCode 0x").expect("a DiagCode");
+                let want = i64::from_str_radix(want, 16).unwrap();
+                assert_eq!((init, status, code), (SL_OK, SL_OK, want), "{what}");
+            }
+            for f in &bool_outputs {
+                let v = b.value(f);
+                // S_TestOut drives the sensor's transmitter (TRUE but while a test runs),
+                // not a safety function.
+                let want = match f.name {
+                    "Ready" | "Error" | "S_TestOut" => v,
+                    _ => Some(0),
+                };
+                if f.name == "Error" {
+                    assert_eq!(v, Some(1), "{what}: Error");
+                }
+                assert_eq!(v, want, "{what}: {}", f.name);
+            }
+        }
+    }
+}

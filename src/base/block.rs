@@ -218,6 +218,10 @@ pub trait Cyclic {
     fn force_safe(&mut self);
     /// The block is in an error state (TwinSAFE ERROR; PLCopen DiagCode ≥ 0xC000).
     fn in_error(&self) -> bool;
+    /// The first parameter rule the live parameters break (`base::reason`), if any.
+    fn refusal(&self) -> Option<crate::base::reason::Refusal>;
+    /// The `i`-th of the block's parameter rules, in the order they are checked.
+    fn rule(i: usize) -> Option<crate::base::reason::RuleInfo>;
 }
 
 /// The two block families of the registry, told apart by the type tag.

@@ -15,6 +15,7 @@
 
 use super::bools::{edge, is_false, is_true};
 use super::header::{F_CFG_INVALID, F_ERRACK_PREV, F_RESET_HELD, F_TIME_VALID, SL_PRIVATE_HEADER};
+use super::reason::{self, RuleDef};
 use super::time;
 use crate::base::types::*;
 
@@ -34,7 +35,7 @@ pub trait Block: Instance + crate::base::block::Registered {
     /// Type tag stored in the private header.
     const MAGIC: u16;
     /// The block's parameters as the user wrote them (wide types).
-    type Params: PartialEq + Copy;
+    type Params: PartialEq + Copy + 'static;
     /// Inputs of one cycle after BOOL decoding.
     type In;
 
@@ -42,8 +43,9 @@ pub trait Block: Instance + crate::base::block::Registered {
     fn live_params(&self) -> Self::Params;
     /// The latched copy, widened.
     fn latched_params(&self) -> Self::Params;
-    /// Parameter validation (manual limits, ABI §5 SL_E_CONFIG).
-    fn params_valid(p: &Self::Params) -> bool;
+    /// The parameter rules (manual limits, ABI §5 SL_E_CONFIG), in the order they are
+    /// checked: a configuration that breaks one is refused with the first it breaks.
+    const RULES: &'static [RuleDef<Self::Params>];
     /// Writes the latched copy (narrowing; only meaningful for valid parameters).
     fn store_params(&mut self, p: &Self::Params);
     /// CRC of the latched copy.
@@ -389,7 +391,7 @@ fn slot_of<B: Steady>(fb: &B, key: KeyOf<B>, now: u32) -> Option<[KeyOf<B>; 2]> 
 /// Latches the live parameters into the private copy; returns whether they are valid.
 fn latch<B: Block>(fb: &mut B) -> bool {
     let p = fb.live_params();
-    let ok = B::params_valid(&p);
+    let ok = reason::check(B::RULES, &p).is_none();
     fb.store_params(&p);
     let crc = fb.latched_crc();
     let h = fb.header_mut();

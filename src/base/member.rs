@@ -252,6 +252,15 @@ macro_rules! impl_member {
             fn in_error(&self) -> bool {
                 self.nState == $crate::base::types::SL_STATE_ERROR
             }
+            fn refusal(&self) -> Option<$crate::base::reason::Refusal> {
+                $crate::base::reason::check(
+                    <Self as $crate::base::envelope::Block>::RULES,
+                    &$crate::base::envelope::Block::live_params(self),
+                )
+            }
+            fn rule(i: usize) -> Option<$crate::base::reason::RuleInfo> {
+                <Self as $crate::base::envelope::Block>::RULES.get(i).map(|r| r.info)
+            }
         }
         impl<$($gen)*> $crate::base::block::Private for $ty {
             type P = $private;
@@ -461,6 +470,12 @@ macro_rules! impl_sf_member {
             }
             fn in_error(&self) -> bool {
                 self.DiagCode >= 0xC000
+            }
+            fn refusal(&self) -> Option<$crate::base::reason::Refusal> {
+                $crate::base::sf::refusal::<Self>(&$crate::base::sf::SfBlock::live_consts(self))
+            }
+            fn rule(i: usize) -> Option<$crate::base::reason::RuleInfo> {
+                $crate::base::sf::rules::<Self>().nth(i).map(|r| r.info)
             }
         }
         impl $crate::base::block::Registered for $ty {

@@ -16,6 +16,7 @@ pub mod header;
 pub mod layout;
 pub mod member;
 pub mod pair;
+pub mod reason;
 pub mod restart;
 pub mod sf;
 pub mod time;

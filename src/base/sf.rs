@@ -16,6 +16,7 @@
 use super::bools::{self, Edge};
 use super::header::{param_crc, F_RESTART_PREV, F_TIME_VALID, SL_PRIVATE_HEADER};
 use super::layout::Zeroed;
+use super::reason::{when, Refusal, Rule, RuleDef, Unit};
 use super::time;
 use crate::base::types::*;
 
@@ -243,6 +244,12 @@ pub trait SfBlock: SfInstance + Sized {
     const HAS_V10: bool = true;
     /// Number of monitored times the block has (`SfConsts::times`).
     const TIMES: usize = 0;
+    /// The rules of the block's constant inputs besides `nDiagProfile` (its times within
+    /// [`SL_SF_TIME_MAX`], a BOOL constant 0 or 1): a broken one is SL_E_CONFIG.
+    const CONST_RULES: &'static [RuleDef<SfConsts>] = &[];
+    /// The block's own limits of its constants, checked by [`Self::first`] at activation:
+    /// a broken one is the block's parameter error state (DiagCode C000), not SL_E_CONFIG.
+    const PARAM_RULES: &'static [RuleDef<SfConsts>] = &[];
 
     /// The raw `Reset` byte (0 for a block without Reset).
     fn reset_raw(&self) -> u8;
@@ -287,13 +294,101 @@ pub trait SfBlock: SfInstance + Sized {
     fn track(&mut self, _inp: &mut Self::In, _now: u32) {}
 }
 
-/// The latched constants are valid: a known profile the block has, times within range.
+/// `nDiagProfile` of a block that has both profiles.
+static PROFILE_BOTH: RuleDef<SfConsts> = RuleDef::new(
+    "nDiagProfile",
+    Rule::OneOf("0 (v2.01), 1 (v1.0)"),
+    Unit::Plain,
+    |c| when(c.profile > SL_SF_PROFILE_V10, c.profile, 0),
+);
+/// `nDiagProfile` of a block that exists in v2.x only.
+static PROFILE_V201: RuleDef<SfConsts> =
+    RuleDef::new("nDiagProfile", Rule::OneOf("0 (v2.01)"), Unit::Plain, |c| {
+        when(c.profile != SL_SF_PROFILE_V201, c.profile, 0)
+    });
+
+/// A time constant (`SfConsts::times[0]`) named `name`: at most [`SL_SF_TIME_MAX`].
+pub const fn time0_rule(name: &'static str) -> RuleDef<SfConsts> {
+    RuleDef::new(name, Rule::AtMost, Unit::Ms, |c| {
+        when(c.times[0] > SL_SF_TIME_MAX, c.times[0], SL_SF_TIME_MAX)
+    })
+}
+
+/// A time constant (`SfConsts::times[1]`) named `name`: at most [`SL_SF_TIME_MAX`].
+pub const fn time1_rule(name: &'static str) -> RuleDef<SfConsts> {
+    RuleDef::new(name, Rule::AtMost, Unit::Ms, |c| {
+        when(c.times[1] > SL_SF_TIME_MAX, c.times[1], SL_SF_TIME_MAX)
+    })
+}
+
+/// The value a BOOL constant stands for in `SfConsts::times`: itself when 0 or 1, otherwise
+/// bit 31 set with the byte in the low bits (above every valid time).
+pub const fn bool_const(byte: u8) -> u32 {
+    match byte {
+        0 | 1 => byte as u32,
+        _ => BOOL_CONST_INVALID | byte as u32,
+    }
+}
+
+/// The mark of an invalid BOOL constant in `SfConsts::times` ([`bool_const`]).
+const BOOL_CONST_INVALID: u32 = 0x8000_0000;
+
+/// A BOOL constant stored by [`bool_const`] in `SfConsts::times[0]`, named `name`.
+pub const fn bool0_rule(name: &'static str) -> RuleDef<SfConsts> {
+    RuleDef::new(name, Rule::OneOf("0 (FALSE), 1 (TRUE)"), Unit::Plain, |c| {
+        when(c.times[0] > 1, c.times[0] & 0xFF, 0)
+    })
+}
+
+/// A BOOL constant stored by [`bool_const`] in `SfConsts::times[1]`, named `name`.
+pub const fn bool1_rule(name: &'static str) -> RuleDef<SfConsts> {
+    RuleDef::new(name, Rule::OneOf("0 (FALSE), 1 (TRUE)"), Unit::Plain, |c| {
+        when(c.times[1] > 1, c.times[1] & 0xFF, 0)
+    })
+}
+
+/// The block's rules in the order they are checked: `nDiagProfile`, then
+/// [`SfBlock::CONST_RULES`] (SL_E_CONFIG), then [`SfBlock::PARAM_RULES`] (the block's
+/// parameter error state).
+pub fn rules<B: SfBlock>() -> impl Iterator<Item = &'static RuleDef<SfConsts>> {
+    let profile = if B::HAS_V10 {
+        &PROFILE_BOTH
+    } else {
+        &PROFILE_V201
+    };
+    core::iter::once(profile)
+        .chain(B::CONST_RULES)
+        .chain(B::PARAM_RULES)
+}
+
+/// The first rule of [`rules`] that `c` breaks.
+pub fn refusal<B: SfBlock>(c: &SfConsts) -> Option<Refusal> {
+    rules::<B>().enumerate().find_map(|(i, r)| {
+        (r.test)(c).map(|hit| Refusal {
+            index: i,
+            info: r.info,
+            hit,
+        })
+    })
+}
+
+/// The latched constants are valid: a known profile the block has, its constants within
+/// their rules (the block's own limits are [`SfBlock::first`]'s), unused times 0.
 fn consts_valid<B: SfBlock>(c: &SfConsts) -> bool {
-    let profile_ok =
-        c.profile == SL_SF_PROFILE_V201 || (B::HAS_V10 && c.profile == SL_SF_PROFILE_V10);
-    profile_ok
-        && c.times.iter().all(|&t| t <= SL_SF_TIME_MAX)
+    let config = 1 + B::CONST_RULES.len();
+    rules::<B>().take(config).all(|r| (r.test)(c).is_none())
         && c.times[B::TIMES..].iter().all(|&t| t == 0)
+}
+
+/// [`SfBlock::first`] of a block with [`SfBlock::PARAM_RULES`]: `init` when the latched
+/// times pass them, `error` (the block's parameter error state) otherwise.
+pub fn first_checked<B: SfBlock>(times: [u32; 2], init: B::Diag, error: B::Diag) -> B::Diag {
+    let c = SfConsts { profile: 0, times };
+    if B::PARAM_RULES.iter().all(|r| (r.test)(&c).is_none()) {
+        init
+    } else {
+        error
+    }
 }
 
 fn consts_crc<B: SfBlock>(p: &SL_SF_PRIVATE) -> u16 {

@@ -271,6 +271,17 @@ macro_rules! ffi_functions {
             None
         }
 
+        /// The reason sentence of the block of type `ty` at `p` (`sl_reason_text`): its
+        /// length in `out`, `Err(SL_E_CONFIG)` for an unknown type, or the status of a
+        /// refused pointer.
+        fn reason_of(ty: u16, p: *const c_void, out: &mut [u8]) -> Result<usize, i32> {
+            $(if ty == <$ty as Registered>::INFO.tag {
+                let fb = instance_ref(p.cast::<$ty>())?;
+                return Ok($crate::any::FunctionBlock::reason_text(fb, out));
+            })*
+            Err(SL_E_CONFIG)
+        }
+
         /// [`RUNNERS`]' length: one slot per tag up to the largest.
         const RUNNER_SLOTS: usize = {
             let tags = [$(<$ty as Registered>::INFO.tag),*];
@@ -1287,6 +1298,52 @@ pub unsafe extern "C" fn sl_diag_text(
     })
 }
 
+/// Writes why the block `pBlock` of type `nType` (`SL_TYPE_<NAME>`) refuses its parameters,
+/// as one NUL-terminated sentence naming the field, the rule and the offending values
+/// ("TWOHAND: tDiscTimePairs (3000 ms) must be <= 500 ms [reason 0xE001]", "LIMIT_INT:
+/// nMinimumValue (5) must be <= nMaximumValue (3) [Text ID 0x4090]"), truncated to `nLen`
+/// bytes including the NUL. The rules are evaluated again on the struct as it is now (the
+/// block's live parameters; nothing is stored by the init or cycle calls). With valid
+/// parameters and the block in an error state: the latched diag ("LIMIT_INT: ERROR:
+/// MinValue is greater than MaxValue [Text ID 0x4090, Par2 5, Par3 3]"; a PLCopen block:
+/// its DiagCode and text); otherwise `"<NAME>: no refusal"`. The codes in brackets are the
+/// manual's Text IDs or the library reason codes of docs/c-integration.md. For an HMI or a
+/// log after SL_E_CONFIG. SL_OK; SL_E_CONFIG for an unknown type (buf then holds "");
+/// SL_E_NULL for a NULL buf or pBlock; SL_E_ALIGNMENT for a misaligned pBlock.
+///
+/// # Safety
+/// `buf` is NULL or points to at least `nLen` writable bytes; `pBlock` is NULL or points to
+/// a live instance of the type `nType` names that nobody writes during the call.
+#[no_mangle]
+#[allow(non_snake_case)]
+pub unsafe extern "C" fn sl_reason_text(
+    nType: u16,
+    pBlock: *const c_void,
+    buf: *mut c_char,
+    nLen: usize,
+) -> i32 {
+    ffi_boundary!(SL_E_INTERNAL, {
+        let run = || -> Result<i32, i32> {
+            if nLen == 0 {
+                return Ok(if buf.is_null() { SL_E_NULL } else { SL_OK });
+            }
+            storage(buf.cast::<u8>(), nLen)?;
+            // SAFETY: checked by `storage`; `buf` points to `nLen` writable bytes (contract).
+            let out = unsafe { slice_mut(buf.cast::<u8>(), nLen) };
+            out[0] = 0;
+            let (text, nul) = out.split_at_mut(nLen - 1);
+            let n = reason_of(nType, pBlock, text)?;
+            // `n < nLen`, so index n is inside `text` or is `nul[0]`.
+            match text.get_mut(n) {
+                Some(b) => *b = 0,
+                None => nul[0] = 0,
+            }
+            Ok(SL_OK)
+        };
+        run().unwrap_or_else(|e| e)
+    })
+}
+
 /// A caller's read-only byte buffer as a slice (`None` for NULL or length 0).
 ///
 /// # Safety
@@ -1554,5 +1611,51 @@ pub unsafe extern "C" fn sl_fsoe_frame_decode(
             Ok(st.code())
         };
         run().unwrap_or_else(|e| e)
+    })
+}
+
+/// Writes PLCopen's initial values into `*p`: ResetRequested TRUE, TrailingMinimum 350 ms
+/// (T#350ms), TrailingMaximum 2000 ms (T#2s); every other field, the private state
+/// included, zero (a power-up instance: call `sl_sf_resetbutton_init` next). A zeroed
+/// struct is not these defaults (its TrailingMinimum 0 is refused at activation): zero
+/// stays "not configured" (docs/semantics.md PO12). SL_OK; SL_E_NULL / SL_E_ALIGNMENT for
+/// a bad pointer.
+///
+/// # Safety
+/// `p` is NULL or points to a caller-owned SF_ResetButton that nothing else accesses during the call.
+#[no_mangle]
+pub unsafe extern "C" fn sl_sf_resetbutton_defaults(
+    p: *mut crate::blocks::plcopen::resetbutton::SF_ResetButton,
+) -> i32 {
+    ffi_boundary!(SL_E_INTERNAL, {
+        match instance(p) {
+            Ok(p) => {
+                *p = crate::blocks::plcopen::resetbutton::SF_ResetButton::plcopen_defaults();
+                SL_OK
+            }
+            Err(e) => e,
+        }
+    })
+}
+
+/// Writes PLCopen's initial values into `*p`: S_ChannelNO TRUE (its SAFEBOOL initial
+/// value); every other field, the private state included, zero (a power-up instance: call
+/// `sl_sf_antivalent_init` next). A zeroed struct has S_ChannelNO FALSE (docs/semantics.md
+/// PO12). SL_OK; SL_E_NULL / SL_E_ALIGNMENT for a bad pointer.
+///
+/// # Safety
+/// `p` is NULL or points to a caller-owned SF_Antivalent that nothing else accesses during the call.
+#[no_mangle]
+pub unsafe extern "C" fn sl_sf_antivalent_defaults(
+    p: *mut crate::blocks::plcopen::antivalent::SF_Antivalent,
+) -> i32 {
+    ffi_boundary!(SL_E_INTERNAL, {
+        match instance(p) {
+            Ok(p) => {
+                *p = crate::blocks::plcopen::antivalent::SF_Antivalent::plcopen_defaults();
+                SL_OK
+            }
+            Err(e) => e,
+        }
     })
 }

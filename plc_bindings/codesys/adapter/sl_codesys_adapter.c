@@ -26,6 +26,54 @@ void CDECL CDECL_EXT cds_sl_ton2_cycle(cds_sl_ton2_cycle_struct *p)
     p->cds_sl_ton2_cycle = sl_ton2_cycle(p->pFb, p->tNow);
 }
 
+void CDECL CDECL_EXT cds_sl_sf_resetbutton_defaults(cds_sl_sf_resetbutton_defaults_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_sf_resetbutton_defaults = sl_sf_resetbutton_defaults(p->pP);
+}
+
+void CDECL CDECL_EXT cds_sl_sf_resetbutton_init(cds_sl_sf_resetbutton_init_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_sf_resetbutton_init = sl_sf_resetbutton_init(p->pFb);
+}
+
+void CDECL CDECL_EXT cds_sl_sf_resetbutton_cycle(cds_sl_sf_resetbutton_cycle_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_sf_resetbutton_cycle = sl_sf_resetbutton_cycle(p->pFb, p->tNow);
+}
+
+void CDECL CDECL_EXT cds_sl_sf_antivalent_defaults(cds_sl_sf_antivalent_defaults_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_sf_antivalent_defaults = sl_sf_antivalent_defaults(p->pP);
+}
+
+void CDECL CDECL_EXT cds_sl_sf_antivalent_init(cds_sl_sf_antivalent_init_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_sf_antivalent_init = sl_sf_antivalent_init(p->pFb);
+}
+
+void CDECL CDECL_EXT cds_sl_sf_antivalent_cycle(cds_sl_sf_antivalent_cycle_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    p->cds_sl_sf_antivalent_cycle = sl_sf_antivalent_cycle(p->pFb, p->tNow);
+}
+
 void CDECL CDECL_EXT cds_sl_estop_init(cds_sl_estop_init_struct *p)
 {
     if (p == 0) {
@@ -1274,22 +1322,6 @@ void CDECL CDECL_EXT cds_sl_sf_equivalent_cycle(cds_sl_sf_equivalent_cycle_struc
     p->cds_sl_sf_equivalent_cycle = sl_sf_equivalent_cycle(p->pFb, p->tNow);
 }
 
-void CDECL CDECL_EXT cds_sl_sf_antivalent_init(cds_sl_sf_antivalent_init_struct *p)
-{
-    if (p == 0) {
-        return;
-    }
-    p->cds_sl_sf_antivalent_init = sl_sf_antivalent_init(p->pFb);
-}
-
-void CDECL CDECL_EXT cds_sl_sf_antivalent_cycle(cds_sl_sf_antivalent_cycle_struct *p)
-{
-    if (p == 0) {
-        return;
-    }
-    p->cds_sl_sf_antivalent_cycle = sl_sf_antivalent_cycle(p->pFb, p->tNow);
-}
-
 void CDECL CDECL_EXT cds_sl_sf_guard_init(cds_sl_sf_guard_init_struct *p)
 {
     if (p == 0) {
@@ -1336,22 +1368,6 @@ void CDECL CDECL_EXT cds_sl_sf_outcontrol_cycle(cds_sl_sf_outcontrol_cycle_struc
         return;
     }
     p->cds_sl_sf_outcontrol_cycle = sl_sf_outcontrol_cycle(p->pFb, p->tNow);
-}
-
-void CDECL CDECL_EXT cds_sl_sf_resetbutton_init(cds_sl_sf_resetbutton_init_struct *p)
-{
-    if (p == 0) {
-        return;
-    }
-    p->cds_sl_sf_resetbutton_init = sl_sf_resetbutton_init(p->pFb);
-}
-
-void CDECL CDECL_EXT cds_sl_sf_resetbutton_cycle(cds_sl_sf_resetbutton_cycle_struct *p)
-{
-    if (p == 0) {
-        return;
-    }
-    p->cds_sl_sf_resetbutton_cycle = sl_sf_resetbutton_cycle(p->pFb, p->tNow);
 }
 
 void CDECL CDECL_EXT cds_sl_sf_edm_init(cds_sl_sf_edm_init_struct *p)

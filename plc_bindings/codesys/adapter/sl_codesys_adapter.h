@@ -49,6 +49,50 @@ typedef struct tagcds_sl_ton2_cycle_struct {
 } cds_sl_ton2_cycle_struct;
 void CDECL CDECL_EXT cds_sl_ton2_cycle(cds_sl_ton2_cycle_struct *p);
 
+/* FUNCTION cds_sl_sf_resetbutton_defaults : DINT -> sl_sf_resetbutton_defaults() */
+typedef struct tagcds_sl_sf_resetbutton_defaults_struct {
+    struct SF_ResetButton *pP; /* VAR_INPUT pP : POINTER TO ST_SF_ResetButton */
+    int32_t cds_sl_sf_resetbutton_defaults; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_sf_resetbutton_defaults_struct;
+void CDECL CDECL_EXT cds_sl_sf_resetbutton_defaults(cds_sl_sf_resetbutton_defaults_struct *p);
+
+/* FUNCTION cds_sl_sf_resetbutton_init : DINT -> sl_sf_resetbutton_init() */
+typedef struct tagcds_sl_sf_resetbutton_init_struct {
+    struct SF_ResetButton *pFb; /* VAR_INPUT pFb : POINTER TO ST_SF_ResetButton */
+    int32_t cds_sl_sf_resetbutton_init; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_sf_resetbutton_init_struct;
+void CDECL CDECL_EXT cds_sl_sf_resetbutton_init(cds_sl_sf_resetbutton_init_struct *p);
+
+/* FUNCTION cds_sl_sf_resetbutton_cycle : DINT -> sl_sf_resetbutton_cycle() */
+typedef struct tagcds_sl_sf_resetbutton_cycle_struct {
+    struct SF_ResetButton *pFb; /* VAR_INPUT pFb : POINTER TO ST_SF_ResetButton */
+    uint32_t tNow; /* VAR_INPUT tNow : UDINT */
+    int32_t cds_sl_sf_resetbutton_cycle; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_sf_resetbutton_cycle_struct;
+void CDECL CDECL_EXT cds_sl_sf_resetbutton_cycle(cds_sl_sf_resetbutton_cycle_struct *p);
+
+/* FUNCTION cds_sl_sf_antivalent_defaults : DINT -> sl_sf_antivalent_defaults() */
+typedef struct tagcds_sl_sf_antivalent_defaults_struct {
+    struct SF_Antivalent *pP; /* VAR_INPUT pP : POINTER TO ST_SF_Antivalent */
+    int32_t cds_sl_sf_antivalent_defaults; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_sf_antivalent_defaults_struct;
+void CDECL CDECL_EXT cds_sl_sf_antivalent_defaults(cds_sl_sf_antivalent_defaults_struct *p);
+
+/* FUNCTION cds_sl_sf_antivalent_init : DINT -> sl_sf_antivalent_init() */
+typedef struct tagcds_sl_sf_antivalent_init_struct {
+    struct SF_Antivalent *pFb; /* VAR_INPUT pFb : POINTER TO ST_SF_Antivalent */
+    int32_t cds_sl_sf_antivalent_init; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_sf_antivalent_init_struct;
+void CDECL CDECL_EXT cds_sl_sf_antivalent_init(cds_sl_sf_antivalent_init_struct *p);
+
+/* FUNCTION cds_sl_sf_antivalent_cycle : DINT -> sl_sf_antivalent_cycle() */
+typedef struct tagcds_sl_sf_antivalent_cycle_struct {
+    struct SF_Antivalent *pFb; /* VAR_INPUT pFb : POINTER TO ST_SF_Antivalent */
+    uint32_t tNow; /* VAR_INPUT tNow : UDINT */
+    int32_t cds_sl_sf_antivalent_cycle; /* VAR_OUTPUT (return value) DINT */
+} cds_sl_sf_antivalent_cycle_struct;
+void CDECL CDECL_EXT cds_sl_sf_antivalent_cycle(cds_sl_sf_antivalent_cycle_struct *p);
+
 /* FUNCTION cds_sl_estop_init : DINT -> sl_estop_init() */
 typedef struct tagcds_sl_estop_init_struct {
     struct FB_ESTOP *pFb; /* VAR_INPUT pFb : POINTER TO ST_FB_ESTOP */
@@ -1219,21 +1263,6 @@ typedef struct tagcds_sl_sf_equivalent_cycle_struct {
 } cds_sl_sf_equivalent_cycle_struct;
 void CDECL CDECL_EXT cds_sl_sf_equivalent_cycle(cds_sl_sf_equivalent_cycle_struct *p);
 
-/* FUNCTION cds_sl_sf_antivalent_init : DINT -> sl_sf_antivalent_init() */
-typedef struct tagcds_sl_sf_antivalent_init_struct {
-    struct SF_Antivalent *pFb; /* VAR_INPUT pFb : POINTER TO ST_SF_Antivalent */
-    int32_t cds_sl_sf_antivalent_init; /* VAR_OUTPUT (return value) DINT */
-} cds_sl_sf_antivalent_init_struct;
-void CDECL CDECL_EXT cds_sl_sf_antivalent_init(cds_sl_sf_antivalent_init_struct *p);
-
-/* FUNCTION cds_sl_sf_antivalent_cycle : DINT -> sl_sf_antivalent_cycle() */
-typedef struct tagcds_sl_sf_antivalent_cycle_struct {
-    struct SF_Antivalent *pFb; /* VAR_INPUT pFb : POINTER TO ST_SF_Antivalent */
-    uint32_t tNow; /* VAR_INPUT tNow : UDINT */
-    int32_t cds_sl_sf_antivalent_cycle; /* VAR_OUTPUT (return value) DINT */
-} cds_sl_sf_antivalent_cycle_struct;
-void CDECL CDECL_EXT cds_sl_sf_antivalent_cycle(cds_sl_sf_antivalent_cycle_struct *p);
-
 /* FUNCTION cds_sl_sf_guard_init : DINT -> sl_sf_guard_init() */
 typedef struct tagcds_sl_sf_guard_init_struct {
     struct SF_Guard *pFb; /* VAR_INPUT pFb : POINTER TO ST_SF_Guard */
@@ -1278,21 +1307,6 @@ typedef struct tagcds_sl_sf_outcontrol_cycle_struct {
     int32_t cds_sl_sf_outcontrol_cycle; /* VAR_OUTPUT (return value) DINT */
 } cds_sl_sf_outcontrol_cycle_struct;
 void CDECL CDECL_EXT cds_sl_sf_outcontrol_cycle(cds_sl_sf_outcontrol_cycle_struct *p);
-
-/* FUNCTION cds_sl_sf_resetbutton_init : DINT -> sl_sf_resetbutton_init() */
-typedef struct tagcds_sl_sf_resetbutton_init_struct {
-    struct SF_ResetButton *pFb; /* VAR_INPUT pFb : POINTER TO ST_SF_ResetButton */
-    int32_t cds_sl_sf_resetbutton_init; /* VAR_OUTPUT (return value) DINT */
-} cds_sl_sf_resetbutton_init_struct;
-void CDECL CDECL_EXT cds_sl_sf_resetbutton_init(cds_sl_sf_resetbutton_init_struct *p);
-
-/* FUNCTION cds_sl_sf_resetbutton_cycle : DINT -> sl_sf_resetbutton_cycle() */
-typedef struct tagcds_sl_sf_resetbutton_cycle_struct {
-    struct SF_ResetButton *pFb; /* VAR_INPUT pFb : POINTER TO ST_SF_ResetButton */
-    uint32_t tNow; /* VAR_INPUT tNow : UDINT */
-    int32_t cds_sl_sf_resetbutton_cycle; /* VAR_OUTPUT (return value) DINT */
-} cds_sl_sf_resetbutton_cycle_struct;
-void CDECL CDECL_EXT cds_sl_sf_resetbutton_cycle(cds_sl_sf_resetbutton_cycle_struct *p);
 
 /* FUNCTION cds_sl_sf_edm_init : DINT -> sl_sf_edm_init() */
 typedef struct tagcds_sl_sf_edm_init_struct {
@@ -1486,6 +1500,12 @@ void CDECL CDECL_EXT cds_sl_diag_text(cds_sl_diag_text_struct *p);
     X(cds_sl_ton2_restore_elapsed) \
     X(cds_sl_ton2_init) \
     X(cds_sl_ton2_cycle) \
+    X(cds_sl_sf_resetbutton_defaults) \
+    X(cds_sl_sf_resetbutton_init) \
+    X(cds_sl_sf_resetbutton_cycle) \
+    X(cds_sl_sf_antivalent_defaults) \
+    X(cds_sl_sf_antivalent_init) \
+    X(cds_sl_sf_antivalent_cycle) \
     X(cds_sl_estop_init) \
     X(cds_sl_estop_cycle) \
     X(cds_sl_mon_init) \
@@ -1642,16 +1662,12 @@ void CDECL CDECL_EXT cds_sl_diag_text(cds_sl_diag_text_struct *p);
     X(cds_sl_sf_pse_cycle) \
     X(cds_sl_sf_equivalent_init) \
     X(cds_sl_sf_equivalent_cycle) \
-    X(cds_sl_sf_antivalent_init) \
-    X(cds_sl_sf_antivalent_cycle) \
     X(cds_sl_sf_guard_init) \
     X(cds_sl_sf_guard_cycle) \
     X(cds_sl_sf_safetyrequest_init) \
     X(cds_sl_sf_safetyrequest_cycle) \
     X(cds_sl_sf_outcontrol_init) \
     X(cds_sl_sf_outcontrol_cycle) \
-    X(cds_sl_sf_resetbutton_init) \
-    X(cds_sl_sf_resetbutton_cycle) \
     X(cds_sl_sf_edm_init) \
     X(cds_sl_sf_edm_cycle) \
     X(cds_sl_sf_testablesafetysensor_init) \

@@ -34,6 +34,60 @@ HRESULT CSafeLogicModule::sl_ton2_cycle(PVOID pFb, int32_t *pnResult, uint32_t t
     return S_OK;
 }
 
+HRESULT CSafeLogicModule::sl_sf_resetbutton_defaults(PVOID pP, int32_t *pnResult)
+{
+    if (pP == NULL || pnResult == NULL) {
+        return E_POINTER;
+    }
+    *pnResult = ::sl_sf_resetbutton_defaults(static_cast<struct SF_ResetButton *>(pP));
+    return S_OK;
+}
+
+HRESULT CSafeLogicModule::sl_sf_resetbutton_init(PVOID pFb, int32_t *pnResult)
+{
+    if (pFb == NULL || pnResult == NULL) {
+        return E_POINTER;
+    }
+    *pnResult = ::sl_sf_resetbutton_init(static_cast<struct SF_ResetButton *>(pFb));
+    return S_OK;
+}
+
+HRESULT CSafeLogicModule::sl_sf_resetbutton_cycle(PVOID pFb, int32_t *pnResult, uint32_t tNow)
+{
+    if (pFb == NULL || pnResult == NULL) {
+        return E_POINTER;
+    }
+    *pnResult = ::sl_sf_resetbutton_cycle(static_cast<struct SF_ResetButton *>(pFb), tNow);
+    return S_OK;
+}
+
+HRESULT CSafeLogicModule::sl_sf_antivalent_defaults(PVOID pP, int32_t *pnResult)
+{
+    if (pP == NULL || pnResult == NULL) {
+        return E_POINTER;
+    }
+    *pnResult = ::sl_sf_antivalent_defaults(static_cast<struct SF_Antivalent *>(pP));
+    return S_OK;
+}
+
+HRESULT CSafeLogicModule::sl_sf_antivalent_init(PVOID pFb, int32_t *pnResult)
+{
+    if (pFb == NULL || pnResult == NULL) {
+        return E_POINTER;
+    }
+    *pnResult = ::sl_sf_antivalent_init(static_cast<struct SF_Antivalent *>(pFb));
+    return S_OK;
+}
+
+HRESULT CSafeLogicModule::sl_sf_antivalent_cycle(PVOID pFb, int32_t *pnResult, uint32_t tNow)
+{
+    if (pFb == NULL || pnResult == NULL) {
+        return E_POINTER;
+    }
+    *pnResult = ::sl_sf_antivalent_cycle(static_cast<struct SF_Antivalent *>(pFb), tNow);
+    return S_OK;
+}
+
 HRESULT CSafeLogicModule::sl_estop_init(PVOID pFb, int32_t *pnResult)
 {
     if (pFb == NULL || pnResult == NULL) {
@@ -1438,24 +1492,6 @@ HRESULT CSafeLogicModule::sl_sf_equivalent_cycle(PVOID pFb, int32_t *pnResult, u
     return S_OK;
 }
 
-HRESULT CSafeLogicModule::sl_sf_antivalent_init(PVOID pFb, int32_t *pnResult)
-{
-    if (pFb == NULL || pnResult == NULL) {
-        return E_POINTER;
-    }
-    *pnResult = ::sl_sf_antivalent_init(static_cast<struct SF_Antivalent *>(pFb));
-    return S_OK;
-}
-
-HRESULT CSafeLogicModule::sl_sf_antivalent_cycle(PVOID pFb, int32_t *pnResult, uint32_t tNow)
-{
-    if (pFb == NULL || pnResult == NULL) {
-        return E_POINTER;
-    }
-    *pnResult = ::sl_sf_antivalent_cycle(static_cast<struct SF_Antivalent *>(pFb), tNow);
-    return S_OK;
-}
-
 HRESULT CSafeLogicModule::sl_sf_guard_init(PVOID pFb, int32_t *pnResult)
 {
     if (pFb == NULL || pnResult == NULL) {
@@ -1507,24 +1543,6 @@ HRESULT CSafeLogicModule::sl_sf_outcontrol_cycle(PVOID pFb, int32_t *pnResult, u
         return E_POINTER;
     }
     *pnResult = ::sl_sf_outcontrol_cycle(static_cast<struct SF_OutControl *>(pFb), tNow);
-    return S_OK;
-}
-
-HRESULT CSafeLogicModule::sl_sf_resetbutton_init(PVOID pFb, int32_t *pnResult)
-{
-    if (pFb == NULL || pnResult == NULL) {
-        return E_POINTER;
-    }
-    *pnResult = ::sl_sf_resetbutton_init(static_cast<struct SF_ResetButton *>(pFb));
-    return S_OK;
-}
-
-HRESULT CSafeLogicModule::sl_sf_resetbutton_cycle(PVOID pFb, int32_t *pnResult, uint32_t tNow)
-{
-    if (pFb == NULL || pnResult == NULL) {
-        return E_POINTER;
-    }
-    *pnResult = ::sl_sf_resetbutton_cycle(static_cast<struct SF_ResetButton *>(pFb), tNow);
     return S_OK;
 }
 

@@ -18,8 +18,9 @@ use super::{diag_message, magic, Analog, SL_DIAG_VALUE_OVERFLOW, SL_DIAG_VALUE_U
 use crate::base::block::BlockInfo;
 use crate::base::block::FieldType;
 use crate::base::envelope::Block;
-use crate::base::header::param_crc;
 use crate::base::layout::Zeroed;
+use crate::base::header::param_crc;
+use crate::base::reason::{when, Rule, RuleDef, Unit};
 use crate::base::types::*;
 use core::marker::PhantomData;
 
@@ -56,6 +57,8 @@ pub const ARITH_ACTIVE: u16 = 0x0300;
 
 /// An operation: ADD, SUB, MUL (same layout) or DIV.
 pub trait ArithOp: 'static {
+    /// The block has `nRounding` (DIV).
+    const ROUNDING: bool = false;
     /// Type tags per variant.
     const TAGS: [u16; 4];
     /// Registry names per variant.
@@ -124,6 +127,7 @@ impl ArithOp for Div {
         SL_TYPE_DIV_UDINT,
     ];
     const NAMES: [&'static str; 4] = ["DIV_INT", "DIV_UINT", "DIV_DINT", "DIV_UDINT"];
+    const ROUNDING: bool = true;
     fn apply(a: i128, b: i128, rounding: u16) -> i128 {
         if b == 0 {
             // Manual §4.19: "If the AnalogIn2 input is 0, the AnalogOut output is set to 0.
@@ -368,6 +372,20 @@ pub struct ArithIn {
     result: Result<u32, u16>,
 }
 
+/// The parameter rules of the arithmetic blocks; the second (`nRounding`) is DIV's only.
+const ARITH_RULES: [RuleDef<ArithParams>; 2] = [
+    RuleDef::new("wInputActive", Rule::Equals, Unit::Hex, |p| {
+        when(p.active != ARITH_ACTIVE, p.active, ARITH_ACTIVE)
+    }),
+    RuleDef::new("nRounding", Rule::AtMost, Unit::Plain, |p| {
+        when(
+            p.rounding > SL_ROUNDING_ROUND,
+            p.rounding,
+            SL_ROUNDING_ROUND,
+        )
+    }),
+];
+
 impl<B: ArithFb + crate::base::envelope::Instance + crate::base::block::Registered> Block for B {
     const MAGIC: u16 = magic(<B as crate::base::block::Registered>::INFO.tag);
     type Params = ArithParams;
@@ -388,9 +406,13 @@ impl<B: ArithFb + crate::base::envelope::Instance + crate::base::block::Register
             rounding: p.wRounding,
         }
     }
-    fn params_valid(p: &ArithParams) -> bool {
-        p.active == ARITH_ACTIVE && p.rounding <= SL_ROUNDING_ROUND
-    }
+    /// Both inputs active; DIV's rounding one of its three modes (the other operations
+    /// have no `nRounding`).
+    const RULES: &'static [RuleDef<ArithParams>] = if <B::Op as ArithOp>::ROUNDING {
+        &ARITH_RULES
+    } else {
+        ARITH_RULES.split_at(1).0
+    };
     fn store_params(&mut self, p: &ArithParams) {
         let q = self.private_mut();
         q.wActive = p.active;

@@ -15,6 +15,7 @@ use super::{magic, Analog};
 use crate::base::block::{Private, Registered};
 use crate::base::envelope::Block;
 use crate::base::header::param_crc;
+use crate::base::reason::{when, Rule, RuleDef, Unit};
 use crate::base::time;
 use crate::base::types::*;
 
@@ -199,11 +200,29 @@ impl<T: Analog, const P1: usize, const P2: usize> Block for FB_COMPARE<T, P1, P2
     }
     /// Architecture 2, 3 or 5 with exactly its inputs active; Tolerance Time ≤ 65,535 ms
     /// (ABI-2 §12.9); any deviation (semantics CP4).
-    fn params_valid(p: &CompareParams) -> bool {
-        matches!(p.architecture, SL_ARCH_1OO2 | SL_ARCH_2OO3 | SL_ARCH_3OO5)
-            && p.active == ((1u16 << p.architecture) - 1) << 8
-            && p.tolerance <= SL_TIME_PARAM_MAX
-    }
+    const RULES: &'static [RuleDef<CompareParams>] = &[
+        RuleDef::new(
+            "nArchitecture",
+            Rule::OneOf("2 (1oo2), 3 (2oo3), 5 (3oo5)"),
+            Unit::Plain,
+            |p| {
+                let known = matches!(p.architecture, SL_ARCH_1OO2 | SL_ARCH_2OO3 | SL_ARCH_3OO5);
+                when(!known, p.architecture, 0)
+            },
+        ),
+        RuleDef::new("wInputActive", Rule::Equals, Unit::Hex, |p| {
+            // One input per channel of the architecture (checked after it).
+            let want = ((1u16 << p.architecture.min(15)) - 1) << 8;
+            when(p.active != want, p.active, want)
+        }),
+        RuleDef::new("tToleranceTime", Rule::AtMost, Unit::Ms, |p| {
+            when(
+                p.tolerance > SL_TIME_PARAM_MAX,
+                p.tolerance,
+                SL_TIME_PARAM_MAX,
+            )
+        }),
+    ];
     fn store_params(&mut self, p: &CompareParams) {
         let q = self.private_mut();
         q.tTolerance = p.tolerance;

@@ -16,6 +16,7 @@ use crate::base::block::{Private, Registered};
 use crate::base::bools;
 use crate::base::envelope::Block;
 use crate::base::header::param_crc;
+use crate::base::reason::{when, Rule, RuleDef, Unit};
 use crate::base::types::*;
 
 super::analog_variants! {
@@ -183,9 +184,18 @@ impl<T: Analog, const P1: usize, const P2: usize> Block for FB_COUNTER<T, P1, P2
         }
     }
     /// Bits 0–2 only (ABI-2 §11.5); PresetValue and CounterLimit take every value of `T`.
-    fn params_valid(p: &CounterParams) -> bool {
-        p.active & !SL_COUNTER_ACTIVE_INPUTS == 0
-    }
+    const RULES: &'static [RuleDef<CounterParams>] = &[RuleDef::new(
+        "wInputActive",
+        Rule::NoBitsOutside,
+        Unit::Hex,
+        |p| {
+            when(
+                p.active & !SL_COUNTER_ACTIVE_INPUTS != 0,
+                p.active,
+                SL_COUNTER_ACTIVE_INPUTS,
+            )
+        },
+    )];
     fn store_params(&mut self, p: &CounterParams) {
         let q = self.private_mut();
         q.stHeader.nActive = p.active as u8;

@@ -18,6 +18,7 @@ use crate::base::block::{Private, Registered};
 use crate::base::bools;
 use crate::base::envelope::Block;
 use crate::base::header::param_crc;
+use crate::base::reason::{when, Rule, RuleDef, Unit};
 use crate::base::time;
 use crate::base::types::*;
 
@@ -246,11 +247,22 @@ impl<T: Analog, const P1: usize> Block for FB_ENVELOPE<T, P1> {
     }
     /// Both inputs active and nothing else (ABI-2 §10.5); both times ≤ 65 535 ms, MaxTime
     /// ≥ 1 (ABI-2 §11.11, §12.9).
-    fn params_valid(p: &EnvelopeParams) -> bool {
-        p.active == SL_ENVELOPE_ACTIVE
-            && p.values[IN_TARGET_TIME] <= SL_ENVELOPE_TIME_MAX
-            && (1..=SL_ENVELOPE_TIME_MAX).contains(&p.values[MAX_TIME])
-    }
+    const RULES: &'static [RuleDef<EnvelopeParams>] = &[
+        RuleDef::new("wInputActive", Rule::Equals, Unit::Hex, |p| {
+            when(p.active != SL_ENVELOPE_ACTIVE, p.active, SL_ENVELOPE_ACTIVE)
+        }),
+        RuleDef::new("tTimeAfterInTarget", Rule::AtMost, Unit::Ms, |p| {
+            let t = p.values[IN_TARGET_TIME];
+            when(t > SL_ENVELOPE_TIME_MAX, t, SL_ENVELOPE_TIME_MAX)
+        }),
+        RuleDef::new("tMaxTime", Rule::NotZero, Unit::Ms, |p| {
+            when(p.values[MAX_TIME] == 0, 0, 0)
+        }),
+        RuleDef::new("tMaxTime", Rule::AtMost, Unit::Ms, |p| {
+            let t = p.values[MAX_TIME];
+            when(t > SL_ENVELOPE_TIME_MAX, t, SL_ENVELOPE_TIME_MAX)
+        }),
+    ];
     fn store_params(&mut self, p: &EnvelopeParams) {
         let q = self.private_mut();
         q.wActive = p.active;

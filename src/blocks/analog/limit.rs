@@ -14,7 +14,9 @@
 use super::{diag_message, magic, Analog};
 use crate::base::block::{Private, Registered};
 use crate::base::envelope::Block;
+use crate::base::header::F_CFG_INVALID;
 use crate::base::header::param_crc;
+use crate::base::reason::{check, when, Rule, RuleDef, Unit};
 use crate::base::types::*;
 
 super::analog_variants! {
@@ -168,14 +170,31 @@ impl<T: Analog, const P1: usize> Block for FB_LIMIT<T, P1> {
         }
     }
     /// AnalogIn active, no bit beyond 8–10 (ABI-2 §10.5); both limits from the parameters
-    /// with Minimum > Maximum is a parameter-only check (ABI-2 §12.8, semantics L2).
-    fn params_valid(p: &LimitParams) -> bool {
-        let inputs = SL_LIMIT_ACTIVE_MINVALUE | SL_LIMIT_ACTIVE_MAXVALUE;
-        let known = SL_LIMIT_ACTIVE_ANALOGIN | inputs;
-        p.active & !known == 0
-            && p.active & SL_LIMIT_ACTIVE_ANALOGIN != 0
-            && (p.active & inputs != 0 || wide::<T>(p.limits[0]) <= wide::<T>(p.limits[1]))
-    }
+    /// with Minimum > Maximum is a parameter-only check (ABI-2 §12.8, semantics L2), with the
+    /// manual's Text ID 0x4090.
+    const RULES: &'static [RuleDef<LimitParams>] = &[
+        RuleDef::new("wInputActive", Rule::NoBitsOutside, Unit::Hex, |p| {
+            let known =
+                SL_LIMIT_ACTIVE_ANALOGIN | SL_LIMIT_ACTIVE_MINVALUE | SL_LIMIT_ACTIVE_MAXVALUE;
+            when(p.active & !known != 0, p.active, known)
+        }),
+        RuleDef::new("wInputActive", Rule::BitsSet, Unit::Hex, |p| {
+            let need = SL_LIMIT_ACTIVE_ANALOGIN;
+            when(p.active & need == 0, p.active, need)
+        }),
+        RuleDef::new(
+            "nMinimumValue",
+            Rule::NotAbove("nMaximumValue"),
+            Unit::Plain,
+            |p| {
+                let [min, max] = min_max::<T>(p);
+                let from_params =
+                    p.active & (SL_LIMIT_ACTIVE_MINVALUE | SL_LIMIT_ACTIVE_MAXVALUE) == 0;
+                when(from_params && min > max, min, max)
+            },
+        )
+        .text_id(SL_TEXT_LIMIT_MIN_ABOVE_MAX),
+    ];
     fn store_params(&mut self, p: &LimitParams) {
         let q = self.private_mut();
         q.wActive = p.active;
@@ -269,5 +288,21 @@ impl<T: Analog, const P1: usize> Block for FB_LIMIT<T, P1> {
             &[(SL_DIAG_LIMIT_MIN_ABOVE_MAX, SL_TEXT_LIMIT_MIN_ABOVE_MAX)],
             p.adwPar,
         );
+        // Refused because Minimum > Maximum from the parameters: the manual's message with
+        // its diag value, as in ERROR (ABI-2 §12.8, semantics L2, C15).
+        if h.nState == SL_STATE_STOP && h.flag(F_CFG_INVALID) {
+            let refusal = check(Self::RULES, &self.latched_params());
+            if let Some(r) = refusal.filter(|r| r.info.text_id == SL_TEXT_LIMIT_MIN_ABOVE_MAX) {
+                let bits = |v: i64| T::narrow(i128::from(v)).to_bits();
+                self.nDiag = h.wDiag | SL_DIAG_LIMIT_MIN_ABOVE_MAX;
+                (self.nDiagTextId, self.dwDiagPar2, self.dwDiagPar3) =
+                    (SL_TEXT_LIMIT_MIN_ABOVE_MAX, bits(r.hit.a), bits(r.hit.b));
+            }
+        }
     }
+}
+
+/// The parameters' Minimum and Maximum as values of `T`.
+fn min_max<T: Analog>(p: &LimitParams) -> [i64; 2] {
+    p.limits.map(|l| wide::<T>(l) as i64)
 }

@@ -16,6 +16,7 @@ use super::{magic, Analog};
 use crate::base::block::{Private, Registered};
 use crate::base::envelope::Block;
 use crate::base::header::{param_crc, SL_PRIVATE_HEADER};
+use crate::base::reason::{when, Hit, Rule, RuleDef, Unit};
 use crate::base::types::*;
 
 super::analog_variants! {
@@ -279,14 +280,29 @@ fn wide_row<T: Analog>(r: &SL_LOADSENSING_ROW<T>) -> [i128; 5] {
     [r.nX, r.nY1, r.nY2, r.nWY1, r.nWY2].map(Analog::wide)
 }
 
-/// The manual's check of one row: "Outside = FALSE: Y1 ≤ WY1 < WY2 ≤ Y2; Outside = TRUE:
-/// WY1 ≤ Y1 < Y2 ≤ WY2".
-fn row_ordered(outside: bool, [_, y1, y2, wy1, wy2]: [i128; 5]) -> bool {
-    if outside {
-        wy1 <= y1 && y1 < y2 && y2 <= wy2
-    } else {
-        y1 <= wy1 && wy1 < wy2 && wy2 <= y2
+/// AnalogInX and AnalogInY: the inputs every configuration has active.
+const REQUIRED: u16 = SL_LOADSENSING_ACTIVE_ANALOGINX | SL_LOADSENSING_ACTIVE_ANALOGINY;
+
+/// The rows the block uses (1…`nRowCount`, at least one).
+fn used_rows<T: Analog>(p: &LoadSensingParams<T>) -> &[SL_LOADSENSING_ROW<T>] {
+    &p.rows[..usize::from(p.count.clamp(1, SL_LOADSENSING_ROWS_MAX))]
+}
+
+/// The first used row (1-based) whose values `[X, Y1, Y2, WY1, WY2]` break a comparison of
+/// the manual's formula for the Outside setting `outside` (`bad` gives the two values
+/// compared), if the table is configured with that setting.
+fn first_row<T: Analog>(
+    p: &LoadSensingParams<T>,
+    outside: bool,
+    bad: impl Fn([i64; 5]) -> Option<(i64, i64)>,
+) -> Option<Hit> {
+    if (p.options & SL_OPT_LOADSENSING_OUTSIDE != 0) != outside {
+        return None;
     }
+    used_rows(p).iter().enumerate().find_map(|(i, r)| {
+        let (a, b) = bad(wide_row(r).map(|v| v as i64))?;
+        when(true, a, b).map(|h| h.in_row(i as u8 + 1))
+    })
 }
 
 /// The state AnalogInX and AnalogInY give with the table `rows` (semantics LS3, LS4): the
@@ -351,17 +367,69 @@ impl<T: Analog, const P1: usize, const PR: usize> Block for FB_LOADSENSING<T, P1
     /// AnalogInX and AnalogInY active, Inactive optional, no other bit (ABI-2 §10.5); only
     /// the Outside option; 1…25 rows; in the rows used, X strictly increasing and each row
     /// ordered as the manual's formula for its Outside setting (ABI-2 §11.8, semantics LS5).
-    fn params_valid(p: &LoadSensingParams<T>) -> bool {
-        let required = SL_LOADSENSING_ACTIVE_ANALOGINX | SL_LOADSENSING_ACTIVE_ANALOGINY;
-        let outside = p.options & SL_OPT_LOADSENSING_OUTSIDE != 0;
-        let used = &p.rows[..usize::from(p.count.clamp(1, SL_LOADSENSING_ROWS_MAX))];
-        p.active & !(required | SL_LOADSENSING_ACTIVE_INACTIVE) == 0
-            && p.active & required == required
-            && p.options & !SL_OPT_LOADSENSING_OUTSIDE == 0
-            && (1..=SL_LOADSENSING_ROWS_MAX).contains(&p.count)
-            && used.iter().all(|r| row_ordered(outside, wide_row(r)))
-            && used.windows(2).all(|w| w[0].nX.wide() < w[1].nX.wide())
-    }
+    const RULES: &'static [RuleDef<LoadSensingParams<T>>] = &[
+        RuleDef::new("wInputActive", Rule::NoBitsOutside, Unit::Hex, |p| {
+            let known = REQUIRED | SL_LOADSENSING_ACTIVE_INACTIVE;
+            when(p.active & !known != 0, p.active, known)
+        }),
+        RuleDef::new("wInputActive", Rule::BitsSet, Unit::Hex, |p| {
+            when(p.active & REQUIRED != REQUIRED, p.active, REQUIRED)
+        }),
+        RuleDef::new("dwOptions", Rule::NoBitsOutside, Unit::Hex, |p| {
+            let known = SL_OPT_LOADSENSING_OUTSIDE;
+            when(p.options & !known != 0, p.options, known)
+        }),
+        RuleDef::new("nRowCount", Rule::AtLeast, Unit::Plain, |p| {
+            when(p.count == 0, 0, 1)
+        }),
+        RuleDef::new("nRowCount", Rule::AtMost, Unit::Plain, |p| {
+            let max = SL_LOADSENSING_ROWS_MAX;
+            when(p.count > max, p.count, max)
+        }),
+        // The manual's formula, one comparison at a time: "Outside = FALSE: Y1 ≤ WY1 < WY2 ≤ Y2".
+        RuleDef::new("nY1", Rule::NotAbove("nWY1"), Unit::Plain, |p| {
+            first_row(p, false, |[_, y1, _, wy1, _]| {
+                (y1 > wy1).then_some((y1, wy1))
+            })
+        }),
+        RuleDef::new("nWY1", Rule::Below("nWY2"), Unit::Plain, |p| {
+            first_row(p, false, |[_, _, _, wy1, wy2]| {
+                (wy1 >= wy2).then_some((wy1, wy2))
+            })
+        }),
+        RuleDef::new("nWY2", Rule::NotAbove("nY2"), Unit::Plain, |p| {
+            first_row(p, false, |[_, _, y2, _, wy2]| {
+                (wy2 > y2).then_some((wy2, y2))
+            })
+        }),
+        // "Outside = TRUE: WY1 ≤ Y1 < Y2 ≤ WY2".
+        RuleDef::new("nWY1", Rule::NotAbove("nY1"), Unit::Plain, |p| {
+            first_row(p, true, |[_, y1, _, wy1, _]| {
+                (wy1 > y1).then_some((wy1, y1))
+            })
+        }),
+        RuleDef::new("nY1", Rule::Below("nY2"), Unit::Plain, |p| {
+            first_row(p, true, |[_, y1, y2, _, _]| (y1 >= y2).then_some((y1, y2)))
+        }),
+        RuleDef::new("nY2", Rule::NotAbove("nWY2"), Unit::Plain, |p| {
+            first_row(p, true, |[_, _, y2, _, wy2]| {
+                (y2 > wy2).then_some((y2, wy2))
+            })
+        }),
+        // X strictly increasing (the row search, semantics LS3).
+        RuleDef::new(
+            "nX",
+            Rule::Above("nX of the row before"),
+            Unit::Plain,
+            |p| {
+                let used = used_rows(p);
+                used.windows(2).enumerate().find_map(|(i, w)| {
+                    let (before, x) = (w[0].nX.wide() as i64, w[1].nX.wide() as i64);
+                    when(x <= before, x, before).map(|h| h.in_row(i as u8 + 2))
+                })
+            },
+        ),
+    ];
     fn store_params(&mut self, p: &LoadSensingParams<T>) {
         let q = self.private_mut();
         q.wActive = p.active;

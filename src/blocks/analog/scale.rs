@@ -20,6 +20,7 @@ use super::{SL_DIAG_VALUE_OVERFLOW, SL_DIAG_VALUE_UNDERFLOW};
 use crate::base::block::{Private, Registered};
 use crate::base::envelope::Block;
 use crate::base::header::param_crc;
+use crate::base::reason::{when, Rule, RuleDef, Unit};
 use crate::base::time;
 use crate::base::types::*;
 
@@ -279,14 +280,37 @@ impl<T: Analog, T32: Analog, const P1: usize, const P2: usize> Block for FB_SCAL
     /// AnalogIn active and nothing else, negation of AnalogIn only, the one option, a
     /// known rounding, watchdog ≤ 65,535 ms (ABI-2 §12.9) and Denominator ≠ 0 (a
     /// parameter-only check, ABI-2 §12.8, semantics SC2).
-    fn params_valid(p: &ScaleParams) -> bool {
-        p.active == SL_SCALE_ACTIVE_ANALOGIN
-            && p.negated & !SL_SCALE_NEGATE_ANALOGIN == 0
-            && p.options & !SL_OPT_SCALE_DIVISION_FIRST == 0
-            && p.rounding <= SL_ROUNDING_ROUND
-            && p.watchdog <= SL_TIME_PARAM_MAX
-            && p.factors[1] != 0
-    }
+    const RULES: &'static [RuleDef<ScaleParams>] = &[
+        RuleDef::new("wInputActive", Rule::Equals, Unit::Hex, |p| {
+            let want = SL_SCALE_ACTIVE_ANALOGIN;
+            when(p.active != want, p.active, want)
+        }),
+        RuleDef::new("wInputNegated", Rule::NoBitsOutside, Unit::Hex, |p| {
+            let known = SL_SCALE_NEGATE_ANALOGIN;
+            when(p.negated & !known != 0, p.negated, known)
+        }),
+        RuleDef::new("dwOptions", Rule::NoBitsOutside, Unit::Hex, |p| {
+            let known = SL_OPT_SCALE_DIVISION_FIRST;
+            when(p.options & !known != 0, p.options, known)
+        }),
+        RuleDef::new("nRounding", Rule::AtMost, Unit::Plain, |p| {
+            when(
+                p.rounding > SL_ROUNDING_ROUND,
+                p.rounding,
+                SL_ROUNDING_ROUND,
+            )
+        }),
+        RuleDef::new("tWatchdog", Rule::AtMost, Unit::Ms, |p| {
+            when(
+                p.watchdog > SL_TIME_PARAM_MAX,
+                p.watchdog,
+                SL_TIME_PARAM_MAX,
+            )
+        }),
+        RuleDef::new("nDenominator", Rule::NotZero, Unit::Plain, |p| {
+            when(p.factors[1] == 0, 0, 0)
+        }),
+    ];
     fn store_params(&mut self, p: &ScaleParams) {
         let q = self.private_mut();
         q.tWatchdog = p.watchdog;

@@ -18,6 +18,7 @@ use super::{SL_DIAG_VALUE_OVERFLOW, SL_DIAG_VALUE_UNDERFLOW};
 use crate::base::block::{Private, Registered};
 use crate::base::envelope::Block;
 use crate::base::header::param_crc;
+use crate::base::reason::{when, Rule, RuleDef, Unit};
 use crate::base::time;
 use crate::base::types::*;
 
@@ -179,11 +180,26 @@ impl<T: Analog, const P1: usize, const P2: usize> Block for FB_SPEED<T, P1, P2> 
     }
     /// Position active and nothing else, the one option, Time Interval 1 … 65,535 ms
     /// (ABI-2 §11.7 "≥ 1", §12.9).
-    fn params_valid(p: &SpeedParams) -> bool {
-        p.active == SL_SPEED_ACTIVE_POSITION
-            && p.options & !SL_OPT_SPEED_OVERFLOW_CHECK == 0
-            && (1..=SL_TIME_PARAM_MAX).contains(&p.interval)
-    }
+    const RULES: &'static [RuleDef<SpeedParams>] = &[
+        RuleDef::new("wInputActive", Rule::Equals, Unit::Hex, |p| {
+            let want = SL_SPEED_ACTIVE_POSITION;
+            when(p.active != want, p.active, want)
+        }),
+        RuleDef::new("dwOptions", Rule::NoBitsOutside, Unit::Hex, |p| {
+            let known = SL_OPT_SPEED_OVERFLOW_CHECK;
+            when(p.options & !known != 0, p.options, known)
+        }),
+        RuleDef::new("tTimeInterval", Rule::NotZero, Unit::Ms, |p| {
+            when(p.interval == 0, 0, 0)
+        }),
+        RuleDef::new("tTimeInterval", Rule::AtMost, Unit::Ms, |p| {
+            when(
+                p.interval > SL_TIME_PARAM_MAX,
+                p.interval,
+                SL_TIME_PARAM_MAX,
+            )
+        }),
+    ];
     fn store_params(&mut self, p: &SpeedParams) {
         let q = self.private_mut();
         q.tInterval = p.interval;

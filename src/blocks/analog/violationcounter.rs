@@ -15,6 +15,7 @@ use crate::base::block::{Private, Registered};
 use crate::base::bools;
 use crate::base::envelope::Block;
 use crate::base::header::param_crc;
+use crate::base::reason::{when, Rule, RuleDef, Unit};
 use crate::base::types::*;
 
 super::analog_variants! {
@@ -156,9 +157,18 @@ impl<T: Unsigned, const P1: usize, const P2: usize> Block for FB_VIOLATIONCOUNTE
         }
     }
     /// Both inputs active, only Input negatable, Counter Limit ≥ 1 (semantics V3).
-    fn params_valid(p: &ViolationParams) -> bool {
-        p.active == SL_VIOLATIONCOUNTER_ACTIVE && p.negated & !1 == 0 && p.values[LIMIT] != 0
-    }
+    const RULES: &'static [RuleDef<ViolationParams>] = &[
+        RuleDef::new("wInputActive", Rule::Equals, Unit::Hex, |p| {
+            let want = SL_VIOLATIONCOUNTER_ACTIVE;
+            when(p.active != want, p.active, want)
+        }),
+        RuleDef::new("wInputNegated", Rule::NoBitsOutside, Unit::Hex, |p| {
+            when(p.negated & !1 != 0, p.negated, 1)
+        }),
+        RuleDef::new("nCounterLimit", Rule::NotZero, Unit::Plain, |p| {
+            when(p.values[LIMIT] == 0, 0, 0)
+        }),
+    ];
     fn store_params(&mut self, p: &ViolationParams) {
         let q = self.private_mut();
         q.stHeader.nActive = p.active as u8;

@@ -194,6 +194,31 @@ macro_rules! window_block {
             type Pos<B> = <B as WindowFb>::T;
             type Diff<B> = <B as WindowFb>::TS;
 
+            impl<$($gen)*> $t {
+                /// Every rule of the family; `Block::RULES` leaves the last (options) out
+                /// for a block without `dwOptions`.
+                const WINDOW_RULES: [$crate::base::reason::RuleDef<WindowParams>; 4] = {
+                    use $crate::base::reason::{when, Rule, RuleDef, Unit};
+                    [
+                        RuleDef::new("wInputActive", Rule::Equals, Unit::Hex, |p| {
+                            when(p.active != SL_SLI_ACTIVE, p.active, SL_SLI_ACTIVE)
+                        }),
+                        RuleDef::new("nLimitPos", Rule::AtMost, Unit::Plain, |p| {
+                            let max = Diff::<Self>::MAX as i64;
+                            when(i64::from(p.limits[0]) > max, p.limits[0], max)
+                        }),
+                        RuleDef::new("nLimitNeg", Rule::AtMost, Unit::Plain, |p| {
+                            let max = Diff::<Self>::MAX as i64;
+                            when(i64::from(p.limits[1]) > max, p.limits[1], max)
+                        }),
+                        RuleDef::new("dwOptions", Rule::NoBitsOutside, Unit::Hex, |p| {
+                            let known = <Self as WindowFb>::OPTIONS;
+                            when(p.options & !known != 0, p.options, known)
+                        }),
+                    ]
+                };
+            }
+
             impl<$($gen)*> Block for $t {
                 const MAGIC: u16 = magic(<Self as Registered>::INFO.tag);
                 type Params = WindowParams;
@@ -214,13 +239,14 @@ macro_rules! window_block {
                 }
                 /// SLI and Position active, nothing else; each limit within the range of
                 /// PositionDiff's type, so every in-window difference fits the output
-                /// (ABI-2 §11.9, §12.8, semantics SI5); only the block's own options.
-                fn params_valid(p: &WindowParams) -> bool {
-                    let fits = |l: u32| i128::from(l) <= Diff::<Self>::MAX;
-                    p.active == SL_SLI_ACTIVE
-                        && p.limits.iter().all(|&l| fits(l))
-                        && p.options & !<Self as WindowFb>::OPTIONS == 0
-                }
+                /// (ABI-2 §11.9, §12.8, semantics SI5); only the block's own options (the
+                /// last rule, for the block that has `dwOptions`).
+                const RULES: &'static [$crate::base::reason::RuleDef<WindowParams>] =
+                    if <Self as WindowFb>::OPTIONS == 0 {
+                        Self::WINDOW_RULES.split_at(3).0
+                    } else {
+                        &Self::WINDOW_RULES
+                    };
                 fn store_params(&mut self, p: &WindowParams) {
                     let q = self.private_mut();
                     q.wActive = p.active;

@@ -139,6 +139,9 @@ impl GuardBlock for FB_ESTOP {
     const INPUTS: u16 = 0xFF;
     const REQUIRED: u16 = 0xFF;
     const PAIRS: u8 = 0b1111;
+    const DISC_NAMES: [&'static str; 4] =
+        ["tDiscTime12", "tDiscTime34", "tDiscTime56", "tDiscTime78"];
+    const DELAY_NAME: &'static str = "tEStopDelOutDelay";
     const TEST_INPUTS: u8 = 0;
     const ERROR_DELAY: bool = false;
     const ALWAYS_MANUAL: bool = true;

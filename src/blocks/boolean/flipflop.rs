@@ -200,9 +200,20 @@ macro_rules! flipflop_block {
                 }
                 /// At least one input active, no bits for inputs the block does not have
                 /// (semantics R1).
-                fn params_valid(p: &FlipFlopParams) -> bool {
-                    p.active & !INPUTS == 0 && p.negated & !INPUTS == 0 && p.active != 0
-                }
+                const RULES: &'static [$crate::base::reason::RuleDef<FlipFlopParams>] = {
+                    use $crate::base::reason::{when, Rule, RuleDef, Unit};
+                    &[
+                        RuleDef::new("wInputActive", Rule::NoBitsOutside, Unit::Hex, |p| {
+                            when(p.active & !INPUTS != 0, p.active, INPUTS)
+                        }),
+                        RuleDef::new("wInputNegated", Rule::NoBitsOutside, Unit::Hex, |p| {
+                            when(p.negated & !INPUTS != 0, p.negated, INPUTS)
+                        }),
+                        RuleDef::new("wInputActive", Rule::AnyBitOf, Unit::Hex, |p| {
+                            when(p.active == 0, p.active, INPUTS)
+                        }),
+                    ]
+                };
                 fn store_params(&mut self, p: &FlipFlopParams) {
                     let h = &mut self.private_mut().stHeader;
                     h.nActive = p.active as u8;

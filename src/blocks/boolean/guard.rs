@@ -92,6 +92,11 @@ pub trait GuardBlock: crate::base::block::Private<P = SL_GUARD_PRIVATE> {
     const REQUIRED: u16;
     /// Pairs that exist (bit k = inputs 2k and 2k+1).
     const PAIRS: u8;
+    /// The field names of the discrepancy times of the pairs ("" for a pair that does not
+    /// exist), for the refusal's sentence.
+    const DISC_NAMES: [&'static str; 4];
+    /// The field name of the delay time.
+    const DELAY_NAME: &'static str;
     /// Inputs taking part in the manual function test.
     const TEST_INPUTS: u8;
     /// The block has ERRORDELAY (MON).
@@ -180,29 +185,79 @@ macro_rules! guard_block {
                     }
                 }
 
-                fn params_valid(p: &GuardParams) -> bool {
-                    let times_ok = p
-                        .disc
-                        .iter()
-                        .chain(&p.edm_reset)
-                        .chain(core::iter::once(&p.delay))
-                        .all(|&t| t <= SL_TIME_PARAM_MAX);
-                    // A discrepancy time belongs to a pair that exists and has both inputs active.
-                    let pairs_ok = p.disc.iter().enumerate().all(|(k, &t)| {
-                        let both = 0b11u16 << (2 * k);
-                        t == 0 || (Self::PAIRS & (1 << k) != 0 && p.active & both == both)
-                    });
-                    // A reset time belongs to an active feedback loop.
-                    let edm_ok = (p.edm_reset[0] == 0 || p.options & SL_OPT_EDM1 != 0)
-                        && (p.edm_reset[1] == 0 || p.options & SL_OPT_EDM2 != 0);
-                    times_ok
-                        && pairs_ok
-                        && edm_ok
-                        && p.active & !Self::INPUTS == 0
-                        && p.negated & !Self::INPUTS == 0
-                        && p.active & Self::REQUIRED != 0
-                        && p.options & !Self::OPTIONS == 0
-                }
+                const RULES: &'static [$crate::base::reason::RuleDef<GuardParams>] = {
+                    use $crate::base::reason::{when, Hit, Rule, RuleDef, Unit};
+                    /// The first pair (index, time, both inputs) whose discrepancy time `bad` refuses.
+                    fn first_pair(
+                        p: &GuardParams,
+                        bad: impl Fn(usize, u32, u16) -> bool,
+                    ) -> Option<(usize, u32, u16)> {
+                        (0..4)
+                            .map(|k| (k, p.disc[k], 0b11u16 << (2 * k)))
+                            .find(|&(k, t, both)| bad(k, t, both))
+                    }
+                    fn named(k: usize, hit: Option<Hit>) -> Option<Hit> {
+                        hit.map(|h| h.in_field(<$t as GuardBlock>::DISC_NAMES[k]))
+                    }
+                    &[
+                        RuleDef::new("wInputActive", Rule::NoBitsOutside, Unit::Hex, |p| {
+                            when(p.active & !Self::INPUTS != 0, p.active, Self::INPUTS)
+                        }),
+                        RuleDef::new("wInputNegated", Rule::NoBitsOutside, Unit::Hex, |p| {
+                            when(p.negated & !Self::INPUTS != 0, p.negated, Self::INPUTS)
+                        }),
+                        RuleDef::new("dwOptions", Rule::NoBitsOutside, Unit::Hex, |p| {
+                            when(p.options & !Self::OPTIONS != 0, p.options, Self::OPTIONS)
+                        }),
+                        RuleDef::new("tDiscTime", Rule::AtMost, Unit::Ms, |p| {
+                            first_pair(p, |_, t, _| t > SL_TIME_PARAM_MAX)
+                                .and_then(|(k, t, _)| named(k, when(true, t, SL_TIME_PARAM_MAX)))
+                        }),
+                        RuleDef::new("tEDM1ResetTime", Rule::AtMost, Unit::Ms, |p| {
+                            let t = p.edm_reset[0];
+                            when(t > SL_TIME_PARAM_MAX, t, SL_TIME_PARAM_MAX)
+                        }),
+                        RuleDef::new("tEDM2ResetTime", Rule::AtMost, Unit::Ms, |p| {
+                            let t = p.edm_reset[1];
+                            when(t > SL_TIME_PARAM_MAX, t, SL_TIME_PARAM_MAX)
+                        }),
+                        RuleDef::new(
+                            <$t as GuardBlock>::DELAY_NAME,
+                            Rule::AtMost,
+                            Unit::Ms,
+                            |p| when(p.delay > SL_TIME_PARAM_MAX, p.delay, SL_TIME_PARAM_MAX),
+                        ),
+                        // A discrepancy time belongs to a pair that exists and has both inputs active.
+                        RuleDef::new("tDiscTime", Rule::Needs("wInputActive"), Unit::Ms, |p| {
+                            first_pair(p, |k, t, both| {
+                                t != 0 && (Self::PAIRS & (1 << k) == 0 || p.active & both != both)
+                            })
+                            .and_then(|(k, t, both)| named(k, when(true, t, both)))
+                        }),
+                        // A reset time belongs to an active feedback loop.
+                        RuleDef::new(
+                            "tEDM1ResetTime",
+                            Rule::ZeroUnless("dwOptions has SL_OPT_EDM1"),
+                            Unit::Ms,
+                            |p| {
+                                let t = p.edm_reset[0];
+                                when(t != 0 && p.options & SL_OPT_EDM1 == 0, t, 0)
+                            },
+                        ),
+                        RuleDef::new(
+                            "tEDM2ResetTime",
+                            Rule::ZeroUnless("dwOptions has SL_OPT_EDM2"),
+                            Unit::Ms,
+                            |p| {
+                                let t = p.edm_reset[1];
+                                when(t != 0 && p.options & SL_OPT_EDM2 == 0, t, 0)
+                            },
+                        ),
+                        RuleDef::new("wInputActive", Rule::AnyBitOf, Unit::Hex, |p| {
+                            when(p.active & Self::REQUIRED == 0, p.active, Self::REQUIRED)
+                        }),
+                    ]
+                };
 
                 fn store_params(&mut self, p: &GuardParams) {
                     let q = self.private_mut();

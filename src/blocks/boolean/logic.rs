@@ -62,6 +62,30 @@ macro_rules! logic_block {
         const _: () = {
             $crate::base::envelope::family_prelude!($crate::blocks::boolean::logic);
 
+            impl $t {
+                /// Every rule of the family; `Block::RULES` leaves the last (negation) out
+                /// for a block without `wInputNegated`.
+                const LOGIC_RULES: [$crate::base::reason::RuleDef<LogicParams>; 3] = {
+                    use $crate::base::reason::{when, Rule, RuleDef, Unit};
+                    [
+                        RuleDef::new("wInputActive", Rule::NoBitsOutside, Unit::Hex, |p| {
+                            when(p.active & !Self::INPUTS != 0, p.active, Self::INPUTS)
+                        }),
+                        RuleDef::new("wInputActive", Rule::MinBits, Unit::Hex, |p| {
+                            let min = Self::MIN_ACTIVE;
+                            when(p.active.count_ones() < min, p.active, min)
+                        }),
+                        RuleDef::new("wInputNegated", Rule::NoBitsOutside, Unit::Hex, |p| {
+                            when(
+                                p.negated & !Self::NEGATABLE != 0,
+                                p.negated,
+                                Self::NEGATABLE,
+                            )
+                        }),
+                    ]
+                };
+            }
+
             impl Block for $t {
                 const MAGIC: u16 = <$t as LogicBlock>::TAG;
                 type Params = LogicParams;
@@ -79,12 +103,14 @@ macro_rules! logic_block {
                         negated: u16::from(h.nNegated),
                     }
                 }
-                #[inline(always)]
-                fn params_valid(p: &LogicParams) -> bool {
-                    p.active & !Self::INPUTS == 0
-                        && p.negated & !Self::NEGATABLE == 0
-                        && p.active.count_ones() >= Self::MIN_ACTIVE
-                }
+                /// Known inputs, at least the block's number active; negation only where the
+                /// block has `wInputNegated` (the last rule).
+                const RULES: &'static [$crate::base::reason::RuleDef<LogicParams>] =
+                    if Self::NEGATABLE == 0 {
+                        Self::LOGIC_RULES.split_at(2).0
+                    } else {
+                        &Self::LOGIC_RULES
+                    };
                 #[inline(always)]
                 fn store_params(&mut self, p: &LogicParams) {
                     let h = &mut self.private_mut().stHeader;

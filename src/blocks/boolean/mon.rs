@@ -143,6 +143,8 @@ impl GuardBlock for FB_MON {
     const INPUTS: u16 = 0x3F;
     const REQUIRED: u16 = MON_INPUTS as u16;
     const PAIRS: u8 = 0b111;
+    const DISC_NAMES: [&'static str; 4] = ["tDiscTime12", "tDiscTime34", "tDiscTimeSecure12", ""];
+    const DELAY_NAME: &'static str = "tMonDelOutDelay";
     const TEST_INPUTS: u8 = MON_INPUTS;
     const ERROR_DELAY: bool = true;
     const ALWAYS_MANUAL: bool = false;

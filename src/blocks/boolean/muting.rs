@@ -16,6 +16,7 @@ use crate::base::bools;
 use crate::base::edm::Edm;
 use crate::base::envelope::Block;
 use crate::base::header::param_crc;
+use crate::base::reason::{when, Rule, RuleDef, Unit};
 use crate::base::types::*;
 use crate::base::{pair, time};
 
@@ -449,38 +450,99 @@ impl Block for FB_MUTING {
         }
     }
 
-    fn params_valid(p: &MutingParams) -> bool {
-        let a = p.active as u8;
-        let sequential = p.options & SL_OPT_MUTING_SEQUENTIAL != 0;
-        let times_ok = p.disc.iter().all(|&t| t <= SL_TIME_PARAM_MAX)
-            && p.filter <= SL_MUTING_FILTER_TIME_MAX
-            && p.max_muting <= SL_MUTING_MAX_MUTING_TIME_MAX
-            && p.delay <= SL_MUTING_DELOUT_DELAY_MAX;
+    const RULES: &'static [RuleDef<MutingParams>] = &[
+        RuleDef::new("wInputActive", Rule::NoBitsOutside, Unit::Hex, |p| {
+            when(p.active & !INPUTS != 0, p.active, INPUTS)
+        }),
+        RuleDef::new("wInputNegated", Rule::NoBitsOutside, Unit::Hex, |p| {
+            when(p.negated & !INPUTS != 0, p.negated, INPUTS)
+        }),
+        RuleDef::new("dwOptions", Rule::NoBitsOutside, Unit::Hex, |p| {
+            when(p.options & !OPTIONS != 0, p.options, OPTIONS)
+        }),
+        RuleDef::new("tDiscTime12", Rule::AtMost, Unit::Ms, |p| {
+            when(p.disc[0] > SL_TIME_PARAM_MAX, p.disc[0], SL_TIME_PARAM_MAX)
+        }),
+        RuleDef::new("tDiscTimeOSSD", Rule::AtMost, Unit::Ms, |p| {
+            when(p.disc[1] > SL_TIME_PARAM_MAX, p.disc[1], SL_TIME_PARAM_MAX)
+        }),
+        RuleDef::new("tDiscTime34", Rule::AtMost, Unit::Ms, |p| {
+            when(p.disc[2] > SL_TIME_PARAM_MAX, p.disc[2], SL_TIME_PARAM_MAX)
+        }),
+        RuleDef::new("tFilterTime", Rule::AtMost, Unit::Ms, |p| {
+            when(
+                p.filter > SL_MUTING_FILTER_TIME_MAX,
+                p.filter,
+                SL_MUTING_FILTER_TIME_MAX,
+            )
+        }),
+        RuleDef::new("tMaxMutingTime", Rule::AtMost, Unit::Ms, |p| {
+            let max = SL_MUTING_MAX_MUTING_TIME_MAX;
+            when(p.max_muting > max, p.max_muting, max)
+        }),
+        RuleDef::new("tMuteDelOutDelay", Rule::AtMost, Unit::Ms, |p| {
+            when(
+                p.delay > SL_MUTING_DELOUT_DELAY_MAX,
+                p.delay,
+                SL_MUTING_DELOUT_DELAY_MAX,
+            )
+        }),
         // A discrepancy time belongs to a pair with both inputs active.
-        let pairs_ok = p
-            .disc
-            .iter()
-            .zip([M12, OSSD, M34])
-            .all(|(&t, both)| t == 0 || a & both == both);
+        RuleDef::new("tDiscTime12", Rule::Needs("wInputActive"), Unit::Ms, |p| {
+            let both = u16::from(M12);
+            when(p.disc[0] != 0 && p.active & both != both, p.disc[0], both)
+        }),
+        RuleDef::new(
+            "tDiscTimeOSSD",
+            Rule::Needs("wInputActive"),
+            Unit::Ms,
+            |p| {
+                let both = u16::from(OSSD);
+                when(p.disc[1] != 0 && p.active & both != both, p.disc[1], both)
+            },
+        ),
+        RuleDef::new("tDiscTime34", Rule::Needs("wInputActive"), Unit::Ms, |p| {
+            let both = u16::from(M34);
+            when(p.disc[2] != 0 && p.active & both != both, p.disc[2], both)
+        }),
         // Sequential: single-channel sensors only, MutingIn3/4 both or neither (EL6910).
         // Parallel: two two-channel groups.
-        let muting_ok = if sequential {
-            p.disc[0] == 0 && p.disc[2] == 0 && (a & M34 == 0 || a & M34 == M34)
-        } else {
-            a & MUTING_INPUTS == MUTING_INPUTS
-        };
+        RuleDef::new(
+            "tDiscTime12",
+            Rule::ZeroUnless("muting is parallel"),
+            Unit::Ms,
+            |p| when(sequential(p) && p.disc[0] != 0, p.disc[0], 0),
+        ),
+        RuleDef::new(
+            "tDiscTime34",
+            Rule::ZeroUnless("muting is parallel"),
+            Unit::Ms,
+            |p| when(sequential(p) && p.disc[2] != 0, p.disc[2], 0),
+        ),
+        RuleDef::new("wInputActive", Rule::BothOrNeither, Unit::Hex, |p| {
+            let m = u16::from(M34);
+            let some = p.active & m;
+            when(sequential(p) && some != 0 && some != m, p.active, m)
+        }),
+        RuleDef::new("wInputActive", Rule::BitsSet, Unit::Hex, |p| {
+            let m = u16::from(MUTING_INPUTS);
+            when(!sequential(p) && p.active & m != m, p.active, m)
+        }),
         // Backwards starts at MutingIn4.
-        let backwards_ok = p.options & SL_OPT_MUTING_BACKWARDS == 0 || a & M34 == M34;
-        times_ok
-            && pairs_ok
-            && muting_ok
-            && backwards_ok
-            && p.active & !INPUTS == 0
-            && p.negated & !INPUTS == 0
-            && p.options & !OPTIONS == 0
-            && a & M12 == M12
-            && a & OSSD != 0
-    }
+        RuleDef::new("dwOptions", Rule::Needs("wInputActive"), Unit::Hex, |p| {
+            let m = u16::from(M34);
+            let backwards = p.options & SL_OPT_MUTING_BACKWARDS != 0;
+            when(backwards && p.active & m != m, p.options, m)
+        }),
+        RuleDef::new("wInputActive", Rule::BitsSet, Unit::Hex, |p| {
+            let m = u16::from(M12);
+            when(p.active & m != m, p.active, m)
+        }),
+        RuleDef::new("wInputActive", Rule::AnyBitOf, Unit::Hex, |p| {
+            let m = u16::from(OSSD);
+            when(p.active & m == 0, p.active, m)
+        }),
+    ];
 
     fn store_params(&mut self, p: &MutingParams) {
         let q = &mut self.stPrivate;
@@ -733,4 +795,9 @@ impl Block for FB_MUTING {
         self.nState = h.nState;
         self.nDiag = h.wDiag;
     }
+}
+
+/// The muting sensors are sequential (`SL_OPT_MUTING_SEQUENTIAL`).
+fn sequential(p: &MutingParams) -> bool {
+    p.options & SL_OPT_MUTING_SEQUENTIAL != 0
 }

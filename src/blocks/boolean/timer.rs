@@ -466,6 +466,40 @@ macro_rules! timer_block {
         const _: () = {
             $crate::base::envelope::family_prelude!($crate::blocks::boolean::timer);
 
+        impl $t {
+            /// Every rule of the timers; `Block::RULES` leaves the last (options) out for a
+            /// timer without `dwOptions`.
+            const TIMER_RULES: [$crate::base::reason::RuleDef<TimerParams>; 7] = {
+                use $crate::base::reason::{when, Rule, RuleDef, Unit};
+                use $crate::blocks::boolean::timer::{time_base, SL_TIMER_STEPS_MAX};
+                [
+                    RuleDef::new("wInputActive", Rule::Equals, Unit::Hex, |p| {
+                        when(p.active != 1, p.active, 1)
+                    }),
+                    RuleDef::new("wInputNegated", Rule::NoBitsOutside, Unit::Hex, |p| {
+                        when(p.negated & !1 != 0, p.negated, 1)
+                    }),
+                    RuleDef::new("nTimeBase", Rule::OneOf("0, 1, 10, 100, 1000"), Unit::Plain, |p| {
+                        when(time_base(0, p.time_base).is_none(), p.time_base, 0)
+                    }),
+                    RuleDef::new("tDelay", Rule::NotZero, Unit::Ms, |p| when(p.delay == 0, 0, 0)),
+                    RuleDef::new("tDelay", Rule::AtMost, Unit::Ms, |p| {
+                        // Automatic: the largest timebase's range.
+                        let b = time_base(p.delay, p.time_base).unwrap_or(1000);
+                        let max = u64::from(SL_TIMER_STEPS_MAX) * u64::from(b);
+                        when(u64::from(p.delay) > max, p.delay, max as i64)
+                    }),
+                    RuleDef::new("tDelay", Rule::MultipleOf, Unit::Ms, |p| {
+                        let b = time_base(p.delay, p.time_base).unwrap_or(1000);
+                        when(p.delay % b != 0, p.delay, b)
+                    }),
+                    RuleDef::new("dwOptions", Rule::NoBitsOutside, Unit::Hex, |p| {
+                        when(p.options & !Self::OPTIONS != 0, p.options, Self::OPTIONS)
+                    }),
+                ]
+            };
+        }
+
         impl Block for $t {
             const MAGIC: u16 = <$t as TimerBlock>::TAG;
             type Params = TimerParams;
@@ -487,14 +521,15 @@ macro_rules! timer_block {
                 }
             }
 
-            /// One input, active; negation only for it; known options; a delay of 1 to
-            /// 60,000 whole timebase steps.
-            fn params_valid(p: &TimerParams) -> bool {
-                p.active == 1
-                    && p.negated & !1 == 0
-                    && p.options & !Self::OPTIONS == 0
-                    && delay_valid(p.delay, p.time_base)
-            }
+            /// One input, active; negation only for it; a delay of 1 to 60,000 whole
+            /// timebase steps; known options (the last rule, for TON2, the timer that has
+            /// `dwOptions`).
+            const RULES: &'static [$crate::base::reason::RuleDef<TimerParams>] =
+                if <Self as TimerBlock>::OPTIONS == 0 {
+                    Self::TIMER_RULES.split_at(6).0
+                } else {
+                    &Self::TIMER_RULES
+                };
 
             fn store_params(&mut self, p: &TimerParams) {
                 let q = self.private_mut();

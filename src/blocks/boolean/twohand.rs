@@ -13,6 +13,7 @@ use crate::base::block::BlockInfo;
 use crate::base::bools;
 use crate::base::envelope::Block;
 use crate::base::header::{param_crc, SL_PRIVATE_HEADER};
+use crate::base::reason::{when, Rule, RuleDef, Unit};
 use crate::base::types::*;
 use crate::base::{pair, time};
 
@@ -277,20 +278,45 @@ impl Block for FB_TWOHAND {
     /// Each group needs an active input (a two-hand control has two groups, H2); a
     /// discrepancy time needs both inputs of its pair active (C6); the window is at most
     /// 2500 ms (§4.7.1).
-    fn params_valid(p: &TwohandParams) -> bool {
-        let a = p.active;
-        let g1 = u16::from(GROUP1);
-        let g2 = u16::from(GROUP2);
-        p.disc.iter().all(|&t| t <= SL_TIME_PARAM_MAX)
-            && p.pairs <= SL_TWOHAND_PAIRS_TIME_MAX
-            && (p.disc[0] == 0 || a & g1 == g1)
-            && (p.disc[1] == 0 || a & g2 == g2)
-            && a & !0x0F == 0
-            && p.negated & !0x0F == 0
-            && a & g1 != 0
-            && a & g2 != 0
-            && p.options & !OPTIONS == 0
-    }
+    const RULES: &'static [RuleDef<TwohandParams>] = &[
+        RuleDef::new("tDiscTime12", Rule::AtMost, Unit::Ms, |p| {
+            when(p.disc[0] > SL_TIME_PARAM_MAX, p.disc[0], SL_TIME_PARAM_MAX)
+        }),
+        RuleDef::new("tDiscTime34", Rule::AtMost, Unit::Ms, |p| {
+            when(p.disc[1] > SL_TIME_PARAM_MAX, p.disc[1], SL_TIME_PARAM_MAX)
+        }),
+        RuleDef::new("tDiscTimePairs", Rule::AtMost, Unit::Ms, |p| {
+            when(
+                p.pairs > SL_TWOHAND_PAIRS_TIME_MAX,
+                p.pairs,
+                SL_TWOHAND_PAIRS_TIME_MAX,
+            )
+        }),
+        RuleDef::new("wInputActive", Rule::NoBitsOutside, Unit::Hex, |p| {
+            when(p.active & !0x0F != 0, p.active, 0x0F)
+        }),
+        RuleDef::new("wInputNegated", Rule::NoBitsOutside, Unit::Hex, |p| {
+            when(p.negated & !0x0F != 0, p.negated, 0x0F)
+        }),
+        RuleDef::new("dwOptions", Rule::NoBitsOutside, Unit::Hex, |p| {
+            when(p.options & !OPTIONS != 0, p.options, OPTIONS)
+        }),
+        RuleDef::new("tDiscTime12", Rule::Needs("wInputActive"), Unit::Ms, |p| {
+            let g = u16::from(GROUP1);
+            when(p.disc[0] != 0 && p.active & g != g, p.disc[0], g)
+        }),
+        RuleDef::new("tDiscTime34", Rule::Needs("wInputActive"), Unit::Ms, |p| {
+            let g = u16::from(GROUP2);
+            when(p.disc[1] != 0 && p.active & g != g, p.disc[1], g)
+        }),
+        RuleDef::new("wInputActive", Rule::AnyBitOf, Unit::Hex, |p| {
+            // One input of each group (a bit of 0x0003 and one of 0x000C).
+            let g1 = u16::from(GROUP1);
+            let g2 = u16::from(GROUP2);
+            let missing = if p.active & g1 == 0 { g1 } else { g2 };
+            when(p.active & g1 == 0 || p.active & g2 == 0, p.active, missing)
+        }),
+    ];
 
     fn store_params(&mut self, p: &TwohandParams) {
         let q = &mut self.stPrivate;

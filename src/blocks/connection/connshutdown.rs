@@ -14,6 +14,7 @@ use crate::base::block::BlockInfo;
 use crate::base::envelope::Block;
 use crate::base::header::{param_crc, SL_PRIVATE_HEADER};
 use crate::base::member::{Member, Wiring};
+use crate::base::reason::{when, Rule, RuleDef, Unit};
 use crate::base::types::*;
 use crate::base::{bools, pair};
 use core::mem::offset_of;
@@ -180,13 +181,23 @@ impl Block for FB_CONNECTION_SHUTDOWN {
 
     /// Semantics CS4: no active input is valid (the opposite side of a connection); a
     /// discrepancy time needs both inputs active; Connection ID 0 is refused.
-    fn params_valid(p: &ConnShutdownParams) -> bool {
-        p.disc <= SL_TIME_PARAM_MAX
-            && (p.disc == 0 || p.active & 0b11 == 0b11)
-            && p.id != 0
-            && p.active & !0b11 == 0
-            && p.negated & !0b11 == 0
-    }
+    const RULES: &'static [RuleDef<ConnShutdownParams>] = &[
+        RuleDef::new("wInputActive", Rule::NoBitsOutside, Unit::Hex, |p| {
+            when(p.active & !0b11 != 0, p.active, 0b11)
+        }),
+        RuleDef::new("wInputNegated", Rule::NoBitsOutside, Unit::Hex, |p| {
+            when(p.negated & !0b11 != 0, p.negated, 0b11)
+        }),
+        RuleDef::new("tDiscTime12", Rule::AtMost, Unit::Ms, |p| {
+            when(p.disc > SL_TIME_PARAM_MAX, p.disc, SL_TIME_PARAM_MAX)
+        }),
+        RuleDef::new("tDiscTime12", Rule::Needs("wInputActive"), Unit::Ms, |p| {
+            when(p.disc != 0 && p.active & 0b11 != 0b11, p.disc, 0b11)
+        }),
+        RuleDef::new("nConnectionId", Rule::NotZero, Unit::Plain, |p| {
+            when(p.id == 0, 0, 0)
+        }),
+    ];
 
     fn store_params(&mut self, p: &ConnShutdownParams) {
         let q = &mut self.stPrivate;

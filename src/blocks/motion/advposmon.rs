@@ -18,6 +18,7 @@ use crate::base::block::Private;
 use crate::base::bools::{self, edge};
 use crate::base::envelope::Block;
 use crate::base::header::{param_crc, F_RESTART_PREV};
+use crate::base::reason::{when, Rule, RuleDef, Unit};
 use crate::base::restart::{self, Restart};
 use crate::base::types::*;
 use crate::blocks::analog::magic;
@@ -218,12 +219,27 @@ impl Block for FB_ADVPOSMON {
         }
     }
     /// Enable active, only bits 0 and 1, feedback instances 0-3 (ABI-2 §11.16, §12.9).
-    fn params_valid(p: &AdvPosMonParams) -> bool {
-        let known = SL_ADVPOSMON_ACTIVE_ENABLE | SL_ADVPOSMON_ACTIVE_RESTART;
-        p.active & !known == 0
-            && p.active & SL_ADVPOSMON_ACTIVE_ENABLE != 0
-            && p.feedback.iter().all(|f| *f <= SL_ADVPOSMON_FEEDBACK_MAX)
-    }
+    const RULES: &'static [RuleDef<AdvPosMonParams>] = &[
+        RuleDef::new("wInputActive", Rule::NoBitsOutside, Unit::Hex, |p| {
+            let known = SL_ADVPOSMON_ACTIVE_ENABLE | SL_ADVPOSMON_ACTIVE_RESTART;
+            when(p.active & !known != 0, p.active, known)
+        }),
+        RuleDef::new("wInputActive", Rule::BitsSet, Unit::Hex, |p| {
+            let need = SL_ADVPOSMON_ACTIVE_ENABLE;
+            when(p.active & need == 0, p.active, need)
+        }),
+        RuleDef::new("nChAPrimaryFeedback", Rule::AtMost, Unit::Plain, |p| {
+            const NAMES: [&str; 4] = [
+                "nChAPrimaryFeedback",
+                "nChASecondaryFeedback",
+                "nChBPrimaryFeedback",
+                "nChBSecondaryFeedback",
+            ];
+            let max = SL_ADVPOSMON_FEEDBACK_MAX;
+            let k = p.feedback.iter().position(|&f| f > max)?;
+            when(true, p.feedback[k], max).map(|h| h.in_field(NAMES[k]))
+        }),
+    ];
     fn store_params(&mut self, p: &AdvPosMonParams) {
         let q = self.private_mut();
         q.wActive = p.active;

@@ -24,6 +24,7 @@ use crate::base::block::{Private, Registered};
 use crate::base::bools::{self, edge, Edge};
 use crate::base::envelope::Block;
 use crate::base::header::{param_crc, F_CFG_INVALID, F_RESTART_PREV};
+use crate::base::reason::{when, Hit, Rule, RuleDef, Unit};
 use crate::base::time::reached;
 use crate::base::types::*;
 use crate::blocks::analog::{magic, Unsigned};
@@ -1175,33 +1176,175 @@ impl<T: Unsigned, const P1: usize, const P2: usize> Block for FB_CAMMONITOR<T, P
     /// ABI-2 §11.13: Reset and Position active, bits 0–6 and 8–15 only, the mode's unused
     /// inputs inactive and their fixed values 0, the times ≤ 65,535 ms, StopDetectionTime
     /// ≥ 1, with Press_Started active its times and MinPositionChange ≥ 1, and no failing
-    /// parameter-only ordering check (semantics CM11, CM12).
-    fn params_valid(p: &CamParams) -> bool {
-        let a = p.active;
-        let required = SL_CAMMONITOR_ACTIVE_RESET | SL_CAMMONITOR_ACTIVE_POSITION;
-        let pendulum = p.options & SL_OPT_CAMMONITOR_PENDULUM != 0;
-        let v = &p.values;
-        let mode_ok = if pendulum {
+    /// parameter-only ordering check, each with the manual's Text ID (semantics CM11, CM12).
+    const RULES: &'static [RuleDef<CamParams>] = &[
+        RuleDef::new("wInputActive", Rule::BitsClear, Unit::Hex, |p| {
+            when(p.active & 0x0080 != 0, p.active, 0x0080)
+        }),
+        RuleDef::new("wInputActive", Rule::BitsSet, Unit::Hex, |p| {
+            let need = SL_CAMMONITOR_ACTIVE_RESET | SL_CAMMONITOR_ACTIVE_POSITION;
+            when(p.active & need != need, p.active, need)
+        }),
+        RuleDef::new("dwOptions", Rule::NoBitsOutside, Unit::Hex, |p| {
+            let known = SL_OPT_CAMMONITOR_PENDULUM;
+            when(p.options & !known != 0, p.options, known)
+        }),
+        RuleDef::new("wInputActive", Rule::BitsClear, Unit::Hex, |p| {
             let unused = SL_CAMMONITOR_ACTIVE_BACKWARDSMOVE
                 | SL_CAMMONITOR_ACTIVE_OVERRUNCAM
                 | SL_CAMMONITOR_ACTIVE_UPWARDCAM
                 | SL_CAMMONITOR_ACTIVE_OVERRUNMAX;
-            a & unused == 0 && v[FIX + OVERRUN] == 0
-        } else {
+            when(pendulum(p) && p.active & unused != 0, p.active, unused)
+        }),
+        RuleDef::new(
+            "nOverrunMaxFix",
+            Rule::ZeroUnless("the mode is excentric"),
+            Unit::Plain,
+            |p| {
+                let v = p.values[FIX + OVERRUN];
+                when(pendulum(p) && v != 0, v, 0)
+            },
+        ),
+        RuleDef::new("wInputActive", Rule::BitsClear, Unit::Hex, |p| {
             let unused = SL_CAMMONITOR_ACTIVE_TDC2LOWERLIMIT | SL_CAMMONITOR_ACTIVE_TDC2UPPERLIMIT;
-            a & unused == 0 && v[FIX + TDC2_LL] == 0 && v[FIX + TDC2_UL] == 0
-        };
-        let started = a & SL_CAMMONITOR_ACTIVE_PRESSSTARTED != 0;
-        a & 0x0080 == 0
-            && a & required == required
-            && p.options & !SL_OPT_CAMMONITOR_PENDULUM == 0
-            && mode_ok
-            && p.times.iter().all(|&t| t <= SL_CAMMONITOR_TIME_MAX)
-            && p.times[T_STOP] != 0
-            && (!started
-                || (p.times[T_START_DELAY] != 0 && p.times[T_MOVE] != 0 && v[MIN_CHANGE] != 0))
-            && config_error(p).is_none()
-    }
+            when(!pendulum(p) && p.active & unused != 0, p.active, unused)
+        }),
+        RuleDef::new(
+            "nTDC2LowerLimitFix",
+            Rule::ZeroUnless("the mode is pendulum"),
+            Unit::Plain,
+            |p| {
+                let v = p.values[FIX + TDC2_LL];
+                when(!pendulum(p) && v != 0, v, 0)
+            },
+        ),
+        RuleDef::new(
+            "nTDC2UpperLimitFix",
+            Rule::ZeroUnless("the mode is pendulum"),
+            Unit::Plain,
+            |p| {
+                let v = p.values[FIX + TDC2_UL];
+                when(!pendulum(p) && v != 0, v, 0)
+            },
+        ),
+        RuleDef::new("tStopDetectionTime", Rule::AtMost, Unit::Ms, |p| {
+            let t = p.times[T_STOP];
+            when(t > SL_CAMMONITOR_TIME_MAX, t, SL_CAMMONITOR_TIME_MAX)
+        }),
+        RuleDef::new("tPressStartDelayTime", Rule::AtMost, Unit::Ms, |p| {
+            let t = p.times[T_START_DELAY];
+            when(t > SL_CAMMONITOR_TIME_MAX, t, SL_CAMMONITOR_TIME_MAX)
+        }),
+        RuleDef::new("tMoveDetectionTime", Rule::AtMost, Unit::Ms, |p| {
+            let t = p.times[T_MOVE];
+            when(t > SL_CAMMONITOR_TIME_MAX, t, SL_CAMMONITOR_TIME_MAX)
+        }),
+        RuleDef::new("tStopDetectionTime", Rule::NotZero, Unit::Ms, |p| {
+            when(p.times[T_STOP] == 0, 0, 0)
+        }),
+        RuleDef::new(
+            "tPressStartDelayTime",
+            Rule::NotZeroWhen(STARTED),
+            Unit::Ms,
+            |p| when(started(p) && p.times[T_START_DELAY] == 0, 0, 0),
+        ),
+        RuleDef::new(
+            "tMoveDetectionTime",
+            Rule::NotZeroWhen(STARTED),
+            Unit::Ms,
+            |p| when(started(p) && p.times[T_MOVE] == 0, 0, 0),
+        ),
+        RuleDef::new(
+            "nMinPositionChange",
+            Rule::NotZeroWhen(STARTED),
+            Unit::Plain,
+            |p| when(started(p) && p.values[MIN_CHANGE] == 0, 0, 0),
+        ),
+        RuleDef::new(
+            "nTDC2UpperLimitFix",
+            Rule::Message("TDC2UpperLimit must be > AllowedPositionJitter"),
+            Unit::Plain,
+            |p| ordering_hit(p, SL_TEXT_CAMMONITOR_TDC2UL_JITTER),
+        )
+        .text_id(SL_TEXT_CAMMONITOR_TDC2UL_JITTER),
+        RuleDef::new(
+            "nTDC2UpperLimitFix",
+            Rule::Message("TDC2UpperLimit + 2 x AllowedPositionJitter must be < TDC2LowerLimit"),
+            Unit::Plain,
+            |p| ordering_hit(p, SL_TEXT_CAMMONITOR_TDC2UL_TDC2LL),
+        )
+        .text_id(SL_TEXT_CAMMONITOR_TDC2UL_TDC2LL),
+        RuleDef::new(
+            "nTDC2LowerLimitFix",
+            Rule::Message("TDC2LowerLimit + 2 x AllowedPositionJitter must be < BDCLowerLimit"),
+            Unit::Plain,
+            |p| ordering_hit(p, SL_TEXT_CAMMONITOR_TDC2LL_BDCLL),
+        )
+        .text_id(SL_TEXT_CAMMONITOR_TDC2LL_BDCLL),
+        RuleDef::new(
+            "nBDCLowerLimitFix",
+            Rule::Message("BDCLowerLimit + AllowedPositionJitter must be < MaxPosition / 2"),
+            Unit::Plain,
+            |p| ordering_hit(p, SL_TEXT_CAMMONITOR_BDCLL_HALF),
+        )
+        .text_id(SL_TEXT_CAMMONITOR_BDCLL_HALF),
+        RuleDef::new(
+            "nBDCUpperLimitFix",
+            Rule::Message("BDCUpperLimit must be > MaxPosition / 2 + AllowedPositionJitter"),
+            Unit::Plain,
+            |p| ordering_hit(p, SL_TEXT_CAMMONITOR_BDCUL_HALF),
+        )
+        .text_id(SL_TEXT_CAMMONITOR_BDCUL_HALF),
+        RuleDef::new(
+            "nBDCUpperLimitFix",
+            Rule::Message("BDCUpperLimit + 2 x AllowedPositionJitter must be < TDC1LowerLimit"),
+            Unit::Plain,
+            |p| ordering_hit(p, SL_TEXT_CAMMONITOR_BDCUL_TDC1LL),
+        )
+        .text_id(SL_TEXT_CAMMONITOR_BDCUL_TDC1LL),
+        RuleDef::new(
+            "nTDC1LowerLimitFix",
+            Rule::Message("TDC1LowerLimit + 2 x AllowedPositionJitter must be < TDC1UpperLimit"),
+            Unit::Plain,
+            |p| ordering_hit(p, SL_TEXT_CAMMONITOR_TDC1LL_TDC1UL),
+        )
+        .text_id(SL_TEXT_CAMMONITOR_TDC1LL_TDC1UL),
+        RuleDef::new(
+            "nTDC1UpperLimitFix",
+            Rule::Message("TDC1UpperLimit + AllowedPositionJitter must be < MaxPosition"),
+            Unit::Plain,
+            |p| ordering_hit(p, SL_TEXT_CAMMONITOR_TDC1UL_MAX),
+        )
+        .text_id(SL_TEXT_CAMMONITOR_TDC1UL_MAX),
+        RuleDef::new(
+            "nTDC1UpperLimitFix",
+            Rule::Message("TDC1UpperLimit must be > AllowedPositionJitter"),
+            Unit::Plain,
+            |p| ordering_hit(p, SL_TEXT_CAMMONITOR_TDC1UL_JITTER),
+        )
+        .text_id(SL_TEXT_CAMMONITOR_TDC1UL_JITTER),
+        RuleDef::new(
+            "nTDC1UpperLimitFix",
+            Rule::Message("TDC1UpperLimit + 2 x AllowedPositionJitter must be < OverrunMax"),
+            Unit::Plain,
+            |p| ordering_hit(p, SL_TEXT_CAMMONITOR_TDC1UL_OVERRUNMAX),
+        )
+        .text_id(SL_TEXT_CAMMONITOR_TDC1UL_OVERRUNMAX),
+        RuleDef::new(
+            "nOverrunMaxFix",
+            Rule::Message("OverrunMax + 2 x AllowedPositionJitter must be < BDCLowerLimit"),
+            Unit::Plain,
+            |p| ordering_hit(p, SL_TEXT_CAMMONITOR_OVERRUNMAX_BDCLL),
+        )
+        .text_id(SL_TEXT_CAMMONITOR_OVERRUNMAX_BDCLL),
+        RuleDef::new(
+            "nTDC1LowerLimitFix",
+            Rule::Message("TDC1LowerLimit + AllowedPositionJitter must be <= MaxPosition"),
+            Unit::Plain,
+            |p| ordering_hit(p, SL_TEXT_CAMMONITOR_TDC1LL_MAX),
+        )
+        .text_id(SL_TEXT_CAMMONITOR_TDC1LL_MAX),
+    ];
     fn store_params(&mut self, p: &CamParams) {
         let q = self.private_mut();
         q.wActive = p.active;
@@ -1364,7 +1507,11 @@ impl<T: Unsigned, const P1: usize, const P2: usize> Block for FB_CAMMONITOR<T, P
             (p.wText, p.adwPar[0], p.adwPar[1])
         } else if refused {
             match config_error(&self.latched_params()) {
-                Some((text, [a, b])) => (text, a, b),
+                Some((text, [a, b])) => {
+                    // The diag value of the same message, as in ERROR (semantics C15).
+                    self.nDiag = h.wDiag | (text - SL_CAMMONITOR_DIAG_TEXT_BASE);
+                    (text, a, b)
+                }
                 None => (0, 0, 0),
             }
         } else {
@@ -1391,5 +1538,24 @@ impl<T: Unsigned, const P1: usize, const P2: usize> FB_CAMMONITOR<T, P1, P2> {
             let crc = self.latched_crc();
             self.private_mut().stHeader.wParamCrc = crc;
         }
+    }
+}
+
+/// The condition of the Press_Started rules.
+const STARTED: &str = "wInputActive has Press_Started";
+
+fn pendulum(p: &CamParams) -> bool {
+    p.options & SL_OPT_CAMMONITOR_PENDULUM != 0
+}
+
+fn started(p: &CamParams) -> bool {
+    p.active & SL_CAMMONITOR_ACTIVE_PRESSSTARTED != 0
+}
+
+/// The parameter-only ordering error `text`, when it is the one the configuration has.
+fn ordering_hit(p: &CamParams, text: u16) -> Option<Hit> {
+    match config_error(p) {
+        Some((t, [a, b])) if t == text => when(true, a, b),
+        _ => None,
     }
 }

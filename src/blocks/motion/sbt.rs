@@ -20,6 +20,7 @@ use crate::base::block::Private;
 use crate::base::bools::{self, edge};
 use crate::base::envelope::Block;
 use crate::base::header::{param_crc, F_RESTART_PREV};
+use crate::base::reason::{when, Rule, RuleDef, Unit};
 use crate::base::time::elapsed;
 use crate::base::types::*;
 use crate::blocks::analog::magic;
@@ -209,6 +210,12 @@ pub struct SbtParams {
     values: [u32; 5],
 }
 
+/// The four signals every configuration has active (SBT, SBCIn, single-turn position,
+/// ActCurrentIq).
+const SBT_REQUIRED: u16 = SL_SBT_ACTIVE_SBT
+    | SL_SBT_ACTIVE_SBCIN
+    | SL_SBT_ACTIVE_SINGLETURNPOS
+    | SL_SBT_ACTIVE_ACTCURRENTIQ;
 const INTERVAL: usize = 0;
 const MIN_DURATION: usize = 1;
 const MAX_DURATION: usize = 2;
@@ -313,23 +320,53 @@ impl Block for FB_SBT {
     }
     /// ABI-2 §11.15: the four signals active, bit 10 free, nothing else; the interval a
     /// non-zero number of seconds, the durations in tenths, MinDuration ≤ MaxDuration,
-    /// all at most SL_SBT_TIME_MAX (semantics BT7).
-    fn params_valid(p: &SbtParams) -> bool {
-        let required = SL_SBT_ACTIVE_SBT
-            | SL_SBT_ACTIVE_SBCIN
-            | SL_SBT_ACTIVE_SINGLETURNPOS
-            | SL_SBT_ACTIVE_ACTCURRENTIQ;
-        let v = &p.values;
-        p.active & !(required | SL_SBT_ACTIVE_MINCURRENTIQ) == 0
-            && p.active & required == required
-            && v[INTERVAL] != 0
-            && v[INTERVAL] % 1000 == 0
-            && v[MIN_DURATION] % 100 == 0
-            && v[MAX_DURATION] % 100 == 0
-            && v[MIN_DURATION] <= v[MAX_DURATION]
-            && v[INTERVAL] <= SL_SBT_TIME_MAX
-            && v[MAX_DURATION] <= SL_SBT_TIME_MAX
-    }
+    /// all at most SL_SBT_TIME_MAX (semantics BT7). The limits come before the multiples:
+    /// SL_SBT_TIME_MAX is itself the largest whole second of the type.
+    const RULES: &'static [RuleDef<SbtParams>] = &[
+        RuleDef::new("wInputActive", Rule::NoBitsOutside, Unit::Hex, |p| {
+            let known = SBT_REQUIRED | SL_SBT_ACTIVE_MINCURRENTIQ;
+            when(p.active & !known != 0, p.active, known)
+        }),
+        RuleDef::new("wInputActive", Rule::BitsSet, Unit::Hex, |p| {
+            when(
+                p.active & SBT_REQUIRED != SBT_REQUIRED,
+                p.active,
+                SBT_REQUIRED,
+            )
+        }),
+        RuleDef::new("tBrakeTestInterval", Rule::NotZero, Unit::Ms, |p| {
+            when(p.values[INTERVAL] == 0, 0, 0)
+        }),
+        RuleDef::new("tBrakeTestInterval", Rule::AtMost, Unit::Ms, |p| {
+            let t = p.values[INTERVAL];
+            when(t > SL_SBT_TIME_MAX, t, SL_SBT_TIME_MAX)
+        }),
+        RuleDef::new("tMaxDuration", Rule::AtMost, Unit::Ms, |p| {
+            let t = p.values[MAX_DURATION];
+            when(t > SL_SBT_TIME_MAX, t, SL_SBT_TIME_MAX)
+        }),
+        RuleDef::new("tBrakeTestInterval", Rule::MultipleOf, Unit::Ms, |p| {
+            let t = p.values[INTERVAL];
+            when(t % 1000 != 0, t, 1000)
+        }),
+        RuleDef::new("tMinDuration", Rule::MultipleOf, Unit::Ms, |p| {
+            let t = p.values[MIN_DURATION];
+            when(t % 100 != 0, t, 100)
+        }),
+        RuleDef::new("tMaxDuration", Rule::MultipleOf, Unit::Ms, |p| {
+            let t = p.values[MAX_DURATION];
+            when(t % 100 != 0, t, 100)
+        }),
+        RuleDef::new(
+            "tMinDuration",
+            Rule::NotAbove("tMaxDuration"),
+            Unit::Ms,
+            |p| {
+                let (min, max) = (p.values[MIN_DURATION], p.values[MAX_DURATION]);
+                when(min > max, min, max)
+            },
+        ),
+    ];
     fn store_params(&mut self, p: &SbtParams) {
         let q = self.private_mut();
         q.wActive = p.active;

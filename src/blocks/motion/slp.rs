@@ -18,6 +18,7 @@ use crate::base::block::Private;
 use crate::base::bools;
 use crate::base::envelope::Block;
 use crate::base::header::{param_crc, F_CFG_INVALID};
+use crate::base::reason::{when, Rule, RuleDef, Unit};
 use crate::base::types::*;
 use crate::blocks::analog::{diag_message, magic};
 
@@ -298,25 +299,60 @@ impl Block for FB_SLP {
     }
     /// SafePosValid and SingleturnPos active, MultiturnPos active in multi-turn, the two
     /// bits of each limit equal, no other bit or option (ABI-2 §10.5, §11.14); the
-    /// parameter-only limit error (semantics PL3).
-    fn params_valid(p: &SlpParams) -> bool {
-        let a = p.active;
-        let known = SL_SLP_ACTIVE_SAFEPOSVALID | 0x3F00;
-        let required = SL_SLP_ACTIVE_SAFEPOSVALID
-            | SL_SLP_ACTIVE_SINGLETURNPOS
-            | if single_turn(p.options) {
-                0
-            } else {
-                SL_SLP_ACTIVE_MULTITURNPOS
-            };
-        let pair = |st: u16, mt: u16| (a & st == 0) == (a & mt == 0);
-        a & !known == 0
-            && a & required == required
-            && pair(SL_SLP_ACTIVE_SINGLETURNPOSUL, SL_SLP_ACTIVE_MULTITURNPOSUL)
-            && pair(SL_SLP_ACTIVE_SINGLETURNPOSLL, SL_SLP_ACTIVE_MULTITURNPOSLL)
-            && p.options & !SL_OPT_SLP_SINGLETURN == 0
-            && config_error(p).is_none()
-    }
+    /// parameter-only limit error with the manual's Text ID (semantics PL3).
+    const RULES: &'static [RuleDef<SlpParams>] = &[
+        RuleDef::new("wInputActive", Rule::NoBitsOutside, Unit::Hex, |p| {
+            let known = SL_SLP_ACTIVE_SAFEPOSVALID | 0x3F00;
+            when(p.active & !known != 0, p.active, known)
+        }),
+        RuleDef::new("wInputActive", Rule::BitsSet, Unit::Hex, |p| {
+            let required = SL_SLP_ACTIVE_SAFEPOSVALID
+                | SL_SLP_ACTIVE_SINGLETURNPOS
+                | if single_turn(p.options) {
+                    0
+                } else {
+                    SL_SLP_ACTIVE_MULTITURNPOS
+                };
+            when(p.active & required != required, p.active, required)
+        }),
+        RuleDef::new("wInputActive", Rule::BothOrNeither, Unit::Hex, |p| {
+            let m = SL_SLP_ACTIVE_SINGLETURNPOSUL | SL_SLP_ACTIVE_MULTITURNPOSUL;
+            when(p.active & m != 0 && p.active & m != m, p.active, m)
+        }),
+        RuleDef::new("wInputActive", Rule::BothOrNeither, Unit::Hex, |p| {
+            let m = SL_SLP_ACTIVE_SINGLETURNPOSLL | SL_SLP_ACTIVE_MULTITURNPOSLL;
+            when(p.active & m != 0 && p.active & m != m, p.active, m)
+        }),
+        RuleDef::new("dwOptions", Rule::NoBitsOutside, Unit::Hex, |p| {
+            when(
+                p.options & !SL_OPT_SLP_SINGLETURN != 0,
+                p.options,
+                SL_OPT_SLP_SINGLETURN,
+            )
+        }),
+        RuleDef::new(
+            "nMultiturnPosLLFix",
+            Rule::NotAbove("nMultiturnPosULFix"),
+            Unit::Plain,
+            |p| match config_error(p) {
+                Some((SL_DIAG_SLP_MULTITURN_LL_ABOVE_UL, [lo, hi])) => {
+                    when(true, lo as i32, hi as i32)
+                }
+                _ => None,
+            },
+        )
+        .text_id(SL_TEXT_SLP_MULTITURN_LL_ABOVE_UL),
+        RuleDef::new(
+            "nSingleturnPosLLFix",
+            Rule::NotAbove("nSingleturnPosULFix"),
+            Unit::Plain,
+            |p| match config_error(p) {
+                Some((SL_DIAG_SLP_SINGLETURN_LL_ABOVE_UL, [lo, hi])) => when(true, lo, hi),
+                _ => None,
+            },
+        )
+        .text_id(SL_TEXT_SLP_SINGLETURN_LL_ABOVE_UL),
+    ];
     fn store_params(&mut self, p: &SlpParams) {
         let q = self.private_mut();
         q.wActive = p.active;
@@ -459,6 +495,8 @@ impl Block for FB_SLP {
         (self.nDiagTextId, self.dwDiagPar2, self.dwDiagPar3) = match config {
             Some((bit, [lo, hi])) => {
                 let text = MESSAGES.iter().find(|(b, _)| *b == bit).map_or(0, |m| m.1);
+                // The diag bit of the same message, as in ERROR (semantics C15).
+                self.nDiag = h.wDiag | bit;
                 (text, lo, hi)
             }
             None => diag_message(&h, &MESSAGES, p.adwPar),

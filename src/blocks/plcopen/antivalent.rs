@@ -13,3 +13,15 @@ crate::pair_struct! {
 }
 
 crate::pair_block!(SF_Antivalent, SL_TYPE_SF_ANTIVALENT, S_ChannelNC, S_ChannelNO, b_negated: true, S_AntivalentOut);
+
+impl SF_Antivalent {
+    /// An instance with PLCopen's initial values (`sl_sf_antivalent_defaults`): S_ChannelNO
+    /// TRUE (its SAFEBOOL initial value), everything else zero. The all-zero struct keeps
+    /// S_ChannelNO FALSE, as every other input of the library starts (semantics PO12).
+    pub const fn plcopen_defaults() -> Self {
+        Self {
+            S_ChannelNO: 1,
+            ..Self::zeroed()
+        }
+    }
+}

@@ -196,6 +196,8 @@ impl crate::base::sf::SfBlock for SF_EDM {
     type Diag = SfEdmState;
     type In = SfEdmIn;
     const TIMES: usize = 1;
+    const CONST_RULES: &'static [crate::base::reason::RuleDef<sf::SfConsts>] =
+        &[sf::time0_rule("MonitoringTime")];
 
     #[inline(always)]
     fn reset_raw(&self) -> u8 {

@@ -106,6 +106,8 @@ impl SfBlock for SF_Guard {
     type Diag = SfGuardState;
     type In = SfGuardIn;
     const TIMES: usize = 1;
+    const CONST_RULES: &'static [crate::base::reason::RuleDef<SfConsts>] =
+        &[crate::base::sf::time0_rule("DiscrepancyTime")];
 
     #[inline(always)]
     fn reset_raw(&self) -> u8 {

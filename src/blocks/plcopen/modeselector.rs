@@ -212,6 +212,10 @@ impl crate::base::sf::SfBlock for SF_ModeSelector {
     type Diag = ModeState;
     type In = ModeIn;
     const TIMES: usize = 2;
+    const CONST_RULES: &'static [crate::base::reason::RuleDef<SfConsts>] = &[
+        crate::base::sf::time0_rule("ModeMonitorTime"),
+        crate::base::sf::bool1_rule("AutoSetMode"),
+    ];
 
     #[inline(always)]
     fn reset_raw(&self) -> u8 {
@@ -224,11 +228,7 @@ impl crate::base::sf::SfBlock for SF_ModeSelector {
             profile: self.nDiagProfile,
             times: [
                 self.ModeMonitorTime,
-                if self.AutoSetMode <= 1 {
-                    u32::from(self.AutoSetMode)
-                } else {
-                    u32::MAX
-                },
+                crate::base::sf::bool_const(self.AutoSetMode),
             ],
         }
     }

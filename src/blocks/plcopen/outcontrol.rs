@@ -110,19 +110,17 @@ impl SfBlock for SF_OutControl {
     /// StaticControl is latched as the envelope's first constant: 0 or 1, an invalid byte
     /// as a value above `SL_SF_TIME_MAX`, refused at activation (C3FC; semantics QO4).
     const TIMES: usize = 1;
+    const CONST_RULES: &'static [crate::base::reason::RuleDef<SfConsts>] =
+        &[crate::base::sf::bool0_rule("StaticControl")];
 
     #[inline(always)]
     fn reset_raw(&self) -> u8 {
         self.Reset
     }
     fn live_consts(&self) -> SfConsts {
-        let static_control = match self.StaticControl {
-            0 | 1 => u32::from(self.StaticControl),
-            _ => u32::MAX,
-        };
         SfConsts {
             profile: self.nDiagProfile,
-            times: [static_control, 0],
+            times: [crate::base::sf::bool_const(self.StaticControl), 0],
         }
     }
     #[inline(always)]

@@ -113,6 +113,9 @@ macro_rules! pair_block {
             type Diag = $crate::blocks::plcopen::pair::PairState;
             type In = $crate::blocks::plcopen::pair::PairIn;
             const TIMES: usize = 1;
+            const CONST_RULES: &'static [$crate::base::reason::RuleDef<
+                $crate::base::sf::SfConsts,
+            >] = &[$crate::base::sf::time0_rule("DiscrepancyTime")];
 
             #[inline(always)]
             fn reset_raw(&self) -> u8 {

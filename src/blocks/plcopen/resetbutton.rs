@@ -5,6 +5,7 @@
 //! is refused (SL_E_CONFIG). `ResetRequested` activates the block (it has no `Activate`);
 //! the envelope's R_TRIG of `Reset` runs on `ResetIn` (docs/semantics.md QB1–QB6).
 
+use crate::base::reason::{when, Rule, RuleDef, Unit};
 use crate::base::sf::{ResetIn, SL_SF_PRIVATE};
 use crate::base::time;
 use crate::base::types::SL_BOOL;
@@ -14,6 +15,10 @@ pub const SL_TYPE_SF_RESETBUTTON: u16 = 520;
 
 /// The least TrailingMinimum (ms): "absolute minimum 100 ms" (research §4.19, NPE).
 pub const SF_RESETBUTTON_MIN_TRAILING: u32 = 100;
+/// PLCopen's initial value of TrailingMinimum (ms): T#350ms.
+pub const SF_RESETBUTTON_DEFAULT_TRAILING_MIN: u32 = 350;
+/// PLCopen's initial value of TrailingMaximum (ms): T#2s.
+pub const SF_RESETBUTTON_DEFAULT_TRAILING_MAX: u32 = 2_000;
 
 crate::sf_states!(
     /// The states of SF_ResetButton: values = v2.01 DiagCodes (CS-LIB FBS_RESBUT). The block
@@ -30,11 +35,6 @@ crate::sf_states!(
         ErrTrailMin = 0xC3F0, 0xC3F0, "ERR_TRAIL_MIN", "falling edge of ResetIn before TrailingMinimum elapsed; waiting for a rising edge";
     }
 );
-
-/// The trailing times `[TrailingMinimum, TrailingMaximum]` are usable (C000 otherwise).
-const fn params_valid(t: [u32; 2]) -> bool {
-    t[0] >= SF_RESETBUTTON_MIN_TRAILING && t[0] <= t[1]
-}
 
 /// The transition table of research §4.19 (v2.01 codes), first matching guard wins.
 /// `r` is the R_TRIG of ResetIn; the press runs from the entry into 83F2 (`in_state`, ms);
@@ -101,6 +101,23 @@ impl crate::base::sf::SfBlock for SF_ResetButton {
     type In = ();
     const HAS_V10: bool = false;
     const TIMES: usize = 2;
+    const CONST_RULES: &'static [RuleDef<crate::base::sf::SfConsts>] = &[
+        crate::base::sf::time0_rule("TrailingMinimum"),
+        crate::base::sf::time1_rule("TrailingMaximum"),
+    ];
+    /// The trailing times are usable (C000 otherwise).
+    const PARAM_RULES: &'static [RuleDef<crate::base::sf::SfConsts>] = &[
+        RuleDef::new("TrailingMinimum", Rule::AtLeast, Unit::Ms, |c| {
+            let min = SF_RESETBUTTON_MIN_TRAILING;
+            when(c.times[0] < min, c.times[0], min)
+        }),
+        RuleDef::new(
+            "TrailingMinimum",
+            Rule::NotAbove("TrailingMaximum"),
+            Unit::Ms,
+            |c| when(c.times[0] > c.times[1], c.times[0], c.times[1]),
+        ),
+    ];
 
     /// ResetIn runs through the envelope's R_TRIG, evaluated in every call.
     #[inline(always)]
@@ -128,11 +145,11 @@ impl crate::base::sf::SfBlock for SF_ResetButton {
         next(s, reset, in_state, times)
     }
     fn first(times: [u32; 2]) -> Self::Diag {
-        if params_valid(times) {
-            ResetButtonState::WaitRTrig
-        } else {
-            ResetButtonState::ErrParam
-        }
+        crate::base::sf::first_checked::<Self>(
+            times,
+            ResetButtonState::WaitRTrig,
+            ResetButtonState::ErrParam,
+        )
     }
     #[inline(always)]
     fn write_outputs(&mut self, o: &crate::base::sf::SfOut) {
@@ -140,5 +157,20 @@ impl crate::base::sf::SfBlock for SF_ResetButton {
         self.ResetOut = u8::from(o.enabled);
         self.Error = u8::from(o.error);
         self.DiagCode = o.diag_code;
+    }
+}
+
+impl SF_ResetButton {
+    /// An instance with PLCopen's initial values (`sl_sf_resetbutton_defaults`):
+    /// ResetRequested TRUE, TrailingMinimum T#350ms, TrailingMaximum T#2s, everything else
+    /// zero. The all-zero struct stays "not configured" (TrailingMinimum 0 is the block's
+    /// parameter error, semantics PO12): the defaults are written on purpose, visibly.
+    pub const fn plcopen_defaults() -> Self {
+        Self {
+            ResetRequested: 1,
+            TrailingMinimum: SF_RESETBUTTON_DEFAULT_TRAILING_MIN,
+            TrailingMaximum: SF_RESETBUTTON_DEFAULT_TRAILING_MAX,
+            ..Self::zeroed()
+        }
     }
 }

@@ -100,6 +100,8 @@ impl SfBlock for SF_SafetyRequest {
     type Diag = SafetyRequestState;
     type In = SafetyRequestIn;
     const TIMES: usize = 1;
+    const CONST_RULES: &'static [crate::base::reason::RuleDef<SfConsts>] =
+        &[crate::base::sf::time0_rule("MonitoringTime")];
 
     #[inline(always)]
     fn reset_raw(&self) -> u8 {

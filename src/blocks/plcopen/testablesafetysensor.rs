@@ -6,6 +6,7 @@
 //! test a manual switching sequence of the sensor is required unless NoExternalTest. The
 //! codes the research leaves open are chosen in docs/semantics.md QT1–QT9.
 
+use crate::base::reason::{when, Rule, RuleDef, Unit};
 use crate::base::sf::{self, ResetIn, SL_SF_PRIVATE};
 use crate::base::time;
 use crate::base::types::SL_BOOL;
@@ -55,11 +56,6 @@ pub struct TssIn {
     pub start_reset: bool,
     /// S_AutoReset.
     pub auto_reset: bool,
-}
-
-/// The TestTime and NoExternalTest are valid: TestTime ≤ 150 ms (C000 otherwise).
-const fn params_valid(t: [u32; 2]) -> bool {
-    t[0] <= SF_TSS_MAX_TEST_TIME
 }
 
 /// The transition table of research §4.15 with the readings of semantics QT1–QT9, first
@@ -194,6 +190,16 @@ impl crate::base::sf::SfBlock for SF_TestableSafetySensor {
     type Diag = TssState;
     type In = TssIn;
     const TIMES: usize = 2;
+    const CONST_RULES: &'static [RuleDef<sf::SfConsts>] = &[sf::time0_rule("TestTime")];
+    /// TestTime ≤ 150 ms (C000 otherwise).
+    const PARAM_RULES: &'static [RuleDef<sf::SfConsts>] =
+        &[RuleDef::new("TestTime", Rule::AtMost, Unit::Ms, |c| {
+            when(
+                c.times[0] > SF_TSS_MAX_TEST_TIME,
+                c.times[0],
+                SF_TSS_MAX_TEST_TIME,
+            )
+        })];
 
     #[inline(always)]
     fn reset_raw(&self) -> u8 {
@@ -239,11 +245,7 @@ impl crate::base::sf::SfBlock for SF_TestableSafetySensor {
         next(s, inp, reset, in_state, times)
     }
     fn first(times: [u32; 2]) -> Self::Diag {
-        if params_valid(times) {
-            TssState::Init
-        } else {
-            TssState::ErrParam
-        }
+        crate::base::sf::first_checked::<Self>(times, TssState::Init, TssState::ErrParam)
     }
     #[inline(always)]
     fn write_outputs(&mut self, o: &sf::SfOut) {
