@@ -13,3 +13,5 @@ crate::pair_struct! {
 }
 
 crate::pair_block!(SF_Antivalent, SL_TYPE_SF_ANTIVALENT, S_ChannelNC, S_ChannelNO, b_negated: true, S_AntivalentOut);
+
+crate::pair_steady!(SF_Antivalent, S_ChannelNC, S_ChannelNO);

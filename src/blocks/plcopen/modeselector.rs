@@ -327,3 +327,6 @@ impl crate::base::sf::SfBlock for SF_ModeSelector {
 
 /// The layout: 80 bytes, no implicit padding.
 const _: () = assert!(core::mem::size_of::<SF_ModeSelector>() == 80);
+
+/// No steady-state fast path yet (`base::sf::SfSteady`): every call is a full call.
+impl crate::base::sf::SfSteady for SF_ModeSelector {}

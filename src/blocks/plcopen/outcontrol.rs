@@ -236,3 +236,6 @@ impl Default for SF_OutControl {
         Self::zeroed()
     }
 }
+
+/// No steady-state fast path yet (`base::sf::SfSteady`): every call is a full call.
+impl crate::base::sf::SfSteady for SF_OutControl {}

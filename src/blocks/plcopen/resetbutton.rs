@@ -172,3 +172,6 @@ impl Default for SF_ResetButton {
         Self::zeroed()
     }
 }
+
+/// No steady-state fast path yet (`base::sf::SfSteady`): every call is a full call.
+impl crate::base::sf::SfSteady for SF_ResetButton {}

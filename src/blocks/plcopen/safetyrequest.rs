@@ -214,3 +214,21 @@ impl Default for SF_SafetyRequest {
         Self::zeroed()
     }
 }
+
+/// The steady-state fast path (`base::sf::SfSteady`): the key is the five BOOL inputs;
+/// WAIT_FOR_CONF reads the monitoring time.
+impl crate::base::sf::SfSteady for SF_SafetyRequest {
+    #[inline(always)]
+    fn steady_key(&self) -> Option<u16> {
+        crate::base::bools::key([
+            self.Activate,
+            self.S_OpMode,
+            self.S_Acknowledge,
+            self.S_StartReset,
+            self.Reset,
+        ])
+    }
+    fn timed(&self) -> bool {
+        self.diag_state() == Some(SafetyRequestState::WaitConf)
+    }
+}

@@ -301,3 +301,6 @@ impl Default for SF_TestableSafetySensor {
         Self::zeroed()
     }
 }
+
+/// No steady-state fast path yet (`base::sf::SfSteady`): every call is a full call.
+impl crate::base::sf::SfSteady for SF_TestableSafetySensor {}
