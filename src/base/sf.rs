@@ -111,6 +111,9 @@ pub trait DiagState: Copy + core::fmt::Debug + Eq + 'static {
     fn code(self) -> u16;
     /// The v1.0 DiagCode.
     fn code_v10(self) -> u16;
+    /// The v1.0 DiagCode of the state whose v2.01 code is `code`; `None` for a code the
+    /// block does not have (one match: [`Self::decode`] and [`Self::code_v10`] in one).
+    fn v10_of(code: u16) -> Option<u16>;
     /// The DiagCode in `profile`.
     #[inline]
     fn code_in(self, profile: u8) -> u16 {
@@ -159,6 +162,13 @@ macro_rules! sf_states {
             fn code_v10(self) -> u16 {
                 match self {
                     $($enum::$v => $v1,)+
+                }
+            }
+            #[inline(always)]
+            fn v10_of(code: u16) -> Option<u16> {
+                match code {
+                    $($code => Some($v1),)+
+                    _ => None,
                 }
             }
         }
@@ -388,11 +398,16 @@ fn outputs(code: u16, reset_level: bool, state_code: Option<u16>) -> SfOut {
     }
 }
 
+/// Inline: the fast path's outputs cost one match (the v1.0 code) and a few compares.
+#[inline(always)]
 fn write<B: SfBlock>(fb: &mut B, reset_level: bool) {
     let h = fb.sf_private().stHeader;
-    let code = match B::Diag::decode(h.wDiag) {
-        Some(s) => s.code_in(h.nActive),
-        None => h.wDiag,
+    // A state of the block in the v1.0 profile: its v1.0 code; otherwise the code itself
+    // (every v2.01 code, and a library code in either profile).
+    let code = if h.nActive == SL_SF_PROFILE_V10 {
+        B::Diag::v10_of(h.wDiag).unwrap_or(h.wDiag)
+    } else {
+        h.wDiag
     };
     let o = outputs(code, reset_level, Some(h.wDiag));
     fb.write_outputs(&o);
@@ -532,15 +547,32 @@ pub trait SfSteady: SfBlock {
     }
 }
 
+/// The key of BOOL bytes: byte i as bit i; `None` when one is neither 0 nor 1. Built byte
+/// by byte through references, as bits (no shift makes adjacent bytes one wider value, so
+/// every byte stays its own load): a caller writes these bytes one by one right before the
+/// call, and one load wider than those stores would wait until they reach the cache
+/// (docs/performance.md, "store forwarding").
+#[inline(always)]
+pub fn key<const N: usize>(bytes: [&u8; N]) -> Option<u16> {
+    const { assert!(N <= 16) };
+    let mut key = 0u16;
+    let mut any = 0u8;
+    for (i, b) in bytes.into_iter().enumerate() {
+        any |= *b;
+        key |= u16::from(*b) << i;
+    }
+    (any <= 1).then_some(key)
+}
+
 /// The slot of `key` in the state whose control word (state, flags, DiagCode) is `ctrl`:
-/// the key XOR the DiagCode, then a check byte, the complement of the XOR of the two bytes
-/// and of the state and flag bytes. A zeroed slot holds no key: its check byte would need
-/// state XOR flags = 0xFF, and an `SF_` block's state is below 8 and its flags use bits 0,
-/// 2 and 7 only.
+/// the key XOR the DiagCode, then a check byte, the complement of the state XOR the flags.
+/// Equal slots mean the same key in the same DiagCode, state and flags. A zeroed slot holds
+/// no key: its check byte would need state XOR flags = 0xFF, and an `SF_` block's state is
+/// below 8 and its flags use bits 0, 2 and 7 only.
 #[inline(always)]
 fn slot_of(key: u16, ctrl: u32) -> [u8; 3] {
     let [lo, hi] = (key ^ (ctrl >> 16) as u16).to_le_bytes();
-    [lo, hi, !(lo ^ hi ^ ctrl as u8 ^ (ctrl >> 8) as u8)]
+    [lo, hi, !(ctrl as u8 ^ (ctrl >> 8) as u8)]
 }
 
 /// `sl_sf_<name>_cycle`: one call at `now` (ms, wrapping): the fast path, else the full
@@ -583,7 +615,10 @@ pub fn fast<B: SfSteady>(fb: &mut B, now: u32) -> bool {
     };
     let p = fb.sf_private();
     let h = &p.stHeader;
-    let served = p.aReserved == slot_of(key, h.ctrl())
+    let [lo, hi, check] = slot_of(key, h.ctrl());
+    let served = p.aReserved[0] == lo
+        && p.aReserved[1] == hi
+        && p.aReserved[2] == check
         && p.nGroupHalt == 0
         && h.intact(B::MAGIC)
         && !time::went_backwards(now, h.tLast)

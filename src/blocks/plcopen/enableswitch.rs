@@ -220,13 +220,13 @@ const _: () = assert!(core::mem::size_of::<SF_EnableSwitch>() == 56);
 impl crate::base::sf::SfSteady for SF_EnableSwitch {
     #[inline(always)]
     fn steady_key(&self) -> Option<u16> {
-        crate::base::bools::key([
-            self.Activate,
-            self.S_SafetyActive,
-            self.S_EnableSwitchCh1,
-            self.S_EnableSwitchCh2,
-            self.S_AutoReset,
-            self.Reset,
+        crate::base::sf::key([
+            &self.Activate,
+            &self.S_SafetyActive,
+            &self.S_EnableSwitchCh1,
+            &self.S_EnableSwitchCh2,
+            &self.S_AutoReset,
+            &self.Reset,
         ])
     }
     #[inline(always)]

@@ -226,13 +226,13 @@ impl Default for SF_Guard {
 impl crate::base::sf::SfSteady for SF_Guard {
     #[inline(always)]
     fn steady_key(&self) -> Option<u16> {
-        crate::base::bools::key([
-            self.Activate,
-            self.S_GuardSwitch1,
-            self.S_GuardSwitch2,
-            self.S_StartReset,
-            self.S_AutoReset,
-            self.Reset,
+        crate::base::sf::key([
+            &self.Activate,
+            &self.S_GuardSwitch1,
+            &self.S_GuardSwitch2,
+            &self.S_StartReset,
+            &self.S_AutoReset,
+            &self.Reset,
         ])
     }
     fn timed(&self) -> bool {

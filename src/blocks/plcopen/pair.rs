@@ -198,7 +198,7 @@ macro_rules! pair_steady {
         impl $crate::base::sf::SfSteady for $ty {
             #[inline(always)]
             fn steady_key(&self) -> Option<u16> {
-                $crate::base::bools::key([self.Activate, self.$a, self.$b])
+                $crate::base::sf::key([&self.Activate, &self.$a, &self.$b])
             }
             fn timed(&self) -> bool {
                 use $crate::blocks::plcopen::pair::PairState::*;

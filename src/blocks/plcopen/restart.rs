@@ -216,12 +216,12 @@ macro_rules! restart_interlock_steady {
         impl $crate::base::sf::SfSteady for $ty {
             #[inline(always)]
             fn steady_key(&self) -> Option<u16> {
-                $crate::base::bools::key([
-                    self.Activate,
-                    self.$input,
-                    self.S_StartReset,
-                    self.S_AutoReset,
-                    self.Reset,
+                $crate::base::sf::key([
+                    &self.Activate,
+                    &self.$input,
+                    &self.S_StartReset,
+                    &self.S_AutoReset,
+                    &self.Reset,
                 ])
             }
             #[inline(always)]

@@ -220,12 +220,12 @@ impl Default for SF_SafetyRequest {
 impl crate::base::sf::SfSteady for SF_SafetyRequest {
     #[inline(always)]
     fn steady_key(&self) -> Option<u16> {
-        crate::base::bools::key([
-            self.Activate,
-            self.S_OpMode,
-            self.S_Acknowledge,
-            self.S_StartReset,
-            self.Reset,
+        crate::base::sf::key([
+            &self.Activate,
+            &self.S_OpMode,
+            &self.S_Acknowledge,
+            &self.S_StartReset,
+            &self.Reset,
         ])
     }
     fn timed(&self) -> bool {

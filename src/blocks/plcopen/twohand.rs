@@ -234,7 +234,7 @@ macro_rules! two_hand_steady {
         impl $crate::base::sf::SfSteady for $ty {
             #[inline(always)]
             fn steady_key(&self) -> Option<u16> {
-                $crate::base::bools::key([self.Activate, self.S_Button1, self.S_Button2])
+                $crate::base::sf::key([&self.Activate, &self.S_Button1, &self.S_Button2])
             }
             #[inline(always)]
             fn timed(&self) -> bool {
