@@ -942,7 +942,8 @@ macro_rules! pin_sf {
 
 safelogic::for_each_sf_block!(pin_sf);
 
-/// The `SF_` types with a fast path, and DiagCodes (v2.01) it must have served in.
+/// The `SF_` types with a fast path (all of them), and DiagCodes (v2.01) it must have
+/// served in.
 const SF_EXPECTED: &[(&str, &[u16])] = &[
     ("SF_EmergencyStop", &[0x0000, 0x8000, 0x8804]),
     ("SF_ESPE", &[0x0000, 0x8000, 0x8804]),
@@ -954,6 +955,11 @@ const SF_EXPECTED: &[(&str, &[u16])] = &[
     ("SF_EnableSwitch", &[0x0000, 0x8002]),
     ("SF_TwoHandControlTypeII", &[0x0000, 0x8000]),
     ("SF_TwoHandControlTypeIII", &[0x0000, 0x8000]),
+    ("SF_OutControl", &[0x0000, 0x8000]),
+    ("SF_ResetButton", &[0x0000, 0x83E2]),
+    ("SF_EDM", &[0x0000, 0x8401]),
+    ("SF_TestableSafetySensor", &[0x0000, 0x8000]),
+    ("SF_ModeSelector", &[0x0000, 0x8000]),
 ];
 
 #[test]

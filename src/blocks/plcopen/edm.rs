@@ -287,5 +287,24 @@ impl Default for SF_EDM {
     }
 }
 
-/// No steady-state fast path yet (`base::sf::SfSteady`): every call is a full call.
-impl crate::base::sf::SfSteady for SF_EDM {}
+/// The steady-state fast path (`base::sf::SfSteady`): the key is every BOOL byte the call
+/// reads; the states that monitor the contactors read the monitoring time.
+impl crate::base::sf::SfSteady for SF_EDM {
+    #[inline(always)]
+    fn steady_key(&self) -> Option<u16> {
+        crate::base::sf::key([
+            &self.Activate,
+            &self.S_OutControl,
+            &self.EDM1,
+            &self.EDM2,
+            &self.S_StartReset,
+            &self.Reset,
+        ])
+    }
+    fn timed(&self) -> bool {
+        matches!(
+            self.diag_state(),
+            Some(SfEdmState::OutDisable | SfEdmState::OutEnable)
+        )
+    }
+}

@@ -302,5 +302,25 @@ impl Default for SF_TestableSafetySensor {
     }
 }
 
-/// No steady-state fast path yet (`base::sf::SfSteady`): every call is a full call.
-impl crate::base::sf::SfSteady for SF_TestableSafetySensor {}
+/// The steady-state fast path (`base::sf::SfSteady`): the key is every BOOL byte the call
+/// reads; the test states read the test time.
+impl crate::base::sf::SfSteady for SF_TestableSafetySensor {
+    #[inline(always)]
+    fn steady_key(&self) -> Option<u16> {
+        crate::base::sf::key([
+            &self.Activate,
+            &self.S_OSSD_In,
+            &self.StartTest,
+            &self.NoExternalTest,
+            &self.S_StartReset,
+            &self.S_AutoReset,
+            &self.Reset,
+        ])
+    }
+    fn timed(&self) -> bool {
+        matches!(
+            self.diag_state(),
+            Some(TssState::TestRequest | TssState::TestActive)
+        )
+    }
+}
