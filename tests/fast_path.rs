@@ -353,7 +353,7 @@ const TIMED: [(&str, &[u8]); 3] = [
 ];
 
 /// The fast path's types and the states it must have served in.
-const EXPECTED: [(&str, &[u8]); 10] = [
+const EXPECTED: [(&str, &[u8]); 11] = [
     (
         "ESTOP",
         &[
@@ -376,6 +376,7 @@ const EXPECTED: [(&str, &[u8]); 10] = [
         "OR",
         &[SL_STATE_RUN, SL_STATE_SAFE, SL_STATE_STOP, SL_STATE_ERROR],
     ),
+    ("XOR", &[SL_STATE_RUN, SL_STATE_STOP, SL_STATE_ERROR]),
     ("DECOUPLE", &[SL_STATE_RUN, SL_STATE_STOP, SL_STATE_ERROR]),
     (
         "RS",
@@ -424,7 +425,9 @@ const EXPECTED: [(&str, &[u8]); 10] = [
 
 /// The types whose full cycle is idempotent (`Steady::IDEMPOTENT`: their `settle` stores
 /// the key of every SL_OK call without comparing the state before and after).
-const IDEMPOTENT: [&str; 8] = ["AND", "OR", "DECOUPLE", "RS", "SR", "TON", "TON2", "TOF"];
+const IDEMPOTENT: [&str; 9] = [
+    "AND", "OR", "XOR", "DECOUPLE", "RS", "SR", "TON", "TON2", "TOF",
+];
 
 /// Of those, the types whose start state may be left by the inputs that entered it
 /// (`Steady::START_MOVES_ON`: a call that starts the block stores no key).
@@ -444,6 +447,7 @@ fn the_idempotent_types_are_the_ones_that_claim_it() {
         ("MON", claim::<FB_MON>()),
         ("AND", claim::<FB_AND>()),
         ("OR", claim::<FB_OR>()),
+        ("XOR", claim::<FB_XOR>()),
         ("DECOUPLE", claim::<FB_DECOUPLE>()),
         ("RS", claim::<FB_RS>()),
         ("SR", claim::<FB_SR>()),
@@ -737,6 +741,15 @@ fn the_key_holds_every_byte_the_cycle_reads() {
             ..Default::default()
         },
         w,
+    );
+    // XOR: the sixteen inputs gathered into bits, bRun and bErrAck as they are.
+    pin(
+        FB_XOR {
+            wInputActive: 0b1,
+            bRun: 1,
+            ..Default::default()
+        },
+        None,
     );
     pin(
         FB_ESTOP {
