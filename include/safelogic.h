@@ -2837,7 +2837,8 @@ typedef struct SL_SF_PRIVATE {
    */
   uint8_t nGroupHalt;
   /*
-   Reserved.
+   The steady-state slot: the key of the last call that left a state its inputs keep,
+   bound to that state (`base::sf::slot_of`); all zero: no key.
    */
   uint8_t aReserved[3];
 } SL_SF_PRIVATE;

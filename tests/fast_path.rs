@@ -353,7 +353,7 @@ const TIMED: [(&str, &[u8]); 3] = [
 ];
 
 /// The fast path's types and the states it must have served in.
-const EXPECTED: [(&str, &[u8]); 10] = [
+const EXPECTED: [(&str, &[u8]); 11] = [
     (
         "ESTOP",
         &[
@@ -376,6 +376,7 @@ const EXPECTED: [(&str, &[u8]); 10] = [
         "OR",
         &[SL_STATE_RUN, SL_STATE_SAFE, SL_STATE_STOP, SL_STATE_ERROR],
     ),
+    ("XOR", &[SL_STATE_RUN, SL_STATE_STOP, SL_STATE_ERROR]),
     ("DECOUPLE", &[SL_STATE_RUN, SL_STATE_STOP, SL_STATE_ERROR]),
     (
         "RS",
@@ -424,7 +425,9 @@ const EXPECTED: [(&str, &[u8]); 10] = [
 
 /// The types whose full cycle is idempotent (`Steady::IDEMPOTENT`: their `settle` stores
 /// the key of every SL_OK call without comparing the state before and after).
-const IDEMPOTENT: [&str; 8] = ["AND", "OR", "DECOUPLE", "RS", "SR", "TON", "TON2", "TOF"];
+const IDEMPOTENT: [&str; 9] = [
+    "AND", "OR", "XOR", "DECOUPLE", "RS", "SR", "TON", "TON2", "TOF",
+];
 
 /// Of those, the types whose start state may be left by the inputs that entered it
 /// (`Steady::START_MOVES_ON`: a call that starts the block stores no key).
@@ -444,6 +447,7 @@ fn the_idempotent_types_are_the_ones_that_claim_it() {
         ("MON", claim::<FB_MON>()),
         ("AND", claim::<FB_AND>()),
         ("OR", claim::<FB_OR>()),
+        ("XOR", claim::<FB_XOR>()),
         ("DECOUPLE", claim::<FB_DECOUPLE>()),
         ("RS", claim::<FB_RS>()),
         ("SR", claim::<FB_SR>()),
@@ -738,6 +742,15 @@ fn the_key_holds_every_byte_the_cycle_reads() {
         },
         w,
     );
+    // XOR: the sixteen inputs gathered into bits, bRun and bErrAck as they are.
+    pin(
+        FB_XOR {
+            wInputActive: 0b1,
+            bRun: 1,
+            ..Default::default()
+        },
+        None,
+    );
     pin(
         FB_ESTOP {
             wInputActive: 0b1,
@@ -769,4 +782,277 @@ fn the_key_holds_every_byte_the_cycle_reads() {
     timer!(FB_TON);
     timer!(FB_TOF);
     timer!(FB_TON2);
+}
+
+/// What one `SF_` type's run saw (the PLCopen envelope's fast path, `base::sf`).
+#[derive(Default)]
+struct SfSeen {
+    name: &'static str,
+    /// The type has a fast path (a zeroed instance with Activate FALSE has a key).
+    opted_in: bool,
+    calls: usize,
+    fast: usize,
+    /// DiagCodes after the calls the fast path served, and after any call.
+    fast_codes: BTreeSet<u16>,
+    codes: BTreeSet<u16>,
+    /// The probe: after every call that stored a key, full calls with the same bytes one
+    /// step, 600 ms and 100 s later (any timer of a state that claims none runs out); the
+    /// probes run, the DiagCodes they started from, and those that changed the status or
+    /// a byte other than `tLast`.
+    probes: usize,
+    probe_codes: BTreeSet<u16>,
+    probes_changed: usize,
+    /// Calls with the same bytes as the call before whose full call changed the state:
+    /// where a fast path that ignored a running time, or a stale key, would fail.
+    steady_moves: usize,
+}
+
+/// The PLCopen envelope's fast path pinned to its full call, as `pin!` does for the
+/// TwinSAFE types: two copies, one through `sf::cycle_traced`, one through `sf::cycle_full`,
+/// byte for byte equal with equal statuses after every call, over random sequences that
+/// change inputs (invalid bytes included), Activate, the group's halt, the constant inputs,
+/// the clock (backwards too), private bytes, and rewrite the DiagCode with its complement.
+macro_rules! pin_sf {
+    ($($ty:ty => $init:ident, $cycle:ident;)*) => {
+        fn pin_sf_all(sequences: usize) -> Vec<SfSeen> {
+            use safelogic::base::sf::{cycle_full as sf_full, cycle_traced as sf_traced, SfInstance, SfSteady};
+            let mut seen = Vec::new();
+            $({
+                let t = block_type(<$ty as safelogic::base::block::Registered>::INFO.tag).unwrap();
+                let mut rng = Rng(0x5F57_0000 ^ u64::from(t.info.tag));
+                let bytes = |fb: &mut $ty| -> &mut [u8] {
+                    // SAFETY: every block struct holds only integer fields; the slice covers
+                    // exactly the instance.
+                    unsafe {
+                        std::slice::from_raw_parts_mut(
+                            (fb as *mut $ty).cast::<u8>(),
+                            std::mem::size_of::<$ty>(),
+                        )
+                    }
+                };
+                let put = |bs: &mut [u8], o: u16, size: usize, v: u64| {
+                    for (k, b) in bs[usize::from(o)..usize::from(o) + size].iter_mut().enumerate() {
+                        *b = (v >> (8 * k)) as u8;
+                    }
+                };
+                let inputs: Vec<_> = t.fields.iter().filter(|f| f.dir == Dir::Input).collect();
+                let params: Vec<_> = t.fields.iter().filter(|f| f.dir == Dir::Param).collect();
+                // SAFETY: integer fields only.
+                let zero: $ty = unsafe { std::mem::zeroed() };
+                let mut s = SfSeen {
+                    name: t.info.name,
+                    opted_in: SfSteady::steady_key(&zero).is_some(),
+                    ..Default::default()
+                };
+                for seq in 0..sequences {
+                    // SAFETY: integer fields only.
+                    let mut a: $ty = unsafe { std::mem::zeroed() };
+                    for f in &params {
+                        let r = rng.next();
+                        let v = if f.kind.size() == 1 { r % 2 } else { [0u64, 5, 20, 50, 100][(r >> 8) as usize % 5] };
+                        put(bytes(&mut a), f.offset, f.kind.size(), v);
+                    }
+                    // SAFETY: a live, exclusively borrowed instance.
+                    let _ = unsafe { safelogic::ffi::$init(&mut a) };
+                    for f in &inputs {
+                        let v = if seq % 2 == 0 { 1 } else { rng.next() & 1 };
+                        put(bytes(&mut a), f.offset, f.kind.size(), v);
+                    }
+                    a.set_activate_raw(1);
+                    let calm = [8u64, 23, 30][seq % 3];
+                    let mut now = rng.next() as u32;
+                    let mut last: Option<Vec<u8>> = None;
+                    for step in 0..CALLS {
+                        let r = rng.next();
+                        match r % 32 {
+                            c if c < calm => {}
+                            0..=26 => {
+                                if let Some(f) = inputs.get((r >> 8) as usize % inputs.len().max(1)) {
+                                    let v = if (r >> 16) % 41 == 0 { 2 + (r >> 24) % 254 } else { (r >> 24) & 1 };
+                                    put(bytes(&mut a), f.offset, f.kind.size(), v);
+                                }
+                            }
+                            27 => a.stPrivate.nGroupHalt = u8::from((r >> 8) % 4 == 0),
+                            28 | 29 => {
+                                if let Some(f) = params.get((r >> 8) as usize % params.len().max(1)) {
+                                    bytes(&mut a)[usize::from(f.offset)] ^= 1 << ((r >> 16) % 8);
+                                }
+                            }
+                            30 => a.set_activate_raw(u8::from(a.activate_raw() != 1)),
+                            _ => {
+                                let size = std::mem::size_of::<$ty>();
+                                let private = size - std::mem::size_of_val(&a.stPrivate);
+                                if (r >> 8) % 4 == 0 {
+                                    // A corrupted private byte.
+                                    let at = private + (r >> 16) as usize % (size - private);
+                                    bytes(&mut a)[at] ^= 1 << ((r >> 40) % 8);
+                                } else if (r >> 8) % 4 == 1 {
+                                    // The DiagCode rewritten with its complement: to
+                                    // another state of the block, or any value.
+                                    let h = &mut a.stPrivate.stHeader;
+                                    let texts = <<$ty as safelogic::base::sf::SfBlock>::Diag as safelogic::base::sf::DiagState>::TABLE;
+                                    h.wDiag = if (r >> 16) % 2 == 0 {
+                                        texts[(r >> 20) as usize % texts.len()].0
+                                    } else {
+                                        (r >> 20) as u16
+                                    };
+                                    h.seal();
+                                }
+                            }
+                        }
+                        now = match (r >> 48) % 64 {
+                            0 => now.wrapping_sub(1 + (r >> 56) as u32),
+                            1..=4 => now.wrapping_add(200 + 4 * (r >> 56) as u32),
+                            5..=20 => now.wrapping_add(((r >> 56) % 30) as u32),
+                            _ => now.wrapping_add(((r >> 56) % 5) as u32),
+                        };
+                        let mut b = a;
+                        let size = std::mem::size_of::<$ty>();
+                        let outside = size - std::mem::size_of_val(&a.stPrivate);
+                        let read = bytes(&mut a)[..outside].to_vec();
+                        let steady = last.as_ref() == Some(&read);
+                        last = Some(read);
+                        let code_before = a.stPrivate.stHeader.wDiag;
+                        let (sa, fast) = sf_traced(&mut a, now);
+                        let sb = sf_full(&mut b, now);
+                        s.calls += 1;
+                        s.codes.insert(a.DiagCode);
+                        if fast {
+                            s.fast += 1;
+                            s.fast_codes.insert(a.stPrivate.stHeader.wDiag);
+                        }
+                        if steady && a.stPrivate.stHeader.wDiag != code_before {
+                            s.steady_moves += 1;
+                        }
+                        assert_eq!(sa, sb, "{} seq {seq} step {step}: status (fast {fast})", t.info.name);
+                        assert!(
+                            bytes(&mut a) == bytes(&mut b),
+                            "{} seq {seq} step {step}: instances differ (fast {fast})\n{:?}\n{:?}",
+                            t.info.name, a, b
+                        );
+                        if b.stPrivate.aReserved != [0; 3] {
+                            // A stored key: the same bytes later change nothing but tLast.
+                            for dt in [1u32, 600, 100_000] {
+                                let mut c = b;
+                                let later = now.wrapping_add(dt);
+                                let sc = sf_full(&mut c, later);
+                                c.stPrivate.stHeader.tLast = now;
+                                s.probes += 1;
+                                s.probe_codes.insert(b.stPrivate.stHeader.wDiag);
+                                if sc != Status::Ok || bytes(&mut c) != bytes(&mut b) {
+                                    s.probes_changed += 1;
+                                }
+                            }
+                        }
+                    }
+                }
+                seen.push(s);
+            })*
+            seen
+        }
+    };
+}
+
+safelogic::for_each_sf_block!(pin_sf);
+
+/// The `SF_` types with a fast path (all of them), and DiagCodes (v2.01) it must have
+/// served in.
+const SF_EXPECTED: &[(&str, &[u16])] = &[
+    ("SF_EmergencyStop", &[0x0000, 0x8000, 0x8804]),
+    ("SF_ESPE", &[0x0000, 0x8000, 0x8804]),
+    ("SF_PSE", &[0x0000, 0x8000, 0x8804]),
+    ("SF_Equivalent", &[0x0000, 0x8000, 0x8801]),
+    ("SF_Antivalent", &[0x0000, 0x8000, 0x8801]),
+    ("SF_Guard", &[0x0000, 0x8000]),
+    ("SF_SafetyRequest", &[0x0000]),
+    ("SF_EnableSwitch", &[0x0000, 0x8002]),
+    ("SF_TwoHandControlTypeII", &[0x0000, 0x8000]),
+    ("SF_TwoHandControlTypeIII", &[0x0000, 0x8000]),
+    ("SF_OutControl", &[0x0000, 0x8000]),
+    ("SF_ResetButton", &[0x0000, 0x83E2]),
+    ("SF_EDM", &[0x0000, 0x8401]),
+    ("SF_TestableSafetySensor", &[0x0000, 0x8000]),
+    ("SF_ModeSelector", &[0x0000, 0x8000]),
+];
+
+#[test]
+fn the_sf_fast_path_gives_what_the_full_call_gives() {
+    let depth: usize = std::env::var("SL_PROP_DEPTH")
+        .ok()
+        .and_then(|v| v.parse().ok())
+        .unwrap_or(1);
+    let seen = pin_sf_all(SEQUENCES * depth);
+    for s in &seen {
+        println!(
+            "{:<25} fast path {:>6} of {:>6} calls, in {:04X?}; probes {:>6} from {:04X?}, changed {}; steady moves {}",
+            s.name, s.fast, s.calls, s.fast_codes, s.probes, s.probe_codes, s.probes_changed, s.steady_moves
+        );
+    }
+    for s in &seen {
+        // Every stored key is one the same bytes keep at any later time.
+        assert_eq!(
+            s.probes_changed, 0,
+            "{}: {} of {} later full calls with the bytes of a stored key changed the instance",
+            s.name, s.probes_changed, s.probes
+        );
+        match SF_EXPECTED.iter().find(|(n, _)| *n == s.name) {
+            Some((_, codes)) => {
+                assert!(s.opted_in, "{}: no key", s.name);
+                assert!(
+                    s.fast * 8 >= s.calls,
+                    "{}: the fast path served only {} of {} calls",
+                    s.name,
+                    s.fast,
+                    s.calls
+                );
+                for c in *codes {
+                    assert!(
+                        s.fast_codes.contains(c),
+                        "{}: the fast path never served {c:04X}: {:04X?}",
+                        s.name,
+                        s.fast_codes
+                    );
+                }
+                assert!(
+                    s.steady_moves > 0,
+                    "{}: no state moved under steady bytes",
+                    s.name
+                );
+            }
+            None => {
+                assert!(!s.opted_in, "{}: a key nobody expects", s.name);
+                assert_eq!(s.fast, 0, "{}: a fast path nobody expects", s.name);
+            }
+        }
+    }
+}
+
+/// Every BOOL input of an `SF_` type with a fast path reaches its key, and a byte that is
+/// neither 0 nor 1 gives none.
+#[test]
+fn the_sf_key_holds_every_input() {
+    macro_rules! keys {
+        ($($ty:ty => $init:ident, $cycle:ident;)*) => {$({
+            use safelogic::base::sf::SfSteady;
+            let t = block_type(<$ty as safelogic::base::block::Registered>::INFO.tag).unwrap();
+            let base = <$ty>::default();
+            if let Some(key) = base.steady_key() {
+                for f in t.fields.iter().filter(|f| f.dir == Dir::Input) {
+                    let o = usize::from(f.offset);
+                    for v in [1u8, 2, 0x80] {
+                        let mut fb = base;
+                        // SAFETY: integer fields only; `o` is a field offset inside it.
+                        unsafe { *(&mut fb as *mut $ty).cast::<u8>().add(o) = v };
+                        let k = fb.steady_key();
+                        if v == 1 {
+                            assert!(k.is_some() && k != Some(key), "{}: {} does not reach the key", t.info.name, f.name);
+                        } else {
+                            assert_eq!(k, None, "{}: {} = {v} gives a key", t.info.name, f.name);
+                        }
+                    }
+                }
+            }
+        })*};
+    }
+    safelogic::for_each_sf_block!(keys);
 }

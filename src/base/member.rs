@@ -462,8 +462,12 @@ macro_rules! impl_sf_member {
                 $crate::base::sf::cycle(self, now)
             }
             #[inline(always)]
+            fn cycle_fast(&mut self, now: u32) -> bool {
+                $crate::base::sf::fast(self, now)
+            }
+            #[inline(always)]
             fn cycle_rest(&mut self, now: u32) -> $crate::base::types::Status {
-                $crate::base::sf::cycle(self, now)
+                $crate::base::sf::settle(self, now)
             }
             fn force_safe(&mut self) {
                 $crate::base::sf::force_fault(self)

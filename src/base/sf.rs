@@ -111,13 +111,18 @@ pub trait DiagState: Copy + core::fmt::Debug + Eq + 'static {
     fn decode(code: u16) -> Option<Self>;
     /// The v2.01 DiagCode.
     fn code(self) -> u16;
+    /// The v1.0 DiagCode.
+    fn code_v10(self) -> u16;
+    /// The v1.0 DiagCode of the state whose v2.01 code is `code`; `None` for a code the
+    /// block does not have (one match: [`Self::decode`] and [`Self::code_v10`] in one).
+    fn v10_of(code: u16) -> Option<u16>;
     /// The DiagCode in `profile`.
+    #[inline]
     fn code_in(self, profile: u8) -> u16 {
-        let c = self.code();
         if profile != SL_SF_PROFILE_V10 {
-            return c;
+            return self.code();
         }
-        Self::TABLE.iter().find(|e| e.0 == c).map_or(c, |e| e.1)
+        self.code_v10()
     }
 }
 
@@ -155,6 +160,19 @@ macro_rules! sf_states {
             fn code(self) -> u16 {
                 self as u16
             }
+            #[inline]
+            fn code_v10(self) -> u16 {
+                match self {
+                    $($enum::$v => $v1,)+
+                }
+            }
+            #[inline(always)]
+            fn v10_of(code: u16) -> Option<u16> {
+                match code {
+                    $($code => Some($v1),)+
+                    _ => None,
+                }
+            }
         }
     };
 }
@@ -170,7 +188,8 @@ crate::base::layout::private_struct! {
         /// Written by the owning group before each call: non-zero while the group does not run
         /// the block (halted: DiagCode 0000, as with Activate FALSE).
         pub nGroupHalt: u8,
-        /// Reserved.
+        /// The steady-state slot: the key of the last call that left a state its inputs keep,
+        /// bound to that state (`base::sf::slot_of`); all zero: no key.
         pub aReserved: [u8; 3],
     }
 }
@@ -462,11 +481,16 @@ fn outputs(code: u16, reset_level: bool, state_code: Option<u16>) -> SfOut {
     }
 }
 
+/// Inline: the fast path's outputs cost one match (the v1.0 code) and a few compares.
+#[inline(always)]
 fn write<B: SfBlock>(fb: &mut B, reset_level: bool) {
     let h = fb.sf_private().stHeader;
-    let code = match B::Diag::decode(h.wDiag) {
-        Some(s) => s.code_in(h.nActive),
-        None => h.wDiag,
+    // A state of the block in the v1.0 profile: its v1.0 code; otherwise the code itself
+    // (every v2.01 code, and a library code in either profile).
+    let code = if h.nActive == SL_SF_PROFILE_V10 {
+        B::Diag::v10_of(h.wDiag).unwrap_or(h.wDiag)
+    } else {
+        h.wDiag
     };
     let o = outputs(code, reset_level, Some(h.wDiag));
     fb.write_outputs(&o);
@@ -495,8 +519,10 @@ fn consistent<B: SfBlock>(fb: &B) -> bool {
         && h.nState == phase_of(h.wDiag)
 }
 
-/// `sl_sf_<name>_cycle`: one call at `now` (ms, wrapping).
-pub fn cycle<B: SfBlock>(fb: &mut B, now: u32) -> Status {
+/// The full call at `now` (ms, wrapping): what [`cycle`] runs when the fast path does not
+/// serve the call.
+#[inline(always)]
+fn full_cycle<B: SfBlock>(fb: &mut B, now: u32) -> Status {
     let mut status = Status::Ok;
     let mut fault = None;
     if !consistent(fb) {
@@ -583,12 +609,145 @@ pub fn cycle<B: SfBlock>(fb: &mut B, now: u32) -> Status {
     status
 }
 
+/// What an `SF_` block with a steady-state fast path supplies besides [`SfBlock`]
+/// (docs/performance.md, "The fast path of the PLCopen envelope"). Every `SF_` block
+/// implements it; one without a fast path keeps the defaults (no key: every call is full).
+pub trait SfSteady: SfBlock {
+    /// The key of this call: every BOOL byte the cycle reads from the struct (Activate, the
+    /// block's inputs, Reset, a BOOL constant), byte i as bit i (`bools::key`); `None` when
+    /// one is neither 0 nor 1, or the block has no fast path.
+    #[inline(always)]
+    fn steady_key(&self) -> Option<u16> {
+        None
+    }
+    /// A monitored time runs in the state the private state holds: the next call may take
+    /// another transition at another time with the same inputs (`next` reads `in_state`
+    /// in this state, or the block's memory holds a running time). Asked after a full call
+    /// that was a fixed point; such a state stores no key.
+    #[inline(always)]
+    fn timed(&self) -> bool {
+        true
+    }
+}
+
+/// The key of BOOL bytes: byte i as bit i; `None` when one is neither 0 nor 1. Built byte
+/// by byte through references, as bits (no shift makes adjacent bytes one wider value, so
+/// every byte stays its own load): a caller writes these bytes one by one right before the
+/// call, and one load wider than those stores would wait until they reach the cache
+/// (docs/performance.md, "store forwarding").
+#[inline(always)]
+pub fn key<const N: usize>(bytes: [&u8; N]) -> Option<u16> {
+    const { assert!(N <= 16) };
+    let mut key = 0u16;
+    let mut any = 0u8;
+    for (i, b) in bytes.into_iter().enumerate() {
+        any |= *b;
+        key |= u16::from(*b) << i;
+    }
+    (any <= 1).then_some(key)
+}
+
+/// The slot of `key` in the state whose control word (state, flags, DiagCode) is `ctrl`:
+/// the key XOR the DiagCode, then a check byte, the complement of the state XOR the flags.
+/// Equal slots mean the same key in the same DiagCode, state and flags. A zeroed slot holds
+/// no key: its check byte would need state XOR flags = 0xFF, and an `SF_` block's state is
+/// below 8 and its flags use bits 0, 2 and 7 only.
+#[inline(always)]
+fn slot_of(key: u16, ctrl: u32) -> [u8; 3] {
+    let [lo, hi] = (key ^ (ctrl >> 16) as u16).to_le_bytes();
+    [lo, hi, !(ctrl as u8 ^ (ctrl >> 8) as u8)]
+}
+
+/// `sl_sf_<name>_cycle`: one call at `now` (ms, wrapping): the fast path, else the full
+/// call ([`settle`]).
+#[inline(always)]
+pub fn cycle<B: SfSteady>(fb: &mut B, now: u32) -> Status {
+    cycle_traced(fb, now).0
+}
+
+/// [`cycle`], also telling whether the fast path served the call (for the tests that pin
+/// the fast path to the full one).
+#[doc(hidden)]
+#[inline(always)]
+pub fn cycle_traced<B: SfSteady>(fb: &mut B, now: u32) -> (Status, bool) {
+    if fast(fb, now) {
+        (Status::Ok, true)
+    } else {
+        (settle(fb, now), false)
+    }
+}
+
+/// The full call only, keeping the slot as [`cycle`] does (the reference the fast path is
+/// tested against).
+#[doc(hidden)]
+pub fn cycle_full<B: SfSteady>(fb: &mut B, now: u32) -> Status {
+    settle(fb, now)
+}
+
+/// The fast path: whether it served the call (`SL_OK`); [`settle`] must run when it did
+/// not. Served only when this call's key, bound to the control word the private header
+/// holds now, is the stored slot (a full call at these bytes in this state was a fixed
+/// point and no time runs there), the group does not halt the block, the private header is
+/// intact (magic, complements), the clock did not go backwards and the constant inputs are
+/// the latched ones. It then does what that full call would do again: stores `tLast` and
+/// writes the outputs from the state.
+#[inline(always)]
+pub fn fast<B: SfSteady>(fb: &mut B, now: u32) -> bool {
+    let Some(key) = fb.steady_key() else {
+        return false;
+    };
+    let p = fb.sf_private();
+    let h = &p.stHeader;
+    let [lo, hi, check] = slot_of(key, h.ctrl());
+    let served = p.aReserved[0] == lo
+        && p.aReserved[1] == hi
+        && p.aReserved[2] == check
+        && p.nGroupHalt == 0
+        && h.intact(B::MAGIC)
+        && !time::went_backwards(now, h.tLast)
+        && fb.live_consts() == latched(fb);
+    if served {
+        fb.sf_private_mut().stHeader.tLast = now;
+        let reset_level = bools::is_true(fb.reset_raw());
+        write(fb, reset_level);
+    }
+    served
+}
+
+/// The full call, then this call's key stored when the call returned `SL_OK`, the group
+/// did not halt the block, the private state after it equals the one before it but for
+/// `tLast` (a fixed point: no state, flag, edge memory, entry time or latched constant
+/// changed) and no time runs in that state ([`SfSteady::timed`]); the slot cleared
+/// otherwise. Out of line: the fast path stays small.
+#[inline(never)]
+pub fn settle<B: SfSteady>(fb: &mut B, now: u32) -> Status {
+    let Some(key) = fb.steady_key() else {
+        let status = full_cycle(fb, now);
+        fb.sf_private_mut().aReserved = [0; 3];
+        return status;
+    };
+    let mut before = *fb.sf_private();
+    let status = full_cycle(fb, now);
+    let after = fb.sf_private();
+    before.stHeader.tLast = after.stHeader.tLast;
+    before.aReserved = after.aReserved;
+    let fixed = status == Status::Ok && after.nGroupHalt == 0 && before == *after && !fb.timed();
+    let slot = if fixed {
+        slot_of(key, fb.sf_private().stHeader.ctrl())
+    } else {
+        [0; 3]
+    };
+    fb.sf_private_mut().aReserved = slot;
+    status
+}
+
 /// After a caught panic: the instance is forced into the library fault with its outputs
 /// FALSE (only Activate FALSE leaves it).
 pub fn force_fault<B: SfBlock>(fb: &mut B) {
     if !consistent(fb) {
         idle(fb, false);
     }
+    fb.sf_private_mut().aReserved = [0; 3];
     let now = fb.sf_private().stHeader.tLast;
     enter(&mut fb.sf_private_mut().stHeader, SL_SF_DIAG_CORRUPT, now);
     write(fb, false);

@@ -47,7 +47,8 @@ pub trait LogicBlock: crate::base::block::Private<P = SL_LOGIC_PRIVATE> {
 
     fn params(&self) -> LogicParams;
     /// The fast-path key: the bytes [8, 18) of the struct (the inputs, bRun, bErrAck;
-    /// `base::envelope::window!`), `None` where they do not fit (XOR).
+    /// `base::envelope::window!`), or (XOR, whose bytes do not fit) its inputs gathered
+    /// into bits with bRun and bErrAck.
     fn window(&self) -> Option<[u64; 2]>;
     /// Evaluates the input bytes with the latched masks; the flag tells whether an active
     /// input byte was an invalid BOOL.

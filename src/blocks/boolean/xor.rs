@@ -140,9 +140,30 @@ impl LogicBlock for FB_XOR {
     const NEGATABLE: u16 = 0;
     const MIN_ACTIVE: u32 = 1;
 
-    /// Sixteen input bytes: more than a key holds with bRun and bErrAck.
+    /// Sixteen input bytes and bRun, bErrAck: more than a window of two words holds, so
+    /// the inputs are gathered into bits (`bools::key`: `None` when one is neither 0 nor
+    /// 1) and bRun, bErrAck follow as they are, in the first word; the second word is 0.
     fn window(&self) -> Option<[u64; 2]> {
-        None
+        let inputs = crate::base::bools::key([
+            self.bXor1In1,
+            self.bXor2In1,
+            self.bXor1In2,
+            self.bXor2In2,
+            self.bXor1In3,
+            self.bXor2In3,
+            self.bXor1In4,
+            self.bXor2In4,
+            self.bXor1In5,
+            self.bXor2In5,
+            self.bXor1In6,
+            self.bXor2In6,
+            self.bXor1In7,
+            self.bXor2In7,
+            self.bXor1In8,
+            self.bXor2In8,
+        ])?;
+        let controls = u64::from(self.bRun) << 16 | u64::from(self.bErrAck) << 24;
+        Some([u64::from(inputs) | controls, 0])
     }
     fn params(&self) -> LogicParams {
         LogicParams {

@@ -25,3 +25,5 @@ impl SF_Antivalent {
         }
     }
 }
+
+crate::pair_steady!(SF_Antivalent, S_ChannelNC, S_ChannelNO);

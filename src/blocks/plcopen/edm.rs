@@ -253,3 +253,27 @@ impl crate::base::sf::SfBlock for SF_EDM {
         sf::store_trigger(&mut self.stPrivate, self.S_OutControl);
     }
 }
+
+
+
+/// The steady-state fast path (`base::sf::SfSteady`): the key is every BOOL byte the call
+/// reads; the states that monitor the contactors read the monitoring time.
+impl crate::base::sf::SfSteady for SF_EDM {
+    #[inline(always)]
+    fn steady_key(&self) -> Option<u16> {
+        crate::base::sf::key([
+            &self.Activate,
+            &self.S_OutControl,
+            &self.EDM1,
+            &self.EDM2,
+            &self.S_StartReset,
+            &self.Reset,
+        ])
+    }
+    fn timed(&self) -> bool {
+        matches!(
+            self.diag_state(),
+            Some(SfEdmState::OutDisable | SfEdmState::OutEnable)
+        )
+    }
+}

@@ -13,3 +13,4 @@ crate::restart_interlock_struct! {
 }
 
 crate::restart_interlock_block!(SF_EmergencyStop, SL_TYPE_SF_EMERGENCYSTOP, S_EStopIn, S_EStopOut, has_v10: true);
+crate::restart_interlock_steady!(SF_EmergencyStop, S_EStopIn);

@@ -13,3 +13,5 @@ crate::pair_struct! {
 }
 
 crate::pair_block!(SF_Equivalent, SL_TYPE_SF_EQUIVALENT, S_ChannelA, S_ChannelB, b_negated: false, S_EquivalentOut);
+
+crate::pair_steady!(SF_Equivalent, S_ChannelA, S_ChannelB);

@@ -13,3 +13,5 @@ crate::restart_interlock_struct! {
 }
 
 crate::restart_interlock_block!(SF_ESPE, SL_TYPE_SF_ESPE, S_ESPE_In, S_ESPE_Out, has_v10: true);
+
+crate::restart_interlock_steady!(SF_ESPE, S_ESPE_In);

@@ -327,3 +327,29 @@ impl crate::base::sf::SfBlock for SF_ModeSelector {
 
 /// The layout: 80 bytes, no implicit padding.
 const _: () = assert!(core::mem::size_of::<SF_ModeSelector>() == 80);
+
+/// The steady-state fast path (`base::sf::SfSteady`): the key is every BOOL byte the call
+/// reads; the open-circuit time runs while every S_ModeX is FALSE.
+impl crate::base::sf::SfSteady for SF_ModeSelector {
+    #[inline(always)]
+    fn steady_key(&self) -> Option<u16> {
+        crate::base::sf::key([
+            &self.Activate,
+            &self.S_Mode0,
+            &self.S_Mode1,
+            &self.S_Mode2,
+            &self.S_Mode3,
+            &self.S_Mode4,
+            &self.S_Mode5,
+            &self.S_Mode6,
+            &self.S_Mode7,
+            &self.S_Unlock,
+            &self.S_SetMode,
+            &self.AutoSetMode,
+            &self.Reset,
+        ])
+    }
+    fn timed(&self) -> bool {
+        self.stPrivate.stHeader.wAux & AUX_OFF_RUNNING != 0
+    }
+}

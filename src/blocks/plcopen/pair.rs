@@ -162,3 +162,25 @@ macro_rules! pair_block {
         }
     };
 }
+
+/// The steady-state fast path of a two-channel block (`base::sf::SfSteady`): the key is
+/// Activate and the two channels; the waiting states read the discrepancy time.
+#[macro_export]
+#[doc(hidden)]
+macro_rules! pair_steady {
+    ($ty:ident, $a:ident, $b:ident) => {
+        impl $crate::base::sf::SfSteady for $ty {
+            #[inline(always)]
+            fn steady_key(&self) -> Option<u16> {
+                $crate::base::sf::key([&self.Activate, &self.$a, &self.$b])
+            }
+            fn timed(&self) -> bool {
+                use $crate::blocks::plcopen::pair::PairState::*;
+                !matches!(
+                    self.diag_state(),
+                    Some(Idle | Init | Enabled | Error1 | Error2 | Error3)
+                )
+            }
+        }
+    };
+}

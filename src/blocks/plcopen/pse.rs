@@ -13,3 +13,5 @@ crate::restart_interlock_struct! {
 }
 
 crate::restart_interlock_block!(SF_PSE, SL_TYPE_SF_PSE, S_PSE_In, S_PSE_Out, has_v10: false);
+
+crate::restart_interlock_steady!(SF_PSE, S_PSE_In);

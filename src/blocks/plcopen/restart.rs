@@ -174,3 +174,28 @@ pub const fn magic(tag: u16) -> u16 {
 
 /// The private state's size is part of every `SF_` struct's layout (ABI: 40 bytes).
 const _: () = assert!(core::mem::size_of::<SL_SF_PRIVATE>() == 40);
+
+/// The steady-state fast path of a restart-interlock block (`base::sf::SfSteady`): the
+/// key is its five BOOL inputs; no state reads the time.
+#[macro_export]
+#[doc(hidden)]
+macro_rules! restart_interlock_steady {
+    ($ty:ident, $input:ident) => {
+        impl $crate::base::sf::SfSteady for $ty {
+            #[inline(always)]
+            fn steady_key(&self) -> Option<u16> {
+                $crate::base::sf::key([
+                    &self.Activate,
+                    &self.$input,
+                    &self.S_StartReset,
+                    &self.S_AutoReset,
+                    &self.Reset,
+                ])
+            }
+            #[inline(always)]
+            fn timed(&self) -> bool {
+                false
+            }
+        }
+    };
+}

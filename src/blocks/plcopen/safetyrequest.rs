@@ -183,3 +183,23 @@ impl SfBlock for SF_SafetyRequest {
         self.DiagCode = o.diag_code;
     }
 }
+
+
+
+/// The steady-state fast path (`base::sf::SfSteady`): the key is the five BOOL inputs;
+/// WAIT_FOR_CONF reads the monitoring time.
+impl crate::base::sf::SfSteady for SF_SafetyRequest {
+    #[inline(always)]
+    fn steady_key(&self) -> Option<u16> {
+        crate::base::sf::key([
+            &self.Activate,
+            &self.S_OpMode,
+            &self.S_Acknowledge,
+            &self.S_StartReset,
+            &self.Reset,
+        ])
+    }
+    fn timed(&self) -> bool {
+        self.diag_state() == Some(SafetyRequestState::WaitConf)
+    }
+}

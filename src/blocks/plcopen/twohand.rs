@@ -220,3 +220,25 @@ macro_rules! two_hand_block {
         const _: () = assert!(core::mem::size_of::<$ty>() == 56);
     };
 }
+
+/// The steady-state fast path of a two-hand block (`base::sf::SfSteady`): the key is
+/// Activate and the two buttons; type III's states with one button actuated read the
+/// synchronism time (`$timed`), type II has no time.
+#[macro_export]
+#[doc(hidden)]
+macro_rules! two_hand_steady {
+    ($ty:ident, $diag:ident, timed: [$($timed:ident),*]) => {
+        impl $crate::base::sf::SfSteady for $ty {
+            #[inline(always)]
+            fn steady_key(&self) -> Option<u16> {
+                $crate::base::sf::key([&self.Activate, &self.S_Button1, &self.S_Button2])
+            }
+            #[inline(always)]
+            fn timed(&self) -> bool {
+                false
+                    $(|| self.diag_state()
+                        == Some($crate::blocks::plcopen::twohand::$diag::$timed))*
+            }
+        }
+    };
+}

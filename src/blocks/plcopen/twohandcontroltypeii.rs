@@ -18,3 +18,5 @@ crate::two_hand_block!(
     TwoHandIIState,
     next_ii
 );
+
+crate::two_hand_steady!(SF_TwoHandControlTypeII, TwoHandIIState, timed: []);

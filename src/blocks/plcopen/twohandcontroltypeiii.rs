@@ -18,3 +18,9 @@ crate::two_hand_block!(
     TwoHandIIIState,
     next_iii
 );
+
+crate::two_hand_steady!(
+    SF_TwoHandControlTypeIII,
+    TwoHandIIIState,
+    timed: [Button1Actuated, Button2Actuated]
+);
