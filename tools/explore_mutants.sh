@@ -22,7 +22,7 @@ for patch in project/tests/explorer/mutants/*.patch; do
     esac
     rm -rf "$scratch/src"
     mkdir -p "$scratch/src"
-    cp -R Cargo.toml Cargo.lock build.rs build_support cbindgen.toml src include project benches abi "$scratch/src/"
+    cp -R Cargo.toml Cargo.lock build.rs build_support cbindgen.toml src include project benches abi plc_bindings examples "$scratch/src/"
     (cd "$scratch/src" && patch -p1 --quiet <"../../../$patch")
     if diff -rq src "$scratch/src/src" >/dev/null; then
         echo "FAIL: $name did not change src/"; exit 1

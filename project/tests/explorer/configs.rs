@@ -6,9 +6,24 @@ use super::{api, is_time, Config, Instance};
 use safelogic::any::input_bit;
 use safelogic::registry::{BlockType, Dir, Field, Kind};
 
-/// At most this many BOOL inputs are driven (with bRun/bErrAck); the further ones of a
-/// numbered family are held FALSE and inactive (the block ignores an inactive input).
+/// At most this many BOOL inputs are driven besides bRun/bErrAck (2^10 combinations).
 pub const MAX_DRIVEN_BOOLS: usize = 8;
+
+/// Times a block needs above the default 2 / 3 ms (its manual's minimum).
+const TIME_OVERRIDES: &[(&str, &str, i64)] = &[
+    // "absolute minimum 100 ms"; TrailingMaximum above it.
+    ("SF_ResetButton", "TrailingMinimum", 100),
+    ("SF_ResetButton", "TrailingMaximum", 102),
+];
+
+/// A block's fixed times (not parameters), in ms.
+fn fixed_limits(ty: &BlockType) -> Vec<u32> {
+    match ty.info.name {
+        // The PLCopen type III synchronism time: 500 ms.
+        "SF_TwoHandControlTypeIII" => vec![500],
+        _ => vec![],
+    }
+}
 
 /// The inputs of a numbered family that a configuration activates (by its field order).
 fn family_inputs(ty: &BlockType) -> usize {
@@ -94,7 +109,12 @@ pub fn configs(ty: &'static BlockType) -> Vec<Config> {
     let mut params: Vec<(&'static Field, i64)> = Vec::new();
     let mut t = 2;
     for f in ty.fields.iter().filter(|f| f.dir == Dir::Param) {
-        if is_time(f) {
+        if let Some(&(_, _, v)) = TIME_OVERRIDES
+            .iter()
+            .find(|(b, n, _)| *b == ty.info.name && *n == f.name)
+        {
+            params.push((f, v));
+        } else if is_time(f) {
             params.push((f, t));
             t = 3;
         } else if f.name == "nConnectionId" {
@@ -151,19 +171,23 @@ pub fn configs(ty: &'static BlockType) -> Vec<Config> {
             driven.push((f, boundary_values(ty, f, &base)));
         }
     }
-    // A PLCopen block with more BOOL inputs than that: the last numbered ones held FALSE
-    // (SF_ModeSelector's modes 3..7).
-    while driven.iter().filter(|(f, _)| f.kind == Kind::Bool).count() > MAX_DRIVEN_BOOLS + 2 {
-        let i = driven
-            .iter()
-            .rposition(|(f, _)| f.kind == Kind::Bool && f.name.starts_with("S_Mode"))
-            .expect("only SF_ModeSelector has that many inputs");
-        driven.remove(i);
-    }
+    // SF_ModeSelector: modes 0..2 driven, modes 3..7 held FALSE (a mode input is one of
+    // eight alike; three show every transition between modes, including two at once).
+    driven.retain(|(f, _)| {
+        !(ty.info.name == "SF_ModeSelector"
+            && f.name.starts_with("S_Mode")
+            && f.name[6..].parse::<u8>().is_ok_and(|m| m > 2))
+    });
+    assert!(
+        driven.iter().filter(|(f, _)| f.kind == Kind::Bool).count() <= MAX_DRIVEN_BOOLS + 2,
+        "{}: too many BOOL inputs to drive",
+        ty.info.name
+    );
     let mut out = vec![Config {
         label: "base".into(),
         params: base.clone(),
         driven: driven.clone(),
+        fixed_limits: fixed_limits(ty),
     }];
     for f in ty.fields.iter().filter(|f| f.dir == Dir::Param) {
         let variants: Vec<(String, i64)> = match (f.name, f.kind) {
@@ -184,6 +208,7 @@ pub fn configs(ty: &'static BlockType) -> Vec<Config> {
                     label,
                     params: p,
                     driven: driven.clone(),
+                    fixed_limits: fixed_limits(ty),
                 });
             }
         }

@@ -4,6 +4,10 @@
 
 use super::{documented_status, Instance, Transition, EDGE_INPUTS};
 use safelogic::registry::{family, BlockType, Dir, Family, Kind};
+use safelogic::{
+    SL_E_PARAM_CHANGED, SL_SF_DIAG_CLOCK, SL_SF_DIAG_CONFIG, SL_SF_DIAG_CONST_CHANGED,
+    SL_SF_DIAG_CORRUPT,
+};
 
 /// The manual's name of the block's state (`?<value>` for a value outside its list).
 /// A PLCopen block's state is its DiagCode (IDLE 0x0000, ACTIVE 0x8xxx, FAULT 0xCxxx).
@@ -59,11 +63,19 @@ pub fn bool_outputs(ty: &BlockType, b: &Instance) -> Vec<(&'static str, i64)> {
         .collect()
 }
 
-/// The outputs that report a fault or a demand rather than enable anything.
+/// The outputs that report a fault or request the safe state rather than enable anything
+/// (CONNECTION SHUTDOWN's bShutdownRequest shuts connections down: TRUE in SAFE, §4.15).
 fn is_indicator(name: &str) -> bool {
     matches!(
         name,
-        "bError" | "Error" | "Ready" | "SafetyDemand" | "ResetRequest" | "bTestError" | "bWait"
+        "bError"
+            | "Error"
+            | "Ready"
+            | "SafetyDemand"
+            | "ResetRequest"
+            | "bTestError"
+            | "bWait"
+            | "bShutdownRequest"
     )
 }
 
@@ -85,8 +97,17 @@ fn allowed_states(block: &str, output: &str) -> Option<&'static [&'static str]> 
 
 /// PLCopen blocks: an S_ output TRUE at a DiagCode other than 0x8000, as the PLCopen
 /// specification documents it for that block.
-fn sf_output_exception(block: &str, output: &str, diag: u16) -> bool {
+fn sf_output_exception(block: &str, output: &str, diag: u16, profile: i64) -> bool {
     match (block, output) {
+        // S_SafetyRequest TRUE = operation mode requested from the actuator: OP_MODE and
+        // WAIT_FOR_CONF_OPMODE (v2.01 0x8802 / 0x8804, v1.0 0x8002 / 0x8012).
+        ("SF_SafetyRequest", "S_SafetyRequest") => match profile {
+            1 => matches!(diag, 0x8002 | 0x8012),
+            _ => matches!(diag, 0x8802 | 0x8804),
+        },
+        // The sensor is free (output TRUE) also untested and during the automatic test:
+        // ESPE_FREE_NO_TEST, TEST_REQUEST, TEST_ACTIVE (same codes in both profiles).
+        ("SF_TestableSafetySensor", "S_OSSD_Out") => matches!(diag, 0x8010 | 0x8020 | 0x8030),
         // S_TestOut drives the sensor's test input: TRUE whenever no test runs.
         ("SF_TestableSafetySensor", "S_TestOut") => true,
         // The mode selected stays TRUE while the selector waits (0x8005) or is locked.
@@ -120,14 +141,28 @@ pub fn check(tr: &Transition) -> Option<String> {
         .iter()
         .zip(&tr.step.inputs)
         .any(|((f, _), v)| f.kind == Kind::Bool && *v > 1);
-    if !documented_status(tr.rc, invalid) {
+    // A PLCopen block's constant inputs (S_StartReset, S_AutoReset, NoExternalTest) are
+    // latched at activation: changing one while activated is SL_E_PARAM_CHANGED with its
+    // library DiagCode (header: "a constant input changed while the block was activated").
+    let constant_changed = family(ty.info.tag) == Family::PlcOpen && tr.rc == SL_E_PARAM_CHANGED;
+    if !documented_status(tr.rc, invalid) && !constant_changed {
         return Some(format!(
             "status {} is not a documented cycle status here",
             tr.rc
         ));
     }
     let st = state_value(ty, after);
-    if !state_list(ty).iter().any(|(s, _)| *s == st) {
+    // A PLCopen block may also show the library's own DiagCodes (SL_SF_DIAG_*: corrupt,
+    // clock, constant changed, constant invalid), each documented in the header.
+    let library = family(ty.info.tag) == Family::PlcOpen
+        && [
+            SL_SF_DIAG_CORRUPT,
+            SL_SF_DIAG_CLOCK,
+            SL_SF_DIAG_CONST_CHANGED,
+            SL_SF_DIAG_CONFIG,
+        ]
+        .contains(&st);
+    if !library && !state_list(ty).iter().any(|(s, _)| *s == st) {
         return Some(format!(
             "state value 0x{st:04X} is not one of the manual's states"
         ));
@@ -202,16 +237,23 @@ pub fn check(tr: &Transition) -> Option<String> {
                 "Activate"
             };
             let act = input(act_name).unwrap_or(0);
+            let profile = tr
+                .cfg
+                .params
+                .iter()
+                .find(|(f, _)| f.name == "nDiagProfile")
+                .map_or(0, |p| p.1);
             for (o, v) in &outs {
                 if *v == 0 {
                     continue;
                 }
-                if act != 1 {
+                // S_TestOut stays TRUE while idle (the transmitter on).
+                if act != 1 && !(name == "SF_TestableSafetySensor" && *o == "S_TestOut") {
                     return Some(format!("{o} is TRUE with {act_name} = {act}"));
                 }
                 if (o.starts_with("S_") || *o == "ResetOut")
                     && diag != 0x8000
-                    && !sf_output_exception(name, o, diag)
+                    && !sf_output_exception(name, o, diag, profile)
                 {
                     return Some(format!(
                         "{o} is TRUE at DiagCode 0x{diag:04X} (only at 0x8000)"
@@ -222,13 +264,20 @@ pub fn check(tr: &Transition) -> Option<String> {
             if (error == 1) != (diag & 0xC000 == 0xC000) {
                 return Some(format!("Error is {error} at DiagCode 0x{diag:04X}"));
             }
-            // An error state (0xC...) is left only by a Reset edge (rising: acknowledged;
-            // falling: a Reset held at the wrong time released, C001/C002), by Activate
-            // FALSE, or by the block's documented exits (sf_error_exit).
+            // After an error (0xC...) the output is enabled (0x8000) only through a Reset
+            // rising edge or a new activation; the restart-interlock blocks leave an error
+            // only with a Reset edge (rising: acknowledged; falling: the Reset held at the
+            // wrong time released, C001/C011) or Activate FALSE.
             if diag_before & 0xC000 == 0xC000 && diag & 0xC000 != 0xC000 && act == 1 {
                 let reset = input("Reset").map(|r| u8::from(r == 1));
+                let reset_rise = reset == Some(1) && prev_edge("Reset") == 0;
                 let reset_edge = reset.is_some_and(|r| r != prev_edge("Reset"));
-                if !reset_edge && !sf_error_exit(name, diag_before, diag) {
+                if diag == 0x8000 && !reset_rise {
+                    return Some(format!(
+                        "error 0x{diag_before:04X} left straight to 0x8000 without a Reset rising edge"
+                    ));
+                }
+                if restart_interlock(name) && !reset_edge {
                     return Some(format!(
                         "error 0x{diag_before:04X} left for 0x{diag:04X} without a Reset edge"
                     ));
@@ -244,13 +293,9 @@ fn off_state_exception(_block: &str, _output: &str) -> bool {
     false
 }
 
-/// PLCopen error exits without a Reset edge that the specification documents.
-fn sf_error_exit(block: &str, _from: u16, _to: u16) -> bool {
-    // The two-hand controls and the channel pairs have no Reset input: their errors are
-    // left when both inputs are released (PLCopen Part 1, SF_TwoHandControlTypeII/III,
-    // SF_Equivalent, SF_Antivalent).
-    matches!(
-        block,
-        "SF_TwoHandControlTypeII" | "SF_TwoHandControlTypeIII" | "SF_Equivalent" | "SF_Antivalent"
-    )
+/// The blocks whose errors are the static-Reset errors alone (C001 / C011), left only
+/// when Reset is released (PLCopen SF_EmergencyStop, SF_ESPE, SF_PSE): the other blocks'
+/// errors are also left when their inputs are released (discrepancy, two-hand, guard).
+fn restart_interlock(block: &str) -> bool {
+    matches!(block, "SF_EmergencyStop" | "SF_ESPE" | "SF_PSE")
 }

@@ -109,6 +109,9 @@ pub struct Config {
     /// Driven inputs and their values. BOOL inputs: 0, 1 and the invalid byte 2 (in at
     /// most one input per combination, see `inputs`).
     pub driven: Vec<(&'static Field, Vec<i64>)>,
+    /// Fixed times of the block that are not parameters (ms): SF_TwoHandControlTypeIII's
+    /// 500 ms synchronism time.
+    pub fixed_limits: Vec<u32>,
 }
 
 /// How a 4-byte word of the struct relates to the clock (found by running every
@@ -201,6 +204,9 @@ pub struct Figures {
     pub state_values: Vec<u16>,
 }
 
+/// PLCopen inputs that are constants, latched at activation.
+pub const CONSTANT_INPUTS: &[&str] = &["S_StartReset", "S_AutoReset", "NoExternalTest"];
+
 /// The edge inputs whose previous level the invariants need.
 pub const EDGE_INPUTS: &[&str] = &["bErrAck", "bRun", "Reset", "Activate", "S_Reset"];
 
@@ -214,6 +220,10 @@ pub fn time_steps(cfg: &Config) -> (Vec<u32>, u32) {
             max_t = max_t.max(l);
             dts.extend([l - 1, l, l + 1]);
         }
+    }
+    for &l in &cfg.fixed_limits {
+        max_t = max_t.max(l);
+        dts.extend([l - 1, l, l + 1]);
     }
     dts.sort_unstable();
     dts.dedup();
@@ -341,15 +351,16 @@ pub fn explore(
         if max_depth.is_some_and(|m| depth >= m) {
             continue;
         }
+        let before = state.materialize(NOW_A);
+        let before_b = state.materialize(NOW_A.wrapping_add(SHIFT));
         for combo in &combos {
             for &dt in &dts {
                 let step = Step {
                     inputs: combo.clone(),
                     dt,
                 };
-                let before = state.materialize(NOW_A);
                 let mut a = before.clone();
-                let mut b = state.materialize(NOW_A.wrapping_add(SHIFT));
+                let mut b = before_b.clone();
                 for ((f, _), &v) in cfg.driven.iter().zip(combo) {
                     a.set(f, v);
                     b.set(f, v);
@@ -388,7 +399,13 @@ pub fn explore(
                     }
                     o += 1;
                 }
-                let safe_reading = combo.contains(&2).then(|| {
+                // The invalid byte's safe reading: FALSE. A PLCopen constant input is latched
+                // at activation (an invalid byte there keeps the latched value, a changed
+                // valid one is SL_E_PARAM_CHANGED), so it has no FALSE to compare with.
+                let invalid_in_signal = cfg.driven.iter().zip(combo).any(|((f, _), &v)| {
+                    f.kind == Kind::Bool && v == 2 && !CONSTANT_INPUTS.contains(&f.name)
+                });
+                let safe_reading = invalid_in_signal.then(|| {
                     let mut c = before.clone();
                     for ((f, _), &v) in cfg.driven.iter().zip(combo) {
                         c.set(f, if f.kind == Kind::Bool && v == 2 { 0 } else { v });
