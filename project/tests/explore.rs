@@ -107,9 +107,8 @@ const NO_V1_PROFILE: &str = "a v1.0 DiagCode of a block without the v1.0 profile
 const NO_INPUT_ERROR: &str =
     "no input error: only the library's integrity, parameter and clock checks enter it";
 
-/// The blocks the test command explores (each in its base configuration, and a PLCopen
-/// block in both DiagCode profiles). MUTING (ten BOOL inputs, six timers) is explored in
-/// `explore_boolean_plcopen_and_connection_shutdown_blocks_every_option` only.
+/// The blocks the test command explores, in every configuration. MUTING (ten driven BOOL
+/// inputs, six timers) is explored in `explore_muting` (tools/deep-check.sh).
 fn bounded_scope(b: &BlockType) -> bool {
     (b.info.tag < 16
         || family(b.info.tag) == Family::PlcOpen
@@ -152,15 +151,12 @@ fn replay(v: &Violation) -> bool {
 
 /// Explores every configuration of `ty`; prints the figures; returns them and the
 /// violations.
-fn run_block(ty: &'static BlockType, all_configs: bool) -> (Figures, Vec<Violation>, Vec<String>) {
+fn run_block(ty: &'static BlockType) -> (Figures, Vec<Violation>, Vec<String>) {
     let mut total = Figures::default();
     let mut violations = Vec::new();
     let mut problems = Vec::new();
     let mut seen = std::collections::BTreeSet::new();
-    for cfg in configs(ty)
-        .into_iter()
-        .filter(|c| all_configs || c.label == "base" || c.label.starts_with("nDiagProfile"))
-    {
+    for cfg in configs(ty) {
         match explore(ty, &cfg, None) {
             Ok((fig, v)) => {
                 total.configs += 1;
@@ -216,7 +212,7 @@ fn run_block(ty: &'static BlockType, all_configs: bool) -> (Figures, Vec<Violati
     (total, violations, problems)
 }
 
-fn run(scope: impl Fn(&BlockType) -> bool, all_configs: bool) {
+fn run(scope: impl Fn(&BlockType) -> bool) {
     let only = std::env::var("SAFELOGIC_EXPLORE_ONLY").ok();
     let expect_violation = std::env::var_os("SAFELOGIC_EXPLORE_EXPECT_VIOLATION").is_some();
     let mut violations = Vec::new();
@@ -228,7 +224,7 @@ fn run(scope: impl Fn(&BlockType) -> bool, all_configs: bool) {
             continue;
         }
         n += 1;
-        let (_, v, p) = run_block(ty, all_configs);
+        let (_, v, p) = run_block(ty);
         violations.extend(v);
         problems.extend(p);
     }
@@ -265,17 +261,17 @@ fn run(scope: impl Fn(&BlockType) -> bool, all_configs: bool) {
 
 #[test]
 fn explore_boolean_plcopen_and_connection_shutdown_blocks() {
-    run(bounded_scope, true);
+    run(bounded_scope);
 }
 
 #[test]
 #[ignore = "minutes: run by tools/deep-check.sh (step explore)"]
 fn explore_muting() {
-    run(|b| b.info.name == "MUTING", true);
+    run(|b| b.info.name == "MUTING");
 }
 
 #[test]
 #[ignore = "minutes: run by tools/deep-check.sh (step explore)"]
 fn explore_analog_and_motion_blocks() {
-    run(|b| !boolean_scope(b), true);
+    run(|b| !boolean_scope(b));
 }

@@ -292,6 +292,9 @@ fn first_or_last(vs: &[i64], last: i64) -> i64 {
     }
 }
 
+/// A reached state, the step from its parent (none for the state after init) and its depth.
+type Node = (State, Option<(usize, Step)>, usize);
+
 /// Explores one configuration. Returns the figures and the first violation found (the
 /// search is breadth first, so its trace is a shortest one).
 pub fn explore(
@@ -336,7 +339,7 @@ pub fn explore(
     };
     let mut index: HashMap<State, usize> = HashMap::new();
     // (state, parent index, step from the parent, depth)
-    let mut nodes: Vec<(State, Option<(usize, Step)>, usize)> = Vec::new();
+    let mut nodes: Vec<Node> = Vec::new();
     index.insert(init_state.clone(), 0);
     nodes.push((init_state, None, 0));
     let mut queue = VecDeque::from([0usize]);
