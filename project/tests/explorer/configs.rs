@@ -137,6 +137,11 @@ pub fn configs(ty: &'static BlockType) -> Vec<Config> {
     let active = ty.field("wInputActive");
     let mut candidates = vec![mask];
     candidates.extend([0x3, 0x1, 0x7, 0xF, 0x1F, 0x3F, 0xFF, 0xFFFF, 0]);
+    // The analog blocks' analog inputs are bits 8.. (ARITH_ACTIVE = 0x0300), their BOOL
+    // inputs the low bits.
+    for analog in [0x0100, 0x0300, 0x0700, 0x0F00, 0x1F00] {
+        candidates.extend([analog, analog | mask, analog | 0x1, analog | 0x3]);
+    }
     let mut base = None;
     for m in candidates {
         let mut p = params.clone();
