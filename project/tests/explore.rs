@@ -156,7 +156,14 @@ fn run_block(ty: &'static BlockType) -> (Figures, Vec<Violation>, Vec<String>) {
     let mut violations = Vec::new();
     let mut problems = Vec::new();
     let mut seen = std::collections::BTreeSet::new();
-    for cfg in configs(ty) {
+    let cfgs = configs(ty);
+    if cfgs.is_empty() {
+        problems.push(format!(
+            "{}: no configuration that init accepts",
+            ty.info.name
+        ));
+    }
+    for cfg in cfgs {
         match explore(ty, &cfg, None) {
             Ok((fig, v)) => {
                 total.configs += 1;
