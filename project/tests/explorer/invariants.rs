@@ -76,6 +76,9 @@ fn is_indicator(name: &str) -> bool {
             | "bTestError"
             | "bWait"
             | "bShutdownRequest"
+            // LIMIT, SLI2, SLP: which side the value left on (TRUE in SAFE by design).
+            | "bBelowMin"
+            | "bAboveMax"
     )
 }
 
