@@ -8,7 +8,7 @@
 #   MIRI_TESTS     the Miri test binaries (default below: the group and FFI suites, and the
 #                  block suites that go through the C functions' slice building; property
 #                  tests run a hundredth of their cases under Miri, tests/common depth_cases)
-#   DEEP_STEPS     which steps run (default "miri fuzz mutants peer")
+#   DEEP_STEPS     which steps run (default "miri fuzz mutants peer explore")
 #   PEER_ST        a copy of the PLCopen peer ST for the step peer (default: download it)
 #   MUTANTS_ARGS   more cargo-mutants options, e.g. "--in-diff build/my.diff" (only the
 #                  mutants on the lines of that diff; the files may then be omitted)
@@ -28,7 +28,7 @@ shift || true
 summary=()
 note() { summary+=("$*"); printf '\n==== %s ====\n' "$*"; }
 
-steps=${DEEP_STEPS:-"miri fuzz mutants peer"}
+steps=${DEEP_STEPS:-"miri fuzz mutants peer explore"}
 step() { [[ " $steps " == *" $1 "* ]]; }
 
 miri_tests=${MIRI_TESTS:-"ffi group_soundness links group fsoe_group analog_group group_schedule edm muting opmode rs sr ton ton2 twohand xor"}
@@ -99,6 +99,25 @@ if step mutants && { [ $# -gt 0 ] || [ -n "${MUTANTS_ARGS:-}" ]; }; then
         summary+=("$(printf '%s\n' "$unexplained" | sed 's/^/    /')")
     else
         note "mutants ${*:-} ${MUTANTS_ARGS:-}: $summary_line ($equivalent missed, all listed equivalents)"
+    fi
+fi
+
+# The state explorer (docs/testing.md "State exploration"): every option of the Boolean,
+# PLCopen and CONNECTION SHUTDOWN blocks (MUTING included), the analog and press/motion
+# blocks over their boundary values, and the explorer's self-test (three broken blocks
+# caught, each trace replayed in safelogic sim).
+if step explore; then
+    log=build/deep-check/explore.log
+    mkdir -p build/deep-check
+    if cargo test --release -q -p safelogic-project --test explore -- --ignored --nocapture >"$log" 2>&1; then
+        note "explore: every option and the analog/motion blocks: no violation, every state reached"
+    else
+        note "explore FAILED (see $log): $(grep -m1 -E 'VIOLATION|never reached|panicked' "$log")"
+    fi
+    if bash tools/explore_mutants.sh >build/deep-check/explore-mutants.log 2>&1; then
+        note "explore self-test: $(grep -c '^--- mutant' build/deep-check/explore-mutants.log) broken blocks caught and replayed"
+    else
+        note "explore self-test FAILED (see build/deep-check/explore-mutants.log)"
     fi
 fi
 
