@@ -719,13 +719,21 @@ fn forged_link_capacity_over_a_small_link_table_is_found_before_a_link_past_it_i
     // claim `forged` (count, capacity) with matching complements. The checked cycle reads
     // the slot after the last link: with the forged capacity that slot is past the table
     // (Miri: undefined behaviour), so the capacity must be found forged first.
-    for (real, forged) in [(1, (0, 4000)), (1, (3999, 4000)), (1, (1, 4000)), (0, (0, 5))] {
+    for (real, forged) in [
+        (1, (0, 4000)),
+        (1, (3999, 4000)),
+        (1, (1, 4000)),
+        (0, (0, 5)),
+    ] {
         let mem = Mem::new();
         let g = mem.at::<SL_GROUP>(G);
         let m = own_table::<SL_MEMBER>(1);
         let l = own_table::<SL_LINK>(real);
         // SAFETY: the group in the arena, each table in its own allocation.
-        assert_eq!(unsafe { ffi::sl_group_init(g, m, 1, l, real as u16) }, SL_OK);
+        assert_eq!(
+            unsafe { ffi::sl_group_init(g, m, 1, l, real as u16) },
+            SL_OK
+        );
         let e = estop_at(&mem, 512);
         assert_eq!(add(g, m, SL_TYPE_ESTOP, e.cast()), SL_OK);
         to_run(g, m, l, e);

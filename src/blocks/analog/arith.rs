@@ -18,8 +18,8 @@ use super::{diag_message, magic, Analog, SL_DIAG_VALUE_OVERFLOW, SL_DIAG_VALUE_U
 use crate::base::block::BlockInfo;
 use crate::base::block::FieldType;
 use crate::base::envelope::Block;
-use crate::base::layout::Zeroed;
 use crate::base::header::param_crc;
+use crate::base::layout::Zeroed;
 use crate::base::reason::{when, Rule, RuleDef, Unit};
 use crate::base::types::*;
 use core::marker::PhantomData;

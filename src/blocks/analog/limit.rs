@@ -14,8 +14,8 @@
 use super::{diag_message, magic, Analog};
 use crate::base::block::{Private, Registered};
 use crate::base::envelope::Block;
-use crate::base::header::F_CFG_INVALID;
 use crate::base::header::param_crc;
+use crate::base::header::F_CFG_INVALID;
 use crate::base::reason::{check, when, Rule, RuleDef, Unit};
 use crate::base::types::*;
 

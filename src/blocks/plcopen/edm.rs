@@ -254,8 +254,6 @@ impl crate::base::sf::SfBlock for SF_EDM {
     }
 }
 
-
-
 /// The steady-state fast path (`base::sf::SfSteady`): the key is every BOOL byte the call
 /// reads; the states that monitor the contactors read the monitoring time.
 impl crate::base::sf::SfSteady for SF_EDM {

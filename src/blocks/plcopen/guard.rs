@@ -189,8 +189,6 @@ impl SfBlock for SF_Guard {
     }
 }
 
-
-
 /// The steady-state fast path (`base::sf::SfSteady`): the key is the six BOOL inputs; the
 /// states waiting for the second switch read the discrepancy time.
 impl crate::base::sf::SfSteady for SF_Guard {

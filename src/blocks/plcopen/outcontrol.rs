@@ -202,8 +202,6 @@ impl SfBlock for SF_OutControl {
     }
 }
 
-
-
 /// The steady-state fast path (`base::sf::SfSteady`): the key is every BOOL byte the call
 /// reads; no state reads the time.
 impl crate::base::sf::SfSteady for SF_OutControl {

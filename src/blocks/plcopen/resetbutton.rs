@@ -175,7 +175,6 @@ impl SF_ResetButton {
     }
 }
 
-
 /// The steady-state fast path (`base::sf::SfSteady`): the key is every BOOL byte the call
 /// reads; the wait for the falling edge reads the trailing times.
 impl crate::base::sf::SfSteady for SF_ResetButton {

@@ -184,8 +184,6 @@ impl SfBlock for SF_SafetyRequest {
     }
 }
 
-
-
 /// The steady-state fast path (`base::sf::SfSteady`): the key is the five BOOL inputs;
 /// WAIT_FOR_CONF reads the monitoring time.
 impl crate::base::sf::SfSteady for SF_SafetyRequest {

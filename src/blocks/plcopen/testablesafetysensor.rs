@@ -267,8 +267,6 @@ impl crate::base::sf::SfBlock for SF_TestableSafetySensor {
     }
 }
 
-
-
 /// The steady-state fast path (`base::sf::SfSteady`): the key is every BOOL byte the call
 /// reads; the test states read the test time.
 impl crate::base::sf::SfSteady for SF_TestableSafetySensor {
