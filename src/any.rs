@@ -73,7 +73,8 @@ pub trait FunctionBlock {
     /// Why the block refuses or is in error, as one sentence (`sl_reason_text`), written
     /// into `out` (truncated to fit); returns the number of bytes written (no NUL).
     fn reason_text(&self, out: &mut [u8]) -> usize;
-    /// [`Self::reason_text`] as a `String`.
+    /// [`Self::reason_text`] as a `String` (with `std`; the block layer allocates nothing).
+    #[cfg(feature = "std")]
     fn reason(&self) -> String {
         let mut buf = [0u8; SL_REASON_TEXT_MAX];
         let n = self.reason_text(&mut buf);
@@ -280,6 +281,7 @@ macro_rules! any_block {
             }
 
             /// Why the block refuses or is in error ([`FunctionBlock::reason`]).
+            #[cfg(feature = "std")]
             pub fn reason(&self) -> String {
                 match self {
                     $(Self::$ty(b) => $crate::any::FunctionBlock::reason(b),)*
