@@ -72,13 +72,13 @@ fn a_refused_parameter_is_reported_at_its_line_with_the_allowed_range() {
     let text = "[project]\nname = \"t\"\n\n[[group]]\nname = \"g\"\n\n[[group.member]]\nname = \"th\"\ntype = \"TWOHAND\"\nactive = [\"bTwoHand1\", \"bTwoHand3\"]\ntDiscTimePairs = \"3 s\"\n";
     assert_eq!(
         project_error(text),
-        "11:18: member `th`: TWOHAND.tDiscTimePairs = 3000 ms is refused by TWOHAND's init; allowed with the other parameters as given: 0 ms … 2500 ms"
+        "11:18: member `th`: TWOHAND: tDiscTimePairs (3000 ms) must be <= 2500 ms [reason 0xE001]; allowed with the other parameters as given: 0 ms … 2500 ms"
     );
     // Two parameters that depend on each other: the range of the first one that alone
     // makes the block accept.
     let text = "[project]\nname = \"t\"\n\n[[group]]\nname = \"g\"\n\n[[group.member]]\nname = \"lim\"\ntype = \"LIMIT_INT\"\nactive = [\"nAnalogIn\"]\nnMinimumValue = 100\nnMaximumValue = 50\n";
     let e = project_error(text);
-    assert!(e.starts_with("11:17: member `lim`: LIMIT_INT.nMinimumValue = 100 is refused by LIMIT_INT's init; allowed with the other parameters as given: -32768 … 50"), "{e}");
+    assert!(e.starts_with("11:17: member `lim`: LIMIT_INT: nMinimumValue (100) must be <= nMaximumValue (50) [Text ID 0x4090]; allowed with the other parameters as given: -32768 … 50"), "{e}");
 }
 
 #[test]
