@@ -11,6 +11,9 @@ use safelogic::ffi::{
 use safelogic::*;
 use std::ffi::c_void;
 
+mod common;
+use common::FIG_132;
+
 /// The sentence `sl_reason_text` writes for the block at `p` (asserting SL_OK).
 fn reason<B>(tag: u16, p: &B) -> String {
     let mut buf = [0xAAu8; 300];
@@ -143,35 +146,6 @@ fn cammonitor_and_slp_refused_in_stop_show_the_diag_value_of_their_text_id() {
     assert_eq!(slp.nDiagTextId, SL_TEXT_SLP_MULTITURN_LL_ABOVE_UL);
     assert_eq!(slp.nDiag, SL_DIAG_SLP_MULTITURN_LL_ABOVE_UL);
 }
-
-/// The manual's LOADSENSING table (§4.25.3, Fig. 132), as printed.
-const FIG_132: [[i16; 5]; 25] = [
-    [-30, -200, -100, -180, -80],
-    [-25, -100, -50, -90, -60],
-    [-20, -50, 0, -40, -10],
-    [-15, 0, 100, 10, 90],
-    [-10, 100, 200, 110, 190],
-    [-5, 200, 300, 210, 290],
-    [0, 300, 400, 310, 390],
-    [5, 400, 500, 410, 490],
-    [10, 500, 600, 510, 590],
-    [15, 600, 700, 610, 690],
-    [20, 700, 800, 710, 790],
-    [25, 800, 900, 810, 890],
-    [30, 900, 1000, 910, 990],
-    [35, 1000, 1100, 1010, 1090],
-    [40, 1100, 1200, 1110, 1190],
-    [45, 1200, 1300, 1210, 1290],
-    [50, 1300, 1400, 1310, 1390],
-    [60, 1400, 1500, 1410, 1490],
-    [80, 1500, 1600, 1510, 1590],
-    [100, 1600, 1700, 1610, 1690],
-    [140, 1700, 1800, 1710, 1790],
-    [180, 1800, 2000, 1810, 1990],
-    [250, 2000, 3000, 2010, 2990],
-    [500, 3000, 4000, 3010, 3990],
-    [1000, 4000, 5000, 4010, 4990],
-];
 
 fn loadsensing(table: &[[i16; 5]; 25]) -> FB_LOADSENSING_INT {
     let mut fb = FB_LOADSENSING_INT {
