@@ -81,8 +81,9 @@ void h_check_diag_text(uint16_t type, uint16_t diag, const char *expected, int c
  * test_opmode.c, test_twohand.c, test_muting.c, test_edm.c, test_flipflop.c,
  * test_timers.c, test_arith.c, test_scale_speed.c, test_sli.c, test_loadsensing.c,
  * test_envelope.c, test_fsoe.c, test_slp.c, test_sbt.c, test_advposmon.c, test_cammonitor.c,
- * test_plcopen.c). */
+ * test_plcopen.c, test_reasons.c). */
 void run_estop_scenarios(void);
+void run_reason_scenarios(void);
 void run_plcopen_scenarios(void);
 void run_mon_scenarios(void);
 void run_api_scenarios(void);

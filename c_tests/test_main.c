@@ -255,6 +255,7 @@ int main(void)
     run_advposmon_scenarios();
     run_cammonitor_scenarios();
     run_plcopen_scenarios();
+    run_reason_scenarios();
     printf("%d passed, %d failed\n", h_passed, h_failed);
     return h_failed == 0 ? 0 : 1;
 }

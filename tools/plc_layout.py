@@ -21,9 +21,10 @@ TwinCAT, CODESYS and IEC plain .st files):
      <-> DUT ST_FB_<NAME>, any other C struct <-> DUT of the same name);
   3. checks that the DUTs of the TwinCAT and CODESYS sources carry {attribute 'pack_mode' := '8'};
   4. checks every function block FB_<NAME>: its VAR_INPUT/VAR_OUTPUT are exactly the C fields
-     that are neither reserved (aReserved*) nor private (nested structs), plus tNow/nStatus,
-     with the C field's size, inputs before outputs in C order; its body copies every input
-     into stData, calls the cycle function with the address of stData, copies every output;
+     that are neither reserved (aReserved*) nor private (nested structs), plus tNow/nStatus
+     and the STRING sReason, with the C field's size, inputs before outputs in C order; its
+     body copies every input into stData, calls the cycle function with the address of
+     stData, copies every output and reads sReason with the address of stData;
   5. checks that the self-test FB_SL_SELFTEST (and the IEC SL_SELFTEST_LAYOUT) tests SIZEOF and
      every member offset of every DUT with the C values.
 Every failure names the source, the block/struct and the field. Last line: "N passed, M failed".
@@ -456,7 +457,7 @@ def check_fbs(src: Source, csizes, cmembers) -> None:
                   and not is_nested_struct(m, src, cname)]
         byname = {m.name: m for m in public}
         seen_in = [n for n, _, _ in ins if n != "tNow"]
-        seen_out = [n for n, _, _ in outs if n != "nStatus"]
+        seen_out = [n for n, _, _ in outs if n not in ("nStatus", "sReason")]
         if is_sf(cname):
             # A PLCopen FB has exactly the PLCopen inputs: it reads its time into a VAR tNow.
             R.ok(not any(n == "tNow" for n, _, _ in ins), f"{src.label}: block {cname}: tNow is no VAR_INPUT")
@@ -467,6 +468,8 @@ def check_fbs(src: Source, csizes, cmembers) -> None:
                  f"{src.label}: block {cname}: VAR_INPUT tNow : UDINT missing")
         R.ok(any(n == "nStatus" and t.upper() == "DINT" for n, t, _ in outs),
              f"{src.label}: block {cname}: VAR_OUTPUT nStatus : DINT missing")
+        R.ok(any(n == "sReason" and t.upper().startswith("STRING") for n, t, _ in outs),
+             f"{src.label}: block {cname}: VAR_OUTPUT sReason : STRING missing")
         R.ok(sorted(seen_in + seen_out) == sorted(byname),
              f"{src.label}: block {cname}: FB variables {sorted(set(seen_in + seen_out) ^ set(byname))} "
              f"differ from the public C fields")
@@ -489,6 +492,10 @@ def check_fbs(src: Source, csizes, cmembers) -> None:
         if is_sf(cname):
             R.ok(re.search(r"tNow := (SL_TIME_NOW_MS\(EN := TRUE\)|TIME_TO_UDINT\(TIME\(\)\));", flat) is not None,
                  f"{src.label}: block {cname}: body does not read the time before the call")
+        # sReason: the reason text of this very instance, after a refusal or in ERROR
+        R.ok(re.search(r"sReason := \w+\(\s*(nType := UDINT_TO_UINT\(\w+\.SL_TYPE_\w+\), pBlock := ADR|pFb := (ADR|REF))"
+                       r"\(stData\)\)", flat) is not None,
+             f"{src.label}: block {cname}: body does not read sReason from the address of stData")
         for n in seen_in:
             R.ok(re.search(rf"stData\.{n}(\[\d+\])? := (TIME_TO_UDINT\(|SL_TIME_TO_MS\(tIn := )?{n}\b", flat)
                  is not None,

@@ -24,6 +24,11 @@ from pathlib import Path
 
 BLOCK = """
 /*
+ Type tag of FB_SYNTH (no library type has it: sl_reason_text gives "").
+ */
+#define SL_TYPE_SYNTH 65535
+
+/*
  FB SYNTH instance (synthetic block of tools/plc_synthetic.py: tests that tools/plcgen.py is
  generic). Inputs at offsets 8.., outputs at output base 40 + offsets.
  */

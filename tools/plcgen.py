@@ -701,9 +701,13 @@ def fb_decl(hdr: Header, fl: Flavour, blk: Block) -> str:
         out.append(f"    {f.name} : {t}{init};{cmt(f.doc)}")
     out.append(f"    nStatus : DINT := {zero_literal('DINT', fl.iec)};"
                f"{cmt(f'Return value of {blk.cycle.name}: SL_OK (0) or SL_E_* (< 0).')}")
+    if reason_source(hdr, fl, blk) is not None:
+        out.append(f"    sReason : {reason_string(fl)};{cmt(REASON_DOC)}")
     out.append("END_VAR")
     out.append("VAR")
     out.append(f"    stData : {dname};{cmt(f'The C instance (struct {blk.struct.name}); private part never written here.')}")
+    if reason_source(hdr, fl, blk) is not None:
+        out.append(f"    bReasonShown : BOOL := FALSE;{cmt('sReason holds a sentence (cleared once the block is fine).')}")
     if blk.is_sf:
         # A PLCopen FB has exactly the PLCopen inputs (plus the profile): the time is read
         # in the FB, so a user's existing call compiles and its timers run.
@@ -786,7 +790,48 @@ def fb_body(hdr: Header, fl: Flavour, blk: Block) -> str:
             for k in range(f.count):
                 out.append("    " + _assign(f"{f.name}[{k}]", from_dut, f"stData.{f.name}[{k}]"))
     out.append("END_IF;")
+    src = reason_source(hdr, fl, blk)
+    if src is not None:
+        cond = f"nStatus = {fl.const(hdr, 'SL_E_CONFIG', 'DINT')}"
+        if blk.is_sf:
+            cond += " OR Error"
+        elif any(f.name == "nState" for f in blk.outputs):
+            cond += f" OR nState = {fl.const(hdr, 'SL_STATE_ERROR', 'BYTE')}"
+        out.append("(* why the block refuses its parameters or is in ERROR: read only then, so a call")
+        out.append("   without an error costs nothing more *)")
+        out.append(f"IF {cond} THEN")
+        out.append(f"    sReason := {src};")
+        out.append("    bReasonShown := TRUE;")
+        out.append("ELSIF bReasonShown THEN")
+        out.append("    sReason := '';")
+        out.append("    bReasonShown := FALSE;")
+        out.append("END_IF;")
     return "\n".join(out) + "\n"
+
+
+# The FB output that names why a block refuses its parameters or is in ERROR (sl_reason_text).
+REASON_DOC = ("Why the block refuses its parameters (nStatus = SL_E_CONFIG: field, rule, values, reason code) or is "
+              "in ERROR (the latched diag), from sl_reason_text; '' otherwise. Truncated to the STRING length.")
+
+
+def reason_string(fl: Flavour) -> str:
+    """matiec has one STRING length (its body is fixed); the others take SL_REASON_TEXT_MAX."""
+    return "STRING" if fl.iec else f"STRING({REASON_LEN})"
+
+
+def reason_source(hdr: Header, fl: Flavour, blk: Block) -> Optional[str]:
+    """The ST expression that gives the block's reason sentence, or None without sl_reason_text."""
+    tag = f"SL_TYPE_{blk.name.upper()}"
+    if _hfunc(hdr, "sl_reason_text") is None or not any(d.name == tag for d in hdr.defines):
+        return None
+    if fl.iec:
+        return f"{iec_reason_name(blk)}(pFb := REF(stData))"
+    return f"{fl.fn_name('sl_reason_text') if fl.name == 'codesys' else 'SL_REASON_TEXT'}" \
+           f"(nType := UDINT_TO_UINT({GVL}.{tag}), pBlock := ADR(stData))"
+
+
+def iec_reason_name(blk: Block) -> str:
+    return f"SL_{blk.name.upper()}_REASON_TEXT"
 
 
 # --------------------------------------------------------------------------------------
@@ -1253,6 +1298,26 @@ def iec_text_functions(hdr: Header) -> List[Pou]:
                  "  while (b_[n_] != 0 && n_ < sizeof(SL_DIAG_TEXT.body)) SL_DIAG_TEXT.body[n_] = (u_int8_t)b_[n_], n_++;",
                  "  SL_DIAG_TEXT.len = (__strlen_t)n_;", "}"]
         objs.append(Pou("POU", "SL_DIAG_TEXT", decl, "\n".join(body) + "\n", end="END_FUNCTION"))
+    f = _hfunc(hdr, "sl_reason_text")
+    if f is not None:
+        # matiec checks REF_TO types strictly: one function a block type (as the group's add).
+        for b in hdr.blocks:
+            name = iec_reason_name(b)
+            tag = [d for d in hdr.defines if d.name == f"SL_TYPE_{b.name.upper()}"]
+            if not tag:
+                continue
+            decl = "\n".join([f"FUNCTION {name} : STRING",
+                              f"(* Why the {b.fb_name} instance pFb refuses its parameters, or its latched diag in "
+                              f"ERROR (sl_reason_text with type tag {tag[0].value}), truncated to the STRING length; "
+                              f"'' for a NULL pFb. FB {b.fb_name} shows it in sReason. *)",
+                              "VAR_INPUT", f"    pFb : REF_TO {dut_name(hdr, b.struct.name)};", "END_VAR"]) + "\n"
+            local = "sl_plc_reason_text"
+            body = [f"{name} := '';", "{"] + cpp_asm_decl(f, local)
+            body += [f"  char b_[sizeof({name}.body) + 1]; size_t n_ = 0;",
+                     f"  if ({local}((uint16_t){tag[0].value}, (void *)PFB, b_, sizeof b_) != 0) b_[0] = 0;",
+                     f"  while (b_[n_] != 0 && n_ < sizeof({name}.body)) {name}.body[n_] = (u_int8_t)b_[n_], n_++;",
+                     f"  {name}.len = (__strlen_t)n_;", "}"]
+            objs.append(Pou("POU", name, decl, "\n".join(body) + "\n", end="END_FUNCTION"))
     f = _hfunc(hdr, "sl_ton2_get_elapsed")
     ton2 = [b for b in hdr.blocks if b.name == "TON2"]
     if f is not None and ton2:
@@ -1276,7 +1341,18 @@ TEXT_FUNCS = [
      "Name of state nState of a block of type nType (an SL_TYPE_ value), e.g. 'RUN'; '?' for a value the block does not have."),
     ("sl_diag_text", "SL_DIAG_TEXT", [("nType", "UINT", "uint16_t"), ("nDiag", "WORD", "uint16_t")], 255,
      "Names of the diag bits nDiag of a block of type nType (an SL_TYPE_ value), '; '-separated, truncated to the STRING length; '' for an unknown type."),
+    ("sl_reason_text", "SL_REASON_TEXT", [("nType", "UINT", "uint16_t"), ("pBlock", "PTR", "const void *")], 256,
+     "Why the block at pBlock (its DUT, of type nType, an SL_TYPE_ value) refuses its parameters, or its latched "
+     "diag in ERROR, as one sentence naming the field, the rule and the values; '<NAME>: no refusal' otherwise; '' "
+     "for an unknown type or a NULL pBlock. Every generated FB shows it in its output sReason."),
 ]
+
+# STRING length of the reason sentence: SL_REASON_TEXT_MAX of the header.
+REASON_LEN = 256
+
+# The ST type of a block pointer in a text function: TwinCAT hands it to a TcCOM method as
+# PVOID; CODESYS passes it in the external function's parameter struct.
+TEXT_PTR = {"twincat": "PVOID", "codesys": "POINTER TO BYTE"}
 
 
 def text_funcs(hdr: Header) -> List[Tuple[str, str, List[Tuple[str, str, str]], int, str]]:
@@ -1300,7 +1376,7 @@ def text_function_objects(hdr: Header, fl: Flavour) -> List[Pou]:
             decl.append(f"(* {doc} Through the TcCOM module's method {cname} (see docs/plc-integration.md); '' when "
                         f"the module is not connected. *)")
         decl.append("VAR_INPUT")
-        decl += [f"    {a} : {t};" for a, t, _ in ins]
+        decl += [f"    {a} : {TEXT_PTR[fl.name] if t == 'PTR' else t};" for a, t, _ in ins]
         decl.append("END_VAR")
         body = [f"{name} := '';"]
         if fl.name == "twincat":
@@ -1318,7 +1394,7 @@ def text_itf_method_decl(cname: str, ins: List[Tuple[str, str, str]]) -> str:
            "VAR_INPUT",
            "    pBuf : PVOID;" + cmt("the caller's STRING"),
            "    nLen : UDINT;" + cmt("SIZEOF the caller's STRING")]
-    out += [f"    {a} : {t};" for a, t, _ in ins]
+    out += [f"    {a} : {TEXT_PTR['twincat'] if t == 'PTR' else t};" for a, t, _ in ins]
     out.append("END_VAR")
     return "\n".join(out) + "\n"
 
@@ -1530,7 +1606,7 @@ def cds_adapter_h(hdr: Header) -> str:
         out.append(f"/* FUNCTION {cn} : STRING({n}) -> {cname}() */")
         out.append(f"typedef struct tag{cn}_struct {{")
         for a, t, c in ins:
-            out.append(f"    {c} {a}; /* VAR_INPUT {a} : {t} */")
+            out.append(f"    {c} {a}; /* VAR_INPUT {a} : {TEXT_PTR['codesys'] if t == 'PTR' else t} */")
         out.append(f"    char {cn}[{n + 1}]; /* VAR_OUTPUT (return value) STRING({n}), NUL-terminated */")
         out.append(f"}} {cn}_struct;")
         out.append(f"void CDECL CDECL_EXT {cn}({cn}_struct *p);")
@@ -1602,7 +1678,7 @@ def tccom_cpp(hdr: Header) -> str:
         out.append("    return S_OK;")
         out.append("}")
         out.append("")
-    tc = {"uint16_t": "uint16_t", "uint8_t": "uint8_t"}
+    tc = {"uint16_t": "uint16_t", "uint8_t": "uint8_t", "const void *": "PVOID"}
     for cname, _, ins, _, _ in text_funcs(hdr):
         rest = "".join(f", {tc[c]} {a}" for a, _, c in ins)
         args = ", ".join(a for a, _, _ in ins)
@@ -1967,6 +2043,32 @@ def adapter_test_c(hdr: Header) -> str:
                 "    cds_sl_state_str(NULL);",
                 "    cds_sl_diag_text(NULL);",
                 "}", ""]
+    if _hfunc(hdr, "sl_reason_text") is not None and any(b.name == "TWOHAND" for b in hdr.blocks):
+        out += ["/* SL_REASON_TEXT through the adapter: a refused TWOHAND gives the direct call's sentence;",
+                " * a NULL block gives ''. */",
+                "static void test_reason(void)", "{",
+                "    FB_TWOHAND t;",
+                "    cds_sl_reason_text_struct q;",
+                "    char direct[SL_REASON_TEXT_MAX + 1];",
+                "    memset(&t, 0, sizeof t);",
+                "    t.wInputActive = 0xF;",
+                "    t.tDiscTime12 = 50;",
+                "    t.tDiscTime34 = 50;",
+                "    t.tDiscTimePairs = 3000;",
+                "    memset(&q, 0x55, sizeof q);",
+                "    q.nType = SL_TYPE_TWOHAND;",
+                "    q.pBlock = &t;",
+                "    cds_sl_reason_text(&q);",
+                "    (void)sl_reason_text(SL_TYPE_TWOHAND, &t, direct, sizeof direct);",
+                '    CHECK(strcmp(q.cds_sl_reason_text, direct) == 0 && strstr(direct, "tDiscTimePairs (3000 ms)") != NULL,',
+                '          "SL_REASON_TEXT(TWOHAND) = \'%s\', direct \'%s\'", q.cds_sl_reason_text, direct);',
+                "    memset(&q, 0x55, sizeof q);",
+                "    q.nType = SL_TYPE_TWOHAND;",
+                "    q.pBlock = NULL;",
+                "    cds_sl_reason_text(&q);",
+                '    CHECK(q.cds_sl_reason_text[0] == 0, "SL_REASON_TEXT(NULL block) = \'%s\'", q.cds_sl_reason_text);',
+                "    cds_sl_reason_text(NULL);",
+                "}", ""]
     scal = [f for f in hdr.funcs if not f.params and wrappable(hdr, f, True)]
     out.append("int main(void)")
     out.append("{")
@@ -1982,6 +2084,8 @@ def adapter_test_c(hdr: Header) -> str:
             out.append(f"    {{ {n}_struct q; {n}(&q); CHECK(q.{n} == {f.name}(), \"{n}\"); }}")
     if text_funcs(hdr):
         out.append("    test_texts();")
+    if _hfunc(hdr, "sl_reason_text") is not None and any(b.name == "TWOHAND" for b in hdr.blocks):
+        out.append("    test_reason();")
     out.append(f"    cds_{hdr.blocks[0].cycle.name}(NULL); /* a NULL parameter struct must not crash */")
     out.append('    printf("%d passed, %d failed\\n", passed, failed);')
     out.append("    return failed == 0 ? 0 : 1;")

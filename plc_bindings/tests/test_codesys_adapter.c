@@ -10229,6 +10229,33 @@ static void test_texts(void)
     cds_sl_diag_text(NULL);
 }
 
+/* SL_REASON_TEXT through the adapter: a refused TWOHAND gives the direct call's sentence;
+ * a NULL block gives ''. */
+static void test_reason(void)
+{
+    FB_TWOHAND t;
+    cds_sl_reason_text_struct q;
+    char direct[SL_REASON_TEXT_MAX + 1];
+    memset(&t, 0, sizeof t);
+    t.wInputActive = 0xF;
+    t.tDiscTime12 = 50;
+    t.tDiscTime34 = 50;
+    t.tDiscTimePairs = 3000;
+    memset(&q, 0x55, sizeof q);
+    q.nType = SL_TYPE_TWOHAND;
+    q.pBlock = &t;
+    cds_sl_reason_text(&q);
+    (void)sl_reason_text(SL_TYPE_TWOHAND, &t, direct, sizeof direct);
+    CHECK(strcmp(q.cds_sl_reason_text, direct) == 0 && strstr(direct, "tDiscTimePairs (3000 ms)") != NULL,
+          "SL_REASON_TEXT(TWOHAND) = '%s', direct '%s'", q.cds_sl_reason_text, direct);
+    memset(&q, 0x55, sizeof q);
+    q.nType = SL_TYPE_TWOHAND;
+    q.pBlock = NULL;
+    cds_sl_reason_text(&q);
+    CHECK(q.cds_sl_reason_text[0] == 0, "SL_REASON_TEXT(NULL block) = '%s'", q.cds_sl_reason_text);
+    cds_sl_reason_text(NULL);
+}
+
 int main(void)
 {
     test_param_structs();
@@ -10325,6 +10352,7 @@ int main(void)
     { cds_sl_time_now_ms_struct q; uint32_t t0 = sl_time_now_ms(); cds_sl_time_now_ms(&q);
       CHECK((uint32_t)(q.cds_sl_time_now_ms - t0) < 1000u, "cds_sl_time_now_ms = %u, sl_time_now_ms = %u", (unsigned)q.cds_sl_time_now_ms, (unsigned)t0); }
     test_texts();
+    test_reason();
     cds_sl_ton2_cycle(NULL); /* a NULL parameter struct must not crash */
     printf("%d passed, %d failed\n", passed, failed);
     return failed == 0 ? 0 : 1;

@@ -1553,3 +1553,11 @@ void CDECL CDECL_EXT cds_sl_diag_text(cds_sl_diag_text_struct *p)
     }
     (void)sl_diag_text(p->nType, p->nDiag, p->cds_sl_diag_text, sizeof p->cds_sl_diag_text);
 }
+
+void CDECL CDECL_EXT cds_sl_reason_text(cds_sl_reason_text_struct *p)
+{
+    if (p == 0) {
+        return;
+    }
+    (void)sl_reason_text(p->nType, p->pBlock, p->cds_sl_reason_text, sizeof p->cds_sl_reason_text);
+}

@@ -1494,6 +1494,14 @@ typedef struct tagcds_sl_diag_text_struct {
 } cds_sl_diag_text_struct;
 void CDECL CDECL_EXT cds_sl_diag_text(cds_sl_diag_text_struct *p);
 
+/* FUNCTION cds_sl_reason_text : STRING(256) -> sl_reason_text() */
+typedef struct tagcds_sl_reason_text_struct {
+    uint16_t nType; /* VAR_INPUT nType : UINT */
+    const void * pBlock; /* VAR_INPUT pBlock : POINTER TO BYTE */
+    char cds_sl_reason_text[257]; /* VAR_OUTPUT (return value) STRING(256), NUL-terminated */
+} cds_sl_reason_text_struct;
+void CDECL CDECL_EXT cds_sl_reason_text(cds_sl_reason_text_struct *p);
+
 /* X-macro over every entry point: X(name) for the runtime component's export table,
    e.g. #define X(n) s_pfCMRegisterAPI2(#n, (RTS_UINTPTR)n, 1, <crc from the Itf.m4>, <version>); */
 #define SL_CODESYS_FOR_EACH_EXTERNAL(X) \
@@ -1689,7 +1697,8 @@ void CDECL CDECL_EXT cds_sl_diag_text(cds_sl_diag_text_struct *p);
     X(cds_sl_group_cycle) \
     X(cds_sl_fsoe_init) \
     X(cds_sl_state_str) \
-    X(cds_sl_diag_text)
+    X(cds_sl_diag_text) \
+    X(cds_sl_reason_text)
 
 #ifdef __cplusplus
 }

@@ -1741,3 +1741,12 @@ HRESULT CSafeLogicModule::sl_diag_text(PVOID pBuf, uint32_t nLen, uint16_t nType
     (void)::sl_diag_text(nType, nDiag, static_cast<char *>(pBuf), nLen);
     return S_OK;
 }
+
+HRESULT CSafeLogicModule::sl_reason_text(PVOID pBuf, uint32_t nLen, uint16_t nType, PVOID pBlock)
+{
+    if (pBuf == NULL || nLen == 0) {
+        return E_POINTER;
+    }
+    (void)::sl_reason_text(nType, pBlock, static_cast<char *>(pBuf), nLen);
+    return S_OK;
+}
