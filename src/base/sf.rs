@@ -363,8 +363,9 @@ macro_rules! impl_sf_block {
 }
 
 /// Writes an `SF_` block's standard outputs from `o` (a statement list inside
-/// `write_outputs`): Ready, the safety output (`o.enabled`), those of SafetyDemand and
-/// ResetRequest the block has, Error, DiagCode.
+/// `write_outputs`): Ready, the safety output (`o.enabled`), the block's further BOOL
+/// outputs (`+ Field = value`), those of SafetyDemand and ResetRequest the block has,
+/// Error, DiagCode.
 #[macro_export]
 #[doc(hidden)]
 macro_rules! sf_outputs {
@@ -374,9 +375,10 @@ macro_rules! sf_outputs {
     (@f $s:ident $o:ident ResetRequest) => {
         $s.ResetRequest = u8::from($o.reset_request)
     };
-    ($s:ident, $o:ident, $out:ident $(, $f:ident)*) => {
+    ($s:ident, $o:ident, $out:ident $(+ $xf:ident = $xv:expr)* $(, $f:ident)*) => {
         $s.Ready = u8::from($o.ready);
         $s.$out = u8::from($o.enabled);
+        $($s.$xf = u8::from($xv);)*
         $($crate::sf_outputs!(@f $s $o $f);)*
         $s.Error = u8::from($o.error);
         $s.DiagCode = $o.diag_code;

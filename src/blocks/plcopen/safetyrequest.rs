@@ -164,8 +164,13 @@ crate::impl_sf_block!(SF_SafetyRequest {
             self.diag_state(),
             Some(SafetyRequestState::OpMode | SafetyRequestState::WaitConfOpMode)
         );
-        self.S_SafetyRequest = u8::from(request);
-        crate::sf_outputs!(self, o, S_SafetyActive, SafetyDemand, ResetRequest);
+        crate::sf_outputs!(
+            self,
+            o,
+            S_SafetyActive + S_SafetyRequest = request,
+            SafetyDemand,
+            ResetRequest
+        );
     }
 });
 
