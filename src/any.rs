@@ -169,17 +169,9 @@ impl<B: crate::base::block::Cyclic + crate::base::block::Registered + Member> Fu
         self.field_bits(self.field(name)?.offset)
     }
     fn set(&mut self, name: &str, value: i64) -> Result<(), Status> {
-        use crate::base::block::{Dir, Kind};
+        use crate::base::block::Dir;
         let f = self.field(name).ok_or(Status::Config)?;
-        let (min, max) = match f.kind {
-            Kind::Bool => (0, 1),
-            Kind::U8 => (0, i64::from(u8::MAX)),
-            Kind::U16 => (0, i64::from(u16::MAX)),
-            Kind::I16 => (i64::from(i16::MIN), i64::from(i16::MAX)),
-            Kind::U32 => (0, i64::from(u32::MAX)),
-            Kind::I32 => (i64::from(i32::MIN), i64::from(i32::MAX)),
-        };
-        if !(min..=max).contains(&value) {
+        if !in_range(f.kind, value) {
             return Err(Status::Config);
         }
         let bits = value as u32;

@@ -313,6 +313,78 @@ pub trait SfBlock: SfInstance + Sized {
     fn track(&mut self, _inp: &mut Self::In, _now: u32) {}
 }
 
+/// The private-header magic of an `SF_` block type (distinct from every TwinSAFE magic).
+pub const fn magic(tag: u16) -> u16 {
+    0x5F00 ^ tag
+}
+
+/// The part of an `impl SfBlock` that every `SF_` block writes alike, declared once: the
+/// magic from the type tag, the state and input types, the `Reset` byte (`none`: a block
+/// without Reset reads 0), the constants latched at activation (`consts(s): [..]`, up to
+/// two words read from `s`, the block; their number is `TIMES`) and their rules; the rest
+/// of the impl (decode, next, write_outputs, …) follows in braces.
+#[macro_export]
+#[doc(hidden)]
+macro_rules! impl_sf_block {
+    (@reset $s:ident none) => { 0 };
+    (@reset $s:ident $field:ident) => { $s.$field };
+    (@times) => { [0; 2] };
+    (@times $a:expr) => { [$a, 0] };
+    (@times $a:expr, $b:expr) => { [$a, $b] };
+    ($ty:ty {
+        tag: $tag:expr,
+        diag: $diag:ty,
+        input: $in:ty,
+        reset: $reset:ident,
+        consts($s:ident): [$($t:expr),* $(,)?]
+        $(, rules: [$($rule:expr),* $(,)?])? $(,)?
+    } { $($body:tt)* }) => {
+        impl $crate::base::sf::SfBlock for $ty {
+            const MAGIC: u16 = $crate::base::sf::magic($tag);
+            type Diag = $diag;
+            type In = $in;
+            const TIMES: usize = <[&str]>::len(&[$(stringify!($t)),*]);
+            $(const CONST_RULES: &'static [$crate::base::reason::RuleDef<$crate::base::sf::SfConsts>] =
+                &[$($rule),*];)?
+            #[inline(always)]
+            fn reset_raw(&self) -> u8 {
+                $crate::impl_sf_block!(@reset self $reset)
+            }
+            fn live_consts(&self) -> $crate::base::sf::SfConsts {
+                let $s = self;
+                $crate::base::sf::SfConsts {
+                    profile: $s.nDiagProfile,
+                    times: $crate::impl_sf_block!(@times $($t),*),
+                }
+            }
+            $($body)*
+        }
+    };
+}
+
+/// Writes an `SF_` block's standard outputs from `o` (a statement list inside
+/// `write_outputs`): Ready, the safety output (`o.enabled`), the block's further BOOL
+/// outputs (`+ Field = value`), those of SafetyDemand and ResetRequest the block has,
+/// Error, DiagCode.
+#[macro_export]
+#[doc(hidden)]
+macro_rules! sf_outputs {
+    (@f $s:ident $o:ident SafetyDemand) => {
+        $s.SafetyDemand = u8::from($o.safety_demand)
+    };
+    (@f $s:ident $o:ident ResetRequest) => {
+        $s.ResetRequest = u8::from($o.reset_request)
+    };
+    ($s:ident, $o:ident, $out:ident $(+ $xf:ident = $xv:expr)* $(, $f:ident)*) => {
+        $s.Ready = u8::from($o.ready);
+        $s.$out = u8::from($o.enabled);
+        $($s.$xf = u8::from($xv);)*
+        $($crate::sf_outputs!(@f $s $o $f);)*
+        $s.Error = u8::from($o.error);
+        $s.DiagCode = $o.diag_code;
+    };
+}
+
 /// `nDiagProfile` of a block that has both profiles.
 static PROFILE_BOTH: RuleDef<SfConsts> = RuleDef::new(
     "nDiagProfile",

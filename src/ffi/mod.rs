@@ -1258,6 +1258,38 @@ pub unsafe fn sl_group_schedule_sealed(
     })
 }
 
+/// A NUL-terminated text of at most `len` bytes into `buf`, the frame of the HMI text
+/// functions: `len` 0 writes nothing (SL_E_NULL for a NULL buf, else SL_OK); otherwise
+/// `buf[0]` is NUL first (an error of `fill` leaves ""), `fill` writes into all but the
+/// last byte and returns the length, and the NUL follows the text.
+///
+/// # Safety
+/// `buf` is NULL or points to at least `len` writable bytes.
+unsafe fn c_text(
+    buf: *mut c_char,
+    len: usize,
+    fill: impl FnOnce(&mut [u8]) -> Result<usize, i32>,
+) -> i32 {
+    let run = || -> Result<i32, i32> {
+        if len == 0 {
+            return Ok(if buf.is_null() { SL_E_NULL } else { SL_OK });
+        }
+        storage(buf.cast::<u8>(), len)?;
+        // SAFETY: checked by `storage`; `buf` points to `len` writable bytes (contract).
+        let out = unsafe { slice_mut(buf.cast::<u8>(), len) };
+        out[0] = 0;
+        let (text, nul) = out.split_at_mut(len - 1);
+        let n = fill(text)?;
+        // `n < len`, so index n is inside `text` or is `nul[0]`.
+        match text.get_mut(n) {
+            Some(b) => *b = 0,
+            None => nul[0] = 0,
+        }
+        Ok(SL_OK)
+    };
+    run().unwrap_or_else(|e| e)
+}
+
 /// Writes the readable names of the diag bits `nDiag` of a block of type `nType`
 /// (`SL_TYPE_<NAME>`) into `buf` as a NUL-terminated text ("discrepancy error input group 1;
 /// EDM monitoring error EDM1"), truncated to `nLen` bytes including the NUL. For an HMI.
@@ -1274,27 +1306,13 @@ pub unsafe extern "C" fn sl_diag_text(
     nLen: usize,
 ) -> i32 {
     ffi_boundary!(SL_E_INTERNAL, {
-        let run = || -> Result<i32, i32> {
-            if nLen == 0 {
-                return Ok(if buf.is_null() { SL_E_NULL } else { SL_OK });
-            }
-            storage(buf.cast::<u8>(), nLen)?;
-            // SAFETY: checked by `storage`; `buf` points to `nLen` writable bytes (contract).
-            let out = unsafe { slice_mut(buf.cast::<u8>(), nLen) };
-            let Some(info) = crate::registry::info(nType) else {
-                out[0] = 0;
-                return Err(SL_E_CONFIG);
-            };
-            let (text, nul) = out.split_at_mut(nLen - 1);
-            let n = crate::base::diag::diag_text(info, nDiag, text);
-            // `n < nLen`, so index n is inside `text` or is `nul[0]`.
-            match text.get_mut(n) {
-                Some(b) => *b = 0,
-                None => nul[0] = 0,
-            }
-            Ok(SL_OK)
-        };
-        run().unwrap_or_else(|e| e)
+        // SAFETY: `buf` is NULL or points to `nLen` writable bytes (contract).
+        unsafe {
+            c_text(buf, nLen, |text| {
+                let info = crate::registry::info(nType).ok_or(SL_E_CONFIG)?;
+                Ok(crate::base::diag::diag_text(info, nDiag, text))
+            })
+        }
     })
 }
 
@@ -1323,24 +1341,8 @@ pub unsafe extern "C" fn sl_reason_text(
     nLen: usize,
 ) -> i32 {
     ffi_boundary!(SL_E_INTERNAL, {
-        let run = || -> Result<i32, i32> {
-            if nLen == 0 {
-                return Ok(if buf.is_null() { SL_E_NULL } else { SL_OK });
-            }
-            storage(buf.cast::<u8>(), nLen)?;
-            // SAFETY: checked by `storage`; `buf` points to `nLen` writable bytes (contract).
-            let out = unsafe { slice_mut(buf.cast::<u8>(), nLen) };
-            out[0] = 0;
-            let (text, nul) = out.split_at_mut(nLen - 1);
-            let n = reason_of(nType, pBlock, text)?;
-            // `n < nLen`, so index n is inside `text` or is `nul[0]`.
-            match text.get_mut(n) {
-                Some(b) => *b = 0,
-                None => nul[0] = 0,
-            }
-            Ok(SL_OK)
-        };
-        run().unwrap_or_else(|e| e)
+        // SAFETY: `buf` is NULL or points to `nLen` writable bytes (contract).
+        unsafe { c_text(buf, nLen, |text| reason_of(nType, pBlock, text)) }
     })
 }
 

@@ -259,17 +259,8 @@ crate::base::block::block_states!(
 );
 
 /// Diag value texts of every arithmetic block (manual §4.16.2 ff.).
-const DIAG_VALUES: &[(u16, &str)] = &[
-    (0, "The output AnalogOut is correct"),
-    (
-        SL_DIAG_VALUE_UNDERFLOW,
-        "The output AnalogOut has an underflow (is less than the smallest possible value)",
-    ),
-    (
-        SL_DIAG_VALUE_OVERFLOW,
-        "The output AnalogOut has an overflow (is greater than the largest possible value)",
-    ),
-];
+const DIAG_VALUES: &[(u16, &str)] =
+    super::range_diag_values!("AnalogOut", "The output AnalogOut is correct", "");
 
 const fn info<O: ArithOp, T: Analog>() -> BlockInfo {
     BlockInfo {

@@ -113,17 +113,8 @@ crate::base::block::block_states!(
 );
 
 /// Diag value texts (manual §4.20.2).
-const DIAG_VALUES: &[(u16, &str)] = &[
-    (0, "The output CompOut is correct"),
-    (
-        super::SL_DIAG_VALUE_UNDERFLOW,
-        "The output CompOut has an underflow (is less than the smallest possible value)",
-    ),
-    (
-        super::SL_DIAG_VALUE_OVERFLOW,
-        "The output CompOut has an overflow (is greater than the largest possible value)",
-    ),
-];
+const DIAG_VALUES: &[(u16, &str)] =
+    super::range_diag_values!("CompOut", "The output CompOut is correct", "");
 
 crate::impl_member!([T: Analog, const P1: usize, const P2: usize] FB_COMPARE<T, P1, P2> {
     info: crate::blocks::analog::variant_info!(T, "COMPARE", CompareState, DIAG_VALUES;

@@ -109,17 +109,8 @@ crate::base::block::block_states!(
 );
 
 /// Diag value texts (manual §4.22.2).
-const DIAG_VALUES: &[(u16, &str)] = &[
-    (0, "No diagnostic information"),
-    (
-        SL_DIAG_VALUE_UNDERFLOW,
-        "The output ActValue has an underflow (is less than the smallest possible value)",
-    ),
-    (
-        SL_DIAG_VALUE_OVERFLOW,
-        "The output ActValue has an overflow (is greater than the largest possible value)",
-    ),
-];
+const DIAG_VALUES: &[(u16, &str)] =
+    super::range_diag_values!("ActValue", "No diagnostic information", "");
 
 crate::impl_member!([T: Analog, const P1: usize, const P2: usize] FB_COUNTER<T, P1, P2> {
     info: crate::blocks::analog::variant_info!(T, "COUNTER", CounterState, DIAG_VALUES;

@@ -124,6 +124,28 @@ macro_rules! variant_info {
 }
 pub(crate) use variant_info;
 
+/// The diag value texts of a block whose output has the range check (ABI-2 §12.1), in the
+/// manual's words: value 0 (`$none`), 1 underflow and 2 overflow of the output `$out`
+/// (`$end` closes the sentence where the manual's section does), then the block's own
+/// values: `range_diag_values!("Speed", "No diagnostic information", "")`.
+macro_rules! range_diag_values {
+    ($out:literal, $none:literal, $end:literal $(, $extra:expr)* $(,)?) => {
+        &[
+            (0, $none),
+            (
+                $crate::blocks::analog::SL_DIAG_VALUE_UNDERFLOW,
+                concat!("The output ", $out, " has an underflow (is less than the smallest possible value)", $end),
+            ),
+            (
+                $crate::blocks::analog::SL_DIAG_VALUE_OVERFLOW,
+                concat!("The output ", $out, " has an overflow (is greater than the largest possible value)", $end),
+            ),
+            $($extra),*
+        ]
+    };
+}
+pub(crate) use range_diag_values;
+
 /// Declares the variants of a generic analog block once: for each, its type tag (ABI-2
 /// §10.6: sequential from 16 in the order of §10.3) and its type alias, the generic struct
 /// with the variant's type and reserved gaps:

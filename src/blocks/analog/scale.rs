@@ -150,25 +150,19 @@ crate::base::block::block_states!(
 );
 
 /// Diag value texts (manual §4.23.2).
-const DIAG_VALUES: &[(u16, &str)] = &[
-    (0, "No diagnostic information"),
-    (
-        SL_DIAG_VALUE_UNDERFLOW,
-        "The output AnalogOut has an underflow (is less than the smallest possible value).",
-    ),
-    (
-        SL_DIAG_VALUE_OVERFLOW,
-        "The output AnalogOut has an overflow (is greater than the largest possible value).",
-    ),
+const DIAG_VALUES: &[(u16, &str)] = super::range_diag_values!(
+    "AnalogOut",
+    "No diagnostic information",
+    ".",
     (
         SL_DIAG_SCALE_MUL_OVERFLOW,
-        "A 32-bit overflow occurred during the multiplication.",
+        "A 32-bit overflow occurred during the multiplication."
     ),
     (
         SL_DIAG_SCALE_DIV_OVERFLOW,
-        "A 32-bit overflow occurred during the division due to rounding.",
+        "A 32-bit overflow occurred during the division due to rounding."
     ),
-];
+);
 
 /// Diag value → Text ID (manual §4.23.2 "Diag Message").
 const TEXTS: &[(u16, u16)] = &[

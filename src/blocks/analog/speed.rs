@@ -113,17 +113,8 @@ crate::base::block::block_states!(
 );
 
 /// Diag value texts (manual §4.24.2).
-const DIAG_VALUES: &[(u16, &str)] = &[
-    (0, "No diagnostic information"),
-    (
-        SL_DIAG_VALUE_UNDERFLOW,
-        "The output Speed has an underflow (is less than the smallest possible value)",
-    ),
-    (
-        SL_DIAG_VALUE_OVERFLOW,
-        "The output Speed has an overflow (is greater than the largest possible value)",
-    ),
-];
+const DIAG_VALUES: &[(u16, &str)] =
+    super::range_diag_values!("Speed", "No diagnostic information", "");
 
 crate::impl_member!([T: Analog, const P1: usize, const P2: usize] FB_SPEED<T, P1, P2> {
     info: crate::blocks::analog::variant_info!(T, "SPEED", SpeedState, DIAG_VALUES;

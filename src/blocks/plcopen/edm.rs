@@ -191,24 +191,14 @@ crate::impl_sf_member!(SF_EDM {
     output: [Ready, S_EDM_Out, SafetyDemand, ResetRequest, Error],
 });
 
-impl crate::base::sf::SfBlock for SF_EDM {
-    const MAGIC: u16 = crate::blocks::plcopen::restart::magic(SL_TYPE_SF_EDM);
-    type Diag = SfEdmState;
-    type In = SfEdmIn;
-    const TIMES: usize = 1;
-    const CONST_RULES: &'static [crate::base::reason::RuleDef<sf::SfConsts>] =
-        &[sf::time0_rule("MonitoringTime")];
-
-    #[inline(always)]
-    fn reset_raw(&self) -> u8 {
-        self.Reset
-    }
-    fn live_consts(&self) -> sf::SfConsts {
-        sf::SfConsts {
-            profile: self.nDiagProfile,
-            times: [self.MonitoringTime, 0],
-        }
-    }
+crate::impl_sf_block!(SF_EDM {
+    tag: SL_TYPE_SF_EDM,
+    diag: SfEdmState,
+    input: SfEdmIn,
+    reset: Reset,
+    consts(s): [s.MonitoringTime],
+    rules: [sf::time0_rule("MonitoringTime")],
+} {
     /// An invalid S_OutControl / S_StartReset byte reads FALSE; an invalid feedback byte
     /// is neither released nor switched (an error wherever the feedback is checked).
     #[inline(always)]
@@ -243,16 +233,11 @@ impl crate::base::sf::SfBlock for SF_EDM {
     }
     #[inline(always)]
     fn write_outputs(&mut self, o: &sf::SfOut) {
-        self.Ready = u8::from(o.ready);
-        self.S_EDM_Out = u8::from(o.enabled);
-        self.SafetyDemand = u8::from(o.safety_demand);
-        self.ResetRequest = u8::from(o.reset_request);
-        self.Error = u8::from(o.error);
-        self.DiagCode = o.diag_code;
+        crate::sf_outputs!(self, o, S_EDM_Out, SafetyDemand, ResetRequest);
         // The end of every call: the R_TRIG memory of S_OutControl.
         sf::store_trigger(&mut self.stPrivate, self.S_OutControl);
     }
-}
+});
 
 /// The steady-state fast path (`base::sf::SfSteady`): the key is every BOOL byte the call
 /// reads; the states that monitor the contactors read the monitoring time.

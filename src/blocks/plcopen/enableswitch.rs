@@ -9,7 +9,7 @@
 //! position 3.
 
 use crate::base::bools;
-use crate::base::sf::{ResetIn, SfConsts, SfOut, SL_SF_PRIVATE};
+use crate::base::sf::{ResetIn, SfOut, SL_SF_PRIVATE};
 use crate::base::types::SL_BOOL;
 
 /// Block type tag of SF_EnableSwitch (`SL_MEMBER.nType`, `sl_diag_text`).
@@ -148,21 +148,13 @@ crate::impl_sf_member!(SF_EnableSwitch {
     output: [Ready, S_EnableSwitchOut, SafetyDemand, ResetRequest, Error],
 });
 
-impl crate::base::sf::SfBlock for SF_EnableSwitch {
-    const MAGIC: u16 = crate::blocks::plcopen::restart::magic(SL_TYPE_SF_ENABLESWITCH);
-    type Diag = EnableSwitchState;
-    type In = EnableSwitchIn;
-
-    #[inline(always)]
-    fn reset_raw(&self) -> u8 {
-        self.Reset
-    }
-    fn live_consts(&self) -> SfConsts {
-        SfConsts {
-            profile: self.nDiagProfile,
-            times: [0; 2],
-        }
-    }
+crate::impl_sf_block!(SF_EnableSwitch {
+    tag: SL_TYPE_SF_ENABLESWITCH,
+    diag: EnableSwitchState,
+    input: EnableSwitchIn,
+    reset: Reset,
+    consts(s): [],
+} {
     #[inline(always)]
     fn decode(&self) -> (Self::In, bool) {
         let p = bools::pack([
@@ -200,14 +192,9 @@ impl crate::base::sf::SfBlock for SF_EnableSwitch {
     }
     #[inline(always)]
     fn write_outputs(&mut self, o: &SfOut) {
-        self.Ready = u8::from(o.ready);
-        self.S_EnableSwitchOut = u8::from(o.enabled);
-        self.SafetyDemand = u8::from(o.safety_demand);
-        self.ResetRequest = u8::from(o.reset_request);
-        self.Error = u8::from(o.error);
-        self.DiagCode = o.diag_code;
+        crate::sf_outputs!(self, o, S_EnableSwitchOut, SafetyDemand, ResetRequest);
     }
-}
+});
 
 /// The private state's size is part of the struct's layout (56 bytes, no implicit padding).
 const _: () = assert!(core::mem::size_of::<SF_EnableSwitch>() == 56);

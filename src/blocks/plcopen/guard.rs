@@ -8,7 +8,7 @@
 //! (`nDiagProfile`; docs/semantics.md QG1–QG5).
 
 use crate::base::bools;
-use crate::base::sf::{ResetIn, SfBlock, SfConsts, SfOut, SL_SF_PRIVATE};
+use crate::base::sf::{ResetIn, SfOut, SL_SF_PRIVATE};
 use crate::base::time;
 use crate::base::types::SL_BOOL;
 
@@ -101,24 +101,14 @@ crate::impl_sf_member!(SF_Guard {
     output: [Ready, S_GuardOut, SafetyDemand, ResetRequest, Error],
 });
 
-impl SfBlock for SF_Guard {
-    const MAGIC: u16 = crate::blocks::plcopen::restart::magic(SL_TYPE_SF_GUARD);
-    type Diag = SfGuardState;
-    type In = SfGuardIn;
-    const TIMES: usize = 1;
-    const CONST_RULES: &'static [crate::base::reason::RuleDef<SfConsts>] =
-        &[crate::base::sf::time0_rule("DiscrepancyTime")];
-
-    #[inline(always)]
-    fn reset_raw(&self) -> u8 {
-        self.Reset
-    }
-    fn live_consts(&self) -> SfConsts {
-        SfConsts {
-            profile: self.nDiagProfile,
-            times: [self.DiscrepancyTime, 0],
-        }
-    }
+crate::impl_sf_block!(SF_Guard {
+    tag: SL_TYPE_SF_GUARD,
+    diag: SfGuardState,
+    input: SfGuardIn,
+    reset: Reset,
+    consts(s): [s.DiscrepancyTime],
+    rules: [crate::base::sf::time0_rule("DiscrepancyTime")],
+} {
     #[inline(always)]
     fn decode(&self) -> (SfGuardIn, bool) {
         let p = bools::pack([
@@ -180,14 +170,9 @@ impl SfBlock for SF_Guard {
     }
     #[inline(always)]
     fn write_outputs(&mut self, o: &SfOut) {
-        self.Ready = u8::from(o.ready);
-        self.S_GuardOut = u8::from(o.enabled);
-        self.SafetyDemand = u8::from(o.safety_demand);
-        self.ResetRequest = u8::from(o.reset_request);
-        self.Error = u8::from(o.error);
-        self.DiagCode = o.diag_code;
+        crate::sf_outputs!(self, o, S_GuardOut, SafetyDemand, ResetRequest);
     }
-}
+});
 
 /// The steady-state fast path (`base::sf::SfSteady`): the key is the six BOOL inputs; the
 /// states waiting for the second switch read the discrepancy time.

@@ -11,7 +11,7 @@
 //! is the private field `tModesOff`.
 
 use crate::base::bools;
-use crate::base::sf::{DiagState, ResetIn, SfConsts, SfOut, SL_SF_PRIVATE};
+use crate::base::sf::{DiagState, ResetIn, SfOut, SL_SF_PRIVATE};
 use crate::base::time;
 use crate::base::types::SL_BOOL;
 
@@ -207,31 +207,19 @@ crate::impl_sf_member!(SF_ModeSelector {
     ],
 });
 
-impl crate::base::sf::SfBlock for SF_ModeSelector {
-    const MAGIC: u16 = crate::blocks::plcopen::restart::magic(SL_TYPE_SF_MODESELECTOR);
-    type Diag = ModeState;
-    type In = ModeIn;
-    const TIMES: usize = 2;
-    const CONST_RULES: &'static [crate::base::reason::RuleDef<SfConsts>] = &[
+crate::impl_sf_block!(SF_ModeSelector {
+    tag: SL_TYPE_SF_MODESELECTOR,
+    diag: ModeState,
+    input: ModeIn,
+    reset: Reset,
+    // ModeMonitorTime and AutoSetMode, the two constants: AutoSetMode as the second
+    // latched word (0 / 1; an invalid byte is out of range: C3FC, semantics QM5).
+    consts(s): [s.ModeMonitorTime, crate::base::sf::bool_const(s.AutoSetMode)],
+    rules: [
         crate::base::sf::time0_rule("ModeMonitorTime"),
         crate::base::sf::bool1_rule("AutoSetMode"),
-    ];
-
-    #[inline(always)]
-    fn reset_raw(&self) -> u8 {
-        self.Reset
-    }
-    /// ModeMonitorTime and AutoSetMode, the two constants: AutoSetMode as the second
-    /// latched word (0 / 1; an invalid byte is out of range: C3FC, semantics QM5).
-    fn live_consts(&self) -> SfConsts {
-        SfConsts {
-            profile: self.nDiagProfile,
-            times: [
-                self.ModeMonitorTime,
-                crate::base::sf::bool_const(self.AutoSetMode),
-            ],
-        }
-    }
+    ],
+} {
     #[inline(always)]
     fn decode(&self) -> (Self::In, bool) {
         let m = bools::pack([
@@ -323,7 +311,7 @@ impl crate::base::sf::SfBlock for SF_ModeSelector {
         self.Error = u8::from(o.error);
         self.DiagCode = o.diag_code;
     }
-}
+});
 
 /// The layout: 80 bytes, no implicit padding.
 const _: () = assert!(core::mem::size_of::<SF_ModeSelector>() == 80);

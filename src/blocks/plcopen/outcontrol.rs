@@ -9,7 +9,7 @@
 
 use crate::base::bools;
 use crate::base::header::F_ERRACK_PREV;
-use crate::base::sf::{ResetIn, SfBlock, SfConsts, SfOut, SL_SF_PRIVATE};
+use crate::base::sf::{ResetIn, SfOut, SL_SF_PRIVATE};
 use crate::base::types::SL_BOOL;
 
 /// Block type tag of SF_OutControl (`SL_MEMBER.nType`, `sl_diag_text`).
@@ -103,26 +103,16 @@ crate::impl_sf_member!(SF_OutControl {
     output: [Ready, S_OutControl, SafetyDemand, ResetRequest, Error],
 });
 
-impl SfBlock for SF_OutControl {
-    const MAGIC: u16 = crate::blocks::plcopen::restart::magic(SL_TYPE_SF_OUTCONTROL);
-    type Diag = OutControlState;
-    type In = OutControlIn;
-    /// StaticControl is latched as the envelope's first constant: 0 or 1, an invalid byte
-    /// as a value above `SL_SF_TIME_MAX`, refused at activation (C3FC; semantics QO4).
-    const TIMES: usize = 1;
-    const CONST_RULES: &'static [crate::base::reason::RuleDef<SfConsts>] =
-        &[crate::base::sf::bool0_rule("StaticControl")];
-
-    #[inline(always)]
-    fn reset_raw(&self) -> u8 {
-        self.Reset
-    }
-    fn live_consts(&self) -> SfConsts {
-        SfConsts {
-            profile: self.nDiagProfile,
-            times: [crate::base::sf::bool_const(self.StaticControl), 0],
-        }
-    }
+crate::impl_sf_block!(SF_OutControl {
+    tag: SL_TYPE_SF_OUTCONTROL,
+    diag: OutControlState,
+    input: OutControlIn,
+    reset: Reset,
+    // StaticControl is latched as the envelope's first constant: 0 or 1, an invalid byte
+    // as a value above `SL_SF_TIME_MAX`, refused at activation (C3FC; semantics QO4).
+    consts(s): [crate::base::sf::bool_const(s.StaticControl)],
+    rules: [crate::base::sf::bool0_rule("StaticControl")],
+} {
     #[inline(always)]
     fn decode(&self) -> (OutControlIn, bool) {
         let p = bools::pack([
@@ -193,14 +183,9 @@ impl SfBlock for SF_OutControl {
     }
     #[inline(always)]
     fn write_outputs(&mut self, o: &SfOut) {
-        self.Ready = u8::from(o.ready);
-        self.S_OutControl = u8::from(o.enabled);
-        self.SafetyDemand = u8::from(o.safety_demand);
-        self.ResetRequest = u8::from(o.reset_request);
-        self.Error = u8::from(o.error);
-        self.DiagCode = o.diag_code;
+        crate::sf_outputs!(self, o, S_OutControl, SafetyDemand, ResetRequest);
     }
-}
+});
 
 /// The steady-state fast path (`base::sf::SfSteady`): the key is every BOOL byte the call
 /// reads; no state reads the time.

@@ -108,25 +108,14 @@ macro_rules! pair_block {
             output: [Ready, $output, SafetyDemand, Error],
         });
 
-        impl $crate::base::sf::SfBlock for $ty {
-            const MAGIC: u16 = $crate::blocks::plcopen::restart::magic($tag);
-            type Diag = $crate::blocks::plcopen::pair::PairState;
-            type In = $crate::blocks::plcopen::pair::PairIn;
-            const TIMES: usize = 1;
-            const CONST_RULES: &'static [$crate::base::reason::RuleDef<
-                $crate::base::sf::SfConsts,
-            >] = &[$crate::base::sf::time0_rule("DiscrepancyTime")];
-
-            #[inline(always)]
-            fn reset_raw(&self) -> u8 {
-                0
-            }
-            fn live_consts(&self) -> $crate::base::sf::SfConsts {
-                $crate::base::sf::SfConsts {
-                    profile: self.nDiagProfile,
-                    times: [self.DiscrepancyTime, 0],
-                }
-            }
+        $crate::impl_sf_block!($ty {
+            tag: $tag,
+            diag: $crate::blocks::plcopen::pair::PairState,
+            input: $crate::blocks::plcopen::pair::PairIn,
+            reset: none,
+            consts(s): [s.DiscrepancyTime],
+            rules: [$crate::base::sf::time0_rule("DiscrepancyTime")],
+        } {
             /// An invalid byte reads as the channel's inactive value (NC FALSE, NO TRUE).
             #[inline(always)]
             fn decode(&self) -> (Self::In, bool) {
@@ -153,13 +142,9 @@ macro_rules! pair_block {
             }
             #[inline(always)]
             fn write_outputs(&mut self, o: &$crate::base::sf::SfOut) {
-                self.Ready = u8::from(o.ready);
-                self.$output = u8::from(o.enabled);
-                self.SafetyDemand = u8::from(o.safety_demand);
-                self.Error = u8::from(o.error);
-                self.DiagCode = o.diag_code;
+                $crate::sf_outputs!(self, o, $output, SafetyDemand);
             }
-        }
+        });
     };
 }
 

@@ -95,16 +95,19 @@ crate::impl_sf_member!(SF_ResetButton {
     activate: ResetRequested,
 });
 
-impl crate::base::sf::SfBlock for SF_ResetButton {
-    const MAGIC: u16 = crate::blocks::plcopen::restart::magic(SL_TYPE_SF_RESETBUTTON);
-    type Diag = ResetButtonState;
-    type In = ();
-    const HAS_V10: bool = false;
-    const TIMES: usize = 2;
-    const CONST_RULES: &'static [RuleDef<crate::base::sf::SfConsts>] = &[
+crate::impl_sf_block!(SF_ResetButton {
+    tag: SL_TYPE_SF_RESETBUTTON,
+    diag: ResetButtonState,
+    input: (),
+    reset: ResetIn,
+    // ResetIn runs through the envelope's R_TRIG, evaluated in every call.
+    consts(s): [s.TrailingMinimum, s.TrailingMaximum],
+    rules: [
         crate::base::sf::time0_rule("TrailingMinimum"),
         crate::base::sf::time1_rule("TrailingMaximum"),
-    ];
+    ],
+} {
+    const HAS_V10: bool = false;
     /// The trailing times are usable (C000 otherwise).
     const PARAM_RULES: &'static [RuleDef<crate::base::sf::SfConsts>] = &[
         RuleDef::new("TrailingMinimum", Rule::AtLeast, Unit::Ms, |c| {
@@ -118,18 +121,6 @@ impl crate::base::sf::SfBlock for SF_ResetButton {
             |c| when(c.times[0] > c.times[1], c.times[0], c.times[1]),
         ),
     ];
-
-    /// ResetIn runs through the envelope's R_TRIG, evaluated in every call.
-    #[inline(always)]
-    fn reset_raw(&self) -> u8 {
-        self.ResetIn
-    }
-    fn live_consts(&self) -> crate::base::sf::SfConsts {
-        crate::base::sf::SfConsts {
-            profile: self.nDiagProfile,
-            times: [self.TrailingMinimum, self.TrailingMaximum],
-        }
-    }
     #[inline(always)]
     fn decode(&self) -> (Self::In, bool) {
         ((), false)
@@ -153,12 +144,9 @@ impl crate::base::sf::SfBlock for SF_ResetButton {
     }
     #[inline(always)]
     fn write_outputs(&mut self, o: &crate::base::sf::SfOut) {
-        self.Ready = u8::from(o.ready);
-        self.ResetOut = u8::from(o.enabled);
-        self.Error = u8::from(o.error);
-        self.DiagCode = o.diag_code;
+        crate::sf_outputs!(self, o, ResetOut);
     }
-}
+});
 
 impl SF_ResetButton {
     /// An instance with PLCopen's initial values (`sl_sf_resetbutton_defaults`):

@@ -114,22 +114,14 @@ macro_rules! restart_interlock_block {
             output: [Ready, $output, SafetyDemand, ResetRequest, Error],
         });
 
-        impl $crate::base::sf::SfBlock for $ty {
-            const MAGIC: u16 = $crate::blocks::plcopen::restart::magic($tag);
-            type Diag = $crate::blocks::plcopen::restart::RestartState;
-            type In = $crate::blocks::plcopen::restart::RestartIn;
+        $crate::impl_sf_block!($ty {
+            tag: $tag,
+            diag: $crate::blocks::plcopen::restart::RestartState,
+            input: $crate::blocks::plcopen::restart::RestartIn,
+            reset: Reset,
+            consts(s): [],
+        } {
             const HAS_V10: bool = $v10;
-
-            #[inline(always)]
-            fn reset_raw(&self) -> u8 {
-                self.Reset
-            }
-            fn live_consts(&self) -> $crate::base::sf::SfConsts {
-                $crate::base::sf::SfConsts {
-                    profile: self.nDiagProfile,
-                    times: [0; 2],
-                }
-            }
             #[inline(always)]
             fn decode(&self) -> (Self::In, bool) {
                 let p =
@@ -156,20 +148,10 @@ macro_rules! restart_interlock_block {
             }
             #[inline(always)]
             fn write_outputs(&mut self, o: &$crate::base::sf::SfOut) {
-                self.Ready = u8::from(o.ready);
-                self.$output = u8::from(o.enabled);
-                self.SafetyDemand = u8::from(o.safety_demand);
-                self.ResetRequest = u8::from(o.reset_request);
-                self.Error = u8::from(o.error);
-                self.DiagCode = o.diag_code;
+                $crate::sf_outputs!(self, o, $output, SafetyDemand, ResetRequest);
             }
-        }
+        });
     };
-}
-
-/// The private-header magic of an `SF_` block type (distinct from every TwinSAFE magic).
-pub const fn magic(tag: u16) -> u16 {
-    0x5F00 ^ tag
 }
 
 /// The private state's size is part of every `SF_` struct's layout (ABI: 40 bytes).

@@ -7,7 +7,7 @@
 //! and then `S_OpMode` TRUE (docs/semantics.md QR1–QR6).
 
 use crate::base::bools;
-use crate::base::sf::{ResetIn, SfBlock, SfConsts, SfOut, SL_SF_PRIVATE};
+use crate::base::sf::{ResetIn, SfOut, SL_SF_PRIVATE};
 use crate::base::time;
 use crate::base::types::SL_BOOL;
 
@@ -95,24 +95,14 @@ crate::impl_sf_member!(SF_SafetyRequest {
     ],
 });
 
-impl SfBlock for SF_SafetyRequest {
-    const MAGIC: u16 = crate::blocks::plcopen::restart::magic(SL_TYPE_SF_SAFETYREQUEST);
-    type Diag = SafetyRequestState;
-    type In = SafetyRequestIn;
-    const TIMES: usize = 1;
-    const CONST_RULES: &'static [crate::base::reason::RuleDef<SfConsts>] =
-        &[crate::base::sf::time0_rule("MonitoringTime")];
-
-    #[inline(always)]
-    fn reset_raw(&self) -> u8 {
-        self.Reset
-    }
-    fn live_consts(&self) -> SfConsts {
-        SfConsts {
-            profile: self.nDiagProfile,
-            times: [self.MonitoringTime, 0],
-        }
-    }
+crate::impl_sf_block!(SF_SafetyRequest {
+    tag: SL_TYPE_SF_SAFETYREQUEST,
+    diag: SafetyRequestState,
+    input: SafetyRequestIn,
+    reset: Reset,
+    consts(s): [s.MonitoringTime],
+    rules: [crate::base::sf::time0_rule("MonitoringTime")],
+} {
     #[inline(always)]
     fn decode(&self) -> (SafetyRequestIn, bool) {
         let p = bools::pack([self.S_OpMode, self.S_Acknowledge, self.S_StartReset]);
@@ -174,15 +164,15 @@ impl SfBlock for SF_SafetyRequest {
             self.diag_state(),
             Some(SafetyRequestState::OpMode | SafetyRequestState::WaitConfOpMode)
         );
-        self.Ready = u8::from(o.ready);
-        self.S_SafetyActive = u8::from(o.enabled);
-        self.S_SafetyRequest = u8::from(request);
-        self.SafetyDemand = u8::from(o.safety_demand);
-        self.ResetRequest = u8::from(o.reset_request);
-        self.Error = u8::from(o.error);
-        self.DiagCode = o.diag_code;
+        crate::sf_outputs!(
+            self,
+            o,
+            S_SafetyActive + S_SafetyRequest = request,
+            SafetyDemand,
+            ResetRequest
+        );
     }
-}
+});
 
 /// The steady-state fast path (`base::sf::SfSteady`): the key is the five BOOL inputs;
 /// WAIT_FOR_CONF reads the monitoring time.

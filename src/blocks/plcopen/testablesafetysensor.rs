@@ -185,12 +185,16 @@ crate::impl_sf_member!(SF_TestableSafetySensor {
     ],
 });
 
-impl crate::base::sf::SfBlock for SF_TestableSafetySensor {
-    const MAGIC: u16 = crate::blocks::plcopen::restart::magic(SL_TYPE_SF_TESTABLESAFETYSENSOR);
-    type Diag = TssState;
-    type In = TssIn;
-    const TIMES: usize = 2;
-    const CONST_RULES: &'static [RuleDef<sf::SfConsts>] = &[sf::time0_rule("TestTime")];
+crate::impl_sf_block!(SF_TestableSafetySensor {
+    tag: SL_TYPE_SF_TESTABLESAFETYSENSOR,
+    diag: TssState,
+    input: TssIn,
+    reset: Reset,
+    // NoExternalTest is a constant too: latched as the second "time" (its raw byte, so a
+    // change is C3FD; only 1 reads TRUE).
+    consts(s): [s.TestTime, u32::from(s.NoExternalTest)],
+    rules: [sf::time0_rule("TestTime")],
+} {
     /// TestTime ≤ 150 ms (C000 otherwise).
     const PARAM_RULES: &'static [RuleDef<sf::SfConsts>] =
         &[RuleDef::new("TestTime", Rule::AtMost, Unit::Ms, |c| {
@@ -200,19 +204,6 @@ impl crate::base::sf::SfBlock for SF_TestableSafetySensor {
                 SF_TSS_MAX_TEST_TIME,
             )
         })];
-
-    #[inline(always)]
-    fn reset_raw(&self) -> u8 {
-        self.Reset
-    }
-    /// NoExternalTest is a constant too: latched as the second "time" (its raw byte, so a
-    /// change is C3FD; only 1 reads TRUE).
-    fn live_consts(&self) -> sf::SfConsts {
-        sf::SfConsts {
-            profile: self.nDiagProfile,
-            times: [self.TestTime, u32::from(self.NoExternalTest)],
-        }
-    }
     /// An invalid byte reads FALSE (S_OSSD_In: the demand; NoExternalTest: the manual test).
     #[inline(always)]
     fn decode(&self) -> (Self::In, bool) {
@@ -265,7 +256,7 @@ impl crate::base::sf::SfBlock for SF_TestableSafetySensor {
         // The end of every call: the R_TRIG memory of StartTest.
         sf::store_trigger(&mut self.stPrivate, self.StartTest);
     }
-}
+});
 
 /// The steady-state fast path (`base::sf::SfSteady`): the key is every BOOL byte the call
 /// reads; the test states read the test time.

@@ -170,21 +170,13 @@ macro_rules! two_hand_block {
             output: [Ready, S_TwoHandOut, SafetyDemand, Error],
         });
 
-        impl $crate::base::sf::SfBlock for $ty {
-            const MAGIC: u16 = $crate::blocks::plcopen::restart::magic($tag);
-            type Diag = $crate::blocks::plcopen::twohand::$diag;
-            type In = $crate::blocks::plcopen::twohand::TwoHandIn;
-
-            #[inline(always)]
-            fn reset_raw(&self) -> u8 {
-                0
-            }
-            fn live_consts(&self) -> $crate::base::sf::SfConsts {
-                $crate::base::sf::SfConsts {
-                    profile: self.nDiagProfile,
-                    times: [0; 2],
-                }
-            }
+        $crate::impl_sf_block!($ty {
+            tag: $tag,
+            diag: $crate::blocks::plcopen::twohand::$diag,
+            input: $crate::blocks::plcopen::twohand::TwoHandIn,
+            reset: none,
+            consts(s): [],
+        } {
             #[inline(always)]
             fn decode(&self) -> (Self::In, bool) {
                 let p = $crate::base::bools::pack([self.S_Button1, self.S_Button2]);
@@ -209,13 +201,9 @@ macro_rules! two_hand_block {
             }
             #[inline(always)]
             fn write_outputs(&mut self, o: &$crate::base::sf::SfOut) {
-                self.Ready = u8::from(o.ready);
-                self.S_TwoHandOut = u8::from(o.enabled);
-                self.SafetyDemand = u8::from(o.safety_demand);
-                self.Error = u8::from(o.error);
-                self.DiagCode = o.diag_code;
+                $crate::sf_outputs!(self, o, S_TwoHandOut, SafetyDemand);
             }
-        }
+        });
 
         const _: () = assert!(core::mem::size_of::<$ty>() == 56);
     };
