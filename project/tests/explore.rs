@@ -50,53 +50,6 @@ const UNREACHED: &[(&str, &str, &str)] = &[
     ("SF_TestableSafetySensor", "TestTime above 150 ms", "parameters that init accepts never give it"),
 ];
 
-/// States the explored configurations do not reach yet and whose reason is not yet
-/// established (reported by the test as open, not as passed; docs/testing.md).
-const OPEN: &[(&str, &str)] = &[
-    (
-        "SF_Guard",
-        "guard closed; S_AutoReset decides whether a Reset is awaited",
-    ),
-    (
-        "SF_SafetyRequest",
-        "actuator in the safe state confirmed, S_SafetyActive TRUE",
-    ),
-    (
-        "SF_SafetyRequest",
-        "S_Acknowledge lost while the safe state was confirmed",
-    ),
-    ("SF_SafetyRequest", "static Reset in ERR_ACK_LOST"),
-    ("SF_ResetButton", "valid reset: ResetOut TRUE for one call"),
-    (
-        "SF_ResetButton",
-        "TrailingMaximum elapsed before the falling edge of ResetIn; waiting for a rising edge",
-    ),
-    (
-        "SF_TestableSafetySensor",
-        "automatic test phase 2: transmitter on, waiting for the OSSD TRUE within TestTime",
-    ),
-    (
-        "SF_TestableSafetySensor",
-        "sensor free, output TRUE; the automatic test passed",
-    ),
-    (
-        "SF_TestableSafetySensor",
-        "safety demand; the sensor was tested",
-    ),
-    (
-        "SF_TestableSafetySensor",
-        "sensor free again; waiting for a rising edge of Reset (tested)",
-    ),
-    (
-        "SF_TestableSafetySensor",
-        "test phase 2: the OSSD did not switch TRUE within TestTime",
-    ),
-    (
-        "SF_TestableSafetySensor",
-        "static Reset in WAIT_FOR_RESET_2",
-    ),
-];
-
 const NO_V1_PROFILE: &str = "a v1.0 DiagCode of a block without the v1.0 profile";
 
 /// Why ERROR (and RESET after it) is out of the inputs' reach: the block has no input error
@@ -192,23 +145,31 @@ fn run_block(ty: &'static BlockType) -> (Figures, Vec<Violation>, Vec<String>) {
         }
     }
     if violations.is_empty() {
-        for (v, n) in explorer::invariants::state_list(ty) {
-            let n = n.as_str();
-            if seen.contains(&v) {
-                continue;
-            }
-            if OPEN.iter().any(|(b, s)| *b == ty.info.name && *s == n) {
-                println!(
-                    "OPEN: {}: state {n} (0x{v:04X}) not reached by the explored configurations",
-                    ty.info.name
-                );
-                continue;
-            }
-            if !UNREACHED
+        let states = explorer::invariants::state_list(ty);
+        let is_listed = |n: &str| {
+            UNREACHED
                 .iter()
                 .any(|(b, s, _)| *b == ty.info.name && *s == n)
-            {
-                problems.push(format!("{}: state {n} ({v}) never reached", ty.info.name));
+        };
+        for (v, n) in &states {
+            let (v, n) = (*v, n.as_str());
+            let listed = is_listed(n);
+            // Both ways: a listed state reached under every code it has (a PLCopen state
+            // has its v2.01 and its v1.0 code) is a stale entry.
+            let stale = listed
+                && states
+                    .iter()
+                    .filter(|(_, n2)| n2 == n)
+                    .all(|(v2, _)| seen.contains(v2));
+            match (seen.contains(&v), listed) {
+                (false, false) => {
+                    problems.push(format!("{}: state {n} ({v}) never reached", ty.info.name))
+                }
+                (true, true) if stale => problems.push(format!(
+                    "{}: state {n} ({v}) is listed in UNREACHED but reached",
+                    ty.info.name
+                )),
+                _ => {}
             }
         }
     }

@@ -230,11 +230,16 @@ pub fn time_steps(cfg: &Config) -> (Vec<u32>, u32) {
     (dts, max_t + 1)
 }
 
-/// A time parameter: a UDINT whose name begins with `t` (tDiscTime12, tDelay, T_…).
+/// A time parameter (ms): a UDINT whose name begins with `t` (tDiscTime12, tDelay, T_…),
+/// or a PLCopen TIME (DiscrepancyTime, MonitoringTime, TestTime, ModeMonitorTime,
+/// TrailingMinimum, TrailingMaximum).
 pub fn is_time(f: &Field) -> bool {
     f.dir == Dir::Param
         && f.kind == Kind::U32
-        && (f.name.starts_with('t') || f.name.starts_with("T_"))
+        && (f.name.starts_with('t')
+            || f.name.starts_with("T_")
+            || f.name.ends_with("Time")
+            || f.name.starts_with("Trailing"))
 }
 
 /// Every input combination: the product of the driven inputs' valid values, plus, for
