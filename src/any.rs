@@ -86,7 +86,7 @@ pub trait FunctionBlock {
 pub const SL_REASON_TEXT_MAX: usize = 256;
 
 /// The sentence of [`FunctionBlock::reason_text`]: the first parameter rule the live
-/// parameters break ("TWOHAND: tDiscTimePairs (3000 ms) must be <= 500 ms [reason
+/// parameters break ("TWOHAND: tDiscTimePairs (3000 ms) must be <= 2500 ms [reason
 /// 0xE001]"); for valid parameters in an error state, the latched diag ("LIMIT_INT: ERROR:
 /// MinValue is greater than MaxValue [Text ID 0x4090, Par2 5, Par3 3]", a PLCopen block's
 /// DiagCode and its text); otherwise `"<NAME>: no refusal"`.
