@@ -353,7 +353,7 @@ const TIMED: [(&str, &[u8]); 3] = [
 ];
 
 /// The fast path's types and the states it must have served in.
-const EXPECTED: [(&str, &[u8]); 11] = [
+const EXPECTED: [(&str, &[u8]); 12] = [
     (
         "ESTOP",
         &[
@@ -421,6 +421,7 @@ const EXPECTED: [(&str, &[u8]); 11] = [
         "TON2",
         &[SL_STATE_RUN, SL_STATE_SAFE, SL_STATE_STOP, SL_STATE_ERROR],
     ),
+    ("TWOHAND", &[SL_STATE_SAFE, SL_STATE_STOP, SL_STATE_ERROR]),
 ];
 
 /// The types whose full cycle is idempotent (`Steady::IDEMPOTENT`: their `settle` stores
@@ -434,8 +435,8 @@ const IDEMPOTENT: [&str; 9] = [
 const START_MOVES_ON: [&str; 3] = ["TON", "TON2", "TOF"];
 
 /// The types with a fast path that may not claim it: the probe finds calls after which the
-/// same bytes move their state on (the guards' steps).
-const NOT_IDEMPOTENT: [&str; 2] = ["ESTOP", "MON"];
+/// same bytes move their state on (the guards' steps, TWOHAND's).
+const NOT_IDEMPOTENT: [&str; 3] = ["ESTOP", "MON", "TWOHAND"];
 
 #[test]
 fn the_idempotent_types_are_the_ones_that_claim_it() {
@@ -454,6 +455,7 @@ fn the_idempotent_types_are_the_ones_that_claim_it() {
         ("TON", claim::<FB_TON>()),
         ("TON2", claim::<FB_TON2>()),
         ("TOF", claim::<FB_TOF>()),
+        ("TWOHAND", claim::<FB_TWOHAND>()),
     ];
     for (name, (idempotent, start_moves_on)) in claims {
         assert_eq!(idempotent, IDEMPOTENT.contains(&name), "{name}");

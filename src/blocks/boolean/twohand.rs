@@ -9,7 +9,7 @@
 //! `tDiscTimePairs` ≠ 0 the second group must follow the first within that time.
 //! Readings of the manual: docs/semantics.md rows H1–H14.
 
-use crate::base::block::BlockInfo;
+use crate::base::block::{BlockInfo, Private};
 use crate::base::bools;
 use crate::base::envelope::Block;
 use crate::base::header::{param_crc, SL_PRIVATE_HEADER};
@@ -485,11 +485,56 @@ impl Block for FB_TWOHAND {
         failed & pair_bad != 0 || need_safe & !latched != 0 || (need_released && !released)
     }
 
+    crate::base::envelope::steady_hooks!();
+
     fn write_outputs(&mut self) {
         let h = self.stPrivate.stHeader;
         self.bError = u8::from(h.nState == SL_STATE_ERROR);
         self.bTwoHandOut = u8::from(h.nState == SL_STATE_RUN);
         self.nState = h.nState;
         self.nDiag = h.wDiag;
+    }
+}
+
+/// The fast-path slot (`base::envelope`) in the private part's reserved word: the key
+/// (gathered BOOL bytes) in bytes 0-1, its check word in bytes 2-3, little-endian. The
+/// field keeps its name and size (ABI: the private part is opaque, its size is not).
+impl crate::base::envelope::SteadyPrivate for SL_TWOHAND_PRIVATE {
+    type Key = u16;
+    #[inline(always)]
+    fn head_mut(&mut self) -> &mut SL_PRIVATE_HEADER {
+        &mut self.stHeader
+    }
+    #[inline(always)]
+    fn slot(&self) -> [u16; 2] {
+        let [a, b, c, d] = self.aReserved;
+        [u16::from_le_bytes([a, b]), u16::from_le_bytes([c, d])]
+    }
+    #[inline(always)]
+    fn set_slot(&mut self, slot: Option<[u16; 2]>) {
+        let [key, check] = slot.unwrap_or_default();
+        let [a, b] = key.to_le_bytes();
+        let [c, d] = check.to_le_bytes();
+        self.aReserved = [a, b, c, d];
+    }
+}
+
+impl crate::base::envelope::Steady for FB_TWOHAND {
+    /// The four buttons, bRun and bErrAck gathered into bits.
+    #[inline(always)]
+    fn steady_key(&self) -> Option<u16> {
+        let [a, b, c, d] = self.inputs();
+        bools::key([a, b, c, d, self.bRun, self.bErrAck])
+    }
+    /// No pair discrepancy timer runs and the window between the groups (1BUTTON,
+    /// 2BUTTON) is not open: the outcome depends on the time only through the clock check.
+    #[inline(always)]
+    fn quiet(&self) -> bool {
+        let h = &self.stPrivate.stHeader;
+        h.wAux & AUX_PAIR_TIMERS == 0
+            && !matches!(
+                h.nState,
+                SL_STATE_TWOHAND_1BUTTON | SL_STATE_TWOHAND_2BUTTON
+            )
     }
 }
