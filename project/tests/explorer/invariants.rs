@@ -103,19 +103,22 @@ fn allowed_states(block: &str, output: &str) -> Option<&'static [&'static str]> 
 fn sf_output_exception(block: &str, output: &str, diag: u16, profile: i64) -> bool {
     match (block, output) {
         // S_SafetyRequest TRUE = operation mode requested from the actuator: OP_MODE and
-        // WAIT_FOR_CONF_OPMODE (v2.01 0x8802 / 0x8804, v1.0 0x8002 / 0x8012).
+        // WAIT_FOR_CONF_OPMODE (v2.01 0x8802 / 0x8804, v1.0 0x8002 / 0x8012); semantics QR3.
         ("SF_SafetyRequest", "S_SafetyRequest") => match profile {
             1 => matches!(diag, 0x8002 | 0x8012),
             _ => matches!(diag, 0x8802 | 0x8804),
         },
         // The sensor is free (output TRUE) also untested and during the automatic test:
-        // ESPE_FREE_NO_TEST, TEST_REQUEST, TEST_ACTIVE (same codes in both profiles).
+        // ESPE_FREE_NO_TEST, TEST_REQUEST, TEST_ACTIVE (same codes in both profiles);
+        // semantics QT4, QT5.
         ("SF_TestableSafetySensor", "S_OSSD_Out") => matches!(diag, 0x8010 | 0x8020 | 0x8030),
-        // S_TestOut drives the sensor's test input: TRUE whenever no test runs.
+        // S_TestOut drives the sensor's test input: TRUE whenever no test runs (QT4, QT5).
         ("SF_TestableSafetySensor", "S_TestOut") => true,
-        // The mode selected stays TRUE while the selector waits (0x8005) or is locked.
+        // The mode selected stays TRUE while the selector waits (0x8005) or is locked
+        // (semantics QM2, QM3).
         ("SF_ModeSelector", _) => (0x8000..0x9000).contains(&diag),
-        // S_SafetyActive reports the drive's safe state, TRUE at 0x8012 (safe) as well.
+        // S_SafetyActive reports the drive's safe state, TRUE at 0x8012 (safe) as well
+        // (semantics QR3).
         ("SF_SafetyRequest", "S_SafetyActive") => (0x8000..0x9000).contains(&diag),
         _ => false,
     }
@@ -298,7 +301,8 @@ fn off_state_exception(_block: &str, _output: &str) -> bool {
 
 /// The blocks whose errors are the static-Reset errors alone (C001 / C011), left only
 /// when Reset is released (PLCopen SF_EmergencyStop, SF_ESPE, SF_PSE): the other blocks'
-/// errors are also left when their inputs are released (discrepancy, two-hand, guard).
+/// errors are also left when their inputs are released (discrepancy, two-hand (semantics
+/// QH4), guard).
 fn restart_interlock(block: &str) -> bool {
     matches!(block, "SF_EmergencyStop" | "SF_ESPE" | "SF_PSE")
 }
