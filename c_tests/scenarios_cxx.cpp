@@ -24,3 +24,4 @@
 #include "test_advposmon.c"
 #include "test_cammonitor.c"
 #include "test_plcopen.c"
+#include "test_reasons.c"
