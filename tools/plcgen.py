@@ -1142,10 +1142,11 @@ def iec_group_objects(hdr: Header, fl: Flavour) -> List[Pou]:
     # SL_GROUP_ADD_<NAME>
     f = funcs["sl_group_add_member"]
     for b in hdr.blocks:
-        tag = [d for d in hdr.defines if d.name == f"SL_TYPE_{b.name}"]
+        # the tag of a PLCopen block is upper case (SL_TYPE_SF_EMERGENCYSTOP)
+        tag = [d for d in hdr.defines if d.name == f"SL_TYPE_{b.name.upper()}"]
         if not tag:
-            continue
-        n = f"SL_GROUP_ADD_{b.name}"
+            raise GenError(f"the header defines no SL_TYPE_{b.name.upper()} for {b.struct.name}")
+        n = f"SL_GROUP_ADD_{b.name.upper()}"
         decl = "\n".join([f"FUNCTION {n} : DINT",
                           f"(* Adds a {dut_name(hdr, b.struct.name)} (type tag {tag[0].value}) as the next member; members are "
                           f"numbered 0, 1, ... in the order they are added. C: {ascii_doc(f.doc)} *)"] + head +
