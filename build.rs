@@ -6,11 +6,13 @@
 //! also written to include/safelogic.h (the committed copy a test compares against).
 
 use cbindgen::bindgen::ir::{IntKind, PrimitiveType, Type};
-use std::collections::{HashMap, HashSet};
+use std::collections::{BTreeMap, HashMap, HashSet};
 use std::env;
 use std::fs;
 use std::path::{Path, PathBuf};
 
+#[path = "build_support/abi.rs"]
+mod abi;
 #[path = "build_support/expand.rs"]
 mod expand;
 
@@ -50,16 +52,26 @@ fn main() {
         .export
         .include
         .extend(rows.iter().map(|r| r.ty.clone()));
+    // The declarations kept as data (build_support/abi.rs), and the sources as cbindgen and
+    // the expander read them: a copy of src/ with each include of generated declarations
+    // replaced by the declarations (cbindgen does not expand `include!`), so the header
+    // lists them where they stand in their module.
+    let generated = abi::generate(&dir.join("src"), &out.join("abi"));
+    let sources = rust_sources(&dir.join("src"), &generated);
+    let view = out.join("cbindgen_src");
+    for (rel, text) in &sources {
+        let path = view.join(rel);
+        fs::create_dir_all(path.parent().expect("parent")).expect("create OUT_DIR/cbindgen_src");
+        fs::write(path, text).expect("write OUT_DIR/cbindgen_src");
+    }
     // Structs a family declares through one `*_struct!` macro, written out for cbindgen.
     let expanded = out.join("expanded_structs.rs");
-    fs::write(
-        &expanded,
-        expand::expand_struct_macros(&rust_sources(&dir.join("src"))),
-    )
-    .expect("write OUT_DIR/expanded_structs.rs");
+    let texts: Vec<String> = sources.into_iter().map(|(_, text)| text).collect();
+    fs::write(&expanded, expand::expand_struct_macros(&texts))
+        .expect("write OUT_DIR/expanded_structs.rs");
     let bindings = cbindgen::Builder::new()
-        .with_crate(&dir)
         .with_src(&expanded)
+        .with_src(view.join("lib.rs"))
         .with_config(config)
         .generate()
         .expect("cbindgen could not generate the header");
@@ -80,8 +92,9 @@ fn main() {
     }
 }
 
-/// The text of every `.rs` file below `dir`, in path order (a stable header).
-fn rust_sources(dir: &Path) -> Vec<String> {
+/// Every `.rs` file below `dir` in path order (a stable header), by its path relative to
+/// `dir`, with its generated declarations in place of their include.
+fn rust_sources(dir: &Path, generated: &BTreeMap<String, String>) -> Vec<(String, String)> {
     let mut paths = Vec::new();
     let mut todo = vec![dir.to_path_buf()];
     while let Some(d) = todo.pop() {
@@ -97,7 +110,17 @@ fn rust_sources(dir: &Path) -> Vec<String> {
     paths.sort();
     paths
         .iter()
-        .map(|p| fs::read_to_string(p).expect("read a source file"))
+        .map(|p| {
+            let rel = p
+                .strip_prefix(dir)
+                .expect("below src")
+                .to_str()
+                .expect("UTF-8 path")
+                .replace('\\', "/");
+            let text = fs::read_to_string(p).expect("read a source file");
+            let text = abi::substitute(&rel, &text, generated);
+            (rel, text)
+        })
         .collect()
 }
 

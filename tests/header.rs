@@ -22,7 +22,8 @@ fn defines(header: &str) -> Vec<(String, String)> {
         .collect()
 }
 
-/// Every `pub const SL_…: u32` of the library's sources (the C `uint32_t` constants).
+/// Every `pub const SL_…: u32` of the library's sources (the C `uint32_t` constants), the
+/// declarations build.rs generates from the `*.abi.toml` data files (`OUT_DIR/abi`) included.
 fn u32_constants() -> Vec<String> {
     fn walk(dir: &std::path::Path, out: &mut Vec<String>) {
         for e in std::fs::read_dir(dir).unwrap() {
@@ -43,6 +44,10 @@ fn u32_constants() -> Vec<String> {
     let mut out = Vec::new();
     walk(
         &std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("src"),
+        &mut out,
+    );
+    walk(
+        std::path::Path::new(concat!(env!("OUT_DIR"), "/abi")),
         &mut out,
     );
     out

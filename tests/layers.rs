@@ -55,7 +55,19 @@ fn read_tree(root: &Path) -> Tree {
             if matches!(segs.last().map(String::as_str), Some("mod" | "lib")) {
                 segs.pop();
             }
-            (segs.join("::"), std::fs::read_to_string(&p).unwrap())
+            let mut text = std::fs::read_to_string(&p).unwrap();
+            // The declarations build.rs generates from the file's `.abi.toml` are part of it,
+            // where it includes them (`include!(concat!(env!("OUT_DIR"), "/abi/…"))`).
+            if let Some(start) = text.find("include!(concat!(") {
+                let end = start + text[start..].find("));").unwrap() + 3;
+                if text[start..end].contains("\"/abi/") {
+                    let generated = Path::new(env!("OUT_DIR"))
+                        .join("abi")
+                        .join(p.strip_prefix(root).unwrap());
+                    text.replace_range(start..end, &std::fs::read_to_string(generated).unwrap());
+                }
+            }
+            (segs.join("::"), text)
         })
         .collect()
 }

@@ -130,10 +130,11 @@ case $mode in
         cp "src/$file" "$scratch/src/src/$file"
         echo "--- self-test: $name: the check fails (exit $rc) and says: $(printf '[%s] ' "$@")"
     }
-    # FB_ESTOP's bEDM1 and bEDM2 trade places (offsets 1 and 2; the doc comments stay, so
-    # build.rs's own offset checks still agree and only a comparison with the release sees it)
-    run_break moved-field blocks/boolean/estop.rs \
-        's/pub bEDM1: SL_BOOL,/pub bEDM_X: SL_BOOL,/; s/pub bEDM2: SL_BOOL,/pub bEDM1: SL_BOOL,/; s/pub bEDM_X: SL_BOOL,/pub bEDM2: SL_BOOL,/' \
+    # FB_ESTOP's bEDM1 and bEDM2 trade places (offsets 1 and 2, in its declarations' data
+    # file; the doc comments stay, so build.rs's own offset checks still agree and only a
+    # comparison with the release sees it)
+    run_break moved-field blocks/boolean/estop.abi.toml \
+        's/^name = "bEDM1"$/name = "bEDM_X"/; s/^name = "bEDM2"$/name = "bEDM1"/; s/^name = "bEDM_X"$/name = "bEDM2"/' \
         "'function i32 sl_estop_cycle(FB_ESTOP*, u32)' has some indirect sub-type changes" \
         "'u8 bEDM1' offset changed from 8 to 16 (in bits)" \
         "layout offsetof(FB_ESTOP,bEDM1): 1 -> 2"

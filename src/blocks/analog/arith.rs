@@ -39,21 +39,7 @@ super::analog_variants! {
         DINT SL_TYPE_DIV_DINT = 30 => FB_DIV_DINT[i32, 4, 4], UDINT SL_TYPE_DIV_UDINT = 31 => FB_DIV_UDINT[u32, 4, 4]
 }
 
-/// `nRounding` Floor: toward −∞ (docs/semantics.md A2).
-pub const SL_ROUNDING_FLOOR: u16 = 0;
-/// `nRounding` Ceil: toward +∞.
-pub const SL_ROUNDING_CEIL: u16 = 1;
-/// `nRounding` Round: commercial rounding, half away from zero (2.5 → 3, −2.5 → −3).
-pub const SL_ROUNDING_ROUND: u16 = 2;
-
-/// Diag message "An underflow has occurred" (parameters: AnalogIn1, AnalogIn2).
-pub const SL_TEXT_ARITH_UNDERFLOW: u16 = 0x4080;
-/// Diag message "An overflow has occurred" (parameters: AnalogIn1, AnalogIn2).
-pub const SL_TEXT_ARITH_OVERFLOW: u16 = 0x4081;
-
-/// `wInputActive` of every arithmetic block: AnalogIn1 (bit 8) and AnalogIn2 (bit 9),
-/// both required (ABI-2 §10.5).
-pub const ARITH_ACTIVE: u16 = 0x0300;
+include!(concat!(env!("OUT_DIR"), "/abi/blocks/analog/arith.rs"));
 
 /// An operation: ADD, SUB, MUL (same layout) or DIV.
 pub trait ArithOp: 'static {
@@ -164,81 +150,7 @@ pub fn divide(a: i128, b: i128, rounding: u16) -> i128 {
     }
 }
 
-crate::base::layout::private_struct! {
-    /// Private state of the arithmetic blocks (48 bytes). Never written by the user.
-    SL_ARITH_PRIVATE {
-        /// Latched `wInputActive`.
-        pub wActive: u16,
-        /// Latched `nRounding` (0 for ADD, SUB, MUL).
-        pub wRounding: u16,
-        /// The result of the last RUN cycle as a 32-bit pattern.
-        pub dwOut: u32,
-        /// Diag message parameters 2 and 3 latched at the ERROR entry.
-        pub adwPar: [u32; 2],
-        pub aReserved: [u8; 4],
-    }
-}
-
 const _: () = assert!(core::mem::size_of::<SL_ARITH_PRIVATE>() == 48);
-
-crate::base::layout::block_struct! {
-    /// FB ADD / SUB / MUL instance (ABI-2 §11.2). `P1` and `P2` are the reserved bytes that
-    /// make the 16- and 32-bit layouts differ (after the parameters, after AnalogOut).
-    FB_ARITH[O: ArithOp, T: Analog; P1, P2] {
-        no_bool_inputs;
-        /// At the analog input base 24: AnalogIn1 (active bit 8, required).
-        pub nAnalogIn1: T,
-        /// At 24 + W: AnalogIn2 (active bit 9, required).
-        pub nAnalogIn2: T,
-        /// At 24 + 2W: bits 8 and 9 must be set, no other (ARITH_ACTIVE).
-        pub wInputActive: u16,
-        /// Reserved up to the output base (16-bit: 2 bytes, 32-bit: 6).
-        pub aReserved2: [u8; P1],
-        /// At the output base (16-bit 32, 32-bit 40): Error, TRUE in ERROR only.
-        pub bError: SL_BOOL,
-        /// Reserved up to the analog output base.
-        pub aReserved3: [u8; 7],
-        /// At the output base + 8: AnalogOut, the result in RUN, else 0.
-        pub nAnalogOut: T,
-        /// Reserved up to the info data.
-        pub aReserved4: [u8; P2],
-    } info [aReserved5, aReserved6] SL_ARITH_PRIVATE, "48 bytes":
-        "the manual's status value (RUN, STOP, ERROR, RESET).",
-        "diag value (1 underflow, 2 overflow) + library bits 13-15.",
-        "Text ID of the latched diag message (0x4080, 0x4081), 0 = none.",
-        "message parameter 2 (AnalogIn1 as a 32-bit pattern).", "message parameter 3 (AnalogIn2).";
-    /// The operation (no bytes).
-    pub _op: PhantomData<O>
-}
-
-crate::base::layout::block_struct! {
-    /// FB DIV instance (ABI-2 §11.2): as [`FB_ARITH`] with `nRounding` before `wInputActive`.
-    FB_DIV[T: Analog; P1, P2] {
-        no_bool_inputs;
-        /// At the analog input base 24: AnalogIn1, the dividend (active bit 8, required).
-        pub nAnalogIn1: T,
-        /// At 24 + W: AnalogIn2, the divisor (active bit 9, required); 0 gives 0, no error.
-        pub nAnalogIn2: T,
-        /// At 24 + 2W: "Division Rounding": SL_ROUNDING_FLOOR, _CEIL, _ROUND.
-        pub nRounding: u16,
-        /// At 26 + 2W: bits 8 and 9 must be set, no other (ARITH_ACTIVE).
-        pub wInputActive: u16,
-        /// Reserved up to the output base (16-bit: none, 32-bit: 4 bytes).
-        pub aReserved2: [u8; P1],
-        /// At the output base (16-bit 32, 32-bit 40): Error, TRUE in ERROR only.
-        pub bError: SL_BOOL,
-        /// Reserved up to the analog output base.
-        pub aReserved3: [u8; 7],
-        /// At the output base + 8: AnalogOut, the rounded quotient in RUN, else 0.
-        pub nAnalogOut: T,
-        /// Reserved up to the info data.
-        pub aReserved4: [u8; P2],
-    } info [aReserved5, aReserved6] SL_ARITH_PRIVATE, "48 bytes":
-        "the manual's status value (RUN, STOP, ERROR, RESET).",
-        "diag value (2 overflow: MIN ÷ −1) + library bits 13-15.",
-        "Text ID of the latched diag message (0x4081), 0 = none.",
-        "message parameter 2 (AnalogIn1 as a 32-bit pattern).", "message parameter 3 (AnalogIn2)."
-}
 
 // The ABI-2 §11.2 numbers of the two DIV layouts (the one place `nRounding` sits).
 const _: () = {

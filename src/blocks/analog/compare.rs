@@ -25,73 +25,7 @@ super::analog_variants! {
         DINT SL_TYPE_COMPARE_DINT = 34 => FB_COMPARE_DINT[i32, 0, 4], UDINT SL_TYPE_COMPARE_UDINT = 35 => FB_COMPARE_UDINT[u32, 0, 4]
 }
 
-/// `nArchitecture` 1oo2: CompIn1 and CompIn2 must agree.
-pub const SL_ARCH_1OO2: u16 = 2;
-/// `nArchitecture` 2oo3: two of CompIn1–3 must agree.
-pub const SL_ARCH_2OO3: u16 = 3;
-/// `nArchitecture` 3oo5: three of CompIn1–5 must agree.
-pub const SL_ARCH_3OO5: u16 = 5;
-
-crate::base::layout::private_struct! {
-    /// Private state of FB COMPARE (48 bytes). Never written by the user. The header's `tPhase`
-    /// is the start of the DelayOutTimer.
-    SL_COMPARE_PRIVATE {
-        /// Latched `tToleranceTime`.
-        pub tTolerance: u32,
-        /// Latched `nAllowedDeviation`.
-        pub dwDeviation: u32,
-        /// Latched `nArchitecture`.
-        pub wArchitecture: u16,
-        /// Latched `wInputActive`.
-        pub wActive: u16,
-        /// CompOut of the last RUN cycle (held in DELAYOUT) as a 32-bit pattern.
-        pub dwOut: u32,
-        /// Reserved.
-        pub aReserved: [u8; 4],
-    }
-}
-
-crate::base::layout::block_struct! {
-    /// FB COMPARE instance (ABI-2 §11.3), generic over the signal type `T`; `P1` (after
-    /// CompIn5) and `P2` (after CompOut) are the reserved gaps that make the 16- and 32-bit
-    /// layouts differ.
-    FB_COMPARE[T: Analog; P1, P2] {
-        no_bool_inputs;
-        /// At the analog input base 24: CompIn1 (active bit 8).
-        pub nCompIn1: T,
-        /// At 24 + W: CompIn2 (active bit 9).
-        pub nCompIn2: T,
-        /// At 24 + 2W: CompIn3 (active bit 10; 2oo3, 3oo5).
-        pub nCompIn3: T,
-        /// At 24 + 3W: CompIn4 (active bit 11; 3oo5).
-        pub nCompIn4: T,
-        /// At 24 + 4W: CompIn5 (active bit 12; 3oo5).
-        pub nCompIn5: T,
-        /// Reserved (16-bit: 2 bytes, 32-bit: none).
-        pub aReserved2: [u8; P1],
-        /// "Tolerance Time (ms)", the DelayOutTimer: 0 to 65,535 ms.
-        pub tToleranceTime: u32,
-        /// "Allowed Deviation" (UDINT in every variant).
-        pub nAllowedDeviation: u32,
-        /// "Architecture": SL_ARCH_1OO2 (2), SL_ARCH_2OO3 (3), SL_ARCH_3OO5 (5).
-        pub nArchitecture: u16,
-        /// Exactly the bits 8 … 8 + nArchitecture − 1.
-        pub wInputActive: u16,
-        /// At the output base (16-bit 48, 32-bit 56): Error, TRUE in ERROR only.
-        pub bError: SL_BOOL,
-        /// Output base + 1: IsValid, TRUE in RUN and DELAYOUT.
-        pub bIsValid: SL_BOOL,
-        /// Reserved up to the analog output base.
-        pub aReserved3: [u8; 6],
-        /// At the output base + 8: CompOut, CompInX in RUN, held in DELAYOUT, else 0.
-        pub nCompOut: T,
-        /// Reserved up to the info data.
-        pub aReserved4: [u8; P2],
-    } info [aReserved5, aReserved6] SL_COMPARE_PRIVATE, "48 bytes":
-        "the manual's status value.", "diag value (0) + library bits 13-15.",
-        "Text ID of the latched diag message, 0 = none.", "message parameter 2.",
-        "message parameter 3."
-}
+include!(concat!(env!("OUT_DIR"), "/abi/blocks/analog/compare.rs"));
 
 // The ABI-2 §11.3 numbers of the two layouts (parameters, output base).
 const _: () = {

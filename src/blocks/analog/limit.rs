@@ -25,69 +25,7 @@ super::analog_variants! {
         DINT SL_TYPE_LIMIT_DINT = 38 => FB_LIMIT_DINT[i32, 2], UDINT SL_TYPE_LIMIT_UDINT = 39 => FB_LIMIT_UDINT[u32, 2]
 }
 
-/// Diag value 1: MinValue is greater than MaxValue.
-pub const SL_DIAG_LIMIT_MIN_ABOVE_MAX: u16 = 1;
-/// Diag message "MinValue is greater than MaxValue" (parameters: MinValue, MaxValue).
-pub const SL_TEXT_LIMIT_MIN_ABOVE_MAX: u16 = 0x4090;
-
-/// `wInputActive` bit of AnalogIn (required).
-pub const SL_LIMIT_ACTIVE_ANALOGIN: u16 = 1 << 8;
-/// `wInputActive` bit of MinValue: set = the input is the minimum, clear = `nMinimumValue`.
-pub const SL_LIMIT_ACTIVE_MINVALUE: u16 = 1 << 9;
-/// `wInputActive` bit of MaxValue: set = the input is the maximum, clear = `nMaximumValue`.
-pub const SL_LIMIT_ACTIVE_MAXVALUE: u16 = 1 << 10;
-
-crate::base::layout::private_struct! {
-    /// Private state of FB LIMIT (48 bytes). Never written by the user.
-    SL_LIMIT_PRIVATE {
-        /// Common head (`wAux` bit 0: below, bit 1: above the limits in SAFE).
-        stHeader;
-        /// Latched `wInputActive`.
-        pub wActive: u16,
-        /// Reserved.
-        pub aReserved: [u8; 2],
-        /// Latched `nMinimumValue`, `nMaximumValue` as 32-bit patterns.
-        pub adwLimit: [u32; 2],
-        /// Diag message parameters 2 and 3 (Min, Max) latched at the ERROR entry.
-        pub adwPar: [u32; 2],
-    }
-}
-
-crate::base::layout::block_struct! {
-    /// FB LIMIT instance (ABI-2 §11.4), generic over the signal type `T`; `P1` is the reserved
-    /// gap after `wInputActive` that makes the 16- and 32-bit layouts differ.
-    FB_LIMIT[T: Analog; P1] {
-        no_bool_inputs;
-        /// At the analog input base 24: AnalogIn, the value checked (active bit 8, required).
-        pub nAnalogIn: T,
-        /// At 24 + W: MinValue, the minimum when active bit 9 is set.
-        pub nMinValue: T,
-        /// At 24 + 2W: MaxValue, the maximum when active bit 10 is set.
-        pub nMaxValue: T,
-        /// At 24 + 3W: "Minimum Value", the minimum when active bit 9 is clear.
-        pub nMinimumValue: T,
-        /// At 24 + 4W: "Maximum Value", the maximum when active bit 10 is clear.
-        pub nMaximumValue: T,
-        /// At 24 + 5W: bit 8 (AnalogIn) must be set; bits 9, 10 choose input or parameter.
-        pub wInputActive: u16,
-        /// Reserved up to the output base (16-bit: 4 bytes, 32-bit: 2).
-        pub aReserved2: [u8; P1],
-        /// At the output base (16-bit 40, 32-bit 48): Error, TRUE in ERROR only.
-        pub bError: SL_BOOL,
-        /// Output base + 1: InLimit, TRUE in RUN (Min ≤ AnalogIn ≤ Max).
-        pub bInLimit: SL_BOOL,
-        /// Output base + 2: BelowMin, in SAFE: AnalogIn < Min.
-        pub bBelowMin: SL_BOOL,
-        /// Output base + 3: AboveMax, in SAFE: AnalogIn > Max.
-        pub bAboveMax: SL_BOOL,
-        /// Reserved up to the info data.
-        pub aReserved3: [u8; 4],
-    } info [aReserved4, aReserved5] SL_LIMIT_PRIVATE, "48 bytes":
-        "the manual's status value (RUN, STOP, SAFE, ERROR, RESET).",
-        "diag value (1: MinValue is greater than MaxValue) + library bits 13-15.",
-        "Text ID of the latched diag message (0x4090), 0 = none.",
-        "message parameter 2 (Min as a 32-bit pattern).", "message parameter 3 (Max)."
-}
+include!(concat!(env!("OUT_DIR"), "/abi/blocks/analog/limit.rs"));
 
 // The ABI-2 §11.4 numbers of the two layouts.
 const _: () = {

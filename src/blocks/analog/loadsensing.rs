@@ -25,27 +25,15 @@ super::analog_variants! {
         DINT SL_TYPE_LOADSENSING_DINT = 50 => FB_LOADSENSING_DINT[i32, 4, 0], UDINT SL_TYPE_LOADSENSING_UDINT = 51 => FB_LOADSENSING_UDINT[u32, 4, 0]
 }
 
-/// State INACTIVE (manual §4.25.2 "16.0"): Inactive is TRUE; Valid 0, Warning 0.
-pub const SL_STATE_LOADSENSING_INACTIVE: u8 = 16;
-/// State WARNING (manual §4.25.2 "17.0"): AnalogInY between the levels; Valid 1, Warning 1.
-pub const SL_STATE_LOADSENSING_WARNING: u8 = 17;
+include!(concat!(
+    env!("OUT_DIR"),
+    "/abi/blocks/analog/loadsensing.rs"
+));
 
-/// Rows of the value table ("There can be up to 25 indices").
-pub const SL_LOADSENSING_ROWS_MAX: u16 = 25;
 /// The table's length in the structs (written out there: the header's array bound must be a
 /// number for its layout checks).
 const ROWS: usize = SL_LOADSENSING_ROWS_MAX as usize;
 const _: () = assert!(ROWS == 25);
-
-/// `dwOptions` bit 8: "Outside [y1; y2]": values outside Y1…Y2 are valid.
-pub const SL_OPT_LOADSENSING_OUTSIDE: u32 = 1 << 8;
-
-/// `wInputActive` bit of Inactive (optional: clear = reads FALSE, the block evaluates).
-pub const SL_LOADSENSING_ACTIVE_INACTIVE: u16 = 1 << 0;
-/// `wInputActive` bit of AnalogInX (required).
-pub const SL_LOADSENSING_ACTIVE_ANALOGINX: u16 = 1 << 8;
-/// `wInputActive` bit of AnalogInY (required).
-pub const SL_LOADSENSING_ACTIVE_ANALOGINY: u16 = 1 << 9;
 
 /// One row of the value table (ABI-2 §10.6): the manual's index, X, Y1, Y2, WY1, WY2, all of
 /// the variant's type (10 or 20 bytes, no padding).

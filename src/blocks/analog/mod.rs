@@ -55,11 +55,7 @@ macro_rules! analog {
 }
 analog!(i16 => 0, u16 => 1, i32 => 2, u32 => 3);
 
-/// Diag value 1 of every analog block with a range check (ABI-2 §12.1): the result is
-/// below the smallest value of the type.
-pub const SL_DIAG_VALUE_UNDERFLOW: u16 = 1;
-/// Diag value 2: the result is above the largest value of the type.
-pub const SL_DIAG_VALUE_OVERFLOW: u16 = 2;
+include!(concat!(env!("OUT_DIR"), "/abi/blocks/analog/mod.rs"));
 
 /// `v` as a value of `T`, or the diag value of the range error it makes (ABI-2 §12.1:
 /// exact result, nothing wraps, nothing saturates): underflow below `T::MIN`, overflow

@@ -26,58 +26,7 @@ super::analog_variants! {
         DINT SL_TYPE_SLI2_DINT = 66 => FB_SLI2_DINT[i32, i32, 0, 4], UDINT SL_TYPE_SLI2_UDINT = 67 => FB_SLI2_UDINT[u32, i32, 0, 4]
 }
 
-crate::base::layout::block_struct! {
-    /// FB SLI2 instance (ABI-2 §11.10), generic over the Position type `T` and the
-    /// PositionDiff type `TS`; `P1` and `P2` are the reserved gaps (after Position, after
-    /// PositionDiff) that make the 16- and 32-bit layouts differ. Size: 144 bytes.
-    FB_SLI2[T: Analog, TS: Analog; P1, P2] {
-        /// Offset 0. SLI: a rising edge saves Position and starts the monitoring; TRUE keeps it
-        /// on (active bit 0, required).
-        pub bSLI: SL_BOOL,
-        /// Offset 1. Reserved, keep 0.
-        pub aReserved0: [u8; 15],
-        /// Offset 16. FbRun of the owning group: TRUE = the block executes.
-        pub bRun: SL_BOOL,
-        /// Offset 17. ErrAck of the owning group.
-        pub bErrAck: SL_BOOL,
-        /// Offset 18. Reserved, keep 0.
-        pub aReserved1: [u8; 6],
-        /// Offset 24 (analog input base). Position (active bit 8, required).
-        pub nPosition: T,
-        /// Reserved up to the parameters (16-bit: 2 bytes, 32-bit: none).
-        pub aReserved2: [u8; P1],
-        /// Offset 28. "Limit pos": permitted deviation above LatchPosition, ≤ the maximum of TS.
-        pub nLimitPos: u32,
-        /// Offset 32. "Limit neg": permitted deviation below LatchPosition (a magnitude), ≤ the
-        /// maximum of TS.
-        pub nLimitNeg: u32,
-        /// Offset 36. SL_OPT_SLI2_OVERFLOW_ALLOWED (bit 8), SL_OPT_SLI2_EXCEEDED_SUPPORT (bit 9).
-        pub dwOptions: u32,
-        /// Offset 40. Exactly bits 0 and 8 (SL_SLI_ACTIVE).
-        pub wInputActive: u16,
-        /// Offset 42. Reserved.
-        pub aReserved3: [u8; 6],
-        /// Offset 48 (output base). Error, TRUE in ERROR only.
-        pub bError: SL_BOOL,
-        /// Offset 49. SLIActive: TRUE in RUN (SLI TRUE, PositionDiff within the limits).
-        pub bSLIActive: SL_BOOL,
-        /// Offset 50. BelowMin: in EXCEEDED, PositionDiff < −Limit neg.
-        pub bBelowMin: SL_BOOL,
-        /// Offset 51. AboveMax: in EXCEEDED, PositionDiff > Limit pos.
-        pub bAboveMax: SL_BOOL,
-        /// Offset 52. Reserved.
-        pub aReserved4: [u8; 4],
-        /// Offset 56 (analog output base). PositionDiff = Position − LatchPosition in RUN and
-        /// (saturated) in EXCEEDED, else 0.
-        pub nPositionDiff: TS,
-        /// Reserved up to the info data (16-bit: 6 bytes, 32-bit: 4).
-        pub aReserved5: [u8; P2],
-    } info [aReserved6, aReserved7] SL_SLI_PRIVATE, "64 bytes":
-        "The manual's status value (RUN, STOP, SAFE, ERROR, RESET, EXCEEDED).",
-        "Diag value (1 underflow, 2 overflow) + library bits 13-15.",
-        "Text ID of the latched diag message (0x40C0, 0x40C1), 0 = none.",
-        "Message parameter 2: Position as a 32-bit pattern.", "Message parameter 3: LatchPosition."
-}
+include!(concat!(env!("OUT_DIR"), "/abi/blocks/analog/sli2.rs"));
 
 // The ABI-2 §11.10 numbers (identical for both widths).
 const _: () = {

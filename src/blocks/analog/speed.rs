@@ -28,71 +28,7 @@ super::analog_variants! {
         DINT SL_TYPE_SPEED_DINT = 46 => FB_SPEED_DINT[i32, 0, 4], UDINT SL_TYPE_SPEED_UDINT = 47 => FB_SPEED_UDINT[u32, 0, 4]
 }
 
-/// `dwOptions`: "Overflow Check" — the position difference is taken modulo 2^W before the
-/// range check (a position counter wrapping at its type's end is no jump).
-pub const SL_OPT_SPEED_OVERFLOW_CHECK: u32 = 1 << 8;
-
-/// Diag message "An underflow has occurred." (parameters: current, latched position).
-pub const SL_TEXT_SPEED_UNDERFLOW: u16 = 0x4088;
-/// Diag message "An overflow has occurred." (parameters: current, latched position).
-pub const SL_TEXT_SPEED_OVERFLOW: u16 = 0x4089;
-
-/// `wInputActive` bit of Position (required, the only bit).
-pub const SL_SPEED_ACTIVE_POSITION: u16 = 1 << 8;
-
-crate::base::layout::private_struct! {
-    /// Private state of FB SPEED (56 bytes). Never written by the user. The header's `tPhase`
-    /// is the time of the latch.
-    SL_SPEED_PRIVATE {
-        /// Latched `tTimeInterval`.
-        pub tInterval: u32,
-        /// Latched `dwOptions`.
-        pub dwOptions: u32,
-        /// Latched `wInputActive`.
-        pub wActive: u16,
-        /// Reserved.
-        pub aReserved: [u8; 2],
-        /// The latched Position as a 32-bit pattern.
-        pub dwLatch: u32,
-        /// Speed of the last update as a 32-bit pattern.
-        pub dwSpeed: u32,
-        /// Diag message parameters 2 and 3 latched at the ERROR entry.
-        pub adwPar: [u32; 2],
-    }
-}
-
-crate::base::layout::block_struct! {
-    /// FB SPEED instance (ABI-2 §11.7), generic over the signal type `T`; `P1` (after Position)
-    /// and `P2` (after Speed) are the reserved gaps that make the 16- and 32-bit layouts differ.
-    FB_SPEED[T: Analog; P1, P2] {
-        no_bool_inputs;
-        /// Offset 24. Position, the input the speed is computed from (active bit 8, required).
-        pub nPosition: T,
-        /// Reserved up to 28 (16-bit: 2 bytes, 32-bit: none).
-        pub aReserved2: [u8; P1],
-        /// Offset 28. "Time Interval" in ms, 1 … SL_TIME_PARAM_MAX.
-        pub tTimeInterval: u32,
-        /// Offset 32. SL_OPT_SPEED_OVERFLOW_CHECK, no other bit.
-        pub dwOptions: u32,
-        /// Offset 36. Bit 8 (Position) must be set, no other.
-        pub wInputActive: u16,
-        /// Offset 38. Reserved.
-        pub aReserved3: [u8; 2],
-        /// Offset 40, the output base. Error, TRUE in ERROR only.
-        pub bError: SL_BOOL,
-        /// Offset 41. Reserved.
-        pub aReserved4: [u8; 7],
-        /// Offset 48. Speed in increments per interval in RUN, else 0.
-        pub nSpeed: T,
-        /// Reserved up to the info data (16-bit: 6 bytes, 32-bit: 4).
-        pub aReserved5: [u8; P2],
-    } info [aReserved6, aReserved7] SL_SPEED_PRIVATE, "56 bytes":
-        "The manual's status value (RUN, STOP, ERROR, RESET).",
-        "Diag value (1 underflow, 2 overflow) + library bits 13-15.",
-        "Text ID of the latched diag message (0x4088, 0x4089), 0 = none.",
-        "Message parameter 2 (current position as a 32-bit pattern).",
-        "Message parameter 3 (latched position)."
-}
+include!(concat!(env!("OUT_DIR"), "/abi/blocks/analog/speed.rs"));
 
 // The ABI-2 §11.7 numbers (identical for both widths).
 const _: () = {

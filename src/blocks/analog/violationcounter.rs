@@ -23,68 +23,10 @@ super::analog_variants! {
         UINT SL_TYPE_VIOLATIONCOUNTER_UINT = 68 => FB_VIOLATIONCOUNTER_UINT[u16, 2, 6], UDINT SL_TYPE_VIOLATIONCOUNTER_UDINT = 69 => FB_VIOLATIONCOUNTER_UDINT[u32, 4, 4]
 }
 
-/// `wInputActive` of FB VIOLATIONCOUNTER: Input (bit 0) and Enable (bit 1), both required.
-pub const SL_VIOLATIONCOUNTER_ACTIVE: u16 = 0x0003;
-
-crate::base::layout::private_struct! {
-    /// Private state of FB VIOLATIONCOUNTER (48 bytes). Never written by the user.
-    SL_VIOLATIONCOUNTER_PRIVATE {
-        /// Common head (`nActive`, `nNegated`: the latched bit sets).
-        stHeader;
-        /// Latched Increment Error, Decrement No Error, Counter Limit as 32-bit patterns.
-        pub adwParam: [u32; 3],
-        /// The error counter.
-        pub dwCount: u32,
-        /// Reserved.
-        pub aReserved: [u8; 4],
-    }
-}
-
-crate::base::layout::block_struct! {
-    /// FB VIOLATIONCOUNTER instance (ABI-2 §11.12), generic over the unsigned type `T`; `P1`
-    /// (after `wInputNegated`) and `P2` (after ActViolationCnt) are the reserved gaps that make
-    /// the two layouts differ.
-    FB_VIOLATIONCOUNTER[T: Unsigned; P1, P2] {
-        /// Offset 0. Input: logically TRUE decrements, FALSE increments (active bit 0,
-        /// negation bit 0).
-        pub bInput: SL_BOOL,
-        /// Offset 1. Enable: FALSE = START, counter 0 (active bit 1).
-        pub bEnable: SL_BOOL,
-        /// Offset 2. Reserved, keep 0.
-        pub aReserved0: [u8; 14],
-        /// Offset 16. FbRun of the owning group: TRUE = the block executes.
-        pub bRun: SL_BOOL,
-        /// Offset 17. ErrAck of the owning group.
-        pub bErrAck: SL_BOOL,
-        /// Offset 18. Reserved, keep 0.
-        pub aReserved1: [u8; 2],
-        /// At 20: "Increment Error", added per call with a violation.
-        pub nIncrementError: T,
-        /// At 20 + W: "Decrement No Error", subtracted per call without one.
-        pub nDecrementNoError: T,
-        /// At 20 + 2W: "Counter Limit" (≥ 1): InputOK = counter < limit.
-        pub nCounterLimit: T,
-        /// At 20 + 3W: bits 0 and 1 must be set (SL_VIOLATIONCOUNTER_ACTIVE).
-        pub wInputActive: u16,
-        /// At 22 + 3W: bit 0 set = Input is negated; no other bit.
-        pub wInputNegated: u16,
-        /// Reserved up to the output base (16-bit 32, 32-bit 40).
-        pub aReserved2: [u8; P1],
-        /// Output base + 0. Reserved (the block has no Error output).
-        pub aReserved3: [u8; 1],
-        /// Output base + 1: InputOK, TRUE in RUN only.
-        pub bInputOK: SL_BOOL,
-        /// Output base + 2. Reserved.
-        pub aReserved4: [u8; 6],
-        /// Output base + 8: ActViolationCnt, the counter in RUN and SAFE, else 0.
-        pub nActViolationCnt: T,
-        /// Reserved up to the info data.
-        pub aReserved5: [u8; P2],
-    } info [aReserved6, aReserved7] SL_VIOLATIONCOUNTER_PRIVATE, "48 bytes":
-        "the manual's status value (RUN, STOP, SAFE, START; ERROR, RESET).",
-        "0 (no diag values) + library bits 13-15.", "always 0 (the block has no diag message).",
-        "always 0.", "always 0."
-}
+include!(concat!(
+    env!("OUT_DIR"),
+    "/abi/blocks/analog/violationcounter.rs"
+));
 
 // The ABI-2 §11.12 numbers of the two layouts (output base).
 const _: () = {

@@ -11,49 +11,7 @@
 use super::Analog;
 use crate::base::types::*;
 
-/// Diag message "An underflow has occurred" (parameters: Position, LatchPosition); FB SLI2
-/// reports it too.
-pub const SL_TEXT_SLI_UNDERFLOW: u16 = 0x40C0;
-/// Diag message "An overflow has occurred" (parameters: Position, LatchPosition).
-pub const SL_TEXT_SLI_OVERFLOW: u16 = 0x40C1;
-
-/// `wInputActive` of FB_SLI and FB_SLI2: SLI (bit 0) and Position (bit 8), both required,
-/// no other bit (ABI-2 §11.9 "bits 0, 8 must be set").
-pub const SL_SLI_ACTIVE: u16 = 0x0101;
-
-/// FB_SLI2 state EXCEEDED (manual §4.28.2.3: 7): the position left the window with
-/// `SL_OPT_SLI2_EXCEEDED_SUPPORT`; left only by SLI FALSE (→ SAFE).
-pub const SL_STATE_SLI2_EXCEEDED: u8 = 7;
-
-/// `dwOptions` "OverflowAllowed": PositionDiff modulo 2^W in the signed range.
-pub const SL_OPT_SLI2_OVERFLOW_ALLOWED: u32 = 1 << 8;
-/// `dwOptions` "ExceededSupport": leaving the window in RUN enters EXCEEDED, not ERROR.
-pub const SL_OPT_SLI2_EXCEEDED_SUPPORT: u32 = 1 << 9;
-
-crate::base::layout::private_struct! {
-    /// Private state of FB SLI and FB SLI2 (64 bytes). Never written by the user.
-    SL_SLI_PRIVATE {
-        /// Common head (`wAux` bit 0: previous SLI level; bits 1, 2: below / above the window
-        /// in EXCEEDED).
-        stHeader;
-        /// Latched `wInputActive`.
-        pub wActive: u16,
-        /// Reserved.
-        pub aReserved: [u8; 2],
-        /// Latched `nLimitPos`, `nLimitNeg`.
-        pub adwLimit: [u32; 2],
-        /// Latched `dwOptions` (0 for SLI).
-        pub dwOptions: u32,
-        /// LatchPosition as a 32-bit pattern of the position type.
-        pub dwLatch: u32,
-        /// Complement of `dwLatch`: a corrupted latch must not move the window unnoticed.
-        pub dwLatchCheck: u32,
-        /// PositionDiff of the last running cycle as a 32-bit pattern of the output type.
-        pub dwDiff: u32,
-        /// Diag message parameters 2 and 3 (Position, LatchPosition) latched at the ERROR entry.
-        pub adwPar: [u32; 2],
-    }
-}
+include!(concat!(env!("OUT_DIR"), "/abi/blocks/analog/window.rs"));
 
 const _: () = assert!(core::mem::size_of::<SL_SLI_PRIVATE>() == 64);
 

@@ -5,8 +5,7 @@
 use super::logic::{all, gate8_block, gate8_struct};
 use crate::base::types::*;
 
-/// Block type tag of FB_AND.
-pub const SL_TYPE_AND: u16 = 3;
+include!(concat!(env!("OUT_DIR"), "/abi/blocks/boolean/and.rs"));
 
 gate8_struct! {
     /// FB AND instance (ABI §3, §9). Inputs at the manual's offsets (§4.1.2), output base 24.

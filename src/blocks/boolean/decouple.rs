@@ -8,63 +8,7 @@ use crate::base::block::BlockInfo;
 use crate::base::bools;
 use crate::base::types::*;
 
-/// Block type tag of FB_DECOUPLE.
-pub const SL_TYPE_DECOUPLE: u16 = 6;
-
-crate::base::layout::block_struct! {
-    /// FB DECOUPLE instance (ABI §3, §9). Inputs at the manual's offsets 8…15 (§4.6.2), output
-    /// base 24 (outputs at base + 8 … base + 15).
-    /// Size: 112 bytes.
-    FB_DECOUPLE {
-        /// Offset 0. Reserved, keep 0.
-        pub aReserved0: [u8; 8],
-        /// Offset 8. 1st input channel.
-        pub bDecIn1: SL_BOOL,
-        /// Offset 9. 2nd input channel.
-        pub bDecIn2: SL_BOOL,
-        /// Offset 10. 3rd input channel.
-        pub bDecIn3: SL_BOOL,
-        /// Offset 11. 4th input channel.
-        pub bDecIn4: SL_BOOL,
-        /// Offset 12. 5th input channel.
-        pub bDecIn5: SL_BOOL,
-        /// Offset 13. 6th input channel.
-        pub bDecIn6: SL_BOOL,
-        /// Offset 14. 7th input channel.
-        pub bDecIn7: SL_BOOL,
-        /// Offset 15. 8th input channel.
-        pub bDecIn8: SL_BOOL,
-        /// Offset 16. FbRun of the owning group.
-        pub bRun: SL_BOOL,
-        /// Offset 17. ErrAck of the owning group.
-        pub bErrAck: SL_BOOL,
-        /// Offset 18. Reserved, keep 0.
-        pub aReserved1: [u8; 2],
-        /// Offset 20. Bit n-1 set: channel n (DecInn → DecOutn) is used (at least one).
-        pub wInputActive: u16,
-        /// Offset 22. Reserved, keep 0 (the manual offers no negation for DECOUPLE).
-        pub aReserved2: [u8; 2],
-        /// Offset 24 (output base + 0). Reserved.
-        pub aReserved3: [u8; 8],
-        /// Offset 32 (output base + 8). 1st output channel: DecIn1 in RUN, else FALSE.
-        pub bDecOut1: SL_BOOL,
-        /// Offset 33 (output base + 9). 2nd output channel.
-        pub bDecOut2: SL_BOOL,
-        /// Offset 34 (output base + 10). 3rd output channel.
-        pub bDecOut3: SL_BOOL,
-        /// Offset 35 (output base + 11). 4th output channel.
-        pub bDecOut4: SL_BOOL,
-        /// Offset 36 (output base + 12). 5th output channel.
-        pub bDecOut5: SL_BOOL,
-        /// Offset 37 (output base + 13). 6th output channel.
-        pub bDecOut6: SL_BOOL,
-        /// Offset 38 (output base + 14). 7th output channel.
-        pub bDecOut7: SL_BOOL,
-        /// Offset 39 (output base + 15). 8th output channel.
-        pub bDecOut8: SL_BOOL,
-    } tail 40 41 42 44 48 [aReserved4, aReserved5] SL_LOGIC_PRIVATE, 64:
-        "(SL_STATE_*)", "Diagnostic bits (only the library bits 13-15)."
-}
+include!(concat!(env!("OUT_DIR"), "/abi/blocks/boolean/decouple.rs"));
 
 crate::base::block::block_states!(
     /// The states of FB DECOUPLE.

@@ -14,68 +14,7 @@ use crate::base::reason::{when, Rule, RuleDef, Unit};
 use crate::base::types::*;
 use crate::base::{bools, time};
 
-/// Block type tag of FB_EDM.
-pub const SL_TYPE_EDM: u16 = 10;
-
-/// FB_EDM state MONOFF (manual §4.9.2: 14): Mon1 is FALSE, switch-off monitoring.
-pub const SL_STATE_EDM_MONOFF: u8 = 14;
-
-/// FB_EDM state MONON (manual §4.9.2: 15): Mon1 is TRUE, switch-on monitoring.
-pub const SL_STATE_EDM_MONON: u8 = 15;
-
-/// FB_EDM diag bit 0 (manual §4.9.2): switch-off timer elapsed.
-pub const SL_DIAG_EDM_SWITCH_OFF: u16 = 1 << 0;
-
-/// FB_EDM diag bit 1 (manual §4.9.2): switch-on timer elapsed.
-pub const SL_DIAG_EDM_SWITCH_ON: u16 = 1 << 1;
-
-/// Largest tSwitchOnTime / tSwitchOffTime of FB_EDM in ms (manual §4.9.1: "maximum 10000 ms").
-pub const SL_EDM_TIME_MAX: u32 = 10_000;
-
-crate::base::layout::block_struct! {
-    /// FB EDM instance (ABI §3, §9). Inputs at the manual's offsets (§4.9.2), output base 32.
-    /// Size: 80 bytes.
-    FB_EDM {
-        /// Offset 0. Reserved, keep 0.
-        pub aReserved0: [u8; 8],
-        /// Offset 8. Mon1: the monitored command (break or make contact).
-        pub bMon1: SL_BOOL,
-        /// Offset 9. Mon2: the feedback; it has to assume the value opposite to Mon1 within the
-        /// set times.
-        pub bMon2: SL_BOOL,
-        /// Offset 10. Reserved, keep 0.
-        pub aReserved1: [u8; 6],
-        /// Offset 16. FbRun of the owning group.
-        pub bRun: SL_BOOL,
-        /// Offset 17. ErrAck of the owning group.
-        pub bErrAck: SL_BOOL,
-        /// Offset 18. Reserved, keep 0.
-        pub aReserved2: [u8; 2],
-        /// Offset 20. Switch-on monitoring time in ms (≤ 10000; 0 = switch-on monitoring off).
-        pub tSwitchOnTime: u32,
-        /// Offset 24. Switch-off monitoring time in ms (≤ 10000; 0 = switch-off monitoring off).
-        pub tSwitchOffTime: u32,
-        /// Offset 28. Bit 0: Mon1 active, bit 1: Mon2 active (both required).
-        pub wInputActive: u16,
-        /// Offset 30. Same bits: the input is a make contact (negated before evaluation).
-        pub wInputNegated: u16,
-        /// Offset 32 (output base + 0). TRUE in ERROR: a monitoring time was exceeded.
-        pub bError: SL_BOOL,
-        /// Offset 33. Reserved.
-        pub aReserved3: [u8; 7],
-    } tail 40 41 42 44 48 [aReserved4, aReserved5] SL_EDM_PRIVATE, 32:
-        "(SL_STATE_*)", "Diagnostic bits (SL_DIAG_EDM_SWITCH_OFF, SL_DIAG_EDM_SWITCH_ON, library bits)."
-}
-
-crate::base::layout::private_struct! {
-    /// Private state of FB_EDM (32 bytes). Never written by the user. The header's `tPhase` is
-    /// the start of the current monitoring, `wAux` bit 0 says it is still waiting for Mon2.
-    /// Size: 32 bytes.
-    SL_EDM_PRIVATE {
-        /// Latched times in ms: switch-on, switch-off.
-        pub awTime: [u16; 2],
-    }
-}
+include!(concat!(env!("OUT_DIR"), "/abi/blocks/boolean/edm.rs"));
 
 crate::base::block::block_states!(
     /// The states of FB EDM.

@@ -10,75 +10,7 @@ use super::guard::{GuardBlock, GuardParams, GuardRaw, SL_GUARD_PRIVATE};
 use crate::base::block::BlockInfo;
 use crate::base::types::*;
 
-/// Block type tag of FB_ESTOP (`SL_MEMBER.nType`, `sl_diag_text`).
-pub const SL_TYPE_ESTOP: u16 = 1;
-
-crate::base::layout::block_struct! {
-    /// FB ESTOP instance (ABI §3, §8). Inputs at the manual's offsets (§4.4.2), outputs at
-    /// output base 56 + the manual's offsets.
-    /// Size: 152 bytes.
-    FB_ESTOP {
-        /// Offset 0. Restart: a falling edge enables the outputs (push button, make contact).
-        pub bRestart: SL_BOOL,
-        /// Offset 1. Feedback loop of EStopOut.
-        pub bEDM1: SL_BOOL,
-        /// Offset 2. Feedback loop of EStopDelOut.
-        pub bEDM2: SL_BOOL,
-        /// Offset 3. Reserved, keep 0.
-        pub aReserved0: [u8; 5],
-        /// Offset 8. Emergency stop input 1 (pair 1 with input 2).
-        pub bEStopIn1: SL_BOOL,
-        /// Offset 9.
-        pub bEStopIn2: SL_BOOL,
-        /// Offset 10. Pair 2 with input 4.
-        pub bEStopIn3: SL_BOOL,
-        /// Offset 11.
-        pub bEStopIn4: SL_BOOL,
-        /// Offset 12. Pair 3 with input 6.
-        pub bEStopIn5: SL_BOOL,
-        /// Offset 13.
-        pub bEStopIn6: SL_BOOL,
-        /// Offset 14. Pair 4 with input 8.
-        pub bEStopIn7: SL_BOOL,
-        /// Offset 15.
-        pub bEStopIn8: SL_BOOL,
-        /// Offset 16. FbRun of the owning group: TRUE = the block executes.
-        pub bRun: SL_BOOL,
-        /// Offset 17. ErrAck of the owning group.
-        pub bErrAck: SL_BOOL,
-        /// Offset 18. Reserved, keep 0.
-        pub aReserved1: [u8; 2],
-        /// Offset 20. Discrepancy time of pair EStopIn1/2 in ms (0 = two single channels).
-        pub tDiscTime12: u32,
-        /// Offset 24. Discrepancy time of pair EStopIn3/4 in ms.
-        pub tDiscTime34: u32,
-        /// Offset 28. Discrepancy time of pair EStopIn5/6 in ms.
-        pub tDiscTime56: u32,
-        /// Offset 32. Discrepancy time of pair EStopIn7/8 in ms.
-        pub tDiscTime78: u32,
-        /// Offset 36. EDM1 reset time in ms (EL6910; 0 = off).
-        pub tEDM1ResetTime: u32,
-        /// Offset 40. EDM2 reset time in ms (EL6910; 0 = off).
-        pub tEDM2ResetTime: u32,
-        /// Offset 44. Delay of EStopDelOut in ms.
-        pub tEStopDelOutDelay: u32,
-        /// Offset 48. Bit n-1 set: EStopInn is active.
-        pub wInputActive: u16,
-        /// Offset 50. Bit n-1 set: EStopInn is a make contact (negated).
-        pub wInputNegated: u16,
-        /// Offset 52. SL_OPT_EDM1 | SL_OPT_EDM2 | SL_OPT_SAFE_INPUTS_AFTER_DISC.
-        pub dwOptions: u32,
-        /// Offset 56 (output base + 0). TRUE in ERROR.
-        pub bError: SL_BOOL,
-        /// Offset 57 (output base + 1). Undelayed output.
-        pub bEStopOut: SL_BOOL,
-        /// Offset 58 (output base + 2). Delayed output.
-        pub bEStopDelOut: SL_BOOL,
-        /// Offset 59. Reserved.
-        pub aReserved2: [u8; 5],
-    } tail 64 65 66 68 72 [aReserved3, aReserved4] SL_GUARD_PRIVATE, 80:
-        "(SL_STATE_*)", "Diagnostic bits (SL_DIAG_*)."
-}
+include!(concat!(env!("OUT_DIR"), "/abi/blocks/boolean/estop.rs"));
 
 crate::base::block::block_states!(
     /// The states of FB ESTOP.

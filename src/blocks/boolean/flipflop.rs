@@ -6,23 +6,7 @@
 
 use crate::base::types::*;
 
-/// FB_SR state SET (manual §4.11.2: 9): the output SrOut is TRUE.
-pub const SL_STATE_SR_SET: u8 = 9;
-
-/// FB_RS state SET (manual §4.10.2: 9): the output RsOut is TRUE.
-pub const SL_STATE_RS_SET: u8 = 9;
-
-crate::base::layout::private_struct! {
-    /// Private state of FB_RS and FB_SR (64 bytes): the memory is the state (SAFE or SET) in
-    /// the header, guarded by its complement copy. Never written by the user.
-    SL_FLIPFLOP_PRIVATE {
-        /// Reserved, 0.
-        pub aReserved: [u8; 4],
-        /// Fast-path slot (`base::envelope`): the key window (two 64-bit words), then its check
-        /// words.
-        pub adwSteady: [u32; 8],
-    }
-}
+include!(concat!(env!("OUT_DIR"), "/abi/blocks/boolean/flipflop.rs"));
 
 const _: () = assert!(core::mem::size_of::<SL_FLIPFLOP_PRIVATE>() == 64);
 

@@ -9,21 +9,7 @@ use crate::base::edm::Edm;
 use crate::base::header::{param_crc, EDM_PENDING_SHIFT, F_EDM_PENDING, SL_PRIVATE_HEADER};
 use crate::base::types::*;
 
-crate::base::layout::private_struct! {
-    /// Private state of FB_ESTOP and FB_MON (80 bytes). Never written by the user.
-    SL_GUARD_PRIVATE {
-        /// Latched times in ms: discrepancy times of pairs 1-4, EDM1 and EDM2 reset times,
-        /// output delay; then the input masks, wInputActive | wInputNegated << 16 (this family
-        /// keeps them here, not in the header's 8-bit fields, which stay 0). Full width, in the
-        /// order of the live fields: the fast path compares them with the live ones as whole
-        /// words (docs/performance.md).
-        pub adwTime: [u32; 8],
-        /// Start times of the pair discrepancy timers.
-        pub atDiscStart: [u32; 4],
-        /// Fast-path key and its complement (`base::envelope`).
-        pub awSteady: [u16; 2],
-    }
-}
+include!(concat!(env!("OUT_DIR"), "/abi/blocks/boolean/guard.rs"));
 
 crate::base::envelope::steady_private!(SL_GUARD_PRIVATE, awSteady, u16);
 

@@ -3,16 +3,7 @@
 //! block's function is satisfied, SAFE (3) otherwise (blocks without SAFE stay in RUN with
 //! FALSE outputs). No block errors of their own: ERROR (4) only comes from the envelope.
 
-crate::base::layout::private_struct! {
-    /// Private state of the combinational blocks (64 bytes). Never written by the user.
-    SL_LOGIC_PRIVATE {
-        /// Reserved, 0.
-        pub aReserved: [u8; 4],
-        /// Fast-path slot (`base::envelope`): the key window (two 64-bit words), then its check
-        /// words.
-        pub adwSteady: [u32; 8],
-    }
-}
+include!(concat!(env!("OUT_DIR"), "/abi/blocks/boolean/logic.rs"));
 
 crate::base::envelope::steady_private!(SL_LOGIC_PRIVATE, adwSteady, window 2);
 

@@ -11,73 +11,7 @@ use super::guard::{GuardBlock, GuardParams, GuardRaw, SL_GUARD_PRIVATE};
 use crate::base::block::BlockInfo;
 use crate::base::types::*;
 
-/// Block type tag of FB_MON.
-pub const SL_TYPE_MON: u16 = 2;
-
-crate::base::layout::block_struct! {
-    /// FB MON instance (ABI §3, §8). Inputs at the manual's offsets (§4.5.2), outputs at
-    /// output base 56 + the manual's offsets.
-    /// Size: 152 bytes.
-    FB_MON {
-        /// Offset 0. Restart (used with SL_OPT_MANUAL_RESTART): a falling edge enables the outputs.
-        pub bRestart: SL_BOOL,
-        /// Offset 1. Feedback loop of MonOut.
-        pub bEDM1: SL_BOOL,
-        /// Offset 2. Feedback loop of MonDelOut.
-        pub bEDM2: SL_BOOL,
-        /// Offset 3. Reserved, keep 0.
-        pub aReserved0: [u8; 5],
-        /// Offset 8. Monitored input 1 (pair 1 with input 2).
-        pub bMonIn1: SL_BOOL,
-        /// Offset 9.
-        pub bMonIn2: SL_BOOL,
-        /// Offset 10. Pair 2 with input 4.
-        pub bMonIn3: SL_BOOL,
-        /// Offset 11.
-        pub bMonIn4: SL_BOOL,
-        /// Offset 12. Secure input 1: bypasses the MonIn inputs while logically TRUE.
-        pub bSecure1: SL_BOOL,
-        /// Offset 13. Secure input 2 (pair with Secure1).
-        pub bSecure2: SL_BOOL,
-        /// Offset 14. Reserved, keep 0.
-        pub aReserved1: [u8; 2],
-        /// Offset 16. FbRun of the owning group: TRUE = the block executes.
-        pub bRun: SL_BOOL,
-        /// Offset 17. ErrAck of the owning group.
-        pub bErrAck: SL_BOOL,
-        /// Offset 18. Reserved, keep 0.
-        pub aReserved2: [u8; 2],
-        /// Offset 20. Discrepancy time of pair MonIn1/2 in ms (0 = two single channels).
-        pub tDiscTime12: u32,
-        /// Offset 24. Discrepancy time of pair MonIn3/4 in ms.
-        pub tDiscTime34: u32,
-        /// Offset 28. Discrepancy time of pair Secure1/2 in ms.
-        pub tDiscTimeSecure12: u32,
-        /// Offset 32. EDM1 reset time in ms (EL6910; 0 = off).
-        pub tEDM1ResetTime: u32,
-        /// Offset 36. EDM2 reset time in ms (EL6910; 0 = off).
-        pub tEDM2ResetTime: u32,
-        /// Offset 40. Delay of MonDelOut in ms.
-        pub tMonDelOutDelay: u32,
-        /// Offset 44. Bits 0-3: MonIn1-4 active, bits 4-5: Secure1-2 active.
-        pub wInputActive: u16,
-        /// Offset 46. Same bits: input is a make contact (negated).
-        pub wInputNegated: u16,
-        /// Offset 48. SL_OPT_EDM1 | EDM2 | SAFE_INPUTS_AFTER_DISC | MANUAL_RESTART | FUNCTION_TEST.
-        pub dwOptions: u32,
-        /// Offset 52. Reserved.
-        pub aReserved3: [u8; 4],
-        /// Offset 56 (output base + 0). TRUE in ERROR.
-        pub bError: SL_BOOL,
-        /// Offset 57 (output base + 1). Undelayed output.
-        pub bMonOut: SL_BOOL,
-        /// Offset 58 (output base + 2). Delayed output.
-        pub bMonDelOut: SL_BOOL,
-        /// Offset 59. Reserved.
-        pub aReserved4: [u8; 5],
-    } tail 64 65 66 68 72 [aReserved5, aReserved6] SL_GUARD_PRIVATE, 80:
-        "(SL_STATE_*)", "Diagnostic bits (SL_DIAG_*; bit 2 = Secure pair)."
-}
+include!(concat!(env!("OUT_DIR"), "/abi/blocks/boolean/mon.rs"));
 
 const MON_INPUTS: u8 = 0x0F;
 const SECURE_INPUTS: u8 = 0x30;

@@ -5,8 +5,7 @@
 use super::logic::{any, gate8_block, gate8_struct};
 use crate::base::types::*;
 
-/// Block type tag of FB_OR.
-pub const SL_TYPE_OR: u16 = 4;
+include!(concat!(env!("OUT_DIR"), "/abi/blocks/boolean/or.rs"));
 
 gate8_struct! {
     /// FB OR instance (ABI §3, §9). Inputs at the manual's offsets (§4.2.2), output base 24.

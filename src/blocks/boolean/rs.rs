@@ -7,8 +7,7 @@
 use super::flipflop::{flipflop_block, flipflop_struct, SL_STATE_RS_SET};
 use crate::base::types::*;
 
-/// Block type tag of FB_RS.
-pub const SL_TYPE_RS: u16 = 11;
+include!(concat!(env!("OUT_DIR"), "/abi/blocks/boolean/rs.rs"));
 
 flipflop_struct! {
     /// FB RS instance (ABI §3, §9). Inputs at the manual's offsets (§4.10.2), output base 24.

@@ -7,8 +7,7 @@
 use super::flipflop::{flipflop_block, flipflop_struct, SL_STATE_SR_SET};
 use crate::base::types::*;
 
-/// Block type tag of FB_SR.
-pub const SL_TYPE_SR: u16 = 12;
+include!(concat!(env!("OUT_DIR"), "/abi/blocks/boolean/sr.rs"));
 
 flipflop_struct! {
     /// FB SR instance (ABI §3, §9). Inputs at the manual's offsets (§4.11.2), output base 24.

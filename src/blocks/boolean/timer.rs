@@ -28,35 +28,7 @@
 use crate::base::header::{param_crc, SL_PRIVATE_HEADER};
 use crate::base::types::*;
 
-/// Library extension, FB_TON2 diag bit 12: the restored elapsed time was refused
-/// (SL_E_RESTORE; the manual's global shutdown 0x3510).
-pub const SL_DIAG_TON2_RESTORE: u16 = 1 << 12;
-
-/// FB_TON2 "Starts with remaining time" (manual §4.13): with Enable TRUE when TonIn rises,
-/// the timer starts with tDelay minus the stored elapsed time.
-pub const SL_OPT_TON2_REMAINING_TIME: u32 = 1 << 8;
-
-/// `nTimeBase` of FB_TON/FB_TON2/FB_TOF: automatic, the smallest timebase whose range
-/// holds tDelay (the manual: "automatically selected ... according to the set time").
-pub const SL_TIMEBASE_AUTO: u16 = 0;
-
-/// `nTimeBase` 1 ms: tDelay 1 to 60,000 ms in 1 ms steps.
-pub const SL_TIMEBASE_1MS: u16 = 1;
-
-/// `nTimeBase` 10 ms: tDelay 10 to 600,000 ms in 10 ms steps.
-pub const SL_TIMEBASE_10MS: u16 = 10;
-
-/// `nTimeBase` 100 ms (EL6910 SW 04): tDelay 100 ms to 6,000 s in 100 ms steps.
-pub const SL_TIMEBASE_100MS: u16 = 100;
-
-/// `nTimeBase` 1000 ms (EL6910 SW 04): tDelay 1 s to 60,000 s in 1 s steps.
-pub const SL_TIMEBASE_1000MS: u16 = 1000;
-
-/// Most timebase steps in a timer delay (tDelay / timebase).
-pub const SL_TIMER_STEPS_MAX: u32 = 60_000;
-
-/// Largest timer delay in ms (60,000 s; 60,000 steps of 1000 ms).
-pub const SL_TIMER_DELAY_MAX: u32 = 60_000_000;
+include!(concat!(env!("OUT_DIR"), "/abi/blocks/boolean/timer.rs"));
 
 /// Private state of FB_TON, FB_TON2 and FB_TOF (64 bytes). Never written by the user.
 ///

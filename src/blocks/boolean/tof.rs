@@ -9,8 +9,7 @@
 use super::timer::{delay_block, delay_struct};
 use crate::base::types::*;
 
-/// Block type tag of FB_TOF.
-pub const SL_TYPE_TOF: u16 = 15;
+include!(concat!(env!("OUT_DIR"), "/abi/blocks/boolean/tof.rs"));
 
 delay_struct! {
     /// FB TOF instance (ABI §3, §9). Input at the manual's offset (§4.14.2), output base 32.

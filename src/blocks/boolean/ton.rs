@@ -8,11 +8,7 @@
 use super::timer::{delay_block, delay_struct};
 use crate::base::types::*;
 
-/// FB_TON state DELAYIN (9): TonIn is TRUE and the delay has not yet expired.
-pub const SL_STATE_TON_DELAYIN: u8 = 9;
-
-/// Block type tag of FB_TON.
-pub const SL_TYPE_TON: u16 = 13;
+include!(concat!(env!("OUT_DIR"), "/abi/blocks/boolean/ton.rs"));
 
 delay_struct! {
     /// FB TON instance (ABI §3, §9). Input at the manual's offset (§4.12.2), output base 32.

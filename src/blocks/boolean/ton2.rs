@@ -16,57 +16,7 @@ use crate::base::envelope::{self, Block, Instance};
 use crate::base::header::F_CFG_INVALID;
 use crate::base::types::*;
 
-/// FB_TON2 state DELAYIN (9): TonIn is TRUE and the delay has not yet expired.
-pub const SL_STATE_TON2_DELAYIN: u8 = 9;
-
-/// Block type tag of FB_TON2.
-pub const SL_TYPE_TON2: u16 = 14;
-
-crate::base::layout::block_struct! {
-    /// FB TON2 instance (ABI §3, §9). Inputs at the manual's offsets (§4.13.2), output base 40.
-    /// Size: 120 bytes.
-    FB_TON2 {
-        /// Offset 0. Reserved, keep 0.
-        pub aReserved0: [u8; 8],
-        /// Offset 8. TonIn1: the input whose TRUE level is passed on after the delay (break or
-        /// make contact: wInputNegated bit 0).
-        pub bTonIn1: SL_BOOL,
-        /// Offset 9. Enable: read when TonIn1 rises, only with SL_OPT_TON2_REMAINING_TIME.
-        /// TRUE = start with the remaining time, FALSE (or invalid) = start with tDelay.
-        pub bEnable: SL_BOOL,
-        /// Offset 10. Reserved, keep 0.
-        pub aReserved1: [u8; 6],
-        /// Offset 16. FbRun of the owning group: TRUE = the block executes.
-        pub bRun: SL_BOOL,
-        /// Offset 17. ErrAck of the owning group.
-        pub bErrAck: SL_BOOL,
-        /// Offset 18. Reserved, keep 0.
-        pub aReserved2: [u8; 2],
-        /// Offset 20. Switch-on delay in ms: 1 to 60,000 steps of the timebase (at most
-        /// 60,000,000 ms = 60,000 s), a whole number of steps.
-        pub tDelay: u32,
-        /// Offset 24. Timebase in ms: SL_TIMEBASE_1MS, _10MS, _100MS, _1000MS, or
-        /// SL_TIMEBASE_AUTO (0) = the smallest one whose range holds tDelay.
-        pub nTimeBase: u16,
-        /// Offset 26. Bit 0 must be set: TonIn1 is active (Enable has no bit).
-        pub wInputActive: u16,
-        /// Offset 28. Bit 0 set: TonIn1 is a make contact (negated before evaluation).
-        pub wInputNegated: u16,
-        /// Offset 30. Reserved, keep 0.
-        pub aReserved3: [u8; 2],
-        /// Offset 32. SL_OPT_TON2_REMAINING_TIME ("Starts with remaining time").
-        pub dwOptions: u32,
-        /// Offset 36. Reserved, keep 0.
-        pub aReserved4: [u8; 4],
-        /// Offset 40 (output base + 0). Reserved (the manual's error output is inactive).
-        pub aReserved5: [u8; 1],
-        /// Offset 41 (output base + 1). TonOut: TRUE in RUN only.
-        pub bTonOut: SL_BOOL,
-        /// Offset 42. Reserved.
-        pub aReserved6: [u8; 6],
-    } tail 48 49 50 52 56 [aReserved7, aReserved8] SL_TIMER_PRIVATE, 64:
-        "(SL_STATE_*, SL_STATE_TON2_DELAYIN)", "Diagnostic bits (SL_DIAG_TON2_RESTORE and the library bits 13-15)."
-}
+include!(concat!(env!("OUT_DIR"), "/abi/blocks/boolean/ton2.rs"));
 
 crate::base::block::block_states!(
     /// The states of FB TON2.

@@ -8,77 +8,7 @@ use crate::base::block::BlockInfo;
 use crate::base::bools;
 use crate::base::types::*;
 
-/// Block type tag of FB_XOR.
-pub const SL_TYPE_XOR: u16 = 5;
-
-crate::base::layout::block_struct! {
-    /// FB XOR instance (ABI §3, §9). Inputs at the manual's offsets 0…15 (§4.34.2), output
-    /// base 24 (outputs at base + 8 … base + 15).
-    /// Size: 112 bytes.
-    FB_XOR {
-        /// Offset 0. Input 1 of XOR1.
-        pub bXor1In1: SL_BOOL,
-        /// Offset 1. Input 2 of XOR1.
-        pub bXor2In1: SL_BOOL,
-        /// Offset 2. Input 1 of XOR2.
-        pub bXor1In2: SL_BOOL,
-        /// Offset 3. Input 2 of XOR2.
-        pub bXor2In2: SL_BOOL,
-        /// Offset 4. Input 1 of XOR3.
-        pub bXor1In3: SL_BOOL,
-        /// Offset 5. Input 2 of XOR3.
-        pub bXor2In3: SL_BOOL,
-        /// Offset 6. Input 1 of XOR4.
-        pub bXor1In4: SL_BOOL,
-        /// Offset 7. Input 2 of XOR4.
-        pub bXor2In4: SL_BOOL,
-        /// Offset 8. Input 1 of XOR5.
-        pub bXor1In5: SL_BOOL,
-        /// Offset 9. Input 2 of XOR5.
-        pub bXor2In5: SL_BOOL,
-        /// Offset 10. Input 1 of XOR6.
-        pub bXor1In6: SL_BOOL,
-        /// Offset 11. Input 2 of XOR6.
-        pub bXor2In6: SL_BOOL,
-        /// Offset 12. Input 1 of XOR7.
-        pub bXor1In7: SL_BOOL,
-        /// Offset 13. Input 2 of XOR7.
-        pub bXor2In7: SL_BOOL,
-        /// Offset 14. Input 1 of XOR8.
-        pub bXor1In8: SL_BOOL,
-        /// Offset 15. Input 2 of XOR8.
-        pub bXor2In8: SL_BOOL,
-        /// Offset 16. FbRun of the owning group.
-        pub bRun: SL_BOOL,
-        /// Offset 17. ErrAck of the owning group.
-        pub bErrAck: SL_BOOL,
-        /// Offset 18. Reserved, keep 0.
-        pub aReserved0: [u8; 2],
-        /// Offset 20. Bit y-1 set: XOR function y (inputs Xor1Iny, Xor2Iny) is active (at least one).
-        pub wInputActive: u16,
-        /// Offset 22. Reserved, keep 0 (the manual offers no negation for XOR inputs).
-        pub aReserved1: [u8; 2],
-        /// Offset 24 (output base + 0). Reserved.
-        pub aReserved2: [u8; 8],
-        /// Offset 32 (output base + 8). Xor1In1 XOR Xor2In1 (FALSE when XOR1 is inactive).
-        pub bXorOut1: SL_BOOL,
-        /// Offset 33 (output base + 9).
-        pub bXorOut2: SL_BOOL,
-        /// Offset 34 (output base + 10).
-        pub bXorOut3: SL_BOOL,
-        /// Offset 35 (output base + 11).
-        pub bXorOut4: SL_BOOL,
-        /// Offset 36 (output base + 12).
-        pub bXorOut5: SL_BOOL,
-        /// Offset 37 (output base + 13).
-        pub bXorOut6: SL_BOOL,
-        /// Offset 38 (output base + 14).
-        pub bXorOut7: SL_BOOL,
-        /// Offset 39 (output base + 15).
-        pub bXorOut8: SL_BOOL,
-    } tail 40 41 42 44 48 [aReserved3, aReserved4] SL_LOGIC_PRIVATE, 64:
-        "(SL_STATE_*)", "Diagnostic bits (only the library bits 13-15)."
-}
+include!(concat!(env!("OUT_DIR"), "/abi/blocks/boolean/xor.rs"));
 
 crate::base::block::block_states!(
     /// The states of FB XOR.

@@ -19,64 +19,10 @@ use crate::base::types::*;
 use crate::base::{bools, pair};
 use core::mem::offset_of;
 
-/// Block type tag of FB_CONNECTION_SHUTDOWN (70/71: CAMMONITOR; 72–74: SLP, SBT, ADVPOSMON).
-pub const SL_TYPE_CONNECTION_SHUTDOWN: u16 = 75;
-
-crate::base::layout::block_struct! {
-    /// FB CONNECTION SHUTDOWN instance (ABI-2 §11.1).
-    /// Size: 88 bytes.
-    FB_CONNECTION_SHUTDOWN {
-        /// Offset 0. Reserved, keep 0.
-        pub aReserved0: [u8; 8],
-        /// Offset 8. Deactivate1 (pair 1 with Deactivate2); active/negated bit 0.
-        pub bDeactivate1: SL_BOOL,
-        /// Offset 9. Deactivate2; active/negated bit 1.
-        pub bDeactivate2: SL_BOOL,
-        /// Offset 10. Reserved, keep 0.
-        pub aReserved1: [u8; 6],
-        /// Offset 16. FbRun of the owning group.
-        pub bRun: SL_BOOL,
-        /// Offset 17. ErrAck of the owning group.
-        pub bErrAck: SL_BOOL,
-        /// Offset 18. Library extension: the connection nConnectionId is shut down (its bShutdown; the group copies it).
-        pub bConnShutdown: SL_BOOL,
-        /// Offset 19. Reserved, keep 0.
-        pub aReserved2: [u8; 1],
-        /// Offset 20. Discrepancy time of Deactivate1/2 in ms (0 = none; both inputs active).
-        pub tDiscTime12: u32,
-        /// Offset 24. Connection ID of the connection to shut down (1…65535).
-        pub nConnectionId: u16,
-        /// Offset 26. Bits 0-1: DeactivateX is active (none active: only a partner shutdown).
-        pub wInputActive: u16,
-        /// Offset 28. Bits 0-1: DeactivateX is a make contact (negated).
-        pub wInputNegated: u16,
-        /// Offset 30. Reserved, keep 0.
-        pub aReserved3: [u8; 2],
-        /// Offset 32 (output base + 0). TRUE in ERROR.
-        pub bError: SL_BOOL,
-        /// Offset 33 (output base + 1). TRUE in RUN: the connection is shut down.
-        pub bDeactivated: SL_BOOL,
-        /// Offset 34. Library extension: the shutdown request (SAFE/RUN with the request); the group copies it to the connection.
-        pub bShutdownRequest: SL_BOOL,
-        /// Offset 35. Reserved.
-        pub aReserved4: [u8; 5],
-    } tail 40 41 42 44 48 [aReserved5, aReserved6] SL_CONNSHUT_PRIVATE, 40:
-        "(SL_STATE_*)", "Diagnostic bits (SL_DIAG_DISC1, library bits 13-15)."
-}
-
-crate::base::layout::private_struct! {
-    /// Private state of FB_CONNECTION_SHUTDOWN (40 bytes).
-    SL_CONNSHUT_PRIVATE {
-        /// Common header.
-        stHeader;
-        /// Start of the running discrepancy time.
-        pub tDiscStart: u32,
-        /// Latched tDiscTime12 (0) and nConnectionId (1).
-        pub awParam: [u16; 2],
-        /// Reserved.
-        pub aReserved: [u8; 4],
-    }
-}
+include!(concat!(
+    env!("OUT_DIR"),
+    "/abi/blocks/connection/connshutdown.rs"
+));
 
 crate::base::block::block_states!(
     /// The states of FB CONNECTION SHUTDOWN.

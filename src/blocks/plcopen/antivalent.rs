@@ -3,8 +3,10 @@
 
 use crate::base::types::SL_BOOL;
 
-/// Block type tag of SF_Antivalent (`SL_MEMBER.nType`, `sl_diag_text`).
-pub const SL_TYPE_SF_ANTIVALENT: u16 = 516;
+include!(concat!(
+    env!("OUT_DIR"),
+    "/abi/blocks/plcopen/antivalent.rs"
+));
 
 crate::pair_struct! {
     /// SF_Antivalent instance: the PLCopen VAR_INPUT / VAR_OUTPUT names, BOOL = one byte.

@@ -11,8 +11,7 @@ use crate::base::sf::{self, ResetIn, SL_SF_PRIVATE};
 use crate::base::time;
 use crate::base::types::{SL_BOOL, SL_DIAG_EDM1, SL_DIAG_EDM2};
 
-/// Block type tag of SF_EDM (`SL_MEMBER.nType`, `sl_diag_text`).
-pub const SL_TYPE_SF_EDM: u16 = 521;
+include!(concat!(env!("OUT_DIR"), "/abi/blocks/plcopen/edm.rs"));
 
 crate::sf_states!(
     /// The states of SF_EDM: values = v2.01 DiagCodes (CS-LIB FBS_EDM up to C060; the rest
@@ -141,47 +140,6 @@ fn next(s: SfEdmState, i: &SfEdmIn, r: ResetIn, in_state: u32, t: u32) -> SfEdmS
         | ErrEdm11R | ErrEdm12R | ErrEdm13R | ErrEdm21R | ErrEdm22R | ErrEdm23R | ErrEdm31R
         | ErrEdm32R | ErrEdm33R => s,
     }
-}
-
-crate::base::layout::block_struct! {
-    /// SF_EDM instance: the PLCopen v2.01 VAR_INPUT / VAR_OUTPUT names (plus v1.0's
-    /// S_StartReset), BOOL = one byte. Size: 64 bytes.
-    SF_EDM {
-        /// Offset 0. Activate: FALSE = idle (DiagCode 0000, every output FALSE), highest priority.
-        pub Activate: SL_BOOL,
-        /// Offset 1. S_OutControl: the control signal of the preceding safety FB, TRUE = switch the actuators on.
-        pub S_OutControl: SL_BOOL,
-        /// Offset 2. EDM1: feedback of actuator 1, TRUE = released (de-energised); v1.0 name S_EDM1.
-        pub EDM1: SL_BOOL,
-        /// Offset 3. EDM2: feedback of actuator 2, TRUE = released; bridge it to EDM1 for one feedback; v1.0 name S_EDM2.
-        pub EDM2: SL_BOOL,
-        /// Offset 4. MonitoringTime (constant, ms): the actuators' longest response time; latched at activation.
-        pub MonitoringTime: u32,
-        /// Offset 8. S_StartReset (v1.0 input; FALSE in v2.01): TRUE = no reset needed after activation.
-        pub S_StartReset: SL_BOOL,
-        /// Offset 9. Reset: a rising edge leaves INIT and the errors; held TRUE it is a static-reset error.
-        pub Reset: SL_BOOL,
-        /// Offset 10. Reserved, keep 0.
-        pub aReserved0: [u8; 1],
-        /// Offset 11. Library extension, constant: DiagCode profile, 0 = v2.01 (default), 1 = v1.0; latched at activation.
-        pub nDiagProfile: u8,
-        /// Offset 12 (output base). Ready: TRUE while activated (DiagCode != 0000).
-        pub Ready: SL_BOOL,
-        /// Offset 13. S_EDM_Out: the safety output to the actuators, TRUE only at DiagCode 8000.
-        pub S_EDM_Out: SL_BOOL,
-        /// Offset 14. SafetyDemand: the output is switched off (v2.01 code bit 0x0800).
-        pub SafetyDemand: SL_BOOL,
-        /// Offset 15. ResetRequest: a reset is awaited (v2.01 code bit 0x0400) and Reset is FALSE.
-        pub ResetRequest: SL_BOOL,
-        /// Offset 16. Error: DiagCode >= C000.
-        pub Error: SL_BOOL,
-        /// Offset 17. Reserved.
-        pub aReserved1: [u8; 1],
-        /// Offset 18. DiagCode: the state or error, in the profile of nDiagProfile.
-        pub DiagCode: u16,
-        /// Offset 20. Reserved.
-        pub aReserved2: [u8; 4],
-    } private 24: SL_SF_PRIVATE, 40
 }
 
 crate::impl_sf_member!(SF_EDM {

@@ -3,8 +3,10 @@
 
 use crate::base::types::SL_BOOL;
 
-/// Block type tag of SF_EmergencyStop (`SL_MEMBER.nType`, `sl_diag_text`).
-pub const SL_TYPE_SF_EMERGENCYSTOP: u16 = 512;
+include!(concat!(
+    env!("OUT_DIR"),
+    "/abi/blocks/plcopen/emergencystop.rs"
+));
 
 crate::restart_interlock_struct! {
     /// SF_EmergencyStop instance: the PLCopen VAR_INPUT / VAR_OUTPUT names, BOOL = one byte.

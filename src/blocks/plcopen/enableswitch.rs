@@ -12,8 +12,10 @@ use crate::base::bools;
 use crate::base::sf::{ResetIn, SfOut, SL_SF_PRIVATE};
 use crate::base::types::SL_BOOL;
 
-/// Block type tag of SF_EnableSwitch (`SL_MEMBER.nType`, `sl_diag_text`).
-pub const SL_TYPE_SF_ENABLESWITCH: u16 = 523;
+include!(concat!(
+    env!("OUT_DIR"),
+    "/abi/blocks/plcopen/enableswitch.rs"
+));
 
 crate::sf_states!(
     /// The states of SF_EnableSwitch: values = v2.01 DiagCodes (CS-LIB FBS_ENSWITCH), with
@@ -95,43 +97,6 @@ pub fn enable_switch_next(
         Position1 | Position2 | Position3 | ErrOperation1 | ErrOperation2 | ErrOperation3
         | ErrOperation4 | ErrReset1 | ErrReset2 => s,
     }
-}
-
-crate::base::layout::block_struct! {
-    /// SF_EnableSwitch instance: the PLCopen VAR_INPUT / VAR_OUTPUT names, BOOL = one byte.
-    /// Size: 56 bytes.
-    SF_EnableSwitch {
-        /// Offset 0. Activate: FALSE = idle (DiagCode 0000, every output FALSE), highest priority.
-        pub Activate: SL_BOOL,
-        /// Offset 1. S_SafetyActive: the safe operation mode (reduced speed …) is active; FALSE = basic mode, output FALSE.
-        pub S_SafetyActive: SL_BOOL,
-        /// Offset 2. S_EnableSwitchCh1: contacts E1 and E2 of the enable switch (TRUE in position 2 only).
-        pub S_EnableSwitchCh1: SL_BOOL,
-        /// Offset 3. S_EnableSwitchCh2: contacts E3 and E4 of the enable switch (TRUE in positions 1 and 2).
-        pub S_EnableSwitchCh2: SL_BOOL,
-        /// Offset 4. S_AutoReset: TRUE = the operation errors are left without Reset once the switch is back.
-        pub S_AutoReset: SL_BOOL,
-        /// Offset 5. Reset: a rising edge resets an operation error; held TRUE there it is a static-reset error.
-        pub Reset: SL_BOOL,
-        /// Offset 6. Reserved, keep 0.
-        pub aReserved0: [u8; 1],
-        /// Offset 7. Library extension, constant: DiagCode profile, 0 = v2.01 (default), 1 = v1.0; latched at activation.
-        pub nDiagProfile: u8,
-        /// Offset 8 (output base). Ready: TRUE while activated (DiagCode != 0000).
-        pub Ready: SL_BOOL,
-        /// Offset 9. S_EnableSwitchOut: the safety output (suspension of the guard), TRUE only at DiagCode 8000.
-        pub S_EnableSwitchOut: SL_BOOL,
-        /// Offset 10. SafetyDemand: the safety function is demanded (v2.01 code bit 0x0800).
-        pub SafetyDemand: SL_BOOL,
-        /// Offset 11. ResetRequest: a reset is awaited (v2.01 code bit 0x0400, which no state of this block has) and Reset is FALSE.
-        pub ResetRequest: SL_BOOL,
-        /// Offset 12. Error: DiagCode >= C000.
-        pub Error: SL_BOOL,
-        /// Offset 13. Reserved.
-        pub aReserved1: [u8; 1],
-        /// Offset 14. DiagCode: the state or error, in the profile of nDiagProfile.
-        pub DiagCode: u16,
-    } private 16: SL_SF_PRIVATE, 40
 }
 
 crate::impl_sf_member!(SF_EnableSwitch {

@@ -3,8 +3,10 @@
 
 use crate::base::types::SL_BOOL;
 
-/// Block type tag of SF_Equivalent (`SL_MEMBER.nType`, `sl_diag_text`).
-pub const SL_TYPE_SF_EQUIVALENT: u16 = 515;
+include!(concat!(
+    env!("OUT_DIR"),
+    "/abi/blocks/plcopen/equivalent.rs"
+));
 
 crate::pair_struct! {
     /// SF_Equivalent instance: the PLCopen VAR_INPUT / VAR_OUTPUT names, BOOL = one byte.

@@ -3,8 +3,7 @@
 
 use crate::base::types::SL_BOOL;
 
-/// Block type tag of SF_ESPE (`SL_MEMBER.nType`, `sl_diag_text`).
-pub const SL_TYPE_SF_ESPE: u16 = 513;
+include!(concat!(env!("OUT_DIR"), "/abi/blocks/plcopen/espe.rs"));
 
 crate::restart_interlock_struct! {
     /// SF_ESPE instance: the PLCopen VAR_INPUT / VAR_OUTPUT names, BOOL = one byte.

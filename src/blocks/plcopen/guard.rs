@@ -12,8 +12,7 @@ use crate::base::sf::{ResetIn, SfOut, SL_SF_PRIVATE};
 use crate::base::time;
 use crate::base::types::SL_BOOL;
 
-/// Block type tag of SF_Guard (`SL_MEMBER.nType`, `sl_diag_text`).
-pub const SL_TYPE_SF_GUARD: u16 = 517;
+include!(concat!(env!("OUT_DIR"), "/abi/blocks/plcopen/guard.rs"));
 
 crate::sf_states!(
     /// The states of SF_Guard: values = v2.01 DiagCodes (CS-LIB FBS_GUARD), with the v1.0
@@ -45,46 +44,6 @@ pub struct SfGuardIn {
     pub start_reset: bool,
     /// S_AutoReset: automatic reset when the guard is closed again.
     pub auto_reset: bool,
-}
-
-crate::base::layout::block_struct! {
-    /// SF_Guard instance (v1.0: SF_GuardMonitoring, whose output S_GuardMonitoring is
-    /// `S_GuardOut` here): the PLCopen VAR_INPUT / VAR_OUTPUT names, BOOL = one byte.
-    /// Size: 64 bytes.
-    SF_Guard {
-        /// Offset 0. Activate: FALSE = idle (DiagCode 0000, every output FALSE), highest priority.
-        pub Activate: SL_BOOL,
-        /// Offset 1. S_GuardSwitch1: guard switch 1, FALSE = guard open.
-        pub S_GuardSwitch1: SL_BOOL,
-        /// Offset 2. S_GuardSwitch2: guard switch 2, FALSE = guard open (bridge it to S_GuardSwitch1 for a guard with one switch).
-        pub S_GuardSwitch2: SL_BOOL,
-        /// Offset 3. Library extension, constant: DiagCode profile, 0 = v2.01 (default), 1 = v1.0 (SF_GuardMonitoring); latched at activation.
-        pub nDiagProfile: u8,
-        /// Offset 4. DiscrepancyTime (constant, ms): how long the switches may differ while the guard closes; latched at activation.
-        pub DiscrepancyTime: u32,
-        /// Offset 8. S_StartReset: TRUE = automatic reset at activation (start-up).
-        pub S_StartReset: SL_BOOL,
-        /// Offset 9. S_AutoReset: TRUE = automatic reset when the guard is closed again.
-        pub S_AutoReset: SL_BOOL,
-        /// Offset 10. Reset: a rising edge resets; held TRUE into the wait-for-reset state it is a static-reset error.
-        pub Reset: SL_BOOL,
-        /// Offset 11. Reserved, keep 0.
-        pub aReserved0: [u8; 5],
-        /// Offset 16 (output base). Ready: TRUE while activated (DiagCode != 0000).
-        pub Ready: SL_BOOL,
-        /// Offset 17. S_GuardOut: the safety output (v1.0: S_GuardMonitoring), TRUE only at DiagCode 8000.
-        pub S_GuardOut: SL_BOOL,
-        /// Offset 18. SafetyDemand: the safety function is demanded (v2.01 code bit 0x0800).
-        pub SafetyDemand: SL_BOOL,
-        /// Offset 19. ResetRequest: a reset is awaited (v2.01 code bit 0x0400) and Reset is FALSE.
-        pub ResetRequest: SL_BOOL,
-        /// Offset 20. Error: DiagCode >= C000.
-        pub Error: SL_BOOL,
-        /// Offset 21. Reserved.
-        pub aReserved1: [u8; 1],
-        /// Offset 22. DiagCode: the state or error, in the profile of nDiagProfile.
-        pub DiagCode: u16,
-    } private 24: SL_SF_PRIVATE, 40
 }
 
 crate::impl_sf_member!(SF_Guard {

@@ -15,8 +15,10 @@ use crate::base::sf::{DiagState, ResetIn, SfOut, SL_SF_PRIVATE};
 use crate::base::time;
 use crate::base::types::SL_BOOL;
 
-/// Block type tag of SF_ModeSelector (`SL_MEMBER.nType`, `sl_diag_text`).
-pub const SL_TYPE_SF_MODESELECTOR: u16 = 526;
+include!(concat!(
+    env!("OUT_DIR"),
+    "/abi/blocks/plcopen/modeselector.rs"
+));
 
 crate::sf_states!(
     /// The states of SF_ModeSelector: values = v2.01 DiagCodes (CS-LIB FBS_MODESEL), with the

@@ -12,8 +12,10 @@ use crate::base::header::F_ERRACK_PREV;
 use crate::base::sf::{ResetIn, SfOut, SL_SF_PRIVATE};
 use crate::base::types::SL_BOOL;
 
-/// Block type tag of SF_OutControl (`SL_MEMBER.nType`, `sl_diag_text`).
-pub const SL_TYPE_SF_OUTCONTROL: u16 = 519;
+include!(concat!(
+    env!("OUT_DIR"),
+    "/abi/blocks/plcopen/outcontrol.rs"
+));
 
 /// The R_TRIG memory of ProcessControl in the private header's flags: the PLCopen family
 /// has no ErrAck, whose bit it takes (semantics QO5).
@@ -50,43 +52,6 @@ pub struct OutControlIn {
     pub start_reset: bool,
     /// S_AutoReset: automatic reset after the safety function.
     pub auto_reset: bool,
-}
-
-crate::base::layout::block_struct! {
-    /// SF_OutControl instance: the PLCopen VAR_INPUT / VAR_OUTPUT names, BOOL = one byte.
-    /// Size: 56 bytes.
-    SF_OutControl {
-        /// Offset 0. Activate: FALSE = idle (DiagCode 0000, every output FALSE), highest priority.
-        pub Activate: SL_BOOL,
-        /// Offset 1. S_SafeControl: from the preceding safety blocks, FALSE = safety function triggered.
-        pub S_SafeControl: SL_BOOL,
-        /// Offset 2. ProcessControl: from the standard application, TRUE = output requested.
-        pub ProcessControl: SL_BOOL,
-        /// Offset 3. StaticControl (constant): FALSE = a rising edge of ProcessControl is required after activation and after an inhibit; latched at activation.
-        pub StaticControl: SL_BOOL,
-        /// Offset 4. S_StartReset: TRUE = automatic reset at activation (no start-up inhibit).
-        pub S_StartReset: SL_BOOL,
-        /// Offset 5. S_AutoReset: TRUE = automatic reset when S_SafeControl is TRUE again (no restart inhibit).
-        pub S_AutoReset: SL_BOOL,
-        /// Offset 6. Reset: a rising edge leaves an inhibit; held TRUE into it, a static-reset error.
-        pub Reset: SL_BOOL,
-        /// Offset 7. Library extension, constant: DiagCode profile, 0 = v2.01 (default), 1 = v1.0; latched at activation.
-        pub nDiagProfile: u8,
-        /// Offset 8 (output base). Ready: TRUE while activated (DiagCode != 0000).
-        pub Ready: SL_BOOL,
-        /// Offset 9. S_OutControl: the safety output, TRUE only at DiagCode 8000.
-        pub S_OutControl: SL_BOOL,
-        /// Offset 10. SafetyDemand: the safety function is demanded (v2.01 code bit 0x0800).
-        pub SafetyDemand: SL_BOOL,
-        /// Offset 11. ResetRequest: a reset is awaited (v2.01 code bit 0x0400) and Reset is FALSE.
-        pub ResetRequest: SL_BOOL,
-        /// Offset 12. Error: DiagCode >= C000.
-        pub Error: SL_BOOL,
-        /// Offset 13. Reserved.
-        pub aReserved1: [u8; 1],
-        /// Offset 14. DiagCode: the state or error, in the profile of nDiagProfile.
-        pub DiagCode: u16,
-    } private 16: SL_SF_PRIVATE, 40
 }
 
 crate::impl_sf_member!(SF_OutControl {

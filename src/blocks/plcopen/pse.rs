@@ -3,8 +3,7 @@
 
 use crate::base::types::SL_BOOL;
 
-/// Block type tag of SF_PSE (`SL_MEMBER.nType`, `sl_diag_text`).
-pub const SL_TYPE_SF_PSE: u16 = 514;
+include!(concat!(env!("OUT_DIR"), "/abi/blocks/plcopen/pse.rs"));
 
 crate::restart_interlock_struct! {
     /// SF_PSE instance: the PLCopen VAR_INPUT / VAR_OUTPUT names, BOOL = one byte.

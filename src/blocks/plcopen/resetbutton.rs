@@ -10,15 +10,10 @@ use crate::base::sf::{ResetIn, SL_SF_PRIVATE};
 use crate::base::time;
 use crate::base::types::SL_BOOL;
 
-/// Block type tag of SF_ResetButton (`SL_MEMBER.nType`, `sl_diag_text`).
-pub const SL_TYPE_SF_RESETBUTTON: u16 = 520;
-
-/// The least TrailingMinimum (ms): "absolute minimum 100 ms" (research §4.19, NPE).
-pub const SF_RESETBUTTON_MIN_TRAILING: u32 = 100;
-/// PLCopen's initial value of TrailingMinimum (ms): T#350ms.
-pub const SF_RESETBUTTON_DEFAULT_TRAILING_MIN: u32 = 350;
-/// PLCopen's initial value of TrailingMaximum (ms): T#2s.
-pub const SF_RESETBUTTON_DEFAULT_TRAILING_MAX: u32 = 2_000;
+include!(concat!(
+    env!("OUT_DIR"),
+    "/abi/blocks/plcopen/resetbutton.rs"
+));
 
 crate::sf_states!(
     /// The states of SF_ResetButton: values = v2.01 DiagCodes (CS-LIB FBS_RESBUT). The block
@@ -54,37 +49,6 @@ fn next(s: ResetButtonState, r: ResetIn, in_state: u32, t: [u32; 2]) -> ResetBut
         ErrTrailMax | ErrTrailMin if r.rising => WaitFTrig,
         Idle | WaitRTrig | WaitFTrig | ErrParam | ErrReset | ErrTrailMax | ErrTrailMin => s,
     }
-}
-
-crate::base::layout::block_struct! {
-    /// SF_ResetButton instance: the PLCopen VAR_INPUT / VAR_OUTPUT names, BOOL = one byte.
-    /// Size: 64 bytes.
-    SF_ResetButton {
-        /// Offset 0. ResetRequested: the activation of this block (it has no Activate); connect the paired FB's ResetRequest. FALSE = idle (DiagCode 0000, ResetOut FALSE), highest priority. PLCopen initial value TRUE.
-        pub ResetRequested: SL_BOOL,
-        /// Offset 1. ResetIn: the reset button, TRUE = pressed.
-        pub ResetIn: SL_BOOL,
-        /// Offset 2. Reserved, keep 0.
-        pub aReserved0: [u8; 1],
-        /// Offset 3. Library extension, constant: DiagCode profile, only 0 = v2.01 (1 is refused: v2.x block); latched at activation.
-        pub nDiagProfile: u8,
-        /// Offset 4. TrailingMinimum (constant, ms; PLCopen default T#350ms): shortest valid press, at least 100 ms; latched at activation.
-        pub TrailingMinimum: u32,
-        /// Offset 8. TrailingMaximum (constant, ms; PLCopen default T#2s): a press this long is invalid; latched at activation.
-        pub TrailingMaximum: u32,
-        /// Offset 12 (output base). Ready: TRUE while activated (DiagCode != 0000).
-        pub Ready: SL_BOOL,
-        /// Offset 13. ResetOut: TRUE for one call after the falling edge of a valid press (DiagCode 8000).
-        pub ResetOut: SL_BOOL,
-        /// Offset 14. Error: DiagCode >= C000.
-        pub Error: SL_BOOL,
-        /// Offset 15. Reserved.
-        pub aReserved1: [u8; 1],
-        /// Offset 16. DiagCode: the state or error (v2.01).
-        pub DiagCode: u16,
-        /// Offset 18. Reserved.
-        pub aReserved2: [u8; 6],
-    } private 24: SL_SF_PRIVATE, 40
 }
 
 crate::impl_sf_member!(SF_ResetButton {

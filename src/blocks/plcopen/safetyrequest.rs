@@ -11,8 +11,10 @@ use crate::base::sf::{ResetIn, SfOut, SL_SF_PRIVATE};
 use crate::base::time;
 use crate::base::types::SL_BOOL;
 
-/// Block type tag of SF_SafetyRequest (`SL_MEMBER.nType`, `sl_diag_text`).
-pub const SL_TYPE_SF_SAFETYREQUEST: u16 = 518;
+include!(concat!(
+    env!("OUT_DIR"),
+    "/abi/blocks/plcopen/safetyrequest.rs"
+));
 
 crate::sf_states!(
     /// The states of SF_SafetyRequest: values = v2.01 DiagCodes (CS-LIB FBS_SAFEREQ), with
@@ -42,43 +44,6 @@ pub struct SafetyRequestIn {
     pub ack: bool,
     /// S_StartReset: automatic reset at activation.
     pub start_reset: bool,
-}
-
-crate::base::layout::block_struct! {
-    /// SF_SafetyRequest instance: the PLCopen VAR_INPUT / VAR_OUTPUT names, BOOL = one byte.
-    /// Size: 64 bytes.
-    SF_SafetyRequest {
-        /// Offset 0. Activate: FALSE = idle (DiagCode 0000, every output FALSE), highest priority.
-        pub Activate: SL_BOOL,
-        /// Offset 1. S_OpMode: requested mode, TRUE = operation mode, FALSE = safe mode requested.
-        pub S_OpMode: SL_BOOL,
-        /// Offset 2. S_Acknowledge: the actuator's confirmation, TRUE = actuator in its safe state.
-        pub S_Acknowledge: SL_BOOL,
-        /// Offset 3. Library extension, constant: DiagCode profile, 0 = v2.01 (default), 1 = v1.0; latched at activation.
-        pub nDiagProfile: u8,
-        /// Offset 4. MonitoringTime (constant, ms): longest time from the safe-state request to S_Acknowledge TRUE; latched at activation.
-        pub MonitoringTime: u32,
-        /// Offset 8. S_StartReset: TRUE = automatic reset at activation (start-up; v2.x input, keep FALSE for the v1.0 behaviour).
-        pub S_StartReset: SL_BOOL,
-        /// Offset 9. Reset: a rising edge resets INIT and the errors; held TRUE it is a static-reset error.
-        pub Reset: SL_BOOL,
-        /// Offset 10. Reserved, keep 0.
-        pub aReserved0: [u8; 6],
-        /// Offset 16 (output base). Ready: TRUE while activated (DiagCode != 0000).
-        pub Ready: SL_BOOL,
-        /// Offset 17. S_SafetyActive: the safe state of the actuator is confirmed, TRUE only at DiagCode 8000.
-        pub S_SafetyActive: SL_BOOL,
-        /// Offset 18. S_SafetyRequest: to the actuator, FALSE = safe state requested; TRUE only in OP_MODE / WAIT_FOR_CONF_OPMODE (8802 / 8804).
-        pub S_SafetyRequest: SL_BOOL,
-        /// Offset 19. SafetyDemand: v2.01 code bit 0x0800 (8802, 8804).
-        pub SafetyDemand: SL_BOOL,
-        /// Offset 20. ResetRequest: a reset is awaited (v2.01 code bit 0x0400: INIT) and Reset is FALSE.
-        pub ResetRequest: SL_BOOL,
-        /// Offset 21. Error: DiagCode >= C000.
-        pub Error: SL_BOOL,
-        /// Offset 22. DiagCode: the state or error, in the profile of nDiagProfile.
-        pub DiagCode: u16,
-    } private 24: SL_SF_PRIVATE, 40
 }
 
 crate::impl_sf_member!(SF_SafetyRequest {

@@ -11,11 +11,10 @@ use crate::base::sf::{self, ResetIn, SL_SF_PRIVATE};
 use crate::base::time;
 use crate::base::types::SL_BOOL;
 
-/// Block type tag of SF_TestableSafetySensor (`SL_MEMBER.nType`, `sl_diag_text`).
-pub const SL_TYPE_SF_TESTABLESAFETYSENSOR: u16 = 522;
-
-/// The longest TestTime (ms): "range 0 … 150 ms" (research §4.15).
-pub const SF_TSS_MAX_TEST_TIME: u32 = 150;
+include!(concat!(
+    env!("OUT_DIR"),
+    "/abi/blocks/plcopen/testablesafetysensor.rs"
+));
 
 crate::sf_states!(
     /// The states of SF_TestableSafetySensor: values = v2.01 DiagCodes (CS-LIB
@@ -114,51 +113,6 @@ pub const fn sensor_outputs(code: u16, library: bool) -> [bool; 4] {
         free,
         code == 0x8000,
     ]
-}
-
-crate::base::layout::block_struct! {
-    /// SF_TestableSafetySensor instance: the PLCopen VAR_INPUT / VAR_OUTPUT names, BOOL = one
-    /// byte. Size: 64 bytes.
-    SF_TestableSafetySensor {
-        /// Offset 0. Activate: FALSE = idle (DiagCode 0000, every output FALSE except S_TestOut), highest priority.
-        pub Activate: SL_BOOL,
-        /// Offset 1. S_OSSD_In: the sensor's OSSD, FALSE = safety demand or test.
-        pub S_OSSD_In: SL_BOOL,
-        /// Offset 2. StartTest: a rising edge starts the automatic test (in 8010 or 8000).
-        pub StartTest: SL_BOOL,
-        /// Offset 3. NoExternalTest (constant): TRUE = no manual test after a failed automatic test; latched at activation.
-        pub NoExternalTest: SL_BOOL,
-        /// Offset 4. S_StartReset: TRUE = automatic reset at activation (start-up).
-        pub S_StartReset: SL_BOOL,
-        /// Offset 5. S_AutoReset: TRUE = automatic reset when the safety demand ends.
-        pub S_AutoReset: SL_BOOL,
-        /// Offset 6. Reset: a rising edge resets; held TRUE into a wait-for-reset state it is a static-reset error.
-        pub Reset: SL_BOOL,
-        /// Offset 7. Library extension, constant: DiagCode profile, 0 = v2.01 (default), 1 = v1.0; latched at activation.
-        pub nDiagProfile: u8,
-        /// Offset 8. TestTime (constant, ms; PLCopen default T#10ms, at most 150 ms): each test phase's limit; latched at activation.
-        pub TestTime: u32,
-        /// Offset 12 (output base). Ready: TRUE while activated (DiagCode != 0000).
-        pub Ready: SL_BOOL,
-        /// Offset 13. S_OSSD_Out: the safety output, TRUE at 8000, 8010 and during the test (8020, 8030).
-        pub S_OSSD_Out: SL_BOOL,
-        /// Offset 14. S_TestOut: to the sensor's test input, FALSE = transmitter off (test phase 1, 8020, and library faults).
-        pub S_TestOut: SL_BOOL,
-        /// Offset 15. TestPossible: an automatic test can be started (8010, 8000).
-        pub TestPossible: SL_BOOL,
-        /// Offset 16. TestExecuted: the automatic test passed (8000), until the next test or demand.
-        pub TestExecuted: SL_BOOL,
-        /// Offset 17. SafetyDemand: the safety function is demanded (v2.01 code bit 0x0800).
-        pub SafetyDemand: SL_BOOL,
-        /// Offset 18. ResetRequest: a reset is awaited (v2.01 code bit 0x0400) and Reset is FALSE.
-        pub ResetRequest: SL_BOOL,
-        /// Offset 19. Error: DiagCode >= C000.
-        pub Error: SL_BOOL,
-        /// Offset 20. DiagCode: the state or error, in the profile of nDiagProfile.
-        pub DiagCode: u16,
-        /// Offset 22. Reserved.
-        pub aReserved1: [u8; 2],
-    } private 24: SL_SF_PRIVATE, 40
 }
 
 crate::impl_sf_member!(SF_TestableSafetySensor {

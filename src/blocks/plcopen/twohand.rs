@@ -10,8 +10,7 @@
 
 use crate::base::sf::DiagState;
 
-/// Type III's synchronism time (ms): fixed, not a parameter (CS-EXT, CS-LIB).
-pub const SYNC_TIME_MS: u32 = 500;
+include!(concat!(env!("OUT_DIR"), "/abi/blocks/plcopen/twohand.rs"));
 
 /// Declares a two-hand state enum: the states of type II, then `$extra` (type III's
 /// synchronism errors).

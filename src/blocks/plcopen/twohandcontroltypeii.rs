@@ -3,8 +3,10 @@
 
 use crate::base::types::SL_BOOL;
 
-/// Block type tag of SF_TwoHandControlTypeII (`SL_MEMBER.nType`, `sl_diag_text`).
-pub const SL_TYPE_SF_TWOHANDCONTROLTYPEII: u16 = 524;
+include!(concat!(
+    env!("OUT_DIR"),
+    "/abi/blocks/plcopen/twohandcontroltypeii.rs"
+));
 
 crate::two_hand_struct! {
     /// SF_TwoHandControlTypeII instance: the PLCopen VAR_INPUT / VAR_OUTPUT names, BOOL = one byte.

@@ -3,8 +3,10 @@
 
 use crate::base::types::SL_BOOL;
 
-/// Block type tag of SF_TwoHandControlTypeIII (`SL_MEMBER.nType`, `sl_diag_text`).
-pub const SL_TYPE_SF_TWOHANDCONTROLTYPEIII: u16 = 525;
+include!(concat!(
+    env!("OUT_DIR"),
+    "/abi/blocks/plcopen/twohandcontroltypeiii.rs"
+));
 
 crate::two_hand_struct! {
     /// SF_TwoHandControlTypeIII instance: the PLCopen VAR_INPUT / VAR_OUTPUT names, BOOL = one byte.

@@ -1,0 +1,259 @@
+//! The ABI declarations kept as data: a source file `src/…/x.rs` may keep its C ABI
+//! constants and its `block_struct!` / `private_struct!` declarations in `src/…/x.abi.toml`
+//! beside it. build.rs writes them as Rust to `OUT_DIR/abi/…/x.rs`, which the source file
+//! includes where the declarations belong:
+//!
+//! ```text
+//! include!(concat!(env!("OUT_DIR"), "/abi/blocks/boolean/muting.rs"));
+//! ```
+//!
+//! The data file holds `[[const]]` tables (`name`, `type`, `value`, `doc`, an optional plain
+//! `comment` above) and `[[struct]]` tables (`macro`, `name`, optional `generics`, `doc`,
+//! optional `tail` — the macro's words after the fields — and `[[struct.field]]` tables with
+//! `name`, `type` and `doc`; a field without `type` is a marker such as `stHeader`). Docs are
+//! the doc comment's lines without `/// `. Constants come out first, then the structs, each
+//! kind in the file's order. A malformed file stops the build naming the file, the
+//! declaration and the field.
+
+use serde::Deserialize;
+use std::collections::BTreeMap;
+use std::fs;
+use std::path::Path;
+
+/// The integer types a C ABI constant may have.
+const CONST_TYPES: [&str; 6] = ["u8", "u16", "u32", "i8", "i16", "i32"];
+
+/// The declaration macros of the core (`src/base/layout.rs`) a `[[struct]]` may name.
+const MACROS: [&str; 2] = ["block_struct", "private_struct"];
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct Const {
+    comment: Option<String>,
+    name: String,
+    #[serde(rename = "type")]
+    ty: String,
+    value: String,
+    doc: String,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct Struct {
+    #[serde(rename = "macro")]
+    mac: String,
+    name: String,
+    #[serde(default)]
+    generics: String,
+    doc: String,
+    #[serde(default)]
+    tail: String,
+    // Read one by one below, so that an error names the field.
+    field: Vec<toml::Value>,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct Field {
+    name: String,
+    #[serde(rename = "type")]
+    ty: Option<String>,
+    doc: Option<String>,
+}
+
+/// Every `*.abi.toml` below `src`, written out as Rust below `out`: the generated text by
+/// the path of the including file relative to `src` (`blocks/boolean/muting.rs`).
+pub fn generate(src: &Path, out: &Path) -> BTreeMap<String, String> {
+    let mut texts = BTreeMap::new();
+    let mut todo = vec![src.to_path_buf()];
+    while let Some(d) = todo.pop() {
+        for entry in fs::read_dir(&d).expect("read src") {
+            let p = entry.expect("dir entry").path();
+            let name = p.file_name().and_then(|n| n.to_str()).unwrap_or_default();
+            if p.is_dir() {
+                todo.push(p);
+            } else if let Some(stem) = name.strip_suffix(".abi.toml") {
+                println!("cargo:rerun-if-changed={}", p.display());
+                let rs = p.with_file_name(format!("{stem}.rs"));
+                assert!(
+                    rs.exists(),
+                    "{}: no {} beside it",
+                    p.display(),
+                    rs.display()
+                );
+                let rel = rs
+                    .strip_prefix(src)
+                    .expect("below src")
+                    .to_str()
+                    .expect("UTF-8 path")
+                    .replace('\\', "/");
+                let file = format!("src/{}{stem}.abi.toml", &rel[..rel.len() - stem.len() - 3]);
+                let text = rust_of(&file, &fs::read_to_string(&p).expect("read"));
+                let target = out.join(&rel);
+                fs::create_dir_all(target.parent().expect("parent")).expect("create OUT_DIR/abi");
+                fs::write(&target, &text).expect("write OUT_DIR/abi");
+                texts.insert(rel, text);
+            }
+        }
+    }
+    texts
+}
+
+/// The line that includes the generated declarations of `rel`.
+fn include_line(rel: &str) -> String {
+    format!("include!(concat!(env!(\"OUT_DIR\"), \"/abi/{rel}\"));")
+}
+
+/// `text` (the source file `rel`) with its include line replaced by the generated
+/// declarations: what cbindgen and the macro expander read.
+pub fn substitute(rel: &str, text: &str, texts: &BTreeMap<String, String>) -> String {
+    let Some(generated) = texts.get(rel) else {
+        assert!(
+            !text.contains("\"/abi/"),
+            "src/{rel} includes generated declarations but has no data file {}",
+            rel.trim_end_matches(".rs").to_string() + ".abi.toml"
+        );
+        return text.to_string();
+    };
+    // The include as rustfmt may wrap it: compared without white space.
+    let line = include_line(rel);
+    let wanted: String = line.split_whitespace().collect();
+    let span = text.match_indices("include!(").find_map(|(start, _)| {
+        let end = start + text[start..].find("));")? + 3;
+        let found: String = text[start..end].split_whitespace().collect();
+        (found == wanted).then_some((start, end))
+    });
+    let (start, end) =
+        span.unwrap_or_else(|| panic!("src/{rel} does not include its declarations: `{line}`"));
+    format!("{}{}{}", &text[..start], generated, &text[end..])
+}
+
+fn is_ident(s: &str) -> bool {
+    s.chars()
+        .next()
+        .is_some_and(|c| c.is_ascii_alphabetic() || c == '_')
+        && s.chars().all(|c| c.is_ascii_alphanumeric() || c == '_')
+}
+
+/// One line free of anything that would end the generated item early.
+fn one_line(s: &str) -> bool {
+    !s.is_empty() && !s.contains(['\n', ';', '{', '}'])
+}
+
+/// `doc` as `///` lines at `indent`.
+fn doc_lines(out: &mut String, indent: &str, doc: &str) {
+    for line in doc.lines() {
+        if line.is_empty() {
+            out.push_str(&format!("{indent}///\n"));
+        } else {
+            out.push_str(&format!("{indent}/// {line}\n"));
+        }
+    }
+}
+
+/// The Rust declarations of the data file `file` (for messages) with the text `data`.
+fn rust_of(file: &str, data: &str) -> String {
+    let table: toml::Table = toml::from_str(data).unwrap_or_else(|e| panic!("{file}: {e}"));
+    let mut out = format!("// Generated by build.rs from {file}: edit that file.\n\n");
+    for key in table.keys() {
+        assert!(
+            key == "const" || key == "struct",
+            "{file}: unknown table `{key}` (expected [[const]] or [[struct]])"
+        );
+    }
+    let list = |key: &str| -> Vec<toml::Value> {
+        match table.get(key) {
+            None => Vec::new(),
+            Some(toml::Value::Array(a)) => a.clone(),
+            Some(_) => panic!("{file}: `{key}` must be an array of tables ([[{key}]])"),
+        }
+    };
+    let name_of = |v: &toml::Value| {
+        v.get("name")
+            .and_then(|n| n.as_str())
+            .unwrap_or("(no name)")
+            .to_string()
+    };
+    for (k, v) in list("const").into_iter().enumerate() {
+        let name = name_of(&v);
+        let c: Const = v
+            .try_into()
+            .unwrap_or_else(|e| panic!("{file}: constant #{} {name}: {e}", k + 1));
+        assert!(is_ident(&c.name), "{file}: constant {name}: bad name");
+        assert!(
+            CONST_TYPES.contains(&c.ty.as_str()),
+            "{file}: constant {name}: type `{}` is not one of {CONST_TYPES:?}",
+            c.ty
+        );
+        assert!(
+            one_line(&c.value),
+            "{file}: constant {name}: bad value `{}`",
+            c.value
+        );
+        assert!(!c.doc.is_empty(), "{file}: constant {name}: empty doc");
+        for line in c.comment.iter().flat_map(|c| c.lines()) {
+            out.push_str(&format!("// {line}\n"));
+        }
+        doc_lines(&mut out, "", &c.doc);
+        out.push_str(&format!(
+            "pub const {}: {} = {};\n\n",
+            c.name, c.ty, c.value
+        ));
+    }
+    for (k, v) in list("struct").into_iter().enumerate() {
+        let name = name_of(&v);
+        let s: Struct = v
+            .try_into()
+            .unwrap_or_else(|e| panic!("{file}: struct #{} {name}: {e}", k + 1));
+        assert!(is_ident(&s.name), "{file}: struct {name}: bad name");
+        assert!(
+            MACROS.contains(&s.mac.as_str()),
+            "{file}: struct {name}: macro `{}` is not one of {MACROS:?}",
+            s.mac
+        );
+        assert!(
+            !s.generics.contains(['{', '}', ';']) || s.generics.starts_with('['),
+            "{file}: struct {name}: bad generics `{}`",
+            s.generics
+        );
+        assert!(!s.doc.is_empty(), "{file}: struct {name}: empty doc");
+        assert!(
+            !s.field.is_empty(),
+            "{file}: struct {name}: no [[struct.field]]"
+        );
+        out.push_str(&format!("crate::base::layout::{}! {{\n", s.mac));
+        doc_lines(&mut out, "    ", &s.doc);
+        out.push_str(&format!("    {}{} {{\n", s.name, s.generics));
+        for (j, f) in s.field.into_iter().enumerate() {
+            let fname = name_of(&f);
+            let f: Field = f
+                .try_into()
+                .unwrap_or_else(|e| panic!("{file}: struct {name}, field #{} {fname}: {e}", j + 1));
+            assert!(
+                is_ident(&f.name),
+                "{file}: struct {name}, field #{} {fname}: bad name",
+                j + 1
+            );
+            doc_lines(&mut out, "        ", f.doc.as_deref().unwrap_or_default());
+            match f.ty {
+                Some(ty) => {
+                    assert!(
+                        !ty.is_empty()
+                            && !ty.contains(['\n', '{', '}', ','])
+                            && (!ty.contains(';') || ty.starts_with('[')),
+                        "{file}: struct {name}, field {fname}: bad type `{ty}`"
+                    );
+                    out.push_str(&format!("        pub {}: {ty},\n", f.name));
+                }
+                None => out.push_str(&format!("        {};\n", f.name)),
+            }
+        }
+        out.push_str("    }");
+        for (j, line) in s.tail.lines().enumerate() {
+            out.push_str(if j == 0 { " " } else { "\n        " });
+            out.push_str(line);
+        }
+        out.push_str("\n}\n\n");
+    }
+    out
+}
