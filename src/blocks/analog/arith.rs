@@ -165,11 +165,6 @@ const _: () = {
     assert!(offset_of!(FB_ADD_INT, stPrivate) == 64 && offset_of!(FB_ADD_DINT, stPrivate) == 72);
 };
 
-crate::base::block::block_states!(
-    /// The states of FB ADD, SUB, MUL and DIV, every variant (manual §4.16.2 ff.).
-    ArithState: Run, Stop, Error, Reset
-);
-
 /// Diag value texts of every arithmetic block (manual §4.16.2 ff.).
 const DIAG_VALUES: &[(u16, &str)] =
     super::range_diag_values!("AnalogOut", "The output AnalogOut is correct", "");

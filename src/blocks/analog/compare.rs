@@ -41,11 +41,6 @@ const _: () = {
     assert!(size_of::<SL_COMPARE_PRIVATE>() == 48);
 };
 
-crate::base::block::block_states!(
-    /// The states of FB COMPARE, every variant (manual §4.20.2).
-    CompareState: Run, Stop, Safe, Error, Reset, DelayOut
-);
-
 /// Diag value texts (manual §4.20.2).
 const DIAG_VALUES: &[(u16, &str)] =
     super::range_diag_values!("CompOut", "The output CompOut is correct", "");

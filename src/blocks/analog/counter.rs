@@ -31,11 +31,6 @@ include!(concat!(env!("OUT_DIR"), "/abi/blocks/analog/counter.rs"));
 // 40, info at 48, private at 64.
 const _: () = assert!(core::mem::size_of::<SL_COUNTER_PRIVATE>() == 56);
 
-crate::base::block::block_states!(
-    /// The states of FB COUNTER, every variant (manual §4.22.2): no SAFE.
-    CounterState: Run, Stop, Error, Reset
-);
-
 /// Diag value texts (manual §4.22.2).
 const DIAG_VALUES: &[(u16, &str)] =
     super::range_diag_values!("ActValue", "No diagnostic information", "");

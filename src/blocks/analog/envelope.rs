@@ -30,12 +30,6 @@ super::analog_variants! {
 
 include!(concat!(env!("OUT_DIR"), "/abi/blocks/analog/envelope.rs"));
 
-crate::base::block::block_states!(
-    /// The states of FB ENVELOPE, every variant (manual §4.32.2).
-    EnvelopeState: Run, Stop, Safe, Error, Reset, DelayOut,
-    Monitor = SL_STATE_ENVELOPE_MONITOR, "MONITOR"
-);
-
 /// Diag value texts (manual §4.32.2).
 const DIAG_VALUES: &[(u16, &str)] = &[
     (0, "No diagnostic information"),

@@ -38,11 +38,6 @@ const _: () = {
     assert!(size_of::<SL_LIMIT_PRIVATE>() == 48);
 };
 
-crate::base::block::block_states!(
-    /// The states of FB LIMIT, every variant (manual §4.21.2).
-    LimitState: Run, Stop, Safe, Error, Reset
-);
-
 /// Diag value texts (manual §4.21.2).
 const DIAG_VALUES: &[(u16, &str)] = &[
     (0, "No diagnostic information"),

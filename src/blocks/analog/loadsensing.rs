@@ -187,14 +187,6 @@ const _: () = {
     assert!(size_of::<FB_LOADSENSING_UINT>() == 600 && size_of::<FB_LOADSENSING_UDINT>() == 1104);
 };
 
-crate::base::block::block_states!(
-    /// The states of FB LOADSENSING, every variant (manual §4.25.2; ERROR and RESET for the
-    /// library's faults).
-    LoadSensingState: Run, Stop, Safe, Error, Reset,
-    Inactive = SL_STATE_LOADSENSING_INACTIVE, "INACTIVE",
-    Warning = SL_STATE_LOADSENSING_WARNING, "WARNING"
-);
-
 crate::impl_member!([T: Analog, const P1: usize, const PR: usize] FB_LOADSENSING<T, P1, PR> {
     info: crate::blocks::analog::variant_info!(T, "LOADSENSING", LoadSensingState, &[(0, "No diagnostic information")];
         INT = SL_TYPE_LOADSENSING_INT, UINT = SL_TYPE_LOADSENSING_UINT, DINT = SL_TYPE_LOADSENSING_DINT, UDINT = SL_TYPE_LOADSENSING_UDINT),

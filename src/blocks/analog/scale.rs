@@ -46,11 +46,6 @@ const _: () = {
     assert!(size_of::<SL_SCALE_PRIVATE>() == 72);
 };
 
-crate::base::block::block_states!(
-    /// The states of FB SCALE, every variant (manual §4.23.2): no SAFE.
-    ScaleState: Run, Stop, Error, Reset
-);
-
 /// Diag value texts (manual §4.23.2).
 const DIAG_VALUES: &[(u16, &str)] = super::range_diag_values!(
     "AnalogOut",

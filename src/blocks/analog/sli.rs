@@ -32,11 +32,6 @@ const _: () = {
     assert!(offset_of!(FB_SLI_UINT, nState) == 56 && offset_of!(FB_SLI_DINT, nState) == 56);
 };
 
-crate::base::block::block_states!(
-    /// The states of FB SLI, every variant (manual §4.27.2; no EXCEEDED, semantics SI1).
-    SliState: Run, Stop, Safe, Error, Reset
-);
-
 /// Diag value texts (manual §4.27.2), shared with FB SLI2 (§4.28 has no table of its own).
 pub(crate) const DIAG_VALUES: &[(u16, &str)] = &[
     (0, "No diagnostic information"),

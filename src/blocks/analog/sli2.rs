@@ -35,11 +35,6 @@ const _: () = {
     assert!(offset_of!(FB_SLI2_UINT, nState) == 64 && offset_of!(FB_SLI2_DINT, nState) == 64);
 };
 
-crate::base::block::block_states!(
-    /// The states of FB SLI2, every variant (manual §4.28.2.3).
-    Sli2State: Run, Stop, Safe, Error, Reset, Exceeded = SL_STATE_SLI2_EXCEEDED, "EXCEEDED"
-);
-
 crate::impl_member!([T: Analog, TS: Analog, const P1: usize, const P2: usize] FB_SLI2<T, TS, P1, P2> {
     info: crate::blocks::analog::variant_info!(T, "SLI2", Sli2State, super::sli::DIAG_VALUES;
         INT = SL_TYPE_SLI2_INT, UINT = SL_TYPE_SLI2_UINT, DINT = SL_TYPE_SLI2_DINT, UDINT = SL_TYPE_SLI2_UDINT),

@@ -43,11 +43,6 @@ const _: () = {
     assert!(size_of::<SL_SPEED_PRIVATE>() == 56);
 };
 
-crate::base::block::block_states!(
-    /// The states of FB SPEED, every variant (manual §4.24.2): no SAFE.
-    SpeedState: Run, Stop, Error, Reset
-);
-
 /// Diag value texts (manual §4.24.2).
 const DIAG_VALUES: &[(u16, &str)] =
     super::range_diag_values!("Speed", "No diagnostic information", "");

@@ -36,12 +36,6 @@ const _: () = {
     assert!(size_of::<SL_VIOLATIONCOUNTER_PRIVATE>() == 48);
 };
 
-crate::base::block::block_states!(
-    /// The states of FB VIOLATIONCOUNTER, both variants (manual §4.33.2; ERROR and RESET
-    /// for the library's faults).
-    ViolationCounterState: Run, Stop, Safe, Error, Reset, Start
-);
-
 crate::impl_member!([T: Unsigned, const P1: usize, const P2: usize] FB_VIOLATIONCOUNTER<T, P1, P2> {
     info: crate::blocks::analog::variant_info!(T, "VIOLATIONCOUNTER", ViolationCounterState, &[(0, "No diagnostic information")];
         UINT = SL_TYPE_VIOLATIONCOUNTER_UINT, UDINT = SL_TYPE_VIOLATIONCOUNTER_UDINT),

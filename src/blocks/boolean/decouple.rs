@@ -10,11 +10,6 @@ use crate::base::types::*;
 
 include!(concat!(env!("OUT_DIR"), "/abi/blocks/boolean/decouple.rs"));
 
-crate::base::block::block_states!(
-    /// The states of FB DECOUPLE.
-    DecoupleState: Run, Stop, Error, Reset
-);
-
 /// Type tag, name and diag texts (manual §4.6.2: diag "always 0").
 const INFO: BlockInfo = BlockInfo {
     tag: SL_TYPE_DECOUPLE,

@@ -16,16 +16,6 @@ use crate::base::{bools, time};
 
 include!(concat!(env!("OUT_DIR"), "/abi/blocks/boolean/edm.rs"));
 
-crate::base::block::block_states!(
-    /// The states of FB EDM.
-    EdmState:
-        Stop,
-        Error,
-        Reset,
-        MonOff = SL_STATE_EDM_MONOFF, "MONOFF",
-        MonOn = SL_STATE_EDM_MONON, "MONON"
-);
-
 /// Type tag, name and diag texts (manual §4.9.2).
 const INFO: BlockInfo = BlockInfo {
     tag: SL_TYPE_EDM,

@@ -12,11 +12,6 @@ use crate::base::types::*;
 
 include!(concat!(env!("OUT_DIR"), "/abi/blocks/boolean/estop.rs"));
 
-crate::base::block::block_states!(
-    /// The states of FB ESTOP.
-    EstopState: Run, Stop, Safe, Error, Reset, Start, DelayOut
-);
-
 /// Type tag, name and diag texts (manual §4.4.2).
 const INFO: BlockInfo = BlockInfo {
     tag: SL_TYPE_ESTOP,

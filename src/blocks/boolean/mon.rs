@@ -16,20 +16,6 @@ include!(concat!(env!("OUT_DIR"), "/abi/blocks/boolean/mon.rs"));
 const MON_INPUTS: u8 = 0x0F;
 const SECURE_INPUTS: u8 = 0x30;
 
-crate::base::block::block_states!(
-    /// The states of FB MON.
-    MonState:
-        Run,
-        Stop,
-        Safe,
-        Error,
-        Reset,
-        Start,
-        ErrorDelay = SL_STATE_ERRORDELAY, "ERRORDELAY",
-        DelayOut,
-        FuncTest = SL_STATE_FUNCTEST, "FUNCTEST"
-);
-
 /// Type tag, name and diag texts (manual §4.5.2).
 const INFO: BlockInfo = BlockInfo {
     tag: SL_TYPE_MON,

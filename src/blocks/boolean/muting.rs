@@ -22,26 +22,6 @@ use crate::base::{pair, time};
 
 include!(concat!(env!("OUT_DIR"), "/abi/blocks/boolean/muting.rs"));
 
-crate::base::block::block_states!(
-    /// The states of FB MUTING.
-    MutingState:
-        Run,
-        Stop,
-        Safe,
-        Error,
-        Reset,
-        DelayOut,
-        Muting1 = SL_STATE_MUTING_MUTING1, "MUTING1",
-        Muting2 = SL_STATE_MUTING_MUTING2, "MUTING2",
-        Muting3 = SL_STATE_MUTING_MUTING3, "MUTING3",
-        Muting4 = SL_STATE_MUTING_MUTING4, "MUTING4",
-        Muting5 = SL_STATE_MUTING_MUTING5, "MUTING5",
-        Muting6 = SL_STATE_MUTING_MUTING6, "MUTING6",
-        Muting7 = SL_STATE_MUTING_MUTING7, "MUTING7",
-        Muting8 = SL_STATE_MUTING_MUTING8, "MUTING8",
-        Muting9 = SL_STATE_MUTING_MUTING9, "MUTING9"
-);
-
 /// Type tag, name, states and diag texts (manual §4.8.2, §4.8.4).
 const INFO: BlockInfo = BlockInfo {
     tag: SL_TYPE_MUTING,

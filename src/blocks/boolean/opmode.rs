@@ -20,11 +20,6 @@ use crate::base::types::*;
 
 include!(concat!(env!("OUT_DIR"), "/abi/blocks/boolean/opmode.rs"));
 
-crate::base::block::block_states!(
-    /// The states of FB OPMODE.
-    OpmodeState: Run, Stop, Safe, Error, Reset, Start
-);
-
 /// Type tag, name, states and diag texts (manual §4.3.2).
 const INFO: BlockInfo = BlockInfo {
     tag: SL_TYPE_OPMODE,

@@ -18,11 +18,6 @@ use crate::base::types::*;
 
 include!(concat!(env!("OUT_DIR"), "/abi/blocks/boolean/ton2.rs"));
 
-crate::base::block::block_states!(
-    /// The states of FB TON2.
-    Ton2State: Run, Stop, Safe, Error, Reset, DelayIn = SL_STATE_TON2_DELAYIN, "DELAYIN"
-);
-
 /// Type tag, name, states and diag texts (manual §4.13.2).
 const INFO: BlockInfo = BlockInfo {
     tag: SL_TYPE_TON2,

@@ -19,19 +19,6 @@ use crate::base::{pair, time};
 
 include!(concat!(env!("OUT_DIR"), "/abi/blocks/boolean/twohand.rs"));
 
-crate::base::block::block_states!(
-    /// The states of FB TWOHAND.
-    TwohandState:
-        Run,
-        Stop,
-        Safe,
-        Error,
-        Reset,
-        OneButton = SL_STATE_TWOHAND_1BUTTON, "1BUTTON",
-        TwoButton = SL_STATE_TWOHAND_2BUTTON, "2BUTTON",
-        Release = SL_STATE_TWOHAND_RELEASE, "RELEASE"
-);
-
 /// Type tag, name, states and diag texts (manual §4.7.2).
 const INFO: BlockInfo = BlockInfo {
     tag: SL_TYPE_TWOHAND,

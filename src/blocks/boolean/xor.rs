@@ -10,11 +10,6 @@ use crate::base::types::*;
 
 include!(concat!(env!("OUT_DIR"), "/abi/blocks/boolean/xor.rs"));
 
-crate::base::block::block_states!(
-    /// The states of FB XOR.
-    XorState: Run, Stop, Error, Reset
-);
-
 /// Type tag, name and diag texts (manual §4.34.2: no diagnostic information).
 const INFO: BlockInfo = BlockInfo {
     tag: SL_TYPE_XOR,

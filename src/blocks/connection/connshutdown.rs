@@ -24,11 +24,6 @@ include!(concat!(
     "/abi/blocks/connection/connshutdown.rs"
 ));
 
-crate::base::block::block_states!(
-    /// The states of FB CONNECTION SHUTDOWN.
-    ConnShutdownState: Run, Stop, Safe, Error, Reset
-);
-
 const INFO: BlockInfo = BlockInfo {
     tag: SL_TYPE_CONNECTION_SHUTDOWN,
     name: "CONNECTION_SHUTDOWN",

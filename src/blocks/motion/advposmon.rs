@@ -40,12 +40,6 @@ const _: () = {
     assert!(size_of::<SL_ADVPOSMON_PRIVATE>() == 40 && size_of::<FB_ADVPOSMON>() == 104);
 };
 
-crate::base::block::block_states!(
-    /// The states of FB ADVPOSMON (manual §4.31.2.3).
-    AdvPosMonState: Run, Stop, Safe, Error, Reset, Start,
-    WaitForRestart = SL_STATE_ADVPOSMON_WAIT_FOR_RESTART, "WAIT-FOR-RESTART"
-);
-
 /// Type tag, name, states and diag values (manual §4.31.2.3 "FB Diag").
 const INFO: BlockInfo = BlockInfo {
     tag: SL_TYPE_ADVPOSMON,

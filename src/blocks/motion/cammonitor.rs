@@ -61,27 +61,6 @@ const _: () = {
     assert!(size_of::<U>() == 112 + size_of::<SL_CAMMONITOR_PRIVATE>());
 };
 
-crate::base::block::block_states!(
-    /// The states of FB CAMMONITOR, both variants (manual §4.26.9).
-    CamMonitorState: Run, Stop, Safe, Error, Reset, Start,
-    WaitForReset = SL_STATE_CAMMONITOR_WAIT_FOR_RESET, "WAIT-FOR-RESET",
-    MoveStop = SL_STATE_CAMMONITOR_MOVE_STOP, "MOVE-STOP",
-    MoveStart = SL_STATE_CAMMONITOR_MOVE_START, "MOVE-START",
-    MoveDown = SL_STATE_CAMMONITOR_MOVE_DOWN, "MOVE-DOWN",
-    MoveUp = SL_STATE_CAMMONITOR_MOVE_UP, "MOVE-UP",
-    MoveTdc = SL_STATE_CAMMONITOR_MOVE_TDC, "MOVE-TDC",
-    MoveDownCw = SL_STATE_CAMMONITOR_MOVE_DOWN_CW, "MOVE-DOWN-CLOCKWISE",
-    MoveUpCw = SL_STATE_CAMMONITOR_MOVE_UP_CW, "MOVE-UP-CLOCKWISE",
-    MoveUpTdc1 = SL_STATE_CAMMONITOR_MOVE_UP_TDC1, "MOVE-UP-TDC1",
-    MoveStopTdc1 = SL_STATE_CAMMONITOR_MOVE_STOP_TDC1, "MOVE-STOP-TDC1",
-    MoveStartTdc1 = SL_STATE_CAMMONITOR_MOVE_START_TDC1, "MOVE-START-TDC1",
-    MoveDownCcw = SL_STATE_CAMMONITOR_MOVE_DOWN_CCW, "MOVE-DOWN-CONTRA-CLOCKWISE",
-    MoveUpCcw = SL_STATE_CAMMONITOR_MOVE_UP_CCW, "MOVE-UP-CONTRA-CLOCKWISE",
-    MoveUpTdc2 = SL_STATE_CAMMONITOR_MOVE_UP_TDC2, "MOVE-UP-TDC2",
-    MoveStopTdc2 = SL_STATE_CAMMONITOR_MOVE_STOP_TDC2, "MOVE-STOP-TDC2",
-    MoveStartTdc2 = SL_STATE_CAMMONITOR_MOVE_START_TDC2, "MOVE-START-TDC2"
-);
-
 /// The messages (Text ID − 0x4000, the manual's message text), §4.26.7 and §4.26.8.
 const DIAG_VALUES: &[(u16, &str)] = &[
     (0, "No diagnostic information"),

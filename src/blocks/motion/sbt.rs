@@ -40,15 +40,6 @@ const _: () = {
     assert!(size_of::<SL_SBT_PRIVATE>() == 80 && size_of::<FB_SBT>() == 176);
 };
 
-crate::base::block::block_states!(
-    /// The states of FB SBT (manual §4.30.2.3, numbers of ABI-2 §11.15).
-    SbtState: Run, Stop, Safe, Error, Reset,
-    Testing = SL_STATE_SBT_TESTING, "TESTING",
-    TestOk = SL_STATE_SBT_TEST_OK, "TEST-OK",
-    TestFailed = SL_STATE_SBT_TEST_FAILED, "TEST-FAILED",
-    MonsError = SL_STATE_SBT_MONS_ERROR, "MONS-ERROR"
-);
-
 /// Type tag, name, states and diag values (the messages, ABI-2 §11.15).
 const INFO: BlockInfo = BlockInfo {
     tag: SL_TYPE_SBT,

@@ -35,11 +35,6 @@ const _: () = {
     assert!(size_of::<SL_SLP_PRIVATE>() == 64 && size_of::<FB_SLP>() == 160);
 };
 
-crate::base::block::block_states!(
-    /// The states of FB SLP (manual §4.29.2.3).
-    SlpState: Run, Stop, Safe, Error, Reset, Start
-);
-
 /// (diag bit, Text ID) of the two limit errors.
 const MESSAGES: [(u16, u16); 2] = [
     (

@@ -13,37 +13,6 @@ use crate::base::types::{SL_BOOL, SL_DIAG_EDM1, SL_DIAG_EDM2};
 
 include!(concat!(env!("OUT_DIR"), "/abi/blocks/plcopen/edm.rs"));
 
-crate::sf_states!(
-    /// The states of SF_EDM: values = v2.01 DiagCodes (CS-LIB FBS_EDM up to C060; the rest
-    /// chosen, semantics QD2), with the v1.0 codes (B&R list, research §4.10).
-    SfEdmState, init: Init {
-        Idle = 0x0000, 0x0000, "IDLE", "FB not activated";
-        Init = 0x8401, 0x8001, "INIT", "activated; start-up inhibit: waiting for a rising edge of Reset (or S_StartReset)";
-        OutDisable = 0x8810, 0x8010, "OUT_DISABLE", "output FALSE; feedback monitored for release from the entry";
-        OutEnable = 0x8000, 0x8000, "OUT_ENABLE", "output TRUE; feedback monitored for switching from the entry";
-        ErrReset1 = 0xC001, 0xC001, "ERR_RESET_1", "static Reset while waiting for the reset after activation";
-        ErrInit = 0xC100, 0xC111, "ERR_INIT", "rising edges of S_OutControl and Reset in the same call";
-        ErrEdm11 = 0xC010, 0xC010, "ERR_EDM_11", "S_OutControl TRUE while EDM1 is not released";
-        ErrEdm12 = 0xC020, 0xC020, "ERR_EDM_12", "S_OutControl TRUE while EDM2 is not released";
-        ErrEdm13 = 0xC030, 0xC030, "ERR_EDM_13", "S_OutControl TRUE while EDM1 and EDM2 are not released";
-        ErrEdm21 = 0xC040, 0xC040, "ERR_EDM_21", "MonitoringTime elapsed after switching off, EDM1 not released";
-        ErrEdm22 = 0xC050, 0xC050, "ERR_EDM_22", "MonitoringTime elapsed after switching off, EDM2 not released";
-        ErrEdm23 = 0xC060, 0xC060, "ERR_EDM_23", "MonitoringTime elapsed after switching off, EDM1 and EDM2 not released";
-        ErrEdm31 = 0xC070, 0xC070, "ERR_EDM_31", "MonitoringTime elapsed after switching on, EDM1 not switched";
-        ErrEdm32 = 0xC080, 0xC080, "ERR_EDM_32", "MonitoringTime elapsed after switching on, EDM2 not switched";
-        ErrEdm33 = 0xC090, 0xC090, "ERR_EDM_33", "MonitoringTime elapsed after switching on, EDM1 and EDM2 not switched";
-        ErrEdm11R = 0xC011, 0xC011, "ERR_EDM_11_RESET", "static Reset in ERR_EDM_11";
-        ErrEdm12R = 0xC021, 0xC021, "ERR_EDM_12_RESET", "static Reset in ERR_EDM_12";
-        ErrEdm13R = 0xC031, 0xC031, "ERR_EDM_13_RESET", "static Reset in ERR_EDM_13";
-        ErrEdm21R = 0xC041, 0xC041, "ERR_EDM_21_RESET", "static Reset in ERR_EDM_21";
-        ErrEdm22R = 0xC051, 0xC051, "ERR_EDM_22_RESET", "static Reset in ERR_EDM_22";
-        ErrEdm23R = 0xC061, 0xC061, "ERR_EDM_23_RESET", "static Reset in ERR_EDM_23";
-        ErrEdm31R = 0xC071, 0xC071, "ERR_EDM_31_RESET", "static Reset in ERR_EDM_31";
-        ErrEdm32R = 0xC081, 0xC081, "ERR_EDM_32_RESET", "static Reset in ERR_EDM_32";
-        ErrEdm33R = 0xC091, 0xC091, "ERR_EDM_33_RESET", "static Reset in ERR_EDM_33";
-    }
-);
-
 /// One call's inputs.
 #[derive(Clone, Copy, Debug, Default)]
 pub struct SfEdmIn {

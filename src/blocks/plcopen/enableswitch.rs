@@ -17,26 +17,6 @@ include!(concat!(
     "/abi/blocks/plcopen/enableswitch.rs"
 ));
 
-crate::sf_states!(
-    /// The states of SF_EnableSwitch: values = v2.01 DiagCodes (CS-LIB FBS_ENSWITCH), with
-    /// the v1.0 codes (research §4.9). Note v1.0 8004 is BASIC_OPMODE, v2.01 8004 SAFE_OPMODE
-    /// (semantics QN4).
-    EnableSwitchState, init: BasicOpMode {
-        Idle = 0x0000, 0x0000, "IDLE", "FB not activated";
-        BasicOpMode = 0x8002, 0x8004, "BASIC_OPMODE", "safe operation mode not active (S_SafetyActive FALSE)";
-        SafeOpMode = 0x8004, 0x8005, "SAFE_OPMODE", "safe operation mode active, checking the switch is in position 1 (v1.0 code 8005; v1.0 8004 is BASIC_OPMODE)";
-        Position1 = 0x8802, 0x8006, "POSITION_1", "safe operation mode active, enable switch in position 1";
-        Position3 = 0x8804, 0x8007, "POSITION_3", "safe operation mode active, enable switch in position 3";
-        Position2 = 0x8000, 0x8000, "POSITION_2", "enable switch in position 2 after position 1, output TRUE";
-        ErrOperation1 = 0xC010, 0xC010, "ERR_OPERATION_1", "enable switch not in position 1 when S_SafetyActive became TRUE";
-        ErrOperation2 = 0xC020, 0xC020, "ERR_OPERATION_2", "enable switch in position 1 after ERR_OPERATION_1, waiting for Reset (or S_AutoReset)";
-        ErrOperation3 = 0xC030, 0xC030, "ERR_OPERATION_3", "enable switch in position 2 after position 3";
-        ErrOperation4 = 0xC040, 0xC040, "ERR_OPERATION_4", "enable switch not in position 2 after ERR_OPERATION_3, waiting for Reset (or S_AutoReset)";
-        ErrReset1 = 0xC001, 0xC001, "ERR_RESET_1", "static Reset in ERR_OPERATION_2";
-        ErrReset2 = 0xC011, 0xC002, "ERR_RESET_2", "static Reset in ERR_OPERATION_4";
-    }
-);
-
 /// A switch position.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub enum Position {

@@ -14,25 +14,6 @@ use crate::base::types::SL_BOOL;
 
 include!(concat!(env!("OUT_DIR"), "/abi/blocks/plcopen/guard.rs"));
 
-crate::sf_states!(
-    /// The states of SF_Guard: values = v2.01 DiagCodes (CS-LIB FBS_GUARD), with the v1.0
-    /// codes of SF_GuardMonitoring (research §4.4).
-    SfGuardState, init: Init {
-        Idle = 0x0000, 0x0000, "IDLE", "FB not activated";
-        Init = 0x8001, 0x8001, "INIT", "activated; checks the switches and S_StartReset";
-        Normal = 0x8000, 0x8000, "NORMAL", "guard closed and the safe state acknowledged, S_GuardOut TRUE";
-        OpenStart = 0x8802, 0x8002, "OPEN_START", "a guard switch is open: a complete opening (both switches FALSE) is required";
-        GuardOpened = 0x8804, 0x8012, "GUARD_OPENED", "both guard switches open";
-        WaitSwitch2 = 0x8806, 0x8004, "WAIT_FOR_SWITCH2", "S_GuardSwitch1 closed, waiting for S_GuardSwitch2; discrepancy timer running";
-        WaitSwitch1 = 0x8808, 0x8014, "WAIT_FOR_SWITCH1", "S_GuardSwitch2 closed, waiting for S_GuardSwitch1; discrepancy timer running";
-        GuardClosed = 0x8002, 0x8005, "GUARD_CLOSED", "guard closed; S_AutoReset decides whether a Reset is awaited";
-        WaitReset = 0x8402, 0x8003, "WAIT_FOR_RESET", "guard closed, waiting for a rising edge of Reset";
-        ErrReset = 0xC001, 0xC001, "ERR_RESET", "static Reset while waiting for the reset";
-        ErrDisc1 = 0xC010, 0xC011, "ERR_DISC_TIME_1", "DiscrepancyTime elapsed waiting for S_GuardSwitch2";
-        ErrDisc2 = 0xC020, 0xC012, "ERR_DISC_TIME_2", "DiscrepancyTime elapsed waiting for S_GuardSwitch1";
-    }
-);
-
 /// One call's inputs.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct SfGuardIn {

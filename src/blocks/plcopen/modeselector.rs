@@ -20,24 +20,6 @@ include!(concat!(
     "/abi/blocks/plcopen/modeselector.rs"
 ));
 
-crate::sf_states!(
-    /// The states of SF_ModeSelector: values = v2.01 DiagCodes (CS-LIB FBS_MODESEL), with the
-    /// v1.0 codes (research §4.8; the v2.01 "fault gone" states show the v1.0 code of their
-    /// fault, semantics QM1).
-    ModeState, init: ModeChanged {
-        Idle = 0x0000, 0x0000, "IDLE", "FB not activated";
-        ModeChanged = 0x8802, 0x8005, "MODE_CHANGED", "after activation, an S_ModeX change or an error reset: waiting for one S_ModeX with S_Unlock and a rising S_SetMode (or AutoSetMode); outputs FALSE";
-        Selected = 0x8000, 0x8000, "MODE_SELECTED", "valid mode selected, not locked";
-        Locked = 0x8010, 0x8004, "MODE_LOCKED", "valid mode selection locked (S_Unlock FALSE): S_ModeX changes ignored, selection held";
-        ErrShortCircuit = 0xC010, 0xC001, "ERR_SHORTCIRCUIT", "two or more S_ModeX TRUE (e.g. a short circuit of the cables)";
-        ErrShortCircuitResReq = 0xC410, 0xC001, "ERR_SHORTCIRCUIT_RESREQ", "no more short circuit (one or no S_ModeX TRUE): the error can be reset";
-        ErrOpenCircuit = 0xC020, 0xC002, "ERR_OPENCIRCUIT", "all S_ModeX FALSE for longer than ModeMonitorTime after a falling S_ModeX (e.g. an open circuit)";
-        ErrOpenCircuitResReq = 0xC420, 0xC002, "ERR_OPENCIRCUIT_RESREQ", "one S_ModeX TRUE again: the error can be reset";
-        ErrReset1 = 0xC011, 0xC003, "ERR_RESET_1", "static Reset in ERR_SHORTCIRCUIT_RESREQ";
-        ErrReset2 = 0xC021, 0xC004, "ERR_RESET_2", "static Reset in ERR_OPENCIRCUIT_RESREQ";
-    }
-);
-
 /// `wAux` bits 0–7: the S_ModeX of the last call.
 const AUX_MODES: u16 = 0x00FF;
 /// `wAux` bits 8–10: the index of the selected mode held while MODE_LOCKED.

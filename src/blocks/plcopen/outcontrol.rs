@@ -21,24 +21,6 @@ include!(concat!(
 /// has no ErrAck, whose bit it takes (semantics QO5).
 const F_PROCESS_PREV: u8 = F_ERRACK_PREV;
 
-crate::sf_states!(
-    /// The states of SF_OutControl: values = v2.01 DiagCodes (CS-LIB FBS_OUTCONTROL), with
-    /// the v1.0 codes of research §4.13 (recollection, unverified: semantics QO6).
-    OutControlState, init: Init {
-        Idle = 0x0000, 0x0000, "IDLE", "FB not activated";
-        Init = 0x8401, 0x8001, "INIT", "activated: start-up inhibit active, a rising edge of Reset (or S_StartReset) is required";
-        Safe = 0x8802, 0x8002, "SAFE", "safety function triggered (S_SafeControl FALSE)";
-        Lock = 0x8404, 0x8003, "LOCK", "restart inhibit after the safety function: a rising edge of Reset is required";
-        OutputDisable = 0x8006, 0x8010, "OUTPUT_DISABLE", "safety enabled, ProcessControl not active (or waiting for its rising edge)";
-        OutputEnable = 0x8000, 0x8000, "OUTPUT_ENABLE", "ProcessControl active and safety enabled, S_OutControl TRUE";
-        ErrReset1 = 0xC001, 0xC001, "ERR_RESET_1", "static Reset in INIT";
-        ErrReset2 = 0xC011, 0xC002, "ERR_RESET_2", "static Reset in LOCK";
-        ErrControl = 0xC010, 0xC010, "ERR_CONTROL", "static ProcessControl in OUTPUT_DISABLE with StaticControl FALSE (a rising edge is required)";
-        ErrInit = 0xC020, 0xC011, "ERR_INIT", "rising edges of Reset and ProcessControl in the same call in INIT";
-        ErrLock = 0xC030, 0xC111, "ERR_LOCK", "rising edges of Reset and ProcessControl in the same call in LOCK";
-    }
-);
-
 /// One call's inputs.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct OutControlIn {

@@ -7,21 +7,7 @@
 
 use crate::base::time;
 
-crate::sf_states!(
-    /// The states of the two-channel blocks: values = v2.01 DiagCodes (CS-LIB FBS_EQUI /
-    /// FBS_ANTI), with the v1.0 codes (research §4.11).
-    PairState, init: Init {
-        Idle = 0x0000, 0x0000, "IDLE", "FB not activated";
-        Init = 0x8801, 0x8001, "INIT", "activated; both channels inactive, waiting for switching";
-        Enabled = 0x8000, 0x8000, "OUT_ENABLED", "both channels active, output TRUE";
-        WaitB = 0x8802, 0x8004, "WAIT_FOR_CH_B", "channel A (NC) active, waiting for channel B (NO); discrepancy timer running";
-        WaitA = 0x8804, 0x8014, "WAIT_FOR_CH_A", "channel B (NO) active, waiting for channel A (NC); discrepancy timer running";
-        FromActiveWait = 0x8806, 0x8005, "FROM_ACTIVE_WAIT", "one channel inactive after the output was enabled, waiting for the other; discrepancy timer running";
-        Error1 = 0xC010, 0xC001, "ERROR_1", "discrepancy time elapsed waiting for channel B (NO)";
-        Error2 = 0xC020, 0xC002, "ERROR_2", "discrepancy time elapsed waiting for channel A (NC)";
-        Error3 = 0xC030, 0xC003, "ERROR_3", "discrepancy time elapsed waiting for the second channel to become inactive";
-    }
-);
+include!(concat!(env!("OUT_DIR"), "/abi/blocks/plcopen/pair.rs"));
 
 /// One call's channels, in the active sense (Equivalent: A, B; Antivalent: NC, NOT NO).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]

@@ -15,22 +15,6 @@ include!(concat!(
     "/abi/blocks/plcopen/resetbutton.rs"
 ));
 
-crate::sf_states!(
-    /// The states of SF_ResetButton: values = v2.01 DiagCodes (CS-LIB FBS_RESBUT). The block
-    /// has no v1.0 codes (v2.x only); the v1.0 column repeats the v2.01 code and is never
-    /// shown (the v1.0 profile is refused).
-    ResetButtonState, init: WaitRTrig {
-        Idle = 0x0000, 0x0000, "IDLE", "FB not activated (ResetRequested FALSE)";
-        WaitRTrig = 0x83E2, 0x83E2, "WAIT_R_TRIG", "enabled; waiting for a rising edge of ResetIn";
-        WaitFTrig = 0x83F2, 0x83F2, "WAIT_F_TRIG", "ResetIn TRUE; waiting for its falling edge";
-        ResetDetected = 0x8000, 0x8000, "RESET_DETECTED", "valid reset: ResetOut TRUE for one call";
-        ErrParam = 0xC000, 0xC000, "ERR_PARAM", "TrailingMinimum > TrailingMaximum or TrailingMinimum < 100 ms";
-        ErrReset = 0xC001, 0xC001, "ERR_RESET", "static ResetIn: TRUE without a rising edge; waiting for ResetIn FALSE";
-        ErrTrailMax = 0xC3E0, 0xC3E0, "ERR_TRAIL_MAX", "TrailingMaximum elapsed before the falling edge of ResetIn; waiting for a rising edge";
-        ErrTrailMin = 0xC3F0, 0xC3F0, "ERR_TRAIL_MIN", "falling edge of ResetIn before TrailingMinimum elapsed; waiting for a rising edge";
-    }
-);
-
 /// The transition table of research §4.19 (v2.01 codes), first matching guard wins.
 /// `r` is the R_TRIG of ResetIn; the press runs from the entry into 83F2 (`in_state`, ms);
 /// `t` = [TrailingMinimum, TrailingMaximum]. IDLE → 83E2 / C000 is the envelope's

@@ -7,21 +7,7 @@
 
 use crate::base::sf::{ResetIn, SL_SF_PRIVATE};
 
-crate::sf_states!(
-    /// The states of the restart-interlock blocks: values = v2.01 DiagCodes (CS-LIB
-    /// FBS_ESTOP / FBS_PSE), with the v1.0 codes (research §4.1).
-    RestartState, init: Init {
-        Idle = 0x0000, 0x0000, "IDLE", "FB not activated";
-        Init = 0x8001, 0x8001, "INIT", "activated; checks whether S_StartReset is set";
-        Enabled = 0x8000, 0x8000, "OUT_ENABLED", "safety input TRUE, safety output TRUE";
-        WaitIn1 = 0x8802, 0x8002, "WAIT_FOR_IN_1", "after activation: waiting for the safety input TRUE";
-        WaitReset1 = 0x8402, 0x8003, "WAIT_FOR_RESET_1", "after activation: safety input TRUE, waiting for a rising edge of Reset";
-        WaitIn2 = 0x8804, 0x8004, "WAIT_FOR_IN_2", "safety demand: waiting for the safety input TRUE";
-        WaitReset2 = 0x8404, 0x8005, "WAIT_FOR_RESET_2", "after a safety demand: safety input TRUE, waiting for S_AutoReset or a rising edge of Reset";
-        ErrReset1 = 0xC001, 0xC001, "ERR_RESET_1", "static Reset while waiting for the reset after activation";
-        ErrReset2 = 0xC011, 0xC002, "ERR_RESET_2", "static Reset while waiting for the reset after a safety demand";
-    }
-);
+include!(concat!(env!("OUT_DIR"), "/abi/blocks/plcopen/restart.rs"));
 
 /// One call's inputs.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]

@@ -16,25 +16,6 @@ include!(concat!(
     "/abi/blocks/plcopen/safetyrequest.rs"
 ));
 
-crate::sf_states!(
-    /// The states of SF_SafetyRequest: values = v2.01 DiagCodes (CS-LIB FBS_SAFEREQ), with
-    /// the v1.0 codes (research §4.14; ERR_RESET_1's v1.0 code is ours, semantics QR2).
-    SafetyRequestState, init: Init {
-        Idle = 0x0000, 0x0000, "IDLE", "FB not activated";
-        Init = 0x8401, 0x8001, "INIT", "activated or after Activate: waiting for a rising edge of Reset (or S_StartReset), then S_Acknowledge is evaluated";
-        SafeMode = 0x8000, 0x8000, "SAFE_MODE", "actuator in the safe state confirmed, S_SafetyActive TRUE";
-        OpMode = 0x8802, 0x8002, "OP_MODE", "operation mode: S_SafetyRequest TRUE, the actuator does not acknowledge the safe state";
-        WaitConfOpMode = 0x8804, 0x8012, "WAIT_FOR_CONF_OPMODE", "operation mode requested (S_SafetyRequest TRUE), the actuator still acknowledges the safe state";
-        WaitConf = 0x8002, 0x8003, "WAIT_FOR_CONF", "safe state requested, waiting for S_Acknowledge; MonitoringTime running";
-        WaitOpMode = 0x8004, 0x8005, "WAIT_FOR_OPMODE", "error reset: waiting for S_OpMode TRUE";
-        ErrReset1 = 0xC001, 0xC001, "ERR_RESET_1", "static Reset in INIT";
-        ErrAckLost = 0xC010, 0xC002, "ERR_ACK_LOST", "S_Acknowledge lost while the safe state was confirmed";
-        ErrMonTime = 0xC020, 0xC003, "ERR_MONTIME", "S_Acknowledge not TRUE within MonitoringTime after the safe state was requested";
-        ErrReset2 = 0xC014, 0xC004, "ERR_RESET_2", "static Reset in ERR_ACK_LOST";
-        ErrReset3 = 0xC011, 0xC005, "ERR_RESET_3", "static Reset in ERR_MONTIME";
-    }
-);
-
 /// One call's inputs.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct SafetyRequestIn {

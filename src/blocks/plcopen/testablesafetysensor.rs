@@ -16,34 +16,6 @@ include!(concat!(
     "/abi/blocks/plcopen/testablesafetysensor.rs"
 ));
 
-crate::sf_states!(
-    /// The states of SF_TestableSafetySensor: values = v2.01 DiagCodes (CS-LIB
-    /// FBS_TESTSEN; the errors chosen, semantics QT2), with v1.0 codes chosen where no
-    /// source has them (semantics QT3).
-    TssState, init: Init {
-        Idle = 0x0000, 0x0000, "IDLE", "FB not activated";
-        Init = 0x8401, 0x8001, "INIT", "activated; start-up inhibit: waiting for the sensor and a rising edge of Reset (or S_StartReset)";
-        Interrupted1 = 0x8802, 0x8011, "ESPE_INTERRUPTED_1", "safety demand; the sensor has not been tested automatically";
-        WaitReset1 = 0x8402, 0x8012, "WAIT_FOR_RESET_1", "sensor free again; waiting for a rising edge of Reset (not tested)";
-        FreeNoTest = 0x8010, 0x8010, "ESPE_FREE_NO_TEST", "sensor free, output TRUE; the sensor has not been tested automatically";
-        TestRequest = 0x8020, 0x8020, "TEST_REQUEST", "automatic test phase 1: transmitter off (S_TestOut FALSE), waiting for the OSSD FALSE within TestTime";
-        TestActive = 0x8030, 0x8030, "TEST_ACTIVE", "automatic test phase 2: transmitter on, waiting for the OSSD TRUE within TestTime";
-        Enabled = 0x8000, 0x8000, "ESPE_FREE_TEST_OK", "sensor free, output TRUE; the automatic test passed";
-        Interrupted2 = 0x8806, 0x8014, "ESPE_INTERRUPTED_2", "safety demand; the sensor was tested";
-        WaitReset2 = 0x8406, 0x8015, "WAIT_FOR_RESET_2", "sensor free again; waiting for a rising edge of Reset (tested)";
-        ExtTest = 0x8002, 0x8021, "EXT_FUNC_TEST", "after a failed test: external manual test required, waiting for the OSSD FALSE";
-        ExtTestInterrupted = 0x8804, 0x8022, "ESPE_INTERRUPT_EXTTEST", "external manual test: sensor interrupted, waiting for the OSSD TRUE";
-        ExtTestEnd = 0x8404, 0x8023, "END_EXTTEST", "external manual test complete; waiting for a rising edge of Reset";
-        ErrParam = 0xC000, 0xC000, "ERR_PARAM", "TestTime above 150 ms";
-        ErrReset1 = 0xC001, 0xC001, "ERR_RESET_1", "static Reset in INIT";
-        ErrTest1 = 0xC010, 0xC010, "ERR_TEST_1", "test phase 1: the OSSD did not switch FALSE within TestTime";
-        ErrTest2 = 0xC020, 0xC020, "ERR_TEST_2", "test phase 2: the OSSD did not switch TRUE within TestTime";
-        ErrReset2 = 0xC011, 0xC011, "ERR_RESET_2", "static Reset in WAIT_FOR_RESET_1";
-        ErrReset3 = 0xC021, 0xC021, "ERR_RESET_3", "static Reset in WAIT_FOR_RESET_2";
-        ErrReset4 = 0xC031, 0xC031, "ERR_RESET_4", "static Reset in END_EXTTEST";
-    }
-);
-
 /// One call's inputs.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct TssIn {
