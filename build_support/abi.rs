@@ -1,5 +1,5 @@
 //! The ABI declarations kept as data: a source file `src/…/x.rs` keeps its C ABI constants,
-//! its `block_struct!` / `private_struct!` declarations and its `block_states!` /
+//! its `block_struct!` / `private_struct!` / `zeroed_struct!` declarations and its `block_states!` /
 //! `sf_states!` list in `src/…/x.abi.toml` beside it. build.rs writes them as Rust to
 //! `OUT_DIR/abi/…/x.rs`, which the source file includes where the declarations belong:
 //!
@@ -25,7 +25,7 @@ use std::path::Path;
 const CONST_TYPES: [&str; 6] = ["u8", "u16", "u32", "i8", "i16", "i32"];
 
 /// The declaration macros of the core (`src/base/layout.rs`) a `[[struct]]` may name.
-const MACROS: [&str; 2] = ["block_struct", "private_struct"];
+const MACROS: [&str; 3] = ["block_struct", "private_struct", "zeroed_struct"];
 
 #[derive(Deserialize)]
 #[serde(deny_unknown_fields)]
