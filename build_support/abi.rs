@@ -205,7 +205,7 @@ fn rust_of(file: &str, data: &str) -> String {
         let name = name_of(&v);
         let c: Const = v
             .try_into()
-            .unwrap_or_else(|e| panic!("{file}: constant #{} {name}: {e}", k + 1));
+            .unwrap_or_else(|e| panic!("{file}: constant {name} (number {}): {e}", k + 1));
         assert!(is_ident(&c.name), "{file}: constant {name}: bad name");
         assert!(
             CONST_TYPES.contains(&c.ty.as_str()),
@@ -231,7 +231,7 @@ fn rust_of(file: &str, data: &str) -> String {
         let name = name_of(&v);
         let s: Struct = v
             .try_into()
-            .unwrap_or_else(|e| panic!("{file}: struct #{} {name}: {e}", k + 1));
+            .unwrap_or_else(|e| panic!("{file}: struct {name} (number {}): {e}", k + 1));
         assert!(is_ident(&s.name), "{file}: struct {name}: bad name");
         assert!(
             MACROS.contains(&s.mac.as_str()),
@@ -253,12 +253,15 @@ fn rust_of(file: &str, data: &str) -> String {
         out.push_str(&format!("    {}{} {{\n", s.name, s.generics));
         for (j, f) in s.field.into_iter().enumerate() {
             let fname = name_of(&f);
-            let f: Field = f
-                .try_into()
-                .unwrap_or_else(|e| panic!("{file}: struct {name}, field #{} {fname}: {e}", j + 1));
+            let f: Field = f.try_into().unwrap_or_else(|e| {
+                panic!(
+                    "{file}: struct {name}, field {fname} (number {}): {e}",
+                    j + 1
+                )
+            });
             assert!(
                 is_ident(&f.name),
-                "{file}: struct {name}, field #{} {fname}: bad name",
+                "{file}: struct {name}, field {fname} (number {}): bad name",
                 j + 1
             );
             doc_lines(&mut out, "        ", f.doc.as_deref().unwrap_or_default());
@@ -286,7 +289,7 @@ fn rust_of(file: &str, data: &str) -> String {
         let name = name_of(&v);
         let s: States = v
             .try_into()
-            .unwrap_or_else(|e| panic!("{file}: states #{} {name}: {e}", k + 1));
+            .unwrap_or_else(|e| panic!("{file}: states {name} (number {}): {e}", k + 1));
         out.push_str(&states(file, s));
     }
     out
@@ -320,9 +323,12 @@ fn states(file: &str, s: States) -> String {
     let mut lines = Vec::new();
     for (j, v) in s.state.into_iter().enumerate() {
         let vname = name_of(&v);
-        let st: State = v
-            .try_into()
-            .unwrap_or_else(|e| panic!("{file}: states {name}, state #{} {vname}: {e}", j + 1));
+        let st: State = v.try_into().unwrap_or_else(|e| {
+            panic!(
+                "{file}: states {name}, state {vname} (number {}): {e}",
+                j + 1
+            )
+        });
         let at = format!("{file}: states {name}, state {vname}");
         assert!(is_ident(&st.name), "{at}: bad name");
         let text = st.text.as_deref().map(quoted);
