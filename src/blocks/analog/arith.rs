@@ -24,21 +24,6 @@ use crate::base::reason::{when, Rule, RuleDef, Unit};
 use crate::base::types::*;
 use core::marker::PhantomData;
 
-super::analog_variants! {
-    FB_ARITH:
-        INT SL_TYPE_ADD_INT = 16 => FB_ADD_INT[Add, i16, 2, 6], UINT SL_TYPE_ADD_UINT = 17 => FB_ADD_UINT[Add, u16, 2, 6],
-        DINT SL_TYPE_ADD_DINT = 18 => FB_ADD_DINT[Add, i32, 6, 4], UDINT SL_TYPE_ADD_UDINT = 19 => FB_ADD_UDINT[Add, u32, 6, 4],
-        INT SL_TYPE_SUB_INT = 20 => FB_SUB_INT[Sub, i16, 2, 6], UINT SL_TYPE_SUB_UINT = 21 => FB_SUB_UINT[Sub, u16, 2, 6],
-        DINT SL_TYPE_SUB_DINT = 22 => FB_SUB_DINT[Sub, i32, 6, 4], UDINT SL_TYPE_SUB_UDINT = 23 => FB_SUB_UDINT[Sub, u32, 6, 4],
-        INT SL_TYPE_MUL_INT = 24 => FB_MUL_INT[Mul, i16, 2, 6], UINT SL_TYPE_MUL_UINT = 25 => FB_MUL_UINT[Mul, u16, 2, 6],
-        DINT SL_TYPE_MUL_DINT = 26 => FB_MUL_DINT[Mul, i32, 6, 4], UDINT SL_TYPE_MUL_UDINT = 27 => FB_MUL_UDINT[Mul, u32, 6, 4]
-}
-super::analog_variants! {
-    FB_DIV:
-        INT SL_TYPE_DIV_INT = 28 => FB_DIV_INT[i16, 0, 6], UINT SL_TYPE_DIV_UINT = 29 => FB_DIV_UINT[u16, 0, 6],
-        DINT SL_TYPE_DIV_DINT = 30 => FB_DIV_DINT[i32, 4, 4], UDINT SL_TYPE_DIV_UDINT = 31 => FB_DIV_UDINT[u32, 4, 4]
-}
-
 include!(concat!(env!("OUT_DIR"), "/abi/blocks/analog/arith.rs"));
 
 /// An operation: ADD, SUB, MUL (same layout) or DIV.

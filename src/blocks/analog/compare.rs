@@ -19,12 +19,6 @@ use crate::base::reason::{when, Rule, RuleDef, Unit};
 use crate::base::time;
 use crate::base::types::*;
 
-super::analog_variants! {
-    FB_COMPARE:
-        INT SL_TYPE_COMPARE_INT = 32 => FB_COMPARE_INT[i16, 2, 6], UINT SL_TYPE_COMPARE_UINT = 33 => FB_COMPARE_UINT[u16, 2, 6],
-        DINT SL_TYPE_COMPARE_DINT = 34 => FB_COMPARE_DINT[i32, 0, 4], UDINT SL_TYPE_COMPARE_UDINT = 35 => FB_COMPARE_UDINT[u32, 0, 4]
-}
-
 include!(concat!(env!("OUT_DIR"), "/abi/blocks/analog/compare.rs"));
 
 // The ABI-2 §11.3 numbers of the two layouts (parameters, output base).

@@ -19,12 +19,6 @@ use crate::base::header::param_crc;
 use crate::base::reason::{when, Rule, RuleDef, Unit};
 use crate::base::types::*;
 
-super::analog_variants! {
-    FB_COUNTER:
-        INT SL_TYPE_COUNTER_INT = 56 => FB_COUNTER_INT[i16, 6, 6], UINT SL_TYPE_COUNTER_UINT = 57 => FB_COUNTER_UINT[u16, 6, 6],
-        DINT SL_TYPE_COUNTER_DINT = 58 => FB_COUNTER_DINT[i32, 2, 4], UDINT SL_TYPE_COUNTER_UDINT = 59 => FB_COUNTER_UDINT[u32, 2, 4]
-}
-
 include!(concat!(env!("OUT_DIR"), "/abi/blocks/analog/counter.rs"));
 
 // The ABI-2 §11.5 layout, every variant: parameters from 20, output base 32, ActValue at

@@ -22,12 +22,6 @@ use crate::base::reason::{when, Rule, RuleDef, Unit};
 use crate::base::time;
 use crate::base::types::*;
 
-super::analog_variants! {
-    FB_ENVELOPE:
-        INT SL_TYPE_ENVELOPE_INT = 52 => FB_ENVELOPE_INT[i16, 2], UINT SL_TYPE_ENVELOPE_UINT = 53 => FB_ENVELOPE_UINT[u16, 2],
-        DINT SL_TYPE_ENVELOPE_DINT = 54 => FB_ENVELOPE_DINT[i32, 0], UDINT SL_TYPE_ENVELOPE_UDINT = 55 => FB_ENVELOPE_UDINT[u32, 0]
-}
-
 include!(concat!(env!("OUT_DIR"), "/abi/blocks/analog/envelope.rs"));
 
 /// Diag value texts (manual §4.32.2).

@@ -19,12 +19,6 @@ use crate::base::header::F_CFG_INVALID;
 use crate::base::reason::{check, when, Rule, RuleDef, Unit};
 use crate::base::types::*;
 
-super::analog_variants! {
-    FB_LIMIT:
-        INT SL_TYPE_LIMIT_INT = 36 => FB_LIMIT_INT[i16, 4], UINT SL_TYPE_LIMIT_UINT = 37 => FB_LIMIT_UINT[u16, 4],
-        DINT SL_TYPE_LIMIT_DINT = 38 => FB_LIMIT_DINT[i32, 2], UDINT SL_TYPE_LIMIT_UDINT = 39 => FB_LIMIT_UDINT[u32, 2]
-}
-
 include!(concat!(env!("OUT_DIR"), "/abi/blocks/analog/limit.rs"));
 
 // The ABI-2 §11.4 numbers of the two layouts.

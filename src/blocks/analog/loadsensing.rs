@@ -19,12 +19,6 @@ use crate::base::header::{param_crc, SL_PRIVATE_HEADER};
 use crate::base::reason::{when, Hit, Rule, RuleDef, Unit};
 use crate::base::types::*;
 
-super::analog_variants! {
-    FB_LOADSENSING:
-        INT SL_TYPE_LOADSENSING_INT = 48 => FB_LOADSENSING_INT[i16, 2, 2], UINT SL_TYPE_LOADSENSING_UINT = 49 => FB_LOADSENSING_UINT[u16, 2, 2],
-        DINT SL_TYPE_LOADSENSING_DINT = 50 => FB_LOADSENSING_DINT[i32, 4, 0], UDINT SL_TYPE_LOADSENSING_UDINT = 51 => FB_LOADSENSING_UDINT[u32, 4, 0]
-}
-
 include!(concat!(
     env!("OUT_DIR"),
     "/abi/blocks/analog/loadsensing.rs"

@@ -24,12 +24,6 @@ use crate::base::reason::{when, Rule, RuleDef, Unit};
 use crate::base::time;
 use crate::base::types::*;
 
-super::analog_variants! {
-    FB_SCALE:
-        INT SL_TYPE_SCALE_INT = 40 => FB_SCALE_INT[i16, i32, 2, 6], UINT SL_TYPE_SCALE_UINT = 41 => FB_SCALE_UINT[u16, u32, 2, 6],
-        DINT SL_TYPE_SCALE_DINT = 42 => FB_SCALE_DINT[i32, i32, 0, 4], UDINT SL_TYPE_SCALE_UDINT = 43 => FB_SCALE_UDINT[u32, u32, 0, 4]
-}
-
 include!(concat!(env!("OUT_DIR"), "/abi/blocks/analog/scale.rs"));
 
 // The ABI-2 §11.6 numbers (identical for both widths).

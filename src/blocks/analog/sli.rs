@@ -17,12 +17,6 @@ pub use super::window::{SL_SLI_ACTIVE, SL_TEXT_SLI_OVERFLOW, SL_TEXT_SLI_UNDERFL
 use super::{Analog, SL_DIAG_VALUE_OVERFLOW, SL_DIAG_VALUE_UNDERFLOW};
 use crate::base::types::*;
 
-super::analog_variants! {
-    FB_SLI:
-        INT SL_TYPE_SLI_INT = 60 => FB_SLI_INT[i16, i16, 2, 6], UINT SL_TYPE_SLI_UINT = 61 => FB_SLI_UINT[u16, i16, 2, 6],
-        DINT SL_TYPE_SLI_DINT = 62 => FB_SLI_DINT[i32, i32, 0, 4], UDINT SL_TYPE_SLI_UDINT = 63 => FB_SLI_UDINT[u32, i32, 0, 4]
-}
-
 include!(concat!(env!("OUT_DIR"), "/abi/blocks/analog/sli.rs"));
 
 // The ABI-2 §11.9 numbers (identical for both widths).

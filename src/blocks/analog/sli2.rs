@@ -20,12 +20,6 @@ pub use super::window::{
 use super::Analog;
 use crate::base::types::*;
 
-super::analog_variants! {
-    FB_SLI2:
-        INT SL_TYPE_SLI2_INT = 64 => FB_SLI2_INT[i16, i16, 2, 6], UINT SL_TYPE_SLI2_UINT = 65 => FB_SLI2_UINT[u16, i16, 2, 6],
-        DINT SL_TYPE_SLI2_DINT = 66 => FB_SLI2_DINT[i32, i32, 0, 4], UDINT SL_TYPE_SLI2_UDINT = 67 => FB_SLI2_UDINT[u32, i32, 0, 4]
-}
-
 include!(concat!(env!("OUT_DIR"), "/abi/blocks/analog/sli2.rs"));
 
 // The ABI-2 §11.10 numbers (identical for both widths).

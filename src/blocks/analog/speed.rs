@@ -22,12 +22,6 @@ use crate::base::reason::{when, Rule, RuleDef, Unit};
 use crate::base::time;
 use crate::base::types::*;
 
-super::analog_variants! {
-    FB_SPEED:
-        INT SL_TYPE_SPEED_INT = 44 => FB_SPEED_INT[i16, 2, 6], UINT SL_TYPE_SPEED_UINT = 45 => FB_SPEED_UINT[u16, 2, 6],
-        DINT SL_TYPE_SPEED_DINT = 46 => FB_SPEED_DINT[i32, 0, 4], UDINT SL_TYPE_SPEED_UDINT = 47 => FB_SPEED_UDINT[u32, 0, 4]
-}
-
 include!(concat!(env!("OUT_DIR"), "/abi/blocks/analog/speed.rs"));
 
 // The ABI-2 §11.7 numbers (identical for both widths).

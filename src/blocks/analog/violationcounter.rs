@@ -18,11 +18,6 @@ use crate::base::header::param_crc;
 use crate::base::reason::{when, Rule, RuleDef, Unit};
 use crate::base::types::*;
 
-super::analog_variants! {
-    FB_VIOLATIONCOUNTER:
-        UINT SL_TYPE_VIOLATIONCOUNTER_UINT = 68 => FB_VIOLATIONCOUNTER_UINT[u16, 2, 6], UDINT SL_TYPE_VIOLATIONCOUNTER_UDINT = 69 => FB_VIOLATIONCOUNTER_UDINT[u32, 4, 4]
-}
-
 include!(concat!(
     env!("OUT_DIR"),
     "/abi/blocks/analog/violationcounter.rs"

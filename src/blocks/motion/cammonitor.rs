@@ -29,11 +29,6 @@ use crate::base::time::reached;
 use crate::base::types::*;
 use crate::blocks::analog::{magic, Unsigned};
 
-crate::blocks::analog::analog_variants! {
-    FB_CAMMONITOR:
-        UINT SL_TYPE_CAMMONITOR_UINT = 70 => FB_CAMMONITOR_UINT[u16, 2, 4], UDINT SL_TYPE_CAMMONITOR_UDINT = 71 => FB_CAMMONITOR_UDINT[u32, 6, 0]
-}
-
 include!(concat!(env!("OUT_DIR"), "/abi/blocks/motion/cammonitor.rs"));
 
 const _: () = assert!(core::mem::size_of::<SL_CAMMONITOR_PRIVATE>() == 128);
