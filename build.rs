@@ -1,9 +1,11 @@
-//! Generates the C header with cbindgen and appends compile-time layout checks: each field's
-//! offset and each struct's size, computed here from the generated declarations under the
-//! ABI's rule "every member naturally aligned, no implicit padding". The build fails when a
-//! struct would need implicit padding or when a Rust doc comment "Offset N." disagrees with
-//! the computed offset. The header lands in OUT_DIR; with SAFELOGIC_WRITE_HEADER set it is
-//! also written to include/safelogic.h (the committed copy a test compares against).
+//! Writes the declarations kept as data (`src/**/*.abi.toml`) as Rust into OUT_DIR/abi
+//! (build_support/abi.rs), where the source files include them. Generates the C header with
+//! cbindgen and appends compile-time layout checks: each field's offset and each struct's
+//! size, computed here from the generated declarations under the ABI's rule "every member
+//! naturally aligned, no implicit padding". The build fails when a struct would need
+//! implicit padding or when a Rust doc comment "Offset N." disagrees with the computed
+//! offset. The header lands in OUT_DIR; with SAFELOGIC_WRITE_HEADER set it is also written
+//! to include/safelogic.h (the committed copy a test compares against).
 
 use cbindgen::bindgen::ir::{IntKind, PrimitiveType, Type};
 use std::collections::{BTreeMap, HashMap, HashSet};
@@ -59,6 +61,10 @@ fn main() {
     let generated = abi::generate(&dir.join("src"), &out.join("abi"));
     let sources = rust_sources(&dir.join("src"), &generated);
     let view = out.join("cbindgen_src");
+    // A file removed from src/ must not linger in the copy (cbindgen finds modules by path).
+    if view.exists() {
+        fs::remove_dir_all(&view).expect("clear OUT_DIR/cbindgen_src");
+    }
     for (rel, text) in &sources {
         let path = view.join(rel);
         fs::create_dir_all(path.parent().expect("parent")).expect("create OUT_DIR/cbindgen_src");
