@@ -20,24 +20,7 @@ use super::reason::{when, Refusal, Rule, RuleDef, Unit};
 use super::time;
 use crate::base::types::*;
 
-/// `nDiagProfile` 0: the PLCopen v2.01 DiagCodes (default).
-pub const SL_SF_PROFILE_V201: u8 = 0;
-/// `nDiagProfile` 1: the PLCopen v1.0 DiagCodes (blocks that exist in v1.0 only).
-pub const SL_SF_PROFILE_V10: u8 = 1;
-
-/// Library DiagCode: the private state was corrupt (SL_E_CORRUPT). Left by Activate FALSE.
-pub const SL_SF_DIAG_CORRUPT: u16 = 0xC3FF;
-/// Library DiagCode: the clock went backwards (SL_E_CLOCK). Left by Activate FALSE.
-pub const SL_SF_DIAG_CLOCK: u16 = 0xC3FE;
-/// Library DiagCode: a constant input (`nDiagProfile`, a time) changed while the block was
-/// activated (SL_E_PARAM_CHANGED). Left by Activate FALSE.
-pub const SL_SF_DIAG_CONST_CHANGED: u16 = 0xC3FD;
-/// Library DiagCode: a constant input is invalid at activation (SL_E_CONFIG). Left by
-/// Activate FALSE.
-pub const SL_SF_DIAG_CONFIG: u16 = 0xC3FC;
-/// Largest monitored time of an `SF_` block (ms; 2^31 − 1, the half circle of the
-/// wrapping clock).
-pub const SL_SF_TIME_MAX: u32 = 0x7FFF_FFFF;
+include!(concat!(env!("OUT_DIR"), "/abi/base/sf.rs"));
 
 /// Previous level of a block's own R_TRIG input (SF_EDM's S_OutControl,
 /// SF_TestableSafetySensor's StartTest): bit 7 of the header's `nFlags`, sealed with it.
@@ -54,9 +37,6 @@ pub fn trigger_rising(p: &SL_SF_PRIVATE, raw: u8) -> bool {
 pub fn store_trigger(p: &mut SL_SF_PRIVATE, raw: u8) {
     p.stHeader.set_flag(F_TRIGGER_PREV, bools::is_true(raw));
 }
-
-/// The DiagCode meaning "the block is activated and its safety output is enabled".
-pub const SF_ENABLED: u16 = 0x8000;
 
 /// The library's DiagCodes with their texts (the same in both profiles).
 pub const LIBRARY_CODES: &[(u16, &str)] = &[
@@ -78,15 +58,6 @@ const fn is_library(code: u16) -> bool {
         || code == SL_SF_DIAG_CONST_CHANGED
         || code == SL_SF_DIAG_CONFIG
 }
-
-crate::base::block::block_states!(
-    /// Group-level state of an `SF_` block (`nState` of its private header,
-    /// `sl_state_str`): what the owning group sees. PLCopen errors (static reset,
-    /// discrepancy …) are the block's own and do not stop the group; a library fault does
-    /// (docs/semantics.md PO8).
-    SfPhase: Idle = SL_STATE_STOP, "IDLE", Active = SL_STATE_RUN, "ACTIVE",
-    Fault = SL_STATE_ERROR, "FAULT"
-);
 
 const fn phase_of(code: u16) -> u8 {
     if code == 0 {
@@ -175,23 +146,6 @@ macro_rules! sf_states {
             }
         }
     };
-}
-
-crate::base::layout::private_struct! {
-    /// Private state of every `SF_` block (40 bytes). Never written by the user. The header's
-    /// `wDiag` holds the v2.01 DiagCode (the state), `nState` the [`SfPhase`], `nActive` the
-    /// latched profile, `tPhase` the entry time of the current state (the monitored times run
-    /// from there), `nFlags` the R_TRIG memories.
-    SL_SF_PRIVATE {
-        /// Latched constant times (ms), covered by the header's parameter CRC.
-        pub adwTime: [u32; 2],
-        /// Written by the owning group before each call: non-zero while the group does not run
-        /// the block (halted: DiagCode 0000, as with Activate FALSE).
-        pub nGroupHalt: u8,
-        /// The steady-state slot: the key of the last call that left a state its inputs keep,
-        /// bound to that state (`base::sf::slot_of`); all zero: no key.
-        pub aReserved: [u8; 3],
-    }
 }
 
 /// The constant inputs of an `SF_` block: the profile and up to two monitored times.
