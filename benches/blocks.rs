@@ -930,7 +930,9 @@ fn main() {
 
 /// The every-type table (`all_types`): the instructions per steady call of every registered
 /// type (callgrind, a child that makes only the steady calls) and, unless `only_instructions`,
-/// the three timings; `count`: run callgrind (not in the smoke run). Exits non-zero when a
+/// the three timings, random against steady ("rnd/st") and against the same inputs written
+/// first ("rnd/wr": both pay the stores), and the per cent of random calls that stay in the
+/// running state; `count`: run callgrind (not in the smoke run). Exits non-zero when a
 /// counted type's cycle function has no count.
 fn every_type(batches: usize, only_instructions: bool, count: bool) {
     let calls = f64::from(WARMUP_CALLS) + (SMOKE_BATCHES as f64) * f64::from(CALLS_PER_BATCH);
@@ -948,18 +950,26 @@ fn every_type(batches: usize, only_instructions: bool, count: bool) {
         only_instructions,
     );
     println!(
-        "every registered type ({}): registry field tables, bRun TRUE, BOOL inputs TRUE, analog inputs 0",
+        "every registered type ({}): each configured and brought to its running state (asserted: init SL_OK, every timed steady call SL_OK in that state)",
         rows.len()
     );
     if let Err(why) = &instructions {
         println!("  instructions per call: not counted ({why})");
     }
     if only_instructions {
-        println!("  {:<22} {:<12} {:>10}", "block", "state", "instr/call");
+        println!("  {:<24} {:<12} {:>10}", "block", "state", "instr/call");
     } else {
         println!(
-            "  {:<22} {:<12} {:>5} {:>10} {:>10} {:>10} {:>10}",
-            "block", "state", "init", "steady ns", "written ns", "random ns", "instr/call"
+            "  {:<24} {:<12} {:>9} {:>10} {:>9} {:>7} {:>7} {:>9} {:>10}",
+            "block",
+            "state",
+            "steady ns",
+            "written ns",
+            "random ns",
+            "rnd/st",
+            "rnd/wr",
+            "rnd run %",
+            "instr/call"
         );
     }
     let mut missing = Vec::new();
@@ -973,11 +983,19 @@ fn every_type(batches: usize, only_instructions: bool, count: bool) {
             "-".to_string()
         });
         if only_instructions {
-            println!("  {:<22} {:<12} {:>10}", r.name, r.state, n);
+            println!("  {:<24} {:<12} {:>10}", r.name, r.state, n);
         } else {
             println!(
-                "  {:<22} {:<12} {:>5} {:>10.2} {:>10.2} {:>10.2} {:>10}",
-                r.name, r.state, r.init, r.ns[0], r.ns[1], r.ns[2], n
+                "  {:<24} {:<12} {:>9.2} {:>10.2} {:>9.2} {:>6.2}x {:>6.2}x {:>9.0} {:>10}",
+                r.name,
+                r.state,
+                r.ns[0],
+                r.ns[1],
+                r.ns[2],
+                r.ns[2] / r.ns[0],
+                r.ns[2] / r.ns[1],
+                r.random_running,
+                n
             );
         }
     }
