@@ -15,6 +15,12 @@ use std::mem::size_of_val;
 use std::process::Command;
 use std::time::Instant;
 
+#[path = "blocks/all_types.rs"]
+mod all_types;
+
+/// The callgrind child that makes only the steady calls of the every-type table.
+const ALL_CHILD: &str = "--callgrind-all";
+
 const CALLS_PER_BATCH: u32 = 1000;
 const WARMUP_CALLS: u32 = 200;
 const SMOKE_BATCHES: usize = 20;
@@ -141,6 +147,10 @@ fn main() {
     let child = std::env::args().any(|a| a == "--callgrind-child");
     if std::env::args().any(|a| a == RANDOM_CHILD) {
         cliff_rows(SMOKE_BATCHES);
+        return;
+    }
+    if std::env::args().any(|a| a == ALL_CHILD) {
+        all_types::run((WARMUP_CALLS, SMOKE_BATCHES, CALLS_PER_BATCH), true);
         return;
     }
     let instructions = (!child && (!quick || only_instructions)).then(instructions_per_call);
@@ -840,6 +850,7 @@ fn main() {
             eprintln!("no instruction count for: {}", missing.join(", "));
             std::process::exit(1);
         }
+        every_type(SMOKE_BATCHES, true, true);
         return;
     }
     println!(
@@ -911,6 +922,86 @@ fn main() {
                 if ratio <= 2.0 { "PASS" } else { "MISS" }
             );
         }
+    }
+    if !child {
+        every_type(batches, false, !quick);
+    }
+}
+
+/// The every-type table (`all_types`): the instructions per steady call of every registered
+/// type (callgrind, a child that makes only the steady calls) and, unless `only_instructions`,
+/// the three timings, random against steady ("rnd/st") and against the same inputs written
+/// first ("rnd/wr": both pay the stores), and the per cent of random calls that stay in the
+/// running state; `count`: run callgrind (not in the smoke run). Exits non-zero when a
+/// counted type's cycle function has no count.
+fn every_type(batches: usize, only_instructions: bool, count: bool) {
+    let calls = f64::from(WARMUP_CALLS) + (SMOKE_BATCHES as f64) * f64::from(CALLS_PER_BATCH);
+    let instructions = if count {
+        callgrind_per_call(ALL_CHILD, calls)
+    } else {
+        Err("smoke run".to_string())
+    };
+    let rows = all_types::run(
+        (
+            WARMUP_CALLS,
+            if only_instructions { 1 } else { batches },
+            CALLS_PER_BATCH,
+        ),
+        only_instructions,
+    );
+    println!(
+        "every registered type ({}): each configured and brought to its running state (asserted: init SL_OK, every timed steady call SL_OK in that state)",
+        rows.len()
+    );
+    if let Err(why) = &instructions {
+        println!("  instructions per call: not counted ({why})");
+    }
+    if only_instructions {
+        println!("  {:<24} {:<12} {:>10}", "block", "state", "instr/call");
+    } else {
+        println!(
+            "  {:<24} {:<12} {:>9} {:>10} {:>9} {:>7} {:>7} {:>9} {:>10}",
+            "block",
+            "state",
+            "steady ns",
+            "written ns",
+            "random ns",
+            "rnd/st",
+            "rnd/wr",
+            "rnd run %",
+            "instr/call"
+        );
+    }
+    let mut missing = Vec::new();
+    for r in &rows {
+        let n = match &instructions {
+            Ok(m) => m.get(r.cycle).map(|n| format!("{n:.0}")),
+            Err(_) => Some("-".to_string()),
+        };
+        let n = n.unwrap_or_else(|| {
+            missing.push(r.cycle);
+            "-".to_string()
+        });
+        if only_instructions {
+            println!("  {:<24} {:<12} {:>10}", r.name, r.state, n);
+        } else {
+            println!(
+                "  {:<24} {:<12} {:>9.2} {:>10.2} {:>9.2} {:>6.2}x {:>6.2}x {:>9.0} {:>10}",
+                r.name,
+                r.state,
+                r.ns[0],
+                r.ns[1],
+                r.ns[2],
+                r.ns[2] / r.ns[0],
+                r.ns[2] / r.ns[1],
+                r.random_running,
+                n
+            );
+        }
+    }
+    if !missing.is_empty() {
+        eprintln!("no instruction count for: {}", missing.join(", "));
+        std::process::exit(1);
     }
 }
 

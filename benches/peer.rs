@@ -3,7 +3,8 @@
 //! the direct C call `sl_estop_cycle` and the ST wrapper `FB_ESTOP` → library, steady and
 //! random inputs, median and p99 ns per call and the ratios; beside them the floor of any
 //! call timed this way (a call into another translation unit that returns at once, in the
-//! same loop) and what the 0.5× target leaves above it. The work is done by
+//! same loop) and the target: the direct C call at most 1.0× the plain ST, steady, with the
+//! inputs written before each call. The work is done by
 //! `tools/peer_bench.py`, which the test command also runs briefly (so it cannot rot); this
 //! is the full run: `cargo bench --bench peer` (3,000 batches of 1,000 calls per case).
 //!

@@ -353,7 +353,7 @@ const TIMED: [(&str, &[u8]); 3] = [
 ];
 
 /// The fast path's types and the states it must have served in.
-const EXPECTED: [(&str, &[u8]); 12] = [
+const EXPECTED: [(&str, &[u8]); 16] = [
     (
         "ESTOP",
         &[
@@ -422,7 +422,24 @@ const EXPECTED: [(&str, &[u8]); 12] = [
         &[SL_STATE_RUN, SL_STATE_SAFE, SL_STATE_STOP, SL_STATE_ERROR],
     ),
     ("TWOHAND", &[SL_STATE_SAFE, SL_STATE_STOP, SL_STATE_ERROR]),
+    ("COUNTER_INT", COUNTER_STATES),
+    ("COUNTER_UINT", COUNTER_STATES),
+    ("COUNTER_DINT", COUNTER_STATES),
+    ("COUNTER_UDINT", COUNTER_STATES),
 ];
+
+/// The states COUNTER's fast path must have served in (it has no SAFE).
+const COUNTER_STATES: &[u8] = &[SL_STATE_RUN, SL_STATE_STOP, SL_STATE_ERROR];
+
+/// The share of the calls the fast path must serve: a quarter, a fifth for COUNTER (three
+/// inputs whose rising edges count: an edge call is no fixed point, 21-23 % served).
+fn min_share(name: &str) -> usize {
+    if name.starts_with("COUNTER_") {
+        5
+    } else {
+        4
+    }
+}
 
 /// The types whose full cycle is idempotent (`Steady::IDEMPOTENT`: their `settle` stores
 /// the key of every SL_OK call without comparing the state before and after).
@@ -488,7 +505,7 @@ fn the_fast_path_gives_what_the_full_cycle_gives() {
         match expected {
             Some((_, states)) => {
                 assert!(
-                    s.fast * 4 >= s.calls,
+                    s.fast * min_share(s.name) >= s.calls,
                     "{}: the fast path served only {} of {} calls",
                     s.name,
                     s.fast,
@@ -784,6 +801,26 @@ fn the_key_holds_every_byte_the_cycle_reads() {
     timer!(FB_TON);
     timer!(FB_TOF);
     timer!(FB_TON2);
+    // COUNTER: Reset, CountUp, CountDown, bRun and bErrAck gathered into bits.
+    macro_rules! counter {
+        ($($ty:ident),+) => {$(
+            pin(
+                $ty {
+                    wInputActive: 0b111,
+                    nCounterLimit: 3,
+                    bRun: 1,
+                    ..Default::default()
+                },
+                None,
+            );
+        )+};
+    }
+    counter!(
+        FB_COUNTER_INT,
+        FB_COUNTER_UINT,
+        FB_COUNTER_DINT,
+        FB_COUNTER_UDINT
+    );
 }
 
 /// What one `SF_` type's run saw (the PLCopen envelope's fast path, `base::sf`).
@@ -972,7 +1009,7 @@ const SF_EXPECTED: &[(&str, &[u16])] = &[
     ("SF_TwoHandControlTypeIII", &[0x0000, 0x8000]),
     ("SF_OutControl", &[0x0000, 0x8000]),
     ("SF_ResetButton", &[0x0000, 0x83E2]),
-    ("SF_EDM", &[0x0000, 0x8401]),
+    ("SF_EDM", &[0x0000, 0x8401, 0x8810]),
     ("SF_TestableSafetySensor", &[0x0000, 0x8000]),
     ("SF_ModeSelector", &[0x0000, 0x8000]),
 ];
@@ -1025,6 +1062,69 @@ fn the_sf_fast_path_gives_what_the_full_call_gives() {
                 assert!(!s.opted_in, "{}: a key nobody expects", s.name);
                 assert_eq!(s.fast, 0, "{}: a fast path nobody expects", s.name);
             }
+        }
+    }
+}
+
+/// SF_EDM in OUT_ENABLE (8000) with both contactors switched (feedback FALSE) is served by
+/// the fast path across its MonitoringTime, and the same bytes change nothing at any later
+/// time; with a loop that does not switch, no call in OUT_ENABLE is served and
+/// MonitoringTime ends in ERR_EDM_32 as in the full call. The random walk above seldom holds both loops FALSE
+/// from the call that switches on, so this sequence pins the OUT_ENABLE key.
+#[test]
+fn sf_edm_serves_out_enable_with_the_contactors_switched() {
+    use safelogic::base::sf::{cycle_full as sf_full, cycle_traced as sf_traced};
+    use safelogic::blocks::plcopen::edm::SF_EDM;
+    for stuck in [false, true] {
+        let mut a = SF_EDM {
+            MonitoringTime: 100,
+            ..Default::default()
+        };
+        // SAFETY: a live, exclusively borrowed instance.
+        assert_eq!(unsafe { safelogic::ffi::sl_sf_edm_init(&mut a) }, SL_OK);
+        (a.Activate, a.S_StartReset) = (1, 1);
+        let mut b = a;
+        let mut served = 0;
+        let mut now = 1000u32;
+        // Released while off, switched on with the loops still released, then switched.
+        let steps = [(0, 1, 1), (0, 1, 1), (1, 1, 1)]
+            .into_iter()
+            .chain(std::iter::repeat((1, 0, u8::from(stuck))).take(300));
+        for (step, (control, edm1, edm2)) in steps.enumerate() {
+            now += 1;
+            for fb in [&mut a, &mut b] {
+                (fb.S_OutControl, fb.EDM1, fb.EDM2) = (control, edm1, edm2);
+            }
+            let (sa, fast) = sf_traced(&mut a, now);
+            let sb = sf_full(&mut b, now);
+            assert_eq!(
+                (sa, format!("{a:?}")),
+                (sb, format!("{b:?}")),
+                "stuck {stuck} step {step}"
+            );
+            served += usize::from(fast && a.DiagCode == 0x8000);
+            if a.stPrivate.aReserved != [0; 3] {
+                for dt in [1u32, 600, 100_000] {
+                    let mut c = b;
+                    assert_eq!(sf_full(&mut c, now.wrapping_add(dt)), Status::Ok);
+                    c.stPrivate.stHeader.tLast = now;
+                    assert_eq!(
+                        format!("{c:?}"),
+                        format!("{b:?}"),
+                        "stuck {stuck} step {step} +{dt} ms"
+                    );
+                }
+            }
+        }
+        if stuck {
+            assert_eq!(
+                (served, a.DiagCode),
+                (0, 0xC080),
+                "EDM2 not switched: served in 8000"
+            );
+        } else {
+            assert_eq!(a.DiagCode, 0x8000);
+            assert!(served >= 290, "served {served} of 303 calls");
         }
     }
 }

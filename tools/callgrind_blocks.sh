@@ -3,7 +3,9 @@
 # repeatable, unlike times on a shared VM): the bench runs its own smoke mode under callgrind
 # (collecting only inside the exported sl_*_cycle functions) and divides each function's
 # inclusive count by the calls of its row. `cargo bench --bench blocks` prints the same
-# column beside the times.
+# column beside the times. A second table covers every registered type, each configured and
+# brought to its running state, which the bench asserts (benches/blocks/all_types.rs: a
+# second callgrind child that makes only those steady calls).
 #   bash tools/callgrind_blocks.sh
 set -euo pipefail
 cd "$(dirname "$0")/.."

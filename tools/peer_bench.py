@@ -18,7 +18,8 @@ through the library, next to the same logic written in plain ST, in one process.
 3. Then it times each in RUN with steady inputs and with random inputs (pre-drawn), in
    batches of 1,000 calls, and prints the median and p99 ns per call and the ratios to the
    plain-ST peer; and, as the floor of any library call timed this way, a call into another
-   translation unit that returns at once, in the same loop (the 0.5x target against it).
+   translation unit that returns at once, in the same loop; the target: the direct C call at
+   most 1.0x the plain ST, steady, with the inputs written before each call as every caller does.
 Prints "N passed, M failed" (the scenario checks; the figures are not asserted). Standard
 library only (plus gcc).
 """
@@ -303,9 +304,10 @@ int main(int argc, char **argv)
                    p99[1][w], med[1][w] / med[0][w]);
         printf("  relative to plain ST: steady direct C %.2fx, ST wrapper %.2fx; random direct C %.2fx, ST wrapper %.2fx\n",
                med[0][1] / med[0][0], med[0][2] / med[0][0], med[1][1] / med[1][0], med[1][2] / med[1][0]);
-        printf("  target <= 0.5x plain ST, steady: %.2f ns; the floor (the same loop: the inputs written, a call into "
-               "another unit that returns at once, the output read) takes %.2f ns of it, %.2f ns is left for the "
-               "cycle\n", 0.5 * med[0][0], med[0][3], 0.5 * med[0][0] - med[0][3]);
+        printf("  target <= 1.0x plain ST, steady, the inputs written before each call: direct C %.2fx (%s); the "
+               "floor (the same loop: the inputs written, a call into another unit that returns at once, the output "
+               "read) takes %.2f ns of the plain ST's %.2f ns\n", med[0][1] / med[0][0],
+               med[0][1] <= med[0][0] ? "met" : "missed", med[0][3], med[0][0]);
     }
     printf("%d passed, %d failed\n", passed, failed);
     return failed == 0 ? 0 : 1;

@@ -168,8 +168,9 @@ pub trait SteadyPrivate: Copy + PartialEq {
 }
 
 /// Implements [`SteadyPrivate`] for a private struct whose slot is `$slot`: `[$w; 2]` for a
-/// key in one word (key, check), `[u32; 4N]` for a window of N words (key words, then check
-/// words, each as two halves, low first: the C and PLC types have no 64-bit integer).
+/// key in one word (key, check), `[u8; 4]` for a gathered key in a reserved word (`bytes
+/// u16`), `[u32; 4N]` for a window of N words (key words, then check words, each as two
+/// halves, low first: the C and PLC types have no 64-bit integer).
 macro_rules! steady_private {
     ($p:ty, $slot:ident, $w:ty) => {
         impl $crate::base::envelope::SteadyPrivate for $p {
@@ -186,6 +187,29 @@ macro_rules! steady_private {
             #[inline(always)]
             fn set_slot(&mut self, slot: Option<[$w; 2]>) {
                 self.$slot = slot.unwrap_or_default();
+            }
+        }
+    };
+    // A gathered key (u16) in a reserved `[u8; 4]` of the private part: the key in bytes
+    // 0-1, its check word in bytes 2-3, little-endian (the field keeps its name and size).
+    ($p:ty, $slot:ident, bytes u16) => {
+        impl $crate::base::envelope::SteadyPrivate for $p {
+            type Key = u16;
+            #[inline(always)]
+            fn head_mut(&mut self) -> &mut $crate::base::header::SL_PRIVATE_HEADER {
+                &mut self.stHeader
+            }
+            #[inline(always)]
+            fn slot(&self) -> [u16; 2] {
+                let [a, b, c, d] = self.$slot;
+                [u16::from_le_bytes([a, b]), u16::from_le_bytes([c, d])]
+            }
+            #[inline(always)]
+            fn set_slot(&mut self, slot: Option<[u16; 2]>) {
+                let [key, check] = slot.unwrap_or_default();
+                let [a, b] = key.to_le_bytes();
+                let [c, d] = check.to_le_bytes();
+                self.$slot = [a, b, c, d];
             }
         }
     };

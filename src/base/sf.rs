@@ -491,7 +491,9 @@ fn idle<B: SfBlock>(fb: &mut B, keep: bool) {
     }
 }
 
-/// The outputs of a code.
+/// The outputs of a code. Inline: in the fast path a call would cost more than the
+/// compares (the result is packed into a register and unpacked again).
+#[inline(always)]
 fn outputs(code: u16, reset_level: bool, state_code: Option<u16>) -> SfOut {
     // The v2.01 code carries the SafetyDemand / reset-request bits whatever the profile.
     let v2 = state_code.unwrap_or(code);

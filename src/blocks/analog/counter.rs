@@ -191,6 +191,8 @@ impl<T: Analog, const P1: usize, const P2: usize> Block for FB_COUNTER<T, P1, P2
     fn error_remains(&mut self, _inp: &CounterIn) -> bool {
         false
     }
+    crate::base::envelope::steady_hooks!();
+
     #[inline(always)]
     fn write_outputs(&mut self) {
         let p = *self.private();
@@ -216,5 +218,40 @@ impl<T: Analog, const P1: usize, const P2: usize> Block for FB_COUNTER<T, P1, P2
             ],
             p.adwPar,
         );
+    }
+}
+
+// The fast-path slot (`base::envelope`) in the private part's first reserved word.
+crate::base::envelope::steady_private!(SL_COUNTER_PRIVATE, aReserved0, bytes u16);
+
+impl<T: Analog, const P1: usize, const P2: usize> crate::base::envelope::Steady
+    for FB_COUNTER<T, P1, P2>
+{
+    /// Reset, CountUp, CountDown, bRun and bErrAck gathered into bits (the edge memories
+    /// are in the private header, which the stored key is bound to). The counter word is
+    /// not in the key: a full call with these bytes keeps it, but writes it in its
+    /// canonical form (the value's bits, sign-extended) and, while Reset is TRUE, as the
+    /// preset. A counter word that a full call would rewrite so has no key: the call is
+    /// full.
+    #[inline(always)]
+    fn steady_key(&self) -> Option<u16> {
+        let p = &self.stPrivate;
+        if T::from_bits(p.dwCount).to_bits() != p.dwCount
+            || self.bReset != 0 && p.dwCount != p.adwParam[0]
+        {
+            return None;
+        }
+        bools::key([
+            self.bReset,
+            self.bCountUp,
+            self.bCountDown,
+            self.bRun,
+            self.bErrAck,
+        ])
+    }
+    /// No timer: the outcome depends on the time only through the clock check.
+    #[inline(always)]
+    fn quiet(&self) -> bool {
+        true
     }
 }

@@ -167,7 +167,10 @@ crate::impl_sf_block!(SF_EDM {
 });
 
 /// The steady-state fast path (`base::sf::SfSteady`): the key is every BOOL byte the call
-/// reads; the states that monitor the contactors read the monitoring time.
+/// reads. The states that monitor the contactors read the monitoring time only while a
+/// feedback check fails under these bytes (`next`: OUT_DISABLE with a loop not released,
+/// OUT_ENABLE with a loop not switched); with the feedback as expected no time decides the
+/// next transition of the same bytes.
 impl crate::base::sf::SfSteady for SF_EDM {
     #[inline(always)]
     fn steady_key(&self) -> Option<u16> {
@@ -181,9 +184,10 @@ impl crate::base::sf::SfSteady for SF_EDM {
         ])
     }
     fn timed(&self) -> bool {
-        matches!(
-            self.diag_state(),
-            Some(SfEdmState::OutDisable | SfEdmState::OutEnable)
-        )
+        match self.diag_state() {
+            Some(SfEdmState::OutDisable) => self.EDM1 != 1 || self.EDM2 != 1,
+            Some(SfEdmState::OutEnable) => self.EDM1 != 0 || self.EDM2 != 0,
+            _ => false,
+        }
     }
 }
