@@ -10,18 +10,7 @@ use safelogic::*;
 
 const ALL: u16 = SL_COUNTER_ACTIVE_INPUTS;
 
-/// Everything the block shows.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-struct Outputs {
-    error: u8,
-    out: u8,
-    zero: u8,
-    act: i128,
-    state: u8,
-    diag: u16,
-    text: u16,
-    par: (u32, u32),
-}
+common::analog_outputs!(error: u8, out: u8, zero: u8, act: i128);
 
 macro_rules! counter_tests {
     ($modname:ident, $ty:ty, $t:ty) => {
@@ -52,16 +41,12 @@ macro_rules! counter_tests {
             }
 
             fn outputs(f: &Fb) -> Outputs {
-                Outputs {
+                crate::common::read_outputs!(f {
                     error: f.bError,
                     out: f.bCounterOut,
                     zero: f.bCounterZero,
                     act: f.nActValue.wide(),
-                    state: f.nState,
-                    diag: f.nDiag,
-                    text: f.nDiagTextId,
-                    par: (f.dwDiagPar2, f.dwDiagPar3),
-                }
+                })
             }
 
             /// Drives the inputs for one cycle.

@@ -12,16 +12,7 @@ use safelogic::*;
 const POS: u16 = SL_SPEED_ACTIVE_POSITION;
 const WRAP: u32 = SL_OPT_SPEED_OVERFLOW_CHECK;
 
-/// Everything the block shows.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-struct Outputs {
-    error: u8,
-    speed: i128,
-    state: u8,
-    diag: u16,
-    text: u16,
-    par: (u32, u32),
-}
+common::analog_outputs!(error: u8, speed: i128);
 
 macro_rules! speed_tests {
     ($modname:ident, $ty:ty, $t:ty) => {
@@ -48,14 +39,10 @@ macro_rules! speed_tests {
             }
 
             fn outputs(f: &Fb) -> Outputs {
-                Outputs {
+                crate::common::read_outputs!(f {
                     error: f.bError,
                     speed: f.nSpeed.wide(),
-                    state: f.nState,
-                    diag: f.nDiag,
-                    text: f.nDiagTextId,
-                    par: (f.dwDiagPar2, f.dwDiagPar3),
-                }
+                })
             }
 
             fn step(fb: &mut Fb, now: u32, pos: i128) -> i32 {

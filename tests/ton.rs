@@ -599,13 +599,7 @@ fn ton_in_a_group() {
         common::c_add_member(&mut g, members.as_mut_ptr(), ty, p, std::ptr::null_mut());
     }
     let (src, dst) = (offset_of!(FB_AND, bAndOut), offset_of!(FB_TON, bTonIn1));
-    common::c_add_link(
-        &mut g,
-        members.as_mut_ptr(),
-        links.as_mut_ptr(),
-        (0, src),
-        (1, dst),
-    );
+    common::c_add_link(&mut g, &mut members, &mut links, (0, src), (1, dst));
     g.bRun = 1;
     let mut cyc =
         |t| unsafe { ffi::sl_group_cycle(&mut g, members.as_mut_ptr(), links.as_mut_ptr(), t) };

@@ -373,13 +373,7 @@ fn c_functions_state_names_and_group_membership() {
     );
     // XorOut1 of member 0 feeds Xor1In1 of member 1.
     let (src, dst) = (offset_of!(FB_XOR, bXorOut1), offset_of!(FB_XOR, bXor1In1));
-    common::c_add_link(
-        &mut g,
-        members.as_mut_ptr(),
-        links.as_mut_ptr(),
-        (0, src),
-        (1, dst),
-    );
+    common::c_add_link(&mut g, &mut members, &mut links, (0, src), (1, dst));
     g.bRun = 1;
     x.bXor1In1 = 1;
     assert_eq!(c_group_cycle!(g, members, links, 10; x, y), SL_OK);
