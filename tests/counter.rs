@@ -412,21 +412,16 @@ macro_rules! counter_tests {
                         }
                     }
                 }
-                for s in [SL_STATE_RUN, SL_STATE_STOP, SL_STATE_ERROR, SL_STATE_RESET] {
-                    assert!(
-                        reached & 1 << s != 0,
-                        "state {s} never reached ({reached:#b})"
-                    );
-                }
+                crate::common::assert_reached(
+                    reached.into(),
+                    [SL_STATE_RUN, SL_STATE_STOP, SL_STATE_ERROR, SL_STATE_RESET],
+                );
                 assert_eq!(diags, 0b110, "both range errors reached");
                 assert!(
                     out > 1000 && zero > 1000,
                     "CounterOut {out}, CounterZero {zero}"
                 );
-                assert!(
-                    invalid > 300 && invalid < SEQUENCES / 8,
-                    "invalid share {invalid}"
-                );
+                crate::common::assert_invalid_share(invalid, 300, SEQUENCES / 8);
             }
         }
     };

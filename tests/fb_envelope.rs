@@ -624,12 +624,10 @@ macro_rules! envelope_tests {
                         diags[usize::from(fb.outputs().diag).min(4)] += 1;
                     }
                 }
-                for s in CORE_STATES.into_iter().chain([DELAYOUT, MONITOR]) {
-                    assert!(
-                        reached & 1 << s != 0,
-                        "state {s} never reached ({reached:#b})"
-                    );
-                }
+                crate::common::assert_reached(
+                    reached,
+                    CORE_STATES.into_iter().chain([DELAYOUT, MONITOR]),
+                );
                 assert!(diags[2] > 100, "overflows {diags:?}");
                 assert!(!SIGNED || diags[1] > 100, "underflows {diags:?}");
                 assert_eq!(diags[3] + diags[4], 0, "diag 3/4 {diags:?}");

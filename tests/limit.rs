@@ -426,20 +426,12 @@ macro_rules! limit_tests {
                         above += u32::from(fb.outputs().above);
                     }
                 }
-                for s in CORE_STATES {
-                    assert!(
-                        reached & 1 << s != 0,
-                        "state {s} never reached ({reached:#b})"
-                    );
-                }
+                crate::common::assert_reached(reached.into(), CORE_STATES);
                 assert!(
                     below > 1000 && above > 1000,
                     "BelowMin {below}, AboveMax {above}"
                 );
-                assert!(
-                    invalid > 50 && invalid < SEQUENCES / 4,
-                    "invalid share {invalid}"
-                );
+                crate::common::assert_invalid_share(invalid, 50, SEQUENCES / 4);
             }
         }
     };

@@ -481,15 +481,13 @@ macro_rules! loadsensing_tests {
                         reached |= 1 << state;
                     }
                 }
-                for s in [
+                crate::common::assert_reached(reached, [
                     SL_STATE_RUN,
                     SL_STATE_STOP,
                     SL_STATE_SAFE,
                     SL_STATE_LOADSENSING_INACTIVE,
                     SL_STATE_LOADSENSING_WARNING,
-                ] {
-                    assert!(reached & 1 << s != 0, "state {s} never reached ({reached:#b})");
-                }
+                ]);
             }
         }
     };

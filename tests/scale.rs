@@ -846,20 +846,15 @@ macro_rules! scale_tests {
                         }
                     }
                 }
-                for s in [SL_STATE_RUN, SL_STATE_STOP, SL_STATE_ERROR, SL_STATE_RESET] {
-                    assert!(
-                        reached & 1 << s != 0,
-                        "state {s} never reached ({reached:#b})"
-                    );
-                }
+                crate::common::assert_reached(
+                    reached.into(),
+                    [SL_STATE_RUN, SL_STATE_STOP, SL_STATE_ERROR, SL_STATE_RESET],
+                );
                 // Unsigned: no underflow, no quotient overflow.
                 let expected = if SIGNED { 0b11110 } else { 0b01100 };
                 assert_eq!(diags, expected, "diag values reached {diags:#b}");
                 assert!(stuck > 1000, "StuckAtError {stuck}");
-                assert!(
-                    invalid > 300 && invalid < sequences / 8,
-                    "invalid share {invalid}"
-                );
+                crate::common::assert_invalid_share(invalid, 300, sequences / 8);
             }
         }
     };

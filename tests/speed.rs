@@ -459,12 +459,10 @@ macro_rules! speed_tests {
                         }
                     }
                 }
-                for s in [SL_STATE_RUN, SL_STATE_STOP, SL_STATE_ERROR, SL_STATE_RESET] {
-                    assert!(
-                        reached & 1 << s != 0,
-                        "state {s} never reached ({reached:#b})"
-                    );
-                }
+                crate::common::assert_reached(
+                    reached.into(),
+                    [SL_STATE_RUN, SL_STATE_STOP, SL_STATE_ERROR, SL_STATE_RESET],
+                );
                 // Unsigned: a speed never exceeds the type, only backwards underflows.
                 assert_eq!(
                     diags,
@@ -472,10 +470,7 @@ macro_rules! speed_tests {
                     "diag values {diags:#b}"
                 );
                 assert!(moving > 10_000, "non-zero speeds {moving}");
-                assert!(
-                    invalid > 300 && invalid < sequences / 8,
-                    "invalid share {invalid}"
-                );
+                crate::common::assert_invalid_share(invalid, 300, sequences / 8);
             }
         }
     };

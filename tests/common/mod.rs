@@ -556,6 +556,24 @@ macro_rules! analog_bounds {
 #[allow(unused_imports)]
 pub(crate) use analog_bounds;
 
+/// Every state of `states` was reached: bit `1 << s` of `reached` is set for each.
+#[track_caller]
+pub fn assert_reached(reached: u64, states: impl IntoIterator<Item = u8>) {
+    for s in states {
+        assert!(
+            reached & 1 << s != 0,
+            "state {s} never reached ({reached:#b})"
+        );
+    }
+}
+
+/// The number of random sequences with an invalid configuration lies strictly between `lo`
+/// and `hi`: enough to reach the error paths, few enough to leave the rest valid.
+#[track_caller]
+pub fn assert_invalid_share(invalid: u32, lo: u32, hi: u32) {
+    assert!(invalid > lo && invalid < hi, "invalid share {invalid}");
+}
+
 /// `struct Outputs`: everything an analog block shows, its own outputs (given) followed by
 /// the diagnostics every one of them has (state, DiagCode, text id, the two parameters).
 // Every test crate includes this module; only the analog ones declare their outputs.
