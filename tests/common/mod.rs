@@ -710,6 +710,7 @@ pub fn depth_cases(n: u32) -> u32 {
 pub mod cgroup;
 pub mod fsoe;
 pub mod plcopen;
+pub mod timer;
 
 /// The text `sl_diag_text` writes for `code` of block type `ty` (the call must return SL_OK).
 #[track_caller]
