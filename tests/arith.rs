@@ -257,41 +257,39 @@ fn rounding_of_positive_and_negative_quotients() {
     assert_eq!(q(123, 0, 2), 0);
 }
 
+/// One running call of `$fb` with both inputs active on `(in1, in2)`: it must end in ERROR
+/// with `(diag, text id)` and the inputs' bit patterns `(par2, par3)` as the parameters.
+macro_rules! range_error {
+    ($fb:ident, ($a:expr, $b:expr), $diag:expr, $par:expr) => {{
+        let mut fb = common::ready($fb {
+            wInputActive: ACTIVE,
+            nAnalogIn1: $a,
+            nAnalogIn2: $b,
+            bRun: 1,
+            ..Default::default()
+        });
+        fb.cycle(0);
+        let want = (SL_STATE_ERROR, $diag.0, $diag.1);
+        assert_eq!((fb.nState, fb.nDiag, fb.nDiagTextId), want);
+        assert_eq!((fb.dwDiagPar2, fb.dwDiagPar3), $par);
+    }};
+}
+
 /// MIN ÷ −1 is DIV's only overflow.
 #[test]
 fn min_divided_by_minus_one_overflows() {
-    let mut fb = common::ready(FB_DIV_DINT {
-        wInputActive: ACTIVE,
-        nAnalogIn1: i32::MIN,
-        nAnalogIn2: -1,
-        bRun: 1,
-        ..Default::default()
-    });
-    fb.cycle(0);
-    assert_eq!(
-        (fb.nState, fb.nDiag, fb.nDiagTextId),
-        (SL_STATE_ERROR, 2, 0x4081)
+    range_error!(
+        FB_DIV_DINT,
+        (i32::MIN, -1),
+        (2, 0x4081),
+        (0x8000_0000, 0xFFFF_FFFF)
     );
-    assert_eq!(fb.dwDiagPar2, 0x8000_0000);
-    assert_eq!(fb.dwDiagPar3, 0xFFFF_FFFF);
 }
 
 /// SUB on an unsigned type: a negative difference is an underflow.
 #[test]
 fn unsigned_sub_below_zero_is_an_underflow() {
-    let mut fb = common::ready(FB_SUB_UINT {
-        wInputActive: ACTIVE,
-        nAnalogIn1: 3,
-        nAnalogIn2: 4,
-        bRun: 1,
-        ..Default::default()
-    });
-    fb.cycle(0);
-    assert_eq!(
-        (fb.nState, fb.nDiag, fb.nDiagTextId),
-        (SL_STATE_ERROR, 1, 0x4080)
-    );
-    assert_eq!((fb.dwDiagPar2, fb.dwDiagPar3), (3, 4));
+    range_error!(FB_SUB_UINT, (3, 4), (1, 0x4080), (3, 4));
 }
 
 /// The diag value reads as the manual's text.

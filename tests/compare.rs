@@ -289,17 +289,15 @@ macro_rules! compare_tests {
                         reached |= 1 << state;
                     }
                 }
-                for s in [
-                    SL_STATE_RUN,
-                    SL_STATE_STOP,
-                    SL_STATE_SAFE,
-                    SL_STATE_DELAYOUT,
-                ] {
-                    assert!(
-                        reached & 1 << s != 0,
-                        "state {s} never reached ({reached:#b})"
-                    );
-                }
+                crate::common::assert_reached(
+                    reached.into(),
+                    [
+                        SL_STATE_RUN,
+                        SL_STATE_STOP,
+                        SL_STATE_SAFE,
+                        SL_STATE_DELAYOUT,
+                    ],
+                );
             }
         }
     };

@@ -10,18 +10,7 @@ use safelogic::*;
 
 const ALL: u16 = SL_COUNTER_ACTIVE_INPUTS;
 
-/// Everything the block shows.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-struct Outputs {
-    error: u8,
-    out: u8,
-    zero: u8,
-    act: i128,
-    state: u8,
-    diag: u16,
-    text: u16,
-    par: (u32, u32),
-}
+common::analog_outputs!(error: u8, out: u8, zero: u8, act: i128);
 
 macro_rules! counter_tests {
     ($modname:ident, $ty:ty, $t:ty) => {
@@ -52,16 +41,12 @@ macro_rules! counter_tests {
             }
 
             fn outputs(f: &Fb) -> Outputs {
-                Outputs {
+                crate::common::read_outputs!(f {
                     error: f.bError,
                     out: f.bCounterOut,
                     zero: f.bCounterZero,
                     act: f.nActValue.wide(),
-                    state: f.nState,
-                    diag: f.nDiag,
-                    text: f.nDiagTextId,
-                    par: (f.dwDiagPar2, f.dwDiagPar3),
-                }
+                })
             }
 
             /// Drives the inputs for one cycle.
@@ -427,21 +412,16 @@ macro_rules! counter_tests {
                         }
                     }
                 }
-                for s in [SL_STATE_RUN, SL_STATE_STOP, SL_STATE_ERROR, SL_STATE_RESET] {
-                    assert!(
-                        reached & 1 << s != 0,
-                        "state {s} never reached ({reached:#b})"
-                    );
-                }
+                crate::common::assert_reached(
+                    reached.into(),
+                    [SL_STATE_RUN, SL_STATE_STOP, SL_STATE_ERROR, SL_STATE_RESET],
+                );
                 assert_eq!(diags, 0b110, "both range errors reached");
                 assert!(
                     out > 1000 && zero > 1000,
                     "CounterOut {out}, CounterZero {zero}"
                 );
-                assert!(
-                    invalid > 300 && invalid < SEQUENCES / 8,
-                    "invalid share {invalid}"
-                );
+                crate::common::assert_invalid_share(invalid, 300, SEQUENCES / 8);
             }
         }
     };

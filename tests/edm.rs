@@ -592,13 +592,7 @@ fn in_a_group() {
         null,
     );
     let (src, dst) = (offset_of!(FB_AND, bAndOut), offset_of!(FB_EDM, bMon1));
-    common::c_add_link(
-        &mut g,
-        members.as_mut_ptr(),
-        links.as_mut_ptr(),
-        (0, src),
-        (1, dst),
-    );
+    common::c_add_link(&mut g, &mut members, &mut links, (0, src), (1, dst));
     g.bRun = 1;
     c_group_cycle!(g, members, links, 0; a, e);
     assert_running(&e, MONOFF);

@@ -12,16 +12,7 @@ use safelogic::*;
 const MONITOR: u8 = SL_STATE_ENVELOPE_MONITOR;
 const DELAYOUT: u8 = SL_STATE_DELAYOUT;
 
-/// Everything the block shows.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-struct Outputs {
-    error: u8,
-    out: u8,
-    state: u8,
-    diag: u16,
-    text: u16,
-    par: (u32, u32),
-}
+common::analog_outputs!(error: u8, out: u8);
 
 /// The parameters of a test instance.
 #[derive(Clone, Copy, Debug)]
@@ -34,8 +25,7 @@ struct Params {
 
 macro_rules! variant {
     ($name:ident, $ty:ty, $t:ty) => {
-        #[derive(Clone, Copy)]
-        struct $name($ty);
+        crate::common::analog_wrapper!($name, $ty, $t);
         impl $name {
             fn new(p: Params) -> Self {
                 let mut fb = <$ty>::default();
@@ -52,24 +42,12 @@ macro_rules! variant {
             }
             fn outputs(&self) -> Outputs {
                 let f = &self.0;
-                Outputs {
+                crate::common::read_outputs!(f {
                     error: f.bError,
                     out: f.bSafeFunctionOut,
-                    state: f.nState,
-                    diag: f.nDiag,
-                    text: f.nDiagTextId,
-                    par: (f.dwDiagPar2, f.dwDiagPar3),
-                }
-            }
-            fn control(&mut self, run: u8, ack: u8) {
-                self.0.bRun = run;
-                self.0.bErrAck = ack;
-            }
-            fn t(v: i128) -> $t {
-                <$t as Analog>::narrow(v.clamp(<$t as Analog>::MIN, <$t as Analog>::MAX))
+                })
             }
         }
-        crate::common::deref_to!($name, $ty);
     };
 }
 
@@ -646,12 +624,10 @@ macro_rules! envelope_tests {
                         diags[usize::from(fb.outputs().diag).min(4)] += 1;
                     }
                 }
-                for s in CORE_STATES.into_iter().chain([DELAYOUT, MONITOR]) {
-                    assert!(
-                        reached & 1 << s != 0,
-                        "state {s} never reached ({reached:#b})"
-                    );
-                }
+                crate::common::assert_reached(
+                    reached,
+                    CORE_STATES.into_iter().chain([DELAYOUT, MONITOR]),
+                );
                 assert!(diags[2] > 100, "overflows {diags:?}");
                 assert!(!SIGNED || diags[1] > 100, "underflows {diags:?}");
                 assert_eq!(diags[3] + diags[4], 0, "diag 3/4 {diags:?}");

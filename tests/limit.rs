@@ -16,8 +16,7 @@ const MAX_IN: u16 = SL_LIMIT_ACTIVE_MAXVALUE;
 /// (a wrapper per variant dereferences to the library's struct).
 macro_rules! variant {
     ($name:ident, $ty:ty, $t:ty) => {
-        #[derive(Clone, Copy, Default)]
-        struct $name($ty);
+        crate::common::analog_wrapper!($name, $ty, $t);
         impl $name {
             fn new(active: u16, min: i128, max: i128) -> Self {
                 let mut fb = <$ty>::default();
@@ -33,26 +32,12 @@ macro_rules! variant {
             }
             fn outputs(&self) -> Outputs {
                 let f = &self.0;
-                Outputs {
+                crate::common::read_outputs!(f {
                     error: f.bError,
                     in_limit: f.bInLimit,
                     below: f.bBelowMin,
                     above: f.bAboveMax,
-                    state: f.nState,
-                    diag: f.nDiag,
-                    text: f.nDiagTextId,
-                    par: (f.dwDiagPar2, f.dwDiagPar3),
-                }
-            }
-            fn control(&mut self, run: u8, ack: u8) {
-                self.0.bRun = run;
-                self.0.bErrAck = ack;
-            }
-        }
-        crate::common::deref_to!($name, $ty);
-        impl $name {
-            fn t(v: i128) -> $t {
-                <$t as Analog>::narrow(v.clamp(<$t as Analog>::MIN, <$t as Analog>::MAX))
+                })
             }
         }
     };
@@ -63,18 +48,7 @@ variant!(LUint, FB_LIMIT_UINT, u16);
 variant!(LDint, FB_LIMIT_DINT, i32);
 variant!(LUdint, FB_LIMIT_UDINT, u32);
 
-/// Everything the block shows.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-struct Outputs {
-    error: u8,
-    in_limit: u8,
-    below: u8,
-    above: u8,
-    state: u8,
-    diag: u16,
-    text: u16,
-    par: (u32, u32),
-}
+common::analog_outputs!(error: u8, in_limit: u8, below: u8, above: u8);
 
 /// The shared test body, instantiated once per variant.
 macro_rules! limit_tests {
@@ -452,20 +426,12 @@ macro_rules! limit_tests {
                         above += u32::from(fb.outputs().above);
                     }
                 }
-                for s in CORE_STATES {
-                    assert!(
-                        reached & 1 << s != 0,
-                        "state {s} never reached ({reached:#b})"
-                    );
-                }
+                crate::common::assert_reached(reached.into(), CORE_STATES);
                 assert!(
                     below > 1000 && above > 1000,
                     "BelowMin {below}, AboveMax {above}"
                 );
-                assert!(
-                    invalid > 50 && invalid < SEQUENCES / 4,
-                    "invalid share {invalid}"
-                );
+                crate::common::assert_invalid_share(invalid, 50, SEQUENCES / 4);
             }
         }
     };

@@ -31,22 +31,12 @@ const MANUAL: [[i128; 5]; 25] = {
     out
 };
 
-/// Everything the block shows.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-struct Outputs {
-    valid: u8,
-    warning: u8,
-    state: u8,
-    diag: u16,
-    text: u16,
-    par: (u32, u32),
-}
+common::analog_outputs!(valid: u8, warning: u8);
 
 /// The four variants under one roof: values given as `i128`, stored as the variant's type.
 macro_rules! variant {
     ($name:ident, $ty:ty, $t:ty) => {
-        #[derive(Clone, Copy)]
-        struct $name($ty);
+        crate::common::analog_wrapper!($name, $ty, $t);
         impl $name {
             fn new(active: u16, options: u32, rows: &[[i128; 5]]) -> Self {
                 let mut fb = <$ty>::default();
@@ -69,24 +59,12 @@ macro_rules! variant {
             }
             fn outputs(&self) -> Outputs {
                 let f = &self.0;
-                Outputs {
+                crate::common::read_outputs!(f {
                     valid: f.bValid,
                     warning: f.bWarning,
-                    state: f.nState,
-                    diag: f.nDiag,
-                    text: f.nDiagTextId,
-                    par: (f.dwDiagPar2, f.dwDiagPar3),
-                }
-            }
-            fn control(&mut self, run: u8, ack: u8) {
-                self.0.bRun = run;
-                self.0.bErrAck = ack;
-            }
-            fn t(v: i128) -> $t {
-                <$t as Analog>::narrow(v.clamp(<$t as Analog>::MIN, <$t as Analog>::MAX))
+                })
             }
         }
-        crate::common::deref_to!($name, $ty);
     };
 }
 
@@ -503,15 +481,13 @@ macro_rules! loadsensing_tests {
                         reached |= 1 << state;
                     }
                 }
-                for s in [
+                crate::common::assert_reached(reached, [
                     SL_STATE_RUN,
                     SL_STATE_STOP,
                     SL_STATE_SAFE,
                     SL_STATE_LOADSENSING_INACTIVE,
                     SL_STATE_LOADSENSING_WARNING,
-                ] {
-                    assert!(reached & 1 << s != 0, "state {s} never reached ({reached:#b})");
-                }
+                ]);
             }
         }
     };

@@ -13,17 +13,7 @@ const IN: u16 = SL_SCALE_ACTIVE_ANALOGIN;
 const NEG: u16 = SL_SCALE_NEGATE_ANALOGIN;
 const DIV_FIRST: u32 = SL_OPT_SCALE_DIVISION_FIRST;
 
-/// Everything the block shows.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-struct Outputs {
-    error: u8,
-    stuck: u8,
-    out: i128,
-    state: u8,
-    diag: u16,
-    text: u16,
-    par: (u32, u32),
-}
+common::analog_outputs!(error: u8, stuck: u8, out: i128);
 
 /// The parameters of one configuration, exact.
 #[derive(Clone, Copy, Debug)]
@@ -147,15 +137,11 @@ macro_rules! scale_tests {
             }
 
             fn outputs(f: &Fb) -> Outputs {
-                Outputs {
+                crate::common::read_outputs!(f {
                     error: f.bError,
                     stuck: f.bStuckAtError,
                     out: f.nAnalogOut.wide(),
-                    state: f.nState,
-                    diag: f.nDiag,
-                    text: f.nDiagTextId,
-                    par: (f.dwDiagPar2, f.dwDiagPar3),
-                }
+                })
             }
 
             fn step(fb: &mut Fb, now: u32, x: i128) -> i32 {
@@ -860,20 +846,15 @@ macro_rules! scale_tests {
                         }
                     }
                 }
-                for s in [SL_STATE_RUN, SL_STATE_STOP, SL_STATE_ERROR, SL_STATE_RESET] {
-                    assert!(
-                        reached & 1 << s != 0,
-                        "state {s} never reached ({reached:#b})"
-                    );
-                }
+                crate::common::assert_reached(
+                    reached.into(),
+                    [SL_STATE_RUN, SL_STATE_STOP, SL_STATE_ERROR, SL_STATE_RESET],
+                );
                 // Unsigned: no underflow, no quotient overflow.
                 let expected = if SIGNED { 0b11110 } else { 0b01100 };
                 assert_eq!(diags, expected, "diag values reached {diags:#b}");
                 assert!(stuck > 1000, "StuckAtError {stuck}");
-                assert!(
-                    invalid > 300 && invalid < sequences / 8,
-                    "invalid share {invalid}"
-                );
+                crate::common::assert_invalid_share(invalid, 300, sequences / 8);
             }
         }
     };

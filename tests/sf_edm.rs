@@ -425,17 +425,9 @@ fn in_a_group_behind_an_emergency_stop() {
         MonitoringTime: 50,
         ..Default::default()
     });
-    let and = RawBox::new(FB_AND {
-        wInputActive: 0x3,
-        bAndIn2: 1,
-        ..Default::default()
-    });
+    let and = and_following_in1();
     let mut grp = CGroup::new(3, 2);
-    grp.add_init(
-        SL_TYPE_SF_EMERGENCYSTOP,
-        &es,
-        safelogic::ffi::sl_sf_emergencystop_init,
-    );
+    grp.add_estop(&es);
     grp.add_init(SL_TYPE_SF_EDM, &edm, safelogic::ffi::sl_sf_edm_init);
     grp.add_init(SL_TYPE_AND, &and, safelogic::ffi::sl_and_init);
     let es_out = field(SL_TYPE_SF_EMERGENCYSTOP, "S_EStopOut");
@@ -512,11 +504,7 @@ impl Model {
                 s => s,
             }
         };
-        if next != self.state {
-            self.since = now;
-        }
-        self.state = next;
-        next
+        common::plcopen::enter(&mut self.state, &mut self.since, next, now)
     }
 }
 

@@ -511,17 +511,9 @@ fn random_sequences_agree_with_the_model() {
 fn in_a_group_with_links() {
     let mut es = RawBox::new(SF_EmergencyStop::default());
     let mut oc = RawBox::new(SF_OutControl::default());
-    let and = RawBox::new(FB_AND {
-        wInputActive: 0x3,
-        bAndIn2: 1,
-        ..Default::default()
-    });
+    let and = and_following_in1();
     let mut grp = CGroup::new(3, 2);
-    grp.add_init(
-        SL_TYPE_SF_EMERGENCYSTOP,
-        &es,
-        safelogic::ffi::sl_sf_emergencystop_init,
-    );
+    grp.add_estop(&es);
     grp.add_init(
         SL_TYPE_SF_OUTCONTROL,
         &oc,

@@ -296,11 +296,7 @@ fn in_a_group_in_front_of_an_emergency_stop() {
         ..Default::default()
     });
     let mut grp = CGroup::new(2, 2);
-    grp.add_init(
-        SL_TYPE_SF_EMERGENCYSTOP,
-        &es,
-        safelogic::ffi::sl_sf_emergencystop_init,
-    );
+    grp.add_estop(&es);
     grp.add_init(
         SL_TYPE_SF_RESETBUTTON,
         &rb,
@@ -377,11 +373,7 @@ impl Model {
                 s => s,
             }
         };
-        if next != self.state {
-            self.since = now;
-        }
-        self.state = next;
-        next
+        common::plcopen::enter(&mut self.state, &mut self.since, next, now)
     }
 }
 

@@ -447,11 +447,7 @@ impl Model {
                 s => s,
             }
         };
-        if next != self.state {
-            self.since = now;
-        }
-        self.state = next;
-        next
+        common::plcopen::enter(&mut self.state, &mut self.since, next, now)
     }
 }
 

@@ -12,16 +12,7 @@ use safelogic::*;
 const POS: u16 = SL_SPEED_ACTIVE_POSITION;
 const WRAP: u32 = SL_OPT_SPEED_OVERFLOW_CHECK;
 
-/// Everything the block shows.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-struct Outputs {
-    error: u8,
-    speed: i128,
-    state: u8,
-    diag: u16,
-    text: u16,
-    par: (u32, u32),
-}
+common::analog_outputs!(error: u8, speed: i128);
 
 macro_rules! speed_tests {
     ($modname:ident, $ty:ty, $t:ty) => {
@@ -48,19 +39,29 @@ macro_rules! speed_tests {
             }
 
             fn outputs(f: &Fb) -> Outputs {
-                Outputs {
+                crate::common::read_outputs!(f {
                     error: f.bError,
                     speed: f.nSpeed.wide(),
-                    state: f.nState,
-                    diag: f.nDiag,
-                    text: f.nDiagTextId,
-                    par: (f.dwDiagPar2, f.dwDiagPar3),
-                }
+                })
             }
 
             fn step(fb: &mut Fb, now: u32, pos: i128) -> i32 {
                 fb.nPosition = t(pos);
                 fb.cycle(now)
+            }
+
+            /// Runs a step table of (time, position, expected Speed, note) rows: a failure
+            /// names the row, its time and position, and its note.
+            #[track_caller]
+            fn speeds(fb: &mut Fb, rows: &[(u32, i128, i128, &str)]) {
+                for (k, &(now, pos, want, note)) in rows.iter().enumerate() {
+                    step(fb, now, pos);
+                    assert_eq!(
+                        fb.nSpeed.wide(),
+                        want,
+                        "row {k} (t {now}, position {pos}): Speed; {note}"
+                    );
+                }
             }
 
             /// A block started at `now` at position `pos`.
@@ -104,24 +105,22 @@ macro_rules! speed_tests {
             #[test]
             fn speed_per_interval_edges() {
                 let mut fb = running_at(100, 0, 1000, 10);
-                step(&mut fb, 1050, 30);
-                assert_eq!(fb.nSpeed.wide(), 0, "50 ms");
-                step(&mut fb, 1099, 40);
-                assert_eq!(fb.nSpeed.wide(), 0, "99 ms");
+                speeds(&mut fb, &[(1050, 30, 0, "50 ms"), (1099, 40, 0, "99 ms")]);
                 step(&mut fb, 1100, 45);
                 assert_eq!(
                     (fb.nState, fb.nSpeed.wide()),
                     (SL_STATE_RUN, 35),
                     "100 ms: 45 − 10"
                 );
-                step(&mut fb, 1150, 100);
-                assert_eq!(fb.nSpeed.wide(), 35, "held between updates");
-                step(&mut fb, 1199, 100);
-                assert_eq!(fb.nSpeed.wide(), 35);
-                step(&mut fb, 1200, 105);
-                assert_eq!(fb.nSpeed.wide(), 60, "105 − 45");
-                step(&mut fb, 1300, 105);
-                assert_eq!(fb.nSpeed.wide(), 0, "standing still");
+                speeds(
+                    &mut fb,
+                    &[
+                        (1150, 100, 35, "held between updates"),
+                        (1199, 100, 35, ""),
+                        (1200, 105, 60, "105 − 45"),
+                        (1300, 105, 0, "standing still"),
+                    ],
+                );
             }
 
             /// ABI-2 §11.7: a late call is one update with the whole difference, not
@@ -129,12 +128,14 @@ macro_rules! speed_tests {
             #[test]
             fn late_update_restarts_the_interval_at_the_call() {
                 let mut fb = running_at(100, 0, 0, 0);
-                step(&mut fb, 250, 50);
-                assert_eq!(fb.nSpeed.wide(), 50);
-                step(&mut fb, 349, 70);
-                assert_eq!(fb.nSpeed.wide(), 50, "99 ms after the late update");
-                step(&mut fb, 350, 70);
-                assert_eq!(fb.nSpeed.wide(), 20);
+                speeds(
+                    &mut fb,
+                    &[
+                        (250, 50, 50, ""),
+                        (349, 70, 50, "99 ms after the late update"),
+                        (350, 70, 20, ""),
+                    ],
+                );
             }
 
             /// "Time Interval … in ms": 1 ms updates at every call one ms apart; a call at
@@ -142,12 +143,7 @@ macro_rules! speed_tests {
             #[test]
             fn interval_of_one_ms() {
                 let mut fb = running_at(1, 0, 7, 0);
-                step(&mut fb, 7, 5);
-                assert_eq!(fb.nSpeed.wide(), 0, "0 ms");
-                step(&mut fb, 8, 5);
-                assert_eq!(fb.nSpeed.wide(), 5);
-                step(&mut fb, 9, 8);
-                assert_eq!(fb.nSpeed.wide(), 3);
+                speeds(&mut fb, &[(7, 5, 0, "0 ms"), (8, 5, 5, ""), (9, 8, 3, "")]);
             }
 
             /// ABI §4: the interval across the 2^32 ms wrap of tNow (base::time), at the
@@ -162,10 +158,13 @@ macro_rules! speed_tests {
                 assert_eq!((fb.nState, fb.nSpeed.wide()), (SL_STATE_RUN, 3));
                 let t1 = u32::MAX - 1000;
                 let mut fb = running_at(SL_TIME_PARAM_MAX, 0, t1, 0);
-                step(&mut fb, t1.wrapping_add(SL_TIME_PARAM_MAX - 1), 9);
-                assert_eq!(fb.nSpeed.wide(), 0);
-                step(&mut fb, t1.wrapping_add(SL_TIME_PARAM_MAX), 9);
-                assert_eq!(fb.nSpeed.wide(), 9);
+                speeds(
+                    &mut fb,
+                    &[
+                        (t1.wrapping_add(SL_TIME_PARAM_MAX - 1), 9, 0, ""),
+                        (t1.wrapping_add(SL_TIME_PARAM_MAX), 9, 9, ""),
+                    ],
+                );
             }
 
             /// §4.24.2 diag 1 / 0x4088 and 2 / 0x4089 without the Overflow Check: the exact
@@ -249,10 +248,13 @@ macro_rules! speed_tests {
                     (SL_STATE_RUN, 0),
                     "latched anew"
                 );
-                step(&mut fb, 39, 25);
-                assert_eq!(fb.nSpeed.wide(), 0);
-                step(&mut fb, 40, 26);
-                assert_eq!(fb.nSpeed.wide(), 6, "26 − 20 from the RESET → RUN latch");
+                speeds(
+                    &mut fb,
+                    &[
+                        (39, 25, 0, ""),
+                        (40, 26, 6, "26 − 20 from the RESET → RUN latch"),
+                    ],
+                );
             }
 
             /// §4.24.2 STOP: "Error = 0 Speed = 0"; STOP → run latches anew (SP1).
@@ -472,12 +474,10 @@ macro_rules! speed_tests {
                         }
                     }
                 }
-                for s in [SL_STATE_RUN, SL_STATE_STOP, SL_STATE_ERROR, SL_STATE_RESET] {
-                    assert!(
-                        reached & 1 << s != 0,
-                        "state {s} never reached ({reached:#b})"
-                    );
-                }
+                crate::common::assert_reached(
+                    reached.into(),
+                    [SL_STATE_RUN, SL_STATE_STOP, SL_STATE_ERROR, SL_STATE_RESET],
+                );
                 // Unsigned: a speed never exceeds the type, only backwards underflows.
                 assert_eq!(
                     diags,
@@ -485,10 +485,7 @@ macro_rules! speed_tests {
                     "diag values {diags:#b}"
                 );
                 assert!(moving > 10_000, "non-zero speeds {moving}");
-                assert!(
-                    invalid > 300 && invalid < sequences / 8,
-                    "invalid share {invalid}"
-                );
+                crate::common::assert_invalid_share(invalid, 300, sequences / 8);
             }
         }
     };

@@ -198,32 +198,14 @@ fn off_exactly_after(delay: u32, base: u16, t0: u32) {
     f.bTofIn1 = 0;
     let start = t0.wrapping_add(2);
     assert_eq!(f.cycle(start), SL_OK);
-    let end = start.wrapping_add(delay - 1);
-    let mut t = start;
-    while t != end {
-        t = t.wrapping_add(end.wrapping_sub(t).min(1 << 30));
-        assert_eq!(f.cycle(t), SL_OK);
-        assert_eq!(st(&f), (SL_STATE_DELAYOUT, 1), "delay {delay} base {base}");
-    }
-    assert_eq!(f.cycle(start.wrapping_add(delay)), SL_OK);
-    assert_eq!(st(&f), (SL_STATE_SAFE, 0), "delay {delay} base {base}");
+    let (during, after) = ((SL_STATE_DELAYOUT, 1), (SL_STATE_SAFE, 0));
+    common::timer::walk_delay(&mut f, st, (start, delay, base), during, after);
 }
 
 /// T1, T3: every timebase, just below and at the limit, up to 60,000 s.
 #[test]
 fn delays_at_and_below_the_limit_of_every_time_base() {
-    for (base, max) in [
-        (SL_TIMEBASE_1MS, 60_000u32),
-        (SL_TIMEBASE_10MS, 600_000),
-        (SL_TIMEBASE_100MS, 6_000_000),
-        (SL_TIMEBASE_1000MS, 60_000_000),
-    ] {
-        let b = u32::from(base);
-        for delay in [b, max - b, max] {
-            off_exactly_after(delay, base, 100);
-        }
-        off_exactly_after(max, SL_TIMEBASE_AUTO, 100);
-    }
+    common::timer::at_and_below_the_limits(|delay, base| off_exactly_after(delay, base, 100));
     off_exactly_after(SL_TIMER_DELAY_MAX, SL_TIMEBASE_AUTO, u32::MAX - 7);
 }
 

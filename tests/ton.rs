@@ -226,37 +226,16 @@ fn invalid_bool() {
 fn output_exactly_after(delay: u32, base: u16, t0: u32) {
     let mut f = running(delay, base, t0);
     f.bTonIn1 = 1;
-    assert_eq!(f.cycle(t0.wrapping_add(1)), SL_OK);
     let start = t0.wrapping_add(1);
-    // Big steps below 2^31 so that the clock check does not fire.
-    let mut t = start;
-    let end = start.wrapping_add(delay - 1);
-    while t != end {
-        let step = (end.wrapping_sub(t)).min(1 << 30);
-        t = t.wrapping_add(step);
-        assert_eq!(f.cycle(t), SL_OK);
-        assert_eq!(st(&f), (DELAYIN, 0), "delay {delay} base {base} at {t}");
-    }
-    assert_eq!(f.cycle(start.wrapping_add(delay)), SL_OK);
-    assert_eq!(st(&f), (SL_STATE_RUN, 1), "delay {delay} base {base}");
+    assert_eq!(f.cycle(start), SL_OK);
+    let run = (SL_STATE_RUN, 1);
+    common::timer::walk_delay(&mut f, st, (start, delay, base), (DELAYIN, 0), run);
 }
 
 /// T1, T3: every timebase, the delay just below and at its limit; also at 60,000 s.
 #[test]
 fn delays_at_and_below_the_limit_of_every_time_base() {
-    for (base, max) in [
-        (SL_TIMEBASE_1MS, 60_000u32),
-        (SL_TIMEBASE_10MS, 600_000),
-        (SL_TIMEBASE_100MS, 6_000_000),
-        (SL_TIMEBASE_1000MS, 60_000_000),
-    ] {
-        let b = u32::from(base);
-        for delay in [b, max - b, max] {
-            output_exactly_after(delay, base, 5);
-        }
-        // Automatic timebase: the same limits.
-        output_exactly_after(max, SL_TIMEBASE_AUTO, 5);
-    }
+    common::timer::at_and_below_the_limits(|delay, base| output_exactly_after(delay, base, 5));
     assert_eq!(SL_TIMER_DELAY_MAX, 60_000_000);
     output_exactly_after(SL_TIMER_DELAY_MAX, SL_TIMEBASE_AUTO, u32::MAX - 1000);
     output_exactly_after(1, SL_TIMEBASE_AUTO, 0);
@@ -285,12 +264,7 @@ fn init_status(delay: u32, base: u16, active: u16, negated: u16) -> FB_TON {
 /// steps, zero; unknown timebases; input masks.
 #[test]
 fn config_errors() {
-    for (base, max) in [
-        (1u16, 60_000u32),
-        (10, 600_000),
-        (100, 6_000_000),
-        (1000, 60_000_000),
-    ] {
+    for (base, max) in common::timer::BASE_LIMITS {
         init_status(max + u32::from(base), base, 1, 0);
         init_status(max + 1, base, 1, 0);
     }
@@ -599,13 +573,7 @@ fn ton_in_a_group() {
         common::c_add_member(&mut g, members.as_mut_ptr(), ty, p, std::ptr::null_mut());
     }
     let (src, dst) = (offset_of!(FB_AND, bAndOut), offset_of!(FB_TON, bTonIn1));
-    common::c_add_link(
-        &mut g,
-        members.as_mut_ptr(),
-        links.as_mut_ptr(),
-        (0, src),
-        (1, dst),
-    );
+    common::c_add_link(&mut g, &mut members, &mut links, (0, src), (1, dst));
     g.bRun = 1;
     let mut cyc =
         |t| unsafe { ffi::sl_group_cycle(&mut g, members.as_mut_ptr(), links.as_mut_ptr(), t) };

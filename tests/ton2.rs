@@ -46,6 +46,17 @@ fn cyc(f: &mut FB_TON2, t: u32) -> i32 {
     unsafe { ffi::sl_ton2_cycle(f, t) }
 }
 
+/// Runs a step table of C calls: (time, expected (state, output), note) rows; the status is
+/// not checked (the rows' callers check it where it matters). A failure names the row, its
+/// time and its note.
+#[track_caller]
+fn calls(f: &mut FB_TON2, rows: &[(u32, (u8, u8), &str)]) {
+    for (k, &(t, want, note)) in rows.iter().enumerate() {
+        cyc(f, t);
+        assert_eq!(st(f), want, "row {k} (t {t}): {note}");
+    }
+}
+
 #[test]
 fn layout_matches_the_abi() {
     offsets!(FB_TON2; bTonIn1 => 8, bEnable => 9, bRun => 16, bErrAck => 17);
@@ -154,7 +165,7 @@ fn enable_selects_the_remaining_time_at_the_rising_edge() {
         f.bEnable = 1 - enable;
         let due = if enable == 1 { 5 + 600 } else { 5 + 1000 };
         cyc(&mut f, due - 1);
-        assert_eq!(st(&f), (DELAYIN, 0));
+        assert_eq!(st(&f), (DELAYIN, 0), "enable {enable}");
         cyc(&mut f, due);
         assert_eq!(st(&f), (SL_STATE_RUN, 1), "enable {enable}");
     }
@@ -233,12 +244,14 @@ fn restored_full_delay_means_no_remaining_time() {
     f.bRun = 1;
     f.bEnable = 1;
     f.bTonIn1 = 1;
-    cyc(&mut f, 0);
-    assert_eq!(st(&f), (SL_STATE_SAFE, 0));
-    cyc(&mut f, 1);
-    assert_eq!(st(&f), (DELAYIN, 0));
-    cyc(&mut f, 2);
-    assert_eq!(st(&f), (SL_STATE_RUN, 1));
+    calls(
+        &mut f,
+        &[
+            (0, (SL_STATE_SAFE, 0), ""),
+            (1, (DELAYIN, 0), ""),
+            (2, (SL_STATE_RUN, 1), ""),
+        ],
+    );
 }
 
 /// T13: a restored value greater than tDelay is the manual's global shutdown (0x3510): the
@@ -272,10 +285,13 @@ fn restored_value_above_the_delay_is_refused() {
     assert_eq!(f.nState, SL_STATE_SAFE);
     cyc(&mut f, 3);
     assert_eq!(f.nState, DELAYIN);
-    cyc(&mut f, 1_002);
-    assert_eq!(st(&f), (DELAYIN, 0), "full delay");
-    cyc(&mut f, 1_003);
-    assert_eq!(st(&f), (SL_STATE_RUN, 1));
+    calls(
+        &mut f,
+        &[
+            (1_002, (DELAYIN, 0), "full delay"),
+            (1_003, (SL_STATE_RUN, 1), ""),
+        ],
+    );
 }
 
 /// T13: the manual's check at the rising edge: a stored value accepted against the delay
@@ -505,10 +521,10 @@ fn enable_byte_and_masks() {
         "invalid Enable: full delay"
     );
     f.bEnable = 0;
-    cyc(&mut f, 100);
-    assert_eq!(st(&f), (DELAYIN, 0));
-    cyc(&mut f, 101);
-    assert_eq!(st(&f), (SL_STATE_RUN, 1));
+    calls(
+        &mut f,
+        &[(100, (DELAYIN, 0), ""), (101, (SL_STATE_RUN, 1), "")],
+    );
     for (active, negated, options) in [(0b11u16, 0u16, REMAINING), (1, 0b10, 0), (1, 0, 1)] {
         let mut f = FB_TON2 {
             tDelay: 100,
@@ -536,10 +552,10 @@ fn enable_byte_and_masks() {
     assert_eq!(f.nState, SL_STATE_SAFE);
     f.bTonIn1 = 0;
     cyc(&mut f, 2);
-    cyc(&mut f, 61);
-    assert_eq!(st(&f), (DELAYIN, 0));
-    cyc(&mut f, 62);
-    assert_eq!(st(&f), (SL_STATE_RUN, 1));
+    calls(
+        &mut f,
+        &[(61, (DELAYIN, 0), ""), (62, (SL_STATE_RUN, 1), "")],
+    );
 }
 
 /// The timebases and limits of TON apply to TON2 (T1): 60,000 s with remaining time.
@@ -577,10 +593,13 @@ fn time_bases_and_limits() {
     f.bEnable = 1;
     f.bTonIn1 = 1;
     cyc(&mut f, 0);
-    cyc(&mut f, 10);
-    assert_eq!(st(&f), (DELAYIN, 0));
-    cyc(&mut f, 11);
-    assert_eq!(st(&f), (SL_STATE_RUN, 1), "1 ms remained");
+    calls(
+        &mut f,
+        &[
+            (10, (DELAYIN, 0), ""),
+            (11, (SL_STATE_RUN, 1), "1 ms remained"),
+        ],
+    );
 }
 
 /// Parameter change while running (C5) keeps the stored value; the group's view.

@@ -251,20 +251,15 @@ macro_rules! violation_tests {
                         saturated += u32::from(counting && count == HI);
                     }
                 }
-                for s in [SL_STATE_RUN, SL_STATE_STOP, SL_STATE_SAFE, SL_STATE_START] {
-                    assert!(
-                        reached & 1 << s != 0,
-                        "state {s} never reached ({reached:#b})"
-                    );
-                }
+                crate::common::assert_reached(
+                    reached.into(),
+                    [SL_STATE_RUN, SL_STATE_STOP, SL_STATE_SAFE, SL_STATE_START],
+                );
                 assert!(
                     saturated > 100,
                     "saturation at the maximum reached {saturated} times"
                 );
-                assert!(
-                    invalid > 300 && invalid < SEQUENCES / 8,
-                    "invalid share {invalid}"
-                );
+                crate::common::assert_invalid_share(invalid, 300, SEQUENCES / 8);
             }
         }
     };

@@ -26,6 +26,16 @@ fn set(x: &mut FB_XOR, y: usize, a: u8, b: u8) {
     *p2 = b;
 }
 
+/// XOR1 alone, its inputs (a, b), running since the call at `t0` with XorOut1 TRUE.
+fn running_xor1(a: u8, b: u8, t0: u32) -> FB_XOR {
+    let mut x = xor(0b1);
+    set(&mut x, 1, a, b);
+    x.bRun = 1;
+    assert_eq!(x.cycle(t0), SL_OK);
+    assert_eq!(x.bXorOut1, 1);
+    x
+}
+
 fn pair_mut(x: &mut FB_XOR, y: usize) -> (&mut u8, &mut u8) {
     match y {
         1 => (&mut x.bXor1In1, &mut x.bXor2In1),
@@ -183,11 +193,7 @@ fn invalid_bool_switches_its_function_off() {
 
 #[test]
 fn invalid_run_reads_false() {
-    let mut x = xor(0b1);
-    set(&mut x, 1, 1, 0);
-    x.bRun = 1;
-    x.cycle(0);
-    assert_eq!(x.bXorOut1, 1);
+    let mut x = running_xor1(1, 0, 0);
     x.bRun = 3;
     assert_eq!(x.cycle(1), SL_E_INVALID_BOOL);
     assert_eq!((x.nState, x.bXorOut1), (SL_STATE_STOP, 0));
@@ -273,11 +279,7 @@ fn parameter_change_in_stop_is_latched_at_start() {
 /// C4: the clock going backwards is ERROR (diag bit 14) in every state; one ErrAck edge.
 #[test]
 fn clock_backwards() {
-    let mut x = xor(0b1);
-    set(&mut x, 1, 0, 1);
-    x.bRun = 1;
-    x.cycle(1000);
-    assert_eq!(x.bXorOut1, 1);
+    let mut x = running_xor1(0, 1, 1000);
     assert_eq!(x.cycle(999), SL_E_CLOCK);
     assert_eq!(
         (x.nState, x.nDiag, x.bXorOut1),
@@ -373,13 +375,7 @@ fn c_functions_state_names_and_group_membership() {
     );
     // XorOut1 of member 0 feeds Xor1In1 of member 1.
     let (src, dst) = (offset_of!(FB_XOR, bXorOut1), offset_of!(FB_XOR, bXor1In1));
-    common::c_add_link(
-        &mut g,
-        members.as_mut_ptr(),
-        links.as_mut_ptr(),
-        (0, src),
-        (1, dst),
-    );
+    common::c_add_link(&mut g, &mut members, &mut links, (0, src), (1, dst));
     g.bRun = 1;
     x.bXor1In1 = 1;
     assert_eq!(c_group_cycle!(g, members, links, 10; x, y), SL_OK);

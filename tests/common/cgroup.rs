@@ -74,6 +74,12 @@ impl CGroup {
         assert_eq!(self.add(ty, b), SL_OK, "sl_group_add_member type {ty}");
     }
 
+    /// Adds the SF_EmergencyStop in `es` after its C init (both must return SL_OK).
+    #[track_caller]
+    pub fn add_estop(&mut self, es: &RawBox<SF_EmergencyStop>) {
+        self.add_init(SL_TYPE_SF_EMERGENCYSTOP, es, sl_sf_emergencystop_init);
+    }
+
     /// `sl_group_add_link` from member `src` at `src_off` to member `dst` at `dst_off`
     /// (must return SL_OK).
     #[track_caller]
@@ -108,6 +114,15 @@ impl CGroup {
     }
 }
 
+/// An FB_AND with inputs 1 and 2 active and `bAndIn2` TRUE: its output follows `bAndIn1`.
+pub fn and_following_in1() -> RawBox<FB_AND> {
+    RawBox::new(FB_AND {
+        wInputActive: 0x3,
+        bAndIn2: 1,
+        ..Default::default()
+    })
+}
+
 /// A PLCopen block whose safety output (at `out`) is linked to `bAndIn1` of an FB_AND with
 /// inputs 1 and 2 active and `bAndIn2` TRUE: members 0 (the block) and 1 (the AND).
 pub struct WithAnd<T> {
@@ -124,11 +139,7 @@ impl<T> WithAnd<T> {
         let mut grp = CGroup::new(2, 1);
         let fb = RawBox::new(fb);
         assert_eq!(grp.add(ty, &fb), SL_E_CONFIG, "never initialised");
-        let and = RawBox::new(FB_AND {
-            wInputActive: 0x3,
-            bAndIn2: 1,
-            ..Default::default()
-        });
+        let and = and_following_in1();
         grp.add_init(ty, &fb, init);
         grp.add_init(SL_TYPE_AND, &and, sl_and_init);
         grp.link(0, out as u16, 1, field(SL_TYPE_AND, "bAndIn1"));

@@ -174,7 +174,7 @@ macro_rules! flipflop_shared_tests {
             let fb = std::ptr::addr_of_mut!(b).cast();
             common::c_add_member(&mut g, members.as_mut_ptr(), $ty, fb, null);
             let (src, dst) = (offset_of!(FB_AND, bAndOut), offset_of!($fb, bSet));
-            common::c_add_link(&mut g, members.as_mut_ptr(), links.as_mut_ptr(), (0, src), (1, dst));
+            common::c_add_link(&mut g, &mut members, &mut links, (0, src), (1, dst));
             g.bRun = 1;
             c_group_cycle!(g, members, links, 0; a, b);
             assert_eq!((b.nState, b.$out), (SL_STATE_SAFE, 0));
@@ -198,6 +198,150 @@ macro_rules! flipflop_shared_tests {
         }
     };
 }
+
+/// The fixtures of one flip-flop type: `$new(active, negated)` (initialised), `running()`
+/// (both inputs active, running in SAFE, with the next time), `step` (Reset and Set written,
+/// the call 10 ms later) and `io` (the [`Io`] of a step table).
+#[macro_export]
+macro_rules! flipflop_fixtures {
+    ($fb:ident, $out:ident, $new:ident) => {
+        fn $new(active: u16, negated: u16) -> $fb {
+            common::ready($fb {
+                wInputActive: active,
+                wInputNegated: negated,
+                ..Default::default()
+            })
+        }
+
+        /// A running block with both inputs active (break contacts).
+        fn running() -> ($fb, u32) {
+            let mut b = $new(RESET | SET, 0);
+            b.bRun = 1;
+            assert_eq!(b.cycle(0), SL_OK);
+            assert_eq!(b.nState, SL_STATE_SAFE);
+            (b, 1)
+        }
+
+        fn step(b: &mut $fb, t: &mut u32, reset: u8, set: u8) -> i32 {
+            b.bReset = reset;
+            b.bSet = set;
+            *t += 10;
+            b.cycle(*t)
+        }
+
+        /// One call of a step table: (Run, Reset, Set) written, the call at `t`, its status
+        /// with (state, output).
+        fn io(b: &mut $fb, [run, reset, set]: [u8; 3], t: u32) -> (i32, u8, u8) {
+            (b.bRun, b.bReset, b.bSet) = (run, reset, set);
+            let rc = b.cycle(t);
+            (rc, b.nState, b.$out)
+        }
+
+        /// From [`running`]: the rows both flip-flops share, then the block's own.
+        #[track_caller]
+        fn walk_running(shared: &[flipflop::Step], own: &[flipflop::Step]) -> $fb {
+            let (mut b, mut t) = running();
+            flipflop::walk(&mut b, &mut t, io, shared);
+            flipflop::walk(&mut b, &mut t, io, own);
+            b
+        }
+    };
+}
+
+/// The reference-model property of one flip-flop type (manual §4.10.1 / §4.11.1, R2–R5):
+/// the output is TRUE only in SET; in the running states it follows the inputs in the same
+/// call, and with both inputs logically TRUE the block is SET exactly when `$both` (RS:
+/// Reset dominant, false; SR: Set dominant, true).
+#[macro_export]
+macro_rules! flipflop_model {
+    ($out:ident, $set:ident, $new:ident, $both:expr) => {
+        common::property! {
+            cases: common::depth_cases(10_000), reach: [$set, SL_STATE_SAFE, SL_STATE_STOP];
+            /// The block against the reference model, any activation and negation.
+            fn follows_the_manual_model(
+                active in 1u16..=3,
+                negated in 0u16..=3,
+                steps in proptest::collection::vec((0u8..4, 0u8..3, 0u8..3, 0u8..3, 0u32..20, 0u8..30), 1..80)
+            ) {
+                let mut b = $new(active, negated);
+                let mut t = 0u32;
+                let mut model_set = false;
+                for (run, ack, reset, set, dt, mode) in steps {
+                    b.bRun = u8::from(run != 0);
+                    b.bErrAck = u8::from(ack == 1);
+                    b.bReset = reset;
+                    b.bSet = set;
+                    t = if mode == 0 { t.wrapping_sub(1) } else { t.wrapping_add(dt) };
+                    let before = b.nState;
+                    b.cycle(t);
+                    common::saw(b.nState);
+                    prop_assert!([SL_STATE_STOP, SL_STATE_SAFE, $set, SL_STATE_ERROR, SL_STATE_RESET].contains(&b.nState));
+                    prop_assert_eq!(b.$out, u8::from(b.nState == $set));
+                    if matches!(b.nState, SL_STATE_SAFE | $set) {
+                        // Logical values: inactive → FALSE; invalid Reset → TRUE; invalid Set → FALSE.
+                        let logical = |raw: u8, bit: u16, invalid_reads: bool| {
+                            if active & bit == 0 { false }
+                            else if raw > 1 { invalid_reads }
+                            else { (raw == 1) != (negated & bit != 0) }
+                        };
+                        let r = logical(reset, RESET, true);
+                        let s = logical(set, SET, false);
+                        let was_set = before == $set && model_set;
+                        model_set = match (r, s) {
+                            (true, true) => $both,
+                            (true, false) => false,
+                            (false, true) => true,
+                            (false, false) => was_set,
+                        };
+                        prop_assert_eq!(b.nState == $set, model_set);
+                    } else {
+                        model_set = false;
+                    }
+                }
+            }
+        }
+    };
+}
+
+/// The manual statements RS and SR share (§4.10.1 / §4.11.1), from SAFE; `set` is the
+/// block's SET state.
+#[rustfmt::skip]
+pub fn set_and_reset_rows(set: u8) -> [Step; 4] {
+    use safelogic::*;
+    [
+        // "Logic 1 at input Set and logic 0 at input Reset leads to logic 1 at the output."
+        (1, 0, 1, SL_OK, Some(set), Some(1), "Set alone"),
+        // "If both inputs are logic 0, the output remains in its current state." (1)
+        (1, 0, 0, SL_OK, Some(set), Some(1), "remains 1"),
+        // "Logic 0 at input Set and logic 1 at input Reset leads to logic 0 at the output."
+        (1, 1, 0, SL_OK, Some(SL_STATE_SAFE), Some(0), "Reset alone"),
+        // ... remains (0).
+        (1, 0, 0, SL_OK, Some(SL_STATE_SAFE), Some(0), "remains 0"),
+    ]
+}
+
+/// STOP and start-up as RS and SR share them (R4), from SAFE: the memory does not survive
+/// STOP, the output starts FALSE, and Set held through a start-up sets in the call Run rises.
+#[rustfmt::skip]
+pub fn stop_and_start_rows(set: u8) -> [Step; 5] {
+    use safelogic::*;
+    [
+        (1, 0, 1, SL_OK, None, Some(1), ""),
+        (0, 0, 0, SL_OK, Some(SL_STATE_STOP), Some(0), ""),
+        (1, 0, 0, SL_OK, Some(SL_STATE_SAFE), Some(0), "starts FALSE"),
+        (0, 0, 1, SL_OK, None, Some(0), ""),
+        (1, 0, 1, SL_OK, Some(set), Some(1), "Set held through start-up"),
+    ]
+}
+
+/// Both inputs negated (make contacts), running from SAFE: raw Reset 1 = logical 0, raw Set
+/// 0 = logical 1, so the block sets; then remains; then resets.
+#[rustfmt::skip]
+pub const BOTH_NEGATED_ROWS: [Step; 3] = [
+    (1, 1, 0, safelogic::SL_OK, None, Some(1), "logical Set 1"),
+    (1, 1, 1, safelogic::SL_OK, None, Some(1), "both logical 0: remains"),
+    (1, 0, 1, safelogic::SL_OK, None, Some(0), "logical Reset 1"),
+];
 
 /// A row of a flip-flop step table: the Run, Reset and Set bytes, the status, the state and
 /// the output (`None`: not checked in this row), and what the row shows.

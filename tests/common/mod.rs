@@ -556,6 +556,83 @@ macro_rules! analog_bounds {
 #[allow(unused_imports)]
 pub(crate) use analog_bounds;
 
+/// Every state of `states` was reached: bit `1 << s` of `reached` is set for each.
+#[track_caller]
+pub fn assert_reached(reached: u64, states: impl IntoIterator<Item = u8>) {
+    for s in states {
+        assert!(
+            reached & 1 << s != 0,
+            "state {s} never reached ({reached:#b})"
+        );
+    }
+}
+
+/// The number of random sequences with an invalid configuration lies strictly between `lo`
+/// and `hi`: enough to reach the error paths, few enough to leave the rest valid.
+#[track_caller]
+pub fn assert_invalid_share(invalid: u32, lo: u32, hi: u32) {
+    assert!(invalid > lo && invalid < hi, "invalid share {invalid}");
+}
+
+/// `struct Outputs`: everything an analog block shows, its own outputs (given) followed by
+/// the diagnostics every one of them has (state, DiagCode, text id, the two parameters).
+// Every test crate includes this module; only the analog ones declare their outputs.
+#[allow(unused_macros)]
+macro_rules! analog_outputs {
+    ($($field:ident: $ty:ty),* $(,)?) => {
+        /// Everything the block shows.
+        #[derive(Clone, Copy, Debug, PartialEq, Eq)]
+        struct Outputs {
+            $($field: $ty,)*
+            state: u8,
+            diag: u16,
+            text: u16,
+            par: (u32, u32),
+        }
+    };
+}
+#[allow(unused_imports)]
+pub(crate) use analog_outputs;
+
+/// The [`analog_outputs`] of block `$f`: the given fields, then its diagnostics.
+#[allow(unused_macros)]
+macro_rules! read_outputs {
+    ($f:ident { $($field:ident: $e:expr),* $(,)? }) => {
+        Outputs {
+            $($field: $e,)*
+            state: $f.nState,
+            diag: $f.nDiag,
+            text: $f.nDiagTextId,
+            par: ($f.dwDiagPar2, $f.dwDiagPar3),
+        }
+    };
+}
+#[allow(unused_imports)]
+pub(crate) use read_outputs;
+
+/// The one-field wrapper `$name` of an analog variant `$ty` (value type `$t`): it
+/// dereferences to the block, sets `bRun` / `bErrAck` with `control`, and stores test values
+/// given as `i128` with `t` (clamped to the type's range).
+#[allow(unused_macros)]
+macro_rules! analog_wrapper {
+    ($name:ident, $ty:ty, $t:ty) => {
+        #[derive(Clone, Copy, Default)]
+        struct $name($ty);
+        impl $name {
+            fn control(&mut self, run: u8, ack: u8) {
+                self.0.bRun = run;
+                self.0.bErrAck = ack;
+            }
+            fn t(v: i128) -> $t {
+                <$t as Analog>::narrow(v.clamp(<$t as Analog>::MIN, <$t as Analog>::MAX))
+            }
+        }
+        crate::common::deref_to!($name, $ty);
+    };
+}
+#[allow(unused_imports)]
+pub(crate) use analog_wrapper;
+
 /// `Deref` / `DerefMut` of the one-field wrapper `$name` to its block `$ty`.
 // Every test crate includes this module; not all of them wrap a block.
 #[allow(unused_macros)]
@@ -633,6 +710,7 @@ pub fn depth_cases(n: u32) -> u32 {
 pub mod cgroup;
 pub mod fsoe;
 pub mod plcopen;
+pub mod timer;
 
 /// The text `sl_diag_text` writes for `code` of block type `ty` (the call must return SL_OK).
 #[track_caller]
@@ -708,15 +786,14 @@ pub fn c_add_member(
 #[track_caller]
 pub fn c_add_link(
     g: &mut SL_GROUP,
-    members: *mut SL_MEMBER,
-    links: *mut SL_LINK,
+    members: &mut [SL_MEMBER],
+    links: &mut [SL_LINK],
     (src, so): (u16, usize),
     (dst, d): (u16, usize),
 ) {
+    let (ms, ls) = (members.as_mut_ptr(), links.as_mut_ptr());
     // SAFETY: the test's own group and tables.
-    let rc = unsafe {
-        safelogic::ffi::sl_group_add_link(g, members, links, src, so as u16, dst, d as u16)
-    };
+    let rc = unsafe { safelogic::ffi::sl_group_add_link(g, ms, ls, src, so as u16, dst, d as u16) };
     assert_eq!(rc, SL_OK, "sl_group_add_link {src}@{so} -> {dst}@{d}");
 }
 

@@ -142,3 +142,13 @@ pub fn edges(prev: &mut bool, now: bool) -> (bool, bool) {
     *prev = now;
     (rt, now && !rt)
 }
+
+/// A model's move to `next` at `now`: `since` (the time the state was entered) moves only
+/// when the state changes. Returns `next`.
+pub fn enter(state: &mut u16, since: &mut u32, next: u16, now: u32) -> u16 {
+    if next != *state {
+        *since = now;
+    }
+    *state = next;
+    next
+}
