@@ -12,7 +12,8 @@
 mod explorer;
 
 use explorer::{configs::configs, explore, scenario, Figures, Violation};
-use safelogic::registry::{family, BlockType, Family, BLOCKS};
+use safelogic::registry::{block_type_named, family, BlockType, Family, BLOCKS};
+use safelogic::{SL_STATE_DELAYOUT, SL_STATE_ERRORDELAY};
 use std::path::PathBuf;
 use std::process::Command;
 
@@ -77,12 +78,16 @@ fn boolean_scope(b: &BlockType) -> bool {
 /// whether every expectation (the offending state and outputs) was met.
 fn replay(v: &Violation) -> bool {
     let (proj, scen) = scenario::files(v);
+    replay_files(&v.block.to_lowercase(), &proj, &scen)
+}
+
+fn replay_files(name: &str, proj: &str, scen: &str) -> bool {
     let dir = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("explore");
     std::fs::create_dir_all(&dir).unwrap();
-    let p = dir.join(format!("{}.toml", v.block.to_lowercase()));
-    let s = dir.join(format!("{}.scenario.toml", v.block.to_lowercase()));
-    std::fs::write(&p, &proj).unwrap();
-    std::fs::write(&s, &scen).unwrap();
+    let p = dir.join(format!("{name}.toml"));
+    let s = dir.join(format!("{name}.scenario.toml"));
+    std::fs::write(&p, proj).unwrap();
+    std::fs::write(&s, scen).unwrap();
     println!(
         "--- {} ---\n{proj}--- {} ---\n{scen}",
         p.display(),
@@ -108,6 +113,8 @@ fn run_block(ty: &'static BlockType) -> (Figures, Vec<Violation>, Vec<String>) {
     let mut total = Figures::default();
     let mut violations = Vec::new();
     let mut problems = Vec::new();
+    // (profile, state value) reached: a PLCopen block's v1.0 DiagCodes count only when
+    // reached with nDiagProfile 1, its v2.01 codes only with profile 0.
     let mut seen = std::collections::BTreeSet::new();
     let cfgs = configs(ty);
     if cfgs.is_empty() {
@@ -117,6 +124,11 @@ fn run_block(ty: &'static BlockType) -> (Figures, Vec<Violation>, Vec<String>) {
         ));
     }
     for cfg in cfgs {
+        let profile = cfg
+            .params
+            .iter()
+            .find(|(f, _)| f.name == "nDiagProfile")
+            .map_or(0, |(_, v)| *v);
         match explore(ty, &cfg, None) {
             Ok((fig, v)) => {
                 total.configs += 1;
@@ -124,7 +136,7 @@ fn run_block(ty: &'static BlockType) -> (Figures, Vec<Violation>, Vec<String>) {
                 total.transitions += fig.transitions;
                 total.depth = total.depth.max(fig.depth);
                 total.secs += fig.secs;
-                seen.extend(fig.state_values.iter().copied());
+                seen.extend(fig.state_values.iter().map(|v| (profile, *v)));
                 if std::env::var_os("SAFELOGIC_EXPLORE_VERBOSE").is_some() {
                     println!(
                         "  {} {}: {} states, {} transitions, depth {}, {:.2} s, states {:X?}",
@@ -151,20 +163,21 @@ fn run_block(ty: &'static BlockType) -> (Figures, Vec<Violation>, Vec<String>) {
                 .iter()
                 .any(|(b, s, _)| *b == ty.info.name && *s == n)
         };
-        for (v, n) in &states {
+        for (p, v, n) in &states {
             let (v, n) = (*v, n.as_str());
             let listed = is_listed(n);
             // Both ways: a listed state reached under every code it has (a PLCopen state
-            // has its v2.01 and its v1.0 code) is a stale entry.
+            // has its v2.01 and its v1.0 code, each in its own profile) is a stale entry.
             let stale = listed
                 && states
                     .iter()
-                    .filter(|(_, n2)| n2 == n)
-                    .all(|(v2, _)| seen.contains(v2));
-            match (seen.contains(&v), listed) {
-                (false, false) => {
-                    problems.push(format!("{}: state {n} ({v}) never reached", ty.info.name))
-                }
+                    .filter(|(_, _, n2)| n2 == n)
+                    .all(|(p2, v2, _)| seen.contains(&(*p2, *v2)));
+            match (seen.contains(&(*p, v)), listed) {
+                (false, false) => problems.push(format!(
+                    "{}: state {n} ({v:#X}, profile {p}) never reached",
+                    ty.info.name
+                )),
                 (true, true) if stale => problems.push(format!(
                     "{}: state {n} ({v}) is listed in UNREACHED but reached",
                     ty.info.name
@@ -230,6 +243,63 @@ fn run(scope: impl Fn(&BlockType) -> bool) {
 #[test]
 fn explore_boolean_plcopen_and_connection_shutdown_blocks() {
     run(bounded_scope);
+}
+
+/// The group scenario (explorer/group.rs): ESTOP → AND in a group with connections
+/// assigned, every group and member input, every group state but the customizing ones.
+#[test]
+fn explore_group() {
+    let expect_violation = std::env::var_os("SAFELOGIC_EXPLORE_EXPECT_VIOLATION").is_some();
+    let (fig, group_seen, estop_seen, v) = explorer::group::explore();
+    println!(
+        "{:<26} {:>2} configs {:>8} states {:>11} transitions depth {:>3} {:>8.2} s",
+        "group (ESTOP -> AND)", fig.configs, fig.states, fig.transitions, fig.depth, fig.secs
+    );
+    if expect_violation {
+        let v = v.expect("the explorer caught nothing in the group");
+        println!("VIOLATION group: {} after {} steps", v.what, v.trace.len());
+        let (proj, scen) = explorer::group::files(&v);
+        assert!(
+            replay_files("group", &proj, &scen),
+            "the trace did not replay to the same states and outputs in safelogic sim"
+        );
+        return;
+    }
+    if let Some(v) = &v {
+        let (proj, scen) = explorer::group::files(v);
+        replay_files("group", &proj, &scen);
+        panic!(
+            "VIOLATION group: {} after {} steps (trace above)",
+            v.what,
+            v.trace.len()
+        );
+    }
+    let missing: Vec<&str> = explorer::group::GROUP_STATES
+        .iter()
+        .filter(|(s, _)| !group_seen.contains(s))
+        .map(|(_, n)| *n)
+        .collect();
+    assert!(
+        missing.is_empty(),
+        "group states never reached: {missing:?}"
+    );
+    // ESTOP's own exploration reaches every state; here its delayed output is off
+    // (tEStopDelOutDelay 0), so DELAYOUT and ERRORDELAY are not entered, every other state
+    // must be.
+    let estop = block_type_named("ESTOP").unwrap();
+    let missing: Vec<&str> = estop
+        .info
+        .states
+        .iter()
+        .filter(|(s, _)| {
+            ![SL_STATE_DELAYOUT, SL_STATE_ERRORDELAY].contains(s) && !estop_seen.contains(s)
+        })
+        .map(|(_, n)| *n)
+        .collect();
+    assert!(
+        missing.is_empty(),
+        "ESTOP states never reached in the group: {missing:?}"
+    );
 }
 
 #[test]
