@@ -38,20 +38,41 @@ const UNREACHED: &[(&str, &str, &str)] = &[
     ("TON2", "RESET", NO_INPUT_ERROR),
     ("TOF", "ERROR", NO_INPUT_ERROR),
     ("TOF", "RESET", NO_INPUT_ERROR),
-    // SF_PSE exists in PLCopen v2.01 only: init refuses the v1.0 profile, so its v1.0
-    // codes (listed with the restart-interlock family's) cannot appear.
-    ("SF_PSE", "after activation: waiting for the safety input TRUE", NO_V1_PROFILE),
-    ("SF_PSE", "after activation: safety input TRUE, waiting for a rising edge of Reset", NO_V1_PROFILE),
-    ("SF_PSE", "safety demand: waiting for the safety input TRUE", NO_V1_PROFILE),
-    ("SF_PSE", "after a safety demand: safety input TRUE, waiting for S_AutoReset or a rising edge of Reset", NO_V1_PROFILE),
-    ("SF_PSE", "static Reset while waiting for the reset after a safety demand", NO_V1_PROFILE),
+    // The explored LIMIT configurations take both limits from the parameters (wInputActive
+    // 0x0100, the first mask init accepts): Min > Max is then refused by init (SL_E_CONFIG,
+    // docs/semantics.md L2), and ERROR (diag 1, limits crossing through an input) needs
+    // the MinValue or MaxValue input active.
+    ("LIMIT", "ERROR", LIMITS_FROM_PARAMETERS),
+    ("LIMIT", "RESET", LIMITS_FROM_PARAMETERS),
     // Refused parameters are caught by init (SL_E_CONFIG): the explored configurations are
     // valid ones.
-    ("SF_ResetButton", "TrailingMinimum > TrailingMaximum or TrailingMinimum < 100 ms", "parameters that init accepts never give it"),
-    ("SF_TestableSafetySensor", "TestTime above 150 ms", "parameters that init accepts never give it"),
+    (
+        "SF_ResetButton",
+        "TrailingMinimum > TrailingMaximum or TrailingMinimum < 100 ms",
+        "parameters that init accepts never give it",
+    ),
+    (
+        "SF_TestableSafetySensor",
+        "TestTime above 150 ms",
+        "parameters that init accepts never give it",
+    ),
 ];
 
-const NO_V1_PROFILE: &str = "a v1.0 DiagCode of a block without the v1.0 profile";
+const LIMITS_FROM_PARAMETERS: &str =
+    "limits from the parameters only: Min > Max is refused by init, ERROR needs a limit input";
+
+/// An `UNREACHED` row's block: the registry's name, or an analog block's base name for
+/// every integer variant ("LIMIT" for LIMIT_INT … LIMIT_UDINT).
+fn names_block(row: &str, name: &str) -> bool {
+    row == name
+        || name
+            .strip_prefix(row)
+            .is_some_and(|v| ["_INT", "_UINT", "_DINT", "_UDINT"].contains(&v))
+}
+
+/// The PLCopen blocks that exist in v2.01 only: their init refuses `nDiagProfile` 1, so
+/// none of their v1.0 codes can appear (and the explorer finds no configuration with it).
+const NO_V1_PROFILE: &[&str] = &["SF_PSE", "SF_ResetButton"];
 
 /// Why ERROR (and RESET after it) is out of the inputs' reach: the block has no input error
 /// (no discrepancy time, no feedback); only the library's own checks enter ERROR (a
@@ -116,6 +137,7 @@ fn run_block(ty: &'static BlockType) -> (Figures, Vec<Violation>, Vec<String>) {
     // (profile, state value) reached: a PLCopen block's v1.0 DiagCodes count only when
     // reached with nDiagProfile 1, its v2.01 codes only with profile 0.
     let mut seen = std::collections::BTreeSet::new();
+    let mut profiles = std::collections::BTreeSet::new();
     let cfgs = configs(ty);
     if cfgs.is_empty() {
         problems.push(format!(
@@ -129,6 +151,7 @@ fn run_block(ty: &'static BlockType) -> (Figures, Vec<Violation>, Vec<String>) {
             .iter()
             .find(|(f, _)| f.name == "nDiagProfile")
             .map_or(0, |(_, v)| *v);
+        profiles.insert(profile);
         match explore(ty, &cfg, None) {
             Ok((fig, v)) => {
                 total.configs += 1;
@@ -157,11 +180,21 @@ fn run_block(ty: &'static BlockType) -> (Figures, Vec<Violation>, Vec<String>) {
         }
     }
     if violations.is_empty() {
-        let states = explorer::invariants::state_list(ty);
+        let v1_explored = profiles.contains(&1);
+        if family(ty.info.tag) == Family::PlcOpen
+            && v1_explored == NO_V1_PROFILE.contains(&ty.info.name)
+        {
+            problems.push(format!(
+                "{}: explored with the v1.0 profile: {v1_explored}, NO_V1_PROFILE disagrees",
+                ty.info.name
+            ));
+        }
+        let mut states = explorer::invariants::state_list(ty);
+        states.retain(|(p, ..)| *p == 0 || v1_explored);
         let is_listed = |n: &str| {
             UNREACHED
                 .iter()
-                .any(|(b, s, _)| *b == ty.info.name && *s == n)
+                .any(|(b, s, _)| names_block(b, ty.info.name) && *s == n)
         };
         for (p, v, n) in &states {
             let (v, n) = (*v, n.as_str());
