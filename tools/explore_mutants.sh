@@ -14,10 +14,13 @@ mkdir -p "$scratch"
 for patch in project/tests/explorer/mutants/*.patch; do
     name=$(basename "$patch" .patch)
     # The block the patch breaks: the first word of its name, in the registry's spelling.
+    # The test that explores it: the group scenario for the group's patches.
+    test=explore_boolean
     case "$name" in
         estop-*) block=ESTOP ;;
         sf-emergencystop-*) block=SF_EmergencyStop ;;
         twohand-*) block=TWOHAND ;;
+        group-*) block=group test=explore_group ;;
         *) echo "FAIL: $name: no block known for this patch"; exit 1 ;;
     esac
     rm -rf "$scratch/src"
@@ -31,7 +34,7 @@ for patch in project/tests/explorer/mutants/*.patch; do
     log=$scratch/$name.log
     if (cd "$scratch/src" && CARGO_TARGET_DIR=../target SAFELOGIC_EXPLORE_ONLY=$block \
         SAFELOGIC_EXPLORE_EXPECT_VIOLATION=1 cargo test --release -q -p safelogic-project \
-        --test explore explore_boolean -- --nocapture) >"$log" 2>&1; then
+        --test explore "$test" -- --nocapture) >"$log" 2>&1; then
         grep -E '^VIOLATION' "$log"
         grep -E 'expectations: .* passed, 0 failed' "$log" | sed 's/^/    replayed: /'
     else

@@ -12,7 +12,8 @@
 mod explorer;
 
 use explorer::{configs::configs, explore, scenario, Figures, Violation};
-use safelogic::registry::{family, BlockType, Family, BLOCKS};
+use safelogic::registry::{block_type_named, family, BlockType, Family, BLOCKS};
+use safelogic::{SL_STATE_DELAYOUT, SL_STATE_ERRORDELAY};
 use std::path::PathBuf;
 use std::process::Command;
 
@@ -37,20 +38,41 @@ const UNREACHED: &[(&str, &str, &str)] = &[
     ("TON2", "RESET", NO_INPUT_ERROR),
     ("TOF", "ERROR", NO_INPUT_ERROR),
     ("TOF", "RESET", NO_INPUT_ERROR),
-    // SF_PSE exists in PLCopen v2.01 only: init refuses the v1.0 profile, so its v1.0
-    // codes (listed with the restart-interlock family's) cannot appear.
-    ("SF_PSE", "after activation: waiting for the safety input TRUE", NO_V1_PROFILE),
-    ("SF_PSE", "after activation: safety input TRUE, waiting for a rising edge of Reset", NO_V1_PROFILE),
-    ("SF_PSE", "safety demand: waiting for the safety input TRUE", NO_V1_PROFILE),
-    ("SF_PSE", "after a safety demand: safety input TRUE, waiting for S_AutoReset or a rising edge of Reset", NO_V1_PROFILE),
-    ("SF_PSE", "static Reset while waiting for the reset after a safety demand", NO_V1_PROFILE),
+    // The explored LIMIT configurations take both limits from the parameters (wInputActive
+    // 0x0100, the first mask init accepts): Min > Max is then refused by init (SL_E_CONFIG,
+    // docs/semantics.md L2), and ERROR (diag 1, limits crossing through an input) needs
+    // the MinValue or MaxValue input active.
+    ("LIMIT", "ERROR", LIMITS_FROM_PARAMETERS),
+    ("LIMIT", "RESET", LIMITS_FROM_PARAMETERS),
     // Refused parameters are caught by init (SL_E_CONFIG): the explored configurations are
     // valid ones.
-    ("SF_ResetButton", "TrailingMinimum > TrailingMaximum or TrailingMinimum < 100 ms", "parameters that init accepts never give it"),
-    ("SF_TestableSafetySensor", "TestTime above 150 ms", "parameters that init accepts never give it"),
+    (
+        "SF_ResetButton",
+        "TrailingMinimum > TrailingMaximum or TrailingMinimum < 100 ms",
+        "parameters that init accepts never give it",
+    ),
+    (
+        "SF_TestableSafetySensor",
+        "TestTime above 150 ms",
+        "parameters that init accepts never give it",
+    ),
 ];
 
-const NO_V1_PROFILE: &str = "a v1.0 DiagCode of a block without the v1.0 profile";
+const LIMITS_FROM_PARAMETERS: &str =
+    "limits from the parameters only: Min > Max is refused by init, ERROR needs a limit input";
+
+/// An `UNREACHED` row's block: the registry's name, or an analog block's base name for
+/// every integer variant ("LIMIT" for LIMIT_INT … LIMIT_UDINT).
+fn names_block(row: &str, name: &str) -> bool {
+    row == name
+        || name
+            .strip_prefix(row)
+            .is_some_and(|v| ["_INT", "_UINT", "_DINT", "_UDINT"].contains(&v))
+}
+
+/// The PLCopen blocks that exist in v2.01 only: their init refuses `nDiagProfile` 1, so
+/// none of their v1.0 codes can appear (and the explorer finds no configuration with it).
+const NO_V1_PROFILE: &[&str] = &["SF_PSE", "SF_ResetButton"];
 
 /// Why ERROR (and RESET after it) is out of the inputs' reach: the block has no input error
 /// (no discrepancy time, no feedback); only the library's own checks enter ERROR (a
@@ -77,12 +99,16 @@ fn boolean_scope(b: &BlockType) -> bool {
 /// whether every expectation (the offending state and outputs) was met.
 fn replay(v: &Violation) -> bool {
     let (proj, scen) = scenario::files(v);
+    replay_files(&v.block.to_lowercase(), &proj, &scen)
+}
+
+fn replay_files(name: &str, proj: &str, scen: &str) -> bool {
     let dir = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("explore");
     std::fs::create_dir_all(&dir).unwrap();
-    let p = dir.join(format!("{}.toml", v.block.to_lowercase()));
-    let s = dir.join(format!("{}.scenario.toml", v.block.to_lowercase()));
-    std::fs::write(&p, &proj).unwrap();
-    std::fs::write(&s, &scen).unwrap();
+    let p = dir.join(format!("{name}.toml"));
+    let s = dir.join(format!("{name}.scenario.toml"));
+    std::fs::write(&p, proj).unwrap();
+    std::fs::write(&s, scen).unwrap();
     println!(
         "--- {} ---\n{proj}--- {} ---\n{scen}",
         p.display(),
@@ -108,7 +134,10 @@ fn run_block(ty: &'static BlockType) -> (Figures, Vec<Violation>, Vec<String>) {
     let mut total = Figures::default();
     let mut violations = Vec::new();
     let mut problems = Vec::new();
+    // (profile, state value) reached: a PLCopen block's v1.0 DiagCodes count only when
+    // reached with nDiagProfile 1, its v2.01 codes only with profile 0.
     let mut seen = std::collections::BTreeSet::new();
+    let mut profiles = std::collections::BTreeSet::new();
     let cfgs = configs(ty);
     if cfgs.is_empty() {
         problems.push(format!(
@@ -117,6 +146,12 @@ fn run_block(ty: &'static BlockType) -> (Figures, Vec<Violation>, Vec<String>) {
         ));
     }
     for cfg in cfgs {
+        let profile = cfg
+            .params
+            .iter()
+            .find(|(f, _)| f.name == "nDiagProfile")
+            .map_or(0, |(_, v)| *v);
+        profiles.insert(profile);
         match explore(ty, &cfg, None) {
             Ok((fig, v)) => {
                 total.configs += 1;
@@ -124,7 +159,7 @@ fn run_block(ty: &'static BlockType) -> (Figures, Vec<Violation>, Vec<String>) {
                 total.transitions += fig.transitions;
                 total.depth = total.depth.max(fig.depth);
                 total.secs += fig.secs;
-                seen.extend(fig.state_values.iter().copied());
+                seen.extend(fig.state_values.iter().map(|v| (profile, *v)));
                 if std::env::var_os("SAFELOGIC_EXPLORE_VERBOSE").is_some() {
                     println!(
                         "  {} {}: {} states, {} transitions, depth {}, {:.2} s, states {:X?}",
@@ -145,26 +180,37 @@ fn run_block(ty: &'static BlockType) -> (Figures, Vec<Violation>, Vec<String>) {
         }
     }
     if violations.is_empty() {
-        let states = explorer::invariants::state_list(ty);
+        let v1_explored = profiles.contains(&1);
+        if family(ty.info.tag) == Family::PlcOpen
+            && v1_explored == NO_V1_PROFILE.contains(&ty.info.name)
+        {
+            problems.push(format!(
+                "{}: explored with the v1.0 profile: {v1_explored}, NO_V1_PROFILE disagrees",
+                ty.info.name
+            ));
+        }
+        let mut states = explorer::invariants::state_list(ty);
+        states.retain(|(p, ..)| *p == 0 || v1_explored);
         let is_listed = |n: &str| {
             UNREACHED
                 .iter()
-                .any(|(b, s, _)| *b == ty.info.name && *s == n)
+                .any(|(b, s, _)| names_block(b, ty.info.name) && *s == n)
         };
-        for (v, n) in &states {
+        for (p, v, n) in &states {
             let (v, n) = (*v, n.as_str());
             let listed = is_listed(n);
             // Both ways: a listed state reached under every code it has (a PLCopen state
-            // has its v2.01 and its v1.0 code) is a stale entry.
+            // has its v2.01 and its v1.0 code, each in its own profile) is a stale entry.
             let stale = listed
                 && states
                     .iter()
-                    .filter(|(_, n2)| n2 == n)
-                    .all(|(v2, _)| seen.contains(v2));
-            match (seen.contains(&v), listed) {
-                (false, false) => {
-                    problems.push(format!("{}: state {n} ({v}) never reached", ty.info.name))
-                }
+                    .filter(|(_, _, n2)| n2 == n)
+                    .all(|(p2, v2, _)| seen.contains(&(*p2, *v2)));
+            match (seen.contains(&(*p, v)), listed) {
+                (false, false) => problems.push(format!(
+                    "{}: state {n} ({v:#X}, profile {p}) never reached",
+                    ty.info.name
+                )),
                 (true, true) if stale => problems.push(format!(
                     "{}: state {n} ({v}) is listed in UNREACHED but reached",
                     ty.info.name
@@ -230,6 +276,63 @@ fn run(scope: impl Fn(&BlockType) -> bool) {
 #[test]
 fn explore_boolean_plcopen_and_connection_shutdown_blocks() {
     run(bounded_scope);
+}
+
+/// The group scenario (explorer/group.rs): ESTOP → AND in a group with connections
+/// assigned, every group and member input, every group state but the customizing ones.
+#[test]
+fn explore_group() {
+    let expect_violation = std::env::var_os("SAFELOGIC_EXPLORE_EXPECT_VIOLATION").is_some();
+    let (fig, group_seen, estop_seen, v) = explorer::group::explore();
+    println!(
+        "{:<26} {:>2} configs {:>8} states {:>11} transitions depth {:>3} {:>8.2} s",
+        "group (ESTOP -> AND)", fig.configs, fig.states, fig.transitions, fig.depth, fig.secs
+    );
+    if expect_violation {
+        let v = v.expect("the explorer caught nothing in the group");
+        println!("VIOLATION group: {} after {} steps", v.what, v.trace.len());
+        let (proj, scen) = explorer::group::files(&v);
+        assert!(
+            replay_files("group", &proj, &scen),
+            "the trace did not replay to the same states and outputs in safelogic sim"
+        );
+        return;
+    }
+    if let Some(v) = &v {
+        let (proj, scen) = explorer::group::files(v);
+        replay_files("group", &proj, &scen);
+        panic!(
+            "VIOLATION group: {} after {} steps (trace above)",
+            v.what,
+            v.trace.len()
+        );
+    }
+    let missing: Vec<&str> = explorer::group::GROUP_STATES
+        .iter()
+        .filter(|(s, _)| !group_seen.contains(s))
+        .map(|(_, n)| *n)
+        .collect();
+    assert!(
+        missing.is_empty(),
+        "group states never reached: {missing:?}"
+    );
+    // ESTOP's own exploration reaches every state; here its delayed output is off
+    // (tEStopDelOutDelay 0), so DELAYOUT and ERRORDELAY are not entered, every other state
+    // must be.
+    let estop = block_type_named("ESTOP").unwrap();
+    let missing: Vec<&str> = estop
+        .info
+        .states
+        .iter()
+        .filter(|(s, _)| {
+            ![SL_STATE_DELAYOUT, SL_STATE_ERRORDELAY].contains(s) && !estop_seen.contains(s)
+        })
+        .map(|(_, n)| *n)
+        .collect();
+    assert!(
+        missing.is_empty(),
+        "ESTOP states never reached in the group: {missing:?}"
+    );
 }
 
 #[test]

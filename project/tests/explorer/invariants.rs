@@ -37,19 +37,23 @@ pub fn state_value(ty: &BlockType, b: &Instance) -> u16 {
         .map_or(0, |f| b.get(f) as u16)
 }
 
-/// The manual's state values: `nState`'s list, or a PLCopen block's DiagCodes.
-pub fn state_list(ty: &BlockType) -> Vec<(u16, String)> {
+/// The manual's state values with the profile they belong to: `nState`'s list (profile
+/// 0), or a PLCopen block's DiagCodes: its `TEXTS` table lists every state's v2.01 code
+/// (profile 0), then every state's v1.0 code (profile 1, `nDiagProfile` = 1).
+pub fn state_list(ty: &BlockType) -> Vec<(i64, u16, String)> {
     if family(ty.info.tag) == Family::PlcOpen {
+        let half = ty.info.diag_values.len() / 2;
         ty.info
             .diag_values
             .iter()
-            .map(|(v, n)| (*v, n.to_string()))
+            .enumerate()
+            .map(|(i, (v, n))| (i64::from(i >= half), *v, n.to_string()))
             .collect()
     } else {
         ty.info
             .states
             .iter()
-            .map(|(v, n)| (u16::from(*v), n.trim_end_matches('\0').to_string()))
+            .map(|(v, n)| (0, u16::from(*v), n.trim_end_matches('\0').to_string()))
             .collect()
     }
 }
@@ -168,9 +172,20 @@ pub fn check(tr: &Transition) -> Option<String> {
             SL_SF_DIAG_CONFIG,
         ]
         .contains(&st);
-    if !library && !state_list(ty).iter().any(|(s, _)| *s == st) {
+    // The configuration's profile: a v1.0 code under v2.01 (or the reverse) is foreign.
+    let profile = tr
+        .cfg
+        .params
+        .iter()
+        .find(|(f, _)| f.name == "nDiagProfile")
+        .map_or(0, |(_, v)| *v);
+    if !library
+        && !state_list(ty)
+            .iter()
+            .any(|(p, s, _)| *p == profile && *s == st)
+    {
         return Some(format!(
-            "state value 0x{st:04X} is not one of the manual's states"
+            "state value 0x{st:04X} is not one of the manual's states (profile {profile})"
         ));
     }
     let outs = bool_outputs(ty, after);
@@ -301,8 +316,9 @@ fn off_state_exception(_block: &str, _output: &str) -> bool {
 
 /// The blocks whose errors are the static-Reset errors alone (C001 / C011), left only
 /// when Reset is released (PLCopen SF_EmergencyStop, SF_ESPE, SF_PSE): the other blocks'
-/// errors are also left when their inputs are released (discrepancy, two-hand (semantics
-/// QH4), guard).
+/// errors are also left when their inputs are released (discrepancy: SF_Equivalent and
+/// SF_Antivalent leave C010/C020/C030 to 8801 with both channels inactive, semantics PP1;
+/// two-hand, QH4; guard, QG1).
 fn restart_interlock(block: &str) -> bool {
     matches!(block, "SF_EmergencyStop" | "SF_ESPE" | "SF_PSE")
 }

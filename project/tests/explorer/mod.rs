@@ -6,6 +6,7 @@
 //! scenario writer in `scenario.rs`.
 
 pub mod configs;
+pub mod group;
 pub mod invariants;
 pub mod scenario;
 
@@ -136,8 +137,8 @@ pub struct State {
 
 /// The clock of copy A before a step: 2 ms before the 32-bit wrap, so every step of 2 ms
 /// or more crosses it. Copy B runs the same transition `SHIFT` later, far from the wrap.
-const NOW_A: u32 = u32::MAX - 1;
-const SHIFT: u32 = 1 << 30;
+pub const NOW_A: u32 = u32::MAX - 1;
+pub const SHIFT: u32 = 1 << 30;
 
 impl State {
     /// The concrete struct at clock `now`.
