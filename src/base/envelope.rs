@@ -55,6 +55,17 @@ pub trait Block: Instance + crate::base::block::Registered {
     fn params_intact(&self) -> bool {
         self.latched_crc() == self.header().wParamCrc
     }
+    /// Where an output switches on (`switching_on`), the latched parameters are verified
+    /// (docs/semantics.md C3): when they no longer match their CRC the block enters ERROR
+    /// with `SL_DIAG_CORRUPT` and this returns `true` (the caller returns `Status::Corrupt`).
+    #[inline(always)]
+    fn corrupt_at_switch_on(&mut self, switching_on: bool) -> bool {
+        let corrupt = switching_on && !self.params_intact();
+        if corrupt {
+            self.header_mut().enter_error(SL_DIAG_CORRUPT);
+        }
+        corrupt
+    }
 
     /// Reads the input bytes, updates the block's edge memories, and tells whether a byte
     /// was an invalid BOOL.

@@ -14,7 +14,7 @@
 //! range (`SL_SF_DIAG_*`, docs/semantics.md PO1–PO10).
 
 use super::bools::{self, Edge};
-use super::header::{param_crc, F_RESTART_PREV, F_TIME_VALID, SL_PRIVATE_HEADER};
+use super::header::{crc_words, param_crc, F_RESTART_PREV, F_TIME_VALID, SL_PRIVATE_HEADER};
 use super::layout::Zeroed;
 use super::reason::{when, Refusal, Rule, RuleDef, Unit};
 use super::time;
@@ -489,7 +489,7 @@ fn consts_crc<B: SfBlock>(p: &SL_SF_PRIVATE) -> u16 {
         p.stHeader.nActive,
         0,
         0,
-        &[a as u16, (a >> 16) as u16, b as u16, (b >> 16) as u16],
+        &crc_words![u32 a, u32 b],
     )
 }
 

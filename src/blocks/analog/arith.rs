@@ -441,8 +441,7 @@ impl<B: ArithFb + crate::base::envelope::Instance + crate::base::block::Register
         // Entering RUN is where the output starts to carry a value: verify the latched
         // parameters first (C3).
         let entering = self.private().stHeader.nState != SL_STATE_RUN;
-        if entering && inp.result.is_ok() && !self.params_intact() {
-            self.private_mut().stHeader.enter_error(SL_DIAG_CORRUPT);
+        if self.corrupt_at_switch_on(entering && inp.result.is_ok()) {
             return Status::Corrupt;
         }
         let p = self.private_mut();

@@ -14,7 +14,7 @@
 use super::{magic, Analog};
 use crate::base::block::{Private, Registered};
 use crate::base::envelope::Block;
-use crate::base::header::param_crc;
+use crate::base::header::{crc_words, param_crc};
 use crate::base::reason::{when, Rule, RuleDef, Unit};
 use crate::base::time;
 use crate::base::types::*;
@@ -228,13 +228,7 @@ impl<T: Analog, const P1: usize, const P2: usize> Block for FB_COMPARE<T, P1, P2
             0,
             0,
             p.wArchitecture,
-            &[
-                p.tTolerance as u16,
-                (p.tTolerance >> 16) as u16,
-                p.dwDeviation as u16,
-                (p.dwDeviation >> 16) as u16,
-                p.wActive,
-            ],
+            &crc_words![u32 p.tTolerance, u32 p.dwDeviation, u16 p.wActive],
         )
     }
     #[inline(always)]
@@ -274,8 +268,7 @@ impl<T: Analog, const P1: usize, const P2: usize> Block for FB_COMPARE<T, P1, P2
         let state = self.private().stHeader.nState;
         if let Some(x) = inp.x {
             // IsValid switching on (from SAFE) is where the latched parameters are verified (C3).
-            if state == SL_STATE_SAFE && !self.params_intact() {
-                self.private_mut().stHeader.enter_error(SL_DIAG_CORRUPT);
+            if self.corrupt_at_switch_on(state == SL_STATE_SAFE) {
                 return Status::Corrupt;
             }
             let p = self.private_mut();

@@ -15,7 +15,7 @@ use super::{diag_message, magic, Analog, SL_DIAG_VALUE_OVERFLOW, SL_DIAG_VALUE_U
 use crate::base::block::{Private, Registered};
 use crate::base::bools;
 use crate::base::envelope::Block;
-use crate::base::header::param_crc;
+use crate::base::header::{crc_words, param_crc};
 use crate::base::reason::{when, Rule, RuleDef, Unit};
 use crate::base::types::*;
 
@@ -200,12 +200,7 @@ impl<T: Analog, const P1: usize, const P2: usize> Block for FB_COUNTER<T, P1, P2
             p.stHeader.nActive,
             0,
             0,
-            &[
-                preset as u16,
-                (preset >> 16) as u16,
-                limit as u16,
-                (limit >> 16) as u16,
-            ],
+            &crc_words![u32 preset, u32 limit],
         )
     }
     /// Inactive inputs read FALSE; an invalid byte reads FALSE and makes no edge (ABI-2
@@ -238,8 +233,7 @@ impl<T: Analog, const P1: usize, const P2: usize> Block for FB_COUNTER<T, P1, P2
     fn start(&mut self, inp: &CounterIn, _now: u32) {
         // Entering RUN is where the outputs start to carry values: verify the latched
         // parameters first (C3).
-        if !self.params_intact() {
-            self.private_mut().stHeader.enter_error(SL_DIAG_CORRUPT);
+        if self.corrupt_at_switch_on(true) {
             return;
         }
         let v = self.start_value(inp);

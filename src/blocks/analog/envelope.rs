@@ -17,7 +17,7 @@ use super::{diag_message, magic, Analog};
 use crate::base::block::{Private, Registered};
 use crate::base::bools;
 use crate::base::envelope::Block;
-use crate::base::header::param_crc;
+use crate::base::header::{crc_words, param_crc};
 use crate::base::reason::{when, Rule, RuleDef, Unit};
 use crate::base::time;
 use crate::base::types::*;
@@ -276,16 +276,7 @@ impl<T: Analog, const P1: usize> Block for FB_ENVELOPE<T, P1> {
             p.wActive as u8,
             (p.wActive >> 8) as u8,
             0,
-            &[
-                a as u16,
-                (a >> 16) as u16,
-                b as u16,
-                (b >> 16) as u16,
-                c as u16,
-                (c >> 16) as u16,
-                d as u16,
-                (d >> 16) as u16,
-            ],
+            &crc_words![u32 a, u32 b, u32 c, u32 d],
         )
     }
     /// An invalid SafeFunction byte reads FALSE, the request for the monitored stop (ABI-2
@@ -328,8 +319,7 @@ impl<T: Analog, const P1: usize> Block for FB_ENVELOPE<T, P1> {
             return Status::Ok;
         }
         // SafeFunctionOut switching on is where the latched parameters are verified (C3).
-        if output_on(next) && !output_on(state) && !self.params_intact() {
-            self.private_mut().stHeader.enter_error(SL_DIAG_CORRUPT);
+        if self.corrupt_at_switch_on(output_on(next) && !output_on(state)) {
             return Status::Corrupt;
         }
         self.private_mut().stHeader.nState = next;

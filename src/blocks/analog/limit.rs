@@ -11,11 +11,11 @@
 
 #![allow(non_camel_case_types)] // the ABI's names (FB_LIMIT_INT …)
 
-use super::{diag_message, magic, Analog};
+use super::{diag_message, limit_outputs, magic, Analog, LIMIT_ABOVE, LIMIT_BELOW};
 use crate::base::block::{Private, Registered};
 use crate::base::envelope::Block;
-use crate::base::header::param_crc;
 use crate::base::header::F_CFG_INVALID;
+use crate::base::header::{crc_words, param_crc};
 use crate::base::reason::{check, when, Rule, RuleDef, Unit};
 use crate::base::types::*;
 
@@ -140,10 +140,6 @@ pub struct LimitIn {
     max: i128,
 }
 
-/// `wAux` in SAFE: AnalogIn below the minimum / above the maximum.
-const BELOW: u16 = 1;
-const ABOVE: u16 = 2;
-
 /// The value of a `T` stored as its pattern.
 fn wide<T: Analog>(bits: u32) -> i128 {
     T::from_bits(bits).wide()
@@ -208,13 +204,7 @@ impl<T: Analog, const P1: usize> Block for FB_LIMIT<T, P1> {
             0,
             0,
             0,
-            &[
-                p.wActive,
-                min as u16,
-                (min >> 16) as u16,
-                max as u16,
-                (max >> 16) as u16,
-            ],
+            &crc_words![u16 p.wActive, u32 min, u32 max],
         )
     }
     #[inline(always)]
@@ -249,8 +239,7 @@ impl<T: Analog, const P1: usize> Block for FB_LIMIT<T, P1> {
         }
         let in_limit = inp.min <= inp.value && inp.value <= inp.max;
         // InLimit switching on is where the latched parameters are verified (C3).
-        if in_limit && self.private().stHeader.nState != SL_STATE_RUN && !self.params_intact() {
-            self.private_mut().stHeader.enter_error(SL_DIAG_CORRUPT);
+        if self.corrupt_at_switch_on(in_limit && self.private().stHeader.nState != SL_STATE_RUN) {
             return Status::Corrupt;
         }
         let h = &mut self.private_mut().stHeader;
@@ -259,7 +248,11 @@ impl<T: Analog, const P1: usize> Block for FB_LIMIT<T, P1> {
             h.wAux = 0;
         } else {
             h.nState = SL_STATE_SAFE;
-            h.wAux = if inp.value < inp.min { BELOW } else { ABOVE };
+            h.wAux = if inp.value < inp.min {
+                LIMIT_BELOW
+            } else {
+                LIMIT_ABOVE
+            };
         }
         Status::Ok
     }
@@ -271,16 +264,7 @@ impl<T: Analog, const P1: usize> Block for FB_LIMIT<T, P1> {
     fn write_outputs(&mut self) {
         let p = *self.private();
         let h = p.stHeader;
-        let (error, run, safe) = match h.nState {
-            SL_STATE_ERROR => (true, false, false),
-            SL_STATE_RUN => (false, true, false),
-            SL_STATE_SAFE => (false, false, true),
-            _ => (false, false, false),
-        };
-        self.bError = u8::from(error);
-        self.bInLimit = u8::from(run);
-        self.bBelowMin = u8::from(safe && h.wAux == BELOW);
-        self.bAboveMax = u8::from(safe && h.wAux == ABOVE);
+        [self.bError, self.bInLimit, self.bBelowMin, self.bAboveMax] = limit_outputs(&h);
         self.nState = h.nState;
         self.nDiag = h.wDiag;
         (self.nDiagTextId, self.dwDiagPar2, self.dwDiagPar3) = diag_message(

@@ -15,7 +15,7 @@
 use super::{magic, Analog};
 use crate::base::block::{Private, Registered};
 use crate::base::envelope::Block;
-use crate::base::header::{param_crc, SL_PRIVATE_HEADER};
+use crate::base::header::{param_crc, put_crc_words, SL_PRIVATE_HEADER};
 use crate::base::reason::{when, Hit, Rule, RuleDef, Unit};
 use crate::base::types::*;
 
@@ -448,11 +448,7 @@ impl<T: Analog, const P1: usize, const PR: usize> Block for FB_LOADSENSING<T, P1
             .aRow
             .iter()
             .flat_map(|r| [r.nX, r.nY1, r.nY2, r.nWY1, r.nWY2]);
-        for (w, v) in words[3..].chunks_exact_mut(2).zip(values) {
-            let bits = v.to_bits();
-            w[0] = bits as u16;
-            w[1] = (bits >> 16) as u16;
-        }
+        put_crc_words(&mut words[3..], values.map(|v| v.to_bits()));
         param_crc(Self::MAGIC, 0, 0, p.dwOptions as u16, &words)
     }
     /// An active Inactive byte that is not 0 or 1 reads TRUE (INACTIVE, Valid 0: ABI-2
@@ -484,8 +480,7 @@ impl<T: Analog, const P1: usize, const PR: usize> Block for FB_LOADSENSING<T, P1
             evaluate(&p.aRow[..count], outside, inp.x, inp.y)
         };
         // Valid switching on is where the latched parameters are verified (C3).
-        if valid(next) && !valid(p.stHeader.nState) && !self.params_intact() {
-            self.private_mut().stHeader.enter_error(SL_DIAG_CORRUPT);
+        if self.corrupt_at_switch_on(valid(next) && !valid(p.stHeader.nState)) {
             return Status::Corrupt;
         }
         self.private_mut().stHeader.nState = next;

@@ -18,7 +18,7 @@ pub mod window;
 use crate::base::block::{Dir, Field, FieldType};
 use crate::base::header::SL_PRIVATE_HEADER;
 use crate::base::layout::Zeroed;
-use crate::base::types::{LIBRARY_DIAG_BITS, SL_STATE_ERROR};
+use crate::base::types::{LIBRARY_DIAG_BITS, SL_STATE_ERROR, SL_STATE_RUN, SL_STATE_SAFE};
 
 /// An integer type of the analog variants (ABI-2 §10.3).
 pub trait Analog:
@@ -73,6 +73,29 @@ pub fn in_range<T: Analog>(v: i128) -> Result<T, u16> {
     } else {
         Ok(T::narrow(v))
     }
+}
+
+/// `wAux` of a limit monitor (LIMIT, SLP) in SAFE: the value is below the lower limit.
+pub(crate) const LIMIT_BELOW: u16 = 1;
+/// `wAux` of a limit monitor in SAFE: the value is above the upper limit.
+pub(crate) const LIMIT_ABOVE: u16 = 2;
+
+/// The BOOL outputs of a limit monitor (LIMIT, SLP) from its header: Error (ERROR), in
+/// limit (RUN), BelowMin and AboveMax (SAFE, by `wAux`).
+#[inline(always)]
+pub fn limit_outputs(h: &SL_PRIVATE_HEADER) -> [u8; 4] {
+    let (error, run, safe) = match h.nState {
+        SL_STATE_ERROR => (true, false, false),
+        SL_STATE_RUN => (false, true, false),
+        SL_STATE_SAFE => (false, false, true),
+        _ => (false, false, false),
+    };
+    [
+        u8::from(error),
+        u8::from(run),
+        u8::from(safe && h.wAux == LIMIT_BELOW),
+        u8::from(safe && h.wAux == LIMIT_ABOVE),
+    ]
 }
 
 /// Magic of the private header of an analog block: its type tag in the analog family's

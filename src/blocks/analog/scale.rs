@@ -19,7 +19,7 @@ use super::{diag_message, in_range, magic, Analog};
 use super::{SL_DIAG_VALUE_OVERFLOW, SL_DIAG_VALUE_UNDERFLOW};
 use crate::base::block::{Private, Registered};
 use crate::base::envelope::Block;
-use crate::base::header::param_crc;
+use crate::base::header::{crc_words, param_crc};
 use crate::base::reason::{when, Rule, RuleDef, Unit};
 use crate::base::time;
 use crate::base::types::*;
@@ -317,31 +317,14 @@ impl<T: Analog, T32: Analog, const P1: usize, const P2: usize> Block for FB_SCAL
     fn latched_crc(&self) -> u16 {
         let p = self.private();
         let [num, den, off] = p.adwFactor;
-        let words = |v: u32| [v as u16, (v >> 16) as u16];
-        let [w0, w1] = words(p.tWatchdog);
-        let [n0, n1] = words(num);
-        let [d0, d1] = words(den);
-        let [o0, o1] = words(off);
-        let [x0, x1] = words(p.dwOptions);
         param_crc(
             Self::MAGIC,
             0,
             0,
             0,
-            &[
-                w0,
-                w1,
-                n0,
-                n1,
-                d0,
-                d1,
-                o0,
-                o1,
-                x0,
-                x1,
-                p.wRounding,
-                p.wActive,
-                p.wNegated,
+            &crc_words![
+                u32 p.tWatchdog, u32 num, u32 den, u32 off, u32 p.dwOptions,
+                u16 p.wRounding, u16 p.wActive, u16 p.wNegated
             ],
         )
     }
@@ -369,8 +352,7 @@ impl<T: Analog, T32: Analog, const P1: usize, const P2: usize> Block for FB_SCAL
         // Entering RUN is where the output starts to carry a value: verify the latched
         // parameters first (C3).
         let entering = self.private().stHeader.nState != SL_STATE_RUN;
-        if entering && inp.result.is_ok() && !self.params_intact() {
-            self.private_mut().stHeader.enter_error(SL_DIAG_CORRUPT);
+        if self.corrupt_at_switch_on(entering && inp.result.is_ok()) {
             return Status::Corrupt;
         }
         let p = self.private_mut();

@@ -17,7 +17,7 @@ use super::{diag_message, in_range, magic, Analog};
 use super::{SL_DIAG_VALUE_OVERFLOW, SL_DIAG_VALUE_UNDERFLOW};
 use crate::base::block::{Private, Registered};
 use crate::base::envelope::Block;
-use crate::base::header::param_crc;
+use crate::base::header::{crc_words, param_crc};
 use crate::base::reason::{when, Rule, RuleDef, Unit};
 use crate::base::time;
 use crate::base::types::*;
@@ -204,13 +204,7 @@ impl<T: Analog, const P1: usize, const P2: usize> Block for FB_SPEED<T, P1, P2> 
             0,
             0,
             0,
-            &[
-                p.tInterval as u16,
-                (p.tInterval >> 16) as u16,
-                p.dwOptions as u16,
-                (p.dwOptions >> 16) as u16,
-                p.wActive,
-            ],
+            &crc_words![u32 p.tInterval, u32 p.dwOptions, u16 p.wActive],
         )
     }
     #[inline(always)]
@@ -221,8 +215,7 @@ impl<T: Analog, const P1: usize, const P2: usize> Block for FB_SPEED<T, P1, P2> 
     fn start(&mut self, position: &T, now: u32) {
         // Entering RUN is where the output starts to carry values: verify the latched
         // parameters first (C3).
-        if !self.params_intact() {
-            self.private_mut().stHeader.enter_error(SL_DIAG_CORRUPT);
+        if self.corrupt_at_switch_on(true) {
             return;
         }
         let p = self.private_mut();

@@ -14,7 +14,7 @@ use super::{magic, Unsigned};
 use crate::base::block::{Private, Registered};
 use crate::base::bools;
 use crate::base::envelope::Block;
-use crate::base::header::param_crc;
+use crate::base::header::{crc_words, param_crc};
 use crate::base::reason::{when, Rule, RuleDef, Unit};
 use crate::base::types::*;
 
@@ -183,14 +183,7 @@ impl<T: Unsigned, const P1: usize, const P2: usize> Block for FB_VIOLATIONCOUNTE
             p.stHeader.nActive,
             p.stHeader.nNegated,
             0,
-            &[
-                a as u16,
-                (a >> 16) as u16,
-                b as u16,
-                (b >> 16) as u16,
-                c as u16,
-                (c >> 16) as u16,
-            ],
+            &crc_words![u32 a, u32 b, u32 c],
         )
     }
     /// An invalid Input byte reads logically FALSE (a violation) whatever its negation; an
@@ -231,8 +224,7 @@ impl<T: Unsigned, const P1: usize, const P2: usize> Block for FB_VIOLATIONCOUNTE
         };
         let ok = next < T::from_bits(p.adwParam[LIMIT]).wide();
         // InputOK switching on is where the latched parameters are verified (C3).
-        if ok && p.stHeader.nState != SL_STATE_RUN && !self.params_intact() {
-            self.private_mut().stHeader.enter_error(SL_DIAG_CORRUPT);
+        if self.corrupt_at_switch_on(ok && p.stHeader.nState != SL_STATE_RUN) {
             return Status::Corrupt;
         }
         let p = self.private_mut();

@@ -187,7 +187,7 @@ macro_rules! window_block {
                 PREV_SLI,
             };
             use $crate::base::envelope::Block;
-            use $crate::base::{bools, header::param_crc};
+            use $crate::base::{bools, header::{crc_words, param_crc}};
             use $crate::base::block::{Private, Registered};
             use $crate::base::types::*;
 
@@ -262,15 +262,7 @@ macro_rules! window_block {
                         0,
                         0,
                         0,
-                        &[
-                            p.wActive,
-                            pos as u16,
-                            (pos >> 16) as u16,
-                            neg as u16,
-                            (neg >> 16) as u16,
-                            o as u16,
-                            (o >> 16) as u16,
-                        ],
+                        &crc_words![u16 p.wActive, u32 pos, u32 neg, u32 o],
                     )
                 }
                 /// SLI reads FALSE when invalid and then makes no edge (ABI-2 §12.7). The
@@ -334,8 +326,7 @@ macro_rules! window_block {
                         }
                     };
                     // SLIActive switches on: verify the latched parameters first (C3).
-                    if next == SL_STATE_RUN && state != SL_STATE_RUN && !self.params_intact() {
-                        self.private_mut().stHeader.enter_error(SL_DIAG_CORRUPT);
+                    if self.corrupt_at_switch_on(next == SL_STATE_RUN && state != SL_STATE_RUN) {
                         return Status::Corrupt;
                     }
                     let q = self.private_mut();

@@ -15,7 +15,7 @@ use crate::base::block::BlockInfo;
 use crate::base::bools;
 use crate::base::edm::Edm;
 use crate::base::envelope::Block;
-use crate::base::header::param_crc;
+use crate::base::header::{crc_words, param_crc};
 use crate::base::reason::{when, Rule, RuleDef, Unit};
 use crate::base::types::*;
 use crate::base::{pair, time};
@@ -398,7 +398,7 @@ impl SL_MUTING_PRIVATE {
             h.nActive,
             h.nNegated,
             h.wOptions,
-            &[a, b, c, d, e, f, max as u16, (max >> 16) as u16],
+            &crc_words![u16 a, u16 b, u16 c, u16 d, u16 e, u16 f, u32 max],
         )
     }
 

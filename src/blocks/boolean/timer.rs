@@ -25,7 +25,7 @@
 //! the host persists with `sl_ton2_get_elapsed` and hands back with
 //! `sl_ton2_restore_elapsed` after power-up.
 
-use crate::base::header::{param_crc, SL_PRIVATE_HEADER};
+use crate::base::header::{crc_words, param_crc, SL_PRIVATE_HEADER};
 use crate::base::types::*;
 
 /// Library extension, FB_TON2 diag bit 12: the restored elapsed time was refused
@@ -315,15 +315,8 @@ pub(crate) fn timer_crc(magic: u16, p: &SL_TIMER_PRIVATE) -> u16 {
         0,
         0,
         0,
-        &[
-            d as u16,
-            (d >> 16) as u16,
-            p.wTimeBase,
-            p.wInputActive,
-            p.wInputNegated,
-            p.wReserved,
-            o as u16,
-            (o >> 16) as u16,
+        &crc_words![
+            u32 d, u16 p.wTimeBase, u16 p.wInputActive, u16 p.wInputNegated, u16 p.wReserved, u32 o
         ],
     )
 }

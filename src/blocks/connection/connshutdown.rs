@@ -259,8 +259,7 @@ impl Block for FB_CONNECTION_SHUTDOWN {
         // RUN exactly while the connection reports its shutdown (semantics CS1); the latched
         // parameters are checked where the output switches on (C3).
         let entering = inp.conn_shutdown && p.stHeader.nState != SL_STATE_RUN;
-        if entering && !self.params_intact() {
-            self.stPrivate.stHeader.enter_error(SL_DIAG_CORRUPT);
+        if self.corrupt_at_switch_on(entering) {
             return Status::Corrupt;
         }
         self.stPrivate.stHeader.nState = if inp.conn_shutdown {

@@ -327,8 +327,7 @@ impl Block for FB_ADVPOSMON {
             0
         };
         // Active switching on is where the latched parameters are verified (C3).
-        if aux == ACTIVE && h.wAux != ACTIVE && !self.params_intact() {
-            self.private_mut().stHeader.enter_error(SL_DIAG_CORRUPT);
+        if self.corrupt_at_switch_on(aux == ACTIVE && h.wAux != ACTIVE) {
             return Status::Corrupt;
         }
         let h = &mut self.private_mut().stHeader;

@@ -23,7 +23,7 @@
 use crate::base::block::{Private, Registered};
 use crate::base::bools::{self, edge, Edge};
 use crate::base::envelope::Block;
-use crate::base::header::{param_crc, F_CFG_INVALID, F_RESTART_PREV};
+use crate::base::header::{param_crc, put_crc_words, F_CFG_INVALID, F_RESTART_PREV};
 use crate::base::reason::{when, Hit, Rule, RuleDef, Unit};
 use crate::base::time::reached;
 use crate::base::types::*;
@@ -1113,8 +1113,7 @@ impl<T: Unsigned, const P1: usize, const P2: usize> FB_CAMMONITOR<T, P1, P2> {
             }
         };
         // CamMonOK switching on is where the latched parameters are verified (C3).
-        if cam_ok(next) && !cam_ok(h.nState) && !self.params_intact() {
-            self.private_mut().stHeader.enter_error(SL_DIAG_CORRUPT);
+        if self.corrupt_at_switch_on(cam_ok(next) && !cam_ok(h.nState)) {
             return Status::Corrupt;
         }
         let q = self.private_mut();
@@ -1360,10 +1359,7 @@ impl<T: Unsigned, const P1: usize, const P2: usize> Block for FB_CAMMONITOR<T, P
             .iter()
             .chain(p.adwTime.iter())
             .chain(p.adwValue.iter());
-        for (i, v) in all.enumerate() {
-            words[1 + 2 * i] = *v as u16;
-            words[2 + 2 * i] = (*v >> 16) as u16;
-        }
+        put_crc_words(&mut words[1..], all.copied());
         words[0] = p.wActive;
         param_crc(Self::MAGIC, 0, 0, 0, &words)
     }

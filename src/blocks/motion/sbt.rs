@@ -19,7 +19,7 @@ use crate::base::block::BlockInfo;
 use crate::base::block::Private;
 use crate::base::bools::{self, edge};
 use crate::base::envelope::Block;
-use crate::base::header::{param_crc, F_RESTART_PREV};
+use crate::base::header::{param_crc, put_crc_words, F_RESTART_PREV};
 use crate::base::reason::{when, Rule, RuleDef, Unit};
 use crate::base::time::elapsed;
 use crate::base::types::*;
@@ -375,10 +375,7 @@ impl Block for FB_SBT {
     fn latched_crc(&self) -> u16 {
         let p = self.private();
         let mut words = [p.wActive; 11];
-        for (i, v) in p.adwParam.iter().enumerate() {
-            words[1 + 2 * i] = *v as u16;
-            words[2 + 2 * i] = (*v >> 16) as u16;
-        }
+        put_crc_words(&mut words[1..], p.adwParam);
         param_crc(Self::MAGIC, 0, 0, 0, &words)
     }
     /// SBT: an invalid byte reads FALSE without an edge; SBC In: an invalid byte reads
@@ -455,8 +452,7 @@ impl Block for FB_SBT {
             _ => SL_STATE_SAFE,
         };
         // BrakeValid switching on is where the latched parameters are verified (C3).
-        if brake_valid(next) && !brake_valid(h.nState) && !self.params_intact() {
-            self.private_mut().stHeader.enter_error(SL_DIAG_CORRUPT);
+        if self.corrupt_at_switch_on(brake_valid(next) && !brake_valid(h.nState)) {
             return Status::Corrupt;
         }
         let q = self.private_mut();

@@ -17,10 +17,10 @@ use crate::base::block::BlockInfo;
 use crate::base::block::Private;
 use crate::base::bools;
 use crate::base::envelope::Block;
-use crate::base::header::{param_crc, F_CFG_INVALID};
+use crate::base::header::{crc_words, param_crc, F_CFG_INVALID};
 use crate::base::reason::{when, Rule, RuleDef, Unit};
 use crate::base::types::*;
-use crate::blocks::analog::{diag_message, magic};
+use crate::blocks::analog::{diag_message, limit_outputs, magic, LIMIT_ABOVE, LIMIT_BELOW};
 
 /// Type tag of FB_SLP (ABI-2 §10.6: sequential in the order of §10.3).
 pub const SL_TYPE_SLP: u16 = 72;
@@ -223,10 +223,6 @@ pub struct SlpIn {
     upper: Turns,
 }
 
-/// `wAux` in SAFE: below the lower / above the upper limit.
-const BELOW: u16 = 1;
-const ABOVE: u16 = 2;
-
 /// Index of the limits in `adwFix`.
 const UL: usize = 0;
 const LL: usize = 2;
@@ -361,17 +357,13 @@ impl Block for FB_SLP {
     }
     fn latched_crc(&self) -> u16 {
         let p = self.private();
-        let w = |d: u32| [d as u16, (d >> 16) as u16];
-        let [a, b, c, d] = p.adwFix.map(w);
-        let o = w(p.dwOptions);
+        let [a, b, c, d] = p.adwFix;
         param_crc(
             Self::MAGIC,
             0,
             0,
             0,
-            &[
-                p.wActive, o[0], o[1], a[0], a[1], b[0], b[1], c[0], c[1], d[0], d[1],
-            ],
+            &crc_words![u16 p.wActive, u32 p.dwOptions, u32 a, u32 b, u32 c, u32 d],
         )
     }
     /// An invalid SafePosValid byte reads FALSE (START).
@@ -444,20 +436,18 @@ impl Block for FB_SLP {
             (true, false) => {
                 let (v, lo, hi) = (inp.pos.full(), inp.lower.full(), inp.upper.full());
                 if v < lo {
-                    (SL_STATE_SAFE, BELOW)
+                    (SL_STATE_SAFE, LIMIT_BELOW)
                 } else if v > hi {
-                    (SL_STATE_SAFE, ABOVE)
+                    (SL_STATE_SAFE, LIMIT_ABOVE)
                 } else {
                     (SL_STATE_RUN, 0)
                 }
             }
         };
         // PositionInLimit switching on is where the latched parameters are verified (C3).
-        if state == SL_STATE_RUN
-            && self.private().stHeader.nState != SL_STATE_RUN
-            && !self.params_intact()
-        {
-            self.private_mut().stHeader.enter_error(SL_DIAG_CORRUPT);
+        if self.corrupt_at_switch_on(
+            state == SL_STATE_RUN && self.private().stHeader.nState != SL_STATE_RUN,
+        ) {
             return Status::Corrupt;
         }
         let h = &mut self.private_mut().stHeader;
@@ -473,16 +463,12 @@ impl Block for FB_SLP {
     fn write_outputs(&mut self) {
         let p = *self.private();
         let h = p.stHeader;
-        let (error, run, safe) = match h.nState {
-            SL_STATE_ERROR => (true, false, false),
-            SL_STATE_RUN => (false, true, false),
-            SL_STATE_SAFE => (false, false, true),
-            _ => (false, false, false),
-        };
-        self.bError = u8::from(error);
-        self.bPositionInLimit = u8::from(run);
-        self.bBelowMin = u8::from(safe && h.wAux == BELOW);
-        self.bAboveMax = u8::from(safe && h.wAux == ABOVE);
+        [
+            self.bError,
+            self.bPositionInLimit,
+            self.bBelowMin,
+            self.bAboveMax,
+        ] = limit_outputs(&h);
         self.nState = h.nState;
         self.nDiag = h.wDiag;
         // A refused configuration names its limit error (semantics PL3).
