@@ -702,6 +702,42 @@ pub trait SfSteady: SfBlock {
     }
 }
 
+/// The fast path of an `SF_` block ([`SfSteady`]), from the BOOL fields of its key in key
+/// order and when a monitored time runs: never (no `timed`), in the listed states
+/// (`timed: State::{A, B}`), or where an expression over the block says so
+/// (`timed: |b| …`).
+#[macro_export]
+#[doc(hidden)]
+macro_rules! sf_steady {
+    ($ty:ty: [$($f:ident),+ $(,)?]) => {
+        impl $crate::base::sf::SfSteady for $ty {
+            $crate::sf_steady!(@key $($f),+);
+            #[inline(always)]
+            fn timed(&self) -> bool {
+                false
+            }
+        }
+    };
+    ($ty:ty: [$($f:ident),+ $(,)?], timed: $state:ident::{$($s:ident),+ $(,)?}) => {
+        $crate::sf_steady!($ty: [$($f),+], timed: |b| matches!(b.diag_state(), Some($($state::$s)|+)));
+    };
+    ($ty:ty: [$($f:ident),+ $(,)?], timed: |$b:ident| $timed:expr) => {
+        impl $crate::base::sf::SfSteady for $ty {
+            $crate::sf_steady!(@key $($f),+);
+            fn timed(&self) -> bool {
+                let $b = self;
+                $timed
+            }
+        }
+    };
+    (@key $($f:ident),+) => {
+        #[inline(always)]
+        fn steady_key(&self) -> Option<u16> {
+            $crate::base::sf::key([$(&self.$f),+])
+        }
+    };
+}
+
 /// The key of BOOL bytes: byte i as bit i; `None` when one is neither 0 nor 1. Built byte
 /// by byte through references, as bits (no shift makes adjacent bytes one wider value, so
 /// every byte stays its own load): a caller writes these bytes one by one right before the

@@ -263,13 +263,7 @@ const DIAG_VALUES: &[(u16, &str)] =
     super::range_diag_values!("AnalogOut", "The output AnalogOut is correct", "");
 
 const fn info<O: ArithOp, T: Analog>() -> BlockInfo {
-    BlockInfo {
-        tag: O::TAGS[T::VARIANT],
-        name: O::NAMES[T::VARIANT],
-        states: <ArithState as crate::base::block::BlockState>::TABLE,
-        diag: &[],
-        diag_values: DIAG_VALUES,
-    }
+    BlockInfo::of::<ArithState>(O::TAGS[T::VARIANT], O::NAMES[T::VARIANT]).diag_values(DIAG_VALUES)
 }
 
 crate::impl_member!([O: ArithOp, T: Analog, const P1: usize, const P2: usize] FB_ARITH<O, T, P1, P2> {

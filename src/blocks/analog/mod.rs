@@ -132,13 +132,7 @@ macro_rules! variant_info {
             $tag,
             concat!($name, "_", stringify!($v)),
         )),+]);
-        $crate::base::block::BlockInfo {
-            tag,
-            name,
-            states: <$state as $crate::base::block::BlockState>::TABLE,
-            diag: &[],
-            diag_values: $diag_values,
-        }
+        $crate::base::block::BlockInfo::of::<$state>(tag, name).diag_values($diag_values)
     }};
     (@index INT) => { 0 };
     (@index UINT) => { 1 };

@@ -172,9 +172,55 @@ pub fn outputs(p: &SL_SLI_PRIVATE) -> WindowOut {
     }
 }
 
-/// The envelope's view of a block of this family; invoked in the member's own file with
-/// the struct's generic parameters.
+/// A block of this family from its struct: [`WindowFb`] over the fields every member has
+/// (SLI, Position, the limits, wInputActive, Error, SLIActive, PositionDiff and the info
+/// data), the options it offers and the field that carries them (`0`: none), the BOOL
+/// outputs of its own (`bBelowMin = below`), and the envelope's view; invoked in the
+/// member's own file with the struct's generic parameters and its two type parameters.
 macro_rules! window_block {
+    ([$($gen:tt)*] $t:ty; $tt:ident, $ts:ident; options $opts:expr => $live:tt;
+     outputs [$($o:ident = $w:ident),*]) => {
+        impl<$($gen)*> $crate::blocks::analog::window::WindowFb for $t {
+            type T = $tt;
+            type TS = $ts;
+            const OPTIONS: u32 = $opts;
+            #[inline(always)]
+            fn params(&self) -> $crate::blocks::analog::window::WindowParams {
+                $crate::blocks::analog::window::WindowParams {
+                    active: self.wInputActive,
+                    limits: [self.nLimitPos, self.nLimitNeg],
+                    options: $crate::blocks::analog::window::window_block!(@options self $live),
+                }
+            }
+            #[inline(always)]
+            fn sli_raw(&self) -> u8 {
+                self.bSLI
+            }
+            #[inline(always)]
+            fn position(&self) -> $tt {
+                self.nPosition
+            }
+            #[inline(always)]
+            fn set_outputs(
+                &mut self,
+                out: $crate::blocks::analog::window::WindowOut,
+                state: u8,
+                diag: u16,
+                msg: (u16, u32, u32),
+            ) {
+                self.bError = u8::from(out.error);
+                self.bSLIActive = u8::from(out.sli_active);
+                $(self.$o = u8::from(out.$w);)*
+                self.nPositionDiff = $crate::base::block::FieldType::from_bits(out.diff);
+                self.nState = state;
+                self.nDiag = diag;
+                (self.nDiagTextId, self.dwDiagPar2, self.dwDiagPar3) = msg;
+            }
+        }
+        $crate::blocks::analog::window::window_block!([$($gen)*] $t);
+    };
+    (@options $s:ident 0) => { 0 };
+    (@options $s:ident $f:ident) => { $s.$f };
     ([$($gen:tt)*] $t:ty) => {
         const _: () = {
             use $crate::blocks::analog::{

@@ -72,13 +72,7 @@ crate::base::block::block_states!(
 );
 
 /// Type tag, name and diag texts (manual §4.6.2: diag "always 0").
-const INFO: BlockInfo = BlockInfo {
-    tag: SL_TYPE_DECOUPLE,
-    name: "DECOUPLE",
-    states: <DecoupleState as crate::base::block::BlockState>::TABLE,
-    diag: &[],
-    diag_values: &[],
-};
+const INFO: BlockInfo = BlockInfo::of::<DecoupleState>(SL_TYPE_DECOUPLE, "DECOUPLE");
 
 crate::impl_member!([] FB_DECOUPLE {
     info: INFO,

@@ -88,16 +88,10 @@ crate::base::block::block_states!(
 );
 
 /// Type tag, name and diag texts (manual §4.9.2).
-const INFO: BlockInfo = BlockInfo {
-    tag: SL_TYPE_EDM,
-    name: "EDM",
-    states: <EdmState as crate::base::block::BlockState>::TABLE,
-    diag: &[
-        (SL_DIAG_EDM_SWITCH_OFF, "Switch-OFF timer elapsed"),
-        (SL_DIAG_EDM_SWITCH_ON, "Switch-ON timer elapsed"),
-    ],
-    diag_values: &[],
-};
+const INFO: BlockInfo = BlockInfo::of::<EdmState>(SL_TYPE_EDM, "EDM").diag(&[
+    (SL_DIAG_EDM_SWITCH_OFF, "Switch-OFF timer elapsed"),
+    (SL_DIAG_EDM_SWITCH_ON, "Switch-ON timer elapsed"),
+]);
 
 crate::impl_member!([] FB_EDM {
     info: INFO,

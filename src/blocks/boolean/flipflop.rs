@@ -135,13 +135,7 @@ macro_rules! flipflop_block {
         );
 
         $crate::impl_member!([] $t {
-            info: $crate::base::block::BlockInfo {
-                tag: $tag,
-                name: $label,
-                states: <$state as $crate::base::block::BlockState>::TABLE,
-                diag: &[],
-                diag_values: &[],
-            },
+            info: $crate::base::block::BlockInfo::of::<$state>($tag, $label),
             state: $state,
             private: $crate::blocks::boolean::flipflop::SL_FLIPFLOP_PRIVATE,
             input: [bReset, bSet],

@@ -111,6 +111,47 @@ pub trait GuardBlock: crate::base::block::Private<P = SL_GUARD_PRIVATE> {
     fn set_outputs(&mut self, error: bool, out: bool, del_out: bool, state: u8, diag: u16);
 }
 
+/// The struct side of a guard block (ESTOP, MON), from its field names: the discrepancy
+/// times of the four pairs, the delay, the eight BOOL inputs (`0` for a pair or an input the
+/// block does not have) and the two outputs; the rest of the struct is the family's. Writes
+/// [`GuardBlock`]'s `DISC_NAMES`, `DELAY_NAME`, `params`, `raw` and `set_outputs`.
+macro_rules! guard_fields {
+    (disc: [$($d:tt),+], delay: $delay:ident, inputs: [$($i:tt),+], outputs: [$out:ident, $del:ident] $(,)?) => {
+        const DISC_NAMES: [&'static str; 4] =
+            [$($crate::blocks::boolean::guard::guard_fields!(@name $d)),+];
+        const DELAY_NAME: &'static str = stringify!($delay);
+        fn params(&self) -> $crate::blocks::boolean::guard::GuardParams {
+            $crate::blocks::boolean::guard::GuardParams {
+                disc: [$($crate::blocks::boolean::guard::guard_fields!(@field self $d)),+],
+                edm_reset: [self.tEDM1ResetTime, self.tEDM2ResetTime],
+                delay: self.$delay,
+                active: self.wInputActive,
+                negated: self.wInputNegated,
+                options: self.dwOptions,
+            }
+        }
+        fn raw(&self) -> $crate::blocks::boolean::guard::GuardRaw {
+            $crate::blocks::boolean::guard::GuardRaw {
+                restart: self.bRestart,
+                edm: [self.bEDM1, self.bEDM2],
+                inputs: [$($crate::blocks::boolean::guard::guard_fields!(@field self $i)),+],
+            }
+        }
+        fn set_outputs(&mut self, error: bool, out: bool, del_out: bool, state: u8, diag: u16) {
+            self.bError = u8::from(error);
+            self.$out = u8::from(out);
+            self.$del = u8::from(del_out);
+            self.nState = state;
+            self.nDiag = diag;
+        }
+    };
+    (@name 0) => { "" };
+    (@name $f:ident) => { stringify!($f) };
+    (@field $s:ident 0) => { 0 };
+    (@field $s:ident $f:ident) => { $s.$f };
+}
+pub(crate) use guard_fields;
+
 /// Diag bits for pair errors, with the "Safe Inputs after Disc Error" bits when it is on.
 #[inline]
 pub(crate) fn disc_diag(pairs: u8, safe_inputs: bool) -> u16 {

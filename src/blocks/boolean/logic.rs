@@ -265,13 +265,7 @@ macro_rules! gate8_block {
         );
 
         $crate::impl_member!([] $name {
-            info: $crate::base::block::BlockInfo {
-                tag: $tag,
-                name: $label,
-                states: <$state as $crate::base::block::BlockState>::TABLE,
-                diag: &[],
-                diag_values: &[],
-            },
+            info: $crate::base::block::BlockInfo::of::<$state>($tag, $label),
             state: $state,
             private: $crate::blocks::boolean::logic::SL_LOGIC_PRIVATE,
             input: [$($i),*],

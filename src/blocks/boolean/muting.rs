@@ -169,33 +169,27 @@ crate::base::block::block_states!(
 );
 
 /// Type tag, name, states and diag texts (manual §4.8.2, §4.8.4).
-const INFO: BlockInfo = BlockInfo {
-    tag: SL_TYPE_MUTING,
-    name: "MUTING",
-    states: <MutingState as crate::base::block::BlockState>::TABLE,
-    diag: &[
-        (SL_DIAG_DISC1, "discrepancy error in muting input group 1"),
-        (SL_DIAG_DISC2, "discrepancy error in the OSSD input group"),
-        (SL_DIAG_DISC3, "discrepancy error in muting input group 2"),
-        (SL_DIAG_EDM1, "EDM monitoring error EDM1"),
-        (SL_DIAG_EDM2, "EDM monitoring error EDM2"),
-        (SL_DIAG_MUTING_SEQUENCE, "muting sequence was violated"),
-        (SL_DIAG_MUTING_MAX_TIME, "maximum muting time was exceeded"),
-        (
-            SL_DIAG_SAFE_IN_DISC1,
-            "discrepancy error in muting input group 1 was not yet reset",
-        ),
-        (
-            SL_DIAG_SAFE_IN_DISC2,
-            "discrepancy error in OSSD input group was not yet reset",
-        ),
-        (
-            SL_DIAG_SAFE_IN_DISC3,
-            "discrepancy error in muting input group 2 was not yet reset",
-        ),
-    ],
-    diag_values: &[],
-};
+const INFO: BlockInfo = BlockInfo::of::<MutingState>(SL_TYPE_MUTING, "MUTING").diag(&[
+    (SL_DIAG_DISC1, "discrepancy error in muting input group 1"),
+    (SL_DIAG_DISC2, "discrepancy error in the OSSD input group"),
+    (SL_DIAG_DISC3, "discrepancy error in muting input group 2"),
+    (SL_DIAG_EDM1, "EDM monitoring error EDM1"),
+    (SL_DIAG_EDM2, "EDM monitoring error EDM2"),
+    (SL_DIAG_MUTING_SEQUENCE, "muting sequence was violated"),
+    (SL_DIAG_MUTING_MAX_TIME, "maximum muting time was exceeded"),
+    (
+        SL_DIAG_SAFE_IN_DISC1,
+        "discrepancy error in muting input group 1 was not yet reset",
+    ),
+    (
+        SL_DIAG_SAFE_IN_DISC2,
+        "discrepancy error in OSSD input group was not yet reset",
+    ),
+    (
+        SL_DIAG_SAFE_IN_DISC3,
+        "discrepancy error in muting input group 2 was not yet reset",
+    ),
+]);
 
 crate::impl_member!([] FB_MUTING {
     info: INFO,

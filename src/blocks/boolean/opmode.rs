@@ -110,13 +110,8 @@ crate::base::block::block_states!(
 );
 
 /// Type tag, name, states and diag texts (manual §4.3.2).
-const INFO: BlockInfo = BlockInfo {
-    tag: SL_TYPE_OPMODE,
-    name: "OPMODE",
-    states: <OpmodeState as crate::base::block::BlockState>::TABLE,
-    diag: &[(SL_DIAG_OPMODE_DISC, "discrepancy monitoring error")],
-    diag_values: &[],
-};
+const INFO: BlockInfo = BlockInfo::of::<OpmodeState>(SL_TYPE_OPMODE, "OPMODE")
+    .diag(&[(SL_DIAG_OPMODE_DISC, "discrepancy monitoring error")]);
 
 crate::impl_member!([] FB_OPMODE {
     info: INFO,

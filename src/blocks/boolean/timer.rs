@@ -379,13 +379,7 @@ macro_rules! delay_block {
         );
 
         $crate::impl_member!([] $t {
-            info: $crate::base::block::BlockInfo {
-                tag: $tag,
-                name: $label,
-                states: <$state as $crate::base::block::BlockState>::TABLE,
-                diag: &[],
-                diag_values: &[],
-            },
+            info: $crate::base::block::BlockInfo::of::<$state>($tag, $label),
             state: $state,
             private: $crate::blocks::boolean::timer::SL_TIMER_PRIVATE,
             input: [$in],

@@ -120,36 +120,30 @@ crate::base::block::block_states!(
 );
 
 /// Type tag, name, states and diag texts (manual §4.7.2).
-const INFO: BlockInfo = BlockInfo {
-    tag: SL_TYPE_TWOHAND,
-    name: "TWOHAND",
-    states: <TwohandState as crate::base::block::BlockState>::TABLE,
-    diag: &[
-        (SL_DIAG_DISC1, "discrepancy error input pair 1"),
-        (SL_DIAG_DISC2, "discrepancy error input pair 2"),
-        (
-            SL_DIAG_TWOHAND_PAIRS,
-            "discrepancy error between the two input pairs",
-        ),
-        (
-            SL_DIAG_TWOHAND_ERROR,
-            "two-hand error: second input pair actuated, first no longer actuated",
-        ),
-        (
-            SL_DIAG_SAFE_IN_DISC1,
-            "pair 1 with Safe Inputs after Disc Error",
-        ),
-        (
-            SL_DIAG_SAFE_IN_DISC2,
-            "pair 2 with Safe Inputs after Disc Error",
-        ),
-        (
-            SL_DIAG_TWOHAND_SAFE_IN_PAIRS,
-            "between the pairs with Safe Inputs after Disc Error",
-        ),
-    ],
-    diag_values: &[],
-};
+const INFO: BlockInfo = BlockInfo::of::<TwohandState>(SL_TYPE_TWOHAND, "TWOHAND").diag(&[
+    (SL_DIAG_DISC1, "discrepancy error input pair 1"),
+    (SL_DIAG_DISC2, "discrepancy error input pair 2"),
+    (
+        SL_DIAG_TWOHAND_PAIRS,
+        "discrepancy error between the two input pairs",
+    ),
+    (
+        SL_DIAG_TWOHAND_ERROR,
+        "two-hand error: second input pair actuated, first no longer actuated",
+    ),
+    (
+        SL_DIAG_SAFE_IN_DISC1,
+        "pair 1 with Safe Inputs after Disc Error",
+    ),
+    (
+        SL_DIAG_SAFE_IN_DISC2,
+        "pair 2 with Safe Inputs after Disc Error",
+    ),
+    (
+        SL_DIAG_TWOHAND_SAFE_IN_PAIRS,
+        "between the pairs with Safe Inputs after Disc Error",
+    ),
+]);
 
 crate::impl_member!([] FB_TWOHAND {
     info: INFO,

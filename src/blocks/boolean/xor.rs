@@ -86,13 +86,7 @@ crate::base::block::block_states!(
 );
 
 /// Type tag, name and diag texts (manual §4.34.2: no diagnostic information).
-const INFO: BlockInfo = BlockInfo {
-    tag: SL_TYPE_XOR,
-    name: "XOR",
-    states: <XorState as crate::base::block::BlockState>::TABLE,
-    diag: &[],
-    diag_values: &[],
-};
+const INFO: BlockInfo = BlockInfo::of::<XorState>(SL_TYPE_XOR, "XOR");
 
 crate::impl_member!([] FB_XOR {
     info: INFO,

@@ -83,13 +83,9 @@ crate::base::block::block_states!(
     ConnShutdownState: Run, Stop, Safe, Error, Reset
 );
 
-const INFO: BlockInfo = BlockInfo {
-    tag: SL_TYPE_CONNECTION_SHUTDOWN,
-    name: "CONNECTION_SHUTDOWN",
-    states: <ConnShutdownState as crate::base::block::BlockState>::TABLE,
-    diag: &[(SL_DIAG_DISC1, "discrepancy error input group 1")],
-    diag_values: &[],
-};
+const INFO: BlockInfo =
+    BlockInfo::of::<ConnShutdownState>(SL_TYPE_CONNECTION_SHUTDOWN, "CONNECTION_SHUTDOWN")
+        .diag(&[(SL_DIAG_DISC1, "discrepancy error input group 1")]);
 
 crate::impl_member!([] FB_CONNECTION_SHUTDOWN {
     info: INFO,

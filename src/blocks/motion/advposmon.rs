@@ -132,12 +132,8 @@ crate::base::block::block_states!(
 );
 
 /// Type tag, name, states and diag values (manual §4.31.2.3 "FB Diag").
-const INFO: BlockInfo = BlockInfo {
-    tag: SL_TYPE_ADVPOSMON,
-    name: "ADVPOSMON",
-    states: <AdvPosMonState as crate::base::block::BlockState>::TABLE,
-    diag: &[],
-    diag_values: &[
+const INFO: BlockInfo = BlockInfo::of::<AdvPosMonState>(SL_TYPE_ADVPOSMON, "ADVPOSMON")
+    .diag_values(&[
         (0, "No diagnostic information"),
         (
             1,
@@ -155,8 +151,7 @@ const INFO: BlockInfo = BlockInfo {
             4,
             "SAFEDRIVEFEEDBACK instance 4 has changed to the ERROR state",
         ),
-    ],
-};
+    ]);
 
 crate::impl_member!([] FB_ADVPOSMON {
     info: INFO,

@@ -170,12 +170,7 @@ crate::base::block::block_states!(
 );
 
 /// Type tag, name, states and diag values (the messages, ABI-2 §11.15).
-const INFO: BlockInfo = BlockInfo {
-    tag: SL_TYPE_SBT,
-    name: "SBT",
-    states: <SbtState as crate::base::block::BlockState>::TABLE,
-    diag: &[],
-    diag_values: &[
+const INFO: BlockInfo = BlockInfo::of::<SbtState>(SL_TYPE_SBT, "SBT").diag_values(&[
         (0, "No diagnostic information"),
         (
             SL_TEXT_SBT_MAX_DURATION - SL_SBT_DIAG_TEXT_BASE,
@@ -189,8 +184,7 @@ const INFO: BlockInfo = BlockInfo {
             SL_TEXT_SBT_POSITION_DEVIATION - SL_SBT_DIAG_TEXT_BASE,
             "The single-turn position exceeds the maximum position deviation.",
         ),
-    ],
-};
+    ]);
 
 crate::impl_member!([] FB_SBT {
     info: INFO,

@@ -163,22 +163,16 @@ const MESSAGES: [(u16, u16); 2] = [
 ];
 
 /// Type tag, name, states and diag texts (manual §4.29.2.3).
-const INFO: BlockInfo = BlockInfo {
-    tag: SL_TYPE_SLP,
-    name: "SLP",
-    states: <SlpState as crate::base::block::BlockState>::TABLE,
-    diag: &[
-        (
-            SL_DIAG_SLP_MULTITURN_LL_ABOVE_UL,
-            "MultiturnPos_LL>MultiturnPos_UL",
-        ),
-        (
-            SL_DIAG_SLP_SINGLETURN_LL_ABOVE_UL,
-            "MultiturnPos_LL=MultiturnPos_UL AND SingleturnPosLL>SingleturnPos_UL",
-        ),
-    ],
-    diag_values: &[],
-};
+const INFO: BlockInfo = BlockInfo::of::<SlpState>(SL_TYPE_SLP, "SLP").diag(&[
+    (
+        SL_DIAG_SLP_MULTITURN_LL_ABOVE_UL,
+        "MultiturnPos_LL>MultiturnPos_UL",
+    ),
+    (
+        SL_DIAG_SLP_SINGLETURN_LL_ABOVE_UL,
+        "MultiturnPos_LL=MultiturnPos_UL AND SingleturnPosLL>SingleturnPos_UL",
+    ),
+]);
 
 crate::impl_member!([] FB_SLP {
     info: INFO,

@@ -239,24 +239,9 @@ crate::impl_sf_block!(SF_EDM {
     }
 });
 
-/// The steady-state fast path (`base::sf::SfSteady`): the key is every BOOL byte the call
-/// reads; the states that monitor the contactors read the monitoring time.
-impl crate::base::sf::SfSteady for SF_EDM {
-    #[inline(always)]
-    fn steady_key(&self) -> Option<u16> {
-        crate::base::sf::key([
-            &self.Activate,
-            &self.S_OutControl,
-            &self.EDM1,
-            &self.EDM2,
-            &self.S_StartReset,
-            &self.Reset,
-        ])
-    }
-    fn timed(&self) -> bool {
-        matches!(
-            self.diag_state(),
-            Some(SfEdmState::OutDisable | SfEdmState::OutEnable)
-        )
-    }
-}
+// The steady-state fast path (`base::sf::SfSteady`): the key is every BOOL byte the call
+// reads; the states that monitor the contactors read the monitoring time.
+crate::sf_steady!(
+    SF_EDM: [Activate, S_OutControl, EDM1, EDM2, S_StartReset, Reset],
+    timed: SfEdmState::{OutDisable, OutEnable}
+);

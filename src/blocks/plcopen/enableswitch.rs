@@ -199,22 +199,9 @@ crate::impl_sf_block!(SF_EnableSwitch {
 /// The private state's size is part of the struct's layout (56 bytes, no implicit padding).
 const _: () = assert!(core::mem::size_of::<SF_EnableSwitch>() == 56);
 
-/// The steady-state fast path (`base::sf::SfSteady`): the key is the six BOOL inputs; no
-/// state reads the time.
-impl crate::base::sf::SfSteady for SF_EnableSwitch {
-    #[inline(always)]
-    fn steady_key(&self) -> Option<u16> {
-        crate::base::sf::key([
-            &self.Activate,
-            &self.S_SafetyActive,
-            &self.S_EnableSwitchCh1,
-            &self.S_EnableSwitchCh2,
-            &self.S_AutoReset,
-            &self.Reset,
-        ])
-    }
-    #[inline(always)]
-    fn timed(&self) -> bool {
-        false
-    }
-}
+// The steady-state fast path (`base::sf::SfSteady`): the key is the six BOOL inputs; no
+// state reads the time.
+crate::sf_steady!(
+    SF_EnableSwitch: [Activate, S_SafetyActive, S_EnableSwitchCh1,
+        S_EnableSwitchCh2, S_AutoReset, Reset]
+);

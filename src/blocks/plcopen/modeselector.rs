@@ -316,28 +316,10 @@ crate::impl_sf_block!(SF_ModeSelector {
 /// The layout: 80 bytes, no implicit padding.
 const _: () = assert!(core::mem::size_of::<SF_ModeSelector>() == 80);
 
-/// The steady-state fast path (`base::sf::SfSteady`): the key is every BOOL byte the call
-/// reads; the open-circuit time runs while every S_ModeX is FALSE.
-impl crate::base::sf::SfSteady for SF_ModeSelector {
-    #[inline(always)]
-    fn steady_key(&self) -> Option<u16> {
-        crate::base::sf::key([
-            &self.Activate,
-            &self.S_Mode0,
-            &self.S_Mode1,
-            &self.S_Mode2,
-            &self.S_Mode3,
-            &self.S_Mode4,
-            &self.S_Mode5,
-            &self.S_Mode6,
-            &self.S_Mode7,
-            &self.S_Unlock,
-            &self.S_SetMode,
-            &self.AutoSetMode,
-            &self.Reset,
-        ])
-    }
-    fn timed(&self) -> bool {
-        self.stPrivate.stHeader.wAux & AUX_OFF_RUNNING != 0
-    }
-}
+// The steady-state fast path (`base::sf::SfSteady`): the key is every BOOL byte the call
+// reads; the open-circuit time runs while every S_ModeX is FALSE.
+crate::sf_steady!(
+    SF_ModeSelector: [Activate, S_Mode0, S_Mode1, S_Mode2, S_Mode3, S_Mode4,
+        S_Mode5, S_Mode6, S_Mode7, S_Unlock, S_SetMode, AutoSetMode, Reset],
+    timed: |b| b.stPrivate.stHeader.wAux & AUX_OFF_RUNNING != 0
+);

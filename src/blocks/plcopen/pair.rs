@@ -154,18 +154,9 @@ macro_rules! pair_block {
 #[doc(hidden)]
 macro_rules! pair_steady {
     ($ty:ident, $a:ident, $b:ident) => {
-        impl $crate::base::sf::SfSteady for $ty {
-            #[inline(always)]
-            fn steady_key(&self) -> Option<u16> {
-                $crate::base::sf::key([&self.Activate, &self.$a, &self.$b])
-            }
-            fn timed(&self) -> bool {
-                use $crate::blocks::plcopen::pair::PairState::*;
-                !matches!(
-                    self.diag_state(),
-                    Some(Idle | Init | Enabled | Error1 | Error2 | Error3)
-                )
-            }
-        }
+        $crate::sf_steady!($ty: [Activate, $a, $b], timed: |b| {
+            use $crate::blocks::plcopen::pair::PairState::*;
+            !matches!(b.diag_state(), Some(Idle | Init | Enabled | Error1 | Error2 | Error3))
+        });
     };
 }

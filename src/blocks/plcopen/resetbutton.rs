@@ -163,14 +163,6 @@ impl SF_ResetButton {
     }
 }
 
-/// The steady-state fast path (`base::sf::SfSteady`): the key is every BOOL byte the call
-/// reads; the wait for the falling edge reads the trailing times.
-impl crate::base::sf::SfSteady for SF_ResetButton {
-    #[inline(always)]
-    fn steady_key(&self) -> Option<u16> {
-        crate::base::sf::key([&self.ResetRequested, &self.ResetIn])
-    }
-    fn timed(&self) -> bool {
-        self.diag_state() == Some(ResetButtonState::WaitFTrig)
-    }
-}
+// The steady-state fast path (`base::sf::SfSteady`): the key is every BOOL byte the call
+// reads; the wait for the falling edge reads the trailing times.
+crate::sf_steady!(SF_ResetButton: [ResetRequested, ResetIn], timed: ResetButtonState::{WaitFTrig});

@@ -163,21 +163,6 @@ const _: () = assert!(core::mem::size_of::<SL_SF_PRIVATE>() == 40);
 #[doc(hidden)]
 macro_rules! restart_interlock_steady {
     ($ty:ident, $input:ident) => {
-        impl $crate::base::sf::SfSteady for $ty {
-            #[inline(always)]
-            fn steady_key(&self) -> Option<u16> {
-                $crate::base::sf::key([
-                    &self.Activate,
-                    &self.$input,
-                    &self.S_StartReset,
-                    &self.S_AutoReset,
-                    &self.Reset,
-                ])
-            }
-            #[inline(always)]
-            fn timed(&self) -> bool {
-                false
-            }
-        }
+        $crate::sf_steady!($ty: [Activate, $input, S_StartReset, S_AutoReset, Reset]);
     };
 }

@@ -258,25 +258,9 @@ crate::impl_sf_block!(SF_TestableSafetySensor {
     }
 });
 
-/// The steady-state fast path (`base::sf::SfSteady`): the key is every BOOL byte the call
-/// reads; the test states read the test time.
-impl crate::base::sf::SfSteady for SF_TestableSafetySensor {
-    #[inline(always)]
-    fn steady_key(&self) -> Option<u16> {
-        crate::base::sf::key([
-            &self.Activate,
-            &self.S_OSSD_In,
-            &self.StartTest,
-            &self.NoExternalTest,
-            &self.S_StartReset,
-            &self.S_AutoReset,
-            &self.Reset,
-        ])
-    }
-    fn timed(&self) -> bool {
-        matches!(
-            self.diag_state(),
-            Some(TssState::TestRequest | TssState::TestActive)
-        )
-    }
-}
+// The steady-state fast path (`base::sf::SfSteady`): the key is every BOOL byte the call
+// reads; the test states read the test time.
+crate::sf_steady!(
+    SF_TestableSafetySensor: [Activate, S_OSSD_In, StartTest, NoExternalTest, S_StartReset, S_AutoReset, Reset],
+    timed: TssState::{TestRequest, TestActive}
+);

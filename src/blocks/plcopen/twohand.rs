@@ -215,18 +215,12 @@ macro_rules! two_hand_block {
 #[macro_export]
 #[doc(hidden)]
 macro_rules! two_hand_steady {
-    ($ty:ident, $diag:ident, timed: [$($timed:ident),*]) => {
-        impl $crate::base::sf::SfSteady for $ty {
-            #[inline(always)]
-            fn steady_key(&self) -> Option<u16> {
-                $crate::base::sf::key([&self.Activate, &self.S_Button1, &self.S_Button2])
-            }
-            #[inline(always)]
-            fn timed(&self) -> bool {
-                false
-                    $(|| self.diag_state()
-                        == Some($crate::blocks::plcopen::twohand::$diag::$timed))*
-            }
-        }
+    ($ty:ident, $diag:ident, timed: []) => {
+        $crate::sf_steady!($ty: [Activate, S_Button1, S_Button2]);
+    };
+    ($ty:ident, $diag:ident, timed: [$($timed:ident),+]) => {
+        $crate::sf_steady!($ty: [Activate, S_Button1, S_Button2], timed: |b| {
+            false $(|| b.diag_state() == Some($crate::blocks::plcopen::twohand::$diag::$timed))+
+        });
     };
 }
