@@ -321,8 +321,9 @@ pub const fn magic(tag: u16) -> u16 {
 /// The part of an `impl SfBlock` that every `SF_` block writes alike, declared once: the
 /// magic from the type tag, the state and input types, the `Reset` byte (`none`: a block
 /// without Reset reads 0), the constants latched at activation (`consts(s): [..]`, up to
-/// two words read from `s`, the block; their number is `TIMES`) and their rules; the rest
-/// of the impl (decode, next, write_outputs, …) follows in braces.
+/// two words read from `s`, the block; their number is `TIMES`) and their rules, and a
+/// `next` that hands over to the block's transition function (`next: |s, inp, reset,
+/// in_state, times| …`); the rest of the impl (decode, write_outputs, …) follows in braces.
 #[macro_export]
 #[doc(hidden)]
 macro_rules! impl_sf_block {
@@ -337,7 +338,8 @@ macro_rules! impl_sf_block {
         input: $in:ty,
         reset: $reset:ident,
         consts($s:ident): [$($t:expr),* $(,)?]
-        $(, rules: [$($rule:expr),* $(,)?])? $(,)?
+        $(, rules: [$($rule:expr),* $(,)?])?
+        $(, next: |$ns:pat_param, $ni:pat_param, $nr:pat_param, $nis:pat_param, $nt:pat_param| $next:expr)? $(,)?
     } { $($body:tt)* }) => {
         impl $crate::base::sf::SfBlock for $ty {
             const MAGIC: u16 = $crate::base::sf::magic($tag);
@@ -357,6 +359,18 @@ macro_rules! impl_sf_block {
                     times: $crate::impl_sf_block!(@times $($t),*),
                 }
             }
+            $(
+                #[inline(always)]
+                fn next(
+                    $ns: Self::Diag,
+                    $ni: &Self::In,
+                    $nr: $crate::base::sf::ResetIn,
+                    $nis: u32,
+                    $nt: [u32; 2],
+                ) -> Self::Diag {
+                    $next
+                }
+            )?
             $($body)*
         }
     };

@@ -13,9 +13,10 @@
 
 use super::{diag_message, limit_outputs, magic, Analog, LIMIT_ABOVE, LIMIT_BELOW};
 use crate::base::block::{Private, Registered};
-use crate::base::envelope::Block;
+use crate::base::envelope::{params_map, Block};
 use crate::base::header::F_CFG_INVALID;
 use crate::base::header::{crc_words, param_crc};
+use crate::base::reason::rule;
 use crate::base::reason::{check, when, Rule, RuleDef, Unit};
 use crate::base::types::*;
 
@@ -147,33 +148,17 @@ fn wide<T: Analog>(bits: u32) -> i128 {
 
 impl<T: Analog, const P1: usize> Block for FB_LIMIT<T, P1> {
     const MAGIC: u16 = magic(<Self as Registered>::INFO.tag);
-    type Params = LimitParams;
+    params_map!(LimitParams {
+        active: wInputActive => wActive,
+        limits: bits [nMinimumValue, nMaximumValue] => adwLimit,
+    });
     type In = LimitIn;
 
-    #[inline(always)]
-    fn live_params(&self) -> LimitParams {
-        LimitParams {
-            active: self.wInputActive,
-            limits: [self.nMinimumValue.to_bits(), self.nMaximumValue.to_bits()],
-        }
-    }
-    #[inline(always)]
-    fn latched_params(&self) -> LimitParams {
-        let p = self.private();
-        LimitParams {
-            active: p.wActive,
-            limits: p.adwLimit,
-        }
-    }
     /// AnalogIn active, no bit beyond 8–10 (ABI-2 §10.5); both limits from the parameters
     /// with Minimum > Maximum is a parameter-only check (ABI-2 §12.8, semantics L2), with the
     /// manual's Text ID 0x4090.
     const RULES: &'static [RuleDef<LimitParams>] = &[
-        RuleDef::new("wInputActive", Rule::NoBitsOutside, Unit::Hex, |p| {
-            let known =
-                SL_LIMIT_ACTIVE_ANALOGIN | SL_LIMIT_ACTIVE_MINVALUE | SL_LIMIT_ACTIVE_MAXVALUE;
-            when(p.active & !known != 0, p.active, known)
-        }),
+        rule!(no_bits_outside "wInputActive", |p| p.active, SL_LIMIT_ACTIVE_ANALOGIN | SL_LIMIT_ACTIVE_MINVALUE | SL_LIMIT_ACTIVE_MAXVALUE),
         RuleDef::new("wInputActive", Rule::BitsSet, Unit::Hex, |p| {
             let need = SL_LIMIT_ACTIVE_ANALOGIN;
             when(p.active & need == 0, p.active, need)
@@ -191,11 +176,6 @@ impl<T: Analog, const P1: usize> Block for FB_LIMIT<T, P1> {
         )
         .text_id(SL_TEXT_LIMIT_MIN_ABOVE_MAX),
     ];
-    fn store_params(&mut self, p: &LimitParams) {
-        let q = self.private_mut();
-        q.wActive = p.active;
-        q.adwLimit = p.limits;
-    }
     fn latched_crc(&self) -> u16 {
         let p = self.private();
         let [min, max] = p.adwLimit;
@@ -239,7 +219,7 @@ impl<T: Analog, const P1: usize> Block for FB_LIMIT<T, P1> {
         }
         let in_limit = inp.min <= inp.value && inp.value <= inp.max;
         // InLimit switching on is where the latched parameters are verified (C3).
-        if self.corrupt_at_switch_on(in_limit && self.private().stHeader.nState != SL_STATE_RUN) {
+        if self.corrupt_entering_run(in_limit) {
             return Status::Corrupt;
         }
         let h = &mut self.private_mut().stHeader;

@@ -16,6 +16,7 @@ use super::{magic, Analog};
 use crate::base::block::{Private, Registered};
 use crate::base::envelope::Block;
 use crate::base::header::{param_crc, put_crc_words, SL_PRIVATE_HEADER};
+use crate::base::reason::rule;
 use crate::base::reason::{when, Hit, Rule, RuleDef, Unit};
 use crate::base::types::*;
 
@@ -368,24 +369,15 @@ impl<T: Analog, const P1: usize, const PR: usize> Block for FB_LOADSENSING<T, P1
     /// the Outside option; 1…25 rows; in the rows used, X strictly increasing and each row
     /// ordered as the manual's formula for its Outside setting (ABI-2 §11.8, semantics LS5).
     const RULES: &'static [RuleDef<LoadSensingParams<T>>] = &[
-        RuleDef::new("wInputActive", Rule::NoBitsOutside, Unit::Hex, |p| {
-            let known = REQUIRED | SL_LOADSENSING_ACTIVE_INACTIVE;
-            when(p.active & !known != 0, p.active, known)
-        }),
+        rule!(no_bits_outside "wInputActive", |p| p.active, REQUIRED | SL_LOADSENSING_ACTIVE_INACTIVE),
         RuleDef::new("wInputActive", Rule::BitsSet, Unit::Hex, |p| {
             when(p.active & REQUIRED != REQUIRED, p.active, REQUIRED)
         }),
-        RuleDef::new("dwOptions", Rule::NoBitsOutside, Unit::Hex, |p| {
-            let known = SL_OPT_LOADSENSING_OUTSIDE;
-            when(p.options & !known != 0, p.options, known)
-        }),
+        rule!(no_bits_outside "dwOptions", |p| p.options, SL_OPT_LOADSENSING_OUTSIDE),
         RuleDef::new("nRowCount", Rule::AtLeast, Unit::Plain, |p| {
             when(p.count == 0, 0, 1)
         }),
-        RuleDef::new("nRowCount", Rule::AtMost, Unit::Plain, |p| {
-            let max = SL_LOADSENSING_ROWS_MAX;
-            when(p.count > max, p.count, max)
-        }),
+        rule!(at_most "nRowCount" in Plain, |p| p.count, SL_LOADSENSING_ROWS_MAX),
         // The manual's formula, one comparison at a time: "Outside = FALSE: Y1 ≤ WY1 < WY2 ≤ Y2".
         RuleDef::new("nY1", Rule::NotAbove("nWY1"), Unit::Plain, |p| {
             first_row(p, false, |[_, y1, _, wy1, _]| {
@@ -486,10 +478,8 @@ impl<T: Analog, const P1: usize, const PR: usize> Block for FB_LOADSENSING<T, P1
         self.private_mut().stHeader.nState = next;
         Status::Ok
     }
-    /// Only the library's faults lead to ERROR; none of them remains.
-    fn error_remains(&mut self, _inp: &LoadSensingIn<T>) -> bool {
-        false
-    }
+    // Only the library's faults lead to ERROR; none of them remains: `error_remains` keeps
+    // its default (false).
     #[inline(always)]
     fn write_outputs(&mut self) {
         let h = self.private().stHeader;

@@ -224,7 +224,7 @@ macro_rules! window_block {
     ([$($gen:tt)*] $t:ty) => {
         const _: () = {
             use $crate::blocks::analog::{
-                diag_message, magic, Analog, SL_DIAG_VALUE_OVERFLOW, SL_DIAG_VALUE_UNDERFLOW,
+                magic, range_message, Analog, SL_DIAG_VALUE_OVERFLOW, SL_DIAG_VALUE_UNDERFLOW,
             };
             use $crate::blocks::analog::window::{
                 SL_OPT_SLI2_EXCEEDED_SUPPORT, SL_OPT_SLI2_OVERFLOW_ALLOWED, SL_STATE_SLI2_EXCEEDED,
@@ -246,9 +246,7 @@ macro_rules! window_block {
                 const WINDOW_RULES: [$crate::base::reason::RuleDef<WindowParams>; 4] = {
                     use $crate::base::reason::{when, Rule, RuleDef, Unit};
                     [
-                        RuleDef::new("wInputActive", Rule::Equals, Unit::Hex, |p| {
-                            when(p.active != SL_SLI_ACTIVE, p.active, SL_SLI_ACTIVE)
-                        }),
+                        $crate::base::reason::rule!(equals "wInputActive", |p| p.active, SL_SLI_ACTIVE),
                         RuleDef::new("nLimitPos", Rule::AtMost, Unit::Plain, |p| {
                             let max = Diff::<Self>::MAX as i64;
                             when(i64::from(p.limits[0]) > max, p.limits[0], max)
@@ -257,10 +255,7 @@ macro_rules! window_block {
                             let max = Diff::<Self>::MAX as i64;
                             when(i64::from(p.limits[1]) > max, p.limits[1], max)
                         }),
-                        RuleDef::new("dwOptions", Rule::NoBitsOutside, Unit::Hex, |p| {
-                            let known = <Self as WindowFb>::OPTIONS;
-                            when(p.options & !known != 0, p.options, known)
-                        }),
+                        $crate::base::reason::rule!(no_bits_outside "dwOptions", |p| p.options, <Self as WindowFb>::OPTIONS),
                     ]
                 };
             }
@@ -412,10 +407,8 @@ macro_rules! window_block {
                     }
                     Status::Ok
                 }
-                /// A window violation is an event: nothing remains (ABI-2 §12.5, SI4).
-                fn error_remains(&mut self, _inp: &WindowIn) -> bool {
-                    false
-                }
+                // A window violation is an event: nothing remains (ABI-2 §12.5, SI4).
+                // `error_remains` keeps its default (false).
                 /// "Should only exit the RESET state if ErrAck=FALSE and SLI=FALSE" (SI4).
                 fn may_leave_reset(&self, inp: &WindowIn) -> bool {
                     !inp.sli
@@ -424,14 +417,7 @@ macro_rules! window_block {
                 fn write_outputs(&mut self) {
                     let p = *self.private();
                     let h = p.stHeader;
-                    let msg = diag_message(
-                        &h,
-                        &[
-                            (SL_DIAG_VALUE_UNDERFLOW, SL_TEXT_SLI_UNDERFLOW),
-                            (SL_DIAG_VALUE_OVERFLOW, SL_TEXT_SLI_OVERFLOW),
-                        ],
-                        p.adwPar,
-                    );
+                    let msg = range_message(&h, [SL_TEXT_SLI_UNDERFLOW, SL_TEXT_SLI_OVERFLOW], p.adwPar);
                     self.set_outputs(outputs(&p), h.nState, h.wDiag, msg);
                 }
             }

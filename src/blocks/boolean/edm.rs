@@ -10,6 +10,7 @@
 use crate::base::block::BlockInfo;
 use crate::base::envelope::Block;
 use crate::base::header::param_crc;
+use crate::base::reason::rule;
 use crate::base::reason::{when, Rule, RuleDef, Unit};
 use crate::base::types::*;
 use crate::base::{bools, time};
@@ -205,24 +206,16 @@ impl Block for FB_EDM {
     /// Manual §4.9.1: each time ≤ 10000 ms, at least one monitoring on; both inputs are
     /// needed for any monitoring (semantics E1).
     const RULES: &'static [RuleDef<EdmParams>] = &[
-        RuleDef::new("tSwitchOnTime", Rule::AtMost, Unit::Ms, |p| {
-            when(p.on > SL_EDM_TIME_MAX, p.on, SL_EDM_TIME_MAX)
-        }),
-        RuleDef::new("tSwitchOffTime", Rule::AtMost, Unit::Ms, |p| {
-            when(p.off > SL_EDM_TIME_MAX, p.off, SL_EDM_TIME_MAX)
-        }),
+        rule!(at_most "tSwitchOnTime" in Ms, |p| p.on, SL_EDM_TIME_MAX),
+        rule!(at_most "tSwitchOffTime" in Ms, |p| p.off, SL_EDM_TIME_MAX),
         RuleDef::new(
             "tSwitchOnTime or tSwitchOffTime",
             Rule::NotZero,
             Unit::Ms,
             |p| when(p.on == 0 && p.off == 0, 0, 0),
         ),
-        RuleDef::new("wInputActive", Rule::Equals, Unit::Hex, |p| {
-            when(p.active != INPUTS, p.active, INPUTS)
-        }),
-        RuleDef::new("wInputNegated", Rule::NoBitsOutside, Unit::Hex, |p| {
-            when(p.negated & !INPUTS != 0, p.negated, INPUTS)
-        }),
+        rule!(equals "wInputActive", |p| p.active, INPUTS),
+        rule!(no_bits_outside "wInputNegated", |p| p.negated, INPUTS),
     ];
 
     fn store_params(&mut self, p: &EdmParams) {

@@ -197,12 +197,8 @@ macro_rules! flipflop_block {
                 const RULES: &'static [$crate::base::reason::RuleDef<FlipFlopParams>] = {
                     use $crate::base::reason::{when, Rule, RuleDef, Unit};
                     &[
-                        RuleDef::new("wInputActive", Rule::NoBitsOutside, Unit::Hex, |p| {
-                            when(p.active & !INPUTS != 0, p.active, INPUTS)
-                        }),
-                        RuleDef::new("wInputNegated", Rule::NoBitsOutside, Unit::Hex, |p| {
-                            when(p.negated & !INPUTS != 0, p.negated, INPUTS)
-                        }),
+                        $crate::base::reason::rule!(no_bits_outside "wInputActive", |p| p.active, INPUTS),
+                        $crate::base::reason::rule!(no_bits_outside "wInputNegated", |p| p.negated, INPUTS),
                         RuleDef::new("wInputActive", Rule::AnyBitOf, Unit::Hex, |p| {
                             when(p.active == 0, p.active, INPUTS)
                         }),
@@ -255,9 +251,6 @@ macro_rules! flipflop_block {
                     }
                     self.private_mut().stHeader.nState = state_of(set);
                     Status::Ok
-                }
-                fn error_remains(&mut self, _inp: &FlipFlopIn) -> bool {
-                    false
                 }
                 $crate::base::envelope::steady_hooks!();
                 fn write_outputs(&mut self) {

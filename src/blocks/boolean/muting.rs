@@ -16,6 +16,7 @@ use crate::base::bools;
 use crate::base::edm::Edm;
 use crate::base::envelope::Block;
 use crate::base::header::{crc_words, param_crc};
+use crate::base::reason::rule;
 use crate::base::reason::{when, Rule, RuleDef, Unit};
 use crate::base::types::*;
 use crate::base::{pair, time};
@@ -445,42 +446,15 @@ impl Block for FB_MUTING {
     }
 
     const RULES: &'static [RuleDef<MutingParams>] = &[
-        RuleDef::new("wInputActive", Rule::NoBitsOutside, Unit::Hex, |p| {
-            when(p.active & !INPUTS != 0, p.active, INPUTS)
-        }),
-        RuleDef::new("wInputNegated", Rule::NoBitsOutside, Unit::Hex, |p| {
-            when(p.negated & !INPUTS != 0, p.negated, INPUTS)
-        }),
-        RuleDef::new("dwOptions", Rule::NoBitsOutside, Unit::Hex, |p| {
-            when(p.options & !OPTIONS != 0, p.options, OPTIONS)
-        }),
-        RuleDef::new("tDiscTime12", Rule::AtMost, Unit::Ms, |p| {
-            when(p.disc[0] > SL_TIME_PARAM_MAX, p.disc[0], SL_TIME_PARAM_MAX)
-        }),
-        RuleDef::new("tDiscTimeOSSD", Rule::AtMost, Unit::Ms, |p| {
-            when(p.disc[1] > SL_TIME_PARAM_MAX, p.disc[1], SL_TIME_PARAM_MAX)
-        }),
-        RuleDef::new("tDiscTime34", Rule::AtMost, Unit::Ms, |p| {
-            when(p.disc[2] > SL_TIME_PARAM_MAX, p.disc[2], SL_TIME_PARAM_MAX)
-        }),
-        RuleDef::new("tFilterTime", Rule::AtMost, Unit::Ms, |p| {
-            when(
-                p.filter > SL_MUTING_FILTER_TIME_MAX,
-                p.filter,
-                SL_MUTING_FILTER_TIME_MAX,
-            )
-        }),
-        RuleDef::new("tMaxMutingTime", Rule::AtMost, Unit::Ms, |p| {
-            let max = SL_MUTING_MAX_MUTING_TIME_MAX;
-            when(p.max_muting > max, p.max_muting, max)
-        }),
-        RuleDef::new("tMuteDelOutDelay", Rule::AtMost, Unit::Ms, |p| {
-            when(
-                p.delay > SL_MUTING_DELOUT_DELAY_MAX,
-                p.delay,
-                SL_MUTING_DELOUT_DELAY_MAX,
-            )
-        }),
+        rule!(no_bits_outside "wInputActive", |p| p.active, INPUTS),
+        rule!(no_bits_outside "wInputNegated", |p| p.negated, INPUTS),
+        rule!(no_bits_outside "dwOptions", |p| p.options, OPTIONS),
+        rule!(at_most "tDiscTime12" in Ms, |p| p.disc[0], SL_TIME_PARAM_MAX),
+        rule!(at_most "tDiscTimeOSSD" in Ms, |p| p.disc[1], SL_TIME_PARAM_MAX),
+        rule!(at_most "tDiscTime34" in Ms, |p| p.disc[2], SL_TIME_PARAM_MAX),
+        rule!(at_most "tFilterTime" in Ms, |p| p.filter, SL_MUTING_FILTER_TIME_MAX),
+        rule!(at_most "tMaxMutingTime" in Ms, |p| p.max_muting, SL_MUTING_MAX_MUTING_TIME_MAX),
+        rule!(at_most "tMuteDelOutDelay" in Ms, |p| p.delay, SL_MUTING_DELOUT_DELAY_MAX),
         // A discrepancy time belongs to a pair with both inputs active.
         RuleDef::new("tDiscTime12", Rule::Needs("wInputActive"), Unit::Ms, |p| {
             let both = u16::from(M12);

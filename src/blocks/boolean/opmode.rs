@@ -13,6 +13,7 @@ use crate::base::block::BlockInfo;
 use crate::base::bools::{self, Edge};
 use crate::base::envelope::Block;
 use crate::base::header::{param_crc, F_RESTART_PREV, SL_PRIVATE_HEADER};
+use crate::base::reason::rule;
 use crate::base::reason::{when, Rule, RuleDef, Unit};
 use crate::base::restart::{self, Restart};
 use crate::base::time;
@@ -211,18 +212,12 @@ impl Block for FB_OPMODE {
 
     /// Manual §4.3.1 "At least two inputs of FB OPMODE must be connected"; C6 strictness.
     const RULES: &'static [RuleDef<OpmodeParams>] = &[
-        RuleDef::new("tDiscTime", Rule::AtMost, Unit::Ms, |p| {
-            when(p.disc > SL_TIME_PARAM_MAX, p.disc, SL_TIME_PARAM_MAX)
-        }),
-        RuleDef::new("wInputActive", Rule::NoBitsOutside, Unit::Hex, |p| {
-            when(p.active & !0xFF != 0, p.active, 0xFF)
-        }),
+        rule!(at_most "tDiscTime" in Ms, |p| p.disc, SL_TIME_PARAM_MAX),
+        rule!(no_bits_outside "wInputActive", |p| p.active, 0xFF),
         RuleDef::new("wInputActive", Rule::MinBits, Unit::Hex, |p| {
             when(p.active.count_ones() < 2, p.active, 2)
         }),
-        RuleDef::new("dwOptions", Rule::NoBitsOutside, Unit::Hex, |p| {
-            when(p.options & !OPTIONS != 0, p.options, OPTIONS)
-        }),
+        rule!(no_bits_outside "dwOptions", |p| p.options, OPTIONS),
     ];
 
     fn store_params(&mut self, p: &OpmodeParams) {

@@ -460,16 +460,12 @@ macro_rules! timer_block {
                 use $crate::base::reason::{when, Rule, RuleDef, Unit};
                 use $crate::blocks::boolean::timer::{time_base, SL_TIMER_STEPS_MAX};
                 [
-                    RuleDef::new("wInputActive", Rule::Equals, Unit::Hex, |p| {
-                        when(p.active != 1, p.active, 1)
-                    }),
-                    RuleDef::new("wInputNegated", Rule::NoBitsOutside, Unit::Hex, |p| {
-                        when(p.negated & !1 != 0, p.negated, 1)
-                    }),
+                    $crate::base::reason::rule!(equals "wInputActive", |p| p.active, 1),
+                    $crate::base::reason::rule!(no_bits_outside "wInputNegated", |p| p.negated, 1),
                     RuleDef::new("nTimeBase", Rule::OneOf("0, 1, 10, 100, 1000"), Unit::Plain, |p| {
                         when(time_base(0, p.time_base).is_none(), p.time_base, 0)
                     }),
-                    RuleDef::new("tDelay", Rule::NotZero, Unit::Ms, |p| when(p.delay == 0, 0, 0)),
+                    $crate::base::reason::rule!(not_zero "tDelay" in Ms, |p| p.delay),
                     RuleDef::new("tDelay", Rule::AtMost, Unit::Ms, |p| {
                         // Automatic: the largest timebase's range.
                         let b = time_base(p.delay, p.time_base).unwrap_or(1000);
@@ -480,9 +476,7 @@ macro_rules! timer_block {
                         let b = time_base(p.delay, p.time_base).unwrap_or(1000);
                         when(p.delay % b != 0, p.delay, b)
                     }),
-                    RuleDef::new("dwOptions", Rule::NoBitsOutside, Unit::Hex, |p| {
-                        when(p.options & !Self::OPTIONS != 0, p.options, Self::OPTIONS)
-                    }),
+                    $crate::base::reason::rule!(no_bits_outside "dwOptions", |p| p.options, Self::OPTIONS),
                 ]
             };
         }
@@ -612,11 +606,9 @@ macro_rules! timer_block {
                 Status::Ok
             }
 
-            /// The timer blocks have no error condition of their own that could remain: a
-            /// refused elapsed time is discarded when the error is entered.
-            fn error_remains(&mut self, _inp: &TimerIn) -> bool {
-                false
-            }
+            // The timer blocks have no error condition of their own that could remain: a
+            // refused elapsed time is discarded when the error is entered.
+            // `error_remains` keeps its default (false).
 
             $crate::base::envelope::steady_hooks!();
 

@@ -13,6 +13,7 @@ use crate::base::block::{BlockInfo, Private};
 use crate::base::bools;
 use crate::base::envelope::Block;
 use crate::base::header::{param_crc, SL_PRIVATE_HEADER};
+use crate::base::reason::rule;
 use crate::base::reason::{when, Rule, RuleDef, Unit};
 use crate::base::types::*;
 use crate::base::{pair, time};
@@ -273,28 +274,12 @@ impl Block for FB_TWOHAND {
     /// discrepancy time needs both inputs of its pair active (C6); the window is at most
     /// 2500 ms (§4.7.1).
     const RULES: &'static [RuleDef<TwohandParams>] = &[
-        RuleDef::new("tDiscTime12", Rule::AtMost, Unit::Ms, |p| {
-            when(p.disc[0] > SL_TIME_PARAM_MAX, p.disc[0], SL_TIME_PARAM_MAX)
-        }),
-        RuleDef::new("tDiscTime34", Rule::AtMost, Unit::Ms, |p| {
-            when(p.disc[1] > SL_TIME_PARAM_MAX, p.disc[1], SL_TIME_PARAM_MAX)
-        }),
-        RuleDef::new("tDiscTimePairs", Rule::AtMost, Unit::Ms, |p| {
-            when(
-                p.pairs > SL_TWOHAND_PAIRS_TIME_MAX,
-                p.pairs,
-                SL_TWOHAND_PAIRS_TIME_MAX,
-            )
-        }),
-        RuleDef::new("wInputActive", Rule::NoBitsOutside, Unit::Hex, |p| {
-            when(p.active & !0x0F != 0, p.active, 0x0F)
-        }),
-        RuleDef::new("wInputNegated", Rule::NoBitsOutside, Unit::Hex, |p| {
-            when(p.negated & !0x0F != 0, p.negated, 0x0F)
-        }),
-        RuleDef::new("dwOptions", Rule::NoBitsOutside, Unit::Hex, |p| {
-            when(p.options & !OPTIONS != 0, p.options, OPTIONS)
-        }),
+        rule!(at_most "tDiscTime12" in Ms, |p| p.disc[0], SL_TIME_PARAM_MAX),
+        rule!(at_most "tDiscTime34" in Ms, |p| p.disc[1], SL_TIME_PARAM_MAX),
+        rule!(at_most "tDiscTimePairs" in Ms, |p| p.pairs, SL_TWOHAND_PAIRS_TIME_MAX),
+        rule!(no_bits_outside "wInputActive", |p| p.active, 0x0F),
+        rule!(no_bits_outside "wInputNegated", |p| p.negated, 0x0F),
+        rule!(no_bits_outside "dwOptions", |p| p.options, OPTIONS),
         RuleDef::new("tDiscTime12", Rule::Needs("wInputActive"), Unit::Ms, |p| {
             let g = u16::from(GROUP1);
             when(p.disc[0] != 0 && p.active & g != g, p.disc[0], g)

@@ -24,6 +24,7 @@ use crate::base::block::{Private, Registered};
 use crate::base::bools::{self, edge, Edge};
 use crate::base::envelope::Block;
 use crate::base::header::{param_crc, put_crc_words, F_CFG_INVALID, F_RESTART_PREV};
+use crate::base::reason::rule;
 use crate::base::reason::{when, Hit, Rule, RuleDef, Unit};
 use crate::base::time::reached;
 use crate::base::types::*;
@@ -1184,10 +1185,7 @@ impl<T: Unsigned, const P1: usize, const P2: usize> Block for FB_CAMMONITOR<T, P
             let need = SL_CAMMONITOR_ACTIVE_RESET | SL_CAMMONITOR_ACTIVE_POSITION;
             when(p.active & need != need, p.active, need)
         }),
-        RuleDef::new("dwOptions", Rule::NoBitsOutside, Unit::Hex, |p| {
-            let known = SL_OPT_CAMMONITOR_PENDULUM;
-            when(p.options & !known != 0, p.options, known)
-        }),
+        rule!(no_bits_outside "dwOptions", |p| p.options, SL_OPT_CAMMONITOR_PENDULUM),
         RuleDef::new("wInputActive", Rule::BitsClear, Unit::Hex, |p| {
             let unused = SL_CAMMONITOR_ACTIVE_BACKWARDSMOVE
                 | SL_CAMMONITOR_ACTIVE_OVERRUNCAM
@@ -1238,9 +1236,7 @@ impl<T: Unsigned, const P1: usize, const P2: usize> Block for FB_CAMMONITOR<T, P
             let t = p.times[T_MOVE];
             when(t > SL_CAMMONITOR_TIME_MAX, t, SL_CAMMONITOR_TIME_MAX)
         }),
-        RuleDef::new("tStopDetectionTime", Rule::NotZero, Unit::Ms, |p| {
-            when(p.times[T_STOP] == 0, 0, 0)
-        }),
+        rule!(not_zero "tStopDetectionTime" in Ms, |p| p.times[T_STOP]),
         RuleDef::new(
             "tPressStartDelayTime",
             Rule::NotZeroWhen(STARTED),

@@ -20,6 +20,7 @@ use crate::base::block::Private;
 use crate::base::bools::{self, edge};
 use crate::base::envelope::Block;
 use crate::base::header::{param_crc, put_crc_words, F_RESTART_PREV};
+use crate::base::reason::rule;
 use crate::base::reason::{when, Rule, RuleDef, Unit};
 use crate::base::time::elapsed;
 use crate::base::types::*;
@@ -317,10 +318,7 @@ impl Block for FB_SBT {
     /// all at most SL_SBT_TIME_MAX (semantics BT7). The limits come before the multiples:
     /// SL_SBT_TIME_MAX is itself the largest whole second of the type.
     const RULES: &'static [RuleDef<SbtParams>] = &[
-        RuleDef::new("wInputActive", Rule::NoBitsOutside, Unit::Hex, |p| {
-            let known = SBT_REQUIRED | SL_SBT_ACTIVE_MINCURRENTIQ;
-            when(p.active & !known != 0, p.active, known)
-        }),
+        rule!(no_bits_outside "wInputActive", |p| p.active, SBT_REQUIRED | SL_SBT_ACTIVE_MINCURRENTIQ),
         RuleDef::new("wInputActive", Rule::BitsSet, Unit::Hex, |p| {
             when(
                 p.active & SBT_REQUIRED != SBT_REQUIRED,
@@ -328,9 +326,7 @@ impl Block for FB_SBT {
                 SBT_REQUIRED,
             )
         }),
-        RuleDef::new("tBrakeTestInterval", Rule::NotZero, Unit::Ms, |p| {
-            when(p.values[INTERVAL] == 0, 0, 0)
-        }),
+        rule!(not_zero "tBrakeTestInterval" in Ms, |p| p.values[INTERVAL]),
         RuleDef::new("tBrakeTestInterval", Rule::AtMost, Unit::Ms, |p| {
             let t = p.values[INTERVAL];
             when(t > SL_SBT_TIME_MAX, t, SL_SBT_TIME_MAX)
@@ -461,10 +457,8 @@ impl Block for FB_SBT {
         q.adwPar = g.par;
         Status::Ok
     }
-    /// Only the library's faults lead to ERROR; none of them remains.
-    fn error_remains(&mut self, _inp: &SbtIn) -> bool {
-        false
-    }
+    // Only the library's faults lead to ERROR; none of them remains: `error_remains` keeps
+    // its default (false).
     #[inline(always)]
     fn write_outputs(&mut self) {
         let p = *self.private();

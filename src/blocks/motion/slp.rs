@@ -18,6 +18,7 @@ use crate::base::block::Private;
 use crate::base::bools;
 use crate::base::envelope::Block;
 use crate::base::header::{crc_words, param_crc, F_CFG_INVALID};
+use crate::base::reason::rule;
 use crate::base::reason::{when, Rule, RuleDef, Unit};
 use crate::base::types::*;
 use crate::blocks::analog::{diag_message, limit_outputs, magic, LIMIT_ABOVE, LIMIT_BELOW};
@@ -291,10 +292,7 @@ impl Block for FB_SLP {
     /// bits of each limit equal, no other bit or option (ABI-2 §10.5, §11.14); the
     /// parameter-only limit error with the manual's Text ID (semantics PL3).
     const RULES: &'static [RuleDef<SlpParams>] = &[
-        RuleDef::new("wInputActive", Rule::NoBitsOutside, Unit::Hex, |p| {
-            let known = SL_SLP_ACTIVE_SAFEPOSVALID | 0x3F00;
-            when(p.active & !known != 0, p.active, known)
-        }),
+        rule!(no_bits_outside "wInputActive", |p| p.active, SL_SLP_ACTIVE_SAFEPOSVALID | 0x3F00),
         RuleDef::new("wInputActive", Rule::BitsSet, Unit::Hex, |p| {
             let required = SL_SLP_ACTIVE_SAFEPOSVALID
                 | SL_SLP_ACTIVE_SINGLETURNPOS
@@ -313,13 +311,7 @@ impl Block for FB_SLP {
             let m = SL_SLP_ACTIVE_SINGLETURNPOSLL | SL_SLP_ACTIVE_MULTITURNPOSLL;
             when(p.active & m != 0 && p.active & m != m, p.active, m)
         }),
-        RuleDef::new("dwOptions", Rule::NoBitsOutside, Unit::Hex, |p| {
-            when(
-                p.options & !SL_OPT_SLP_SINGLETURN != 0,
-                p.options,
-                SL_OPT_SLP_SINGLETURN,
-            )
-        }),
+        rule!(no_bits_outside "dwOptions", |p| p.options, SL_OPT_SLP_SINGLETURN),
         RuleDef::new(
             "nMultiturnPosLLFix",
             Rule::NotAbove("nMultiturnPosULFix"),
@@ -439,9 +431,7 @@ impl Block for FB_SLP {
             }
         };
         // PositionInLimit switching on is where the latched parameters are verified (C3).
-        if self.corrupt_at_switch_on(
-            state == SL_STATE_RUN && self.private().stHeader.nState != SL_STATE_RUN,
-        ) {
+        if self.corrupt_entering_run(state == SL_STATE_RUN) {
             return Status::Corrupt;
         }
         let h = &mut self.private_mut().stHeader;

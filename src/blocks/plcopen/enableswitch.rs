@@ -154,6 +154,7 @@ crate::impl_sf_block!(SF_EnableSwitch {
     input: EnableSwitchIn,
     reset: Reset,
     consts(s): [],
+    next: |s, inp, reset, _in_state, _t| enable_switch_next(s, inp, reset),
 } {
     #[inline(always)]
     fn decode(&self) -> (Self::In, bool) {
@@ -179,16 +180,6 @@ crate::impl_sf_block!(SF_EnableSwitch {
             },
             p.invalid != 0,
         )
-    }
-    #[inline(always)]
-    fn next(
-        s: Self::Diag,
-        inp: &Self::In,
-        reset: ResetIn,
-        _in_state: u32,
-        _t: [u32; 2],
-    ) -> Self::Diag {
-        enable_switch_next(s, inp, reset)
     }
     #[inline(always)]
     fn write_outputs(&mut self, o: &SfOut) {

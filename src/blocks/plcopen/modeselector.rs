@@ -219,6 +219,7 @@ crate::impl_sf_block!(SF_ModeSelector {
         crate::base::sf::time0_rule("ModeMonitorTime"),
         crate::base::sf::bool1_rule("AutoSetMode"),
     ],
+    next: |s, inp, reset, _in_state, t| mode_selector_next(s, inp, reset, t[1] == 1, t[0]),
 } {
     #[inline(always)]
     fn decode(&self) -> (Self::In, bool) {
@@ -274,16 +275,6 @@ crate::impl_sf_block!(SF_ModeSelector {
             aux |= AUX_OFF_RUNNING;
         }
         self.stPrivate.stHeader.wAux = aux;
-    }
-    #[inline(always)]
-    fn next(
-        s: Self::Diag,
-        inp: &Self::In,
-        reset: ResetIn,
-        _in_state: u32,
-        t: [u32; 2],
-    ) -> Self::Diag {
-        mode_selector_next(s, inp, reset, t[1] == 1, t[0])
     }
     fn write_outputs(&mut self, o: &SfOut) {
         let h = self.stPrivate.stHeader;

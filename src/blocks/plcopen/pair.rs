@@ -115,6 +115,9 @@ macro_rules! pair_block {
             reset: none,
             consts(s): [s.DiscrepancyTime],
             rules: [$crate::base::sf::time0_rule("DiscrepancyTime")],
+            next: |s, inp, _reset, in_state, times| {
+                $crate::blocks::plcopen::pair::next(s, inp, in_state, times[0])
+            },
         } {
             /// An invalid byte reads as the channel's inactive value (NC FALSE, NO TRUE).
             #[inline(always)]
@@ -129,16 +132,6 @@ macro_rules! pair_block {
                     },
                     p.invalid != 0,
                 )
-            }
-            #[inline(always)]
-            fn next(
-                s: Self::Diag,
-                inp: &Self::In,
-                _reset: $crate::base::sf::ResetIn,
-                in_state: u32,
-                times: [u32; 2],
-            ) -> Self::Diag {
-                $crate::blocks::plcopen::pair::next(s, inp, in_state, times[0])
             }
             #[inline(always)]
             fn write_outputs(&mut self, o: &$crate::base::sf::SfOut) {

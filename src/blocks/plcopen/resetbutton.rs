@@ -106,6 +106,7 @@ crate::impl_sf_block!(SF_ResetButton {
         crate::base::sf::time0_rule("TrailingMinimum"),
         crate::base::sf::time1_rule("TrailingMaximum"),
     ],
+    next: |s, _inp, reset, in_state, times| next(s, reset, in_state, times),
 } {
     const HAS_V10: bool = false;
     /// The trailing times are usable (C000 otherwise).
@@ -124,16 +125,6 @@ crate::impl_sf_block!(SF_ResetButton {
     #[inline(always)]
     fn decode(&self) -> (Self::In, bool) {
         ((), false)
-    }
-    #[inline(always)]
-    fn next(
-        s: Self::Diag,
-        _inp: &(),
-        reset: ResetIn,
-        in_state: u32,
-        times: [u32; 2],
-    ) -> Self::Diag {
-        next(s, reset, in_state, times)
     }
     fn first(times: [u32; 2]) -> Self::Diag {
         crate::base::sf::first_checked::<Self>(

@@ -120,6 +120,9 @@ macro_rules! restart_interlock_block {
             input: $crate::blocks::plcopen::restart::RestartIn,
             reset: Reset,
             consts(s): [],
+            next: |s, inp, reset, _in_state, _times| {
+                $crate::blocks::plcopen::restart::next(s, inp, reset)
+            },
         } {
             const HAS_V10: bool = $v10;
             #[inline(always)]
@@ -135,16 +138,6 @@ macro_rules! restart_interlock_block {
                     },
                     p.invalid != 0,
                 )
-            }
-            #[inline(always)]
-            fn next(
-                s: Self::Diag,
-                inp: &Self::In,
-                reset: $crate::base::sf::ResetIn,
-                _in_state: u32,
-                _times: [u32; 2],
-            ) -> Self::Diag {
-                $crate::blocks::plcopen::restart::next(s, inp, reset)
             }
             #[inline(always)]
             fn write_outputs(&mut self, o: &$crate::base::sf::SfOut) {

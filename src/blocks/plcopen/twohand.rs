@@ -176,6 +176,9 @@ macro_rules! two_hand_block {
             input: $crate::blocks::plcopen::twohand::TwoHandIn,
             reset: none,
             consts(s): [],
+            next: |s, inp, _reset, in_state, _times| {
+                $crate::blocks::plcopen::twohand::$next(s, inp, in_state)
+            },
         } {
             #[inline(always)]
             fn decode(&self) -> (Self::In, bool) {
@@ -188,16 +191,6 @@ macro_rules! two_hand_block {
                     },
                     p.invalid != 0,
                 )
-            }
-            #[inline(always)]
-            fn next(
-                s: Self::Diag,
-                inp: &Self::In,
-                _reset: $crate::base::sf::ResetIn,
-                in_state: u32,
-                _times: [u32; 2],
-            ) -> Self::Diag {
-                $crate::blocks::plcopen::twohand::$next(s, inp, in_state)
             }
             #[inline(always)]
             fn write_outputs(&mut self, o: &$crate::base::sf::SfOut) {
