@@ -102,7 +102,7 @@ macro_rules! crc_words {
 pub(crate) use crc_words;
 
 /// Writes 32-bit values as CRC words from the start of `dst`, two each, low half first
-/// (the order of [`crc_words!`]).
+/// (the order of `crc_words!`).
 #[inline]
 pub fn put_crc_words(dst: &mut [u16], values: impl IntoIterator<Item = u32>) {
     for (w, v) in dst.chunks_exact_mut(2).zip(values) {
