@@ -286,6 +286,30 @@ pub struct BlockInfo {
     pub diag_values: &'static [(u16, &'static str)],
 }
 
+impl BlockInfo {
+    /// The info of a block with the states `S`, no diag texts yet: `BlockInfo::of::<TonState>(
+    /// SL_TYPE_TON, "TON")`, then `.diag(…)` / `.diag_values(…)` where the manual has texts.
+    pub const fn of<S: BlockState>(tag: u16, name: &'static str) -> Self {
+        Self {
+            tag,
+            name,
+            states: S::TABLE,
+            diag: &[],
+            diag_values: &[],
+        }
+    }
+    /// The same info with the manual's diag bit texts.
+    pub const fn diag(mut self, diag: &'static [(u16, &'static str)]) -> Self {
+        self.diag = diag;
+        self
+    }
+    /// The same info with the manual's diag value texts.
+    pub const fn diag_values(mut self, values: &'static [(u16, &'static str)]) -> Self {
+        self.diag_values = values;
+        self
+    }
+}
+
 /// Declares a block's states once: `pub enum $name` whose values are the manual's status
 /// values, and its table (value, NUL-terminated name) that `BlockInfo::states`,
 /// `sl_state_str` and the envelope's state check read. The common states are named by

@@ -55,6 +55,24 @@ pub trait Block: Instance + crate::base::block::Registered {
     fn params_intact(&self) -> bool {
         self.latched_crc() == self.header().wParamCrc
     }
+    /// Where an output switches on (`switching_on`), the latched parameters are verified
+    /// (docs/semantics.md C3): when they no longer match their CRC the block enters ERROR
+    /// with `SL_DIAG_CORRUPT` and this returns `true` (the caller returns `Status::Corrupt`).
+    /// [`Self::corrupt_at_switch_on`] for an output that switches on with RUN: it switches
+    /// on when `on` and the block is not in RUN yet.
+    #[inline(always)]
+    fn corrupt_entering_run(&mut self, on: bool) -> bool {
+        let entering = on && self.header().nState != SL_STATE_RUN;
+        self.corrupt_at_switch_on(entering)
+    }
+    #[inline(always)]
+    fn corrupt_at_switch_on(&mut self, switching_on: bool) -> bool {
+        let corrupt = switching_on && !self.params_intact();
+        if corrupt {
+            self.header_mut().enter_error(SL_DIAG_CORRUPT);
+        }
+        corrupt
+    }
 
     /// Reads the input bytes, updates the block's edge memories, and tells whether a byte
     /// was an invalid BOOL.
@@ -69,8 +87,12 @@ pub trait Block: Instance + crate::base::block::Registered {
     fn stop(&mut self) {
         self.header_mut().nState = SL_STATE_STOP;
     }
-    /// In ERROR: does a block-specific error condition remain (ABI §7 "Errors")?
-    fn error_remains(&mut self, inp: &Self::In) -> bool;
+    /// In ERROR: does a block-specific error condition remain (ABI §7 "Errors")? Default:
+    /// none (the block's errors are events, or faults of the library only).
+    #[inline(always)]
+    fn error_remains(&mut self, _inp: &Self::In) -> bool {
+        false
+    }
     /// In RESET once ErrAck has fallen, bRun TRUE: may the block start now? A block that
     /// may not holds RESET and starts in the first call in which it may while ErrAck stays
     /// FALSE (FB SLI: "should only exit the RESET state if ErrAck=FALSE and SLI=FALSE").
@@ -648,6 +670,38 @@ pub fn force_error<B: Block>(fb: &mut B) {
     fb.write_outputs();
     fb.header_mut().seal();
 }
+
+/// The parameter plumbing of a [`Block`] whose latched copy keeps each parameter as the
+/// user wrote it, inside its `impl Block`: `type Params`, `live_params` (from the struct's
+/// fields: a field, `[a, b]` an array of fields, `bits [a, b]` an array of analog fields as
+/// 32-bit patterns), `latched_params` and `store_params` (a field of the private state):
+/// `params_map!(SpeedParams { interval: tTimeInterval => tInterval, … });`.
+macro_rules! params_map {
+    (@live $s:ident bits [$($f:ident),+]) => { [$($s.$f.to_bits()),+] };
+    (@live $s:ident [$($f:ident),+]) => { [$($s.$f),+] };
+    (@live $s:ident $f:ident) => { $s.$f };
+    ($params:ident { $($name:ident: $live:tt $([$($more:tt)*])? => $($latched:ident).+),+ $(,)? }) => {
+        type Params = $params;
+        #[inline(always)]
+        fn live_params(&self) -> $params {
+            $params {
+                $($name: $crate::base::envelope::params_map!(@live self $live $([$($more)*])?)),+
+            }
+        }
+        #[inline(always)]
+        fn latched_params(&self) -> $params {
+            let p = self.private();
+            $params {
+                $($name: p.$($latched).+),+
+            }
+        }
+        fn store_params(&mut self, p: &$params) {
+            let q = self.private_mut();
+            $(q.$($latched).+ = p.$name;)+
+        }
+    };
+}
+pub(crate) use params_map;
 
 /// The names a family's `Block` impl uses, for its expansion in a member's file.
 macro_rules! family_prelude {

@@ -87,6 +87,30 @@ pub fn param_crc(magic: u16, active: u8, negated: u8, options: u16, times: &[u16
     d.finalize()
 }
 
+/// The CRC words of a list of latched parameters, in order: `u16 x` is one word, `u32 x`
+/// two (low half first), as [`param_crc`] reads them: `crc_words![u16 p.wActive, u32 min]`.
+macro_rules! crc_words {
+    (@ [$($w:expr),*]) => { [$($w),*] };
+    (@ [$($w:expr),*] u16 $v:expr $(, $($rest:tt)*)?) => {
+        $crate::base::header::crc_words!(@ [$($w,)* $v] $($($rest)*)?)
+    };
+    (@ [$($w:expr),*] u32 $v:expr $(, $($rest:tt)*)?) => {
+        $crate::base::header::crc_words!(@ [$($w,)* ($v) as u16, (($v) >> 16) as u16] $($($rest)*)?)
+    };
+    ($($t:tt)*) => { $crate::base::header::crc_words!(@ [] $($t)*) };
+}
+pub(crate) use crc_words;
+
+/// Writes 32-bit values as CRC words from the start of `dst`, two each, low half first
+/// (the order of `crc_words!`).
+#[inline]
+pub fn put_crc_words(dst: &mut [u16], values: impl IntoIterator<Item = u32>) {
+    for (w, v) in dst.chunks_exact_mut(2).zip(values) {
+        w[0] = v as u16;
+        w[1] = (v >> 16) as u16;
+    }
+}
+
 /// Equal when every field is, as the derived comparison would say, but always inline: the
 /// fixed-point test of the full cycle compares whole private states, and the compiler merges
 /// the field compares of the header with those of the fields after it only when it sees

@@ -485,13 +485,9 @@ macro_rules! impl_sf_member {
         impl $crate::base::block::Registered for $ty {
             // The name is the struct's (the PLCopen FB name), the DiagCode texts are its
             // states'; the group-level states are the family's.
-            const INFO: $crate::base::block::BlockInfo = $crate::base::block::BlockInfo {
-                tag: $tag,
-                name: stringify!($ty),
-                states: <$crate::base::sf::SfPhase as $crate::base::block::BlockState>::TABLE,
-                diag: &[],
-                diag_values: <<$ty as $crate::base::sf::SfBlock>::Diag as $crate::base::sf::DiagState>::TEXTS,
-            };
+            const INFO: $crate::base::block::BlockInfo =
+                $crate::base::block::BlockInfo::of::<$crate::base::sf::SfPhase>($tag, stringify!($ty))
+                    .diag_values(<<$ty as $crate::base::sf::SfBlock>::Diag as $crate::base::sf::DiagState>::TEXTS);
             type State = $crate::base::sf::SfPhase;
             const FIELDS: &'static [$crate::base::block::Field] = &[
                 $($crate::impl_member!(@field $i, Input, io_kind),)*

@@ -192,6 +192,41 @@ impl<P> RuleDef<P> {
     }
 }
 
+/// The common rules in one line each, over the parameter value `|p| v`:
+/// `rule!(equals "wInputActive", |p| p.active, WANT)` (hex, v = WANT),
+/// `rule!(no_bits_outside "dwOptions", |p| p.options, KNOWN)` (hex, no bit outside KNOWN),
+/// `rule!(at_most "tDelay" in Ms, |p| p.delay, MAX)` (v ≤ MAX),
+/// `rule!(not_zero "tDelay" in Ms, |p| p.delay)` (v ≠ 0).
+macro_rules! rule {
+    (@ $field:literal, $rule:ident, $unit:ident, |$p:ident| $test:expr) => {
+        $crate::base::reason::RuleDef::new(
+            $field,
+            $crate::base::reason::Rule::$rule,
+            $crate::base::reason::Unit::$unit,
+            |$p| $test,
+        )
+    };
+    (equals $field:literal, |$p:ident| $v:expr, $want:expr) => {
+        $crate::base::reason::rule!(@ $field, Equals, Hex, |$p| {
+            let want = $want;
+            $crate::base::reason::when($v != want, $v, want)
+        })
+    };
+    (no_bits_outside $field:literal, |$p:ident| $v:expr, $known:expr) => {
+        $crate::base::reason::rule!(@ $field, NoBitsOutside, Hex, |$p| {
+            let known = $known;
+            $crate::base::reason::when($v & !known != 0, $v, known)
+        })
+    };
+    (at_most $field:literal in $unit:ident, |$p:ident| $v:expr, $max:expr) => {
+        $crate::base::reason::rule!(@ $field, AtMost, $unit, |$p| $crate::base::reason::when($v > $max, $v, $max))
+    };
+    (not_zero $field:literal in $unit:ident, |$p:ident| $v:expr) => {
+        $crate::base::reason::rule!(@ $field, NotZero, $unit, |$p| $crate::base::reason::when($v == 0, 0, 0))
+    };
+}
+pub(crate) use rule;
+
 /// The first rule of `rules` that `p` breaks, with its index in `rules`.
 pub fn check<P>(rules: &[RuleDef<P>], p: &P) -> Option<Refusal> {
     rules.iter().enumerate().find_map(|(i, r)| {

@@ -14,7 +14,7 @@
 //! range (`SL_SF_DIAG_*`, docs/semantics.md PO1–PO10).
 
 use super::bools::{self, Edge};
-use super::header::{param_crc, F_RESTART_PREV, F_TIME_VALID, SL_PRIVATE_HEADER};
+use super::header::{crc_words, param_crc, F_RESTART_PREV, F_TIME_VALID, SL_PRIVATE_HEADER};
 use super::layout::Zeroed;
 use super::reason::{when, Refusal, Rule, RuleDef, Unit};
 use super::time;
@@ -275,8 +275,9 @@ pub const fn magic(tag: u16) -> u16 {
 /// The part of an `impl SfBlock` that every `SF_` block writes alike, declared once: the
 /// magic from the type tag, the state and input types, the `Reset` byte (`none`: a block
 /// without Reset reads 0), the constants latched at activation (`consts(s): [..]`, up to
-/// two words read from `s`, the block; their number is `TIMES`) and their rules; the rest
-/// of the impl (decode, next, write_outputs, …) follows in braces.
+/// two words read from `s`, the block; their number is `TIMES`) and their rules, and a
+/// `next` that hands over to the block's transition function (`next: |s, inp, reset,
+/// in_state, times| …`); the rest of the impl (decode, write_outputs, …) follows in braces.
 #[macro_export]
 #[doc(hidden)]
 macro_rules! impl_sf_block {
@@ -291,7 +292,8 @@ macro_rules! impl_sf_block {
         input: $in:ty,
         reset: $reset:ident,
         consts($s:ident): [$($t:expr),* $(,)?]
-        $(, rules: [$($rule:expr),* $(,)?])? $(,)?
+        $(, rules: [$($rule:expr),* $(,)?])?
+        $(, next: |$ns:pat_param, $ni:pat_param, $nr:pat_param, $nis:pat_param, $nt:pat_param| $next:expr)? $(,)?
     } { $($body:tt)* }) => {
         impl $crate::base::sf::SfBlock for $ty {
             const MAGIC: u16 = $crate::base::sf::magic($tag);
@@ -311,6 +313,18 @@ macro_rules! impl_sf_block {
                     times: $crate::impl_sf_block!(@times $($t),*),
                 }
             }
+            $(
+                #[inline(always)]
+                fn next(
+                    $ns: Self::Diag,
+                    $ni: &Self::In,
+                    $nr: $crate::base::sf::ResetIn,
+                    $nis: u32,
+                    $nt: [u32; 2],
+                ) -> Self::Diag {
+                    $next
+                }
+            )?
             $($body)*
         }
     };
@@ -443,7 +457,7 @@ fn consts_crc<B: SfBlock>(p: &SL_SF_PRIVATE) -> u16 {
         p.stHeader.nActive,
         0,
         0,
-        &[a as u16, (a >> 16) as u16, b as u16, (b >> 16) as u16],
+        &crc_words![u32 a, u32 b],
     )
 }
 
@@ -656,6 +670,42 @@ pub trait SfSteady: SfBlock {
     fn timed(&self) -> bool {
         true
     }
+}
+
+/// The fast path of an `SF_` block ([`SfSteady`]), from the BOOL fields of its key in key
+/// order and when a monitored time runs: never (no `timed`), in the listed states
+/// (`timed: State::{A, B}`), or where an expression over the block says so
+/// (`timed: |b| …`).
+#[macro_export]
+#[doc(hidden)]
+macro_rules! sf_steady {
+    ($ty:ty: [$($f:ident),+ $(,)?]) => {
+        impl $crate::base::sf::SfSteady for $ty {
+            $crate::sf_steady!(@key $($f),+);
+            #[inline(always)]
+            fn timed(&self) -> bool {
+                false
+            }
+        }
+    };
+    ($ty:ty: [$($f:ident),+ $(,)?], timed: $state:ident::{$($s:ident),+ $(,)?}) => {
+        $crate::sf_steady!($ty: [$($f),+], timed: |b| matches!(b.diag_state(), Some($($state::$s)|+)));
+    };
+    ($ty:ty: [$($f:ident),+ $(,)?], timed: |$b:ident| $timed:expr) => {
+        impl $crate::base::sf::SfSteady for $ty {
+            $crate::sf_steady!(@key $($f),+);
+            fn timed(&self) -> bool {
+                let $b = self;
+                $timed
+            }
+        }
+    };
+    (@key $($f:ident),+) => {
+        #[inline(always)]
+        fn steady_key(&self) -> Option<u16> {
+            $crate::base::sf::key([$(&self.$f),+])
+        }
+    };
 }
 
 /// The key of BOOL bytes: byte i as bit i; `None` when one is neither 0 nor 1. Built byte

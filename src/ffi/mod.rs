@@ -1616,6 +1616,20 @@ pub unsafe extern "C" fn sl_fsoe_frame_decode(
     })
 }
 
+/// Writes an instance's initial values (`value`) into `*p`: SL_OK, or the status of a
+/// refused pointer (SL_E_NULL / SL_E_ALIGNMENT).
+fn write_defaults<B>(p: *mut B, value: fn() -> B) -> i32 {
+    ffi_boundary!(SL_E_INTERNAL, {
+        match instance(p) {
+            Ok(p) => {
+                *p = value();
+                SL_OK
+            }
+            Err(e) => e,
+        }
+    })
+}
+
 /// Writes PLCopen's initial values into `*p`: ResetRequested TRUE, TrailingMinimum 350 ms
 /// (T#350ms), TrailingMaximum 2000 ms (T#2s); every other field, the private state
 /// included, zero (a power-up instance: call `sl_sf_resetbutton_init` next). A zeroed
@@ -1629,15 +1643,10 @@ pub unsafe extern "C" fn sl_fsoe_frame_decode(
 pub unsafe extern "C" fn sl_sf_resetbutton_defaults(
     p: *mut crate::blocks::plcopen::resetbutton::SF_ResetButton,
 ) -> i32 {
-    ffi_boundary!(SL_E_INTERNAL, {
-        match instance(p) {
-            Ok(p) => {
-                *p = crate::blocks::plcopen::resetbutton::SF_ResetButton::plcopen_defaults();
-                SL_OK
-            }
-            Err(e) => e,
-        }
-    })
+    write_defaults(
+        p,
+        crate::blocks::plcopen::resetbutton::SF_ResetButton::plcopen_defaults,
+    )
 }
 
 /// Writes PLCopen's initial values into `*p`: S_ChannelNO TRUE (its SAFEBOOL initial
@@ -1651,13 +1660,8 @@ pub unsafe extern "C" fn sl_sf_resetbutton_defaults(
 pub unsafe extern "C" fn sl_sf_antivalent_defaults(
     p: *mut crate::blocks::plcopen::antivalent::SF_Antivalent,
 ) -> i32 {
-    ffi_boundary!(SL_E_INTERNAL, {
-        match instance(p) {
-            Ok(p) => {
-                *p = crate::blocks::plcopen::antivalent::SF_Antivalent::plcopen_defaults();
-                SL_OK
-            }
-            Err(e) => e,
-        }
-    })
+    write_defaults(
+        p,
+        crate::blocks::plcopen::antivalent::SF_Antivalent::plcopen_defaults,
+    )
 }

@@ -320,6 +320,32 @@ fn check(c: &SL_FSOE_CONN, rx: &[u8], fresh: bool) -> (Status, SL_FSOE_FRAME, u1
 }
 
 /// Commits an accepted frame: chain, the partner's sequence number and old CRC.
+/// A Connection or Parameter frame the slave receives (`rx`: the check's status, the
+/// frame, its sequence number): accepted, or refused with a Reset when the state does not
+/// expect it now (`unexpected`), it is for another connection, or its CRC fails, in this
+/// order.
+fn take(
+    c: &mut SL_FSOE_CONN,
+    tx: &mut Tx,
+    rx: (Status, &SL_FSOE_FRAME, u16),
+    unexpected: bool,
+    conn_ok: bool,
+) -> bool {
+    let (st, f, seq) = rx;
+    let refusal = if unexpected {
+        SL_FSOE_RESET_INVALID_CMD
+    } else if !conn_ok {
+        SL_FSOE_RESET_INVALID_CONNID
+    } else if st != Status::Ok {
+        SL_FSOE_RESET_INVALID_CRC
+    } else {
+        accept(c, f, seq);
+        return true;
+    };
+    go_reset(c, tx, refusal);
+    false
+}
+
 fn accept(c: &mut SL_FSOE_CONN, f: &SL_FSOE_FRAME, seq: u16) {
     let master = is_master(c);
     let p = &mut c.stPrivate;
@@ -623,16 +649,9 @@ fn slave_rx(c: &mut SL_FSOE_CONN, tx: &mut Tx, rx: &[u8], run: bool) {
             } else {
                 c.stPrivate.nRxCount >= 4
             };
-            if done {
-                return go_reset(c, tx, SL_FSOE_RESET_INVALID_CMD);
+            if !take(c, tx, (st, &f, seq), done, conn_ok) {
+                return;
             }
-            if !conn_ok {
-                return go_reset(c, tx, SL_FSOE_RESET_INVALID_CONNID);
-            }
-            if st != Status::Ok {
-                return go_reset(c, tx, SL_FSOE_RESET_INVALID_CRC);
-            }
-            accept(c, &f, seq);
             if first {
                 c.stPrivate.nRxCount = 0;
                 c.stPrivate.nSessionConnId = f.nConnId;
@@ -671,16 +690,10 @@ fn slave_rx(c: &mut SL_FSOE_CONN, tx: &mut Tx, rx: &[u8], run: bool) {
             echo(c, tx, &f);
         }
         (SL_FSOE_STATE_PARAMETER, SL_FSOE_CMD_PARAMETER) => {
-            if u32::from(c.stPrivate.nRxCount) >= expected_para(c) {
-                return go_reset(c, tx, SL_FSOE_RESET_INVALID_CMD);
+            let all_in = u32::from(c.stPrivate.nRxCount) >= expected_para(c);
+            if !take(c, tx, (st, &f, seq), all_in, conn_ok) {
+                return;
             }
-            if !conn_ok {
-                return go_reset(c, tx, SL_FSOE_RESET_INVALID_CONNID);
-            }
-            if st != Status::Ok {
-                return go_reset(c, tx, SL_FSOE_RESET_INVALID_CRC);
-            }
-            accept(c, &f, seq);
             store_para(c, &f);
             echo(c, tx, &f);
         }

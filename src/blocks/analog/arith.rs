@@ -14,13 +14,16 @@
 
 #![allow(non_camel_case_types)] // the ABI's names (FB_ADD_INT …)
 
-use super::{diag_message, magic, Analog, SL_DIAG_VALUE_OVERFLOW, SL_DIAG_VALUE_UNDERFLOW};
+use super::{
+    magic, range_message, set_computed, value_if, Analog, SL_DIAG_VALUE_OVERFLOW,
+    SL_DIAG_VALUE_UNDERFLOW,
+};
 use crate::base::block::BlockInfo;
 use crate::base::block::FieldType;
 use crate::base::envelope::Block;
 use crate::base::header::param_crc;
-use crate::base::layout::Zeroed;
-use crate::base::reason::{when, Rule, RuleDef, Unit};
+use crate::base::reason::rule;
+use crate::base::reason::RuleDef;
 use crate::base::types::*;
 use core::marker::PhantomData;
 
@@ -51,63 +54,43 @@ pub struct Mul;
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct Div;
 
-impl ArithOp for Add {
-    const TAGS: [u16; 4] = [
-        SL_TYPE_ADD_INT,
-        SL_TYPE_ADD_UINT,
-        SL_TYPE_ADD_DINT,
-        SL_TYPE_ADD_UDINT,
-    ];
-    const NAMES: [&'static str; 4] = ["ADD_INT", "ADD_UINT", "ADD_DINT", "ADD_UDINT"];
-    fn apply(a: i128, b: i128, _: u16) -> i128 {
-        a + b
-    }
-}
-
-impl ArithOp for Sub {
-    const TAGS: [u16; 4] = [
-        SL_TYPE_SUB_INT,
-        SL_TYPE_SUB_UINT,
-        SL_TYPE_SUB_DINT,
-        SL_TYPE_SUB_UDINT,
-    ];
-    const NAMES: [&'static str; 4] = ["SUB_INT", "SUB_UINT", "SUB_DINT", "SUB_UDINT"];
-    fn apply(a: i128, b: i128, _: u16) -> i128 {
-        a - b
-    }
-}
-
-impl ArithOp for Mul {
-    const TAGS: [u16; 4] = [
-        SL_TYPE_MUL_INT,
-        SL_TYPE_MUL_UINT,
-        SL_TYPE_MUL_DINT,
-        SL_TYPE_MUL_UDINT,
-    ];
-    const NAMES: [&'static str; 4] = ["MUL_INT", "MUL_UINT", "MUL_DINT", "MUL_UDINT"];
-    fn apply(a: i128, b: i128, _: u16) -> i128 {
-        a * b
-    }
-}
-
-impl ArithOp for Div {
-    const TAGS: [u16; 4] = [
-        SL_TYPE_DIV_INT,
-        SL_TYPE_DIV_UINT,
-        SL_TYPE_DIV_DINT,
-        SL_TYPE_DIV_UDINT,
-    ];
-    const NAMES: [&'static str; 4] = ["DIV_INT", "DIV_UINT", "DIV_DINT", "DIV_UDINT"];
-    const ROUNDING: bool = true;
-    fn apply(a: i128, b: i128, rounding: u16) -> i128 {
-        if b == 0 {
-            // Manual §4.19: "If the AnalogIn2 input is 0, the AnalogOut output is set to 0.
-            // In this case no error is output."
-            return 0;
+/// An operation's variant tags, its registry names (`ADD_INT` …), whether it has
+/// `nRounding`, and its exact result.
+macro_rules! arith_op {
+    ($op:ident $name:literal [$($tag:ident),+] $(rounding $rnd:literal)?;
+     |$a:ident, $b:ident, $r:pat_param| $body:expr) => {
+        impl ArithOp for $op {
+            $(const ROUNDING: bool = $rnd;)?
+            const TAGS: [u16; 4] = [$($tag),+];
+            const NAMES: [&'static str; 4] = [
+                concat!($name, "_INT"),
+                concat!($name, "_UINT"),
+                concat!($name, "_DINT"),
+                concat!($name, "_UDINT"),
+            ];
+            fn apply($a: i128, $b: i128, $r: u16) -> i128 {
+                $body
+            }
         }
-        divide(a, b, rounding)
-    }
+    };
 }
+
+arith_op!(Add "ADD" [SL_TYPE_ADD_INT, SL_TYPE_ADD_UINT, SL_TYPE_ADD_DINT, SL_TYPE_ADD_UDINT];
+    |a, b, _| a + b);
+arith_op!(Sub "SUB" [SL_TYPE_SUB_INT, SL_TYPE_SUB_UINT, SL_TYPE_SUB_DINT, SL_TYPE_SUB_UDINT];
+    |a, b, _| a - b);
+arith_op!(Mul "MUL" [SL_TYPE_MUL_INT, SL_TYPE_MUL_UINT, SL_TYPE_MUL_DINT, SL_TYPE_MUL_UDINT];
+    |a, b, _| a * b);
+arith_op!(Div "DIV" [SL_TYPE_DIV_INT, SL_TYPE_DIV_UINT, SL_TYPE_DIV_DINT, SL_TYPE_DIV_UDINT]
+rounding true;
+|a, b, rounding| {
+    if b == 0 {
+        // Manual §4.19: "If the AnalogIn2 input is 0, the AnalogOut output is set to 0.
+        // In this case no error is output."
+        return 0;
+    }
+    divide(a, b, rounding)
+});
 
 /// `a / b` (b ≠ 0) rounded per `rounding` (docs/semantics.md A2).
 pub fn divide(a: i128, b: i128, rounding: u16) -> i128 {
@@ -155,13 +138,7 @@ const DIAG_VALUES: &[(u16, &str)] =
     super::range_diag_values!("AnalogOut", "The output AnalogOut is correct", "");
 
 const fn info<O: ArithOp, T: Analog>() -> BlockInfo {
-    BlockInfo {
-        tag: O::TAGS[T::VARIANT],
-        name: O::NAMES[T::VARIANT],
-        states: <ArithState as crate::base::block::BlockState>::TABLE,
-        diag: &[],
-        diag_values: DIAG_VALUES,
-    }
+    BlockInfo::of::<ArithState>(O::TAGS[T::VARIANT], O::NAMES[T::VARIANT]).diag_values(DIAG_VALUES)
 }
 
 crate::impl_member!([O: ArithOp, T: Analog, const P1: usize, const P2: usize] FB_ARITH<O, T, P1, P2> {
@@ -257,16 +234,8 @@ pub struct ArithIn {
 
 /// The parameter rules of the arithmetic blocks; the second (`nRounding`) is DIV's only.
 const ARITH_RULES: [RuleDef<ArithParams>; 2] = [
-    RuleDef::new("wInputActive", Rule::Equals, Unit::Hex, |p| {
-        when(p.active != ARITH_ACTIVE, p.active, ARITH_ACTIVE)
-    }),
-    RuleDef::new("nRounding", Rule::AtMost, Unit::Plain, |p| {
-        when(
-            p.rounding > SL_ROUNDING_ROUND,
-            p.rounding,
-            SL_ROUNDING_ROUND,
-        )
-    }),
+    rule!(equals "wInputActive", |p| p.active, ARITH_ACTIVE),
+    rule!(at_most "nRounding" in Plain, |p| p.rounding, SL_ROUNDING_ROUND),
 ];
 
 impl<B: ArithFb + crate::base::envelope::Instance + crate::base::block::Registered> Block for B {
@@ -332,22 +301,12 @@ impl<B: ArithFb + crate::base::envelope::Instance + crate::base::block::Register
     fn step(&mut self, inp: &ArithIn, _now: u32) -> Status {
         // Entering RUN is where the output starts to carry a value: verify the latched
         // parameters first (C3).
-        let entering = self.private().stHeader.nState != SL_STATE_RUN;
-        if entering && inp.result.is_ok() && !self.params_intact() {
-            self.private_mut().stHeader.enter_error(SL_DIAG_CORRUPT);
+        if self.corrupt_entering_run(inp.result.is_ok()) {
             return Status::Corrupt;
         }
         let p = self.private_mut();
-        match inp.result {
-            Ok(v) => {
-                p.dwOut = v;
-                p.stHeader.nState = SL_STATE_RUN;
-            }
-            Err(diag) => {
-                p.dwOut = 0;
-                p.adwPar = [inp.a, inp.b];
-                p.stHeader.enter_error(diag);
-            }
+        if set_computed(&mut p.stHeader, &mut p.dwOut, inp.result).is_err() {
+            p.adwPar = [inp.a, inp.b];
         }
         Status::Ok
     }
@@ -360,19 +319,12 @@ impl<B: ArithFb + crate::base::envelope::Instance + crate::base::block::Register
         let h = p.stHeader;
         let run = h.nState == SL_STATE_RUN;
         let error = h.nState == SL_STATE_ERROR;
-        let msg = diag_message(
+        let msg = range_message(
             &h,
-            &[
-                (SL_DIAG_VALUE_UNDERFLOW, SL_TEXT_ARITH_UNDERFLOW),
-                (SL_DIAG_VALUE_OVERFLOW, SL_TEXT_ARITH_OVERFLOW),
-            ],
+            [SL_TEXT_ARITH_UNDERFLOW, SL_TEXT_ARITH_OVERFLOW],
             p.adwPar,
         );
-        let out = if run {
-            FieldType::from_bits(p.dwOut)
-        } else {
-            B::T::ZERO
-        };
+        let out = value_if::<B::T>(run, p.dwOut);
         self.set_outputs(error, out, h.nState, h.wDiag, msg);
     }
 }

@@ -13,8 +13,9 @@
 
 use super::{magic, Analog};
 use crate::base::block::{Private, Registered};
-use crate::base::envelope::Block;
-use crate::base::header::param_crc;
+use crate::base::envelope::{params_map, Block};
+use crate::base::header::{crc_words, param_crc};
+use crate::base::reason::rule;
 use crate::base::reason::{when, Rule, RuleDef, Unit};
 use crate::base::time;
 use crate::base::types::*;
@@ -90,28 +91,14 @@ pub fn consensus(values: &[i128], k: usize, dev: i128) -> Option<usize> {
 
 impl<T: Analog, const P1: usize, const P2: usize> Block for FB_COMPARE<T, P1, P2> {
     const MAGIC: u16 = magic(<Self as Registered>::INFO.tag);
-    type Params = CompareParams;
+    params_map!(CompareParams {
+        tolerance: tToleranceTime => tTolerance,
+        deviation: nAllowedDeviation => dwDeviation,
+        architecture: nArchitecture => wArchitecture,
+        active: wInputActive => wActive,
+    });
     type In = CompareIn;
 
-    #[inline(always)]
-    fn live_params(&self) -> CompareParams {
-        CompareParams {
-            tolerance: self.tToleranceTime,
-            deviation: self.nAllowedDeviation,
-            architecture: self.nArchitecture,
-            active: self.wInputActive,
-        }
-    }
-    #[inline(always)]
-    fn latched_params(&self) -> CompareParams {
-        let p = self.private();
-        CompareParams {
-            tolerance: p.tTolerance,
-            deviation: p.dwDeviation,
-            architecture: p.wArchitecture,
-            active: p.wActive,
-        }
-    }
     /// Architecture 2, 3 or 5 with exactly its inputs active; Tolerance Time ≤ 65,535 ms
     /// (ABI-2 §12.9); any deviation (semantics CP4).
     const RULES: &'static [RuleDef<CompareParams>] = &[
@@ -129,21 +116,8 @@ impl<T: Analog, const P1: usize, const P2: usize> Block for FB_COMPARE<T, P1, P2
             let want = ((1u16 << p.architecture.min(15)) - 1) << 8;
             when(p.active != want, p.active, want)
         }),
-        RuleDef::new("tToleranceTime", Rule::AtMost, Unit::Ms, |p| {
-            when(
-                p.tolerance > SL_TIME_PARAM_MAX,
-                p.tolerance,
-                SL_TIME_PARAM_MAX,
-            )
-        }),
+        rule!(at_most "tToleranceTime" in Ms, |p| p.tolerance, SL_TIME_PARAM_MAX),
     ];
-    fn store_params(&mut self, p: &CompareParams) {
-        let q = self.private_mut();
-        q.tTolerance = p.tolerance;
-        q.dwDeviation = p.deviation;
-        q.wArchitecture = p.architecture;
-        q.wActive = p.active;
-    }
     fn latched_crc(&self) -> u16 {
         let p = self.private();
         param_crc(
@@ -151,13 +125,7 @@ impl<T: Analog, const P1: usize, const P2: usize> Block for FB_COMPARE<T, P1, P2
             0,
             0,
             p.wArchitecture,
-            &[
-                p.tTolerance as u16,
-                (p.tTolerance >> 16) as u16,
-                p.dwDeviation as u16,
-                (p.dwDeviation >> 16) as u16,
-                p.wActive,
-            ],
+            &crc_words![u32 p.tTolerance, u32 p.dwDeviation, u16 p.wActive],
         )
     }
     #[inline(always)]
@@ -197,8 +165,7 @@ impl<T: Analog, const P1: usize, const P2: usize> Block for FB_COMPARE<T, P1, P2
         let state = self.private().stHeader.nState;
         if let Some(x) = inp.x {
             // IsValid switching on (from SAFE) is where the latched parameters are verified (C3).
-            if state == SL_STATE_SAFE && !self.params_intact() {
-                self.private_mut().stHeader.enter_error(SL_DIAG_CORRUPT);
+            if self.corrupt_at_switch_on(state == SL_STATE_SAFE) {
                 return Status::Corrupt;
             }
             let p = self.private_mut();
@@ -225,10 +192,8 @@ impl<T: Analog, const P1: usize, const P2: usize> Block for FB_COMPARE<T, P1, P2
         }
         Status::Ok
     }
-    /// Only the library's faults lead to ERROR (CompOut cannot leave its type); none remains.
-    fn error_remains(&mut self, _inp: &CompareIn) -> bool {
-        false
-    }
+    // Only the library's faults lead to ERROR (CompOut cannot leave its type); none remains.
+    // `error_remains` keeps its default (false).
     #[inline(always)]
     fn write_outputs(&mut self) {
         let p = *self.private();

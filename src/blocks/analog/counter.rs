@@ -11,12 +11,15 @@
 
 #![allow(non_camel_case_types)] // the ABI's names (FB_COUNTER_INT …)
 
-use super::{diag_message, magic, Analog, SL_DIAG_VALUE_OVERFLOW, SL_DIAG_VALUE_UNDERFLOW};
+use super::{
+    magic, range_message, value_if, Analog, SL_DIAG_VALUE_OVERFLOW, SL_DIAG_VALUE_UNDERFLOW,
+};
 use crate::base::block::{Private, Registered};
 use crate::base::bools;
 use crate::base::envelope::Block;
-use crate::base::header::param_crc;
-use crate::base::reason::{when, Rule, RuleDef, Unit};
+use crate::base::header::{crc_words, param_crc};
+use crate::base::reason::rule;
+use crate::base::reason::RuleDef;
 use crate::base::types::*;
 
 include!(concat!(env!("OUT_DIR"), "/abi/blocks/analog/counter.rs"));
@@ -92,18 +95,8 @@ impl<T: Analog, const P1: usize, const P2: usize> Block for FB_COUNTER<T, P1, P2
         }
     }
     /// Bits 0–2 only (ABI-2 §11.5); PresetValue and CounterLimit take every value of `T`.
-    const RULES: &'static [RuleDef<CounterParams>] = &[RuleDef::new(
-        "wInputActive",
-        Rule::NoBitsOutside,
-        Unit::Hex,
-        |p| {
-            when(
-                p.active & !SL_COUNTER_ACTIVE_INPUTS != 0,
-                p.active,
-                SL_COUNTER_ACTIVE_INPUTS,
-            )
-        },
-    )];
+    const RULES: &'static [RuleDef<CounterParams>] =
+        &[rule!(no_bits_outside "wInputActive", |p| p.active, SL_COUNTER_ACTIVE_INPUTS)];
     fn store_params(&mut self, p: &CounterParams) {
         let q = self.private_mut();
         q.stHeader.nActive = p.active as u8;
@@ -117,12 +110,7 @@ impl<T: Analog, const P1: usize, const P2: usize> Block for FB_COUNTER<T, P1, P2
             p.stHeader.nActive,
             0,
             0,
-            &[
-                preset as u16,
-                (preset >> 16) as u16,
-                limit as u16,
-                (limit >> 16) as u16,
-            ],
+            &crc_words![u32 preset, u32 limit],
         )
     }
     /// Inactive inputs read FALSE; an invalid byte reads FALSE and makes no edge (ABI-2
@@ -155,8 +143,7 @@ impl<T: Analog, const P1: usize, const P2: usize> Block for FB_COUNTER<T, P1, P2
     fn start(&mut self, inp: &CounterIn, _now: u32) {
         // Entering RUN is where the outputs start to carry values: verify the latched
         // parameters first (C3).
-        if !self.params_intact() {
-            self.private_mut().stHeader.enter_error(SL_DIAG_CORRUPT);
+        if self.corrupt_at_switch_on(true) {
             return;
         }
         let v = self.start_value(inp);
@@ -187,10 +174,8 @@ impl<T: Analog, const P1: usize, const P2: usize> Block for FB_COUNTER<T, P1, P2
         }
         Status::Ok
     }
-    /// A range error is an event: nothing remains after it (ABI-2 §11.5, semantics K3).
-    fn error_remains(&mut self, _inp: &CounterIn) -> bool {
-        false
-    }
+    // A range error is an event: nothing remains after it (ABI-2 §11.5, semantics K3).
+    // `error_remains` keeps its default (false).
     crate::base::envelope::steady_hooks!();
 
     #[inline(always)]
@@ -198,11 +183,7 @@ impl<T: Analog, const P1: usize, const P2: usize> Block for FB_COUNTER<T, P1, P2
         let p = *self.private();
         let h = p.stHeader;
         let run = h.nState == SL_STATE_RUN;
-        let count = if run {
-            T::from_bits(p.dwCount)
-        } else {
-            T::ZERO
-        };
+        let count = value_if::<T>(run, p.dwCount);
         let limit = T::from_bits(p.adwParam[1]);
         self.bError = u8::from(h.nState == SL_STATE_ERROR);
         self.bCounterOut = u8::from(run && count.wide() >= limit.wide());
@@ -210,12 +191,9 @@ impl<T: Analog, const P1: usize, const P2: usize> Block for FB_COUNTER<T, P1, P2
         self.nActValue = count;
         self.nState = h.nState;
         self.nDiag = h.wDiag;
-        (self.nDiagTextId, self.dwDiagPar2, self.dwDiagPar3) = diag_message(
+        (self.nDiagTextId, self.dwDiagPar2, self.dwDiagPar3) = range_message(
             &h,
-            &[
-                (SL_DIAG_VALUE_UNDERFLOW, SL_TEXT_COUNTER_UNDERFLOW),
-                (SL_DIAG_VALUE_OVERFLOW, SL_TEXT_COUNTER_OVERFLOW),
-            ],
+            [SL_TEXT_COUNTER_UNDERFLOW, SL_TEXT_COUNTER_OVERFLOW],
             p.adwPar,
         );
     }

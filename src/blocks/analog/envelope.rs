@@ -16,8 +16,9 @@
 use super::{diag_message, magic, Analog};
 use crate::base::block::{Private, Registered};
 use crate::base::bools;
-use crate::base::envelope::Block;
-use crate::base::header::param_crc;
+use crate::base::envelope::{params_map, Block};
+use crate::base::header::{crc_words, param_crc};
+use crate::base::reason::rule;
 use crate::base::reason::{when, Rule, RuleDef, Unit};
 use crate::base::time;
 use crate::base::types::*;
@@ -126,52 +127,26 @@ const fn output_on(state: u8) -> bool {
 
 impl<T: Analog, const P1: usize> Block for FB_ENVELOPE<T, P1> {
     const MAGIC: u16 = magic(<Self as Registered>::INFO.tag);
-    type Params = EnvelopeParams;
+    params_map!(EnvelopeParams {
+        active: wInputActive => wActive,
+        values: [tTimeAfterInTarget, tMaxTime, nTargetValue, nOffset] => adwParam,
+    });
     type In = EnvelopeIn;
 
-    #[inline(always)]
-    fn live_params(&self) -> EnvelopeParams {
-        EnvelopeParams {
-            active: self.wInputActive,
-            values: [
-                self.tTimeAfterInTarget,
-                self.tMaxTime,
-                self.nTargetValue,
-                self.nOffset,
-            ],
-        }
-    }
-    #[inline(always)]
-    fn latched_params(&self) -> EnvelopeParams {
-        let p = self.private();
-        EnvelopeParams {
-            active: p.wActive,
-            values: p.adwParam,
-        }
-    }
     /// Both inputs active and nothing else (ABI-2 §10.5); both times ≤ 65 535 ms, MaxTime
     /// ≥ 1 (ABI-2 §11.11, §12.9).
     const RULES: &'static [RuleDef<EnvelopeParams>] = &[
-        RuleDef::new("wInputActive", Rule::Equals, Unit::Hex, |p| {
-            when(p.active != SL_ENVELOPE_ACTIVE, p.active, SL_ENVELOPE_ACTIVE)
-        }),
+        rule!(equals "wInputActive", |p| p.active, SL_ENVELOPE_ACTIVE),
         RuleDef::new("tTimeAfterInTarget", Rule::AtMost, Unit::Ms, |p| {
             let t = p.values[IN_TARGET_TIME];
             when(t > SL_ENVELOPE_TIME_MAX, t, SL_ENVELOPE_TIME_MAX)
         }),
-        RuleDef::new("tMaxTime", Rule::NotZero, Unit::Ms, |p| {
-            when(p.values[MAX_TIME] == 0, 0, 0)
-        }),
+        rule!(not_zero "tMaxTime" in Ms, |p| p.values[MAX_TIME]),
         RuleDef::new("tMaxTime", Rule::AtMost, Unit::Ms, |p| {
             let t = p.values[MAX_TIME];
             when(t > SL_ENVELOPE_TIME_MAX, t, SL_ENVELOPE_TIME_MAX)
         }),
     ];
-    fn store_params(&mut self, p: &EnvelopeParams) {
-        let q = self.private_mut();
-        q.wActive = p.active;
-        q.adwParam = p.values;
-    }
     fn latched_crc(&self) -> u16 {
         let p = self.private();
         let [a, b, c, d] = p.adwParam;
@@ -180,16 +155,7 @@ impl<T: Analog, const P1: usize> Block for FB_ENVELOPE<T, P1> {
             p.wActive as u8,
             (p.wActive >> 8) as u8,
             0,
-            &[
-                a as u16,
-                (a >> 16) as u16,
-                b as u16,
-                (b >> 16) as u16,
-                c as u16,
-                (c >> 16) as u16,
-                d as u16,
-                (d >> 16) as u16,
-            ],
+            &crc_words![u32 a, u32 b, u32 c, u32 d],
         )
     }
     /// An invalid SafeFunction byte reads FALSE, the request for the monitored stop (ABI-2
@@ -232,17 +198,14 @@ impl<T: Analog, const P1: usize> Block for FB_ENVELOPE<T, P1> {
             return Status::Ok;
         }
         // SafeFunctionOut switching on is where the latched parameters are verified (C3).
-        if output_on(next) && !output_on(state) && !self.params_intact() {
-            self.private_mut().stHeader.enter_error(SL_DIAG_CORRUPT);
+        if self.corrupt_at_switch_on(output_on(next) && !output_on(state)) {
             return Status::Corrupt;
         }
         self.private_mut().stHeader.nState = next;
         Status::Ok
     }
-    /// Envelope violations are events: nothing remains (ABI-2 §12.5).
-    fn error_remains(&mut self, _inp: &EnvelopeIn) -> bool {
-        false
-    }
+    // Envelope violations are events: nothing remains (ABI-2 §12.5); `error_remains` keeps
+    // its default (false).
     #[inline(always)]
     fn write_outputs(&mut self) {
         let p = *self.private();

@@ -11,11 +11,12 @@
 
 #![allow(non_camel_case_types)] // the ABI's names (FB_LIMIT_INT …)
 
-use super::{diag_message, magic, Analog};
+use super::{diag_message, limit_outputs, magic, Analog, LIMIT_ABOVE, LIMIT_BELOW};
 use crate::base::block::{Private, Registered};
-use crate::base::envelope::Block;
-use crate::base::header::param_crc;
+use crate::base::envelope::{params_map, Block};
 use crate::base::header::F_CFG_INVALID;
+use crate::base::header::{crc_words, param_crc};
+use crate::base::reason::rule;
 use crate::base::reason::{check, when, Rule, RuleDef, Unit};
 use crate::base::types::*;
 
@@ -67,10 +68,6 @@ pub struct LimitIn {
     max: i128,
 }
 
-/// `wAux` in SAFE: AnalogIn below the minimum / above the maximum.
-const BELOW: u16 = 1;
-const ABOVE: u16 = 2;
-
 /// The value of a `T` stored as its pattern.
 fn wide<T: Analog>(bits: u32) -> i128 {
     T::from_bits(bits).wide()
@@ -78,33 +75,17 @@ fn wide<T: Analog>(bits: u32) -> i128 {
 
 impl<T: Analog, const P1: usize> Block for FB_LIMIT<T, P1> {
     const MAGIC: u16 = magic(<Self as Registered>::INFO.tag);
-    type Params = LimitParams;
+    params_map!(LimitParams {
+        active: wInputActive => wActive,
+        limits: bits [nMinimumValue, nMaximumValue] => adwLimit,
+    });
     type In = LimitIn;
 
-    #[inline(always)]
-    fn live_params(&self) -> LimitParams {
-        LimitParams {
-            active: self.wInputActive,
-            limits: [self.nMinimumValue.to_bits(), self.nMaximumValue.to_bits()],
-        }
-    }
-    #[inline(always)]
-    fn latched_params(&self) -> LimitParams {
-        let p = self.private();
-        LimitParams {
-            active: p.wActive,
-            limits: p.adwLimit,
-        }
-    }
     /// AnalogIn active, no bit beyond 8–10 (ABI-2 §10.5); both limits from the parameters
     /// with Minimum > Maximum is a parameter-only check (ABI-2 §12.8, semantics L2), with the
     /// manual's Text ID 0x4090.
     const RULES: &'static [RuleDef<LimitParams>] = &[
-        RuleDef::new("wInputActive", Rule::NoBitsOutside, Unit::Hex, |p| {
-            let known =
-                SL_LIMIT_ACTIVE_ANALOGIN | SL_LIMIT_ACTIVE_MINVALUE | SL_LIMIT_ACTIVE_MAXVALUE;
-            when(p.active & !known != 0, p.active, known)
-        }),
+        rule!(no_bits_outside "wInputActive", |p| p.active, SL_LIMIT_ACTIVE_ANALOGIN | SL_LIMIT_ACTIVE_MINVALUE | SL_LIMIT_ACTIVE_MAXVALUE),
         RuleDef::new("wInputActive", Rule::BitsSet, Unit::Hex, |p| {
             let need = SL_LIMIT_ACTIVE_ANALOGIN;
             when(p.active & need == 0, p.active, need)
@@ -122,11 +103,6 @@ impl<T: Analog, const P1: usize> Block for FB_LIMIT<T, P1> {
         )
         .text_id(SL_TEXT_LIMIT_MIN_ABOVE_MAX),
     ];
-    fn store_params(&mut self, p: &LimitParams) {
-        let q = self.private_mut();
-        q.wActive = p.active;
-        q.adwLimit = p.limits;
-    }
     fn latched_crc(&self) -> u16 {
         let p = self.private();
         let [min, max] = p.adwLimit;
@@ -135,13 +111,7 @@ impl<T: Analog, const P1: usize> Block for FB_LIMIT<T, P1> {
             0,
             0,
             0,
-            &[
-                p.wActive,
-                min as u16,
-                (min >> 16) as u16,
-                max as u16,
-                (max >> 16) as u16,
-            ],
+            &crc_words![u16 p.wActive, u32 min, u32 max],
         )
     }
     #[inline(always)]
@@ -176,8 +146,7 @@ impl<T: Analog, const P1: usize> Block for FB_LIMIT<T, P1> {
         }
         let in_limit = inp.min <= inp.value && inp.value <= inp.max;
         // InLimit switching on is where the latched parameters are verified (C3).
-        if in_limit && self.private().stHeader.nState != SL_STATE_RUN && !self.params_intact() {
-            self.private_mut().stHeader.enter_error(SL_DIAG_CORRUPT);
+        if self.corrupt_entering_run(in_limit) {
             return Status::Corrupt;
         }
         let h = &mut self.private_mut().stHeader;
@@ -186,7 +155,11 @@ impl<T: Analog, const P1: usize> Block for FB_LIMIT<T, P1> {
             h.wAux = 0;
         } else {
             h.nState = SL_STATE_SAFE;
-            h.wAux = if inp.value < inp.min { BELOW } else { ABOVE };
+            h.wAux = if inp.value < inp.min {
+                LIMIT_BELOW
+            } else {
+                LIMIT_ABOVE
+            };
         }
         Status::Ok
     }
@@ -198,16 +171,7 @@ impl<T: Analog, const P1: usize> Block for FB_LIMIT<T, P1> {
     fn write_outputs(&mut self) {
         let p = *self.private();
         let h = p.stHeader;
-        let (error, run, safe) = match h.nState {
-            SL_STATE_ERROR => (true, false, false),
-            SL_STATE_RUN => (false, true, false),
-            SL_STATE_SAFE => (false, false, true),
-            _ => (false, false, false),
-        };
-        self.bError = u8::from(error);
-        self.bInLimit = u8::from(run);
-        self.bBelowMin = u8::from(safe && h.wAux == BELOW);
-        self.bAboveMax = u8::from(safe && h.wAux == ABOVE);
+        [self.bError, self.bInLimit, self.bBelowMin, self.bAboveMax] = limit_outputs(&h);
         self.nState = h.nState;
         self.nDiag = h.wDiag;
         (self.nDiagTextId, self.dwDiagPar2, self.dwDiagPar3) = diag_message(

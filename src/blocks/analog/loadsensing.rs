@@ -15,7 +15,8 @@
 use super::{magic, Analog};
 use crate::base::block::{Private, Registered};
 use crate::base::envelope::Block;
-use crate::base::header::{param_crc, SL_PRIVATE_HEADER};
+use crate::base::header::{param_crc, put_crc_words, SL_PRIVATE_HEADER};
+use crate::base::reason::rule;
 use crate::base::reason::{when, Hit, Rule, RuleDef, Unit};
 use crate::base::types::*;
 
@@ -342,24 +343,15 @@ impl<T: Analog, const P1: usize, const PR: usize> Block for FB_LOADSENSING<T, P1
     /// the Outside option; 1…25 rows; in the rows used, X strictly increasing and each row
     /// ordered as the manual's formula for its Outside setting (ABI-2 §11.8, semantics LS5).
     const RULES: &'static [RuleDef<LoadSensingParams<T>>] = &[
-        RuleDef::new("wInputActive", Rule::NoBitsOutside, Unit::Hex, |p| {
-            let known = REQUIRED | SL_LOADSENSING_ACTIVE_INACTIVE;
-            when(p.active & !known != 0, p.active, known)
-        }),
+        rule!(no_bits_outside "wInputActive", |p| p.active, REQUIRED | SL_LOADSENSING_ACTIVE_INACTIVE),
         RuleDef::new("wInputActive", Rule::BitsSet, Unit::Hex, |p| {
             when(p.active & REQUIRED != REQUIRED, p.active, REQUIRED)
         }),
-        RuleDef::new("dwOptions", Rule::NoBitsOutside, Unit::Hex, |p| {
-            let known = SL_OPT_LOADSENSING_OUTSIDE;
-            when(p.options & !known != 0, p.options, known)
-        }),
+        rule!(no_bits_outside "dwOptions", |p| p.options, SL_OPT_LOADSENSING_OUTSIDE),
         RuleDef::new("nRowCount", Rule::AtLeast, Unit::Plain, |p| {
             when(p.count == 0, 0, 1)
         }),
-        RuleDef::new("nRowCount", Rule::AtMost, Unit::Plain, |p| {
-            let max = SL_LOADSENSING_ROWS_MAX;
-            when(p.count > max, p.count, max)
-        }),
+        rule!(at_most "nRowCount" in Plain, |p| p.count, SL_LOADSENSING_ROWS_MAX),
         // The manual's formula, one comparison at a time: "Outside = FALSE: Y1 ≤ WY1 < WY2 ≤ Y2".
         RuleDef::new("nY1", Rule::NotAbove("nWY1"), Unit::Plain, |p| {
             first_row(p, false, |[_, y1, _, wy1, _]| {
@@ -422,11 +414,7 @@ impl<T: Analog, const P1: usize, const PR: usize> Block for FB_LOADSENSING<T, P1
             .aRow
             .iter()
             .flat_map(|r| [r.nX, r.nY1, r.nY2, r.nWY1, r.nWY2]);
-        for (w, v) in words[3..].chunks_exact_mut(2).zip(values) {
-            let bits = v.to_bits();
-            w[0] = bits as u16;
-            w[1] = (bits >> 16) as u16;
-        }
+        put_crc_words(&mut words[3..], values.map(|v| v.to_bits()));
         param_crc(Self::MAGIC, 0, 0, p.dwOptions as u16, &words)
     }
     /// An active Inactive byte that is not 0 or 1 reads TRUE (INACTIVE, Valid 0: ABI-2
@@ -458,17 +446,14 @@ impl<T: Analog, const P1: usize, const PR: usize> Block for FB_LOADSENSING<T, P1
             evaluate(&p.aRow[..count], outside, inp.x, inp.y)
         };
         // Valid switching on is where the latched parameters are verified (C3).
-        if valid(next) && !valid(p.stHeader.nState) && !self.params_intact() {
-            self.private_mut().stHeader.enter_error(SL_DIAG_CORRUPT);
+        if self.corrupt_at_switch_on(valid(next) && !valid(p.stHeader.nState)) {
             return Status::Corrupt;
         }
         self.private_mut().stHeader.nState = next;
         Status::Ok
     }
-    /// Only the library's faults lead to ERROR; none of them remains.
-    fn error_remains(&mut self, _inp: &LoadSensingIn<T>) -> bool {
-        false
-    }
+    // Only the library's faults lead to ERROR; none of them remains: `error_remains` keeps
+    // its default (false).
     #[inline(always)]
     fn write_outputs(&mut self) {
         let h = self.private().stHeader;

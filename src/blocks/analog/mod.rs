@@ -18,7 +18,7 @@ pub mod window;
 use crate::base::block::{Dir, Field, FieldType};
 use crate::base::header::SL_PRIVATE_HEADER;
 use crate::base::layout::Zeroed;
-use crate::base::types::{LIBRARY_DIAG_BITS, SL_STATE_ERROR};
+use crate::base::types::{LIBRARY_DIAG_BITS, SL_STATE_ERROR, SL_STATE_RUN, SL_STATE_SAFE};
 
 /// An integer type of the analog variants (ABI-2 §10.3).
 pub trait Analog:
@@ -71,6 +71,52 @@ pub fn in_range<T: Analog>(v: i128) -> Result<T, u16> {
     }
 }
 
+/// The state and output of a block whose output is a computed value (the arithmetic blocks,
+/// SCALE): RUN with the value in `out`, or ERROR with the diag value of its range error and
+/// `out` 0.
+#[inline(always)]
+pub fn set_computed(
+    h: &mut SL_PRIVATE_HEADER,
+    out: &mut u32,
+    result: Result<u32, u16>,
+) -> Result<(), u16> {
+    match result {
+        Ok(v) => {
+            *out = v;
+            h.nState = SL_STATE_RUN;
+            Ok(())
+        }
+        Err(diag) => {
+            *out = 0;
+            h.enter_error(diag);
+            Err(diag)
+        }
+    }
+}
+
+/// `wAux` of a limit monitor (LIMIT, SLP) in SAFE: the value is below the lower limit.
+pub(crate) const LIMIT_BELOW: u16 = 1;
+/// `wAux` of a limit monitor in SAFE: the value is above the upper limit.
+pub(crate) const LIMIT_ABOVE: u16 = 2;
+
+/// The BOOL outputs of a limit monitor (LIMIT, SLP) from its header: Error (ERROR), in
+/// limit (RUN), BelowMin and AboveMax (SAFE, by `wAux`).
+#[inline(always)]
+pub fn limit_outputs(h: &SL_PRIVATE_HEADER) -> [u8; 4] {
+    let (error, run, safe) = match h.nState {
+        SL_STATE_ERROR => (true, false, false),
+        SL_STATE_RUN => (false, true, false),
+        SL_STATE_SAFE => (false, false, true),
+        _ => (false, false, false),
+    };
+    [
+        u8::from(error),
+        u8::from(run),
+        u8::from(safe && h.wAux == LIMIT_BELOW),
+        u8::from(safe && h.wAux == LIMIT_ABOVE),
+    ]
+}
+
 /// Magic of the private header of an analog block: its type tag in the analog family's
 /// range, so that every variant (the layouts differ) has its own.
 pub const fn magic(tag: u16) -> u16 {
@@ -85,6 +131,32 @@ pub fn diag_message(h: &SL_PRIVATE_HEADER, texts: &[(u16, u16)], par: [u32; 2]) 
     match texts.iter().find(|(v, _)| *v == value) {
         Some((_, text)) if h.nState == SL_STATE_ERROR => (*text, par[0], par[1]),
         _ => (0, 0, 0),
+    }
+}
+
+/// [`diag_message`] of a block whose diag values are the range errors: the Text IDs of
+/// underflow and overflow.
+#[inline(always)]
+pub fn range_message(h: &SL_PRIVATE_HEADER, texts: [u16; 2], par: [u32; 2]) -> (u16, u32, u32) {
+    let [under, over] = texts;
+    diag_message(
+        h,
+        &[
+            (SL_DIAG_VALUE_UNDERFLOW, under),
+            (SL_DIAG_VALUE_OVERFLOW, over),
+        ],
+        par,
+    )
+}
+
+/// The analog output of a block: the value whose 32-bit pattern is `bits` where it carries
+/// one (`on`: RUN), else 0.
+#[inline(always)]
+pub fn value_if<T: Analog>(on: bool, bits: u32) -> T {
+    if on {
+        T::from_bits(bits)
+    } else {
+        T::ZERO
     }
 }
 
@@ -105,13 +177,7 @@ macro_rules! variant_info {
             $tag,
             concat!($name, "_", stringify!($v)),
         )),+]);
-        $crate::base::block::BlockInfo {
-            tag,
-            name,
-            states: <$state as $crate::base::block::BlockState>::TABLE,
-            diag: &[],
-            diag_values: $diag_values,
-        }
+        $crate::base::block::BlockInfo::of::<$state>(tag, name).diag_values($diag_values)
     }};
     (@index INT) => { 0 };
     (@index UINT) => { 1 };

@@ -15,12 +15,13 @@
 #![allow(non_camel_case_types)] // the ABI's names (FB_SCALE_INT …)
 
 use super::arith::{divide, SL_ROUNDING_ROUND};
-use super::{diag_message, in_range, magic, Analog};
+use super::{diag_message, in_range, magic, set_computed, Analog};
 use super::{SL_DIAG_VALUE_OVERFLOW, SL_DIAG_VALUE_UNDERFLOW};
 use crate::base::block::{Private, Registered};
-use crate::base::envelope::Block;
-use crate::base::header::param_crc;
-use crate::base::reason::{when, Rule, RuleDef, Unit};
+use crate::base::envelope::{params_map, Block};
+use crate::base::header::{crc_words, param_crc};
+use crate::base::reason::rule;
+use crate::base::reason::RuleDef;
 use crate::base::time;
 use crate::base::types::*;
 
@@ -132,107 +133,38 @@ fn scale<T: Analog, T32: Analog>(x: T, p: &SL_SCALE_PRIVATE) -> Result<u32, u16>
 
 impl<T: Analog, T32: Analog, const P1: usize, const P2: usize> Block for FB_SCALE<T, T32, P1, P2> {
     const MAGIC: u16 = magic(<Self as Registered>::INFO.tag);
-    type Params = ScaleParams;
+    params_map!(ScaleParams {
+        watchdog: tWatchdog => tWatchdog,
+        factors: bits [nNumerator, nDenominator, nOffset] => adwFactor,
+        options: dwOptions => dwOptions,
+        rounding: nRounding => wRounding,
+        active: wInputActive => wActive,
+        negated: wInputNegated => wNegated,
+    });
     type In = ScaleIn;
 
-    #[inline(always)]
-    fn live_params(&self) -> ScaleParams {
-        ScaleParams {
-            watchdog: self.tWatchdog,
-            factors: [
-                self.nNumerator.to_bits(),
-                self.nDenominator.to_bits(),
-                self.nOffset.to_bits(),
-            ],
-            options: self.dwOptions,
-            rounding: self.nRounding,
-            active: self.wInputActive,
-            negated: self.wInputNegated,
-        }
-    }
-    #[inline(always)]
-    fn latched_params(&self) -> ScaleParams {
-        let p = self.private();
-        ScaleParams {
-            watchdog: p.tWatchdog,
-            factors: p.adwFactor,
-            options: p.dwOptions,
-            rounding: p.wRounding,
-            active: p.wActive,
-            negated: p.wNegated,
-        }
-    }
     /// AnalogIn active and nothing else, negation of AnalogIn only, the one option, a
     /// known rounding, watchdog ≤ 65,535 ms (ABI-2 §12.9) and Denominator ≠ 0 (a
     /// parameter-only check, ABI-2 §12.8, semantics SC2).
     const RULES: &'static [RuleDef<ScaleParams>] = &[
-        RuleDef::new("wInputActive", Rule::Equals, Unit::Hex, |p| {
-            let want = SL_SCALE_ACTIVE_ANALOGIN;
-            when(p.active != want, p.active, want)
-        }),
-        RuleDef::new("wInputNegated", Rule::NoBitsOutside, Unit::Hex, |p| {
-            let known = SL_SCALE_NEGATE_ANALOGIN;
-            when(p.negated & !known != 0, p.negated, known)
-        }),
-        RuleDef::new("dwOptions", Rule::NoBitsOutside, Unit::Hex, |p| {
-            let known = SL_OPT_SCALE_DIVISION_FIRST;
-            when(p.options & !known != 0, p.options, known)
-        }),
-        RuleDef::new("nRounding", Rule::AtMost, Unit::Plain, |p| {
-            when(
-                p.rounding > SL_ROUNDING_ROUND,
-                p.rounding,
-                SL_ROUNDING_ROUND,
-            )
-        }),
-        RuleDef::new("tWatchdog", Rule::AtMost, Unit::Ms, |p| {
-            when(
-                p.watchdog > SL_TIME_PARAM_MAX,
-                p.watchdog,
-                SL_TIME_PARAM_MAX,
-            )
-        }),
-        RuleDef::new("nDenominator", Rule::NotZero, Unit::Plain, |p| {
-            when(p.factors[1] == 0, 0, 0)
-        }),
+        rule!(equals "wInputActive", |p| p.active, SL_SCALE_ACTIVE_ANALOGIN),
+        rule!(no_bits_outside "wInputNegated", |p| p.negated, SL_SCALE_NEGATE_ANALOGIN),
+        rule!(no_bits_outside "dwOptions", |p| p.options, SL_OPT_SCALE_DIVISION_FIRST),
+        rule!(at_most "nRounding" in Plain, |p| p.rounding, SL_ROUNDING_ROUND),
+        rule!(at_most "tWatchdog" in Ms, |p| p.watchdog, SL_TIME_PARAM_MAX),
+        rule!(not_zero "nDenominator" in Plain, |p| p.factors[1]),
     ];
-    fn store_params(&mut self, p: &ScaleParams) {
-        let q = self.private_mut();
-        q.tWatchdog = p.watchdog;
-        q.adwFactor = p.factors;
-        q.dwOptions = p.options;
-        q.wRounding = p.rounding;
-        q.wActive = p.active;
-        q.wNegated = p.negated;
-    }
     fn latched_crc(&self) -> u16 {
         let p = self.private();
         let [num, den, off] = p.adwFactor;
-        let words = |v: u32| [v as u16, (v >> 16) as u16];
-        let [w0, w1] = words(p.tWatchdog);
-        let [n0, n1] = words(num);
-        let [d0, d1] = words(den);
-        let [o0, o1] = words(off);
-        let [x0, x1] = words(p.dwOptions);
         param_crc(
             Self::MAGIC,
             0,
             0,
             0,
-            &[
-                w0,
-                w1,
-                n0,
-                n1,
-                d0,
-                d1,
-                o0,
-                o1,
-                x0,
-                x1,
-                p.wRounding,
-                p.wActive,
-                p.wNegated,
+            &crc_words![
+                u32 p.tWatchdog, u32 num, u32 den, u32 off, u32 p.dwOptions,
+                u16 p.wRounding, u16 p.wActive, u16 p.wNegated
             ],
         )
     }
@@ -259,16 +191,12 @@ impl<T: Analog, T32: Analog, const P1: usize, const P2: usize> Block for FB_SCAL
     fn step(&mut self, inp: &ScaleIn, now: u32) -> Status {
         // Entering RUN is where the output starts to carry a value: verify the latched
         // parameters first (C3).
-        let entering = self.private().stHeader.nState != SL_STATE_RUN;
-        if entering && inp.result.is_ok() && !self.params_intact() {
-            self.private_mut().stHeader.enter_error(SL_DIAG_CORRUPT);
+        if self.corrupt_entering_run(inp.result.is_ok()) {
             return Status::Corrupt;
         }
         let p = self.private_mut();
-        match inp.result {
-            Ok(v) => {
-                p.dwOut = v;
-                p.stHeader.nState = SL_STATE_RUN;
+        match set_computed(&mut p.stHeader, &mut p.dwOut, inp.result) {
+            Ok(()) => {
                 if inp.raw != p.dwLastIn {
                     p.dwLastIn = inp.raw;
                     p.stHeader.tPhase = now;
@@ -279,9 +207,7 @@ impl<T: Analog, T32: Analog, const P1: usize, const P2: usize> Block for FB_SCAL
                 }
             }
             Err(diag) => {
-                p.dwOut = 0;
                 p.dwPar = inp.raw;
-                p.stHeader.enter_error(diag);
                 if diag == SL_DIAG_CORRUPT {
                     return Status::Corrupt;
                 }

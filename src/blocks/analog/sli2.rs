@@ -13,7 +13,7 @@
 
 #![allow(non_camel_case_types)] // the ABI's names (FB_SLI2_INT …)
 
-use super::window::{WindowFb, WindowOut, WindowParams, SL_SLI_PRIVATE};
+use super::window::SL_SLI_PRIVATE;
 pub use super::window::{
     SL_OPT_SLI2_EXCEEDED_SUPPORT, SL_OPT_SLI2_OVERFLOW_ALLOWED, SL_STATE_SLI2_EXCEEDED,
 };
@@ -40,37 +40,8 @@ crate::impl_member!([T: Analog, TS: Analog, const P1: usize, const P2: usize] FB
     info_fields: [nDiagTextId, dwDiagPar2, dwDiagPar3],
 });
 
-impl<T: Analog, TS: Analog, const P1: usize, const P2: usize> WindowFb for FB_SLI2<T, TS, P1, P2> {
-    type T = T;
-    type TS = TS;
-    const OPTIONS: u32 = SL_OPT_SLI2_OVERFLOW_ALLOWED | SL_OPT_SLI2_EXCEEDED_SUPPORT;
-    #[inline(always)]
-    fn params(&self) -> WindowParams {
-        WindowParams {
-            active: self.wInputActive,
-            limits: [self.nLimitPos, self.nLimitNeg],
-            options: self.dwOptions,
-        }
-    }
-    #[inline(always)]
-    fn sli_raw(&self) -> u8 {
-        self.bSLI
-    }
-    #[inline(always)]
-    fn position(&self) -> T {
-        self.nPosition
-    }
-    #[inline(always)]
-    fn set_outputs(&mut self, out: WindowOut, state: u8, diag: u16, msg: (u16, u32, u32)) {
-        self.bError = u8::from(out.error);
-        self.bSLIActive = u8::from(out.sli_active);
-        self.bBelowMin = u8::from(out.below);
-        self.bAboveMax = u8::from(out.above);
-        self.nPositionDiff = crate::base::block::FieldType::from_bits(out.diff);
-        self.nState = state;
-        self.nDiag = diag;
-        (self.nDiagTextId, self.dwDiagPar2, self.dwDiagPar3) = msg;
-    }
-}
-
-super::window::window_block!([T: Analog, TS: Analog, const P1: usize, const P2: usize] FB_SLI2<T, TS, P1, P2>);
+super::window::window_block!(
+    [T: Analog, TS: Analog, const P1: usize, const P2: usize] FB_SLI2<T, TS, P1, P2>; T, TS;
+    options SL_OPT_SLI2_OVERFLOW_ALLOWED | SL_OPT_SLI2_EXCEEDED_SUPPORT => dwOptions;
+    outputs [bBelowMin = below, bAboveMax = above]
+);

@@ -13,12 +13,12 @@
 
 #![allow(non_camel_case_types)] // the ABI's names (FB_SPEED_INT …)
 
-use super::{diag_message, in_range, magic, Analog};
-use super::{SL_DIAG_VALUE_OVERFLOW, SL_DIAG_VALUE_UNDERFLOW};
+use super::{in_range, magic, range_message, value_if, Analog};
 use crate::base::block::{Private, Registered};
-use crate::base::envelope::Block;
-use crate::base::header::param_crc;
-use crate::base::reason::{when, Rule, RuleDef, Unit};
+use crate::base::envelope::{params_map, Block};
+use crate::base::header::{crc_words, param_crc};
+use crate::base::reason::rule;
+use crate::base::reason::RuleDef;
 use crate::base::time;
 use crate::base::types::*;
 
@@ -74,54 +74,21 @@ fn speed<T: Analog>(d: i128, overflow_check: bool) -> Result<T, u16> {
 
 impl<T: Analog, const P1: usize, const P2: usize> Block for FB_SPEED<T, P1, P2> {
     const MAGIC: u16 = magic(<Self as Registered>::INFO.tag);
-    type Params = SpeedParams;
+    params_map!(SpeedParams {
+        interval: tTimeInterval => tInterval,
+        options: dwOptions => dwOptions,
+        active: wInputActive => wActive,
+    });
     type In = T;
 
-    #[inline(always)]
-    fn live_params(&self) -> SpeedParams {
-        SpeedParams {
-            interval: self.tTimeInterval,
-            options: self.dwOptions,
-            active: self.wInputActive,
-        }
-    }
-    #[inline(always)]
-    fn latched_params(&self) -> SpeedParams {
-        let p = self.private();
-        SpeedParams {
-            interval: p.tInterval,
-            options: p.dwOptions,
-            active: p.wActive,
-        }
-    }
     /// Position active and nothing else, the one option, Time Interval 1 … 65,535 ms
     /// (ABI-2 §11.7 "≥ 1", §12.9).
     const RULES: &'static [RuleDef<SpeedParams>] = &[
-        RuleDef::new("wInputActive", Rule::Equals, Unit::Hex, |p| {
-            let want = SL_SPEED_ACTIVE_POSITION;
-            when(p.active != want, p.active, want)
-        }),
-        RuleDef::new("dwOptions", Rule::NoBitsOutside, Unit::Hex, |p| {
-            let known = SL_OPT_SPEED_OVERFLOW_CHECK;
-            when(p.options & !known != 0, p.options, known)
-        }),
-        RuleDef::new("tTimeInterval", Rule::NotZero, Unit::Ms, |p| {
-            when(p.interval == 0, 0, 0)
-        }),
-        RuleDef::new("tTimeInterval", Rule::AtMost, Unit::Ms, |p| {
-            when(
-                p.interval > SL_TIME_PARAM_MAX,
-                p.interval,
-                SL_TIME_PARAM_MAX,
-            )
-        }),
+        rule!(equals "wInputActive", |p| p.active, SL_SPEED_ACTIVE_POSITION),
+        rule!(no_bits_outside "dwOptions", |p| p.options, SL_OPT_SPEED_OVERFLOW_CHECK),
+        rule!(not_zero "tTimeInterval" in Ms, |p| p.interval),
+        rule!(at_most "tTimeInterval" in Ms, |p| p.interval, SL_TIME_PARAM_MAX),
     ];
-    fn store_params(&mut self, p: &SpeedParams) {
-        let q = self.private_mut();
-        q.tInterval = p.interval;
-        q.dwOptions = p.options;
-        q.wActive = p.active;
-    }
     fn latched_crc(&self) -> u16 {
         let p = self.private();
         param_crc(
@@ -129,13 +96,7 @@ impl<T: Analog, const P1: usize, const P2: usize> Block for FB_SPEED<T, P1, P2> 
             0,
             0,
             0,
-            &[
-                p.tInterval as u16,
-                (p.tInterval >> 16) as u16,
-                p.dwOptions as u16,
-                (p.dwOptions >> 16) as u16,
-                p.wActive,
-            ],
+            &crc_words![u32 p.tInterval, u32 p.dwOptions, u16 p.wActive],
         )
     }
     #[inline(always)]
@@ -146,8 +107,7 @@ impl<T: Analog, const P1: usize, const P2: usize> Block for FB_SPEED<T, P1, P2> 
     fn start(&mut self, position: &T, now: u32) {
         // Entering RUN is where the output starts to carry values: verify the latched
         // parameters first (C3).
-        if !self.params_intact() {
-            self.private_mut().stHeader.enter_error(SL_DIAG_CORRUPT);
+        if self.corrupt_at_switch_on(true) {
             return;
         }
         let p = self.private_mut();
@@ -177,29 +137,20 @@ impl<T: Analog, const P1: usize, const P2: usize> Block for FB_SPEED<T, P1, P2> 
         }
         Status::Ok
     }
-    /// A range error is an event: nothing remains after it (ABI-2 §11.7, §12.5).
-    fn error_remains(&mut self, _position: &T) -> bool {
-        false
-    }
+    // A range error is an event: nothing remains after it (ABI-2 §11.7, §12.5).
+    // `error_remains` keeps its default (false).
     #[inline(always)]
     fn write_outputs(&mut self) {
         let p = *self.private();
         let h = p.stHeader;
         let run = h.nState == SL_STATE_RUN;
         self.bError = u8::from(h.nState == SL_STATE_ERROR);
-        self.nSpeed = if run {
-            T::from_bits(p.dwSpeed)
-        } else {
-            T::ZERO
-        };
+        self.nSpeed = value_if::<T>(run, p.dwSpeed);
         self.nState = h.nState;
         self.nDiag = h.wDiag;
-        (self.nDiagTextId, self.dwDiagPar2, self.dwDiagPar3) = diag_message(
+        (self.nDiagTextId, self.dwDiagPar2, self.dwDiagPar3) = range_message(
             &h,
-            &[
-                (SL_DIAG_VALUE_UNDERFLOW, SL_TEXT_SPEED_UNDERFLOW),
-                (SL_DIAG_VALUE_OVERFLOW, SL_TEXT_SPEED_OVERFLOW),
-            ],
+            [SL_TEXT_SPEED_UNDERFLOW, SL_TEXT_SPEED_OVERFLOW],
             p.adwPar,
         );
     }

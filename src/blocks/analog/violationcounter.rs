@@ -14,8 +14,9 @@ use super::{magic, Unsigned};
 use crate::base::block::{Private, Registered};
 use crate::base::bools;
 use crate::base::envelope::Block;
-use crate::base::header::param_crc;
-use crate::base::reason::{when, Rule, RuleDef, Unit};
+use crate::base::header::{crc_words, param_crc};
+use crate::base::reason::rule;
+use crate::base::reason::RuleDef;
 use crate::base::types::*;
 
 include!(concat!(
@@ -89,16 +90,9 @@ impl<T: Unsigned, const P1: usize, const P2: usize> Block for FB_VIOLATIONCOUNTE
     }
     /// Both inputs active, only Input negatable, Counter Limit ≥ 1 (semantics V3).
     const RULES: &'static [RuleDef<ViolationParams>] = &[
-        RuleDef::new("wInputActive", Rule::Equals, Unit::Hex, |p| {
-            let want = SL_VIOLATIONCOUNTER_ACTIVE;
-            when(p.active != want, p.active, want)
-        }),
-        RuleDef::new("wInputNegated", Rule::NoBitsOutside, Unit::Hex, |p| {
-            when(p.negated & !1 != 0, p.negated, 1)
-        }),
-        RuleDef::new("nCounterLimit", Rule::NotZero, Unit::Plain, |p| {
-            when(p.values[LIMIT] == 0, 0, 0)
-        }),
+        rule!(equals "wInputActive", |p| p.active, SL_VIOLATIONCOUNTER_ACTIVE),
+        rule!(no_bits_outside "wInputNegated", |p| p.negated, 1),
+        rule!(not_zero "nCounterLimit" in Plain, |p| p.values[LIMIT]),
     ];
     fn store_params(&mut self, p: &ViolationParams) {
         let q = self.private_mut();
@@ -114,14 +108,7 @@ impl<T: Unsigned, const P1: usize, const P2: usize> Block for FB_VIOLATIONCOUNTE
             p.stHeader.nActive,
             p.stHeader.nNegated,
             0,
-            &[
-                a as u16,
-                (a >> 16) as u16,
-                b as u16,
-                (b >> 16) as u16,
-                c as u16,
-                (c >> 16) as u16,
-            ],
+            &crc_words![u32 a, u32 b, u32 c],
         )
     }
     /// An invalid Input byte reads logically FALSE (a violation) whatever its negation; an
@@ -162,8 +149,7 @@ impl<T: Unsigned, const P1: usize, const P2: usize> Block for FB_VIOLATIONCOUNTE
         };
         let ok = next < T::from_bits(p.adwParam[LIMIT]).wide();
         // InputOK switching on is where the latched parameters are verified (C3).
-        if ok && p.stHeader.nState != SL_STATE_RUN && !self.params_intact() {
-            self.private_mut().stHeader.enter_error(SL_DIAG_CORRUPT);
+        if self.corrupt_entering_run(ok) {
             return Status::Corrupt;
         }
         let p = self.private_mut();
@@ -171,10 +157,8 @@ impl<T: Unsigned, const P1: usize, const P2: usize> Block for FB_VIOLATIONCOUNTE
         p.stHeader.nState = if ok { SL_STATE_RUN } else { SL_STATE_SAFE };
         Status::Ok
     }
-    /// Only the library's faults lead to ERROR; none of them remains.
-    fn error_remains(&mut self, _inp: &ViolationIn) -> bool {
-        false
-    }
+    // Only the library's faults lead to ERROR; none of them remains: `error_remains` keeps
+    // its default (false).
     #[inline(always)]
     fn write_outputs(&mut self) {
         let p = *self.private();

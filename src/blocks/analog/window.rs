@@ -130,13 +130,59 @@ pub fn outputs(p: &SL_SLI_PRIVATE) -> WindowOut {
     }
 }
 
-/// The envelope's view of a block of this family; invoked in the member's own file with
-/// the struct's generic parameters.
+/// A block of this family from its struct: [`WindowFb`] over the fields every member has
+/// (SLI, Position, the limits, wInputActive, Error, SLIActive, PositionDiff and the info
+/// data), the options it offers and the field that carries them (`0`: none), the BOOL
+/// outputs of its own (`bBelowMin = below`), and the envelope's view; invoked in the
+/// member's own file with the struct's generic parameters and its two type parameters.
 macro_rules! window_block {
+    ([$($gen:tt)*] $t:ty; $tt:ident, $ts:ident; options $opts:expr => $live:tt;
+     outputs [$($o:ident = $w:ident),*]) => {
+        impl<$($gen)*> $crate::blocks::analog::window::WindowFb for $t {
+            type T = $tt;
+            type TS = $ts;
+            const OPTIONS: u32 = $opts;
+            #[inline(always)]
+            fn params(&self) -> $crate::blocks::analog::window::WindowParams {
+                $crate::blocks::analog::window::WindowParams {
+                    active: self.wInputActive,
+                    limits: [self.nLimitPos, self.nLimitNeg],
+                    options: $crate::blocks::analog::window::window_block!(@options self $live),
+                }
+            }
+            #[inline(always)]
+            fn sli_raw(&self) -> u8 {
+                self.bSLI
+            }
+            #[inline(always)]
+            fn position(&self) -> $tt {
+                self.nPosition
+            }
+            #[inline(always)]
+            fn set_outputs(
+                &mut self,
+                out: $crate::blocks::analog::window::WindowOut,
+                state: u8,
+                diag: u16,
+                msg: (u16, u32, u32),
+            ) {
+                self.bError = u8::from(out.error);
+                self.bSLIActive = u8::from(out.sli_active);
+                $(self.$o = u8::from(out.$w);)*
+                self.nPositionDiff = $crate::base::block::FieldType::from_bits(out.diff);
+                self.nState = state;
+                self.nDiag = diag;
+                (self.nDiagTextId, self.dwDiagPar2, self.dwDiagPar3) = msg;
+            }
+        }
+        $crate::blocks::analog::window::window_block!([$($gen)*] $t);
+    };
+    (@options $s:ident 0) => { 0 };
+    (@options $s:ident $f:ident) => { $s.$f };
     ([$($gen:tt)*] $t:ty) => {
         const _: () = {
             use $crate::blocks::analog::{
-                diag_message, magic, Analog, SL_DIAG_VALUE_OVERFLOW, SL_DIAG_VALUE_UNDERFLOW,
+                magic, range_message, Analog, SL_DIAG_VALUE_OVERFLOW, SL_DIAG_VALUE_UNDERFLOW,
             };
             use $crate::blocks::analog::window::{
                 SL_OPT_SLI2_EXCEEDED_SUPPORT, SL_OPT_SLI2_OVERFLOW_ALLOWED, SL_STATE_SLI2_EXCEEDED,
@@ -145,7 +191,7 @@ macro_rules! window_block {
                 PREV_SLI,
             };
             use $crate::base::envelope::Block;
-            use $crate::base::{bools, header::param_crc};
+            use $crate::base::{bools, header::{crc_words, param_crc}};
             use $crate::base::block::{Private, Registered};
             use $crate::base::types::*;
 
@@ -158,9 +204,7 @@ macro_rules! window_block {
                 const WINDOW_RULES: [$crate::base::reason::RuleDef<WindowParams>; 4] = {
                     use $crate::base::reason::{when, Rule, RuleDef, Unit};
                     [
-                        RuleDef::new("wInputActive", Rule::Equals, Unit::Hex, |p| {
-                            when(p.active != SL_SLI_ACTIVE, p.active, SL_SLI_ACTIVE)
-                        }),
+                        $crate::base::reason::rule!(equals "wInputActive", |p| p.active, SL_SLI_ACTIVE),
                         RuleDef::new("nLimitPos", Rule::AtMost, Unit::Plain, |p| {
                             let max = Diff::<Self>::MAX as i64;
                             when(i64::from(p.limits[0]) > max, p.limits[0], max)
@@ -169,10 +213,7 @@ macro_rules! window_block {
                             let max = Diff::<Self>::MAX as i64;
                             when(i64::from(p.limits[1]) > max, p.limits[1], max)
                         }),
-                        RuleDef::new("dwOptions", Rule::NoBitsOutside, Unit::Hex, |p| {
-                            let known = <Self as WindowFb>::OPTIONS;
-                            when(p.options & !known != 0, p.options, known)
-                        }),
+                        $crate::base::reason::rule!(no_bits_outside "dwOptions", |p| p.options, <Self as WindowFb>::OPTIONS),
                     ]
                 };
             }
@@ -220,15 +261,7 @@ macro_rules! window_block {
                         0,
                         0,
                         0,
-                        &[
-                            p.wActive,
-                            pos as u16,
-                            (pos >> 16) as u16,
-                            neg as u16,
-                            (neg >> 16) as u16,
-                            o as u16,
-                            (o >> 16) as u16,
-                        ],
+                        &crc_words![u16 p.wActive, u32 pos, u32 neg, u32 o],
                     )
                 }
                 /// SLI reads FALSE when invalid and then makes no edge (ABI-2 §12.7). The
@@ -292,8 +325,7 @@ macro_rules! window_block {
                         }
                     };
                     // SLIActive switches on: verify the latched parameters first (C3).
-                    if next == SL_STATE_RUN && state != SL_STATE_RUN && !self.params_intact() {
-                        self.private_mut().stHeader.enter_error(SL_DIAG_CORRUPT);
+                    if self.corrupt_at_switch_on(next == SL_STATE_RUN && state != SL_STATE_RUN) {
                         return Status::Corrupt;
                     }
                     let q = self.private_mut();
@@ -333,10 +365,8 @@ macro_rules! window_block {
                     }
                     Status::Ok
                 }
-                /// A window violation is an event: nothing remains (ABI-2 §12.5, SI4).
-                fn error_remains(&mut self, _inp: &WindowIn) -> bool {
-                    false
-                }
+                // A window violation is an event: nothing remains (ABI-2 §12.5, SI4).
+                // `error_remains` keeps its default (false).
                 /// "Should only exit the RESET state if ErrAck=FALSE and SLI=FALSE" (SI4).
                 fn may_leave_reset(&self, inp: &WindowIn) -> bool {
                     !inp.sli
@@ -345,14 +375,7 @@ macro_rules! window_block {
                 fn write_outputs(&mut self) {
                     let p = *self.private();
                     let h = p.stHeader;
-                    let msg = diag_message(
-                        &h,
-                        &[
-                            (SL_DIAG_VALUE_UNDERFLOW, SL_TEXT_SLI_UNDERFLOW),
-                            (SL_DIAG_VALUE_OVERFLOW, SL_TEXT_SLI_OVERFLOW),
-                        ],
-                        p.adwPar,
-                    );
+                    let msg = range_message(&h, [SL_TEXT_SLI_UNDERFLOW, SL_TEXT_SLI_OVERFLOW], p.adwPar);
                     self.set_outputs(outputs(&p), h.nState, h.wDiag, msg);
                 }
             }

@@ -11,13 +11,7 @@ use crate::base::types::*;
 include!(concat!(env!("OUT_DIR"), "/abi/blocks/boolean/decouple.rs"));
 
 /// Type tag, name and diag texts (manual §4.6.2: diag "always 0").
-const INFO: BlockInfo = BlockInfo {
-    tag: SL_TYPE_DECOUPLE,
-    name: "DECOUPLE",
-    states: <DecoupleState as crate::base::block::BlockState>::TABLE,
-    diag: &[],
-    diag_values: &[],
-};
+const INFO: BlockInfo = BlockInfo::of::<DecoupleState>(SL_TYPE_DECOUPLE, "DECOUPLE");
 
 crate::impl_member!([] FB_DECOUPLE {
     info: INFO,

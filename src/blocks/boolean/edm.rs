@@ -10,6 +10,7 @@
 use crate::base::block::BlockInfo;
 use crate::base::envelope::Block;
 use crate::base::header::param_crc;
+use crate::base::reason::rule;
 use crate::base::reason::{when, Rule, RuleDef, Unit};
 use crate::base::types::*;
 use crate::base::{bools, time};
@@ -17,16 +18,10 @@ use crate::base::{bools, time};
 include!(concat!(env!("OUT_DIR"), "/abi/blocks/boolean/edm.rs"));
 
 /// Type tag, name and diag texts (manual §4.9.2).
-const INFO: BlockInfo = BlockInfo {
-    tag: SL_TYPE_EDM,
-    name: "EDM",
-    states: <EdmState as crate::base::block::BlockState>::TABLE,
-    diag: &[
-        (SL_DIAG_EDM_SWITCH_OFF, "Switch-OFF timer elapsed"),
-        (SL_DIAG_EDM_SWITCH_ON, "Switch-ON timer elapsed"),
-    ],
-    diag_values: &[],
-};
+const INFO: BlockInfo = BlockInfo::of::<EdmState>(SL_TYPE_EDM, "EDM").diag(&[
+    (SL_DIAG_EDM_SWITCH_OFF, "Switch-OFF timer elapsed"),
+    (SL_DIAG_EDM_SWITCH_ON, "Switch-ON timer elapsed"),
+]);
 
 crate::impl_member!([] FB_EDM {
     info: INFO,
@@ -140,24 +135,16 @@ impl Block for FB_EDM {
     /// Manual §4.9.1: each time ≤ 10000 ms, at least one monitoring on; both inputs are
     /// needed for any monitoring (semantics E1).
     const RULES: &'static [RuleDef<EdmParams>] = &[
-        RuleDef::new("tSwitchOnTime", Rule::AtMost, Unit::Ms, |p| {
-            when(p.on > SL_EDM_TIME_MAX, p.on, SL_EDM_TIME_MAX)
-        }),
-        RuleDef::new("tSwitchOffTime", Rule::AtMost, Unit::Ms, |p| {
-            when(p.off > SL_EDM_TIME_MAX, p.off, SL_EDM_TIME_MAX)
-        }),
+        rule!(at_most "tSwitchOnTime" in Ms, |p| p.on, SL_EDM_TIME_MAX),
+        rule!(at_most "tSwitchOffTime" in Ms, |p| p.off, SL_EDM_TIME_MAX),
         RuleDef::new(
             "tSwitchOnTime or tSwitchOffTime",
             Rule::NotZero,
             Unit::Ms,
             |p| when(p.on == 0 && p.off == 0, 0, 0),
         ),
-        RuleDef::new("wInputActive", Rule::Equals, Unit::Hex, |p| {
-            when(p.active != INPUTS, p.active, INPUTS)
-        }),
-        RuleDef::new("wInputNegated", Rule::NoBitsOutside, Unit::Hex, |p| {
-            when(p.negated & !INPUTS != 0, p.negated, INPUTS)
-        }),
+        rule!(equals "wInputActive", |p| p.active, INPUTS),
+        rule!(no_bits_outside "wInputNegated", |p| p.negated, INPUTS),
     ];
 
     fn store_params(&mut self, p: &EdmParams) {

@@ -6,43 +6,37 @@
 //! feedback loops; restart is always manual. The state machine is shared with FB MON
 //! (`guard`).
 
-use super::guard::{GuardBlock, GuardParams, GuardRaw, SL_GUARD_PRIVATE};
+use super::guard::{guard_fields, GuardBlock, SL_GUARD_PRIVATE};
 use crate::base::block::BlockInfo;
 use crate::base::types::*;
 
 include!(concat!(env!("OUT_DIR"), "/abi/blocks/boolean/estop.rs"));
 
 /// Type tag, name and diag texts (manual §4.4.2).
-const INFO: BlockInfo = BlockInfo {
-    tag: SL_TYPE_ESTOP,
-    name: "ESTOP",
-    states: <EstopState as crate::base::block::BlockState>::TABLE,
-    diag: &[
-        (SL_DIAG_DISC1, "discrepancy error input group 1"),
-        (SL_DIAG_DISC2, "discrepancy error input group 2"),
-        (SL_DIAG_DISC3, "discrepancy error input group 3"),
-        (SL_DIAG_DISC4, "discrepancy error input group 4"),
-        (SL_DIAG_EDM1, "EDM monitoring error EDM1"),
-        (SL_DIAG_EDM2, "EDM monitoring error EDM2"),
-        (
-            SL_DIAG_SAFE_IN_DISC1,
-            "group 1 with Safe Inputs after Disc Error",
-        ),
-        (
-            SL_DIAG_SAFE_IN_DISC2,
-            "group 2 with Safe Inputs after Disc Error",
-        ),
-        (
-            SL_DIAG_SAFE_IN_DISC3,
-            "group 3 with Safe Inputs after Disc Error",
-        ),
-        (
-            SL_DIAG_SAFE_IN_DISC4,
-            "group 4 with Safe Inputs after Disc Error",
-        ),
-    ],
-    diag_values: &[],
-};
+const INFO: BlockInfo = BlockInfo::of::<EstopState>(SL_TYPE_ESTOP, "ESTOP").diag(&[
+    (SL_DIAG_DISC1, "discrepancy error input group 1"),
+    (SL_DIAG_DISC2, "discrepancy error input group 2"),
+    (SL_DIAG_DISC3, "discrepancy error input group 3"),
+    (SL_DIAG_DISC4, "discrepancy error input group 4"),
+    (SL_DIAG_EDM1, "EDM monitoring error EDM1"),
+    (SL_DIAG_EDM2, "EDM monitoring error EDM2"),
+    (
+        SL_DIAG_SAFE_IN_DISC1,
+        "group 1 with Safe Inputs after Disc Error",
+    ),
+    (
+        SL_DIAG_SAFE_IN_DISC2,
+        "group 2 with Safe Inputs after Disc Error",
+    ),
+    (
+        SL_DIAG_SAFE_IN_DISC3,
+        "group 3 with Safe Inputs after Disc Error",
+    ),
+    (
+        SL_DIAG_SAFE_IN_DISC4,
+        "group 4 with Safe Inputs after Disc Error",
+    ),
+]);
 
 crate::impl_member!([] FB_ESTOP {
     info: INFO,
@@ -66,57 +60,20 @@ impl GuardBlock for FB_ESTOP {
     const INPUTS: u16 = 0xFF;
     const REQUIRED: u16 = 0xFF;
     const PAIRS: u8 = 0b1111;
-    const DISC_NAMES: [&'static str; 4] =
-        ["tDiscTime12", "tDiscTime34", "tDiscTime56", "tDiscTime78"];
-    const DELAY_NAME: &'static str = "tEStopDelOutDelay";
     const TEST_INPUTS: u8 = 0;
     const ERROR_DELAY: bool = false;
     const ALWAYS_MANUAL: bool = true;
-
-    fn params(&self) -> GuardParams {
-        GuardParams {
-            disc: [
-                self.tDiscTime12,
-                self.tDiscTime34,
-                self.tDiscTime56,
-                self.tDiscTime78,
-            ],
-            edm_reset: [self.tEDM1ResetTime, self.tEDM2ResetTime],
-            delay: self.tEStopDelOutDelay,
-            active: self.wInputActive,
-            negated: self.wInputNegated,
-            options: self.dwOptions,
-        }
-    }
-
-    fn raw(&self) -> GuardRaw {
-        GuardRaw {
-            restart: self.bRestart,
-            edm: [self.bEDM1, self.bEDM2],
-            inputs: [
-                self.bEStopIn1,
-                self.bEStopIn2,
-                self.bEStopIn3,
-                self.bEStopIn4,
-                self.bEStopIn5,
-                self.bEStopIn6,
-                self.bEStopIn7,
-                self.bEStopIn8,
-            ],
-        }
-    }
 
     /// Any active input requesting the safe state (logical FALSE).
     fn request(logical: u8, active: u8) -> bool {
         logical != active
     }
 
-    fn set_outputs(&mut self, error: bool, out: bool, del_out: bool, state: u8, diag: u16) {
-        self.bError = u8::from(error);
-        self.bEStopOut = u8::from(out);
-        self.bEStopDelOut = u8::from(del_out);
-        self.nState = state;
-        self.nDiag = diag;
+    guard_fields! {
+        disc: [tDiscTime12, tDiscTime34, tDiscTime56, tDiscTime78],
+        delay: tEStopDelOutDelay,
+        inputs: [bEStopIn1, bEStopIn2, bEStopIn3, bEStopIn4, bEStopIn5, bEStopIn6, bEStopIn7, bEStopIn8],
+        outputs: [bEStopOut, bEStopDelOut],
     }
 }
 

@@ -119,13 +119,7 @@ macro_rules! flipflop_block {
         );
 
         $crate::impl_member!([] $t {
-            info: $crate::base::block::BlockInfo {
-                tag: $tag,
-                name: $label,
-                states: <$state as $crate::base::block::BlockState>::TABLE,
-                diag: &[],
-                diag_values: &[],
-            },
+            info: $crate::base::block::BlockInfo::of::<$state>($tag, $label),
             state: $state,
             private: $crate::blocks::boolean::flipflop::SL_FLIPFLOP_PRIVATE,
             input: [bReset, bSet],
@@ -187,12 +181,8 @@ macro_rules! flipflop_block {
                 const RULES: &'static [$crate::base::reason::RuleDef<FlipFlopParams>] = {
                     use $crate::base::reason::{when, Rule, RuleDef, Unit};
                     &[
-                        RuleDef::new("wInputActive", Rule::NoBitsOutside, Unit::Hex, |p| {
-                            when(p.active & !INPUTS != 0, p.active, INPUTS)
-                        }),
-                        RuleDef::new("wInputNegated", Rule::NoBitsOutside, Unit::Hex, |p| {
-                            when(p.negated & !INPUTS != 0, p.negated, INPUTS)
-                        }),
+                        $crate::base::reason::rule!(no_bits_outside "wInputActive", |p| p.active, INPUTS),
+                        $crate::base::reason::rule!(no_bits_outside "wInputNegated", |p| p.negated, INPUTS),
                         RuleDef::new("wInputActive", Rule::AnyBitOf, Unit::Hex, |p| {
                             when(p.active == 0, p.active, INPUTS)
                         }),
@@ -245,9 +235,6 @@ macro_rules! flipflop_block {
                     }
                     self.private_mut().stHeader.nState = state_of(set);
                     Status::Ok
-                }
-                fn error_remains(&mut self, _inp: &FlipFlopIn) -> bool {
-                    false
                 }
                 $crate::base::envelope::steady_hooks!();
                 fn write_outputs(&mut self) {

@@ -97,6 +97,63 @@ pub trait GuardBlock: crate::base::block::Private<P = SL_GUARD_PRIVATE> {
     fn set_outputs(&mut self, error: bool, out: bool, del_out: bool, state: u8, diag: u16);
 }
 
+/// The struct side of a guard block (ESTOP, MON), from its field names: the discrepancy
+/// times of the four pairs, the delay, the eight BOOL inputs (`0` for a pair or an input the
+/// block does not have) and the two outputs; the rest of the struct is the family's. Writes
+/// [`GuardBlock`]'s `DISC_NAMES`, `DELAY_NAME`, `params`, `raw` and `set_outputs`.
+macro_rules! guard_fields {
+    (disc: [$($d:tt),+], delay: $delay:ident, inputs: [$($i:tt),+], outputs: [$out:ident, $del:ident] $(,)?) => {
+        const DISC_NAMES: [&'static str; 4] =
+            [$($crate::blocks::boolean::guard::guard_fields!(@name $d)),+];
+        const DELAY_NAME: &'static str = stringify!($delay);
+        fn params(&self) -> $crate::blocks::boolean::guard::GuardParams {
+            $crate::blocks::boolean::guard::GuardParams {
+                disc: [$($crate::blocks::boolean::guard::guard_fields!(@field self $d)),+],
+                edm_reset: [self.tEDM1ResetTime, self.tEDM2ResetTime],
+                delay: self.$delay,
+                active: self.wInputActive,
+                negated: self.wInputNegated,
+                options: self.dwOptions,
+            }
+        }
+        fn raw(&self) -> $crate::blocks::boolean::guard::GuardRaw {
+            $crate::blocks::boolean::guard::GuardRaw {
+                restart: self.bRestart,
+                edm: [self.bEDM1, self.bEDM2],
+                inputs: [$($crate::blocks::boolean::guard::guard_fields!(@field self $i)),+],
+            }
+        }
+        fn set_outputs(&mut self, error: bool, out: bool, del_out: bool, state: u8, diag: u16) {
+            self.bError = u8::from(error);
+            self.$out = u8::from(out);
+            self.$del = u8::from(del_out);
+            self.nState = state;
+            self.nDiag = diag;
+        }
+    };
+    (@name 0) => { "" };
+    (@name $f:ident) => { stringify!($f) };
+    (@field $s:ident 0) => { 0 };
+    (@field $s:ident $f:ident) => { $s.$f };
+}
+pub(crate) use guard_fields;
+
+/// The rule "a reset time belongs to an active feedback loop" of EDM `K + 1`: its reset
+/// time is 0 unless `dwOptions` has its option bit.
+pub(crate) const fn edm_reset_rule<const K: usize>() -> crate::base::reason::RuleDef<GuardParams> {
+    use crate::base::reason::{when, Rule, RuleDef, Unit};
+    const FIELDS: [&str; 2] = ["tEDM1ResetTime", "tEDM2ResetTime"];
+    const UNLESS: [&str; 2] = ["dwOptions has SL_OPT_EDM1", "dwOptions has SL_OPT_EDM2"];
+    RuleDef::new(FIELDS[K], Rule::ZeroUnless(UNLESS[K]), Unit::Ms, |p| {
+        let t = p.edm_reset[K];
+        when(
+            t != 0 && p.options & [SL_OPT_EDM1, SL_OPT_EDM2][K] == 0,
+            t,
+            0,
+        )
+    })
+}
+
 /// Diag bits for pair errors, with the "Safe Inputs after Disc Error" bits when it is on.
 #[inline]
 pub(crate) fn disc_diag(pairs: u8, safe_inputs: bool) -> u16 {
@@ -186,27 +243,15 @@ macro_rules! guard_block {
                         hit.map(|h| h.in_field(<$t as GuardBlock>::DISC_NAMES[k]))
                     }
                     &[
-                        RuleDef::new("wInputActive", Rule::NoBitsOutside, Unit::Hex, |p| {
-                            when(p.active & !Self::INPUTS != 0, p.active, Self::INPUTS)
-                        }),
-                        RuleDef::new("wInputNegated", Rule::NoBitsOutside, Unit::Hex, |p| {
-                            when(p.negated & !Self::INPUTS != 0, p.negated, Self::INPUTS)
-                        }),
-                        RuleDef::new("dwOptions", Rule::NoBitsOutside, Unit::Hex, |p| {
-                            when(p.options & !Self::OPTIONS != 0, p.options, Self::OPTIONS)
-                        }),
+                        $crate::base::reason::rule!(no_bits_outside "wInputActive", |p| p.active, Self::INPUTS),
+                        $crate::base::reason::rule!(no_bits_outside "wInputNegated", |p| p.negated, Self::INPUTS),
+                        $crate::base::reason::rule!(no_bits_outside "dwOptions", |p| p.options, Self::OPTIONS),
                         RuleDef::new("tDiscTime", Rule::AtMost, Unit::Ms, |p| {
                             first_pair(p, |_, t, _| t > SL_TIME_PARAM_MAX)
                                 .and_then(|(k, t, _)| named(k, when(true, t, SL_TIME_PARAM_MAX)))
                         }),
-                        RuleDef::new("tEDM1ResetTime", Rule::AtMost, Unit::Ms, |p| {
-                            let t = p.edm_reset[0];
-                            when(t > SL_TIME_PARAM_MAX, t, SL_TIME_PARAM_MAX)
-                        }),
-                        RuleDef::new("tEDM2ResetTime", Rule::AtMost, Unit::Ms, |p| {
-                            let t = p.edm_reset[1];
-                            when(t > SL_TIME_PARAM_MAX, t, SL_TIME_PARAM_MAX)
-                        }),
+                        $crate::base::reason::rule!(at_most "tEDM1ResetTime" in Ms, |p| p.edm_reset[0], SL_TIME_PARAM_MAX),
+                        $crate::base::reason::rule!(at_most "tEDM2ResetTime" in Ms, |p| p.edm_reset[1], SL_TIME_PARAM_MAX),
                         RuleDef::new(
                             <$t as GuardBlock>::DELAY_NAME,
                             Rule::AtMost,
@@ -220,25 +265,8 @@ macro_rules! guard_block {
                             })
                             .and_then(|(k, t, both)| named(k, when(true, t, both)))
                         }),
-                        // A reset time belongs to an active feedback loop.
-                        RuleDef::new(
-                            "tEDM1ResetTime",
-                            Rule::ZeroUnless("dwOptions has SL_OPT_EDM1"),
-                            Unit::Ms,
-                            |p| {
-                                let t = p.edm_reset[0];
-                                when(t != 0 && p.options & SL_OPT_EDM1 == 0, t, 0)
-                            },
-                        ),
-                        RuleDef::new(
-                            "tEDM2ResetTime",
-                            Rule::ZeroUnless("dwOptions has SL_OPT_EDM2"),
-                            Unit::Ms,
-                            |p| {
-                                let t = p.edm_reset[1];
-                                when(t != 0 && p.options & SL_OPT_EDM2 == 0, t, 0)
-                            },
-                        ),
+                        $crate::blocks::boolean::guard::edm_reset_rule::<0>(),
+                        $crate::blocks::boolean::guard::edm_reset_rule::<1>(),
                         RuleDef::new("wInputActive", Rule::AnyBitOf, Unit::Hex, |p| {
                             when(p.active & Self::REQUIRED == 0, p.active, Self::REQUIRED)
                         }),

@@ -60,20 +60,12 @@ macro_rules! logic_block {
                 const LOGIC_RULES: [$crate::base::reason::RuleDef<LogicParams>; 3] = {
                     use $crate::base::reason::{when, Rule, RuleDef, Unit};
                     [
-                        RuleDef::new("wInputActive", Rule::NoBitsOutside, Unit::Hex, |p| {
-                            when(p.active & !Self::INPUTS != 0, p.active, Self::INPUTS)
-                        }),
+                        $crate::base::reason::rule!(no_bits_outside "wInputActive", |p| p.active, Self::INPUTS),
                         RuleDef::new("wInputActive", Rule::MinBits, Unit::Hex, |p| {
                             let min = Self::MIN_ACTIVE;
                             when(p.active.count_ones() < min, p.active, min)
                         }),
-                        RuleDef::new("wInputNegated", Rule::NoBitsOutside, Unit::Hex, |p| {
-                            when(
-                                p.negated & !Self::NEGATABLE != 0,
-                                p.negated,
-                                Self::NEGATABLE,
-                            )
-                        }),
+                        $crate::base::reason::rule!(no_bits_outside "wInputNegated", |p| p.negated, Self::NEGATABLE),
                     ]
                 };
             }
@@ -140,10 +132,6 @@ macro_rules! logic_block {
                     h.nState = inp.state;
                     h.wAux = u16::from(inp.outputs);
                     Status::Ok
-                }
-                #[inline(always)]
-                fn error_remains(&mut self, _inp: &LogicIn) -> bool {
-                    false
                 }
                 $crate::base::envelope::steady_hooks!();
                 #[inline(always)]
@@ -256,13 +244,7 @@ macro_rules! gate8_block {
         );
 
         $crate::impl_member!([] $name {
-            info: $crate::base::block::BlockInfo {
-                tag: $tag,
-                name: $label,
-                states: <$state as $crate::base::block::BlockState>::TABLE,
-                diag: &[],
-                diag_values: &[],
-            },
+            info: $crate::base::block::BlockInfo::of::<$state>($tag, $label),
             state: $state,
             private: $crate::blocks::boolean::logic::SL_LOGIC_PRIVATE,
             input: [$($i),*],

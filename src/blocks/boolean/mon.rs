@@ -7,7 +7,7 @@
 //! immediately and MonDelOut after `tMonDelOutDelay`, ERRORDELAY for a discrepancy error
 //! while MonDelOut is still on. The state machine is shared with FB ESTOP (`guard`).
 
-use super::guard::{GuardBlock, GuardParams, GuardRaw, SL_GUARD_PRIVATE};
+use super::guard::{guard_fields, GuardBlock, SL_GUARD_PRIVATE};
 use crate::base::block::BlockInfo;
 use crate::base::types::*;
 
@@ -17,31 +17,25 @@ const MON_INPUTS: u8 = 0x0F;
 const SECURE_INPUTS: u8 = 0x30;
 
 /// Type tag, name and diag texts (manual §4.5.2).
-const INFO: BlockInfo = BlockInfo {
-    tag: SL_TYPE_MON,
-    name: "MON",
-    states: <MonState as crate::base::block::BlockState>::TABLE,
-    diag: &[
-        (SL_DIAG_DISC1, "discrepancy error input group 1"),
-        (SL_DIAG_DISC2, "discrepancy error input group 2"),
-        (SL_DIAG_DISC3, "discrepancy error in Secure input group"),
-        (SL_DIAG_EDM1, "EDM monitoring error EDM1"),
-        (SL_DIAG_EDM2, "EDM monitoring error EDM2"),
-        (
-            SL_DIAG_SAFE_IN_DISC1,
-            "group 1 with Safe Inputs after Disc Error",
-        ),
-        (
-            SL_DIAG_SAFE_IN_DISC2,
-            "group 2 with Safe Inputs after Disc Error",
-        ),
-        (
-            SL_DIAG_SAFE_IN_DISC3,
-            "Secure group with Safe Inputs after Disc Error",
-        ),
-    ],
-    diag_values: &[],
-};
+const INFO: BlockInfo = BlockInfo::of::<MonState>(SL_TYPE_MON, "MON").diag(&[
+    (SL_DIAG_DISC1, "discrepancy error input group 1"),
+    (SL_DIAG_DISC2, "discrepancy error input group 2"),
+    (SL_DIAG_DISC3, "discrepancy error in Secure input group"),
+    (SL_DIAG_EDM1, "EDM monitoring error EDM1"),
+    (SL_DIAG_EDM2, "EDM monitoring error EDM2"),
+    (
+        SL_DIAG_SAFE_IN_DISC1,
+        "group 1 with Safe Inputs after Disc Error",
+    ),
+    (
+        SL_DIAG_SAFE_IN_DISC2,
+        "group 2 with Safe Inputs after Disc Error",
+    ),
+    (
+        SL_DIAG_SAFE_IN_DISC3,
+        "Secure group with Safe Inputs after Disc Error",
+    ),
+]);
 
 crate::impl_member!([] FB_MON {
     info: INFO,
@@ -63,44 +57,9 @@ impl GuardBlock for FB_MON {
     const INPUTS: u16 = 0x3F;
     const REQUIRED: u16 = MON_INPUTS as u16;
     const PAIRS: u8 = 0b111;
-    const DISC_NAMES: [&'static str; 4] = ["tDiscTime12", "tDiscTime34", "tDiscTimeSecure12", ""];
-    const DELAY_NAME: &'static str = "tMonDelOutDelay";
     const TEST_INPUTS: u8 = MON_INPUTS;
     const ERROR_DELAY: bool = true;
     const ALWAYS_MANUAL: bool = false;
-
-    fn params(&self) -> GuardParams {
-        GuardParams {
-            disc: [
-                self.tDiscTime12,
-                self.tDiscTime34,
-                self.tDiscTimeSecure12,
-                0,
-            ],
-            edm_reset: [self.tEDM1ResetTime, self.tEDM2ResetTime],
-            delay: self.tMonDelOutDelay,
-            active: self.wInputActive,
-            negated: self.wInputNegated,
-            options: self.dwOptions,
-        }
-    }
-
-    fn raw(&self) -> GuardRaw {
-        GuardRaw {
-            restart: self.bRestart,
-            edm: [self.bEDM1, self.bEDM2],
-            inputs: [
-                self.bMonIn1,
-                self.bMonIn2,
-                self.bMonIn3,
-                self.bMonIn4,
-                self.bSecure1,
-                self.bSecure2,
-                0,
-                0,
-            ],
-        }
-    }
 
     /// An active MonIn input requests the safe state and the Secure inputs do not bypass
     /// the MonIn inputs: a bypass needs at least one active Secure input and every active
@@ -112,12 +71,11 @@ impl GuardBlock for FB_MON {
         logical & mon != mon && !bypass
     }
 
-    fn set_outputs(&mut self, error: bool, out: bool, del_out: bool, state: u8, diag: u16) {
-        self.bError = u8::from(error);
-        self.bMonOut = u8::from(out);
-        self.bMonDelOut = u8::from(del_out);
-        self.nState = state;
-        self.nDiag = diag;
+    guard_fields! {
+        disc: [tDiscTime12, tDiscTime34, tDiscTimeSecure12, 0],
+        delay: tMonDelOutDelay,
+        inputs: [bMonIn1, bMonIn2, bMonIn3, bMonIn4, bSecure1, bSecure2, 0, 0],
+        outputs: [bMonOut, bMonDelOut],
     }
 }
 

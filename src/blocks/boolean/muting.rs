@@ -15,7 +15,8 @@ use crate::base::block::BlockInfo;
 use crate::base::bools;
 use crate::base::edm::Edm;
 use crate::base::envelope::Block;
-use crate::base::header::param_crc;
+use crate::base::header::{crc_words, param_crc};
+use crate::base::reason::rule;
 use crate::base::reason::{when, Rule, RuleDef, Unit};
 use crate::base::types::*;
 use crate::base::{pair, time};
@@ -23,33 +24,27 @@ use crate::base::{pair, time};
 include!(concat!(env!("OUT_DIR"), "/abi/blocks/boolean/muting.rs"));
 
 /// Type tag, name, states and diag texts (manual §4.8.2, §4.8.4).
-const INFO: BlockInfo = BlockInfo {
-    tag: SL_TYPE_MUTING,
-    name: "MUTING",
-    states: <MutingState as crate::base::block::BlockState>::TABLE,
-    diag: &[
-        (SL_DIAG_DISC1, "discrepancy error in muting input group 1"),
-        (SL_DIAG_DISC2, "discrepancy error in the OSSD input group"),
-        (SL_DIAG_DISC3, "discrepancy error in muting input group 2"),
-        (SL_DIAG_EDM1, "EDM monitoring error EDM1"),
-        (SL_DIAG_EDM2, "EDM monitoring error EDM2"),
-        (SL_DIAG_MUTING_SEQUENCE, "muting sequence was violated"),
-        (SL_DIAG_MUTING_MAX_TIME, "maximum muting time was exceeded"),
-        (
-            SL_DIAG_SAFE_IN_DISC1,
-            "discrepancy error in muting input group 1 was not yet reset",
-        ),
-        (
-            SL_DIAG_SAFE_IN_DISC2,
-            "discrepancy error in OSSD input group was not yet reset",
-        ),
-        (
-            SL_DIAG_SAFE_IN_DISC3,
-            "discrepancy error in muting input group 2 was not yet reset",
-        ),
-    ],
-    diag_values: &[],
-};
+const INFO: BlockInfo = BlockInfo::of::<MutingState>(SL_TYPE_MUTING, "MUTING").diag(&[
+    (SL_DIAG_DISC1, "discrepancy error in muting input group 1"),
+    (SL_DIAG_DISC2, "discrepancy error in the OSSD input group"),
+    (SL_DIAG_DISC3, "discrepancy error in muting input group 2"),
+    (SL_DIAG_EDM1, "EDM monitoring error EDM1"),
+    (SL_DIAG_EDM2, "EDM monitoring error EDM2"),
+    (SL_DIAG_MUTING_SEQUENCE, "muting sequence was violated"),
+    (SL_DIAG_MUTING_MAX_TIME, "maximum muting time was exceeded"),
+    (
+        SL_DIAG_SAFE_IN_DISC1,
+        "discrepancy error in muting input group 1 was not yet reset",
+    ),
+    (
+        SL_DIAG_SAFE_IN_DISC2,
+        "discrepancy error in OSSD input group was not yet reset",
+    ),
+    (
+        SL_DIAG_SAFE_IN_DISC3,
+        "discrepancy error in muting input group 2 was not yet reset",
+    ),
+]);
 
 crate::impl_member!([] FB_MUTING {
     info: INFO,
@@ -252,7 +247,7 @@ impl SL_MUTING_PRIVATE {
             h.nActive,
             h.nNegated,
             h.wOptions,
-            &[a, b, c, d, e, f, max as u16, (max >> 16) as u16],
+            &crc_words![u16 a, u16 b, u16 c, u16 d, u16 e, u16 f, u32 max],
         )
     }
 
@@ -305,42 +300,15 @@ impl Block for FB_MUTING {
     }
 
     const RULES: &'static [RuleDef<MutingParams>] = &[
-        RuleDef::new("wInputActive", Rule::NoBitsOutside, Unit::Hex, |p| {
-            when(p.active & !INPUTS != 0, p.active, INPUTS)
-        }),
-        RuleDef::new("wInputNegated", Rule::NoBitsOutside, Unit::Hex, |p| {
-            when(p.negated & !INPUTS != 0, p.negated, INPUTS)
-        }),
-        RuleDef::new("dwOptions", Rule::NoBitsOutside, Unit::Hex, |p| {
-            when(p.options & !OPTIONS != 0, p.options, OPTIONS)
-        }),
-        RuleDef::new("tDiscTime12", Rule::AtMost, Unit::Ms, |p| {
-            when(p.disc[0] > SL_TIME_PARAM_MAX, p.disc[0], SL_TIME_PARAM_MAX)
-        }),
-        RuleDef::new("tDiscTimeOSSD", Rule::AtMost, Unit::Ms, |p| {
-            when(p.disc[1] > SL_TIME_PARAM_MAX, p.disc[1], SL_TIME_PARAM_MAX)
-        }),
-        RuleDef::new("tDiscTime34", Rule::AtMost, Unit::Ms, |p| {
-            when(p.disc[2] > SL_TIME_PARAM_MAX, p.disc[2], SL_TIME_PARAM_MAX)
-        }),
-        RuleDef::new("tFilterTime", Rule::AtMost, Unit::Ms, |p| {
-            when(
-                p.filter > SL_MUTING_FILTER_TIME_MAX,
-                p.filter,
-                SL_MUTING_FILTER_TIME_MAX,
-            )
-        }),
-        RuleDef::new("tMaxMutingTime", Rule::AtMost, Unit::Ms, |p| {
-            let max = SL_MUTING_MAX_MUTING_TIME_MAX;
-            when(p.max_muting > max, p.max_muting, max)
-        }),
-        RuleDef::new("tMuteDelOutDelay", Rule::AtMost, Unit::Ms, |p| {
-            when(
-                p.delay > SL_MUTING_DELOUT_DELAY_MAX,
-                p.delay,
-                SL_MUTING_DELOUT_DELAY_MAX,
-            )
-        }),
+        rule!(no_bits_outside "wInputActive", |p| p.active, INPUTS),
+        rule!(no_bits_outside "wInputNegated", |p| p.negated, INPUTS),
+        rule!(no_bits_outside "dwOptions", |p| p.options, OPTIONS),
+        rule!(at_most "tDiscTime12" in Ms, |p| p.disc[0], SL_TIME_PARAM_MAX),
+        rule!(at_most "tDiscTimeOSSD" in Ms, |p| p.disc[1], SL_TIME_PARAM_MAX),
+        rule!(at_most "tDiscTime34" in Ms, |p| p.disc[2], SL_TIME_PARAM_MAX),
+        rule!(at_most "tFilterTime" in Ms, |p| p.filter, SL_MUTING_FILTER_TIME_MAX),
+        rule!(at_most "tMaxMutingTime" in Ms, |p| p.max_muting, SL_MUTING_MAX_MUTING_TIME_MAX),
+        rule!(at_most "tMuteDelOutDelay" in Ms, |p| p.delay, SL_MUTING_DELOUT_DELAY_MAX),
         // A discrepancy time belongs to a pair with both inputs active.
         RuleDef::new("tDiscTime12", Rule::Needs("wInputActive"), Unit::Ms, |p| {
             let both = u16::from(M12);

@@ -13,6 +13,7 @@ use crate::base::block::BlockInfo;
 use crate::base::bools::{self, Edge};
 use crate::base::envelope::Block;
 use crate::base::header::{param_crc, F_RESTART_PREV, SL_PRIVATE_HEADER};
+use crate::base::reason::rule;
 use crate::base::reason::{when, Rule, RuleDef, Unit};
 use crate::base::restart::{self, Restart};
 use crate::base::time;
@@ -21,13 +22,8 @@ use crate::base::types::*;
 include!(concat!(env!("OUT_DIR"), "/abi/blocks/boolean/opmode.rs"));
 
 /// Type tag, name, states and diag texts (manual §4.3.2).
-const INFO: BlockInfo = BlockInfo {
-    tag: SL_TYPE_OPMODE,
-    name: "OPMODE",
-    states: <OpmodeState as crate::base::block::BlockState>::TABLE,
-    diag: &[(SL_DIAG_OPMODE_DISC, "discrepancy monitoring error")],
-    diag_values: &[],
-};
+const INFO: BlockInfo = BlockInfo::of::<OpmodeState>(SL_TYPE_OPMODE, "OPMODE")
+    .diag(&[(SL_DIAG_OPMODE_DISC, "discrepancy monitoring error")]);
 
 crate::impl_member!([] FB_OPMODE {
     info: INFO,
@@ -127,18 +123,12 @@ impl Block for FB_OPMODE {
 
     /// Manual §4.3.1 "At least two inputs of FB OPMODE must be connected"; C6 strictness.
     const RULES: &'static [RuleDef<OpmodeParams>] = &[
-        RuleDef::new("tDiscTime", Rule::AtMost, Unit::Ms, |p| {
-            when(p.disc > SL_TIME_PARAM_MAX, p.disc, SL_TIME_PARAM_MAX)
-        }),
-        RuleDef::new("wInputActive", Rule::NoBitsOutside, Unit::Hex, |p| {
-            when(p.active & !0xFF != 0, p.active, 0xFF)
-        }),
+        rule!(at_most "tDiscTime" in Ms, |p| p.disc, SL_TIME_PARAM_MAX),
+        rule!(no_bits_outside "wInputActive", |p| p.active, 0xFF),
         RuleDef::new("wInputActive", Rule::MinBits, Unit::Hex, |p| {
             when(p.active.count_ones() < 2, p.active, 2)
         }),
-        RuleDef::new("dwOptions", Rule::NoBitsOutside, Unit::Hex, |p| {
-            when(p.options & !OPTIONS != 0, p.options, OPTIONS)
-        }),
+        rule!(no_bits_outside "dwOptions", |p| p.options, OPTIONS),
     ];
 
     fn store_params(&mut self, p: &OpmodeParams) {

@@ -25,7 +25,7 @@
 //! the host persists with `sl_ton2_get_elapsed` and hands back with
 //! `sl_ton2_restore_elapsed` after power-up.
 
-use crate::base::header::{param_crc, SL_PRIVATE_HEADER};
+use crate::base::header::{crc_words, param_crc, SL_PRIVATE_HEADER};
 use crate::base::types::*;
 
 include!(concat!(env!("OUT_DIR"), "/abi/blocks/boolean/timer.rs"));
@@ -287,15 +287,8 @@ pub(crate) fn timer_crc(magic: u16, p: &SL_TIMER_PRIVATE) -> u16 {
         0,
         0,
         0,
-        &[
-            d as u16,
-            (d >> 16) as u16,
-            p.wTimeBase,
-            p.wInputActive,
-            p.wInputNegated,
-            p.wReserved,
-            o as u16,
-            (o >> 16) as u16,
+        &crc_words![
+            u32 d, u16 p.wTimeBase, u16 p.wInputActive, u16 p.wInputNegated, u16 p.wReserved, u32 o
         ],
     )
 }
@@ -358,13 +351,7 @@ macro_rules! delay_block {
         );
 
         $crate::impl_member!([] $t {
-            info: $crate::base::block::BlockInfo {
-                tag: $tag,
-                name: $label,
-                states: <$state as $crate::base::block::BlockState>::TABLE,
-                diag: &[],
-                diag_values: &[],
-            },
+            info: $crate::base::block::BlockInfo::of::<$state>($tag, $label),
             state: $state,
             private: $crate::blocks::boolean::timer::SL_TIMER_PRIVATE,
             input: [$in],
@@ -445,16 +432,12 @@ macro_rules! timer_block {
                 use $crate::base::reason::{when, Rule, RuleDef, Unit};
                 use $crate::blocks::boolean::timer::{time_base, SL_TIMER_STEPS_MAX};
                 [
-                    RuleDef::new("wInputActive", Rule::Equals, Unit::Hex, |p| {
-                        when(p.active != 1, p.active, 1)
-                    }),
-                    RuleDef::new("wInputNegated", Rule::NoBitsOutside, Unit::Hex, |p| {
-                        when(p.negated & !1 != 0, p.negated, 1)
-                    }),
+                    $crate::base::reason::rule!(equals "wInputActive", |p| p.active, 1),
+                    $crate::base::reason::rule!(no_bits_outside "wInputNegated", |p| p.negated, 1),
                     RuleDef::new("nTimeBase", Rule::OneOf("0, 1, 10, 100, 1000"), Unit::Plain, |p| {
                         when(time_base(0, p.time_base).is_none(), p.time_base, 0)
                     }),
-                    RuleDef::new("tDelay", Rule::NotZero, Unit::Ms, |p| when(p.delay == 0, 0, 0)),
+                    $crate::base::reason::rule!(not_zero "tDelay" in Ms, |p| p.delay),
                     RuleDef::new("tDelay", Rule::AtMost, Unit::Ms, |p| {
                         // Automatic: the largest timebase's range.
                         let b = time_base(p.delay, p.time_base).unwrap_or(1000);
@@ -465,9 +448,7 @@ macro_rules! timer_block {
                         let b = time_base(p.delay, p.time_base).unwrap_or(1000);
                         when(p.delay % b != 0, p.delay, b)
                     }),
-                    RuleDef::new("dwOptions", Rule::NoBitsOutside, Unit::Hex, |p| {
-                        when(p.options & !Self::OPTIONS != 0, p.options, Self::OPTIONS)
-                    }),
+                    $crate::base::reason::rule!(no_bits_outside "dwOptions", |p| p.options, Self::OPTIONS),
                 ]
             };
         }
@@ -597,11 +578,9 @@ macro_rules! timer_block {
                 Status::Ok
             }
 
-            /// The timer blocks have no error condition of their own that could remain: a
-            /// refused elapsed time is discarded when the error is entered.
-            fn error_remains(&mut self, _inp: &TimerIn) -> bool {
-                false
-            }
+            // The timer blocks have no error condition of their own that could remain: a
+            // refused elapsed time is discarded when the error is entered.
+            // `error_remains` keeps its default (false).
 
             $crate::base::envelope::steady_hooks!();
 

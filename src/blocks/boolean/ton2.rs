@@ -19,16 +19,10 @@ use crate::base::types::*;
 include!(concat!(env!("OUT_DIR"), "/abi/blocks/boolean/ton2.rs"));
 
 /// Type tag, name, states and diag texts (manual §4.13.2).
-const INFO: BlockInfo = BlockInfo {
-    tag: SL_TYPE_TON2,
-    name: "TON2",
-    states: <Ton2State as crate::base::block::BlockState>::TABLE,
-    diag: &[(
-        SL_DIAG_TON2_RESTORE,
-        "restored elapsed time refused (greater than the delay time: global shutdown 0x3510)",
-    )],
-    diag_values: &[],
-};
+const INFO: BlockInfo = BlockInfo::of::<Ton2State>(SL_TYPE_TON2, "TON2").diag(&[(
+    SL_DIAG_TON2_RESTORE,
+    "restored elapsed time refused (greater than the delay time: global shutdown 0x3510)",
+)]);
 
 crate::impl_member!([] FB_TON2 {
     info: INFO,

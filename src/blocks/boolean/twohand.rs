@@ -13,6 +13,7 @@ use crate::base::block::{BlockInfo, Private};
 use crate::base::bools;
 use crate::base::envelope::Block;
 use crate::base::header::{param_crc, SL_PRIVATE_HEADER};
+use crate::base::reason::rule;
 use crate::base::reason::{when, Rule, RuleDef, Unit};
 use crate::base::types::*;
 use crate::base::{pair, time};
@@ -20,36 +21,30 @@ use crate::base::{pair, time};
 include!(concat!(env!("OUT_DIR"), "/abi/blocks/boolean/twohand.rs"));
 
 /// Type tag, name, states and diag texts (manual §4.7.2).
-const INFO: BlockInfo = BlockInfo {
-    tag: SL_TYPE_TWOHAND,
-    name: "TWOHAND",
-    states: <TwohandState as crate::base::block::BlockState>::TABLE,
-    diag: &[
-        (SL_DIAG_DISC1, "discrepancy error input pair 1"),
-        (SL_DIAG_DISC2, "discrepancy error input pair 2"),
-        (
-            SL_DIAG_TWOHAND_PAIRS,
-            "discrepancy error between the two input pairs",
-        ),
-        (
-            SL_DIAG_TWOHAND_ERROR,
-            "two-hand error: second input pair actuated, first no longer actuated",
-        ),
-        (
-            SL_DIAG_SAFE_IN_DISC1,
-            "pair 1 with Safe Inputs after Disc Error",
-        ),
-        (
-            SL_DIAG_SAFE_IN_DISC2,
-            "pair 2 with Safe Inputs after Disc Error",
-        ),
-        (
-            SL_DIAG_TWOHAND_SAFE_IN_PAIRS,
-            "between the pairs with Safe Inputs after Disc Error",
-        ),
-    ],
-    diag_values: &[],
-};
+const INFO: BlockInfo = BlockInfo::of::<TwohandState>(SL_TYPE_TWOHAND, "TWOHAND").diag(&[
+    (SL_DIAG_DISC1, "discrepancy error input pair 1"),
+    (SL_DIAG_DISC2, "discrepancy error input pair 2"),
+    (
+        SL_DIAG_TWOHAND_PAIRS,
+        "discrepancy error between the two input pairs",
+    ),
+    (
+        SL_DIAG_TWOHAND_ERROR,
+        "two-hand error: second input pair actuated, first no longer actuated",
+    ),
+    (
+        SL_DIAG_SAFE_IN_DISC1,
+        "pair 1 with Safe Inputs after Disc Error",
+    ),
+    (
+        SL_DIAG_SAFE_IN_DISC2,
+        "pair 2 with Safe Inputs after Disc Error",
+    ),
+    (
+        SL_DIAG_TWOHAND_SAFE_IN_PAIRS,
+        "between the pairs with Safe Inputs after Disc Error",
+    ),
+]);
 
 crate::impl_member!([] FB_TWOHAND {
     info: INFO,
@@ -179,28 +174,12 @@ impl Block for FB_TWOHAND {
     /// discrepancy time needs both inputs of its pair active (C6); the window is at most
     /// 2500 ms (§4.7.1).
     const RULES: &'static [RuleDef<TwohandParams>] = &[
-        RuleDef::new("tDiscTime12", Rule::AtMost, Unit::Ms, |p| {
-            when(p.disc[0] > SL_TIME_PARAM_MAX, p.disc[0], SL_TIME_PARAM_MAX)
-        }),
-        RuleDef::new("tDiscTime34", Rule::AtMost, Unit::Ms, |p| {
-            when(p.disc[1] > SL_TIME_PARAM_MAX, p.disc[1], SL_TIME_PARAM_MAX)
-        }),
-        RuleDef::new("tDiscTimePairs", Rule::AtMost, Unit::Ms, |p| {
-            when(
-                p.pairs > SL_TWOHAND_PAIRS_TIME_MAX,
-                p.pairs,
-                SL_TWOHAND_PAIRS_TIME_MAX,
-            )
-        }),
-        RuleDef::new("wInputActive", Rule::NoBitsOutside, Unit::Hex, |p| {
-            when(p.active & !0x0F != 0, p.active, 0x0F)
-        }),
-        RuleDef::new("wInputNegated", Rule::NoBitsOutside, Unit::Hex, |p| {
-            when(p.negated & !0x0F != 0, p.negated, 0x0F)
-        }),
-        RuleDef::new("dwOptions", Rule::NoBitsOutside, Unit::Hex, |p| {
-            when(p.options & !OPTIONS != 0, p.options, OPTIONS)
-        }),
+        rule!(at_most "tDiscTime12" in Ms, |p| p.disc[0], SL_TIME_PARAM_MAX),
+        rule!(at_most "tDiscTime34" in Ms, |p| p.disc[1], SL_TIME_PARAM_MAX),
+        rule!(at_most "tDiscTimePairs" in Ms, |p| p.pairs, SL_TWOHAND_PAIRS_TIME_MAX),
+        rule!(no_bits_outside "wInputActive", |p| p.active, 0x0F),
+        rule!(no_bits_outside "wInputNegated", |p| p.negated, 0x0F),
+        rule!(no_bits_outside "dwOptions", |p| p.options, OPTIONS),
         RuleDef::new("tDiscTime12", Rule::Needs("wInputActive"), Unit::Ms, |p| {
             let g = u16::from(GROUP1);
             when(p.disc[0] != 0 && p.active & g != g, p.disc[0], g)

@@ -11,13 +11,7 @@ use crate::base::types::*;
 include!(concat!(env!("OUT_DIR"), "/abi/blocks/boolean/xor.rs"));
 
 /// Type tag, name and diag texts (manual §4.34.2: no diagnostic information).
-const INFO: BlockInfo = BlockInfo {
-    tag: SL_TYPE_XOR,
-    name: "XOR",
-    states: <XorState as crate::base::block::BlockState>::TABLE,
-    diag: &[],
-    diag_values: &[],
-};
+const INFO: BlockInfo = BlockInfo::of::<XorState>(SL_TYPE_XOR, "XOR");
 
 crate::impl_member!([] FB_XOR {
     info: INFO,

@@ -14,6 +14,7 @@ use crate::base::block::BlockInfo;
 use crate::base::envelope::Block;
 use crate::base::header::{param_crc, SL_PRIVATE_HEADER};
 use crate::base::member::{Member, Wiring};
+use crate::base::reason::rule;
 use crate::base::reason::{when, Rule, RuleDef, Unit};
 use crate::base::types::*;
 use crate::base::{bools, pair};
@@ -24,13 +25,9 @@ include!(concat!(
     "/abi/blocks/connection/connshutdown.rs"
 ));
 
-const INFO: BlockInfo = BlockInfo {
-    tag: SL_TYPE_CONNECTION_SHUTDOWN,
-    name: "CONNECTION_SHUTDOWN",
-    states: <ConnShutdownState as crate::base::block::BlockState>::TABLE,
-    diag: &[(SL_DIAG_DISC1, "discrepancy error input group 1")],
-    diag_values: &[],
-};
+const INFO: BlockInfo =
+    BlockInfo::of::<ConnShutdownState>(SL_TYPE_CONNECTION_SHUTDOWN, "CONNECTION_SHUTDOWN")
+        .diag(&[(SL_DIAG_DISC1, "discrepancy error input group 1")]);
 
 crate::impl_member!([] FB_CONNECTION_SHUTDOWN {
     info: INFO,
@@ -123,21 +120,13 @@ impl Block for FB_CONNECTION_SHUTDOWN {
     /// Semantics CS4: no active input is valid (the opposite side of a connection); a
     /// discrepancy time needs both inputs active; Connection ID 0 is refused.
     const RULES: &'static [RuleDef<ConnShutdownParams>] = &[
-        RuleDef::new("wInputActive", Rule::NoBitsOutside, Unit::Hex, |p| {
-            when(p.active & !0b11 != 0, p.active, 0b11)
-        }),
-        RuleDef::new("wInputNegated", Rule::NoBitsOutside, Unit::Hex, |p| {
-            when(p.negated & !0b11 != 0, p.negated, 0b11)
-        }),
-        RuleDef::new("tDiscTime12", Rule::AtMost, Unit::Ms, |p| {
-            when(p.disc > SL_TIME_PARAM_MAX, p.disc, SL_TIME_PARAM_MAX)
-        }),
+        rule!(no_bits_outside "wInputActive", |p| p.active, 0b11),
+        rule!(no_bits_outside "wInputNegated", |p| p.negated, 0b11),
+        rule!(at_most "tDiscTime12" in Ms, |p| p.disc, SL_TIME_PARAM_MAX),
         RuleDef::new("tDiscTime12", Rule::Needs("wInputActive"), Unit::Ms, |p| {
             when(p.disc != 0 && p.active & 0b11 != 0b11, p.disc, 0b11)
         }),
-        RuleDef::new("nConnectionId", Rule::NotZero, Unit::Plain, |p| {
-            when(p.id == 0, 0, 0)
-        }),
+        rule!(not_zero "nConnectionId" in Plain, |p| p.id),
     ];
 
     fn store_params(&mut self, p: &ConnShutdownParams) {
@@ -199,9 +188,7 @@ impl Block for FB_CONNECTION_SHUTDOWN {
         }
         // RUN exactly while the connection reports its shutdown (semantics CS1); the latched
         // parameters are checked where the output switches on (C3).
-        let entering = inp.conn_shutdown && p.stHeader.nState != SL_STATE_RUN;
-        if entering && !self.params_intact() {
-            self.stPrivate.stHeader.enter_error(SL_DIAG_CORRUPT);
+        if self.corrupt_entering_run(inp.conn_shutdown) {
             return Status::Corrupt;
         }
         self.stPrivate.stHeader.nState = if inp.conn_shutdown {

@@ -16,8 +16,9 @@
 use crate::base::block::BlockInfo;
 use crate::base::block::Private;
 use crate::base::bools::{self, edge};
-use crate::base::envelope::Block;
+use crate::base::envelope::{params_map, Block};
 use crate::base::header::{param_crc, F_RESTART_PREV};
+use crate::base::reason::rule;
 use crate::base::reason::{when, Rule, RuleDef, Unit};
 use crate::base::restart::{self, Restart};
 use crate::base::types::*;
@@ -41,12 +42,8 @@ const _: () = {
 };
 
 /// Type tag, name, states and diag values (manual §4.31.2.3 "FB Diag").
-const INFO: BlockInfo = BlockInfo {
-    tag: SL_TYPE_ADVPOSMON,
-    name: "ADVPOSMON",
-    states: <AdvPosMonState as crate::base::block::BlockState>::TABLE,
-    diag: &[],
-    diag_values: &[
+const INFO: BlockInfo = BlockInfo::of::<AdvPosMonState>(SL_TYPE_ADVPOSMON, "ADVPOSMON")
+    .diag_values(&[
         (0, "No diagnostic information"),
         (
             1,
@@ -64,8 +61,7 @@ const INFO: BlockInfo = BlockInfo {
             4,
             "SAFEDRIVEFEEDBACK instance 4 has changed to the ERROR state",
         ),
-    ],
-};
+    ]);
 
 crate::impl_member!([] FB_ADVPOSMON {
     info: INFO,
@@ -104,35 +100,20 @@ const SDFB: u16 = 8;
 
 impl Block for FB_ADVPOSMON {
     const MAGIC: u16 = magic(SL_TYPE_ADVPOSMON);
-    type Params = AdvPosMonParams;
+    params_map!(AdvPosMonParams {
+        active: wInputActive => wActive,
+        feedback: [
+            nChAPrimaryFeedback,
+            nChASecondaryFeedback,
+            nChBPrimaryFeedback,
+            nChBSecondaryFeedback
+        ] => awFeedback,
+    });
     type In = AdvPosMonIn;
 
-    #[inline(always)]
-    fn live_params(&self) -> AdvPosMonParams {
-        AdvPosMonParams {
-            active: self.wInputActive,
-            feedback: [
-                self.nChAPrimaryFeedback,
-                self.nChASecondaryFeedback,
-                self.nChBPrimaryFeedback,
-                self.nChBSecondaryFeedback,
-            ],
-        }
-    }
-    #[inline(always)]
-    fn latched_params(&self) -> AdvPosMonParams {
-        let p = self.private();
-        AdvPosMonParams {
-            active: p.wActive,
-            feedback: p.awFeedback,
-        }
-    }
     /// Enable active, only bits 0 and 1, feedback instances 0-3 (ABI-2 §11.16, §12.9).
     const RULES: &'static [RuleDef<AdvPosMonParams>] = &[
-        RuleDef::new("wInputActive", Rule::NoBitsOutside, Unit::Hex, |p| {
-            let known = SL_ADVPOSMON_ACTIVE_ENABLE | SL_ADVPOSMON_ACTIVE_RESTART;
-            when(p.active & !known != 0, p.active, known)
-        }),
+        rule!(no_bits_outside "wInputActive", |p| p.active, SL_ADVPOSMON_ACTIVE_ENABLE | SL_ADVPOSMON_ACTIVE_RESTART),
         RuleDef::new("wInputActive", Rule::BitsSet, Unit::Hex, |p| {
             let need = SL_ADVPOSMON_ACTIVE_ENABLE;
             when(p.active & need == 0, p.active, need)
@@ -149,11 +130,6 @@ impl Block for FB_ADVPOSMON {
             when(true, p.feedback[k], max).map(|h| h.in_field(NAMES[k]))
         }),
     ];
-    fn store_params(&mut self, p: &AdvPosMonParams) {
-        let q = self.private_mut();
-        q.wActive = p.active;
-        q.awFeedback = p.feedback;
-    }
     fn latched_crc(&self) -> u16 {
         let p = self.private();
         let [a, b, c, d] = p.awFeedback;
@@ -236,8 +212,7 @@ impl Block for FB_ADVPOSMON {
             0
         };
         // Active switching on is where the latched parameters are verified (C3).
-        if aux == ACTIVE && h.wAux != ACTIVE && !self.params_intact() {
-            self.private_mut().stHeader.enter_error(SL_DIAG_CORRUPT);
+        if self.corrupt_at_switch_on(aux == ACTIVE && h.wAux != ACTIVE) {
             return Status::Corrupt;
         }
         let h = &mut self.private_mut().stHeader;

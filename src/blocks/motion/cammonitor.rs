@@ -23,7 +23,8 @@
 use crate::base::block::{Private, Registered};
 use crate::base::bools::{self, edge, Edge};
 use crate::base::envelope::Block;
-use crate::base::header::{param_crc, F_CFG_INVALID, F_RESTART_PREV};
+use crate::base::header::{param_crc, put_crc_words, F_CFG_INVALID, F_RESTART_PREV};
+use crate::base::reason::rule;
 use crate::base::reason::{when, Hit, Rule, RuleDef, Unit};
 use crate::base::time::reached;
 use crate::base::types::*;
@@ -798,8 +799,7 @@ impl<T: Unsigned, const P1: usize, const P2: usize> FB_CAMMONITOR<T, P1, P2> {
             }
         };
         // CamMonOK switching on is where the latched parameters are verified (C3).
-        if cam_ok(next) && !cam_ok(h.nState) && !self.params_intact() {
-            self.private_mut().stHeader.enter_error(SL_DIAG_CORRUPT);
+        if self.corrupt_at_switch_on(cam_ok(next) && !cam_ok(h.nState)) {
             return Status::Corrupt;
         }
         let q = self.private_mut();
@@ -870,10 +870,7 @@ impl<T: Unsigned, const P1: usize, const P2: usize> Block for FB_CAMMONITOR<T, P
             let need = SL_CAMMONITOR_ACTIVE_RESET | SL_CAMMONITOR_ACTIVE_POSITION;
             when(p.active & need != need, p.active, need)
         }),
-        RuleDef::new("dwOptions", Rule::NoBitsOutside, Unit::Hex, |p| {
-            let known = SL_OPT_CAMMONITOR_PENDULUM;
-            when(p.options & !known != 0, p.options, known)
-        }),
+        rule!(no_bits_outside "dwOptions", |p| p.options, SL_OPT_CAMMONITOR_PENDULUM),
         RuleDef::new("wInputActive", Rule::BitsClear, Unit::Hex, |p| {
             let unused = SL_CAMMONITOR_ACTIVE_BACKWARDSMOVE
                 | SL_CAMMONITOR_ACTIVE_OVERRUNCAM
@@ -924,9 +921,7 @@ impl<T: Unsigned, const P1: usize, const P2: usize> Block for FB_CAMMONITOR<T, P
             let t = p.times[T_MOVE];
             when(t > SL_CAMMONITOR_TIME_MAX, t, SL_CAMMONITOR_TIME_MAX)
         }),
-        RuleDef::new("tStopDetectionTime", Rule::NotZero, Unit::Ms, |p| {
-            when(p.times[T_STOP] == 0, 0, 0)
-        }),
+        rule!(not_zero "tStopDetectionTime" in Ms, |p| p.times[T_STOP]),
         RuleDef::new(
             "tPressStartDelayTime",
             Rule::NotZeroWhen(STARTED),
@@ -1045,10 +1040,7 @@ impl<T: Unsigned, const P1: usize, const P2: usize> Block for FB_CAMMONITOR<T, P
             .iter()
             .chain(p.adwTime.iter())
             .chain(p.adwValue.iter());
-        for (i, v) in all.enumerate() {
-            words[1 + 2 * i] = *v as u16;
-            words[2 + 2 * i] = (*v >> 16) as u16;
-        }
+        put_crc_words(&mut words[1..], all.copied());
         words[0] = p.wActive;
         param_crc(Self::MAGIC, 0, 0, 0, &words)
     }

@@ -19,7 +19,8 @@ use crate::base::block::BlockInfo;
 use crate::base::block::Private;
 use crate::base::bools::{self, edge};
 use crate::base::envelope::Block;
-use crate::base::header::{param_crc, F_RESTART_PREV};
+use crate::base::header::{param_crc, put_crc_words, F_RESTART_PREV};
+use crate::base::reason::rule;
 use crate::base::reason::{when, Rule, RuleDef, Unit};
 use crate::base::time::elapsed;
 use crate::base::types::*;
@@ -41,12 +42,7 @@ const _: () = {
 };
 
 /// Type tag, name, states and diag values (the messages, ABI-2 §11.15).
-const INFO: BlockInfo = BlockInfo {
-    tag: SL_TYPE_SBT,
-    name: "SBT",
-    states: <SbtState as crate::base::block::BlockState>::TABLE,
-    diag: &[],
-    diag_values: &[
+const INFO: BlockInfo = BlockInfo::of::<SbtState>(SL_TYPE_SBT, "SBT").diag_values(&[
         (0, "No diagnostic information"),
         (
             SL_TEXT_SBT_MAX_DURATION - SL_SBT_DIAG_TEXT_BASE,
@@ -60,8 +56,7 @@ const INFO: BlockInfo = BlockInfo {
             SL_TEXT_SBT_POSITION_DEVIATION - SL_SBT_DIAG_TEXT_BASE,
             "The single-turn position exceeds the maximum position deviation.",
         ),
-    ],
-};
+    ]);
 
 crate::impl_member!([] FB_SBT {
     info: INFO,
@@ -194,10 +189,7 @@ impl Block for FB_SBT {
     /// all at most SL_SBT_TIME_MAX (semantics BT7). The limits come before the multiples:
     /// SL_SBT_TIME_MAX is itself the largest whole second of the type.
     const RULES: &'static [RuleDef<SbtParams>] = &[
-        RuleDef::new("wInputActive", Rule::NoBitsOutside, Unit::Hex, |p| {
-            let known = SBT_REQUIRED | SL_SBT_ACTIVE_MINCURRENTIQ;
-            when(p.active & !known != 0, p.active, known)
-        }),
+        rule!(no_bits_outside "wInputActive", |p| p.active, SBT_REQUIRED | SL_SBT_ACTIVE_MINCURRENTIQ),
         RuleDef::new("wInputActive", Rule::BitsSet, Unit::Hex, |p| {
             when(
                 p.active & SBT_REQUIRED != SBT_REQUIRED,
@@ -205,9 +197,7 @@ impl Block for FB_SBT {
                 SBT_REQUIRED,
             )
         }),
-        RuleDef::new("tBrakeTestInterval", Rule::NotZero, Unit::Ms, |p| {
-            when(p.values[INTERVAL] == 0, 0, 0)
-        }),
+        rule!(not_zero "tBrakeTestInterval" in Ms, |p| p.values[INTERVAL]),
         RuleDef::new("tBrakeTestInterval", Rule::AtMost, Unit::Ms, |p| {
             let t = p.values[INTERVAL];
             when(t > SL_SBT_TIME_MAX, t, SL_SBT_TIME_MAX)
@@ -246,10 +236,7 @@ impl Block for FB_SBT {
     fn latched_crc(&self) -> u16 {
         let p = self.private();
         let mut words = [p.wActive; 11];
-        for (i, v) in p.adwParam.iter().enumerate() {
-            words[1 + 2 * i] = *v as u16;
-            words[2 + 2 * i] = (*v >> 16) as u16;
-        }
+        put_crc_words(&mut words[1..], p.adwParam);
         param_crc(Self::MAGIC, 0, 0, 0, &words)
     }
     /// SBT: an invalid byte reads FALSE without an edge; SBC In: an invalid byte reads
@@ -326,8 +313,7 @@ impl Block for FB_SBT {
             _ => SL_STATE_SAFE,
         };
         // BrakeValid switching on is where the latched parameters are verified (C3).
-        if brake_valid(next) && !brake_valid(h.nState) && !self.params_intact() {
-            self.private_mut().stHeader.enter_error(SL_DIAG_CORRUPT);
+        if self.corrupt_at_switch_on(brake_valid(next) && !brake_valid(h.nState)) {
             return Status::Corrupt;
         }
         let q = self.private_mut();
@@ -342,10 +328,8 @@ impl Block for FB_SBT {
         q.adwPar = g.par;
         Status::Ok
     }
-    /// Only the library's faults lead to ERROR; none of them remains.
-    fn error_remains(&mut self, _inp: &SbtIn) -> bool {
-        false
-    }
+    // Only the library's faults lead to ERROR; none of them remains: `error_remains` keeps
+    // its default (false).
     #[inline(always)]
     fn write_outputs(&mut self) {
         let p = *self.private();

@@ -17,10 +17,11 @@ use crate::base::block::BlockInfo;
 use crate::base::block::Private;
 use crate::base::bools;
 use crate::base::envelope::Block;
-use crate::base::header::{param_crc, F_CFG_INVALID};
+use crate::base::header::{crc_words, param_crc, F_CFG_INVALID};
+use crate::base::reason::rule;
 use crate::base::reason::{when, Rule, RuleDef, Unit};
 use crate::base::types::*;
-use crate::blocks::analog::{diag_message, magic};
+use crate::blocks::analog::{diag_message, limit_outputs, magic, LIMIT_ABOVE, LIMIT_BELOW};
 
 include!(concat!(env!("OUT_DIR"), "/abi/blocks/motion/slp.rs"));
 
@@ -48,22 +49,16 @@ const MESSAGES: [(u16, u16); 2] = [
 ];
 
 /// Type tag, name, states and diag texts (manual §4.29.2.3).
-const INFO: BlockInfo = BlockInfo {
-    tag: SL_TYPE_SLP,
-    name: "SLP",
-    states: <SlpState as crate::base::block::BlockState>::TABLE,
-    diag: &[
-        (
-            SL_DIAG_SLP_MULTITURN_LL_ABOVE_UL,
-            "MultiturnPos_LL>MultiturnPos_UL",
-        ),
-        (
-            SL_DIAG_SLP_SINGLETURN_LL_ABOVE_UL,
-            "MultiturnPos_LL=MultiturnPos_UL AND SingleturnPosLL>SingleturnPos_UL",
-        ),
-    ],
-    diag_values: &[],
-};
+const INFO: BlockInfo = BlockInfo::of::<SlpState>(SL_TYPE_SLP, "SLP").diag(&[
+    (
+        SL_DIAG_SLP_MULTITURN_LL_ABOVE_UL,
+        "MultiturnPos_LL>MultiturnPos_UL",
+    ),
+    (
+        SL_DIAG_SLP_SINGLETURN_LL_ABOVE_UL,
+        "MultiturnPos_LL=MultiturnPos_UL AND SingleturnPosLL>SingleturnPos_UL",
+    ),
+]);
 
 crate::impl_member!([] FB_SLP {
     info: INFO,
@@ -107,10 +102,6 @@ pub struct SlpIn {
     lower: Turns,
     upper: Turns,
 }
-
-/// `wAux` in SAFE: below the lower / above the upper limit.
-const BELOW: u16 = 1;
-const ABOVE: u16 = 2;
 
 /// Index of the limits in `adwFix`.
 const UL: usize = 0;
@@ -186,10 +177,7 @@ impl Block for FB_SLP {
     /// bits of each limit equal, no other bit or option (ABI-2 §10.5, §11.14); the
     /// parameter-only limit error with the manual's Text ID (semantics PL3).
     const RULES: &'static [RuleDef<SlpParams>] = &[
-        RuleDef::new("wInputActive", Rule::NoBitsOutside, Unit::Hex, |p| {
-            let known = SL_SLP_ACTIVE_SAFEPOSVALID | 0x3F00;
-            when(p.active & !known != 0, p.active, known)
-        }),
+        rule!(no_bits_outside "wInputActive", |p| p.active, SL_SLP_ACTIVE_SAFEPOSVALID | 0x3F00),
         RuleDef::new("wInputActive", Rule::BitsSet, Unit::Hex, |p| {
             let required = SL_SLP_ACTIVE_SAFEPOSVALID
                 | SL_SLP_ACTIVE_SINGLETURNPOS
@@ -208,13 +196,7 @@ impl Block for FB_SLP {
             let m = SL_SLP_ACTIVE_SINGLETURNPOSLL | SL_SLP_ACTIVE_MULTITURNPOSLL;
             when(p.active & m != 0 && p.active & m != m, p.active, m)
         }),
-        RuleDef::new("dwOptions", Rule::NoBitsOutside, Unit::Hex, |p| {
-            when(
-                p.options & !SL_OPT_SLP_SINGLETURN != 0,
-                p.options,
-                SL_OPT_SLP_SINGLETURN,
-            )
-        }),
+        rule!(no_bits_outside "dwOptions", |p| p.options, SL_OPT_SLP_SINGLETURN),
         RuleDef::new(
             "nMultiturnPosLLFix",
             Rule::NotAbove("nMultiturnPosULFix"),
@@ -246,17 +228,13 @@ impl Block for FB_SLP {
     }
     fn latched_crc(&self) -> u16 {
         let p = self.private();
-        let w = |d: u32| [d as u16, (d >> 16) as u16];
-        let [a, b, c, d] = p.adwFix.map(w);
-        let o = w(p.dwOptions);
+        let [a, b, c, d] = p.adwFix;
         param_crc(
             Self::MAGIC,
             0,
             0,
             0,
-            &[
-                p.wActive, o[0], o[1], a[0], a[1], b[0], b[1], c[0], c[1], d[0], d[1],
-            ],
+            &crc_words![u16 p.wActive, u32 p.dwOptions, u32 a, u32 b, u32 c, u32 d],
         )
     }
     /// An invalid SafePosValid byte reads FALSE (START).
@@ -329,20 +307,16 @@ impl Block for FB_SLP {
             (true, false) => {
                 let (v, lo, hi) = (inp.pos.full(), inp.lower.full(), inp.upper.full());
                 if v < lo {
-                    (SL_STATE_SAFE, BELOW)
+                    (SL_STATE_SAFE, LIMIT_BELOW)
                 } else if v > hi {
-                    (SL_STATE_SAFE, ABOVE)
+                    (SL_STATE_SAFE, LIMIT_ABOVE)
                 } else {
                     (SL_STATE_RUN, 0)
                 }
             }
         };
         // PositionInLimit switching on is where the latched parameters are verified (C3).
-        if state == SL_STATE_RUN
-            && self.private().stHeader.nState != SL_STATE_RUN
-            && !self.params_intact()
-        {
-            self.private_mut().stHeader.enter_error(SL_DIAG_CORRUPT);
+        if self.corrupt_entering_run(state == SL_STATE_RUN) {
             return Status::Corrupt;
         }
         let h = &mut self.private_mut().stHeader;
@@ -358,16 +332,12 @@ impl Block for FB_SLP {
     fn write_outputs(&mut self) {
         let p = *self.private();
         let h = p.stHeader;
-        let (error, run, safe) = match h.nState {
-            SL_STATE_ERROR => (true, false, false),
-            SL_STATE_RUN => (false, true, false),
-            SL_STATE_SAFE => (false, false, true),
-            _ => (false, false, false),
-        };
-        self.bError = u8::from(error);
-        self.bPositionInLimit = u8::from(run);
-        self.bBelowMin = u8::from(safe && h.wAux == BELOW);
-        self.bAboveMax = u8::from(safe && h.wAux == ABOVE);
+        [
+            self.bError,
+            self.bPositionInLimit,
+            self.bBelowMin,
+            self.bAboveMax,
+        ] = limit_outputs(&h);
         self.nState = h.nState;
         self.nDiag = h.wDiag;
         // A refused configuration names its limit error (semantics PL3).

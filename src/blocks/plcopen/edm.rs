@@ -125,6 +125,7 @@ crate::impl_sf_block!(SF_EDM {
     reset: Reset,
     consts(s): [s.MonitoringTime],
     rules: [sf::time0_rule("MonitoringTime")],
+    next: |s, inp, reset, in_state, times| next(s, inp, reset, in_state, times[0]),
 } {
     /// An invalid S_OutControl / S_StartReset byte reads FALSE; an invalid feedback byte
     /// is neither released nor switched (an error wherever the feedback is checked).
@@ -147,16 +148,6 @@ crate::impl_sf_block!(SF_EDM {
             },
             p.invalid != 0,
         )
-    }
-    #[inline(always)]
-    fn next(
-        s: Self::Diag,
-        inp: &SfEdmIn,
-        reset: ResetIn,
-        in_state: u32,
-        times: [u32; 2],
-    ) -> Self::Diag {
-        next(s, inp, reset, in_state, times[0])
     }
     #[inline(always)]
     fn write_outputs(&mut self, o: &sf::SfOut) {

@@ -99,6 +99,7 @@ crate::impl_sf_block!(SF_EnableSwitch {
     input: EnableSwitchIn,
     reset: Reset,
     consts(s): [],
+    next: |s, inp, reset, _in_state, _t| enable_switch_next(s, inp, reset),
 } {
     #[inline(always)]
     fn decode(&self) -> (Self::In, bool) {
@@ -126,16 +127,6 @@ crate::impl_sf_block!(SF_EnableSwitch {
         )
     }
     #[inline(always)]
-    fn next(
-        s: Self::Diag,
-        inp: &Self::In,
-        reset: ResetIn,
-        _in_state: u32,
-        _t: [u32; 2],
-    ) -> Self::Diag {
-        enable_switch_next(s, inp, reset)
-    }
-    #[inline(always)]
     fn write_outputs(&mut self, o: &SfOut) {
         crate::sf_outputs!(self, o, S_EnableSwitchOut, SafetyDemand, ResetRequest);
     }
@@ -144,22 +135,9 @@ crate::impl_sf_block!(SF_EnableSwitch {
 /// The private state's size is part of the struct's layout (56 bytes, no implicit padding).
 const _: () = assert!(core::mem::size_of::<SF_EnableSwitch>() == 56);
 
-/// The steady-state fast path (`base::sf::SfSteady`): the key is the six BOOL inputs; no
-/// state reads the time.
-impl crate::base::sf::SfSteady for SF_EnableSwitch {
-    #[inline(always)]
-    fn steady_key(&self) -> Option<u16> {
-        crate::base::sf::key([
-            &self.Activate,
-            &self.S_SafetyActive,
-            &self.S_EnableSwitchCh1,
-            &self.S_EnableSwitchCh2,
-            &self.S_AutoReset,
-            &self.Reset,
-        ])
-    }
-    #[inline(always)]
-    fn timed(&self) -> bool {
-        false
-    }
-}
+// The steady-state fast path (`base::sf::SfSteady`): the key is the six BOOL inputs; no
+// state reads the time.
+crate::sf_steady!(
+    SF_EnableSwitch: [Activate, S_SafetyActive, S_EnableSwitchCh1,
+        S_EnableSwitchCh2, S_AutoReset, Reset]
+);

@@ -114,24 +114,9 @@ crate::impl_sf_block!(SF_Guard {
     }
 });
 
-/// The steady-state fast path (`base::sf::SfSteady`): the key is the six BOOL inputs; the
-/// states waiting for the second switch read the discrepancy time.
-impl crate::base::sf::SfSteady for SF_Guard {
-    #[inline(always)]
-    fn steady_key(&self) -> Option<u16> {
-        crate::base::sf::key([
-            &self.Activate,
-            &self.S_GuardSwitch1,
-            &self.S_GuardSwitch2,
-            &self.S_StartReset,
-            &self.S_AutoReset,
-            &self.Reset,
-        ])
-    }
-    fn timed(&self) -> bool {
-        matches!(
-            self.diag_state(),
-            Some(SfGuardState::WaitSwitch1 | SfGuardState::WaitSwitch2)
-        )
-    }
-}
+// The steady-state fast path (`base::sf::SfSteady`): the key is the six BOOL inputs; the
+// states waiting for the second switch read the discrepancy time.
+crate::sf_steady!(
+    SF_Guard: [Activate, S_GuardSwitch1, S_GuardSwitch2, S_StartReset, S_AutoReset, Reset],
+    timed: SfGuardState::{WaitSwitch1, WaitSwitch2}
+);

@@ -203,6 +203,7 @@ crate::impl_sf_block!(SF_ModeSelector {
         crate::base::sf::time0_rule("ModeMonitorTime"),
         crate::base::sf::bool1_rule("AutoSetMode"),
     ],
+    next: |s, inp, reset, _in_state, t| mode_selector_next(s, inp, reset, t[1] == 1, t[0]),
 } {
     #[inline(always)]
     fn decode(&self) -> (Self::In, bool) {
@@ -259,16 +260,6 @@ crate::impl_sf_block!(SF_ModeSelector {
         }
         self.stPrivate.stHeader.wAux = aux;
     }
-    #[inline(always)]
-    fn next(
-        s: Self::Diag,
-        inp: &Self::In,
-        reset: ResetIn,
-        _in_state: u32,
-        t: [u32; 2],
-    ) -> Self::Diag {
-        mode_selector_next(s, inp, reset, t[1] == 1, t[0])
-    }
     fn write_outputs(&mut self, o: &SfOut) {
         let h = self.stPrivate.stHeader;
         // MODE_SELECTED: this call's modes (exactly the selection); MODE_LOCKED: the held one.
@@ -300,28 +291,10 @@ crate::impl_sf_block!(SF_ModeSelector {
 /// The layout: 80 bytes, no implicit padding.
 const _: () = assert!(core::mem::size_of::<SF_ModeSelector>() == 80);
 
-/// The steady-state fast path (`base::sf::SfSteady`): the key is every BOOL byte the call
-/// reads; the open-circuit time runs while every S_ModeX is FALSE.
-impl crate::base::sf::SfSteady for SF_ModeSelector {
-    #[inline(always)]
-    fn steady_key(&self) -> Option<u16> {
-        crate::base::sf::key([
-            &self.Activate,
-            &self.S_Mode0,
-            &self.S_Mode1,
-            &self.S_Mode2,
-            &self.S_Mode3,
-            &self.S_Mode4,
-            &self.S_Mode5,
-            &self.S_Mode6,
-            &self.S_Mode7,
-            &self.S_Unlock,
-            &self.S_SetMode,
-            &self.AutoSetMode,
-            &self.Reset,
-        ])
-    }
-    fn timed(&self) -> bool {
-        self.stPrivate.stHeader.wAux & AUX_OFF_RUNNING != 0
-    }
-}
+// The steady-state fast path (`base::sf::SfSteady`): the key is every BOOL byte the call
+// reads; the open-circuit time runs while every S_ModeX is FALSE.
+crate::sf_steady!(
+    SF_ModeSelector: [Activate, S_Mode0, S_Mode1, S_Mode2, S_Mode3, S_Mode4,
+        S_Mode5, S_Mode6, S_Mode7, S_Unlock, S_SetMode, AutoSetMode, Reset],
+    timed: |b| b.stPrivate.stHeader.wAux & AUX_OFF_RUNNING != 0
+);

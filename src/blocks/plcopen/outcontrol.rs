@@ -134,23 +134,9 @@ crate::impl_sf_block!(SF_OutControl {
     }
 });
 
-/// The steady-state fast path (`base::sf::SfSteady`): the key is every BOOL byte the call
-/// reads; no state reads the time.
-impl crate::base::sf::SfSteady for SF_OutControl {
-    #[inline(always)]
-    fn steady_key(&self) -> Option<u16> {
-        crate::base::sf::key([
-            &self.Activate,
-            &self.S_SafeControl,
-            &self.ProcessControl,
-            &self.StaticControl,
-            &self.S_StartReset,
-            &self.S_AutoReset,
-            &self.Reset,
-        ])
-    }
-    #[inline(always)]
-    fn timed(&self) -> bool {
-        false
-    }
-}
+// The steady-state fast path (`base::sf::SfSteady`): the key is every BOOL byte the call
+// reads; no state reads the time.
+crate::sf_steady!(
+    SF_OutControl: [Activate, S_SafeControl, ProcessControl,
+        StaticControl, S_StartReset, S_AutoReset, Reset]
+);

@@ -101,6 +101,9 @@ macro_rules! pair_block {
             reset: none,
             consts(s): [s.DiscrepancyTime],
             rules: [$crate::base::sf::time0_rule("DiscrepancyTime")],
+            next: |s, inp, _reset, in_state, times| {
+                $crate::blocks::plcopen::pair::next(s, inp, in_state, times[0])
+            },
         } {
             /// An invalid byte reads as the channel's inactive value (NC FALSE, NO TRUE).
             #[inline(always)]
@@ -117,16 +120,6 @@ macro_rules! pair_block {
                 )
             }
             #[inline(always)]
-            fn next(
-                s: Self::Diag,
-                inp: &Self::In,
-                _reset: $crate::base::sf::ResetIn,
-                in_state: u32,
-                times: [u32; 2],
-            ) -> Self::Diag {
-                $crate::blocks::plcopen::pair::next(s, inp, in_state, times[0])
-            }
-            #[inline(always)]
             fn write_outputs(&mut self, o: &$crate::base::sf::SfOut) {
                 $crate::sf_outputs!(self, o, $output, SafetyDemand);
             }
@@ -140,18 +133,9 @@ macro_rules! pair_block {
 #[doc(hidden)]
 macro_rules! pair_steady {
     ($ty:ident, $a:ident, $b:ident) => {
-        impl $crate::base::sf::SfSteady for $ty {
-            #[inline(always)]
-            fn steady_key(&self) -> Option<u16> {
-                $crate::base::sf::key([&self.Activate, &self.$a, &self.$b])
-            }
-            fn timed(&self) -> bool {
-                use $crate::blocks::plcopen::pair::PairState::*;
-                !matches!(
-                    self.diag_state(),
-                    Some(Idle | Init | Enabled | Error1 | Error2 | Error3)
-                )
-            }
-        }
+        $crate::sf_steady!($ty: [Activate, $a, $b], timed: |b| {
+            use $crate::blocks::plcopen::pair::PairState::*;
+            !matches!(b.diag_state(), Some(Idle | Init | Enabled | Error1 | Error2 | Error3))
+        });
     };
 }

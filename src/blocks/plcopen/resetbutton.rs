@@ -54,6 +54,7 @@ crate::impl_sf_block!(SF_ResetButton {
         crate::base::sf::time0_rule("TrailingMinimum"),
         crate::base::sf::time1_rule("TrailingMaximum"),
     ],
+    next: |s, _inp, reset, in_state, times| next(s, reset, in_state, times),
 } {
     const HAS_V10: bool = false;
     /// The trailing times are usable (C000 otherwise).
@@ -72,16 +73,6 @@ crate::impl_sf_block!(SF_ResetButton {
     #[inline(always)]
     fn decode(&self) -> (Self::In, bool) {
         ((), false)
-    }
-    #[inline(always)]
-    fn next(
-        s: Self::Diag,
-        _inp: &(),
-        reset: ResetIn,
-        in_state: u32,
-        times: [u32; 2],
-    ) -> Self::Diag {
-        next(s, reset, in_state, times)
     }
     fn first(times: [u32; 2]) -> Self::Diag {
         crate::base::sf::first_checked::<Self>(
@@ -111,14 +102,6 @@ impl SF_ResetButton {
     }
 }
 
-/// The steady-state fast path (`base::sf::SfSteady`): the key is every BOOL byte the call
-/// reads; the wait for the falling edge reads the trailing times.
-impl crate::base::sf::SfSteady for SF_ResetButton {
-    #[inline(always)]
-    fn steady_key(&self) -> Option<u16> {
-        crate::base::sf::key([&self.ResetRequested, &self.ResetIn])
-    }
-    fn timed(&self) -> bool {
-        self.diag_state() == Some(ResetButtonState::WaitFTrig)
-    }
-}
+// The steady-state fast path (`base::sf::SfSteady`): the key is every BOOL byte the call
+// reads; the wait for the falling edge reads the trailing times.
+crate::sf_steady!(SF_ResetButton: [ResetRequested, ResetIn], timed: ResetButtonState::{WaitFTrig});

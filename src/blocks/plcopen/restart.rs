@@ -106,6 +106,9 @@ macro_rules! restart_interlock_block {
             input: $crate::blocks::plcopen::restart::RestartIn,
             reset: Reset,
             consts(s): [],
+            next: |s, inp, reset, _in_state, _times| {
+                $crate::blocks::plcopen::restart::next(s, inp, reset)
+            },
         } {
             const HAS_V10: bool = $v10;
             #[inline(always)]
@@ -121,16 +124,6 @@ macro_rules! restart_interlock_block {
                     },
                     p.invalid != 0,
                 )
-            }
-            #[inline(always)]
-            fn next(
-                s: Self::Diag,
-                inp: &Self::In,
-                reset: $crate::base::sf::ResetIn,
-                _in_state: u32,
-                _times: [u32; 2],
-            ) -> Self::Diag {
-                $crate::blocks::plcopen::restart::next(s, inp, reset)
             }
             #[inline(always)]
             fn write_outputs(&mut self, o: &$crate::base::sf::SfOut) {
@@ -149,21 +142,6 @@ const _: () = assert!(core::mem::size_of::<SL_SF_PRIVATE>() == 40);
 #[doc(hidden)]
 macro_rules! restart_interlock_steady {
     ($ty:ident, $input:ident) => {
-        impl $crate::base::sf::SfSteady for $ty {
-            #[inline(always)]
-            fn steady_key(&self) -> Option<u16> {
-                $crate::base::sf::key([
-                    &self.Activate,
-                    &self.$input,
-                    &self.S_StartReset,
-                    &self.S_AutoReset,
-                    &self.Reset,
-                ])
-            }
-            #[inline(always)]
-            fn timed(&self) -> bool {
-                false
-            }
-        }
+        $crate::sf_steady!($ty: [Activate, $input, S_StartReset, S_AutoReset, Reset]);
     };
 }

@@ -120,20 +120,9 @@ crate::impl_sf_block!(SF_SafetyRequest {
     }
 });
 
-/// The steady-state fast path (`base::sf::SfSteady`): the key is the five BOOL inputs;
-/// WAIT_FOR_CONF reads the monitoring time.
-impl crate::base::sf::SfSteady for SF_SafetyRequest {
-    #[inline(always)]
-    fn steady_key(&self) -> Option<u16> {
-        crate::base::sf::key([
-            &self.Activate,
-            &self.S_OpMode,
-            &self.S_Acknowledge,
-            &self.S_StartReset,
-            &self.Reset,
-        ])
-    }
-    fn timed(&self) -> bool {
-        self.diag_state() == Some(SafetyRequestState::WaitConf)
-    }
-}
+// The steady-state fast path (`base::sf::SfSteady`): the key is the five BOOL inputs;
+// WAIT_FOR_CONF reads the monitoring time.
+crate::sf_steady!(
+    SF_SafetyRequest: [Activate, S_OpMode, S_Acknowledge, S_StartReset, Reset],
+    timed: SafetyRequestState::{WaitConf}
+);

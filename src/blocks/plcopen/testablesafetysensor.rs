@@ -6,7 +6,8 @@
 //! test a manual switching sequence of the sensor is required unless NoExternalTest. The
 //! codes the research leaves open are chosen in docs/semantics.md QT1–QT9.
 
-use crate::base::reason::{when, Rule, RuleDef, Unit};
+use crate::base::reason::rule;
+use crate::base::reason::RuleDef;
 use crate::base::sf::{self, ResetIn, SL_SF_PRIVATE};
 use crate::base::time;
 use crate::base::types::SL_BOOL;
@@ -120,16 +121,11 @@ crate::impl_sf_block!(SF_TestableSafetySensor {
     // change is C3FD; only 1 reads TRUE).
     consts(s): [s.TestTime, u32::from(s.NoExternalTest)],
     rules: [sf::time0_rule("TestTime")],
+    next: |s, inp, reset, in_state, times| next(s, inp, reset, in_state, times),
 } {
     /// TestTime ≤ 150 ms (C000 otherwise).
     const PARAM_RULES: &'static [RuleDef<sf::SfConsts>] =
-        &[RuleDef::new("TestTime", Rule::AtMost, Unit::Ms, |c| {
-            when(
-                c.times[0] > SF_TSS_MAX_TEST_TIME,
-                c.times[0],
-                SF_TSS_MAX_TEST_TIME,
-            )
-        })];
+        &[rule!(at_most "TestTime" in Ms, |c| c.times[0], SF_TSS_MAX_TEST_TIME)];
     /// An invalid byte reads FALSE (S_OSSD_In: the demand; NoExternalTest: the manual test).
     #[inline(always)]
     fn decode(&self) -> (Self::In, bool) {
@@ -150,16 +146,6 @@ crate::impl_sf_block!(SF_TestableSafetySensor {
             },
             p.invalid != 0,
         )
-    }
-    #[inline(always)]
-    fn next(
-        s: Self::Diag,
-        inp: &TssIn,
-        reset: ResetIn,
-        in_state: u32,
-        times: [u32; 2],
-    ) -> Self::Diag {
-        next(s, inp, reset, in_state, times)
     }
     fn first(times: [u32; 2]) -> Self::Diag {
         crate::base::sf::first_checked::<Self>(times, TssState::Init, TssState::ErrParam)
@@ -184,25 +170,9 @@ crate::impl_sf_block!(SF_TestableSafetySensor {
     }
 });
 
-/// The steady-state fast path (`base::sf::SfSteady`): the key is every BOOL byte the call
-/// reads; the test states read the test time.
-impl crate::base::sf::SfSteady for SF_TestableSafetySensor {
-    #[inline(always)]
-    fn steady_key(&self) -> Option<u16> {
-        crate::base::sf::key([
-            &self.Activate,
-            &self.S_OSSD_In,
-            &self.StartTest,
-            &self.NoExternalTest,
-            &self.S_StartReset,
-            &self.S_AutoReset,
-            &self.Reset,
-        ])
-    }
-    fn timed(&self) -> bool {
-        matches!(
-            self.diag_state(),
-            Some(TssState::TestRequest | TssState::TestActive)
-        )
-    }
-}
+// The steady-state fast path (`base::sf::SfSteady`): the key is every BOOL byte the call
+// reads; the test states read the test time.
+crate::sf_steady!(
+    SF_TestableSafetySensor: [Activate, S_OSSD_In, StartTest, NoExternalTest, S_StartReset, S_AutoReset, Reset],
+    timed: TssState::{TestRequest, TestActive}
+);

@@ -175,6 +175,9 @@ macro_rules! two_hand_block {
             input: $crate::blocks::plcopen::twohand::TwoHandIn,
             reset: none,
             consts(s): [],
+            next: |s, inp, _reset, in_state, _times| {
+                $crate::blocks::plcopen::twohand::$next(s, inp, in_state)
+            },
         } {
             #[inline(always)]
             fn decode(&self) -> (Self::In, bool) {
@@ -187,16 +190,6 @@ macro_rules! two_hand_block {
                     },
                     p.invalid != 0,
                 )
-            }
-            #[inline(always)]
-            fn next(
-                s: Self::Diag,
-                inp: &Self::In,
-                _reset: $crate::base::sf::ResetIn,
-                in_state: u32,
-                _times: [u32; 2],
-            ) -> Self::Diag {
-                $crate::blocks::plcopen::twohand::$next(s, inp, in_state)
             }
             #[inline(always)]
             fn write_outputs(&mut self, o: &$crate::base::sf::SfOut) {
@@ -214,18 +207,12 @@ macro_rules! two_hand_block {
 #[macro_export]
 #[doc(hidden)]
 macro_rules! two_hand_steady {
-    ($ty:ident, $diag:ident, timed: [$($timed:ident),*]) => {
-        impl $crate::base::sf::SfSteady for $ty {
-            #[inline(always)]
-            fn steady_key(&self) -> Option<u16> {
-                $crate::base::sf::key([&self.Activate, &self.S_Button1, &self.S_Button2])
-            }
-            #[inline(always)]
-            fn timed(&self) -> bool {
-                false
-                    $(|| self.diag_state()
-                        == Some($crate::blocks::plcopen::twohand::$diag::$timed))*
-            }
-        }
+    ($ty:ident, $diag:ident, timed: []) => {
+        $crate::sf_steady!($ty: [Activate, S_Button1, S_Button2]);
+    };
+    ($ty:ident, $diag:ident, timed: [$($timed:ident),+]) => {
+        $crate::sf_steady!($ty: [Activate, S_Button1, S_Button2], timed: |b| {
+            false $(|| b.diag_state() == Some($crate::blocks::plcopen::twohand::$diag::$timed))+
+        });
     };
 }
