@@ -29,6 +29,52 @@ const PARAM_OVERRIDES: &[(&str, &str, i64)] = &[
     ("SLI2", "nLimitNeg", 3),
 ];
 
+/// LOADSENSING's value table is no field of the field table (`table_params`): two rows of
+/// the manual's Fig. 132 (X 0 and 5, non-negative so that every variant takes them), `aRow`
+/// right after `dwOptions`, each row X, Y1, Y2, WY1, WY2 of the analog type. Each value is a
+/// parameter to the explorer (a leaked `Field` per table cell), so the analog inputs also
+/// take the table's values -1, =, +1.
+fn loadsensing_table(ty: &BlockType) -> Vec<(&'static Field, i64)> {
+    const ROWS: [[i64; 5]; 2] = [[0, 300, 400, 310, 390], [5, 400, 500, 410, 490]];
+    const CELLS: [&str; 10] = [
+        "aRow[0].nX",
+        "aRow[0].nY1",
+        "aRow[0].nY2",
+        "aRow[0].nWY1",
+        "aRow[0].nWY2",
+        "aRow[1].nX",
+        "aRow[1].nY1",
+        "aRow[1].nY2",
+        "aRow[1].nWY1",
+        "aRow[1].nWY2",
+    ];
+    if !ty.info.name.starts_with("LOADSENSING") {
+        return vec![];
+    }
+    let (Some(x), Some(opts), Some(rows)) = (
+        ty.field("nAnalogInX"),
+        ty.field("dwOptions"),
+        ty.field("nRowCount"),
+    ) else {
+        panic!(
+            "{}: the field table lacks nAnalogInX, dwOptions or nRowCount",
+            ty.info.name
+        )
+    };
+    let width = x.kind.size() as u16;
+    let mut out = vec![(rows, 2)];
+    for (i, v) in ROWS.iter().flatten().enumerate() {
+        let cell: &'static Field = Box::leak(Box::new(Field {
+            name: CELLS[i],
+            offset: opts.offset + 4 + i as u16 * width,
+            kind: x.kind,
+            dir: Dir::Param,
+        }));
+        out.push((cell, *v));
+    }
+    out
+}
+
 /// A block's fixed times (not parameters), in ms.
 fn fixed_limits(ty: &BlockType) -> Vec<u32> {
     match ty.info.name {
@@ -45,6 +91,8 @@ fn family_inputs(ty: &BlockType) -> usize {
         "XOR" => 2,
         "OPMODE" => 3,
         "MUTING" => 4,
+        // Reset, CountUp and CountDown.
+        n if n.starts_with("COUNTER_") => 3,
         _ => 2,
     }
 }
@@ -140,6 +188,7 @@ pub fn configs(ty: &'static BlockType) -> Vec<Config> {
             params.push((f, 1));
         }
     }
+    params.extend(loadsensing_table(ty));
     // Which numbered inputs are active: the first few of the family.
     let mapped: Vec<(&'static Field, u8)> = ty
         .fields
@@ -156,9 +205,9 @@ pub fn configs(ty: &'static BlockType) -> Vec<Config> {
     let mut candidates = vec![mask];
     candidates.extend([0x3, 0x1, 0x7, 0xF, 0x1F, 0x3F, 0xFF, 0xFFFF, 0]);
     // The analog blocks' analog inputs are bits 8.. (ARITH_ACTIVE = 0x0300), their BOOL
-    // inputs the low bits.
+    // inputs the low bits: with the family's BOOL inputs first, so that they are driven.
     for analog in [0x0100, 0x0300, 0x0700, 0x0F00, 0x1F00] {
-        candidates.extend([analog, analog | mask, analog | 0x1, analog | 0x3]);
+        candidates.extend([analog | mask, analog, analog | 0x1, analog | 0x3]);
     }
     let mut base = None;
     for m in candidates {
