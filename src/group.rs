@@ -16,7 +16,7 @@
 //! connection(s) with its Connection ID (docs/semantics.md FS17–FS21).
 
 use crate::base::block::{Dir, Field, Kind};
-use crate::base::bools::{edge, is_true};
+use crate::base::bools::{bit_flags, edge, is_true};
 use crate::base::member::*;
 // The member interface, public here too: a user of the group implements or names it here.
 pub use crate::base::member::{ConnReport, Member, Ran, Wiring, SL_GROUP_CONN_MAX};
@@ -418,14 +418,14 @@ pub struct SL_GROUP {
 }
 
 const MAGIC: u32 = 0x6A05;
-/// Previous ErrAck level.
-const F_ACK_PREV: u8 = 1;
-/// Latched error causes (cleared on ERROR → RESET).
-const F_FB: u8 = 1 << 1;
-const F_COM: u8 = 1 << 2;
-const F_MODULE: u8 = 1 << 3;
-/// A connection member reported bComStartup in the previous cycle.
-const F_CONN_STARTUP: u8 = 1 << 4;
+bit_flags!(u8:
+    /// Previous ErrAck level.
+    F_ACK_PREV,
+    /// Latched error causes (cleared on ERROR → RESET).
+    F_FB, F_COM, F_MODULE,
+    /// A connection member reported bComStartup in the previous cycle.
+    F_CONN_STARTUP,
+);
 
 /// The group's private data, unpacked.
 #[derive(Clone, Copy, Debug, Default)]
