@@ -16,7 +16,7 @@
 //! connection(s) with its Connection ID (docs/semantics.md FS17–FS21).
 
 use crate::base::block::{Dir, Field, Kind};
-use crate::base::bools::{bit_flags, edge, is_true};
+use crate::base::bools::{any_invalid, bit_flags, edge, is_true};
 use crate::base::member::*;
 // The member interface, public here too: a user of the group implements or names it here.
 pub use crate::base::member::{ConnReport, Member, Ran, Wiring, SL_GROUP_CONN_MAX};
@@ -768,15 +768,15 @@ pub fn cycle_traced<M: Members + ?Sized, L: Links + ?Sized>(
         g.nState = SL_STATE_ERROR;
         return SL_E_CORRUPT;
     };
-    let mut status = Status::Ok;
-    let raw = [
+    let inputs = [
         g.bRun,
         g.bErrAck,
         g.bModuleFault,
         g.bComErrIn,
         g.bComStartupIn,
     ];
-    if raw.iter().any(|&b| b > 1) {
+    let mut status = Status::Ok;
+    if any_invalid(&inputs) {
         status = Status::InvalidBool;
     }
     // Invalid bytes: Run and ErrAck read FALSE, the fault inputs read TRUE (ABI §2).

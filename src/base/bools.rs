@@ -1,6 +1,12 @@
 //! BOOL decoding (ABI §2): 0 = FALSE, 1 = TRUE, anything else is an invalid BOOL that reads
 //! as the value demanding the safe state. Edges of control inputs (ABI §7).
 
+/// Whether any of the BOOL bytes is invalid (neither 0 nor 1).
+#[inline(always)]
+pub fn any_invalid(raw: &[u8]) -> bool {
+    raw.iter().any(|&b| b > 1)
+}
+
 /// A set of BOOL input bytes packed into bit masks.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct Packed {

@@ -10,7 +10,7 @@
 use super::crc::next_seq;
 use super::frame::{decode, encode, frame_len, is_known_cmd, SL_FSOE_FRAME};
 use super::*;
-use crate::base::bools::{bit_flags, edge};
+use crate::base::bools::{any_invalid, bit_flags, edge};
 use crate::base::types::*;
 
 include!(concat!(env!("OUT_DIR"), "/abi/fsoe/conn.rs"));
@@ -851,15 +851,15 @@ pub fn cycle(c: &mut SL_FSOE_CONN, now: u32, rx: Option<&[u8]>, tx: &mut [u8]) -
     if tx.len() < frame_len(usize::from(p.nTxLen)) {
         return (Status::Length, 0);
     }
-    let mut status = Status::Ok;
-    let raw = [
+    let inputs = [
         c.bRun,
         c.bErrAck,
         c.bComErrAck,
         c.bShutdownRequest,
         c.bModuleFault,
     ];
-    if raw.iter().any(|&b| b > 1) {
+    let mut status = Status::Ok;
+    if any_invalid(&inputs) {
         status = Status::InvalidBool;
     }
     let run = c.bRun == 1;
