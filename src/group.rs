@@ -632,22 +632,15 @@ pub fn add_link<M: Members + ?Sized>(
     }
     let n = usize::from(c.links);
     let in_group = |i: u16| i < c.members;
-    let src = in_group(link.nSrcMember)
-        .then(|| {
-            m.with(usize::from(link.nSrcMember), |b| {
-                field_at(b, link.nSrcOffset, Dir::Output)
-            })
-        })
-        .flatten()
-        .flatten();
-    let dst = in_group(link.nDstMember)
-        .then(|| {
-            m.with(usize::from(link.nDstMember), |b| {
-                field_at(b, link.nDstOffset, Dir::Input)
-            })
-        })
-        .flatten()
-        .flatten();
+    // The field of a member in the group at an offset, in one direction.
+    let mut field = |member: u16, offset: u16, dir: Dir| {
+        in_group(member)
+            .then(|| m.with(usize::from(member), |b| field_at(b, offset, dir)))
+            .flatten()
+            .flatten()
+    };
+    let src = field(link.nSrcMember, link.nSrcOffset, Dir::Output);
+    let dst = field(link.nDstMember, link.nDstOffset, Dir::Input);
     // SafeData bits (ABI-2 §10.7): the bit must lie in the connection's latched length.
     let src_bits = in_group(link.nSrcMember)
         .then(|| m.with(usize::from(link.nSrcMember), |b| b.safe_data_bits()))
@@ -657,27 +650,11 @@ pub fn add_link<M: Members + ?Sized>(
         .flatten();
     let typed = match link.nKind {
         SL_LINK_RXBIT => {
-            let dst_bool = in_group(link.nDstMember)
-                .then(|| {
-                    m.with(usize::from(link.nDstMember), |b| {
-                        field_at(b, link.nDstOffset, Dir::Input)
-                    })
-                })
-                .flatten()
-                .flatten()
-                .is_some_and(|f| f.kind == Kind::Bool);
+            let dst_bool = dst.is_some_and(|f| f.kind == Kind::Bool);
             dst_bool && src_bits.is_some_and(|(rx, _)| link.nSrcOffset < rx)
         }
         SL_LINK_TXBIT => {
-            let src_bool = in_group(link.nSrcMember)
-                .then(|| {
-                    m.with(usize::from(link.nSrcMember), |b| {
-                        field_at(b, link.nSrcOffset, Dir::Output)
-                    })
-                })
-                .flatten()
-                .flatten()
-                .is_some_and(|f| f.kind == Kind::Bool);
+            let src_bool = src.is_some_and(|f| f.kind == Kind::Bool);
             src_bool && dst_bits.is_some_and(|(_, tx)| link.nDstOffset < tx)
         }
         // Same IEC type on both ends (width and signedness), carried by the stated kind.
