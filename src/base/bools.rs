@@ -106,6 +106,21 @@ pub fn edge(raw: u8, flags: &mut u8, bit: u8) -> Edge {
     }
 }
 
+/// Declares private flag constants of type `$t`, one bit each from bit 0 in the order
+/// named (each may carry its doc): `bit_flags!(u8: F_A, F_B);` is
+/// `const F_A: u8 = 1 << 0; const F_B: u8 = 1 << 1;`.
+macro_rules! bit_flags {
+    ($t:ty: $($(#[$m:meta])* $name:ident),+ $(,)?) => {
+        $crate::base::bools::bit_flags!(@ $t, 0, $($(#[$m])* $name),+);
+    };
+    (@ $t:ty, $n:expr, $(#[$m:meta])* $name:ident $(, $($(#[$rm:meta])* $rest:ident),+)?) => {
+        $(#[$m])*
+        const $name: $t = 1 << ($n);
+        $($crate::base::bools::bit_flags!(@ $t, $n + 1, $($(#[$rm])* $rest),+);)?
+    };
+}
+pub(crate) use bit_flags;
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -170,18 +185,3 @@ mod tests {
         assert!(edge(0, &mut f, 1).falling);
     }
 }
-
-/// Declares private flag constants of type `$t`, one bit each from bit 0 in the order
-/// named (each may carry its doc): `bit_flags!(u8: F_A, F_B);` is
-/// `const F_A: u8 = 1 << 0; const F_B: u8 = 1 << 1;`.
-macro_rules! bit_flags {
-    ($t:ty: $($(#[$m:meta])* $name:ident),+ $(,)?) => {
-        $crate::base::bools::bit_flags!(@ $t, 0, $($(#[$m])* $name),+);
-    };
-    (@ $t:ty, $n:expr, $(#[$m:meta])* $name:ident $(, $($(#[$rm:meta])* $rest:ident),+)?) => {
-        $(#[$m])*
-        const $name: $t = 1 << ($n);
-        $($crate::base::bools::bit_flags!(@ $t, $n + 1, $($(#[$rm])* $rest),+);)?
-    };
-}
-pub(crate) use bit_flags;
