@@ -16,7 +16,7 @@
 //! connection(s) with its Connection ID (docs/semantics.md FS17–FS21).
 
 use crate::base::block::{Dir, Field, Kind};
-use crate::base::bools::{edge, is_true};
+use crate::base::bools::{any_invalid, bit_flags, edge, is_true};
 use crate::base::member::*;
 // The member interface, public here too: a user of the group implements or names it here.
 pub use crate::base::member::{ConnReport, Member, Ran, Wiring, SL_GROUP_CONN_MAX};
@@ -418,14 +418,14 @@ pub struct SL_GROUP {
 }
 
 const MAGIC: u32 = 0x6A05;
-/// Previous ErrAck level.
-const F_ACK_PREV: u8 = 1;
-/// Latched error causes (cleared on ERROR → RESET).
-const F_FB: u8 = 1 << 1;
-const F_COM: u8 = 1 << 2;
-const F_MODULE: u8 = 1 << 3;
-/// A connection member reported bComStartup in the previous cycle.
-const F_CONN_STARTUP: u8 = 1 << 4;
+bit_flags!(u8:
+    /// Previous ErrAck level.
+    F_ACK_PREV,
+    /// Latched error causes (cleared on ERROR → RESET).
+    F_FB, F_COM, F_MODULE,
+    /// A connection member reported bComStartup in the previous cycle.
+    F_CONN_STARTUP,
+);
 
 /// The group's private data, unpacked.
 #[derive(Clone, Copy, Debug, Default)]
@@ -632,22 +632,15 @@ pub fn add_link<M: Members + ?Sized>(
     }
     let n = usize::from(c.links);
     let in_group = |i: u16| i < c.members;
-    let src = in_group(link.nSrcMember)
-        .then(|| {
-            m.with(usize::from(link.nSrcMember), |b| {
-                field_at(b, link.nSrcOffset, Dir::Output)
-            })
-        })
-        .flatten()
-        .flatten();
-    let dst = in_group(link.nDstMember)
-        .then(|| {
-            m.with(usize::from(link.nDstMember), |b| {
-                field_at(b, link.nDstOffset, Dir::Input)
-            })
-        })
-        .flatten()
-        .flatten();
+    // The field of a member in the group at an offset, in one direction.
+    let mut field = |member: u16, offset: u16, dir: Dir| {
+        in_group(member)
+            .then(|| m.with(usize::from(member), |b| field_at(b, offset, dir)))
+            .flatten()
+            .flatten()
+    };
+    let src = field(link.nSrcMember, link.nSrcOffset, Dir::Output);
+    let dst = field(link.nDstMember, link.nDstOffset, Dir::Input);
     // SafeData bits (ABI-2 §10.7): the bit must lie in the connection's latched length.
     let src_bits = in_group(link.nSrcMember)
         .then(|| m.with(usize::from(link.nSrcMember), |b| b.safe_data_bits()))
@@ -657,27 +650,11 @@ pub fn add_link<M: Members + ?Sized>(
         .flatten();
     let typed = match link.nKind {
         SL_LINK_RXBIT => {
-            let dst_bool = in_group(link.nDstMember)
-                .then(|| {
-                    m.with(usize::from(link.nDstMember), |b| {
-                        field_at(b, link.nDstOffset, Dir::Input)
-                    })
-                })
-                .flatten()
-                .flatten()
-                .is_some_and(|f| f.kind == Kind::Bool);
+            let dst_bool = dst.is_some_and(|f| f.kind == Kind::Bool);
             dst_bool && src_bits.is_some_and(|(rx, _)| link.nSrcOffset < rx)
         }
         SL_LINK_TXBIT => {
-            let src_bool = in_group(link.nSrcMember)
-                .then(|| {
-                    m.with(usize::from(link.nSrcMember), |b| {
-                        field_at(b, link.nSrcOffset, Dir::Output)
-                    })
-                })
-                .flatten()
-                .flatten()
-                .is_some_and(|f| f.kind == Kind::Bool);
+            let src_bool = src.is_some_and(|f| f.kind == Kind::Bool);
             src_bool && dst_bits.is_some_and(|(_, tx)| link.nDstOffset < tx)
         }
         // Same IEC type on both ends (width and signedness), carried by the stated kind.
@@ -768,15 +745,15 @@ pub fn cycle_traced<M: Members + ?Sized, L: Links + ?Sized>(
         g.nState = SL_STATE_ERROR;
         return SL_E_CORRUPT;
     };
-    let mut status = Status::Ok;
-    let raw = [
+    let inputs = [
         g.bRun,
         g.bErrAck,
         g.bModuleFault,
         g.bComErrIn,
         g.bComStartupIn,
     ];
-    if raw.iter().any(|&b| b > 1) {
+    let mut status = Status::Ok;
+    if any_invalid(&inputs) {
         status = Status::InvalidBool;
     }
     // Invalid bytes: Run and ErrAck read FALSE, the fault inputs read TRUE (ABI §2).

@@ -1,6 +1,12 @@
 //! BOOL decoding (ABI §2): 0 = FALSE, 1 = TRUE, anything else is an invalid BOOL that reads
 //! as the value demanding the safe state. Edges of control inputs (ABI §7).
 
+/// Whether any of the BOOL bytes is invalid (neither 0 nor 1).
+#[inline(always)]
+pub fn any_invalid(raw: &[u8]) -> bool {
+    raw.iter().any(|&b| b > 1)
+}
+
 /// A set of BOOL input bytes packed into bit masks.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct Packed {
@@ -99,6 +105,21 @@ pub fn edge(raw: u8, flags: &mut u8, bit: u8) -> Edge {
         falling: valid && prev && !level,
     }
 }
+
+/// Declares private flag constants of type `$t`, one bit each from bit 0 in the order
+/// named (each may carry its doc): `bit_flags!(u8: F_A, F_B);` is
+/// `const F_A: u8 = 1 << 0; const F_B: u8 = 1 << 1;`.
+macro_rules! bit_flags {
+    ($t:ty: $($(#[$m:meta])* $name:ident),+ $(,)?) => {
+        $crate::base::bools::bit_flags!(@ $t, 0, $($(#[$m])* $name),+);
+    };
+    (@ $t:ty, $n:expr, $(#[$m:meta])* $name:ident $(, $($(#[$rm:meta])* $rest:ident),+)?) => {
+        $(#[$m])*
+        const $name: $t = 1 << ($n);
+        $($crate::base::bools::bit_flags!(@ $t, $n + 1, $($(#[$rm])* $rest),+);)?
+    };
+}
+pub(crate) use bit_flags;
 
 #[cfg(test)]
 mod tests {

@@ -71,30 +71,19 @@ macro_rules! block_struct {
     ($(#[doc = $doc:literal])* $name:ident {
         $($(#[doc = $fd:expr])* pub $f:ident: $ft:ty,)*
     } private $po:literal: $private:ty, $bytes:literal) => {
-        $(#[doc = $doc])*
-        #[repr(C)]
-        #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-        #[allow(non_snake_case, non_camel_case_types)]
-        pub struct $name {
-            $($(#[doc = $fd])* pub $f: $ft,)*
-            #[doc = concat!(" Offset ", $po, ". Private state, ", $bytes, " bytes: never write it.")]
-            pub stPrivate: $private,
+        $crate::base::layout::zeroed_struct! {
+            $(#[doc = $doc])*
+            $name {
+                $($(#[doc = $fd])* pub $f: $ft,)*
+                #[doc = concat!(" Offset ", $po, ". Private state, ", $bytes, " bytes: never write it.")]
+                pub stPrivate: $private,
+            }
         }
 
         impl $name {
             /// An all-zero instance (valid: it initialises itself on the first call).
             pub const fn zeroed() -> Self {
-                use $crate::base::layout::Zeroed;
-                Self {
-                    $($f: <$ft as Zeroed>::ZERO,)*
-                    stPrivate: <$private as Zeroed>::ZERO,
-                }
-            }
-        }
-
-        impl Default for $name {
-            fn default() -> Self {
-                Self::zeroed()
+                <Self as $crate::base::layout::Zeroed>::ZERO
             }
         }
     };
@@ -241,7 +230,7 @@ pub(crate) use private_struct;
 /// have no derived one): `#[repr(C)]`, the derives, the fields, [`Zeroed`] and `Default`.
 macro_rules! zeroed_struct {
     ($(#[doc = $doc:literal])* $name:ident {
-        $($(#[doc = $fd:literal])* pub $f:ident: $ft:ty,)*
+        $($(#[doc = $fd:expr])* pub $f:ident: $ft:ty,)*
     }) => {
         $(#[doc = $doc])*
         #[repr(C)]

@@ -190,6 +190,45 @@ impl Wiring {
     }
 }
 
+/// The `Cyclic` impl of a member: its magic and the five cycle entry points from the
+/// family's envelope (`base::envelope` or `base::sf`), then the block's own methods. The
+/// same code as written out: the entry points stay `#[inline(always)]` calls.
+macro_rules! impl_cyclic {
+    ([$($gen:tt)*] $ty:ty {
+        magic: $magic:expr,
+        init: $init:path,
+        cycle: $cycle:path,
+        fast: $fast:path,
+        settle: $settle:path,
+        force: $force:path,
+        $($own:tt)*
+    }) => {
+        impl<$($gen)*> $crate::base::block::Cyclic for $ty {
+            const MAGIC: u16 = $magic;
+            fn init_fb(&mut self) -> $crate::base::types::Status {
+                $init(self)
+            }
+            #[inline(always)]
+            fn cycle_fb(&mut self, now: u32) -> $crate::base::types::Status {
+                $cycle(self, now)
+            }
+            #[inline(always)]
+            fn cycle_fast(&mut self, now: u32) -> bool {
+                $fast(self, now)
+            }
+            #[inline(always)]
+            fn cycle_rest(&mut self, now: u32) -> $crate::base::types::Status {
+                $settle(self, now)
+            }
+            fn force_safe(&mut self) {
+                $force(self)
+            }
+            $($own)*
+        }
+    };
+}
+pub(crate) use impl_cyclic;
+
 /// Implements the envelope's `Instance`, the group's [`Member`] and the registry's
 /// `Registered` for a block struct, from its info and the lists of its fields by direction
 /// (`bRun`/`bErrAck` and `nState`/`nDiag` are added: every block has them at the same
@@ -229,26 +268,13 @@ macro_rules! impl_member {
                 self.bErrAck
             }
         }
-        impl<$($gen)*> $crate::base::block::Cyclic for $ty {
-            const MAGIC: u16 = <Self as $crate::base::envelope::Block>::MAGIC;
-            fn init_fb(&mut self) -> $crate::base::types::Status {
-                $crate::base::envelope::init(self)
-            }
-            #[inline(always)]
-            fn cycle_fb(&mut self, now: u32) -> $crate::base::types::Status {
-                $crate::base::envelope::cycle(self, now)
-            }
-            #[inline(always)]
-            fn cycle_fast(&mut self, now: u32) -> bool {
-                $crate::base::envelope::Block::fast(self, now)
-            }
-            #[inline(always)]
-            fn cycle_rest(&mut self, now: u32) -> $crate::base::types::Status {
-                $crate::base::envelope::Block::settle(self, now)
-            }
-            fn force_safe(&mut self) {
-                $crate::base::envelope::force_error(self)
-            }
+        $crate::base::member::impl_cyclic!([$($gen)*] $ty {
+            magic: <Self as $crate::base::envelope::Block>::MAGIC,
+            init: $crate::base::envelope::init,
+            cycle: $crate::base::envelope::cycle,
+            fast: $crate::base::envelope::Block::fast,
+            settle: $crate::base::envelope::Block::settle,
+            force: $crate::base::envelope::force_error,
             fn in_error(&self) -> bool {
                 self.nState == $crate::base::types::SL_STATE_ERROR
             }
@@ -261,7 +287,7 @@ macro_rules! impl_member {
             fn rule(i: usize) -> Option<$crate::base::reason::RuleInfo> {
                 <Self as $crate::base::envelope::Block>::RULES.get(i).map(|r| r.info)
             }
-        }
+        });
         impl<$($gen)*> $crate::base::block::Private for $ty {
             type P = $private;
             #[inline(always)]
@@ -452,26 +478,13 @@ macro_rules! impl_sf_member {
                 )
             }
         }
-        impl $crate::base::block::Cyclic for $ty {
-            const MAGIC: u16 = <Self as $crate::base::sf::SfBlock>::MAGIC;
-            fn init_fb(&mut self) -> $crate::base::types::Status {
-                $crate::base::sf::init(self)
-            }
-            #[inline(always)]
-            fn cycle_fb(&mut self, now: u32) -> $crate::base::types::Status {
-                $crate::base::sf::cycle(self, now)
-            }
-            #[inline(always)]
-            fn cycle_fast(&mut self, now: u32) -> bool {
-                $crate::base::sf::fast(self, now)
-            }
-            #[inline(always)]
-            fn cycle_rest(&mut self, now: u32) -> $crate::base::types::Status {
-                $crate::base::sf::settle(self, now)
-            }
-            fn force_safe(&mut self) {
-                $crate::base::sf::force_fault(self)
-            }
+        $crate::base::member::impl_cyclic!([] $ty {
+            magic: <Self as $crate::base::sf::SfBlock>::MAGIC,
+            init: $crate::base::sf::init,
+            cycle: $crate::base::sf::cycle,
+            fast: $crate::base::sf::fast,
+            settle: $crate::base::sf::settle,
+            force: $crate::base::sf::force_fault,
             fn in_error(&self) -> bool {
                 self.DiagCode >= 0xC000
             }
@@ -481,7 +494,7 @@ macro_rules! impl_sf_member {
             fn rule(i: usize) -> Option<$crate::base::reason::RuleInfo> {
                 $crate::base::sf::rules::<Self>().nth(i).map(|r| r.info)
             }
-        }
+        });
         impl $crate::base::block::Registered for $ty {
             // The name is the struct's (the PLCopen FB name), the DiagCode texts are its
             // states'; the group-level states are the family's.

@@ -8,6 +8,7 @@ use crate::base::header::SL_PRIVATE_HEADER;
 use crate::base::member::Member;
 use crate::base::types::*;
 use crate::blocks::boolean::ton2::FB_TON2;
+use crate::blocks::plcopen::{antivalent::SF_Antivalent, resetbutton::SF_ResetButton};
 use crate::fsoe::SL_TYPE_FSOE_CONN;
 use crate::fsoe::{conn::SL_FSOE_CONN, frame::SL_FSOE_FRAME};
 use crate::group::{self, Members, SL_LINK_BOOL};
@@ -1058,15 +1059,12 @@ pub unsafe extern "C" fn sl_group_add_link(
     nDstMember: u16,
     nDstOffset: u16,
 ) -> i32 {
-    ffi_boundary!(SL_E_INTERNAL, {
-        // SAFETY: forwarded under this function's contract.
-        unsafe {
-            add_link(
-                g, aMembers, aLinks, None, nSrcMember, nSrcOffset, nDstMember, nDstOffset,
-            )
-        }
-        .unwrap_or_else(|e| e)
-    })
+    // SAFETY: forwarded under this function's contract.
+    unsafe {
+        add_link(
+            g, aMembers, aLinks, None, nSrcMember, nSrcOffset, nDstMember, nDstOffset,
+        )
+    }
 }
 
 /// The checks and the insertion behind `sl_group_add_link` (`kind` None: the kind follows
@@ -1084,43 +1082,47 @@ unsafe fn add_link(
     nSrcOffset: u16,
     nDstMember: u16,
     nDstOffset: u16,
-) -> Result<i32, i32> {
-    let g_ptr = g;
-    let g = instance(g)?;
-    let mut t = member_table(g, g_ptr as usize, aMembers)?;
-    let (_, link_cap) = group::link_counts(g).ok_or(SL_E_CORRUPT)?;
-    let table = storage(aMembers, usize::from(t.cap))?;
-    let link_span = storage(aLinks, usize::from(link_cap))?;
-    tables_disjoint(g_ptr, table, Some(link_span))?;
-    for i in 0..usize::from(t.count) {
-        if !disjoint(t.span_of(i).ok_or(SL_E_CORRUPT)?, link_span) {
-            return Err(SL_E_CONFIG);
+) -> i32 {
+    // The panic boundary of both entry points: the checks below return their refusal as `Err`.
+    let checked = || -> Result<i32, i32> {
+        let g_ptr = g;
+        let g = instance(g)?;
+        let mut t = member_table(g, g_ptr as usize, aMembers)?;
+        let (_, link_cap) = group::link_counts(g).ok_or(SL_E_CORRUPT)?;
+        let table = storage(aMembers, usize::from(t.cap))?;
+        let link_span = storage(aLinks, usize::from(link_cap))?;
+        tables_disjoint(g_ptr, table, Some(link_span))?;
+        for i in 0..usize::from(t.count) {
+            if !disjoint(t.span_of(i).ok_or(SL_E_CORRUPT)?, link_span) {
+                return Err(SL_E_CONFIG);
+            }
         }
-    }
-    // SAFETY: checked above: the caller's link table, disjoint from the group, the member
-    // table and every member.
-    let links = unsafe { slice_mut(aLinks, usize::from(link_cap)) };
-    // Without a stated kind it follows from the source field's type; add_link refuses a
-    // destination of another type.
-    let kind = kind.unwrap_or_else(|| {
-        t.with(usize::from(nSrcMember), |b| {
-            b.fields()
-                .iter()
-                .find(|f| f.offset == nSrcOffset)
-                .and_then(|f| group::link_kind(f.kind))
-        })
-        .flatten()
-        .unwrap_or(SL_LINK_BOOL)
-    });
-    let link = SL_LINK {
-        nSrcMember,
-        nSrcOffset,
-        nDstMember,
-        nDstOffset,
-        nKind: kind,
-        aReserved: [0; 3],
+        // SAFETY: checked above: the caller's link table, disjoint from the group, the member
+        // table and every member.
+        let links = unsafe { slice_mut(aLinks, usize::from(link_cap)) };
+        // Without a stated kind it follows from the source field's type; add_link refuses a
+        // destination of another type.
+        let kind = kind.unwrap_or_else(|| {
+            t.with(usize::from(nSrcMember), |b| {
+                b.fields()
+                    .iter()
+                    .find(|f| f.offset == nSrcOffset)
+                    .and_then(|f| group::link_kind(f.kind))
+            })
+            .flatten()
+            .unwrap_or(SL_LINK_BOOL)
+        });
+        let link = SL_LINK {
+            nSrcMember,
+            nSrcOffset,
+            nDstMember,
+            nDstOffset,
+            nKind: kind,
+            aReserved: [0; 3],
+        };
+        Ok(group::add_link(g, &mut t, links, link))
     };
-    Ok(group::add_link(g, &mut t, links, link))
+    ffi_boundary!(SL_E_INTERNAL, checked().unwrap_or_else(|e| e))
 }
 
 /// Links as `sl_group_add_link` with the link kind stated: SL_LINK_BOOL, SL_LINK_ANALOG16,
@@ -1147,22 +1149,13 @@ pub unsafe extern "C" fn sl_group_add_link_kind(
     nDstMember: u16,
     nDstOffset: u16,
 ) -> i32 {
-    ffi_boundary!(SL_E_INTERNAL, {
-        // SAFETY: forwarded under this function's contract.
-        unsafe {
-            add_link(
-                g,
-                aMembers,
-                aLinks,
-                Some(nKind),
-                nSrcMember,
-                nSrcOffset,
-                nDstMember,
-                nDstOffset,
-            )
-        }
-        .unwrap_or_else(|e| e)
-    })
+    let kind = Some(nKind);
+    // SAFETY: forwarded under this function's contract.
+    unsafe {
+        add_link(
+            g, aMembers, aLinks, kind, nSrcMember, nSrcOffset, nDstMember, nDstOffset,
+        )
+    }
 }
 
 /// One group cycle at `tNow`: group state, then every member in order (links first), all
@@ -1640,13 +1633,8 @@ fn write_defaults<B>(p: *mut B, value: fn() -> B) -> i32 {
 /// # Safety
 /// `p` is NULL or points to a caller-owned SF_ResetButton that nothing else accesses during the call.
 #[no_mangle]
-pub unsafe extern "C" fn sl_sf_resetbutton_defaults(
-    p: *mut crate::blocks::plcopen::resetbutton::SF_ResetButton,
-) -> i32 {
-    write_defaults(
-        p,
-        crate::blocks::plcopen::resetbutton::SF_ResetButton::plcopen_defaults,
-    )
+pub unsafe extern "C" fn sl_sf_resetbutton_defaults(p: *mut SF_ResetButton) -> i32 {
+    write_defaults(p, SF_ResetButton::plcopen_defaults)
 }
 
 /// Writes PLCopen's initial values into `*p`: S_ChannelNO TRUE (its SAFEBOOL initial
@@ -1657,11 +1645,6 @@ pub unsafe extern "C" fn sl_sf_resetbutton_defaults(
 /// # Safety
 /// `p` is NULL or points to a caller-owned SF_Antivalent that nothing else accesses during the call.
 #[no_mangle]
-pub unsafe extern "C" fn sl_sf_antivalent_defaults(
-    p: *mut crate::blocks::plcopen::antivalent::SF_Antivalent,
-) -> i32 {
-    write_defaults(
-        p,
-        crate::blocks::plcopen::antivalent::SF_Antivalent::plcopen_defaults,
-    )
+pub unsafe extern "C" fn sl_sf_antivalent_defaults(p: *mut SF_Antivalent) -> i32 {
+    write_defaults(p, SF_Antivalent::plcopen_defaults)
 }

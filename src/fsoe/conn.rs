@@ -10,30 +10,19 @@
 use super::crc::next_seq;
 use super::frame::{decode, encode, frame_len, is_known_cmd, SL_FSOE_FRAME};
 use super::*;
-use crate::base::bools::edge;
+use crate::base::bools::{any_invalid, bit_flags, edge};
 use crate::base::types::*;
 
 include!(concat!(env!("OUT_DIR"), "/abi/fsoe/conn.rs"));
 
 const MAGIC: u16 = 0xF50E;
 
-/// Flags (nFlags).
-const F_PEER_SEEN: u8 = 1 << 0;
-const F_COM_ERR: u8 = 1 << 1;
-const F_COMACK_SEEN: u8 = 1 << 2;
-const F_REACHED_DATA: u8 = 1 << 3;
-const F_PEER_FSD: u8 = 1 << 4;
-const F_PEER_PD: u8 = 1 << 5;
-const F_SLAVE_ERR: u8 = 1 << 6;
-const F_HAVE_LAST_RX: u8 = 1 << 7;
-/// Flags (nFlags2).
-const G_STARTED: u8 = 1 << 0;
-const G_SHUTDOWN: u8 = 1 << 1;
-const G_OWN_FSD: u8 = 1 << 2;
-/// Edge bits (nEdges).
-const E_ACK: u8 = 1 << 0;
-const E_COMACK: u8 = 1 << 1;
-const E_SHUT: u8 = 1 << 2;
+// Flags (nFlags).
+bit_flags!(u8: F_PEER_SEEN, F_COM_ERR, F_COMACK_SEEN, F_REACHED_DATA, F_PEER_FSD, F_PEER_PD, F_SLAVE_ERR, F_HAVE_LAST_RX);
+// Flags (nFlags2).
+bit_flags!(u8: G_STARTED, G_SHUTDOWN, G_OWN_FSD);
+// Edge bits (nEdges).
+bit_flags!(u8: E_ACK, E_COMACK, E_SHUT);
 
 const ALL_OPTIONS: u32 =
     SL_FSOE_OPT_COMERRACK | SL_FSOE_OPT_MODULE_ERR_IS_COMERR | SL_FSOE_OPT_PIN_CONNID;
@@ -862,15 +851,15 @@ pub fn cycle(c: &mut SL_FSOE_CONN, now: u32, rx: Option<&[u8]>, tx: &mut [u8]) -
     if tx.len() < frame_len(usize::from(p.nTxLen)) {
         return (Status::Length, 0);
     }
-    let mut status = Status::Ok;
-    let raw = [
+    let inputs = [
         c.bRun,
         c.bErrAck,
         c.bComErrAck,
         c.bShutdownRequest,
         c.bModuleFault,
     ];
-    if raw.iter().any(|&b| b > 1) {
+    let mut status = Status::Ok;
+    if any_invalid(&inputs) {
         status = Status::InvalidBool;
     }
     let run = c.bRun == 1;

@@ -137,7 +137,7 @@ impl<T: Analog, const P1: usize, const P2: usize> Block for FB_COUNTER<T, P1, P2
                 up: up.rising,
                 down: down.rising,
             },
-            raw.iter().any(|&b| b > 1),
+            bools::any_invalid(&raw),
         )
     }
     fn start(&mut self, inp: &CounterIn, _now: u32) {

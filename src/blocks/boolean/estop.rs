@@ -6,28 +6,16 @@
 //! feedback loops; restart is always manual. The state machine is shared with FB MON
 //! (`guard`).
 
-use super::guard::{guard_fields, GuardBlock, SL_GUARD_PRIVATE};
+use super::guard::{guard_diag, guard_fields, GuardBlock, SL_GUARD_PRIVATE};
 use crate::base::block::BlockInfo;
 use crate::base::types::*;
 
 include!(concat!(env!("OUT_DIR"), "/abi/blocks/boolean/estop.rs"));
 
 /// Type tag, name and diag texts (manual §4.4.2).
-const INFO: BlockInfo = BlockInfo::of::<EstopState>(SL_TYPE_ESTOP, "ESTOP").diag(&[
-    (SL_DIAG_DISC1, "discrepancy error input group 1"),
-    (SL_DIAG_DISC2, "discrepancy error input group 2"),
+const INFO: BlockInfo = BlockInfo::of::<EstopState>(SL_TYPE_ESTOP, "ESTOP").diag(guard_diag![
     (SL_DIAG_DISC3, "discrepancy error input group 3"),
     (SL_DIAG_DISC4, "discrepancy error input group 4"),
-    (SL_DIAG_EDM1, "EDM monitoring error EDM1"),
-    (SL_DIAG_EDM2, "EDM monitoring error EDM2"),
-    (
-        SL_DIAG_SAFE_IN_DISC1,
-        "group 1 with Safe Inputs after Disc Error",
-    ),
-    (
-        SL_DIAG_SAFE_IN_DISC2,
-        "group 2 with Safe Inputs after Disc Error",
-    ),
     (
         SL_DIAG_SAFE_IN_DISC3,
         "group 3 with Safe Inputs after Disc Error",

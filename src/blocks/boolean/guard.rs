@@ -138,6 +138,23 @@ macro_rules! guard_fields {
 }
 pub(crate) use guard_fields;
 
+/// The diag texts ESTOP and MON share (input groups 1 and 2, EDM1, EDM2), followed by the
+/// block's own: `guard_diag![(SL_DIAG_DISC3, "..."), ...]`, a `BlockInfo::diag` table.
+macro_rules! guard_diag {
+    ($($own:expr),* $(,)?) => {
+        &[
+            ($crate::base::types::SL_DIAG_DISC1, "discrepancy error input group 1"),
+            ($crate::base::types::SL_DIAG_DISC2, "discrepancy error input group 2"),
+            ($crate::base::types::SL_DIAG_EDM1, "EDM monitoring error EDM1"),
+            ($crate::base::types::SL_DIAG_EDM2, "EDM monitoring error EDM2"),
+            ($crate::base::types::SL_DIAG_SAFE_IN_DISC1, "group 1 with Safe Inputs after Disc Error"),
+            ($crate::base::types::SL_DIAG_SAFE_IN_DISC2, "group 2 with Safe Inputs after Disc Error"),
+            $($own,)*
+        ]
+    };
+}
+pub(crate) use guard_diag;
+
 /// The rule "a reset time belongs to an active feedback loop" of EDM `K + 1`: its reset
 /// time is 0 unless `dwOptions` has its option bit.
 pub(crate) const fn edm_reset_rule<const K: usize>() -> crate::base::reason::RuleDef<GuardParams> {

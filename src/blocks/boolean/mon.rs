@@ -7,7 +7,7 @@
 //! immediately and MonDelOut after `tMonDelOutDelay`, ERRORDELAY for a discrepancy error
 //! while MonDelOut is still on. The state machine is shared with FB ESTOP (`guard`).
 
-use super::guard::{guard_fields, GuardBlock, SL_GUARD_PRIVATE};
+use super::guard::{guard_diag, guard_fields, GuardBlock, SL_GUARD_PRIVATE};
 use crate::base::block::BlockInfo;
 use crate::base::types::*;
 
@@ -17,20 +17,8 @@ const MON_INPUTS: u8 = 0x0F;
 const SECURE_INPUTS: u8 = 0x30;
 
 /// Type tag, name and diag texts (manual §4.5.2).
-const INFO: BlockInfo = BlockInfo::of::<MonState>(SL_TYPE_MON, "MON").diag(&[
-    (SL_DIAG_DISC1, "discrepancy error input group 1"),
-    (SL_DIAG_DISC2, "discrepancy error input group 2"),
+const INFO: BlockInfo = BlockInfo::of::<MonState>(SL_TYPE_MON, "MON").diag(guard_diag![
     (SL_DIAG_DISC3, "discrepancy error in Secure input group"),
-    (SL_DIAG_EDM1, "EDM monitoring error EDM1"),
-    (SL_DIAG_EDM2, "EDM monitoring error EDM2"),
-    (
-        SL_DIAG_SAFE_IN_DISC1,
-        "group 1 with Safe Inputs after Disc Error",
-    ),
-    (
-        SL_DIAG_SAFE_IN_DISC2,
-        "group 2 with Safe Inputs after Disc Error",
-    ),
     (
         SL_DIAG_SAFE_IN_DISC3,
         "Secure group with Safe Inputs after Disc Error",

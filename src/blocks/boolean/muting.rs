@@ -12,7 +12,7 @@
 //! table and every reading are in docs/semantics.md, rows M1–M22.
 
 use crate::base::block::BlockInfo;
-use crate::base::bools;
+use crate::base::bools::{self, bit_flags};
 use crate::base::edm::Edm;
 use crate::base::envelope::Block;
 use crate::base::header::{crc_words, param_crc};
@@ -82,11 +82,7 @@ const AUX_RUNNING_SHIFT: u32 = 12;
 const AUX_BACKWARDS: u16 = 1 << 15;
 
 // The sequence patterns: one bit per sensor and one for "protective field interrupted".
-const P_M1: u8 = 1 << 0;
-const P_M2: u8 = 1 << 1;
-const P_F: u8 = 1 << 2;
-const P_M3: u8 = 1 << 3;
-const P_M4: u8 = 1 << 4;
+bit_flags!(u8: P_M1, P_M2, P_F, P_M3, P_M4);
 const P_ALL: u8 = 0x1F;
 
 /// The forward muting sequence with four single-channel sensors (docs/semantics.md M1):
