@@ -90,8 +90,7 @@ fn trace_of_fsoe_md_12_2_byte_for_byte() {
         "36 01 02 C1 8B 03 04 EB C3 07 00",
         "36 AA 55 A0 38 00 FF 07 36 07 00",
     ];
-    let mut m = Node::new(conn(SL_FSOE_ROLE_MASTER, 4, 4, 0x3412));
-    let mut s = Node::new(conn(SL_FSOE_ROLE_SLAVE, 4, 4, 0x5678));
+    let (mut m, mut s) = pair(4, 4, 0x3412, 0x5678);
     s.c.bRun = 1;
     s.c.aTxSafeData[..4].copy_from_slice(&[1, 2, 3, 4]);
     let mut frames = Vec::new();
@@ -139,6 +138,15 @@ fn trace_of_fsoe_md_12_2_byte_for_byte() {
 }
 
 /// Runs the bus until both are in DATA; returns the time.
+/// A master sending `tx` and receiving `rx` bytes with session seed `m_seed`, and its slave
+/// (the mirror sizes) with `s_seed`.
+fn pair(tx: u16, rx: u16, m_seed: u16, s_seed: u16) -> (Node, Node) {
+    (
+        Node::new(conn(SL_FSOE_ROLE_MASTER, tx, rx, m_seed)),
+        Node::new(conn(SL_FSOE_ROLE_SLAVE, rx, tx, s_seed)),
+    )
+}
+
 pub fn connect(m: &mut Node, s: &mut Node, mut t: u32) -> u32 {
     for _ in 0..400 {
         bus(m, s, t);
@@ -199,8 +207,7 @@ fn every_length_pair_and_app_para_length_reaches_data_and_carries_data() {
 
 #[test]
 fn session_ids_come_from_the_seed() {
-    let mut m = Node::new(conn(SL_FSOE_ROLE_MASTER, 2, 2, 0xA1B2));
-    let mut s = Node::new(conn(SL_FSOE_ROLE_SLAVE, 2, 2, 0xC3D4));
+    let (mut m, mut s) = pair(2, 2, 0xA1B2, 0xC3D4);
     m.c.nSessionIdSeed = 0xA1B2;
     connect(&mut m, &mut s, 0);
     assert_eq!(&m.sent[1][..3], &[0x4E, 0xB2, 0xA1]);
@@ -219,8 +226,7 @@ fn a_missing_slave_is_start_up_not_an_error() {
 
 #[test]
 fn watchdog_expiry_resets_with_code_5_at_exactly_the_watchdog_time() {
-    let mut m = Node::new(conn(SL_FSOE_ROLE_MASTER, 2, 2, 1));
-    let mut s = Node::new(conn(SL_FSOE_ROLE_SLAVE, 2, 2, 2));
+    let (mut m, mut s) = pair(2, 2, 1, 2);
     m.c.bRun = 1;
     s.c.bRun = 1;
     let t = connect(&mut m, &mut s, 0);
@@ -290,8 +296,7 @@ fn comerrack_option_needs_comerrack_before_errack() {
 
 #[test]
 fn errack_outside_data_does_not_acknowledge() {
-    let mut m = Node::new(conn(SL_FSOE_ROLE_MASTER, 2, 2, 1));
-    let mut s = Node::new(conn(SL_FSOE_ROLE_SLAVE, 2, 2, 2));
+    let (mut m, mut s) = pair(2, 2, 1, 2);
     let t = connect(&mut m, &mut s, 0);
     m.step(t + 500, None);
     assert_eq!((m.c.bComErr, m.c.nState), (1, 100));
@@ -308,8 +313,7 @@ fn errack_outside_data_does_not_acknowledge() {
 
 #[test]
 fn run_false_sends_failsafe_data_and_the_receiver_reads_zeros() {
-    let mut m = Node::new(conn(SL_FSOE_ROLE_MASTER, 4, 2, 1));
-    let mut s = Node::new(conn(SL_FSOE_ROLE_SLAVE, 2, 4, 2));
+    let (mut m, mut s) = pair(4, 2, 1, 2);
     m.c.bRun = 1;
     s.c.bRun = 1;
     m.c.aTxSafeData[..4].copy_from_slice(&[9, 8, 7, 6]);
@@ -375,8 +379,7 @@ fn module_fault_option_is_a_communication_error() {
 #[test]
 fn shutdown_by_the_master_and_by_the_slave() {
     for by_master in [true, false] {
-        let mut m = Node::new(conn(SL_FSOE_ROLE_MASTER, 2, 2, 1));
-        let mut s = Node::new(conn(SL_FSOE_ROLE_SLAVE, 2, 2, 2));
+        let (mut m, mut s) = pair(2, 2, 1, 2);
         m.c.bRun = 1;
         s.c.bRun = 1;
         let mut t = connect(&mut m, &mut s, 0);
@@ -422,8 +425,7 @@ fn shutdown_request_outside_data_is_ignored() {
 
 #[test]
 fn master_reset_in_data_shows_diag_12_on_the_slave() {
-    let mut m = Node::new(conn(SL_FSOE_ROLE_MASTER, 2, 2, 1));
-    let mut s = Node::new(conn(SL_FSOE_ROLE_SLAVE, 2, 2, 2));
+    let (mut m, mut s) = pair(2, 2, 1, 2);
     let t = connect(&mut m, &mut s, 0);
     // The master is re-initialised (power cycle): Reset(0).
     let mut m = Node::new(conn(SL_FSOE_ROLE_MASTER, 2, 2, 9));
@@ -436,8 +438,7 @@ fn master_reset_in_data_shows_diag_12_on_the_slave() {
 
 #[test]
 fn invalid_bool_bytes_read_as_the_abi_says() {
-    let mut m = Node::new(conn(SL_FSOE_ROLE_MASTER, 2, 2, 1));
-    let mut s = Node::new(conn(SL_FSOE_ROLE_SLAVE, 2, 2, 2));
+    let (mut m, mut s) = pair(2, 2, 1, 2);
     let t = connect(&mut m, &mut s, 0);
     m.c.bRun = 7;
     let mut tx = [0u8; 67];

@@ -140,11 +140,17 @@ fn connect(m: &mut SL_FSOE_CONN, s: &mut SL_FSOE_CONN, mb: &mut Vec<u8>, sb: &mu
     );
 }
 
-#[test]
-fn a_lost_frame_ends_in_the_watchdog_at_exactly_its_time() {
+/// A 4/4-byte pair connected to DATA: (master, slave, their last frames, the time reached).
+fn connected() -> (SL_FSOE_CONN, SL_FSOE_CONN, Vec<u8>, Vec<u8>, u32) {
     let (mut m, mut s) = pair(4, 4);
     let (mut mb, mut sb) = (Vec::new(), Vec::new());
     let t = connect(&mut m, &mut s, &mut mb, &mut sb);
+    (m, s, mb, sb, t)
+}
+
+#[test]
+fn a_lost_frame_ends_in_the_watchdog_at_exactly_its_time() {
+    let (mut m, mut s, _, sb, t) = connected();
     // The master's next frame is produced at t and lost; the slave sent its last at t - 1.
     let f = step(&mut m, t, Some(&sb));
     assert!(f.is_some());
@@ -160,9 +166,7 @@ fn a_lost_frame_ends_in_the_watchdog_at_exactly_its_time() {
 
 #[test]
 fn a_duplicated_frame_is_no_event() {
-    let (mut m, mut s) = pair(4, 4);
-    let (mut mb, mut sb) = (Vec::new(), Vec::new());
-    let t = connect(&mut m, &mut s, &mut mb, &mut sb);
+    let (mut m, mut s, _, sb, t) = connected();
     let f = step(&mut m, t, Some(&sb)).unwrap();
     let a = step(&mut s, t, Some(&f)).unwrap();
     let snapshot = s;
@@ -176,9 +180,7 @@ fn a_duplicated_frame_is_no_event() {
 
 #[test]
 fn a_replayed_frame_is_refused() {
-    let (mut m, mut s) = pair(4, 4);
-    let (mut mb, mut sb) = (Vec::new(), Vec::new());
-    let mut t = connect(&mut m, &mut s, &mut mb, &mut sb);
+    let (mut m, mut s, mut mb, mut sb, mut t) = connected();
     let mut history = Vec::new();
     for _ in 0..5 {
         s.aTxSafeData[0] = t as u8;
@@ -193,9 +195,7 @@ fn a_replayed_frame_is_refused() {
 
 #[test]
 fn a_frame_of_an_old_session_is_refused() {
-    let (mut m, mut s) = pair(4, 4);
-    let (mut mb, mut sb) = (Vec::new(), Vec::new());
-    let t = connect(&mut m, &mut s, &mut mb, &mut sb);
+    let (mut m, mut s, mut mb, mut sb, t) = connected();
     for dt in 0..3 {
         bus(&mut m, &mut s, &mut mb, &mut sb, t + dt);
     }
@@ -217,9 +217,7 @@ fn a_frame_of_an_old_session_is_refused() {
 
 #[test]
 fn a_frame_delayed_past_the_watchdog_is_not_processed() {
-    let (mut m, mut s) = pair(4, 4);
-    let (mut mb, mut sb) = (Vec::new(), Vec::new());
-    let t = connect(&mut m, &mut s, &mut mb, &mut sb);
+    let (mut m, mut s, _, sb, t) = connected();
     let f = step(&mut m, t, Some(&sb)).unwrap();
     let a = step(&mut s, t, Some(&f)).unwrap();
     let r = step(&mut m, t + 100, Some(&a)).unwrap();
@@ -276,9 +274,7 @@ fn wrong_conn_id_address_watchdog_and_application_parameters() {
 
 #[test]
 fn wrong_conn_id_in_data_and_comm_para_len() {
-    let (mut m, mut s) = pair(4, 4);
-    let (mut mb, mut sb) = (Vec::new(), Vec::new());
-    let t = connect(&mut m, &mut s, &mut mb, &mut sb);
+    let (mut m, _, _, sb, t) = connected();
     // A Data frame whose ConnID field reads 9: ConnID is checked before the CRC (mm::etg
     // order), so the reaction is Reset 3, not 4.
     let mut bad = sb.clone();
@@ -325,10 +321,8 @@ fn wrong_conn_id_in_data_and_comm_para_len() {
 fn peer_reset_in_data_and_a_peer_that_stops_sending() {
     // The slave is re-initialised in DATA: the master's next frame is unexpected in its
     // Reset state (Reset 1), the master latches the error and reconnects.
-    let (mut m, mut s) = pair(4, 4);
-    let (mut mb, mut sb) = (Vec::new(), Vec::new());
-    let t = connect(&mut m, &mut s, &mut mb, &mut sb);
-    s = new(conn(SL_FSOE_ROLE_SLAVE, 4, 4, 0x9999));
+    let (mut m, _, mut mb, mut sb, t) = connected();
+    let mut s = new(conn(SL_FSOE_ROLE_SLAVE, 4, 4, 0x9999));
     sb.clear();
     for dt in 0..3 {
         bus(&mut m, &mut s, &mut mb, &mut sb, t + dt);
@@ -460,18 +454,14 @@ fn the_receiver_never_presents_data_the_sender_did_not_send() {
 
 #[test]
 fn unknown_and_unexpected_commands() {
-    let (mut m, mut s) = pair(4, 4);
-    let (mut mb, mut sb) = (Vec::new(), Vec::new());
-    let t = connect(&mut m, &mut s, &mut mb, &mut sb);
+    let (mut m, _, _, sb, t) = connected();
     // Unknown command 0x99 → Reset 2 (checked before anything else).
     let mut bad = sb.clone();
     bad[0] = 0x99;
     let f = step(&mut m, t, Some(&bad)).unwrap();
     assert_eq!((f[1], m.nState, m.bComErr), (2, 100, 1));
     // A known command that DATA does not expect (Session, CRC irrelevant) → Reset 1.
-    let (mut m, mut s) = pair(4, 4);
-    let (mut mb, mut sb) = (Vec::new(), Vec::new());
-    let t = connect(&mut m, &mut s, &mut mb, &mut sb);
+    let (_, mut s, mb, _, t) = connected();
     let mut bad = mb.clone();
     bad[0] = SL_FSOE_CMD_CONNECTION;
     let f = step(&mut s, t, Some(&bad)).unwrap();

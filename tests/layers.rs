@@ -358,6 +358,13 @@ fn src() -> Tree {
     read_tree(&Path::new(env!("CARGO_MANIFEST_DIR")).join("src"))
 }
 
+/// The violations of src/ with `code` put at the top of the file of module `module`.
+fn injected(module: &str, code: &str) -> Vec<String> {
+    let mut tree = src();
+    tree.get_mut(module).unwrap().insert_str(0, code);
+    violations(&graph(&tree))
+}
+
 #[test]
 fn every_import_goes_down_and_no_file_is_in_a_circle() {
     let tree = src();
@@ -391,11 +398,7 @@ fn every_import_goes_down_and_no_file_is_in_a_circle() {
 #[test]
 fn a_back_edge_or_a_circle_is_found() {
     // the core naming the registry: a back edge
-    let mut tree = src();
-    tree.get_mut("base::types")
-        .unwrap()
-        .insert_str(0, "use crate::registry::BLOCKS;\n");
-    let found = violations(&graph(&tree));
+    let found = injected("base::types", "use crate::registry::BLOCKS;\n");
     assert_eq!(
         found[0], "back edge: base::types (core) imports registry (registry)",
         "{found:?}"
@@ -408,30 +411,21 @@ fn a_back_edge_or_a_circle_is_found() {
         "{found:?}"
     );
     // through a grouped import and a macro: the same
-    let mut tree = src();
-    tree.get_mut("base::bools").unwrap().insert_str(
-        0,
+    let found = injected(
+        "base::bools",
         "use crate::{group::{self, SL_LINK}};\nfn f() { crate::for_each_block!(x); }\n",
     );
-    let found = violations(&graph(&tree));
-    assert!(
-        found
-            .iter()
-            .any(|v| v.contains("base::bools (core) imports group")),
-        "{found:?}"
-    );
-    assert!(
-        found
-            .iter()
-            .any(|v| v.contains("base::bools (core) imports registry")),
-        "{found:?}"
-    );
+    for wanted in [
+        "base::bools (core) imports group",
+        "base::bools (core) imports registry",
+    ] {
+        assert!(
+            found.iter().any(|v| v.contains(wanted)),
+            "{wanted} not in {found:?}"
+        );
+    }
     // two blocks of one family naming each other: a circle inside a layer
-    let mut tree = src();
-    tree.get_mut("blocks::boolean::guard")
-        .unwrap()
-        .insert_str(0, "use super::estop::FB_ESTOP;\n");
-    let found = violations(&graph(&tree));
+    let found = injected("blocks::boolean::guard", "use super::estop::FB_ESTOP;\n");
     assert_eq!(
         found,
         ["circle: blocks::boolean::estop -> blocks::boolean::guard"],

@@ -366,25 +366,40 @@ fn start_up_with_and_without_s_start_reset() {
 /// FALSE (switch-off).
 #[test]
 fn invalid_bytes() {
+    // (case, the way to the state, the bytes written, ms to the call, DiagCode and S_EDM_Out after)
+    type Case = (&'static str, fn(&mut Rig), fn(&mut SF_EDM), u32, (u16, u8));
+    let cases: [Case; 3] = [
+        (
+            "EDM1 invalid: not released",
+            Rig::go_disable,
+            |fb| (fb.EDM1, fb.S_OutControl) = (0x55, 1),
+            1,
+            (0xC010, 0),
+        ),
+        (
+            "EDM2 invalid: not switched",
+            Rig::go_enable,
+            |fb| fb.EDM2 = 0x80,
+            100,
+            (0xC080, 0),
+        ),
+        (
+            "S_OutControl invalid: reads FALSE",
+            Rig::go_enable,
+            |fb| fb.S_OutControl = 9,
+            1,
+            (0x8810, 0),
+        ),
+    ];
     let mut rig = Rig::new(0, 100);
-    rig.go_disable();
-    rig.fb.EDM1 = 0x55;
-    rig.now += 1;
-    rig.fb.S_OutControl = 1;
-    assert_eq!(rig.fb.cycle(rig.now), SL_E_INVALID_BOOL);
-    assert_eq!(rig.fb.DiagCode, 0xC010, "not released");
-    let mut rig = Rig::new(0, 100);
-    rig.go_enable();
-    rig.fb.EDM2 = 0x80;
-    rig.now += 100;
-    assert_eq!(rig.fb.cycle(rig.now), SL_E_INVALID_BOOL);
-    assert_eq!(rig.fb.DiagCode, 0xC080, "not switched");
-    let mut rig = Rig::new(0, 100);
-    rig.go_enable();
-    rig.fb.S_OutControl = 9;
-    rig.now += 1;
-    assert_eq!(rig.fb.cycle(rig.now), SL_E_INVALID_BOOL);
-    assert_eq!((rig.fb.DiagCode, rig.fb.S_EDM_Out), (0x8810, 0));
+    for (case, reach, write, dt, after) in cases {
+        rig = Rig::new(0, 100);
+        reach(&mut rig);
+        write(&mut rig.fb);
+        rig.now += dt;
+        assert_eq!(rig.fb.cycle(rig.now), SL_E_INVALID_BOOL, "{case}");
+        assert_eq!((rig.fb.DiagCode, rig.fb.S_EDM_Out), after, "{case}");
+    }
     // MonitoringTime is a constant.
     rig.fb.MonitoringTime = 101;
     rig.now += 1;

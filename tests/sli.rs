@@ -10,10 +10,7 @@ mod sli;
 
 use safelogic::*;
 
-sli_tests!(int, FB_SLI_INT, i16, i16, false);
-sli_tests!(uint, FB_SLI_UINT, u16, i16, false);
-sli_tests!(dint, FB_SLI_DINT, i32, i32, false);
-sli_tests!(udint, FB_SLI_UDINT, u32, i32, false);
+sli_tests_all!(FB_SLI_INT, FB_SLI_UINT, FB_SLI_DINT, FB_SLI_UDINT, false);
 
 /// §4.27.2 "7.0 EXCEEDED If ExceededSupport = TRUE … the FB SLI2 module": SLI has no such
 /// parameter, so it has no state 7 (ABI-2 §14 row 14, semantics SI1): its state table ends

@@ -12,10 +12,7 @@ mod sli;
 use safelogic::*;
 use sli::{call, make, outs};
 
-sli_tests!(int, FB_SLI2_INT, i16, i16, true);
-sli_tests!(uint, FB_SLI2_UINT, u16, i16, true);
-sli_tests!(dint, FB_SLI2_DINT, i32, i32, true);
-sli_tests!(udint, FB_SLI2_UDINT, u32, i32, true);
+sli_tests_all!(FB_SLI2_INT, FB_SLI2_UINT, FB_SLI2_DINT, FB_SLI2_UDINT, true);
 
 const EXC: u32 = SL_OPT_SLI2_EXCEEDED_SUPPORT;
 const WRAP: u32 = SL_OPT_SLI2_OVERFLOW_ALLOWED;

@@ -42,6 +42,15 @@ macro_rules! violation_tests {
                 fb
             }
 
+            /// Counts once (4 per error), leaves RUN at t=1 through `leave` (which checks the
+            /// cleared outputs), then checks the next error counts from 0 (`why`).
+            fn left_and_counted_from_zero(leave: impl FnOnce(&mut Fb), why: &str) {
+                let mut fb = running(4, 1, 100);
+                call(&mut fb, 0, 0, 1);
+                leave(&mut fb);
+                assert_eq!(call(&mut fb, 2, 0, 1), (1, 4, SL_STATE_RUN), "{why}");
+            }
+
             /// §4.33.1 "If the input is TRUE …, the error counter is decremented by the value
             /// Decrement No Error; if the input is FALSE …, the error counter is incremented
             /// by Increment Error. InputOK is set to FALSE when the error counter reaches the
@@ -87,29 +96,25 @@ macro_rules! violation_tests {
             /// the counter restarts from 0 (V2).
             #[test]
             fn enable_false_is_start() {
-                let mut fb = running(4, 1, 100);
-                call(&mut fb, 0, 0, 1);
-                assert_eq!(call(&mut fb, 1, 0, 0), (0, 0, SL_STATE_START));
-                assert_eq!(fb.state_name(), "START");
-                assert_eq!(
-                    call(&mut fb, 2, 0, 1),
-                    (1, 4, SL_STATE_RUN),
-                    "from 0, counted at once"
+                left_and_counted_from_zero(
+                    |fb| {
+                        assert_eq!(call(fb, 1, 0, 0), (0, 0, SL_STATE_START));
+                        assert_eq!(fb.state_name(), "START");
+                    },
+                    "from 0, counted at once",
                 );
             }
 
             /// §4.33.2 STOP "If the input FbRun=FALSE …: InputOK=0 ActViolationCnt = 0".
             #[test]
             fn stop() {
-                let mut fb = running(4, 1, 100);
-                call(&mut fb, 0, 0, 1);
-                fb.bRun = 0;
-                assert_eq!(call(&mut fb, 1, 0, 1), (0, 0, SL_STATE_STOP));
-                fb.bRun = 1;
-                assert_eq!(
-                    call(&mut fb, 2, 0, 1),
-                    (1, 4, SL_STATE_RUN),
-                    "a start counts from 0"
+                left_and_counted_from_zero(
+                    |fb| {
+                        fb.bRun = 0;
+                        assert_eq!(call(fb, 1, 0, 1), (0, 0, SL_STATE_STOP));
+                        fb.bRun = 1;
+                    },
+                    "a start counts from 0",
                 );
             }
 

@@ -561,3 +561,14 @@ impl Model {
         }
     }
 }
+
+/// [`sli_tests!`] for the four integer variants INT, UINT, DINT, UDINT of one block (the
+/// four structs in that order), `$sli2` as there.
+macro_rules! sli_tests_all {
+    ($int:ty, $uint:ty, $dint:ty, $udint:ty, $sli2:expr) => {
+        sli_tests!(int, $int, i16, i16, $sli2);
+        sli_tests!(uint, $uint, u16, i16, $sli2);
+        sli_tests!(dint, $dint, i32, i32, $sli2);
+        sli_tests!(udint, $udint, u32, i32, $sli2);
+    };
+}
